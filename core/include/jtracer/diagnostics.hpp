@@ -1,0 +1,34 @@
+#pragma once
+// Compiler-style diagnostics: FILE:LINE:COL: error: MESSAGE, the source line, a caret.
+
+#include <string>
+#include <string_view>
+#include <vector>
+
+namespace jt {
+
+// 1-based line and column (columns count bytes). line == 0 means "no location":
+// the diagnostic is about the file as a whole.
+struct SourcePos {
+    int line = 0;
+    int column = 0;
+    bool operator==(const SourcePos&) const = default;
+};
+
+enum class Severity { warning, error };
+
+struct Diagnostic {
+    Severity severity = Severity::error;
+    SourcePos pos;
+    std::string message;
+    bool operator==(const Diagnostic&) const = default;
+};
+
+bool has_errors(const std::vector<Diagnostic>& diagnostics);
+
+// "scene.jts:3:12: error: MESSAGE\n    radius 2;\n           ^\n"
+// `source` is the whole file text, used to quote the line; it may be empty.
+std::string format_diagnostic(const Diagnostic& diagnostic, std::string_view filename,
+                              std::string_view source);
+
+}  // namespace jt

@@ -1,0 +1,39 @@
+#pragma once
+// Images as plain pixel arrays.
+//
+// Pixel (x, y) follows SEMANTICS.md section 5: x from the left, y from the
+// bottom. Row 0 is the bottom row, as in a BMP and an OpenGL texture.
+
+#include <cstdint>
+#include <vector>
+
+namespace jt {
+
+// 8-bit RGB, tightly packed, 3 bytes a pixel.
+struct Image8 {
+    int width = 0;
+    int height = 0;
+    std::vector<std::uint8_t> rgb;
+
+    Image8() = default;
+    Image8(int w, int h) : width(w), height(h), rgb(static_cast<std::size_t>(w) * h * 3, 0) {}
+    std::uint8_t* pixel(int x, int y) { return &rgb[(static_cast<std::size_t>(y) * width + x) * 3]; }
+    const std::uint8_t* pixel(int x, int y) const {
+        return &rgb[(static_cast<std::size_t>(y) * width + x) * 3];
+    }
+    bool operator==(const Image8&) const = default;
+};
+
+// Half-open pixel rectangle [x0, x1) x [y0, y1) in the coordinates above.
+struct PixelRect {
+    int x0 = 0, y0 = 0, x1 = 0, y1 = 0;
+    int width() const { return x1 - x0; }
+    int height() const { return y1 - y0; }
+    bool empty() const { return x1 <= x0 || y1 <= y0; }
+    bool operator==(const PixelRect&) const = default;
+};
+
+// The value SEMANTICS.md section 6 writes for a channel: floor(clamp(c, 0, 1) * 255 + 0.5).
+std::uint8_t quantize_channel(double c);
+
+}  // namespace jt

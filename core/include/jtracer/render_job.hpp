@@ -1,0 +1,98 @@
+#pragma once
+// The progressive render job: the one way anything renders a scene.
+//
+// text -> Scene -> prepare_scene() -> PreparedScene -> RenderJob -> Image8
+//
+// A PreparedScene is the immutable, render-ready form of a Scene (world
+// transforms, acceleration structure, shading data). It is shared by pointer
+// between jobs, threads and the viewer. A RenderJob renders one image of it,
+// pass by pass: coarse previews (1/8, 1/4, 1/2 resolution), then the full
+// resolution at one sample per pixel, then further samples up to the target.
+// The CLI runs a job with previews off; the viewer polls a job running on a
+// thread of its own. Final pixels never depend on thread count, tile order or
+// whether previews ran.
+
+#include "jtracer/image.hpp"
+#include "jtracer/scene.hpp"
+
+#include <atomic>
+#include <cstdint>
+#include <memory>
+#include <optional>
+#include <string>
+
+namespace jt {
+
+struct PreparedScene;  // defined in the core's private headers
+
+// Builds the render-ready scene. Primitives whose transform is degenerate (a
+// zero scale component, a non-finite matrix) are left out; the validator has
+// already warned about them with their location.
+//
+// `previous` may be a scene prepared earlier: when the geometry of `scene`
+// (shapes and transforms) equals the previous scene's, its acceleration
+// structure is reused, so that material, light and settings edits are cheap.
+std::shared_ptr<const PreparedScene> prepare_scene(
+    const Scene& scene, std::shared_ptr<const PreparedScene> previous = nullptr);
+
+struct RenderOptions {
+    int width = 0;   // final image size in pixels, > 0
+    int height = 0;
+    int samples = 1;  // target samples per pixel, 1..1024
+    int camera = 0;   // index into Scene::cameras
+    int threads = 0;  // 0: every core
+    bool previews = true;  // run the 1/8, 1/4, 1/2 passes first
+    // Render only this window of the full image. The pixels inside are exactly
+    // those of a full render; the image still has the full size, and the pixels
+    // outside stay black.
+    std::optional<PixelRect> region;
+};
+
+struct RenderProgress {
+    int pass = 0;          // index of the pass running (or last run)
+    int pass_count = 0;
+    std::string pass_name;  // "preview 1/8", ..., "1 sample", "4 samples"
+    double fraction = 0.0;  // of the whole job's work, 0..1
+    int samples_done = 0;   // full-resolution samples per pixel completed
+    std::uint64_t rays = 0;  // camera, shadow and reflection rays traced so far
+    double seconds = 0.0;    // wall time spent in run()
+    bool finished = false;
+    bool cancelled = false;
+};
+
+class RenderJob {
+public:
+    RenderJob(std::shared_ptr<const PreparedScene> scene, RenderOptions options);
+    ~RenderJob();
+    RenderJob(const RenderJob&) = delete;
+    RenderJob& operator=(const RenderJob&) = delete;
+
+    // Renders every remaining pass on the calling thread (its tiles go to the
+    // oneTBB pool) and returns when finished or cancelled.
+    void run();
+    // Renders the next pass only; returns false when there was none left or it
+    // was cancelled.
+    bool run_pass();
+    // Thread-safe; run() and run_pass() return within milliseconds.
+    void cancel();
+
+    // Thread-safe snapshot.
+    RenderProgress progress() const;
+
+    // Thread-safe. Copies the pixels that changed since the last call into
+    // `display` (resized to the full image size on the first call; previews
+    // fill whole blocks) and returns the bounding rectangle that changed, or
+    // nothing when nothing did.
+    std::optional<PixelRect> fetch_updates(Image8& display);
+
+    // The image as it stands: final once progress().finished.
+    Image8 image() const;
+
+    const RenderOptions& options() const;
+
+private:
+    struct State;
+    std::unique_ptr<State> state_;
+};
+
+}  // namespace jt

@@ -1,0 +1,114 @@
+#pragma once
+// The scene model: what a .jts file means, as plain values.
+//
+// A Scene is a value: copy it, compare it with ==, serialise it (serializer.hpp).
+// It holds no source positions; where each part came from lives beside it in a
+// SceneSource (source_map.hpp), so that two files that mean the same scene
+// compare equal. Every default below is the one SEMANTICS.md section 3 gives.
+
+#include <glm/vec3.hpp>
+
+#include <string>
+#include <variant>
+#include <vector>
+
+namespace jt {
+
+using Vec3 = glm::dvec3;
+using Colour = glm::dvec3;  // linear RGB, each channel in [0, 1] after parsing
+
+struct RenderSettings {
+    int width = 0;
+    int height = 0;
+    int recurse_depth = 0;
+    std::string filename = "jtracer.bmp";
+    std::string active_camera;  // empty: the first camera
+    Colour background{0.0};
+    Colour ambient_light{0.0};
+    int samples = 1;  // extension: rays per pixel, 1..1024
+
+    bool operator==(const RenderSettings&) const = default;
+};
+
+struct Camera {
+    std::string name;
+    Vec3 position{0.0};
+    Vec3 look_at{0.0, 0.0, -1.0};  // a point, not a direction
+    Vec3 up{0.0, 1.0, 0.0};
+    double aspect = 1.0;
+    double fov = 45.0;  // vertical, degrees
+
+    bool operator==(const Camera&) const = default;
+};
+
+struct Material {
+    Colour pigment{0.0};
+    Colour ambient{0.0};
+    Colour diffuse{0.0};
+    Colour specular{0.0};
+    double diffuse_k = 1.0;
+    double specular_k = 64.0;
+    double reflection = 0.0;
+
+    bool operator==(const Material&) const = default;
+};
+
+enum class TransformKind { translate, scale, xrotate, yrotate, zrotate };
+
+// One operation of a transform block. translate/scale use `vector`,
+// the rotations use `degrees`.
+struct TransformOp {
+    TransformKind kind = TransformKind::translate;
+    Vec3 vector{0.0};
+    double degrees = 0.0;
+
+    bool operator==(const TransformOp&) const = default;
+};
+
+struct Sphere {
+    Vec3 center{0.0};
+    double radius = 1.0;
+    bool operator==(const Sphere&) const = default;
+};
+
+// The plane { p : p . normalize(normal) = distance }.
+struct Plane {
+    Vec3 normal{0.0, 1.0, 0.0};
+    double distance = 0.0;
+    bool operator==(const Plane&) const = default;
+};
+
+// Solid cylinder x^2 + z^2 <= radius^2, 0 <= y <= height, closed by both caps.
+struct Cylinder {
+    double radius = 0.5;
+    double height = 1.0;
+    bool operator==(const Cylinder&) const = default;
+};
+
+using Shape = std::variant<Sphere, Plane, Cylinder>;
+
+struct Primitive {
+    Shape shape;
+    Material material;
+    // Applied in the order written: the first op acts on the shape first.
+    std::vector<TransformOp> transforms;
+
+    bool operator==(const Primitive&) const = default;
+};
+
+struct PointLight {
+    Vec3 position{0.0};
+    Colour intensity{0.0};
+    bool operator==(const PointLight&) const = default;
+};
+
+struct Scene {
+    RenderSettings settings;
+    std::vector<Camera> cameras;
+    std::vector<Primitive> primitives;
+    std::vector<PointLight> lights;
+
+    bool operator==(const Scene&) const = default;
+};
+
+}  // namespace jt

@@ -1,0 +1,56 @@
+#include "jtracer/diagnostics.hpp"
+
+#include <algorithm>
+
+namespace jt {
+
+bool has_errors(const std::vector<Diagnostic>& diagnostics) {
+    return std::any_of(diagnostics.begin(), diagnostics.end(),
+                       [](const Diagnostic& d) { return d.severity == Severity::error; });
+}
+
+namespace {
+
+// The text of 1-based line `line`, without its line break; empty when out of range.
+std::string_view line_text(std::string_view source, int line) {
+    std::size_t start = 0;
+    for (int l = 1; l < line; ++l) {
+        std::size_t nl = source.find('\n', start);
+        if (nl == std::string_view::npos) return {};
+        start = nl + 1;
+    }
+    std::size_t end = source.find('\n', start);
+    if (end == std::string_view::npos) end = source.size();
+    std::string_view text = source.substr(start, end - start);
+    if (!text.empty() && text.back() == '\r') text.remove_suffix(1);
+    return text;
+}
+
+}  // namespace
+
+std::string format_diagnostic(const Diagnostic& d, std::string_view filename,
+                              std::string_view source) {
+    std::string out(filename);
+    if (d.pos.line > 0) {
+        out += ':' + std::to_string(d.pos.line) + ':' + std::to_string(d.pos.column);
+    }
+    out += d.severity == Severity::error ? ": error: " : ": warning: ";
+    out += d.message;
+    out += '\n';
+    if (d.pos.line <= 0) return out;
+    std::string_view text = line_text(source, d.pos.line);
+    if (text.empty() && d.pos.column <= 1) return out;
+    // Quote the line with control and non-ASCII bytes shown as '?', so the caret lines up.
+    std::string quoted;
+    for (char c : text) {
+        auto u = static_cast<unsigned char>(c);
+        quoted += (c == '\t') ? ' ' : (u < 0x20 || u >= 0x7f) ? '?' : c;
+    }
+    if (quoted.size() > 200) quoted.resize(200);
+    out += "    " + quoted + '\n';
+    int caret = std::clamp(d.pos.column, 1, static_cast<int>(quoted.size()) + 1);
+    out += "    " + std::string(caret - 1, ' ') + "^\n";
+    return out;
+}
+
+}  // namespace jt
