@@ -1,0 +1,30 @@
+#pragma once
+// Collects diagnostics with a cap, so that a file of garbage yields a short
+// report rather than millions of lines.
+
+#include "jtracer/diagnostics.hpp"
+
+#include <string>
+#include <vector>
+
+namespace jt::lang {
+
+class DiagnosticSink {
+  public:
+    static constexpr int max_errors = 20;
+    static constexpr int max_warnings = 100;
+
+    void error(SourcePos pos, std::string message);
+    void warning(SourcePos pos, std::string message);
+    // True once the error cap was reached: parsing should stop.
+    bool stopped() const { return stopped_; }
+    std::vector<Diagnostic> take() { return std::move(diagnostics_); }
+
+  private:
+    std::vector<Diagnostic> diagnostics_;
+    int errors_ = 0;
+    int warnings_ = 0;
+    bool stopped_ = false;
+};
+
+}  // namespace jt::lang

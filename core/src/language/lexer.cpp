@@ -1,0 +1,266 @@
+#include "language/lexer.hpp"
+
+#include "language/number_text.hpp"
+
+#include <charconv>
+#include <cmath>
+#include <cstdio>
+#include <cstring>
+#include <string>
+
+namespace jt::lang {
+
+namespace {
+
+bool is_digit(char c) {
+    return c >= '0' && c <= '9';
+}
+bool is_word_start(char c) {
+    return (c >= 'a' && c <= 'z') || (c >= 'A' && c <= 'Z') || c == '_';
+}
+bool is_word_char(char c) {
+    return is_word_start(c) || is_digit(c);
+}
+// Characters that continue something that started like a number, so that
+// ".3.2", "1..2" and "--1" are each one malformed number.
+bool is_number_char(char c) {
+    return is_digit(c) || c == '.' || c == '+' || c == '-' || c == 'e' || c == 'E';
+}
+
+// sign? (digits ('.' digits?)? | '.' digits) (('e'|'E') sign? digits)?
+bool is_well_formed_number(std::string_view s) {
+    std::size_t i = 0;
+    auto digits = [&] {
+        std::size_t start = i;
+        while (i < s.size() && is_digit(s[i])) ++i;
+        return i - start;
+    };
+    if (i < s.size() && (s[i] == '+' || s[i] == '-')) ++i;
+    std::size_t whole = digits();
+    std::size_t fraction = 0;
+    if (i < s.size() && s[i] == '.') {
+        ++i;
+        fraction = digits();
+    }
+    if (whole + fraction == 0) return false;
+    if (i < s.size() && (s[i] == 'e' || s[i] == 'E')) {
+        ++i;
+        if (i < s.size() && (s[i] == '+' || s[i] == '-')) ++i;
+        if (digits() == 0) return false;
+    }
+    return i == s.size();
+}
+
+std::string byte_name(unsigned char c) {
+    char buf[8];
+    std::snprintf(buf, sizeof buf, "0x%02X", c);
+    return buf;
+}
+
+}  // namespace
+
+void Lexer::skip_space_and_comments() {
+    const std::size_t n = text_.size();
+    while (at_ < n) {
+        char c = text_[at_];
+        if (c == ' ' || c == '\t' || c == '\r') {
+            ++at_;
+        } else if (c == '\n') {
+            ++at_;
+            ++line_;
+            line_start_ = at_;
+        } else if (c == '#') {
+            const void* nl = std::memchr(text_.data() + at_, '\n', n - at_);
+            at_ = nl ? static_cast<std::size_t>(static_cast<const char*>(nl) - text_.data()) : n;
+        } else {
+            return;
+        }
+    }
+}
+
+Token Lexer::next() {
+    skip_space_and_comments();
+    while (!sink_.stopped() && at_ < text_.size()) {
+        const std::size_t start = at_;
+        const char c = text_[start];
+        auto single = [&](TokenKind kind) {
+            ++at_;
+            return Token{kind, text_.substr(start, 1), start, 1, pos_of(start), 0.0};
+        };
+        switch (c) {
+            case '{':
+                return single(TokenKind::lbrace);
+            case '}':
+                return single(TokenKind::rbrace);
+            case ':':
+                return single(TokenKind::colon);
+            case ';':
+                return single(TokenKind::semicolon);
+            case '<':
+                return single(TokenKind::less);
+            case '>':
+                return single(TokenKind::greater);
+            case ',':
+                return single(TokenKind::comma);
+            case '"':
+                return lex_string(start);
+            default:
+                break;
+        }
+        if (is_digit(c) || c == '.' || c == '+' || c == '-') return lex_number(start);
+        if (is_word_start(c)) {
+            while (at_ < text_.size() && is_word_char(text_[at_])) ++at_;
+            return Token{TokenKind::word, text_.substr(start, at_ - start),
+                         start,           at_ - start,
+                         pos_of(start),   0.0};
+        }
+        auto u = static_cast<unsigned char>(c);
+        if (u >= 0x20 && u < 0x7f) {
+            sink_.error(pos_of(start), std::string("unexpected character '") + c + "'");
+        } else {
+            sink_.error(pos_of(start), "unexpected byte " + byte_name(u));
+        }
+        ++at_;
+        // Skip the rest of a multi-byte UTF-8 character as part of the same mistake.
+        while (at_ < text_.size() && (static_cast<unsigned char>(text_[at_]) & 0xC0) == 0x80) ++at_;
+        skip_space_and_comments();
+    }
+    return Token{TokenKind::end, {}, text_.size(), 0, pos_of(at_), 0.0};
+}
+
+Token Lexer::lex_number(std::size_t start) {
+    while (at_ < text_.size() && is_number_char(text_[at_])) ++at_;
+    std::string_view run = text_.substr(start, at_ - start);
+    Token token{TokenKind::number, run, start, run.size(), pos_of(start), 0.0};
+    if (!is_well_formed_number(run)) {
+        sink_.error(token.pos, "malformed number '" + std::string(run.substr(0, 40)) + "'");
+        token.kind = TokenKind::bad_value;
+        return token;
+    }
+    std::string_view digits = run[0] == '+' ? run.substr(1) : run;
+    auto [end, ec] = std::from_chars(digits.data(), digits.data() + digits.size(), token.number);
+    if (ec != std::errc() || end != digits.data() + digits.size() || !std::isfinite(token.number)) {
+        sink_.error(token.pos, "the number " + std::string(run.substr(0, 40)) +
+                                   " is out of range (numbers must be finite doubles)");
+        token.kind = TokenKind::bad_value;
+    }
+    return token;
+}
+
+Token Lexer::lex_string(std::size_t start) {
+    const SourcePos open = pos_of(start);
+    std::size_t i = start + 1;
+    const std::size_t n = text_.size();
+    while (i < n) {
+        auto u = static_cast<unsigned char>(text_[i]);
+        if (u == '"') {
+            at_ = i + 1;
+            return Token{TokenKind::string,
+                         text_.substr(start + 1, i - start - 1),
+                         start,
+                         at_ - start,
+                         open,
+                         0.0};
+        }
+        if (u == '\n' || u == '\r') {
+            sink_.error(open, "string is not closed before the end of the line");
+            at_ = i;
+            return Token{
+                TokenKind::bad_value, text_.substr(start, i - start), start, i - start, open, 0.0};
+        }
+        if (u < 0x20 || u >= 0x7f) {
+            sink_.error(open, "a string may hold only printable ASCII characters; byte " +
+                                  byte_name(u) + " at column " +
+                                  std::to_string(i - line_start_ + 1) + " is not");
+            // Resume after the closing quote, or at the end of the line.
+            while (i < n && text_[i] != '"' && text_[i] != '\n') ++i;
+            at_ = (i < n && text_[i] == '"') ? i + 1 : i;
+            return Token{TokenKind::bad_value,
+                         text_.substr(start, at_ - start),
+                         start,
+                         at_ - start,
+                         open,
+                         0.0};
+        }
+        ++i;
+    }
+    sink_.error(open, "string is not closed before the end of the file");
+    at_ = n;
+    return Token{TokenKind::bad_value, text_.substr(start), start, n - start, open, 0.0};
+}
+
+std::string describe(const Token& token) {
+    switch (token.kind) {
+        case TokenKind::word:
+            return "the word '" + std::string(token.text.substr(0, 40)) + "'";
+        case TokenKind::number:
+            return "the number " + std::string(token.text.substr(0, 40));
+        case TokenKind::string:
+            return "the string \"" + std::string(token.text.substr(0, 40)) +
+                   (token.text.size() > 40 ? "...\"" : "\"");
+        case TokenKind::bad_value:
+            return "a malformed value";
+        case TokenKind::end:
+            return "the end of the file";
+        default:
+            return quote(token.text);
+    }
+}
+
+std::size_t find_invalid_text_byte(std::string_view text) {
+    const auto* s = reinterpret_cast<const unsigned char*>(text.data());
+    const std::size_t n = text.size();
+    std::size_t i = 0;
+    while (i < n) {
+        // Fast path: eight ASCII bytes with no NUL among them.
+        if (i + 8 <= n) {
+            std::uint64_t w;
+            std::memcpy(&w, s + i, 8);
+            constexpr std::uint64_t lows = 0x0101010101010101ull, highs = 0x8080808080808080ull;
+            if (((w & highs) | ((w - lows) & ~w & highs)) == 0) {
+                i += 8;
+                continue;
+            }
+        }
+        unsigned char c = s[i];
+        if (c == 0) return i;
+        if (c < 0x80) {
+            ++i;
+            continue;
+        }
+        std::size_t len;
+        std::uint32_t min;
+        if ((c & 0xE0) == 0xC0) {
+            len = 2, min = 0x80;
+        } else if ((c & 0xF0) == 0xE0) {
+            len = 3, min = 0x800;
+        } else if ((c & 0xF8) == 0xF0) {
+            len = 4, min = 0x10000;
+        } else {
+            return i;
+        }
+        if (i + len > n) return i;
+        std::uint32_t cp = c & (0x7F >> len);
+        for (std::size_t k = 1; k < len; ++k) {
+            if ((s[i + k] & 0xC0) != 0x80) return i;
+            cp = (cp << 6) | (s[i + k] & 0x3F);
+        }
+        if (cp < min || cp > 0x10FFFF || (cp >= 0xD800 && cp <= 0xDFFF)) return i;
+        i += len;
+    }
+    return std::string_view::npos;
+}
+
+SourcePos position_of(std::string_view text, std::size_t offset) {
+    int line = 1;
+    std::size_t line_start = 0;
+    for (std::size_t i = 0; i < offset && i < text.size(); ++i) {
+        if (text[i] == '\n') {
+            ++line;
+            line_start = i + 1;
+        }
+    }
+    return {line, static_cast<int>(offset - line_start) + 1};
+}
+
+}  // namespace jt::lang

@@ -1,0 +1,70 @@
+#pragma once
+// Splits .jts text into tokens (SEMANTICS.md section 1). Tokens are views into
+// the text: lexing allocates nothing per token.
+
+#include "language/diagnostic_sink.hpp"
+
+#include <cstddef>
+#include <string_view>
+
+namespace jt::lang {
+
+enum class TokenKind {
+    word,       // [a-z_A-Z][a-zA-Z0-9_]*: keywords and names (case is checked by the parser)
+    number,     // a finite number; its value is in Token::number
+    string,     // "..."; Token::text excludes the quotes
+    bad_value,  // a malformed number or string, already reported
+    lbrace,
+    rbrace,
+    colon,
+    semicolon,
+    less,
+    greater,
+    comma,
+    end,
+};
+
+struct Token {
+    TokenKind kind = TokenKind::end;
+    std::string_view text;   // the token's bytes (a string's without its quotes)
+    std::size_t offset = 0;  // of the first byte, quotes included
+    std::size_t length = 0;  // in bytes, quotes included
+    SourcePos pos;
+    double number = 0.0;
+};
+
+class Lexer {
+  public:
+    Lexer(std::string_view text, DiagnosticSink& sink) : text_(text), sink_(sink) {
+        // A UTF-8 byte order mark is harmless: skip it (columns still count its bytes).
+        if (text_.starts_with("\xEF\xBB\xBF")) at_ = 3;
+    }
+    // The next token; `end` at the end of the text or once the sink has stopped.
+    Token next();
+
+  private:
+    void skip_space_and_comments();
+    Token lex_number(std::size_t start);
+    Token lex_string(std::size_t start);
+    SourcePos pos_of(std::size_t offset) const {
+        return {line_, static_cast<int>(offset - line_start_) + 1};
+    }
+
+    std::string_view text_;
+    DiagnosticSink& sink_;
+    std::size_t at_ = 0;
+    int line_ = 1;
+    std::size_t line_start_ = 0;
+};
+
+// A short description of a token for messages: "the number 2", "'}'", "the word 'foo'".
+std::string describe(const Token& token);
+
+// Offset of the first byte that makes `text` not valid UTF-8 text or that is a
+// NUL byte; npos when there is none.
+std::size_t find_invalid_text_byte(std::string_view text);
+
+// 1-based line and byte column of `offset` in `text`.
+SourcePos position_of(std::string_view text, std::size_t offset);
+
+}  // namespace jt::lang

@@ -1,0 +1,472 @@
+// The .jts parser: tokens -> Scene + SceneSource + diagnostics.
+//
+// The grammar has a fixed depth (file > scene > sphere > material), so each
+// level is a function of its own and nothing recurses on the input's nesting;
+// unknown blocks are skipped with a brace counter. Every error is reported
+// where it happened and parsing resumes at the next ';' or '}'.
+
+#include "jtracer/parser.hpp"
+
+#include "language/lexer.hpp"
+#include "language/properties.hpp"
+#include "language/suggest.hpp"
+
+#include <algorithm>
+#include <array>
+#include <string>
+
+namespace jt {
+namespace lang {
+namespace {
+
+constexpr std::array<std::string_view, 3> kTopBlocks{"render_settings", "cameras", "scene"};
+constexpr std::array<std::string_view, 1> kCameraBlocks{"perspective_camera"};
+constexpr std::array<std::string_view, 4> kSceneBlocks{"sphere", "plane", "cylinder",
+                                                       "point_light"};
+constexpr std::array<std::string_view, 2> kPrimitiveBlocks{"material", "transform"};
+constexpr std::array<std::string_view, 0> kNoBlocks{};
+
+bool contains(std::span<const std::string_view> names, std::string_view word) {
+    return std::find(names.begin(), names.end(), word) != names.end();
+}
+
+TextSpan span_of(const Token& t) {
+    return {t.offset, t.length, t.pos};
+}
+
+class Parser {
+  public:
+    explicit Parser(std::string_view text) : lexer_(text, sink_), reader_(sink_) {
+        cur_ = lexer_.next();
+        next_ = lexer_.next();
+    }
+
+    ParseResult run() {
+        parse_file();
+        result_.diagnostics = sink_.take();
+        return std::move(result_);
+    }
+
+  private:
+    void advance() {
+        cur_ = next_;
+        next_ = lexer_.next();
+    }
+    bool at(TokenKind kind) const { return cur_.kind == kind; }
+
+    // --- recovery -------------------------------------------------------
+
+    // Skips a brace-balanced group starting at '{', with a counter, not recursion.
+    void skip_braced() {
+        const Token open = cur_;
+        std::size_t depth = 0;
+        do {
+            if (at(TokenKind::lbrace)) ++depth;
+            if (at(TokenKind::rbrace)) --depth;
+            advance();
+        } while (depth > 0 && !at(TokenKind::end));
+        if (depth > 0) {
+            sink_.error(open.pos,
+                        "this '{' is never closed: expected '}' before the end of the file");
+        }
+    }
+
+    // Skips to just past the next ';', or to the next '}' (left for the enclosing block).
+    void skip_statement() {
+        while (!at(TokenKind::end) && !at(TokenKind::rbrace)) {
+            if (at(TokenKind::semicolon)) {
+                advance();
+                return;
+            }
+            if (at(TokenKind::lbrace)) {
+                skip_braced();
+                return;
+            }
+            advance();
+        }
+    }
+
+    // Inside '<' ... : skips to just past the next '>', or to a ';' or '}'.
+    void skip_vector() {
+        while (!at(TokenKind::end) && !at(TokenKind::rbrace) && !at(TokenKind::semicolon)) {
+            bool closing = at(TokenKind::greater);
+            advance();
+            if (closing) return;
+        }
+    }
+
+    // --- values and properties ------------------------------------------
+
+    Value read_vector() {
+        Value v;
+        v.form = Value::Form::vector;
+        const Token open = cur_;
+        advance();
+        bool bad = false;
+        for (int k = 0; k < 3; ++k) {
+            if (k > 0) {
+                if (!at(TokenKind::comma)) {
+                    sink_.error(cur_.pos,
+                                "a vector takes three numbers separated by commas, like "
+                                "<0, 1, 0>; expected ',' but got " +
+                                    describe(cur_));
+                    skip_vector();
+                    v.form = Value::Form::bad;
+                    return v;
+                }
+                advance();
+            }
+            if (at(TokenKind::number)) {
+                v.vector[k] = cur_.number;
+            } else if (at(TokenKind::bad_value)) {
+                bad = true;
+            } else {
+                sink_.error(cur_.pos, "expected a number in the vector, got " + describe(cur_));
+                skip_vector();
+                v.form = Value::Form::bad;
+                return v;
+            }
+            advance();
+        }
+        if (!at(TokenKind::greater)) {
+            sink_.error(cur_.pos,
+                        "a vector takes exactly three numbers, like <0, 1, 0>; expected '>' but "
+                        "got " +
+                            describe(cur_));
+            skip_vector();
+            v.form = Value::Form::bad;
+            return v;
+        }
+        v.span = {open.offset, cur_.offset + 1 - open.offset, open.pos};
+        v.end = {cur_.pos.line, cur_.pos.column + 1};
+        advance();
+        if (bad) v.form = Value::Form::bad;
+        return v;
+    }
+
+    Value read_value() {
+        Value v;
+        switch (cur_.kind) {
+            case TokenKind::less:
+                return read_vector();
+            case TokenKind::number:
+                v.form = Value::Form::number;
+                break;
+            case TokenKind::string:
+                v.form = Value::Form::string;
+                break;
+            case TokenKind::word:
+                v.form = Value::Form::word;
+                break;
+            case TokenKind::bad_value:
+                v.form = Value::Form::bad;
+                break;
+            default:
+                return v;  // none; nothing consumed
+        }
+        v.number = cur_.number;
+        v.text = cur_.text;
+        v.span = span_of(cur_);
+        v.end = {cur_.pos.line, cur_.pos.column + static_cast<int>(cur_.length)};
+        advance();
+        return v;
+    }
+
+    // name ':' value ';' -- on success `property` holds it and the ';' is consumed.
+    bool read_property(Property& property) {
+        property.name = cur_.text;
+        property.name_span = span_of(cur_);
+        advance();
+        if (!at(TokenKind::colon)) {
+            sink_.error(cur_.pos, "expected ':' after '" + std::string(property.name) + "', got " +
+                                      describe(cur_));
+            skip_statement();
+            return false;
+        }
+        advance();
+        property.value = read_value();
+        if (property.value.form == Value::Form::none) {
+            sink_.error(cur_.pos, "expected a value after '" + std::string(property.name) +
+                                      ":', got " + describe(cur_));
+            skip_statement();
+            return false;
+        }
+        if (property.value.form == Value::Form::bad) {
+            skip_statement();
+            return false;
+        }
+        if (at(TokenKind::semicolon)) {
+            advance();
+            return true;
+        }
+        sink_.error(property.value.end,
+                    "expected ';' after the value of '" + std::string(property.name) + "'");
+        // A name or '}' next is most likely the next line: carry on from there.
+        if (!at(TokenKind::word) && !at(TokenKind::rbrace)) skip_statement();
+        return true;
+    }
+
+    // --- blocks ---------------------------------------------------------
+
+    // At the block's keyword: consumes it and the '{'. False (recovered) when '{' is missing.
+    bool open_block(BlockSource& block) {
+        block.keyword = std::string(cur_.text);
+        block.keyword_span = span_of(cur_);
+        advance();
+        if (at(TokenKind::lbrace)) {
+            block.open_brace = cur_.offset;
+            advance();
+            return true;
+        }
+        sink_.error(cur_.pos, "expected '{' after '" + block.keyword + "', got " + describe(cur_));
+        skip_statement();
+        return false;
+    }
+
+    // Reads a block's entries up to and including its '}'. `on_property` gets
+    // each well-formed property; `on_child` is called at the keyword of each
+    // nested block and must consume it whole.
+    template <class OnProperty, class OnChild>
+    void parse_body(BlockSource& block, std::span<const std::string_view> child_names,
+                    OnProperty on_property, OnChild on_child) {
+        for (;;) {
+            switch (cur_.kind) {
+                case TokenKind::rbrace:
+                    block.close_brace = cur_.offset;
+                    advance();
+                    return;
+                case TokenKind::end:
+                    sink_.error(block.keyword_span.pos,
+                                "this '" + block.keyword +
+                                    "' block is never closed: expected '}' before the end of "
+                                    "the file");
+                    return;
+                case TokenKind::word:
+                    if (next_.kind == TokenKind::lbrace || contains(child_names, cur_.text)) {
+                        on_child();
+                    } else {
+                        Property property;
+                        if (read_property(property)) on_property(property);
+                    }
+                    break;
+                case TokenKind::bad_value:  // already reported by the lexer
+                    advance();
+                    skip_statement();
+                    break;
+                default:
+                    sink_.error(cur_.pos, "expected a property name or '}' in '" + block.keyword +
+                                              "', got " + describe(cur_));
+                    if (at(TokenKind::lbrace)) {
+                        skip_braced();
+                    } else {
+                        advance();
+                        skip_statement();
+                    }
+                    break;
+            }
+        }
+    }
+
+    void unknown_block(std::string_view where, std::span<const std::string_view> allowed) {
+        sink_.error(cur_.pos, unknown_name_message("block", cur_.text, where, allowed));
+        advance();
+        if (at(TokenKind::lbrace)) {
+            skip_braced();
+        } else {
+            skip_statement();
+        }
+    }
+
+    // A property in a block that holds only blocks (cameras, scene).
+    auto only_blocks(const BlockSource& block, std::span<const std::string_view> allowed) {
+        return [this, &block, allowed](const Property& p) {
+            std::string list;
+            for (std::string_view name : allowed)
+                list += (list.empty() ? "" : ", ") + std::string(name);
+            sink_.error(p.name_span.pos, "'" + block.keyword + "' holds only blocks (" + list +
+                                             "), not properties like '" + std::string(p.name) +
+                                             "'");
+        };
+    }
+
+    void parse_file() {
+        while (!at(TokenKind::end)) {
+            if (at(TokenKind::word) && cur_.text == "render_settings") {
+                parse_render_settings();
+            } else if (at(TokenKind::word) && cur_.text == "cameras") {
+                parse_cameras();
+            } else if (at(TokenKind::word) && cur_.text == "scene") {
+                parse_scene();
+            } else if (at(TokenKind::word)) {
+                unknown_block("at the top level", kTopBlocks);
+            } else if (at(TokenKind::lbrace)) {
+                sink_.error(cur_.pos,
+                            "expected a block name (render_settings, cameras or scene) "
+                            "before '{'");
+                skip_braced();
+            } else {
+                if (!at(TokenKind::bad_value)) {  // a bad value was reported by the lexer
+                    sink_.error(cur_.pos,
+                                "expected a block (render_settings, cameras or scene), got " +
+                                    describe(cur_));
+                }
+                advance();
+            }
+        }
+    }
+
+    void parse_render_settings() {
+        BlockSource block;
+        RenderSettings settings;  // a later block replaces the earlier one whole
+        if (!open_block(block)) return;
+        parse_body(
+            block, kNoBlocks, [&](const Property& p) { reader_.apply(settings, block, p); },
+            [&] { unknown_block("in 'render_settings'", kNoBlocks); });
+        if (result_.source.render_settings) {
+            sink_.warning(
+                block.keyword_span.pos,
+                "another 'render_settings' block: only the last one is used, so the "
+                "one at line " +
+                    std::to_string(result_.source.render_settings->keyword_span.pos.line) +
+                    " is ignored");
+        }
+        result_.scene.settings = std::move(settings);
+        result_.source.render_settings = std::move(block);
+    }
+
+    void parse_cameras() {
+        BlockSource cameras;
+        if (!open_block(cameras)) return;
+        parse_body(cameras, kCameraBlocks, only_blocks(cameras, kCameraBlocks), [&] {
+            if (cur_.text != "perspective_camera") {
+                unknown_block("in 'cameras'", kCameraBlocks);
+                return;
+            }
+            BlockSource block;
+            Camera camera;
+            if (!open_block(block)) return;
+            parse_body(
+                block, kNoBlocks, [&](const Property& p) { reader_.apply(camera, block, p); },
+                [&] { unknown_block("in 'perspective_camera'", kNoBlocks); });
+            result_.scene.cameras.push_back(std::move(camera));
+            result_.source.cameras.push_back(std::move(block));
+        });
+    }
+
+    void parse_scene() {
+        BlockSource block;
+        std::vector<Primitive> primitives;
+        std::vector<PointLight> lights;
+        std::vector<BlockSource> primitive_sources, light_sources;
+        if (!open_block(block)) return;
+        parse_body(block, kSceneBlocks, only_blocks(block, kSceneBlocks), [&] {
+            std::string_view kind = cur_.text;
+            if (kind == "point_light") {
+                BlockSource light_block;
+                PointLight light;
+                if (!open_block(light_block)) return;
+                parse_body(
+                    light_block, kNoBlocks,
+                    [&](const Property& p) { reader_.apply(light, light_block, p); },
+                    [&] { light_child(); });
+                lights.push_back(light);
+                light_sources.push_back(std::move(light_block));
+            } else if (kind == "sphere" || kind == "plane" || kind == "cylinder") {
+                Primitive primitive;
+                if (kind == "plane") primitive.shape = Plane{};
+                if (kind == "cylinder") primitive.shape = Cylinder{};
+                BlockSource primitive_block;
+                if (!open_block(primitive_block)) return;
+                parse_primitive_body(primitive, primitive_block);
+                primitives.push_back(std::move(primitive));
+                primitive_sources.push_back(std::move(primitive_block));
+            } else {
+                unknown_block("in 'scene'", kSceneBlocks);
+            }
+        });
+        if (result_.source.scene) {
+            sink_.warning(block.keyword_span.pos,
+                          "another 'scene' block: only the last one is used, so the one at line " +
+                              std::to_string(result_.source.scene->keyword_span.pos.line) +
+                              " is ignored");
+        }
+        result_.scene.primitives = std::move(primitives);
+        result_.scene.lights = std::move(lights);
+        result_.source.primitives = std::move(primitive_sources);
+        result_.source.lights = std::move(light_sources);
+        result_.source.scene = std::move(block);
+    }
+
+    void light_child() {
+        if (cur_.text == "material" || cur_.text == "transform") {
+            sink_.error(cur_.pos, "a point_light takes no '" + std::string(cur_.text) +
+                                      "' block: only sphere, plane and cylinder do");
+            advance();
+            if (at(TokenKind::lbrace)) {
+                skip_braced();
+            } else {
+                skip_statement();
+            }
+            return;
+        }
+        unknown_block("in 'point_light'", kNoBlocks);
+    }
+
+    void parse_primitive_body(Primitive& primitive, BlockSource& block) {
+        parse_body(
+            block, kPrimitiveBlocks,
+            [&](const Property& p) { reader_.apply(primitive.shape, block, p); },
+            [&] {
+                if (cur_.text == "material") {
+                    BlockSource child;
+                    if (!open_block(child)) return;
+                    parse_body(
+                        child, kNoBlocks,
+                        [&](const Property& p) { reader_.apply(primitive.material, child, p); },
+                        [&] { unknown_block("in 'material'", kNoBlocks); });
+                    block.children.push_back(std::move(child));
+                } else if (cur_.text == "transform") {
+                    BlockSource child;
+                    if (!open_block(child)) return;
+                    parse_body(
+                        child, kNoBlocks,
+                        [&](const Property& p) { reader_.apply(primitive.transforms, child, p); },
+                        [&] { unknown_block("in 'transform'", kNoBlocks); });
+                    block.children.push_back(std::move(child));
+                } else {
+                    unknown_block("in '" + block.keyword + "'", kPrimitiveBlocks);
+                }
+            });
+    }
+
+    DiagnosticSink sink_;
+    Lexer lexer_;
+    PropertyReader reader_;
+    Token cur_, next_;
+    ParseResult result_;
+};
+
+}  // namespace
+}  // namespace lang
+
+ParseResult parse_scene(std::string_view text) {
+    try {
+        std::size_t bad = lang::find_invalid_text_byte(text);
+        if (bad != std::string_view::npos) {
+            ParseResult result;
+            std::string what = text[bad] == '\0' ? "a NUL byte" : "a byte that is not UTF-8 text";
+            result.diagnostics.push_back({Severity::error, lang::position_of(text, bad),
+                                          "the file is not a text file: it contains " + what});
+            return result;
+        }
+        return lang::Parser(text).run();
+    } catch (const std::exception& e) {
+        // Only allocation failure can get here (e.g. a scene too large for memory).
+        ParseResult result;
+        result.diagnostics.push_back(
+            {Severity::error, {}, std::string("the scene could not be read: ") + e.what()});
+        return result;
+    }
+}
+
+}  // namespace jt

@@ -1,0 +1,59 @@
+#pragma once
+// Reading one property's value into the scene model: kind checks, ranges,
+// int truncation, colour clipping, duplicate warnings (SEMANTICS.md section 3).
+
+#include "jtracer/scene.hpp"
+#include "jtracer/source_map.hpp"
+#include "language/diagnostic_sink.hpp"
+
+#include <string_view>
+#include <vector>
+
+namespace jt::lang {
+
+struct Value {
+    enum class Form { none, bad, number, vector, string, word };
+    Form form = Form::none;
+    double number = 0.0;
+    Vec3 vector{0.0};
+    std::string_view text;  // a string's contents, a word or a number's spelling
+    TextSpan span;          // the whole value as written
+    SourcePos end;          // just past the value
+};
+
+struct Property {
+    std::string_view name;
+    TextSpan name_span;
+    Value value;
+};
+
+// Applies well-formed properties to the part of the scene they belong to,
+// reporting unknown names, wrong kinds and values out of range, and records
+// each applied property in the block's source.
+class PropertyReader {
+  public:
+    explicit PropertyReader(DiagnosticSink& sink) : sink_(sink) {}
+
+    void apply(RenderSettings& settings, BlockSource& block, const Property& p);
+    void apply(Camera& camera, BlockSource& block, const Property& p);
+    void apply(Shape& shape, BlockSource& block, const Property& p);
+    void apply(Material& material, BlockSource& block, const Property& p);
+    void apply(PointLight& light, BlockSource& block, const Property& p);
+    void apply(std::vector<TransformOp>& transforms, BlockSource& block, const Property& p);
+
+  private:
+    bool number(const Property& p, double& out);
+    bool whole_number(const Property& p, int& out, double low, double high);
+    bool vector(const Property& p, Vec3& out);
+    bool colour(const Property& p, Colour& out);
+    bool string(const Property& p, std::string& out);
+    bool positive(const Property& p, double& out);
+    void kind_error(const Property& p, std::string_view expected);
+    void range_error(const Property& p, std::string_view rule);
+    // Records the property in `block`; warns when the block already set it.
+    void record(BlockSource& block, const Property& p, std::string_view as_name, bool warn_repeat);
+
+    DiagnosticSink& sink_;
+};
+
+}  // namespace jt::lang

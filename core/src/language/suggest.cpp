@@ -1,0 +1,73 @@
+#include "language/suggest.hpp"
+
+#include <algorithm>
+#include <vector>
+
+namespace jt::lang {
+
+std::size_t edit_distance(std::string_view a, std::string_view b) {
+    // Optimal string alignment: insertions, deletions, substitutions and
+    // transpositions of neighbours ("widht") each cost one.
+    const std::size_t n = b.size();
+    std::vector<std::size_t> before(n + 1), previous(n + 1), row(n + 1);
+    for (std::size_t j = 0; j <= n; ++j) previous[j] = j;
+    for (std::size_t i = 1; i <= a.size(); ++i) {
+        row[0] = i;
+        for (std::size_t j = 1; j <= n; ++j) {
+            std::size_t cost = a[i - 1] != b[j - 1];
+            row[j] = std::min({previous[j] + 1, row[j - 1] + 1, previous[j - 1] + cost});
+            if (i > 1 && j > 1 && a[i - 1] == b[j - 2] && a[i - 2] == b[j - 1]) {
+                row[j] = std::min(row[j], before[j - 2] + 1);
+            }
+        }
+        std::swap(before, previous);
+        std::swap(previous, row);
+    }
+    return previous[n];
+}
+
+namespace {
+
+std::string lower(std::string_view s) {
+    std::string out(s);
+    for (char& c : out) {
+        if (c >= 'A' && c <= 'Z') c = static_cast<char>(c - 'A' + 'a');
+    }
+    return out;
+}
+
+}  // namespace
+
+std::string_view nearest_name(std::string_view word, std::span<const std::string_view> allowed) {
+    if (word.size() > 64) return {};
+    const std::string folded = lower(word);
+    std::string_view best;
+    std::size_t best_distance = 0;
+    for (std::string_view name : allowed) {
+        std::size_t d = edit_distance(folded, name);
+        if (best.empty() || d < best_distance) {
+            best = name;
+            best_distance = d;
+        }
+    }
+    // A typo changes a few letters; beyond a third of the word it is another word.
+    std::size_t limit = std::max<std::size_t>(1, std::max(word.size(), best.size()) / 3);
+    return best_distance <= limit ? best : std::string_view{};
+}
+
+std::string unknown_name_message(std::string_view what, std::string_view word,
+                                 std::string_view where,
+                                 std::span<const std::string_view> allowed) {
+    std::string message = "unknown " + std::string(what) + " '" + std::string(word.substr(0, 40)) +
+                          "' " + std::string(where);
+    std::string_view nearest = nearest_name(word, allowed);
+    if (!nearest.empty()) message += "; did you mean '" + std::string(nearest) + "'?";
+    message += " (allowed: ";
+    for (std::size_t i = 0; i < allowed.size(); ++i) {
+        if (i) message += ", ";
+        message += allowed[i];
+    }
+    return message + ")";
+}
+
+}  // namespace jt::lang

@@ -1,0 +1,21 @@
+#pragma once
+// Did-you-mean suggestions for unknown names.
+
+#include <span>
+#include <string>
+#include <string_view>
+
+namespace jt::lang {
+
+// Levenshtein distance between two short words.
+std::size_t edit_distance(std::string_view a, std::string_view b);
+
+// The allowed name nearest to `word`, or empty when none is close enough to be
+// a plausible typo (case differences always count as close).
+std::string_view nearest_name(std::string_view word, std::span<const std::string_view> allowed);
+
+// "unknown property 'radus' in sphere; did you mean 'radius'? (allowed: center, radius)"
+std::string unknown_name_message(std::string_view what, std::string_view word,
+                                 std::string_view where, std::span<const std::string_view> allowed);
+
+}  // namespace jt::lang
