@@ -1,0 +1,35 @@
+#pragma once
+// Writes an edited Scene back into the .jts text it was parsed from, touching
+// only what changed: each changed value is replaced at its span, a property
+// that was never written is inserted into its block, a new camera is appended
+// to the last `cameras` block. Every other byte (comments, order, spacing)
+// stays as it was. The viewer's "Save scene" uses it.
+
+#include "jtracer/scene.hpp"
+#include "jtracer/source_map.hpp"
+
+#include <string>
+#include <string_view>
+
+namespace jt {
+
+struct SourceEditResult {
+    std::string text;   // the new file text (the input text when nothing changed)
+    std::string error;  // non-empty when the edit cannot be expressed in place
+    int values_changed = 0;
+    bool ok() const { return error.empty(); }
+};
+
+// `text` parsed to `original` with the spans in `source`. `edited` may differ
+// from `original` in any value, and may have more cameras at the end; adding or
+// removing primitives, lights or transform operations, or changing a shape's
+// kind, is reported as an error (the text is then left as it was).
+SourceEditResult apply_scene_edits(std::string_view text, const SceneSource& source,
+                                   const Scene& original, const Scene& edited);
+
+// Values as .jts text: shortest round-trip numbers ("0.5", "2", "1e-05"),
+// vectors "<1, 0.5, 0>", strings in double quotes.
+std::string format_jts_number(double value);
+std::string format_jts_vector(const Vec3& value);
+
+}  // namespace jt
