@@ -20,6 +20,7 @@
 #include <memory>
 #include <optional>
 #include <string>
+#include <string_view>
 
 namespace jt {
 
@@ -36,11 +37,11 @@ std::shared_ptr<const PreparedScene> prepare_scene(
     const Scene& scene, std::shared_ptr<const PreparedScene> previous = nullptr);
 
 struct RenderOptions {
-    int width = 0;   // final image size in pixels, > 0
+    int width = 0;  // final image size in pixels, > 0
     int height = 0;
-    int samples = 1;  // target samples per pixel, 1..1024
-    int camera = 0;   // index into Scene::cameras
-    int threads = 0;  // 0: every core
+    int samples = 1;       // target samples per pixel, 1..1024
+    int camera = 0;        // index into Scene::cameras
+    int threads = 0;       // 0: every core
     bool previews = true;  // run the 1/8, 1/4, 1/2 passes first
     // Render only this window of the full image. The pixels inside are exactly
     // those of a full render; the image still has the full size, and the pixels
@@ -49,11 +50,11 @@ struct RenderOptions {
 };
 
 struct RenderProgress {
-    int pass = 0;          // index of the pass running (or last run)
+    int pass = 0;  // index of the pass running (or last run)
     int pass_count = 0;
-    std::string pass_name;  // "preview 1/8", ..., "1 sample", "4 samples"
-    double fraction = 0.0;  // of the whole job's work, 0..1
-    int samples_done = 0;   // full-resolution samples per pixel completed
+    std::string pass_name;   // "preview 1/8", ..., "1 sample", "4 samples"
+    double fraction = 0.0;   // of the whole job's work, 0..1
+    int samples_done = 0;    // full-resolution samples per pixel completed
     std::uint64_t rays = 0;  // camera, shadow and reflection rays traced so far
     double seconds = 0.0;    // wall time spent in run()
     bool finished = false;
@@ -61,7 +62,7 @@ struct RenderProgress {
 };
 
 class RenderJob {
-public:
+  public:
     RenderJob(std::shared_ptr<const PreparedScene> scene, RenderOptions options);
     ~RenderJob();
     RenderJob(const RenderJob&) = delete;
@@ -90,9 +91,17 @@ public:
 
     const RenderOptions& options() const;
 
-private:
+  private:
     struct State;
     std::unique_ptr<State> state_;
 };
+
+// Renders straight to the final pass on the calling thread (tiles to oneTBB)
+// and returns the image: a RenderJob with previews off, run to the end.
+Image8 render_image(std::shared_ptr<const PreparedScene> scene, RenderOptions options);
+
+// The index of the camera called `name`, or -1. (The camera a scene renders by
+// default is validate.hpp's active_camera_index.)
+int find_camera(const Scene& scene, std::string_view name);
 
 }  // namespace jt

@@ -1,0 +1,18 @@
+#pragma once
+// Writing a file so that readers only ever see the old file or the whole new
+// one: the bytes go to a temporary file beside the target, which is then
+// renamed over it (SEMANTICS.md 7). A failure leaves no file behind.
+
+#include <cstdint>
+#include <filesystem>
+#include <span>
+#include <string>
+
+namespace jt {
+
+// Returns an empty string on success, else a message naming the file and the
+// reason ("cannot write 'out/x.bmp': No such file or directory").
+std::string write_file_atomically(const std::filesystem::path& target,
+                                  std::span<const std::uint8_t> bytes);
+
+}  // namespace jt

@@ -1,0 +1,124 @@
+#pragma once
+// Exact double-precision ray intersection of the three shapes, in the space the
+// shape is defined in. A ray is origin + t * direction; the direction need not be
+// unit length (rays reach object space through an inverse transform), and t
+// keeps its meaning across that change of space.
+//
+// Each function returns the smallest root in the open interval (t_min, t_max),
+// or +infinity when there is none.
+
+#include "jtracer/scene.hpp"
+
+#include <cmath>
+#include <limits>
+
+namespace jt {
+
+inline constexpr double no_hit = std::numeric_limits<double>::infinity();
+
+// The roots of a t^2 + 2 b t + c = 0 where a = |d|^2, in a form that keeps full
+// precision when the ray starts far from a small target (Ray Tracing Gems,
+// ch. 7): the discriminant comes from the perpendicular offset, not b^2 - a c.
+// Returns false when there is no real root.
+inline bool solve_ray_quadratic(double a, double b, double c, double perpendicular_sq,
+                                double radius_sq, double& t0, double& t1) {
+    double discriminant = a * (radius_sq - perpendicular_sq);
+    if (!(discriminant >= 0.0) || !(a > 0.0)) return false;
+    double q = -(b + std::copysign(std::sqrt(discriminant), b));
+    if (q == 0.0) {
+        t0 = t1 = -b / a;
+        return true;
+    }
+    t0 = c / q;
+    t1 = q / a;
+    if (t0 > t1) std::swap(t0, t1);
+    return true;
+}
+
+inline double first_in_range(double t0, double t1, double t_min, double t_max) {
+    if (t0 > t_min && t0 < t_max) return t0;
+    if (t1 > t_min && t1 < t_max) return t1;
+    return no_hit;
+}
+
+inline double intersect_sphere(const Vec3& origin, const Vec3& direction, const Vec3& center,
+                               double radius, double t_min, double t_max) {
+    Vec3 f = origin - center;
+    double a = glm::dot(direction, direction);
+    double b = glm::dot(f, direction);
+    double c = glm::dot(f, f) - radius * radius;
+    Vec3 perpendicular = f - (b / a) * direction;
+    double t0, t1;
+    if (!solve_ray_quadratic(a, b, c, glm::dot(perpendicular, perpendicular), radius * radius, t0,
+                             t1))
+        return no_hit;
+    return first_in_range(t0, t1, t_min, t_max);
+}
+
+// The plane { p : dot(p, unit_normal) = distance }.
+inline double intersect_plane(const Vec3& origin, const Vec3& direction, const Vec3& unit_normal,
+                              double distance, double t_min, double t_max) {
+    double denominator = glm::dot(unit_normal, direction);
+    if (denominator == 0.0) return no_hit;
+    double t = (distance - glm::dot(unit_normal, origin)) / denominator;
+    return (t > t_min && t < t_max) ? t : no_hit;
+}
+
+// Which surface of a cylinder a ray met; it decides the normal.
+enum class CylinderPart : unsigned char { side, bottom, top };
+
+// Solid cylinder x^2 + z^2 <= r^2, 0 <= y <= height, closed by both caps.
+inline double intersect_cylinder(const Vec3& origin, const Vec3& direction, double radius,
+                                 double height, double t_min, double t_max, CylinderPart& part) {
+    double best = no_hit;
+    const double r2 = radius * radius;
+    // The side, x^2 + z^2 = r^2, where 0 <= y <= height.
+    double a = direction.x * direction.x + direction.z * direction.z;
+    if (a > 0.0) {
+        double b = origin.x * direction.x + origin.z * direction.z;
+        double c = origin.x * origin.x + origin.z * origin.z - r2;
+        double px = origin.x - (b / a) * direction.x;
+        double pz = origin.z - (b / a) * direction.z;
+        double t0, t1;
+        if (solve_ray_quadratic(a, b, c, px * px + pz * pz, r2, t0, t1)) {
+            for (double t : {t0, t1}) {
+                if (!(t > t_min && t < best && t < t_max)) continue;
+                double y = origin.y + t * direction.y;
+                if (y >= 0.0 && y <= height) {
+                    best = t;
+                    part = CylinderPart::side;
+                }
+            }
+        }
+    }
+    // The caps, y = 0 and y = height, where x^2 + z^2 <= r^2.
+    if (direction.y != 0.0) {
+        for (CylinderPart cap : {CylinderPart::bottom, CylinderPart::top}) {
+            double y = cap == CylinderPart::bottom ? 0.0 : height;
+            double t = (y - origin.y) / direction.y;
+            if (!(t > t_min && t < best && t < t_max)) continue;
+            double x = origin.x + t * direction.x;
+            double z = origin.z + t * direction.z;
+            if (x * x + z * z <= r2) {
+                best = t;
+                part = cap;
+            }
+        }
+    }
+    return best;
+}
+
+// The outward normal (not unit) of a cylinder at an object-space point on `part`.
+inline Vec3 cylinder_normal(const Vec3& p, CylinderPart part) {
+    switch (part) {
+        case CylinderPart::bottom:
+            return {0.0, -1.0, 0.0};
+        case CylinderPart::top:
+            return {0.0, 1.0, 0.0};
+        case CylinderPart::side:
+            break;
+    }
+    return {p.x, 0.0, p.z};
+}
+
+}  // namespace jt

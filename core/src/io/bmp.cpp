@@ -1,0 +1,119 @@
+#include "jtracer/bmp.hpp"
+
+#include "io/file_bytes.hpp"
+#include "jtracer/atomic_file.hpp"
+
+#include <cstdlib>
+
+namespace jt {
+
+namespace {
+
+constexpr std::size_t file_header_size = 14;
+constexpr std::size_t info_header_size = 40;
+constexpr std::size_t header_size = file_header_size + info_header_size;
+
+std::size_t row_stride(int width) {
+    return (static_cast<std::size_t>(width) * 3 + 3) & ~std::size_t{3};
+}
+
+void put16(std::uint8_t* p, std::uint32_t v) {
+    p[0] = static_cast<std::uint8_t>(v);
+    p[1] = static_cast<std::uint8_t>(v >> 8);
+}
+
+void put32(std::uint8_t* p, std::uint32_t v) {
+    for (int i = 0; i < 4; ++i) p[i] = static_cast<std::uint8_t>(v >> (8 * i));
+}
+
+std::uint32_t get16(const std::uint8_t* p) {
+    return p[0] | (std::uint32_t{p[1]} << 8);
+}
+
+std::uint32_t get32(const std::uint8_t* p) {
+    return p[0] | (std::uint32_t{p[1]} << 8) | (std::uint32_t{p[2]} << 16) |
+           (std::uint32_t{p[3]} << 24);
+}
+
+}  // namespace
+
+std::vector<std::uint8_t> encode_bmp(const Image8& image) {
+    const std::size_t stride = row_stride(image.width);
+    const std::size_t pixel_bytes = stride * static_cast<std::size_t>(image.height);
+    std::vector<std::uint8_t> out(header_size + pixel_bytes, 0);
+    std::uint8_t* h = out.data();
+    h[0] = 'B';
+    h[1] = 'M';
+    put32(h + 2, static_cast<std::uint32_t>(out.size()));
+    put32(h + 10, header_size);  // offset of the pixels
+    put32(h + 14, info_header_size);
+    put32(h + 18, static_cast<std::uint32_t>(image.width));
+    put32(h + 22, static_cast<std::uint32_t>(image.height));  // positive: bottom-up
+    put16(h + 26, 1);                                         // planes
+    put16(h + 28, 24);                                        // bits per pixel
+    put32(h + 30, 0);                                         // BI_RGB
+    put32(h + 34, static_cast<std::uint32_t>(pixel_bytes));
+    put32(h + 38, 2835);  // 72 dpi, in pixels per metre
+    put32(h + 42, 2835);
+    for (int y = 0; y < image.height; ++y) {
+        std::uint8_t* row = out.data() + header_size + stride * static_cast<std::size_t>(y);
+        const std::uint8_t* src = image.pixel(0, y);
+        for (int x = 0; x < image.width; ++x) {
+            row[3 * x + 0] = src[3 * x + 2];
+            row[3 * x + 1] = src[3 * x + 1];
+            row[3 * x + 2] = src[3 * x + 0];
+        }
+    }
+    return out;
+}
+
+std::string decode_bmp(std::span<const std::uint8_t> bytes, Image8& image) {
+    if (bytes.size() < header_size || bytes[0] != 'B' || bytes[1] != 'M')
+        return "not a BMP file (no 'BM' header)";
+    const std::uint8_t* h = bytes.data();
+    std::uint32_t offset = get32(h + 10);
+    std::uint32_t info_size = get32(h + 14);
+    auto width = static_cast<std::int32_t>(get32(h + 18));
+    auto height = static_cast<std::int32_t>(get32(h + 22));
+    if (info_size < info_header_size) return "unsupported BMP header (older than BITMAPINFOHEADER)";
+    if (get16(h + 28) != 24) return "unsupported BMP: only 24 bits per pixel are read";
+    if (get32(h + 30) != 0) return "unsupported BMP: compressed (only BI_RGB is read)";
+    bool top_down = height < 0;
+    std::int64_t rows = std::llabs(static_cast<std::int64_t>(height));
+    if (width <= 0 || rows == 0 || width > 65535 || rows > 65535)
+        return std::string("BMP size out of range: ") + std::to_string(width) + " by " +
+               std::to_string(rows);
+    const std::size_t stride = row_stride(width);
+    if (offset > bytes.size() || bytes.size() - offset < stride * static_cast<std::size_t>(rows))
+        return "BMP file is truncated";
+    image = Image8(width, static_cast<int>(rows));
+    for (int y = 0; y < image.height; ++y) {
+        int stored = top_down ? image.height - 1 - y : y;
+        const std::uint8_t* row = h + offset + stride * static_cast<std::size_t>(stored);
+        std::uint8_t* dst = image.pixel(0, y);
+        for (int x = 0; x < width; ++x) {
+            dst[3 * x + 0] = row[3 * x + 2];
+            dst[3 * x + 1] = row[3 * x + 1];
+            dst[3 * x + 2] = row[3 * x + 0];
+        }
+    }
+    return {};
+}
+
+std::string write_bmp(const std::filesystem::path& path, const Image8& image) {
+    // The format's size fields are 32 bits wide.
+    if (header_size + row_stride(image.width) * static_cast<std::size_t>(image.height) >
+        0xFFFFFFFFu)
+        return "cannot write " + file_message(path, "the image is too large for a BMP (4 GiB)");
+    return write_file_atomically(path, encode_bmp(image));
+}
+
+std::string read_bmp(const std::filesystem::path& path, Image8& image) {
+    std::vector<std::uint8_t> bytes;
+    if (std::string error = read_file_bytes(path, bytes); !error.empty()) return error;
+    if (std::string error = decode_bmp(bytes, image); !error.empty())
+        return file_message(path, error);
+    return {};
+}
+
+}  // namespace jt

@@ -1,0 +1,31 @@
+#include "io/file_bytes.hpp"
+
+#include <cerrno>
+#include <cstdio>
+#include <cstring>
+#include <memory>
+
+namespace jt {
+
+std::string file_message(const std::filesystem::path& path, const std::string& message) {
+    std::string s = "'";
+    s += path.string();
+    s += "': ";
+    s += message;
+    return s;
+}
+
+std::string read_file_bytes(const std::filesystem::path& path, std::vector<std::uint8_t>& bytes) {
+    bytes.clear();
+    std::unique_ptr<std::FILE, int (*)(std::FILE*)> file(std::fopen(path.c_str(), "rb"),
+                                                         &std::fclose);
+    if (!file) return "cannot read " + file_message(path, std::strerror(errno));
+    std::uint8_t buffer[65536];
+    std::size_t n;
+    while ((n = std::fread(buffer, 1, sizeof buffer, file.get())) > 0)
+        bytes.insert(bytes.end(), buffer, buffer + n);
+    if (std::ferror(file.get())) return "cannot read " + file_message(path, "read error");
+    return {};
+}
+
+}  // namespace jt

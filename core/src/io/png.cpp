@@ -1,0 +1,64 @@
+#include "jtracer/png.hpp"
+
+#include "io/file_bytes.hpp"
+#include "jtracer/atomic_file.hpp"
+
+#include <stb_image.h>
+#include <stb_image_write.h>
+
+#include <cstring>
+#include <limits>
+
+namespace jt {
+
+namespace {
+
+void append_bytes(void* context, void* data, int size) {
+    auto* out = static_cast<std::vector<std::uint8_t>*>(context);
+    const auto* p = static_cast<const std::uint8_t*>(data);
+    out->insert(out->end(), p, p + size);
+}
+
+}  // namespace
+
+std::vector<std::uint8_t> encode_png(const Image8& image) {
+    std::vector<std::uint8_t> out;
+    if (image.width <= 0 || image.height <= 0) return out;
+    const int stride = image.width * 3;
+    // Start at the top row and step down through memory: PNG stores top first.
+    const std::uint8_t* top = image.pixel(0, image.height - 1);
+    stbi_write_png_to_func(append_bytes, &out, image.width, image.height, 3, top, -stride);
+    return out;
+}
+
+std::string decode_png(std::span<const std::uint8_t> bytes, Image8& image) {
+    if (bytes.size() > static_cast<std::size_t>(std::numeric_limits<int>::max()))
+        return "PNG file too large";
+    int width = 0, height = 0, channels = 0;
+    stbi_uc* pixels = stbi_load_from_memory(bytes.data(), static_cast<int>(bytes.size()), &width,
+                                            &height, &channels, 3);
+    if (!pixels) return std::string("not a readable PNG: ") + stbi_failure_reason();
+    image = Image8(width, height);
+    const std::size_t stride = static_cast<std::size_t>(width) * 3;
+    for (int y = 0; y < height; ++y)
+        std::memcpy(image.pixel(0, y), pixels + stride * static_cast<std::size_t>(height - 1 - y),
+                    stride);
+    stbi_image_free(pixels);
+    return {};
+}
+
+std::string write_png(const std::filesystem::path& path, const Image8& image) {
+    std::vector<std::uint8_t> bytes = encode_png(image);
+    if (bytes.empty()) return "cannot encode " + file_message(path, "PNG encoder failed");
+    return write_file_atomically(path, bytes);
+}
+
+std::string read_png(const std::filesystem::path& path, Image8& image) {
+    std::vector<std::uint8_t> bytes;
+    if (std::string error = read_file_bytes(path, bytes); !error.empty()) return error;
+    if (std::string error = decode_png(bytes, image); !error.empty())
+        return file_message(path, error);
+    return {};
+}
+
+}  // namespace jt

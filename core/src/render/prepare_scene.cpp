@@ -1,0 +1,197 @@
+#include "geometry/bounds.hpp"
+#include "render/embree_device.hpp"
+#include "render/prepared_scene.hpp"
+#include "render/ray_queries.hpp"
+
+#include <glm/geometric.hpp>
+
+#include <algorithm>
+#include <cmath>
+
+namespace jt {
+
+Geometry::~Geometry() {
+    if (bvh) rtcReleaseScene(bvh);
+}
+
+namespace {
+
+bool finite(const Vec3& v) {
+    return std::isfinite(v.x) && std::isfinite(v.y) && std::isfinite(v.z);
+}
+
+// Past this many bounded primitives, a faster Morton build pays off more than a
+// better tree: the render of a huge scene is short next to its build.
+constexpr std::size_t fast_build_threshold = 500000;
+
+bool same_geometry(const Geometry& g, const Scene& scene) {
+    if (g.built_shapes.size() != scene.primitives.size()) return false;
+    std::uint32_t begin = 0;
+    for (std::size_t i = 0; i < scene.primitives.size(); ++i) {
+        const Primitive& p = scene.primitives[i];
+        if (!(p.shape == g.built_shapes[i])) return false;
+        std::uint32_t end = g.built_op_ends[i];
+        if (end - begin != p.transforms.size() ||
+            !std::equal(p.transforms.begin(), p.transforms.end(), g.built_ops.begin() + begin))
+            return false;
+        begin = end;
+    }
+    return true;
+}
+
+void add_sphere(Geometry& g, const Sphere& sphere, const Affine& to_world, bool identity,
+                std::uint32_t source) {
+    if (!finite(sphere.center) || !(sphere.radius > 0.0) || !std::isfinite(sphere.radius)) return;
+    if (identity) {
+        g.spheres.push_back({sphere.center, sphere.radius, source});
+        return;
+    }
+    auto inverse = invert(to_world);
+    if (!inverse) return;
+    // A rotation times a uniform scale keeps a sphere a sphere: trace it as one.
+    if (auto scale = similarity_scale(to_world.linear)) {
+        g.spheres.push_back({apply_point(to_world, sphere.center), sphere.radius * *scale, source});
+        return;
+    }
+    TransformedShape s;
+    s.to_object = inverse->inverse;
+    s.normal_matrix = inverse->normal_matrix;
+    s.center = sphere.center;
+    s.radius = sphere.radius;
+    s.kind = ShapeKind::sphere;
+    s.source = source;
+    s.bounds =
+        padded_float_bounds(transformed_sphere_box(sphere.center, sphere.radius, to_world), 0.0);
+    g.shapes.push_back(s);
+}
+
+void add_cylinder(Geometry& g, const Cylinder& cylinder, const Affine& to_world,
+                  std::uint32_t source) {
+    if (!(cylinder.radius > 0.0) || !(cylinder.height > 0.0) || !std::isfinite(cylinder.radius) ||
+        !std::isfinite(cylinder.height))
+        return;
+    auto inverse = invert(to_world);
+    if (!inverse) return;
+    TransformedShape s;
+    s.to_object = inverse->inverse;
+    s.normal_matrix = inverse->normal_matrix;
+    s.radius = cylinder.radius;
+    s.height = cylinder.height;
+    s.kind = ShapeKind::cylinder;
+    s.source = source;
+    s.bounds = padded_float_bounds(
+        transformed_cylinder_box(cylinder.radius, cylinder.height, to_world), 0.0);
+    g.shapes.push_back(s);
+}
+
+// A plane stays a plane under any invertible affine map: move it to world space
+// once, so that it costs one dot product a ray.
+void add_plane(Geometry& g, const Plane& plane, const Affine& to_world, std::uint32_t source) {
+    double length = glm::length(plane.normal);
+    if (!(length > 0.0) || !std::isfinite(length) || !std::isfinite(plane.distance)) return;
+    Vec3 n = plane.normal / length;
+    auto inverse = invert(to_world);
+    if (!inverse) return;
+    Vec3 world_normal = inverse->normal_matrix * n;
+    double world_length = glm::length(world_normal);
+    if (!(world_length > 0.0) || !std::isfinite(world_length)) return;
+    world_normal /= world_length;
+    double distance = glm::dot(world_normal, apply_point(to_world, n * plane.distance));
+    if (!std::isfinite(distance)) return;
+    g.planes.push_back({world_normal, distance, source});
+}
+
+template <typename Intersect, typename Occluded, typename Bounds>
+unsigned attach_user_geometry(RTCScene bvh, Geometry& g, std::size_t count, Bounds bounds,
+                              Intersect intersect, Occluded occluded) {
+    RTCGeometry geometry = rtcNewGeometry(embree_device(), RTC_GEOMETRY_TYPE_USER);
+    rtcSetGeometryUserPrimitiveCount(geometry, static_cast<unsigned>(count));
+    rtcSetGeometryUserData(geometry, &g);
+    rtcSetGeometryBoundsFunction(geometry, bounds, &g);
+    rtcSetGeometryIntersectFunction(geometry, intersect);
+    rtcSetGeometryOccludedFunction(geometry, occluded);
+    rtcCommitGeometry(geometry);
+    unsigned id = rtcAttachGeometry(bvh, geometry);
+    rtcReleaseGeometry(geometry);
+    return id;
+}
+
+// The largest coordinate any box reaches: float rays that travel this far
+// drift from their double originals by about 2^-24 of it.
+double scene_magnitude(const Geometry& g) {
+    double m = 0.0;
+    auto grow = [&m](const Vec3& v) {
+        m = std::max({m, std::abs(v.x), std::abs(v.y), std::abs(v.z)});
+    };
+    for (const WorldSphere& s : g.spheres) grow(glm::abs(s.center) + Vec3(s.radius));
+    for (const TransformedShape& s : g.shapes) {
+        grow(Vec3(s.bounds.lower_x, s.bounds.lower_y, s.bounds.lower_z));
+        grow(Vec3(s.bounds.upper_x, s.bounds.upper_y, s.bounds.upper_z));
+    }
+    return m;
+}
+
+std::shared_ptr<const Geometry> build_geometry(const Scene& scene) {
+    auto g = std::make_shared<Geometry>();
+    g->built_shapes.reserve(scene.primitives.size());
+    g->built_op_ends.reserve(scene.primitives.size());
+    for (std::size_t i = 0; i < scene.primitives.size(); ++i) {
+        const Primitive& p = scene.primitives[i];
+        g->built_shapes.push_back(p.shape);
+        g->built_ops.insert(g->built_ops.end(), p.transforms.begin(), p.transforms.end());
+        g->built_op_ends.push_back(static_cast<std::uint32_t>(g->built_ops.size()));
+
+        Affine to_world = compose_transforms(p.transforms);
+        auto source = static_cast<std::uint32_t>(i);
+        if (const auto* sphere = std::get_if<Sphere>(&p.shape))
+            add_sphere(*g, *sphere, to_world, p.transforms.empty(), source);
+        else if (const auto* cylinder = std::get_if<Cylinder>(&p.shape))
+            add_cylinder(*g, *cylinder, to_world, source);
+        else if (const auto* plane = std::get_if<Plane>(&p.shape))
+            add_plane(*g, *plane, to_world, source);
+    }
+    if (g->spheres.empty() && g->shapes.empty()) return g;
+
+    g->bounds_slack = 1e-6 * scene_magnitude(*g);
+    for (TransformedShape& s : g->shapes) {
+        s.bounds.lower_x -= static_cast<float>(g->bounds_slack);
+        s.bounds.lower_y -= static_cast<float>(g->bounds_slack);
+        s.bounds.lower_z -= static_cast<float>(g->bounds_slack);
+        s.bounds.upper_x += static_cast<float>(g->bounds_slack);
+        s.bounds.upper_y += static_cast<float>(g->bounds_slack);
+        s.bounds.upper_z += static_cast<float>(g->bounds_slack);
+    }
+
+    g->bvh = rtcNewScene(embree_device());
+    std::size_t bounded = g->spheres.size() + g->shapes.size();
+    rtcSetSceneBuildQuality(
+        g->bvh, bounded > fast_build_threshold ? RTC_BUILD_QUALITY_LOW : RTC_BUILD_QUALITY_MEDIUM);
+    rtcSetSceneFlags(g->bvh, RTC_SCENE_FLAG_ROBUST);
+    if (!g->spheres.empty())
+        g->sphere_geometry_id = attach_user_geometry(g->bvh, *g, g->spheres.size(), sphere_bounds,
+                                                     sphere_intersect, sphere_occluded);
+    if (!g->shapes.empty())
+        g->shape_geometry_id = attach_user_geometry(g->bvh, *g, g->shapes.size(), shape_bounds,
+                                                    shape_intersect, shape_occluded);
+    rtcCommitScene(g->bvh);
+    return g;
+}
+
+}  // namespace
+
+std::shared_ptr<const PreparedScene> prepare_scene(const Scene& scene,
+                                                   std::shared_ptr<const PreparedScene> previous) {
+    auto prepared = std::make_shared<PreparedScene>();
+    if (previous && previous->geometry && same_geometry(*previous->geometry, scene))
+        prepared->geometry = previous->geometry;
+    else
+        prepared->geometry = build_geometry(scene);
+    prepared->materials.reserve(scene.primitives.size());
+    for (const Primitive& p : scene.primitives) prepared->materials.push_back(p.material);
+    prepared->lights = scene.lights;
+    prepared->cameras = scene.cameras;
+    prepared->settings = scene.settings;
+    return prepared;
+}
+
+}  // namespace jt

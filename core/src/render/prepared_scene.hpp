@@ -1,0 +1,78 @@
+#pragma once
+// The render-ready scene (the private side of render_job.hpp's PreparedScene).
+//
+// Geometry is split by how it is intersected, into flat arrays with no virtual
+// dispatch: spheres that stay spheres in world space, shapes that need their
+// inverse transform, and infinite planes (outside the BVH). Every entry keeps
+// `source`, the index of the Scene primitive it came from, for its material.
+
+#include "geometry/affine.hpp"
+#include "jtracer/render_job.hpp"
+#include "jtracer/scene.hpp"
+
+#include <embree3/rtcore.h>
+
+#include <cstdint>
+#include <memory>
+#include <vector>
+
+namespace jt {
+
+struct WorldSphere {
+    Vec3 center{0.0};
+    double radius = 1.0;
+    std::uint32_t source = 0;
+};
+
+enum class ShapeKind : std::uint8_t { sphere, cylinder };
+
+// A sphere or cylinder defined in object space (sphere: center and radius;
+// cylinder: radius and height) and seen through a non-trivial transform.
+struct TransformedShape {
+    Affine to_object;
+    glm::dmat3 normal_matrix{1.0};  // inverse transpose of the object-to-world map
+    Vec3 center{0.0};
+    double radius = 1.0;
+    double height = 1.0;
+    ShapeKind kind = ShapeKind::sphere;
+    std::uint32_t source = 0;
+    RTCBounds bounds{};
+};
+
+struct WorldPlane {
+    Vec3 normal{0.0, 1.0, 0.0};  // unit
+    double distance = 0.0;
+    std::uint32_t source = 0;
+};
+
+// Shapes, transforms and the BVH: the part worth reusing when only materials,
+// lights, cameras or settings change.
+struct Geometry {
+    std::vector<WorldSphere> spheres;
+    std::vector<TransformedShape> shapes;
+    std::vector<WorldPlane> planes;
+    double bounds_slack = 0.0;  // world-space margin added to every box
+    RTCScene bvh = nullptr;     // null when nothing is bounded
+    unsigned sphere_geometry_id = RTC_INVALID_GEOMETRY_ID;
+    unsigned shape_geometry_id = RTC_INVALID_GEOMETRY_ID;
+
+    // What the geometry was built from, to recognise it again.
+    std::vector<Shape> built_shapes;
+    std::vector<TransformOp> built_ops;
+    std::vector<std::uint32_t> built_op_ends;
+
+    Geometry() = default;
+    Geometry(const Geometry&) = delete;
+    Geometry& operator=(const Geometry&) = delete;
+    ~Geometry();
+};
+
+struct PreparedScene {
+    std::shared_ptr<const Geometry> geometry;
+    std::vector<Material> materials;  // indexed by Scene primitive
+    std::vector<PointLight> lights;
+    std::vector<Camera> cameras;
+    RenderSettings settings;
+};
+
+}  // namespace jt

@@ -1,0 +1,233 @@
+#include "render/ray_queries.hpp"
+
+#include "geometry/bounds.hpp"
+#include "geometry/intersect.hpp"
+
+#include <cmath>
+#include <limits>
+
+namespace jt {
+
+namespace {
+
+constexpr std::uint32_t no_source = std::numeric_limits<std::uint32_t>::max();
+constexpr float float_infinity = std::numeric_limits<float>::infinity();
+
+// Embree hands our callbacks the context pointer we passed in; the query
+// structs start with it so that they can be found again from it.
+enum class HitKind : std::uint8_t { plane, sphere, shape };
+
+struct ClosestQuery {
+    RTCIntersectContext context;
+    const Geometry* geometry;
+    Vec3 origin, direction;
+    double t_min;
+    double t;
+    std::uint32_t source;
+    // How to find the normal of the best hit once the walk is over.
+    HitKind kind;
+    std::uint32_t index;
+    CylinderPart part;
+};
+
+struct OcclusionQuery {
+    RTCIntersectContext context;
+    const Geometry* geometry;
+    Vec3 origin, direction;
+    double t_min, t_max;
+};
+
+float float_down(double x) {
+    if (!(x > 0.0)) return 0.0f;
+    float f = static_cast<float>(x);
+    if (static_cast<double>(f) > x) f = std::nextafter(f, 0.0f);
+    return f;
+}
+
+// One float step above too, so that Embree's own rounding of box entry
+// distances cannot cull a box that holds an equally near exact hit.
+float float_up(double x) {
+    if (!(x < std::numeric_limits<double>::max())) return float_infinity;
+    float f = static_cast<float>(x);
+    if (static_cast<double>(f) < x) f = std::nextafter(f, float_infinity);
+    return std::nextafter(f, float_infinity);
+}
+
+// Up to and including `t`, for the tie rule.
+double just_beyond(double t) {
+    return std::nextafter(t, std::numeric_limits<double>::infinity());
+}
+
+bool better(double t, std::uint32_t source, const ClosestQuery& q) {
+    return t < q.t || (t == q.t && source < q.source);
+}
+
+void set_float_ray(RTCRay& ray, const Vec3& origin, const Vec3& direction, double t_min,
+                   double t_max) {
+    ray.org_x = static_cast<float>(origin.x);
+    ray.org_y = static_cast<float>(origin.y);
+    ray.org_z = static_cast<float>(origin.z);
+    ray.dir_x = static_cast<float>(direction.x);
+    ray.dir_y = static_cast<float>(direction.y);
+    ray.dir_z = static_cast<float>(direction.z);
+    ray.tnear = float_down(t_min);
+    ray.tfar = float_up(t_max);
+    ray.time = 0.0f;
+    ray.mask = 0xFFFFFFFFu;
+    ray.id = 0;
+    ray.flags = 0;
+}
+
+double shape_distance(const TransformedShape& s, const Vec3& origin, const Vec3& direction,
+                      double t_min, double t_max, CylinderPart& part) {
+    Vec3 o = apply_point(s.to_object, origin);
+    Vec3 d = apply_vector(s.to_object, direction);
+    if (s.kind == ShapeKind::sphere)
+        return intersect_sphere(o, d, s.center, s.radius, t_min, t_max);
+    return intersect_cylinder(o, d, s.radius, s.height, t_min, t_max, part);
+}
+
+void accept(const RTCIntersectFunctionNArguments* args, double t) {
+    RTCRayN* ray = RTCRayHitN_RayN(args->rayhit, args->N);
+    RTCHitN* hit = RTCRayHitN_HitN(args->rayhit, args->N);
+    RTCRayN_tfar(ray, args->N, 0) = float_up(t);
+    RTCHitN_geomID(hit, args->N, 0) = args->geomID;
+    RTCHitN_primID(hit, args->N, 0) = args->primID;
+    RTCHitN_instID(hit, args->N, 0, 0) = RTC_INVALID_GEOMETRY_ID;
+}
+
+void mark_occluded(const RTCOccludedFunctionNArguments* args) {
+    RTCRayN_tfar(args->ray, args->N, 0) = -float_infinity;
+}
+
+}  // namespace
+
+void sphere_bounds(const RTCBoundsFunctionArguments* args) {
+    const auto* g = static_cast<const Geometry*>(args->geometryUserPtr);
+    const WorldSphere& s = g->spheres[args->primID];
+    *args->bounds_o = padded_float_bounds(sphere_box(s.center, s.radius), g->bounds_slack);
+}
+
+void sphere_intersect(const RTCIntersectFunctionNArguments* args) {
+    if (!args->valid[0]) return;
+    auto& q = *reinterpret_cast<ClosestQuery*>(args->context);
+    const WorldSphere& s = q.geometry->spheres[args->primID];
+    double t =
+        intersect_sphere(q.origin, q.direction, s.center, s.radius, q.t_min, just_beyond(q.t));
+    if (t == no_hit || !better(t, s.source, q)) return;
+    q.t = t;
+    q.source = s.source;
+    q.kind = HitKind::sphere;
+    q.index = args->primID;
+    accept(args, t);
+}
+
+void sphere_occluded(const RTCOccludedFunctionNArguments* args) {
+    if (!args->valid[0]) return;
+    auto& q = *reinterpret_cast<OcclusionQuery*>(args->context);
+    const WorldSphere& s = q.geometry->spheres[args->primID];
+    if (intersect_sphere(q.origin, q.direction, s.center, s.radius, q.t_min, q.t_max) != no_hit)
+        mark_occluded(args);
+}
+
+void shape_bounds(const RTCBoundsFunctionArguments* args) {
+    const auto* g = static_cast<const Geometry*>(args->geometryUserPtr);
+    *args->bounds_o = g->shapes[args->primID].bounds;
+}
+
+void shape_intersect(const RTCIntersectFunctionNArguments* args) {
+    if (!args->valid[0]) return;
+    auto& q = *reinterpret_cast<ClosestQuery*>(args->context);
+    const TransformedShape& s = q.geometry->shapes[args->primID];
+    CylinderPart part = CylinderPart::side;
+    double t = shape_distance(s, q.origin, q.direction, q.t_min, just_beyond(q.t), part);
+    if (t == no_hit || !better(t, s.source, q)) return;
+    q.t = t;
+    q.source = s.source;
+    q.kind = HitKind::shape;
+    q.index = args->primID;
+    q.part = part;
+    accept(args, t);
+}
+
+void shape_occluded(const RTCOccludedFunctionNArguments* args) {
+    if (!args->valid[0]) return;
+    auto& q = *reinterpret_cast<OcclusionQuery*>(args->context);
+    const TransformedShape& s = q.geometry->shapes[args->primID];
+    CylinderPart part;
+    if (shape_distance(s, q.origin, q.direction, q.t_min, q.t_max, part) != no_hit)
+        mark_occluded(args);
+}
+
+bool closest_hit(const Geometry& geometry, const Vec3& origin, const Vec3& direction, double t_min,
+                 Hit& hit) {
+    ClosestQuery q;
+    q.geometry = &geometry;
+    q.origin = origin;
+    q.direction = direction;
+    q.t_min = t_min;
+    q.t = no_hit;
+    q.source = no_source;
+    q.kind = HitKind::plane;
+    q.index = 0;
+    q.part = CylinderPart::side;
+
+    // Planes first: a near plane hit tightens the BVH walk.
+    for (std::uint32_t i = 0; i < geometry.planes.size(); ++i) {
+        const WorldPlane& p = geometry.planes[i];
+        double t =
+            intersect_plane(origin, direction, p.normal, p.distance, t_min, just_beyond(q.t));
+        if (t != no_hit && better(t, p.source, q)) {
+            q.t = t;
+            q.source = p.source;
+            q.index = i;
+        }
+    }
+
+    if (geometry.bvh) {
+        rtcInitIntersectContext(&q.context);
+        RTCRayHit rayhit;
+        set_float_ray(rayhit.ray, origin, direction, t_min, q.t);
+        rayhit.hit.geomID = RTC_INVALID_GEOMETRY_ID;
+        rayhit.hit.primID = RTC_INVALID_GEOMETRY_ID;
+        rayhit.hit.instID[0] = RTC_INVALID_GEOMETRY_ID;
+        rtcIntersect1(geometry.bvh, &q.context, &rayhit);
+    }
+    if (q.source == no_source) return false;
+
+    hit.t = q.t;
+    hit.source = q.source;
+    if (q.kind == HitKind::plane) {
+        hit.normal = geometry.planes[q.index].normal;
+    } else if (q.kind == HitKind::sphere) {
+        const WorldSphere& s = geometry.spheres[q.index];
+        hit.normal = (origin + q.t * direction) - s.center;
+    } else {
+        const TransformedShape& s = geometry.shapes[q.index];
+        Vec3 p = apply_point(s.to_object, origin) + q.t * apply_vector(s.to_object, direction);
+        Vec3 n = s.kind == ShapeKind::sphere ? p - s.center : cylinder_normal(p, q.part);
+        hit.normal = s.normal_matrix * n;
+    }
+    return true;
+}
+
+bool occluded(const Geometry& geometry, const Vec3& origin, const Vec3& direction, double t_min,
+              double t_max) {
+    for (const WorldPlane& p : geometry.planes)
+        if (intersect_plane(origin, direction, p.normal, p.distance, t_min, t_max) != no_hit)
+            return true;
+    if (!geometry.bvh) return false;
+    OcclusionQuery q;
+    rtcInitIntersectContext(&q.context);
+    q.geometry = &geometry;
+    q.origin = origin;
+    q.direction = direction;
+    q.t_min = t_min;
+    q.t_max = t_max;
+    RTCRay ray;
+    set_float_ray(ray, origin, direction, t_min, t_max);
+    rtcOccluded1(geometry.bvh, &q.context, &ray);
+    return ray.tfar < 0.0f;
+}
+
+}  // namespace jt

@@ -1,0 +1,39 @@
+#pragma once
+// Closest-hit and any-hit queries against a Geometry, exact in double precision.
+// Embree only culls: it walks the BVH with a float copy of the ray, and our
+// callbacks decide every hit with the double ray, keeping the result in the
+// query (Embree's float tfar is only ever a conservative upper bound).
+
+#include "render/prepared_scene.hpp"
+
+#include <embree3/rtcore.h>
+
+#include <cstdint>
+
+namespace jt {
+
+struct Hit {
+    double t = 0.0;
+    Vec3 normal{0.0};  // outward geometric normal, world space, not unit length
+    std::uint32_t source = 0;
+};
+
+// Nearest surface along origin + t * direction with t in (t_min, infinity).
+// Equal distances resolve to the lower primitive index, so that the answer
+// never depends on BVH traversal order.
+bool closest_hit(const Geometry& geometry, const Vec3& origin, const Vec3& direction, double t_min,
+                 Hit& hit);
+
+// Whether any surface lies at some t in (t_min, t_max).
+bool occluded(const Geometry& geometry, const Vec3& origin, const Vec3& direction, double t_min,
+              double t_max);
+
+// Embree callbacks for the two user geometries; prepare_scene registers them.
+void sphere_bounds(const RTCBoundsFunctionArguments* args);
+void sphere_intersect(const RTCIntersectFunctionNArguments* args);
+void sphere_occluded(const RTCOccludedFunctionNArguments* args);
+void shape_bounds(const RTCBoundsFunctionArguments* args);
+void shape_intersect(const RTCIntersectFunctionNArguments* args);
+void shape_occluded(const RTCOccludedFunctionNArguments* args);
+
+}  // namespace jt

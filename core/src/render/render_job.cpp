@@ -1,0 +1,293 @@
+#include "jtracer/render_job.hpp"
+
+#include "render/camera_rays.hpp"
+#include "render/prepared_scene.hpp"
+#include "render/render_passes.hpp"
+#include "render/sample_pattern.hpp"
+#include "render/trace.hpp"
+
+#include <tbb/parallel_for.h>
+#include <tbb/task_arena.h>
+
+#include <algorithm>
+#include <chrono>
+#include <mutex>
+
+namespace jt {
+
+namespace {
+
+constexpr int tile_blocks = 32;  // a tile is 32 x 32 rays
+
+double clamp01(double c) {
+    return c > 0.0 ? (c < 1.0 ? c : 1.0) : 0.0;
+}
+
+Colour clamp01(const Colour& c) {
+    return {clamp01(c.x), clamp01(c.y), clamp01(c.z)};
+}
+
+PixelRect unite(const std::optional<PixelRect>& a, const PixelRect& b) {
+    if (!a) return b;
+    return {std::min(a->x0, b.x0), std::min(a->y0, b.y0), std::max(a->x1, b.x1),
+            std::max(a->y1, b.y1)};
+}
+
+PixelRect clip_region(const RenderOptions& o) {
+    PixelRect full{0, 0, std::max(o.width, 0), std::max(o.height, 0)};
+    if (!o.region) return full;
+    return {std::clamp(o.region->x0, 0, full.x1), std::clamp(o.region->y0, 0, full.y1),
+            std::clamp(o.region->x1, 0, full.x1), std::clamp(o.region->y1, 0, full.y1)};
+}
+
+// Camera rays through a camera that cannot form a frame (no camera, look_at
+// equal to position) come out non-finite, and trace_ray turns them into the
+// background rather than NaN.
+CameraFrame frame_for(const PreparedScene& scene, const RenderOptions& o) {
+    Camera camera;
+    if (o.camera >= 0 && o.camera < static_cast<int>(scene.cameras.size()))
+        camera = scene.cameras[static_cast<std::size_t>(o.camera)];
+    else
+        camera.look_at = camera.position;
+    return camera_frame(camera, std::max(o.width, 1), std::max(o.height, 1));
+}
+
+}  // namespace
+
+struct RenderJob::State {
+    std::shared_ptr<const PreparedScene> scene;
+    RenderOptions options;
+    CameraFrame camera;
+    PixelRect region;
+    std::vector<RenderPass> passes;
+    std::uint64_t total_work = 0;
+    tbb::task_arena arena;
+    // Running sums of clamped samples, one colour a pixel; only when samples > 1.
+    std::vector<Colour> sums;
+
+    std::atomic<bool> cancel_requested{false};
+    std::atomic<std::uint64_t> rays{0};
+    std::atomic<std::uint64_t> work_done{0};
+
+    mutable std::mutex image_mutex;  // guards image and dirty
+    Image8 image;
+    std::optional<PixelRect> dirty;
+
+    mutable std::mutex progress_mutex;  // guards the fields below
+    std::size_t next_pass = 0;
+    int samples_done = 0;
+    double seconds = 0.0;
+    bool cancelled = false;
+
+    void render_tile(const RenderPass& pass, const PixelRect& tile);
+    void publish(const PixelRect& tile, const std::vector<std::uint8_t>& rgb);
+};
+
+void RenderJob::State::publish(const PixelRect& tile, const std::vector<std::uint8_t>& rgb) {
+    std::lock_guard lock(image_mutex);
+    const std::size_t row_bytes = static_cast<std::size_t>(tile.width()) * 3;
+    for (int y = tile.y0; y < tile.y1; ++y)
+        std::copy_n(&rgb[static_cast<std::size_t>(y - tile.y0) * row_bytes], row_bytes,
+                    image.pixel(tile.x0, y));
+    dirty = unite(dirty, tile);
+}
+
+void RenderJob::State::render_tile(const RenderPass& pass, const PixelRect& tile) {
+    if (cancel_requested.load(std::memory_order_relaxed)) return;
+    const PreparedScene& s = *scene;
+    const double t_min = 0.0;
+    std::uint64_t tile_rays = 0;
+    std::vector<std::uint8_t> rgb(static_cast<std::size_t>(tile.width()) * tile.height() * 3);
+    auto put = [&](int x, int y, const Colour& c) {
+        std::uint8_t* p = &rgb[(static_cast<std::size_t>(y - tile.y0) * tile.width() +
+                                static_cast<std::size_t>(x - tile.x0)) *
+                               3];
+        p[0] = quantize_channel(c.x);
+        p[1] = quantize_channel(c.y);
+        p[2] = quantize_channel(c.z);
+    };
+
+    if (pass.block > 1) {
+        const int b = pass.block;
+        for (int by = tile.y0 / b * b; by < tile.y1; by += b) {
+            if (cancel_requested.load(std::memory_order_relaxed)) return;
+            for (int bx = tile.x0 / b * b; bx < tile.x1; bx += b) {
+                // The centre of the block, as far as the image reaches.
+                double cx = bx + 0.5 * (std::min(bx + b, options.width) - bx);
+                double cy = by + 0.5 * (std::min(by + b, options.height) - by);
+                Colour c = trace_ray(s, camera.position, camera_direction(camera, cx, cy), t_min,
+                                     tile_rays);
+                for (int y = std::max(by, tile.y0); y < std::min(by + b, tile.y1); ++y)
+                    for (int x = std::max(bx, tile.x0); x < std::min(bx + b, tile.x1); ++x)
+                        put(x, y, c);
+            }
+        }
+    } else {
+        const bool accumulate = !sums.empty();
+        for (int y = tile.y0; y < tile.y1; ++y) {
+            if (cancel_requested.load(std::memory_order_relaxed)) return;
+            for (int x = tile.x0; x < tile.x1; ++x) {
+                if (!accumulate) {
+                    put(x, y,
+                        trace_ray(s, camera.position, camera_direction(camera, x + 0.5, y + 0.5),
+                                  t_min, tile_rays));
+                    continue;
+                }
+                Colour& sum = sums[static_cast<std::size_t>(y) * options.width + x];
+                if (pass.sample_begin == 0) sum = Colour(0.0);
+                for (int k = pass.sample_begin; k < pass.sample_end; ++k) {
+                    SampleOffset o = sample_offset(k);
+                    sum += clamp01(trace_ray(s, camera.position,
+                                             camera_direction(camera, x + o.x, y + o.y), t_min,
+                                             tile_rays));
+                }
+                put(x, y, sum / static_cast<double>(pass.sample_end));
+            }
+        }
+    }
+    rays.fetch_add(tile_rays, std::memory_order_relaxed);
+    publish(tile, rgb);
+}
+
+RenderJob::RenderJob(std::shared_ptr<const PreparedScene> scene, RenderOptions options)
+    : state_(std::make_unique<State>()) {
+    State& s = *state_;
+    options.samples = std::clamp(options.samples, 1, 1024);
+    options.width = std::max(options.width, 0);
+    options.height = std::max(options.height, 0);
+    s.scene = std::move(scene);
+    s.options = options;
+    s.region = clip_region(options);
+    if (s.scene) {
+        s.camera = frame_for(*s.scene, options);
+        s.passes = plan_passes(s.region, options.samples, options.previews);
+    }
+    for (const RenderPass& p : s.passes) s.total_work += p.work;
+    if (options.threads > 0) s.arena.initialize(options.threads);
+    s.image = Image8(options.width, options.height);
+    if (options.samples > 1 && !s.region.empty())
+        s.sums.assign(static_cast<std::size_t>(options.width) * options.height, Colour(0.0));
+}
+
+RenderJob::~RenderJob() = default;
+
+bool RenderJob::run_pass() {
+    State& s = *state_;
+    std::size_t index;
+    {
+        std::lock_guard lock(s.progress_mutex);
+        if (s.cancelled || s.next_pass >= s.passes.size()) return false;
+        index = s.next_pass;
+    }
+    const auto start = std::chrono::steady_clock::now();
+    const RenderPass& pass = s.passes[index];
+    const std::vector<PixelRect> tiles = cut_tiles(s.region, pass.block, tile_blocks);
+    const std::uint64_t work_before = s.work_done.load();
+    s.arena.execute([&] {
+        tbb::parallel_for(
+            tbb::blocked_range<std::size_t>(0, tiles.size(), 1),
+            [&](const tbb::blocked_range<std::size_t>& range) {
+                for (std::size_t i = range.begin(); i != range.end(); ++i) {
+                    s.render_tile(pass, tiles[i]);
+                    if (s.cancel_requested.load(std::memory_order_relaxed)) return;
+                    // Work in rays of this pass, spread evenly over its tiles.
+                    const PixelRect& t = tiles[i];
+                    std::uint64_t units =
+                        pass.block > 1
+                            ? static_cast<std::uint64_t>((t.width() + pass.block - 1) /
+                                                         pass.block) *
+                                  static_cast<std::uint64_t>((t.height() + pass.block - 1) /
+                                                             pass.block)
+                            : static_cast<std::uint64_t>(t.width()) * t.height() *
+                                  static_cast<std::uint64_t>(pass.sample_end - pass.sample_begin);
+                    s.work_done.fetch_add(units, std::memory_order_relaxed);
+                }
+            },
+            tbb::simple_partitioner());
+    });
+    const double elapsed =
+        std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
+    std::lock_guard lock(s.progress_mutex);
+    s.seconds += elapsed;
+    if (s.cancel_requested.load()) {
+        s.cancelled = true;
+        return false;
+    }
+    // Exact bookkeeping once the pass is whole (tile rounding may differ).
+    s.work_done.store(work_before + pass.work);
+    if (pass.block == 1) s.samples_done = pass.sample_end;
+    s.next_pass = index + 1;
+    return true;
+}
+
+void RenderJob::run() {
+    while (run_pass()) {
+    }
+}
+
+void RenderJob::cancel() {
+    state_->cancel_requested.store(true);
+}
+
+RenderProgress RenderJob::progress() const {
+    const State& s = *state_;
+    RenderProgress p;
+    std::lock_guard lock(s.progress_mutex);
+    p.pass_count = static_cast<int>(s.passes.size());
+    p.finished = s.next_pass >= s.passes.size() && !s.cancelled;
+    std::size_t current = std::min(s.next_pass, s.passes.empty() ? 0 : s.passes.size() - 1);
+    p.pass = static_cast<int>(current);
+    if (!s.passes.empty()) p.pass_name = s.passes[current].name;
+    p.fraction = s.total_work == 0 ? (p.finished ? 1.0 : 0.0)
+                                   : std::min(1.0, static_cast<double>(s.work_done.load()) /
+                                                       static_cast<double>(s.total_work));
+    if (p.finished) p.fraction = 1.0;
+    p.samples_done = s.samples_done;
+    p.rays = s.rays.load();
+    p.seconds = s.seconds;
+    p.cancelled = s.cancelled || s.cancel_requested.load();
+    return p;
+}
+
+std::optional<PixelRect> RenderJob::fetch_updates(Image8& display) {
+    State& s = *state_;
+    std::lock_guard lock(s.image_mutex);
+    if (display.width != s.image.width || display.height != s.image.height ||
+        display.rgb.size() != s.image.rgb.size()) {
+        display = s.image;
+        s.dirty.reset();
+        return PixelRect{0, 0, s.image.width, s.image.height};
+    }
+    if (!s.dirty) return std::nullopt;
+    PixelRect r = *s.dirty;
+    s.dirty.reset();
+    const std::size_t row_bytes = static_cast<std::size_t>(r.width()) * 3;
+    for (int y = r.y0; y < r.y1; ++y)
+        std::copy_n(s.image.pixel(r.x0, y), row_bytes, display.pixel(r.x0, y));
+    return r;
+}
+
+Image8 RenderJob::image() const {
+    std::lock_guard lock(state_->image_mutex);
+    return state_->image;
+}
+
+const RenderOptions& RenderJob::options() const {
+    return state_->options;
+}
+
+Image8 render_image(std::shared_ptr<const PreparedScene> scene, RenderOptions options) {
+    options.previews = false;
+    RenderJob job(std::move(scene), options);
+    job.run();
+    return job.image();
+}
+
+int find_camera(const Scene& scene, std::string_view name) {
+    if (name.empty()) return -1;
+    for (std::size_t i = 0; i < scene.cameras.size(); ++i)
+        if (scene.cameras[i].name == name) return static_cast<int>(i);
+    return -1;
+}
+
+}  // namespace jt

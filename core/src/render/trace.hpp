@@ -1,0 +1,20 @@
+#pragma once
+// Whitted shading of one ray (SEMANTICS.md section 6).
+
+#include "render/prepared_scene.hpp"
+
+#include <cstdint>
+
+namespace jt {
+
+// The colour seen along origin + t * unit_direction, t > t_min, unclamped.
+// Adds the rays it traces (this one, shadow and reflection rays) to `rays`.
+Colour trace_ray(const PreparedScene& scene, const Vec3& origin, const Vec3& unit_direction,
+                 double t_min, std::uint64_t& rays);
+
+// How far to lift a secondary ray's origin off the surface at `point`, reached
+// from `origin` after `distance`: well above the rounding error of the hit
+// point (about 1e-16 of these magnitudes), far below any feature of the scene.
+double surface_offset(const Vec3& origin, const Vec3& point, double distance);
+
+}  // namespace jt
