@@ -2,8 +2,10 @@
 
 #include "language/number_text.hpp"
 
+#include <array>
 #include <charconv>
 #include <cmath>
+#include <cstdint>
 #include <cstdio>
 #include <cstring>
 #include <string>
@@ -12,19 +14,36 @@ namespace jt::lang {
 
 namespace {
 
+enum CharClass : unsigned char { digit = 1, word_start = 2, number_part = 4 };
+
+constexpr auto char_classes = [] {
+    std::array<unsigned char, 256> table{};
+    for (int c = '0'; c <= '9'; ++c) table[c] = digit | number_part;
+    for (int c = 'a'; c <= 'z'; ++c) table[c] = word_start;
+    for (int c = 'A'; c <= 'Z'; ++c) table[c] = word_start;
+    table['_'] = word_start;
+    // Characters that continue something that started like a number, so that
+    // ".3.2", "1..2" and "--1" are each one malformed number.
+    for (int c : {'.', '+', '-'}) table[c] = number_part;
+    table['e'] |= number_part;
+    table['E'] |= number_part;
+    return table;
+}();
+
+bool has_class(char c, unsigned char cls) {
+    return char_classes[static_cast<unsigned char>(c)] & cls;
+}
 bool is_digit(char c) {
-    return c >= '0' && c <= '9';
+    return has_class(c, digit);
 }
 bool is_word_start(char c) {
-    return (c >= 'a' && c <= 'z') || (c >= 'A' && c <= 'Z') || c == '_';
+    return has_class(c, word_start);
 }
 bool is_word_char(char c) {
-    return is_word_start(c) || is_digit(c);
+    return has_class(c, word_start | digit);
 }
-// Characters that continue something that started like a number, so that
-// ".3.2", "1..2" and "--1" are each one malformed number.
 bool is_number_char(char c) {
-    return is_digit(c) || c == '.' || c == '+' || c == '-' || c == 'e' || c == 'E';
+    return has_class(c, number_part);
 }
 
 // sign? (digits ('.' digits?)? | '.' digits) (('e'|'E') sign? digits)?
@@ -128,6 +147,53 @@ Token Lexer::next() {
     return Token{TokenKind::end, {}, text_.size(), 0, pos_of(at_), 0.0};
 }
 
+namespace {
+
+// Clinger's fast path: a decimal with at most 15 significant digits and a small
+// power of ten is exactly m / 10^k or m * 10^k in one correctly rounded
+// operation, the same double std::from_chars gives. Returns false otherwise.
+bool fast_decimal(std::string_view s, double& out) {
+    static constexpr double powers[] = {1e0,  1e1,  1e2,  1e3,  1e4,  1e5,  1e6,  1e7,
+                                        1e8,  1e9,  1e10, 1e11, 1e12, 1e13, 1e14, 1e15,
+                                        1e16, 1e17, 1e18, 1e19, 1e20, 1e21, 1e22};
+    std::size_t i = 0;
+    bool negative = false;
+    if (s[i] == '-' || s[i] == '+') negative = s[i++] == '-';
+    std::uint64_t mantissa = 0;
+    int digits = 0, scale = 0;
+    for (; i < s.size() && is_digit(s[i]); ++i) {
+        if (mantissa == 0 && s[i] == '0') continue;  // leading zeros are not significant
+        mantissa = mantissa * 10 + static_cast<unsigned>(s[i] - '0');
+        ++digits;
+    }
+    if (i < s.size() && s[i] == '.') {
+        for (++i; i < s.size() && is_digit(s[i]); ++i) {
+            --scale;
+            if (mantissa == 0 && s[i] == '0') continue;
+            mantissa = mantissa * 10 + static_cast<unsigned>(s[i] - '0');
+            ++digits;
+        }
+    }
+    if (i < s.size()) {  // an exponent
+        ++i;
+        bool negative_exponent = false;
+        if (s[i] == '-' || s[i] == '+') negative_exponent = s[i++] == '-';
+        int exponent = 0;
+        for (; i < s.size(); ++i) {
+            if (exponent > 1000) return false;
+            exponent = exponent * 10 + (s[i] - '0');
+        }
+        scale += negative_exponent ? -exponent : exponent;
+    }
+    if (digits > 15 || scale < -22 || scale > 22) return false;
+    double value = static_cast<double>(mantissa);
+    value = scale < 0 ? value / powers[-scale] : value * powers[scale];
+    out = negative ? -value : value;
+    return true;
+}
+
+}  // namespace
+
 Token Lexer::lex_number(std::size_t start) {
     while (at_ < text_.size() && is_number_char(text_[at_])) ++at_;
     std::string_view run = text_.substr(start, at_ - start);
@@ -137,6 +203,7 @@ Token Lexer::lex_number(std::size_t start) {
         token.kind = TokenKind::bad_value;
         return token;
     }
+    if (fast_decimal(run, token.number)) return token;
     std::string_view digits = run[0] == '+' ? run.substr(1) : run;
     auto [end, ec] = std::from_chars(digits.data(), digits.data() + digits.size(), token.number);
     if (ec != std::errc() || end != digits.data() + digits.size() || !std::isfinite(token.number)) {

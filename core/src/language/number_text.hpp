@@ -1,6 +1,8 @@
 #pragma once
 // Numbers as text that reads back to exactly the same double.
 
+#include <glm/vec3.hpp>
+
 #include <charconv>
 #include <string>
 #include <string_view>
@@ -13,6 +15,13 @@ inline std::string number_text(double value) {
     char buf[64];
     auto [end, ec] = std::to_chars(buf, buf + sizeof buf, value);
     return ec == std::errc() ? std::string(buf, end) : std::string("0");
+}
+
+// "<1, 0.5, 0>": a vector as .jts text.
+inline std::string vector_text(const glm::dvec3& v) {
+    std::string out = "<";
+    out.append(number_text(v.x)).append(", ").append(number_text(v.y)).append(", ");
+    return out.append(number_text(v.z)).append(">");
 }
 
 // 'word' in single quotes, as messages cite names. (Built with append: GCC 12

@@ -319,8 +319,9 @@ class Parser {
         BlockSource block;
         RenderSettings settings;  // a later block replaces the earlier one whole
         if (!open_block(block)) return;
+        OpenBlock open{block};
         parse_body(
-            block, kNoBlocks, [&](const Property& p) { reader_.apply(settings, block, p); },
+            block, kNoBlocks, [&](const Property& p) { reader_.apply(settings, open, p); },
             [&] { unknown_block("in 'render_settings'", kNoBlocks); });
         if (result_.source.render_settings) {
             sink_.warning(
@@ -345,8 +346,9 @@ class Parser {
             BlockSource block;
             Camera camera;
             if (!open_block(block)) return;
+            OpenBlock open{block};
             parse_body(
-                block, kNoBlocks, [&](const Property& p) { reader_.apply(camera, block, p); },
+                block, kNoBlocks, [&](const Property& p) { reader_.apply(camera, open, p); },
                 [&] { unknown_block("in 'perspective_camera'", kNoBlocks); });
             result_.scene.cameras.push_back(std::move(camera));
             result_.source.cameras.push_back(std::move(block));
@@ -365,9 +367,10 @@ class Parser {
                 BlockSource light_block;
                 PointLight light;
                 if (!open_block(light_block)) return;
+                OpenBlock open{light_block};
                 parse_body(
                     light_block, kNoBlocks,
-                    [&](const Property& p) { reader_.apply(light, light_block, p); },
+                    [&](const Property& p) { reader_.apply(light, open, p); },
                     [&] { light_child(); });
                 lights.push_back(light);
                 light_sources.push_back(std::move(light_block));
@@ -413,24 +416,31 @@ class Parser {
     }
 
     void parse_primitive_body(Primitive& primitive, BlockSource& block) {
+        OpenBlock open{block};
         parse_body(
             block, kPrimitiveBlocks,
-            [&](const Property& p) { reader_.apply(primitive.shape, block, p); },
+            [&](const Property& p) { reader_.apply(primitive.shape, open, p); },
             [&] {
                 if (cur_.text == "material") {
                     BlockSource child;
                     if (!open_block(child)) return;
+                    OpenBlock open_child{child};
                     parse_body(
                         child, kNoBlocks,
-                        [&](const Property& p) { reader_.apply(primitive.material, child, p); },
+                        [&](const Property& p) {
+                            reader_.apply(primitive.material, open_child, p);
+                        },
                         [&] { unknown_block("in 'material'", kNoBlocks); });
                     block.children.push_back(std::move(child));
                 } else if (cur_.text == "transform") {
                     BlockSource child;
                     if (!open_block(child)) return;
+                    OpenBlock open_child{child};
                     parse_body(
                         child, kNoBlocks,
-                        [&](const Property& p) { reader_.apply(primitive.transforms, child, p); },
+                        [&](const Property& p) {
+                            reader_.apply(primitive.transforms, open_child, p);
+                        },
                         [&] { unknown_block("in 'transform'", kNoBlocks); });
                     block.children.push_back(std::move(child));
                 } else {

@@ -28,12 +28,6 @@ constexpr std::array<std::string_view, 7> kMaterial{
 constexpr std::array<std::string_view, 5> kTransform{"translate", "scale", "xrotate", "yrotate",
                                                      "zrotate"};
 
-std::string vector_text(const Vec3& v) {
-    std::string out = "<";
-    out.append(number_text(v.x)).append(", ").append(number_text(v.y)).append(", ");
-    return out.append(number_text(v.z)).append(">");
-}
-
 bool is_non_finite_word(std::string_view w) {
     std::string lower;
     for (char c : w) lower += static_cast<char>(c >= 'A' && c <= 'Z' ? c - 'A' + 'a' : c);
@@ -71,7 +65,9 @@ void PropertyReader::range_error(const Property& p, std::string_view rule) {
     std::string value = p.value.form == Value::Form::vector
                             ? vector_text(p.value.vector)
                             : std::string(p.value.text.substr(0, 40));
-    sink_.error(p.value.span.pos, quote(p.name) + " " + std::string(rule) + ", got " + value);
+    std::string message = quote(p.name) + " " + std::string(rule);
+    if (!value.empty()) message += ", got " + value;
+    sink_.error(p.value.span.pos, std::move(message));
 }
 
 bool PropertyReader::number(const Property& p, double& out) {
@@ -142,23 +138,24 @@ bool PropertyReader::string(const Property& p, std::string& out) {
     return true;
 }
 
-void PropertyReader::record(BlockSource& block, const Property& p, std::string_view as_name,
+void PropertyReader::record(OpenBlock& block, const Property& p, std::string_view as_name,
                             bool warn_repeat) {
     if (warn_repeat) {
-        for (const PropertySource& earlier : block.properties) {
-            if (earlier.name == as_name) {
-                sink_.warning(p.name_span.pos,
-                              quote(as_name) + " is set again in this " + quote(block.keyword) +
-                                  "; the later value wins (first set at line " +
-                                  std::to_string(earlier.name_span.pos.line) + ")");
-                break;
-            }
+        auto first = std::find_if(block.first_lines.begin(), block.first_lines.end(),
+                                  [&](const auto& entry) { return entry.first == as_name; });
+        if (first == block.first_lines.end()) {
+            block.first_lines.emplace_back(as_name, p.name_span.pos.line);
+        } else if (sink_.accepts_warnings()) {
+            sink_.warning(p.name_span.pos, quote(as_name) + " is set again in this " +
+                                               quote(block.source.keyword) +
+                                               "; the later value wins (first set at line " +
+                                               std::to_string(first->second) + ")");
         }
     }
-    block.properties.push_back({std::string(as_name), p.name_span, p.value.span});
+    block.source.properties.push_back({std::string(as_name), p.name_span, p.value.span});
 }
 
-void PropertyReader::apply(RenderSettings& s, BlockSource& block, const Property& p) {
+void PropertyReader::apply(RenderSettings& s, OpenBlock& block, const Property& p) {
     bool ok = false;
     if (p.name == "width") {
         ok = whole_number(p, s.width, 0, 65535);
@@ -203,7 +200,7 @@ void PropertyReader::apply(RenderSettings& s, BlockSource& block, const Property
     if (ok) record(block, p, p.name, true);
 }
 
-void PropertyReader::apply(Camera& c, BlockSource& block, const Property& p) {
+void PropertyReader::apply(Camera& c, OpenBlock& block, const Property& p) {
     bool ok = false;
     std::string_view as_name = p.name;
     if (p.name == "name") {
@@ -242,7 +239,7 @@ void PropertyReader::apply(Camera& c, BlockSource& block, const Property& p) {
     if (ok) record(block, p, as_name, true);
 }
 
-void PropertyReader::apply(Shape& shape, BlockSource& block, const Property& p) {
+void PropertyReader::apply(Shape& shape, OpenBlock& block, const Property& p) {
     bool ok = false;
     bool known = true;
     if (auto* sphere = std::get_if<Sphere>(&shape)) {
@@ -287,7 +284,7 @@ void PropertyReader::apply(Shape& shape, BlockSource& block, const Property& p) 
     if (ok && known) record(block, p, p.name, true);
 }
 
-void PropertyReader::apply(Material& m, BlockSource& block, const Property& p) {
+void PropertyReader::apply(Material& m, OpenBlock& block, const Property& p) {
     bool ok = false;
     if (p.name == "pigment") {
         ok = colour(p, m.pigment);
@@ -320,7 +317,7 @@ void PropertyReader::apply(Material& m, BlockSource& block, const Property& p) {
     if (ok) record(block, p, p.name, true);
 }
 
-void PropertyReader::apply(PointLight& light, BlockSource& block, const Property& p) {
+void PropertyReader::apply(PointLight& light, OpenBlock& block, const Property& p) {
     bool ok = false;
     if (p.name == "position") {
         ok = vector(p, light.position);
@@ -333,7 +330,7 @@ void PropertyReader::apply(PointLight& light, BlockSource& block, const Property
     if (ok) record(block, p, p.name, true);
 }
 
-void PropertyReader::apply(std::vector<TransformOp>& transforms, BlockSource& block,
+void PropertyReader::apply(std::vector<TransformOp>& transforms, OpenBlock& block,
                            const Property& p) {
     TransformOp op;
     bool ok = false;

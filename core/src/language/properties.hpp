@@ -27,6 +27,13 @@ struct Property {
     Value value;
 };
 
+// A block being read: its source record, and the first line of each property
+// name it has set (a handful at most), for repeat warnings in constant time.
+struct OpenBlock {
+    BlockSource& source;
+    std::vector<std::pair<std::string_view, int>> first_lines{};
+};
+
 // Applies well-formed properties to the part of the scene they belong to,
 // reporting unknown names, wrong kinds and values out of range, and records
 // each applied property in the block's source.
@@ -34,12 +41,12 @@ class PropertyReader {
   public:
     explicit PropertyReader(DiagnosticSink& sink) : sink_(sink) {}
 
-    void apply(RenderSettings& settings, BlockSource& block, const Property& p);
-    void apply(Camera& camera, BlockSource& block, const Property& p);
-    void apply(Shape& shape, BlockSource& block, const Property& p);
-    void apply(Material& material, BlockSource& block, const Property& p);
-    void apply(PointLight& light, BlockSource& block, const Property& p);
-    void apply(std::vector<TransformOp>& transforms, BlockSource& block, const Property& p);
+    void apply(RenderSettings& settings, OpenBlock& block, const Property& p);
+    void apply(Camera& camera, OpenBlock& block, const Property& p);
+    void apply(Shape& shape, OpenBlock& block, const Property& p);
+    void apply(Material& material, OpenBlock& block, const Property& p);
+    void apply(PointLight& light, OpenBlock& block, const Property& p);
+    void apply(std::vector<TransformOp>& transforms, OpenBlock& block, const Property& p);
 
   private:
     bool number(const Property& p, double& out);
@@ -51,7 +58,7 @@ class PropertyReader {
     void kind_error(const Property& p, std::string_view expected);
     void range_error(const Property& p, std::string_view rule);
     // Records the property in `block`; warns when the block already set it.
-    void record(BlockSource& block, const Property& p, std::string_view as_name, bool warn_repeat);
+    void record(OpenBlock& block, const Property& p, std::string_view as_name, bool warn_repeat);
 
     DiagnosticSink& sink_;
 };

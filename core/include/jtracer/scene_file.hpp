@@ -1,0 +1,58 @@
+#pragma once
+// Loading a .jts file: reading it with clear I/O errors, parsing, validating.
+//
+// The CLI's --check and the viewer use it like this:
+//
+//   jt::LoadedScene loaded = jt::load_scene_file(path);
+//   if (!loaded.read_ok()) { print loaded.io_error; exit 3; }
+//   ... apply --width/--height/--camera to loaded.parsed.scene ...
+//   auto diagnostics = jt::check_scene(loaded);   // parse + validation
+//   std::cerr << jt::format_diagnostics(diagnostics, loaded.path, loaded.text);
+//   exit(jt::has_errors(diagnostics) ? 1 : 0);
+
+#include "jtracer/diagnostics.hpp"
+#include "jtracer/parser.hpp"
+
+#include <cstdint>
+#include <filesystem>
+#include <string>
+#include <string_view>
+#include <vector>
+
+namespace jt {
+
+// Scene files larger than this are refused rather than read into memory.
+inline constexpr std::uintmax_t max_scene_file_bytes = 1ull << 30;
+
+struct TextFile {
+    std::string text;
+    std::string error;  // empty when the file was read
+    bool ok() const { return error.empty(); }
+};
+
+// Reads a whole file. On failure `error` says which file and why, e.g.
+// "cannot read 'a.jts': no such file", "'scenes' is a directory, not a file".
+TextFile read_text_file(const std::filesystem::path& path,
+                        std::uintmax_t max_bytes = max_scene_file_bytes);
+
+struct LoadedScene {
+    std::string path;      // as given: the FILE of FILE:LINE:COL diagnostics
+    std::string text;      // the file's contents
+    std::string io_error;  // non-empty when the file could not be read
+    ParseResult parsed;    // scene, source spans and parse diagnostics
+    bool read_ok() const { return io_error.empty(); }
+};
+
+// Reads and parses. Does not validate: apply any overrides to
+// `parsed.scene` first, then call check_scene.
+LoadedScene load_scene_file(const std::filesystem::path& path);
+
+// The parse diagnostics followed by validate_scene's (validation runs only when
+// parsing found no errors, so that one mistake does not cascade).
+std::vector<Diagnostic> check_scene(const LoadedScene& loaded);
+
+// Every diagnostic formatted by format_diagnostic, concatenated.
+std::string format_diagnostics(const std::vector<Diagnostic>& diagnostics,
+                               std::string_view filename, std::string_view source);
+
+}  // namespace jt

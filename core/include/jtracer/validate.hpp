@@ -1,0 +1,32 @@
+#pragma once
+// Whole-scene checks that no single property can make (SEMANTICS.md sections 2-4).
+//
+// Run after parsing and after any overrides (the CLI's --width/--height/--camera,
+// the viewer's edits), so that the checks see the values that will render.
+
+#include "jtracer/diagnostics.hpp"
+#include "jtracer/scene.hpp"
+#include "jtracer/source_map.hpp"
+
+#include <vector>
+
+namespace jt {
+
+// Errors: no camera; width or height 0; an image whose BMP would pass 4 GiB;
+// a camera whose look_at equals its position or whose up is parallel to its
+// view direction; values out of their allowed range (for scenes built in code).
+// Warnings: a camera aspect differing from width/height by over 1%; an
+// active_camera naming no camera; a transform scale with a zero component
+// (the primitive is left out); no scene block.
+// Each is located at the property or block concerned when `source` has it,
+// at line 0 otherwise. `source` may be empty (a scene built in code).
+std::vector<Diagnostic> validate_scene(const Scene& scene, const SceneSource& source);
+
+// The camera a render uses: the one named by settings.active_camera, else the
+// first; -1 when there is none.
+int active_camera_index(const Scene& scene);
+
+// Size in bytes of the 24-bit BMP of a width x height image (header included).
+unsigned long long bmp_file_size(int width, int height);
+
+}  // namespace jt

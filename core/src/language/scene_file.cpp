@@ -1,0 +1,107 @@
+#include "jtracer/scene_file.hpp"
+
+#include "jtracer/validate.hpp"
+#include "language/number_text.hpp"
+
+#include <cerrno>
+#include <cstdio>
+#include <cstring>
+#include <memory>
+#include <system_error>
+
+namespace jt {
+
+namespace {
+
+std::string describe_errno(int error) {
+    switch (error) {
+        case ENOENT:
+            return "no such file";
+        case EACCES:
+            return "permission denied";
+        case EISDIR:
+            return "it is a directory, not a file";
+        default:
+            return std::strerror(error);
+    }
+}
+
+}  // namespace
+
+TextFile read_text_file(const std::filesystem::path& path, std::uintmax_t max_bytes) {
+    TextFile file;
+    const std::string name = lang::quote(path.string());
+    std::error_code ec;
+    auto status = std::filesystem::status(path, ec);
+    if (ec || !std::filesystem::exists(status)) {
+        file.error = "cannot read " + name + ": no such file";
+        return file;
+    }
+    if (std::filesystem::is_directory(status)) {
+        file.error = name + " is a directory, not a scene file";
+        return file;
+    }
+    if (std::filesystem::is_regular_file(status)) {
+        auto size = std::filesystem::file_size(path, ec);
+        if (!ec && size > max_bytes) {
+            file.error = name + " is too large to read (" + std::to_string(size) +
+                         " bytes; the limit is " + std::to_string(max_bytes) + ")";
+            return file;
+        }
+    }
+    errno = 0;
+    std::unique_ptr<std::FILE, int (*)(std::FILE*)> f(std::fopen(path.c_str(), "rb"), &std::fclose);
+    if (!f) {
+        file.error = "cannot read " + name + ": " + describe_errno(errno);
+        return file;
+    }
+    char buffer[1 << 16];
+    for (;;) {
+        std::size_t n = std::fread(buffer, 1, sizeof buffer, f.get());
+        file.text.append(buffer, n);
+        if (file.text.size() > max_bytes) {
+            file.text.clear();
+            file.error =
+                name + " is too large to read (more than " + std::to_string(max_bytes) + " bytes)";
+            return file;
+        }
+        if (n < sizeof buffer) break;
+    }
+    if (std::ferror(f.get())) {
+        int error = errno;
+        file.text.clear();
+        file.error = "cannot read " + name + ": " + describe_errno(error ? error : EIO);
+    }
+    return file;
+}
+
+LoadedScene load_scene_file(const std::filesystem::path& path) {
+    LoadedScene loaded;
+    loaded.path = path.string();
+    TextFile file = read_text_file(path);
+    if (!file.ok()) {
+        loaded.io_error = std::move(file.error);
+        return loaded;
+    }
+    loaded.text = std::move(file.text);
+    loaded.parsed = parse_scene(loaded.text);
+    return loaded;
+}
+
+std::vector<Diagnostic> check_scene(const LoadedScene& loaded) {
+    std::vector<Diagnostic> all = loaded.parsed.diagnostics;
+    if (!has_errors(all)) {
+        for (Diagnostic& d : validate_scene(loaded.parsed.scene, loaded.parsed.source))
+            all.push_back(std::move(d));
+    }
+    return all;
+}
+
+std::string format_diagnostics(const std::vector<Diagnostic>& diagnostics,
+                               std::string_view filename, std::string_view source) {
+    std::string out;
+    for (const Diagnostic& d : diagnostics) out += format_diagnostic(d, filename, source);
+    return out;
+}
+
+}  // namespace jt

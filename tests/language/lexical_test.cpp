@@ -1,0 +1,138 @@
+// SEMANTICS.md section 1: lexical rules.
+
+#include "test_util.hpp"
+
+namespace jt {
+namespace {
+
+using testing::brief;
+using testing::parse_clean;
+
+double radius_of(std::string_view number) {
+    std::string text = "scene { sphere { radius: " + std::string(number) + "; } }";
+    ParseResult r = parse_clean(text);
+    if (r.scene.primitives.size() != 1) return -1;
+    return std::get<Sphere>(r.scene.primitives[0].shape).radius;
+}
+
+TEST(Numbers, AcceptEveryFormTheSemanticsList) {
+    EXPECT_EQ(radius_of("1"), 1.0);
+    EXPECT_EQ(radius_of("0.5"), 0.5);
+    EXPECT_EQ(radius_of("3.14159"), 3.14159);
+    EXPECT_EQ(radius_of(".5"), 0.5);
+    EXPECT_EQ(radius_of("5."), 5.0);
+    EXPECT_EQ(radius_of("+2"), 2.0);
+    EXPECT_EQ(radius_of("1e-3"), 1e-3);
+    EXPECT_EQ(radius_of("2.5E+2"), 250.0);
+    EXPECT_EQ(radius_of("0.1"), 0.1);
+    EXPECT_EQ(radius_of("123456789.123456789"), 123456789.123456789);
+    EXPECT_EQ(radius_of("1e300"), 1e300);
+    EXPECT_EQ(radius_of("4.9406564584124654e-324"), 4.9406564584124654e-324);
+}
+
+TEST(Numbers, NegativeNumbersReadNegative) {
+    ParseResult r = parse_clean("scene { plane { distance: -1.25; } }");
+    EXPECT_EQ(std::get<Plane>(r.scene.primitives.at(0).shape).distance, -1.25);
+}
+
+TEST(Numbers, MalformedNumberIsOneErrorAtItsStart) {
+    EXPECT_EQ(brief("scene { sphere { center: <1.0, 9.1, .3.2>; } }"),
+              "1:37: error: malformed number '.3.2'");
+    EXPECT_EQ(brief("scene { plane { distance: 1..2; } }"), "1:27: error: malformed number '1..2'");
+    EXPECT_EQ(brief("scene { plane { distance: --1; } }"), "1:27: error: malformed number '--1'");
+    EXPECT_EQ(brief("scene { plane { distance: 1e; } }"), "1:27: error: malformed number '1e'");
+}
+
+TEST(Numbers, OutOfRangeIsAnError) {
+    EXPECT_EQ(brief("scene { plane { distance: 1e400; } }"),
+              "1:27: error: the number 1e400 is out of range (numbers must be finite doubles)");
+}
+
+TEST(Numbers, NanAndInfinitySpelledOutAreRejectedWithTheKind) {
+    EXPECT_EQ(brief("scene { plane { distance: nan; } }"),
+              "1:27: error: 'distance' takes a number like 1.5, got the word 'nan': numbers "
+              "must be finite");
+    EXPECT_EQ(brief("scene { plane { distance: inf; } }"),
+              "1:27: error: 'distance' takes a number like 1.5, got the word 'inf': numbers "
+              "must be finite");
+    EXPECT_EQ(brief("scene { sphere { center: <0, Infinity, 0>; } }"),
+              "1:30: error: expected a number in the vector, got the word 'Infinity'");
+}
+
+TEST(Strings, ReadPrintableAscii) {
+    ParseResult r = parse_clean("render_settings { filename: \"Red Spheres #1.bmp\"; }");
+    EXPECT_EQ(r.scene.settings.filename, "Red Spheres #1.bmp");
+}
+
+TEST(Strings, LineBreakInsideIsAnErrorAtTheOpeningQuote) {
+    EXPECT_EQ(brief("render_settings {\n  filename: \"abc\n; }"),
+              "2:13: error: string is not closed before the end of the line");
+}
+
+TEST(Strings, EndOfFileInsideIsAnErrorAtTheOpeningQuote) {
+    EXPECT_EQ(brief("render_settings { filename: \"abc"),
+              "1:29: error: string is not closed before the end of the file\n"
+              "1:1: error: this 'render_settings' block is never closed: expected '}' before "
+              "the end of the file");
+}
+
+TEST(Strings, ControlOrNonAsciiByteInsideIsAnErrorAtTheOpeningQuote) {
+    EXPECT_EQ(brief("render_settings { filename: \"a\tb\"; }"),
+              "1:29: error: a string may hold only printable ASCII characters; byte 0x09 at "
+              "column 31 is not");
+    EXPECT_EQ(brief("render_settings { filename: \"caf\xC3\xA9\"; }"),
+              "1:29: error: a string may hold only printable ASCII characters; byte 0xC3 at "
+              "column 33 is not");
+}
+
+TEST(Comments, RunToTheEndOfTheLine) {
+    ParseResult r = parse_clean(
+        "# a comment { not a block\nrender_settings { # here too ;\n width: 2; # w\n}# end");
+    EXPECT_EQ(r.scene.settings.width, 2);
+}
+
+TEST(Whitespace, TabsAndCarriageReturnsAreSpace) {
+    ParseResult r = parse_clean("render_settings\t{\r\n\twidth:\t3;\r\n}\r\n");
+    EXPECT_EQ(r.scene.settings.width, 3);
+}
+
+TEST(Words, AreCaseSensitiveWithASuggestion) {
+    EXPECT_EQ(brief("scene { Sphere { } }"),
+              "1:9: error: unknown block 'Sphere' in 'scene'; did you mean 'sphere'? (allowed: "
+              "sphere, plane, cylinder, point_light)");
+}
+
+TEST(Text, NulByteIsRejectedAtItsLineAndColumn) {
+    std::string text = "scene {\n  sph";
+    text += '\0';
+    text += "ere { }\n}";
+    EXPECT_EQ(brief(text), "2:6: error: the file is not a text file: it contains a NUL byte");
+}
+
+TEST(Text, InvalidUtf8IsRejectedAtItsLineAndColumn) {
+    EXPECT_EQ(brief("# ok\n# caf\xC3\xA9 is fine\nscene { \xFF }"),
+              "3:9: error: the file is not a text file: it contains a byte that is not UTF-8 "
+              "text");
+    EXPECT_EQ(brief("\xC3("),
+              "1:1: error: the file is not a text file: it contains a byte "
+              "that is not UTF-8 text");
+    EXPECT_EQ(brief("\xED\xA0\x80"),
+              "1:1: error: the file is not a text file: it contains a "
+              "byte that is not UTF-8 text");  // a surrogate
+}
+
+TEST(Text, Utf8InCommentsIsFineAndOutsideIsAnUnexpectedCharacter) {
+    parse_clean("# caf\xC3\xA9\n");
+    EXPECT_EQ(brief("scene { \xC3\xA9 }"), "1:9: error: unexpected byte 0xC3");
+}
+
+TEST(Text, ByteOrderMarkIsSkipped) {
+    parse_clean("\xEF\xBB\xBFscene { }");
+}
+
+TEST(Text, UnexpectedCharacterIsReportedAndSkipped) {
+    EXPECT_EQ(brief("scene { sphere { radius: 2; } @ }"), "1:31: error: unexpected character '@'");
+}
+
+}  // namespace
+}  // namespace jt

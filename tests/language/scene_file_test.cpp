@@ -1,0 +1,107 @@
+// scene_file.hpp: reading scene files with clear I/O errors, and the one-call check.
+
+#include "jtracer/scene_file.hpp"
+
+#include "test_util.hpp"
+
+#include <unistd.h>
+
+#include <filesystem>
+#include <fstream>
+
+namespace jt {
+namespace {
+
+namespace fs = std::filesystem;
+
+class SceneFile : public ::testing::Test {
+  protected:
+    void SetUp() override {
+        dir_ = fs::temp_directory_path() /
+               ("jt_scene_file_" + std::to_string(::getpid()) + "_" +
+                ::testing::UnitTest::GetInstance()->current_test_info()->name());
+        fs::create_directories(dir_);
+    }
+    void TearDown() override {
+        std::error_code ec;
+        fs::permissions(dir_ / "locked.jts", fs::perms::owner_all, ec);
+        fs::remove_all(dir_, ec);
+    }
+    fs::path write(const std::string& name, const std::string& text) {
+        fs::path path = dir_ / name;
+        std::ofstream(path, std::ios::binary) << text;
+        return path;
+    }
+    fs::path dir_;
+};
+
+TEST_F(SceneFile, ReadsAFileWhole) {
+    std::string text = "scene { }\n# \xC3\xA9\n";
+    TextFile file = read_text_file(write("a.jts", text));
+    EXPECT_TRUE(file.ok()) << file.error;
+    EXPECT_EQ(file.text, text);
+}
+
+TEST_F(SceneFile, MissingFile) {
+    fs::path path = dir_ / "nope.jts";
+    TextFile file = read_text_file(path);
+    EXPECT_EQ(file.error, "cannot read '" + path.string() + "': no such file");
+}
+
+TEST_F(SceneFile, Directory) {
+    TextFile file = read_text_file(dir_);
+    const std::string dir = dir_.string();
+    EXPECT_EQ(file.error, "'" + dir + "' is a directory, not a scene file");
+}
+
+TEST_F(SceneFile, TooLarge) {
+    fs::path path = write("big.jts", std::string(100, ' '));
+    TextFile file = read_text_file(path, 99);
+    const std::string name = path.string();
+    EXPECT_EQ(file.error, "'" + name + "' is too large to read (100 bytes; the limit is 99)");
+    EXPECT_TRUE(read_text_file(path, 100).ok());
+}
+
+TEST_F(SceneFile, Unreadable) {
+    if (::geteuid() == 0) GTEST_SKIP() << "root reads any file";
+    fs::path path = write("locked.jts", "scene { }");
+    fs::permissions(path, fs::perms::none);
+    TextFile file = read_text_file(path);
+    EXPECT_EQ(file.error, "cannot read '" + path.string() + "': permission denied");
+}
+
+TEST_F(SceneFile, LoadAndCheckReportsParseThenValidation) {
+    fs::path path = write("s.jts",
+                          "render_settings { width: 4; height: 4; }\n"
+                          "cameras { perspective_camera { look_at: <0, 0, 0>; } }\n"
+                          "scene { sphere { radius: 2; radius: 3; } }\n");
+    LoadedScene loaded = load_scene_file(path);
+    ASSERT_TRUE(loaded.read_ok());
+    EXPECT_EQ(loaded.path, path.string());
+    auto diagnostics = check_scene(loaded);
+    EXPECT_EQ(format_diagnostics(diagnostics, "s.jts", loaded.text),
+              "s.jts:3:29: warning: 'radius' is set again in this 'sphere'; the later value wins "
+              "(first set at line 3)\n"
+              "    scene { sphere { radius: 2; radius: 3; } }\n"
+              "                                ^\n"
+              "s.jts:2:41: error: camera 1: 'look_at' equals 'position', so the camera looks "
+              "nowhere\n"
+              "    cameras { perspective_camera { look_at: <0, 0, 0>; } }\n"
+              "                                            ^\n");
+    EXPECT_TRUE(has_errors(diagnostics));
+}
+
+TEST_F(SceneFile, ValidationIsSkippedWhenParsingFailed) {
+    LoadedScene loaded = load_scene_file(write("bad.jts", "scene { sphere { radius: -1; } }"));
+    EXPECT_EQ(testing::brief(check_scene(loaded)),
+              "1:26: error: 'radius' must be greater than 0, got -1");
+}
+
+TEST_F(SceneFile, LoadReportsIoErrorsWithoutParsing) {
+    LoadedScene loaded = load_scene_file(dir_ / "missing.jts");
+    EXPECT_FALSE(loaded.read_ok());
+    EXPECT_NE(loaded.io_error.find("no such file"), std::string::npos);
+}
+
+}  // namespace
+}  // namespace jt

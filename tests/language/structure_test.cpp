@@ -1,0 +1,248 @@
+// SEMANTICS.md section 2: structure, recovery and the diagnostics it gives.
+
+#include "test_util.hpp"
+
+namespace jt {
+namespace {
+
+using testing::brief;
+using testing::parse_clean;
+
+TEST(Structure, MissingSemicolonPointsJustPastTheValue) {
+    EXPECT_EQ(brief("scene {\n  sphere {\n    radius: 2\n  }\n}"),
+              "3:14: error: expected ';' after the value of 'radius'");
+    EXPECT_EQ(brief("scene { sphere { center: <1, 2, 3> radius: 2; } }"),
+              "1:35: error: expected ';' after the value of 'center'");
+}
+
+TEST(Structure, MissingSemicolonStillReadsTheNextProperty) {
+    ParseResult r = parse_scene("scene { sphere { center: <1, 2, 3>\n radius: 2; } }");
+    ASSERT_EQ(r.scene.primitives.size(), 1u);
+    EXPECT_EQ(std::get<Sphere>(r.scene.primitives[0].shape), (Sphere{{1, 2, 3}, 2}));
+}
+
+TEST(Structure, MissingColon) {
+    EXPECT_EQ(brief("scene { sphere { radius 2; } }"),
+              "1:25: error: expected ':' after 'radius', got the number 2");
+}
+
+TEST(Structure, MissingValue) {
+    EXPECT_EQ(brief("scene { sphere { radius: ; } }"),
+              "1:26: error: expected a value after 'radius:', got ';'");
+}
+
+TEST(Structure, MissingOpeningBrace) {
+    EXPECT_EQ(brief("scene { sphere radius: 2; }"),
+              "1:16: error: expected '{' after 'sphere', got the word 'radius'");
+}
+
+TEST(Structure, UnknownTopLevelBlockListsWhatIsAllowedAndSuggests) {
+    EXPECT_EQ(brief("render_setings { width: 2; }"),
+              "1:1: error: unknown block 'render_setings' at the top level; did you mean "
+              "'render_settings'? (allowed: render_settings, cameras, scene)");
+    EXPECT_EQ(brief("lights { }"),
+              "1:1: error: unknown block 'lights' at the top level (allowed: render_settings, "
+              "cameras, scene)");
+}
+
+TEST(Structure, UnknownPropertySuggestsTheNearestName) {
+    EXPECT_EQ(brief("scene { sphere { radus: 2; } }"),
+              "1:18: error: unknown property 'radus' in 'sphere'; did you mean 'radius'? "
+              "(allowed: center, radius, material, transform)");
+    EXPECT_EQ(brief("render_settings { widht: 2; }"),
+              "1:19: error: unknown property 'widht' in 'render_settings'; did you mean "
+              "'width'? (allowed: width, height, recurse_depth, filename, active_camera, "
+              "background, ambient_light, samples)");
+    EXPECT_EQ(brief("scene { point_light { colour: <1, 1, 1>; } }"),
+              "1:23: error: unknown property 'colour' in 'point_light' (allowed: position, "
+              "intensity)");
+}
+
+TEST(Structure, UnknownBlockInsideABlockIsSkippedWhole) {
+    ParseResult r = parse_scene("scene { sphere { matrial { pigment: <1, 0, 0>; } radius: 3; } }");
+    EXPECT_EQ(brief(r.diagnostics),
+              "1:18: error: unknown block 'matrial' in 'sphere'; did you mean 'material'? "
+              "(allowed: material, transform)");
+    EXPECT_EQ(std::get<Sphere>(r.scene.primitives.at(0).shape).radius, 3.0);
+}
+
+TEST(Structure, WrongKindNamesTheExpectedKind) {
+    EXPECT_EQ(brief("scene { sphere { center: 2; } }"),
+              "1:26: error: 'center' takes a vector like <0, 1, 0>, got the number 2");
+    EXPECT_EQ(brief("scene { sphere { radius: <1, 2, 3>; } }"),
+              "1:26: error: 'radius' takes a number like 1.5, got the vector <1, 2, 3>");
+    EXPECT_EQ(brief("render_settings { width: \"wide\"; }"),
+              "1:26: error: 'width' takes a whole number like 640, got the string \"wide\"");
+    EXPECT_EQ(brief("render_settings { filename: out; }"),
+              "1:29: error: 'filename' takes a string like \"name\", got the word 'out'");
+    EXPECT_EQ(brief("render_settings { background: 1; }"),
+              "1:31: error: 'background' takes a colour like <1, 0.5, 0>, got the number 1");
+}
+
+TEST(Structure, VectorsTakeExactlyThreeNumbers) {
+    EXPECT_EQ(brief("scene { sphere { center: <1, 2>; } }"),
+              "1:31: error: a vector takes three numbers separated by commas, like <0, 1, 0>; "
+              "expected ',' but got '>'");
+    EXPECT_EQ(brief("scene { sphere { center: <1, 2, 3, 4>; } }"),
+              "1:34: error: a vector takes exactly three numbers, like <0, 1, 0>; expected '>' "
+              "but got ','");
+    EXPECT_EQ(brief("scene { sphere { center: <1 2 3>; } }"),
+              "1:29: error: a vector takes three numbers separated by commas, like <0, 1, 0>; "
+              "expected ',' but got the number 2");
+}
+
+TEST(Structure, UnclosedBlockPointsAtItsOpeningLine) {
+    // The manual's own scene example.
+    EXPECT_EQ(brief("scene {\n    sphere {\n        center: <1.0, 0.0, 0.0>;\n    }\n"
+                    "    point_light {\n        position: <5.0, 5.0, 3.0>;\n"
+                    "        intensity: <0.8, 0.8, 0.0>;\n}\n"),
+              "1:1: error: this 'scene' block is never closed: expected '}' before the end of "
+              "the file");
+}
+
+TEST(Structure, ErrorsAreAllReportedWithRecovery) {
+    EXPECT_EQ(brief("scene {\n"
+                    "  sphere { radius: -1; center: 3; }\n"
+                    "  plane { normal: <0, 0, 0>; }\n"
+                    "  cube { }\n"
+                    "}\n"),
+              "2:20: error: 'radius' must be greater than 0, got -1\n"
+              "2:32: error: 'center' takes a vector like <0, 1, 0>, got the number 3\n"
+              "3:19: error: 'normal' must not be the zero vector, got <0, 0, 0>\n"
+              "4:3: error: unknown block 'cube' in 'scene' (allowed: sphere, plane, cylinder, "
+              "point_light)");
+}
+
+TEST(Structure, ErrorsAreCappedAtTwentyWithAFinalNote) {
+    std::string text;
+    for (int i = 0; i < 50; ++i) text += "junk;\n";
+    ParseResult r = parse_scene(text);
+    ASSERT_EQ(r.diagnostics.size(), 21u);
+    EXPECT_EQ(r.diagnostics[19].pos, (SourcePos{20, 1}));
+    EXPECT_EQ(r.diagnostics[20].message, "too many errors (20); stopping here");
+    EXPECT_EQ(r.diagnostics[20].pos, (SourcePos{21, 1}));
+}
+
+TEST(Structure, PropertiesWhereOnlyBlocksGo) {
+    EXPECT_EQ(brief("scene { radius: 1; }"),
+              "1:9: error: 'scene' holds only blocks (sphere, plane, cylinder, point_light), "
+              "not properties like 'radius'");
+    EXPECT_EQ(brief("cameras { fov: 1; }"),
+              "1:11: error: 'cameras' holds only blocks (perspective_camera), not properties "
+              "like 'fov'");
+}
+
+TEST(Structure, StrayClosingBraceAtTopLevel) {
+    EXPECT_EQ(brief("scene { }\n}"),
+              "2:1: error: expected a block (render_settings, cameras or scene), got '}'");
+}
+
+TEST(Structure, SeveralRenderSettingsLastWinsWholeWithAWarning) {
+    ParseResult r = parse_scene(
+        "render_settings { width: 10; height: 20; recurse_depth: 3; }\n"
+        "render_settings { width: 30; }\n");
+    EXPECT_EQ(brief(r.diagnostics),
+              "2:1: warning: another 'render_settings' block: only the last one is used, so the "
+              "one at line 1 is ignored");
+    EXPECT_EQ(r.scene.settings.width, 30);
+    EXPECT_EQ(r.scene.settings.height, 0);  // the default, not the earlier block's 20
+    EXPECT_EQ(r.scene.settings.recurse_depth, 0);
+    ASSERT_TRUE(r.source.render_settings);
+    EXPECT_EQ(r.source.render_settings->keyword_span.pos.line, 2);
+}
+
+TEST(Structure, SeveralSceneBlocksLastWinsWithAWarning) {
+    ParseResult r = parse_scene("scene { sphere { } point_light { } }\nscene { plane { } }\n");
+    EXPECT_EQ(brief(r.diagnostics),
+              "2:1: warning: another 'scene' block: only the last one is used, so the one at "
+              "line 1 is ignored");
+    ASSERT_EQ(r.scene.primitives.size(), 1u);
+    EXPECT_TRUE(std::holds_alternative<Plane>(r.scene.primitives[0].shape));
+    EXPECT_TRUE(r.scene.lights.empty());
+    EXPECT_EQ(r.source.primitives.size(), 1u);
+    EXPECT_TRUE(r.source.lights.empty());
+}
+
+TEST(Structure, CamerasAccumulateAcrossBlocksInFileOrder) {
+    ParseResult r = parse_clean(
+        "cameras { perspective_camera { name: \"a\"; } perspective_camera { name: \"b\"; } }\n"
+        "cameras { perspective_camera { name: \"c\"; } }\n");
+    ASSERT_EQ(r.scene.cameras.size(), 3u);
+    EXPECT_EQ(r.scene.cameras[0].name, "a");
+    EXPECT_EQ(r.scene.cameras[1].name, "b");
+    EXPECT_EQ(r.scene.cameras[2].name, "c");
+    EXPECT_EQ(r.source.cameras.size(), 3u);
+}
+
+TEST(Structure, RepeatedPropertyLaterWinsWithAWarning) {
+    ParseResult r = parse_scene("scene { sphere {\n radius: 2;\n radius: 3;\n } }");
+    EXPECT_EQ(brief(r.diagnostics),
+              "3:2: warning: 'radius' is set again in this 'sphere'; the later value wins (first "
+              "set at line 2)");
+    EXPECT_EQ(std::get<Sphere>(r.scene.primitives.at(0).shape).radius, 3.0);
+}
+
+TEST(Structure, TransformPropertiesAllApplyInOrderWithoutWarning) {
+    ParseResult r = parse_clean(
+        "scene { cylinder { transform { translate: <1, 0, 0>; zrotate: 45; translate: <1, 0, "
+        "0>; scale: <2, 1, 1>; } } }");
+    const auto& ops = r.scene.primitives.at(0).transforms;
+    ASSERT_EQ(ops.size(), 4u);
+    EXPECT_EQ(ops[0], (TransformOp{TransformKind::translate, {1, 0, 0}, 0}));
+    EXPECT_EQ(ops[1], (TransformOp{TransformKind::zrotate, {0, 0, 0}, 45}));
+    EXPECT_EQ(ops[2], (TransformOp{TransformKind::translate, {1, 0, 0}, 0}));
+    EXPECT_EQ(ops[3], (TransformOp{TransformKind::scale, {2, 1, 1}, 0}));
+}
+
+TEST(Structure, SeveralTransformBlocksApplyInOrder) {
+    ParseResult r = parse_clean(
+        "scene { sphere { transform { xrotate: 10; } radius: 2; transform { yrotate: 20; } "
+        "} }");
+    const auto& ops = r.scene.primitives.at(0).transforms;
+    ASSERT_EQ(ops.size(), 2u);
+    EXPECT_EQ(ops[0].kind, TransformKind::xrotate);
+    EXPECT_EQ(ops[0].degrees, 10.0);
+    EXPECT_EQ(ops[1].kind, TransformKind::yrotate);
+    EXPECT_EQ(ops[1].degrees, 20.0);
+    EXPECT_EQ(r.source.primitives.at(0).children.size(), 2u);
+}
+
+TEST(Structure, SeveralMaterialBlocksEachSetOnlyWhatTheyName) {
+    ParseResult r = parse_clean(
+        "scene { sphere {\n"
+        "  material { pigment: <1, 0, 0>; reflection: 0.5; }\n"
+        "  material { pigment: <0, 1, 0>; specular_k: 8; }\n"
+        "} }");
+    const Material& m = r.scene.primitives.at(0).material;
+    EXPECT_EQ(m.pigment, Colour(0, 1, 0));
+    EXPECT_EQ(m.reflection, 0.5);
+    EXPECT_EQ(m.specular_k, 8.0);
+    EXPECT_EQ(m.diffuse_k, 1.0);
+}
+
+TEST(Structure, LightsTakeNoMaterialOrTransform) {
+    EXPECT_EQ(brief("scene { point_light { material { pigment: <1, 1, 1>; } } }"),
+              "1:23: error: a point_light takes no 'material' block: only sphere, plane and "
+              "cylinder do");
+    EXPECT_EQ(brief("scene { point_light {\n transform { translate: <1, 1, 1>; }\n} }"),
+              "2:2: error: a point_light takes no 'transform' block: only sphere, plane and "
+              "cylinder do");
+}
+
+TEST(Structure, ActiveCameraInsideACameraIsReadAsNameWithAWarning) {
+    ParseResult r = parse_scene(
+        "cameras {\n  perspective_camera {\n    active_camera: \"Far Angle Camera\";\n  }\n}");
+    EXPECT_EQ(brief(r.diagnostics),
+              "3:5: warning: 'active_camera' inside a camera is read as 'name'; write name: "
+              "\"Far Angle Camera\"; instead");
+    EXPECT_EQ(r.scene.cameras.at(0).name, "Far Angle Camera");
+    EXPECT_EQ(r.source.cameras.at(0).properties.at(0).name, "name");
+}
+
+TEST(Structure, NoSceneBlockParsesClean) {
+    ParseResult r = parse_clean("cameras { perspective_camera { } }");
+    EXPECT_FALSE(r.source.scene);
+}
+
+}  // namespace
+}  // namespace jt

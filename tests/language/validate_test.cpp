@@ -1,0 +1,151 @@
+// validate_scene: the whole-scene checks, their text and their locations.
+
+#include "jtracer/validate.hpp"
+
+#include "test_util.hpp"
+
+namespace jt {
+namespace {
+
+using testing::brief;
+
+// The validation diagnostics of a scene that parses clean.
+std::string validate(std::string_view text) {
+    ParseResult r = testing::parse_clean(text);
+    return brief(validate_scene(r.scene, r.source));
+}
+
+constexpr std::string_view kGood =
+    "render_settings { width: 40; height: 20; }\n"
+    "cameras { perspective_camera { aspect: 2; } }\n"
+    "scene { }\n";
+
+TEST(Validate, AGoodSceneHasNoDiagnostics) {
+    EXPECT_EQ(validate(kGood), "");
+}
+
+TEST(Validate, NoCameraIsAnError) {
+    EXPECT_EQ(validate("render_settings { width: 2; height: 2; } scene { }"),
+              "0:0: error: every render needs a camera: add cameras { perspective_camera { ... "
+              "} }");
+}
+
+TEST(Validate, ZeroWidthOrHeightSaysHowToSetIt) {
+    EXPECT_EQ(validate("render_settings {\n  width: 0;\n}\ncameras { perspective_camera { } }\n"
+                       "scene { }"),
+              "2:10: error: the image width is 0: set 'width' in render_settings or pass "
+              "--width\n"
+              "1:1: error: the image height is 0: set 'height' in render_settings or pass "
+              "--height");
+    EXPECT_EQ(validate("cameras { perspective_camera { } } scene { }"),
+              "0:0: error: the image width is 0: set 'width' in render_settings or pass "
+              "--width\n"
+              "0:0: error: the image height is 0: set 'height' in render_settings or pass "
+              "--height");
+}
+
+TEST(Validate, SeesOverridesAppliedToTheScene) {
+    ParseResult r = parse_scene("cameras { perspective_camera { } } scene { }");
+    r.scene.settings.width = 8;  // as the CLI's --width/--height would
+    r.scene.settings.height = 8;
+    EXPECT_EQ(brief(validate_scene(r.scene, r.source)), "");
+}
+
+TEST(Validate, ImageTooLargeForABmpIsLocatedAtHeight) {
+    EXPECT_EQ(validate("render_settings { width: 65535;\n height: 65535; }\n"
+                       "cameras { perspective_camera { } } scene { }"),
+              "2:10: error: a 65535 x 65535 image does not fit in a BMP file (4 GiB at most)");
+    EXPECT_EQ(bmp_file_size(1, 1), 58u);
+    EXPECT_EQ(bmp_file_size(2, 3), 54u + 8 * 3);
+}
+
+TEST(Validate, LookAtEqualToPosition) {
+    EXPECT_EQ(validate("render_settings { width: 2; height: 2; }\n"
+                       "cameras { perspective_camera { name: \"A\";\n position: <1, 2, 3>;\n "
+                       "look_at: <1, 2, 3>; } }\nscene { }"),
+              "4:11: error: camera \"A\": 'look_at' equals 'position', so the camera looks "
+              "nowhere");
+}
+
+TEST(Validate, UpParallelToTheViewDirection) {
+    EXPECT_EQ(validate("render_settings { width: 2; height: 2; }\n"
+                       "cameras { perspective_camera { }\n perspective_camera { look_at: <0, -5, "
+                       "0>;\n up: <0, 2, 0>; } }\nscene { }"),
+              "4:6: error: camera 2: 'up' <0, 2, 0> is parallel to the view direction <0, -5, "
+              "0> (or zero)");
+}
+
+TEST(Validate, AspectDifferingFromTheImageByOverOnePercentWarns) {
+    EXPECT_EQ(validate("render_settings { width: 640; height: 480; }\n"
+                       "cameras { perspective_camera { aspect: 1.5; } }\nscene { }"),
+              "2:40: warning: camera 1: 'aspect' 1.5 differs from width/height = "
+              "1.3333333333333333 by more than 1%, so the image will look stretched");
+    // Within 1%: fine; the manual's own 1.333333333 is fine.
+    EXPECT_EQ(validate("render_settings { width: 640; height: 480; }\n"
+                       "cameras { perspective_camera { aspect: 1.34; } }\nscene { }"),
+              "");
+    // The default aspect (1) on a non-square image warns at the camera block.
+    EXPECT_EQ(validate("render_settings { width: 640; height: 480; }\n"
+                       "cameras {\n  perspective_camera { } }\nscene { }"),
+              "3:3: warning: camera 1: 'aspect' 1 differs from width/height = "
+              "1.3333333333333333 by more than 1%, so the image will look stretched");
+}
+
+TEST(Validate, ActiveCameraNamingNoCameraWarns) {
+    EXPECT_EQ(validate("render_settings { width: 2; height: 2;\n active_camera: \"Far\"; }\n"
+                       "cameras { perspective_camera { name: \"Near\"; } }\nscene { }"),
+              "2:17: warning: no camera is named \"Far\": using the first camera (\"Near\")");
+    auto pick = [](std::string_view active) {
+        Scene s;
+        s.cameras = {testing::named_camera("a"), testing::named_camera("b")};
+        s.settings.active_camera = std::string(active);
+        return active_camera_index(s);
+    };
+    EXPECT_EQ(pick("b"), 1);
+    EXPECT_EQ(pick("c"), 0);
+    EXPECT_EQ(pick(""), 0);
+    EXPECT_EQ(active_camera_index(Scene{}), -1);
+}
+
+TEST(Validate, ZeroScaleComponentWarnsAtTheScaleOperation) {
+    EXPECT_EQ(validate("render_settings { width: 2; height: 2; }\n"
+                       "cameras { perspective_camera { } }\n"
+                       "scene { cylinder {\n transform { translate: <0, -0.5, 0>; }\n"
+                       " transform { zrotate: 45;\n   scale: <2, 0, 0>; } } }"),
+              "6:4: warning: 'scale' <2, 0, 0> has a zero component: it flattens the primitive "
+              "to nothing; it is left out");
+}
+
+TEST(Validate, NoSceneBlockWarns) {
+    EXPECT_EQ(validate("render_settings { width: 2; height: 2; }\n"
+                       "cameras { perspective_camera { } }"),
+              "0:0: warning: no scene block: the image will show only the background");
+}
+
+TEST(Validate, CatchesOutOfRangeValuesInScenesBuiltInCode) {
+    Scene s;
+    s.settings.width = s.settings.height = 4;
+    Camera wide;
+    wide.fov = 180;
+    s.cameras.push_back(wide);
+    s.primitives.push_back(Primitive{Sphere{{0, 0, 0}, -1}, Material{}, {}});
+    s.primitives.push_back(Primitive{Plane{{0, 0, 0}, 1}, testing::reflective(2), {}});
+    s.primitives.push_back(Primitive{Cylinder{0, 0},
+                                     [] {
+                                         Material m;
+                                         m.specular_k = 0;
+                                         return m;
+                                     }(),
+                                     {}});
+    EXPECT_EQ(brief(validate_scene(s, SceneSource{})),
+              "0:0: error: camera 1: 'fov' must be between 0 and 180 degrees\n"
+              "0:0: error: a sphere's 'radius' must be greater than 0\n"
+              "0:0: error: a plane's 'normal' must not be zero\n"
+              "0:0: error: 'reflection' must be from 0 to 1\n"
+              "0:0: error: a cylinder's 'radius' must be greater than 0\n"
+              "0:0: error: a cylinder's 'height' must be greater than 0\n"
+              "0:0: error: 'specular_k' must be greater than 0");
+}
+
+}  // namespace
+}  // namespace jt
