@@ -1,0 +1,212 @@
+// Save-in-place: edited values are written at their spans; every other byte
+// of the file stays as it was.
+
+#include "jtracer/source_edit.hpp"
+#include "jtracer/parser.hpp"
+
+#include <gtest/gtest.h>
+
+#include <fstream>
+#include <sstream>
+
+namespace jt {
+namespace {
+
+// A file with comments, odd spacing, a one-line block and a repeated property.
+constexpr const char* kScene = R"(# header comment
+render_settings {
+    width: 64;   # keep this comment
+    height:48;
+}
+cameras {
+    perspective_camera { name: "front"; position: <0, 0, 5>; }  # inline
+    perspective_camera {
+        active_camera: "side";
+        position: <5, 0, 0>;
+        look_at: <0,0,0>;
+    }
+}
+scene {
+    sphere {
+        radius: 1;
+        material { pigment: <1, 0, 0>; }
+        material {
+            diffuse: <0.5, 0.5, 0.5>;  # last material block
+        }
+        transform { translate: <0, 1, 0>; yrotate: 30; translate: <1, 0, 0>; }
+    }
+    sphere { center: <2, 0, 0>; }
+    point_light {
+        position: <0, 5, 5>;
+        intensity: <1, 1, 1>;
+    }
+}
+)";
+
+ParseResult parse_ok(std::string_view text) {
+    ParseResult r = parse_scene(text);
+    EXPECT_TRUE(r.ok()) << "fixture does not parse";
+    return r;
+}
+
+// Applies the edit, checks it reads back as `edited`, returns the new text.
+std::string save(const std::string& text, const Scene& edited) {
+    ParseResult base = parse_ok(text);
+    SourceEditResult result = apply_scene_edits(text, base.source, base.scene, edited);
+    EXPECT_TRUE(result.ok()) << result.error;
+    ParseResult again = parse_scene(result.text);
+    EXPECT_TRUE(again.ok());
+    EXPECT_EQ(again.scene, edited);
+    return result.text;
+}
+
+std::string replace_once(std::string text, std::string_view from, std::string_view to) {
+    const std::size_t at = text.find(from);
+    EXPECT_NE(at, std::string::npos) << from;
+    if (at != std::string::npos) text.replace(at, from.size(), to);
+    return text;
+}
+
+TEST(SourceEdit, NothingChangedGivesTheSameBytes) {
+    ParseResult base = parse_ok(kScene);
+    SourceEditResult result = apply_scene_edits(kScene, base.source, base.scene, base.scene);
+    EXPECT_TRUE(result.ok());
+    EXPECT_EQ(result.text, kScene);
+    EXPECT_EQ(result.values_changed, 0);
+}
+
+TEST(SourceEdit, ReplacesOnlyTheValueInForce) {
+    Scene edited = parse_ok(kScene).scene;
+    edited.settings.height = 100;
+    edited.primitives[0].material.diffuse = Colour(0.25, 0.5, 1.0);
+    edited.lights[0].intensity = Colour(0.3, 0.2, 0.1);
+    std::string expected = replace_once(kScene, "height:48;", "height:100;");
+    expected = replace_once(expected, "diffuse: <0.5, 0.5, 0.5>;", "diffuse: <0.25, 0.5, 1>;");
+    expected = replace_once(expected, "intensity: <1, 1, 1>;", "intensity: <0.3, 0.2, 0.1>;");
+    EXPECT_EQ(save(kScene, edited), expected);
+}
+
+TEST(SourceEdit, InsertsAMissingPropertyOnItsOwnLineWithTheBlocksIndent) {
+    Scene edited = parse_ok(kScene).scene;
+    edited.settings.samples = 4;
+    edited.lights[0].position = Vec3(1, 2, 3);
+    std::string expected =
+        replace_once(kScene, "    height:48;\n}", "    height:48;\n    samples: 4;\n}");
+    expected = replace_once(expected, "position: <0, 5, 5>;", "position: <1, 2, 3>;");
+    EXPECT_EQ(save(kScene, edited), expected);
+}
+
+TEST(SourceEdit, InsertsIntoAOneLineBlockInline) {
+    Scene edited = parse_ok(kScene).scene;
+    edited.cameras[0].fov = 60;
+    const std::string expected =
+        replace_once(kScene, R"(position: <0, 0, 5>; })", R"(position: <0, 0, 5>; fov: 60; })");
+    EXPECT_EQ(save(kScene, edited), expected);
+}
+
+TEST(SourceEdit, MaterialPropertyNeverWrittenGoesToTheLastMaterialBlock) {
+    Scene edited = parse_ok(kScene).scene;
+    edited.primitives[0].material.reflection = 0.5;
+    const std::string expected =
+        replace_once(kScene, "            diffuse: <0.5, 0.5, 0.5>;  # last material block\n",
+                     "            diffuse: <0.5, 0.5, 0.5>;  # last material block\n"
+                     "            reflection: 0.5;\n");
+    EXPECT_EQ(save(kScene, edited), expected);
+}
+
+TEST(SourceEdit, PrimitiveWithoutMaterialGetsAMaterialBlock) {
+    Scene edited = parse_ok(kScene).scene;
+    edited.primitives[1].material.pigment = Colour(0, 1, 0);
+    const std::string expected =
+        replace_once(kScene, "sphere { center: <2, 0, 0>; }",
+                     "sphere { center: <2, 0, 0>; material { pigment: <0, 1, 0>; } }");
+    EXPECT_EQ(save(kScene, edited), expected);
+}
+
+TEST(SourceEdit, TransformOperationsAreEditedInOrder) {
+    Scene edited = parse_ok(kScene).scene;
+    ASSERT_EQ(edited.primitives[0].transforms.size(), 3u);
+    edited.primitives[0].transforms[1].degrees = 45;
+    edited.primitives[0].transforms[2].vector = Vec3(2, 0, 0);
+    const std::string expected = replace_once(kScene, "yrotate: 30; translate: <1, 0, 0>;",
+                                              "yrotate: 45; translate: <2, 0, 0>;");
+    EXPECT_EQ(save(kScene, edited), expected);
+}
+
+TEST(SourceEdit, CameraNameWrittenAsActiveCameraAliasIsEditedThere) {
+    Scene edited = parse_ok(kScene).scene;
+    ASSERT_EQ(edited.cameras[1].name, "side");
+    edited.cameras[1].name = "left";
+    EXPECT_EQ(save(kScene, edited),
+              replace_once(kScene, R"(active_camera: "side";)", R"(active_camera: "left";)"));
+}
+
+TEST(SourceEdit, NewCameraIsAppendedToTheCamerasBlock) {
+    Scene edited = parse_ok(kScene).scene;
+    Camera camera;
+    camera.name = "viewer";
+    camera.position = Vec3(1, 2, 3);
+    camera.look_at = Vec3(0, 0.5, 0);
+    camera.aspect = 1.5;
+    camera.fov = 50;
+    edited.cameras.push_back(camera);
+    const std::string expected = replace_once(kScene, "        look_at: <0,0,0>;\n    }\n}\n",
+                                              "        look_at: <0,0,0>;\n    }\n"
+                                              "    perspective_camera {\n"
+                                              "        name: \"viewer\";\n"
+                                              "        position: <1, 2, 3>;\n"
+                                              "        look_at: <0, 0.5, 0>;\n"
+                                              "        up: <0, 1, 0>;\n"
+                                              "        aspect: 1.5;\n"
+                                              "        fov: 50;\n"
+                                              "    }\n}\n");
+    EXPECT_EQ(save(kScene, edited), expected);
+}
+
+TEST(SourceEdit, MissingRenderSettingsBlockIsAppended) {
+    const std::string text = "cameras { perspective_camera { } }\n";
+    Scene edited = parse_ok(text).scene;
+    edited.settings.width = 32;
+    edited.settings.background = Colour(0.5, 0, 0);
+    EXPECT_EQ(save(text, edited), text +
+                                      "\nrender_settings {\n    width: 32;\n"
+                                      "    background: <0.5, 0, 0>;\n}\n");
+}
+
+TEST(SourceEdit, StructuralChangesAreRefusedAndTheTextKept) {
+    ParseResult base = parse_ok(kScene);
+    Scene edited = base.scene;
+    edited.primitives.pop_back();
+    SourceEditResult result = apply_scene_edits(kScene, base.source, base.scene, edited);
+    EXPECT_FALSE(result.ok());
+    EXPECT_NE(result.error.find("primitives"), std::string::npos);
+    EXPECT_EQ(result.text, kScene);
+}
+
+TEST(SourceEdit, NumbersUseTheShortestTextThatReadsBack) {
+    EXPECT_EQ(format_jts_number(2.0), "2");
+    EXPECT_EQ(format_jts_number(0.1), "0.1");
+    EXPECT_EQ(format_jts_number(-0.0), "0");
+    EXPECT_EQ(format_jts_number(1e-5), "1e-05");
+    EXPECT_EQ(format_jts_vector(Vec3(1, -0.5, 0.25)), "<1, -0.5, 0.25>");
+}
+
+TEST(SourceEdit, ShowcaseEditChangesOnlyThatValuesBytes) {
+    std::ifstream in(std::string(JT_SOURCE_DIR) + "/scenes/showcase.jts", std::ios::binary);
+    std::stringstream buffer;
+    buffer << in.rdbuf();
+    const std::string text = buffer.str();
+    ParseResult base = parse_ok(text);
+    ASSERT_FALSE(base.scene.primitives.empty());
+    Scene edited = base.scene;
+    edited.primitives[0].material.pigment = Colour(0.125, 0.25, 0.5);
+    const std::string saved = save(text, edited);
+    const TextSpan span = base.source.primitives[0].children[0].properties[0].value_span;
+    ASSERT_EQ(base.source.primitives[0].children[0].properties[0].name, "pigment");
+    EXPECT_EQ(saved.substr(0, span.offset), text.substr(0, span.offset));
+    EXPECT_EQ(saved.substr(span.offset, 20), "<0.125, 0.25, 0.5>;\n");
+    EXPECT_EQ(saved.substr(span.offset + 18), text.substr(span.offset + span.length));
+}
+
+}  // namespace
+}  // namespace jt

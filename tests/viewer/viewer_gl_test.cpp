@@ -1,0 +1,243 @@
+// The viewer's frame code in an offscreen OSMesa GL 3.3 context: what it shows
+// is what the core renders, and edits, camera switches and reloads behave.
+
+#include "app_actions.hpp"
+#include "headless.hpp"
+#include "jtracer/parser.hpp"
+#include "jtracer/render_job.hpp"
+#include "keys.hpp"
+
+#include <gtest/gtest.h>
+
+#include <fstream>
+#include <sstream>
+
+#include <unistd.h>
+
+namespace jt::view {
+namespace {
+
+namespace fs = std::filesystem;
+
+const fs::path kScene = fs::path(JT_VIEWER_TEST_DIR) / "scenes" / "two_cameras.jts";
+constexpr auto kTimeout = std::chrono::minutes(2);
+
+std::string read(const fs::path& path) {
+    std::ifstream in(path, std::ios::binary);
+    std::stringstream buffer;
+    buffer << in.rdbuf();
+    return buffer.str();
+}
+
+void write(const fs::path& path, const std::string& text) {
+    std::ofstream(path, std::ios::binary) << text;
+}
+
+// A copy of the test scene in a fresh folder, for tests that change the file.
+fs::path scene_copy(const std::string& name) {
+    const fs::path dir =
+        fs::temp_directory_path() / ("jtracer-view-gl-" + name + "-" + std::to_string(::getpid()));
+    fs::remove_all(dir);
+    fs::create_directories(dir);
+    fs::copy_file(kScene, dir / "scene.jts");
+    return dir / "scene.jts";
+}
+
+// The image the core renders for `scene` through `camera`, without the viewer.
+Image8 core_render(const Scene& scene, int camera) {
+    RenderOptions options;
+    options.width = scene.settings.width;
+    options.height = scene.settings.height;
+    options.samples = scene.settings.samples;
+    options.camera = camera;
+    options.previews = false;
+    RenderJob job(prepare_scene(scene), options);
+    job.run();
+    return job.image();
+}
+
+ViewerConfig test_config() {
+    ViewerConfig config;
+    config.watch_interval = std::chrono::milliseconds(0);
+    return config;
+}
+
+class ViewerGl : public ::testing::Test {
+  protected:
+    void SetUp() override { ASSERT_TRUE(viewer.ok()) << viewer.error(); }
+    HeadlessViewer viewer{320, 240};
+    AppState state{test_config()};  // after the viewer: its texture goes first
+};
+
+TEST_F(ViewerGl, TextureAndScreenShowExactlyTheCoresImage) {
+    state.show_ui = false;
+    state.fit = FitMode::actual_pixels;
+    open_scene(state, kScene);
+    ASSERT_TRUE(viewer.run_until_complete(state, kTimeout)) << state.render_note;
+    const Image8 expected = core_render(state.doc.scene, 0);
+    EXPECT_EQ(state.display, expected);
+    EXPECT_EQ(state.presenter.read_texture(), expected);
+
+    // On screen, the image sits centred at one pixel per pixel.
+    const Image8 screen = viewer.screenshot();
+    const int x0 = (320 - 64) / 2, y0 = (240 - 48) / 2;  // bottom-up rows, like Image8
+    int mismatches = 0;
+    for (int y = 0; y < 48; ++y)
+        for (int x = 0; x < 64; ++x)
+            for (int c = 0; c < 3; ++c)
+                mismatches += screen.pixel(x0 + x, y0 + y)[c] != expected.pixel(x, y)[c];
+    EXPECT_EQ(mismatches, 0);
+}
+
+TEST_F(ViewerGl, OnlyChangedRegionsAreUploadedAfterTheFirst) {
+    open_scene(state, kScene);
+    ASSERT_TRUE(viewer.run_until_complete(state, kTimeout));
+    const long long after_first = state.presenter.texels_uploaded();
+    EXPECT_GE(after_first, 64 * 48);
+    for (int i = 0; i < 5; ++i) viewer.frame(state);
+    EXPECT_EQ(state.presenter.texels_uploaded(), after_first) << "nothing changed, nothing sent";
+}
+
+TEST_F(ViewerGl, SwitchingCameraShowsThatCamerasRender) {
+    open_scene(state, kScene);
+    ASSERT_TRUE(viewer.run_until_complete(state, kTimeout));
+    const Image8 front = state.display;
+    viewer.press_key(state, keys::letter('C'));
+    EXPECT_EQ(state.camera_index, 1);
+    ASSERT_TRUE(viewer.run_until_complete(state, kTimeout));
+    EXPECT_NE(state.display, front);
+    EXPECT_EQ(state.display, core_render(state.doc.scene, 1));
+    EXPECT_EQ(state.presenter.read_texture(), state.display);
+}
+
+TEST_F(ViewerGl, MaterialEditChangesTheImageToTheEditedScenesRender) {
+    open_scene(state, kScene);
+    ASSERT_TRUE(viewer.run_until_complete(state, kTimeout));
+    const Image8 before = state.display;
+    edit_scene(state, [](Scene& s) { s.primitives[1].material.pigment = Colour(0.1, 0.3, 0.9); });
+    ASSERT_TRUE(viewer.run_until_complete(state, kTimeout));
+    EXPECT_NE(state.display, before);
+    EXPECT_EQ(state.display, core_render(state.doc.scene, 0));
+    EXPECT_TRUE(state.undo.can_undo()) << "the edit is one undo step";
+    viewer.press_key(state, keys::letter('Z'), /*ctrl=*/true);
+    ASSERT_TRUE(viewer.run_until_complete(state, kTimeout));
+    EXPECT_EQ(state.display, before) << "undo restores the image";
+    viewer.press_key(state, keys::letter('Z'), /*ctrl=*/true, /*shift=*/true);
+    EXPECT_EQ(state.doc.scene.primitives[1].material.pigment, Colour(0.1, 0.3, 0.9));
+}
+
+TEST_F(ViewerGl, BrokenReloadKeepsTheLastImageAndListsDiagnostics) {
+    const fs::path file = scene_copy("broken");
+    open_scene(state, file);
+    ASSERT_TRUE(viewer.run_until_complete(state, kTimeout));
+    const Image8 good = state.display;
+    const Scene good_scene = state.doc.scene;
+    const auto jobs = state.renderer.jobs_started();
+
+    // Save by rename, as many editors do, with a missing ';' on line 3.
+    write(fs::path(file).concat(".new"), "render_settings {\n    width: 64;\n    height: 48\n}\n");
+    fs::rename(fs::path(file).concat(".new"), file);
+    for (int i = 0; i < 3; ++i) viewer.frame(state);
+
+    EXPECT_TRUE(state.doc.load_failed);
+    ASSERT_FALSE(state.doc.diagnostics.empty());
+    EXPECT_EQ(state.doc.diagnostics[0].pos.line, 3);
+    EXPECT_GT(state.doc.diagnostics[0].pos.column, 0);
+    EXPECT_NE(format_diagnostics(state.doc).find("scene.jts:3:"), std::string::npos)
+        << format_diagnostics(state.doc);
+    EXPECT_EQ(state.doc.scene, good_scene);
+    EXPECT_EQ(state.display, good);
+    EXPECT_EQ(state.presenter.read_texture(), good);
+    EXPECT_EQ(state.renderer.jobs_started(), jobs) << "no render of a broken scene";
+
+    // Deleted, then garbage: still no crash, still the last image.
+    fs::remove(file);
+    viewer.frame(state);
+    EXPECT_TRUE(state.doc.load_failed);
+    write(file, std::string("\x00\xff\xfe garbage {{{", 16));
+    viewer.frame(state);
+    EXPECT_TRUE(state.doc.load_failed);
+    EXPECT_EQ(state.display, good);
+
+    // Fixed: it loads and renders again.
+    fs::copy_file(kScene, file, fs::copy_options::overwrite_existing);
+    viewer.frame(state);
+    EXPECT_FALSE(state.doc.load_failed);
+    EXPECT_TRUE(state.doc.diagnostics.empty());
+}
+
+TEST_F(ViewerGl, SaveSceneWritesOnlyTheEditedValues) {
+    const fs::path file = scene_copy("save");
+    open_scene(state, file);
+    ASSERT_TRUE(viewer.run_until_complete(state, kTimeout));
+    state.doc.scene.primitives[1].material.pigment = Colour(0.25, 0.5, 0.75);
+    state.doc.scene.settings.samples = 2;
+    viewer.frame(state);
+    viewer.press_key(state, keys::letter('S'), /*ctrl=*/true);
+    EXPECT_FALSE(has_unsaved_edits(state.doc)) << state.message;
+
+    std::string expected = read(kScene);
+    auto replace = [&](std::string_view from, std::string_view to) {
+        const std::size_t at = expected.find(from);
+        ASSERT_NE(at, std::string::npos);
+        expected.replace(at, from.size(), to);
+    };
+    replace("pigment: <0.9, 0.2, 0.1>;   # red", "pigment: <0.25, 0.5, 0.75>;   # red");
+    replace("    ambient_light: <0.2, 0.2, 0.2>;\n}",
+            "    ambient_light: <0.2, 0.2, 0.2>;\n    samples: 2;\n}");
+    EXPECT_EQ(read(file), expected);
+    for (const auto& entry : fs::directory_iterator(file.parent_path()))
+        EXPECT_EQ(entry.path().filename(), "scene.jts") << "no temporary file left";
+
+    // Our own save is not a change from outside: no reload, no new render.
+    const auto jobs = state.renderer.jobs_started();
+    for (int i = 0; i < 3; ++i) viewer.frame(state);
+    EXPECT_EQ(state.renderer.jobs_started(), jobs);
+}
+
+TEST_F(ViewerGl, FreeCameraCopiedIntoTheSceneIsSavedAsANewCamera) {
+    const fs::path file = scene_copy("camera");
+    open_scene(state, file);
+    viewer.frame(state);
+    use_free_camera(state);
+    orbit(state.free_camera, 40, 10, 240);
+    copy_free_camera_to_scene(state, "mine");
+    ASSERT_EQ(state.doc.scene.cameras.size(), 3u);
+    EXPECT_EQ(state.camera_index, 2);
+    ASSERT_TRUE(save_scene(state)) << state.message;
+    ParseResult saved = parse_scene(read(file));
+    ASSERT_TRUE(saved.ok());
+    ASSERT_EQ(saved.scene.cameras.size(), 3u);
+    EXPECT_EQ(saved.scene.cameras[2].name, "mine");
+    EXPECT_EQ(saved.scene.cameras[2].position, state.doc.scene.cameras[2].position);
+}
+
+TEST_F(ViewerGl, SaveImageWritesTheCurrentRender) {
+    open_scene(state, kScene);
+    ASSERT_TRUE(viewer.run_until_complete(state, kTimeout));
+    const fs::path out = scene_copy("image").parent_path() / "render.bmp";
+    ASSERT_TRUE(save_image(state, out)) << state.message;
+    const std::string bytes = read(out);
+    ASSERT_GT(bytes.size(), 54u);
+    EXPECT_EQ(bytes.substr(0, 2), "BM");
+}
+
+TEST_F(ViewerGl, PauseStopsAndResumeRestarts) {
+    open_scene(state, kScene);
+    viewer.frame(state);
+    viewer.press_key(state, keys::space);
+    EXPECT_TRUE(state.paused);
+    EXPECT_FALSE(render_complete(state));
+    viewer.press_key(state, keys::space);
+    EXPECT_FALSE(state.paused);
+    EXPECT_TRUE(viewer.run_until_complete(state, kTimeout));
+}
+
+TEST_F(ViewerGl, EscapeAsksToQuit) {
+    open_scene(state, kScene);
+    viewer.press_key(state, keys::escape);
+    EXPECT_TRUE(state.quit);
+}
+
+}  // namespace
+}  // namespace jt::view

@@ -1,0 +1,280 @@
+// The viewer's parts that need no GL: file watching, the free camera, undo,
+// image placement, image files, recent files.
+
+#include "app_actions.hpp"
+#include "file_watcher.hpp"
+#include "free_camera.hpp"
+#include "image_files.hpp"
+#include "presenter.hpp"
+#include "recent_files.hpp"
+#include "undo_stack.hpp"
+
+#include <gtest/gtest.h>
+#include <glm/geometric.hpp>
+
+#include <chrono>
+#include <fstream>
+#include <thread>
+
+#include <unistd.h>
+
+namespace jt::view {
+namespace {
+
+namespace fs = std::filesystem;
+
+fs::path temp_dir(const std::string& name) {
+    fs::path dir = fs::temp_directory_path() /
+                   ("jtracer-view-test-" + name + "-" + std::to_string(::getpid()));
+    fs::remove_all(dir);
+    fs::create_directories(dir);
+    return dir;
+}
+
+void write(const fs::path& path, const std::string& text) {
+    std::ofstream(path, std::ios::binary) << text;
+}
+
+TEST(FileWatcher, SeesAnInPlaceWriteThatChangesTheSize) {
+    const fs::path file = temp_dir("watch1") / "a.jts";
+    write(file, "one");
+    FileWatcher watcher(std::chrono::milliseconds(0));
+    watcher.watch(file);
+    EXPECT_FALSE(watcher.poll());
+    write(file, "three");
+    EXPECT_TRUE(watcher.poll());
+    EXPECT_FALSE(watcher.poll()) << "a change is reported once";
+}
+
+TEST(FileWatcher, SeesASaveByRenameEvenWithTheSameSizeAndTime) {
+    const fs::path dir = temp_dir("watch2");
+    write(dir / "a.jts", "abc");
+    FileWatcher watcher(std::chrono::milliseconds(0));
+    watcher.watch(dir / "a.jts");
+    write(dir / "a.jts.new", "xyz");
+    fs::last_write_time(dir / "a.jts.new", fs::last_write_time(dir / "a.jts"));
+    fs::rename(dir / "a.jts.new", dir / "a.jts");
+    EXPECT_TRUE(watcher.poll()) << "the inode changed";
+}
+
+TEST(FileWatcher, SeesDeletionAndReappearance) {
+    const fs::path file = temp_dir("watch3") / "a.jts";
+    write(file, "abc");
+    FileWatcher watcher(std::chrono::milliseconds(0));
+    watcher.watch(file);
+    fs::remove(file);
+    EXPECT_TRUE(watcher.poll());
+    EXPECT_FALSE(stamp_file(file).exists);
+    write(file, "abc");
+    EXPECT_TRUE(watcher.poll());
+}
+
+TEST(FileWatcher, AcknowledgedChangesAreNotReported) {
+    const fs::path file = temp_dir("watch4") / "a.jts";
+    write(file, "abc");
+    FileWatcher watcher(std::chrono::milliseconds(0));
+    watcher.watch(file);
+    write(file, "abcd");
+    watcher.acknowledge();
+    EXPECT_FALSE(watcher.poll());
+}
+
+TEST(FileWatcher, ChecksTheDiskAtMostOncePerInterval) {
+    const fs::path file = temp_dir("watch5") / "a.jts";
+    write(file, "abc");
+    FileWatcher watcher(std::chrono::hours(1));
+    watcher.watch(file);
+    write(file, "abcdef");
+    EXPECT_FALSE(watcher.poll());
+    EXPECT_TRUE(watcher.poll(FileWatcher::Clock::now() + std::chrono::hours(2)));
+}
+
+Camera test_camera() {
+    Camera c;
+    c.position = Vec3(0, 1, 5);
+    c.look_at = Vec3(0, 1, 0);
+    c.fov = 40;
+    c.aspect = 1.5;
+    return c;
+}
+
+TEST(FreeCamera, RoundTripsASceneCamera) {
+    const Camera c = test_camera();
+    const Camera back = camera_from(free_camera_from(c), "copy");
+    EXPECT_EQ(back.name, "copy");
+    EXPECT_EQ(back.position, c.position);
+    EXPECT_EQ(back.look_at, c.look_at);
+    EXPECT_EQ(back.fov, c.fov);
+    EXPECT_EQ(back.aspect, c.aspect);
+}
+
+TEST(FreeCamera, OrbitKeepsTheDistanceAndTheTarget) {
+    FreeCamera f = free_camera_from(test_camera());
+    orbit(f, 100, 0, 400);  // a quarter of the view height: pi/4 around up
+    EXPECT_NEAR(glm::length(f.position - f.look_at), 5.0, 1e-9);
+    EXPECT_EQ(f.look_at, Vec3(0, 1, 0));
+    EXPECT_NEAR(f.position.y, 1.0, 1e-9) << "a horizontal drag turns about up only";
+    EXPECT_NEAR(std::abs(f.position.x), 5.0 * std::sin(3.14159265358979 / 4), 1e-9);
+}
+
+TEST(FreeCamera, OrbitStopsShortOfThePole) {
+    FreeCamera f = free_camera_from(test_camera());
+    orbit(f, 0, 100000, 400);  // drag far down: tilt over the top
+    const Vec3 dir = glm::normalize(f.look_at - f.position);
+    EXPECT_LT(std::abs(glm::dot(dir, f.up)), 0.99999) << "view never parallel to up";
+    EXPECT_NEAR(glm::length(f.position - f.look_at), 5.0, 1e-9);
+}
+
+TEST(FreeCamera, PanMovesPositionAndTargetTogether) {
+    FreeCamera f = free_camera_from(test_camera());
+    pan(f, 50, 0, 100);
+    EXPECT_NEAR(f.position.x - 0.0, f.look_at.x - 0.0, 1e-12);
+    EXPECT_LT(f.look_at.x, 0.0) << "dragging right moves the scene right: the camera left";
+    EXPECT_NEAR(glm::length(f.position - f.look_at), 5.0, 1e-9);
+}
+
+TEST(FreeCamera, DollyApproachesButNeverReachesTheTarget) {
+    FreeCamera f = free_camera_from(test_camera());
+    dolly(f, 1);
+    EXPECT_NEAR(glm::length(f.position - f.look_at), 4.5, 1e-9);
+    dolly(f, 1000);
+    EXPECT_GT(glm::length(f.position - f.look_at), 0.0);
+    dolly(f, -2);
+    EXPECT_GT(glm::length(f.position - f.look_at), 1e-3);
+}
+
+TEST(UndoStack, UndoAndRedoWalkTheSnapshots) {
+    UndoStack stack;
+    Scene a, b, c;
+    b.settings.width = 1;
+    c.settings.width = 2;
+    stack.record(a);  // a -> b
+    stack.record(b);  // b -> c
+    auto back = stack.undo(c);
+    ASSERT_TRUE(back);
+    EXPECT_EQ(*back, b);
+    back = stack.undo(b);
+    ASSERT_TRUE(back);
+    EXPECT_EQ(*back, a);
+    EXPECT_FALSE(stack.undo(a));
+    auto forward = stack.redo(a);
+    ASSERT_TRUE(forward);
+    EXPECT_EQ(*forward, b);
+    stack.record(b);  // a new edit drops the redo history
+    EXPECT_FALSE(stack.can_redo());
+}
+
+TEST(UndoStack, KeepsAtMostItsCapacity) {
+    UndoStack stack(3);
+    for (int i = 0; i < 10; ++i) {
+        Scene s;
+        s.settings.width = i;
+        stack.record(s);
+    }
+    EXPECT_EQ(stack.size(), 3u);
+}
+
+TEST(PlaceImage, FitKeepsTheAspectAndCentres) {
+    const ScreenRect r = place_image(200, 100, ScreenRect{0, 0, 400, 400}, 1.0f, FitMode::fit);
+    EXPECT_FLOAT_EQ(r.width(), 400);
+    EXPECT_FLOAT_EQ(r.height(), 200);
+    EXPECT_FLOAT_EQ(r.y0, 100);
+}
+
+TEST(PlaceImage, ActualPixelsIsOneImagePixelPerFramebufferPixelOnHiDpi) {
+    const ScreenRect r =
+        place_image(200, 100, ScreenRect{0, 0, 400, 400}, 2.0f, FitMode::actual_pixels);
+    EXPECT_FLOAT_EQ(r.width(), 100);  // 100 window units = 200 framebuffer pixels
+    EXPECT_FLOAT_EQ(r.height(), 50);
+}
+
+TEST(PlaceImage, NothingToPlaceGivesAnEmptyRect) {
+    EXPECT_EQ(place_image(0, 10, ScreenRect{0, 0, 10, 10}, 1, FitMode::fit).width(), 0);
+}
+
+TEST(ImageFiles, WritesAPngWithTheImageSize) {
+    const fs::path file = temp_dir("png") / "out.png";
+    Image8 image(7, 3);
+    image.pixel(0, 0)[0] = 255;
+    std::string error;
+    ASSERT_TRUE(save_image(file, image, error)) << error;
+    std::ifstream in(file, std::ios::binary);
+    std::string bytes((std::istreambuf_iterator<char>(in)), {});
+    ASSERT_GT(bytes.size(), 24u);
+    EXPECT_EQ(bytes.substr(1, 3), "PNG");
+    auto be32 = [&](std::size_t at) {
+        return (std::uint8_t(bytes[at]) << 24) | (std::uint8_t(bytes[at + 1]) << 16) |
+               (std::uint8_t(bytes[at + 2]) << 8) | std::uint8_t(bytes[at + 3]);
+    };
+    EXPECT_EQ(be32(16), 7u);
+    EXPECT_EQ(be32(20), 3u);
+}
+
+TEST(ImageFiles, RefusesUnknownExtensionsAndEmptyImagesWithoutWriting) {
+    const fs::path dir = temp_dir("bad");
+    std::string error;
+    EXPECT_FALSE(save_image(dir / "out.jpg", Image8(2, 2), error));
+    EXPECT_NE(error.find(".png"), std::string::npos);
+    EXPECT_FALSE(save_image(dir / "out.png", Image8(), error));
+    EXPECT_TRUE(fs::is_empty(dir));
+}
+
+TEST(ImageFiles, AFailedWriteLeavesTheOldFile) {
+    const fs::path dir = temp_dir("keep");
+    write(dir / "a.txt", "old");
+    std::string error;
+    EXPECT_FALSE(write_text_atomically(dir / "missing-dir" / "a.txt", "new", error));
+    EXPECT_FALSE(error.empty());
+    std::ifstream in(dir / "a.txt");
+    std::string text;
+    in >> text;
+    EXPECT_EQ(text, "old");
+}
+
+TEST(RecentFiles, NewestFirstWithoutDuplicatesAndPersisted) {
+    const fs::path store = temp_dir("recent") / "sub" / "recent.txt";
+    {
+        RecentFiles recent;
+        recent.load(store);
+        recent.add("/x/a.jts");
+        recent.add("/x/b.jts");
+        recent.add("/x/a.jts");
+        ASSERT_EQ(recent.paths().size(), 2u);
+        EXPECT_EQ(recent.paths()[0], "/x/a.jts");
+    }
+    RecentFiles again;
+    again.load(store);
+    ASSERT_EQ(again.paths().size(), 2u);
+    EXPECT_EQ(again.paths()[1], "/x/b.jts");
+}
+
+}  // namespace
+}  // namespace jt::view
+
+namespace jt::view {
+namespace {
+
+TEST(EditTracking, AWholeDragIsOneUndoStep) {
+    AppState state;
+    state.doc.loaded = true;
+    const Scene start = state.doc.scene;
+    for (int frame = 0; frame < 5; ++frame) {  // the widget stays active while dragging
+        const Scene before = state.doc.scene;
+        state.doc.scene.settings.width += 10;
+        track_edits(state, before, state.scene_generation, /*widget_active=*/true);
+    }
+    EXPECT_FALSE(state.undo.can_undo()) << "recorded when the drag ends";
+    track_edits(state, state.doc.scene, state.scene_generation, /*widget_active=*/false);
+    EXPECT_EQ(state.undo.size(), 1u);
+    const Scene dragged = state.doc.scene;
+    const auto generation = state.scene_generation;
+    undo(state);
+    EXPECT_EQ(state.doc.scene, start);
+    track_edits(state, dragged, generation, false);  // the frame in which undo ran
+    EXPECT_TRUE(state.undo.can_redo()) << "undo is not mistaken for an edit";
+    redo(state);
+    EXPECT_EQ(state.doc.scene.settings.width, 50);
+}
+
+}  // namespace
+}  // namespace jt::view

@@ -1,0 +1,240 @@
+#include "app_actions.hpp"
+
+#include "image_files.hpp"
+#include "jtracer/validate.hpp"
+
+#include <algorithm>
+
+namespace jt::view {
+
+namespace {
+
+int scene_camera_index(const Scene& scene) {
+    return std::max(active_camera_index(scene), 0);
+}
+
+void after_scene_replaced(AppState& state) {
+    const int count = static_cast<int>(state.doc.scene.cameras.size());
+    if (state.camera_index >= count) state.camera_index = scene_camera_index(state.doc.scene);
+    state.undo.clear();
+    state.edit_base.reset();
+    ++state.scene_generation;
+}
+
+std::string camera_label(const Camera& camera, int index) {
+    return camera.name.empty() ? "camera " + std::to_string(index + 1) : camera.name;
+}
+
+}  // namespace
+
+void open_scene(AppState& state, const std::filesystem::path& path) {
+    LoadAttempt attempt = load_scene_file(path);
+    const bool ok = attempt.ok;
+    const bool first = !state.doc.loaded;
+    accept_load(state.doc, path, std::move(attempt));
+    if (ok || first) {
+        state.watcher = FileWatcher(state.config.watch_interval);
+        state.watcher.watch(path);
+    }
+    if (ok) {
+        state.camera_index = scene_camera_index(state.doc.scene);
+        state.free_camera_active = false;
+        after_scene_replaced(state);
+        state.recent.add(path);
+        state.open_path_input = path.string();
+        state.message = "Opened " + path.string();
+    } else {
+        state.message = "Could not open " + path.string() + ": see Diagnostics";
+    }
+}
+
+void reload_scene(AppState& state) {
+    if (state.doc.path.empty()) return;
+    LoadAttempt attempt = load_scene_file(state.doc.path);
+    const bool ok = attempt.ok;
+    accept_load(state.doc, state.doc.path, std::move(attempt));
+    if (ok) {
+        after_scene_replaced(state);
+        state.message = "Reloaded " + state.doc.path.filename().string();
+    } else {
+        state.message = state.doc.loaded ? "The file has errors: showing the last good scene"
+                                         : "The file has errors";
+    }
+}
+
+bool reload_if_changed(AppState& state) {
+    if (!state.watcher.poll()) return false;
+    reload_scene(state);
+    return true;
+}
+
+bool save_scene(AppState& state) {
+    std::string error;
+    if (!save_scene_in_place(state.doc, error)) {
+        state.message = "Scene not saved: " + error;
+        return false;
+    }
+    state.watcher.acknowledge();  // our own write is not an outside change
+    state.message = "Saved " + state.doc.path.string();
+    return true;
+}
+
+bool save_image(AppState& state, const std::filesystem::path& path) {
+    std::string error;
+    if (!jt::view::save_image(path, state.display, error)) {
+        state.message = "Image not saved: " + error;
+        return false;
+    }
+    state.message = "Saved image " + path.string();
+    return true;
+}
+
+void edit_scene(AppState& state, const std::function<void(Scene&)>& change) {
+    const Scene before = state.doc.scene;
+    change(state.doc.scene);
+    state.undo.record(before);
+    ++state.scene_generation;
+}
+
+void undo(AppState& state) {
+    if (auto previous = state.undo.undo(state.doc.scene)) {
+        state.doc.scene = std::move(*previous);
+        state.message = "Undone";
+    }
+    state.edit_base.reset();
+    ++state.scene_generation;
+}
+
+void redo(AppState& state) {
+    if (auto next = state.undo.redo(state.doc.scene)) {
+        state.doc.scene = std::move(*next);
+        state.message = "Redone";
+    }
+    state.edit_base.reset();
+    ++state.scene_generation;
+}
+
+void track_edits(AppState& state, const Scene& before_frame, std::uint64_t generation_before,
+                 bool widget_active) {
+    if (state.scene_generation != generation_before) {
+        state.edit_base.reset();
+        return;
+    }
+    if (state.doc.scene != before_frame && !state.edit_base) state.edit_base = before_frame;
+    if (!widget_active && state.edit_base) {
+        state.undo.record(*state.edit_base);
+        state.edit_base.reset();
+    }
+}
+
+void select_camera(AppState& state, int index) {
+    const int count = static_cast<int>(state.doc.scene.cameras.size());
+    if (count == 0) return;
+    state.camera_index = std::clamp(index, 0, count - 1);
+    state.free_camera_active = false;
+    state.message =
+        "Camera: " + camera_label(state.doc.scene.cameras[state.camera_index], state.camera_index);
+}
+
+void next_camera(AppState& state) {
+    const int count = static_cast<int>(state.doc.scene.cameras.size());
+    if (count == 0) return;
+    select_camera(state,
+                  state.free_camera_active ? state.camera_index : (state.camera_index + 1) % count);
+}
+
+void use_free_camera(AppState& state) {
+    if (state.free_camera_active || state.doc.scene.cameras.empty()) return;
+    reset_free_camera(state);
+    state.free_camera_active = true;
+}
+
+void reset_free_camera(AppState& state) {
+    const auto& cameras = state.doc.scene.cameras;
+    if (cameras.empty()) return;
+    state.free_camera =
+        free_camera_from(cameras[std::clamp<int>(state.camera_index, 0, cameras.size() - 1)]);
+}
+
+void copy_free_camera_to_scene(AppState& state, const std::string& name) {
+    if (!state.doc.loaded || state.doc.scene.cameras.empty()) return;
+    const Scene before = state.doc.scene;
+    const FreeCamera from = state.free_camera_active
+                                ? state.free_camera
+                                : free_camera_from(state.doc.scene.cameras[state.camera_index]);
+    state.doc.scene.cameras.push_back(camera_from(from, name));
+    state.undo.record(before);
+    ++state.scene_generation;
+    state.camera_index = static_cast<int>(state.doc.scene.cameras.size()) - 1;
+    state.free_camera_active = false;
+    state.message = "Added camera \"" + name + "\" (Save scene to keep it)";
+}
+
+void toggle_pause(AppState& state) {
+    state.paused = !state.paused;
+    if (state.paused) {
+        state.renderer.stop();
+        state.started.reset();  // resuming starts the render again
+    }
+    state.message = state.paused ? "Paused" : "Rendering";
+}
+
+std::optional<RenderRequest> render_request(const AppState& state, std::string& note) {
+    note.clear();
+    if (!state.doc.loaded) {
+        note = "No scene loaded";
+        return std::nullopt;
+    }
+    RenderRequest request;
+    request.scene = state.doc.scene;
+    if (request.scene.cameras.empty()) {
+        note = "The scene has no camera";
+        return std::nullopt;
+    }
+    request.options.camera =
+        std::clamp<int>(state.camera_index, 0, request.scene.cameras.size() - 1);
+    if (state.free_camera_active) {
+        request.scene.cameras.push_back(camera_from(state.free_camera, "viewer"));
+        request.options.camera = static_cast<int>(request.scene.cameras.size()) - 1;
+    }
+    const RenderSettings& settings = request.scene.settings;
+    request.options.width = settings.width;
+    request.options.height = settings.height;
+    if (settings.width <= 0 || settings.height <= 0) {
+        note = "width/height are not set: previewing at 640x480";
+        request.options.width = 640;
+        request.options.height = 480;
+    }
+    if (static_cast<long long>(request.options.width) * request.options.height >
+        state.config.max_pixels) {
+        note = "The image is too large to preview (" + std::to_string(request.options.width) + "x" +
+               std::to_string(request.options.height) + ")";
+        return std::nullopt;
+    }
+    request.options.samples = std::clamp(settings.samples, 1, 1024);
+    request.options.threads = state.config.render_threads;
+    request.options.previews = true;
+    return request;
+}
+
+void update_render(AppState& state) {
+    if (!state.paused) {
+        std::optional<RenderRequest> request = render_request(state, state.render_note);
+        if (request && request != state.started) {
+            state.renderer.start(request->scene, request->options);
+            state.started = std::move(request);
+            state.display_complete = false;
+        }
+    }
+    // Read `finished` before fetching: a fetch after it has every last pixel.
+    const bool finished = state.renderer.finished();
+    if (auto changed = state.renderer.fetch(state.display))
+        state.presenter.upload(state.display, changed);
+    if (finished && state.started) state.display_complete = true;
+}
+
+bool render_complete(const AppState& state) {
+    return state.started && state.display_complete && !state.paused;
+}
+
+}  // namespace jt::view

@@ -1,0 +1,56 @@
+#pragma once
+// The viewer's commands, each a free function on AppState, shared by the
+// panels, the keyboard shortcuts and the tests. Each leaves a one-line
+// outcome in state.message.
+
+#include "app_state.hpp"
+
+#include <filesystem>
+#include <functional>
+
+namespace jt::view {
+
+// Opens `path`. When it does not load, a scene already open stays open and
+// the diagnostics show what is wrong.
+void open_scene(AppState& state, const std::filesystem::path& path);
+// Reads the open file again (also done by the watcher when it changes).
+void reload_scene(AppState& state);
+// Reloads when the watcher saw the file change; true when it did.
+bool reload_if_changed(AppState& state);
+bool save_scene(AppState& state);
+bool save_image(AppState& state, const std::filesystem::path& path);
+
+// Applies `change` to the scene as one undoable step (for edits made outside
+// the panels, e.g. by scripts and tests).
+void edit_scene(AppState& state, const std::function<void(Scene&)>& change);
+
+void undo(AppState& state);
+void redo(AppState& state);
+
+// Called once a frame with the scene as it was before the frame's widgets ran:
+// records one undo step per continuous edit (a whole drag is one step).
+// Changes made by commands (see AppState::scene_generation) are not edits.
+void track_edits(AppState& state, const Scene& before_frame, std::uint64_t generation_before,
+                 bool widget_active);
+
+void select_camera(AppState& state, int index);
+void next_camera(AppState& state);
+// Starts moving freely from the selected scene camera (or keeps moving).
+void use_free_camera(AppState& state);
+void reset_free_camera(AppState& state);
+// Appends the free camera to the scene as a new camera named `name` and selects it.
+void copy_free_camera_to_scene(AppState& state, const std::string& name);
+
+void toggle_pause(AppState& state);
+
+// Starts a render when what should be shown changed, then moves the finished
+// pixels to the texture. Needs the GL context current.
+void update_render(AppState& state);
+// The render that update_render would start now, or nothing (with the reason
+// in `note`) when there is nothing to render.
+std::optional<RenderRequest> render_request(const AppState& state, std::string& note);
+
+// True once the render of the current scene has rendered every pass.
+bool render_complete(const AppState& state);
+
+}  // namespace jt::view

@@ -1,0 +1,77 @@
+#pragma once
+// Everything the viewer knows between frames. Plain data plus the few objects
+// that own resources (render thread, GL texture); behaviour lives in
+// app_actions.hpp (what a command does) and viewer_frame.hpp (one UI frame).
+
+#include "file_watcher.hpp"
+#include "free_camera.hpp"
+#include "presenter.hpp"
+#include "recent_files.hpp"
+#include "render_controller.hpp"
+#include "scene_document.hpp"
+#include "undo_stack.hpp"
+
+#include <chrono>
+#include <cstdint>
+#include <filesystem>
+#include <optional>
+#include <string>
+
+namespace jt::view {
+
+struct ViewerConfig {
+    std::filesystem::path recent_files;  // empty: remember nothing between runs
+    std::chrono::milliseconds watch_interval{200};
+    int render_threads = 0;     // 0: every core
+    int max_pixels = 64 << 20;  // larger images are refused, not allocated
+};
+
+// What the current render was started from; a new render starts when this changes.
+struct RenderRequest {
+    Scene scene;
+    RenderOptions options;
+    bool operator==(const RenderRequest& other) const {
+        return scene == other.scene && options.width == other.options.width &&
+               options.height == other.options.height && options.samples == other.options.samples &&
+               options.camera == other.options.camera;
+    }
+};
+
+struct AppState {
+    explicit AppState(ViewerConfig config = {}) : config(std::move(config)) {}
+
+    ViewerConfig config;
+    SceneDocument doc;
+    UndoStack undo;
+    std::optional<Scene>
+        edit_base;  // the scene before the edit in progress (one undo step per drag)
+    // Bumped by every command that replaces the scene and keeps the undo stack
+    // itself (open, reload, undo, redo, scripted edits), so that the change is
+    // not mistaken for a widget edit.
+    std::uint64_t scene_generation = 0;
+    FileWatcher watcher;
+    RecentFiles recent;
+
+    // Which camera renders: one of the scene's, or the free camera.
+    int camera_index = 0;
+    bool free_camera_active = false;
+    FreeCamera free_camera;
+    std::string new_camera_name = "viewer";
+
+    RenderController renderer;
+    std::optional<RenderRequest> started;  // the request the current render answers
+    std::string render_note;               // why nothing renders, when so
+    bool paused = false;
+    bool display_complete = false;  // the display holds every pixel of the finished render
+    Image8 display;                 // what the texture holds
+    Presenter presenter;
+    FitMode fit = FitMode::fit;
+    bool show_ui = true;
+
+    std::string open_path_input;
+    std::string save_image_path = "jtracer-view.png";
+    std::string message;  // the result of the last command, for the status line
+    bool quit = false;
+};
+
+}  // namespace jt::view

@@ -1,0 +1,58 @@
+#include "headless.hpp"
+
+#include "app_actions.hpp"
+#include "screenshot.hpp"
+#include "viewer_frame.hpp"
+
+#include <imgui.h>
+
+#include <thread>
+
+namespace jt::view {
+
+HeadlessViewer::HeadlessViewer(int width, int height)
+    : context_(width, height), layer_(OsMesaContext::proc_loader()) {}
+
+std::string HeadlessViewer::error() const {
+    if (!context_.ok()) return context_.error();
+    return layer_.error();
+}
+
+void HeadlessViewer::frame(AppState& state) {
+    ImGuiLayer::set_display(context_.width(), context_.height(), 1.0f, 1.0f / 30.0f);
+    layer_.begin_frame();
+    viewer_frame(state, FrameInfo{1.0f});
+    layer_.end_frame(context_.width(), context_.height());
+}
+
+void HeadlessViewer::press_key(AppState& state, int key, bool ctrl, bool shift) {
+    ImGuiIO& io = ImGui::GetIO();
+    io.KeyCtrl = ctrl;
+    io.KeyShift = shift;
+    io.KeysDown[key] = true;
+    frame(state);
+    io.KeysDown[key] = false;
+    io.KeyCtrl = false;
+    io.KeyShift = false;
+    frame(state);
+}
+
+bool HeadlessViewer::run_until_complete(AppState& state, std::chrono::milliseconds timeout,
+                                        int settle_frames) {
+    const auto deadline = std::chrono::steady_clock::now() + timeout;
+    frame(state);
+    while (!render_complete(state)) {
+        if (!state.started || std::chrono::steady_clock::now() > deadline) return false;
+        // Leave the cores to the render; the picture is only read at the end.
+        std::this_thread::sleep_for(std::chrono::milliseconds(20));
+        frame(state);
+    }
+    for (int i = 0; i < settle_frames; ++i) frame(state);
+    return true;
+}
+
+Image8 HeadlessViewer::screenshot() const {
+    return read_framebuffer(context_.width(), context_.height());
+}
+
+}  // namespace jt::view

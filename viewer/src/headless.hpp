@@ -1,0 +1,40 @@
+#pragma once
+// The viewer without a window: an OSMesa context, ImGui, and a frame loop that
+// stops when the render is complete. Used by --screenshot and by the tests.
+
+#include "app_state.hpp"
+#include "gl/gl_context_osmesa.hpp"
+#include "imgui_layer.hpp"
+
+#include <chrono>
+#include <string>
+
+namespace jt::view {
+
+class HeadlessViewer {
+  public:
+    HeadlessViewer(int width, int height);
+    bool ok() const { return context_.ok() && layer_.ok(); }
+    std::string error() const;
+
+    // Draws one frame of `state` into the offscreen buffer.
+    void frame(AppState& state);
+    // Holds `key` down for one frame (with the modifiers), then releases it.
+    void press_key(AppState& state, int key, bool ctrl = false, bool shift = false);
+    // Runs frames until the render of the current scene is complete and shown,
+    // then `settle_frames` more so the UI shows the final state. False on timeout
+    // or when there is nothing to render.
+    bool run_until_complete(AppState& state,
+                            std::chrono::milliseconds timeout = std::chrono::minutes(10),
+                            int settle_frames = 2);
+    // The last frame as drawn (rows bottom-up).
+    Image8 screenshot() const;
+    int width() const { return context_.width(); }
+    int height() const { return context_.height(); }
+
+  private:
+    OsMesaContext context_;
+    ImGuiLayer layer_;
+};
+
+}  // namespace jt::view

@@ -1,0 +1,184 @@
+// jtracer-view: the interactive progressive viewer.
+//
+//   jtracer-view [scene.jts]                      a window (GLFW)
+//   jtracer-view scene.jts --screenshot out.png   headless (OSMesa), no display needed
+
+#include "app_actions.hpp"
+#include "app_state.hpp"
+#include "gl/gl_context_glfw.hpp"
+#include "headless.hpp"
+#include "image_files.hpp"
+#include "imgui_layer.hpp"
+#include "viewer_frame.hpp"
+
+#include <imgui.h>
+#include <imgui_impl_glfw.h>
+#include <CLI/CLI.hpp>
+
+#include <cstdio>
+#include <filesystem>
+#include <iostream>
+#include <optional>
+#include <regex>
+
+namespace {
+
+using namespace jt::view;
+
+struct Arguments {
+    std::string scene;
+    std::string screenshot;
+    std::string size = "1280x800";
+    bool exit_when_done = false;
+    double timeout_seconds = 600;
+    int width = 1280, height = 800;
+};
+
+std::filesystem::path default_scene() {
+    const std::filesystem::path local = "scenes/showcase.jts";
+    std::error_code ec;
+    if (std::filesystem::exists(local, ec)) return local;
+    return JT_DEFAULT_SCENE;
+}
+
+bool parse_size(const std::string& text, int& width, int& height) {
+    std::smatch m;
+    static const std::regex pattern(R"((\d{1,5})x(\d{1,5}))");
+    if (!std::regex_match(text, m, pattern)) return false;
+    width = std::stoi(m[1]);
+    height = std::stoi(m[2]);
+    return width >= 64 && height >= 64 && width <= 8192 && height <= 8192;
+}
+
+void print_diagnostics(const AppState& state) {
+    const std::string text = format_diagnostics(state.doc);
+    if (!text.empty()) std::cerr << text;
+}
+
+int run_screenshot(const Arguments& args) {
+    HeadlessViewer viewer(args.width, args.height);
+    if (!viewer.ok()) {
+        std::cerr << "jtracer-view: cannot render offscreen: " << viewer.error() << "\n";
+        return 1;
+    }
+    AppState state;  // after the context, so its texture is deleted while the context lives
+    open_scene(state, args.scene);
+    print_diagnostics(state);
+    const auto timeout =
+        std::chrono::milliseconds(static_cast<long long>(args.timeout_seconds * 1000));
+    const bool complete = viewer.run_until_complete(state, timeout);
+    std::string error;
+    if (!jt::view::save_image(args.screenshot, viewer.screenshot(), error)) {
+        std::cerr << "jtracer-view: " << error << "\n";
+        return 1;
+    }
+    if (!complete) {
+        std::cerr << "jtracer-view: the render did not complete ("
+                  << (state.render_note.empty() ? "timed out" : state.render_note)
+                  << "); wrote the screenshot as it stands to " << args.screenshot << "\n";
+        return 1;
+    }
+    std::cerr << "jtracer-view: wrote " << args.screenshot << " (" << args.width << "x"
+              << args.height << ")\n";
+    return 0;
+}
+
+int run_window(const Arguments& args) {
+    GlfwWindow window(args.width, args.height, "JTracer");
+    if (!window.ok()) {
+        std::cerr << "jtracer-view: " << window.error() << "\n";
+        return 1;
+    }
+    ImGuiLayer layer(GlfwWindow::proc_loader());
+    if (!layer.ok()) {
+        std::cerr << "jtracer-view: " << layer.error() << "\n";
+        return 1;
+    }
+    ImGui_ImplGlfw_InitForOpenGL(window.handle(), true);
+    std::optional<std::string> dropped;
+    window.on_drop([&](const std::string& path) { dropped = path; });
+
+    int exit_code = 0;
+    {
+        // Scoped so the texture and the render thread go before the GL context.
+        AppState app;
+        app.recent.load(default_recent_files_path());
+        open_scene(app, args.scene);
+        print_diagnostics(app);
+        const auto started = std::chrono::steady_clock::now();
+        std::string title;
+        int frames_after_done = 0;
+        while (!window.should_close() && !app.quit) {
+            // Idle when the render is done: wake for input or to poll the file.
+            if (render_complete(app) && !args.exit_when_done)
+                window.wait_events(0.2);
+            else
+                window.poll_events();
+            if (dropped) {
+                open_scene(app, *dropped);
+                dropped.reset();
+            }
+            int ww = 0, wh = 0, fw = 0, fh = 0;
+            window.sizes(ww, wh, fw, fh);
+            ImGui_ImplGlfw_NewFrame();
+            layer.begin_frame();
+            const float scale = ww > 0 ? static_cast<float>(fw) / static_cast<float>(ww) : 1.0f;
+            viewer_frame(app, FrameInfo{scale});
+            layer.end_frame(fw, fh);
+            window.swap_buffers();
+            if (const std::string t = window_title(app); t != title) window.set_title(title = t);
+            if (args.exit_when_done) {
+                if (render_complete(app) && ++frames_after_done > 2) break;
+                if (!app.started && !app.render_note.empty()) {
+                    std::cerr << "jtracer-view: nothing to render: " << app.render_note << "\n";
+                    exit_code = 1;
+                    break;
+                }
+                if (std::chrono::steady_clock::now() - started >
+                    std::chrono::duration<double>(args.timeout_seconds)) {
+                    std::cerr << "jtracer-view: the render did not complete in time\n";
+                    exit_code = 1;
+                    break;
+                }
+            }
+        }
+        if (args.exit_when_done && exit_code == 0)
+            std::cerr << "jtracer-view: " << window_title(app) << "\n";
+    }
+    ImGui_ImplGlfw_Shutdown();
+    return exit_code;
+}
+
+}  // namespace
+
+int main(int argc, char** argv) {
+    Arguments args;
+    CLI::App cli{"jtracer-view: the interactive progressive viewer of JTracer"};
+    cli.add_option("scene", args.scene, "the .jts scene to open (default: scenes/showcase.jts)");
+    cli.add_option("--screenshot", args.screenshot,
+                   "render headless (OSMesa, no display), write the whole window to this PNG "
+                   "once the render completes, and exit");
+    cli.add_option("--size", args.size, "window or screenshot size, WxH")->capture_default_str();
+    cli.add_flag("--exit-when-done", args.exit_when_done,
+                 "quit once the render completes (for tests)");
+    cli.add_option("--timeout", args.timeout_seconds,
+                   "with --screenshot or --exit-when-done: give up after this many seconds")
+        ->capture_default_str()
+        ->check(CLI::PositiveNumber);
+    CLI11_PARSE(cli, argc, argv);
+
+    if (!parse_size(args.size, args.width, args.height)) {
+        std::cerr << "jtracer-view: --size takes WxH between 64x64 and 8192x8192, got '"
+                  << args.size << "'\n";
+        return 2;
+    }
+    if (args.scene.empty()) args.scene = default_scene().string();
+    if (!args.screenshot.empty()) {
+        if (image_format_for(args.screenshot) != ImageFormat::png) {
+            std::cerr << "jtracer-view: --screenshot writes a PNG: name it .png\n";
+            return 2;
+        }
+        return run_screenshot(args);
+    }
+    return run_window(args);
+}

@@ -1,0 +1,45 @@
+#include "recent_files.hpp"
+
+#include "image_files.hpp"
+
+#include <algorithm>
+#include <cstdlib>
+#include <fstream>
+
+namespace jt::view {
+
+void RecentFiles::load(const std::filesystem::path& storage) {
+    storage_ = storage;
+    paths_.clear();
+    if (storage_.empty()) return;
+    std::ifstream in(storage_);
+    std::string line;
+    while (paths_.size() < capacity && std::getline(in, line))
+        if (!line.empty() && std::find(paths_.begin(), paths_.end(), line) == paths_.end())
+            paths_.push_back(line);
+}
+
+void RecentFiles::add(const std::filesystem::path& path) {
+    std::error_code ec;
+    std::filesystem::path absolute = std::filesystem::absolute(path, ec);
+    const std::string entry = (ec ? path : absolute).lexically_normal().string();
+    std::erase(paths_, entry);
+    paths_.insert(paths_.begin(), entry);
+    if (paths_.size() > capacity) paths_.resize(capacity);
+    if (storage_.empty()) return;
+    std::filesystem::create_directories(storage_.parent_path(), ec);
+    std::string text;
+    for (const std::string& p : paths_) text += p + "\n";
+    std::string error;
+    write_text_atomically(storage_, text, error);  // a list we cannot save is no reason to fail
+}
+
+std::filesystem::path default_recent_files_path() {
+    if (const char* xdg = std::getenv("XDG_CONFIG_HOME"); xdg && *xdg)
+        return std::filesystem::path(xdg) / "jtracer" / "recent-scenes.txt";
+    if (const char* home = std::getenv("HOME"); home && *home)
+        return std::filesystem::path(home) / ".config" / "jtracer" / "recent-scenes.txt";
+    return {};
+}
+
+}  // namespace jt::view

@@ -1,0 +1,113 @@
+#include "scene_document.hpp"
+
+#include "image_files.hpp"
+#include "jtracer/parser.hpp"
+#include "jtracer/source_edit.hpp"
+#include "jtracer/validate.hpp"
+
+#include <fstream>
+#include <sstream>
+
+namespace jt::view {
+
+namespace {
+
+constexpr std::uintmax_t max_scene_bytes = 256u << 20;
+
+Diagnostic file_error(std::string message) {
+    return Diagnostic{Severity::error, SourcePos{}, std::move(message)};
+}
+
+}  // namespace
+
+LoadAttempt load_scene_file(const std::filesystem::path& path) {
+    LoadAttempt attempt;
+    std::error_code ec;
+    if (!std::filesystem::is_regular_file(path, ec)) {
+        attempt.diagnostics.push_back(file_error(std::filesystem::exists(path, ec)
+                                                     ? "is not a regular file"
+                                                     : "cannot open the file: it does not exist"));
+        return attempt;
+    }
+    if (std::filesystem::file_size(path, ec) > max_scene_bytes) {
+        attempt.diagnostics.push_back(file_error("the file is larger than 256 MiB"));
+        return attempt;
+    }
+    std::ifstream in(path, std::ios::binary);
+    std::ostringstream bytes;
+    bytes << in.rdbuf();
+    if (!in && !in.eof()) {
+        attempt.diagnostics.push_back(file_error("cannot read the file"));
+        return attempt;
+    }
+    attempt.text = bytes.str();
+    ParseResult parsed = parse_scene(attempt.text);
+    attempt.diagnostics = std::move(parsed.diagnostics);
+    if (!has_errors(attempt.diagnostics)) {
+        std::vector<Diagnostic> more = validate_scene(parsed.scene, parsed.source);
+        attempt.diagnostics.insert(attempt.diagnostics.end(), more.begin(), more.end());
+    }
+    attempt.ok = !has_errors(attempt.diagnostics);
+    attempt.scene = std::move(parsed.scene);
+    attempt.source = std::move(parsed.source);
+    return attempt;
+}
+
+void accept_load(SceneDocument& doc, const std::filesystem::path& path, LoadAttempt attempt) {
+    doc.diagnostics = std::move(attempt.diagnostics);
+    doc.diagnostics_source = attempt.text;
+    doc.diagnostics_path = path;
+    doc.load_failed = !attempt.ok;
+    if (!attempt.ok) {
+        if (!doc.loaded) doc.path = path;
+        return;
+    }
+    doc.path = path;
+    doc.loaded = true;
+    doc.text = std::move(attempt.text);
+    doc.original = std::move(attempt.scene);
+    doc.source = std::move(attempt.source);
+    doc.scene = doc.original;
+}
+
+std::string format_diagnostics(const SceneDocument& doc) {
+    std::string out;
+    const std::string name = doc.diagnostics_path.string();
+    for (const Diagnostic& d : doc.diagnostics)
+        out += format_diagnostic(d, name, doc.diagnostics_source);
+    return out;
+}
+
+bool has_unsaved_edits(const SceneDocument& doc) {
+    return doc.loaded && doc.scene != doc.original;
+}
+
+bool save_scene_in_place(SceneDocument& doc, std::string& error) {
+    if (!doc.loaded) {
+        error = "no scene is open";
+        return false;
+    }
+    SourceEditResult edit = apply_scene_edits(doc.text, doc.source, doc.original, doc.scene);
+    if (!edit.ok()) {
+        error = edit.error;
+        return false;
+    }
+    // Check before writing: the new text must mean exactly the edited scene.
+    ParseResult check = parse_scene(edit.text);
+    if (!check.ok() || check.scene != doc.scene) {
+        error =
+            "internal error: the edited text would not read back as the edited scene; "
+            "the file was left as it was";
+        return false;
+    }
+    if (!write_text_atomically(doc.path, edit.text, error)) return false;
+    doc.text = std::move(edit.text);
+    doc.original = doc.scene;
+    doc.source = std::move(check.source);
+    doc.diagnostics = std::move(check.diagnostics);
+    doc.diagnostics_source = doc.text;
+    doc.load_failed = false;
+    return true;
+}
+
+}  // namespace jt::view

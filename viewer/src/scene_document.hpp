@@ -1,0 +1,54 @@
+#pragma once
+// The scene file the viewer has open: its text as last loaded successfully, the
+// parse of that text (scene + spans, the base for saving in place), the scene
+// as edited since, and the diagnostics of the latest load attempt.
+
+#include "jtracer/diagnostics.hpp"
+#include "jtracer/scene.hpp"
+#include "jtracer/source_map.hpp"
+
+#include <filesystem>
+#include <string>
+#include <vector>
+
+namespace jt::view {
+
+struct SceneDocument {
+    std::filesystem::path path;
+    bool loaded = false;  // a good scene is held (from this file or an earlier one)
+    std::string text;     // the text `original` and `source` were parsed from
+    Scene original;       // the scene as in `text`
+    SceneSource source;
+    Scene scene;                             // as edited in the viewer
+    std::vector<Diagnostic> diagnostics;     // of the latest load attempt
+    std::string diagnostics_source;          // the text they point into (to quote lines)
+    std::filesystem::path diagnostics_path;  // the file they are about
+    bool load_failed = false;                // the latest load attempt had errors: `scene` is older
+};
+
+struct LoadAttempt {
+    bool ok = false;
+    std::string text;
+    Scene scene;
+    SceneSource source;
+    std::vector<Diagnostic> diagnostics;
+};
+
+// Reads, parses and validates `path`. Never throws: a missing, unreadable or
+// garbage file comes back as diagnostics.
+LoadAttempt load_scene_file(const std::filesystem::path& path);
+
+// Takes `attempt` into `doc`: on success the scene is replaced, on failure
+// the last good scene stays and only the diagnostics change.
+void accept_load(SceneDocument& doc, const std::filesystem::path& path, LoadAttempt attempt);
+
+// "file:line:col: error: message" lines, as the CLI prints them.
+std::string format_diagnostics(const SceneDocument& doc);
+
+bool has_unsaved_edits(const SceneDocument& doc);
+
+// Writes the edits into the file in place (see source_edit.hpp), atomically,
+// then takes the new text as the document's base. False with `error` on failure.
+bool save_scene_in_place(SceneDocument& doc, std::string& error);
+
+}  // namespace jt::view
