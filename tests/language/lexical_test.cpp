@@ -2,6 +2,9 @@
 
 #include "test_util.hpp"
 
+#include <charconv>
+#include <random>
+
 namespace jt {
 namespace {
 
@@ -132,6 +135,42 @@ TEST(Text, ByteOrderMarkIsSkipped) {
 
 TEST(Text, UnexpectedCharacterIsReportedAndSkipped) {
     EXPECT_EQ(brief("scene { sphere { radius: 2; } @ }"), "1:31: error: unexpected character '@'");
+}
+
+}  // namespace
+}  // namespace jt
+
+namespace jt {
+namespace {
+
+// The lexer reads short decimals on a fast path; it must give exactly the
+// double std::from_chars gives, for every spelling.
+TEST(Numbers, FastPathAgreesWithFromChars) {
+    std::mt19937_64 rng(2024);
+    auto digits = [&](int n) {
+        std::string s;
+        for (int i = 0; i < n; ++i) s += static_cast<char>('0' + rng() % 10);
+        return s;
+    };
+    for (int trial = 0; trial < 20000; ++trial) {
+        std::string number = digits(static_cast<int>(rng() % 12));
+        if (rng() % 2 || number.empty()) {
+            number += '.';
+            number += digits(1 + static_cast<int>(rng() % 12));
+        }
+        if (rng() % 3 == 0) {
+            number += rng() % 2 ? "e-" : "e";
+            number += std::to_string(rng() % 30);
+        }
+        if (rng() % 2) number.insert(number.begin(), '-');
+        double expected = 0;
+        auto [end, ec] = std::from_chars(number.data(), number.data() + number.size(), expected);
+        ASSERT_EQ(ec, std::errc()) << number;
+        ParseResult r = parse_scene("scene { plane { distance: " + number + "; } }");
+        ASSERT_TRUE(r.ok()) << number;
+        double got = std::get<Plane>(r.scene.primitives.at(0).shape).distance;
+        ASSERT_EQ(got, expected) << number;
+    }
 }
 
 }  // namespace

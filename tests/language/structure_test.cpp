@@ -246,3 +246,20 @@ TEST(Structure, NoSceneBlockParsesClean) {
 
 }  // namespace
 }  // namespace jt
+
+namespace jt {
+namespace {
+
+TEST(Structure, BlocksInsideBlocksThatHoldOnlyProperties) {
+    EXPECT_EQ(testing::brief("render_settings { foo { } width: 2; }"),
+              "1:19: error: unexpected block 'foo' in 'render_settings', which holds only "
+              "properties");
+    EXPECT_EQ(testing::brief("scene { sphere { material { x { } } } }"),
+              "1:29: error: unexpected block 'x' in 'material', which holds only properties");
+    EXPECT_EQ(testing::brief("cameras { perspective_camera { bar { } } }"),
+              "1:32: error: unexpected block 'bar' in 'perspective_camera', which holds only "
+              "properties");
+}
+
+}  // namespace
+}  // namespace jt

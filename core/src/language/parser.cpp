@@ -8,6 +8,7 @@
 #include "jtracer/parser.hpp"
 
 #include "language/lexer.hpp"
+#include "language/number_text.hpp"
 #include "language/properties.hpp"
 #include "language/suggest.hpp"
 
@@ -268,7 +269,12 @@ class Parser {
     }
 
     void unknown_block(std::string_view where, std::span<const std::string_view> allowed) {
-        sink_.error(cur_.pos, unknown_name_message("block", cur_.text, where, allowed));
+        if (allowed.empty()) {
+            sink_.error(cur_.pos, "unexpected block " + quote(cur_.text.substr(0, 40)) + " " +
+                                      std::string(where) + ", which holds only properties");
+        } else {
+            sink_.error(cur_.pos, unknown_name_message("block", cur_.text, where, allowed));
+        }
         advance();
         if (at(TokenKind::lbrace)) {
             skip_braced();
