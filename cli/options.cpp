@@ -1,0 +1,50 @@
+#include "options.hpp"
+
+#include <CLI/CLI.hpp>
+
+#include <cstdio>
+#include <iostream>
+
+namespace jt::cli {
+
+ParsedOptions parse_options(int argc, char** argv) {
+    ParsedOptions parsed;
+    Options& o = parsed.options;
+    CLI::App app{"jtracer-cli: renders a JTracer scene (.jts) to a BMP or PNG image."};
+    app.footer(
+        "Examples:\n"
+        "  jtracer-cli scenes/showcase.jts                  writes the scene's filename (BMP)\n"
+        "  jtracer-cli scenes/showcase.jts -o shot.png --width 1920 --height 1080 --samples 16\n"
+        "  jtracer-cli --check scenes/showcase.jts          only checks the scene\n"
+        "\n"
+        "Exit codes: 0 ok, 1 errors in the scene, 2 bad command line, 3 file I/O errors.\n");
+    app.set_version_flag("--version", std::string("jtracer-cli ") + JT_VERSION);
+    app.add_option("scene", o.scene_path, "The scene file to render (.jts)")->required();
+    app.add_option("-o,--output", o.output,
+                   "Write the image here instead of the scene's filename; a name ending in .png "
+                   "gives a PNG, anything else a BMP");
+    app.add_option("--camera", o.camera, "Render from the camera with this name");
+    app.add_option("--width", o.width, "Image width in pixels (overrides the scene)")
+        ->check(CLI::Range(1, 65535));
+    app.add_option("--height", o.height, "Image height in pixels (overrides the scene)")
+        ->check(CLI::Range(1, 65535));
+    app.add_option("--samples", o.samples, "Rays per pixel, 1..1024 (overrides the scene)")
+        ->check(CLI::Range(1, 1024));
+    app.add_option("--threads", o.threads, "Worker threads; 0 uses every core")
+        ->check(CLI::Range(0, 4096));
+    app.add_flag("--check", o.check_only, "Only parse and validate the scene; write nothing");
+    app.add_flag("-q,--quiet", o.quiet, "No progress bar, summary or warnings; errors still show");
+    try {
+        app.parse(argc, argv);
+    } catch (const CLI::CallForHelp& e) {
+        parsed.exit_code = app.exit(e);
+    } catch (const CLI::CallForVersion& e) {
+        parsed.exit_code = app.exit(e);
+    } catch (const CLI::ParseError& e) {
+        std::cerr << "jtracer-cli: " << e.what() << "\nRun 'jtracer-cli --help' for the options.\n";
+        parsed.exit_code = exit_usage;
+    }
+    return parsed;
+}
+
+}  // namespace jt::cli

@@ -1,0 +1,66 @@
+#include "progress.hpp"
+
+#include <cmath>
+#include <cstdio>
+
+namespace jt::cli {
+
+namespace {
+
+constexpr int bar_width = 30;
+// A plain log line per 10% only for renders long enough to need them.
+constexpr double log_after_seconds = 1.0;
+
+}  // namespace
+
+std::string format_duration(double seconds) {
+    char text[64];
+    if (seconds < 60.0) {
+        std::snprintf(text, sizeof text, "%.2f s", seconds);
+    } else {
+        auto whole = static_cast<long>(seconds);
+        std::snprintf(text, sizeof text, "%ld min %02ld s", whole / 60, whole % 60);
+    }
+    return text;
+}
+
+std::string render_summary(int width, int height, int samples, const RenderProgress& progress) {
+    double mrays = static_cast<double>(progress.rays) / 1e6;
+    double rate = progress.seconds > 0.0 ? mrays / progress.seconds : 0.0;
+    char text[160];
+    std::snprintf(text, sizeof text, "%dx%d, %d sample%s, %s, %.2f M rays, %.2f Mrays/s", width,
+                  height, samples, samples == 1 ? "" : "s",
+                  format_duration(progress.seconds).c_str(), mrays, rate);
+    return text;
+}
+
+void ProgressDisplay::update(const RenderProgress& progress) {
+    if (quiet_) return;
+    int percent = static_cast<int>(std::floor(progress.fraction * 100.0));
+    if (terminal_) {
+        int filled = static_cast<int>(progress.fraction * bar_width);
+        std::string bar(static_cast<std::size_t>(filled), '#');
+        bar.append(static_cast<std::size_t>(bar_width - filled), '.');
+        std::string eta = "--";
+        if (progress.fraction > 0.01 && progress.seconds > 0.2)
+            eta = format_duration(progress.seconds * (1.0 - progress.fraction) / progress.fraction);
+        std::fprintf(stderr, "\r[%s] %3d%%  %-12s  ETA %-12s", bar.c_str(), percent,
+                     progress.pass_name.c_str(), eta.c_str());
+        std::fflush(stderr);
+        drawn_ = true;
+        return;
+    }
+    if (progress.seconds < log_after_seconds) return;
+    if (percent / 10 > last_logged_percent_ / 10 && percent < 100) {
+        std::fprintf(stderr, "rendering: %d%% (%s)\n", percent,
+                     format_duration(progress.seconds).c_str());
+        last_logged_percent_ = percent;
+    }
+}
+
+void ProgressDisplay::finish() {
+    if (drawn_) std::fprintf(stderr, "\r%*s\r", bar_width + 50, "");
+    drawn_ = false;
+}
+
+}  // namespace jt::cli

@@ -1,0 +1,238 @@
+// jtracer-cli end to end: exit codes, which file it writes, and that no file
+// is written on any error.
+
+#include "jtracer/bmp.hpp"
+#include "jtracer/image_file.hpp"
+
+#include <gtest/gtest.h>
+#include <sys/wait.h>
+#include <unistd.h>
+
+#include <cstdlib>
+#include <filesystem>
+#include <fstream>
+#include <sstream>
+
+namespace jt {
+namespace {
+
+namespace fs = std::filesystem;
+
+const std::string small_scene = R"(
+render_settings { width: 32; height: 18; filename: "from_scene.bmp"; recurse_depth: 2; }
+cameras {
+    perspective_camera { name: "front"; position: <0, 1, 5>; look_at: <0, 0.5, 0>; aspect: 1.7778; }
+    perspective_camera { name: "top"; position: <0, 6, 0.1>; look_at: <0, 0, 0>; aspect: 1.7778; }
+}
+scene {
+    plane { material { pigment: <0.8, 0.8, 0.8>; diffuse: <1, 1, 1>; reflection: 0.3; } }
+    sphere { center: <0, 0.8, 0>; radius: 0.8;
+             material { pigment: <1, 0.2, 0.1>; diffuse: <1, 1, 1>; specular: <1, 1, 1>; } }
+    cylinder { radius: 0.3; height: 1.2; transform { xrotate: 30; translate: <1.5, 0, 0>; }
+               material { pigment: <0.2, 0.4, 1>; diffuse: <1, 1, 1>; } }
+    point_light { position: <3, 5, 4>; intensity: <1, 1, 1>; }
+}
+)";
+
+struct CliRun {
+    int code = -1;
+    std::string err;
+};
+
+class Cli : public testing::Test {
+  protected:
+    fs::path dir;
+
+    void SetUp() override {
+        const auto* info = testing::UnitTest::GetInstance()->current_test_info();
+        dir = fs::temp_directory_path() /
+              ("jtracer_cli_test_" + std::string(info->name()) + "_" + std::to_string(::getpid()));
+        fs::remove_all(dir);
+        fs::create_directories(dir);
+        write("scene.jts", small_scene);
+    }
+    void TearDown() override {
+        if (!HasFailure()) fs::remove_all(dir);
+    }
+
+    void write(const std::string& name, const std::string& text) {
+        std::ofstream(dir / name, std::ios::binary) << text;
+    }
+
+    // Runs jtracer-cli in `dir` with stderr captured; stdout goes to a file too.
+    CliRun run(const std::string& args) {
+        std::string command =
+            "cd '" + dir.string() + "' && '" JT_CLI "' " + args + " > stdout.txt 2> stderr.txt";
+        int status = std::system(command.c_str());
+        CliRun r;
+        r.code = WIFEXITED(status) ? WEXITSTATUS(status) : -1;
+        std::ifstream in(dir / "stderr.txt");
+        std::stringstream ss;
+        ss << in.rdbuf();
+        r.err = ss.str();
+        return r;
+    }
+
+    std::string out() {
+        std::ifstream in(dir / "stdout.txt");
+        std::stringstream ss;
+        ss << in.rdbuf();
+        return ss.str();
+    }
+
+    // Every file in dir other than the ones the test itself made.
+    std::vector<std::string> outputs() {
+        std::vector<std::string> names;
+        for (const auto& e : fs::directory_iterator(dir)) {
+            std::string n = e.path().filename().string();
+            if (n != "scene.jts" && n != "stdout.txt" && n != "stderr.txt" &&
+                e.path().extension() != ".jts")
+                names.push_back(n);
+        }
+        std::sort(names.begin(), names.end());
+        return names;
+    }
+};
+
+TEST_F(Cli, WritesTheScenesFilenameAsBmpAndASummary) {
+    CliRun r = run("scene.jts");
+    ASSERT_EQ(r.code, 0) << r.err;
+    EXPECT_EQ(outputs(), std::vector<std::string>{"from_scene.bmp"});
+    Image8 image;
+    ASSERT_EQ(read_bmp(dir / "from_scene.bmp", image), "");
+    EXPECT_EQ(image.width, 32);
+    EXPECT_EQ(image.height, 18);
+    EXPECT_NE(r.err.find("32x18"), std::string::npos) << r.err;
+    EXPECT_NE(r.err.find("Mrays/s"), std::string::npos) << r.err;
+}
+
+TEST_F(Cli, DefaultFilenameIsJtracerBmp) {
+    std::string text = small_scene;
+    text.replace(text.find(" filename: \"from_scene.bmp\";"), 28, "");
+    write("scene.jts", text);
+    CliRun r = run("scene.jts");
+    ASSERT_EQ(r.code, 0) << r.err;
+    EXPECT_EQ(outputs(), std::vector<std::string>{"jtracer.bmp"});
+}
+
+TEST_F(Cli, SceneFilenameIsBmpWhateverItsExtension) {
+    std::string text = small_scene;
+    text.replace(text.find("from_scene.bmp"), 14, "picture.png");
+    write("scene.jts", text);
+    ASSERT_EQ(run("-q scene.jts").code, 0);
+    Image8 image;
+    EXPECT_EQ(read_bmp(dir / "picture.png", image), "") << "the manual: always a BMP";
+}
+
+TEST_F(Cli, OutputOptionWinsAndPngByExtension) {
+    CliRun r = run("scene.jts -o shot.png --width 40 --height 20 -q");
+    ASSERT_EQ(r.code, 0) << r.err;
+    EXPECT_EQ(r.err, "") << "--quiet";
+    EXPECT_EQ(outputs(), std::vector<std::string>{"shot.png"});
+    Image8 image;
+    ASSERT_EQ(read_image(dir / "shot.png", image), "");
+    EXPECT_EQ(image.width, 40);
+    EXPECT_EQ(image.height, 20);
+    std::ifstream png(dir / "shot.png", std::ios::binary);
+    char magic[4] = {};
+    png.read(magic, 4);
+    EXPECT_EQ(std::string(magic + 1, 3), "PNG");
+}
+
+TEST_F(Cli, ThreadCountGivesByteIdenticalFiles) {
+    ASSERT_EQ(run("-q scene.jts --samples 4 --threads 1 -o one.bmp").code, 0);
+    ASSERT_EQ(run("-q scene.jts --samples 4 --threads 2 -o two.bmp").code, 0);
+    std::ifstream a(dir / "one.bmp", std::ios::binary), b(dir / "two.bmp", std::ios::binary);
+    std::stringstream sa, sb;
+    sa << a.rdbuf();
+    sb << b.rdbuf();
+    EXPECT_GT(sa.str().size(), 54u);
+    EXPECT_TRUE(sa.str() == sb.str());
+}
+
+TEST_F(Cli, CameraOptionPicksTheCamera) {
+    ASSERT_EQ(run("-q scene.jts -o front.bmp").code, 0);
+    ASSERT_EQ(run("-q scene.jts -o top.bmp --camera top").code, 0);
+    Image8 front, top;
+    ASSERT_EQ(read_bmp(dir / "front.bmp", front), "");
+    ASSERT_EQ(read_bmp(dir / "top.bmp", top), "");
+    EXPECT_FALSE(front == top);
+    CliRun r = run("scene.jts --camera nowhere");
+    EXPECT_EQ(r.code, 2);
+    EXPECT_NE(r.err.find("\"front\", \"top\""), std::string::npos) << r.err;
+    EXPECT_EQ(outputs(), (std::vector<std::string>{"front.bmp", "top.bmp"}));
+}
+
+TEST_F(Cli, CheckValidatesAndWritesNothing) {
+    CliRun r = run("--check scene.jts");
+    EXPECT_EQ(r.code, 0) << r.err;
+    EXPECT_TRUE(outputs().empty());
+    write("bad.jts", "scene { sphere { radius 2; } }\n");
+    r = run("--check bad.jts");
+    EXPECT_EQ(r.code, 1);
+    EXPECT_NE(r.err.find("bad.jts:1:"), std::string::npos) << r.err;
+    EXPECT_TRUE(outputs().empty());
+}
+
+TEST_F(Cli, SceneErrorsExitOneAndWriteNothing) {
+    write("syntax.jts", "render_settings { width: 10; height: 10 }\n");
+    CliRun r = run("syntax.jts");
+    EXPECT_EQ(r.code, 1);
+    EXPECT_NE(r.err.find("syntax.jts:1:"), std::string::npos) << r.err;
+    EXPECT_NE(r.err.find("error:"), std::string::npos) << r.err;
+
+    std::string no_size = small_scene;
+    no_size.replace(no_size.find("width: 32; height: 18;"), 22, "");
+    write("nosize.jts", no_size);
+    r = run("nosize.jts -o out.bmp");
+    EXPECT_EQ(r.code, 1) << r.err;
+    EXPECT_NE(r.err.find("width"), std::string::npos) << r.err;
+    EXPECT_TRUE(outputs().empty());
+    // --width/--height fill in what the scene left out.
+    EXPECT_EQ(run("-q nosize.jts -o out.bmp --width 8 --height 6").code, 0);
+}
+
+TEST_F(Cli, UsageErrorsExitTwo) {
+    EXPECT_EQ(run("").code, 2);
+    EXPECT_EQ(run("scene.jts --width 0").code, 2);
+    EXPECT_EQ(run("scene.jts --samples 2000").code, 2);
+    EXPECT_EQ(run("scene.jts --frobnicate").code, 2);
+    CliRun r = run("scene.jts --threads lots");
+    EXPECT_EQ(r.code, 2);
+    EXPECT_NE(r.err.find("--help"), std::string::npos) << r.err;
+    EXPECT_TRUE(outputs().empty());
+}
+
+TEST_F(Cli, IoErrorsExitThreeAndWriteNothing) {
+    CliRun r = run("missing.jts");
+    EXPECT_EQ(r.code, 3);
+    EXPECT_NE(r.err.find("missing.jts"), std::string::npos) << r.err;
+    r = run("scene.jts -o no/such/dir/out.bmp");
+    EXPECT_EQ(r.code, 3);
+    EXPECT_NE(r.err.find("no/such/dir/out.bmp"), std::string::npos) << r.err;
+    EXPECT_TRUE(outputs().empty());
+}
+
+TEST_F(Cli, ExistingOutputSurvivesAFailedRender) {
+    write("keep.bmp", "precious");
+    write("bad.jts", "scene { sphere { radius: -1; } }\n");
+    EXPECT_EQ(run("bad.jts -o keep.bmp").code, 1);
+    std::ifstream in(dir / "keep.bmp");
+    std::string text;
+    in >> text;
+    EXPECT_EQ(text, "precious");
+}
+
+TEST_F(Cli, HelpAndVersion) {
+    CliRun r = run("--help");
+    EXPECT_EQ(r.code, 0);
+    std::string help = out() + r.err;
+    EXPECT_NE(help.find("Example"), std::string::npos) << help;
+    EXPECT_NE(help.find("--samples"), std::string::npos) << help;
+    r = run("--version");
+    EXPECT_EQ(r.code, 0);
+    EXPECT_NE((out() + r.err).find("jtracer-cli " JT_VERSION_STRING), std::string::npos);
+}
+
+}  // namespace
+}  // namespace jt

@@ -1,0 +1,161 @@
+// BMP and PNG files, atomic writes and the image diff.
+
+#include "jtracer/atomic_file.hpp"
+#include "jtracer/bmp.hpp"
+#include "jtracer/image_diff.hpp"
+#include "jtracer/image_file.hpp"
+#include "jtracer/png.hpp"
+
+#include <gtest/gtest.h>
+
+#include <filesystem>
+#include <fstream>
+
+namespace jt {
+namespace {
+
+namespace fs = std::filesystem;
+
+// A 3x2 image (row stride 9 bytes, padded to 12) whose every byte differs.
+Image8 sample_image() {
+    Image8 image(3, 2);
+    for (std::size_t i = 0; i < image.rgb.size(); ++i)
+        image.rgb[i] = static_cast<std::uint8_t>(10 + 11 * i);
+    return image;
+}
+
+std::uint32_t le32(const std::vector<std::uint8_t>& b, std::size_t at) {
+    return b[at] | (b[at + 1] << 8) | (b[at + 2] << 16) | (std::uint32_t(b[at + 3]) << 24);
+}
+
+fs::path scratch_dir(const std::string& name) {
+    fs::path dir = fs::temp_directory_path() / ("jtracer_io_test_" + name);
+    fs::remove_all(dir);
+    fs::create_directories(dir);
+    return dir;
+}
+
+TEST(Bmp, HeaderLayoutAndBottomUpPaddedBgrRows) {
+    Image8 image = sample_image();
+    std::vector<std::uint8_t> b = encode_bmp(image);
+    ASSERT_EQ(b.size(), 54u + 2 * 12);
+    EXPECT_EQ(b[0], 'B');
+    EXPECT_EQ(b[1], 'M');
+    EXPECT_EQ(le32(b, 2), b.size());
+    EXPECT_EQ(le32(b, 10), 54u);  // pixel data offset
+    EXPECT_EQ(le32(b, 14), 40u);  // BITMAPINFOHEADER
+    EXPECT_EQ(le32(b, 18), 3u);
+    EXPECT_EQ(le32(b, 22), 2u);  // positive height: bottom-up
+    EXPECT_EQ(b[26] | (b[27] << 8), 1);
+    EXPECT_EQ(b[28] | (b[29] << 8), 24);
+    EXPECT_EQ(le32(b, 30), 0u);  // BI_RGB
+    EXPECT_EQ(le32(b, 34), 24u);
+    // The first stored row is y = 0, in BGR order, then 3 zero bytes of padding.
+    const std::uint8_t* p0 = image.pixel(0, 0);
+    EXPECT_EQ(b[54], p0[2]);
+    EXPECT_EQ(b[55], p0[1]);
+    EXPECT_EQ(b[56], p0[0]);
+    EXPECT_EQ(b[54 + 9], 0);
+    EXPECT_EQ(b[54 + 10], 0);
+    EXPECT_EQ(b[54 + 11], 0);
+    const std::uint8_t* p1 = image.pixel(2, 1);
+    EXPECT_EQ(b[54 + 12 + 6], p1[2]);
+    EXPECT_EQ(b[54 + 12 + 8], p1[0]);
+}
+
+TEST(Bmp, RoundTripAndRejectsBadFiles) {
+    Image8 image = sample_image();
+    std::vector<std::uint8_t> bytes = encode_bmp(image);
+    Image8 back;
+    EXPECT_EQ(decode_bmp(bytes, back), "");
+    EXPECT_TRUE(back == image);
+
+    std::vector<std::uint8_t> truncated(bytes.begin(), bytes.end() - 5);
+    EXPECT_NE(decode_bmp(truncated, back).find("truncated"), std::string::npos);
+    std::vector<std::uint8_t> not_bmp = bytes;
+    not_bmp[0] = 'X';
+    EXPECT_NE(decode_bmp(not_bmp, back), "");
+    std::vector<std::uint8_t> eight_bit = bytes;
+    eight_bit[28] = 8;
+    EXPECT_NE(decode_bmp(eight_bit, back).find("24 bits"), std::string::npos);
+}
+
+TEST(Png, RoundTripKeepsRowOrder) {
+    Image8 image = sample_image();
+    std::vector<std::uint8_t> bytes = encode_png(image);
+    ASSERT_GT(bytes.size(), 8u);
+    EXPECT_EQ(bytes[1], 'P');
+    Image8 back;
+    EXPECT_EQ(decode_png(bytes, back), "");
+    EXPECT_TRUE(back == image);
+}
+
+TEST(ImageFile, FormatFollowsTheExtension) {
+    EXPECT_EQ(format_from_extension("a/shot.png"), ImageFormat::png);
+    EXPECT_EQ(format_from_extension("SHOT.PNG"), ImageFormat::png);
+    EXPECT_EQ(format_from_extension("shot.bmp"), ImageFormat::bmp);
+    EXPECT_EQ(format_from_extension("shot.png.bak"), ImageFormat::bmp);
+    EXPECT_EQ(format_from_extension("shot"), ImageFormat::bmp);
+
+    fs::path dir = scratch_dir("format");
+    Image8 image = sample_image();
+    for (const char* name : {"x.bmp", "x.png"}) {
+        ASSERT_EQ(write_image(dir / name, image, format_from_extension(name)), "");
+        Image8 back;
+        EXPECT_EQ(read_image(dir / name, back), "");
+        EXPECT_TRUE(back == image) << name;
+    }
+    std::ifstream png(dir / "x.png", std::ios::binary);
+    char magic[4] = {};
+    png.read(magic, 4);
+    EXPECT_EQ(std::string(magic + 1, 3), "PNG");
+}
+
+TEST(AtomicFile, ReplacesWholeAndLeavesNoTemporary) {
+    fs::path dir = scratch_dir("atomic");
+    fs::path target = dir / "out.bmp";
+    { std::ofstream(target) << "old contents"; }
+    ASSERT_EQ(write_bmp(target, sample_image()), "");
+    Image8 back;
+    EXPECT_EQ(read_bmp(target, back), "");
+    EXPECT_TRUE(back == sample_image());
+    int entries = 0;
+    for (auto& e : fs::directory_iterator(dir)) {
+        (void)e;
+        ++entries;
+    }
+    EXPECT_EQ(entries, 1) << "no temporary file left beside the target";
+}
+
+TEST(AtomicFile, FailureNamesTheFileAndWritesNothing) {
+    fs::path dir = scratch_dir("atomic_fail");
+    std::string error = write_bmp(dir / "missing" / "out.bmp", sample_image());
+    EXPECT_NE(error.find("missing/out.bmp"), std::string::npos) << error;
+    EXPECT_NE(error.find("No such file"), std::string::npos) << error;
+    EXPECT_FALSE(fs::exists(dir / "missing"));
+    // A directory in the way is refused, not replaced.
+    fs::create_directory(dir / "taken.bmp");
+    EXPECT_NE(write_bmp(dir / "taken.bmp", sample_image()).find("directory"), std::string::npos);
+    EXPECT_TRUE(fs::is_directory(dir / "taken.bmp"));
+}
+
+TEST(ImageDiff, CountsPixelsOverTheThreshold) {
+    Image8 a = sample_image();
+    Image8 b = a;
+    EXPECT_EQ(diff_images(a, b).max_channel_difference, 0);
+    EXPECT_EQ(diff_images(a, b).pixels_over, 0u);
+    b.pixel(1, 1)[2] = static_cast<std::uint8_t>(b.pixel(1, 1)[2] + 3);
+    b.pixel(2, 0)[0] = static_cast<std::uint8_t>(b.pixel(2, 0)[0] - 1);
+    ImageDiff d = diff_images(a, b, 1);
+    EXPECT_TRUE(d.same_size);
+    EXPECT_EQ(d.max_channel_difference, 3);
+    EXPECT_EQ(d.pixels_over, 1u);
+    EXPECT_NEAR(d.percent_over, 100.0 / 6.0, 1e-12);
+    EXPECT_EQ(d.image.width, 3);
+    EXPECT_EQ(d.image.pixel(1, 1)[2], 64 + 3 * 8) << "over: the difference, amplified";
+    EXPECT_EQ(diff_images(a, b, 0).pixels_over, 2u);
+    EXPECT_FALSE(diff_images(a, Image8(2, 2)).same_size);
+}
+
+}  // namespace
+}  // namespace jt

@@ -1,0 +1,94 @@
+#pragma once
+// Small scenes built in code, for tests whose expected pixels are worked out by
+// hand from SEMANTICS.md.
+
+#include "jtracer/image.hpp"
+#include "jtracer/render_job.hpp"
+#include "jtracer/scene.hpp"
+
+namespace jt::test {
+
+inline Camera camera_at(const Vec3& position, const Vec3& look_at, const Vec3& up = {0, 1, 0},
+                        double fov = 45.0, double aspect = 1.0) {
+    Camera c;
+    c.position = position;
+    c.look_at = look_at;
+    c.up = up;
+    c.fov = fov;
+    c.aspect = aspect;
+    return c;
+}
+
+inline Scene scene_with_camera(const Camera& camera, int width = 1, int height = 1) {
+    Scene s;
+    s.settings.width = width;
+    s.settings.height = height;
+    s.cameras.push_back(camera);
+    return s;
+}
+
+inline Primitive sphere(const Vec3& center, double radius, const Material& m = {}) {
+    return Primitive{Sphere{center, radius}, m, {}};
+}
+
+inline Primitive plane(const Vec3& normal, double distance, const Material& m = {}) {
+    return Primitive{Plane{normal, distance}, m, {}};
+}
+
+inline Primitive cylinder(double radius, double height, const Material& m = {}) {
+    return Primitive{Cylinder{radius, height}, m, {}};
+}
+
+inline TransformOp translate(const Vec3& v) {
+    return {TransformKind::translate, v, 0.0};
+}
+inline TransformOp scale(const Vec3& v) {
+    return {TransformKind::scale, v, 0.0};
+}
+inline TransformOp rotate(TransformKind axis, double degrees) {
+    return {axis, Vec3(0.0), degrees};
+}
+
+inline Material matte(const Colour& pigment, const Colour& diffuse = Colour(1.0)) {
+    Material m;
+    m.pigment = pigment;
+    m.diffuse = diffuse;
+    return m;
+}
+
+// Material that shows pigment * ambient_light exactly, whatever the lights.
+inline Material glowing(const Colour& pigment) {
+    Material m;
+    m.pigment = pigment;
+    m.ambient = Colour(1.0);
+    return m;
+}
+
+inline Image8 render(const Scene& scene, int samples = 1, int threads = 0) {
+    RenderOptions o;
+    o.width = scene.settings.width;
+    o.height = scene.settings.height;
+    o.samples = samples;
+    o.threads = threads;
+    return render_image(prepare_scene(scene), o);
+}
+
+struct Rgb {
+    int r, g, b;
+    bool operator==(const Rgb&) const = default;
+};
+
+inline Rgb at(const Image8& image, int x, int y) {
+    const std::uint8_t* p = image.pixel(x, y);
+    return {p[0], p[1], p[2]};
+}
+
+inline Rgb expected(const Colour& c) {
+    return {quantize_channel(c.x), quantize_channel(c.y), quantize_channel(c.z)};
+}
+
+inline std::ostream& operator<<(std::ostream& os, const Rgb& c) {
+    return os << "(" << c.r << ", " << c.g << ", " << c.b << ")";
+}
+
+}  // namespace jt::test
