@@ -23,7 +23,9 @@ void camera_panel(AppState& state) {
         if (ImGui::Selectable("free camera", state.free_camera_active)) use_free_camera(state);
         ImGui::EndCombo();
     }
-    ImGui::TextDisabled("Drag on the image: left orbits, right/middle pans, wheel dollies");
+    ImGui::PushStyleColor(ImGuiCol_Text, ImGui::GetStyleColorVec4(ImGuiCol_TextDisabled));
+    ImGui::TextWrapped("Drag on the image: left orbits, right/middle pans, wheel dollies.");
+    ImGui::PopStyleColor();
     if (ImGui::Button("Reset to scene camera")) {
         reset_free_camera(state);
         state.free_camera_active = false;
