@@ -6,11 +6,13 @@
 #include "jtracer/parser.hpp"
 #include "jtracer/render_job.hpp"
 #include "keys.hpp"
+#include "viewer_frame.hpp"
 
 #include <gtest/gtest.h>
 
 #include <fstream>
 #include <sstream>
+#include <thread>
 
 #include <unistd.h>
 
@@ -231,6 +233,30 @@ TEST_F(ViewerGl, PauseStopsAndResumeRestarts) {
     viewer.press_key(state, keys::space);
     EXPECT_FALSE(state.paused);
     EXPECT_TRUE(viewer.run_until_complete(state, kTimeout));
+}
+
+TEST_F(ViewerGl, AnEditCancelsTheRunningRenderAndRestartsAtOnce) {
+    open_scene(state, fs::path(JT_SOURCE_DIR) / "scenes" / "showcase.jts");
+    edit_scene(state, [](Scene& s) { s.settings.samples = 1024; });  // minutes of work
+    viewer.frame(state);
+    const auto jobs = state.renderer.jobs_started();
+    std::this_thread::sleep_for(std::chrono::milliseconds(100));
+    const auto before = std::chrono::steady_clock::now();
+    edit_scene(state, [](Scene& s) { s.lights[0].intensity = Colour(0.5, 0.5, 0.5); });
+    viewer.frame(state);
+    const auto latency = std::chrono::steady_clock::now() - before;
+    EXPECT_EQ(state.renderer.jobs_started(), jobs + 1);
+    EXPECT_LT(latency, std::chrono::milliseconds(500)) << "cancel + restart took too long";
+    EXPECT_FALSE(render_complete(state));
+}
+
+TEST_F(ViewerGl, TitleShowsTheFileAndTheProgress) {
+    open_scene(state, kScene);
+    ASSERT_TRUE(viewer.run_until_complete(state, kTimeout));
+    EXPECT_EQ(window_title(state).rfind("JTracer - two_cameras.jts - done", 0), 0u)
+        << window_title(state);
+    edit_scene(state, [](Scene& s) { s.settings.recurse_depth = 3; });
+    EXPECT_NE(window_title(state).find("two_cameras.jts *"), std::string::npos);
 }
 
 TEST_F(ViewerGl, EscapeAsksToQuit) {

@@ -15,6 +15,7 @@
 #include <imgui_impl_glfw.h>
 #include <CLI/CLI.hpp>
 
+#include <algorithm>
 #include <cstdio>
 #include <filesystem>
 #include <iostream>
@@ -108,6 +109,11 @@ int run_window(const Arguments& args) {
         const auto started = std::chrono::steady_clock::now();
         std::string title;
         int frames_after_done = 0;
+        // UI responsiveness while the render runs: frames drawn and the slowest one.
+        int busy_frames = 0;
+        double busy_seconds = 0.0, slowest_frame = 0.0;
+        auto frame_start = std::chrono::steady_clock::now();
+        int frames_drawn = 0;
         while (!window.should_close() && !app.quit) {
             // Idle when the render is done: wake for input or to poll the file.
             if (render_complete(app) && !args.exit_when_done)
@@ -127,6 +133,15 @@ int run_window(const Arguments& args) {
             layer.end_frame(fw, fh);
             window.swap_buffers();
             if (const std::string t = window_title(app); t != title) window.set_title(title = t);
+            const auto now = std::chrono::steady_clock::now();
+            // Frame 1 compiles shaders and uploads the font: startup, not responsiveness.
+            if (!render_complete(app) && app.started && ++frames_drawn > 2) {
+                const double seconds = std::chrono::duration<double>(now - frame_start).count();
+                ++busy_frames;
+                busy_seconds += seconds;
+                slowest_frame = std::max(slowest_frame, seconds);
+            }
+            frame_start = now;
             if (args.exit_when_done) {
                 if (render_complete(app) && ++frames_after_done > 2) break;
                 if (!app.started && !app.render_note.empty()) {
@@ -142,8 +157,14 @@ int run_window(const Arguments& args) {
                 }
             }
         }
-        if (args.exit_when_done && exit_code == 0)
+        if (args.exit_when_done && exit_code == 0) {
             std::cerr << "jtracer-view: " << window_title(app) << "\n";
+            if (busy_frames > 0)
+                std::fprintf(stderr,
+                             "jtracer-view: UI while rendering: %d frames, %.0f frames/s, "
+                             "slowest %.1f ms\n",
+                             busy_frames, busy_frames / busy_seconds, slowest_frame * 1000.0);
+        }
     }
     ImGui_ImplGlfw_Shutdown();
     return exit_code;
