@@ -46,30 +46,6 @@ bool is_number_char(char c) {
     return has_class(c, number_part);
 }
 
-// sign? (digits ('.' digits?)? | '.' digits) (('e'|'E') sign? digits)?
-bool is_well_formed_number(std::string_view s) {
-    std::size_t i = 0;
-    auto digits = [&] {
-        std::size_t start = i;
-        while (i < s.size() && is_digit(s[i])) ++i;
-        return i - start;
-    };
-    if (i < s.size() && (s[i] == '+' || s[i] == '-')) ++i;
-    std::size_t whole = digits();
-    std::size_t fraction = 0;
-    if (i < s.size() && s[i] == '.') {
-        ++i;
-        fraction = digits();
-    }
-    if (whole + fraction == 0) return false;
-    if (i < s.size() && (s[i] == 'e' || s[i] == 'E')) {
-        ++i;
-        if (i < s.size() && (s[i] == '+' || s[i] == '-')) ++i;
-        if (digits() == 0) return false;
-    }
-    return i == s.size();
-}
-
 std::string byte_name(unsigned char c) {
     char buf[8];
     std::snprintf(buf, sizeof buf, "0x%02X", c);
@@ -149,61 +125,77 @@ Token Lexer::next() {
 
 namespace {
 
-// Clinger's fast path: a decimal with at most 15 significant digits and a small
-// power of ten is exactly m / 10^k or m * 10^k in one correctly rounded
-// operation, the same double std::from_chars gives. Returns false otherwise.
-bool fast_decimal(std::string_view s, double& out) {
+enum class NumberScan { malformed, exact, needs_library };
+
+// One pass over a number-like run: checks the grammar
+//   sign? (digits ('.' digits?)? | '.' digits) (('e'|'E') sign? digits)?
+// and computes the value on Clinger's fast path: at most 15 significant digits
+// and a power of ten up to 22 make m / 10^k or m * 10^k one correctly rounded
+// operation, the same double std::from_chars gives. Other numbers need the library.
+NumberScan scan_number(std::string_view s, double& out) {
     static constexpr double powers[] = {1e0,  1e1,  1e2,  1e3,  1e4,  1e5,  1e6,  1e7,
                                         1e8,  1e9,  1e10, 1e11, 1e12, 1e13, 1e14, 1e15,
                                         1e16, 1e17, 1e18, 1e19, 1e20, 1e21, 1e22};
+    const std::size_t n = s.size();
     std::size_t i = 0;
     bool negative = false;
-    if (s[i] == '-' || s[i] == '+') negative = s[i++] == '-';
+    if (s[0] == '+' || s[0] == '-') negative = s[i++] == '-';
     std::uint64_t mantissa = 0;
-    int digits = 0, scale = 0;
-    for (; i < s.size() && is_digit(s[i]); ++i) {
-        if (mantissa == 0 && s[i] == '0') continue;  // leading zeros are not significant
-        mantissa = mantissa * 10 + static_cast<unsigned>(s[i] - '0');
-        ++digits;
-    }
-    if (i < s.size() && s[i] == '.') {
-        for (++i; i < s.size() && is_digit(s[i]); ++i) {
-            --scale;
-            if (mantissa == 0 && s[i] == '0') continue;
+    int significant = 0, scale = 0;
+    std::size_t digits = 0;
+    for (; i < n && is_digit(s[i]); ++i, ++digits) {
+        if (mantissa != 0 || s[i] != '0') {  // leading zeros are not significant
             mantissa = mantissa * 10 + static_cast<unsigned>(s[i] - '0');
-            ++digits;
+            ++significant;
         }
     }
-    if (i < s.size()) {  // an exponent
+    if (i < n && s[i] == '.') {
+        for (++i; i < n && is_digit(s[i]); ++i, ++digits) {
+            --scale;
+            if (mantissa != 0 || s[i] != '0') {
+                mantissa = mantissa * 10 + static_cast<unsigned>(s[i] - '0');
+                ++significant;
+            }
+        }
+    }
+    if (digits == 0) return NumberScan::malformed;
+    if (i < n && (s[i] == 'e' || s[i] == 'E')) {
         ++i;
         bool negative_exponent = false;
-        if (s[i] == '-' || s[i] == '+') negative_exponent = s[i++] == '-';
+        if (i < n && (s[i] == '+' || s[i] == '-')) negative_exponent = s[i++] == '-';
+        const std::size_t first = i;
         int exponent = 0;
-        for (; i < s.size(); ++i) {
-            if (exponent > 1000) return false;
-            exponent = exponent * 10 + (s[i] - '0');
+        for (; i < n && is_digit(s[i]); ++i) {
+            if (exponent < 100000) exponent = exponent * 10 + (s[i] - '0');
         }
+        if (i == first) return NumberScan::malformed;
         scale += negative_exponent ? -exponent : exponent;
     }
-    if (digits > 15 || scale < -22 || scale > 22) return false;
+    if (i != n) return NumberScan::malformed;
+    if (significant > 15 || scale < -22 || scale > 22) return NumberScan::needs_library;
     double value = static_cast<double>(mantissa);
     value = scale < 0 ? value / powers[-scale] : value * powers[scale];
     out = negative ? -value : value;
-    return true;
+    return NumberScan::exact;
 }
 
 }  // namespace
 
 Token Lexer::lex_number(std::size_t start) {
-    while (at_ < text_.size() && is_number_char(text_[at_])) ++at_;
+    const std::size_t n = text_.size();
+    while (at_ < n && is_number_char(text_[at_])) ++at_;
     std::string_view run = text_.substr(start, at_ - start);
     Token token{TokenKind::number, run, start, run.size(), pos_of(start), 0.0};
-    if (!is_well_formed_number(run)) {
-        sink_.error(token.pos, "malformed number '" + std::string(run.substr(0, 40)) + "'");
-        token.kind = TokenKind::bad_value;
-        return token;
+    switch (scan_number(run, token.number)) {
+        case NumberScan::exact:
+            return token;
+        case NumberScan::malformed:
+            sink_.error(token.pos, "malformed number '" + std::string(run.substr(0, 40)) + "'");
+            token.kind = TokenKind::bad_value;
+            return token;
+        case NumberScan::needs_library:
+            break;
     }
-    if (fast_decimal(run, token.number)) return token;
     std::string_view digits = run[0] == '+' ? run.substr(1) : run;
     auto [end, ec] = std::from_chars(digits.data(), digits.data() + digits.size(), token.number);
     if (ec != std::errc() || end != digits.data() + digits.size() || !std::isfinite(token.number)) {
