@@ -9,6 +9,7 @@
 #include "viewer_frame.hpp"
 
 #include <gtest/gtest.h>
+#include <glm/geometric.hpp>
 
 #include <fstream>
 #include <sstream>
@@ -257,6 +258,61 @@ TEST_F(ViewerGl, TitleShowsTheFileAndTheProgress) {
         << window_title(state);
     edit_scene(state, [](Scene& s) { s.settings.recurse_depth = 3; });
     EXPECT_NE(window_title(state).find("two_cameras.jts *"), std::string::npos);
+}
+
+TEST_F(ViewerGl, MouseOnTheImageDrivesTheFreeCamera) {
+    state.show_ui = false;  // the image fills the window: 320x240 for a 64x48 image
+    open_scene(state, kScene);
+    ASSERT_TRUE(viewer.run_until_complete(state, kTimeout));
+    const Image8 scene_view = state.display;
+    const Camera scene_camera = state.doc.scene.cameras[0];
+
+    viewer.drag(state, 0, 160, 120, 220, 120);  // left: orbit
+    ASSERT_TRUE(state.free_camera_active);
+    const FreeCamera orbited = state.free_camera;
+    EXPECT_NE(orbited.position, scene_camera.position);
+    EXPECT_EQ(orbited.look_at, scene_camera.look_at);
+    ASSERT_TRUE(viewer.run_until_complete(state, kTimeout));
+    EXPECT_NE(state.display, scene_view);
+
+    viewer.drag(state, 1, 160, 120, 160, 60);  // right: pan
+    EXPECT_NE(state.free_camera.look_at, orbited.look_at);
+    const double distance = glm::length(state.free_camera.position - state.free_camera.look_at);
+    viewer.scroll(state, 160, 120, 2);  // wheel: dolly closer
+    EXPECT_LT(glm::length(state.free_camera.position - state.free_camera.look_at), distance);
+    EXPECT_EQ(state.doc.scene.cameras[0], scene_camera) << "the scene's camera is untouched";
+
+    viewer.press_key(state, keys::letter('C'));  // back to a scene camera
+    EXPECT_FALSE(state.free_camera_active);
+    ASSERT_TRUE(viewer.run_until_complete(state, kTimeout));
+    EXPECT_EQ(state.display, scene_view);
+}
+
+TEST_F(ViewerGl, ResizingTheRenderResizesTheTexture) {
+    open_scene(state, kScene);
+    ASSERT_TRUE(viewer.run_until_complete(state, kTimeout));
+    edit_scene(state, [](Scene& s) {
+        s.settings.width = 40;
+        s.settings.height = 30;
+    });
+    ASSERT_TRUE(viewer.run_until_complete(state, kTimeout));
+    EXPECT_EQ(state.display.width, 40);
+    EXPECT_EQ(state.presenter.width(), 40);
+    EXPECT_EQ(state.presenter.read_texture(), core_render(state.doc.scene, 0));
+}
+
+TEST_F(ViewerGl, ShortcutsReloadAndSaveTheImage) {
+    const fs::path file = scene_copy("keys");
+    open_scene(state, file);
+    ASSERT_TRUE(viewer.run_until_complete(state, kTimeout));
+    state.save_image_path = (file.parent_path() / "key.png").string();
+    viewer.press_key(state, keys::letter('S'));
+    EXPECT_TRUE(fs::exists(file.parent_path() / "key.png")) << state.message;
+
+    edit_scene(state, [](Scene& s) { s.settings.recurse_depth = 0; });
+    viewer.press_key(state, keys::letter('R'));  // reload drops unsaved edits
+    EXPECT_EQ(state.doc.scene.settings.recurse_depth, 2);
+    EXPECT_FALSE(state.undo.can_undo());
 }
 
 TEST_F(ViewerGl, EscapeAsksToQuit) {

@@ -23,7 +23,7 @@ struct ViewerConfig {
     std::filesystem::path recent_files;  // empty: remember nothing between runs
     std::chrono::milliseconds watch_interval{200};
     int render_threads = 0;     // 0: every core
-    int max_pixels = 64 << 20;  // larger images are refused, not allocated
+    int max_pixels = 4096 * 4096;  // larger images are refused, not allocated
 };
 
 // What the current render was started from; a new render starts when this changes.

@@ -37,6 +37,30 @@ void HeadlessViewer::press_key(AppState& state, int key, bool ctrl, bool shift) 
     frame(state);
 }
 
+void HeadlessViewer::drag(AppState& state, int button, float x0, float y0, float x1, float y1) {
+    ImGuiIO& io = ImGui::GetIO();
+    io.MousePos = ImVec2(x0, y0);
+    frame(state);
+    io.MouseDown[button] = true;
+    constexpr int steps = 4;
+    for (int i = 1; i <= steps; ++i) {
+        const float t = static_cast<float>(i) / steps;
+        io.MousePos = ImVec2(x0 + (x1 - x0) * t, y0 + (y1 - y0) * t);
+        frame(state);
+    }
+    io.MouseDown[button] = false;
+    frame(state);
+}
+
+void HeadlessViewer::scroll(AppState& state, float x, float y, float steps) {
+    ImGuiIO& io = ImGui::GetIO();
+    io.MousePos = ImVec2(x, y);
+    io.MouseWheel = steps;
+    frame(state);
+    io.MouseWheel = 0.0f;
+    frame(state);
+}
+
 bool HeadlessViewer::run_until_complete(AppState& state, std::chrono::milliseconds timeout,
                                         int settle_frames) {
     const auto deadline = std::chrono::steady_clock::now() + timeout;

@@ -21,6 +21,11 @@ class HeadlessViewer {
     void frame(AppState& state);
     // Holds `key` down for one frame (with the modifiers), then releases it.
     void press_key(AppState& state, int key, bool ctrl = false, bool shift = false);
+    // Drags the mouse with `button` (0 left, 1 right, 2 middle) from one point
+    // to another (window units, y down) over a few frames, as a user would.
+    void drag(AppState& state, int button, float x0, float y0, float x1, float y1);
+    // Turns the wheel by `steps` with the mouse at (x, y).
+    void scroll(AppState& state, float x, float y, float steps);
     // Runs frames until the render of the current scene is complete and shown,
     // then `settle_frames` more so the UI shows the final state. False on timeout
     // or when there is nothing to render.
