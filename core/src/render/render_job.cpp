@@ -76,7 +76,8 @@ struct RenderJob::State {
     mutable std::mutex progress_mutex;  // guards the fields below
     std::size_t next_pass = 0;
     int samples_done = 0;
-    double seconds = 0.0;
+    double seconds = 0.0;  // in finished or cancelled passes
+    std::optional<std::chrono::steady_clock::time_point> pass_started;  // while one runs
     bool cancelled = false;
 
     void render_tile(const RenderPass& pass, const PixelRect& tile);
@@ -178,8 +179,8 @@ bool RenderJob::run_pass() {
         std::lock_guard lock(s.progress_mutex);
         if (s.cancelled || s.next_pass >= s.passes.size()) return false;
         index = s.next_pass;
+        s.pass_started = std::chrono::steady_clock::now();
     }
-    const auto start = std::chrono::steady_clock::now();
     const RenderPass& pass = s.passes[index];
     const std::vector<PixelRect> tiles = cut_tiles(s.region, pass.block, tile_blocks);
     const std::uint64_t work_before = s.work_done.load();
@@ -205,10 +206,10 @@ bool RenderJob::run_pass() {
             },
             tbb::simple_partitioner());
     });
-    const double elapsed =
-        std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
     std::lock_guard lock(s.progress_mutex);
-    s.seconds += elapsed;
+    s.seconds +=
+        std::chrono::duration<double>(std::chrono::steady_clock::now() - *s.pass_started).count();
+    s.pass_started.reset();
     if (s.cancel_requested.load()) {
         s.cancelled = true;
         return false;
@@ -245,6 +246,10 @@ RenderProgress RenderJob::progress() const {
     p.samples_done = s.samples_done;
     p.rays = s.rays.load();
     p.seconds = s.seconds;
+    if (s.pass_started)
+        p.seconds +=
+            std::chrono::duration<double>(std::chrono::steady_clock::now() - *s.pass_started)
+                .count();
     p.cancelled = s.cancelled || s.cancel_requested.load();
     return p;
 }
