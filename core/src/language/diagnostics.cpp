@@ -40,16 +40,24 @@ std::string format_diagnostic(const Diagnostic& d, std::string_view filename,
     if (d.pos.line <= 0) return out;
     std::string_view text = line_text(source, d.pos.line);
     if (text.empty() && d.pos.column <= 1) return out;
-    // Quote the line with control and non-ASCII bytes shown as '?', so the caret lines up.
-    std::string quoted;
-    for (char c : text) {
+    // A long line is quoted as a window around the column, marked with "...".
+    constexpr std::size_t max_quote = 200, before = 80;
+    const std::size_t column = static_cast<std::size_t>(std::max(d.pos.column, 1)) - 1;
+    std::size_t begin = 0, end = text.size();
+    if (text.size() > max_quote) {
+        begin = column > before ? std::min(column - before, text.size() - max_quote) : 0;
+        end = begin + max_quote;
+    }
+    // Control and non-ASCII bytes show as '?' and tabs as spaces, so the caret lines up.
+    std::string quoted = begin > 0 ? "..." : "";
+    for (char c : text.substr(begin, end - begin)) {
         auto u = static_cast<unsigned char>(c);
         quoted += (c == '\t') ? ' ' : (u < 0x20 || u >= 0x7f) ? '?' : c;
     }
-    if (quoted.size() > 200) quoted.resize(200);
+    if (end < text.size()) quoted += "...";
     out += "    " + quoted + '\n';
-    int caret = std::clamp(d.pos.column, 1, static_cast<int>(quoted.size()) + 1);
-    out += "    " + std::string(caret - 1, ' ') + "^\n";
+    std::size_t caret = std::min(column, end) - begin + (begin > 0 ? 3 : 0);
+    out += "    " + std::string(caret, ' ') + "^\n";
     return out;
 }
 
