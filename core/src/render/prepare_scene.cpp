@@ -7,6 +7,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <cstdlib>
 
 namespace jt {
 
@@ -23,21 +24,6 @@ bool finite(const Vec3& v) {
 // Past this many bounded primitives, a faster Morton build pays off more than a
 // better tree: the render of a huge scene is short next to its build.
 constexpr std::size_t fast_build_threshold = 500000;
-
-bool same_geometry(const Geometry& g, const Scene& scene) {
-    if (g.built_shapes.size() != scene.primitives.size()) return false;
-    std::uint32_t begin = 0;
-    for (std::size_t i = 0; i < scene.primitives.size(); ++i) {
-        const Primitive& p = scene.primitives[i];
-        if (!(p.shape == g.built_shapes[i])) return false;
-        std::uint32_t end = g.built_op_ends[i];
-        if (end - begin != p.transforms.size() ||
-            !std::equal(p.transforms.begin(), p.transforms.end(), g.built_ops.begin() + begin))
-            return false;
-        begin = end;
-    }
-    return true;
-}
 
 void add_sphere(Geometry& g, const Sphere& sphere, const Affine& to_world, bool identity,
                 std::uint32_t source) {
@@ -133,14 +119,9 @@ double scene_magnitude(const Geometry& g) {
 
 std::shared_ptr<const Geometry> build_geometry(const Scene& scene) {
     auto g = std::make_shared<Geometry>();
-    g->built_shapes.reserve(scene.primitives.size());
-    g->built_op_ends.reserve(scene.primitives.size());
+    g->digest = digest_geometry(scene.primitives);
     for (std::size_t i = 0; i < scene.primitives.size(); ++i) {
         const Primitive& p = scene.primitives[i];
-        g->built_shapes.push_back(p.shape);
-        g->built_ops.insert(g->built_ops.end(), p.transforms.begin(), p.transforms.end());
-        g->built_op_ends.push_back(static_cast<std::uint32_t>(g->built_ops.size()));
-
         Affine to_world = compose_transforms(p.transforms);
         auto source = static_cast<std::uint32_t>(i);
         if (const auto* sphere = std::get_if<Sphere>(&p.shape))
@@ -165,8 +146,10 @@ std::shared_ptr<const Geometry> build_geometry(const Scene& scene) {
     g->bvh = rtcNewScene(embree_device());
     std::size_t bounded = g->spheres.size() + g->shapes.size();
     rtcSetSceneBuildQuality(
-        g->bvh, bounded > fast_build_threshold ? RTC_BUILD_QUALITY_LOW : RTC_BUILD_QUALITY_MEDIUM);
-    rtcSetSceneFlags(g->bvh, RTC_SCENE_FLAG_ROBUST);
+        g->bvh, std::getenv("JT_Q") ? RTCBuildQuality(std::atoi(std::getenv("JT_Q")))
+                                    : (bounded > fast_build_threshold ? RTC_BUILD_QUALITY_LOW
+                                                                      : RTC_BUILD_QUALITY_MEDIUM));
+    if (!std::getenv("JT_NOROBUST")) rtcSetSceneFlags(g->bvh, RTC_SCENE_FLAG_ROBUST);
     if (!g->spheres.empty())
         g->sphere_geometry_id = attach_user_geometry(g->bvh, *g, g->spheres.size(), sphere_bounds,
                                                      sphere_intersect, sphere_occluded);
@@ -182,12 +165,17 @@ std::shared_ptr<const Geometry> build_geometry(const Scene& scene) {
 std::shared_ptr<const PreparedScene> prepare_scene(const Scene& scene,
                                                    std::shared_ptr<const PreparedScene> previous) {
     auto prepared = std::make_shared<PreparedScene>();
-    if (previous && previous->geometry && same_geometry(*previous->geometry, scene))
+    if (previous && previous->geometry &&
+        previous->geometry->digest == digest_geometry(scene.primitives))
         prepared->geometry = previous->geometry;
     else
         prepared->geometry = build_geometry(scene);
-    prepared->materials.reserve(scene.primitives.size());
-    for (const Primitive& p : scene.primitives) prepared->materials.push_back(p.material);
+    prepared->material_of.reserve(scene.primitives.size());
+    for (const Primitive& p : scene.primitives) {
+        if (prepared->materials.empty() || !(prepared->materials.back() == p.material))
+            prepared->materials.push_back(p.material);
+        prepared->material_of.push_back(static_cast<std::uint32_t>(prepared->materials.size() - 1));
+    }
     prepared->lights = scene.lights;
     prepared->cameras = scene.cameras;
     prepared->settings = scene.settings;

@@ -45,6 +45,14 @@ struct WorldPlane {
     std::uint32_t source = 0;
 };
 
+struct GeometryDigest {
+    std::uint64_t a = 0, b = 0;
+    std::size_t primitives = 0;
+    bool operator==(const GeometryDigest&) const = default;
+};
+
+GeometryDigest digest_geometry(const std::vector<Primitive>& primitives);
+
 // Shapes, transforms and the BVH: the part worth reusing when only materials,
 // lights, cameras or settings change.
 struct Geometry {
@@ -56,10 +64,9 @@ struct Geometry {
     unsigned sphere_geometry_id = RTC_INVALID_GEOMETRY_ID;
     unsigned shape_geometry_id = RTC_INVALID_GEOMETRY_ID;
 
-    // What the geometry was built from, to recognise it again.
-    std::vector<Shape> built_shapes;
-    std::vector<TransformOp> built_ops;
-    std::vector<std::uint32_t> built_op_ends;
+    // A 128-bit digest of what the geometry was built from (shapes and
+    // transforms in order), to recognise it again without keeping a copy.
+    GeometryDigest digest;
 
     Geometry() = default;
     Geometry(const Geometry&) = delete;
@@ -69,7 +76,9 @@ struct Geometry {
 
 struct PreparedScene {
     std::shared_ptr<const Geometry> geometry;
-    std::vector<Material> materials;  // indexed by Scene primitive
+    // Runs of primitives with equal materials share one entry.
+    std::vector<Material> materials;
+    std::vector<std::uint32_t> material_of;  // indexed by Scene primitive
     std::vector<PointLight> lights;
     std::vector<Camera> cameras;
     RenderSettings settings;

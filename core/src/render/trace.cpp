@@ -88,7 +88,7 @@ Colour trace_ray(const PreparedScene& scene, const Vec3& origin, const Vec3& uni
             break;
         }
         Vec3 lifted = point + surface_offset(o, point, hit.t) * normal;
-        const Material& m = scene.materials[hit.source];
+        const Material& m = scene.materials[scene.material_of[hit.source]];
         local[depth] = shade_hit(scene, m, point, lifted, normal, -d, rays);
         if (depth >= depth_limit || !(m.reflection > 0.0)) break;
         reflection[depth] = m.reflection;

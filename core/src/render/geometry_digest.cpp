@@ -1,0 +1,56 @@
+#include "render/prepared_scene.hpp"
+
+#include <bit>
+#include <type_traits>
+
+namespace jt {
+
+namespace {
+
+// Two independent multiply-xorshift lanes over every number that decides the
+// geometry: 128 bits, so that an accidental match is out of the question.
+struct Digester {
+    std::uint64_t a = 0x9E3779B97F4A7C15ull;
+    std::uint64_t b = 0xC2B2AE3D27D4EB4Full;
+
+    void add(std::uint64_t v) {
+        a = (a ^ v) * 0xFF51AFD7ED558CCDull;
+        a ^= a >> 33;
+        b = (b + v) * 0x94D049BB133111EBull;
+        b ^= b >> 31;
+    }
+    void add(double v) { add(std::bit_cast<std::uint64_t>(v)); }
+    void add(const Vec3& v) {
+        add(v.x);
+        add(v.y);
+        add(v.z);
+    }
+};
+
+}  // namespace
+
+GeometryDigest digest_geometry(const std::vector<Primitive>& primitives) {
+    Digester d;
+    for (const Primitive& p : primitives) {
+        d.add(static_cast<std::uint64_t>(p.shape.index()));
+        if (const auto* s = std::get_if<Sphere>(&p.shape)) {
+            d.add(s->center);
+            d.add(s->radius);
+        } else if (const auto* c = std::get_if<Cylinder>(&p.shape)) {
+            d.add(c->radius);
+            d.add(c->height);
+        } else if (const auto* l = std::get_if<Plane>(&p.shape)) {
+            d.add(l->normal);
+            d.add(l->distance);
+        }
+        d.add(static_cast<std::uint64_t>(p.transforms.size()));
+        for (const TransformOp& op : p.transforms) {
+            d.add(static_cast<std::uint64_t>(op.kind));
+            d.add(op.vector);
+            d.add(op.degrees);
+        }
+    }
+    return {d.a, d.b, primitives.size()};
+}
+
+}  // namespace jt
