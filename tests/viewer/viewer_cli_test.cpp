@@ -6,6 +6,7 @@
 #include <filesystem>
 #include <fstream>
 #include <string>
+#include <vector>
 
 #include <sys/wait.h>
 #include <unistd.h>
@@ -22,10 +23,18 @@ fs::path temp_dir(const std::string& name) {
     return dir;
 }
 
-// Runs the viewer with no DISPLAY; returns its exit code.
-int run_viewer(const std::string& arguments, const fs::path& log) {
-    const std::string command = "env -u DISPLAY -u WAYLAND_DISPLAY '" JT_VIEWER_EXE "' " +
-                                arguments + " > '" + log.string() + "' 2>&1";
+// Runs the viewer with `arguments` (each single-quoted for the shell) and no
+// DISPLAY; returns its exit code.
+int run_viewer(const std::vector<std::string>& arguments, const fs::path& log) {
+    std::string command = "env -u DISPLAY -u WAYLAND_DISPLAY '" JT_VIEWER_EXE "'";
+    for (const std::string& argument : arguments) {
+        command += " '";
+        command += argument;
+        command += "'";
+    }
+    command += " > '";
+    command += log.string();
+    command += "' 2>&1";
     const int status = std::system(command.c_str());
     return WIFEXITED(status) ? WEXITSTATUS(status) : -1;
 }
@@ -46,8 +55,8 @@ const std::string kScene = std::string(JT_VIEWER_TEST_DIR) + "/scenes/two_camera
 TEST(ViewerCli, ScreenshotWritesAPngOfTheRequestedSizeWithoutADisplay) {
     const fs::path dir = temp_dir("shot");
     const fs::path png = dir / "view.png";
-    const int code = run_viewer(
-        "'" + kScene + "' --screenshot '" + png.string() + "' --size 400x300", dir / "log");
+    const int code =
+        run_viewer({kScene, "--screenshot", png.string(), "--size", "400x300"}, dir / "log");
     EXPECT_EQ(code, 0) << read(dir / "log");
     const std::string bytes = read(png);
     ASSERT_GT(bytes.size(), 24u) << read(dir / "log");
@@ -59,8 +68,8 @@ TEST(ViewerCli, ScreenshotWritesAPngOfTheRequestedSizeWithoutADisplay) {
 TEST(ViewerCli, ScreenshotOfABrokenSceneFailsCleanlyWithItsDiagnostics) {
     const fs::path dir = temp_dir("broken");
     std::ofstream(dir / "bad.jts") << "scene {\n  sphere { radius 2; }\n}\n";
-    const int code = run_viewer("'" + (dir / "bad.jts").string() + "' --screenshot '" +
-                                    (dir / "out.png").string() + "' --size 320x240",
+    const int code = run_viewer({(dir / "bad.jts").string(), "--screenshot",
+                                 (dir / "out.png").string(), "--size", "320x240"},
                                 dir / "log");
     EXPECT_EQ(code, 1);
     EXPECT_NE(read(dir / "log").find("bad.jts:2:"), std::string::npos) << read(dir / "log");
@@ -68,21 +77,18 @@ TEST(ViewerCli, ScreenshotOfABrokenSceneFailsCleanlyWithItsDiagnostics) {
 
 TEST(ViewerCli, BadArgumentsAreRefusedWithoutWritingAnything) {
     const fs::path dir = temp_dir("args");
-    EXPECT_EQ(
-        run_viewer("'" + kScene + "' --screenshot '" + (dir / "a.png").string() + "' --size 12x",
-                   dir / "log"),
-        2);
+    EXPECT_EQ(run_viewer({kScene, "--screenshot", (dir / "a.png").string(), "--size", "12x"},
+                         dir / "log"),
+              2);
     EXPECT_NE(read(dir / "log").find("--size"), std::string::npos);
-    EXPECT_EQ(
-        run_viewer("'" + kScene + "' --screenshot '" + (dir / "a.jpg").string() + "'", dir / "log"),
-        2);
+    EXPECT_EQ(run_viewer({kScene, "--screenshot", (dir / "a.jpg").string()}, dir / "log"), 2);
     EXPECT_FALSE(fs::exists(dir / "a.png"));
     EXPECT_FALSE(fs::exists(dir / "a.jpg"));
 }
 
 TEST(ViewerCli, WithoutADisplayTheWindowModeExplainsInsteadOfCrashing) {
     const fs::path dir = temp_dir("nodisplay");
-    EXPECT_EQ(run_viewer("'" + kScene + "'", dir / "log"), 1);
+    EXPECT_EQ(run_viewer({kScene}, dir / "log"), 1);
     EXPECT_NE(read(dir / "log").find("--screenshot"), std::string::npos) << read(dir / "log");
 }
 
