@@ -315,6 +315,21 @@ TEST_F(ViewerGl, ShortcutsReloadAndSaveTheImage) {
     EXPECT_FALSE(state.undo.can_undo());
 }
 
+TEST_F(ViewerGl, AnEditThatMakesTheSceneInvalidKeepsTheImageAndSaysWhy) {
+    open_scene(state, kScene);
+    ASSERT_TRUE(viewer.run_until_complete(state, kTimeout));
+    const Image8 good = state.display;
+    const auto jobs = state.renderer.jobs_started();
+    edit_scene(state, [](Scene& s) { std::get<Plane>(s.primitives[0].shape).normal = Vec3(0); });
+    for (int i = 0; i < 3; ++i) viewer.frame(state);
+    EXPECT_EQ(state.renderer.jobs_started(), jobs);
+    EXPECT_NE(state.render_note.find("normal"), std::string::npos) << state.render_note;
+    EXPECT_EQ(state.display, good);
+    undo(state);
+    ASSERT_TRUE(viewer.run_until_complete(state, kTimeout));
+    EXPECT_TRUE(state.render_note.empty()) << state.render_note;
+}
+
 TEST_F(ViewerGl, EscapeAsksToQuit) {
     open_scene(state, kScene);
     viewer.press_key(state, keys::escape);

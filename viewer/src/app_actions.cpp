@@ -217,13 +217,35 @@ std::optional<RenderRequest> render_request(const AppState& state, std::string& 
     return request;
 }
 
+namespace {
+
+// The first error validation finds in what a render would show, or empty. An
+// edit can make the scene invalid (a zero plane normal, say).
+std::string validation_error(const Scene& scene) {
+    for (const Diagnostic& d : validate_scene(scene, SceneSource{}))
+        if (d.severity == Severity::error) return d.message;
+    return {};
+}
+
+}  // namespace
+
 void update_render(AppState& state) {
     if (!state.paused) {
         std::optional<RenderRequest> request = render_request(state, state.render_note);
-        if (request && request != state.started) {
-            state.renderer.start(request->scene, request->options);
-            state.started = std::move(request);
-            state.display_complete = false;
+        if (request && request == state.rejected) {
+            state.render_note = state.rejected_reason;
+        } else if (request && request != state.started) {
+            if (const std::string error = validation_error(request->scene); !error.empty()) {
+                // Keep the last image rather than render nonsense; say why.
+                state.rejected = std::move(request);
+                state.rejected_reason = "Not rendered: " + error;
+                state.render_note = state.rejected_reason;
+            } else {
+                state.rejected.reset();
+                state.renderer.start(request->scene, request->options);
+                state.started = std::move(request);
+                state.display_complete = false;
+            }
         }
     }
     // Read `finished` before fetching: a fetch after it has every last pixel.

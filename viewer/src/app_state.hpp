@@ -22,7 +22,7 @@ namespace jt::view {
 struct ViewerConfig {
     std::filesystem::path recent_files;  // empty: remember nothing between runs
     std::chrono::milliseconds watch_interval{200};
-    int render_threads = 0;     // 0: every core
+    int render_threads = 0;        // 0: every core
     int max_pixels = 4096 * 4096;  // larger images are refused, not allocated
 };
 
@@ -59,8 +59,10 @@ struct AppState {
     std::string new_camera_name = "viewer";
 
     RenderController renderer;
-    std::optional<RenderRequest> started;  // the request the current render answers
-    std::string render_note;               // why nothing renders, when so
+    std::optional<RenderRequest> started;   // the request the current render answers
+    std::string render_note;                // why nothing renders, when so
+    std::optional<RenderRequest> rejected;  // an edited scene that failed validation
+    std::string rejected_reason;
     bool paused = false;
     bool display_complete = false;  // the display holds every pixel of the finished render
     Image8 display;                 // what the texture holds

@@ -37,7 +37,7 @@ void status_line(AppState& state) {
     }
     if (!state.render_note.empty() && state.started) {
         ImGui::SameLine();
-        ImGui::TextDisabled("| %s", state.render_note.c_str());
+        ImGui::TextColored(ImVec4(1.0f, 0.7f, 0.3f, 1.0f), "| %s", state.render_note.c_str());
     }
     ImGui::TextDisabled("%s", state.message.c_str());
 }
