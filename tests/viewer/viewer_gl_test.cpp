@@ -330,6 +330,22 @@ TEST_F(ViewerGl, AnEditThatMakesTheSceneInvalidKeepsTheImageAndSaysWhy) {
     EXPECT_TRUE(state.render_note.empty()) << state.render_note;
 }
 
+TEST_F(ViewerGl, OpeningAMissingFileExplainsAndKeepsWhatIsOpen) {
+    open_scene(state, "/nonexistent/nothing.jts");
+    viewer.frame(state);
+    EXPECT_FALSE(state.doc.loaded);
+    ASSERT_FALSE(state.doc.diagnostics.empty());
+    EXPECT_NE(state.doc.diagnostics[0].message.find("does not exist"), std::string::npos);
+    open_scene(state, kScene);
+    ASSERT_TRUE(viewer.run_until_complete(state, kTimeout));
+    const Image8 good = state.display;
+    open_scene(state, "/nonexistent/other.jts");
+    viewer.frame(state);
+    EXPECT_TRUE(state.doc.loaded);
+    EXPECT_EQ(state.doc.path, kScene) << "the open scene stays";
+    EXPECT_EQ(state.display, good);
+}
+
 TEST_F(ViewerGl, EscapeAsksToQuit) {
     open_scene(state, kScene);
     viewer.press_key(state, keys::escape);

@@ -4,6 +4,10 @@
 #include <imgui.h>
 #include <imgui_stdlib.h>
 
+#include "jtracer/validate.hpp"
+
+#include <algorithm>
+
 namespace jt::view {
 
 void camera_panel(AppState& state) {
@@ -29,6 +33,16 @@ void camera_panel(AppState& state) {
     if (ImGui::Button("Reset to scene camera")) {
         reset_free_camera(state);
         state.free_camera_active = false;
+    }
+    if (!state.free_camera_active && !cameras.empty()) {
+        const std::string& name = cameras[state.camera_index].name;
+        const bool is_active =
+            label(state.camera_index) == label(std::max(0, active_camera_index(state.doc.scene)));
+        ImGui::SameLine();
+        ImGui::BeginDisabled(is_active || name.empty());
+        if (ImGui::Button("Make active"))
+            edit_scene(state, [&](Scene& s) { s.settings.active_camera = name; });
+        ImGui::EndDisabled();
     }
     ImGui::SetNextItemWidth(140);
     ImGui::InputText("##name", &state.new_camera_name);
