@@ -117,9 +117,12 @@ double scene_magnitude(const Geometry& g) {
     return m;
 }
 
-std::shared_ptr<const Geometry> build_geometry(const Scene& scene) {
+std::shared_ptr<const Geometry> build_geometry(const Scene& scene, const GeometryDigest& digest) {
     auto g = std::make_shared<Geometry>();
-    g->digest = digest_geometry(scene.primitives);
+    g->digest = digest;
+    // Room for the common case, every primitive a plain sphere: pages never
+    // written cost nothing, while growing by copies would touch them all twice.
+    g->spheres.reserve(scene.primitives.size());
     for (std::size_t i = 0; i < scene.primitives.size(); ++i) {
         const Primitive& p = scene.primitives[i];
         Affine to_world = compose_transforms(p.transforms);
@@ -165,11 +168,12 @@ std::shared_ptr<const Geometry> build_geometry(const Scene& scene) {
 std::shared_ptr<const PreparedScene> prepare_scene(const Scene& scene,
                                                    std::shared_ptr<const PreparedScene> previous) {
     auto prepared = std::make_shared<PreparedScene>();
-    if (previous && previous->geometry &&
-        previous->geometry->digest == digest_geometry(scene.primitives))
+    const GeometryDigest digest = digest_geometry(scene.primitives);
+    if (previous && previous->geometry && previous->geometry->digest == digest)
         prepared->geometry = previous->geometry;
     else
-        prepared->geometry = build_geometry(scene);
+        prepared->geometry = build_geometry(scene, digest);
+    prepared->materials.reserve(scene.primitives.size());
     prepared->material_of.reserve(scene.primitives.size());
     for (const Primitive& p : scene.primitives) {
         if (prepared->materials.empty() || !(prepared->materials.back() == p.material))

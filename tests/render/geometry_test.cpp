@@ -1,0 +1,145 @@
+// The geometry layer on its own: transforms, exact intersections, and the BVH
+// queries checked against brute force over every primitive.
+
+#include "geometry/affine.hpp"
+#include "geometry/intersect.hpp"
+#include "render/prepared_scene.hpp"
+#include "render/ray_queries.hpp"
+#include "scene_builder.hpp"
+
+#include <gtest/gtest.h>
+#include <glm/geometric.hpp>
+
+#include <random>
+
+namespace jt::test {
+namespace {
+
+void expect_near(const Vec3& a, const Vec3& b, double tolerance = 1e-12) {
+    EXPECT_NEAR(a.x, b.x, tolerance);
+    EXPECT_NEAR(a.y, b.y, tolerance);
+    EXPECT_NEAR(a.z, b.z, tolerance);
+}
+
+TEST(Affine, RightHandRotationsAndWrittenOrder) {
+    expect_near(apply_point(affine_of(rotate(TransformKind::zrotate, 90)), {1, 0, 0}), {0, 1, 0});
+    expect_near(apply_point(affine_of(rotate(TransformKind::xrotate, 90)), {0, 1, 0}), {0, 0, 1});
+    expect_near(apply_point(affine_of(rotate(TransformKind::yrotate, 90)), {0, 0, 1}), {1, 0, 0});
+    expect_near(apply_point(affine_of(rotate(TransformKind::zrotate, 30)), {1, 0, 0}),
+                {std::sqrt(3.0) / 2, 0.5, 0});
+    // The manual's example: translate, zrotate, scale means M = S * Rz * T.
+    Affine m = compose_transforms(
+        {translate({0, -0.5, 0}), rotate(TransformKind::zrotate, 90), scale({2, 1, 1})});
+    // (1, 0.5, 0) -> translate (1, 0, 0) -> rotate (0, 1, 0) -> scale (0, 1, 0)
+    expect_near(apply_point(m, {1, 0.5, 0}), {0, 1, 0});
+    // (0, 1.5, 0) -> (0, 1, 0) -> (-1, 0, 0) -> (-2, 0, 0)
+    expect_near(apply_point(m, {0, 1.5, 0}), {-2, 0, 0});
+}
+
+TEST(Affine, InverseAndDegenerateMaps) {
+    Affine m = compose_transforms(
+        {scale({2, 3, 4}), rotate(TransformKind::xrotate, 33), translate({1, 2, 3})});
+    auto inverse = invert(m);
+    ASSERT_TRUE(inverse);
+    expect_near(apply_point(inverse->inverse, apply_point(m, {0.3, -0.7, 2})), {0.3, -0.7, 2});
+    EXPECT_FALSE(invert(compose_transforms({scale({1, 0, 1})})));
+    EXPECT_FALSE(invert(compose_transforms({translate({std::nan(""), 0, 0})})));
+    EXPECT_FALSE(invert(compose_transforms({scale({1e300, 1e300, 1e300}), scale({1e300, 1, 1})})));
+    EXPECT_TRUE(similarity_scale(
+        compose_transforms({rotate(TransformKind::yrotate, 17), scale({3, 3, 3})}).linear));
+    EXPECT_FALSE(similarity_scale(compose_transforms({scale({3, 3, 2})}).linear));
+}
+
+TEST(Intersect, SphereStaysPreciseFromFarAway) {
+    // A unit sphere seen from 1e8 away: b^2 - ac cancels to 0 and puts the hit
+    // at 1e8, a whole radius off.
+    double t = intersect_sphere({0, 0, 1e8}, {0, 0, -1}, {0, 0, 0}, 1.0, 0.0, no_hit);
+    EXPECT_NEAR(t, 1e8 - 1.0, 1e-6);
+    // Off-centre, the half chord is sqrt(1 - 0.6^2) = 0.8.
+    t = intersect_sphere({0.6, 0, 1e8}, {0, 0, -1}, {0, 0, 0}, 1.0, 0.0, no_hit);
+    EXPECT_NEAR(t, 1e8 - 0.8, 1e-6);
+    // From inside, the far root.
+    EXPECT_EQ(intersect_sphere({0, 0, 0}, {0, 0, -1}, {0, 0, 0}, 2.0, 0.0, no_hit), 2.0);
+    EXPECT_EQ(intersect_sphere({0, 3, 5}, {0, 0, -1}, {0, 0, 0}, 2.0, 0.0, no_hit), no_hit);
+}
+
+TEST(Intersect, CylinderPartsAndRims) {
+    CylinderPart part = CylinderPart::side;
+    EXPECT_EQ(intersect_cylinder({0, 5, 0}, {0, -1, 0}, 1.0, 2.0, 0.0, no_hit, part), 3.0);
+    EXPECT_EQ(part, CylinderPart::top);
+    EXPECT_EQ(intersect_cylinder({0, -5, 0}, {0, 1, 0}, 1.0, 2.0, 0.0, no_hit, part), 5.0);
+    EXPECT_EQ(part, CylinderPart::bottom);
+    EXPECT_EQ(intersect_cylinder({0, 1, 5}, {0, 0, -1}, 1.0, 2.0, 0.0, no_hit, part), 4.0);
+    EXPECT_EQ(part, CylinderPart::side);
+    // Parallel to the axis outside the radius, and above the top: misses.
+    EXPECT_EQ(intersect_cylinder({2, 5, 0}, {0, -1, 0}, 1.0, 2.0, 0.0, no_hit, part), no_hit);
+    EXPECT_EQ(intersect_cylinder({0, 2.5, 5}, {0, 0, -1}, 1.0, 2.0, 0.0, no_hit, part), no_hit);
+    // From inside the solid, the exit through the side.
+    EXPECT_EQ(intersect_cylinder({0, 1, 0}, {1, 0, 0}, 1.0, 2.0, 0.0, no_hit, part), 1.0);
+    expect_near(cylinder_normal({0.6, 1.2, 0.8}, CylinderPart::side), {0.6, 0, 0.8});
+}
+
+// Embree only culls: the BVH answer must equal a brute-force loop over every
+// primitive with the same exact routines, for thousands of random rays
+// through a crowd of spheres, ellipsoids and cylinders.
+TEST(RayQueries, BvhAgreesWithBruteForce) {
+    std::mt19937 rng(7);
+    std::uniform_real_distribution<double> u(-10.0, 10.0), r(0.1, 1.5), angle(0.0, 360.0);
+    Scene scene;
+    for (int i = 0; i < 600; ++i) {
+        Primitive p =
+            i % 3 == 2 ? cylinder(r(rng), 2 * r(rng)) : sphere({u(rng), u(rng), u(rng)}, r(rng));
+        if (i % 3 != 0)
+            p.transforms = {
+                scale({r(rng), r(rng), r(rng)}), rotate(TransformKind::xrotate, angle(rng)),
+                rotate(TransformKind::yrotate, angle(rng)), translate({u(rng), u(rng), u(rng)})};
+        scene.primitives.push_back(p);
+    }
+    scene.primitives.push_back(plane({0.2, 1, 0.1}, -12.0));
+    auto prepared = prepare_scene(scene);
+    const Geometry& g = *prepared->geometry;
+    ASSERT_GT(g.shapes.size(), 300u);
+
+    auto brute = [&](const Vec3& o, const Vec3& d, Hit& best) {
+        best.t = no_hit;
+        auto consider = [&](double t, std::uint32_t source) {
+            if (t < best.t || (t == best.t && t != no_hit && source < best.source)) {
+                best.t = t;
+                best.source = source;
+            }
+        };
+        for (const WorldSphere& s : g.spheres)
+            consider(intersect_sphere(o, d, s.center, s.radius, 0.0, no_hit), s.source);
+        for (const TransformedShape& s : g.shapes) {
+            Vec3 oo = apply_point(s.to_object, o), dd = apply_vector(s.to_object, d);
+            CylinderPart part;
+            consider(s.kind == ShapeKind::sphere
+                         ? intersect_sphere(oo, dd, s.center, s.radius, 0.0, no_hit)
+                         : intersect_cylinder(oo, dd, s.radius, s.height, 0.0, no_hit, part),
+                     s.source);
+        }
+        for (const WorldPlane& p : g.planes)
+            consider(intersect_plane(o, d, p.normal, p.distance, 0.0, no_hit), p.source);
+        return best.t != no_hit;
+    };
+
+    int hits = 0;
+    for (int i = 0; i < 4000; ++i) {
+        Vec3 o{u(rng) * 2, u(rng) * 2, u(rng) * 2};
+        Vec3 d = glm::normalize(Vec3{u(rng), u(rng), u(rng)});
+        Hit expected_hit, actual;
+        bool expected = brute(o, d, expected_hit);
+        ASSERT_EQ(closest_hit(g, o, d, 0.0, actual), expected) << "ray " << i;
+        if (!expected) continue;
+        ++hits;
+        ASSERT_EQ(actual.t, expected_hit.t) << "ray " << i;
+        ASSERT_EQ(actual.source, expected_hit.source) << "ray " << i;
+        // Occlusion just short of and just past the hit.
+        EXPECT_FALSE(occluded(g, o, d, 0.0, expected_hit.t * (1 - 1e-9))) << "ray " << i;
+        EXPECT_TRUE(occluded(g, o, d, 0.0, expected_hit.t * (1 + 1e-9))) << "ray " << i;
+    }
+    EXPECT_GT(hits, 1000);
+}
+
+}  // namespace
+}  // namespace jt::test
