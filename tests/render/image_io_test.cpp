@@ -7,6 +7,7 @@
 #include "jtracer/png.hpp"
 
 #include <gtest/gtest.h>
+#include <unistd.h>
 
 #include <filesystem>
 #include <fstream>
@@ -29,7 +30,8 @@ std::uint32_t le32(const std::vector<std::uint8_t>& b, std::size_t at) {
 }
 
 fs::path scratch_dir(const std::string& name) {
-    fs::path dir = fs::temp_directory_path() / ("jtracer_io_test_" + name);
+    fs::path dir =
+        fs::temp_directory_path() / ("jtracer_io_test_" + name + "_" + std::to_string(::getpid()));
     fs::remove_all(dir);
     fs::create_directories(dir);
     return dir;

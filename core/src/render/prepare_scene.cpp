@@ -3,6 +3,7 @@
 #include "render/prepared_scene.hpp"
 #include "render/ray_queries.hpp"
 
+#include <tbb/parallel_invoke.h>
 #include <glm/geometric.hpp>
 
 #include <algorithm>
@@ -169,16 +170,29 @@ std::shared_ptr<const PreparedScene> prepare_scene(const Scene& scene,
                                                    std::shared_ptr<const PreparedScene> previous) {
     auto prepared = std::make_shared<PreparedScene>();
     const GeometryDigest digest = digest_geometry(scene.primitives);
-    if (previous && previous->geometry && previous->geometry->digest == digest)
-        prepared->geometry = previous->geometry;
-    else
-        prepared->geometry = build_geometry(scene, digest);
-    prepared->materials.reserve(scene.primitives.size());
-    prepared->material_of.reserve(scene.primitives.size());
-    for (const Primitive& p : scene.primitives) {
-        if (prepared->materials.empty() || !(prepared->materials.back() == p.material))
-            prepared->materials.push_back(p.material);
-        prepared->material_of.push_back(static_cast<std::uint32_t>(prepared->materials.size() - 1));
+    auto build = [&] {
+        if (previous && previous->geometry && previous->geometry->digest == digest)
+            prepared->geometry = previous->geometry;
+        else
+            prepared->geometry = build_geometry(scene, digest);
+    };
+    // Materials and geometry are independent; for a million primitives each is
+    // worth a core.
+    auto gather_materials = [&] {
+        prepared->materials.reserve(scene.primitives.size());
+        prepared->material_of.reserve(scene.primitives.size());
+        for (const Primitive& p : scene.primitives) {
+            if (prepared->materials.empty() || !(prepared->materials.back() == p.material))
+                prepared->materials.push_back(p.material);
+            prepared->material_of.push_back(
+                static_cast<std::uint32_t>(prepared->materials.size() - 1));
+        }
+    };
+    if (scene.primitives.size() > 10000)
+        tbb::parallel_invoke(build, gather_materials);
+    else {
+        build();
+        gather_materials();
     }
     prepared->lights = scene.lights;
     prepared->cameras = scene.cameras;
