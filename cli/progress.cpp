@@ -27,10 +27,16 @@ std::string format_duration(double seconds) {
 std::string render_summary(int width, int height, int samples, const RenderProgress& progress) {
     double mrays = static_cast<double>(progress.rays) / 1e6;
     double rate = progress.seconds > 0.0 ? mrays / progress.seconds : 0.0;
-    char text[160];
-    std::snprintf(text, sizeof text, "%dx%d, %d sample%s, %s, %.2f M rays, %.2f Mrays/s", width,
-                  height, samples, samples == 1 ? "" : "s",
-                  format_duration(progress.seconds).c_str(), mrays, rate);
+    char rays[48];
+    if (progress.rays < 1000000)
+        std::snprintf(rays, sizeof rays, "%llu rays",
+                      static_cast<unsigned long long>(progress.rays));
+    else
+        std::snprintf(rays, sizeof rays, "%.2f M rays", mrays);
+    char text[200];
+    std::snprintf(text, sizeof text, "%dx%d, %d sample%s, %s, %s, %.2f Mrays/s", width, height,
+                  samples, samples == 1 ? "" : "s", format_duration(progress.seconds).c_str(), rays,
+                  rate);
     return text;
 }
 
