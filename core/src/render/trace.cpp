@@ -43,7 +43,11 @@ Colour shade_hit(const PreparedScene& scene, const Material& m, const Vec3& poin
         ++rays;
         if (occluded(geometry, lifted, shadow_direction / shadow_distance, 0.0, shadow_distance))
             continue;
-        c += light.intensity * m.diffuse * m.pigment * std::pow(n_dot_l, 1.0 / m.diffuse_k);
+        // pow(x, 1) is x exactly, and adding a zero term changes nothing: both
+        // shortcuts leave every bit as the plain formula would.
+        double diffuse_factor = m.diffuse_k == 1.0 ? n_dot_l : std::pow(n_dot_l, 1.0 / m.diffuse_k);
+        c += light.intensity * m.diffuse * m.pigment * diffuse_factor;
+        if (m.specular == Colour(0.0)) continue;
         Vec3 r = 2.0 * n_dot_l * normal - l;
         double r_dot_v = glm::dot(r, view);
         if (r_dot_v > 0.0) c += light.intensity * m.specular * std::pow(r_dot_v, m.specular_k);
