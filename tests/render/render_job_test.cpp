@@ -80,6 +80,24 @@ TEST(RenderJob, PreviewsDoNotChangeTheFinalImage) {
     EXPECT_TRUE(job.image() == render_image(prepared, options_for(s, 3, 0, false)));
 }
 
+TEST(RenderJob, PreviewPassesFillWholeBlocks) {
+    Scene s = busy_scene(61, 43);
+    RenderJob job(prepare_scene(s), options_for(s, 1, 0, true));
+    for (int block : {8, 4, 2}) {
+        ASSERT_TRUE(job.run_pass());
+        Image8 image = job.image();
+        int distinct_blocks = 0;
+        for (int y = 0; y < 43; ++y)
+            for (int x = 0; x < 61; ++x) {
+                Rgb corner = at(image, x / block * block, y / block * block);
+                ASSERT_EQ(at(image, x, y), corner) << "block " << block << " at " << x << "," << y;
+                if (x % block == 0 && y % block == 0 && !(corner == Rgb{0, 0, 0}))
+                    ++distinct_blocks;
+            }
+        EXPECT_GT(distinct_blocks, 0);
+    }
+}
+
 TEST(RenderJob, OneSampleIsThePixelCentre) {
     Scene s = busy_scene(40, 30);
     auto prepared = prepare_scene(s);

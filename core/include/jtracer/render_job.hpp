@@ -11,6 +11,12 @@
 // The CLI runs a job with previews off; the viewer polls a job running on a
 // thread of its own. Final pixels never depend on thread count, tile order or
 // whether previews ran.
+//
+// The passes of a job with `samples` = N: "preview 1/8", "preview 1/4",
+// "preview 1/2" (one ray per block, when previews are on), "1 sample" (the
+// pixel centres), then "2 samples", "4 samples", ... doubling up to "N samples".
+// Sample k of a pixel sits at a fixed R2-sequence offset (k = 0: the centre);
+// a pixel shows the mean of its samples so far, each clamped to [0, 1].
 
 #include "jtracer/image.hpp"
 #include "jtracer/scene.hpp"
@@ -50,7 +56,7 @@ struct RenderOptions {
 };
 
 struct RenderProgress {
-    int pass = 0;  // index of the pass running (or last run)
+    int pass = 0;  // index of the pass running or next to run (the last one once finished)
     int pass_count = 0;
     std::string pass_name;   // "preview 1/8", ..., "1 sample", "4 samples"
     double fraction = 0.0;   // of the whole job's work, 0..1
