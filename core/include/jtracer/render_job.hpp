@@ -39,6 +39,7 @@ struct PreparedScene;  // defined in the core's private headers
 // `previous` may be a scene prepared earlier: when the geometry of `scene`
 // (shapes and transforms) equals the previous scene's, its acceleration
 // structure is reused, so that material, light and settings edits are cheap.
+// Throws std::runtime_error only if Embree cannot start at all.
 std::shared_ptr<const PreparedScene> prepare_scene(
     const Scene& scene, std::shared_ptr<const PreparedScene> previous = nullptr);
 

@@ -8,6 +8,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <stdexcept>
 #include <cstdlib>
 
 namespace jt {
@@ -147,6 +148,7 @@ std::shared_ptr<const Geometry> build_geometry(const Scene& scene, const Geometr
         s.bounds.upper_z += static_cast<float>(g->bounds_slack);
     }
 
+    if (!embree_device()) throw std::runtime_error("cannot start Embree (rtcNewDevice failed)");
     g->bvh = rtcNewScene(embree_device());
     std::size_t bounded = g->spheres.size() + g->shapes.size();
     rtcSetSceneBuildQuality(
