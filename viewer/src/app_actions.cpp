@@ -50,12 +50,14 @@ void open_scene(AppState& state, const std::filesystem::path& path) {
 
 void reload_scene(AppState& state) {
     if (state.doc.path.empty()) return;
+    const bool had_edits = has_unsaved_edits(state.doc);
     LoadAttempt attempt = load_scene_file(state.doc.path);
     const bool ok = attempt.ok;
     accept_load(state.doc, state.doc.path, std::move(attempt));
     if (ok) {
         after_scene_replaced(state);
-        state.message = "Reloaded " + state.doc.path.filename().string();
+        state.message = "Reloaded " + state.doc.path.filename().string() +
+                        (had_edits ? " (unsaved edits were replaced by the file)" : "");
     } else {
         state.message = state.doc.loaded ? "The file has errors: showing the last good scene"
                                          : "The file has errors";
