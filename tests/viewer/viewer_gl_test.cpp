@@ -92,6 +92,37 @@ TEST_F(ViewerGl, TextureAndScreenShowExactlyTheCoresImage) {
     EXPECT_EQ(mismatches, 0);
 }
 
+TEST_F(ViewerGl, OnHiDpiActualPixelsAreFramebufferPixels) {
+    viewer.set_framebuffer_scale(2.0f);  // a 160x120 window on a 320x240 framebuffer
+    state.show_ui = false;
+    state.fit = FitMode::actual_pixels;
+    open_scene(state, kScene);
+    ASSERT_TRUE(viewer.run_until_complete(state, kTimeout));
+    const Image8 screen = viewer.screenshot();
+    const Image8& expected = state.display;
+    const int x0 = (320 - 64) / 2, y0 = (240 - 48) / 2;
+    int mismatches = 0;
+    for (int y = 0; y < 48; ++y)
+        for (int x = 0; x < 64; ++x)
+            for (int c = 0; c < 3; ++c)
+                mismatches += screen.pixel(x0 + x, y0 + y)[c] != expected.pixel(x, y)[c];
+    EXPECT_EQ(mismatches, 0);
+}
+
+TEST_F(ViewerGl, FitFillsTheAreaKeepingTheAspect) {
+    state.show_ui = false;
+    open_scene(state, kScene);
+    ASSERT_TRUE(viewer.run_until_complete(state, kTimeout));
+    // 64x48 fitted into 320x240 is 320x240: every image pixel is a 5x5 block.
+    const Image8 screen = viewer.screenshot();
+    const Image8& image = state.display;
+    for (int y : {0, 17, 47})
+        for (int x : {0, 31, 63})
+            for (int c = 0; c < 3; ++c)
+                EXPECT_EQ(screen.pixel(x * 5 + 2, y * 5 + 2)[c], image.pixel(x, y)[c])
+                    << "pixel " << x << "," << y;
+}
+
 TEST_F(ViewerGl, OnlyChangedRegionsAreUploadedAfterTheFirst) {
     open_scene(state, kScene);
     ASSERT_TRUE(viewer.run_until_complete(state, kTimeout));

@@ -19,9 +19,11 @@ std::string HeadlessViewer::error() const {
 }
 
 void HeadlessViewer::frame(AppState& state) {
-    ImGuiLayer::set_display(context_.width(), context_.height(), 1.0f, 1.0f / 30.0f);
+    // Window units = framebuffer pixels / scale, as GLFW reports on a HiDPI screen.
+    ImGuiLayer::set_display(static_cast<int>(context_.width() / scale_),
+                            static_cast<int>(context_.height() / scale_), scale_, 1.0f / 30.0f);
     layer_.begin_frame();
-    viewer_frame(state, FrameInfo{1.0f});
+    viewer_frame(state, FrameInfo{scale_});
     layer_.end_frame(context_.width(), context_.height());
 }
 

@@ -32,6 +32,8 @@ class HeadlessViewer {
     bool run_until_complete(AppState& state,
                             std::chrono::milliseconds timeout = std::chrono::minutes(10),
                             int settle_frames = 2);
+    // Simulates a HiDPI screen: `scale` framebuffer pixels per window unit.
+    void set_framebuffer_scale(float scale) { scale_ = scale > 0 ? scale : 1.0f; }
     // The last frame as drawn (rows bottom-up).
     Image8 screenshot() const;
     int width() const { return context_.width(); }
@@ -40,6 +42,7 @@ class HeadlessViewer {
   private:
     OsMesaContext context_;
     ImGuiLayer layer_;
+    float scale_ = 1.0f;
 };
 
 }  // namespace jt::view
