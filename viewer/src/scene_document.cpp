@@ -29,7 +29,12 @@ LoadAttempt load_scene_file(const std::filesystem::path& path) {
                                                      : "cannot open the file: it does not exist"));
         return attempt;
     }
-    if (std::filesystem::file_size(path, ec) > max_scene_bytes) {
+    const std::uintmax_t size = std::filesystem::file_size(path, ec);
+    if (ec) {
+        attempt.diagnostics.push_back(file_error("cannot read the file: " + ec.message()));
+        return attempt;
+    }
+    if (size > max_scene_bytes) {
         attempt.diagnostics.push_back(file_error("the file is larger than 256 MiB"));
         return attempt;
     }
