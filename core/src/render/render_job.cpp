@@ -52,6 +52,23 @@ CameraFrame frame_for(const PreparedScene& scene, const RenderOptions& o) {
     return camera_frame(camera, std::max(o.width, 1), std::max(o.height, 1));
 }
 
+// The quantized pixels of one tile, row by row, before they are published.
+struct TileBuffer {
+    PixelRect rect;
+    std::vector<std::uint8_t> rgb;
+
+    explicit TileBuffer(const PixelRect& r)
+        : rect(r), rgb(static_cast<std::size_t>(r.width()) * r.height() * 3) {}
+    void put(int x, int y, const Colour& c) {
+        std::uint8_t* p = &rgb[(static_cast<std::size_t>(y - rect.y0) * rect.width() +
+                                static_cast<std::size_t>(x - rect.x0)) *
+                               3];
+        p[0] = quantize_channel(c.x);
+        p[1] = quantize_channel(c.y);
+        p[2] = quantize_channel(c.z);
+    }
+};
+
 }  // namespace
 
 struct RenderJob::State {
@@ -81,6 +98,10 @@ struct RenderJob::State {
     bool cancelled = false;
 
     void render_tile(const RenderPass& pass, const PixelRect& tile);
+    // Both return false when cancelled part way.
+    bool render_blocks(int block, const PixelRect& tile, TileBuffer& out, std::uint64_t& rays);
+    bool render_samples(const RenderPass& pass, const PixelRect& tile, TileBuffer& out,
+                        std::uint64_t& rays);
     void publish(const PixelRect& tile, const std::vector<std::uint8_t>& rgb);
 };
 
@@ -93,61 +114,59 @@ void RenderJob::State::publish(const PixelRect& tile, const std::vector<std::uin
     dirty = unite(dirty, tile);
 }
 
-void RenderJob::State::render_tile(const RenderPass& pass, const PixelRect& tile) {
-    if (cancel_requested.load(std::memory_order_relaxed)) return;
-    const PreparedScene& s = *scene;
-    const double t_min = 0.0;
-    std::uint64_t tile_rays = 0;
-    std::vector<std::uint8_t> rgb(static_cast<std::size_t>(tile.width()) * tile.height() * 3);
-    auto put = [&](int x, int y, const Colour& c) {
-        std::uint8_t* p = &rgb[(static_cast<std::size_t>(y - tile.y0) * tile.width() +
-                                static_cast<std::size_t>(x - tile.x0)) *
-                               3];
-        p[0] = quantize_channel(c.x);
-        p[1] = quantize_channel(c.y);
-        p[2] = quantize_channel(c.z);
-    };
-
-    if (pass.block > 1) {
-        const int b = pass.block;
-        for (int by = tile.y0 / b * b; by < tile.y1; by += b) {
-            if (cancel_requested.load(std::memory_order_relaxed)) return;
-            for (int bx = tile.x0 / b * b; bx < tile.x1; bx += b) {
-                // The centre of the block, as far as the image reaches.
-                double cx = bx + 0.5 * (std::min(bx + b, options.width) - bx);
-                double cy = by + 0.5 * (std::min(by + b, options.height) - by);
-                Colour c = trace_ray(s, camera.position, camera_direction(camera, cx, cy), t_min,
-                                     tile_rays);
-                for (int y = std::max(by, tile.y0); y < std::min(by + b, tile.y1); ++y)
-                    for (int x = std::max(bx, tile.x0); x < std::min(bx + b, tile.x1); ++x)
-                        put(x, y, c);
-            }
-        }
-    } else {
-        const bool accumulate = !sums.empty();
-        for (int y = tile.y0; y < tile.y1; ++y) {
-            if (cancel_requested.load(std::memory_order_relaxed)) return;
-            for (int x = tile.x0; x < tile.x1; ++x) {
-                if (!accumulate) {
-                    put(x, y,
-                        trace_ray(s, camera.position, camera_direction(camera, x + 0.5, y + 0.5),
-                                  t_min, tile_rays));
-                    continue;
-                }
-                Colour& sum = sums[static_cast<std::size_t>(y) * options.width + x];
-                if (pass.sample_begin == 0) sum = Colour(0.0);
-                for (int k = pass.sample_begin; k < pass.sample_end; ++k) {
-                    SampleOffset o = sample_offset(k);
-                    sum += clamp01(trace_ray(s, camera.position,
-                                             camera_direction(camera, x + o.x, y + o.y), t_min,
-                                             tile_rays));
-                }
-                put(x, y, sum / static_cast<double>(pass.sample_end));
-            }
+bool RenderJob::State::render_blocks(int b, const PixelRect& tile, TileBuffer& out,
+                                     std::uint64_t& rays) {
+    for (int by = tile.y0 / b * b; by < tile.y1; by += b) {
+        if (cancel_requested.load(std::memory_order_relaxed)) return false;
+        for (int bx = tile.x0 / b * b; bx < tile.x1; bx += b) {
+            // The centre of the block, as far as the image reaches.
+            double cx = bx + 0.5 * (std::min(bx + b, options.width) - bx);
+            double cy = by + 0.5 * (std::min(by + b, options.height) - by);
+            Colour c =
+                trace_ray(*scene, camera.position, camera_direction(camera, cx, cy), 0.0, rays);
+            for (int y = std::max(by, tile.y0); y < std::min(by + b, tile.y1); ++y)
+                for (int x = std::max(bx, tile.x0); x < std::min(bx + b, tile.x1); ++x)
+                    out.put(x, y, c);
         }
     }
+    return true;
+}
+
+bool RenderJob::State::render_samples(const RenderPass& pass, const PixelRect& tile,
+                                      TileBuffer& out, std::uint64_t& rays) {
+    const bool accumulate = !sums.empty();
+    for (int y = tile.y0; y < tile.y1; ++y) {
+        if (cancel_requested.load(std::memory_order_relaxed)) return false;
+        for (int x = tile.x0; x < tile.x1; ++x) {
+            if (!accumulate) {
+                out.put(x, y,
+                        trace_ray(*scene, camera.position,
+                                  camera_direction(camera, x + 0.5, y + 0.5), 0.0, rays));
+                continue;
+            }
+            // Each pixel belongs to one tile, so its running sum needs no lock,
+            // and its samples add up in index order whatever the threads do.
+            Colour& sum = sums[static_cast<std::size_t>(y) * options.width + x];
+            if (pass.sample_begin == 0) sum = Colour(0.0);
+            for (int k = pass.sample_begin; k < pass.sample_end; ++k) {
+                SampleOffset o = sample_offset(k);
+                sum += clamp01(trace_ray(*scene, camera.position,
+                                         camera_direction(camera, x + o.x, y + o.y), 0.0, rays));
+            }
+            out.put(x, y, sum / static_cast<double>(pass.sample_end));
+        }
+    }
+    return true;
+}
+
+void RenderJob::State::render_tile(const RenderPass& pass, const PixelRect& tile) {
+    if (cancel_requested.load(std::memory_order_relaxed)) return;
+    TileBuffer out(tile);
+    std::uint64_t tile_rays = 0;
+    bool whole = pass.block > 1 ? render_blocks(pass.block, tile, out, tile_rays)
+                                : render_samples(pass, tile, out, tile_rays);
     rays.fetch_add(tile_rays, std::memory_order_relaxed);
-    publish(tile, rgb);
+    if (whole) publish(tile, out.rgb);
 }
 
 RenderJob::RenderJob(std::shared_ptr<const PreparedScene> scene, RenderOptions options)
