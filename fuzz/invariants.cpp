@@ -1,0 +1,89 @@
+#include "invariants.hpp"
+
+#include "jtracer/bmp.hpp"
+#include "jtracer/diagnostics.hpp"
+#include "jtracer/parser.hpp"
+#include "jtracer/serializer.hpp"
+#include "jtracer/validate.hpp"
+
+#include <vector>
+
+namespace jt::fuzz {
+
+namespace {
+
+// Byte length of each '\n'-separated line, as the lexer counts columns.
+std::vector<std::size_t> line_lengths(std::string_view text) {
+    std::vector<std::size_t> lengths;
+    std::size_t start = 0;
+    for (;;) {
+        std::size_t nl = text.find('\n', start);
+        if (nl == std::string_view::npos) {
+            lengths.push_back(text.size() - start);
+            return lengths;
+        }
+        lengths.push_back(nl - start);
+        start = nl + 1;
+    }
+}
+
+std::string describe(const Diagnostic& d) {
+    return std::to_string(d.pos.line) + ":" + std::to_string(d.pos.column) + " '" + d.message + "'";
+}
+
+// A diagnostic may point one past the end of its line (a missing ';'), never further.
+std::string check_located(const std::vector<Diagnostic>& diagnostics, std::string_view text,
+                          const char* stage) {
+    const std::vector<std::size_t> lengths = line_lengths(text);
+    for (const Diagnostic& d : diagnostics) {
+        if (d.message.empty()) return std::string(stage) + ": empty message at " + describe(d);
+        if (d.pos.line == 0) continue;
+        if (d.pos.line < 0 || static_cast<std::size_t>(d.pos.line) > lengths.size() ||
+            d.pos.column < 1 ||
+            static_cast<std::size_t>(d.pos.column) > lengths[d.pos.line - 1] + 1)
+            return std::string(stage) + ": diagnostic outside the text at " + describe(d);
+        std::string formatted = format_diagnostic(d, "fuzz.jts", text);
+        if (!formatted.starts_with("fuzz.jts:"))
+            return std::string(stage) + ": badly formatted diagnostic " + formatted;
+    }
+    return {};
+}
+
+}  // namespace
+
+std::string check_scene_text(std::string_view text) {
+    ParseResult parsed = parse_scene(text);
+    if (std::string e = check_located(parsed.diagnostics, text, "parse"); !e.empty()) return e;
+    if (!parsed.ok()) return {};
+    std::vector<Diagnostic> checks = validate_scene(parsed.scene, parsed.source);
+    if (std::string e = check_located(checks, text, "validate"); !e.empty()) return e;
+
+    const std::string canonical = serialize_scene(parsed.scene);
+    ParseResult reparsed = parse_scene(canonical);
+    if (!reparsed.ok()) {
+        std::string first = reparsed.diagnostics.empty() ? "" : describe(reparsed.diagnostics[0]);
+        return "round trip: the serialized scene does not parse: " + first + "\n" + canonical;
+    }
+    if (!(reparsed.scene == parsed.scene))
+        return "round trip: the reparsed scene differs\n" + canonical;
+    if (serialize_scene(reparsed.scene) != canonical)
+        return "round trip: serializing twice gives different text\n" + canonical;
+    return {};
+}
+
+std::string check_bmp_bytes(std::span<const std::uint8_t> bytes) {
+    Image8 image;
+    std::string error = decode_bmp(bytes, image);
+    if (!error.empty()) return {};
+    if (image.width <= 0 || image.height <= 0 ||
+        image.rgb.size() != static_cast<std::size_t>(image.width) * image.height * 3)
+        return "decoded image has inconsistent size " + std::to_string(image.width) + "x" +
+               std::to_string(image.height);
+    Image8 again;
+    if (std::string e = decode_bmp(encode_bmp(image), again); !e.empty())
+        return "re-encoded image does not decode: " + e;
+    if (!(again == image)) return "re-encoded image decodes to different pixels";
+    return {};
+}
+
+}  // namespace jt::fuzz
