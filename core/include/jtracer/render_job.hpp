@@ -83,6 +83,11 @@ class RenderJob {
     bool run_pass();
     // Thread-safe; run() and run_pass() return within milliseconds.
     void cancel();
+    // Undoes a cancel once run() or run_pass() has returned: the next run()
+    // continues where the cancel stopped it. Passes and tiles already rendered
+    // are kept; only the tiles the cancel interrupted are rendered again, so the
+    // final image is the same as that of an uninterrupted job.
+    void resume();
 
     // Thread-safe snapshot.
     RenderProgress progress() const;

@@ -56,6 +56,7 @@ CameraFrame frame_for(const PreparedScene& scene, const RenderOptions& o) {
 struct TileBuffer {
     PixelRect rect;
     std::vector<std::uint8_t> rgb;
+    std::vector<Colour> sums;  // the tile's new running sums, when the job accumulates
 
     explicit TileBuffer(const PixelRect& r)
         : rect(r), rgb(static_cast<std::size_t>(r.width()) * r.height() * 3) {}
@@ -90,6 +91,12 @@ struct RenderJob::State {
     Image8 image;
     std::optional<PixelRect> dirty;
 
+    // Tiles of pass `tiles_pass` already published. A pass cancelled part way
+    // keeps them, so that resume() renders only the rest.
+    std::vector<std::uint8_t> tiles_done;
+    std::size_t tiles_pass = SIZE_MAX;
+    std::uint64_t work_before_pass = 0;
+
     mutable std::mutex progress_mutex;  // guards the fields below
     std::size_t next_pass = 0;
     int samples_done = 0;
@@ -97,7 +104,8 @@ struct RenderJob::State {
     std::optional<std::chrono::steady_clock::time_point> pass_started;  // while one runs
     bool cancelled = false;
 
-    void render_tile(const RenderPass& pass, const PixelRect& tile);
+    // False when cancelled before the tile was whole (nothing of it is kept).
+    bool render_tile(const RenderPass& pass, const PixelRect& tile);
     // Both return false when cancelled part way.
     bool render_blocks(int block, const PixelRect& tile, TileBuffer& out, std::uint64_t& rays);
     bool render_samples(const RenderPass& pass, const PixelRect& tile, TileBuffer& out,
@@ -135,6 +143,9 @@ bool RenderJob::State::render_blocks(int b, const PixelRect& tile, TileBuffer& o
 bool RenderJob::State::render_samples(const RenderPass& pass, const PixelRect& tile,
                                       TileBuffer& out, std::uint64_t& rays) {
     const bool accumulate = !sums.empty();
+    // The new sums stay in the tile until it is whole: a tile cancelled part
+    // way leaves `sums` as they were, so its pass can run again after resume().
+    if (accumulate) out.sums.resize(static_cast<std::size_t>(tile.width()) * tile.height());
     for (int y = tile.y0; y < tile.y1; ++y) {
         if (cancel_requested.load(std::memory_order_relaxed)) return false;
         for (int x = tile.x0; x < tile.x1; ++x) {
@@ -146,27 +157,34 @@ bool RenderJob::State::render_samples(const RenderPass& pass, const PixelRect& t
             }
             // Each pixel belongs to one tile, so its running sum needs no lock,
             // and its samples add up in index order whatever the threads do.
-            Colour& sum = sums[static_cast<std::size_t>(y) * options.width + x];
-            if (pass.sample_begin == 0) sum = Colour(0.0);
+            Colour sum = pass.sample_begin == 0
+                             ? Colour(0.0)
+                             : sums[static_cast<std::size_t>(y) * options.width + x];
             for (int k = pass.sample_begin; k < pass.sample_end; ++k) {
                 SampleOffset o = sample_offset(k);
                 sum += clamp01(trace_ray(*scene, camera.position,
                                          camera_direction(camera, x + o.x, y + o.y), 0.0, rays));
             }
+            out.sums[static_cast<std::size_t>(y - tile.y0) * tile.width() + (x - tile.x0)] = sum;
             out.put(x, y, sum / static_cast<double>(pass.sample_end));
         }
     }
+    if (accumulate)
+        for (int y = tile.y0; y < tile.y1; ++y)
+            std::copy_n(&out.sums[static_cast<std::size_t>(y - tile.y0) * tile.width()],
+                        tile.width(), &sums[static_cast<std::size_t>(y) * options.width + tile.x0]);
     return true;
 }
 
-void RenderJob::State::render_tile(const RenderPass& pass, const PixelRect& tile) {
-    if (cancel_requested.load(std::memory_order_relaxed)) return;
+bool RenderJob::State::render_tile(const RenderPass& pass, const PixelRect& tile) {
+    if (cancel_requested.load(std::memory_order_relaxed)) return false;
     TileBuffer out(tile);
     std::uint64_t tile_rays = 0;
     bool whole = pass.block > 1 ? render_blocks(pass.block, tile, out, tile_rays)
                                 : render_samples(pass, tile, out, tile_rays);
     rays.fetch_add(tile_rays, std::memory_order_relaxed);
     if (whole) publish(tile, out.rgb);
+    return whole;
 }
 
 RenderJob::RenderJob(std::shared_ptr<const PreparedScene> scene, RenderOptions options)
@@ -202,14 +220,19 @@ bool RenderJob::run_pass() {
     }
     const RenderPass& pass = s.passes[index];
     const std::vector<PixelRect> tiles = cut_tiles(s.region, pass.block, tile_blocks);
-    const std::uint64_t work_before = s.work_done.load();
+    if (s.tiles_pass != index) {  // a fresh pass, not one resumed after a cancel
+        s.tiles_pass = index;
+        s.tiles_done.assign(tiles.size(), 0);
+        s.work_before_pass = s.work_done.load();
+    }
     s.arena.execute([&] {
         tbb::parallel_for(
             tbb::blocked_range<std::size_t>(0, tiles.size(), 1),
             [&](const tbb::blocked_range<std::size_t>& range) {
                 for (std::size_t i = range.begin(); i != range.end(); ++i) {
-                    s.render_tile(pass, tiles[i]);
-                    if (s.cancel_requested.load(std::memory_order_relaxed)) return;
+                    if (s.tiles_done[i]) continue;
+                    if (!s.render_tile(pass, tiles[i])) return;
+                    s.tiles_done[i] = 1;
                     // Work in rays of this pass, spread evenly over its tiles.
                     const PixelRect& t = tiles[i];
                     std::uint64_t units =
@@ -234,7 +257,7 @@ bool RenderJob::run_pass() {
         return false;
     }
     // Exact bookkeeping once the pass is whole (tile rounding may differ).
-    s.work_done.store(work_before + pass.work);
+    s.work_done.store(s.work_before_pass + pass.work);
     if (pass.block == 1) s.samples_done = pass.sample_end;
     s.next_pass = index + 1;
     return true;
@@ -247,6 +270,13 @@ void RenderJob::run() {
 
 void RenderJob::cancel() {
     state_->cancel_requested.store(true);
+}
+
+void RenderJob::resume() {
+    State& s = *state_;
+    std::lock_guard lock(s.progress_mutex);
+    s.cancel_requested.store(false);
+    s.cancelled = false;
 }
 
 RenderProgress RenderJob::progress() const {
