@@ -256,15 +256,52 @@ TEST_F(ViewerGl, SaveImageWritesTheCurrentRender) {
     EXPECT_EQ(bytes.substr(0, 2), "BM");
 }
 
-TEST_F(ViewerGl, PauseStopsAndResumeRestarts) {
+TEST_F(ViewerGl, ResumeContinuesThePausedRenderWhereItStopped) {
+    open_scene(state, fs::path(JT_SOURCE_DIR) / "scenes" / "showcase.jts");
+    state.doc.scene.settings.width = 128;
+    state.doc.scene.settings.height = 72;
+    state.doc.scene.settings.samples = 128;  // passes up to 128 samples: time to pause
+    viewer.frame(state);
+    const auto deadline = std::chrono::steady_clock::now() + kTimeout;
+    while (state.renderer.progress().samples_done < 2 &&
+           std::chrono::steady_clock::now() < deadline)
+        viewer.frame(state);
+    viewer.press_key(state, keys::space);
+    ASSERT_TRUE(state.paused);
+    const RenderProgress at_pause = state.renderer.progress();
+    ASSERT_FALSE(at_pause.finished) << "the render finished before the test could pause it";
+    ASSERT_GE(at_pause.samples_done, 2);
+    // Paused: nothing renders, the image stays.
+    const Image8 paused_image = state.display;
+    std::this_thread::sleep_for(std::chrono::milliseconds(50));
+    for (int i = 0; i < 3; ++i) viewer.frame(state);
+    EXPECT_EQ(state.renderer.progress().pass, at_pause.pass);
+    EXPECT_EQ(state.display, paused_image);
+    EXPECT_FALSE(render_complete(state));
+
+    const auto jobs = state.renderer.jobs_started();
+    viewer.press_key(state, keys::space);
+    EXPECT_FALSE(state.paused);
+    EXPECT_GE(state.renderer.progress().samples_done, at_pause.samples_done)
+        << "samples already accumulated are kept";
+    ASSERT_TRUE(viewer.run_until_complete(state, kTimeout));
+    EXPECT_EQ(state.renderer.jobs_started(), jobs) << "the same job continued";
+    // Only the passes left at the pause ran (the interrupted one again).
+    EXPECT_EQ(state.renderer.passes_since_start(), at_pause.pass_count - at_pause.pass);
+    EXPECT_EQ(state.presenter.read_texture(), core_render(state.doc.scene, 0));
+}
+
+TEST_F(ViewerGl, EditsWhilePausedRenderAfresh) {
     open_scene(state, kScene);
     viewer.frame(state);
     viewer.press_key(state, keys::space);
-    EXPECT_TRUE(state.paused);
-    EXPECT_FALSE(render_complete(state));
+    edit_scene(state, [](Scene& s) { s.primitives[1].material.pigment = Colour(0, 1, 0); });
+    viewer.frame(state);
+    const auto jobs = state.renderer.jobs_started();
     viewer.press_key(state, keys::space);
-    EXPECT_FALSE(state.paused);
-    EXPECT_TRUE(viewer.run_until_complete(state, kTimeout));
+    ASSERT_TRUE(viewer.run_until_complete(state, kTimeout));
+    EXPECT_EQ(state.renderer.jobs_started(), jobs + 1);
+    EXPECT_EQ(state.presenter.read_texture(), core_render(state.doc.scene, 0));
 }
 
 TEST_F(ViewerGl, AnEditCancelsTheRunningRenderAndRestartsAtOnce) {

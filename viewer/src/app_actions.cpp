@@ -175,10 +175,17 @@ void copy_free_camera_to_scene(AppState& state, const std::string& name) {
 void toggle_pause(AppState& state) {
     state.paused = !state.paused;
     if (state.paused) {
-        state.renderer.stop();
-        state.started.reset();  // resuming starts the render again
+        state.renderer.pause();
+        state.message = "Paused";
+        return;
     }
-    state.message = state.paused ? "Paused" : "Rendering";
+    state.message = "Rendering";
+    // Continue the paused render when it still answers what should be shown;
+    // otherwise (edited while paused) update_render starts a new one.
+    std::string note;
+    const std::optional<RenderRequest> request = render_request(state, note);
+    if (!state.started || request != state.started || !state.renderer.resume())
+        state.started.reset();
 }
 
 std::optional<RenderRequest> render_request(const AppState& state, std::string& note) {

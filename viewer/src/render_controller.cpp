@@ -23,6 +23,10 @@ void RenderController::stop() {
     join();
 }
 
+void RenderController::run_passes(RenderJob& job) {
+    while (!stop_requested_ && job.run_pass()) ++passes_run_;
+}
+
 void RenderController::start(const Scene& scene, const RenderOptions& options) {
     stop();
     std::shared_ptr<const PreparedScene> previous;
@@ -34,6 +38,7 @@ void RenderController::start(const Scene& scene, const RenderOptions& options) {
     }
     stop_requested_ = false;
     worker_done_ = false;
+    passes_run_ = 0;
     ++jobs_started_;
     worker_ = std::thread([this, scene, options, previous] {
         try {
@@ -44,7 +49,7 @@ void RenderController::start(const Scene& scene, const RenderOptions& options) {
                 prepared_ = prepared;
                 job_ = job;
             }
-            if (!stop_requested_) job->run();
+            if (!stop_requested_) run_passes(*job);
         } catch (const std::exception& e) {
             std::lock_guard lock(mutex_);
             error_ = std::string("the render failed: ") + e.what();
@@ -54,6 +59,30 @@ void RenderController::start(const Scene& scene, const RenderOptions& options) {
         }
         worker_done_ = true;
     });
+}
+
+bool RenderController::resume() {
+    stop();
+    std::shared_ptr<RenderJob> job;
+    {
+        std::lock_guard lock(mutex_);
+        job = job_;
+    }
+    if (!job) return false;
+    job->resume();
+    stop_requested_ = false;
+    worker_done_ = false;
+    passes_run_ = 0;
+    worker_ = std::thread([this, job] {
+        try {
+            run_passes(*job);
+        } catch (const std::exception& e) {
+            std::lock_guard lock(mutex_);
+            error_ = std::string("the render failed: ") + e.what();
+        }
+        worker_done_ = true;
+    });
+    return true;
 }
 
 std::optional<PixelRect> RenderController::fetch(Image8& display) {

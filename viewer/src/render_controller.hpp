@@ -1,7 +1,8 @@
 #pragma once
 // Runs the core's progressive RenderJob on a background thread so the UI never
 // waits for it. Any change starts a new job: the old one is cancelled (the core
-// stops within milliseconds) and joined first, so at most one job runs.
+// stops within milliseconds) and joined first, so at most one job runs. A
+// paused job is kept, and resuming it renders only what it had not finished.
 
 #include "jtracer/render_job.hpp"
 #include "jtracer/scene.hpp"
@@ -28,6 +29,12 @@ class RenderController {
     void start(const Scene& scene, const RenderOptions& options);
     // Stops the running job; the pixels fetched so far stay.
     void stop();
+    // Stops the running job so that resume() can continue it.
+    void pause() { stop(); }
+    // Continues the stopped job from where it stopped: finished passes and
+    // accumulated samples are kept. False when there is no job to continue
+    // (none was started, or its scene could not be prepared).
+    bool resume();
 
     // Copies pixels that changed into `display`; returns the changed rectangle.
     std::optional<PixelRect> fetch(Image8& display);
@@ -38,9 +45,13 @@ class RenderController {
     // Why the last job could not run, or empty.
     std::string error() const;
     std::uint64_t jobs_started() const { return jobs_started_; }
+    // Passes the current job has completed on this controller's thread since
+    // it was started or last resumed.
+    int passes_since_start() const { return passes_run_; }
 
   private:
     void join();
+    void run_passes(RenderJob& job);
 
     std::thread worker_;
     mutable std::mutex mutex_;
@@ -49,6 +60,7 @@ class RenderController {
     std::string error_;                              // guarded by mutex_
     std::atomic<bool> stop_requested_{false};
     std::atomic<bool> worker_done_{true};
+    std::atomic<int> passes_run_{0};
     std::uint64_t jobs_started_ = 0;
 };
 
