@@ -9,6 +9,8 @@
 
 #include "jtracer/scene.hpp"
 
+#include <glm/geometric.hpp>
+
 #include <cmath>
 #include <limits>
 

@@ -1,0 +1,184 @@
+// jts-to-pov: writes a POV-Ray 3.7 scene that renders what a .jts scene means,
+// so that the benchmark can race the two renderers on the same picture.
+//
+// It reads the file with the core's own parser, so it sees exactly what
+// JTracer sees. POV-Ray is left-handed, so every point, vector and transform is
+// mirrored in z (S = diag(1, 1, -1); a map M becomes S M S), which shows the
+// same image. Shading maps term by term (SEMANTICS.md 6):
+//   ambient_light * ambient * pigment -> global ambient_light, finish ambient (a colour)
+//   diffuse * pigment * (N.L)^(1/diffuse_k) -> finish diffuse, brilliance 1/diffuse_k
+//   specular * (R.V)^specular_k -> phong, phong_size (POV-Ray's phong is a number:
+//                                  a coloured specular becomes its mean)
+//   reflection -> reflection, recurse_depth + 1 -> max_trace_level
+// with no gamma anywhere (assumed_gamma 1; render with File_Gamma=1.0).
+
+#include "geometry/affine.hpp"
+#include "jtracer/atomic_file.hpp"
+#include "jtracer/scene_file.hpp"
+#include "jtracer/validate.hpp"
+
+#include <glm/geometric.hpp>
+
+#include <algorithm>
+#include <cmath>
+#include <cstdarg>
+#include <cstdio>
+#include <iostream>
+#include <numbers>
+#include <string>
+#include <string_view>
+
+namespace {
+
+using jt::Vec3;
+
+constexpr int exit_scene_errors = 1, exit_usage = 2, exit_io = 3;
+
+Vec3 mirror(const Vec3& v) {
+    return {v.x, v.y, -v.z};
+}
+
+class PovWriter {
+  public:
+    void printf(const char* format, ...) __attribute__((format(printf, 2, 3))) {
+        char buffer[512];
+        va_list args;
+        va_start(args, format);
+        int n = std::vsnprintf(buffer, sizeof buffer, format, args);
+        va_end(args);
+        if (n > 0)
+            text_.append(buffer, static_cast<std::size_t>(std::min<int>(n, sizeof buffer - 1)));
+    }
+    void vector(const char* prefix, const Vec3& v) {
+        printf("%s<%.9g, %.9g, %.9g>", prefix, v.x, v.y, v.z);
+    }
+    const std::string& text() const { return text_; }
+
+  private:
+    std::string text_;
+};
+
+double mean(const jt::Colour& c) {
+    return (c.x + c.y + c.z) / 3.0;
+}
+
+void write_material(PovWriter& out, const jt::Material& m) {
+    // POV-Ray's diffuse is a number. A grey diffuse maps straight; a coloured
+    // one is folded into the pigment, with the ambient scaled back so that
+    // ambient * pigment is unchanged wherever the diffuse channel is not zero.
+    jt::Colour pigment = m.pigment, ambient = m.ambient;
+    double diffuse = std::max({m.diffuse.x, m.diffuse.y, m.diffuse.z});
+    if (diffuse > 0.0 && !(m.diffuse.x == m.diffuse.y && m.diffuse.y == m.diffuse.z)) {
+        for (int i = 0; i < 3; ++i) {
+            double share = m.diffuse[i] / diffuse;
+            pigment[i] *= share;
+            ambient[i] = share > 0.0 ? ambient[i] / share : 0.0;
+        }
+    }
+    out.vector(" texture { pigment { rgb ", pigment);
+    out.vector(" } finish { ambient rgb ", ambient);
+    out.printf(" diffuse %.9g brilliance %.9g", diffuse, 1.0 / m.diffuse_k);
+    if (mean(m.specular) > 0.0)
+        out.printf(" phong %.9g phong_size %.9g", mean(m.specular), m.specular_k);
+    if (m.reflection > 0.0) out.printf(" reflection { %.9g }", m.reflection);
+    out.printf(" } }");
+}
+
+// POV-Ray's `matrix` lists the images of the x, y, z axes and the translation,
+// each as a row.
+void write_matrix(PovWriter& out, const jt::Affine& world) {
+    glm::dmat3 s(1.0);
+    s[2][2] = -1.0;
+    glm::dmat3 linear = s * world.linear * s;
+    out.printf(" matrix <");
+    for (int axis = 0; axis < 3; ++axis)
+        out.printf("%.9g, %.9g, %.9g, ", linear[axis].x, linear[axis].y, linear[axis].z);
+    Vec3 t = mirror(world.translation);
+    out.printf("%.9g, %.9g, %.9g>", t.x, t.y, t.z);
+}
+
+void write_primitive(PovWriter& out, const jt::Primitive& p) {
+    jt::Affine world = jt::compose_transforms(p.transforms);
+    if (!p.transforms.empty() && !jt::invert(world)) return;  // flattened: JTracer leaves it out
+    // Planes and spheres are written mirrored and then moved by the mirrored
+    // map; the map of an untransformed primitive is the identity and is left out.
+    if (const auto* sphere = std::get_if<jt::Sphere>(&p.shape)) {
+        out.vector("sphere { ", mirror(sphere->center));
+        out.printf(", %.9g", sphere->radius);
+    } else if (const auto* plane = std::get_if<jt::Plane>(&p.shape)) {
+        double length = glm::length(plane->normal);
+        if (!(length > 0.0)) return;
+        out.vector("plane { ", mirror(plane->normal / length));
+        out.printf(", %.9g", plane->distance);
+    } else if (const auto* cylinder = std::get_if<jt::Cylinder>(&p.shape)) {
+        out.printf("cylinder { <0, 0, 0>, <0, %.9g, 0>, %.9g", cylinder->height, cylinder->radius);
+    }
+    write_material(out, p.material);
+    if (!p.transforms.empty()) write_matrix(out, world);
+    out.printf(" }\n");
+}
+
+void write_camera(PovWriter& out, const jt::Camera& camera) {
+    // SEMANTICS.md 5: the ray is f + sx r + sy u with |sx| <= t * aspect, |sy| <= t.
+    // POV-Ray spans `right` and `up` over the image and scales `direction` so that
+    // `angle` is the full horizontal field of view: 2 atan(t * aspect).
+    Vec3 f = glm::normalize(camera.look_at - camera.position);
+    Vec3 r = glm::normalize(glm::cross(f, camera.up));
+    Vec3 u = glm::cross(r, f);
+    double t = std::tan(camera.fov * 0.5 * std::numbers::pi / 180.0);
+    double angle = 2.0 * std::atan(t * camera.aspect) * 180.0 / std::numbers::pi;
+    out.vector("camera { perspective location ", mirror(camera.position));
+    out.vector(" direction ", mirror(f));
+    out.vector(" right ", mirror(r) * camera.aspect);
+    out.vector(" up ", mirror(u));
+    out.printf(" angle %.12g }\n", angle);
+}
+
+std::string convert(const jt::Scene& scene, int camera_index) {
+    PovWriter out;
+    const jt::RenderSettings& s = scene.settings;
+    out.printf("// Written by jts-to-pov. Render with -A +WT2 File_Gamma=1.0 +W%d +H%d\n", s.width,
+               s.height);
+    out.printf("#version 3.7;\n");
+    out.vector("global_settings { assumed_gamma 1.0 ambient_light rgb ", s.ambient_light);
+    out.printf(" max_trace_level %d }\n", std::min(s.recurse_depth, 255) + 1);
+    out.vector("background { rgb ", s.background);
+    out.printf(" }\n");
+    if (camera_index >= 0) write_camera(out, scene.cameras[static_cast<std::size_t>(camera_index)]);
+    for (const jt::PointLight& light : scene.lights) {
+        if (light.intensity == jt::Colour(0.0)) continue;
+        out.vector("light_source { ", mirror(light.position));
+        out.vector(", rgb ", light.intensity);
+        out.printf(" }\n");
+    }
+    for (const jt::Primitive& p : scene.primitives) write_primitive(out, p);
+    return out.text();
+}
+
+}  // namespace
+
+int main(int argc, char** argv) {
+    if (argc != 3 || std::string_view(argv[1]).starts_with("-")) {
+        std::cerr << "usage: jts-to-pov SCENE.jts OUT.pov\n"
+                     "Writes a POV-Ray 3.7 scene that renders like the JTracer scene.\n";
+        return exit_usage;
+    }
+    jt::LoadedScene loaded = jt::load_scene_file(argv[1]);
+    if (!loaded.read_ok()) {
+        std::cerr << "jts-to-pov: " << loaded.io_error << "\n";
+        return exit_io;
+    }
+    auto diagnostics = jt::check_scene(loaded);
+    if (jt::has_errors(diagnostics)) {
+        std::cerr << jt::format_diagnostics(diagnostics, loaded.path, loaded.text);
+        return exit_scene_errors;
+    }
+    std::string pov = convert(loaded.parsed.scene, jt::active_camera_index(loaded.parsed.scene));
+    std::string error = jt::write_file_atomically(
+        argv[2], {reinterpret_cast<const std::uint8_t*>(pov.data()), pov.size()});
+    if (!error.empty()) {
+        std::cerr << "jts-to-pov: " << error << "\n";
+        return exit_io;
+    }
+    return 0;
+}

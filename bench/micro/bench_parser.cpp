@@ -1,0 +1,71 @@
+// Parser throughput in bytes of scene text a second, on two layouts of the
+// same random spheres: "normal" (one property a line, indented, as people
+// write scenes) and "dense" (all on one line, no spaces, as generators write).
+
+#include "jtracer/parser.hpp"
+
+#include <benchmark/benchmark.h>
+
+#include <cstdio>
+#include <random>
+#include <string>
+
+namespace {
+
+constexpr int sphere_count = 20000;
+
+std::string scene_header() {
+    return "render_settings { width: 640; height: 480; }\n"
+           "cameras { perspective_camera { position: <0, 0, 10>; } }\n"
+           "scene {\n";
+}
+
+std::string spheres(bool dense) {
+    std::mt19937 rng(1);
+    std::uniform_real_distribution<double> u(-10.0, 10.0), c(0.0, 1.0);
+    std::string text = scene_header();
+    char buffer[512];
+    const char* format =
+        dense ? "sphere{center:<%.4f,%.4f,%.4f>;radius:%.4f;material{pigment:<%.3f,%.3f,%.3f>;"
+                "ambient:<0.2,0.2,0.2>;diffuse:<0.8,0.8,0.8>;}}"
+              : "    sphere {\n        center: <%.4f, %.4f, %.4f>;\n        radius: %.4f;\n"
+                "        material {\n            pigment: <%.3f, %.3f, %.3f>;\n"
+                "            ambient: <0.2, 0.2, 0.2>;\n            diffuse: <0.8, 0.8, 0.8>;\n"
+                "        }\n    }\n";
+    for (int i = 0; i < sphere_count; ++i) {
+        double x = u(rng), y = u(rng), z = u(rng), r = c(rng);
+        double cr = c(rng), cg = c(rng), cb = c(rng);
+        std::snprintf(buffer, sizeof buffer, format, x, y, z, r, cr, cg, cb);
+        text += buffer;
+    }
+    text += "\n}\n";
+    return text;
+}
+
+void parse(benchmark::State& state, const std::string& text) {
+    for (auto _ : state) {
+        jt::ParseResult result = jt::parse_scene(text);
+        if (!result.ok() || result.scene.primitives.size() != sphere_count)
+            state.SkipWithError("the benchmark scene did not parse");
+        benchmark::DoNotOptimize(result);
+    }
+    state.SetBytesProcessed(static_cast<std::int64_t>(state.iterations()) *
+                            static_cast<std::int64_t>(text.size()));
+}
+
+void BM_ParseNormal(benchmark::State& state) {
+    static const std::string text = spheres(false);
+    parse(state, text);
+}
+
+void BM_ParseDense(benchmark::State& state) {
+    static const std::string text = spheres(true);
+    parse(state, text);
+}
+
+BENCHMARK(BM_ParseNormal)->Unit(benchmark::kMillisecond);
+BENCHMARK(BM_ParseDense)->Unit(benchmark::kMillisecond);
+
+}  // namespace
+
+BENCHMARK_MAIN();
