@@ -51,8 +51,8 @@ struct RenderOptions {
     int threads = 0;       // 0: every core
     bool previews = true;  // run the 1/8, 1/4, 1/2 passes first
     // Render only this window of the full image. The pixels inside are exactly
-    // those of a full render; the image still has the full size, and the pixels
-    // outside stay black.
+    // those of a full render; image() still has the full size, with the pixels
+    // outside black, and region_image() has the window alone.
     std::optional<PixelRect> region;
 };
 
@@ -100,6 +100,10 @@ class RenderJob {
 
     // The image as it stands: final once progress().finished.
     Image8 image() const;
+    // Only the pixels of the region (the whole image without one), as an image
+    // of the region's size, row 0 at the region's bottom. The job keeps only
+    // these, so a small region of a huge frame needs little memory.
+    Image8 region_image() const;
 
     const RenderOptions& options() const;
 

@@ -80,7 +80,8 @@ struct RenderJob::State {
     std::vector<RenderPass> passes;
     std::uint64_t total_work = 0;
     tbb::task_arena arena;
-    // Running sums of clamped samples, one colour a pixel; only when samples > 1.
+    // Running sums of clamped samples, one colour a pixel of the region; only
+    // when samples > 1.
     std::vector<Colour> sums;
 
     std::atomic<bool> cancel_requested{false};
@@ -88,7 +89,7 @@ struct RenderJob::State {
     std::atomic<std::uint64_t> work_done{0};
 
     mutable std::mutex image_mutex;  // guards image and dirty
-    Image8 image;
+    Image8 image;                    // the region's pixels only: a small region needs little memory
     std::optional<PixelRect> dirty;
 
     // Tiles of pass `tiles_pass` already published. A pass cancelled part way
@@ -111,6 +112,20 @@ struct RenderJob::State {
     bool render_samples(const RenderPass& pass, const PixelRect& tile, TileBuffer& out,
                         std::uint64_t& rays);
     void publish(const PixelRect& tile, const std::vector<std::uint8_t>& rgb);
+
+    std::size_t sum_index(int x, int y) const {
+        return static_cast<std::size_t>(y - region.y0) * static_cast<std::size_t>(region.width()) +
+               static_cast<std::size_t>(x - region.x0);
+    }
+    // The full-size image, black outside the region; image_mutex held.
+    Image8 full_image() const {
+        if (image.width == options.width && image.height == options.height) return image;
+        Image8 full(options.width, options.height);
+        const std::size_t row_bytes = static_cast<std::size_t>(region.width()) * 3;
+        for (int y = region.y0; y < region.y1; ++y)
+            std::copy_n(image.pixel(0, y - region.y0), row_bytes, full.pixel(region.x0, y));
+        return full;
+    }
 };
 
 void RenderJob::State::publish(const PixelRect& tile, const std::vector<std::uint8_t>& rgb) {
@@ -118,7 +133,7 @@ void RenderJob::State::publish(const PixelRect& tile, const std::vector<std::uin
     const std::size_t row_bytes = static_cast<std::size_t>(tile.width()) * 3;
     for (int y = tile.y0; y < tile.y1; ++y)
         std::copy_n(&rgb[static_cast<std::size_t>(y - tile.y0) * row_bytes], row_bytes,
-                    image.pixel(tile.x0, y));
+                    image.pixel(tile.x0 - region.x0, y - region.y0));
     dirty = unite(dirty, tile);
 }
 
@@ -157,9 +172,7 @@ bool RenderJob::State::render_samples(const RenderPass& pass, const PixelRect& t
             }
             // Each pixel belongs to one tile, so its running sum needs no lock,
             // and its samples add up in index order whatever the threads do.
-            Colour sum = pass.sample_begin == 0
-                             ? Colour(0.0)
-                             : sums[static_cast<std::size_t>(y) * options.width + x];
+            Colour sum = pass.sample_begin == 0 ? Colour(0.0) : sums[sum_index(x, y)];
             for (int k = pass.sample_begin; k < pass.sample_end; ++k) {
                 SampleOffset o = sample_offset(k);
                 sum += clamp01(trace_ray(*scene, camera.position,
@@ -172,7 +185,7 @@ bool RenderJob::State::render_samples(const RenderPass& pass, const PixelRect& t
     if (accumulate)
         for (int y = tile.y0; y < tile.y1; ++y)
             std::copy_n(&out.sums[static_cast<std::size_t>(y - tile.y0) * tile.width()],
-                        tile.width(), &sums[static_cast<std::size_t>(y) * options.width + tile.x0]);
+                        tile.width(), &sums[sum_index(tile.x0, y)]);
     return true;
 }
 
@@ -202,9 +215,9 @@ RenderJob::RenderJob(std::shared_ptr<const PreparedScene> scene, RenderOptions o
     }
     for (const RenderPass& p : s.passes) s.total_work += p.work;
     if (options.threads > 0) s.arena.initialize(options.threads);
-    s.image = Image8(options.width, options.height);
+    s.image = Image8(s.region.width(), s.region.height());
     if (options.samples > 1 && !s.region.empty())
-        s.sums.assign(static_cast<std::size_t>(options.width) * options.height, Colour(0.0));
+        s.sums.assign(static_cast<std::size_t>(s.region.width()) * s.region.height(), Colour(0.0));
 }
 
 RenderJob::~RenderJob() = default;
@@ -306,22 +319,28 @@ RenderProgress RenderJob::progress() const {
 std::optional<PixelRect> RenderJob::fetch_updates(Image8& display) {
     State& s = *state_;
     std::lock_guard lock(s.image_mutex);
-    if (display.width != s.image.width || display.height != s.image.height ||
-        display.rgb.size() != s.image.rgb.size()) {
-        display = s.image;
+    if (display.width != s.options.width || display.height != s.options.height ||
+        display.rgb.size() != static_cast<std::size_t>(s.options.width) * s.options.height * 3) {
+        display = s.full_image();
         s.dirty.reset();
-        return PixelRect{0, 0, s.image.width, s.image.height};
+        return PixelRect{0, 0, s.options.width, s.options.height};
     }
     if (!s.dirty) return std::nullopt;
     PixelRect r = *s.dirty;
     s.dirty.reset();
     const std::size_t row_bytes = static_cast<std::size_t>(r.width()) * 3;
     for (int y = r.y0; y < r.y1; ++y)
-        std::copy_n(s.image.pixel(r.x0, y), row_bytes, display.pixel(r.x0, y));
+        std::copy_n(s.image.pixel(r.x0 - s.region.x0, y - s.region.y0), row_bytes,
+                    display.pixel(r.x0, y));
     return r;
 }
 
 Image8 RenderJob::image() const {
+    std::lock_guard lock(state_->image_mutex);
+    return state_->full_image();
+}
+
+Image8 RenderJob::region_image() const {
     std::lock_guard lock(state_->image_mutex);
     return state_->image;
 }
