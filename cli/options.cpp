@@ -1,5 +1,7 @@
 #include "options.hpp"
 
+#include "jtracer/image_file.hpp"
+
 #include <CLI/CLI.hpp>
 
 #include <cstdio>
@@ -16,6 +18,7 @@ ParsedOptions parse_options(int argc, char** argv) {
         "  jtracer-cli scenes/showcase.jts                  writes the scene's filename (BMP)\n"
         "  jtracer-cli scenes/showcase.jts -o shot.png --width 1920 --height 1080 --samples 16\n"
         "  jtracer-cli --check scenes/showcase.jts          only checks the scene\n"
+        "  jtracer-cli scenes/showcase.jts --region 0,0,960,540 --region-output -o part.bmp\n"
         "\n"
         "Exit codes: 0 ok, 1 errors in the scene, 2 bad command line, 3 file I/O errors.\n");
     app.set_version_flag("--version", std::string("jtracer-cli ") + JT_VERSION);
@@ -32,10 +35,30 @@ ParsedOptions parse_options(int argc, char** argv) {
         ->check(CLI::Range(1, 1024));
     app.add_option("--threads", o.threads, "Worker threads; 0 uses every core")
         ->check(CLI::Range(0, 4096));
+    app.add_option_function<std::string>(
+           "--region",
+           [&o](const std::string& text) {
+               std::string error;
+               o.region = jt::parse_frame_region(text, error);
+               if (!o.region) throw CLI::ValidationError("--region", error);
+           },
+           "Render only the pixels X0 <= x < X1, Y0 <= y < Y1, counted from the top-left "
+           "corner as image viewers show them; the rest of the image stays black")
+        ->type_name("X0,Y0,X1,Y1");
+    app.add_flag("--region-output", o.region_output,
+                 "With --region: write only the region, as a BMP that records where it belongs "
+                 "(jtracer-merge assembles such parts)");
     app.add_flag("--check", o.check_only, "Only parse and validate the scene; write nothing");
     app.add_flag("-q,--quiet", o.quiet, "No progress bar, summary or warnings; errors still show");
     try {
         app.parse(argc, argv);
+        if (o.region_output && !o.region)
+            throw CLI::ValidationError("--region-output", "needs --region X0,Y0,X1,Y1");
+        if (o.region_output && o.output &&
+            jt::format_from_extension(*o.output) != jt::ImageFormat::bmp)
+            throw CLI::ValidationError("--region-output",
+                                       "writes a BMP (its placement record lives in the BMP); "
+                                       "name the output .bmp");
     } catch (const CLI::CallForHelp& e) {
         parsed.exit_code = app.exit(e);
     } catch (const CLI::CallForVersion& e) {

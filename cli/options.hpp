@@ -1,6 +1,8 @@
 #pragma once
 // jtracer-cli's command line, parsed into a plain struct.
 
+#include "jtracer/region.hpp"
+
 #include <optional>
 #include <string>
 #include <vector>
@@ -18,6 +20,9 @@ struct Options {
     std::optional<int> height;
     std::optional<int> samples;
     int threads = 0;  // 0: every core
+    // Render only this window (top-left origin, region.hpp); the rest stays black.
+    std::optional<jt::FrameRegion> region;
+    bool region_output = false;  // write the region alone, as a region file (region_file.hpp)
     bool check_only = false;
     bool quiet = false;
 };

@@ -1,0 +1,77 @@
+#include "jtracer/merge_regions.hpp"
+
+#include <cstdint>
+
+namespace jt {
+
+namespace {
+
+std::string size_text(int w, int h) {
+    return std::to_string(w) + "x" + std::to_string(h);
+}
+
+// Empty when `part` is whole and fits the first part's frame.
+std::string check_part(const RegionPart& part, const RegionPart& first) {
+    const RegionPlacement& p = part.placement;
+    const RegionPlacement& f = first.placement;
+    if (p.frame_width != f.frame_width || p.frame_height != f.frame_height)
+        return part.name + " is a part of a " + size_text(p.frame_width, p.frame_height) +
+               " frame, but " + first.name + " of a " + size_text(f.frame_width, f.frame_height) +
+               " one";
+    if (std::string error = check_region_in_frame(p.region, p.frame_width, p.frame_height);
+        !error.empty())
+        return part.name + ": " + error;
+    if (part.pixels.width != p.region.width() || part.pixels.height != p.region.height())
+        return part.name + " holds " + size_text(part.pixels.width, part.pixels.height) +
+               " pixels, but declares the " + size_text(p.region.width(), p.region.height()) +
+               " region " + format_frame_region(p.region);
+    return {};
+}
+
+bool overlap(const FrameRegion& a, const FrameRegion& b) {
+    return a.x0 < b.x1 && b.x0 < a.x1 && a.y0 < b.y1 && b.y0 < a.y1;
+}
+
+// The first pixel, in reading order, that no part covers (parts known not to
+// overlap and to lie in the frame).
+std::optional<std::pair<int, int>> first_gap(const std::vector<RegionPart>& parts, int w, int h) {
+    std::vector<std::uint8_t> covered(static_cast<std::size_t>(w) * h, 0);
+    for (const RegionPart& part : parts) {
+        const FrameRegion& r = part.placement.region;
+        for (int y = r.y0; y < r.y1; ++y)
+            std::fill_n(&covered[static_cast<std::size_t>(y) * w + r.x0], r.width(), 1);
+    }
+    for (int y = 0; y < h; ++y)
+        for (int x = 0; x < w; ++x)
+            if (!covered[static_cast<std::size_t>(y) * w + x]) return std::pair{x, y};
+    return std::nullopt;
+}
+
+}  // namespace
+
+std::string merge_regions(const std::vector<RegionPart>& parts, Image8& frame) {
+    if (parts.empty()) return "no parts to merge";
+    for (const RegionPart& part : parts)
+        if (std::string error = check_part(part, parts.front()); !error.empty()) return error;
+    for (std::size_t i = 0; i < parts.size(); ++i)
+        for (std::size_t j = i + 1; j < parts.size(); ++j)
+            if (overlap(parts[i].placement.region, parts[j].placement.region))
+                return parts[i].name + " (region " +
+                       format_frame_region(parts[i].placement.region) + ") overlaps " +
+                       parts[j].name + " (region " +
+                       format_frame_region(parts[j].placement.region) + ")";
+    const int w = parts.front().placement.frame_width;
+    const int h = parts.front().placement.frame_height;
+    if (auto gap = first_gap(parts, w, h))
+        return "the parts leave a gap: no part covers pixel " + std::to_string(gap->first) + "," +
+               std::to_string(gap->second) + " (top-left origin) of the " + size_text(w, h) +
+               " frame";
+    frame = Image8(w, h);
+    for (const RegionPart& part : parts) {
+        PixelRect r = to_image_rect(part.placement.region, h);
+        paste_image(frame, part.pixels, r.x0, r.y0);
+    }
+    return {};
+}
+
+}  // namespace jt

@@ -1,0 +1,86 @@
+// jtracer-merge: assembles the region files of one frame (written by
+// `jtracer-cli --region ... --region-output`) into the whole image. Each part
+// carries where it belongs (region_file.hpp), so the order and names of the
+// parts do not matter.
+
+#include "jtracer/image_file.hpp"
+#include "jtracer/merge_regions.hpp"
+
+#include <CLI/CLI.hpp>
+
+#include <exception>
+#include <iostream>
+#include <new>
+
+namespace {
+
+enum ExitCode : int { exit_ok = 0, exit_bad_parts = 1, exit_usage = 2, exit_io_error = 3 };
+
+int merge(const std::vector<std::string>& part_paths, const std::string& output, bool quiet) {
+    std::vector<jt::RegionPart> parts(part_paths.size());
+    for (std::size_t i = 0; i < parts.size(); ++i) {
+        parts[i].name = part_paths[i];
+        if (std::string error =
+                jt::read_region_bmp(part_paths[i], parts[i].pixels, parts[i].placement);
+            !error.empty()) {
+            std::cerr << "jtracer-merge: " << error << "; nothing was written\n";
+            return exit_io_error;
+        }
+    }
+    jt::Image8 frame;
+    if (std::string error = jt::merge_regions(parts, frame); !error.empty()) {
+        std::cerr << "jtracer-merge: " << error << "; nothing was written\n";
+        return exit_bad_parts;
+    }
+    if (std::string error = jt::write_image(output, frame, jt::format_from_extension(output));
+        !error.empty()) {
+        std::cerr << "jtracer-merge: " << error << "\n";
+        return exit_io_error;
+    }
+    if (!quiet)
+        std::cerr << "wrote " << output << ": " << frame.width << "x" << frame.height << " from "
+                  << parts.size() << " parts\n";
+    return exit_ok;
+}
+
+}  // namespace
+
+int main(int argc, char** argv) {
+    std::vector<std::string> part_paths;
+    std::string output;
+    bool quiet = false;
+    CLI::App app{
+        "jtracer-merge: assembles region files written by 'jtracer-cli --region X0,Y0,X1,Y1 "
+        "--region-output' into the whole frame."};
+    app.footer(
+        "Each part records its frame size and region, so any order works:\n"
+        "  jtracer-merge -o frame.bmp parts/*.bmp\n"
+        "Parts that overlap, leave a gap, reach out of the frame or belong to frames of\n"
+        "different sizes are refused and nothing is written.\n"
+        "\n"
+        "Exit codes: 0 ok, 1 parts that do not make one frame, 2 bad command line, 3 file I/O "
+        "errors.\n");
+    app.set_version_flag("--version", std::string("jtracer-merge ") + JT_VERSION);
+    app.add_option("-o,--output", output,
+                   "The whole frame; a name ending in .png gives a PNG, anything else a BMP")
+        ->required();
+    app.add_option("parts", part_paths, "The region files (BMP)")->required();
+    app.add_flag("-q,--quiet", quiet, "No summary; errors still show");
+    try {
+        app.parse(argc, argv);
+    } catch (const CLI::CallForHelp& e) {
+        return app.exit(e);
+    } catch (const CLI::CallForVersion& e) {
+        return app.exit(e);
+    } catch (const CLI::ParseError& e) {
+        std::cerr << "jtracer-merge: " << e.what()
+                  << "\nRun 'jtracer-merge --help' for the options.\n";
+        return exit_usage;
+    }
+    try {
+        return merge(part_paths, output, quiet);
+    } catch (const std::bad_alloc&) {
+        std::cerr << "jtracer-merge: out of memory; nothing was written\n";
+        return exit_io_error;
+    }
+}

@@ -1,0 +1,81 @@
+// merge_regions: what makes one frame out of parts, and what it refuses.
+
+#include "jtracer/merge_regions.hpp"
+
+#include <gtest/gtest.h>
+
+namespace jt {
+namespace {
+
+// A part of a 6x4 frame whose pixels encode their frame position.
+RegionPart part(const std::string& name, FrameRegion region, int frame_w = 6, int frame_h = 4) {
+    RegionPart p;
+    p.name = name;
+    p.placement = {frame_w, frame_h, region};
+    p.pixels = Image8(region.width(), region.height());
+    for (int y = 0; y < region.height(); ++y)
+        for (int x = 0; x < region.width(); ++x) {
+            // Image8 row y of the part is frame row (top-left origin) y1 - 1 - y.
+            p.pixels.pixel(x, y)[0] = static_cast<std::uint8_t>(region.x0 + x);
+            p.pixels.pixel(x, y)[1] = static_cast<std::uint8_t>(region.y1 - 1 - y);
+        }
+    return p;
+}
+
+TEST(Merge, AssemblesPartsInAnyOrder) {
+    std::vector<RegionPart> parts = {part("b", {0, 2, 6, 4}), part("c", {4, 0, 6, 2}),
+                                     part("a", {0, 0, 4, 2})};
+    Image8 frame;
+    ASSERT_EQ(merge_regions(parts, frame), "");
+    ASSERT_EQ(frame.width, 6);
+    ASSERT_EQ(frame.height, 4);
+    for (int y = 0; y < 4; ++y)
+        for (int x = 0; x < 6; ++x) {
+            EXPECT_EQ(frame.pixel(x, y)[0], x);
+            EXPECT_EQ(frame.pixel(x, y)[1], 3 - y) << "top-left origin: Image8 row 0 is the bottom";
+        }
+}
+
+TEST(Merge, RefusesOverlap) {
+    Image8 frame;
+    std::string error = merge_regions({part("a", {0, 0, 4, 4}), part("b", {3, 0, 6, 4})}, frame);
+    EXPECT_EQ(error, "a (region 0,0,4,4) overlaps b (region 3,0,6,4)");
+    EXPECT_EQ(frame.width, 0) << "nothing assembled";
+}
+
+TEST(Merge, RefusesGapsNamingAnUncoveredPixel) {
+    Image8 frame;
+    std::string error = merge_regions({part("a", {0, 0, 6, 2}), part("b", {0, 2, 5, 4})}, frame);
+    EXPECT_NE(error.find("gap: no part covers pixel 5,2"), std::string::npos) << error;
+}
+
+TEST(Merge, RefusesPartsOfDifferentFrames) {
+    Image8 frame;
+    std::string error =
+        merge_regions({part("a", {0, 0, 6, 2}), part("b", {0, 2, 6, 4}, 6, 5)}, frame);
+    EXPECT_EQ(error, "b is a part of a 6x5 frame, but a of a 6x4 one");
+}
+
+TEST(Merge, RefusesPixelsThatDoNotMatchTheDeclaredRegion) {
+    RegionPart bad = part("b", {0, 2, 6, 4});
+    bad.pixels = Image8(6, 1);
+    Image8 frame;
+    std::string error = merge_regions({part("a", {0, 0, 6, 2}), bad}, frame);
+    EXPECT_EQ(error, "b holds 6x1 pixels, but declares the 6x2 region 0,2,6,4");
+}
+
+TEST(Merge, RefusesPartsOutOfTheFrame) {
+    RegionPart out = part("b", {0, 2, 6, 5});
+    Image8 frame;
+    std::string error = merge_regions({part("a", {0, 0, 6, 2}), out}, frame);
+    EXPECT_NE(error.find("b: region 0,2,6,5 reaches past the bottom edge"), std::string::npos)
+        << error;
+}
+
+TEST(Merge, RefusesNoParts) {
+    Image8 frame;
+    EXPECT_EQ(merge_regions({}, frame), "no parts to merge");
+}
+
+}  // namespace
+}  // namespace jt

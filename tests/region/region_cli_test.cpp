@@ -1,0 +1,146 @@
+// jtracer-cli --region / --region-output and jtracer-merge end to end: parts
+// rendered separately merge to the exact bytes of a whole render.
+
+#include "command.hpp"
+
+#include "jtracer/bmp.hpp"
+#include "jtracer/region.hpp"
+
+namespace jt {
+namespace {
+
+using test::CommandRun;
+
+const std::string cli = "'" JT_CLI "' ";
+const std::string merge = "'" JT_MERGE "' ";
+const std::string showcase = "'" JT_SOURCE_DIR "/scenes/showcase.jts' ";
+const std::string manual = "'" JT_SOURCE_DIR "/scenes/manual/transform.jts' ";
+
+class RegionCli : public test::ScratchDir {
+  protected:
+    // Renders `scene` whole and as the given parts, merges, and compares bytes.
+    void expect_parts_merge_to_whole(const std::string& scene, const std::string& size,
+                                     const std::vector<std::string>& regions) {
+        CommandRun whole = run(cli + scene + size + " -q -o whole.bmp");
+        ASSERT_EQ(whole.code, 0) << whole.err;
+        std::string names;
+        for (std::size_t i = 0; i < regions.size(); ++i) {
+            std::string name = "part" + std::to_string(i) + ".bmp";
+            CommandRun r = run(cli + scene + size + " -q --region " + regions[i] +
+                               " --region-output -o " + name);
+            ASSERT_EQ(r.code, 0) << regions[i] << ": " << r.err;
+            names += " " + name;
+        }
+        CommandRun m = run(merge + "-o merged.bmp" + names);
+        ASSERT_EQ(m.code, 0) << m.err;
+        EXPECT_NE(m.err.find("from " + std::to_string(regions.size()) + " parts"),
+                  std::string::npos)
+            << m.err;
+        EXPECT_EQ(test::file_text(dir / "merged.bmp"), test::file_text(dir / "whole.bmp"))
+            << "merged parts must equal the whole render byte for byte";
+    }
+};
+
+TEST_F(RegionCli, ShowcasePartsMergeToTheWholeImage) {
+    // Uneven cuts that do not follow the renderer's 32-pixel tiles.
+    expect_parts_merge_to_whole(showcase, "--width 161 --height 97 --samples 2",
+                                {"0,0,161,13", "0,13,50,97", "50,13,161,60", "50,60,161,97"});
+}
+
+TEST_F(RegionCli, ManualScenePartsMergeToTheWholeImage) {
+    expect_parts_merge_to_whole(manual, "--width 120 --height 90",
+                                {"0,0,60,90", "60,0,120,45", "60,45,120,90"});
+}
+
+TEST_F(RegionCli, RegionPartIsTheWholeImagesPixelsFromTheTopLeft) {
+    ASSERT_EQ(run(cli + showcase + "--width 80 --height 60 -q -o whole.bmp").code, 0);
+    CommandRun r =
+        run(cli + showcase + "--width 80 --height 60 -q --region 10,5,30,25 -o full.bmp");
+    ASSERT_EQ(r.code, 0) << r.err;
+    Image8 whole, full;
+    ASSERT_EQ(read_bmp(dir / "whole.bmp", whole), "");
+    ASSERT_EQ(read_bmp(dir / "full.bmp", full), "");
+    ASSERT_EQ(full.width, 80) << "without --region-output the image keeps its full size";
+    // Rows 5..24 from the top are Image8 rows 35..54.
+    const PixelRect rect{10, 35, 30, 55};
+    EXPECT_EQ(crop_image(full, rect), crop_image(whole, rect));
+    EXPECT_EQ(full.pixel(9, 40)[0] + full.pixel(9, 40)[1] + full.pixel(9, 40)[2], 0);
+    EXPECT_EQ(full.pixel(20, 34)[0] + full.pixel(20, 34)[1] + full.pixel(20, 34)[2], 0);
+}
+
+TEST_F(RegionCli, MalformedRegionIsAUsageError) {
+    for (const char* region : {"1,2,3", "a,b,c,d", "10,0,5,5", "-1,0,5,5"}) {
+        CommandRun r = run(cli + showcase + "--width 40 --height 30 -o out.bmp --region " + region);
+        EXPECT_EQ(r.code, 2) << region;
+        EXPECT_NE(r.err.find("--region"), std::string::npos) << r.err;
+        EXPECT_FALSE(exists("out.bmp"));
+    }
+}
+
+TEST_F(RegionCli, RegionOutsideTheImageIsAUsageErrorSayingWhichBound) {
+    CommandRun r = run(cli + showcase + "--width 40 --height 30 -q -o out.bmp --region 0,0,40,31");
+    EXPECT_EQ(r.code, 2);
+    EXPECT_NE(r.err.find("reaches past the bottom edge of the 40x30 image (Y1 may be at most 30)"),
+              std::string::npos)
+        << r.err;
+    EXPECT_FALSE(exists("out.bmp"));
+}
+
+TEST_F(RegionCli, RegionOutputNeedsARegionAndABmpName) {
+    CommandRun r = run(cli + showcase + "--region-output -o out.bmp");
+    EXPECT_EQ(r.code, 2);
+    EXPECT_NE(r.err.find("needs --region"), std::string::npos) << r.err;
+    r = run(cli + showcase + "--region 0,0,4,4 --region-output -o out.png");
+    EXPECT_EQ(r.code, 2);
+    EXPECT_NE(r.err.find("writes a BMP"), std::string::npos) << r.err;
+    EXPECT_FALSE(exists("out.bmp"));
+    EXPECT_FALSE(exists("out.png"));
+}
+
+TEST_F(RegionCli, MergeRefusesGapsOverlapsAndForeignFilesWritingNothing) {
+    const std::string size = "--width 40 --height 30 -q --region-output ";
+    ASSERT_EQ(run(cli + showcase + size + "--region 0,0,40,15 -o top.bmp").code, 0);
+    ASSERT_EQ(run(cli + showcase + size + "--region 0,15,40,30 -o bottom.bmp").code, 0);
+    ASSERT_EQ(run(cli + showcase + size + "--region 0,10,40,20 -o middle.bmp").code, 0);
+    ASSERT_EQ(run(cli + showcase + "--width 40 --height 30 -q -o plain.bmp").code, 0);
+
+    CommandRun gap = run(merge + "-o out.bmp top.bmp");
+    EXPECT_EQ(gap.code, 1);
+    EXPECT_NE(gap.err.find("no part covers pixel 0,15"), std::string::npos) << gap.err;
+    CommandRun overlap = run(merge + "-o out.bmp top.bmp bottom.bmp middle.bmp");
+    EXPECT_EQ(overlap.code, 1);
+    EXPECT_NE(overlap.err.find("overlaps"), std::string::npos) << overlap.err;
+    CommandRun plain = run(merge + "-o out.bmp top.bmp plain.bmp");
+    EXPECT_EQ(plain.code, 3);
+    EXPECT_NE(plain.err.find("plain.bmp"), std::string::npos) << plain.err;
+    EXPECT_NE(plain.err.find("no region record"), std::string::npos) << plain.err;
+    CommandRun missing = run(merge + "-o out.bmp top.bmp nowhere.bmp");
+    EXPECT_EQ(missing.code, 3);
+    EXPECT_NE(missing.err.find("nowhere.bmp"), std::string::npos) << missing.err;
+    EXPECT_FALSE(exists("out.bmp"));
+
+    CommandRun usage = run(merge + "top.bmp");
+    EXPECT_EQ(usage.code, 2) << "no -o";
+}
+
+TEST_F(RegionCli, MergeRefusesPartsOfDifferentFrameSizes) {
+    ASSERT_EQ(run(cli + showcase +
+                  "--width 40 --height 30 -q --region-output --region "
+                  "0,0,40,15 -o a.bmp")
+                  .code,
+              0);
+    ASSERT_EQ(run(cli + showcase +
+                  "--width 40 --height 31 -q --region-output --region "
+                  "0,15,40,31 -o b.bmp")
+                  .code,
+              0);
+    CommandRun r = run(merge + "-o out.bmp a.bmp b.bmp");
+    EXPECT_EQ(r.code, 1);
+    EXPECT_NE(r.err.find("b.bmp is a part of a 40x31 frame, but a.bmp of a 40x30 one"),
+              std::string::npos)
+        << r.err;
+    EXPECT_FALSE(exists("out.bmp"));
+}
+
+}  // namespace
+}  // namespace jt

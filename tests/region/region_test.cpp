@@ -1,0 +1,145 @@
+// Regions as users type them, their conversion to image coordinates, region
+// files, and RenderJob::region_image against a full render.
+
+#include "jtracer/region.hpp"
+#include "jtracer/bmp.hpp"
+#include "jtracer/parser.hpp"
+#include "jtracer/region_file.hpp"
+#include "jtracer/render_job.hpp"
+
+#include <gtest/gtest.h>
+#include <unistd.h>
+
+#include <filesystem>
+
+namespace jt {
+namespace {
+
+TEST(Region, ParsesFourBounds) {
+    std::string error;
+    auto r = parse_frame_region("10,20,110,70", error);
+    ASSERT_TRUE(r) << error;
+    EXPECT_EQ(*r, (FrameRegion{10, 20, 110, 70}));
+    EXPECT_EQ(format_frame_region(*r), "10,20,110,70");
+}
+
+TEST(Region, RefusesMalformedText) {
+    for (const char* text : {"", "1,2,3", "1,2,3,4,5", "a,2,3,4", "1,,3,4", "1.5,2,3,4", "1,2,3,4,",
+                             " 1,2,3,4", "99999999999,0,1,1"}) {
+        std::string error;
+        EXPECT_FALSE(parse_frame_region(text, error)) << text;
+        EXPECT_NE(error.find("X0,Y0,X1,Y1"), std::string::npos) << text << ": " << error;
+    }
+}
+
+TEST(Region, RefusesEmptyAndNegativeRegions) {
+    std::string error;
+    EXPECT_FALSE(parse_frame_region("5,0,5,10", error));
+    EXPECT_NE(error.find("empty"), std::string::npos) << error;
+    EXPECT_FALSE(parse_frame_region("0,10,5,3", error));
+    EXPECT_FALSE(parse_frame_region("-1,0,5,3", error));
+    EXPECT_NE(error.find("negative"), std::string::npos) << error;
+}
+
+TEST(Region, ChecksBoundsAgainstTheFrame) {
+    EXPECT_EQ(check_region_in_frame({0, 0, 200, 100}, 200, 100), "");
+    std::string right = check_region_in_frame({0, 0, 201, 100}, 200, 100);
+    EXPECT_NE(right.find("right edge of the 200x100 image (X1 may be at most 200)"),
+              std::string::npos)
+        << right;
+    std::string bottom = check_region_in_frame({0, 50, 10, 101}, 200, 100);
+    EXPECT_NE(bottom.find("bottom edge"), std::string::npos) << bottom;
+}
+
+TEST(Region, TopLeftOriginFlipsToImageRows) {
+    // The top 10 rows of a 100-row frame are Image8 rows 90..99.
+    EXPECT_EQ(to_image_rect({5, 0, 15, 10}, 100), (PixelRect{5, 90, 15, 100}));
+    EXPECT_EQ(to_frame_region({5, 90, 15, 100}, 100), (FrameRegion{5, 0, 15, 10}));
+}
+
+TEST(Region, CropAndPasteAreInverse) {
+    Image8 image(7, 5);
+    for (std::size_t i = 0; i < image.rgb.size(); ++i) image.rgb[i] = static_cast<std::uint8_t>(i);
+    Image8 part = crop_image(image, {2, 1, 6, 4});
+    ASSERT_EQ(part.width, 4);
+    ASSERT_EQ(part.height, 3);
+    EXPECT_EQ(part.pixel(0, 0)[0], image.pixel(2, 1)[0]);
+    EXPECT_EQ(part.pixel(3, 2)[2], image.pixel(5, 3)[2]);
+    Image8 frame(7, 5);
+    paste_image(frame, part, 2, 1);
+    EXPECT_EQ(crop_image(frame, {2, 1, 6, 4}), part);
+    EXPECT_EQ(frame.pixel(1, 1)[0], 0);
+}
+
+class RegionFile : public testing::Test {
+  protected:
+    std::filesystem::path path = std::filesystem::temp_directory_path() /
+                                 ("jtracer_region_file_" + std::to_string(::getpid()) + ".bmp");
+    void TearDown() override { std::filesystem::remove(path); }
+};
+
+TEST_F(RegionFile, RoundTripsPixelsAndPlacement) {
+    Image8 part(3, 2);
+    for (std::size_t i = 0; i < part.rgb.size(); ++i)
+        part.rgb[i] = static_cast<std::uint8_t>(40 * i);
+    RegionPlacement placement{640, 480, {100, 200, 103, 202}};
+    ASSERT_EQ(write_region_bmp(path, part, placement), "");
+    Image8 read;
+    RegionPlacement back;
+    ASSERT_EQ(read_region_bmp(path, read, back), "");
+    EXPECT_EQ(read, part);
+    EXPECT_EQ(back, placement);
+    // Still an ordinary BMP for every other reader.
+    Image8 plain;
+    ASSERT_EQ(read_bmp(path, plain), "");
+    EXPECT_EQ(plain, part);
+}
+
+TEST_F(RegionFile, PlainBmpHasNoRecord) {
+    ASSERT_EQ(write_bmp(path, Image8(4, 4)), "");
+    Image8 part;
+    RegionPlacement placement;
+    std::string error = read_region_bmp(path, part, placement);
+    EXPECT_NE(error.find("carries no region record"), std::string::npos) << error;
+}
+
+// A region job keeps only the region and gives exactly the full render's pixels.
+TEST(RegionImage, EqualsTheFullRenderCroppedForEverySampleCount) {
+    ParseResult parsed = parse_scene(R"(
+render_settings { width: 75; height: 41; recurse_depth: 3; }
+cameras { perspective_camera { position: <0, 1.2, 5>; look_at: <0, 0.5, 0>; aspect: 1.83; } }
+scene {
+    plane { material { pigment: <0.8, 0.8, 0.8>; diffuse: <1, 1, 1>; reflection: 0.4; } }
+    sphere { center: <-0.6, 0.7, 0>; radius: 0.7;
+             material { pigment: <1, 0.2, 0.1>; diffuse: <1, 1, 1>; specular: <1, 1, 1>; } }
+    cylinder { radius: 0.3; height: 1.2; transform { xrotate: 30; translate: <1.2, 0, 0>; }
+               material { pigment: <0.2, 0.4, 1>; diffuse: <1, 1, 1>; reflection: 0.5; } }
+    point_light { position: <3, 5, 4>; intensity: <1, 1, 1>; }
+}
+)");
+    ASSERT_TRUE(parsed.ok());
+    auto prepared = prepare_scene(parsed.scene);
+    for (int samples : {1, 3, 8}) {
+        RenderOptions o;
+        o.width = 75;
+        o.height = 41;
+        o.samples = samples;
+        Image8 full = render_image(prepared, o);
+        for (PixelRect rect : {PixelRect{0, 0, 75, 41}, PixelRect{33, 0, 75, 17},
+                               PixelRect{1, 30, 2, 41}, PixelRect{40, 9, 71, 38}}) {
+            o.region = rect;
+            o.previews = samples == 3;  // previews must not change the final pixels
+            RenderJob job(prepared, o);
+            job.run();
+            EXPECT_EQ(job.region_image(), crop_image(full, rect))
+                << samples << " samples, x " << rect.x0 << ".." << rect.x1 << ", y " << rect.y0
+                << ".." << rect.y1;
+            Image8 whole = job.image();
+            ASSERT_EQ(whole.width, 75);
+            EXPECT_EQ(crop_image(whole, rect), crop_image(full, rect));
+        }
+    }
+}
+
+}  // namespace
+}  // namespace jt
