@@ -1,12 +1,11 @@
 // jtracer-cli: scene file in, image file out. The work lives in the core; this
 // file only orders the steps and maps failures to exit codes.
 
+#include "memory_budget.hpp"
 #include "options.hpp"
 #include "progress.hpp"
 
 #include "jtracer/image_file.hpp"
-#include "jtracer/region.hpp"
-#include "jtracer/region_file.hpp"
 #include "jtracer/render_job.hpp"
 #include "jtracer/scene_file.hpp"
 #include "jtracer/validate.hpp"
@@ -26,10 +25,11 @@ namespace {
 
 using namespace jt::cli;
 
-std::atomic<bool> interrupted{false};
+// The signal that asked the render to stop (SIGINT, SIGTERM), 0 while none has.
+std::atomic<int> interrupted{0};
 
-extern "C" void on_interrupt(int) {
-    interrupted.store(true);
+extern "C" void on_interrupt(int signal) {
+    interrupted.store(signal);
 }
 
 std::string camera_names(const jt::Scene& scene) {
@@ -68,7 +68,7 @@ bool render(jt::RenderJob& job, bool quiet) {
         done.store(true);
     });
     while (!done.load()) {
-        if (interrupted.load()) job.cancel();
+        if (interrupted.load() != 0) job.cancel();
         display.update(job.progress());
         for (int i = 0; i < 10 && !done.load(); ++i)
             std::this_thread::sleep_for(std::chrono::milliseconds(10));
@@ -109,29 +109,24 @@ int run(const Options& o) {
     options.camera = jt::active_camera_index(scene);
     options.threads = o.threads;
     options.previews = false;
-    if (o.region) {
-        const std::string error =
-            jt::check_region_in_frame(*o.region, options.width, options.height);
-        if (!error.empty()) {
-            std::cerr << "jtracer-cli: --region: " << error << "\n";
-            return exit_usage;
-        }
-        options.region = jt::to_image_rect(*o.region, options.height);
-    }
 
+    if (std::string error = check_render_memory(options.width, options.height, options.samples);
+        !error.empty()) {
+        std::cerr << "jtracer-cli: " << error << "; nothing was written\n";
+        return exit_io_error;
+    }
+    // Until the job exists a signal ends the process at once (nothing is written
+    // yet); from here on it cancels the render, which stops within a tile.
+    jt::RenderJob job(jt::prepare_scene(scene), options);
     std::signal(SIGINT, on_interrupt);
     std::signal(SIGTERM, on_interrupt);
-    jt::RenderJob job(jt::prepare_scene(scene), options);
-    if (!render(job, o.quiet)) {
-        std::cerr << "jtracer-cli: interrupted; nothing was written\n";
-        return 130;
+    if (!render(job, o.quiet) || interrupted.load() != 0) {
+        const int signal = interrupted.load() != 0 ? interrupted.load() : SIGINT;
+        std::cerr << "jtracer-cli: interrupted by " << (signal == SIGTERM ? "SIGTERM" : "SIGINT")
+                  << "; nothing was written\n";
+        return 128 + signal;
     }
-    // A region file keeps only the region's pixels and records where they belong.
-    const std::string error = o.region_output
-                                  ? jt::write_region_bmp(output, job.region_image(),
-                                                         {options.width, options.height, *o.region})
-                                  : jt::write_image(output, job.image(), format);
-    if (!error.empty()) {
+    if (std::string error = jt::write_image(output, job.image(), format); !error.empty()) {
         std::cerr << "jtracer-cli: " << error << "\n";
         return exit_io_error;
     }
