@@ -6,6 +6,8 @@
 #include "progress.hpp"
 
 #include "jtracer/image_file.hpp"
+#include "jtracer/region.hpp"
+#include "jtracer/region_file.hpp"
 #include "jtracer/render_job.hpp"
 #include "jtracer/scene_file.hpp"
 #include "jtracer/validate.hpp"
@@ -109,6 +111,15 @@ int run(const Options& o) {
     options.camera = jt::active_camera_index(scene);
     options.threads = o.threads;
     options.previews = false;
+    if (o.region) {
+        const std::string error =
+            jt::check_region_in_frame(*o.region, options.width, options.height);
+        if (!error.empty()) {
+            std::cerr << "jtracer-cli: --region: " << error << "\n";
+            return exit_usage;
+        }
+        options.region = jt::to_image_rect(*o.region, options.height);
+    }
 
     if (std::string error = check_render_memory(options.width, options.height, options.samples);
         !error.empty()) {
@@ -126,7 +137,12 @@ int run(const Options& o) {
                   << "; nothing was written\n";
         return 128 + signal;
     }
-    if (std::string error = jt::write_image(output, job.image(), format); !error.empty()) {
+    // A region file keeps only the region's pixels and records where they belong.
+    const std::string error = o.region_output
+                                  ? jt::write_region_bmp(output, job.region_image(),
+                                                         {options.width, options.height, *o.region})
+                                  : jt::write_image(output, job.image(), format);
+    if (!error.empty()) {
         std::cerr << "jtracer-cli: " << error << "\n";
         return exit_io_error;
     }
