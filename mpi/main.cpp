@@ -1,0 +1,165 @@
+// jtracer-mpi: one frame rendered by every rank of an MPI job. Every rank reads
+// and prepares the scene itself (only the file name travels, in argv); rank 0
+// hands out tiles on demand, renders tiles itself in between, and alone writes
+// the image, atomically, once every tile is in. This file orders the steps and
+// makes sure every rank ends the same way.
+
+#include "coordinator.hpp"
+#include "frame_setup.hpp"
+#include "mpi_options.hpp"
+#include "progress.hpp"
+#include "work_tiles.hpp"
+#include "worker.hpp"
+
+#include "jtracer/image_file.hpp"
+
+#include <mpi.h>
+
+#include <array>
+#include <atomic>
+#include <chrono>
+#include <csignal>
+#include <cstdio>
+#include <exception>
+#include <iostream>
+#include <vector>
+
+namespace {
+
+using namespace jt::mpi;
+using Clock = std::chrono::steady_clock;
+
+std::atomic<bool> interrupted{false};
+
+extern "C" void on_interrupt(int) {
+    interrupted.store(true);
+}
+
+std::string host_name() {
+    std::array<char, MPI_MAX_PROCESSOR_NAME> name{};
+    int length = 0;
+    MPI_Get_processor_name(name.data(), &length);
+    return std::string(name.data(), static_cast<std::size_t>(length));
+}
+
+// Every rank learns every rank's setup verdict, so that all stop together. A
+// scene error is the same on every rank and rank 0 alone reports it; a rank
+// that failed where rank 0 did not (a file missing on its machine) speaks up.
+int agree_on_setup(const FrameSetup& setup, int rank, int ranks) {
+    std::vector<int> codes(static_cast<std::size_t>(ranks));
+    MPI_Allgather(&setup.exit_code, 1, MPI_INT, codes.data(), 1, MPI_INT, MPI_COMM_WORLD);
+    if (rank == 0 || (setup.exit_code != exit_ok && codes[0] == exit_ok)) {
+        std::string message = setup.message;
+        if (rank != 0)
+            message = "rank " + std::to_string(rank) + " on " + host_name() + ": " + message;
+        std::cerr << message << std::flush;
+    }
+    if (codes[0] != exit_ok) return codes[0];
+    for (int code : codes)
+        if (code != exit_ok) return code;
+    return exit_ok;
+}
+
+void print_stats(const CoordinatorResult& result, const std::vector<RankStats>& ranks,
+                 std::size_t tiles, int tile_size, double total_seconds) {
+    const double loop = result.seconds;
+    const RankStats& r0 = ranks.front();
+    std::fprintf(stderr,
+                 "stats: %zu ranks, %zu tiles of %dx%d, %.3f s in all, %.3f s rendering loop\n",
+                 ranks.size(), tiles, tile_size, tile_size, total_seconds, loop);
+    std::fprintf(stderr,
+                 "stats: rank 0 coordinator: waiting %.3f s (%.1f%%), merging %.3f s (%.1f%%), "
+                 "%d tile messages, %.2f MB received\n",
+                 r0.wait_seconds, 100.0 * r0.wait_seconds / loop, r0.merge_seconds,
+                 100.0 * r0.merge_seconds / loop, result.messages_received,
+                 static_cast<double>(result.bytes_received) / 1e6);
+    for (std::size_t i = 0; i < ranks.size(); ++i) {
+        const RankStats& s = ranks[i];
+        std::fprintf(stderr,
+                     "stats: rank %zu: %.0f tiles, rendering %.3f s (%.2f ms a tile), setup "
+                     "%.3f s, waiting for work %.3f s\n",
+                     i, s.tiles, s.render_seconds,
+                     s.tiles > 0 ? 1000.0 * s.render_seconds / s.tiles : 0.0, s.setup_seconds,
+                     i == 0 ? 0.0 : s.wait_seconds);
+    }
+}
+
+int run(int argc, char** argv, int rank, int ranks) {
+    const auto start = Clock::now();
+    ParsedOptions parsed = parse_options(argc, argv, rank == 0);
+    if (parsed.exit_code) return *parsed.exit_code;
+    const Options& o = parsed.options;
+
+    FrameSetup setup = set_up_frame(o);
+    if (int code = agree_on_setup(setup, rank, ranks); code != exit_ok) return code;
+    if (rank == 0) {
+        std::signal(SIGINT, on_interrupt);
+        std::signal(SIGTERM, on_interrupt);
+    }
+    const auto scene = jt::prepare_scene(setup.scene);
+    const std::vector<jt::PixelRect> tiles =
+        cut_work_tiles(setup.render.width, setup.render.height, o.tile_size);
+    RankStats mine;
+    mine.setup_seconds = std::chrono::duration<double>(Clock::now() - start).count();
+
+    if (rank != 0) {
+        RankStats worked = run_worker(scene, setup.render, tiles);
+        worked.setup_seconds = mine.setup_seconds;
+        MPI_Gather(&worked, sizeof worked, MPI_BYTE, nullptr, 0, MPI_BYTE, 0, MPI_COMM_WORLD);
+        return exit_ok;
+    }
+
+    CoordinatorResult result =
+        run_coordinator(scene, setup.render, tiles, ranks, interrupted, o.quiet);
+    if (!result.complete) {
+        // The workers still wait for tiles; only an abort ends them.
+        std::cerr << "jtracer-mpi: stopped before every tile came back (interrupted, or a rank "
+                     "died); nothing was written\n";
+        MPI_Abort(MPI_COMM_WORLD, 130);
+        return 130;
+    }
+    result.stats.setup_seconds = mine.setup_seconds;
+    std::vector<RankStats> stats(static_cast<std::size_t>(ranks));
+    MPI_Gather(&result.stats, sizeof(RankStats), MPI_BYTE, stats.data(), sizeof(RankStats),
+               MPI_BYTE, 0, MPI_COMM_WORLD);
+    const std::string error =
+        jt::write_image(setup.output, result.frame,
+                        o.output ? jt::format_from_extension(*o.output) : jt::ImageFormat::bmp);
+    if (!error.empty()) {
+        std::cerr << "jtracer-mpi: " << error << "\n";
+        return exit_io_error;
+    }
+    const double total = std::chrono::duration<double>(Clock::now() - start).count();
+    if (!o.quiet) {
+        jt::RenderProgress summary;
+        summary.rays = result.rays;
+        summary.seconds = result.seconds;
+        std::cerr << "wrote " << setup.output << ": "
+                  << jt::cli::render_summary(setup.render.width, setup.render.height,
+                                             setup.render.samples, summary)
+                  << ", " << ranks << (ranks == 1 ? " rank" : " ranks") << "\n";
+    }
+    if (o.stats) print_stats(result, stats, tiles.size(), o.tile_size, total);
+    return exit_ok;
+}
+
+}  // namespace
+
+int main(int argc, char** argv) {
+    int provided = 0;
+    // Only the main thread of a rank calls MPI; rank 0's rendering thread does not.
+    MPI_Init_thread(&argc, &argv, MPI_THREAD_FUNNELED, &provided);
+    int rank = 0, ranks = 1;
+    MPI_Comm_rank(MPI_COMM_WORLD, &rank);
+    MPI_Comm_size(MPI_COMM_WORLD, &ranks);
+    int code = exit_io_error;
+    try {
+        code = run(argc, argv, rank, ranks);
+    } catch (const std::exception& e) {
+        // Other ranks may be waiting on this one: only an abort ends them all.
+        std::cerr << "jtracer-mpi: rank " << rank << ": " << e.what() << "; nothing was written\n";
+        MPI_Abort(MPI_COMM_WORLD, exit_io_error);
+    }
+    MPI_Finalize();
+    return code;
+}

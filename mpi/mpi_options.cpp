@@ -1,0 +1,65 @@
+#include "mpi_options.hpp"
+
+#include <CLI/CLI.hpp>
+
+#include <iostream>
+#include <sstream>
+
+namespace jt::mpi {
+
+ParsedOptions parse_options(int argc, char** argv, bool speaks) {
+    ParsedOptions parsed;
+    Options& o = parsed.options;
+    CLI::App app{
+        "jtracer-mpi: renders a JTracer scene (.jts) over many machines with MPI; run it with "
+        "mpirun."};
+    app.footer(
+        "Examples:\n"
+        "  mpirun -np 4 jtracer-mpi scenes/showcase.jts -o shot.bmp --width 3840 --height 2160\n"
+        "  mpirun --hostfile hosts -np 16 jtracer-mpi scene.jts --samples 16 --stats\n"
+        "\n"
+        "Every rank reads the scene file itself (it must be at the same path on every\n"
+        "machine). Rank 0 hands out tiles on demand, renders tiles itself in between, and\n"
+        "alone writes the image (BMP, or PNG for a -o name ending in .png).\n"
+        "\n"
+        "Exit codes: 0 ok, 1 errors in the scene, 2 bad command line, 3 file I/O errors;\n"
+        "a rank that dies or an interrupt aborts the whole job (non-zero, nothing written).\n");
+    app.set_version_flag("--version", std::string("jtracer-mpi ") + JT_VERSION);
+    app.add_option("scene", o.scene_path, "The scene file to render (.jts)")->required();
+    app.add_option("-o,--output", o.output,
+                   "Write the image here instead of the scene's filename; a name ending in .png "
+                   "gives a PNG, anything else a BMP");
+    app.add_option("--camera", o.camera, "Render from the camera with this name");
+    app.add_option("--width", o.width, "Image width in pixels (overrides the scene)")
+        ->check(CLI::Range(1, 65535));
+    app.add_option("--height", o.height, "Image height in pixels (overrides the scene)")
+        ->check(CLI::Range(1, 65535));
+    app.add_option("--samples", o.samples, "Rays per pixel, 1..1024 (overrides the scene)")
+        ->check(CLI::Range(1, 1024));
+    app.add_option("--threads", o.threads, "Worker threads per rank; 0 uses every core")
+        ->check(CLI::Range(0, 4096));
+    app.add_option("--tile-size", o.tile_size,
+                   "Side of the square tiles handed out to the ranks, in pixels (default 128)")
+        ->check(CLI::Range(16, 4096));
+    app.add_flag("-q,--quiet", o.quiet, "No progress bar, summary or warnings; errors still show");
+    app.add_flag("--stats", o.stats,
+                 "After the render, print where the time went: the coordinator's waiting and "
+                 "merging, and every rank's tiles");
+    // Ranks other than 0 keep their (identical) words to themselves.
+    std::ostringstream muted;
+    std::ostream& out = speaks ? std::cout : muted;
+    std::ostream& err = speaks ? std::cerr : muted;
+    try {
+        app.parse(argc, argv);
+    } catch (const CLI::CallForHelp& e) {
+        parsed.exit_code = app.exit(e, out, err);
+    } catch (const CLI::CallForVersion& e) {
+        parsed.exit_code = app.exit(e, out, err);
+    } catch (const CLI::ParseError& e) {
+        err << "jtracer-mpi: " << e.what() << "\nRun 'jtracer-mpi --help' for the options.\n";
+        parsed.exit_code = exit_usage;
+    }
+    return parsed;
+}
+
+}  // namespace jt::mpi

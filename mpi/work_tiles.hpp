@@ -1,0 +1,29 @@
+#pragma once
+// The units of work jtracer-mpi hands out: square tiles of the frame, and the
+// rendering of one of them.
+
+#include "jtracer/image.hpp"
+#include "jtracer/render_job.hpp"
+
+#include <cstdint>
+#include <memory>
+#include <vector>
+
+namespace jt::mpi {
+
+// Squares of `size` pixels (Image8 coordinates), clipped to the frame, from the
+// top row of tiles down, so that the image fills in reading order.
+std::vector<PixelRect> cut_work_tiles(int width, int height, int size);
+
+struct RenderedTile {
+    Image8 pixels;  // the tile's own size, row 0 at its bottom
+    std::uint64_t rays = 0;
+    double seconds = 0.0;
+};
+
+// Renders the pixels of `tile` exactly as a render of the whole frame would,
+// with the rank's local cores (oneTBB).
+RenderedTile render_work_tile(const std::shared_ptr<const PreparedScene>& scene,
+                              const RenderOptions& frame, const PixelRect& tile);
+
+}  // namespace jt::mpi

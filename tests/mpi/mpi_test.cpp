@@ -1,0 +1,108 @@
+// jtracer-mpi under mpirun: the CLI's bytes with any number of ranks, one
+// message for a bad scene, and a clean failure when a rank dies.
+
+#include "command.hpp"
+
+#include <chrono>
+#include <regex>
+
+namespace jt {
+namespace {
+
+using test::CommandRun;
+
+const std::string cli = "'" JT_CLI "' ";
+const std::string showcase = "'" JT_SOURCE_DIR "/scenes/showcase.jts' ";
+const std::string manual = "'" JT_SOURCE_DIR "/scenes/manual/cylinder.jts' ";
+
+// mpirun as CI runs it: as root, more ranks than cores. OpenMPI's own
+// allocations outlive MPI_Finalize, so under LeakSanitizer they are excused
+// by a suppressions file naming OpenMPI's libraries (only for these tests).
+std::string mpirun(int ranks, const std::string& env = "") {
+    return "env LSAN_OPTIONS=suppressions='" JT_LSAN_SUPPRESSIONS "':print_suppressions=0 " + env +
+           " '" JT_MPIEXEC "' --oversubscribe --allow-run-as-root -np " + std::to_string(ranks) +
+           (env.empty() ? "" : " -x JT_MPI_TEST_ABORT_RANK") + " '" JT_MPI "' ";
+}
+
+std::size_t count(const std::string& text, const std::string& what) {
+    std::size_t n = 0;
+    for (std::size_t at = text.find(what); at != std::string::npos; at = text.find(what, at + 1))
+        ++n;
+    return n;
+}
+
+class Mpi : public test::ScratchDir {
+  protected:
+    void expect_same_bytes_as_cli(const std::string& scene, const std::string& settings,
+                                  const std::string& tile_size,
+                                  std::initializer_list<int> rank_counts) {
+        CommandRun single = run(cli + scene + settings + " -q -o cli.bmp");
+        ASSERT_EQ(single.code, 0) << single.err;
+        for (int ranks : rank_counts) {
+            const std::string name = "mpi" + std::to_string(ranks) + ".bmp";
+            CommandRun r = run(mpirun(ranks) + scene + settings + " --tile-size " + tile_size +
+                               " -q --stats -o " + name);
+            ASSERT_EQ(r.code, 0) << r.err;
+            EXPECT_NE(r.err.find("stats: " + std::to_string(ranks) + " ranks"), std::string::npos)
+                << r.err;
+            EXPECT_EQ(test::file_text(dir / name), test::file_text(dir / "cli.bmp"))
+                << ranks << " ranks must give jtracer-cli's bytes";
+        }
+    }
+
+    std::vector<std::string> files() const {
+        std::vector<std::string> names;
+        for (const auto& e : std::filesystem::directory_iterator(dir)) {
+            std::string n = e.path().filename().string();
+            if (n != "stdout.txt" && n != "stderr.txt" && n != "bad.jts") names.push_back(n);
+        }
+        return names;
+    }
+};
+
+TEST_F(Mpi, ShowcaseMatchesTheCliByteForByte) {
+    // Small tiles, so that every rank gets several in an order that varies.
+    expect_same_bytes_as_cli(showcase, "--width 150 --height 90 --samples 2", "16", {1, 3});
+}
+
+TEST_F(Mpi, ManualSceneMatchesTheCliByteForByte) {
+    expect_same_bytes_as_cli(manual, "--width 96 --height 64", "32", {2, 4});
+}
+
+TEST_F(Mpi, BadSceneIsReportedOnceAndEveryRankFails) {
+    std::ofstream(dir / "bad.jts") << "scene { sphere { radius: -1; } }\n";
+    CommandRun r = run(mpirun(3) + "bad.jts -o out.bmp");
+    EXPECT_EQ(r.code, 1) << r.err;
+    EXPECT_EQ(count(r.err, "bad.jts:1:26: error: 'radius' must be greater than 0"), 1u) << r.err;
+    EXPECT_TRUE(files().empty());
+}
+
+TEST_F(Mpi, MissingSceneFileIsReportedOnce) {
+    CommandRun r = run(mpirun(2) + "nowhere.jts -o out.bmp");
+    EXPECT_EQ(r.code, 3) << r.err;
+    EXPECT_EQ(count(r.err, "nowhere.jts"), 1u) << r.err;
+    EXPECT_TRUE(files().empty());
+}
+
+TEST_F(Mpi, UsageErrorIsReportedOnce) {
+    CommandRun r = run(mpirun(2) + showcase + "--samples 0");
+    EXPECT_EQ(r.code, 2) << r.err;
+    EXPECT_EQ(count(r.err, "--samples"), 1u) << r.err;
+}
+
+TEST_F(Mpi, DeadRankFailsTheRunWithoutWritingAFile) {
+    const auto start = std::chrono::steady_clock::now();
+    CommandRun r = run("timeout 120 " + mpirun(3, "JT_MPI_TEST_ABORT_RANK=1") + showcase +
+                       "--width 160 --height 96 --tile-size 16 -q -o out.bmp");
+    const double seconds =
+        std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
+    EXPECT_NE(r.code, 0) << r.err;
+    EXPECT_NE(r.code, 124) << "timed out: the run hung";
+    EXPECT_LT(seconds, 60.0);
+    EXPECT_TRUE(std::regex_search(r.err, std::regex("rank 1 .*signal 6|nothing was written")))
+        << r.err;
+    EXPECT_TRUE(files().empty()) << "no image and no temporary file may be left";
+}
+
+}  // namespace
+}  // namespace jt
