@@ -15,6 +15,8 @@
 #include <algorithm>
 #include <array>
 #include <string>
+#include <utility>
+#include <vector>
 
 namespace jt {
 namespace lang {
@@ -35,9 +37,19 @@ TextSpan span_of(const Token& t) {
     return {t.offset, t.length, t.pos};
 }
 
+// An upper bound on the primitives a text can hold (each has a '{'), capped by
+// its size, so that the scene's arrays are sized once instead of growing by
+// copies: for a million spheres those copies cost more than the parsing.
+std::size_t primitive_count_hint(std::string_view text) {
+    constexpr std::size_t bytes_per_primitive_at_least = 32;  // a hint, not a limit
+    auto braces = static_cast<std::size_t>(std::count(text.begin(), text.end(), '{'));
+    return std::min(braces, text.size() / bytes_per_primitive_at_least);
+}
+
 class Parser {
   public:
-    explicit Parser(std::string_view text) : lexer_(text, sink_), reader_(sink_) {
+    explicit Parser(std::string_view text)
+        : lexer_(text, sink_), reader_(sink_), primitive_hint_(primitive_count_hint(text)) {
         cur_ = lexer_.next();
         next_ = lexer_.next();
     }
@@ -224,6 +236,21 @@ class Parser {
         return false;
     }
 
+    // Runs `read` with the block's properties collected in a buffer reused from
+    // block to block, then stores them with one allocation of the exact size
+    // (growing each block's own list would cost several allocations a block).
+    // `level` is the nesting depth: a primitive's material is read while the
+    // primitive's own buffer is in use.
+    template <class Read>
+    void with_property_buffer(BlockSource& block, std::size_t level, Read read) {
+        std::vector<PropertySource>& buffer = property_buffers_[level];
+        buffer.clear();
+        block.properties.swap(buffer);
+        read();
+        block.properties.swap(buffer);
+        block.properties.assign(buffer.begin(), buffer.end());
+    }
+
     // Reads a block's entries up to and including its '}'. `on_property` gets
     // each well-formed property; `on_child` is called at the keyword of each
     // nested block and must consume it whole.
@@ -326,9 +353,11 @@ class Parser {
         RenderSettings settings;  // a later block replaces the earlier one whole
         if (!open_block(block)) return;
         OpenBlock open{block};
-        parse_body(
-            block, kNoBlocks, [&](const Property& p) { reader_.apply(settings, open, p); },
-            [&] { unknown_block("in 'render_settings'", kNoBlocks); });
+        with_property_buffer(block, 0, [&] {
+            parse_body(
+                block, kNoBlocks, [&](const Property& p) { reader_.apply(settings, open, p); },
+                [&] { unknown_block("in 'render_settings'", kNoBlocks); });
+        });
         if (result_.source.render_settings) {
             sink_.warning(
                 block.keyword_span.pos,
@@ -353,9 +382,11 @@ class Parser {
             Camera camera;
             if (!open_block(block)) return;
             OpenBlock open{block};
-            parse_body(
-                block, kNoBlocks, [&](const Property& p) { reader_.apply(camera, open, p); },
-                [&] { unknown_block("in 'perspective_camera'", kNoBlocks); });
+            with_property_buffer(block, 0, [&] {
+                parse_body(
+                    block, kNoBlocks, [&](const Property& p) { reader_.apply(camera, open, p); },
+                    [&] { unknown_block("in 'perspective_camera'", kNoBlocks); });
+            });
             result_.scene.cameras.push_back(std::move(camera));
             result_.source.cameras.push_back(std::move(block));
         });
@@ -367,6 +398,10 @@ class Parser {
         std::vector<PointLight> lights;
         std::vector<BlockSource> primitive_sources, light_sources;
         if (!open_block(block)) return;
+        // Only the first scene block gets the hint: it was counted over the whole text.
+        std::size_t hint = std::exchange(primitive_hint_, 0);
+        primitives.reserve(hint);
+        primitive_sources.reserve(hint);
         parse_body(block, kSceneBlocks, only_blocks(block, kSceneBlocks), [&] {
             std::string_view kind = cur_.text;
             if (kind == "point_light") {
@@ -374,10 +409,12 @@ class Parser {
                 PointLight light;
                 if (!open_block(light_block)) return;
                 OpenBlock open{light_block};
-                parse_body(
-                    light_block, kNoBlocks,
-                    [&](const Property& p) { reader_.apply(light, open, p); },
-                    [&] { light_child(); });
+                with_property_buffer(light_block, 0, [&] {
+                    parse_body(
+                        light_block, kNoBlocks,
+                        [&](const Property& p) { reader_.apply(light, open, p); },
+                        [&] { light_child(); });
+                });
                 lights.push_back(light);
                 light_sources.push_back(std::move(light_block));
             } else if (kind == "sphere" || kind == "plane" || kind == "cylinder") {
@@ -386,7 +423,8 @@ class Parser {
                 if (kind == "cylinder") primitive.shape = Cylinder{};
                 BlockSource primitive_block;
                 if (!open_block(primitive_block)) return;
-                parse_primitive_body(primitive, primitive_block);
+                with_property_buffer(primitive_block, 0,
+                                     [&] { parse_primitive_body(primitive, primitive_block); });
                 primitives.push_back(std::move(primitive));
                 primitive_sources.push_back(std::move(primitive_block));
             } else {
@@ -431,23 +469,27 @@ class Parser {
                     BlockSource child;
                     if (!open_block(child)) return;
                     OpenBlock open_child{child};
-                    parse_body(
-                        child, kNoBlocks,
-                        [&](const Property& p) {
-                            reader_.apply(primitive.material, open_child, p);
-                        },
-                        [&] { unknown_block("in 'material'", kNoBlocks); });
+                    with_property_buffer(child, 1, [&] {
+                        parse_body(
+                            child, kNoBlocks,
+                            [&](const Property& p) {
+                                reader_.apply(primitive.material, open_child, p);
+                            },
+                            [&] { unknown_block("in 'material'", kNoBlocks); });
+                    });
                     block.children.push_back(std::move(child));
                 } else if (cur_.text == "transform") {
                     BlockSource child;
                     if (!open_block(child)) return;
                     OpenBlock open_child{child};
-                    parse_body(
-                        child, kNoBlocks,
-                        [&](const Property& p) {
-                            reader_.apply(primitive.transforms, open_child, p);
-                        },
-                        [&] { unknown_block("in 'transform'", kNoBlocks); });
+                    with_property_buffer(child, 1, [&] {
+                        parse_body(
+                            child, kNoBlocks,
+                            [&](const Property& p) {
+                                reader_.apply(primitive.transforms, open_child, p);
+                            },
+                            [&] { unknown_block("in 'transform'", kNoBlocks); });
+                    });
                     block.children.push_back(std::move(child));
                 } else {
                     unknown_block("in '" + block.keyword + "'", kPrimitiveBlocks);
@@ -460,6 +502,8 @@ class Parser {
     PropertyReader reader_;
     Token cur_, next_;
     ParseResult result_;
+    std::size_t primitive_hint_;
+    std::array<std::vector<PropertySource>, 2> property_buffers_;
 };
 
 }  // namespace

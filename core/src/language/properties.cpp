@@ -138,18 +138,32 @@ bool PropertyReader::string(const Property& p, std::string& out) {
     return true;
 }
 
+int FirstLines::find(std::string_view name) const {
+    for (std::size_t i = 0; i < count_; ++i)
+        if (inline_[i].first == name) return inline_[i].second;
+    for (const auto& [known, line] : more_)
+        if (known == name) return line;
+    return 0;
+}
+
+void FirstLines::add(std::string_view name, int line) {
+    if (count_ < inline_capacity)
+        inline_[count_++] = {name, line};
+    else
+        more_.emplace_back(name, line);
+}
+
 void PropertyReader::record(OpenBlock& block, const Property& p, std::string_view as_name,
                             bool warn_repeat) {
     if (warn_repeat) {
-        auto first = std::find_if(block.first_lines.begin(), block.first_lines.end(),
-                                  [&](const auto& entry) { return entry.first == as_name; });
-        if (first == block.first_lines.end()) {
-            block.first_lines.emplace_back(as_name, p.name_span.pos.line);
+        int first_line = block.first_lines.find(as_name);
+        if (first_line == 0) {
+            block.first_lines.add(as_name, p.name_span.pos.line);
         } else if (sink_.accepts_warnings()) {
             sink_.warning(p.name_span.pos, quote(as_name) + " is set again in this " +
                                                quote(block.source.keyword) +
                                                "; the later value wins (first set at line " +
-                                               std::to_string(first->second) + ")");
+                                               std::to_string(first_line) + ")");
         }
     }
     block.source.properties.push_back({std::string(as_name), p.name_span, p.value.span});

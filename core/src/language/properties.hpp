@@ -6,7 +6,9 @@
 #include "jtracer/source_map.hpp"
 #include "language/diagnostic_sink.hpp"
 
+#include <array>
 #include <string_view>
+#include <utility>
 #include <vector>
 
 namespace jt::lang {
@@ -27,11 +29,26 @@ struct Property {
     Value value;
 };
 
-// A block being read: its source record, and the first line of each property
-// name it has set (a handful at most), for repeat warnings in constant time.
+// The first line of each property name a block has set, for repeat warnings.
+// A block knows a handful of names at most, so they live inline: a million
+// spheres must not cost a million heap allocations here.
+class FirstLines {
+  public:
+    // The line where `name` was first set, or 0.
+    int find(std::string_view name) const;
+    void add(std::string_view name, int line);
+
+  private:
+    static constexpr std::size_t inline_capacity = 12;
+    std::array<std::pair<std::string_view, int>, inline_capacity> inline_{};
+    std::size_t count_ = 0;
+    std::vector<std::pair<std::string_view, int>> more_;  // never used by known names
+};
+
+// A block being read: its source record and the names it has set.
 struct OpenBlock {
     BlockSource& source;
-    std::vector<std::pair<std::string_view, int>> first_lines{};
+    FirstLines first_lines{};
 };
 
 // Applies well-formed properties to the part of the scene they belong to,
