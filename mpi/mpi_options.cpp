@@ -1,4 +1,5 @@
 #include "mpi_options.hpp"
+#include "render_flags.hpp"
 
 #include <CLI/CLI.hpp>
 
@@ -25,19 +26,7 @@ ParsedOptions parse_options(int argc, char** argv, bool speaks) {
         "Exit codes: 0 ok, 1 errors in the scene, 2 bad command line, 3 file I/O errors;\n"
         "a rank that dies or an interrupt aborts the whole job (non-zero, nothing written).\n");
     app.set_version_flag("--version", std::string("jtracer-mpi ") + JT_VERSION);
-    app.add_option("scene", o.scene_path, "The scene file to render (.jts)")->required();
-    app.add_option("-o,--output", o.output,
-                   "Write the image here instead of the scene's filename; a name ending in .png "
-                   "gives a PNG, anything else a BMP");
-    app.add_option("--camera", o.camera, "Render from the camera with this name");
-    app.add_option("--width", o.width, "Image width in pixels (overrides the scene)")
-        ->check(CLI::Range(1, 65535));
-    app.add_option("--height", o.height, "Image height in pixels (overrides the scene)")
-        ->check(CLI::Range(1, 65535));
-    app.add_option("--samples", o.samples, "Rays per pixel, 1..1024 (overrides the scene)")
-        ->check(CLI::Range(1, 1024));
-    app.add_option("--threads", o.threads, "Worker threads per rank; 0 uses every core")
-        ->check(CLI::Range(0, 4096));
+    cli::add_render_flags(app, o);
     app.add_option("--tile-size", o.tile_size,
                    "Side of the square tiles handed out to the ranks, in pixels (default 128)")
         ->check(CLI::Range(16, 4096));
