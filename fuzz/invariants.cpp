@@ -31,7 +31,6 @@ std::string describe(const Diagnostic& d) {
     return std::to_string(d.pos.line) + ":" + std::to_string(d.pos.column) + " '" + d.message + "'";
 }
 
-// A diagnostic may point one past the end of its line (a missing ';'), never further.
 std::string check_located(const std::vector<Diagnostic>& diagnostics, std::string_view text,
                           const char* stage) {
     const std::vector<std::size_t> lengths = line_lengths(text);
@@ -50,6 +49,11 @@ std::string check_located(const std::vector<Diagnostic>& diagnostics, std::strin
 }
 
 }  // namespace
+
+std::string check_diagnostics_within(const std::vector<Diagnostic>& diagnostics,
+                                     std::string_view text) {
+    return check_located(diagnostics, text, "diagnostics");
+}
 
 std::string check_scene_text(std::string_view text) {
     ParseResult parsed = parse_scene(text);

@@ -3,10 +3,13 @@
 // tests/hardening on every saved regression input. Each check returns an
 // empty string when the invariants hold, else which one broke and how.
 
+#include "jtracer/diagnostics.hpp"
+
 #include <cstdint>
 #include <span>
 #include <string>
 #include <string_view>
+#include <vector>
 
 namespace jt::fuzz {
 
@@ -15,6 +18,11 @@ namespace jt::fuzz {
 // without errors serializes to text that parses back, without errors, to an
 // equal scene, and serializing that gives the same text again.
 std::string check_scene_text(std::string_view text);
+
+// Empty when every diagnostic has a message and lies within `text` (at most one
+// column past the end of its line) or is about the file as a whole (line 0).
+std::string check_diagnostics_within(const std::vector<Diagnostic>& diagnostics,
+                                     std::string_view text);
 
 // Decodes `bytes` as a BMP and checks: either a message and no claim of an
 // image, or an image of consistent size that encodes and decodes back equal.

@@ -35,7 +35,7 @@ for target in "${targets[@]}"; do
     dict=()
     [ "$target" = parse_scene_fuzzer ] && dict=(-dict=fuzz/jts.dict)
     echo "== $target: $seconds s (log: $out/$target.log)"
-    if ! "$out/build/$target" "${dict[@]}" -max_total_time="$seconds" -timeout=10 \
+    if ! "$out/build/$target" "${dict[@]}" -max_total_time="$seconds" -timeout=60 \
         -rss_limit_mb=2048 -print_final_stats=1 \
         -artifact_prefix="$artifacts/" "$corpus" "$out/seeds/$target" \
         >"$out/$target.log" 2>&1; then

@@ -1,0 +1,208 @@
+// Bad input as a new user would type it: every class of malformed scene, every
+// file that cannot be read or written, sizes that cannot be allocated. Each
+// must give a clear message and the documented exit code, leave an existing
+// output byte-identical and leave no temporary file behind.
+
+#include "cli_sandbox.hpp"
+
+#include <sys/stat.h>
+#include <unistd.h>
+
+#include <fstream>
+#include <regex>
+
+namespace jt::hardening {
+namespace {
+
+namespace fs = std::filesystem;
+
+const std::string camera =
+    "cameras { perspective_camera { position: <0, 0, 5>; look_at: <0, 0, 0>; } }\n";
+
+struct MalformedScene {
+    const char* what;
+    std::string text;
+    std::string location;  // the LINE:COL the first error must point at
+};
+
+std::vector<MalformedScene> malformed_scenes() {
+    return {
+        {"lexical: unclosed string", "render_settings { filename: \"abc; }\n", "1:29"},
+        {"lexical: malformed number", "render_settings { width: 1.2.3; }\n", "1:26"},
+        {"lexical: stray character", "render_settings { width: 10; @ }\n", "1:30"},
+        {"lexical: NUL byte", std::string("render_settings { width: 10;\0 }\n", 32), "1:29"},
+        {"syntax: missing ';'", "render_settings {\n  width: 10\n}\n", "2:12"},
+        {"syntax: unclosed block", "render_settings { width: 10;\n", "1:1"},
+        {"syntax: unknown block", "rendr_settings { }\n", "1:1"},
+        {"syntax: stray '}'", camera + "}\n", "2:1"},
+        {"kinds: string for a number", "render_settings { width: \"big\"; }\n", "1:26"},
+        {"kinds: vector for a number", "render_settings { width: <1, 2, 3>; }\n", "1:26"},
+        {"kinds: number for a vector", camera + "scene { sphere { center: 4; radius: 1; } }\n",
+         "2:26"},
+        {"ranges: negative width", "render_settings { width: -1; }\n", "1:26"},
+        {"ranges: negative radius", camera + "scene { sphere { radius: -1; } }\n", "2:26"},
+        {"ranges: 1e400", "render_settings { width: 1e400; }\n", "1:26"},
+        {"ranges: nan spelled out", camera + "scene { sphere { radius: nan; } }\n", "2:26"},
+        {"ranges: inf spelled out", camera + "scene { sphere { radius: inf; } }\n", "2:26"},
+        {"validation: look_at equals position",
+         "render_settings { width: 8; height: 8; }\n"
+         "cameras { perspective_camera { position: <1, 2, 3>; look_at: <1, 2, 3>; } }\n",
+         "2:62"},
+        {"validation: width 0", "render_settings { width: 0; height: 8; }\n" + camera, "1:26"},
+        {"validation: image over 4 GiB",
+         "render_settings { width: 65535; height: 65535; }\n" + camera, "1:"},
+    };
+}
+
+using BadInput = CliSandbox;
+
+TEST_F(BadInput, EveryClassOfMalformedSceneIsLocatedAndExitsOne) {
+    const std::string precious = "precious bytes\n";
+    for (const MalformedScene& scene : malformed_scenes()) {
+        SCOPED_TRACE(scene.what);
+        write_file(dir / "bad.jts", scene.text);
+        write_file(dir / "keep.bmp", precious);
+        CliResult r = run({"bad.jts", "-o", "keep.bmp"});
+        EXPECT_EQ(r.code, 1) << r.err;
+        EXPECT_EQ(r.err.find("bad.jts:"), 0u) << r.err;
+        EXPECT_NE(r.err.find("bad.jts:" + scene.location), std::string::npos) << r.err;
+        EXPECT_TRUE(std::regex_search(r.err, std::regex(R"(bad\.jts:\d+:\d+: error: \S)")))
+            << r.err;
+        EXPECT_EQ(read_file(dir / "keep.bmp"), precious);
+        EXPECT_TRUE(temporary_files().empty());
+    }
+}
+
+TEST_F(BadInput, SceneWithoutCameraIsAnErrorAboutTheWholeFile) {
+    write_file(dir / "bad.jts", "render_settings { width: 8; height: 8; }\n");
+    CliResult r = run({"bad.jts", "-o", "out.bmp"});
+    EXPECT_EQ(r.code, 1);
+    EXPECT_NE(r.err.find("bad.jts: error: every render needs a camera"), std::string::npos)
+        << r.err;
+    EXPECT_FALSE(fs::exists(dir / "out.bmp"));
+}
+
+// The unreadable and unwritable cases mean nothing to root, who reads and
+// writes through any permission bits.
+bool permissions_apply(const fs::path& path, int mode) {
+    return ::access(path.c_str(), mode) != 0;
+}
+
+class UnusableFiles : public CliSandbox {
+  protected:
+    const std::string precious = "precious bytes\n";
+    void SetUp() override {
+        CliSandbox::SetUp();
+        write_file(dir / "keep.bmp", precious);
+    }
+    // Runs, expects exit 3 with a message naming `named`, and nothing changed.
+    void expect_io_error(const std::vector<std::string>& args, const std::string& named,
+                         const std::string& reason) {
+        const std::vector<std::string> before = files();
+        CliResult r = run(args);
+        EXPECT_EQ(r.code, 3) << r.err;
+        EXPECT_EQ(r.err.rfind("jtracer-cli: ", 0), 0u) << r.err;
+        EXPECT_NE(r.err.find("'" + named + "'"), std::string::npos) << r.err;
+        EXPECT_NE(r.err.find(reason), std::string::npos) << r.err;
+        EXPECT_EQ(r.err.find('\n'), r.err.size() - 1) << "one line expected: " << r.err;
+        EXPECT_EQ(read_file(dir / "keep.bmp"), precious);
+        EXPECT_EQ(files(), before);
+        EXPECT_TRUE(temporary_files().empty());
+    }
+};
+
+TEST_F(UnusableFiles, MissingSceneFile) {
+    expect_io_error({"missing.jts", "-o", "keep.bmp"}, "missing.jts", "no such file");
+}
+
+TEST_F(UnusableFiles, DirectoryAsScene) {
+    fs::create_directory(dir / "scenes");
+    expect_io_error({"scenes", "-o", "keep.bmp"}, "scenes", "is a directory");
+}
+
+TEST_F(UnusableFiles, UnreadableScene) {
+    fs::copy_file(dir / "scene.jts", dir / "locked.jts");
+    fs::permissions(dir / "locked.jts", fs::perms::none);
+    if (!permissions_apply(dir / "locked.jts", R_OK))
+        GTEST_SKIP() << "running as root: chmod 000 does not stop reads";
+    expect_io_error({"locked.jts", "-o", "keep.bmp"}, "locked.jts", "ermission denied");
+}
+
+TEST_F(UnusableFiles, OutputInAMissingDirectory) {
+    expect_io_error({"scene.jts", "-o", "no/such/dir/out.bmp"}, "no/such/dir/out.bmp",
+                    "No such file or directory");
+}
+
+TEST_F(UnusableFiles, OutputIsADirectory) {
+    fs::create_directory(dir / "images");
+    expect_io_error({"scene.jts", "-o", "images"}, "images", "is a directory");
+    EXPECT_TRUE(fs::is_empty(dir / "images"));
+}
+
+TEST_F(UnusableFiles, OutputInAnUnwritableDirectory) {
+    fs::create_directory(dir / "locked");
+    fs::permissions(dir / "locked", fs::perms::owner_read | fs::perms::owner_exec);
+    if (!permissions_apply(dir / "locked", W_OK))
+        GTEST_SKIP() << "running as root: a read-only directory is still writable";
+    expect_io_error({"scene.jts", "-o", "locked/out.bmp"}, "locked/out.bmp", "ermission denied");
+    EXPECT_TRUE(fs::is_empty(dir / "locked"));
+}
+
+TEST_F(UnusableFiles, FullDevice) {
+    struct stat before {};
+    if (::stat("/dev/full", &before) != 0 || !S_ISCHR(before.st_mode))
+        GTEST_SKIP() << "/dev/full is not a character device here";
+    expect_io_error({"scene.jts", "-o", "/dev/full"}, "/dev/full", "No space left on device");
+    // Writing in place, never renaming over the device (which root could do).
+    struct stat after {};
+    ASSERT_EQ(::stat("/dev/full", &after), 0);
+    EXPECT_TRUE(S_ISCHR(after.st_mode));
+    EXPECT_EQ(after.st_rdev, before.st_rdev);
+}
+
+using HugeImages = CliSandbox;
+
+TEST_F(HugeImages, SizesOutOfRangeOnTheCommandLineAreUsageErrors) {
+    for (std::vector<std::string> args :
+         {std::vector<std::string>{"--width", "2000000000", "--height", "2000000000"},
+          {"--width", "99999999999999999999"},
+          {"--height", "-3"}}) {
+        args.insert(args.begin(), "scene.jts");
+        CliResult r = run(args);
+        EXPECT_EQ(r.code, 2) << r.err;
+        EXPECT_NE(r.err.find("not in range"), std::string::npos) << r.err;
+        EXPECT_EQ(files(), std::vector<std::string>{"scene.jts"});
+    }
+}
+
+TEST_F(HugeImages, ImageBeyondTheBmpLimitIsASceneError) {
+    CliResult r = run({"scene.jts", "--width", "65535", "--height", "65535", "-o", "big.png"});
+    EXPECT_EQ(r.code, 1) << r.err;
+    EXPECT_NE(r.err.find("65535 x 65535 image does not fit"), std::string::npos) << r.err;
+    EXPECT_EQ(files(), std::vector<std::string>{"scene.jts"});
+}
+
+std::uint64_t memory_available() {
+    std::ifstream meminfo("/proc/meminfo");
+    std::string key, unit;
+    std::uint64_t kib = 0;
+    while (meminfo >> key >> kib >> unit)
+        if (key == "MemAvailable:") return kib * 1024;
+    return 0;
+}
+
+TEST_F(HugeImages, ImageTooLargeForMemoryIsRefusedBeforeRendering) {
+    // 65535 x 21000 pixels with running sums: over 40 GiB.
+    const std::uint64_t needed = 65535ull * 21000 * 33;
+    if (memory_available() == 0 || memory_available() > needed)
+        GTEST_SKIP() << "this machine could hold the image; the test would render it";
+    CliResult r = run({"scene.jts", "--width", "65535", "--height", "21000", "--samples", "1024",
+                       "-o", "big.bmp"});
+    EXPECT_EQ(r.code, 3) << r.err;
+    EXPECT_NE(r.err.find("needs about"), std::string::npos) << r.err;
+    EXPECT_NE(r.err.find("nothing was written"), std::string::npos) << r.err;
+    EXPECT_EQ(files(), std::vector<std::string>{"scene.jts"});
+}
+
+}  // namespace
+}  // namespace jt::hardening

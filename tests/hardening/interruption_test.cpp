@@ -1,0 +1,59 @@
+// Ctrl+C (SIGINT) and SIGTERM during a long render: the CLI stops within a
+// second, exits 130 / 143, writes nothing and leaves the older output intact.
+
+#include "cli_sandbox.hpp"
+
+#include <chrono>
+#include <csignal>
+#include <thread>
+
+namespace jt::hardening {
+namespace {
+
+using Clock = std::chrono::steady_clock;
+
+#ifdef JT_SANITIZED
+constexpr double stop_limit_seconds = 5.0;  // sanitizers slow each tile down several times
+#else
+constexpr double stop_limit_seconds = 1.0;
+#endif
+
+class Interruption : public CliSandbox, public testing::WithParamInterface<int> {};
+
+TEST_P(Interruption, StopsPromptlyWritesNothingKeepsTheOldOutput) {
+    const int signal = GetParam();
+    const std::string precious = "an older render\n";
+    write_file(dir / "out.bmp", precious);
+    // One thread and many samples: a render of 15 s or more.
+    pid_t pid =
+        start({showcase_path().string(), "-o", "out.bmp", "--samples", "64", "--threads", "1"});
+    ASSERT_GT(pid, 0);
+    // Without a terminal the CLI logs "rendering: N%" once it is well under way.
+    const auto give_up = Clock::now() + std::chrono::seconds(120);
+    while (read_file(dir / "stderr.txt").find("rendering:") == std::string::npos &&
+           Clock::now() < give_up)
+        std::this_thread::sleep_for(std::chrono::milliseconds(20));
+    ASSERT_NE(read_file(dir / "stderr.txt").find("rendering:"), std::string::npos)
+        << "the render never reported progress";
+
+    const auto sent = Clock::now();
+    ASSERT_EQ(::kill(pid, signal), 0);
+    CliResult r = finish(pid);
+    const double seconds = std::chrono::duration<double>(Clock::now() - sent).count();
+
+    EXPECT_EQ(r.signal, 0) << "killed by the signal instead of handling it";
+    EXPECT_EQ(r.code, 128 + signal) << r.err;
+    EXPECT_LT(seconds, stop_limit_seconds);
+    EXPECT_NE(r.err.find("nothing was written"), std::string::npos) << r.err;
+    EXPECT_EQ(read_file(dir / "out.bmp"), precious);
+    EXPECT_EQ(files(), (std::vector<std::string>{"out.bmp", "scene.jts"}));
+}
+
+INSTANTIATE_TEST_SUITE_P(Signals, Interruption, testing::Values(SIGINT, SIGTERM),
+                         [](const testing::TestParamInfo<int>& info) {
+                             return info.param == SIGINT ? std::string("SIGINT")
+                                                         : std::string("SIGTERM");
+                         });
+
+}  // namespace
+}  // namespace jt::hardening
