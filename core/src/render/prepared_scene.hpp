@@ -37,6 +37,10 @@ struct TransformedShape {
     ShapeKind kind = ShapeKind::sphere;
     std::uint32_t source = 0;
     RTCBounds bounds{};
+    // A sphere around the padded box, for rejecting rays cheaply when there is
+    // no BVH to do it.
+    Vec3 bounding_center{0.0};
+    double bounding_radius_sq = 0.0;
 };
 
 struct WorldPlane {
@@ -60,7 +64,9 @@ struct Geometry {
     std::vector<TransformedShape> shapes;
     std::vector<WorldPlane> planes;
     double bounds_slack = 0.0;  // world-space margin added to every box
-    RTCScene bvh = nullptr;     // null when nothing is bounded
+    // Null when there are so few bounded shapes that testing each one beats a
+    // BVH walk (Embree's per-ray overhead dominates a handful of shapes).
+    RTCScene bvh = nullptr;
     unsigned sphere_geometry_id = RTC_INVALID_GEOMETRY_ID;
     unsigned shape_geometry_id = RTC_INVALID_GEOMETRY_ID;
 

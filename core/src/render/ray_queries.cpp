@@ -3,6 +3,8 @@
 #include "geometry/bounds.hpp"
 #include "geometry/intersect.hpp"
 
+#include <glm/geometric.hpp>
+
 #include <bit>
 #include <cmath>
 #include <limits>
@@ -114,6 +116,55 @@ void mark_occluded(const RTCOccludedFunctionNArguments* args) {
     RTCRayN_tfar(args->ray, args->N, 0) = -float_infinity;
 }
 
+// Whether the line through the ray misses the shape's bounding sphere (the
+// direction need not be unit length).
+bool misses_bounds(const TransformedShape& s, const Vec3& origin, const Vec3& direction) {
+    Vec3 f = origin - s.bounding_center;
+    Vec3 perpendicular = f - (glm::dot(f, direction) / glm::dot(direction, direction)) * direction;
+    return glm::dot(perpendicular, perpendicular) > s.bounding_radius_sq;
+}
+
+// The queries of a geometry without a BVH: every shape tested, in index order,
+// by the same exact tests and tie rule as the callbacks below.
+void closest_by_testing_all(ClosestQuery& q) {
+    const Geometry& g = *q.geometry;
+    for (std::uint32_t i = 0; i < g.spheres.size(); ++i) {
+        const WorldSphere& s = g.spheres[i];
+        double t =
+            intersect_sphere(q.origin, q.direction, s.center, s.radius, q.t_min, just_beyond(q.t));
+        if (t == no_hit || !better(t, s.source, q)) continue;
+        q.t = t;
+        q.source = s.source;
+        q.kind = HitKind::sphere;
+        q.index = i;
+    }
+    for (std::uint32_t i = 0; i < g.shapes.size(); ++i) {
+        const TransformedShape& s = g.shapes[i];
+        if (misses_bounds(s, q.origin, q.direction)) continue;
+        CylinderPart part = CylinderPart::side;
+        double t = shape_distance(s, q.origin, q.direction, q.t_min, just_beyond(q.t), part);
+        if (t == no_hit || !better(t, s.source, q)) continue;
+        q.t = t;
+        q.source = s.source;
+        q.kind = HitKind::shape;
+        q.index = i;
+        q.part = part;
+    }
+}
+
+bool occluded_by_testing_all(const Geometry& g, const Vec3& origin, const Vec3& direction,
+                             double t_min, double t_max) {
+    for (const WorldSphere& s : g.spheres)
+        if (intersect_sphere(origin, direction, s.center, s.radius, t_min, t_max) != no_hit)
+            return true;
+    CylinderPart part;
+    for (const TransformedShape& s : g.shapes)
+        if (!misses_bounds(s, origin, direction) &&
+            shape_distance(s, origin, direction, t_min, t_max, part) != no_hit)
+            return true;
+    return false;
+}
+
 }  // namespace
 
 void sphere_bounds(const RTCBoundsFunctionArguments* args) {
@@ -198,7 +249,9 @@ bool closest_hit(const Geometry& geometry, const Vec3& origin, const Vec3& direc
         }
     }
 
-    if (geometry.bvh) {
+    if (!geometry.bvh) {
+        closest_by_testing_all(q);
+    } else {
         rtcInitIntersectContext(&q.context);
         RTCRayHit rayhit;
         set_float_ray(rayhit.ray, origin, direction, t_min, q.t);
@@ -230,7 +283,7 @@ bool occluded(const Geometry& geometry, const Vec3& origin, const Vec3& directio
     for (const WorldPlane& p : geometry.planes)
         if (intersect_plane(origin, direction, p.normal, p.distance, t_min, t_max) != no_hit)
             return true;
-    if (!geometry.bvh) return false;
+    if (!geometry.bvh) return occluded_by_testing_all(geometry, origin, direction, t_min, t_max);
     OcclusionQuery q;
     rtcInitIntersectContext(&q.context);
     q.geometry = &geometry;
