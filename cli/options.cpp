@@ -38,7 +38,6 @@ ParsedOptions parse_options(int argc, char** argv) {
                  "With --region: write only the region, as a BMP that records where it belongs "
                  "(jtracer-merge assembles such parts)");
     app.add_flag("--check", o.check_only, "Only parse and validate the scene; write nothing");
-    app.add_flag("-q,--quiet", o.quiet, "No progress bar, summary or warnings; errors still show");
     try {
         app.parse(argc, argv);
         if (o.region_output && !o.region)

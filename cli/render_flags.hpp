@@ -1,27 +1,33 @@
 #pragma once
-// The command-line options every JTracer renderer shares (jtracer-cli and
-// jtracer-mpi), declared once so that both read a render the same way.
+// The command line every JTracer renderer shares (jtracer-cli, jtracer-mpi):
+// the options, their exit codes, and their declaration, written once so that
+// both read a render the same way.
 
-#include <CLI/CLI.hpp>
+#include <optional>
+#include <string>
+
+namespace CLI {
+class App;
+}
 
 namespace jt::cli {
 
-// `Options` is any struct with the members below (cli::Options, mpi::Options).
-template <class Options>
-void add_render_flags(CLI::App& app, Options& o) {
-    app.add_option("scene", o.scene_path, "The scene file to render (.jts)")->required();
-    app.add_option("-o,--output", o.output,
-                   "Write the image here instead of the scene's filename; a name ending in .png "
-                   "gives a PNG, anything else a BMP");
-    app.add_option("--camera", o.camera, "Render from the camera with this name");
-    app.add_option("--width", o.width, "Image width in pixels (overrides the scene)")
-        ->check(CLI::Range(1, 65535));
-    app.add_option("--height", o.height, "Image height in pixels (overrides the scene)")
-        ->check(CLI::Range(1, 65535));
-    app.add_option("--samples", o.samples, "Rays per pixel, 1..1024 (overrides the scene)")
-        ->check(CLI::Range(1, 1024));
-    app.add_option("--threads", o.threads, "Worker threads; 0 uses every core")
-        ->check(CLI::Range(0, 4096));
-}
+// Exit codes, as the README documents them.
+enum ExitCode : int { exit_ok = 0, exit_scene_error = 1, exit_usage = 2, exit_io_error = 3 };
+
+struct RenderFlags {
+    std::string scene_path;
+    std::optional<std::string> output;  // wins over the scene's filename
+    std::optional<std::string> camera;
+    std::optional<int> width;
+    std::optional<int> height;
+    std::optional<int> samples;
+    int threads = 0;  // 0: every core
+    bool quiet = false;
+};
+
+// Declares the scene argument and -o, --camera, --width, --height, --samples,
+// --threads and -q.
+void add_render_flags(CLI::App& app, RenderFlags& flags);
 
 }  // namespace jt::cli

@@ -30,7 +30,6 @@ ParsedOptions parse_options(int argc, char** argv, bool speaks) {
     app.add_option("--tile-size", o.tile_size,
                    "Side of the square tiles handed out to the ranks, in pixels (default 128)")
         ->check(CLI::Range(16, 4096));
-    app.add_flag("-q,--quiet", o.quiet, "No progress bar, summary or warnings; errors still show");
     app.add_flag("--stats", o.stats,
                  "After the render, print where the time went: the coordinator's waiting and "
                  "merging, and every rank's tiles");

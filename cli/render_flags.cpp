@@ -1,0 +1,24 @@
+#include "render_flags.hpp"
+
+#include <CLI/CLI.hpp>
+
+namespace jt::cli {
+
+void add_render_flags(CLI::App& app, RenderFlags& o) {
+    app.add_option("scene", o.scene_path, "The scene file to render (.jts)")->required();
+    app.add_option("-o,--output", o.output,
+                   "Write the image here instead of the scene's filename; a name ending in .png "
+                   "gives a PNG, anything else a BMP");
+    app.add_option("--camera", o.camera, "Render from the camera with this name");
+    app.add_option("--width", o.width, "Image width in pixels (overrides the scene)")
+        ->check(CLI::Range(1, 65535));
+    app.add_option("--height", o.height, "Image height in pixels (overrides the scene)")
+        ->check(CLI::Range(1, 65535));
+    app.add_option("--samples", o.samples, "Rays per pixel, 1..1024 (overrides the scene)")
+        ->check(CLI::Range(1, 1024));
+    app.add_option("--threads", o.threads, "Worker threads; 0 uses every core")
+        ->check(CLI::Range(0, 4096));
+    app.add_flag("-q,--quiet", o.quiet, "No progress bar, summary or warnings; errors still show");
+}
+
+}  // namespace jt::cli
