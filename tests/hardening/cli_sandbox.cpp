@@ -1,6 +1,7 @@
 #include "cli_sandbox.hpp"
 
 #include <fcntl.h>
+#include <grp.h>
 #include <sys/wait.h>
 #include <unistd.h>
 
@@ -54,7 +55,11 @@ void CliSandbox::TearDown() {
     if (!HasFailure()) fs::remove_all(dir, ec);
 }
 
-pid_t CliSandbox::start(const std::vector<std::string>& args) {
+namespace {
+
+constexpr uid_t nobody = 65534;
+
+pid_t spawn(const fs::path& dir, const std::vector<std::string>& args, bool unprivileged) {
     // Everything the child needs is prepared before fork: after it, only
     // async-signal-safe calls.
     std::vector<std::string> strings{JT_CLI};
@@ -69,6 +74,9 @@ pid_t CliSandbox::start(const std::vector<std::string>& args) {
         int err = ::open(err_path.c_str(), O_WRONLY | O_CREAT | O_TRUNC, 0644);
         int null = ::open("/dev/null", O_RDWR);
         if (err < 0 || null < 0 || ::chdir(dir_path.c_str()) != 0) ::_exit(126);
+        if (unprivileged && ::getuid() == 0 &&
+            (::setgroups(0, nullptr) != 0 || ::setgid(nobody) != 0 || ::setuid(nobody) != 0))
+            ::_exit(126);
         ::dup2(null, STDIN_FILENO);
         ::dup2(null, STDOUT_FILENO);
         ::dup2(err, STDERR_FILENO);
@@ -76,6 +84,16 @@ pid_t CliSandbox::start(const std::vector<std::string>& args) {
         ::_exit(127);
     }
     return pid;
+}
+
+}  // namespace
+
+pid_t CliSandbox::start(const std::vector<std::string>& args) {
+    return spawn(dir, args, false);
+}
+
+CliResult CliSandbox::run_unprivileged(const std::vector<std::string>& args) {
+    return finish(spawn(dir, args, true));
 }
 
 CliResult CliSandbox::finish(pid_t pid) {

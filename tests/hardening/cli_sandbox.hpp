@@ -37,6 +37,9 @@ class CliSandbox : public testing::Test {
     CliResult run(const std::vector<std::string>& args);
     // Starts it in the background; finish() waits for it.
     pid_t start(const std::vector<std::string>& args);
+    // Runs it as the user 'nobody' when the tests run as root, so that file
+    // permissions apply; `dir` must then be readable by others (it is).
+    CliResult run_unprivileged(const std::vector<std::string>& args);
     CliResult finish(pid_t pid);
 
     // The names of the files in `dir`, sorted (the captured stderr excluded).
