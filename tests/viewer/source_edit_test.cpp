@@ -163,6 +163,53 @@ TEST(SourceEdit, NewCameraIsAppendedToTheCamerasBlock) {
     EXPECT_EQ(save(kScene, edited), expected);
 }
 
+TEST(SourceEdit, RemovingTheNewCameraAgainGivesBackTheSameBytes) {
+    const Scene base = parse_ok(kScene).scene;
+    Scene edited = base;
+    edited.cameras.push_back(base.cameras[0]);
+    edited.cameras.back().name = "copy";
+    const std::string with_camera = save(kScene, edited);
+    EXPECT_EQ(save(with_camera, base), kScene);
+}
+
+TEST(SourceEdit, RemovingAnInlineCameraLeavesTheRestOfItsLine) {
+    const std::string text =
+        "cameras { perspective_camera { name: \"a\"; } "
+        "perspective_camera { name: \"b\"; } }  # two\n";
+    Scene edited = parse_ok(text).scene;
+    edited.cameras.pop_back();
+    EXPECT_EQ(save(text, edited), "cameras { perspective_camera { name: \"a\"; } }  # two\n");
+}
+
+TEST(SourceEdit, ShowcaseGetsANewCameraInItsOwnStyle) {
+    std::ifstream in(std::string(JT_SOURCE_DIR) + "/scenes/showcase.jts", std::ios::binary);
+    std::stringstream buffer;
+    buffer << in.rdbuf();
+    const std::string text = buffer.str();
+    Scene edited = parse_ok(text).scene;
+    Camera camera = edited.cameras[0];
+    camera.name = "viewer 1";
+    camera.position = Vec3(1.5, 2, 8.25);
+    edited.cameras.push_back(camera);
+    const std::string saved = save(text, edited);
+    // Inserted as the last camera of the cameras block, indented like the others.
+    const std::size_t at = saved.find("    perspective_camera {\n        name: \"viewer 1\";");
+    ASSERT_NE(at, std::string::npos) << saved;
+    const std::string inserted =
+        "    perspective_camera {\n"
+        "        name: \"viewer 1\";\n"
+        "        position: <1.5, 2, 8.25>;\n"
+        "        look_at: <0, 1, 0>;\n"
+        "        up: <0, 1, 0>;\n"
+        "        aspect: 1.7777777777777777;\n"
+        "        fov: 38;\n"
+        "    }\n";
+    EXPECT_EQ(saved.substr(at, inserted.size()), inserted);
+    EXPECT_EQ(saved.substr(0, at) + saved.substr(at + inserted.size()), text)
+        << "every other byte as it was";
+    EXPECT_EQ(saved.substr(at + inserted.size(), 2), "}\n") << "inside the cameras block";
+}
+
 TEST(SourceEdit, MissingRenderSettingsBlockIsAppended) {
     const std::string text = "cameras { perspective_camera { } }\n";
     Scene edited = parse_ok(text).scene;

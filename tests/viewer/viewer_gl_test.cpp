@@ -171,7 +171,7 @@ TEST_F(ViewerGl, BrokenReloadKeepsTheLastImageAndListsDiagnostics) {
     // Save by rename, as many editors do, with a missing ';' on line 3.
     write(fs::path(file).concat(".new"), "render_settings {\n    width: 64;\n    height: 48\n}\n");
     fs::rename(fs::path(file).concat(".new"), file);
-    for (int i = 0; i < 3; ++i) viewer.frame(state);
+    ASSERT_TRUE(viewer.run_until_loaded(state));
 
     EXPECT_TRUE(state.doc.load_failed);
     ASSERT_FALSE(state.doc.diagnostics.empty());
@@ -186,16 +186,16 @@ TEST_F(ViewerGl, BrokenReloadKeepsTheLastImageAndListsDiagnostics) {
 
     // Deleted, then garbage: still no crash, still the last image.
     fs::remove(file);
-    viewer.frame(state);
+    ASSERT_TRUE(viewer.run_until_loaded(state));
     EXPECT_TRUE(state.doc.load_failed);
     write(file, std::string("\x00\xff\xfe garbage {{{", 16));
-    viewer.frame(state);
+    ASSERT_TRUE(viewer.run_until_loaded(state));
     EXPECT_TRUE(state.doc.load_failed);
     EXPECT_EQ(state.display, good);
 
     // Fixed: it loads and renders again.
     fs::copy_file(kScene, file, fs::copy_options::overwrite_existing);
-    viewer.frame(state);
+    ASSERT_TRUE(viewer.run_until_loaded(state));
     EXPECT_FALSE(state.doc.load_failed);
     EXPECT_TRUE(state.doc.diagnostics.empty());
 }
@@ -378,7 +378,12 @@ TEST_F(ViewerGl, ShortcutsReloadAndSaveTheImage) {
     EXPECT_TRUE(fs::exists(file.parent_path() / "key.png")) << state.message;
 
     edit_scene(state, [](Scene& s) { s.settings.recurse_depth = 0; });
-    viewer.press_key(state, keys::letter('R'));  // reload drops unsaved edits
+    viewer.press_key(state, keys::letter('R'));  // with unsaved edits: asks first
+    ASSERT_TRUE(viewer.run_until_loaded(state));
+    ASSERT_TRUE(state.pending_reload.has_value()) << state.message;
+    EXPECT_EQ(state.doc.scene.settings.recurse_depth, 0);
+    EXPECT_EQ(state.reapply_problem, "the file is unchanged");
+    resolve_reload(state, ReloadChoice::drop_edits);
     EXPECT_EQ(state.doc.scene.settings.recurse_depth, 2);
     EXPECT_FALSE(state.undo.can_undo());
 }

@@ -18,6 +18,8 @@ void after_scene_replaced(AppState& state) {
     if (state.camera_index >= count) state.camera_index = scene_camera_index(state.doc.scene);
     state.undo.clear();
     state.edit_base.reset();
+    state.pending_reload.reset();
+    state.save_conflict.clear();
     ++state.scene_generation;
 }
 
@@ -27,8 +29,9 @@ std::string camera_label(const Camera& camera, int index) {
 
 }  // namespace
 
-void open_scene(AppState& state, const std::filesystem::path& path) {
-    LoadAttempt attempt = load_scene_file(path);
+namespace {
+
+void finish_open(AppState& state, const std::filesystem::path& path, LoadAttempt attempt) {
     const bool ok = attempt.ok;
     const bool first = !state.doc.loaded;
     accept_load(state.doc, path, std::move(attempt));
@@ -48,20 +51,49 @@ void open_scene(AppState& state, const std::filesystem::path& path) {
     }
 }
 
-void reload_scene(AppState& state) {
-    if (state.doc.path.empty()) return;
-    const bool had_edits = has_unsaved_edits(state.doc);
-    LoadAttempt attempt = load_scene_file(state.doc.path);
-    const bool ok = attempt.ok;
-    accept_load(state.doc, state.doc.path, std::move(attempt));
-    if (ok) {
-        after_scene_replaced(state);
-        state.message = "Reloaded " + state.doc.path.filename().string() +
-                        (had_edits ? " (unsaved edits were replaced by the file)" : "");
-    } else {
+void finish_reload(AppState& state, LoadAttempt attempt) {
+    const std::string name = state.doc.path.filename().string();
+    if (!attempt.ok) {
+        accept_load(state.doc, state.doc.path, std::move(attempt));
         state.message = state.doc.loaded ? "The file has errors: showing the last good scene"
                                          : "The file has errors";
+        return;
     }
+    if (!has_unsaved_edits(state.doc)) {
+        accept_load(state.doc, state.doc.path, std::move(attempt));
+        after_scene_replaced(state);
+        state.message = "Reloaded " + name;
+        return;
+    }
+    // Replacing the scene now would throw the edits away: ask first.
+    state.reapply_problem.clear();
+    if (attempt.text == state.doc.text)
+        state.reapply_problem = "the file is unchanged";
+    else if (!reapply_edits(state.doc, attempt, state.reapply_problem))
+        state.reapply_problem = "cannot re-apply: " + state.reapply_problem;
+    state.doc.load_failed = false;
+    state.doc.diagnostics = attempt.diagnostics;
+    state.doc.diagnostics_source = attempt.text;
+    state.pending_reload = std::move(attempt);
+    state.message = "Reload: " + name + " vs your unsaved edits; choose in the File panel";
+}
+
+}  // namespace
+
+void open_scene(AppState& state, const std::filesystem::path& path) {
+    request_open(state, path);
+    state.loader.wait();
+    take_finished_load(state);
+}
+
+void request_open(AppState& state, const std::filesystem::path& path) {
+    state.loader.request(path, LoadPurpose::open);
+    state.message = "Opening " + path.string();
+}
+
+void reload_scene(AppState& state) {
+    if (state.doc.path.empty()) return;
+    state.loader.request(state.doc.path, LoadPurpose::reload);
 }
 
 bool reload_if_changed(AppState& state) {
@@ -70,15 +102,78 @@ bool reload_if_changed(AppState& state) {
     return true;
 }
 
-bool save_scene(AppState& state) {
+bool take_finished_load(AppState& state) {
+    std::optional<FinishedLoad> done = state.loader.take();
+    if (!done) return false;
+    // A reload of a file that is no longer the open one is stale.
+    if (done->purpose == LoadPurpose::reload && done->path != state.doc.path) return true;
+    if (done->purpose == LoadPurpose::open)
+        finish_open(state, done->path, std::move(done->attempt));
+    else
+        finish_reload(state, std::move(done->attempt));
+    return true;
+}
+
+void resolve_reload(AppState& state, ReloadChoice choice) {
+    if (!state.pending_reload) return;
+    const std::string name = state.doc.path.filename().string();
+    if (choice == ReloadChoice::keep_edits) {
+        state.pending_reload.reset();
+        state.message = "Kept your edits; " + name +
+                        " on disk differs, so Save scene will ask before overwriting it";
+        return;
+    }
+    std::optional<Scene> edited;
+    if (choice == ReloadChoice::reapply_edits) {
+        std::string error;
+        edited = reapply_edits(state.doc, *state.pending_reload, error);
+        if (!edited) {
+            state.message = "Edits not re-applied: " + error;
+            return;
+        }
+    }
+    LoadAttempt newer = std::move(*state.pending_reload);
+    accept_load(state.doc, state.doc.path, std::move(newer));
+    after_scene_replaced(state);
+    if (edited) {
+        state.doc.scene = std::move(*edited);
+        state.undo.record(state.doc.original);  // one undo shows the file as it is
+        state.message = "Reloaded " + name + " and re-applied your edits (not saved yet)";
+    } else {
+        state.message = "Reloaded " + name + "; your edits were dropped";
+    }
+}
+
+namespace {
+
+bool save_now(AppState& state) {
     std::string error;
     if (!save_scene_in_place(state.doc, error)) {
         state.message = "Scene not saved: " + error;
         return false;
     }
     state.watcher.acknowledge();  // our own write is not an outside change
+    state.save_conflict.clear();
+    state.pending_reload.reset();
     state.message = "Saved " + state.doc.path.string();
     return true;
+}
+
+}  // namespace
+
+bool save_scene(AppState& state) {
+    std::string what;
+    if (state.doc.loaded && file_changed_on_disk(state.doc, what)) {
+        state.save_conflict = state.doc.path.filename().string() + " " + what +
+                              " since it was loaded; saving would replace that";
+        state.message = "Scene not saved: " + state.save_conflict;
+        return false;
+    }
+    return save_now(state);
+}
+
+bool save_scene_anyway(AppState& state) {
+    return save_now(state);
 }
 
 bool save_image(AppState& state, const std::filesystem::path& path) {
@@ -158,8 +253,12 @@ void reset_free_camera(AppState& state) {
         free_camera_from(cameras[std::clamp<int>(state.camera_index, 0, cameras.size() - 1)]);
 }
 
-void copy_free_camera_to_scene(AppState& state, const std::string& name) {
-    if (!state.doc.loaded || state.doc.scene.cameras.empty()) return;
+bool copy_free_camera_to_scene(AppState& state, const std::string& name) {
+    if (!state.doc.loaded || state.doc.scene.cameras.empty()) return false;
+    if (find_camera(state.doc.scene, name) >= 0) {
+        state.message = "A camera is already called \"" + name + "\": choose another name";
+        return false;
+    }
     const Scene before = state.doc.scene;
     const FreeCamera from = state.free_camera_active
                                 ? state.free_camera
@@ -170,6 +269,7 @@ void copy_free_camera_to_scene(AppState& state, const std::string& name) {
     state.camera_index = static_cast<int>(state.doc.scene.cameras.size()) - 1;
     state.free_camera_active = false;
     state.message = "Added camera \"" + name + "\" (Save scene to keep it)";
+    return true;
 }
 
 void toggle_pause(AppState& state) {

@@ -10,14 +10,34 @@
 
 namespace jt::view {
 
-// Opens `path`. When it does not load, a scene already open stays open and
-// the diagnostics show what is wrong.
+// Opens `path` and waits for it (start-up, scripts, tests). When it does not
+// load, a scene already open stays open and the diagnostics show what is wrong.
 void open_scene(AppState& state, const std::filesystem::path& path);
-// Reads the open file again (also done by the watcher when it changes).
+// The same without waiting: the file is read and parsed on the loader's
+// thread and taken in by a later frame (take_finished_load).
+void request_open(AppState& state, const std::filesystem::path& path);
+// Reads the open file again, off the UI thread (also done by the watcher when
+// it changes). A file with errors keeps the last good scene. With unsaved
+// edits nothing is replaced: the newer text waits in `pending_reload` for the
+// user's choice.
 void reload_scene(AppState& state);
-// Reloads when the watcher saw the file change; true when it did.
+// Starts a reload when the watcher saw the file change; true when it did.
 bool reload_if_changed(AppState& state);
+// Takes in a finished open or reload, if any; true when there was one.
+bool take_finished_load(AppState& state);
+
+enum class ReloadChoice {
+    drop_edits,     // take the file as it is now
+    reapply_edits,  // take the file and apply the unsaved edits to it again
+    keep_edits,     // ignore the file's new text (saving will then ask)
+};
+void resolve_reload(AppState& state, ReloadChoice choice);
+
+// Saves the edits into the file, unless the file changed on disk since it was
+// loaded: then nothing is written and `save_conflict` says so.
 bool save_scene(AppState& state);
+// Saves even though the file changed on disk, replacing what is there.
+bool save_scene_anyway(AppState& state);
 bool save_image(AppState& state, const std::filesystem::path& path);
 
 // Applies `change` to the scene as one undoable step (for edits made outside
@@ -38,9 +58,11 @@ void next_camera(AppState& state);
 // Starts moving freely from the selected scene camera (or keeps moving).
 void use_free_camera(AppState& state);
 void reset_free_camera(AppState& state);
-// Appends the free camera to the scene as a new camera named `name` and selects it.
-void copy_free_camera_to_scene(AppState& state, const std::string& name);
+// Appends the free camera to the scene as a new camera named `name` and
+// selects it; refused when a camera already has that name.
+bool copy_free_camera_to_scene(AppState& state, const std::string& name);
 
+// Pauses the render, or continues it from where it paused.
 void toggle_pause(AppState& state);
 
 // Starts a render when what should be shown changed, then moves the finished

@@ -9,6 +9,7 @@
 #include "recent_files.hpp"
 #include "render_controller.hpp"
 #include "scene_document.hpp"
+#include "scene_loader.hpp"
 #include "undo_stack.hpp"
 
 #include <chrono>
@@ -50,7 +51,16 @@ struct AppState {
     // not mistaken for a widget edit.
     std::uint64_t scene_generation = 0;
     FileWatcher watcher;
+    SceneLoader loader;  // opens and reloads off the UI thread
     RecentFiles recent;
+
+    // A newer text of the file, loaded while there were unsaved edits: held
+    // until the user chooses (resolve_reload) so that neither is lost unasked.
+    std::optional<LoadAttempt> pending_reload;
+    std::string reapply_problem;  // why the edits cannot be re-applied to it, or empty
+    // Why the last Save scene was refused (the file changed on disk), or empty;
+    // save_scene_anyway overwrites it.
+    std::string save_conflict;
 
     // Which camera renders: one of the scene's, or the free camera.
     int camera_index = 0;

@@ -67,13 +67,26 @@ bool HeadlessViewer::run_until_complete(AppState& state, std::chrono::millisecon
                                         int settle_frames) {
     const auto deadline = std::chrono::steady_clock::now() + timeout;
     frame(state);
-    while (!render_complete(state)) {
-        if (!state.started || std::chrono::steady_clock::now() > deadline) return false;
+    while (!render_complete(state) || state.loader.busy()) {
+        const bool loading = state.loader.busy();
+        if ((!state.started && !loading) || std::chrono::steady_clock::now() > deadline)
+            return false;
         // Leave the cores to the render; the picture is only read at the end.
         std::this_thread::sleep_for(std::chrono::milliseconds(20));
         frame(state);
     }
     for (int i = 0; i < settle_frames; ++i) frame(state);
+    return true;
+}
+
+bool HeadlessViewer::run_until_loaded(AppState& state, std::chrono::milliseconds timeout) {
+    const auto deadline = std::chrono::steady_clock::now() + timeout;
+    frame(state);
+    while (state.loader.busy()) {
+        if (std::chrono::steady_clock::now() > deadline) return false;
+        std::this_thread::sleep_for(std::chrono::milliseconds(2));
+        frame(state);
+    }
     return true;
 }
 

@@ -32,6 +32,10 @@ class HeadlessViewer {
     bool run_until_complete(AppState& state,
                             std::chrono::milliseconds timeout = std::chrono::minutes(10),
                             int settle_frames = 2);
+    // Runs frames until no open or reload is in flight (and one more, which
+    // takes the result in). False on timeout.
+    bool run_until_loaded(AppState& state,
+                          std::chrono::milliseconds timeout = std::chrono::minutes(2));
     // Simulates a HiDPI screen: `scale` framebuffer pixels per window unit.
     void set_framebuffer_scale(float scale) { scale_ = scale > 0 ? scale : 1.0f; }
     // The last frame as drawn (rows bottom-up).

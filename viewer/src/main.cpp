@@ -121,7 +121,7 @@ int run_window(const Arguments& args) {
             else
                 window.poll_events();
             if (dropped) {
-                open_scene(app, *dropped);
+                request_open(app, *dropped);
                 dropped.reset();
             }
             int ww = 0, wh = 0, fw = 0, fh = 0;

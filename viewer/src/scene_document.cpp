@@ -60,13 +60,14 @@ LoadAttempt load_scene_file(const std::filesystem::path& path) {
 
 void accept_load(SceneDocument& doc, const std::filesystem::path& path, LoadAttempt attempt) {
     doc.diagnostics = std::move(attempt.diagnostics);
-    doc.diagnostics_source = attempt.text;
     doc.diagnostics_path = path;
     doc.load_failed = !attempt.ok;
     if (!attempt.ok) {
+        doc.diagnostics_source = std::move(attempt.text);  // moved: it may be huge
         if (!doc.loaded) doc.path = path;
         return;
     }
+    doc.diagnostics_source = attempt.text;
     doc.path = path;
     doc.loaded = true;
     doc.text = std::move(attempt.text);
@@ -85,6 +86,40 @@ std::string format_diagnostics(const SceneDocument& doc) {
 
 bool has_unsaved_edits(const SceneDocument& doc) {
     return doc.loaded && doc.scene != doc.original;
+}
+
+bool file_changed_on_disk(const SceneDocument& doc, std::string& what) {
+    std::error_code ec;
+    if (!std::filesystem::exists(doc.path, ec)) {
+        what = "was deleted";
+        return true;
+    }
+    // A size that differs answers without reading a file that may be huge.
+    const std::uintmax_t size = std::filesystem::file_size(doc.path, ec);
+    if (!ec && size == doc.text.size()) {
+        std::ifstream in(doc.path, std::ios::binary);
+        std::string bytes(doc.text.size(), '\0');
+        if (in.read(bytes.data(), static_cast<std::streamsize>(bytes.size())) &&
+            in.peek() == std::char_traits<char>::eof() && bytes == doc.text)
+            return false;
+    }
+    what = "was changed by another program";
+    return true;
+}
+
+std::optional<Scene> reapply_edits(const SceneDocument& doc, const LoadAttempt& newer,
+                                   std::string& error) {
+    SourceEditResult edit = apply_scene_edits(newer.text, newer.source, doc.original, doc.scene);
+    if (!edit.ok()) {
+        error = edit.error;
+        return std::nullopt;
+    }
+    ParseResult parsed = parse_scene(edit.text);
+    if (!parsed.ok()) {
+        error = "the edits do not fit the new text";
+        return std::nullopt;
+    }
+    return std::move(parsed.scene);
 }
 
 bool save_scene_in_place(SceneDocument& doc, std::string& error) {

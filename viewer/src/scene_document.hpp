@@ -8,6 +8,7 @@
 #include "jtracer/source_map.hpp"
 
 #include <filesystem>
+#include <optional>
 #include <string>
 #include <vector>
 
@@ -49,6 +50,18 @@ bool has_unsaved_edits(const SceneDocument& doc);
 
 // Writes the edits into the file in place (see source_edit.hpp), atomically,
 // then takes the new text as the document's base. False with `error` on failure.
+// Does not look at what is on disk now: see file_changed_on_disk.
 bool save_scene_in_place(SceneDocument& doc, std::string& error);
+
+// True when the file no longer holds the text the document was loaded from
+// (edited by someone else, broken, deleted), so that saving over it would
+// lose what is there; `what` then says how it differs.
+bool file_changed_on_disk(const SceneDocument& doc, std::string& what);
+
+// The edits made to `doc` (its scene against its original) applied to a newer
+// text of the file, where the edited items still exist. Nothing when they
+// cannot be (items added or removed in the file), with `error` saying why.
+std::optional<Scene> reapply_edits(const SceneDocument& doc, const LoadAttempt& newer,
+                                   std::string& error);
 
 }  // namespace jt::view

@@ -93,6 +93,7 @@ void viewer_frame(AppState& state, const FrameInfo& info) {
     const ImGuiIO& io = ImGui::GetIO();
     const float w = io.DisplaySize.x, h = io.DisplaySize.y;
     reload_if_changed(state);
+    take_finished_load(state);
     const Scene before = state.doc.scene;
     const std::uint64_t generation = state.scene_generation;
     handle_shortcuts(state);

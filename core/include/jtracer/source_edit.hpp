@@ -2,7 +2,8 @@
 // Writes an edited Scene back into the .jts text it was parsed from, touching
 // only what changed: each changed value is replaced at its span, a property
 // that was never written is inserted into its block, a new camera is appended
-// to the last `cameras` block. Every other byte (comments, order, spacing)
+// to the last `cameras` block, and cameras removed from the end lose their
+// blocks. Every other byte (comments, order, spacing)
 // stays as it was. The viewer's "Save scene" uses it.
 
 #include "jtracer/scene.hpp"
@@ -21,9 +22,9 @@ struct SourceEditResult {
 };
 
 // `text` parsed to `original` with the spans in `source`. `edited` may differ
-// from `original` in any value, and may have more cameras at the end; adding or
-// removing primitives, lights or transform operations, or changing a shape's
-// kind, is reported as an error (the text is then left as it was).
+// from `original` in any value, and may have more or fewer cameras at the end;
+// adding or removing primitives, lights or transform operations, or changing a
+// shape's kind, is reported as an error (the text is then left as it was).
 SourceEditResult apply_scene_edits(std::string_view text, const SceneSource& source,
                                    const Scene& original, const Scene& edited);
 

@@ -2,6 +2,7 @@
 
 #include "edit/text_edits.hpp"
 
+#include <algorithm>
 #include <charconv>
 #include <initializer_list>
 #include <optional>
@@ -113,6 +114,24 @@ class SourceWriter {
             }
             edits_.push_back({close, 0, inserted});
         }
+    }
+
+    // Removes the block from its keyword to its closing brace; whole lines
+    // when the block has lines of its own, so no blank line is left behind.
+    void remove(const BlockSource& block) {
+        std::size_t begin = block.keyword_span.offset;
+        std::size_t end = block.close_brace + 1;
+        std::size_t after = end;
+        while (after < text_.size() && (text_[after] == ' ' || text_[after] == '\t')) ++after;
+        if (edit::starts_its_line(text_, begin) &&
+            (after == text_.size() || text_[after] == '\n')) {
+            begin = edit::line_start(text_, begin);
+            end = after < text_.size() ? after + 1 : after;
+        } else if (end < text_.size() && text_[end] == ' ') {
+            ++end;
+        }
+        edits_.push_back({begin, end - begin, ""});
+        ++changed_;
     }
 
     void append(const std::string& block_text) {
@@ -260,11 +279,14 @@ std::optional<std::size_t> cameras_close(std::string_view text, const BlockSourc
 }
 
 void write_cameras(SourceWriter& w, const SceneSource& source, const Scene& a, const Scene& b) {
-    if (b.cameras.size() < a.cameras.size() || source.cameras.size() != a.cameras.size()) {
-        w.fail("cameras were removed; that cannot be saved in place");
+    if (source.cameras.size() != a.cameras.size()) {
+        w.fail("the cameras do not match the text; cannot save in place");
         return;
     }
-    for (std::size_t i = 0; i < a.cameras.size(); ++i) {
+    // Cameras removed from the end (as undoing a new camera does) lose their blocks.
+    const std::size_t kept = std::min(a.cameras.size(), b.cameras.size());
+    for (std::size_t i = kept; i < a.cameras.size(); ++i) w.remove(source.cameras[i]);
+    for (std::size_t i = 0; i < kept; ++i) {
         for (const auto& [name, value] : camera_changes(w, a.cameras[i], b.cameras[i])) {
             // `active_camera` inside a camera is read as its name (SEMANTICS.md 2).
             if (name == "name")
@@ -273,7 +295,7 @@ void write_cameras(SourceWriter& w, const SceneSource& source, const Scene& a, c
                 w.set(source.cameras[i], name, value);
         }
     }
-    if (b.cameras.size() == a.cameras.size()) return;
+    if (b.cameras.size() <= a.cameras.size()) return;
     std::vector<std::string> lines;
     for (std::size_t i = a.cameras.size(); i < b.cameras.size(); ++i) {
         auto more = camera_lines(w, b.cameras[i]);

@@ -1,0 +1,274 @@
+// The viewer and its scene file on disk, through the OSMesa frame loop: no
+// save or reload ever loses the user's edits or someone else's newer text
+// unasked, and a file that is deleted, cut short, garbage or huge never costs
+// the last good image, the UI's frames or a crash.
+
+#include "app_actions.hpp"
+#include "headless.hpp"
+#include "jtracer/parser.hpp"
+
+#include <gtest/gtest.h>
+
+#include <algorithm>
+#include <chrono>
+#include <cstdio>
+#include <fstream>
+#include <sstream>
+
+#include <unistd.h>
+
+namespace jt::view {
+namespace {
+
+namespace fs = std::filesystem;
+
+const fs::path kScene = fs::path(JT_VIEWER_TEST_DIR) / "scenes" / "two_cameras.jts";
+constexpr auto kTimeout = std::chrono::minutes(2);
+
+std::string read(const fs::path& path) {
+    std::ifstream in(path, std::ios::binary);
+    std::stringstream buffer;
+    buffer << in.rdbuf();
+    return buffer.str();
+}
+
+// Written beside and renamed over, as editors save: never seen half-written.
+void save_as_editor(const fs::path& path, const std::string& text) {
+    const fs::path temp = fs::path(path).concat(".tmp");
+    std::ofstream(temp, std::ios::binary) << text;
+    fs::rename(temp, path);
+}
+
+std::string replaced(std::string text, std::string_view from, std::string_view to) {
+    const std::size_t at = text.find(from);
+    EXPECT_NE(at, std::string::npos) << from;
+    if (at != std::string::npos) text.replace(at, from.size(), to);
+    return text;
+}
+
+fs::path scene_copy(const std::string& name) {
+    const fs::path dir = fs::temp_directory_path() /
+                         ("jtracer-view-files-" + name + "-" + std::to_string(::getpid()));
+    fs::remove_all(dir);
+    fs::create_directories(dir);
+    fs::copy_file(kScene, dir / "scene.jts");
+    return dir / "scene.jts";
+}
+
+ViewerConfig test_config() {
+    ViewerConfig config;
+    config.watch_interval = std::chrono::milliseconds(0);
+    return config;
+}
+
+const std::string kOriginal = read(kScene);
+// What another program writes while the viewer has the file open.
+const std::string kTheirs =
+    replaced(kOriginal, "point_light { position: <3, 5, 4>; intensity: <1, 1, 1>; }",
+             "point_light { position: <3, 5, 4>; intensity: <0.5, 0.5, 0.5>; }");
+const Colour kMyPigment(0.25, 0.5, 0.75);
+const std::string kMine =
+    replaced(kOriginal, "pigment: <0.9, 0.2, 0.1>;", "pigment: <0.25, 0.5, 0.75>;");
+
+class ViewerFiles : public ::testing::Test {
+  protected:
+    void SetUp() override {
+        ASSERT_TRUE(viewer.ok()) << viewer.error();
+        file = scene_copy(::testing::UnitTest::GetInstance()->current_test_info()->name());
+        open_scene(state, file);
+        ASSERT_TRUE(viewer.run_until_complete(state, kTimeout));
+    }
+    void TearDown() override { fs::remove_all(file.parent_path()); }
+
+    void edit_pigment() {
+        edit_scene(state, [](Scene& s) { s.primitives[1].material.pigment = kMyPigment; });
+    }
+    // The file changes under the viewer, which notices and reloads.
+    void they_save(const std::string& text) {
+        save_as_editor(file, text);
+        ASSERT_TRUE(viewer.run_until_loaded(state));
+    }
+
+    HeadlessViewer viewer{320, 240};
+    AppState state{test_config()};
+    fs::path file;
+};
+
+TEST_F(ViewerFiles, ReloadWithUnsavedEditsKeepsThemUntilTheUserChooses) {
+    edit_pigment();
+    they_save(kTheirs);
+    ASSERT_TRUE(state.pending_reload.has_value()) << state.message;
+    EXPECT_EQ(state.doc.scene.primitives[1].material.pigment, kMyPigment) << "edits kept";
+    EXPECT_TRUE(has_unsaved_edits(state.doc));
+    EXPECT_TRUE(state.reapply_problem.empty()) << state.reapply_problem;
+
+    resolve_reload(state, ReloadChoice::keep_edits);
+    EXPECT_FALSE(state.pending_reload.has_value());
+    EXPECT_EQ(state.doc.scene.primitives[1].material.pigment, kMyPigment);
+    EXPECT_EQ(read(file), kTheirs) << "nothing written yet";
+}
+
+TEST_F(ViewerFiles, ReloadCanDropTheEdits) {
+    edit_pigment();
+    they_save(kTheirs);
+    resolve_reload(state, ReloadChoice::drop_edits);
+    EXPECT_FALSE(has_unsaved_edits(state.doc));
+    EXPECT_EQ(state.doc.text, kTheirs);
+    EXPECT_EQ(state.doc.scene, parse_scene(kTheirs).scene);
+}
+
+TEST_F(ViewerFiles, ReloadCanReapplyTheEditsOntoTheNewerText) {
+    edit_pigment();
+    they_save(kTheirs);
+    resolve_reload(state, ReloadChoice::reapply_edits);
+    EXPECT_FALSE(state.pending_reload.has_value());
+    EXPECT_EQ(state.doc.scene.primitives[1].material.pigment, kMyPigment) << "my edit";
+    EXPECT_EQ(state.doc.scene.lights[0].intensity, Colour(0.5)) << "their change";
+    EXPECT_TRUE(has_unsaved_edits(state.doc));
+    ASSERT_TRUE(save_scene(state)) << state.message;
+    EXPECT_EQ(read(file),
+              replaced(kTheirs, "pigment: <0.9, 0.2, 0.1>;", "pigment: <0.25, 0.5, 0.75>;"));
+    undo(state);  // back to the file as they wrote it
+    EXPECT_EQ(state.doc.scene, parse_scene(kTheirs).scene);
+}
+
+TEST_F(ViewerFiles, SaveRefusesToOverwriteANewerFileUntilToldTo) {
+    edit_pigment();
+    they_save(kTheirs);
+    resolve_reload(state, ReloadChoice::keep_edits);
+    EXPECT_FALSE(save_scene(state));
+    EXPECT_NE(state.save_conflict.find("changed by another program"), std::string::npos)
+        << state.save_conflict;
+    EXPECT_EQ(read(file), kTheirs);
+    ASSERT_TRUE(save_scene_anyway(state)) << state.message;
+    EXPECT_TRUE(state.save_conflict.empty());
+    EXPECT_EQ(read(file), kMine);
+    // Our own save is not a change from outside.
+    ASSERT_TRUE(viewer.run_until_loaded(state));
+    EXPECT_FALSE(state.pending_reload.has_value());
+}
+
+TEST_F(ViewerFiles, SaveRefusesToOverwriteABrokenOrDeletedFile) {
+    edit_pigment();
+    const std::string broken = replaced(kOriginal, "height: 48;", "height: 48");
+    they_save(broken);
+    EXPECT_TRUE(state.doc.load_failed);
+    EXPECT_EQ(state.doc.scene.primitives[1].material.pigment, kMyPigment);
+    EXPECT_FALSE(save_scene(state));
+    EXPECT_EQ(read(file), broken) << "their newer (broken) text stays";
+
+    fs::remove(file);
+    ASSERT_TRUE(viewer.run_until_loaded(state));
+    EXPECT_FALSE(save_scene(state));
+    EXPECT_NE(state.save_conflict.find("was deleted"), std::string::npos) << state.save_conflict;
+    EXPECT_FALSE(fs::exists(file));
+    ASSERT_TRUE(save_scene_anyway(state)) << state.message;
+    EXPECT_EQ(read(file), kMine);
+}
+
+TEST_F(ViewerFiles, SavingAnUntouchedFileNeedsNoConfirmation) {
+    edit_pigment();
+    ASSERT_TRUE(save_scene(state)) << state.message;
+    EXPECT_EQ(read(file), kMine);
+    fs::last_write_time(file, fs::last_write_time(file) + std::chrono::hours(1));  // touched only
+    ASSERT_TRUE(viewer.run_until_loaded(state));
+    edit_scene(state, [](Scene& s) { s.settings.samples = 2; });
+    EXPECT_TRUE(save_scene(state)) << state.message;
+}
+
+TEST_F(ViewerFiles, UndoingANewCameraAfterSavingSavesItsRemoval) {
+    use_free_camera(state);
+    orbit(state.free_camera, 40, 10, 240);
+    ASSERT_TRUE(copy_free_camera_to_scene(state, "mine"));
+    EXPECT_FALSE(copy_free_camera_to_scene(state, "mine")) << "names stay unique";
+    ASSERT_TRUE(save_scene(state)) << state.message;
+    EXPECT_EQ(parse_scene(read(file)).scene.cameras.size(), 3u);
+    undo(state);
+    ASSERT_EQ(state.doc.scene.cameras.size(), 2u);
+    ASSERT_TRUE(save_scene(state)) << state.message;
+    EXPECT_EQ(read(file), kOriginal) << "byte for byte the file before the camera";
+}
+
+// A file the viewer had loaded, then broken in each way a file breaks.
+struct Fault {
+    const char* name;
+    std::string (*contents)(const std::string& good);
+};
+
+class ViewerFaults : public ViewerFiles, public ::testing::WithParamInterface<Fault> {};
+
+TEST_P(ViewerFaults, KeepTheLastImageShowTheErrorAndRecover) {
+    const Image8 good = state.display;
+    const Scene good_scene = state.doc.scene;
+    const auto jobs = state.renderer.jobs_started();
+    if (GetParam().contents)  // written in place: a save cut short leaves just this
+        std::ofstream(file, std::ios::binary | std::ios::trunc) << GetParam().contents(kOriginal);
+    else
+        fs::remove(file);
+
+    // Frames keep coming while the file loads: the UI thread never parses.
+    const auto deadline = std::chrono::steady_clock::now() + kTimeout;
+    int frames = 0, frames_while_loading = 0;
+    double slowest_ms = 0.0;
+    viewer.frame(state);  // sees the change, starts the reload
+    do {
+        const auto start = std::chrono::steady_clock::now();
+        const bool loading = state.loader.busy();
+        viewer.frame(state);
+        slowest_ms = std::max(slowest_ms, std::chrono::duration<double, std::milli>(
+                                              std::chrono::steady_clock::now() - start)
+                                              .count());
+        ++frames;
+        if (loading) ++frames_while_loading;
+    } while (state.loader.busy() && std::chrono::steady_clock::now() < deadline);
+    std::printf("%s: %d frames while loading, slowest %.1f ms\n", GetParam().name, frames,
+                slowest_ms);
+    RecordProperty("slowest_frame_ms", std::to_string(slowest_ms));
+    ASSERT_FALSE(state.loader.busy()) << "the load never finished";
+
+    EXPECT_TRUE(state.doc.load_failed);
+    ASSERT_FALSE(state.doc.diagnostics.empty());
+    EXPECT_FALSE(format_diagnostics(state.doc).empty());
+    EXPECT_EQ(state.doc.scene, good_scene);
+    EXPECT_EQ(state.display, good);
+    EXPECT_EQ(state.presenter.read_texture(), good);
+    EXPECT_EQ(state.renderer.jobs_started(), jobs);
+    if (std::string(GetParam().name) == "huge") {
+        EXPECT_GT(frames_while_loading, 2);
+    }
+
+    save_as_editor(file, kOriginal);  // fixed
+    ASSERT_TRUE(viewer.run_until_loaded(state));
+    EXPECT_FALSE(state.doc.load_failed);
+    EXPECT_TRUE(state.doc.diagnostics.empty());
+    ASSERT_TRUE(viewer.run_until_complete(state, kTimeout));
+    EXPECT_EQ(state.presenter.read_texture(), good);
+}
+
+// 100 MB: the good scene, then a comment the lexer reads through to an error
+// at the very end.
+std::string huge(const std::string& good) {
+    constexpr std::size_t size = 100u << 20;
+    std::string text = good + "#";
+    text.append(size - text.size() - 7, 'x');
+    text += "\noops;\n";
+    return text;
+}
+
+INSTANTIATE_TEST_SUITE_P(
+    Faults, ViewerFaults,
+    ::testing::Values(
+        Fault{"deleted", nullptr}, Fault{"empty", [](const std::string&) { return std::string(); }},
+        Fault{"truncated", [](const std::string& good) { return good.substr(0, good.size() / 2); }},
+        Fault{"garbage",
+              [](const std::string&) {
+                  return std::string(
+                      "\x7f"
+                      "ELF\x02\x01\x01\0\0\xff\xfe{{",
+                      14);
+              }},
+        Fault{"huge", huge}),
+    [](const ::testing::TestParamInfo<Fault>& info) { return std::string(info.param.name); });
+
+}  // namespace
+}  // namespace jt::view
