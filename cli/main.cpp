@@ -121,8 +121,7 @@ int run(const Options& o) {
         options.region = jt::to_image_rect(*o.region, options.height);
     }
 
-    if (std::string error = check_render_memory(options.width, options.height, options.samples);
-        !error.empty()) {
+    if (std::string error = check_render_memory(options, o.region_output); !error.empty()) {
         std::cerr << "jtracer-cli: " << error << "; nothing was written\n";
         return exit_io_error;
     }

@@ -30,13 +30,18 @@ std::string gib(std::uint64_t bytes) {
 
 }  // namespace
 
-std::uint64_t render_memory_bytes(int width, int height, int samples) {
-    const auto pixels = static_cast<std::uint64_t>(std::max(width, 0)) *
-                        static_cast<std::uint64_t>(std::max(height, 0));
-    // 3 bytes each for the job's image, the writer's copy and the encoded file;
-    // with several samples a running sum of three doubles.
-    const std::uint64_t per_pixel = 9 + (samples > 1 ? 24 : 0);
-    return pixels * per_pixel;
+std::uint64_t render_memory_bytes(const RenderOptions& options, bool region_output) {
+    auto pixels = [](int width, int height) {
+        return static_cast<std::uint64_t>(std::max(width, 0)) *
+               static_cast<std::uint64_t>(std::max(height, 0));
+    };
+    const std::uint64_t frame = pixels(options.width, options.height);
+    const std::uint64_t rendered =
+        options.region ? pixels(options.region->width(), options.region->height()) : frame;
+    const std::uint64_t written = region_output ? rendered : frame;
+    // 3 bytes a pixel for the job's image, with several samples a running sum
+    // of three doubles; 3 each for the writer's copy and the encoded file.
+    return rendered * (3 + (options.samples > 1 ? 24 : 0)) + written * 6;
 }
 
 std::uint64_t available_memory_bytes() {
@@ -49,13 +54,13 @@ std::uint64_t available_memory_bytes() {
     return available;
 }
 
-std::string check_render_memory(int width, int height, int samples) {
-    const std::uint64_t needed = render_memory_bytes(width, height, samples);
+std::string check_render_memory(const RenderOptions& options, bool region_output) {
+    const std::uint64_t needed = render_memory_bytes(options, region_output);
     const std::uint64_t available = available_memory_bytes();
     if (available == 0 || needed <= available) return {};
     std::ostringstream message;
-    message << "a " << width << " x " << height << " image with " << samples
-            << (samples == 1 ? " sample" : " samples") << " needs about " << gib(needed)
+    message << "a " << options.width << " x " << options.height << " image with " << options.samples
+            << (options.samples == 1 ? " sample" : " samples") << " needs about " << gib(needed)
             << " of memory, more than the " << gib(available)
             << " available; choose a smaller --width/--height or fewer --samples";
     return message.str();
