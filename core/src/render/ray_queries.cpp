@@ -38,6 +38,7 @@ struct OcclusionQuery {
     const Geometry* geometry;
     Vec3 origin, direction;
     double t_min, t_max;
+    OccluderHint blocker;  // what blocked the ray, once something did
 };
 
 // Neighbours of non-negative finite numbers by their bit patterns: the library
@@ -153,15 +154,46 @@ void closest_by_testing_all(ClosestQuery& q) {
 }
 
 bool occluded_by_testing_all(const Geometry& g, const Vec3& origin, const Vec3& direction,
-                             double t_min, double t_max) {
-    for (const WorldSphere& s : g.spheres)
-        if (intersect_sphere(origin, direction, s.center, s.radius, t_min, t_max) != no_hit)
+                             double t_min, double t_max, OccluderHint& blocker) {
+    for (std::uint32_t i = 0; i < g.spheres.size(); ++i) {
+        const WorldSphere& s = g.spheres[i];
+        if (intersect_sphere(origin, direction, s.center, s.radius, t_min, t_max) != no_hit) {
+            blocker = {OccluderHint::Set::sphere, i};
             return true;
+        }
+    }
     CylinderPart part;
-    for (const TransformedShape& s : g.shapes)
+    for (std::uint32_t i = 0; i < g.shapes.size(); ++i) {
+        const TransformedShape& s = g.shapes[i];
         if (!misses_bounds(s, origin, direction) &&
-            shape_distance(s, origin, direction, t_min, t_max, part) != no_hit)
+            shape_distance(s, origin, direction, t_min, t_max, part) != no_hit) {
+            blocker = {OccluderHint::Set::shape, i};
             return true;
+        }
+    }
+    return false;
+}
+
+// Whether the hinted surface blocks the ray; false for no hint or a stale one.
+bool hinted_blocks(const Geometry& g, const OccluderHint& hint, const Vec3& origin,
+                   const Vec3& direction, double t_min, double t_max) {
+    CylinderPart part;
+    switch (hint.set) {
+        case OccluderHint::Set::none:
+            return false;
+        case OccluderHint::Set::plane:
+            if (hint.index >= g.planes.size()) return false;
+            return intersect_plane(origin, direction, g.planes[hint.index].normal,
+                                   g.planes[hint.index].distance, t_min, t_max) != no_hit;
+        case OccluderHint::Set::sphere:
+            if (hint.index >= g.spheres.size()) return false;
+            return intersect_sphere(origin, direction, g.spheres[hint.index].center,
+                                    g.spheres[hint.index].radius, t_min, t_max) != no_hit;
+        case OccluderHint::Set::shape:
+            if (hint.index >= g.shapes.size()) return false;
+            return shape_distance(g.shapes[hint.index], origin, direction, t_min, t_max, part) !=
+                   no_hit;
+    }
     return false;
 }
 
@@ -191,8 +223,10 @@ void sphere_occluded(const RTCOccludedFunctionNArguments* args) {
     if (!args->valid[0]) return;
     auto& q = *reinterpret_cast<OcclusionQuery*>(args->context);
     const WorldSphere& s = q.geometry->spheres[args->primID];
-    if (intersect_sphere(q.origin, q.direction, s.center, s.radius, q.t_min, q.t_max) != no_hit)
+    if (intersect_sphere(q.origin, q.direction, s.center, s.radius, q.t_min, q.t_max) != no_hit) {
+        q.blocker = {OccluderHint::Set::sphere, args->primID};
         mark_occluded(args);
+    }
 }
 
 void shape_bounds(const RTCBoundsFunctionArguments* args) {
@@ -220,8 +254,10 @@ void shape_occluded(const RTCOccludedFunctionNArguments* args) {
     auto& q = *reinterpret_cast<OcclusionQuery*>(args->context);
     const TransformedShape& s = q.geometry->shapes[args->primID];
     CylinderPart part;
-    if (shape_distance(s, q.origin, q.direction, q.t_min, q.t_max, part) != no_hit)
+    if (shape_distance(s, q.origin, q.direction, q.t_min, q.t_max, part) != no_hit) {
+        q.blocker = {OccluderHint::Set::shape, args->primID};
         mark_occluded(args);
+    }
 }
 
 bool closest_hit(const Geometry& geometry, const Vec3& origin, const Vec3& direction, double t_min,
@@ -279,22 +315,35 @@ bool closest_hit(const Geometry& geometry, const Vec3& origin, const Vec3& direc
 }
 
 bool occluded(const Geometry& geometry, const Vec3& origin, const Vec3& direction, double t_min,
-              double t_max) {
-    for (const WorldPlane& p : geometry.planes)
-        if (intersect_plane(origin, direction, p.normal, p.distance, t_min, t_max) != no_hit)
-            return true;
-    if (!geometry.bvh) return occluded_by_testing_all(geometry, origin, direction, t_min, t_max);
-    OcclusionQuery q;
-    rtcInitIntersectContext(&q.context);
-    q.geometry = &geometry;
-    q.origin = origin;
-    q.direction = direction;
-    q.t_min = t_min;
-    q.t_max = t_max;
-    RTCRay ray;
-    set_float_ray(ray, origin, direction, t_min, t_max);
-    rtcOccluded1(geometry.bvh, &q.context, &ray);
-    return ray.tfar < 0.0f;
+              double t_max, OccluderHint* hint) {
+    if (hint && hinted_blocks(geometry, *hint, origin, direction, t_min, t_max)) return true;
+    OccluderHint blocker;
+    bool blocked = false;
+    for (std::uint32_t i = 0; i < geometry.planes.size() && !blocked; ++i) {
+        const WorldPlane& p = geometry.planes[i];
+        if (intersect_plane(origin, direction, p.normal, p.distance, t_min, t_max) != no_hit) {
+            blocker = {OccluderHint::Set::plane, i};
+            blocked = true;
+        }
+    }
+    if (!blocked && !geometry.bvh) {
+        blocked = occluded_by_testing_all(geometry, origin, direction, t_min, t_max, blocker);
+    } else if (!blocked) {
+        OcclusionQuery q;
+        rtcInitIntersectContext(&q.context);
+        q.geometry = &geometry;
+        q.origin = origin;
+        q.direction = direction;
+        q.t_min = t_min;
+        q.t_max = t_max;
+        RTCRay ray;
+        set_float_ray(ray, origin, direction, t_min, t_max);
+        rtcOccluded1(geometry.bvh, &q.context, &ray);
+        blocked = ray.tfar < 0.0f;
+        blocker = q.blocker;
+    }
+    if (blocked && hint) *hint = blocker;
+    return blocked;
 }
 
 }  // namespace jt

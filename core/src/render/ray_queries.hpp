@@ -24,9 +24,20 @@ struct Hit {
 bool closest_hit(const Geometry& geometry, const Vec3& origin, const Vec3& direction, double t_min,
                  Hit& hit);
 
-// Whether any surface lies at some t in (t_min, t_max).
+// The surface that blocked a previous shadow ray: shadow rays toward one light
+// from neighbouring points are mostly blocked by the same surface, and testing
+// it first skips the BVH walk. Only a guess: a stale or wrong one costs one
+// test and never changes an answer.
+struct OccluderHint {
+    enum class Set : std::uint8_t { none, plane, sphere, shape };
+    Set set = Set::none;
+    std::uint32_t index = 0;
+};
+
+// Whether any surface lies at some t in (t_min, t_max). With a hint, tries the
+// hinted surface first and leaves the hint on the surface that blocked the ray.
 bool occluded(const Geometry& geometry, const Vec3& origin, const Vec3& direction, double t_min,
-              double t_max);
+              double t_max, OccluderHint* hint = nullptr);
 
 // Embree callbacks for the two user geometries; prepare_scene registers them.
 void sphere_bounds(const RTCBoundsFunctionArguments* args);

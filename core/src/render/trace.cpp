@@ -7,6 +7,7 @@
 #include <algorithm>
 #include <array>
 #include <cmath>
+#include <vector>
 
 namespace jt {
 
@@ -28,7 +29,13 @@ Colour shade_hit(const PreparedScene& scene, const Material& m, const Vec3& poin
                  const Vec3& lifted, const Vec3& normal, const Vec3& view, std::uint64_t& rays) {
     Colour c = scene.settings.ambient_light * m.ambient * m.pigment;
     const Geometry& geometry = *scene.geometry;
-    for (const PointLight& light : scene.lights) {
+    // One hint a light, per thread: consecutive shadow rays of a thread come
+    // from neighbouring pixels of one tile. Hints never change a result, so
+    // neither thread count nor tile order can show in the image.
+    thread_local std::vector<OccluderHint> hints;
+    if (hints.size() < scene.lights.size()) hints.resize(scene.lights.size());
+    for (std::size_t light_index = 0; light_index < scene.lights.size(); ++light_index) {
+        const PointLight& light = scene.lights[light_index];
         Vec3 to_light = light.position - point;
         double distance = glm::length(to_light);
         if (!(distance > 0.0)) continue;
@@ -41,7 +48,8 @@ Colour shade_hit(const PreparedScene& scene, const Material& m, const Vec3& poin
         double shadow_distance = glm::length(shadow_direction);
         if (!(shadow_distance > 0.0)) continue;
         ++rays;
-        if (occluded(geometry, lifted, shadow_direction / shadow_distance, 0.0, shadow_distance))
+        if (occluded(geometry, lifted, shadow_direction / shadow_distance, 0.0, shadow_distance,
+                     &hints[light_index]))
             continue;
         // pow(x, 1) is x exactly, and adding a zero term changes nothing: both
         // shortcuts leave every bit as the plain formula would.
