@@ -6,6 +6,7 @@
 #include "app_actions.hpp"
 #include "headless.hpp"
 #include "jtracer/parser.hpp"
+#include "viewer_test_files.hpp"
 
 #include <gtest/gtest.h>
 
@@ -13,29 +14,16 @@
 #include <chrono>
 #include <cstdio>
 #include <fstream>
-#include <sstream>
-
-#include <unistd.h>
 
 namespace jt::view {
 namespace {
 
-namespace fs = std::filesystem;
-
-const fs::path kScene = fs::path(JT_VIEWER_TEST_DIR) / "scenes" / "two_cameras.jts";
-constexpr auto kTimeout = std::chrono::minutes(2);
-
-std::string read(const fs::path& path) {
-    std::ifstream in(path, std::ios::binary);
-    std::stringstream buffer;
-    buffer << in.rdbuf();
-    return buffer.str();
-}
+using namespace jt::view::test;
 
 // Written beside and renamed over, as editors save: never seen half-written.
 void save_as_editor(const fs::path& path, const std::string& text) {
     const fs::path temp = fs::path(path).concat(".tmp");
-    std::ofstream(temp, std::ios::binary) << text;
+    write(temp, text);
     fs::rename(temp, path);
 }
 
@@ -44,21 +32,6 @@ std::string replaced(std::string text, std::string_view from, std::string_view t
     EXPECT_NE(at, std::string::npos) << from;
     if (at != std::string::npos) text.replace(at, from.size(), to);
     return text;
-}
-
-fs::path scene_copy(const std::string& name) {
-    const fs::path dir = fs::temp_directory_path() /
-                         ("jtracer-view-files-" + name + "-" + std::to_string(::getpid()));
-    fs::remove_all(dir);
-    fs::create_directories(dir);
-    fs::copy_file(kScene, dir / "scene.jts");
-    return dir / "scene.jts";
-}
-
-ViewerConfig test_config() {
-    ViewerConfig config;
-    config.watch_interval = std::chrono::milliseconds(0);
-    return config;
 }
 
 const std::string kOriginal = read(kScene);

@@ -7,6 +7,7 @@
 #include "jtracer/render_job.hpp"
 #include "keys.hpp"
 #include "viewer_frame.hpp"
+#include "viewer_test_files.hpp"
 
 #include <gtest/gtest.h>
 #include <glm/geometric.hpp>
@@ -20,31 +21,7 @@
 namespace jt::view {
 namespace {
 
-namespace fs = std::filesystem;
-
-const fs::path kScene = fs::path(JT_VIEWER_TEST_DIR) / "scenes" / "two_cameras.jts";
-constexpr auto kTimeout = std::chrono::minutes(2);
-
-std::string read(const fs::path& path) {
-    std::ifstream in(path, std::ios::binary);
-    std::stringstream buffer;
-    buffer << in.rdbuf();
-    return buffer.str();
-}
-
-void write(const fs::path& path, const std::string& text) {
-    std::ofstream(path, std::ios::binary) << text;
-}
-
-// A copy of the test scene in a fresh folder, for tests that change the file.
-fs::path scene_copy(const std::string& name) {
-    const fs::path dir =
-        fs::temp_directory_path() / ("jtracer-view-gl-" + name + "-" + std::to_string(::getpid()));
-    fs::remove_all(dir);
-    fs::create_directories(dir);
-    fs::copy_file(kScene, dir / "scene.jts");
-    return dir / "scene.jts";
-}
+using namespace jt::view::test;
 
 // The image the core renders for `scene` through `camera`, without the viewer.
 Image8 core_render(const Scene& scene, int camera) {
@@ -57,12 +34,6 @@ Image8 core_render(const Scene& scene, int camera) {
     RenderJob job(prepare_scene(scene), options);
     job.run();
     return job.image();
-}
-
-ViewerConfig test_config() {
-    ViewerConfig config;
-    config.watch_interval = std::chrono::milliseconds(0);
-    return config;
 }
 
 class ViewerGl : public ::testing::Test {

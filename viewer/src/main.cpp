@@ -116,7 +116,8 @@ int run_window(const Arguments& args) {
         int frames_drawn = 0;
         while (!window.should_close() && !app.quit) {
             // Idle when the render is done: wake for input or to poll the file.
-            if (render_complete(app) && !args.exit_when_done)
+            // Not while a file loads: its result is taken in by the next frame.
+            if (render_complete(app) && !app.loader.busy() && !args.exit_when_done)
                 window.wait_events(0.2);
             else
                 window.poll_events();

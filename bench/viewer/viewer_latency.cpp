@@ -1,0 +1,239 @@
+// How long the viewer takes to show something after the user acts: from a
+// load, a material edit or a camera change being requested to the first
+// preview pass (1/8 resolution) of the new render being in the texture.
+//
+//   viewer_latency [--runs N] [--pace HZ] [--scene file.jts] [--size WxH]
+//
+// Runs the viewer's own code (loader thread, AppState, frame loop, render
+// controller, presenter) in an OSMesa context, as the tests do. Each event is
+// timed at three points: the render started (the frame that took the load or
+// the edit in), the first pass rendered by the core, and the first pass in the
+// texture (the frame that fetched and uploaded it, after glFinish). Frames are
+// paced at 60 per second, as the window's vsync paces them (--pace 0: back to
+// back), so the last figure includes up to one frame interval. OSMesa draws in
+// software what a GPU draws in a window: it gets one thread (LP_NUM_THREADS=1
+// unless set), so that it takes as little as possible from the render.
+
+#include "app_actions.hpp"
+#include "gl/gl.hpp"
+#include "headless.hpp"
+#include "jtracer/parser.hpp"
+#include "jtracer/source_edit.hpp"
+
+#include <algorithm>
+#include <chrono>
+#include <cstdio>
+#include <cstdlib>
+#include <cstring>
+#include <filesystem>
+#include <fstream>
+#include <functional>
+#include <sstream>
+#include <string>
+#include <thread>
+#include <vector>
+
+#include <unistd.h>
+
+namespace {
+
+using namespace jt;
+using namespace jt::view;
+using Clock = std::chrono::steady_clock;
+
+struct Timing {
+    double started_ms = 0;   // the render of the new scene was started
+    double rendered_ms = 0;  // the core finished the first pass
+    double shown_ms = 0;     // the first pass is in the texture
+};
+
+double ms_since(Clock::time_point t0) {
+    return std::chrono::duration<double, std::milli>(Clock::now() - t0).count();
+}
+
+// Draws frames from `t0` until the first pass of the render answering the
+// current scene is in the texture.
+double frame_interval_ms = 1000.0 / 60.0;
+
+// Waits for the next frame, as a swap with vsync would.
+void pace(Clock::time_point frame_start) {
+    if (frame_interval_ms > 0)
+        std::this_thread::sleep_until(
+            frame_start + std::chrono::microseconds(static_cast<long>(frame_interval_ms * 1000)));
+}
+
+Timing frames_until_first_pass(HeadlessViewer& viewer, AppState& state, Clock::time_point t0,
+                               std::uint64_t jobs_before) {
+    Timing timing;
+    const auto deadline = t0 + std::chrono::seconds(60);
+    for (auto frame_start = t0;; frame_start = Clock::now()) {
+        // Whatever the core has finished before this frame, the frame fetches.
+        const RenderProgress p = state.renderer.progress();
+        const bool new_job = state.renderer.jobs_started() > jobs_before;
+        const bool first_pass_done = new_job && p.pass_count > 0 && (p.pass >= 1 || p.finished);
+        if (first_pass_done && timing.rendered_ms == 0) timing.rendered_ms = ms_since(t0);
+        viewer.frame(state);
+        glFinish();
+        if (new_job && timing.started_ms == 0) timing.started_ms = ms_since(t0);
+        if (first_pass_done) {
+            timing.shown_ms = ms_since(t0);
+            return timing;
+        }
+        pace(frame_start);
+        if (Clock::now() > deadline) {
+            std::fprintf(stderr, "viewer_latency: no first pass within 60 s (%s)\n",
+                         state.message.c_str());
+            std::exit(1);
+        }
+    }
+}
+
+struct Series {
+    std::string name;
+    std::vector<Timing> runs;
+};
+
+void print(const Series& s) {
+    auto stats = [&](double Timing::*field, const char* label) {
+        std::vector<double> v;
+        for (const Timing& t : s.runs) v.push_back(t.*field);
+        std::sort(v.begin(), v.end());
+        const double median =
+            v.size() % 2 ? v[v.size() / 2] : 0.5 * (v[v.size() / 2 - 1] + v[v.size() / 2]);
+        std::printf("  %-16s %-26s median %7.1f ms   min %7.1f   max %7.1f\n", s.name.c_str(),
+                    label, median, v.front(), v.back());
+    };
+    stats(&Timing::started_ms, "render started");
+    stats(&Timing::rendered_ms, "first pass rendered");
+    stats(&Timing::shown_ms, "first pass in the texture");
+}
+
+std::string read(const std::filesystem::path& path) {
+    std::ifstream in(path, std::ios::binary);
+    std::stringstream buffer;
+    buffer << in.rdbuf();
+    return buffer.str();
+}
+
+// The scene at another size, written to a temporary file to load.
+std::filesystem::path resized_copy(const std::filesystem::path& scene, int width, int height) {
+    const std::string text = read(scene);
+    const ParseResult parsed = parse_scene(text);
+    Scene resized = parsed.scene;
+    resized.settings.width = width;
+    resized.settings.height = height;
+    const SourceEditResult edit = apply_scene_edits(text, parsed.source, parsed.scene, resized);
+    if (!parsed.ok() || !edit.ok()) {
+        std::fprintf(stderr, "viewer_latency: cannot use %s\n", scene.c_str());
+        std::exit(1);
+    }
+    const auto path = std::filesystem::temp_directory_path() /
+                      ("jtracer-viewer-latency-" + std::to_string(::getpid()) + ".jts");
+    std::ofstream(path, std::ios::binary) << edit.text;
+    return path;
+}
+
+}  // namespace
+
+int main(int argc, char** argv) {
+    int runs = 20, width = 1280, height = 720;
+    std::filesystem::path scene = JT_SHOWCASE;
+    for (int i = 1; i < argc; ++i) {
+        const std::string arg = argv[i];
+        if (arg == "--runs" && i + 1 < argc) {
+            runs = std::max(1, std::atoi(argv[++i]));
+        } else if (arg == "--pace" && i + 1 < argc) {
+            const double hz = std::atof(argv[++i]);
+            frame_interval_ms = hz > 0 ? 1000.0 / hz : 0.0;
+        } else if (arg == "--scene" && i + 1 < argc) {
+            scene = argv[++i];
+        } else if (arg == "--size" && i + 1 < argc &&
+                   std::sscanf(argv[++i], "%dx%d", &width, &height) == 2 && width > 0 &&
+                   height > 0) {
+        } else {
+            std::fprintf(stderr,
+                         "usage: viewer_latency [--runs N] [--pace HZ] [--scene file.jts] "
+                         "[--size WxH]\n");
+            return 2;
+        }
+    }
+    setenv("LP_NUM_THREADS", "1", 0);
+    HeadlessViewer viewer(1680, 800);  // the sidebar plus a 1280-wide image area
+    if (!viewer.ok()) {
+        std::fprintf(stderr, "viewer_latency: no OSMesa context: %s\n", viewer.error().c_str());
+        return 1;
+    }
+    const std::filesystem::path file = resized_copy(scene, width, height);
+    ViewerConfig config;
+    config.watch_interval = std::chrono::hours(1);  // no reloads behind our back
+
+    // A render still running when the user acts is the usual case: let it run
+    // a little, so the cancel is part of the figure.
+    auto settle = [&](AppState& state) {
+        const auto until = Clock::now() + std::chrono::milliseconds(60);
+        while (Clock::now() < until) {
+            const auto frame_start = Clock::now();
+            viewer.frame(state);
+            pace(frame_start);
+        }
+    };
+
+    Series load{"load", {}}, material{"material edit", {}}, camera{"camera change", {}};
+    {
+        AppState warm(config);  // first use of the context compiles shaders, uploads fonts
+        open_scene(warm, file);
+        viewer.run_until_complete(warm, std::chrono::minutes(2));
+    }
+    for (int i = 0; i < runs; ++i) {
+        // A fresh viewer state each time: nothing prepared to reuse.
+        AppState state(config);
+        auto t0 = Clock::now();
+        request_open(state, file);
+        load.runs.push_back(frames_until_first_pass(viewer, state, t0, 0));
+        settle(state);
+    }
+    AppState state(config);
+    open_scene(state, file);
+    frames_until_first_pass(viewer, state, Clock::now(), 0);
+    for (int i = 0; i < runs; ++i) {
+        settle(state);
+        const auto jobs = state.renderer.jobs_started();
+        const auto t0 = Clock::now();
+        edit_scene(state, [&](Scene& s) {
+            s.primitives[0].material.pigment = Colour(0.2 + 0.03 * (i % 20), 0.4, 0.6);
+        });
+        material.runs.push_back(frames_until_first_pass(viewer, state, t0, jobs));
+    }
+    use_free_camera(state);
+    for (int i = 0; i < runs; ++i) {
+        settle(state);
+        const auto jobs = state.renderer.jobs_started();
+        const auto t0 = Clock::now();
+        orbit(state.free_camera, i % 2 ? -15.0f : 15.0f, 0.0f, 720.0f);
+        camera.runs.push_back(frames_until_first_pass(viewer, state, t0, jobs));
+    }
+    std::filesystem::remove(file);
+
+    // What one frame costs with nothing to do: the render finished.
+    viewer.run_until_complete(state, std::chrono::minutes(2));
+    std::vector<double> idle;
+    for (int i = 0; i < std::max(runs, 5); ++i) {
+        const auto t0 = Clock::now();
+        viewer.frame(state);
+        glFinish();
+        idle.push_back(ms_since(t0));
+    }
+    std::sort(idle.begin(), idle.end());
+
+    std::printf("viewer latency, %s at %dx%d, %d runs each, frames at %s, %u hardware threads\n",
+                scene.filename().c_str(), width, height, runs,
+                frame_interval_ms > 0 ? (std::to_string(1000.0 / frame_interval_ms) + " Hz").c_str()
+                                      : "full speed",
+                std::thread::hardware_concurrency());
+    std::printf("  %-16s %-26s median %7.1f ms   min %7.1f   max %7.1f\n", "idle frame",
+                "OSMesa 1680x800, UI + image", idle[idle.size() / 2], idle.front(), idle.back());
+    print(load);
+    print(material);
+    print(camera);
+    return 0;
+}
