@@ -125,32 +125,40 @@ bool misses_bounds(const TransformedShape& s, const Vec3& origin, const Vec3& di
     return glm::dot(perpendicular, perpendicular) > s.bounding_radius_sq;
 }
 
-// The queries of a geometry without a BVH: every shape tested, in index order,
-// by the same exact tests and tie rule as the callbacks below.
+// Tests one sphere or shape against the query; true when it became the best
+// hit. The BVH callbacks and the BVH-less walk share these, so that both
+// decide hits and ties the same way.
+bool offer_sphere(ClosestQuery& q, std::uint32_t index) {
+    const WorldSphere& s = q.geometry->spheres[index];
+    double t =
+        intersect_sphere(q.origin, q.direction, s.center, s.radius, q.t_min, just_beyond(q.t));
+    if (t == no_hit || !better(t, s.source, q)) return false;
+    q.t = t;
+    q.source = s.source;
+    q.kind = HitKind::sphere;
+    q.index = index;
+    return true;
+}
+
+bool offer_shape(ClosestQuery& q, std::uint32_t index) {
+    const TransformedShape& s = q.geometry->shapes[index];
+    CylinderPart part = CylinderPart::side;
+    double t = shape_distance(s, q.origin, q.direction, q.t_min, just_beyond(q.t), part);
+    if (t == no_hit || !better(t, s.source, q)) return false;
+    q.t = t;
+    q.source = s.source;
+    q.kind = HitKind::shape;
+    q.index = index;
+    q.part = part;
+    return true;
+}
+
+// The queries of a geometry without a BVH: every shape tested, in index order.
 void closest_by_testing_all(ClosestQuery& q) {
     const Geometry& g = *q.geometry;
-    for (std::uint32_t i = 0; i < g.spheres.size(); ++i) {
-        const WorldSphere& s = g.spheres[i];
-        double t =
-            intersect_sphere(q.origin, q.direction, s.center, s.radius, q.t_min, just_beyond(q.t));
-        if (t == no_hit || !better(t, s.source, q)) continue;
-        q.t = t;
-        q.source = s.source;
-        q.kind = HitKind::sphere;
-        q.index = i;
-    }
-    for (std::uint32_t i = 0; i < g.shapes.size(); ++i) {
-        const TransformedShape& s = g.shapes[i];
-        if (misses_bounds(s, q.origin, q.direction)) continue;
-        CylinderPart part = CylinderPart::side;
-        double t = shape_distance(s, q.origin, q.direction, q.t_min, just_beyond(q.t), part);
-        if (t == no_hit || !better(t, s.source, q)) continue;
-        q.t = t;
-        q.source = s.source;
-        q.kind = HitKind::shape;
-        q.index = i;
-        q.part = part;
-    }
+    for (std::uint32_t i = 0; i < g.spheres.size(); ++i) offer_sphere(q, i);
+    for (std::uint32_t i = 0; i < g.shapes.size(); ++i)
+        if (!misses_bounds(g.shapes[i], q.origin, q.direction)) offer_shape(q, i);
 }
 
 bool occluded_by_testing_all(const Geometry& g, const Vec3& origin, const Vec3& direction,
@@ -208,15 +216,7 @@ void sphere_bounds(const RTCBoundsFunctionArguments* args) {
 void sphere_intersect(const RTCIntersectFunctionNArguments* args) {
     if (!args->valid[0]) return;
     auto& q = *reinterpret_cast<ClosestQuery*>(args->context);
-    const WorldSphere& s = q.geometry->spheres[args->primID];
-    double t =
-        intersect_sphere(q.origin, q.direction, s.center, s.radius, q.t_min, just_beyond(q.t));
-    if (t == no_hit || !better(t, s.source, q)) return;
-    q.t = t;
-    q.source = s.source;
-    q.kind = HitKind::sphere;
-    q.index = args->primID;
-    accept(args, t);
+    if (offer_sphere(q, args->primID)) accept(args, q.t);
 }
 
 void sphere_occluded(const RTCOccludedFunctionNArguments* args) {
@@ -237,16 +237,7 @@ void shape_bounds(const RTCBoundsFunctionArguments* args) {
 void shape_intersect(const RTCIntersectFunctionNArguments* args) {
     if (!args->valid[0]) return;
     auto& q = *reinterpret_cast<ClosestQuery*>(args->context);
-    const TransformedShape& s = q.geometry->shapes[args->primID];
-    CylinderPart part = CylinderPart::side;
-    double t = shape_distance(s, q.origin, q.direction, q.t_min, just_beyond(q.t), part);
-    if (t == no_hit || !better(t, s.source, q)) return;
-    q.t = t;
-    q.source = s.source;
-    q.kind = HitKind::shape;
-    q.index = args->primID;
-    q.part = part;
-    accept(args, t);
+    if (offer_shape(q, args->primID)) accept(args, q.t);
 }
 
 void shape_occluded(const RTCOccludedFunctionNArguments* args) {
