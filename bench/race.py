@@ -25,7 +25,7 @@ SUMMARY = re.compile(r"wrote .*?: (\d+)x(\d+), .*?, ([\d.]+) s, ([\d.]+) (M )?ra
 
 
 def run_timed(command):
-    """Runs a command; returns (wall seconds, peak RSS MiB, stdout + stderr)."""
+    """Runs a command; returns (wall seconds, CPU seconds, peak RSS MiB, stdout + stderr)."""
     start = time.perf_counter()
     # A fresh process per run, so ru_maxrss of this wait is this child's alone.
     pid = os.fork()
@@ -43,7 +43,7 @@ def run_timed(command):
         output = f.read()
     if os.waitstatus_to_exitcode(status) != 0:
         sys.exit(f"failed ({os.waitstatus_to_exitcode(status)}): {' '.join(command)}\n{output}")
-    return wall, usage.ru_maxrss / 1024.0, output
+    return wall, usage.ru_utime + usage.ru_stime, usage.ru_maxrss / 1024.0, output
 
 
 _log_path = None
@@ -100,30 +100,38 @@ def main():
         jt_command = [args.cli, scene, "-o", jt_image, "--threads", str(args.threads)]
         pov_command = ["povray", "+I" + pov, "+O" + pov_image, f"+W{width}", f"+H{height}",
                        f"+WT{args.threads}", "-A", "-D", "+FB", "File_Gamma=1.0", "-V", "-GA"]
-        jt_walls, jt_rss, pov_walls, rates = [], [], [], []
+        jt_walls, jt_cpus, jt_rss, pov_walls, pov_cpus, rates = [], [], [], [], [], []
         for run in range(args.runs):
-            wall, rss, output = run_timed(jt_command)
+            wall, cpu, rss, output = run_timed(jt_command)
             rays, seconds = jtracer_rays(output)
             jt_walls.append(wall)
+            jt_cpus.append(cpu)
             jt_rss.append(rss)
             rates.append(rays / seconds / 1e6)  # while rendering, as the CLI reports
             if not args.no_povray:
-                wall, _, _ = run_timed(pov_command)
+                wall, cpu, _, _ = run_timed(pov_command)
                 pov_walls.append(wall)
+                pov_cpus.append(cpu)
             print(f"  {name} run {run + 1}/{args.runs}: jtracer {jt_walls[-1]:.3f} s"
                   + (f", povray {pov_walls[-1]:.3f} s" if pov_walls else ""), file=sys.stderr)
         jt = statistics.median(jt_walls)
         pv = statistics.median(pov_walls) if pov_walls else float("nan")
+        jt_cpu = statistics.median(jt_cpus)
+        pv_cpu = statistics.median(pov_cpus) if pov_cpus else float("nan")
         rows.append((name, f"{width}x{height}", jt, pv, jt / pv if pov_walls else float("nan"),
+                     jt_cpu, pv_cpu, jt_cpu / pv_cpu if pov_cpus else float("nan"),
                      statistics.median(rates), max(jt_rss)))
 
     print()
     print(f"median of {args.runs} runs each, alternated; {args.threads} threads; "
           "wall = whole process (read, parse, build, render, write)")
-    print("| scene | size | JTracer s | POV-Ray s | ratio | JTracer Mrays/s | JTracer peak MiB |")
-    print("|---|---|---:|---:|---:|---:|---:|")
-    for name, size, jt, pv, ratio, rate, rss in rows:
-        print(f"| {name} | {size} | {jt:.3f} | {pv:.3f} | {ratio:.3f} | {rate:.1f} | {rss:.0f} |")
+    print("(CPU s = user + system time of the process: the figure to trust when the machine is busy)")
+    print("| scene | size | JTracer s | POV-Ray s | ratio | JTracer CPU s | POV-Ray CPU s | CPU ratio "
+          "| JTracer Mrays/s | JTracer peak MiB |")
+    print("|---|---|---:|---:|---:|---:|---:|---:|---:|---:|")
+    for name, size, jt, pv, ratio, jt_cpu, pv_cpu, cpu_ratio, rate, rss in rows:
+        print(f"| {name} | {size} | {jt:.3f} | {pv:.3f} | {ratio:.3f} | {jt_cpu:.3f} | {pv_cpu:.3f} "
+              f"| {cpu_ratio:.3f} | {rate:.1f} | {rss:.0f} |")
     return 0
 
 
