@@ -90,6 +90,13 @@ TEST_F(Mpi, UsageErrorIsReportedOnce) {
     EXPECT_EQ(count(r.err, "--samples"), 1u) << r.err;
 }
 
+TEST_F(Mpi, UnwritableOutputIsAnIoError) {
+    CommandRun r = run(mpirun(2) + showcase + "--width 40 --height 30 -q -o nowhere/out.bmp");
+    EXPECT_EQ(r.code, 3) << r.err;
+    EXPECT_EQ(count(r.err, "cannot write"), 1u) << r.err;
+    EXPECT_TRUE(files().empty());
+}
+
 TEST_F(Mpi, DeadRankFailsTheRunWithoutWritingAFile) {
     const auto start = std::chrono::steady_clock::now();
     CommandRun r = run("timeout 120 " + mpirun(3, "JT_MPI_TEST_ABORT_RANK=1") + showcase +
