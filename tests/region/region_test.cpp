@@ -141,5 +141,36 @@ scene {
     }
 }
 
+// The viewer's path: fetch_updates fills a full-size display from a region job.
+TEST(RegionImage, FetchUpdatesPlacesTheRegionInTheFullImage) {
+    ParseResult parsed = parse_scene(R"(
+render_settings { width: 40; height: 30; }
+cameras { perspective_camera { position: <0, 0, 5>; look_at: <0, 0, 0>; aspect: 1.3333; } }
+scene {
+    sphere { radius: 1.5; material { pigment: <1, 0.5, 0.2>; diffuse: <1, 1, 1>; } }
+    point_light { position: <3, 5, 4>; intensity: <1, 1, 1>; }
+}
+)");
+    ASSERT_TRUE(parsed.ok());
+    RenderOptions o;
+    o.width = 40;
+    o.height = 30;
+    o.samples = 2;
+    o.region = PixelRect{5, 3, 29, 21};
+    RenderJob job(prepare_scene(parsed.scene), o);
+    Image8 display;
+    ASSERT_TRUE(job.fetch_updates(display));
+    EXPECT_EQ(display.width, 40);
+    job.run();
+    auto changed = job.fetch_updates(display);
+    ASSERT_TRUE(changed);
+    EXPECT_EQ(*changed, (PixelRect{5, 3, 29, 21}));
+    EXPECT_EQ(display, job.image());
+    EXPECT_EQ(crop_image(display, *o.region), job.region_image());
+    int lit = 0;
+    for (std::uint8_t c : job.region_image().rgb) lit += c > 0;
+    EXPECT_GT(lit, 0) << "the sphere shows in the region";
+}
+
 }  // namespace
 }  // namespace jt
