@@ -43,6 +43,12 @@ TEST(Merge, RefusesOverlap) {
     EXPECT_EQ(frame.width, 0) << "nothing assembled";
 }
 
+TEST(Merge, RefusesAPartGivenTwice) {
+    Image8 frame;
+    EXPECT_EQ(merge_regions({part("a", {0, 0, 6, 4}), part("a", {0, 0, 6, 4})}, frame),
+              "a is given twice");
+}
+
 TEST(Merge, RefusesGapsNamingAnUncoveredPixel) {
     Image8 frame;
     std::string error = merge_regions({part("a", {0, 0, 6, 2}), part("b", {0, 2, 5, 4})}, frame);

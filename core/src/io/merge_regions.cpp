@@ -55,7 +55,9 @@ std::string merge_regions(const std::vector<RegionPart>& parts, Image8& frame) {
         if (std::string error = check_part(part, parts.front()); !error.empty()) return error;
     for (std::size_t i = 0; i < parts.size(); ++i)
         for (std::size_t j = i + 1; j < parts.size(); ++j)
-            if (overlap(parts[i].placement.region, parts[j].placement.region))
+            if (parts[i].name == parts[j].name)
+                return parts[i].name + " is given twice";
+            else if (overlap(parts[i].placement.region, parts[j].placement.region))
                 return parts[i].name + " (region " +
                        format_frame_region(parts[i].placement.region) + ") overlaps " +
                        parts[j].name + " (region " +
