@@ -9,8 +9,8 @@
 #include <sys/stat.h>
 #include <unistd.h>
 
+#include <cctype>
 #include <fstream>
-#include <regex>
 
 namespace jt::hardening {
 namespace {
@@ -55,6 +55,24 @@ std::vector<MalformedScene> malformed_scenes() {
     };
 }
 
+// True when some line of `err` reads "FILE:LINE:COL: error: MESSAGE".
+// (Checked by hand: GCC 12 warns falsely inside <regex> under the sanitizers.)
+bool has_located_error(const std::string& err, const std::string& file) {
+    auto digits = [&](std::size_t& at) {
+        const std::size_t start = at;
+        while (at < err.size() && std::isdigit(static_cast<unsigned char>(err[at]))) ++at;
+        return at > start;
+    };
+    for (std::size_t at = err.find(file + ":"); at != std::string::npos;
+         at = err.find(file + ":", at + 1)) {
+        std::size_t i = at + file.size() + 1;
+        if (digits(i) && err[i] == ':' && digits(++i) && err.compare(i, 9, ": error: ") == 0 &&
+            i + 9 < err.size() && err[i + 9] != '\n')
+            return true;
+    }
+    return false;
+}
+
 using BadInput = CliSandbox;
 
 TEST_F(BadInput, EveryClassOfMalformedSceneIsLocatedAndExitsOne) {
@@ -67,8 +85,7 @@ TEST_F(BadInput, EveryClassOfMalformedSceneIsLocatedAndExitsOne) {
         EXPECT_EQ(r.code, 1) << r.err;
         EXPECT_EQ(r.err.find("bad.jts:"), 0u) << r.err;
         EXPECT_NE(r.err.find("bad.jts:" + scene.location), std::string::npos) << r.err;
-        EXPECT_TRUE(std::regex_search(r.err, std::regex(R"(bad\.jts:\d+:\d+: error: \S)")))
-            << r.err;
+        EXPECT_TRUE(has_located_error(r.err, "bad.jts")) << r.err;
         EXPECT_EQ(read_file(dir / "keep.bmp"), precious);
         EXPECT_TRUE(temporary_files().empty());
     }
@@ -80,6 +97,7 @@ TEST_F(BadInput, SceneWithoutCameraIsAnErrorAboutTheWholeFile) {
     EXPECT_EQ(r.code, 1);
     EXPECT_NE(r.err.find("bad.jts: error: every render needs a camera"), std::string::npos)
         << r.err;
+    EXPECT_FALSE(has_located_error(r.err, "bad.jts")) << r.err;
     EXPECT_FALSE(fs::exists(dir / "out.bmp"));
 }
 
