@@ -2,7 +2,8 @@
 # Builds the libFuzzer targets (fuzz/, clang-14) and runs each for a bounded
 # time: scripts/fuzz.sh [SECONDS_EACH] [TARGET...]   (default 60 s, both targets)
 #
-# Corpora, crash artifacts and logs go to build/fuzz/, never into the repo.
+# Corpora, crash artifacts and logs (one per run, timestamped) go to
+# build/fuzz/, never into the repo.
 # A crashing input is saved as build/fuzz/artifacts/TARGET/crash-*; once fixed,
 # copy it to tests/hardening/regressions/{parser,bmp}/ so that the test suite
 # replays it. Exits non-zero when a target found a crash.
@@ -28,22 +29,24 @@ find scenes tests/hardening/regressions/parser -type f -exec cp {} "$seed_parser
 find tests/hardening/regressions/bmp -type f -exec cp {} "$seed_bmp/" \; 2>/dev/null || true
 
 status=0
+stamp=$(date +%Y%m%d-%H%M%S)
 for target in "${targets[@]}"; do
     corpus=$out/corpus/$target
     artifacts=$out/artifacts/$target
     mkdir -p "$corpus" "$artifacts"
     dict=()
     [ "$target" = parse_scene_fuzzer ] && dict=(-dict=fuzz/jts.dict)
-    echo "== $target: $seconds s (log: $out/$target.log)"
+    log=$out/$target-$stamp.log
+    echo "== $target: $seconds s (log: $log)"
     if ! "$out/build/$target" "${dict[@]}" -max_total_time="$seconds" -timeout=60 \
         -rss_limit_mb=2048 -print_final_stats=1 \
         -artifact_prefix="$artifacts/" "$corpus" "$out/seeds/$target" \
-        >"$out/$target.log" 2>&1; then
+        >"$log" 2>&1; then
         status=1
-        echo "   FOUND A CRASH: see $out/$target.log and $artifacts/"
+        echo "   FOUND A CRASH: see $log and $artifacts/"
     fi
     grep -E '^stat::(number_of_executed_units|average_exec_per_sec|peak_rss_mb)' \
-        "$out/$target.log" | sed 's/^/   /' || true
+        "$log" | sed 's/^/   /' || true
     echo "   corpus: $(find "$corpus" -type f | wc -l) files"
 done
 exit $status
