@@ -36,6 +36,8 @@ def main():
         raise SystemExit(f"sizes differ: {wa}x{ha} and {wb}x{hb}")
     total = 0
     far = 0
+    largest = 0
+    differing = 0
     sums_a = [0, 0, 0]
     sums_b = [0, 0, 0]
     for ra, rb in zip(a, b):
@@ -47,10 +49,13 @@ def main():
                 sums_b[c] += vb
                 d = abs(va - vb)
                 total += d
+                differing += d > 0
                 worst = max(worst, d)
             far += worst > 8
+            largest = max(largest, worst)
     pixels = wa * ha
-    print(f"mean |difference| {total / (3 * pixels):.2f} of 255; "
+    print(f"{differing} of {3 * pixels} channel values differ, by at most {largest}; "
+          f"mean |difference| {total / (3 * pixels):.4f} of 255; "
           f"{100.0 * far / pixels:.1f}% of pixels differ by more than 8")
     names = "BGR"
     print("mean channel (B, G, R):",
