@@ -16,11 +16,11 @@
 #include <CLI/CLI.hpp>
 
 #include <algorithm>
+#include <charconv>
 #include <cstdio>
 #include <filesystem>
 #include <iostream>
 #include <optional>
-#include <regex>
 
 namespace {
 
@@ -43,11 +43,11 @@ std::filesystem::path default_scene() {
 }
 
 bool parse_size(const std::string& text, int& width, int& height) {
-    std::smatch m;
-    static const std::regex pattern(R"((\d{1,5})x(\d{1,5}))");
-    if (!std::regex_match(text, m, pattern)) return false;
-    width = std::stoi(m[1]);
-    height = std::stoi(m[2]);
+    const char* end = text.data() + text.size();
+    const auto w = std::from_chars(text.data(), end, width);
+    if (w.ec != std::errc() || w.ptr == end || *w.ptr != 'x') return false;
+    const auto h = std::from_chars(w.ptr + 1, end, height);
+    if (h.ec != std::errc() || h.ptr != end) return false;
     return width >= 64 && height >= 64 && width <= 8192 && height <= 8192;
 }
 

@@ -1,117 +1,174 @@
 #include "render_controller.hpp"
 
+#include <atomic>
 #include <exception>
+#include <thread>
+#include <utility>
 
 namespace jt::view {
 
+struct RenderController::Run {
+    RenderOptions options;
+    std::thread thread;
+    std::atomic<bool> stop{false};
+    std::atomic<bool> done{false};
+    std::atomic<int> passes{0};
+    mutable std::mutex mutex;        // guards job and error
+    std::shared_ptr<RenderJob> job;  // set once the scene is prepared
+    std::string error;
+
+    std::shared_ptr<RenderJob> current_job() const {
+        std::lock_guard lock(mutex);
+        return job;
+    }
+    void cancel() {
+        stop = true;
+        if (auto j = current_job()) j->cancel();
+    }
+    void fail(std::string message) {
+        std::lock_guard lock(mutex);
+        error = std::move(message);
+    }
+    void join() {
+        if (thread.joinable()) thread.join();
+    }
+};
+
 RenderController::~RenderController() {
     stop();
+    for (const auto& run : retired_) run->cancel();
+    join_retired(true);
 }
 
-void RenderController::join() {
-    if (worker_.joinable()) worker_.join();
+void RenderController::join_retired(bool all) {
+    std::erase_if(retired_, [all](const std::shared_ptr<Run>& run) {
+        if (!all && !run->done) return false;
+        run->join();
+        return true;
+    });
+}
+
+std::shared_ptr<RenderJob> RenderController::current_job() const {
+    std::lock_guard lock(mutex_);
+    return current_ ? current_->current_job() : nullptr;
 }
 
 void RenderController::stop() {
-    stop_requested_ = true;
-    std::shared_ptr<RenderJob> job;
+    std::shared_ptr<Run> run;
     {
         std::lock_guard lock(mutex_);
-        job = job_;
+        run = current_;
     }
-    if (job) job->cancel();
-    join();
+    if (!run) return;
+    run->cancel();
+    run->join();
 }
 
-void RenderController::run_passes(RenderJob& job) {
-    while (!stop_requested_ && job.run_pass()) ++passes_run_;
+// Runs `run` on a new thread: prepares `scene` first when given, else
+// continues the run's job.
+void RenderController::launch(const std::shared_ptr<Run>& run, const Scene* scene) {
+    std::optional<Scene> to_prepare;
+    if (scene) to_prepare = *scene;
+    run->stop = false;
+    run->done = false;
+    run->passes = 0;
+    run->thread = std::thread([this, run, to_prepare = std::move(to_prepare)] {
+        try {
+            std::shared_ptr<RenderJob> job = run->current_job();
+            if (to_prepare) {
+                std::shared_ptr<const PreparedScene> previous;
+                {
+                    std::lock_guard lock(mutex_);
+                    previous = prepared_;
+                }
+                auto prepared = prepare_scene(*to_prepare, previous);
+                job = std::make_shared<RenderJob>(prepared, run->options);
+                {
+                    std::lock_guard lock(mutex_);
+                    if (current_ == run) prepared_ = prepared;  // a newer run's stays
+                }
+                std::lock_guard lock(run->mutex);
+                run->job = job;
+            }
+            while (!run->stop && job->run_pass()) ++run->passes;
+        } catch (const std::exception& e) {
+            run->fail(std::string("the render failed: ") + e.what());
+        } catch (...) {
+            run->fail("the render failed");
+        }
+        run->done = true;
+    });
 }
 
 void RenderController::start(const Scene& scene, const RenderOptions& options) {
-    stop();
-    std::shared_ptr<const PreparedScene> previous;
+    join_retired(false);
+    auto run = std::make_shared<Run>();
+    run->options = options;
+    std::shared_ptr<Run> old;
     {
         std::lock_guard lock(mutex_);
-        job_.reset();
-        error_.clear();
-        previous = prepared_;
+        old = std::exchange(current_, run);
     }
-    stop_requested_ = false;
-    worker_done_ = false;
-    passes_run_ = 0;
+    if (old) {
+        old->cancel();  // not joined: it stops on its own while the new job starts
+        retired_.push_back(std::move(old));
+    }
     ++jobs_started_;
-    worker_ = std::thread([this, scene, options, previous] {
-        try {
-            auto prepared = prepare_scene(scene, previous);
-            auto job = std::make_shared<RenderJob>(prepared, options);
-            {
-                std::lock_guard lock(mutex_);
-                prepared_ = prepared;
-                job_ = job;
-            }
-            if (!stop_requested_) run_passes(*job);
-        } catch (const std::exception& e) {
-            std::lock_guard lock(mutex_);
-            error_ = std::string("the render failed: ") + e.what();
-        } catch (...) {
-            std::lock_guard lock(mutex_);
-            error_ = "the render failed";
-        }
-        worker_done_ = true;
-    });
+    launch(run, &scene);
 }
 
 bool RenderController::resume() {
     stop();
-    std::shared_ptr<RenderJob> job;
+    std::shared_ptr<Run> run;
     {
         std::lock_guard lock(mutex_);
-        job = job_;
+        run = current_;
     }
+    if (!run) return false;
+    std::shared_ptr<RenderJob> job = run->current_job();
     if (!job) return false;
     job->resume();
-    stop_requested_ = false;
-    worker_done_ = false;
-    passes_run_ = 0;
-    worker_ = std::thread([this, job] {
-        try {
-            run_passes(*job);
-        } catch (const std::exception& e) {
-            std::lock_guard lock(mutex_);
-            error_ = std::string("the render failed: ") + e.what();
-        }
-        worker_done_ = true;
-    });
+    launch(run, nullptr);
     return true;
 }
 
 std::optional<PixelRect> RenderController::fetch(Image8& display) {
-    std::shared_ptr<RenderJob> job;
-    {
-        std::lock_guard lock(mutex_);
-        job = job_;
-    }
+    std::shared_ptr<RenderJob> job = current_job();
     if (!job) return std::nullopt;
     return job->fetch_updates(display);
 }
 
 RenderProgress RenderController::progress() const {
-    std::lock_guard lock(mutex_);
-    return job_ ? job_->progress() : RenderProgress{};
+    std::shared_ptr<RenderJob> job = current_job();
+    return job ? job->progress() : RenderProgress{};
 }
 
 bool RenderController::active() const {
-    return !worker_done_ && !stop_requested_;
+    std::lock_guard lock(mutex_);
+    return current_ && !current_->done && !current_->stop;
 }
 
 bool RenderController::finished() const {
-    std::lock_guard lock(mutex_);
-    return job_ && worker_done_ && job_->progress().finished;
+    std::shared_ptr<Run> run;
+    {
+        std::lock_guard lock(mutex_);
+        run = current_;
+    }
+    if (!run || !run->done) return false;
+    std::shared_ptr<RenderJob> job = run->current_job();
+    return job && job->progress().finished;
 }
 
 std::string RenderController::error() const {
     std::lock_guard lock(mutex_);
-    return error_;
+    if (!current_) return {};
+    std::lock_guard run_lock(current_->mutex);
+    return current_->error;
+}
+
+int RenderController::passes_since_start() const {
+    std::lock_guard lock(mutex_);
+    return current_ ? current_->passes.load() : 0;
 }
 
 }  // namespace jt::view

@@ -1,18 +1,19 @@
 #pragma once
 // Runs the core's progressive RenderJob on a background thread so the UI never
-// waits for it. Any change starts a new job: the old one is cancelled (the core
-// stops within milliseconds) and joined first, so at most one job runs. A
-// paused job is kept, and resuming it renders only what it had not finished.
+// waits for it. Any change starts a new job at once: the old one is cancelled
+// and winds down on its own thread (the core stops within milliseconds), so a
+// frame never waits for it either. A paused job is kept, and resuming it
+// renders only what it had not finished.
 
 #include "jtracer/render_job.hpp"
 #include "jtracer/scene.hpp"
 
-#include <atomic>
+#include <cstdint>
 #include <memory>
 #include <mutex>
 #include <optional>
 #include <string>
-#include <thread>
+#include <vector>
 
 namespace jt::view {
 
@@ -27,9 +28,9 @@ class RenderController {
     // samples). The acceleration structure of the previous scene is reused when
     // only materials, lights, cameras or settings changed.
     void start(const Scene& scene, const RenderOptions& options);
-    // Stops the running job; the pixels fetched so far stay.
+    // Stops the current job and waits for its thread; the pixels fetched so far stay.
     void stop();
-    // Stops the running job so that resume() can continue it.
+    // Stops the current job so that resume() can continue it.
     void pause() { stop(); }
     // Continues the stopped job from where it stopped: finished passes and
     // accumulated samples are kept. False when there is no job to continue
@@ -42,25 +43,23 @@ class RenderController {
     RenderProgress progress() const;
     bool active() const;    // a job was started and has not finished or been stopped
     bool finished() const;  // the current job rendered every pass
-    // Why the last job could not run, or empty.
+    // Why the current job could not run, or empty.
     std::string error() const;
     std::uint64_t jobs_started() const { return jobs_started_; }
-    // Passes the current job has completed on this controller's thread since
-    // it was started or last resumed.
-    int passes_since_start() const { return passes_run_; }
+    // Passes the current job has completed since it was started or last resumed.
+    int passes_since_start() const;
 
   private:
-    void join();
-    void run_passes(RenderJob& job);
+    struct Run;  // one worker thread and the job it renders
 
-    std::thread worker_;
+    void launch(const std::shared_ptr<Run>& run, const Scene* scene);
+    std::shared_ptr<RenderJob> current_job() const;
+    void join_retired(bool all);
+
     mutable std::mutex mutex_;
-    std::shared_ptr<RenderJob> job_;                 // guarded by mutex_
+    std::shared_ptr<Run> current_;                   // guarded by mutex_
     std::shared_ptr<const PreparedScene> prepared_;  // guarded by mutex_
-    std::string error_;                              // guarded by mutex_
-    std::atomic<bool> stop_requested_{false};
-    std::atomic<bool> worker_done_{true};
-    std::atomic<int> passes_run_{0};
+    std::vector<std::shared_ptr<Run>> retired_;      // cancelled, winding down (UI thread only)
     std::uint64_t jobs_started_ = 0;
 };
 
