@@ -42,8 +42,10 @@ void write_file(const fs::path& path, const std::string& bytes) {
 
 void CliSandbox::SetUp() {
     const auto* info = testing::UnitTest::GetInstance()->current_test_info();
+    std::string name = info->name();
+    std::replace(name.begin(), name.end(), '/', '_');  // parameterised tests: "Name/0"
     dir = fs::temp_directory_path() /
-          ("jtracer_hardening_" + std::string(info->name()) + "_" + std::to_string(::getpid()));
+          ("jtracer_hardening_" + name + "_" + std::to_string(::getpid()));
     fs::remove_all(dir);
     fs::create_directories(dir);
     write_file(dir / "scene.jts", small_scene);
