@@ -1,6 +1,7 @@
-// How long the viewer takes to show something after the user acts: from a
-// load, a material edit or a camera change being requested to the first
-// preview pass (1/8 resolution) of the new render being in the texture.
+// How long the viewer takes to show something after the user acts: from an
+// open (in a new viewer: nothing prepared yet), a reload, a material edit or a
+// camera change being requested to the first preview pass (1/8 resolution) of
+// the new render being in the texture.
 //
 //   viewer_latency [--runs N] [--pace HZ] [--scene file.jts] [--size WxH]
 //
@@ -74,7 +75,8 @@ Timing frames_until_first_pass(HeadlessViewer& viewer, AppState& state, Clock::t
         if (first_pass_done && timing.rendered_ms == 0) timing.rendered_ms = ms_since(t0);
         viewer.frame(state);
         glFinish();
-        if (new_job && timing.started_ms == 0) timing.started_ms = ms_since(t0);
+        if (timing.started_ms == 0 && state.renderer.jobs_started() > jobs_before)
+            timing.started_ms = ms_since(t0);  // this frame started it
         if (first_pass_done) {
             timing.shown_ms = ms_since(t0);
             return timing;
@@ -164,6 +166,13 @@ int main(int argc, char** argv) {
         return 1;
     }
     const std::filesystem::path file = resized_copy(scene, width, height);
+    const std::string text = read(file);
+    const std::string recoloured = [&] {
+        const ParseResult parsed = parse_scene(text);
+        Scene changed = parsed.scene;
+        changed.primitives[0].material.pigment = Colour(0.3, 0.6, 0.3);
+        return apply_scene_edits(text, parsed.source, parsed.scene, changed).text;
+    }();
     ViewerConfig config;
     config.watch_interval = std::chrono::hours(1);  // no reloads behind our back
 
@@ -178,7 +187,8 @@ int main(int argc, char** argv) {
         }
     };
 
-    Series load{"load", {}}, material{"material edit", {}}, camera{"camera change", {}};
+    Series load{"open (new)", {}}, reload{"reload", {}}, material{"material edit", {}},
+        camera{"camera change", {}};
     {
         AppState warm(config);  // first use of the context compiles shaders, uploads fonts
         open_scene(warm, file);
@@ -195,6 +205,16 @@ int main(int argc, char** argv) {
     AppState state(config);
     open_scene(state, file);
     frames_until_first_pass(viewer, state, Clock::now(), 0);
+    for (int i = 0; i < runs; ++i) {
+        // The file read and parsed again in a running viewer (R, or the watcher).
+        settle(state);
+        // Saved by an editor: every other time with the floor recoloured.
+        std::ofstream(file, std::ios::binary) << (i % 2 ? text : recoloured);
+        const auto jobs = state.renderer.jobs_started();
+        const auto t0 = Clock::now();
+        reload_scene(state);
+        reload.runs.push_back(frames_until_first_pass(viewer, state, t0, jobs));
+    }
     for (int i = 0; i < runs; ++i) {
         settle(state);
         const auto jobs = state.renderer.jobs_started();
@@ -233,6 +253,7 @@ int main(int argc, char** argv) {
     std::printf("  %-16s %-26s median %7.1f ms   min %7.1f   max %7.1f\n", "idle frame",
                 "OSMesa 1680x800, UI + image", idle[idle.size() / 2], idle.front(), idle.back());
     print(load);
+    print(reload);
     print(material);
     print(camera);
     return 0;
