@@ -21,7 +21,8 @@ ParsedOptions parse_options(int argc, char** argv) {
         "  jtracer-cli --check scenes/showcase.jts          only checks the scene\n"
         "  jtracer-cli scenes/showcase.jts --region 0,0,960,540 --region-output -o part.bmp\n"
         "\n"
-        "Exit codes: 0 ok, 1 errors in the scene, 2 bad command line, 3 file I/O errors.\n");
+        "Exit codes: 0 ok, 1 errors in the scene, 2 bad command line, 3 file I/O error or\n"
+        "not enough memory, 130 interrupted (Ctrl-C), 143 stopped (SIGTERM).\n");
     app.set_version_flag("--version", std::string("jtracer-cli ") + JT_VERSION);
     add_render_flags(app, o);
     app.add_option_function<std::string>(
