@@ -96,6 +96,11 @@ int run(const Options& o) {
         if (!o.quiet) std::cerr << loaded.path << ": no errors\n";
         return exit_ok;
     }
+    // The text and its source map served the diagnostics only: give their
+    // memory back before the renderer builds its own (a million spheres' worth
+    // is several hundred MB).
+    loaded.parsed.source = {};
+    std::string().swap(loaded.text);
 
     const jt::Scene& scene = loaded.parsed.scene;
     // The manual's rule: the scene's filename always yields a BMP; only a name

@@ -71,15 +71,40 @@ TEST(ParseBasics, SourceSpansPointAtNamesAndValues) {
     EXPECT_EQ(sphere.keyword_span.pos, (SourcePos{2, 3}));
     EXPECT_EQ(text[sphere.open_brace], '{');
     EXPECT_EQ(text[sphere.close_brace], '}');
-    ASSERT_EQ(sphere.properties.size(), 1u);
-    const PropertySource& radius = sphere.properties[0];
+    ASSERT_EQ(properties_of(r.source, sphere).size(), 1u);
+    const PropertySource& radius = properties_of(r.source, sphere)[0];
     EXPECT_EQ(radius.name, "radius");
     EXPECT_EQ(radius.name_span.pos, (SourcePos{3, 5}));
     EXPECT_EQ(text.substr(radius.value_span.offset, radius.value_span.length), "2.5");
     EXPECT_EQ(radius.value_span.pos, (SourcePos{3, 13}));
-    ASSERT_EQ(sphere.children.size(), 1u);
-    const PropertySource& pigment = sphere.children[0].properties.at(0);
+    ASSERT_EQ(children_of(r.source, sphere).size(), 1u);
+    const BlockSource& material = children_of(r.source, sphere)[0];
+    EXPECT_EQ(material.keyword, "material");
+    ASSERT_EQ(properties_of(r.source, material).size(), 1u);
+    const PropertySource& pigment = properties_of(r.source, material)[0];
     EXPECT_EQ(text.substr(pigment.value_span.offset, pigment.value_span.length), "<1, 0, 0>");
+}
+
+// Names and keywords in the source map refer to static storage, never to the
+// text, which the caller may drop (the CLI does, before rendering).
+TEST(ParseBasics, SourceRecordsOutliveTheText) {
+    ParseResult r;
+    {
+        std::string text =
+            "cameras { perspective_camera { active_camera: \"A\"; } }\n"
+            "scene { cylinder { height: 2; transform { scale: <1, 2, 1>; } } }\n";
+        r = parse_scene(text);
+    }
+    ASSERT_TRUE(r.ok());
+    ASSERT_EQ(r.source.primitives.size(), 1u);
+    const BlockSource& cylinder = r.source.primitives[0];
+    EXPECT_EQ(cylinder.keyword, "cylinder");
+    EXPECT_EQ(properties_of(r.source, cylinder)[0].name, "height");
+    const BlockSource& transform = children_of(r.source, cylinder)[0];
+    EXPECT_EQ(transform.keyword, "transform");
+    EXPECT_EQ(properties_of(r.source, transform)[0].name, "scale");
+    EXPECT_EQ(r.source.cameras.at(0).keyword, "perspective_camera");
+    EXPECT_EQ(properties_of(r.source, r.source.cameras.at(0))[0].name, "name");
 }
 
 }  // namespace

@@ -204,7 +204,7 @@ TEST(Structure, SeveralTransformBlocksApplyInOrder) {
     EXPECT_EQ(ops[0].degrees, 10.0);
     EXPECT_EQ(ops[1].kind, TransformKind::yrotate);
     EXPECT_EQ(ops[1].degrees, 20.0);
-    EXPECT_EQ(r.source.primitives.at(0).children.size(), 2u);
+    EXPECT_EQ(children_of(r.source, r.source.primitives.at(0)).size(), 2u);
 }
 
 TEST(Structure, SeveralMaterialBlocksEachSetOnlyWhatTheyName) {
@@ -236,7 +236,8 @@ TEST(Structure, ActiveCameraInsideACameraIsReadAsNameWithAWarning) {
               "3:5: warning: 'active_camera' inside a camera is read as 'name'; write name: "
               "\"Far Angle Camera\"; instead");
     EXPECT_EQ(r.scene.cameras.at(0).name, "Far Angle Camera");
-    EXPECT_EQ(r.source.cameras.at(0).properties.at(0).name, "name");
+    ASSERT_FALSE(properties_of(r.source, r.source.cameras.at(0)).empty());
+    EXPECT_EQ(properties_of(r.source, r.source.cameras.at(0))[0].name, "name");
 }
 
 TEST(Structure, NoSceneBlockParsesClean) {

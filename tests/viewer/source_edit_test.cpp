@@ -248,8 +248,10 @@ TEST(SourceEdit, ShowcaseEditChangesOnlyThatValuesBytes) {
     Scene edited = base.scene;
     edited.primitives[0].material.pigment = Colour(0.125, 0.25, 0.5);
     const std::string saved = save(text, edited);
-    const TextSpan span = base.source.primitives[0].children[0].properties[0].value_span;
-    ASSERT_EQ(base.source.primitives[0].children[0].properties[0].name, "pigment");
+    const BlockSource& material = children_of(base.source, base.source.primitives[0])[0];
+    const PropertySource& pigment = properties_of(base.source, material)[0];
+    const TextSpan span = pigment.value_span;
+    ASSERT_EQ(pigment.name, "pigment");
     EXPECT_EQ(saved.substr(0, span.offset), text.substr(0, span.offset));
     EXPECT_EQ(saved.substr(span.offset, 20), "<0.125, 0.25, 0.5>;\n");
     EXPECT_EQ(saved.substr(span.offset + 18), text.substr(span.offset + span.length));

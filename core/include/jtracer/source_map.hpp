@@ -5,37 +5,55 @@
 // value. Used for located validation messages and by the viewer to write an
 // edited value back into the file at its exact span, leaving every other byte
 // (comments, order, formatting) as it was.
+//
+// The layout is flat: every property record of the scene lives in one array,
+// every material/transform block record in another, and a block refers to its
+// own as a range of indices. A million spheres cost two arrays, not millions of
+// small ones. Walk a block with the free functions below:
+//
+//   for (const PropertySource& p : properties_of(source, block)) ...
+//   for (const BlockSource& child : children_of(source, block)) ...
 
 #include "jtracer/diagnostics.hpp"
 
 #include <cstddef>
+#include <cstdint>
 #include <optional>
-#include <string>
+#include <span>
+#include <string_view>
 #include <vector>
 
 namespace jt {
 
+// Offsets are 32-bit: parse_scene refuses texts of 4 GiB or more.
 struct TextSpan {
-    std::size_t offset = 0;  // byte offset into the text
-    std::size_t length = 0;
-    SourcePos pos;           // line:column of `offset`
+    std::uint32_t offset = 0;  // byte offset into the text
+    std::uint32_t length = 0;
+    SourcePos pos;  // line:column of `offset`
     bool operator==(const TextSpan&) const = default;
 };
 
 struct PropertySource {
-    std::string name;
+    std::string_view name;  // the property's name as read, in static storage (never the text's)
     TextSpan name_span;
     TextSpan value_span;  // the value's own text, e.g. "<1, 0.5, 0>" or "2.0"
     bool operator==(const PropertySource&) const = default;
 };
 
+// `count` consecutive records from `first`, in one of SceneSource's arrays.
+struct IndexRange {
+    std::uint32_t first = 0;
+    std::uint32_t count = 0;
+    bool operator==(const IndexRange&) const = default;
+};
+
 struct BlockSource {
-    std::string keyword;    // "sphere", "material", "perspective_camera", ...
+    std::string_view keyword;  // "sphere", "material", ... in static storage
     TextSpan keyword_span;
-    std::size_t open_brace = 0;   // offset of '{'
-    std::size_t close_brace = 0;  // offset of '}'
-    std::vector<PropertySource> properties;  // in file order, repeats included
-    std::vector<BlockSource> children;       // material and transform blocks, in file order
+    std::uint32_t open_brace = 0;   // offset of '{'
+    std::uint32_t close_brace = 0;  // offset of '}'
+    IndexRange properties;          // into SceneSource::properties, in file order, repeats included
+    IndexRange children;            // into SceneSource::children: material and transform blocks
     bool operator==(const BlockSource&) const = default;
 };
 
@@ -45,7 +63,21 @@ struct SceneSource {
     std::vector<BlockSource> cameras;            // parallel to Scene::cameras
     std::vector<BlockSource> primitives;         // parallel to Scene::primitives
     std::vector<BlockSource> lights;             // parallel to Scene::lights
+    std::vector<BlockSource> children;           // every primitive's nested blocks
+    std::vector<PropertySource> properties;      // every block's properties
     bool operator==(const SceneSource&) const = default;
 };
+
+// A block's properties, in file order (repeats included).
+inline std::span<const PropertySource> properties_of(const SceneSource& source,
+                                                     const BlockSource& block) {
+    return std::span(source.properties).subspan(block.properties.first, block.properties.count);
+}
+
+// A primitive's material and transform blocks, in file order.
+inline std::span<const BlockSource> children_of(const SceneSource& source,
+                                                const BlockSource& block) {
+    return std::span(source.children).subspan(block.children.first, block.children.count);
+}
 
 }  // namespace jt

@@ -6,6 +6,7 @@
 #include <charconv>
 #include <initializer_list>
 #include <optional>
+#include <span>
 #include <variant>
 #include <vector>
 
@@ -37,7 +38,14 @@ using edit::TextEdit;
 // Collects the edits for one save, then splices them in one go.
 class SourceWriter {
   public:
-    explicit SourceWriter(std::string_view text) : text_(text) {}
+    SourceWriter(std::string_view text, const SceneSource& source) : text_(text), source_(source) {}
+
+    std::span<const PropertySource> properties(const BlockSource& block) const {
+        return properties_of(source_, block);
+    }
+    std::span<const BlockSource> children(const BlockSource& block) const {
+        return children_of(source_, block);
+    }
 
     void fail(std::string message) {
         if (error_.empty()) error_ = std::move(message);
@@ -59,7 +67,7 @@ class SourceWriter {
                       std::initializer_list<std::string_view> names, const std::string& value) {
         const PropertySource* last = nullptr;
         for (const BlockSource* block : blocks)
-            for (const PropertySource& p : block->properties)
+            for (const PropertySource& p : properties(*block))
                 for (std::string_view n : names)
                     if (p.name == n) last = &p;
         if (!last) return false;
@@ -79,7 +87,7 @@ class SourceWriter {
         std::vector<std::string_view> names{name};
         names.insert(names.end(), aliases.begin(), aliases.end());
         const PropertySource* last = nullptr;
-        for (const PropertySource& p : block.properties)
+        for (const PropertySource& p : properties(block))
             for (std::string_view n : names)
                 if (p.name == n) last = &p;
         if (last) {
@@ -143,28 +151,32 @@ class SourceWriter {
     std::string_view text() const { return text_; }
     void count_insertion() { ++changed_; }
 
-    static std::optional<std::size_t> indent_hint(const BlockSource& block) {
+    std::optional<std::size_t> indent_hint(const BlockSource& block) const {
         std::optional<std::size_t> first;
-        if (!block.properties.empty()) first = block.properties.front().name_span.offset;
-        if (!block.children.empty() &&
-            (!first || block.children.front().keyword_span.offset < *first))
-            first = block.children.front().keyword_span.offset;
+        const auto own = properties(block);
+        const auto nested = children(block);
+        if (!own.empty()) first = own.front().name_span.offset;
+        if (!nested.empty() && (!first || nested.front().keyword_span.offset < *first))
+            first = nested.front().keyword_span.offset;
         return first;
+    }
+
+    // The block's material (or transform) blocks, in file order.
+    std::vector<const BlockSource*> children_named(const BlockSource& block,
+                                                   std::string_view keyword) const {
+        std::vector<const BlockSource*> found;
+        for (const BlockSource& child : children(block))
+            if (child.keyword == keyword) found.push_back(&child);
+        return found;
     }
 
   private:
     std::string_view text_;
+    const SceneSource& source_;
     std::vector<TextEdit> edits_;
     std::string error_;
     int changed_ = 0;
 };
-
-std::vector<const BlockSource*> children_named(const BlockSource& block, std::string_view keyword) {
-    std::vector<const BlockSource*> found;
-    for (const BlockSource& child : block.children)
-        if (child.keyword == keyword) found.push_back(&child);
-    return found;
-}
 
 // Name/value pairs of the fields that differ, formatted as .jts values.
 using Changes = std::vector<std::pair<std::string, std::string>>;
@@ -320,7 +332,7 @@ void write_primitive(SourceWriter& w, const BlockSource& block, const Primitive&
                      const Primitive& b) {
     for (const auto& [name, value] : shape_changes(w, a.shape, b.shape)) w.set(block, name, value);
 
-    const auto materials = children_named(block, "material");
+    const auto materials = w.children_named(block, "material");
     std::vector<std::string> unwritten;
     for (const auto& [name, value] : material_changes(a.material, b.material)) {
         if (w.replace_last(materials, {name}, value)) continue;
@@ -333,7 +345,7 @@ void write_primitive(SourceWriter& w, const BlockSource& block, const Primitive&
     if (!unwritten.empty()) {
         std::string line = "material {";
         for (const auto& item : unwritten) line += " " + item;
-        w.insert_into(block.close_brace, SourceWriter::indent_hint(block), {line + " }"});
+        w.insert_into(block.close_brace, w.indent_hint(block), {line + " }"});
         w.count_insertion();
     }
 
@@ -342,8 +354,8 @@ void write_primitive(SourceWriter& w, const BlockSource& block, const Primitive&
         return;
     }
     std::vector<const PropertySource*> ops;
-    for (const BlockSource* t : children_named(block, "transform"))
-        for (const PropertySource& p : t->properties) ops.push_back(&p);
+    for (const BlockSource* t : w.children_named(block, "transform"))
+        for (const PropertySource& p : w.properties(*t)) ops.push_back(&p);
     for (std::size_t i = 0; i < a.transforms.size(); ++i) {
         const TransformOp& before = a.transforms[i];
         const TransformOp& after = b.transforms[i];
@@ -365,7 +377,7 @@ void write_primitive(SourceWriter& w, const BlockSource& block, const Primitive&
 SourceEditResult apply_scene_edits(std::string_view text, const SceneSource& source,
                                    const Scene& original, const Scene& edited) {
     SourceEditResult result;
-    SourceWriter w(text);
+    SourceWriter w(text, source);
     if (original.primitives.size() != edited.primitives.size() ||
         source.primitives.size() != original.primitives.size())
         w.fail("primitives were added or removed; that cannot be saved in place");

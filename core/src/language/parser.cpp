@@ -14,6 +14,9 @@
 
 #include <algorithm>
 #include <array>
+#include <cstdint>
+#include <limits>
+#include <span>
 #include <string>
 #include <utility>
 #include <vector>
@@ -33,8 +36,31 @@ bool contains(std::span<const std::string_view> names, std::string_view word) {
     return std::find(names.begin(), names.end(), word) != names.end();
 }
 
+// Offsets fit in 32 bits: parse_scene refuses texts of 4 GiB or more.
 TextSpan span_of(const Token& t) {
-    return {t.offset, t.length, t.pos};
+    return {static_cast<std::uint32_t>(t.offset), static_cast<std::uint32_t>(t.length), t.pos};
+}
+
+// Every keyword a block record can have, so that records point at these
+// literals rather than at the text.
+constexpr std::array<std::string_view, 10> kRecordedKeywords{
+    "render_settings", "cameras",  "scene",       "perspective_camera", "sphere",
+    "plane",           "cylinder", "point_light", "material",           "transform"};
+
+std::string_view static_keyword(std::string_view word) {
+    for (std::string_view k : kRecordedKeywords)
+        if (k == word) return k;
+    return {};  // never: blocks are opened only at a known keyword
+}
+
+// How many records `items` adds at the end of `all`, as a range of indices.
+// Each record takes at least 4 bytes of a text under 4 GiB, so 32 bits hold it.
+template <class T>
+IndexRange append_records(std::vector<T>& all, std::span<const T> items) {
+    IndexRange range{static_cast<std::uint32_t>(all.size()),
+                     static_cast<std::uint32_t>(items.size())};
+    all.insert(all.end(), items.begin(), items.end());
+    return range;
 }
 
 // An upper bound on the primitives a text can hold (each has a '{'), capped by
@@ -46,10 +72,29 @@ std::size_t primitive_count_hint(std::string_view text) {
     return std::min(braces, text.size() / bytes_per_primitive_at_least);
 }
 
+// The same for property records: each has a ':' and takes 4 bytes at least.
+std::size_t property_count_hint(std::string_view text) {
+    auto colons = static_cast<std::size_t>(std::count(text.begin(), text.end(), ':'));
+    return std::min(colons, text.size() / 4);
+}
+
+// Reserving an upper bound costs address space only (pages never written are
+// never faulted in), but a strange text may ask for more than a memory limit
+// allows: then the array just grows as it goes.
+template <class T>
+void reserve_if_possible(std::vector<T>& records, std::size_t count) {
+    try {
+        records.reserve(count);
+    } catch (const std::exception&) {
+    }
+}
+
 class Parser {
   public:
     explicit Parser(std::string_view text)
         : lexer_(text, sink_), reader_(sink_), primitive_hint_(primitive_count_hint(text)) {
+        reserve_if_possible(result_.source.properties, property_count_hint(text));
+        reserve_if_possible(result_.source.children, primitive_hint_);
         cur_ = lexer_.next();
         next_ = lexer_.next();
     }
@@ -150,7 +195,8 @@ class Parser {
             v.form = Value::Form::bad;
             return v;
         }
-        v.span = {open.offset, cur_.offset + 1 - open.offset, open.pos};
+        v.span = {static_cast<std::uint32_t>(open.offset),
+                  static_cast<std::uint32_t>(cur_.offset + 1 - open.offset), open.pos};
         v.end = {cur_.pos.line, cur_.pos.column + 1};
         advance();
         if (bad) v.form = Value::Form::bad;
@@ -223,32 +269,33 @@ class Parser {
 
     // At the block's keyword: consumes it and the '{'. False (recovered) when '{' is missing.
     bool open_block(BlockSource& block) {
-        block.keyword = std::string(cur_.text);
+        block.keyword = static_keyword(cur_.text);
         block.keyword_span = span_of(cur_);
         advance();
         if (at(TokenKind::lbrace)) {
-            block.open_brace = cur_.offset;
+            block.open_brace = static_cast<std::uint32_t>(cur_.offset);
             advance();
             return true;
         }
-        sink_.error(cur_.pos, "expected '{' after '" + block.keyword + "', got " + describe(cur_));
+        sink_.error(cur_.pos, "expected '{' after '" + std::string(block.keyword) + "', got " +
+                                  describe(cur_));
         skip_statement();
         return false;
     }
 
-    // Runs `read` with the block's properties collected in a buffer reused from
-    // block to block, then stores them with one allocation of the exact size
-    // (growing each block's own list would cost several allocations a block).
-    // `level` is the nesting depth: a primitive's material is read while the
-    // primitive's own buffer is in use.
+    // Runs `read(open)` with the block's properties collected in a buffer
+    // reused from block to block, then appends them to the scene's one array of
+    // property records, where they stay together (a primitive's properties and
+    // its material's interleave in the text). `level` is the nesting depth: a
+    // primitive's material is read while the primitive's own buffer is in use.
     template <class Read>
-    void with_property_buffer(BlockSource& block, std::size_t level, Read read) {
+    void read_properties(BlockSource& block, std::size_t level, Read read) {
         std::vector<PropertySource>& buffer = property_buffers_[level];
         buffer.clear();
-        block.properties.swap(buffer);
-        read();
-        block.properties.swap(buffer);
-        block.properties.assign(buffer.begin(), buffer.end());
+        OpenBlock open{block, buffer};
+        read(open);
+        block.properties =
+            append_records(result_.source.properties, std::span<const PropertySource>(buffer));
     }
 
     // Reads a block's entries up to and including its '}'. `on_property` gets
@@ -260,12 +307,12 @@ class Parser {
         for (;;) {
             switch (cur_.kind) {
                 case TokenKind::rbrace:
-                    block.close_brace = cur_.offset;
+                    block.close_brace = static_cast<std::uint32_t>(cur_.offset);
                     advance();
                     return;
                 case TokenKind::end:
                     sink_.error(block.keyword_span.pos,
-                                "this '" + block.keyword +
+                                "this '" + std::string(block.keyword) +
                                     "' block is never closed: expected '}' before the end of "
                                     "the file");
                     return;
@@ -282,8 +329,9 @@ class Parser {
                     skip_statement();
                     break;
                 default:
-                    sink_.error(cur_.pos, "expected a property name or '}' in '" + block.keyword +
-                                              "', got " + describe(cur_));
+                    sink_.error(cur_.pos, "expected a property name or '}' in '" +
+                                              std::string(block.keyword) + "', got " +
+                                              describe(cur_));
                     if (at(TokenKind::lbrace)) {
                         skip_braced();
                     } else {
@@ -316,9 +364,9 @@ class Parser {
             std::string list;
             for (std::string_view name : allowed)
                 list += (list.empty() ? "" : ", ") + std::string(name);
-            sink_.error(p.name_span.pos, "'" + block.keyword + "' holds only blocks (" + list +
-                                             "), not properties like '" + std::string(p.name) +
-                                             "'");
+            sink_.error(p.name_span.pos,
+                        "'" + std::string(block.keyword) + "' holds only blocks (" + list +
+                            "), not properties like '" + std::string(p.name) + "'");
         };
     }
 
@@ -352,8 +400,7 @@ class Parser {
         BlockSource block;
         RenderSettings settings;  // a later block replaces the earlier one whole
         if (!open_block(block)) return;
-        OpenBlock open{block};
-        with_property_buffer(block, 0, [&] {
+        read_properties(block, 0, [&](OpenBlock& open) {
             parse_body(
                 block, kNoBlocks, [&](const Property& p) { reader_.apply(settings, open, p); },
                 [&] { unknown_block("in 'render_settings'", kNoBlocks); });
@@ -381,8 +428,7 @@ class Parser {
             BlockSource block;
             Camera camera;
             if (!open_block(block)) return;
-            OpenBlock open{block};
-            with_property_buffer(block, 0, [&] {
+            read_properties(block, 0, [&](OpenBlock& open) {
                 parse_body(
                     block, kNoBlocks, [&](const Property& p) { reader_.apply(camera, open, p); },
                     [&] { unknown_block("in 'perspective_camera'", kNoBlocks); });
@@ -408,8 +454,7 @@ class Parser {
                 BlockSource light_block;
                 PointLight light;
                 if (!open_block(light_block)) return;
-                OpenBlock open{light_block};
-                with_property_buffer(light_block, 0, [&] {
+                read_properties(light_block, 0, [&](OpenBlock& open) {
                     parse_body(
                         light_block, kNoBlocks,
                         [&](const Property& p) { reader_.apply(light, open, p); },
@@ -423,8 +468,8 @@ class Parser {
                 if (kind == "cylinder") primitive.shape = Cylinder{};
                 BlockSource primitive_block;
                 if (!open_block(primitive_block)) return;
-                with_property_buffer(primitive_block, 0,
-                                     [&] { parse_primitive_body(primitive, primitive_block); });
+                read_properties(primitive_block, 0,
+                                [&](OpenBlock& open) { parse_primitive_body(primitive, open); });
                 primitives.push_back(std::move(primitive));
                 primitive_sources.push_back(std::move(primitive_block));
             } else {
@@ -459,8 +504,12 @@ class Parser {
         unknown_block("in 'point_light'", kNoBlocks);
     }
 
-    void parse_primitive_body(Primitive& primitive, BlockSource& block) {
-        OpenBlock open{block};
+    // A primitive's children go straight to the scene's array of child records:
+    // nothing else is added there until the primitive's '}', so they stay together.
+    void parse_primitive_body(Primitive& primitive, OpenBlock& open) {
+        BlockSource& block = open.source;
+        std::vector<BlockSource>& children = result_.source.children;
+        const std::size_t first_child = children.size();
         parse_body(
             block, kPrimitiveBlocks,
             [&](const Property& p) { reader_.apply(primitive.shape, open, p); },
@@ -468,8 +517,7 @@ class Parser {
                 if (cur_.text == "material") {
                     BlockSource child;
                     if (!open_block(child)) return;
-                    OpenBlock open_child{child};
-                    with_property_buffer(child, 1, [&] {
+                    read_properties(child, 1, [&](OpenBlock& open_child) {
                         parse_body(
                             child, kNoBlocks,
                             [&](const Property& p) {
@@ -477,12 +525,11 @@ class Parser {
                             },
                             [&] { unknown_block("in 'material'", kNoBlocks); });
                     });
-                    block.children.push_back(std::move(child));
+                    children.push_back(child);
                 } else if (cur_.text == "transform") {
                     BlockSource child;
                     if (!open_block(child)) return;
-                    OpenBlock open_child{child};
-                    with_property_buffer(child, 1, [&] {
+                    read_properties(child, 1, [&](OpenBlock& open_child) {
                         parse_body(
                             child, kNoBlocks,
                             [&](const Property& p) {
@@ -490,11 +537,13 @@ class Parser {
                             },
                             [&] { unknown_block("in 'transform'", kNoBlocks); });
                     });
-                    block.children.push_back(std::move(child));
+                    children.push_back(child);
                 } else {
-                    unknown_block("in '" + block.keyword + "'", kPrimitiveBlocks);
+                    unknown_block("in '" + std::string(block.keyword) + "'", kPrimitiveBlocks);
                 }
             });
+        block.children = {static_cast<std::uint32_t>(first_child),
+                          static_cast<std::uint32_t>(children.size() - first_child)};
     }
 
     DiagnosticSink sink_;
@@ -517,6 +566,12 @@ ParseResult parse_scene(std::string_view text) {
             std::string what = text[bad] == '\0' ? "a NUL byte" : "a byte that is not UTF-8 text";
             result.diagnostics.push_back({Severity::error, lang::position_of(text, bad),
                                           "the file is not a text file: it contains " + what});
+            return result;
+        }
+        if (text.size() >= std::numeric_limits<std::uint32_t>::max()) {
+            ParseResult result;
+            result.diagnostics.push_back(
+                {Severity::error, {}, "the scene text is too large: 4 GiB or more"});
             return result;
         }
         return lang::Parser(text).run();

@@ -6,6 +6,7 @@
 #include <algorithm>
 #include <array>
 #include <cmath>
+#include <span>
 #include <string>
 
 #include <glm/common.hpp>
@@ -27,6 +28,13 @@ constexpr std::array<std::string_view, 7> kMaterial{
     "pigment", "ambient", "diffuse", "specular", "diffuse_k", "specular_k", "reflection"};
 constexpr std::array<std::string_view, 5> kTransform{"translate", "scale", "xrotate", "yrotate",
                                                      "zrotate"};
+
+// The entry of `names` equal to `name`: the same text, in static storage.
+std::string_view known_name(std::span<const std::string_view> names, std::string_view name) {
+    for (std::string_view known : names)
+        if (known == name) return known;
+    return {};  // never: only known names are recorded
+}
 
 bool is_non_finite_word(std::string_view w) {
     std::string lower;
@@ -166,7 +174,7 @@ void PropertyReader::record(OpenBlock& block, const Property& p, std::string_vie
                                                std::to_string(first_line) + ")");
         }
     }
-    block.source.properties.push_back({std::string(as_name), p.name_span, p.value.span});
+    block.properties.push_back({as_name, p.name_span, p.value.span});
 }
 
 void PropertyReader::apply(RenderSettings& s, OpenBlock& block, const Property& p) {
@@ -211,12 +219,12 @@ void PropertyReader::apply(RenderSettings& s, OpenBlock& block, const Property& 
         sink_.error(p.name_span.pos, unknown_name_message("property", p.name,
                                                           "in 'render_settings'", kRenderSettings));
     }
-    if (ok) record(block, p, p.name, true);
+    if (ok) record(block, p, known_name(kRenderSettings, p.name), true);
 }
 
 void PropertyReader::apply(Camera& c, OpenBlock& block, const Property& p) {
     bool ok = false;
-    std::string_view as_name = p.name;
+    std::string_view as_name = known_name(kCamera, p.name);
     if (p.name == "name") {
         ok = string(p, c.name);
     } else if (p.name == "active_camera") {
@@ -295,7 +303,13 @@ void PropertyReader::apply(Shape& shape, OpenBlock& block, const Property& p) {
                         unknown_name_message("property", p.name, "in 'cylinder'", kCylinder));
         }
     }
-    if (ok && known) record(block, p, p.name, true);
+    if (ok && known) {
+        // Every shape's names are among the sphere's, plane's and cylinder's.
+        std::string_view name = known_name(kSphere, p.name);
+        if (name.empty()) name = known_name(kPlane, p.name);
+        if (name.empty()) name = known_name(kCylinder, p.name);
+        record(block, p, name, true);
+    }
 }
 
 void PropertyReader::apply(Material& m, OpenBlock& block, const Property& p) {
@@ -328,7 +342,7 @@ void PropertyReader::apply(Material& m, OpenBlock& block, const Property& p) {
         sink_.error(p.name_span.pos,
                     unknown_name_message("property", p.name, "in 'material'", kMaterial));
     }
-    if (ok) record(block, p, p.name, true);
+    if (ok) record(block, p, known_name(kMaterial, p.name), true);
 }
 
 void PropertyReader::apply(PointLight& light, OpenBlock& block, const Property& p) {
@@ -341,7 +355,7 @@ void PropertyReader::apply(PointLight& light, OpenBlock& block, const Property& 
         sink_.error(p.name_span.pos,
                     unknown_name_message("property", p.name, "in 'point_light'", kLight));
     }
-    if (ok) record(block, p, p.name, true);
+    if (ok) record(block, p, known_name(kLight, p.name), true);
 }
 
 void PropertyReader::apply(std::vector<TransformOp>& transforms, OpenBlock& block,
@@ -363,7 +377,7 @@ void PropertyReader::apply(std::vector<TransformOp>& transforms, OpenBlock& bloc
     if (ok) {
         transforms.push_back(op);
         // Every transform property is an operation: repeats apply, with no warning.
-        record(block, p, p.name, false);
+        record(block, p, known_name(kTransform, p.name), false);
     }
 }
 

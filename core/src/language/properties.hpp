@@ -45,9 +45,11 @@ class FirstLines {
     std::vector<std::pair<std::string_view, int>> more_;  // never used by known names
 };
 
-// A block being read: its source record and the names it has set.
+// A block being read: its source record, where its property records are
+// collected until its '}', and the names it has set.
 struct OpenBlock {
     BlockSource& source;
+    std::vector<PropertySource>& properties;
     FirstLines first_lines{};
 };
 
@@ -74,7 +76,8 @@ class PropertyReader {
     bool positive(const Property& p, double& out);
     void kind_error(const Property& p, std::string_view expected);
     void range_error(const Property& p, std::string_view rule);
-    // Records the property in `block`; warns when the block already set it.
+    // Records the property in `block` under `as_name`, which must be in static
+    // storage (one of the known names); warns when the block already set it.
     void record(OpenBlock& block, const Property& p, std::string_view as_name, bool warn_repeat);
 
     DiagnosticSink& sink_;

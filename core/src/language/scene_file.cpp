@@ -41,8 +41,10 @@ TextFile read_text_file(const std::filesystem::path& path, std::uintmax_t max_by
         file.error = name + " is a directory, not a scene file";
         return file;
     }
+    std::uintmax_t known_size = 0;  // 0: unknown (or empty)
     if (std::filesystem::is_regular_file(status)) {
         auto size = std::filesystem::file_size(path, ec);
+        if (!ec) known_size = size;
         if (!ec && size > max_bytes) {
             file.error = name + " is too large to read (" + std::to_string(size) +
                          " bytes; the limit is " + std::to_string(max_bytes) + ")";
@@ -54,6 +56,14 @@ TextFile read_text_file(const std::filesystem::path& path, std::uintmax_t max_by
     if (!f) {
         file.error = "cannot read " + name + ": " + describe_errno(errno);
         return file;
+    }
+    // A regular file of known size is read in one go into a buffer of that
+    // size: growing the string chunk by chunk would copy it and fault in twice
+    // its pages. The loop below then only confirms the end (or reads on, if the
+    // file grew meanwhile); pipes and other files of no known size start there.
+    if (known_size > 0) {
+        file.text.resize(static_cast<std::size_t>(known_size));
+        file.text.resize(std::fread(file.text.data(), 1, file.text.size(), f.get()));
     }
     char buffer[1 << 16];
     for (;;) {

@@ -15,15 +15,6 @@ namespace jt {
 
 namespace {
 
-// Where a block's property `name` was written (its last occurrence), else the block's keyword.
-SourcePos where(const BlockSource* block, std::string_view name) {
-    if (!block) return {};
-    for (auto it = block->properties.rbegin(); it != block->properties.rend(); ++it) {
-        if (it->name == name) return it->value_span.pos;
-    }
-    return block->keyword_span.pos;
-}
-
 template <class T>
 const BlockSource* at(const std::vector<BlockSource>& sources, const std::vector<T>& items,
                       std::size_t i) {
@@ -58,6 +49,16 @@ class Validator {
     void warning(SourcePos pos, std::string message) {
         out_.push_back({Severity::warning, pos, std::move(message)});
     }
+    // Where a block's property `name` was written (its last occurrence), else the block's keyword.
+    SourcePos where(const BlockSource* block, std::string_view name) const {
+        if (!block) return {};
+        const auto properties = properties_of(source_, *block);
+        for (auto it = properties.rbegin(); it != properties.rend(); ++it) {
+            if (it->name == name) return it->value_span.pos;
+        }
+        return block->keyword_span.pos;
+    }
+
     const BlockSource* settings_block() const {
         return source_.render_settings ? &*source_.render_settings : nullptr;
     }
@@ -171,12 +172,13 @@ class Validator {
     }
 
     // The scale op number k of a primitive is the k-th op property across its transform blocks.
-    static SourcePos op_position(const BlockSource* block, std::size_t k) {
+    SourcePos op_position(const BlockSource* block, std::size_t k) const {
         if (!block) return {};
-        for (const BlockSource& child : block->children) {
+        for (const BlockSource& child : children_of(source_, *block)) {
             if (child.keyword != "transform") continue;
-            if (k < child.properties.size()) return child.properties[k].name_span.pos;
-            k -= child.properties.size();
+            const auto ops = properties_of(source_, child);
+            if (k < ops.size()) return ops[k].name_span.pos;
+            k -= ops.size();
         }
         return block->keyword_span.pos;
     }
