@@ -81,7 +81,8 @@ bool render(jt::RenderJob& job, bool quiet) {
 }
 
 int run(const Options& o) {
-    jt::LoadedScene loaded = jt::load_scene_file(o.scene_path);
+    // Without the source map: check_scene builds it only if there is something to locate.
+    jt::LoadedScene loaded = jt::load_scene_file(o.scene_path, {.source_map = false});
     if (!loaded.read_ok()) {
         std::cerr << "jtracer-cli: " << loaded.io_error << "\n";
         return exit_io_error;
@@ -96,10 +97,8 @@ int run(const Options& o) {
         if (!o.quiet) std::cerr << loaded.path << ": no errors\n";
         return exit_ok;
     }
-    // The text and its source map served the diagnostics only: give their
-    // memory back before the renderer builds its own (a million spheres' worth
-    // is several hundred MB).
-    loaded.parsed.source = {};
+    // The text served the diagnostics only: give its memory back before the
+    // renderer builds its own.
     std::string().swap(loaded.text);
 
     const jt::Scene& scene = loaded.parsed.scene;

@@ -91,6 +91,35 @@ TEST_F(SceneFile, LoadAndCheckReportsParseThenValidation) {
     EXPECT_TRUE(has_errors(diagnostics));
 }
 
+// Loaded without its source map (as the CLI does), the scene is the same and
+// check_scene still locates every finding, by parsing again when there is one.
+TEST_F(SceneFile, WithoutTheSourceMapTheFindingsAreStillLocated) {
+    fs::path path = write("s.jts",
+                          "render_settings { width: 4; height: 4; }\n"
+                          "cameras { perspective_camera { look_at: <0, 0, 0>; } }\n"
+                          "scene { sphere { radius: 2; radius: 3;\n"
+                          "  transform { scale: <1, 0, 1>; } } }\n");
+    LoadedScene mapped = load_scene_file(path);
+    LoadedScene unmapped = load_scene_file(path, {.source_map = false});
+    ASSERT_TRUE(unmapped.read_ok());
+    EXPECT_EQ(unmapped.parsed.scene, mapped.parsed.scene);
+    EXPECT_EQ(unmapped.parsed.source, SceneSource{});
+    EXPECT_FALSE(mapped.parsed.source.properties.empty());
+    EXPECT_EQ(check_scene(unmapped), check_scene(mapped));
+    EXPECT_EQ(testing::brief(check_scene(unmapped)),
+              "3:29: warning: 'radius' is set again in this 'sphere'; the later value wins (first "
+              "set at line 3)\n"
+              "2:41: error: camera 1: 'look_at' equals 'position', so the camera looks nowhere\n"
+              "4:15: warning: 'scale' <1, 0, 1> has a zero component: it flattens the primitive "
+              "to nothing; it is left out");
+
+    fs::path clean = write("c.jts",
+                           "render_settings { width: 4; height: 4; }\n"
+                           "cameras { perspective_camera { aspect: 1; } }\n"
+                           "scene { sphere { } }\n");
+    EXPECT_TRUE(check_scene(load_scene_file(clean, {.source_map = false})).empty());
+}
+
 TEST_F(SceneFile, ValidationIsSkippedWhenParsingFailed) {
     LoadedScene loaded = load_scene_file(write("bad.jts", "scene { sphere { radius: -1; } }"));
     EXPECT_EQ(testing::brief(check_scene(loaded)),

@@ -11,14 +11,21 @@
 
 namespace jt {
 
+struct ParseOptions {
+    // False: leave ParseResult::source empty. A tool that only renders needs
+    // the source map only to locate validation findings, and for a million
+    // spheres the map costs more than the scene (see check_scene).
+    bool source_map = true;
+};
+
 struct ParseResult {
     Scene scene;
-    SceneSource source;
+    SceneSource source;                   // empty when parsed with source_map = false
     std::vector<Diagnostic> diagnostics;  // in the order found
     bool ok() const { return !has_errors(diagnostics); }
 };
 
 // Lexes and parses; reports every error it can recover from (up to a cap).
-ParseResult parse_scene(std::string_view text);
+ParseResult parse_scene(std::string_view text, ParseOptions options = {});
 
 }  // namespace jt

@@ -40,15 +40,18 @@ struct LoadedScene {
     std::string text;      // the file's contents
     std::string io_error;  // non-empty when the file could not be read
     ParseResult parsed;    // scene, source spans and parse diagnostics
+    ParseOptions options;  // what it was parsed with
     bool read_ok() const { return io_error.empty(); }
 };
 
 // Reads and parses. Does not validate: apply any overrides to
 // `parsed.scene` first, then call check_scene.
-LoadedScene load_scene_file(const std::filesystem::path& path);
+LoadedScene load_scene_file(const std::filesystem::path& path, ParseOptions options = {});
 
 // The parse diagnostics followed by validate_scene's (validation runs only when
-// parsing found no errors, so that one mistake does not cascade).
+// parsing found no errors, so that one mistake does not cascade). A scene
+// loaded without its source map is validated without it, and only when that
+// finds something is the text parsed again to say where.
 std::vector<Diagnostic> check_scene(const LoadedScene& loaded);
 
 // Every diagnostic formatted by format_diagnostic, concatenated.

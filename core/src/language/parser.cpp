@@ -91,10 +91,15 @@ void reserve_if_possible(std::vector<T>& records, std::size_t count) {
 
 class Parser {
   public:
-    explicit Parser(std::string_view text)
-        : lexer_(text, sink_), reader_(sink_), primitive_hint_(primitive_count_hint(text)) {
-        reserve_if_possible(result_.source.properties, property_count_hint(text));
-        reserve_if_possible(result_.source.children, primitive_hint_);
+    Parser(std::string_view text, ParseOptions options)
+        : lexer_(text, sink_),
+          reader_(sink_),
+          primitive_hint_(primitive_count_hint(text)),
+          source_map_(options.source_map) {
+        if (source_map_) {
+            reserve_if_possible(result_.source.properties, property_count_hint(text));
+            reserve_if_possible(result_.source.children, primitive_hint_);
+        }
         cur_ = lexer_.next();
         next_ = lexer_.next();
     }
@@ -102,6 +107,7 @@ class Parser {
     ParseResult run() {
         parse_file();
         result_.diagnostics = sink_.take();
+        if (!source_map_) result_.source = {};
         return std::move(result_);
     }
 
@@ -294,8 +300,10 @@ class Parser {
         buffer.clear();
         OpenBlock open{block, buffer};
         read(open);
-        block.properties =
-            append_records(result_.source.properties, std::span<const PropertySource>(buffer));
+        if (source_map_) {
+            block.properties =
+                append_records(result_.source.properties, std::span<const PropertySource>(buffer));
+        }
     }
 
     // Reads a block's entries up to and including its '}'. `on_property` gets
@@ -447,7 +455,7 @@ class Parser {
         // Only the first scene block gets the hint: it was counted over the whole text.
         std::size_t hint = std::exchange(primitive_hint_, 0);
         primitives.reserve(hint);
-        primitive_sources.reserve(hint);
+        if (source_map_) primitive_sources.reserve(hint);
         parse_body(block, kSceneBlocks, only_blocks(block, kSceneBlocks), [&] {
             std::string_view kind = cur_.text;
             if (kind == "point_light") {
@@ -471,7 +479,7 @@ class Parser {
                 read_properties(primitive_block, 0,
                                 [&](OpenBlock& open) { parse_primitive_body(primitive, open); });
                 primitives.push_back(std::move(primitive));
-                primitive_sources.push_back(std::move(primitive_block));
+                if (source_map_) primitive_sources.push_back(primitive_block);
             } else {
                 unknown_block("in 'scene'", kSceneBlocks);
             }
@@ -525,7 +533,7 @@ class Parser {
                             },
                             [&] { unknown_block("in 'material'", kNoBlocks); });
                     });
-                    children.push_back(child);
+                    if (source_map_) children.push_back(child);
                 } else if (cur_.text == "transform") {
                     BlockSource child;
                     if (!open_block(child)) return;
@@ -537,7 +545,7 @@ class Parser {
                             },
                             [&] { unknown_block("in 'transform'", kNoBlocks); });
                     });
-                    children.push_back(child);
+                    if (source_map_) children.push_back(child);
                 } else {
                     unknown_block("in '" + std::string(block.keyword) + "'", kPrimitiveBlocks);
                 }
@@ -552,13 +560,14 @@ class Parser {
     Token cur_, next_;
     ParseResult result_;
     std::size_t primitive_hint_;
+    bool source_map_;  // false: records are still made (for messages) but not kept
     std::array<std::vector<PropertySource>, 2> property_buffers_;
 };
 
 }  // namespace
 }  // namespace lang
 
-ParseResult parse_scene(std::string_view text) {
+ParseResult parse_scene(std::string_view text, ParseOptions options) {
     try {
         std::size_t bad = lang::find_invalid_text_byte(text);
         if (bad != std::string_view::npos) {
@@ -574,7 +583,7 @@ ParseResult parse_scene(std::string_view text) {
                 {Severity::error, {}, "the scene text is too large: 4 GiB or more"});
             return result;
         }
-        return lang::Parser(text).run();
+        return lang::Parser(text, options).run();
     } catch (const std::exception& e) {
         // Only allocation failure can get here (e.g. a scene too large for memory).
         ParseResult result;

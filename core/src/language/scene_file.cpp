@@ -85,24 +85,30 @@ TextFile read_text_file(const std::filesystem::path& path, std::uintmax_t max_by
     return file;
 }
 
-LoadedScene load_scene_file(const std::filesystem::path& path) {
+LoadedScene load_scene_file(const std::filesystem::path& path, ParseOptions options) {
     LoadedScene loaded;
     loaded.path = path.string();
+    loaded.options = options;
     TextFile file = read_text_file(path);
     if (!file.ok()) {
         loaded.io_error = std::move(file.error);
         return loaded;
     }
     loaded.text = std::move(file.text);
-    loaded.parsed = parse_scene(loaded.text);
+    loaded.parsed = parse_scene(loaded.text, options);
     return loaded;
 }
 
 std::vector<Diagnostic> check_scene(const LoadedScene& loaded) {
     std::vector<Diagnostic> all = loaded.parsed.diagnostics;
     if (!has_errors(all)) {
-        for (Diagnostic& d : validate_scene(loaded.parsed.scene, loaded.parsed.source))
-            all.push_back(std::move(d));
+        std::vector<Diagnostic> found = validate_scene(loaded.parsed.scene, loaded.parsed.source);
+        if (!found.empty() && !loaded.options.source_map) {
+            // Same text, same scene lists: the map lines up with the scene
+            // (overrides applied to it change values, not the lists).
+            found = validate_scene(loaded.parsed.scene, parse_scene(loaded.text).source);
+        }
+        for (Diagnostic& d : found) all.push_back(std::move(d));
     }
     return all;
 }
