@@ -5,7 +5,8 @@
 // Each layout runs twice: "cold", where every parse gets fresh memory from the
 // kernel (as the CLI does: on a VM the page faults of first touch cost as much
 // as the parsing), and "warm", where the heap keeps its pages between parses,
-// which measures the parser's own work.
+// which measures the parser's own work. "DenseColdNoMap" parses without the
+// source map, as jtracer-cli does.
 
 #include "jtracer/parser.hpp"
 
@@ -49,9 +50,9 @@ std::string spheres(bool dense) {
     return text;
 }
 
-void parse(benchmark::State& state, const std::string& text) {
+void parse(benchmark::State& state, const std::string& text, jt::ParseOptions options = {}) {
     for (auto _ : state) {
-        jt::ParseResult result = jt::parse_scene(text);
+        jt::ParseResult result = jt::parse_scene(text, options);
         if (!result.ok() || result.scene.primitives.size() != sphere_count)
             state.SkipWithError("the benchmark scene did not parse");
         benchmark::DoNotOptimize(result);
@@ -88,6 +89,9 @@ void BM_ParseNormalCold(benchmark::State& state) {
 void BM_ParseDenseCold(benchmark::State& state) {
     parse(state, dense_text());
 }
+void BM_ParseDenseColdNoMap(benchmark::State& state) {
+    parse(state, dense_text(), {.source_map = false});
+}
 void BM_ParseNormalWarm(benchmark::State& state) {
     parse_with_warm_heap(state, normal_text());
 }
@@ -97,6 +101,7 @@ void BM_ParseDenseWarm(benchmark::State& state) {
 
 BENCHMARK(BM_ParseNormalCold)->Unit(benchmark::kMillisecond);
 BENCHMARK(BM_ParseDenseCold)->Unit(benchmark::kMillisecond);
+BENCHMARK(BM_ParseDenseColdNoMap)->Unit(benchmark::kMillisecond);
 BENCHMARK(BM_ParseNormalWarm)->Unit(benchmark::kMillisecond);
 BENCHMARK(BM_ParseDenseWarm)->Unit(benchmark::kMillisecond);
 
