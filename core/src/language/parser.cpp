@@ -7,6 +7,7 @@
 
 #include "jtracer/parser.hpp"
 
+#include "io/huge_pages.hpp"
 #include "language/lexer.hpp"
 #include "language/number_text.hpp"
 #include "language/properties.hpp"
@@ -81,10 +82,12 @@ std::size_t property_count_hint(std::string_view text) {
 // Reserving an upper bound costs address space only (pages never written are
 // never faulted in), but a strange text may ask for more than a memory limit
 // allows: then the array just grows as it goes.
+// Large arrays are backed by huge pages where the system allows (huge_pages.hpp).
 template <class T>
 void reserve_if_possible(std::vector<T>& records, std::size_t count) {
     try {
         records.reserve(count);
+        advise_huge_pages(records);
     } catch (const std::exception&) {
     }
 }
@@ -455,7 +458,8 @@ class Parser {
         // Only the first scene block gets the hint: it was counted over the whole text.
         std::size_t hint = std::exchange(primitive_hint_, 0);
         primitives.reserve(hint);
-        if (source_map_) primitive_sources.reserve(hint);
+        advise_huge_pages(primitives);
+        if (source_map_) reserve_if_possible(primitive_sources, hint);
         parse_body(block, kSceneBlocks, only_blocks(block, kSceneBlocks), [&] {
             std::string_view kind = cur_.text;
             if (kind == "point_light") {

@@ -1,5 +1,6 @@
 #include "jtracer/scene_file.hpp"
 
+#include "io/huge_pages.hpp"
 #include "jtracer/validate.hpp"
 #include "language/number_text.hpp"
 
@@ -62,6 +63,8 @@ TextFile read_text_file(const std::filesystem::path& path, std::uintmax_t max_by
     // its pages. The loop below then only confirms the end (or reads on, if the
     // file grew meanwhile); pipes and other files of no known size start there.
     if (known_size > 0) {
+        file.text.reserve(static_cast<std::size_t>(known_size));
+        advise_huge_pages(file.text);
         file.text.resize(static_cast<std::size_t>(known_size));
         file.text.resize(std::fread(file.text.data(), 1, file.text.size(), f.get()));
     }
