@@ -46,9 +46,15 @@ inline double first_in_range(double t0, double t1, double t_min, double t_max) {
 inline double intersect_sphere(const Vec3& origin, const Vec3& direction, const Vec3& center,
                                double radius, double t_min, double t_max) {
     Vec3 f = origin - center;
-    double a = glm::dot(direction, direction);
     double b = glm::dot(f, direction);
     double c = glm::dot(f, f) - radius * radius;
+    // Starting outside (c > 0) and not heading in (b >= 0): the roots' product
+    // c/a is positive and their sum -2b/a is not, so none is positive, and the
+    // computed ones below keep those signs (b == 0 gives a negative
+    // discriminant). Most shadow and reflection rays leave their sphere this
+    // way; deciding it before the division and square root changes no result.
+    if (c > 0.0 && b >= 0.0 && t_min >= 0.0) return no_hit;
+    double a = glm::dot(direction, direction);
     Vec3 perpendicular = f - (b / a) * direction;
     double t0, t1;
     if (!solve_ray_quadratic(a, b, c, glm::dot(perpendicular, perpendicular), radius * radius, t0,
