@@ -213,6 +213,11 @@ std::shared_ptr<const PreparedScene> prepare_scene(const Scene& scene,
         gather_materials();
     }
     prepared->lights = scene.lights;
+    if (previous && previous->geometry == prepared->geometry && previous->lights == scene.lights)
+        prepared->light_buffers = previous->light_buffers;
+    else
+        prepared->light_buffers = std::make_shared<const std::vector<LightBuffer>>(
+            build_light_buffers(*prepared->geometry, scene.lights));
     prepared->cameras = scene.cameras;
     prepared->settings = scene.settings;
     return prepared;

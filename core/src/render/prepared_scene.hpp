@@ -9,6 +9,7 @@
 #include "geometry/affine.hpp"
 #include "jtracer/render_job.hpp"
 #include "jtracer/scene.hpp"
+#include "render/light_buffer.hpp"
 
 #include <embree3/rtcore.h>
 
@@ -86,6 +87,9 @@ struct PreparedScene {
     std::vector<Material> materials;
     std::vector<std::uint32_t> material_of;  // indexed by Scene primitive
     std::vector<PointLight> lights;
+    // Shadow-ray candidates, one table a light (none when no table pays);
+    // shared with the previous PreparedScene when geometry and lights are.
+    std::shared_ptr<const std::vector<LightBuffer>> light_buffers;
     std::vector<Camera> cameras;
     RenderSettings settings;
 };

@@ -8,6 +8,8 @@
 #include <bit>
 #include <cmath>
 #include <limits>
+#include <optional>
+#include <span>
 
 namespace jt {
 
@@ -15,6 +17,10 @@ namespace {
 
 constexpr std::uint32_t no_source = std::numeric_limits<std::uint32_t>::max();
 constexpr float float_infinity = std::numeric_limits<float>::infinity();
+
+// A light buffer cell with more shapes than this leaves the ray to the BVH:
+// testing each costs more than Embree's walk past most of them.
+constexpr std::size_t max_cell_candidates = 16;
 
 // Embree hands our callbacks the context pointer we passed in; the query
 // structs start with it so that they can be found again from it.
@@ -182,6 +188,29 @@ bool occluded_by_testing_all(const Geometry& g, const Vec3& origin, const Vec3& 
     return false;
 }
 
+// The walk of a light buffer's cell: the shapes in it, exactly tested.
+bool occluded_by_candidates(const Geometry& g, std::span<const std::uint32_t> candidates,
+                            const Vec3& origin, const Vec3& direction, double t_min, double t_max,
+                            OccluderHint& blocker) {
+    CylinderPart part;
+    for (std::uint32_t candidate : candidates) {
+        const std::uint32_t i = candidate & ~shape_flag;
+        if (candidate & shape_flag) {
+            if (shape_distance(g.shapes[i], origin, direction, t_min, t_max, part) != no_hit) {
+                blocker = {OccluderHint::Set::shape, i};
+                return true;
+            }
+        } else {
+            const WorldSphere& s = g.spheres[i];
+            if (intersect_sphere(origin, direction, s.center, s.radius, t_min, t_max) != no_hit) {
+                blocker = {OccluderHint::Set::sphere, i};
+                return true;
+            }
+        }
+    }
+    return false;
+}
+
 // Whether the hinted surface blocks the ray; false for no hint or a stale one.
 bool hinted_blocks(const Geometry& g, const OccluderHint& hint, const Vec3& origin,
                    const Vec3& direction, double t_min, double t_max) {
@@ -306,7 +335,7 @@ bool closest_hit(const Geometry& geometry, const Vec3& origin, const Vec3& direc
 }
 
 bool occluded(const Geometry& geometry, const Vec3& origin, const Vec3& direction, double t_min,
-              double t_max, OccluderHint* hint) {
+              double t_max, OccluderHint* hint, const LightBuffer* light) {
     if (hint && hinted_blocks(geometry, *hint, origin, direction, t_min, t_max)) return true;
     OccluderHint blocker;
     bool blocked = false;
@@ -317,7 +346,12 @@ bool occluded(const Geometry& geometry, const Vec3& origin, const Vec3& directio
             blocked = true;
         }
     }
-    if (!blocked && !geometry.bvh) {
+    std::optional<std::span<const std::uint32_t>> candidates;
+    if (!blocked && light) candidates = candidates_toward(*light, -direction);
+    if (candidates && (!geometry.bvh || candidates->size() <= max_cell_candidates)) {
+        blocked =
+            occluded_by_candidates(geometry, *candidates, origin, direction, t_min, t_max, blocker);
+    } else if (!blocked && !geometry.bvh) {
         blocked = occluded_by_testing_all(geometry, origin, direction, t_min, t_max, blocker);
     } else if (!blocked) {
         OcclusionQuery q;

@@ -36,8 +36,11 @@ struct OccluderHint {
 
 // Whether any surface lies at some t in (t_min, t_max). With a hint, tries the
 // hinted surface first and leaves the hint on the surface that blocked the ray.
+// With `light`, the table of the light the ray runs to (t_max its distance),
+// tests the shapes of the ray's cell instead of walking the BVH when they are
+// few: the answer is the same.
 bool occluded(const Geometry& geometry, const Vec3& origin, const Vec3& direction, double t_min,
-              double t_max, OccluderHint* hint = nullptr);
+              double t_max, OccluderHint* hint = nullptr, const LightBuffer* light = nullptr);
 
 // Embree callbacks for the two user geometries; prepare_scene registers them.
 void sphere_bounds(const RTCBoundsFunctionArguments* args);

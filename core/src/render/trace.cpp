@@ -29,6 +29,8 @@ Colour shade_hit(const PreparedScene& scene, const Material& m, const Vec3& poin
                  const Vec3& lifted, const Vec3& normal, const Vec3& view, std::uint64_t& rays) {
     Colour c = scene.settings.ambient_light * m.ambient * m.pigment;
     const Geometry& geometry = *scene.geometry;
+    const std::vector<LightBuffer>* light_buffers =
+        scene.light_buffers && !scene.light_buffers->empty() ? scene.light_buffers.get() : nullptr;
     // One hint a light, per thread: consecutive shadow rays of a thread come
     // from neighbouring pixels of one tile. Hints never change a result, so
     // neither thread count nor tile order can show in the image.
@@ -49,7 +51,7 @@ Colour shade_hit(const PreparedScene& scene, const Material& m, const Vec3& poin
         if (!(shadow_distance > 0.0)) continue;
         ++rays;
         if (occluded(geometry, lifted, shadow_direction / shadow_distance, 0.0, shadow_distance,
-                     &hints[light_index]))
+                     &hints[light_index], light_buffers ? &(*light_buffers)[light_index] : nullptr))
             continue;
         // pow(x, 1) is x exactly, and adding a zero term changes nothing: both
         // shortcuts leave every bit as the plain formula would.

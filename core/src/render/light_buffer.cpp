@@ -1,0 +1,219 @@
+#include "render/light_buffer.hpp"
+
+#include "render/prepared_scene.hpp"
+
+#include <tbb/parallel_for.h>
+
+#include <glm/geometric.hpp>
+
+#include <algorithm>
+#include <array>
+#include <cmath>
+#include <numbers>
+
+namespace jt {
+
+namespace {
+
+// Past this many (shape, light) pairs the tables cost more to build than they
+// save, and the BVH's culling beats a cell's long list anyway.
+constexpr std::size_t max_table_work = std::size_t{1} << 16;
+
+// Bounding spheres wider than this many radians, seen from the light, go in
+// every cell rather than being rasterised.
+constexpr double max_cone_angle = 1.2;
+
+// Slack on every angle and cell coordinate: far beyond the rounding of the
+// double computations that decide a direction's cell or a hit, so that a ray
+// on a cell's edge still finds every shape that may block it.
+constexpr double angle_slack = 1e-7;
+constexpr double coordinate_slack = 1e-6;
+
+// On a face of the cube map, the face's axis is the largest component of a
+// unit direction, so it is at least 1/sqrt(3).
+constexpr double min_face_component = 0.57735026918962576 - 1e-6;
+
+struct BoundingSphere {
+    Vec3 center;
+    double radius;
+};
+
+double max_abs(const Vec3& v) {
+    return std::max({std::abs(v.x), std::abs(v.y), std::abs(v.z)});
+}
+
+BoundingSphere bounding_sphere(const TransformedShape& s) {
+    Vec3 lower(s.bounds.lower_x, s.bounds.lower_y, s.bounds.lower_z);
+    Vec3 upper(s.bounds.upper_x, s.bounds.upper_y, s.bounds.upper_z);
+    return {0.5 * (lower + upper), 0.5 * glm::length(upper - lower)};
+}
+
+int resolution_for(std::size_t shapes) {
+    const double r = std::ceil(2.0 * std::sqrt(static_cast<double>(shapes)));
+    return static_cast<int>(std::clamp(r, 8.0, 64.0));
+}
+
+// The cell index along a face edge of coordinate u in [-1, 1].
+int cell_coordinate(double u, int resolution) {
+    double x = (u + 1.0) * 0.5 * resolution;
+    if (!(x > 0.0)) return 0;
+    if (x >= resolution) return resolution - 1;
+    return static_cast<int>(x);
+}
+
+// Face 2k (+axis k) or 2k+1 (-axis k); u and v run along axes k+1 and k+2.
+struct FaceAxes {
+    int k, j, l;
+};
+FaceAxes face_axes(int k) {
+    return {k, (k + 1) % 3, (k + 2) % 3};
+}
+
+// Each cell's cone: its centre direction (face-local, unit) and the cosine and
+// sine of the angle to its farthest corner. The same for all six faces.
+struct CellCone {
+    double u, v, w;  // unit centre direction, w along the face's axis
+    double cos_radius, sin_radius;
+};
+
+std::vector<CellCone> cell_cones(int resolution) {
+    std::vector<CellCone> cones(static_cast<std::size_t>(resolution) * resolution);
+    const double step = 2.0 / resolution;
+    for (int iv = 0; iv < resolution; ++iv)
+        for (int iu = 0; iu < resolution; ++iu) {
+            const double u0 = -1.0 + iu * step, v0 = -1.0 + iv * step;
+            const Vec3 centre = glm::normalize(Vec3(u0 + 0.5 * step, v0 + 0.5 * step, 1.0));
+            double radius = 0.0;
+            for (double du : {0.0, step})
+                for (double dv : {0.0, step}) {
+                    Vec3 corner = glm::normalize(Vec3(u0 + du, v0 + dv, 1.0));
+                    radius = std::max(radius,
+                                      std::acos(std::clamp(glm::dot(centre, corner), -1.0, 1.0)));
+                }
+            radius += angle_slack;
+            cones[static_cast<std::size_t>(iv) * resolution + iu] = {
+                centre.x, centre.y, centre.z, std::cos(radius), std::sin(radius)};
+        }
+    return cones;
+}
+
+// Calls add(cell) for every cell whose cone meets the cone of directions
+// within `angle` of the unit `axis`.
+template <typename Add>
+void rasterise_cone(const Vec3& axis, double angle, int resolution,
+                    const std::vector<CellCone>& cones, Add&& add) {
+    const double cos_angle = std::cos(angle), sin_angle = std::sin(angle);
+    // The range of each component of a direction in the cone.
+    std::array<double, 3> lo{}, hi{};
+    for (int i = 0; i < 3; ++i) {
+        const double theta = std::acos(std::clamp(axis[i], -1.0, 1.0));
+        lo[i] = std::cos(std::min(std::numbers::pi, theta + angle)) - angle_slack;
+        hi[i] = std::cos(std::max(0.0, theta - angle)) + angle_slack;
+    }
+    for (int face = 0; face < 6; ++face) {
+        const auto [k, j, l] = face_axes(face / 2);
+        const double sign = face % 2 == 0 ? 1.0 : -1.0;
+        const double w_lo = std::max(sign > 0 ? lo[k] : -hi[k], min_face_component);
+        const double w_hi = sign > 0 ? hi[k] : -lo[k];
+        if (w_hi < w_lo) continue;
+        // u = d_j / w over the box of components: the extremes are at corners.
+        auto range = [&](int axis_index, int& first, int& last) {
+            const double a = lo[axis_index], b = hi[axis_index];
+            const double low = std::min(a / w_lo, a / w_hi) - coordinate_slack;
+            const double high = std::max(b / w_lo, b / w_hi) + coordinate_slack;
+            first = cell_coordinate(low, resolution);
+            last = cell_coordinate(high, resolution);
+        };
+        int u0, u1, v0, v1;
+        range(j, u0, u1);
+        range(l, v0, v1);
+        const std::size_t face_base = static_cast<std::size_t>(face) * resolution * resolution;
+        for (int iv = v0; iv <= v1; ++iv)
+            for (int iu = u0; iu <= u1; ++iu) {
+                const std::size_t local = static_cast<std::size_t>(iv) * resolution + iu;
+                const CellCone& c = cones[local];
+                // Cones meet when the angle between their axes is at most the
+                // sum of their angles: compare cosines.
+                const double cos_between = c.u * axis[j] + c.v * axis[l] + c.w * sign * axis[k];
+                const double cos_sum = cos_angle * c.cos_radius - sin_angle * c.sin_radius;
+                if (cos_between >= cos_sum - angle_slack) add(face_base + local);
+            }
+    }
+}
+
+}  // namespace
+
+LightBuffer build_light_buffer(const Geometry& geometry, const Vec3& position) {
+    LightBuffer buffer;
+    const std::size_t shapes = geometry.spheres.size() + geometry.shapes.size();
+    if (shapes == 0 || shapes > max_table_work || shapes >= shape_flag) return buffer;
+    const int r = resolution_for(shapes);
+    const std::size_t cells = 6 * static_cast<std::size_t>(r) * r;
+    const std::vector<CellCone> cones = cell_cones(r);
+
+    // (cell, candidate) pairs, then a counting sort by cell that keeps each
+    // cell's candidates in index order.
+    std::vector<std::pair<std::uint32_t, std::uint32_t>> pairs;
+    auto add_shape = [&](const BoundingSphere& b, std::uint32_t candidate) {
+        const Vec3 offset = b.center - position;
+        const double distance = glm::length(offset);
+        const double radius =
+            b.radius * (1.0 + 1e-6) + 1e-7 * (max_abs(b.center) + max_abs(position) + b.radius);
+        const bool everywhere = !(distance > radius) || !std::isfinite(distance) ||
+                                radius / distance > std::sin(max_cone_angle);
+        if (everywhere) {
+            for (std::size_t cell = 0; cell < cells; ++cell)
+                pairs.emplace_back(static_cast<std::uint32_t>(cell), candidate);
+            return;
+        }
+        const double angle = std::asin(radius / distance) + angle_slack;
+        rasterise_cone(offset / distance, angle, r, cones, [&](std::size_t cell) {
+            pairs.emplace_back(static_cast<std::uint32_t>(cell), candidate);
+        });
+    };
+    for (std::uint32_t i = 0; i < geometry.spheres.size(); ++i)
+        add_shape({geometry.spheres[i].center, geometry.spheres[i].radius}, i);
+    for (std::uint32_t i = 0; i < geometry.shapes.size(); ++i)
+        add_shape(bounding_sphere(geometry.shapes[i]), i | shape_flag);
+
+    buffer.resolution = r;
+    buffer.cell_start.assign(cells + 1, 0);
+    for (const auto& [cell, candidate] : pairs) ++buffer.cell_start[cell + 1];
+    for (std::size_t c = 0; c < cells; ++c) buffer.cell_start[c + 1] += buffer.cell_start[c];
+    buffer.candidates.resize(pairs.size());
+    std::vector<std::uint32_t> fill(buffer.cell_start.begin(), buffer.cell_start.end() - 1);
+    for (const auto& [cell, candidate] : pairs) buffer.candidates[fill[cell]++] = candidate;
+    return buffer;
+}
+
+std::optional<std::span<const std::uint32_t>> candidates_toward(const LightBuffer& buffer,
+                                                                const Vec3& direction) {
+    const int r = buffer.resolution;
+    if (r == 0) return std::nullopt;
+    const Vec3 a(std::abs(direction.x), std::abs(direction.y), std::abs(direction.z));
+    int k = 0;
+    if (a.y > a[k]) k = 1;
+    if (a.z > a[k]) k = 2;
+    const double m = a[k];
+    if (!(m > 0.0) || !std::isfinite(a.x + a.y + a.z)) return std::nullopt;
+    const auto [_, j, l] = face_axes(k);
+    const int face = 2 * k + (direction[k] < 0.0 ? 1 : 0);
+    const std::size_t cell =
+        (static_cast<std::size_t>(face) * r + cell_coordinate(direction[l] / m, r)) * r +
+        cell_coordinate(direction[j] / m, r);
+    return std::span(buffer.candidates)
+        .subspan(buffer.cell_start[cell], buffer.cell_start[cell + 1] - buffer.cell_start[cell]);
+}
+
+std::vector<LightBuffer> build_light_buffers(const Geometry& geometry,
+                                             const std::vector<PointLight>& lights) {
+    const std::size_t shapes = geometry.spheres.size() + geometry.shapes.size();
+    if (lights.empty() || shapes == 0 || shapes * lights.size() > max_table_work) return {};
+    std::vector<LightBuffer> buffers(lights.size());
+    tbb::parallel_for(std::size_t{0}, lights.size(), [&](std::size_t i) {
+        buffers[i] = build_light_buffer(geometry, lights[i].position);
+    });
+    return buffers;
+}
+
+}  // namespace jt
