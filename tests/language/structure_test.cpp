@@ -260,6 +260,11 @@ TEST(Structure, BlocksInsideBlocksThatHoldOnlyProperties) {
     EXPECT_EQ(testing::brief("cameras { perspective_camera { bar { } } }"),
               "1:32: error: unexpected block 'bar' in 'perspective_camera', which holds only "
               "properties");
+    EXPECT_EQ(testing::brief("scene { sphere { transform { y { } } } }"),
+              "1:30: error: unexpected block 'y' in 'transform', which holds only properties");
+    EXPECT_EQ(testing::brief("scene { point_light { glow { } } }"),
+              "1:23: error: unexpected block 'glow' in 'point_light', which holds only "
+              "properties");
 }
 
 }  // namespace

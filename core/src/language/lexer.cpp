@@ -46,6 +46,16 @@ bool is_number_char(char c) {
     return has_class(c, number_part);
 }
 
+void set(Token& out, TokenKind kind, std::string_view text, std::size_t offset, std::size_t length,
+         SourcePos pos) {
+    out.kind = kind;
+    out.text = text;
+    out.offset = offset;
+    out.length = length;
+    out.pos = pos;
+    out.number = 0.0;
+}
+
 std::string byte_name(unsigned char c) {
     char buf[8];
     std::snprintf(buf, sizeof buf, "0x%02X", c);
@@ -73,41 +83,52 @@ void Lexer::skip_space_and_comments() {
     }
 }
 
-Token Lexer::next() {
+void Lexer::next(Token& out) {
     skip_space_and_comments();
     while (!sink_.stopped() && at_ < text_.size()) {
         const std::size_t start = at_;
         const char c = text_[start];
         auto single = [&](TokenKind kind) {
             ++at_;
-            return Token{kind, text_.substr(start, 1), start, 1, pos_of(start), 0.0};
+            set(out, kind, text_.substr(start, 1), start, 1, pos_of(start));
         };
         switch (c) {
             case '{':
-                return single(TokenKind::lbrace);
+                single(TokenKind::lbrace);
+                return;
             case '}':
-                return single(TokenKind::rbrace);
+                single(TokenKind::rbrace);
+                return;
             case ':':
-                return single(TokenKind::colon);
+                single(TokenKind::colon);
+                return;
             case ';':
-                return single(TokenKind::semicolon);
+                single(TokenKind::semicolon);
+                return;
             case '<':
-                return single(TokenKind::less);
+                single(TokenKind::less);
+                return;
             case '>':
-                return single(TokenKind::greater);
+                single(TokenKind::greater);
+                return;
             case ',':
-                return single(TokenKind::comma);
+                single(TokenKind::comma);
+                return;
             case '"':
-                return lex_string(start);
+                lex_string(start, out);
+                return;
             default:
                 break;
         }
-        if (is_digit(c) || c == '.' || c == '+' || c == '-') return lex_number(start);
+        if (is_digit(c) || c == '.' || c == '+' || c == '-') {
+            lex_number(start, out);
+            return;
+        }
         if (is_word_start(c)) {
             while (at_ < text_.size() && is_word_char(text_[at_])) ++at_;
-            return Token{TokenKind::word, text_.substr(start, at_ - start),
-                         start,           at_ - start,
-                         pos_of(start),   0.0};
+            set(out, TokenKind::word, text_.substr(start, at_ - start), start, at_ - start,
+                pos_of(start));
+            return;
         }
         auto u = static_cast<unsigned char>(c);
         if (u >= 0x20 && u < 0x7f) {
@@ -120,7 +141,7 @@ Token Lexer::next() {
         while (at_ < text_.size() && (static_cast<unsigned char>(text_[at_]) & 0xC0) == 0x80) ++at_;
         skip_space_and_comments();
     }
-    return Token{TokenKind::end, {}, text_.size(), 0, pos_of(at_), 0.0};
+    set(out, TokenKind::end, {}, text_.size(), 0, pos_of(at_));
 }
 
 namespace {
@@ -181,18 +202,18 @@ NumberScan scan_number(std::string_view s, double& out) {
 
 }  // namespace
 
-Token Lexer::lex_number(std::size_t start) {
+void Lexer::lex_number(std::size_t start, Token& token) {
     const std::size_t n = text_.size();
     while (at_ < n && is_number_char(text_[at_])) ++at_;
     std::string_view run = text_.substr(start, at_ - start);
-    Token token{TokenKind::number, run, start, run.size(), pos_of(start), 0.0};
+    set(token, TokenKind::number, run, start, run.size(), pos_of(start));
     switch (scan_number(run, token.number)) {
         case NumberScan::exact:
-            return token;
+            return;
         case NumberScan::malformed:
             sink_.error(token.pos, "malformed number '" + std::string(run.substr(0, 40)) + "'");
             token.kind = TokenKind::bad_value;
-            return token;
+            return;
         case NumberScan::needs_library:
             break;
     }
@@ -203,10 +224,9 @@ Token Lexer::lex_number(std::size_t start) {
                                    " is out of range (numbers must be finite doubles)");
         token.kind = TokenKind::bad_value;
     }
-    return token;
 }
 
-Token Lexer::lex_string(std::size_t start) {
+void Lexer::lex_string(std::size_t start, Token& out) {
     const SourcePos open = pos_of(start);
     std::size_t i = start + 1;
     const std::size_t n = text_.size();
@@ -214,18 +234,15 @@ Token Lexer::lex_string(std::size_t start) {
         auto u = static_cast<unsigned char>(text_[i]);
         if (u == '"') {
             at_ = i + 1;
-            return Token{TokenKind::string,
-                         text_.substr(start + 1, i - start - 1),
-                         start,
-                         at_ - start,
-                         open,
-                         0.0};
+            set(out, TokenKind::string, text_.substr(start + 1, i - start - 1), start, at_ - start,
+                open);
+            return;
         }
         if (u == '\n' || u == '\r') {
             sink_.error(open, "string is not closed before the end of the line");
             at_ = i;
-            return Token{
-                TokenKind::bad_value, text_.substr(start, i - start), start, i - start, open, 0.0};
+            set(out, TokenKind::bad_value, text_.substr(start, i - start), start, i - start, open);
+            return;
         }
         if (u < 0x20 || u >= 0x7f) {
             sink_.error(open, "a string may hold only printable ASCII characters; byte " +
@@ -234,18 +251,15 @@ Token Lexer::lex_string(std::size_t start) {
             // Resume after the closing quote, or at the end of the line.
             while (i < n && text_[i] != '"' && text_[i] != '\n') ++i;
             at_ = (i < n && text_[i] == '"') ? i + 1 : i;
-            return Token{TokenKind::bad_value,
-                         text_.substr(start, at_ - start),
-                         start,
-                         at_ - start,
-                         open,
-                         0.0};
+            set(out, TokenKind::bad_value, text_.substr(start, at_ - start), start, at_ - start,
+                open);
+            return;
         }
         ++i;
     }
     sink_.error(open, "string is not closed before the end of the file");
     at_ = n;
-    return Token{TokenKind::bad_value, text_.substr(start), start, n - start, open, 0.0};
+    set(out, TokenKind::bad_value, text_.substr(start), start, n - start, open);
 }
 
 std::string describe(const Token& token) {

@@ -7,10 +7,10 @@
 
 #include "jtracer/parser.hpp"
 
-#include "io/huge_pages.hpp"
 #include "language/lexer.hpp"
 #include "language/number_text.hpp"
 #include "language/properties.hpp"
+#include "language/reserve_records.hpp"
 #include "language/suggest.hpp"
 
 #include <algorithm>
@@ -79,19 +79,6 @@ std::size_t property_count_hint(std::string_view text) {
     return std::min(colons, text.size() / 4);
 }
 
-// Reserving an upper bound costs address space only (pages never written are
-// never faulted in), but a strange text may ask for more than a memory limit
-// allows: then the array just grows as it goes.
-// Large arrays are backed by huge pages where the system allows (huge_pages.hpp).
-template <class T>
-void reserve_if_possible(std::vector<T>& records, std::size_t count) {
-    try {
-        records.reserve(count);
-        advise_huge_pages(records);
-    } catch (const std::exception&) {
-    }
-}
-
 class Parser {
   public:
     Parser(std::string_view text, ParseOptions options)
@@ -100,12 +87,15 @@ class Parser {
           primitive_hint_(primitive_count_hint(text)),
           source_map_(options.source_map) {
         if (source_map_) {
-            reserve_if_possible(result_.source.properties, property_count_hint(text));
-            reserve_if_possible(result_.source.children, primitive_hint_);
+            reserve_records(result_.source.properties, property_count_hint(text));
+            reserve_records(result_.source.children, primitive_hint_);
         }
-        cur_ = lexer_.next();
-        next_ = lexer_.next();
+        lexer_.next(*cur_);
+        lexer_.next(*next_);
     }
+
+    Parser(const Parser&) = delete;  // cur_ and next_ point into tokens_
+    Parser& operator=(const Parser&) = delete;
 
     ParseResult run() {
         parse_file();
@@ -115,17 +105,18 @@ class Parser {
     }
 
   private:
+    // The two tokens swap places: the lexer writes the new one in place (lexer.hpp).
     void advance() {
-        cur_ = next_;
-        next_ = lexer_.next();
+        std::swap(cur_, next_);
+        lexer_.next(*next_);
     }
-    bool at(TokenKind kind) const { return cur_.kind == kind; }
+    bool at(TokenKind kind) const { return cur_->kind == kind; }
 
     // --- recovery -------------------------------------------------------
 
     // Skips a brace-balanced group starting at '{', with a counter, not recursion.
     void skip_braced() {
-        const Token open = cur_;
+        const SourcePos open = cur_->pos;
         std::size_t depth = 0;
         do {
             if (at(TokenKind::lbrace)) ++depth;
@@ -133,8 +124,7 @@ class Parser {
             advance();
         } while (depth > 0 && !at(TokenKind::end));
         if (depth > 0) {
-            sink_.error(open.pos,
-                        "this '{' is never closed: expected '}' before the end of the file");
+            sink_.error(open, "this '{' is never closed: expected '}' before the end of the file");
         }
     }
 
@@ -167,16 +157,17 @@ class Parser {
     Value read_vector() {
         Value v;
         v.form = Value::Form::vector;
-        const Token open = cur_;
+        const std::size_t open = cur_->offset;
+        const SourcePos open_pos = cur_->pos;
         advance();
         bool bad = false;
         for (int k = 0; k < 3; ++k) {
             if (k > 0) {
                 if (!at(TokenKind::comma)) {
-                    sink_.error(cur_.pos,
+                    sink_.error(cur_->pos,
                                 "a vector takes three numbers separated by commas, like "
                                 "<0, 1, 0>; expected ',' but got " +
-                                    describe(cur_));
+                                    describe(*cur_));
                     skip_vector();
                     v.form = Value::Form::bad;
                     return v;
@@ -184,11 +175,11 @@ class Parser {
                 advance();
             }
             if (at(TokenKind::number)) {
-                v.vector[k] = cur_.number;
+                v.vector[k] = cur_->number;
             } else if (at(TokenKind::bad_value)) {
                 bad = true;
             } else {
-                sink_.error(cur_.pos, "expected a number in the vector, got " + describe(cur_));
+                sink_.error(cur_->pos, "expected a number in the vector, got " + describe(*cur_));
                 skip_vector();
                 v.form = Value::Form::bad;
                 return v;
@@ -196,17 +187,17 @@ class Parser {
             advance();
         }
         if (!at(TokenKind::greater)) {
-            sink_.error(cur_.pos,
+            sink_.error(cur_->pos,
                         "a vector takes exactly three numbers, like <0, 1, 0>; expected '>' but "
                         "got " +
-                            describe(cur_));
+                            describe(*cur_));
             skip_vector();
             v.form = Value::Form::bad;
             return v;
         }
-        v.span = {static_cast<std::uint32_t>(open.offset),
-                  static_cast<std::uint32_t>(cur_.offset + 1 - open.offset), open.pos};
-        v.end = {cur_.pos.line, cur_.pos.column + 1};
+        v.span = {static_cast<std::uint32_t>(open),
+                  static_cast<std::uint32_t>(cur_->offset + 1 - open), open_pos};
+        v.end = {cur_->pos.line, cur_->pos.column + 1};
         advance();
         if (bad) v.form = Value::Form::bad;
         return v;
@@ -214,7 +205,7 @@ class Parser {
 
     Value read_value() {
         Value v;
-        switch (cur_.kind) {
+        switch (cur_->kind) {
             case TokenKind::less:
                 return read_vector();
             case TokenKind::number:
@@ -232,30 +223,30 @@ class Parser {
             default:
                 return v;  // none; nothing consumed
         }
-        v.number = cur_.number;
-        v.text = cur_.text;
-        v.span = span_of(cur_);
-        v.end = {cur_.pos.line, cur_.pos.column + static_cast<int>(cur_.length)};
+        v.number = cur_->number;
+        v.text = cur_->text;
+        v.span = span_of(*cur_);
+        v.end = {cur_->pos.line, cur_->pos.column + static_cast<int>(cur_->length)};
         advance();
         return v;
     }
 
     // name ':' value ';' -- on success `property` holds it and the ';' is consumed.
     bool read_property(Property& property) {
-        property.name = cur_.text;
-        property.name_span = span_of(cur_);
+        property.name = cur_->text;
+        property.name_span = span_of(*cur_);
         advance();
         if (!at(TokenKind::colon)) {
-            sink_.error(cur_.pos, "expected ':' after '" + std::string(property.name) + "', got " +
-                                      describe(cur_));
+            sink_.error(cur_->pos, "expected ':' after '" + std::string(property.name) + "', got " +
+                                       describe(*cur_));
             skip_statement();
             return false;
         }
         advance();
         property.value = read_value();
         if (property.value.form == Value::Form::none) {
-            sink_.error(cur_.pos, "expected a value after '" + std::string(property.name) +
-                                      ":', got " + describe(cur_));
+            sink_.error(cur_->pos, "expected a value after '" + std::string(property.name) +
+                                       ":', got " + describe(*cur_));
             skip_statement();
             return false;
         }
@@ -278,16 +269,16 @@ class Parser {
 
     // At the block's keyword: consumes it and the '{'. False (recovered) when '{' is missing.
     bool open_block(BlockSource& block) {
-        block.keyword = static_keyword(cur_.text);
-        block.keyword_span = span_of(cur_);
+        block.keyword = static_keyword(cur_->text);
+        block.keyword_span = span_of(*cur_);
         advance();
         if (at(TokenKind::lbrace)) {
-            block.open_brace = static_cast<std::uint32_t>(cur_.offset);
+            block.open_brace = static_cast<std::uint32_t>(cur_->offset);
             advance();
             return true;
         }
-        sink_.error(cur_.pos, "expected '{' after '" + std::string(block.keyword) + "', got " +
-                                  describe(cur_));
+        sink_.error(cur_->pos, "expected '{' after '" + std::string(block.keyword) + "', got " +
+                                   describe(*cur_));
         skip_statement();
         return false;
     }
@@ -316,9 +307,9 @@ class Parser {
     void parse_body(BlockSource& block, std::span<const std::string_view> child_names,
                     OnProperty on_property, OnChild on_child) {
         for (;;) {
-            switch (cur_.kind) {
+            switch (cur_->kind) {
                 case TokenKind::rbrace:
-                    block.close_brace = static_cast<std::uint32_t>(cur_.offset);
+                    block.close_brace = static_cast<std::uint32_t>(cur_->offset);
                     advance();
                     return;
                 case TokenKind::end:
@@ -328,7 +319,7 @@ class Parser {
                                     "the file");
                     return;
                 case TokenKind::word:
-                    if (next_.kind == TokenKind::lbrace || contains(child_names, cur_.text)) {
+                    if (next_->kind == TokenKind::lbrace || contains(child_names, cur_->text)) {
                         on_child();
                     } else {
                         Property property;
@@ -340,9 +331,9 @@ class Parser {
                     skip_statement();
                     break;
                 default:
-                    sink_.error(cur_.pos, "expected a property name or '}' in '" +
-                                              std::string(block.keyword) + "', got " +
-                                              describe(cur_));
+                    sink_.error(cur_->pos, "expected a property name or '}' in '" +
+                                               std::string(block.keyword) + "', got " +
+                                               describe(*cur_));
                     if (at(TokenKind::lbrace)) {
                         skip_braced();
                     } else {
@@ -356,10 +347,10 @@ class Parser {
 
     void unknown_block(std::string_view where, std::span<const std::string_view> allowed) {
         if (allowed.empty()) {
-            sink_.error(cur_.pos, "unexpected block " + quote(cur_.text.substr(0, 40)) + " " +
-                                      std::string(where) + ", which holds only properties");
+            sink_.error(cur_->pos, "unexpected block " + quote(cur_->text.substr(0, 40)) + " " +
+                                       std::string(where) + ", which holds only properties");
         } else {
-            sink_.error(cur_.pos, unknown_name_message("block", cur_.text, where, allowed));
+            sink_.error(cur_->pos, unknown_name_message("block", cur_->text, where, allowed));
         }
         advance();
         if (at(TokenKind::lbrace)) {
@@ -381,26 +372,56 @@ class Parser {
         };
     }
 
+    // Reads a block that holds only properties (render_settings,
+    // perspective_camera, point_light, material, transform) into `target`, from
+    // its keyword to its '}'. False (recovered) when its '{' is missing.
+    template <class Target>
+    bool parse_property_block(BlockSource& block, std::size_t level, Target& target) {
+        if (!open_block(block)) return false;
+        read_properties(block, level, [&](OpenBlock& open) {
+            parse_body(
+                block, kNoBlocks, [&](const Property& p) { reader_.apply(target, open, p); },
+                [&] { block_in_property_block(block); });
+        });
+        return true;
+    }
+
+    void block_in_property_block(const BlockSource& block) {
+        if (block.keyword == "point_light" &&
+            (cur_->text == "material" || cur_->text == "transform")) {
+            sink_.error(cur_->pos, "a point_light takes no '" + std::string(cur_->text) +
+                                       "' block: only sphere, plane and cylinder do");
+            advance();
+            if (at(TokenKind::lbrace)) {
+                skip_braced();
+            } else {
+                skip_statement();
+            }
+            return;
+        }
+        unknown_block("in '" + std::string(block.keyword) + "'", kNoBlocks);
+    }
+
     void parse_file() {
         while (!at(TokenKind::end)) {
-            if (at(TokenKind::word) && cur_.text == "render_settings") {
+            if (at(TokenKind::word) && cur_->text == "render_settings") {
                 parse_render_settings();
-            } else if (at(TokenKind::word) && cur_.text == "cameras") {
+            } else if (at(TokenKind::word) && cur_->text == "cameras") {
                 parse_cameras();
-            } else if (at(TokenKind::word) && cur_.text == "scene") {
+            } else if (at(TokenKind::word) && cur_->text == "scene") {
                 parse_scene();
             } else if (at(TokenKind::word)) {
                 unknown_block("at the top level", kTopBlocks);
             } else if (at(TokenKind::lbrace)) {
-                sink_.error(cur_.pos,
+                sink_.error(cur_->pos,
                             "expected a block name (render_settings, cameras or scene) "
                             "before '{'");
                 skip_braced();
             } else {
                 if (!at(TokenKind::bad_value)) {  // a bad value was reported by the lexer
-                    sink_.error(cur_.pos,
+                    sink_.error(cur_->pos,
                                 "expected a block (render_settings, cameras or scene), got " +
-                                    describe(cur_));
+                                    describe(*cur_));
                 }
                 advance();
             }
@@ -410,12 +431,7 @@ class Parser {
     void parse_render_settings() {
         BlockSource block;
         RenderSettings settings;  // a later block replaces the earlier one whole
-        if (!open_block(block)) return;
-        read_properties(block, 0, [&](OpenBlock& open) {
-            parse_body(
-                block, kNoBlocks, [&](const Property& p) { reader_.apply(settings, open, p); },
-                [&] { unknown_block("in 'render_settings'", kNoBlocks); });
-        });
+        if (!parse_property_block(block, 0, settings)) return;
         if (result_.source.render_settings) {
             sink_.warning(
                 block.keyword_span.pos,
@@ -432,18 +448,13 @@ class Parser {
         BlockSource cameras;
         if (!open_block(cameras)) return;
         parse_body(cameras, kCameraBlocks, only_blocks(cameras, kCameraBlocks), [&] {
-            if (cur_.text != "perspective_camera") {
+            if (cur_->text != "perspective_camera") {
                 unknown_block("in 'cameras'", kCameraBlocks);
                 return;
             }
             BlockSource block;
             Camera camera;
-            if (!open_block(block)) return;
-            read_properties(block, 0, [&](OpenBlock& open) {
-                parse_body(
-                    block, kNoBlocks, [&](const Property& p) { reader_.apply(camera, open, p); },
-                    [&] { unknown_block("in 'perspective_camera'", kNoBlocks); });
-            });
+            if (!parse_property_block(block, 0, camera)) return;
             result_.scene.cameras.push_back(std::move(camera));
             result_.source.cameras.push_back(std::move(block));
         });
@@ -457,21 +468,14 @@ class Parser {
         if (!open_block(block)) return;
         // Only the first scene block gets the hint: it was counted over the whole text.
         std::size_t hint = std::exchange(primitive_hint_, 0);
-        primitives.reserve(hint);
-        advise_huge_pages(primitives);
-        if (source_map_) reserve_if_possible(primitive_sources, hint);
+        reserve_records(primitives, hint);
+        if (source_map_) reserve_records(primitive_sources, hint);
         parse_body(block, kSceneBlocks, only_blocks(block, kSceneBlocks), [&] {
-            std::string_view kind = cur_.text;
+            std::string_view kind = cur_->text;
             if (kind == "point_light") {
                 BlockSource light_block;
                 PointLight light;
-                if (!open_block(light_block)) return;
-                read_properties(light_block, 0, [&](OpenBlock& open) {
-                    parse_body(
-                        light_block, kNoBlocks,
-                        [&](const Property& p) { reader_.apply(light, open, p); },
-                        [&] { light_child(); });
-                });
+                if (!parse_property_block(light_block, 0, light)) return;
                 lights.push_back(light);
                 light_sources.push_back(std::move(light_block));
             } else if (kind == "sphere" || kind == "plane" || kind == "cylinder") {
@@ -501,21 +505,6 @@ class Parser {
         result_.source.scene = std::move(block);
     }
 
-    void light_child() {
-        if (cur_.text == "material" || cur_.text == "transform") {
-            sink_.error(cur_.pos, "a point_light takes no '" + std::string(cur_.text) +
-                                      "' block: only sphere, plane and cylinder do");
-            advance();
-            if (at(TokenKind::lbrace)) {
-                skip_braced();
-            } else {
-                skip_statement();
-            }
-            return;
-        }
-        unknown_block("in 'point_light'", kNoBlocks);
-    }
-
     // A primitive's children go straight to the scene's array of child records:
     // nothing else is added there until the primitive's '}', so they stay together.
     void parse_primitive_body(Primitive& primitive, OpenBlock& open) {
@@ -526,33 +515,17 @@ class Parser {
             block, kPrimitiveBlocks,
             [&](const Property& p) { reader_.apply(primitive.shape, open, p); },
             [&] {
-                if (cur_.text == "material") {
-                    BlockSource child;
-                    if (!open_block(child)) return;
-                    read_properties(child, 1, [&](OpenBlock& open_child) {
-                        parse_body(
-                            child, kNoBlocks,
-                            [&](const Property& p) {
-                                reader_.apply(primitive.material, open_child, p);
-                            },
-                            [&] { unknown_block("in 'material'", kNoBlocks); });
-                    });
-                    if (source_map_) children.push_back(child);
-                } else if (cur_.text == "transform") {
-                    BlockSource child;
-                    if (!open_block(child)) return;
-                    read_properties(child, 1, [&](OpenBlock& open_child) {
-                        parse_body(
-                            child, kNoBlocks,
-                            [&](const Property& p) {
-                                reader_.apply(primitive.transforms, open_child, p);
-                            },
-                            [&] { unknown_block("in 'transform'", kNoBlocks); });
-                    });
-                    if (source_map_) children.push_back(child);
+                BlockSource child;
+                bool opened;
+                if (cur_->text == "material") {
+                    opened = parse_property_block(child, 1, primitive.material);
+                } else if (cur_->text == "transform") {
+                    opened = parse_property_block(child, 1, primitive.transforms);
                 } else {
                     unknown_block("in '" + std::string(block.keyword) + "'", kPrimitiveBlocks);
+                    return;
                 }
+                if (opened && source_map_) children.push_back(child);
             });
         block.children = {static_cast<std::uint32_t>(first_child),
                           static_cast<std::uint32_t>(children.size() - first_child)};
@@ -561,7 +534,9 @@ class Parser {
     DiagnosticSink sink_;
     Lexer lexer_;
     PropertyReader reader_;
-    Token cur_, next_;
+    std::array<Token, 2> tokens_;
+    Token* cur_ = &tokens_[0];   // the token at hand
+    Token* next_ = &tokens_[1];  // one token of lookahead
     ParseResult result_;
     std::size_t primitive_hint_;
     bool source_map_;  // false: records are still made (for messages) but not kept
