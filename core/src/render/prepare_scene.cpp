@@ -165,6 +165,7 @@ std::shared_ptr<const Geometry> build_geometry(const Scene& scene, const Geometr
         s.bounds.upper_x += static_cast<float>(g->bounds_slack);
         s.bounds.upper_y += static_cast<float>(g->bounds_slack);
         s.bounds.upper_z += static_cast<float>(g->bounds_slack);
+        add_bounding_sphere(s);  // for the direction tables' lists, which have no boxes
     }
 
     if (!embree_device()) throw std::runtime_error("cannot start Embree (rtcNewDevice failed)");
@@ -214,10 +215,10 @@ std::shared_ptr<const PreparedScene> prepare_scene(const Scene& scene,
     }
     prepared->lights = scene.lights;
     if (previous && previous->geometry == prepared->geometry && previous->lights == scene.lights)
-        prepared->light_buffers = previous->light_buffers;
+        prepared->light_tables = previous->light_tables;
     else
-        prepared->light_buffers = std::make_shared<const std::vector<LightBuffer>>(
-            build_light_buffers(*prepared->geometry, scene.lights));
+        prepared->light_tables = std::make_shared<const std::vector<DirectionTable>>(
+            build_light_tables(*prepared->geometry, scene.lights));
     prepared->cameras = scene.cameras;
     prepared->settings = scene.settings;
     return prepared;

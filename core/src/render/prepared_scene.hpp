@@ -9,7 +9,7 @@
 #include "geometry/affine.hpp"
 #include "jtracer/render_job.hpp"
 #include "jtracer/scene.hpp"
-#include "render/light_buffer.hpp"
+#include "render/direction_table.hpp"
 
 #include <embree3/rtcore.h>
 
@@ -38,8 +38,8 @@ struct TransformedShape {
     ShapeKind kind = ShapeKind::sphere;
     std::uint32_t source = 0;
     RTCBounds bounds{};
-    // A sphere around the padded box, for rejecting rays cheaply when there is
-    // no BVH to do it.
+    // A sphere around the padded box, for rejecting rays cheaply when no BVH
+    // walk does it (a few shapes, a direction table's list).
     Vec3 bounding_center{0.0};
     double bounding_radius_sq = 0.0;
 };
@@ -89,7 +89,7 @@ struct PreparedScene {
     std::vector<PointLight> lights;
     // Shadow-ray candidates, one table a light (none when no table pays);
     // shared with the previous PreparedScene when geometry and lights are.
-    std::shared_ptr<const std::vector<LightBuffer>> light_buffers;
+    std::shared_ptr<const std::vector<DirectionTable>> light_tables;
     std::vector<Camera> cameras;
     RenderSettings settings;
 };

@@ -18,7 +18,7 @@ namespace {
 constexpr std::uint32_t no_source = std::numeric_limits<std::uint32_t>::max();
 constexpr float float_infinity = std::numeric_limits<float>::infinity();
 
-// A light buffer cell with more shapes than this leaves the ray to the BVH:
+// A direction table cell with more shapes than this leaves the ray to the BVH:
 // testing each costs more than Embree's walk past most of them.
 constexpr std::size_t max_cell_candidates = 16;
 
@@ -188,7 +188,7 @@ bool occluded_by_testing_all(const Geometry& g, const Vec3& origin, const Vec3& 
     return false;
 }
 
-// The walk of a light buffer's cell: the shapes in it, exactly tested.
+// The walk of a direction table's cell: the shapes in it, exactly tested.
 bool occluded_by_candidates(const Geometry& g, std::span<const std::uint32_t> candidates,
                             const Vec3& origin, const Vec3& direction, double t_min, double t_max,
                             OccluderHint& blocker) {
@@ -196,7 +196,9 @@ bool occluded_by_candidates(const Geometry& g, std::span<const std::uint32_t> ca
     for (std::uint32_t candidate : candidates) {
         const std::uint32_t i = candidate & ~shape_flag;
         if (candidate & shape_flag) {
-            if (shape_distance(g.shapes[i], origin, direction, t_min, t_max, part) != no_hit) {
+            const TransformedShape& s = g.shapes[i];
+            if (!misses_bounds(s, origin, direction) &&
+                shape_distance(s, origin, direction, t_min, t_max, part) != no_hit) {
                 blocker = {OccluderHint::Set::shape, i};
                 return true;
             }
@@ -281,7 +283,7 @@ void shape_occluded(const RTCOccludedFunctionNArguments* args) {
 }
 
 bool closest_hit(const Geometry& geometry, const Vec3& origin, const Vec3& direction, double t_min,
-                 Hit& hit) {
+                 Hit& hit, const DirectionTable* around_origin) {
     ClosestQuery q;
     q.geometry = &geometry;
     q.origin = origin;
@@ -305,7 +307,16 @@ bool closest_hit(const Geometry& geometry, const Vec3& origin, const Vec3& direc
         }
     }
 
-    if (!geometry.bvh) {
+    std::optional<std::span<const std::uint32_t>> listed;
+    if (around_origin) listed = shapes_toward(*around_origin, direction);
+    if (listed && (!geometry.bvh || listed->size() <= max_cell_candidates)) {
+        for (std::uint32_t shape : *listed) {
+            if (!(shape & shape_flag))
+                offer_sphere(q, shape);
+            else if (!misses_bounds(geometry.shapes[shape & ~shape_flag], origin, direction))
+                offer_shape(q, shape & ~shape_flag);
+        }
+    } else if (!geometry.bvh) {
         closest_by_testing_all(q);
     } else {
         rtcInitIntersectContext(&q.context);
@@ -335,7 +346,7 @@ bool closest_hit(const Geometry& geometry, const Vec3& origin, const Vec3& direc
 }
 
 bool occluded(const Geometry& geometry, const Vec3& origin, const Vec3& direction, double t_min,
-              double t_max, OccluderHint* hint, const LightBuffer* light) {
+              double t_max, OccluderHint* hint, const DirectionTable* light) {
     if (hint && hinted_blocks(geometry, *hint, origin, direction, t_min, t_max)) return true;
     OccluderHint blocker;
     bool blocked = false;
@@ -347,7 +358,7 @@ bool occluded(const Geometry& geometry, const Vec3& origin, const Vec3& directio
         }
     }
     std::optional<std::span<const std::uint32_t>> candidates;
-    if (!blocked && light) candidates = candidates_toward(*light, -direction);
+    if (!blocked && light) candidates = shapes_toward(*light, -direction);
     if (candidates && (!geometry.bvh || candidates->size() <= max_cell_candidates)) {
         blocked =
             occluded_by_candidates(geometry, *candidates, origin, direction, t_min, t_max, blocker);

@@ -21,8 +21,10 @@ struct Hit {
 // Nearest surface along origin + t * direction with t in (t_min, infinity).
 // Equal distances resolve to the lower primitive index, so that the answer
 // never depends on BVH traversal order.
+// With `around_origin`, a table built around `origin`, tests the shapes of
+// the ray's cell instead of walking the BVH when they are few.
 bool closest_hit(const Geometry& geometry, const Vec3& origin, const Vec3& direction, double t_min,
-                 Hit& hit);
+                 Hit& hit, const DirectionTable* around_origin = nullptr);
 
 // The surface that blocked a previous shadow ray: shadow rays toward one light
 // from neighbouring points are mostly blocked by the same surface, and testing
@@ -40,7 +42,7 @@ struct OccluderHint {
 // tests the shapes of the ray's cell instead of walking the BVH when they are
 // few: the answer is the same.
 bool occluded(const Geometry& geometry, const Vec3& origin, const Vec3& direction, double t_min,
-              double t_max, OccluderHint* hint = nullptr, const LightBuffer* light = nullptr);
+              double t_max, OccluderHint* hint = nullptr, const DirectionTable* light = nullptr);
 
 // Embree callbacks for the two user geometries; prepare_scene registers them.
 void sphere_bounds(const RTCBoundsFunctionArguments* args);

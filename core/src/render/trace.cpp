@@ -29,8 +29,8 @@ Colour shade_hit(const PreparedScene& scene, const Material& m, const Vec3& poin
                  const Vec3& lifted, const Vec3& normal, const Vec3& view, std::uint64_t& rays) {
     Colour c = scene.settings.ambient_light * m.ambient * m.pigment;
     const Geometry& geometry = *scene.geometry;
-    const std::vector<LightBuffer>* light_buffers =
-        scene.light_buffers && !scene.light_buffers->empty() ? scene.light_buffers.get() : nullptr;
+    const std::vector<DirectionTable>* light_tables =
+        scene.light_tables && !scene.light_tables->empty() ? scene.light_tables.get() : nullptr;
     // One hint a light, per thread: consecutive shadow rays of a thread come
     // from neighbouring pixels of one tile. Hints never change a result, so
     // neither thread count nor tile order can show in the image.
@@ -51,7 +51,7 @@ Colour shade_hit(const PreparedScene& scene, const Material& m, const Vec3& poin
         if (!(shadow_distance > 0.0)) continue;
         ++rays;
         if (occluded(geometry, lifted, shadow_direction / shadow_distance, 0.0, shadow_distance,
-                     &hints[light_index], light_buffers ? &(*light_buffers)[light_index] : nullptr))
+                     &hints[light_index], light_tables ? &(*light_tables)[light_index] : nullptr))
             continue;
         // pow(x, 1) is x exactly, and adding a zero term changes nothing: both
         // shortcuts leave every bit as the plain formula would.
@@ -73,7 +73,7 @@ double surface_offset(const Vec3& origin, const Vec3& point, double distance) {
 }
 
 Colour trace_ray(const PreparedScene& scene, const Vec3& origin, const Vec3& unit_direction,
-                 double t_min, std::uint64_t& rays) {
+                 double t_min, std::uint64_t& rays, const DirectionTable* around_origin) {
     const Geometry& geometry = *scene.geometry;
     const int depth_limit = std::clamp(scene.settings.recurse_depth, 0, max_depth);
     // c_k = local_k + reflection_k * c_(k+1): kept per bounce and folded back in
@@ -90,7 +90,8 @@ Colour trace_ray(const PreparedScene& scene, const Vec3& origin, const Vec3& uni
         reflection[depth] = 0.0;
         Hit hit;
         ++rays;
-        if (!finite(o) || !finite(d) || !closest_hit(geometry, o, d, t_lower, hit)) {
+        const DirectionTable* table = depth == 0 ? around_origin : nullptr;
+        if (!finite(o) || !finite(d) || !closest_hit(geometry, o, d, t_lower, hit, table)) {
             local[depth] = scene.settings.background;
             break;
         }

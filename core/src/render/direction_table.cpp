@@ -1,4 +1,4 @@
-#include "render/light_buffer.hpp"
+#include "render/direction_table.hpp"
 
 #include "render/prepared_scene.hpp"
 
@@ -15,8 +15,9 @@ namespace jt {
 
 namespace {
 
-// Past this many (shape, light) pairs the tables cost more to build than they
-// save, and the BVH's culling beats a cell's long list anyway.
+// Past this many shapes (in a table, or in the tables of all lights) the
+// tables cost more to build than they save, and the BVH's culling beats a
+// cell's long list anyway.
 constexpr std::size_t max_table_work = std::size_t{1} << 16;
 
 // Bounding spheres wider than this many radians, seen from the light, go in
@@ -48,10 +49,18 @@ BoundingSphere bounding_sphere(const TransformedShape& s) {
     return {0.5 * (lower + upper), 0.5 * glm::length(upper - lower)};
 }
 
-int resolution_for(std::size_t shapes) {
-    const double r = std::ceil(2.0 * std::sqrt(static_cast<double>(shapes)));
-    return static_cast<int>(std::clamp(r, 8.0, 64.0));
+}  // namespace
+
+int table_resolution(std::size_t shapes, bool for_camera) {
+    // Some 24 cells a shape (six faces of (2 sqrt N)^2), so that most cells list
+    // none or one. The caps were measured on the benchmark scenes: finer tables
+    // cost more to build than they save, except around a camera, whose rays
+    // are spread over the whole image rather than toward a few shapes.
+    const double per_edge = std::ceil(2.0 * std::sqrt(static_cast<double>(shapes)));
+    return static_cast<int>(std::clamp(per_edge, 8.0, for_camera ? 128.0 : 64.0));
 }
+
+namespace {
 
 // The cell index along a face edge of coordinate u in [-1, 1].
 int cell_coordinate(double u, int resolution) {
@@ -143,11 +152,12 @@ void rasterise_cone(const Vec3& axis, double angle, int resolution,
 
 }  // namespace
 
-LightBuffer build_light_buffer(const Geometry& geometry, const Vec3& position) {
-    LightBuffer buffer;
+DirectionTable build_direction_table(const Geometry& geometry, const Vec3& position,
+                                     int resolution) {
+    DirectionTable table;
     const std::size_t shapes = geometry.spheres.size() + geometry.shapes.size();
-    if (shapes == 0 || shapes > max_table_work || shapes >= shape_flag) return buffer;
-    const int r = resolution_for(shapes);
+    if (shapes == 0 || shapes > max_table_work || resolution < 1) return table;
+    const int r = resolution;
     const std::size_t cells = 6 * static_cast<std::size_t>(r) * r;
     const std::vector<CellCone> cones = cell_cones(r);
 
@@ -176,19 +186,19 @@ LightBuffer build_light_buffer(const Geometry& geometry, const Vec3& position) {
     for (std::uint32_t i = 0; i < geometry.shapes.size(); ++i)
         add_shape(bounding_sphere(geometry.shapes[i]), i | shape_flag);
 
-    buffer.resolution = r;
-    buffer.cell_start.assign(cells + 1, 0);
-    for (const auto& [cell, candidate] : pairs) ++buffer.cell_start[cell + 1];
-    for (std::size_t c = 0; c < cells; ++c) buffer.cell_start[c + 1] += buffer.cell_start[c];
-    buffer.candidates.resize(pairs.size());
-    std::vector<std::uint32_t> fill(buffer.cell_start.begin(), buffer.cell_start.end() - 1);
-    for (const auto& [cell, candidate] : pairs) buffer.candidates[fill[cell]++] = candidate;
-    return buffer;
+    table.resolution = r;
+    table.cell_start.assign(cells + 1, 0);
+    for (const auto& [cell, candidate] : pairs) ++table.cell_start[cell + 1];
+    for (std::size_t c = 0; c < cells; ++c) table.cell_start[c + 1] += table.cell_start[c];
+    table.shapes.resize(pairs.size());
+    std::vector<std::uint32_t> fill(table.cell_start.begin(), table.cell_start.end() - 1);
+    for (const auto& [cell, candidate] : pairs) table.shapes[fill[cell]++] = candidate;
+    return table;
 }
 
-std::optional<std::span<const std::uint32_t>> candidates_toward(const LightBuffer& buffer,
-                                                                const Vec3& direction) {
-    const int r = buffer.resolution;
+std::optional<std::span<const std::uint32_t>> shapes_toward(const DirectionTable& table,
+                                                            const Vec3& direction) {
+    const int r = table.resolution;
     if (r == 0) return std::nullopt;
     const Vec3 a(std::abs(direction.x), std::abs(direction.y), std::abs(direction.z));
     int k = 0;
@@ -201,19 +211,20 @@ std::optional<std::span<const std::uint32_t>> candidates_toward(const LightBuffe
     const std::size_t cell =
         (static_cast<std::size_t>(face) * r + cell_coordinate(direction[l] / m, r)) * r +
         cell_coordinate(direction[j] / m, r);
-    return std::span(buffer.candidates)
-        .subspan(buffer.cell_start[cell], buffer.cell_start[cell + 1] - buffer.cell_start[cell]);
+    return std::span(table.shapes)
+        .subspan(table.cell_start[cell], table.cell_start[cell + 1] - table.cell_start[cell]);
 }
 
-std::vector<LightBuffer> build_light_buffers(const Geometry& geometry,
-                                             const std::vector<PointLight>& lights) {
+std::vector<DirectionTable> build_light_tables(const Geometry& geometry,
+                                               const std::vector<PointLight>& lights) {
     const std::size_t shapes = geometry.spheres.size() + geometry.shapes.size();
     if (lights.empty() || shapes == 0 || shapes * lights.size() > max_table_work) return {};
-    std::vector<LightBuffer> buffers(lights.size());
+    std::vector<DirectionTable> tables(lights.size());
     tbb::parallel_for(std::size_t{0}, lights.size(), [&](std::size_t i) {
-        buffers[i] = build_light_buffer(geometry, lights[i].position);
+        tables[i] =
+            build_direction_table(geometry, lights[i].position, table_resolution(shapes, false));
     });
-    return buffers;
+    return tables;
 }
 
 }  // namespace jt

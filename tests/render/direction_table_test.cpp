@@ -1,7 +1,7 @@
-// Light buffers only narrow the search: every shape that blocks a shadow ray
+// Light tables only narrow the search: every shape that blocks a shadow ray
 // must be among its cell's candidates, and occlusion answers must not change.
 
-#include "render/light_buffer.hpp"
+#include "render/direction_table.hpp"
 #include "geometry/affine.hpp"
 #include "geometry/intersect.hpp"
 #include "render/prepared_scene.hpp"
@@ -60,8 +60,8 @@ void check_buffers(int count, unsigned seed) {
     std::uniform_real_distribution<double> u(-9.0, 9.0), unit(-1.0, 1.0);
     int blocked = 0, open = 0;
     for (Vec3 light : {Vec3{0, 20, 0}, Vec3{0.3, 0.2, -0.1}, Vec3{-7, 3, 8}, Vec3{5, -1, 2}}) {
-        LightBuffer buffer = build_light_buffer(g, light);
-        ASSERT_GT(buffer.resolution, 0);
+        DirectionTable table = build_direction_table(g, light, table_resolution(count, false));
+        ASSERT_GT(table.resolution, 0);
         for (int i = 0; i < 6000; ++i) {
             Vec3 origin{u(rng), u(rng), u(rng)};
             if (i % 2 == 1 && !g.spheres.empty()) {
@@ -75,7 +75,7 @@ void check_buffers(int count, unsigned seed) {
             Vec3 to_light = light - origin;
             double distance = glm::length(to_light);
             Vec3 d = to_light / distance;
-            auto candidates = candidates_toward(buffer, -d);
+            auto candidates = shapes_toward(table, -d);
             ASSERT_TRUE(candidates);
             for (std::uint32_t c = 0; c < g.spheres.size() + g.shapes.size(); ++c) {
                 std::uint32_t candidate =
@@ -87,7 +87,7 @@ void check_buffers(int count, unsigned seed) {
                     << "ray " << i << " blocked by " << c << " missing from its cell";
             }
             OccluderHint hint;
-            bool with = occluded(g, origin, d, 0.0, distance, &hint, &buffer);
+            bool with = occluded(g, origin, d, 0.0, distance, &hint, &table);
             ASSERT_EQ(with, occluded(g, origin, d, 0.0, distance)) << "ray " << i;
             (with ? blocked : open)++;
         }
@@ -96,15 +96,55 @@ void check_buffers(int count, unsigned seed) {
     EXPECT_GT(open, 1000);
 }
 
-TEST(LightBuffer, HoldsEveryBlockerWithBvh) {
+TEST(DirectionTable, HoldsEveryBlockerWithBvh) {
     check_buffers(300, 11);
 }
 
-TEST(LightBuffer, HoldsEveryBlockerWithoutBvh) {
+TEST(DirectionTable, HoldsEveryBlockerWithoutBvh) {
     check_buffers(7, 12);
 }
 
-TEST(LightBuffer, CellsAreFewAndSmallForSparseShapes) {
+// Around a camera: the first hit through the table is the BVH's, to the bit,
+// for rays all over the sphere of directions and rays grazing silhouettes.
+void check_camera_table(int count, unsigned seed) {
+    auto prepared = prepare_scene(crowd(count, seed));
+    const Geometry& g = *prepared->geometry;
+    std::mt19937 rng(seed + 2);
+    std::uniform_real_distribution<double> unit(-1.0, 1.0);
+    for (Vec3 eye : {Vec3{0, 2, 15}, Vec3{0.5, -0.3, 0.2}}) {
+        DirectionTable table = build_direction_table(g, eye, table_resolution(count, true));
+        ASSERT_GT(table.resolution, 0);
+        int hits = 0;
+        for (int i = 0; i < 20000; ++i) {
+            Vec3 d = glm::normalize(Vec3{unit(rng), unit(rng), unit(rng)});
+            if (i % 2 == 1 && !g.spheres.empty()) {
+                const WorldSphere& s = g.spheres[rng() % g.spheres.size()];
+                Vec3 axis = glm::normalize(s.center - eye);
+                Vec3 side = glm::normalize(glm::cross(axis, d));
+                d = glm::normalize(s.center + s.radius * (1.0 + 1e-12 * unit(rng)) * side - eye);
+            }
+            Hit expected, actual;
+            bool hit = closest_hit(g, eye, d, 0.0, expected);
+            ASSERT_EQ(closest_hit(g, eye, d, 0.0, actual, &table), hit) << "ray " << i;
+            if (!hit) continue;
+            ++hits;
+            ASSERT_EQ(actual.t, expected.t) << "ray " << i;
+            ASSERT_EQ(actual.source, expected.source) << "ray " << i;
+            ASSERT_EQ(actual.normal, expected.normal) << "ray " << i;
+        }
+        EXPECT_GT(hits, 2000);
+    }
+}
+
+TEST(DirectionTable, FirstHitsAroundACameraWithBvh) {
+    check_camera_table(300, 21);
+}
+
+TEST(DirectionTable, FirstHitsAroundACameraWithoutBvh) {
+    check_camera_table(7, 22);
+}
+
+TEST(DirectionTable, CellsAreFewAndSmallForSparseShapes) {
     // 64 small spheres on a floor seen from a light above: most cells list none
     // or one, which is what makes the table worth its building.
     Scene scene;
@@ -112,36 +152,37 @@ TEST(LightBuffer, CellsAreFewAndSmallForSparseShapes) {
         for (int z = 0; z < 8; ++z)
             scene.primitives.push_back(sphere({2.0 * x - 7, 0.6, 2.0 * z - 7}, 0.6));
     auto prepared = prepare_scene(scene);
-    LightBuffer buffer = build_light_buffer(*prepared->geometry, {0, 10, 4});
-    ASSERT_GT(buffer.resolution, 0);
-    const std::size_t cells = buffer.cell_start.size() - 1;
+    DirectionTable table =
+        build_direction_table(*prepared->geometry, {0, 10, 4}, table_resolution(64, false));
+    ASSERT_GT(table.resolution, 0);
+    const std::size_t cells = table.cell_start.size() - 1;
     std::size_t most = 0, empty = 0;
     for (std::size_t c = 0; c < cells; ++c) {
-        const std::size_t listed = buffer.cell_start[c + 1] - buffer.cell_start[c];
+        const std::size_t listed = table.cell_start[c + 1] - table.cell_start[c];
         most = std::max(most, listed);
         empty += listed == 0;
     }
     EXPECT_LE(most, 4u);
     EXPECT_GT(empty, cells * 3 / 4);
     // Up, away from the floor: nothing to test.
-    auto up = candidates_toward(buffer, {0.1, 1.0, 0.2});
+    auto up = shapes_toward(table, {0.1, 1.0, 0.2});
     ASSERT_TRUE(up);
     EXPECT_TRUE(up->empty());
     // Toward one sphere's centre: that sphere, and at most a neighbour.
-    auto toward = candidates_toward(buffer, Vec3{1, 0.6, 1} - Vec3{0, 10, 4});
+    auto toward = shapes_toward(table, Vec3{1, 0.6, 1} - Vec3{0, 10, 4});
     ASSERT_TRUE(toward);
     EXPECT_GE(toward->size(), 1u);
     EXPECT_LE(toward->size(), 2u);
     // A zero direction cannot pick a cell.
-    EXPECT_FALSE(candidates_toward(buffer, {0, 0, 0}));
+    EXPECT_FALSE(shapes_toward(table, {0, 0, 0}));
 }
 
-TEST(LightBuffer, NoneWhenTheTablesWouldCostMoreThanTheySave) {
+TEST(DirectionTable, NoneWhenTheTablesWouldCostMoreThanTheySave) {
     auto prepared = prepare_scene(crowd(300, 13));
     std::vector<PointLight> lights(300, PointLight{{0, 20, 0}, Colour(1.0)});
-    EXPECT_TRUE(build_light_buffers(*prepared->geometry, lights).empty());
+    EXPECT_TRUE(build_light_tables(*prepared->geometry, lights).empty());
     lights.resize(4);
-    EXPECT_EQ(build_light_buffers(*prepared->geometry, lights).size(), 4u);
+    EXPECT_EQ(build_light_tables(*prepared->geometry, lights).size(), 4u);
 }
 
 }  // namespace
