@@ -1,9 +1,10 @@
 // How long the viewer takes to show something after the user acts: from an
 // open (in a new viewer: nothing prepared yet), a reload, a material edit or a
-// camera change being requested to the first preview pass (1/8 resolution) of
-// the new render being in the texture.
+// camera change being requested to the first preview pass (1/16 or 1/8
+// resolution) of the new render being in the texture.
 //
-//   viewer_latency [--runs N] [--pace HZ] [--scene file.jts] [--size WxH]
+//   viewer_latency [--runs N] [--pace HZ] [--no-wait] [--render-priority-normal]
+//                  [--steps] [--scene file.jts] [--size WxH]
 //
 // Runs the viewer's own code (loader thread, AppState, frame loop, render
 // controller, presenter) in an OSMesa context, as the tests do. Each event is
@@ -11,9 +12,15 @@
 // the edit in), the first pass rendered by the core, and the first pass in the
 // texture (the frame that fetched and uploaded it, after glFinish). Frames are
 // paced at 60 per second, as the window's vsync paces them (--pace 0: back to
-// back), so the last figure includes up to one frame interval. OSMesa draws in
-// software what a GPU draws in a window: it gets one thread (LP_NUM_THREADS=1
-// unless set), so that it takes as little as possible from the render.
+// back), so the last figure includes up to one frame interval. Between frames
+// the loop sleeps while the window's loop would (waiting_for_workers: a load or
+// a first pass under way) until the loader or the render wakes it, as the
+// window does with glfwPostEmptyEvent (--no-wait: a frame every tick, as the
+// window did before). The render runs below the frames' priority, as in the
+// viewer (--render-priority-normal: at the same). --steps adds when each step
+// inside was reached. OSMesa draws in software what a GPU draws in a window:
+// it gets one thread (LP_NUM_THREADS=1 unless set), so that it takes as little
+// as possible from the render.
 
 #include "app_actions.hpp"
 #include "gl/gl.hpp"
@@ -23,6 +30,7 @@
 
 #include <algorithm>
 #include <chrono>
+#include <cmath>
 #include <cstdio>
 #include <cstdlib>
 #include <cstring>
@@ -42,29 +50,62 @@ using namespace jt;
 using namespace jt::view;
 using Clock = std::chrono::steady_clock;
 
+// Milliseconds from the user's action; NaN for a step the event does not have.
 struct Timing {
-    double started_ms = 0;   // the render of the new scene was started
-    double rendered_ms = 0;  // the core finished the first pass
-    double shown_ms = 0;     // the first pass is in the texture
+    // Loads only: the loader thread's steps.
+    double load_started_ms = NAN, read_ms = NAN, parsed_ms = NAN, validated_ms = NAN,
+           taken_ms = NAN;     // taken: the frame took the finished load in
+    double started_ms = 0;     // the frame that started the render ended
+    double start_call_ms = 0;  // inside that frame, the render was started
+    double prepared_ms = 0;    // the render thread prepared the scene and made the job
+    double first_pass_ms = 0;  // the render thread finished the first pass
+    double rendered_ms = 0;    // the start of the frame that saw the first pass done
+    double shown_ms = 0;       // the first pass is in the texture
 };
 
 double ms_since(Clock::time_point t0) {
     return std::chrono::duration<double, std::milli>(Clock::now() - t0).count();
 }
 
+double ms_between(Clock::time_point t0, Clock::time_point t) {
+    return std::chrono::duration<double, std::milli>(t - t0).count();
+}
+
+// The steps the viewer recorded, for the render (and load) that answered.
+void add_steps(Timing& timing, const AppState& state, Clock::time_point t0, bool load) {
+    const RunTimeline run = state.renderer.timeline();
+    timing.start_call_ms = ms_between(t0, run.started);
+    if (run.prepared) timing.prepared_ms = ms_between(t0, *run.prepared);
+    if (run.first_pass) timing.first_pass_ms = ms_between(t0, *run.first_pass);
+    if (!load) return;
+    const LoadTimes& l = state.last_load_times;
+    timing.load_started_ms = ms_between(t0, l.started);
+    timing.read_ms = ms_between(t0, l.read);
+    timing.parsed_ms = ms_between(t0, l.parsed);
+    timing.validated_ms = ms_between(t0, l.validated);
+    timing.taken_ms = ms_between(t0, l.taken);
+}
+
 // Draws frames from `t0` until the first pass of the render answering the
 // current scene is in the texture.
 double frame_interval_ms = 1000.0 / 60.0;
 
-// Waits for the next frame, as a swap with vsync would.
-void pace(Clock::time_point frame_start) {
+bool wait_for_workers = true;
+bool render_in_background = true;  // ViewerConfig's default
+
+// Waits for the next frame: as a swap with vsync would, then as the window's
+// event loop does (main.cpp) while a load or a first pass is under way.
+void pace(const AppState& state, Clock::time_point frame_start) {
     if (frame_interval_ms > 0)
         std::this_thread::sleep_until(
             frame_start + std::chrono::microseconds(static_cast<long>(frame_interval_ms * 1000)));
+    const std::uint64_t seen = state.wakeup.count();
+    if (wait_for_workers && waiting_for_workers(state))
+        state.wakeup.wait(seen, Clock::now() + std::chrono::milliseconds(50));
 }
 
 Timing frames_until_first_pass(HeadlessViewer& viewer, AppState& state, Clock::time_point t0,
-                               std::uint64_t jobs_before) {
+                               std::uint64_t jobs_before, bool load = false) {
     Timing timing;
     const auto deadline = t0 + std::chrono::seconds(60);
     for (auto frame_start = t0;; frame_start = Clock::now()) {
@@ -79,9 +120,10 @@ Timing frames_until_first_pass(HeadlessViewer& viewer, AppState& state, Clock::t
             timing.started_ms = ms_since(t0);  // this frame started it
         if (first_pass_done) {
             timing.shown_ms = ms_since(t0);
+            add_steps(timing, state, t0, load);
             return timing;
         }
-        pace(frame_start);
+        pace(state, frame_start);
         if (Clock::now() > deadline) {
             std::fprintf(stderr, "viewer_latency: no first pass within 60 s (%s)\n",
                          state.message.c_str());
@@ -95,16 +137,28 @@ struct Series {
     std::vector<Timing> runs;
 };
 
-void print(const Series& s) {
+void print(const Series& s, bool steps) {
     auto stats = [&](double Timing::*field, const char* label) {
         std::vector<double> v;
-        for (const Timing& t : s.runs) v.push_back(t.*field);
+        for (const Timing& t : s.runs)
+            if (!std::isnan(t.*field)) v.push_back(t.*field);
+        if (v.empty()) return;
         std::sort(v.begin(), v.end());
         const double median =
             v.size() % 2 ? v[v.size() / 2] : 0.5 * (v[v.size() / 2 - 1] + v[v.size() / 2]);
         std::printf("  %-16s %-26s median %7.1f ms   min %7.1f   max %7.1f\n", s.name.c_str(),
                     label, median, v.front(), v.back());
     };
+    if (steps) {
+        stats(&Timing::load_started_ms, "  loader: started");
+        stats(&Timing::read_ms, "  loader: file read");
+        stats(&Timing::parsed_ms, "  loader: parsed");
+        stats(&Timing::validated_ms, "  loader: validated");
+        stats(&Timing::taken_ms, "  frame took the load");
+        stats(&Timing::start_call_ms, "  render start()");
+        stats(&Timing::prepared_ms, "  scene prepared");
+        stats(&Timing::first_pass_ms, "  first pass done");
+    }
     stats(&Timing::started_ms, "render started");
     stats(&Timing::rendered_ms, "first pass rendered");
     stats(&Timing::shown_ms, "first pass in the texture");
@@ -139,6 +193,7 @@ std::filesystem::path resized_copy(const std::filesystem::path& scene, int width
 
 int main(int argc, char** argv) {
     int runs = 20, width = 1280, height = 720;
+    bool steps = false;
     std::filesystem::path scene = JT_SHOWCASE;
     for (int i = 1; i < argc; ++i) {
         const std::string arg = argv[i];
@@ -147,6 +202,12 @@ int main(int argc, char** argv) {
         } else if (arg == "--pace" && i + 1 < argc) {
             const double hz = std::atof(argv[++i]);
             frame_interval_ms = hz > 0 ? 1000.0 / hz : 0.0;
+        } else if (arg == "--no-wait") {
+            wait_for_workers = false;
+        } else if (arg == "--render-priority-normal") {
+            render_in_background = false;
+        } else if (arg == "--steps") {
+            steps = true;
         } else if (arg == "--scene" && i + 1 < argc) {
             scene = argv[++i];
         } else if (arg == "--size" && i + 1 < argc &&
@@ -154,8 +215,8 @@ int main(int argc, char** argv) {
                    height > 0) {
         } else {
             std::fprintf(stderr,
-                         "usage: viewer_latency [--runs N] [--pace HZ] [--scene file.jts] "
-                         "[--size WxH]\n");
+                         "usage: viewer_latency [--runs N] [--pace HZ] [--no-wait] "
+                         "[--render-priority-normal] [--steps] [--scene file.jts] [--size WxH]\n");
             return 2;
         }
     }
@@ -175,6 +236,7 @@ int main(int argc, char** argv) {
     }();
     ViewerConfig config;
     config.watch_interval = std::chrono::hours(1);  // no reloads behind our back
+    config.render_in_background = render_in_background;
 
     // A render still running when the user acts is the usual case: let it run
     // a little, so the cancel is part of the figure.
@@ -183,7 +245,7 @@ int main(int argc, char** argv) {
         while (Clock::now() < until) {
             const auto frame_start = Clock::now();
             viewer.frame(state);
-            pace(frame_start);
+            pace(state, frame_start);
         }
     };
 
@@ -199,7 +261,7 @@ int main(int argc, char** argv) {
         AppState state(config);
         auto t0 = Clock::now();
         request_open(state, file);
-        load.runs.push_back(frames_until_first_pass(viewer, state, t0, 0));
+        load.runs.push_back(frames_until_first_pass(viewer, state, t0, 0, true));
         settle(state);
     }
     AppState state(config);
@@ -213,7 +275,7 @@ int main(int argc, char** argv) {
         const auto jobs = state.renderer.jobs_started();
         const auto t0 = Clock::now();
         reload_scene(state);
-        reload.runs.push_back(frames_until_first_pass(viewer, state, t0, jobs));
+        reload.runs.push_back(frames_until_first_pass(viewer, state, t0, jobs, true));
     }
     for (int i = 0; i < runs; ++i) {
         settle(state);
@@ -245,16 +307,19 @@ int main(int argc, char** argv) {
     }
     std::sort(idle.begin(), idle.end());
 
-    std::printf("viewer latency, %s at %dx%d, %d runs each, frames at %s, %u hardware threads\n",
-                scene.filename().c_str(), width, height, runs,
-                frame_interval_ms > 0 ? (std::to_string(1000.0 / frame_interval_ms) + " Hz").c_str()
-                                      : "full speed",
-                std::thread::hardware_concurrency());
+    std::printf(
+        "viewer latency, %s at %dx%d, %d runs each, frames at %s%s%s, %u hardware threads\n",
+        scene.filename().c_str(), width, height, runs,
+        frame_interval_ms > 0 ? (std::to_string(1000.0 / frame_interval_ms) + " Hz").c_str()
+                              : "full speed",
+        wait_for_workers ? ", waits for the workers" : ", no waiting",
+        render_in_background ? ", render in the background" : ", render at normal priority",
+        std::thread::hardware_concurrency());
     std::printf("  %-16s %-26s median %7.1f ms   min %7.1f   max %7.1f\n", "idle frame",
                 "OSMesa 1680x800, UI + image", idle[idle.size() / 2], idle.front(), idle.back());
-    print(load);
-    print(reload);
-    print(material);
-    print(camera);
+    print(load, steps);
+    print(reload, steps);
+    print(material, steps);
+    print(camera, steps);
     return 0;
 }

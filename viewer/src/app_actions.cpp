@@ -105,6 +105,7 @@ bool reload_if_changed(AppState& state) {
 bool take_finished_load(AppState& state) {
     std::optional<FinishedLoad> done = state.loader.take();
     if (!done) return false;
+    state.last_load_times = done->attempt.times;
     // A reload of a file that is no longer the open one is stale.
     if (done->purpose == LoadPurpose::reload && done->path != state.doc.path) return true;
     if (done->purpose == LoadPurpose::open)
@@ -323,6 +324,9 @@ std::optional<RenderRequest> render_request(const AppState& state, std::string& 
     request.options.samples = std::clamp(settings.samples, 1, 1024);
     request.options.threads = state.config.render_threads;
     request.options.previews = true;
+    // The frames come first: a frame drawn late is a late picture however fast
+    // the render is (and with a software GL the frame needs a core too).
+    request.options.background = state.config.render_in_background;
     return request;
 }
 
@@ -366,6 +370,13 @@ void update_render(AppState& state) {
 
 bool render_complete(const AppState& state) {
     return state.started && state.display_complete && !state.paused;
+}
+
+bool waiting_for_workers(const AppState& state) {
+    if (state.loader.in_flight()) return true;
+    if (state.loader.busy()) return false;  // a finished load waits to be taken in
+    return state.started && !state.paused && state.renderer.active() &&
+           state.renderer.passes_since_start() == 0;
 }
 
 }  // namespace jt::view

@@ -75,4 +75,11 @@ std::optional<RenderRequest> render_request(const AppState& state, std::string& 
 // True once the render of the current scene has rendered every pass.
 bool render_complete(const AppState& state);
 
+// True while the next frame would show nothing new until a worker reports: a
+// file is loading, or the render just started has no pass done yet. The frame
+// loop then sleeps until state.wakeup (or input) wakes it, so that the picture
+// is taken in as soon as it exists rather than at the next frame tick, and no
+// frame takes cores from the render meanwhile.
+bool waiting_for_workers(const AppState& state);
+
 }  // namespace jt::view

@@ -11,6 +11,7 @@
 #include "scene_document.hpp"
 #include "scene_loader.hpp"
 #include "undo_stack.hpp"
+#include "wakeup.hpp"
 
 #include <chrono>
 #include <cstdint>
@@ -23,7 +24,9 @@ namespace jt::view {
 struct ViewerConfig {
     std::filesystem::path recent_files;  // empty: remember nothing between runs
     std::chrono::milliseconds watch_interval{200};
-    int render_threads = 0;        // 0: every core
+    int render_threads = 0;  // 0: every core
+    // The render's threads below the frame loop's priority (RenderOptions::background).
+    bool render_in_background = true;
     int max_pixels = 4096 * 4096;  // larger images are refused, not allocated
 };
 
@@ -39,9 +42,14 @@ struct RenderRequest {
 };
 
 struct AppState {
-    explicit AppState(ViewerConfig config = {}) : config(std::move(config)) {}
+    explicit AppState(ViewerConfig config = {}) : config(std::move(config)) {
+        loader.set_wakeup(&wakeup);
+        renderer.set_wakeup(&wakeup);
+    }
 
     ViewerConfig config;
+    // Before the loader and the renderer: their threads notify it until they end.
+    Wakeup wakeup;
     SceneDocument doc;
     UndoStack undo;
     std::optional<Scene>
@@ -53,6 +61,7 @@ struct AppState {
     FileWatcher watcher;
     SceneLoader loader;  // opens and reloads off the UI thread
     RecentFiles recent;
+    LoadTimes last_load_times;  // of the last open or reload taken in
 
     // A newer text of the file, loaded while there were unsaved edits: held
     // until the user chooses (resolve_reload) so that neither is lost unasked.

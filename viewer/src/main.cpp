@@ -103,6 +103,7 @@ int run_window(const Arguments& args) {
     {
         // Scoped so the texture and the render thread go before the GL context.
         AppState app;
+        app.wakeup.set_callback(GlfwWindow::wake);
         app.recent.load(default_recent_files_path());
         open_scene(app, args.scene);
         print_diagnostics(app);
@@ -116,9 +117,13 @@ int run_window(const Arguments& args) {
         int frames_drawn = 0;
         while (!window.should_close() && !app.quit) {
             // Idle when the render is done: wake for input or to poll the file.
-            // Not while a file loads: its result is taken in by the next frame.
+            // While a load or a render's first pass is under way, sleep until
+            // the loader or the render wakes the loop (or input arrives), so
+            // that the frame showing it starts at once, not at the next tick.
             if (render_complete(app) && !app.loader.busy() && !args.exit_when_done)
                 window.wait_events(0.2);
+            else if (waiting_for_workers(app))
+                window.wait_events(0.05);
             else
                 window.poll_events();
             if (dropped) {

@@ -16,6 +16,7 @@ struct RenderController::Run {
     mutable std::mutex mutex;        // guards job and error
     std::shared_ptr<RenderJob> job;  // set once the scene is prepared
     std::string error;
+    RunTimeline timeline;
 
     std::shared_ptr<RenderJob> current_job() const {
         std::lock_guard lock(mutex);
@@ -89,14 +90,22 @@ void RenderController::launch(const std::shared_ptr<Run>& run, const Scene* scen
                 }
                 std::lock_guard lock(run->mutex);
                 run->job = job;
+                run->timeline.prepared = RunTimeline::Clock::now();
             }
-            while (!run->stop && job->run_pass()) ++run->passes;
+            while (!run->stop && job->run_pass()) {
+                if (++run->passes == 1 && to_prepare) {
+                    std::lock_guard lock(run->mutex);
+                    run->timeline.first_pass = RunTimeline::Clock::now();
+                }
+                if (wakeup_) wakeup_->notify();
+            }
         } catch (const std::exception& e) {
             run->fail(std::string("the render failed: ") + e.what());
         } catch (...) {
             run->fail("the render failed");
         }
         run->done = true;
+        if (wakeup_) wakeup_->notify();
     });
 }
 
@@ -104,6 +113,7 @@ void RenderController::start(const Scene& scene, const RenderOptions& options) {
     join_retired(false);
     auto run = std::make_shared<Run>();
     run->options = options;
+    run->timeline.started = RunTimeline::Clock::now();
     std::shared_ptr<Run> old;
     {
         std::lock_guard lock(mutex_);
@@ -169,6 +179,18 @@ std::string RenderController::error() const {
 int RenderController::passes_since_start() const {
     std::lock_guard lock(mutex_);
     return current_ ? current_->passes.load() : 0;
+}
+
+std::shared_ptr<const PreparedScene> RenderController::prepared() const {
+    std::lock_guard lock(mutex_);
+    return prepared_;
+}
+
+RunTimeline RenderController::timeline() const {
+    std::lock_guard lock(mutex_);
+    if (!current_) return {};
+    std::lock_guard run_lock(current_->mutex);
+    return current_->timeline;
 }
 
 }  // namespace jt::view

@@ -7,7 +7,9 @@
 
 #include "jtracer/render_job.hpp"
 #include "jtracer/scene.hpp"
+#include "wakeup.hpp"
 
+#include <chrono>
 #include <cstdint>
 #include <memory>
 #include <mutex>
@@ -16,6 +18,14 @@
 #include <vector>
 
 namespace jt::view {
+
+// When the current run reached each step (for the latency benchmark).
+struct RunTimeline {
+    using Clock = std::chrono::steady_clock;
+    Clock::time_point started;                    // start() was called
+    std::optional<Clock::time_point> prepared;    // the scene was prepared, the job made
+    std::optional<Clock::time_point> first_pass;  // the job's first pass was rendered
+};
 
 class RenderController {
   public:
@@ -48,6 +58,13 @@ class RenderController {
     std::uint64_t jobs_started() const { return jobs_started_; }
     // Passes the current job has completed since it was started or last resumed.
     int passes_since_start() const;
+    RunTimeline timeline() const;
+    // The scene the latest run prepared (its geometry is what the next start()
+    // reuses when only materials, lights, cameras or settings changed).
+    std::shared_ptr<const PreparedScene> prepared() const;
+    // Notified (on the render thread) whenever a pass is done and when a run
+    // ends. Set before the first start().
+    void set_wakeup(Wakeup* wakeup) { wakeup_ = wakeup; }
 
   private:
     struct Run;  // one worker thread and the job it renders
@@ -61,6 +78,7 @@ class RenderController {
     std::shared_ptr<const PreparedScene> prepared_;  // guarded by mutex_
     std::vector<std::shared_ptr<Run>> retired_;      // cancelled, winding down (UI thread only)
     std::uint64_t jobs_started_ = 0;
+    Wakeup* wakeup_ = nullptr;
 };
 
 }  // namespace jt::view

@@ -22,6 +22,7 @@ Diagnostic file_error(std::string message) {
 
 LoadAttempt load_scene_file(const std::filesystem::path& path) {
     LoadAttempt attempt;
+    attempt.times.started = LoadTimes::Clock::now();
     std::error_code ec;
     if (!std::filesystem::is_regular_file(path, ec)) {
         attempt.diagnostics.push_back(file_error(std::filesystem::exists(path, ec)
@@ -46,12 +47,15 @@ LoadAttempt load_scene_file(const std::filesystem::path& path) {
         return attempt;
     }
     attempt.text = bytes.str();
+    attempt.times.read = LoadTimes::Clock::now();
     ParseResult parsed = parse_scene(attempt.text);
+    attempt.times.parsed = LoadTimes::Clock::now();
     attempt.diagnostics = std::move(parsed.diagnostics);
     if (!has_errors(attempt.diagnostics)) {
         std::vector<Diagnostic> more = validate_scene(parsed.scene, parsed.source);
         attempt.diagnostics.insert(attempt.diagnostics.end(), more.begin(), more.end());
     }
+    attempt.times.validated = LoadTimes::Clock::now();
     attempt.ok = !has_errors(attempt.diagnostics);
     attempt.scene = std::move(parsed.scene);
     attempt.source = std::move(parsed.source);

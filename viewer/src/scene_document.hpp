@@ -7,6 +7,7 @@
 #include "jtracer/scene.hpp"
 #include "jtracer/source_map.hpp"
 
+#include <chrono>
 #include <filesystem>
 #include <optional>
 #include <string>
@@ -27,12 +28,19 @@ struct SceneDocument {
     bool load_failed = false;                // the latest load attempt had errors: `scene` is older
 };
 
+// When a load reached each step (for the latency benchmark).
+struct LoadTimes {
+    using Clock = std::chrono::steady_clock;
+    Clock::time_point requested, started, read, parsed, validated, taken;
+};
+
 struct LoadAttempt {
     bool ok = false;
     std::string text;
     Scene scene;
     SceneSource source;
     std::vector<Diagnostic> diagnostics;
+    LoadTimes times;
 };
 
 // Reads, parses and validates `path`. Never throws: a missing, unreadable or

@@ -18,7 +18,7 @@ SceneLoader::~SceneLoader() {
 void SceneLoader::request(const std::filesystem::path& path, LoadPurpose purpose) {
     {
         std::lock_guard lock(mutex_);
-        next_ = Request{path, purpose};
+        next_ = Request{path, purpose, LoadTimes::Clock::now()};
         result_.reset();  // overtaken
     }
     changed_.notify_all();
@@ -28,7 +28,18 @@ std::optional<FinishedLoad> SceneLoader::take() {
     std::lock_guard lock(mutex_);
     std::optional<FinishedLoad> result = std::move(result_);
     result_.reset();
+    if (result) result->attempt.times.taken = LoadTimes::Clock::now();
     return result;
+}
+
+bool SceneLoader::in_flight() const {
+    std::lock_guard lock(mutex_);
+    return next_ || loading_;
+}
+
+void SceneLoader::set_wakeup(Wakeup* wakeup) {
+    std::lock_guard lock(mutex_);
+    wakeup_ = wakeup;
 }
 
 bool SceneLoader::busy() const {
@@ -58,10 +69,18 @@ void SceneLoader::work() {
             attempt.diagnostics.push_back(Diagnostic{
                 Severity::error, SourcePos{}, std::string("cannot load the file: ") + e.what()});
         }
+        attempt.times.requested = request.requested;
         lock.lock();
         loading_ = false;
-        if (!next_) result_ = FinishedLoad{request.path, request.purpose, std::move(attempt)};
+        const bool ready = !next_;
+        if (ready) result_ = FinishedLoad{request.path, request.purpose, std::move(attempt)};
         changed_.notify_all();
+        if (ready && wakeup_) {
+            Wakeup* wakeup = wakeup_;
+            lock.unlock();
+            wakeup->notify();
+            lock.lock();
+        }
     }
 }
 

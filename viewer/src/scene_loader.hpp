@@ -5,6 +5,7 @@
 // overtaken by another request finishes, but its result is dropped.
 
 #include "scene_document.hpp"
+#include "wakeup.hpp"
 
 #include <condition_variable>
 #include <filesystem>
@@ -34,6 +35,10 @@ class SceneLoader {
     std::optional<FinishedLoad> take();
     // A request is waiting, loading, or done but not yet taken.
     bool busy() const;
+    // A request is waiting or loading (its result is not ready yet).
+    bool in_flight() const;
+    // Notified whenever a result is ready to take. Set before the first request.
+    void set_wakeup(Wakeup* wakeup);
     // Blocks until the newest request is done (for start-up and tests).
     void wait() const;
 
@@ -41,6 +46,7 @@ class SceneLoader {
     struct Request {
         std::filesystem::path path;
         LoadPurpose purpose;
+        LoadTimes::Clock::time_point requested;
     };
     void work();
 
@@ -50,6 +56,7 @@ class SceneLoader {
     bool loading_ = false;                // the worker is reading or parsing
     std::optional<FinishedLoad> result_;  // done, not yet taken
     bool quit_ = false;
+    Wakeup* wakeup_ = nullptr;
     std::thread worker_;  // last: starts once the members above exist
 };
 

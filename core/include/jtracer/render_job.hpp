@@ -6,13 +6,15 @@
 // A PreparedScene is the immutable, render-ready form of a Scene (world
 // transforms, acceleration structure, shading data). It is shared by pointer
 // between jobs, threads and the viewer. A RenderJob renders one image of it,
-// pass by pass: coarse previews (1/8, 1/4, 1/2 resolution), then the full
+// pass by pass: coarse previews (1/8, 1/4, 1/2 resolution; 1/16 first for a
+// large image, so that the first one takes a few milliseconds), then the full
 // resolution at one sample per pixel, then further samples up to the target.
 // The CLI runs a job with previews off; the viewer polls a job running on a
 // thread of its own. Final pixels never depend on thread count, tile order or
 // whether previews ran.
 //
-// The passes of a job with `samples` = N: "preview 1/8", "preview 1/4",
+// The passes of a job with `samples` = N: "preview 1/16" (only when the 1/8
+// pass would trace more than 4096 rays), "preview 1/8", "preview 1/4",
 // "preview 1/2" (one ray per block, when previews are on), "1 sample" (the
 // pixel centres), then "2 samples", "4 samples", ... doubling up to "N samples".
 // Sample k of a pixel sits at a fixed R2-sequence offset (k = 0: the centre);
@@ -49,7 +51,13 @@ struct RenderOptions {
     int samples = 1;       // target samples per pixel, 1..1024
     int camera = 0;        // index into Scene::cameras
     int threads = 0;       // 0: every core
-    bool previews = true;  // run the 1/8, 1/4, 1/2 passes first
+    bool previews = true;  // run the preview passes (1/16,) 1/8, 1/4, 1/2 first
+    // Run the job's threads at a lower OS priority (Linux nice 10), so that an
+    // interactive thread sharing the cores (a viewer drawing its frames) keeps
+    // its pace. The oneTBB workers stay lowered afterwards (an unprivileged
+    // process cannot undo it), so a process should ask for it for all its jobs
+    // or none.
+    bool background = false;
     // Render only this window of the full image. The pixels inside are exactly
     // those of a full render; image() still has the full size, with the pixels
     // outside black, and region_image() has the window alone.
@@ -59,7 +67,7 @@ struct RenderOptions {
 struct RenderProgress {
     int pass = 0;  // index of the pass running or next to run (the last one once finished)
     int pass_count = 0;
-    std::string pass_name;   // "preview 1/8", ..., "1 sample", "4 samples"
+    std::string pass_name;   // "preview 1/16", "preview 1/8", ..., "1 sample", "4 samples"
     double fraction = 0.0;   // of the whole job's work, 0..1
     int samples_done = 0;    // full-resolution samples per pixel completed
     std::uint64_t rays = 0;  // camera, shadow and reflection rays traced so far

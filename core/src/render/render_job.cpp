@@ -8,8 +8,12 @@
 
 #include <tbb/parallel_for.h>
 #include <tbb/task_arena.h>
+#include <tbb/task_scheduler_observer.h>
+
+#include <sys/resource.h>
 
 #include <algorithm>
+#include <cerrno>
 #include <chrono>
 #include <mutex>
 
@@ -52,6 +56,25 @@ CameraFrame frame_for(const PreparedScene& scene, const RenderOptions& o) {
     return camera_frame(camera, std::max(o.width, 1), std::max(o.height, 1));
 }
 
+// Lowers the OS priority of every thread that enters the arena (on Linux the
+// nice value belongs to the thread). Nothing else changes, so the pixels are
+// the same. An unprivileged process cannot raise a nice value again: the
+// oneTBB workers stay lowered for the rest of the process.
+class BackgroundPriority : public tbb::task_scheduler_observer {
+  public:
+    static constexpr int nice_value = 10;
+
+    explicit BackgroundPriority(tbb::task_arena& arena) : tbb::task_scheduler_observer(arena) {
+        observe(true);
+    }
+    ~BackgroundPriority() override { observe(false); }
+    void on_scheduler_entry(bool) override {
+        errno = 0;
+        const int current = getpriority(PRIO_PROCESS, 0);
+        if (errno == 0 && current < nice_value) setpriority(PRIO_PROCESS, 0, nice_value);
+    }
+};
+
 // The quantized pixels of one tile, row by row, before they are published.
 struct TileBuffer {
     PixelRect rect;
@@ -80,6 +103,7 @@ struct RenderJob::State {
     std::vector<RenderPass> passes;
     std::uint64_t total_work = 0;
     tbb::task_arena arena;
+    std::optional<BackgroundPriority> background;  // observes `arena`, so declared after it
     // Running sums of clamped samples, one colour a pixel of the region; only
     // when samples > 1.
     std::vector<Colour> sums;
@@ -215,6 +239,7 @@ RenderJob::RenderJob(std::shared_ptr<const PreparedScene> scene, RenderOptions o
     }
     for (const RenderPass& p : s.passes) s.total_work += p.work;
     if (options.threads > 0) s.arena.initialize(options.threads);
+    if (options.background) s.background.emplace(s.arena);
     s.image = Image8(s.region.width(), s.region.height());
     if (options.samples > 1 && !s.region.empty())
         s.sums.assign(static_cast<std::size_t>(s.region.width()) * s.region.height(), Colour(0.0));

@@ -6,6 +6,8 @@ namespace jt {
 
 namespace {
 
+constexpr std::uint64_t first_preview_max_rays = 4096;
+
 int floor_div(int a, int b) {
     return a / b;
 }  // a >= 0 here
@@ -26,7 +28,12 @@ std::vector<RenderPass> plan_passes(const PixelRect& region, int samples, bool p
     std::vector<RenderPass> passes;
     if (region.empty()) return passes;
     if (previews) {
-        for (int block : {8, 4, 2}) {
+        // The first preview is there to show something at once: past a few
+        // thousand rays (1280x720 at 1/8 is 14,400) it no longer does, so a
+        // large image starts at 1/16.
+        const bool coarse_first = blocks_in(region, 8) > first_preview_max_rays;
+        for (int block : {16, 8, 4, 2}) {
+            if (block == 16 && !coarse_first) continue;
             RenderPass p;
             p.name = "preview 1/" + std::to_string(block);
             p.block = block;

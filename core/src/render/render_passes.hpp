@@ -17,8 +17,8 @@ struct RenderPass {
     std::uint64_t work = 0;  // rays of camera work, for the progress fraction
 };
 
-// Previews 1/8, 1/4, 1/2 (when asked), then 1 sample, then doubling sample
-// counts up to `samples`.
+// Previews 1/8, 1/4, 1/2 (when asked; 1/16 first when 1/8 would take more
+// than 4096 rays), then 1 sample, then doubling sample counts up to `samples`.
 std::vector<RenderPass> plan_passes(const PixelRect& region, int samples, bool previews);
 
 // The pixel rectangles a pass is cut into: squares of `tile_blocks` blocks,

@@ -68,6 +68,9 @@ void GlfwWindow::poll_events() {
 void GlfwWindow::wait_events(double seconds) {
     glfwWaitEventsTimeout(seconds);
 }
+void GlfwWindow::wake() {
+    glfwPostEmptyEvent();
+}
 
 void GlfwWindow::on_drop(std::function<void(const std::string&)> callback) {
     drop_ = std::move(callback);

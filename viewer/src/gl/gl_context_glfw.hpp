@@ -35,6 +35,8 @@ class GlfwWindow {
     void poll_events();
     // Sleeps until an event arrives or `seconds` pass.
     void wait_events(double seconds);
+    // Ends a wait_events early; callable from any thread while the window lives.
+    static void wake();
 
     // Called with each path dropped onto the window.
     void on_drop(std::function<void(const std::string&)> callback);
