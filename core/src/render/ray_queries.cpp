@@ -21,6 +21,7 @@ constexpr float float_infinity = std::numeric_limits<float>::infinity();
 // A direction table cell with more shapes than this leaves the ray to the BVH:
 // testing each costs more than Embree's walk past most of them.
 constexpr std::size_t max_cell_candidates = 16;
+constexpr std::size_t short_candidate_list = 2;
 
 // Embree hands our callbacks the context pointer we passed in; the query
 // structs start with it so that they can be found again from it.
@@ -347,7 +348,13 @@ bool closest_hit(const Geometry& geometry, const Vec3& origin, const Vec3& direc
 
 bool occluded(const Geometry& geometry, const Vec3& origin, const Vec3& direction, double t_min,
               double t_max, OccluderHint* hint, const DirectionTable* light) {
-    if (hint && hinted_blocks(geometry, *hint, origin, direction, t_min, t_max)) return true;
+    std::optional<std::span<const std::uint32_t>> candidates;
+    if (light) candidates = shapes_toward(*light, -direction);
+    // Testing a short list costs about what testing the hint does: the hint
+    // pays only before a long list or a BVH walk.
+    const bool short_list = candidates && candidates->size() <= short_candidate_list;
+    if (hint && !short_list && hinted_blocks(geometry, *hint, origin, direction, t_min, t_max))
+        return true;
     OccluderHint blocker;
     bool blocked = false;
     for (std::uint32_t i = 0; i < geometry.planes.size() && !blocked; ++i) {
@@ -357,9 +364,7 @@ bool occluded(const Geometry& geometry, const Vec3& origin, const Vec3& directio
             blocked = true;
         }
     }
-    std::optional<std::span<const std::uint32_t>> candidates;
-    if (!blocked && light) candidates = shapes_toward(*light, -direction);
-    if (candidates && (!geometry.bvh || candidates->size() <= max_cell_candidates)) {
+    if (!blocked && candidates && (!geometry.bvh || candidates->size() <= max_cell_candidates)) {
         blocked =
             occluded_by_candidates(geometry, *candidates, origin, direction, t_min, t_max, blocker);
     } else if (!blocked && !geometry.bvh) {
