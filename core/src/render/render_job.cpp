@@ -99,6 +99,10 @@ struct RenderJob::State {
     std::shared_ptr<const PreparedScene> scene;
     RenderOptions options;
     CameraFrame camera;
+    // Shapes by direction around camera.position, for the primary rays; built
+    // by the first pass that runs, off the thread that made the job.
+    DirectionTable camera_table;
+    std::once_flag camera_table_built;
     PixelRect region;
     std::vector<RenderPass> passes;
     std::uint64_t total_work = 0;
@@ -169,8 +173,8 @@ bool RenderJob::State::render_blocks(int b, const PixelRect& tile, TileBuffer& o
             // The centre of the block, as far as the image reaches.
             double cx = bx + 0.5 * (std::min(bx + b, options.width) - bx);
             double cy = by + 0.5 * (std::min(by + b, options.height) - by);
-            Colour c =
-                trace_ray(*scene, camera.position, camera_direction(camera, cx, cy), 0.0, rays);
+            Colour c = trace_ray(*scene, camera.position, camera_direction(camera, cx, cy), 0.0,
+                                 rays, &camera_table);
             for (int y = std::max(by, tile.y0); y < std::min(by + b, tile.y1); ++y)
                 for (int x = std::max(bx, tile.x0); x < std::min(bx + b, tile.x1); ++x)
                     out.put(x, y, c);
@@ -189,9 +193,10 @@ bool RenderJob::State::render_samples(const RenderPass& pass, const PixelRect& t
         if (cancel_requested.load(std::memory_order_relaxed)) return false;
         for (int x = tile.x0; x < tile.x1; ++x) {
             if (!accumulate) {
-                out.put(x, y,
-                        trace_ray(*scene, camera.position,
-                                  camera_direction(camera, x + 0.5, y + 0.5), 0.0, rays));
+                out.put(
+                    x, y,
+                    trace_ray(*scene, camera.position, camera_direction(camera, x + 0.5, y + 0.5),
+                              0.0, rays, &camera_table));
                 continue;
             }
             // Each pixel belongs to one tile, so its running sum needs no lock,
@@ -200,7 +205,8 @@ bool RenderJob::State::render_samples(const RenderPass& pass, const PixelRect& t
             for (int k = pass.sample_begin; k < pass.sample_end; ++k) {
                 SampleOffset o = sample_offset(k);
                 sum += clamp01(trace_ray(*scene, camera.position,
-                                         camera_direction(camera, x + o.x, y + o.y), 0.0, rays));
+                                         camera_direction(camera, x + o.x, y + o.y), 0.0, rays,
+                                         &camera_table));
             }
             out.sums[static_cast<std::size_t>(y - tile.y0) * tile.width() + (x - tile.x0)] = sum;
             out.put(x, y, sum / static_cast<double>(pass.sample_end));
@@ -256,6 +262,11 @@ bool RenderJob::run_pass() {
         index = s.next_pass;
         s.pass_started = std::chrono::steady_clock::now();
     }
+    std::call_once(s.camera_table_built, [&s] {
+        const Geometry& g = *s.scene->geometry;
+        s.camera_table = build_direction_table(
+            g, s.camera.position, table_resolution(g.spheres.size() + g.shapes.size(), true));
+    });
     const RenderPass& pass = s.passes[index];
     const std::vector<PixelRect> tiles = cut_tiles(s.region, pass.block, tile_blocks);
     if (s.tiles_pass != index) {  // a fresh pass, not one resumed after a cancel
