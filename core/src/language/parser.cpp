@@ -143,6 +143,16 @@ class Parser {
         }
     }
 
+    // At a block's keyword: skips it and its braced body (or, with no '{', its statement).
+    void skip_block() {
+        advance();
+        if (at(TokenKind::lbrace)) {
+            skip_braced();
+        } else {
+            skip_statement();
+        }
+    }
+
     // Inside '<' ... : skips to just past the next '>', or to a ';' or '}'.
     void skip_vector() {
         while (!at(TokenKind::end) && !at(TokenKind::rbrace) && !at(TokenKind::semicolon)) {
@@ -352,12 +362,7 @@ class Parser {
         } else {
             sink_.error(cur_->pos, unknown_name_message("block", cur_->text, where, allowed));
         }
-        advance();
-        if (at(TokenKind::lbrace)) {
-            skip_braced();
-        } else {
-            skip_statement();
-        }
+        skip_block();
     }
 
     // A property in a block that holds only blocks (cameras, scene).
@@ -391,12 +396,7 @@ class Parser {
             (cur_->text == "material" || cur_->text == "transform")) {
             sink_.error(cur_->pos, "a point_light takes no '" + std::string(cur_->text) +
                                        "' block: only sphere, plane and cylinder do");
-            advance();
-            if (at(TokenKind::lbrace)) {
-                skip_braced();
-            } else {
-                skip_statement();
-            }
+            skip_block();
             return;
         }
         unknown_block("in '" + std::string(block.keyword) + "'", kNoBlocks);
