@@ -154,6 +154,19 @@ TEST(Wakeup, FrameAfterTheRendersWakeupShowsTheFirstPass) {
     EXPECT_FALSE(waiting_for_workers(state));
 }
 
+TEST(Wakeup, FrameThatStartsTheRenderShowsAFirstPassDoneWithinTheWait) {
+    HeadlessViewer viewer(320, 240);
+    ASSERT_TRUE(viewer.ok()) << viewer.error();
+    ViewerConfig config = test_config();
+    config.first_pass_wait = std::chrono::minutes(1);  // long enough for any machine
+    AppState state(config);
+    open_scene(state, kScene);
+    viewer.frame(state);
+    EXPECT_EQ(state.renderer.jobs_started(), 1u);
+    EXPECT_GT(state.renderer.passes_since_start(), 0);
+    EXPECT_TRUE(state.presenter.has_image()) << "in the texture in the frame that started it";
+}
+
 TEST(RenderReuse, MaterialEditReusesTheGeometryAndRendersTheEditedScene) {
     Scene scene = showcase(160, 90);
     const RenderOptions options = options_for(scene, true);

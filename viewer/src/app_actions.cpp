@@ -4,6 +4,7 @@
 #include "jtracer/validate.hpp"
 
 #include <algorithm>
+#include <chrono>
 
 namespace jt::view {
 
@@ -340,6 +341,17 @@ std::string validation_error(const Scene& scene) {
     return {};
 }
 
+// Waits, at most config.first_pass_wait, for the render just started to finish
+// its first pass (the render's wakeup ends the wait at once).
+void wait_for_first_pass(AppState& state) {
+    const auto deadline = std::chrono::steady_clock::now() + state.config.first_pass_wait;
+    for (;;) {
+        const std::uint64_t seen = state.wakeup.count();
+        if (state.renderer.passes_since_start() > 0 || !state.renderer.active()) return;
+        if (!state.wakeup.wait(seen, deadline)) return;
+    }
+}
+
 }  // namespace
 
 void update_render(AppState& state) {
@@ -358,6 +370,7 @@ void update_render(AppState& state) {
                 state.renderer.start(request->scene, request->options);
                 state.started = std::move(request);
                 state.display_complete = false;
+                wait_for_first_pass(state);
             }
         }
     }

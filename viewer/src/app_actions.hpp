@@ -65,8 +65,9 @@ bool copy_free_camera_to_scene(AppState& state, const std::string& name);
 // Pauses the render, or continues it from where it paused.
 void toggle_pause(AppState& state);
 
-// Starts a render when what should be shown changed, then moves the finished
-// pixels to the texture. Needs the GL context current.
+// Starts a render when what should be shown changed (and gives its first pass
+// up to config.first_pass_wait to be done), then moves the finished pixels to
+// the texture. Needs the GL context current.
 void update_render(AppState& state);
 // The render that update_render would start now, or nothing (with the reason
 // in `note`) when there is nothing to render.

@@ -27,6 +27,11 @@ struct ViewerConfig {
     int render_threads = 0;  // 0: every core
     // The render's threads below the frame loop's priority (RenderOptions::background).
     bool render_in_background = true;
+    // How long the frame that starts a render may wait for its first pass, so
+    // that the pass shows in this frame rather than the next. A coarse first
+    // pass takes a few milliseconds; a frame on a GPU takes one or two, so the
+    // frame still makes its vsync. 0: never wait.
+    std::chrono::milliseconds first_pass_wait{6};
     int max_pixels = 4096 * 4096;  // larger images are refused, not allocated
 };
 
