@@ -83,7 +83,8 @@ void check_buffers(int count, unsigned seed) {
                         ? c
                         : static_cast<std::uint32_t>(c - g.spheres.size()) | shape_flag;
                 if (!blocks(g, candidate, origin, d, distance)) continue;
-                ASSERT_NE(std::ranges::find(*candidates, candidate), candidates->end())
+                ASSERT_NE(std::ranges::find(candidates->shapes, candidate),
+                          candidates->shapes.end())
                     << "ray " << i << " blocked by " << c << " missing from its cell";
             }
             OccluderHint hint;
@@ -163,11 +164,22 @@ TEST(DirectionTable, CellsAreFewAndSmallForSparseShapes) {
         empty += listed == 0;
     }
     EXPECT_LE(most, 4u);
+    // Each list nearest first, and `nearest` a true lower bound.
+    const Geometry& g = *prepared->geometry;
+    for (std::size_t c = 0; c < cells; ++c)
+        for (std::uint32_t k = table.cell_start[c]; k < table.cell_start[c + 1]; ++k) {
+            if (k > table.cell_start[c]) {
+                EXPECT_LE(table.nearest[k - 1], table.nearest[k]);
+            }
+            const WorldSphere& s = g.spheres[table.shapes[k]];
+            EXPECT_LT(table.nearest[k], glm::length(s.center - Vec3{0, 10, 4}) - s.radius);
+            EXPECT_GT(table.nearest[k], glm::length(s.center - Vec3{0, 10, 4}) - s.radius - 1e-3);
+        }
     EXPECT_GT(empty, cells * 3 / 4);
     // Up, away from the floor: nothing to test.
     auto up = shapes_toward(table, {0.1, 1.0, 0.2});
     ASSERT_TRUE(up);
-    EXPECT_TRUE(up->empty());
+    EXPECT_EQ(up->size(), 0u);
     // Toward one sphere's centre: that sphere, and at most a neighbour.
     auto toward = shapes_toward(table, Vec3{1, 0.6, 1} - Vec3{0, 10, 4});
     ASSERT_TRUE(toward);

@@ -161,14 +161,17 @@ DirectionTable build_direction_table(const Geometry& geometry, const Vec3& posit
     const std::size_t cells = 6 * static_cast<std::size_t>(r) * r;
     const std::vector<CellCone> cones = cell_cones(r);
 
-    // (cell, candidate) pairs, then a counting sort by cell that keeps each
-    // cell's candidates in index order.
+    // (cell, candidate) pairs, then a counting sort by cell, then each cell
+    // nearest first.
     std::vector<std::pair<std::uint32_t, std::uint32_t>> pairs;
-    auto add_shape = [&](const BoundingSphere& b, std::uint32_t candidate) {
+    std::vector<double> nearest_of(shapes);  // by sphere index, then shape index
+    auto add_shape = [&](const BoundingSphere& b, std::uint32_t candidate, std::size_t slot) {
         const Vec3 offset = b.center - position;
         const double distance = glm::length(offset);
         const double radius =
             b.radius * (1.0 + 1e-6) + 1e-7 * (max_abs(b.center) + max_abs(position) + b.radius);
+        // Shrunk far beyond the rounding of an exact hit's distance.
+        nearest_of[slot] = distance > radius ? (distance - radius) * (1.0 - 1e-9) : 0.0;
         const bool everywhere = !(distance > radius) || !std::isfinite(distance) ||
                                 radius / distance > std::sin(max_cone_angle);
         if (everywhere) {
@@ -182,9 +185,14 @@ DirectionTable build_direction_table(const Geometry& geometry, const Vec3& posit
         });
     };
     for (std::uint32_t i = 0; i < geometry.spheres.size(); ++i)
-        add_shape({geometry.spheres[i].center, geometry.spheres[i].radius}, i);
+        add_shape({geometry.spheres[i].center, geometry.spheres[i].radius}, i, i);
     for (std::uint32_t i = 0; i < geometry.shapes.size(); ++i)
-        add_shape(bounding_sphere(geometry.shapes[i]), i | shape_flag);
+        add_shape(bounding_sphere(geometry.shapes[i]), i | shape_flag, geometry.spheres.size() + i);
+    auto nearest = [&](std::uint32_t candidate) {
+        return candidate & shape_flag
+                   ? nearest_of[geometry.spheres.size() + (candidate & ~shape_flag)]
+                   : nearest_of[candidate];
+    };
 
     table.resolution = r;
     table.cell_start.assign(cells + 1, 0);
@@ -193,11 +201,19 @@ DirectionTable build_direction_table(const Geometry& geometry, const Vec3& posit
     table.shapes.resize(pairs.size());
     std::vector<std::uint32_t> fill(table.cell_start.begin(), table.cell_start.end() - 1);
     for (const auto& [cell, candidate] : pairs) table.shapes[fill[cell]++] = candidate;
+    for (std::size_t c = 0; c < cells; ++c) {
+        auto first = table.shapes.begin() + table.cell_start[c];
+        auto last = table.shapes.begin() + table.cell_start[c + 1];
+        std::stable_sort(first, last,
+                         [&](std::uint32_t a, std::uint32_t b) { return nearest(a) < nearest(b); });
+    }
+    table.nearest.resize(table.shapes.size());
+    for (std::size_t i = 0; i < table.shapes.size(); ++i)
+        table.nearest[i] = nearest(table.shapes[i]);
     return table;
 }
 
-std::optional<std::span<const std::uint32_t>> shapes_toward(const DirectionTable& table,
-                                                            const Vec3& direction) {
+std::optional<ListedShapes> shapes_toward(const DirectionTable& table, const Vec3& direction) {
     const int r = table.resolution;
     if (r == 0) return std::nullopt;
     const Vec3 a(std::abs(direction.x), std::abs(direction.y), std::abs(direction.z));
@@ -211,8 +227,10 @@ std::optional<std::span<const std::uint32_t>> shapes_toward(const DirectionTable
     const std::size_t cell =
         (static_cast<std::size_t>(face) * r + cell_coordinate(direction[l] / m, r)) * r +
         cell_coordinate(direction[j] / m, r);
-    return std::span(table.shapes)
-        .subspan(table.cell_start[cell], table.cell_start[cell + 1] - table.cell_start[cell]);
+    const std::size_t first = table.cell_start[cell];
+    const std::size_t count = table.cell_start[cell + 1] - first;
+    return ListedShapes{std::span(table.shapes).subspan(first, count),
+                        std::span(table.nearest).subspan(first, count)};
 }
 
 std::vector<DirectionTable> build_light_tables(const Geometry& geometry,

@@ -29,7 +29,17 @@ inline constexpr std::uint32_t shape_flag = 0x80000000u;
 struct DirectionTable {
     int resolution = 0;                     // cells along a cube face's edge; 0: no table
     std::vector<std::uint32_t> cell_start;  // 6 * resolution^2 + 1 offsets into `shapes`
-    std::vector<std::uint32_t> shapes;
+    std::vector<std::uint32_t> shapes;      // each cell's nearest first
+    std::vector<double> nearest;            // parallel to `shapes`: see ListedShapes
+};
+
+// A cell's list. No point of shapes[i] is nearer the table's point than
+// nearest[i], and nearest never decreases along the list: a walk stops at the
+// first shape that lies beyond the hit it has (or beyond the light).
+struct ListedShapes {
+    std::span<const std::uint32_t> shapes;
+    std::span<const double> nearest;
+    std::size_t size() const { return shapes.size(); }
 };
 
 // Cells along a cube face's edge for a table of `shapes` shapes, around a
@@ -43,8 +53,7 @@ DirectionTable build_direction_table(const Geometry& geometry, const Vec3& point
 // The shapes that a ray leaving the point in `direction` (any length) may
 // meet: all of them are in the list. Nothing when there is no table or the
 // direction is zero or not finite.
-std::optional<std::span<const std::uint32_t>> shapes_toward(const DirectionTable& table,
-                                                            const Vec3& direction);
+std::optional<ListedShapes> shapes_toward(const DirectionTable& table, const Vec3& direction);
 
 // One table a light, parallel to `lights`; none when no table pays.
 std::vector<DirectionTable> build_light_tables(const Geometry& geometry,

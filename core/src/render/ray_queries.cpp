@@ -189,12 +189,15 @@ bool occluded_by_testing_all(const Geometry& g, const Vec3& origin, const Vec3& 
     return false;
 }
 
-// The walk of a direction table's cell: the shapes in it, exactly tested.
-bool occluded_by_candidates(const Geometry& g, std::span<const std::uint32_t> candidates,
-                            const Vec3& origin, const Vec3& direction, double t_min, double t_max,
-                            OccluderHint& blocker) {
+// The walk of a direction table's list around the light the ray runs to: a
+// blocker lies between the origin and the light, so nearer the light than
+// the origin is, and the walk stops at the first shape that is not.
+bool occluded_by_listed(const Geometry& g, const ListedShapes& listed, const Vec3& origin,
+                        const Vec3& direction, double t_min, double t_max, OccluderHint& blocker) {
+    const double reach = t_max * glm::length(direction) * (1.0 + 1e-9);
     CylinderPart part;
-    for (std::uint32_t candidate : candidates) {
+    for (std::size_t k = 0; k < listed.size() && listed.nearest[k] < reach; ++k) {
+        const std::uint32_t candidate = listed.shapes[k];
         const std::uint32_t i = candidate & ~shape_flag;
         if (candidate & shape_flag) {
             const TransformedShape& s = g.shapes[i];
@@ -212,6 +215,19 @@ bool occluded_by_candidates(const Geometry& g, std::span<const std::uint32_t> ca
         }
     }
     return false;
+}
+
+// The walk of a direction table's list around the ray's origin: it stops at
+// the first shape that lies wholly beyond the best hit so far.
+void closest_by_listed(ClosestQuery& q, const ListedShapes& listed) {
+    const double length = glm::length(q.direction);
+    for (std::size_t k = 0; k < listed.size() && !(listed.nearest[k] > q.t * length); ++k) {
+        const std::uint32_t shape = listed.shapes[k];
+        if (!(shape & shape_flag))
+            offer_sphere(q, shape);
+        else if (!misses_bounds(q.geometry->shapes[shape & ~shape_flag], q.origin, q.direction))
+            offer_shape(q, shape & ~shape_flag);
+    }
 }
 
 // Whether the hinted surface blocks the ray; false for no hint or a stale one.
@@ -308,15 +324,10 @@ bool closest_hit(const Geometry& geometry, const Vec3& origin, const Vec3& direc
         }
     }
 
-    std::optional<std::span<const std::uint32_t>> listed;
+    std::optional<ListedShapes> listed;
     if (around_origin) listed = shapes_toward(*around_origin, direction);
     if (listed && (!geometry.bvh || listed->size() <= max_cell_candidates)) {
-        for (std::uint32_t shape : *listed) {
-            if (!(shape & shape_flag))
-                offer_sphere(q, shape);
-            else if (!misses_bounds(geometry.shapes[shape & ~shape_flag], origin, direction))
-                offer_shape(q, shape & ~shape_flag);
-        }
+        closest_by_listed(q, *listed);
     } else if (!geometry.bvh) {
         closest_by_testing_all(q);
     } else {
@@ -348,7 +359,7 @@ bool closest_hit(const Geometry& geometry, const Vec3& origin, const Vec3& direc
 
 bool occluded(const Geometry& geometry, const Vec3& origin, const Vec3& direction, double t_min,
               double t_max, OccluderHint* hint, const DirectionTable* light) {
-    std::optional<std::span<const std::uint32_t>> candidates;
+    std::optional<ListedShapes> candidates;
     if (light) candidates = shapes_toward(*light, -direction);
     // Testing a short list costs about what testing the hint does: the hint
     // pays only before a long list or a BVH walk.
@@ -366,7 +377,7 @@ bool occluded(const Geometry& geometry, const Vec3& origin, const Vec3& directio
     }
     if (!blocked && candidates && (!geometry.bvh || candidates->size() <= max_cell_candidates)) {
         blocked =
-            occluded_by_candidates(geometry, *candidates, origin, direction, t_min, t_max, blocker);
+            occluded_by_listed(geometry, *candidates, origin, direction, t_min, t_max, blocker);
     } else if (!blocked && !geometry.bvh) {
         blocked = occluded_by_testing_all(geometry, origin, direction, t_min, t_max, blocker);
     } else if (!blocked) {
