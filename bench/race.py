@@ -24,8 +24,22 @@ import time
 SUMMARY = re.compile(r"wrote .*?: (\d+)x(\d+), .*?, ([\d.]+) s, ([\d.]+) (M )?rays")
 
 
-def run_timed(command):
-    """Runs a command; returns (wall seconds, CPU seconds, peak RSS MiB, stdout + stderr)."""
+def run_timed(command, attempts=1):
+    """Runs a command; returns (wall seconds, CPU seconds, peak RSS MiB, stdout + stderr).
+
+    With attempts > 1, a failed run is tried again: POV-Ray 3.7 sometimes dies at
+    start-up on a busy machine ("Timed out waiting for worker thread startup").
+    """
+    for attempt in range(1, attempts + 1):
+        result = run_once(command, last=attempt == attempts)
+        if result:
+            return result
+        print(f"  run failed, trying again ({attempt}/{attempts - 1})", file=sys.stderr)
+    raise AssertionError("unreachable")
+
+
+def run_once(command, last):
+    """One run_timed attempt; None when it failed and is not the last."""
     start = time.perf_counter()
     # A fresh process per run, so ru_maxrss of this wait is this child's alone.
     pid = os.fork()
@@ -42,6 +56,8 @@ def run_timed(command):
     with open(command_log(), encoding="utf-8", errors="replace") as f:
         output = f.read()
     if os.waitstatus_to_exitcode(status) != 0:
+        if not last:
+            return None
         sys.exit(f"failed ({os.waitstatus_to_exitcode(status)}): {' '.join(command)}\n{output}")
     return wall, usage.ru_utime + usage.ru_stime, usage.ru_maxrss / 1024.0, output
 
@@ -109,7 +125,7 @@ def main():
             jt_rss.append(rss)
             rates.append(rays / seconds / 1e6)  # while rendering, as the CLI reports
             if not args.no_povray:
-                wall, cpu, _, _ = run_timed(pov_command)
+                wall, cpu, _, _ = run_timed(pov_command, attempts=3)
                 pov_walls.append(wall)
                 pov_cpus.append(cpu)
             print(f"  {name} run {run + 1}/{args.runs}: jtracer {jt_walls[-1]:.3f} s"
