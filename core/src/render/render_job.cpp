@@ -100,7 +100,7 @@ struct RenderJob::State {
     RenderOptions options;
     CameraFrame camera;
     // Shapes by direction around camera.position, for the primary rays; built
-    // by the first pass that runs, off the thread that made the job.
+    // by the first full-resolution pass, off the thread that made the job.
     DirectionTable camera_table;
     std::once_flag camera_table_built;
     PixelRect region;
@@ -262,12 +262,17 @@ bool RenderJob::run_pass() {
         index = s.next_pass;
         s.pass_started = std::chrono::steady_clock::now();
     }
-    std::call_once(s.camera_table_built, [&s] {
-        const Geometry& g = *s.scene->geometry;
-        s.camera_table = build_direction_table(
-            g, s.camera.position, table_resolution(g.spheres.size() + g.shapes.size(), true));
-    });
     const RenderPass& pass = s.passes[index];
+    // Previews trace a few rays a block: for them the table (up to tens of ms
+    // for thousands of shapes) would cost more than it saves and delay the
+    // viewer's first picture. Passes run one at a time, so no tile reads the
+    // table while it is built.
+    if (pass.block == 1)
+        std::call_once(s.camera_table_built, [&s] {
+            const Geometry& g = *s.scene->geometry;
+            s.camera_table = build_direction_table(
+                g, s.camera.position, table_resolution(g.spheres.size() + g.shapes.size(), true));
+        });
     const std::vector<PixelRect> tiles = cut_tiles(s.region, pass.block, tile_blocks);
     if (s.tiles_pass != index) {  // a fresh pass, not one resumed after a cancel
         s.tiles_pass = index;
