@@ -20,18 +20,7 @@ namespace {
 // A crowd of spheres, ellipsoids and cylinders around the origin.
 Scene crowd(int count, unsigned seed) {
     std::mt19937 rng(seed);
-    std::uniform_real_distribution<double> u(-6.0, 6.0), r(0.1, 1.2), angle(0.0, 360.0);
-    Scene scene;
-    for (int i = 0; i < count; ++i) {
-        Primitive p =
-            i % 3 == 2 ? cylinder(r(rng), 2 * r(rng)) : sphere({u(rng), u(rng), u(rng)}, r(rng));
-        if (i % 3 != 0)
-            p.transforms = {
-                scale({r(rng), r(rng), r(rng)}), rotate(TransformKind::xrotate, angle(rng)),
-                rotate(TransformKind::yrotate, angle(rng)), translate({u(rng), u(rng), u(rng)})};
-        scene.primitives.push_back(p);
-    }
-    return scene;
+    return random_crowd(rng, count, 6.0, 1.2);
 }
 
 bool blocks(const Geometry& g, std::uint32_t candidate, const Vec3& o, const Vec3& d,

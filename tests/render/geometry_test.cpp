@@ -84,17 +84,8 @@ TEST(Intersect, CylinderPartsAndRims) {
 // through a crowd of spheres, ellipsoids and cylinders.
 TEST(RayQueries, BvhAgreesWithBruteForce) {
     std::mt19937 rng(7);
-    std::uniform_real_distribution<double> u(-10.0, 10.0), r(0.1, 1.5), angle(0.0, 360.0);
-    Scene scene;
-    for (int i = 0; i < 600; ++i) {
-        Primitive p =
-            i % 3 == 2 ? cylinder(r(rng), 2 * r(rng)) : sphere({u(rng), u(rng), u(rng)}, r(rng));
-        if (i % 3 != 0)
-            p.transforms = {
-                scale({r(rng), r(rng), r(rng)}), rotate(TransformKind::xrotate, angle(rng)),
-                rotate(TransformKind::yrotate, angle(rng)), translate({u(rng), u(rng), u(rng)})};
-        scene.primitives.push_back(p);
-    }
+    std::uniform_real_distribution<double> u(-10.0, 10.0);
+    Scene scene = random_crowd(rng, 600, 10.0, 1.5);
     scene.primitives.push_back(plane({0.2, 1, 0.1}, -12.0));
     auto prepared = prepare_scene(scene);
     const Geometry& g = *prepared->geometry;

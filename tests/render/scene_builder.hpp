@@ -6,6 +6,8 @@
 #include "jtracer/render_job.hpp"
 #include "jtracer/scene.hpp"
 
+#include <random>
+
 namespace jt::test {
 
 inline Camera camera_at(const Vec3& position, const Vec3& look_at, const Vec3& up = {0, 1, 0},
@@ -89,6 +91,24 @@ inline Rgb expected(const Colour& c) {
 
 inline std::ostream& operator<<(std::ostream& os, const Rgb& c) {
     return os << "(" << c.r << ", " << c.g << ", " << c.b << ")";
+}
+
+// `count` shapes scattered in [-extent, extent]^3, sizes up to `max_size`:
+// every third a plain sphere, the others an ellipsoid (a transformed sphere)
+// or a transformed cylinder. A crowd for checking ray queries against each other.
+inline Scene random_crowd(std::mt19937& rng, int count, double extent, double max_size) {
+    std::uniform_real_distribution<double> u(-extent, extent), r(0.1, max_size), angle(0.0, 360.0);
+    Scene scene;
+    for (int i = 0; i < count; ++i) {
+        Primitive p =
+            i % 3 == 2 ? cylinder(r(rng), 2 * r(rng)) : sphere({u(rng), u(rng), u(rng)}, r(rng));
+        if (i % 3 != 0)
+            p.transforms = {
+                scale({r(rng), r(rng), r(rng)}), rotate(TransformKind::xrotate, angle(rng)),
+                rotate(TransformKind::yrotate, angle(rng)), translate({u(rng), u(rng), u(rng)})};
+        scene.primitives.push_back(p);
+    }
+    return scene;
 }
 
 }  // namespace jt::test
