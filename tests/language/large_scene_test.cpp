@@ -1,5 +1,5 @@
 // Scenes large enough that the parser reserves its arrays for 2 MiB pages
-// (reserve_records.hpp): the records must come out the same as for a small
+// (io/reserve_records.hpp): the records must come out the same as for a small
 // scene, with and without the source map.
 
 #include "test_util.hpp"

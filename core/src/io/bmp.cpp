@@ -1,5 +1,7 @@
 #include "jtracer/bmp.hpp"
 
+#include "io/reserve_records.hpp"
+
 #include "io/file_bytes.hpp"
 #include "jtracer/atomic_file.hpp"
 
@@ -40,7 +42,7 @@ std::uint32_t get32(const std::uint8_t* p) {
 std::vector<std::uint8_t> encode_bmp(const Image8& image) {
     const std::size_t stride = row_stride(image.width);
     const std::size_t pixel_bytes = stride * static_cast<std::size_t>(image.height);
-    std::vector<std::uint8_t> out(header_size + pixel_bytes, 0);
+    std::vector<std::uint8_t> out = zeroed_records<std::uint8_t>(header_size + pixel_bytes);
     std::uint8_t* h = out.data();
     h[0] = 'B';
     h[1] = 'M';

@@ -7,10 +7,10 @@
 
 #include "jtracer/parser.hpp"
 
+#include "io/reserve_records.hpp"
 #include "language/lexer.hpp"
 #include "language/number_text.hpp"
 #include "language/properties.hpp"
-#include "language/reserve_records.hpp"
 #include "language/suggest.hpp"
 
 #include <algorithm>

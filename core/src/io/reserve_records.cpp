@@ -1,4 +1,4 @@
-#include "language/reserve_records.hpp"
+#include "io/reserve_records.hpp"
 
 #include "io/huge_pages.hpp"
 
@@ -9,7 +9,7 @@
 #endif
 #endif
 
-namespace jt::lang::detail {
+namespace jt::detail {
 
 namespace {
 // A pointer this close past a 2 MiB boundary starts its own mapping: only
@@ -34,4 +34,4 @@ void advise_huge_records(const void* data, std::size_t bytes) {
 #endif
 }
 
-}  // namespace jt::lang::detail
+}  // namespace jt::detail

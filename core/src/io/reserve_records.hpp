@@ -1,5 +1,6 @@
 #pragma once
-// Reserving the parser's large arrays so that they fill without 4 KiB page faults.
+// Reserving large arrays (the parser's records, images) so that they fill
+// without 4 KiB page faults.
 //
 // The parser fills a few arrays once, front to back, in memory fresh from the
 // kernel. On the team's VM a 4 KiB page fault costs ~18 us (16 MiB filled:
@@ -22,7 +23,7 @@
 #include <exception>
 #include <vector>
 
-namespace jt::lang {
+namespace jt {
 
 namespace detail {
 
@@ -64,4 +65,15 @@ void reserve_records(std::vector<T>& records, std::size_t count) {
     }
 }
 
-}  // namespace jt::lang
+// A zero-filled array of `count` records, reserved as above: for buffers of
+// megabytes written once (an image, a BMP file's bytes), where 4 KiB faults
+// cost ~18 ms for a 1920x1080 image.
+template <class T>
+std::vector<T> zeroed_records(std::size_t count) {
+    std::vector<T> records;
+    reserve_records(records, count);
+    records.resize(count);
+    return records;
+}
+
+}  // namespace jt
