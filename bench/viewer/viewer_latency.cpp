@@ -9,8 +9,9 @@
 // Runs the viewer's own code (loader thread, AppState, frame loop, render
 // controller, presenter) in an OSMesa context, as the tests do. Each event is
 // timed at three points: the render started (the frame that took the load or
-// the edit in), the first pass rendered by the core, and the first pass in the
-// texture (the frame that fetched and uploaded it, after glFinish). Frames are
+// the edit in), the first pass rendered by the core (on the render thread), and
+// the first pass in the texture (the frame that fetched and uploaded it, after
+// glFinish: AppState::passes_shown). Frames are
 // paced at 60 per second, as the window's vsync paces them (--pace 0: back to
 // back), so the last figure includes up to one frame interval. Between frames
 // the loop sleeps while the window's loop would (waiting_for_workers: a load or
@@ -60,8 +61,7 @@ struct Timing {
     double started_ms = 0;     // the frame that started the render ended
     double start_call_ms = 0;  // inside that frame, the render was started
     double prepared_ms = 0;    // the render thread prepared the scene and made the job
-    double first_pass_ms = 0;  // the render thread finished the first pass
-    double rendered_ms = 0;    // the start of the frame that saw the first pass done
+    double rendered_ms = 0;    // the render thread finished the first pass
     double shown_ms = 0;       // the first pass is in the texture
 };
 
@@ -78,7 +78,7 @@ void add_steps(Timing& timing, const AppState& state, Clock::time_point t0, bool
     const RunTimeline run = state.renderer.timeline();
     timing.start_call_ms = ms_between(t0, run.started);
     if (run.prepared) timing.prepared_ms = ms_between(t0, *run.prepared);
-    if (run.first_pass) timing.first_pass_ms = ms_between(t0, *run.first_pass);
+    if (run.first_pass) timing.rendered_ms = ms_between(t0, *run.first_pass);
     if (!load) return;
     const LoadTimes& l = state.last_load_times;
     timing.load_started_ms = ms_between(t0, l.started);
@@ -112,16 +112,13 @@ Timing frames_until_first_pass(HeadlessViewer& viewer, AppState& state, Clock::t
     Timing timing;
     const auto deadline = t0 + std::chrono::seconds(60);
     for (auto frame_start = t0;; frame_start = Clock::now()) {
-        // Whatever the core has finished before this frame, the frame fetches.
-        const RenderProgress p = state.renderer.progress();
-        const bool new_job = state.renderer.jobs_started() > jobs_before;
-        const bool first_pass_done = new_job && p.pass_count > 0 && (p.pass >= 1 || p.finished);
-        if (first_pass_done && timing.rendered_ms == 0) timing.rendered_ms = ms_since(t0);
         viewer.frame(state);
         glFinish();
-        if (timing.started_ms == 0 && state.renderer.jobs_started() > jobs_before)
-            timing.started_ms = ms_since(t0);  // this frame started it
-        if (first_pass_done) {
+        const bool new_job = state.renderer.jobs_started() > jobs_before;
+        if (timing.started_ms == 0 && new_job) timing.started_ms = ms_since(t0);  // this frame
+        // The frame fetched the first pass (in the frame that started the
+        // render, when it came within the wait; else in a later one).
+        if (new_job && state.passes_shown >= 1) {
             timing.shown_ms = ms_since(t0);
             add_steps(timing, state, t0, load);
             return timing;
@@ -160,7 +157,6 @@ void print(const Series& s, bool steps) {
         stats(&Timing::taken_ms, "  frame took the load");
         stats(&Timing::start_call_ms, "  render start()");
         stats(&Timing::prepared_ms, "  scene prepared");
-        stats(&Timing::first_pass_ms, "  first pass done");
     }
     stats(&Timing::started_ms, "render started");
     stats(&Timing::rendered_ms, "first pass rendered");

@@ -374,10 +374,13 @@ void update_render(AppState& state) {
             }
         }
     }
-    // Read `finished` before fetching: a fetch after it has every last pixel.
+    // Read `finished` and the progress before fetching: a fetch after them has
+    // every pixel they count.
     const bool finished = state.renderer.finished();
+    const RenderProgress progress = state.renderer.progress();
     if (auto changed = state.renderer.fetch(state.display))
         state.presenter.upload(state.display, changed);
+    state.passes_shown = progress.finished ? progress.pass_count : progress.pass;
     if (finished && state.started) state.display_complete = true;
 }
 

@@ -89,6 +89,7 @@ struct AppState {
     std::string rejected_reason;
     bool paused = false;
     bool display_complete = false;  // the display holds every pixel of the finished render
+    int passes_shown = 0;           // passes of the current render whose pixels are in the texture
     Image8 display;                 // what the texture holds
     Presenter presenter;
     FitMode fit = FitMode::fit;
