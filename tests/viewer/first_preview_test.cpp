@@ -26,17 +26,6 @@ namespace {
 using namespace jt::view::test;
 using Clock = std::chrono::steady_clock;
 
-Scene showcase(int width, int height) {
-    std::ifstream in(std::string(JT_SOURCE_DIR) + "/scenes/showcase.jts", std::ios::binary);
-    std::stringstream text;
-    text << in.rdbuf();
-    ParseResult parsed = parse_scene(text.str());
-    EXPECT_TRUE(parsed.ok());
-    parsed.scene.settings.width = width;
-    parsed.scene.settings.height = height;
-    return parsed.scene;
-}
-
 RenderOptions options_for(const Scene& scene, bool previews) {
     RenderOptions options;
     options.width = scene.settings.width;
@@ -58,7 +47,7 @@ bool made_of_blocks(const Image8& image, int block) {
 
 TEST(FirstPreview, LargeImageStartsAtOneSixteenthAndEndsWithTheSamePixels) {
     // 768x432 at 1/8 would be 96 x 54 = 5184 rays: over the 4096 of a first preview.
-    const Scene scene = showcase(768, 432);
+    const Scene scene = showcase_at(768, 432);
     const auto prepared = prepare_scene(scene);
     RenderJob job(prepared, options_for(scene, true));
     EXPECT_EQ(job.progress().pass_name, "preview 1/16");
@@ -73,14 +62,14 @@ TEST(FirstPreview, LargeImageStartsAtOneSixteenthAndEndsWithTheSamePixels) {
 }
 
 TEST(FirstPreview, SmallImageStartsAtOneEighth) {
-    const Scene scene = showcase(512, 288);  // 64 x 36 = 2304 rays at 1/8
+    const Scene scene = showcase_at(512, 288);  // 64 x 36 = 2304 rays at 1/8
     RenderJob job(prepare_scene(scene), options_for(scene, true));
     EXPECT_EQ(job.progress().pass_name, "preview 1/8");
     EXPECT_EQ(job.progress().pass_count, 4);
 }
 
 TEST(FirstPreview, BackgroundJobRunsLowerAndRendersTheSamePixels) {
-    const Scene scene = showcase(96, 54);
+    const Scene scene = showcase_at(96, 54);
     const auto prepared = prepare_scene(scene);
     RenderOptions options = options_for(scene, true);
     options.threads = 1;  // only the calling thread: the test's own workers stay as they are
@@ -169,7 +158,7 @@ TEST(Wakeup, FrameThatStartsTheRenderShowsAFirstPassDoneWithinTheWait) {
 }
 
 TEST(RenderReuse, MaterialEditReusesTheGeometryAndRendersTheEditedScene) {
-    Scene scene = showcase(160, 90);
+    Scene scene = showcase_at(160, 90);
     const RenderOptions options = options_for(scene, true);
     RenderController renderer;
     auto render = [&](const Scene& s) {

@@ -5,6 +5,7 @@
 
 #include "jtracer/parser.hpp"
 #include "jtracer/render_job.hpp"
+#include "viewer_test_files.hpp"
 
 #include <gtest/gtest.h>
 
@@ -16,16 +17,7 @@
 namespace jt {
 namespace {
 
-Scene showcase(int width, int height) {
-    std::ifstream in(std::string(JT_SOURCE_DIR) + "/scenes/showcase.jts", std::ios::binary);
-    std::stringstream text;
-    text << in.rdbuf();
-    ParseResult parsed = parse_scene(text.str());
-    EXPECT_TRUE(parsed.ok());
-    parsed.scene.settings.width = width;
-    parsed.scene.settings.height = height;
-    return parsed.scene;
-}
+using view::test::showcase_at;
 
 RenderOptions options_for(const Scene& scene, int samples) {
     RenderOptions options;
@@ -37,7 +29,7 @@ RenderOptions options_for(const Scene& scene, int samples) {
 }
 
 TEST(RenderResume, CancelledAndResumedJobEndsWithTheUninterruptedImage) {
-    const Scene scene = showcase(160, 96);
+    const Scene scene = showcase_at(160, 96);
     const auto prepared = prepare_scene(scene);
     const RenderOptions options = options_for(scene, 8);
     RenderJob reference(prepared, options);
@@ -70,7 +62,7 @@ TEST(RenderResume, CancelledAndResumedJobEndsWithTheUninterruptedImage) {
 }
 
 TEST(RenderResume, ResumeRunsOnlyThePassesLeft) {
-    const Scene scene = showcase(64, 36);
+    const Scene scene = showcase_at(64, 36);
     RenderJob job(prepare_scene(scene), options_for(scene, 4));
     ASSERT_TRUE(job.run_pass());  // preview 1/8
     ASSERT_TRUE(job.run_pass());  // preview 1/4

@@ -3,6 +3,9 @@
 // whole-file reads and writes.
 
 #include "app_state.hpp"
+#include "jtracer/parser.hpp"
+
+#include <gtest/gtest.h>
 
 #include <chrono>
 #include <filesystem>
@@ -28,6 +31,15 @@ inline std::string read(const fs::path& path) {
 
 inline void write(const fs::path& path, const std::string& text) {
     std::ofstream(path, std::ios::binary) << text;
+}
+
+// scenes/showcase.jts at another size.
+inline Scene showcase_at(int width, int height) {
+    ParseResult parsed = parse_scene(read(fs::path(JT_SOURCE_DIR) / "scenes" / "showcase.jts"));
+    EXPECT_TRUE(parsed.ok());
+    parsed.scene.settings.width = width;
+    parsed.scene.settings.height = height;
+    return parsed.scene;
 }
 
 // A copy of the test scene in a fresh folder, for tests that change the file.
