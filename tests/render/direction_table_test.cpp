@@ -178,6 +178,20 @@ TEST(DirectionTable, CellsAreFewAndSmallForSparseShapes) {
     EXPECT_FALSE(shapes_toward(table, {0, 0, 0}));
 }
 
+TEST(DirectionTable, NoneWhenShapesSurroundThePoint) {
+    // Shells around the light: each is listed in every cell, so the table
+    // would hold millions of listings. None is built; the BVH answers.
+    Scene scene;
+    for (int i = 0; i < 1500; ++i) scene.primitives.push_back(sphere({0, 0, 0}, 1.0 + 0.01 * i));
+    auto prepared = prepare_scene(scene);
+    const Geometry& g = *prepared->geometry;
+    DirectionTable table = build_direction_table(g, {0, 0, 0}, table_resolution(1500, false));
+    EXPECT_EQ(table.resolution, 0);
+    EXPECT_TRUE(table.shapes.empty());
+    EXPECT_FALSE(shapes_toward(table, {1, 0, 0}));
+    EXPECT_TRUE(occluded(g, {0, 0, 20}, {0, 0, -1}, 0.0, 20.0, nullptr, &table));
+}
+
 TEST(DirectionTable, NoneWhenTheTablesWouldCostMoreThanTheySave) {
     auto prepared = prepare_scene(crowd(300, 13));
     std::vector<PointLight> lights(300, PointLight{{0, 20, 0}, Colour(1.0)});

@@ -20,6 +20,11 @@ namespace {
 // cell's long list anyway.
 constexpr std::size_t max_table_work = std::size_t{1} << 16;
 
+// Past this many listings (shapes around the point, listed in every cell)
+// the cells are too full to beat the BVH, and the table would take hundreds
+// of MB: no table then.
+constexpr std::size_t max_listed = std::size_t{1} << 22;
+
 // Bounding spheres wider than this many radians, seen from the light, go in
 // every cell rather than being rasterised.
 constexpr double max_cone_angle = 1.2;
@@ -184,10 +189,14 @@ DirectionTable build_direction_table(const Geometry& geometry, const Vec3& posit
             pairs.emplace_back(static_cast<std::uint32_t>(cell), candidate);
         });
     };
-    for (std::uint32_t i = 0; i < geometry.spheres.size(); ++i)
+    for (std::uint32_t i = 0; i < geometry.spheres.size(); ++i) {
         add_shape({geometry.spheres[i].center, geometry.spheres[i].radius}, i, i);
-    for (std::uint32_t i = 0; i < geometry.shapes.size(); ++i)
+        if (pairs.size() > max_listed) return {};
+    }
+    for (std::uint32_t i = 0; i < geometry.shapes.size(); ++i) {
         add_shape(bounding_sphere(geometry.shapes[i]), i | shape_flag, geometry.spheres.size() + i);
+        if (pairs.size() > max_listed) return {};
+    }
     auto nearest = [&](std::uint32_t candidate) {
         return candidate & shape_flag
                    ? nearest_of[geometry.spheres.size() + (candidate & ~shape_flag)]
