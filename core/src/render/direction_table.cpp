@@ -48,10 +48,9 @@ double max_abs(const Vec3& v) {
     return std::max({std::abs(v.x), std::abs(v.y), std::abs(v.z)});
 }
 
+// prepare_scene gives every shape a bounding sphere around its padded box.
 BoundingSphere bounding_sphere(const TransformedShape& s) {
-    Vec3 lower(s.bounds.lower_x, s.bounds.lower_y, s.bounds.lower_z);
-    Vec3 upper(s.bounds.upper_x, s.bounds.upper_y, s.bounds.upper_z);
-    return {0.5 * (lower + upper), 0.5 * glm::length(upper - lower)};
+    return {s.bounding_center, std::sqrt(s.bounding_radius_sq)};
 }
 
 }  // namespace

@@ -168,21 +168,35 @@ void closest_by_testing_all(ClosestQuery& q) {
         if (!misses_bounds(g.shapes[i], q.origin, q.direction)) offer_shape(q, i);
 }
 
+// Whether `listed` (a sphere index, or a shape index with shape_flag, as in
+// the direction tables) blocks the ray; a shape's bounding sphere is tried
+// before its exact test.
+bool listed_blocks(const Geometry& g, std::uint32_t listed, const Vec3& origin,
+                   const Vec3& direction, double t_min, double t_max) {
+    const std::uint32_t i = listed & ~shape_flag;
+    if (!(listed & shape_flag)) {
+        const WorldSphere& s = g.spheres[i];
+        return intersect_sphere(origin, direction, s.center, s.radius, t_min, t_max) != no_hit;
+    }
+    const TransformedShape& s = g.shapes[i];
+    CylinderPart part;
+    return !misses_bounds(s, origin, direction) &&
+           shape_distance(s, origin, direction, t_min, t_max, part) != no_hit;
+}
+
+OccluderHint hint_for(std::uint32_t listed) {
+    return {listed & shape_flag ? OccluderHint::Set::shape : OccluderHint::Set::sphere,
+            listed & ~shape_flag};
+}
+
 bool occluded_by_testing_all(const Geometry& g, const Vec3& origin, const Vec3& direction,
                              double t_min, double t_max, OccluderHint& blocker) {
-    for (std::uint32_t i = 0; i < g.spheres.size(); ++i) {
-        const WorldSphere& s = g.spheres[i];
-        if (intersect_sphere(origin, direction, s.center, s.radius, t_min, t_max) != no_hit) {
-            blocker = {OccluderHint::Set::sphere, i};
-            return true;
-        }
-    }
-    CylinderPart part;
-    for (std::uint32_t i = 0; i < g.shapes.size(); ++i) {
-        const TransformedShape& s = g.shapes[i];
-        if (!misses_bounds(s, origin, direction) &&
-            shape_distance(s, origin, direction, t_min, t_max, part) != no_hit) {
-            blocker = {OccluderHint::Set::shape, i};
+    const auto spheres = static_cast<std::uint32_t>(g.spheres.size());
+    const auto shapes = static_cast<std::uint32_t>(g.shapes.size());
+    for (std::uint32_t k = 0; k < spheres + shapes; ++k) {
+        const std::uint32_t listed = k < spheres ? k : (k - spheres) | shape_flag;
+        if (listed_blocks(g, listed, origin, direction, t_min, t_max)) {
+            blocker = hint_for(listed);
             return true;
         }
     }
@@ -195,23 +209,10 @@ bool occluded_by_testing_all(const Geometry& g, const Vec3& origin, const Vec3& 
 bool occluded_by_listed(const Geometry& g, const ListedShapes& listed, const Vec3& origin,
                         const Vec3& direction, double t_min, double t_max, OccluderHint& blocker) {
     const double reach = t_max * glm::length(direction) * (1.0 + 1e-9);
-    CylinderPart part;
     for (std::size_t k = 0; k < listed.size() && listed.nearest[k] < reach; ++k) {
-        const std::uint32_t candidate = listed.shapes[k];
-        const std::uint32_t i = candidate & ~shape_flag;
-        if (candidate & shape_flag) {
-            const TransformedShape& s = g.shapes[i];
-            if (!misses_bounds(s, origin, direction) &&
-                shape_distance(s, origin, direction, t_min, t_max, part) != no_hit) {
-                blocker = {OccluderHint::Set::shape, i};
-                return true;
-            }
-        } else {
-            const WorldSphere& s = g.spheres[i];
-            if (intersect_sphere(origin, direction, s.center, s.radius, t_min, t_max) != no_hit) {
-                blocker = {OccluderHint::Set::sphere, i};
-                return true;
-            }
+        if (listed_blocks(g, listed.shapes[k], origin, direction, t_min, t_max)) {
+            blocker = hint_for(listed.shapes[k]);
+            return true;
         }
     }
     return false;
@@ -233,7 +234,6 @@ void closest_by_listed(ClosestQuery& q, const ListedShapes& listed) {
 // Whether the hinted surface blocks the ray; false for no hint or a stale one.
 bool hinted_blocks(const Geometry& g, const OccluderHint& hint, const Vec3& origin,
                    const Vec3& direction, double t_min, double t_max) {
-    CylinderPart part;
     switch (hint.set) {
         case OccluderHint::Set::none:
             return false;
@@ -242,13 +242,11 @@ bool hinted_blocks(const Geometry& g, const OccluderHint& hint, const Vec3& orig
             return intersect_plane(origin, direction, g.planes[hint.index].normal,
                                    g.planes[hint.index].distance, t_min, t_max) != no_hit;
         case OccluderHint::Set::sphere:
-            if (hint.index >= g.spheres.size()) return false;
-            return intersect_sphere(origin, direction, g.spheres[hint.index].center,
-                                    g.spheres[hint.index].radius, t_min, t_max) != no_hit;
+            return hint.index < g.spheres.size() &&
+                   listed_blocks(g, hint.index, origin, direction, t_min, t_max);
         case OccluderHint::Set::shape:
-            if (hint.index >= g.shapes.size()) return false;
-            return shape_distance(g.shapes[hint.index], origin, direction, t_min, t_max, part) !=
-                   no_hit;
+            return hint.index < g.shapes.size() &&
+                   listed_blocks(g, hint.index | shape_flag, origin, direction, t_min, t_max);
     }
     return false;
 }

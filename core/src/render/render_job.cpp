@@ -148,10 +148,6 @@ struct RenderJob::State {
     // The full-size image, black outside the region; image_mutex held.
     Image8 full_image() const {
         Image8 full(options.width, options.height);  // not a copy: see Image8's constructor
-        if (image.width == options.width && image.height == options.height) {
-            std::copy(image.rgb.begin(), image.rgb.end(), full.rgb.begin());
-            return full;
-        }
         const std::size_t row_bytes = static_cast<std::size_t>(region.width()) * 3;
         for (int y = region.y0; y < region.y1; ++y)
             std::copy_n(image.pixel(0, y - region.y0), row_bytes, full.pixel(region.x0, y));
