@@ -4,7 +4,7 @@
 // It reads the file with the core's own parser, so it sees exactly what
 // JTracer sees. POV-Ray is left-handed, so every point, vector and transform is
 // mirrored in z (S = diag(1, 1, -1); a map M becomes S M S), which shows the
-// same image. Shading maps term by term (SEMANTICS.md 6):
+// same image. Shading maps term by term (docs/language.md §8.1):
 //   ambient_light * ambient * pigment -> global ambient_light, finish ambient (a colour)
 //   diffuse * pigment * (N.L)^(1/diffuse_k) -> finish diffuse, brilliance 1/diffuse_k
 //   specular * (R.V)^specular_k -> phong, phong_size (POV-Ray's phong is a number:
@@ -119,7 +119,7 @@ void write_primitive(PovWriter& out, const jt::Primitive& p) {
 }
 
 void write_camera(PovWriter& out, const jt::Camera& camera) {
-    // SEMANTICS.md 5: the ray is f + sx r + sy u with |sx| <= t * aspect, |sy| <= t.
+    // docs/language.md §7: the ray is f + sx r + sy u with |sx| <= t * aspect, |sy| <= t.
     // POV-Ray spans `right` and `up` over the image and scales `direction` so that
     // `angle` is the full horizontal field of view: 2 atan(t * aspect).
     Vec3 f = glm::normalize(camera.look_at - camera.position);

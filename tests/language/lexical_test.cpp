@@ -1,4 +1,4 @@
-// SEMANTICS.md section 1: lexical rules.
+// docs/language.md §2: lexical rules.
 
 #include "test_util.hpp"
 

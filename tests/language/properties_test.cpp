@@ -1,4 +1,4 @@
-// SEMANTICS.md section 3: every property's default, kind and range.
+// docs/language.md §4: every property's default, kind and range.
 
 #include "test_util.hpp"
 

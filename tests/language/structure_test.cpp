@@ -1,4 +1,4 @@
-// SEMANTICS.md section 2: structure, recovery and the diagnostics it gives.
+// docs/language.md §3 and §11: structure, recovery and the diagnostics it gives.
 
 #include "test_util.hpp"
 

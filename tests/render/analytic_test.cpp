@@ -1,4 +1,4 @@
-// Pixels whose values are worked out by hand from SEMANTICS.md 4-6, one rule at
+// Pixels whose values are worked out by hand from docs/language.md §5-§8, one rule at
 // a time. Most use a 1x1 image: its one ray runs exactly from the camera
 // position through look_at, so each scene is aimed where the rule shows.
 
@@ -236,7 +236,7 @@ TEST(Analytic, TwoSidedNormals) {
     EXPECT_EQ(at(render(below), 0, 0), expected(Colour(0.5)));
 }
 
-// SEMANTICS.md 5: pixel (i, j) from the bottom left looks along
+// docs/language.md §7.3: pixel (i, j) from the bottom left looks along
 // f + sx r + sy u with sx = (2 (i + 0.5) / w - 1) t aspect, sy = (2 (j + 0.5) / h - 1) t.
 // With fov 90 (t = 1), aspect 2 and a 4x2 image, pixel (3, 1), top right, looks
 // along (1.5, 0.5, -1). A small ball on that line shows in that pixel alone.

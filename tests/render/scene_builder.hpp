@@ -1,6 +1,6 @@
 #pragma once
 // Small scenes built in code, for tests whose expected pixels are worked out by
-// hand from SEMANTICS.md.
+// hand from docs/language.md.
 
 #include "jtracer/image.hpp"
 #include "jtracer/render_job.hpp"

@@ -1,7 +1,7 @@
 #pragma once
 // Writing a file so that readers only ever see the old file or the whole new
 // one: the bytes go to a temporary file beside the target, which is then
-// renamed over it (SEMANTICS.md 7). A failure leaves no file behind.
+// renamed over it (docs/language.md §10.3). A failure leaves no file behind.
 
 #include <cstdint>
 #include <filesystem>

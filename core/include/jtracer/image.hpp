@@ -1,7 +1,7 @@
 #pragma once
 // Images as plain pixel arrays.
 //
-// Pixel (x, y) follows SEMANTICS.md section 5: x from the left, y from the
+// Pixel (x, y) follows docs/language.md §7.3: x from the left, y from the
 // bottom. Row 0 is the bottom row, as in a BMP and an OpenGL texture.
 
 #include <cstdint>
@@ -35,7 +35,7 @@ struct PixelRect {
     bool operator==(const PixelRect&) const = default;
 };
 
-// The value SEMANTICS.md section 6 writes for a channel: floor(clamp(c, 0, 1) * 255 + 0.5).
+// The value docs/language.md §8.6 writes for a channel: floor(clamp(c, 0, 1) * 255 + 0.5).
 std::uint8_t quantize_channel(double c);
 
 }  // namespace jt

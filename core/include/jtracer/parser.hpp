@@ -1,6 +1,6 @@
 #pragma once
 // .jts text -> Scene + diagnostics. A pure function: it never throws and never
-// crashes, whatever the bytes (SEMANTICS.md sections 1-3).
+// crashes, whatever the bytes (docs/language.md §2-§4).
 
 #include "jtracer/diagnostics.hpp"
 #include "jtracer/scene.hpp"

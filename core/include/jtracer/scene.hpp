@@ -4,7 +4,7 @@
 // A Scene is a value: copy it, compare it with ==, serialise it (serializer.hpp).
 // It holds no source positions; where each part came from lives beside it in a
 // SceneSource (source_map.hpp), so that two files that mean the same scene
-// compare equal. Every default below is the one SEMANTICS.md section 3 gives.
+// compare equal. Every default below is the one docs/language.md §4 gives.
 
 #include <glm/vec3.hpp>
 

@@ -1,5 +1,5 @@
 #pragma once
-// Whole-scene checks that no single property can make (SEMANTICS.md sections 2-4).
+// Whole-scene checks that no single property can make (docs/language.md §4.9).
 //
 // Run after parsing and after any overrides (the CLI's --width/--height/--camera,
 // the viewer's edits), so that the checks see the values that will render.

@@ -300,7 +300,7 @@ void write_cameras(SourceWriter& w, const SceneSource& source, const Scene& a, c
     for (std::size_t i = kept; i < a.cameras.size(); ++i) w.remove(source.cameras[i]);
     for (std::size_t i = 0; i < kept; ++i) {
         for (const auto& [name, value] : camera_changes(w, a.cameras[i], b.cameras[i])) {
-            // `active_camera` inside a camera is read as its name (SEMANTICS.md 2).
+            // `active_camera` inside a camera is read as its name (docs/language.md §3.5).
             if (name == "name")
                 w.set(source.cameras[i], name, value, {"active_camera"});
             else

@@ -1,5 +1,5 @@
 #pragma once
-// Splits .jts text into tokens (SEMANTICS.md section 1). Tokens are views into
+// Splits .jts text into tokens (docs/language.md §2). Tokens are views into
 // the text: lexing allocates nothing per token.
 
 #include "language/diagnostic_sink.hpp"

@@ -103,7 +103,7 @@ bool PropertyReader::whole_number(const Property& p, int& out, double low, doubl
         kind_error(p, "a whole number like 640");
         return false;
     }
-    double v = std::trunc(p.value.number);  // SEMANTICS: ints truncate toward zero
+    double v = std::trunc(p.value.number);  // docs/language.md §3.2: ints truncate toward zero
     if (v < low || v > high) {
         range_error(p,
                     "must be a whole number from " + number_text(low) + " to " + number_text(high));

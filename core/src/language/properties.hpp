@@ -1,6 +1,6 @@
 #pragma once
 // Reading one property's value into the scene model: kind checks, ranges,
-// int truncation, colour clipping, duplicate warnings (SEMANTICS.md section 3).
+// int truncation, colour clipping, duplicate warnings (docs/language.md §3.2-§4).
 
 #include "jtracer/scene.hpp"
 #include "jtracer/source_map.hpp"

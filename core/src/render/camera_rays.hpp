@@ -1,5 +1,5 @@
 #pragma once
-// Primary rays of a perspective camera (SEMANTICS.md section 5).
+// Primary rays of a perspective camera (docs/language.md §7).
 
 #include "jtracer/scene.hpp"
 

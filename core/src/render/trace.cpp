@@ -13,7 +13,7 @@ namespace jt {
 
 namespace {
 
-constexpr int max_depth = 256;  // SEMANTICS.md 3 clamps recurse_depth here
+constexpr int max_depth = 256;  // docs/language.md §4.1 clamps recurse_depth here
 
 double max_abs(const Vec3& v) {
     return std::max({std::abs(v.x), std::abs(v.y), std::abs(v.z)});

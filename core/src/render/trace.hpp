@@ -1,5 +1,5 @@
 #pragma once
-// Whitted shading of one ray (SEMANTICS.md section 6).
+// Whitted shading of one ray (docs/language.md §8).
 
 #include "render/prepared_scene.hpp"
 
