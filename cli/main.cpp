@@ -3,14 +3,12 @@
 
 #include "memory_budget.hpp"
 #include "options.hpp"
-#include "progress.hpp"
 
+#include "jtracer/frontend/frame_setup.hpp"
+#include "jtracer/frontend/progress.hpp"
 #include "jtracer/image_file.hpp"
-#include "jtracer/region.hpp"
 #include "jtracer/region_file.hpp"
 #include "jtracer/render_job.hpp"
-#include "jtracer/scene_file.hpp"
-#include "jtracer/validate.hpp"
 
 #include <unistd.h>
 
@@ -26,38 +24,13 @@
 namespace {
 
 using namespace jt::cli;
+using namespace jt::frontend;
 
 // The signal that asked the render to stop (SIGINT, SIGTERM), 0 while none has.
 std::atomic<int> interrupted{0};
 
 extern "C" void on_interrupt(int signal) {
     interrupted.store(signal);
-}
-
-std::string camera_names(const jt::Scene& scene) {
-    std::string names;
-    for (const jt::Camera& c : scene.cameras) {
-        if (!names.empty()) names += ", ";
-        names += "\"" + c.name + "\"";
-    }
-    return names.empty() ? "none" : names;
-}
-
-// Command-line values replace the scene's before validation, so that the
-// checks see what will render.
-std::optional<int> apply_overrides(const Options& o, jt::Scene& scene) {
-    if (o.width) scene.settings.width = *o.width;
-    if (o.height) scene.settings.height = *o.height;
-    if (o.samples) scene.settings.samples = *o.samples;
-    if (o.camera) {
-        if (jt::find_camera(scene, *o.camera) < 0) {
-            std::cerr << "jtracer-cli: --camera: the scene has no camera named \"" << *o.camera
-                      << "\" (its cameras: " << camera_names(scene) << ")\n";
-            return exit_usage;
-        }
-        scene.settings.active_camera = *o.camera;
-    }
-    return std::nullopt;
 }
 
 // Runs the job on a thread of its own while this one draws progress and
@@ -81,57 +54,22 @@ bool render(jt::RenderJob& job, bool quiet) {
 }
 
 int run(const Options& o) {
-    // Without the source map: check_scene builds it only if there is something to locate.
-    jt::LoadedScene loaded = jt::load_scene_file(o.scene_path, {.source_map = false});
-    if (!loaded.read_ok()) {
-        std::cerr << "jtracer-cli: " << loaded.io_error << "\n";
-        return exit_io_error;
-    }
-    if (auto code = apply_overrides(o, loaded.parsed.scene)) return *code;
-    std::vector<jt::Diagnostic> diagnostics = jt::check_scene(loaded);
-    const bool errors = jt::has_errors(diagnostics);
-    if (o.quiet && !errors) diagnostics.clear();  // quiet drops warnings, never errors
-    std::cerr << jt::format_diagnostics(diagnostics, loaded.path, loaded.text);
-    if (errors) return exit_scene_error;
+    const FrameSetup setup = set_up_frame("jtracer-cli", o, o.region);
+    std::cerr << setup.message;
+    if (setup.exit_code != exit_ok) return setup.exit_code;
     if (o.check_only) {
-        if (!o.quiet) std::cerr << loaded.path << ": no errors\n";
+        if (!o.quiet) std::cerr << o.scene_path << ": no errors\n";
         return exit_ok;
     }
-    // The text served the diagnostics only: give its memory back before the
-    // renderer builds its own.
-    std::string().swap(loaded.text);
-
-    const jt::Scene& scene = loaded.parsed.scene;
-    // The manual's rule: the scene's filename always yields a BMP; only a name
-    // typed on the command line may ask for PNG.
-    const std::string output = o.output.value_or(scene.settings.filename);
-    const jt::ImageFormat format =
-        o.output ? jt::format_from_extension(output) : jt::ImageFormat::bmp;
-
-    jt::RenderOptions options;
-    options.width = scene.settings.width;
-    options.height = scene.settings.height;
-    options.samples = scene.settings.samples;
-    options.camera = jt::active_camera_index(scene);
-    options.threads = o.threads;
-    options.previews = false;
-    if (o.region) {
-        const std::string error =
-            jt::check_region_in_frame(*o.region, options.width, options.height);
-        if (!error.empty()) {
-            std::cerr << "jtracer-cli: --region: " << error << "\n";
-            return exit_usage;
-        }
-        options.region = jt::to_image_rect(*o.region, options.height);
-    }
-
+    const jt::RenderOptions& options = setup.render;
+    const std::string& output = setup.output;
     if (std::string error = check_render_memory(options, o.region_output); !error.empty()) {
         std::cerr << "jtracer-cli: " << error << "; nothing was written\n";
         return exit_io_error;
     }
     // Until the job exists a signal ends the process at once (nothing is written
     // yet); from here on it cancels the render, which stops within a tile.
-    jt::RenderJob job(jt::prepare_scene(scene), options);
+    jt::RenderJob job(jt::prepare_scene(setup.scene), options);
     std::signal(SIGINT, on_interrupt);
     std::signal(SIGTERM, on_interrupt);
     if (!render(job, o.quiet) || interrupted.load() != 0) {
@@ -144,7 +82,7 @@ int run(const Options& o) {
     const std::string error = o.region_output
                                   ? jt::write_region_bmp(output, job.region_image(),
                                                          {options.width, options.height, *o.region})
-                                  : jt::write_image(output, job.image(), format);
+                                  : jt::write_image(output, job.image(), setup.format);
     if (!error.empty()) {
         std::cerr << "jtracer-cli: " << error << "\n";
         return exit_io_error;

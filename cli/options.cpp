@@ -1,5 +1,4 @@
 #include "options.hpp"
-#include "render_flags.hpp"
 
 #include "jtracer/image_file.hpp"
 
@@ -24,7 +23,7 @@ ParsedOptions parse_options(int argc, char** argv) {
         "Exit codes: 0 ok, 1 errors in the scene, 2 bad command line, 3 file I/O error or\n"
         "not enough memory, 130 interrupted (Ctrl-C), 143 stopped (SIGTERM).\n");
     app.set_version_flag("--version", std::string("jtracer-cli ") + JT_VERSION);
-    add_render_flags(app, o);
+    frontend::add_render_flags(app, o);
     app.add_option_function<std::string>(
            "--region",
            [&o](const std::string& text) {
@@ -54,7 +53,7 @@ ParsedOptions parse_options(int argc, char** argv) {
         parsed.exit_code = app.exit(e);
     } catch (const CLI::ParseError& e) {
         std::cerr << "jtracer-cli: " << e.what() << "\nRun 'jtracer-cli --help' for the options.\n";
-        parsed.exit_code = exit_usage;
+        parsed.exit_code = frontend::exit_usage;
     }
     return parsed;
 }

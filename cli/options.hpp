@@ -1,7 +1,7 @@
 #pragma once
 // jtracer-cli's command line, parsed into a plain struct.
 
-#include "render_flags.hpp"
+#include "jtracer/frontend/render_flags.hpp"
 
 #include "jtracer/region.hpp"
 
@@ -11,7 +11,7 @@
 
 namespace jt::cli {
 
-struct Options : RenderFlags {
+struct Options : frontend::RenderFlags {
     // Render only this window (top-left origin, region.hpp); the rest stays black.
     std::optional<jt::FrameRegion> region;
     bool region_output = false;  // write the region alone, as a region file (region_file.hpp)

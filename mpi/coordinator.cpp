@@ -1,6 +1,6 @@
 #include "coordinator.hpp"
 
-#include "progress.hpp"
+#include "jtracer/frontend/progress.hpp"
 #include "work_tiles.hpp"
 
 #include "jtracer/region.hpp"
@@ -33,7 +33,7 @@ class Coordinator {
 
     CoordinatorResult run(const std::atomic<bool>& stop, bool quiet) {
         const auto start = Clock::now();
-        cli::ProgressDisplay display(quiet, ::isatty(STDERR_FILENO) == 1);
+        frontend::ProgressDisplay display(quiet, ::isatty(STDERR_FILENO) == 1);
         for (int rank = 1; rank < ranks_; ++rank)
             for (int i = 0; i < tiles_ahead; ++i) hand_out(rank);
         start_local_tile();

@@ -5,12 +5,12 @@
 // makes sure every rank ends the same way.
 
 #include "coordinator.hpp"
-#include "frame_setup.hpp"
 #include "mpi_options.hpp"
-#include "progress.hpp"
 #include "work_tiles.hpp"
 #include "worker.hpp"
 
+#include "jtracer/frontend/frame_setup.hpp"
+#include "jtracer/frontend/progress.hpp"
 #include "jtracer/image_file.hpp"
 
 #include <mpi.h>
@@ -27,6 +27,7 @@
 namespace {
 
 using namespace jt::mpi;
+using jt::frontend::FrameSetup;
 using Clock = std::chrono::steady_clock;
 
 std::atomic<bool> interrupted{false};
@@ -90,7 +91,7 @@ int run(int argc, char** argv, int rank, int ranks) {
     if (parsed.exit_code) return *parsed.exit_code;
     const Options& o = parsed.options;
 
-    FrameSetup setup = set_up_frame(o);
+    FrameSetup setup = jt::frontend::set_up_frame("jtracer-mpi", o);
     if (int code = agree_on_setup(setup, rank, ranks); code != exit_ok) return code;
     if (rank == 0) {
         std::signal(SIGINT, on_interrupt);
@@ -122,9 +123,7 @@ int run(int argc, char** argv, int rank, int ranks) {
     std::vector<RankStats> stats(static_cast<std::size_t>(ranks));
     MPI_Gather(&result.stats, sizeof(RankStats), MPI_BYTE, stats.data(), sizeof(RankStats),
                MPI_BYTE, 0, MPI_COMM_WORLD);
-    const std::string error =
-        jt::write_image(setup.output, result.frame,
-                        o.output ? jt::format_from_extension(*o.output) : jt::ImageFormat::bmp);
+    const std::string error = jt::write_image(setup.output, result.frame, setup.format);
     if (!error.empty()) {
         std::cerr << "jtracer-mpi: " << error << "\n";
         return exit_io_error;
@@ -135,8 +134,8 @@ int run(int argc, char** argv, int rank, int ranks) {
         summary.rays = result.rays;
         summary.seconds = result.seconds;
         std::cerr << "wrote " << setup.output << ": "
-                  << jt::cli::render_summary(setup.render.width, setup.render.height,
-                                             setup.render.samples, summary)
+                  << jt::frontend::render_summary(setup.render.width, setup.render.height,
+                                                  setup.render.samples, summary)
                   << ", " << ranks << (ranks == 1 ? " rank" : " ranks") << "\n";
     }
     if (o.stats) print_stats(result, stats, tiles.size(), o.tile_size, total);

@@ -1,5 +1,4 @@
 #include "mpi_options.hpp"
-#include "render_flags.hpp"
 
 #include <CLI/CLI.hpp>
 
@@ -26,7 +25,7 @@ ParsedOptions parse_options(int argc, char** argv, bool speaks) {
         "Exit codes: 0 ok, 1 errors in the scene, 2 bad command line, 3 file I/O errors;\n"
         "a rank that dies or an interrupt aborts the whole job (non-zero, nothing written).\n");
     app.set_version_flag("--version", std::string("jtracer-mpi ") + JT_VERSION);
-    cli::add_render_flags(app, o);
+    frontend::add_render_flags(app, o);
     app.add_option("--tile-size", o.tile_size,
                    "Side of the square tiles handed out to the ranks, in pixels (default 128)")
         ->check(CLI::Range(16, 4096));

@@ -1,21 +1,21 @@
 #pragma once
-// jtracer-mpi's command line: the CLI's render options plus the distribution's
+// jtracer-mpi's command line: the shared render flags (frontend/) plus the distribution's
 // own. Every rank parses the same argv, so every rank reaches the same verdict.
 
-#include "render_flags.hpp"
+#include "jtracer/frontend/render_flags.hpp"
 
 #include <optional>
 
 namespace jt::mpi {
 
-using cli::exit_io_error;
-using cli::exit_ok;
-using cli::exit_scene_error;
-using cli::exit_usage;
+using frontend::exit_io_error;
+using frontend::exit_ok;
+using frontend::exit_scene_error;
+using frontend::exit_usage;
 
-struct Options : cli::RenderFlags {  // threads: per rank
-    int tile_size = 128;             // the unit of work handed out, in pixels a side
-    bool stats = false;              // timings of the coordinator and of every rank
+struct Options : frontend::RenderFlags {  // threads: per rank
+    int tile_size = 128;                  // the unit of work handed out, in pixels a side
+    bool stats = false;                   // timings of the coordinator and of every rank
 };
 
 struct ParsedOptions {

@@ -10,7 +10,6 @@
 #include "jtracer/png.hpp"
 #include "jtracer/render_job.hpp"
 #include "jtracer/scene_file.hpp"
-#include "jtracer/validate.hpp"
 
 #include <gtest/gtest.h>
 
@@ -58,12 +57,7 @@ TEST_P(SceneReference, MatchesItsReferenceImage) {
         << format_diagnostics(diagnostics, loaded.path, loaded.text);
 
     const Scene& scene = loaded.parsed.scene;
-    RenderOptions options;
-    options.width = reference_width;
-    options.height = reference_height;
-    options.samples = scene.settings.samples;
-    options.camera = active_camera_index(scene);
-    Image8 actual = render_image(prepare_scene(scene), options);
+    Image8 actual = render_image(prepare_scene(scene), render_options_for(scene));
 
     const fs::path reference = references_dir / (flat_name(relative) + ".png");
     if (const char* update = std::getenv("JT_UPDATE_REFERENCES"); update && *update == '1') {

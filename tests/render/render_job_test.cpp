@@ -41,9 +41,7 @@ Scene busy_scene(int width, int height, int grid = 8) {
 }
 
 RenderOptions options_for(const Scene& s, int samples, int threads, bool previews) {
-    RenderOptions o;
-    o.width = s.settings.width;
-    o.height = s.settings.height;
+    RenderOptions o = render_options_for(s);
     o.samples = samples;
     o.threads = threads;
     o.previews = previews;

@@ -67,9 +67,7 @@ inline Material glowing(const Colour& pigment) {
 }
 
 inline Image8 render(const Scene& scene, int samples = 1, int threads = 0) {
-    RenderOptions o;
-    o.width = scene.settings.width;
-    o.height = scene.settings.height;
+    RenderOptions o = render_options_for(scene);
     o.samples = samples;
     o.threads = threads;
     return render_image(prepare_scene(scene), o);

@@ -28,10 +28,7 @@ using namespace jt::view::test;
 using Clock = std::chrono::steady_clock;
 
 RenderOptions options_for(const Scene& scene, bool previews) {
-    RenderOptions options;
-    options.width = scene.settings.width;
-    options.height = scene.settings.height;
-    options.samples = scene.settings.samples;
+    RenderOptions options = render_options_for(scene);
     options.previews = previews;
     return options;
 }

@@ -20,9 +20,7 @@ namespace {
 using view::test::showcase_at;
 
 RenderOptions options_for(const Scene& scene, int samples) {
-    RenderOptions options;
-    options.width = scene.settings.width;
-    options.height = scene.settings.height;
+    RenderOptions options = render_options_for(scene);
     options.samples = samples;
     options.previews = true;
     return options;

@@ -25,10 +25,7 @@ using namespace jt::view::test;
 
 // The image the core renders for `scene` through `camera`, without the viewer.
 Image8 core_render(const Scene& scene, int camera) {
-    RenderOptions options;
-    options.width = scene.settings.width;
-    options.height = scene.settings.height;
-    options.samples = scene.settings.samples;
+    RenderOptions options = render_options_for(scene);
     options.camera = camera;
     options.previews = false;
     RenderJob job(prepare_scene(scene), options);
@@ -379,7 +376,7 @@ TEST_F(ViewerGl, OpeningAMissingFileExplainsAndKeepsWhatIsOpen) {
     viewer.frame(state);
     EXPECT_FALSE(state.doc.loaded);
     ASSERT_FALSE(state.doc.diagnostics.empty());
-    EXPECT_NE(state.doc.diagnostics[0].message.find("does not exist"), std::string::npos);
+    EXPECT_NE(state.doc.diagnostics[0].message.find("no such file"), std::string::npos);
     open_scene(state, kScene);
     ASSERT_TRUE(viewer.run_until_complete(state, kTimeout));
     const Image8 good = state.display;

@@ -2,63 +2,30 @@
 
 #include "image_files.hpp"
 #include "jtracer/parser.hpp"
+#include "jtracer/scene_file.hpp"
 #include "jtracer/source_edit.hpp"
-#include "jtracer/validate.hpp"
 
 #include <fstream>
-#include <sstream>
 
 namespace jt::view {
 
-namespace {
-
-constexpr std::uintmax_t max_scene_bytes = 256u << 20;
-
-Diagnostic file_error(std::string message) {
-    return Diagnostic{Severity::error, SourcePos{}, std::move(message)};
-}
-
-}  // namespace
-
-LoadAttempt load_scene_file(const std::filesystem::path& path) {
+LoadAttempt attempt_load(const std::filesystem::path& path) {
     LoadAttempt attempt;
     attempt.times.started = LoadTimes::Clock::now();
-    std::error_code ec;
-    if (!std::filesystem::is_regular_file(path, ec)) {
-        attempt.diagnostics.push_back(file_error(std::filesystem::exists(path, ec)
-                                                     ? "is not a regular file"
-                                                     : "cannot open the file: it does not exist"));
+    // With the source map: saving in place writes edits back at their spans.
+    LoadedScene loaded = load_scene_file(path);
+    // The core reads and parses in one call: both steps end here.
+    attempt.times.read = attempt.times.parsed = LoadTimes::Clock::now();
+    if (!loaded.read_ok()) {
+        attempt.diagnostics.push_back(Diagnostic{Severity::error, SourcePos{}, loaded.io_error});
         return attempt;
     }
-    const std::uintmax_t size = std::filesystem::file_size(path, ec);
-    if (ec) {
-        attempt.diagnostics.push_back(file_error("cannot read the file: " + ec.message()));
-        return attempt;
-    }
-    if (size > max_scene_bytes) {
-        attempt.diagnostics.push_back(file_error("the file is larger than 256 MiB"));
-        return attempt;
-    }
-    std::ifstream in(path, std::ios::binary);
-    std::ostringstream bytes;
-    bytes << in.rdbuf();
-    if (!in && !in.eof()) {
-        attempt.diagnostics.push_back(file_error("cannot read the file"));
-        return attempt;
-    }
-    attempt.text = bytes.str();
-    attempt.times.read = LoadTimes::Clock::now();
-    ParseResult parsed = parse_scene(attempt.text);
-    attempt.times.parsed = LoadTimes::Clock::now();
-    attempt.diagnostics = std::move(parsed.diagnostics);
-    if (!has_errors(attempt.diagnostics)) {
-        std::vector<Diagnostic> more = validate_scene(parsed.scene, parsed.source);
-        attempt.diagnostics.insert(attempt.diagnostics.end(), more.begin(), more.end());
-    }
+    attempt.diagnostics = check_scene(loaded);
     attempt.times.validated = LoadTimes::Clock::now();
     attempt.ok = !has_errors(attempt.diagnostics);
-    attempt.scene = std::move(parsed.scene);
-    attempt.source = std::move(parsed.source);
+    attempt.text = std::move(loaded.text);
+    attempt.scene = std::move(loaded.parsed.scene);
+    attempt.source = std::move(loaded.parsed.source);
     return attempt;
 }
 

@@ -43,9 +43,9 @@ struct LoadAttempt {
     LoadTimes times;
 };
 
-// Reads, parses and validates `path`. Never throws: a missing, unreadable or
-// garbage file comes back as diagnostics.
-LoadAttempt load_scene_file(const std::filesystem::path& path);
+// Reads, parses and validates `path` through the core (scene_file.hpp). A
+// missing, unreadable or garbage file comes back as diagnostics.
+LoadAttempt attempt_load(const std::filesystem::path& path);
 
 // Takes `attempt` into `doc`: on success the scene is replaced, on failure
 // the last good scene stays and only the diagnostics change.

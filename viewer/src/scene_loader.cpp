@@ -63,7 +63,7 @@ void SceneLoader::work() {
         lock.unlock();
         LoadAttempt attempt;
         try {
-            attempt = load_scene_file(request.path);
+            attempt = attempt_load(request.path);
         } catch (const std::exception& e) {  // out of memory, say
             attempt = LoadAttempt{};
             attempt.diagnostics.push_back(Diagnostic{

@@ -64,6 +64,11 @@ struct RenderOptions {
     std::optional<PixelRect> region;
 };
 
+// The options a scene's own settings ask for: its width, height and samples,
+// through its active camera (validate.hpp's active_camera_index). Everything
+// else keeps RenderOptions' defaults, for the caller to set.
+RenderOptions render_options_for(const Scene& scene);
+
 struct RenderProgress {
     int pass = 0;  // index of the pass running or next to run (the last one once finished)
     int pass_count = 0;

@@ -1,14 +1,14 @@
 #pragma once
 // Loading a .jts file: reading it with clear I/O errors, parsing, validating.
-//
-// The CLI's --check and the viewer use it like this:
+// The one way every program loads a scene: the command-line renderers (through
+// frontend/'s set_up_frame) and the viewer (on its loader thread) do this:
 //
 //   jt::LoadedScene loaded = jt::load_scene_file(path);
-//   if (!loaded.read_ok()) { print loaded.io_error; exit 3; }
+//   if (!loaded.read_ok()) { report loaded.io_error; stop; }
 //   ... apply --width/--height/--camera to loaded.parsed.scene ...
 //   auto diagnostics = jt::check_scene(loaded);   // parse + validation
 //   std::cerr << jt::format_diagnostics(diagnostics, loaded.path, loaded.text);
-//   exit(jt::has_errors(diagnostics) ? 1 : 0);
+//   if (jt::has_errors(diagnostics)) stop;
 
 #include "jtracer/diagnostics.hpp"
 #include "jtracer/parser.hpp"

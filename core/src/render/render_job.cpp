@@ -6,6 +6,8 @@
 #include "render/sample_pattern.hpp"
 #include "render/trace.hpp"
 
+#include "jtracer/validate.hpp"
+
 #include <tbb/parallel_for.h>
 #include <tbb/task_arena.h>
 #include <tbb/task_scheduler_observer.h>
@@ -394,6 +396,15 @@ Image8 render_image(std::shared_ptr<const PreparedScene> scene, RenderOptions op
     RenderJob job(std::move(scene), options);
     job.run();
     return job.image();
+}
+
+RenderOptions render_options_for(const Scene& scene) {
+    RenderOptions options;
+    options.width = scene.settings.width;
+    options.height = scene.settings.height;
+    options.samples = scene.settings.samples;
+    options.camera = active_camera_index(scene);
+    return options;
 }
 
 int find_camera(const Scene& scene, std::string_view name) {

@@ -10,7 +10,7 @@ namespace CLI {
 class App;
 }
 
-namespace jt::cli {
+namespace jt::frontend {
 
 // Exit codes, as the README documents them.
 enum ExitCode : int { exit_ok = 0, exit_scene_error = 1, exit_usage = 2, exit_io_error = 3 };
@@ -30,4 +30,4 @@ struct RenderFlags {
 // --threads and -q.
 void add_render_flags(CLI::App& app, RenderFlags& flags);
 
-}  // namespace jt::cli
+}  // namespace jt::frontend

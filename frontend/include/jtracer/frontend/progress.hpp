@@ -1,12 +1,12 @@
 #pragma once
-// What jtracer-cli shows while it renders: a bar with an ETA on a terminal,
-// occasional plain lines in a log, nothing when quiet.
+// What the command-line renderers show while they render: a bar with an ETA
+// on a terminal, occasional plain lines in a log, nothing when quiet.
 
 #include "jtracer/render_job.hpp"
 
 #include <string>
 
-namespace jt::cli {
+namespace jt::frontend {
 
 class ProgressDisplay {
   public:
@@ -28,4 +28,4 @@ std::string format_duration(double seconds);
 // "800x450, 1 sample, 0.84 s, 1.97 M rays, 2.35 Mrays/s"
 std::string render_summary(int width, int height, int samples, const RenderProgress& progress);
 
-}  // namespace jt::cli
+}  // namespace jt::frontend

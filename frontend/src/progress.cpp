@@ -1,9 +1,9 @@
-#include "progress.hpp"
+#include "jtracer/frontend/progress.hpp"
 
 #include <cmath>
 #include <cstdio>
 
-namespace jt::cli {
+namespace jt::frontend {
 
 namespace {
 
@@ -69,4 +69,4 @@ void ProgressDisplay::finish() {
     drawn_ = false;
 }
 
-}  // namespace jt::cli
+}  // namespace jt::frontend

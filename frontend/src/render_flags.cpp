@@ -1,8 +1,8 @@
-#include "render_flags.hpp"
+#include "jtracer/frontend/render_flags.hpp"
 
 #include <CLI/CLI.hpp>
 
-namespace jt::cli {
+namespace jt::frontend {
 
 void add_render_flags(CLI::App& app, RenderFlags& o) {
     app.add_option("scene", o.scene_path, "The scene file to render (.jts)")->required();
@@ -21,4 +21,4 @@ void add_render_flags(CLI::App& app, RenderFlags& o) {
     app.add_flag("-q,--quiet", o.quiet, "No progress bar, summary or warnings; errors still show");
 }
 
-}  // namespace jt::cli
+}  // namespace jt::frontend

@@ -1,0 +1,43 @@
+#pragma once
+// What a renderer does with its command line before it renders: read the
+// scene file, apply the flags that override the scene's values, check the
+// result (parse and validation diagnostics), and work out the frame to render:
+// size, camera, samples, region, and the image file to write.
+//
+// The overrides come before validation, so that the checks see what will
+// render (validate.hpp).
+
+#include "jtracer/frontend/render_flags.hpp"
+
+#include "jtracer/image_file.hpp"
+#include "jtracer/region.hpp"
+#include "jtracer/render_job.hpp"
+#include "jtracer/scene.hpp"
+
+#include <optional>
+#include <string>
+#include <string_view>
+
+namespace jt::frontend {
+
+struct FrameSetup {
+    int exit_code = exit_ok;  // non-zero: stop with it; `message` says why
+    // To print on stderr whatever the verdict: the diagnostics (warnings only
+    // when not quiet), or the error, each line ending in '\n'.
+    std::string message;
+    Scene scene;           // with the overrides applied; free of errors
+    RenderOptions render;  // size, samples, camera, threads, region; previews off
+    std::string output;    // the image file to write
+    ImageFormat format = ImageFormat::bmp;
+};
+
+// `program` ("jtracer-cli") starts the messages that are not diagnostics.
+// `region` (top-left origin, region.hpp) must lie inside the frame.
+FrameSetup set_up_frame(std::string_view program, const RenderFlags& flags,
+                        const std::optional<FrameRegion>& region = std::nullopt);
+
+// The scene's camera names, quoted, for messages: "\"front\", \"top\"", or
+// "none".
+std::string camera_names(const Scene& scene);
+
+}  // namespace jt::frontend

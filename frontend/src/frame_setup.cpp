@@ -1,0 +1,70 @@
+#include "jtracer/frontend/frame_setup.hpp"
+
+#include "jtracer/scene_file.hpp"
+
+namespace jt::frontend {
+
+namespace {
+
+// Empty when every override applies, else the message.
+std::string apply_overrides(const RenderFlags& flags, Scene& scene) {
+    if (flags.width) scene.settings.width = *flags.width;
+    if (flags.height) scene.settings.height = *flags.height;
+    if (flags.samples) scene.settings.samples = *flags.samples;
+    if (flags.camera) {
+        if (find_camera(scene, *flags.camera) < 0)
+            return "--camera: the scene has no camera named \"" + *flags.camera +
+                   "\" (its cameras: " + camera_names(scene) + ")";
+        scene.settings.active_camera = *flags.camera;
+    }
+    return {};
+}
+
+}  // namespace
+
+std::string camera_names(const Scene& scene) {
+    std::string names;
+    for (const Camera& c : scene.cameras) names += (names.empty() ? "\"" : ", \"") + c.name + "\"";
+    return names.empty() ? "none" : names;
+}
+
+FrameSetup set_up_frame(std::string_view program, const RenderFlags& flags,
+                        const std::optional<FrameRegion>& region) {
+    FrameSetup setup;
+    const std::string prefix = std::string(program) + ": ";
+    auto fail = [&](int code, const std::string& message) {
+        setup.exit_code = code;
+        setup.message += prefix + message + "\n";
+        return std::move(setup);
+    };
+    // Without the source map: check_scene builds it only if there is something to locate.
+    LoadedScene loaded = load_scene_file(flags.scene_path, {.source_map = false});
+    if (!loaded.read_ok()) return fail(exit_io_error, loaded.io_error);
+    if (std::string error = apply_overrides(flags, loaded.parsed.scene); !error.empty())
+        return fail(exit_usage, error);
+    std::vector<Diagnostic> diagnostics = check_scene(loaded);
+    const bool errors = has_errors(diagnostics);
+    if (flags.quiet && !errors) diagnostics.clear();  // quiet drops warnings, never errors
+    setup.message = format_diagnostics(diagnostics, loaded.path, loaded.text);
+    if (errors) {
+        setup.exit_code = exit_scene_error;
+        return setup;
+    }
+    setup.scene = std::move(loaded.parsed.scene);
+    setup.render = render_options_for(setup.scene);
+    setup.render.threads = flags.threads;
+    setup.render.previews = false;
+    if (region) {
+        const std::string error =
+            check_region_in_frame(*region, setup.render.width, setup.render.height);
+        if (!error.empty()) return fail(exit_usage, "--region: " + error);
+        setup.render.region = to_image_rect(*region, setup.render.height);
+    }
+    // The manual's rule: the scene's filename always yields a BMP; only a name
+    // typed on the command line may ask for PNG.
+    setup.output = flags.output.value_or(setup.scene.settings.filename);
+    setup.format = flags.output ? format_from_extension(setup.output) : ImageFormat::bmp;
+    return setup;
+}
+
+}  // namespace jt::frontend
