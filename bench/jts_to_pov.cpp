@@ -163,21 +163,22 @@ int main(int argc, char** argv) {
                      "Writes a POV-Ray 3.7 scene that renders like the JTracer scene.\n";
         return exit_usage;
     }
-    jt::LoadedScene loaded = jt::load_scene_file(argv[1]);
-    if (!loaded.read_ok()) {
-        std::cerr << "jts-to-pov: " << loaded.io_error << "\n";
+    const jt::Expected<jt::LoadedScene> read = jt::load_scene_file(argv[1]);
+    if (!read) {
+        std::cerr << "jts-to-pov: " << read.error().message << "\n";
         return exit_io;
     }
+    const jt::LoadedScene& loaded = *read;
     auto diagnostics = jt::check_scene(loaded);
     if (jt::has_errors(diagnostics)) {
         std::cerr << jt::format_diagnostics(diagnostics, loaded.path, loaded.text);
         return exit_scene_errors;
     }
     std::string pov = convert(loaded.parsed.scene, jt::active_camera_index(loaded.parsed.scene));
-    std::string error = jt::write_file_atomically(
+    const jt::Expected<void> written = jt::write_file_atomically(
         argv[2], {reinterpret_cast<const std::uint8_t*>(pov.data()), pov.size()});
-    if (!error.empty()) {
-        std::cerr << "jts-to-pov: " << error << "\n";
+    if (!written) {
+        std::cerr << "jts-to-pov: " << written.error().message << "\n";
         return exit_io;
     }
     return 0;

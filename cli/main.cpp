@@ -63,13 +63,19 @@ int run(const Options& o) {
     }
     const jt::RenderOptions& options = setup.render;
     const std::string& output = setup.output;
-    if (std::string error = check_render_memory(options, o.region_output); !error.empty()) {
-        std::cerr << "jtracer-cli: " << error << "; nothing was written\n";
+    if (jt::Expected<void> fits = check_render_memory(options, o.region_output); !fits) {
+        std::cerr << "jtracer-cli: " << fits.error().message << "; nothing was written\n";
+        return exit_io_error;
+    }
+    jt::Expected<std::shared_ptr<const jt::PreparedScene>> prepared =
+        jt::prepare_scene(setup.scene);
+    if (!prepared) {
+        std::cerr << "jtracer-cli: " << prepared.error().message << "; nothing was written\n";
         return exit_io_error;
     }
     // Until the job exists a signal ends the process at once (nothing is written
     // yet); from here on it cancels the render, which stops within a tile.
-    jt::RenderJob job(jt::prepare_scene(setup.scene), options);
+    jt::RenderJob job(*prepared, options);
     std::signal(SIGINT, on_interrupt);
     std::signal(SIGTERM, on_interrupt);
     if (!render(job, o.quiet) || interrupted.load() != 0) {
@@ -79,12 +85,12 @@ int run(const Options& o) {
         return 128 + signal;
     }
     // A region file keeps only the region's pixels and records where they belong.
-    const std::string error = o.region_output
-                                  ? jt::write_region_bmp(output, job.region_image(),
-                                                         {options.width, options.height, *o.region})
-                                  : jt::write_image(output, job.image(), setup.format);
-    if (!error.empty()) {
-        std::cerr << "jtracer-cli: " << error << "\n";
+    const jt::Expected<void> written =
+        o.region_output ? jt::write_region_bmp(output, job.region_image(),
+                                               {options.width, options.height, *o.region})
+                        : jt::write_image(output, job.image(), setup.format);
+    if (!written) {
+        std::cerr << "jtracer-cli: " << written.error().message << "\n";
         return exit_io_error;
     }
     if (!o.quiet)

@@ -54,7 +54,7 @@ std::uint64_t available_memory_bytes() {
     return available;
 }
 
-std::string check_render_memory(const RenderOptions& options, bool region_output) {
+Expected<void> check_render_memory(const RenderOptions& options, bool region_output) {
     const std::uint64_t needed = render_memory_bytes(options, region_output);
     const std::uint64_t available = available_memory_bytes();
     if (available == 0 || needed <= available) return {};
@@ -63,7 +63,7 @@ std::string check_render_memory(const RenderOptions& options, bool region_output
             << (options.samples == 1 ? " sample" : " samples") << " needs about " << gib(needed)
             << " of memory, more than the " << gib(available)
             << " available; choose a smaller --width/--height or fewer --samples";
-    return message.str();
+    return Error{message.str()};
 }
 
 }  // namespace jt::cli

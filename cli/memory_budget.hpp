@@ -3,6 +3,7 @@
 // a huge --width/--height gives a clear message rather than a visit from the
 // kernel's out-of-memory killer half way through.
 
+#include "jtracer/error.hpp"
 #include "jtracer/render_job.hpp"
 
 #include <cstdint>
@@ -19,7 +20,7 @@ std::uint64_t render_memory_bytes(const RenderOptions& options, bool region_outp
 // available memory and the address-space limit (ulimit -v); 0 when unknown.
 std::uint64_t available_memory_bytes();
 
-// Empty when the render fits, else the message explaining why not.
-std::string check_render_memory(const RenderOptions& options, bool region_output);
+// Whether the render fits; the error explains why not.
+Expected<void> check_render_memory(const RenderOptions& options, bool region_output);
 
 }  // namespace jt::cli

@@ -27,9 +27,9 @@ ParsedOptions parse_options(int argc, char** argv) {
     app.add_option_function<std::string>(
            "--region",
            [&o](const std::string& text) {
-               std::string error;
-               o.region = jt::parse_frame_region(text, error);
-               if (!o.region) throw CLI::ValidationError("--region", error);
+               jt::Expected<jt::FrameRegion> region = jt::parse_frame_region(text);
+               if (!region) throw CLI::ValidationError("--region", region.error().message);
+               o.region = *region;
            },
            "Render only the pixels X0 <= x < X1, Y0 <= y < Y1, counted from the top-left "
            "corner as image viewers show them; the rest of the image stays black")

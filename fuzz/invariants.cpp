@@ -76,17 +76,16 @@ std::string check_scene_text(std::string_view text) {
 }
 
 std::string check_bmp_bytes(std::span<const std::uint8_t> bytes) {
-    Image8 image;
-    std::string error = decode_bmp(bytes, image);
-    if (!error.empty()) return {};
+    const Expected<Image8> decoded = decode_bmp(bytes);
+    if (!decoded) return {};
+    const Image8& image = *decoded;
     if (image.width <= 0 || image.height <= 0 ||
         image.rgb.size() != static_cast<std::size_t>(image.width) * image.height * 3)
         return "decoded image has inconsistent size " + std::to_string(image.width) + "x" +
                std::to_string(image.height);
-    Image8 again;
-    if (std::string e = decode_bmp(encode_bmp(image), again); !e.empty())
-        return "re-encoded image does not decode: " + e;
-    if (!(again == image)) return "re-encoded image decodes to different pixels";
+    const Expected<Image8> again = decode_bmp(encode_bmp(image));
+    if (!again) return "re-encoded image does not decode: " + again.error().message;
+    if (!(*again == image)) return "re-encoded image decodes to different pixels";
     return {};
 }
 

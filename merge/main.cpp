@@ -17,28 +17,28 @@ namespace {
 enum ExitCode : int { exit_ok = 0, exit_bad_parts = 1, exit_usage = 2, exit_io_error = 3 };
 
 int merge(const std::vector<std::string>& part_paths, const std::string& output, bool quiet) {
-    std::vector<jt::RegionPart> parts(part_paths.size());
-    for (std::size_t i = 0; i < parts.size(); ++i) {
-        parts[i].name = part_paths[i];
-        if (std::string error =
-                jt::read_region_bmp(part_paths[i], parts[i].pixels, parts[i].placement);
-            !error.empty()) {
-            std::cerr << "jtracer-merge: " << error << "; nothing was written\n";
+    std::vector<jt::RegionPart> parts;
+    for (const std::string& path : part_paths) {
+        jt::Expected<jt::RegionPart> part = jt::read_region_bmp(path);
+        if (!part) {
+            std::cerr << "jtracer-merge: " << part.error().message << "; nothing was written\n";
             return exit_io_error;
         }
+        parts.push_back(std::move(*part));
     }
-    jt::Image8 frame;
-    if (std::string error = jt::merge_regions(parts, frame); !error.empty()) {
-        std::cerr << "jtracer-merge: " << error << "; nothing was written\n";
+    const jt::Expected<jt::Image8> frame = jt::merge_regions(parts);
+    if (!frame) {
+        std::cerr << "jtracer-merge: " << frame.error().message << "; nothing was written\n";
         return exit_bad_parts;
     }
-    if (std::string error = jt::write_image(output, frame, jt::format_from_extension(output));
-        !error.empty()) {
-        std::cerr << "jtracer-merge: " << error << "\n";
+    if (const jt::Expected<void> written =
+            jt::write_image(output, *frame, jt::format_from_extension(output));
+        !written) {
+        std::cerr << "jtracer-merge: " << written.error().message << "\n";
         return exit_io_error;
     }
     if (!quiet)
-        std::cerr << "wrote " << output << ": " << frame.width << "x" << frame.height << " from "
+        std::cerr << "wrote " << output << ": " << frame->width << "x" << frame->height << " from "
                   << parts.size() << " parts\n";
     return exit_ok;
 }

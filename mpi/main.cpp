@@ -97,7 +97,16 @@ int run(int argc, char** argv, int rank, int ranks) {
         std::signal(SIGINT, on_interrupt);
         std::signal(SIGTERM, on_interrupt);
     }
-    const auto scene = jt::prepare_scene(setup.scene);
+    const jt::Expected<std::shared_ptr<const jt::PreparedScene>> prepared =
+        jt::prepare_scene(setup.scene);
+    if (!prepared) {
+        // Every rank runs the same Embree: a failure here is the same on every
+        // rank, and none has started talking yet.
+        if (rank == 0)
+            std::cerr << "jtracer-mpi: " << prepared.error().message << "; nothing was written\n";
+        return exit_io_error;
+    }
+    const std::shared_ptr<const jt::PreparedScene>& scene = *prepared;
     const std::vector<jt::PixelRect> tiles =
         cut_work_tiles(setup.render.width, setup.render.height, o.tile_size);
     RankStats mine;
@@ -123,9 +132,10 @@ int run(int argc, char** argv, int rank, int ranks) {
     std::vector<RankStats> stats(static_cast<std::size_t>(ranks));
     MPI_Gather(&result.stats, sizeof(RankStats), MPI_BYTE, stats.data(), sizeof(RankStats),
                MPI_BYTE, 0, MPI_COMM_WORLD);
-    const std::string error = jt::write_image(setup.output, result.frame, setup.format);
-    if (!error.empty()) {
-        std::cerr << "jtracer-mpi: " << error << "\n";
+    if (const jt::Expected<void> written =
+            jt::write_image(setup.output, result.frame, setup.format);
+        !written) {
+        std::cerr << "jtracer-mpi: " << written.error().message << "\n";
         return exit_io_error;
     }
     const double total = std::chrono::duration<double>(Clock::now() - start).count();

@@ -10,12 +10,13 @@
 namespace {
 
 void BM_ShowcaseTile(benchmark::State& state) {
-    jt::LoadedScene loaded = jt::load_scene_file(JT_SOURCE_DIR "/scenes/showcase.jts");
-    if (!loaded.read_ok() || !loaded.parsed.ok()) {
+    const jt::Expected<jt::LoadedScene> loaded =
+        jt::load_scene_file(JT_SOURCE_DIR "/scenes/showcase.jts");
+    if (!loaded || !loaded->parsed.ok()) {
         state.SkipWithError("cannot load scenes/showcase.jts");
         return;
     }
-    auto prepared = jt::prepare_scene(loaded.parsed.scene);
+    auto prepared = jt::prepare_scene(loaded->parsed.scene).value();
     jt::RenderOptions options;
     options.width = 800;
     options.height = 450;

@@ -6,15 +6,14 @@ namespace jt::frontend {
 
 namespace {
 
-// Empty when every override applies, else the message.
-std::string apply_overrides(const RenderFlags& flags, Scene& scene) {
+Expected<void> apply_overrides(const RenderFlags& flags, Scene& scene) {
     if (flags.width) scene.settings.width = *flags.width;
     if (flags.height) scene.settings.height = *flags.height;
     if (flags.samples) scene.settings.samples = *flags.samples;
     if (flags.camera) {
         if (find_camera(scene, *flags.camera) < 0)
-            return "--camera: the scene has no camera named \"" + *flags.camera +
-                   "\" (its cameras: " + camera_names(scene) + ")";
+            return Error{"--camera: the scene has no camera named \"" + *flags.camera +
+                         "\" (its cameras: " + camera_names(scene) + ")"};
         scene.settings.active_camera = *flags.camera;
     }
     return {};
@@ -38,10 +37,11 @@ FrameSetup set_up_frame(std::string_view program, const RenderFlags& flags,
         return std::move(setup);
     };
     // Without the source map: check_scene builds it only if there is something to locate.
-    LoadedScene loaded = load_scene_file(flags.scene_path, {.source_map = false});
-    if (!loaded.read_ok()) return fail(exit_io_error, loaded.io_error);
-    if (std::string error = apply_overrides(flags, loaded.parsed.scene); !error.empty())
-        return fail(exit_usage, error);
+    Expected<LoadedScene> read = load_scene_file(flags.scene_path, {.source_map = false});
+    if (!read) return fail(exit_io_error, read.error().message);
+    LoadedScene& loaded = *read;
+    if (Expected<void> applied = apply_overrides(flags, loaded.parsed.scene); !applied)
+        return fail(exit_usage, applied.error().message);
     std::vector<Diagnostic> diagnostics = check_scene(loaded);
     const bool errors = has_errors(diagnostics);
     if (flags.quiet && !errors) diagnostics.clear();  // quiet drops warnings, never errors
@@ -55,9 +55,10 @@ FrameSetup set_up_frame(std::string_view program, const RenderFlags& flags,
     setup.render.threads = flags.threads;
     setup.render.previews = false;
     if (region) {
-        const std::string error =
-            check_region_in_frame(*region, setup.render.width, setup.render.height);
-        if (!error.empty()) return fail(exit_usage, "--region: " + error);
+        if (Expected<void> inside =
+                check_region_in_frame(*region, setup.render.width, setup.render.height);
+            !inside)
+            return fail(exit_usage, "--region: " + inside.error().message);
         setup.render.region = to_image_rect(*region, setup.render.height);
     }
     // The manual's rule: the scene's filename always yields a BMP; only a name

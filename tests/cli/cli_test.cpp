@@ -98,10 +98,10 @@ TEST_F(Cli, WritesTheScenesFilenameAsBmpAndASummary) {
     CliRun r = run("scene.jts");
     ASSERT_EQ(r.code, 0) << r.err;
     EXPECT_EQ(outputs(), std::vector<std::string>{"from_scene.bmp"});
-    Image8 image;
-    ASSERT_EQ(read_bmp(dir / "from_scene.bmp", image), "");
-    EXPECT_EQ(image.width, 32);
-    EXPECT_EQ(image.height, 18);
+    const Expected<Image8> image = read_bmp(dir / "from_scene.bmp");
+    ASSERT_TRUE(image) << image.error().message;
+    EXPECT_EQ(image->width, 32);
+    EXPECT_EQ(image->height, 18);
     EXPECT_NE(r.err.find("32x18"), std::string::npos) << r.err;
     EXPECT_NE(r.err.find("Mrays/s"), std::string::npos) << r.err;
 }
@@ -120,8 +120,7 @@ TEST_F(Cli, SceneFilenameIsBmpWhateverItsExtension) {
     text.replace(text.find("from_scene.bmp"), 14, "picture.png");
     write("scene.jts", text);
     ASSERT_EQ(run("-q scene.jts").code, 0);
-    Image8 image;
-    EXPECT_EQ(read_bmp(dir / "picture.png", image), "") << "the manual: always a BMP";
+    EXPECT_TRUE(read_bmp(dir / "picture.png")) << "the manual: always a BMP";
 }
 
 TEST_F(Cli, OutputOptionWinsAndPngByExtension) {
@@ -129,10 +128,10 @@ TEST_F(Cli, OutputOptionWinsAndPngByExtension) {
     ASSERT_EQ(r.code, 0) << r.err;
     EXPECT_EQ(r.err, "") << "--quiet";
     EXPECT_EQ(outputs(), std::vector<std::string>{"shot.png"});
-    Image8 image;
-    ASSERT_EQ(read_image(dir / "shot.png", image), "");
-    EXPECT_EQ(image.width, 40);
-    EXPECT_EQ(image.height, 20);
+    const Expected<Image8> image = read_image(dir / "shot.png");
+    ASSERT_TRUE(image) << image.error().message;
+    EXPECT_EQ(image->width, 40);
+    EXPECT_EQ(image->height, 20);
     std::ifstream png(dir / "shot.png", std::ios::binary);
     char magic[4] = {};
     png.read(magic, 4);
@@ -153,10 +152,11 @@ TEST_F(Cli, ThreadCountGivesByteIdenticalFiles) {
 TEST_F(Cli, CameraOptionPicksTheCamera) {
     ASSERT_EQ(run("-q scene.jts -o front.bmp").code, 0);
     ASSERT_EQ(run("-q scene.jts -o top.bmp --camera top").code, 0);
-    Image8 front, top;
-    ASSERT_EQ(read_bmp(dir / "front.bmp", front), "");
-    ASSERT_EQ(read_bmp(dir / "top.bmp", top), "");
-    EXPECT_FALSE(front == top);
+    const Expected<Image8> front = read_bmp(dir / "front.bmp");
+    const Expected<Image8> top = read_bmp(dir / "top.bmp");
+    ASSERT_TRUE(front) << front.error().message;
+    ASSERT_TRUE(top) << top.error().message;
+    EXPECT_FALSE(*front == *top);
     CliRun r = run("scene.jts --camera nowhere");
     EXPECT_EQ(r.code, 2);
     EXPECT_NE(r.err.find("\"front\", \"top\""), std::string::npos) << r.err;

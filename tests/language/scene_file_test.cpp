@@ -37,37 +37,42 @@ class SceneFile : public ::testing::Test {
 
 TEST_F(SceneFile, ReadsAFileWhole) {
     std::string text = "scene { }\n# \xC3\xA9\n";
-    TextFile file = read_text_file(write("a.jts", text));
-    EXPECT_TRUE(file.ok()) << file.error;
-    EXPECT_EQ(file.text, text);
+    const Expected<std::string> file = read_text_file(write("a.jts", text));
+    ASSERT_TRUE(file) << file.error().message;
+    EXPECT_EQ(*file, text);
 }
 
 TEST_F(SceneFile, MissingFile) {
     fs::path path = dir_ / "nope.jts";
-    TextFile file = read_text_file(path);
-    EXPECT_EQ(file.error, "cannot read '" + path.string() + "': no such file");
+    const Expected<std::string> file = read_text_file(path);
+    ASSERT_FALSE(file);
+    EXPECT_EQ(file.error().message, "cannot read '" + path.string() + "': no such file");
 }
 
 TEST_F(SceneFile, Directory) {
-    TextFile file = read_text_file(dir_);
+    const Expected<std::string> file = read_text_file(dir_);
     const std::string dir = dir_.string();
-    EXPECT_EQ(file.error, "'" + dir + "' is a directory, not a scene file");
+    ASSERT_FALSE(file);
+    EXPECT_EQ(file.error().message, "'" + dir + "' is a directory, not a scene file");
 }
 
 TEST_F(SceneFile, TooLarge) {
     fs::path path = write("big.jts", std::string(100, ' '));
-    TextFile file = read_text_file(path, 99);
+    const Expected<std::string> file = read_text_file(path, 99);
     const std::string name = path.string();
-    EXPECT_EQ(file.error, "'" + name + "' is too large to read (100 bytes; the limit is 99)");
-    EXPECT_TRUE(read_text_file(path, 100).ok());
+    ASSERT_FALSE(file);
+    EXPECT_EQ(file.error().message,
+              "'" + name + "' is too large to read (100 bytes; the limit is 99)");
+    EXPECT_TRUE(read_text_file(path, 100));
 }
 
 TEST_F(SceneFile, Unreadable) {
     if (::geteuid() == 0) GTEST_SKIP() << "root reads any file";
     fs::path path = write("locked.jts", "scene { }");
     fs::permissions(path, fs::perms::none);
-    TextFile file = read_text_file(path);
-    EXPECT_EQ(file.error, "cannot read '" + path.string() + "': permission denied");
+    const Expected<std::string> file = read_text_file(path);
+    ASSERT_FALSE(file);
+    EXPECT_EQ(file.error().message, "cannot read '" + path.string() + "': permission denied");
 }
 
 TEST_F(SceneFile, LoadAndCheckReportsParseThenValidation) {
@@ -75,8 +80,9 @@ TEST_F(SceneFile, LoadAndCheckReportsParseThenValidation) {
                           "render_settings { width: 4; height: 4; }\n"
                           "cameras { perspective_camera { look_at: <0, 0, 0>; } }\n"
                           "scene { sphere { radius: 2; radius: 3; } }\n");
-    LoadedScene loaded = load_scene_file(path);
-    ASSERT_TRUE(loaded.read_ok());
+    const Expected<LoadedScene> read = load_scene_file(path);
+    ASSERT_TRUE(read) << read.error().message;
+    const LoadedScene& loaded = *read;
     EXPECT_EQ(loaded.path, path.string());
     auto diagnostics = check_scene(loaded);
     EXPECT_EQ(format_diagnostics(diagnostics, "s.jts", loaded.text),
@@ -99,9 +105,8 @@ TEST_F(SceneFile, WithoutTheSourceMapTheFindingsAreStillLocated) {
                           "cameras { perspective_camera { look_at: <0, 0, 0>; } }\n"
                           "scene { sphere { radius: 2; radius: 3;\n"
                           "  transform { scale: <1, 0, 1>; } } }\n");
-    LoadedScene mapped = load_scene_file(path);
-    LoadedScene unmapped = load_scene_file(path, {.source_map = false});
-    ASSERT_TRUE(unmapped.read_ok());
+    const LoadedScene mapped = load_scene_file(path).value();
+    const LoadedScene unmapped = load_scene_file(path, {.source_map = false}).value();
     EXPECT_EQ(unmapped.parsed.scene, mapped.parsed.scene);
     EXPECT_EQ(unmapped.parsed.source, SceneSource{});
     EXPECT_FALSE(mapped.parsed.source.properties.empty());
@@ -117,19 +122,20 @@ TEST_F(SceneFile, WithoutTheSourceMapTheFindingsAreStillLocated) {
                            "render_settings { width: 4; height: 4; }\n"
                            "cameras { perspective_camera { aspect: 1; } }\n"
                            "scene { sphere { } }\n");
-    EXPECT_TRUE(check_scene(load_scene_file(clean, {.source_map = false})).empty());
+    EXPECT_TRUE(check_scene(load_scene_file(clean, {.source_map = false}).value()).empty());
 }
 
 TEST_F(SceneFile, ValidationIsSkippedWhenParsingFailed) {
-    LoadedScene loaded = load_scene_file(write("bad.jts", "scene { sphere { radius: -1; } }"));
+    const LoadedScene loaded =
+        load_scene_file(write("bad.jts", "scene { sphere { radius: -1; } }")).value();
     EXPECT_EQ(testing::brief(check_scene(loaded)),
               "1:26: error: 'radius' must be greater than 0, got -1");
 }
 
 TEST_F(SceneFile, LoadReportsIoErrorsWithoutParsing) {
-    LoadedScene loaded = load_scene_file(dir_ / "missing.jts");
-    EXPECT_FALSE(loaded.read_ok());
-    EXPECT_NE(loaded.io_error.find("no such file"), std::string::npos);
+    const Expected<LoadedScene> loaded = load_scene_file(dir_ / "missing.jts");
+    ASSERT_FALSE(loaded);
+    EXPECT_NE(loaded.error().message.find("no such file"), std::string::npos);
 }
 
 }  // namespace

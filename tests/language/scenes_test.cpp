@@ -35,8 +35,9 @@ TEST(Scenes, ThereAreTheShowcaseAndEveryManualExample) {
 
 TEST(Scenes, EveryFileParsesAndValidatesWithNoDiagnostics) {
     for (const auto& path : scene_files()) {
-        LoadedScene loaded = load_scene_file(path);
-        ASSERT_TRUE(loaded.read_ok()) << loaded.io_error;
+        const Expected<LoadedScene> read = load_scene_file(path);
+        ASSERT_TRUE(read) << read.error().message;
+        const LoadedScene& loaded = *read;
         auto diagnostics = check_scene(loaded);
         EXPECT_EQ(format_diagnostics(diagnostics, loaded.path, loaded.text), "");
         const Scene& s = loaded.parsed.scene;
@@ -49,7 +50,7 @@ TEST(Scenes, EveryFileParsesAndValidatesWithNoDiagnostics) {
 
 TEST(Scenes, EveryFileRoundTripsThroughTheSerializer) {
     for (const auto& path : scene_files()) {
-        LoadedScene loaded = load_scene_file(path);
+        const LoadedScene loaded = load_scene_file(path).value();
         std::string text = serialize_scene(loaded.parsed.scene);
         ParseResult again = parse_scene(text);
         EXPECT_EQ(testing::brief(again.diagnostics), "") << path << "\n" << text;
@@ -60,8 +61,8 @@ TEST(Scenes, EveryFileRoundTripsThroughTheSerializer) {
 }
 
 TEST(Showcase, UsesEveryFeature) {
-    LoadedScene loaded =
-        load_scene_file(std::filesystem::path(JT_SOURCE_DIR) / "scenes" / "showcase.jts");
+    const LoadedScene loaded =
+        load_scene_file(std::filesystem::path(JT_SOURCE_DIR) / "scenes" / "showcase.jts").value();
     const Scene& s = loaded.parsed.scene;
     auto count = [&](auto shape) {
         return std::count_if(s.primitives.begin(), s.primitives.end(), [&](const Primitive& p) {

@@ -57,9 +57,12 @@ TEST_F(RegionCli, RegionPartIsTheWholeImagesPixelsFromTheTopLeft) {
     CommandRun r =
         run(cli + showcase + "--width 80 --height 60 -q --region 10,5,30,25 -o full.bmp");
     ASSERT_EQ(r.code, 0) << r.err;
-    Image8 whole, full;
-    ASSERT_EQ(read_bmp(dir / "whole.bmp", whole), "");
-    ASSERT_EQ(read_bmp(dir / "full.bmp", full), "");
+    const Expected<Image8> whole_file = read_bmp(dir / "whole.bmp");
+    const Expected<Image8> full_file = read_bmp(dir / "full.bmp");
+    ASSERT_TRUE(whole_file) << whole_file.error().message;
+    ASSERT_TRUE(full_file) << full_file.error().message;
+    const Image8& whole = *whole_file;
+    const Image8& full = *full_file;
     ASSERT_EQ(full.width, 80) << "without --region-output the image keeps its full size";
     // Rows 5..24 from the top are Image8 rows 35..54.
     const PixelRect rect{10, 35, 30, 55};

@@ -16,9 +16,8 @@ namespace jt {
 namespace {
 
 TEST(Region, ParsesFourBounds) {
-    std::string error;
-    auto r = parse_frame_region("10,20,110,70", error);
-    ASSERT_TRUE(r) << error;
+    const Expected<FrameRegion> r = parse_frame_region("10,20,110,70");
+    ASSERT_TRUE(r) << r.error().message;
     EXPECT_EQ(*r, (FrameRegion{10, 20, 110, 70}));
     EXPECT_EQ(format_frame_region(*r), "10,20,110,70");
 }
@@ -26,29 +25,35 @@ TEST(Region, ParsesFourBounds) {
 TEST(Region, RefusesMalformedText) {
     for (const char* text : {"", "1,2,3", "1,2,3,4,5", "a,2,3,4", "1,,3,4", "1.5,2,3,4", "1,2,3,4,",
                              " 1,2,3,4", "99999999999,0,1,1"}) {
-        std::string error;
-        EXPECT_FALSE(parse_frame_region(text, error)) << text;
-        EXPECT_NE(error.find("X0,Y0,X1,Y1"), std::string::npos) << text << ": " << error;
+        const Expected<FrameRegion> r = parse_frame_region(text);
+        ASSERT_FALSE(r) << text;
+        EXPECT_NE(r.error().message.find("X0,Y0,X1,Y1"), std::string::npos)
+            << text << ": " << r.error().message;
     }
 }
 
 TEST(Region, RefusesEmptyAndNegativeRegions) {
-    std::string error;
-    EXPECT_FALSE(parse_frame_region("5,0,5,10", error));
-    EXPECT_NE(error.find("empty"), std::string::npos) << error;
-    EXPECT_FALSE(parse_frame_region("0,10,5,3", error));
-    EXPECT_FALSE(parse_frame_region("-1,0,5,3", error));
-    EXPECT_NE(error.find("negative"), std::string::npos) << error;
+    const Expected<FrameRegion> empty = parse_frame_region("5,0,5,10");
+    ASSERT_FALSE(empty);
+    EXPECT_NE(empty.error().message.find("empty"), std::string::npos) << empty.error().message;
+    EXPECT_FALSE(parse_frame_region("0,10,5,3"));
+    const Expected<FrameRegion> negative = parse_frame_region("-1,0,5,3");
+    ASSERT_FALSE(negative);
+    EXPECT_NE(negative.error().message.find("negative"), std::string::npos)
+        << negative.error().message;
 }
 
 TEST(Region, ChecksBoundsAgainstTheFrame) {
-    EXPECT_EQ(check_region_in_frame({0, 0, 200, 100}, 200, 100), "");
-    std::string right = check_region_in_frame({0, 0, 201, 100}, 200, 100);
-    EXPECT_NE(right.find("right edge of the 200x100 image (X1 may be at most 200)"),
+    EXPECT_TRUE(check_region_in_frame({0, 0, 200, 100}, 200, 100));
+    const Expected<void> right = check_region_in_frame({0, 0, 201, 100}, 200, 100);
+    ASSERT_FALSE(right);
+    EXPECT_NE(right.error().message.find("right edge of the 200x100 image (X1 may be at most 200)"),
               std::string::npos)
-        << right;
-    std::string bottom = check_region_in_frame({0, 50, 10, 101}, 200, 100);
-    EXPECT_NE(bottom.find("bottom edge"), std::string::npos) << bottom;
+        << right.error().message;
+    const Expected<void> bottom = check_region_in_frame({0, 50, 10, 101}, 200, 100);
+    ASSERT_FALSE(bottom);
+    EXPECT_NE(bottom.error().message.find("bottom edge"), std::string::npos)
+        << bottom.error().message;
 }
 
 TEST(Region, TopLeftOriginFlipsToImageRows) {
@@ -83,24 +88,25 @@ TEST_F(RegionFile, RoundTripsPixelsAndPlacement) {
     for (std::size_t i = 0; i < part.rgb.size(); ++i)
         part.rgb[i] = static_cast<std::uint8_t>(40 * i);
     RegionPlacement placement{640, 480, {100, 200, 103, 202}};
-    ASSERT_EQ(write_region_bmp(path, part, placement), "");
-    Image8 read;
-    RegionPlacement back;
-    ASSERT_EQ(read_region_bmp(path, read, back), "");
-    EXPECT_EQ(read, part);
-    EXPECT_EQ(back, placement);
+    const Expected<void> written = write_region_bmp(path, part, placement);
+    ASSERT_TRUE(written) << written.error().message;
+    const Expected<RegionPart> read = read_region_bmp(path);
+    ASSERT_TRUE(read) << read.error().message;
+    EXPECT_EQ(read->name, path.string());
+    EXPECT_EQ(read->pixels, part);
+    EXPECT_EQ(read->placement, placement);
     // Still an ordinary BMP for every other reader.
-    Image8 plain;
-    ASSERT_EQ(read_bmp(path, plain), "");
-    EXPECT_EQ(plain, part);
+    const Expected<Image8> plain = read_bmp(path);
+    ASSERT_TRUE(plain) << plain.error().message;
+    EXPECT_EQ(*plain, part);
 }
 
 TEST_F(RegionFile, PlainBmpHasNoRecord) {
-    ASSERT_EQ(write_bmp(path, Image8(4, 4)), "");
-    Image8 part;
-    RegionPlacement placement;
-    std::string error = read_region_bmp(path, part, placement);
-    EXPECT_NE(error.find("carries no region record"), std::string::npos) << error;
+    ASSERT_TRUE(write_bmp(path, Image8(4, 4)));
+    const Expected<RegionPart> part = read_region_bmp(path);
+    ASSERT_FALSE(part);
+    EXPECT_NE(part.error().message.find("carries no region record"), std::string::npos)
+        << part.error().message;
 }
 
 // A region job keeps only the region and gives exactly the full render's pixels.
@@ -118,7 +124,7 @@ scene {
 }
 )");
     ASSERT_TRUE(parsed.ok());
-    auto prepared = prepare_scene(parsed.scene);
+    auto prepared = prepare_scene(parsed.scene).value();
     for (int samples : {1, 3, 8}) {
         RenderOptions o;
         o.width = 75;
@@ -157,7 +163,7 @@ scene {
     o.height = 30;
     o.samples = 2;
     o.region = PixelRect{5, 3, 29, 21};
-    RenderJob job(prepare_scene(parsed.scene), o);
+    RenderJob job(prepare_scene(parsed.scene).value(), o);
     Image8 display;
     ASSERT_TRUE(job.fetch_updates(display));
     EXPECT_EQ(display.width, 40);

@@ -43,7 +43,7 @@ bool blocks(const Geometry& g, std::uint32_t candidate, const Vec3& o, const Vec
 // outside the crowd.
 void check_buffers(int count, unsigned seed) {
     Scene scene = crowd(count, seed);
-    auto prepared = prepare_scene(scene);
+    auto prepared = prepare_scene(scene).value();
     const Geometry& g = *prepared->geometry;
     std::mt19937 rng(seed + 1);
     std::uniform_real_distribution<double> u(-9.0, 9.0), unit(-1.0, 1.0);
@@ -97,7 +97,7 @@ TEST(DirectionTable, HoldsEveryBlockerWithoutBvh) {
 // Around a camera: the first hit through the table is the BVH's, to the bit,
 // for rays all over the sphere of directions and rays grazing silhouettes.
 void check_camera_table(int count, unsigned seed) {
-    auto prepared = prepare_scene(crowd(count, seed));
+    auto prepared = prepare_scene(crowd(count, seed)).value();
     const Geometry& g = *prepared->geometry;
     std::mt19937 rng(seed + 2);
     std::uniform_real_distribution<double> unit(-1.0, 1.0);
@@ -141,7 +141,7 @@ TEST(DirectionTable, CellsAreFewAndSmallForSparseShapes) {
     for (int x = 0; x < 8; ++x)
         for (int z = 0; z < 8; ++z)
             scene.primitives.push_back(sphere({2.0 * x - 7, 0.6, 2.0 * z - 7}, 0.6));
-    auto prepared = prepare_scene(scene);
+    auto prepared = prepare_scene(scene).value();
     DirectionTable table =
         build_direction_table(*prepared->geometry, {0, 10, 4}, table_resolution(64, false));
     ASSERT_GT(table.resolution, 0);
@@ -183,7 +183,7 @@ TEST(DirectionTable, NoneWhenShapesSurroundThePoint) {
     // would hold millions of listings. None is built; the BVH answers.
     Scene scene;
     for (int i = 0; i < 1500; ++i) scene.primitives.push_back(sphere({0, 0, 0}, 1.0 + 0.01 * i));
-    auto prepared = prepare_scene(scene);
+    auto prepared = prepare_scene(scene).value();
     const Geometry& g = *prepared->geometry;
     DirectionTable table = build_direction_table(g, {0, 0, 0}, table_resolution(1500, false));
     EXPECT_EQ(table.resolution, 0);
@@ -193,7 +193,7 @@ TEST(DirectionTable, NoneWhenShapesSurroundThePoint) {
 }
 
 TEST(DirectionTable, NoneWhenTheTablesWouldCostMoreThanTheySave) {
-    auto prepared = prepare_scene(crowd(300, 13));
+    auto prepared = prepare_scene(crowd(300, 13)).value();
     std::vector<PointLight> lights(300, PointLight{{0, 20, 0}, Colour(1.0)});
     EXPECT_TRUE(build_light_tables(*prepared->geometry, lights).empty());
     lights.resize(4);

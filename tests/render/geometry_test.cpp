@@ -87,7 +87,7 @@ TEST(RayQueries, BvhAgreesWithBruteForce) {
     std::uniform_real_distribution<double> u(-10.0, 10.0);
     Scene scene = random_crowd(rng, 600, 10.0, 1.5);
     scene.primitives.push_back(plane({0.2, 1, 0.1}, -12.0));
-    auto prepared = prepare_scene(scene);
+    auto prepared = prepare_scene(scene).value();
     const Geometry& g = *prepared->geometry;
     ASSERT_GT(g.shapes.size(), 300u);
 

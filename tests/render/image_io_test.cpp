@@ -68,18 +68,22 @@ TEST(Bmp, HeaderLayoutAndBottomUpPaddedBgrRows) {
 TEST(Bmp, RoundTripAndRejectsBadFiles) {
     Image8 image = sample_image();
     std::vector<std::uint8_t> bytes = encode_bmp(image);
-    Image8 back;
-    EXPECT_EQ(decode_bmp(bytes, back), "");
-    EXPECT_TRUE(back == image);
+    const Expected<Image8> back = decode_bmp(bytes);
+    ASSERT_TRUE(back) << back.error().message;
+    EXPECT_TRUE(*back == image);
 
+    auto refusal = [](const std::vector<std::uint8_t>& bad) {
+        const Expected<Image8> decoded = decode_bmp(bad);
+        return decoded ? std::string() : decoded.error().message;
+    };
     std::vector<std::uint8_t> truncated(bytes.begin(), bytes.end() - 5);
-    EXPECT_NE(decode_bmp(truncated, back).find("truncated"), std::string::npos);
+    EXPECT_NE(refusal(truncated).find("truncated"), std::string::npos);
     std::vector<std::uint8_t> not_bmp = bytes;
     not_bmp[0] = 'X';
-    EXPECT_NE(decode_bmp(not_bmp, back), "");
+    EXPECT_NE(refusal(not_bmp), "");
     std::vector<std::uint8_t> eight_bit = bytes;
     eight_bit[28] = 8;
-    EXPECT_NE(decode_bmp(eight_bit, back).find("24 bits"), std::string::npos);
+    EXPECT_NE(refusal(eight_bit).find("24 bits"), std::string::npos);
 }
 
 TEST(Png, RoundTripKeepsRowOrder) {
@@ -87,9 +91,9 @@ TEST(Png, RoundTripKeepsRowOrder) {
     std::vector<std::uint8_t> bytes = encode_png(image);
     ASSERT_GT(bytes.size(), 8u);
     EXPECT_EQ(bytes[1], 'P');
-    Image8 back;
-    EXPECT_EQ(decode_png(bytes, back), "");
-    EXPECT_TRUE(back == image);
+    const Expected<Image8> back = decode_png(bytes);
+    ASSERT_TRUE(back) << back.error().message;
+    EXPECT_TRUE(*back == image);
 }
 
 TEST(ImageFile, FormatFollowsTheExtension) {
@@ -102,10 +106,11 @@ TEST(ImageFile, FormatFollowsTheExtension) {
     fs::path dir = scratch_dir("format");
     Image8 image = sample_image();
     for (const char* name : {"x.bmp", "x.png"}) {
-        ASSERT_EQ(write_image(dir / name, image, format_from_extension(name)), "");
-        Image8 back;
-        EXPECT_EQ(read_image(dir / name, back), "");
-        EXPECT_TRUE(back == image) << name;
+        const Expected<void> written = write_image(dir / name, image, format_from_extension(name));
+        ASSERT_TRUE(written) << written.error().message;
+        const Expected<Image8> back = read_image(dir / name);
+        ASSERT_TRUE(back) << back.error().message;
+        EXPECT_TRUE(*back == image) << name;
     }
     std::ifstream png(dir / "x.png", std::ios::binary);
     char magic[4] = {};
@@ -117,10 +122,11 @@ TEST(AtomicFile, ReplacesWholeAndLeavesNoTemporary) {
     fs::path dir = scratch_dir("atomic");
     fs::path target = dir / "out.bmp";
     { std::ofstream(target) << "old contents"; }
-    ASSERT_EQ(write_bmp(target, sample_image()), "");
-    Image8 back;
-    EXPECT_EQ(read_bmp(target, back), "");
-    EXPECT_TRUE(back == sample_image());
+    const Expected<void> written = write_bmp(target, sample_image());
+    ASSERT_TRUE(written) << written.error().message;
+    const Expected<Image8> back = read_bmp(target);
+    ASSERT_TRUE(back) << back.error().message;
+    EXPECT_TRUE(*back == sample_image());
     int entries = 0;
     for (auto& e : fs::directory_iterator(dir)) {
         (void)e;
@@ -131,13 +137,17 @@ TEST(AtomicFile, ReplacesWholeAndLeavesNoTemporary) {
 
 TEST(AtomicFile, FailureNamesTheFileAndWritesNothing) {
     fs::path dir = scratch_dir("atomic_fail");
-    std::string error = write_bmp(dir / "missing" / "out.bmp", sample_image());
+    const Expected<void> written = write_bmp(dir / "missing" / "out.bmp", sample_image());
+    ASSERT_FALSE(written);
+    const std::string& error = written.error().message;
     EXPECT_NE(error.find("missing/out.bmp"), std::string::npos) << error;
     EXPECT_NE(error.find("No such file"), std::string::npos) << error;
     EXPECT_FALSE(fs::exists(dir / "missing"));
     // A directory in the way is refused, not replaced.
     fs::create_directory(dir / "taken.bmp");
-    EXPECT_NE(write_bmp(dir / "taken.bmp", sample_image()).find("directory"), std::string::npos);
+    const Expected<void> over_directory = write_bmp(dir / "taken.bmp", sample_image());
+    ASSERT_FALSE(over_directory);
+    EXPECT_NE(over_directory.error().message.find("directory"), std::string::npos);
     EXPECT_TRUE(fs::is_directory(dir / "taken.bmp"));
 }
 

@@ -50,7 +50,7 @@ RenderOptions options_for(const Scene& s, int samples, int threads, bool preview
 
 TEST(RenderJob, ThreadCountNeverChangesTheImage) {
     Scene s = busy_scene(97, 61);
-    auto prepared = prepare_scene(s);
+    auto prepared = prepare_scene(s).value();
     for (int samples : {1, 5}) {
         Image8 one = render_image(prepared, options_for(s, samples, 1, false));
         Image8 two = render_image(prepared, options_for(s, samples, 2, false));
@@ -62,7 +62,7 @@ TEST(RenderJob, ThreadCountNeverChangesTheImage) {
 
 TEST(RenderJob, PreviewsDoNotChangeTheFinalImage) {
     Scene s = busy_scene(70, 50);
-    auto prepared = prepare_scene(s);
+    auto prepared = prepare_scene(s).value();
     RenderJob job(prepared, options_for(s, 3, 0, true));
     std::vector<std::string> names;
     while (job.run_pass()) names.push_back(job.progress().pass_name);
@@ -80,7 +80,7 @@ TEST(RenderJob, PreviewsDoNotChangeTheFinalImage) {
 
 TEST(RenderJob, PreviewPassesFillWholeBlocks) {
     Scene s = busy_scene(61, 43);
-    RenderJob job(prepare_scene(s), options_for(s, 1, 0, true));
+    RenderJob job(prepare_scene(s).value(), options_for(s, 1, 0, true));
     for (int block : {8, 4, 2}) {
         ASSERT_TRUE(job.run_pass());
         Image8 image = job.image();
@@ -98,7 +98,7 @@ TEST(RenderJob, PreviewPassesFillWholeBlocks) {
 
 TEST(RenderJob, OneSampleIsThePixelCentre) {
     Scene s = busy_scene(40, 30);
-    auto prepared = prepare_scene(s);
+    auto prepared = prepare_scene(s).value();
     Image8 single = render_image(prepared, options_for(s, 1, 0, false));
     RenderJob job(prepared, options_for(s, 4, 0, false));
     ASSERT_TRUE(job.run_pass());  // the 1-sample pass
@@ -110,7 +110,7 @@ TEST(RenderJob, OneSampleIsThePixelCentre) {
 
 TEST(RenderJob, FetchUpdatesCopiesWhatChanged) {
     Scene s = busy_scene(80, 40);
-    RenderJob job(prepare_scene(s), options_for(s, 1, 0, false));
+    RenderJob job(prepare_scene(s).value(), options_for(s, 1, 0, false));
     Image8 display;
     auto first = job.fetch_updates(display);
     ASSERT_TRUE(first);
@@ -127,7 +127,7 @@ TEST(RenderJob, FetchUpdatesCopiesWhatChanged) {
 
 TEST(RenderJob, RegionRendersExactlyThosePixels) {
     Scene s = busy_scene(90, 60);
-    auto prepared = prepare_scene(s);
+    auto prepared = prepare_scene(s).value();
     Image8 full = render_image(prepared, options_for(s, 2, 0, false));
     RenderOptions o = options_for(s, 2, 0, true);
     o.region = PixelRect{13, 7, 71, 45};
@@ -144,7 +144,7 @@ TEST(RenderJob, RegionRendersExactlyThosePixels) {
 
 TEST(RenderJob, CancelReturnsWithinMilliseconds) {
     Scene s = busy_scene(1600, 1200, 20);
-    RenderJob job(prepare_scene(s), options_for(s, 64, 0, true));
+    RenderJob job(prepare_scene(s).value(), options_for(s, 64, 0, true));
     std::thread worker([&] { job.run(); });
     std::this_thread::sleep_for(std::chrono::milliseconds(50));
     auto start = std::chrono::steady_clock::now();
@@ -164,26 +164,26 @@ TEST(RenderJob, CancelReturnsWithinMilliseconds) {
 
 TEST(RenderJob, ReusesGeometryWhenOnlyMaterialsChange) {
     Scene s = busy_scene(60, 40);
-    auto first = prepare_scene(s);
+    auto first = prepare_scene(s).value();
     Scene recoloured = s;
     recoloured.primitives[3].material.pigment = {1, 0, 0};
     recoloured.lights[0].intensity = {1, 1, 1};
-    auto second = prepare_scene(recoloured, first);
-    auto fresh = prepare_scene(recoloured);
+    auto second = prepare_scene(recoloured, first).value();
+    auto fresh = prepare_scene(recoloured).value();
     EXPECT_TRUE(render_image(second, options_for(s, 1, 0, false)) ==
                 render_image(fresh, options_for(s, 1, 0, false)));
     EXPECT_FALSE(render_image(second, options_for(s, 1, 0, false)) ==
                  render_image(first, options_for(s, 1, 0, false)));
     Scene moved = recoloured;
     moved.primitives[3].transforms.push_back(translate({0, 1, 0}));
-    auto third = prepare_scene(moved, second);
+    auto third = prepare_scene(moved, second).value();
     EXPECT_FALSE(render_image(third, options_for(s, 1, 0, false)) ==
                  render_image(second, options_for(s, 1, 0, false)));
 }
 
 TEST(RenderJob, EmptyImageFinishesAtOnce) {
     Scene s = busy_scene(0, 0);
-    RenderJob job(prepare_scene(s), options_for(s, 1, 0, true));
+    RenderJob job(prepare_scene(s).value(), options_for(s, 1, 0, true));
     job.run();
     EXPECT_TRUE(job.progress().finished);
     EXPECT_EQ(job.image().width, 0);

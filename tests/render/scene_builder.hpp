@@ -70,7 +70,7 @@ inline Image8 render(const Scene& scene, int samples = 1, int threads = 0) {
     RenderOptions o = render_options_for(scene);
     o.samples = samples;
     o.threads = threads;
-    return render_image(prepare_scene(scene), o);
+    return render_image(prepare_scene(scene).value(), o);
 }
 
 struct Rgb {

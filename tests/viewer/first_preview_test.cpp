@@ -46,7 +46,7 @@ bool made_of_blocks(const Image8& image, int block) {
 TEST(FirstPreview, LargeImageStartsAtOneSixteenthAndEndsWithTheSamePixels) {
     // 768x432 at 1/8 would be 96 x 54 = 5184 rays: over the 4096 of a first preview.
     const Scene scene = showcase_at(768, 432);
-    const auto prepared = prepare_scene(scene);
+    const auto prepared = prepare_scene(scene).value();
     RenderJob job(prepared, options_for(scene, true));
     EXPECT_EQ(job.progress().pass_name, "preview 1/16");
     ASSERT_TRUE(job.run_pass());
@@ -61,14 +61,14 @@ TEST(FirstPreview, LargeImageStartsAtOneSixteenthAndEndsWithTheSamePixels) {
 
 TEST(FirstPreview, SmallImageStartsAtOneEighth) {
     const Scene scene = showcase_at(512, 288);  // 64 x 36 = 2304 rays at 1/8
-    RenderJob job(prepare_scene(scene), options_for(scene, true));
+    RenderJob job(prepare_scene(scene).value(), options_for(scene, true));
     EXPECT_EQ(job.progress().pass_name, "preview 1/8");
     EXPECT_EQ(job.progress().pass_count, 4);
 }
 
 TEST(FirstPreview, BackgroundJobRunsLowerAndRendersTheSamePixels) {
     const Scene scene = showcase_at(96, 54);
-    const auto prepared = prepare_scene(scene);
+    const auto prepared = prepare_scene(scene).value();
     RenderOptions options = options_for(scene, true);
     options.threads = 1;  // only the calling thread: the test's own workers stay as they are
     options.background = true;
@@ -183,7 +183,7 @@ TEST(RenderReuse, MaterialEditReusesTheGeometryAndRendersTheEditedScene) {
     ASSERT_TRUE(second);
     EXPECT_NE(second, first);
     EXPECT_EQ(second->geometry, first->geometry) << "materials and lights leave the BVH as it was";
-    EXPECT_EQ(edited, render_image(prepare_scene(scene), options_for(scene, false)))
+    EXPECT_EQ(edited, render_image(prepare_scene(scene).value(), options_for(scene, false)))
         << "and the picture is that of the edited scene prepared from scratch";
 
     std::get<Sphere>(scene.primitives[2].shape).radius *= 0.5;

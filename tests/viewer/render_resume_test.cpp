@@ -28,7 +28,7 @@ RenderOptions options_for(const Scene& scene, int samples) {
 
 TEST(RenderResume, CancelledAndResumedJobEndsWithTheUninterruptedImage) {
     const Scene scene = showcase_at(160, 96);
-    const auto prepared = prepare_scene(scene);
+    const auto prepared = prepare_scene(scene).value();
     const RenderOptions options = options_for(scene, 8);
     RenderJob reference(prepared, options);
     reference.run();
@@ -61,7 +61,7 @@ TEST(RenderResume, CancelledAndResumedJobEndsWithTheUninterruptedImage) {
 
 TEST(RenderResume, ResumeRunsOnlyThePassesLeft) {
     const Scene scene = showcase_at(64, 36);
-    RenderJob job(prepare_scene(scene), options_for(scene, 4));
+    RenderJob job(prepare_scene(scene).value(), options_for(scene, 4));
     ASSERT_TRUE(job.run_pass());  // preview 1/8
     ASSERT_TRUE(job.run_pass());  // preview 1/4
     job.cancel();

@@ -28,7 +28,7 @@ Image8 core_render(const Scene& scene, int camera) {
     RenderOptions options = render_options_for(scene);
     options.camera = camera;
     options.previews = false;
-    RenderJob job(prepare_scene(scene), options);
+    RenderJob job(prepare_scene(scene).value(), options);
     job.run();
     return job.image();
 }

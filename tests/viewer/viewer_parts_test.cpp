@@ -196,8 +196,8 @@ TEST(ImageFiles, WritesAPngWithTheImageSize) {
     const fs::path file = temp_dir("png") / "out.png";
     Image8 image(7, 3);
     image.pixel(0, 0)[0] = 255;
-    std::string error;
-    ASSERT_TRUE(save_image(file, image, error)) << error;
+    const Expected<void> saved = save_image(file, image);
+    ASSERT_TRUE(saved) << saved.error().message;
     std::ifstream in(file, std::ios::binary);
     std::string bytes((std::istreambuf_iterator<char>(in)), {});
     ASSERT_GT(bytes.size(), 24u);
@@ -212,19 +212,19 @@ TEST(ImageFiles, WritesAPngWithTheImageSize) {
 
 TEST(ImageFiles, RefusesUnknownExtensionsAndEmptyImagesWithoutWriting) {
     const fs::path dir = temp_dir("bad");
-    std::string error;
-    EXPECT_FALSE(save_image(dir / "out.jpg", Image8(2, 2), error));
-    EXPECT_NE(error.find(".png"), std::string::npos);
-    EXPECT_FALSE(save_image(dir / "out.png", Image8(), error));
+    const Expected<void> jpg = save_image(dir / "out.jpg", Image8(2, 2));
+    ASSERT_FALSE(jpg);
+    EXPECT_NE(jpg.error().message.find(".png"), std::string::npos);
+    EXPECT_FALSE(save_image(dir / "out.png", Image8()));
     EXPECT_TRUE(fs::is_empty(dir));
 }
 
 TEST(ImageFiles, AFailedWriteLeavesTheOldFile) {
     const fs::path dir = temp_dir("keep");
     write(dir / "a.txt", "old");
-    std::string error;
-    EXPECT_FALSE(write_text_atomically(dir / "missing-dir" / "a.txt", "new", error));
-    EXPECT_FALSE(error.empty());
+    const Expected<void> written = write_text_atomically(dir / "missing-dir" / "a.txt", "new");
+    ASSERT_FALSE(written);
+    EXPECT_FALSE(written.error().message.empty());
     std::ifstream in(dir / "a.txt");
     std::string text;
     in >> text;

@@ -70,8 +70,8 @@ void finish_reload(AppState& state, LoadAttempt attempt) {
     state.reapply_problem.clear();
     if (attempt.text == state.doc.text)
         state.reapply_problem = "the file is unchanged";
-    else if (!reapply_edits(state.doc, attempt, state.reapply_problem))
-        state.reapply_problem = "cannot re-apply: " + state.reapply_problem;
+    else if (const Expected<Scene> reapplied = reapply_edits(state.doc, attempt); !reapplied)
+        state.reapply_problem = "cannot re-apply: " + reapplied.error().message;
     state.doc.load_failed = false;
     state.doc.diagnostics = attempt.diagnostics;
     state.doc.diagnostics_source = attempt.text;
@@ -127,12 +127,12 @@ void resolve_reload(AppState& state, ReloadChoice choice) {
     }
     std::optional<Scene> edited;
     if (choice == ReloadChoice::reapply_edits) {
-        std::string error;
-        edited = reapply_edits(state.doc, *state.pending_reload, error);
-        if (!edited) {
-            state.message = "Edits not re-applied: " + error;
+        Expected<Scene> reapplied = reapply_edits(state.doc, *state.pending_reload);
+        if (!reapplied) {
+            state.message = "Edits not re-applied: " + reapplied.error().message;
             return;
         }
+        edited = std::move(*reapplied);
     }
     LoadAttempt newer = std::move(*state.pending_reload);
     accept_load(state.doc, state.doc.path, std::move(newer));
@@ -149,9 +149,8 @@ void resolve_reload(AppState& state, ReloadChoice choice) {
 namespace {
 
 bool save_now(AppState& state) {
-    std::string error;
-    if (!save_scene_in_place(state.doc, error)) {
-        state.message = "Scene not saved: " + error;
+    if (const Expected<void> saved = save_scene_in_place(state.doc); !saved) {
+        state.message = "Scene not saved: " + saved.error().message;
         return false;
     }
     state.watcher.acknowledge();  // our own write is not an outside change
@@ -179,9 +178,8 @@ bool save_scene_anyway(AppState& state) {
 }
 
 bool save_image(AppState& state, const std::filesystem::path& path) {
-    std::string error;
-    if (!jt::view::save_image(path, state.display, error)) {
-        state.message = "Image not saved: " + error;
+    if (const Expected<void> saved = jt::view::save_image(path, state.display); !saved) {
+        state.message = "Image not saved: " + saved.error().message;
         return false;
     }
     state.message = "Saved image " + path.string();

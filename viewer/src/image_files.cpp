@@ -20,32 +20,25 @@ ImageFormat image_format_for(const std::filesystem::path& path) {
     return ImageFormat::unknown;
 }
 
-bool write_text_atomically(const std::filesystem::path& path, const std::string& text,
-                           std::string& error) {
+Expected<void> write_text_atomically(const std::filesystem::path& path, const std::string& text) {
     const std::span<const std::uint8_t> bytes(reinterpret_cast<const std::uint8_t*>(text.data()),
                                               text.size());
-    error = write_file_atomically(path, bytes);
-    return error.empty();
+    return write_file_atomically(path, bytes);
 }
 
-bool save_image(const std::filesystem::path& path, const Image8& image, std::string& error) {
+Expected<void> save_image(const std::filesystem::path& path, const Image8& image) {
     if (image.width <= 0 || image.height <= 0 ||
-        image.rgb.size() != static_cast<std::size_t>(image.width) * image.height * 3) {
-        error = "there is no image to save yet";
-        return false;
-    }
+        image.rgb.size() != static_cast<std::size_t>(image.width) * image.height * 3)
+        return Error{"there is no image to save yet"};
     switch (image_format_for(path)) {
         case ImageFormat::png:
-            error = write_png(path, image);
-            break;
+            return write_png(path, image);
         case ImageFormat::bmp:
-            error = write_bmp(path, image);
-            break;
+            return write_bmp(path, image);
         case ImageFormat::unknown:
-            error = "cannot tell the image format of " + path.string() + ": name it .png or .bmp";
             break;
     }
-    return error.empty();
+    return Error{"cannot tell the image format of " + path.string() + ": name it .png or .bmp"};
 }
 
 }  // namespace jt::view

@@ -3,6 +3,7 @@
 // PNG or BMP chosen by the file's extension, written to a temporary name and
 // renamed into place so that a failure never leaves a half-written file.
 
+#include "jtracer/error.hpp"
 #include "jtracer/image.hpp"
 
 #include <filesystem>
@@ -13,11 +14,10 @@ namespace jt::view {
 enum class ImageFormat { png, bmp, unknown };
 ImageFormat image_format_for(const std::filesystem::path& path);
 
-// Returns false and explains in `error` on failure; the target is untouched then.
-bool save_image(const std::filesystem::path& path, const Image8& image, std::string& error);
+// On failure the target is untouched.
+Expected<void> save_image(const std::filesystem::path& path, const Image8& image);
 
 // Writes `text` to `path` through a temporary file beside it and a rename.
-bool write_text_atomically(const std::filesystem::path& path, const std::string& text,
-                           std::string& error);
+Expected<void> write_text_atomically(const std::filesystem::path& path, const std::string& text);
 
 }  // namespace jt::view

@@ -68,9 +68,9 @@ int run_screenshot(const Arguments& args) {
     const auto timeout =
         std::chrono::milliseconds(static_cast<long long>(args.timeout_seconds * 1000));
     const bool complete = viewer.run_until_complete(state, timeout);
-    std::string error;
-    if (!jt::view::save_image(args.screenshot, viewer.screenshot(), error)) {
-        std::cerr << "jtracer-view: " << error << "\n";
+    if (const jt::Expected<void> saved = jt::view::save_image(args.screenshot, viewer.screenshot());
+        !saved) {
+        std::cerr << "jtracer-view: " << saved.error().message << "\n";
         return 1;
     }
     if (!complete) {

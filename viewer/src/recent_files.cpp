@@ -30,8 +30,8 @@ void RecentFiles::add(const std::filesystem::path& path) {
     std::filesystem::create_directories(storage_.parent_path(), ec);
     std::string text;
     for (const std::string& p : paths_) text += p + "\n";
-    std::string error;
-    write_text_atomically(storage_, text, error);  // a list we cannot save is no reason to fail
+    // A list we cannot save is no reason to fail.
+    static_cast<void>(write_text_atomically(storage_, text));
 }
 
 std::filesystem::path default_recent_files_path() {

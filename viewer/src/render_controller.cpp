@@ -82,11 +82,18 @@ void RenderController::launch(const std::shared_ptr<Run>& run, const Scene* scen
                     std::lock_guard lock(mutex_);
                     previous = prepared_;
                 }
-                auto prepared = prepare_scene(*to_prepare, previous);
-                job = std::make_shared<RenderJob>(prepared, run->options);
+                Expected<std::shared_ptr<const PreparedScene>> prepared =
+                    prepare_scene(*to_prepare, previous);
+                if (!prepared) {
+                    run->fail("the render failed: " + prepared.error().message);
+                    run->done = true;
+                    if (wakeup_) wakeup_->notify();
+                    return;
+                }
+                job = std::make_shared<RenderJob>(*prepared, run->options);
                 {
                     std::lock_guard lock(mutex_);
-                    if (current_ == run) prepared_ = prepared;  // a newer run's stays
+                    if (current_ == run) prepared_ = *prepared;  // a newer run's stays
                 }
                 std::lock_guard lock(run->mutex);
                 run->job = job;

@@ -13,13 +13,15 @@ LoadAttempt attempt_load(const std::filesystem::path& path) {
     LoadAttempt attempt;
     attempt.times.started = LoadTimes::Clock::now();
     // With the source map: saving in place writes edits back at their spans.
-    LoadedScene loaded = load_scene_file(path);
+    Expected<LoadedScene> read = load_scene_file(path);
     // The core reads and parses in one call: both steps end here.
     attempt.times.read = attempt.times.parsed = LoadTimes::Clock::now();
-    if (!loaded.read_ok()) {
-        attempt.diagnostics.push_back(Diagnostic{Severity::error, SourcePos{}, loaded.io_error});
+    if (!read) {
+        attempt.diagnostics.push_back(
+            Diagnostic{Severity::error, SourcePos{}, read.error().message});
         return attempt;
     }
+    LoadedScene& loaded = *read;
     attempt.diagnostics = check_scene(loaded);
     attempt.times.validated = LoadTimes::Clock::now();
     attempt.ok = !has_errors(attempt.diagnostics);
@@ -78,47 +80,33 @@ bool file_changed_on_disk(const SceneDocument& doc, std::string& what) {
     return true;
 }
 
-std::optional<Scene> reapply_edits(const SceneDocument& doc, const LoadAttempt& newer,
-                                   std::string& error) {
+Expected<Scene> reapply_edits(const SceneDocument& doc, const LoadAttempt& newer) {
     SourceEditResult edit = apply_scene_edits(newer.text, newer.source, doc.original, doc.scene);
-    if (!edit.ok()) {
-        error = edit.error;
-        return std::nullopt;
-    }
+    if (!edit.ok()) return Error{edit.error};
     ParseResult parsed = parse_scene(edit.text);
-    if (!parsed.ok()) {
-        error = "the edits do not fit the new text";
-        return std::nullopt;
-    }
+    if (!parsed.ok()) return Error{"the edits do not fit the new text"};
     return std::move(parsed.scene);
 }
 
-bool save_scene_in_place(SceneDocument& doc, std::string& error) {
-    if (!doc.loaded) {
-        error = "no scene is open";
-        return false;
-    }
+Expected<void> save_scene_in_place(SceneDocument& doc) {
+    if (!doc.loaded) return Error{"no scene is open"};
     SourceEditResult edit = apply_scene_edits(doc.text, doc.source, doc.original, doc.scene);
-    if (!edit.ok()) {
-        error = edit.error;
-        return false;
-    }
+    if (!edit.ok()) return Error{edit.error};
     // Check before writing: the new text must mean exactly the edited scene.
     ParseResult check = parse_scene(edit.text);
-    if (!check.ok() || check.scene != doc.scene) {
-        error =
+    if (!check.ok() || check.scene != doc.scene)
+        return Error{
             "internal error: the edited text would not read back as the edited scene; "
-            "the file was left as it was";
-        return false;
-    }
-    if (!write_text_atomically(doc.path, edit.text, error)) return false;
+            "the file was left as it was"};
+    if (Expected<void> written = write_text_atomically(doc.path, edit.text); !written)
+        return written;
     doc.text = std::move(edit.text);
     doc.original = doc.scene;
     doc.source = std::move(check.source);
     doc.diagnostics = std::move(check.diagnostics);
     doc.diagnostics_source = doc.text;
     doc.load_failed = false;
-    return true;
+    return {};
 }
 
 }  // namespace jt::view

@@ -4,6 +4,7 @@
 // as edited since, and the diagnostics of the latest load attempt.
 
 #include "jtracer/diagnostics.hpp"
+#include "jtracer/error.hpp"
 #include "jtracer/scene.hpp"
 #include "jtracer/source_map.hpp"
 
@@ -57,9 +58,9 @@ std::string format_diagnostics(const SceneDocument& doc);
 bool has_unsaved_edits(const SceneDocument& doc);
 
 // Writes the edits into the file in place (see source_edit.hpp), atomically,
-// then takes the new text as the document's base. False with `error` on failure.
+// then takes the new text as the document's base.
 // Does not look at what is on disk now: see file_changed_on_disk.
-bool save_scene_in_place(SceneDocument& doc, std::string& error);
+Expected<void> save_scene_in_place(SceneDocument& doc);
 
 // True when the file no longer holds the text the document was loaded from
 // (edited by someone else, broken, deleted), so that saving over it would
@@ -67,9 +68,8 @@ bool save_scene_in_place(SceneDocument& doc, std::string& error);
 bool file_changed_on_disk(const SceneDocument& doc, std::string& what);
 
 // The edits made to `doc` (its scene against its original) applied to a newer
-// text of the file, where the edited items still exist. Nothing when they
-// cannot be (items added or removed in the file), with `error` saying why.
-std::optional<Scene> reapply_edits(const SceneDocument& doc, const LoadAttempt& newer,
-                                   std::string& error);
+// text of the file, where the edited items still exist; the error says why
+// they cannot be (items added or removed in the file).
+Expected<Scene> reapply_edits(const SceneDocument& doc, const LoadAttempt& newer);
 
 }  // namespace jt::view

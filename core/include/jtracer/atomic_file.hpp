@@ -3,6 +3,8 @@
 // one: the bytes go to a temporary file beside the target, which is then
 // renamed over it (docs/language.md §10.3). A failure leaves no file behind.
 
+#include "jtracer/error.hpp"
+
 #include <cstdint>
 #include <filesystem>
 #include <span>
@@ -10,9 +12,9 @@
 
 namespace jt {
 
-// Returns an empty string on success, else a message naming the file and the
-// reason ("cannot write 'out/x.bmp': No such file or directory").
-std::string write_file_atomically(const std::filesystem::path& target,
-                                  std::span<const std::uint8_t> bytes);
+// On failure the error names the file and the reason ("cannot write
+// 'out/x.bmp': No such file or directory").
+Expected<void> write_file_atomically(const std::filesystem::path& target,
+                                     std::span<const std::uint8_t> bytes);
 
 }  // namespace jt

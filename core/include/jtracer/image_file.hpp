@@ -1,6 +1,7 @@
 #pragma once
 // Choosing an image format from a file name.
 
+#include "jtracer/error.hpp"
 #include "jtracer/image.hpp"
 
 #include <filesystem>
@@ -14,10 +15,11 @@ enum class ImageFormat { bmp, png };
 // user typed on a command line: the scene's `filename` is always BMP.
 ImageFormat format_from_extension(const std::filesystem::path& path);
 
-// Atomic write in the given format. Empty string on success, else the error.
-std::string write_image(const std::filesystem::path& path, const Image8& image, ImageFormat format);
+// Atomic write in the given format.
+Expected<void> write_image(const std::filesystem::path& path, const Image8& image,
+                           ImageFormat format);
 
 // Reads a BMP or PNG, told apart by their first bytes.
-std::string read_image(const std::filesystem::path& path, Image8& image);
+Expected<Image8> read_image(const std::filesystem::path& path);
 
 }  // namespace jt

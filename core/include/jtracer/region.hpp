@@ -7,9 +7,9 @@
 // viewers and editors show pixels. Image8 and PixelRect count rows from the
 // bottom (image.hpp); the functions here convert between the two.
 
+#include "jtracer/error.hpp"
 #include "jtracer/image.hpp"
 
-#include <optional>
 #include <string>
 #include <string_view>
 
@@ -23,16 +23,16 @@ struct FrameRegion {
     bool operator==(const FrameRegion&) const = default;
 };
 
-// Parses "X0,Y0,X1,Y1" (whole numbers, X0 < X1, Y0 < Y1). On failure returns
-// nothing and sets `error` to what is wrong with the text.
-std::optional<FrameRegion> parse_frame_region(std::string_view text, std::string& error);
+// Parses "X0,Y0,X1,Y1" (whole numbers, X0 < X1, Y0 < Y1); on failure the
+// error says what is wrong with the text.
+Expected<FrameRegion> parse_frame_region(std::string_view text);
 
 // "X0,Y0,X1,Y1", the form parse_frame_region reads.
 std::string format_frame_region(const FrameRegion& region);
 
-// Empty when the region lies inside a frame_width x frame_height frame, else
-// a message that says which bound is out.
-std::string check_region_in_frame(const FrameRegion& region, int frame_width, int frame_height);
+// Whether the region lies inside a frame_width x frame_height frame; the error
+// says which bound is out.
+Expected<void> check_region_in_frame(const FrameRegion& region, int frame_width, int frame_height);
 
 // The same pixels in Image8 coordinates (row 0 at the bottom) of a frame
 // `frame_height` rows high, and back.

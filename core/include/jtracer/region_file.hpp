@@ -11,6 +11,7 @@
 //
 // all little-endian uint32, the region in top-left-origin bounds (region.hpp).
 
+#include "jtracer/error.hpp"
 #include "jtracer/image.hpp"
 #include "jtracer/region.hpp"
 
@@ -26,13 +27,20 @@ struct RegionPlacement {
     bool operator==(const RegionPlacement&) const = default;
 };
 
-// Atomic write (atomic_file.hpp). Empty string on success, else the error.
-std::string write_region_bmp(const std::filesystem::path& path, const Image8& part,
-                             const RegionPlacement& placement);
+// One part of a frame: its pixels (row 0 at the region's bottom) and where
+// they belong.
+struct RegionPart {
+    std::string name;  // for messages: the file it came from
+    Image8 pixels;
+    RegionPlacement placement;
+};
 
-// Reads the pixels and the record. Empty string on success, else the error
-// (including "carries no region record" for a plain BMP).
-std::string read_region_bmp(const std::filesystem::path& path, Image8& part,
-                            RegionPlacement& placement);
+// Atomic write (atomic_file.hpp).
+Expected<void> write_region_bmp(const std::filesystem::path& path, const Image8& part,
+                                const RegionPlacement& placement);
+
+// Reads the pixels and the record, named after `path`. A plain BMP is refused
+// ("carries no region record").
+Expected<RegionPart> read_region_bmp(const std::filesystem::path& path);
 
 }  // namespace jt

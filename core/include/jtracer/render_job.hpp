@@ -20,6 +20,7 @@
 // Sample k of a pixel sits at a fixed R2-sequence offset (k = 0: the centre);
 // a pixel shows the mean of its samples so far, each clamped to [0, 1].
 
+#include "jtracer/error.hpp"
 #include "jtracer/image.hpp"
 #include "jtracer/scene.hpp"
 
@@ -41,8 +42,8 @@ struct PreparedScene;  // defined in the core's private headers
 // `previous` may be a scene prepared earlier: when the geometry of `scene`
 // (shapes and transforms) equals the previous scene's, its acceleration
 // structure is reused, so that material, light and settings edits are cheap.
-// Throws std::runtime_error only if Embree cannot start at all.
-std::shared_ptr<const PreparedScene> prepare_scene(
+// Fails only if Embree cannot start at all.
+Expected<std::shared_ptr<const PreparedScene>> prepare_scene(
     const Scene& scene, std::shared_ptr<const PreparedScene> previous = nullptr);
 
 struct RenderOptions {

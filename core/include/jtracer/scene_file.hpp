@@ -3,14 +3,15 @@
 // The one way every program loads a scene: the command-line renderers (through
 // frontend/'s set_up_frame) and the viewer (on its loader thread) do this:
 //
-//   jt::LoadedScene loaded = jt::load_scene_file(path);
-//   if (!loaded.read_ok()) { report loaded.io_error; stop; }
-//   ... apply --width/--height/--camera to loaded.parsed.scene ...
-//   auto diagnostics = jt::check_scene(loaded);   // parse + validation
-//   std::cerr << jt::format_diagnostics(diagnostics, loaded.path, loaded.text);
+//   jt::Expected<jt::LoadedScene> loaded = jt::load_scene_file(path);
+//   if (!loaded) { report loaded.error().message; stop; }
+//   ... apply --width/--height/--camera to loaded->parsed.scene ...
+//   auto diagnostics = jt::check_scene(*loaded);   // parse + validation
+//   std::cerr << jt::format_diagnostics(diagnostics, loaded->path, loaded->text);
 //   if (jt::has_errors(diagnostics)) stop;
 
 #include "jtracer/diagnostics.hpp"
+#include "jtracer/error.hpp"
 #include "jtracer/parser.hpp"
 
 #include <cstdint>
@@ -24,29 +25,22 @@ namespace jt {
 // Scene files larger than this are refused rather than read into memory.
 inline constexpr std::uintmax_t max_scene_file_bytes = 1ull << 30;
 
-struct TextFile {
-    std::string text;
-    std::string error;  // empty when the file was read
-    bool ok() const { return error.empty(); }
-};
-
-// Reads a whole file. On failure `error` says which file and why, e.g.
+// Reads a whole file. On failure the error says which file and why, e.g.
 // "cannot read 'a.jts': no such file", "'scenes' is a directory, not a file".
-TextFile read_text_file(const std::filesystem::path& path,
-                        std::uintmax_t max_bytes = max_scene_file_bytes);
+Expected<std::string> read_text_file(const std::filesystem::path& path,
+                                     std::uintmax_t max_bytes = max_scene_file_bytes);
 
 struct LoadedScene {
     std::string path;      // as given: the FILE of FILE:LINE:COL diagnostics
     std::string text;      // the file's contents
-    std::string io_error;  // non-empty when the file could not be read
     ParseResult parsed;    // scene, source spans and parse diagnostics
     ParseOptions options;  // what it was parsed with
-    bool read_ok() const { return io_error.empty(); }
 };
 
-// Reads and parses. Does not validate: apply any overrides to
+// Reads and parses; fails only when the file cannot be read (mistakes in the
+// text are diagnostics). Does not validate: apply any overrides to
 // `parsed.scene` first, then call check_scene.
-LoadedScene load_scene_file(const std::filesystem::path& path, ParseOptions options = {});
+Expected<LoadedScene> load_scene_file(const std::filesystem::path& path, ParseOptions options = {});
 
 // The parse diagnostics followed by validate_scene's (validation runs only when
 // parsing found no errors, so that one mistake does not cascade). A scene

@@ -15,8 +15,8 @@ namespace jt {
 
 namespace {
 
-std::string failure(const std::filesystem::path& target, int error) {
-    return "cannot write " + file_message(target, std::strerror(error));
+Error failure(const std::filesystem::path& target, int error) {
+    return Error{"cannot write " + file_message(target, std::strerror(error))};
 }
 
 // 0 when every byte was written, else the errno of the failure.
@@ -35,24 +35,25 @@ int write_all(int fd, std::span<const std::uint8_t> bytes) {
 
 // A device or pipe (/dev/stdout, /dev/full) is written in place: renaming over
 // it would not reach the reader, and as root would replace the device node.
-std::string write_in_place(const std::filesystem::path& target,
-                           std::span<const std::uint8_t> bytes) {
+Expected<void> write_in_place(const std::filesystem::path& target,
+                              std::span<const std::uint8_t> bytes) {
     int fd = ::open(target.c_str(), O_WRONLY | O_CLOEXEC);
     if (fd < 0) return failure(target, errno);
     int error = write_all(fd, bytes);
     if (::close(fd) != 0 && error == 0) error = errno;
-    return error == 0 ? std::string() : failure(target, error);
+    if (error != 0) return failure(target, error);
+    return {};
 }
 
 }  // namespace
 
-std::string write_file_atomically(const std::filesystem::path& target,
-                                  std::span<const std::uint8_t> bytes) {
-    if (target.empty()) return "cannot write an image to an empty file name";
+Expected<void> write_file_atomically(const std::filesystem::path& target,
+                                     std::span<const std::uint8_t> bytes) {
+    if (target.empty()) return Error{"cannot write an image to an empty file name"};
     std::error_code ec;
     const std::filesystem::file_status status = std::filesystem::status(target, ec);
     if (std::filesystem::is_directory(status))
-        return "cannot write " + file_message(target, "it is a directory");
+        return Error{"cannot write " + file_message(target, "it is a directory")};
     if (std::filesystem::exists(status) && !std::filesystem::is_regular_file(status))
         return write_in_place(target, bytes);
     // A symbolic link stays a link: the file it names is the one replaced.

@@ -69,26 +69,27 @@ std::vector<std::uint8_t> encode_bmp(const Image8& image) {
     return out;
 }
 
-std::string decode_bmp(std::span<const std::uint8_t> bytes, Image8& image) {
+Expected<Image8> decode_bmp(std::span<const std::uint8_t> bytes) {
     if (bytes.size() < header_size || bytes[0] != 'B' || bytes[1] != 'M')
-        return "not a BMP file (no 'BM' header)";
+        return Error{"not a BMP file (no 'BM' header)"};
     const std::uint8_t* h = bytes.data();
     std::uint32_t offset = get32(h + 10);
     std::uint32_t info_size = get32(h + 14);
     auto width = static_cast<std::int32_t>(get32(h + 18));
     auto height = static_cast<std::int32_t>(get32(h + 22));
-    if (info_size < info_header_size) return "unsupported BMP header (older than BITMAPINFOHEADER)";
-    if (get16(h + 28) != 24) return "unsupported BMP: only 24 bits per pixel are read";
-    if (get32(h + 30) != 0) return "unsupported BMP: compressed (only BI_RGB is read)";
+    if (info_size < info_header_size)
+        return Error{"unsupported BMP header (older than BITMAPINFOHEADER)"};
+    if (get16(h + 28) != 24) return Error{"unsupported BMP: only 24 bits per pixel are read"};
+    if (get32(h + 30) != 0) return Error{"unsupported BMP: compressed (only BI_RGB is read)"};
     bool top_down = height < 0;
     std::int64_t rows = std::llabs(static_cast<std::int64_t>(height));
     if (width <= 0 || rows == 0 || width > 65535 || rows > 65535)
-        return std::string("BMP size out of range: ") + std::to_string(width) + " by " +
-               std::to_string(rows);
+        return Error{std::string("BMP size out of range: ") + std::to_string(width) + " by " +
+                     std::to_string(rows)};
     const std::size_t stride = row_stride(width);
     if (offset > bytes.size() || bytes.size() - offset < stride * static_cast<std::size_t>(rows))
-        return "BMP file is truncated";
-    image = Image8(width, static_cast<int>(rows));
+        return Error{"BMP file is truncated"};
+    Image8 image(width, static_cast<int>(rows));
     for (int y = 0; y < image.height; ++y) {
         int stored = top_down ? image.height - 1 - y : y;
         const std::uint8_t* row = h + offset + stride * static_cast<std::size_t>(stored);
@@ -99,23 +100,24 @@ std::string decode_bmp(std::span<const std::uint8_t> bytes, Image8& image) {
             dst[3 * x + 2] = row[3 * x + 0];
         }
     }
-    return {};
+    return image;
 }
 
-std::string write_bmp(const std::filesystem::path& path, const Image8& image) {
+Expected<void> write_bmp(const std::filesystem::path& path, const Image8& image) {
     // The format's size fields are 32 bits wide.
     if (header_size + row_stride(image.width) * static_cast<std::size_t>(image.height) >
         0xFFFFFFFFu)
-        return "cannot write " + file_message(path, "the image is too large for a BMP (4 GiB)");
+        return Error{"cannot write " +
+                     file_message(path, "the image is too large for a BMP (4 GiB)")};
     return write_file_atomically(path, encode_bmp(image));
 }
 
-std::string read_bmp(const std::filesystem::path& path, Image8& image) {
-    std::vector<std::uint8_t> bytes;
-    if (std::string error = read_file_bytes(path, bytes); !error.empty()) return error;
-    if (std::string error = decode_bmp(bytes, image); !error.empty())
-        return file_message(path, error);
-    return {};
+Expected<Image8> read_bmp(const std::filesystem::path& path) {
+    Expected<std::vector<std::uint8_t>> bytes = read_file_bytes(path);
+    if (!bytes) return bytes.error();
+    Expected<Image8> image = decode_bmp(*bytes);
+    if (!image) return Error{file_message(path, image.error().message)};
+    return image;
 }
 
 }  // namespace jt

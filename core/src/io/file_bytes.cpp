@@ -15,17 +15,17 @@ std::string file_message(const std::filesystem::path& path, const std::string& m
     return s;
 }
 
-std::string read_file_bytes(const std::filesystem::path& path, std::vector<std::uint8_t>& bytes) {
-    bytes.clear();
+Expected<std::vector<std::uint8_t>> read_file_bytes(const std::filesystem::path& path) {
+    std::vector<std::uint8_t> bytes;
     std::unique_ptr<std::FILE, int (*)(std::FILE*)> file(std::fopen(path.c_str(), "rb"),
                                                          &std::fclose);
-    if (!file) return "cannot read " + file_message(path, std::strerror(errno));
+    if (!file) return Error{"cannot read " + file_message(path, std::strerror(errno))};
     std::uint8_t buffer[65536];
     std::size_t n;
     while ((n = std::fread(buffer, 1, sizeof buffer, file.get())) > 0)
         bytes.insert(bytes.end(), buffer, buffer + n);
-    if (std::ferror(file.get())) return "cannot read " + file_message(path, "read error");
-    return {};
+    if (std::ferror(file.get())) return Error{"cannot read " + file_message(path, "read error")};
+    return bytes;
 }
 
 }  // namespace jt

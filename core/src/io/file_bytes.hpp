@@ -1,5 +1,7 @@
 #pragma once
-// Whole-file reads, with a message instead of an exception.
+// Whole-file reads and the wording of file errors.
+
+#include "jtracer/error.hpp"
 
 #include <cstdint>
 #include <filesystem>
@@ -12,7 +14,7 @@ namespace jt {
 // -Wrestrict on chains of operator+ that start from a literal).
 std::string file_message(const std::filesystem::path& path, const std::string& message);
 
-// Empty string on success, else "cannot read 'PATH': REASON".
-std::string read_file_bytes(const std::filesystem::path& path, std::vector<std::uint8_t>& bytes);
+// The file's bytes, or "cannot read 'PATH': REASON".
+Expected<std::vector<std::uint8_t>> read_file_bytes(const std::filesystem::path& path);
 
 }  // namespace jt

@@ -16,18 +16,18 @@ ImageFormat format_from_extension(const std::filesystem::path& path) {
     return ext == ".png" ? ImageFormat::png : ImageFormat::bmp;
 }
 
-std::string write_image(const std::filesystem::path& path, const Image8& image,
-                        ImageFormat format) {
+Expected<void> write_image(const std::filesystem::path& path, const Image8& image,
+                           ImageFormat format) {
     return format == ImageFormat::png ? write_png(path, image) : write_bmp(path, image);
 }
 
-std::string read_image(const std::filesystem::path& path, Image8& image) {
-    std::vector<std::uint8_t> bytes;
-    if (std::string error = read_file_bytes(path, bytes); !error.empty()) return error;
-    std::string error = bytes.size() >= 2 && bytes[0] == 'B' && bytes[1] == 'M'
-                            ? decode_bmp(bytes, image)
-                            : decode_png(bytes, image);
-    return error.empty() ? error : file_message(path, error);
+Expected<Image8> read_image(const std::filesystem::path& path) {
+    Expected<std::vector<std::uint8_t>> bytes = read_file_bytes(path);
+    if (!bytes) return bytes.error();
+    const bool bmp = bytes->size() >= 2 && (*bytes)[0] == 'B' && (*bytes)[1] == 'M';
+    Expected<Image8> image = bmp ? decode_bmp(*bytes) : decode_png(*bytes);
+    if (!image) return Error{file_message(path, image.error().message)};
+    return image;
 }
 
 }  // namespace jt

@@ -1,6 +1,8 @@
 #include "jtracer/merge_regions.hpp"
 
 #include <cstdint>
+#include <optional>
+#include <utility>
 
 namespace jt {
 
@@ -10,21 +12,21 @@ std::string size_text(int w, int h) {
     return std::to_string(w) + "x" + std::to_string(h);
 }
 
-// Empty when `part` is whole and fits the first part's frame.
-std::string check_part(const RegionPart& part, const RegionPart& first) {
+// Whether `part` is whole and fits the first part's frame.
+Expected<void> check_part(const RegionPart& part, const RegionPart& first) {
     const RegionPlacement& p = part.placement;
     const RegionPlacement& f = first.placement;
     if (p.frame_width != f.frame_width || p.frame_height != f.frame_height)
-        return part.name + " is a part of a " + size_text(p.frame_width, p.frame_height) +
-               " frame, but " + first.name + " of a " + size_text(f.frame_width, f.frame_height) +
-               " one";
-    if (std::string error = check_region_in_frame(p.region, p.frame_width, p.frame_height);
-        !error.empty())
-        return part.name + ": " + error;
+        return Error{part.name + " is a part of a " + size_text(p.frame_width, p.frame_height) +
+                     " frame, but " + first.name + " of a " +
+                     size_text(f.frame_width, f.frame_height) + " one"};
+    if (Expected<void> inside = check_region_in_frame(p.region, p.frame_width, p.frame_height);
+        !inside)
+        return Error{part.name + ": " + inside.error().message};
     if (part.pixels.width != p.region.width() || part.pixels.height != p.region.height())
-        return part.name + " holds " + size_text(part.pixels.width, part.pixels.height) +
-               " pixels, but declares the " + size_text(p.region.width(), p.region.height()) +
-               " region " + format_frame_region(p.region);
+        return Error{part.name + " holds " + size_text(part.pixels.width, part.pixels.height) +
+                     " pixels, but declares the " + size_text(p.region.width(), p.region.height()) +
+                     " region " + format_frame_region(p.region)};
     return {};
 }
 
@@ -49,31 +51,31 @@ std::optional<std::pair<int, int>> first_gap(const std::vector<RegionPart>& part
 
 }  // namespace
 
-std::string merge_regions(const std::vector<RegionPart>& parts, Image8& frame) {
-    if (parts.empty()) return "no parts to merge";
+Expected<Image8> merge_regions(const std::vector<RegionPart>& parts) {
+    if (parts.empty()) return Error{"no parts to merge"};
     for (const RegionPart& part : parts)
-        if (std::string error = check_part(part, parts.front()); !error.empty()) return error;
+        if (Expected<void> fits = check_part(part, parts.front()); !fits) return fits.error();
     for (std::size_t i = 0; i < parts.size(); ++i)
         for (std::size_t j = i + 1; j < parts.size(); ++j)
             if (parts[i].name == parts[j].name)
-                return parts[i].name + " is given twice";
+                return Error{parts[i].name + " is given twice"};
             else if (overlap(parts[i].placement.region, parts[j].placement.region))
-                return parts[i].name + " (region " +
-                       format_frame_region(parts[i].placement.region) + ") overlaps " +
-                       parts[j].name + " (region " +
-                       format_frame_region(parts[j].placement.region) + ")";
+                return Error{parts[i].name + " (region " +
+                             format_frame_region(parts[i].placement.region) + ") overlaps " +
+                             parts[j].name + " (region " +
+                             format_frame_region(parts[j].placement.region) + ")"};
     const int w = parts.front().placement.frame_width;
     const int h = parts.front().placement.frame_height;
     if (auto gap = first_gap(parts, w, h))
-        return "the parts leave a gap: no part covers pixel " + std::to_string(gap->first) + "," +
-               std::to_string(gap->second) + " (top-left origin) of the " + size_text(w, h) +
-               " frame";
-    frame = Image8(w, h);
+        return Error{"the parts leave a gap: no part covers pixel " + std::to_string(gap->first) +
+                     "," + std::to_string(gap->second) + " (top-left origin) of the " +
+                     size_text(w, h) + " frame"};
+    Image8 frame(w, h);
     for (const RegionPart& part : parts) {
         PixelRect r = to_image_rect(part.placement.region, h);
         paste_image(frame, part.pixels, r.x0, r.y0);
     }
-    return {};
+    return frame;
 }
 
 }  // namespace jt

@@ -31,34 +31,34 @@ std::vector<std::uint8_t> encode_png(const Image8& image) {
     return out;
 }
 
-std::string decode_png(std::span<const std::uint8_t> bytes, Image8& image) {
+Expected<Image8> decode_png(std::span<const std::uint8_t> bytes) {
     if (bytes.size() > static_cast<std::size_t>(std::numeric_limits<int>::max()))
-        return "PNG file too large";
+        return Error{"PNG file too large"};
     int width = 0, height = 0, channels = 0;
     stbi_uc* pixels = stbi_load_from_memory(bytes.data(), static_cast<int>(bytes.size()), &width,
                                             &height, &channels, 3);
-    if (!pixels) return std::string("not a readable PNG: ") + stbi_failure_reason();
-    image = Image8(width, height);
+    if (!pixels) return Error{std::string("not a readable PNG: ") + stbi_failure_reason()};
+    Image8 image(width, height);
     const std::size_t stride = static_cast<std::size_t>(width) * 3;
     for (int y = 0; y < height; ++y)
         std::memcpy(image.pixel(0, y), pixels + stride * static_cast<std::size_t>(height - 1 - y),
                     stride);
     stbi_image_free(pixels);
-    return {};
+    return image;
 }
 
-std::string write_png(const std::filesystem::path& path, const Image8& image) {
+Expected<void> write_png(const std::filesystem::path& path, const Image8& image) {
     std::vector<std::uint8_t> bytes = encode_png(image);
-    if (bytes.empty()) return "cannot encode " + file_message(path, "PNG encoder failed");
+    if (bytes.empty()) return Error{"cannot encode " + file_message(path, "PNG encoder failed")};
     return write_file_atomically(path, bytes);
 }
 
-std::string read_png(const std::filesystem::path& path, Image8& image) {
-    std::vector<std::uint8_t> bytes;
-    if (std::string error = read_file_bytes(path, bytes); !error.empty()) return error;
-    if (std::string error = decode_png(bytes, image); !error.empty())
-        return file_message(path, error);
-    return {};
+Expected<Image8> read_png(const std::filesystem::path& path) {
+    Expected<std::vector<std::uint8_t>> bytes = read_file_bytes(path);
+    if (!bytes) return bytes.error();
+    Expected<Image8> image = decode_png(*bytes);
+    if (!image) return Error{file_message(path, image.error().message)};
+    return image;
 }
 
 }  // namespace jt

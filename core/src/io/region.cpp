@@ -27,25 +27,24 @@ bool parse_ints(std::string_view text, std::vector<int>& values) {
 
 }  // namespace
 
-std::optional<FrameRegion> parse_frame_region(std::string_view text, std::string& error) {
+Expected<FrameRegion> parse_frame_region(std::string_view text) {
     // Messages are built by appending: GCC 12 warns falsely (-Wrestrict) about
     // chains of operator+ that start from a literal.
     std::string quoted = "\"";
     quoted.append(text).append("\"");
     std::vector<int> v;
     if (!parse_ints(text, v) || v.size() != 4) {
-        error = "expected X0,Y0,X1,Y1 (four whole numbers separated by commas), got ";
-        error += quoted;
-        return std::nullopt;
+        std::string message = "expected X0,Y0,X1,Y1 (four whole numbers separated by commas), got ";
+        message += quoted;
+        return Error{message};
     }
     FrameRegion r{v[0], v[1], v[2], v[3]};
     if (r.x0 < 0 || r.y0 < 0) {
-        error = quoted + ": X0 and Y0 must not be negative";
-        return std::nullopt;
+        return Error{quoted + ": X0 and Y0 must not be negative"};
     }
     if (r.x1 <= r.x0 || r.y1 <= r.y0) {
-        error = quoted + " is empty: the bounds are half-open, so X1 must exceed X0 and Y1 Y0";
-        return std::nullopt;
+        return Error{quoted +
+                     " is empty: the bounds are half-open, so X1 must exceed X0 and Y1 Y0"};
     }
     return r;
 }
@@ -56,18 +55,18 @@ std::string format_frame_region(const FrameRegion& r) {
     return text;
 }
 
-std::string check_region_in_frame(const FrameRegion& r, int frame_width, int frame_height) {
+Expected<void> check_region_in_frame(const FrameRegion& r, int frame_width, int frame_height) {
     std::string message = "region ";
     message += format_frame_region(r);
     const std::string frame = std::to_string(frame_width) + "x" + std::to_string(frame_height);
     if (r.x0 < 0 || r.y0 < 0 || r.x1 <= r.x0 || r.y1 <= r.y0)
-        return message + " is empty or has negative bounds";
+        return Error{message + " is empty or has negative bounds"};
     if (r.x1 > frame_width)
-        return message + " reaches past the right edge of the " + frame +
-               " image (X1 may be at most " + std::to_string(frame_width) + ")";
+        return Error{message + " reaches past the right edge of the " + frame +
+                     " image (X1 may be at most " + std::to_string(frame_width) + ")"};
     if (r.y1 > frame_height)
-        return message + " reaches past the bottom edge of the " + frame +
-               " image (Y1 may be at most " + std::to_string(frame_height) + ")";
+        return Error{message + " reaches past the bottom edge of the " + frame +
+                     " image (Y1 may be at most " + std::to_string(frame_height) + ")"};
     return {};
 }
 

@@ -28,8 +28,8 @@ std::uint32_t get32(const std::uint8_t* p) {
 
 }  // namespace
 
-std::string write_region_bmp(const std::filesystem::path& path, const Image8& part,
-                             const RegionPlacement& p) {
+Expected<void> write_region_bmp(const std::filesystem::path& path, const Image8& part,
+                                const RegionPlacement& p) {
     std::vector<std::uint8_t> bytes = encode_bmp(part);
     std::array<std::uint8_t, record_size> record{};
     std::copy(magic.begin(), magic.end(), record.begin());
@@ -43,37 +43,41 @@ std::string write_region_bmp(const std::filesystem::path& path, const Image8& pa
     for (std::size_t i = 0; i < std::size(fields); ++i) put32(&record[4 + 4 * i], fields[i]);
     bytes.insert(bytes.begin() + bmp_headers, record.begin(), record.end());
     if (bytes.size() > 0xFFFFFFFFu)
-        return "cannot write " + file_message(path, "the region is too large for a BMP (4 GiB)");
+        return Error{"cannot write " +
+                     file_message(path, "the region is too large for a BMP (4 GiB)")};
     put32(&bytes[2], static_cast<std::uint32_t>(bytes.size()));
     put32(&bytes[10], get32(&bytes[10]) + record_size);  // the pixels move past the record
     return write_file_atomically(path, bytes);
 }
 
-std::string read_region_bmp(const std::filesystem::path& path, Image8& part, RegionPlacement& p) {
-    std::vector<std::uint8_t> bytes;
-    if (std::string error = read_file_bytes(path, bytes); !error.empty()) return error;
-    if (std::string error = decode_bmp(bytes, part); !error.empty())
-        return file_message(path, error);
+Expected<RegionPart> read_region_bmp(const std::filesystem::path& path) {
+    Expected<std::vector<std::uint8_t>> read = read_file_bytes(path);
+    if (!read) return read.error();
+    const std::vector<std::uint8_t>& bytes = *read;
+    Expected<Image8> pixels = decode_bmp(bytes);
+    if (!pixels) return Error{file_message(path, pixels.error().message)};
     if (get32(&bytes[10]) < bmp_headers + record_size ||
         !std::equal(magic.begin(), magic.end(), bytes.begin() + bmp_headers))
-        return file_message(path,
-                            "carries no region record (only BMPs written by "
-                            "'jtracer-cli --region ... --region-output' can be merged)");
+        return Error{file_message(path,
+                                  "carries no region record (only BMPs written by "
+                                  "'jtracer-cli --region ... --region-output' can be merged)")};
     const std::uint8_t* r = &bytes[bmp_headers];
     if (get32(r + 4) != version)
-        return file_message(path,
-                            "region record of unknown version " + std::to_string(get32(r + 4)));
+        return Error{
+            file_message(path, "region record of unknown version " + std::to_string(get32(r + 4)))};
     auto field = [&](int i) {
         std::uint32_t v = get32(r + 8 + 4 * i);
         return v > 65535u ? -1 : static_cast<int>(v);  // no frame is wider than 65535
     };
+    RegionPart part{path.string(), std::move(*pixels), {}};
+    RegionPlacement& p = part.placement;
     p.frame_width = field(0);
     p.frame_height = field(1);
     p.region = {field(2), field(3), field(4), field(5)};
     if (p.frame_width <= 0 || p.frame_height <= 0 || p.region.x0 < 0 || p.region.y0 < 0 ||
         p.region.x1 < 0 || p.region.y1 < 0)
-        return file_message(path, "region record holds numbers out of range");
-    return {};
+        return Error{file_message(path, "region record holds numbers out of range")};
+    return part;
 }
 
 }  // namespace jt

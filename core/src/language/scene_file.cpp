@@ -29,75 +29,59 @@ std::string describe_errno(int error) {
 
 }  // namespace
 
-TextFile read_text_file(const std::filesystem::path& path, std::uintmax_t max_bytes) {
-    TextFile file;
+Expected<std::string> read_text_file(const std::filesystem::path& path, std::uintmax_t max_bytes) {
     const std::string name = lang::quote(path.string());
     std::error_code ec;
     auto status = std::filesystem::status(path, ec);
-    if (ec || !std::filesystem::exists(status)) {
-        file.error = "cannot read " + name + ": no such file";
-        return file;
-    }
-    if (std::filesystem::is_directory(status)) {
-        file.error = name + " is a directory, not a scene file";
-        return file;
-    }
+    if (ec || !std::filesystem::exists(status))
+        return Error{"cannot read " + name + ": no such file"};
+    if (std::filesystem::is_directory(status))
+        return Error{name + " is a directory, not a scene file"};
     std::uintmax_t known_size = 0;  // 0: unknown (or empty)
     if (std::filesystem::is_regular_file(status)) {
         auto size = std::filesystem::file_size(path, ec);
         if (!ec) known_size = size;
-        if (!ec && size > max_bytes) {
-            file.error = name + " is too large to read (" + std::to_string(size) +
-                         " bytes; the limit is " + std::to_string(max_bytes) + ")";
-            return file;
-        }
+        if (!ec && size > max_bytes)
+            return Error{name + " is too large to read (" + std::to_string(size) +
+                         " bytes; the limit is " + std::to_string(max_bytes) + ")"};
     }
     errno = 0;
     std::unique_ptr<std::FILE, int (*)(std::FILE*)> f(std::fopen(path.c_str(), "rb"), &std::fclose);
-    if (!f) {
-        file.error = "cannot read " + name + ": " + describe_errno(errno);
-        return file;
-    }
+    if (!f) return Error{"cannot read " + name + ": " + describe_errno(errno)};
+    std::string text;
     // A regular file of known size is read in one go into a buffer of that
     // size: growing the string chunk by chunk would copy it and fault in twice
     // its pages. The loop below then only confirms the end (or reads on, if the
     // file grew meanwhile); pipes and other files of no known size start there.
     if (known_size > 0) {
-        file.text.reserve(static_cast<std::size_t>(known_size));
-        advise_huge_pages(file.text);
-        file.text.resize(static_cast<std::size_t>(known_size));
-        file.text.resize(std::fread(file.text.data(), 1, file.text.size(), f.get()));
+        text.reserve(static_cast<std::size_t>(known_size));
+        advise_huge_pages(text);
+        text.resize(static_cast<std::size_t>(known_size));
+        text.resize(std::fread(text.data(), 1, text.size(), f.get()));
     }
     char buffer[1 << 16];
     for (;;) {
         std::size_t n = std::fread(buffer, 1, sizeof buffer, f.get());
-        file.text.append(buffer, n);
-        if (file.text.size() > max_bytes) {
-            file.text.clear();
-            file.error =
-                name + " is too large to read (more than " + std::to_string(max_bytes) + " bytes)";
-            return file;
-        }
+        text.append(buffer, n);
+        if (text.size() > max_bytes)
+            return Error{name + " is too large to read (more than " + std::to_string(max_bytes) +
+                         " bytes)"};
         if (n < sizeof buffer) break;
     }
     if (std::ferror(f.get())) {
         int error = errno;
-        file.text.clear();
-        file.error = "cannot read " + name + ": " + describe_errno(error ? error : EIO);
+        return Error{"cannot read " + name + ": " + describe_errno(error ? error : EIO)};
     }
-    return file;
+    return text;
 }
 
-LoadedScene load_scene_file(const std::filesystem::path& path, ParseOptions options) {
+Expected<LoadedScene> load_scene_file(const std::filesystem::path& path, ParseOptions options) {
+    Expected<std::string> text = read_text_file(path);
+    if (!text) return text.error();
     LoadedScene loaded;
     loaded.path = path.string();
     loaded.options = options;
-    TextFile file = read_text_file(path);
-    if (!file.ok()) {
-        loaded.io_error = std::move(file.error);
-        return loaded;
-    }
-    loaded.text = std::move(file.text);
+    loaded.text = std::move(*text);
     loaded.parsed = parse_scene(loaded.text, options);
     return loaded;
 }

@@ -8,7 +8,6 @@
 
 #include <algorithm>
 #include <cmath>
-#include <stdexcept>
 
 namespace jt {
 
@@ -168,7 +167,6 @@ std::shared_ptr<const Geometry> build_geometry(const Scene& scene, const Geometr
         add_bounding_sphere(s);  // for the direction tables' lists, which have no boxes
     }
 
-    if (!embree_device()) throw std::runtime_error("cannot start Embree (rtcNewDevice failed)");
     g->bvh = rtcNewScene(embree_device());
     rtcSetSceneBuildQuality(
         g->bvh, bounded > fast_build_threshold ? RTC_BUILD_QUALITY_LOW : RTC_BUILD_QUALITY_MEDIUM);
@@ -185,8 +183,10 @@ std::shared_ptr<const Geometry> build_geometry(const Scene& scene, const Geometr
 
 }  // namespace
 
-std::shared_ptr<const PreparedScene> prepare_scene(const Scene& scene,
-                                                   std::shared_ptr<const PreparedScene> previous) {
+Expected<std::shared_ptr<const PreparedScene>> prepare_scene(
+    const Scene& scene, std::shared_ptr<const PreparedScene> previous) {
+    // Checked here, before any work: build_geometry needs the device.
+    if (!embree_device()) return Error{"cannot start Embree (rtcNewDevice failed)"};
     auto prepared = std::make_shared<PreparedScene>();
     const GeometryDigest digest = digest_geometry(scene.primitives);
     auto build = [&] {
@@ -221,7 +221,7 @@ std::shared_ptr<const PreparedScene> prepare_scene(const Scene& scene,
             build_light_tables(*prepared->geometry, scene.lights));
     prepared->cameras = scene.cameras;
     prepared->settings = scene.settings;
-    return prepared;
+    return std::shared_ptr<const PreparedScene>(std::move(prepared));
 }
 
 }  // namespace jt
