@@ -25,10 +25,10 @@ double seconds_since(Clock::time_point start) {
 
 class Coordinator {
   public:
-    Coordinator(const std::shared_ptr<const PreparedScene>& scene, const RenderOptions& frame,
+    Coordinator(const std::shared_ptr<const PreparedFrame>& frame, int width, int height,
                 const std::vector<PixelRect>& tiles, int ranks)
-        : scene_(scene), frame_(frame), tiles_(tiles), ranks_(ranks) {
-        result_.frame = Image8(frame.width, frame.height);
+        : frame_(frame), tiles_(tiles), ranks_(ranks) {
+        result_.frame = Image8(width, height);
     }
 
     CoordinatorResult run(const std::atomic<bool>& stop, bool quiet) {
@@ -62,13 +62,12 @@ class Coordinator {
     }
 
   private:
-    std::shared_ptr<const PreparedScene> scene_;
-    RenderOptions frame_;
+    std::shared_ptr<const PreparedFrame> frame_;
     const std::vector<PixelRect>& tiles_;
     int ranks_;
     std::size_t next_tile_ = 0;
     std::size_t pasted_ = 0;
-    std::future<RenderedTile> local_;
+    std::future<WorkTile> local_;
     PixelRect local_rect_;
     std::vector<std::uint8_t> message_;
     CoordinatorResult result_;
@@ -87,14 +86,16 @@ class Coordinator {
     void start_local_tile() {
         if (next_tile_ >= tiles_.size()) return;
         local_rect_ = tiles_[next_tile_++];
-        local_ = std::async(std::launch::async, render_work_tile, scene_, frame_, local_rect_);
+        local_ = std::async(std::launch::async, [frame = frame_, rect = local_rect_] {
+            return render_work_tile(*frame, rect);
+        });
     }
 
     bool collect_local_tile() {
         if (!local_.valid() ||
             local_.wait_for(std::chrono::seconds(0)) != std::future_status::ready)
             return false;
-        RenderedTile tile = local_.get();
+        WorkTile tile = local_.get();
         result_.stats.tiles += 1;
         result_.stats.render_seconds += tile.seconds;
         result_.rays += tile.rays;
@@ -151,10 +152,10 @@ class Coordinator {
 
 }  // namespace
 
-CoordinatorResult run_coordinator(const std::shared_ptr<const PreparedScene>& scene,
-                                  const RenderOptions& frame, const std::vector<PixelRect>& tiles,
-                                  int ranks, const std::atomic<bool>& stop, bool quiet) {
-    return Coordinator(scene, frame, tiles, ranks).run(stop, quiet);
+CoordinatorResult run_coordinator(const std::shared_ptr<const PreparedFrame>& frame, int width,
+                                  int height, const std::vector<PixelRect>& tiles, int ranks,
+                                  const std::atomic<bool>& stop, bool quiet) {
+    return Coordinator(frame, width, height, tiles, ranks).run(stop, quiet);
 }
 
 }  // namespace jt::mpi

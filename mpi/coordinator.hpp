@@ -5,7 +5,7 @@
 #include "messages.hpp"
 
 #include "jtracer/image.hpp"
-#include "jtracer/render_job.hpp"
+#include "jtracer/render_tile.hpp"
 
 #include <atomic>
 #include <cstdint>
@@ -24,10 +24,11 @@ struct CoordinatorResult {
     RankStats stats;       // rank 0's own
 };
 
-// `ranks` counts rank 0. Returns early, incomplete, when `stop` becomes true;
-// the workers are then still waiting and the caller must abort the job.
-CoordinatorResult run_coordinator(const std::shared_ptr<const PreparedScene>& scene,
-                                  const RenderOptions& frame, const std::vector<PixelRect>& tiles,
-                                  int ranks, const std::atomic<bool>& stop, bool quiet);
+// `frame` is `width` x `height` pixels; `ranks` counts rank 0. Returns early,
+// incomplete, when `stop` becomes true; the workers are then still waiting and
+// the caller must abort the job.
+CoordinatorResult run_coordinator(const std::shared_ptr<const PreparedFrame>& frame, int width,
+                                  int height, const std::vector<PixelRect>& tiles, int ranks,
+                                  const std::atomic<bool>& stop, bool quiet);
 
 }  // namespace jt::mpi

@@ -106,21 +106,23 @@ int run(int argc, char** argv, int rank, int ranks) {
             std::cerr << "jtracer-mpi: " << prepared.error().message << "; nothing was written\n";
         return exit_io_error;
     }
-    const std::shared_ptr<const jt::PreparedScene>& scene = *prepared;
+    // One frame a rank: the camera table is built once, by the rank's first tile.
+    const std::shared_ptr<const jt::PreparedFrame> frame =
+        jt::prepare_frame(*prepared, setup.render);
     const std::vector<jt::PixelRect> tiles =
         cut_work_tiles(setup.render.width, setup.render.height, o.tile_size);
     RankStats mine;
     mine.setup_seconds = std::chrono::duration<double>(Clock::now() - start).count();
 
     if (rank != 0) {
-        RankStats worked = run_worker(scene, setup.render, tiles);
+        RankStats worked = run_worker(*frame, tiles);
         worked.setup_seconds = mine.setup_seconds;
         MPI_Gather(&worked, sizeof worked, MPI_BYTE, nullptr, 0, MPI_BYTE, 0, MPI_COMM_WORLD);
         return exit_ok;
     }
 
-    CoordinatorResult result =
-        run_coordinator(scene, setup.render, tiles, ranks, interrupted, o.quiet);
+    CoordinatorResult result = run_coordinator(frame, setup.render.width, setup.render.height,
+                                               tiles, ranks, interrupted, o.quiet);
     if (!result.complete) {
         // The workers still wait for tiles; only an abort ends them.
         std::cerr << "jtracer-mpi: stopped before every tile came back (interrupted, or a rank "

@@ -1,6 +1,5 @@
 #include "work_tiles.hpp"
 
-
 #include <algorithm>
 #include <chrono>
 
@@ -14,17 +13,12 @@ std::vector<PixelRect> cut_work_tiles(int width, int height, int size) {
     return tiles;
 }
 
-RenderedTile render_work_tile(const std::shared_ptr<const PreparedScene>& scene,
-                              const RenderOptions& frame, const PixelRect& tile) {
+WorkTile render_work_tile(const PreparedFrame& frame, const PixelRect& tile) {
     const auto start = std::chrono::steady_clock::now();
-    RenderOptions options = frame;
-    options.previews = false;
-    options.region = tile;
-    RenderJob job(scene, options);
-    job.run();
-    RenderedTile out;
-    out.pixels = job.region_image();
-    out.rays = job.progress().rays;
+    RenderedTile rendered = render_tile(frame, tile);
+    WorkTile out;
+    out.pixels = std::move(rendered.pixels);
+    out.rays = rendered.rays;
     out.seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
     return out;
 }

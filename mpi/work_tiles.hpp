@@ -3,10 +3,9 @@
 // rendering of one of them.
 
 #include "jtracer/image.hpp"
-#include "jtracer/render_job.hpp"
+#include "jtracer/render_tile.hpp"
 
 #include <cstdint>
-#include <memory>
 #include <vector>
 
 namespace jt::mpi {
@@ -15,15 +14,15 @@ namespace jt::mpi {
 // top row of tiles down, so that the image fills in reading order.
 std::vector<PixelRect> cut_work_tiles(int width, int height, int size);
 
-struct RenderedTile {
+struct WorkTile {
     Image8 pixels;  // the tile's own size, row 0 at its bottom
     std::uint64_t rays = 0;
-    double seconds = 0.0;
+    double seconds = 0.0;  // rendering it
 };
 
 // Renders the pixels of `tile` exactly as a render of the whole frame would,
-// with the rank's local cores (oneTBB).
-RenderedTile render_work_tile(const std::shared_ptr<const PreparedScene>& scene,
-                              const RenderOptions& frame, const PixelRect& tile);
+// with the rank's local cores (oneTBB). Every tile of the rank shares the
+// frame's camera table, built by its first tile.
+WorkTile render_work_tile(const PreparedFrame& frame, const PixelRect& tile);
 
 }  // namespace jt::mpi

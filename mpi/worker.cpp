@@ -22,8 +22,7 @@ bool told_to_die() {
 
 }  // namespace
 
-RankStats run_worker(const std::shared_ptr<const PreparedScene>& scene, const RenderOptions& frame,
-                     const std::vector<PixelRect>& tiles) {
+RankStats run_worker(const PreparedFrame& frame, const std::vector<PixelRect>& tiles) {
     RankStats stats;
     const bool die = told_to_die();
     std::vector<std::uint8_t> message;
@@ -33,7 +32,7 @@ RankStats run_worker(const std::shared_ptr<const PreparedScene>& scene, const Re
         std::int32_t index = no_more_tiles;
         MPI_Recv(&index, 1, MPI_INT32_T, 0, tag_assign, MPI_COMM_WORLD, MPI_STATUS_IGNORE);
         if (index < 0 || index >= static_cast<std::int32_t>(tiles.size())) break;
-        RenderedTile tile = render_work_tile(scene, frame, tiles[static_cast<std::size_t>(index)]);
+        WorkTile tile = render_work_tile(frame, tiles[static_cast<std::size_t>(index)]);
         if (die) std::abort();
         stats.tiles += 1;
         stats.render_seconds += tile.seconds;

@@ -3,14 +3,13 @@
 
 #include "messages.hpp"
 
-#include "jtracer/render_job.hpp"
+#include "jtracer/render_tile.hpp"
 
 #include <memory>
 #include <vector>
 
 namespace jt::mpi {
 
-RankStats run_worker(const std::shared_ptr<const PreparedScene>& scene, const RenderOptions& frame,
-                     const std::vector<PixelRect>& tiles);
+RankStats run_worker(const PreparedFrame& frame, const std::vector<PixelRect>& tiles);
 
 }  // namespace jt::mpi

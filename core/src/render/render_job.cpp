@@ -1,10 +1,8 @@
 #include "jtracer/render_job.hpp"
 
-#include "render/camera_rays.hpp"
+#include "render/prepared_frame.hpp"
 #include "render/prepared_scene.hpp"
 #include "render/render_passes.hpp"
-#include "render/sample_pattern.hpp"
-#include "render/trace.hpp"
 
 #include "jtracer/validate.hpp"
 
@@ -23,16 +21,6 @@ namespace jt {
 
 namespace {
 
-constexpr int tile_blocks = 32;  // a tile is 32 x 32 rays
-
-double clamp01(double c) {
-    return c > 0.0 ? (c < 1.0 ? c : 1.0) : 0.0;
-}
-
-Colour clamp01(const Colour& c) {
-    return {clamp01(c.x), clamp01(c.y), clamp01(c.z)};
-}
-
 PixelRect unite(const std::optional<PixelRect>& a, const PixelRect& b) {
     if (!a) return b;
     return {std::min(a->x0, b.x0), std::min(a->y0, b.y0), std::max(a->x1, b.x1),
@@ -44,18 +32,6 @@ PixelRect clip_region(const RenderOptions& o) {
     if (!o.region) return full;
     return {std::clamp(o.region->x0, 0, full.x1), std::clamp(o.region->y0, 0, full.y1),
             std::clamp(o.region->x1, 0, full.x1), std::clamp(o.region->y1, 0, full.y1)};
-}
-
-// Camera rays through a camera that cannot form a frame (no camera, look_at
-// equal to position) come out non-finite, and trace_ray turns them into the
-// background rather than NaN.
-CameraFrame frame_for(const PreparedScene& scene, const RenderOptions& o) {
-    Camera camera;
-    if (o.camera >= 0 && o.camera < static_cast<int>(scene.cameras.size()))
-        camera = scene.cameras[static_cast<std::size_t>(o.camera)];
-    else
-        camera.look_at = camera.position;
-    return camera_frame(camera, std::max(o.width, 1), std::max(o.height, 1));
 }
 
 // Lowers the OS priority of every thread that enters the arena (on Linux the
@@ -77,34 +53,11 @@ class BackgroundPriority : public tbb::task_scheduler_observer {
     }
 };
 
-// The quantized pixels of one tile, row by row, before they are published.
-struct TileBuffer {
-    PixelRect rect;
-    std::vector<std::uint8_t> rgb;
-    std::vector<Colour> sums;  // the tile's new running sums, when the job accumulates
-
-    explicit TileBuffer(const PixelRect& r)
-        : rect(r), rgb(static_cast<std::size_t>(r.width()) * r.height() * 3) {}
-    void put(int x, int y, const Colour& c) {
-        std::uint8_t* p = &rgb[(static_cast<std::size_t>(y - rect.y0) * rect.width() +
-                                static_cast<std::size_t>(x - rect.x0)) *
-                               3];
-        p[0] = quantize_channel(c.x);
-        p[1] = quantize_channel(c.y);
-        p[2] = quantize_channel(c.z);
-    }
-};
-
 }  // namespace
 
 struct RenderJob::State {
-    std::shared_ptr<const PreparedScene> scene;
+    std::shared_ptr<const PreparedFrame> frame;  // null without a scene
     RenderOptions options;
-    CameraFrame camera;
-    // Shapes by direction around camera.position, for the primary rays; built
-    // by the first full-resolution pass, off the thread that made the job.
-    DirectionTable camera_table;
-    std::once_flag camera_table_built;
     PixelRect region;
     std::vector<RenderPass> passes;
     std::uint64_t total_work = 0;
@@ -137,10 +90,6 @@ struct RenderJob::State {
 
     // False when cancelled before the tile was whole (nothing of it is kept).
     bool render_tile(const RenderPass& pass, const PixelRect& tile);
-    // Both return false when cancelled part way.
-    bool render_blocks(int block, const PixelRect& tile, TileBuffer& out, std::uint64_t& rays);
-    bool render_samples(const RenderPass& pass, const PixelRect& tile, TileBuffer& out,
-                        std::uint64_t& rays);
     void publish(const PixelRect& tile, const std::vector<std::uint8_t>& rgb);
 
     std::size_t sum_index(int x, int y) const {
@@ -166,82 +115,38 @@ void RenderJob::State::publish(const PixelRect& tile, const std::vector<std::uin
     dirty = unite(dirty, tile);
 }
 
-bool RenderJob::State::render_blocks(int b, const PixelRect& tile, TileBuffer& out,
-                                     std::uint64_t& rays) {
-    for (int by = tile.y0 / b * b; by < tile.y1; by += b) {
-        if (cancel_requested.load(std::memory_order_relaxed)) return false;
-        for (int bx = tile.x0 / b * b; bx < tile.x1; bx += b) {
-            // The centre of the block, as far as the image reaches.
-            double cx = bx + 0.5 * (std::min(bx + b, options.width) - bx);
-            double cy = by + 0.5 * (std::min(by + b, options.height) - by);
-            Colour c = trace_ray(*scene, camera.position, camera_direction(camera, cx, cy), 0.0,
-                                 rays, &camera_table);
-            for (int y = std::max(by, tile.y0); y < std::min(by + b, tile.y1); ++y)
-                for (int x = std::max(bx, tile.x0); x < std::min(bx + b, tile.x1); ++x)
-                    out.put(x, y, c);
-        }
-    }
-    return true;
-}
-
-bool RenderJob::State::render_samples(const RenderPass& pass, const PixelRect& tile,
-                                      TileBuffer& out, std::uint64_t& rays) {
-    const bool accumulate = !sums.empty();
-    // The new sums stay in the tile until it is whole: a tile cancelled part
-    // way leaves `sums` as they were, so its pass can run again after resume().
-    if (accumulate) out.sums.resize(static_cast<std::size_t>(tile.width()) * tile.height());
-    for (int y = tile.y0; y < tile.y1; ++y) {
-        if (cancel_requested.load(std::memory_order_relaxed)) return false;
-        for (int x = tile.x0; x < tile.x1; ++x) {
-            if (!accumulate) {
-                out.put(
-                    x, y,
-                    trace_ray(*scene, camera.position, camera_direction(camera, x + 0.5, y + 0.5),
-                              0.0, rays, &camera_table));
-                continue;
-            }
-            // Each pixel belongs to one tile, so its running sum needs no lock,
-            // and its samples add up in index order whatever the threads do.
-            Colour sum = pass.sample_begin == 0 ? Colour(0.0) : sums[sum_index(x, y)];
-            for (int k = pass.sample_begin; k < pass.sample_end; ++k) {
-                SampleOffset o = sample_offset(k);
-                sum += clamp01(trace_ray(*scene, camera.position,
-                                         camera_direction(camera, x + o.x, y + o.y), 0.0, rays,
-                                         &camera_table));
-            }
-            out.sums[static_cast<std::size_t>(y - tile.y0) * tile.width() + (x - tile.x0)] = sum;
-            out.put(x, y, sum / static_cast<double>(pass.sample_end));
-        }
-    }
-    if (accumulate)
-        for (int y = tile.y0; y < tile.y1; ++y)
-            std::copy_n(&out.sums[static_cast<std::size_t>(y - tile.y0) * tile.width()],
-                        tile.width(), &sums[sum_index(tile.x0, y)]);
-    return true;
-}
-
 bool RenderJob::State::render_tile(const RenderPass& pass, const PixelRect& tile) {
     if (cancel_requested.load(std::memory_order_relaxed)) return false;
     TileBuffer out(tile);
+    // The new sums stay in the tile until it is whole: a tile cancelled part
+    // way leaves `sums` as they were, so its pass can run again after resume().
+    const bool accumulate = !sums.empty() && pass.block == 1;
+    if (accumulate && pass.sample_begin > 0) {
+        out.sums.resize(static_cast<std::size_t>(tile.width()) * tile.height());
+        for (int y = tile.y0; y < tile.y1; ++y)
+            std::copy_n(&sums[sum_index(tile.x0, y)], tile.width(),
+                        &out.sums[out.index(tile.x0, y)]);
+    }
     std::uint64_t tile_rays = 0;
-    bool whole = pass.block > 1 ? render_blocks(pass.block, tile, out, tile_rays)
-                                : render_samples(pass, tile, out, tile_rays);
+    const bool whole = trace_tile(*frame, pass, out, cancel_requested, tile_rays);
     rays.fetch_add(tile_rays, std::memory_order_relaxed);
-    if (whole) publish(tile, out.rgb);
-    return whole;
+    if (!whole) return false;
+    if (accumulate)
+        for (int y = tile.y0; y < tile.y1; ++y)
+            std::copy_n(&out.sums[out.index(tile.x0, y)], tile.width(),
+                        &sums[sum_index(tile.x0, y)]);
+    publish(tile, out.rgb);
+    return true;
 }
 
 RenderJob::RenderJob(std::shared_ptr<const PreparedScene> scene, RenderOptions options)
     : state_(std::make_unique<State>()) {
     State& s = *state_;
-    options.samples = std::clamp(options.samples, 1, 1024);
-    options.width = std::max(options.width, 0);
-    options.height = std::max(options.height, 0);
-    s.scene = std::move(scene);
+    options = frame_options(options);
     s.options = options;
     s.region = clip_region(options);
-    if (s.scene) {
-        s.camera = frame_for(*s.scene, options);
+    if (scene) {
+        s.frame = prepare_frame(std::move(scene), options);
         s.passes = plan_passes(s.region, options.samples, options.previews);
     }
     for (const RenderPass& p : s.passes) s.total_work += p.work;
@@ -264,16 +169,9 @@ bool RenderJob::run_pass() {
         s.pass_started = std::chrono::steady_clock::now();
     }
     const RenderPass& pass = s.passes[index];
-    // Previews trace a few rays a block: for them the table (up to tens of ms
-    // for thousands of shapes) would cost more than it saves and delay the
-    // viewer's first picture. Passes run one at a time, so no tile reads the
-    // table while it is built.
-    if (pass.block == 1)
-        std::call_once(s.camera_table_built, [&s] {
-            const Geometry& g = *s.scene->geometry;
-            s.camera_table = build_direction_table(
-                g, s.camera.position, table_resolution(g.spheres.size() + g.shapes.size(), true));
-        });
+    // Built by the first full-resolution pass, off the thread that made the
+    // job, and before the pass's tiles run (prepared_frame.hpp says why).
+    if (pass.block == 1) static_cast<void>(s.frame->camera_table());
     const std::vector<PixelRect> tiles = cut_tiles(s.region, pass.block, tile_blocks);
     if (s.tiles_pass != index) {  // a fresh pass, not one resumed after a cancel
         s.tiles_pass = index;

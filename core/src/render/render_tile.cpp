@@ -1,0 +1,167 @@
+#include "jtracer/render_tile.hpp"
+
+#include "render/prepared_frame.hpp"
+#include "render/prepared_scene.hpp"
+#include "render/sample_pattern.hpp"
+#include "render/trace.hpp"
+
+#include <tbb/parallel_for.h>
+#include <tbb/task_arena.h>
+
+#include <algorithm>
+
+namespace jt {
+
+namespace {
+
+double clamp01(double c) {
+    return c > 0.0 ? (c < 1.0 ? c : 1.0) : 0.0;
+}
+
+Colour clamp01(const Colour& c) {
+    return {clamp01(c.x), clamp01(c.y), clamp01(c.z)};
+}
+
+void put(TileBuffer& out, int x, int y, const Colour& c) {
+    std::uint8_t* p = &out.rgb[out.index(x, y) * 3];
+    p[0] = quantize_channel(c.x);
+    p[1] = quantize_channel(c.y);
+    p[2] = quantize_channel(c.z);
+}
+
+// Camera rays through a camera that cannot form a frame (no camera, look_at
+// equal to position) come out non-finite, and trace_ray turns them into the
+// background rather than NaN.
+CameraFrame frame_for(const PreparedScene& scene, const RenderOptions& o) {
+    Camera camera;
+    if (o.camera >= 0 && o.camera < static_cast<int>(scene.cameras.size()))
+        camera = scene.cameras[static_cast<std::size_t>(o.camera)];
+    else
+        camera.look_at = camera.position;
+    return camera_frame(camera, std::max(o.width, 1), std::max(o.height, 1));
+}
+
+bool trace_blocks(const PreparedFrame& f, int b, TileBuffer& out, const std::atomic<bool>& cancel,
+                  std::uint64_t& rays) {
+    const PixelRect& tile = out.rect;
+    const CameraFrame& camera = f.camera;
+    for (int by = tile.y0 / b * b; by < tile.y1; by += b) {
+        if (cancel.load(std::memory_order_relaxed)) return false;
+        for (int bx = tile.x0 / b * b; bx < tile.x1; bx += b) {
+            // The centre of the block, as far as the image reaches.
+            double cx = bx + 0.5 * (std::min(bx + b, f.options.width) - bx);
+            double cy = by + 0.5 * (std::min(by + b, f.options.height) - by);
+            // Previews run before the camera table is built: the BVH answers.
+            Colour c =
+                trace_ray(*f.scene, camera.position, camera_direction(camera, cx, cy), 0.0, rays);
+            for (int y = std::max(by, tile.y0); y < std::min(by + b, tile.y1); ++y)
+                for (int x = std::max(bx, tile.x0); x < std::min(bx + b, tile.x1); ++x)
+                    put(out, x, y, c);
+        }
+    }
+    return true;
+}
+
+bool trace_samples(const PreparedFrame& f, const RenderPass& pass, TileBuffer& out,
+                   const std::atomic<bool>& cancel, std::uint64_t& rays) {
+    const PixelRect& tile = out.rect;
+    const CameraFrame& camera = f.camera;
+    const DirectionTable* table = &f.camera_table();
+    const bool accumulate = f.options.samples > 1;
+    for (int y = tile.y0; y < tile.y1; ++y) {
+        if (cancel.load(std::memory_order_relaxed)) return false;
+        for (int x = tile.x0; x < tile.x1; ++x) {
+            if (!accumulate) {
+                put(out, x, y,
+                    trace_ray(*f.scene, camera.position, camera_direction(camera, x + 0.5, y + 0.5),
+                              0.0, rays, table));
+                continue;
+            }
+            // A pixel's samples add up in index order, whatever the threads
+            // and tiles do.
+            Colour& sum = out.sums[out.index(x, y)];
+            if (pass.sample_begin == 0) sum = Colour(0.0);
+            for (int k = pass.sample_begin; k < pass.sample_end; ++k) {
+                SampleOffset o = sample_offset(k);
+                sum += clamp01(trace_ray(*f.scene, camera.position,
+                                         camera_direction(camera, x + o.x, y + o.y), 0.0, rays,
+                                         table));
+            }
+            put(out, x, y, sum / static_cast<double>(pass.sample_end));
+        }
+    }
+    return true;
+}
+
+}  // namespace
+
+const DirectionTable& PreparedFrame::camera_table() const {
+    std::call_once(table_built_, [this] {
+        const Geometry& g = *scene->geometry;
+        table_ = build_direction_table(g, camera.position,
+                                       table_resolution(g.spheres.size() + g.shapes.size(), true));
+    });
+    return table_;
+}
+
+bool trace_tile(const PreparedFrame& frame, const RenderPass& pass, TileBuffer& out,
+                const std::atomic<bool>& cancel, std::uint64_t& rays) {
+    if (frame.options.samples > 1 && pass.block == 1)
+        out.sums.resize(static_cast<std::size_t>(out.rect.width()) * out.rect.height());
+    return pass.block > 1 ? trace_blocks(frame, pass.block, out, cancel, rays)
+                          : trace_samples(frame, pass, out, cancel, rays);
+}
+
+RenderOptions frame_options(RenderOptions options) {
+    options.samples = std::clamp(options.samples, 1, 1024);
+    options.width = std::max(options.width, 0);
+    options.height = std::max(options.height, 0);
+    return options;
+}
+
+std::shared_ptr<const PreparedFrame> prepare_frame(std::shared_ptr<const PreparedScene> scene,
+                                                   const RenderOptions& options) {
+    auto frame = std::make_shared<PreparedFrame>();
+    frame->options = frame_options(options);
+    frame->camera = frame_for(*scene, frame->options);
+    frame->scene = std::move(scene);
+    return frame;
+}
+
+RenderedTile render_tile(const PreparedFrame& frame, const PixelRect& tile) {
+    const PixelRect rect{
+        std::clamp(tile.x0, 0, frame.options.width), std::clamp(tile.y0, 0, frame.options.height),
+        std::clamp(tile.x1, 0, frame.options.width), std::clamp(tile.y1, 0, frame.options.height)};
+    RenderedTile rendered;
+    if (rect.empty()) return rendered;
+    rendered.pixels = Image8(rect.width(), rect.height());
+    static_cast<void>(frame.camera_table());  // built here, outside the parallel loop
+    const RenderPass every_sample{"", 1, 0, frame.options.samples, 0};
+    const std::vector<PixelRect> pieces = cut_tiles(rect, 1, tile_blocks);
+    const std::atomic<bool> never{false};
+    std::atomic<std::uint64_t> rays{0};
+    tbb::task_arena arena(frame.options.threads > 0 ? frame.options.threads
+                                                    : tbb::task_arena::automatic);
+    arena.execute([&] {
+        tbb::parallel_for(
+            tbb::blocked_range<std::size_t>(0, pieces.size(), 1),
+            [&](const tbb::blocked_range<std::size_t>& range) {
+                for (std::size_t i = range.begin(); i != range.end(); ++i) {
+                    TileBuffer out(pieces[i]);
+                    std::uint64_t piece_rays = 0;
+                    trace_tile(frame, every_sample, out, never, piece_rays);
+                    rays.fetch_add(piece_rays, std::memory_order_relaxed);
+                    const PixelRect& p = pieces[i];
+                    const std::size_t row_bytes = static_cast<std::size_t>(p.width()) * 3;
+                    for (int y = p.y0; y < p.y1; ++y)
+                        std::copy_n(&out.rgb[out.index(p.x0, y) * 3], row_bytes,
+                                    rendered.pixels.pixel(p.x0 - rect.x0, y - rect.y0));
+                }
+            },
+            tbb::simple_partitioner());
+    });
+    rendered.rays = rays.load();
+    return rendered;
+}
+
+}  // namespace jt

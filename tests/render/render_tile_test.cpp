@@ -1,0 +1,79 @@
+// render_tile: tiles of one prepared frame give exactly the pixels of a whole
+// render, and the frame builds its camera table once for all of them.
+
+#include "jtracer/render_tile.hpp"
+#include "jtracer/parser.hpp"
+#include "jtracer/region.hpp"
+
+#include "render/prepared_frame.hpp"
+
+#include <gtest/gtest.h>
+
+namespace jt {
+namespace {
+
+Scene tile_scene() {
+    ParseResult parsed = parse_scene(R"(
+render_settings { width: 75; height: 41; recurse_depth: 3; }
+cameras { perspective_camera { position: <0, 1.2, 5>; look_at: <0, 0.5, 0>; aspect: 1.83; } }
+scene {
+    plane { normal: <0, 1, 0>; distance: -1; material { pigment: <0.8, 0.8, 0.8>; diffuse: <1, 1, 1>; } }
+    sphere { center: <-1, 0.3, 0>; radius: 0.8;
+             material { pigment: <1, 0.2, 0.1>; diffuse: <1, 1, 1>; specular: <1, 1, 1>; } }
+    cylinder { radius: 0.3; height: 1.2; transform { xrotate: 30; translate: <1.2, 0, 0>; }
+               material { pigment: <0.2, 0.4, 1>; diffuse: <1, 1, 1>; reflection: 0.5; } }
+    point_light { position: <3, 5, 4>; intensity: <1, 1, 1>; }
+}
+)");
+    EXPECT_TRUE(parsed.ok());
+    return parsed.scene;
+}
+
+TEST(RenderTile, TilesOfOneFrameMakeTheWholeRenderForEverySampleCount) {
+    const Scene scene = tile_scene();
+    auto prepared = prepare_scene(scene).value();
+    for (int samples : {1, 3, 8}) {
+        RenderOptions options = render_options_for(scene);
+        options.samples = samples;
+        options.previews = false;
+        const Image8 whole = render_image(prepared, options);
+        const auto frame = prepare_frame(prepared, options);
+        // Uneven tiles that straddle the renderer's own 32-pixel pieces.
+        Image8 assembled(75, 41);
+        for (PixelRect tile :
+             {PixelRect{0, 0, 40, 41}, PixelRect{40, 0, 75, 17}, PixelRect{40, 17, 75, 41}}) {
+            const RenderedTile rendered = render_tile(*frame, tile);
+            ASSERT_EQ(rendered.pixels.width, tile.width());
+            ASSERT_EQ(rendered.pixels.height, tile.height());
+            EXPECT_GE(rendered.rays, static_cast<std::uint64_t>(tile.width()) * tile.height() *
+                                         static_cast<std::uint64_t>(samples));
+            paste_image(assembled, rendered.pixels, tile.x0, tile.y0);
+        }
+        EXPECT_EQ(assembled, whole) << samples << " samples";
+    }
+}
+
+TEST(RenderTile, ATileReachingOutOfTheFrameIsClipped) {
+    const Scene scene = tile_scene();
+    auto prepared = prepare_scene(scene).value();
+    RenderOptions options = render_options_for(scene);
+    const Image8 whole = render_image(prepared, options);
+    const RenderedTile rendered = render_tile(*prepare_frame(prepared, options), {64, 32, 128, 64});
+    EXPECT_EQ(rendered.pixels, crop_image(whole, {64, 32, 75, 41}));
+    EXPECT_EQ(render_tile(*prepare_frame(prepared, options), {80, 0, 90, 10}).pixels, Image8());
+}
+
+TEST(RenderTile, TheCameraTableIsBuiltOncePerFrame) {
+    const Scene scene = tile_scene();
+    const auto frame = prepare_frame(prepare_scene(scene).value(), render_options_for(scene));
+    static_cast<void>(render_tile(*frame, {0, 0, 32, 32}));
+    const DirectionTable& table = frame->camera_table();
+    ASSERT_GT(table.resolution, 0) << "the tiles traced through a camera table";
+    const std::uint32_t* lists = table.shapes.data();
+    static_cast<void>(render_tile(*frame, {32, 0, 64, 32}));
+    EXPECT_EQ(&frame->camera_table(), &table);
+    EXPECT_EQ(frame->camera_table().shapes.data(), lists) << "later tiles reuse the same table";
+}
+
+}  // namespace
+}  // namespace jt
