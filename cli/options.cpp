@@ -1,6 +1,7 @@
 #include "options.hpp"
 
 #include "jtracer/image_file.hpp"
+#include "jtracer/version.hpp"
 
 #include <CLI/CLI.hpp>
 
@@ -22,7 +23,7 @@ ParsedOptions parse_options(int argc, char** argv) {
         "\n"
         "Exit codes: 0 ok, 1 errors in the scene, 2 bad command line, 3 file I/O error or\n"
         "not enough memory, 130 interrupted (Ctrl-C), 143 stopped (SIGTERM).\n");
-    app.set_version_flag("--version", std::string("jtracer-cli ") + JT_VERSION);
+    app.set_version_flag("--version", std::string("jtracer-cli ") + jt::version_string());
     frontend::add_render_flags(app, o);
     app.add_option_function<std::string>(
            "--region",

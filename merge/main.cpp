@@ -5,6 +5,7 @@
 
 #include "jtracer/image_file.hpp"
 #include "jtracer/merge_regions.hpp"
+#include "jtracer/version.hpp"
 
 #include <CLI/CLI.hpp>
 
@@ -60,7 +61,7 @@ int main(int argc, char** argv) {
         "\n"
         "Exit codes: 0 ok, 1 parts that do not make one frame, 2 bad command line, 3 file I/O "
         "errors.\n");
-    app.set_version_flag("--version", std::string("jtracer-merge ") + JT_VERSION);
+    app.set_version_flag("--version", std::string("jtracer-merge ") + jt::version_string());
     app.add_option("-o,--output", output,
                    "The whole frame; a name ending in .png gives a PNG, anything else a BMP")
         ->required();

@@ -1,5 +1,7 @@
 #include "mpi_options.hpp"
 
+#include "jtracer/version.hpp"
+
 #include <CLI/CLI.hpp>
 
 #include <iostream>
@@ -24,7 +26,7 @@ ParsedOptions parse_options(int argc, char** argv, bool speaks) {
         "\n"
         "Exit codes: 0 ok, 1 errors in the scene, 2 bad command line, 3 file I/O errors;\n"
         "a rank that dies or an interrupt aborts the whole job (non-zero, nothing written).\n");
-    app.set_version_flag("--version", std::string("jtracer-mpi ") + JT_VERSION);
+    app.set_version_flag("--version", std::string("jtracer-mpi ") + jt::version_string());
     frontend::add_render_flags(app, o);
     app.add_option("--tile-size", o.tile_size,
                    "Side of the square tiles handed out to the ranks, in pixels (default 128)")
