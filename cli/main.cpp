@@ -1,6 +1,8 @@
 // jtracer-cli: scene file in, image file out. The work lives in the core; this
 // file only orders the steps and maps failures to exit codes.
 
+#include "image_compare.hpp"
+#include "list_cameras.hpp"
 #include "memory_budget.hpp"
 #include "options.hpp"
 
@@ -97,15 +99,19 @@ int run(const Options& o) {
         std::cerr << "wrote " << output << ": "
                   << render_summary(options.width, options.height, options.samples, job.progress())
                   << "\n";
+    if (o.expect) return check_expected(job.image(), output, *o.expect, o.tolerance, o.quiet);
     return exit_ok;
 }
 
 }  // namespace
 
 int main(int argc, char** argv) {
+    if (argc > 1 && std::string_view(argv[1]) == "diff")
+        return run_diff_command(argc - 1, argv + 1);
     ParsedOptions parsed = parse_options(argc, argv);
     if (parsed.exit_code) return *parsed.exit_code;
     try {
+        if (parsed.options.list_cameras) return list_cameras(parsed.options.scene_path);
         return run(parsed.options);
     } catch (const std::bad_alloc&) {
         std::cerr << "jtracer-cli: out of memory (is the image too large?); nothing was written\n";

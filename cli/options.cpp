@@ -20,9 +20,13 @@ ParsedOptions parse_options(int argc, char** argv) {
         "  jtracer-cli scenes/showcase.jts -o shot.png --width 1920 --height 1080 --samples 16\n"
         "  jtracer-cli --check scenes/showcase.jts          only checks the scene\n"
         "  jtracer-cli scenes/showcase.jts --region 0,0,960,540 --region-output -o part.bmp\n"
+        "  jtracer-cli scenes/showcase.jts -o shot.png --expect ref.png --threshold 2\n"
+        "  jtracer-cli diff ref.png shot.png -o diff.png     compares two images (see diff "
+        "--help)\n"
         "\n"
-        "Exit codes: 0 ok, 1 errors in the scene, 2 bad command line, 3 file I/O error or\n"
-        "not enough memory, 130 interrupted (Ctrl-C), 143 stopped (SIGTERM).\n");
+        "Exit codes: 0 ok, 1 errors in the scene (or, with --expect, a render outside the\n"
+        "tolerance), 2 bad command line, 3 file I/O error or not enough memory, 130\n"
+        "interrupted (Ctrl-C), 143 stopped (SIGTERM).\n");
     app.set_version_flag("--version", std::string("jtracer-cli ") + jt::version_string());
     frontend::add_render_flags(app, o);
     app.add_option_function<std::string>(
@@ -39,6 +43,14 @@ ParsedOptions parse_options(int argc, char** argv) {
                  "With --region: write only the region, as a BMP that records where it belongs "
                  "(jtracer-merge assembles such parts)");
     app.add_flag("--check", o.check_only, "Only parse and validate the scene; write nothing");
+    app.add_option("--expect", o.expect,
+                   "After writing the render, compare it with this reference image (BMP or "
+                   "PNG); outside the tolerance, write the differences beside the render "
+                   "(out.png -> out.diff.png) and exit 1")
+        ->type_name("REFERENCE");
+    add_tolerance_flags(app, o.tolerance);
+    // For the shell completions; not a user's option.
+    app.add_flag("--list-cameras", o.list_cameras)->group("");
     try {
         app.parse(argc, argv);
         if (o.region_output && !o.region)
@@ -48,6 +60,13 @@ ParsedOptions parse_options(int argc, char** argv) {
             throw CLI::ValidationError("--region-output",
                                        "writes a BMP (its placement record lives in the BMP); "
                                        "name the output .bmp");
+        if (o.expect && (o.region || o.check_only))
+            throw CLI::ValidationError("--expect",
+                                       "compares a whole render: not with --region "
+                                       "or --check");
+        const bool tolerance_given = app.count("--threshold") + app.count("--max-pixels") > 0;
+        if (tolerance_given && !o.expect)
+            throw CLI::ValidationError("--threshold/--max-pixels", "need --expect REFERENCE");
     } catch (const CLI::CallForHelp& e) {
         parsed.exit_code = app.exit(e);
     } catch (const CLI::CallForVersion& e) {

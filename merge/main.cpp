@@ -54,8 +54,13 @@ int main(int argc, char** argv) {
         "jtracer-merge: assembles region files written by 'jtracer-cli --region X0,Y0,X1,Y1 "
         "--region-output' into the whole frame."};
     app.footer(
-        "Each part records its frame size and region, so any order works:\n"
-        "  jtracer-merge -o frame.bmp parts/*.bmp\n"
+        "Each part records its frame size and region, so any order works.\n"
+        "\n"
+        "Example:\n"
+        "  jtracer-cli scene.jts --region 0,0,1920,540 --region-output -o parts/top.bmp\n"
+        "  jtracer-cli scene.jts --region 0,540,1920,1080 --region-output -o parts/bottom.bmp\n"
+        "  jtracer-merge -o frame.png parts/*.bmp\n"
+        "\n"
         "Parts that overlap, leave a gap, reach out of the frame or belong to frames of\n"
         "different sizes are refused and nothing is written.\n"
         "\n"

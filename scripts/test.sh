@@ -1,6 +1,7 @@
 #!/usr/bin/env bash
 # Installs the dependencies, builds JTracer and runs the whole test suite:
-# the release build first, then everything again under ASan + UBSan.
+# the release build first (and what it installs and packages: install-test.sh),
+# then everything again under ASan + UBSan.
 # Set JT_SKIP_ASAN=1 to run the release build only.
 set -euo pipefail
 cd "$(dirname "$0")/.."
@@ -17,6 +18,8 @@ run_preset() {
 }
 
 run_preset release
+echo "== release: install, package, uninstall"
+./scripts/install-test.sh build/release
 if [ "${JT_SKIP_ASAN:-0}" != 1 ]; then
     run_preset asan
 fi

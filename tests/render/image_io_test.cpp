@@ -9,6 +9,7 @@
 #include <gtest/gtest.h>
 #include <unistd.h>
 
+#include <cmath>
 #include <filesystem>
 #include <fstream>
 
@@ -164,9 +165,44 @@ TEST(ImageDiff, CountsPixelsOverTheThreshold) {
     EXPECT_EQ(d.pixels_over, 1u);
     EXPECT_NEAR(d.percent_over, 100.0 / 6.0, 1e-12);
     EXPECT_EQ(d.image.width, 3);
-    EXPECT_EQ(d.image.pixel(1, 1)[2], 64 + 3 * 8) << "over: the difference, amplified";
+    // Over the threshold: a heat colour; under it: a dim grey of `expected`.
+    std::uint8_t heat[3];
+    heat_colour(3, heat);
+    EXPECT_EQ(std::vector<std::uint8_t>(d.image.pixel(1, 1), d.image.pixel(1, 1) + 3),
+              std::vector<std::uint8_t>(heat, heat + 3));
+    const std::uint8_t* grey = d.image.pixel(2, 0);
+    EXPECT_TRUE(grey[0] == grey[1] && grey[1] == grey[2] && grey[0] <= 85);
     EXPECT_EQ(diff_images(a, b, 0).pixels_over, 2u);
     EXPECT_FALSE(diff_images(a, Image8(2, 2)).same_size);
+}
+
+TEST(ImageDiff, MeanAbsoluteErrorAndPsnr) {
+    Image8 a = sample_image();  // 3x2: 18 channels
+    EXPECT_TRUE(std::isinf(diff_images(a, a).psnr));
+    EXPECT_EQ(diff_images(a, a).mean_absolute_error, 0.0);
+    Image8 b = a;
+    b.pixel(0, 0)[0] = static_cast<std::uint8_t>(b.pixel(0, 0)[0] ^ 6);  // some channel off by 2..6
+    const int off = std::abs(int{a.pixel(0, 0)[0]} - int{b.pixel(0, 0)[0]});
+    ImageDiff d = diff_images(a, b);
+    EXPECT_NEAR(d.mean_absolute_error, off / 18.0, 1e-12);
+    EXPECT_NEAR(d.psnr, 10.0 * std::log10(255.0 * 255.0 * 18.0 / (off * off)), 1e-9);
+    EXPECT_EQ(d.pixels, 6u);
+}
+
+TEST(ImageDiff, HeatColoursRunFromRedThroughYellowToWhite) {
+    std::uint8_t small[3], middle[3], large[3];
+    heat_colour(1, small);
+    heat_colour(64, middle);
+    heat_colour(255, large);
+    EXPECT_EQ(small[0], 255);
+    EXPECT_LT(small[1], 40);
+    EXPECT_EQ(small[2], 0);
+    EXPECT_EQ(middle[0], 255);
+    EXPECT_GE(middle[1], 250);
+    EXPECT_LT(middle[2], 10);
+    EXPECT_EQ(large[0], 255);
+    EXPECT_EQ(large[1], 255);
+    EXPECT_EQ(large[2], 255);
 }
 
 }  // namespace

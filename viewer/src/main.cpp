@@ -11,6 +11,8 @@
 #include "imgui_layer.hpp"
 #include "viewer_frame.hpp"
 
+#include "jtracer/version.hpp"
+
 #include <imgui.h>
 #include <imgui_impl_glfw.h>
 #include <CLI/CLI.hpp>
@@ -35,11 +37,13 @@ struct Arguments {
     int width = 1280, height = 800;
 };
 
+// The showcase installed with the viewer: PREFIX/share/jtracer/scenes beside
+// PREFIX/bin. The build tree links share/jtracer/scenes to the sources'
+// scenes (viewer/CMakeLists.txt), so an uninstalled viewer finds it the same way.
 std::filesystem::path default_scene() {
-    const std::filesystem::path local = "scenes/showcase.jts";
     std::error_code ec;
-    if (std::filesystem::exists(local, ec)) return local;
-    return JT_DEFAULT_SCENE;
+    const std::filesystem::path program = std::filesystem::read_symlink("/proc/self/exe", ec);
+    return program.parent_path().parent_path() / "share/jtracer/scenes/showcase.jts";
 }
 
 bool parse_size(const std::string& text, int& width, int& height) {
@@ -181,7 +185,19 @@ int run_window(const Arguments& args) {
 int main(int argc, char** argv) {
     Arguments args;
     CLI::App cli{"jtracer-view: the interactive progressive viewer of JTracer"};
-    cli.add_option("scene", args.scene, "the .jts scene to open (default: scenes/showcase.jts)");
+    cli.add_option("scene", args.scene,
+                   "the .jts scene to open (default: the showcase installed with JTracer, "
+                   "PREFIX/share/jtracer/scenes/showcase.jts)");
+    cli.footer(
+        "Examples:\n"
+        "  jtracer-view                                  opens the showcase installed with "
+        "JTracer\n"
+        "  jtracer-view scene.jts\n"
+        "  jtracer-view scene.jts --screenshot shot.png --size 1600x1000   no display needed\n"
+        "\n"
+        "Exit codes: 0 ok, 1 no window or GL context, a screenshot not written or a render\n"
+        "not complete in time, 2 bad command line.\n");
+    cli.set_version_flag("--version", std::string("jtracer-view ") + jt::version_string());
     cli.add_option("--screenshot", args.screenshot,
                    "render headless (OSMesa, no display), write the whole window to this PNG "
                    "once the render completes, and exit");
@@ -192,7 +208,17 @@ int main(int argc, char** argv) {
                    "with --screenshot or --exit-when-done: give up after this many seconds")
         ->capture_default_str()
         ->check(CLI::PositiveNumber);
-    CLI11_PARSE(cli, argc, argv);
+    try {
+        cli.parse(argc, argv);
+    } catch (const CLI::CallForHelp& e) {
+        return cli.exit(e);
+    } catch (const CLI::CallForVersion& e) {
+        return cli.exit(e);
+    } catch (const CLI::ParseError& e) {
+        std::cerr << "jtracer-view: " << e.what()
+                  << "\nRun 'jtracer-view --help' for the options.\n";
+        return 2;
+    }
 
     if (!parse_size(args.size, args.width, args.height)) {
         std::cerr << "jtracer-view: --size takes WxH between 64x64 and 8192x8192, got '"

@@ -1,0 +1,22 @@
+#include "list_cameras.hpp"
+
+#include "jtracer/frontend/render_flags.hpp"
+#include "jtracer/scene_file.hpp"
+
+#include <iostream>
+
+namespace jt::cli {
+
+using namespace frontend;
+
+int list_cameras(const std::string& scene_path) {
+    const LoadedScene loaded = load_scene_file(scene_path, {.source_map = false});
+    if (!loaded.read_ok()) {
+        std::cerr << "jtracer-cli: " << loaded.io_error << "\n";
+        return exit_io_error;
+    }
+    for (const Camera& camera : loaded.parsed.scene.cameras) std::cout << camera.name << "\n";
+    return exit_ok;
+}
+
+}  // namespace jt::cli

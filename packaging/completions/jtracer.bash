@@ -1,0 +1,101 @@
+# bash completion for jtracer-cli, jtracer-view, jtracer-mpi and jtracer-merge:
+# their options, .jts scenes, images, and the scene's camera names after
+# --camera (asked of `jtracer-cli --list-cameras SCENE`). Installed under each
+# program's name, as bash-completion loads completions/<program> on demand.
+# tests/install/completion_test.sh keeps the option lists equal to --help's.
+
+# Files matching the extended glob $1 (e.g. '*.@(jts|JTS)') and directories.
+_jtracer_files() {
+    local IFS=$'\n'
+    compopt -o filenames 2>/dev/null
+    COMPREPLY+=($(compgen -f -X "!$1" -- "$cur") $(compgen -d -- "$cur"))
+}
+
+# The cameras of the first .jts file on the command line, matching $cur.
+_jtracer_cameras() {
+    local word scene= lister=jtracer-cli name typed
+    for word in "${COMP_WORDS[@]:1}"; do
+        if [[ $word == *.jts ]]; then
+            scene=$word
+            break
+        fi
+    done
+    [[ -n $scene ]] || return
+    scene=${scene/#\~/$HOME}
+    # The jtracer-cli beside the program being completed, when typed with a path.
+    [[ $1 == */* ]] && lister=${1%/*}/jtracer-cli
+    typed=${cur//\\/}
+    typed=${typed#[\"\']}
+    while IFS= read -r name; do
+        [[ $name == "$typed"* ]] && COMPREPLY+=("$(printf '%q' "$name")")
+    done < <("$lister" --list-cameras "$scene" 2>/dev/null)
+}
+
+_jtracer() {
+    local cur=${COMP_WORDS[COMP_CWORD]} prev=
+    ((COMP_CWORD > 0)) && prev=${COMP_WORDS[COMP_CWORD - 1]}
+    COMPREPLY=()
+    local program=${1##*/} options positional='*.@(jts|JTS)'
+    shopt -s extglob
+    case $program in
+    jtracer-cli)
+        if [[ ${COMP_WORDS[1]} == diff ]] && ((COMP_CWORD > 1)); then
+            program=jtracer-cli-diff
+            options='-h --help -o --output --threshold --max-pixels -q --quiet'
+            positional='*.@(bmp|BMP|png|PNG)'
+        else
+            options='-h --help --version -o --output --camera --width --height --samples
+                --threads -q --quiet --region --region-output --check --expect --threshold
+                --max-pixels'
+        fi
+        ;;
+    jtracer-mpi)
+        options='-h --help --version -o --output --camera --width --height --samples --threads
+            -q --quiet --tile-size --stats'
+        ;;
+    jtracer-merge)
+        options='-h --help --version -o --output -q --quiet'
+        positional='*.@(bmp|BMP)'
+        ;;
+    jtracer-view)
+        options='-h --help --version --screenshot --size --exit-when-done --timeout'
+        ;;
+    *) return ;;
+    esac
+
+    case $prev in
+    -o | --output)
+        if [[ $program == jtracer-cli-diff ]]; then
+            _jtracer_files '*.@(png|PNG)'
+        else
+            _jtracer_files '*.@(bmp|BMP|png|PNG)'
+        fi
+        return
+        ;;
+    --screenshot)
+        _jtracer_files '*.@(png|PNG)'
+        return
+        ;;
+    --expect)
+        _jtracer_files '*.@(bmp|BMP|png|PNG)'
+        return
+        ;;
+    --camera)
+        _jtracer_cameras "$1"
+        return
+        ;;
+    --width | --height | --samples | --threads | --region | --threshold | --max-pixels | \
+        --tile-size | --size | --timeout)
+        return # a number or a list of numbers: nothing to offer
+        ;;
+    esac
+
+    if [[ $cur == -* ]]; then
+        COMPREPLY=($(compgen -W "$options" -- "$cur"))
+        return
+    fi
+    [[ $program == jtracer-cli && $COMP_CWORD == 1 && diff == "$cur"* ]] && COMPREPLY+=(diff)
+    _jtracer_files "$positional"
+}
+
+complete -F _jtracer jtracer-cli jtracer-view jtracer-mpi jtracer-merge

@@ -1,0 +1,42 @@
+#!/usr/bin/env bash
+# Renders one small picture of every example scene into docs/images/ and
+# writes docs/gallery.md around them. Not run by CI: rerun it after changing
+# a scene or the renderer, look at the pictures, and commit them.
+# Usage: scripts/gallery.sh [BUILD_DIR]   (default build/release, already built)
+set -euo pipefail
+cd "$(dirname "$0")/.."
+cli=${1:-build/release}/cli/jtracer-cli
+[ -x "$cli" ] || { echo "gallery: no $cli: build first (README, Set-up)" >&2; exit 2; }
+mkdir -p docs/images
+
+# A picture's width, and the height that keeps the scene's own aspect.
+gallery_width=320
+
+{
+    echo "# Gallery"
+    echo
+    echo "One picture of every example scene in \`scenes/\` (installed in"
+    echo "\`share/jtracer/scenes/\`), ${gallery_width} pixels wide, rendered by \`scripts/gallery.sh\`."
+    echo "Each comes with the command that renders it at the scene's own size."
+    for scene in scenes/showcase.jts scenes/manual/*.jts; do
+        name=$(basename "$scene" .jts)
+        [ "$scene" = scenes/showcase.jts ] || name=manual_$name
+        read -r width height < <(sed -n 's/^ *\(width\|height\): *\([0-9]*\);.*/\2/p' "$scene" |
+            head -2 | tr '\n' ' ')
+        small_height=$((height * gallery_width / width))
+        "$cli" -q "$scene" -o "docs/images/$name.png" --width "$gallery_width" \
+            --height "$small_height"
+        title=$(sed -n '1s/^# *//p' "$scene")
+        echo
+        echo "## \`$scene\`"
+        echo
+        [ -z "$title" ] || { echo "$title"; echo; }
+        echo "![$name](images/$name.png)"
+        echo
+        echo '```sh'
+        echo "jtracer-cli $scene -o $name.png"
+        echo '```'
+    done
+} >docs/gallery.md.new
+mv docs/gallery.md.new docs/gallery.md
+echo "gallery: wrote docs/gallery.md and $(ls docs/images/*.png | wc -l) pictures in docs/images/"

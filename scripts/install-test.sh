@@ -1,0 +1,152 @@
+#!/usr/bin/env bash
+# Tests JTracer as users get it, from a finished build (default build/release):
+#  1. `cmake --install` to a temporary prefix, moved elsewhere afterwards: every
+#     file in place, nothing naming the source or build tree, the programs,
+#     man pages, completions, desktop entry, MIME type, CMake package and
+#     pkg-config file all working from the moved copy;
+#  2. `cpack -G DEB`: jtracer_<version>_amd64.deb with its Depends, installed
+#     with dpkg, used (version, showcase render, man -w), and removed cleanly.
+# Step 2 needs root or sudo, like scripts/install-deps.sh; JT_SKIP_DEB=1 skips it.
+set -euo pipefail
+cd "$(dirname "$0")/.."
+source=$(pwd)
+build=$(cd "${1:-build/release}" && pwd)
+version=$(sed -n 's/^CMAKE_PROJECT_VERSION:STATIC=//p' "$build/CMakeCache.txt")
+work=$(mktemp -d)
+trap 'rm -rf "$work"' EXIT
+step() { echo "== install-test (${SECONDS}s): $*"; }
+fail() {
+    echo "install-test: FAIL: $*" >&2
+    exit 1
+}
+# The reference image tests/render/reference_test.cpp renders at 160x90.
+reference=$source/tests/references/showcase.png
+
+# --- 1. cmake --install ---------------------------------------------------
+step "cmake --install to a temporary prefix"
+cmake --install "$build" --prefix "$work/staged" >/dev/null
+# Moving the tree proves that nothing in it depends on where it was put.
+mv "$work/staged" "$work/prefix"
+prefix=$work/prefix
+libdir=$(dirname "$(find "$prefix" -name libjtracer_core.a)")
+for file in bin/jtracer-cli bin/jtracer-merge share/jtracer/scenes/showcase.jts \
+    share/jtracer/scenes/manual/sphere.jts share/man/man1/jtracer-cli.1.gz \
+    share/man/man1/jtracer-merge.1.gz share/man/man5/jts.5.gz \
+    share/bash-completion/completions/jtracer-cli share/mime/packages/jtracer.xml \
+    include/jtracer/version.hpp include/jtracer/render_job.hpp; do
+    [ -e "$prefix/$file" ] || fail "cmake --install did not install $file"
+done
+[ -f "$libdir/cmake/JTracer/JTracerConfig.cmake" ] || fail "no JTracerConfig.cmake"
+[ -f "$libdir/pkgconfig/jtracer.pc" ] || fail "no jtracer.pc"
+with_viewer=0
+if [ -e "$prefix/bin/jtracer-view" ]; then
+    with_viewer=1
+    for file in share/man/man1/jtracer-view.1.gz share/applications/jtracer-view.desktop \
+        share/icons/hicolor/128x128/apps/jtracer.png share/bash-completion/completions/jtracer-view; do
+        [ -e "$prefix/$file" ] || fail "cmake --install did not install $file"
+    done
+fi
+
+step "nothing installed names the source or build tree"
+for tree in "$source" "$build"; do
+    if found=$(grep -rlaF -- "$tree" "$prefix"); then
+        fail "these installed files name $tree: $found"
+    fi
+done
+
+step "the installed programs render the installed showcase"
+"$prefix/bin/jtracer-cli" --version
+"$prefix/bin/jtracer-cli" -q "$prefix/share/jtracer/scenes/showcase.jts" -o "$work/showcase.png" --width 160 --height 90 \
+    --expect "$reference"
+if [ "$with_viewer" = 1 ]; then
+    # No scene given: the viewer opens the showcase beside its own bin/.
+    (cd "$work" && "$prefix/bin/jtracer-view" --screenshot view.png --size 320x200 --timeout 120) \
+        2>"$work/view.err" || fail "jtracer-view without a scene: $(cat "$work/view.err")"
+    grep -q 'wrote view.png' "$work/view.err" || fail "jtracer-view: $(cat "$work/view.err")"
+    ! grep -qi 'error\|cannot' "$work/view.err" || fail "jtracer-view: $(cat "$work/view.err")"
+fi
+
+step "the CI script of docs/ci.md, with the installed jtracer-cli"
+mkdir -p "$work/project/scenes"
+cp "$prefix/share/jtracer/scenes/manual/sphere.jts" "$prefix/share/jtracer/scenes/manual/plane.jts" \
+    "$work/project/scenes/"
+sed -n '/^## A plain shell script/,/^## /p' "$source/docs/ci.md" | sed -n '/^```sh$/,/^```$/p' |
+    sed '1d;$d' >"$work/project/check-renders.sh"
+(
+    cd "$work/project"
+    export PATH=$prefix/bin:$PATH
+    UPDATE=1 sh check-renders.sh
+    [ -f references/sphere.png ] || fail "check-renders.sh UPDATE=1 made no references"
+    sh check-renders.sh >/dev/null || fail "check-renders.sh fails on its own references"
+    jtracer-cli -q scenes/plane.jts -o references/sphere.png
+    if sh check-renders.sh >/dev/null 2>&1; then fail "check-renders.sh passes a wrong reference"; fi
+    [ -f out/sphere.diff.png ] || fail "check-renders.sh left no heat map"
+)
+
+step "man pages, completions, desktop entry and MIME type"
+found=$(MANPATH=$prefix/share/man man -w jtracer-cli)
+[ "$found" = "$prefix/share/man/man1/jtracer-cli.1.gz" ] || fail "man -w jtracer-cli: '$found'"
+MANPATH=$prefix/share/man MANWIDTH=80 man --warnings jtracer-cli 2>"$work/man.err" >/dev/null
+[ ! -s "$work/man.err" ] || fail "man --warnings jtracer-cli: $(cat "$work/man.err")"
+# bash-completion's own loader finds the installed completion by program name.
+loaded=$(XDG_DATA_DIRS=$prefix/share bash -c 'source /usr/share/bash-completion/bash_completion
+    __load_completion jtracer-cli && complete -p jtracer-cli')
+[ "$loaded" = "complete -F _jtracer jtracer-cli" ] || fail "bash-completion loaded: '$loaded'"
+if [ "$with_viewer" = 1 ]; then
+    desktop-file-validate "$prefix/share/applications/jtracer-view.desktop"
+fi
+cp -r "$prefix/share/mime" "$work/mime"
+update-mime-database "$work/mime" >/dev/null 2>&1 # it notes that the folder is not in XDG_DATA_DIRS
+grep -q '^50:text/x-jtracer-scene:\*\.jts$' "$work/mime/globs2" ||
+    fail "the MIME database does not map *.jts to text/x-jtracer-scene"
+
+step "a program outside the tree embeds the renderer (CMake package, pkg-config)"
+cmake -S "$source/tests/install/consumer" -B "$work/consumer" -G Ninja \
+    -DCMAKE_PREFIX_PATH="$prefix" -DCMAKE_BUILD_TYPE=Release >/dev/null
+cmake --build "$work/consumer" >/dev/null
+"$work/consumer/consumer"
+# shellcheck disable=SC2046 # pkg-config's flags are words
+g++ -std=c++20 -O1 -o "$work/consumer-pc" "$source/tests/install/consumer/consumer.cpp" \
+    $(PKG_CONFIG_PATH=$libdir/pkgconfig pkg-config --cflags --libs jtracer)
+"$work/consumer-pc"
+
+# --- 2. the Debian package ------------------------------------------------
+if [ "${JT_SKIP_DEB:-0}" = 1 ]; then
+    echo "install-test: JT_SKIP_DEB=1: the .deb is not tested"
+    exit 0
+fi
+step "cpack -G DEB"
+(cd "$build" && cpack -G DEB -B "$work/deb" >/dev/null)
+deb=$work/deb/jtracer_${version}_amd64.deb
+[ -f "$deb" ] || fail "cpack made no $(basename "$deb"): $(ls "$work/deb")"
+depends=$(dpkg-deb -f "$deb" Depends)
+echo "Depends: $depends"
+grep -q 'libtbb' <<<"$depends" || fail "Depends lacks the TBB library: $depends"
+contents=$(dpkg-deb -c "$deb")
+if grep -q '/usr/local/' <<<"$contents"; then fail "the .deb installs under /usr/local"; fi
+
+sudo_cmd=()
+[ "$(id -u)" -eq 0 ] || sudo_cmd=(sudo)
+dpkg-query -W jtracer >/dev/null 2>&1 && fail "a jtracer package is already installed"
+step "dpkg -i $(basename "$deb")"
+# Container images often tell dpkg to leave out man pages: ours must go in.
+"${sudo_cmd[@]}" dpkg --path-include='/usr/share/man/*/jt*' -i "$deb" >/dev/null
+removed=0
+remove() {
+    [ "$removed" = 1 ] || "${sudo_cmd[@]}" dpkg -r jtracer >/dev/null
+    removed=1
+}
+trap 'remove; rm -rf "$work"' EXIT
+[ "$(command -v jtracer-cli)" = /usr/bin/jtracer-cli ] || fail "jtracer-cli is not /usr/bin's"
+/usr/bin/jtracer-cli --version
+/usr/bin/jtracer-cli -q /usr/share/jtracer/scenes/showcase.jts -o "$work/deb-showcase.png" --width 160 --height 90 \
+    --expect "$reference"
+found=$(man -w jtracer-cli)
+[ "$found" = /usr/share/man/man1/jtracer-cli.1.gz ] || fail "man -w jtracer-cli: '$found'"
+step "dpkg -r jtracer"
+remove
+[ ! -e /usr/bin/jtracer-cli ] || fail "dpkg -r left /usr/bin/jtracer-cli"
+[ ! -e /usr/share/jtracer ] || fail "dpkg -r left /usr/share/jtracer"
+status=$(dpkg-query -W -f='${Status}' jtracer 2>/dev/null || true)
+if [[ $status == *"ok installed"* ]]; then fail "dpkg -r: jtracer is still installed"; fi
+echo "install-test: all passed in ${SECONDS}s"

@@ -1,0 +1,241 @@
+// `jtracer-cli diff A B` and `jtracer-cli scene.jts --expect REF` end to end:
+// identical, slightly different, different and unreadable images, the
+// tolerance flags, the heat map and the exit codes (0 within, 1 outside,
+// 2 usage, 3 I/O). Also the hidden --list-cameras the completions use.
+
+#include "command.hpp"
+
+#include "jtracer/bmp.hpp"
+#include "jtracer/image_file.hpp"
+#include "jtracer/png.hpp"
+
+#include <gtest/gtest.h>
+
+#include <fstream>
+
+namespace jt {
+namespace {
+
+using test::CommandRun;
+using test::file_text;
+
+const std::string cli = "'" JT_CLI "'";
+
+// A 40x20 gradient, so that every pixel differs from its neighbours.
+Image8 gradient() {
+    Image8 image(40, 20);
+    for (int y = 0; y < image.height; ++y)
+        for (int x = 0; x < image.width; ++x) {
+            std::uint8_t* p = image.pixel(x, y);
+            p[0] = static_cast<std::uint8_t>(6 * x);
+            p[1] = static_cast<std::uint8_t>(12 * y);
+            p[2] = static_cast<std::uint8_t>(100 + x + y);
+        }
+    return image;
+}
+
+class Diff : public test::ScratchDir {
+  protected:
+    void SetUp() override {
+        ScratchDir::SetUp();
+        ASSERT_EQ(write_png(dir / "a.png", gradient()), "");
+        ASSERT_EQ(write_bmp(dir / "a.bmp", gradient()), "");
+    }
+    CommandRun diff(const std::string& args) { return run(cli + " diff " + args); }
+    std::string out() const { return file_text(dir / "stdout.txt"); }
+    void write_png_file(const std::string& name, const Image8& image) {
+        ASSERT_EQ(write_png(dir / name, image), "");
+    }
+};
+
+TEST_F(Diff, IdenticalImagesInAnyMixOfFormats) {
+    CommandRun r = diff("a.png a.bmp");
+    EXPECT_EQ(r.code, 0) << r.err;
+    const std::string text = out();
+    EXPECT_NE(text.find("a.png: 40x20"), std::string::npos) << text;
+    EXPECT_NE(text.find("a.bmp: 40x20"), std::string::npos) << text;
+    EXPECT_NE(text.find("max channel difference: 0"), std::string::npos) << text;
+    EXPECT_NE(text.find("pixels over threshold 0: 0 of 800 (0.0000%"), std::string::npos) << text;
+    EXPECT_NE(text.find("mean absolute error: 0.0000"), std::string::npos) << text;
+    EXPECT_NE(text.find("PSNR: inf"), std::string::npos) << text;
+    EXPECT_NE(text.find("within the tolerance"), std::string::npos) << text;
+}
+
+TEST_F(Diff, SlightlyDifferentPassesOnlyWithinTheTolerance) {
+    Image8 b = gradient();
+    // 8 pixels (1% of 800) off by 2 in one channel, one pixel off by 6.
+    for (int x = 0; x < 8; ++x) b.pixel(x, 3)[1] = static_cast<std::uint8_t>(b.pixel(x, 3)[1] + 2);
+    b.pixel(20, 10)[2] = static_cast<std::uint8_t>(b.pixel(20, 10)[2] - 6);
+    write_png_file("b.png", b);
+
+    CommandRun exact = diff("a.png b.png");
+    EXPECT_EQ(exact.code, 1) << "exact by default";
+    EXPECT_NE(out().find("max channel difference: 6"), std::string::npos) << out();
+    EXPECT_NE(out().find("9 of 800 (1.1250%"), std::string::npos) << out();
+    EXPECT_NE(out().find("OUTSIDE the tolerance"), std::string::npos) << out();
+    // 22 channel levels over 2400 channels; PSNR = 10 log10(255^2 * 2400 / (8 * 4 + 36)).
+    EXPECT_NE(out().find("mean absolute error: 0.0092"), std::string::npos) << out();
+    EXPECT_NE(out().find("PSNR: 63.61 dB"), std::string::npos) << out();
+
+    EXPECT_EQ(diff("a.png b.png --threshold 2").code, 1) << "the 6 is still over";
+    EXPECT_NE(out().find("pixels over threshold 2: 1 of 800"), std::string::npos) << out();
+    EXPECT_EQ(diff("a.png b.png --threshold 2 --max-pixels 0.125").code, 0) << out();
+    EXPECT_EQ(diff("a.png b.png --threshold 6").code, 0) << out();
+    EXPECT_EQ(diff("a.png b.png --max-pixels 1.2").code, 0) << out();
+    EXPECT_EQ(diff("a.png b.png --max-pixels 1.1").code, 1) << out();
+    EXPECT_EQ(diff("-q a.png b.png").code, 1);
+    EXPECT_EQ(out(), "") << "--quiet";
+}
+
+TEST_F(Diff, HeatMapMarksTheDifferingPixels) {
+    Image8 b = gradient();
+    b.pixel(3, 4)[0] = static_cast<std::uint8_t>(b.pixel(3, 4)[0] + 40);
+    write_png_file("b.png", b);
+    ASSERT_EQ(diff("a.png b.png -o heat.png").code, 1);
+    Image8 heat;
+    ASSERT_EQ(read_image(dir / "heat.png", heat), "");
+    ASSERT_EQ(heat.width, 40);
+    ASSERT_EQ(heat.height, 20);
+    int marked = 0;
+    for (int y = 0; y < heat.height; ++y)
+        for (int x = 0; x < heat.width; ++x) {
+            const std::uint8_t* p = heat.pixel(x, y);
+            const bool grey = p[0] == p[1] && p[1] == p[2] && p[0] <= 85;
+            if (!grey) {
+                ++marked;
+                EXPECT_EQ(x, 3);
+                EXPECT_EQ(y, 4);
+                EXPECT_EQ(p[0], 255) << "a heat colour";
+            }
+        }
+    EXPECT_EQ(marked, 1);
+    // Within the tolerance the heat map is still written (all grey).
+    EXPECT_EQ(diff("a.png a.bmp -o same.bmp").code, 0);
+    EXPECT_TRUE(exists("same.bmp"));
+}
+
+TEST_F(Diff, DifferentImagesAndDifferentSizes) {
+    Image8 black(40, 20);
+    write_png_file("black.png", black);
+    EXPECT_EQ(diff("a.png black.png --threshold 255 --max-pixels 100").code, 0)
+        << "everything tolerated";
+    EXPECT_EQ(diff("a.png black.png --threshold 10").code, 1);
+    EXPECT_NE(out().find("OUTSIDE"), std::string::npos) << out();
+
+    write_png_file("small.png", Image8(20, 10));
+    CommandRun r = diff("a.png small.png -o heat.png --max-pixels 100");
+    EXPECT_EQ(r.code, 1) << "sizes that differ never match";
+    EXPECT_NE(out().find("small.png: 20x10"), std::string::npos) << out();
+    EXPECT_NE(out().find("the sizes differ"), std::string::npos) << out();
+    EXPECT_NE(r.err.find("no heat map"), std::string::npos) << r.err;
+    EXPECT_FALSE(exists("heat.png"));
+}
+
+TEST_F(Diff, UnreadableImagesAreIoErrors) {
+    std::ofstream(dir / "junk.png") << "not an image at all";
+    CommandRun r = diff("a.png junk.png");
+    EXPECT_EQ(r.code, 3);
+    EXPECT_NE(r.err.find("junk.png"), std::string::npos) << r.err;
+    r = diff("missing.bmp a.png");
+    EXPECT_EQ(r.code, 3);
+    EXPECT_NE(r.err.find("missing.bmp"), std::string::npos) << r.err;
+    r = diff("a.png a.bmp -o no/such/dir/heat.png");
+    EXPECT_EQ(r.code, 3);
+    EXPECT_NE(r.err.find("no/such/dir/heat.png"), std::string::npos) << r.err;
+}
+
+TEST_F(Diff, UsageErrors) {
+    EXPECT_EQ(diff("a.png").code, 2);
+    EXPECT_EQ(diff("a.png a.bmp --threshold 256").code, 2);
+    EXPECT_EQ(diff("a.png a.bmp --max-pixels -1").code, 2);
+    CommandRun r = diff("a.png a.bmp --bogus");
+    EXPECT_EQ(r.code, 2);
+    EXPECT_NE(r.err.find("jtracer-cli diff --help"), std::string::npos) << r.err;
+    EXPECT_EQ(diff("--help").code, 0);
+    EXPECT_NE(out().find("Exit codes"), std::string::npos) << out();
+}
+
+const std::string scene = R"(
+render_settings { width: 24; height: 16; filename: "render.bmp"; }
+cameras {
+    perspective_camera { name: "Main"; position: <0, 1, 5>; look_at: <0, 0.5, 0>; aspect: 1.5; }
+    perspective_camera { name: "High Angle"; position: <0, 6, 0.1>; look_at: <0, 0, 0>; aspect: 1.5; }
+}
+scene {
+    sphere { center: <0, 0.8, 0>; radius: 0.8; material { pigment: <1, 0.2, 0.1>; diffuse: <1, 1, 1>; } }
+    point_light { position: <3, 5, 4>; intensity: <1, 1, 1>; }
+}
+)";
+
+class Expect : public test::ScratchDir {
+  protected:
+    void SetUp() override {
+        ScratchDir::SetUp();
+        std::ofstream(dir / "scene.jts") << scene;
+        ASSERT_EQ(run(cli + " -q scene.jts -o ref.png").code, 0);
+        ASSERT_EQ(read_image(dir / "ref.png", reference), "");
+    }
+    Image8 reference;
+};
+
+TEST_F(Expect, MatchingRenderExitsZero) {
+    CommandRun r = run(cli + " scene.jts -o out.png --expect ref.png");
+    EXPECT_EQ(r.code, 0) << r.err;
+    EXPECT_NE(r.err.find("matches ref.png"), std::string::npos) << r.err;
+    EXPECT_TRUE(exists("out.png"));
+    EXPECT_FALSE(exists("out.diff.png"));
+}
+
+TEST_F(Expect, DifferingRenderWritesTheRenderAndTheDifferences) {
+    Image8 changed = reference;
+    for (int x = 0; x < 6; ++x)
+        changed.pixel(x, 0)[1] = static_cast<std::uint8_t>(changed.pixel(x, 0)[1] ^ 0x40);
+    ASSERT_EQ(write_png(dir / "changed.png", changed), "");
+    CommandRun r = run(cli + " scene.jts -o out/render.png --expect changed.png");
+    EXPECT_EQ(r.code, 3) << "the folder for the render does not exist: " << r.err;
+    std::filesystem::create_directory(dir / "out");
+    r = run(cli + " scene.jts -o out/render.png --expect changed.png");
+    EXPECT_EQ(r.code, 1) << r.err;
+    EXPECT_NE(r.err.find("differs from changed.png"), std::string::npos) << r.err;
+    EXPECT_NE(r.err.find("6 of 384"), std::string::npos) << r.err;
+    EXPECT_NE(r.err.find("out/render.diff.png"), std::string::npos) << r.err;
+    Image8 render, heat;
+    ASSERT_EQ(read_image(dir / "out/render.png", render), "");
+    EXPECT_EQ(render, reference);
+    ASSERT_EQ(read_image(dir / "out/render.diff.png", heat), "");
+    EXPECT_EQ(heat.width, 24);
+    // Tolerated: 6 of 384 pixels is 1.5625%.
+    EXPECT_EQ(
+        run(cli + " -q scene.jts -o out/render.png --expect changed.png --max-pixels 1.6").code, 0);
+    EXPECT_EQ(run(cli + " -q scene.jts -o out/render.png --expect changed.png --threshold 64").code,
+              0);
+}
+
+TEST_F(Expect, SizeMismatchMissingReferenceAndMisuse) {
+    CommandRun r = run(cli + " scene.jts --width 48 -o big.png --expect ref.png");
+    EXPECT_EQ(r.code, 1);
+    EXPECT_NE(r.err.find("48x16"), std::string::npos) << r.err;
+    EXPECT_NE(r.err.find("24x16"), std::string::npos) << r.err;
+    r = run(cli + " scene.jts -o out.png --expect missing.png");
+    EXPECT_EQ(r.code, 3);
+    EXPECT_NE(r.err.find("missing.png"), std::string::npos) << r.err;
+    EXPECT_EQ(run(cli + " scene.jts --threshold 2").code, 2) << "needs --expect";
+    EXPECT_EQ(run(cli + " scene.jts --check --expect ref.png").code, 2);
+    EXPECT_EQ(run(cli + " scene.jts --region 0,0,4,4 --expect ref.png").code, 2);
+}
+
+TEST_F(Expect, ListCamerasPrintsTheNamesOneALine) {
+    ASSERT_EQ(run(cli + " --list-cameras scene.jts").code, 0);
+    EXPECT_EQ(file_text(dir / "stdout.txt"), "Main\nHigh Angle\n");
+    // A scene with errors still lists the cameras it has.
+    std::ofstream(dir / "broken.jts") << scene << "\nscene { sphere { radius: ; } }\n";
+    ASSERT_EQ(run(cli + " --list-cameras broken.jts").code, 0);
+    EXPECT_EQ(file_text(dir / "stdout.txt"), "Main\nHigh Angle\n");
+    EXPECT_EQ(run(cli + " --list-cameras missing.jts").code, 3);
+    // Hidden from --help.
+    ASSERT_EQ(run(cli + " --help").code, 0);
+    EXPECT_EQ(file_text(dir / "stdout.txt").find("list-cameras"), std::string::npos);
+}
+
+}  // namespace
+}  // namespace jt

@@ -1,0 +1,33 @@
+// Embeds JTracer as another program would: parses a scene from a string,
+// renders it and checks the sphere in the middle is lit red and the corner
+// is the background. Prints the version; exits non-zero on any surprise.
+
+#include <jtracer/parser.hpp>
+#include <jtracer/render_job.hpp>
+#include <jtracer/validate.hpp>
+#include <jtracer/version.hpp>
+
+#include <cstdio>
+
+int main() {
+    const jt::ParseResult parsed = jt::parse_scene(R"(
+        render_settings { width: 32; height: 32; background: <0, 0, 1>; }
+        cameras { perspective_camera { position: <0, 0, 5>; look_at: <0, 0, 0>; } }
+        scene {
+            sphere { material { pigment: <1, 0, 0>; diffuse: <1, 1, 1>; } }
+            point_light { position: <0, 0, 10>; intensity: <1, 1, 1>; }
+        }
+    )");
+    jt::RenderOptions options;
+    options.width = parsed.scene.settings.width;
+    options.height = parsed.scene.settings.height;
+    options.camera = jt::active_camera_index(parsed.scene);
+    const jt::Image8 image = jt::render_image(jt::prepare_scene(parsed.scene), options);
+    const std::uint8_t* centre = image.pixel(16, 16);
+    const std::uint8_t* corner = image.pixel(0, 0);
+    std::printf("JTracer %s: centre %d,%d,%d corner %d,%d,%d\n", jt::version_string(), centre[0],
+                centre[1], centre[2], corner[0], corner[1], corner[2]);
+    const bool ok =
+        centre[0] > 200 && centre[1] == 0 && centre[2] == 0 && corner[0] == 0 && corner[2] == 255;
+    return ok ? 0 : 1;
+}
