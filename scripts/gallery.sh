@@ -17,12 +17,15 @@ gallery_width=320
     echo
     echo "One picture of every example scene in \`scenes/\` (installed in"
     echo "\`share/jtracer/scenes/\`), ${gallery_width} pixels wide, rendered by \`scripts/gallery.sh\`."
-    echo "Each comes with the command that renders it at the scene's own size."
+    echo "Each comes with the command that renders it at the scene's own size. The manual's"
+    echo "examples that give no material render black, as the language's defaults say: their"
+    echo "scenes add a background so that the shape shows as a silhouette."
     for scene in scenes/showcase.jts scenes/manual/*.jts; do
         name=$(basename "$scene" .jts)
         [ "$scene" = scenes/showcase.jts ] || name=manual_$name
-        read -r width height < <(sed -n 's/^ *\(width\|height\): *\([0-9]*\);.*/\2/p' "$scene" |
-            head -2 | tr '\n' ' ')
+        # The render_settings' width and height (the first two integer sizes).
+        read -r width height <<<"$(sed -n 's/^ *\(width\|height\): *\([0-9]*\);.*/\2/p' "$scene" |
+            head -2 | tr '\n' ' ')"
         small_height=$((height * gallery_width / width))
         "$cli" -q "$scene" -o "docs/images/$name.png" --width "$gallery_width" \
             --height "$small_height"
