@@ -43,7 +43,10 @@ struct Arguments {
 std::filesystem::path default_scene() {
     std::error_code ec;
     const std::filesystem::path program = std::filesystem::read_symlink("/proc/self/exe", ec);
-    return program.parent_path().parent_path() / "share/jtracer/scenes/showcase.jts";
+    const auto showcase = program.parent_path().parent_path() / "share/jtracer/scenes/showcase.jts";
+    // Through the build tree's link, the file that an edit changes: the source's.
+    const std::filesystem::path real = std::filesystem::weakly_canonical(showcase, ec);
+    return ec ? showcase : real;
 }
 
 bool parse_size(const std::string& text, int& width, int& height) {
