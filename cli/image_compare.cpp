@@ -90,17 +90,18 @@ int run_diff_command(int argc, char** argv) {
     }
 
     try {
-        Image8 expected, actual;
-        for (auto [path, image] : {std::pair{&expected_path, &expected}, {&actual_path, &actual}})
-            if (std::string error = read_image(*path, *image); !error.empty()) {
-                std::cerr << "jtracer-cli diff: " << error << "\n";
+        Expected<Image8> expected = read_image(expected_path);
+        Expected<Image8> actual = expected ? read_image(actual_path) : Expected<Image8>(Image8{});
+        for (const Expected<Image8>* image : {&expected, &actual})
+            if (!*image) {
+                std::cerr << "jtracer-cli diff: " << image->error().message << "\n";
                 return exit_io_error;
             }
-        const ImageDiff d = diff_images(expected, actual, tolerance.threshold);
+        const ImageDiff d = diff_images(*expected, *actual, tolerance.threshold);
         const bool ok = within(d, tolerance);
         if (!quiet) {
-            std::cout << expected_path << ": " << size_text(expected) << "\n"
-                      << actual_path << ": " << size_text(actual) << "\n";
+            std::cout << expected_path << ": " << size_text(*expected) << "\n"
+                      << actual_path << ": " << size_text(*actual) << "\n";
             if (d.same_size)
                 std::cout << report(d, tolerance);
             else
@@ -110,10 +111,10 @@ int run_diff_command(int argc, char** argv) {
         if (!heat_map_path.empty()) {
             if (!d.same_size) {
                 std::cerr << "jtracer-cli diff: the sizes differ, so no heat map was written\n";
-            } else if (std::string error = write_image(heat_map_path, d.image,
-                                                       format_from_extension(heat_map_path));
-                       !error.empty()) {
-                std::cerr << "jtracer-cli diff: " << error << "\n";
+            } else if (const Expected<void> written = write_image(
+                           heat_map_path, d.image, format_from_extension(heat_map_path));
+                       !written) {
+                std::cerr << "jtracer-cli diff: " << written.error().message << "\n";
                 return exit_io_error;
             }
         }
@@ -126,27 +127,28 @@ int run_diff_command(int argc, char** argv) {
 
 int check_expected(const Image8& render, const std::string& render_path,
                    const std::string& reference, const Tolerance& tolerance, bool quiet) {
-    Image8 expected;
-    if (std::string error = read_image(reference, expected); !error.empty()) {
-        std::cerr << "jtracer-cli: --expect: " << error << "\n";
+    const Expected<Image8> expected = read_image(reference);
+    if (!expected) {
+        std::cerr << "jtracer-cli: --expect: " << expected.error().message << "\n";
         return exit_io_error;
     }
-    const ImageDiff d = diff_images(expected, render, tolerance.threshold);
+    const ImageDiff d = diff_images(*expected, render, tolerance.threshold);
     if (within(d, tolerance)) {
         if (!quiet) std::cerr << "matches " << reference << "\n";
         return exit_ok;
     }
     if (!d.same_size) {
         std::cerr << "jtracer-cli: the render (" << size_text(render) << ", in " << render_path
-                  << ") is not the size of " << reference << " (" << size_text(expected) << ")\n";
+                  << ") is not the size of " << reference << " (" << size_text(*expected) << ")\n";
         return exit_outside_tolerance;
     }
     const std::string heat_map_path =
         std::filesystem::path(render_path).replace_extension(".diff.png").string();
     std::cerr << "jtracer-cli: the render differs from " << reference << ":\n"
               << report(d, tolerance);
-    if (std::string error = write_image(heat_map_path, d.image, ImageFormat::png); !error.empty()) {
-        std::cerr << "jtracer-cli: " << error << "\n";
+    if (const Expected<void> written = write_image(heat_map_path, d.image, ImageFormat::png);
+        !written) {
+        std::cerr << "jtracer-cli: " << written.error().message << "\n";
         return exit_io_error;
     }
     std::cerr << "the render is in " << render_path << ", the differences in " << heat_map_path

@@ -10,12 +10,12 @@ namespace jt::cli {
 using namespace frontend;
 
 int list_cameras(const std::string& scene_path) {
-    const LoadedScene loaded = load_scene_file(scene_path, {.source_map = false});
-    if (!loaded.read_ok()) {
-        std::cerr << "jtracer-cli: " << loaded.io_error << "\n";
+    const Expected<LoadedScene> loaded = load_scene_file(scene_path, {.source_map = false});
+    if (!loaded) {
+        std::cerr << "jtracer-cli: " << loaded.error().message << "\n";
         return exit_io_error;
     }
-    for (const Camera& camera : loaded.parsed.scene.cameras) std::cout << camera.name << "\n";
+    for (const Camera& camera : loaded->parsed.scene.cameras) std::cout << camera.name << "\n";
     return exit_ok;
 }
 

@@ -38,13 +38,13 @@ class Diff : public test::ScratchDir {
   protected:
     void SetUp() override {
         ScratchDir::SetUp();
-        ASSERT_EQ(write_png(dir / "a.png", gradient()), "");
-        ASSERT_EQ(write_bmp(dir / "a.bmp", gradient()), "");
+        ASSERT_TRUE(write_png(dir / "a.png", gradient()));
+        ASSERT_TRUE(write_bmp(dir / "a.bmp", gradient()));
     }
     CommandRun diff(const std::string& args) { return run(cli + " diff " + args); }
     std::string out() const { return file_text(dir / "stdout.txt"); }
     void write_png_file(const std::string& name, const Image8& image) {
-        ASSERT_EQ(write_png(dir / name, image), "");
+        ASSERT_TRUE(write_png(dir / name, image));
     }
 };
 
@@ -92,8 +92,9 @@ TEST_F(Diff, HeatMapMarksTheDifferingPixels) {
     b.pixel(3, 4)[0] = static_cast<std::uint8_t>(b.pixel(3, 4)[0] + 40);
     write_png_file("b.png", b);
     ASSERT_EQ(diff("a.png b.png -o heat.png").code, 1);
-    Image8 heat;
-    ASSERT_EQ(read_image(dir / "heat.png", heat), "");
+    const Expected<Image8> read = read_image(dir / "heat.png");
+    ASSERT_TRUE(read);
+    const Image8& heat = *read;
     ASSERT_EQ(heat.width, 40);
     ASSERT_EQ(heat.height, 20);
     int marked = 0;
@@ -173,7 +174,9 @@ class Expect : public test::ScratchDir {
         ScratchDir::SetUp();
         std::ofstream(dir / "scene.jts") << scene;
         ASSERT_EQ(run(cli + " -q scene.jts -o ref.png").code, 0);
-        ASSERT_EQ(read_image(dir / "ref.png", reference), "");
+        Expected<Image8> read = read_image(dir / "ref.png");
+        ASSERT_TRUE(read);
+        reference = *read;
     }
     Image8 reference;
 };
@@ -190,7 +193,7 @@ TEST_F(Expect, DifferingRenderWritesTheRenderAndTheDifferences) {
     Image8 changed = reference;
     for (int x = 0; x < 6; ++x)
         changed.pixel(x, 0)[1] = static_cast<std::uint8_t>(changed.pixel(x, 0)[1] ^ 0x40);
-    ASSERT_EQ(write_png(dir / "changed.png", changed), "");
+    ASSERT_TRUE(write_png(dir / "changed.png", changed));
     CommandRun r = run(cli + " scene.jts -o out/render.png --expect changed.png");
     EXPECT_EQ(r.code, 3) << "the folder for the render does not exist: " << r.err;
     std::filesystem::create_directory(dir / "out");
@@ -199,11 +202,12 @@ TEST_F(Expect, DifferingRenderWritesTheRenderAndTheDifferences) {
     EXPECT_NE(r.err.find("differs from changed.png"), std::string::npos) << r.err;
     EXPECT_NE(r.err.find("6 of 384"), std::string::npos) << r.err;
     EXPECT_NE(r.err.find("out/render.diff.png"), std::string::npos) << r.err;
-    Image8 render, heat;
-    ASSERT_EQ(read_image(dir / "out/render.png", render), "");
-    EXPECT_EQ(render, reference);
-    ASSERT_EQ(read_image(dir / "out/render.diff.png", heat), "");
-    EXPECT_EQ(heat.width, 24);
+    const Expected<Image8> render = read_image(dir / "out/render.png");
+    ASSERT_TRUE(render);
+    EXPECT_EQ(*render, reference);
+    const Expected<Image8> heat = read_image(dir / "out/render.diff.png");
+    ASSERT_TRUE(heat);
+    EXPECT_EQ(heat->width, 24);
     // Tolerated: 6 of 384 pixels is 1.5625%.
     EXPECT_EQ(
         run(cli + " -q scene.jts -o out/render.png --expect changed.png --max-pixels 1.6").code, 0);

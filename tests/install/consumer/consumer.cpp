@@ -22,7 +22,13 @@ int main() {
     options.width = parsed.scene.settings.width;
     options.height = parsed.scene.settings.height;
     options.camera = jt::active_camera_index(parsed.scene);
-    const jt::Image8 image = jt::render_image(jt::prepare_scene(parsed.scene), options);
+    const jt::Expected<std::shared_ptr<const jt::PreparedScene>> prepared =
+        jt::prepare_scene(parsed.scene);
+    if (!prepared) {
+        std::printf("%s\n", prepared.error().message.c_str());
+        return 1;
+    }
+    const jt::Image8 image = jt::render_image(*prepared, options);
     const std::uint8_t* centre = image.pixel(16, 16);
     const std::uint8_t* corner = image.pixel(0, 0);
     std::printf("JTracer %s: centre %d,%d,%d corner %d,%d,%d\n", jt::version_string(), centre[0],
