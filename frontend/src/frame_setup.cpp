@@ -43,6 +43,7 @@ FrameSetup set_up_frame(std::string_view program, const RenderFlags& flags,
     if (Expected<void> applied = apply_overrides(flags, loaded.parsed.scene); !applied)
         return fail(exit_usage, applied.error().message);
     std::vector<Diagnostic> diagnostics = check_scene(loaded);
+    name_setting_flags(diagnostics);
     const bool errors = has_errors(diagnostics);
     if (flags.quiet && !errors) diagnostics.clear();  // quiet drops warnings, never errors
     setup.message = format_diagnostics(diagnostics, loaded.path, loaded.text);

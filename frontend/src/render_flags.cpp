@@ -1,6 +1,10 @@
 #include "jtracer/frontend/render_flags.hpp"
 
+#include "jtracer/limits.hpp"
+
 #include <CLI/CLI.hpp>
+
+#include <string>
 
 namespace jt::frontend {
 
@@ -11,14 +15,24 @@ void add_render_flags(CLI::App& app, RenderFlags& o) {
                    "gives a PNG, anything else a BMP");
     app.add_option("--camera", o.camera, "Render from the camera with this name");
     app.add_option("--width", o.width, "Image width in pixels (overrides the scene)")
-        ->check(CLI::Range(1, 65535));
+        ->check(CLI::Range(1, kMaxImageSide));
     app.add_option("--height", o.height, "Image height in pixels (overrides the scene)")
-        ->check(CLI::Range(1, 65535));
-    app.add_option("--samples", o.samples, "Rays per pixel, 1..1024 (overrides the scene)")
-        ->check(CLI::Range(1, 1024));
+        ->check(CLI::Range(1, kMaxImageSide));
+    app.add_option("--samples", o.samples,
+                   "Rays per pixel, " + std::to_string(kMinSamples) + ".." +
+                       std::to_string(kMaxSamples) + " (overrides the scene)")
+        ->check(CLI::Range(kMinSamples, kMaxSamples));
     app.add_option("--threads", o.threads, "Worker threads; 0 uses every core")
         ->check(CLI::Range(0, 4096));
     app.add_flag("-q,--quiet", o.quiet, "No progress bar, summary or warnings; errors still show");
+}
+
+void name_setting_flags(std::vector<Diagnostic>& diagnostics) {
+    for (Diagnostic& d : diagnostics) {
+        if (d.setting == "width" || d.setting == "height") {
+            d.message.append(" or pass --").append(d.setting);
+        }
+    }
 }
 
 }  // namespace jt::frontend

@@ -89,8 +89,8 @@ TEST(Ints, SamplesExtensionRange) {
 TEST(Colours, AreClippedToZeroOneWithAWarning) {
     ParseResult r = parse_scene("scene { point_light { intensity: <1.5, -0.2, 0.5>; } }");
     EXPECT_EQ(brief(r.diagnostics),
-              "1:34: warning: 'intensity' <1.5, -0.2, 0.5> is clipped to the colour range [0, "
-              "1]: <1, 0, 0.5>");
+              "1:34: warning: 'intensity' <1.5, -0.2, 0.5> is outside the colour range [0, 1]: "
+              "clipped to <1, 0, 0.5>");
     EXPECT_EQ(r.scene.lights.at(0).intensity, Colour(1, 0, 0.5));
     // In range: no warning, and every colour property clips.
     parse_clean("render_settings { background: <0, 1, 0.5>; }");

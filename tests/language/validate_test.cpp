@@ -30,18 +30,20 @@ TEST(Validate, NoCameraIsAnError) {
               "} }");
 }
 
+// The command-line flags that also set them are the front end's to name (cli_test).
 TEST(Validate, ZeroWidthOrHeightSaysHowToSetIt) {
     EXPECT_EQ(validate("render_settings {\n  width: 0;\n}\ncameras { perspective_camera { } }\n"
                        "scene { }"),
-              "2:10: error: the image width is 0: set 'width' in render_settings or pass "
-              "--width\n"
-              "1:1: error: the image height is 0: set 'height' in render_settings or pass "
-              "--height");
-    EXPECT_EQ(validate("cameras { perspective_camera { } } scene { }"),
-              "0:0: error: the image width is 0: set 'width' in render_settings or pass "
-              "--width\n"
-              "0:0: error: the image height is 0: set 'height' in render_settings or pass "
-              "--height");
+              "2:10: error: the image width is 0: set 'width' in render_settings\n"
+              "1:1: error: the image height is 0: set 'height' in render_settings");
+    ParseResult r = parse_scene("cameras { perspective_camera { } } scene { }");
+    const std::vector<Diagnostic> found = validate_scene(r.scene, r.source);
+    EXPECT_EQ(brief(found),
+              "0:0: error: the image width is 0: set 'width' in render_settings\n"
+              "0:0: error: the image height is 0: set 'height' in render_settings");
+    ASSERT_EQ(found.size(), 2u);
+    EXPECT_EQ(found[0].setting, "width");
+    EXPECT_EQ(found[1].setting, "height");
 }
 
 TEST(Validate, SeesOverridesAppliedToTheScene) {
@@ -137,14 +139,16 @@ TEST(Validate, CatchesOutOfRangeValuesInScenesBuiltInCode) {
                                          return m;
                                      }(),
                                      {}});
+    // The parser's messages (schema.hpp), with the block they are in.
     EXPECT_EQ(brief(validate_scene(s, SceneSource{})),
-              "0:0: error: camera 1: 'fov' must be between 0 and 180 degrees\n"
-              "0:0: error: a sphere's 'radius' must be greater than 0\n"
-              "0:0: error: a plane's 'normal' must not be zero\n"
-              "0:0: error: 'reflection' must be from 0 to 1\n"
-              "0:0: error: a cylinder's 'radius' must be greater than 0\n"
-              "0:0: error: a cylinder's 'height' must be greater than 0\n"
-              "0:0: error: 'specular_k' must be greater than 0");
+              "0:0: error: camera 1: 'fov' must be between 0 and 180 degrees (exclusive), got "
+              "180\n"
+              "0:0: error: sphere 1: 'radius' must be greater than 0, got -1\n"
+              "0:0: error: plane 2: 'normal' must not be the zero vector, got <0, 0, 0>\n"
+              "0:0: error: plane 2: 'reflection' 2 is outside 0..1\n"
+              "0:0: error: cylinder 3: 'radius' must be greater than 0, got 0\n"
+              "0:0: error: cylinder 3: 'height' must be greater than 0, got 0\n"
+              "0:0: error: cylinder 3: 'specular_k' must be greater than 0, got 0");
 }
 
 }  // namespace

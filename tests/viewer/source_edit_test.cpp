@@ -3,6 +3,7 @@
 
 #include "jtracer/source_edit.hpp"
 #include "jtracer/parser.hpp"
+#include "jtracer/value_text.hpp"
 
 #include <gtest/gtest.h>
 
@@ -231,11 +232,31 @@ TEST(SourceEdit, StructuralChangesAreRefusedAndTheTextKept) {
 }
 
 TEST(SourceEdit, NumbersUseTheShortestTextThatReadsBack) {
-    EXPECT_EQ(format_jts_number(2.0), "2");
-    EXPECT_EQ(format_jts_number(0.1), "0.1");
-    EXPECT_EQ(format_jts_number(-0.0), "0");
-    EXPECT_EQ(format_jts_number(1e-5), "1e-05");
-    EXPECT_EQ(format_jts_vector(Vec3(1, -0.5, 0.25)), "<1, -0.5, 0.25>");
+    EXPECT_EQ(number_text(2.0), "2");
+    EXPECT_EQ(number_text(0.1), "0.1");
+    EXPECT_EQ(number_text(-0.0), "0");
+    EXPECT_EQ(number_text(1e-5), "1e-05");
+    EXPECT_EQ(number_text(0.1 + 0.2), "0.30000000000000004");  // nothing shorter reads back
+    EXPECT_EQ(vector_text(Vec3(1, -0.5, 0.25)), "<1, -0.5, 0.25>");
+}
+
+TEST(SourceEdit, OneComponentEditKeepsTheOtherComponentsText) {
+    const std::string text =
+        "cameras { perspective_camera { position: <-5.0, 8.0, 6.0>; } }\n"
+        "scene { sphere { transform { translate: < 1.50 ,2.0, # up\n 3e0 >; } } }\n";
+    Scene edited = parse_ok(text).scene;
+    edited.cameras[0].position.x = 5;
+    edited.primitives[0].transforms[0].vector.z = 0.25;
+    EXPECT_EQ(save(text, edited),
+              "cameras { perspective_camera { position: <5, 8.0, 6.0>; } }\n"
+              "scene { sphere { transform { translate: < 1.50 ,2.0, # up\n 0.25 >; } } }\n");
+    // A clipped colour component is written as the value it reads as.
+    const std::string colour = "scene { point_light { intensity: <2.0, 0.50, 1>; } }";
+    Scene dimmer = parse_scene(colour).scene;
+    dimmer.lights[0].intensity.z = 0.5;
+    ParseResult base = parse_scene(colour);
+    EXPECT_EQ(apply_scene_edits(colour, base.source, base.scene, dimmer).text,
+              "scene { point_light { intensity: <1, 0.50, 0.5>; } }");
 }
 
 TEST(SourceEdit, ShowcaseEditChangesOnlyThatValuesBytes) {

@@ -21,6 +21,10 @@ struct Diagnostic {
     Severity severity = Severity::error;
     SourcePos pos;
     std::string message;
+    // The render setting ("width") this diagnostic asks to be set, when it
+    // asks for one: a front end with its own way to set it (a command-line
+    // flag) can say so. Empty otherwise. Static storage (a schema name).
+    std::string_view setting = {};
     bool operator==(const Diagnostic&) const = default;
 };
 

@@ -49,7 +49,7 @@ Expected<std::shared_ptr<const PreparedScene>> prepare_scene(
 struct RenderOptions {
     int width = 0;  // final image size in pixels, > 0
     int height = 0;
-    int samples = 1;       // target samples per pixel, 1..1024
+    int samples = 1;       // target samples per pixel, kMinSamples..kMaxSamples
     int camera = 0;        // index into Scene::cameras
     int threads = 0;       // 0: every core
     bool previews = true;  // run the preview passes (1/16,) 1/8, 1/4, 1/2 first

@@ -4,7 +4,8 @@
 // A Scene is a value: copy it, compare it with ==, serialise it (serializer.hpp).
 // It holds no source positions; where each part came from lives beside it in a
 // SceneSource (source_map.hpp), so that two files that mean the same scene
-// compare equal. Every default below is the one docs/language.md §4 gives.
+// compare equal. Every default below is the one docs/language.md §4 gives;
+// schema.hpp lists each property with its kind and range.
 
 #include <glm/vec3.hpp>
 
@@ -25,7 +26,7 @@ struct RenderSettings {
     std::string active_camera;  // empty: the first camera
     Colour background{0.0};
     Colour ambient_light{0.0};
-    int samples = 1;  // extension: rays per pixel, 1..1024
+    int samples = 1;  // extension: rays per pixel, kMinSamples..kMaxSamples (limits.hpp)
 
     bool operator==(const RenderSettings&) const = default;
 };

@@ -3,8 +3,10 @@
 // only what changed: each changed value is replaced at its span, a property
 // that was never written is inserted into its block, a new camera is appended
 // to the last `cameras` block, and cameras removed from the end lose their
-// blocks. Every other byte (comments, order, spacing)
-// stays as it was. The viewer's "Save scene" uses it.
+// blocks. Every other byte (comments, order, spacing) stays as it was, down to
+// the components of a vector that did not change (`<-5.0, 8.0, 6.0>` with a
+// new x keeps `8.0, 6.0`). Values are written as value_text.hpp writes them.
+// The viewer's "Save scene" uses it.
 
 #include "jtracer/scene.hpp"
 #include "jtracer/source_map.hpp"
@@ -27,10 +29,5 @@ struct SourceEditResult {
 // shape's kind, is reported as an error (the text is then left as it was).
 SourceEditResult apply_scene_edits(std::string_view text, const SceneSource& source,
                                    const Scene& original, const Scene& edited);
-
-// Values as .jts text: shortest round-trip numbers ("0.5", "2", "1e-05"),
-// vectors "<1, 0.5, 0>", strings in double quotes.
-std::string format_jts_number(double value);
-std::string format_jts_vector(const Vec3& value);
 
 }  // namespace jt

@@ -1,9 +1,10 @@
 #include "jtracer/source_edit.hpp"
 
 #include "edit/text_edits.hpp"
+#include "jtracer/schema.hpp"
+#include "jtracer/value_text.hpp"
 
 #include <algorithm>
-#include <charconv>
 #include <initializer_list>
 #include <optional>
 #include <span>
@@ -12,28 +13,68 @@
 
 namespace jt {
 
-std::string format_jts_number(double value) {
-    if (value == 0.0) return "0";  // also turns -0 into 0
-    char buffer[64];
-    const auto result = std::to_chars(buffer, buffer + sizeof buffer, value);
-    return std::string(buffer, result.ptr);
-}
-
-std::string format_jts_vector(const Vec3& v) {
-    // Appended piece by piece: `"<" + std::string&&` trips GCC 12's -Wrestrict.
-    std::string text = "<";
-    text += format_jts_number(v.x);
-    text += ", ";
-    text += format_jts_number(v.y);
-    text += ", ";
-    text += format_jts_number(v.z);
-    text += ">";
-    return text;
-}
-
 namespace {
 
 using edit::TextEdit;
+
+// A property whose value differs between the original and the edited scene.
+struct Change {
+    std::string_view name;       // as the schema spells it (a parsed alias is recorded under it)
+    std::string text;            // the new value as .jts text
+    std::optional<Vec3> vector;  // a vector's new value
+    std::string line() const { return std::string(name) + ": " + text + ";"; }
+};
+
+// A string value that no .jts text can hold (there are no escapes) is a failure.
+template <class Block, class Fail>
+void check_writable(const PropertySpec<Block>& property, const Block& block, Fail& fail) {
+    with_member(property, block, [&](const auto& value) {
+        if constexpr (std::is_same_v<std::decay_t<decltype(value)>, std::string>) {
+            if (!is_writable_string(value))
+                fail("the text \"" + value + "\" cannot be written in a .jts string");
+        }
+    });
+}
+
+// Each of `properties` that differs between `a` and `b`, in their order.
+// `fail` hears of a string that no .jts text can hold.
+template <class Block, class Fail>
+std::vector<Change> changes(std::span<const PropertySpec<Block>> properties, const Block& a,
+                            const Block& b, Fail fail) {
+    std::vector<Change> found;
+    for (const PropertySpec<Block>& property : properties) {
+        if (same_value(property, a, b)) continue;
+        Change change{property.name, value_text(property, b), std::nullopt};
+        with_member(property, b, [&](const auto& value) {
+            if constexpr (std::is_same_v<std::decay_t<decltype(value)>, Vec3>)
+                change.vector = value;
+        });
+        check_writable(property, b, fail);
+        found.push_back(std::move(change));
+    }
+    return found;
+}
+
+// Every property of the block that differs, in schema order.
+template <class Block, class Fail>
+std::vector<Change> changes(const Block& a, const Block& b, Fail fail) {
+    return changes(schema_of<Block>().properties, a, b, fail);
+}
+
+// The lines of a new block holding `block`, with the properties the
+// serializer writes; `fail` hears of a string no .jts text can hold.
+template <class Block, class Fail>
+std::vector<std::string> block_lines(const Block& block, Fail fail) {
+    std::vector<std::string> lines{std::string(schema_of<Block>().keyword) + " {"};
+    for (const PropertySpec<Block>& property : schema_of<Block>().properties) {
+        if (!is_written(property, block)) continue;
+        check_writable(property, block, fail);
+        lines.push_back("    " + std::string(property.name) + ": " + value_text(property, block) +
+                        ";");
+    }
+    lines.push_back("}");
+    return lines;
+}
 
 // Collects the edits for one save, then splices them in one go.
 class SourceWriter {
@@ -50,52 +91,47 @@ class SourceWriter {
     void fail(std::string message) {
         if (error_.empty()) error_ = std::move(message);
     }
+    auto failure() {
+        return [this](std::string message) { fail(std::move(message)); };
+    }
     const std::string& error() const { return error_; }
     int changed() const { return changed_; }
     std::string result() const { return edit::apply_text_edits(text_, edits_); }
 
-    std::string quoted(const std::string& s) {
-        for (char c : s)
-            if (c < 0x20 || c > 0x7e || c == '"')
-                fail("the text \"" + s + "\" cannot be written in a .jts string");
-        return "\"" + s + "\"";
-    }
-
-    // The value of the last property named one of `names` across `blocks` (in
+    // The value of the last property named `change.name` across `blocks` (in
     // file order) is the one in force: replace it. False when none is written.
-    bool replace_last(const std::vector<const BlockSource*>& blocks,
-                      std::initializer_list<std::string_view> names, const std::string& value) {
+    bool replace_last(const std::vector<const BlockSource*>& blocks, const Change& change) {
         const PropertySource* last = nullptr;
         for (const BlockSource* block : blocks)
             for (const PropertySource& p : properties(*block))
-                for (std::string_view n : names)
-                    if (p.name == n) last = &p;
+                if (p.name == change.name) last = &p;
         if (!last) return false;
-        replace(*last, value);
+        replace(*last, change);
         return true;
     }
 
-    void replace(const PropertySource& property, const std::string& value) {
-        edits_.push_back({property.value_span.offset, property.value_span.length, value});
+    // A vector keeps the text of the components that did not change.
+    void replace(const PropertySource& property, const Change& change) {
+        const TextSpan& span = property.value_span;
+        const std::string value =
+            change.vector
+                ? edited_vector_text(text_.substr(span.offset, span.length), *change.vector)
+                : change.text;
+        edits_.push_back({span.offset, span.length, value});
         ++changed_;
     }
 
-    // Writes `name: value;` into `block`, replacing the value in force or
-    // inserting the property before the block's closing brace.
-    void set(const BlockSource& block, std::string_view name, const std::string& value,
-             std::initializer_list<std::string_view> aliases = {}) {
-        std::vector<std::string_view> names{name};
-        names.insert(names.end(), aliases.begin(), aliases.end());
+    // Writes the change into `block`, replacing the value in force or
+    // inserting `name: value;` before the block's closing brace.
+    void set(const BlockSource& block, const Change& change) {
         const PropertySource* last = nullptr;
         for (const PropertySource& p : properties(block))
-            for (std::string_view n : names)
-                if (p.name == n) last = &p;
+            if (p.name == change.name) last = &p;
         if (last) {
-            replace(*last, value);
+            replace(*last, change);
             return;
         }
-        insert_into(block.close_brace, indent_hint(block),
-                    {std::string(name) + ": " + value + ";"});
+        insert_into(block.close_brace, indent_hint(block), {change.line()});
         ++changed_;
     }
 
@@ -178,101 +214,6 @@ class SourceWriter {
     int changed_ = 0;
 };
 
-// Name/value pairs of the fields that differ, formatted as .jts values.
-using Changes = std::vector<std::pair<std::string, std::string>>;
-
-void add_if(Changes& changes, const char* name, double before, double after) {
-    if (before != after) changes.emplace_back(name, format_jts_number(after));
-}
-void add_if(Changes& changes, const char* name, int before, int after) {
-    if (before != after) changes.emplace_back(name, std::to_string(after));
-}
-void add_if(Changes& changes, const char* name, const Vec3& before, const Vec3& after) {
-    if (before != after) changes.emplace_back(name, format_jts_vector(after));
-}
-
-Changes settings_changes(SourceWriter& w, const RenderSettings& a, const RenderSettings& b) {
-    Changes c;
-    add_if(c, "width", a.width, b.width);
-    add_if(c, "height", a.height, b.height);
-    add_if(c, "recurse_depth", a.recurse_depth, b.recurse_depth);
-    if (a.filename != b.filename) c.emplace_back("filename", w.quoted(b.filename));
-    if (a.active_camera != b.active_camera)
-        c.emplace_back("active_camera", w.quoted(b.active_camera));
-    add_if(c, "background", a.background, b.background);
-    add_if(c, "ambient_light", a.ambient_light, b.ambient_light);
-    add_if(c, "samples", a.samples, b.samples);
-    return c;
-}
-
-Changes camera_changes(SourceWriter& w, const Camera& a, const Camera& b) {
-    Changes c;
-    if (a.name != b.name) c.emplace_back("name", w.quoted(b.name));
-    add_if(c, "position", a.position, b.position);
-    add_if(c, "look_at", a.look_at, b.look_at);
-    add_if(c, "up", a.up, b.up);
-    add_if(c, "aspect", a.aspect, b.aspect);
-    add_if(c, "fov", a.fov, b.fov);
-    return c;
-}
-
-Changes material_changes(const Material& a, const Material& b) {
-    Changes c;
-    add_if(c, "pigment", a.pigment, b.pigment);
-    add_if(c, "ambient", a.ambient, b.ambient);
-    add_if(c, "diffuse", a.diffuse, b.diffuse);
-    add_if(c, "specular", a.specular, b.specular);
-    add_if(c, "diffuse_k", a.diffuse_k, b.diffuse_k);
-    add_if(c, "specular_k", a.specular_k, b.specular_k);
-    add_if(c, "reflection", a.reflection, b.reflection);
-    return c;
-}
-
-Changes shape_changes(SourceWriter& w, const Shape& a, const Shape& b) {
-    Changes c;
-    if (a.index() != b.index()) {
-        w.fail("a primitive changed its kind; that cannot be saved in place");
-        return c;
-    }
-    if (auto* sa = std::get_if<Sphere>(&a)) {
-        const auto& sb = std::get<Sphere>(b);
-        add_if(c, "center", sa->center, sb.center);
-        add_if(c, "radius", sa->radius, sb.radius);
-    } else if (auto* pa = std::get_if<Plane>(&a)) {
-        const auto& pb = std::get<Plane>(b);
-        add_if(c, "normal", pa->normal, pb.normal);
-        add_if(c, "distance", pa->distance, pb.distance);
-    } else if (auto* ca = std::get_if<Cylinder>(&a)) {
-        const auto& cb = std::get<Cylinder>(b);
-        add_if(c, "radius", ca->radius, cb.radius);
-        add_if(c, "height", ca->height, cb.height);
-    }
-    return c;
-}
-
-void write_settings(SourceWriter& w, const SceneSource& source, const Scene& a, const Scene& b) {
-    const Changes changes = settings_changes(w, a.settings, b.settings);
-    if (changes.empty()) return;
-    if (source.render_settings) {
-        for (const auto& [name, value] : changes) w.set(*source.render_settings, name, value);
-        return;
-    }
-    std::string block = "render_settings {\n";
-    for (const auto& [name, value] : changes) block += "    " + name + ": " + value + ";\n";
-    w.append(block + "}\n");
-}
-
-std::vector<std::string> camera_lines(SourceWriter& w, const Camera& camera) {
-    return {"perspective_camera {",
-            "    name: " + w.quoted(camera.name) + ";",
-            "    position: " + format_jts_vector(camera.position) + ";",
-            "    look_at: " + format_jts_vector(camera.look_at) + ";",
-            "    up: " + format_jts_vector(camera.up) + ";",
-            "    aspect: " + format_jts_number(camera.aspect) + ";",
-            "    fov: " + format_jts_number(camera.fov) + ";",
-            "}"};
-}
-
 // The offset of the '}' that closes the `cameras` block holding `last_camera`:
 // only whitespace and comments can sit between the two.
 std::optional<std::size_t> cameras_close(std::string_view text, const BlockSource& last_camera) {
@@ -290,6 +231,18 @@ std::optional<std::size_t> cameras_close(std::string_view text, const BlockSourc
     return std::nullopt;
 }
 
+void write_settings(SourceWriter& w, const SceneSource& source, const Scene& a, const Scene& b) {
+    const auto found = changes(a.settings, b.settings, w.failure());
+    if (found.empty()) return;
+    if (source.render_settings) {
+        for (const Change& change : found) w.set(*source.render_settings, change);
+        return;
+    }
+    std::string block = std::string(schema_of<RenderSettings>().keyword) + " {\n";
+    for (const Change& change : found) block += "    " + change.line() + "\n";
+    w.append(block + "}\n");
+}
+
 void write_cameras(SourceWriter& w, const SceneSource& source, const Scene& a, const Scene& b) {
     if (source.cameras.size() != a.cameras.size()) {
         w.fail("the cameras do not match the text; cannot save in place");
@@ -298,19 +251,13 @@ void write_cameras(SourceWriter& w, const SceneSource& source, const Scene& a, c
     // Cameras removed from the end (as undoing a new camera does) lose their blocks.
     const std::size_t kept = std::min(a.cameras.size(), b.cameras.size());
     for (std::size_t i = kept; i < a.cameras.size(); ++i) w.remove(source.cameras[i]);
-    for (std::size_t i = 0; i < kept; ++i) {
-        for (const auto& [name, value] : camera_changes(w, a.cameras[i], b.cameras[i])) {
-            // `active_camera` inside a camera is read as its name (docs/language.md §3.5).
-            if (name == "name")
-                w.set(source.cameras[i], name, value, {"active_camera"});
-            else
-                w.set(source.cameras[i], name, value);
-        }
-    }
+    for (std::size_t i = 0; i < kept; ++i)
+        for (const Change& change : changes(a.cameras[i], b.cameras[i], w.failure()))
+            w.set(source.cameras[i], change);
     if (b.cameras.size() <= a.cameras.size()) return;
     std::vector<std::string> lines;
     for (std::size_t i = a.cameras.size(); i < b.cameras.size(); ++i) {
-        auto more = camera_lines(w, b.cameras[i]);
+        auto more = block_lines(b.cameras[i], w.failure());
         lines.insert(lines.end(), more.begin(), more.end());
     }
     if (source.cameras.empty()) {
@@ -330,20 +277,29 @@ void write_cameras(SourceWriter& w, const SceneSource& source, const Scene& a, c
 
 void write_primitive(SourceWriter& w, const BlockSource& block, const Primitive& a,
                      const Primitive& b) {
-    for (const auto& [name, value] : shape_changes(w, a.shape, b.shape)) w.set(block, name, value);
+    if (a.shape.index() != b.shape.index()) {
+        w.fail("a primitive changed its kind; that cannot be saved in place");
+        return;
+    }
+    std::visit(
+        [&](const auto& before) {
+            const auto& after = std::get<std::decay_t<decltype(before)>>(b.shape);
+            for (const Change& change : changes(before, after, w.failure())) w.set(block, change);
+        },
+        a.shape);
 
-    const auto materials = w.children_named(block, "material");
+    const auto materials = w.children_named(block, schema_of<Material>().keyword);
     std::vector<std::string> unwritten;
-    for (const auto& [name, value] : material_changes(a.material, b.material)) {
-        if (w.replace_last(materials, {name}, value)) continue;
+    for (const Change& change : changes(a.material, b.material, w.failure())) {
+        if (w.replace_last(materials, change)) continue;
         if (!materials.empty()) {
-            w.set(*materials.back(), name, value);
+            w.set(*materials.back(), change);
         } else {
-            unwritten.push_back(name + ": " + value + ";");
+            unwritten.push_back(change.line());
         }
     }
     if (!unwritten.empty()) {
-        std::string line = "material {";
+        std::string line = std::string(schema_of<Material>().keyword) + " {";
         for (const auto& item : unwritten) line += " " + item;
         w.insert_into(block.close_brace, w.indent_hint(block), {line + " }"});
         w.count_insertion();
@@ -354,7 +310,7 @@ void write_primitive(SourceWriter& w, const BlockSource& block, const Primitive&
         return;
     }
     std::vector<const PropertySource*> ops;
-    for (const BlockSource* t : w.children_named(block, "transform"))
+    for (const BlockSource* t : w.children_named(block, kTransformKeyword))
         for (const PropertySource& p : w.properties(*t)) ops.push_back(&p);
     for (std::size_t i = 0; i < a.transforms.size(); ++i) {
         const TransformOp& before = a.transforms[i];
@@ -364,16 +320,13 @@ void write_primitive(SourceWriter& w, const BlockSource& block, const Primitive&
             w.fail("a transform operation changed its kind; that cannot be saved in place");
             return;
         }
-        const bool is_vector =
-            after.kind == TransformKind::translate || after.kind == TransformKind::scale;
-        const std::string value =
-            is_vector ? format_jts_vector(after.vector) : format_jts_number(after.degrees);
-        w.replace(*ops[i], value);
+        const PropertySpec<TransformOp>& property = transform_op(after.kind).property;
+        for (const Change& change : changes(std::span(&property, 1), before, after, w.failure()))
+            w.replace(*ops[i], change);
     }
 }
 
 }  // namespace
-
 SourceEditResult apply_scene_edits(std::string_view text, const SceneSource& source,
                                    const Scene& original, const Scene& edited) {
     SourceEditResult result;
@@ -389,12 +342,9 @@ SourceEditResult apply_scene_edits(std::string_view text, const SceneSource& sou
         write_cameras(w, source, original, edited);
         for (std::size_t i = 0; i < original.primitives.size(); ++i)
             write_primitive(w, source.primitives[i], original.primitives[i], edited.primitives[i]);
-        for (std::size_t i = 0; i < original.lights.size(); ++i) {
-            Changes c;
-            add_if(c, "position", original.lights[i].position, edited.lights[i].position);
-            add_if(c, "intensity", original.lights[i].intensity, edited.lights[i].intensity);
-            for (const auto& [name, value] : c) w.set(source.lights[i], name, value);
-        }
+        for (std::size_t i = 0; i < original.lights.size(); ++i)
+            for (const Change& change : changes(original.lights[i], edited.lights[i], w.failure()))
+                w.set(source.lights[i], change);
     }
     result.error = w.error();
     result.text = result.error.empty() ? w.result() : std::string(text);

@@ -4,6 +4,7 @@
 
 #include "io/file_bytes.hpp"
 #include "jtracer/atomic_file.hpp"
+#include "jtracer/limits.hpp"
 
 #include <cstdlib>
 
@@ -83,7 +84,7 @@ Expected<Image8> decode_bmp(std::span<const std::uint8_t> bytes) {
     if (get32(h + 30) != 0) return Error{"unsupported BMP: compressed (only BI_RGB is read)"};
     bool top_down = height < 0;
     std::int64_t rows = std::llabs(static_cast<std::int64_t>(height));
-    if (width <= 0 || rows == 0 || width > 65535 || rows > 65535)
+    if (width <= 0 || rows == 0 || width > kMaxImageSide || rows > kMaxImageSide)
         return Error{std::string("BMP size out of range: ") + std::to_string(width) + " by " +
                      std::to_string(rows)};
     const std::size_t stride = row_stride(width);

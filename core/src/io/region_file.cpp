@@ -3,6 +3,7 @@
 #include "io/file_bytes.hpp"
 #include "jtracer/atomic_file.hpp"
 #include "jtracer/bmp.hpp"
+#include "jtracer/limits.hpp"
 
 #include <array>
 #include <cstdint>
@@ -67,7 +68,7 @@ Expected<RegionPart> read_region_bmp(const std::filesystem::path& path) {
             file_message(path, "region record of unknown version " + std::to_string(get32(r + 4)))};
     auto field = [&](int i) {
         std::uint32_t v = get32(r + 8 + 4 * i);
-        return v > 65535u ? -1 : static_cast<int>(v);  // no frame is wider than 65535
+        return v > static_cast<std::uint32_t>(kMaxImageSide) ? -1 : static_cast<int>(v);
     };
     RegionPart part{path.string(), std::move(*pixels), {}};
     RegionPlacement& p = part.placement;

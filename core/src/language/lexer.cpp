@@ -1,6 +1,6 @@
 #include "language/lexer.hpp"
 
-#include "language/number_text.hpp"
+#include "language/quote.hpp"
 
 #include <array>
 #include <charconv>

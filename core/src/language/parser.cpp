@@ -9,8 +9,8 @@
 
 #include "io/reserve_records.hpp"
 #include "language/lexer.hpp"
-#include "language/number_text.hpp"
 #include "language/properties.hpp"
+#include "language/quote.hpp"
 #include "language/suggest.hpp"
 
 #include <algorithm>

@@ -1,12 +1,15 @@
 #pragma once
 // Reading one property's value into the scene model: kind checks, ranges,
 // int truncation, colour clipping, duplicate warnings (docs/language.md §3.2-§4).
+// What each block accepts comes from the schema (jtracer/schema.hpp).
 
 #include "jtracer/scene.hpp"
+#include "jtracer/schema.hpp"
 #include "jtracer/source_map.hpp"
 #include "language/diagnostic_sink.hpp"
 
 #include <array>
+#include <span>
 #include <string_view>
 #include <utility>
 #include <vector>
@@ -68,14 +71,15 @@ class PropertyReader {
     void apply(std::vector<TransformOp>& transforms, OpenBlock& block, const Property& p);
 
   private:
-    bool number(const Property& p, double& out);
-    bool whole_number(const Property& p, int& out, double low, double high);
-    bool vector(const Property& p, Vec3& out);
-    bool colour(const Property& p, Colour& out);
-    bool string(const Property& p, std::string& out);
-    bool positive(const Property& p, double& out);
-    void kind_error(const Property& p, std::string_view expected);
-    void range_error(const Property& p, std::string_view rule);
+    template <class Block>
+    void apply_block(Block& target, OpenBlock& block, const Property& p);
+    // Reads the value into the member `spec` sets in `target`; false (reported)
+    // when it is of the wrong kind or outside the property's range.
+    template <class Block>
+    bool read(const PropertySpec<Block>& spec, const Property& p, Block& target);
+    void kind_error(const Property& p, ValueKind expected);
+    void unknown_property(const Property& p, std::string_view keyword,
+                          std::span<const std::string_view> names);
     // Records the property in `block` under `as_name`, which must be in static
     // storage (one of the known names); warns when the block already set it.
     void record(OpenBlock& block, const Property& p, std::string_view as_name, bool warn_repeat);

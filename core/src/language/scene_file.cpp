@@ -2,7 +2,7 @@
 
 #include "io/huge_pages.hpp"
 #include "jtracer/validate.hpp"
-#include "language/number_text.hpp"
+#include "language/quote.hpp"
 
 #include <cerrno>
 #include <cstdio>

@@ -1,15 +1,12 @@
 #include "jtracer/validate.hpp"
 
-#include "language/number_text.hpp"
+#include "jtracer/schema.hpp"
+#include "jtracer/value_text.hpp"
 
 #include <glm/geometric.hpp>
 
 #include <cmath>
 #include <string>
-
-namespace jt {
-using lang::vector_text;
-}
 
 namespace jt {
 
@@ -21,10 +18,6 @@ const BlockSource* at(const std::vector<BlockSource>& sources, const std::vector
     // Sources are parallel to the scene's lists only when the scene came
     // straight from the parser; a scene edited in code may differ.
     return sources.size() == items.size() ? &sources[i] : nullptr;
-}
-
-bool finite(const Vec3& v) {
-    return std::isfinite(v.x) && std::isfinite(v.y) && std::isfinite(v.z);
 }
 
 class Validator {
@@ -59,6 +52,36 @@ class Validator {
         return block->keyword_span.pos;
     }
 
+    // The same for a primitive's material property: its last occurrence across
+    // the primitive's material blocks, else the primitive's keyword.
+    SourcePos where_material(const BlockSource* primitive, std::string_view name) const {
+        if (!primitive) return {};
+        const auto children = children_of(source_, *primitive);
+        for (auto child = children.rbegin(); child != children.rend(); ++child) {
+            if (child->keyword != schema_of<Material>().keyword) continue;
+            const auto properties = properties_of(source_, *child);
+            for (auto it = properties.rbegin(); it != properties.rend(); ++it)
+                if (it->name == name) return it->value_span.pos;
+        }
+        return primitive->keyword_span.pos;
+    }
+
+    // Every property of `block` against its range (values set in code can be
+    // anything; parsed ones are in range already). `which` names the block in
+    // the message ("camera 2: "); `locate` finds a property's position. True
+    // when all are in range.
+    template <class Block, class Locate>
+    bool check_values(const Block& block, const std::string& which, Locate locate) {
+        bool ok = true;
+        for (const PropertySpec<Block>& property : schema_of<Block>().properties) {
+            if (auto problem = value_problem(property, block)) {
+                error(locate(property.name), which + *problem);
+                ok = false;
+            }
+        }
+        return ok;
+    }
+
     const BlockSource* settings_block() const {
         return source_.render_settings ? &*source_.render_settings : nullptr;
     }
@@ -66,27 +89,21 @@ class Validator {
     void check_settings() {
         const RenderSettings& s = scene_.settings;
         const BlockSource* block = settings_block();
+        const auto locate = [&](std::string_view name) { return where(block, name); };
+        if (!check_values(s, "", locate)) return;
+        // 0 parses (it is the default) but cannot render (docs/language.md §4.9).
         for (auto [name, value] : {std::pair{"width", s.width}, std::pair{"height", s.height}}) {
             if (value == 0) {
-                error(where(block, name), std::string("the image ") + name + " is 0: set '" + name +
-                                              "' in render_settings or pass --" + name);
-            } else if (value < 0 || value > 65535) {
-                error(where(block, name), std::string("the image ") + name + " " +
-                                              std::to_string(value) + " is outside 1..65535");
+                error(locate(name), std::string("the image ") + name + " is 0: set '" + name +
+                                        "' in render_settings");
+                out_.back().setting = name;
             }
         }
         if (s.width > 0 && s.height > 0 && bmp_file_size(s.width, s.height) > 0xFFFFFFFFull) {
-            error(where(block, "height"), "a " + std::to_string(s.width) + " x " +
-                                              std::to_string(s.height) +
-                                              " image does not fit in a BMP file (4 GiB at most)");
+            error(locate("height"), "a " + std::to_string(s.width) + " x " +
+                                        std::to_string(s.height) +
+                                        " image does not fit in a BMP file (4 GiB at most)");
         }
-        if (s.recurse_depth < 0 || s.recurse_depth > 256) {
-            error(where(block, "recurse_depth"), "'recurse_depth' must be from 0 to 256");
-        }
-        if (s.samples < 1 || s.samples > 1024) {
-            error(where(block, "samples"), "'samples' must be from 1 to 1024");
-        }
-        if (s.filename.empty()) error(where(block, "filename"), "'filename' must not be empty");
         if (!s.active_camera.empty() && !scene_.cameras.empty() &&
             active_camera_index(scene_) == 0 && scene_.cameras[0].name != s.active_camera) {
             warning(where(block, "active_camera"),
@@ -105,12 +122,12 @@ class Validator {
         for (std::size_t i = 0; i < scene_.cameras.size(); ++i) {
             const Camera& c = scene_.cameras[i];
             const BlockSource* block = at(source_.cameras, scene_.cameras, i);
+            const std::string noun(schema_of<Camera>().noun);
             const std::string which =
-                c.name.empty() ? "camera " + std::to_string(i + 1) : "camera \"" + c.name + "\"";
-            if (!finite(c.position) || !finite(c.look_at) || !finite(c.up)) {
-                error(where(block, "position"), which + " has a non-finite vector");
+                c.name.empty() ? noun + " " + std::to_string(i + 1) : noun + " \"" + c.name + "\"";
+            if (!check_values(c, which + ": ",
+                              [&](std::string_view name) { return where(block, name); }))
                 continue;
-            }
             const Vec3 view = c.look_at - c.position;
             if (view == Vec3(0.0)) {
                 error(where(block, "look_at"),
@@ -121,17 +138,12 @@ class Validator {
                                               " is parallel to the view direction " +
                                               vector_text(view) + " (or zero)");
             }
-            if (!(c.fov > 0.0 && c.fov < 180.0)) {
-                error(where(block, "fov"), which + ": 'fov' must be between 0 and 180 degrees");
-            }
-            if (!(c.aspect > 0.0) || !std::isfinite(c.aspect)) {
-                error(where(block, "aspect"), which + ": 'aspect' must be greater than 0");
-            } else if (s.width > 0 && s.height > 0) {
+            if (s.width > 0 && s.height > 0) {
                 double image = static_cast<double>(s.width) / s.height;
                 if (std::abs(c.aspect - image) > 0.01 * image) {
                     warning(where(block, "aspect"),
-                            which + ": 'aspect' " + lang::number_text(c.aspect) +
-                                " differs from width/height = " + lang::number_text(image) +
+                            which + ": 'aspect' " + number_text(c.aspect) +
+                                " differs from width/height = " + number_text(image) +
                                 " by more than 1%, so the image will look stretched");
                 }
             }
@@ -142,33 +154,23 @@ class Validator {
         for (std::size_t i = 0; i < scene_.primitives.size(); ++i) {
             const Primitive& p = scene_.primitives[i];
             const BlockSource* block = at(source_.primitives, scene_.primitives, i);
-            check_shape(p.shape, block);
-            check_material(p.material, block);
+            const std::string which =
+                std::string(keyword_of(p.shape)) + " " + std::to_string(i + 1) + ": ";
+            std::visit(
+                [&](const auto& shape) {
+                    check_values(shape, which,
+                                 [&](std::string_view name) { return where(block, name); });
+                },
+                p.shape);
+            check_values(p.material, which,
+                         [&](std::string_view name) { return where_material(block, name); });
+            for (std::size_t k = 0; k < p.transforms.size(); ++k) {
+                const TransformOp& op = p.transforms[k];
+                if (auto problem = value_problem(transform_op(op.kind).property, op))
+                    error(op_position(block, k), which + *problem);
+            }
             check_transforms(p, block);
         }
-    }
-
-    void check_shape(const Shape& shape, const BlockSource* block) {
-        if (auto* sphere = std::get_if<Sphere>(&shape)) {
-            if (!(sphere->radius > 0.0) || !std::isfinite(sphere->radius))
-                error(where(block, "radius"), "a sphere's 'radius' must be greater than 0");
-        } else if (auto* plane = std::get_if<Plane>(&shape)) {
-            if (plane->normal == Vec3(0.0) || !finite(plane->normal))
-                error(where(block, "normal"), "a plane's 'normal' must not be zero");
-        } else if (auto* cylinder = std::get_if<Cylinder>(&shape)) {
-            if (!(cylinder->radius > 0.0) || !std::isfinite(cylinder->radius))
-                error(where(block, "radius"), "a cylinder's 'radius' must be greater than 0");
-            if (!(cylinder->height > 0.0) || !std::isfinite(cylinder->height))
-                error(where(block, "height"), "a cylinder's 'height' must be greater than 0");
-        }
-    }
-
-    void check_material(const Material& m, const BlockSource* block) {
-        SourcePos pos = block ? block->keyword_span.pos : SourcePos{};
-        if (!(m.diffuse_k > 0.0)) error(pos, "'diffuse_k' must be greater than 0");
-        if (!(m.specular_k > 0.0)) error(pos, "'specular_k' must be greater than 0");
-        if (!(m.reflection >= 0.0 && m.reflection <= 1.0))
-            error(pos, "'reflection' must be from 0 to 1");
     }
 
     // The scale op number k of a primitive is the k-th op property across its transform blocks.
@@ -198,11 +200,11 @@ class Validator {
 
     void check_lights() {
         for (std::size_t i = 0; i < scene_.lights.size(); ++i) {
-            const PointLight& light = scene_.lights[i];
-            if (!finite(light.position)) {
-                const BlockSource* block = at(source_.lights, scene_.lights, i);
-                error(where(block, "position"), "a point_light's 'position' must be finite");
-            }
+            const BlockSource* block = at(source_.lights, scene_.lights, i);
+            check_values(
+                scene_.lights[i],
+                std::string(schema_of<PointLight>().noun) + " " + std::to_string(i + 1) + ": ",
+                [&](std::string_view name) { return where(block, name); });
         }
     }
 

@@ -35,7 +35,7 @@ struct PreparedFrame {
     mutable DirectionTable table_;
 };
 
-// `options` as a frame renders them: samples clamped to 1..1024, sizes to >= 0.
+// `options` as a frame renders them: samples clamped to kMinSamples..kMaxSamples, sizes to >= 0.
 RenderOptions frame_options(RenderOptions options);
 
 // The quantized pixels of one tile, row by row, and the running sum of each

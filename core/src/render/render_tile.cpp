@@ -1,5 +1,6 @@
 #include "jtracer/render_tile.hpp"
 
+#include "jtracer/limits.hpp"
 #include "render/prepared_frame.hpp"
 #include "render/prepared_scene.hpp"
 #include "render/sample_pattern.hpp"
@@ -113,7 +114,7 @@ bool trace_tile(const PreparedFrame& frame, const RenderPass& pass, TileBuffer& 
 }
 
 RenderOptions frame_options(RenderOptions options) {
-    options.samples = std::clamp(options.samples, 1, 1024);
+    options.samples = std::clamp(options.samples, kMinSamples, kMaxSamples);
     options.width = std::max(options.width, 0);
     options.height = std::max(options.height, 0);
     return options;

@@ -1,5 +1,6 @@
 #include "render/trace.hpp"
 
+#include "jtracer/limits.hpp"
 #include "render/ray_queries.hpp"
 
 #include <glm/geometric.hpp>
@@ -13,7 +14,8 @@ namespace jt {
 
 namespace {
 
-constexpr int max_depth = 256;  // docs/language.md §4.1 clamps recurse_depth here
+constexpr int max_depth =
+    kMaxRecurseDepth;  // recurse_depth is clamped here (docs/language.md §4.1)
 
 double max_abs(const Vec3& v) {
     return std::max({std::abs(v.x), std::abs(v.y), std::abs(v.z)});

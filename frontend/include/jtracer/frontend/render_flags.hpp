@@ -3,8 +3,11 @@
 // the options, their exit codes, and their declaration, written once so that
 // both read a render the same way.
 
+#include "jtracer/diagnostics.hpp"
+
 #include <optional>
 #include <string>
+#include <vector>
 
 namespace CLI {
 class App;
@@ -29,5 +32,9 @@ struct RenderFlags {
 // Declares the scene argument and -o, --camera, --width, --height, --samples,
 // --threads and -q.
 void add_render_flags(CLI::App& app, RenderFlags& flags);
+
+// Adds to each diagnostic that asks for a render setting the flag that sets
+// it: "... set 'width' in render_settings or pass --width".
+void name_setting_flags(std::vector<Diagnostic>& diagnostics);
 
 }  // namespace jt::frontend

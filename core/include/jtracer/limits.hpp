@@ -1,0 +1,20 @@
+#pragma once
+// The language's named limits (docs/language.md §4). Every check of these
+// values, in the parser, the validator, the render job, the command-line flags
+// and the viewer's fields, uses these names.
+
+namespace jt {
+
+// Widest and tallest image a scene may ask for (0 means "not set"). Images
+// read back (BMPs, region records) are held to the same bound.
+inline constexpr int kMaxImageSide = 65535;
+
+// The samples extension: rays per pixel.
+inline constexpr int kMinSamples = 1;
+inline constexpr int kMaxSamples = 1024;
+
+// Deeper recurse_depth values are clamped here, with a warning; the tracer
+// keeps one entry per bounce on its stack, so this also bounds that stack.
+inline constexpr int kMaxRecurseDepth = 256;
+
+}  // namespace jt

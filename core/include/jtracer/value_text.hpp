@@ -1,0 +1,34 @@
+#pragma once
+// Values as .jts text (docs/language.md §2.4 numbers, §2.5 strings). Everything that writes a value
+// (the serializer, save-in-place, messages, the viewer) writes it this way.
+
+#include "jtracer/scene.hpp"
+
+#include <string>
+#include <string_view>
+
+namespace jt {
+
+// The shortest text that reads back as exactly `value` (std::to_chars):
+// "0.5", "2", "1e-05", "-2.2354736889656803" only when nothing shorter reads
+// back the same. -0 is written "0". Finite values only ("nan", "inf" do not parse).
+std::string number_text(double value);
+
+// "<1, 0.5, 0>": three number_texts.
+std::string vector_text(const Vec3& value);
+
+// True when `text` can stand between double quotes in a .jts file:
+// printable ASCII and no double quote (there are no escapes).
+bool is_writable_string(std::string_view text);
+
+// `text` in double quotes; the caller makes sure it is writable.
+std::string string_text(std::string_view text);
+
+// The value `written` (a vector as it appears in a file, "<-5.0, 8.0, 6.0>")
+// rewritten to hold `value`: components that already read as their new value
+// keep their text (and any comments or spacing between them), the others
+// become number_text. Falls back to vector_text when `written` is not a
+// plain three-number vector.
+std::string edited_vector_text(std::string_view written, const Vec3& value);
+
+}  // namespace jt

@@ -1,0 +1,551 @@
+// The property schema (jtracer/schema.hpp), enumerated: the table matches the
+// language's property table (docs/language.md §4), and every property parses,
+// serialises, reads back, edits in place, and has its range enforced with one
+// located message, in the parser and in the validator.
+
+#include "jtracer/schema.hpp"
+
+#include "jtracer/serializer.hpp"
+#include "jtracer/source_edit.hpp"
+#include "jtracer/validate.hpp"
+#include "jtracer/value_text.hpp"
+#include "test_util.hpp"
+
+#include <cmath>
+#include <limits>
+#include <set>
+#include <type_traits>
+
+namespace jt {
+namespace {
+
+using testing::brief;
+
+// --- the table against the language's ------------------------------------------
+
+// A range in brief: '[' or ']' an inclusive bound, '(' or ')' an open one,
+// '<' or '>' a clamping one; then "nonzero" or "nonempty" when they apply.
+std::string allowed(const ValueRange& r) {
+    if (r.nonzero) return "nonzero";
+    if (r.nonempty) return "nonempty";
+    if (!std::isfinite(r.low) && !std::isfinite(r.high)) return "any";
+    std::string out = r.clamp_low ? "<" : r.low_open || !std::isfinite(r.low) ? "(" : "[";
+    out += std::isfinite(r.low) ? number_text(r.low) : "-inf";
+    out += ", ";
+    out += std::isfinite(r.high) ? number_text(r.high) : "inf";
+    return out + (r.clamp_high ? ">" : r.high_open || !std::isfinite(r.high) ? ")" : "]");
+}
+
+const char* kind_name(ValueKind kind) {
+    switch (kind) {
+        case ValueKind::whole:
+            return "int";
+        case ValueKind::number:
+            return "number";
+        case ValueKind::vector:
+            return "vector";
+        case ValueKind::colour:
+            return "colour";
+        case ValueKind::string:
+            return "string";
+    }
+    return "?";
+}
+
+template <class Block>
+std::string describe(std::string_view keyword, const PropertySpec<Block>& p, bool with_default) {
+    std::string line = std::string(keyword) + "." + std::string(p.name) + " " + kind_name(p.kind);
+    if (with_default) line += " " + value_text(p, Block{});
+    line += " " + allowed(p.range);
+    if (!p.unit.empty()) line += " " + std::string(p.unit);
+    if (p.omit_default) line += " omitted-when-default";
+    if (!p.alias.empty()) line += " alias:" + std::string(p.alias);
+    return line;
+}
+
+template <class Block>
+std::string describe_block() {
+    std::string out;
+    for (const PropertySpec<Block>& p : schema_of<Block>().properties)
+        out += describe(schema_of<Block>().keyword, p, true) + "\n";
+    return out;
+}
+
+// Written out by hand from the language's table, not from the schema: a
+// changed name, kind, default, range, unit or order in the schema fails here.
+TEST(Schema, MatchesTheLanguagesPropertyTable) {
+    std::string all = describe_block<RenderSettings>() + describe_block<Camera>() +
+                      describe_block<Sphere>() + describe_block<Plane>() +
+                      describe_block<Cylinder>() + describe_block<PointLight>() +
+                      describe_block<Material>();
+    for (const TransformOpSpec& op : transform_ops())
+        all += describe("transform", op.property, false) + "\n";
+    EXPECT_EQ(all,
+              "render_settings.width int 0 [0, 65535]\n"
+              "render_settings.height int 0 [0, 65535]\n"
+              "render_settings.recurse_depth int 0 [0, 256>\n"
+              "render_settings.filename string \"jtracer.bmp\" nonempty\n"
+              "render_settings.active_camera string \"\" any omitted-when-default\n"
+              "render_settings.background colour <0, 0, 0> <0, 1>\n"
+              "render_settings.ambient_light colour <0, 0, 0> <0, 1>\n"
+              "render_settings.samples int 1 [1, 1024] omitted-when-default\n"
+              "perspective_camera.name string \"\" any alias:active_camera\n"
+              "perspective_camera.position vector <0, 0, 0> any\n"
+              "perspective_camera.look_at vector <0, 0, -1> any\n"
+              "perspective_camera.up vector <0, 1, 0> any\n"
+              "perspective_camera.aspect number 1 (0, inf)\n"
+              "perspective_camera.fov number 45 (0, 180) degrees\n"
+              "sphere.center vector <0, 0, 0> any\n"
+              "sphere.radius number 1 (0, inf)\n"
+              "plane.normal vector <0, 1, 0> nonzero\n"
+              "plane.distance number 0 any\n"
+              "cylinder.radius number 0.5 (0, inf)\n"
+              "cylinder.height number 1 (0, inf)\n"
+              "point_light.position vector <0, 0, 0> any\n"
+              "point_light.intensity colour <0, 0, 0> <0, 1>\n"
+              "material.pigment colour <0, 0, 0> <0, 1>\n"
+              "material.ambient colour <0, 0, 0> <0, 1>\n"
+              "material.diffuse colour <0, 0, 0> <0, 1>\n"
+              "material.specular colour <0, 0, 0> <0, 1>\n"
+              "material.diffuse_k number 1 (0, inf)\n"
+              "material.specular_k number 64 (0, inf)\n"
+              "material.reflection number 0 <0, 1>\n"
+              "transform.translate vector any\n"
+              "transform.scale vector any\n"
+              "transform.xrotate number any degrees\n"
+              "transform.yrotate number any degrees\n"
+              "transform.zrotate number any degrees\n");
+}
+
+template <class Block>
+void expect_distinct_members() {
+    std::set<std::string_view> names;
+    std::set<std::size_t> members;  // by index and address: no two entries set one member
+    Block probe{};
+    for (const PropertySpec<Block>& p : schema_of<Block>().properties) {
+        EXPECT_TRUE(names.insert(p.name).second) << p.name;
+        const void* address = with_member(p, probe, [](auto& v) { return (const void*)&v; });
+        EXPECT_TRUE(members.insert(reinterpret_cast<std::size_t>(address)).second)
+            << p.name << " sets the member of another property";
+        // Kind and member type agree.
+        with_member(p, probe, [&](auto& v) {
+            using T = std::decay_t<decltype(v)>;
+            const bool vector = p.kind == ValueKind::vector || p.kind == ValueKind::colour;
+            const bool is_int = std::is_same_v<T, int>, is_double = std::is_same_v<T, double>,
+                       is_vec = std::is_same_v<T, Vec3>, is_string = std::is_same_v<T, std::string>;
+            EXPECT_EQ(is_int, p.kind == ValueKind::whole) << p.name;
+            EXPECT_EQ(is_double, p.kind == ValueKind::number) << p.name;
+            EXPECT_EQ(is_vec, vector) << p.name;
+            EXPECT_EQ(is_string, p.kind == ValueKind::string) << p.name;
+        });
+        // An int member needs bounds an int can hold.
+        if (p.kind == ValueKind::whole) {
+            EXPECT_GE(p.range.low, std::numeric_limits<int>::min()) << p.name;
+            EXPECT_LE(p.range.high, std::numeric_limits<int>::max()) << p.name;
+        }
+    }
+}
+
+TEST(Schema, EachPropertySetsItsOwnMemberOfItsKind) {
+    expect_distinct_members<RenderSettings>();
+    expect_distinct_members<Camera>();
+    expect_distinct_members<Sphere>();
+    expect_distinct_members<Plane>();
+    expect_distinct_members<Cylinder>();
+    expect_distinct_members<PointLight>();
+    expect_distinct_members<Material>();
+}
+
+// --- every property through every consumer ---------------------------------------
+
+// Where a block's properties are written in a one-line scene ('@' marks the
+// spot), and where the block is in the parsed scene.
+template <class Block>
+struct Host {
+    std::string_view text;
+    Block& (*get)(Scene&);
+};
+
+// A scene that validates clean, with one of every block; `get` finds each in it.
+constexpr std::string_view kValid =
+    "render_settings { width: 4; height: 4; }\n"
+    "cameras { perspective_camera { } }\n"
+    "scene { sphere { material { } transform { translate: <0, 0, 0>; } } plane { } cylinder { } "
+    "point_light { } }\n";
+
+const Host<RenderSettings> kSettingsHost{"render_settings { @ }",
+                                         [](Scene& s) -> RenderSettings& { return s.settings; }};
+const Host<Camera> kCameraHost{"cameras { perspective_camera { @ } }",
+                               [](Scene& s) -> Camera& { return s.cameras.at(0); }};
+const Host<Sphere> kSphereHost{"scene { sphere { @ } }", [](Scene& s) -> Sphere& {
+                                   return std::get<Sphere>(s.primitives.at(0).shape);
+                               }};
+const Host<Plane> kPlaneHost{"scene { plane { @ } }", [](Scene& s) -> Plane& {
+                                 return std::get<Plane>(s.primitives.at(0).shape);
+                             }};
+const Host<Cylinder> kCylinderHost{"scene { cylinder { @ } }", [](Scene& s) -> Cylinder& {
+                                       return std::get<Cylinder>(s.primitives.at(0).shape);
+                                   }};
+const Host<PointLight> kLightHost{"scene { point_light { @ } }",
+                                  [](Scene& s) -> PointLight& { return s.lights.at(0); }};
+const Host<Material> kMaterialHost{
+    "scene { sphere { material { @ } } }",
+    [](Scene& s) -> Material& { return s.primitives.at(0).material; }};
+const Host<TransformOp> kTransformHost{
+    "scene { sphere { transform { @ } } }",
+    [](Scene& s) -> TransformOp& { return s.primitives.at(0).transforms.at(0); }};
+
+// In kValid, each block's place (the primitive of each shape is a different one).
+template <class Block>
+Block& in_valid(Scene& s);
+template <>
+RenderSettings& in_valid(Scene& s) {
+    return s.settings;
+}
+template <>
+Camera& in_valid(Scene& s) {
+    return s.cameras.at(0);
+}
+template <>
+Sphere& in_valid(Scene& s) {
+    return std::get<Sphere>(s.primitives.at(0).shape);
+}
+template <>
+Plane& in_valid(Scene& s) {
+    return std::get<Plane>(s.primitives.at(1).shape);
+}
+template <>
+Cylinder& in_valid(Scene& s) {
+    return std::get<Cylinder>(s.primitives.at(2).shape);
+}
+template <>
+PointLight& in_valid(Scene& s) {
+    return s.lights.at(0);
+}
+template <>
+Material& in_valid(Scene& s) {
+    return s.primitives.at(0).material;
+}
+template <>
+TransformOp& in_valid(Scene& s) {
+    return s.primitives.at(0).transforms.at(0);
+}
+
+std::string with_property(std::string_view host, std::string_view property) {
+    std::string text(host);
+    text.replace(text.find('@'), 1, property);
+    return text;
+}
+
+// Two in-range values unlike each other and unlike the default, and the text
+// the first is written as in the file: not the shortest, so that an edit
+// which keeps a component's text shows.
+struct Samples {
+    int whole[2] = {7, 3};
+    double number[5] = {2.5, 0.75, 0.25, 33.5, -4.25};   // the first two in range are used
+    Vec3 vector[2] = {{0.25, -1.5, 3}, {0.5, -1.5, 3}};  // only x differs
+    const char* vector_written = "<0.250, -1.50, 3.0>";
+    const char* vector_edited = "<0.5, -1.50, 3.0>";
+    Vec3 colour[2] = {{0.25, 0.5, 0.75}, {0.25, 0.5, 1}};  // only z differs
+    const char* colour_written = "<0.250, 0.50, 0.750>";
+    const char* colour_edited = "<0.250, 0.50, 1>";
+    std::string string[2] = {"sample.bmp", "other name"};
+};
+
+template <class Block>
+struct Case {
+    const PropertySpec<Block>& spec;
+    const Host<Block>& host;
+    Block fresh;  // the block before the property is set (a transform op has its kind)
+};
+
+// Sets the property to sample `i` in `block`; returns the file text of sample
+// 0 (as written) or sample 1 (as an edit writes it, other components kept).
+template <class Block>
+std::string set_sample(const PropertySpec<Block>& spec, Block& block, int i) {
+    const Samples s;
+    return with_member(spec, block, [&](auto& v) -> std::string {
+        using T = std::decay_t<decltype(v)>;
+        if constexpr (std::is_same_v<T, int>) {
+            v = s.whole[i];
+            return std::to_string(v);
+        } else if constexpr (std::is_same_v<T, double>) {
+            // The first two candidates in range and not the default.
+            const Block defaults{};
+            const double default_value = with_member(spec, defaults, [](const auto& d) {
+                if constexpr (std::is_same_v<std::decay_t<decltype(d)>, double>) return d;
+                return 0.0;
+            });
+            int found = 0;
+            bool set = false;
+            for (double candidate : s.number) {
+                if (candidate == default_value ||
+                    check_range(spec.range, candidate).verdict != RangeVerdict::inside)
+                    continue;
+                if (found++ == i) {
+                    v = candidate;
+                    set = true;
+                    break;
+                }
+            }
+            EXPECT_TRUE(set) << "no sample in the range of " << spec.name;
+            // Sample 0 as a file might write it: a trailing 0 the shortest text has not.
+            return i == 0 ? number_text(v) + "0" : number_text(v);
+        } else if constexpr (std::is_same_v<T, Vec3>) {
+            const bool colour = spec.kind == ValueKind::colour;
+            v = colour ? s.colour[i] : s.vector[i];
+            if (colour) return i == 0 ? s.colour_written : s.colour_edited;
+            return i == 0 ? s.vector_written : s.vector_edited;
+        } else {
+            v = s.string[i];
+            return string_text(v);
+        }
+    });
+}
+
+template <class Block>
+Scene parsed_with(const Case<Block>& c, std::string_view property) {
+    return parse_scene(with_property(c.host.text, property)).scene;
+}
+
+// Parses, serialises, reads back, edits in place (replaced and inserted).
+template <class Block>
+void check_round_trips(const Case<Block>& c) {
+    const std::string name(c.spec.name);
+    SCOPED_TRACE(name);
+    // The scene with the property set, built without the parser.
+    Scene expected = parse_scene(with_property(c.host.text, "")).scene;
+    if constexpr (std::is_same_v<Block, TransformOp>)
+        expected.primitives.at(0).transforms = {c.fresh};
+    Block& target = c.host.get(expected);
+    const std::string written = set_sample(c.spec, target, 0);
+
+    // Parses to exactly that scene.
+    const std::string text = with_property(c.host.text, name + ": " + written + ";");
+    ParseResult parsed = parse_scene(text);
+    EXPECT_EQ(brief(parsed.diagnostics), "") << text;
+    EXPECT_TRUE(parsed.scene == expected) << text;
+    ASSERT_EQ(parsed.source.properties.size(), 1u) << text;
+    EXPECT_EQ(parsed.source.properties[0].name, c.spec.name);
+
+    // Serialises as `name: value;` and reads back the same.
+    const std::string serialized = serialize_scene(expected);
+    EXPECT_NE(serialized.find(name + ": " + value_text(c.spec, target) + ";\n"), std::string::npos)
+        << serialized;
+    ParseResult again = parse_scene(serialized);
+    EXPECT_EQ(brief(again.diagnostics), "") << serialized;
+    EXPECT_TRUE(again.scene == expected) << serialized;
+
+    // Edits in place: only the value's bytes change, other components kept.
+    Scene edited = expected;
+    const std::string new_text = set_sample(c.spec, c.host.get(edited), 1);
+    SourceEditResult edit = apply_scene_edits(text, parsed.source, parsed.scene, edited);
+    EXPECT_TRUE(edit.ok()) << edit.error;
+    EXPECT_EQ(edit.values_changed, 1);
+    EXPECT_EQ(edit.text, with_property(c.host.text, name + ": " + new_text + ";"));
+    EXPECT_TRUE(parse_scene(edit.text).scene == edited) << edit.text;
+
+    // A property the file does not write yet is inserted into its block.
+    if constexpr (!std::is_same_v<Block, TransformOp>) {
+        const std::string bare = with_property(c.host.text, "");
+        ParseResult base = parse_scene(bare);
+        SourceEditResult insert = apply_scene_edits(bare, base.source, base.scene, expected);
+        EXPECT_TRUE(insert.ok()) << insert.error;
+        ParseResult inserted = parse_scene(insert.text);
+        EXPECT_EQ(brief(inserted.diagnostics), "") << insert.text;
+        EXPECT_TRUE(inserted.scene == expected) << insert.text;
+    }
+}
+
+// A value past each bound of the property's range, and the verdict the range gives it.
+struct Probe {
+    double value;
+    RangeVerdict verdict;
+    double clamped;
+};
+
+std::vector<Probe> probes(const ValueRange& r, ValueKind kind) {
+    const double step = kind == ValueKind::whole ? 1.0 : 0.5;
+    std::vector<Probe> out;
+    if (std::isfinite(r.low)) {
+        out.push_back({r.low_open ? r.low : r.low - step,
+                       r.clamp_low ? RangeVerdict::clamped : RangeVerdict::outside, r.low});
+        if (!r.low_open) out.push_back({r.low, RangeVerdict::inside, r.low});
+    }
+    if (std::isfinite(r.high)) {
+        out.push_back({r.high_open ? r.high : r.high + step,
+                       r.clamp_high ? RangeVerdict::clamped : RangeVerdict::outside, r.high});
+        if (!r.high_open) out.push_back({r.high, RangeVerdict::inside, r.high});
+    }
+    return out;
+}
+
+// A vector probe moves the first component only.
+Vec3 probe_vector(double x) {
+    return {x, 0.5, 0.5};
+}
+
+// The parser: one message at the value, the value rejected (left at its default)
+// or clamped; at an inclusive bound, no message.
+template <class Block>
+void check_parsed_ranges(const Case<Block>& c) {
+    const std::string name(c.spec.name);
+    SCOPED_TRACE(name);
+    const std::size_t column = c.host.text.find('@') + name.size() + 3;
+    auto expect_one = [&](const std::string& written, Severity severity,
+                          const std::string& message) {
+        const std::string text = with_property(c.host.text, name + ": " + written + ";");
+        const ParseResult r = parse_scene(text);
+        EXPECT_EQ(brief(r.diagnostics),
+                  "1:" + std::to_string(column) +
+                      (severity == Severity::error ? ": error: " : ": warning: ") + message)
+            << text;
+        return r;
+    };
+    const bool is_vector = c.spec.kind == ValueKind::vector || c.spec.kind == ValueKind::colour;
+    if (c.spec.range.nonzero) {
+        const ParseResult r =
+            expect_one("<0, 0, 0>", Severity::error, out_of_range_message(c.spec, "<0, 0, 0>"));
+        Scene bare = parsed_with(c, "");
+        EXPECT_TRUE(r.scene == bare) << "a rejected value leaves the default";
+    }
+    if (c.spec.range.nonempty) {
+        const ParseResult r = expect_one("\"\"", Severity::error, out_of_range_message(c.spec, ""));
+        EXPECT_TRUE(r.scene == parsed_with(c, "")) << "a rejected value leaves the default";
+    }
+    for (const Probe& p : probes(c.spec.range, c.spec.kind)) {
+        const std::string written =
+            is_vector ? vector_text(probe_vector(p.value)) : number_text(p.value);
+        const std::string clamped =
+            is_vector ? vector_text(probe_vector(p.clamped)) : number_text(p.clamped);
+        if (p.verdict == RangeVerdict::inside) {
+            EXPECT_EQ(brief(parse_scene(with_property(c.host.text, name + ": " + written + ";"))
+                                .diagnostics),
+                      "")
+                << written;
+        } else if (p.verdict == RangeVerdict::outside) {
+            const ParseResult r =
+                expect_one(written, Severity::error, out_of_range_message(c.spec, written));
+            EXPECT_TRUE(r.scene == parsed_with(c, "")) << "a rejected value leaves the default";
+        } else {
+            ParseResult r = expect_one(written, Severity::warning,
+                                       past_clamp_message(c.spec, written, clamped));
+            Scene expected = parsed_with(c, name + ": " + clamped + ";");
+            EXPECT_TRUE(r.scene == expected) << written << " is clamped to " << clamped;
+        }
+    }
+}
+
+// The validator, for values set in code: the same message, once, prefixed by the block.
+template <class Block>
+void check_validated_ranges(const Case<Block>& c) {
+    const std::string name(c.spec.name);
+    SCOPED_TRACE(name);
+    Scene base = parse_scene(kValid).scene;
+    ASSERT_EQ(brief(validate_scene(base, SceneSource{})), "");
+    auto errors_with = [&](auto value) {
+        Scene s = base;
+        Block& block = in_valid<Block>(s);
+        if constexpr (std::is_same_v<Block, TransformOp>) block = c.fresh;
+        with_member(c.spec, block, [&](auto& member) {
+            using M = std::decay_t<decltype(member)>;
+            using V = decltype(value);
+            if constexpr (std::is_same_v<M, V> ||
+                          (std::is_arithmetic_v<M> && std::is_arithmetic_v<V>))
+                member = static_cast<M>(value);
+        });
+        std::vector<Diagnostic> errors;
+        for (const Diagnostic& d : validate_scene(s, SceneSource{}))
+            if (d.severity == Severity::error) errors.push_back(d);
+        return errors;
+    };
+    auto expect_one = [&](auto value, const std::string& message) {
+        const std::vector<Diagnostic> errors = errors_with(value);
+        ASSERT_EQ(errors.size(), 1u) << brief(errors);
+        EXPECT_TRUE(errors[0].message.ends_with(": " + message) || errors[0].message == message)
+            << errors[0].message << "\nexpected to end with: " << message;
+    };
+    const bool is_vector = c.spec.kind == ValueKind::vector || c.spec.kind == ValueKind::colour;
+    if (c.spec.range.nonzero) expect_one(Vec3(0.0), out_of_range_message(c.spec, "<0, 0, 0>"));
+    if (c.spec.range.nonempty) expect_one(std::string(), out_of_range_message(c.spec, ""));
+    for (const Probe& p : probes(c.spec.range, c.spec.kind)) {
+        if (p.verdict == RangeVerdict::inside) continue;
+        const std::string got =
+            is_vector ? vector_text(probe_vector(p.value)) : number_text(p.value);
+        const std::string message = p.verdict == RangeVerdict::outside
+                                        ? out_of_range_message(c.spec, got)
+                                        : past_clamp_message(c.spec, got);
+        if (is_vector)
+            expect_one(probe_vector(p.value), message);
+        else
+            expect_one(p.value, message);
+    }
+    // Every number and vector must be finite.
+    const double nan = std::numeric_limits<double>::quiet_NaN();
+    if (c.spec.kind == ValueKind::number) expect_one(nan, "'" + name + "' must be finite, got nan");
+    if (is_vector)
+        expect_one(probe_vector(nan),
+                   "'" + name + "' must be finite, got " + vector_text(probe_vector(nan)));
+}
+
+TEST(Schema, EveryPropertyParsesSerialisesAndEditsInPlace) {
+    for (const PropertySpec<RenderSettings>& spec : schema_of<RenderSettings>().properties)
+        check_round_trips(Case<RenderSettings>{spec, kSettingsHost, {}});
+    for (const PropertySpec<Camera>& spec : schema_of<Camera>().properties)
+        check_round_trips(Case<Camera>{spec, kCameraHost, {}});
+    for (const PropertySpec<Sphere>& spec : schema_of<Sphere>().properties)
+        check_round_trips(Case<Sphere>{spec, kSphereHost, {}});
+    for (const PropertySpec<Plane>& spec : schema_of<Plane>().properties)
+        check_round_trips(Case<Plane>{spec, kPlaneHost, {}});
+    for (const PropertySpec<Cylinder>& spec : schema_of<Cylinder>().properties)
+        check_round_trips(Case<Cylinder>{spec, kCylinderHost, {}});
+    for (const PropertySpec<PointLight>& spec : schema_of<PointLight>().properties)
+        check_round_trips(Case<PointLight>{spec, kLightHost, {}});
+    for (const PropertySpec<Material>& spec : schema_of<Material>().properties)
+        check_round_trips(Case<Material>{spec, kMaterialHost, {}});
+    for (const TransformOpSpec& op : transform_ops())
+        check_round_trips(Case<TransformOp>{op.property, kTransformHost, TransformOp{op.kind}});
+}
+
+TEST(Schema, EveryRangeIsEnforcedOnceWithOneLocatedMessage) {
+    auto each = [](const auto& host, auto tag) {
+        using Block = decltype(tag);
+        for (const PropertySpec<Block>& spec : schema_of<Block>().properties) {
+            const Case<Block> c{spec, host, Block{}};
+            check_parsed_ranges(c);
+            check_validated_ranges(c);
+        }
+    };
+    each(kSettingsHost, RenderSettings{});
+    each(kCameraHost, Camera{});
+    each(kSphereHost, Sphere{});
+    each(kPlaneHost, Plane{});
+    each(kCylinderHost, Cylinder{});
+    each(kLightHost, PointLight{});
+    each(kMaterialHost, Material{});
+    for (const TransformOpSpec& op : transform_ops()) {
+        const Case<TransformOp> c{op.property, kTransformHost, TransformOp{op.kind}};
+        check_parsed_ranges(c);
+        check_validated_ranges(c);
+    }
+}
+
+// The messages the table's ranges give, as users read them.
+TEST(Schema, RangeRulesReadAsSentences) {
+    EXPECT_EQ(range_rule({.low = 0, .high = kMaxImageSide}, ValueKind::whole),
+              "must be a whole number from 0 to 65535");
+    EXPECT_EQ(range_rule({.low = 0, .low_open = true}, ValueKind::number),
+              "must be greater than 0");
+    EXPECT_EQ(range_rule({.low = 0, .high = 180, .low_open = true, .high_open = true},
+                         ValueKind::number, "degrees"),
+              "must be between 0 and 180 degrees (exclusive)");
+    EXPECT_EQ(range_rule({.low = 0, .high = 256, .clamp_high = true}, ValueKind::whole),
+              "must be 0 or more");
+    EXPECT_EQ(range_rule({.low = 0, .high = 1}, ValueKind::number), "must be from 0 to 1");
+    EXPECT_EQ(range_rule({.high = 2}, ValueKind::number), "must be 2 or less");
+    EXPECT_EQ(range_rule({.high = 2, .high_open = true}, ValueKind::number), "must be less than 2");
+    EXPECT_EQ(range_rule({}, ValueKind::vector), "must be finite");
+}
+
+}  // namespace
+}  // namespace jt
