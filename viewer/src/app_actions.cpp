@@ -1,6 +1,7 @@
 #include "app_actions.hpp"
 
 #include "image_files.hpp"
+#include "jtracer/limits.hpp"
 #include "jtracer/validate.hpp"
 
 #include <algorithm>
@@ -320,7 +321,7 @@ std::optional<RenderRequest> render_request(const AppState& state, std::string& 
                std::to_string(request.options.height) + ")";
         return std::nullopt;
     }
-    request.options.samples = std::clamp(settings.samples, 1, 1024);
+    request.options.samples = std::clamp(settings.samples, kMinSamples, kMaxSamples);
     request.options.threads = state.config.render_threads;
     request.options.previews = true;
     // The frames come first: a frame drawn late is a late picture however fast

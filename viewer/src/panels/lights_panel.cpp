@@ -1,5 +1,5 @@
 #include "panels/panels.hpp"
-#include "panels/widgets.hpp"
+#include "panels/property_fields.hpp"
 
 #include <imgui.h>
 
@@ -15,8 +15,7 @@ void lights_panel(AppState& state) {
         ImGui::PushID(static_cast<int>(i));
         const std::string label = "point_light " + std::to_string(i + 1);
         if (ImGui::TreeNode(label.c_str())) {
-            edit_vector("position", lights[i].position);
-            edit_colour("intensity", lights[i].intensity);
+            edit_properties(lights[i]);
             ImGui::TreePop();
         }
         ImGui::PopID();

@@ -1,0 +1,60 @@
+#pragma once
+// Edit fields for a block's properties, read from the schema (jtracer/schema.hpp):
+// one field per number, vector and colour property, labelled with its name in
+// the file and held to the language's range, in the schema's order. A
+// property added to the schema gets its field here without a line of panel
+// code. Strings (names, the filename) have no field.
+
+#include "jtracer/schema.hpp"
+#include "panels/widgets.hpp"
+
+#include <type_traits>
+
+namespace jt::view {
+
+// The widget bounds for a range: an open bound moves inside by a small step
+// (radius > 0 stops at 0.0001); an infinite one is no bound.
+struct FieldBounds {
+    double min = 0.0;
+    double max = 0.0;  // max <= min: unbounded
+};
+FieldBounds field_bounds(const ValueRange& range);
+
+// Drag speed per pixel: a 200th of a bounded range, half a degree for angles,
+// else 1% of the value's size (at least 0.01).
+float field_speed(const ValueRange& range, std::string_view unit, double size);
+
+// The field for one property of `block`; true when the user changed it.
+template <class Block>
+bool edit_property(const PropertySpec<Block>& property, Block& block) {
+    // Names in the tables are string literals, so data() ends in a NUL.
+    const char* label = property.name.data();
+    return with_member(property, block, [&](auto& value) {
+        using T = std::decay_t<decltype(value)>;
+        const FieldBounds bounds = field_bounds(property.range);
+        if constexpr (std::is_same_v<T, int>) {
+            return edit_int(label, value, static_cast<int>(bounds.min),
+                            static_cast<int>(bounds.max));
+        } else if constexpr (std::is_same_v<T, double>) {
+            return edit_number(label, value, field_speed(property.range, property.unit, value),
+                               bounds.min, bounds.max);
+        } else if constexpr (std::is_same_v<T, Vec3>) {
+            if (property.kind == ValueKind::colour) return edit_colour(label, value);
+            const double size = std::max({std::abs(value.x), std::abs(value.y), std::abs(value.z)});
+            return edit_vector(label, value, field_speed(property.range, property.unit, size));
+        } else {
+            return false;
+        }
+    });
+}
+
+// Every property of the block that has a field; true when any changed.
+template <class Block>
+bool edit_properties(Block& block) {
+    bool changed = false;
+    for (const PropertySpec<Block>& property : schema_of<Block>().properties)
+        changed = edit_property(property, block) || changed;
+    return changed;
+}
+
+}  // namespace jt::view
