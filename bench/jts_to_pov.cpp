@@ -98,17 +98,19 @@ void write_matrix(PovWriter& out, const jt::Affine& world) {
 }
 
 void write_primitive(PovWriter& out, const jt::Primitive& p) {
-    jt::Affine world = jt::compose_transforms(p.transforms);
-    if (!p.transforms.empty() && !jt::invert(world)) return;  // flattened: JTracer leaves it out
+    // JTracer's own rule decides which primitives are left out.
+    const auto placed = jt::object_transform(p.transforms);
+    if (std::holds_alternative<jt::LeftOut>(placed)) return;
+    const jt::Affine& world = std::get<jt::ObjectTransform>(placed).to_world;
     // Planes and spheres are written mirrored and then moved by the mirrored
     // map; the map of an untransformed primitive is the identity and is left out.
     if (const auto* sphere = std::get_if<jt::Sphere>(&p.shape)) {
         out.vector("sphere { ", mirror(sphere->center));
         out.printf(", %.9g", sphere->radius);
     } else if (const auto* plane = std::get_if<jt::Plane>(&p.shape)) {
-        double length = glm::length(plane->normal);
-        if (!(length > 0.0)) return;
-        out.vector("plane { ", mirror(plane->normal / length));
+        auto normal = jt::unit_length(plane->normal);
+        if (!normal) return;
+        out.vector("plane { ", mirror(*normal));
         out.printf(", %.9g", plane->distance);
     } else if (const auto* cylinder = std::get_if<jt::Cylinder>(&p.shape)) {
         out.printf("cylinder { <0, 0, 0>, <0, %.9g, 0>, %.9g", cylinder->height, cylinder->radius);

@@ -9,8 +9,11 @@
 
 #include <gtest/gtest.h>
 #include <glm/geometric.hpp>
+#include <glm/matrix.hpp>
 
+#include <limits>
 #include <random>
+#include <string>
 
 namespace jt::test {
 namespace {
@@ -36,18 +39,81 @@ TEST(Affine, RightHandRotationsAndWrittenOrder) {
     expect_near(apply_point(m, {0, 1.5, 0}), {-2, 0, 0});
 }
 
+// The reason object_transform gives for leaving a list out, or "renders".
+std::string verdict(const std::vector<TransformOp>& ops) {
+    const auto placed = object_transform(ops);
+    const auto* out = std::get_if<LeftOut>(&placed);
+    if (!out) return "renders";
+    return (out->reason == LeftOut::Reason::zero_scale ? "zero scale at " : "out of range at ") +
+           std::to_string(out->op);
+}
+
 TEST(Affine, InverseAndDegenerateMaps) {
-    Affine m = compose_transforms(
-        {scale({2, 3, 4}), rotate(TransformKind::xrotate, 33), translate({1, 2, 3})});
-    auto inverse = invert(m);
-    ASSERT_TRUE(inverse);
-    expect_near(apply_point(inverse->inverse, apply_point(m, {0.3, -0.7, 2})), {0.3, -0.7, 2});
-    EXPECT_FALSE(invert(compose_transforms({scale({1, 0, 1})})));
-    EXPECT_FALSE(invert(compose_transforms({translate({std::nan(""), 0, 0})})));
-    EXPECT_FALSE(invert(compose_transforms({scale({1e300, 1e300, 1e300}), scale({1e300, 1, 1})})));
+    const std::vector<TransformOp> ops = {scale({2, 3, 4}), rotate(TransformKind::xrotate, 33),
+                                          translate({1, 2, 3})};
+    auto placed = object_transform(ops);
+    ASSERT_TRUE(std::holds_alternative<ObjectTransform>(placed));
+    const ObjectTransform& m = std::get<ObjectTransform>(placed);
+    expect_near(apply_point(m.to_object, apply_point(m.to_world, {0.3, -0.7, 2})), {0.3, -0.7, 2});
+    EXPECT_EQ(m.to_world.linear, compose_transforms(ops).linear);
+    EXPECT_EQ(m.normal_matrix, glm::transpose(m.to_object.linear));
     EXPECT_TRUE(similarity_scale(
         compose_transforms({rotate(TransformKind::yrotate, 17), scale({3, 3, 3})}).linear));
     EXPECT_FALSE(similarity_scale(compose_transforms({scale({3, 3, 2})}).linear));
+}
+
+// A zero scale component leaves the primitive out wherever it stands in the
+// list: a rotation after it rounds the composed determinant to about 1e-17, not
+// 0, so no test on the composed matrix can decide it.
+TEST(Affine, ZeroScaleLeavesOutWhateverSurroundsIt) {
+    const TransformOp y150 = rotate(TransformKind::yrotate, 150);
+    const TransformOp y60 = rotate(TransformKind::yrotate, 60);
+    EXPECT_EQ(verdict({y150, scale({0, 1, 1}), y60}), "zero scale at 1");
+    EXPECT_NE(glm::determinant(compose_transforms({y150, scale({0, 1, 1}), y60}).linear), 0.0)
+        << "the case the rule exists for";
+    EXPECT_EQ(verdict({scale({1, 1, 0})}), "zero scale at 0");
+    EXPECT_EQ(verdict({translate({1, 2, 3}), scale({1, 0, 1}), translate({0, 1, 0})}),
+              "zero scale at 1");
+    EXPECT_EQ(verdict({scale({-0.0, 2, 2}), scale({0, 0, 0})}), "zero scale at 0");
+    // A zero scale decides before any overflow.
+    EXPECT_EQ(verdict({scale(Vec3(1e300)), scale(Vec3(1e300)), scale({1, 1, 0})}),
+              "zero scale at 2");
+    EXPECT_EQ(verdict({}), "renders");
+    EXPECT_EQ(verdict({scale({1e-3, 1e3, 1}), y60}), "renders");
+}
+
+// Magnitudes past the doubles: the op where the map or its inverse first
+// stops being finite. Tiny scales stay exact however flat they make the map.
+TEST(Affine, MapsLeavingTheDoublesAreLeftOut) {
+    EXPECT_EQ(verdict({scale(Vec3(1e300)), scale({1e300, 1, 1})}), "out of range at 1");
+    EXPECT_EQ(verdict({scale(Vec3(1e-200)), scale(Vec3(1e-200))}), "out of range at 1");
+    EXPECT_EQ(verdict({translate({1e308, 0, 0}), translate({1e308, 0, 0})}), "out of range at 1");
+    EXPECT_EQ(verdict({translate({std::nan(""), 0, 0})}), "out of range at 0");
+    EXPECT_EQ(verdict({scale({1e-310, 1, 1})}), "out of range at 0") << "1/s overflows";
+    // det = 1e-300: the old determinant test was right here, but a product of
+    // two such lists would have rounded to 0.
+    const std::vector<TransformOp> flat = {scale({1e-100, 1e-100, 1e-100}),
+                                           rotate(TransformKind::zrotate, 30)};
+    auto placed = object_transform(flat);
+    ASSERT_TRUE(std::holds_alternative<ObjectTransform>(placed));
+    const ObjectTransform& m = std::get<ObjectTransform>(placed);
+    expect_near(1e-100 * apply_point(m.to_object, apply_point(m.to_world, {0.3, -0.7, 2})),
+                1e-100 * Vec3(0.3, -0.7, 2), 1e-112);
+}
+
+TEST(Affine, UnitLengthOfTinyAndHugeVectors) {
+    EXPECT_EQ(unit_length({0, 2, 0}), Vec3(0, 1, 0));
+    ASSERT_TRUE(unit_length({3e-200, 0, 4e-200})) << "the squares underflow";
+    expect_near(*unit_length({3e-200, 0, 4e-200}), {0.6, 0, 0.8}, 1e-15);
+    EXPECT_EQ(unit_length({0, 0, 5e-324}), Vec3(0, 0, 1)) << "the smallest double";
+    ASSERT_TRUE(unit_length({-3e200, 4e200, 0})) << "the squares overflow";
+    expect_near(*unit_length({-3e200, 4e200, 0}), {-0.6, 0.8, 0}, 1e-15);
+    EXPECT_FALSE(unit_length({0, 0, 0}));
+    EXPECT_FALSE(unit_length({1, std::nan(""), 0}));
+    EXPECT_FALSE(unit_length({std::numeric_limits<double>::infinity(), 0, 0}));
+    // In the ordinary range it is exactly v / |v|, as before.
+    const Vec3 v(0.3, -1.7, 2.9);
+    EXPECT_EQ(unit_length(v), v / glm::length(v));
 }
 
 TEST(Intersect, SphereStaysPreciseFromFarAway) {

@@ -35,9 +35,10 @@ namespace jt {
 
 struct PreparedScene;  // defined in the core's private headers
 
-// Builds the render-ready scene. Primitives whose transform is degenerate (a
-// zero scale component, a non-finite matrix) are left out; the validator has
-// already warned about them with their location.
+// Builds the render-ready scene. Primitives whose transform list has a scale
+// with a zero component, or leaves the range of doubles, are left out (one rule,
+// geometry/affine.hpp's object_transform); the validator warns about them with
+// their location.
 //
 // `previous` may be a scene prepared earlier: when the geometry of `scene`
 // (shapes and transforms) equals the previous scene's, its acceleration

@@ -16,8 +16,9 @@ namespace jt {
 // a camera whose look_at equals its position or whose up is parallel to its
 // view direction; values out of their allowed range (for scenes built in code).
 // Warnings: a camera aspect differing from width/height by over 1%; an
-// active_camera naming no camera; a transform scale with a zero component
-// (the primitive is left out); no scene block.
+// active_camera naming no camera; a transform that leaves its primitive out (a
+// scale with a zero component anywhere in the list, or magnitudes past the
+// range of doubles: the renderer's own rule); no scene block.
 // Each is located at the property or block concerned when `source` has it,
 // at line 0 otherwise. `source` may be empty (a scene built in code).
 std::vector<Diagnostic> validate_scene(const Scene& scene, const SceneSource& source);

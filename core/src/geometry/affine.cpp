@@ -1,7 +1,9 @@
 #include "geometry/affine.hpp"
 
+#include <glm/geometric.hpp>
 #include <glm/matrix.hpp>
 
+#include <algorithm>
 #include <cmath>
 #include <numbers>
 
@@ -89,18 +91,65 @@ Affine compose_transforms(const std::vector<TransformOp>& ops) {
     return m;
 }
 
-std::optional<AffineInverse> invert(const Affine& a) {
-    if (!all_finite(a.linear) || !all_finite(a.translation)) return std::nullopt;
-    double det = glm::determinant(a.linear);
-    if (!(std::abs(det) > 0.0) || !std::isfinite(det)) return std::nullopt;
-    glm::dmat3 inv = glm::inverse(a.linear);
-    if (!all_finite(inv)) return std::nullopt;
-    AffineInverse result;
-    result.inverse.linear = inv;
-    result.inverse.translation = -(inv * a.translation);
-    result.normal_matrix = glm::transpose(inv);
-    if (!all_finite(result.inverse.translation)) return std::nullopt;
-    return result;
+bool flattens(const TransformOp& op) {
+    return op.kind == TransformKind::scale &&
+           (op.vector.x == 0.0 || op.vector.y == 0.0 || op.vector.z == 0.0);
+}
+
+namespace {
+
+// The map undoing `op`, exact up to one rounding an entry.
+Affine inverse_of(const TransformOp& op) {
+    Affine a;
+    switch (op.kind) {
+        case TransformKind::translate:
+            a.translation = -op.vector;
+            break;
+        case TransformKind::scale:
+            a.linear = glm::dmat3(1.0 / op.vector.x, 0, 0, 0, 1.0 / op.vector.y, 0, 0, 0,
+                                  1.0 / op.vector.z);
+            break;
+        case TransformKind::xrotate:
+        case TransformKind::yrotate:
+        case TransformKind::zrotate:
+            a.linear = glm::transpose(affine_of(op).linear);
+            break;
+    }
+    return a;
+}
+
+bool all_finite(const Affine& a) {
+    return all_finite(a.linear) && all_finite(a.translation);
+}
+
+}  // namespace
+
+std::variant<ObjectTransform, LeftOut> object_transform(const std::vector<TransformOp>& ops) {
+    for (std::size_t k = 0; k < ops.size(); ++k)
+        if (flattens(ops[k])) return LeftOut{LeftOut::Reason::zero_scale, k};
+    ObjectTransform m;
+    for (std::size_t k = 0; k < ops.size(); ++k) {
+        m.to_world = then(m.to_world, affine_of(ops[k]));
+        m.to_object = then(inverse_of(ops[k]), m.to_object);
+        if (!all_finite(m.to_world) || !all_finite(m.to_object))
+            return LeftOut{LeftOut::Reason::out_of_range, k};
+    }
+    m.normal_matrix = glm::transpose(m.to_object.linear);
+    return m;
+}
+
+std::optional<Vec3> unit_length(const Vec3& v) {
+    if (!all_finite(v)) return std::nullopt;
+    // In this range no square of a component leaves the normal doubles by
+    // more than the rounding of the sum can show.
+    double length = glm::length(v);
+    if (length > 1e-150 && length < 1e150) return v / length;
+    double largest = std::max({std::abs(v.x), std::abs(v.y), std::abs(v.z)});
+    if (!(largest > 0.0)) return std::nullopt;
+    // Scaling by a power of two is exact: the largest component becomes 1..2.
+    const int exponent = std::ilogb(largest);
+    Vec3 w(std::scalbn(v.x, -exponent), std::scalbn(v.y, -exponent), std::scalbn(v.z, -exponent));
+    return w / glm::length(w);
 }
 
 std::optional<double> similarity_scale(const glm::dmat3& linear) {

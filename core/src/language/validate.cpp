@@ -1,5 +1,6 @@
 #include "jtracer/validate.hpp"
 
+#include "geometry/affine.hpp"
 #include "jtracer/schema.hpp"
 #include "jtracer/value_text.hpp"
 
@@ -185,16 +186,25 @@ class Validator {
         return block->keyword_span.pos;
     }
 
+    // The renderer leaves out exactly the primitives geometry/affine.hpp's rule
+    // does; the warning names the op that decides it.
     void check_transforms(const Primitive& p, const BlockSource* block) {
-        for (std::size_t k = 0; k < p.transforms.size(); ++k) {
-            const TransformOp& op = p.transforms[k];
-            if (op.kind == TransformKind::scale &&
-                (op.vector.x == 0.0 || op.vector.y == 0.0 || op.vector.z == 0.0)) {
-                warning(op_position(block, k),
-                        "'scale' " + vector_text(op.vector) +
-                            " has a zero component: it flattens the primitive to nothing; it is "
-                            "left out");
-            }
+        if (p.transforms.empty()) return;
+        const auto placed = object_transform(p.transforms);
+        const auto* left_out = std::get_if<LeftOut>(&placed);
+        if (!left_out) return;
+        const SourcePos pos = op_position(block, left_out->op);
+        switch (left_out->reason) {
+            case LeftOut::Reason::zero_scale:
+                warning(pos, "'scale' " + vector_text(p.transforms[left_out->op].vector) +
+                                 " has a zero component: it flattens the primitive to nothing; "
+                                 "it is left out");
+                break;
+            case LeftOut::Reason::out_of_range:
+                warning(pos,
+                        "the transform leaves the range of double precision here "
+                        "(magnitudes past about 1e308): the primitive is left out");
+                break;
         }
     }
 

@@ -29,66 +29,59 @@ constexpr std::size_t fast_build_threshold = 500000;
 // walking a BVH: on the showcase (6 shapes) that halves the time a ray.
 constexpr std::size_t brute_force_limit = 8;
 
-void add_sphere(Geometry& g, const Sphere& sphere, const Affine& to_world, bool identity,
+void add_sphere(Geometry& g, const Sphere& sphere, const ObjectTransform* transform,
                 std::uint32_t source) {
     if (!finite(sphere.center) || !(sphere.radius > 0.0) || !std::isfinite(sphere.radius)) return;
-    if (identity) {
+    if (!transform) {
         g.spheres.push_back({sphere.center, sphere.radius, source});
         return;
     }
-    auto inverse = invert(to_world);
-    if (!inverse) return;
     // A rotation times a uniform scale keeps a sphere a sphere: trace it as one.
-    if (auto scale = similarity_scale(to_world.linear)) {
-        g.spheres.push_back({apply_point(to_world, sphere.center), sphere.radius * *scale, source});
+    if (auto scale = similarity_scale(transform->to_world.linear)) {
+        g.spheres.push_back(
+            {apply_point(transform->to_world, sphere.center), sphere.radius * *scale, source});
         return;
     }
     TransformedShape s;
-    s.to_object = inverse->inverse;
-    s.normal_matrix = inverse->normal_matrix;
+    s.to_object = transform->to_object;
+    s.normal_matrix = transform->normal_matrix;
     s.center = sphere.center;
     s.radius = sphere.radius;
     s.kind = ShapeKind::sphere;
     s.source = source;
-    s.bounds =
-        padded_float_bounds(transformed_sphere_box(sphere.center, sphere.radius, to_world), 0.0);
+    s.bounds = padded_float_bounds(
+        transformed_sphere_box(sphere.center, sphere.radius, transform->to_world), 0.0);
     g.shapes.push_back(s);
 }
 
-void add_cylinder(Geometry& g, const Cylinder& cylinder, const Affine& to_world,
+void add_cylinder(Geometry& g, const Cylinder& cylinder, const ObjectTransform& transform,
                   std::uint32_t source) {
     if (!(cylinder.radius > 0.0) || !(cylinder.height > 0.0) || !std::isfinite(cylinder.radius) ||
         !std::isfinite(cylinder.height))
         return;
-    auto inverse = invert(to_world);
-    if (!inverse) return;
     TransformedShape s;
-    s.to_object = inverse->inverse;
-    s.normal_matrix = inverse->normal_matrix;
+    s.to_object = transform.to_object;
+    s.normal_matrix = transform.normal_matrix;
     s.radius = cylinder.radius;
     s.height = cylinder.height;
     s.kind = ShapeKind::cylinder;
     s.source = source;
     s.bounds = padded_float_bounds(
-        transformed_cylinder_box(cylinder.radius, cylinder.height, to_world), 0.0);
+        transformed_cylinder_box(cylinder.radius, cylinder.height, transform.to_world), 0.0);
     g.shapes.push_back(s);
 }
 
 // A plane stays a plane under any invertible affine map: move it to world space
 // once, so that it costs one dot product a ray.
-void add_plane(Geometry& g, const Plane& plane, const Affine& to_world, std::uint32_t source) {
-    double length = glm::length(plane.normal);
-    if (!(length > 0.0) || !std::isfinite(length) || !std::isfinite(plane.distance)) return;
-    Vec3 n = plane.normal / length;
-    auto inverse = invert(to_world);
-    if (!inverse) return;
-    Vec3 world_normal = inverse->normal_matrix * n;
-    double world_length = glm::length(world_normal);
-    if (!(world_length > 0.0) || !std::isfinite(world_length)) return;
-    world_normal /= world_length;
-    double distance = glm::dot(world_normal, apply_point(to_world, n * plane.distance));
+void add_plane(Geometry& g, const Plane& plane, const ObjectTransform& transform,
+               std::uint32_t source) {
+    auto n = unit_length(plane.normal);
+    if (!n || !std::isfinite(plane.distance)) return;
+    auto world_normal = unit_length(transform.normal_matrix * *n);
+    if (!world_normal) return;
+    double distance = glm::dot(*world_normal, apply_point(transform.to_world, *n * plane.distance));
     if (!std::isfinite(distance)) return;
-    g.planes.push_back({world_normal, distance, source});
+    g.planes.push_back({*world_normal, distance, source});
 }
 
 template <typename Intersect, typename Occluded, typename Bounds>
@@ -141,14 +134,20 @@ std::shared_ptr<const Geometry> build_geometry(const Scene& scene, const Geometr
     g->spheres.reserve(scene.primitives.size());
     for (std::size_t i = 0; i < scene.primitives.size(); ++i) {
         const Primitive& p = scene.primitives[i];
-        Affine to_world = compose_transforms(p.transforms);
+        // Primitives the transform rule leaves out never reach the geometry.
+        ObjectTransform transform;
+        if (!p.transforms.empty()) {
+            auto placed = object_transform(p.transforms);
+            if (std::holds_alternative<LeftOut>(placed)) continue;
+            transform = std::get<ObjectTransform>(placed);
+        }
         auto source = static_cast<std::uint32_t>(i);
         if (const auto* sphere = std::get_if<Sphere>(&p.shape))
-            add_sphere(*g, *sphere, to_world, p.transforms.empty(), source);
+            add_sphere(*g, *sphere, p.transforms.empty() ? nullptr : &transform, source);
         else if (const auto* cylinder = std::get_if<Cylinder>(&p.shape))
-            add_cylinder(*g, *cylinder, to_world, source);
+            add_cylinder(*g, *cylinder, transform, source);
         else if (const auto* plane = std::get_if<Plane>(&p.shape))
-            add_plane(*g, *plane, to_world, source);
+            add_plane(*g, *plane, transform, source);
     }
     std::size_t bounded = g->spheres.size() + g->shapes.size();
     if (bounded <= brute_force_limit) {
