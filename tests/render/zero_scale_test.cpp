@@ -178,6 +178,29 @@ TEST(ZeroScale, LeftOutUnderTheBvh) {
     for (const Case& c : cases()) expect_left_out(c, true);
 }
 
+// One warning at each zero scale of a primitive; a list whose magnitudes leave
+// the doubles is left out too, warned at the op where that happens.
+TEST(ZeroScale, WarningsSayWhichOpLeavesThePrimitiveOut) {
+    const std::string two = scene_text(
+        "  sphere { transform { scale: <0, 1, 1>; yrotate: 30; } transform { scale: <1, 1, -0>; "
+        "} }\n",
+        false);
+    EXPECT_EQ(zero_scale_warnings(parse_and_validate(two).diagnostics),
+              (std::vector<std::string>{position_of(two, "scale: <0"),
+                                        position_of(two, "scale: <1, 1, -0")}));
+    const std::string huge = scene_text(
+        "  sphere { transform { scale: <1e200, 1e200, 1e200>; zrotate: 20; scale: <1e200, 1, 1>; "
+        "} }\n",
+        false);
+    Parsed p = parse_and_validate(huge);
+    std::vector<std::string> warned;
+    for (const Diagnostic& d : p.diagnostics)
+        if (d.message.find("range of double precision") != std::string::npos)
+            warned.push_back(std::to_string(d.pos.line) + ":" + std::to_string(d.pos.column));
+    EXPECT_EQ(warned, std::vector<std::string>{position_of(huge, "scale: <1e200, 1,")});
+    EXPECT_EQ(render(p.scene), render_text(scene_text("", false)));
+}
+
 // The viewer's panels edit the Scene and prepare it again from the previous
 // preparation: a scale component dragged to 0 leaves the primitive out by the
 // same rule, and dragged back brings it back.

@@ -387,6 +387,27 @@ TEST_F(ViewerGl, OpeningAMissingFileExplainsAndKeepsWhatIsOpen) {
     EXPECT_EQ(state.display, good);
 }
 
+// A scale component dragged to 0 in the transform panel leaves the primitive
+// out by the core's one rule, even with a rotation after it (whose rounding
+// once kept it in as speckles): the viewer shows the scene without it.
+TEST_F(ViewerGl, ScaleEditedToZeroLeavesThePrimitiveOut) {
+    open_scene(state, kScene);
+    ASSERT_TRUE(viewer.run_until_complete(state, kTimeout));
+    edit_scene(state, [](Scene& s) {
+        s.primitives[1].transforms = {{TransformKind::yrotate, Vec3(0.0), 150.0},
+                                      {TransformKind::scale, Vec3(1.0), 0.0},
+                                      {TransformKind::yrotate, Vec3(0.0), 60.0}};
+    });
+    ASSERT_TRUE(viewer.run_until_complete(state, kTimeout));
+    const Image8 shown = state.display;
+    edit_scene(state, [](Scene& s) { s.primitives[1].transforms[1].vector.x = 0.0; });
+    ASSERT_TRUE(viewer.run_until_complete(state, kTimeout));
+    Scene without = state.doc.scene;
+    without.primitives.erase(without.primitives.begin() + 1);
+    EXPECT_EQ(state.display, core_render(without, 0));
+    EXPECT_NE(state.display, shown);
+}
+
 TEST_F(ViewerGl, EscapeAsksToQuit) {
     open_scene(state, kScene);
     viewer.press_key(state, keys::escape);

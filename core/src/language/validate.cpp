@@ -187,25 +187,24 @@ class Validator {
     }
 
     // The renderer leaves out exactly the primitives geometry/affine.hpp's rule
-    // does; the warning names the op that decides it.
+    // does: a warning at each zero scale, else at the op that leaves the doubles.
     void check_transforms(const Primitive& p, const BlockSource* block) {
         if (p.transforms.empty()) return;
-        const auto placed = object_transform(p.transforms);
-        const auto* left_out = std::get_if<LeftOut>(&placed);
-        if (!left_out) return;
-        const SourcePos pos = op_position(block, left_out->op);
-        switch (left_out->reason) {
-            case LeftOut::Reason::zero_scale:
-                warning(pos, "'scale' " + vector_text(p.transforms[left_out->op].vector) +
-                                 " has a zero component: it flattens the primitive to nothing; "
-                                 "it is left out");
-                break;
-            case LeftOut::Reason::out_of_range:
-                warning(pos,
-                        "the transform leaves the range of double precision here "
-                        "(magnitudes past about 1e308): the primitive is left out");
-                break;
+        bool flattened = false;
+        for (std::size_t k = 0; k < p.transforms.size(); ++k) {
+            if (!flattens(p.transforms[k])) continue;
+            flattened = true;
+            warning(op_position(block, k),
+                    "'scale' " + vector_text(p.transforms[k].vector) +
+                        " has a zero component: it flattens the primitive to nothing; it is left "
+                        "out");
         }
+        if (flattened) return;
+        const auto placed = object_transform(p.transforms);
+        if (const auto* left_out = std::get_if<LeftOut>(&placed))
+            warning(op_position(block, left_out->op),
+                    "the transform leaves the range of double precision here (magnitudes past "
+                    "about 1e308): the primitive is left out");
     }
 
     void check_lights() {
