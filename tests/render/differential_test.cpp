@@ -154,7 +154,7 @@ SeedResult check_seed(std::uint64_t seed) {
     options.width = scene.settings.width;
     options.height = scene.settings.height;
     options.camera = active_camera_index(scene);
-    const Image8 core = render_image(prepare_scene(scene), options);
+    const Image8 core = render_image(prepare_scene(scene).value(), options);
     const reference::ReferenceImage ref = reference::render(generated.scene);
     const Comparison c = compare(core, ref);
     result.pixels = core.width * core.height;
@@ -204,8 +204,8 @@ TEST(Differential, ACoreThatShadesDifferentlyIsCaught) {
         options.width = scene.settings.width;
         options.height = scene.settings.height;
         options.camera = active_camera_index(scene);
-        const Image8 core = render_image(prepare_scene(scene), options);
-        if (core == render_image(prepare_scene(generated.scene), options)) continue;
+        const Image8 core = render_image(prepare_scene(scene).value(), options);
+        if (core == render_image(prepare_scene(generated.scene).value(), options)) continue;
         const Comparison c = compare(core, reference::render(generated.scene));
         EXPECT_GT(c.mismatched + c.out_of_range, 0) << "seed " << seed;
         return;

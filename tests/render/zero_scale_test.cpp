@@ -212,7 +212,7 @@ TEST(ZeroScale, AnEditToZeroIsLeftOutLikeTheText) {
         RenderOptions options;
         options.width = shown.scene.settings.width;
         options.height = shown.scene.settings.height;
-        auto first = prepare_scene(shown.scene);
+        auto first = prepare_scene(shown.scene).value();
         const Image8 before = render_image(first, options);
 
         Scene edited = shown.scene;
@@ -220,11 +220,11 @@ TEST(ZeroScale, AnEditToZeroIsLeftOutLikeTheText) {
         ASSERT_EQ(op.kind, TransformKind::scale);
         op.vector.x = 0.0;
         EXPECT_EQ(zero_scale_warnings(validate_scene(edited, SceneSource{})).size(), 1u);
-        auto second = prepare_scene(edited, first);
+        auto second = prepare_scene(edited, first).value();
         EXPECT_EQ(render_image(second, options), render(without.scene)) << crowd;
 
         op.vector.x = 1.3;
-        EXPECT_EQ(render_image(prepare_scene(edited, second), options), before) << crowd;
+        EXPECT_EQ(render_image(prepare_scene(edited, second).value(), options), before) << crowd;
     }
 }
 
