@@ -1,5 +1,5 @@
 #pragma once
-// An independent, deliberately plain renderer of SEMANTICS.md sections 4-6, for
+// An independent, deliberately plain renderer of docs/language.md sections 5-8, for
 // the differential test: one ray through each pixel centre, every ray tested
 // against every primitive in that primitive's own object space, in double
 // precision; no acceleration structure, no tables, no tiles, no code shared
@@ -100,7 +100,7 @@ inline Map to_object(const std::vector<TransformOp>& ops) {
     return m;
 }
 
-// SEMANTICS.md 4: a scale with a zero component leaves the primitive out.
+// docs/language.md §5.5: a scale with a zero component leaves the primitive out.
 inline bool flattened(const std::vector<TransformOp>& ops) {
     for (const TransformOp& op : ops)
         if (op.kind == TransformKind::scale &&
@@ -331,7 +331,7 @@ class Tracer {
         return any;
     }
 
-    // SEMANTICS.md 6. `lifted`: secondary rays start 1e-7 of the magnitude off
+    // docs/language.md §8.5. `lifted`: secondary rays start 1e-7 of the magnitude off
     // the surface and meet every surface, their own included.
     Colour trace(const Vec3& o, const Vec3& d, int depth, const Origin& from, double magnitude,
                  bool lifted, Flags& flags) const {
@@ -375,7 +375,7 @@ class Tracer {
     std::vector<Placed> placed_;
 };
 
-// The camera SEMANTICS.md 3 says renders: the one named by active_camera, else the first.
+// The camera docs/language.md §7.1 says renders: the one named by active_camera, else the first.
 inline int active_camera(const Scene& scene) {
     for (std::size_t i = 0; i < scene.cameras.size(); ++i)
         if (!scene.settings.active_camera.empty() &&

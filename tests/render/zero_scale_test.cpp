@@ -1,5 +1,5 @@
 // A primitive whose transform list holds a `scale` with a zero component is
-// left out whatever comes before or after it (SEMANTICS.md 4): its scene
+// left out whatever comes before or after it (docs/language.md §5.5): its scene
 // renders byte for byte as the same scene without it, through the whole core
 // path (text -> parse -> validate -> prepare -> render), and the validator
 // warns at that scale. The same primitive with the zero made 1 must show, so

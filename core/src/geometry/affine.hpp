@@ -56,7 +56,7 @@ struct LeftOut {
 // Whether this op is a `scale` with a zero component.
 bool flattens(const TransformOp& op);
 
-// The one rule for transform lists (SEMANTICS.md 4), used by the renderer, the
+// The one rule for transform lists (docs/language.md §5.5), used by the renderer, the
 // validator's warning and every tool that must agree with them:
 // - a list containing a `scale` with a zero component leaves the primitive out,
 //   whatever comes before or after it (the first such op is the one reported);
