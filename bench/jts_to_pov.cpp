@@ -12,18 +12,12 @@
 //   reflection -> reflection, recurse_depth + 1 -> max_trace_level
 // with no gamma anywhere (assumed_gamma 1; render with File_Gamma=1.0).
 
+#include "converter_cli.hpp"
 #include "geometry/affine.hpp"
-#include "jtracer/atomic_file.hpp"
-#include "jtracer/scene_file.hpp"
 #include "jtracer/validate.hpp"
+#include "render/camera_rays.hpp"
 
-#include <glm/geometric.hpp>
-
-#include <algorithm>
 #include <cmath>
-#include <cstdarg>
-#include <cstdio>
-#include <iostream>
 #include <numbers>
 #include <string>
 #include <string_view>
@@ -31,32 +25,8 @@
 namespace {
 
 using jt::Vec3;
-
-constexpr int exit_scene_errors = 1, exit_usage = 2, exit_io = 3;
-
-Vec3 mirror(const Vec3& v) {
-    return {v.x, v.y, -v.z};
-}
-
-class PovWriter {
-  public:
-    void printf(const char* format, ...) __attribute__((format(printf, 2, 3))) {
-        char buffer[512];
-        va_list args;
-        va_start(args, format);
-        int n = std::vsnprintf(buffer, sizeof buffer, format, args);
-        va_end(args);
-        if (n > 0)
-            text_.append(buffer, static_cast<std::size_t>(std::min<int>(n, sizeof buffer - 1)));
-    }
-    void vector(const char* prefix, const Vec3& v) {
-        printf("%s<%.9g, %.9g, %.9g>", prefix, v.x, v.y, v.z);
-    }
-    const std::string& text() const { return text_; }
-
-  private:
-    std::string text_;
-};
+using PovWriter = jt::bench::TextWriter;
+constexpr auto mirror = jt::bench::mirror_z;
 
 double mean(const jt::Colour& c) {
     return (c.x + c.y + c.z) / 3.0;
@@ -124,15 +94,13 @@ void write_camera(PovWriter& out, const jt::Camera& camera) {
     // docs/language.md §7: the ray is f + sx r + sy u with |sx| <= t * aspect, |sy| <= t.
     // POV-Ray spans `right` and `up` over the image and scales `direction` so that
     // `angle` is the full horizontal field of view: 2 atan(t * aspect).
-    Vec3 f = glm::normalize(camera.look_at - camera.position);
-    Vec3 r = glm::normalize(glm::cross(f, camera.up));
-    Vec3 u = glm::cross(r, f);
-    double t = std::tan(camera.fov * 0.5 * std::numbers::pi / 180.0);
+    const jt::CameraFrame frame = jt::camera_frame(camera, 1, 1);
+    double t = frame.tan_half_fov;
     double angle = 2.0 * std::atan(t * camera.aspect) * 180.0 / std::numbers::pi;
-    out.vector("camera { perspective location ", mirror(camera.position));
-    out.vector(" direction ", mirror(f));
-    out.vector(" right ", mirror(r) * camera.aspect);
-    out.vector(" up ", mirror(u));
+    out.vector("camera { perspective location ", mirror(frame.position));
+    out.vector(" direction ", mirror(frame.forward));
+    out.vector(" right ", mirror(frame.right) * camera.aspect);
+    out.vector(" up ", mirror(frame.up));
     out.printf(" angle %.12g }\n", angle);
 }
 
@@ -160,28 +128,17 @@ std::string convert(const jt::Scene& scene, int camera_index) {
 }  // namespace
 
 int main(int argc, char** argv) {
+    constexpr const char* program = "jts-to-pov";
     if (argc != 3 || std::string_view(argv[1]).starts_with("-")) {
         std::cerr << "usage: jts-to-pov SCENE.jts OUT.pov\n"
                      "Writes a POV-Ray 3.7 scene that renders like the JTracer scene.\n";
-        return exit_usage;
+        return jt::bench::exit_usage;
     }
-    const jt::Expected<jt::LoadedScene> read = jt::load_scene_file(argv[1]);
-    if (!read) {
-        std::cerr << "jts-to-pov: " << read.error().message << "\n";
-        return exit_io;
-    }
-    const jt::LoadedScene& loaded = *read;
-    auto diagnostics = jt::check_scene(loaded);
-    if (jt::has_errors(diagnostics)) {
-        std::cerr << jt::format_diagnostics(diagnostics, loaded.path, loaded.text);
-        return exit_scene_errors;
-    }
-    std::string pov = convert(loaded.parsed.scene, jt::active_camera_index(loaded.parsed.scene));
-    const jt::Expected<void> written = jt::write_file_atomically(
-        argv[2], {reinterpret_cast<const std::uint8_t*>(pov.data()), pov.size()});
-    if (!written) {
-        std::cerr << "jts-to-pov: " << written.error().message << "\n";
-        return exit_io;
-    }
+    int status = 0;
+    std::optional<jt::LoadedScene> loaded = jt::bench::load_checked_scene(program, argv[1], status);
+    if (!loaded) return status;
+    const jt::Scene& scene = loaded->parsed.scene;
+    if (!jt::bench::write_text(program, argv[2], convert(scene, jt::active_camera_index(scene))))
+        return jt::bench::exit_io;
     return 0;
 }

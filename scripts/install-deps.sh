@@ -10,6 +10,7 @@ packages=(
     libglfw3-dev libimgui-dev libosmesa6-dev libgl-dev xvfb xauth
     libopenmpi-dev openmpi-bin
     clang libclang-rt-14-dev valgrind
+    tachyon-bin-nox
     mandoc man-db dpkg-dev file bash-completion zsh desktop-file-utils shared-mime-info
 )
 
