@@ -1,15 +1,19 @@
 #!/usr/bin/env python3
-"""Races jtracer-cli against POV-Ray 3.7 on the benchmark scenes and prints a table.
+"""Races jtracer-cli against Tachyon and POV-Ray 3.7 on the benchmark scenes and prints a table.
 
-For each scene the two renderers run alternately (JTracer, POV-Ray, JTracer, ...)
-so that a busy spell of the machine hurts both alike; the table shows medians.
+For each scene the renderers run in turn (JTracer, Tachyon, POV-Ray, JTracer, ...)
+so that a busy spell of the machine hurts all alike; the table shows medians.
 Wall time is the whole process: reading and parsing the file, building the
 acceleration structure, rendering and writing the image. Peak memory is the
 child's maximum resident set size (getrusage). Images are kept in the work
-directory as SCENE.jtracer.bmp and SCENE.povray.bmp.
+directory as SCENE.jtracer.bmp, SCENE.tachyon.bmp and SCENE.povray.bmp.
 
-usage: race.py --cli PATH --converter PATH --scenes DIR --out DIR [--runs N] [--threads N]
-               [--only NAME ...] [--no-povray]
+Before a scene is timed with Tachyon, check_silhouettes.py renders both sides in
+flat per-primitive colours: Tachyon is timed only where it shows the same
+geometry. A scene with a shape Tachyon lacks (an ellipsoid) has no Tachyon column.
+
+usage: race.py --cli PATH --converter PATH --tachyon-converter PATH --scenes DIR --out DIR
+               [--runs N] [--threads N] [--only NAME ...] [--no-povray] [--no-tachyon]
 """
 
 import argparse
@@ -79,75 +83,129 @@ def jtracer_rays(output):
     return rays, seconds
 
 
+# The scenes in the order of the table; the generator writes them all.
+ORDER = ["showcase", "hall_of_mirrors", "forest", "lights16",
+         "spheres_1k", "spheres_10k", "spheres_100k", "spheres_1m"]
+TACHYON_SCENES = ["sphereflake", "nested_shells", "spheres_5761", "lattice", "tree", "few"]
+ORDER += TACHYON_SCENES + [n + "_1024" for n in TACHYON_SCENES]
+
+
+def median_or_nan(values):
+    return statistics.median(values) if values else float("nan")
+
+
+def ratio(a, b):
+    return a / b if b == b and b > 0 else float("nan")
+
+
+def figure(value, digits=3):
+    return "n/a" if value != value else f"{value:.{digits}f}"
+
+
+def tachyon_ready(args, scene, dat, name):
+    """The reason Tachyon is left out of this scene, or None when it is raced."""
+    converted = subprocess.run([args.tachyon_converter, scene, dat], capture_output=True, text=True)
+    if converted.returncode == 1:
+        print(f"  {name}: no Tachyon: {converted.stderr.splitlines()[0]}", file=sys.stderr)
+        return "no such shape"
+    if converted.returncode != 0:
+        sys.exit(f"jts-to-tachyon failed on {scene}:\n{converted.stderr}")
+    check = subprocess.run([sys.executable, os.path.join(os.path.dirname(__file__), "check_silhouettes.py"),
+                            "--cli", args.cli, "--converter", args.tachyon_converter, "--tachyon",
+                            args.tachyon, "--threads", str(args.threads), scene,
+                            os.path.join(args.out, "silhouettes")], capture_output=True, text=True)
+    print("  " + check.stdout.strip().replace("\n", "\n  "), file=sys.stderr)
+    if check.returncode != 0:
+        return "silhouettes differ"
+    return None
+
+
 def main():
     global _log_path
     parser = argparse.ArgumentParser(description=__doc__.splitlines()[0])
     parser.add_argument("--cli", required=True)
-    parser.add_argument("--converter", required=True)
+    parser.add_argument("--converter", required=True, help="jts-to-pov")
+    parser.add_argument("--tachyon-converter", help="jts-to-tachyon")
+    parser.add_argument("--tachyon", default="tachyon-nox")
     parser.add_argument("--scenes", required=True, help="directory of the generated .jts scenes")
-    parser.add_argument("--out", required=True, help="where the .pov files and images go")
+    parser.add_argument("--out", required=True, help="where the converted scenes and images go")
     parser.add_argument("--runs", type=int, default=5)
     parser.add_argument("--threads", type=int, default=2)
     parser.add_argument("--only", nargs="*")
     parser.add_argument("--no-povray", action="store_true")
+    parser.add_argument("--no-tachyon", action="store_true")
     args = parser.parse_args()
+    if not args.no_tachyon and not args.tachyon_converter:
+        parser.error("--tachyon-converter is needed unless --no-tachyon")
     os.makedirs(args.out, exist_ok=True)
     _log_path = os.path.join(args.out, "last_run.log")
 
-    order = ["showcase", "hall_of_mirrors", "forest", "lights16",
-             "spheres_1k", "spheres_10k", "spheres_100k", "spheres_1m"]
-    names = [n for n in order if os.path.exists(os.path.join(args.scenes, n + ".jts"))]
+    names = [n for n in ORDER if os.path.exists(os.path.join(args.scenes, n + ".jts"))]
     if args.only:
         names = [n for n in names if n in args.only]
     if not names:
         sys.exit("no scenes to run")
 
+    load_before = os.getloadavg()
     rows = []
     for name in names:
         scene = os.path.join(args.scenes, name + ".jts")
-        pov = os.path.join(args.out, name + ".pov")
+        pov, dat = os.path.join(args.out, name + ".pov"), os.path.join(args.out, name + ".dat")
         jt_image = os.path.join(args.out, name + ".jtracer.bmp")
         pov_image = os.path.join(args.out, name + ".povray.bmp")
-        subprocess.run([args.converter, scene, pov], check=True)
+        tachyon_image = os.path.join(args.out, name + ".tachyon.bmp")
         with open(scene, encoding="ascii") as f:
             head = f.read(4096)
         width = int(re.search(r"width:\s*(\d+)", head).group(1))
         height = int(re.search(r"height:\s*(\d+)", head).group(1))
-        jt_command = [args.cli, scene, "-o", jt_image, "--threads", str(args.threads)]
-        pov_command = ["povray", "+I" + pov, "+O" + pov_image, f"+W{width}", f"+H{height}",
-                       f"+WT{args.threads}", "-A", "-D", "+FB", "File_Gamma=1.0", "-V", "-GA"]
-        jt_walls, jt_cpus, jt_rss, pov_walls, pov_cpus, rates = [], [], [], [], [], []
+        commands = {"jtracer": [args.cli, scene, "-o", jt_image, "--threads", str(args.threads)]}
+        if not args.no_tachyon and tachyon_ready(args, scene, dat, name) is None:
+            commands["tachyon"] = [args.tachyon, dat, "-numthreads", str(args.threads), "-aasamples", "0",
+                                   "-shade_phong", "-format", "BMP", "-o", tachyon_image]
+        if not args.no_povray:
+            subprocess.run([args.converter, scene, pov], check=True)
+            commands["povray"] = ["povray", "+I" + pov, "+O" + pov_image, f"+W{width}", f"+H{height}",
+                                  f"+WT{args.threads}", "-A", "-D", "+FB", "File_Gamma=1.0", "-V", "-GA"]
+        walls = {k: [] for k in commands}
+        cpus = {k: [] for k in commands}
+        peaks = {k: [] for k in commands}
+        rates = []
         for run in range(args.runs):
-            wall, cpu, rss, output = run_timed(jt_command)
-            rays, seconds = jtracer_rays(output)
-            jt_walls.append(wall)
-            jt_cpus.append(cpu)
-            jt_rss.append(rss)
-            rates.append(rays / seconds / 1e6)  # while rendering, as the CLI reports
-            if not args.no_povray:
-                wall, cpu, _, _ = run_timed(pov_command, attempts=3)
-                pov_walls.append(wall)
-                pov_cpus.append(cpu)
-            print(f"  {name} run {run + 1}/{args.runs}: jtracer {jt_walls[-1]:.3f} s"
-                  + (f", povray {pov_walls[-1]:.3f} s" if pov_walls else ""), file=sys.stderr)
-        jt = statistics.median(jt_walls)
-        pv = statistics.median(pov_walls) if pov_walls else float("nan")
-        jt_cpu = statistics.median(jt_cpus)
-        pv_cpu = statistics.median(pov_cpus) if pov_cpus else float("nan")
-        rows.append((name, f"{width}x{height}", jt, pv, jt / pv if pov_walls else float("nan"),
-                     jt_cpu, pv_cpu, jt_cpu / pv_cpu if pov_cpus else float("nan"),
-                     statistics.median(rates), max(jt_rss)))
+            for renderer, command in commands.items():
+                # POV-Ray 3.7 sometimes dies at start-up on a busy machine.
+                wall, cpu, rss, output = run_timed(command, attempts=3 if renderer == "povray" else 1)
+                walls[renderer].append(wall)
+                cpus[renderer].append(cpu)
+                peaks[renderer].append(rss)
+                if renderer == "jtracer":
+                    rays, seconds = jtracer_rays(output)
+                    rates.append(rays / seconds / 1e6)  # while rendering, as the CLI reports
+            print(f"  {name} run {run + 1}/{args.runs}: "
+                  + ", ".join(f"{k} {v[-1]:.3f} s" for k, v in walls.items()), file=sys.stderr)
+        wall = {k: median_or_nan(walls.get(k, [])) for k in ("jtracer", "tachyon", "povray")}
+        cpu = {k: median_or_nan(cpus.get(k, [])) for k in ("jtracer", "tachyon", "povray")}
+        peak = {k: max(peaks[k]) if peaks.get(k) else float("nan") for k in ("jtracer", "tachyon", "povray")}
+        rows.append((name, f"{width}x{height}", wall, cpu, peak, statistics.median(rates)))
 
+    load_after = os.getloadavg()
     print()
     print(f"median of {args.runs} runs each, alternated; {args.threads} threads; "
           "wall = whole process (read, parse, build, render, write)")
     print("(CPU s = user + system time of the process: the figure to trust when the machine is busy)")
-    print("| scene | size | JTracer s | POV-Ray s | ratio | JTracer CPU s | POV-Ray CPU s | CPU ratio "
-          "| JTracer Mrays/s | JTracer peak MiB |")
-    print("|---|---|---:|---:|---:|---:|---:|---:|---:|---:|")
-    for name, size, jt, pv, ratio, jt_cpu, pv_cpu, cpu_ratio, rate, rss in rows:
-        print(f"| {name} | {size} | {jt:.3f} | {pv:.3f} | {ratio:.3f} | {jt_cpu:.3f} | {pv_cpu:.3f} "
-              f"| {cpu_ratio:.3f} | {rate:.1f} | {rss:.0f} |")
+    print(f"load average (1, 5, 15 min) before: {' '.join(f'{x:.2f}' for x in load_before)}, "
+          f"after: {' '.join(f'{x:.2f}' for x in load_after)}")
+    print("| scene | size | JTracer s | Tachyon s | POV-Ray s | JT/Tachyon | JT/POV-Ray "
+          "| JTracer CPU s | Tachyon CPU s | POV-Ray CPU s | CPU JT/Tachyon | CPU JT/POV-Ray "
+          "| JTracer Mrays/s | peak MiB JT / Tachyon / POV-Ray |")
+    print("|---|---|---:|---:|---:|---:|---:|---:|---:|---:|---:|---:|---:|---:|")
+    for name, size, wall, cpu, peak, rate in rows:
+        print(f"| {name} | {size} | {figure(wall['jtracer'])} | {figure(wall['tachyon'])} "
+              f"| {figure(wall['povray'])} | {figure(ratio(wall['jtracer'], wall['tachyon']))} "
+              f"| {figure(ratio(wall['jtracer'], wall['povray']))} | {figure(cpu['jtracer'])} "
+              f"| {figure(cpu['tachyon'])} | {figure(cpu['povray'])} "
+              f"| {figure(ratio(cpu['jtracer'], cpu['tachyon']))} "
+              f"| {figure(ratio(cpu['jtracer'], cpu['povray']))} | {rate:.1f} "
+              f"| {figure(peak['jtracer'], 0)} / {figure(peak['tachyon'], 0)} / {figure(peak['povray'], 0)} |")
     return 0
 
 

@@ -1,12 +1,13 @@
 #!/usr/bin/env bash
-# One command from a fresh clone: installs POV-Ray when missing, builds the
-# release CLI and the converter, generates the benchmark scenes, then races
-# jtracer-cli against POV-Ray 3.7 and prints the table (bench/race.py).
+# One command from a fresh clone: installs POV-Ray and Tachyon when missing,
+# builds the release CLI and the converters, generates the benchmark scenes,
+# then races jtracer-cli against Tachyon and POV-Ray 3.7 and prints the table
+# (bench/race.py).
 #
 #   bench/run.sh                    every scene, 5 runs each
-#   bench/run.sh --quick            3 runs each, without the 1M-sphere scene
+#   bench/run.sh --quick            3 runs each, 1920x1080 scenes of the Tachyon race and a few others
 #   bench/run.sh --only showcase spheres_1m     some scenes only
-#   bench/run.sh --runs 9 --threads 2
+#   bench/run.sh --runs 9 --threads 2 --no-povray
 #
 # Environment: JT_BENCH_BUILD (build dir, default build/bench), JT_BENCH_WORK
 # (scenes, .pov files and images, default build/bench-work).
@@ -19,13 +20,15 @@ runs=5
 threads=2
 quick=0
 only=()
+race_options=()
 while [[ $# -gt 0 ]]; do
     case "$1" in
         --quick) quick=1; runs=3; shift ;;
         --runs) runs="$2"; shift 2 ;;
         --threads) threads="$2"; shift 2 ;;
+        --no-povray|--no-tachyon) race_options+=("$1"); shift ;;
         --only) shift; while [[ $# -gt 0 && "$1" != --* ]]; do only+=("$1"); shift; done ;;
-        -h|--help) sed -n '2,13p' "$0"; exit 0 ;;
+        -h|--help) sed -n '2,14p' "$0"; exit 0 ;;
         *) echo "run.sh: unknown option '$1' (see --help)" >&2; exit 2 ;;
     esac
 done
@@ -34,16 +37,19 @@ as_root() {
     if [[ $(id -u) -eq 0 ]]; then "$@"; else sudo "$@"; fi
 }
 
-if ! command -v povray >/dev/null; then
-    echo "== installing POV-Ray 3.7 (Debian package povray)"
+missing=()
+command -v povray >/dev/null || missing+=(povray)
+command -v tachyon-nox >/dev/null || missing+=(tachyon-bin-nox)
+if [[ ${#missing[@]} -gt 0 ]]; then
+    echo "== installing ${missing[*]} (Debian packages)"
     as_root apt-get update -q
-    as_root env DEBIAN_FRONTEND=noninteractive apt-get install -y -q povray
+    as_root env DEBIAN_FRONTEND=noninteractive apt-get install -y -q "${missing[@]}"
 fi
 
-echo "== building the release CLI and the converter in $build"
+echo "== building the release CLI and the converters in $build"
 cmake -S "$repo" -B "$build" -G Ninja -DCMAKE_BUILD_TYPE=Release \
     -DJT_BUILD_TESTS=OFF -DJT_BUILD_VIEWER=OFF -DJT_BUILD_MPI=OFF -DJT_BUILD_BENCH=ON >/dev/null
-cmake --build "$build" --target jtracer-cli jts-to-pov -- -j"$(nproc)"
+cmake --build "$build" --target jtracer-cli jts-to-pov jts-to-tachyon -- -j"$(nproc)"
 
 echo "== generating scenes in $work/scenes"
 generate=(python3 "$repo/bench/generate_scenes.py" "$work/scenes" --showcase "$repo/scenes/showcase.jts")
@@ -52,12 +58,13 @@ generate=(python3 "$repo/bench/generate_scenes.py" "$work/scenes" --showcase "$r
 "${generate[@]}" >/dev/null
 
 race=(python3 "$repo/bench/race.py" --cli "$build/cli/jtracer-cli" --converter "$build/bench/jts-to-pov"
-      --scenes "$work/scenes" --out "$work/images" --runs "$runs" --threads "$threads")
+      --tachyon-converter "$build/bench/jts-to-tachyon" --scenes "$work/scenes" --out "$work/images"
+      --runs "$runs" --threads "$threads" "${race_options[@]}")
 if [[ ${#only[@]} -gt 0 ]]; then
     race+=(--only "${only[@]}")
 elif [[ $quick -eq 1 ]]; then
-    race+=(--only showcase hall_of_mirrors forest lights16 spheres_1k spheres_10k spheres_100k)
+    race+=(--only showcase lights16 spheres_10k sphereflake nested_shells spheres_5761 lattice tree few)
 fi
 echo "== racing ($runs runs each, $threads threads); images in $work/images"
 "${race[@]}"
-echo "machine: $(nproc) cores, $(lscpu | sed -n 's/^Model name: *//p')"
+echo "machine: $(nproc) cores, $(lscpu | sed -n 's/^Model name: *//p'); $(povray --version 2>&1 | sed -n 's/^\(POV-Ray [0-9.]*\).*/\1/p' | head -1); tachyon-bin-nox $(dpkg-query -W -f='${Version}' tachyon-bin-nox 2>/dev/null)"
