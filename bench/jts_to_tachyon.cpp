@@ -23,11 +23,11 @@
 // renderer's image then says which primitive every pixel sees.
 
 #include "converter_cli.hpp"
-#include "geometry/affine.hpp"
 #include "jtracer/diagnostics.hpp"
 #include "jtracer/serializer.hpp"
 #include "jtracer/validate.hpp"
 #include "render/camera_rays.hpp"
+#include "world_shapes.hpp"
 
 #include <glm/geometric.hpp>
 
@@ -81,8 +81,9 @@ class Textures {
         if (named) {
             int next = 0;
             for (auto& [body, name] : names) {
-                name = "m";
-                name += std::to_string(next++);
+                char label[16];
+                std::snprintf(label, sizeof label, "m%d", next++);
+                name = label;
                 out.printf("TEXDEF %s %s\n", name.c_str(), body.c_str());
             }
         }
@@ -95,46 +96,31 @@ class Textures {
     std::vector<std::string> references_;
 };
 
-// The primitive in world space, mirrored, or the reason Tachyon cannot show it.
-std::string write_primitive(TextWriter& out, const jt::Primitive& p, const std::string& texture) {
-    // JTracer's own rule decides which primitives are left out.
-    const auto placed = jt::object_transform(p.transforms);
-    if (std::holds_alternative<jt::LeftOut>(placed)) return {};
-    const jt::ObjectTransform& transform = std::get<jt::ObjectTransform>(placed);
-    const jt::Affine& world = transform.to_world;
-    if (const auto* plane = std::get_if<jt::Plane>(&p.shape)) {
-        auto n = jt::unit_length(plane->normal);
-        auto world_normal = n ? jt::unit_length(transform.normal_matrix * *n) : std::nullopt;
-        if (!world_normal) return {};
-        out.triple("PLANE CENTER ", mirror_z(jt::apply_point(world, *n * plane->distance)));
-        out.triple(" NORMAL ", mirror_z(*world_normal));
-        out.printf(" %s\n", texture.c_str());
-        return {};
+// Every shape in world space, mirrored.
+void write_shapes(TextWriter& out, const jt::bench::WorldShapes& shapes, const Textures& textures) {
+    for (const jt::bench::WorldSphere& sphere : shapes.spheres) {
+        out.triple("SPHERE CENTER ", mirror_z(sphere.center));
+        out.printf(" RAD %.9g %s\n", sphere.radius, textures.of(sphere.primitive).c_str());
     }
-    // Tachyon has neither ellipsoids nor elliptic cylinders.
-    auto scale = jt::similarity_scale(world.linear);
-    if (!scale)
-        return "Tachyon cannot show this primitive: its transform is not a rotation and a "
-               "uniform scale";
-    if (const auto* sphere = std::get_if<jt::Sphere>(&p.shape)) {
-        out.triple("SPHERE CENTER ", mirror_z(jt::apply_point(world, sphere->center)));
-        out.printf(" RAD %.9g %s\n", *scale * sphere->radius, texture.c_str());
-    } else if (const auto* cylinder = std::get_if<jt::Cylinder>(&p.shape)) {
-        const Vec3 base = mirror_z(jt::apply_point(world, Vec3(0.0)));
-        const Vec3 apex = mirror_z(jt::apply_point(world, Vec3(0.0, cylinder->height, 0.0)));
-        const double radius = *scale * cylinder->radius;
+    for (const jt::bench::WorldCylinder& cylinder : shapes.cylinders) {
+        const std::string& texture = textures.of(cylinder.primitive);
+        const Vec3 base = mirror_z(cylinder.base), apex = mirror_z(cylinder.apex);
         const Vec3 axis = glm::normalize(apex - base);
         out.triple("FCYLINDER BASE ", base);
         out.triple(" APEX ", apex);
-        out.printf(" RAD %.9g %s\n", radius, texture.c_str());
+        out.printf(" RAD %.9g %s\n", cylinder.radius, texture.c_str());
         out.triple("RING CENTER ", base);
         out.triple(" NORMAL ", -axis);
-        out.printf(" INNER 0 OUTER %.9g %s\n", radius, texture.c_str());
+        out.printf(" INNER 0 OUTER %.9g %s\n", cylinder.radius, texture.c_str());
         out.triple("RING CENTER ", apex);
         out.triple(" NORMAL ", axis);
-        out.printf(" INNER 0 OUTER %.9g %s\n", radius, texture.c_str());
+        out.printf(" INNER 0 OUTER %.9g %s\n", cylinder.radius, texture.c_str());
     }
-    return {};
+    for (const jt::bench::WorldPlane& plane : shapes.planes) {
+        out.triple("PLANE CENTER ", mirror_z(plane.point));
+        out.triple(" NORMAL ", mirror_z(plane.normal));
+        out.printf(" %s\n", textures.of(plane.primitive).c_str());
+    }
 }
 
 void write_camera(TextWriter& out, const jt::RenderSettings& s, const jt::Camera& camera) {
@@ -168,16 +154,19 @@ std::variant<std::string, jt::Diagnostic> convert(const jt::LoadedScene& loaded)
         out.triple(" RAD 0 COLOR ", light.intensity);
         out.printf("\n");
     }
-    const Textures textures(scene, out);
-    for (std::size_t i = 0; i < scene.primitives.size(); ++i) {
-        std::string problem = write_primitive(out, scene.primitives[i], textures.of(i));
-        if (!problem.empty()) {
-            jt::SourcePos pos;
-            if (i < loaded.parsed.source.primitives.size())
-                pos = loaded.parsed.source.primitives[i].keyword_span.pos;
-            return jt::Diagnostic{jt::Severity::error, pos, problem};
-        }
+    const jt::bench::WorldShapes shapes = jt::bench::world_shapes(scene);
+    // Tachyon has neither ellipsoids nor elliptic cylinders.
+    if (shapes.first_unplaceable) {
+        const std::size_t i = *shapes.first_unplaceable;
+        jt::SourcePos pos;
+        if (i < loaded.parsed.source.primitives.size())
+            pos = loaded.parsed.source.primitives[i].keyword_span.pos;
+        return jt::Diagnostic{jt::Severity::error, pos,
+                              "Tachyon cannot show this primitive: its transform is not a "
+                              "rotation and a uniform scale"};
     }
+    const Textures textures(scene, out);
+    write_shapes(out, shapes, textures);
     out.printf("END_SCENE\n");
     return out.text();
 }

@@ -8,6 +8,9 @@
 #   bench/run.sh --quick            3 runs each, 1920x1080 scenes of the Tachyon race and a few others
 #   bench/run.sh --only showcase spheres_1m     some scenes only
 #   bench/run.sh --runs 9 --threads 2 --no-povray
+#   bench/run.sh --kernel-limit     instead of the race, JTracer's rays/s as a share of
+#                                   Embree's native kernel (bench/kernel_limit.py) on the
+#                                   1920x1080 scenes of the Tachyon race (or --only ...)
 #
 # Environment: JT_BENCH_BUILD (build dir, default build/bench), JT_BENCH_WORK
 # (scenes, .pov files and images, default build/bench-work).
@@ -21,14 +24,16 @@ threads=2
 quick=0
 only=()
 race_options=()
+kernel_limit=0
 while [[ $# -gt 0 ]]; do
     case "$1" in
         --quick) quick=1; runs=3; shift ;;
         --runs) runs="$2"; shift 2 ;;
         --threads) threads="$2"; shift 2 ;;
         --no-povray|--no-tachyon) race_options+=("$1"); shift ;;
+        --kernel-limit) kernel_limit=1; shift ;;
         --only) shift; while [[ $# -gt 0 && "$1" != --* ]]; do only+=("$1"); shift; done ;;
-        -h|--help) sed -n '2,14p' "$0"; exit 0 ;;
+        -h|--help) sed -n '2,17p' "$0"; exit 0 ;;
         *) echo "run.sh: unknown option '$1' (see --help)" >&2; exit 2 ;;
     esac
 done
@@ -49,13 +54,29 @@ fi
 echo "== building the release CLI and the converters in $build"
 cmake -S "$repo" -B "$build" -G Ninja -DCMAKE_BUILD_TYPE=Release \
     -DJT_BUILD_TESTS=OFF -DJT_BUILD_VIEWER=OFF -DJT_BUILD_MPI=OFF -DJT_BUILD_BENCH=ON >/dev/null
-cmake --build "$build" --target jtracer-cli jts-to-pov jts-to-tachyon -- -j"$(nproc)"
+cmake --build "$build" --target jtracer-cli jts-to-pov jts-to-tachyon kernel-limit -- -j"$(nproc)"
 
 echo "== generating scenes in $work/scenes"
 generate=(python3 "$repo/bench/generate_scenes.py" "$work/scenes" --showcase "$repo/scenes/showcase.jts")
 [[ $quick -eq 1 ]] && generate+=(--skip-million)
 [[ ${#only[@]} -gt 0 ]] && generate+=(--only "${only[@]}")
 "${generate[@]}" >/dev/null
+
+machine="machine: $(nproc) cores, $(lscpu | sed -n 's/^Model name: *//p')"
+if [[ $kernel_limit -eq 1 ]]; then
+    limit=(python3 "$repo/bench/kernel_limit.py" --cli "$build/cli/jtracer-cli"
+           --kernel-limit "$build/bench/kernel-limit" --scenes "$work/scenes" --runs "$runs"
+           --threads "$threads")
+    if [[ ${#only[@]} -gt 0 ]]; then
+        limit+=(--only "${only[@]}")
+    else
+        limit+=(--only sphereflake nested_shells spheres_5761 lattice tree few)
+    fi
+    echo "== JTracer against the kernel limit ($runs runs each, $threads threads)"
+    "${limit[@]}"
+    echo "$machine; Embree $(dpkg-query -W -f='${Version}' libembree3-3 2>/dev/null)"
+    exit 0
+fi
 
 race=(python3 "$repo/bench/race.py" --cli "$build/cli/jtracer-cli" --converter "$build/bench/jts-to-pov"
       --tachyon-converter "$build/bench/jts-to-tachyon" --scenes "$work/scenes" --out "$work/images"
@@ -67,4 +88,5 @@ elif [[ $quick -eq 1 ]]; then
 fi
 echo "== racing ($runs runs each, $threads threads); images in $work/images"
 "${race[@]}"
-echo "machine: $(nproc) cores, $(lscpu | sed -n 's/^Model name: *//p'); $(povray --version 2>&1 | sed -n 's/^\(POV-Ray [0-9.]*\).*/\1/p' | head -1); tachyon-bin-nox $(dpkg-query -W -f='${Version}' tachyon-bin-nox 2>/dev/null)"
+echo "$machine; povray $(dpkg-query -W -f='${Version}' povray 2>/dev/null);" \
+    "tachyon-bin-nox $(dpkg-query -W -f='${Version}' tachyon-bin-nox 2>/dev/null)"
