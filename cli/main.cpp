@@ -16,10 +16,12 @@
 
 #include <atomic>
 #include <chrono>
+#include <condition_variable>
 #include <csignal>
 #include <cstdio>
 #include <exception>
 #include <iostream>
+#include <mutex>
 #include <new>
 #include <thread>
 
@@ -36,20 +38,30 @@ extern "C" void on_interrupt(int signal) {
 }
 
 // Runs the job on a thread of its own while this one draws progress and
-// watches for Ctrl-C. Returns false when interrupted.
+// watches for Ctrl-C. Returns false when interrupted. The end of the render
+// wakes this thread at once, so that a small render does not wait out a tick.
 bool render(jt::RenderJob& job, bool quiet) {
     ProgressDisplay display(quiet, ::isatty(STDERR_FILENO) == 1);
-    std::atomic<bool> done{false};
+    std::mutex mutex;
+    std::condition_variable finished;
+    bool done = false;
     std::thread worker([&] {
         job.run();
-        done.store(true);
+        {
+            std::lock_guard<std::mutex> lock(mutex);
+            done = true;
+        }
+        finished.notify_one();
     });
-    while (!done.load()) {
+    std::unique_lock<std::mutex> lock(mutex);
+    while (!done) {
+        lock.unlock();
         if (interrupted.load() != 0) job.cancel();
         display.update(job.progress());
-        for (int i = 0; i < 10 && !done.load(); ++i)
-            std::this_thread::sleep_for(std::chrono::milliseconds(10));
+        lock.lock();
+        finished.wait_for(lock, std::chrono::milliseconds(100), [&] { return done; });
     }
+    lock.unlock();
     worker.join();
     display.finish();
     return job.progress().finished;
