@@ -28,7 +28,7 @@ cmake --install "$build" --prefix "$work/staged" >/dev/null
 # Moving the tree proves that nothing in it depends on where it was put.
 mv "$work/staged" "$work/prefix"
 prefix=$work/prefix
-libdir=$(dirname "$(find "$prefix" -name libjtracer_core.a)")
+libdir=$(dirname "$(find "$prefix" -name libjtracer_scene.a)")
 for file in bin/jtracer-cli bin/jtracer-merge share/jtracer/scenes/showcase.jts \
     share/jtracer/scenes/manual/sphere.jts share/man/man1/jtracer-cli.1.gz \
     share/man/man1/jtracer-merge.1.gz share/man/man5/jts.5.gz \

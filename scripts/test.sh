@@ -1,8 +1,9 @@
 #!/usr/bin/env bash
 # Installs the dependencies, builds JTracer and runs the whole test suite:
 # the release build first (and what it installs and packages: install-test.sh),
-# then everything again under ASan + UBSan.
-# Set JT_SKIP_ASAN=1 to run the release build only.
+# then the fuzz targets (built with clang, each run for JT_FUZZ_SECONDS,
+# default 60), then everything again under ASan + UBSan.
+# Set JT_SKIP_FUZZ=1 or JT_SKIP_ASAN=1 to leave those steps out.
 set -euo pipefail
 cd "$(dirname "$0")/.."
 ./scripts/install-deps.sh
@@ -20,6 +21,9 @@ run_preset() {
 run_preset release
 echo "== release: install, package, uninstall"
 ./scripts/install-test.sh build/release
+if [ "${JT_SKIP_FUZZ:-0}" != 1 ]; then
+    ./scripts/fuzz.sh "${JT_FUZZ_SECONDS:-60}"
+fi
 if [ "${JT_SKIP_ASAN:-0}" != 1 ]; then
     run_preset asan
 fi
