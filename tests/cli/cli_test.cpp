@@ -1,15 +1,15 @@
 // jtracer-cli end to end: exit codes, which file it writes, and that no file
 // is written on any error.
 
+#include "common/files.hpp"
+#include "common/scratch_dir.hpp"
 #include "jtracer/bmp.hpp"
 #include "jtracer/image_file.hpp"
 #include "jtracer/version.hpp"
 
 #include <gtest/gtest.h>
-#include <sys/wait.h>
-#include <unistd.h>
 
-#include <cstdlib>
+#include <algorithm>
 #include <filesystem>
 #include <fstream>
 #include <sstream>
@@ -35,60 +35,23 @@ scene {
 }
 )";
 
-struct CliRun {
-    int code = -1;
-    std::string err;
-};
-
-class Cli : public testing::Test {
+class Cli : public test::ScratchTest {
   protected:
-    fs::path dir;
-
-    void SetUp() override {
-        const auto* info = testing::UnitTest::GetInstance()->current_test_info();
-        dir = fs::temp_directory_path() /
-              ("jtracer_cli_test_" + std::string(info->name()) + "_" + std::to_string(::getpid()));
-        fs::remove_all(dir);
-        fs::create_directories(dir);
-        write("scene.jts", small_scene);
-    }
-    void TearDown() override {
-        if (!HasFailure()) fs::remove_all(dir);
-    }
+    void SetUp() override { write("scene.jts", small_scene); }
 
     void write(const std::string& name, const std::string& text) {
-        std::ofstream(dir / name, std::ios::binary) << text;
+        test::write_file(dir / name, text);
     }
 
-    // Runs jtracer-cli in `dir` with stderr captured; stdout goes to a file too.
-    CliRun run(const std::string& args) {
-        std::string command =
-            "cd '" + dir.string() + "' && '" JT_CLI "' " + args + " > stdout.txt 2> stderr.txt";
-        int status = std::system(command.c_str());
-        CliRun r;
-        r.code = WIFEXITED(status) ? WEXITSTATUS(status) : -1;
-        std::ifstream in(dir / "stderr.txt");
-        std::stringstream ss;
-        ss << in.rdbuf();
-        r.err = ss.str();
-        return r;
-    }
-
-    std::string out() {
-        std::ifstream in(dir / "stdout.txt");
-        std::stringstream ss;
-        ss << in.rdbuf();
-        return ss.str();
-    }
+    // Runs jtracer-cli in `dir` with these arguments (split by the shell).
+    test::ProgramRun run(const std::string& args) { return run_shell("'" JT_CLI "' " + args); }
 
     // Every file in dir other than the ones the test itself made.
     std::vector<std::string> outputs() {
         std::vector<std::string> names;
         for (const auto& e : fs::directory_iterator(dir)) {
             std::string n = e.path().filename().string();
-            if (n != "scene.jts" && n != "stdout.txt" && n != "stderr.txt" &&
-                e.path().extension() != ".jts")
-                names.push_back(n);
+            if (e.path().extension() != ".jts") names.push_back(n);
         }
         std::sort(names.begin(), names.end());
         return names;
@@ -96,7 +59,7 @@ class Cli : public testing::Test {
 };
 
 TEST_F(Cli, WritesTheScenesFilenameAsBmpAndASummary) {
-    CliRun r = run("scene.jts");
+    test::ProgramRun r = run("scene.jts");
     ASSERT_EQ(r.code, 0) << r.err;
     EXPECT_EQ(outputs(), std::vector<std::string>{"from_scene.bmp"});
     const Expected<Image8> image = read_bmp(dir / "from_scene.bmp");
@@ -111,7 +74,7 @@ TEST_F(Cli, DefaultFilenameIsJtracerBmp) {
     std::string text = small_scene;
     text.replace(text.find(" filename: \"from_scene.bmp\";"), 28, "");
     write("scene.jts", text);
-    CliRun r = run("scene.jts");
+    test::ProgramRun r = run("scene.jts");
     ASSERT_EQ(r.code, 0) << r.err;
     EXPECT_EQ(outputs(), std::vector<std::string>{"jtracer.bmp"});
 }
@@ -125,7 +88,7 @@ TEST_F(Cli, SceneFilenameIsBmpWhateverItsExtension) {
 }
 
 TEST_F(Cli, OutputOptionWinsAndPngByExtension) {
-    CliRun r = run("scene.jts -o shot.png --width 40 --height 20 -q");
+    test::ProgramRun r = run("scene.jts -o shot.png --width 40 --height 20 -q");
     ASSERT_EQ(r.code, 0) << r.err;
     EXPECT_EQ(r.err, "") << "--quiet";
     EXPECT_EQ(outputs(), std::vector<std::string>{"shot.png"});
@@ -158,14 +121,14 @@ TEST_F(Cli, CameraOptionPicksTheCamera) {
     ASSERT_TRUE(front) << front.error().message;
     ASSERT_TRUE(top) << top.error().message;
     EXPECT_FALSE(*front == *top);
-    CliRun r = run("scene.jts --camera nowhere");
+    test::ProgramRun r = run("scene.jts --camera nowhere");
     EXPECT_EQ(r.code, 2);
     EXPECT_NE(r.err.find("\"front\", \"top\""), std::string::npos) << r.err;
     EXPECT_EQ(outputs(), (std::vector<std::string>{"front.bmp", "top.bmp"}));
 }
 
 TEST_F(Cli, CheckValidatesAndWritesNothing) {
-    CliRun r = run("--check scene.jts");
+    test::ProgramRun r = run("--check scene.jts");
     EXPECT_EQ(r.code, 0) << r.err;
     EXPECT_TRUE(outputs().empty());
     write("bad.jts", "scene { sphere { radius 2; } }\n");
@@ -177,7 +140,7 @@ TEST_F(Cli, CheckValidatesAndWritesNothing) {
 
 TEST_F(Cli, SceneErrorsExitOneAndWriteNothing) {
     write("syntax.jts", "render_settings { width: 10; height: 10 }\n");
-    CliRun r = run("syntax.jts");
+    test::ProgramRun r = run("syntax.jts");
     EXPECT_EQ(r.code, 1);
     EXPECT_NE(r.err.find("syntax.jts:1:"), std::string::npos) << r.err;
     EXPECT_NE(r.err.find("error:"), std::string::npos) << r.err;
@@ -201,14 +164,14 @@ TEST_F(Cli, UsageErrorsExitTwo) {
     EXPECT_EQ(run("scene.jts --width 0").code, 2);
     EXPECT_EQ(run("scene.jts --samples 2000").code, 2);
     EXPECT_EQ(run("scene.jts --frobnicate").code, 2);
-    CliRun r = run("scene.jts --threads lots");
+    test::ProgramRun r = run("scene.jts --threads lots");
     EXPECT_EQ(r.code, 2);
     EXPECT_NE(r.err.find("--help"), std::string::npos) << r.err;
     EXPECT_TRUE(outputs().empty());
 }
 
 TEST_F(Cli, IoErrorsExitThreeAndWriteNothing) {
-    CliRun r = run("missing.jts");
+    test::ProgramRun r = run("missing.jts");
     EXPECT_EQ(r.code, 3);
     EXPECT_NE(r.err.find("missing.jts"), std::string::npos) << r.err;
     r = run("scene.jts -o no/such/dir/out.bmp");
@@ -228,15 +191,15 @@ TEST_F(Cli, ExistingOutputSurvivesAFailedRender) {
 }
 
 TEST_F(Cli, HelpAndVersion) {
-    CliRun r = run("--help");
+    test::ProgramRun r = run("--help");
     EXPECT_EQ(r.code, 0);
-    std::string help = out() + r.err;
+    std::string help = r.out + r.err;
     EXPECT_NE(help.find("Example"), std::string::npos) << help;
     EXPECT_NE(help.find("--samples"), std::string::npos) << help;
     r = run("--version");
     EXPECT_EQ(r.code, 0);
     // The project version from CMake, then the git revision when built from git.
-    EXPECT_EQ(out(), "jtracer-cli " + std::string(jt::version_string()) + "\n");
+    EXPECT_EQ(r.out, "jtracer-cli " + std::string(jt::version_string()) + "\n");
     EXPECT_EQ(std::string(jt::version_string()).rfind(JT_VERSION_STRING, 0), 0u);
 }
 

@@ -3,7 +3,8 @@
 // tolerance flags, the heat map and the exit codes (0 within, 1 outside,
 // 2 usage, 3 I/O). Also the hidden --list-cameras the completions use.
 
-#include "command.hpp"
+#include "common/files.hpp"
+#include "common/scratch_dir.hpp"
 
 #include "jtracer/bmp.hpp"
 #include "jtracer/image_file.hpp"
@@ -16,8 +17,7 @@
 namespace jt {
 namespace {
 
-using test::CommandRun;
-using test::file_text;
+using test::ProgramRun;
 
 const std::string cli = "'" JT_CLI "'";
 
@@ -34,22 +34,34 @@ Image8 gradient() {
     return image;
 }
 
-class Diff : public test::ScratchDir {
+// A scratch folder in which jtracer-cli runs; out() is the last run's stdout.
+class CliFolder : public test::ScratchTest {
+  protected:
+    ProgramRun run(const std::string& line) {
+        ProgramRun r = run_shell(line);
+        last_out = r.out;
+        return r;
+    }
+    const std::string& out() const { return last_out; }
+
+  private:
+    std::string last_out;
+};
+
+class Diff : public CliFolder {
   protected:
     void SetUp() override {
-        ScratchDir::SetUp();
         ASSERT_TRUE(write_png(dir / "a.png", gradient()));
         ASSERT_TRUE(write_bmp(dir / "a.bmp", gradient()));
     }
-    CommandRun diff(const std::string& args) { return run(cli + " diff " + args); }
-    std::string out() const { return file_text(dir / "stdout.txt"); }
+    ProgramRun diff(const std::string& args) { return run(cli + " diff " + args); }
     void write_png_file(const std::string& name, const Image8& image) {
         ASSERT_TRUE(write_png(dir / name, image));
     }
 };
 
 TEST_F(Diff, IdenticalImagesInAnyMixOfFormats) {
-    CommandRun r = diff("a.png a.bmp");
+    ProgramRun r = diff("a.png a.bmp");
     EXPECT_EQ(r.code, 0) << r.err;
     const std::string text = out();
     EXPECT_NE(text.find("a.png: 40x20"), std::string::npos) << text;
@@ -68,7 +80,7 @@ TEST_F(Diff, SlightlyDifferentPassesOnlyWithinTheTolerance) {
     b.pixel(20, 10)[2] = static_cast<std::uint8_t>(b.pixel(20, 10)[2] - 6);
     write_png_file("b.png", b);
 
-    CommandRun exact = diff("a.png b.png");
+    ProgramRun exact = diff("a.png b.png");
     EXPECT_EQ(exact.code, 1) << "exact by default";
     EXPECT_NE(out().find("max channel difference: 6"), std::string::npos) << out();
     EXPECT_NE(out().find("9 of 800 (1.1250%"), std::string::npos) << out();
@@ -124,7 +136,7 @@ TEST_F(Diff, DifferentImagesAndDifferentSizes) {
     EXPECT_NE(out().find("OUTSIDE"), std::string::npos) << out();
 
     write_png_file("small.png", Image8(20, 10));
-    CommandRun r = diff("a.png small.png -o heat.png --max-pixels 100");
+    ProgramRun r = diff("a.png small.png -o heat.png --max-pixels 100");
     EXPECT_EQ(r.code, 1) << "sizes that differ never match";
     EXPECT_NE(out().find("small.png: 20x10"), std::string::npos) << out();
     EXPECT_NE(out().find("the sizes differ"), std::string::npos) << out();
@@ -134,7 +146,7 @@ TEST_F(Diff, DifferentImagesAndDifferentSizes) {
 
 TEST_F(Diff, UnreadableImagesAreIoErrors) {
     std::ofstream(dir / "junk.png") << "not an image at all";
-    CommandRun r = diff("a.png junk.png");
+    ProgramRun r = diff("a.png junk.png");
     EXPECT_EQ(r.code, 3);
     EXPECT_NE(r.err.find("junk.png"), std::string::npos) << r.err;
     r = diff("missing.bmp a.png");
@@ -149,7 +161,7 @@ TEST_F(Diff, UsageErrors) {
     EXPECT_EQ(diff("a.png").code, 2);
     EXPECT_EQ(diff("a.png a.bmp --threshold 256").code, 2);
     EXPECT_EQ(diff("a.png a.bmp --max-pixels -1").code, 2);
-    CommandRun r = diff("a.png a.bmp --bogus");
+    ProgramRun r = diff("a.png a.bmp --bogus");
     EXPECT_EQ(r.code, 2);
     EXPECT_NE(r.err.find("jtracer-cli diff --help"), std::string::npos) << r.err;
     EXPECT_EQ(diff("--help").code, 0);
@@ -168,11 +180,10 @@ scene {
 }
 )";
 
-class Expect : public test::ScratchDir {
+class Expect : public CliFolder {
   protected:
     void SetUp() override {
-        ScratchDir::SetUp();
-        std::ofstream(dir / "scene.jts") << scene;
+        test::write_file(dir / "scene.jts", scene);
         ASSERT_EQ(run(cli + " -q scene.jts -o ref.png").code, 0);
         Expected<Image8> read = read_image(dir / "ref.png");
         ASSERT_TRUE(read);
@@ -182,7 +193,7 @@ class Expect : public test::ScratchDir {
 };
 
 TEST_F(Expect, MatchingRenderExitsZero) {
-    CommandRun r = run(cli + " scene.jts -o out.png --expect ref.png");
+    ProgramRun r = run(cli + " scene.jts -o out.png --expect ref.png");
     EXPECT_EQ(r.code, 0) << r.err;
     EXPECT_NE(r.err.find("matches ref.png"), std::string::npos) << r.err;
     EXPECT_TRUE(exists("out.png"));
@@ -194,7 +205,7 @@ TEST_F(Expect, DifferingRenderWritesTheRenderAndTheDifferences) {
     for (int x = 0; x < 6; ++x)
         changed.pixel(x, 0)[1] = static_cast<std::uint8_t>(changed.pixel(x, 0)[1] ^ 0x40);
     ASSERT_TRUE(write_png(dir / "changed.png", changed));
-    CommandRun r = run(cli + " scene.jts -o out/render.png --expect changed.png");
+    ProgramRun r = run(cli + " scene.jts -o out/render.png --expect changed.png");
     EXPECT_EQ(r.code, 3) << "the folder for the render does not exist: " << r.err;
     std::filesystem::create_directory(dir / "out");
     r = run(cli + " scene.jts -o out/render.png --expect changed.png");
@@ -216,7 +227,7 @@ TEST_F(Expect, DifferingRenderWritesTheRenderAndTheDifferences) {
 }
 
 TEST_F(Expect, SizeMismatchMissingReferenceAndMisuse) {
-    CommandRun r = run(cli + " scene.jts --width 48 -o big.png --expect ref.png");
+    ProgramRun r = run(cli + " scene.jts --width 48 -o big.png --expect ref.png");
     EXPECT_EQ(r.code, 1);
     EXPECT_NE(r.err.find("48x16"), std::string::npos) << r.err;
     EXPECT_NE(r.err.find("24x16"), std::string::npos) << r.err;
@@ -230,15 +241,15 @@ TEST_F(Expect, SizeMismatchMissingReferenceAndMisuse) {
 
 TEST_F(Expect, ListCamerasPrintsTheNamesOneALine) {
     ASSERT_EQ(run(cli + " --list-cameras scene.jts").code, 0);
-    EXPECT_EQ(file_text(dir / "stdout.txt"), "Main\nHigh Angle\n");
+    EXPECT_EQ(out(), "Main\nHigh Angle\n");
     // A scene with errors still lists the cameras it has.
     std::ofstream(dir / "broken.jts") << scene << "\nscene { sphere { radius: ; } }\n";
     ASSERT_EQ(run(cli + " --list-cameras broken.jts").code, 0);
-    EXPECT_EQ(file_text(dir / "stdout.txt"), "Main\nHigh Angle\n");
+    EXPECT_EQ(out(), "Main\nHigh Angle\n");
     EXPECT_EQ(run(cli + " --list-cameras missing.jts").code, 3);
     // Hidden from --help.
     ASSERT_EQ(run(cli + " --help").code, 0);
-    EXPECT_EQ(file_text(dir / "stdout.txt").find("list-cameras"), std::string::npos);
+    EXPECT_EQ(out().find("list-cameras"), std::string::npos);
 }
 
 }  // namespace

@@ -12,7 +12,7 @@
 #include <cctype>
 #include <fstream>
 
-namespace jt::hardening {
+namespace jt::test {
 namespace {
 
 namespace fs = std::filesystem;
@@ -81,7 +81,7 @@ TEST_F(BadInput, EveryClassOfMalformedSceneIsLocatedAndExitsOne) {
         SCOPED_TRACE(scene.what);
         write_file(dir / "bad.jts", scene.text);
         write_file(dir / "keep.bmp", precious);
-        CliResult r = run({"bad.jts", "-o", "keep.bmp"});
+        ProgramRun r = run({"bad.jts", "-o", "keep.bmp"});
         EXPECT_EQ(r.code, 1) << r.err;
         EXPECT_EQ(r.err.find("bad.jts:"), 0u) << r.err;
         EXPECT_NE(r.err.find("bad.jts:" + scene.location), std::string::npos) << r.err;
@@ -93,7 +93,7 @@ TEST_F(BadInput, EveryClassOfMalformedSceneIsLocatedAndExitsOne) {
 
 TEST_F(BadInput, SceneWithoutCameraIsAnErrorAboutTheWholeFile) {
     write_file(dir / "bad.jts", "render_settings { width: 8; height: 8; }\n");
-    CliResult r = run({"bad.jts", "-o", "out.bmp"});
+    ProgramRun r = run({"bad.jts", "-o", "out.bmp"});
     EXPECT_EQ(r.code, 1);
     EXPECT_NE(r.err.find("bad.jts: error: every render needs a camera"), std::string::npos)
         << r.err;
@@ -119,7 +119,7 @@ class UnusableFiles : public CliSandbox {
     void expect_io_error(const std::vector<std::string>& args, const std::string& named,
                          const std::string& reason, bool unprivileged = false) {
         const std::vector<std::string> before = files();
-        CliResult r = unprivileged ? run_unprivileged(args) : run(args);
+        ProgramRun r = unprivileged ? run_unprivileged(args) : run(args);
         EXPECT_EQ(r.code, 3) << r.err;
         EXPECT_EQ(r.err.rfind("jtracer-cli: ", 0), 0u) << r.err;
         EXPECT_NE(r.err.find("'" + named + "'"), std::string::npos) << r.err;
@@ -188,7 +188,7 @@ TEST_F(HugeImages, SizesOutOfRangeOnTheCommandLineAreUsageErrors) {
           {"--width", "99999999999999999999"},
           {"--height", "-3"}}) {
         args.insert(args.begin(), "scene.jts");
-        CliResult r = run(args);
+        ProgramRun r = run(args);
         EXPECT_EQ(r.code, 2) << r.err;
         EXPECT_NE(r.err.find("not in range"), std::string::npos) << r.err;
         EXPECT_EQ(files(), std::vector<std::string>{"scene.jts"});
@@ -196,7 +196,7 @@ TEST_F(HugeImages, SizesOutOfRangeOnTheCommandLineAreUsageErrors) {
 }
 
 TEST_F(HugeImages, ImageBeyondTheBmpLimitIsASceneError) {
-    CliResult r = run({"scene.jts", "--width", "65535", "--height", "65535", "-o", "big.png"});
+    ProgramRun r = run({"scene.jts", "--width", "65535", "--height", "65535", "-o", "big.png"});
     EXPECT_EQ(r.code, 1) << r.err;
     EXPECT_NE(r.err.find("65535 x 65535 image does not fit"), std::string::npos) << r.err;
     EXPECT_EQ(files(), std::vector<std::string>{"scene.jts"});
@@ -216,8 +216,8 @@ TEST_F(HugeImages, ImageTooLargeForMemoryIsRefusedBeforeRendering) {
     const std::uint64_t needed = 65535ull * 21000 * 33;
     if (memory_available() == 0 || memory_available() > needed)
         GTEST_SKIP() << "this machine could hold the image; the test would render it";
-    CliResult r = run({"scene.jts", "--width", "65535", "--height", "21000", "--samples", "1024",
-                       "-o", "big.bmp"});
+    ProgramRun r = run({"scene.jts", "--width", "65535", "--height", "21000", "--samples", "1024",
+                        "-o", "big.bmp"});
     EXPECT_EQ(r.code, 3) << r.err;
     EXPECT_NE(r.err.find("needs about"), std::string::npos) << r.err;
     EXPECT_NE(r.err.find("nothing was written"), std::string::npos) << r.err;
@@ -231,4 +231,4 @@ TEST_F(HugeImages, ImageTooLargeForMemoryIsRefusedBeforeRendering) {
 }
 
 }  // namespace
-}  // namespace jt::hardening
+}  // namespace jt::test

@@ -1,17 +1,6 @@
 #include "cli_sandbox.hpp"
 
-#include <fcntl.h>
-#include <grp.h>
-#include <sys/wait.h>
-#include <unistd.h>
-
-#include <algorithm>
-#include <fstream>
-#include <sstream>
-
-namespace jt::hardening {
-
-namespace fs = std::filesystem;
+namespace jt::test {
 
 const char* const small_scene = R"(
 render_settings { width: 32; height: 18; filename: "from_scene.bmp"; recurse_depth: 2; }
@@ -25,102 +14,20 @@ scene {
 }
 )";
 
-fs::path showcase_path() {
-    return fs::path(JT_SOURCE_DIR) / "scenes" / "showcase.jts";
-}
-
-std::string read_file(const fs::path& path) {
-    std::ifstream in(path, std::ios::binary);
-    std::stringstream text;
-    text << in.rdbuf();
-    return text.str();
-}
-
-void write_file(const fs::path& path, const std::string& bytes) {
-    std::ofstream(path, std::ios::binary) << bytes;
-}
-
 void CliSandbox::SetUp() {
-    const auto* info = testing::UnitTest::GetInstance()->current_test_info();
-    std::string name = info->name();
-    std::replace(name.begin(), name.end(), '/', '_');  // parameterised tests: "Name/0"
-    dir = fs::temp_directory_path() /
-          ("jtracer_hardening_" + name + "_" + std::to_string(::getpid()));
-    fs::remove_all(dir);
-    fs::create_directories(dir);
     write_file(dir / "scene.jts", small_scene);
 }
 
-void CliSandbox::TearDown() {
-    std::error_code ec;
-    fs::permissions(dir, fs::perms::owner_all, fs::perm_options::add, ec);
-    if (!HasFailure()) fs::remove_all(dir, ec);
+Command CliSandbox::cli(const std::vector<std::string>& args) const {
+    Command command{{JT_CLI}, dir};
+    command.argv.insert(command.argv.end(), args.begin(), args.end());
+    return command;
 }
 
-namespace {
-
-constexpr uid_t nobody = 65534;
-
-pid_t spawn(const fs::path& dir, const std::vector<std::string>& args, bool unprivileged) {
-    // Everything the child needs is prepared before fork: after it, only
-    // async-signal-safe calls.
-    std::vector<std::string> strings{JT_CLI};
-    strings.insert(strings.end(), args.begin(), args.end());
-    std::vector<char*> argv;
-    for (std::string& s : strings) argv.push_back(s.data());
-    argv.push_back(nullptr);
-    const std::string err_path = (dir / "stderr.txt").string();
-    const std::string dir_path = dir.string();
-    pid_t pid = ::fork();
-    if (pid == 0) {
-        int err = ::open(err_path.c_str(), O_WRONLY | O_CREAT | O_TRUNC, 0644);
-        int null = ::open("/dev/null", O_RDWR);
-        if (err < 0 || null < 0 || ::chdir(dir_path.c_str()) != 0) ::_exit(126);
-        if (unprivileged && ::getuid() == 0 &&
-            (::setgroups(0, nullptr) != 0 || ::setgid(nobody) != 0 || ::setuid(nobody) != 0))
-            ::_exit(126);
-        ::dup2(null, STDIN_FILENO);
-        ::dup2(null, STDOUT_FILENO);
-        ::dup2(err, STDERR_FILENO);
-        ::execv(argv[0], argv.data());
-        ::_exit(127);
-    }
-    return pid;
-}
-
-}  // namespace
-
-pid_t CliSandbox::start(const std::vector<std::string>& args) {
-    return spawn(dir, args, false);
-}
-
-CliResult CliSandbox::run_unprivileged(const std::vector<std::string>& args) {
-    return finish(spawn(dir, args, true));
-}
-
-CliResult CliSandbox::finish(pid_t pid) {
-    CliResult result;
-    int status = 0;
-    while (::waitpid(pid, &status, 0) < 0 && errno == EINTR) {
-    }
-    if (WIFEXITED(status)) result.code = WEXITSTATUS(status);
-    if (WIFSIGNALED(status)) result.signal = WTERMSIG(status);
-    result.err = read_file(dir / "stderr.txt");
-    fs::remove(dir / "stderr.txt");
-    return result;
-}
-
-CliResult CliSandbox::run(const std::vector<std::string>& args) {
-    return finish(start(args));
-}
-
-std::vector<std::string> CliSandbox::files() const {
-    std::vector<std::string> names;
-    for (const auto& entry : fs::directory_iterator(dir))
-        if (entry.path().filename() != "stderr.txt")
-            names.push_back(entry.path().filename().string());
-    std::sort(names.begin(), names.end());
-    return names;
+ProgramRun CliSandbox::run_unprivileged(const std::vector<std::string>& args) const {
+    Command command = cli(args);
+    command.unprivileged = true;
+    return run_program(command);
 }
 
 std::vector<std::string> CliSandbox::temporary_files() const {
@@ -130,4 +37,4 @@ std::vector<std::string> CliSandbox::temporary_files() const {
     return names;
 }
 
-}  // namespace jt::hardening
+}  // namespace jt::test

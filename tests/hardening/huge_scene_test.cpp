@@ -8,7 +8,7 @@
 
 #include <fstream>
 
-namespace jt::hardening {
+namespace jt::test {
 namespace {
 
 constexpr int primitive_count = 10'000'000;
@@ -35,7 +35,7 @@ using HugeScene = CliSandbox;
 
 TEST_F(HugeScene, TenMillionPrimitivesRenderOrFailClearly) {
     write_huge_scene(dir / "huge.jts");
-    CliResult r = run({"huge.jts", "-o", "huge.bmp"});
+    ProgramRun r = run({"huge.jts", "-o", "huge.bmp"});
     std::filesystem::remove(dir / "huge.jts");
     EXPECT_EQ(r.signal, 0) << r.err;
     if (r.code == 3) {
@@ -62,4 +62,4 @@ TEST_F(HugeScene, TenMillionPrimitivesRenderOrFailClearly) {
 }
 
 }  // namespace
-}  // namespace jt::hardening
+}  // namespace jt::test

@@ -2,12 +2,13 @@
 // second, exits 130 / 143, writes nothing and leaves the older output intact.
 
 #include "cli_sandbox.hpp"
+#include "common/scenes.hpp"
 
 #include <chrono>
 #include <csignal>
 #include <thread>
 
-namespace jt::hardening {
+namespace jt::test {
 namespace {
 
 using Clock = std::chrono::steady_clock;
@@ -25,20 +26,19 @@ TEST_P(Interruption, StopsPromptlyWritesNothingKeepsTheOldOutput) {
     const std::string precious = "an older render\n";
     write_file(dir / "out.bmp", precious);
     // One thread and many samples: a render of 15 s or more.
-    pid_t pid =
-        start({showcase_path().string(), "-o", "out.bmp", "--samples", "64", "--threads", "1"});
-    ASSERT_GT(pid, 0);
+    RunningProgram render(cli({source_path("scenes/showcase.jts").string(), "-o", "out.bmp",
+                               "--samples", "64", "--threads", "1"}));
+    ASSERT_GT(render.pid(), 0);
     // Without a terminal the CLI logs "rendering: N%" once it is well under way.
     const auto give_up = Clock::now() + std::chrono::seconds(120);
-    while (read_file(dir / "stderr.txt").find("rendering:") == std::string::npos &&
-           Clock::now() < give_up)
+    while (render.err_so_far().find("rendering:") == std::string::npos && Clock::now() < give_up)
         std::this_thread::sleep_for(std::chrono::milliseconds(20));
-    ASSERT_NE(read_file(dir / "stderr.txt").find("rendering:"), std::string::npos)
+    ASSERT_NE(render.err_so_far().find("rendering:"), std::string::npos)
         << "the render never reported progress";
 
     const auto sent = Clock::now();
-    ASSERT_EQ(::kill(pid, signal), 0);
-    CliResult r = finish(pid);
+    ASSERT_EQ(::kill(render.pid(), signal), 0);
+    ProgramRun r = render.finish();
     const double seconds = std::chrono::duration<double>(Clock::now() - sent).count();
 
     EXPECT_EQ(r.signal, 0) << "killed by the signal instead of handling it";
@@ -56,4 +56,4 @@ INSTANTIATE_TEST_SUITE_P(Signals, Interruption, testing::Values(SIGINT, SIGTERM)
                          });
 
 }  // namespace
-}  // namespace jt::hardening
+}  // namespace jt::test

@@ -11,7 +11,7 @@
 #include <string>
 #include <vector>
 
-namespace jt::hardening {
+namespace jt::test {
 namespace {
 
 const std::string camera =
@@ -109,4 +109,4 @@ TEST(Limits, LargestBmpWidthDecodes) {
 }
 
 }  // namespace
-}  // namespace jt::hardening
+}  // namespace jt::test

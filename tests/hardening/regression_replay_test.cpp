@@ -11,7 +11,7 @@
 #include <fstream>
 #include <iterator>
 
-namespace jt::hardening {
+namespace jt::test {
 namespace {
 
 namespace fs = std::filesystem;
@@ -62,4 +62,4 @@ TEST(FuzzRegressions, TheLocationCheckRejectsDiagnosticsOutsideTheText) {
 }
 
 }  // namespace
-}  // namespace jt::hardening
+}  // namespace jt::test

@@ -28,7 +28,7 @@ std::string many_spheres() {
 
 TEST(LargeScene, EveryRecordInPlace) {
     const std::string text = many_spheres();
-    ParseResult r = testing::parse_clean(text);
+    ParseResult r = test::parse_clean(text);
     ASSERT_EQ(r.scene.primitives.size(), static_cast<std::size_t>(sphere_count));
     ASSERT_EQ(r.source.primitives.size(), static_cast<std::size_t>(sphere_count));
     ASSERT_EQ(r.source.children.size(), 2u * sphere_count);
@@ -83,7 +83,7 @@ TEST(LargeScene, SameSceneWithoutTheSourceMap) {
 TEST(LargeScene, DiagnosticsInABigScene) {
     std::string text = many_spheres();
     text.insert(text.rfind("point_light"), "sphere { radius: -1; material { x { } } }\n");
-    EXPECT_EQ(testing::brief(parse_scene(text).diagnostics),
+    EXPECT_EQ(test::brief(parse_scene(text).diagnostics),
               "6002:18: error: 'radius' must be greater than 0, got -1\n"
               "6002:33: error: unexpected block 'x' in 'material', which holds only properties");
 }

@@ -8,8 +8,8 @@
 namespace jt {
 namespace {
 
-using testing::brief;
-using testing::parse_clean;
+using test::brief;
+using test::parse_clean;
 
 double radius_of(std::string_view number) {
     std::string text = "scene { sphere { radius: " + std::string(number) + "; } }";

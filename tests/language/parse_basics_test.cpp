@@ -49,7 +49,7 @@ scene {
     EXPECT_EQ(s.cameras[0].up, Vec3(0, 0, 1));
     EXPECT_EQ(s.cameras[0].aspect, 2.0);
     EXPECT_EQ(s.cameras[0].fov, 60.0);
-    EXPECT_EQ(s.cameras[1], (testing::named_camera("b")));
+    EXPECT_EQ(s.cameras[1], (test::named_camera("b")));
     ASSERT_EQ(s.primitives.size(), 3u);
     EXPECT_EQ(std::get<Sphere>(s.primitives[0].shape), (Sphere{{1, 0, 0}, 2}));
     EXPECT_EQ(std::get<Plane>(s.primitives[1].shape), (Plane{{0, 0, 1}, -2}));

@@ -5,8 +5,8 @@
 namespace jt {
 namespace {
 
-using testing::brief;
-using testing::parse_clean;
+using test::brief;
+using test::parse_clean;
 
 TEST(Defaults, EmptyBlocksGiveTheTableDefaults) {
     ParseResult r = parse_clean(

@@ -10,7 +10,7 @@
 namespace jt {
 namespace {
 
-using testing::brief;
+using test::brief;
 
 class Timed : public ::testing::Test {
   protected:

@@ -2,6 +2,9 @@
 
 #include "jtracer/scene_file.hpp"
 
+#include "common/files.hpp"
+#include "common/scratch_dir.hpp"
+
 #include "test_util.hpp"
 
 #include <unistd.h>
@@ -14,25 +17,12 @@ namespace {
 
 namespace fs = std::filesystem;
 
-class SceneFile : public ::testing::Test {
+class SceneFile : public test::ScratchTest {
   protected:
-    void SetUp() override {
-        dir_ = fs::temp_directory_path() /
-               ("jt_scene_file_" + std::to_string(::getpid()) + "_" +
-                ::testing::UnitTest::GetInstance()->current_test_info()->name());
-        fs::create_directories(dir_);
-    }
-    void TearDown() override {
-        std::error_code ec;
-        fs::permissions(dir_ / "locked.jts", fs::perms::owner_all, ec);
-        fs::remove_all(dir_, ec);
-    }
     fs::path write(const std::string& name, const std::string& text) {
-        fs::path path = dir_ / name;
-        std::ofstream(path, std::ios::binary) << text;
-        return path;
+        test::write_file(dir / name, text);
+        return dir / name;
     }
-    fs::path dir_;
 };
 
 TEST_F(SceneFile, ReadsAFileWhole) {
@@ -43,17 +33,17 @@ TEST_F(SceneFile, ReadsAFileWhole) {
 }
 
 TEST_F(SceneFile, MissingFile) {
-    fs::path path = dir_ / "nope.jts";
+    fs::path path = dir / "nope.jts";
     const Expected<std::string> file = read_text_file(path);
     ASSERT_FALSE(file);
     EXPECT_EQ(file.error().message, "cannot read '" + path.string() + "': no such file");
 }
 
 TEST_F(SceneFile, Directory) {
-    const Expected<std::string> file = read_text_file(dir_);
-    const std::string dir = dir_.string();
+    const Expected<std::string> file = read_text_file(dir);
+    const std::string shown = dir.string();
     ASSERT_FALSE(file);
-    EXPECT_EQ(file.error().message, "'" + dir + "' is a directory, not a scene file");
+    EXPECT_EQ(file.error().message, "'" + shown + "' is a directory, not a scene file");
 }
 
 TEST_F(SceneFile, TooLarge) {
@@ -111,7 +101,7 @@ TEST_F(SceneFile, WithoutTheSourceMapTheFindingsAreStillLocated) {
     EXPECT_EQ(unmapped.parsed.source, SceneSource{});
     EXPECT_FALSE(mapped.parsed.source.properties.empty());
     EXPECT_EQ(check_scene(unmapped), check_scene(mapped));
-    EXPECT_EQ(testing::brief(check_scene(unmapped)),
+    EXPECT_EQ(test::brief(check_scene(unmapped)),
               "3:29: warning: 'radius' is set again in this 'sphere'; the later value wins (first "
               "set at line 3)\n"
               "2:41: error: camera 1: 'look_at' equals 'position', so the camera looks nowhere\n"
@@ -128,12 +118,12 @@ TEST_F(SceneFile, WithoutTheSourceMapTheFindingsAreStillLocated) {
 TEST_F(SceneFile, ValidationIsSkippedWhenParsingFailed) {
     const LoadedScene loaded =
         load_scene_file(write("bad.jts", "scene { sphere { radius: -1; } }")).value();
-    EXPECT_EQ(testing::brief(check_scene(loaded)),
+    EXPECT_EQ(test::brief(check_scene(loaded)),
               "1:26: error: 'radius' must be greater than 0, got -1");
 }
 
 TEST_F(SceneFile, LoadReportsIoErrorsWithoutParsing) {
-    const Expected<LoadedScene> loaded = load_scene_file(dir_ / "missing.jts");
+    const Expected<LoadedScene> loaded = load_scene_file(dir / "missing.jts");
     ASSERT_FALSE(loaded);
     EXPECT_NE(loaded.error().message.find("no such file"), std::string::npos);
 }

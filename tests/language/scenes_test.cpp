@@ -53,7 +53,7 @@ TEST(Scenes, EveryFileRoundTripsThroughTheSerializer) {
         const LoadedScene loaded = load_scene_file(path).value();
         std::string text = serialize_scene(loaded.parsed.scene);
         ParseResult again = parse_scene(text);
-        EXPECT_EQ(testing::brief(again.diagnostics), "") << path << "\n" << text;
+        EXPECT_EQ(test::brief(again.diagnostics), "") << path << "\n" << text;
         EXPECT_TRUE(again.scene == loaded.parsed.scene) << path << "\n" << text;
         // Canonical: serializing the re-read scene gives the same text.
         EXPECT_EQ(serialize_scene(again.scene), text) << path;

@@ -22,7 +22,7 @@ Scene awkward_scene() {
     s.settings.samples = 16;
     s.cameras.push_back(Camera{
         "First", {0.1, 0.2, 0.3}, {1e-300, -0.0, 5e300}, {0, 0, 1}, 1.3333333333333333, 33.3});
-    s.cameras.push_back(testing::named_camera("Second"));
+    s.cameras.push_back(test::named_camera("Second"));
     s.primitives.push_back(
         Primitive{Sphere{{std::numeric_limits<double>::min(), 1e-17, -7.125}, 0.30000000000000004},
                   Material{{1, 0, 0}, {0.2, 0.2, 0.2}, {0.9, 0.8, 0.7}, {1, 1, 1}, 2.5, 128, 0.75},
@@ -32,7 +32,7 @@ Scene awkward_scene() {
                    {TransformKind::yrotate, {0, 0, 0}, 1e-9},
                    {TransformKind::zrotate, {0, 0, 0}, 45}}});
     s.primitives.push_back(Primitive{Plane{{0, 0, -3}, -2.5}, Material{}, {}});
-    s.primitives.push_back(Primitive{Cylinder{0.75, 5}, testing::reflective(1), {}});
+    s.primitives.push_back(Primitive{Cylinder{0.75, 5}, test::reflective(1), {}});
     s.lights.push_back(PointLight{{1.5, 2, 4}, {0, 0.8, 0}});
     return s;
 }
@@ -41,14 +41,14 @@ TEST(Serializer, AwkwardValuesReadBackExactly) {
     Scene s = awkward_scene();
     std::string text = serialize_scene(s);
     ParseResult r = parse_scene(text);
-    EXPECT_EQ(testing::brief(r.diagnostics), "") << text;
+    EXPECT_EQ(test::brief(r.diagnostics), "") << text;
     EXPECT_TRUE(r.scene == s) << text;
 }
 
 TEST(Serializer, WritesShortNumbersAndAFixedLayout) {
     Scene s;
     s.settings.width = 2;
-    s.cameras.push_back(testing::named_camera("c"));
+    s.cameras.push_back(test::named_camera("c"));
     s.primitives.push_back(Primitive{Sphere{{0.1, 0, -2}, 1.5}, Material{}, {}});
     EXPECT_EQ(serialize_scene(s),
               "# Written by JTracer.\n"
@@ -100,7 +100,7 @@ TEST(Serializer, UnwritableStringCharactersBecomeUnderscores) {
 
 TEST(Serializer, EmptySceneReadsBackEqual) {
     ParseResult r = parse_scene(serialize_scene(Scene{}));
-    EXPECT_EQ(testing::brief(r.diagnostics), "");
+    EXPECT_EQ(test::brief(r.diagnostics), "");
     EXPECT_TRUE(r.scene == Scene{});
 }
 

@@ -5,8 +5,8 @@
 namespace jt {
 namespace {
 
-using testing::brief;
-using testing::parse_clean;
+using test::brief;
+using test::parse_clean;
 
 TEST(Structure, MissingSemicolonPointsJustPastTheValue) {
     EXPECT_EQ(brief("scene {\n  sphere {\n    radius: 2\n  }\n}"),
@@ -252,17 +252,17 @@ namespace jt {
 namespace {
 
 TEST(Structure, BlocksInsideBlocksThatHoldOnlyProperties) {
-    EXPECT_EQ(testing::brief("render_settings { foo { } width: 2; }"),
+    EXPECT_EQ(test::brief("render_settings { foo { } width: 2; }"),
               "1:19: error: unexpected block 'foo' in 'render_settings', which holds only "
               "properties");
-    EXPECT_EQ(testing::brief("scene { sphere { material { x { } } } }"),
+    EXPECT_EQ(test::brief("scene { sphere { material { x { } } } }"),
               "1:29: error: unexpected block 'x' in 'material', which holds only properties");
-    EXPECT_EQ(testing::brief("cameras { perspective_camera { bar { } } }"),
+    EXPECT_EQ(test::brief("cameras { perspective_camera { bar { } } }"),
               "1:32: error: unexpected block 'bar' in 'perspective_camera', which holds only "
               "properties");
-    EXPECT_EQ(testing::brief("scene { sphere { transform { y { } } } }"),
+    EXPECT_EQ(test::brief("scene { sphere { transform { y { } } } }"),
               "1:30: error: unexpected block 'y' in 'transform', which holds only properties");
-    EXPECT_EQ(testing::brief("scene { point_light { glow { } } }"),
+    EXPECT_EQ(test::brief("scene { point_light { glow { } } }"),
               "1:23: error: unexpected block 'glow' in 'point_light', which holds only "
               "properties");
 }

@@ -8,7 +8,7 @@
 #include <string>
 #include <vector>
 
-namespace jt::testing {
+namespace jt::test {
 
 // "3:12: error: MESSAGE" for each diagnostic, joined by newlines: compact to compare.
 inline std::string brief(const std::vector<Diagnostic>& diagnostics) {
@@ -44,4 +44,4 @@ inline Material reflective(double reflection) {
     return m;
 }
 
-}  // namespace jt::testing
+}  // namespace jt::test

@@ -7,11 +7,11 @@
 namespace jt {
 namespace {
 
-using testing::brief;
+using test::brief;
 
 // The validation diagnostics of a scene that parses clean.
 std::string validate(std::string_view text) {
-    ParseResult r = testing::parse_clean(text);
+    ParseResult r = test::parse_clean(text);
     return brief(validate_scene(r.scene, r.source));
 }
 
@@ -99,7 +99,7 @@ TEST(Validate, ActiveCameraNamingNoCameraWarns) {
               "2:17: warning: no camera is named \"Far\": using the first camera (\"Near\")");
     auto pick = [](std::string_view active) {
         Scene s;
-        s.cameras = {testing::named_camera("a"), testing::named_camera("b")};
+        s.cameras = {test::named_camera("a"), test::named_camera("b")};
         s.settings.active_camera = std::string(active);
         return active_camera_index(s);
     };
@@ -131,7 +131,7 @@ TEST(Validate, CatchesOutOfRangeValuesInScenesBuiltInCode) {
     wide.fov = 180;
     s.cameras.push_back(wide);
     s.primitives.push_back(Primitive{Sphere{{0, 0, 0}, -1}, Material{}, {}});
-    s.primitives.push_back(Primitive{Plane{{0, 0, 0}, 1}, testing::reflective(2), {}});
+    s.primitives.push_back(Primitive{Plane{{0, 0, 0}, 1}, test::reflective(2), {}});
     s.primitives.push_back(Primitive{Cylinder{0, 0},
                                      [] {
                                          Material m;

@@ -1,14 +1,15 @@
 // jtracer-mpi under mpirun: the CLI's bytes with any number of ranks, one
 // message for a bad scene, and a clean failure when a rank dies.
 
-#include "command.hpp"
+#include "common/files.hpp"
+#include "common/scratch_dir.hpp"
 
 #include <chrono>
 
 namespace jt {
 namespace {
 
-using test::CommandRun;
+using test::ProgramRun;
 
 const std::string cli = "'" JT_CLI "' ";
 const std::string showcase = "'" JT_SOURCE_DIR "/scenes/showcase.jts' ";
@@ -31,31 +32,29 @@ std::size_t count(const std::string& text, const std::string& what) {
     return n;
 }
 
-class Mpi : public test::ScratchDir {
+class Mpi : public test::ScratchTest {
   protected:
     void expect_same_bytes_as_cli(const std::string& scene, const std::string& settings,
                                   const std::string& tile_size,
                                   std::initializer_list<int> rank_counts) {
-        CommandRun single = run(cli + scene + settings + " -q -o cli.bmp");
+        ProgramRun single = run_shell(cli + scene + settings + " -q -o cli.bmp");
         ASSERT_EQ(single.code, 0) << single.err;
         for (int ranks : rank_counts) {
             const std::string name = "mpi" + std::to_string(ranks) + ".bmp";
-            CommandRun r = run(mpirun(ranks) + scene + settings + " --tile-size " + tile_size +
-                               " -q --stats -o " + name);
+            ProgramRun r = run_shell(mpirun(ranks) + scene + settings + " --tile-size " +
+                                     tile_size + " -q --stats -o " + name);
             ASSERT_EQ(r.code, 0) << r.err;
             EXPECT_NE(r.err.find("stats: " + std::to_string(ranks) + " ranks"), std::string::npos)
                 << r.err;
-            EXPECT_EQ(test::file_text(dir / name), test::file_text(dir / "cli.bmp"))
+            EXPECT_EQ(test::read_file(dir / name), test::read_file(dir / "cli.bmp"))
                 << ranks << " ranks must give jtracer-cli's bytes";
         }
     }
 
-    std::vector<std::string> files() const {
-        std::vector<std::string> names;
-        for (const auto& e : std::filesystem::directory_iterator(dir)) {
-            std::string n = e.path().filename().string();
-            if (n != "stdout.txt" && n != "stderr.txt" && n != "bad.jts") names.push_back(n);
-        }
+    // The files in `dir` other than the scene a test wrote.
+    std::vector<std::string> outputs() const {
+        std::vector<std::string> names = files();
+        std::erase(names, "bad.jts");
         return names;
     }
 };
@@ -70,37 +69,37 @@ TEST_F(Mpi, ManualSceneMatchesTheCliByteForByte) {
 }
 
 TEST_F(Mpi, BadSceneIsReportedOnceAndEveryRankFails) {
-    std::ofstream(dir / "bad.jts") << "scene { sphere { radius: -1; } }\n";
-    CommandRun r = run(mpirun(3) + "bad.jts -o out.bmp");
+    test::write_file(dir / "bad.jts", "scene { sphere { radius: -1; } }\n");
+    ProgramRun r = run_shell(mpirun(3) + "bad.jts -o out.bmp");
     EXPECT_EQ(r.code, 1) << r.err;
     EXPECT_EQ(count(r.err, "bad.jts:1:26: error: 'radius' must be greater than 0"), 1u) << r.err;
-    EXPECT_TRUE(files().empty());
+    EXPECT_TRUE(outputs().empty());
 }
 
 TEST_F(Mpi, MissingSceneFileIsReportedOnce) {
-    CommandRun r = run(mpirun(2) + "nowhere.jts -o out.bmp");
+    ProgramRun r = run_shell(mpirun(2) + "nowhere.jts -o out.bmp");
     EXPECT_EQ(r.code, 3) << r.err;
     EXPECT_EQ(count(r.err, "nowhere.jts"), 1u) << r.err;
-    EXPECT_TRUE(files().empty());
+    EXPECT_TRUE(outputs().empty());
 }
 
 TEST_F(Mpi, UsageErrorIsReportedOnce) {
-    CommandRun r = run(mpirun(2) + showcase + "--samples 0");
+    ProgramRun r = run_shell(mpirun(2) + showcase + "--samples 0");
     EXPECT_EQ(r.code, 2) << r.err;
     EXPECT_EQ(count(r.err, "--samples"), 1u) << r.err;
 }
 
 TEST_F(Mpi, UnwritableOutputIsAnIoError) {
-    CommandRun r = run(mpirun(2) + showcase + "--width 40 --height 30 -q -o nowhere/out.bmp");
+    ProgramRun r = run_shell(mpirun(2) + showcase + "--width 40 --height 30 -q -o nowhere/out.bmp");
     EXPECT_EQ(r.code, 3) << r.err;
     EXPECT_EQ(count(r.err, "cannot write"), 1u) << r.err;
-    EXPECT_TRUE(files().empty());
+    EXPECT_TRUE(outputs().empty());
 }
 
 TEST_F(Mpi, DeadRankFailsTheRunWithoutWritingAFile) {
     const auto start = std::chrono::steady_clock::now();
-    CommandRun r = run("timeout 120 " + mpirun(3, "JT_MPI_TEST_ABORT_RANK=1") + showcase +
-                       "--width 160 --height 96 --tile-size 16 -q -o out.bmp");
+    ProgramRun r = run_shell("timeout 120 " + mpirun(3, "JT_MPI_TEST_ABORT_RANK=1") + showcase +
+                             "--width 160 --height 96 --tile-size 16 -q -o out.bmp");
     const double seconds =
         std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
     EXPECT_NE(r.code, 0) << r.err;
@@ -111,7 +110,7 @@ TEST_F(Mpi, DeadRankFailsTheRunWithoutWritingAFile) {
     EXPECT_TRUE(r.err.find("exited on signal 6") != std::string::npos ||
                 r.err.find("nothing was written") != std::string::npos)
         << r.err;
-    EXPECT_TRUE(files().empty()) << "no image and no temporary file may be left";
+    EXPECT_TRUE(outputs().empty()) << "no image and no temporary file may be left";
 }
 
 }  // namespace

@@ -1,7 +1,8 @@
 // jtracer-cli --region / --region-output and jtracer-merge end to end: parts
 // rendered separately merge to the exact bytes of a whole render.
 
-#include "command.hpp"
+#include "common/files.hpp"
+#include "common/scratch_dir.hpp"
 
 #include "jtracer/bmp.hpp"
 #include "jtracer/region.hpp"
@@ -9,34 +10,34 @@
 namespace jt {
 namespace {
 
-using test::CommandRun;
+using test::ProgramRun;
 
 const std::string cli = "'" JT_CLI "' ";
 const std::string merge = "'" JT_MERGE "' ";
 const std::string showcase = "'" JT_SOURCE_DIR "/scenes/showcase.jts' ";
 const std::string manual = "'" JT_SOURCE_DIR "/scenes/manual/transform.jts' ";
 
-class RegionCli : public test::ScratchDir {
+class RegionCli : public test::ScratchTest {
   protected:
     // Renders `scene` whole and as the given parts, merges, and compares bytes.
     void expect_parts_merge_to_whole(const std::string& scene, const std::string& size,
                                      const std::vector<std::string>& regions) {
-        CommandRun whole = run(cli + scene + size + " -q -o whole.bmp");
+        ProgramRun whole = run_shell(cli + scene + size + " -q -o whole.bmp");
         ASSERT_EQ(whole.code, 0) << whole.err;
         std::string names;
         for (std::size_t i = 0; i < regions.size(); ++i) {
             std::string name = "part" + std::to_string(i) + ".bmp";
-            CommandRun r = run(cli + scene + size + " -q --region " + regions[i] +
-                               " --region-output -o " + name);
+            ProgramRun r = run_shell(cli + scene + size + " -q --region " + regions[i] +
+                                     " --region-output -o " + name);
             ASSERT_EQ(r.code, 0) << regions[i] << ": " << r.err;
             names += " " + name;
         }
-        CommandRun m = run(merge + "-o merged.bmp" + names);
+        ProgramRun m = run_shell(merge + "-o merged.bmp" + names);
         ASSERT_EQ(m.code, 0) << m.err;
         EXPECT_NE(m.err.find("from " + std::to_string(regions.size()) + " parts"),
                   std::string::npos)
             << m.err;
-        EXPECT_EQ(test::file_text(dir / "merged.bmp"), test::file_text(dir / "whole.bmp"))
+        EXPECT_EQ(test::read_file(dir / "merged.bmp"), test::read_file(dir / "whole.bmp"))
             << "merged parts must equal the whole render byte for byte";
     }
 };
@@ -53,9 +54,9 @@ TEST_F(RegionCli, ManualScenePartsMergeToTheWholeImage) {
 }
 
 TEST_F(RegionCli, RegionPartIsTheWholeImagesPixelsFromTheTopLeft) {
-    ASSERT_EQ(run(cli + showcase + "--width 80 --height 60 -q -o whole.bmp").code, 0);
-    CommandRun r =
-        run(cli + showcase + "--width 80 --height 60 -q --region 10,5,30,25 -o full.bmp");
+    ASSERT_EQ(run_shell(cli + showcase + "--width 80 --height 60 -q -o whole.bmp").code, 0);
+    ProgramRun r =
+        run_shell(cli + showcase + "--width 80 --height 60 -q --region 10,5,30,25 -o full.bmp");
     ASSERT_EQ(r.code, 0) << r.err;
     const Expected<Image8> whole_file = read_bmp(dir / "whole.bmp");
     const Expected<Image8> full_file = read_bmp(dir / "full.bmp");
@@ -73,7 +74,8 @@ TEST_F(RegionCli, RegionPartIsTheWholeImagesPixelsFromTheTopLeft) {
 
 TEST_F(RegionCli, MalformedRegionIsAUsageError) {
     for (const char* region : {"1,2,3", "a,b,c,d", "10,0,5,5", "-1,0,5,5"}) {
-        CommandRun r = run(cli + showcase + "--width 40 --height 30 -o out.bmp --region " + region);
+        ProgramRun r =
+            run_shell(cli + showcase + "--width 40 --height 30 -o out.bmp --region " + region);
         EXPECT_EQ(r.code, 2) << region;
         EXPECT_NE(r.err.find("--region"), std::string::npos) << r.err;
         EXPECT_FALSE(exists("out.bmp"));
@@ -81,7 +83,8 @@ TEST_F(RegionCli, MalformedRegionIsAUsageError) {
 }
 
 TEST_F(RegionCli, RegionOutsideTheImageIsAUsageErrorSayingWhichBound) {
-    CommandRun r = run(cli + showcase + "--width 40 --height 30 -q -o out.bmp --region 0,0,40,31");
+    ProgramRun r =
+        run_shell(cli + showcase + "--width 40 --height 30 -q -o out.bmp --region 0,0,40,31");
     EXPECT_EQ(r.code, 2);
     EXPECT_NE(r.err.find("reaches past the bottom edge of the 40x30 image (Y1 may be at most 30)"),
               std::string::npos)
@@ -90,10 +93,10 @@ TEST_F(RegionCli, RegionOutsideTheImageIsAUsageErrorSayingWhichBound) {
 }
 
 TEST_F(RegionCli, RegionOutputNeedsARegionAndABmpName) {
-    CommandRun r = run(cli + showcase + "--region-output -o out.bmp");
+    ProgramRun r = run_shell(cli + showcase + "--region-output -o out.bmp");
     EXPECT_EQ(r.code, 2);
     EXPECT_NE(r.err.find("needs --region"), std::string::npos) << r.err;
-    r = run(cli + showcase + "--region 0,0,4,4 --region-output -o out.png");
+    r = run_shell(cli + showcase + "--region 0,0,4,4 --region-output -o out.png");
     EXPECT_EQ(r.code, 2);
     EXPECT_NE(r.err.find("writes a BMP"), std::string::npos) << r.err;
     EXPECT_FALSE(exists("out.bmp"));
@@ -102,42 +105,42 @@ TEST_F(RegionCli, RegionOutputNeedsARegionAndABmpName) {
 
 TEST_F(RegionCli, MergeRefusesGapsOverlapsAndForeignFilesWritingNothing) {
     const std::string size = "--width 40 --height 30 -q --region-output ";
-    ASSERT_EQ(run(cli + showcase + size + "--region 0,0,40,15 -o top.bmp").code, 0);
-    ASSERT_EQ(run(cli + showcase + size + "--region 0,15,40,30 -o bottom.bmp").code, 0);
-    ASSERT_EQ(run(cli + showcase + size + "--region 0,10,40,20 -o middle.bmp").code, 0);
-    ASSERT_EQ(run(cli + showcase + "--width 40 --height 30 -q -o plain.bmp").code, 0);
+    ASSERT_EQ(run_shell(cli + showcase + size + "--region 0,0,40,15 -o top.bmp").code, 0);
+    ASSERT_EQ(run_shell(cli + showcase + size + "--region 0,15,40,30 -o bottom.bmp").code, 0);
+    ASSERT_EQ(run_shell(cli + showcase + size + "--region 0,10,40,20 -o middle.bmp").code, 0);
+    ASSERT_EQ(run_shell(cli + showcase + "--width 40 --height 30 -q -o plain.bmp").code, 0);
 
-    CommandRun gap = run(merge + "-o out.bmp top.bmp");
+    ProgramRun gap = run_shell(merge + "-o out.bmp top.bmp");
     EXPECT_EQ(gap.code, 1);
     EXPECT_NE(gap.err.find("no part covers pixel 0,15"), std::string::npos) << gap.err;
-    CommandRun overlap = run(merge + "-o out.bmp top.bmp bottom.bmp middle.bmp");
+    ProgramRun overlap = run_shell(merge + "-o out.bmp top.bmp bottom.bmp middle.bmp");
     EXPECT_EQ(overlap.code, 1);
     EXPECT_NE(overlap.err.find("overlaps"), std::string::npos) << overlap.err;
-    CommandRun plain = run(merge + "-o out.bmp top.bmp plain.bmp");
+    ProgramRun plain = run_shell(merge + "-o out.bmp top.bmp plain.bmp");
     EXPECT_EQ(plain.code, 3);
     EXPECT_NE(plain.err.find("plain.bmp"), std::string::npos) << plain.err;
     EXPECT_NE(plain.err.find("no region record"), std::string::npos) << plain.err;
-    CommandRun missing = run(merge + "-o out.bmp top.bmp nowhere.bmp");
+    ProgramRun missing = run_shell(merge + "-o out.bmp top.bmp nowhere.bmp");
     EXPECT_EQ(missing.code, 3);
     EXPECT_NE(missing.err.find("nowhere.bmp"), std::string::npos) << missing.err;
     EXPECT_FALSE(exists("out.bmp"));
 
-    CommandRun usage = run(merge + "top.bmp");
+    ProgramRun usage = run_shell(merge + "top.bmp");
     EXPECT_EQ(usage.code, 2) << "no -o";
 }
 
 TEST_F(RegionCli, MergeRefusesPartsOfDifferentFrameSizes) {
-    ASSERT_EQ(run(cli + showcase +
-                  "--width 40 --height 30 -q --region-output --region "
-                  "0,0,40,15 -o a.bmp")
+    ASSERT_EQ(run_shell(cli + showcase +
+                        "--width 40 --height 30 -q --region-output --region "
+                        "0,0,40,15 -o a.bmp")
                   .code,
               0);
-    ASSERT_EQ(run(cli + showcase +
-                  "--width 40 --height 31 -q --region-output --region "
-                  "0,15,40,31 -o b.bmp")
+    ASSERT_EQ(run_shell(cli + showcase +
+                        "--width 40 --height 31 -q --region-output --region "
+                        "0,15,40,31 -o b.bmp")
                   .code,
               0);
-    CommandRun r = run(merge + "-o out.bmp a.bmp b.bmp");
+    ProgramRun r = run_shell(merge + "-o out.bmp a.bmp b.bmp");
     EXPECT_EQ(r.code, 1);
     EXPECT_NE(r.err.find("b.bmp is a part of a 40x31 frame, but a.bmp of a 40x30 one"),
               std::string::npos)

@@ -2,6 +2,7 @@
 // files, and RenderJob::region_image against a full render.
 
 #include "jtracer/region.hpp"
+#include "common/scratch_dir.hpp"
 #include "jtracer/bmp.hpp"
 #include "jtracer/parser.hpp"
 #include "jtracer/region_file.hpp"
@@ -76,11 +77,9 @@ TEST(Region, CropAndPasteAreInverse) {
     EXPECT_EQ(frame.pixel(1, 1)[0], 0);
 }
 
-class RegionFile : public testing::Test {
+class RegionFile : public test::ScratchTest {
   protected:
-    std::filesystem::path path = std::filesystem::temp_directory_path() /
-                                 ("jtracer_region_file_" + std::to_string(::getpid()) + ".bmp");
-    void TearDown() override { std::filesystem::remove(path); }
+    const std::filesystem::path path = dir / "region.bmp";
 };
 
 TEST_F(RegionFile, RoundTripsPixelsAndPlacement) {

@@ -4,6 +4,7 @@
 // reuses the prepared geometry. None of it may change the final pixels.
 
 #include "app_actions.hpp"
+#include "common/scenes.hpp"
 #include "headless.hpp"
 #include "jtracer/parser.hpp"
 #include "jtracer/render_job.hpp"
@@ -24,7 +25,7 @@
 namespace jt::view {
 namespace {
 
-using namespace jt::view::test;
+using namespace jt::test;
 using Clock = std::chrono::steady_clock;
 
 RenderOptions options_for(const Scene& scene, bool previews) {

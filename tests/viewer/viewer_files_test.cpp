@@ -18,12 +18,12 @@
 namespace jt::view {
 namespace {
 
-using namespace jt::view::test;
+using namespace jt::test;
 
 // Written beside and renamed over, as editors save: never seen half-written.
 void save_as_editor(const fs::path& path, const std::string& text) {
     const fs::path temp = fs::path(path).concat(".tmp");
-    write(temp, text);
+    write_file(temp, text);
     fs::rename(temp, path);
 }
 
@@ -34,7 +34,7 @@ std::string replaced(std::string text, std::string_view from, std::string_view t
     return text;
 }
 
-const std::string kOriginal = read(kScene);
+const std::string kOriginal = read_file(kScene);
 // What another program writes while the viewer has the file open.
 const std::string kTheirs =
     replaced(kOriginal, "point_light { position: <3, 5, 4>; intensity: <1, 1, 1>; }",
@@ -78,7 +78,7 @@ TEST_F(ViewerFiles, ReloadWithUnsavedEditsKeepsThemUntilTheUserChooses) {
     resolve_reload(state, ReloadChoice::keep_edits);
     EXPECT_FALSE(state.pending_reload.has_value());
     EXPECT_EQ(state.doc.scene.primitives[1].material.pigment, kMyPigment);
-    EXPECT_EQ(read(file), kTheirs) << "nothing written yet";
+    EXPECT_EQ(read_file(file), kTheirs) << "nothing written yet";
 }
 
 TEST_F(ViewerFiles, ReloadCanDropTheEdits) {
@@ -99,7 +99,7 @@ TEST_F(ViewerFiles, ReloadCanReapplyTheEditsOntoTheNewerText) {
     EXPECT_EQ(state.doc.scene.lights[0].intensity, Colour(0.5)) << "their change";
     EXPECT_TRUE(has_unsaved_edits(state.doc));
     ASSERT_TRUE(save_scene(state)) << state.message;
-    EXPECT_EQ(read(file),
+    EXPECT_EQ(read_file(file),
               replaced(kTheirs, "pigment: <0.9, 0.2, 0.1>;", "pigment: <0.25, 0.5, 0.75>;"));
     undo(state);  // back to the file as they wrote it
     EXPECT_EQ(state.doc.scene, parse_scene(kTheirs).scene);
@@ -112,10 +112,10 @@ TEST_F(ViewerFiles, SaveRefusesToOverwriteANewerFileUntilToldTo) {
     EXPECT_FALSE(save_scene(state));
     EXPECT_NE(state.save_conflict.find("changed by another program"), std::string::npos)
         << state.save_conflict;
-    EXPECT_EQ(read(file), kTheirs);
+    EXPECT_EQ(read_file(file), kTheirs);
     ASSERT_TRUE(save_scene_anyway(state)) << state.message;
     EXPECT_TRUE(state.save_conflict.empty());
-    EXPECT_EQ(read(file), kMine);
+    EXPECT_EQ(read_file(file), kMine);
     // Our own save is not a change from outside.
     ASSERT_TRUE(viewer.run_until_loaded(state));
     EXPECT_FALSE(state.pending_reload.has_value());
@@ -128,7 +128,7 @@ TEST_F(ViewerFiles, SaveRefusesToOverwriteABrokenOrDeletedFile) {
     EXPECT_TRUE(state.doc.load_failed);
     EXPECT_EQ(state.doc.scene.primitives[1].material.pigment, kMyPigment);
     EXPECT_FALSE(save_scene(state));
-    EXPECT_EQ(read(file), broken) << "their newer (broken) text stays";
+    EXPECT_EQ(read_file(file), broken) << "their newer (broken) text stays";
 
     fs::remove(file);
     ASSERT_TRUE(viewer.run_until_loaded(state));
@@ -136,13 +136,13 @@ TEST_F(ViewerFiles, SaveRefusesToOverwriteABrokenOrDeletedFile) {
     EXPECT_NE(state.save_conflict.find("was deleted"), std::string::npos) << state.save_conflict;
     EXPECT_FALSE(fs::exists(file));
     ASSERT_TRUE(save_scene_anyway(state)) << state.message;
-    EXPECT_EQ(read(file), kMine);
+    EXPECT_EQ(read_file(file), kMine);
 }
 
 TEST_F(ViewerFiles, SavingAnUntouchedFileNeedsNoConfirmation) {
     edit_pigment();
     ASSERT_TRUE(save_scene(state)) << state.message;
-    EXPECT_EQ(read(file), kMine);
+    EXPECT_EQ(read_file(file), kMine);
     fs::last_write_time(file, fs::last_write_time(file) + std::chrono::hours(1));  // touched only
     ASSERT_TRUE(viewer.run_until_loaded(state));
     edit_scene(state, [](Scene& s) { s.settings.samples = 2; });
@@ -155,11 +155,11 @@ TEST_F(ViewerFiles, UndoingANewCameraAfterSavingSavesItsRemoval) {
     ASSERT_TRUE(copy_free_camera_to_scene(state, "mine"));
     EXPECT_FALSE(copy_free_camera_to_scene(state, "mine")) << "names stay unique";
     ASSERT_TRUE(save_scene(state)) << state.message;
-    EXPECT_EQ(parse_scene(read(file)).scene.cameras.size(), 3u);
+    EXPECT_EQ(parse_scene(read_file(file)).scene.cameras.size(), 3u);
     undo(state);
     ASSERT_EQ(state.doc.scene.cameras.size(), 2u);
     ASSERT_TRUE(save_scene(state)) << state.message;
-    EXPECT_EQ(read(file), kOriginal) << "byte for byte the file before the camera";
+    EXPECT_EQ(read_file(file), kOriginal) << "byte for byte the file before the camera";
 }
 
 // A file the viewer had loaded, then broken in each way a file breaks.

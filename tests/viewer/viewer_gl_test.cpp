@@ -21,7 +21,7 @@
 namespace jt::view {
 namespace {
 
-using namespace jt::view::test;
+using namespace jt::test;
 
 // The image the core renders for `scene` through `camera`, without the viewer.
 Image8 core_render(const Scene& scene, int camera) {
@@ -137,7 +137,8 @@ TEST_F(ViewerGl, BrokenReloadKeepsTheLastImageAndListsDiagnostics) {
     const auto jobs = state.renderer.jobs_started();
 
     // Save by rename, as many editors do, with a missing ';' on line 3.
-    write(fs::path(file).concat(".new"), "render_settings {\n    width: 64;\n    height: 48\n}\n");
+    write_file(fs::path(file).concat(".new"),
+               "render_settings {\n    width: 64;\n    height: 48\n}\n");
     fs::rename(fs::path(file).concat(".new"), file);
     ASSERT_TRUE(viewer.run_until_loaded(state));
 
@@ -156,7 +157,7 @@ TEST_F(ViewerGl, BrokenReloadKeepsTheLastImageAndListsDiagnostics) {
     fs::remove(file);
     ASSERT_TRUE(viewer.run_until_loaded(state));
     EXPECT_TRUE(state.doc.load_failed);
-    write(file, std::string("\x00\xff\xfe garbage {{{", 16));
+    write_file(file, std::string("\x00\xff\xfe garbage {{{", 16));
     ASSERT_TRUE(viewer.run_until_loaded(state));
     EXPECT_TRUE(state.doc.load_failed);
     EXPECT_EQ(state.display, good);
@@ -178,7 +179,7 @@ TEST_F(ViewerGl, SaveSceneWritesOnlyTheEditedValues) {
     viewer.press_key(state, keys::letter('S'), /*ctrl=*/true);
     EXPECT_FALSE(has_unsaved_edits(state.doc)) << state.message;
 
-    std::string expected = read(kScene);
+    std::string expected = read_file(kScene);
     auto replace = [&](std::string_view from, std::string_view to) {
         const std::size_t at = expected.find(from);
         ASSERT_NE(at, std::string::npos);
@@ -187,7 +188,7 @@ TEST_F(ViewerGl, SaveSceneWritesOnlyTheEditedValues) {
     replace("pigment: <0.9, 0.2, 0.1>;   # red", "pigment: <0.25, 0.5, 0.75>;   # red");
     replace("    ambient_light: <0.2, 0.2, 0.2>;\n}",
             "    ambient_light: <0.2, 0.2, 0.2>;\n    samples: 2;\n}");
-    EXPECT_EQ(read(file), expected);
+    EXPECT_EQ(read_file(file), expected);
     for (const auto& entry : fs::directory_iterator(file.parent_path()))
         EXPECT_EQ(entry.path().filename(), "scene.jts") << "no temporary file left";
 
@@ -207,7 +208,7 @@ TEST_F(ViewerGl, FreeCameraCopiedIntoTheSceneIsSavedAsANewCamera) {
     ASSERT_EQ(state.doc.scene.cameras.size(), 3u);
     EXPECT_EQ(state.camera_index, 2);
     ASSERT_TRUE(save_scene(state)) << state.message;
-    ParseResult saved = parse_scene(read(file));
+    ParseResult saved = parse_scene(read_file(file));
     ASSERT_TRUE(saved.ok());
     ASSERT_EQ(saved.scene.cameras.size(), 3u);
     EXPECT_EQ(saved.scene.cameras[2].name, "mine");
@@ -219,7 +220,7 @@ TEST_F(ViewerGl, SaveImageWritesTheCurrentRender) {
     ASSERT_TRUE(viewer.run_until_complete(state, kTimeout));
     const fs::path out = scene_copy("image").parent_path() / "render.bmp";
     ASSERT_TRUE(save_image(state, out)) << state.message;
-    const std::string bytes = read(out);
+    const std::string bytes = read_file(out);
     ASSERT_GT(bytes.size(), 54u);
     EXPECT_EQ(bytes.substr(0, 2), "BM");
 }

@@ -2,6 +2,9 @@
 // image placement, image files, recent files.
 
 #include "app_actions.hpp"
+#include "common/files.hpp"
+#include "common/image_header.hpp"
+#include "common/scratch_dir.hpp"
 #include "file_watcher.hpp"
 #include "free_camera.hpp"
 #include "image_files.hpp"
@@ -16,75 +19,64 @@
 #include <fstream>
 #include <thread>
 
-#include <unistd.h>
-
 namespace jt::view {
 namespace {
 
 namespace fs = std::filesystem;
 
-fs::path temp_dir(const std::string& name) {
-    fs::path dir = fs::temp_directory_path() /
-                   ("jtracer-view-test-" + name + "-" + std::to_string(::getpid()));
-    fs::remove_all(dir);
-    fs::create_directories(dir);
-    return dir;
-}
-
-void write(const fs::path& path, const std::string& text) {
-    std::ofstream(path, std::ios::binary) << text;
-}
+using test::make_scratch_dir;
+using test::write_file;
 
 TEST(FileWatcher, SeesAnInPlaceWriteThatChangesTheSize) {
-    const fs::path file = temp_dir("watch1") / "a.jts";
-    write(file, "one");
+    const fs::path file = make_scratch_dir("watch1") / "a.jts";
+    write_file(file, "one");
     FileWatcher watcher(std::chrono::milliseconds(0));
     watcher.watch(file);
     EXPECT_FALSE(watcher.poll());
-    write(file, "three");
+    write_file(file, "three");
     EXPECT_TRUE(watcher.poll());
     EXPECT_FALSE(watcher.poll()) << "a change is reported once";
 }
 
 TEST(FileWatcher, SeesASaveByRenameEvenWithTheSameSizeAndTime) {
-    const fs::path dir = temp_dir("watch2");
-    write(dir / "a.jts", "abc");
+    const fs::path dir = make_scratch_dir("watch2");
+    write_file(dir / "a.jts", "abc");
     FileWatcher watcher(std::chrono::milliseconds(0));
     watcher.watch(dir / "a.jts");
-    write(dir / "a.jts.new", "xyz");
+    write_file(dir / "a.jts.new", "xyz");
     fs::last_write_time(dir / "a.jts.new", fs::last_write_time(dir / "a.jts"));
     fs::rename(dir / "a.jts.new", dir / "a.jts");
     EXPECT_TRUE(watcher.poll()) << "the inode changed";
 }
 
 TEST(FileWatcher, SeesDeletionAndReappearance) {
-    const fs::path file = temp_dir("watch3") / "a.jts";
-    write(file, "abc");
+    const fs::path file = make_scratch_dir("watch3") / "a.jts";
+    write_file(file, "abc");
     FileWatcher watcher(std::chrono::milliseconds(0));
     watcher.watch(file);
     fs::remove(file);
     EXPECT_TRUE(watcher.poll());
     EXPECT_FALSE(stamp_file(file).exists);
-    write(file, "abc");
+    write_file(file, "abc");
     EXPECT_TRUE(watcher.poll());
 }
 
 TEST(FileWatcher, AcknowledgedChangesAreNotReported) {
-    const fs::path file = temp_dir("watch4") / "a.jts";
-    write(file, "abc");
+    const fs::path file = make_scratch_dir("watch4") / "a.jts";
+    write_file(file, "abc");
     FileWatcher watcher(std::chrono::milliseconds(0));
     watcher.watch(file);
-    write(file, "abcd");
+    write_file(file, "abcd");
     watcher.acknowledge();
     EXPECT_FALSE(watcher.poll());
 }
 
 TEST(FileWatcher, ChecksTheDiskAtMostOncePerInterval) {
-    const fs::path file = temp_dir("watch5") / "a.jts";
-    write(file, "abc");
+    const fs::path file = make_scratch_dir("watch5") / "a.jts";
+    write_file(file, "abc");
     FileWatcher watcher(std::chrono::hours(1));
     watcher.watch(file);
-    write(file, "abcdef");
+    write_file(file, "abcdef");
     EXPECT_FALSE(watcher.poll());
     EXPECT_TRUE(watcher.poll(FileWatcher::Clock::now() + std::chrono::hours(2)));
 }
@@ -193,25 +185,20 @@ TEST(PlaceImage, NothingToPlaceGivesAnEmptyRect) {
 }
 
 TEST(ImageFiles, WritesAPngWithTheImageSize) {
-    const fs::path file = temp_dir("png") / "out.png";
+    const fs::path file = make_scratch_dir("png") / "out.png";
     Image8 image(7, 3);
     image.pixel(0, 0)[0] = 255;
     const Expected<void> saved = save_image(file, image);
     ASSERT_TRUE(saved) << saved.error().message;
-    std::ifstream in(file, std::ios::binary);
-    std::string bytes((std::istreambuf_iterator<char>(in)), {});
+    const std::string bytes = test::read_file(file);
     ASSERT_GT(bytes.size(), 24u);
     EXPECT_EQ(bytes.substr(1, 3), "PNG");
-    auto be32 = [&](std::size_t at) {
-        return (std::uint8_t(bytes[at]) << 24) | (std::uint8_t(bytes[at + 1]) << 16) |
-               (std::uint8_t(bytes[at + 2]) << 8) | std::uint8_t(bytes[at + 3]);
-    };
-    EXPECT_EQ(be32(16), 7u);
-    EXPECT_EQ(be32(20), 3u);
+    EXPECT_EQ(test::png_size(bytes).width, 7u);
+    EXPECT_EQ(test::png_size(bytes).height, 3u);
 }
 
 TEST(ImageFiles, RefusesUnknownExtensionsAndEmptyImagesWithoutWriting) {
-    const fs::path dir = temp_dir("bad");
+    const fs::path dir = make_scratch_dir("bad");
     const Expected<void> jpg = save_image(dir / "out.jpg", Image8(2, 2));
     ASSERT_FALSE(jpg);
     EXPECT_NE(jpg.error().message.find(".png"), std::string::npos);
@@ -220,8 +207,8 @@ TEST(ImageFiles, RefusesUnknownExtensionsAndEmptyImagesWithoutWriting) {
 }
 
 TEST(ImageFiles, AFailedWriteLeavesTheOldFile) {
-    const fs::path dir = temp_dir("keep");
-    write(dir / "a.txt", "old");
+    const fs::path dir = make_scratch_dir("keep");
+    write_file(dir / "a.txt", "old");
     const Expected<void> written = write_text_atomically(dir / "missing-dir" / "a.txt", "new");
     ASSERT_FALSE(written);
     EXPECT_FALSE(written.error().message.empty());
@@ -232,7 +219,7 @@ TEST(ImageFiles, AFailedWriteLeavesTheOldFile) {
 }
 
 TEST(RecentFiles, NewestFirstWithoutDuplicatesAndPersisted) {
-    const fs::path store = temp_dir("recent") / "sub" / "recent.txt";
+    const fs::path store = make_scratch_dir("recent") / "sub" / "recent.txt";
     {
         RecentFiles recent;
         recent.load(store);

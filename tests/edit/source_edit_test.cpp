@@ -5,10 +5,10 @@
 #include "jtracer/parser.hpp"
 #include "jtracer/value_text.hpp"
 
-#include <gtest/gtest.h>
+#include "common/files.hpp"
+#include "common/scenes.hpp"
 
-#include <fstream>
-#include <sstream>
+#include <gtest/gtest.h>
 
 namespace jt {
 namespace {
@@ -183,10 +183,7 @@ TEST(SourceEdit, RemovingAnInlineCameraLeavesTheRestOfItsLine) {
 }
 
 TEST(SourceEdit, ShowcaseGetsANewCameraInItsOwnStyle) {
-    std::ifstream in(std::string(JT_SOURCE_DIR) + "/scenes/showcase.jts", std::ios::binary);
-    std::stringstream buffer;
-    buffer << in.rdbuf();
-    const std::string text = buffer.str();
+    const std::string text = test::read_file(test::source_path("scenes/showcase.jts"));
     Scene edited = parse_ok(text).scene;
     Camera camera = edited.cameras[0];
     camera.name = "viewer 1";
@@ -260,10 +257,7 @@ TEST(SourceEdit, OneComponentEditKeepsTheOtherComponentsText) {
 }
 
 TEST(SourceEdit, ShowcaseEditChangesOnlyThatValuesBytes) {
-    std::ifstream in(std::string(JT_SOURCE_DIR) + "/scenes/showcase.jts", std::ios::binary);
-    std::stringstream buffer;
-    buffer << in.rdbuf();
-    const std::string text = buffer.str();
+    const std::string text = test::read_file(test::source_path("scenes/showcase.jts"));
     ParseResult base = parse_ok(text);
     ASSERT_FALSE(base.scene.primitives.empty());
     Scene edited = base.scene;

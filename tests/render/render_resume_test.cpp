@@ -3,9 +3,9 @@
 // the image of a job that was never interrupted, and never runs a finished
 // pass again.
 
+#include "common/scenes.hpp"
 #include "jtracer/parser.hpp"
 #include "jtracer/render_job.hpp"
-#include "viewer_test_files.hpp"
 
 #include <gtest/gtest.h>
 
@@ -17,7 +17,7 @@
 namespace jt {
 namespace {
 
-using view::test::showcase_at;
+using test::showcase_at;
 
 RenderOptions options_for(const Scene& scene, int samples) {
     RenderOptions options = render_options_for(scene);

@@ -1,5 +1,6 @@
 // BMP and PNG files, atomic writes and the image diff.
 
+#include "common/scratch_dir.hpp"
 #include "jtracer/atomic_file.hpp"
 #include "jtracer/bmp.hpp"
 #include "jtracer/image_diff.hpp"
@@ -30,13 +31,7 @@ std::uint32_t le32(const std::vector<std::uint8_t>& b, std::size_t at) {
     return b[at] | (b[at + 1] << 8) | (b[at + 2] << 16) | (std::uint32_t(b[at + 3]) << 24);
 }
 
-fs::path scratch_dir(const std::string& name) {
-    fs::path dir =
-        fs::temp_directory_path() / ("jtracer_io_test_" + name + "_" + std::to_string(::getpid()));
-    fs::remove_all(dir);
-    fs::create_directories(dir);
-    return dir;
-}
+using test::make_scratch_dir;
 
 TEST(Bmp, HeaderLayoutAndBottomUpPaddedBgrRows) {
     Image8 image = sample_image();
@@ -104,7 +99,7 @@ TEST(ImageFile, FormatFollowsTheExtension) {
     EXPECT_EQ(format_from_extension("shot.png.bak"), ImageFormat::bmp);
     EXPECT_EQ(format_from_extension("shot"), ImageFormat::bmp);
 
-    fs::path dir = scratch_dir("format");
+    fs::path dir = make_scratch_dir("format");
     Image8 image = sample_image();
     for (const char* name : {"x.bmp", "x.png"}) {
         const Expected<void> written = write_image(dir / name, image, format_from_extension(name));
@@ -120,7 +115,7 @@ TEST(ImageFile, FormatFollowsTheExtension) {
 }
 
 TEST(AtomicFile, ReplacesWholeAndLeavesNoTemporary) {
-    fs::path dir = scratch_dir("atomic");
+    fs::path dir = make_scratch_dir("atomic");
     fs::path target = dir / "out.bmp";
     { std::ofstream(target) << "old contents"; }
     const Expected<void> written = write_bmp(target, sample_image());
@@ -137,7 +132,7 @@ TEST(AtomicFile, ReplacesWholeAndLeavesNoTemporary) {
 }
 
 TEST(AtomicFile, FailureNamesTheFileAndWritesNothing) {
-    fs::path dir = scratch_dir("atomic_fail");
+    fs::path dir = make_scratch_dir("atomic_fail");
     const Expected<void> written = write_bmp(dir / "missing" / "out.bmp", sample_image());
     ASSERT_FALSE(written);
     const std::string& error = written.error().message;
