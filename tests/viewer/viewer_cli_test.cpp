@@ -19,7 +19,7 @@ namespace fs = std::filesystem;
 
 // Runs the viewer with `arguments` and no DISPLAY.
 ProgramRun run_viewer(const std::vector<std::string>& arguments) {
-    Command command{{"env", "-u", "DISPLAY", "-u", "WAYLAND_DISPLAY", JT_VIEWER_EXE}};
+    Command command{{"env", "-u", "DISPLAY", "-u", "WAYLAND_DISPLAY", JT_VIEWER_EXE}, {}};
     command.argv.insert(command.argv.end(), arguments.begin(), arguments.end());
     return run_program(command);
 }

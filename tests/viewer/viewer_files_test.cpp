@@ -4,6 +4,7 @@
 // the last good image, the UI's frames or a crash.
 
 #include "app_actions.hpp"
+#include "common/files.hpp"
 #include "headless.hpp"
 #include "jtracer/parser.hpp"
 #include "viewer_test_files.hpp"
@@ -18,6 +19,7 @@
 namespace jt::view {
 namespace {
 
+namespace fs = std::filesystem;
 using namespace jt::test;
 
 // Written beside and renamed over, as editors save: never seen half-written.

@@ -2,6 +2,7 @@
 // is what the core renders, and edits, camera switches and reloads behave.
 
 #include "app_actions.hpp"
+#include "common/files.hpp"
 #include "headless.hpp"
 #include "jtracer/parser.hpp"
 #include "jtracer/render_job.hpp"
@@ -21,6 +22,7 @@
 namespace jt::view {
 namespace {
 
+namespace fs = std::filesystem;
 using namespace jt::test;
 
 // The image the core renders for `scene` through `camera`, without the viewer.
