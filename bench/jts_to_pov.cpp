@@ -13,7 +13,7 @@
 // with no gamma anywhere (assumed_gamma 1; render with File_Gamma=1.0).
 
 #include "converter_cli.hpp"
-#include "geometry/affine.hpp"
+#include "jtracer/affine.hpp"
 #include "jtracer/validate.hpp"
 #include "render/camera_rays.hpp"
 

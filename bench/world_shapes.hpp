@@ -5,7 +5,7 @@
 // (geometry/affine.hpp): left-out primitives are skipped, and a sphere or
 // cylinder stays one only under a rotation and a uniform scale.
 
-#include "geometry/affine.hpp"
+#include "jtracer/affine.hpp"
 #include "jtracer/scene.hpp"
 
 #include <cstddef>

@@ -19,7 +19,7 @@
 namespace jt {
 namespace {
 
-using testing::brief;
+using test::brief;
 
 // --- the table against the language's ------------------------------------------
 

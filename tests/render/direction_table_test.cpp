@@ -2,7 +2,7 @@
 // must be among its cell's candidates, and occlusion answers must not change.
 
 #include "render/direction_table.hpp"
-#include "geometry/affine.hpp"
+#include "jtracer/affine.hpp"
 #include "geometry/intersect.hpp"
 #include "render/prepared_scene.hpp"
 #include "render/ray_queries.hpp"

@@ -1,7 +1,7 @@
 // The geometry layer on its own: transforms, exact intersections, and the BVH
 // queries checked against brute force over every primitive.
 
-#include "geometry/affine.hpp"
+#include "jtracer/affine.hpp"
 #include "geometry/intersect.hpp"
 #include "render/prepared_scene.hpp"
 #include "render/ray_queries.hpp"

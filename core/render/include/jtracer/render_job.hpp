@@ -37,7 +37,7 @@ struct PreparedScene;  // defined in the core's private headers
 
 // Builds the render-ready scene. Primitives whose transform list has a scale
 // with a zero component, or leaves the range of doubles, are left out (one rule,
-// geometry/affine.hpp's object_transform); the validator warns about them with
+// jtracer/affine.hpp's object_transform); the validator warns about them with
 // their location.
 //
 // `previous` may be a scene prepared earlier: when the geometry of `scene`

@@ -2,7 +2,7 @@
 // Axis-aligned bounds for the BVH, padded so that Embree's single-precision
 // traversal never culls a box that the exact double-precision ray would enter.
 
-#include "geometry/affine.hpp"
+#include "jtracer/affine.hpp"
 #include "jtracer/scene.hpp"
 
 #include <embree3/rtcore.h>

@@ -6,7 +6,7 @@
 // inverse transform, and infinite planes (outside the BVH). Every entry keeps
 // `source`, the index of the Scene primitive it came from, for its material.
 
-#include "geometry/affine.hpp"
+#include "jtracer/affine.hpp"
 #include "jtracer/render_job.hpp"
 #include "jtracer/scene.hpp"
 #include "render/direction_table.hpp"

@@ -1,6 +1,6 @@
 #include "jtracer/validate.hpp"
 
-#include "geometry/affine.hpp"
+#include "jtracer/affine.hpp"
 #include "jtracer/schema.hpp"
 #include "jtracer/value_text.hpp"
 

@@ -1,4 +1,4 @@
-#include "geometry/affine.hpp"
+#include "jtracer/affine.hpp"
 
 #include <glm/geometric.hpp>
 #include <glm/matrix.hpp>
