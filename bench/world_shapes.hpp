@@ -2,7 +2,7 @@
 // A scene's primitives placed in world space as plain spheres, capped cylinders
 // and planes: what jts-to-tachyon writes and what kernel-limit hands to
 // Embree's native geometry. Placement follows the renderer's rules
-// (geometry/affine.hpp): left-out primitives are skipped, and a sphere or
+// (jtracer/affine.hpp): left-out primitives are skipped, and a sphere or
 // cylinder stays one only under a rotation and a uniform scale.
 
 #include "jtracer/affine.hpp"

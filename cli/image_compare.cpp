@@ -79,15 +79,8 @@ int run_diff_command(int argc, char** argv) {
                    "pixels over the threshold from red to white, the rest dim grey");
     add_tolerance_flags(app, tolerance);
     app.add_flag("-q,--quiet", quiet, "Print nothing but errors; the exit code tells the result");
-    try {
-        app.parse(argc, argv);
-    } catch (const CLI::CallForHelp& e) {
-        return app.exit(e);
-    } catch (const CLI::ParseError& e) {
-        std::cerr << "jtracer-cli diff: " << e.what()
-                  << "\nRun 'jtracer-cli diff --help' for the options.\n";
-        return exit_usage;
-    }
+    if (std::optional<int> code = parse_command_line(app, argc, argv, "jtracer-cli diff"))
+        return *code;
 
     try {
         Expected<Image8> expected = read_image(expected_path);

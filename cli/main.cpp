@@ -12,8 +12,6 @@
 #include "jtracer/region_file.hpp"
 #include "jtracer/render_job.hpp"
 
-#include <unistd.h>
-
 #include <atomic>
 #include <chrono>
 #include <condition_variable>
@@ -40,8 +38,8 @@ extern "C" void on_interrupt(int signal) {
 // Runs the job on a thread of its own while this one draws progress and
 // watches for Ctrl-C. Returns false when interrupted. The end of the render
 // wakes this thread at once, so that a small render does not wait out a tick.
-bool render(jt::RenderJob& job, bool quiet) {
-    ProgressDisplay display(quiet, ::isatty(STDERR_FILENO) == 1);
+bool render(jt::RenderJob& job, jt::frontend::ProgressStyle progress) {
+    ProgressDisplay display(progress);
     std::mutex mutex;
     std::condition_variable finished;
     bool done = false;
@@ -92,7 +90,8 @@ int run(const Options& o) {
     jt::RenderJob job(*prepared, options);
     std::signal(SIGINT, on_interrupt);
     std::signal(SIGTERM, on_interrupt);
-    if (!render(job, o.quiet) || interrupted.load() != 0) {
+    if (!render(job, jt::frontend::progress_style_for_stderr(o.progress, o.quiet)) ||
+        interrupted.load() != 0) {
         const int signal = interrupted.load() != 0 ? interrupted.load() : SIGINT;
         std::cerr << "jtracer-cli: interrupted by " << (signal == SIGTERM ? "SIGTERM" : "SIGINT")
                   << "; nothing was written\n";

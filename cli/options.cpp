@@ -1,7 +1,6 @@
 #include "options.hpp"
 
 #include "jtracer/image_file.hpp"
-#include "jtracer/version.hpp"
 
 #include <CLI/CLI.hpp>
 
@@ -27,7 +26,7 @@ ParsedOptions parse_options(int argc, char** argv) {
         "Exit codes: 0 ok, 1 errors in the scene (or, with --expect, a render outside the\n"
         "tolerance), 2 bad command line, 3 file I/O error or not enough memory, 130\n"
         "interrupted (Ctrl-C), 143 stopped (SIGTERM).\n");
-    app.set_version_flag("--version", std::string("jtracer-cli ") + jt::version_string());
+    frontend::add_version_flag(app, "jtracer-cli");
     frontend::add_render_flags(app, o);
     app.add_option_function<std::string>(
            "--region",
@@ -51,8 +50,8 @@ ParsedOptions parse_options(int argc, char** argv) {
     add_tolerance_flags(app, o.tolerance);
     // For the shell completions; not a user's option.
     app.add_flag("--list-cameras", o.list_cameras)->group("");
-    try {
-        app.parse(argc, argv);
+    // Rules between options, reported like CLI11's own errors.
+    auto checks = [&] {
         if (o.region_output && !o.region)
             throw CLI::ValidationError("--region-output", "needs --region X0,Y0,X1,Y1");
         if (o.region_output && o.output &&
@@ -67,14 +66,10 @@ ParsedOptions parse_options(int argc, char** argv) {
         const bool tolerance_given = app.count("--threshold") + app.count("--max-pixels") > 0;
         if (tolerance_given && !o.expect)
             throw CLI::ValidationError("--threshold/--max-pixels", "need --expect REFERENCE");
-    } catch (const CLI::CallForHelp& e) {
-        parsed.exit_code = app.exit(e);
-    } catch (const CLI::CallForVersion& e) {
-        parsed.exit_code = app.exit(e);
-    } catch (const CLI::ParseError& e) {
-        std::cerr << "jtracer-cli: " << e.what() << "\nRun 'jtracer-cli --help' for the options.\n";
-        parsed.exit_code = frontend::exit_usage;
-    }
+    };
+    if (std::optional<int> code =
+            frontend::parse_command_line(app, argc, argv, "jtracer-cli", checks))
+        parsed.exit_code = *code;
     return parsed;
 }
 

@@ -3,9 +3,9 @@
 // carries where it belongs (region_file.hpp), so the order and names of the
 // parts do not matter.
 
+#include "jtracer/frontend/command_line.hpp"
 #include "jtracer/image_file.hpp"
 #include "jtracer/merge_regions.hpp"
-#include "jtracer/version.hpp"
 
 #include <CLI/CLI.hpp>
 
@@ -15,7 +15,10 @@
 
 namespace {
 
-enum ExitCode : int { exit_ok = 0, exit_bad_parts = 1, exit_usage = 2, exit_io_error = 3 };
+using jt::frontend::exit_io_error;
+using jt::frontend::exit_ok;
+// 1 means parts that do not make one frame.
+constexpr int exit_bad_parts = jt::frontend::exit_scene_error;
 
 int merge(const std::vector<std::string>& part_paths, const std::string& output, bool quiet) {
     std::vector<jt::RegionPart> parts;
@@ -66,23 +69,15 @@ int main(int argc, char** argv) {
         "\n"
         "Exit codes: 0 ok, 1 parts that do not make one frame, 2 bad command line, 3 file I/O "
         "errors.\n");
-    app.set_version_flag("--version", std::string("jtracer-merge ") + jt::version_string());
+    jt::frontend::add_version_flag(app, "jtracer-merge");
     app.add_option("-o,--output", output,
                    "The whole frame; a name ending in .png gives a PNG, anything else a BMP")
         ->required();
     app.add_option("parts", part_paths, "The region files (BMP)")->required();
     app.add_flag("-q,--quiet", quiet, "No summary; errors still show");
-    try {
-        app.parse(argc, argv);
-    } catch (const CLI::CallForHelp& e) {
-        return app.exit(e);
-    } catch (const CLI::CallForVersion& e) {
-        return app.exit(e);
-    } catch (const CLI::ParseError& e) {
-        std::cerr << "jtracer-merge: " << e.what()
-                  << "\nRun 'jtracer-merge --help' for the options.\n";
-        return exit_usage;
-    }
+    if (std::optional<int> code =
+            jt::frontend::parse_command_line(app, argc, argv, "jtracer-merge"))
+        return *code;
     try {
         return merge(part_paths, output, quiet);
     } catch (const std::bad_alloc&) {

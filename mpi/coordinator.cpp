@@ -5,8 +5,6 @@
 
 #include "jtracer/region.hpp"
 
-#include <unistd.h>
-
 #include <chrono>
 #include <cstdio>
 #include <cstring>
@@ -31,9 +29,9 @@ class Coordinator {
         result_.frame = Image8(width, height);
     }
 
-    CoordinatorResult run(const std::atomic<bool>& stop, bool quiet) {
+    CoordinatorResult run(const std::atomic<bool>& stop, frontend::ProgressStyle progress_style) {
         const auto start = Clock::now();
-        frontend::ProgressDisplay display(quiet, ::isatty(STDERR_FILENO) == 1);
+        frontend::ProgressDisplay display(progress_style);
         for (int rank = 1; rank < ranks_; ++rank)
             for (int i = 0; i < tiles_ahead; ++i) hand_out(rank);
         start_local_tile();
@@ -154,8 +152,8 @@ class Coordinator {
 
 CoordinatorResult run_coordinator(const std::shared_ptr<const PreparedFrame>& frame, int width,
                                   int height, const std::vector<PixelRect>& tiles, int ranks,
-                                  const std::atomic<bool>& stop, bool quiet) {
-    return Coordinator(frame, width, height, tiles, ranks).run(stop, quiet);
+                                  const std::atomic<bool>& stop, frontend::ProgressStyle progress) {
+    return Coordinator(frame, width, height, tiles, ranks).run(stop, progress);
 }
 
 }  // namespace jt::mpi

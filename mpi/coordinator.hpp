@@ -4,6 +4,7 @@
 
 #include "messages.hpp"
 
+#include "jtracer/frontend/progress.hpp"
 #include "jtracer/image.hpp"
 #include "jtracer/render_tile.hpp"
 
@@ -29,6 +30,6 @@ struct CoordinatorResult {
 // the caller must abort the job.
 CoordinatorResult run_coordinator(const std::shared_ptr<const PreparedFrame>& frame, int width,
                                   int height, const std::vector<PixelRect>& tiles, int ranks,
-                                  const std::atomic<bool>& stop, bool quiet);
+                                  const std::atomic<bool>& stop, frontend::ProgressStyle progress);
 
 }  // namespace jt::mpi

@@ -121,8 +121,9 @@ int run(int argc, char** argv, int rank, int ranks) {
         return exit_ok;
     }
 
-    CoordinatorResult result = run_coordinator(frame, setup.render.width, setup.render.height,
-                                               tiles, ranks, interrupted, o.quiet);
+    CoordinatorResult result =
+        run_coordinator(frame, setup.render.width, setup.render.height, tiles, ranks, interrupted,
+                        jt::frontend::progress_style_for_stderr(o.progress, o.quiet));
     if (!result.complete) {
         // The workers still wait for tiles; only an abort ends them.
         std::cerr << "jtracer-mpi: stopped before every tile came back (interrupted, or a rank "

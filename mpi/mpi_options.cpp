@@ -1,7 +1,5 @@
 #include "mpi_options.hpp"
 
-#include "jtracer/version.hpp"
-
 #include <CLI/CLI.hpp>
 
 #include <iostream>
@@ -26,7 +24,7 @@ ParsedOptions parse_options(int argc, char** argv, bool speaks) {
         "\n"
         "Exit codes: 0 ok, 1 errors in the scene, 2 bad command line, 3 file I/O errors;\n"
         "a rank that dies or an interrupt aborts the whole job (non-zero, nothing written).\n");
-    app.set_version_flag("--version", std::string("jtracer-mpi ") + jt::version_string());
+    frontend::add_version_flag(app, "jtracer-mpi");
     frontend::add_render_flags(app, o);
     app.add_option("--tile-size", o.tile_size,
                    "Side of the square tiles handed out to the ranks, in pixels (default 128)")
@@ -38,16 +36,9 @@ ParsedOptions parse_options(int argc, char** argv, bool speaks) {
     std::ostringstream muted;
     std::ostream& out = speaks ? std::cout : muted;
     std::ostream& err = speaks ? std::cerr : muted;
-    try {
-        app.parse(argc, argv);
-    } catch (const CLI::CallForHelp& e) {
-        parsed.exit_code = app.exit(e, out, err);
-    } catch (const CLI::CallForVersion& e) {
-        parsed.exit_code = app.exit(e, out, err);
-    } catch (const CLI::ParseError& e) {
-        err << "jtracer-mpi: " << e.what() << "\nRun 'jtracer-mpi --help' for the options.\n";
-        parsed.exit_code = exit_usage;
-    }
+    if (std::optional<int> code =
+            frontend::parse_command_line(app, argc, argv, "jtracer-mpi", {}, out, err))
+        parsed.exit_code = *code;
     return parsed;
 }
 

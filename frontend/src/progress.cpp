@@ -1,5 +1,7 @@
 #include "jtracer/frontend/progress.hpp"
 
+#include <unistd.h>
+
 #include <cmath>
 #include <cstdio>
 
@@ -40,10 +42,29 @@ std::string render_summary(int width, int height, int samples, const RenderProgr
     return text;
 }
 
+ProgressStyle progress_style(ProgressMode mode, bool quiet, bool stderr_is_terminal) {
+    if (quiet) return ProgressStyle::none;
+    switch (mode) {
+        case ProgressMode::automatic:
+            return stderr_is_terminal ? ProgressStyle::bar : ProgressStyle::none;
+        case ProgressMode::bar:
+            return ProgressStyle::bar;
+        case ProgressMode::log:
+            return ProgressStyle::log;
+        case ProgressMode::none:
+            return ProgressStyle::none;
+    }
+    return ProgressStyle::none;
+}
+
+ProgressStyle progress_style_for_stderr(ProgressMode mode, bool quiet) {
+    return progress_style(mode, quiet, ::isatty(STDERR_FILENO) == 1);
+}
+
 void ProgressDisplay::update(const RenderProgress& progress) {
-    if (quiet_) return;
+    if (style_ == ProgressStyle::none) return;
     int percent = static_cast<int>(std::floor(progress.fraction * 100.0));
-    if (terminal_) {
+    if (style_ == ProgressStyle::bar) {
         int filled = static_cast<int>(progress.fraction * bar_width);
         std::string bar(static_cast<std::size_t>(filled), '#');
         bar.append(static_cast<std::size_t>(bar_width - filled), '.');

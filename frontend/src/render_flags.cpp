@@ -4,6 +4,7 @@
 
 #include <CLI/CLI.hpp>
 
+#include <map>
 #include <string>
 
 namespace jt::frontend {
@@ -25,6 +26,15 @@ void add_render_flags(CLI::App& app, RenderFlags& o) {
     app.add_option("--threads", o.threads, "Worker threads; 0 uses every core")
         ->check(CLI::Range(0, 4096));
     app.add_flag("-q,--quiet", o.quiet, "No progress bar, summary or warnings; errors still show");
+    const std::map<std::string, ProgressMode> modes{{"auto", ProgressMode::automatic},
+                                                    {"bar", ProgressMode::bar},
+                                                    {"log", ProgressMode::log},
+                                                    {"none", ProgressMode::none}};
+    app.add_option("--progress", o.progress,
+                   "How progress shows on stderr: auto (a bar on a terminal, nothing "
+                   "otherwise), bar, log (a plain line per 10%, for log files), none")
+        ->transform(CLI::CheckedTransformer(modes))
+        ->type_name("MODE");
 }
 
 void name_setting_flags(std::vector<Diagnostic>& diagnostics) {

@@ -45,13 +45,13 @@ _jtracer() {
             positional='*.@(bmp|BMP|png|PNG)'
         else
             options='-h --help --version -o --output --camera --width --height --samples
-                --threads -q --quiet --region --region-output --check --expect --threshold
+                --threads -q --quiet --progress --region --region-output --check --expect --threshold
                 --max-pixels'
         fi
         ;;
     jtracer-mpi)
         options='-h --help --version -o --output --camera --width --height --samples --threads
-            -q --quiet --tile-size --stats'
+            -q --quiet --progress --tile-size --stats'
         ;;
     jtracer-merge)
         options='-h --help --version -o --output -q --quiet'
@@ -82,6 +82,10 @@ _jtracer() {
         ;;
     --camera)
         _jtracer_cameras "$1"
+        return
+        ;;
+    --progress)
+        COMPREPLY=($(compgen -W 'auto bar log none' -- "$cur"))
         return
         ;;
     --width | --height | --samples | --threads | --region | --threshold | --max-pixels | \

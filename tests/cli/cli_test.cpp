@@ -190,6 +190,31 @@ TEST_F(Cli, ExistingOutputSurvivesAFailedRender) {
     EXPECT_EQ(text, "precious");
 }
 
+// A script's or CI's log gets no progress unless it asks; a terminal gets the bar.
+TEST_F(Cli, ProgressShowsOnATerminalOnlyUnlessAsked) {
+    const std::string render = "scene.jts --width 640 --height 360 --samples 4 ";
+    test::ProgramRun r = run(render);
+    ASSERT_EQ(r.code, 0) << r.err;
+    EXPECT_EQ(r.err.find("ETA"), std::string::npos) << r.err;
+    EXPECT_EQ(r.err.find("rendering:"), std::string::npos) << r.err;
+    EXPECT_NE(r.err.find("Mrays/s"), std::string::npos) << "the summary still shows: " << r.err;
+
+    r = run(render + "--progress bar");
+    ASSERT_EQ(r.code, 0) << r.err;
+    EXPECT_NE(r.err.find("ETA"), std::string::npos) << r.err;
+    r = run(render + "--progress bar -q");
+    EXPECT_EQ(r.err, "");
+    r = run(render + "--progress sometimes");
+    EXPECT_EQ(r.code, 2);
+    EXPECT_NE(r.err.find("--progress"), std::string::npos) << r.err;
+
+    // script(1) gives the program a terminal as its stderr.
+    if (run_shell("command -v script").code != 0) GTEST_SKIP() << "no script(1) here";
+    r = run_shell("script -qec \"'" JT_CLI "' " + render + "\" /dev/null");
+    ASSERT_EQ(r.code, 0) << r.out;
+    EXPECT_NE(r.out.find("ETA"), std::string::npos) << r.out;
+}
+
 TEST_F(Cli, HelpAndVersion) {
     test::ProgramRun r = run("--help");
     EXPECT_EQ(r.code, 0);

@@ -27,9 +27,9 @@ TEST_P(Interruption, StopsPromptlyWritesNothingKeepsTheOldOutput) {
     write_file(dir / "out.bmp", precious);
     // One thread and many samples: a render of 15 s or more.
     RunningProgram render(cli({source_path("scenes/showcase.jts").string(), "-o", "out.bmp",
-                               "--samples", "64", "--threads", "1"}));
+                               "--samples", "64", "--threads", "1", "--progress", "log"}));
     ASSERT_GT(render.pid(), 0);
-    // Without a terminal the CLI logs "rendering: N%" once it is well under way.
+    // --progress log: the CLI logs "rendering: N%" once it is well under way.
     const auto give_up = Clock::now() + std::chrono::seconds(120);
     while (render.err_so_far().find("rendering:") == std::string::npos && Clock::now() < give_up)
         std::this_thread::sleep_for(std::chrono::milliseconds(20));

@@ -1,9 +1,11 @@
 #pragma once
 // The command line every JTracer renderer shares (jtracer-cli, jtracer-mpi):
-// the options, their exit codes, and their declaration, written once so that
+// the options and their declaration, written once so that
 // both read a render the same way.
 
 #include "jtracer/diagnostics.hpp"
+#include "jtracer/frontend/command_line.hpp"
+#include "jtracer/frontend/progress.hpp"
 
 #include <optional>
 #include <string>
@@ -15,9 +17,6 @@ class App;
 
 namespace jt::frontend {
 
-// Exit codes, as the README documents them.
-enum ExitCode : int { exit_ok = 0, exit_scene_error = 1, exit_usage = 2, exit_io_error = 3 };
-
 struct RenderFlags {
     std::string scene_path;
     std::optional<std::string> output;  // wins over the scene's filename
@@ -27,10 +26,11 @@ struct RenderFlags {
     std::optional<int> samples;
     int threads = 0;  // 0: every core
     bool quiet = false;
+    ProgressMode progress = ProgressMode::automatic;
 };
 
 // Declares the scene argument and -o, --camera, --width, --height, --samples,
-// --threads and -q.
+// --threads, --progress and -q.
 void add_render_flags(CLI::App& app, RenderFlags& flags);
 
 // Adds to each diagnostic that asks for a render setting the flag that sets

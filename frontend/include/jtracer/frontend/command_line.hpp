@@ -1,0 +1,32 @@
+#pragma once
+// What every JTracer program's command line shares: the exit codes, the
+// version flag and how a usage error is reported (the program's name, CLI11's
+// message, a pointer to --help, exit 2), so that all of them behave alike.
+
+#include <functional>
+#include <iostream>
+#include <optional>
+#include <string>
+
+namespace CLI {
+class App;
+}
+
+namespace jt::frontend {
+
+// Exit codes, as the README and the man pages document them.
+enum ExitCode : int { exit_ok = 0, exit_scene_error = 1, exit_usage = 2, exit_io_error = 3 };
+
+// Adds --version, printing "PROGRAM VERSION (REVISION)".
+void add_version_flag(CLI::App& app, const std::string& program);
+
+// Parses the command line, then runs `checks` (which may throw
+// CLI::ValidationError for rules between options). Returns the exit code when
+// the program should stop now: 0 after --help or --version, exit_usage after
+// an error, reported on `err` as "PROGRAM: message" and a pointer to --help.
+std::optional<int> parse_command_line(CLI::App& app, int argc, const char* const* argv,
+                                      const std::string& program,
+                                      const std::function<void()>& checks = {},
+                                      std::ostream& out = std::cout, std::ostream& err = std::cerr);
+
+}  // namespace jt::frontend
