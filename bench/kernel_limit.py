@@ -19,7 +19,7 @@ import subprocess
 import sys
 
 sys.path.insert(0, os.path.dirname(os.path.abspath(__file__)))
-from race import ORDER, jtracer_rays  # noqa: E402
+from race import jtracer_rays, scene_names  # noqa: E402
 
 MODE = re.compile(r"mode (ray\d+): (\d+) rays, ([\d.]+) s")
 MODES = ("ray1", "ray8", "ray16")
@@ -35,11 +35,7 @@ def main():
     parser.add_argument("--only", nargs="*")
     args = parser.parse_args()
 
-    names = [n for n in ORDER if os.path.exists(os.path.join(args.scenes, n + ".jts"))]
-    if args.only:
-        names = [n for n in names if n in args.only]
-    if not names:
-        sys.exit("no scenes to run")
+    names = scene_names(args.scenes, args.only)
     load_before = os.getloadavg()
     rows = []
     for name in names:

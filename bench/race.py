@@ -90,6 +90,16 @@ TACHYON_SCENES = ["sphereflake", "nested_shells", "spheres_5761", "lattice", "tr
 ORDER += TACHYON_SCENES + [n + "_1024" for n in TACHYON_SCENES]
 
 
+def scene_names(scenes_dir, only):
+    """The generated scenes in table order, those in `only` if given; exits when none."""
+    names = [n for n in ORDER if os.path.exists(os.path.join(scenes_dir, n + ".jts"))]
+    if only:
+        names = [n for n in names if n in only]
+    if not names:
+        sys.exit("no scenes to run")
+    return names
+
+
 def median_or_nan(values):
     return statistics.median(values) if values else float("nan")
 
@@ -140,12 +150,7 @@ def main():
     os.makedirs(args.out, exist_ok=True)
     _log_path = os.path.join(args.out, "last_run.log")
 
-    names = [n for n in ORDER if os.path.exists(os.path.join(args.scenes, n + ".jts"))]
-    if args.only:
-        names = [n for n in names if n in args.only]
-    if not names:
-        sys.exit("no scenes to run")
-
+    names = scene_names(args.scenes, args.only)
     load_before = os.getloadavg()
     rows = []
     for name in names:
