@@ -19,6 +19,7 @@
 #include "converter_cli.hpp"
 #include "jtracer/validate.hpp"
 #include "render/camera_rays.hpp"
+#include "render/embree_device.hpp"
 #include "world_shapes.hpp"
 
 #include <embree3/rtcore.h>
@@ -391,7 +392,8 @@ int main(int argc, char** argv) {
         std::fprintf(stderr, "%s: the scene has no camera\n", program);
         return jt::bench::exit_scene_errors;
     }
-    RTCDevice device = rtcNewDevice(nullptr);
+    // The same configuration as the renderer's device (embree_device.hpp).
+    RTCDevice device = rtcNewDevice(std::getenv(jt::kEmbreeConfigVariable));
     if (!device) {
         std::fprintf(stderr, "%s: cannot start Embree\n", program);
         return jt::bench::exit_io;

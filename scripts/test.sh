@@ -1,6 +1,7 @@
 #!/usr/bin/env bash
 # Installs the dependencies, builds JTracer and runs the whole test suite:
 # the release build first (and what it installs and packages: install-test.sh),
+# a debug jtracer-cli that must render the same bytes,
 # then the fuzz targets (built with clang, each run for JT_FUZZ_SECONDS,
 # default 60), then everything again under ASan + UBSan.
 # Set JT_SKIP_FUZZ=1 or JT_SKIP_ASAN=1 to leave those steps out.
@@ -21,6 +22,10 @@ run_preset() {
 run_preset release
 echo "== release: install, package, uninstall"
 ./scripts/install-test.sh build/release
+echo "== debug: jtracer-cli gives the release build's bytes"
+cmake --preset debug >/dev/null
+cmake --build --preset debug --target jtracer-cli -j "$jobs"
+bash tests/cli/isa_identity_test.sh build/debug/cli/jtracer-cli . build/isa-identity debug
 if [ "${JT_SKIP_FUZZ:-0}" != 1 ]; then
     ./scripts/fuzz.sh "${JT_FUZZ_SECONDS:-60}"
 fi

@@ -1,7 +1,7 @@
 #include "render/embree_device.hpp"
 
 #include <cstdio>
-#include <mutex>
+#include <cstdlib>
 
 namespace jt {
 
@@ -12,17 +12,52 @@ void report_embree_error(void*, RTCError code, const char* message) {
                  message ? message : "");
 }
 
+const char* error_name(RTCError code) {
+    switch (code) {
+    case RTC_ERROR_NONE: return "no error reported";
+    case RTC_ERROR_UNKNOWN: return "unknown error";
+    case RTC_ERROR_INVALID_ARGUMENT: return "invalid argument";
+    case RTC_ERROR_INVALID_OPERATION: return "invalid operation";
+    case RTC_ERROR_OUT_OF_MEMORY: return "out of memory";
+    case RTC_ERROR_UNSUPPORTED_CPU: return "this CPU is not supported";
+    case RTC_ERROR_CANCELLED: return "cancelled";
+    }
+    return "unknown error";
+}
+
+struct Device {
+    RTCDevice handle = nullptr;
+    std::string failure;
+};
+
+const Device& device() {
+    // Never released: scenes may outlive any owner we could name, and the
+    // process exit frees it.
+    static const Device d = [] {
+        Device made;
+        const char* config = std::getenv(kEmbreeConfigVariable);
+        made.handle = rtcNewDevice(config);
+        if (made.handle) {
+            rtcSetDeviceErrorFunction(made.handle, report_embree_error, nullptr);
+        } else {
+            made.failure = "cannot start Embree";
+            if (config)
+                made.failure += std::string(" with ") + kEmbreeConfigVariable + "='" + config + "'";
+            made.failure += std::string(": ") + error_name(rtcGetDeviceError(nullptr));
+        }
+        return made;
+    }();
+    return d;
+}
+
 }  // namespace
 
 RTCDevice embree_device() {
-    // Never released: scenes may outlive any owner we could name, and the
-    // process exit frees it.
-    static RTCDevice device = [] {
-        RTCDevice d = rtcNewDevice(nullptr);
-        if (d) rtcSetDeviceErrorFunction(d, report_embree_error, nullptr);
-        return d;
-    }();
-    return device;
+    return device().handle;
+}
+
+std::string embree_device_failure() {
+    return device().failure;
 }
 
 }  // namespace jt

@@ -185,7 +185,7 @@ std::shared_ptr<const Geometry> build_geometry(const Scene& scene, const Geometr
 Expected<std::shared_ptr<const PreparedScene>> prepare_scene(
     const Scene& scene, std::shared_ptr<const PreparedScene> previous) {
     // Checked here, before any work: build_geometry needs the device.
-    if (!embree_device()) return Error{"cannot start Embree (rtcNewDevice failed)"};
+    if (!embree_device()) return Error{embree_device_failure()};
     auto prepared = std::make_shared<PreparedScene>();
     const GeometryDigest digest = digest_geometry(scene.primitives);
     auto build = [&] {
