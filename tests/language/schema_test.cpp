@@ -110,6 +110,10 @@ TEST(Schema, MatchesTheLanguagesPropertyTable) {
               "material.diffuse_k number 1 (0, inf)\n"
               "material.specular_k number 64 (0, inf)\n"
               "material.reflection number 0 <0, 1>\n"
+              "material.transmission number 0 <0, 1> omitted-when-default\n"
+              "material.ior number 1 (0, inf) omitted-when-default\n"
+              "material.checker colour  <0, 1> omitted-when-default\n"
+              "material.checker_size number 1 (0, inf) omitted-when-default\n"
               "transform.translate vector any\n"
               "transform.scale vector any\n"
               "transform.xrotate number any degrees\n"
@@ -132,7 +136,8 @@ void expect_distinct_members() {
             using T = std::decay_t<decltype(v)>;
             const bool vector = p.kind == ValueKind::vector || p.kind == ValueKind::colour;
             const bool is_int = std::is_same_v<T, int>, is_double = std::is_same_v<T, double>,
-                       is_vec = std::is_same_v<T, Vec3>, is_string = std::is_same_v<T, std::string>;
+                       is_vec = std::is_same_v<T, Vec3> || std::is_same_v<T, std::optional<Vec3>>,
+                       is_string = std::is_same_v<T, std::string>;
             EXPECT_EQ(is_int, p.kind == ValueKind::whole) << p.name;
             EXPECT_EQ(is_double, p.kind == ValueKind::number) << p.name;
             EXPECT_EQ(is_vec, vector) << p.name;
@@ -291,6 +296,9 @@ std::string set_sample(const PropertySpec<Block>& spec, Block& block, int i) {
             EXPECT_TRUE(set) << "no sample in the range of " << spec.name;
             // Sample 0 as a file might write it: a trailing 0 the shortest text has not.
             return i == 0 ? number_text(v) + "0" : number_text(v);
+        } else if constexpr (std::is_same_v<T, std::optional<Vec3>>) {
+            v = s.colour[i];
+            return i == 0 ? s.colour_written : s.colour_edited;
         } else if constexpr (std::is_same_v<T, Vec3>) {
             const bool colour = spec.kind == ValueKind::colour;
             v = colour ? s.colour[i] : s.vector[i];
@@ -451,6 +459,7 @@ void check_validated_ranges(const Case<Block>& c) {
             using M = std::decay_t<decltype(member)>;
             using V = decltype(value);
             if constexpr (std::is_same_v<M, V> ||
+                          (std::is_same_v<M, std::optional<Vec3>> && std::is_same_v<V, Vec3>) ||
                           (std::is_arithmetic_v<M> && std::is_arithmetic_v<V>))
                 member = static_cast<M>(value);
         });

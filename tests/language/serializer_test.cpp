@@ -25,7 +25,17 @@ Scene awkward_scene() {
     s.cameras.push_back(test::named_camera("Second"));
     s.primitives.push_back(
         Primitive{Sphere{{std::numeric_limits<double>::min(), 1e-17, -7.125}, 0.30000000000000004},
-                  Material{{1, 0, 0}, {0.2, 0.2, 0.2}, {0.9, 0.8, 0.7}, {1, 1, 1}, 2.5, 128, 0.75},
+                  Material{{1, 0, 0},
+                           {0.2, 0.2, 0.2},
+                           {0.9, 0.8, 0.7},
+                           {1, 1, 1},
+                           2.5,
+                           128,
+                           0.75,
+                           0.5,
+                           1.5,
+                           Colour{0, 1, 0},
+                           0.25},
                   {{TransformKind::translate, {1, 2, 3}, 0},
                    {TransformKind::xrotate, {0, 0, 0}, -90},
                    {TransformKind::scale, {2, 0.5, 1}, 0},

@@ -1,5 +1,6 @@
 #include "geometry/bounds.hpp"
 #include "render/embree_device.hpp"
+#include "render/pattern.hpp"
 #include "render/prepared_scene.hpp"
 #include "render/ray_queries.hpp"
 
@@ -180,6 +181,21 @@ std::shared_ptr<const Geometry> build_geometry(const Scene& scene, const Geometr
     return g;
 }
 
+// Each primitive's world-to-object map when any material has a pattern; a
+// primitive the transform rule leaves out is never hit, so any map will do.
+std::vector<Affine> pattern_spaces(const std::vector<Primitive>& primitives,
+                                   const std::vector<Material>& materials) {
+    if (std::none_of(materials.begin(), materials.end(), has_pattern)) return {};
+    std::vector<Affine> spaces(primitives.size());
+    for (std::size_t i = 0; i < primitives.size(); ++i) {
+        if (primitives[i].transforms.empty()) continue;
+        auto placed = object_transform(primitives[i].transforms);
+        if (const auto* transform = std::get_if<ObjectTransform>(&placed))
+            spaces[i] = transform->to_object;
+    }
+    return spaces;
+}
+
 }  // namespace
 
 Expected<std::shared_ptr<const PreparedScene>> prepare_scene(
@@ -205,6 +221,9 @@ Expected<std::shared_ptr<const PreparedScene>> prepare_scene(
             prepared->material_of.push_back(
                 static_cast<std::uint32_t>(prepared->materials.size() - 1));
         }
+        for (const Material& m : prepared->materials)
+            prepared->has_transmission = prepared->has_transmission || m.transmission > 0.0;
+        prepared->pattern_space = pattern_spaces(scene.primitives, prepared->materials);
     };
     if (scene.primitives.size() > 10000)
         tbb::parallel_invoke(build, gather_materials);

@@ -86,6 +86,12 @@ struct PreparedScene {
     // Runs of primitives with equal materials share one entry.
     std::vector<Material> materials;
     std::vector<std::uint32_t> material_of;  // indexed by Scene primitive
+    // World to object space of each Scene primitive, for patterns; empty when
+    // no material has one.
+    std::vector<Affine> pattern_space;
+    // Whether any material transmits: only then do shadow rays look past the
+    // first surface they meet (docs/language.md §13.2).
+    bool has_transmission = false;
     std::vector<PointLight> lights;
     // Shadow-ray candidates, one table a light (none when no table pays);
     // shared with the previous PreparedScene when geometry and lights are.

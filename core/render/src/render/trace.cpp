@@ -1,7 +1,9 @@
 #include "render/trace.hpp"
 
 #include "jtracer/limits.hpp"
+#include "render/pattern.hpp"
 #include "render/ray_queries.hpp"
+#include "render/refraction.hpp"
 
 #include <glm/geometric.hpp>
 
@@ -23,6 +25,23 @@ double max_abs(const Vec3& v) {
 
 bool finite(const Vec3& v) {
     return std::isfinite(v.x) && std::isfinite(v.y) && std::isfinite(v.z);
+}
+
+// The fraction of a light that reaches along origin + t * direction for t in
+// (0, t_max): the product of the transmission of every surface crossed, 0 at
+// the first opaque one (docs/language.md §13.2). Each query starts from the
+// same origin past the previous hit, so no surface is counted twice.
+double transmittance(const PreparedScene& scene, const Vec3& origin, const Vec3& direction,
+                     double t_max) {
+    double through = 1.0;
+    double t_lower = 0.0;
+    Hit hit;
+    while (through > 0.0 && closest_hit(*scene.geometry, origin, direction, t_lower, hit) &&
+           hit.t < t_max) {
+        through *= scene.materials[scene.material_of[hit.source]].transmission;
+        t_lower = hit.t;
+    }
+    return through;
 }
 
 // The local (non-reflected) light at a hit: ambient, then each light's diffuse
@@ -52,17 +71,103 @@ Colour shade_hit(const PreparedScene& scene, const Material& m, const Vec3& poin
         double shadow_distance = glm::length(shadow_direction);
         if (!(shadow_distance > 0.0)) continue;
         ++rays;
-        if (occluded(geometry, lifted, shadow_direction / shadow_distance, 0.0, shadow_distance,
-                     &hints[light_index], light_tables ? &(*light_tables)[light_index] : nullptr))
+        Colour intensity = light.intensity;
+        if (scene.has_transmission) {
+            const double through =
+                transmittance(scene, lifted, shadow_direction / shadow_distance, shadow_distance);
+            if (!(through > 0.0)) continue;
+            intensity *= through;
+        } else if (occluded(geometry, lifted, shadow_direction / shadow_distance, 0.0,
+                            shadow_distance, &hints[light_index],
+                            light_tables ? &(*light_tables)[light_index] : nullptr)) {
             continue;
+        }
         // pow(x, 1) is x exactly, and adding a zero term changes nothing: both
         // shortcuts leave every bit as the plain formula would.
         double diffuse_factor = m.diffuse_k == 1.0 ? n_dot_l : std::pow(n_dot_l, 1.0 / m.diffuse_k);
-        c += light.intensity * m.diffuse * m.pigment * diffuse_factor;
+        c += intensity * m.diffuse * m.pigment * diffuse_factor;
         if (m.specular == Colour(0.0)) continue;
         Vec3 r = 2.0 * n_dot_l * normal - l;
         double r_dot_v = glm::dot(r, view);
-        if (r_dot_v > 0.0) c += light.intensity * m.specular * std::pow(r_dot_v, m.specular_k);
+        if (r_dot_v > 0.0) c += intensity * m.specular * std::pow(r_dot_v, m.specular_k);
+    }
+    return c;
+}
+
+// What a ray meets first.
+struct SurfaceHit {
+    enum class Kind : std::uint8_t { miss, no_normal, surface };
+    Kind kind = Kind::miss;
+    Vec3 point{0.0};
+    Vec3 normal{0.0};      // unit, facing the ray
+    bool entering = true;  // the ray arrives from the outside (docs/language.md §13.2)
+    Vec3 lifted{0.0};      // point moved off the surface toward the ray's side
+    double offset = 0.0;
+    std::uint32_t source = 0;
+};
+
+SurfaceHit first_surface(const Geometry& geometry, const Vec3& o, const Vec3& d, double t_lower,
+                         const DirectionTable* table) {
+    SurfaceHit s;
+    Hit hit;
+    if (!finite(o) || !finite(d) || !closest_hit(geometry, o, d, t_lower, hit, table)) return s;
+    s.point = o + hit.t * d;
+    s.normal = glm::normalize(hit.normal);
+    const double along = glm::dot(s.normal, d);
+    s.entering = along < 0.0;
+    if (along > 0.0) s.normal = -s.normal;  // two-sided: face the ray
+    if (!finite(s.normal)) {
+        s.kind = SurfaceHit::Kind::no_normal;
+        return s;
+    }
+    s.kind = SurfaceHit::Kind::surface;
+    s.offset = surface_offset(o, s.point, hit.t);
+    s.lifted = s.point + s.offset * s.normal;
+    s.source = hit.source;
+    return s;
+}
+
+Colour shade_surface(const PreparedScene& scene, const SurfaceHit& s, const Vec3& d,
+                     std::uint64_t& rays) {
+    const Material& m = scene.materials[scene.material_of[s.source]];
+    if (!has_pattern(m)) return shade_hit(scene, m, s.point, s.lifted, s.normal, -d, rays);
+    Material patterned = m;
+    patterned.pigment = pattern_pigment(m, apply_point(scene.pattern_space[s.source], s.point));
+    return shade_hit(scene, patterned, s.point, s.lifted, s.normal, -d, rays);
+}
+
+Vec3 mirror(const Vec3& d, const Vec3& n) {
+    return glm::normalize(d - 2.0 * glm::dot(d, n) * n);
+}
+
+// A branch whose weight in the pixel (the product of the reflection and
+// transmission factors on its way) is below this is not traced: it could move
+// a pixel by a level only where the light there is a thousand times white.
+// Without it, a surface that both reflects and transmits doubles the rays at
+// every bounce, 2^recurse_depth in all.
+constexpr double min_branch_weight = 1e-6;
+
+// The recursive Whitted tracer for scenes with transmissive surfaces, where a
+// hit can spawn both a reflected and a transmitted ray.
+Colour trace_branching(const PreparedScene& scene, const Vec3& o, const Vec3& d, double t_lower,
+                       int depth, int depth_limit, double weight, std::uint64_t& rays,
+                       const DirectionTable* table) {
+    ++rays;
+    const SurfaceHit s = first_surface(*scene.geometry, o, d, t_lower, table);
+    if (s.kind == SurfaceHit::Kind::miss) return scene.settings.background;
+    if (s.kind == SurfaceHit::Kind::no_normal) return Colour(0.0);
+    Colour c = shade_surface(scene, s, d, rays);
+    if (depth >= depth_limit) return c;
+    const Material& m = scene.materials[scene.material_of[s.source]];
+    if (m.reflection > 0.0 && weight * m.reflection >= min_branch_weight)
+        c += m.reflection * trace_branching(scene, s.lifted, mirror(d, s.normal), 0.0, depth + 1,
+                                            depth_limit, weight * m.reflection, rays, nullptr);
+    if (m.transmission > 0.0 && weight * m.transmission >= min_branch_weight) {
+        const Vec3 t = transmitted_direction(d, s.normal, s.entering, m.ior);
+        // Total internal reflection stays on the ray's side; a refracted ray crosses.
+        const Vec3 from = glm::dot(t, s.normal) > 0.0 ? s.lifted : s.point - s.offset * s.normal;
+        c += m.transmission * trace_branching(scene, from, t, 0.0, depth + 1, depth_limit,
+                                              weight * m.transmission, rays, nullptr);
     }
     return c;
 }
@@ -78,6 +183,9 @@ Colour trace_ray(const PreparedScene& scene, const Vec3& origin, const Vec3& uni
                  double t_min, std::uint64_t& rays, const DirectionTable* around_origin) {
     const Geometry& geometry = *scene.geometry;
     const int depth_limit = std::clamp(scene.settings.recurse_depth, 0, max_depth);
+    if (scene.has_transmission)
+        return trace_branching(scene, origin, unit_direction, t_min, 0, depth_limit, 1.0, rays,
+                               around_origin);
     // c_k = local_k + reflection_k * c_(k+1): kept per bounce and folded back in
     // the end, so the sum rounds exactly as the recursive definition does.
     std::array<Colour, max_depth + 1> local;
@@ -90,27 +198,20 @@ Colour trace_ray(const PreparedScene& scene, const Vec3& origin, const Vec3& uni
     for (int depth = 0;; ++depth) {
         last = depth;
         reflection[depth] = 0.0;
-        Hit hit;
         ++rays;
         const DirectionTable* table = depth == 0 ? around_origin : nullptr;
-        if (!finite(o) || !finite(d) || !closest_hit(geometry, o, d, t_lower, hit, table)) {
-            local[depth] = scene.settings.background;
+        const SurfaceHit s = first_surface(geometry, o, d, t_lower, table);
+        if (s.kind != SurfaceHit::Kind::surface) {
+            local[depth] =
+                s.kind == SurfaceHit::Kind::miss ? scene.settings.background : Colour(0.0);
             break;
         }
-        Vec3 point = o + hit.t * d;
-        Vec3 normal = glm::normalize(hit.normal);
-        if (glm::dot(normal, d) > 0.0) normal = -normal;  // two-sided: face the ray
-        if (!finite(normal)) {
-            local[depth] = Colour(0.0);
-            break;
-        }
-        Vec3 lifted = point + surface_offset(o, point, hit.t) * normal;
-        const Material& m = scene.materials[scene.material_of[hit.source]];
-        local[depth] = shade_hit(scene, m, point, lifted, normal, -d, rays);
+        local[depth] = shade_surface(scene, s, d, rays);
+        const Material& m = scene.materials[scene.material_of[s.source]];
         if (depth >= depth_limit || !(m.reflection > 0.0)) break;
         reflection[depth] = m.reflection;
-        d = glm::normalize(d - 2.0 * glm::dot(d, normal) * normal);
-        o = lifted;
+        d = mirror(d, s.normal);
+        o = s.lifted;
         t_lower = 0.0;
     }
     Colour c = local[last];

@@ -9,6 +9,7 @@
 
 #include <glm/vec3.hpp>
 
+#include <optional>
 #include <string>
 #include <variant>
 #include <vector>
@@ -50,6 +51,11 @@ struct Material {
     double diffuse_k = 1.0;
     double specular_k = 64.0;
     double reflection = 0.0;
+    // Extensions (docs/language.md §13): refraction and patterns.
+    double transmission = 0.0;
+    double ior = 1.0;               // index of refraction of the inside
+    std::optional<Colour> checker;  // the second colour of a solid checker; none: no checker
+    double checker_size = 1.0;      // edge of one checker cube, object units
 
     bool operator==(const Material&) const = default;
 };

@@ -80,7 +80,7 @@ struct MemberTypes<PointLight> {
 };
 template <>
 struct MemberTypes<Material> {
-    using type = MemberOf<Material, double, Vec3>;
+    using type = MemberOf<Material, double, Vec3, std::optional<Vec3>>;
 };
 template <>
 struct MemberTypes<TransformOp> {
@@ -139,6 +139,20 @@ constexpr PropertySpec<Block> colour(std::string_view name, Vec3 Block::*member)
     return {name, ValueKind::colour, member,
             ValueRange{.low = 0.0, .high = 1.0, .clamp_low = true, .clamp_high = true}};
 }
+// A colour with no default: unset means the feature is off.
+template <class Block>
+constexpr PropertySpec<Block> optional_colour(std::string_view name,
+                                              std::optional<Vec3> Block::*member) {
+    return {name, ValueKind::colour, member,
+            ValueRange{.low = 0.0, .high = 1.0, .clamp_low = true, .clamp_high = true}};
+}
+// An extension's property is written only when set, so that a scene that
+// does not use it serialises as manual-only text.
+template <class Block>
+constexpr PropertySpec<Block> only_when_set(PropertySpec<Block> property) {
+    property.omit_default = true;
+    return property;
+}
 template <class Block>
 constexpr PropertySpec<Block> string(std::string_view name, std::string Block::*member,
                                      ValueRange range = {}, bool omit_default = false) {
@@ -193,15 +207,22 @@ inline constexpr std::array<PropertySpec<PointLight>, 2> kPointLight{{
     colour("intensity", &PointLight::intensity),
 }};
 
-inline constexpr std::array<PropertySpec<Material>, 7> kMaterial{{
+inline constexpr ValueRange kFraction{
+    .low = 0.0, .high = 1.0, .clamp_low = true, .clamp_high = true};
+
+inline constexpr std::array<PropertySpec<Material>, 11> kMaterial{{
     colour("pigment", &Material::pigment),
     colour("ambient", &Material::ambient),
     colour("diffuse", &Material::diffuse),
     colour("specular", &Material::specular),
     number("diffuse_k", &Material::diffuse_k, kPositive),
     number("specular_k", &Material::specular_k, kPositive),
-    number("reflection", &Material::reflection,
-           {.low = 0.0, .high = 1.0, .clamp_low = true, .clamp_high = true}),
+    number("reflection", &Material::reflection, kFraction),
+    // Extensions (docs/language.md §13.1).
+    only_when_set(number("transmission", &Material::transmission, kFraction)),
+    only_when_set(number("ior", &Material::ior, kPositive)),
+    only_when_set(optional_colour("checker", &Material::checker)),
+    only_when_set(number("checker_size", &Material::checker_size, kPositive)),
 }};
 
 inline constexpr std::array<TransformOpSpec, 5> kTransformOps{{
@@ -318,6 +339,8 @@ std::string value_text(int value);
 std::string value_text(double value);
 std::string value_text(const Vec3& value);
 std::string value_text(const std::string& value);
+// An unset optional value has no text: it is never written.
+std::string value_text(const std::optional<Vec3>& value);
 
 template <class Block>
 std::string value_text(const PropertySpec<Block>& property, const Block& block) {
@@ -380,6 +403,16 @@ std::optional<std::string> value_problem(const PropertySpec<Block>& property, co
 std::string range_rule(const ValueRange& range, ValueKind kind, std::string_view unit = {});
 
 namespace schema_detail {
+// The value an optional member holds (or a default one when unset, never
+// looked at); any other member as it is.
+template <class T>
+const T& set_value(const T& value) {
+    return value;
+}
+inline const Vec3& set_value(const std::optional<Vec3>& value) {
+    static const Vec3 unset{0.0};
+    return value ? *value : unset;
+}
 bool is_finite(double value);
 bool is_finite(const Vec3& value);
 // "'position' must be finite, got <nan, 0, 0>"
@@ -405,8 +438,12 @@ std::string past_clamp_message(const PropertySpec<Block>& property, std::string_
 
 template <class Block>
 std::optional<std::string> value_problem(const PropertySpec<Block>& property, const Block& block) {
-    return with_member(property, block, [&](const auto& v) -> std::optional<std::string> {
+    return with_member(property, block, [&](const auto& member) -> std::optional<std::string> {
+        const auto& v = schema_detail::set_value(member);
         using T = std::decay_t<decltype(v)>;
+        if constexpr (std::is_same_v<std::decay_t<decltype(member)>, std::optional<Vec3>>) {
+            if (!member) return std::nullopt;
+        }
         if constexpr (std::is_same_v<T, std::string>) {
             // A string's message needs no ", got": the rule says what it was.
             if (check_range(property.range, v) == RangeVerdict::outside)

@@ -46,8 +46,13 @@ std::vector<Change> changes(std::span<const PropertySpec<Block>> properties, con
         if (same_value(property, a, b)) continue;
         Change change{property.name, value_text(property, b), std::nullopt};
         with_member(property, b, [&](const auto& value) {
-            if constexpr (std::is_same_v<std::decay_t<decltype(value)>, Vec3>)
+            using T = std::decay_t<decltype(value)>;
+            if constexpr (std::is_same_v<T, Vec3>) change.vector = value;
+            if constexpr (std::is_same_v<T, std::optional<Vec3>>) {
                 change.vector = value;
+                // No .jts text unsets a value: a save could only drop the line.
+                if (!value) fail("an unset '" + std::string(property.name) + "' cannot be saved");
+            }
         });
         check_writable(property, b, fail);
         found.push_back(std::move(change));

@@ -74,7 +74,8 @@ bool PropertyReader::read(const PropertySpec<Block>& spec, const Property& p, Bl
             out = std::string(v.text);
             return true;
         } else {
-            constexpr bool is_vector = std::is_same_v<T, Vec3>;
+            constexpr bool is_vector =
+                std::is_same_v<T, Vec3> || std::is_same_v<T, std::optional<Vec3>>;
             if (v.form != (is_vector ? Value::Form::vector : Value::Form::number)) {
                 kind_error(p, spec.kind);
                 return false;
@@ -96,7 +97,10 @@ bool PropertyReader::read(const PropertySpec<Block>& spec, const Property& p, Bl
                 sink_.warning(v.span.pos,
                               past_clamp_message(spec, written(v), value_text(checked.value)));
             }
-            out = static_cast<T>(checked.value);
+            if constexpr (is_vector)
+                out = checked.value;
+            else
+                out = static_cast<T>(checked.value);
             return true;
         }
     });

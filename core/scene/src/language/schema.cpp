@@ -18,6 +18,10 @@ std::string value_text(const Vec3& value) {
     return vector_text(value);
 }
 
+std::string value_text(const std::optional<Vec3>& value) {
+    return value ? vector_text(*value) : std::string();
+}
+
 std::string value_text(const std::string& value) {
     // There are no escapes: what cannot stand in quotes becomes '_'.
     std::string written = value;
