@@ -5,9 +5,11 @@
 
 #include "jtracer/region.hpp"
 
+#include <algorithm>
 #include <chrono>
 #include <cstdio>
 #include <cstring>
+#include <deque>
 #include <future>
 #include <thread>
 
@@ -21,72 +23,133 @@ double seconds_since(Clock::time_point start) {
     return std::chrono::duration<double>(Clock::now() - start).count();
 }
 
+// A tile is handed out at most this many times: once, and once more to a rank
+// left idle at the end of the frame (the first copy back wins; tiles render
+// deterministically, so which one does not change a byte).
+constexpr int max_copies = 2;
+constexpr int no_tile = -1;
+
+struct WorkerState {
+    std::deque<std::int32_t> held;  // handed out and not yet back, in the order it renders them
+    Clock::time_point last_heard;
+    bool heard = false;    // it has said it is ready
+    bool stopped = false;  // it has acknowledged the stop
+};
+
 class Coordinator {
   public:
     Coordinator(const std::shared_ptr<const PreparedFrame>& frame, int width, int height,
-                const std::vector<PixelRect>& tiles, int ranks)
-        : frame_(frame), tiles_(tiles), ranks_(ranks) {
-        result_.frame = Image8(width, height);
-    }
+                const std::vector<PixelRect>& tiles, const CoordinatorSettings& settings)
+        : frame_(frame),
+          frame_image_(width, height),
+          tiles_(tiles),
+          settings_(settings),
+          workers_(static_cast<std::size_t>(settings.ranks)),
+          copies_(tiles.size(), 0),
+          second_holder_(tiles.size(), no_tile),
+          pasted_tile_(tiles.size(), false) {}
 
-    CoordinatorResult run(const std::atomic<bool>& stop, frontend::ProgressStyle progress_style) {
-        const auto start = Clock::now();
-        frontend::ProgressDisplay display(progress_style);
-        for (int rank = 1; rank < ranks_; ++rank)
+    CoordinatorResult run(const std::atomic<bool>& stop,
+                          const std::function<void(const Image8&)>& deliver) {
+        start_ = Clock::now();
+        frontend::ProgressDisplay display(settings_.progress);
+        for (int rank = 1; rank < settings_.ranks; ++rank)
             for (int i = 0; i < tiles_ahead; ++i) hand_out(rank);
         start_local_tile();
         auto last_shown = Clock::now();
-        while (pasted_ < tiles_.size()) {
-            if (stop.load()) break;
-            bool busy = receive_one() | collect_local_tile();
-            if (!busy) {
-                const auto idle = Clock::now();
-                std::this_thread::sleep_for(std::chrono::microseconds(100));
-                result_.stats.wait_seconds += seconds_since(idle);
-            }
+        while (pasted_ < tiles_.size() && !stop.load() && !lost()) {
+            serve_once();
             if (seconds_since(last_shown) > 0.1) {
-                display.update(progress(seconds_since(start)));
+                display.update(progress(seconds_since(start_)));
                 last_shown = Clock::now();
             }
         }
         display.finish();
-        result_.seconds = seconds_since(start);
-        result_.complete = pasted_ == tiles_.size();
-        if (result_.complete)
-            for (int rank = 1; rank < ranks_; ++rank) send_tile_index(rank, no_more_tiles);
-        else if (local_.valid())
-            local_.wait();  // its thread must not outlive the frame it renders for
+        result_.seconds = seconds_since(start_);
+        if (pasted_ < tiles_.size()) return std::move(result_);
+        result_.complete = true;
+        deliver(frame_image_);
+        for (int rank = 1; rank < settings_.ranks; ++rank) send_signal(rank, tag_stop);
+        winding_down_ = true;
+        while (!all_stopped() && !lost()) serve_once();
         return std::move(result_);
     }
 
   private:
     std::shared_ptr<const PreparedFrame> frame_;
+    Image8 frame_image_;
     const std::vector<PixelRect>& tiles_;
-    int ranks_;
+    CoordinatorSettings settings_;
+    Clock::time_point start_;
+    std::vector<WorkerState> workers_;  // index 0 (rank 0 itself) unused
+    std::vector<int> copies_;           // per tile: times handed out
+    std::vector<int> second_holder_;    // per tile: the rank given its second copy
+    std::vector<bool> pasted_tile_;
     std::size_t next_tile_ = 0;
     std::size_t pasted_ = 0;
+    bool winding_down_ = false;  // the frame is in: the idle time no longer counts
     std::future<WorkTile> local_;
-    PixelRect local_rect_;
+    std::int32_t local_tile_ = no_tile;
     std::vector<std::uint8_t> message_;
     CoordinatorResult result_;
 
-    void send_tile_index(int rank, std::int32_t index) {
-        MPI_Send(&index, 1, MPI_INT32_T, rank, tag_assign, MPI_COMM_WORLD);
+    void serve_once() {
+        bool busy = receive_one() | collect_local_tile();
+        if (!busy) {
+            if (winding_down_) {
+                std::this_thread::sleep_for(std::chrono::microseconds(100));
+                return;
+            }
+            const auto idle = Clock::now();
+            std::this_thread::sleep_for(std::chrono::microseconds(100));
+            result_.stats.wait_seconds += seconds_since(idle);
+        }
+    }
+
+    bool holds(int rank, std::int32_t tile) const {
+        if (rank == 0) return local_tile_ == tile;
+        const auto& held = workers_[static_cast<std::size_t>(rank)].held;
+        return std::find(held.begin(), held.end(), tile) != held.end();
+    }
+
+    // The next tile not yet handed out; once there is none, the oldest tile
+    // still out that `rank` does not hold and no one holds twice.
+    std::int32_t pick_tile(int rank) {
+        if (next_tile_ < tiles_.size()) return static_cast<std::int32_t>(next_tile_++);
+        for (std::size_t i = 0; i < tiles_.size(); ++i) {
+            const auto tile = static_cast<std::int32_t>(i);
+            if (!pasted_tile_[i] && copies_[i] < max_copies && !holds(rank, tile)) return tile;
+        }
+        return no_tile;
+    }
+
+    std::int32_t take_tile(int rank) {
+        const std::int32_t tile = pick_tile(rank);
+        if (tile == no_tile) return tile;
+        const auto i = static_cast<std::size_t>(tile);
+        if (++copies_[i] == max_copies) {
+            second_holder_[i] = rank;
+            ++result_.second_copies;
+        }
+        return tile;
     }
 
     void hand_out(int rank) {
-        if (next_tile_ < tiles_.size())
-            send_tile_index(rank, static_cast<std::int32_t>(next_tile_++));
+        const std::int32_t tile = take_tile(rank);
+        if (tile == no_tile) return;
+        MPI_Send(&tile, 1, MPI_INT32_T, rank, tag_assign, MPI_COMM_WORLD);
+        workers_[static_cast<std::size_t>(rank)].held.push_back(tile);
     }
 
     // Rank 0 renders a tile on a thread of its own whenever it has none, so
     // that its cores work too while this thread only answers messages.
     void start_local_tile() {
-        if (next_tile_ >= tiles_.size()) return;
-        local_rect_ = tiles_[next_tile_++];
-        local_ = std::async(std::launch::async, [frame = frame_, rect = local_rect_] {
-            return render_work_tile(*frame, rect);
-        });
+        local_tile_ = take_tile(0);
+        if (local_tile_ == no_tile) return;
+        local_ = std::async(std::launch::async,
+                            [frame = frame_, rect = tiles_[static_cast<std::size_t>(local_tile_)]] {
+                                return render_work_tile(*frame, rect);
+                            });
     }
 
     bool collect_local_tile() {
@@ -96,45 +159,84 @@ class Coordinator {
         WorkTile tile = local_.get();
         result_.stats.tiles += 1;
         result_.stats.render_seconds += tile.seconds;
-        result_.rays += tile.rays;
-        paste_image(result_.frame, tile.pixels, local_rect_.x0, local_rect_.y0);
-        ++pasted_;
+        paste(local_tile_, 0, tile.pixels, tile.rays);
         start_local_tile();
         return true;
     }
 
+    void paste(std::int32_t tile, int rank, const Image8& pixels, std::uint64_t rays) {
+        const auto i = static_cast<std::size_t>(tile);
+        if (pasted_tile_[i]) return;  // the other copy came back first
+        const PixelRect& rect = tiles_[i];
+        paste_image(frame_image_, pixels, rect.x0, rect.y0);
+        pasted_tile_[i] = true;
+        ++pasted_;
+        result_.rays += rays;
+        if (second_holder_[i] == rank) ++result_.second_copies_won;
+    }
+
     bool receive_one() {
-        if (ranks_ < 2) return false;
+        if (settings_.ranks < 2) return false;
         int arrived = 0;
         MPI_Status status;
-        MPI_Iprobe(MPI_ANY_SOURCE, tag_result, MPI_COMM_WORLD, &arrived, &status);
+        MPI_Iprobe(MPI_ANY_SOURCE, MPI_ANY_TAG, MPI_COMM_WORLD, &arrived, &status);
         if (!arrived) return false;
+        const int rank = status.MPI_SOURCE;
+        WorkerState& worker = workers_[static_cast<std::size_t>(rank)];
+        worker.last_heard = Clock::now();
+        worker.heard = true;
+        if (status.MPI_TAG != tag_result) {
+            MPI_Recv(nullptr, 0, MPI_BYTE, rank, status.MPI_TAG, MPI_COMM_WORLD, MPI_STATUS_IGNORE);
+            if (status.MPI_TAG == tag_stopped) worker.stopped = true;
+            return true;
+        }
         const auto start = Clock::now();
         int bytes = 0;
         MPI_Get_count(&status, MPI_BYTE, &bytes);
         message_.resize(static_cast<std::size_t>(bytes));
-        MPI_Recv(message_.data(), bytes, MPI_BYTE, status.MPI_SOURCE, tag_result, MPI_COMM_WORLD,
+        MPI_Recv(message_.data(), bytes, MPI_BYTE, rank, tag_result, MPI_COMM_WORLD,
                  MPI_STATUS_IGNORE);
-        hand_out(status.MPI_SOURCE);  // first, so that the worker stays busy
         TileResultHeader header;
         if (message_.size() >= sizeof header) std::memcpy(&header, message_.data(), sizeof header);
-        const bool known = message_.size() >= sizeof header && header.tile >= 0 &&
-                           static_cast<std::size_t>(header.tile) < tiles_.size();
+        const auto held = std::find(worker.held.begin(), worker.held.end(), header.tile);
+        const bool known = message_.size() >= sizeof header && held != worker.held.end();
         const PixelRect rect = known ? tiles_[static_cast<std::size_t>(header.tile)] : PixelRect{};
         Image8 pixels(rect.width(), rect.height());
         if (!known || message_.size() != sizeof header + pixels.rgb.size()) {
             std::fprintf(stderr,
-                         "jtracer-mpi: rank %d sent a malformed tile; nothing was written\n",
-                         status.MPI_SOURCE);
+                         "jtracer-mpi: rank %d sent a malformed tile; nothing was written\n", rank);
             MPI_Abort(MPI_COMM_WORLD, 3);
         }
+        worker.held.erase(held);
+        if (pasted_ < tiles_.size()) hand_out(rank);  // first, so that the worker stays busy
         std::memcpy(pixels.rgb.data(), message_.data() + sizeof header, pixels.rgb.size());
-        paste_image(result_.frame, pixels, rect.x0, rect.y0);
-        result_.rays += header.rays;
+        paste(header.tile, rank, pixels, header.rays);
         result_.bytes_received += message_.size();
         ++result_.messages_received;
-        ++pasted_;
         result_.stats.merge_seconds += seconds_since(start);
+        return true;
+    }
+
+    // Records the first worker silent for longer than the timeout allows.
+    bool lost() {
+        for (int rank = 1; rank < settings_.ranks; ++rank) {
+            const WorkerState& worker = workers_[static_cast<std::size_t>(rank)];
+            if (worker.stopped) continue;
+            const double silence = seconds_since(worker.heard ? worker.last_heard : start_);
+            const double allowed =
+                settings_.rank_timeout + (worker.heard ? 0.0 : settings_.setup_grace);
+            if (silence > allowed) {
+                result_.lost_rank = rank;
+                result_.lost_silence = silence;
+                return true;
+            }
+        }
+        return false;
+    }
+
+    bool all_stopped() const {
+        for (int rank = 1; rank < settings_.ranks; ++rank)
+            if (!workers_[static_cast<std::size_t>(rank)].stopped) return false;
         return true;
     }
 
@@ -151,9 +253,11 @@ class Coordinator {
 }  // namespace
 
 CoordinatorResult run_coordinator(const std::shared_ptr<const PreparedFrame>& frame, int width,
-                                  int height, const std::vector<PixelRect>& tiles, int ranks,
-                                  const std::atomic<bool>& stop, frontend::ProgressStyle progress) {
-    return Coordinator(frame, width, height, tiles, ranks).run(stop, progress);
+                                  int height, const std::vector<PixelRect>& tiles,
+                                  const CoordinatorSettings& settings,
+                                  const std::atomic<bool>& stop,
+                                  const std::function<void(const Image8&)>& deliver) {
+    return Coordinator(frame, width, height, tiles, settings).run(stop, deliver);
 }
 
 }  // namespace jt::mpi

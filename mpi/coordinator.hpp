@@ -1,6 +1,6 @@
 #pragma once
-// Rank 0: hands out tiles on demand, renders tiles itself in between, and
-// pastes every result into the frame.
+// Rank 0: hands out tiles on demand, renders tiles itself in between, pastes
+// every result into the frame, and watches for ranks that stop answering.
 
 #include "messages.hpp"
 
@@ -10,26 +10,45 @@
 
 #include <atomic>
 #include <cstdint>
+#include <functional>
 #include <memory>
+#include <optional>
 #include <vector>
 
 namespace jt::mpi {
 
+struct CoordinatorSettings {
+    int ranks = 1;  // counting rank 0
+    // A worker silent this long (no tile, no heartbeat) is declared lost. One
+    // not yet heard from at all (still preparing the scene) gets `setup_grace`
+    // seconds more.
+    double rank_timeout = 10.0;
+    double setup_grace = 0.0;
+    frontend::ProgressStyle progress = frontend::ProgressStyle::none;
+};
+
 struct CoordinatorResult {
-    bool complete = false;  // false: stopped by `stop` before every tile came back
-    Image8 frame;
+    bool complete = false;             // every tile came back (and `deliver` was called)
+    std::optional<int> lost_rank;      // the worker that stopped answering, if one did
+    double lost_silence = 0.0;         // how long it had been silent
     std::uint64_t rays = 0;            // over all ranks
     std::uint64_t bytes_received = 0;  // tile messages from other ranks
     int messages_received = 0;
-    double seconds = 0.0;  // from the first tile handed out to the last pasted in
-    RankStats stats;       // rank 0's own
+    int second_copies = 0;      // tiles handed out again once every tile was out
+    int second_copies_won = 0;  // of those, the ones whose second copy came back first
+    double seconds = 0.0;       // from the first tile handed out to the last pasted in
+    RankStats stats;            // rank 0's own
 };
 
-// `frame` is `width` x `height` pixels; `ranks` counts rank 0. Returns early,
-// incomplete, when `stop` becomes true; the workers are then still waiting and
-// the caller must abort the job.
+// Renders `tiles` of a `width` x `height` frame over the job's ranks; as soon
+// as every tile is in, calls `deliver` with the frame, then tells the workers to
+// stop and waits for each to say it has. Returns early, incomplete, when `stop`
+// becomes true or a rank is lost; the workers are then still waiting and the
+// caller must abort the job.
 CoordinatorResult run_coordinator(const std::shared_ptr<const PreparedFrame>& frame, int width,
-                                  int height, const std::vector<PixelRect>& tiles, int ranks,
-                                  const std::atomic<bool>& stop, frontend::ProgressStyle progress);
+                                  int height, const std::vector<PixelRect>& tiles,
+                                  const CoordinatorSettings& settings,
+                                  const std::atomic<bool>& stop,
+                                  const std::function<void(const Image8&)>& deliver);
 
 }  // namespace jt::mpi

@@ -14,14 +14,20 @@
 #include "jtracer/image_file.hpp"
 
 #include <mpi.h>
+#include <unistd.h>
 
 #include <array>
 #include <atomic>
 #include <chrono>
 #include <csignal>
 #include <cstdio>
+#include <cstdlib>
 #include <exception>
+#include <fstream>
 #include <iostream>
+#include <optional>
+#include <string>
+#include <thread>
 #include <vector>
 
 namespace {
@@ -41,6 +47,35 @@ std::string host_name() {
     int length = 0;
     MPI_Get_processor_name(name.data(), &length);
     return std::string(name.data(), static_cast<std::size_t>(length));
+}
+
+// OpenMPI's mpirun, told to end a job whose machine dropped off the network,
+// waits for that machine's daemon for as long as TCP takes to give up (many
+// minutes). When rank 0 is mpirun's own child (the usual layout: rank 0 on the
+// machine mpirun runs on), a second SIGTERM within 5 seconds of the first
+// makes mpirun end at once (the first only starts its abort).
+void stop_local_launcher() {
+    const pid_t parent = getppid();
+    std::ifstream comm("/proc/" + std::to_string(parent) + "/comm");
+    std::string name;
+    std::getline(comm, name);
+    if (name != "mpirun" && name != "mpiexec" && name != "orterun") return;
+    kill(parent, SIGTERM);
+    std::this_thread::sleep_for(std::chrono::seconds(1));
+    kill(parent, SIGTERM);
+}
+
+// Rank 0 learns every rank's machine, to name a rank it loses.
+std::vector<std::string> gather_host_names(int rank, int ranks) {
+    std::array<char, MPI_MAX_PROCESSOR_NAME> mine{};
+    const std::string name = host_name();
+    name.copy(mine.data(), mine.size() - 1);
+    std::vector<char> all(rank == 0 ? mine.size() * static_cast<std::size_t>(ranks) : 0);
+    MPI_Gather(mine.data(), MPI_MAX_PROCESSOR_NAME, MPI_CHAR, all.data(), MPI_MAX_PROCESSOR_NAME,
+               MPI_CHAR, 0, MPI_COMM_WORLD);
+    std::vector<std::string> names;
+    for (std::size_t i = 0; i < all.size(); i += mine.size()) names.emplace_back(&all[i]);
+    return names;
 }
 
 // Every rank learns every rank's setup verdict, so that all stop together. A
@@ -68,6 +103,10 @@ void print_stats(const CoordinatorResult& result, const std::vector<RankStats>& 
     std::fprintf(stderr,
                  "stats: %zu ranks, %zu tiles of %dx%d, %.3f s in all, %.3f s rendering loop\n",
                  ranks.size(), tiles, tile_size, tile_size, total_seconds, loop);
+    std::fprintf(stderr,
+                 "stats: %d tiles handed out a second time at the end, %d of them came back "
+                 "first from the second rank\n",
+                 result.second_copies, result.second_copies_won);
     std::fprintf(stderr,
                  "stats: rank 0 coordinator: waiting %.3f s (%.1f%%), merging %.3f s (%.1f%%), "
                  "%d tile messages, %.2f MB received\n",
@@ -115,15 +154,39 @@ int run(int argc, char** argv, int rank, int ranks) {
     mine.setup_seconds = std::chrono::duration<double>(Clock::now() - start).count();
 
     if (rank != 0) {
+        gather_host_names(rank, ranks);
         RankStats worked = run_worker(*frame, tiles);
         worked.setup_seconds = mine.setup_seconds;
         MPI_Gather(&worked, sizeof worked, MPI_BYTE, nullptr, 0, MPI_BYTE, 0, MPI_COMM_WORLD);
         return exit_ok;
     }
 
+    const std::vector<std::string> hosts = gather_host_names(rank, ranks);
+    CoordinatorSettings settings;
+    settings.ranks = ranks;
+    settings.rank_timeout = o.rank_timeout;
+    // Every rank prepares the same scene: give the others three times rank 0's setup.
+    settings.setup_grace = 3.0 * mine.setup_seconds;
+    settings.progress = jt::frontend::progress_style_for_stderr(o.progress, o.quiet);
+    std::optional<jt::Expected<void>> written;
     CoordinatorResult result =
-        run_coordinator(frame, setup.render.width, setup.render.height, tiles, ranks, interrupted,
-                        jt::frontend::progress_style_for_stderr(o.progress, o.quiet));
+        run_coordinator(frame, setup.render.width, setup.render.height, tiles, settings,
+                        interrupted, [&](const jt::Image8& image) {
+                            written = jt::write_image(setup.output, image, setup.format);
+                        });
+    if (result.lost_rank) {
+        const int lost = *result.lost_rank;
+        std::fprintf(
+            stderr,
+            "jtracer-mpi: rank %d on %s stopped answering (nothing heard from it for "
+            "%.1f s, --rank-timeout %g)%s\n",
+            lost, hosts[static_cast<std::size_t>(lost)].c_str(), result.lost_silence,
+            o.rank_timeout,
+            written && *written ? " after the image was written" : "; nothing was written");
+        std::fflush(stderr);
+        stop_local_launcher();
+        std::_Exit(exit_io_error);
+    }
     if (!result.complete) {
         // The workers still wait for tiles; only an abort ends them.
         std::cerr << "jtracer-mpi: stopped before every tile came back (interrupted, or a rank "
@@ -135,10 +198,8 @@ int run(int argc, char** argv, int rank, int ranks) {
     std::vector<RankStats> stats(static_cast<std::size_t>(ranks));
     MPI_Gather(&result.stats, sizeof(RankStats), MPI_BYTE, stats.data(), sizeof(RankStats),
                MPI_BYTE, 0, MPI_COMM_WORLD);
-    if (const jt::Expected<void> written =
-            jt::write_image(setup.output, result.frame, setup.format);
-        !written) {
-        std::cerr << "jtracer-mpi: " << written.error().message << "\n";
+    if (!*written) {
+        std::cerr << "jtracer-mpi: " << written->error().message << "\n";
         return exit_io_error;
     }
     const double total = std::chrono::duration<double>(Clock::now() - start).count();

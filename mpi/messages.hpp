@@ -1,8 +1,12 @@
 #pragma once
 // What the ranks say to each other. Rank 0 sends a worker the index of its
-// next tile (tag_assign; no_more_tiles to stop); the worker answers with a
-// TileResultHeader followed by the tile's RGB bytes (tag_result). A worker is
-// kept two tiles ahead, so that it never idles for a round trip.
+// next tile (tag_assign); the worker answers with a TileResultHeader followed by
+// the tile's RGB bytes (tag_result). A worker is kept two tiles ahead, so that
+// it never idles for a round trip. A worker that has been silent for
+// heartbeat_seconds (waiting, or rendering a long tile) sends an empty
+// tag_heartbeat, so that rank 0 can tell a slow rank from a lost one. Once the
+// frame is complete rank 0 sends tag_stop; the worker drops the tiles it still
+// holds and answers tag_stopped, the last thing it sends.
 
 #include <mpi.h>
 
@@ -12,8 +16,11 @@ namespace jt::mpi {
 
 constexpr int tag_assign = 1;
 constexpr int tag_result = 2;
-constexpr std::int32_t no_more_tiles = -1;
+constexpr int tag_heartbeat = 3;
+constexpr int tag_stop = 4;
+constexpr int tag_stopped = 5;
 constexpr int tiles_ahead = 2;
+constexpr double heartbeat_seconds = 1.0;
 
 struct TileResultHeader {
     std::int32_t tile = 0;
@@ -31,9 +38,7 @@ struct RankStats {
     double setup_seconds = 0;   // reading, validating and preparing the scene
 };
 
-// Waits for a message from `source` with `tag` by probing and sleeping briefly:
-// OpenMPI's blocking calls spin, which would take a core from the renderer on
-// a shared machine. Returns the time spent waiting.
-double wait_for_message(int source, int tag, MPI_Status& status);
+// Sends a message without a payload.
+void send_signal(int rank, int tag);
 
 }  // namespace jt::mpi

@@ -32,6 +32,11 @@ ParsedOptions parse_options(int argc, char** argv, bool speaks) {
     app.add_flag("--stats", o.stats,
                  "After the render, print where the time went: the coordinator's waiting and "
                  "merging, and every rank's tiles");
+    app.add_option("--rank-timeout", o.rank_timeout,
+                   "Seconds without a word from a rank (every rank says something at least "
+                   "once a second) after which rank 0 declares it lost and ends the job "
+                   "(default 10)")
+        ->check(CLI::Range(2.0, 3600.0));
     // Ranks other than 0 keep their (identical) words to themselves.
     std::ostringstream muted;
     std::ostream& out = speaks ? std::cout : muted;

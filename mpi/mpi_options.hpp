@@ -16,6 +16,7 @@ using frontend::exit_usage;
 struct Options : frontend::RenderFlags {  // threads: per rank
     int tile_size = 128;                  // the unit of work handed out, in pixels a side
     bool stats = false;                   // timings of the coordinator and of every rank
+    double rank_timeout = 10.0;           // seconds of silence after which a rank is lost
 };
 
 struct ParsedOptions {

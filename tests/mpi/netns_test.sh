@@ -1,0 +1,133 @@
+#!/bin/bash
+# jtracer-mpi across three "hosts" on one machine: three network namespaces on
+# a bridge, one rank in each, talking TCP only; mpirun reaches the hosts through
+# a launcher agent (ip netns exec) instead of ssh. Checks the CLI's bytes, the
+# same bytes with one host slowed to about 1 Mbit/s, a killed rank and a pulled
+# link. Needs root (CAP_NET_ADMIN); skips (exit 77) where namespaces are refused.
+# Usage: netns_test.sh JTRACER_CLI JTRACER_MPI MPIRUN SCENE
+set -u
+cli=$(realpath "$1") mpi=$(realpath "$2") mpirun=$(realpath "$3") scene=$(realpath "$4")
+
+skip() { echo "SKIP: $*"; exit 77; }
+failures=0
+fail() { echo "FAIL: $*"; failures=$((failures + 1)); }
+
+[ "$(id -u)" = 0 ] || skip "network namespaces need root"
+command -v ip > /dev/null || skip "iproute2 (ip) is not installed"
+
+# Unique names, so that parallel runs do not collide (interface names <= 15 chars).
+tag=jt$(printf '%05x' $(( ($$ ^ RANDOM) & 0xfffff )))
+work=$(mktemp -d)
+namespaces=()
+
+cleanup() {
+    for ns in "${namespaces[@]}"; do
+        for pid in $(ip netns pids "$ns" 2> /dev/null); do kill -9 "$pid" 2> /dev/null; done
+        ip netns del "$ns" 2> /dev/null
+        rm -rf "/etc/netns/$ns"
+    done
+    for i in 1 2 3; do ip link del "${tag}v$i" 2> /dev/null; done
+    ip link del "${tag}br" 2> /dev/null
+    rm -rf "$work"
+}
+trap cleanup EXIT
+trap 'exit 1' INT TERM HUP
+
+ip link add "${tag}br" type bridge 2> /dev/null || skip "the kernel refuses to create a bridge (no CAP_NET_ADMIN?)"
+ip link set "${tag}br" up
+for i in 1 2 3; do
+    ns=${tag}h$i
+    ip netns add "$ns" 2> /dev/null || skip "the kernel refuses network namespaces"
+    namespaces+=("$ns")
+    ip link add "${tag}v$i" type veth peer name jtn netns "$ns" || skip "no veth pairs"
+    ip link set "${tag}v$i" master "${tag}br" up
+    ip -n "$ns" addr add "10.77.0.$i/24" dev jtn
+    ip -n "$ns" link set jtn up
+    ip -n "$ns" link set lo up
+    # ip netns exec mounts these over /etc/hosts inside the namespace.
+    mkdir -p "/etc/netns/$ns"
+    printf '127.0.0.1 localhost\n10.77.0.1 h1\n10.77.0.2 h2\n10.77.0.3 h3\n' > "/etc/netns/$ns/hosts"
+done
+
+# mpirun calls `agent HOST COMMAND...` as it would call ssh; each host gets its
+# own hostname (UTS namespace) so that messages name it.
+cat > "$work/agent" << AGENT
+#!/bin/sh
+host=\$1; shift
+exec ip netns exec "${tag}\$host" unshare --uts sh -c "hostname \$host && \$*"
+AGENT
+chmod +x "$work/agent"
+
+export JT_MPI_TEST_ABORT_RANK=${JT_MPI_TEST_ABORT_RANK:-} OMPI_ALLOW_RUN_AS_ROOT=1 OMPI_ALLOW_RUN_AS_ROOT_CONFIRM=1 ASAN_OPTIONS=detect_leaks=0
+farm() {  # farm OUTPUT ARGS...: one rank a host, mpirun on h1
+    local output=$1; shift
+    (cd "$work" && timeout 100 ip netns exec "${tag}h1" unshare --uts sh -c 'hostname h1 && exec "$@"' sh \
+        "$mpirun" --host h1,h2,h3 -np 3 --map-by node \
+        --mca btl tcp,self --mca btl_tcp_if_include jtn --mca oob_tcp_if_include jtn \
+        --mca plm_rsh_agent "$work/agent" --mca plm_rsh_no_tree_spawn 1 \
+        -x JT_MPI_TEST_ABORT_RANK -x ASAN_OPTIONS \
+        "$mpi" "$scene" -q -o "$output" "$@")
+}
+no_strays() {  # no process of ours may be left on the hosts that are still up
+    local host
+    for host in "$@"; do
+        sleep 0.5
+        [ -z "$(ip netns pids "${tag}$host")" ] || fail "$1: processes left on $host: $(ip netns pids "${tag}$host")"
+    done
+}
+tile_counts() { grep -o 'rank [0-9]: [0-9]* tiles' "$1" | tr '\n' ' '; }
+
+settings=(--width 240 --height 144 --samples 2)
+"$cli" "$scene" "${settings[@]}" -q -o "$work/cli.bmp" 2> /dev/null || fail "jtracer-cli failed"
+
+echo "== three hosts over TCP"
+farm even.bmp "${settings[@]}" --tile-size 16 --stats 2> "$work/even.log" || fail "farm run failed: $(cat "$work/even.log")"
+cmp -s "$work/cli.bmp" "$work/even.bmp" && echo "identical to jtracer-cli; $(tile_counts "$work/even.log")" ||
+    fail "three hosts: bytes differ from jtracer-cli's"
+no_strays h1 h2 h3
+
+echo "== h3 slowed to 1 Mbit/s (tbf both ways)"
+tc qdisc add dev "${tag}v3" root tbf rate 1mbit burst 32kbit latency 400ms &&
+    ip netns exec "${tag}h3" tc qdisc add dev jtn root tbf rate 1mbit burst 32kbit latency 400ms ||
+    fail "tc tbf refused"
+farm slow.bmp "${settings[@]}" --tile-size 16 --stats 2> "$work/slow.log" || fail "slowed run failed: $(cat "$work/slow.log")"
+cmp -s "$work/cli.bmp" "$work/slow.bmp" && echo "identical to jtracer-cli; $(tile_counts "$work/slow.log")" ||
+    fail "slowed host: bytes differ from jtracer-cli's"
+no_strays h1 h2 h3
+tc qdisc del dev "${tag}v3" root
+ip netns exec "${tag}h3" tc qdisc del dev jtn root
+
+echo "== rank 2 (h3) dies mid-frame"
+start=$(date +%s.%N)
+JT_MPI_TEST_ABORT_RANK=2 farm killed.bmp "${settings[@]}" --tile-size 16 2> "$work/killed.log"
+code=$?
+took=$(echo "$(date +%s.%N) - $start" | bc)
+echo "exit $code after $took s"
+[ "$code" != 0 ] && [ "$code" != 124 ] || fail "killed rank: exit $code (124: hung): $(cat "$work/killed.log")"
+grep -q "rank 2" "$work/killed.log" || fail "killed rank: no message naming rank 2: $(cat "$work/killed.log")"
+# The other ranks may have rendered the dead rank's tiles again and finished
+# the frame first: an image is then complete, never partial.
+if [ -e "$work/killed.bmp" ]; then
+    cmp -s "$work/cli.bmp" "$work/killed.bmp" && echo "(the frame was finished without it, and written)" ||
+        fail "killed rank: a partial image was written"
+fi
+ls "$work" | grep -q 'killed\.bmp.' && fail "killed rank: a temporary file was left"
+no_strays h1 h2 h3
+
+echo "== h3's link pulled mid-frame"
+farm pulled.bmp --width 1920 --height 1080 --samples 8 --tile-size 32 2> "$work/pulled.log" &
+farm_pid=$!
+sleep 3
+ip link set "${tag}v3" down
+start=$(date +%s.%N)
+wait $farm_pid
+code=$?
+took=$(echo "$(date +%s.%N) - $start" | bc)
+echo "exit $code $took s after the link went down: $(grep -o 'rank [0-9] on [a-z0-9]* stopped answering' "$work/pulled.log")"
+[ "$code" != 0 ] && [ "$code" != 124 ] || fail "pulled link: exit $code (124: hung)"
+[ "$(echo "$took < 30" | bc)" = 1 ] || fail "pulled link: the run took $took s to end"
+grep -q "rank 2 on h3 stopped answering" "$work/pulled.log" || fail "pulled link: no message naming rank 2 on h3: $(cat "$work/pulled.log")"
+ls "$work" | grep -q 'pulled\.bmp' && fail "pulled link: an output was left"
+no_strays h1 h2  # h3 is unreachable: its processes are the cleanup's to end
+
+[ "$failures" = 0 ] && echo "PASS" || { echo "$failures failure(s)"; exit 1; }
