@@ -112,10 +112,13 @@ class Coordinator {
         return std::find(held.begin(), held.end(), tile) != held.end();
     }
 
-    // The next tile not yet handed out; once there is none, the oldest tile
-    // still out that `rank` does not hold and no one holds twice.
+    // The next tile not yet handed out; once there is none, and only for a rank
+    // with nothing left in hand, the oldest tile still out that no one holds
+    // twice. (A rank still busy is not given more: if it is the slow one, the
+    // copy would only be one more tile to wait for.)
     std::int32_t pick_tile(int rank) {
         if (next_tile_ < tiles_.size()) return static_cast<std::int32_t>(next_tile_++);
+        if (rank != 0 && !workers_[static_cast<std::size_t>(rank)].held.empty()) return no_tile;
         for (std::size_t i = 0; i < tiles_.size(); ++i) {
             const auto tile = static_cast<std::int32_t>(i);
             if (!pasted_tile_[i] && copies_[i] < max_copies && !holds(rank, tile)) return tile;

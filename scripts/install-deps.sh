@@ -8,7 +8,7 @@ packages=(
     libglm-dev libtbb-dev libembree-dev libcli11-dev libstb-dev
     libgtest-dev libgmock-dev libbenchmark-dev
     libglfw3-dev libimgui-dev libosmesa6-dev libgl-dev xvfb xauth
-    libopenmpi-dev openmpi-bin
+    libopenmpi-dev openmpi-bin iproute2
     clang libclang-rt-14-dev valgrind
     tachyon-bin-nox
     mandoc man-db dpkg-dev file bash-completion zsh desktop-file-utils shared-mime-info

@@ -51,7 +51,7 @@ _jtracer() {
         ;;
     jtracer-mpi)
         options='-h --help --version -o --output --camera --width --height --samples --threads
-            -q --quiet --progress --tile-size --stats'
+            -q --quiet --progress --tile-size --rank-timeout --stats'
         ;;
     jtracer-merge)
         options='-h --help --version -o --output -q --quiet'
@@ -89,7 +89,7 @@ _jtracer() {
         return
         ;;
     --width | --height | --samples | --threads | --region | --threshold | --max-pixels | \
-        --tile-size | --size | --timeout)
+        --tile-size | --rank-timeout | --size | --timeout)
         return # a number or a list of numbers: nothing to offer
         ;;
     esac

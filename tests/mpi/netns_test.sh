@@ -101,7 +101,7 @@ echo "== rank 2 (h3) dies mid-frame"
 start=$(date +%s.%N)
 JT_MPI_TEST_ABORT_RANK=2 farm killed.bmp "${settings[@]}" --tile-size 16 2> "$work/killed.log"
 code=$?
-took=$(echo "$(date +%s.%N) - $start" | bc)
+took=$(awk "BEGIN { print $(date +%s.%N) - $start }")
 echo "exit $code after $took s"
 [ "$code" != 0 ] && [ "$code" != 124 ] || fail "killed rank: exit $code (124: hung): $(cat "$work/killed.log")"
 grep -q "rank 2" "$work/killed.log" || fail "killed rank: no message naming rank 2: $(cat "$work/killed.log")"
@@ -122,10 +122,10 @@ ip link set "${tag}v3" down
 start=$(date +%s.%N)
 wait $farm_pid
 code=$?
-took=$(echo "$(date +%s.%N) - $start" | bc)
+took=$(awk "BEGIN { print $(date +%s.%N) - $start }")
 echo "exit $code $took s after the link went down: $(grep -o 'rank [0-9] on [a-z0-9]* stopped answering' "$work/pulled.log")"
 [ "$code" != 0 ] && [ "$code" != 124 ] || fail "pulled link: exit $code (124: hung)"
-[ "$(echo "$took < 30" | bc)" = 1 ] || fail "pulled link: the run took $took s to end"
+awk "BEGIN { exit !($took < 30) }" || fail "pulled link: the run took $took s to end"
 grep -q "rank 2 on h3 stopped answering" "$work/pulled.log" || fail "pulled link: no message naming rank 2 on h3: $(cat "$work/pulled.log")"
 ls "$work" | grep -q 'pulled\.bmp' && fail "pulled link: an output was left"
 no_strays h1 h2  # h3 is unreachable: its processes are the cleanup's to end
