@@ -68,11 +68,14 @@ farm() {  # farm OUTPUT ARGS...: one rank a host, mpirun on h1
         -x JT_MPI_TEST_ABORT_RANK -x ASAN_OPTIONS \
         "$mpi" "$scene" -q -o "$output" "$@")
 }
-no_strays() {  # no process of ours may be left on the hosts that are still up
-    local host
+no_strays() {  # no process of ours may be left on the hosts still up (daemons take a moment)
+    local host tries
     for host in "$@"; do
-        sleep 0.5
-        [ -z "$(ip netns pids "${tag}$host")" ] || fail "$1: processes left on $host: $(ip netns pids "${tag}$host")"
+        for tries in $(seq 20); do
+            [ -z "$(ip netns pids "${tag}$host")" ] && break
+            sleep 0.5
+        done
+        [ -z "$(ip netns pids "${tag}$host")" ] || fail "processes left on $host after 10 s: $(ip netns pids "${tag}$host")"
     done
 }
 tile_counts() { grep -o 'rank [0-9]: [0-9]* tiles' "$1" | tr '\n' ' '; }
