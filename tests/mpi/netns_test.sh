@@ -118,7 +118,8 @@ ls "$work" | grep -q 'killed\.bmp.' && fail "killed rank: a temporary file was l
 no_strays h1 h2 h3
 
 echo "== h3's link pulled mid-frame"
-farm pulled.bmp --width 1920 --height 1080 --samples 8 --tile-size 32 2> "$work/pulled.log" &
+pulled_settings=(--width 1920 --height 1080 --samples 8)
+farm pulled.bmp "${pulled_settings[@]}" --tile-size 32 2> "$work/pulled.log" &
 farm_pid=$!
 sleep 3
 ip link set "${tag}v3" down
@@ -130,7 +131,16 @@ echo "exit $code $took s after the link went down: $(grep -o 'rank [0-9] on [a-z
 [ "$code" != 0 ] && [ "$code" != 124 ] || fail "pulled link: exit $code (124: hung)"
 awk "BEGIN { exit !($took < 30) }" || fail "pulled link: the run took $took s to end"
 grep -q "rank 2 on h3 stopped answering" "$work/pulled.log" || fail "pulled link: no message naming rank 2 on h3: $(cat "$work/pulled.log")"
-ls "$work" | grep -q 'pulled\.bmp' && fail "pulled link: an output was left"
+# As with a killed rank, the others may finish the frame before the lost host
+# is given up: then the image is complete and the CLI's, never partial.
+if [ -e "$work/pulled.bmp" ]; then
+    "$cli" "$scene" "${pulled_settings[@]}" -q -o "$work/cli-pulled.bmp" 2> /dev/null ||
+        fail "jtracer-cli failed"
+    cmp -s "$work/cli-pulled.bmp" "$work/pulled.bmp" &&
+        echo "(the frame was finished without it, and written)" ||
+        fail "pulled link: a partial image was written"
+fi
+ls "$work" | grep -q 'pulled\.bmp.' && fail "pulled link: a temporary file was left"
 no_strays h1 h2  # h3 is unreachable: its processes are the cleanup's to end
 
 [ "$failures" = 0 ] && echo "PASS" || { echo "$failures failure(s)"; exit 1; }
