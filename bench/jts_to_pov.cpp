@@ -45,13 +45,31 @@ void write_material(PovWriter& out, const jt::Material& m) {
             ambient[i] = share > 0.0 ? ambient[i] / share : 0.0;
         }
     }
-    out.vector(" texture { pigment { rgb ", pigment);
+    // JTracer's transmission adds t times the transmitted ray to unchanged local
+    // terms, as POV-Ray's transmit does for a black pigment (clear glass).
+    auto colour = [&](const char* prefix, const jt::Colour& c) {
+        if (m.transmission > 0.0)
+            out.printf("%srgbt <%.9g, %.9g, %.9g, %.9g>", prefix, c.x, c.y, c.z, m.transmission);
+        else
+            out.vector((std::string(prefix) + "rgb ").c_str(), c);
+    };
+    out.printf(" texture { pigment { ");
+    if (m.checker) {
+        // The mirrored z flips the parity of floor(z) off the cube faces: the
+        // two colours swap places.
+        colour("checker ", *m.checker);
+        colour(" ", pigment);
+        out.printf(" scale %.9g", m.checker_size);
+    } else {
+        colour("", pigment);
+    }
     out.vector(" } finish { ambient rgb ", ambient);
     out.printf(" diffuse %.9g brilliance %.9g", diffuse, 1.0 / m.diffuse_k);
     if (mean(m.specular) > 0.0)
         out.printf(" phong %.9g phong_size %.9g", mean(m.specular), m.specular_k);
     if (m.reflection > 0.0) out.printf(" reflection { %.9g }", m.reflection);
     out.printf(" } }");
+    if (m.transmission > 0.0) out.printf(" interior { ior %.9g }", m.ior);
 }
 
 // POV-Ray's `matrix` lists the images of the x, y, z axes and the translation,

@@ -114,6 +114,8 @@ TEST(Schema, MatchesTheLanguagesPropertyTable) {
               "material.ior number 1 (0, inf) omitted-when-default\n"
               "material.checker colour  <0, 1> omitted-when-default\n"
               "material.checker_size number 1 (0, inf) omitted-when-default\n"
+              "material.image_map string \"\" any omitted-when-default\n"
+              "material.map_size number 1 (0, inf) omitted-when-default\n"
               "transform.translate vector any\n"
               "transform.scale vector any\n"
               "transform.xrotate number any degrees\n"

@@ -17,27 +17,31 @@ Material checkered(double size = 1.0) {
     return m;
 }
 
+Colour checker_at(const Material& m, const Vec3& p) {
+    return pattern_pigment(m, nullptr, Sphere{}, p);
+}
+
 TEST(Checker, ColourAtChosenPoints) {
     const Material m = checkered();
-    EXPECT_EQ(pattern_pigment(m, {0.5, 0.5, 0.5}), kRed);    // k = 0
-    EXPECT_EQ(pattern_pigment(m, {1.5, 0.5, 0.5}), kBlue);   // k = 1
-    EXPECT_EQ(pattern_pigment(m, {1.5, 1.5, 0.5}), kRed);    // k = 2
-    EXPECT_EQ(pattern_pigment(m, {-0.5, 0.5, 0.5}), kBlue);  // floor(-0.5) = -1
-    EXPECT_EQ(pattern_pigment(m, {-0.5, -0.5, -0.5}), kBlue);
-    EXPECT_EQ(pattern_pigment(checkered(2.0), {1.5, 0.5, 0.5}), kRed);
-    EXPECT_EQ(pattern_pigment(checkered(2.0), {2.5, 0.5, 0.5}), kBlue);
+    EXPECT_EQ(checker_at(m, {0.5, 0.5, 0.5}), kRed);    // k = 0
+    EXPECT_EQ(checker_at(m, {1.5, 0.5, 0.5}), kBlue);   // k = 1
+    EXPECT_EQ(checker_at(m, {1.5, 1.5, 0.5}), kRed);    // k = 2
+    EXPECT_EQ(checker_at(m, {-0.5, 0.5, 0.5}), kBlue);  // floor(-0.5) = -1
+    EXPECT_EQ(checker_at(m, {-0.5, -0.5, -0.5}), kBlue);
+    EXPECT_EQ(checker_at(checkered(2.0), {1.5, 0.5, 0.5}), kRed);
+    EXPECT_EQ(checker_at(checkered(2.0), {2.5, 0.5, 0.5}), kBlue);
     Material plain = glowing(kRed);
-    EXPECT_EQ(pattern_pigment(plain, {1.5, 0.5, 0.5}), kRed);
+    EXPECT_EQ(checker_at(plain, {1.5, 0.5, 0.5}), kRed);
 }
 
 // A point on a cube face (y = 0) and just below it take the colour of the cube
 // above: the 1e-6 keeps a plane on a face one colour, not rounding noise.
 TEST(Checker, ACubeFaceShowsOneColour) {
     const Material m = checkered();
-    EXPECT_EQ(pattern_pigment(m, {0.5, 0.0, 0.5}), kRed);
-    EXPECT_EQ(pattern_pigment(m, {0.5, -1e-9, 0.5}), kRed);
-    EXPECT_EQ(pattern_pigment(m, {1.5, -1e-9, 0.5}), kBlue);
-    EXPECT_EQ(pattern_pigment(m, {0.5, -1e-3, 0.5}), kBlue);  // well below: the cube under it
+    EXPECT_EQ(checker_at(m, {0.5, 0.0, 0.5}), kRed);
+    EXPECT_EQ(checker_at(m, {0.5, -1e-9, 0.5}), kRed);
+    EXPECT_EQ(checker_at(m, {1.5, -1e-9, 0.5}), kBlue);
+    EXPECT_EQ(checker_at(m, {0.5, -1e-3, 0.5}), kBlue);  // well below: the cube under it
 }
 
 Scene looking_down_at(const Vec3& point, const Primitive& p) {

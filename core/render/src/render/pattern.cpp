@@ -1,6 +1,10 @@
 #include "render/pattern.hpp"
 
+#include <glm/geometric.hpp>
+
+#include <algorithm>
 #include <cmath>
+#include <numbers>
 
 namespace jt {
 
@@ -17,13 +21,73 @@ bool odd_cube(const Vec3& p, double size) {
     return std::abs(std::fmod(k, 2.0)) == 1.0;
 }
 
+double wrap(double x) {
+    const double w = x - std::floor(x);
+    return w < 1.0 ? w : 0.0;  // x just below an integer can round up to 1
+}
+
+// Index i modulo n, for any i.
+int wrap_index(long long i, int n) {
+    const long long m = i % n;
+    return static_cast<int>(m < 0 ? m + n : m);
+}
+
+Colour texel(const Texture& t, int i, int j) {
+    const float* p = &t.rgb[3 * (static_cast<std::size_t>(j) * t.width + i)];
+    return {p[0], p[1], p[2]};
+}
+
 }  // namespace
 
 bool has_pattern(const Material& m) {
-    return m.checker.has_value();
+    return m.checker.has_value() || !m.image_map.empty();
 }
 
-Colour pattern_pigment(const Material& m, const Vec3& object_point) {
+Uv sphere_uv(const Sphere& sphere, const Vec3& p) {
+    const Vec3 d = glm::normalize(p - sphere.center);
+    return {0.5 + std::atan2(d.x, d.z) / (2.0 * std::numbers::pi),
+            0.5 + std::asin(std::clamp(d.y, -1.0, 1.0)) / std::numbers::pi};
+}
+
+Uv cylinder_uv(const Cylinder& cylinder, const Vec3& p) {
+    // A cap hit lies inside the rim; a side hit on it, up to rounding.
+    const double r2 = cylinder.radius * cylinder.radius;
+    const bool cap = p.x * p.x + p.z * p.z < r2 * (1.0 - 1e-9);
+    if (cap) return {0.5 + p.x / (2.0 * cylinder.radius), 0.5 + p.z / (2.0 * cylinder.radius)};
+    return {0.5 + std::atan2(p.x, p.z) / (2.0 * std::numbers::pi), p.y / cylinder.height};
+}
+
+Uv plane_uv(const Plane& plane, double map_size, const Vec3& p) {
+    const Vec3 n = glm::normalize(plane.normal);
+    Vec3 e1 = glm::cross(n, Vec3(0, 0, 1));
+    if (e1 == Vec3(0.0)) e1 = glm::cross(n, Vec3(1, 0, 0));
+    e1 = glm::normalize(e1);
+    const Vec3 e2 = glm::cross(n, e1);
+    return {glm::dot(p, e1) / map_size, glm::dot(p, e2) / map_size};
+}
+
+Uv shape_uv(const Shape& shape, double map_size, const Vec3& p) {
+    if (const auto* s = std::get_if<Sphere>(&shape)) return sphere_uv(*s, p);
+    if (const auto* c = std::get_if<Cylinder>(&shape)) return cylinder_uv(*c, p);
+    return plane_uv(std::get<Plane>(shape), map_size, p);
+}
+
+Colour sample_bilinear(const Texture& t, Uv uv) {
+    // Texel i's centre is at (i + 0.5) / width.
+    const double x = wrap(uv.u) * t.width - 0.5, y = wrap(uv.v) * t.height - 0.5;
+    const double fx = std::floor(x), fy = std::floor(y);
+    const double ax = x - fx, ay = y - fy;
+    const auto i0 = static_cast<long long>(fx), j0 = static_cast<long long>(fy);
+    const int i = wrap_index(i0, t.width), i1 = wrap_index(i0 + 1, t.width);
+    const int j = wrap_index(j0, t.height), j1 = wrap_index(j0 + 1, t.height);
+    const Colour bottom = (1.0 - ax) * texel(t, i, j) + ax * texel(t, i1, j);
+    const Colour top = (1.0 - ax) * texel(t, i, j1) + ax * texel(t, i1, j1);
+    return (1.0 - ay) * bottom + ay * top;
+}
+
+Colour pattern_pigment(const Material& m, const Texture* image, const Shape& shape,
+                       const Vec3& object_point) {
+    if (image) return sample_bilinear(*image, shape_uv(shape, m.map_size, object_point));
     if (m.checker && odd_cube(object_point, m.checker_size)) return *m.checker;
     return m.pigment;
 }

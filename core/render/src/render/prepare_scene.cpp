@@ -181,19 +181,48 @@ std::shared_ptr<const Geometry> build_geometry(const Scene& scene, const Geometr
     return g;
 }
 
-// Each primitive's world-to-object map when any material has a pattern; a
-// primitive the transform rule leaves out is never hit, so any map will do.
-std::vector<Affine> pattern_spaces(const std::vector<Primitive>& primitives,
-                                   const std::vector<Material>& materials) {
+// Each primitive's shape and world-to-object map when any material has a
+// pattern; a primitive the transform rule leaves out is never hit, so any map
+// will do.
+std::vector<PatternSpace> pattern_spaces(const std::vector<Primitive>& primitives,
+                                         const std::vector<Material>& materials) {
     if (std::none_of(materials.begin(), materials.end(), has_pattern)) return {};
-    std::vector<Affine> spaces(primitives.size());
+    std::vector<PatternSpace> spaces(primitives.size());
     for (std::size_t i = 0; i < primitives.size(); ++i) {
+        spaces[i].shape = primitives[i].shape;
         if (primitives[i].transforms.empty()) continue;
         auto placed = object_transform(primitives[i].transforms);
         if (const auto* transform = std::get_if<ObjectTransform>(&placed))
-            spaces[i] = transform->to_object;
+            spaces[i].to_object = transform->to_object;
     }
     return spaces;
+}
+
+// The picture of each material's image_map, each file read once: from the
+// previous prepared scene when it had the file, else from disk.
+Expected<void> load_textures(const Scene& scene, PreparedScene& prepared,
+                             const PreparedScene* previous) {
+    prepared.textures.assign(prepared.materials.size(), nullptr);
+    prepared.texture_files.assign(prepared.materials.size(), {});
+    auto find = [](const PreparedScene& in, const std::filesystem::path& path, std::size_t end) {
+        for (std::size_t i = 0; i < end; ++i)
+            if (in.textures[i] && in.texture_files[i] == path) return in.textures[i];
+        return std::shared_ptr<const Texture>();
+    };
+    for (std::size_t i = 0; i < prepared.materials.size(); ++i) {
+        if (prepared.materials[i].image_map.empty()) continue;
+        const std::filesystem::path path = asset_path(scene, prepared.materials[i].image_map);
+        std::shared_ptr<const Texture> texture = find(prepared, path, i);
+        if (!texture && previous) texture = find(*previous, path, previous->textures.size());
+        if (!texture) {
+            Expected<std::shared_ptr<const Texture>> read = load_texture(path);
+            if (!read) return Error{"image_map: " + read.error().message};
+            texture = *read;
+        }
+        prepared.textures[i] = std::move(texture);
+        prepared.texture_files[i] = path;
+    }
+    return {};
 }
 
 }  // namespace
@@ -231,6 +260,8 @@ Expected<std::shared_ptr<const PreparedScene>> prepare_scene(
         build();
         gather_materials();
     }
+    if (Expected<void> textures = load_textures(scene, *prepared, previous.get()); !textures)
+        return textures.error();
     prepared->lights = scene.lights;
     if (previous && previous->geometry == prepared->geometry && previous->lights == scene.lights)
         prepared->light_tables = previous->light_tables;

@@ -9,6 +9,7 @@
 #include "jtracer/affine.hpp"
 #include "jtracer/render_job.hpp"
 #include "jtracer/scene.hpp"
+#include "jtracer/texture.hpp"
 #include "render/direction_table.hpp"
 
 #include <embree3/rtcore.h>
@@ -50,6 +51,11 @@ struct WorldPlane {
     std::uint32_t source = 0;
 };
 
+struct PatternSpace {
+    Affine to_object;
+    Shape shape;
+};
+
 struct GeometryDigest {
     std::uint64_t a = 0, b = 0;
     std::size_t primitives = 0;
@@ -86,9 +92,13 @@ struct PreparedScene {
     // Runs of primitives with equal materials share one entry.
     std::vector<Material> materials;
     std::vector<std::uint32_t> material_of;  // indexed by Scene primitive
-    // World to object space of each Scene primitive, for patterns; empty when
-    // no material has one.
-    std::vector<Affine> pattern_space;
+    // Each Scene primitive's shape and world-to-object map, for patterns;
+    // empty when no material has one.
+    std::vector<PatternSpace> pattern_space;
+    // The picture of each material's image_map (null for none), parallel to
+    // `materials`; a file named by several materials is loaded once.
+    std::vector<std::shared_ptr<const Texture>> textures;
+    std::vector<std::filesystem::path> texture_files;  // where each was read from
     // Whether any material transmits: only then do shadow rays look past the
     // first surface they meet (docs/language.md §13.2).
     bool has_transmission = false;

@@ -131,8 +131,10 @@ Colour shade_surface(const PreparedScene& scene, const SurfaceHit& s, const Vec3
                      std::uint64_t& rays) {
     const Material& m = scene.materials[scene.material_of[s.source]];
     if (!has_pattern(m)) return shade_hit(scene, m, s.point, s.lifted, s.normal, -d, rays);
+    const PatternSpace& space = scene.pattern_space[s.source];
     Material patterned = m;
-    patterned.pigment = pattern_pigment(m, apply_point(scene.pattern_space[s.source], s.point));
+    patterned.pigment = pattern_pigment(m, scene.textures[scene.material_of[s.source]].get(),
+                                        space.shape, apply_point(space.to_object, s.point));
     return shade_hit(scene, patterned, s.point, s.lifted, s.normal, -d, rays);
 }
 

@@ -56,6 +56,8 @@ struct Material {
     double ior = 1.0;               // index of refraction of the inside
     std::optional<Colour> checker;  // the second colour of a solid checker; none: no checker
     double checker_size = 1.0;      // edge of one checker cube, object units
+    std::string image_map;          // PNG, JPEG or BMP, relative to Scene::asset_folder; "": none
+    double map_size = 1.0;          // size of one tile of a planar map
 
     bool operator==(const Material&) const = default;
 };
@@ -114,8 +116,16 @@ struct Scene {
     std::vector<Camera> cameras;
     std::vector<Primitive> primitives;
     std::vector<PointLight> lights;
+    // Where the relative file names it holds (image_map) are found: the folder
+    // of the .jts file (load_scene_file sets it); empty: the current directory.
+    std::string asset_folder;
 
-    bool operator==(const Scene&) const = default;
+    // What the scene means: two texts that say the same compare equal
+    // wherever they lie, so asset_folder is left out.
+    bool operator==(const Scene& other) const {
+        return settings == other.settings && cameras == other.cameras &&
+               primitives == other.primitives && lights == other.lights;
+    }
 };
 
 }  // namespace jt

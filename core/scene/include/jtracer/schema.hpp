@@ -80,7 +80,7 @@ struct MemberTypes<PointLight> {
 };
 template <>
 struct MemberTypes<Material> {
-    using type = MemberOf<Material, double, Vec3, std::optional<Vec3>>;
+    using type = MemberOf<Material, double, Vec3, std::optional<Vec3>, std::string>;
 };
 template <>
 struct MemberTypes<TransformOp> {
@@ -210,7 +210,7 @@ inline constexpr std::array<PropertySpec<PointLight>, 2> kPointLight{{
 inline constexpr ValueRange kFraction{
     .low = 0.0, .high = 1.0, .clamp_low = true, .clamp_high = true};
 
-inline constexpr std::array<PropertySpec<Material>, 11> kMaterial{{
+inline constexpr std::array<PropertySpec<Material>, 13> kMaterial{{
     colour("pigment", &Material::pigment),
     colour("ambient", &Material::ambient),
     colour("diffuse", &Material::diffuse),
@@ -223,6 +223,8 @@ inline constexpr std::array<PropertySpec<Material>, 11> kMaterial{{
     only_when_set(number("ior", &Material::ior, kPositive)),
     only_when_set(optional_colour("checker", &Material::checker)),
     only_when_set(number("checker_size", &Material::checker_size, kPositive)),
+    only_when_set(string("image_map", &Material::image_map)),
+    only_when_set(number("map_size", &Material::map_size, kPositive)),
 }};
 
 inline constexpr std::array<TransformOpSpec, 5> kTransformOps{{

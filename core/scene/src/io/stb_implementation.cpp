@@ -14,6 +14,8 @@
 #include <stb_image_write.h>
 #define STB_IMAGE_IMPLEMENTATION
 #define STBI_ONLY_PNG
+#define STBI_ONLY_JPEG
+#define STBI_ONLY_BMP
 #define STBI_NO_STDIO
 #include <stb_image.h>
 #pragma GCC diagnostic pop

@@ -83,6 +83,7 @@ Expected<LoadedScene> load_scene_file(const std::filesystem::path& path, ParseOp
     loaded.options = options;
     loaded.text = std::move(*text);
     loaded.parsed = parse_scene(loaded.text, options);
+    loaded.parsed.scene.asset_folder = path.parent_path().string();
     return loaded;
 }
 

@@ -2,11 +2,13 @@
 
 #include "jtracer/affine.hpp"
 #include "jtracer/schema.hpp"
+#include "jtracer/texture.hpp"
 #include "jtracer/value_text.hpp"
 
 #include <glm/geometric.hpp>
 
 #include <cmath>
+#include <map>
 #include <string>
 
 namespace jt {
@@ -171,8 +173,24 @@ class Validator {
                     error(op_position(block, k), which + *problem);
             }
             check_transforms(p, block);
+            check_image_map(p.material, block);
         }
     }
+
+    // The picture must be readable (docs/language.md §13.4); each file is
+    // looked at once however many materials name it.
+    void check_image_map(const Material& m, const BlockSource* block) {
+        if (m.image_map.empty()) return;
+        const SourcePos pos = where_material(block, "image_map");
+        if (m.checker) warning(pos, "'image_map' and 'checker' are both set: the image map wins");
+        auto known = image_problems_.find(m.image_map);
+        if (known == image_problems_.end())
+            known = image_problems_
+                        .emplace(m.image_map, texture_problem(asset_path(scene_, m.image_map)))
+                        .first;
+        if (!known->second.empty()) error(pos, "image_map: " + known->second);
+    }
+    std::map<std::string, std::string> image_problems_;
 
     // The scale op number k of a primitive is the k-th op property across its transform blocks.
     SourcePos op_position(const BlockSource* block, std::size_t k) const {

@@ -1,0 +1,38 @@
+#pragma once
+// Image maps (docs/language.md §13.4): a picture decoded once into linear
+// texel values, shared by every material that names its file.
+
+#include "jtracer/error.hpp"
+#include "jtracer/scene.hpp"
+
+#include <cstdint>
+#include <filesystem>
+#include <memory>
+#include <span>
+#include <string>
+#include <vector>
+
+namespace jt {
+
+// Texel (i, j) is rgb[3 * (j * width + i)], row j = 0 at the bottom of the
+// picture; values are byte / 255 (16-bit samples: value / 65535), no gamma.
+struct Texture {
+    int width = 0;
+    int height = 0;
+    std::vector<float> rgb;
+};
+
+// Pictures larger than this many texels are refused rather than decoded.
+inline constexpr std::int64_t kMaxTextureTexels = std::int64_t{1} << 28;
+
+// A PNG, JPEG or BMP; grey, palette and alpha images become RGB.
+Expected<Texture> decode_texture(std::span<const std::uint8_t> bytes);
+Expected<std::shared_ptr<const Texture>> load_texture(const std::filesystem::path& path);
+
+// Why the file cannot be an image map (from its header only), or "" when it can.
+std::string texture_problem(const std::filesystem::path& path);
+
+// Where a file name of the scene is found: relative names from its asset_folder.
+std::filesystem::path asset_path(const Scene& scene, const std::string& name);
+
+}  // namespace jt

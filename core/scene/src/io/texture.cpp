@@ -1,0 +1,84 @@
+#include "jtracer/texture.hpp"
+
+#include "io/file_bytes.hpp"
+
+#include <stb_image.h>
+
+#include <limits>
+
+namespace jt {
+
+namespace {
+
+struct StbFree {
+    void operator()(void* p) const { stbi_image_free(p); }
+};
+
+// The header's verdict: "" or why stb cannot decode it.
+std::string header_problem(std::span<const std::uint8_t> bytes, int& width, int& height) {
+    if (bytes.size() > static_cast<std::size_t>(std::numeric_limits<int>::max()))
+        return "the file is too large";
+    int channels = 0;
+    if (!stbi_info_from_memory(bytes.data(), static_cast<int>(bytes.size()), &width, &height,
+                               &channels))
+        return std::string("not a readable PNG, JPEG or BMP image: ") + stbi_failure_reason();
+    if (static_cast<std::int64_t>(width) * height > kMaxTextureTexels)
+        return "the image is too large (" + std::to_string(width) + "x" + std::to_string(height) +
+               " texels)";
+    return "";
+}
+
+// Texels from stb's top-down rows into bottom-up ones, scaled to [0, 1].
+template <class Sample>
+Texture texels_of(const Sample* samples, int width, int height, float full_scale) {
+    Texture t{width, height, std::vector<float>(static_cast<std::size_t>(width) * height * 3)};
+    const std::size_t row = static_cast<std::size_t>(width) * 3;
+    for (int j = 0; j < height; ++j) {
+        const Sample* from = samples + row * static_cast<std::size_t>(height - 1 - j);
+        float* to = t.rgb.data() + row * static_cast<std::size_t>(j);
+        for (std::size_t k = 0; k < row; ++k) to[k] = static_cast<float>(from[k]) / full_scale;
+    }
+    return t;
+}
+
+}  // namespace
+
+Expected<Texture> decode_texture(std::span<const std::uint8_t> bytes) {
+    int width = 0, height = 0, channels = 0;
+    if (std::string problem = header_problem(bytes, width, height); !problem.empty())
+        return Error{problem};
+    const int size = static_cast<int>(bytes.size());
+    if (stbi_is_16_bit_from_memory(bytes.data(), size)) {
+        std::unique_ptr<stbi_us, StbFree> samples(
+            stbi_load_16_from_memory(bytes.data(), size, &width, &height, &channels, 3));
+        if (samples) return texels_of(samples.get(), width, height, 65535.0f);
+    } else {
+        std::unique_ptr<stbi_uc, StbFree> samples(
+            stbi_load_from_memory(bytes.data(), size, &width, &height, &channels, 3));
+        if (samples) return texels_of(samples.get(), width, height, 255.0f);
+    }
+    return Error{std::string("cannot decode the image: ") + stbi_failure_reason()};
+}
+
+Expected<std::shared_ptr<const Texture>> load_texture(const std::filesystem::path& path) {
+    Expected<std::vector<std::uint8_t>> bytes = read_file_bytes(path);
+    if (!bytes) return bytes.error();
+    Expected<Texture> texture = decode_texture(*bytes);
+    if (!texture) return Error{file_message(path, texture.error().message)};
+    return std::make_shared<const Texture>(std::move(*texture));
+}
+
+std::string texture_problem(const std::filesystem::path& path) {
+    Expected<std::vector<std::uint8_t>> bytes = read_file_bytes(path);
+    if (!bytes) return bytes.error().message;
+    int width = 0, height = 0;
+    return header_problem(*bytes, width, height);
+}
+
+std::filesystem::path asset_path(const Scene& scene, const std::string& name) {
+    const std::filesystem::path file(name);
+    if (file.is_absolute() || scene.asset_folder.empty()) return file;
+    return std::filesystem::path(scene.asset_folder) / file;
+}
+
+}  // namespace jt

@@ -1,0 +1,187 @@
+// Image maps, worked out by hand from docs/language.md §13.4: texture
+// coordinates of each shape, the bilinear blend, and files found beside the scene.
+
+#include "jtracer/bmp.hpp"
+#include "jtracer/png.hpp"
+#include "jtracer/scene_file.hpp"
+#include "render/pattern.hpp"
+#include "render/prepared_scene.hpp"
+#include "scene_builder.hpp"
+
+#include <gtest/gtest.h>
+
+#include <unistd.h>
+
+#include <filesystem>
+#include <fstream>
+
+namespace jt::test {
+namespace {
+
+namespace fs = std::filesystem;
+
+void expect_uv(Uv uv, double u, double v) {
+    EXPECT_NEAR(uv.u, u, 1e-12);
+    EXPECT_NEAR(uv.v, v, 1e-12);
+}
+
+TEST(ImageMap, SphereUvIsLatitudeLongitudeWithTheSeamAtMinusZ) {
+    const Sphere s{{1, 2, 3}, 2.0};
+    expect_uv(sphere_uv(s, Vec3(1, 2, 5)), 0.5, 0.5);   // +z: the middle
+    expect_uv(sphere_uv(s, Vec3(3, 2, 3)), 0.75, 0.5);  // +x
+    expect_uv(sphere_uv(s, Vec3(-1, 2, 3)), 0.25, 0.5);
+    expect_uv(sphere_uv(s, Vec3(1, 4, 3)), 0.5, 1.0);  // the north pole
+    expect_uv(sphere_uv(s, Vec3(1, 0, 3)), 0.5, 0.0);
+    // 45 degrees up from +z: v = 0.5 + (pi/4) / pi.
+    expect_uv(sphere_uv(s, Vec3(1, 2 + std::sqrt(2.0), 3 + std::sqrt(2.0))), 0.5, 0.75);
+}
+
+TEST(ImageMap, CylinderUvOnTheSideAndTheCaps) {
+    const Cylinder c{0.5, 4.0};
+    expect_uv(cylinder_uv(c, Vec3(0, 2, 0.5)), 0.5, 0.5);
+    expect_uv(cylinder_uv(c, Vec3(0.5, 1, 0)), 0.75, 0.25);
+    expect_uv(cylinder_uv(c, Vec3(0.25, 4, 0)), 0.75, 0.5);   // top cap
+    expect_uv(cylinder_uv(c, Vec3(0, 0, -0.25)), 0.5, 0.25);  // bottom cap
+}
+
+TEST(ImageMap, PlaneUvFollowsItsAxes) {
+    // Facing +z: e1 = +y, e2 = cross(z, y) = -x.
+    expect_uv(plane_uv(Plane{{0, 0, 1}, 0}, 2.0, Vec3(-2, 3, 0)), 1.5, 1.0);
+    // Facing +y: e1 = normalize(cross(y, z)) = +x, e2 = cross(y, x) = -z.
+    expect_uv(plane_uv(Plane{{0, 5, 0}, 0}, 1.0, Vec3(0.25, 0, -0.75)), 0.25, 0.75);
+    // Facing +x: e1 = cross(x, z) = -y, e2 = cross(x, -y) = -z.
+    expect_uv(plane_uv(Plane{{1, 0, 0}, 0}, 1.0, Vec3(0, -0.5, -0.25)), 0.5, 0.25);
+}
+
+// A 2 x 2 picture: bottom row 0 and 1, top row 0.5 and 0.25 (red only).
+Texture two_by_two() {
+    Texture t{2, 2, std::vector<float>(12, 0.0f)};
+    t.rgb[0] = 0.0f, t.rgb[3] = 1.0f, t.rgb[6] = 0.5f, t.rgb[9] = 0.25f;
+    return t;
+}
+
+TEST(ImageMap, BilinearBlendOfTheNearestTexelCentres) {
+    const Texture t = two_by_two();
+    EXPECT_EQ(sample_bilinear(t, {0.25, 0.25}).x, 0.0);   // texel (0, 0)'s centre
+    EXPECT_EQ(sample_bilinear(t, {0.75, 0.25}).x, 1.0);   // texel (1, 0)
+    EXPECT_EQ(sample_bilinear(t, {0.75, 0.75}).x, 0.25);  // texel (1, 1)
+    EXPECT_EQ(sample_bilinear(t, {0.5, 0.25}).x, 0.5);    // between (0, 0) and (1, 0)
+    EXPECT_EQ(sample_bilinear(t, {0.5, 0.5}).x, 0.4375);  // (0 + 1 + 0.5 + 0.25) / 4
+    // 3/8 of the way from (0, 0) to (1, 0), half-way up: 0.5 (0.375 + ...).
+    EXPECT_DOUBLE_EQ(sample_bilinear(t, {0.4375, 0.5}).x,
+                     0.5 * (0.625 * 0.0 + 0.375 * 1.0) + 0.5 * (0.625 * 0.5 + 0.375 * 0.25));
+    // Past the left edge the blend wraps to the right column.
+    EXPECT_EQ(sample_bilinear(t, {0.0, 0.25}).x, 0.5);
+    EXPECT_EQ(sample_bilinear(t, {1.0, 0.25}).x, 0.5);    // u = 1 wraps to 0
+    EXPECT_EQ(sample_bilinear(t, {-0.25, 0.25}).x, 1.0);  // tiled
+}
+
+fs::path scratch_dir(const std::string& name) {
+    fs::path dir = fs::temp_directory_path() /
+                   ("jtracer_image_map_test_" + name + "_" + std::to_string(::getpid()));
+    fs::remove_all(dir);
+    fs::create_directories(dir);
+    return dir;
+}
+
+// A 2 x 2 image with four distinct colours; pixel (0, 0) is the bottom left.
+Image8 four_colours() {
+    Image8 image(2, 2);
+    const std::uint8_t colours[4][3] = {{51, 0, 0}, {0, 102, 0}, {0, 0, 153}, {255, 255, 0}};
+    for (int k = 0; k < 4; ++k)
+        for (int c = 0; c < 3; ++c) image.pixel(k % 2, k / 2)[c] = colours[k][c];
+    return image;
+}
+
+TEST(ImageMap, DecodesPngAndBmpToBytesOver255) {
+    for (const auto& bytes : {encode_png(four_colours()), encode_bmp(four_colours())}) {
+        Expected<Texture> t = decode_texture(bytes);
+        ASSERT_TRUE(t) << t.error().message;
+        ASSERT_EQ(t->width, 2);
+        ASSERT_EQ(t->height, 2);
+        EXPECT_EQ(t->rgb[0], 51.0f / 255.0f);       // bottom left, red
+        EXPECT_EQ(t->rgb[3 + 1], 102.0f / 255.0f);  // bottom right, green
+        EXPECT_EQ(t->rgb[6 + 2], 153.0f / 255.0f);  // top left, blue
+        EXPECT_EQ(t->rgb[9], 1.0f);
+    }
+    const std::vector<std::uint8_t> junk{'n', 'o', 't', ' ', 'a', 'n', ' ', 'i', 'm', 'g'};
+    EXPECT_FALSE(decode_texture(junk));
+}
+
+// A plane facing +z at z = 0, image-mapped, seen head-on at the texel centre
+// (i + 0.5) / 2, (j + 0.5) / 2: on it u = y and v = -x.
+std::string plane_scene(const std::string& image, double x, double y) {
+    const std::string at = "<" + std::to_string(x) + ", " + std::to_string(y);
+    return "render_settings { width: 1; height: 1; ambient_light: <1, 1, 1>; }\n"
+           "cameras { perspective_camera { position: " +
+           at + ", 5>; look_at: " + at +
+           ", 0>; } }\n"
+           "scene { plane { normal: <0, 0, 1>; material { ambient: <1, 1, 1>;\n"
+           "    image_map: \"" +
+           image + "\"; } } }\n";
+}
+
+Image8 render_loaded(const fs::path& file) {
+    Expected<LoadedScene> loaded = load_scene_file(file);
+    EXPECT_TRUE(loaded);
+    EXPECT_EQ(format_diagnostics(check_scene(*loaded), loaded->path, loaded->text), "");
+    return render(loaded->parsed.scene);
+}
+
+TEST(ImageMap, APlaneShowsItsTexelsFoundBesideTheScene) {
+    const fs::path dir = scratch_dir("plane");
+    fs::create_directories(dir / "maps");
+    ASSERT_TRUE(write_png(dir / "maps" / "four.png", four_colours()));
+    // (u, v) = (0.25, 0.25): texel (0, 0); (0.75, 0.25): texel (1, 0); (0.25, 0.75): (0, 1).
+    const struct {
+        double x, y;
+        Rgb colour;
+    } cases[] = {{-0.25, 0.25, {51, 0, 0}}, {-0.25, 0.75, {0, 102, 0}}, {-0.75, 0.25, {0, 0, 153}}};
+    for (const auto& c : cases) {
+        std::ofstream(dir / "scene.jts") << plane_scene("maps/four.png", c.x, c.y);
+        EXPECT_EQ(at(render_loaded(dir / "scene.jts"), 0, 0), c.colour) << c.x << ", " << c.y;
+    }
+    fs::remove_all(dir);
+}
+
+TEST(ImageMap, AMissingImageIsALocatedError) {
+    const fs::path dir = scratch_dir("missing");
+    std::ofstream(dir / "scene.jts") << plane_scene("nowhere.png", 0, 0);
+    Expected<LoadedScene> loaded = load_scene_file(dir / "scene.jts");
+    ASSERT_TRUE(loaded);
+    const std::vector<Diagnostic> found = check_scene(*loaded);
+    ASSERT_EQ(found.size(), 1u);
+    EXPECT_EQ(found[0].severity, Severity::error);
+    EXPECT_EQ(found[0].pos.line, 4);
+    EXPECT_EQ(found[0].pos.column, 16);  // the opening quote of the name
+    EXPECT_NE(found[0].message.find("image_map: cannot read"), std::string::npos)
+        << found[0].message;
+    EXPECT_NE(found[0].message.find("nowhere.png"), std::string::npos) << found[0].message;
+    // prepare_scene refuses it too, for scenes that skip the checks.
+    EXPECT_FALSE(prepare_scene(loaded->parsed.scene));
+    fs::remove_all(dir);
+}
+
+TEST(ImageMap, OneFileIsLoadedOnceForEveryMaterialThatNamesIt) {
+    const fs::path dir = scratch_dir("shared");
+    ASSERT_TRUE(write_png(dir / "four.png", four_colours()));
+    Scene s = scene_with_camera(camera_at({0, 0, 5}, {0, 0, 0}));
+    s.asset_folder = dir.string();
+    Material a = glowing({1, 0, 0}), b = glowing({0, 1, 0});
+    a.image_map = b.image_map = "four.png";
+    s.primitives = {sphere({0, 0, 0}, 1, a), sphere({3, 0, 0}, 1, b)};
+    auto prepared = prepare_scene(s);
+    ASSERT_TRUE(prepared) << prepared.error().message;
+    const PreparedScene& p = **prepared;
+    ASSERT_EQ(p.materials.size(), 2u);
+    ASSERT_TRUE(p.textures[0]);
+    EXPECT_EQ(p.textures[0].get(), p.textures[1].get());
+    // And again from the previous prepared scene, without reading the file.
+    fs::remove_all(dir);
+    auto again = prepare_scene(s, *prepared);
+    ASSERT_TRUE(again) << again.error().message;
+    EXPECT_EQ((*again)->textures[0].get(), p.textures[0].get());
+}
+
+}  // namespace
+}  // namespace jt::test
