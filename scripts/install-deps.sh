@@ -7,7 +7,7 @@ packages=(
     build-essential cmake ninja-build pkg-config clang-format
     libglm-dev libtbb-dev libembree-dev libcli11-dev libstb-dev
     libgtest-dev libgmock-dev libbenchmark-dev
-    libglfw3-dev libimgui-dev libosmesa6-dev libgl-dev xvfb xauth
+    libglfw3-dev libimgui-dev libosmesa6-dev libgl-dev xvfb xauth fonts-dejavu-core
     libopenmpi-dev openmpi-bin iproute2
     clang libclang-rt-14-dev valgrind
     tachyon-bin-nox

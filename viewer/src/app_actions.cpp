@@ -6,6 +6,7 @@
 
 #include <algorithm>
 #include <chrono>
+#include <utility>
 
 namespace jt::view {
 
@@ -15,14 +16,37 @@ int scene_camera_index(const Scene& scene) {
     return std::max(active_camera_index(scene), 0);
 }
 
-void after_scene_replaced(AppState& state) {
-    const int count = static_cast<int>(state.doc.scene.cameras.size());
-    if (state.camera_index >= count) state.camera_index = scene_camera_index(state.doc.scene);
+// After the scene was replaced by another (undo, redo, reload, a scripted
+// edit), the selected camera index may name no camera or another one: keep
+// the same camera by name when it is still there, else the scene's active one.
+void keep_camera_selection(AppState& state, const Scene& before) {
+    const auto& cameras = state.doc.scene.cameras;
+    const int count = static_cast<int>(cameras.size());
+    const int old = state.camera_index;
+    if (old >= 0 && old < static_cast<int>(before.cameras.size())) {
+        const std::string& name = before.cameras[old].name;
+        if (old < count && cameras[old].name == name) return;
+        if (const int same = name.empty() ? -1 : find_camera(state.doc.scene, name); same >= 0) {
+            state.camera_index = same;
+            return;
+        }
+    }
+    if (old < 0 || old >= count) state.camera_index = scene_camera_index(state.doc.scene);
+}
+
+void after_scene_replaced(AppState& state, const Scene& before) {
+    keep_camera_selection(state, before);
     state.undo.clear();
     state.edit_base.reset();
     state.pending_reload.reset();
     state.save_conflict.clear();
     ++state.scene_generation;
+}
+
+bool has_located(const std::vector<Diagnostic>& diagnostics) {
+    for (const Diagnostic& d : diagnostics)
+        if (d.pos.line > 0) return true;
+    return false;
 }
 
 std::string camera_label(const Camera& camera, int index) {
@@ -36,6 +60,7 @@ namespace {
 void finish_open(AppState& state, const std::filesystem::path& path, LoadAttempt attempt) {
     const bool ok = attempt.ok;
     const bool first = !state.doc.loaded;
+    const Scene before = state.doc.scene;
     accept_load(state.doc, path, std::move(attempt));
     if (ok || first) {
         state.watcher = FileWatcher(state.config.watch_interval);
@@ -44,12 +69,15 @@ void finish_open(AppState& state, const std::filesystem::path& path, LoadAttempt
     if (ok) {
         state.camera_index = scene_camera_index(state.doc.scene);
         state.free_camera_active = false;
-        after_scene_replaced(state);
+        after_scene_replaced(state, before);
         state.recent.add(path);
         state.open_path_input = path.string();
         state.message = "Opened " + path.string();
-    } else {
+    } else if (state.doc.diagnostics_source.empty() && !has_located(state.doc.diagnostics)) {
         state.message = "Could not open " + path.string() + ": see Diagnostics";
+    } else {
+        state.message = path.filename().string() + " has errors: see Diagnostics" +
+                        (state.doc.loaded && !first ? " (still showing the last good scene)" : "");
     }
 }
 
@@ -62,8 +90,9 @@ void finish_reload(AppState& state, LoadAttempt attempt) {
         return;
     }
     if (!has_unsaved_edits(state.doc)) {
+        const Scene before = state.doc.scene;
         accept_load(state.doc, state.doc.path, std::move(attempt));
-        after_scene_replaced(state);
+        after_scene_replaced(state, before);
         state.message = "Reloaded " + name;
         return;
     }
@@ -76,8 +105,12 @@ void finish_reload(AppState& state, LoadAttempt attempt) {
     state.doc.load_failed = false;
     state.doc.diagnostics = attempt.diagnostics;
     state.doc.diagnostics_source = attempt.text;
+    const bool unchanged = attempt.text == state.doc.text;
     state.pending_reload = std::move(attempt);
-    state.message = "Reload: " + name + " vs your unsaved edits; choose in the File panel";
+    state.message = unchanged ? name + " is unchanged on disk; reloading it would drop your "
+                                       "unsaved edits: choose in the File panel"
+                              : name + " changed on disk while you have unsaved edits: choose "
+                                       "in the File panel";
 }
 
 }  // namespace
@@ -136,10 +169,12 @@ void resolve_reload(AppState& state, ReloadChoice choice) {
         edited = std::move(*reapplied);
     }
     LoadAttempt newer = std::move(*state.pending_reload);
+    const Scene before = state.doc.scene;
     accept_load(state.doc, state.doc.path, std::move(newer));
-    after_scene_replaced(state);
+    after_scene_replaced(state, before);
     if (edited) {
         state.doc.scene = std::move(*edited);
+        keep_camera_selection(state, before);
         state.undo.record(state.doc.original);  // one undo shows the file as it is
         state.message = "Reloaded " + name + " and re-applied your edits (not saved yet)";
     } else {
@@ -155,6 +190,7 @@ bool save_now(AppState& state) {
         return false;
     }
     state.watcher.acknowledge();  // our own write is not an outside change
+    state.checked_scene.reset();  // the diagnostics now describe the new text
     state.save_conflict.clear();
     state.pending_reload.reset();
     state.message = "Saved " + state.doc.path.string();
@@ -179,24 +215,77 @@ bool save_scene_anyway(AppState& state) {
 }
 
 bool save_image(AppState& state, const std::filesystem::path& path) {
-    if (const Expected<void> saved = jt::view::save_image(path, state.display); !saved) {
-        state.message = "Image not saved: " + saved.error().message;
+    const Expected<std::filesystem::path> written =
+        jt::view::save_image_numbered(path, state.display);
+    if (!written) {
+        state.message = "Image not saved: " + written.error().message;
         return false;
     }
-    state.message = "Saved image " + path.string();
+    state.message = "Saved image " + written->string();
+    if (*written != path) state.message += " (" + path.filename().string() + " exists)";
     return true;
+}
+
+bool save_image_numbered(AppState& state) {
+    return save_image(state, state.save_image_path);
+}
+
+bool save_scene_as(AppState& state, const std::filesystem::path& path, bool replace) {
+    state.save_as_conflict.clear();
+    if (!state.doc.loaded) {
+        state.message = "Scene not saved: no scene is open";
+        return false;
+    }
+    std::error_code ec;
+    if (!replace && std::filesystem::exists(path, ec)) {
+        state.save_as_conflict = path.string();
+        state.message = "Scene not saved: " + path.string() + " exists";
+        return false;
+    }
+    if (const Expected<void> saved = save_scene_copy(state.doc, path); !saved) {
+        state.message = "Scene not saved: " + saved.error().message;
+        return false;
+    }
+    state.watcher = FileWatcher(state.config.watch_interval);
+    state.watcher.watch(path);
+    state.checked_scene.reset();
+    state.save_conflict.clear();
+    state.pending_reload.reset();
+    state.recent.add(path);
+    state.open_path_input = path.string();
+    state.message = "Saved " + path.string();
+    return true;
+}
+
+void check_edits(AppState& state) {
+    SceneDocument& doc = state.doc;
+    // A failed load's diagnostics describe the file, and a pending reload's the
+    // newer text: both stay until the file is fixed or the user chooses.
+    if (!doc.loaded || doc.load_failed || state.pending_reload) {
+        state.checked_scene.reset();
+        return;
+    }
+    if (state.checked_scene && *state.checked_scene == doc.scene) return;
+    doc.diagnostics = doc.parse_diagnostics;
+    std::vector<Diagnostic> more = validate_scene(doc.scene, doc.source);
+    doc.diagnostics.insert(doc.diagnostics.end(), more.begin(), more.end());
+    doc.diagnostics_source = doc.text;
+    doc.diagnostics_path = doc.path;
+    state.checked_scene = doc.scene;
 }
 
 void edit_scene(AppState& state, const std::function<void(Scene&)>& change) {
     const Scene before = state.doc.scene;
     change(state.doc.scene);
+    keep_camera_selection(state, before);
     state.undo.record(before);
     ++state.scene_generation;
 }
 
 void undo(AppState& state) {
     if (auto previous = state.undo.undo(state.doc.scene)) {
-        state.doc.scene = std::move(*previous);
+        const Scene before = std::exchange(state.doc.scene, std::move(*previous));
+        keep_camera_selection(state, before);
         state.message = "Undone";
     }
     state.edit_base.reset();
@@ -205,7 +294,8 @@ void undo(AppState& state) {
 
 void redo(AppState& state) {
     if (auto next = state.undo.redo(state.doc.scene)) {
-        state.doc.scene = std::move(*next);
+        const Scene before = std::exchange(state.doc.scene, std::move(*next));
+        keep_camera_selection(state, before);
         state.message = "Redone";
     }
     state.edit_base.reset();
@@ -223,6 +313,12 @@ void track_edits(AppState& state, const Scene& before_frame, std::uint64_t gener
         state.undo.record(*state.edit_base);
         state.edit_base.reset();
     }
+}
+
+int selected_camera(const AppState& state) {
+    const int count = static_cast<int>(state.doc.scene.cameras.size());
+    if (count == 0) return -1;
+    return std::clamp(state.camera_index, 0, count - 1);
 }
 
 void select_camera(AppState& state, int index) {
@@ -250,8 +346,7 @@ void use_free_camera(AppState& state) {
 void reset_free_camera(AppState& state) {
     const auto& cameras = state.doc.scene.cameras;
     if (cameras.empty()) return;
-    state.free_camera =
-        free_camera_from(cameras[std::clamp<int>(state.camera_index, 0, cameras.size() - 1)]);
+    state.free_camera = free_camera_from(cameras[selected_camera(state)]);
 }
 
 bool copy_free_camera_to_scene(AppState& state, const std::string& name) {
@@ -261,9 +356,10 @@ bool copy_free_camera_to_scene(AppState& state, const std::string& name) {
         return false;
     }
     const Scene before = state.doc.scene;
-    const FreeCamera from = state.free_camera_active
-                                ? state.free_camera
-                                : free_camera_from(state.doc.scene.cameras[state.camera_index]);
+    const FreeCamera from =
+        state.free_camera_active
+            ? state.free_camera
+            : free_camera_from(state.doc.scene.cameras[selected_camera(state)]);
     state.doc.scene.cameras.push_back(camera_from(from, name));
     state.undo.record(before);
     ++state.scene_generation;
@@ -271,6 +367,46 @@ bool copy_free_camera_to_scene(AppState& state, const std::string& name) {
     state.free_camera_active = false;
     state.message = "Added camera \"" + name + "\" (Save scene to keep it)";
     return true;
+}
+
+namespace {
+
+void run_guarded(AppState& state, const GuardedCommand& command) {
+    if (command.kind == GuardedCommand::Kind::quit)
+        state.quit = true;
+    else
+        request_open(state, command.path);
+}
+
+void guard(AppState& state, GuardedCommand command) {
+    if (!has_unsaved_edits(state.doc)) {
+        run_guarded(state, command);
+        return;
+    }
+    state.unsaved_prompt = std::move(command);
+    state.message = "Unsaved edits: save them, discard them or cancel";
+}
+
+}  // namespace
+
+void request_quit(AppState& state) {
+    guard(state, {GuardedCommand::Kind::quit, {}});
+}
+
+void request_open_guarded(AppState& state, const std::filesystem::path& path) {
+    guard(state, {GuardedCommand::Kind::open, path});
+}
+
+void resolve_unsaved(AppState& state, UnsavedChoice choice) {
+    if (!state.unsaved_prompt) return;
+    const GuardedCommand command = std::move(*state.unsaved_prompt);
+    state.unsaved_prompt.reset();
+    if (choice == UnsavedChoice::cancel) {
+        state.message = "Cancelled: your edits are still here";
+        return;
+    }
+    if (choice == UnsavedChoice::save && !save_scene(state)) return;  // the message says why
+    run_guarded(state, command);
 }
 
 void toggle_pause(AppState& state) {
@@ -301,8 +437,7 @@ std::optional<RenderRequest> render_request(const AppState& state, std::string& 
         note = "The scene has no camera";
         return std::nullopt;
     }
-    request.options.camera =
-        std::clamp<int>(state.camera_index, 0, request.scene.cameras.size() - 1);
+    request.options.camera = selected_camera(state);
     if (state.free_camera_active) {
         request.scene.cameras.push_back(camera_from(state.free_camera, "viewer"));
         request.options.camera = static_cast<int>(request.scene.cameras.size()) - 1;
@@ -354,7 +489,11 @@ void wait_for_first_pass(AppState& state) {
 }  // namespace
 
 void update_render(AppState& state) {
-    if (!state.paused) {
+    if (state.paused) {
+        std::string note;
+        state.edit_waiting = render_request(state, note) != state.started;
+    } else {
+        state.edit_waiting = false;
         std::optional<RenderRequest> request = render_request(state, state.render_note);
         if (request && request == state.rejected) {
             state.render_note = state.rejected_reason;
@@ -381,6 +520,21 @@ void update_render(AppState& state) {
         state.presenter.upload(state.display, changed);
     state.passes_shown = progress.finished ? progress.pass_count : progress.pass;
     if (finished && state.started) state.display_complete = true;
+}
+
+std::string render_title_status(const AppState& state) {
+    if (!state.started) return state.paused ? "paused" : "";
+    const RenderProgress p = state.renderer.progress();
+    char text[96];
+    if (state.paused)
+        return state.edit_waiting ? "paused, edit waiting" : "paused";
+    if (render_complete(state)) {
+        std::snprintf(text, sizeof text, "done, %d samples, %.1f s", p.samples_done, p.seconds);
+        return text;
+    }
+    std::snprintf(text, sizeof text, "%s %d%%", p.pass_name.c_str(),
+                  static_cast<int>(p.fraction * 100.0));
+    return text;
 }
 
 bool render_complete(const AppState& state) {

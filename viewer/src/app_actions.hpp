@@ -38,7 +38,21 @@ void resolve_reload(AppState& state, ReloadChoice choice);
 bool save_scene(AppState& state);
 // Saves even though the file changed on disk, replacing what is there.
 bool save_scene_anyway(AppState& state);
+// Writes the current image to `path`; never replaces a file (see
+// save_image_numbered in image_files.hpp): when `path` exists the first free
+// numbered name beside it is used, and the message says which.
 bool save_image(AppState& state, const std::filesystem::path& path);
+// The same to state.save_image_path (the S key).
+bool save_image_numbered(AppState& state);
+// Writes the edited scene to `path` and makes that the open file. A file
+// already there is replaced only with `replace`; otherwise nothing is written
+// and state.save_as_conflict names it.
+bool save_scene_as(AppState& state, const std::filesystem::path& path, bool replace);
+
+// Checks the edited scene as `jtracer-cli --check` checks a file (the load's
+// parse diagnostics, then validate_scene), once after each change, so that the
+// Diagnostics panel always describes the scene as it is now.
+void check_edits(AppState& state);
 
 // Applies `change` to the scene as one undoable step (for edits made outside
 // the panels, e.g. by scripts and tests).
@@ -53,6 +67,11 @@ void redo(AppState& state);
 void track_edits(AppState& state, const Scene& before_frame, std::uint64_t generation_before,
                  bool widget_active);
 
+// The index of the scene camera the view shows (or the free camera started
+// from): always one of the scene's cameras, -1 when it has none. Every command
+// that replaces the scene keeps state.camera_index valid; readers still go
+// through this so that no stale index can reach past the cameras.
+int selected_camera(const AppState& state);
 void select_camera(AppState& state, int index);
 void next_camera(AppState& state);
 // Starts moving freely from the selected scene camera (or keeps moving).
@@ -61,6 +80,15 @@ void reset_free_camera(AppState& state);
 // Appends the free camera to the scene as a new camera named `name` and
 // selects it; refused when a camera already has that name.
 bool copy_free_camera_to_scene(AppState& state, const std::string& name);
+
+// Quitting and opening another file go through these: with unsaved edits
+// nothing happens until the user answers the prompt (state.unsaved_prompt).
+void request_quit(AppState& state);
+void request_open_guarded(AppState& state, const std::filesystem::path& path);
+enum class UnsavedChoice { save, discard, cancel };
+// Save runs the command only when the save succeeded (a refused save shows
+// why and keeps the edits).
+void resolve_unsaved(AppState& state, UnsavedChoice choice);
 
 // Pauses the render, or continues it from where it paused.
 void toggle_pause(AppState& state);
@@ -72,6 +100,10 @@ void update_render(AppState& state);
 // The render that update_render would start now, or nothing (with the reason
 // in `note`) when there is nothing to render.
 std::optional<RenderRequest> render_request(const AppState& state, std::string& note);
+
+// The render's state for the window title: "preview 1/8 34%", "paused",
+// "paused, edit waiting", "done, 16 samples, 2.1 s"; empty before any render.
+std::string render_title_status(const AppState& state);
 
 // True once the render of the current scene has rendered every pass.
 bool render_complete(const AppState& state);

@@ -10,6 +10,7 @@
 #include "render_controller.hpp"
 #include "scene_document.hpp"
 #include "scene_loader.hpp"
+#include "ui_items.hpp"
 #include "undo_stack.hpp"
 #include "wakeup.hpp"
 
@@ -18,6 +19,7 @@
 #include <filesystem>
 #include <optional>
 #include <string>
+#include <vector>
 
 namespace jt::view {
 
@@ -44,6 +46,21 @@ struct RenderRequest {
                options.height == other.options.height && options.samples == other.options.samples &&
                options.camera == other.options.camera;
     }
+};
+
+// A command that would throw unsaved edits away, held until the user answers
+// Save / Discard / Cancel.
+struct GuardedCommand {
+    enum class Kind { quit, open } kind = Kind::quit;
+    std::filesystem::path path;  // for open
+};
+
+// A mouse drag on the image: only a press on the image starts one, and each
+// frame moves the camera by the motion since the last (the first: since the
+// press), never by motion made before the press.
+struct ImageDrag {
+    int button = -1;  // ImGuiMouseButton, -1 when no drag
+    float last_x = 0, last_y = 0;
 };
 
 struct AppState {
@@ -75,12 +92,18 @@ struct AppState {
     // Why the last Save scene was refused (the file changed on disk), or empty;
     // save_scene_anyway overwrites it.
     std::string save_conflict;
+    std::optional<GuardedCommand> unsaved_prompt;
+    std::string save_as_conflict;  // the file Save scene as would replace, until confirmed
+    std::string save_scene_path;   // the Save scene as field
+    // The scene the diagnostics were last checked for (check_edits).
+    std::optional<Scene> checked_scene;
 
     // Which camera renders: one of the scene's, or the free camera.
     int camera_index = 0;
     bool free_camera_active = false;
     FreeCamera free_camera;
     std::string new_camera_name = "viewer";
+    ImageDrag drag;
 
     RenderController renderer;
     std::optional<RenderRequest> started;   // the request the current render answers
@@ -88,12 +111,15 @@ struct AppState {
     std::optional<RenderRequest> rejected;  // an edited scene that failed validation
     std::string rejected_reason;
     bool paused = false;
+    bool edit_waiting = false;  // paused, and the scene or view changed since the render started
     bool display_complete = false;  // the display holds every pixel of the finished render
     int passes_shown = 0;           // passes of the current render whose pixels are in the texture
     Image8 display;                 // what the texture holds
     Presenter presenter;
     FitMode fit = FitMode::fit;
     bool show_ui = true;
+    std::vector<UiItem> ui_items;  // what the last frame drew where
+    float sidebar_width = 30.0f;   // in font heights, so that it scales with the font
 
     std::string open_path_input;
     std::string save_image_path = "jtracer-view.png";

@@ -11,7 +11,10 @@
 namespace jt::view {
 
 HeadlessViewer::HeadlessViewer(int width, int height)
-    : context_(width, height), layer_(OsMesaContext::proc_loader()) {}
+    : context_(width, height), layer_(OsMesaContext::proc_loader()) {
+    // As the GLFW backend reports: the panel edge can be dragged.
+    if (layer_.ok()) ImGui::GetIO().BackendFlags |= ImGuiBackendFlags_HasMouseCursors;
+}
 
 std::string HeadlessViewer::error() const {
     if (!context_.ok()) return context_.error();
@@ -22,6 +25,7 @@ void HeadlessViewer::frame(AppState& state) {
     // Window units = framebuffer pixels / scale, as GLFW reports on a HiDPI screen.
     ImGuiLayer::set_display(static_cast<int>(context_.width() / scale_),
                             static_cast<int>(context_.height() / scale_), scale_, 1.0f / 30.0f);
+    layer_.set_scale(content_scale_, scale_);
     layer_.begin_frame();
     viewer_frame(state, FrameInfo{scale_});
     layer_.end_frame(context_.width(), context_.height());
@@ -51,6 +55,25 @@ void HeadlessViewer::drag(AppState& state, int button, float x0, float y0, float
         frame(state);
     }
     io.MouseDown[button] = false;
+    frame(state);
+}
+
+bool HeadlessViewer::click(AppState& state, const std::string& label) {
+    const UiItem* item = find_item(state.ui_items, label);
+    if (!item) return false;
+    const ScreenRect r = item->rect;
+    ImGuiIO& io = ImGui::GetIO();
+    io.MousePos = ImVec2((r.x0 + r.x1) * 0.5f, (r.y0 + r.y1) * 0.5f);
+    frame(state);
+    io.MouseDown[0] = true;
+    frame(state);
+    io.MouseDown[0] = false;
+    frame(state);
+    return true;
+}
+
+void HeadlessViewer::move_mouse(AppState& state, float x, float y) {
+    ImGui::GetIO().MousePos = ImVec2(x, y);
     frame(state);
 }
 

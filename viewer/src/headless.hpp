@@ -24,6 +24,11 @@ class HeadlessViewer {
     // Drags the mouse with `button` (0 left, 1 right, 2 middle) from one point
     // to another (window units, y down) over a few frames, as a user would.
     void drag(AppState& state, int button, float x0, float y0, float x1, float y1);
+    // Clicks the control drawn under `label` in the last frame (see
+    // ui_items.hpp) with the left button; false when there is none.
+    bool click(AppState& state, const std::string& label);
+    // Moves the mouse to (x, y) for one frame.
+    void move_mouse(AppState& state, float x, float y);
     // Turns the wheel by `steps` with the mouse at (x, y).
     void scroll(AppState& state, float x, float y, float steps);
     // Runs frames until the render of the current scene is complete and shown,
@@ -38,6 +43,9 @@ class HeadlessViewer {
                           std::chrono::milliseconds timeout = std::chrono::minutes(2));
     // Simulates a HiDPI screen: `scale` framebuffer pixels per window unit.
     void set_framebuffer_scale(float scale) { scale_ = scale > 0 ? scale : 1.0f; }
+    // Simulates the monitor's content scale (Xft.dpi 192: 2), as
+    // glfwGetWindowContentScale reports it.
+    void set_content_scale(float scale) { content_scale_ = scale > 0 ? scale : 1.0f; }
     // The last frame as drawn (rows bottom-up).
     Image8 screenshot() const;
     int width() const { return context_.width(); }
@@ -47,6 +55,7 @@ class HeadlessViewer {
     OsMesaContext context_;
     ImGuiLayer layer_;
     float scale_ = 1.0f;
+    float content_scale_ = 1.0f;
 };
 
 }  // namespace jt::view

@@ -17,6 +17,16 @@ ImageFormat image_format_for(const std::filesystem::path& path);
 // On failure the target is untouched.
 Expected<void> save_image(const std::filesystem::path& path, const Image8& image);
 
+// Writes a new file `path` and never replaces one: true when written, false
+// when something is already there (the check and the creation are one step,
+// link(2), so a file that appears meanwhile is not overwritten either).
+Expected<bool> save_new_image(const std::filesystem::path& path, const Image8& image);
+
+// Saves under `path`, or when that exists under the first free numbered name
+// beside it (name-001.png, name-002.png, ...). Returns the name written.
+Expected<std::filesystem::path> save_image_numbered(const std::filesystem::path& path,
+                                                    const Image8& image);
+
 // Writes `text` to `path` through a temporary file beside it and a rename.
 Expected<void> write_text_atomically(const std::filesystem::path& path, const std::string& text);
 

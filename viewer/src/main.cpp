@@ -49,6 +49,20 @@ std::filesystem::path default_scene() {
     return ec ? showcase : real;
 }
 
+// Seconds > 0 and at most a day; the message quotes the text as typed.
+CLI::Validator timeout_check() {
+    return CLI::Validator(
+        [](std::string& text) -> std::string {
+            double seconds = 0;
+            const char* end = text.data() + text.size();
+            const auto r = std::from_chars(text.data(), end, seconds);
+            if (r.ec != std::errc() || r.ptr != end || !(seconds > 0) || seconds > 86400)
+                return "takes a number of seconds above 0 and at most 86400, got '" + text + "'";
+            return {};
+        },
+        "SECONDS");
+}
+
 bool parse_size(const std::string& text, int& width, int& height) {
     const char* end = text.data() + text.size();
     const auto w = std::from_chars(text.data(), end, width);
@@ -103,6 +117,7 @@ int run_window(const Arguments& args) {
         return 1;
     }
     ImGui_ImplGlfw_InitForOpenGL(window.handle(), true);
+    ImGui::GetIO().BackendFlags |= ImGuiBackendFlags_HasMouseCursors;  // the panel edge resizes
     std::optional<std::string> dropped;
     window.on_drop([&](const std::string& path) { dropped = path; });
 
@@ -122,7 +137,7 @@ int run_window(const Arguments& args) {
         double busy_seconds = 0.0, slowest_frame = 0.0;
         auto frame_start = std::chrono::steady_clock::now();
         int frames_drawn = 0;
-        while (!window.should_close() && !app.quit) {
+        while (!app.quit) {
             // Idle when the render is done: wake for input or to poll the file.
             // While a load or a render's first pass is under way, sleep until
             // the loader or the render wakes the loop (or input arrives), so
@@ -133,15 +148,21 @@ int run_window(const Arguments& args) {
                 window.wait_events(0.05);
             else
                 window.poll_events();
+            // The window's close button asks like Esc does when edits are unsaved.
+            if (window.should_close()) {
+                window.cancel_close();
+                request_quit(app);
+            }
             if (dropped) {
-                request_open(app, *dropped);
+                request_open_guarded(app, *dropped);
                 dropped.reset();
             }
             int ww = 0, wh = 0, fw = 0, fh = 0;
             window.sizes(ww, wh, fw, fh);
+            const float scale = ww > 0 ? static_cast<float>(fw) / static_cast<float>(ww) : 1.0f;
+            layer.set_scale(window.content_scale(), scale);
             ImGui_ImplGlfw_NewFrame();
             layer.begin_frame();
-            const float scale = ww > 0 ? static_cast<float>(fw) / static_cast<float>(ww) : 1.0f;
             viewer_frame(app, FrameInfo{scale});
             layer.end_frame(fw, fh);
             window.swap_buffers();
@@ -210,7 +231,7 @@ int main(int argc, char** argv) {
     cli.add_option("--timeout", args.timeout_seconds,
                    "with --screenshot or --exit-when-done: give up after this many seconds")
         ->capture_default_str()
-        ->check(CLI::PositiveNumber);
+        ->check(timeout_check());
     try {
         cli.parse(argc, argv);
     } catch (const CLI::CallForHelp& e) {

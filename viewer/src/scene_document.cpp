@@ -5,6 +5,7 @@
 #include "jtracer/scene_file.hpp"
 #include "jtracer/source_edit.hpp"
 
+#include <algorithm>
 #include <fstream>
 
 namespace jt::view {
@@ -41,6 +42,11 @@ void accept_load(SceneDocument& doc, const std::filesystem::path& path, LoadAtte
         return;
     }
     doc.diagnostics_source = attempt.text;
+    // check_scene lists the parser's diagnostics first, then validation's.
+    const std::size_t validation = validate_scene(attempt.scene, attempt.source).size();
+    doc.parse_diagnostics.assign(
+        doc.diagnostics.begin(),
+        doc.diagnostics.end() - std::min(validation, doc.diagnostics.size()));
     doc.path = path;
     doc.loaded = true;
     doc.text = std::move(attempt.text);
@@ -89,6 +95,10 @@ Expected<Scene> reapply_edits(const SceneDocument& doc, const LoadAttempt& newer
 }
 
 Expected<void> save_scene_in_place(SceneDocument& doc) {
+    return save_scene_copy(doc, doc.path);
+}
+
+Expected<void> save_scene_copy(SceneDocument& doc, const std::filesystem::path& path) {
     if (!doc.loaded) return Error{"no scene is open"};
     SourceEditResult edit = apply_scene_edits(doc.text, doc.source, doc.original, doc.scene);
     if (!edit.ok()) return Error{edit.error};
@@ -98,12 +108,15 @@ Expected<void> save_scene_in_place(SceneDocument& doc) {
         return Error{
             "internal error: the edited text would not read back as the edited scene; "
             "the file was left as it was"};
-    if (Expected<void> written = write_text_atomically(doc.path, edit.text); !written)
+    if (Expected<void> written = write_text_atomically(path, edit.text); !written)
         return written;
+    doc.path = path;
+    doc.diagnostics_path = path;
     doc.text = std::move(edit.text);
     doc.original = doc.scene;
     doc.source = std::move(check.source);
-    doc.diagnostics = std::move(check.diagnostics);
+    doc.diagnostics = check.diagnostics;
+    doc.parse_diagnostics = std::move(check.diagnostics);
     doc.diagnostics_source = doc.text;
     doc.load_failed = false;
     return {};

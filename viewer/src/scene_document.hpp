@@ -23,7 +23,9 @@ struct SceneDocument {
     Scene original;       // the scene as in `text`
     SceneSource source;
     Scene scene;                             // as edited in the viewer
-    std::vector<Diagnostic> diagnostics;     // of the latest load attempt
+    std::vector<Diagnostic> parse_diagnostics;  // the parser's warnings about `text`
+    // Of the latest load attempt, or of the edited scene (check_edits).
+    std::vector<Diagnostic> diagnostics;
     std::string diagnostics_source;          // the text they point into (to quote lines)
     std::filesystem::path diagnostics_path;  // the file they are about
     bool load_failed = false;                // the latest load attempt had errors: `scene` is older
@@ -61,6 +63,8 @@ bool has_unsaved_edits(const SceneDocument& doc);
 // then takes the new text as the document's base.
 // Does not look at what is on disk now: see file_changed_on_disk.
 Expected<void> save_scene_in_place(SceneDocument& doc);
+// The same into another file, which becomes the document's file.
+Expected<void> save_scene_copy(SceneDocument& doc, const std::filesystem::path& path);
 
 // True when the file no longer holds the text the document was loaded from
 // (edited by someone else, broken, deleted), so that saving over it would

@@ -3,69 +3,112 @@
 #include "app_actions.hpp"
 #include "keys.hpp"
 #include "panels/panels.hpp"
+#include "panels/widgets.hpp"
+#include "ui_items.hpp"
 
 #include <imgui.h>
+#include <imgui_internal.h>
 
+#include <algorithm>
 #include <cstdio>
 
 namespace jt::view {
 
 namespace {
 
-constexpr float sidebar_width = 390.0f;
-constexpr float status_height = 52.0f;
+constexpr const char* unsaved_popup = "Unsaved edits";
 
 bool pressed(int key) {
     return ImGui::IsKeyPressed(key, false);
 }
 
+// Esc closes whatever is open first (a popup, a colour picker, a combo; a
+// text field or a widget being dragged handles Esc itself) and asks to quit
+// only when nothing is.
+void handle_escape(AppState& state) {
+    if (!pressed(keys::escape)) return;
+    if (ImGui::IsPopupOpen("", ImGuiPopupFlags_AnyPopupId)) {
+        if (state.unsaved_prompt) resolve_unsaved(state, UnsavedChoice::cancel);
+        ImGui::ClosePopupToLevel(0, true);
+        return;
+    }
+    if (ImGui::IsAnyItemActive() || ImGui::GetIO().WantTextInput) return;
+    request_quit(state);
+}
+
 void handle_shortcuts(AppState& state) {
     const ImGuiIO& io = ImGui::GetIO();
-    if (io.WantTextInput) return;  // typing in a field: letters are text
+    handle_escape(state);
+    if (io.WantTextInput || state.unsaved_prompt) return;  // typing in a field: letters are text
     if (io.KeyCtrl) {
         if (pressed(keys::letter('S'))) save_scene(state);
         if (pressed(keys::letter('Z'))) io.KeyShift ? redo(state) : undo(state);
+        if (pressed(keys::letter('Q'))) request_quit(state);
         return;
     }
     if (pressed(keys::letter('R'))) reload_scene(state);
     if (pressed(keys::letter('C'))) next_camera(state);
-    if (pressed(keys::letter('S'))) save_image(state, state.save_image_path);
+    if (pressed(keys::letter('S'))) save_image_numbered(state);
     if (pressed(keys::letter('F')))
         state.fit = state.fit == FitMode::fit ? FitMode::actual_pixels : FitMode::fit;
     if (pressed(keys::letter('H'))) state.show_ui = !state.show_ui;
     if (pressed(keys::space)) toggle_pause(state);
-    if (pressed(keys::escape)) state.quit = true;
 }
 
 // Mouse on the image moves the free camera, starting it from the scene camera.
 void handle_camera_mouse(AppState& state, const ScreenRect& image) {
     const ImGuiIO& io = ImGui::GetIO();
-    if (io.WantCaptureMouse || !state.doc.loaded || image.height() <= 0) return;
+    ImageDrag& drag = state.drag;
     const bool over = io.MousePos.x >= image.x0 && io.MousePos.x < image.x1 &&
                       io.MousePos.y >= image.y0 && io.MousePos.y < image.y1;
-    const float dx = io.MouseDelta.x, dy = io.MouseDelta.y;
-    const bool moved = dx != 0.0f || dy != 0.0f;
-    if (ImGui::IsMouseDown(ImGuiMouseButton_Left) && moved && over) {
-        use_free_camera(state);
-        orbit(state.free_camera, dx, dy, image.height());
-    } else if ((ImGui::IsMouseDown(ImGuiMouseButton_Right) ||
-                ImGui::IsMouseDown(ImGuiMouseButton_Middle)) &&
-               moved && over) {
-        use_free_camera(state);
-        pan(state.free_camera, dx, dy, image.height());
-    } else if (io.MouseWheel != 0.0f && over) {
+    const bool usable = !io.WantCaptureMouse && state.doc.loaded && image.height() > 0;
+    if (drag.button >= 0 && !ImGui::IsMouseDown(drag.button)) drag.button = -1;
+    if (drag.button < 0 && usable && over) {
+        for (int button : {ImGuiMouseButton_Left, ImGuiMouseButton_Right, ImGuiMouseButton_Middle})
+            if (ImGui::IsMouseClicked(button)) {
+                drag = {button, io.MouseClickedPos[button].x, io.MouseClickedPos[button].y};
+                break;
+            }
+    }
+    if (drag.button >= 0 && ImGui::IsMousePosValid()) {
+        const float dx = io.MousePos.x - drag.last_x, dy = io.MousePos.y - drag.last_y;
+        drag.last_x = io.MousePos.x;
+        drag.last_y = io.MousePos.y;
+        if (dx != 0.0f || dy != 0.0f) {
+            use_free_camera(state);
+            if (drag.button == ImGuiMouseButton_Left)
+                orbit(state.free_camera, dx, dy, image.height());
+            else
+                pan(state.free_camera, dx, dy, image.height());
+        }
+    } else if (io.MouseWheel != 0.0f && over && usable) {
         use_free_camera(state);
         dolly(state.free_camera, io.MouseWheel);
     }
 }
 
-void sidebar(AppState& state, float height) {
+// The sidebar's width: the user's (dragged at its right edge), kept within
+// what leaves room for the image.
+float sidebar_width(const AppState& state, float window_width) {
+    const float font = ImGui::GetFontSize();
+    const float least = 20.0f * font;
+    const float most = std::max(least, window_width - 12.0f * font);
+    return std::clamp(state.sidebar_width * font, std::min(least, window_width * 0.6f),
+                      std::min(most, window_width * 0.75f));
+}
+
+float sidebar(AppState& state, float window_width, float height) {
+    const float width = sidebar_width(state, window_width);
     ImGui::SetNextWindowPos(ImVec2(0, 0));
-    ImGui::SetNextWindowSize(ImVec2(sidebar_width, height));
+    ImGui::SetNextWindowSize(ImVec2(width, height));
+    ImGui::SetNextWindowSizeConstraints(ImVec2(0, height), ImVec2(window_width, height));
     ImGui::Begin("JTracer", nullptr,
-                 ImGuiWindowFlags_NoMove | ImGuiWindowFlags_NoResize | ImGuiWindowFlags_NoCollapse |
-                     ImGuiWindowFlags_NoSavedSettings);
-    ImGui::PushItemWidth(-110);
+                 ImGuiWindowFlags_NoMove | ImGuiWindowFlags_NoCollapse |
+                     ImGuiWindowFlags_NoSavedSettings | ImGuiWindowFlags_NoTitleBar);
+    // A drag on the right edge resized the window in Begin: remember it.
+    if (ImGui::GetWindowWidth() != width)
+        state.sidebar_width = ImGui::GetWindowWidth() / ImGui::GetFontSize();
+    ImGui::PushItemWidth(-ImGui::GetFontSize() * 7.5f);
     file_panel(state);
     camera_panel(state);
     settings_panel(state);
@@ -74,12 +117,20 @@ void sidebar(AppState& state, float height) {
     diagnostics_panel(state);
     help_panel();
     ImGui::PopItemWidth();
+    const float drawn = ImGui::GetWindowWidth();
     ImGui::End();
+    return drawn;
+}
+
+float status_height() {
+    const ImGuiStyle& style = ImGui::GetStyle();
+    return ImGui::GetFrameHeightWithSpacing() + ImGui::GetTextLineHeightWithSpacing() +
+           style.WindowPadding.y * 2.0f;
 }
 
 void status_window(AppState& state, float y, float width) {
     ImGui::SetNextWindowPos(ImVec2(0, y));
-    ImGui::SetNextWindowSize(ImVec2(width, status_height));
+    ImGui::SetNextWindowSize(ImVec2(width, status_height()));
     ImGui::Begin(
         "##status", nullptr,
         ImGuiWindowFlags_NoDecoration | ImGuiWindowFlags_NoMove | ImGuiWindowFlags_NoSavedSettings);
@@ -87,9 +138,37 @@ void status_window(AppState& state, float y, float width) {
     ImGui::End();
 }
 
+// Save / Discard / Cancel before a command that would drop unsaved edits.
+void unsaved_prompt(AppState& state) {
+    if (!state.unsaved_prompt) return;
+    if (!ImGui::IsPopupOpen(unsaved_popup)) ImGui::OpenPopup(unsaved_popup);
+    const ImVec2 centre(ImGui::GetIO().DisplaySize.x * 0.5f, ImGui::GetIO().DisplaySize.y * 0.5f);
+    ImGui::SetNextWindowPos(centre, ImGuiCond_Always, ImVec2(0.5f, 0.5f));
+    if (!ImGui::BeginPopupModal(unsaved_popup, nullptr,
+                                ImGuiWindowFlags_AlwaysAutoResize | ImGuiWindowFlags_NoMove))
+        return;
+    const bool quitting = state.unsaved_prompt->kind == GuardedCommand::Kind::quit;
+    const std::string name = state.doc.path.filename().string();
+    ImGui::Text("%s has unsaved edits.", name.c_str());
+    ImGui::TextUnformatted(quitting ? "Save them before quitting?"
+                                    : "Save them before opening another file?");
+    std::optional<UnsavedChoice> choice;
+    if (button("Save", "Write the edits into the file, then go on")) choice = UnsavedChoice::save;
+    same_line_if_fits("Discard");
+    if (button("Discard", "Throw the edits away and go on")) choice = UnsavedChoice::discard;
+    same_line_if_fits("Cancel");
+    if (button("Cancel", "Keep the edits and stay (Esc)")) choice = UnsavedChoice::cancel;
+    if (choice) {
+        resolve_unsaved(state, *choice);
+        ImGui::CloseCurrentPopup();
+    }
+    ImGui::EndPopup();
+}
+
 }  // namespace
 
 void viewer_frame(AppState& state, const FrameInfo& info) {
+    collect_ui_items(&state.ui_items);
     const ImGuiIO& io = ImGui::GetIO();
     const float w = io.DisplaySize.x, h = io.DisplaySize.y;
     reload_if_changed(state);
@@ -100,17 +179,20 @@ void viewer_frame(AppState& state, const FrameInfo& info) {
 
     ScreenRect area{0, 0, w, h};
     if (state.show_ui) {
-        area.x0 = sidebar_width;
-        area.y1 = h - status_height;
-        sidebar(state, h - status_height);
-        status_window(state, h - status_height, w);
+        const float status_h = std::min(status_height(), h);
+        area.x0 = sidebar(state, w, h - status_h);
+        area.y1 = h - status_h;
+        status_window(state, h - status_h, w);
     }
+    unsaved_prompt(state);
     track_edits(state, before, generation, ImGui::IsAnyItemActive());
+    check_edits(state);
     update_render(state);
     const ScreenRect image = place_image(state.presenter.width(), state.presenter.height(), area,
                                          info.framebuffer_scale, state.fit);
     handle_camera_mouse(state, image);
     state.presenter.draw(ImGui::GetBackgroundDrawList(), image);
+    collect_ui_items(nullptr);
 }
 
 std::string window_title(const AppState& state) {
@@ -119,17 +201,8 @@ std::string window_title(const AppState& state) {
         title += " - " + state.doc.path.filename().string();
         if (has_unsaved_edits(state.doc)) title += " *";
     }
-    if (state.started) {
-        const RenderProgress p = state.renderer.progress();
-        char text[96];
-        if (render_complete(state))
-            std::snprintf(text, sizeof text, " - done, %d samples, %.1f s", p.samples_done,
-                          p.seconds);
-        else
-            std::snprintf(text, sizeof text, " - %s %d%%", p.pass_name.c_str(),
-                          static_cast<int>(p.fraction * 100.0));
-        title += text;
-    }
+    if (const std::string status = render_title_status(state); !status.empty())
+        title += " - " + status;
     return title;
 }
 

@@ -27,6 +27,11 @@ class GlfwWindow {
 
     bool should_close() const;
     void request_close();
+    // Takes back a close request (the window manager's close button), so that
+    // the viewer can ask about unsaved edits first.
+    void cancel_close();
+    // The monitor's content scale (2 for Xft.dpi 192 or a Retina screen).
+    float content_scale() const;
     void set_title(const std::string& title);
     // Window size in screen units and framebuffer size in pixels; they differ
     // on HiDPI screens.
@@ -44,6 +49,7 @@ class GlfwWindow {
 
   private:
     static void drop_callback(GLFWwindow* window, int count, const char** paths);
+    void fit_to_work_area();
     GLFWwindow* window_ = nullptr;
     std::function<void(const std::string&)> drop_;
     std::string error_;

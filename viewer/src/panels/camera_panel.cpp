@@ -1,57 +1,89 @@
 #include "app_actions.hpp"
 #include "panels/panels.hpp"
+#include "panels/widgets.hpp"
+#include "ui_items.hpp"
 
 #include <imgui.h>
 #include <imgui_stdlib.h>
 
 #include "jtracer/validate.hpp"
 
-#include <algorithm>
-
 namespace jt::view {
 
+namespace {
+
+std::string camera_label(const Scene& scene, int i) {
+    return scene.cameras[i].name.empty() ? "camera " + std::to_string(i + 1)
+                                         : scene.cameras[i].name;
+}
+
+// Why "Make active" cannot be pressed for the selected camera, or empty.
+std::string why_not_make_active(const Scene& scene, int selected) {
+    if (scene.cameras[selected].name.empty())
+        return "Only a named camera can be made active: give it a name: in the file";
+    if (selected == active_camera_index(scene))
+        return "This camera is already the one jtracer-cli renders (active_camera)";
+    return {};
+}
+
+}  // namespace
+
+// Every read of the scene goes through `scene` and selected_camera() at the
+// moment of reading: a command run earlier in this frame (Undo, a shortcut)
+// may have replaced the scene and its camera list.
 void camera_panel(AppState& state) {
-    if (!ImGui::CollapsingHeader("Camera", ImGuiTreeNodeFlags_DefaultOpen)) return;
-    const auto& cameras = state.doc.scene.cameras;
-    auto label = [&](int i) {
-        return cameras[i].name.empty() ? "camera " + std::to_string(i + 1) : cameras[i].name;
-    };
+    if (!panel_header("Camera", "Camera", true)) return;
+    const Scene& scene = state.doc.scene;
+    const int selected = selected_camera(state);
     const std::string current = state.free_camera_active ? "free camera"
-                                : cameras.empty()        ? "(none)"
-                                                         : label(state.camera_index);
+                                : selected < 0           ? "(none)"
+                                                         : camera_label(scene, selected);
     if (ImGui::BeginCombo("View", current.c_str())) {
-        for (int i = 0; i < static_cast<int>(cameras.size()); ++i)
-            if (ImGui::Selectable(label(i).c_str(),
-                                  !state.free_camera_active && i == state.camera_index))
-                select_camera(state, i);
-        if (ImGui::Selectable("free camera", state.free_camera_active)) use_free_camera(state);
+        int chosen = -1;
+        bool free = false;
+        for (int i = 0; i < static_cast<int>(scene.cameras.size()); ++i)
+            if (ImGui::Selectable(camera_label(scene, i).c_str(),
+                                  !state.free_camera_active && i == selected))
+                chosen = i;
+        if (ImGui::Selectable("free camera", state.free_camera_active)) free = true;
         ImGui::EndCombo();
+        if (chosen >= 0) select_camera(state, chosen);
+        if (free) use_free_camera(state);
     }
+    note_item("View", true);
+    tooltip("Which camera the view shows (C: next camera). Dragging on the image switches to the "
+            "free camera.");
     ImGui::PushStyleColor(ImGuiCol_Text, ImGui::GetStyleColorVec4(ImGuiCol_TextDisabled));
     ImGui::TextWrapped("Drag on the image: left orbits, right/middle pans, wheel dollies.");
     ImGui::PopStyleColor();
-    if (ImGui::Button("Reset to scene camera")) {
+    if (button("Reset to scene camera", "Leave the free camera and show the selected scene camera",
+               state.free_camera_active ? "" : "The view already shows a scene camera")) {
         reset_free_camera(state);
         state.free_camera_active = false;
     }
-    if (!state.free_camera_active && !cameras.empty()) {
-        const std::string& name = cameras[state.camera_index].name;
-        const bool is_active =
-            label(state.camera_index) == label(std::max(0, active_camera_index(state.doc.scene)));
-        ImGui::SameLine();
-        ImGui::BeginDisabled(is_active || name.empty());
-        if (ImGui::Button("Make active"))
+    if (!state.free_camera_active && selected >= 0) {
+        same_line_if_fits("Make active");
+        const std::string why = why_not_make_active(scene, selected);
+        if (button("Make active", "Make this camera the scene's active_camera (what jtracer-cli "
+                                  "renders); Save scene to keep it",
+                   why)) {
+            const std::string name = scene.cameras[selected].name;
             edit_scene(state, [&](Scene& s) { s.settings.active_camera = name; });
-        ImGui::EndDisabled();
+        }
     }
-    ImGui::SetNextItemWidth(140);
+    ImGui::SetNextItemWidth(ImGui::GetFontSize() * 10.0f);
     ImGui::InputText("##name", &state.new_camera_name);
-    ImGui::SameLine();
-    ImGui::BeginDisabled(state.new_camera_name.empty() || !state.doc.loaded);
-    if (ImGui::Button("Copy to scene")) copy_free_camera_to_scene(state, state.new_camera_name);
-    ImGui::EndDisabled();
+    note_item("camera name", true);
+    tooltip("The name of the camera that Copy to scene adds");
+    same_line_if_fits("Copy to scene");
+    const std::string why_not_copy =
+        !state.doc.loaded || selected < 0 ? "No scene with a camera is open"
+        : state.new_camera_name.empty()   ? "Type a name for the new camera first"
+                                          : "";
+    if (button("Copy to scene", "Add the current view to the scene as a new camera", why_not_copy))
+        copy_free_camera_to_scene(state, state.new_camera_name);
     if (state.free_camera_active) {
-        FreeCamera& free = state.free_camera;
+        const FreeCamera& free = state.free_camera;
         ImGui::Text("position <%.3g, %.3g, %.3g>", free.position.x, free.position.y,
                     free.position.z);
         ImGui::Text("look_at  <%.3g, %.3g, %.3g>", free.look_at.x, free.look_at.y, free.look_at.z);

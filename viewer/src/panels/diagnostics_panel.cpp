@@ -1,4 +1,5 @@
 #include "panels/panels.hpp"
+#include "panels/widgets.hpp"
 
 #include <imgui.h>
 
@@ -9,7 +10,7 @@ void diagnostics_panel(AppState& state) {
     const bool errors = state.doc.load_failed;
     const std::string title = "Diagnostics (" + std::to_string(diagnostics.size()) + ")###diag";
     if (errors) ImGui::SetNextItemOpen(true);
-    if (!ImGui::CollapsingHeader(title.c_str())) return;
+    if (!panel_header(title.c_str(), "Diagnostics", false)) return;
     if (diagnostics.empty()) {
         ImGui::TextDisabled("No errors or warnings.");
         return;
@@ -22,17 +23,20 @@ void diagnostics_panel(AppState& state) {
         const bool error = d.severity == Severity::error;
         const ImVec4 colour =
             error ? ImVec4(1.0f, 0.45f, 0.4f, 1.0f) : ImVec4(1.0f, 0.85f, 0.4f, 1.0f);
-        std::string where = file;
-        if (d.pos.line > 0) {
-            where += ':';
-            where += std::to_string(d.pos.line);
-            where += ':';
-            where += std::to_string(d.pos.column);
-        }
+        // As the CLI prints it: the message, then the source line and a caret
+        // under the column, in the monospaced font so that the caret lines up.
+        const std::string text = format_diagnostic(d, file, state.doc.diagnostics_source);
+        const std::size_t first_line = text.find('\n');
         ImGui::PushStyleColor(ImGuiCol_Text, colour);
-        ImGui::TextWrapped("%s: %s: %s", where.c_str(), error ? "error" : "warning",
-                           d.message.c_str());
+        ImGui::TextWrapped("%s", text.substr(0, first_line).c_str());
         ImGui::PopStyleColor();
+        if (first_line != std::string::npos && first_line + 1 < text.size()) {
+            std::string quote = text.substr(first_line + 1);
+            while (!quote.empty() && quote.back() == '\n') quote.pop_back();
+            push_monospace_font();
+            ImGui::TextUnformatted(quote.c_str());
+            pop_monospace_font();
+        }
     }
 }
 

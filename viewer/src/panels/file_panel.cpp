@@ -1,5 +1,7 @@
 #include "app_actions.hpp"
 #include "panels/panels.hpp"
+#include "panels/widgets.hpp"
+#include "ui_items.hpp"
 
 #include <imgui.h>
 #include <imgui_stdlib.h>
@@ -10,24 +12,33 @@ namespace {
 
 const ImVec4 warning_colour(1.0f, 0.7f, 0.3f, 1.0f);
 
-// The file changed on disk while there are unsaved edits: nothing happens
+// The file was read again while there are unsaved edits: nothing happens
 // until the user says which to keep.
 void reload_choice(AppState& state) {
     if (!state.pending_reload) return;
+    const std::string name = state.doc.path.filename().string();
+    const bool unchanged = state.pending_reload->text == state.doc.text;
     ImGui::PushStyleColor(ImGuiCol_Text, warning_colour);
-    ImGui::TextWrapped("%s was reloaded, but you have unsaved edits.",
-                       state.doc.path.filename().c_str());
+    if (unchanged)
+        ImGui::TextWrapped("%s is unchanged on disk. Reloading it would drop your unsaved edits.",
+                           name.c_str());
+    else
+        ImGui::TextWrapped("%s changed on disk, and you have unsaved edits.", name.c_str());
     ImGui::PopStyleColor();
-    if (ImGui::Button("Reload, drop my edits")) resolve_reload(state, ReloadChoice::drop_edits);
+    if (button("Reload, drop my edits", "Show the file as it is on disk; your edits are lost"))
+        resolve_reload(state, ReloadChoice::drop_edits);
     if (state.reapply_problem.empty()) {
-        ImGui::SameLine();
-        if (ImGui::Button("Reload, re-apply my edits"))
+        same_line_if_fits("Reload, re-apply my edits");
+        if (button("Reload, re-apply my edits",
+                   "Take the file's new text and make your edits to it again"))
             resolve_reload(state, ReloadChoice::reapply_edits);
     }
-    ImGui::SameLine();
-    if (ImGui::Button("Keep mine")) resolve_reload(state, ReloadChoice::keep_edits);
+    same_line_if_fits("Keep mine");
+    if (button("Keep mine", "Ignore the file's text for now; Save scene will ask before "
+                            "replacing it"))
+        resolve_reload(state, ReloadChoice::keep_edits);
     if (!state.reapply_problem.empty())
-        ImGui::TextDisabled("(edits cannot be re-applied: %s)", state.reapply_problem.c_str());
+        ImGui::TextWrapped("(edits cannot be re-applied: %s)", state.reapply_problem.c_str());
 }
 
 // Save scene was refused because the file changed on disk.
@@ -36,54 +47,105 @@ void save_conflict_choice(AppState& state) {
     ImGui::PushStyleColor(ImGuiCol_Text, warning_colour);
     ImGui::TextWrapped("Not saved: %s.", state.save_conflict.c_str());
     ImGui::PopStyleColor();
-    if (ImGui::Button("Reload (choose what to keep)")) reload_scene(state);
-    ImGui::SameLine();
-    if (ImGui::Button("Save anyway")) save_scene_anyway(state);
-    ImGui::SameLine();
-    if (ImGui::Button("Cancel##conflict")) state.save_conflict.clear();
+    if (button("Reload (choose what to keep)", "Read the file again, then choose between its "
+                                               "text and your edits"))
+        reload_scene(state);
+    same_line_if_fits("Save anyway");
+    if (button("Save anyway", "Replace what is on disk with your edited scene"))
+        save_scene_anyway(state);
+    same_line_if_fits("Cancel##conflict");
+    if (button("Cancel##conflict", "Do not save now")) state.save_conflict.clear();
+}
+
+// Save scene as would replace an existing file.
+void save_as_choice(AppState& state) {
+    if (state.save_as_conflict.empty()) return;
+    ImGui::PushStyleColor(ImGuiCol_Text, warning_colour);
+    ImGui::TextWrapped("%s exists.", state.save_as_conflict.c_str());
+    ImGui::PopStyleColor();
+    if (button("Replace it", "Write the scene over that file"))
+        save_scene_as(state, state.save_scene_path, /*replace=*/true);
+    same_line_if_fits("Cancel##save_as");
+    if (button("Cancel##save_as", "Do not save now")) state.save_as_conflict.clear();
+}
+
+std::string why_not_save(const AppState& state) {
+    if (!state.doc.loaded) return "No scene is open";
+    if (!has_unsaved_edits(state.doc)) return "No unsaved edits: the file holds this scene";
+    return {};
 }
 
 }  // namespace
 
 void file_panel(AppState& state) {
-    if (!ImGui::CollapsingHeader("File", ImGuiTreeNodeFlags_DefaultOpen)) return;
+    if (!panel_header("File", "File", true)) return;
+    const float font = ImGui::GetFontSize();
     ImGui::TextWrapped("%s", state.doc.path.empty() ? "(no scene)" : state.doc.path.c_str());
-    ImGui::SetNextItemWidth(-70);
+    ImGui::SetNextItemWidth(-font * 4.0f);
     const bool enter = ImGui::InputTextWithHint("##open", "scene.jts", &state.open_path_input,
                                                 ImGuiInputTextFlags_EnterReturnsTrue);
+    note_item("open path", true);
+    tooltip("The path of a .jts file to open (Enter opens it). You can also drop a file on the "
+            "window.");
     ImGui::SameLine();
-    if ((ImGui::Button("Open") || enter) && !state.open_path_input.empty())
-        request_open(state, state.open_path_input);
+    if ((button("Open", "Open the file named on the left (asks first if you have unsaved edits)",
+                state.open_path_input.empty() ? "Type the path of a .jts file first" : "") ||
+         enter) &&
+        !state.open_path_input.empty())
+        request_open_guarded(state, state.open_path_input);
     if (!state.recent.paths().empty()) {
-        ImGui::SetNextItemWidth(-70);
+        ImGui::SetNextItemWidth(-font * 4.0f);
         if (ImGui::BeginCombo("Recent", state.recent.paths().front().c_str())) {
             std::string chosen;
             for (const std::string& path : state.recent.paths())
                 if (ImGui::Selectable(path.c_str())) chosen = path;
             ImGui::EndCombo();
-            if (!chosen.empty()) request_open(state, chosen);
+            if (!chosen.empty()) request_open_guarded(state, chosen);
         }
+        note_item("Recent", true);
+        tooltip("Files opened before, newest first");
     }
-    if (ImGui::Button("Reload (R)")) reload_scene(state);
-    ImGui::SameLine();
-    ImGui::BeginDisabled(!has_unsaved_edits(state.doc));
-    if (ImGui::Button("Save scene (Ctrl+S)")) save_scene(state);
-    ImGui::EndDisabled();
-    ImGui::SameLine();
-    ImGui::BeginDisabled(!state.undo.can_undo());
-    if (ImGui::Button("Undo")) undo(state);
-    ImGui::EndDisabled();
-    ImGui::SameLine();
-    ImGui::BeginDisabled(!state.undo.can_redo());
-    if (ImGui::Button("Redo")) redo(state);
-    ImGui::EndDisabled();
+    if (button("Reload (R)", "Read the file again (asks first if you have unsaved edits)",
+               state.doc.path.empty() ? "No file is open" : ""))
+        reload_scene(state);
+    same_line_if_fits("Save scene (Ctrl+S)");
+    if (button("Save scene (Ctrl+S)",
+               "Write your edits into the file, changing only the values you edited",
+               why_not_save(state)))
+        save_scene(state);
+    same_line_if_fits("Undo");
+    if (button("Undo", "Undo the last edit (Ctrl+Z)",
+               state.undo.can_undo() ? "" : "Nothing to undo"))
+        undo(state);
+    same_line_if_fits("Redo");
+    if (button("Redo", "Redo the edit undone last (Ctrl+Shift+Z)",
+               state.undo.can_redo() ? "" : "Nothing to redo"))
+        redo(state);
     if (state.loader.busy()) ImGui::TextDisabled("Loading...");
     reload_choice(state);
     save_conflict_choice(state);
-    ImGui::SetNextItemWidth(-110);
-    ImGui::InputText("##image", &state.save_image_path);
+    ImGui::SetNextItemWidth(-font * 8.5f);
+    ImGui::InputTextWithHint("##scene_as", "copy.jts", &state.save_scene_path);
+    note_item("save scene path", true);
+    tooltip("Where Save scene as writes the edited scene");
     ImGui::SameLine();
-    if (ImGui::Button("Save image (S)")) save_image(state, state.save_image_path);
+    if (button("Save scene as", "Write the edited scene to this file and keep editing that one",
+               !state.doc.loaded                ? "No scene is open"
+               : state.save_scene_path.empty() ? "Type the new file's path first"
+                                                : ""))
+        save_scene_as(state, state.save_scene_path, /*replace=*/false);
+    save_as_choice(state);
+    ImGui::SetNextItemWidth(-font * 8.5f);
+    ImGui::InputText("##image", &state.save_image_path);
+    note_item("save image path", true);
+    tooltip("Where S saves the image, PNG or BMP by the name's ending. An existing file is never "
+            "replaced: name-001.png, name-002.png, ... are used instead.");
+    ImGui::SameLine();
+    if (button("Save image (S)", "Save the image as shown now under the name on the left",
+               state.display.width <= 0        ? "Nothing has rendered yet"
+               : state.save_image_path.empty() ? "Type the image's path first"
+                                               : ""))
+        save_image(state, state.save_image_path);
 }
 
 }  // namespace jt::view

@@ -1,34 +1,40 @@
 #include "panels/panels.hpp"
+#include "panels/widgets.hpp"
 
 #include <imgui.h>
 
 namespace jt::view {
 
 void help_panel() {
-    if (!ImGui::CollapsingHeader("Help")) return;
+    if (!panel_header("Help", "Help", false)) return;
     static const char* const rows[][2] = {
         {"R", "reload the scene file"},
         {"C", "next camera"},
-        {"S", "save the image (PNG or BMP by name)"},
+        {"S", "save the image (PNG or BMP by name; never replaces a file)"},
         {"Ctrl+S", "save the scene (edits written in place)"},
         {"Ctrl+Z", "undo"},
         {"Ctrl+Shift+Z", "redo"},
         {"Space", "pause / resume the render"},
         {"F", "fit the image to the window / actual pixels"},
         {"H", "hide / show the panels"},
-        {"Esc", "quit"},
+        {"Esc", "close a popup or picker; with none open, quit"},
+        {"Ctrl+Q", "quit (asks first about unsaved edits)"},
         {"Left drag", "orbit (free camera)"},
         {"Right/middle drag", "pan"},
         {"Wheel", "dolly"},
         {"Drop a .jts", "open it"},
+        {"Panel edge", "drag to resize the panel"},
     };
     if (ImGui::BeginTable("keys", 2, ImGuiTableFlags_RowBg)) {
+        ImGui::TableSetupColumn("key", ImGuiTableColumnFlags_WidthFixed,
+                                ImGui::CalcTextSize("Right/middle drag").x);
+        ImGui::TableSetupColumn("action", ImGuiTableColumnFlags_WidthStretch);
         for (const auto& row : rows) {
             ImGui::TableNextRow();
             ImGui::TableNextColumn();
-            ImGui::TextUnformatted(row[0]);
+            ImGui::TextWrapped("%s", row[0]);
             ImGui::TableNextColumn();
-            ImGui::TextUnformatted(row[1]);
+            ImGui::TextWrapped("%s", row[1]);
         }
         ImGui::EndTable();
     }

@@ -1,5 +1,6 @@
 #include "panels/panels.hpp"
 #include "panels/property_fields.hpp"
+#include "ui_items.hpp"
 
 #include <imgui.h>
 
@@ -19,7 +20,7 @@ void shape_editor(Shape& shape) {
 void objects_panel(AppState& state) {
     auto& primitives = state.doc.scene.primitives;
     const std::string title = "Objects (" + std::to_string(primitives.size()) + ")###objects";
-    if (!ImGui::CollapsingHeader(title.c_str())) return;
+    if (!panel_header(title.c_str(), "Objects", false)) return;
     for (std::size_t i = 0; i < primitives.size(); ++i) {
         Primitive& p = primitives[i];
         ImGui::PushID(static_cast<int>(i));
@@ -28,7 +29,9 @@ void objects_panel(AppState& state) {
                            ImGuiColorEditFlags_NoTooltip, ImVec2(14, 14));
         ImGui::SameLine();
         const std::string label = std::string(keyword_of(p.shape)) + " " + std::to_string(i + 1);
-        if (ImGui::TreeNode(label.c_str())) {
+        const bool open = ImGui::TreeNode(label.c_str());
+        note_item(label.c_str(), false);
+        if (open) {
             shape_editor(p.shape);
             ImGui::Separator();
             ImGui::TextDisabled("material");

@@ -19,7 +19,12 @@ void status_line(AppState& state);
 void material_editor(Material& material);
 void transform_editor(std::vector<TransformOp>& transforms);
 
-// "pass 3/7 (1 sample) | 4/16 samples | 1.2 s | 3.4 Mrays/s"
+// "sample 4 of 16 | 1.2 s elapsed, about 3.0 s left | 3.4 Mrays/s",
+// "paused at preview 1/4 | edit waiting: Space renders it", "done: ..."
 std::string render_status(const AppState& state);
+
+// The monospaced font (for source lines with a caret), when one is loaded.
+void push_monospace_font();
+void pop_monospace_font();
 
 }  // namespace jt::view

@@ -6,7 +6,7 @@
 namespace jt::view {
 
 void settings_panel(AppState& state) {
-    if (!ImGui::CollapsingHeader("Render settings", ImGuiTreeNodeFlags_DefaultOpen)) return;
+    if (!panel_header("Render settings", "Render settings", true)) return;
     ImGui::BeginDisabled(!state.doc.loaded);
     RenderSettings& s = state.doc.scene.settings;
     edit_properties(s);

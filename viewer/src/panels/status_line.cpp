@@ -4,32 +4,68 @@
 #include <imgui.h>
 
 #include <cstdio>
+#include <cstdlib>
 
 namespace jt::view {
 
+namespace {
+
+// "preview 1/8", "full resolution", "sample 4 of 16": the core names its
+// full-resolution passes by the samples they reach ("1 sample", "4 samples").
+std::string stage_name(const RenderProgress& p, int target_samples) {
+    if (p.pass_name.rfind("preview", 0) == 0) return p.pass_name;
+    const int reached = std::atoi(p.pass_name.c_str());
+    if (target_samples <= 1 || reached <= 1) return "full resolution";
+    return "sample " + std::to_string(reached) + " of " + std::to_string(target_samples);
+}
+
+std::string seconds_text(double seconds) {
+    char text[32];
+    if (seconds < 60)
+        std::snprintf(text, sizeof text, "%.1f s", seconds);
+    else
+        std::snprintf(text, sizeof text, "%d min %02d s", static_cast<int>(seconds) / 60,
+                      static_cast<int>(seconds) % 60);
+    return text;
+}
+
+}  // namespace
+
 std::string render_status(const AppState& state) {
     if (!state.render_note.empty() && !state.started) return state.render_note;
+    if (!state.started) return state.paused ? "paused" : "idle";
     const RenderProgress p = state.renderer.progress();
-    if (!state.started) return "idle";
+    const int samples = state.started->options.samples;
     if (p.pass_count == 0) return state.paused ? "paused" : "preparing the scene";
-    char text[256];
     const double mrays = p.seconds > 0 ? static_cast<double>(p.rays) / p.seconds / 1e6 : 0.0;
-    std::snprintf(text, sizeof text, "pass %d/%d (%s) | %d/%d samples | %.2f s | %.2f Mrays/s%s",
-                  p.pass + 1, p.pass_count, p.pass_name.c_str(), p.samples_done,
-                  state.started->options.samples, p.seconds, mrays,
-                  state.paused             ? " | paused"
-                  : render_complete(state) ? " | done"
-                                           : "");
-    return text;
+    char speed[48];
+    std::snprintf(speed, sizeof speed, "%.1f Mrays/s", mrays);
+    if (state.paused) {
+        std::string text = "paused at " + stage_name(p, samples);
+        text += state.edit_waiting ? " | edit waiting: Space renders it" : " | Space resumes";
+        return text;
+    }
+    if (render_complete(state))
+        return "done: " + std::to_string(p.samples_done) + (p.samples_done == 1 ? " sample" : " samples") +
+               " in " + seconds_text(p.seconds) + " | " + speed;
+    std::string text = stage_name(p, samples) + " | " + seconds_text(p.seconds) + " elapsed";
+    // The ETA once enough is done to extrapolate from.
+    if (p.fraction > 0.02 && p.fraction < 1.0)
+        text += ", about " + seconds_text(p.seconds * (1.0 - p.fraction) / p.fraction) + " left";
+    return text + " | " + speed;
 }
 
 void status_line(AppState& state) {
     const RenderProgress p = state.renderer.progress();
     const std::string status = render_status(state);
-    ImGui::SetNextItemWidth(160);
-    ImGui::ProgressBar(static_cast<float>(p.fraction), ImVec2(160, 0));
+    const float font = ImGui::GetFontSize();
+    const float fraction = render_complete(state) ? 1.0f : static_cast<float>(p.fraction);
+    ImGui::ProgressBar(fraction, ImVec2(font * 10.0f, 0));
     ImGui::SameLine();
-    ImGui::TextUnformatted(status.c_str());
+    if (state.paused)
+        ImGui::TextColored(ImVec4(1.0f, 0.7f, 0.3f, 1.0f), "%s", status.c_str());
+    else
+        ImGui::TextUnformatted(status.c_str());
     const std::string error = state.renderer.error();
     if (!error.empty()) {
         ImGui::SameLine();

@@ -1,5 +1,7 @@
 #include "panels/widgets.hpp"
 
+#include "ui_items.hpp"
+
 #include <imgui.h>
 
 #include <algorithm>
@@ -24,9 +26,11 @@ double from_widget(float f) {
 bool edit_number(const char* label, double& value, float speed, double min, double max) {
     float f = static_cast<float>(value);
     const bool bounded = max > min;
-    if (!ImGui::DragFloat(label, &f, speed, static_cast<float>(min), static_cast<float>(max),
-                          "%.4g", bounded ? ImGuiSliderFlags_AlwaysClamp : 0))
-        return false;
+    const bool changed =
+        ImGui::DragFloat(label, &f, speed, static_cast<float>(min), static_cast<float>(max), "%.4g",
+                         bounded ? ImGuiSliderFlags_AlwaysClamp : 0);
+    note_item(label, false);
+    if (!changed) return false;
     double next = from_widget(f);
     if (bounded) next = std::clamp(next, min, max);
     if (!std::isfinite(next) || next == value) return false;
@@ -37,7 +41,9 @@ bool edit_number(const char* label, double& value, float speed, double min, doub
 bool edit_vector(const char* label, Vec3& value, float speed) {
     float f[3] = {static_cast<float>(value.x), static_cast<float>(value.y),
                   static_cast<float>(value.z)};
-    if (!ImGui::DragFloat3(label, f, speed, 0.0f, 0.0f, "%.4g")) return false;
+    const bool changed = ImGui::DragFloat3(label, f, speed, 0.0f, 0.0f, "%.4g");
+    note_item(label, false);
+    if (!changed) return false;
     Vec3 next = value;
     for (int i = 0; i < 3; ++i)
         if (f[i] != static_cast<float>(value[i]) && std::isfinite(f[i]))
@@ -50,7 +56,9 @@ bool edit_vector(const char* label, Vec3& value, float speed) {
 bool edit_colour(const char* label, Colour& value) {
     float f[3] = {static_cast<float>(value.x), static_cast<float>(value.y),
                   static_cast<float>(value.z)};
-    if (!ImGui::ColorEdit3(label, f, ImGuiColorEditFlags_Float)) return false;
+    const bool changed = ImGui::ColorEdit3(label, f, ImGuiColorEditFlags_Float);
+    note_item(label, false);
+    if (!changed) return false;
     Colour next = value;
     for (int i = 0; i < 3; ++i)
         if (f[i] != static_cast<float>(value[i])) next[i] = std::clamp(from_widget(f[i]), 0.0, 1.0);
@@ -61,12 +69,48 @@ bool edit_colour(const char* label, Colour& value) {
 
 bool edit_int(const char* label, int& value, int min, int max) {
     int v = value;
-    if (!ImGui::DragInt(label, &v, 1.0f, min, max, "%d", ImGuiSliderFlags_AlwaysClamp))
-        return false;
+    const bool changed =
+        ImGui::DragInt(label, &v, 1.0f, min, max, "%d", ImGuiSliderFlags_AlwaysClamp);
+    note_item(label, false);
+    if (!changed) return false;
     v = std::clamp(v, min, max);
     if (v == value) return false;
     value = v;
     return true;
+}
+
+bool panel_header(const char* label, const char* id, bool default_open) {
+    const bool open =
+        ImGui::CollapsingHeader(label, default_open ? ImGuiTreeNodeFlags_DefaultOpen : 0);
+    note_item(id, false);
+    return open;
+}
+
+void tooltip(const char* text) {
+    if (ImGui::IsItemHovered(ImGuiHoveredFlags_AllowWhenDisabled)) {
+        ImGui::BeginTooltip();
+        ImGui::PushTextWrapPos(ImGui::GetFontSize() * 28.0f);
+        ImGui::TextUnformatted(text);
+        ImGui::PopTextWrapPos();
+        ImGui::EndTooltip();
+    }
+}
+
+bool button(const char* label, const char* tooltip_text, const std::string& why_disabled) {
+    const bool disabled = !why_disabled.empty();
+    ImGui::BeginDisabled(disabled);
+    const bool clicked = ImGui::Button(label);
+    ImGui::EndDisabled();
+    tooltip(disabled ? why_disabled.c_str() : tooltip_text);
+    note_item(label, true);
+    return clicked && !disabled;
+}
+
+void same_line_if_fits(const char* label) {
+    const ImGuiStyle& style = ImGui::GetStyle();
+    const float width = ImGui::CalcTextSize(label, nullptr, true).x + style.FramePadding.x * 2.0f;
+    const float right = ImGui::GetWindowPos().x + ImGui::GetWindowContentRegionMax().x;
+    if (ImGui::GetItemRectMax().x + style.ItemSpacing.x + width <= right) ImGui::SameLine();
 }
 
 }  // namespace jt::view

@@ -1,9 +1,13 @@
 #pragma once
-// ImGui widgets for the scene's double-precision values. ImGui edits floats;
-// a value is written back only when the user changed it, rounded to the
-// precision the widget shows, so untouched values stay exactly as parsed.
+// ImGui widgets for the scene's double-precision values, and buttons that
+// explain themselves. ImGui edits floats; a value is written back only when
+// the user changed it, rounded to the precision the widget shows, so
+// untouched values stay exactly as parsed. Every widget is recorded in the
+// frame's UI items (ui_items.hpp) under its label.
 
 #include "jtracer/scene.hpp"
+
+#include <string>
 
 namespace jt::view {
 
@@ -11,5 +15,17 @@ bool edit_number(const char* label, double& value, float speed, double min = 0.0
 bool edit_vector(const char* label, Vec3& value, float speed = 0.05f);
 bool edit_colour(const char* label, Colour& value);
 bool edit_int(const char* label, int& value, int min, int max);
+
+// A panel's collapsing header, recorded under `id` (its label without counts).
+bool panel_header(const char* label, const char* id, bool default_open);
+
+// A button that says what it does when hovered. With `why_disabled` set it is
+// greyed out and its tooltip says why instead.
+bool button(const char* label, const char* tooltip, const std::string& why_disabled = {});
+// Shows `text` while the last item is hovered, also when it is disabled.
+void tooltip(const char* text);
+// Puts the next button on the line of the last item when `label` fits there,
+// so that a row of buttons wraps instead of running off the panel.
+void same_line_if_fits(const char* label);
 
 }  // namespace jt::view
