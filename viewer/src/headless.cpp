@@ -48,6 +48,7 @@ void HeadlessViewer::drag(AppState& state, int button, float x0, float y0, float
     io.MousePos = ImVec2(x0, y0);
     frame(state);
     io.MouseDown[button] = true;
+    frame(state);  // pressed where it is, then moved
     constexpr int steps = 4;
     for (int i = 1; i <= steps; ++i) {
         const float t = static_cast<float>(i) / steps;

@@ -22,7 +22,8 @@ class HeadlessViewer {
     // Holds `key` down for one frame (with the modifiers), then releases it.
     void press_key(AppState& state, int key, bool ctrl = false, bool shift = false);
     // Drags the mouse with `button` (0 left, 1 right, 2 middle) from one point
-    // to another (window units, y down) over a few frames, as a user would.
+    // to another (window units, y down) over a few frames, as a user would:
+    // pressed at the first point, moved, released at the second.
     void drag(AppState& state, int button, float x0, float y0, float x1, float y1);
     // Clicks the control drawn under `label` in the last frame (see
     // ui_items.hpp) with the left button; false when there is none.

@@ -14,6 +14,15 @@ void collect_ui_items(std::vector<UiItem>* items) {
     if (collecting) collecting->clear();
 }
 
+void note_window(const char* label) {
+    if (!collecting) return;
+    const ImVec2 pos = ImGui::GetWindowPos(), size = ImGui::GetWindowSize();
+    UiItem item;
+    item.label = label;
+    item.rect = {pos.x, pos.y, pos.x + size.x, pos.y + size.y};
+    collecting->push_back(std::move(item));
+}
+
 void note_item(const char* label, bool has_tooltip) {
     if (!collecting) return;
     const ImVec2 min = ImGui::GetItemRectMin(), max = ImGui::GetItemRectMax();
@@ -22,8 +31,8 @@ void note_item(const char* label, bool has_tooltip) {
     item.rect = {min.x, min.y, max.x, max.y};
     item.enabled = (GImGui->CurrentItemFlags & ImGuiItemFlags_Disabled) == 0;
     item.has_tooltip = has_tooltip;
-    const float right = ImGui::GetWindowPos().x + ImGui::GetWindowContentRegionMax().x;
-    item.clipped = max.x > right + 0.5f;
+    // What ImGui clips the window's contents to.
+    item.clipped = max.x > GImGui->CurrentWindow->InnerClipRect.Max.x + 0.5f;
     collecting->push_back(std::move(item));
 }
 

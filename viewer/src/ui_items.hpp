@@ -26,6 +26,9 @@ void collect_ui_items(std::vector<UiItem>* items);
 // Records the last ImGui item under `label`.
 void note_item(const char* label, bool has_tooltip);
 
+// Records the current ImGui window (its whole rectangle) under `label`.
+void note_window(const char* label);
+
 // The item of `items` called `label`, or nullptr.
 const UiItem* find_item(const std::vector<UiItem>& items, const std::string& label);
 

@@ -118,6 +118,7 @@ float sidebar(AppState& state, float window_width, float height) {
     help_panel();
     ImGui::PopItemWidth();
     const float drawn = ImGui::GetWindowWidth();
+    note_window("panel");
     ImGui::End();
     return drawn;
 }
@@ -135,6 +136,7 @@ void status_window(AppState& state, float y, float width) {
         "##status", nullptr,
         ImGuiWindowFlags_NoDecoration | ImGuiWindowFlags_NoMove | ImGuiWindowFlags_NoSavedSettings);
     status_line(state);
+    note_window("status");
     ImGui::End();
 }
 

@@ -1,0 +1,370 @@
+// Issue 15's defects, each through the OSMesa frame code as a user meets
+// them: the crash after Copy to scene + undo, a drag that jumps, diagnostics
+// that lag behind an edit, prompts that say the wrong thing, edits lost on
+// quit, files overwritten without asking, clipped or unexplained controls.
+
+#include "app_actions.hpp"
+#include "headless.hpp"
+#include "jtracer/parser.hpp"
+#include "jtracer/scene_file.hpp"
+#include "jtracer/validate.hpp"
+#include "keys.hpp"
+#include "panels/panels.hpp"
+#include "viewer_frame.hpp"
+#include "viewer_test_files.hpp"
+
+#include <gtest/gtest.h>
+#include <glm/geometric.hpp>
+#include <imgui.h>
+
+namespace jt::view {
+namespace {
+
+using namespace jt::view::test;
+
+class ViewerSafety : public ::testing::Test {
+  protected:
+    void SetUp() override {
+        ASSERT_TRUE(viewer.ok()) << viewer.error();
+        file = scene_copy(::testing::UnitTest::GetInstance()->current_test_info()->name());
+    }
+    void TearDown() override { fs::remove_all(file.parent_path()); }
+
+    // The middle of the image area (right of the panel, above the status line).
+    ImVec2 image_centre() const {
+        const UiItem* panel = find_item(state.ui_items, "panel");
+        const float x0 = panel ? panel->rect.x1 : 0.0f;
+        return ImVec2((x0 + viewer.width()) * 0.5f, viewer.height() * 0.4f);
+    }
+    void open_and_render() {
+        open_scene(state, file);
+        ASSERT_TRUE(viewer.run_until_complete(state, kTimeout));
+    }
+
+    HeadlessViewer viewer{960, 640};
+    AppState state{test_config()};
+    fs::path file;
+};
+
+// The crash: the camera panel indexed the camera list with an index that undo
+// had left past its end (the copied camera was the last one).
+TEST_F(ViewerSafety, CopyToSceneThenUndoKeepsTheViewOnACameraThatExists) {
+    open_and_render();
+    for (bool by_button : {false, true}) {
+        const ImVec2 c = image_centre();
+        viewer.drag(state, 0, c.x, c.y, c.x + 40, c.y + 10);
+        ASSERT_TRUE(state.free_camera_active);
+        state.new_camera_name = by_button ? "by_button" : "by_key";
+        viewer.frame(state);
+        ASSERT_TRUE(viewer.click(state, "Copy to scene"));
+        ASSERT_EQ(state.doc.scene.cameras.size(), 3u) << state.message;
+        EXPECT_EQ(state.camera_index, 2);
+        if (by_button)
+            ASSERT_TRUE(viewer.click(state, "Undo"));
+        else
+            viewer.press_key(state, keys::letter('Z'), /*ctrl=*/true);
+        ASSERT_EQ(state.doc.scene.cameras.size(), 2u);
+        EXPECT_GE(state.camera_index, 0);
+        EXPECT_LT(state.camera_index, 2);
+        for (int i = 0; i < 3; ++i) viewer.frame(state);
+        // Redo brings the camera back, and the view can show it again.
+        viewer.press_key(state, keys::letter('Z'), /*ctrl=*/true, /*shift=*/true);
+        ASSERT_EQ(state.doc.scene.cameras.size(), 3u);
+        select_camera(state, 2);
+        viewer.press_key(state, keys::letter('Z'), /*ctrl=*/true);
+        EXPECT_LT(state.camera_index, 2);
+        ASSERT_TRUE(viewer.run_until_complete(state, kTimeout));
+        // Nothing is left to undo for the next round but the scene as loaded.
+        while (state.undo.can_undo()) undo(state);
+        EXPECT_EQ(state.doc.scene, state.doc.original);
+        viewer.frame(state);
+    }
+}
+
+// The same pattern elsewhere: a reload or a scripted edit that removes the
+// selected camera leaves the view on one that exists, named the same if it can.
+TEST_F(ViewerSafety, ReplacingTheSceneKeepsTheSelectedCameraByName) {
+    open_and_render();
+    select_camera(state, 1);  // "top"
+    edit_scene(state, [](Scene& s) { s.cameras.erase(s.cameras.begin()); });
+    EXPECT_EQ(state.camera_index, 0);
+    EXPECT_EQ(state.doc.scene.cameras[0].name, "top");
+    undo(state);
+    EXPECT_EQ(state.camera_index, 1) << "still \"top\"";
+    edit_scene(state, [](Scene& s) { s.cameras.resize(1); });
+    EXPECT_EQ(state.camera_index, 0);
+    for (int i = 0; i < 3; ++i) viewer.frame(state);
+}
+
+// A press right after moving onto the image used the whole move since the
+// last frame as the first drag step: the camera jumped.
+TEST_F(ViewerSafety, ADragMovesTheCameraOnlyByTheMotionAfterThePress) {
+    open_and_render();
+    ImGuiIO& io = ImGui::GetIO();
+    viewer.move_mouse(state, 20, 20);  // over the panel
+    const ImVec2 c = image_centre();
+    // In one frame the mouse arrives on the image and the button goes down.
+    io.MousePos = c;
+    io.MouseDown[0] = true;
+    viewer.frame(state);
+    const FreeCamera start = free_camera_from(state.doc.scene.cameras[0]);
+    EXPECT_FALSE(state.free_camera_active) << "no motion since the press yet";
+    io.MousePos = ImVec2(c.x + 8, c.y);
+    viewer.frame(state);
+    io.MouseDown[0] = false;
+    viewer.frame(state);
+    ASSERT_TRUE(state.free_camera_active);
+    const double moved = glm::length(state.free_camera.position - start.position);
+    const double distance = glm::length(start.position - start.look_at);
+    // 8 pixels of a view several hundred pixels high: a few degrees, not a jump.
+    EXPECT_GT(moved, 0.0);
+    EXPECT_LT(moved, distance * 0.2) << "the camera jumped";
+
+    // A drag that starts on the panel never moves the camera.
+    state.free_camera_active = false;
+    viewer.drag(state, 0, 20, 300, c.x, c.y);
+    EXPECT_FALSE(state.free_camera_active);
+}
+
+// After a live width change the Diagnostics panel says what --check says.
+TEST_F(ViewerSafety, DiagnosticsFollowEveryEditAsCheckWould) {
+    open_and_render();
+    EXPECT_TRUE(state.doc.diagnostics.empty());
+    edit_scene(state, [](Scene& s) { s.settings.width = 32; });
+    viewer.frame(state);
+    ASSERT_FALSE(state.doc.diagnostics.empty()) << "the aspect no longer matches";
+    // What jtracer-cli --check says about the same values, written to a file.
+    state.save_scene_path = (file.parent_path() / "checked.jts").string();
+    viewer.frame(state);
+    ASSERT_TRUE(viewer.click(state, "Save scene as"));
+    LoadedScene loaded = jt::load_scene_file(file.parent_path() / "checked.jts");
+    ASSERT_TRUE(loaded.read_ok());
+    const std::vector<Diagnostic> check = check_scene(loaded);
+    ASSERT_EQ(check.size(), state.doc.diagnostics.size());
+    for (std::size_t i = 0; i < check.size(); ++i) {
+        EXPECT_EQ(check[i].message, state.doc.diagnostics[i].message);
+        EXPECT_EQ(check[i].pos.line, state.doc.diagnostics[i].pos.line);
+    }
+    undo(state);
+    viewer.frame(state);
+    EXPECT_TRUE(state.doc.diagnostics.empty()) << "undone: nothing to warn about";
+}
+
+TEST_F(ViewerSafety, ReloadPromptSaysWhetherTheFileChanged) {
+    open_and_render();
+    edit_scene(state, [](Scene& s) { s.settings.recurse_depth = 1; });
+    viewer.press_key(state, keys::letter('R'));
+    ASSERT_TRUE(viewer.run_until_loaded(state));
+    ASSERT_TRUE(state.pending_reload);
+    EXPECT_NE(state.message.find("unchanged"), std::string::npos) << state.message;
+    EXPECT_EQ(state.message.find("was reloaded"), std::string::npos) << state.message;
+    ASSERT_TRUE(viewer.click(state, "Keep mine"));
+    write(file, read(file) + "\n# theirs\n");
+    ASSERT_TRUE(viewer.run_until_loaded(state));
+    ASSERT_TRUE(state.pending_reload);
+    EXPECT_NE(state.message.find("changed on disk"), std::string::npos) << state.message;
+}
+
+TEST_F(ViewerSafety, ABrokenFileAtStartUpIsQuotedWithItsLineAndCaret) {
+    write(file, "render_settings {\n    width: 64;\n    height: 48\n}\n");
+    open_scene(state, file);
+    viewer.frame(state);
+    EXPECT_EQ(state.message.find("Could not open"), std::string::npos) << state.message;
+    EXPECT_NE(state.message.find("has errors"), std::string::npos) << state.message;
+    const std::string shown = format_diagnostics(state.doc);
+    EXPECT_NE(shown.find("    height: 48"), std::string::npos) << shown;
+    EXPECT_NE(shown.find('^'), std::string::npos) << shown;
+    // A file that cannot be read says so.
+    open_scene(state, file.parent_path() / "missing.jts");
+    EXPECT_NE(state.message.find("Could not open"), std::string::npos) << state.message;
+}
+
+TEST_F(ViewerSafety, EscapeClosesWhatIsOpenAndNeverDropsEdits) {
+    open_and_render();
+    // Without edits Esc quits.
+    AppState clean{test_config()};
+    open_scene(clean, file);
+    viewer.frame(clean);
+    viewer.press_key(clean, keys::escape);
+    EXPECT_TRUE(clean.quit);
+    viewer.frame(state);
+
+    edit_scene(state, [](Scene& s) { s.settings.recurse_depth = 1; });
+    // A combo open: Esc closes it and nothing else.
+    viewer.frame(state);
+    ASSERT_TRUE(viewer.click(state, "View"));
+    ASSERT_TRUE(ImGui::IsPopupOpen("", ImGuiPopupFlags_AnyPopupId));
+    viewer.press_key(state, keys::escape);
+    EXPECT_FALSE(ImGui::IsPopupOpen("", ImGuiPopupFlags_AnyPopupId));
+    EXPECT_FALSE(state.quit);
+    EXPECT_FALSE(state.unsaved_prompt);
+    // Typing in a field: Esc leaves the field.
+    ASSERT_TRUE(viewer.click(state, "camera name"));
+    ASSERT_TRUE(ImGui::GetIO().WantTextInput);
+    viewer.press_key(state, keys::escape);
+    EXPECT_FALSE(state.quit);
+    EXPECT_FALSE(state.unsaved_prompt);
+    // Nothing open: Esc asks, a second Esc cancels.
+    viewer.press_key(state, keys::escape);
+    EXPECT_FALSE(state.quit);
+    ASSERT_TRUE(state.unsaved_prompt);
+    viewer.press_key(state, keys::escape);
+    EXPECT_FALSE(state.unsaved_prompt);
+    EXPECT_FALSE(state.quit);
+    EXPECT_TRUE(has_unsaved_edits(state.doc));
+    // Ctrl+Q asks too; Save writes the edits, then quits.
+    viewer.press_key(state, keys::letter('Q'), /*ctrl=*/true);
+    ASSERT_TRUE(state.unsaved_prompt);
+    viewer.frame(state);
+    ASSERT_TRUE(viewer.click(state, "Save"));
+    EXPECT_TRUE(state.quit);
+    ParseResult saved = parse_scene(read(file));
+    ASSERT_TRUE(saved.ok());
+    EXPECT_EQ(saved.scene.settings.recurse_depth, 1);
+}
+
+TEST_F(ViewerSafety, OpeningAnotherFileWithEditsAsksAndDiscardOpensIt) {
+    open_and_render();
+    const fs::path other = file.parent_path() / "other.jts";
+    fs::copy_file(file, other);
+    edit_scene(state, [](Scene& s) { s.settings.recurse_depth = 1; });
+    request_open_guarded(state, other);  // as Open, Recent and a dropped file do
+    viewer.frame(state);
+    ASSERT_TRUE(state.unsaved_prompt);
+    ASSERT_TRUE(viewer.click(state, "Cancel"));
+    EXPECT_EQ(state.doc.path, file);
+    EXPECT_EQ(state.doc.scene.settings.recurse_depth, 1);
+    request_open_guarded(state, other);
+    viewer.frame(state);
+    ASSERT_TRUE(viewer.click(state, "Discard"));
+    ASSERT_TRUE(viewer.run_until_loaded(state));
+    EXPECT_EQ(state.doc.path, other);
+    EXPECT_EQ(read(file), read(kScene)) << "discarded, not saved";
+}
+
+TEST_F(ViewerSafety, ImageSavesNeverReplaceAFile) {
+    open_and_render();
+    const fs::path png = file.parent_path() / "view.png";
+    write(png, "someone else's picture");
+    state.save_image_path = png.string();
+    viewer.press_key(state, keys::letter('S'));
+    viewer.press_key(state, keys::letter('S'));
+    EXPECT_EQ(read(png), "someone else's picture");
+    const std::string first = read(file.parent_path() / "view-001.png");
+    EXPECT_EQ(first.substr(0, 4), "\x89PNG");
+    EXPECT_TRUE(fs::exists(file.parent_path() / "view-002.png"));
+    EXPECT_NE(state.message.find("view-002.png"), std::string::npos) << state.message;
+    for (const auto& entry : fs::directory_iterator(file.parent_path()))
+        EXPECT_EQ(entry.path().string().find(".tmp"), std::string::npos) << entry.path();
+}
+
+TEST_F(ViewerSafety, SaveSceneAsAsksBeforeReplacingAndThenEditsTheNewFile) {
+    open_and_render();
+    edit_scene(state, [](Scene& s) { s.settings.recurse_depth = 1; });
+    const fs::path copy = file.parent_path() / "copy.jts";
+    write(copy, "# precious\n");
+    state.save_scene_path = copy.string();
+    viewer.frame(state);
+    ASSERT_TRUE(viewer.click(state, "Save scene as"));
+    EXPECT_EQ(read(copy), "# precious\n");
+    EXPECT_FALSE(state.save_as_conflict.empty());
+    ASSERT_TRUE(viewer.click(state, "Replace it"));
+    EXPECT_EQ(state.doc.path, copy);
+    EXPECT_FALSE(has_unsaved_edits(state.doc));
+    ParseResult saved = parse_scene(read(copy));
+    ASSERT_TRUE(saved.ok());
+    EXPECT_EQ(saved.scene, state.doc.scene);
+    EXPECT_EQ(read(file), read(kScene)) << "the first file is untouched";
+}
+
+TEST_F(ViewerSafety, StatusAndTitleNameThePassTheTimesAndPausing) {
+    open_scene(state, file);
+    edit_scene(state, [](Scene& s) { s.settings.samples = 4; });
+    ASSERT_TRUE(viewer.run_until_complete(state, kTimeout));
+    const std::string done = render_status(state);
+    EXPECT_NE(done.find("done: 4 samples in"), std::string::npos) << done;
+    EXPECT_NE(done.find("Mrays/s"), std::string::npos) << done;
+    viewer.press_key(state, keys::space);
+    EXPECT_NE(render_status(state).find("paused"), std::string::npos) << render_status(state);
+    EXPECT_NE(window_title(state).find("paused"), std::string::npos) << window_title(state);
+    edit_scene(state, [](Scene& s) { s.settings.recurse_depth = 1; });
+    viewer.frame(state);
+    EXPECT_NE(render_status(state).find("edit waiting"), std::string::npos)
+        << render_status(state);
+    EXPECT_NE(window_title(state).find("edit waiting"), std::string::npos) << window_title(state);
+    viewer.press_key(state, keys::space);
+    const std::string running = render_status(state);
+    EXPECT_TRUE(running.find("preview") == 0 || running.find("full resolution") == 0 ||
+                running.find("sample ") == 0 || running.find("done") == 0)
+        << running;
+}
+
+// Every control of every panel, opened, at the smallest supported window and
+// at 2x: nothing runs past the panel's edge, every disabled control says why.
+void expect_nothing_clipped(HeadlessViewer& viewer, AppState& state, const char* what) {
+    viewer.frame(state);
+    for (const char* header : {"Objects", "Lights", "Diagnostics", "Help"}) {
+        ASSERT_TRUE(viewer.click(state, header)) << header;
+    }
+    for (const char* node : {"sphere 2", "point_light 1"}) viewer.click(state, node);
+    for (int i = 0; i < 3; ++i) viewer.frame(state);
+    int visible = 0;
+    for (const UiItem& item : state.ui_items) {
+        EXPECT_FALSE(item.clipped) << what << ": " << item.label << " is cut off at x "
+                                   << item.rect.x1;
+        if (!item.enabled) {
+            EXPECT_TRUE(item.has_tooltip) << what << ": " << item.label;
+        }
+        visible += item.rect.y1 < viewer.height();
+    }
+    EXPECT_GT(visible, 10);
+}
+
+TEST(ViewerLayout, NothingIsClippedAt1280x720) {
+    HeadlessViewer viewer(1280, 720);
+    ASSERT_TRUE(viewer.ok());
+    AppState state{test_config()};
+    open_scene(state, fs::path(JT_SOURCE_DIR) / "scenes" / "showcase.jts");
+    edit_scene(state, [](Scene& s) { s.settings.width = 64; });  // a warning to show
+    expect_nothing_clipped(viewer, state, "1280x720");
+    // The image keeps room beside the panel.
+    const UiItem* panel = find_item(state.ui_items, "panel");
+    ASSERT_NE(panel, nullptr);
+    EXPECT_LT(panel->rect.x1, 1280 * 0.5f);
+}
+
+TEST(ViewerLayout, NothingIsClippedAtTwiceTheScale) {
+    HeadlessViewer viewer(2560, 1440);  // 1280x720 at Xft.dpi 192
+    ASSERT_TRUE(viewer.ok());
+    viewer.set_content_scale(2.0f);
+    AppState state{test_config()};
+    open_scene(state, fs::path(JT_SOURCE_DIR) / "scenes" / "showcase.jts");
+    expect_nothing_clipped(viewer, state, "2x");
+    EXPECT_GE(ImGui::GetFontSize(), 28.0f) << "the font follows the scale";
+    const UiItem* panel = find_item(state.ui_items, "panel");
+    ASSERT_NE(panel, nullptr);
+    EXPECT_LT(panel->rect.x1, 2560 * 0.5f);
+}
+
+TEST(ViewerLayout, ThePanelEdgeDragsAndTheWidthIsKept) {
+    HeadlessViewer viewer(1280, 720);
+    ASSERT_TRUE(viewer.ok());
+    AppState state{test_config()};
+    open_scene(state, kScene);
+    viewer.frame(state);
+    viewer.frame(state);
+    const UiItem* panel = find_item(state.ui_items, "panel");
+    ASSERT_NE(panel, nullptr);
+    const float edge = panel->rect.x1;
+    const float before = state.sidebar_width;
+    viewer.drag(state, 0, edge - 1, 300, edge + 119, 300);
+    EXPECT_GT(state.sidebar_width, before) << "dragged wider";
+    viewer.frame(state);
+    const UiItem* wider = find_item(state.ui_items, "panel");
+    ASSERT_NE(wider, nullptr);
+    EXPECT_GT(wider->rect.x1, edge + 60);
+    EXPECT_FALSE(state.free_camera_active) << "resizing is not a camera drag";
+}
+
+}  // namespace
+}  // namespace jt::view
