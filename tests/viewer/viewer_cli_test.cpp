@@ -4,6 +4,7 @@
 #include "common/image_header.hpp"
 #include "common/run_program.hpp"
 #include "common/scratch_dir.hpp"
+#include "jtracer/version.hpp"
 #include "viewer_test_files.hpp"
 
 #include <gtest/gtest.h>
@@ -54,6 +55,29 @@ TEST_F(ViewerCli, BadArgumentsAreRefusedWithoutWritingAnything) {
     EXPECT_EQ(run_viewer({kScene.string(), "--screenshot", (dir / "a.jpg").string()}).code, 2);
     EXPECT_FALSE(fs::exists(dir / "a.png"));
     EXPECT_FALSE(fs::exists(dir / "a.jpg"));
+}
+
+TEST_F(ViewerCli, HelpShowsExamplesAndUsageErrorsExitTwoWithCli11sMessage) {
+    const ProgramRun help = run_viewer({"--help"});
+    EXPECT_EQ(help.code, 0);
+    EXPECT_NE(help.out.find("Examples:"), std::string::npos) << help.out;
+    const ProgramRun version = run_viewer({"--version"});
+    EXPECT_EQ(version.code, 0);
+    EXPECT_EQ(version.out.rfind(std::string("jtracer-view ") + version_string(), 0), 0u)
+        << version.out;
+    const ProgramRun unknown = run_viewer({"--no-such-option"});
+    EXPECT_EQ(unknown.code, 2);
+    EXPECT_NE(unknown.err.find("--no-such-option"), std::string::npos) << unknown.err;
+    EXPECT_EQ(run_viewer({kScene.string(), "extra.jts"}).code, 2);
+    EXPECT_EQ(run_viewer({kScene.string(), "--size"}).code, 2);
+    for (const char* bad : {"0", "-1", "abc", "1e400"}) {
+        const ProgramRun r = run_viewer({kScene.string(), "--timeout", bad});
+        EXPECT_EQ(r.code, 2) << bad;
+        const std::string log = r.out + r.err;
+        EXPECT_NE(log.find("--timeout"), std::string::npos) << log;
+        EXPECT_NE(log.find(std::string("'") + bad + "'"), std::string::npos) << log;
+        EXPECT_LT(log.size(), 300u) << "no 300-digit numbers: " << log;
+    }
 }
 
 TEST_F(ViewerCli, WithoutADisplayTheWindowModeExplainsInsteadOfCrashing) {

@@ -14,8 +14,8 @@
 #include "viewer_test_files.hpp"
 
 #include <gtest/gtest.h>
-#include <glm/geometric.hpp>
 #include <imgui.h>
+#include <glm/geometric.hpp>
 
 namespace jt::view {
 namespace {
@@ -289,8 +289,7 @@ TEST_F(ViewerSafety, StatusAndTitleNameThePassTheTimesAndPausing) {
     EXPECT_NE(window_title(state).find("paused"), std::string::npos) << window_title(state);
     edit_scene(state, [](Scene& s) { s.settings.recurse_depth = 1; });
     viewer.frame(state);
-    EXPECT_NE(render_status(state).find("edit waiting"), std::string::npos)
-        << render_status(state);
+    EXPECT_NE(render_status(state).find("edit waiting"), std::string::npos) << render_status(state);
     EXPECT_NE(window_title(state).find("edit waiting"), std::string::npos) << window_title(state);
     viewer.press_key(state, keys::space);
     const std::string running = render_status(state);
@@ -310,8 +309,8 @@ void expect_nothing_clipped(HeadlessViewer& viewer, AppState& state, const char*
     for (int i = 0; i < 3; ++i) viewer.frame(state);
     int visible = 0;
     for (const UiItem& item : state.ui_items) {
-        EXPECT_FALSE(item.clipped) << what << ": " << item.label << " is cut off at x "
-                                   << item.rect.x1;
+        EXPECT_FALSE(item.clipped)
+            << what << ": " << item.label << " is cut off at x " << item.rect.x1;
         if (!item.enabled) {
             EXPECT_TRUE(item.has_tooltip) << what << ": " << item.label;
         }

@@ -107,10 +107,12 @@ void finish_reload(AppState& state, LoadAttempt attempt) {
     state.doc.diagnostics_source = attempt.text;
     const bool unchanged = attempt.text == state.doc.text;
     state.pending_reload = std::move(attempt);
-    state.message = unchanged ? name + " is unchanged on disk; reloading it would drop your "
-                                       "unsaved edits: choose in the File panel"
-                              : name + " changed on disk while you have unsaved edits: choose "
-                                       "in the File panel";
+    state.message = unchanged ? name +
+                                    " is unchanged on disk; reloading it would drop your "
+                                    "unsaved edits: choose in the File panel"
+                              : name +
+                                    " changed on disk while you have unsaved edits: choose "
+                                    "in the File panel";
 }
 
 }  // namespace
@@ -356,10 +358,9 @@ bool copy_free_camera_to_scene(AppState& state, const std::string& name) {
         return false;
     }
     const Scene before = state.doc.scene;
-    const FreeCamera from =
-        state.free_camera_active
-            ? state.free_camera
-            : free_camera_from(state.doc.scene.cameras[selected_camera(state)]);
+    const FreeCamera from = state.free_camera_active
+                                ? state.free_camera
+                                : free_camera_from(state.doc.scene.cameras[selected_camera(state)]);
     state.doc.scene.cameras.push_back(camera_from(from, name));
     state.undo.record(before);
     ++state.scene_generation;
@@ -526,8 +527,7 @@ std::string render_title_status(const AppState& state) {
     if (!state.started) return state.paused ? "paused" : "";
     const RenderProgress p = state.renderer.progress();
     char text[96];
-    if (state.paused)
-        return state.edit_waiting ? "paused, edit waiting" : "paused";
+    if (state.paused) return state.edit_waiting ? "paused, edit waiting" : "paused";
     if (render_complete(state)) {
         std::snprintf(text, sizeof text, "done, %d samples, %.1f s", p.samples_done, p.seconds);
         return text;

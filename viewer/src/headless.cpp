@@ -6,6 +6,8 @@
 
 #include <imgui.h>
 
+#include <algorithm>
+#include <cstdio>
 #include <thread>
 
 namespace jt::view {
@@ -21,7 +23,24 @@ std::string HeadlessViewer::error() const {
     return layer_.error();
 }
 
+namespace {
+
+// Nanoseconds this thread has waited for a core while runnable
+// (/proc/thread-self/schedstat, second field); 0 when unknown.
+long long run_queue_wait_ns() {
+    std::FILE* f = std::fopen("/proc/thread-self/schedstat", "r");
+    if (!f) return 0;
+    long long running = 0, waiting = 0;
+    const int n = std::fscanf(f, "%lld %lld", &running, &waiting);
+    std::fclose(f);
+    return n == 2 ? waiting : 0;
+}
+
+}  // namespace
+
 void HeadlessViewer::frame(AppState& state) {
+    const auto start = std::chrono::steady_clock::now();
+    const long long waited_before = run_queue_wait_ns();
     // Window units = framebuffer pixels / scale, as GLFW reports on a HiDPI screen.
     ImGuiLayer::set_display(static_cast<int>(context_.width() / scale_),
                             static_cast<int>(context_.height() / scale_), scale_, 1.0f / 30.0f);
@@ -29,6 +48,11 @@ void HeadlessViewer::frame(AppState& state) {
     layer_.begin_frame();
     viewer_frame(state, FrameInfo{scale_});
     layer_.end_frame(context_.width(), context_.height());
+    const double seconds =
+        std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
+    slowest_frame_ = std::max(slowest_frame_, seconds);
+    const double queued = static_cast<double>(run_queue_wait_ns() - waited_before) * 1e-9;
+    slowest_unqueued_frame_ = std::max(slowest_unqueued_frame_, seconds - queued);
 }
 
 void HeadlessViewer::press_key(AppState& state, int key, bool ctrl, bool shift) {

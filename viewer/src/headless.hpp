@@ -47,6 +47,12 @@ class HeadlessViewer {
     // Simulates the monitor's content scale (Xft.dpi 192: 2), as
     // glfwGetWindowContentScale reports it.
     void set_content_scale(float scale) { content_scale_ = scale > 0 ? scale : 1.0f; }
+    // The longest frame() so far, in seconds.
+    double slowest_frame() const { return slowest_frame_; }
+    // The same less the time the thread waited for a core while runnable: on a
+    // machine busy with other work, this is what the viewer itself spent
+    // computing or blocked waiting (the monkey test's no-hang check).
+    double slowest_unqueued_frame() const { return slowest_unqueued_frame_; }
     // The last frame as drawn (rows bottom-up).
     Image8 screenshot() const;
     int width() const { return context_.width(); }
@@ -57,6 +63,8 @@ class HeadlessViewer {
     ImGuiLayer layer_;
     float scale_ = 1.0f;
     float content_scale_ = 1.0f;
+    double slowest_frame_ = 0.0;
+    double slowest_unqueued_frame_ = 0.0;
 };
 
 }  // namespace jt::view

@@ -6,8 +6,8 @@
 
 #include <algorithm>
 #include <cctype>
-#include <cstdint>
 #include <cerrno>
+#include <cstdint>
 #include <cstdio>
 #include <cstring>
 #include <span>
@@ -103,8 +103,7 @@ Expected<std::filesystem::path> save_image_numbered(const std::filesystem::path&
         if (number > 0) {
             char suffix[8];
             std::snprintf(suffix, sizeof suffix, "-%03d", number);
-            name = path.parent_path() /
-                   (path.stem().string() + suffix + path.extension().string());
+            name = path.parent_path() / (path.stem().string() + suffix + path.extension().string());
         }
         Expected<bool> written = save_new_image(name, image);
         if (!written) return written.error();

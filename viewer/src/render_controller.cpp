@@ -65,17 +65,26 @@ void RenderController::stop() {
     run->join();
 }
 
+void RenderController::pause() {
+    std::lock_guard lock(mutex_);
+    if (current_) current_->cancel();
+}
+
 // Runs `run` on a new thread: prepares `scene` first when given, else
-// continues the run's job.
-void RenderController::launch(const std::shared_ptr<Run>& run, const Scene* scene) {
+// continues the run's job, once the thread of `paused` (the run it continues,
+// which may still be winding down) has ended.
+void RenderController::launch(const std::shared_ptr<Run>& run, const Scene* scene,
+                              std::shared_ptr<Run> paused) {
     std::optional<Scene> to_prepare;
     if (scene) to_prepare = *scene;
-    run->stop = false;
-    run->done = false;
-    run->passes = 0;
-    run->thread = std::thread([this, run, to_prepare = std::move(to_prepare)] {
+    run->thread = std::thread([this, run, to_prepare = std::move(to_prepare),
+                               paused = std::move(paused)] {
         try {
             std::shared_ptr<RenderJob> job = run->current_job();
+            if (paused) {
+                paused->join();  // its last pass has returned: the job is ours alone
+                if (!run->stop) job->resume();
+            }
             if (to_prepare) {
                 std::shared_ptr<const PreparedScene> previous;
                 {
@@ -135,17 +144,28 @@ void RenderController::start(const Scene& scene, const RenderOptions& options) {
 }
 
 bool RenderController::resume() {
-    stop();
-    std::shared_ptr<Run> run;
+    std::shared_ptr<Run> paused;
     {
         std::lock_guard lock(mutex_);
-        run = current_;
+        paused = current_;
     }
-    if (!run) return false;
-    std::shared_ptr<RenderJob> job = run->current_job();
+    if (!paused) return false;
+    std::shared_ptr<RenderJob> job = paused->current_job();
     if (!job) return false;
-    job->resume();
-    launch(run, nullptr);
+    // A new run continues the job: the paused one's thread may not have
+    // returned yet, and the UI thread does not wait for it.
+    auto run = std::make_shared<Run>();
+    run->options = paused->options;
+    run->job = job;
+    {
+        std::lock_guard lock(paused->mutex);
+        run->timeline = paused->timeline;
+    }
+    {
+        std::lock_guard lock(mutex_);
+        current_ = run;
+    }
+    launch(run, nullptr, std::move(paused));
     return true;
 }
 

@@ -40,8 +40,9 @@ class RenderController {
     void start(const Scene& scene, const RenderOptions& options);
     // Stops the current job and waits for its thread; the pixels fetched so far stay.
     void stop();
-    // Stops the current job so that resume() can continue it.
-    void pause() { stop(); }
+    // Stops the current job so that resume() can continue it. Does not wait
+    // for its thread (see resume).
+    void pause();
     // Continues the stopped job from where it stopped: finished passes and
     // accumulated samples are kept. False when there is no job to continue
     // (none was started, or its scene could not be prepared).
@@ -69,7 +70,8 @@ class RenderController {
   private:
     struct Run;  // one worker thread and the job it renders
 
-    void launch(const std::shared_ptr<Run>& run, const Scene* scene);
+    void launch(const std::shared_ptr<Run>& run, const Scene* scene,
+                std::shared_ptr<Run> paused = nullptr);
     std::shared_ptr<RenderJob> current_job() const;
     void join_retired(bool all);
 

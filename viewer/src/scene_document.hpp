@@ -22,7 +22,7 @@ struct SceneDocument {
     std::string text;     // the text `original` and `source` were parsed from
     Scene original;       // the scene as in `text`
     SceneSource source;
-    Scene scene;                             // as edited in the viewer
+    Scene scene;                                // as edited in the viewer
     std::vector<Diagnostic> parse_diagnostics;  // the parser's warnings about `text`
     // Of the latest load attempt, or of the edited scene (check_edits).
     std::vector<Diagnostic> diagnostics;

@@ -51,8 +51,9 @@ void camera_panel(AppState& state) {
         if (free) use_free_camera(state);
     }
     note_item("View", true);
-    tooltip("Which camera the view shows (C: next camera). Dragging on the image switches to the "
-            "free camera.");
+    tooltip(
+        "Which camera the view shows (C: next camera). Dragging on the image switches to the "
+        "free camera.");
     ImGui::PushStyleColor(ImGuiCol_Text, ImGui::GetStyleColorVec4(ImGuiCol_TextDisabled));
     ImGui::TextWrapped("Drag on the image: left orbits, right/middle pans, wheel dollies.");
     ImGui::PopStyleColor();
@@ -64,8 +65,9 @@ void camera_panel(AppState& state) {
     if (!state.free_camera_active && selected >= 0) {
         same_line_if_fits("Make active");
         const std::string why = why_not_make_active(scene, selected);
-        if (button("Make active", "Make this camera the scene's active_camera (what jtracer-cli "
-                                  "renders); Save scene to keep it",
+        if (button("Make active",
+                   "Make this camera the scene's active_camera (what jtracer-cli "
+                   "renders); Save scene to keep it",
                    why)) {
             const std::string name = scene.cameras[selected].name;
             edit_scene(state, [&](Scene& s) { s.settings.active_camera = name; });

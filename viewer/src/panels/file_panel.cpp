@@ -34,8 +34,9 @@ void reload_choice(AppState& state) {
             resolve_reload(state, ReloadChoice::reapply_edits);
     }
     same_line_if_fits("Keep mine");
-    if (button("Keep mine", "Ignore the file's text for now; Save scene will ask before "
-                            "replacing it"))
+    if (button("Keep mine",
+               "Ignore the file's text for now; Save scene will ask before "
+               "replacing it"))
         resolve_reload(state, ReloadChoice::keep_edits);
     if (!state.reapply_problem.empty())
         ImGui::TextWrapped("(edits cannot be re-applied: %s)", state.reapply_problem.c_str());
@@ -47,8 +48,9 @@ void save_conflict_choice(AppState& state) {
     ImGui::PushStyleColor(ImGuiCol_Text, warning_colour);
     ImGui::TextWrapped("Not saved: %s.", state.save_conflict.c_str());
     ImGui::PopStyleColor();
-    if (button("Reload (choose what to keep)", "Read the file again, then choose between its "
-                                               "text and your edits"))
+    if (button("Reload (choose what to keep)",
+               "Read the file again, then choose between its "
+               "text and your edits"))
         reload_scene(state);
     same_line_if_fits("Save anyway");
     if (button("Save anyway", "Replace what is on disk with your edited scene"))
@@ -85,8 +87,9 @@ void file_panel(AppState& state) {
     const bool enter = ImGui::InputTextWithHint("##open", "scene.jts", &state.open_path_input,
                                                 ImGuiInputTextFlags_EnterReturnsTrue);
     note_item("open path", true);
-    tooltip("The path of a .jts file to open (Enter opens it). You can also drop a file on the "
-            "window.");
+    tooltip(
+        "The path of a .jts file to open (Enter opens it). You can also drop a file on the "
+        "window.");
     ImGui::SameLine();
     if ((button("Open", "Open the file named on the left (asks first if you have unsaved edits)",
                 state.open_path_input.empty() ? "Type the path of a .jts file first" : "") ||
@@ -130,16 +133,17 @@ void file_panel(AppState& state) {
     tooltip("Where Save scene as writes the edited scene");
     ImGui::SameLine();
     if (button("Save scene as", "Write the edited scene to this file and keep editing that one",
-               !state.doc.loaded                ? "No scene is open"
+               !state.doc.loaded               ? "No scene is open"
                : state.save_scene_path.empty() ? "Type the new file's path first"
-                                                : ""))
+                                               : ""))
         save_scene_as(state, state.save_scene_path, /*replace=*/false);
     save_as_choice(state);
     ImGui::SetNextItemWidth(-font * 8.5f);
     ImGui::InputText("##image", &state.save_image_path);
     note_item("save image path", true);
-    tooltip("Where S saves the image, PNG or BMP by the name's ending. An existing file is never "
-            "replaced: name-001.png, name-002.png, ... are used instead.");
+    tooltip(
+        "Where S saves the image, PNG or BMP by the name's ending. An existing file is never "
+        "replaced: name-001.png, name-002.png, ... are used instead.");
     ImGui::SameLine();
     if (button("Save image (S)", "Save the image as shown now under the name on the left",
                state.display.width <= 0        ? "Nothing has rendered yet"

@@ -46,8 +46,9 @@ std::string render_status(const AppState& state) {
         return text;
     }
     if (render_complete(state))
-        return "done: " + std::to_string(p.samples_done) + (p.samples_done == 1 ? " sample" : " samples") +
-               " in " + seconds_text(p.seconds) + " | " + speed;
+        return "done: " + std::to_string(p.samples_done) +
+               (p.samples_done == 1 ? " sample" : " samples") + " in " + seconds_text(p.seconds) +
+               " | " + speed;
     std::string text = stage_name(p, samples) + " | " + seconds_text(p.seconds) + " elapsed";
     // The ETA once enough is done to extrapolate from.
     if (p.fraction > 0.02 && p.fraction < 1.0)

@@ -1,0 +1,486 @@
+// The monkey: random but valid UI events through the viewer's frame code in
+// an OSMesa context, as a careless user at speed would make them: mouse moves,
+// drags and wheel on the image, clicks and drags on every control the last
+// frame drew, keys (Esc, Ctrl+Z, Ctrl+Shift+Z, Space, C, R, S, Ctrl+S,
+// Ctrl+Q, ...), typing, camera changes, copy-to-scene, and the scene file
+// rewritten, truncated, deleted, replaced by garbage or by a scene with fewer
+// cameras while the viewer has it open. After every event it checks:
+//
+//   - no frame took a second or more (no hang);
+//   - the scene file on disk is whole: a text the monkey wrote, or a save of
+//     the viewer that parses to exactly the viewer's scene; no temporary
+//     file is left beside it; every image saved is a whole PNG;
+//   - with no undo history (just loaded), the scene is the file's scene;
+// and every few events, undoing everything gives back the scene the history
+// started from (the loaded file's, when nothing was saved since) and redoing
+// everything the scene before. Crashes and sanitizer reports end the run.
+//
+//   viewer_monkey --seed 7 --events 500     one run (replay a failure by its seed)
+//   viewer_monkey --soak 2000               edit/reload cycles; resident memory bounded
+
+#include "app_actions.hpp"
+#include "headless.hpp"
+#include "jtracer/parser.hpp"
+#include "jtracer/png.hpp"
+#include "keys.hpp"
+#include "panels/panels.hpp"
+
+#include <imgui.h>
+
+#include <chrono>
+#include <cstdio>
+#include <cstdlib>
+#include <filesystem>
+#include <fstream>
+#include <random>
+#include <sstream>
+#include <string>
+#include <vector>
+
+#include <unistd.h>
+
+namespace {
+
+namespace fs = std::filesystem;
+using namespace jt;
+using namespace jt::view;
+
+constexpr double max_frame_seconds = 1.0;
+
+std::string read(const fs::path& path) {
+    std::ifstream in(path, std::ios::binary);
+    std::stringstream buffer;
+    buffer << in.rdbuf();
+    return buffer.str();
+}
+
+void write(const fs::path& path, const std::string& text) {
+    std::ofstream(path, std::ios::binary) << text;
+}
+
+std::string replaced(std::string text, const std::string& from, const std::string& to) {
+    const std::size_t at = text.find(from);
+    if (at != std::string::npos) text.replace(at, from.size(), to);
+    return text;
+}
+
+long resident_kib() {
+    std::ifstream statm("/proc/self/statm");
+    long pages = 0, resident = 0;
+    statm >> pages >> resident;
+    return resident * (::sysconf(_SC_PAGESIZE) / 1024);
+}
+
+class Monkey {
+  public:
+    Monkey(std::uint32_t seed, const fs::path& dir)
+        : random_(seed), seed_(seed), dir_(dir), file_(dir / "scene.jts") {
+        original_ = read(fs::path(JT_VIEWER_TEST_DIR) / "scenes" / "two_cameras.jts");
+        texts_ = {
+            original_,
+            replaced(original_, "pigment: <0.9, 0.2, 0.1>;", "pigment: <0.2, 0.9, 0.1>;"),
+            replaced(original_, "width: 64;", "width: 48;"),
+            // One camera fewer: the selected one may be gone.
+            replaced(original_,
+                     "    perspective_camera {\n        name: \"top\";\n        position: <4, 6, "
+                     "3>;\n        look_at: <0, 0, 0>;\n        aspect: 1.3333333333333333;\n  "
+                     "      fov: 50;\n    }\n",
+                     ""),
+        };
+        write(file_, original_);
+        written_ = original_;
+        state_.config.watch_interval = std::chrono::milliseconds(0);
+        state_.config.render_threads = 1;  // the frames are what is tested
+    }
+
+    bool ok() const { return failures_ == 0; }
+    bool verbose_ = false;
+
+    bool start() {
+        if (!viewer_.ok()) {
+            std::fprintf(stderr, "monkey: no OSMesa context: %s\n", viewer_.error().c_str());
+            return false;
+        }
+        open_scene(state_, file_);
+        viewer_.frame(state_);
+        return true;
+    }
+
+    void run(int events) {
+        for (int i = 0; i < events && failures_ < 5; ++i) {
+            event_ = i;
+            keep_paths_in_scratch();
+            const auto started = std::chrono::steady_clock::now();
+            random_event();
+            if (verbose_)
+                std::fprintf(stderr, "%4d %-40s %5.0f ms  %s | %s\n", i, last_event_.c_str(),
+                             std::chrono::duration<double, std::milli>(
+                                 std::chrono::steady_clock::now() - started)
+                                 .count(),
+                             state_.message.c_str(), render_status(state_).c_str());
+            check_after_event();
+            if (i % 25 == 24) check_undo_round_trip();
+        }
+        std::fprintf(stderr,
+                     "monkey: seed %u: %d events, %d frames, slowest %.0f ms (%.0f ms less waits "
+                     "for a core), %d saves checked, %d undo round trips, %zu cameras, %d "
+                     "failures\n",
+                     seed_, events, frames_, viewer_.slowest_frame() * 1000.0,
+                     viewer_.slowest_unqueued_frame() * 1000.0, saves_checked_, round_trips_,
+                     state_.doc.scene.cameras.size(), failures_);
+    }
+
+    // Edit, then the file changes on disk and is reloaded (the edit dropped
+    // at the prompt), over and over: memory must not grow with the cycles.
+    void soak(int cycles) {
+        long after_warm_up = 0;
+        const int warm_up = std::min(200, cycles / 4);
+        for (int i = 0; i < cycles; ++i) {
+            edit_scene(state_, [i](Scene& s) {
+                s.primitives[1].material.pigment = Colour(0.1 + 0.8 * ((i * 37) % 100) / 100.0);
+            });
+            viewer_.frame(state_);
+            write_file(texts_[static_cast<std::size_t>(i) % 2]);
+            wait_for_load();
+            if (state_.pending_reload) resolve_reload(state_, ReloadChoice::drop_edits);
+            viewer_.frame(state_);
+            if (has_unsaved_edits(state_.doc)) fail("edits left after drop_edits");
+            if (i + 1 == warm_up) after_warm_up = resident_kib();
+        }
+        const long end = resident_kib();
+        const long growth = end - after_warm_up;
+        std::fprintf(stderr,
+                     "monkey: soak: %d edit/reload cycles, resident %ld KiB after %d, %ld KiB at "
+                     "the end (%+ld KiB), slowest frame %.0f ms\n",
+                     cycles, after_warm_up, warm_up, end, growth, viewer_.slowest_frame() * 1000.0);
+#if defined(__SANITIZE_ADDRESS__)
+        // AddressSanitizer keeps freed memory in quarantine: resident size says
+        // nothing here. Leaks are its own report at exit.
+#else
+        constexpr long bound_kib = 16 * 1024;
+        if (growth > bound_kib) fail("resident memory grew by " + std::to_string(growth) + " KiB");
+#endif
+        if (viewer_.slowest_unqueued_frame() >= max_frame_seconds)
+            fail("a frame took a second or more");
+    }
+
+  private:
+    int pick(int n) {
+        return std::uniform_int_distribution<int>(0, n - 1)(random_);
+    }
+    float uniform(float a, float b) {
+        return std::uniform_real_distribution<float>(a, b)(random_);
+    }
+
+    void fail(const std::string& what) {
+        ++failures_;
+        std::fprintf(stderr, "monkey: FAILED (seed %u, event %d: %s): %s\n", seed_, event_,
+                     last_event_.c_str(), what.c_str());
+    }
+
+    void frame() {
+        viewer_.frame(state_);
+        ++frames_;
+    }
+
+    void write_file(const std::string& text) {
+        if (pick(2) == 0) {
+            write(file_, text);
+        } else {  // as editors save: a new file renamed over the old
+            write(dir_ / "editor.tmp", text);
+            fs::rename(dir_ / "editor.tmp", file_);
+        }
+        written_ = text;
+        file_deleted_ = false;
+    }
+
+    void wait_for_load() {
+        const auto deadline = std::chrono::steady_clock::now() + std::chrono::seconds(30);
+        do {
+            frame();
+        } while (state_.loader.busy() && std::chrono::steady_clock::now() < deadline);
+        frame();
+    }
+
+    // Whatever the monkey typed, the viewer writes only inside the scratch folder.
+    void keep_paths_in_scratch() {
+        state_.save_image_path = (dir_ / "shot.png").string();
+        state_.save_scene_path = (dir_ / (pick(2) ? "copy.jts" : "scene.jts")).string();
+        state_.open_path_input = (pick(4) ? file_ : dir_ / "copy.jts").string();
+    }
+
+    void random_event() {
+        ImGuiIO& io = ImGui::GetIO();
+        const float w = static_cast<float>(viewer_.width()),
+                    h = static_cast<float>(viewer_.height());
+        const int kind = pick(100);
+        if (kind < 12) {
+            last_event_ = "mouse move";
+            io.MousePos = ImVec2(uniform(0, w), uniform(0, h));
+            frame();
+        } else if (kind < 24) {
+            const int button = pick(3);
+            last_event_ = "drag with button " + std::to_string(button);
+            viewer_.drag(state_, button, uniform(0, w), uniform(0, h), uniform(0, w),
+                         uniform(0, h));
+            frames_ += 6;
+        } else if (kind < 28) {
+            last_event_ = "wheel";
+            viewer_.scroll(state_, uniform(0, w), uniform(0, h), uniform(-3, 3));
+            frames_ += 2;
+        } else if (kind < 48) {
+            click_some_item();
+        } else if (kind < 56) {
+            drag_some_item();
+        } else if (kind < 78) {
+            press_some_key();
+        } else if (kind < 82) {
+            last_event_ = "typing";
+            const char* text = pick(2) ? "abc" : "x 1";
+            for (const char* c = text; *c; ++c) io.AddInputCharacter(static_cast<unsigned>(*c));
+            frame();
+        } else if (kind < 86) {
+            last_event_ = "camera";
+            if (pick(2)) {
+                select_camera(state_, pick(4) - 1);
+            } else {
+                use_free_camera(state_);
+                orbit(state_.free_camera, uniform(-50, 50), uniform(-50, 50), 240);
+            }
+            frame();
+        } else if (kind < 88) {
+            last_event_ = "copy to scene";
+            copy_free_camera_to_scene(state_, "monkey" + std::to_string(pick(3)));
+            frame();
+        } else {
+            change_the_file();
+        }
+    }
+
+    void click_some_item() {
+        if (state_.ui_items.empty()) {
+            frame();
+            return;
+        }
+        const UiItem item =
+            state_
+                .ui_items[static_cast<std::size_t>(pick(static_cast<int>(state_.ui_items.size())))];
+        last_event_ = "click \"" + item.label + "\"";
+        ImGuiIO& io = ImGui::GetIO();
+        io.MousePos =
+            ImVec2(uniform(item.rect.x0, item.rect.x1), uniform(item.rect.y0, item.rect.y1));
+        frame();
+        io.MouseDown[0] = true;
+        frame();
+        io.MouseDown[0] = false;
+        frame();
+    }
+
+    // A drag across a control: a number or colour edit, the panel's edge.
+    void drag_some_item() {
+        if (state_.ui_items.empty()) {
+            frame();
+            return;
+        }
+        const UiItem item =
+            state_
+                .ui_items[static_cast<std::size_t>(pick(static_cast<int>(state_.ui_items.size())))];
+        last_event_ = "drag \"" + item.label + "\"";
+        const float x = uniform(item.rect.x0, item.rect.x1);
+        const float y = uniform(item.rect.y0, item.rect.y1);
+        viewer_.drag(state_, 0, x, y, x + uniform(-80, 80), y + uniform(-4, 4));
+        frames_ += 6;
+    }
+
+    void press_some_key() {
+        struct Key {
+            int code;
+            bool ctrl, shift;
+            const char* name;
+        };
+        static const Key keys_pressed[] = {
+            {keys::escape, false, false, "Esc"},
+            {keys::letter('Z'), true, false, "Ctrl+Z"},
+            {keys::letter('Z'), true, true, "Ctrl+Shift+Z"},
+            {keys::letter('S'), true, false, "Ctrl+S"},
+            {keys::letter('Q'), true, false, "Ctrl+Q"},
+            {keys::letter('S'), false, false, "S"},
+            {keys::letter('R'), false, false, "R"},
+            {keys::letter('C'), false, false, "C"},
+            {keys::letter('F'), false, false, "F"},
+            {keys::letter('H'), false, false, "H"},
+            {keys::space, false, false, "Space"},
+            {keys::enter, false, false, "Enter"},
+            {keys::tab, false, false, "Tab"},
+        };
+        const Key& key = keys_pressed[pick(static_cast<int>(std::size(keys_pressed)))];
+        last_event_ = std::string("key ") + key.name;
+        viewer_.press_key(state_, key.code, key.ctrl, key.shift);
+        frames_ += 2;
+    }
+
+    void change_the_file() {
+        const int kind = pick(6);
+        if (kind == 0) {
+            last_event_ = "file deleted";
+            fs::remove(file_);
+            written_.clear();
+            file_deleted_ = true;
+        } else if (kind == 1) {
+            last_event_ = "file truncated";
+            write_file(written_.empty() ? original_.substr(0, 100)
+                                        : written_.substr(0, written_.size() / 2));
+        } else if (kind == 2) {
+            last_event_ = "file garbage";
+            std::string garbage(200, '\0');
+            for (char& c : garbage) c = static_cast<char>(pick(256));
+            write_file(garbage);
+        } else {
+            const std::size_t which =
+                static_cast<std::size_t>(pick(static_cast<int>(texts_.size())));
+            last_event_ = "file rewritten (text " + std::to_string(which) + ")";
+            write_file(texts_[which]);
+        }
+        wait_for_load();
+    }
+
+    void check_after_event() {
+        if (state_.quit) {  // the user confirmed quitting: start again, as a user would
+            state_.quit = false;
+            last_quit_ = event_;
+        }
+        if (viewer_.slowest_unqueued_frame() > slowest_reported_) {
+            slowest_reported_ = viewer_.slowest_unqueued_frame();
+            if (slowest_reported_ >= max_frame_seconds)
+                fail("a frame took " + std::to_string(slowest_reported_) + " s");
+        }
+        check_files();
+        check_saves();
+        const bool mid_edit = ImGui::IsAnyItemActive() || state_.edit_base.has_value();
+        if (!state_.undo.can_undo() && !state_.undo.can_redo() && !mid_edit && state_.doc.loaded &&
+            has_unsaved_edits(state_.doc) && !saved_since_history_start_)
+            fail("no undo history, yet the scene differs from the file's");
+        if (state_.doc.loaded) {
+            const int selected = selected_camera(state_);
+            if (state_.camera_index < 0 ||
+                state_.camera_index >= static_cast<int>(state_.doc.scene.cameras.size()))
+                fail("camera_index " + std::to_string(state_.camera_index) + " of " +
+                     std::to_string(state_.doc.scene.cameras.size()) + " cameras");
+            (void)selected;
+        }
+        if (!state_.undo.can_undo() && !state_.undo.can_redo()) saved_since_history_start_ = false;
+    }
+
+    // Every file in the folder is whole: the scene is a text the monkey wrote
+    // or one the viewer saved; images are whole PNGs; no temporary is left.
+    void check_files() {
+        for (const auto& entry : fs::directory_iterator(dir_)) {
+            const std::string name = entry.path().filename().string();
+            if (name.find(".tmp-") != std::string::npos) fail("temporary file left: " + name);
+            if (entry.path().extension() == ".png") {
+                const std::string bytes = read(entry.path());
+                Image8 image;
+                const std::string error = decode_png(
+                    {reinterpret_cast<const std::uint8_t*>(bytes.data()), bytes.size()}, image);
+                if (!error.empty()) fail(name + " is not a whole PNG: " + error);
+            }
+        }
+        std::error_code ec;
+        if (!fs::exists(file_, ec)) return;
+        const std::string text = read(file_);
+        if (text == written_) return;
+        ParseResult parsed = parse_scene(text);
+        if (!parsed.ok()) fail("scene.jts is neither the monkey's text nor a whole save");
+    }
+
+    // A save just reported: the file parses to exactly the viewer's scene.
+    void check_saves() {
+        const std::string saved = "Saved " + state_.doc.path.string();
+        const bool new_message = state_.message != last_message_;
+        last_message_ = state_.message;
+        if (state_.message != saved || !new_message) return;
+        ParseResult parsed = parse_scene(read(state_.doc.path));
+        if (!parsed.ok() || parsed.scene != state_.doc.scene)
+            fail("the saved file does not parse to the viewer's scene");
+        if (state_.doc.path == file_) written_ = read(file_);
+        saved_since_history_start_ = true;
+        ++saves_checked_;
+    }
+
+    void check_undo_round_trip() {
+        if (ImGui::IsAnyItemActive() || state_.edit_base || !state_.undo.can_undo()) return;
+        const Scene now = state_.doc.scene;
+        int steps = 0;
+        while (state_.undo.can_undo()) {
+            undo(state_);
+            ++steps;
+        }
+        frame();
+        if (!saved_since_history_start_ && state_.doc.scene != state_.doc.original)
+            fail("undo back to the start does not give the file's scene");
+        for (int i = 0; i < steps; ++i) redo(state_);
+        frame();
+        if (state_.doc.scene != now) fail("redo back does not give the scene before");
+        state_.message.clear();
+        ++round_trips_;
+    }
+
+    std::mt19937 random_;
+    std::uint32_t seed_;
+    fs::path dir_, file_;
+    HeadlessViewer viewer_{640, 400};
+    AppState state_;  // after the viewer: its texture goes first
+    std::string original_, written_;
+    std::vector<std::string> texts_;
+    bool file_deleted_ = false;
+    bool saved_since_history_start_ = false;
+    double slowest_reported_ = 0.0;
+    std::string last_event_ = "start", last_message_;
+    int event_ = 0, last_quit_ = -1, frames_ = 0, failures_ = 0, saves_checked_ = 0,
+        round_trips_ = 0;
+};
+
+}  // namespace
+
+int main(int argc, char** argv) {
+    // Mesa's software rasteriser draws on this thread: a frame then never
+    // waits for rasteriser threads that a busy machine leaves without a core.
+    ::setenv("LP_NUM_THREADS", "0", 0);
+    std::uint32_t seed = 1;
+    int events = 500, soak = 0;
+    bool verbose = false;
+    for (int i = 1; i + 1 < argc; i += 2) {
+        const std::string flag = argv[i];
+        const long value = std::strtol(argv[i + 1], nullptr, 10);
+        if (flag == "--seed")
+            seed = static_cast<std::uint32_t>(value);
+        else if (flag == "--events")
+            events = static_cast<int>(value);
+        else if (flag == "--verbose")
+            verbose = value != 0;
+        else if (flag == "--soak")
+            soak = static_cast<int>(value);
+        else {
+            std::fprintf(stderr, "usage: viewer_monkey [--seed N] [--events N] [--soak N]\n");
+            return 2;
+        }
+    }
+    const fs::path dir = fs::temp_directory_path() / ("jtracer-monkey-" + std::to_string(seed) +
+                                                      "-" + std::to_string(::getpid()));
+    fs::remove_all(dir);
+    fs::create_directories(dir);
+    bool ok = false;
+    {
+        Monkey monkey(seed, dir);
+        monkey.verbose_ = verbose;
+        if (monkey.start()) {
+            if (soak > 0)
+                monkey.soak(soak);
+            else
+                monkey.run(events);
+            ok = monkey.ok();
+        }
+    }
+    fs::remove_all(dir);
+    return ok ? 0 : 1;
+}
