@@ -24,6 +24,7 @@ LoadAttempt attempt_load(const std::filesystem::path& path) {
     }
     LoadedScene& loaded = *read;
     attempt.diagnostics = check_scene(loaded);
+    attempt.parse_diagnostics = loaded.parsed.diagnostics;
     attempt.times.validated = LoadTimes::Clock::now();
     attempt.ok = !has_errors(attempt.diagnostics);
     attempt.text = std::move(loaded.text);
@@ -42,11 +43,7 @@ void accept_load(SceneDocument& doc, const std::filesystem::path& path, LoadAtte
         return;
     }
     doc.diagnostics_source = attempt.text;
-    // check_scene lists the parser's diagnostics first, then validation's.
-    const std::size_t validation = validate_scene(attempt.scene, attempt.source).size();
-    doc.parse_diagnostics.assign(
-        doc.diagnostics.begin(),
-        doc.diagnostics.end() - std::min(validation, doc.diagnostics.size()));
+    doc.parse_diagnostics = std::move(attempt.parse_diagnostics);
     doc.path = path;
     doc.loaded = true;
     doc.text = std::move(attempt.text);

@@ -42,7 +42,8 @@ struct LoadAttempt {
     std::string text;
     Scene scene;
     SceneSource source;
-    std::vector<Diagnostic> diagnostics;
+    std::vector<Diagnostic> diagnostics;        // parsing's and validation's (check_scene)
+    std::vector<Diagnostic> parse_diagnostics;  // parsing's alone
     LoadTimes times;
 };
 
