@@ -137,9 +137,9 @@ TEST_F(ViewerSafety, DiagnosticsFollowEveryEditAsCheckWould) {
     state.save_scene_path = (file.parent_path() / "checked.jts").string();
     viewer.frame(state);
     ASSERT_TRUE(viewer.click(state, "Save scene as"));
-    LoadedScene loaded = jt::load_scene_file(file.parent_path() / "checked.jts");
-    ASSERT_TRUE(loaded.read_ok());
-    const std::vector<Diagnostic> check = check_scene(loaded);
+    Expected<LoadedScene> loaded = jt::load_scene_file(file.parent_path() / "checked.jts");
+    ASSERT_TRUE(loaded);
+    const std::vector<Diagnostic> check = check_scene(*loaded);
     ASSERT_EQ(check.size(), state.doc.diagnostics.size());
     for (std::size_t i = 0; i < check.size(); ++i) {
         EXPECT_EQ(check[i].message, state.doc.diagnostics[i].message);

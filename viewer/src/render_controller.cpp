@@ -77,52 +77,52 @@ void RenderController::launch(const std::shared_ptr<Run>& run, const Scene* scen
                               std::shared_ptr<Run> paused) {
     std::optional<Scene> to_prepare;
     if (scene) to_prepare = *scene;
-    run->thread = std::thread([this, run, to_prepare = std::move(to_prepare),
-                               paused = std::move(paused)] {
-        try {
-            std::shared_ptr<RenderJob> job = run->current_job();
-            if (paused) {
-                paused->join();  // its last pass has returned: the job is ours alone
-                if (!run->stop) job->resume();
-            }
-            if (to_prepare) {
-                std::shared_ptr<const PreparedScene> previous;
-                {
-                    std::lock_guard lock(mutex_);
-                    previous = prepared_;
+    run->thread =
+        std::thread([this, run, to_prepare = std::move(to_prepare), paused = std::move(paused)] {
+            try {
+                std::shared_ptr<RenderJob> job = run->current_job();
+                if (paused) {
+                    paused->join();  // its last pass has returned: the job is ours alone
+                    if (!run->stop) job->resume();
                 }
-                Expected<std::shared_ptr<const PreparedScene>> prepared =
-                    prepare_scene(*to_prepare, previous);
-                if (!prepared) {
-                    run->fail("the render failed: " + prepared.error().message);
-                    run->done = true;
-                    if (wakeup_) wakeup_->notify();
-                    return;
-                }
-                job = std::make_shared<RenderJob>(*prepared, run->options);
-                {
-                    std::lock_guard lock(mutex_);
-                    if (current_ == run) prepared_ = *prepared;  // a newer run's stays
-                }
-                std::lock_guard lock(run->mutex);
-                run->job = job;
-                run->timeline.prepared = RunTimeline::Clock::now();
-            }
-            while (!run->stop && job->run_pass()) {
-                if (++run->passes == 1 && to_prepare) {
+                if (to_prepare) {
+                    std::shared_ptr<const PreparedScene> previous;
+                    {
+                        std::lock_guard lock(mutex_);
+                        previous = prepared_;
+                    }
+                    Expected<std::shared_ptr<const PreparedScene>> prepared =
+                        prepare_scene(*to_prepare, previous);
+                    if (!prepared) {
+                        run->fail("the render failed: " + prepared.error().message);
+                        run->done = true;
+                        if (wakeup_) wakeup_->notify();
+                        return;
+                    }
+                    job = std::make_shared<RenderJob>(*prepared, run->options);
+                    {
+                        std::lock_guard lock(mutex_);
+                        if (current_ == run) prepared_ = *prepared;  // a newer run's stays
+                    }
                     std::lock_guard lock(run->mutex);
-                    run->timeline.first_pass = RunTimeline::Clock::now();
+                    run->job = job;
+                    run->timeline.prepared = RunTimeline::Clock::now();
                 }
-                if (wakeup_) wakeup_->notify();
+                while (!run->stop && job->run_pass()) {
+                    if (++run->passes == 1 && to_prepare) {
+                        std::lock_guard lock(run->mutex);
+                        run->timeline.first_pass = RunTimeline::Clock::now();
+                    }
+                    if (wakeup_) wakeup_->notify();
+                }
+            } catch (const std::exception& e) {
+                run->fail(std::string("the render failed: ") + e.what());
+            } catch (...) {
+                run->fail("the render failed");
             }
-        } catch (const std::exception& e) {
-            run->fail(std::string("the render failed: ") + e.what());
-        } catch (...) {
-            run->fail("the render failed");
-        }
-        run->done = true;
-        if (wakeup_) wakeup_->notify();
-    });
+            run->done = true;
+            if (wakeup_) wakeup_->notify();
+        });
 }
 
 void RenderController::start(const Scene& scene, const RenderOptions& options) {

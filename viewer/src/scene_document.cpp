@@ -105,8 +105,7 @@ Expected<void> save_scene_copy(SceneDocument& doc, const std::filesystem::path& 
         return Error{
             "internal error: the edited text would not read back as the edited scene; "
             "the file was left as it was"};
-    if (Expected<void> written = write_text_atomically(path, edit.text); !written)
-        return written;
+    if (Expected<void> written = write_text_atomically(path, edit.text); !written) return written;
     doc.path = path;
     doc.diagnostics_path = path;
     doc.text = std::move(edit.text);
