@@ -1,5 +1,5 @@
 // The viewer's parts that need no GL: file watching, the free camera, undo,
-// image placement, image files, recent files.
+// image placement, image files, recent files, remembered settings.
 
 #include "app_actions.hpp"
 #include "common/files.hpp"
@@ -11,6 +11,7 @@
 #include "presenter.hpp"
 #include "recent_files.hpp"
 #include "undo_stack.hpp"
+#include "viewer_settings.hpp"
 
 #include <gtest/gtest.h>
 #include <glm/geometric.hpp>
@@ -233,6 +234,57 @@ TEST(RecentFiles, NewestFirstWithoutDuplicatesAndPersisted) {
     again.load(store);
     ASSERT_EQ(again.paths().size(), 2u);
     EXPECT_EQ(again.paths()[1], "/x/b.jts");
+}
+
+TEST(ViewerSettings, WrittenWholeAndReadBack) {
+    const fs::path store = temp_dir("settings") / "sub" / "viewer-settings.txt";
+    EXPECT_EQ(read_viewer_settings(store), ViewerSettings{}) << "missing: the defaults";
+    ASSERT_TRUE(write_viewer_settings(store, ViewerSettings{41.25f}));
+    EXPECT_EQ(read_viewer_settings(store).panel_width, 41.25f);
+    ASSERT_TRUE(write_viewer_settings(store, ViewerSettings{12.5f}));
+    EXPECT_EQ(read_viewer_settings(store).panel_width, 12.5f);
+    for (const auto& entry : fs::directory_iterator(store.parent_path()))
+        EXPECT_EQ(entry.path().filename(), "viewer-settings.txt") << "no temporary left";
+}
+
+TEST(ViewerSettings, ABrokenFileGivesTheDefaultsForWhatItCannotSay) {
+    const fs::path store = temp_dir("settings-broken") / "viewer-settings.txt";
+    const auto width_from = [&](const std::string& text) {
+        std::ofstream(store, std::ios::binary) << text;
+        return read_viewer_settings(store).panel_width;
+    };
+    for (const char* broken :
+         {"", "panel_width", "panel_width =", "panel_width = abc", "panel_width = 31x",
+          "panel_width = nan", "panel_width = inf", "panel_width = -5", "panel_width = 1e30",
+          "panel_width = 3", "\x89PNG\r\n\x1a\n\0\0 garbage", "width = 50"})
+        EXPECT_EQ(width_from(broken), kDefaultPanelWidth) << broken;
+    EXPECT_EQ(width_from("junk\n= 3\n  panel_width\t=  44.5 \r\n"), 44.5f);
+    EXPECT_EQ(width_from(std::string(1 << 20, 'x') + "\npanel_width = 44\n"), kDefaultPanelWidth)
+        << "a megabyte is not a settings file";
+    // A folder where the file should be: no settings, and writing fails cleanly.
+    fs::remove(store);
+    fs::create_directories(store / "x");
+    EXPECT_EQ(read_viewer_settings(store), ViewerSettings{});
+    EXPECT_FALSE(write_viewer_settings(store, ViewerSettings{40.0f}));
+}
+
+TEST(ViewerSettings, ConfigFolderFollowsXdgThenHome) {
+    const char* xdg = std::getenv("XDG_CONFIG_HOME");
+    const char* home = std::getenv("HOME");
+    const std::string saved_xdg = xdg ? xdg : "", saved_home = home ? home : "";
+    ::setenv("XDG_CONFIG_HOME", "/cfg", 1);
+    EXPECT_EQ(default_settings_path(), fs::path("/cfg/jtracer/viewer-settings.txt"));
+    EXPECT_EQ(default_recent_files_path(), fs::path("/cfg/jtracer/recent-scenes.txt"));
+    ::setenv("XDG_CONFIG_HOME", "", 1);
+    ::setenv("HOME", "/home/u", 1);
+    EXPECT_EQ(default_settings_path(), fs::path("/home/u/.config/jtracer/viewer-settings.txt"));
+    ::unsetenv("HOME");
+    EXPECT_TRUE(default_settings_path().empty());
+    if (xdg)
+        ::setenv("XDG_CONFIG_HOME", saved_xdg.c_str(), 1);
+    else
+        ::unsetenv("XDG_CONFIG_HOME");
+    if (home) ::setenv("HOME", saved_home.c_str(), 1);
 }
 
 }  // namespace

@@ -345,24 +345,55 @@ TEST(ViewerLayout, NothingIsClippedAtTwiceTheScale) {
     EXPECT_LT(panel->rect.x1, 2560 * 0.5f);
 }
 
-TEST(ViewerLayout, ThePanelEdgeDragsAndTheWidthIsKept) {
+TEST(ViewerLayout, ThePanelEdgeDragsAndTheWidthIsRememberedAcrossRuns) {
+    const fs::path folder = scene_copy("panel-width").parent_path();
+    ViewerConfig config = test_config();
+    config.settings_file = folder / "config" / "viewer-settings.txt";
     HeadlessViewer viewer(1280, 720);
     ASSERT_TRUE(viewer.ok());
-    AppState state{test_config()};
-    open_scene(state, kScene);
-    viewer.frame(state);
-    viewer.frame(state);
-    const UiItem* panel = find_item(state.ui_items, "panel");
-    ASSERT_NE(panel, nullptr);
-    const float edge = panel->rect.x1;
-    const float before = state.sidebar_width;
-    viewer.drag(state, 0, edge - 1, 300, edge + 119, 300);
-    EXPECT_GT(state.sidebar_width, before) << "dragged wider";
-    viewer.frame(state);
-    const UiItem* wider = find_item(state.ui_items, "panel");
-    ASSERT_NE(wider, nullptr);
-    EXPECT_GT(wider->rect.x1, edge + 60);
-    EXPECT_FALSE(state.free_camera_active) << "resizing is not a camera drag";
+    float edge = 0.0f, dragged_edge = 0.0f;
+    {
+        AppState state{config};
+        open_scene(state, kScene);
+        viewer.frame(state);
+        viewer.frame(state);
+        const UiItem* panel = find_item(state.ui_items, "panel");
+        ASSERT_NE(panel, nullptr);
+        edge = panel->rect.x1;
+        const float before = state.sidebar_width;
+        EXPECT_EQ(before, kDefaultPanelWidth);
+        viewer.drag(state, 0, edge - 1, 300, edge + 119, 300);
+        EXPECT_GT(state.sidebar_width, before) << "dragged wider";
+        viewer.frame(state);
+        const UiItem* wider = find_item(state.ui_items, "panel");
+        ASSERT_NE(wider, nullptr);
+        dragged_edge = wider->rect.x1;
+        EXPECT_GT(dragged_edge, edge + 60);
+        EXPECT_FALSE(state.free_camera_active) << "resizing is not a camera drag";
+        EXPECT_EQ(read_viewer_settings(config.settings_file).panel_width, state.sidebar_width);
+    }
+    // The next run opens with the panel as wide as it was left.
+    {
+        AppState state{config};
+        open_scene(state, kScene);
+        viewer.frame(state);
+        viewer.frame(state);
+        const UiItem* panel = find_item(state.ui_items, "panel");
+        ASSERT_NE(panel, nullptr);
+        EXPECT_NEAR(panel->rect.x1, dragged_edge, 1.0f);
+    }
+    // A broken file: the default width, and the viewer runs as ever.
+    write(config.settings_file, "panel_width = 1e999\n\x01\x02");
+    {
+        AppState state{config};
+        open_scene(state, kScene);
+        viewer.frame(state);
+        viewer.frame(state);
+        const UiItem* panel = find_item(state.ui_items, "panel");
+        ASSERT_NE(panel, nullptr);
+        EXPECT_NEAR(panel->rect.x1, edge, 1.0f);
+    }
+    fs::remove_all(folder);
 }
 
 }  // namespace

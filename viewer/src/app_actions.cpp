@@ -410,6 +410,14 @@ void resolve_unsaved(AppState& state, UnsavedChoice choice) {
     run_guarded(state, command);
 }
 
+void remember_settings(AppState& state) {
+    ViewerSettings now = state.saved_settings;
+    now.panel_width = std::clamp(state.sidebar_width, kLeastPanelWidth, kMostPanelWidth);
+    if (now == state.saved_settings || state.config.settings_file.empty()) return;
+    state.saved_settings = now;
+    static_cast<void>(write_viewer_settings(state.config.settings_file, now));
+}
+
 void toggle_pause(AppState& state) {
     state.paused = !state.paused;
     if (state.paused) {

@@ -90,6 +90,11 @@ enum class UnsavedChoice { save, discard, cancel };
 // why and keeps the edits).
 void resolve_unsaved(AppState& state, UnsavedChoice choice);
 
+// Writes the panel width to config.settings_file when it changed since the
+// last write. A file that cannot be written is no reason to fail: it is not
+// tried again until the width changes.
+void remember_settings(AppState& state);
+
 // Pauses the render, or continues it from where it paused.
 void toggle_pause(AppState& state);
 

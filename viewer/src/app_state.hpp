@@ -12,6 +12,7 @@
 #include "scene_loader.hpp"
 #include "ui_items.hpp"
 #include "undo_stack.hpp"
+#include "viewer_settings.hpp"
 #include "wakeup.hpp"
 
 #include <chrono>
@@ -24,7 +25,8 @@
 namespace jt::view {
 
 struct ViewerConfig {
-    std::filesystem::path recent_files;  // empty: remember nothing between runs
+    std::filesystem::path recent_files;   // empty: remember nothing between runs
+    std::filesystem::path settings_file;  // the panel width (viewer_settings.hpp); empty: none
     std::chrono::milliseconds watch_interval{200};
     int render_threads = 0;  // 0: every core
     // The render's threads below the frame loop's priority (RenderOptions::background).
@@ -67,6 +69,8 @@ struct AppState {
     explicit AppState(ViewerConfig config = {}) : config(std::move(config)) {
         loader.set_wakeup(&wakeup);
         renderer.set_wakeup(&wakeup);
+        saved_settings = read_viewer_settings(this->config.settings_file);
+        sidebar_width = saved_settings.panel_width;
     }
 
     ViewerConfig config;
@@ -118,8 +122,9 @@ struct AppState {
     Presenter presenter;
     FitMode fit = FitMode::fit;
     bool show_ui = true;
-    std::vector<UiItem> ui_items;  // what the last frame drew where
-    float sidebar_width = 30.0f;   // in font heights, so that it scales with the font
+    std::vector<UiItem> ui_items;              // what the last frame drew where
+    float sidebar_width = kDefaultPanelWidth;  // in font heights, so that it scales with the font
+    ViewerSettings saved_settings;             // as in config.settings_file
 
     std::string open_path_input;
     std::string save_image_path = "jtracer-view.png";

@@ -124,7 +124,9 @@ int run_window(const Arguments& args) {
     int exit_code = 0;
     {
         // Scoped so the texture and the render thread go before the GL context.
-        AppState app;
+        ViewerConfig config;
+        config.settings_file = default_settings_path();
+        AppState app(config);
         app.wakeup.set_callback(GlfwWindow::wake);
         app.recent.load(default_recent_files_path());
         open_scene(app, args.scene);

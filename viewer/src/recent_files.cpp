@@ -1,9 +1,9 @@
 #include "recent_files.hpp"
 
 #include "image_files.hpp"
+#include "viewer_settings.hpp"
 
 #include <algorithm>
-#include <cstdlib>
 #include <fstream>
 
 namespace jt::view {
@@ -35,11 +35,8 @@ void RecentFiles::add(const std::filesystem::path& path) {
 }
 
 std::filesystem::path default_recent_files_path() {
-    if (const char* xdg = std::getenv("XDG_CONFIG_HOME"); xdg && *xdg)
-        return std::filesystem::path(xdg) / "jtracer" / "recent-scenes.txt";
-    if (const char* home = std::getenv("HOME"); home && *home)
-        return std::filesystem::path(home) / ".config" / "jtracer" / "recent-scenes.txt";
-    return {};
+    const std::filesystem::path folder = config_folder();
+    return folder.empty() ? folder : folder / "recent-scenes.txt";
 }
 
 }  // namespace jt::view

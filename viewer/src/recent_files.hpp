@@ -24,7 +24,7 @@ class RecentFiles {
     std::vector<std::string> paths_;
 };
 
-// $XDG_CONFIG_HOME/jtracer/recent-scenes.txt, or ~/.config/...; empty when neither is set.
+// config_folder()/recent-scenes.txt (viewer_settings.hpp), or empty.
 std::filesystem::path default_recent_files_path();
 
 }  // namespace jt::view

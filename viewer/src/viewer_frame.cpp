@@ -185,6 +185,8 @@ void viewer_frame(AppState& state, const FrameInfo& info) {
         area.x0 = sidebar(state, w, h - status_h);
         area.y1 = h - status_h;
         status_window(state, h - status_h, w);
+        // Once the panel edge is let go: a drag writes the file once, not every frame.
+        if (!ImGui::IsMouseDown(ImGuiMouseButton_Left)) remember_settings(state);
     }
     unsaved_prompt(state);
     track_edits(state, before, generation, ImGui::IsAnyItemActive());
