@@ -353,7 +353,10 @@ TEST_F(ViewerGl, ShortcutsReloadAndSaveTheImage) {
     ASSERT_TRUE(viewer.run_until_loaded(state));
     ASSERT_TRUE(state.pending_reload.has_value()) << state.message;
     EXPECT_EQ(state.doc.scene.settings.recurse_depth, 0);
-    EXPECT_EQ(state.reapply_problem, "the file is unchanged");
+    viewer.frame(state);
+    EXPECT_EQ(find_item(state.ui_items, "Reload, re-apply my edits"), nullptr)
+        << "the same text: nothing to re-apply the edits to";
+    EXPECT_NE(find_item(state.ui_items, "Keep mine"), nullptr);
     resolve_reload(state, ReloadChoice::drop_edits);
     EXPECT_EQ(state.doc.scene.settings.recurse_depth, 2);
     EXPECT_FALSE(state.undo.can_undo());

@@ -152,17 +152,30 @@ TEST_F(ViewerSafety, DiagnosticsFollowEveryEditAsCheckWould) {
 
 TEST_F(ViewerSafety, ReloadPromptSaysWhetherTheFileChanged) {
     open_and_render();
-    edit_scene(state, [](Scene& s) { s.settings.recurse_depth = 1; });
+    edit_scene(state, [](Scene& s) { s.settings.width = 32; });  // an aspect warning
+    viewer.frame(state);
+    const std::vector<Diagnostic> live = state.doc.diagnostics;
+    ASSERT_FALSE(live.empty());
     viewer.press_key(state, keys::letter('R'));
     ASSERT_TRUE(viewer.run_until_loaded(state));
     ASSERT_TRUE(state.pending_reload);
     EXPECT_NE(state.message.find("unchanged"), std::string::npos) << state.message;
     EXPECT_EQ(state.message.find("was reloaded"), std::string::npos) << state.message;
+    viewer.frame(state);
+    EXPECT_EQ(state.doc.diagnostics.size(), live.size()) << "still about the edited scene";
+    EXPECT_EQ(find_item(state.ui_items, "Reload, re-apply my edits"), nullptr);
+    for (const char* choice : {"Reload, drop my edits", "Keep mine"}) {
+        const UiItem* item = find_item(state.ui_items, choice);
+        ASSERT_NE(item, nullptr) << choice;
+        EXPECT_FALSE(item->clipped) << choice;
+    }
     ASSERT_TRUE(viewer.click(state, "Keep mine"));
     write(file, read(file) + "\n# theirs\n");
     ASSERT_TRUE(viewer.run_until_loaded(state));
     ASSERT_TRUE(state.pending_reload);
     EXPECT_NE(state.message.find("changed on disk"), std::string::npos) << state.message;
+    viewer.frame(state);
+    EXPECT_NE(find_item(state.ui_items, "Reload, re-apply my edits"), nullptr);
 }
 
 TEST_F(ViewerSafety, ABrokenFileAtStartUpIsQuotedWithItsLineAndCaret) {
@@ -279,8 +292,16 @@ TEST_F(ViewerSafety, SaveSceneAsAsksBeforeReplacingAndThenEditsTheNewFile) {
 
 TEST_F(ViewerSafety, StatusAndTitleNameThePassTheTimesAndPausing) {
     open_scene(state, file);
+    edit_scene(state, [](Scene& s) { s.settings.samples = 1; });
+    ASSERT_TRUE(viewer.run_until_complete(state, kTimeout));
+    EXPECT_NE(window_title(state).find("done, 1 sample,"), std::string::npos)
+        << window_title(state);
+    EXPECT_NE(render_status(state).find("done: 1 sample in"), std::string::npos)
+        << render_status(state);
     edit_scene(state, [](Scene& s) { s.settings.samples = 4; });
     ASSERT_TRUE(viewer.run_until_complete(state, kTimeout));
+    EXPECT_NE(window_title(state).find("done, 4 samples,"), std::string::npos)
+        << window_title(state);
     const std::string done = render_status(state);
     EXPECT_NE(done.find("done: 4 samples in"), std::string::npos) << done;
     EXPECT_NE(done.find("Mrays/s"), std::string::npos) << done;

@@ -6,6 +6,8 @@
 
 #include <algorithm>
 #include <chrono>
+#include <cstdio>
+#include <cstdlib>
 #include <utility>
 
 namespace jt::view {
@@ -97,15 +99,17 @@ void finish_reload(AppState& state, LoadAttempt attempt) {
         return;
     }
     // Replacing the scene now would throw the edits away: ask first.
-    state.reapply_problem.clear();
-    if (attempt.text == state.doc.text)
-        state.reapply_problem = "the file is unchanged";
-    else if (const Expected<Scene> reapplied = reapply_edits(state.doc, attempt); !reapplied)
-        state.reapply_problem = "cannot re-apply: " + reapplied.error().message;
-    state.doc.load_failed = false;
-    state.doc.diagnostics = attempt.diagnostics;
-    state.doc.diagnostics_source = attempt.text;
+    // The same text again: the only choice is whether to drop the edits, and
+    // the diagnostics stay those of the edited scene.
     const bool unchanged = attempt.text == state.doc.text;
+    state.reapply_problem.clear();
+    if (!unchanged) {
+        if (const Expected<Scene> reapplied = reapply_edits(state.doc, attempt); !reapplied)
+            state.reapply_problem = reapplied.error().message;
+        state.doc.load_failed = false;
+        state.doc.diagnostics = attempt.diagnostics;
+        state.doc.diagnostics_source = attempt.text;
+    }
     state.pending_reload = std::move(attempt);
     state.message = unchanged ? name +
                                     " is unchanged on disk; reloading it would drop your "
@@ -263,7 +267,8 @@ void check_edits(AppState& state) {
     SceneDocument& doc = state.doc;
     // A failed load's diagnostics describe the file, and a pending reload's the
     // newer text: both stay until the file is fixed or the user chooses.
-    if (!doc.loaded || doc.load_failed || state.pending_reload) {
+    if (!doc.loaded || doc.load_failed ||
+        (state.pending_reload && state.pending_reload->text != doc.text)) {
         state.checked_scene.reset();
         return;
     }
@@ -531,16 +536,26 @@ void update_render(AppState& state) {
     if (finished && state.started) state.display_complete = true;
 }
 
+std::string pass_label(const RenderProgress& p, int target_samples) {
+    if (p.pass_name.rfind("preview", 0) == 0) return p.pass_name;
+    // The core names its full-resolution passes by the samples they reach.
+    const int reached = std::atoi(p.pass_name.c_str());
+    if (target_samples <= 1 || reached <= 1) return "full resolution";
+    return "sample " + std::to_string(reached) + " of " + std::to_string(target_samples);
+}
+
 std::string render_title_status(const AppState& state) {
     if (!state.started) return state.paused ? "paused" : "";
     const RenderProgress p = state.renderer.progress();
     char text[96];
     if (state.paused) return state.edit_waiting ? "paused, edit waiting" : "paused";
     if (render_complete(state)) {
-        std::snprintf(text, sizeof text, "done, %d samples, %.1f s", p.samples_done, p.seconds);
+        std::snprintf(text, sizeof text, "done, %d sample%s, %.1f s", p.samples_done,
+                      p.samples_done == 1 ? "" : "s", p.seconds);
         return text;
     }
-    std::snprintf(text, sizeof text, "%s %d%%", p.pass_name.c_str(),
+    std::snprintf(text, sizeof text, "%s %d%%",
+                  pass_label(p, state.started->options.samples).c_str(),
                   static_cast<int>(p.fraction * 100.0));
     return text;
 }

@@ -106,6 +106,9 @@ void update_render(AppState& state);
 // in `note`) when there is nothing to render.
 std::optional<RenderRequest> render_request(const AppState& state, std::string& note);
 
+// A pass as a user reads it: "preview 1/8", "full resolution", "sample 4 of 16".
+std::string pass_label(const RenderProgress& progress, int target_samples);
+
 // The render's state for the window title: "preview 1/8 34%", "paused",
 // "paused, edit waiting", "done, 16 samples, 2.1 s"; empty before any render.
 std::string render_title_status(const AppState& state);

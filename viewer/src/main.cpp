@@ -9,10 +9,12 @@
 #include "headless.hpp"
 #include "image_files.hpp"
 #include "imgui_layer.hpp"
+#include "key_taps.hpp"
 #include "viewer_frame.hpp"
 
 #include "jtracer/version.hpp"
 
+#include <GLFW/glfw3.h>
 #include <imgui.h>
 #include <imgui_impl_glfw.h>
 #include <CLI/CLI.hpp>
@@ -61,6 +63,18 @@ CLI::Validator timeout_check() {
             return {};
         },
         "SECONDS");
+}
+
+// The window's keys reach ImGui through this, so that a quick tap is seen.
+KeyTaps key_taps{GLFW_PRESS, GLFW_RELEASE};
+
+void key_to_imgui(GLFWwindow* window, const KeyEvent& e) {
+    ImGui_ImplGlfw_KeyCallback(window, e.key, e.scancode, e.action, e.mods);
+}
+
+void on_key(GLFWwindow* window, int key, int scancode, int action, int mods) {
+    key_taps.event({key, scancode, action, mods},
+                   [window](const KeyEvent& e) { key_to_imgui(window, e); });
 }
 
 bool parse_size(const std::string& text, int& width, int& height) {
@@ -117,6 +131,7 @@ int run_window(const Arguments& args) {
         return 1;
     }
     ImGui_ImplGlfw_InitForOpenGL(window.handle(), true);
+    glfwSetKeyCallback(window.handle(), on_key);  // in place of the backend's, which it calls
     ImGui::GetIO().BackendFlags |= ImGuiBackendFlags_HasMouseCursors;  // the panel edge resizes
     std::optional<std::string> dropped;
     window.on_drop([&](const std::string& path) { dropped = path; });
@@ -167,6 +182,7 @@ int run_window(const Arguments& args) {
             layer.begin_frame();
             viewer_frame(app, FrameInfo{scale});
             layer.end_frame(fw, fh);
+            key_taps.frame_done([&](const KeyEvent& e) { key_to_imgui(window.handle(), e); });
             window.swap_buffers();
             if (const std::string t = window_title(app); t != title) window.set_title(title = t);
             const auto now = std::chrono::steady_clock::now();

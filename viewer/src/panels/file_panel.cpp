@@ -27,7 +27,7 @@ void reload_choice(AppState& state) {
     ImGui::PopStyleColor();
     if (button("Reload, drop my edits", "Show the file as it is on disk; your edits are lost"))
         resolve_reload(state, ReloadChoice::drop_edits);
-    if (state.reapply_problem.empty()) {
+    if (!unchanged && state.reapply_problem.empty()) {
         same_line_if_fits("Reload, re-apply my edits");
         if (button("Reload, re-apply my edits",
                    "Take the file's new text and make your edits to it again"))
@@ -38,8 +38,9 @@ void reload_choice(AppState& state) {
                "Ignore the file's text for now; Save scene will ask before "
                "replacing it"))
         resolve_reload(state, ReloadChoice::keep_edits);
-    if (!state.reapply_problem.empty())
-        ImGui::TextWrapped("(edits cannot be re-applied: %s)", state.reapply_problem.c_str());
+    if (!unchanged && !state.reapply_problem.empty())
+        ImGui::TextWrapped("(your edits cannot be re-applied to the new text: %s)",
+                           state.reapply_problem.c_str());
 }
 
 // Save scene was refused because the file changed on disk.

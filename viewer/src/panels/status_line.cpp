@@ -4,20 +4,10 @@
 #include <imgui.h>
 
 #include <cstdio>
-#include <cstdlib>
 
 namespace jt::view {
 
 namespace {
-
-// "preview 1/8", "full resolution", "sample 4 of 16": the core names its
-// full-resolution passes by the samples they reach ("1 sample", "4 samples").
-std::string stage_name(const RenderProgress& p, int target_samples) {
-    if (p.pass_name.rfind("preview", 0) == 0) return p.pass_name;
-    const int reached = std::atoi(p.pass_name.c_str());
-    if (target_samples <= 1 || reached <= 1) return "full resolution";
-    return "sample " + std::to_string(reached) + " of " + std::to_string(target_samples);
-}
 
 std::string seconds_text(double seconds) {
     char text[32];
@@ -41,7 +31,7 @@ std::string render_status(const AppState& state) {
     char speed[48];
     std::snprintf(speed, sizeof speed, "%.1f Mrays/s", mrays);
     if (state.paused) {
-        std::string text = "paused at " + stage_name(p, samples);
+        std::string text = "paused at " + pass_label(p, samples);
         text += state.edit_waiting ? " | edit waiting: Space renders it" : " | Space resumes";
         return text;
     }
@@ -49,7 +39,7 @@ std::string render_status(const AppState& state) {
         return "done: " + std::to_string(p.samples_done) +
                (p.samples_done == 1 ? " sample" : " samples") + " in " + seconds_text(p.seconds) +
                " | " + speed;
-    std::string text = stage_name(p, samples) + " | " + seconds_text(p.seconds) + " elapsed";
+    std::string text = pass_label(p, samples) + " | " + seconds_text(p.seconds) + " elapsed";
     // The ETA once enough is done to extrapolate from.
     if (p.fraction > 0.02 && p.fraction < 1.0)
         text += ", about " + seconds_text(p.seconds * (1.0 - p.fraction) / p.fraction) + " left";
