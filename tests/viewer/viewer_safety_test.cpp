@@ -22,6 +22,13 @@ namespace {
 
 using namespace jt::view::test;
 
+std::string replaced_text(std::string text, const std::string& from, const std::string& to) {
+    const std::size_t at = text.find(from);
+    EXPECT_NE(at, std::string::npos) << from;
+    if (at != std::string::npos) text.replace(at, from.size(), to);
+    return text;
+}
+
 class ViewerSafety : public ::testing::Test {
   protected:
     void SetUp() override {
@@ -317,6 +324,68 @@ TEST_F(ViewerSafety, StatusAndTitleNameThePassTheTimesAndPausing) {
     EXPECT_TRUE(running.find("preview") == 0 || running.find("full resolution") == 0 ||
                 running.find("sample ") == 0 || running.find("done") == 0)
         << running;
+}
+
+// Numbers the UI made are written short (an orbited camera as -2.23547, not
+// -2.2354736889656803), and a field edit of one component of a vector leaves
+// the other components' text as written.
+TEST_F(ViewerSafety, SavedNumbersAreShortAndOneComponentEditsKeepTheRestAsWritten) {
+    write(file, replaced_text(read(file), "point_light { position: <3, 5, 4>;",
+                              "point_light { position: <3.0, 5.0, 4.0>;"));
+    open_and_render();
+    const ImVec2 c = image_centre();
+    viewer.drag(state, 0, c.x, c.y, c.x + 37, c.y + 11);
+    ASSERT_TRUE(state.free_camera_active);
+    state.new_camera_name = "kept";
+    viewer.frame(state);
+    ASSERT_TRUE(viewer.click(state, "Copy to scene"));
+    // The light's position field: a drag on its first third changes x alone.
+    ASSERT_TRUE(viewer.click(state, "Lights"));
+    ASSERT_TRUE(viewer.click(state, "point_light 1"));
+    viewer.frame(state);
+    const UiItem* light = nullptr;
+    for (const UiItem& item : state.ui_items)
+        if (item.label == "position") light = &item;  // the last: the light's
+    ASSERT_NE(light, nullptr);
+    const float x = light->rect.x0 + (light->rect.x1 - light->rect.x0) * 0.15f;
+    const float y = (light->rect.y0 + light->rect.y1) * 0.5f;
+    viewer.drag(state, 0, x, y, x + 30, y);
+    ASSERT_NE(state.doc.scene.lights[0].position.x, 3.0) << "the drag changed x";
+    ASSERT_EQ(state.doc.scene.lights[0].position.y, 5.0);
+    viewer.press_key(state, keys::letter('S'), /*ctrl=*/true);
+    ASSERT_FALSE(has_unsaved_edits(state.doc)) << state.message;
+    const std::string text = read(file);
+    EXPECT_NE(text.find(", 5.0, 4.0>;"), std::string::npos) << text;
+    // The orbited position has at most 6 significant digits a number (the
+    // aspect and fov are the scene camera's, copied as written).
+    const std::size_t block = text.find("name: \"kept\"");
+    ASSERT_NE(block, std::string::npos) << text;
+    const std::size_t at = text.find("position:", block);
+    ASSERT_NE(at, std::string::npos) << text;
+    const std::string camera = text.substr(at, text.find('\n', at) - at);
+    int numbers = 0;
+    for (std::size_t i = 0; i < camera.size();) {
+        if (!std::isdigit(static_cast<unsigned char>(camera[i]))) {
+            ++i;
+            continue;
+        }
+        int digits = 0;
+        bool leading = true;
+        for (; i < camera.size() &&
+               (std::isdigit(static_cast<unsigned char>(camera[i])) || camera[i] == '.');
+             ++i) {
+            if (camera[i] == '.') continue;
+            if (leading && camera[i] == '0') continue;
+            leading = false;
+            ++digits;
+        }
+        ++numbers;
+        EXPECT_LE(digits, 6) << camera;
+    }
+    EXPECT_EQ(numbers, 3) << camera;
+    ParseResult saved = parse_scene(text);
+    ASSERT_TRUE(saved.ok());
+    EXPECT_EQ(saved.scene, state.doc.scene);
 }
 
 // Every control of every panel, opened, at the smallest supported window and

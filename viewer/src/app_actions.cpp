@@ -3,6 +3,7 @@
 #include "image_files.hpp"
 #include "jtracer/limits.hpp"
 #include "jtracer/validate.hpp"
+#include "ui_rounding.hpp"
 
 #include <algorithm>
 #include <chrono>
@@ -366,7 +367,12 @@ bool copy_free_camera_to_scene(AppState& state, const std::string& name) {
     const FreeCamera from = state.free_camera_active
                                 ? state.free_camera
                                 : free_camera_from(state.doc.scene.cameras[selected_camera(state)]);
-    state.doc.scene.cameras.push_back(camera_from(from, name));
+    Camera camera = camera_from(from, name);
+    if (state.free_camera_active) {  // moved with the mouse: short numbers in the file
+        camera.position = ui_rounded(camera.position);
+        camera.look_at = ui_rounded(camera.look_at);
+    }
+    state.doc.scene.cameras.push_back(std::move(camera));
     state.undo.record(before);
     ++state.scene_generation;
     state.camera_index = static_cast<int>(state.doc.scene.cameras.size()) - 1;

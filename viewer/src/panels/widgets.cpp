@@ -1,24 +1,20 @@
 #include "panels/widgets.hpp"
 
 #include "ui_items.hpp"
+#include "ui_rounding.hpp"
 
 #include <imgui.h>
 
 #include <algorithm>
 #include <cmath>
-#include <cstdio>
-#include <cstdlib>
 
 namespace jt::view {
 
 namespace {
 
-// A float from a widget back to the double it stands for: 6 significant
-// digits, so 0.3f is saved as 0.3 and not 0.30000001192092896.
+// A float from a widget back to the double it stands for (ui_rounding.hpp).
 double from_widget(float f) {
-    char text[32];
-    std::snprintf(text, sizeof text, "%.6g", static_cast<double>(f));
-    return std::strtod(text, nullptr);
+    return ui_rounded(static_cast<double>(f));
 }
 
 }  // namespace
