@@ -32,6 +32,7 @@
 #include <cstdlib>
 #include <filesystem>
 #include <fstream>
+#include <optional>
 #include <random>
 #include <sstream>
 #include <string>
@@ -258,14 +259,20 @@ class Monkey {
         }
     }
 
-    void click_some_item() {
+    // One of the controls the last frame drew, or nullopt (after a frame) when none.
+    std::optional<UiItem> some_item() {
         if (state_.ui_items.empty()) {
             frame();
-            return;
+            return std::nullopt;
         }
-        const UiItem item =
-            state_
-                .ui_items[static_cast<std::size_t>(pick(static_cast<int>(state_.ui_items.size())))];
+        return state_
+            .ui_items[static_cast<std::size_t>(pick(static_cast<int>(state_.ui_items.size())))];
+    }
+
+    void click_some_item() {
+        const std::optional<UiItem> some = some_item();
+        if (!some) return;
+        const UiItem& item = *some;
         last_event_ = "click \"" + item.label + "\"";
         ImGuiIO& io = ImGui::GetIO();
         io.MousePos =
@@ -279,13 +286,9 @@ class Monkey {
 
     // A drag across a control: a number or colour edit, the panel's edge.
     void drag_some_item() {
-        if (state_.ui_items.empty()) {
-            frame();
-            return;
-        }
-        const UiItem item =
-            state_
-                .ui_items[static_cast<std::size_t>(pick(static_cast<int>(state_.ui_items.size())))];
+        const std::optional<UiItem> some = some_item();
+        if (!some) return;
+        const UiItem& item = *some;
         last_event_ = "drag \"" + item.label + "\"";
         const float x = uniform(item.rect.x0, item.rect.x1);
         const float y = uniform(item.rect.y0, item.rect.y1);

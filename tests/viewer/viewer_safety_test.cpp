@@ -462,27 +462,18 @@ TEST(ViewerLayout, ThePanelEdgeDragsAndTheWidthIsRememberedAcrossRuns) {
         EXPECT_FALSE(state.free_camera_active) << "resizing is not a camera drag";
         EXPECT_EQ(read_viewer_settings(config.settings_file).panel_width, state.sidebar_width);
     }
-    // The next run opens with the panel as wide as it was left.
-    {
+    // Where the panel of a new run ends.
+    const auto next_run_edge = [&] {
         AppState state{config};
         open_scene(state, kScene);
         viewer.frame(state);
         viewer.frame(state);
         const UiItem* panel = find_item(state.ui_items, "panel");
-        ASSERT_NE(panel, nullptr);
-        EXPECT_NEAR(panel->rect.x1, dragged_edge, 1.0f);
-    }
-    // A broken file: the default width, and the viewer runs as ever.
+        return panel ? panel->rect.x1 : -1.0f;
+    };
+    EXPECT_NEAR(next_run_edge(), dragged_edge, 1.0f) << "as wide as it was left";
     write(config.settings_file, "panel_width = 1e999\n\x01\x02");
-    {
-        AppState state{config};
-        open_scene(state, kScene);
-        viewer.frame(state);
-        viewer.frame(state);
-        const UiItem* panel = find_item(state.ui_items, "panel");
-        ASSERT_NE(panel, nullptr);
-        EXPECT_NEAR(panel->rect.x1, edge, 1.0f);
-    }
+    EXPECT_NEAR(next_run_edge(), edge, 1.0f) << "a broken file: the default width";
     fs::remove_all(folder);
 }
 
