@@ -19,6 +19,7 @@
 //   viewer_monkey --soak 2000               edit/reload cycles; resident memory bounded
 
 #include "app_actions.hpp"
+#include "common/files.hpp"
 #include "headless.hpp"
 #include "jtracer/parser.hpp"
 #include "jtracer/png.hpp"
@@ -34,7 +35,6 @@
 #include <fstream>
 #include <optional>
 #include <random>
-#include <sstream>
 #include <string>
 #include <vector>
 
@@ -45,19 +45,10 @@ namespace {
 namespace fs = std::filesystem;
 using namespace jt;
 using namespace jt::view;
+using jt::test::read_file;
+using jt::test::write_file;
 
 constexpr double max_frame_seconds = 1.0;
-
-std::string read(const fs::path& path) {
-    std::ifstream in(path, std::ios::binary);
-    std::stringstream buffer;
-    buffer << in.rdbuf();
-    return buffer.str();
-}
-
-void write(const fs::path& path, const std::string& text) {
-    std::ofstream(path, std::ios::binary) << text;
-}
 
 std::string replaced(std::string text, const std::string& from, const std::string& to) {
     const std::size_t at = text.find(from);
@@ -76,7 +67,7 @@ class Monkey {
   public:
     Monkey(std::uint32_t seed, const fs::path& dir)
         : random_(seed), seed_(seed), dir_(dir), file_(dir / "scene.jts") {
-        original_ = read(fs::path(JT_VIEWER_TEST_DIR) / "scenes" / "two_cameras.jts");
+        original_ = read_file(fs::path(JT_VIEWER_TEST_DIR) / "scenes" / "two_cameras.jts");
         texts_ = {
             original_,
             replaced(original_, "pigment: <0.9, 0.2, 0.1>;", "pigment: <0.2, 0.9, 0.1>;"),
@@ -88,7 +79,7 @@ class Monkey {
                      "      fov: 50;\n    }\n",
                      ""),
         };
-        write(file_, original_);
+        write_file(file_, original_);
         written_ = original_;
         state_.config.watch_interval = std::chrono::milliseconds(0);
         state_.config.render_threads = 1;  // the frames are what is tested
@@ -142,7 +133,7 @@ class Monkey {
                 s.primitives[1].material.pigment = Colour(0.1 + 0.8 * ((i * 37) % 100) / 100.0);
             });
             viewer_.frame(state_);
-            write_file(texts_[static_cast<std::size_t>(i) % 2]);
+            rewrite_scene(texts_[static_cast<std::size_t>(i) % 2]);
             wait_for_load();
             if (state_.pending_reload) resolve_reload(state_, ReloadChoice::drop_edits);
             viewer_.frame(state_);
@@ -185,11 +176,11 @@ class Monkey {
         ++frames_;
     }
 
-    void write_file(const std::string& text) {
+    void rewrite_scene(const std::string& text) {
         if (pick(2) == 0) {
-            write(file_, text);
+            write_file(file_, text);
         } else {  // as editors save: a new file renamed over the old
-            write(dir_ / "editor.tmp", text);
+            write_file(dir_ / "editor.tmp", text);
             fs::rename(dir_ / "editor.tmp", file_);
         }
         written_ = text;
@@ -332,18 +323,18 @@ class Monkey {
             file_deleted_ = true;
         } else if (kind == 1) {
             last_event_ = "file truncated";
-            write_file(written_.empty() ? original_.substr(0, 100)
-                                        : written_.substr(0, written_.size() / 2));
+            rewrite_scene(written_.empty() ? original_.substr(0, 100)
+                                           : written_.substr(0, written_.size() / 2));
         } else if (kind == 2) {
             last_event_ = "file garbage";
             std::string garbage(200, '\0');
             for (char& c : garbage) c = static_cast<char>(pick(256));
-            write_file(garbage);
+            rewrite_scene(garbage);
         } else {
             const std::size_t which =
                 static_cast<std::size_t>(pick(static_cast<int>(texts_.size())));
             last_event_ = "file rewritten (text " + std::to_string(which) + ")";
-            write_file(texts_[which]);
+            rewrite_scene(texts_[which]);
         }
         wait_for_load();
     }
@@ -382,7 +373,7 @@ class Monkey {
             const std::string name = entry.path().filename().string();
             if (name.find(".tmp-") != std::string::npos) fail("temporary file left: " + name);
             if (entry.path().extension() == ".png") {
-                const std::string bytes = read(entry.path());
+                const std::string bytes = read_file(entry.path());
                 const Expected<Image8> image =
                     decode_png({reinterpret_cast<const std::uint8_t*>(bytes.data()), bytes.size()});
                 if (!image) fail(name + " is not a whole PNG: " + image.error().message);
@@ -390,7 +381,7 @@ class Monkey {
         }
         std::error_code ec;
         if (!fs::exists(file_, ec)) return;
-        const std::string text = read(file_);
+        const std::string text = read_file(file_);
         if (text == written_) return;
         ParseResult parsed = parse_scene(text);
         if (!parsed.ok()) fail("scene.jts is neither the monkey's text nor a whole save");
@@ -402,10 +393,10 @@ class Monkey {
         const bool new_message = state_.message != last_message_;
         last_message_ = state_.message;
         if (state_.message != saved || !new_message) return;
-        ParseResult parsed = parse_scene(read(state_.doc.path));
+        ParseResult parsed = parse_scene(read_file(state_.doc.path));
         if (!parsed.ok() || parsed.scene != state_.doc.scene)
             fail("the saved file does not parse to the viewer's scene");
-        if (state_.doc.path == file_) written_ = read(file_);
+        if (state_.doc.path == file_) written_ = read_file(file_);
         saved_since_history_start_ = true;
         ++saves_checked_;
     }

@@ -280,7 +280,7 @@ TEST(KeyTaps, AReleaseInTheFrameOfItsPressWaitsForTheFrame) {
 }
 
 TEST(ViewerSettings, WrittenWholeAndReadBack) {
-    const fs::path store = temp_dir("settings") / "sub" / "viewer-settings.txt";
+    const fs::path store = make_scratch_dir("settings") / "sub" / "viewer-settings.txt";
     EXPECT_EQ(read_viewer_settings(store), ViewerSettings{}) << "missing: the defaults";
     ASSERT_TRUE(write_viewer_settings(store, ViewerSettings{41.25f}));
     EXPECT_EQ(read_viewer_settings(store).panel_width, 41.25f);
@@ -291,9 +291,9 @@ TEST(ViewerSettings, WrittenWholeAndReadBack) {
 }
 
 TEST(ViewerSettings, ABrokenFileGivesTheDefaultsForWhatItCannotSay) {
-    const fs::path store = temp_dir("settings-broken") / "viewer-settings.txt";
+    const fs::path store = make_scratch_dir("settings-broken") / "viewer-settings.txt";
     const auto width_from = [&](const std::string& text) {
-        std::ofstream(store, std::ios::binary) << text;
+        write_file(store, text);
         return read_viewer_settings(store).panel_width;
     };
     for (const char* broken :

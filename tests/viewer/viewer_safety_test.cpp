@@ -4,6 +4,7 @@
 // quit, files overwritten without asking, clipped or unexplained controls.
 
 #include "app_actions.hpp"
+#include "common/files.hpp"
 #include "headless.hpp"
 #include "jtracer/parser.hpp"
 #include "jtracer/scene_file.hpp"
@@ -20,7 +21,8 @@
 namespace jt::view {
 namespace {
 
-using namespace jt::view::test;
+using namespace jt::test;
+namespace fs = std::filesystem;
 
 std::string replaced_text(std::string text, const std::string& from, const std::string& to) {
     const std::size_t at = text.find(from);
@@ -177,7 +179,7 @@ TEST_F(ViewerSafety, ReloadPromptSaysWhetherTheFileChanged) {
         EXPECT_FALSE(item->clipped) << choice;
     }
     ASSERT_TRUE(viewer.click(state, "Keep mine"));
-    write(file, read(file) + "\n# theirs\n");
+    write_file(file, read_file(file) + "\n# theirs\n");
     ASSERT_TRUE(viewer.run_until_loaded(state));
     ASSERT_TRUE(state.pending_reload);
     EXPECT_NE(state.message.find("changed on disk"), std::string::npos) << state.message;
@@ -186,7 +188,7 @@ TEST_F(ViewerSafety, ReloadPromptSaysWhetherTheFileChanged) {
 }
 
 TEST_F(ViewerSafety, ABrokenFileAtStartUpIsQuotedWithItsLineAndCaret) {
-    write(file, "render_settings {\n    width: 64;\n    height: 48\n}\n");
+    write_file(file, "render_settings {\n    width: 64;\n    height: 48\n}\n");
     open_scene(state, file);
     viewer.frame(state);
     EXPECT_EQ(state.message.find("Could not open"), std::string::npos) << state.message;
@@ -238,7 +240,7 @@ TEST_F(ViewerSafety, EscapeClosesWhatIsOpenAndNeverDropsEdits) {
     viewer.frame(state);
     ASSERT_TRUE(viewer.click(state, "Save"));
     EXPECT_TRUE(state.quit);
-    ParseResult saved = parse_scene(read(file));
+    ParseResult saved = parse_scene(read_file(file));
     ASSERT_TRUE(saved.ok());
     EXPECT_EQ(saved.scene.settings.recurse_depth, 1);
 }
@@ -259,18 +261,18 @@ TEST_F(ViewerSafety, OpeningAnotherFileWithEditsAsksAndDiscardOpensIt) {
     ASSERT_TRUE(viewer.click(state, "Discard"));
     ASSERT_TRUE(viewer.run_until_loaded(state));
     EXPECT_EQ(state.doc.path, other);
-    EXPECT_EQ(read(file), read(kScene)) << "discarded, not saved";
+    EXPECT_EQ(read_file(file), read_file(kScene)) << "discarded, not saved";
 }
 
 TEST_F(ViewerSafety, ImageSavesNeverReplaceAFile) {
     open_and_render();
     const fs::path png = file.parent_path() / "view.png";
-    write(png, "someone else's picture");
+    write_file(png, "someone else's picture");
     state.save_image_path = png.string();
     viewer.press_key(state, keys::letter('S'));
     viewer.press_key(state, keys::letter('S'));
-    EXPECT_EQ(read(png), "someone else's picture");
-    const std::string first = read(file.parent_path() / "view-001.png");
+    EXPECT_EQ(read_file(png), "someone else's picture");
+    const std::string first = read_file(file.parent_path() / "view-001.png");
     EXPECT_EQ(first.substr(0, 4), "\x89PNG");
     EXPECT_TRUE(fs::exists(file.parent_path() / "view-002.png"));
     EXPECT_NE(state.message.find("view-002.png"), std::string::npos) << state.message;
@@ -282,19 +284,19 @@ TEST_F(ViewerSafety, SaveSceneAsAsksBeforeReplacingAndThenEditsTheNewFile) {
     open_and_render();
     edit_scene(state, [](Scene& s) { s.settings.recurse_depth = 1; });
     const fs::path copy = file.parent_path() / "copy.jts";
-    write(copy, "# precious\n");
+    write_file(copy, "# precious\n");
     state.save_scene_path = copy.string();
     viewer.frame(state);
     ASSERT_TRUE(viewer.click(state, "Save scene as"));
-    EXPECT_EQ(read(copy), "# precious\n");
+    EXPECT_EQ(read_file(copy), "# precious\n");
     EXPECT_FALSE(state.save_as_conflict.empty());
     ASSERT_TRUE(viewer.click(state, "Replace it"));
     EXPECT_EQ(state.doc.path, copy);
     EXPECT_FALSE(has_unsaved_edits(state.doc));
-    ParseResult saved = parse_scene(read(copy));
+    ParseResult saved = parse_scene(read_file(copy));
     ASSERT_TRUE(saved.ok());
     EXPECT_EQ(saved.scene, state.doc.scene);
-    EXPECT_EQ(read(file), read(kScene)) << "the first file is untouched";
+    EXPECT_EQ(read_file(file), read_file(kScene)) << "the first file is untouched";
 }
 
 TEST_F(ViewerSafety, StatusAndTitleNameThePassTheTimesAndPausing) {
@@ -330,8 +332,8 @@ TEST_F(ViewerSafety, StatusAndTitleNameThePassTheTimesAndPausing) {
 // -2.2354736889656803), and a field edit of one component of a vector leaves
 // the other components' text as written.
 TEST_F(ViewerSafety, SavedNumbersAreShortAndOneComponentEditsKeepTheRestAsWritten) {
-    write(file, replaced_text(read(file), "point_light { position: <3, 5, 4>;",
-                              "point_light { position: <3.0, 5.0, 4.0>;"));
+    write_file(file, replaced_text(read_file(file), "point_light { position: <3, 5, 4>;",
+                                   "point_light { position: <3.0, 5.0, 4.0>;"));
     open_and_render();
     const ImVec2 c = image_centre();
     viewer.drag(state, 0, c.x, c.y, c.x + 37, c.y + 11);
@@ -354,7 +356,7 @@ TEST_F(ViewerSafety, SavedNumbersAreShortAndOneComponentEditsKeepTheRestAsWritte
     ASSERT_EQ(state.doc.scene.lights[0].position.y, 5.0);
     viewer.press_key(state, keys::letter('S'), /*ctrl=*/true);
     ASSERT_FALSE(has_unsaved_edits(state.doc)) << state.message;
-    const std::string text = read(file);
+    const std::string text = read_file(file);
     EXPECT_NE(text.find(", 5.0, 4.0>;"), std::string::npos) << text;
     // The orbited position has at most 6 significant digits a number (the
     // aspect and fov are the scene camera's, copied as written).
@@ -472,7 +474,7 @@ TEST(ViewerLayout, ThePanelEdgeDragsAndTheWidthIsRememberedAcrossRuns) {
         return panel ? panel->rect.x1 : -1.0f;
     };
     EXPECT_NEAR(next_run_edge(), dragged_edge, 1.0f) << "as wide as it was left";
-    write(config.settings_file, "panel_width = 1e999\n\x01\x02");
+    write_file(config.settings_file, "panel_width = 1e999\n\x01\x02");
     EXPECT_NEAR(next_run_edge(), edge, 1.0f) << "a broken file: the default width";
     fs::remove_all(folder);
 }
