@@ -342,6 +342,8 @@ TEST_F(ViewerSafety, SavedNumbersAreShortAndOneComponentEditsKeepTheRestAsWritte
     viewer.frame(state);
     ASSERT_TRUE(viewer.click(state, "Copy to scene"));
     // The light's position field: a drag on its first third changes x alone.
+    // (Render settings closed first, so that the field is inside the window.)
+    ASSERT_TRUE(viewer.click(state, "Render settings"));
     ASSERT_TRUE(viewer.click(state, "Lights"));
     ASSERT_TRUE(viewer.click(state, "point_light 1"));
     viewer.frame(state);
@@ -349,6 +351,7 @@ TEST_F(ViewerSafety, SavedNumbersAreShortAndOneComponentEditsKeepTheRestAsWritte
     for (const UiItem& item : state.ui_items)
         if (item.label == "position") light = &item;  // the last: the light's
     ASSERT_NE(light, nullptr);
+    ASSERT_LT(light->rect.y1, find_item(state.ui_items, "panel")->rect.y1);
     const float x = light->rect.x0 + (light->rect.x1 - light->rect.x0) * 0.15f;
     const float y = (light->rect.y0 + light->rect.y1) * 0.5f;
     viewer.drag(state, 0, x, y, x + 30, y);
