@@ -5,6 +5,7 @@
 // makes sure every rank ends the same way.
 
 #include "coordinator.hpp"
+#include "cpu_affinity.hpp"
 #include "mpi_options.hpp"
 #include "work_tiles.hpp"
 #include "worker.hpp"
@@ -132,6 +133,9 @@ int run(int argc, char** argv, int rank, int ranks) {
 
     FrameSetup setup = jt::frontend::set_up_frame("jtracer-mpi", o);
     if (int code = agree_on_setup(setup, rank, ranks); code != exit_ok) return code;
+    if (!o.quiet)
+        if (auto warning = narrow_affinity_warning(current_cpu_share(), rank, host_name()))
+            std::cerr << *warning << std::flush;
     if (rank == 0) {
         std::signal(SIGINT, on_interrupt);
         std::signal(SIGTERM, on_interrupt);

@@ -5,6 +5,7 @@
 #include "common/scratch_dir.hpp"
 
 #include <chrono>
+#include <thread>
 
 namespace jt {
 namespace {
@@ -23,6 +24,12 @@ std::string mpirun(int ranks, const std::string& env = "") {
     return "env ASAN_OPTIONS=detect_leaks=0 " + env +
            " '" JT_MPIEXEC "' --oversubscribe --allow-run-as-root -np " + std::to_string(ranks) +
            (env.empty() ? "" : " -x JT_MPI_TEST_ABORT_RANK") + " '" JT_MPI "' ";
+}
+
+// The same, with mpirun's own binding options (mpirun() leaves its default).
+std::string mpirun_bound(int ranks, const std::string& binding) {
+    return "env ASAN_OPTIONS=detect_leaks=0 '" JT_MPIEXEC "' --oversubscribe --allow-run-as-root " +
+           binding + " -np " + std::to_string(ranks) + " '" JT_MPI "' ";
 }
 
 std::size_t count(const std::string& text, const std::string& what) {
@@ -121,6 +128,30 @@ TEST_F(Mpi, DeadRankFailsTheRunWithoutAPartialFile) {
         EXPECT_EQ(left, std::vector<std::string>{"out.bmp"});
         EXPECT_EQ(test::read_file(dir / "out.bmp"), test::read_file(dir / "cli.bmp"));
     }
+}
+
+TEST_F(Mpi, RankBoundToFewerCpusThanTheMachineSaysSo) {
+    if (std::thread::hardware_concurrency() < 2)
+        GTEST_SKIP() << "needs a machine of 2 CPUs or more";
+    const std::string scene = showcase + "--width 32 --height 18 -o out.bmp ";
+    const std::string warning = "CPUs (bound by mpirun, or by taskset); pass --bind-to none";
+    // Bound by taskset and left so by mpirun: each rank may use one CPU.
+    ProgramRun r = run_shell("taskset -c 0 " + mpirun_bound(2, "--bind-to none") + scene);
+    ASSERT_EQ(r.code, 0) << r.err;
+    EXPECT_EQ(count(r.err, warning), 2u) << r.err;
+    EXPECT_NE(r.err.find("rank 1 on "), std::string::npos) << r.err;
+    EXPECT_NE(r.err.find("may run on only 1 of the machine's "), std::string::npos) << r.err;
+    // Bound by mpirun itself, one core a rank.
+    r = run_shell(mpirun_bound(2, "--bind-to core") + scene);
+    ASSERT_EQ(r.code, 0) << r.err;
+    EXPECT_EQ(count(r.err, warning), 2u) << r.err;
+    // Unbound: no warning; quiet: none either.
+    r = run_shell(mpirun_bound(2, "--bind-to none") + scene);
+    ASSERT_EQ(r.code, 0) << r.err;
+    EXPECT_EQ(count(r.err, warning), 0u) << r.err;
+    r = run_shell("taskset -c 0 " + mpirun_bound(2, "--bind-to none") + scene + "-q");
+    ASSERT_EQ(r.code, 0) << r.err;
+    EXPECT_EQ(r.err, "");
 }
 
 }  // namespace

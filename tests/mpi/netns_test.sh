@@ -62,7 +62,7 @@ export JT_MPI_TEST_ABORT_RANK=${JT_MPI_TEST_ABORT_RANK:-} OMPI_ALLOW_RUN_AS_ROOT
 farm() {  # farm OUTPUT ARGS...: one rank a host, mpirun on h1
     local output=$1; shift
     (cd "$work" && timeout 100 ip netns exec "${tag}h1" unshare --uts sh -c 'hostname h1 && exec "$@"' sh \
-        "$mpirun" --host h1,h2,h3 -np 3 --map-by node \
+        "$mpirun" --host h1,h2,h3 -np 3 --map-by node --bind-to none \
         --mca btl tcp,self --mca btl_tcp_if_include jtn --mca oob_tcp_if_include jtn \
         --mca plm_rsh_agent "$work/agent" --mca plm_rsh_no_tree_spawn 1 \
         -x JT_MPI_TEST_ABORT_RANK -x ASAN_OPTIONS \
