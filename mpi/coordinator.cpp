@@ -29,11 +29,25 @@ double seconds_since(Clock::time_point start) {
 constexpr int max_copies = 2;
 constexpr int no_tile = -1;
 
+// A tile whose pixels are arriving, piece by piece.
+struct ArrivingTile {
+    std::int32_t tile = no_tile;  // none until its header is in
+    TileResultHeader header;
+    Image8 pixels;
+    std::size_t bytes_in = 0;
+};
+
 struct WorkerState {
     std::deque<std::int32_t> held;  // handed out and not yet back, in the order it renders them
     Clock::time_point last_heard;
     bool heard = false;    // it has said it is ready
     bool stopped = false;  // it has acknowledged the stop
+    // The message being received from it, if any: one at a time, in order.
+    MPI_Request receiving = MPI_REQUEST_NULL;
+    int receiving_tag = 0;
+    int receiving_bytes = 0;
+    TileResultHeader header_in;
+    ArrivingTile arriving;
 };
 
 class Coordinator {
@@ -47,7 +61,9 @@ class Coordinator {
           workers_(static_cast<std::size_t>(settings.ranks)),
           copies_(tiles.size(), 0),
           second_holder_(tiles.size(), no_tile),
-          pasted_tile_(tiles.size(), false) {}
+          pasted_tile_(tiles.size(), false) {
+        result_.rank_stats.resize(static_cast<std::size_t>(settings.ranks));
+    }
 
     CoordinatorResult run(const std::atomic<bool>& stop,
                           const std::function<void(const Image8&)>& deliver) {
@@ -90,11 +106,12 @@ class Coordinator {
     bool winding_down_ = false;  // the frame is in: the idle time no longer counts
     std::future<WorkTile> local_;
     std::int32_t local_tile_ = no_tile;
-    std::vector<std::uint8_t> message_;
+    RankStats stopped_stats_;  // where a worker's last message lands
     CoordinatorResult result_;
 
     void serve_once() {
-        bool busy = receive_one() | collect_local_tile();
+        bool busy = collect_local_tile();
+        for (int rank = 1; rank < settings_.ranks; ++rank) busy |= receive_from(rank);
         if (!busy) {
             if (winding_down_) {
                 std::this_thread::sleep_for(std::chrono::microseconds(100));
@@ -178,46 +195,90 @@ class Coordinator {
         if (second_holder_[i] == rank) ++result_.second_copies_won;
     }
 
-    bool receive_one() {
-        if (settings_.ranks < 2) return false;
-        int arrived = 0;
-        MPI_Status status;
-        MPI_Iprobe(MPI_ANY_SOURCE, MPI_ANY_TAG, MPI_COMM_WORLD, &arrived, &status);
-        if (!arrived) return false;
-        const int rank = status.MPI_SOURCE;
+    // Takes in what `rank` has sent, without waiting: a message is received
+    // with MPI_Irecv and tested on later calls, so that a transfer that stops
+    // halfway leaves the worker silent rather than rank 0 blocked.
+    bool receive_from(int rank) {
         WorkerState& worker = workers_[static_cast<std::size_t>(rank)];
+        if (worker.receiving == MPI_REQUEST_NULL && !start_receiving(rank, worker)) return false;
+        int done = 0;
+        MPI_Test(&worker.receiving, &done, MPI_STATUS_IGNORE);
+        if (!done) return false;
         worker.last_heard = Clock::now();
-        worker.heard = true;
-        if (status.MPI_TAG != tag_result) {
-            MPI_Recv(nullptr, 0, MPI_BYTE, rank, status.MPI_TAG, MPI_COMM_WORLD, MPI_STATUS_IGNORE);
-            if (status.MPI_TAG == tag_stopped) worker.stopped = true;
-            return true;
-        }
         const auto start = Clock::now();
-        int bytes = 0;
-        MPI_Get_count(&status, MPI_BYTE, &bytes);
-        message_.resize(static_cast<std::size_t>(bytes));
-        MPI_Recv(message_.data(), bytes, MPI_BYTE, rank, tag_result, MPI_COMM_WORLD,
-                 MPI_STATUS_IGNORE);
-        TileResultHeader header;
-        if (message_.size() >= sizeof header) std::memcpy(&header, message_.data(), sizeof header);
-        const auto held = std::find(worker.held.begin(), worker.held.end(), header.tile);
-        const bool known = message_.size() >= sizeof header && held != worker.held.end();
-        const PixelRect rect = known ? tiles_[static_cast<std::size_t>(header.tile)] : PixelRect{};
-        Image8 pixels(rect.width(), rect.height());
-        if (!known || message_.size() != sizeof header + pixels.rgb.size()) {
-            std::fprintf(stderr,
-                         "jtracer-mpi: rank %d sent a malformed tile; nothing was written\n", rank);
-            MPI_Abort(MPI_COMM_WORLD, 3);
-        }
-        worker.held.erase(held);
-        if (pasted_ < tiles_.size()) hand_out(rank);  // first, so that the worker stays busy
-        std::memcpy(pixels.rgb.data(), message_.data() + sizeof header, pixels.rgb.size());
-        paste(header.tile, rank, pixels, header.rays);
-        result_.bytes_received += message_.size();
-        ++result_.messages_received;
+        take_in(rank, worker);
         result_.stats.merge_seconds += seconds_since(start);
         return true;
+    }
+
+    bool start_receiving(int rank, WorkerState& worker) {
+        int arrived = 0;
+        MPI_Status status;
+        MPI_Iprobe(rank, MPI_ANY_TAG, MPI_COMM_WORLD, &arrived, &status);
+        if (!arrived) return false;
+        worker.last_heard = Clock::now();
+        worker.heard = true;
+        int bytes = 0;
+        MPI_Get_count(&status, MPI_BYTE, &bytes);
+        void* into = destination(worker, status.MPI_TAG, bytes);
+        if (!into) {
+            std::fprintf(stderr,
+                         "jtracer-mpi: rank %d sent a malformed message; nothing was written\n",
+                         rank);
+            MPI_Abort(MPI_COMM_WORLD, 3);
+        }
+        worker.receiving_tag = status.MPI_TAG;
+        worker.receiving_bytes = bytes;
+        MPI_Irecv(into, bytes, MPI_BYTE, rank, status.MPI_TAG, MPI_COMM_WORLD, &worker.receiving);
+        return true;
+    }
+
+    // Where a message of `bytes` with `tag` goes, or null when no such message is expected.
+    void* destination(WorkerState& worker, int tag, int bytes) {
+        const auto size = static_cast<std::size_t>(bytes);
+        ArrivingTile& arriving = worker.arriving;
+        if (tag == tag_heartbeat && size == 0) return &worker.header_in;
+        if (tag == tag_stopped && size == sizeof(RankStats)) return &stopped_stats_;
+        if (tag != tag_result) return nullptr;
+        if (arriving.tile == no_tile)
+            return size == sizeof(TileResultHeader) ? &worker.header_in : nullptr;
+        if (size == 0 || arriving.bytes_in + size > arriving.pixels.rgb.size()) return nullptr;
+        return arriving.pixels.rgb.data() + arriving.bytes_in;
+    }
+
+    void take_in(int rank, WorkerState& worker) {
+        ArrivingTile& arriving = worker.arriving;
+        if (worker.receiving_tag == tag_stopped) {
+            result_.rank_stats[static_cast<std::size_t>(rank)] = stopped_stats_;
+            worker.stopped = true;
+            return;
+        }
+        if (worker.receiving_tag != tag_result) return;
+        result_.bytes_received += static_cast<std::uint64_t>(worker.receiving_bytes);
+        if (arriving.tile == no_tile) {
+            const TileResultHeader& header = worker.header_in;
+            if (std::find(worker.held.begin(), worker.held.end(), header.tile) ==
+                worker.held.end()) {
+                std::fprintf(stderr,
+                             "jtracer-mpi: rank %d sent tile %d, which it was not given; nothing "
+                             "was written\n",
+                             rank, header.tile);
+                MPI_Abort(MPI_COMM_WORLD, 3);
+            }
+            const PixelRect& rect = tiles_[static_cast<std::size_t>(header.tile)];
+            arriving.tile = header.tile;
+            arriving.header = header;
+            arriving.pixels = Image8(rect.width(), rect.height());
+            arriving.bytes_in = 0;
+            return;
+        }
+        arriving.bytes_in += static_cast<std::size_t>(worker.receiving_bytes);
+        if (arriving.bytes_in < arriving.pixels.rgb.size()) return;
+        ++result_.tiles_received;
+        worker.held.erase(std::find(worker.held.begin(), worker.held.end(), arriving.tile));
+        if (pasted_ < tiles_.size()) hand_out(rank);  // first, so that the worker stays busy
+        paste(arriving.tile, rank, arriving.pixels, arriving.header.rays);
+        arriving.tile = no_tile;
     }
 
     // Records the first worker silent for longer than the timeout allows.

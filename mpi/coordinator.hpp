@@ -28,16 +28,17 @@ struct CoordinatorSettings {
 };
 
 struct CoordinatorResult {
-    bool complete = false;             // every tile came back (and `deliver` was called)
-    std::optional<int> lost_rank;      // the worker that stopped answering, if one did
-    double lost_silence = 0.0;         // how long it had been silent
-    std::uint64_t rays = 0;            // over all ranks
-    std::uint64_t bytes_received = 0;  // tile messages from other ranks
-    int messages_received = 0;
-    int second_copies = 0;      // tiles handed out again once every tile was out
-    int second_copies_won = 0;  // of those, the ones whose second copy came back first
-    double seconds = 0.0;       // from the first tile handed out to the last pasted in
-    RankStats stats;            // rank 0's own
+    bool complete = false;              // every tile came back (and `deliver` was called)
+    std::optional<int> lost_rank;       // the worker that stopped answering, if one did
+    double lost_silence = 0.0;          // how long it had been silent
+    std::uint64_t rays = 0;             // over all ranks
+    std::uint64_t bytes_received = 0;   // tile messages from other ranks
+    int tiles_received = 0;             // from other ranks
+    int second_copies = 0;              // tiles handed out again once every tile was out
+    int second_copies_won = 0;          // of those, the ones whose second copy came back first
+    double seconds = 0.0;               // from the first tile handed out to the last pasted in
+    RankStats stats;                    // rank 0's own
+    std::vector<RankStats> rank_stats;  // every worker's, as it sent them when it stopped
 };
 
 // Renders `tiles` of a `width` x `height` frame over the job's ranks; as soon

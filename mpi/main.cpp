@@ -110,9 +110,9 @@ void print_stats(const CoordinatorResult& result, const std::vector<RankStats>& 
                  result.second_copies, result.second_copies_won);
     std::fprintf(stderr,
                  "stats: rank 0 coordinator: waiting %.3f s (%.1f%%), merging %.3f s (%.1f%%), "
-                 "%d tile messages, %.2f MB received\n",
+                 "%d tiles and %.2f MB received\n",
                  r0.wait_seconds, 100.0 * r0.wait_seconds / loop, r0.merge_seconds,
-                 100.0 * r0.merge_seconds / loop, result.messages_received,
+                 100.0 * r0.merge_seconds / loop, result.tiles_received,
                  static_cast<double>(result.bytes_received) / 1e6);
     for (std::size_t i = 0; i < ranks.size(); ++i) {
         const RankStats& s = ranks[i];
@@ -159,9 +159,7 @@ int run(int argc, char** argv, int rank, int ranks) {
 
     if (rank != 0) {
         gather_host_names(rank, ranks);
-        RankStats worked = run_worker(*frame, tiles);
-        worked.setup_seconds = mine.setup_seconds;
-        MPI_Gather(&worked, sizeof worked, MPI_BYTE, nullptr, 0, MPI_BYTE, 0, MPI_COMM_WORLD);
+        run_worker(*frame, tiles, mine.setup_seconds);
         return exit_ok;
     }
 
@@ -199,9 +197,8 @@ int run(int argc, char** argv, int rank, int ranks) {
         return 130;
     }
     result.stats.setup_seconds = mine.setup_seconds;
-    std::vector<RankStats> stats(static_cast<std::size_t>(ranks));
-    MPI_Gather(&result.stats, sizeof(RankStats), MPI_BYTE, stats.data(), sizeof(RankStats),
-               MPI_BYTE, 0, MPI_COMM_WORLD);
+    std::vector<RankStats> stats = result.rank_stats;
+    stats.front() = result.stats;
     if (!*written) {
         std::cerr << "jtracer-mpi: " << written->error().message << "\n";
         return exit_io_error;

@@ -1,12 +1,17 @@
 #pragma once
 // What the ranks say to each other. Rank 0 sends a worker the index of its
-// next tile (tag_assign); the worker answers with a TileResultHeader followed by
-// the tile's RGB bytes (tag_result). A worker is kept two tiles ahead, so that
-// it never idles for a round trip. A worker that has been silent for
-// heartbeat_seconds (waiting, or rendering a long tile) sends an empty
-// tag_heartbeat, so that rank 0 can tell a slow rank from a lost one. Once the
-// frame is complete rank 0 sends tag_stop; the worker drops the tiles it still
-// holds and answers tag_stopped, the last thing it sends.
+// next tile (tag_assign); the worker answers with a TileResultHeader and then
+// the tile's RGB bytes in pieces of at most result_piece_bytes, each a
+// tag_result message. A worker is kept two tiles ahead, so that it never idles
+// for a round trip. A worker that has been silent for heartbeat_seconds
+// (waiting, or rendering a long tile) sends an empty tag_heartbeat, so that
+// rank 0 can tell a slow rank from a lost one. Once the frame is complete rank
+// 0 sends tag_stop; the worker drops the tiles it still holds and answers
+// tag_stopped with its RankStats, the last thing it sends.
+//
+// Rank 0 receives without ever blocking, and a piece is small enough to cross
+// a slow link well within the rank timeout, so a tile that stops arriving
+// halfway (a link pulled mid-transfer) is a silence like any other.
 
 #include <mpi.h>
 
@@ -21,6 +26,8 @@ constexpr int tag_stop = 4;
 constexpr int tag_stopped = 5;
 constexpr int tiles_ahead = 2;
 constexpr double heartbeat_seconds = 1.0;
+// 32 KiB: a quarter of a second at 1 Mbit/s, and within OpenMPI's eager limit.
+constexpr int result_piece_bytes = 32 * 1024;
 
 struct TileResultHeader {
     std::int32_t tile = 0;
@@ -29,7 +36,7 @@ struct TileResultHeader {
     double seconds = 0.0;  // the worker's time rendering it
 };
 
-// Per-rank figures gathered at the end for --stats.
+// Per-rank figures, sent with tag_stopped, for --stats.
 struct RankStats {
     double tiles = 0;
     double render_seconds = 0;  // rendering tiles

@@ -2,9 +2,9 @@
 
 #include "work_tiles.hpp"
 
+#include <algorithm>
 #include <chrono>
 #include <cstdlib>
-#include <cstring>
 #include <future>
 #include <optional>
 #include <string>
@@ -30,10 +30,12 @@ bool told_to_die() {
 // that calls MPI) keeps rank 0 told that this rank is alive.
 class Worker {
   public:
-    Worker(const PreparedFrame& frame, const std::vector<PixelRect>& tiles)
-        : frame_(frame), tiles_(tiles) {}
+    Worker(const PreparedFrame& frame, const std::vector<PixelRect>& tiles, double setup_seconds)
+        : frame_(frame), tiles_(tiles) {
+        stats_.setup_seconds = setup_seconds;
+    }
 
-    RankStats run() {
+    void run() {
         const bool die = told_to_die();
         say(tag_heartbeat);  // ready: rank 0 starts listening for this rank's silence
         while (true) {
@@ -49,8 +51,7 @@ class Worker {
             if (stop_arrived()) break;
             send_result(*index, tile);
         }
-        say(tag_stopped);
-        return stats_;
+        MPI_Send(&stats_, sizeof stats_, MPI_BYTE, 0, tag_stopped, MPI_COMM_WORLD);
     }
 
   private:
@@ -59,7 +60,6 @@ class Worker {
     RankStats stats_;
     Clock::time_point last_said_;
     bool stopped_ = false;
-    std::vector<std::uint8_t> message_;
 
     void say(int tag) {
         send_signal(0, tag);
@@ -113,20 +113,22 @@ class Worker {
 
     void send_result(std::int32_t index, const WorkTile& tile) {
         TileResultHeader header{index, 0, tile.rays, tile.seconds};
-        message_.resize(sizeof header + tile.pixels.rgb.size());
-        std::memcpy(message_.data(), &header, sizeof header);
-        std::memcpy(message_.data() + sizeof header, tile.pixels.rgb.data(),
-                    tile.pixels.rgb.size());
-        MPI_Send(message_.data(), static_cast<int>(message_.size()), MPI_BYTE, 0, tag_result,
-                 MPI_COMM_WORLD);
+        MPI_Send(&header, sizeof header, MPI_BYTE, 0, tag_result, MPI_COMM_WORLD);
+        const std::vector<std::uint8_t>& rgb = tile.pixels.rgb;
+        for (std::size_t at = 0; at < rgb.size(); at += result_piece_bytes) {
+            const std::size_t piece = std::min<std::size_t>(result_piece_bytes, rgb.size() - at);
+            MPI_Send(rgb.data() + at, static_cast<int>(piece), MPI_BYTE, 0, tag_result,
+                     MPI_COMM_WORLD);
+        }
         last_said_ = Clock::now();
     }
 };
 
 }  // namespace
 
-RankStats run_worker(const PreparedFrame& frame, const std::vector<PixelRect>& tiles) {
-    return Worker(frame, tiles).run();
+void run_worker(const PreparedFrame& frame, const std::vector<PixelRect>& tiles,
+                double setup_seconds) {
+    Worker(frame, tiles, setup_seconds).run();
 }
 
 }  // namespace jt::mpi

@@ -10,6 +10,9 @@
 
 namespace jt::mpi {
 
-RankStats run_worker(const PreparedFrame& frame, const std::vector<PixelRect>& tiles);
+// Its figures, with `setup_seconds` (how long it took to prepare the scene), go
+// to rank 0 with its last message.
+void run_worker(const PreparedFrame& frame, const std::vector<PixelRect>& tiles,
+                double setup_seconds);
 
 }  // namespace jt::mpi

@@ -74,7 +74,7 @@ done
 tile_ms=$(sed -n 's/.*rank 0: .*(\([0-9.]*\) ms a tile).*/\1/p' "$work/stats11")
 setup_s=$(sed -n 's/.*rank 0: .*setup \([0-9.]*\) s.*/\1/p' "$work/stats11")
 # rank 0's merge cost a received tile, from the 4-rank run
-merge_ms=$(sed -n 's/.*merging \([0-9.]*\) s .*, \([0-9]*\) tile messages.*/\1 \2/p' "$work/stats41" |
+merge_ms=$(sed -n 's/.*merging \([0-9.]*\) s .*, \([0-9]*\) tiles and .*/\1 \2/p' "$work/stats41" |
     awk '{ printf "%.4f", ($2 > 0 ? 1000 * $1 / $2 : 0) }')
 echo
 echo "Estimate for 7680x4320, $samples samples, ${tile}x${tile} tiles: ${tile_ms} ms a tile on one core,"

@@ -3,7 +3,7 @@
 # a bridge, one rank in each, talking TCP only; mpirun reaches the hosts through
 # a launcher agent (ip netns exec) instead of ssh. Checks the CLI's bytes, the
 # same bytes with one host slowed to about 1 Mbit/s, a killed rank and a pulled
-# link. Needs root (CAP_NET_ADMIN); skips (exit 77) where namespaces are refused.
+# link, also in the middle of a big tile's transfer. Needs root (CAP_NET_ADMIN); skips (exit 77) where namespaces are refused.
 # Usage: netns_test.sh JTRACER_CLI JTRACER_MPI MPIRUN SCENE
 set -u
 cli=$(realpath "$1") mpi=$(realpath "$2") mpirun=$(realpath "$3") scene=$(realpath "$4")
@@ -61,7 +61,7 @@ chmod +x "$work/agent"
 export JT_MPI_TEST_ABORT_RANK=${JT_MPI_TEST_ABORT_RANK:-} OMPI_ALLOW_RUN_AS_ROOT=1 OMPI_ALLOW_RUN_AS_ROOT_CONFIRM=1 ASAN_OPTIONS=detect_leaks=0
 farm() {  # farm OUTPUT ARGS...: one rank a host, mpirun on h1
     local output=$1; shift
-    (cd "$work" && timeout 100 ip netns exec "${tag}h1" unshare --uts sh -c 'hostname h1 && exec "$@"' sh \
+    (cd "$work" && timeout -k 5 100 ip netns exec "${tag}h1" unshare --uts sh -c 'hostname h1 && exec "$@"' sh \
         "$mpirun" --host h1,h2,h3 -np 3 --map-by node --bind-to none \
         --mca btl tcp,self --mca btl_tcp_if_include jtn --mca oob_tcp_if_include jtn \
         --mca plm_rsh_agent "$work/agent" --mca plm_rsh_no_tree_spawn 1 \
@@ -78,6 +78,30 @@ no_strays() {  # no process of ours may be left on the hosts still up (daemons t
         [ -z "$(ip netns pids "${tag}$host")" ] || fail "processes left on $host after 10 s: $(ip netns pids "${tag}$host")"
     done
 }
+# After a lost host the other ranks may have rendered its tiles again and
+# finished the frame before it was given up: an image is then complete and
+# jtracer-cli's, never partial; no temporary file is ever left.
+complete_or_nothing() {  # complete_or_nothing CASE OUTPUT REFERENCE SETTINGS...
+    local what=$1 output=$2 reference=$3; shift 3
+    if [ -e "$work/$output" ]; then
+        [ -e "$work/$reference" ] || "$cli" "$scene" "$@" -q -o "$work/$reference" 2> /dev/null ||
+            fail "jtracer-cli failed"
+        cmp -s "$work/$reference" "$work/$output" && echo "(the frame was finished without it, and written)" ||
+            fail "$what: a partial image was written"
+    fi
+    ls "$work" | grep -q "^$output." && fail "$what: a temporary file was left"
+}
+pulled_link_ended() {  # pulled_link_ended CASE LOG CODE SECONDS
+    echo "exit $3 $4 s after the link went down: $(grep -o 'rank [0-9] on [a-z0-9]* stopped answering' "$2")"
+    [ "$3" != 0 ] && [ "$3" != 124 ] || fail "$1: exit $3 (124: hung)"
+    awk "BEGIN { exit !($4 < 30) }" || fail "$1: the run took $4 s to end"
+    grep -q "rank 2 on h3 stopped answering" "$2" || fail "$1: no message naming rank 2 on h3: $(cat "$2")"
+}
+slow_h3() {  # about 1 Mbit/s both ways
+    tc qdisc add dev "${tag}v3" root tbf rate 1mbit burst 32kbit latency 400ms &&
+        ip netns exec "${tag}h3" tc qdisc add dev jtn root tbf rate 1mbit burst 32kbit latency 400ms ||
+        fail "tc tbf refused"
+}
 tile_counts() { grep -o 'rank [0-9]: [0-9]* tiles' "$1" | tr '\n' ' '; }
 
 settings=(--width 240 --height 144 --samples 2)
@@ -90,9 +114,7 @@ cmp -s "$work/cli.bmp" "$work/even.bmp" && echo "identical to jtracer-cli; $(til
 no_strays h1 h2 h3
 
 echo "== h3 slowed to 1 Mbit/s (tbf both ways)"
-tc qdisc add dev "${tag}v3" root tbf rate 1mbit burst 32kbit latency 400ms &&
-    ip netns exec "${tag}h3" tc qdisc add dev jtn root tbf rate 1mbit burst 32kbit latency 400ms ||
-    fail "tc tbf refused"
+slow_h3
 farm slow.bmp "${settings[@]}" --tile-size 16 --stats 2> "$work/slow.log" || fail "slowed run failed: $(cat "$work/slow.log")"
 cmp -s "$work/cli.bmp" "$work/slow.bmp" && echo "identical to jtracer-cli; $(tile_counts "$work/slow.log")" ||
     fail "slowed host: bytes differ from jtracer-cli's"
@@ -108,13 +130,7 @@ took=$(awk "BEGIN { print $(date +%s.%N) - $start }")
 echo "exit $code after $took s"
 [ "$code" != 0 ] && [ "$code" != 124 ] || fail "killed rank: exit $code (124: hung): $(cat "$work/killed.log")"
 grep -q "rank 2" "$work/killed.log" || fail "killed rank: no message naming rank 2: $(cat "$work/killed.log")"
-# The other ranks may have rendered the dead rank's tiles again and finished
-# the frame first: an image is then complete, never partial.
-if [ -e "$work/killed.bmp" ]; then
-    cmp -s "$work/cli.bmp" "$work/killed.bmp" && echo "(the frame was finished without it, and written)" ||
-        fail "killed rank: a partial image was written"
-fi
-ls "$work" | grep -q 'killed\.bmp.' && fail "killed rank: a temporary file was left"
+complete_or_nothing "killed rank" killed.bmp cli.bmp "${settings[@]}"
 no_strays h1 h2 h3
 
 echo "== h3's link pulled mid-frame"
@@ -126,21 +142,32 @@ ip link set "${tag}v3" down
 start=$(date +%s.%N)
 wait $farm_pid
 code=$?
-took=$(awk "BEGIN { print $(date +%s.%N) - $start }")
-echo "exit $code $took s after the link went down: $(grep -o 'rank [0-9] on [a-z0-9]* stopped answering' "$work/pulled.log")"
-[ "$code" != 0 ] && [ "$code" != 124 ] || fail "pulled link: exit $code (124: hung)"
-awk "BEGIN { exit !($took < 30) }" || fail "pulled link: the run took $took s to end"
-grep -q "rank 2 on h3 stopped answering" "$work/pulled.log" || fail "pulled link: no message naming rank 2 on h3: $(cat "$work/pulled.log")"
-# As with a killed rank, the others may finish the frame before the lost host
-# is given up: then the image is complete and the CLI's, never partial.
-if [ -e "$work/pulled.bmp" ]; then
-    "$cli" "$scene" "${pulled_settings[@]}" -q -o "$work/cli-pulled.bmp" 2> /dev/null ||
-        fail "jtracer-cli failed"
-    cmp -s "$work/cli-pulled.bmp" "$work/pulled.bmp" &&
-        echo "(the frame was finished without it, and written)" ||
-        fail "pulled link: a partial image was written"
-fi
-ls "$work" | grep -q 'pulled\.bmp.' && fail "pulled link: a temporary file was left"
+pulled_link_ended "pulled link" "$work/pulled.log" $code "$(awk "BEGIN { print $(date +%s.%N) - $start }")"
+complete_or_nothing "pulled link" pulled.bmp cli-pulled.bmp "${pulled_settings[@]}"
 no_strays h1 h2  # h3 is unreachable: its processes are the cleanup's to end
+ip netns pids "${tag}h3" | xargs -r kill -9
+ip link set "${tag}v3" up
+
+# A 512-pixel tile is 786 KB, over 6 s at 1 Mbit/s: the link goes down while
+# rank 0 is taking in h3's first tile.
+echo "== h3 slowed, its link pulled in the middle of a 786 KB tile"
+slow_h3
+big_settings=(--width 2048 --height 1024 --samples 1)
+received() { cat "/sys/class/net/${tag}v3/statistics/rx_bytes"; }
+before=$(received)
+farm big.bmp "${big_settings[@]}" --tile-size 512 2> "$work/big.log" &
+farm_pid=$!
+for tries in $(seq 600); do  # until 300 KB of h3's tile have left it
+    [ $(( $(received) - before )) -gt 300000 ] && break
+    sleep 0.1
+done
+ip link set "${tag}v3" down
+echo "link down after $(( ($(received) - before) / 1000 )) KB from h3"
+start=$(date +%s.%N)
+wait $farm_pid
+code=$?
+pulled_link_ended "big tile" "$work/big.log" $code "$(awk "BEGIN { print $(date +%s.%N) - $start }")"
+complete_or_nothing "big tile" big.bmp cli-big.bmp "${big_settings[@]}"
+no_strays h1 h2
 
 [ "$failures" = 0 ] && echo "PASS" || { echo "$failures failure(s)"; exit 1; }
