@@ -3,7 +3,8 @@
 # a bridge, one rank in each, talking TCP only; mpirun reaches the hosts through
 # a launcher agent (ip netns exec) instead of ssh. Checks the CLI's bytes, the
 # same bytes with one host slowed to about 1 Mbit/s, a killed rank and a pulled
-# link, also in the middle of a big tile's transfer. Needs root (CAP_NET_ADMIN); skips (exit 77) where namespaces are refused.
+# link, also in the middle of a big tile's transfer. Needs root (CAP_NET_ADMIN);
+# skips (exit 77) where namespaces are refused.
 # Usage: netns_test.sh JTRACER_CLI JTRACER_MPI MPIRUN SCENE
 set -u
 cli=$(realpath "$1") mpi=$(realpath "$2") mpirun=$(realpath "$3") scene=$(realpath "$4")
