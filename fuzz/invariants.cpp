@@ -4,8 +4,11 @@
 #include "jtracer/diagnostics.hpp"
 #include "jtracer/parser.hpp"
 #include "jtracer/serializer.hpp"
+#include "jtracer/texture.hpp"
 #include "jtracer/validate.hpp"
 
+#include <cstdio>
+#include <cstdlib>
 #include <vector>
 
 namespace jt::fuzz {
@@ -87,6 +90,26 @@ std::string check_bmp_bytes(std::span<const std::uint8_t> bytes) {
     if (!again) return "re-encoded image does not decode: " + again.error().message;
     if (!(*again == image)) return "re-encoded image decodes to different pixels";
     return {};
+}
+
+std::string check_texture_bytes(std::span<const std::uint8_t> bytes) {
+    const Expected<Texture> decoded = decode_texture(bytes);
+    if (!decoded) return decoded.error().message.empty() ? "an error without a message" : "";
+    const Texture& t = *decoded;
+    const auto texels = static_cast<std::int64_t>(t.width) * t.height;
+    if (t.width <= 0 || t.height <= 0 || texels > kMaxTextureTexels ||
+        t.rgb.size() != static_cast<std::size_t>(texels) * 3)
+        return "decoded texture has inconsistent size " + std::to_string(t.width) + "x" +
+               std::to_string(t.height) + " with " + std::to_string(t.rgb.size()) + " values";
+    for (float v : t.rgb)
+        if (!(v >= 0.0f && v <= 1.0f)) return "a texel value outside [0, 1]: " + std::to_string(v);
+    return {};
+}
+
+void abort_if_broken(const std::string& broken) {
+    if (broken.empty()) return;
+    std::fprintf(stderr, "invariant broken: %s\n", broken.c_str());
+    std::abort();
 }
 
 }  // namespace jt::fuzz

@@ -28,4 +28,13 @@ std::string check_diagnostics_within(const std::vector<Diagnostic>& diagnostics,
 // image, or an image of consistent size that encodes and decodes back equal.
 std::string check_bmp_bytes(std::span<const std::uint8_t> bytes);
 
+// Decodes `bytes` as an image map (PNG, JPEG or BMP through stb_image) and
+// checks: either a message, or a texture within the size cap whose texel
+// count matches its size and whose every value is finite, in [0, 1].
+std::string check_texture_bytes(std::span<const std::uint8_t> bytes);
+
+// For the fuzz targets: a broken invariant is printed and aborts, so that
+// libFuzzer keeps the input.
+void abort_if_broken(const std::string& broken);
+
 }  // namespace jt::fuzz
