@@ -9,6 +9,7 @@
 #include "keys.hpp"
 #include "viewer_frame.hpp"
 #include "viewer_test_files.hpp"
+#include "wakeup.hpp"
 
 #include <gtest/gtest.h>
 #include <glm/geometric.hpp>
@@ -39,7 +40,7 @@ class ViewerGl : public ::testing::Test {
   protected:
     void SetUp() override { ASSERT_TRUE(viewer.ok()) << viewer.error(); }
     HeadlessViewer viewer{320, 240};
-    AppState state{test_config()};  // after the viewer: its texture goes first
+    AppState state{test_config()};
 };
 
 TEST_F(ViewerGl, TextureAndScreenShowExactlyTheCoresImage) {
@@ -49,7 +50,7 @@ TEST_F(ViewerGl, TextureAndScreenShowExactlyTheCoresImage) {
     ASSERT_TRUE(viewer.run_until_complete(state, kTimeout)) << state.render_note;
     const Image8 expected = core_render(state.doc.scene, 0);
     EXPECT_EQ(state.display, expected);
-    EXPECT_EQ(state.presenter.read_texture(), expected);
+    EXPECT_EQ(viewer.presenter().read_texture(), expected);
 
     // On screen, the image sits centred at one pixel per pixel.
     const Image8 screen = viewer.screenshot();
@@ -96,10 +97,10 @@ TEST_F(ViewerGl, FitFillsTheAreaKeepingTheAspect) {
 TEST_F(ViewerGl, OnlyChangedRegionsAreUploadedAfterTheFirst) {
     open_scene(state, kScene);
     ASSERT_TRUE(viewer.run_until_complete(state, kTimeout));
-    const long long after_first = state.presenter.texels_uploaded();
+    const long long after_first = viewer.presenter().texels_uploaded();
     EXPECT_GE(after_first, 64 * 48);
     for (int i = 0; i < 5; ++i) viewer.frame(state);
-    EXPECT_EQ(state.presenter.texels_uploaded(), after_first) << "nothing changed, nothing sent";
+    EXPECT_EQ(viewer.presenter().texels_uploaded(), after_first) << "nothing changed, nothing sent";
 }
 
 TEST_F(ViewerGl, SwitchingCameraShowsThatCamerasRender) {
@@ -111,7 +112,7 @@ TEST_F(ViewerGl, SwitchingCameraShowsThatCamerasRender) {
     ASSERT_TRUE(viewer.run_until_complete(state, kTimeout));
     EXPECT_NE(state.display, front);
     EXPECT_EQ(state.display, core_render(state.doc.scene, 1));
-    EXPECT_EQ(state.presenter.read_texture(), state.display);
+    EXPECT_EQ(viewer.presenter().read_texture(), state.display);
 }
 
 TEST_F(ViewerGl, MaterialEditChangesTheImageToTheEditedScenesRender) {
@@ -152,7 +153,7 @@ TEST_F(ViewerGl, BrokenReloadKeepsTheLastImageAndListsDiagnostics) {
         << format_diagnostics(state.doc);
     EXPECT_EQ(state.doc.scene, good_scene);
     EXPECT_EQ(state.display, good);
-    EXPECT_EQ(state.presenter.read_texture(), good);
+    EXPECT_EQ(viewer.presenter().read_texture(), good);
     EXPECT_EQ(state.renderer.jobs_started(), jobs) << "no render of a broken scene";
 
     // Deleted, then garbage: still no crash, still the last image.
@@ -259,7 +260,7 @@ TEST_F(ViewerGl, ResumeContinuesThePausedRenderWhereItStopped) {
     EXPECT_EQ(state.renderer.jobs_started(), jobs) << "the same job continued";
     // Only the passes left at the pause ran (the interrupted one again).
     EXPECT_EQ(state.renderer.passes_since_start(), at_pause.pass_count - at_pause.pass);
-    EXPECT_EQ(state.presenter.read_texture(), core_render(state.doc.scene, 0));
+    EXPECT_EQ(viewer.presenter().read_texture(), core_render(state.doc.scene, 0));
 }
 
 TEST_F(ViewerGl, EditsWhilePausedRenderAfresh) {
@@ -272,7 +273,7 @@ TEST_F(ViewerGl, EditsWhilePausedRenderAfresh) {
     viewer.press_key(state, keys::space);
     ASSERT_TRUE(viewer.run_until_complete(state, kTimeout));
     EXPECT_EQ(state.renderer.jobs_started(), jobs + 1);
-    EXPECT_EQ(state.presenter.read_texture(), core_render(state.doc.scene, 0));
+    EXPECT_EQ(viewer.presenter().read_texture(), core_render(state.doc.scene, 0));
 }
 
 TEST_F(ViewerGl, AnEditCancelsTheRunningRenderAndRestartsAtOnce) {
@@ -336,8 +337,8 @@ TEST_F(ViewerGl, ResizingTheRenderResizesTheTexture) {
     });
     ASSERT_TRUE(viewer.run_until_complete(state, kTimeout));
     EXPECT_EQ(state.display.width, 40);
-    EXPECT_EQ(state.presenter.width(), 40);
-    EXPECT_EQ(state.presenter.read_texture(), core_render(state.doc.scene, 0));
+    EXPECT_EQ(viewer.presenter().width(), 40);
+    EXPECT_EQ(viewer.presenter().read_texture(), core_render(state.doc.scene, 0));
 }
 
 TEST_F(ViewerGl, ShortcutsReloadAndSaveTheImage) {
@@ -354,9 +355,9 @@ TEST_F(ViewerGl, ShortcutsReloadAndSaveTheImage) {
     ASSERT_TRUE(state.pending_reload.has_value()) << state.message;
     EXPECT_EQ(state.doc.scene.settings.recurse_depth, 0);
     viewer.frame(state);
-    EXPECT_EQ(find_item(state.ui_items, "Reload, re-apply my edits"), nullptr)
+    EXPECT_EQ(find_item(viewer.ui_items(), "Reload, re-apply my edits"), nullptr)
         << "the same text: nothing to re-apply the edits to";
-    EXPECT_NE(find_item(state.ui_items, "Keep mine"), nullptr);
+    EXPECT_NE(find_item(viewer.ui_items(), "Keep mine"), nullptr);
     resolve_reload(state, ReloadChoice::drop_edits);
     EXPECT_EQ(state.doc.scene.settings.recurse_depth, 2);
     EXPECT_FALSE(state.undo.can_undo());
@@ -418,6 +419,46 @@ TEST_F(ViewerGl, EscapeAsksToQuit) {
     open_scene(state, kScene);
     viewer.press_key(state, keys::escape);
     EXPECT_TRUE(state.quit);
+}
+
+using Clock = std::chrono::steady_clock;
+
+// The window's loop, as main.cpp runs it: frames, and sleeps while waiting
+// for the workers. The frame after the render's wakeup shows its first pass.
+TEST(Wakeup, FrameAfterTheRendersWakeupShowsTheFirstPass) {
+    HeadlessViewer viewer(320, 240);
+    ASSERT_TRUE(viewer.ok()) << viewer.error();
+    AppState state(test_config());
+    request_open(state, kScene);
+    const auto deadline = Clock::now() + kTimeout;
+    int frames = 0;
+    while (!viewer.presenter().has_image() && Clock::now() < deadline) {
+        const std::uint64_t seen = state.wakeup.count();
+        if (waiting_for_workers(state)) {
+            ASSERT_TRUE(state.wakeup.wait(seen, deadline));
+            EXPECT_FALSE(waiting_for_workers(state)) << "woken with something to show";
+        }
+        viewer.frame(state);
+        ++frames;
+    }
+    ASSERT_TRUE(viewer.presenter().has_image());
+    EXPECT_GT(state.renderer.passes_since_start(), 0);
+    EXPECT_LE(frames, 3) << "one frame takes the load in, the next shows the first pass";
+    EXPECT_FALSE(waiting_for_workers(state));
+}
+
+TEST(Wakeup, FrameThatStartsTheRenderShowsAFirstPassDoneWithinTheWait) {
+    HeadlessViewer viewer(320, 240);
+    ASSERT_TRUE(viewer.ok()) << viewer.error();
+    ViewerConfig config = test_config();
+    config.first_pass_wait = std::chrono::minutes(1);  // long enough for any machine
+    AppState state(config);
+    open_scene(state, kScene);
+    viewer.frame(state);
+    EXPECT_EQ(state.renderer.jobs_started(), 1u);
+    EXPECT_GT(state.renderer.passes_since_start(), 0);
+    EXPECT_TRUE(viewer.presenter().has_image()) << "in the texture in the frame that started it";
+    EXPECT_GE(state.passes_shown, 1);
 }
 
 }  // namespace

@@ -252,12 +252,12 @@ class Monkey {
 
     // One of the controls the last frame drew, or nullopt (after a frame) when none.
     std::optional<UiItem> some_item() {
-        if (state_.ui_items.empty()) {
+        if (viewer_.ui_items().empty()) {
             frame();
             return std::nullopt;
         }
-        return state_
-            .ui_items[static_cast<std::size_t>(pick(static_cast<int>(state_.ui_items.size())))];
+        const std::vector<UiItem>& items = viewer_.ui_items();
+        return items[static_cast<std::size_t>(pick(static_cast<int>(items.size())))];
     }
 
     void click_some_item() {

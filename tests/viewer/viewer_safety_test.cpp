@@ -41,7 +41,7 @@ class ViewerSafety : public ::testing::Test {
 
     // The middle of the image area (right of the panel, above the status line).
     ImVec2 image_centre() const {
-        const UiItem* panel = find_item(state.ui_items, "panel");
+        const UiItem* panel = find_item(viewer.ui_items(), "panel");
         const float x0 = panel ? panel->rect.x1 : 0.0f;
         return ImVec2((x0 + viewer.width()) * 0.5f, viewer.height() * 0.4f);
     }
@@ -172,9 +172,9 @@ TEST_F(ViewerSafety, ReloadPromptSaysWhetherTheFileChanged) {
     EXPECT_EQ(state.message.find("was reloaded"), std::string::npos) << state.message;
     viewer.frame(state);
     EXPECT_EQ(state.doc.diagnostics.size(), live.size()) << "still about the edited scene";
-    EXPECT_EQ(find_item(state.ui_items, "Reload, re-apply my edits"), nullptr);
+    EXPECT_EQ(find_item(viewer.ui_items(), "Reload, re-apply my edits"), nullptr);
     for (const char* choice : {"Reload, drop my edits", "Keep mine"}) {
-        const UiItem* item = find_item(state.ui_items, choice);
+        const UiItem* item = find_item(viewer.ui_items(), choice);
         ASSERT_NE(item, nullptr) << choice;
         EXPECT_FALSE(item->clipped) << choice;
     }
@@ -184,7 +184,7 @@ TEST_F(ViewerSafety, ReloadPromptSaysWhetherTheFileChanged) {
     ASSERT_TRUE(state.pending_reload);
     EXPECT_NE(state.message.find("changed on disk"), std::string::npos) << state.message;
     viewer.frame(state);
-    EXPECT_NE(find_item(state.ui_items, "Reload, re-apply my edits"), nullptr);
+    EXPECT_NE(find_item(viewer.ui_items(), "Reload, re-apply my edits"), nullptr);
 }
 
 TEST_F(ViewerSafety, ABrokenFileAtStartUpIsQuotedWithItsLineAndCaret) {
@@ -348,10 +348,10 @@ TEST_F(ViewerSafety, SavedNumbersAreShortAndOneComponentEditsKeepTheRestAsWritte
     ASSERT_TRUE(viewer.click(state, "point_light 1"));
     viewer.frame(state);
     const UiItem* light = nullptr;
-    for (const UiItem& item : state.ui_items)
+    for (const UiItem& item : viewer.ui_items())
         if (item.label == "position") light = &item;  // the last: the light's
     ASSERT_NE(light, nullptr);
-    ASSERT_LT(light->rect.y1, find_item(state.ui_items, "panel")->rect.y1);
+    ASSERT_LT(light->rect.y1, find_item(viewer.ui_items(), "panel")->rect.y1);
     const float x = light->rect.x0 + (light->rect.x1 - light->rect.x0) * 0.15f;
     const float y = (light->rect.y0 + light->rect.y1) * 0.5f;
     viewer.drag(state, 0, x, y, x + 30, y);
@@ -403,7 +403,7 @@ void expect_nothing_clipped(HeadlessViewer& viewer, AppState& state, const char*
     for (const char* node : {"sphere 2", "point_light 1"}) viewer.click(state, node);
     for (int i = 0; i < 3; ++i) viewer.frame(state);
     int visible = 0;
-    for (const UiItem& item : state.ui_items) {
+    for (const UiItem& item : viewer.ui_items()) {
         EXPECT_FALSE(item.clipped)
             << what << ": " << item.label << " is cut off at x " << item.rect.x1;
         if (!item.enabled) {
@@ -422,7 +422,7 @@ TEST(ViewerLayout, NothingIsClippedAt1280x720) {
     edit_scene(state, [](Scene& s) { s.settings.width = 64; });  // a warning to show
     expect_nothing_clipped(viewer, state, "1280x720");
     // The image keeps room beside the panel.
-    const UiItem* panel = find_item(state.ui_items, "panel");
+    const UiItem* panel = find_item(viewer.ui_items(), "panel");
     ASSERT_NE(panel, nullptr);
     EXPECT_LT(panel->rect.x1, 1280 * 0.5f);
 }
@@ -435,7 +435,7 @@ TEST(ViewerLayout, NothingIsClippedAtTwiceTheScale) {
     open_scene(state, fs::path(JT_SOURCE_DIR) / "scenes" / "showcase.jts");
     expect_nothing_clipped(viewer, state, "2x");
     EXPECT_GE(ImGui::GetFontSize(), 28.0f) << "the font follows the scale";
-    const UiItem* panel = find_item(state.ui_items, "panel");
+    const UiItem* panel = find_item(viewer.ui_items(), "panel");
     ASSERT_NE(panel, nullptr);
     EXPECT_LT(panel->rect.x1, 2560 * 0.5f);
 }
@@ -452,7 +452,7 @@ TEST(ViewerLayout, ThePanelEdgeDragsAndTheWidthIsRememberedAcrossRuns) {
         open_scene(state, kScene);
         viewer.frame(state);
         viewer.frame(state);
-        const UiItem* panel = find_item(state.ui_items, "panel");
+        const UiItem* panel = find_item(viewer.ui_items(), "panel");
         ASSERT_NE(panel, nullptr);
         edge = panel->rect.x1;
         const float before = state.sidebar_width;
@@ -460,7 +460,7 @@ TEST(ViewerLayout, ThePanelEdgeDragsAndTheWidthIsRememberedAcrossRuns) {
         viewer.drag(state, 0, edge - 1, 300, edge + 119, 300);
         EXPECT_GT(state.sidebar_width, before) << "dragged wider";
         viewer.frame(state);
-        const UiItem* wider = find_item(state.ui_items, "panel");
+        const UiItem* wider = find_item(viewer.ui_items(), "panel");
         ASSERT_NE(wider, nullptr);
         dragged_edge = wider->rect.x1;
         EXPECT_GT(dragged_edge, edge + 60);
@@ -473,7 +473,7 @@ TEST(ViewerLayout, ThePanelEdgeDragsAndTheWidthIsRememberedAcrossRuns) {
         open_scene(state, kScene);
         viewer.frame(state);
         viewer.frame(state);
-        const UiItem* panel = find_item(state.ui_items, "panel");
+        const UiItem* panel = find_item(viewer.ui_items(), "panel");
         return panel ? panel->rect.x1 : -1.0f;
     };
     EXPECT_NEAR(next_run_edge(), dragged_edge, 1.0f) << "as wide as it was left";

@@ -5,7 +5,6 @@
 
 #include "app_actions.hpp"
 #include "common/scenes.hpp"
-#include "headless.hpp"
 #include "jtracer/parser.hpp"
 #include "jtracer/render_job.hpp"
 #include "render/prepared_scene.hpp"
@@ -119,44 +118,6 @@ TEST(Wakeup, FinishedLoadWakesTheLoopAndEndsTheWait) {
     EXPECT_FALSE(waiting_for_workers(state)) << "the next frame has a load to take in";
     EXPECT_TRUE(take_finished_load(state));
     EXPECT_TRUE(state.doc.loaded);
-}
-
-// The window's loop, as main.cpp runs it: frames, and sleeps while waiting
-// for the workers. The frame after the render's wakeup shows its first pass.
-TEST(Wakeup, FrameAfterTheRendersWakeupShowsTheFirstPass) {
-    HeadlessViewer viewer(320, 240);
-    ASSERT_TRUE(viewer.ok()) << viewer.error();
-    AppState state(test_config());
-    request_open(state, kScene);
-    const auto deadline = Clock::now() + kTimeout;
-    int frames = 0;
-    while (!state.presenter.has_image() && Clock::now() < deadline) {
-        const std::uint64_t seen = state.wakeup.count();
-        if (waiting_for_workers(state)) {
-            ASSERT_TRUE(state.wakeup.wait(seen, deadline));
-            EXPECT_FALSE(waiting_for_workers(state)) << "woken with something to show";
-        }
-        viewer.frame(state);
-        ++frames;
-    }
-    ASSERT_TRUE(state.presenter.has_image());
-    EXPECT_GT(state.renderer.passes_since_start(), 0);
-    EXPECT_LE(frames, 3) << "one frame takes the load in, the next shows the first pass";
-    EXPECT_FALSE(waiting_for_workers(state));
-}
-
-TEST(Wakeup, FrameThatStartsTheRenderShowsAFirstPassDoneWithinTheWait) {
-    HeadlessViewer viewer(320, 240);
-    ASSERT_TRUE(viewer.ok()) << viewer.error();
-    ViewerConfig config = test_config();
-    config.first_pass_wait = std::chrono::minutes(1);  // long enough for any machine
-    AppState state(config);
-    open_scene(state, kScene);
-    viewer.frame(state);
-    EXPECT_EQ(state.renderer.jobs_started(), 1u);
-    EXPECT_GT(state.renderer.passes_since_start(), 0);
-    EXPECT_TRUE(state.presenter.has_image()) << "in the texture in the frame that started it";
-    EXPECT_GE(state.passes_shown, 1);
 }
 
 TEST(RenderReuse, MaterialEditReusesTheGeometryAndRendersTheEditedScene) {

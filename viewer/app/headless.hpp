@@ -5,6 +5,7 @@
 #include "app_state.hpp"
 #include "gl/gl_context_osmesa.hpp"
 #include "imgui_layer.hpp"
+#include "viewer_frame.hpp"
 
 #include <chrono>
 #include <string>
@@ -57,10 +58,15 @@ class HeadlessViewer {
     Image8 screenshot() const;
     int width() const { return context_.width(); }
     int height() const { return context_.height(); }
+    // The texture the frames draw the image from.
+    const Presenter& presenter() const { return frame_state_.presenter; }
+    // What the last frame drew where (ui_items.hpp).
+    const std::vector<UiItem>& ui_items() const { return frame_state_.ui_items; }
 
   private:
     OsMesaContext context_;
     ImGuiLayer layer_;
+    FrameState frame_state_;  // after the context: its texture goes first
     float scale_ = 1.0f;
     float content_scale_ = 1.0f;
     double slowest_frame_ = 0.0;

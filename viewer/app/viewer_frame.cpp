@@ -169,8 +169,8 @@ void unsaved_prompt(AppState& state) {
 
 }  // namespace
 
-void viewer_frame(AppState& state, const FrameInfo& info) {
-    collect_ui_items(&state.ui_items);
+void viewer_frame(AppState& state, FrameState& frame, const FrameInfo& info) {
+    collect_ui_items(&frame.ui_items);
     const ImGuiIO& io = ImGui::GetIO();
     const float w = io.DisplaySize.x, h = io.DisplaySize.y;
     reload_if_changed(state);
@@ -192,10 +192,12 @@ void viewer_frame(AppState& state, const FrameInfo& info) {
     track_edits(state, before, generation, ImGui::IsAnyItemActive());
     check_edits(state);
     update_render(state);
-    const ScreenRect image = place_image(state.presenter.width(), state.presenter.height(), area,
+    if (const std::optional<PixelRect> changed = take_display_changes(state))
+        frame.presenter.upload(state.display, changed);
+    const ScreenRect image = place_image(frame.presenter.width(), frame.presenter.height(), area,
                                          info.framebuffer_scale, state.fit);
     handle_camera_mouse(state, image);
-    state.presenter.draw(ImGui::GetBackgroundDrawList(), image);
+    frame.presenter.draw(ImGui::GetBackgroundDrawList(), image);
     collect_ui_items(nullptr);
 }
 

@@ -99,9 +99,12 @@ void remember_settings(AppState& state);
 void toggle_pause(AppState& state);
 
 // Starts a render when what should be shown changed (and gives its first pass
-// up to config.first_pass_wait to be done), then moves the finished pixels to
-// the texture. Needs the GL context current.
+// up to config.first_pass_wait to be done), then moves the finished pixels
+// into state.display and notes where (state.display_changed).
 void update_render(AppState& state);
+// The rectangle of state.display changed since the last call, or nothing:
+// what the frame code sends to the texture.
+std::optional<PixelRect> take_display_changes(AppState& state);
 // The render that update_render would start now, or nothing (with the reason
 // in `note`) when there is nothing to render.
 std::optional<RenderRequest> render_request(const AppState& state, std::string& note);

@@ -4,8 +4,11 @@
 // end_frame, so a GLFW window and an OSMesa buffer show the same thing.
 
 #include "app_state.hpp"
+#include "presenter.hpp"
+#include "ui_items.hpp"
 
 #include <string>
+#include <vector>
 
 namespace jt::view {
 
@@ -13,7 +16,15 @@ struct FrameInfo {
     float framebuffer_scale = 1.0f;  // framebuffer pixels per window unit (HiDPI)
 };
 
-void viewer_frame(AppState& state, const FrameInfo& info);
+// What the frame code keeps between frames beside the model: the texture that
+// shows state.display, and what the last frame drew where. Lives with the GL
+// context (its texture must go before the context does).
+struct FrameState {
+    Presenter presenter;
+    std::vector<UiItem> ui_items;
+};
+
+void viewer_frame(AppState& state, FrameState& frame, const FrameInfo& info);
 
 // The window title: file name, unsaved mark, render progress.
 std::string window_title(const AppState& state);

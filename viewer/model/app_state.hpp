@@ -1,16 +1,16 @@
 #pragma once
 // Everything the viewer knows between frames. Plain data plus the few objects
-// that own resources (render thread, GL texture); behaviour lives in
-// app_actions.hpp (what a command does) and viewer_frame.hpp (one UI frame).
+// that own threads (loader, render); behaviour lives in app_actions.hpp (what a
+// command does). No GL, no ImGui: the frame code (viewer/app) draws this state
+// and keeps the texture itself.
 
 #include "file_watcher.hpp"
 #include "free_camera.hpp"
-#include "presenter.hpp"
+#include "image_layout.hpp"
 #include "recent_files.hpp"
 #include "render_controller.hpp"
 #include "scene_document.hpp"
 #include "scene_loader.hpp"
-#include "ui_items.hpp"
 #include "undo_stack.hpp"
 #include "viewer_settings.hpp"
 #include "wakeup.hpp"
@@ -118,11 +118,12 @@ struct AppState {
     bool edit_waiting = false;  // paused, and the scene or view changed since the render started
     bool display_complete = false;  // the display holds every pixel of the finished render
     int passes_shown = 0;           // passes of the current render whose pixels are in the texture
-    Image8 display;                 // what the texture holds
-    Presenter presenter;
+    Image8 display;                 // the render's pixels as the UI shows them
+    // The part of `display` changed since the frame code last took it
+    // (take_display_changes): what it sends to the texture.
+    std::optional<PixelRect> display_changed;
     FitMode fit = FitMode::fit;
     bool show_ui = true;
-    std::vector<UiItem> ui_items;              // what the last frame drew where
     float sidebar_width = kDefaultPanelWidth;  // in font heights, so that it scales with the font
     ViewerSettings saved_settings;             // as in config.settings_file
 

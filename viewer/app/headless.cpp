@@ -1,6 +1,7 @@
 #include "headless.hpp"
 
 #include "app_actions.hpp"
+#include "model_frame.hpp"
 #include "screenshot.hpp"
 #include "viewer_frame.hpp"
 
@@ -8,7 +9,6 @@
 
 #include <algorithm>
 #include <cstdio>
-#include <thread>
 
 namespace jt::view {
 
@@ -46,7 +46,7 @@ void HeadlessViewer::frame(AppState& state) {
                             static_cast<int>(context_.height() / scale_), scale_, 1.0f / 30.0f);
     layer_.set_scale(content_scale_, scale_);
     layer_.begin_frame();
-    viewer_frame(state, FrameInfo{scale_});
+    viewer_frame(state, frame_state_, FrameInfo{scale_});
     layer_.end_frame(context_.width(), context_.height());
     const double seconds =
         std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
@@ -84,7 +84,7 @@ void HeadlessViewer::drag(AppState& state, int button, float x0, float y0, float
 }
 
 bool HeadlessViewer::click(AppState& state, const std::string& label) {
-    const UiItem* item = find_item(state.ui_items, label);
+    const UiItem* item = find_item(frame_state_.ui_items, label);
     if (!item) return false;
     const ScreenRect r = item->rect;
     ImGuiIO& io = ImGui::GetIO();
@@ -113,29 +113,13 @@ void HeadlessViewer::scroll(AppState& state, float x, float y, float steps) {
 
 bool HeadlessViewer::run_until_complete(AppState& state, std::chrono::milliseconds timeout,
                                         int settle_frames) {
-    const auto deadline = std::chrono::steady_clock::now() + timeout;
-    frame(state);
-    while (!render_complete(state) || state.loader.busy()) {
-        const bool loading = state.loader.busy();
-        if ((!state.started && !loading) || std::chrono::steady_clock::now() > deadline)
-            return false;
-        // Leave the cores to the render; the picture is only read at the end.
-        std::this_thread::sleep_for(std::chrono::milliseconds(20));
-        frame(state);
-    }
-    for (int i = 0; i < settle_frames; ++i) frame(state);
-    return true;
+    return run_frames_until_complete(
+        state, [&] { frame(state); }, timeout, settle_frames);
 }
 
 bool HeadlessViewer::run_until_loaded(AppState& state, std::chrono::milliseconds timeout) {
-    const auto deadline = std::chrono::steady_clock::now() + timeout;
-    frame(state);
-    while (state.loader.busy()) {
-        if (std::chrono::steady_clock::now() > deadline) return false;
-        std::this_thread::sleep_for(std::chrono::milliseconds(2));
-        frame(state);
-    }
-    return true;
+    return run_frames_until_loaded(
+        state, [&] { frame(state); }, timeout);
 }
 
 Image8 HeadlessViewer::screenshot() const {

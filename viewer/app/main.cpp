@@ -12,7 +12,7 @@
 #include "key_taps.hpp"
 #include "viewer_frame.hpp"
 
-#include "jtracer/version.hpp"
+#include "jtracer/frontend/command_line.hpp"
 
 #include <GLFW/glfw3.h>
 #include <imgui.h>
@@ -97,7 +97,7 @@ int run_screenshot(const Arguments& args) {
         std::cerr << "jtracer-view: cannot render offscreen: " << viewer.error() << "\n";
         return 1;
     }
-    AppState state;  // after the context, so its texture is deleted while the context lives
+    AppState state;
     open_scene(state, args.scene);
     print_diagnostics(state);
     const auto timeout =
@@ -139,6 +139,7 @@ int run_window(const Arguments& args) {
     int exit_code = 0;
     {
         // Scoped so the texture and the render thread go before the GL context.
+        FrameState frame;
         ViewerConfig config;
         config.settings_file = default_settings_path();
         AppState app(config);
@@ -180,7 +181,7 @@ int run_window(const Arguments& args) {
             layer.set_scale(window.content_scale(), scale);
             ImGui_ImplGlfw_NewFrame();
             layer.begin_frame();
-            viewer_frame(app, FrameInfo{scale});
+            viewer_frame(app, frame, FrameInfo{scale});
             layer.end_frame(fw, fh);
             key_taps.frame_done([&](const KeyEvent& e) { key_to_imgui(window.handle(), e); });
             window.swap_buffers();
@@ -239,7 +240,7 @@ int main(int argc, char** argv) {
         "\n"
         "Exit codes: 0 ok, 1 no window or GL context, a screenshot not written or a render\n"
         "not complete in time, 2 bad command line.\n");
-    cli.set_version_flag("--version", std::string("jtracer-view ") + jt::version_string());
+    jt::frontend::add_version_flag(cli, "jtracer-view");
     cli.add_option("--screenshot", args.screenshot,
                    "render headless (OSMesa, no display), write the whole window to this PNG "
                    "once the render completes, and exit");
@@ -250,30 +251,17 @@ int main(int argc, char** argv) {
                    "with --screenshot or --exit-when-done: give up after this many seconds")
         ->capture_default_str()
         ->check(timeout_check());
-    try {
-        cli.parse(argc, argv);
-    } catch (const CLI::CallForHelp& e) {
-        return cli.exit(e);
-    } catch (const CLI::CallForVersion& e) {
-        return cli.exit(e);
-    } catch (const CLI::ParseError& e) {
-        std::cerr << "jtracer-view: " << e.what()
-                  << "\nRun 'jtracer-view --help' for the options.\n";
-        return 2;
-    }
-
-    if (!parse_size(args.size, args.width, args.height)) {
-        std::cerr << "jtracer-view: --size takes WxH between 64x64 and 8192x8192, got '"
-                  << args.size << "'\n";
-        return 2;
-    }
+    const auto checks = [&] {
+        if (!parse_size(args.size, args.width, args.height))
+            throw CLI::ValidationError(
+                "--size", "takes WxH between 64x64 and 8192x8192, got '" + args.size + "'");
+        if (!args.screenshot.empty() && image_format_for(args.screenshot) != ImageFormat::png)
+            throw CLI::ValidationError("--screenshot", "writes a PNG: name it .png");
+    };
+    if (const std::optional<int> code =
+            jt::frontend::parse_command_line(cli, argc, argv, "jtracer-view", checks))
+        return *code;
     if (args.scene.empty()) args.scene = default_scene().string();
-    if (!args.screenshot.empty()) {
-        if (image_format_for(args.screenshot) != ImageFormat::png) {
-            std::cerr << "jtracer-view: --screenshot writes a PNG: name it .png\n";
-            return 2;
-        }
-        return run_screenshot(args);
-    }
+    if (!args.screenshot.empty()) return run_screenshot(args);
     return run_window(args);
 }

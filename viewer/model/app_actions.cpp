@@ -495,6 +495,13 @@ std::string validation_error(const Scene& scene) {
     return {};
 }
 
+// The smallest rectangle holding `a` (when there is one) and `b`.
+PixelRect holding_both(const std::optional<PixelRect>& a, const PixelRect& b) {
+    if (!a) return b;
+    return {std::min(a->x0, b.x0), std::min(a->y0, b.y0), std::max(a->x1, b.x1),
+            std::max(a->y1, b.y1)};
+}
+
 // Waits, at most config.first_pass_wait, for the render just started to finish
 // its first pass (the render's wakeup ends the wait at once).
 void wait_for_first_pass(AppState& state) {
@@ -537,9 +544,13 @@ void update_render(AppState& state) {
     const bool finished = state.renderer.finished();
     const RenderProgress progress = state.renderer.progress();
     if (auto changed = state.renderer.fetch(state.display))
-        state.presenter.upload(state.display, changed);
+        state.display_changed = holding_both(state.display_changed, *changed);
     state.passes_shown = progress.finished ? progress.pass_count : progress.pass;
     if (finished && state.started) state.display_complete = true;
+}
+
+std::optional<PixelRect> take_display_changes(AppState& state) {
+    return std::exchange(state.display_changed, std::nullopt);
 }
 
 std::string pass_label(const RenderProgress& p, int target_samples) {

@@ -1,0 +1,44 @@
+#include "model_frame.hpp"
+
+#include "app_actions.hpp"
+
+#include <thread>
+
+namespace jt::view {
+
+void model_frame(AppState& state) {
+    reload_if_changed(state);
+    take_finished_load(state);
+    check_edits(state);
+    update_render(state);
+}
+
+bool run_frames_until_complete(AppState& state, const std::function<void()>& frame,
+                               std::chrono::milliseconds timeout, int settle_frames) {
+    const auto deadline = std::chrono::steady_clock::now() + timeout;
+    frame();
+    while (!render_complete(state) || state.loader.busy()) {
+        const bool loading = state.loader.busy();
+        if ((!state.started && !loading) || std::chrono::steady_clock::now() > deadline)
+            return false;
+        // Leave the cores to the render; the picture is only read at the end.
+        std::this_thread::sleep_for(std::chrono::milliseconds(20));
+        frame();
+    }
+    for (int i = 0; i < settle_frames; ++i) frame();
+    return true;
+}
+
+bool run_frames_until_loaded(AppState& state, const std::function<void()>& frame,
+                             std::chrono::milliseconds timeout) {
+    const auto deadline = std::chrono::steady_clock::now() + timeout;
+    frame();
+    while (state.loader.busy()) {
+        if (std::chrono::steady_clock::now() > deadline) return false;
+        std::this_thread::sleep_for(std::chrono::milliseconds(2));
+        frame();
+    }
+    return true;
+}
+
+}  // namespace jt::view
