@@ -1,7 +1,9 @@
 #include "jtracer/source_edit.hpp"
 
+#include "edit/block_layout.hpp"
 #include "edit/text_edits.hpp"
 #include "jtracer/schema.hpp"
+#include "jtracer/serializer.hpp"
 #include "jtracer/value_text.hpp"
 
 #include <algorithm>
@@ -36,6 +38,13 @@ void check_writable(const PropertySpec<Block>& property, const Block& block, Fai
     });
 }
 
+// Every string a new block would write.
+template <class Block, class Fail>
+void check_writable(const Block& block, Fail fail) {
+    for (const PropertySpec<Block>& property : schema_of<Block>().properties)
+        if (is_written(property, block)) check_writable(property, block, fail);
+}
+
 // Each of `properties` that differs between `a` and `b`, in their order.
 // `fail` hears of a string that no .jts text can hold.
 template <class Block, class Fail>
@@ -64,21 +73,6 @@ std::vector<Change> changes(std::span<const PropertySpec<Block>> properties, con
 template <class Block, class Fail>
 std::vector<Change> changes(const Block& a, const Block& b, Fail fail) {
     return changes(schema_of<Block>().properties, a, b, fail);
-}
-
-// The lines of a new block holding `block`, with the properties the
-// serializer writes; `fail` hears of a string no .jts text can hold.
-template <class Block, class Fail>
-std::vector<std::string> block_lines(const Block& block, Fail fail) {
-    std::vector<std::string> lines{std::string(schema_of<Block>().keyword) + " {"};
-    for (const PropertySpec<Block>& property : schema_of<Block>().properties) {
-        if (!is_written(property, block)) continue;
-        check_writable(property, block, fail);
-        lines.push_back("    " + std::string(property.name) + ": " + value_text(property, block) +
-                        ";");
-    }
-    lines.push_back("}");
-    return lines;
 }
 
 // Collects the edits for one save, then splices them in one go.
@@ -140,46 +134,13 @@ class SourceWriter {
         ++changed_;
     }
 
-    // Inserts `lines` (one statement each, or the lines of a nested block)
-    // just before the closing brace at `close`, in the block's own style: on
-    // lines of their own with the indentation of the block's first item when
-    // the brace has its own line, otherwise inline before the brace.
     void insert_into(std::size_t close, std::optional<std::size_t> first_item,
                      const std::vector<std::string>& lines) {
-        if (edit::starts_its_line(text_, close)) {
-            std::string indent;
-            if (first_item && edit::starts_its_line(text_, *first_item))
-                indent = std::string(edit::line_indent(text_, *first_item));
-            else
-                indent = std::string(edit::line_indent(text_, close)) + "    ";
-            std::string inserted;
-            for (const std::string& line : lines) inserted += indent + line + "\n";
-            edits_.push_back({edit::line_start(text_, close), 0, inserted});
-        } else {
-            std::string inserted = close > 0 && text_[close - 1] == ' ' ? "" : " ";
-            for (const std::string& line : lines) {
-                std::size_t start = line.find_first_not_of(" \t");
-                inserted += line.substr(start == std::string::npos ? 0 : start) + " ";
-            }
-            edits_.push_back({close, 0, inserted});
-        }
+        edits_.push_back(edit::insertion_before_close(text_, close, first_item, lines));
     }
 
-    // Removes the block from its keyword to its closing brace; whole lines
-    // when the block has lines of its own, so no blank line is left behind.
     void remove(const BlockSource& block) {
-        std::size_t begin = block.keyword_span.offset;
-        std::size_t end = block.close_brace + 1;
-        std::size_t after = end;
-        while (after < text_.size() && (text_[after] == ' ' || text_[after] == '\t')) ++after;
-        if (edit::starts_its_line(text_, begin) &&
-            (after == text_.size() || text_[after] == '\n')) {
-            begin = edit::line_start(text_, begin);
-            end = after < text_.size() ? after + 1 : after;
-        } else if (end < text_.size() && text_[end] == ' ') {
-            ++end;
-        }
-        edits_.push_back({begin, end - begin, ""});
+        edits_.push_back(edit::removal(text_, edit::block_range(block), false));
         ++changed_;
     }
 
@@ -193,13 +154,7 @@ class SourceWriter {
     void count_insertion() { ++changed_; }
 
     std::optional<std::size_t> indent_hint(const BlockSource& block) const {
-        std::optional<std::size_t> first;
-        const auto own = properties(block);
-        const auto nested = children(block);
-        if (!own.empty()) first = own.front().name_span.offset;
-        if (!nested.empty() && (!first || nested.front().keyword_span.offset < *first))
-            first = nested.front().keyword_span.offset;
-        return first;
+        return edit::first_item(source_, block);
     }
 
     // The block's material (or transform) blocks, in file order.
@@ -262,7 +217,8 @@ void write_cameras(SourceWriter& w, const SceneSource& source, const Scene& a, c
     if (b.cameras.size() <= a.cameras.size()) return;
     std::vector<std::string> lines;
     for (std::size_t i = a.cameras.size(); i < b.cameras.size(); ++i) {
-        auto more = block_lines(b.cameras[i], w.failure());
+        check_writable(b.cameras[i], w.failure());
+        auto more = block_lines(b.cameras[i]);
         lines.insert(lines.end(), more.begin(), more.end());
     }
     if (source.cameras.empty()) {

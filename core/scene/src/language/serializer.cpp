@@ -8,6 +8,7 @@ namespace jt {
 
 namespace {
 
+// Four spaces of indentation per nesting level.
 class Writer {
   public:
     std::string text;
@@ -26,7 +27,22 @@ class Writer {
         indent();
         text.append(name).append(": ").append(value).append(";\n");
     }
+    void line(std::string_view content) {
+        indent();
+        text.append(content).append("\n");
+    }
     void blank() { text += '\n'; }
+
+    std::vector<std::string> lines() const {
+        std::vector<std::string> out;
+        std::size_t start = 0;
+        while (start < text.size()) {
+            const std::size_t end = text.find('\n', start);
+            out.push_back(text.substr(start, end - start));
+            start = end + 1;
+        }
+        return out;
+    }
 
   private:
     void indent() { text.append(static_cast<std::size_t>(depth_) * 4, ' '); }
@@ -49,22 +65,52 @@ void write_block(Writer& w, const Block& block) {
     w.close();
 }
 
+void write_transform(Writer& w, const std::vector<TransformOp>& ops) {
+    w.open(kTransformKeyword);
+    for (const TransformOp& op : ops) w.line(transform_op_statement(op));
+    w.close();
+}
+
 void write_primitive(Writer& w, const Primitive& p) {
     w.open(keyword_of(p.shape));
     std::visit([&](const auto& shape) { write_properties(w, shape); }, p.shape);
     write_block(w, p.material);
-    if (!p.transforms.empty()) {
-        w.open(kTransformKeyword);
-        for (const TransformOp& op : p.transforms) {
-            const PropertySpec<TransformOp>& property = transform_op(op.kind).property;
-            w.property(property.name, value_text(property, op));
-        }
-        w.close();
-    }
+    if (!p.transforms.empty()) write_transform(w, p.transforms);
     w.close();
 }
 
 }  // namespace
+
+std::string transform_op_statement(const TransformOp& op) {
+    const PropertySpec<TransformOp>& property = transform_op(op.kind).property;
+    return std::string(property.name) + ": " + value_text(property, op) + ";";
+}
+
+namespace {
+// The lines `write` writes.
+template <class Write>
+std::vector<std::string> lines_written(Write write) {
+    Writer w;
+    write(w);
+    return w.lines();
+}
+}  // namespace
+
+std::vector<std::string> block_lines(const Primitive& primitive) {
+    return lines_written([&](Writer& w) { write_primitive(w, primitive); });
+}
+std::vector<std::string> block_lines(const PointLight& light) {
+    return lines_written([&](Writer& w) { write_block(w, light); });
+}
+std::vector<std::string> block_lines(const Camera& camera) {
+    return lines_written([&](Writer& w) { write_block(w, camera); });
+}
+std::vector<std::string> block_lines(const Material& material) {
+    return lines_written([&](Writer& w) { write_block(w, material); });
+}
+std::vector<std::string> transform_block_lines(const std::vector<TransformOp>& ops) {
+    return lines_written([&](Writer& w) { write_transform(w, ops); });
+}
 
 std::string serialize_scene(const Scene& scene) {
     Writer w;

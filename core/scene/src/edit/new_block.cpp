@@ -1,0 +1,128 @@
+#include "jtracer/new_block.hpp"
+
+#include "jtracer/camera_edit.hpp"
+#include "jtracer/schema.hpp"
+#include "jtracer/validate.hpp"
+
+#include <glm/geometric.hpp>
+#include <glm/trigonometric.hpp>
+
+#include <cmath>
+
+namespace jt {
+
+namespace {
+
+// Where the active camera looks, and how big things look there.
+struct View {
+    Vec3 eye{0.0};
+    Vec3 forward{0.0, 0.0, -1.0};
+    Vec3 up{0.0, 1.0, 0.0};
+    double distance = 5.0;  // to the look_at point
+    double fov = 45.0;
+    // Half the height the view spans at `at` from the eye.
+    double half_height(double at) const { return at * std::tan(glm::radians(fov) / 2.0); }
+};
+
+View active_view(const Scene& scene) {
+    View view;
+    const int index = active_camera_index(scene);
+    if (index < 0) return view;
+    const Camera& camera = scene.cameras[static_cast<std::size_t>(index)];
+    const Vec3 to = camera.look_at - camera.position;
+    const double distance = glm::length(to);
+    view.eye = camera.position;
+    if (std::isfinite(distance) && distance > 0.0) {
+        view.forward = to / distance;
+        view.distance = distance;
+    }
+    if (camera.fov > 0.0 && camera.fov < 180.0) view.fov = camera.fov;
+    const Vec3 right = glm::cross(view.forward, camera.up);
+    const double right_length = glm::length(right);
+    if (std::isfinite(right_length) && right_length > 1e-12)
+        view.up = glm::cross(right / right_length, view.forward);
+    return view;
+}
+
+// `value` rounded to a multiple of a power of ten three digits below
+// `scale`. Below 1 the step is divided out by an exact power of ten, so the
+// result is the double nearest the decimal and its text is short ("1.23").
+double rounded(double value, double scale) {
+    if (!(scale > 0.0) || !std::isfinite(scale) || !std::isfinite(value)) return value;
+    const double exponent = std::floor(std::log10(scale)) - 2.0;
+    const double r = exponent < 0.0
+                         ? std::round(value * std::pow(10.0, -exponent)) / std::pow(10.0, -exponent)
+                         : std::round(value / std::pow(10.0, exponent)) * std::pow(10.0, exponent);
+    return r == 0.0 ? 0.0 : r;  // never -0
+}
+
+Vec3 rounded(const Vec3& v, double scale) {
+    return {rounded(v.x, scale), rounded(v.y, scale), rounded(v.z, scale)};
+}
+
+}  // namespace
+
+std::string_view keyword_of(ShapeKind kind) {
+    switch (kind) {
+        case ShapeKind::sphere:
+            return schema_of<Sphere>().keyword;
+        case ShapeKind::plane:
+            return schema_of<Plane>().keyword;
+        case ShapeKind::cylinder:
+            return schema_of<Cylinder>().keyword;
+    }
+    return schema_of<Sphere>().keyword;
+}
+
+Material new_material() {
+    Material m;
+    m.pigment = Colour{0.8};
+    m.ambient = Colour{0.2};
+    m.diffuse = Colour{0.8};
+    m.specular = Colour{0.3};
+    m.specular_k = 32.0;
+    return m;
+}
+
+Primitive new_primitive(ShapeKind kind, const Scene& scene) {
+    const View view = active_view(scene);
+    const double along = view.distance / 2.0;
+    const double half = view.half_height(along);
+    const Vec3 at = rounded(view.eye + view.forward * along, half);
+    Primitive p;
+    p.material = new_material();
+    switch (kind) {
+        case ShapeKind::sphere:
+            p.shape = Sphere{at, rounded(half / 5.0, half)};
+            break;
+        case ShapeKind::plane: {
+            const Vec3 normal = rounded(view.up, 1.0);
+            p.shape =
+                Plane{normal, rounded(glm::dot(glm::normalize(normal), at) - half / 2.0, half)};
+            break;
+        }
+        case ShapeKind::cylinder: {
+            const Cylinder c{rounded(half / 5.0, half), rounded(half / 2.0, half)};
+            p.shape = c;
+            p.transforms.push_back({TransformKind::translate,
+                                    rounded(at - Vec3{0.0, c.height / 2.0, 0.0}, half), 0.0});
+            break;
+        }
+    }
+    return p;
+}
+
+PointLight new_light(const Scene& scene) {
+    const View view = active_view(scene);
+    const double half = view.half_height(view.distance);
+    return {rounded(view.eye + view.up * half, half), Colour{0.7}};
+}
+
+Camera new_camera(const Scene& scene) {
+    const int index = active_camera_index(scene);
+    Camera camera = index < 0 ? Camera{} : scene.cameras[static_cast<std::size_t>(index)];
+    camera.name = unique_camera_name(scene, camera.name.empty() ? "camera" : camera.name);
+    return camera;
+}
+
+}  // namespace jt
