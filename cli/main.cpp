@@ -125,7 +125,8 @@ int main(int argc, char** argv) {
         if (parsed.options.list_cameras) return list_cameras(parsed.options.scene_path);
         return run(parsed.options);
     } catch (const std::bad_alloc&) {
-        std::cerr << "jtracer-cli: out of memory (is the image too large?); nothing was written\n";
+        std::cerr << "jtracer-cli: out of memory (the scene or the image is too large for the "
+                     "memory available); nothing was written\n";
         return exit_io_error;
     } catch (const std::exception& e) {
         std::cerr << "jtracer-cli: " << e.what() << "; nothing was written\n";

@@ -22,6 +22,7 @@ struct ParseResult {
     Scene scene;
     SceneSource source;                   // empty when parsed with source_map = false
     std::vector<Diagnostic> diagnostics;  // in the order found
+    bool out_of_memory = false;           // parsing stopped for want of memory (one diagnostic)
     bool ok() const { return !has_errors(diagnostics); }
 };
 

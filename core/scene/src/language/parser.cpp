@@ -17,6 +17,7 @@
 #include <array>
 #include <cstdint>
 #include <limits>
+#include <new>
 #include <span>
 #include <string>
 #include <utility>
@@ -563,8 +564,15 @@ ParseResult parse_scene(std::string_view text, ParseOptions options) {
             return result;
         }
         return lang::Parser(text, options).run();
+    } catch (const std::bad_alloc&) {
+        ParseResult result;
+        result.out_of_memory = true;
+        result.diagnostics.push_back(
+            {Severity::error,
+             {},
+             "out of memory: the scene is too large for the memory available"});
+        return result;
     } catch (const std::exception& e) {
-        // Only allocation failure can get here (e.g. a scene too large for memory).
         ParseResult result;
         result.diagnostics.push_back(
             {Severity::error, {}, std::string("the scene could not be read: ") + e.what()});

@@ -83,6 +83,10 @@ Expected<LoadedScene> load_scene_file(const std::filesystem::path& path, ParseOp
     loaded.options = options;
     loaded.text = std::move(*text);
     loaded.parsed = parse_scene(loaded.text, options);
+    // A machine's limit, not a mistake in the file: an I/O failure like any other.
+    if (loaded.parsed.out_of_memory)
+        return Error{"cannot read " + lang::quote(path.string()) +
+                     ": out of memory (the scene is too large for the memory available)"};
     loaded.parsed.scene.asset_folder = path.parent_path().string();
     return loaded;
 }
