@@ -6,14 +6,14 @@
 # The build, corpora, crash artifacts and logs (one per run, timestamped) go to
 # build/fuzz/, never into the repo.
 # A crashing input is saved as build/fuzz/artifacts/TARGET/crash-*; once fixed,
-# copy it to tests/hardening/regressions/{parser,bmp}/ so that the test suite
+# copy it to tests/hardening/regressions/{parser,bmp,image_map}/ so that the test suite
 # replays it. Exits non-zero when the build fails or a target found a crash.
 set -euo pipefail
 cd "$(dirname "$0")/.."
 seconds=${1:-60}
 shift || true
 targets=("$@")
-[ ${#targets[@]} -gt 0 ] || targets=(parse_scene_fuzzer bmp_fuzzer)
+[ ${#targets[@]} -gt 0 ] || targets=(parse_scene_fuzzer bmp_fuzzer image_map_fuzzer)
 
 out=build/fuzz
 echo "== fuzz: configure and build"
@@ -22,13 +22,19 @@ cmake --build --preset fuzz -j "$(nproc)"
 bin=$out/fuzz
 
 # Seeds: the scenes and the regression inputs for the parser; BMPs written by
-# the core's encoder and the regression inputs for the BMP reader.
+# the core's encoder and the regression inputs for the BMP reader; pictures of
+# every kind stb_image reads, the scenes' image maps and the regression inputs
+# for the image-map loader.
 seed_parser=$out/seeds/parse_scene_fuzzer
 seed_bmp=$out/seeds/bmp_fuzzer
-mkdir -p "$seed_parser" "$seed_bmp"
+seed_image=$out/seeds/image_map_fuzzer
+mkdir -p "$seed_parser" "$seed_bmp" "$seed_image"
 find scenes tests/hardening/regressions/parser -type f -exec cp {} "$seed_parser/" \; 2>/dev/null || true
 "$bin/make_bmp_seeds" "$seed_bmp"
 find tests/hardening/regressions/bmp -type f -exec cp {} "$seed_bmp/" \; 2>/dev/null || true
+"$bin/make_image_seeds" "$seed_image"
+find scenes -name '*.png' -o -name '*.jpg' -o -name '*.bmp' | xargs -r cp -t "$seed_image/"
+find tests/hardening/regressions/image_map -type f -exec cp {} "$seed_image/" \; 2>/dev/null || true
 
 # The targets run side by side (one core each), so the whole run takes about
 # SECONDS_EACH; the summaries follow in order.

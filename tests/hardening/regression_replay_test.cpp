@@ -1,4 +1,4 @@
-// Replays every saved fuzz input (regressions/parser, regressions/bmp) through
+// Replays every saved fuzz input (regressions/parser, bmp, image_map) through
 // the very checks the fuzz targets make (fuzz/invariants.cpp): no crash, no
 // sanitizer report, diagnostics within the text, round trips that hold.
 
@@ -45,6 +45,13 @@ TEST(FuzzRegressions, BmpInputsKeepTheirInvariants) {
     ASSERT_GE(paths.size(), 5u);
     for (const fs::path& path : paths)
         EXPECT_EQ(fuzz::check_bmp_bytes(bytes_of(path)), "") << path.filename();
+}
+
+TEST(FuzzRegressions, ImageMapInputsKeepTheirInvariants) {
+    const std::vector<fs::path> paths = inputs("image_map");
+    ASSERT_GE(paths.size(), 3u);
+    for (const fs::path& path : paths)
+        EXPECT_EQ(fuzz::check_texture_bytes(bytes_of(path)), "") << path.filename();
 }
 
 // The location check must be able to fail, or the replay proves little.

@@ -73,6 +73,22 @@ TEST_F(ResourceLimits, ImageAtTheSizeLimitInOneGibIsRefusedBeforeRendering) {
     }
 }
 
+TEST_F(ResourceLimits, PictureClaimingTenBillionTexelsIsRefusedFromItsHeaderInOneGib) {
+    const std::string picture = "claims-100000x100000.png";
+    fs::copy_file(fs::path(JT_SOURCE_DIR) / "tests/hardening/regressions/image_map" / picture,
+                  dir / picture);
+    write_file(dir / "map.jts",
+               "render_settings { width: 8; height: 8; }\n"
+               "cameras { perspective_camera { position: <0, 0, 5>; look_at: <0, 0, 0>; } }\n"
+               "scene { sphere { material { image_map: \"" +
+                   picture + "\"; } } }\n");
+    ProgramRun r = run_in_one_gib("map.jts -o out.bmp");
+    EXPECT_EQ(r.code, 1) << r.err;
+    EXPECT_EQ(r.err.rfind("map.jts:3:40: error: image_map: the image is too large", 0), 0u)
+        << r.err;
+    EXPECT_FALSE(exists("out.bmp"));
+}
+
 TEST_F(ResourceLimits, ThirtyTwoOpenFilesAreEnoughForAScenePastThatManyImageMaps) {
     // 40 pictures, each opened, read and closed once.
     std::string scene =

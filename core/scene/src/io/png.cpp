@@ -6,7 +6,9 @@
 #include <stb_image.h>
 #include <stb_image_write.h>
 
+#include <algorithm>
 #include <cstring>
+#include <iterator>
 #include <limits>
 
 namespace jt {
@@ -21,6 +23,12 @@ void append_bytes(void* context, void* data, int size) {
 
 }  // namespace
 
+bool has_png_signature(std::span<const std::uint8_t> bytes) {
+    static constexpr std::uint8_t signature[8] = {0x89, 'P', 'N', 'G', '\r', '\n', 0x1A, '\n'};
+    return bytes.size() >= sizeof signature &&
+           std::equal(std::begin(signature), std::end(signature), bytes.begin());
+}
+
 std::vector<std::uint8_t> encode_png(const Image8& image) {
     std::vector<std::uint8_t> out;
     if (image.width <= 0 || image.height <= 0) return out;
@@ -34,6 +42,9 @@ std::vector<std::uint8_t> encode_png(const Image8& image) {
 Expected<Image8> decode_png(std::span<const std::uint8_t> bytes) {
     if (bytes.size() > static_cast<std::size_t>(std::numeric_limits<int>::max()))
         return Error{"PNG file too large"};
+    // stb_image reads any format it was built with: only a PNG may go on.
+    if (!has_png_signature(bytes))
+        return Error{"not a readable PNG: it does not start with the PNG signature"};
     int width = 0, height = 0, channels = 0;
     stbi_uc* pixels = stbi_load_from_memory(bytes.data(), static_cast<int>(bytes.size()), &width,
                                             &height, &channels, 3);

@@ -1,10 +1,16 @@
 #include "jtracer/texture.hpp"
 
 #include "io/file_bytes.hpp"
+#include "io/jpeg_tables.hpp"
+#include "jtracer/png.hpp"
 
 #include <stb_image.h>
 
+#include <algorithm>
+#include <iterator>
 #include <limits>
+#include <optional>
+#include <utility>
 
 namespace jt {
 
@@ -14,17 +20,44 @@ struct StbFree {
     void operator()(void* p) const { stbi_image_free(p); }
 };
 
+std::string too_large(std::int64_t width, std::int64_t height) {
+    return "the image is too large (" + std::to_string(width) + "x" + std::to_string(height) +
+           " texels)";
+}
+
+// The size a PNG's IHDR chunk claims, or nothing when the bytes do not start
+// like a PNG. stb_image's own check refuses a PNG of over 2^30 bytes, then
+// tries the other formats and reports "unknown image type"; reading the claim
+// first lets such a file be called too large.
+std::optional<std::pair<std::int64_t, std::int64_t>> png_claimed_size(
+    std::span<const std::uint8_t> bytes) {
+    // The signature, then the IHDR chunk: its length (13), its type, width, height.
+    static constexpr std::uint8_t ihdr[8] = {0, 0, 0, 13, 'I', 'H', 'D', 'R'};
+    if (bytes.size() < 24 || !has_png_signature(bytes) ||
+        !std::equal(std::begin(ihdr), std::end(ihdr), bytes.begin() + 8))
+        return std::nullopt;
+    auto big_endian = [&](std::size_t at) {
+        std::int64_t value = 0;
+        for (std::size_t i = at; i < at + 4; ++i) value = value << 8 | bytes[i];
+        return value;
+    };
+    return std::pair{big_endian(16), big_endian(20)};
+}
+
 // The header's verdict: "" or why stb cannot decode it.
 std::string header_problem(std::span<const std::uint8_t> bytes, int& width, int& height) {
     if (bytes.size() > static_cast<std::size_t>(std::numeric_limits<int>::max()))
         return "the file is too large";
+    if (const auto claimed = png_claimed_size(bytes);
+        claimed && claimed->first * claimed->second > kMaxTextureTexels)
+        return too_large(claimed->first, claimed->second);
+    if (std::string problem = jpeg_table_problem(bytes); !problem.empty()) return problem;
     int channels = 0;
     if (!stbi_info_from_memory(bytes.data(), static_cast<int>(bytes.size()), &width, &height,
                                &channels))
         return std::string("not a readable PNG, JPEG or BMP image: ") + stbi_failure_reason();
     if (static_cast<std::int64_t>(width) * height > kMaxTextureTexels)
-        return "the image is too large (" + std::to_string(width) + "x" + std::to_string(height) +
-               " texels)";
+        return too_large(width, height);
     return "";
 }
 

@@ -1,0 +1,62 @@
+// Files from strangers named by a scene: pictures whose headers claim sizes
+// no machine could hold, or whose tables would make stb_image write out of
+// bounds. Each is refused before anything is decoded or allocated, with an
+// error at the image_map string, through --check and through a render alike.
+
+#include "cli_sandbox.hpp"
+
+#include <filesystem>
+
+namespace jt::test {
+namespace {
+
+namespace fs = std::filesystem;
+
+const fs::path hostile = fs::path(JT_SOURCE_DIR) / "tests/hardening/regressions/image_map";
+
+class HostileImageMaps : public CliSandbox {
+  protected:
+    // A scene whose one image_map string starts at line 4, column 16.
+    void write_scene_naming(const std::string& picture) {
+        fs::copy_file(hostile / picture, dir / picture);
+        write_file(dir / "hostile.jts",
+                   "render_settings { width: 8; height: 8; }\n"
+                   "cameras { perspective_camera { position: <0, 0, 5>; look_at: <0, 0, 0>; } }\n"
+                   "scene { sphere { material {\n"
+                   "    image_map: \"" +
+                       picture + "\"; } } }\n");
+    }
+    void expect_refused(const ProgramRun& r, const std::string& problem) const {
+        EXPECT_EQ(r.code, 1) << r.err;
+        EXPECT_EQ(r.err.rfind("hostile.jts:4:16: error: image_map: " + problem + "\n", 0), 0u)
+            << r.err;
+        EXPECT_FALSE(exists("out.bmp"));
+        EXPECT_TRUE(temporary_files().empty());
+    }
+};
+
+TEST_F(HostileImageMaps, SizesNoMachineCouldHoldAreRefusedAtTheImageMapString) {
+    const std::pair<const char*, const char*> pictures[] = {
+        {"claims-100000x100000.png", "100000x100000"},
+        {"claims-100000x100000.bmp", "100000x100000"},
+        {"claims-65535x65535.jpg", "65535x65535"},
+    };
+    for (const auto& [picture, claimed] : pictures) {
+        SCOPED_TRACE(picture);
+        write_scene_naming(picture);
+        const std::string problem = "the image is too large (" + std::string(claimed) + " texels)";
+        expect_refused(run({"hostile.jts", "--check"}), problem);
+        expect_refused(run({"hostile.jts", "-o", "out.bmp"}), problem);
+    }
+}
+
+// stb_image 2.27 wrote past its Huffman table for this file (io/jpeg_tables.hpp).
+TEST_F(HostileImageMaps, JpegHuffmanTableOfTooManyCodesIsRefused) {
+    write_scene_naming("jpeg-huffman-table-of-too-many-codes.jpg");
+    const std::string problem = "a corrupt JPEG: a Huffman table of 1928 codes (at most 256)";
+    expect_refused(run({"hostile.jts", "--check"}), problem);
+    expect_refused(run({"hostile.jts", "-o", "out.bmp"}), problem);
+}
+
+}  // namespace
+}  // namespace jt::test
