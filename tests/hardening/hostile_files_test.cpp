@@ -50,12 +50,24 @@ TEST_F(HostileImageMaps, SizesNoMachineCouldHoldAreRefusedAtTheImageMapString) {
     }
 }
 
-// stb_image 2.27 wrote past its Huffman table for this file (io/jpeg_tables.hpp).
-TEST_F(HostileImageMaps, JpegHuffmanTableOfTooManyCodesIsRefused) {
-    write_scene_naming("jpeg-huffman-table-of-too-many-codes.jpg");
-    const std::string problem = "a corrupt JPEG: a Huffman table of 1928 codes (at most 256)";
-    expect_refused(run({"hostile.jts", "--check"}), problem);
-    expect_refused(run({"hostile.jts", "-o", "out.bmp"}), problem);
+// Found by fuzz/image_map_fuzzer: stb_image 2.27 wrote past its Huffman table
+// for the JPEG (io/jpeg_tables.hpp), spent a minute decoding zeros into the 58
+// million pixels the 90-byte BMP claims (io/image_claims.hpp), and decoded a
+// BMP of no pixels, which sampling would have divided by.
+TEST_F(HostileImageMaps, FilesThatMisledStbImageAreRefused) {
+    const std::pair<const char*, const char*> pictures[] = {
+        {"jpeg-huffman-table-of-too-many-codes.jpg",
+         "a corrupt JPEG: a Huffman table of 1928 codes (at most 256)"},
+        {"bmp-90-bytes-claiming-5x11665411.bmp",
+         "the file is too short for the 5x11665411 pixels its header claims (90 bytes)"},
+        {"bmp-of-0x0-pixels.bmp", "the image has no pixels (0x0)"},
+    };
+    for (const auto& [picture, problem] : pictures) {
+        SCOPED_TRACE(picture);
+        write_scene_naming(picture);
+        expect_refused(run({"hostile.jts", "--check"}), problem);
+        expect_refused(run({"hostile.jts", "-o", "out.bmp"}), problem);
+    }
 }
 
 }  // namespace

@@ -1,16 +1,12 @@
 #include "jtracer/texture.hpp"
 
 #include "io/file_bytes.hpp"
+#include "io/image_claims.hpp"
 #include "io/jpeg_tables.hpp"
-#include "jtracer/png.hpp"
 
 #include <stb_image.h>
 
-#include <algorithm>
-#include <iterator>
 #include <limits>
-#include <optional>
-#include <utility>
 
 namespace jt {
 
@@ -25,25 +21,6 @@ std::string too_large(std::int64_t width, std::int64_t height) {
            " texels)";
 }
 
-// The size a PNG's IHDR chunk claims, or nothing when the bytes do not start
-// like a PNG. stb_image's own check refuses a PNG of over 2^30 bytes, then
-// tries the other formats and reports "unknown image type"; reading the claim
-// first lets such a file be called too large.
-std::optional<std::pair<std::int64_t, std::int64_t>> png_claimed_size(
-    std::span<const std::uint8_t> bytes) {
-    // The signature, then the IHDR chunk: its length (13), its type, width, height.
-    static constexpr std::uint8_t ihdr[8] = {0, 0, 0, 13, 'I', 'H', 'D', 'R'};
-    if (bytes.size() < 24 || !has_png_signature(bytes) ||
-        !std::equal(std::begin(ihdr), std::end(ihdr), bytes.begin() + 8))
-        return std::nullopt;
-    auto big_endian = [&](std::size_t at) {
-        std::int64_t value = 0;
-        for (std::size_t i = at; i < at + 4; ++i) value = value << 8 | bytes[i];
-        return value;
-    };
-    return std::pair{big_endian(16), big_endian(20)};
-}
-
 // The header's verdict: "" or why stb cannot decode it.
 std::string header_problem(std::span<const std::uint8_t> bytes, int& width, int& height) {
     if (bytes.size() > static_cast<std::size_t>(std::numeric_limits<int>::max()))
@@ -56,8 +33,15 @@ std::string header_problem(std::span<const std::uint8_t> bytes, int& width, int&
     if (!stbi_info_from_memory(bytes.data(), static_cast<int>(bytes.size()), &width, &height,
                                &channels))
         return std::string("not a readable PNG, JPEG or BMP image: ") + stbi_failure_reason();
+    if (width <= 0 || height <= 0)
+        return "the image has no pixels (" + std::to_string(width) + "x" + std::to_string(height) +
+               ")";
     if (static_cast<std::int64_t>(width) * height > kMaxTextureTexels)
         return too_large(width, height);
+    if (bytes.size() < fewest_bytes_for(bytes, width, height))
+        return "the file is too short for the " + std::to_string(width) + "x" +
+               std::to_string(height) + " pixels its header claims (" +
+               std::to_string(bytes.size()) + " bytes)";
     return "";
 }
 
@@ -77,19 +61,27 @@ Texture texels_of(const Sample* samples, int width, int height, float full_scale
 }  // namespace
 
 Expected<Texture> decode_texture(std::span<const std::uint8_t> bytes) {
-    int width = 0, height = 0, channels = 0;
-    if (std::string problem = header_problem(bytes, width, height); !problem.empty())
+    int header_width = 0, header_height = 0;
+    if (std::string problem = header_problem(bytes, header_width, header_height); !problem.empty())
         return Error{problem};
+    // The pixels must be the size the header was checked for.
+    int width = 0, height = 0, channels = 0;
+    auto as_checked = [&] { return width == header_width && height == header_height; };
+    bool decoded = false;
     const int size = static_cast<int>(bytes.size());
     if (stbi_is_16_bit_from_memory(bytes.data(), size)) {
         std::unique_ptr<stbi_us, StbFree> samples(
             stbi_load_16_from_memory(bytes.data(), size, &width, &height, &channels, 3));
-        if (samples) return texels_of(samples.get(), width, height, 65535.0f);
+        if (samples && as_checked()) return texels_of(samples.get(), width, height, 65535.0f);
+        decoded = samples != nullptr;
     } else {
         std::unique_ptr<stbi_uc, StbFree> samples(
             stbi_load_from_memory(bytes.data(), size, &width, &height, &channels, 3));
-        if (samples) return texels_of(samples.get(), width, height, 255.0f);
+        if (samples && as_checked()) return texels_of(samples.get(), width, height, 255.0f);
+        decoded = samples != nullptr;
     }
+    if (decoded)
+        return Error{"cannot decode the image: its pixels are not the size its header gives"};
     return Error{std::string("cannot decode the image: ") + stbi_failure_reason()};
 }
 
