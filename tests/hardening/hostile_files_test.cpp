@@ -40,6 +40,8 @@ TEST_F(HostileImageMaps, SizesNoMachineCouldHoldAreRefusedAtTheImageMapString) {
         {"claims-100000x100000.png", "100000x100000"},
         {"claims-100000x100000.bmp", "100000x100000"},
         {"claims-65535x65535.jpg", "65535x65535"},
+        // Found by the fuzzer: the product of the two sides overflowed.
+        {"png-claiming-4294967295x4294967295.png", "4294967295x4294967295"},
     };
     for (const auto& [picture, claimed] : pictures) {
         SCOPED_TRACE(picture);

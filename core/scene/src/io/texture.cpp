@@ -7,6 +7,7 @@
 #include <stb_image.h>
 
 #include <limits>
+#include <utility>
 
 namespace jt {
 
@@ -21,12 +22,17 @@ std::string too_large(std::int64_t width, std::int64_t height) {
            " texels)";
 }
 
+// Each side below the cap first, so that the product cannot overflow.
+bool exceeds_cap(std::pair<std::int64_t, std::int64_t> size) {
+    return size.first > kMaxTextureTexels || size.second > kMaxTextureTexels ||
+           size.first * size.second > kMaxTextureTexels;
+}
+
 // The header's verdict: "" or why stb cannot decode it.
 std::string header_problem(std::span<const std::uint8_t> bytes, int& width, int& height) {
     if (bytes.size() > static_cast<std::size_t>(std::numeric_limits<int>::max()))
         return "the file is too large";
-    if (const auto claimed = png_claimed_size(bytes);
-        claimed && claimed->first * claimed->second > kMaxTextureTexels)
+    if (const auto claimed = png_claimed_size(bytes); claimed && exceeds_cap(*claimed))
         return too_large(claimed->first, claimed->second);
     if (std::string problem = jpeg_table_problem(bytes); !problem.empty()) return problem;
     int channels = 0;
@@ -36,8 +42,7 @@ std::string header_problem(std::span<const std::uint8_t> bytes, int& width, int&
     if (width <= 0 || height <= 0)
         return "the image has no pixels (" + std::to_string(width) + "x" + std::to_string(height) +
                ")";
-    if (static_cast<std::int64_t>(width) * height > kMaxTextureTexels)
-        return too_large(width, height);
+    if (exceeds_cap({width, height})) return too_large(width, height);
     if (bytes.size() < fewest_bytes_for(bytes, width, height))
         return "the file is too short for the " + std::to_string(width) + "x" +
                std::to_string(height) + " pixels its header claims (" +
