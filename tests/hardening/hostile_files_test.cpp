@@ -60,6 +60,8 @@ TEST_F(HostileImageMaps, FilesThatMisledStbImageAreRefused) {
     const std::pair<const char*, const char*> pictures[] = {
         {"jpeg-huffman-table-of-too-many-codes.jpg",
          "a corrupt JPEG: a Huffman table of 1928 codes (at most 256)"},
+        {"jpeg-huffman-counts-past-the-end.jpg",  // stb_image reads zeros past the end
+         "a corrupt JPEG: a Huffman table of 1671 codes (at most 256)"},
         {"bmp-90-bytes-claiming-5x11665411.bmp",
          "the file is too short for the 5x11665411 pixels its header claims (90 bytes)"},
         {"bmp-of-0x0-pixels.bmp", "the image has no pixels (0x0)"},

@@ -18,12 +18,13 @@ bool stands_alone(std::uint8_t marker) {
 
 // The tables of one DHT segment starting at `at` (after its length), read as
 // stb_image reads them: while the declared length lasts, a class/slot byte,
-// 16 code counts and as many symbols as the counts add up to.
+// 16 code counts and as many symbols as the counts add up to. Past the end of
+// the file stb_image reads zeros, and so does this.
 std::string huffman_segment_problem(std::span<const std::uint8_t> bytes, std::size_t at,
                                     int length) {
-    while (length > 0 && at + 17 <= bytes.size()) {
+    while (length > 0 && at < bytes.size()) {
         int symbols = 0;
-        for (std::size_t i = at + 1; i < at + 17; ++i) symbols += bytes[i];
+        for (std::size_t i = at + 1; i < at + 17 && i < bytes.size(); ++i) symbols += bytes[i];
         if (symbols > most_symbols)
             return "a corrupt JPEG: a Huffman table of " + std::to_string(symbols) +
                    " codes (at most 256)";
