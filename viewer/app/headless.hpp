@@ -60,6 +60,8 @@ class HeadlessViewer {
     int height() const { return context_.height(); }
     // The texture the frames draw the image from.
     const Presenter& presenter() const { return frame_state_.presenter; }
+    // The selection as the last frame drew it over the image.
+    const SelectionOverlay& overlay() const { return frame_state_.overlay; }
     // What the last frame drew where (ui_items.hpp).
     const std::vector<UiItem>& ui_items() const { return frame_state_.ui_items; }
 

@@ -4,12 +4,14 @@
 #include "keys.hpp"
 #include "panels/panels.hpp"
 #include "panels/widgets.hpp"
+#include "picking.hpp"
 #include "ui_items.hpp"
 
 #include <imgui.h>
 #include <imgui_internal.h>
 
 #include <algorithm>
+#include <cmath>
 #include <cstdio>
 
 namespace jt::view {
@@ -55,22 +57,44 @@ void handle_shortcuts(AppState& state) {
     if (pressed(keys::space)) toggle_pause(state);
 }
 
-// Mouse on the image moves the free camera, starting it from the scene camera.
-void handle_camera_mouse(AppState& state, const ScreenRect& image) {
+// How far (window units) a press may move and still be a click.
+constexpr float kClickSlack = 3.0f;
+
+// A click on the image selects what it shows (a light's marker first).
+void click_image(AppState& state, const ScreenRect& image, int image_w, int image_h, float x,
+                 float y) {
+    const std::optional<ImagePoint> at = window_to_image(image, image_w, image_h, x, y);
+    if (!at) return;
+    const double pixels_per_unit = image_w / static_cast<double>(image.width());
+    select_at(state, at->x, at->y, light_marker_radius() * pixels_per_unit);
+}
+
+// Mouse on the image: a click selects, a drag moves the free camera (started
+// from the scene camera), the wheel dollies it.
+void handle_image_mouse(AppState& state, const ScreenRect& image, int image_w, int image_h) {
     const ImGuiIO& io = ImGui::GetIO();
     ImageDrag& drag = state.drag;
     const bool over = io.MousePos.x >= image.x0 && io.MousePos.x < image.x1 &&
                       io.MousePos.y >= image.y0 && io.MousePos.y < image.y1;
     const bool usable = !io.WantCaptureMouse && state.doc.loaded && image.height() > 0;
-    if (drag.button >= 0 && !ImGui::IsMouseDown(drag.button)) drag.button = -1;
+    if (drag.button >= 0 && !ImGui::IsMouseDown(drag.button)) {
+        if (!drag.moved && drag.button == ImGuiMouseButton_Left)
+            click_image(state, image, image_w, image_h, drag.press_x, drag.press_y);
+        drag.button = -1;
+    }
     if (drag.button < 0 && usable && over) {
         for (int button : {ImGuiMouseButton_Left, ImGuiMouseButton_Right, ImGuiMouseButton_Middle})
             if (ImGui::IsMouseClicked(button)) {
-                drag = {button, io.MouseClickedPos[button].x, io.MouseClickedPos[button].y};
+                const ImVec2 at = io.MouseClickedPos[button];
+                drag = {button, at.x, at.y, at.x, at.y, false};
                 break;
             }
     }
     if (drag.button >= 0 && ImGui::IsMousePosValid()) {
+        if (!drag.moved &&
+            std::hypot(io.MousePos.x - drag.press_x, io.MousePos.y - drag.press_y) > kClickSlack)
+            drag.moved = true;
+        if (!drag.moved) return;
         const float dx = io.MousePos.x - drag.last_x, dy = io.MousePos.y - drag.last_y;
         drag.last_x = io.MousePos.x;
         drag.last_y = io.MousePos.y;
@@ -188,6 +212,7 @@ void viewer_frame(AppState& state, FrameState& frame, const FrameInfo& info) {
         // Once the panel edge is let go: a drag writes the file once, not every frame.
         if (!ImGui::IsMouseDown(ImGuiMouseButton_Left)) remember_settings(state);
     }
+    state.reveal_selection = false;  // the panels have shown it
     unsaved_prompt(state);
     track_edits(state, before, generation, ImGui::IsAnyItemActive());
     check_edits(state);
@@ -196,8 +221,10 @@ void viewer_frame(AppState& state, FrameState& frame, const FrameInfo& info) {
         frame.presenter.upload(state.display, changed);
     const ScreenRect image = place_image(frame.presenter.width(), frame.presenter.height(), area,
                                          info.framebuffer_scale, state.fit);
-    handle_camera_mouse(state, image);
+    const int image_w = frame.presenter.width(), image_h = frame.presenter.height();
+    handle_image_mouse(state, image, image_w, image_h);
     frame.presenter.draw(ImGui::GetBackgroundDrawList(), image);
+    frame.overlay.draw(state, ImGui::GetBackgroundDrawList(), image, image_w, image_h);
     collect_ui_items(nullptr);
 }
 

@@ -5,6 +5,7 @@
 
 #include "app_state.hpp"
 #include "presenter.hpp"
+#include "selection_overlay.hpp"
 #include "ui_items.hpp"
 
 #include <string>
@@ -21,6 +22,7 @@ struct FrameInfo {
 // context (its texture must go before the context does).
 struct FrameState {
     Presenter presenter;
+    SelectionOverlay overlay;
     std::vector<UiItem> ui_items;
 };
 

@@ -7,10 +7,13 @@
 #include "file_watcher.hpp"
 #include "free_camera.hpp"
 #include "image_layout.hpp"
+#include "primitive_ids.hpp"
 #include "recent_files.hpp"
 #include "render_controller.hpp"
 #include "scene_document.hpp"
 #include "scene_loader.hpp"
+#include "selection.hpp"
+#include "shown_frame.hpp"
 #include "undo_stack.hpp"
 #include "viewer_settings.hpp"
 #include "wakeup.hpp"
@@ -60,9 +63,13 @@ struct GuardedCommand {
 // A mouse drag on the image: only a press on the image starts one, and each
 // frame moves the camera by the motion since the last (the first: since the
 // press), never by motion made before the press.
+// A press that is let go before moving more than a few units is a click (it
+// selects what it is on) and moves nothing.
 struct ImageDrag {
     int button = -1;  // ImGuiMouseButton, -1 when no drag
     float last_x = 0, last_y = 0;
+    float press_x = 0, press_y = 0;
+    bool moved = false;  // beyond a click's slack: the camera follows
 };
 
 struct AppState {
@@ -108,6 +115,12 @@ struct AppState {
     FreeCamera free_camera;
     std::string new_camera_name = "viewer";
     ImageDrag drag;
+
+    Selection selection;            // read through current_selection (picking.hpp)
+    bool reveal_selection = false;  // its panel opens and scrolls to it in the next frame
+    std::string object_filter;      // the Objects panel lists the objects whose name holds it
+    ShownFrame shown_frame;         // what picking picks in
+    PrimitiveIds primitive_ids;     // what every pixel shows, for the selection's outline
 
     RenderController renderer;
     std::optional<RenderRequest> started;   // the request the current render answers

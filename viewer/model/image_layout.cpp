@@ -27,4 +27,19 @@ ScreenRect place_image(int image_w, int image_h, ScreenRect area, float framebuf
     return {x0, y0, x0 + w, y0 + h};
 }
 
+std::optional<ImagePoint> window_to_image(const ScreenRect& where, int image_w, int image_h,
+                                          float x, float y) {
+    if (image_w <= 0 || image_h <= 0 || where.width() <= 0 || where.height() <= 0) return {};
+    if (x < where.x0 || x >= where.x1 || y < where.y0 || y >= where.y1) return {};
+    return ImagePoint{(x - where.x0) / where.width() * image_w,
+                      (where.y1 - y) / where.height() * image_h};
+}
+
+WindowPoint image_to_window(const ScreenRect& where, int image_w, int image_h,
+                            const ImagePoint& p) {
+    if (image_w <= 0 || image_h <= 0) return {};
+    return {where.x0 + static_cast<float>(p.x / image_w) * where.width(),
+            where.y1 - static_cast<float>(p.y / image_h) * where.height()};
+}
+
 }  // namespace jt::view

@@ -2,6 +2,10 @@
 // Where the image goes in the window: plain geometry, shared by the frame
 // code (which draws there) and the tests (which click there).
 
+#include "jtracer/pick.hpp"
+
+#include <optional>
+
 namespace jt::view {
 
 // An axis-aligned rectangle in window units (ImGui's coordinates, y down).
@@ -19,5 +23,17 @@ enum class FitMode { fit, actual_pixels };
 // window unit).
 ScreenRect place_image(int image_w, int image_h, ScreenRect area, float framebuffer_scale,
                        FitMode mode);
+
+// The image point under window point (x, y), for an image of `image_w` x
+// `image_h` pixels drawn at `where` (image pixels from the bottom left
+// corner, as pick.hpp counts them), or nothing outside the image.
+std::optional<ImagePoint> window_to_image(const ScreenRect& where, int image_w, int image_h,
+                                          float x, float y);
+
+struct WindowPoint {
+    float x = 0, y = 0;
+};
+// Where image point `p` is drawn in the window.
+WindowPoint image_to_window(const ScreenRect& where, int image_w, int image_h, const ImagePoint& p);
 
 }  // namespace jt::view

@@ -13,8 +13,9 @@ struct RenderController::Run {
     std::atomic<bool> stop{false};
     std::atomic<bool> done{false};
     std::atomic<int> passes{0};
-    mutable std::mutex mutex;        // guards job and error
-    std::shared_ptr<RenderJob> job;  // set once the scene is prepared
+    mutable std::mutex mutex;                       // guards job and error
+    std::shared_ptr<RenderJob> job;                 // set once the scene is prepared
+    std::shared_ptr<const PreparedScene> prepared;  // the scene of `job`
     std::string error;
     RunTimeline timeline;
 
@@ -106,6 +107,7 @@ void RenderController::launch(const std::shared_ptr<Run>& run, const Scene* scen
                     }
                     std::lock_guard lock(run->mutex);
                     run->job = job;
+                    run->prepared = *prepared;
                     run->timeline.prepared = RunTimeline::Clock::now();
                 }
                 while (!run->stop && job->run_pass()) {
@@ -160,6 +162,7 @@ bool RenderController::resume() {
     {
         std::lock_guard lock(paused->mutex);
         run->timeline = paused->timeline;
+        run->prepared = paused->prepared;
     }
     {
         std::lock_guard lock(mutex_);
@@ -211,6 +214,13 @@ int RenderController::passes_since_start() const {
 std::shared_ptr<const PreparedScene> RenderController::prepared() const {
     std::lock_guard lock(mutex_);
     return prepared_;
+}
+
+std::shared_ptr<const PreparedScene> RenderController::current_prepared() const {
+    std::lock_guard lock(mutex_);
+    if (!current_) return nullptr;
+    std::lock_guard run_lock(current_->mutex);
+    return current_->prepared;
 }
 
 RunTimeline RenderController::timeline() const {

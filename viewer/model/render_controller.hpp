@@ -63,6 +63,9 @@ class RenderController {
     // The scene the latest run prepared (its geometry is what the next start()
     // reuses when only materials, lights, cameras or settings changed).
     std::shared_ptr<const PreparedScene> prepared() const;
+    // The scene the current job renders, once prepared (null while it is
+    // being prepared, or when it could not be): what the image shows.
+    std::shared_ptr<const PreparedScene> current_prepared() const;
     // Notified (on the render thread) whenever a pass is done and when a run
     // ends. Set before the first start().
     void set_wakeup(Wakeup* wakeup) { wakeup_ = wakeup; }

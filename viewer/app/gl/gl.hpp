@@ -44,6 +44,12 @@ extern PFNJTGLFINISHPROC jt_glFinish;
 #ifndef GL_RGB8
 #define GL_RGB8 0x8051
 #endif
+#ifndef GL_RGBA
+#define GL_RGBA 0x1908
+#endif
+#ifndef GL_RGBA8
+#define GL_RGBA8 0x8058
+#endif
 #ifndef GL_NEAREST
 #define GL_NEAREST 0x2600
 #endif

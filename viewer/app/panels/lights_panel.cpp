@@ -1,5 +1,6 @@
 #include "panels/panels.hpp"
 #include "panels/property_fields.hpp"
+#include "picking.hpp"
 #include "ui_items.hpp"
 
 #include <imgui.h>
@@ -10,13 +11,21 @@ namespace jt::view {
 
 void lights_panel(AppState& state) {
     auto& lights = state.doc.scene.lights;
+    const Selection selection = current_selection(state);
+    const int selected = selection.kind == Selection::Kind::light ? selection.index : -1;
+    const bool reveal = state.reveal_selection && selected >= 0;
+    if (reveal) ImGui::SetNextItemOpen(true);
     const std::string title = "Lights (" + std::to_string(lights.size()) + ")###lights";
     if (!panel_header(title.c_str(), "Lights", false)) return;
     for (std::size_t i = 0; i < lights.size(); ++i) {
         ImGui::PushID(static_cast<int>(i));
         const std::string label = "point_light " + std::to_string(i + 1);
-        const bool open = ImGui::TreeNode(label.c_str());
+        const bool chosen = static_cast<int>(i) == selected;
+        if (reveal && chosen) ImGui::SetNextItemOpen(true);
+        const bool open =
+            ImGui::TreeNodeEx(label.c_str(), chosen ? ImGuiTreeNodeFlags_Selected : 0);
         note_item(label.c_str(), false);
+        if (reveal && chosen) ImGui::SetScrollHereY(0.2f);
         if (open) {
             edit_properties(lights[i]);
             ImGui::TreePop();

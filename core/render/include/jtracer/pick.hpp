@@ -16,6 +16,9 @@
 
 namespace jt {
 
+// The whole image of `frame`: [0, width) x [0, height).
+PixelRect frame_rect(const PreparedFrame& frame);
+
 struct PickedPrimitive {
     int primitive = -1;     // the index in Scene::primitives
     double distance = 0.0;  // from the camera's position along the unit ray

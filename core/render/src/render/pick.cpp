@@ -18,6 +18,10 @@ bool finite(const Vec3& v) {
 
 }  // namespace
 
+PixelRect frame_rect(const PreparedFrame& frame) {
+    return {0, 0, frame.options.width, frame.options.height};
+}
+
 std::optional<PickedPrimitive> pick_primitive(const PreparedFrame& frame, int x, int y) {
     if (x < 0 || y < 0 || x >= frame.options.width || y >= frame.options.height) return {};
     const CameraFrame& camera = frame.camera;

@@ -1,0 +1,71 @@
+// Picking in the model (no GL): a click selects what the core's pick says the
+// pixel shows, a light's marker wins near it, the background clears, and a
+// selection that no longer names anything reads as none.
+
+#include "picking.hpp"
+#include "app_actions.hpp"
+#include "model_loop.hpp"
+#include "viewer_test_files.hpp"
+
+#include <gtest/gtest.h>
+
+namespace jt::view {
+namespace {
+
+using namespace jt::test;
+using Kind = Selection::Kind;
+
+class Picking : public ::testing::Test {
+  protected:
+    void SetUp() override {
+        open_scene(state, kScene);
+        ASSERT_TRUE(model.run_until_complete(state));
+    }
+    ModelLoop model;
+    AppState state{test_config()};
+};
+
+TEST_F(Picking, AClickSelectsWhatTheCoresPickSaysThePixelShows) {
+    const std::shared_ptr<const PreparedFrame> frame = shown_frame(state);
+    ASSERT_TRUE(frame);
+    int on_sphere = 0, on_plane = 0, on_background = 0;
+    for (int y = 0; y < state.display.height; ++y)
+        for (int x = 0; x < state.display.width; ++x) {
+            select_at(state, x + 0.5, y + 0.5, 0.0);
+            const std::optional<PickedPrimitive> pick = pick_primitive(*frame, x, y);
+            if (!pick) {
+                EXPECT_EQ(state.selection.kind, Kind::none) << x << "," << y;
+                ++on_background;
+                continue;
+            }
+            EXPECT_EQ(state.selection, (Selection{Kind::primitive, pick->primitive}));
+            EXPECT_TRUE(state.reveal_selection);
+            (pick->primitive == 0 ? on_plane : on_sphere) += 1;
+        }
+    EXPECT_GT(on_sphere, 0);
+    EXPECT_GT(on_plane, 0);
+    EXPECT_GT(on_background, 0);
+}
+
+TEST_F(Picking, ALightsMarkerIsSelectedWithinItsRadius) {
+    const std::vector<LightMarker> markers = light_markers(state);
+    ASSERT_EQ(markers.size(), 1u);
+    const ImagePoint at = markers[0].at;
+    select_at(state, at.x + 1.5, at.y, 2.0);
+    EXPECT_EQ(state.selection, (Selection{Kind::light, 0}));
+    select_at(state, at.x + 3.0, at.y, 2.0);
+    EXPECT_NE(state.selection.kind, Kind::light) << "beyond the radius";
+}
+
+TEST_F(Picking, ASelectionOfSomethingDeletedReadsAsNone) {
+    select(state, {Kind::primitive, 1});
+    EXPECT_EQ(current_selection(state), (Selection{Kind::primitive, 1}));
+    edit_scene(state, [](Scene& s) { s.primitives.pop_back(); });
+    EXPECT_EQ(current_selection(state).kind, Kind::none);
+    EXPECT_FALSE(shown_frame(state)) << "the image still shows the old objects: no picking";
+    ASSERT_TRUE(model.run_until_complete(state));
+    EXPECT_TRUE(shown_frame(state));
+}
+
+}  // namespace
+}  // namespace jt::view

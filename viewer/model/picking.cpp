@@ -1,0 +1,92 @@
+#include "picking.hpp"
+
+#include "app_actions.hpp"
+#include "jtracer/schema.hpp"
+
+#include <cmath>
+
+namespace jt::view {
+
+std::shared_ptr<const PreparedFrame> shown_frame(AppState& state) {
+    if (!state.started ||
+        state.started->scene.primitives.size() != state.doc.scene.primitives.size())
+        return nullptr;
+    std::shared_ptr<const PreparedScene> scene = state.renderer.current_prepared();
+    if (!scene) return nullptr;
+    const RenderOptions& o = state.started->options;
+    ShownFrame& shown = state.shown_frame;
+    if (shown.scene != scene || shown.width != o.width || shown.height != o.height ||
+        shown.camera != o.camera) {
+        shown = {scene, o.width, o.height, o.camera, prepare_frame(scene, o)};
+    }
+    return shown.frame;
+}
+
+std::optional<PickedPrimitive> primitive_at(AppState& state, int x, int y) {
+    const std::shared_ptr<const PreparedFrame> frame = shown_frame(state);
+    if (!frame) return std::nullopt;
+    return pick_primitive(*frame, x, y);
+}
+
+std::vector<LightMarker> light_markers(AppState& state) {
+    std::vector<LightMarker> markers;
+    const std::shared_ptr<const PreparedFrame> frame = shown_frame(state);
+    if (!frame) return markers;
+    const auto& lights = state.doc.scene.lights;
+    for (std::size_t i = 0; i < lights.size(); ++i)
+        if (const std::optional<ImagePoint> at = project_to_image(*frame, lights[i].position))
+            markers.push_back({static_cast<int>(i), *at});
+    return markers;
+}
+
+void select(AppState& state, Selection selection) {
+    state.selection = selection;
+    state.reveal_selection = selection.kind != Selection::Kind::none;
+}
+
+void select_at(AppState& state, double x, double y, double marker_radius) {
+    double nearest = marker_radius;
+    std::optional<int> light;
+    for (const LightMarker& m : light_markers(state)) {
+        const double d = std::hypot(m.at.x - x, m.at.y - y);
+        if (d <= nearest) {
+            nearest = d;
+            light = m.light;
+        }
+    }
+    if (light) {
+        select(state, {Selection::Kind::light, *light});
+        state.message = "Selected point_light " + std::to_string(*light + 1);
+        return;
+    }
+    const std::optional<PickedPrimitive> hit =
+        primitive_at(state, static_cast<int>(std::floor(x)), static_cast<int>(std::floor(y)));
+    if (!hit) {
+        select(state, {});
+        state.message = "Selection cleared";
+        return;
+    }
+    select(state, {Selection::Kind::primitive, hit->primitive});
+    const Primitive& p = state.doc.scene.primitives[static_cast<std::size_t>(hit->primitive)];
+    state.message =
+        "Selected " + std::string(keyword_of(p.shape)) + " " + std::to_string(hit->primitive + 1);
+}
+
+Selection current_selection(const AppState& state) {
+    const Selection& s = state.selection;
+    const std::size_t count = s.kind == Selection::Kind::primitive
+                                  ? state.doc.scene.primitives.size()
+                              : s.kind == Selection::Kind::light ? state.doc.scene.lights.size()
+                                                                 : 0;
+    if (s.index < 0 || static_cast<std::size_t>(s.index) >= count) return {};
+    return s;
+}
+
+std::shared_ptr<const PrimitiveIdImage> shown_primitive_ids(AppState& state) {
+    const std::shared_ptr<const PreparedFrame> frame = shown_frame(state);
+    if (!frame) return nullptr;
+    state.primitive_ids.request(frame);
+    return state.primitive_ids.ready(frame.get());
+}
+
+}  // namespace jt::view
