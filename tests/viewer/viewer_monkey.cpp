@@ -2,7 +2,8 @@
 // an OSMesa context, as a careless user at speed would make them: mouse moves,
 // drags and wheel on the image, clicks and drags on every control the last
 // frame drew, keys (Esc, Ctrl+Z, Ctrl+Shift+Z, Space, C, R, S, Ctrl+S,
-// Ctrl+Q, ...), typing, camera changes, copy-to-scene, and the scene file
+// Ctrl+Q, ...), typing, camera changes, copy-to-scene, clicks that select in
+// the image, the Objects filter, and the scene file
 // rewritten, truncated, deleted, replaced by garbage or by a scene with fewer
 // cameras while the viewer has it open. After every event it checks:
 //
@@ -11,6 +12,7 @@
 //     the viewer that parses to exactly the viewer's scene; no temporary
 //     file is left beside it; every image saved is a whole PNG;
 //   - with no undo history (just loaded), the scene is the file's scene;
+//   - a click on the image selects something the scene has (or nothing);
 // and every few events, undoing everything gives back the scene the history
 // started from (the loaded file's, when nothing was saved since) and redoing
 // everything the scene before. Crashes and sanitizer reports end the run.
@@ -25,6 +27,7 @@
 #include "jtracer/png.hpp"
 #include "keys.hpp"
 #include "panels/panels.hpp"
+#include "picking.hpp"
 
 #include <imgui.h>
 
@@ -245,6 +248,17 @@ class Monkey {
             last_event_ = "copy to scene";
             copy_free_camera_to_scene(state_, "monkey" + std::to_string(pick(3)));
             frame();
+        } else if (kind < 92) {
+            last_event_ = "click to select";
+            const float x = uniform(0, w), y = uniform(0, h);
+            viewer_.drag(state_, 0, x, y, x, y);
+            frames_ += 6;
+            check_selection();
+        } else if (kind < 94) {
+            last_event_ = "object filter";
+            const char* filters[] = {"", "sphere", "plane 1", "zzz"};
+            state_.object_filter = filters[pick(4)];
+            frame();
         } else {
             change_the_file();
         }
@@ -368,6 +382,14 @@ class Monkey {
 
     // Every file in the folder is whole: the scene is a text the monkey wrote
     // or one the viewer saved; images are whole PNGs; no temporary is left.
+    // A click selects an object or light the scene has now, or nothing: never
+    // an index of a scene the image no longer shows.
+    void check_selection() {
+        if (state_.selection != current_selection(state_))
+            fail("a click selected " + std::to_string(state_.selection.index) + " of " +
+                 std::to_string(state_.doc.scene.primitives.size()) + " objects");
+    }
+
     void check_files() {
         for (const auto& entry : fs::directory_iterator(dir_)) {
             const std::string name = entry.path().filename().string();

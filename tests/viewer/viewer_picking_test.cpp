@@ -11,6 +11,7 @@
 #include <gtest/gtest.h>
 
 #include <chrono>
+#include <cstdio>
 #include <thread>
 
 namespace jt::view {
@@ -72,6 +73,18 @@ TEST_F(ViewerPicking, AClickSelectsOutlinesOverTheImageAndOpensTheObject) {
     EXPECT_EQ(state.selection.kind, Kind::none);
     viewer.frame(state);
     EXPECT_EQ(viewer.overlay().outlined_pixels(), 0);
+}
+
+TEST_F(ViewerPicking, HoveringThePictureInspectsThePixelUnderTheMouse) {
+    const WindowPoint p = window_point(32.5, 20.5);
+    viewer.move_mouse(state, p.x, p.y);
+    const std::uint8_t* rgb = state.display.pixel(32, 20);
+    char expected[64];
+    std::snprintf(expected, sizeof expected, "x 32, y 27   RGB %d %d %d", rgb[0], rgb[1], rgb[2]);
+    EXPECT_EQ(state.inspected.rfind(expected, 0), 0u) << state.inspected;
+    EXPECT_NE(state.inspected.find("sphere 2 at distance"), std::string::npos) << state.inspected;
+    viewer.move_mouse(state, 20, 20);  // over the panel
+    EXPECT_TRUE(state.inspected.empty());
 }
 
 TEST_F(ViewerPicking, TheObjectsListDrawsOnlyTheRowsInViewOfAHundredThousand) {

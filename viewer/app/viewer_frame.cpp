@@ -5,6 +5,7 @@
 #include "panels/panels.hpp"
 #include "panels/widgets.hpp"
 #include "picking.hpp"
+#include "pixel_inspector.hpp"
 #include "ui_items.hpp"
 
 #include <imgui.h>
@@ -109,6 +110,23 @@ void handle_image_mouse(AppState& state, const ScreenRect& image, int image_w, i
         use_free_camera(state);
         dolly(state.free_camera, io.MouseWheel);
     }
+}
+
+// Hovering the image (not dragging) shows what the pixel under the mouse holds.
+void inspect_hovered_pixel(AppState& state, const ScreenRect& image, int image_w, int image_h) {
+    state.inspected.clear();
+    const ImGuiIO& io = ImGui::GetIO();
+    if (state.drag.button >= 0 || io.WantCaptureMouse || !ImGui::IsMousePosValid()) return;
+    const std::optional<ImagePoint> at =
+        window_to_image(image, image_w, image_h, io.MousePos.x, io.MousePos.y);
+    if (!at) return;
+    const std::optional<PixelReport> report =
+        inspect_pixel(state, static_cast<int>(at->x), static_cast<int>(at->y));
+    if (!report) return;
+    state.inspected = describe(*report, state.doc.scene);
+    ImGui::BeginTooltip();
+    ImGui::TextUnformatted(state.inspected.c_str());
+    ImGui::EndTooltip();
 }
 
 // The sidebar's width: the user's (dragged at its right edge), kept within
@@ -223,6 +241,7 @@ void viewer_frame(AppState& state, FrameState& frame, const FrameInfo& info) {
                                          info.framebuffer_scale, state.fit);
     const int image_w = frame.presenter.width(), image_h = frame.presenter.height();
     handle_image_mouse(state, image, image_w, image_h);
+    inspect_hovered_pixel(state, image, image_w, image_h);
     frame.presenter.draw(ImGui::GetBackgroundDrawList(), image);
     frame.overlay.draw(state, ImGui::GetBackgroundDrawList(), image, image_w, image_h);
     collect_ui_items(nullptr);

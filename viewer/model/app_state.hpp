@@ -119,6 +119,7 @@ struct AppState {
     Selection selection;            // read through current_selection (picking.hpp)
     bool reveal_selection = false;  // its panel opens and scrolls to it in the next frame
     std::string object_filter;      // the Objects panel lists the objects whose name holds it
+    std::string inspected;          // what the pixel under the mouse holds, or empty
     ShownFrame shown_frame;         // what picking picks in
     PrimitiveIds primitive_ids;     // what every pixel shows, for the selection's outline
 

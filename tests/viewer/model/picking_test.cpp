@@ -5,6 +5,7 @@
 #include "picking.hpp"
 #include "app_actions.hpp"
 #include "model_loop.hpp"
+#include "pixel_inspector.hpp"
 #include "viewer_test_files.hpp"
 
 #include <gtest/gtest.h>
@@ -65,6 +66,42 @@ TEST_F(Picking, ASelectionOfSomethingDeletedReadsAsNone) {
     EXPECT_FALSE(shown_frame(state)) << "the image still shows the old objects: no picking";
     ASSERT_TRUE(model.run_until_complete(state));
     EXPECT_TRUE(shown_frame(state));
+}
+
+}  // namespace
+}  // namespace jt::view
+
+namespace jt::view {
+namespace {
+
+// The inspector reads the display's own bytes, counts rows from the top as
+// --region does, and names what the pick names.
+TEST_F(Picking, TheInspectorGivesThePixelsBytesAndWhatItShows) {
+    const std::shared_ptr<const PreparedFrame> frame = shown_frame(state);
+    ASSERT_TRUE(frame);
+    const Image8& image = state.display;
+    for (int y = 0; y < image.height; ++y)
+        for (int x = 0; x < image.width; ++x) {
+            const std::optional<PixelReport> r = inspect_pixel(state, x, y);
+            ASSERT_TRUE(r);
+            EXPECT_EQ(r->x, x);
+            EXPECT_EQ(r->y, image.height - 1 - y) << "from the top, as --region counts";
+            EXPECT_TRUE(std::equal(r->rgb.begin(), r->rgb.end(), image.pixel(x, y)));
+            const std::optional<PickedPrimitive> pick = pick_primitive(*frame, x, y);
+            ASSERT_EQ(r->hit.has_value(), pick.has_value());
+            if (pick) {
+                EXPECT_EQ(r->hit->primitive, pick->primitive);
+                EXPECT_EQ(r->hit->distance, pick->distance);
+            }
+        }
+    EXPECT_FALSE(inspect_pixel(state, -1, 0));
+    EXPECT_FALSE(inspect_pixel(state, image.width, 0));
+    PixelReport r{3, 4, {230, 51, 0}, PickedPrimitive{1, 5.25}};
+    EXPECT_EQ(describe(r, state.doc.scene),
+              "x 3, y 4   RGB 230 51 0 = 0.902 0.200 0.000\nsphere 2 at distance 5.25");
+    r.hit.reset();
+    EXPECT_EQ(describe(r, state.doc.scene),
+              "x 3, y 4   RGB 230 51 0 = 0.902 0.200 0.000\nbackground");
 }
 
 }  // namespace

@@ -1,0 +1,36 @@
+#include "pixel_inspector.hpp"
+
+#include "jtracer/schema.hpp"
+#include "picking.hpp"
+
+#include <cstdio>
+
+namespace jt::view {
+
+std::optional<PixelReport> inspect_pixel(AppState& state, int x, int y) {
+    const Image8& image = state.display;
+    if (x < 0 || y < 0 || x >= image.width || y >= image.height) return std::nullopt;
+    PixelReport report;
+    report.x = x;
+    report.y = image.height - 1 - y;
+    const std::uint8_t* p = image.pixel(x, y);
+    report.rgb = {p[0], p[1], p[2]};
+    report.hit = primitive_at(state, x, y);
+    return report;
+}
+
+std::string describe(const PixelReport& r, const Scene& scene) {
+    char text[160];
+    std::snprintf(text, sizeof text, "x %d, y %d   RGB %d %d %d = %.3f %.3f %.3f\n", r.x, r.y,
+                  r.rgb[0], r.rgb[1], r.rgb[2], r.rgb[0] / 255.0, r.rgb[1] / 255.0,
+                  r.rgb[2] / 255.0);
+    std::string line = text;
+    if (!r.hit || static_cast<std::size_t>(r.hit->primitive) >= scene.primitives.size())
+        return line + "background";
+    const Primitive& p = scene.primitives[static_cast<std::size_t>(r.hit->primitive)];
+    std::snprintf(text, sizeof text, "%s %d at distance %.4g",
+                  std::string(keyword_of(p.shape)).c_str(), r.hit->primitive + 1, r.hit->distance);
+    return line + text;
+}
+
+}  // namespace jt::view
