@@ -54,8 +54,10 @@ TEST_F(HostileImageMaps, SizesNoMachineCouldHoldAreRefusedAtTheImageMapString) {
 
 // Found by fuzz/image_map_fuzzer: stb_image 2.27 wrote past its Huffman table
 // for the JPEG (io/jpeg_tables.hpp), spent a minute decoding zeros into the 58
-// million pixels the 90-byte BMP claims (io/image_claims.hpp), and decoded a
-// BMP of no pixels, which sampling would have divided by.
+// million pixels the 90-byte BMP claims (io/image_claims.hpp), decoded a
+// BMP of no pixels, which sampling would have divided by, and copied a PNG's
+// empty first IDAT chunk to a null pointer (io/png_chunks.hpp; the second PNG
+// is otherwise sound).
 TEST_F(HostileImageMaps, FilesThatMisledStbImageAreRefused) {
     const std::pair<const char*, const char*> pictures[] = {
         {"jpeg-huffman-table-of-too-many-codes.jpg",
@@ -65,6 +67,8 @@ TEST_F(HostileImageMaps, FilesThatMisledStbImageAreRefused) {
         {"bmp-90-bytes-claiming-5x11665411.bmp",
          "the file is too short for the 5x11665411 pixels its header claims (90 bytes)"},
         {"bmp-of-0x0-pixels.bmp", "the image has no pixels (0x0)"},
+        {"png-first-idat-empty.png", "a PNG whose first IDAT chunk is empty (at byte 33)"},
+        {"png-4x3-empty-idat-first.png", "a PNG whose first IDAT chunk is empty (at byte 33)"},
     };
     for (const auto& [picture, problem] : pictures) {
         SCOPED_TRACE(picture);

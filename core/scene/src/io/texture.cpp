@@ -3,6 +3,7 @@
 #include "io/file_bytes.hpp"
 #include "io/image_claims.hpp"
 #include "io/jpeg_tables.hpp"
+#include "io/png_chunks.hpp"
 
 #include <stb_image.h>
 
@@ -35,6 +36,7 @@ std::string header_problem(std::span<const std::uint8_t> bytes, int& width, int&
     if (const auto claimed = png_claimed_size(bytes); claimed && exceeds_cap(*claimed))
         return too_large(claimed->first, claimed->second);
     if (std::string problem = jpeg_table_problem(bytes); !problem.empty()) return problem;
+    if (std::string problem = png_chunk_problem(bytes); !problem.empty()) return problem;
     int channels = 0;
     if (!stbi_info_from_memory(bytes.data(), static_cast<int>(bytes.size()), &width, &height,
                                &channels))
