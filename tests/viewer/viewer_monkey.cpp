@@ -3,7 +3,9 @@
 // drags and wheel on the image, clicks and drags on every control the last
 // frame drew, keys (Esc, Ctrl+Z, Ctrl+Shift+Z, Space, C, R, S, Ctrl+S,
 // Ctrl+Q, ...), typing, camera changes, copy-to-scene, clicks that select in
-// the image, the Objects filter, and the scene file
+// the image, the Objects filter, structure edits (add, duplicate, delete
+// blocks, transform operations, cameras), text typed into the document
+// (broken and mended), and the scene file
 // rewritten, truncated, deleted, replaced by garbage or by a scene with fewer
 // cameras while the viewer has it open. After every event it checks:
 //
@@ -22,9 +24,11 @@
 
 #include "app_actions.hpp"
 #include "common/files.hpp"
+#include "document_edits.hpp"
 #include "headless.hpp"
 #include "jtracer/parser.hpp"
 #include "jtracer/png.hpp"
+#include "jtracer/schema.hpp"
 #include "keys.hpp"
 #include "panels/panels.hpp"
 #include "picking.hpp"
@@ -228,14 +232,14 @@ class Monkey {
             click_some_item();
         } else if (kind < 56) {
             drag_some_item();
-        } else if (kind < 78) {
+        } else if (kind < 74) {
             press_some_key();
-        } else if (kind < 82) {
+        } else if (kind < 78) {
             last_event_ = "typing";
             const char* text = pick(2) ? "abc" : "x 1";
             for (const char* c = text; *c; ++c) io.AddInputCharacter(static_cast<unsigned>(*c));
             frame();
-        } else if (kind < 86) {
+        } else if (kind < 82) {
             last_event_ = "camera";
             if (pick(2)) {
                 select_camera(state_, pick(4) - 1);
@@ -244,24 +248,99 @@ class Monkey {
                 orbit(state_.free_camera, uniform(-50, 50), uniform(-50, 50), 240);
             }
             frame();
-        } else if (kind < 88) {
+        } else if (kind < 84) {
             last_event_ = "copy to scene";
             copy_free_camera_to_scene(state_, "monkey" + std::to_string(pick(3)));
             frame();
-        } else if (kind < 92) {
+        } else if (kind < 88) {
             last_event_ = "click to select";
             const float x = uniform(0, w), y = uniform(0, h);
             viewer_.drag(state_, 0, x, y, x, y);
             frames_ += 6;
             check_selection();
-        } else if (kind < 94) {
+        } else if (kind < 89) {
             last_event_ = "object filter";
             const char* filters[] = {"", "sphere", "plane 1", "zzz"};
             state_.object_filter = filters[pick(4)];
             frame();
+        } else if (kind < 92) {
+            structure_edit();
+            frame();
+        } else if (kind < 94) {
+            type_into_the_text();
+            frame();
         } else {
             change_the_file();
         }
+    }
+
+    // A panel command that rewrites the text, on a block that may or may not exist.
+    void structure_edit() {
+        const std::size_t objects = state_.doc.scene.primitives.size() + 1;
+        const std::size_t any = static_cast<std::size_t>(pick(static_cast<int>(objects)));
+        const BlockKind kinds[] = {BlockKind::camera, BlockKind::primitive, BlockKind::light};
+        const BlockRef block{kinds[pick(3)], static_cast<std::size_t>(pick(4))};
+        switch (pick(10)) {
+            case 0:
+                last_event_ = "add object";
+                add_object(state_, kShapeKinds[static_cast<std::size_t>(pick(3))]);
+                break;
+            case 1:
+                last_event_ = "add light";
+                add_light(state_);
+                break;
+            case 2:
+                last_event_ = "duplicate";
+                duplicate_block(state_, block);
+                break;
+            case 3:
+                last_event_ = "delete";
+                delete_block(state_, block);
+                break;
+            case 4:
+                last_event_ = "add transform op";
+                add_transform_op(state_, any,
+                                 transform_ops()[static_cast<std::size_t>(pick(5))].kind);
+                break;
+            case 5:
+                last_event_ = "move transform op";
+                move_transform_op(state_, any, static_cast<std::size_t>(pick(3)),
+                                  static_cast<std::size_t>(pick(3)));
+                break;
+            case 6:
+                last_event_ = "remove transform op";
+                remove_transform_op(state_, any, static_cast<std::size_t>(pick(3)));
+                break;
+            case 7:
+                last_event_ = "add camera";
+                add_camera(state_);
+                break;
+            case 8:
+                last_event_ = "rename camera";
+                rename_camera(state_, static_cast<std::size_t>(pick(3)),
+                              "m" + std::to_string(pick(3)));
+                break;
+            default:
+                last_event_ = "add material block";
+                add_material_block(state_, any);
+                break;
+        }
+    }
+
+    // Typing in the text editor: a character in or out somewhere, which may
+    // break the text or mend it; sometimes the check is waited for.
+    void type_into_the_text() {
+        last_event_ = "text typed";
+        if (!state_.doc.loaded) return;
+        std::string text = document_text(state_.doc);
+        const std::size_t at =
+            text.empty() ? 0 : static_cast<std::size_t>(pick(static_cast<int>(text.size())));
+        if (pick(2) && !text.empty())
+            text.erase(at, 1);
+        else
+            text.insert(at, 1, " ;x1<{}"[pick(7)]);
+        type_text(state_, text);
+        if (pick(2)) state_.checker.wait();
     }
 
     // One of the controls the last frame drew, or nullopt (after a frame) when none.

@@ -1,6 +1,7 @@
 #include "viewer_frame.hpp"
 
 #include "app_actions.hpp"
+#include "document_edits.hpp"
 #include "keys.hpp"
 #include "panels/panels.hpp"
 #include "panels/widgets.hpp"
@@ -39,7 +40,7 @@ void handle_escape(AppState& state) {
     request_quit(state);
 }
 
-void handle_shortcuts(AppState& state) {
+void handle_shortcuts(AppState& state, FrameState& frame) {
     const ImGuiIO& io = ImGui::GetIO();
     handle_escape(state);
     if (io.WantTextInput || state.unsaved_prompt) return;  // typing in a field: letters are text
@@ -55,6 +56,7 @@ void handle_shortcuts(AppState& state) {
     if (pressed(keys::letter('F')))
         state.fit = state.fit == FitMode::fit ? FitMode::actual_pixels : FitMode::fit;
     if (pressed(keys::letter('H'))) state.show_ui = !state.show_ui;
+    if (pressed(keys::letter('T'))) frame.text_editor.open = !frame.text_editor.open;
     if (pressed(keys::space)) toggle_pause(state);
 }
 
@@ -139,7 +141,7 @@ float sidebar_width(const AppState& state, float window_width) {
                       std::min(most, window_width * 0.75f));
 }
 
-float sidebar(AppState& state, float window_width, float height) {
+float sidebar(AppState& state, FrameState& frame, float window_width, float height) {
     const float width = sidebar_width(state, window_width);
     ImGui::SetNextWindowPos(ImVec2(0, 0));
     ImGui::SetNextWindowSize(ImVec2(width, height));
@@ -151,11 +153,23 @@ float sidebar(AppState& state, float window_width, float height) {
     if (ImGui::GetWindowWidth() != width)
         state.sidebar_width = ImGui::GetWindowWidth() / ImGui::GetFontSize();
     ImGui::PushItemWidth(-ImGui::GetFontSize() * 7.5f);
+    ImGui::Checkbox("Text editor", &frame.text_editor.open);
+    note_item("Text editor", true);
+    tooltip("The scene's text beside the image (T): typing re-renders once it parses");
     file_panel(state);
+    // A draft with errors is the document now: the panels show the last good
+    // scene, and edits to it would be lost when the draft parses.
+    const bool draft = state.doc.draft.has_value();
+    if (draft) {
+        ImGui::TextColored(ImVec4(1.0f, 0.45f, 0.4f, 1.0f), "The text is being edited:");
+        ImGui::TextWrapped("the panels are read-only until it parses.");
+        ImGui::BeginDisabled();
+    }
     camera_panel(state);
     settings_panel(state);
     objects_panel(state);
     lights_panel(state);
+    if (draft) ImGui::EndDisabled();
     diagnostics_panel(state);
     help_panel();
     ImGui::PopItemWidth();
@@ -217,15 +231,22 @@ void viewer_frame(AppState& state, FrameState& frame, const FrameInfo& info) {
     const float w = io.DisplaySize.x, h = io.DisplaySize.y;
     reload_if_changed(state);
     take_finished_load(state);
+    take_checked_text(state);
     const Scene before = state.doc.scene;
     const std::uint64_t generation = state.scene_generation;
-    handle_shortcuts(state);
+    handle_shortcuts(state, frame);
 
     ScreenRect area{0, 0, w, h};
     if (state.show_ui) {
         const float status_h = std::min(status_height(), h);
-        area.x0 = sidebar(state, w, h - status_h);
+        area.x0 = sidebar(state, frame, w, h - status_h);
         area.y1 = h - status_h;
+        if (frame.text_editor.open) {
+            const float editor_w = std::max((w - area.x0) * 0.45f,
+                                            std::min(ImGui::GetFontSize() * 30.0f, w - area.x0));
+            area.x1 = w - editor_w;
+            text_editor(state, frame.text_editor, area.x1, 0.0f, w, area.y1);
+        }
         status_window(state, h - status_h, w);
         // Once the panel edge is let go: a drag writes the file once, not every frame.
         if (!ImGui::IsMouseDown(ImGuiMouseButton_Left)) remember_settings(state);

@@ -6,6 +6,7 @@
 #include "app_state.hpp"
 #include "presenter.hpp"
 #include "selection_overlay.hpp"
+#include "text_editor.hpp"
 #include "ui_items.hpp"
 
 #include <string>
@@ -24,6 +25,7 @@ struct FrameState {
     Presenter presenter;
     SelectionOverlay overlay;
     std::vector<UiItem> ui_items;
+    TextEditorState text_editor;
 };
 
 void viewer_frame(AppState& state, FrameState& frame, const FrameInfo& info);

@@ -19,24 +19,6 @@ int scene_camera_index(const Scene& scene) {
     return std::max(active_camera_index(scene), 0);
 }
 
-// After the scene was replaced by another (undo, redo, reload, a scripted
-// edit), the selected camera index may name no camera or another one: keep
-// the same camera by name when it is still there, else the scene's active one.
-void keep_camera_selection(AppState& state, const Scene& before) {
-    const auto& cameras = state.doc.scene.cameras;
-    const int count = static_cast<int>(cameras.size());
-    const int old = state.camera_index;
-    if (old >= 0 && old < static_cast<int>(before.cameras.size())) {
-        const std::string& name = before.cameras[old].name;
-        if (old < count && cameras[old].name == name) return;
-        if (const int same = name.empty() ? -1 : find_camera(state.doc.scene, name); same >= 0) {
-            state.camera_index = same;
-            return;
-        }
-    }
-    if (old < 0 || old >= count) state.camera_index = scene_camera_index(state.doc.scene);
-}
-
 void after_scene_replaced(AppState& state, const Scene& before) {
     keep_camera_selection(state, before);
     state.undo.clear();
@@ -57,6 +39,21 @@ std::string camera_label(const Camera& camera, int index) {
 }
 
 }  // namespace
+
+void keep_camera_selection(AppState& state, const Scene& before) {
+    const auto& cameras = state.doc.scene.cameras;
+    const int count = static_cast<int>(cameras.size());
+    const int old = state.camera_index;
+    if (old >= 0 && old < static_cast<int>(before.cameras.size())) {
+        const std::string& name = before.cameras[old].name;
+        if (old < count && cameras[old].name == name) return;
+        if (const int same = name.empty() ? -1 : find_camera(state.doc.scene, name); same >= 0) {
+            state.camera_index = same;
+            return;
+        }
+    }
+    if (old < 0 || old >= count) state.camera_index = scene_camera_index(state.doc.scene);
+}
 
 namespace {
 
@@ -102,7 +99,7 @@ void finish_reload(AppState& state, LoadAttempt attempt) {
     // Replacing the scene now would throw the edits away: ask first.
     // The same text again: the only choice is whether to drop the edits, and
     // the diagnostics stay those of the edited scene.
-    const bool unchanged = attempt.text == state.doc.text;
+    const bool unchanged = attempt.text == state.doc.disk_text;
     state.reapply_problem.clear();
     if (!unchanged) {
         if (const Expected<Scene> reapplied = reapply_edits(state.doc, attempt); !reapplied)
@@ -182,7 +179,8 @@ void resolve_reload(AppState& state, ReloadChoice choice) {
     if (edited) {
         state.doc.scene = std::move(*edited);
         keep_camera_selection(state, before);
-        state.undo.record(state.doc.original);  // one undo shows the file as it is
+        // One undo shows the file as it is.
+        state.undo.record({state.doc.text, state.doc.original, std::nullopt});
         state.message = "Reloaded " + name + " and re-applied your edits (not saved yet)";
     } else {
         state.message = "Reloaded " + name + "; your edits were dropped";
@@ -269,7 +267,7 @@ void check_edits(AppState& state) {
     // A failed load's diagnostics describe the file, and a pending reload's the
     // newer text: both stay until the file is fixed or the user chooses.
     if (!doc.loaded || doc.load_failed ||
-        (state.pending_reload && state.pending_reload->text != doc.text)) {
+        (state.pending_reload && state.pending_reload->text != doc.disk_text) || doc.draft) {
         state.checked_scene.reset();
         return;
     }
@@ -284,28 +282,48 @@ void check_edits(AppState& state) {
 
 void edit_scene(AppState& state, const std::function<void(Scene&)>& change) {
     const Scene before = state.doc.scene;
+    const DocumentVersion version = version_of(state.doc);
     change(state.doc.scene);
     keep_camera_selection(state, before);
-    state.undo.record(before);
+    state.undo.record(version);
     ++state.scene_generation;
 }
 
+namespace {
+
+// After undo or redo: a draft brought back is checked again (for its
+// diagnostics); any other text ends the typing burst and its pending check.
+void recheck_draft(AppState& state) {
+    state.typing = false;
+    if (state.doc.draft)
+        state.checker.check(++state.draft_id, *state.doc.draft, state.doc.path,
+                            std::chrono::milliseconds(0));
+    else
+        state.checker.cancel();
+}
+
+}  // namespace
+
 void undo(AppState& state) {
-    if (auto previous = state.undo.undo(state.doc.scene)) {
-        const Scene before = std::exchange(state.doc.scene, std::move(*previous));
+    if (auto previous = state.undo.undo(version_of(state.doc))) {
+        const Scene before = state.doc.scene;
+        restore_version(state.doc, *previous);
         keep_camera_selection(state, before);
         state.message = "Undone";
     }
+    recheck_draft(state);
     state.edit_base.reset();
     ++state.scene_generation;
 }
 
 void redo(AppState& state) {
-    if (auto next = state.undo.redo(state.doc.scene)) {
-        const Scene before = std::exchange(state.doc.scene, std::move(*next));
+    if (auto next = state.undo.redo(version_of(state.doc))) {
+        const Scene before = state.doc.scene;
+        restore_version(state.doc, *next);
         keep_camera_selection(state, before);
         state.message = "Redone";
     }
+    recheck_draft(state);
     state.edit_base.reset();
     ++state.scene_generation;
 }
@@ -318,7 +336,7 @@ void track_edits(AppState& state, const Scene& before_frame, std::uint64_t gener
     }
     if (state.doc.scene != before_frame && !state.edit_base) state.edit_base = before_frame;
     if (!widget_active && state.edit_base) {
-        state.undo.record(*state.edit_base);
+        state.undo.record({state.doc.text, *state.edit_base, state.doc.draft});
         state.edit_base.reset();
     }
 }
@@ -372,8 +390,9 @@ bool copy_free_camera_to_scene(AppState& state, const std::string& name) {
         camera.position = ui_rounded(camera.position);
         camera.look_at = ui_rounded(camera.look_at);
     }
+    const DocumentVersion version = version_of(state.doc);
     state.doc.scene.cameras.push_back(std::move(camera));
-    state.undo.record(before);
+    state.undo.record(version);
     ++state.scene_generation;
     state.camera_index = static_cast<int>(state.doc.scene.cameras.size()) - 1;
     state.free_camera_active = false;

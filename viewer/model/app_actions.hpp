@@ -72,6 +72,10 @@ void track_edits(AppState& state, const Scene& before_frame, std::uint64_t gener
 // that replaces the scene keeps state.camera_index valid; readers still go
 // through this so that no stale index can reach past the cameras.
 int selected_camera(const AppState& state);
+// After the scene was replaced by another (undo, redo, reload, an edit of the
+// text), the selected camera index may name no camera or another one: keeps
+// the same camera by name when it is still there, else the scene's active one.
+void keep_camera_selection(AppState& state, const Scene& before);
 void select_camera(AppState& state, int index);
 void next_camera(AppState& state);
 // Starts moving freely from the selected scene camera (or keeps moving).

@@ -14,6 +14,7 @@
 #include "scene_loader.hpp"
 #include "selection.hpp"
 #include "shown_frame.hpp"
+#include "text_checker.hpp"
 #include "undo_stack.hpp"
 #include "viewer_settings.hpp"
 #include "wakeup.hpp"
@@ -76,6 +77,7 @@ struct AppState {
     explicit AppState(ViewerConfig config = {}) : config(std::move(config)) {
         loader.set_wakeup(&wakeup);
         renderer.set_wakeup(&wakeup);
+        checker.set_wakeup(&wakeup);
         saved_settings = read_viewer_settings(this->config.settings_file);
         sidebar_width = saved_settings.panel_width;
     }
@@ -84,7 +86,14 @@ struct AppState {
     // Before the loader and the renderer: their threads notify it until they end.
     Wakeup wakeup;
     SceneDocument doc;
-    UndoStack undo;
+    SnapshotStack<DocumentVersion> undo;  // one history for panel, structure and text edits
+    TextChecker checker;                  // checks the text editor's draft once typing pauses
+    std::uint64_t draft_id = 0;           // of the newest draft sent to the checker
+    bool typing = false;  // a burst of typing whose undo step is recorded is going on
+    // The selected scene camera's name field (renamed on Enter).
+    std::string camera_name_input;
+    int camera_name_for = -1;
+    bool camera_name_editing = false;
     std::optional<Scene>
         edit_base;  // the scene before the edit in progress (one undo step per drag)
     // Bumped by every command that replaces the scene and keeps the undo stack

@@ -1,6 +1,7 @@
 #include "model_frame.hpp"
 
 #include "app_actions.hpp"
+#include "document_edits.hpp"
 
 #include <thread>
 
@@ -9,6 +10,7 @@ namespace jt::view {
 void model_frame(AppState& state) {
     reload_if_changed(state);
     take_finished_load(state);
+    take_checked_text(state);
     check_edits(state);
     update_render(state);
 }

@@ -47,9 +47,53 @@ void accept_load(SceneDocument& doc, const std::filesystem::path& path, LoadAtte
     doc.path = path;
     doc.loaded = true;
     doc.text = std::move(attempt.text);
+    doc.disk_text = doc.text;
     doc.original = std::move(attempt.scene);
     doc.source = std::move(attempt.source);
     doc.scene = doc.original;
+    doc.draft.reset();
+}
+
+DocumentVersion version_of(const SceneDocument& doc) {
+    return {doc.text, doc.scene, doc.draft};
+}
+
+void restore_version(SceneDocument& doc, const DocumentVersion& version) {
+    if (version.text != doc.text) {
+        ParseResult parsed = parse_scene(version.text);
+        parsed.scene.asset_folder = doc.original.asset_folder;
+        take_text(doc, version.text, std::move(parsed));
+    }
+    doc.scene = version.scene;
+    doc.draft = version.draft;
+}
+
+std::string document_text(const SceneDocument& doc) {
+    if (doc.draft) return *doc.draft;
+    if (doc.scene == doc.original) return doc.text;
+    SourceEditResult edit = apply_scene_edits(doc.text, doc.source, doc.original, doc.scene);
+    return edit.ok() ? std::move(edit.text) : doc.text;
+}
+
+void take_text(SceneDocument& doc, std::string text, ParseResult parsed) {
+    doc.text = std::move(text);
+    doc.original = std::move(parsed.scene);
+    doc.source = std::move(parsed.source);
+    doc.parse_diagnostics = std::move(parsed.diagnostics);
+    doc.scene = doc.original;
+    doc.draft.reset();
+    doc.load_failed = false;
+}
+
+Expected<void> replace_text(SceneDocument& doc, std::string text) {
+    ParseResult parsed = parse_scene(text);
+    for (const Diagnostic& d : parsed.diagnostics)
+        if (d.severity == Severity::error)
+            return Error{"the edited text does not parse (" + std::to_string(d.pos.line) + ":" +
+                         std::to_string(d.pos.column) + ": " + d.message + ")"};
+    parsed.scene.asset_folder = doc.original.asset_folder;
+    take_text(doc, std::move(text), std::move(parsed));
+    return {};
 }
 
 std::string format_diagnostics(const SceneDocument& doc) {
@@ -61,7 +105,7 @@ std::string format_diagnostics(const SceneDocument& doc) {
 }
 
 bool has_unsaved_edits(const SceneDocument& doc) {
-    return doc.loaded && doc.scene != doc.original;
+    return doc.loaded && (doc.draft || doc.scene != doc.original || doc.text != doc.disk_text);
 }
 
 bool file_changed_on_disk(const SceneDocument& doc, std::string& what) {
@@ -72,11 +116,11 @@ bool file_changed_on_disk(const SceneDocument& doc, std::string& what) {
     }
     // A size that differs answers without reading a file that may be huge.
     const std::uintmax_t size = std::filesystem::file_size(doc.path, ec);
-    if (!ec && size == doc.text.size()) {
+    if (!ec && size == doc.disk_text.size()) {
         std::ifstream in(doc.path, std::ios::binary);
-        std::string bytes(doc.text.size(), '\0');
+        std::string bytes(doc.disk_text.size(), '\0');
         if (in.read(bytes.data(), static_cast<std::streamsize>(bytes.size())) &&
-            in.peek() == std::char_traits<char>::eof() && bytes == doc.text)
+            in.peek() == std::char_traits<char>::eof() && bytes == doc.disk_text)
             return false;
     }
     what = "was changed by another program";
@@ -84,6 +128,10 @@ bool file_changed_on_disk(const SceneDocument& doc, std::string& what) {
 }
 
 Expected<Scene> reapply_edits(const SceneDocument& doc, const LoadAttempt& newer) {
+    if (doc.draft || doc.text != doc.disk_text)
+        return Error{
+            "the text itself was edited (typed, or blocks added or deleted); only "
+            "changed values can be re-applied to a newer file"};
     SourceEditResult edit = apply_scene_edits(newer.text, newer.source, doc.original, doc.scene);
     if (!edit.ok()) return Error{edit.error};
     ParseResult parsed = parse_scene(edit.text);
@@ -97,6 +145,7 @@ Expected<void> save_scene_in_place(SceneDocument& doc) {
 
 Expected<void> save_scene_copy(SceneDocument& doc, const std::filesystem::path& path) {
     if (!doc.loaded) return Error{"no scene is open"};
+    if (doc.draft) return Error{"the text has errors (see Diagnostics): fix them before saving"};
     SourceEditResult edit = apply_scene_edits(doc.text, doc.source, doc.original, doc.scene);
     if (!edit.ok()) return Error{edit.error};
     // Check before writing: the new text must mean exactly the edited scene.
@@ -109,6 +158,7 @@ Expected<void> save_scene_copy(SceneDocument& doc, const std::filesystem::path& 
     doc.path = path;
     doc.diagnostics_path = path;
     doc.text = std::move(edit.text);
+    doc.disk_text = doc.text;
     doc.original = doc.scene;
     doc.source = std::move(check.source);
     doc.diagnostics = check.diagnostics;

@@ -1,10 +1,14 @@
 #pragma once
-// The scene file the viewer has open: its text as last loaded successfully, the
-// parse of that text (scene + spans, the base for saving in place), the scene
-// as edited since, and the diagnostics of the latest load attempt.
+// The scene file the viewer has open. One document, whichever way it is
+// edited: its text (the base), the parse of that text (scene + spans, the base
+// for saving in place), the scene as edited in the panels since, and a draft
+// typed in the text editor that has not parsed yet. A panel edit changes the
+// scene; an edit of the structure (adding, deleting a block) or a draft that
+// parses replaces the base; document_text is what Save scene writes.
 
 #include "jtracer/diagnostics.hpp"
 #include "jtracer/error.hpp"
+#include "jtracer/parser.hpp"
 #include "jtracer/scene.hpp"
 #include "jtracer/source_map.hpp"
 
@@ -18,9 +22,10 @@ namespace jt::view {
 
 struct SceneDocument {
     std::filesystem::path path;
-    bool loaded = false;  // a good scene is held (from this file or an earlier one)
-    std::string text;     // the text `original` and `source` were parsed from
-    Scene original;       // the scene as in `text`
+    bool loaded = false;    // a good scene is held (from this file or an earlier one)
+    std::string text;       // the text `original` and `source` were parsed from
+    std::string disk_text;  // the file's bytes as last loaded or saved
+    Scene original;         // the scene as in `text`
     SceneSource source;
     Scene scene;                                // as edited in the viewer
     std::vector<Diagnostic> parse_diagnostics;  // the parser's warnings about `text`
@@ -29,7 +34,36 @@ struct SceneDocument {
     std::string diagnostics_source;          // the text they point into (to quote lines)
     std::filesystem::path diagnostics_path;  // the file they are about
     bool load_failed = false;                // the latest load attempt had errors: `scene` is older
+    // Text typed in the text editor, not yet taken in: waiting for its check,
+    // or with errors (`diagnostics` then describe it and `scene` is the last
+    // good one).
+    std::optional<std::string> draft;
 };
+
+// What undo brings back: the document's base text, its scene as edited, its draft.
+struct DocumentVersion {
+    std::string text;
+    Scene scene;
+    std::optional<std::string> draft;
+    bool operator==(const DocumentVersion&) const = default;
+};
+
+DocumentVersion version_of(const SceneDocument& doc);
+// Brings the document back to `version`, parsing its text when the base differs.
+void restore_version(SceneDocument& doc, const DocumentVersion& version);
+
+// The document's text as Save scene would write it: the draft, or the base
+// with the panel edits written in (see source_edit.hpp); the base when they
+// cannot be.
+std::string document_text(const SceneDocument& doc);
+
+// Makes `parsed` (of `text`, without errors) the document's base, its scene
+// the edited one; the draft goes.
+void take_text(SceneDocument& doc, std::string text, ParseResult parsed);
+
+// Parses `text` and takes it in when it has no errors; otherwise nothing
+// changes and the error says where the first one is.
+Expected<void> replace_text(SceneDocument& doc, std::string text);
 
 // When a load reached each step (for the latency benchmark).
 struct LoadTimes {

@@ -137,7 +137,7 @@ TEST(FreeCamera, DollyApproachesButNeverReachesTheTarget) {
 }
 
 TEST(UndoStack, UndoAndRedoWalkTheSnapshots) {
-    UndoStack stack;
+    SnapshotStack<Scene> stack;
     Scene a, b, c;
     b.settings.width = 1;
     c.settings.width = 2;
@@ -158,7 +158,7 @@ TEST(UndoStack, UndoAndRedoWalkTheSnapshots) {
 }
 
 TEST(UndoStack, KeepsAtMostItsCapacity) {
-    UndoStack stack(3);
+    SnapshotStack<Scene> stack(3);
     for (int i = 0; i < 10; ++i) {
         Scene s;
         s.settings.width = i;

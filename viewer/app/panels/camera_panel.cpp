@@ -1,5 +1,7 @@
 #include "app_actions.hpp"
+#include "document_edits.hpp"
 #include "panels/panels.hpp"
+#include "panels/property_fields.hpp"
 #include "panels/widgets.hpp"
 #include "ui_items.hpp"
 
@@ -7,6 +9,8 @@
 #include <imgui_stdlib.h>
 
 #include "jtracer/validate.hpp"
+
+#include <functional>
 
 namespace jt::view {
 
@@ -24,6 +28,46 @@ std::string why_not_make_active(const Scene& scene, int selected) {
     if (selected == active_camera_index(scene))
         return "This camera is already the one jtracer-cli renders (active_camera)";
     return {};
+}
+
+// The selected scene camera's name and numbers, and the commands on it. The
+// commands run after its fields are drawn: they replace the camera list.
+void scene_camera_editor(AppState& state, int selected) {
+    ImGui::Separator();
+    ImGui::TextDisabled("scene camera %d", selected + 1);
+    Camera& camera = state.doc.scene.cameras[static_cast<std::size_t>(selected)];
+    const std::size_t index = static_cast<std::size_t>(selected);
+    std::function<void()> command;
+    if (state.camera_name_for != selected || !state.camera_name_editing)
+        state.camera_name_input = camera.name;
+    state.camera_name_for = selected;
+    const bool entered =
+        ImGui::InputText("name", &state.camera_name_input, ImGuiInputTextFlags_EnterReturnsTrue);
+    state.camera_name_editing = ImGui::IsItemActive();
+    note_item("name", true);
+    tooltip("Type a new name and press Enter to rename the camera (active_camera follows)");
+    if (entered && state.camera_name_input != camera.name)
+        command = [&state, index, name = state.camera_name_input] {
+            rename_camera(state, index, name);
+        };
+    edit_properties(camera);
+    const Scene& scene = state.doc.scene;
+    const std::string no_size = scene.settings.width > 0 && scene.settings.height > 0
+                                    ? ""
+                                    : "Set the image's width and height first";
+    if (button("Set aspect from image", "aspect = width / height of render_settings", no_size))
+        command = [&state, index] { set_aspect_from_image(state, index); };
+    same_line_if_fits("Add camera");
+    if (button("Add camera", "Add the view as a new camera (a copy of this one)"))
+        command = [&state] { add_camera(state); };
+    same_line_if_fits("Duplicate");
+    if (button("Duplicate", "Add a copy of this camera's block, named anew"))
+        command = [&state, index] { duplicate_block(state, {BlockKind::camera, index}); };
+    same_line_if_fits("Delete");
+    if (button("Delete", "Remove this camera's block from the text",
+               scene.cameras.size() < 2 ? "The only camera: every render needs one" : ""))
+        command = [&state, index] { delete_block(state, {BlockKind::camera, index}); };
+    if (command) command();
 }
 
 }  // namespace
@@ -90,6 +134,12 @@ void camera_panel(AppState& state) {
                     free.position.z);
         ImGui::Text("look_at  <%.3g, %.3g, %.3g>", free.look_at.x, free.look_at.y, free.look_at.z);
     }
+    if (state.free_camera_active) {
+        double fov = state.free_camera.fov;
+        if (edit_number("free fov", fov, 0.5f, 1.0, 179.0)) state.free_camera.fov = fov;
+        tooltip("The free camera's vertical field of view, in degrees");
+    }
+    if (!state.free_camera_active && selected >= 0) scene_camera_editor(state, selected);
 }
 
 }  // namespace jt::view

@@ -17,7 +17,7 @@ const ImVec4 warning_colour(1.0f, 0.7f, 0.3f, 1.0f);
 void reload_choice(AppState& state) {
     if (!state.pending_reload) return;
     const std::string name = state.doc.path.filename().string();
-    const bool unchanged = state.pending_reload->text == state.doc.text;
+    const bool unchanged = state.pending_reload->text == state.doc.disk_text;
     ImGui::PushStyleColor(ImGuiCol_Text, warning_colour);
     if (unchanged)
         ImGui::TextWrapped("%s is unchanged on disk. Reloading it would drop your unsaved edits.",

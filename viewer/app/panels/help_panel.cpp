@@ -17,6 +17,7 @@ void help_panel() {
         {"Space", "pause / resume the render"},
         {"F", "fit the image to the window / actual pixels"},
         {"H", "hide / show the panels"},
+        {"T", "show / hide the text editor"},
         {"Esc", "close a popup or picker; with none open, quit"},
         {"Ctrl+Q", "quit (asks first about unsaved edits)"},
         {"Left drag", "orbit (free camera)"},

@@ -1,10 +1,13 @@
+#include "document_edits.hpp"
 #include "panels/panels.hpp"
 #include "panels/property_fields.hpp"
+#include "panels/widgets.hpp"
 #include "picking.hpp"
 #include "ui_items.hpp"
 
 #include <imgui.h>
 
+#include <functional>
 #include <string>
 
 namespace jt::view {
@@ -17,6 +20,9 @@ void lights_panel(AppState& state) {
     if (reveal) ImGui::SetNextItemOpen(true);
     const std::string title = "Lights (" + std::to_string(lights.size()) + ")###lights";
     if (!panel_header(title.c_str(), "Lights", false)) return;
+    std::function<void()> command;
+    if (button("Add point light", "Add a white light above the camera the view shows"))
+        command = [&state] { add_light(state); };
     for (std::size_t i = 0; i < lights.size(); ++i) {
         ImGui::PushID(static_cast<int>(i));
         const std::string label = "point_light " + std::to_string(i + 1);
@@ -27,11 +33,18 @@ void lights_panel(AppState& state) {
         note_item(label.c_str(), false);
         if (reveal && chosen) ImGui::SetScrollHereY(0.2f);
         if (open) {
+            const BlockRef ref{BlockKind::light, i};
+            if (button("Duplicate", "Add a copy of this light's block right after it"))
+                command = [&state, ref] { duplicate_block(state, ref); };
+            same_line_if_fits("Delete");
+            if (button("Delete", "Remove this light's block from the text (Ctrl+Z brings it back)"))
+                command = [&state, ref] { delete_block(state, ref); };
             edit_properties(lights[i]);
             ImGui::TreePop();
         }
         ImGui::PopID();
     }
+    if (command) command();
 }
 
 }  // namespace jt::view

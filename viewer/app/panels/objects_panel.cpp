@@ -1,3 +1,4 @@
+#include "document_edits.hpp"
 #include "panels/panels.hpp"
 #include "panels/property_fields.hpp"
 #include "panels/widgets.hpp"
@@ -8,6 +9,7 @@
 #include <imgui_stdlib.h>
 
 #include <algorithm>
+#include <functional>
 #include <string>
 #include <variant>
 #include <vector>
@@ -74,8 +76,32 @@ void object_list(AppState& state, const std::vector<int>& shown, int selected) {
     ImGui::EndChild();
 }
 
+// Whether the primitive's text has a block with that keyword (the source map
+// describes the base text, which has the edited scene's structure).
+bool has_child(const SceneDocument& doc, std::size_t primitive, std::string_view keyword) {
+    if (primitive >= doc.source.primitives.size()) return false;
+    for (const BlockSource& child : children_of(doc.source, doc.source.primitives[primitive]))
+        if (child.keyword == keyword) return true;
+    return false;
+}
+
 }  // namespace
 
+void add_object_menu(AppState& state) {
+    if (button("Add object", "Add a new object in front of the camera the view shows"))
+        ImGui::OpenPopup("add object");
+    if (ImGui::BeginPopup("add object")) {
+        for (ShapeKind kind : kShapeKinds) {
+            const std::string label(keyword_of(kind));
+            if (ImGui::MenuItem(label.c_str())) add_object(state, kind);
+            note_item(label.c_str(), false);
+        }
+        ImGui::EndPopup();
+    }
+}
+
+// Commands that change the list run after it is drawn: the panel holds
+// references into the scene while it draws.
 void objects_panel(AppState& state) {
     auto& primitives = state.doc.scene.primitives;
     const Selection selection = current_selection(state);
@@ -83,6 +109,7 @@ void objects_panel(AppState& state) {
     if (state.reveal_selection && selected >= 0) ImGui::SetNextItemOpen(true);
     const std::string title = "Objects (" + std::to_string(primitives.size()) + ")###objects";
     if (!panel_header(title.c_str(), "Objects", false)) return;
+    add_object_menu(state);
     ImGui::InputTextWithHint("##filter", "filter, e.g. sphere or plane 2", &state.object_filter);
     note_item("Object filter", false);
     tooltip(
@@ -97,18 +124,51 @@ void objects_panel(AppState& state) {
         ImGui::TextDisabled("Click an object here or in the image to edit it");
         return;
     }
-    Primitive& p = primitives[static_cast<std::size_t>(selected)];
+    const auto i = static_cast<std::size_t>(selected);
+    Primitive& p = primitives[i];
+    std::function<void()> command;
     ImGui::PushID(selected);
     ImGui::Separator();
-    ImGui::TextUnformatted(object_name(p, static_cast<std::size_t>(selected)).c_str());
+    ImGui::TextUnformatted(object_name(p, i).c_str());
+    const BlockRef ref{BlockKind::primitive, i};
+    if (button("Duplicate", "Add a copy of this object's block right after it"))
+        command = [&state, ref] { duplicate_block(state, ref); };
+    same_line_if_fits("Delete");
+    if (button("Delete", "Remove this object's block from the text (Ctrl+Z brings it back)"))
+        command = [&state, ref] { delete_block(state, ref); };
     shape_editor(p.shape);
     ImGui::Separator();
     ImGui::TextDisabled("material");
+    if (!has_child(state.doc, i, "material")) {
+        ImGui::SameLine();
+        if (button("Add material block",
+                   "Write this object's material into its block, to edit it there"))
+            command = [&state, i] { add_material_block(state, i); };
+    }
     material_editor(p.material);
     ImGui::Separator();
     ImGui::TextDisabled("transform");
-    transform_editor(p.transforms);
+    if (!has_child(state.doc, i, "transform")) {
+        ImGui::SameLine();
+        if (button("Add transform block", "Give this object an empty transform block"))
+            command = [&state, i] { add_transform_block(state, i); };
+    }
+    if (std::optional<TransformCommand> op = transform_editor(p.transforms))
+        command = [&state, i, op = *op] {
+            switch (op.kind) {
+                case TransformCommand::Kind::add:
+                    add_transform_op(state, i, op.op);
+                    break;
+                case TransformCommand::Kind::move:
+                    move_transform_op(state, i, op.index, op.to);
+                    break;
+                case TransformCommand::Kind::remove:
+                    remove_transform_op(state, i, op.index);
+                    break;
+            }
+        };
     ImGui::PopID();
+    if (command) command();
 }
 
 }  // namespace jt::view

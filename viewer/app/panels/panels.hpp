@@ -4,6 +4,8 @@
 
 #include "app_state.hpp"
 
+#include <optional>
+
 namespace jt::view {
 
 void file_panel(AppState& state);
@@ -17,7 +19,15 @@ void status_line(AppState& state);
 
 // Parts of objects_panel, one primitive at a time.
 void material_editor(Material& material);
-void transform_editor(std::vector<TransformOp>& transforms);
+// What the transform editor's buttons ask for: run after the panel is drawn,
+// since it replaces the scene the panel holds references into.
+struct TransformCommand {
+    enum class Kind { add, move, remove } kind = Kind::add;
+    std::size_t index = 0;                        // the operation moved or removed
+    std::size_t to = 0;                           // where it moves
+    TransformKind op = TransformKind::translate;  // the kind added
+};
+std::optional<TransformCommand> transform_editor(std::vector<TransformOp>& transforms);
 
 // "sample 4 of 16 | 1.2 s elapsed, about 3.0 s left | 3.4 Mrays/s",
 // "paused at preview 1/4 | edit waiting: Space renders it", "done: ..."

@@ -1,0 +1,186 @@
+// The document as one text, whichever way it is edited: the panels' structure
+// edits, typing in the text editor and value edits share one undo history,
+// and Save scene writes the text they leave, every byte outside the changed
+// blocks as it was.
+
+#include "document_edits.hpp"
+#include "app_actions.hpp"
+#include "common/files.hpp"
+#include "jtracer/new_block.hpp"
+#include "jtracer/parser.hpp"
+#include "model_loop.hpp"
+#include "viewer_test_files.hpp"
+
+#include <gtest/gtest.h>
+
+namespace jt::view {
+namespace {
+
+using namespace jt::test;
+
+std::string file_text(const std::filesystem::path& path) {
+    return read_file(path);
+}
+
+Scene parsed(const std::string& text) {
+    ParseResult r = parse_scene(text);
+    EXPECT_TRUE(r.ok()) << text;
+    return r.scene;
+}
+
+// Waits for the typed text's check and takes it in.
+void settle_text(AppState& state) {
+    state.checker.wait();
+    for (int i = 0; i < 100 && !take_checked_text(state); ++i) state.checker.wait();
+}
+
+TEST(DocumentEdits, AddDuplicateDeleteThenSaveGivesTheExpectedSceneAndKeepsOtherBytes) {
+    const std::filesystem::path path = scene_copy("document_edits_save");
+    const std::string before = file_text(path);
+    AppState state(test_config());
+    open_scene(state, path);
+    ASSERT_TRUE(state.doc.loaded) << state.message;
+    Scene expected = state.doc.scene;
+
+    ASSERT_TRUE(add_object(state, ShapeKind::sphere)) << state.message;
+    Scene view;
+    view.cameras.push_back(expected.cameras[0]);  // the view shows "front"
+    expected.primitives.push_back(new_primitive(ShapeKind::sphere, view));
+    ASSERT_TRUE(duplicate_block(state, {BlockKind::primitive, 1})) << state.message;
+    expected.primitives.insert(expected.primitives.begin() + 2, expected.primitives[1]);
+    ASSERT_TRUE(delete_block(state, {BlockKind::light, 0})) << state.message;
+    expected.lights.clear();
+    EXPECT_TRUE(state.doc.scene == expected);
+    EXPECT_TRUE(has_unsaved_edits(state.doc));
+    EXPECT_EQ(file_text(path), before) << "nothing is written before Save scene";
+
+    ASSERT_TRUE(save_scene(state)) << state.message;
+    const std::string after = file_text(path);
+    EXPECT_TRUE(parsed(after) == expected) << after;
+    EXPECT_FALSE(has_unsaved_edits(state.doc));
+    // Everything up to the sphere's block, and the sphere's block itself, as it was.
+    const std::size_t sphere_end = before.find("    point_light");
+    EXPECT_EQ(after.substr(0, sphere_end), before.substr(0, sphere_end));
+    // The copy follows it, the light's line is gone, the new sphere ends the scene block.
+    const std::size_t sphere_begin = before.find("    sphere {");
+    const std::string sphere = before.substr(sphere_begin, sphere_end - sphere_begin);
+    EXPECT_EQ(after.substr(sphere_end, sphere.size()), sphere);
+    EXPECT_EQ(after.find("point_light"), std::string::npos);
+    EXPECT_EQ(after.substr(after.size() - 2), "}\n");
+}
+
+TEST(DocumentEdits, ATextErrorKeepsTheImageAndIsListedAtItsLineTheFixRendersAgain) {
+    const std::filesystem::path path = scene_copy("document_edits_typing");
+    AppState state(test_config());
+    open_scene(state, path);
+    ModelLoop loop;
+    ASSERT_TRUE(loop.run_until_complete(state));
+    const Image8 good = state.display;
+    const Scene good_scene = state.doc.scene;
+
+    // Line 34 is the sphere's "radius: 1;": break it.
+    std::string text = state.doc.text;
+    const std::size_t at = text.find("radius: 1;");
+    text.replace(at, 10, "radius: 1 x;");
+    type_text(state, text);
+    EXPECT_TRUE(state.doc.draft);
+    settle_text(state);
+    ASSERT_TRUE(state.doc.draft) << "a text with errors stays a draft";
+    EXPECT_TRUE(state.doc.scene == good_scene);
+    // The first error is where the parser stopped: just past the value, 34:18.
+    const Diagnostic* first = nullptr;
+    for (const Diagnostic& d : state.doc.diagnostics)
+        if (d.severity == Severity::error && !first) first = &d;
+    ASSERT_TRUE(first);
+    EXPECT_EQ(first->pos.line, 34);
+    EXPECT_EQ(first->pos.column, 18);
+    EXPECT_NE(first->message.find("expected ';'"), std::string::npos) << first->message;
+    EXPECT_EQ(state.doc.diagnostics_source, text) << "they point into the typed text";
+    for (int i = 0; i < 5; ++i) loop.frame(state);
+    EXPECT_EQ(state.display, good) << "the last good image stays";
+    EXPECT_FALSE(save_scene(state)) << "a text with errors is not saved";
+
+    // The fix: a bigger sphere, rendered again.
+    text.replace(text.find("radius: 1 x;"), 12, "radius: 1.4;");
+    type_text(state, text);
+    settle_text(state);
+    EXPECT_FALSE(state.doc.draft);
+    EXPECT_EQ(std::get<Sphere>(state.doc.scene.primitives[1].shape).radius, 1.4);
+    ASSERT_TRUE(loop.run_until_complete(state));
+    EXPECT_NE(state.display, good);
+    ASSERT_TRUE(save_scene(state)) << state.message;
+    EXPECT_EQ(file_text(path), text);
+}
+
+TEST(DocumentEdits, OneUndoHistoryAcrossPanelStructureAndTextEdits) {
+    const std::filesystem::path path = scene_copy("document_edits_undo");
+    AppState state(test_config());
+    open_scene(state, path);
+    const std::string t0 = document_text(state.doc);
+    // A value edit, as a panel makes it.
+    edit_scene(state, [](Scene& s) { std::get<Sphere>(s.primitives[1].shape).radius = 0.5; });
+    const std::string t1 = document_text(state.doc);
+    ASSERT_NE(t1, t0);
+    ASSERT_TRUE(add_light(state));
+    const std::string t2 = document_text(state.doc);
+    std::string typed = t2;
+    typed.replace(typed.find("fov: 40;"), 8, "fov: 30;");
+    type_text(state, typed);
+    settle_text(state);
+    ASSERT_FALSE(state.doc.draft);
+    const std::string t3 = document_text(state.doc);
+    ASSERT_EQ(t3, typed);
+    ASSERT_TRUE(delete_block(state, {BlockKind::primitive, 0}));
+    const std::string t4 = document_text(state.doc);
+
+    const std::vector<std::string> history{t0, t1, t2, t3, t4};
+    for (int i = 3; i >= 0; --i) {
+        undo(state);
+        EXPECT_EQ(document_text(state.doc), history[static_cast<std::size_t>(i)])
+            << "undo to " << i;
+        EXPECT_TRUE(state.doc.scene == parsed(history[static_cast<std::size_t>(i)]));
+    }
+    EXPECT_FALSE(state.undo.can_undo());
+    EXPECT_FALSE(has_unsaved_edits(state.doc)) << "back to the file";
+    for (std::size_t i = 1; i < history.size(); ++i) {
+        redo(state);
+        EXPECT_EQ(document_text(state.doc), history[i]) << "redo to " << i;
+    }
+    ASSERT_TRUE(save_scene(state));
+    EXPECT_EQ(file_text(path), t4);
+}
+
+TEST(DocumentEdits, TransformOpsCamerasAndRefusals) {
+    const std::filesystem::path path = scene_copy("document_edits_more");
+    AppState state(test_config());
+    open_scene(state, path);
+    ASSERT_TRUE(add_transform_op(state, 1, TransformKind::translate));
+    ASSERT_TRUE(add_transform_op(state, 1, TransformKind::scale));
+    ASSERT_EQ(state.doc.scene.primitives[1].transforms.size(), 2u);
+    ASSERT_TRUE(move_transform_op(state, 1, 1, 0));
+    EXPECT_EQ(state.doc.scene.primitives[1].transforms[0].kind, TransformKind::scale);
+    ASSERT_TRUE(remove_transform_op(state, 1, 1));
+    ASSERT_TRUE(add_material_block(state, 0) == false) << "the plane has one already";
+    ASSERT_TRUE(rename_camera(state, 0, "main"));
+    EXPECT_EQ(state.doc.scene.settings.active_camera, "main");
+    EXPECT_FALSE(rename_camera(state, 1, "main"));
+    EXPECT_NE(state.message.find("already named"), std::string::npos) << state.message;
+    ASSERT_TRUE(add_camera(state));
+    EXPECT_EQ(state.doc.scene.cameras.size(), 3u);
+    EXPECT_EQ(selected_camera(state), 2);
+    ASSERT_TRUE(delete_block(state, {BlockKind::camera, 0}));
+    ASSERT_TRUE(delete_block(state, {BlockKind::camera, 0}));
+    EXPECT_FALSE(delete_block(state, {BlockKind::camera, 0}));
+    EXPECT_NE(state.message.find("only camera"), std::string::npos) << state.message;
+    edit_scene(state, [](Scene& s) {
+        s.settings.width = 200;
+        s.settings.height = 100;
+    });
+    ASSERT_TRUE(set_aspect_from_image(state, 0));
+    EXPECT_EQ(state.doc.scene.cameras[0].aspect, 2.0);
+    ASSERT_TRUE(save_scene(state));
+    EXPECT_TRUE(parsed(file_text(path)) == state.doc.scene);
+}
+
+}  // namespace
+}  // namespace jt::view

@@ -1,0 +1,264 @@
+#include "text_editor.hpp"
+
+#include "app_actions.hpp"
+#include "document_edits.hpp"
+#include "keys.hpp"
+#include "panels/panels.hpp"
+#include "ui_items.hpp"
+
+#include <imgui.h>
+#include <imgui_internal.h>
+#include <imgui_stdlib.h>
+
+#include <algorithm>
+#include <cstdio>
+#include <cstring>
+
+namespace jt::view {
+
+namespace {
+
+constexpr ImU32 kErrorLine = IM_COL32(200, 40, 40, 70);
+constexpr ImU32 kErrorText = IM_COL32(255, 110, 100, 255);
+constexpr ImU32 kWarningLine = IM_COL32(200, 160, 40, 50);
+constexpr ImU32 kCurrentLine = IM_COL32(255, 255, 255, 18);
+constexpr ImU32 kLineNumber = IM_COL32(130, 130, 130, 255);
+
+int line_count(const std::string& text) {
+    return 1 + static_cast<int>(std::count(text.begin(), text.end(), '\n'));
+}
+
+int line_of(const std::string& text, int offset) {
+    offset = std::clamp(offset, 0, static_cast<int>(text.size()));
+    return 1 + static_cast<int>(std::count(text.begin(), text.begin() + offset, '\n'));
+}
+
+// The text of line `line` (from 1).
+std::string_view line_text(const std::string& text, int line) {
+    const int start = offset_of(text, line, 1);
+    const std::size_t end = text.find('\n', static_cast<std::size_t>(start));
+    return std::string_view(text).substr(
+        static_cast<std::size_t>(start),
+        (end == std::string::npos ? text.size() : end) - static_cast<std::size_t>(start));
+}
+
+// Keeps the document's text in the buffer: recomputed only when the document changed.
+void follow_document(const AppState& state, TextEditorState& ed) {
+    const SceneDocument& doc = state.doc;
+    if (doc.text == ed.shown_base && doc.draft == ed.shown_draft && doc.scene == ed.shown_scene)
+        return;
+    ed.shown_base = doc.text;
+    ed.shown_draft = doc.draft;
+    ed.shown_scene = doc.scene;
+    std::string text = document_text(doc);
+    if (text == ed.shown) return;
+    ed.shown = text;
+    ed.buffer = std::move(text);
+    ed.push = true;
+}
+
+int on_input(ImGuiInputTextCallbackData* data) {
+    auto& ed = *static_cast<TextEditorState*>(data->UserData);
+    if (ed.push) {
+        ed.push = false;
+        if (std::string_view(data->Buf, static_cast<std::size_t>(data->BufTextLen)) != ed.buffer) {
+            const int keep = std::min(data->CursorPos, static_cast<int>(ed.buffer.size()));
+            data->DeleteChars(0, data->BufTextLen);
+            data->InsertChars(0, ed.buffer.data(), ed.buffer.data() + ed.buffer.size());
+            data->CursorPos = data->SelectionStart = data->SelectionEnd = keep;
+        }
+    }
+    if (ed.jump) {
+        data->CursorPos = data->SelectionStart = data->SelectionEnd =
+            std::clamp(*ed.jump, 0, data->BufTextLen);
+        ed.jump.reset();
+    }
+    ed.cursor = data->CursorPos;
+    return 0;
+}
+
+// The diagnostics that point into the text shown.
+bool diagnostics_apply(const AppState& state, const TextEditorState& ed) {
+    return state.doc.diagnostics_source == ed.shown ||
+           (!state.doc.draft && state.doc.diagnostics_source == state.doc.text);
+}
+
+void error_list(AppState& state, TextEditorState& ed, float height) {
+    ImGui::BeginChild("##errors", ImVec2(0, height), true);
+    int shown = 0;
+    if (diagnostics_apply(state, ed)) {
+        for (const Diagnostic& d : state.doc.diagnostics) {
+            if (d.pos.line <= 0) continue;
+            ++shown;
+            const bool error = d.severity == Severity::error;
+            char where[64];
+            std::snprintf(where, sizeof where, "%d:%d: %s: ", d.pos.line, d.pos.column,
+                          error ? "error" : "warning");
+            const std::string label = std::string(where) + d.message;
+            ImGui::PushStyleColor(ImGuiCol_Text, error ? kErrorText : IM_COL32(230, 190, 80, 255));
+            ImGui::PushID(shown);
+            if (ImGui::Selectable(label.c_str())) {
+                ed.jump = offset_of(ed.buffer, d.pos.line, d.pos.column);
+                ed.scroll_to = d.pos.line;
+            }
+            ImGui::PopID();
+            ImGui::PopStyleColor();
+            note_item(label.c_str(), false);
+        }
+    }
+    if (shown == 0) ImGui::TextDisabled("No errors or warnings.");
+    ImGui::EndChild();
+}
+
+void undo_keys(AppState& state) {
+    const ImGuiIO& io = ImGui::GetIO();
+    if (!io.KeyCtrl) return;
+    if (ImGui::IsKeyPressed(keys::letter('Z'), false)) io.KeyShift ? redo(state) : undo(state);
+    if (ImGui::IsKeyPressed(keys::letter('Y'), false)) redo(state);
+    if (ImGui::IsKeyPressed(keys::letter('S'), false)) save_scene(state);
+}
+
+}  // namespace
+
+int offset_of(const std::string& text, int line, int column) {
+    std::size_t at = 0;
+    for (int l = 1; l < line; ++l) {
+        const std::size_t newline = text.find('\n', at);
+        if (newline == std::string::npos) return static_cast<int>(text.size());
+        at = newline + 1;
+    }
+    const std::size_t end = std::min(text.find('\n', at), text.size());
+    return static_cast<int>(std::min(at + static_cast<std::size_t>(std::max(column, 1) - 1), end));
+}
+
+void text_editor(AppState& state, TextEditorState& ed, float x0, float y0, float x1, float y1) {
+    ImGui::SetNextWindowPos(ImVec2(x0, y0));
+    ImGui::SetNextWindowSize(ImVec2(x1 - x0, y1 - y0));
+    ImGui::Begin("Text", nullptr,
+                 ImGuiWindowFlags_NoMove | ImGuiWindowFlags_NoCollapse |
+                     ImGuiWindowFlags_NoSavedSettings | ImGuiWindowFlags_NoResize);
+    note_window("text editor");
+    follow_document(state, ed);
+    const SceneDocument& doc = state.doc;
+    const std::string name = doc.path.filename().string();
+    if (!doc.loaded) {
+        ImGui::TextDisabled("No scene is open.");
+        ImGui::End();
+        return;
+    }
+    if (ed.buffer.size() > kMaxEditableText) {
+        ImGui::TextWrapped(
+            "%s is %.1f MB: too large to edit here. Edit it in another editor; the "
+            "viewer reloads it when it changes.",
+            name.c_str(), static_cast<double>(ed.buffer.size()) / 1e6);
+        ImGui::End();
+        return;
+    }
+    const bool draft = doc.draft.has_value();
+    ImGui::Text("%s%s", name.c_str(), has_unsaved_edits(doc) ? " *" : "");
+    ImGui::SameLine();
+    if (state.checker.in_flight())
+        ImGui::TextDisabled("checking...");
+    else if (draft)
+        ImGui::TextColored(ImVec4(1.0f, 0.45f, 0.4f, 1.0f), "errors: showing the last good image");
+    else
+        ImGui::TextDisabled("Ctrl+Z undoes panel and text edits alike");
+
+    const float list_height = ImGui::GetTextLineHeightWithSpacing() * 5.0f + 8.0f;
+    const float editor_height =
+        std::max(ImGui::GetContentRegionAvail().y - list_height - ImGui::GetStyle().ItemSpacing.y,
+                 ImGui::GetTextLineHeight() * 3.0f);
+    push_monospace_font();
+    const float line_h = ImGui::GetTextLineHeight();
+    const int lines = line_count(ed.buffer);
+    char widest[16];
+    std::snprintf(widest, sizeof widest, "%d", lines);
+    const float gutter = ImGui::CalcTextSize(widest).x + ImGui::CalcTextSize("  ").x;
+    ImGui::BeginChild("##scroll", ImVec2(0, editor_height), true,
+                      ImGuiWindowFlags_HorizontalScrollbar);
+    const ImGuiID widget = ImGui::GetID("##source");
+    const bool active = ImGui::GetActiveID() == widget;
+    if (active) undo_keys(state);
+    follow_document(state, ed);  // an undo just now shows at once
+    const ImVec2 origin = ImGui::GetCursorScreenPos();
+    const float pad_y = ImGui::GetStyle().FramePadding.y;
+    const float pad_x = ImGui::GetStyle().FramePadding.x;
+    ImGui::SetCursorPosX(ImGui::GetCursorPosX() + gutter);
+    if (ed.jump && !active) ImGui::SetKeyboardFocusHere();
+    const float width = std::max(ImGui::GetContentRegionAvail().x, 40.0f * line_h);
+    const ImVec2 size(width, static_cast<float>(lines + 1) * line_h + 2.0f * pad_y);
+    ImGui::PushStyleColor(ImGuiCol_FrameBg, IM_COL32(0, 0, 0, 0));
+    const bool changed = ImGui::InputTextMultiline(
+        "##source", &ed.buffer, size,
+        ImGuiInputTextFlags_AllowTabInput | ImGuiInputTextFlags_CallbackAlways, on_input, &ed);
+    ImGui::PopStyleColor();
+    note_item("text", false);
+    if (changed && ed.buffer != ed.shown) {
+        ed.shown = ed.buffer;
+        type_text(state, ed.buffer);
+        ed.shown_draft = state.doc.draft;  // the document now holds what the buffer holds
+    }
+
+    // Line numbers, the cursor's line and the marked lines, over the visible part only.
+    ImDrawList* draw = ImGui::GetWindowDrawList();
+    const float scroll = ImGui::GetScrollY();
+    const float view_h = ImGui::GetWindowHeight();
+    const int first = std::max(1, static_cast<int>(scroll / line_h));
+    const int last = std::min(lines, first + static_cast<int>(view_h / line_h) + 2);
+    const float left = origin.x;
+    const float right = origin.x + gutter + width;
+    auto line_y = [&](int line) {
+        return origin.y + pad_y + static_cast<float>(line - 1) * line_h;
+    };
+    if (ImGui::GetActiveID() == widget) {
+        const int current = line_of(ed.buffer, ed.cursor);
+        draw->AddRectFilled(ImVec2(left, line_y(current)), ImVec2(right, line_y(current) + line_h),
+                            kCurrentLine);
+    }
+    for (int line = first; line <= last; ++line) {
+        char number[16];
+        std::snprintf(number, sizeof number, "%*d", static_cast<int>(std::strlen(widest)), line);
+        draw->AddText(ImVec2(left, line_y(line)), kLineNumber, number);
+    }
+    if (diagnostics_apply(state, ed)) {
+        for (const Diagnostic& d : doc.diagnostics) {
+            if (d.pos.line <= 0 || d.pos.line > lines) continue;
+            const bool error = d.severity == Severity::error;
+            const float y = line_y(d.pos.line);
+            draw->AddRectFilled(ImVec2(left, y), ImVec2(right, y + line_h),
+                                error ? kErrorLine : kWarningLine);
+            const std::string_view content = line_text(ed.buffer, d.pos.line);
+            const float end_x =
+                ImGui::CalcTextSize(content.data(), content.data() + content.size()).x;
+            const float x = left + gutter + pad_x + end_x + 2.0f * line_h;
+            const std::string note = (error ? "<- " : "<- warning: ") + d.message;
+            draw->AddText(ImVec2(x, y), error ? kErrorText : IM_COL32(230, 190, 80, 255),
+                          note.c_str());
+            // The column, under the line.
+            const std::string_view before = content.substr(
+                0,
+                std::min(content.size(), static_cast<std::size_t>(std::max(d.pos.column, 1) - 1)));
+            const float cx = left + gutter + pad_x +
+                             ImGui::CalcTextSize(before.data(), before.data() + before.size()).x;
+            draw->AddLine(ImVec2(cx, y + line_h - 1), ImVec2(cx + line_h * 0.6f, y + line_h - 1),
+                          kErrorText, 2.0f);
+        }
+    }
+    if (ed.scroll_to) {
+        const float y = static_cast<float>(*ed.scroll_to - 1) * line_h;
+        if (y < scroll || y > scroll + view_h - 3 * line_h)
+            ImGui::SetScrollY(std::max(0.0f, y - view_h / 3.0f));
+        ed.scroll_to.reset();
+    } else if (ImGui::GetActiveID() == widget) {
+        // Typing past the bottom or top: the view follows the cursor.
+        const float y = static_cast<float>(line_of(ed.buffer, ed.cursor) - 1) * line_h;
+        if (y < scroll) ImGui::SetScrollY(y);
+        if (y + 2 * line_h > scroll + view_h) ImGui::SetScrollY(y + 2 * line_h - view_h);
+    }
+    ImGui::EndChild();
+    pop_monospace_font();
+    error_list(state, ed, list_height);
+    ImGui::End();
+}
+
+}  // namespace jt::view

@@ -1,0 +1,40 @@
+#pragma once
+// The text editor: the scene's text beside the image, in the monospaced
+// font, with line numbers, the cursor's line highlighted, and each error
+// marked on its line with its message and listed below, where a click puts
+// the cursor at its line:col. What is typed goes to the document
+// (document_edits.hpp: type_text); what the panels change shows in the text
+// at once. Ctrl+Z / Ctrl+Shift+Z in it walk the viewer's one undo history.
+
+#include "app_state.hpp"
+#include "jtracer/scene.hpp"
+
+#include <optional>
+#include <string>
+
+namespace jt::view {
+
+struct TextEditorState {
+    bool open = false;
+    std::string buffer;  // what the widget edits
+    std::string shown;   // the document text `buffer` was last set from
+    // The document the shown text was made from (document_text is not free).
+    std::string shown_base;
+    Scene shown_scene;
+    std::optional<std::string> shown_draft;
+    bool push = false;             // the buffer changed under an active widget
+    int cursor = 0;                // byte offset of the cursor, while the widget is active
+    std::optional<int> jump;       // put the cursor here (a click on an error)
+    std::optional<int> scroll_to;  // line to bring into view
+};
+
+// Texts larger than this are not put in the widget (it keeps a copy per character).
+inline constexpr std::size_t kMaxEditableText = 4u << 20;
+
+// Draws the editor as a window filling `x0..x1` x `y0..y1`.
+void text_editor(AppState& state, TextEditorState& editor, float x0, float y0, float x1, float y1);
+
+// The byte offset of line:column (both from 1) in `text`, clamped to the text.
+int offset_of(const std::string& text, int line, int column);
+
+}  // namespace jt::view

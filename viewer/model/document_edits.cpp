@@ -1,0 +1,208 @@
+#include "document_edits.hpp"
+
+#include "app_actions.hpp"
+#include "jtracer/block_edit.hpp"
+#include "jtracer/camera_edit.hpp"
+#include "jtracer/parser.hpp"
+#include "jtracer/schema.hpp"
+#include "jtracer/transform_edit.hpp"
+#include "ui_rounding.hpp"
+
+namespace jt::view {
+
+namespace {
+
+// The scene as the view sees it: one camera, the one the image shows.
+Scene viewed_scene(const AppState& state) {
+    Scene view;
+    if (state.free_camera_active)
+        view.cameras.push_back(camera_from(state.free_camera, "view"));
+    else if (const int selected = selected_camera(state); selected >= 0)
+        view.cameras.push_back(state.doc.scene.cameras[static_cast<std::size_t>(selected)]);
+    return view;
+}
+
+std::string kind_name(TransformKind kind) {
+    return std::string(transform_op(kind).property.name);
+}
+
+}  // namespace
+
+bool edit_text_structure(AppState& state,
+                         const std::function<Expected<std::string>(const SceneText&)>& edit,
+                         const std::string& done) {
+    SceneDocument& doc = state.doc;
+    if (!doc.loaded) {
+        state.message = "No scene is open";
+        return false;
+    }
+    if (doc.draft) {
+        state.message = "The text has errors: fix them in the text editor first";
+        return false;
+    }
+    const DocumentVersion before = version_of(doc);
+    Expected<std::string> edited = Error{""};
+    if (doc.scene == doc.original) {
+        edited = edit(SceneText{doc.text, doc.original, doc.source});
+    } else {
+        // The panels' edits become text first, so that the edit starts from what is shown.
+        const std::string text = document_text(doc);
+        const ParseResult parsed = parse_scene(text);
+        edited = edit(SceneText{text, parsed.scene, parsed.source});
+    }
+    if (!edited) {
+        state.message = "Not done: " + edited.error().message;
+        return false;
+    }
+    if (const Expected<void> taken = replace_text(doc, std::move(*edited)); !taken) {
+        state.message = "Not done: " + taken.error().message;
+        return false;
+    }
+    state.undo.record(before);
+    keep_camera_selection(state, before.scene);
+    state.edit_base.reset();
+    state.typing = false;
+    ++state.scene_generation;
+    state.message = done + " (Save scene to keep it)";
+    return true;
+}
+
+bool add_object(AppState& state, ShapeKind kind) {
+    const Primitive added = new_primitive(kind, viewed_scene(state));
+    return edit_text_structure(
+        state, [&](const SceneText& s) { return add_primitive(s, added); },
+        "Added a " + std::string(keyword_of(kind)));
+}
+
+bool add_light(AppState& state) {
+    const PointLight added = new_light(viewed_scene(state));
+    return edit_text_structure(
+        state, [&](const SceneText& s) { return jt::add_light(s, added); }, "Added a point light");
+}
+
+bool duplicate_block(AppState& state, BlockRef block) {
+    const std::string name = block_name(state.doc.scene, block);
+    return edit_text_structure(
+        state, [&](const SceneText& s) { return jt::duplicate_block(s, block); },
+        "Duplicated " + name);
+}
+
+bool delete_block(AppState& state, BlockRef block) {
+    const std::string name = block_name(state.doc.scene, block);
+    return edit_text_structure(
+        state, [&](const SceneText& s) { return jt::delete_block(s, block); }, "Deleted " + name);
+}
+
+bool add_material_block(AppState& state, std::size_t primitive) {
+    return edit_text_structure(
+        state,
+        [&](const SceneText& s) {
+            return jt::add_material_block(s, primitive, s.scene.primitives[primitive].material);
+        },
+        "Added a material block");
+}
+
+bool add_transform_block(AppState& state, std::size_t primitive) {
+    return edit_text_structure(
+        state, [&](const SceneText& s) { return jt::add_transform_block(s, primitive); },
+        "Added a transform block");
+}
+
+bool add_transform_op(AppState& state, std::size_t primitive, TransformKind kind) {
+    TransformOp op;
+    op.kind = kind;
+    if (kind == TransformKind::scale) op.vector = Vec3{1.0};
+    return edit_text_structure(
+        state,
+        [&](const SceneText& s) {
+            const std::size_t end = primitive < s.scene.primitives.size()
+                                        ? s.scene.primitives[primitive].transforms.size()
+                                        : 0;
+            return jt::add_transform_op(s, primitive, end, op);
+        },
+        "Added " + kind_name(kind));
+}
+
+bool move_transform_op(AppState& state, std::size_t primitive, std::size_t from, std::size_t to) {
+    return edit_text_structure(
+        state, [&](const SceneText& s) { return jt::move_transform_op(s, primitive, from, to); },
+        "Moved transform operation " + std::to_string(from + 1) + " to " + std::to_string(to + 1));
+}
+
+bool remove_transform_op(AppState& state, std::size_t primitive, std::size_t index) {
+    return edit_text_structure(
+        state, [&](const SceneText& s) { return jt::remove_transform_op(s, primitive, index); },
+        "Removed transform operation " + std::to_string(index + 1));
+}
+
+bool add_camera(AppState& state) {
+    const Scene& scene = state.doc.scene;
+    const int selected = selected_camera(state);
+    Camera camera;
+    if (state.free_camera_active) {
+        camera = camera_from(state.free_camera, "");
+        camera.position = ui_rounded(camera.position);
+        camera.look_at = ui_rounded(camera.look_at);
+    } else if (selected >= 0) {
+        camera = scene.cameras[static_cast<std::size_t>(selected)];
+    }
+    camera.name = unique_camera_name(
+        scene, state.free_camera_active || camera.name.empty() ? "view" : camera.name);
+    const bool added = edit_text_structure(
+        state, [&](const SceneText& s) { return jt::add_camera(s, camera); },
+        "Added camera \"" + camera.name + "\"");
+    if (added) {
+        state.camera_index = static_cast<int>(state.doc.scene.cameras.size()) - 1;
+        state.free_camera_active = false;
+    }
+    return added;
+}
+
+bool rename_camera(AppState& state, std::size_t camera, const std::string& name) {
+    return edit_text_structure(
+        state, [&](const SceneText& s) { return jt::rename_camera(s, camera, name); },
+        "Renamed the camera to \"" + name + "\"");
+}
+
+bool set_aspect_from_image(AppState& state, std::size_t camera) {
+    return edit_text_structure(
+        state, [&](const SceneText& s) { return jt::set_aspect_from_image(s, camera); },
+        "Set the aspect from the image size");
+}
+
+void type_text(AppState& state, std::string text) {
+    SceneDocument& doc = state.doc;
+    if (!doc.loaded) return;
+    if (!state.typing) {
+        state.undo.record(version_of(doc));
+        state.typing = true;
+    }
+    state.edit_base.reset();
+    doc.draft = text;
+    ++state.draft_id;
+    state.checker.check(state.draft_id, std::move(text), doc.path, kTypingPause);
+}
+
+bool take_checked_text(AppState& state) {
+    std::optional<CheckedText> checked = state.checker.take();
+    if (!checked) return false;
+    SceneDocument& doc = state.doc;
+    if (checked->id != state.draft_id || !doc.draft) return true;  // overtaken
+    state.typing = false;  // the pause ended: the next keystroke is a new undo step
+    doc.diagnostics = checked->diagnostics;
+    doc.diagnostics_source = checked->text;
+    doc.diagnostics_path = doc.path;
+    if (!checked->ok) {
+        state.message = "The text has errors (see Diagnostics): the image is of the last good text";
+        return true;
+    }
+    const Scene before = doc.scene;
+    take_text(doc, std::move(checked->text), std::move(checked->parsed));
+    keep_camera_selection(state, before);
+    state.checked_scene = doc.scene;  // the diagnostics describe it already
+    ++state.scene_generation;
+    state.message = "Text taken in";
+    return true;
+}
+
+}  // namespace jt::view

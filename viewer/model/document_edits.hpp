@@ -1,0 +1,55 @@
+#pragma once
+// The commands that rewrite the document's text rather than one value: the
+// structure edits of the panels (add, duplicate, delete blocks; material and
+// transform blocks; transform operations; cameras, through the core's
+// block_edit.hpp, transform_edit.hpp and camera_edit.hpp) and the text typed
+// in the text editor. Each is one undo step in the same history as the
+// panels' value edits; Save scene writes the text they leave.
+
+#include "app_state.hpp"
+#include "jtracer/error.hpp"
+#include "jtracer/new_block.hpp"
+#include "jtracer/scene_text.hpp"
+
+#include <chrono>
+#include <cstddef>
+#include <functional>
+#include <string>
+
+namespace jt::view {
+
+// How long typing must pause before the text is parsed again.
+inline constexpr std::chrono::milliseconds kTypingPause{250};
+
+// Runs `edit` on the document's text (with the panels' edits written in) and
+// takes the result in as one undo step; on failure nothing changes and the
+// message says why. `done` is the message on success.
+bool edit_text_structure(AppState& state,
+                         const std::function<Expected<std::string>(const SceneText&)>& edit,
+                         const std::string& done);
+
+bool add_object(AppState& state, ShapeKind kind);  // in front of the view's camera
+bool add_light(AppState& state);
+bool duplicate_block(AppState& state, BlockRef block);
+bool delete_block(AppState& state, BlockRef block);
+bool add_material_block(AppState& state, std::size_t primitive);
+bool add_transform_block(AppState& state, std::size_t primitive);
+bool add_transform_op(AppState& state, std::size_t primitive, TransformKind kind);
+bool move_transform_op(AppState& state, std::size_t primitive, std::size_t from, std::size_t to);
+bool remove_transform_op(AppState& state, std::size_t primitive, std::size_t index);
+// A new camera: the view as it is (the free camera's, or the selected one's), named uniquely.
+bool add_camera(AppState& state);
+bool rename_camera(AppState& state, std::size_t camera, const std::string& name);
+bool set_aspect_from_image(AppState& state, std::size_t camera);
+
+// The text editor's text changed to `text`: it becomes the document's draft,
+// checked off the UI thread once typing pauses (kTypingPause). The first
+// keystroke after a pause records one undo step.
+void type_text(AppState& state, std::string text);
+// Takes in the check of the draft, if one finished: a text without errors
+// becomes the document (the render restarts from it); one with errors keeps
+// the last good scene and image, and its diagnostics say where. True when a
+// check was taken in.
+bool take_checked_text(AppState& state);
+
+}  // namespace jt::view
