@@ -88,16 +88,18 @@ void error_list(AppState& state, TextEditorState& ed, float height) {
     int shown = 0;
     if (diagnostics_apply(state, ed)) {
         for (const Diagnostic& d : state.doc.diagnostics) {
-            if (d.pos.line <= 0) continue;
             ++shown;
             const bool error = d.severity == Severity::error;
             char where[64];
-            std::snprintf(where, sizeof where, "%d:%d: %s: ", d.pos.line, d.pos.column,
-                          error ? "error" : "warning");
+            if (d.pos.line > 0)
+                std::snprintf(where, sizeof where, "%d:%d: %s: ", d.pos.line, d.pos.column,
+                              error ? "error" : "warning");
+            else
+                std::snprintf(where, sizeof where, "%s: ", error ? "error" : "warning");
             const std::string label = std::string(where) + d.message;
             ImGui::PushStyleColor(ImGuiCol_Text, error ? kErrorText : IM_COL32(230, 190, 80, 255));
             ImGui::PushID(shown);
-            if (ImGui::Selectable(label.c_str())) {
+            if (ImGui::Selectable(label.c_str()) && d.pos.line > 0) {
                 ed.jump = offset_of(ed.buffer, d.pos.line, d.pos.column);
                 ed.scroll_to = d.pos.line;
             }
@@ -141,7 +143,7 @@ void text_editor(AppState& state, TextEditorState& ed, float x0, float y0, float
     follow_document(state, ed);
     const SceneDocument& doc = state.doc;
     const std::string name = doc.path.filename().string();
-    if (!doc.loaded) {
+    if (!doc.loaded && doc.path.empty()) {
         ImGui::TextDisabled("No scene is open.");
         ImGui::End();
         return;
@@ -186,7 +188,9 @@ void text_editor(AppState& state, TextEditorState& ed, float x0, float y0, float
     ImGui::SetCursorPosX(ImGui::GetCursorPosX() + gutter);
     if (ed.jump && !active) ImGui::SetKeyboardFocusHere();
     const float width = std::max(ImGui::GetContentRegionAvail().x, 40.0f * line_h);
-    const ImVec2 size(width, static_cast<float>(lines + 1) * line_h + 2.0f * pad_y);
+    // At least the view's height, so that a click anywhere below the text lands in it.
+    const ImVec2 size(width, std::max(static_cast<float>(lines + 1) * line_h + 2.0f * pad_y,
+                                      ImGui::GetContentRegionAvail().y));
     ImGui::PushStyleColor(ImGuiCol_FrameBg, IM_COL32(0, 0, 0, 0));
     const bool changed = ImGui::InputTextMultiline(
         "##source", &ed.buffer, size,

@@ -172,7 +172,7 @@ bool set_aspect_from_image(AppState& state, std::size_t camera) {
 
 void type_text(AppState& state, std::string text) {
     SceneDocument& doc = state.doc;
-    if (!doc.loaded) return;
+    if (!doc.loaded && doc.path.empty()) return;
     if (!state.typing) {
         state.undo.record(version_of(doc));
         state.typing = true;
@@ -198,6 +198,7 @@ bool take_checked_text(AppState& state) {
     }
     const Scene before = doc.scene;
     take_text(doc, std::move(checked->text), std::move(checked->parsed));
+    doc.loaded = true;  // a file that never loaded (empty, broken) now has a scene
     keep_camera_selection(state, before);
     state.checked_scene = doc.scene;  // the diagnostics describe it already
     ++state.scene_generation;

@@ -39,7 +39,11 @@ void accept_load(SceneDocument& doc, const std::filesystem::path& path, LoadAtte
     doc.load_failed = !attempt.ok;
     if (!attempt.ok) {
         doc.diagnostics_source = std::move(attempt.text);  // moved: it may be huge
-        if (!doc.loaded) doc.path = path;
+        if (!doc.loaded) {
+            // Nothing good yet: the text editor starts from the file as it is.
+            doc.path = path;
+            doc.disk_text = doc.diagnostics_source;
+        }
         return;
     }
     doc.diagnostics_source = attempt.text;
@@ -70,6 +74,7 @@ void restore_version(SceneDocument& doc, const DocumentVersion& version) {
 
 std::string document_text(const SceneDocument& doc) {
     if (doc.draft) return *doc.draft;
+    if (!doc.loaded) return doc.disk_text;
     if (doc.scene == doc.original) return doc.text;
     SourceEditResult edit = apply_scene_edits(doc.text, doc.source, doc.original, doc.scene);
     return edit.ok() ? std::move(edit.text) : doc.text;
@@ -105,7 +110,8 @@ std::string format_diagnostics(const SceneDocument& doc) {
 }
 
 bool has_unsaved_edits(const SceneDocument& doc) {
-    return doc.loaded && (doc.draft || doc.scene != doc.original || doc.text != doc.disk_text);
+    return (doc.loaded || doc.draft) &&
+           (doc.draft || doc.scene != doc.original || doc.text != doc.disk_text);
 }
 
 bool file_changed_on_disk(const SceneDocument& doc, std::string& what) {

@@ -54,7 +54,8 @@ void restore_version(SceneDocument& doc, const DocumentVersion& version);
 
 // The document's text as Save scene would write it: the draft, or the base
 // with the panel edits written in (see source_edit.hpp); the base when they
-// cannot be.
+// cannot be. Before any good load, the file's text (an empty file, one with
+// errors), which the text editor can then mend.
 std::string document_text(const SceneDocument& doc);
 
 // Makes `parsed` (of `text`, without errors) the document's base, its scene

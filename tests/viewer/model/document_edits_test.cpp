@@ -184,3 +184,42 @@ TEST(DocumentEdits, TransformOpsCamerasAndRefusals) {
 
 }  // namespace
 }  // namespace jt::view
+
+namespace jt::view {
+namespace {
+
+using namespace jt::test;
+
+// From an empty file: nothing loads, the text typed in makes the scene, the
+// panels' commands build on it and Save scene writes it.
+TEST(DocumentEdits, AnEmptyFileBecomesASceneThroughTheText) {
+    const std::filesystem::path path = make_scratch_dir("document_edits_empty") / "new.jts";
+    write_file(path, "");
+    AppState state(test_config());
+    open_scene(state, path);
+    EXPECT_FALSE(state.doc.loaded) << "no camera: nothing to show";
+    EXPECT_EQ(document_text(state.doc), "");
+    const std::string text =
+        "render_settings { width: 40; height: 30; }\n"
+        "cameras { perspective_camera { position: <0, 1, 5>; } }\n";
+    type_text(state, text);
+    EXPECT_TRUE(has_unsaved_edits(state.doc)) << "typed text is never dropped unasked";
+    state.checker.wait();
+    ASSERT_TRUE(take_checked_text(state));
+    ASSERT_TRUE(state.doc.loaded) << state.message;
+    ASSERT_TRUE(add_object(state, ShapeKind::sphere)) << state.message;
+    ASSERT_TRUE(add_light(state)) << state.message;
+    ASSERT_TRUE(set_aspect_from_image(state, 0)) << state.message;
+    ModelLoop loop;
+    ASSERT_TRUE(loop.run_until_complete(state));
+    ASSERT_TRUE(save_scene(state)) << state.message;
+    const Scene saved = parse_scene(read_file(path)).scene;
+    EXPECT_TRUE(saved == state.doc.scene);
+    EXPECT_EQ(saved.primitives.size(), 1u);
+    EXPECT_EQ(saved.lights.size(), 1u);
+    const std::size_t first_line = text.find('\n') + 1;  // render_settings: untouched
+    EXPECT_EQ(read_file(path).substr(0, first_line), text.substr(0, first_line));
+}
+
+}  // namespace
+}  // namespace jt::view
