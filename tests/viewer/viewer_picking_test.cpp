@@ -53,6 +53,9 @@ TEST_F(ViewerPicking, AClickSelectsOutlinesOverTheImageAndOpensTheObject) {
     click_pixel(32, 20);  // the sphere, in the middle of the 64x48 image
     ASSERT_EQ(state.selection, (Selection{Kind::primitive, 1})) << state.message;
     EXPECT_FALSE(state.free_camera_active) << "a click does not move the camera";
+    // The sidebar scrolls to the list in the frame that reveals it; its rows
+    // are drawn once the list is in view.
+    for (int i = 0; i < 2; ++i) viewer.frame(state);
     EXPECT_NE(find_item(viewer.ui_items(), "sphere 2"), nullptr) << "listed in the open panel";
     // The outline comes once the ids are computed off the UI thread.
     const auto deadline = std::chrono::steady_clock::now() + kTimeout;
@@ -92,6 +95,9 @@ TEST_F(ViewerPicking, TheObjectsListDrawsOnlyTheRowsInViewOfAHundredThousand) {
         for (int i = 0; i < 100000; ++i)
             s.primitives.push_back(Primitive{Sphere{Vec3(i * 0.01, -5, -20), 0.001}, {}, {}});
     });
+    // Render settings and Camera closed first, so that the list is inside the window.
+    ASSERT_TRUE(viewer.click(state, "Render settings"));
+    ASSERT_TRUE(viewer.click(state, "Camera"));
     ASSERT_TRUE(viewer.click(state, "Objects"));
     viewer.frame(state);
     const auto rows = [&] {

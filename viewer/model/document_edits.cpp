@@ -96,7 +96,9 @@ bool delete_block(AppState& state, BlockRef block) {
 bool add_material_block(AppState& state, std::size_t primitive) {
     return edit_text_structure(
         state,
-        [&](const SceneText& s) {
+        [&](const SceneText& s) -> Expected<std::string> {
+            if (primitive >= s.scene.primitives.size())
+                return Error{"there is no object " + std::to_string(primitive + 1)};
             return jt::add_material_block(s, primitive, s.scene.primitives[primitive].material);
         },
         "Added a material block");
