@@ -129,4 +129,27 @@ inline Vec3 cylinder_normal(const Vec3& p, CylinderPart part) {
     return {p.x, 0.0, p.z};
 }
 
+// Where the line origin + t * direction meets the plane of triangle (a, b, c),
+// in double precision: t and the barycentric weights u (of b) and v (of c).
+// No test that the point lies inside: the caller has one (Embree's watertight
+// test) and wants its answer kept on shared edges. False when the line is
+// parallel to the plane.
+struct TrianglePoint {
+    double t = no_hit;
+    double u = 0.0, v = 0.0;
+};
+inline bool triangle_plane_point(const Vec3& origin, const Vec3& direction, const Vec3& a,
+                                 const Vec3& b, const Vec3& c, TrianglePoint& out) {
+    const Vec3 e1 = b - a, e2 = c - a;
+    const Vec3 p = glm::cross(direction, e2);
+    const double det = glm::dot(e1, p);
+    if (!(det != 0.0) || !std::isfinite(det)) return false;
+    const Vec3 s = origin - a;
+    const Vec3 q = glm::cross(s, e1);
+    out.u = glm::dot(s, p) / det;
+    out.v = glm::dot(direction, q) / det;
+    out.t = glm::dot(e2, q) / det;
+    return std::isfinite(out.t);
+}
+
 }  // namespace jt

@@ -20,6 +20,10 @@ struct Digester {
         b ^= b >> 31;
     }
     void add(double v) { add(std::bit_cast<std::uint64_t>(v)); }
+    void add(const std::string& s) {
+        add(static_cast<std::uint64_t>(s.size()));
+        for (char c : s) add(static_cast<std::uint64_t>(static_cast<unsigned char>(c)));
+    }
     void add(const Vec3& v) {
         add(v.x);
         add(v.y);
@@ -42,6 +46,11 @@ GeometryDigest digest_geometry(const std::vector<Primitive>& primitives) {
         } else if (const auto* l = std::get_if<Plane>(&p.shape)) {
             d.add(l->normal);
             d.add(l->distance);
+        } else if (const auto* t = std::get_if<Triangle>(&p.shape)) {
+            for (const Vec3* v : {&t->a, &t->b, &t->c, &t->uv_a, &t->uv_b, &t->uv_c}) d.add(*v);
+        } else if (const auto* m = std::get_if<Mesh>(&p.shape)) {
+            d.add(m->file);
+            d.add(m->shading);
         }
         d.add(static_cast<std::uint64_t>(p.transforms.size()));
         for (const TransformOp& op : p.transforms) {

@@ -66,10 +66,11 @@ Uv plane_uv(const Plane& plane, double map_size, const Vec3& p) {
     return {glm::dot(p, e1) / map_size, glm::dot(p, e2) / map_size};
 }
 
-Uv shape_uv(const Shape& shape, double map_size, const Vec3& p) {
+Uv shape_uv(const Shape& shape, double map_size, const Vec3& p, Uv surface) {
     if (const auto* s = std::get_if<Sphere>(&shape)) return sphere_uv(*s, p);
     if (const auto* c = std::get_if<Cylinder>(&shape)) return cylinder_uv(*c, p);
-    return plane_uv(std::get<Plane>(shape), map_size, p);
+    if (const auto* l = std::get_if<Plane>(&shape)) return plane_uv(*l, map_size, p);
+    return surface;
 }
 
 Colour sample_bilinear(const Texture& t, Uv uv) {
@@ -86,8 +87,8 @@ Colour sample_bilinear(const Texture& t, Uv uv) {
 }
 
 Colour pattern_pigment(const Material& m, const Texture* image, const Shape& shape,
-                       const Vec3& object_point) {
-    if (image) return sample_bilinear(*image, shape_uv(shape, m.map_size, object_point));
+                       const Vec3& object_point, Uv surface) {
+    if (image) return sample_bilinear(*image, shape_uv(shape, m.map_size, object_point, surface));
     if (m.checker && odd_cube(object_point, m.checker_size)) return *m.checker;
     return m.pigment;
 }

@@ -16,7 +16,9 @@ struct Uv {
 Uv sphere_uv(const Sphere& sphere, const Vec3& p);
 Uv cylinder_uv(const Cylinder& cylinder, const Vec3& p);
 Uv plane_uv(const Plane& plane, double map_size, const Vec3& p);
-Uv shape_uv(const Shape& shape, double map_size, const Vec3& p);
+// Triangles and meshes take theirs from the hit (`surface`), blended from
+// their corners'.
+Uv shape_uv(const Shape& shape, double map_size, const Vec3& p, Uv surface = {});
 
 // The bilinear blend of the four texel centres nearest (u, v), wrapping
 // around both edges; (0, 0) is the bottom-left corner of the picture.
@@ -27,6 +29,6 @@ Colour sample_bilinear(const Texture& texture, Uv uv);
 // (`image`, loaded from its image_map), else the checker's colour on odd
 // cubes, else `pigment`.
 Colour pattern_pigment(const Material& m, const Texture* image, const Shape& shape,
-                       const Vec3& object_point);
+                       const Vec3& object_point, Uv surface = {});
 
 }  // namespace jt

@@ -9,6 +9,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <optional>
 
 namespace jt {
 
@@ -127,9 +128,13 @@ double scene_magnitude(const Geometry& g) {
     return m;
 }
 
-std::shared_ptr<const Geometry> build_geometry(const Scene& scene, const GeometryDigest& digest) {
+Expected<std::shared_ptr<const Geometry>> build_geometry(const Scene& scene,
+                                                         const GeometryDigest& digest) {
     auto g = std::make_shared<Geometry>();
     g->digest = digest;
+    auto triangles = build_triangle_geometry(scene);
+    if (!triangles) return triangles.error();
+    g->triangles = std::move(*triangles);
     // Room for the common case, every primitive a plain sphere: pages never
     // written cost nothing, while growing by copies would touch them all twice.
     g->spheres.reserve(scene.primitives.size());
@@ -153,7 +158,7 @@ std::shared_ptr<const Geometry> build_geometry(const Scene& scene, const Geometr
     std::size_t bounded = g->spheres.size() + g->shapes.size();
     if (bounded <= brute_force_limit) {
         for (TransformedShape& s : g->shapes) add_bounding_sphere(s);
-        return g;
+        return std::shared_ptr<const Geometry>(std::move(g));
     }
 
     g->bounds_slack = 1e-6 * scene_magnitude(*g);
@@ -178,7 +183,7 @@ std::shared_ptr<const Geometry> build_geometry(const Scene& scene, const Geometr
         g->shape_geometry_id = attach_user_geometry(g->bvh, *g, g->shapes.size(), shape_bounds,
                                                     shape_intersect, shape_occluded);
     rtcCommitScene(g->bvh);
-    return g;
+    return std::shared_ptr<const Geometry>(std::move(g));
 }
 
 // Each primitive's shape and world-to-object map when any material has a
@@ -233,11 +238,17 @@ Expected<std::shared_ptr<const PreparedScene>> prepare_scene(
     if (!embree_device()) return Error{embree_device_failure()};
     auto prepared = std::make_shared<PreparedScene>();
     const GeometryDigest digest = digest_geometry(scene.primitives);
+    std::optional<Error> build_error;
     auto build = [&] {
-        if (previous && previous->geometry && previous->geometry->digest == digest)
+        if (previous && previous->geometry && previous->geometry->digest == digest) {
             prepared->geometry = previous->geometry;
+            return;
+        }
+        auto built = build_geometry(scene, digest);
+        if (built)
+            prepared->geometry = std::move(*built);
         else
-            prepared->geometry = build_geometry(scene, digest);
+            build_error = built.error();
     };
     // Materials and geometry are independent; for a million primitives each is
     // worth a core.
@@ -260,6 +271,7 @@ Expected<std::shared_ptr<const PreparedScene>> prepare_scene(
         build();
         gather_materials();
     }
+    if (build_error) return *build_error;
     if (Expected<void> textures = load_textures(scene, *prepared, previous.get()); !textures)
         return textures.error();
     prepared->lights = scene.lights;

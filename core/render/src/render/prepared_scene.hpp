@@ -11,6 +11,7 @@
 #include "jtracer/scene.hpp"
 #include "jtracer/texture.hpp"
 #include "render/direction_table.hpp"
+#include "render/triangle_geometry.hpp"
 
 #include <embree3/rtcore.h>
 
@@ -76,6 +77,8 @@ struct Geometry {
     RTCScene bvh = nullptr;
     unsigned sphere_geometry_id = RTC_INVALID_GEOMETRY_ID;
     unsigned shape_geometry_id = RTC_INVALID_GEOMETRY_ID;
+    // Triangles and meshes, in Embree's own geometry; null when there are none.
+    std::unique_ptr<TriangleGeometry> triangles;
 
     // A 128-bit digest of what the geometry was built from (shapes and
     // transforms in order), to recognise it again without keeping a copy.

@@ -298,7 +298,7 @@ void shape_occluded(const RTCOccludedFunctionNArguments* args) {
 }
 
 bool closest_hit(const Geometry& geometry, const Vec3& origin, const Vec3& direction, double t_min,
-                 Hit& hit, const DirectionTable* around_origin) {
+                 Hit& hit, const DirectionTable* around_origin, TriangleId skip) {
     ClosestQuery q;
     q.geometry = &geometry;
     q.origin = origin;
@@ -337,7 +337,24 @@ bool closest_hit(const Geometry& geometry, const Vec3& origin, const Vec3& direc
         rayhit.hit.instID[0] = RTC_INVALID_GEOMETRY_ID;
         rtcIntersect1(geometry.bvh, &q.context, &rayhit);
     }
+    // Triangles last, no farther than the nearest other surface.
+    TriangleHit triangle;
+    if (geometry.triangles &&
+        closest_triangle(*geometry.triangles, origin, direction, t_min, just_beyond(q.t), triangle,
+                         skip) &&
+        better(triangle.t, triangle.source, q)) {
+        const TriangleSurface surface = triangle_surface(*geometry.triangles, triangle);
+        hit.t = triangle.t;
+        hit.source = triangle.source;
+        hit.normal = surface.geometric;
+        hit.triangle = triangle.id;
+        hit.shading = surface.shading;
+        hit.uv = surface.uv;
+        return true;
+    }
     if (q.source == no_source) return false;
+    hit.triangle = {};
+    hit.shading = Vec3(0.0);
 
     hit.t = q.t;
     hit.source = q.source;
@@ -356,7 +373,7 @@ bool closest_hit(const Geometry& geometry, const Vec3& origin, const Vec3& direc
 }
 
 bool occluded(const Geometry& geometry, const Vec3& origin, const Vec3& direction, double t_min,
-              double t_max, OccluderHint* hint, const DirectionTable* light) {
+              double t_max, OccluderHint* hint, const DirectionTable* light, TriangleId skip) {
     std::optional<ListedShapes> candidates;
     if (light) candidates = shapes_toward(*light, -direction);
     // Testing a short list costs about what testing the hint does: the hint
@@ -392,6 +409,8 @@ bool occluded(const Geometry& geometry, const Vec3& origin, const Vec3& directio
         blocked = ray.tfar < 0.0f;
         blocker = q.blocker;
     }
+    if (!blocked && geometry.triangles)
+        blocked = triangle_blocks(*geometry.triangles, origin, direction, t_min, t_max, skip);
     if (blocked && hint) *hint = blocker;
     return blocked;
 }

@@ -5,6 +5,7 @@
 // query (Embree's float tfar is only ever a conservative upper bound).
 
 #include "render/prepared_scene.hpp"
+#include "render/triangle_queries.hpp"
 
 #include <embree3/rtcore.h>
 
@@ -16,6 +17,11 @@ struct Hit {
     double t = 0.0;
     Vec3 normal{0.0};  // outward geometric normal, world space, not unit length
     std::uint32_t source = 0;
+    // A triangle's: which one, its smooth shading normal (world space, not unit
+    // length; zero for none) and its texture coordinates.
+    TriangleId triangle;
+    Vec3 shading{0.0};
+    glm::dvec2 uv{0.0};
 };
 
 // Nearest surface along origin + t * direction with t in (t_min, infinity).
@@ -23,8 +29,9 @@ struct Hit {
 // never depends on BVH traversal order.
 // With `around_origin`, a table built around `origin`, tests the shapes of
 // the ray's cell instead of walking the BVH when they are few.
+// `skip`, a triangle the ray must not meet (the one it leaves).
 bool closest_hit(const Geometry& geometry, const Vec3& origin, const Vec3& direction, double t_min,
-                 Hit& hit, const DirectionTable* around_origin = nullptr);
+                 Hit& hit, const DirectionTable* around_origin = nullptr, TriangleId skip = {});
 
 // The surface that blocked a previous shadow ray: shadow rays toward one light
 // from neighbouring points are mostly blocked by the same surface, and testing
@@ -42,7 +49,8 @@ struct OccluderHint {
 // tests the shapes of the ray's cell instead of walking the BVH when they are
 // few: the answer is the same.
 bool occluded(const Geometry& geometry, const Vec3& origin, const Vec3& direction, double t_min,
-              double t_max, OccluderHint* hint = nullptr, const DirectionTable* light = nullptr);
+              double t_max, OccluderHint* hint = nullptr, const DirectionTable* light = nullptr,
+              TriangleId skip = {});
 
 // Embree callbacks for the two user geometries; prepare_scene registers them.
 void sphere_bounds(const RTCBoundsFunctionArguments* args);

@@ -32,11 +32,12 @@ bool finite(const Vec3& v) {
 // the first opaque one (docs/language.md §13.2). Each query starts from the
 // same origin past the previous hit, so no surface is counted twice.
 double transmittance(const PreparedScene& scene, const Vec3& origin, const Vec3& direction,
-                     double t_max) {
+                     double t_max, TriangleId skip) {
     double through = 1.0;
     double t_lower = 0.0;
     Hit hit;
-    while (through > 0.0 && closest_hit(*scene.geometry, origin, direction, t_lower, hit) &&
+    while (through > 0.0 &&
+           closest_hit(*scene.geometry, origin, direction, t_lower, hit, nullptr, skip) &&
            hit.t < t_max) {
         through *= scene.materials[scene.material_of[hit.source]].transmission;
         t_lower = hit.t;
@@ -45,9 +46,12 @@ double transmittance(const PreparedScene& scene, const Vec3& origin, const Vec3&
 }
 
 // The local (non-reflected) light at a hit: ambient, then each light's diffuse
-// and specular terms when nothing shadows it.
+// and specular terms when nothing shadows it. A triangle's shadow rays never
+// meet the triangle they leave (`own`): a smooth normal may face a light its
+// flat face turns away from (docs/language.md §13.5).
 Colour shade_hit(const PreparedScene& scene, const Material& m, const Vec3& point,
-                 const Vec3& lifted, const Vec3& normal, const Vec3& view, std::uint64_t& rays) {
+                 const Vec3& lifted, const Vec3& normal, const Vec3& view, TriangleId own,
+                 std::uint64_t& rays) {
     Colour c = scene.settings.ambient_light * m.ambient * m.pigment;
     const Geometry& geometry = *scene.geometry;
     const std::vector<DirectionTable>* light_tables =
@@ -73,13 +77,13 @@ Colour shade_hit(const PreparedScene& scene, const Material& m, const Vec3& poin
         ++rays;
         Colour intensity = light.intensity;
         if (scene.has_transmission) {
-            const double through =
-                transmittance(scene, lifted, shadow_direction / shadow_distance, shadow_distance);
+            const double through = transmittance(scene, lifted, shadow_direction / shadow_distance,
+                                                 shadow_distance, own);
             if (!(through > 0.0)) continue;
             intensity *= through;
         } else if (occluded(geometry, lifted, shadow_direction / shadow_distance, 0.0,
                             shadow_distance, &hints[light_index],
-                            light_tables ? &(*light_tables)[light_index] : nullptr)) {
+                            light_tables ? &(*light_tables)[light_index] : nullptr, own)) {
             continue;
         }
         // pow(x, 1) is x exactly, and adding a zero term changes nothing: both
@@ -99,11 +103,14 @@ struct SurfaceHit {
     enum class Kind : std::uint8_t { miss, no_normal, surface };
     Kind kind = Kind::miss;
     Vec3 point{0.0};
-    Vec3 normal{0.0};      // unit, facing the ray
+    Vec3 normal{0.0};      // unit, facing the ray: the shading normal N
+    Vec3 geometric{0.0};   // unit, facing the ray: Ng (the same as N but on triangles)
     bool entering = true;  // the ray arrives from the outside (docs/language.md §13.2)
     Vec3 lifted{0.0};      // point moved off the surface toward the ray's side
     double offset = 0.0;
     std::uint32_t source = 0;
+    TriangleId triangle;  // on a triangle: which
+    glm::dvec2 uv{0.0};   // on a triangle: its texture coordinates
 };
 
 SurfaceHit first_surface(const Geometry& geometry, const Vec3& o, const Vec3& d, double t_lower,
@@ -112,30 +119,40 @@ SurfaceHit first_surface(const Geometry& geometry, const Vec3& o, const Vec3& d,
     Hit hit;
     if (!finite(o) || !finite(d) || !closest_hit(geometry, o, d, t_lower, hit, table)) return s;
     s.point = o + hit.t * d;
-    s.normal = glm::normalize(hit.normal);
-    const double along = glm::dot(s.normal, d);
+    s.geometric = glm::normalize(hit.normal);
+    const double along = glm::dot(s.geometric, d);
     s.entering = along < 0.0;
-    if (along > 0.0) s.normal = -s.normal;  // two-sided: face the ray
-    if (!finite(s.normal)) {
+    if (along > 0.0) s.geometric = -s.geometric;  // two-sided: face the ray
+    if (!finite(s.geometric)) {
         s.kind = SurfaceHit::Kind::no_normal;
         return s;
     }
+    s.normal = s.geometric;
+    if (hit.shading != Vec3(0.0)) {
+        // A smooth normal turns to the side the geometric one faces (§13.5).
+        const Vec3 n = glm::normalize(hit.shading);
+        if (finite(n)) s.normal = glm::dot(n, s.geometric) < 0.0 ? -n : n;
+    }
     s.kind = SurfaceHit::Kind::surface;
     s.offset = surface_offset(o, s.point, hit.t);
-    s.lifted = s.point + s.offset * s.normal;
+    s.lifted = s.point + s.offset * s.geometric;
     s.source = hit.source;
+    s.triangle = hit.triangle;
+    s.uv = hit.uv;
     return s;
 }
 
 Colour shade_surface(const PreparedScene& scene, const SurfaceHit& s, const Vec3& d,
                      std::uint64_t& rays) {
     const Material& m = scene.materials[scene.material_of[s.source]];
-    if (!has_pattern(m)) return shade_hit(scene, m, s.point, s.lifted, s.normal, -d, rays);
+    if (!has_pattern(m))
+        return shade_hit(scene, m, s.point, s.lifted, s.normal, -d, s.triangle, rays);
     const PatternSpace& space = scene.pattern_space[s.source];
     Material patterned = m;
-    patterned.pigment = pattern_pigment(m, scene.textures[scene.material_of[s.source]].get(),
-                                        space.shape, apply_point(space.to_object, s.point));
-    return shade_hit(scene, patterned, s.point, s.lifted, s.normal, -d, rays);
+    patterned.pigment =
+        pattern_pigment(m, scene.textures[scene.material_of[s.source]].get(), space.shape,
+                        apply_point(space.to_object, s.point), Uv{s.uv.x, s.uv.y});
+    return shade_hit(scene, patterned, s.point, s.lifted, s.normal, -d, s.triangle, rays);
 }
 
 Vec3 mirror(const Vec3& d, const Vec3& n) {
@@ -167,7 +184,8 @@ Colour trace_branching(const PreparedScene& scene, const Vec3& o, const Vec3& d,
     if (m.transmission > 0.0 && weight * m.transmission >= min_branch_weight) {
         const Vec3 t = transmitted_direction(d, s.normal, s.entering, m.ior);
         // Total internal reflection stays on the ray's side; a refracted ray crosses.
-        const Vec3 from = glm::dot(t, s.normal) > 0.0 ? s.lifted : s.point - s.offset * s.normal;
+        const Vec3 from =
+            glm::dot(t, s.geometric) > 0.0 ? s.lifted : s.point - s.offset * s.geometric;
         c += m.transmission * trace_branching(scene, from, t, 0.0, depth + 1, depth_limit,
                                               weight * m.transmission, rays, nullptr);
     }

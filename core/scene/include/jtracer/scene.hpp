@@ -11,6 +11,7 @@
 
 #include <optional>
 #include <string>
+#include <string_view>
 #include <variant>
 #include <vector>
 
@@ -94,7 +95,29 @@ struct Cylinder {
     bool operator==(const Cylinder&) const = default;
 };
 
-using Shape = std::variant<Sphere, Plane, Cylinder>;
+// Extensions (docs/language.md §13.5): a triangle, counter-clockwise seen
+// from the front, and every triangle of a model file.
+struct Triangle {
+    Vec3 a{0.0, 0.0, 0.0};
+    Vec3 b{1.0, 0.0, 0.0};
+    Vec3 c{0.0, 1.0, 0.0};
+    // Texture coordinates of the corners (x and y used, z ignored).
+    Vec3 uv_a{0.0, 0.0, 0.0};
+    Vec3 uv_b{1.0, 0.0, 0.0};
+    Vec3 uv_c{0.0, 1.0, 0.0};
+    bool operator==(const Triangle&) const = default;
+};
+
+inline constexpr std::string_view kSmoothShading = "smooth";
+inline constexpr std::string_view kFlatShading = "flat";
+
+struct Mesh {
+    std::string file;  // relative to Scene::asset_folder; required
+    std::string shading{kSmoothShading};
+    bool operator==(const Mesh&) const = default;
+};
+
+using Shape = std::variant<Sphere, Plane, Cylinder, Triangle, Mesh>;
 
 struct Primitive {
     Shape shape;
@@ -116,7 +139,7 @@ struct Scene {
     std::vector<Camera> cameras;
     std::vector<Primitive> primitives;
     std::vector<PointLight> lights;
-    // Where the relative file names it holds (image_map) are found: the folder
+    // Where the relative file names it holds (image_map, mesh files) are found: the folder
     // of the .jts file (load_scene_file sets it); empty: the current directory.
     std::string asset_folder;
 

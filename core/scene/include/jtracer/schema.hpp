@@ -45,6 +45,8 @@ struct ValueRange {
     bool clamp_high = false;
     bool nonzero = false;   // a vector: <0, 0, 0> is outside
     bool nonempty = false;  // a string: "" is outside
+    // A string: when not empty, the only words allowed.
+    std::span<const std::string_view> choices = {};
 };
 
 // A pointer to the member a property sets: one of the member types the block
@@ -73,6 +75,14 @@ struct MemberTypes<Plane> {
 template <>
 struct MemberTypes<Cylinder> {
     using type = MemberOf<Cylinder, double>;
+};
+template <>
+struct MemberTypes<Triangle> {
+    using type = MemberOf<Triangle, Vec3>;
+};
+template <>
+struct MemberTypes<Mesh> {
+    using type = MemberOf<Mesh, std::string>;
 };
 template <>
 struct MemberTypes<PointLight> {
@@ -202,6 +212,22 @@ inline constexpr std::array<PropertySpec<Cylinder>, 2> kCylinder{{
     number("height", &Cylinder::height, kPositive),
 }};
 
+// Extensions (docs/language.md §13.5).
+inline constexpr std::array<PropertySpec<Triangle>, 6> kTriangle{{
+    vector("a", &Triangle::a),
+    vector("b", &Triangle::b),
+    vector("c", &Triangle::c),
+    only_when_set(vector("uv_a", &Triangle::uv_a)),
+    only_when_set(vector("uv_b", &Triangle::uv_b)),
+    only_when_set(vector("uv_c", &Triangle::uv_c)),
+}};
+
+inline constexpr std::array<std::string_view, 2> kShadings{kSmoothShading, kFlatShading};
+inline constexpr std::array<PropertySpec<Mesh>, 2> kMesh{{
+    string("file", &Mesh::file, {.nonempty = true}),
+    string("shading", &Mesh::shading, {.choices = kShadings}, true),
+}};
+
 inline constexpr std::array<PropertySpec<PointLight>, 2> kPointLight{{
     vector("position", &PointLight::position),
     colour("intensity", &PointLight::intensity),
@@ -244,6 +270,9 @@ inline constexpr BlockSchema<Sphere> kSphereSchema{"sphere", "sphere", kSphere, 
 inline constexpr BlockSchema<Plane> kPlaneSchema{"plane", "plane", kPlane, kPrimitiveChildren};
 inline constexpr BlockSchema<Cylinder> kCylinderSchema{"cylinder", "cylinder", kCylinder,
                                                        kPrimitiveChildren};
+inline constexpr BlockSchema<Triangle> kTriangleSchema{"triangle", "triangle", kTriangle,
+                                                       kPrimitiveChildren};
+inline constexpr BlockSchema<Mesh> kMeshSchema{"mesh", "mesh", kMesh, kPrimitiveChildren};
 inline constexpr BlockSchema<PointLight> kPointLightSchema{"point_light", "point_light",
                                                            kPointLight};
 inline constexpr BlockSchema<Material> kMaterialSchema{"material", "material", kMaterial};
@@ -274,6 +303,14 @@ constexpr const BlockSchema<Cylinder>& schema_of<Cylinder>() {
     return schema_detail::kCylinderSchema;
 }
 template <>
+constexpr const BlockSchema<Triangle>& schema_of<Triangle>() {
+    return schema_detail::kTriangleSchema;
+}
+template <>
+constexpr const BlockSchema<Mesh>& schema_of<Mesh>() {
+    return schema_detail::kMeshSchema;
+}
+template <>
 constexpr const BlockSchema<PointLight>& schema_of<PointLight>() {
     return schema_detail::kPointLightSchema;
 }
@@ -282,7 +319,7 @@ constexpr const BlockSchema<Material>& schema_of<Material>() {
     return schema_detail::kMaterialSchema;
 }
 
-// "sphere", "plane" or "cylinder": the keyword of a primitive's shape.
+// "sphere", "plane", "cylinder", "triangle" or "mesh": the keyword of a primitive's shape.
 constexpr std::string_view keyword_of(const Shape& shape) {
     return std::visit([](const auto& s) { return schema_of<std::decay_t<decltype(s)>>().keyword; },
                       shape);

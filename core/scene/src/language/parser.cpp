@@ -8,6 +8,7 @@
 #include "jtracer/parser.hpp"
 
 #include "io/reserve_records.hpp"
+#include "jtracer/schema.hpp"
 #include "language/lexer.hpp"
 #include "language/properties.hpp"
 #include "language/quote.hpp"
@@ -18,6 +19,7 @@
 #include <cstdint>
 #include <limits>
 #include <new>
+#include <optional>
 #include <span>
 #include <string>
 #include <utility>
@@ -29,10 +31,22 @@ namespace {
 
 constexpr std::array<std::string_view, 3> kTopBlocks{"render_settings", "cameras", "scene"};
 constexpr std::array<std::string_view, 1> kCameraBlocks{"perspective_camera"};
-constexpr std::array<std::string_view, 4> kSceneBlocks{"sphere", "plane", "cylinder",
-                                                       "point_light"};
+constexpr std::array<std::string_view, 6> kSceneBlocks{"sphere",   "plane", "cylinder",
+                                                       "triangle", "mesh",  "point_light"};
 constexpr std::array<std::string_view, 2> kPrimitiveBlocks{"material", "transform"};
 constexpr std::array<std::string_view, 0> kNoBlocks{};
+
+// The default shape a primitive keyword opens, or nullopt for another word.
+template <std::size_t I = 0>
+std::optional<Shape> shape_of_keyword(std::string_view word) {
+    if constexpr (I == std::variant_size_v<Shape>) {
+        return std::nullopt;
+    } else {
+        using Alternative = std::variant_alternative_t<I, Shape>;
+        if (word == schema_of<Alternative>().keyword) return Shape(Alternative{});
+        return shape_of_keyword<I + 1>(word);
+    }
+}
 
 bool contains(std::span<const std::string_view> names, std::string_view word) {
     return std::find(names.begin(), names.end(), word) != names.end();
@@ -45,9 +59,9 @@ TextSpan span_of(const Token& t) {
 
 // Every keyword a block record can have, so that records point at these
 // literals rather than at the text.
-constexpr std::array<std::string_view, 10> kRecordedKeywords{
-    "render_settings", "cameras",  "scene",       "perspective_camera", "sphere",
-    "plane",           "cylinder", "point_light", "material",           "transform"};
+constexpr std::array<std::string_view, 12> kRecordedKeywords{
+    "render_settings", "cameras",  "scene", "perspective_camera", "sphere",   "plane",
+    "cylinder",        "triangle", "mesh",  "point_light",        "material", "transform"};
 
 std::string_view static_keyword(std::string_view word) {
     for (std::string_view k : kRecordedKeywords)
@@ -395,8 +409,9 @@ class Parser {
     void block_in_property_block(const BlockSource& block) {
         if (block.keyword == "point_light" &&
             (cur_->text == "material" || cur_->text == "transform")) {
-            sink_.error(cur_->pos, "a point_light takes no '" + std::string(cur_->text) +
-                                       "' block: only sphere, plane and cylinder do");
+            sink_.error(cur_->pos,
+                        "a point_light takes no '" + std::string(cur_->text) +
+                            "' block: only sphere, plane, cylinder, triangle and mesh do");
             skip_block();
             return;
         }
@@ -479,10 +494,9 @@ class Parser {
                 if (!parse_property_block(light_block, 0, light)) return;
                 lights.push_back(light);
                 light_sources.push_back(std::move(light_block));
-            } else if (kind == "sphere" || kind == "plane" || kind == "cylinder") {
+            } else if (std::optional<Shape> shape = shape_of_keyword(kind)) {
                 Primitive primitive;
-                if (kind == "plane") primitive.shape = Plane{};
-                if (kind == "cylinder") primitive.shape = Cylinder{};
+                primitive.shape = std::move(*shape);
                 BlockSource primitive_block;
                 if (!open_block(primitive_block)) return;
                 read_properties(primitive_block, 0,

@@ -69,12 +69,24 @@ RangeCheck<Vec3> check_range(const ValueRange& range, const Vec3& value) {
 }
 
 RangeVerdict check_range(const ValueRange& range, std::string_view value) {
-    return range.nonempty && value.empty() ? RangeVerdict::outside : RangeVerdict::inside;
+    if (range.nonempty && value.empty()) return RangeVerdict::outside;
+    if (!range.choices.empty() &&
+        std::find(range.choices.begin(), range.choices.end(), value) == range.choices.end())
+        return RangeVerdict::outside;
+    return RangeVerdict::inside;
 }
 
 std::string range_rule(const ValueRange& range, ValueKind kind, std::string_view unit) {
     if (range.nonzero) return "must not be the zero vector";
     if (range.nonempty) return "must not be empty";
+    if (!range.choices.empty()) {
+        std::string rule = "must be ";
+        for (std::size_t i = 0; i < range.choices.size(); ++i) {
+            if (i > 0) rule += i + 1 == range.choices.size() ? " or " : ", ";
+            rule.append(1, '"').append(range.choices[i]).append(1, '"');
+        }
+        return rule;
+    }
     // Only the bounds past which a value is an error; clamping bounds are not rules.
     const bool low = std::isfinite(range.low) && !range.clamp_low;
     const bool high = std::isfinite(range.high) && !range.clamp_high;

@@ -1,6 +1,7 @@
 #include "jtracer/validate.hpp"
 
 #include "jtracer/affine.hpp"
+#include "jtracer/model_cache.hpp"
 #include "jtracer/schema.hpp"
 #include "jtracer/texture.hpp"
 #include "jtracer/value_text.hpp"
@@ -174,8 +175,46 @@ class Validator {
             }
             check_transforms(p, block);
             check_image_map(p.material, block);
+            if (const auto* triangle = std::get_if<Triangle>(&p.shape))
+                check_triangle(*triangle, block, which);
+            if (const auto* mesh = std::get_if<Mesh>(&p.shape)) check_mesh(*mesh, block, which);
         }
     }
+
+    // A triangle of zero area is left out (docs/language.md §13.5).
+    void check_triangle(const Triangle& t, const BlockSource* block, const std::string& which) {
+        if (glm::cross(t.b - t.a, t.c - t.a) != Vec3(0.0)) return;
+        warning(block ? block->keyword_span.pos : SourcePos{},
+                which + "its corners " + vector_text(t.a) + ", " + vector_text(t.b) + ", " +
+                    vector_text(t.c) + " lie on one line (zero area): it is left out");
+    }
+
+    // The model must load and hold a triangle; each file is read once
+    // (model_cache.hpp), so the render that follows reads it no more.
+    void check_mesh(const Mesh& mesh, const BlockSource* block, const std::string& which) {
+        if (mesh.file.empty()) return;  // check_values reported it
+        const SourcePos pos = where(block, "file");
+        auto known = models_.find(mesh.file);
+        if (known == models_.end()) {
+            ModelVerdict verdict;
+            auto model = shared_model(asset_path(scene_, mesh.file), scene_.asset_folder);
+            if (!model)
+                verdict.error = model.error().message;
+            else
+                verdict.empty = (*model)->triangles.empty();
+            known = models_.emplace(mesh.file, verdict).first;
+        }
+        if (!known->second.error.empty())
+            error(pos, which + known->second.error);
+        else if (known->second.empty)
+            warning(pos, which + "'" + mesh.file +
+                             "' holds no triangle of non-zero area: the mesh is left out");
+    }
+    struct ModelVerdict {
+        std::string error;  // "": it loads
+        bool empty = false;
+    };
+    std::map<std::string, ModelVerdict> models_;
 
     // The picture must be readable (docs/language.md §13.4); each file is
     // looked at once however many materials name it.

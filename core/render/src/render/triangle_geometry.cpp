@@ -1,0 +1,173 @@
+#include "render/triangle_geometry.hpp"
+
+#include "jtracer/model_cache.hpp"
+#include "jtracer/texture.hpp"
+#include "render/embree_device.hpp"
+#include "render/triangle_queries.hpp"
+
+#include <glm/geometric.hpp>
+
+#include <cmath>
+#include <map>
+#include <string>
+
+namespace jt {
+
+TriangleModel::~TriangleModel() {
+    if (scene) rtcReleaseScene(scene);
+}
+
+TriangleGeometry::~TriangleGeometry() {
+    if (scene) rtcReleaseScene(scene);
+}
+
+namespace {
+
+// Past this many triangles, a faster build pays off more than a better tree.
+constexpr std::size_t fast_build_triangles = 4000000;
+
+RTCGeometry new_triangle_geometry(std::size_t vertices, std::size_t triangles) {
+    RTCGeometry g = rtcNewGeometry(embree_device(), RTC_GEOMETRY_TYPE_TRIANGLE);
+    // Embree reads vertices 16 bytes at a time: its own buffer is padded.
+    rtcSetNewGeometryBuffer(g, RTC_BUFFER_TYPE_VERTEX, 0, RTC_FORMAT_FLOAT3, 3 * sizeof(float),
+                            vertices);
+    rtcSetNewGeometryBuffer(g, RTC_BUFFER_TYPE_INDEX, 0, RTC_FORMAT_UINT3,
+                            3 * sizeof(std::uint32_t), triangles);
+    rtcSetGeometryIntersectFilterFunction(g, triangle_intersect_filter);
+    rtcSetGeometryOccludedFilterFunction(g, triangle_occluded_filter);
+    return g;
+}
+
+RTCScene new_robust_scene(std::size_t triangles) {
+    RTCScene scene = rtcNewScene(embree_device());
+    // Robust traversal: a ray through a shared edge or vertex never slips
+    // between the triangles that share it.
+    rtcSetSceneFlags(scene, RTC_SCENE_FLAG_ROBUST);
+    rtcSetSceneBuildQuality(
+        scene, triangles > fast_build_triangles ? RTC_BUILD_QUALITY_LOW : RTC_BUILD_QUALITY_MEDIUM);
+    return scene;
+}
+
+std::unique_ptr<TriangleModel> model_scene(std::shared_ptr<const Model> model) {
+    auto m = std::make_unique<TriangleModel>();
+    m->scene = new_robust_scene(model->triangles.size());
+    RTCGeometry g = new_triangle_geometry(model->positions.size(), model->triangles.size());
+    auto* v = static_cast<float*>(rtcGetGeometryBufferData(g, RTC_BUFFER_TYPE_VERTEX, 0));
+    for (const glm::vec3& p : model->positions) {
+        *v++ = p.x;
+        *v++ = p.y;
+        *v++ = p.z;
+    }
+    auto* i = static_cast<std::uint32_t*>(rtcGetGeometryBufferData(g, RTC_BUFFER_TYPE_INDEX, 0));
+    for (const auto& t : model->triangles) {
+        *i++ = t[0];
+        *i++ = t[1];
+        *i++ = t[2];
+    }
+    rtcCommitGeometry(g);
+    rtcAttachGeometry(m->scene, g);
+    rtcReleaseGeometry(g);
+    rtcCommitScene(m->scene);
+    m->model = std::move(model);
+    return m;
+}
+
+void attach_instance(RTCScene top, const TriangleModel& model, const ObjectTransform& transform) {
+    RTCGeometry g = rtcNewGeometry(embree_device(), RTC_GEOMETRY_TYPE_INSTANCE);
+    rtcSetGeometryInstancedScene(g, model.scene);
+    float xfm[12];  // 3x4, column-major: the linear part's columns, then the translation
+    for (int c = 0; c < 3; ++c)
+        for (int r = 0; r < 3; ++r)
+            xfm[3 * c + r] = static_cast<float>(transform.to_world.linear[c][r]);
+    for (int r = 0; r < 3; ++r) xfm[9 + r] = static_cast<float>(transform.to_world.translation[r]);
+    rtcSetGeometryTransform(g, 0, RTC_FORMAT_FLOAT3X4_COLUMN_MAJOR, xfm);
+    rtcCommitGeometry(g);
+    rtcAttachGeometry(top, g);
+    rtcReleaseGeometry(g);
+}
+
+void attach_loose(TriangleGeometry& t) {
+    RTCGeometry g = new_triangle_geometry(3 * t.loose.size(), t.loose.size());
+    auto* v = static_cast<float*>(rtcGetGeometryBufferData(g, RTC_BUFFER_TYPE_VERTEX, 0));
+    auto* i = static_cast<std::uint32_t*>(rtcGetGeometryBufferData(g, RTC_BUFFER_TYPE_INDEX, 0));
+    std::uint32_t next = 0;
+    for (const LooseTriangle& triangle : t.loose) {
+        for (const Vec3& p : triangle.corners) {
+            *v++ = static_cast<float>(p.x);
+            *v++ = static_cast<float>(p.y);
+            *v++ = static_cast<float>(p.z);
+            *i++ = next++;
+        }
+    }
+    rtcCommitGeometry(g);
+    t.loose_geometry_id = rtcAttachGeometry(t.scene, g);
+    rtcReleaseGeometry(g);
+}
+
+bool finite(const Vec3& v) {
+    return std::isfinite(v.x) && std::isfinite(v.y) && std::isfinite(v.z);
+}
+
+}  // namespace
+
+Expected<std::unique_ptr<TriangleGeometry>> build_triangle_geometry(const Scene& scene) {
+    std::unique_ptr<TriangleGeometry> t;
+    std::map<std::string, std::uint32_t> model_of_file;
+    for (std::size_t i = 0; i < scene.primitives.size(); ++i) {
+        const Primitive& p = scene.primitives[i];
+        const auto* triangle = std::get_if<Triangle>(&p.shape);
+        const auto* mesh = std::get_if<Mesh>(&p.shape);
+        if (!triangle && !mesh) continue;
+        ObjectTransform transform;
+        if (!p.transforms.empty()) {
+            auto placed = object_transform(p.transforms);
+            if (std::holds_alternative<LeftOut>(placed)) continue;
+            transform = std::get<ObjectTransform>(placed);
+        }
+        if (!t) {
+            t = std::make_unique<TriangleGeometry>();
+            t->scene = new_robust_scene(0);
+        }
+        const auto source = static_cast<std::uint32_t>(i);
+        if (triangle) {
+            LooseTriangle loose;
+            loose.corners = {apply_point(transform.to_world, triangle->a),
+                             apply_point(transform.to_world, triangle->b),
+                             apply_point(transform.to_world, triangle->c)};
+            loose.uvs = {glm::dvec2(triangle->uv_a), glm::dvec2(triangle->uv_b),
+                         glm::dvec2(triangle->uv_c)};
+            loose.source = source;
+            const auto& c = loose.corners;
+            // Zero area in its own space or in the world's: left out (the validator warned).
+            if (glm::cross(triangle->b - triangle->a, triangle->c - triangle->a) == Vec3(0.0) ||
+                !finite(c[0]) || !finite(c[1]) || !finite(c[2]) ||
+                glm::cross(c[1] - c[0], c[2] - c[0]) == Vec3(0.0))
+                continue;
+            t->loose.push_back(loose);
+            continue;
+        }
+        const std::string path = asset_path(scene, mesh->file).string();
+        auto known = model_of_file.find(path);
+        if (known == model_of_file.end()) {
+            auto model = shared_model(path, scene.asset_folder);
+            if (!model) return Error{"mesh: " + model.error().message};
+            if ((*model)->triangles.empty()) continue;
+            t->models.push_back(model_scene(*model));
+            known = model_of_file.emplace(path, t->models.size() - 1).first;
+        }
+        MeshInstance instance;
+        instance.model = known->second;
+        instance.to_object = transform.to_object;
+        instance.normal_matrix = transform.normal_matrix;
+        instance.smooth = mesh->shading == kSmoothShading;
+        instance.source = source;
+        attach_instance(t->scene, *t->models[known->second], transform);
+        t->instances.push_back(instance);
+    }
+    if (!t) return std::unique_ptr<TriangleGeometry>();
+    if (!t->loose.empty()) attach_loose(*t);
+    rtcCommitScene(t->scene);
+    return t;
+}
+
+}  // namespace jt

@@ -1,0 +1,81 @@
+#pragma once
+// Triangles (docs/language.md §13.5) as Embree's own triangle geometry: one
+// RTCScene per distinct model file, instanced once per mesh that uses it (100
+// copies cost one model's memory), and the scene's `triangle` blocks in one
+// world-space geometry. Embree finds the hit in single precision with its
+// watertight (robust) test; every hit is then refined in double precision on
+// the triangle found, so secondary rays never meet their own surface again.
+//
+// A scene with no triangle has no TriangleGeometry at all and pays nothing.
+
+#include "jtracer/affine.hpp"
+#include "jtracer/error.hpp"
+#include "jtracer/model_file.hpp"
+#include "jtracer/scene.hpp"
+
+#include <embree3/rtcore.h>
+
+#include <array>
+#include <cstdint>
+#include <limits>
+#include <memory>
+#include <vector>
+
+namespace jt {
+
+// A model in its own Embree scene, shared by all its instances.
+struct TriangleModel {
+    std::shared_ptr<const Model> model;
+    RTCScene scene = nullptr;
+
+    TriangleModel() = default;
+    TriangleModel(const TriangleModel&) = delete;
+    TriangleModel& operator=(const TriangleModel&) = delete;
+    ~TriangleModel();
+};
+
+// One mesh primitive: a model placed by its transform.
+struct MeshInstance {
+    std::uint32_t model = 0;  // index into TriangleGeometry::models
+    Affine to_object;
+    glm::dmat3 normal_matrix{1.0};  // inverse transpose of the object-to-world map
+    bool smooth = true;             // shading: "smooth"
+    std::uint32_t source = 0;
+};
+
+// One triangle block, moved to world space: corners in double precision, its
+// texture coordinates, and the Scene primitive it came from.
+struct LooseTriangle {
+    std::array<Vec3, 3> corners;
+    std::array<glm::dvec2, 3> uvs;
+    std::uint32_t source = 0;
+};
+
+struct TriangleGeometry {
+    std::vector<std::unique_ptr<TriangleModel>> models;
+    std::vector<MeshInstance> instances;  // index = instance geometry id in `scene`
+    std::vector<LooseTriangle> loose;
+    unsigned loose_geometry_id = RTC_INVALID_GEOMETRY_ID;
+    RTCScene scene = nullptr;  // the instances and the loose triangles
+
+    TriangleGeometry() = default;
+    TriangleGeometry(const TriangleGeometry&) = delete;
+    TriangleGeometry& operator=(const TriangleGeometry&) = delete;
+    ~TriangleGeometry();
+};
+
+// Which triangle: the instance (or no_instance for a loose triangle) and the
+// triangle's index in its model (or in `loose`).
+struct TriangleId {
+    static constexpr std::uint32_t no_instance = std::numeric_limits<std::uint32_t>::max();
+    std::uint32_t instance = no_instance;
+    std::uint32_t triangle = std::numeric_limits<std::uint32_t>::max();
+    bool operator==(const TriangleId&) const = default;
+};
+
+// The triangles of a scene's triangle and mesh primitives, or null when it has
+// none. A mesh whose file cannot be read is an error; one with no triangle is
+// left out (the validator warned). Each file is read once (model_cache.hpp).
+Expected<std::unique_ptr<TriangleGeometry>> build_triangle_geometry(const Scene& scene);
+
+}  // namespace jt

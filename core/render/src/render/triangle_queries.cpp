@@ -1,0 +1,170 @@
+#include "render/triangle_queries.hpp"
+
+#include "geometry/intersect.hpp"
+
+#include <glm/geometric.hpp>
+
+#include <cmath>
+#include <limits>
+
+namespace jt {
+
+namespace {
+
+// Embree hands the filters the context pointer we passed in; the query starts
+// with it so that it can be found again.
+struct TriangleQuery {
+    RTCIntersectContext context;
+    const TriangleGeometry* geometry;
+    Vec3 origin, direction;
+    double t_min, t_max;
+    TriangleId skip;
+};
+
+float float_down(double x) {
+    if (!(x > 0.0)) return 0.0f;
+    if (x >= static_cast<double>(std::numeric_limits<float>::max()))
+        return std::numeric_limits<float>::max();
+    const float f = static_cast<float>(x);
+    return static_cast<double>(f) > x ? std::nextafter(f, 0.0f) : f;
+}
+
+// Two float steps above: Embree's own rounding must not cull a triangle whose
+// exact hit lies just inside t_max.
+float float_up(double x) {
+    if (!(x < static_cast<double>(std::numeric_limits<float>::max())))
+        return std::numeric_limits<float>::infinity();
+    const float inf = std::numeric_limits<float>::infinity();
+    return std::nextafter(std::nextafter(static_cast<float>(x), inf), inf);
+}
+
+void set_float_ray(RTCRay& ray, const TriangleQuery& q) {
+    ray.org_x = static_cast<float>(q.origin.x);
+    ray.org_y = static_cast<float>(q.origin.y);
+    ray.org_z = static_cast<float>(q.origin.z);
+    ray.dir_x = static_cast<float>(q.direction.x);
+    ray.dir_y = static_cast<float>(q.direction.y);
+    ray.dir_z = static_cast<float>(q.direction.z);
+    ray.tnear = float_down(q.t_min);
+    ray.tfar = float_up(q.t_max);
+    ray.time = 0.0f;
+    ray.mask = 0xFFFFFFFFu;
+    ray.id = 0;
+    ray.flags = 0;
+}
+
+Vec3 corner(const Model& m, std::uint32_t triangle, int k) {
+    return Vec3(m.positions[m.triangles[triangle][k]]);
+}
+
+// The double-precision point of the ray on triangle `id`'s plane.
+bool exact_point(const TriangleGeometry& g, TriangleId id, const Vec3& origin,
+                 const Vec3& direction, TrianglePoint& out) {
+    if (id.instance == TriangleId::no_instance) {
+        const auto& c = g.loose[id.triangle].corners;
+        return triangle_plane_point(origin, direction, c[0], c[1], c[2], out);
+    }
+    const MeshInstance& instance = g.instances[id.instance];
+    const Model& m = *g.models[instance.model]->model;
+    return triangle_plane_point(
+        apply_point(instance.to_object, origin), apply_vector(instance.to_object, direction),
+        corner(m, id.triangle, 0), corner(m, id.triangle, 1), corner(m, id.triangle, 2), out);
+}
+
+TriangleId id_of(const RTCFilterFunctionNArguments* args) {
+    const unsigned instance = RTCHitN_instID(args->hit, args->N, 0, 0);
+    return {instance == RTC_INVALID_GEOMETRY_ID ? TriangleId::no_instance : instance,
+            RTCHitN_primID(args->hit, args->N, 0)};
+}
+
+// Whether the candidate the filter sees lies in the query's range, exactly.
+bool keep(const RTCFilterFunctionNArguments* args) {
+    const auto& q = *reinterpret_cast<const TriangleQuery*>(args->context);
+    const TriangleId id = id_of(args);
+    if (id == q.skip) return false;
+    TrianglePoint p;
+    return exact_point(*q.geometry, id, q.origin, q.direction, p) && p.t > q.t_min && p.t < q.t_max;
+}
+
+TriangleQuery query(const TriangleGeometry& g, const Vec3& origin, const Vec3& direction,
+                    double t_min, double t_max, TriangleId skip) {
+    TriangleQuery q;
+    rtcInitIntersectContext(&q.context);
+    q.geometry = &g;
+    q.origin = origin;
+    q.direction = direction;
+    q.t_min = t_min;
+    q.t_max = t_max;
+    q.skip = skip;
+    return q;
+}
+
+}  // namespace
+
+void triangle_intersect_filter(const RTCFilterFunctionNArguments* args) {
+    if (args->valid[0] && !keep(args)) args->valid[0] = 0;
+}
+
+void triangle_occluded_filter(const RTCFilterFunctionNArguments* args) {
+    if (args->valid[0] && !keep(args)) args->valid[0] = 0;
+}
+
+bool closest_triangle(const TriangleGeometry& g, const Vec3& origin, const Vec3& direction,
+                      double t_min, double t_max, TriangleHit& hit, TriangleId skip) {
+    TriangleQuery q = query(g, origin, direction, t_min, t_max, skip);
+    RTCRayHit rayhit;
+    set_float_ray(rayhit.ray, q);
+    rayhit.hit.geomID = RTC_INVALID_GEOMETRY_ID;
+    rayhit.hit.primID = RTC_INVALID_GEOMETRY_ID;
+    rayhit.hit.instID[0] = RTC_INVALID_GEOMETRY_ID;
+    rtcIntersect1(g.scene, &q.context, &rayhit);
+    if (rayhit.hit.geomID == RTC_INVALID_GEOMETRY_ID) return false;
+    const unsigned instance = rayhit.hit.instID[0];
+    hit.id = {instance == RTC_INVALID_GEOMETRY_ID ? TriangleId::no_instance : instance,
+              rayhit.hit.primID};
+    TrianglePoint p;
+    if (!exact_point(g, hit.id, origin, direction, p)) return false;
+    hit.t = p.t;
+    hit.u = p.u;
+    hit.v = p.v;
+    hit.source = hit.id.instance == TriangleId::no_instance ? g.loose[hit.id.triangle].source
+                                                            : g.instances[hit.id.instance].source;
+    return true;
+}
+
+bool triangle_blocks(const TriangleGeometry& g, const Vec3& origin, const Vec3& direction,
+                     double t_min, double t_max, TriangleId skip) {
+    TriangleQuery q = query(g, origin, direction, t_min, t_max, skip);
+    RTCRay ray;
+    set_float_ray(ray, q);
+    rtcOccluded1(g.scene, &q.context, &ray);
+    return ray.tfar < 0.0f;
+}
+
+TriangleSurface triangle_surface(const TriangleGeometry& g, const TriangleHit& hit) {
+    TriangleSurface s;
+    const double w = 1.0 - hit.u - hit.v;
+    if (hit.id.instance == TriangleId::no_instance) {
+        const LooseTriangle& t = g.loose[hit.id.triangle];
+        s.geometric = glm::cross(t.corners[1] - t.corners[0], t.corners[2] - t.corners[0]);
+        s.uv = w * t.uvs[0] + hit.u * t.uvs[1] + hit.v * t.uvs[2];
+        return s;
+    }
+    const MeshInstance& instance = g.instances[hit.id.instance];
+    const Model& m = *g.models[instance.model]->model;
+    const auto& corners = m.triangles[hit.id.triangle];
+    const Vec3 a = corner(m, hit.id.triangle, 0);
+    s.geometric = instance.normal_matrix *
+                  glm::cross(corner(m, hit.id.triangle, 1) - a, corner(m, hit.id.triangle, 2) - a);
+    if (instance.smooth && !m.normals.empty()) {
+        const Vec3 na(m.normals[corners[0]]), nb(m.normals[corners[1]]), nc(m.normals[corners[2]]);
+        if (na != Vec3(0.0) && nb != Vec3(0.0) && nc != Vec3(0.0))
+            s.shading = instance.normal_matrix * (w * na + hit.u * nb + hit.v * nc);
+    }
+    if (!m.uvs.empty())
+        s.uv = w * glm::dvec2(m.uvs[corners[0]]) + hit.u * glm::dvec2(m.uvs[corners[1]]) +
+               hit.v * glm::dvec2(m.uvs[corners[2]]);
+    return s;
+}
+
+}  // namespace jt

@@ -1,0 +1,19 @@
+#pragma once
+// Each model file read once and shared: by the validator, which reports its
+// errors at the `file` string, and by every prepared scene and every instance
+// that uses it. A file whose size or modification time changed is read again.
+
+#include "jtracer/model_file.hpp"
+
+#include <filesystem>
+#include <memory>
+
+namespace jt {
+
+// read_model's result for (file, folder), from memory when an unchanged copy
+// is held. The few models used last stay held after their last user lets go,
+// so that validating a scene and then rendering it reads each file once.
+Expected<std::shared_ptr<const Model>> shared_model(const std::filesystem::path& file,
+                                                    const std::filesystem::path& folder);
+
+}  // namespace jt

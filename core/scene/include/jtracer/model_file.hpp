@@ -1,0 +1,51 @@
+#pragma once
+// Triangle models read from files for `mesh` (docs/language.md §13.5): OBJ,
+// PLY, STL, glTF 2.0 and anything else Assimp reads, reduced to what the
+// renderer uses: corner positions, the file's vertex normals and first set of
+// texture coordinates, and triangles fanned from each polygon's first vertex.
+//
+//   Expected<Model> model = read_model("scenes/models/bunny.ply", "scenes");
+//   if (!model) report(model.error().message);
+//
+// read_model is the one entry point that touches the file: a pure function of
+// the files it names. shared_model (model_cache.hpp) loads each file once.
+
+#include "jtracer/error.hpp"
+
+#include <glm/vec2.hpp>
+#include <glm/vec3.hpp>
+
+#include <array>
+#include <cstdint>
+#include <filesystem>
+#include <vector>
+
+namespace jt {
+
+// A model's object space is the file's coordinates after its own node
+// transforms (glTF). Vertex positions are single precision, as every model
+// format stores them; the renderer refines hits on them in double.
+struct Model {
+    std::vector<glm::vec3> positions;
+    // Parallel to positions, or empty when the file has none; a zero vector is
+    // a corner without a normal. STL's facet normals are not vertex normals.
+    std::vector<glm::vec3> normals;
+    std::vector<glm::vec2> uvs;  // parallel to positions, or empty
+    // Counter-clockwise seen from the front; none of zero area.
+    std::vector<std::array<std::uint32_t, 3>> triangles;
+};
+
+// Files larger than this are refused before any is read (the model file and
+// every file it refers to, each).
+inline constexpr std::uintmax_t kMaxModelFileBytes = std::uintmax_t{1} << 29;  // 512 MiB
+// Models with more triangles or vertices than this are refused.
+inline constexpr std::size_t kMaxModelTriangles = std::size_t{1} << 26;
+
+// Reads every triangle of `file`. Files it refers to (glTF buffers, OBJ
+// material libraries) are opened only inside `folder` (the scene's folder)
+// or, for a model outside it, inside the model's own folder; a reference
+// that leaves it is an error. A model with no triangle of non-zero area is
+// not an error: its triangle list is empty.
+Expected<Model> read_model(const std::filesystem::path& file, const std::filesystem::path& folder);
+
+}  // namespace jt

@@ -1,0 +1,54 @@
+#include "io/confined_io_system.hpp"
+
+#include "jtracer/model_file.hpp"
+
+#include <system_error>
+
+namespace jt {
+
+namespace {
+
+// Whether `path` is `folder` or lies below it; both canonical.
+bool inside(const std::filesystem::path& path, const std::filesystem::path& folder) {
+    auto p = path.begin();
+    for (auto f = folder.begin(); f != folder.end(); ++f, ++p)
+        if (p == path.end() || *p != *f) return false;
+    return true;
+}
+
+}  // namespace
+
+ConfinedIOSystem::ConfinedIOSystem(std::filesystem::path folder) {
+    std::error_code error;
+    folder_ = std::filesystem::weakly_canonical(std::filesystem::absolute(folder, error), error);
+}
+
+bool ConfinedIOSystem::allowed(const char* file) const {
+    std::error_code error;
+    const std::filesystem::path path =
+        std::filesystem::weakly_canonical(std::filesystem::absolute(file, error), error);
+    std::string why;
+    if (error || folder_.empty() || !inside(path, folder_)) {
+        why.append("it refers to '").append(file).append("', outside the folder '");
+        why.append(folder_.string()).append("'");
+    } else if (const std::uintmax_t size = std::filesystem::file_size(path, error);
+               !error && size > kMaxModelFileBytes) {
+        why.append("'").append(file).append("' is too large (").append(std::to_string(size));
+        why.append(" bytes; at most ").append(std::to_string(kMaxModelFileBytes)).append(")");
+    }
+    if (why.empty()) return true;
+    if (refusal_.empty()) refusal_ = std::move(why);
+    return false;
+}
+
+bool ConfinedIOSystem::Exists(const char* file) const {
+    return allowed(file) && DefaultIOSystem::Exists(file);
+}
+
+Assimp::IOStream* ConfinedIOSystem::Open(const char* file, const char* mode) {
+    // Reading only: a model never writes.
+    if (std::string(mode).find_first_of("wa+") != std::string::npos) return nullptr;
+    return allowed(file) ? DefaultIOSystem::Open(file, mode) : nullptr;
+}
+
+}  // namespace jt

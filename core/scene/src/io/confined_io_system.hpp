@@ -1,0 +1,33 @@
+#pragma once
+// The files a model may open: Assimp's default file access, refused for any
+// path outside one folder (after resolving `..` and symbolic links) and for
+// any file over kMaxModelFileBytes. A hostile model cannot read /etc/passwd
+// through a glTF buffer URI or an OBJ `mtllib ../../x`.
+
+#include <assimp/DefaultIOSystem.h>
+
+#include <filesystem>
+#include <string>
+
+namespace jt {
+
+class ConfinedIOSystem : public Assimp::DefaultIOSystem {
+  public:
+    explicit ConfinedIOSystem(std::filesystem::path folder);
+
+    bool Exists(const char* file) const override;
+    Assimp::IOStream* Open(const char* file, const char* mode = "rb") override;
+
+    // Why the first refused file was refused ("" when none was): the import
+    // may have gone on without it, but its result is not used.
+    const std::string& refusal() const { return refusal_; }
+
+  private:
+    // True when `file` may be opened; else keeps why not as the refusal.
+    bool allowed(const char* file) const;
+
+    std::filesystem::path folder_;  // canonical
+    mutable std::string refusal_;   // Exists is const in Assimp's interface
+};
+
+}  // namespace jt

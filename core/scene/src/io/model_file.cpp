@@ -1,0 +1,216 @@
+#include "jtracer/model_file.hpp"
+
+#include "io/confined_io_system.hpp"
+#include "io/file_bytes.hpp"
+
+#include <assimp/scene.h>
+#include <assimp/Importer.hpp>
+#include <glm/geometric.hpp>
+#include <glm/mat3x3.hpp>
+#include <glm/mat4x4.hpp>
+#include <glm/matrix.hpp>
+
+#include <algorithm>
+#include <cctype>
+#include <cmath>
+#include <fstream>
+#include <memory>
+#include <sstream>
+#include <string>
+#include <system_error>
+#include <utility>
+#include <vector>
+
+namespace jt {
+
+namespace {
+
+std::string lower_extension(const std::filesystem::path& file) {
+    std::string ext = file.extension().string();
+    for (char& c : ext) c = static_cast<char>(std::tolower(static_cast<unsigned char>(c)));
+    return ext;
+}
+
+// A PLY header's element counts must fit in the file (each instance takes a
+// byte at least), so that a short file cannot make the reader reserve room
+// for billions. "" when they do.
+std::string ply_count_problem(const std::filesystem::path& file, std::uintmax_t size) {
+    std::ifstream in(file, std::ios::binary);
+    std::string line;
+    if (!std::getline(in, line) || line.rfind("ply", 0) != 0) return "";
+    for (int lines = 0; lines < 10000 && std::getline(in, line); ++lines) {
+        if (line.rfind("end_header", 0) == 0) return "";
+        std::istringstream words(line);
+        std::string keyword, name;
+        double count = 0.0;
+        if (!(words >> keyword) || keyword != "element") continue;
+        if (!(words >> name >> count)) return "a PLY element line without a count: " + line;
+        if (!(count <= static_cast<double>(size)))
+            return "its header claims " + line.substr(8) + ", more than the file's " +
+                   std::to_string(size) + " bytes can hold";
+    }
+    return "";
+}
+
+// Where the files a model refers to may be: the scene's folder when the
+// model lies in it, else the model's own folder.
+std::filesystem::path reference_folder(const std::filesystem::path& file,
+                                       const std::filesystem::path& folder) {
+    std::error_code error;
+    const auto model = std::filesystem::weakly_canonical(std::filesystem::absolute(file), error);
+    const auto scene = std::filesystem::weakly_canonical(
+        std::filesystem::absolute(folder.empty() ? "." : folder), error);
+    const auto relative = model.lexically_relative(scene);
+    if (!relative.empty() && *relative.begin() != "..") return scene;
+    return model.parent_path();
+}
+
+glm::dmat4 to_glm(const aiMatrix4x4& m) {
+    // Assimp's matrices are row-major, glm's column-major.
+    return glm::dmat4(m.a1, m.b1, m.c1, m.d1, m.a2, m.b2, m.c2, m.d2, m.a3, m.b3, m.c3, m.d3, m.a4,
+                      m.b4, m.c4, m.d4);
+}
+
+bool finite(const glm::vec3& v) {
+    return std::isfinite(v.x) && std::isfinite(v.y) && std::isfinite(v.z);
+}
+
+// The triangles of one aiMesh placed by `to_model`, fanned from each
+// polygon's first vertex; zero-area and broken ones are skipped.
+class ModelBuilder {
+  public:
+    explicit ModelBuilder(bool use_normals) : use_normals_(use_normals) {}
+
+    bool add(const aiMesh& mesh, const glm::dmat4& to_model, bool identity) {
+        const auto first = static_cast<std::uint32_t>(model_.positions.size());
+        if (model_.positions.size() + mesh.mNumVertices > kMaxModelTriangles) return false;
+        const glm::dmat3 normal_matrix = glm::transpose(glm::inverse(glm::dmat3(to_model)));
+        const bool normals = use_normals_ && mesh.mNormals;
+        const bool uvs = mesh.mTextureCoords[0] != nullptr;
+        if (normals && model_.normals.empty())
+            model_.normals.assign(model_.positions.size(), glm::vec3(0.0f));
+        if (uvs && model_.uvs.empty()) model_.uvs.assign(model_.positions.size(), glm::vec2(0.0f));
+        for (unsigned i = 0; i < mesh.mNumVertices; ++i) {
+            const aiVector3D& v = mesh.mVertices[i];
+            const glm::dvec3 p = identity ? glm::dvec3(v.x, v.y, v.z)
+                                          : glm::dvec3(to_model * glm::dvec4(v.x, v.y, v.z, 1.0));
+            model_.positions.emplace_back(p);
+            if (!model_.normals.empty()) {
+                glm::vec3 n(0.0f);
+                if (normals) {
+                    const aiVector3D& s = mesh.mNormals[i];
+                    n = identity ? glm::vec3(s.x, s.y, s.z)
+                                 : glm::vec3(normal_matrix * glm::dvec3(s.x, s.y, s.z));
+                    if (!finite(n)) n = glm::vec3(0.0f);
+                }
+                model_.normals.push_back(n);
+            }
+            if (!model_.uvs.empty()) {
+                glm::vec2 uv(0.0f);
+                if (uvs) uv = {mesh.mTextureCoords[0][i].x, mesh.mTextureCoords[0][i].y};
+                model_.uvs.push_back(uv);
+            }
+        }
+        for (unsigned f = 0; f < mesh.mNumFaces; ++f) {
+            const aiFace& face = mesh.mFaces[f];
+            if (face.mNumIndices < 3 || !face.mIndices) continue;  // points and lines
+            for (unsigned k = 2; k < face.mNumIndices; ++k) {
+                const unsigned a = face.mIndices[0], b = face.mIndices[k - 1], c = face.mIndices[k];
+                if (a >= mesh.mNumVertices || b >= mesh.mNumVertices || c >= mesh.mNumVertices)
+                    continue;
+                add_triangle({first + a, first + b, first + c});
+                if (model_.triangles.size() > kMaxModelTriangles) return false;
+            }
+        }
+        return true;
+    }
+
+    Model take() && { return std::move(model_); }
+
+  private:
+    void add_triangle(const std::array<std::uint32_t, 3>& corners) {
+        const glm::vec3 &a = model_.positions[corners[0]], &b = model_.positions[corners[1]],
+                        &c = model_.positions[corners[2]];
+        if (!finite(a) || !finite(b) || !finite(c)) return;
+        const glm::dvec3 normal =
+            glm::cross(glm::dvec3(b) - glm::dvec3(a), glm::dvec3(c) - glm::dvec3(a));
+        if (normal == glm::dvec3(0.0)) return;  // zero area: skipped silently
+        model_.triangles.push_back(corners);
+    }
+
+    bool use_normals_;
+    Model model_;
+};
+
+std::string too_many() {
+    return "the model has more than " + std::to_string(kMaxModelTriangles) +
+           " triangles or vertices";
+}
+
+// Every mesh of every node, each placed by its node's transform and its
+// parents'; an explicit stack, since a hostile file can nest nodes deeply.
+Expected<Model> gather(const aiScene& scene, bool use_normals) {
+    ModelBuilder builder(use_normals);
+    struct Pending {
+        const aiNode* node;
+        glm::dmat4 to_model;
+    };
+    std::vector<Pending> stack;
+    if (scene.mRootNode) {
+        stack.push_back({scene.mRootNode, to_glm(scene.mRootNode->mTransformation)});
+    } else {
+        for (unsigned m = 0; m < scene.mNumMeshes; ++m)
+            if (scene.mMeshes[m] && !builder.add(*scene.mMeshes[m], glm::dmat4(1.0), true))
+                return Error{too_many()};
+    }
+    std::size_t visited = 0;
+    while (!stack.empty()) {
+        const Pending at = stack.back();
+        stack.pop_back();
+        if (++visited > kMaxModelTriangles) return Error{"the model has too many nodes"};
+        const bool identity = at.to_model == glm::dmat4(1.0);
+        for (unsigned k = 0; k < at.node->mNumMeshes; ++k) {
+            const unsigned m = at.node->mMeshes[k];
+            if (m >= scene.mNumMeshes || !scene.mMeshes[m]) continue;
+            if (!builder.add(*scene.mMeshes[m], at.to_model, identity)) return Error{too_many()};
+        }
+        for (unsigned c = at.node->mNumChildren; c-- > 0;) {
+            const aiNode* child = at.node->mChildren[c];
+            if (child) stack.push_back({child, at.to_model * to_glm(child->mTransformation)});
+        }
+    }
+    return std::move(builder).take();
+}
+
+}  // namespace
+
+Expected<Model> read_model(const std::filesystem::path& file, const std::filesystem::path& folder) {
+    std::error_code error;
+    const auto status = std::filesystem::status(file, error);
+    if (error || !std::filesystem::exists(status))
+        return Error{"cannot read " + file_message(file, "No such file or directory")};
+    if (!std::filesystem::is_regular_file(status))
+        return Error{"cannot read " + file_message(file, "not a regular file")};
+    const std::uintmax_t size = std::filesystem::file_size(file, error);
+    if (error) return Error{"cannot read " + file_message(file, error.message())};
+    if (size > kMaxModelFileBytes)
+        return Error{file_message(file, "the model file is too large (" + std::to_string(size) +
+                                            " bytes; at most " +
+                                            std::to_string(kMaxModelFileBytes) + ")")};
+    if (std::string problem = ply_count_problem(file, size); !problem.empty())
+        return Error{file_message(file, problem)};
+    try {
+        Assimp::Importer importer;
+        auto* io = new ConfinedIOSystem(reference_folder(file, folder));
+        importer.SetIOHandler(io);  // the importer owns it
+        const aiScene* scene = importer.ReadFile(file.string(), 0);
+        if (!io->refusal().empty()) return Error{file_message(file, io->refusal())};
+        if (!scene) return Error{file_message(file, importer.GetErrorString())};
+        // STL's normals are one a facet, not a vertex (docs/language.md §13.5).
+        return gather(*scene, lower_extension(file) != ".stl");
+    } catch (const std::exception& e) {
+        return Error{file_message(file, std::string("cannot load the model: ") + e.what())};
+    }
+}
+
+}  // namespace jt
