@@ -10,17 +10,28 @@
 //   specular * (R.V)^specular_k -> phong, phong_size (POV-Ray's phong is a number:
 //                                  a coloured specular becomes its mean)
 //   reflection -> reflection, recurse_depth + 1 -> max_trace_level
+//   transmission, ior -> rgbt (transmit), interior { ior }
+//   checker -> checker; image_map on triangles and meshes -> uv_mapping image_map
+//   triangle, mesh -> mesh2 (the model's vertex normals when smooth, its UVs)
 // with no gamma anywhere (assumed_gamma 1; render with File_Gamma=1.0).
 
 #include "converter_cli.hpp"
 #include "jtracer/affine.hpp"
+#include "jtracer/model_cache.hpp"
+#include "jtracer/texture.hpp"
 #include "jtracer/validate.hpp"
 #include "render/camera_rays.hpp"
 
+#include <glm/geometric.hpp>
+
+#include <algorithm>
+#include <array>
 #include <cmath>
+#include <filesystem>
 #include <numbers>
 #include <string>
 #include <string_view>
+#include <vector>
 
 namespace {
 
@@ -32,7 +43,17 @@ double mean(const jt::Colour& c) {
     return (c.x + c.y + c.z) / 3.0;
 }
 
-void write_material(PovWriter& out, const jt::Material& m) {
+// POV-Ray's name of a picture's format, from its extension.
+std::string_view image_format(const std::string& file) {
+    const std::string ext = std::filesystem::path(file).extension().string();
+    if (ext == ".jpg" || ext == ".jpeg" || ext == ".JPG" || ext == ".JPEG") return "jpeg";
+    if (ext == ".bmp" || ext == ".BMP") return "sys";
+    return "png";
+}
+
+// `uv_mapped`: the object carries texture coordinates (mesh2), so an
+// image_map follows them; other shapes show their pigment instead.
+void write_material(PovWriter& out, const jt::Material& m, const jt::Scene& scene, bool uv_mapped) {
     // POV-Ray's diffuse is a number. A grey diffuse maps straight; a coloured
     // one is folded into the pigment, with the ambient scaled back so that
     // ambient * pigment is unchanged wherever the diffuse channel is not zero.
@@ -53,8 +74,14 @@ void write_material(PovWriter& out, const jt::Material& m) {
         else
             out.vector((std::string(prefix) + "rgb ").c_str(), c);
     };
-    out.printf(" texture { pigment { ");
-    if (m.checker) {
+    const bool image = !m.image_map.empty() && uv_mapped;
+    out.printf(image ? " texture { uv_mapping pigment { " : " texture { pigment { ");
+    if (image) {
+        // Bilinear, like JTracer's; the picture's bottom row is v = 0 in both.
+        const std::string path = std::filesystem::absolute(jt::asset_path(scene, m.image_map));
+        out.printf("image_map { %s \"%s\" interpolate 2 }", std::string(image_format(path)).c_str(),
+                   path.c_str());
+    } else if (m.checker) {
         // The mirrored z flips the parity of floor(z) off the cube faces: the
         // two colours swap places.
         colour("checker ", *m.checker);
@@ -85,7 +112,47 @@ void write_matrix(PovWriter& out, const jt::Affine& world) {
     out.printf("%.9g, %.9g, %.9g>", t.x, t.y, t.z);
 }
 
-void write_primitive(PovWriter& out, const jt::Primitive& p) {
+// A mesh2 of triangles: mirrored corners, the normals when given (smooth
+// shading), the texture coordinates when given.
+void write_mesh2(PovWriter& out, const std::vector<Vec3>& positions,
+                 const std::vector<Vec3>& normals, const std::vector<glm::dvec2>& uvs,
+                 const std::vector<std::array<std::uint32_t, 3>>& triangles) {
+    out.printf("mesh2 {\n vertex_vectors { %zu", positions.size());
+    for (const Vec3& v : positions) out.vector(", ", mirror(v));
+    out.printf(" }\n");
+    if (!normals.empty()) {
+        out.printf(" normal_vectors { %zu", normals.size());
+        for (const Vec3& n : normals) out.vector(", ", mirror(n));
+        out.printf(" }\n");
+    }
+    if (!uvs.empty()) {
+        out.printf(" uv_vectors { %zu", uvs.size());
+        for (const glm::dvec2& uv : uvs) out.printf(", <%.9g, %.9g>", uv.x, uv.y);
+        out.printf(" }\n");
+    }
+    out.printf(" face_indices { %zu", triangles.size());
+    for (const auto& t : triangles) out.printf(", <%u, %u, %u>", t[0], t[1], t[2]);
+    out.printf(" }\n");
+}
+
+// A mesh's model as mesh2; false when it cannot be read or holds nothing.
+bool write_model(PovWriter& out, const jt::Mesh& mesh, const jt::Scene& scene) {
+    auto model = jt::shared_model(jt::asset_path(scene, mesh.file), scene.asset_folder);
+    if (!model || (*model)->triangles.empty()) return false;
+    const jt::Model& m = **model;
+    std::vector<Vec3> positions(m.positions.begin(), m.positions.end()), normals;
+    std::vector<glm::dvec2> uvs(m.uvs.begin(), m.uvs.end());
+    // A corner without a normal makes its triangles flat in JTracer; POV-Ray
+    // takes one normal list for all, so such a model is written flat.
+    const bool smooth = mesh.shading == jt::kSmoothShading && !m.normals.empty() &&
+                        std::none_of(m.normals.begin(), m.normals.end(),
+                                     [](const glm::vec3& n) { return n == glm::vec3(0.0f); });
+    if (smooth) normals.assign(m.normals.begin(), m.normals.end());
+    write_mesh2(out, positions, normals, uvs, m.triangles);
+    return true;
+}
+
+void write_primitive(PovWriter& out, const jt::Primitive& p, const jt::Scene& scene) {
     // JTracer's own rule decides which primitives are left out.
     const auto placed = jt::object_transform(p.transforms);
     if (std::holds_alternative<jt::LeftOut>(placed)) return;
@@ -102,8 +169,18 @@ void write_primitive(PovWriter& out, const jt::Primitive& p) {
         out.printf(", %.9g", plane->distance);
     } else if (const auto* cylinder = std::get_if<jt::Cylinder>(&p.shape)) {
         out.printf("cylinder { <0, 0, 0>, <0, %.9g, 0>, %.9g", cylinder->height, cylinder->radius);
+    } else if (const auto* triangle = std::get_if<jt::Triangle>(&p.shape)) {
+        if (glm::cross(triangle->b - triangle->a, triangle->c - triangle->a) == Vec3(0.0)) return;
+        write_mesh2(
+            out, {triangle->a, triangle->b, triangle->c}, {},
+            {glm::dvec2(triangle->uv_a), glm::dvec2(triangle->uv_b), glm::dvec2(triangle->uv_c)},
+            {{0u, 1u, 2u}});
+    } else if (const auto* mesh = std::get_if<jt::Mesh>(&p.shape)) {
+        if (!write_model(out, *mesh, scene)) return;
     }
-    write_material(out, p.material);
+    const bool uv_mapped =
+        std::holds_alternative<jt::Triangle>(p.shape) || std::holds_alternative<jt::Mesh>(p.shape);
+    write_material(out, p.material, scene, uv_mapped);
     if (!p.transforms.empty()) write_matrix(out, world);
     out.printf(" }\n");
 }
@@ -139,7 +216,7 @@ std::string convert(const jt::Scene& scene, int camera_index) {
         out.vector(", rgb ", light.intensity);
         out.printf(" }\n");
     }
-    for (const jt::Primitive& p : scene.primitives) write_primitive(out, p);
+    for (const jt::Primitive& p : scene.primitives) write_primitive(out, p, scene);
     return out.text();
 }
 

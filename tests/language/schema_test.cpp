@@ -28,6 +28,11 @@ using test::brief;
 std::string allowed(const ValueRange& r) {
     if (r.nonzero) return "nonzero";
     if (r.nonempty) return "nonempty";
+    if (!r.choices.empty()) {
+        std::string out = "one of";
+        for (std::string_view c : r.choices) out += " " + std::string(c);
+        return out;
+    }
     if (!std::isfinite(r.low) && !std::isfinite(r.high)) return "any";
     std::string out = r.clamp_low ? "<" : r.low_open || !std::isfinite(r.low) ? "(" : "[";
     out += std::isfinite(r.low) ? number_text(r.low) : "-inf";
@@ -74,10 +79,10 @@ std::string describe_block() {
 // Written out by hand from the language's table, not from the schema: a
 // changed name, kind, default, range, unit or order in the schema fails here.
 TEST(Schema, MatchesTheLanguagesPropertyTable) {
-    std::string all = describe_block<RenderSettings>() + describe_block<Camera>() +
-                      describe_block<Sphere>() + describe_block<Plane>() +
-                      describe_block<Cylinder>() + describe_block<PointLight>() +
-                      describe_block<Material>();
+    std::string all =
+        describe_block<RenderSettings>() + describe_block<Camera>() + describe_block<Sphere>() +
+        describe_block<Plane>() + describe_block<Cylinder>() + describe_block<Triangle>() +
+        describe_block<Mesh>() + describe_block<PointLight>() + describe_block<Material>();
     for (const TransformOpSpec& op : transform_ops())
         all += describe("transform", op.property, false) + "\n";
     EXPECT_EQ(all,
@@ -101,6 +106,14 @@ TEST(Schema, MatchesTheLanguagesPropertyTable) {
               "plane.distance number 0 any\n"
               "cylinder.radius number 0.5 (0, inf)\n"
               "cylinder.height number 1 (0, inf)\n"
+              "triangle.a vector <0, 0, 0> any\n"
+              "triangle.b vector <1, 0, 0> any\n"
+              "triangle.c vector <0, 1, 0> any\n"
+              "triangle.uv_a vector <0, 0, 0> any omitted-when-default\n"
+              "triangle.uv_b vector <1, 0, 0> any omitted-when-default\n"
+              "triangle.uv_c vector <0, 1, 0> any omitted-when-default\n"
+              "mesh.file string \"\" nonempty\n"
+              "mesh.shading string \"smooth\" one of smooth flat omitted-when-default\n"
               "point_light.position vector <0, 0, 0> any\n"
               "point_light.intensity colour <0, 0, 0> <0, 1>\n"
               "material.pigment colour <0, 0, 0> <0, 1>\n"
@@ -159,6 +172,8 @@ TEST(Schema, EachPropertySetsItsOwnMemberOfItsKind) {
     expect_distinct_members<Sphere>();
     expect_distinct_members<Plane>();
     expect_distinct_members<Cylinder>();
+    expect_distinct_members<Triangle>();
+    expect_distinct_members<Mesh>();
     expect_distinct_members<PointLight>();
     expect_distinct_members<Material>();
 }

@@ -110,7 +110,7 @@ TEST(Structure, ErrorsAreAllReportedWithRecovery) {
               "2:32: error: 'center' takes a vector like <0, 1, 0>, got the number 3\n"
               "3:19: error: 'normal' must not be the zero vector, got <0, 0, 0>\n"
               "4:3: error: unknown block 'cube' in 'scene' (allowed: sphere, plane, cylinder, "
-              "point_light)");
+              "triangle, mesh, point_light)");
 }
 
 TEST(Structure, ErrorsAreCappedAtTwentyWithAFinalNote) {
@@ -125,8 +125,8 @@ TEST(Structure, ErrorsAreCappedAtTwentyWithAFinalNote) {
 
 TEST(Structure, PropertiesWhereOnlyBlocksGo) {
     EXPECT_EQ(brief("scene { radius: 1; }"),
-              "1:9: error: 'scene' holds only blocks (sphere, plane, cylinder, point_light), "
-              "not properties like 'radius'");
+              "1:9: error: 'scene' holds only blocks (sphere, plane, cylinder, triangle, mesh, "
+              "point_light), not properties like 'radius'");
     EXPECT_EQ(brief("cameras { fov: 1; }"),
               "1:11: error: 'cameras' holds only blocks (perspective_camera), not properties "
               "like 'fov'");
@@ -222,11 +222,11 @@ TEST(Structure, SeveralMaterialBlocksEachSetOnlyWhatTheyName) {
 
 TEST(Structure, LightsTakeNoMaterialOrTransform) {
     EXPECT_EQ(brief("scene { point_light { material { pigment: <1, 1, 1>; } } }"),
-              "1:23: error: a point_light takes no 'material' block: only sphere, plane and "
-              "cylinder do");
+              "1:23: error: a point_light takes no 'material' block: only sphere, plane, "
+              "cylinder, triangle and mesh do");
     EXPECT_EQ(brief("scene { point_light {\n transform { translate: <1, 1, 1>; }\n} }"),
-              "2:2: error: a point_light takes no 'transform' block: only sphere, plane and "
-              "cylinder do");
+              "2:2: error: a point_light takes no 'transform' block: only sphere, plane, "
+              "cylinder, triangle and mesh do");
 }
 
 TEST(Structure, ActiveCameraInsideACameraIsReadAsNameWithAWarning) {

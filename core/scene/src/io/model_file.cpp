@@ -87,15 +87,18 @@ class ModelBuilder {
         const glm::dmat3 normal_matrix = glm::transpose(glm::inverse(glm::dmat3(to_model)));
         const bool normals = use_normals_ && mesh.mNormals;
         const bool uvs = mesh.mTextureCoords[0] != nullptr;
-        if (normals && model_.normals.empty())
-            model_.normals.assign(model_.positions.size(), glm::vec3(0.0f));
-        if (uvs && model_.uvs.empty()) model_.uvs.assign(model_.positions.size(), glm::vec2(0.0f));
+        // The first mesh with normals (or UVs) gives the earlier ones zeros:
+        // corners without.
+        if (normals && !has_normals_) model_.normals.assign(first, glm::vec3(0.0f));
+        if (uvs && !has_uvs_) model_.uvs.assign(first, glm::vec2(0.0f));
+        has_normals_ = has_normals_ || normals;
+        has_uvs_ = has_uvs_ || uvs;
         for (unsigned i = 0; i < mesh.mNumVertices; ++i) {
             const aiVector3D& v = mesh.mVertices[i];
             const glm::dvec3 p = identity ? glm::dvec3(v.x, v.y, v.z)
                                           : glm::dvec3(to_model * glm::dvec4(v.x, v.y, v.z, 1.0));
             model_.positions.emplace_back(p);
-            if (!model_.normals.empty()) {
+            if (has_normals_) {
                 glm::vec3 n(0.0f);
                 if (normals) {
                     const aiVector3D& s = mesh.mNormals[i];
@@ -105,7 +108,7 @@ class ModelBuilder {
                 }
                 model_.normals.push_back(n);
             }
-            if (!model_.uvs.empty()) {
+            if (has_uvs_) {
                 glm::vec2 uv(0.0f);
                 if (uvs) uv = {mesh.mTextureCoords[0][i].x, mesh.mTextureCoords[0][i].y};
                 model_.uvs.push_back(uv);
@@ -139,6 +142,7 @@ class ModelBuilder {
     }
 
     bool use_normals_;
+    bool has_normals_ = false, has_uvs_ = false;
     Model model_;
 };
 

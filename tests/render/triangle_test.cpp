@@ -1,0 +1,233 @@
+// Triangles and meshes, worked out by hand from docs/language.md §13.5: the hit
+// point and barycentric UV of a triangle, smooth normals from known vertex
+// normals, the two-sided rule, the shadow rule, instancing, and watertight
+// edges and vertices of a closed mesh.
+
+#include "common/files.hpp"
+#include "common/scratch_dir.hpp"
+#include "render/prepared_scene.hpp"
+#include "render/ray_queries.hpp"
+#include "scene_builder.hpp"
+
+#include <gtest/gtest.h>
+#include <glm/geometric.hpp>
+
+#include <cmath>
+#include <random>
+
+namespace jt::test {
+namespace {
+
+Primitive triangle(const Vec3& a, const Vec3& b, const Vec3& c, const Material& m = {}) {
+    Triangle t;
+    t.a = a;
+    t.b = b;
+    t.c = c;
+    return Primitive{t, m, {}};
+}
+
+Primitive mesh(const std::filesystem::path& file, const Material& m = {},
+               std::string_view shading = kSmoothShading) {
+    return Primitive{Mesh{file.string(), std::string(shading)}, m, {}};
+}
+
+// The triangle z = -2 with corners (-1,-1), (1,-1), (-1,1): the ray from the
+// origin along (0.2, -0.4, -1) meets it at t = 2, at (0.4, -0.8, -2), where
+// p = a + u (b - a) + v (c - a) gives u = 0.7, v = 0.1.
+TEST(Triangles, HitAtAKnownPointWithBarycentricUv) {
+    Scene s = scene_with_camera(camera_at({0, 0, 0}, {0, 0, -1}));
+    Primitive p = triangle({-1, -1, -2}, {1, -1, -2}, {-1, 1, -2});
+    auto& t = std::get<Triangle>(p.shape);
+    t.uv_a = {0.5, 0.5, 0};
+    t.uv_b = {1.5, 0.5, 0};
+    t.uv_c = {0.5, 2.5, 0};
+    s.primitives.push_back(p);
+    auto prepared = prepare_scene(s).value();
+    Hit hit;
+    ASSERT_TRUE(closest_hit(*prepared->geometry, {0, 0, 0}, {0.2, -0.4, -1}, 0.0, hit));
+    EXPECT_NEAR(hit.t, 2.0, 1e-14);
+    const Vec3 n = glm::normalize(hit.normal);
+    EXPECT_NEAR(n.z, 1.0, 1e-15);  // cross(b - a, c - a): counter-clockwise from the front
+    // uv = w uv_a + u uv_b + v uv_c with w = 0.2.
+    EXPECT_NEAR(hit.uv.x, 0.2 * 0.5 + 0.7 * 1.5 + 0.1 * 0.5, 1e-14);
+    EXPECT_NEAR(hit.uv.y, 0.2 * 0.5 + 0.7 * 0.5 + 0.1 * 2.5, 1e-14);
+    // Outside the triangle (u + v > 1): no hit.
+    EXPECT_FALSE(closest_hit(*prepared->geometry, {0, 0, 0}, {0.5, 0.6, -2}, 0.0, hit));
+}
+
+TEST(Triangles, ZeroAreaAndZeroScaleTrianglesAreLeftOut) {
+    Scene s = scene_with_camera(camera_at({0, 0, 0}, {0, 0, -1}));
+    s.primitives.push_back(triangle({-1, -1, -2}, {1, 1, -2}, {2, 2, -2}));
+    Primitive flattened = triangle({-1, -1, -2}, {1, -1, -2}, {-1, 1, -2});
+    flattened.transforms = {scale({1, 1, 0})};
+    s.primitives.push_back(flattened);
+    auto prepared = prepare_scene(s).value();
+    Hit hit;
+    EXPECT_FALSE(closest_hit(*prepared->geometry, {0, 0, 0}, {-0.1, -0.1, -1}, 0.0, hit));
+}
+
+// One triangle in an OBJ file with a normal at each corner, seen head-on from
+// a 1x1 camera whose ray hits (0, 0, -2); the light sits at the camera.
+std::filesystem::path facing_triangle(const std::filesystem::path& dir,
+                                      const std::string& normals) {
+    const auto file = dir / "t.obj";
+    write_file(file, "v -1 -1 -2\nv 3 -1 -2\nv -1 3 -2\n" + normals + "f 1//1 2//2 3//3\n");
+    return file;
+}
+
+Scene lit_head_on(const std::filesystem::path& model, std::string_view shading) {
+    Scene s = scene_with_camera(camera_at({0, 0, 0}, {0, 0, -1}));
+    s.primitives.push_back(mesh(model, matte(Colour(1.0)), shading));
+    s.lights.push_back({{0, 0, 0}, Colour(1.0)});
+    return s;
+}
+
+TEST(Triangles, SmoothNormalIsTheBarycentricBlendOfTheVertexNormals) {
+    ScratchDir dir;
+    // At (0, 0, -2): u = v = 0.25, w = 0.5. Blend of (0,0,1), (1,0,0), (0,1,0):
+    // (0.25, 0.25, 0.5) / |..| = (1, 1, 2) / sqrt(6); L = +z, so the diffuse term
+    // is 2 / sqrt(6).
+    const auto model = facing_triangle(dir.path(), "vn 0 0 1\nvn 1 0 0\nvn 0 1 0\n");
+    auto prepared = prepare_scene(lit_head_on(model, kSmoothShading)).value();
+    Hit hit;
+    ASSERT_TRUE(closest_hit(*prepared->geometry, {0, 0, 0}, {0, 0, -1}, 0.0, hit));
+    const Vec3 n = glm::normalize(hit.shading);
+    EXPECT_NEAR(n.x, 1 / std::sqrt(6.0), 1e-7);
+    EXPECT_NEAR(n.y, 1 / std::sqrt(6.0), 1e-7);
+    EXPECT_NEAR(n.z, 2 / std::sqrt(6.0), 1e-7);
+    EXPECT_EQ(at(render(lit_head_on(model, kSmoothShading)), 0, 0),
+              expected(Colour(2 / std::sqrt(6.0))));
+    // Flat shading uses the geometric normal: the full light.
+    EXPECT_EQ(at(render(lit_head_on(model, kFlatShading)), 0, 0), expected(Colour(1.0)));
+}
+
+TEST(Triangles, TwoSidedRuleTurnsTheSmoothNormalToTheFacingSide) {
+    ScratchDir dir;
+    // Stored normals pointing away from the camera, tilted: (0.6, 0, -0.8).
+    // Ng faces the camera (+z); N turns to its side: (-0.6, 0, 0.8), so the
+    // diffuse term for L = +z is 0.8.
+    const auto model = facing_triangle(dir.path(), "vn 0.6 0 -0.8\nvn 0.6 0 -0.8\nvn 0.6 0 -0.8\n");
+    EXPECT_EQ(at(render(lit_head_on(model, kSmoothShading)), 0, 0), expected(Colour(0.8)));
+    // From behind, Ng turns to -z and N = (0.6, 0, -0.8): the same 0.8.
+    Scene behind = lit_head_on(model, kSmoothShading);
+    behind.cameras[0] = camera_at({0, 0, -4}, {0, 0, -1});
+    behind.lights[0].position = {0, 0, -4};
+    EXPECT_EQ(at(render(behind), 0, 0), expected(Colour(0.8)));
+}
+
+// A smooth normal facing a light the flat face turns away from: the light is
+// blocked only by surfaces other than the triangle that holds the point.
+TEST(Triangles, ALightBehindTheFaceButBeforeTheSmoothNormalIsNotBlockedByItsOwnTriangle) {
+    ScratchDir dir;
+    const auto model = facing_triangle(dir.path(), "vn 0.8 0 0.6\nvn 0.8 0 0.6\nvn 0.8 0 0.6\n");
+    Scene s = lit_head_on(model, kSmoothShading);
+    // From (0,0,-2) toward (10, 0, -3): L = (10, 0, -1)/|..|, behind the face
+    // (dot(Ng, L) < 0), in front of N: dot(N, L) = (8 - 0.6) / sqrt(101).
+    s.lights[0].position = {10, 0, -3};
+    EXPECT_EQ(at(render(s), 0, 0), expected(Colour(7.4 / std::sqrt(101.0))));
+    // Another surface in the way still blocks it.
+    s.primitives.push_back(sphere({5, 0, -2.5}, 0.5, matte(Colour(1.0))));
+    EXPECT_EQ(at(render(s), 0, 0), (Rgb{0, 0, 0}));
+}
+
+TEST(Triangles, InstancesShareOneModelAndFollowTheirTransforms) {
+    ScratchDir dir;
+    const auto model = facing_triangle(dir.path(), "");
+    Scene s = scene_with_camera(camera_at({0, 0, 0}, {0, 0, -1}));
+    for (int i = 0; i < 100; ++i) {
+        Primitive p = mesh(model, glowing(Colour(1.0)));
+        p.transforms = {translate({10.0 * i, 0, 0})};
+        s.primitives.push_back(p);
+    }
+    auto prepared = prepare_scene(s).value();
+    const TriangleGeometry& t = *prepared->geometry->triangles;
+    EXPECT_EQ(t.models.size(), 1u);
+    EXPECT_EQ(t.instances.size(), 100u);
+    Hit hit;
+    ASSERT_TRUE(closest_hit(*prepared->geometry, {990, 0, 0}, {0, 0, -1}, 0.0, hit));
+    EXPECT_EQ(hit.source, 99u);
+    EXPECT_NEAR(hit.t, 2.0, 1e-12);
+}
+
+// The octahedron with corners at +-1 on each axis, as an OBJ.
+std::filesystem::path octahedron(const std::filesystem::path& dir) {
+    const auto file = dir / "octahedron.obj";
+    write_file(file,
+               "v 1 0 0\nv -1 0 0\nv 0 1 0\nv 0 -1 0\nv 0 0 1\nv 0 0 -1\n"
+               "f 1 3 5\nf 3 2 5\nf 2 4 5\nf 4 1 5\nf 3 1 6\nf 2 3 6\nf 4 2 6\nf 1 4 6\n");
+    return file;
+}
+
+// Rays aimed exactly at every shared vertex and edge midpoint of a closed
+// mesh, from many directions that enter the solid there, never slip through.
+TEST(Triangles, RaysThroughSharedEdgesAndVerticesNeverMiss) {
+    ScratchDir dir;
+    Scene s = scene_with_camera(camera_at({0, 0, 0}, {0, 0, -1}));
+    s.primitives.push_back(mesh(octahedron(dir.path())));
+    Primitive turned = mesh(octahedron(dir.path()));
+    turned.transforms = {rotate(TransformKind::yrotate, 30), translate({5, 0, 0})};
+    s.primitives.push_back(turned);
+    auto prepared = prepare_scene(s).value();
+    const std::vector<Vec3> corners{{1, 0, 0},  {-1, 0, 0}, {0, 1, 0},
+                                    {0, -1, 0}, {0, 0, 1},  {0, 0, -1}};
+    std::vector<Vec3> targets = corners;
+    for (std::size_t i = 0; i < corners.size(); ++i)
+        for (std::size_t j = i + 1; j < corners.size(); ++j)
+            if (corners[i] != -corners[j]) targets.push_back(0.5 * (corners[i] + corners[j]));
+    ASSERT_EQ(targets.size(), 18u);
+    std::mt19937 rng(3);
+    // Within 23 degrees of the outward direction: inside the 35-degree cone of
+    // solid at a vertex and the wider wedge at an edge, so every ray enters.
+    std::uniform_real_distribution<double> tilt(-0.25, 0.25);
+    const double c = std::cos(M_PI / 6), sn = std::sin(M_PI / 6);
+    auto turn = [&](const Vec3& v) { return Vec3{c * v.x + sn * v.z, v.y, -sn * v.x + c * v.z}; };
+    int misses = 0, rays = 0;
+    for (int k = 0; k < 300; ++k) {
+        for (const Vec3& target : targets) {
+            const Vec3 out =
+                glm::normalize(glm::normalize(target) + Vec3(tilt(rng), tilt(rng), tilt(rng)));
+            Hit hit;
+            const Vec3 from = target + 7.0 * out;
+            ++rays;
+            if (!closest_hit(*prepared->geometry, from, target - from, 0.0, hit)) ++misses;
+            // The turned copy: the same points through its transform.
+            const Vec3 placed = turn(target) + Vec3(5, 0, 0);
+            const Vec3 origin = placed + 7.0 * turn(out);
+            ++rays;
+            if (!closest_hit(*prepared->geometry, origin, placed - origin, 0.0, hit)) ++misses;
+        }
+    }
+    EXPECT_EQ(misses, 0) << "of " << rays;
+}
+
+// A ray leaving a mesh's surface never meets it again at its start (no acne):
+// a lit sphere-like mesh renders no dark specks where the light faces it.
+TEST(Triangles, SecondaryRaysDoNotMeetTheirOwnSurface) {
+    ScratchDir dir;
+    Scene s = scene_with_camera(camera_at({0, 0, 6}, {0, 0, 0}), 64, 64);
+    s.primitives.push_back(mesh(octahedron(dir.path()), matte(Colour(1.0)), kFlatShading));
+    s.lights.push_back({{0, 0, 100}, Colour(1.0)});
+    const Image8 image = render(s);
+    // The octahedron's outline is a diamond about 13 pixels from the centre to
+    // a corner; every pixel well inside it sees a face turned toward the light.
+    int dark = 0, lit = 0;
+    for (int y = 0; y < 64; ++y)
+        for (int x = 0; x < 64; ++x) {
+            const Rgb c = at(image, x, y);
+            if (c.r > 0) ++lit;
+            if (c.r == 0 && std::abs(x - 31.5) + std::abs(y - 31.5) < 11) ++dark;
+        }
+    EXPECT_GT(lit, 250);
+    EXPECT_EQ(dark, 0);
+}
+
+TEST(Triangles, AMissingModelFailsPreparation) {
+    Scene s = scene_with_camera(camera_at({0, 0, 0}, {0, 0, -1}));
+    s.primitives.push_back(mesh("/nonexistent/model.obj"));
+    auto prepared = prepare_scene(s);
+    ASSERT_FALSE(prepared.has_value());
+    EXPECT_NE(prepared.error().message.find("model.obj"), std::string::npos);
+}
+
+}  // namespace
+}  // namespace jt::test
