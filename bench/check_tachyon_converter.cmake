@@ -4,12 +4,8 @@
 # distinct material. Also checks that a primitive Tachyon has no shape for (the
 # showcase's ellipsoid) is a located error (exit 1), that a missing scene is an
 # I/O error (exit 3), and that neither writes anything.
-execute_process(COMMAND ${CONVERTER} ${SCENE} ${OUT} RESULT_VARIABLE status)
-if(NOT status EQUAL 0)
-    message(FATAL_ERROR "jts-to-tachyon failed on ${SCENE}: ${status}")
-endif()
-file(READ ${OUT} converted)
-include(${CMAKE_CURRENT_LIST_DIR}/expect_count.cmake)
+include(${CMAKE_CURRENT_LIST_DIR}/converter_check.cmake)
+convert(${SCENE} ${OUT})
 expect_count("\nBEGIN_SCENE\n" 1)
 expect_count("\nEND_SCENE\n" 1)
 expect_count("\nRESOLUTION 240 160\n" 1)
@@ -37,8 +33,4 @@ if(NOT status EQUAL 1 OR NOT message MATCHES "showcase.jts:[0-9]+:[0-9]+: error:
    OR EXISTS ${OUT}.showcase)
     message(FATAL_ERROR "an ellipsoid should be exit 1 with a located message: ${status} ${message}")
 endif()
-execute_process(COMMAND ${CONVERTER} ${SCENE}.missing ${OUT}.missing RESULT_VARIABLE status
-                ERROR_VARIABLE message)
-if(NOT status EQUAL 3 OR NOT message MATCHES "cannot read" OR EXISTS ${OUT}.missing)
-    message(FATAL_ERROR "a missing scene should be exit 3 with a message: ${status} ${message}")
-endif()
+expect_missing_scene_fails(${SCENE} ${OUT})

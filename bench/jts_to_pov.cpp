@@ -77,9 +77,9 @@ void write_material(PovWriter& out, const jt::Material& m, const jt::Scene& scen
     const bool image = !m.image_map.empty() && uv_mapped;
     out.printf(image ? " texture { uv_mapping pigment { " : " texture { pigment { ");
     if (image) {
-        // Bilinear, like JTracer's; the picture's bottom row is v = 0 in both.
+        // Bilinear and linear (gamma 1), like JTracer's; the bottom row is v = 0 in both.
         const std::string path = std::filesystem::absolute(jt::asset_path(scene, m.image_map));
-        out.printf("image_map { %s \"%s\" interpolate 2 }", std::string(image_format(path)).c_str(),
+        out.printf("image_map { %s \"%s\" gamma 1.0 interpolate 2 }", std::string(image_format(path)).c_str(),
                    path.c_str());
     } else if (m.checker) {
         // The mirrored z flips the parity of floor(z) off the cube faces: the

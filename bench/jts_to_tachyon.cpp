@@ -162,8 +162,8 @@ std::variant<std::string, jt::Diagnostic> convert(const jt::LoadedScene& loaded)
         if (i < loaded.parsed.source.primitives.size())
             pos = loaded.parsed.source.primitives[i].keyword_span.pos;
         return jt::Diagnostic{jt::Severity::error, pos,
-                              "Tachyon cannot show this primitive: its transform is not a "
-                              "rotation and a uniform scale"};
+                              "Tachyon cannot show this primitive: it is a triangle or mesh, or "
+                              "its transform is not a rotation and a uniform scale"};
     }
     const Textures textures(scene, out);
     write_shapes(out, shapes, textures);

@@ -37,7 +37,8 @@ struct WorldShapes {
     std::vector<WorldCylinder> cylinders;
     std::vector<WorldPlane> planes;
     // The first primitive that is neither left out nor a plain shape in world
-    // space (an ellipsoid, an elliptic cylinder), if any; it is not in the lists.
+    // space (an ellipsoid, an elliptic cylinder, a triangle or mesh), if any; it is
+    // not in the lists.
     std::optional<std::size_t> first_unplaceable;
 };
 
@@ -58,7 +59,10 @@ inline WorldShapes world_shapes(const Scene& scene) {
             continue;
         }
         auto scale = similarity_scale(world.linear);
-        if (!scale) {
+        // Triangles and meshes are not among the shapes these tools compare.
+        const bool triangles =
+            std::holds_alternative<Triangle>(p.shape) || std::holds_alternative<Mesh>(p.shape);
+        if (!scale || triangles) {
             if (!shapes.first_unplaceable) shapes.first_unplaceable = i;
             continue;
         }

@@ -55,14 +55,13 @@ class SceneGenerator {
         const int primitives = chance(0.25) ? integer(9, 30) : integer(2, 8);
         int planes = 0;
         for (int i = 0; i < primitives; ++i) {
-            Primitive p;
             const double kind = uniform(0, 1);
-            if (kind < 0.15 && planes < 2) {
-                p.shape = Plane{};
-                ++planes;
-            } else if (kind < 0.5) {
-                p.shape = Cylinder{};
-            }
+            // Built with its shape: assigning one over a default Sphere makes
+            // GCC 12 warn falsely about the Mesh alternative's string.
+            const bool plane = kind < 0.15 && planes < 2;
+            if (plane) ++planes;
+            Primitive p{plane ? Shape(Plane{}) : kind < 0.5 ? Shape(Cylinder{}) : Shape(Sphere{}),
+                        {}, {}};
             p.material = material();
             p.transforms = transforms();
             if (reference::flattened(p.transforms)) ++out.flattened;
