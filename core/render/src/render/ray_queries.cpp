@@ -2,6 +2,7 @@
 
 #include "geometry/bounds.hpp"
 #include "geometry/intersect.hpp"
+#include "render/float_ray.hpp"
 
 #include <glm/geometric.hpp>
 
@@ -16,7 +17,6 @@ namespace jt {
 namespace {
 
 constexpr std::uint32_t no_source = std::numeric_limits<std::uint32_t>::max();
-constexpr float float_infinity = std::numeric_limits<float>::infinity();
 
 // A direction table cell with more shapes than this leaves the ray to the BVH:
 // testing each costs more than Embree's walk past most of them.
@@ -48,32 +48,6 @@ struct OcclusionQuery {
     OccluderHint blocker;  // what blocked the ray, once something did
 };
 
-// Neighbours of non-negative finite numbers by their bit patterns: the library
-// nextafter is a call per ray and showed in profiles.
-float float_above(float f) {
-    if (f == 0.0f) return std::numeric_limits<float>::denorm_min();
-    return std::bit_cast<float>(std::bit_cast<std::uint32_t>(f) + 1u);
-}
-
-float float_down(double x) {
-    if (!(x > 0.0)) return 0.0f;
-    if (x >= static_cast<double>(std::numeric_limits<float>::max()))
-        return std::numeric_limits<float>::max();
-    float f = static_cast<float>(x);
-    if (static_cast<double>(f) > x) f = std::bit_cast<float>(std::bit_cast<std::uint32_t>(f) - 1u);
-    return f;
-}
-
-// One float step above too, so that Embree's own rounding of box entry
-// distances cannot cull a box that holds an equally near exact hit.
-float float_up(double x) {
-    if (!(x > 0.0)) return float_above(0.0f);
-    if (!(x < static_cast<double>(std::numeric_limits<float>::max()))) return float_infinity;
-    float f = static_cast<float>(x);
-    if (static_cast<double>(f) < x) f = float_above(f);
-    return float_above(f);
-}
-
 // Up to and including `t`, for the tie rule.
 double just_beyond(double t) {
     if (!(t < no_hit)) return t;
@@ -84,22 +58,6 @@ double just_beyond(double t) {
 
 bool better(double t, std::uint32_t source, const ClosestQuery& q) {
     return t < q.t || (t == q.t && source < q.source);
-}
-
-void set_float_ray(RTCRay& ray, const Vec3& origin, const Vec3& direction, double t_min,
-                   double t_max) {
-    ray.org_x = static_cast<float>(origin.x);
-    ray.org_y = static_cast<float>(origin.y);
-    ray.org_z = static_cast<float>(origin.z);
-    ray.dir_x = static_cast<float>(direction.x);
-    ray.dir_y = static_cast<float>(direction.y);
-    ray.dir_z = static_cast<float>(direction.z);
-    ray.tnear = float_down(t_min);
-    ray.tfar = float_up(t_max);
-    ray.time = 0.0f;
-    ray.mask = 0xFFFFFFFFu;
-    ray.id = 0;
-    ray.flags = 0;
 }
 
 double shape_distance(const TransformedShape& s, const Vec3& origin, const Vec3& direction,

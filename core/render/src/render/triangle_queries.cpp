@@ -1,6 +1,7 @@
 #include "render/triangle_queries.hpp"
 
 #include "geometry/intersect.hpp"
+#include "render/float_ray.hpp"
 
 #include <glm/geometric.hpp>
 
@@ -20,38 +21,6 @@ struct TriangleQuery {
     double t_min, t_max;
     TriangleId skip;
 };
-
-float float_down(double x) {
-    if (!(x > 0.0)) return 0.0f;
-    if (x >= static_cast<double>(std::numeric_limits<float>::max()))
-        return std::numeric_limits<float>::max();
-    const float f = static_cast<float>(x);
-    return static_cast<double>(f) > x ? std::nextafter(f, 0.0f) : f;
-}
-
-// Two float steps above: Embree's own rounding must not cull a triangle whose
-// exact hit lies just inside t_max.
-float float_up(double x) {
-    if (!(x < static_cast<double>(std::numeric_limits<float>::max())))
-        return std::numeric_limits<float>::infinity();
-    const float inf = std::numeric_limits<float>::infinity();
-    return std::nextafter(std::nextafter(static_cast<float>(x), inf), inf);
-}
-
-void set_float_ray(RTCRay& ray, const TriangleQuery& q) {
-    ray.org_x = static_cast<float>(q.origin.x);
-    ray.org_y = static_cast<float>(q.origin.y);
-    ray.org_z = static_cast<float>(q.origin.z);
-    ray.dir_x = static_cast<float>(q.direction.x);
-    ray.dir_y = static_cast<float>(q.direction.y);
-    ray.dir_z = static_cast<float>(q.direction.z);
-    ray.tnear = float_down(q.t_min);
-    ray.tfar = float_up(q.t_max);
-    ray.time = 0.0f;
-    ray.mask = 0xFFFFFFFFu;
-    ray.id = 0;
-    ray.flags = 0;
-}
 
 Vec3 corner(const Model& m, std::uint32_t triangle, int k) {
     return Vec3(m.positions[m.triangles[triangle][k]]);
@@ -113,7 +82,7 @@ bool closest_triangle(const TriangleGeometry& g, const Vec3& origin, const Vec3&
                       double t_min, double t_max, TriangleHit& hit, TriangleId skip) {
     TriangleQuery q = query(g, origin, direction, t_min, t_max, skip);
     RTCRayHit rayhit;
-    set_float_ray(rayhit.ray, q);
+    set_float_ray(rayhit.ray, origin, direction, t_min, t_max);
     rayhit.hit.geomID = RTC_INVALID_GEOMETRY_ID;
     rayhit.hit.primID = RTC_INVALID_GEOMETRY_ID;
     rayhit.hit.instID[0] = RTC_INVALID_GEOMETRY_ID;
@@ -136,7 +105,7 @@ bool triangle_blocks(const TriangleGeometry& g, const Vec3& origin, const Vec3& 
                      double t_min, double t_max, TriangleId skip) {
     TriangleQuery q = query(g, origin, direction, t_min, t_max, skip);
     RTCRay ray;
-    set_float_ray(ray, q);
+    set_float_ray(ray, origin, direction, t_min, t_max);
     rtcOccluded1(g.scene, &q.context, &ray);
     return ray.tfar < 0.0f;
 }

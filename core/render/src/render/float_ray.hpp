@@ -1,0 +1,60 @@
+#pragma once
+// The float copy of a double ray that Embree walks its BVHs with, and the
+// float bounds that keep it conservative: Embree only culls, and its float
+// range must hold every exact hit in the double range.
+
+#include "jtracer/scene.hpp"
+
+#include <embree3/rtcore.h>
+
+#include <bit>
+#include <cstdint>
+#include <limits>
+
+namespace jt {
+
+inline constexpr float float_infinity = std::numeric_limits<float>::infinity();
+
+// Neighbours of non-negative finite numbers by their bit patterns: the library
+// nextafter is a call per ray and showed in profiles.
+inline float float_above(float f) {
+    if (f == 0.0f) return std::numeric_limits<float>::denorm_min();
+    return std::bit_cast<float>(std::bit_cast<std::uint32_t>(f) + 1u);
+}
+
+inline float float_down(double x) {
+    if (!(x > 0.0)) return 0.0f;
+    if (x >= static_cast<double>(std::numeric_limits<float>::max()))
+        return std::numeric_limits<float>::max();
+    float f = static_cast<float>(x);
+    if (static_cast<double>(f) > x) f = std::bit_cast<float>(std::bit_cast<std::uint32_t>(f) - 1u);
+    return f;
+}
+
+// One float step above too, so that Embree's own rounding of box entry
+// distances cannot cull a box that holds an equally near exact hit.
+inline float float_up(double x) {
+    if (!(x > 0.0)) return float_above(0.0f);
+    if (!(x < static_cast<double>(std::numeric_limits<float>::max()))) return float_infinity;
+    float f = static_cast<float>(x);
+    if (static_cast<double>(f) < x) f = float_above(f);
+    return float_above(f);
+}
+
+inline void set_float_ray(RTCRay& ray, const Vec3& origin, const Vec3& direction, double t_min,
+                          double t_max) {
+    ray.org_x = static_cast<float>(origin.x);
+    ray.org_y = static_cast<float>(origin.y);
+    ray.org_z = static_cast<float>(origin.z);
+    ray.dir_x = static_cast<float>(direction.x);
+    ray.dir_y = static_cast<float>(direction.y);
+    ray.dir_z = static_cast<float>(direction.z);
+    ray.tnear = float_down(t_min);
+    ray.tfar = float_up(t_max);
+    ray.time = 0.0f;
+    ray.mask = 0xFFFFFFFFu;
+    ray.id = 0;
+    ray.flags = 0;
+}
+
+}  // namespace jt
