@@ -221,6 +221,23 @@ TEST(Triangles, SecondaryRaysDoNotMeetTheirOwnSurface) {
     EXPECT_EQ(dark, 0);
 }
 
+// Preparing again after the model file changed reads it again; an unchanged
+// one keeps the previous geometry.
+TEST(Triangles, AChangedModelFileIsReadAgainWhenPreparedAgain) {
+    ScratchDir dir;
+    const auto model = facing_triangle(dir.path(), "");
+    const Scene s = lit_head_on(model, kFlatShading);
+    auto first = prepare_scene(s).value();
+    auto same = prepare_scene(s, first).value();
+    EXPECT_EQ(same->geometry, first->geometry);
+    write_file(model, "v -1 -1 -3\nv 3 -1 -3\nv -1 3 -3\nv 0 0 -9\nf 1 2 3\n");
+    auto changed = prepare_scene(s, first).value();
+    EXPECT_NE(changed->geometry, first->geometry);
+    Hit hit;
+    ASSERT_TRUE(closest_hit(*changed->geometry, {0, 0, 0}, {0, 0, -1}, 0.0, hit));
+    EXPECT_NEAR(hit.t, 3.0, 1e-12);
+}
+
 TEST(Triangles, AMissingModelFailsPreparation) {
     Scene s = scene_with_camera(camera_at({0, 0, 0}, {0, 0, -1}));
     s.primitives.push_back(mesh("/nonexistent/model.obj"));

@@ -1,5 +1,8 @@
 #include "render/prepared_scene.hpp"
 
+#include "jtracer/file_stamp.hpp"
+#include "jtracer/texture.hpp"
+
 #include <bit>
 #include <type_traits>
 
@@ -33,7 +36,8 @@ struct Digester {
 
 }  // namespace
 
-GeometryDigest digest_geometry(const std::vector<Primitive>& primitives) {
+GeometryDigest digest_geometry(const Scene& scene) {
+    const std::vector<Primitive>& primitives = scene.primitives;
     Digester d;
     for (const Primitive& p : primitives) {
         d.add(static_cast<std::uint64_t>(p.shape.index()));
@@ -51,6 +55,10 @@ GeometryDigest digest_geometry(const std::vector<Primitive>& primitives) {
         } else if (const auto* m = std::get_if<Mesh>(&p.shape)) {
             d.add(m->file);
             d.add(m->shading);
+            // A model file changed on disk is a new geometry.
+            const FileStamp stamp = file_stamp(asset_path(scene, m->file));
+            d.add(static_cast<std::uint64_t>(stamp.size));
+            d.add(static_cast<std::uint64_t>(stamp.mtime_ns));
         }
         d.add(static_cast<std::uint64_t>(p.transforms.size()));
         for (const TransformOp& op : p.transforms) {

@@ -204,21 +204,27 @@ std::vector<PatternSpace> pattern_spaces(const std::vector<Primitive>& primitive
 }
 
 // The picture of each material's image_map, each file read once: from the
-// previous prepared scene when it had the file, else from disk.
+// previous prepared scene when it read the file as it is now (or the file is
+// gone for the moment, as while an editor saves it), else from disk.
 Expected<void> load_textures(const Scene& scene, PreparedScene& prepared,
                              const PreparedScene* previous) {
     prepared.textures.assign(prepared.materials.size(), nullptr);
     prepared.texture_files.assign(prepared.materials.size(), {});
-    auto find = [](const PreparedScene& in, const std::filesystem::path& path, std::size_t end) {
+    prepared.texture_stamps.assign(prepared.materials.size(), {});
+    auto find = [](const PreparedScene& in, const std::filesystem::path& path,
+                   const FileStamp& stamp, std::size_t end) {
         for (std::size_t i = 0; i < end; ++i)
-            if (in.textures[i] && in.texture_files[i] == path) return in.textures[i];
+            if (in.textures[i] && in.texture_files[i] == path &&
+                (in.texture_stamps[i] == stamp || !stamp.exists))
+                return in.textures[i];
         return std::shared_ptr<const Texture>();
     };
     for (std::size_t i = 0; i < prepared.materials.size(); ++i) {
         if (prepared.materials[i].image_map.empty()) continue;
         const std::filesystem::path path = asset_path(scene, prepared.materials[i].image_map);
-        std::shared_ptr<const Texture> texture = find(prepared, path, i);
-        if (!texture && previous) texture = find(*previous, path, previous->textures.size());
+        const FileStamp stamp = file_stamp(path);
+        std::shared_ptr<const Texture> texture = find(prepared, path, stamp, i);
+        if (!texture && previous) texture = find(*previous, path, stamp, previous->textures.size());
         if (!texture) {
             Expected<std::shared_ptr<const Texture>> read = load_texture(path);
             if (!read) return Error{"image_map: " + read.error().message};
@@ -226,6 +232,7 @@ Expected<void> load_textures(const Scene& scene, PreparedScene& prepared,
         }
         prepared.textures[i] = std::move(texture);
         prepared.texture_files[i] = path;
+        prepared.texture_stamps[i] = stamp;
     }
     return {};
 }
@@ -237,7 +244,7 @@ Expected<std::shared_ptr<const PreparedScene>> prepare_scene(
     // Checked here, before any work: build_geometry needs the device.
     if (!embree_device()) return Error{embree_device_failure()};
     auto prepared = std::make_shared<PreparedScene>();
-    const GeometryDigest digest = digest_geometry(scene.primitives);
+    const GeometryDigest digest = digest_geometry(scene);
     std::optional<Error> build_error;
     auto build = [&] {
         if (previous && previous->geometry && previous->geometry->digest == digest) {

@@ -7,6 +7,7 @@
 // `source`, the index of the Scene primitive it came from, for its material.
 
 #include "jtracer/affine.hpp"
+#include "jtracer/file_stamp.hpp"
 #include "jtracer/render_job.hpp"
 #include "jtracer/scene.hpp"
 #include "jtracer/texture.hpp"
@@ -63,7 +64,8 @@ struct GeometryDigest {
     bool operator==(const GeometryDigest&) const = default;
 };
 
-GeometryDigest digest_geometry(const std::vector<Primitive>& primitives);
+// Of the scene's primitives and the stamps of the model files they name.
+GeometryDigest digest_geometry(const Scene& scene);
 
 // Shapes, transforms and the BVH: the part worth reusing when only materials,
 // lights, cameras or settings change.
@@ -102,6 +104,7 @@ struct PreparedScene {
     // `materials`; a file named by several materials is loaded once.
     std::vector<std::shared_ptr<const Texture>> textures;
     std::vector<std::filesystem::path> texture_files;  // where each was read from
+    std::vector<FileStamp> texture_stamps;             // and its stamp then
     // Whether any material transmits: only then do shadow rays look past the
     // first surface they meet (docs/language.md §13.2).
     bool has_transmission = false;

@@ -1,5 +1,7 @@
 #include "jtracer/model_cache.hpp"
 
+#include "jtracer/file_stamp.hpp"
+
 #include <algorithm>
 #include <deque>
 #include <map>
@@ -16,14 +18,8 @@ namespace {
 // distinct models between its validation and its render.
 constexpr std::size_t kept_models = 4;
 
-struct Stamp {
-    std::uintmax_t size = 0;
-    std::filesystem::file_time_type time{};
-    bool operator==(const Stamp&) const = default;
-};
-
 struct Entry {
-    Stamp stamp;
+    FileStamp stamp;
     std::weak_ptr<const Model> model;
 };
 
@@ -44,9 +40,8 @@ Expected<std::shared_ptr<const Model>> shared_model(const std::filesystem::path&
                                                     const std::filesystem::path& folder) {
     std::error_code error;
     const std::filesystem::path absolute = std::filesystem::absolute(file, error);
-    Stamp stamp{std::filesystem::file_size(absolute, error),
-                std::filesystem::last_write_time(absolute, error)};
-    if (error) return read_model(file, folder).error();  // its own words for the failure
+    const FileStamp stamp = file_stamp(absolute);
+    if (error || !stamp.exists) return read_model(file, folder).error();  // its own words
     const std::filesystem::path scene_folder = folder.empty() ? "." : folder;
     const auto key =
         std::pair(absolute.lexically_normal().string(),
