@@ -1,6 +1,7 @@
 #include "coordinator.hpp"
 
 #include "jtracer/frontend/progress.hpp"
+#include "silence_watch.hpp"
 #include "work_tiles.hpp"
 
 #include "jtracer/region.hpp"
@@ -39,9 +40,7 @@ struct ArrivingTile {
 
 struct WorkerState {
     std::deque<std::int32_t> held;  // handed out and not yet back, in the order it renders them
-    Clock::time_point last_heard;
-    bool heard = false;    // it has said it is ready
-    bool stopped = false;  // it has acknowledged the stop
+    bool stopped = false;           // it has acknowledged the stop
     // The message being received from it, if any: one at a time, in order.
     MPI_Request receiving = MPI_REQUEST_NULL;
     int receiving_tag = 0;
@@ -59,6 +58,7 @@ class Coordinator {
           tiles_(tiles),
           settings_(settings),
           workers_(static_cast<std::size_t>(settings.ranks)),
+          watch_(settings.ranks, settings.rank_timeout),
           copies_(tiles.size(), 0),
           second_holder_(tiles.size(), no_tile),
           pasted_tile_(tiles.size(), false) {
@@ -98,8 +98,9 @@ class Coordinator {
     CoordinatorSettings settings_;
     Clock::time_point start_;
     std::vector<WorkerState> workers_;  // index 0 (rank 0 itself) unused
-    std::vector<int> copies_;           // per tile: times handed out
-    std::vector<int> second_holder_;    // per tile: the rank given its second copy
+    SilenceWatch watch_;
+    std::vector<int> copies_;         // per tile: times handed out
+    std::vector<int> second_holder_;  // per tile: the rank given its second copy
     std::vector<bool> pasted_tile_;
     std::size_t next_tile_ = 0;
     std::size_t pasted_ = 0;
@@ -204,7 +205,7 @@ class Coordinator {
         int done = 0;
         MPI_Test(&worker.receiving, &done, MPI_STATUS_IGNORE);
         if (!done) return false;
-        worker.last_heard = Clock::now();
+        watch_.heard(rank);
         const auto start = Clock::now();
         take_in(rank, worker);
         result_.stats.merge_seconds += seconds_since(start);
@@ -216,17 +217,11 @@ class Coordinator {
         MPI_Status status;
         MPI_Iprobe(rank, MPI_ANY_TAG, MPI_COMM_WORLD, &arrived, &status);
         if (!arrived) return false;
-        worker.last_heard = Clock::now();
-        worker.heard = true;
+        watch_.heard(rank);
         int bytes = 0;
         MPI_Get_count(&status, MPI_BYTE, &bytes);
         void* into = destination(worker, status.MPI_TAG, bytes);
-        if (!into) {
-            std::fprintf(stderr,
-                         "jtracer-mpi: rank %d sent a malformed message; nothing was written\n",
-                         rank);
-            MPI_Abort(MPI_COMM_WORLD, 3);
-        }
+        if (!into) abort_on_malformed_message(rank);
         worker.receiving_tag = status.MPI_TAG;
         worker.receiving_bytes = bytes;
         MPI_Irecv(into, bytes, MPI_BYTE, rank, status.MPI_TAG, MPI_COMM_WORLD, &worker.receiving);
@@ -251,6 +246,7 @@ class Coordinator {
         if (worker.receiving_tag == tag_stopped) {
             result_.rank_stats[static_cast<std::size_t>(rank)] = stopped_stats_;
             worker.stopped = true;
+            watch_.finished(rank);
             return;
         }
         if (worker.receiving_tag != tag_result) return;
@@ -283,19 +279,8 @@ class Coordinator {
 
     // Records the first worker silent for longer than the timeout allows.
     bool lost() {
-        for (int rank = 1; rank < settings_.ranks; ++rank) {
-            const WorkerState& worker = workers_[static_cast<std::size_t>(rank)];
-            if (worker.stopped) continue;
-            const double silence = seconds_since(worker.heard ? worker.last_heard : start_);
-            const double allowed =
-                settings_.rank_timeout + (worker.heard ? 0.0 : settings_.setup_grace);
-            if (silence > allowed) {
-                result_.lost_rank = rank;
-                result_.lost_silence = silence;
-                return true;
-            }
-        }
-        return false;
+        result_.lost = watch_.lost();
+        return result_.lost.has_value();
     }
 
     bool all_stopped() const {

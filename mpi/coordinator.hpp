@@ -3,6 +3,7 @@
 // every result into the frame, and watches for ranks that stop answering.
 
 #include "messages.hpp"
+#include "silence_watch.hpp"
 
 #include "jtracer/frontend/progress.hpp"
 #include "jtracer/image.hpp"
@@ -19,18 +20,14 @@ namespace jt::mpi {
 
 struct CoordinatorSettings {
     int ranks = 1;  // counting rank 0
-    // A worker silent this long (no tile, no heartbeat) is declared lost. One
-    // not yet heard from at all (still preparing the scene) gets `setup_grace`
-    // seconds more.
+    // A worker silent this long (no tile, no heartbeat) is declared lost.
     double rank_timeout = 10.0;
-    double setup_grace = 0.0;
     frontend::ProgressStyle progress = frontend::ProgressStyle::none;
 };
 
 struct CoordinatorResult {
     bool complete = false;              // every tile came back (and `deliver` was called)
-    std::optional<int> lost_rank;       // the worker that stopped answering, if one did
-    double lost_silence = 0.0;          // how long it had been silent
+    std::optional<LostRank> lost;       // the worker that stopped answering, if one did
     std::uint64_t rays = 0;             // over all ranks
     std::uint64_t bytes_received = 0;   // tile messages from other ranks
     int tiles_received = 0;             // from other ranks
@@ -41,7 +38,8 @@ struct CoordinatorResult {
     std::vector<RankStats> rank_stats;  // every worker's, as it sent them when it stopped
 };
 
-// Renders `tiles` of a `width` x `height` frame over the job's ranks; as soon
+// Renders `tiles` of a `width` x `height` frame over the job's ranks, every
+// worker having said it is ready (roll_call.hpp); as soon
 // as every tile is in, calls `deliver` with the frame, then tells the workers to
 // stop and waits for each to say it has. Returns early, incomplete, when `stop`
 // becomes true or a rank is lost; the workers are then still waiting and the

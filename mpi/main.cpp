@@ -7,6 +7,7 @@
 #include "coordinator.hpp"
 #include "cpu_affinity.hpp"
 #include "mpi_options.hpp"
+#include "roll_call.hpp"
 #include "work_tiles.hpp"
 #include "worker.hpp"
 
@@ -66,33 +67,52 @@ void stop_local_launcher() {
     kill(parent, SIGTERM);
 }
 
-// Rank 0 learns every rank's machine, to name a rank it loses.
-std::vector<std::string> gather_host_names(int rank, int ranks) {
-    std::array<char, MPI_MAX_PROCESSOR_NAME> mine{};
-    const std::string name = host_name();
-    name.copy(mine.data(), mine.size() - 1);
-    std::vector<char> all(rank == 0 ? mine.size() * static_cast<std::size_t>(ranks) : 0);
-    MPI_Gather(mine.data(), MPI_MAX_PROCESSOR_NAME, MPI_CHAR, all.data(), MPI_MAX_PROCESSOR_NAME,
-               MPI_CHAR, 0, MPI_COMM_WORLD);
-    std::vector<std::string> names;
-    for (std::size_t i = 0; i < all.size(); i += mine.size()) names.emplace_back(&all[i]);
-    return names;
+// Reads, checks and prepares the scene: the same steps on every rank, each
+// on its own machine.
+RankSetUp set_up_rank(const Options& o, FrameSetup& setup) {
+    setup = jt::frontend::set_up_frame("jtracer-mpi", o);
+    RankSetUp mine;
+    mine.exit_code = setup.exit_code;
+    mine.message = setup.message;
+    if (setup.exit_code != exit_ok) return mine;
+    const jt::Expected<std::shared_ptr<const jt::PreparedScene>> prepared =
+        jt::prepare_scene(setup.scene);
+    if (!prepared) {
+        mine.exit_code = exit_io_error;
+        mine.message = "jtracer-mpi: " + prepared.error().message + "; nothing was written\n";
+        return mine;
+    }
+    // One frame a rank: the camera table is built once, by the rank's first tile.
+    mine.frame = jt::prepare_frame(*prepared, setup.render);
+    mine.tiles = cut_work_tiles(setup.render.width, setup.render.height, o.tile_size);
+    return mine;
 }
 
-// Every rank learns every rank's setup verdict, so that all stop together. A
-// scene error is the same on every rank and rank 0 alone reports it; a rank
-// that failed where rank 0 did not (a file missing on its machine) speaks up.
-int agree_on_setup(const FrameSetup& setup, int rank, int ranks) {
-    std::vector<int> codes(static_cast<std::size_t>(ranks));
-    MPI_Allgather(&setup.exit_code, 1, MPI_INT, codes.data(), 1, MPI_INT, MPI_COMM_WORLD);
-    if (rank == 0 || (setup.exit_code != exit_ok && codes[0] == exit_ok)) {
-        std::string message = setup.message;
-        if (rank != 0)
-            message = "rank " + std::to_string(rank) + " on " + host_name() + ": " + message;
-        std::cerr << message << std::flush;
-    }
-    if (codes[0] != exit_ok) return codes[0];
-    for (int code : codes)
+// Rank 0 ends a job it has lost a worker of: the others cannot be told.
+[[noreturn]] void end_for_lost_rank(const LostRank& lost, const std::vector<std::string>& hosts,
+                                    double rank_timeout, const char* outcome) {
+    const std::string& host = hosts[static_cast<std::size_t>(lost.rank)];
+    std::fprintf(stderr,
+                 "jtracer-mpi: rank %d on %s stopped answering (nothing heard from it for %.1f s, "
+                 "--rank-timeout %g)%s\n",
+                 lost.rank, host.empty() ? "a host that never said its name" : host.c_str(),
+                 lost.silence, rank_timeout, outcome);
+    std::fflush(stderr);
+    stop_local_launcher();
+    std::_Exit(exit_io_error);
+}
+
+// Every rank's set-up verdict, as rank 0 heard it: a scene error is the same
+// on every rank and rank 0 alone reports it; a worker that failed where rank 0
+// did not (a file missing on its machine) is reported with its rank and host.
+int agree_on_setup(const RankSetUp& own, const RollCall& call) {
+    std::cerr << own.message;
+    if (own.exit_code != exit_ok) return own.exit_code;
+    for (std::size_t rank = 1; rank < call.exit_codes.size(); ++rank)
+        if (call.exit_codes[rank] != exit_ok)
+            std::cerr << "rank " << rank << " on " << call.hosts[rank] << ": "
+                      << call.messages[rank];
+    for (int code : call.exit_codes)
         if (code != exit_ok) return code;
     return exit_ok;
 }
@@ -130,65 +150,47 @@ int run(int argc, char** argv, int rank, int ranks) {
     ParsedOptions parsed = parse_options(argc, argv, rank == 0);
     if (parsed.exit_code) return *parsed.exit_code;
     const Options& o = parsed.options;
+    auto warn_of_narrow_affinity = [&] {
+        if (!o.quiet)
+            if (auto warning = narrow_affinity_warning(current_cpu_share(), rank, host_name()))
+                std::cerr << *warning << std::flush;
+    };
 
-    FrameSetup setup = jt::frontend::set_up_frame("jtracer-mpi", o);
-    if (int code = agree_on_setup(setup, rank, ranks); code != exit_ok) return code;
-    if (!o.quiet)
-        if (auto warning = narrow_affinity_warning(current_cpu_share(), rank, host_name()))
-            std::cerr << *warning << std::flush;
-    if (rank == 0) {
-        std::signal(SIGINT, on_interrupt);
-        std::signal(SIGTERM, on_interrupt);
-    }
-    const jt::Expected<std::shared_ptr<const jt::PreparedScene>> prepared =
-        jt::prepare_scene(setup.scene);
-    if (!prepared) {
-        // Every rank runs the same Embree: a failure here is the same on every
-        // rank, and none has started talking yet.
-        if (rank == 0)
-            std::cerr << "jtracer-mpi: " << prepared.error().message << "; nothing was written\n";
-        return exit_io_error;
-    }
-    // One frame a rank: the camera table is built once, by the rank's first tile.
-    const std::shared_ptr<const jt::PreparedFrame> frame =
-        jt::prepare_frame(*prepared, setup.render);
-    const std::vector<jt::PixelRect> tiles =
-        cut_work_tiles(setup.render.width, setup.render.height, o.tile_size);
-    RankStats mine;
-    mine.setup_seconds = std::chrono::duration<double>(Clock::now() - start).count();
+    FrameSetup setup;
+    if (rank != 0)
+        return run_worker(host_name(), [&] {
+            RankSetUp mine = set_up_rank(o, setup);
+            if (mine.exit_code == exit_ok) warn_of_narrow_affinity();
+            return mine;
+        });
 
-    if (rank != 0) {
-        gather_host_names(rank, ranks);
-        run_worker(*frame, tiles, mine.setup_seconds);
-        return exit_ok;
+    const RankSetUp mine = set_up_rank(o, setup);
+    const double setup_seconds = std::chrono::duration<double>(Clock::now() - start).count();
+    const RollCall call = call_the_roll(ranks, host_name(), mine.exit_code, o.rank_timeout);
+    if (call.lost)
+        end_for_lost_rank(*call.lost, call.hosts, o.rank_timeout, "; nothing was written");
+    if (const int code = agree_on_setup(mine, call); code != exit_ok) {
+        for (int worker = 1; worker < ranks; ++worker) send_signal(worker, tag_stop);
+        return code;
     }
+    warn_of_narrow_affinity();
+    std::signal(SIGINT, on_interrupt);
+    std::signal(SIGTERM, on_interrupt);
 
-    const std::vector<std::string> hosts = gather_host_names(rank, ranks);
     CoordinatorSettings settings;
     settings.ranks = ranks;
     settings.rank_timeout = o.rank_timeout;
-    // Every rank prepares the same scene: give the others three times rank 0's setup.
-    settings.setup_grace = 3.0 * mine.setup_seconds;
     settings.progress = jt::frontend::progress_style_for_stderr(o.progress, o.quiet);
     std::optional<jt::Expected<void>> written;
     CoordinatorResult result =
-        run_coordinator(frame, setup.render.width, setup.render.height, tiles, settings,
+        run_coordinator(mine.frame, setup.render.width, setup.render.height, mine.tiles, settings,
                         interrupted, [&](const jt::Image8& image) {
                             written = jt::write_image(setup.output, image, setup.format);
                         });
-    if (result.lost_rank) {
-        const int lost = *result.lost_rank;
-        std::fprintf(
-            stderr,
-            "jtracer-mpi: rank %d on %s stopped answering (nothing heard from it for "
-            "%.1f s, --rank-timeout %g)%s\n",
-            lost, hosts[static_cast<std::size_t>(lost)].c_str(), result.lost_silence,
-            o.rank_timeout,
+    if (result.lost)
+        end_for_lost_rank(
+            *result.lost, call.hosts, o.rank_timeout,
             written && *written ? " after the image was written" : "; nothing was written");
-        std::fflush(stderr);
-        stop_local_launcher();
-        std::_Exit(exit_io_error);
-    }
     if (!result.complete) {
         // The workers still wait for tiles; only an abort ends them.
         std::cerr << "jtracer-mpi: stopped before every tile came back (interrupted, or a rank "
@@ -196,7 +198,7 @@ int run(int argc, char** argv, int rank, int ranks) {
         MPI_Abort(MPI_COMM_WORLD, 130);
         return 130;
     }
-    result.stats.setup_seconds = mine.setup_seconds;
+    result.stats.setup_seconds = setup_seconds;
     std::vector<RankStats> stats = result.rank_stats;
     stats.front() = result.stats;
     if (!*written) {
@@ -213,7 +215,7 @@ int run(int argc, char** argv, int rank, int ranks) {
                                                   setup.render.samples, summary)
                   << ", " << ranks << (ranks == 1 ? " rank" : " ranks") << "\n";
     }
-    if (o.stats) print_stats(result, stats, tiles.size(), o.tile_size, total);
+    if (o.stats) print_stats(result, stats, mine.tiles.size(), o.tile_size, total);
     return exit_ok;
 }
 

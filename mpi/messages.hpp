@@ -1,17 +1,23 @@
 #pragma once
-// What the ranks say to each other. Rank 0 sends a worker the index of its
-// next tile (tag_assign); the worker answers with a TileResultHeader and then
-// the tile's RGB bytes in pieces of at most result_piece_bytes, each a
-// tag_result message. A worker is kept two tiles ahead, so that it never idles
-// for a round trip. A worker that has been silent for heartbeat_seconds
-// (waiting, or rendering a long tile) sends an empty tag_heartbeat, so that
-// rank 0 can tell a slow rank from a lost one. Once the frame is complete rank
+// What the ranks say to each other. A worker says tag_hello (its host name)
+// first thing, so that rank 0 can name it from then on, and tag_ready once it
+// has prepared the scene (an int32 exit code, then the set-up's message when
+// it failed, at most ready_message_bytes of it). Rank 0 then sends a worker the
+// index of its next tile (tag_assign); the worker answers with a
+// TileResultHeader and then the tile's RGB bytes in pieces of at most
+// result_piece_bytes, each a tag_result message. A worker is kept two tiles
+// ahead, so that it never idles for a round trip. A worker that has been silent
+// for heartbeat_seconds (preparing the scene, waiting, or rendering a long
+// tile) sends an empty tag_heartbeat, so that rank 0 can tell a slow rank from
+// a lost one. Once the frame is complete, or when a rank's set-up failed, rank
 // 0 sends tag_stop; the worker drops the tiles it still holds and answers
 // tag_stopped with its RankStats, the last thing it sends.
 //
-// Rank 0 receives without ever blocking, and a piece is small enough to cross
-// a slow link well within the rank timeout, so a tile that stops arriving
-// halfway (a link pulled mid-transfer) is a silence like any other.
+// Rank 0 never blocks on a worker: it receives with MPI_Iprobe / MPI_Irecv and
+// no collective call is made, and a piece is small enough to cross a slow link
+// well within the rank timeout, so a worker that stops answering at any point
+// (before its hello, in its set-up, halfway through a tile) is a silence like
+// any other.
 
 #include <mpi.h>
 
@@ -24,10 +30,14 @@ constexpr int tag_result = 2;
 constexpr int tag_heartbeat = 3;
 constexpr int tag_stop = 4;
 constexpr int tag_stopped = 5;
+constexpr int tag_hello = 6;
+constexpr int tag_ready = 7;
 constexpr int tiles_ahead = 2;
 constexpr double heartbeat_seconds = 1.0;
 // 32 KiB: a quarter of a second at 1 Mbit/s, and within OpenMPI's eager limit.
 constexpr int result_piece_bytes = 32 * 1024;
+// Within the eager limit too: a worker's own set-up error is a few lines.
+constexpr int ready_message_bytes = 8 * 1024;
 
 struct TileResultHeader {
     std::int32_t tile = 0;
@@ -47,5 +57,8 @@ struct RankStats {
 
 // Sends a message without a payload.
 void send_signal(int rank, int tag);
+
+// Rank 0, given a message no worker sends: names `rank` and aborts the job.
+[[noreturn]] void abort_on_malformed_message(int rank);
 
 }  // namespace jt::mpi

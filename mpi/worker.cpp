@@ -5,6 +5,7 @@
 #include <algorithm>
 #include <chrono>
 #include <cstdlib>
+#include <cstring>
 #include <future>
 #include <optional>
 #include <string>
@@ -16,47 +17,61 @@ namespace {
 
 using Clock = std::chrono::steady_clock;
 
-// For the tests only: JT_MPI_TEST_ABORT_RANK=N makes rank N die after
-// rendering its first tile, before sending it, as a crashed machine would.
-bool told_to_die() {
-    const char* rank_text = std::getenv("JT_MPI_TEST_ABORT_RANK");
+// For the tests only: true when the environment variable `name` holds this
+// rank's number.
+bool test_hook_names_me(const char* name) {
+    const char* rank_text = std::getenv(name);
     if (!rank_text) return false;
     int rank = 0;
     MPI_Comm_rank(MPI_COMM_WORLD, &rank);
     return std::to_string(rank) == rank_text;
 }
 
-// Renders on a thread of its own while the rank's main thread (the only one
-// that calls MPI) keeps rank 0 told that this rank is alive.
+// JT_MPI_TEST_ABORT_RANK=N makes rank N die after rendering its first tile,
+// before sending it, as a crashed machine would.
+bool told_to_die() {
+    return test_hook_names_me("JT_MPI_TEST_ABORT_RANK");
+}
+
+// JT_MPI_TEST_SLOW_SETUP_RANK=N makes rank N's set-up take a minute longer, as
+// a machine reading a big model from a slow share would (it keeps answering).
+constexpr auto slow_setup_delay = std::chrono::seconds(60);
+bool told_to_set_up_slowly() {
+    return test_hook_names_me("JT_MPI_TEST_SLOW_SETUP_RANK");
+}
+
+// Works on a thread of its own while the rank's main thread (the only one that
+// calls MPI) keeps rank 0 told that this rank is alive.
 class Worker {
-  public:
-    Worker(const PreparedFrame& frame, const std::vector<PixelRect>& tiles, double setup_seconds)
-        : frame_(frame), tiles_(tiles) {
-        stats_.setup_seconds = setup_seconds;
+    // Runs `job` on a thread of its own, saying meanwhile that this rank is alive.
+    template <class Job>
+    auto keeping_alive(Job job) {
+        auto done = std::async(std::launch::async, std::move(job));
+        while (done.wait_for(std::chrono::milliseconds(100)) != std::future_status::ready)
+            keep_alive();
+        return done.get();
     }
 
-    void run() {
-        const bool die = told_to_die();
-        say(tag_heartbeat);  // ready: rank 0 starts listening for this rank's silence
-        while (true) {
-            const auto waiting = Clock::now();
-            const std::optional<std::int32_t> index = next_assignment();
-            stats_.wait_seconds += std::chrono::duration<double>(Clock::now() - waiting).count();
-            if (!index) break;
-            WorkTile tile = render(tiles_[static_cast<std::size_t>(*index)]);
-            if (die) std::abort();
-            stats_.tiles += 1;
-            stats_.render_seconds += tile.seconds;
-            // Rank 0 may have had this tile from another rank meanwhile.
-            if (stop_arrived()) break;
-            send_result(*index, tile);
-        }
+  public:
+    int run(const std::string& host, const std::function<RankSetUp()>& set_up) {
+        MPI_Send(host.data(), static_cast<int>(host.size()), MPI_CHAR, 0, tag_hello,
+                 MPI_COMM_WORLD);
+        last_said_ = Clock::now();
+        const auto start = Clock::now();
+        const bool slowly = told_to_set_up_slowly();
+        set_up_ = keeping_alive([&] {
+            if (slowly) std::this_thread::sleep_for(slow_setup_delay);
+            return set_up();
+        });
+        stats_.setup_seconds = std::chrono::duration<double>(Clock::now() - start).count();
+        say_ready();
+        render_until_stopped();
         MPI_Send(&stats_, sizeof stats_, MPI_BYTE, 0, tag_stopped, MPI_COMM_WORLD);
+        return set_up_.exit_code;
     }
 
   private:
-    const PreparedFrame& frame_;
-    const std::vector<PixelRect>& tiles_;
+    RankSetUp set_up_;
     RankStats stats_;
     Clock::time_point last_said_;
     bool stopped_ = false;
@@ -69,6 +84,36 @@ class Worker {
     void keep_alive() {
         if (std::chrono::duration<double>(Clock::now() - last_said_).count() >= heartbeat_seconds)
             say(tag_heartbeat);
+    }
+
+    void say_ready() {
+        std::string verdict(sizeof(std::int32_t), '\0');
+        const std::int32_t code = set_up_.exit_code;
+        std::memcpy(verdict.data(), &code, sizeof code);
+        if (code != 0) verdict += set_up_.message.substr(0, ready_message_bytes);
+        MPI_Send(verdict.data(), static_cast<int>(verdict.size()), MPI_CHAR, 0, tag_ready,
+                 MPI_COMM_WORLD);
+        last_said_ = Clock::now();
+    }
+
+    // Rank 0 hands out no tile once a set-up failed: a rank without a frame
+    // only waits for the stop.
+    void render_until_stopped() {
+        const bool die = told_to_die();
+        while (true) {
+            const auto waiting = Clock::now();
+            const std::optional<std::int32_t> index = next_assignment();
+            stats_.wait_seconds += std::chrono::duration<double>(Clock::now() - waiting).count();
+            if (!index || !set_up_.frame) return;
+            const PixelRect rect = set_up_.tiles[static_cast<std::size_t>(*index)];
+            WorkTile tile = keeping_alive([&] { return render_work_tile(*set_up_.frame, rect); });
+            if (die) std::abort();
+            stats_.tiles += 1;
+            stats_.render_seconds += tile.seconds;
+            // Rank 0 may have had this tile from another rank meanwhile.
+            if (stop_arrived()) return;
+            send_result(*index, tile);
+        }
     }
 
     bool stop_arrived() {
@@ -94,21 +139,14 @@ class Worker {
             if (arrived && status.MPI_TAG == tag_assign) {
                 std::int32_t index = 0;
                 MPI_Recv(&index, 1, MPI_INT32_T, 0, tag_assign, MPI_COMM_WORLD, MPI_STATUS_IGNORE);
-                if (index >= 0 && index < static_cast<std::int32_t>(tiles_.size())) return index;
+                if (index >= 0 && index < static_cast<std::int32_t>(set_up_.tiles.size()))
+                    return index;
             } else if (arrived && stop_arrived()) {
                 return std::nullopt;
             }
             keep_alive();
             if (!arrived) std::this_thread::sleep_for(std::chrono::microseconds(100));
         }
-    }
-
-    WorkTile render(const PixelRect& rect) {
-        std::future<WorkTile> job =
-            std::async(std::launch::async, [this, rect] { return render_work_tile(frame_, rect); });
-        while (job.wait_for(std::chrono::milliseconds(100)) != std::future_status::ready)
-            keep_alive();
-        return job.get();
     }
 
     void send_result(std::int32_t index, const WorkTile& tile) {
@@ -126,9 +164,8 @@ class Worker {
 
 }  // namespace
 
-void run_worker(const PreparedFrame& frame, const std::vector<PixelRect>& tiles,
-                double setup_seconds) {
-    Worker(frame, tiles, setup_seconds).run();
+int run_worker(const std::string& host, const std::function<RankSetUp()>& set_up) {
+    return Worker().run(host, set_up);
 }
 
 }  // namespace jt::mpi

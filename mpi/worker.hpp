@@ -1,18 +1,30 @@
 #pragma once
-// A rank other than 0: renders the tiles rank 0 hands it until told to stop.
+// A rank other than 0. It says hello (its host name) first thing, prepares the
+// scene while telling rank 0 every heartbeat_seconds that it is alive, says
+// whether that worked (tag_ready), then renders the tiles rank 0 hands it
+// until told to stop.
 
 #include "messages.hpp"
 
 #include "jtracer/render_tile.hpp"
 
+#include <functional>
 #include <memory>
+#include <string>
 #include <vector>
 
 namespace jt::mpi {
 
-// Its figures, with `setup_seconds` (how long it took to prepare the scene), go
-// to rank 0 with its last message.
-void run_worker(const PreparedFrame& frame, const std::vector<PixelRect>& tiles,
-                double setup_seconds);
+// What a rank's set-up gives it.
+struct RankSetUp {
+    std::shared_ptr<const PreparedFrame> frame;  // null when the set-up failed
+    std::vector<PixelRect> tiles;
+    int exit_code = 0;
+    std::string message;  // the set-up's report: diagnostics, or why it failed
+};
+
+// Runs `set_up` on a thread of its own, then the tiles; returns the rank's
+// exit code. Its figures go to rank 0 with its last message.
+int run_worker(const std::string& host, const std::function<RankSetUp()>& set_up);
 
 }  // namespace jt::mpi
