@@ -55,16 +55,26 @@ std::string host_name() {
 // waits for that machine's daemon for as long as TCP takes to give up (many
 // minutes). When rank 0 is mpirun's own child (the usual layout: rank 0 on the
 // machine mpirun runs on), a second SIGTERM within 5 seconds of the first
-// makes mpirun end at once (the first only starts its abort).
+// makes mpirun end at once (the first only starts its abort). On a loaded
+// machine mpirun may not have taken the first in before the second arrives,
+// and two pending SIGTERMs are one: one a second, for as long as it lives (this
+// rank's parent changes when it ends). An mpirun that still waits after five
+// is killed: the daemons of the hosts still up then end their ranks
+// themselves, having lost it.
 void stop_local_launcher() {
     const pid_t parent = getppid();
     std::ifstream comm("/proc/" + std::to_string(parent) + "/comm");
     std::string name;
     std::getline(comm, name);
     if (name != "mpirun" && name != "mpiexec" && name != "orterun") return;
-    kill(parent, SIGTERM);
-    std::this_thread::sleep_for(std::chrono::seconds(1));
-    kill(parent, SIGTERM);
+    // mpirun's abort ends its own children with SIGTERM: this rank must live to
+    // send the second.
+    std::signal(SIGTERM, SIG_IGN);
+    for (int signals = 0; signals < 5 && getppid() == parent; ++signals) {
+        kill(parent, SIGTERM);
+        std::this_thread::sleep_for(std::chrono::seconds(1));
+    }
+    if (getppid() == parent) kill(parent, SIGKILL);
 }
 
 // Reads, checks and prepares the scene: the same steps on every rank, each
