@@ -1,6 +1,8 @@
 // The million-triangle benchmark (docs/benchmarks.md §3): a model file is read,
 // its BVH built and a 1920x1080 frame rendered, each timed on its own, with the
-// process's resident memory after each step and at its peak; then the same
+// CPU seconds of the whole process (every thread) beside the wall time, as a
+// shared machine stretches wall times, and the process's resident memory after
+// each step and at its peak; then the same
 // model placed 100 times, to show that instances cost no model memory.
 //
 //   bench/generate_model.py --triangles 1000000 /tmp/knot1m.ply
@@ -9,6 +11,8 @@
 #include "jtracer/model_cache.hpp"
 #include "jtracer/render_job.hpp"
 #include "jtracer/scene.hpp"
+
+#include <sys/resource.h>
 
 #include <chrono>
 #include <cstdio>
@@ -22,6 +26,14 @@ using Clock = std::chrono::steady_clock;
 
 double seconds_since(Clock::time_point start) {
     return std::chrono::duration<double>(Clock::now() - start).count();
+}
+
+// User and system time of every thread of the process so far.
+double cpu_seconds() {
+    rusage usage{};
+    getrusage(RUSAGE_SELF, &usage);
+    auto seconds = [](const timeval& t) { return t.tv_sec + t.tv_usec * 1e-6; };
+    return seconds(usage.ru_utime) + seconds(usage.ru_stime);
 }
 
 // A line of /proc/self/status in MiB: "VmRSS" now, "VmHWM" the peak.
@@ -74,6 +86,7 @@ int main(int argc, char** argv) {
     if (argc >= 4 && std::string(argv[2]) == "--threads") threads = std::atoi(argv[3]);
 
     auto start = Clock::now();
+    double cpu_start = cpu_seconds();
     auto model = jt::shared_model(file, ".");
     if (!model) {
         std::fprintf(stderr, "mesh-bench: %s\n", model.error().message.c_str());
@@ -81,24 +94,28 @@ int main(int argc, char** argv) {
     }
     std::printf("model      %zu triangles, %zu vertices\n", (*model)->triangles.size(),
                 (*model)->positions.size());
-    std::printf("load       %7.3f s   rss %7.1f MiB\n", seconds_since(start), status_mib("VmRSS"));
+    std::printf("load       %7.3f s   cpu %7.3f s   rss %7.1f MiB\n", seconds_since(start),
+                cpu_seconds() - cpu_start, status_mib("VmRSS"));
 
     for (int copies : {1, 100}) {
         const jt::Scene scene = scene_of(file, copies);
         start = Clock::now();
+        cpu_start = cpu_seconds();
         auto prepared = jt::prepare_scene(scene);
         if (!prepared) {
             std::fprintf(stderr, "mesh-bench: %s\n", prepared.error().message.c_str());
             return 1;
         }
-        std::printf("%3d x build %7.3f s   rss %7.1f MiB\n", copies, seconds_since(start),
-                    status_mib("VmRSS"));
+        std::printf("%3d x build %7.3f s   cpu %7.3f s   rss %7.1f MiB\n", copies,
+                    seconds_since(start), cpu_seconds() - cpu_start, status_mib("VmRSS"));
         jt::RenderOptions options = jt::render_options_for(scene);
         options.threads = threads;
         start = Clock::now();
+        cpu_start = cpu_seconds();
         const jt::Image8 image = jt::render_image(*prepared, options);
-        std::printf("%3d x render %6.3f s   rss %7.1f MiB   (%dx%d)\n", copies,
-                    seconds_since(start), status_mib("VmRSS"), image.width, image.height);
+        std::printf("%3d x render %6.3f s   cpu %7.3f s   rss %7.1f MiB   (%dx%d)\n", copies,
+                    seconds_since(start), cpu_seconds() - cpu_start, status_mib("VmRSS"),
+                    image.width, image.height);
     }
     std::printf("peak rss   %7.1f MiB\n", status_mib("VmHWM"));
     return 0;
