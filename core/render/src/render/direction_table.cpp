@@ -110,8 +110,9 @@ std::vector<CellCone> cell_cones(int resolution) {
     return cones;
 }
 
-// Calls add(cell) for every cell whose cone meets the cone of directions
-// within `angle` of the unit `axis`.
+// Calls add(cell, covers) for every cell whose cone meets the cone of
+// directions within `angle` of the unit `axis`; `covers` when that cone holds
+// the cell's.
 template <typename Add>
 void rasterise_cone(const Vec3& axis, double angle, int resolution,
                     const std::vector<CellCone>& cones, Add&& add) {
@@ -149,7 +150,10 @@ void rasterise_cone(const Vec3& axis, double angle, int resolution,
                 // sum of their angles: compare cosines.
                 const double cos_between = c.u * axis[j] + c.v * axis[l] + c.w * sign * axis[k];
                 const double cos_sum = cos_angle * c.cos_radius - sin_angle * c.sin_radius;
-                if (cos_between >= cos_sum - angle_slack) add(face_base + local);
+                if (!(cos_between >= cos_sum - angle_slack)) continue;
+                const double cos_difference = cos_angle * c.cos_radius + sin_angle * c.sin_radius;
+                add(face_base + local,
+                    angle > std::acos(c.cos_radius) && cos_between >= cos_difference + angle_slack);
             }
     }
 }
@@ -167,7 +171,11 @@ DirectionTable build_direction_table(const Geometry& geometry, const Vec3& posit
 
     // (cell, candidate) pairs, then a counting sort by cell, then each cell
     // nearest first.
-    std::vector<std::pair<std::uint32_t, std::uint32_t>> pairs;
+    struct Listing {
+        std::uint32_t cell, candidate;
+        bool covers;
+    };
+    std::vector<Listing> pairs;
     std::vector<double> nearest_of(shapes);  // by sphere index, then shape index
     auto add_shape = [&](const BoundingSphere& b, std::uint32_t candidate, std::size_t slot) {
         const Vec3 offset = b.center - position;
@@ -180,12 +188,13 @@ DirectionTable build_direction_table(const Geometry& geometry, const Vec3& posit
                                 radius / distance > std::sin(max_cone_angle);
         if (everywhere) {
             for (std::size_t cell = 0; cell < cells; ++cell)
-                pairs.emplace_back(static_cast<std::uint32_t>(cell), candidate);
+                pairs.push_back({static_cast<std::uint32_t>(cell), candidate, false});
             return;
         }
         const double angle = std::asin(radius / distance) + angle_slack;
-        rasterise_cone(offset / distance, angle, r, cones, [&](std::size_t cell) {
-            pairs.emplace_back(static_cast<std::uint32_t>(cell), candidate);
+        rasterise_cone(offset / distance, angle, r, cones, [&](std::size_t cell, bool covers) {
+            pairs.push_back(
+                {static_cast<std::uint32_t>(cell), candidate, covers && !(candidate & shape_flag)});
         });
     };
     for (std::uint32_t i = 0; i < geometry.spheres.size(); ++i) {
@@ -204,20 +213,27 @@ DirectionTable build_direction_table(const Geometry& geometry, const Vec3& posit
 
     table.resolution = r;
     table.cell_start.assign(cells + 1, 0);
-    for (const auto& [cell, candidate] : pairs) ++table.cell_start[cell + 1];
+    for (const Listing& p : pairs) ++table.cell_start[p.cell + 1];
     for (std::size_t c = 0; c < cells; ++c) table.cell_start[c + 1] += table.cell_start[c];
-    table.shapes.resize(pairs.size());
+    std::vector<Listing> sorted(pairs.size());
     std::vector<std::uint32_t> fill(table.cell_start.begin(), table.cell_start.end() - 1);
-    for (const auto& [cell, candidate] : pairs) table.shapes[fill[cell]++] = candidate;
+    for (const Listing& p : pairs) sorted[fill[p.cell]++] = p;
+    table.covered.assign(cells, 0);
     for (std::size_t c = 0; c < cells; ++c) {
-        auto first = table.shapes.begin() + table.cell_start[c];
-        auto last = table.shapes.begin() + table.cell_start[c + 1];
-        std::stable_sort(first, last,
-                         [&](std::uint32_t a, std::uint32_t b) { return nearest(a) < nearest(b); });
+        auto first = sorted.begin() + table.cell_start[c];
+        auto last = sorted.begin() + table.cell_start[c + 1];
+        std::stable_sort(first, last, [&](const Listing& a, const Listing& b) {
+            return nearest(a.candidate) < nearest(b.candidate);
+        });
+        const auto scanned = first + std::min<std::ptrdiff_t>(last - first, max_covered_position);
+        table.covered[c] = std::any_of(first, scanned, [](const Listing& p) { return p.covers; });
     }
-    table.nearest.resize(table.shapes.size());
-    for (std::size_t i = 0; i < table.shapes.size(); ++i)
-        table.nearest[i] = nearest(table.shapes[i]);
+    table.shapes.resize(sorted.size());
+    table.nearest.resize(sorted.size());
+    for (std::size_t i = 0; i < sorted.size(); ++i) {
+        table.shapes[i] = sorted[i].candidate;
+        table.nearest[i] = nearest(sorted[i].candidate);
+    }
     return table;
 }
 
@@ -238,7 +254,7 @@ std::optional<ListedShapes> shapes_toward(const DirectionTable& table, const Vec
     const std::size_t first = table.cell_start[cell];
     const std::size_t count = table.cell_start[cell + 1] - first;
     return ListedShapes{std::span(table.shapes).subspan(first, count),
-                        std::span(table.nearest).subspan(first, count)};
+                        std::span(table.nearest).subspan(first, count), table.covered[cell] != 0};
 }
 
 std::vector<DirectionTable> build_light_tables(const Geometry& geometry,

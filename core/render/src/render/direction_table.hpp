@@ -31,7 +31,13 @@ struct DirectionTable {
     std::vector<std::uint32_t> cell_start;  // 6 * resolution^2 + 1 offsets into `shapes`
     std::vector<std::uint32_t> shapes;      // each cell's nearest first
     std::vector<double> nearest;            // parallel to `shapes`: see ListedShapes
+    // Per cell: the list holds, among its first max_covered_position shapes, a
+    // sphere whose cone holds the cell's: every ray of the cell meets it, so a
+    // walk of even a long list ends soon after it.
+    std::vector<std::uint8_t> covered;
 };
+
+inline constexpr std::size_t max_covered_position = 256;
 
 // A cell's list. No point of shapes[i] is nearer the table's point than
 // nearest[i], and nearest never decreases along the list: a walk stops at the
@@ -39,6 +45,7 @@ struct DirectionTable {
 struct ListedShapes {
     std::span<const std::uint32_t> shapes;
     std::span<const double> nearest;
+    bool covered = false;  // see DirectionTable::covered
     std::size_t size() const { return shapes.size(); }
 };
 

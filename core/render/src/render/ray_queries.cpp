@@ -18,8 +18,9 @@ namespace {
 
 constexpr std::uint32_t no_source = std::numeric_limits<std::uint32_t>::max();
 
-// A direction table cell with more shapes than this leaves the ray to the BVH:
-// testing each costs more than Embree's walk past most of them.
+// A direction table cell with more shapes than this leaves the ray to the BVH
+// (a closest-hit query, once it has tested as many): testing each costs more
+// than Embree's walk past most of them.
 constexpr std::size_t max_cell_candidates = 16;
 constexpr std::size_t short_candidate_list = 2;
 
@@ -177,16 +178,22 @@ bool occluded_by_listed(const Geometry& g, const ListedShapes& listed, const Vec
 }
 
 // The walk of a direction table's list around the ray's origin: it stops at
-// the first shape that lies wholly beyond the best hit so far.
-void closest_by_listed(ClosestQuery& q, const ListedShapes& listed) {
+// the first shape that lies wholly beyond the best hit so far. True when that
+// settles the ray; false when `limit` shapes were tested first, and the rest
+// of the list is left to the BVH (the best hit so far stays in the query, and
+// the answer is the nearest of all, whichever found it).
+bool closest_by_listed(ClosestQuery& q, const ListedShapes& listed, std::size_t limit) {
     const double length = glm::length(q.direction);
-    for (std::size_t k = 0; k < listed.size() && !(listed.nearest[k] > q.t * length); ++k) {
+    for (std::size_t k = 0; k < listed.size(); ++k) {
+        if (listed.nearest[k] > q.t * length) return true;
+        if (k == limit) return false;
         const std::uint32_t shape = listed.shapes[k];
         if (!(shape & shape_flag))
             offer_sphere(q, shape);
         else if (!misses_bounds(q.geometry->shapes[shape & ~shape_flag], q.origin, q.direction))
             offer_shape(q, shape & ~shape_flag);
     }
+    return true;
 }
 
 // Whether the hinted surface blocks the ray; false for no hint or a stale one.
@@ -280,13 +287,20 @@ bool closest_hit(const Geometry& geometry, const Vec3& origin, const Vec3& direc
         }
     }
 
-    std::optional<ListedShapes> listed;
-    if (around_origin) listed = shapes_toward(*around_origin, direction);
-    if (listed && (!geometry.bvh || listed->size() <= max_cell_candidates)) {
-        closest_by_listed(q, *listed);
-    } else if (!geometry.bvh) {
+    // A long list is walked too when a sphere near its start covers the cell
+    // (heavily overlapping spheres): that sphere's hit soon ends the walk,
+    // long before Embree would have offered every sphere whose box the ray
+    // crosses. Past max_covered_position shapes the BVH walk takes over from
+    // the best hit so far.
+    bool settled = false;
+    if (around_origin)
+        if (std::optional<ListedShapes> listed = shapes_toward(*around_origin, direction);
+            listed && (!geometry.bvh || listed->size() <= max_cell_candidates || listed->covered))
+            settled =
+                closest_by_listed(q, *listed, geometry.bvh ? max_covered_position : listed->size());
+    if (!settled && !geometry.bvh) {
         closest_by_testing_all(q);
-    } else {
+    } else if (!settled) {
         rtcInitIntersectContext(&q.context);
         RTCRayHit rayhit;
         set_float_ray(rayhit.ray, origin, direction, t_min, q.t);
