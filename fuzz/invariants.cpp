@@ -2,13 +2,21 @@
 
 #include "jtracer/bmp.hpp"
 #include "jtracer/diagnostics.hpp"
+#include "jtracer/model_file.hpp"
 #include "jtracer/parser.hpp"
 #include "jtracer/serializer.hpp"
 #include "jtracer/texture.hpp"
 #include "jtracer/validate.hpp"
 
+#include <unistd.h>
+
+#include <glm/geometric.hpp>
+
+#include <cmath>
 #include <cstdio>
 #include <cstdlib>
+#include <filesystem>
+#include <fstream>
 #include <vector>
 
 namespace jt::fuzz {
@@ -104,6 +112,56 @@ std::string check_texture_bytes(std::span<const std::uint8_t> bytes) {
     for (float v : t.rgb)
         if (!(v >= 0.0f && v <= 1.0f)) return "a texel value outside [0, 1]: " + std::to_string(v);
     return {};
+}
+
+namespace {
+
+bool finite(const glm::vec3& v) {
+    return std::isfinite(v.x) && std::isfinite(v.y) && std::isfinite(v.z);
+}
+
+std::string check_model(const Model& m) {
+    const std::size_t vertices = m.positions.size();
+    if (vertices > kMaxModelTriangles || m.triangles.size() > kMaxModelTriangles)
+        return "a model over the size cap: " + std::to_string(vertices) + " vertices, " +
+               std::to_string(m.triangles.size()) + " triangles";
+    if (!m.normals.empty() && m.normals.size() != vertices)
+        return "normals not parallel to positions";
+    if (!m.uvs.empty() && m.uvs.size() != vertices) return "uvs not parallel to positions";
+    for (const glm::vec3& p : m.positions)
+        if (!finite(p)) return "a position that is not finite";
+    for (const auto& t : m.triangles) {
+        for (std::uint32_t i : t)
+            if (i >= vertices)
+                return "a triangle naming vertex " + std::to_string(i) + " of " +
+                       std::to_string(vertices);
+        const glm::dvec3 a(m.positions[t[0]]), b(m.positions[t[1]]), c(m.positions[t[2]]);
+        if (glm::cross(b - a, c - a) == glm::dvec3(0.0)) return "a triangle of zero area";
+    }
+    return {};
+}
+
+}  // namespace
+
+std::string check_model_bytes(std::span<const std::uint8_t> bytes) {
+    if (bytes.empty()) return {};
+    namespace fs = std::filesystem;
+    // A folder of its own for every input: what the file refers to can only be
+    // itself or nothing.
+    static int inputs = 0;
+    const fs::path folder =
+        fs::temp_directory_path() /
+        ("jtracer-model-check-" + std::to_string(::getpid()) + "-" + std::to_string(++inputs));
+    fs::create_directories(folder);
+    const fs::path file =
+        folder / (std::string("model.") + model_extensions[bytes[0] % model_extensions.size()]);
+    std::ofstream(file, std::ios::binary)
+        .write(reinterpret_cast<const char*>(bytes.data() + 1),
+               static_cast<std::streamsize>(bytes.size() - 1));
+    const Expected<Model> read = read_model(file, folder);
+    fs::remove_all(folder);
+    if (!read) return read.error().message.empty() ? "an error without a message" : "";
+    return check_model(*read);
 }
 
 void abort_if_broken(const std::string& broken) {

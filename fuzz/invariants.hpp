@@ -5,6 +5,7 @@
 
 #include "jtracer/diagnostics.hpp"
 
+#include <array>
 #include <cstdint>
 #include <span>
 #include <string>
@@ -32,6 +33,17 @@ std::string check_bmp_bytes(std::span<const std::uint8_t> bytes);
 // checks: either a message, or a texture within the size cap whose texel
 // count matches its size and whose every value is finite, in [0, 1].
 std::string check_texture_bytes(std::span<const std::uint8_t> bytes);
+
+// A model input's first byte picks the file's extension, which is how Assimp
+// picks its importer: model_extensions[byte % size]; the rest is the file.
+inline constexpr std::array<const char*, 5> model_extensions{"obj", "ply", "stl", "gltf", "glb"};
+
+// Writes the model input `bytes` to a file of its own, in a folder of its own,
+// reads it as a mesh would (read_model, through Assimp, confined to that
+// folder) and checks: either a message, or a model within the size caps whose
+// normals and texture coordinates are parallel to its positions, whose
+// positions are finite and whose triangles name existing vertices.
+std::string check_model_bytes(std::span<const std::uint8_t> bytes);
 
 // For the fuzz targets: a broken invariant is printed and aborts, so that
 // libFuzzer keeps the input.

@@ -1,11 +1,14 @@
 // Files from strangers named by a scene: pictures whose headers claim sizes
 // no machine could hold, or whose tables would make stb_image write out of
-// bounds. Each is refused before anything is decoded or allocated, with an
-// error at the image_map string, through --check and through a render alike.
+// bounds; models that claim more vertices than their bytes hold or whose
+// buffers lie outside the scene's folder. Each is refused before anything is
+// decoded or allocated, with an error at the image_map or mesh file string,
+// through --check and through a render alike.
 
 #include "cli_sandbox.hpp"
 
 #include <filesystem>
+#include <string>
 
 namespace jt::test {
 namespace {
@@ -76,6 +79,89 @@ TEST_F(HostileImageMaps, FilesThatMisledStbImageAreRefused) {
         expect_refused(run({"hostile.jts", "--check"}), problem);
         expect_refused(run({"hostile.jts", "-o", "out.bmp"}), problem);
     }
+}
+
+class HostileModels : public CliSandbox {
+  protected:
+    void SetUp() override {
+        CliSandbox::SetUp();
+        fs::create_directories(dir / "scene");
+        // What a hostile model may try to reach: a file beside the scene's folder.
+        write_file(dir / "outside.bin", std::string(36, '\0'));
+    }
+    // scene/hostile.jts, whose one mesh's file string starts at line 4, column 18.
+    void write_scene_naming(const std::string& model, const std::string& bytes) {
+        write_file(dir / "scene" / model, bytes);
+        write_file(dir / "scene/hostile.jts",
+                   "render_settings { width: 8; height: 8; }\n"
+                   "cameras { perspective_camera { position: <0, 0, 5>; look_at: <0, 0, 0>; } }\n"
+                   "scene {\n"
+                   "    mesh { file: \"" +
+                       model + "\"; } }\n");
+    }
+    void expect_refused(const ProgramRun& r, const std::string& model,
+                        const std::string& problem) const {
+        EXPECT_EQ(r.code, 1) << r.err;
+        const std::string where =
+            "scene/hostile.jts:4:18: error: mesh 1: 'scene/" + model + "': " + problem + "\n";
+        EXPECT_EQ(r.err.rfind(where, 0), 0u) << r.err;
+        EXPECT_FALSE(exists("out.bmp"));
+        EXPECT_TRUE(temporary_files().empty());
+    }
+    void expect_refused_everywhere(const std::string& model, const std::string& problem) {
+        expect_refused(run({"scene/hostile.jts", "--check"}), model, problem);
+        expect_refused(run({"scene/hostile.jts", "-o", "out.bmp"}), model, problem);
+    }
+};
+
+// A triangle's three positions in a glTF buffer at `uri`.
+std::string gltf_with_buffer(const std::string& uri) {
+    return R"({"asset": {"version": "2.0"}, "buffers": [{"uri": ")" + uri +
+           R"(", "byteLength": 36}], "bufferViews": [{"buffer": 0, "byteLength": 36}],
+"accessors": [{"bufferView": 0, "componentType": 5126, "count": 3, "type": "VEC3",
+"max": [1, 1, 0], "min": [0, 0, 0]}], "meshes": [{"primitives": [{"attributes": {"POSITION": 0}}]}],
+"nodes": [{"mesh": 0}], "scenes": [{"nodes": [0]}], "scene": 0})";
+}
+
+TEST_F(HostileModels, PlyClaimingTwoToTheFortyVerticesIsRefusedFromItsHeader) {
+    write_scene_naming("claims.ply",
+                       "ply\nformat binary_little_endian 1.0\nelement vertex 1099511627776\n"
+                       "property float x\nproperty float y\nproperty float z\nend_header\n");
+    expect_refused_everywhere(
+        "claims.ply",
+        "its header claims vertex 1099511627776, more than the file's 127 bytes can hold");
+}
+
+// Found by fuzz/model_fuzzer: Assimp reads a PLY header that never ends for ever.
+TEST_F(HostileModels, PlyHeaderThatNeverEndsIsRefusedInsteadOfReadForEver) {
+    write_scene_naming("endless.ply",
+                       "ply\nformat ascii 1.0\nelement vertex 3\nproperty float x\n"
+                       "property float y\nproperty float z\n0 0 0\n1 0 0\n0 1 0\n");
+    expect_refused_everywhere(
+        "endless.ply", "its PLY header does not end (no end_header line within 10000 lines)");
+}
+
+// Assimp opens an absolute buffer path below the model's folder ("scene//etc/passwd"),
+// which the confinement allows and which does not exist; a path that leaves
+// the folder (..) is the confinement's to refuse.
+TEST_F(HostileModels, GltfBuffersOutsideTheScenesFolderAreRefused) {
+    const std::string outside = fs::absolute(dir / "outside.bin").string();
+    const std::pair<std::string, std::string> cases[] = {
+        {"/etc/passwd", "GLTF: could not open referenced file \"/etc/passwd\""},
+        {outside, "GLTF: could not open referenced file \"" + outside + "\""},
+        {"../outside.bin", "it refers to 'scene/../outside.bin', outside the folder '" +
+                               fs::weakly_canonical(fs::absolute(dir / "scene")).string() + "'"},
+    };
+    for (const auto& [uri, problem] : cases) {
+        SCOPED_TRACE(uri);
+        write_scene_naming("hostile.gltf", gltf_with_buffer(uri));
+        expect_refused_everywhere("hostile.gltf", problem);
+    }
+    // The same buffer inside the folder is read (a triangle of zero area, left out).
+    fs::copy_file(dir / "outside.bin", dir / "scene/inside.bin");
+    write_scene_naming("hostile.gltf", gltf_with_buffer("inside.bin"));
+    const ProgramRun r = run({"scene/hostile.jts", "--check"});
+    EXPECT_EQ(r.code, 0) << r.err;
 }
 
 }  // namespace

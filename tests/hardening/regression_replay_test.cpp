@@ -1,4 +1,4 @@
-// Replays every saved fuzz input (regressions/parser, bmp, image_map) through
+// Replays every saved fuzz input (regressions/parser, bmp, image_map, model) through
 // the very checks the fuzz targets make (fuzz/invariants.cpp): no crash, no
 // sanitizer report, diagnostics within the text, round trips that hold.
 
@@ -52,6 +52,14 @@ TEST(FuzzRegressions, ImageMapInputsKeepTheirInvariants) {
     ASSERT_GE(paths.size(), 3u);
     for (const fs::path& path : paths)
         EXPECT_EQ(fuzz::check_texture_bytes(bytes_of(path)), "") << path.filename();
+}
+
+// Each input's first byte picks the model file's extension (fuzz/invariants.hpp).
+TEST(FuzzRegressions, ModelInputsKeepTheirInvariants) {
+    const std::vector<fs::path> paths = inputs("model");
+    ASSERT_GE(paths.size(), 3u);
+    for (const fs::path& path : paths)
+        EXPECT_EQ(fuzz::check_model_bytes(bytes_of(path)), "") << path.filename();
 }
 
 // The location check must be able to fail, or the replay proves little.

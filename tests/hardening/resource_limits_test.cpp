@@ -89,6 +89,53 @@ TEST_F(ResourceLimits, PictureClaimingTenBillionTexelsIsRefusedFromItsHeaderInOn
     EXPECT_FALSE(exists("out.bmp"));
 }
 
+TEST_F(ResourceLimits, MeshOfSixMillionTrianglesInOneGibIsOutOfMemory) {
+    // 48 MB of OBJ; Assimp alone needs over 1 GiB for it.
+    {
+        std::ofstream out(dir / "huge.obj", std::ios::binary);
+        out << "v 0 0 0\nv 1 0 0\nv 0 1 0\n";
+        const std::string faces = [] {
+            std::string block;
+            for (int i = 0; i < 1000; ++i) block += "f 1 2 3\n";
+            return block;
+        }();
+        for (int i = 0; i < 6000; ++i) out << faces;
+    }
+    write_file(dir / "mesh.jts",
+               "render_settings { width: 8; height: 8; }\n"
+               "cameras { perspective_camera { position: <0, 0, 5>; look_at: <0, 0, 0>; } }\n"
+               "scene { mesh { file: \"huge.obj\"; } }\n");
+    ProgramRun r = run_in_one_gib("mesh.jts -o out.bmp");
+    fs::remove(dir / "huge.obj");
+    expect_out_of_memory(r, "out of memory");
+    EXPECT_NE(r.err.find("nothing was written"), std::string::npos) << r.err;
+}
+
+TEST_F(ResourceLimits, TwoThousandCopiesOfOneModelRenderInOneGib) {
+    // 40 million triangles if each copy had its own; one model instanced 2000
+    // times takes about what one copy does.
+    fs::copy_file(fs::path(JT_SOURCE_DIR) / "scenes/models/knot.ply", dir / "knot.ply");
+    std::string scene =
+        "render_settings { width: 64; height: 36; ambient_light: <0.3, 0.3, 0.3>; }\n"
+        "cameras { perspective_camera { position: <0, 0, 60>; look_at: <0, 0, 0>; "
+        "aspect: 1.7777777777777777; } }\n"
+        "scene { point_light { position: <10, 10, 80>; intensity: <1, 1, 1>; }\n";
+    for (int i = 0; i < 2000; ++i)
+        scene +=
+            "mesh { file: \"knot.ply\"; material { pigment: <1, 0.6, 0.2>; ambient: "
+            "<0.3, 0.3, 0.3>; } transform { scale: <0.3, 0.3, 0.3>; translate: <" +
+            std::to_string(i % 50 - 25) + ", " + std::to_string(i / 50 - 20) + ", 0>; } }\n";
+    write_file(dir / "copies.jts", scene + "}\n");
+    ProgramRun r = run_in_one_gib("copies.jts -q -o out.bmp");
+    ASSERT_EQ(r.code, 0) << r.err;
+    const Expected<Image8> image = read_bmp(dir / "out.bmp");
+    ASSERT_TRUE(image) << image.error().message;
+    int lit = 0;  // pixels where a knot is
+    for (int y = 0; y < image->height; ++y)
+        for (int x = 0; x < image->width; ++x) lit += image->pixel(x, y)[0] > 0;
+    EXPECT_GT(lit, image->width * image->height / 10);
+}
+
 TEST_F(ResourceLimits, ThirtyTwoOpenFilesAreEnoughForAScenePastThatManyImageMaps) {
     // 40 pictures, each opened, read and closed once.
     std::string scene =

@@ -24,7 +24,9 @@ namespace jt {
 
 // A model's object space is the file's coordinates after its own node
 // transforms (glTF). Vertex positions are single precision, as every model
-// format stores them; the renderer refines hits on them in double.
+// format stores them; the renderer refines hits on them in double. Every one
+// is finite: a corner the file gives as infinite or NaN is zero, and no
+// triangle names it.
 struct Model {
     std::vector<glm::vec3> positions;
     // Parallel to positions, or empty when the file has none; a zero vector is
@@ -45,7 +47,8 @@ inline constexpr std::size_t kMaxModelTriangles = std::size_t{1} << 26;
 // material libraries) are opened only inside `folder` (the scene's folder)
 // or, for a model outside it, inside the model's own folder; a reference
 // that leaves it is an error. A model with no triangle of non-zero area is
-// not an error: its triangle list is empty.
+// not an error: its triangle list is empty. Running out of memory raises
+// std::bad_alloc, as everywhere (error.hpp).
 Expected<Model> read_model(const std::filesystem::path& file, const std::filesystem::path& folder);
 
 }  // namespace jt

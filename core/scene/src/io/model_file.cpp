@@ -15,6 +15,7 @@
 #include <cmath>
 #include <fstream>
 #include <memory>
+#include <new>
 #include <sstream>
 #include <string>
 #include <system_error>
@@ -31,14 +32,16 @@ std::string lower_extension(const std::filesystem::path& file) {
     return ext;
 }
 
-// A PLY header's element counts must fit in the file (each instance takes a
+// A PLY header must end (Assimp 5.2 reads one without "end_header" for
+// ever) and its element counts must fit in the file (each instance takes a
 // byte at least), so that a short file cannot make the reader reserve room
-// for billions. "" when they do.
-std::string ply_count_problem(const std::filesystem::path& file, std::uintmax_t size) {
+// for billions. "" when both hold, or when the file is no PLY.
+constexpr int max_ply_header_lines = 10000;
+std::string ply_header_problem(const std::filesystem::path& file, std::uintmax_t size) {
     std::ifstream in(file, std::ios::binary);
     std::string line;
     if (!std::getline(in, line) || line.rfind("ply", 0) != 0) return "";
-    for (int lines = 0; lines < 10000 && std::getline(in, line); ++lines) {
+    for (int lines = 0; lines < max_ply_header_lines && std::getline(in, line); ++lines) {
         if (line.rfind("end_header", 0) == 0) return "";
         std::istringstream words(line);
         std::string keyword, name;
@@ -49,7 +52,8 @@ std::string ply_count_problem(const std::filesystem::path& file, std::uintmax_t 
             return "its header claims " + line.substr(8) + ", more than the file's " +
                    std::to_string(size) + " bytes can hold";
     }
-    return "";
+    return "its PLY header does not end (no end_header line within " +
+           std::to_string(max_ply_header_lines) + " lines)";
 }
 
 // Where the files a model refers to may be: the scene's folder when the
@@ -125,6 +129,9 @@ class ModelBuilder {
                 if (model_.triangles.size() > kMaxModelTriangles) return false;
             }
         }
+        // No triangle names a corner that is not finite: it becomes a harmless zero.
+        for (std::size_t i = first; i < model_.positions.size(); ++i)
+            if (!finite(model_.positions[i])) model_.positions[i] = glm::vec3(0.0f);
         return true;
     }
 
@@ -201,7 +208,7 @@ Expected<Model> read_model(const std::filesystem::path& file, const std::filesys
         return Error{file_message(file, "the model file is too large (" + std::to_string(size) +
                                             " bytes; at most " +
                                             std::to_string(kMaxModelFileBytes) + ")")};
-    if (std::string problem = ply_count_problem(file, size); !problem.empty())
+    if (std::string problem = ply_header_problem(file, size); !problem.empty())
         return Error{file_message(file, problem)};
     try {
         Assimp::Importer importer;
@@ -209,9 +216,17 @@ Expected<Model> read_model(const std::filesystem::path& file, const std::filesys
         importer.SetIOHandler(io);  // the importer owns it
         const aiScene* scene = importer.ReadFile(file.string(), 0);
         if (!io->refusal().empty()) return Error{file_message(file, io->refusal())};
-        if (!scene) return Error{file_message(file, importer.GetErrorString())};
+        if (!scene) {
+            // Assimp turns every exception into its error string, running out
+            // of memory too; that one is the programs' to report (error.hpp).
+            const std::string why = importer.GetErrorString();
+            if (why == std::bad_alloc().what()) throw std::bad_alloc();
+            return Error{file_message(file, why)};
+        }
         // STL's normals are one a facet, not a vertex (docs/language.md §13.5).
         return gather(*scene, lower_extension(file) != ".stl");
+    } catch (const std::bad_alloc&) {
+        throw;
     } catch (const std::exception& e) {
         return Error{file_message(file, std::string("cannot load the model: ") + e.what())};
     }
