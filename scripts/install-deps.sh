@@ -12,7 +12,7 @@ packages=(
     clang libclang-rt-14-dev valgrind
     tachyon-bin-nox
     mandoc man-db dpkg-dev file bash-completion zsh desktop-file-utils shared-mime-info
-    python3 iproute2
+    python3
 )
 
 missing=()

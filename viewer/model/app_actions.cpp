@@ -304,28 +304,32 @@ void recheck_draft(AppState& state) {
 
 }  // namespace
 
-void undo(AppState& state) {
-    if (auto previous = state.undo.undo(version_of(state.doc))) {
+namespace {
+
+// Moves one step through the undo history; `step` is the stack's undo or redo.
+template <class Step>
+void step_history(AppState& state, Step step, const char* done) {
+    if (auto version = step(version_of(state.doc))) {
         const Scene before = state.doc.scene;
-        restore_version(state.doc, *previous);
+        restore_version(state.doc, *version);
         keep_camera_selection(state, before);
-        state.message = "Undone";
+        state.message = done;
     }
     recheck_draft(state);
     state.edit_base.reset();
     ++state.scene_generation;
 }
 
+}  // namespace
+
+void undo(AppState& state) {
+    step_history(
+        state, [&](auto current) { return state.undo.undo(std::move(current)); }, "Undone");
+}
+
 void redo(AppState& state) {
-    if (auto next = state.undo.redo(version_of(state.doc))) {
-        const Scene before = state.doc.scene;
-        restore_version(state.doc, *next);
-        keep_camera_selection(state, before);
-        state.message = "Redone";
-    }
-    recheck_draft(state);
-    state.edit_base.reset();
-    ++state.scene_generation;
+    step_history(
+        state, [&](auto current) { return state.undo.redo(std::move(current)); }, "Redone");
 }
 
 void track_edits(AppState& state, const Scene& before_frame, std::uint64_t generation_before,
@@ -512,13 +516,6 @@ std::string validation_error(const Scene& scene) {
     for (const Diagnostic& d : validate_scene(scene, SceneSource{}))
         if (d.severity == Severity::error) return d.message;
     return {};
-}
-
-// The smallest rectangle holding `a` (when there is one) and `b`.
-PixelRect holding_both(const std::optional<PixelRect>& a, const PixelRect& b) {
-    if (!a) return b;
-    return {std::min(a->x0, b.x0), std::min(a->y0, b.y0), std::max(a->x1, b.x1),
-            std::max(a->y1, b.y1)};
 }
 
 // Waits, at most config.first_pass_wait, for the render just started to finish

@@ -4,14 +4,12 @@
 // result up on a later frame. The newest request wins: a load that is
 // overtaken by another request finishes, but its result is dropped.
 
+#include "latest_wins_worker.hpp"
 #include "scene_document.hpp"
 #include "wakeup.hpp"
 
-#include <condition_variable>
 #include <filesystem>
-#include <mutex>
 #include <optional>
-#include <thread>
 
 namespace jt::view {
 
@@ -26,21 +24,18 @@ struct FinishedLoad {
 class SceneLoader {
   public:
     SceneLoader();
-    ~SceneLoader();
-    SceneLoader(const SceneLoader&) = delete;
-    SceneLoader& operator=(const SceneLoader&) = delete;
 
     void request(const std::filesystem::path& path, LoadPurpose purpose);
     // The result of the newest request once it is done, handed out once.
     std::optional<FinishedLoad> take();
     // A request is waiting, loading, or done but not yet taken.
-    bool busy() const;
+    bool busy() const { return worker_.busy(); }
     // A request is waiting or loading (its result is not ready yet).
-    bool in_flight() const;
+    bool in_flight() const { return worker_.in_flight(); }
     // Notified whenever a result is ready to take. Set before the first request.
-    void set_wakeup(Wakeup* wakeup);
+    void set_wakeup(Wakeup* wakeup) { worker_.set_wakeup(wakeup); }
     // Blocks until the newest request is done (for start-up and tests).
-    void wait() const;
+    void wait() const { worker_.wait(); }
 
   private:
     struct Request {
@@ -48,16 +43,9 @@ class SceneLoader {
         LoadPurpose purpose;
         LoadTimes::Clock::time_point requested;
     };
-    void work();
+    static FinishedLoad load(Request request);
 
-    mutable std::mutex mutex_;
-    mutable std::condition_variable changed_;
-    std::optional<Request> next_;         // waiting to start
-    bool loading_ = false;                // the worker is reading or parsing
-    std::optional<FinishedLoad> result_;  // done, not yet taken
-    bool quit_ = false;
-    Wakeup* wakeup_ = nullptr;
-    std::thread worker_;  // last: starts once the members above exist
+    LatestWinsWorker<Request, FinishedLoad> worker_;
 };
 
 }  // namespace jt::view

@@ -6,16 +6,14 @@
 
 #include "jtracer/diagnostics.hpp"
 #include "jtracer/parser.hpp"
+#include "latest_wins_worker.hpp"
 #include "wakeup.hpp"
 
 #include <chrono>
-#include <condition_variable>
 #include <cstdint>
 #include <filesystem>
-#include <mutex>
 #include <optional>
 #include <string>
-#include <thread>
 
 namespace jt::view {
 
@@ -33,41 +31,30 @@ CheckedText check_text(std::uint64_t id, std::string text, const std::filesystem
 class TextChecker {
   public:
     TextChecker();
-    ~TextChecker();
-    TextChecker(const TextChecker&) = delete;
-    TextChecker& operator=(const TextChecker&) = delete;
 
     // Checks `text` once `pause` has passed without a newer call.
     void check(std::uint64_t id, std::string text, const std::filesystem::path& path,
                std::chrono::milliseconds pause);
     // Drops the waiting text and any result not yet taken.
-    void cancel();
+    void cancel() { worker_.cancel(); }
     // The newest check's result once it is done, handed out once.
-    std::optional<CheckedText> take();
+    std::optional<CheckedText> take() { return worker_.take(); }
     // A text is waiting or being checked.
-    bool in_flight() const;
+    bool in_flight() const { return worker_.in_flight(); }
     // Notified whenever a result is ready. Set before the first check.
-    void set_wakeup(Wakeup* wakeup);
+    void set_wakeup(Wakeup* wakeup) { worker_.set_wakeup(wakeup); }
     // Blocks until the newest text is checked (tests).
-    void wait() const;
+    void wait() const { worker_.wait(); }
 
   private:
     struct Request {
         std::uint64_t id;
         std::string text;
         std::filesystem::path path;
-        std::chrono::steady_clock::time_point due;
     };
-    void work();
+    static CheckedText run_check(Request request);
 
-    mutable std::mutex mutex_;
-    mutable std::condition_variable changed_;
-    std::optional<Request> next_;
-    bool checking_ = false;
-    std::optional<CheckedText> result_;
-    bool quit_ = false;
-    Wakeup* wakeup_ = nullptr;
-    std::thread worker_;  // last: starts once the members above exist
+    LatestWinsWorker<Request, CheckedText> worker_;
 };
 
 }  // namespace jt::view

@@ -21,12 +21,6 @@ namespace jt {
 
 namespace {
 
-PixelRect unite(const std::optional<PixelRect>& a, const PixelRect& b) {
-    if (!a) return b;
-    return {std::min(a->x0, b.x0), std::min(a->y0, b.y0), std::max(a->x1, b.x1),
-            std::max(a->y1, b.y1)};
-}
-
 PixelRect clip_region(const RenderOptions& o) {
     PixelRect full{0, 0, std::max(o.width, 0), std::max(o.height, 0)};
     if (!o.region) return full;
@@ -112,7 +106,7 @@ void RenderJob::State::publish(const PixelRect& tile, const std::vector<std::uin
     for (int y = tile.y0; y < tile.y1; ++y)
         std::copy_n(&rgb[static_cast<std::size_t>(y - tile.y0) * row_bytes], row_bytes,
                     image.pixel(tile.x0 - region.x0, y - region.y0));
-    dirty = unite(dirty, tile);
+    dirty = holding_both(dirty, tile);
 }
 
 bool RenderJob::State::render_tile(const RenderPass& pass, const PixelRect& tile) {

@@ -4,7 +4,9 @@
 // Pixel (x, y) follows docs/language.md §7.3: x from the left, y from the
 // bottom. Row 0 is the bottom row, as in a BMP and an OpenGL texture.
 
+#include <algorithm>
 #include <cstdint>
+#include <optional>
 #include <vector>
 
 namespace jt {
@@ -34,6 +36,14 @@ struct PixelRect {
     bool empty() const { return x1 <= x0 || y1 <= y0; }
     bool operator==(const PixelRect&) const = default;
 };
+
+// The smallest rectangle holding `a` (when there is one) and `b`: how the
+// pixels changed since the last look accumulate.
+inline PixelRect holding_both(const std::optional<PixelRect>& a, const PixelRect& b) {
+    if (!a) return b;
+    return {std::min(a->x0, b.x0), std::min(a->y0, b.y0), std::max(a->x1, b.x1),
+            std::max(a->y1, b.y1)};
+}
 
 // The value docs/language.md §8.6 writes for a channel: floor(clamp(c, 0, 1) * 255 + 0.5).
 std::uint8_t quantize_channel(double c);
