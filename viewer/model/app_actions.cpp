@@ -2,6 +2,8 @@
 
 #include "image_files.hpp"
 #include "jtracer/limits.hpp"
+#include "jtracer/model_cache.hpp"
+#include "jtracer/texture.hpp"
 #include "jtracer/validate.hpp"
 #include "ui_rounding.hpp"
 
@@ -135,10 +137,57 @@ void reload_scene(AppState& state) {
     state.loader.request(state.doc.path, LoadPurpose::reload);
 }
 
+namespace {
+
+// After a model or image file changed (or is to be read again): the scene's
+// diagnostics are checked and its render started again, so that a file that
+// no longer loads is reported where the scene names it and keeps the last
+// image (update_render), and one that loads is shown.
+void files_changed(AppState& state, bool models) {
+    if (models) state.renderer.forget_prepared();
+    state.checked_scene.reset();
+    state.rejected.reset();
+    state.started.reset();
+}
+
+bool assets_changed(AppState& state) {
+    if (!state.asset_watcher.due()) return false;
+    const NamedFiles files = named_files(state.doc.scene);
+    std::vector<std::filesystem::path> watched = files.models;
+    watched.insert(watched.end(), files.images.begin(), files.images.end());
+    state.asset_watcher.watch(watched);
+    const std::vector<std::filesystem::path> changed = state.asset_watcher.poll();
+    if (changed.empty()) return false;
+    bool models = false;
+    for (const std::filesystem::path& file : changed)
+        if (std::find(files.models.begin(), files.models.end(), file) != files.models.end()) {
+            forget_model(file);
+            models = true;
+        }
+    files_changed(state, models);
+    state.message = changed.front().filename().string() +
+                    (changed.size() > 1 ? " and other files" : "") +
+                    " changed on disk: rendering again";
+    return true;
+}
+
+}  // namespace
+
 bool reload_if_changed(AppState& state) {
-    if (!state.watcher.poll()) return false;
+    const bool assets = state.doc.loaded && assets_changed(state);
+    if (!state.watcher.poll()) return assets;
     reload_scene(state);
     return true;
+}
+
+void reload_model(AppState& state, std::size_t primitive) {
+    const auto& primitives = state.doc.scene.primitives;
+    const Mesh* mesh =
+        primitive < primitives.size() ? std::get_if<Mesh>(&primitives[primitive].shape) : nullptr;
+    if (!mesh) return;
+    forget_model(asset_path(state.doc.scene, mesh->file));
+    files_changed(state, true);
+    state.message = "Reading " + mesh->file + " again";
 }
 
 bool take_finished_load(AppState& state) {

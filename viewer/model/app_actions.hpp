@@ -21,8 +21,14 @@ void request_open(AppState& state, const std::filesystem::path& path);
 // edits nothing is replaced: the newer text waits in `pending_reload` for the
 // user's choice.
 void reload_scene(AppState& state);
-// Starts a reload when the watcher saw the file change; true when it did.
+// Starts a reload when the watcher saw the file change, and renders again
+// when a model or image file the scene names changed; true when either did.
+// A changed model or image never touches the scene or its unsaved edits.
 bool reload_if_changed(AppState& state);
+// Reads the model file of mesh `primitive` again even when it looks
+// unchanged on disk, and renders again. A file that no longer loads keeps the
+// last image; the diagnostics say where and why.
+void reload_model(AppState& state, std::size_t primitive);
 // Takes in a finished open or reload, if any; true when there was one.
 bool take_finished_load(AppState& state);
 

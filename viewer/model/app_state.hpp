@@ -78,6 +78,7 @@ struct AppState {
         loader.set_wakeup(&wakeup);
         renderer.set_wakeup(&wakeup);
         checker.set_wakeup(&wakeup);
+        asset_watcher = FileSetWatcher(this->config.watch_interval);
         saved_settings = read_viewer_settings(this->config.settings_file);
         sidebar_width = saved_settings.panel_width;
     }
@@ -101,7 +102,8 @@ struct AppState {
     // not mistaken for a widget edit.
     std::uint64_t scene_generation = 0;
     FileWatcher watcher;
-    SceneLoader loader;  // opens and reloads off the UI thread
+    FileSetWatcher asset_watcher;  // the model and image files the scene names
+    SceneLoader loader;            // opens and reloads off the UI thread
     RecentFiles recent;
     LoadTimes last_load_times;  // of the last open or reload taken in
 

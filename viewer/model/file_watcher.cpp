@@ -1,38 +1,50 @@
 #include "file_watcher.hpp"
 
-#include <sys/stat.h>
+#include <algorithm>
 
 namespace jt::view {
 
-FileStamp stamp_file(const std::filesystem::path& path) {
-    struct stat info {};
-    if (::stat(path.c_str(), &info) != 0) return {};
-    FileStamp stamp;
-    stamp.exists = true;
-    stamp.inode = static_cast<std::uint64_t>(info.st_ino);
-    stamp.size = static_cast<std::uint64_t>(info.st_size);
-    stamp.mtime_ns = static_cast<std::int64_t>(info.st_mtim.tv_sec) * 1'000'000'000 +
-                     static_cast<std::int64_t>(info.st_mtim.tv_nsec);
-    return stamp;
-}
-
 void FileWatcher::watch(const std::filesystem::path& path) {
     path_ = path;
-    seen_ = stamp_file(path_);
+    seen_ = file_stamp(path_);
     last_check_ = Clock::now();
 }
 
 bool FileWatcher::poll(Clock::time_point now) {
     if (path_.empty() || now - last_check_ < interval_) return false;
     last_check_ = now;
-    const FileStamp current = stamp_file(path_);
+    const FileStamp current = file_stamp(path_);
     if (current == seen_) return false;
     seen_ = current;
     return true;
 }
 
 void FileWatcher::acknowledge() {
-    seen_ = stamp_file(path_);
+    seen_ = file_stamp(path_);
+}
+
+void FileSetWatcher::watch(const std::vector<std::filesystem::path>& files) {
+    std::vector<std::pair<std::filesystem::path, FileStamp>> next;
+    next.reserve(files.size());
+    for (const std::filesystem::path& file : files) {
+        const auto known = std::find_if(seen_.begin(), seen_.end(),
+                                        [&](const auto& entry) { return entry.first == file; });
+        next.emplace_back(file, known != seen_.end() ? known->second : file_stamp(file));
+    }
+    seen_ = std::move(next);
+}
+
+std::vector<std::filesystem::path> FileSetWatcher::poll(Clock::time_point now) {
+    std::vector<std::filesystem::path> changed;
+    if (!due(now)) return changed;
+    last_check_ = now;
+    for (auto& [file, seen] : seen_) {
+        const FileStamp current = file_stamp(file);
+        if (current == seen) continue;
+        seen = current;
+        changed.push_back(file);
+    }
+    return changed;
 }
 
 }  // namespace jt::view

@@ -1,24 +1,16 @@
 #pragma once
-// Notices when the scene file changes on disk. Polls the file's identity
-// (inode), size and modification time: editors that save by writing a new file
-// and renaming it over the old one change the inode even when size and time
-// look the same.
+// Notices when files change on disk: the scene file (FileWatcher) and the
+// model and image files it names (FileSetWatcher). Both poll the files'
+// stamps (jtracer/file_stamp.hpp), at most once per interval.
+
+#include "jtracer/file_stamp.hpp"
 
 #include <chrono>
-#include <cstdint>
 #include <filesystem>
+#include <utility>
+#include <vector>
 
 namespace jt::view {
-
-struct FileStamp {
-    bool exists = false;
-    std::uint64_t inode = 0;
-    std::uint64_t size = 0;
-    std::int64_t mtime_ns = 0;
-    bool operator==(const FileStamp&) const = default;
-};
-
-FileStamp stamp_file(const std::filesystem::path& path);
 
 class FileWatcher {
   public:
@@ -38,6 +30,29 @@ class FileWatcher {
   private:
     std::filesystem::path path_;
     FileStamp seen_;
+    Clock::duration interval_;
+    Clock::time_point last_check_{};
+};
+
+class FileSetWatcher {
+  public:
+    using Clock = std::chrono::steady_clock;
+    explicit FileSetWatcher(Clock::duration interval = std::chrono::milliseconds(200))
+        : interval_(interval) {}
+
+    // True when the interval since the last poll has passed.
+    bool due(Clock::time_point now = Clock::now()) const { return now - last_check_ >= interval_; }
+    // Watches exactly `files` from now on. A file watched before keeps the
+    // state last seen (so a change made meanwhile is still reported); a new
+    // one counts as seen as it is now.
+    void watch(const std::vector<std::filesystem::path>& files);
+    // The watched files that changed since the last poll (or since they were
+    // first watched), each once; empty before the interval has passed.
+    std::vector<std::filesystem::path> poll(Clock::time_point now = Clock::now());
+    const std::vector<std::pair<std::filesystem::path, FileStamp>>& files() const { return seen_; }
+
+  private:
+    std::vector<std::pair<std::filesystem::path, FileStamp>> seen_;
     Clock::duration interval_;
     Clock::time_point last_check_{};
 };

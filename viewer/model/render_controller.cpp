@@ -66,6 +66,11 @@ void RenderController::stop() {
     run->join();
 }
 
+void RenderController::forget_prepared() {
+    std::lock_guard lock(mutex_);
+    prepared_.reset();
+}
+
 void RenderController::pause() {
     std::lock_guard lock(mutex_);
     if (current_) current_->cancel();

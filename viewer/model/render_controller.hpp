@@ -38,6 +38,9 @@ class RenderController {
     // samples). The acceleration structure of the previous scene is reused when
     // only materials, lights, cameras or settings changed.
     void start(const Scene& scene, const RenderOptions& options);
+    // The next start() builds the scene from scratch: geometry and image maps
+    // are read again rather than reused, even from files that look unchanged.
+    void forget_prepared();
     // Stops the current job and waits for its thread; the pixels fetched so far stay.
     void stop();
     // Stops the current job so that resume() can continue it. Does not wait

@@ -57,7 +57,7 @@ TEST(FileWatcher, SeesDeletionAndReappearance) {
     watcher.watch(file);
     fs::remove(file);
     EXPECT_TRUE(watcher.poll());
-    EXPECT_FALSE(stamp_file(file).exists);
+    EXPECT_FALSE(file_stamp(file).exists);
     write_file(file, "abc");
     EXPECT_TRUE(watcher.poll());
 }

@@ -1,4 +1,6 @@
+#include "app_actions.hpp"
 #include "document_edits.hpp"
+#include "jtracer/texture.hpp"
 #include "panels/panels.hpp"
 #include "panels/property_fields.hpp"
 #include "panels/widgets.hpp"
@@ -85,6 +87,18 @@ bool has_child(const SceneDocument& doc, std::size_t primitive, std::string_view
     return false;
 }
 
+// A mesh's model file, and the button that reads it again (the watcher does
+// so by itself when the file's stamp moves; a copy tool may keep the stamp).
+void model_file_row(AppState& state, const Mesh& mesh, std::size_t i,
+                    std::function<void()>& command) {
+    ImGui::TextUnformatted(("model: " + mesh.file).c_str());
+    tooltip(asset_path(state.doc.scene, mesh.file).string().c_str());
+    same_line_if_fits("Reload model");
+    if (button("Reload model",
+               "Read the model file again and render it, even if the scene text did not change"))
+        command = [&state, i] { reload_model(state, i); };
+}
+
 }  // namespace
 
 void add_object_menu(AppState& state) {
@@ -137,6 +151,7 @@ void objects_panel(AppState& state) {
     if (button("Delete", "Remove this object's block from the text (Ctrl+Z brings it back)"))
         command = [&state, ref] { delete_block(state, ref); };
     shape_editor(p.shape);
+    if (const auto* mesh = std::get_if<Mesh>(&p.shape)) model_file_row(state, *mesh, i, command);
     ImGui::Separator();
     ImGui::TextDisabled("material");
     if (!has_child(state.doc, i, "material")) {

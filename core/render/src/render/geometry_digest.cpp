@@ -57,7 +57,8 @@ GeometryDigest digest_geometry(const Scene& scene) {
             d.add(m->shading);
             // A model file changed on disk is a new geometry.
             const FileStamp stamp = file_stamp(asset_path(scene, m->file));
-            d.add(static_cast<std::uint64_t>(stamp.size));
+            d.add(stamp.inode);
+            d.add(stamp.size);
             d.add(static_cast<std::uint64_t>(stamp.mtime_ns));
         }
         d.add(static_cast<std::uint64_t>(p.transforms.size()));

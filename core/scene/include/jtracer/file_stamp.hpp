@@ -1,32 +1,35 @@
 #pragma once
-// What tells an unchanged file from a changed one without reading it: its size
-// and modification time. Files a scene names (models, image maps) are read
-// again only when their stamp moves.
+// What tells an unchanged file from a changed one without reading it: its
+// identity (inode), size and modification time. Editors that save by writing
+// a new file and renaming it over the old one change the inode even when size
+// and time look the same. Files a scene names (models, image maps) are read
+// again, and the viewer reloads its scene, only when their stamp moves.
+
+#include <sys/stat.h>
 
 #include <cstdint>
 #include <filesystem>
-#include <system_error>
 
 namespace jt {
 
 struct FileStamp {
     bool exists = false;
-    std::uintmax_t size = 0;
+    std::uint64_t inode = 0;
+    std::uint64_t size = 0;
     std::int64_t mtime_ns = 0;
     bool operator==(const FileStamp&) const = default;
 };
 
 inline FileStamp file_stamp(const std::filesystem::path& path) {
-    std::error_code error;
-    FileStamp s;
-    s.size = std::filesystem::file_size(path, error);
-    if (error) return {};
-    const auto time = std::filesystem::last_write_time(path, error);
-    if (error) return {};
-    s.exists = true;
-    s.mtime_ns =
-        std::chrono::duration_cast<std::chrono::nanoseconds>(time.time_since_epoch()).count();
-    return s;
+    struct stat info {};
+    if (::stat(path.c_str(), &info) != 0) return {};
+    FileStamp stamp;
+    stamp.exists = true;
+    stamp.inode = static_cast<std::uint64_t>(info.st_ino);
+    stamp.size = static_cast<std::uint64_t>(info.st_size);
+    stamp.mtime_ns = static_cast<std::int64_t>(info.st_mtim.tv_sec) * 1'000'000'000 +
+                     static_cast<std::int64_t>(info.st_mtim.tv_nsec);
+    return stamp;
 }
 
 }  // namespace jt

@@ -16,4 +16,9 @@ namespace jt {
 Expected<std::shared_ptr<const Model>> shared_model(const std::filesystem::path& file,
                                                     const std::filesystem::path& folder);
 
+// The next shared_model of `file` reads it again even if its stamp has not
+// moved (a user's Reload: a copy tool may keep the time, and a glTF's buffer
+// files have stamps of their own). Models already shared stay as they are.
+void forget_model(const std::filesystem::path& file);
+
 }  // namespace jt

@@ -35,4 +35,11 @@ std::string texture_problem(const std::filesystem::path& path);
 // Where a file name of the scene is found: relative names from its asset_folder.
 std::filesystem::path asset_path(const Scene& scene, const std::string& name);
 
+// Every file the scene names, each once in scene order, as asset_path finds it.
+struct NamedFiles {
+    std::vector<std::filesystem::path> models;  // of meshes
+    std::vector<std::filesystem::path> images;  // of image maps
+};
+NamedFiles named_files(const Scene& scene);
+
 }  // namespace jt

@@ -66,4 +66,16 @@ Expected<std::shared_ptr<const Model>> shared_model(const std::filesystem::path&
     return model;
 }
 
+void forget_model(const std::filesystem::path& file) {
+    std::error_code error;
+    const std::string absolute = std::filesystem::absolute(file, error).lexically_normal().string();
+    Cache& c = cache();
+    std::lock_guard lock(c.mutex);
+    std::erase_if(c.entries, [&](const auto& e) {
+        if (e.first.first != absolute) return false;
+        if (auto model = e.second.model.lock()) std::erase(c.kept, model);
+        return true;
+    });
+}
+
 }  // namespace jt

@@ -7,8 +7,10 @@
 
 #include <stb_image.h>
 
+#include <algorithm>
 #include <limits>
 #include <utility>
+#include <variant>
 
 namespace jt {
 
@@ -111,6 +113,20 @@ std::filesystem::path asset_path(const Scene& scene, const std::string& name) {
     const std::filesystem::path file(name);
     if (file.is_absolute() || scene.asset_folder.empty()) return file;
     return std::filesystem::path(scene.asset_folder) / file;
+}
+
+NamedFiles named_files(const Scene& scene) {
+    NamedFiles files;
+    auto add = [&](std::vector<std::filesystem::path>& to, const std::string& name) {
+        if (name.empty()) return;
+        const std::filesystem::path path = asset_path(scene, name);
+        if (std::find(to.begin(), to.end(), path) == to.end()) to.push_back(path);
+    };
+    for (const Primitive& p : scene.primitives) {
+        if (const auto* mesh = std::get_if<Mesh>(&p.shape)) add(files.models, mesh->file);
+        add(files.images, p.material.image_map);
+    }
+    return files;
 }
 
 }  // namespace jt

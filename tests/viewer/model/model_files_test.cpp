@@ -1,0 +1,176 @@
+// The model and image files a scene names, changed under the viewer: the
+// display follows the new geometry or picture, a model that no longer loads
+// is reported where the scene names it and keeps the last image, Reload model
+// reads a file whose stamp did not move, and no unsaved scene edit is lost.
+
+#include "app_actions.hpp"
+#include "common/files.hpp"
+#include "jtracer/png.hpp"
+#include "model_loop.hpp"
+#include "viewer_test_files.hpp"
+
+#include <gtest/gtest.h>
+
+#include <filesystem>
+#include <fstream>
+#include <string>
+
+namespace jt::view {
+namespace {
+
+namespace fs = std::filesystem;
+using namespace jt::test;
+
+// A square facing the camera, one tile of the image map over it.
+const std::string kSceneText =
+    R"(render_settings { width: 48; height: 32; ambient_light: <1, 1, 1>; }
+cameras { perspective_camera { position: <0, 0, 5>; look_at: <0, 0, 0>; aspect: 1.5; } }
+scene {
+    mesh {
+        file: "model.obj";
+        material { image_map: "map.png"; ambient: <1, 1, 1>; diffuse: <0, 0, 0>; }
+    }
+}
+)";
+constexpr SourcePos kFileString{5, 15};  // where `"model.obj"` starts
+
+std::string square_obj(double half) {
+    const std::string h = std::to_string(half);
+    return "v -" + h + " -" + h + " 0\nv " + h + " -" + h + " 0\nv " + h + " " + h + " 0\nv -" + h +
+           " " + h + " 0\nvt 0 0\nvt 1 0\nvt 1 1\nvt 0 1\nf 1/1 2/2 3/3 4/4\n";
+}
+
+Image8 flat_image(std::uint8_t r, std::uint8_t g, std::uint8_t b) {
+    Image8 image(2, 2);
+    for (std::size_t i = 0; i < image.rgb.size(); i += 3) {
+        image.rgb[i] = r;
+        image.rgb[i + 1] = g;
+        image.rgb[i + 2] = b;
+    }
+    return image;
+}
+
+// Written beside and renamed over, as editors save.
+void save_as_editor(const fs::path& path, const std::string& bytes) {
+    const fs::path temp = fs::path(path).concat(".tmp");
+    write_file(temp, bytes);
+    fs::rename(temp, path);
+}
+
+class ViewerModelFiles : public ::testing::Test {
+  protected:
+    void SetUp() override {
+        write_file(dir.path() / "scene.jts", kSceneText);
+        write_file(dir.path() / "model.obj", square_obj(1.0));
+        ASSERT_TRUE(write_png(dir.path() / "map.png", flat_image(200, 40, 40)));
+        open_scene(state, dir.path() / "scene.jts");
+        ASSERT_TRUE(model.run_until_complete(state));
+        first = state.display;
+    }
+
+    // What a fresh viewer shows for the files as they are now.
+    Image8 fresh_render() {
+        AppState other{test_config()};
+        open_scene(other, dir.path() / "scene.jts");
+        EXPECT_TRUE(model.run_until_complete(other));
+        return other.display;
+    }
+
+    // Frames until the render that answers the change is complete.
+    void run_after_change() {
+        model.frame(state);  // the watcher sees the change
+        ASSERT_TRUE(model.run_until_complete(state));
+    }
+
+    ScratchDir dir{"model_files"};
+    ModelLoop model;
+    AppState state{test_config()};
+    Image8 first;
+};
+
+int count_colour(const Image8& image, std::uint8_t r, std::uint8_t g, std::uint8_t b) {
+    int n = 0;
+    for (std::size_t i = 0; i < image.rgb.size(); i += 3)
+        n += image.rgb[i] == r && image.rgb[i + 1] == g && image.rgb[i + 2] == b;
+    return n;
+}
+
+TEST_F(ViewerModelFiles, AChangedModelFileShowsTheNewGeometry) {
+    const int covered = count_colour(first, 200, 40, 40);
+    ASSERT_GT(covered, 0) << "the square shows the map's colour";
+    save_as_editor(dir.path() / "model.obj", square_obj(0.5));
+    run_after_change();
+    EXPECT_NE(state.display, first);
+    EXPECT_EQ(state.display, fresh_render());
+    const int now = count_colour(state.display, 200, 40, 40);
+    EXPECT_GT(now, 0);
+    EXPECT_LT(now, covered / 2) << "half the edge: about a quarter of the pixels";
+    EXPECT_FALSE(has_unsaved_edits(state.doc));
+}
+
+TEST_F(ViewerModelFiles, AChangedImageMapShowsTheNewPicture) {
+    ASSERT_TRUE(write_png(dir.path() / "map.png.tmp", flat_image(30, 90, 220)));
+    fs::rename(dir.path() / "map.png.tmp", dir.path() / "map.png");
+    run_after_change();
+    EXPECT_EQ(count_colour(state.display, 200, 40, 40), 0);
+    EXPECT_EQ(count_colour(state.display, 30, 90, 220), count_colour(first, 200, 40, 40));
+    EXPECT_EQ(state.display, fresh_render());
+}
+
+TEST_F(ViewerModelFiles, ABrokenModelIsLocatedAndKeepsTheLastImage) {
+    static_cast<void>(take_display_changes(state));  // shown
+    save_as_editor(dir.path() / "model.obj", "v 0 0 0\nf 1 2 3 oops\n\x01\x02garbage");
+    model.frame(state);
+    for (int i = 0; i < 5; ++i) model.frame(state);
+    ASSERT_FALSE(state.doc.diagnostics.empty());
+    const Diagnostic& d = state.doc.diagnostics.front();
+    EXPECT_EQ(d.severity, Severity::error);
+    EXPECT_EQ(d.pos, kFileString) << d.message;
+    EXPECT_NE(d.message.find("model.obj"), std::string::npos) << d.message;
+    EXPECT_EQ(state.display, first);
+    EXPECT_FALSE(take_display_changes(state)) << "nothing new to show";
+    EXPECT_NE(state.render_note.find("Not rendered"), std::string::npos) << state.render_note;
+
+    save_as_editor(dir.path() / "model.obj", square_obj(1.0));  // fixed
+    run_after_change();
+    EXPECT_TRUE(state.doc.diagnostics.empty()) << state.doc.diagnostics.front().message;
+    EXPECT_EQ(state.display, first);
+}
+
+TEST_F(ViewerModelFiles, ReloadModelReadsAFileWhoseStampDidNotMove) {
+    // Same size, same time, same inode: a copy tool that keeps the time.
+    const fs::path file = dir.path() / "model.obj";
+    const auto time = fs::last_write_time(file);
+    const std::string smaller = square_obj(0.5);
+    ASSERT_EQ(smaller.size(), square_obj(1.0).size());
+    {
+        std::ofstream out(file, std::ios::binary | std::ios::in | std::ios::out);
+        out << smaller;
+    }
+    fs::last_write_time(file, time);
+    for (int i = 0; i < 3; ++i) model.frame(state);
+    ASSERT_TRUE(state.started.has_value());
+    EXPECT_EQ(state.display, first) << "the watcher cannot tell";
+
+    reload_model(state, 0);
+    ASSERT_TRUE(model.run_until_complete(state));
+    EXPECT_NE(state.display, first);
+    EXPECT_LT(count_colour(state.display, 200, 40, 40), count_colour(first, 200, 40, 40) / 2);
+}
+
+TEST_F(ViewerModelFiles, AModelChangeKeepsTheUnsavedEdits) {
+    edit_scene(state, [](Scene& s) { s.primitives[0].material.ambient = Colour(0.5); });
+    ASSERT_TRUE(model.run_until_complete(state));
+    const Scene edited = state.doc.scene;
+    const Image8 before = state.display;
+    save_as_editor(dir.path() / "model.obj", square_obj(0.5));
+    run_after_change();
+    EXPECT_EQ(state.doc.scene, edited);
+    EXPECT_TRUE(has_unsaved_edits(state.doc));
+    EXPECT_FALSE(state.pending_reload) << "nothing to choose: the scene text did not change";
+    EXPECT_NE(state.display, before);
+    EXPECT_EQ(count_colour(state.display, 100, 20, 20), count_colour(fresh_render(), 200, 40, 40));
+}
+
+}  // namespace
+}  // namespace jt::view
