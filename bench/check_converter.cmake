@@ -1,6 +1,7 @@
 # Converts the showcase with jts-to-pov and checks what the POV-Ray scene says:
 # one object per primitive, the lights, the camera mirrored in z, no gamma,
-# glass and the checker; then the mesh scene's triangles and meshes as mesh2.
+# glass and the checker; then the mesh scene's triangles and meshes as mesh2,
+# and the globe scene's image maps on a plane, a sphere and a cylinder.
 # Also checks that a missing scene is an I/O error (exit 3) and writes nothing.
 include(${CMAKE_CURRENT_LIST_DIR}/converter_check.cmake)
 convert(${SCENE} ${OUT})
@@ -27,4 +28,13 @@ if(DEFINED MESH_SCENE)
     expect_count(" normal_vectors \\{ " 1)          # only the smooth one
     expect_count(" face_indices \\{ 20020," 2)      # the knot, twice (one file)
     expect_count("uv_mapping pigment \\{ image_map \\{ png " 1)
+endif()
+
+if(DEFINED GLOBE_SCENE)
+    convert(${GLOBE_SCENE} ${OUT}.globe.pov)
+    expect_count("\nplane \\{ [^\n]* map_type 0 \\} matrix <0.5, 0, -0, 0, 0, 0.5," 1)  # map_size 0.5
+    expect_count("\nsphere \\{ [^\n]* map_type 1 \\} matrix <0, 0, 1, 0, 1, 0, -1, 0, 0," 1)
+    expect_count("\nunion \\{\n cylinder \\{ [^\n]* open [^\n]* map_type 2 \\} matrix <0, 0, 1, 0, 1.6, 0," 1)
+    expect_count("\n disc \\{ [^\n]* map_type 0 \\} matrix <1.2, 0, 0, 0, 0, -1.2, 0, 1, 0, -0.6, 0, 0.6>" 2)
+    expect_count("uv_mapping" 0)
 endif()

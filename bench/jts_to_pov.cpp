@@ -11,7 +11,9 @@
 //                                  a coloured specular becomes its mean)
 //   reflection -> reflection, recurse_depth + 1 -> max_trace_level
 //   transmission, ior -> rgbt (transmit), interior { ior }
-//   checker -> checker; image_map on triangles and meshes -> uv_mapping image_map
+//   checker -> checker; image_map on triangles and meshes -> uv_mapping image_map;
+//   on spheres, cylinders and planes -> map_type 1, 2 (caps: discs with 0), 0,
+//   through a pigment matrix that turns POV-Ray's u, v into §13.4's
 //   triangle, mesh -> mesh2 (the model's vertex normals when smooth, its UVs)
 // with no gamma anywhere (assumed_gamma 1; render with File_Gamma=1.0).
 
@@ -29,6 +31,7 @@
 #include <cmath>
 #include <filesystem>
 #include <numbers>
+#include <optional>
 #include <string>
 #include <string_view>
 #include <vector>
@@ -51,9 +54,48 @@ std::string_view image_format(const std::string& file) {
     return "png";
 }
 
-// `uv_mapped`: the object carries texture coordinates (mesh2), so an
-// image_map follows them; other shapes show their pigment instead.
-void write_material(PovWriter& out, const jt::Material& m, const jt::Scene& scene, bool uv_mapped) {
+// How an image map lies on a shape in POV-Ray's terms: the mesh2's
+// uv_vectors, or a map_type with the map from the picture's space (where
+// POV-Ray's u, v are read) to the object's, as the rows of a `matrix`.
+struct ImageMapping {
+    bool uv = false;
+    int map_type = 0;  // 0 planar, 1 spherical, 2 cylindrical
+    std::array<Vec3, 4> rows{Vec3(1, 0, 0), Vec3(0, 1, 0), Vec3(0, 0, 1), Vec3(0.0)};
+};
+
+void write_rows(PovWriter& out, const std::array<Vec3, 4>& rows) {
+    out.printf(" matrix <");
+    for (std::size_t i = 0; i < rows.size(); ++i)
+        out.printf("%.9g, %.9g, %.9g%s", rows[i].x, rows[i].y, rows[i].z, i < 3 ? ", " : ">");
+}
+
+// POV-Ray's spherical and cylindrical u is the angle from +x towards +z
+// (its z, which is -z here); §13.4's is 0.5 + atan2(x, z) / 2 pi. The
+// picture's space turned a quarter about y (x to +z, z to -x) makes them one.
+// `height`: the cylinder's, over which v runs from 0 to 1 (spheres: 1).
+ImageMapping around_y(int map_type, const Vec3& centre, double height) {
+    return {false, map_type, {Vec3(0, 0, 1), Vec3(0, height, 0), Vec3(-1, 0, 0), mirror(centre)}};
+}
+
+// §13.4's cylinder caps, u = 0.5 + x / 2r and v = 0.5 + z / 2r with JTracer's
+// z (POV-Ray's -z), on POV-Ray's planar map (u, v = the picture space's x, y).
+ImageMapping cap_mapping(double r) {
+    return {false, 0, {Vec3(2 * r, 0, 0), Vec3(0, 0, -2 * r), Vec3(0, 1, 0), Vec3(-r, 0, r)}};
+}
+
+// §13.4's plane: u = p.e1 / map_size, v = p.e2 / map_size.
+ImageMapping plane_mapping(const Vec3& n, double map_size) {
+    Vec3 e1 = glm::cross(n, Vec3(0, 0, 1));
+    if (e1 == Vec3(0.0)) e1 = glm::cross(n, Vec3(1, 0, 0));
+    e1 = glm::normalize(e1);
+    const Vec3 e2 = glm::cross(n, e1);
+    return {
+        false, 0, {mirror(e1) * map_size, mirror(e2) * map_size, mirror(n) * map_size, Vec3(0.0)}};
+}
+
+// With no mapping the object shows its pigment where JTracer would show the image.
+void write_material(PovWriter& out, const jt::Material& m, const jt::Scene& scene,
+                    const std::optional<ImageMapping>& mapping) {
     // POV-Ray's diffuse is a number. A grey diffuse maps straight; a coloured
     // one is folded into the pigment, with the ambient scaled back so that
     // ambient * pigment is unchanged wherever the diffuse channel is not zero.
@@ -74,13 +116,16 @@ void write_material(PovWriter& out, const jt::Material& m, const jt::Scene& scen
         else
             out.vector((std::string(prefix) + "rgb ").c_str(), c);
     };
-    const bool image = !m.image_map.empty() && uv_mapped;
-    out.printf(image ? " texture { uv_mapping pigment { " : " texture { pigment { ");
+    const bool image = !m.image_map.empty() && mapping;
+    out.printf(image && mapping->uv ? " texture { uv_mapping pigment { " : " texture { pigment { ");
     if (image) {
         // Bilinear and linear (gamma 1), like JTracer's; the bottom row is v = 0 in both.
         const std::string path = std::filesystem::absolute(jt::asset_path(scene, m.image_map));
-        out.printf("image_map { %s \"%s\" gamma 1.0 interpolate 2 }", std::string(image_format(path)).c_str(),
-                   path.c_str());
+        out.printf("image_map { %s \"%s\" gamma 1.0 interpolate 2",
+                   std::string(image_format(path)).c_str(), path.c_str());
+        if (!mapping->uv) out.printf(" map_type %d", mapping->map_type);
+        out.printf(" }");
+        if (!mapping->uv) write_rows(out, mapping->rows);
     } else if (m.checker) {
         // The mirrored z flips the parity of floor(z) off the cube faces: the
         // two colours swap places.
@@ -152,6 +197,20 @@ bool write_model(PovWriter& out, const jt::Mesh& mesh, const jt::Scene& scene) {
     return true;
 }
 
+// A cylinder whose caps carry their own image mapping: an open tube and two
+// discs, one object for the transform.
+void write_mapped_cylinder(PovWriter& out, const jt::Cylinder& c, const jt::Material& m,
+                           const jt::Scene& scene) {
+    out.printf("union {\n cylinder { <0, 0, 0>, <0, %.9g, 0>, %.9g open", c.height, c.radius);
+    write_material(out, m, scene, around_y(2, Vec3(0.0), c.height));
+    out.printf(" }\n");
+    for (const double y : {0.0, c.height}) {
+        out.printf(" disc { <0, %.9g, 0>, <0, %d, 0>, %.9g", y, y > 0.0 ? 1 : -1, c.radius);
+        write_material(out, m, scene, cap_mapping(c.radius));
+        out.printf(" }\n");
+    }
+}
+
 void write_primitive(PovWriter& out, const jt::Primitive& p, const jt::Scene& scene) {
     // JTracer's own rule decides which primitives are left out.
     const auto placed = jt::object_transform(p.transforms);
@@ -159,15 +218,24 @@ void write_primitive(PovWriter& out, const jt::Primitive& p, const jt::Scene& sc
     const jt::Affine& world = std::get<jt::ObjectTransform>(placed).to_world;
     // Planes and spheres are written mirrored and then moved by the mirrored
     // map; the map of an untransformed primitive is the identity and is left out.
+    std::optional<ImageMapping> mapping;
     if (const auto* sphere = std::get_if<jt::Sphere>(&p.shape)) {
         out.vector("sphere { ", mirror(sphere->center));
         out.printf(", %.9g", sphere->radius);
+        mapping = around_y(1, sphere->center, 1.0);
     } else if (const auto* plane = std::get_if<jt::Plane>(&p.shape)) {
         auto normal = jt::unit_length(plane->normal);
         if (!normal) return;
         out.vector("plane { ", mirror(*normal));
         out.printf(", %.9g", plane->distance);
+        mapping = plane_mapping(*normal, p.material.map_size);
     } else if (const auto* cylinder = std::get_if<jt::Cylinder>(&p.shape)) {
+        if (!p.material.image_map.empty()) {
+            write_mapped_cylinder(out, *cylinder, p.material, scene);
+            if (!p.transforms.empty()) write_matrix(out, world);
+            out.printf(" }\n");
+            return;
+        }
         out.printf("cylinder { <0, 0, 0>, <0, %.9g, 0>, %.9g", cylinder->height, cylinder->radius);
     } else if (const auto* triangle = std::get_if<jt::Triangle>(&p.shape)) {
         if (glm::cross(triangle->b - triangle->a, triangle->c - triangle->a) == Vec3(0.0)) return;
@@ -178,9 +246,9 @@ void write_primitive(PovWriter& out, const jt::Primitive& p, const jt::Scene& sc
     } else if (const auto* mesh = std::get_if<jt::Mesh>(&p.shape)) {
         if (!write_model(out, *mesh, scene)) return;
     }
-    const bool uv_mapped =
-        std::holds_alternative<jt::Triangle>(p.shape) || std::holds_alternative<jt::Mesh>(p.shape);
-    write_material(out, p.material, scene, uv_mapped);
+    if (std::holds_alternative<jt::Triangle>(p.shape) || std::holds_alternative<jt::Mesh>(p.shape))
+        mapping = ImageMapping{true};
+    write_material(out, p.material, scene, mapping);
     if (!p.transforms.empty()) write_matrix(out, world);
     out.printf(" }\n");
 }
