@@ -57,6 +57,48 @@ TEST(NewBlock, APlaneBelowTheViewAndACylinderStandingInIt) {
     EXPECT_EQ(cylinder.transforms[0].vector.z, 5.0);
 }
 
+TEST(NewBlock, ATriangleStandingInTheViewFacingTheCamera) {
+    const Scene scene = looking({0, 2, 10}, {0, 2, 0});
+    const Primitive added = new_primitive(ShapeKind::triangle, scene);
+    const Triangle& t = std::get<Triangle>(added.shape);
+    // Counter-clockwise seen from the camera: the front faces it.
+    EXPECT_GT(glm::dot(glm::cross(t.b - t.a, t.c - t.a), Vec3(0, 0, 1)), 0.0);
+    for (const Vec3& corner : {t.a, t.b, t.c}) EXPECT_EQ(corner.z, 5.0);
+    EXPECT_EQ(t.a.y, t.b.y);
+    EXPECT_LT(t.a.y, 2.0);
+    EXPECT_GT(t.c.y, 2.0);
+    EXPECT_EQ(t.c.x, 0.0);
+    // As wide as a new sphere.
+    const Sphere sphere = std::get<Sphere>(new_primitive(ShapeKind::sphere, scene).shape);
+    EXPECT_NEAR(t.b.x - t.a.x, 2 * sphere.radius, 0.01);
+    EXPECT_EQ(t.uv_b, Triangle{}.uv_b);
+    EXPECT_TRUE(added.transforms.empty());
+}
+
+TEST(NewBlock, AMeshScaledToASpheresSizeAndCentredWhereItGoes) {
+    const Scene scene = looking({0, 2, 10}, {0, 2, 0});
+    Model model;  // spans x in [-1, 39], y in [0, 20]: 40 across
+    model.positions = {{-1, 0, 0}, {39, 0, 0}, {19, 20, 0}, {1000, 1000, 1000}};
+    model.triangles = {{0, 1, 2}};  // the fourth position is no triangle's corner
+    const Primitive mesh = new_mesh(scene, "models/m.obj", model);
+    EXPECT_EQ(std::get<Mesh>(mesh.shape).file, "models/m.obj");
+    EXPECT_EQ(std::get<Mesh>(mesh.shape).shading, "smooth");
+    EXPECT_EQ(mesh.material, new_material());
+    ASSERT_EQ(mesh.transforms.size(), 2u);
+    ASSERT_EQ(mesh.transforms[0].kind, TransformKind::scale);
+    ASSERT_EQ(mesh.transforms[1].kind, TransformKind::translate);
+    const double s = mesh.transforms[0].vector.x;
+    EXPECT_EQ(mesh.transforms[0].vector, Vec3(s));
+    const Sphere sphere = std::get<Sphere>(new_primitive(ShapeKind::sphere, scene).shape);
+    EXPECT_NEAR(40 * s, 2 * sphere.radius, 0.01);
+    // The box's centre (19, 10, 0), scaled then moved, lands halfway along the view.
+    const Vec3 centre = Vec3(19, 10, 0) * s + mesh.transforms[1].vector;
+    EXPECT_NEAR(centre.x, 0.0, 0.01);
+    EXPECT_NEAR(centre.y, 2.0, 0.01);
+    EXPECT_NEAR(centre.z, 5.0, 0.01);
+    EXPECT_EQ(number_text(s), "0.0207");  // three significant digits
+}
+
 TEST(NewBlock, MaterialLightAndCamera) {
     const Material m = new_material();
     EXPECT_GT(m.pigment.x * m.diffuse.x, 0.5);  // lit, it shows

@@ -283,7 +283,8 @@ class Monkey {
         switch (pick(10)) {
             case 0:
                 last_event_ = "add object";
-                add_object(state_, kShapeKinds[static_cast<std::size_t>(pick(3))]);
+                add_object(state_, kShapeKinds[static_cast<std::size_t>(
+                                       pick(static_cast<int>(kShapeKinds.size())))]);
                 break;
             case 1:
                 last_event_ = "add light";

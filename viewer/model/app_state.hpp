@@ -153,6 +153,7 @@ struct AppState {
     ViewerSettings saved_settings;             // as in config.settings_file
 
     std::string open_path_input;
+    std::string new_mesh_file;  // the Add object menu's model file field
     std::string save_image_path = "jtracer-view.png";
     std::string message;  // the result of the last command, for the status line
     bool quit = false;

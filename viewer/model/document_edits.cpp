@@ -3,8 +3,10 @@
 #include "app_actions.hpp"
 #include "jtracer/block_edit.hpp"
 #include "jtracer/camera_edit.hpp"
+#include "jtracer/model_cache.hpp"
 #include "jtracer/parser.hpp"
 #include "jtracer/schema.hpp"
+#include "jtracer/texture.hpp"
 #include "jtracer/transform_edit.hpp"
 #include "ui_rounding.hpp"
 
@@ -72,6 +74,43 @@ bool add_object(AppState& state, ShapeKind kind) {
     return edit_text_structure(
         state, [&](const SceneText& s) { return add_primitive(s, added); },
         "Added a " + std::string(keyword_of(kind)));
+}
+
+namespace {
+
+// `file` as a mesh of the scene names it: relative to the scene's folder.
+std::string scene_file_name(const Scene& scene, const std::string& file) {
+    const std::filesystem::path path(file);
+    if (!path.is_absolute() || scene.asset_folder.empty()) return file;
+    std::error_code error;
+    const std::filesystem::path folder = std::filesystem::absolute(scene.asset_folder, error);
+    const std::filesystem::path inside = path.lexically_normal().lexically_relative(folder);
+    if (error || inside.empty() || *inside.begin() == "..") return file;
+    return inside.generic_string();
+}
+
+}  // namespace
+
+bool add_mesh(AppState& state, const std::string& file) {
+    if (file.empty()) {
+        state.message = "Type the model file's path first";
+        return false;
+    }
+    const std::string name = scene_file_name(state.doc.scene, file);
+    const auto model =
+        shared_model(asset_path(state.doc.scene, name), state.doc.scene.asset_folder);
+    if (!model) {
+        state.message = "Not added: " + model.error().message;
+        return false;
+    }
+    if ((*model)->triangles.empty()) {
+        state.message = "Not added: '" + name + "' holds no triangle of non-zero area";
+        return false;
+    }
+    const Primitive added = new_mesh(viewed_scene(state), name, **model);
+    return edit_text_structure(
+        state, [&](const SceneText& s) { return add_primitive(s, added); },
+        "Added a mesh of " + name);
 }
 
 bool add_light(AppState& state) {

@@ -29,6 +29,12 @@ bool edit_text_structure(AppState& state,
                          const std::string& done);
 
 bool add_object(AppState& state, ShapeKind kind);  // in front of the view's camera
+// A mesh of the model `file` (relative to the scene's folder, as a mesh's
+// `file` is; an absolute path inside that folder is written relative to it)
+// in front of the view's camera, scaled to a new sphere's size (new_mesh).
+// A file that does not load, or holds no triangle, adds nothing and the
+// message says why.
+bool add_mesh(AppState& state, const std::string& file);
 bool add_light(AppState& state);
 bool duplicate_block(AppState& state, BlockRef block);
 bool delete_block(AppState& state, BlockRef block);

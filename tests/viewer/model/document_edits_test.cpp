@@ -6,6 +6,7 @@
 #include "document_edits.hpp"
 #include "app_actions.hpp"
 #include "common/files.hpp"
+#include "jtracer/model_file.hpp"
 #include "jtracer/new_block.hpp"
 #include "jtracer/parser.hpp"
 #include "model_loop.hpp"
@@ -67,6 +68,46 @@ TEST(DocumentEdits, AddDuplicateDeleteThenSaveGivesTheExpectedSceneAndKeepsOther
     EXPECT_EQ(after.substr(sphere_end, sphere.size()), sphere);
     EXPECT_EQ(after.find("point_light"), std::string::npos);
     EXPECT_EQ(after.substr(after.size() - 2), "}\n");
+}
+
+TEST(DocumentEdits, AddTriangleAndMeshThenSaveGivesTheExpectedSceneAndKeepsOtherBytes) {
+    const std::filesystem::path path = scene_copy("document_edits_mesh");
+    const std::filesystem::path model_file = path.parent_path() / "models" / "quad.obj";
+    std::filesystem::create_directories(model_file.parent_path());
+    write_file(model_file, "v 0 0 0\nv 4 0 0\nv 4 2 0\nv 0 2 0\nf 1 2 3 4\n");
+    const std::string before = file_text(path);
+    AppState state(test_config());
+    open_scene(state, path);
+    ASSERT_TRUE(state.doc.loaded) << state.message;
+    Scene expected = state.doc.scene;
+    Scene view;
+    view.cameras.push_back(expected.cameras[0]);
+
+    ASSERT_TRUE(add_object(state, ShapeKind::triangle)) << state.message;
+    expected.primitives.push_back(new_primitive(ShapeKind::triangle, view));
+    EXPECT_FALSE(add_mesh(state, "models/none.obj"));
+    EXPECT_NE(state.message.find("none.obj"), std::string::npos) << state.message;
+    // An absolute path inside the scene's folder is written relative to it.
+    ASSERT_TRUE(add_mesh(state, model_file.string())) << state.message;
+    const Expected<Model> quad = read_model(model_file, path.parent_path());
+    ASSERT_TRUE(quad);
+    expected.primitives.push_back(new_mesh(view, "models/quad.obj", *quad));
+    EXPECT_TRUE(state.doc.scene == expected);
+
+    ASSERT_TRUE(save_scene(state)) << state.message;
+    const std::string after = file_text(path);
+    const ParseResult reread = parse_scene(after);
+    ASSERT_TRUE(reread.ok()) << after;
+    EXPECT_TRUE(reread.scene == expected) << after;
+    // The two new blocks go after the last item; every byte before and after them stays.
+    const std::size_t close = before.rfind("}\n");
+    EXPECT_EQ(after.substr(0, close), before.substr(0, close));
+    EXPECT_EQ(after.substr(after.size() - (before.size() - close)), before.substr(close));
+    EXPECT_NE(after.find("file: \"models/quad.obj\""), std::string::npos) << after;
+    // And it renders: the model loads from the scene's folder.
+    ModelLoop model;
+    ASSERT_TRUE(model.run_until_complete(state));
+    EXPECT_TRUE(state.render_note.empty()) << state.render_note;
 }
 
 TEST(DocumentEdits, ATextErrorKeepsTheImageAndIsListedAtItsLineTheFixRendersAgain) {

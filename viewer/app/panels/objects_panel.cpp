@@ -110,6 +110,19 @@ void add_object_menu(AppState& state) {
             if (ImGui::MenuItem(label.c_str())) add_object(state, kind);
             note_item(label.c_str(), false);
         }
+        ImGui::Separator();
+        ImGui::TextDisabled("mesh of a model file (OBJ, PLY, STL, glTF)");
+        const bool enter =
+            ImGui::InputTextWithHint("##mesh_file", "models/knot.ply", &state.new_mesh_file,
+                                     ImGuiInputTextFlags_EnterReturnsTrue);
+        note_item("Mesh file", false);
+        tooltip("The model's path, relative to the scene's folder");
+        ImGui::SameLine();
+        if ((button("Add mesh", "Add a mesh of this file in front of the camera, scaled to fit",
+                    state.new_mesh_file.empty() ? "Type the path of a model file first" : "") ||
+             enter) &&
+            !state.new_mesh_file.empty() && add_mesh(state, state.new_mesh_file))
+            ImGui::CloseCurrentPopup();
         ImGui::EndPopup();
     }
 }

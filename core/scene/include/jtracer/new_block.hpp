@@ -5,6 +5,7 @@
 // units across and in one of hundreds; numbers are rounded to three
 // significant digits of that scale, so the text stays short.
 
+#include "jtracer/model_file.hpp"
 #include "jtracer/scene.hpp"
 
 #include <array>
@@ -12,11 +13,12 @@
 
 namespace jt {
 
-enum class ShapeKind { sphere, plane, cylinder };
-inline constexpr std::array<ShapeKind, 3> kShapeKinds{ShapeKind::sphere, ShapeKind::plane,
-                                                      ShapeKind::cylinder};
+// The shapes new_primitive makes; a mesh needs its file (new_mesh).
+enum class ShapeKind { sphere, plane, cylinder, triangle };
+inline constexpr std::array<ShapeKind, 4> kShapeKinds{ShapeKind::sphere, ShapeKind::plane,
+                                                      ShapeKind::cylinder, ShapeKind::triangle};
 
-// "sphere", "plane", "cylinder": the keyword of the kind (schema.hpp).
+// "sphere", "plane", "cylinder", "triangle": the keyword of the kind (schema.hpp).
 std::string_view keyword_of(ShapeKind kind);
 
 // A light grey, softly lit, slightly shiny material (the default one is black).
@@ -25,8 +27,14 @@ Material new_material();
 // A primitive of that kind with new_material(), in front of the active camera
 // halfway to its look_at point: a sphere and a standing cylinder a fifth of
 // the view's height there across, a plane below that point facing the
-// camera's up.
+// camera's up, and a triangle as wide as that sphere standing upright and
+// facing the camera (counter-clockwise seen from it).
 Primitive new_primitive(ShapeKind kind, const Scene& scene);
+
+// A mesh of `file` (a name as the scene's `file` holds it) where new_primitive
+// puts a sphere, `model` (what the file holds) scaled uniformly so that its
+// largest extent is that sphere's diameter and its bounding box centred there.
+Primitive new_mesh(const Scene& scene, const std::string& file, const Model& model);
 
 // A white light of intensity 0.7 above the active camera.
 PointLight new_light(const Scene& scene);

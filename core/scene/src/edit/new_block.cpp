@@ -7,7 +7,9 @@
 #include <glm/geometric.hpp>
 #include <glm/trigonometric.hpp>
 
+#include <algorithm>
 #include <cmath>
+#include <limits>
 
 namespace jt {
 
@@ -17,8 +19,8 @@ namespace {
 struct View {
     Vec3 eye{0.0};
     Vec3 forward{0.0, 0.0, -1.0};
-    Vec3 up{0.0, 1.0, 0.0};
-    double distance = 5.0;  // to the look_at point
+    Vec3 up{0.0, 1.0, 0.0};  // at right angles to forward
+    double distance = 5.0;   // to the look_at point
     double fov = 45.0;
     // Half the height the view spans at `at` from the eye.
     double half_height(double at) const { return at * std::tan(glm::radians(fov) / 2.0); }
@@ -70,6 +72,8 @@ std::string_view keyword_of(ShapeKind kind) {
             return schema_of<Plane>().keyword;
         case ShapeKind::cylinder:
             return schema_of<Cylinder>().keyword;
+        case ShapeKind::triangle:
+            return schema_of<Triangle>().keyword;
     }
     return schema_of<Sphere>().keyword;
 }
@@ -84,11 +88,26 @@ Material new_material() {
     return m;
 }
 
-Primitive new_primitive(ShapeKind kind, const Scene& scene) {
-    const View view = active_view(scene);
+namespace {
+
+// Where a new object goes, and how big it is: the point halfway along the
+// view, and half the view's height there.
+struct Placement {
+    Vec3 at{0.0};
+    double half = 1.0;
+};
+
+Placement placement(const View& view) {
     const double along = view.distance / 2.0;
     const double half = view.half_height(along);
-    const Vec3 at = rounded(view.eye + view.forward * along, half);
+    return {rounded(view.eye + view.forward * along, half), half};
+}
+
+}  // namespace
+
+Primitive new_primitive(ShapeKind kind, const Scene& scene) {
+    const View view = active_view(scene);
+    const auto [at, half] = placement(view);
     Primitive p;
     p.material = new_material();
     switch (kind) {
@@ -108,7 +127,40 @@ Primitive new_primitive(ShapeKind kind, const Scene& scene) {
                                     rounded(at - Vec3{0.0, c.height / 2.0, 0.0}, half), 0.0});
             break;
         }
+        case ShapeKind::triangle: {
+            const double r = half / 5.0;
+            const Vec3 right = glm::cross(view.forward, view.up);
+            Triangle t;
+            t.a = rounded(at - right * r - view.up * (r / 2.0), half);
+            t.b = rounded(at + right * r - view.up * (r / 2.0), half);
+            t.c = rounded(at + view.up * r, half);
+            p.shape = t;
+            break;
+        }
     }
+    return p;
+}
+
+Primitive new_mesh(const Scene& scene, const std::string& file, const Model& model) {
+    const auto [at, half] = placement(active_view(scene));
+    Vec3 low(std::numeric_limits<double>::infinity());
+    Vec3 high(-std::numeric_limits<double>::infinity());
+    for (const auto& triangle : model.triangles)
+        for (const std::uint32_t corner : triangle) {
+            low = glm::min(low, Vec3(model.positions[corner]));
+            high = glm::max(high, Vec3(model.positions[corner]));
+        }
+    Primitive p;
+    p.material = new_material();
+    p.shape = Mesh{file, std::string(kSmoothShading)};
+    if (model.triangles.empty()) return p;
+    const Vec3 extent = high - low;
+    const double largest = std::max({extent.x, extent.y, extent.z});
+    const double diameter = 2.0 * half / 5.0;
+    const double s = largest > 0.0 ? rounded(diameter / largest, diameter / largest) : 1.0;
+    if (s != 1.0) p.transforms.push_back({TransformKind::scale, Vec3(s), 0.0});
+    p.transforms.push_back(
+        {TransformKind::translate, rounded(at - (low + high) * (s / 2.0), half), 0.0});
     return p;
 }
 
