@@ -33,6 +33,7 @@ using namespace jt::view;
 struct Arguments {
     std::string scene;
     std::string screenshot;
+    std::string save_render;
     std::string size = "1280x800";
     bool exit_when_done = false;
     double timeout_seconds = 600;
@@ -114,6 +115,12 @@ int run_screenshot(const Arguments& args) {
                   << "); wrote the screenshot as it stands to " << args.screenshot << "\n";
         return 1;
     }
+    if (!args.save_render.empty())
+        if (const jt::Expected<void> saved = jt::view::save_image(args.save_render, state.display);
+            !saved) {
+            std::cerr << "jtracer-view: " << saved.error().message << "\n";
+            return 1;
+        }
     std::cerr << "jtracer-view: wrote " << args.screenshot << " (" << args.width << "x"
               << args.height << ")\n";
     return 0;
@@ -244,6 +251,9 @@ int main(int argc, char** argv) {
     cli.add_option("--screenshot", args.screenshot,
                    "render headless (OSMesa, no display), write the whole window to this PNG "
                    "once the render completes, and exit");
+    cli.add_option("--save-render", args.save_render,
+                   "with --screenshot: also write the rendered image itself (not the window) "
+                   "to this BMP or PNG, the pixels jtracer-cli writes for the scene");
     cli.add_option("--size", args.size, "window or screenshot size, WxH")->capture_default_str();
     cli.add_flag("--exit-when-done", args.exit_when_done,
                  "quit once the render completes (for tests)");
@@ -257,6 +267,10 @@ int main(int argc, char** argv) {
                 "--size", "takes WxH between 64x64 and 8192x8192, got '" + args.size + "'");
         if (!args.screenshot.empty() && image_format_for(args.screenshot) != ImageFormat::png)
             throw CLI::ValidationError("--screenshot", "writes a PNG: name it .png");
+        if (!args.save_render.empty() &&
+            (args.screenshot.empty() || image_format_for(args.save_render) == ImageFormat::unknown))
+            throw CLI::ValidationError("--save-render",
+                                       "goes with --screenshot and writes a .bmp or .png");
     };
     if (const std::optional<int> code =
             jt::frontend::parse_command_line(cli, argc, argv, "jtracer-view", checks))

@@ -1,0 +1,72 @@
+// The language 1.1 example scenes (meshes, glass, image maps) at a small size:
+// jtracer-view's render and jtracer-mpi's image on two ranks are jtracer-cli's,
+// byte for byte.
+
+#include "common/files.hpp"
+#include "common/scratch_dir.hpp"
+#include "jtracer/png.hpp"
+
+#include <gtest/gtest.h>
+
+#include <filesystem>
+#include <string>
+
+namespace jt {
+namespace {
+
+namespace fs = std::filesystem;
+using test::ProgramRun;
+
+const fs::path kScenes = fs::path(JT_SOURCE_DIR) / "scenes";
+
+class ExampleScenes : public test::ScratchTest, public ::testing::WithParamInterface<const char*> {
+  protected:
+    // The scene at 160x90 in `dir`, beside links to the models and maps it names.
+    std::string small_copy() {
+        std::string text = test::read_file(kScenes / (std::string(GetParam()) + ".jts"));
+        const std::string size = "    width: 800;\n    height: 450;\n";
+        const std::size_t at = text.find(size);
+        EXPECT_NE(at, std::string::npos) << "the scene's size moved";
+        if (at != std::string::npos)
+            text.replace(at, size.size(), "    width: 160;\n    height: 90;\n");
+        test::write_file(dir / "scene.jts", text);
+        for (const char* folder : {"models", "maps"})
+            fs::create_directory_symlink(kScenes / folder, dir / folder);
+        return "scene.jts";
+    }
+
+    static Image8 pixels(const fs::path& png) {
+        Expected<Image8> image = read_png(png);
+        EXPECT_TRUE(image) << png << ": " << image.error().message;
+        return image ? *image : Image8{};
+    }
+};
+
+TEST_P(ExampleScenes, TheViewerAndTheFarmRenderTheClisBytes) {
+    const std::string scene = small_copy();
+    ProgramRun cli = run_shell("'" JT_CLI "' " + scene + " -q -o cli.png");
+    ASSERT_EQ(cli.code, 0) << cli.err;
+    const Image8 expected = pixels(dir / "cli.png");
+    ASSERT_EQ(expected.width, 160);
+    ASSERT_EQ(expected.height, 90);
+
+    ProgramRun view = run_shell("'" JT_VIEWER_EXE "' " + scene +
+                                " --screenshot window.png --size 640x400 --save-render view.png"
+                                " --timeout 120");
+    ASSERT_EQ(view.code, 0) << view.err;
+    EXPECT_TRUE(pixels(dir / "view.png") == expected) << "jtracer-view's render differs";
+
+#ifdef JT_MPI
+    ProgramRun mpi = run_shell("env ASAN_OPTIONS=detect_leaks=0 '" JT_MPIEXEC
+                               "' --oversubscribe --allow-run-as-root -np 2 '" JT_MPI "' " +
+                               scene + " --tile-size 16 -q -o mpi.png");
+    ASSERT_EQ(mpi.code, 0) << mpi.err;
+    EXPECT_EQ(test::read_file(dir / "mpi.png"), test::read_file(dir / "cli.png"))
+        << "two ranks must give jtracer-cli's bytes";
+#endif
+}
+
+INSTANTIATE_TEST_SUITE_P(Language11, ExampleScenes, ::testing::Values("mesh", "glass", "globe"));
+
+}  // namespace
+}  // namespace jt
