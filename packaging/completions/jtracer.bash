@@ -58,7 +58,7 @@ _jtracer() {
         positional='*.@(bmp|BMP)'
         ;;
     jtracer-view)
-        options='-h --help --version --screenshot --size --exit-when-done --timeout'
+        options='-h --help --version --screenshot --save-render --size --exit-when-done --timeout'
         ;;
     *) return ;;
     esac
@@ -76,7 +76,7 @@ _jtracer() {
         _jtracer_files '*.@(png|PNG)'
         return
         ;;
-    --expect)
+    --expect | --save-render)
         _jtracer_files '*.@(bmp|BMP|png|PNG)'
         return
         ;;
