@@ -45,7 +45,7 @@ class ViewerGl : public ::testing::Test {
 
 TEST_F(ViewerGl, TextureAndScreenShowExactlyTheCoresImage) {
     state.show_ui = false;
-    state.fit = FitMode::actual_pixels;
+    state.image_view = actual_pixels_view();
     open_scene(state, kScene);
     ASSERT_TRUE(viewer.run_until_complete(state, kTimeout)) << state.render_note;
     const Image8 expected = core_render(state.doc.scene, 0);
@@ -66,7 +66,7 @@ TEST_F(ViewerGl, TextureAndScreenShowExactlyTheCoresImage) {
 TEST_F(ViewerGl, OnHiDpiActualPixelsAreFramebufferPixels) {
     viewer.set_framebuffer_scale(2.0f);  // a 160x120 window on a 320x240 framebuffer
     state.show_ui = false;
-    state.fit = FitMode::actual_pixels;
+    state.image_view = actual_pixels_view();
     open_scene(state, kScene);
     ASSERT_TRUE(viewer.run_until_complete(state, kTimeout));
     const Image8 screen = viewer.screenshot();

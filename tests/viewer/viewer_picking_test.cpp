@@ -5,6 +5,7 @@
 #include "app_actions.hpp"
 #include "headless.hpp"
 #include "jtracer/render_job.hpp"
+#include "keys.hpp"
 #include "picking.hpp"
 #include "viewer_test_files.hpp"
 
@@ -33,7 +34,7 @@ class ViewerPicking : public ::testing::Test {
         const float x0 = panel->rect.x1, x1 = static_cast<float>(viewer.width());
         const ScreenRect area{x0, 0, x1, find_item(viewer.ui_items(), "status")->rect.y0};
         const ScreenRect where =
-            place_image(state.display.width, state.display.height, area, 1.0f, state.fit);
+            place_image(state.display.width, state.display.height, area, 1.0f, state.image_view);
         const WindowPoint p =
             image_to_window(where, state.display.width, state.display.height, {x, y});
         return p;
@@ -88,6 +89,106 @@ TEST_F(ViewerPicking, HoveringThePictureInspectsThePixelUnderTheMouse) {
     EXPECT_NE(state.inspected.find("sphere 2 at distance"), std::string::npos) << state.inspected;
     viewer.move_mouse(state, 20, 20);  // over the panel
     EXPECT_TRUE(state.inspected.empty());
+}
+
+// Zoomed to 4 and panned with the mouse as a user would: the image is larger
+// than the window's image area, so the pan moves it.
+class ViewerZoomedPicking : public ViewerPicking {
+  protected:
+    void SetUp() override {
+        ViewerPicking::SetUp();
+        edit_scene(state, [](Scene& s) {
+            s.settings.width = 256;
+            s.settings.height = 192;
+        });
+        ASSERT_TRUE(viewer.run_until_complete(state, kTimeout));
+        const ScreenRect area = viewer.image_area();
+        const float cx = (area.x0 + area.x1) * 0.5f, cy = (area.y0 + area.y1) * 0.5f;
+        viewer.move_mouse(state, cx, cy);
+        viewer.press_key(state, keys::digit('1'));  // 1:1
+        EXPECT_FLOAT_EQ(state.image_view.zoom, 1.0f);
+        viewer.press_key(state, keys::equal);
+        viewer.press_key(state, keys::equal);
+        ASSERT_FLOAT_EQ(state.image_view.zoom, 4.0f);
+        viewer.drag(state, 2, cx, cy, cx - 150, cy + 90);  // middle: pan the image
+        ASSERT_FALSE(state.free_camera_active) << "the pan moves the image, not the camera";
+        ASSERT_FLOAT_EQ(viewer.image_rect().width(), 1024.0f);
+        ASSERT_NE(state.image_view.pan_x, 0.0f);
+        ASSERT_NE(state.image_view.pan_y, 0.0f);
+    }
+    // The window point of the centre of image pixel (x, y) as the last frame drew it.
+    WindowPoint zoomed_point(int x, int y) const {
+        return image_to_window(viewer.image_rect(), 256, 192, {x + 0.5, y + 0.5});
+    }
+    // The point shows the image: inside the image's area, not under its toolbar.
+    bool shows_image(WindowPoint p) const {
+        const UiItem* toolbar = find_item(viewer.ui_items(), "image toolbar");
+        return viewer.image_area().contains(p.x, p.y) &&
+               !(toolbar && toolbar->rect.contains(p.x, p.y));
+    }
+};
+
+TEST_F(ViewerZoomedPicking, AClickSelectsWhatTheUnzoomedPixelShows) {
+    const std::shared_ptr<const PreparedFrame> frame = shown_frame(state);
+    ASSERT_TRUE(frame);
+    int checked = 0, hits = 0;
+    for (int y = 0; y < 192; y += 21)
+        for (int x = 0; x < 256; x += 23) {
+            const WindowPoint p = zoomed_point(x, y);
+            if (!shows_image(p)) continue;  // panned out of view
+            viewer.drag(state, 0, p.x, p.y, p.x, p.y);
+            const std::optional<PickedPrimitive> pick = pick_primitive(*frame, x, y);
+            const Selection expected =
+                pick ? Selection{Kind::primitive, pick->primitive} : Selection{};
+            if (state.selection.kind == Kind::light) continue;  // a marker is in front
+            EXPECT_EQ(state.selection, expected) << "pixel " << x << ", " << y;
+            ++checked;
+            hits += pick.has_value();
+        }
+    EXPECT_GT(checked, 20);
+    EXPECT_GT(hits, 5);
+    EXPECT_FALSE(state.free_camera_active);
+}
+
+TEST_F(ViewerZoomedPicking, TheInspectorReportsThePixelUnderTheMouse) {
+    int checked = 0;
+    for (int y = 0; y < 192; y += 23)
+        for (int x = 0; x < 256; x += 29) {
+            const WindowPoint p = zoomed_point(x, y);
+            if (!shows_image(p)) continue;
+            viewer.move_mouse(state, p.x, p.y);
+            const std::uint8_t* rgb = state.display.pixel(x, y);
+            char expected[64];
+            std::snprintf(expected, sizeof expected, "x %d, y %d   RGB %d %d %d", x, 191 - y,
+                          rgb[0], rgb[1], rgb[2]);
+            EXPECT_EQ(state.inspected.rfind(expected, 0), 0u)
+                << state.inspected << " at " << p.x << ", " << p.y << " expected " << expected;
+            ++checked;
+        }
+    EXPECT_GT(checked, 10);
+    // Off the area (the image reaches past it under the panel): nothing.
+    const ScreenRect r = viewer.image_rect();
+    if (r.x0 < viewer.image_area().x0) {
+        viewer.move_mouse(state, viewer.image_area().x0 - 5, (r.y0 + r.y1) * 0.5f);
+        EXPECT_TRUE(state.inspected.empty()) << state.inspected;
+    }
+}
+
+TEST_F(ViewerZoomedPicking, CtrlWheelZoomsAboutTheMouseAndFitShowsItAll) {
+    const WindowPoint p = zoomed_point(120, 100);
+    viewer.scroll(state, p.x, p.y, 2, /*ctrl=*/true);
+    EXPECT_NEAR(state.image_view.zoom, 4.0f * 1.25f * 1.25f, 1e-4f);
+    EXPECT_FALSE(state.free_camera_active) << "Ctrl+wheel zooms the image, not the camera";
+    const WindowPoint after = zoomed_point(120, 100);
+    EXPECT_NEAR(after.x, p.x, 6.25f) << "the pixel under the mouse stays under it";
+    EXPECT_NEAR(after.y, p.y, 6.25f);
+    viewer.press_key(state, keys::letter('F'));
+    EXPECT_TRUE(state.image_view.fit);
+    const ScreenRect r = viewer.image_rect(), area = viewer.image_area();
+    EXPECT_GE(r.x0, area.x0 - 1);
+    EXPECT_LE(r.x1, area.x1 + 1);
+    EXPECT_GE(r.y0, area.y0 - 1);
+    EXPECT_LE(r.y1, area.y1 + 1);
 }
 
 TEST_F(ViewerPicking, TheObjectsListDrawsOnlyTheRowsInViewOfAHundredThousand) {

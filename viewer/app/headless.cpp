@@ -102,12 +102,14 @@ void HeadlessViewer::move_mouse(AppState& state, float x, float y) {
     frame(state);
 }
 
-void HeadlessViewer::scroll(AppState& state, float x, float y, float steps) {
+void HeadlessViewer::scroll(AppState& state, float x, float y, float steps, bool ctrl) {
     ImGuiIO& io = ImGui::GetIO();
     io.MousePos = ImVec2(x, y);
     io.MouseWheel = steps;
+    io.KeyCtrl = ctrl;
     frame(state);
     io.MouseWheel = 0.0f;
+    io.KeyCtrl = false;
     frame(state);
 }
 

@@ -31,8 +31,8 @@ class HeadlessViewer {
     bool click(AppState& state, const std::string& label);
     // Moves the mouse to (x, y) for one frame.
     void move_mouse(AppState& state, float x, float y);
-    // Turns the wheel by `steps` with the mouse at (x, y).
-    void scroll(AppState& state, float x, float y, float steps);
+    // Turns the wheel by `steps` with the mouse at (x, y) (Ctrl held: zooms the image).
+    void scroll(AppState& state, float x, float y, float steps, bool ctrl = false);
     // Runs frames until the render of the current scene is complete and shown,
     // then `settle_frames` more so the UI shows the final state. False on timeout
     // or when there is nothing to render.
@@ -62,6 +62,10 @@ class HeadlessViewer {
     const Presenter& presenter() const { return frame_state_.presenter; }
     // The selection as the last frame drew it over the image.
     const SelectionOverlay& overlay() const { return frame_state_.overlay; }
+    // Where the last frame drew the image (zoomed and panned), and the part of
+    // the window it may show in.
+    ScreenRect image_rect() const { return frame_state_.image_rect; }
+    ScreenRect image_area() const { return frame_state_.image_area; }
     // What the last frame drew where (ui_items.hpp).
     const std::vector<UiItem>& ui_items() const { return frame_state_.ui_items; }
 

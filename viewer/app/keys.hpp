@@ -11,6 +11,14 @@ inline constexpr int space = 32;
 inline constexpr int letter(char c) {
     return c;
 }  // GLFW: 'A'..'Z' are their ASCII codes
+inline constexpr int digit(char c) {
+    return c;
+}  // GLFW: '0'..'9' too
+inline constexpr int minus = 45;
+inline constexpr int equal = 61;  // '+' on most layouts is Shift and this key
+inline constexpr int keypad_1 = 321;
+inline constexpr int keypad_subtract = 333;
+inline constexpr int keypad_add = 334;
 inline constexpr int escape = 256;
 inline constexpr int enter = 257;
 inline constexpr int tab = 258;

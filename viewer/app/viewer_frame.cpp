@@ -21,6 +21,8 @@ namespace jt::view {
 namespace {
 
 constexpr const char* unsaved_popup = "Unsaved edits";
+// How much one step of Ctrl+wheel zooms the image.
+constexpr float kWheelZoomFactor = 1.25f;
 
 bool pressed(int key) {
     return ImGui::IsKeyPressed(key, false);
@@ -40,7 +42,51 @@ void handle_escape(AppState& state) {
     request_quit(state);
 }
 
-void handle_shortcuts(AppState& state, FrameState& frame) {
+// Where the image is this frame: the area it may use, where it is drawn
+// (reaching past the area when zoomed in), its size in pixels.
+struct ImagePlace {
+    ScreenRect area;
+    ScreenRect where;
+    int width = 0, height = 0;
+    float framebuffer_scale = 1.0f;
+    // The window point is on the part of the image that shows.
+    bool shows(float x, float y) const { return area.contains(x, y) && where.contains(x, y); }
+};
+
+ImagePlace place(const AppState& state, const FrameState& frame, ScreenRect area,
+                 float framebuffer_scale) {
+    const int w = frame.presenter.width(), h = frame.presenter.height();
+    return {area, place_image(w, h, area, framebuffer_scale, state.image_view), w, h,
+            framebuffer_scale};
+}
+
+// The mouse when it is over the image, else the area's centre: what +/- and
+// 1:1 zoom about.
+ImVec2 zoom_centre(const ImagePlace& image) {
+    const ImVec2 mouse = ImGui::GetIO().MousePos;
+    if (ImGui::IsMousePosValid() && image.shows(mouse.x, mouse.y)) return mouse;
+    return ImVec2((image.area.x0 + image.area.x1) * 0.5f, (image.area.y0 + image.area.y1) * 0.5f);
+}
+
+void zoom_step(AppState& state, const ImagePlace& image, int steps) {
+    const ImVec2 at = zoom_centre(image);
+    state.image_view = zoom_view_step(state.image_view, image.width, image.height, image.area,
+                                      image.framebuffer_scale, steps, at.x, at.y);
+}
+
+void zoom_actual_pixels(AppState& state, const ImagePlace& image) {
+    const ImVec2 at = zoom_centre(image);
+    state.image_view = zoom_view_to(state.image_view, image.width, image.height, image.area,
+                                    image.framebuffer_scale, 1.0f, at.x, at.y);
+}
+
+// Space toggles the pause when let go, unless it was held for a pan.
+void handle_space(AppState& state) {
+    if (pressed(keys::space)) state.space_panned = false;
+    if (ImGui::IsKeyReleased(keys::space) && !state.space_panned) toggle_pause(state);
+}
+
+void handle_shortcuts(AppState& state, FrameState& frame, const ImagePlace& image) {
     const ImGuiIO& io = ImGui::GetIO();
     handle_escape(state);
     if (io.WantTextInput || state.unsaved_prompt) return;  // typing in a field: letters are text
@@ -53,43 +99,73 @@ void handle_shortcuts(AppState& state, FrameState& frame) {
     if (pressed(keys::letter('R'))) reload_scene(state);
     if (pressed(keys::letter('C'))) next_camera(state);
     if (pressed(keys::letter('S'))) save_image_numbered(state);
-    if (pressed(keys::letter('F')))
-        state.fit = state.fit == FitMode::fit ? FitMode::actual_pixels : FitMode::fit;
+    if (pressed(keys::letter('F'))) state.image_view = ImageView{};
+    if (pressed(keys::digit('1')) || pressed(keys::keypad_1)) zoom_actual_pixels(state, image);
+    if (pressed(keys::equal) || pressed(keys::keypad_add)) zoom_step(state, image, 1);
+    if (pressed(keys::minus) || pressed(keys::keypad_subtract)) zoom_step(state, image, -1);
     if (pressed(keys::letter('H'))) state.show_ui = !state.show_ui;
     if (pressed(keys::letter('T'))) frame.text_editor.open = !frame.text_editor.open;
-    if (pressed(keys::space)) toggle_pause(state);
+    handle_space(state);
 }
 
 // How far (window units) a press may move and still be a click.
 constexpr float kClickSlack = 3.0f;
 
 // A click on the image selects what it shows (a light's marker first).
-void click_image(AppState& state, const ScreenRect& image, int image_w, int image_h, float x,
-                 float y) {
-    const std::optional<ImagePoint> at = window_to_image(image, image_w, image_h, x, y);
+void click_image(AppState& state, const ImagePlace& image, float x, float y) {
+    if (!image.shows(x, y)) return;
+    const std::optional<ImagePoint> at =
+        window_to_image(image.where, image.width, image.height, x, y);
     if (!at) return;
-    const double pixels_per_unit = image_w / static_cast<double>(image.width());
+    const double pixels_per_unit = image.width / static_cast<double>(image.where.width());
     select_at(state, at->x, at->y, light_marker_radius() * pixels_per_unit);
 }
 
+ImageDrag::Mode drag_mode(int button) {
+    if (button == ImGuiMouseButton_Middle) return ImageDrag::Mode::image_pan;
+    if (button == ImGuiMouseButton_Right) return ImageDrag::Mode::camera_pan;
+    if (ImGui::IsKeyDown(keys::space)) return ImageDrag::Mode::image_pan;
+    return ImageDrag::Mode::orbit;
+}
+
+void follow_drag(AppState& state, const ImagePlace& image, float dx, float dy) {
+    switch (state.drag.mode) {
+        case ImageDrag::Mode::image_pan:
+            state.image_view = pan_view(state.image_view, image.width, image.height, image.area,
+                                        image.framebuffer_scale, dx, dy);
+            break;
+        case ImageDrag::Mode::orbit:
+            use_free_camera(state);
+            orbit(state.free_camera, dx, dy, image.where.height());
+            break;
+        case ImageDrag::Mode::camera_pan:
+            use_free_camera(state);
+            pan(state.free_camera, dx, dy, image.where.height());
+            break;
+    }
+}
+
 // Mouse on the image: a click selects, a drag moves the free camera (started
-// from the scene camera), the wheel dollies it.
-void handle_image_mouse(AppState& state, const ScreenRect& image, int image_w, int image_h) {
+// from the scene camera) or pans the image view, the wheel dollies the camera
+// and Ctrl+wheel zooms the image about the mouse.
+void handle_image_mouse(AppState& state, const ImagePlace& image) {
     const ImGuiIO& io = ImGui::GetIO();
     ImageDrag& drag = state.drag;
-    const bool over = io.MousePos.x >= image.x0 && io.MousePos.x < image.x1 &&
-                      io.MousePos.y >= image.y0 && io.MousePos.y < image.y1;
-    const bool usable = !io.WantCaptureMouse && state.doc.loaded && image.height() > 0;
+    const bool over = image.shows(io.MousePos.x, io.MousePos.y);
+    const bool usable = !io.WantCaptureMouse && state.doc.loaded && image.where.height() > 0;
     if (drag.button >= 0 && !ImGui::IsMouseDown(drag.button)) {
-        if (!drag.moved && drag.button == ImGuiMouseButton_Left)
-            click_image(state, image, image_w, image_h, drag.press_x, drag.press_y);
+        if (!drag.moved && drag.button == ImGuiMouseButton_Left &&
+            drag.mode == ImageDrag::Mode::orbit)
+            click_image(state, image, drag.press_x, drag.press_y);
         drag.button = -1;
     }
     if (drag.button < 0 && usable && over) {
         for (int button : {ImGuiMouseButton_Left, ImGuiMouseButton_Right, ImGuiMouseButton_Middle})
             if (ImGui::IsMouseClicked(button)) {
                 const ImVec2 at = io.MouseClickedPos[button];
-                drag = {button, at.x, at.y, at.x, at.y, false};
+                drag = {button, drag_mode(button), at.x, at.y, at.x, at.y, false};
+                if (drag.mode == ImageDrag::Mode::image_pan && button == ImGuiMouseButton_Left)
+                    state.space_panned = true;
                 break;
             }
     }
@@ -101,26 +177,57 @@ void handle_image_mouse(AppState& state, const ScreenRect& image, int image_w, i
         const float dx = io.MousePos.x - drag.last_x, dy = io.MousePos.y - drag.last_y;
         drag.last_x = io.MousePos.x;
         drag.last_y = io.MousePos.y;
-        if (dx != 0.0f || dy != 0.0f) {
-            use_free_camera(state);
-            if (drag.button == ImGuiMouseButton_Left)
-                orbit(state.free_camera, dx, dy, image.height());
-            else
-                pan(state.free_camera, dx, dy, image.height());
-        }
+        if (dx != 0.0f || dy != 0.0f) follow_drag(state, image, dx, dy);
     } else if (io.MouseWheel != 0.0f && over && usable) {
-        use_free_camera(state);
-        dolly(state.free_camera, io.MouseWheel);
+        if (io.KeyCtrl) {
+            const float zoom = shown_zoom(image.width, image.height, image.area,
+                                          image.framebuffer_scale, state.image_view) *
+                               std::pow(kWheelZoomFactor, io.MouseWheel);
+            state.image_view =
+                zoom_view_to(state.image_view, image.width, image.height, image.area,
+                             image.framebuffer_scale, zoom, io.MousePos.x, io.MousePos.y);
+        } else {
+            use_free_camera(state);
+            dolly(state.free_camera, io.MouseWheel);
+        }
     }
 }
 
+// The image view's controls, over the image's top left corner.
+void image_toolbar(AppState& state, const ImagePlace& image) {
+    const float pad = ImGui::GetStyle().WindowPadding.x;
+    ImGui::SetNextWindowPos(ImVec2(image.area.x0 + pad, image.area.y0 + pad));
+    ImGui::SetNextWindowBgAlpha(0.75f);
+    ImGui::Begin("##image_view", nullptr,
+                 ImGuiWindowFlags_NoDecoration | ImGuiWindowFlags_NoMove |
+                     ImGuiWindowFlags_NoSavedSettings | ImGuiWindowFlags_AlwaysAutoResize |
+                     ImGuiWindowFlags_NoFocusOnAppearing);
+    if (button("Fit", "The whole image, as large as it fits (F)")) state.image_view = ImageView{};
+    ImGui::SameLine();
+    if (button("1:1", "One image pixel per screen pixel (1)")) zoom_actual_pixels(state, image);
+    ImGui::SameLine();
+    if (button("-", "Zoom the image out (-, or Ctrl+wheel)")) zoom_step(state, image, -1);
+    ImGui::SameLine();
+    if (button("+",
+               "Zoom the image in (+, or Ctrl+wheel); pan with the middle button or "
+               "Space+drag"))
+        zoom_step(state, image, 1);
+    ImGui::SameLine();
+    const float zoom = shown_zoom(image.width, image.height, image.area, image.framebuffer_scale,
+                                  state.image_view);
+    ImGui::Text("%.0f%%", zoom * 100.0f);
+    note_window("image toolbar");
+    ImGui::End();
+}
+
 // Hovering the image (not dragging) shows what the pixel under the mouse holds.
-void inspect_hovered_pixel(AppState& state, const ScreenRect& image, int image_w, int image_h) {
+void inspect_hovered_pixel(AppState& state, const ImagePlace& image) {
     state.inspected.clear();
     const ImGuiIO& io = ImGui::GetIO();
     if (state.drag.button >= 0 || io.WantCaptureMouse || !ImGui::IsMousePosValid()) return;
+    if (!image.shows(io.MousePos.x, io.MousePos.y)) return;
     const std::optional<ImagePoint> at =
-        window_to_image(image, image_w, image_h, io.MousePos.x, io.MousePos.y);
+        window_to_image(image.where, image.width, image.height, io.MousePos.x, io.MousePos.y);
     if (!at) return;
     const std::optional<PixelReport> report =
         inspect_pixel(state, static_cast<int>(at->x), static_cast<int>(at->y));
@@ -234,7 +341,8 @@ void viewer_frame(AppState& state, FrameState& frame, const FrameInfo& info) {
     take_checked_text(state);
     const Scene before = state.doc.scene;
     const std::uint64_t generation = state.scene_generation;
-    handle_shortcuts(state, frame);
+    // Keys zoom about the image as the last frame placed it.
+    handle_shortcuts(state, frame, place(state, frame, frame.image_area, info.framebuffer_scale));
 
     ScreenRect area{0, 0, w, h};
     if (state.show_ui) {
@@ -248,6 +356,8 @@ void viewer_frame(AppState& state, FrameState& frame, const FrameInfo& info) {
             text_editor(state, frame.text_editor, area.x1, 0.0f, w, area.y1);
         }
         status_window(state, h - status_h, w);
+        if (frame.presenter.has_image())
+            image_toolbar(state, place(state, frame, area, info.framebuffer_scale));
         // Once the panel edge is let go: a drag writes the file once, not every frame.
         if (!ImGui::IsMouseDown(ImGuiMouseButton_Left)) remember_settings(state);
     }
@@ -258,13 +368,18 @@ void viewer_frame(AppState& state, FrameState& frame, const FrameInfo& info) {
     update_render(state);
     if (const std::optional<PixelRect> changed = take_display_changes(state))
         frame.presenter.upload(state.display, changed);
-    const ScreenRect image = place_image(frame.presenter.width(), frame.presenter.height(), area,
-                                         info.framebuffer_scale, state.fit);
-    const int image_w = frame.presenter.width(), image_h = frame.presenter.height();
-    handle_image_mouse(state, image, image_w, image_h);
-    inspect_hovered_pixel(state, image, image_w, image_h);
-    frame.presenter.draw(ImGui::GetBackgroundDrawList(), image);
-    frame.overlay.draw(state, ImGui::GetBackgroundDrawList(), image, image_w, image_h);
+    const ImagePlace image = place(state, frame, area, info.framebuffer_scale);
+    handle_image_mouse(state, image);
+    // After the mouse: what is drawn is where this frame's zoom and pan put it.
+    const ImagePlace drawn = place(state, frame, area, info.framebuffer_scale);
+    inspect_hovered_pixel(state, drawn);
+    frame.image_area = drawn.area;
+    frame.image_rect = drawn.where;
+    ImDrawList* draw_list = ImGui::GetBackgroundDrawList();
+    draw_list->PushClipRect(ImVec2(area.x0, area.y0), ImVec2(area.x1, area.y1), true);
+    frame.presenter.draw(draw_list, drawn.where);
+    frame.overlay.draw(state, draw_list, drawn.where, drawn.width, drawn.height);
+    draw_list->PopClipRect();
     collect_ui_items(nullptr);
 }
 

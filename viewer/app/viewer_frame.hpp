@@ -26,6 +26,8 @@ struct FrameState {
     SelectionOverlay overlay;
     std::vector<UiItem> ui_items;
     TextEditorState text_editor;
+    ScreenRect image_area;  // where the last frame could show the image
+    ScreenRect image_rect;  // where it put it (place_image; may reach past image_area)
 };
 
 void viewer_frame(AppState& state, FrameState& frame, const FrameInfo& info);

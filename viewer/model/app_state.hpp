@@ -67,7 +67,14 @@ struct GuardedCommand {
 // A press that is let go before moving more than a few units is a click (it
 // selects what it is on) and moves nothing.
 struct ImageDrag {
+    // What a drag does, chosen at the press by its button and modifiers.
+    enum class Mode {
+        orbit,       // left: the free camera orbits
+        camera_pan,  // right: the free camera pans
+        image_pan,   // middle, or Space + left: the image view pans (the camera stays)
+    };
     int button = -1;  // ImGuiMouseButton, -1 when no drag
+    Mode mode = Mode::orbit;
     float last_x = 0, last_y = 0;
     float press_x = 0, press_y = 0;
     bool moved = false;  // beyond a click's slack: the camera follows
@@ -147,7 +154,8 @@ struct AppState {
     // The part of `display` changed since the frame code last took it
     // (take_display_changes): what it sends to the texture.
     std::optional<PixelRect> display_changed;
-    FitMode fit = FitMode::fit;
+    ImageView image_view;       // zoom and pan of the image (image_layout.hpp)
+    bool space_panned = false;  // Space is held for a pan: its release does not pause
     bool show_ui = true;
     float sidebar_width = kDefaultPanelWidth;  // in font heights, so that it scales with the font
     ViewerSettings saved_settings;             // as in config.settings_file

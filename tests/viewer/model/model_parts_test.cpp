@@ -168,7 +168,7 @@ TEST(UndoStack, KeepsAtMostItsCapacity) {
 }
 
 TEST(PlaceImage, FitKeepsTheAspectAndCentres) {
-    const ScreenRect r = place_image(200, 100, ScreenRect{0, 0, 400, 400}, 1.0f, FitMode::fit);
+    const ScreenRect r = place_image(200, 100, ScreenRect{0, 0, 400, 400}, 1.0f, ImageView{});
     EXPECT_FLOAT_EQ(r.width(), 400);
     EXPECT_FLOAT_EQ(r.height(), 200);
     EXPECT_FLOAT_EQ(r.y0, 100);
@@ -176,13 +176,13 @@ TEST(PlaceImage, FitKeepsTheAspectAndCentres) {
 
 TEST(PlaceImage, ActualPixelsIsOneImagePixelPerFramebufferPixelOnHiDpi) {
     const ScreenRect r =
-        place_image(200, 100, ScreenRect{0, 0, 400, 400}, 2.0f, FitMode::actual_pixels);
+        place_image(200, 100, ScreenRect{0, 0, 400, 400}, 2.0f, actual_pixels_view());
     EXPECT_FLOAT_EQ(r.width(), 100);  // 100 window units = 200 framebuffer pixels
     EXPECT_FLOAT_EQ(r.height(), 50);
 }
 
 TEST(PlaceImage, NothingToPlaceGivesAnEmptyRect) {
-    EXPECT_EQ(place_image(0, 10, ScreenRect{0, 0, 10, 10}, 1, FitMode::fit).width(), 0);
+    EXPECT_EQ(place_image(0, 10, ScreenRect{0, 0, 10, 10}, 1, ImageView{}).width(), 0);
 }
 
 TEST(ImageFiles, WritesAPngWithTheImageSize) {

@@ -99,7 +99,9 @@ void camera_panel(AppState& state) {
         "Which camera the view shows (C: next camera). Dragging on the image switches to the "
         "free camera.");
     ImGui::PushStyleColor(ImGuiCol_Text, ImGui::GetStyleColorVec4(ImGuiCol_TextDisabled));
-    ImGui::TextWrapped("Drag on the image: left orbits, right/middle pans, wheel dollies.");
+    ImGui::TextWrapped(
+        "Drag on the image: left orbits, right pans, wheel dollies. "
+        "(Middle drag, Space+drag, Ctrl+wheel: pan and zoom the image.)");
     ImGui::PopStyleColor();
     if (button("Reset to scene camera", "Leave the free camera and show the selected scene camera",
                state.free_camera_active ? "" : "The view already shows a scene camera")) {

@@ -14,21 +14,25 @@ void help_panel() {
         {"Ctrl+S", "save the scene (edits written in place)"},
         {"Ctrl+Z", "undo"},
         {"Ctrl+Shift+Z", "redo"},
-        {"Space", "pause / resume the render"},
-        {"F", "fit the image to the window / actual pixels"},
+        {"Space", "pause / resume the render (when let go without a drag)"},
+        {"F", "fit the whole image to the window"},
+        {"1", "actual pixels (1:1)"},
+        {"+ / -", "zoom the image in / out (about the mouse)"},
+        {"Ctrl+wheel", "zoom the image about the mouse"},
+        {"Middle drag, Space+drag", "pan the image (the camera stays)"},
         {"H", "hide / show the panels"},
         {"T", "show / hide the text editor"},
         {"Esc", "close a popup or picker; with none open, quit"},
         {"Ctrl+Q", "quit (asks first about unsaved edits)"},
         {"Left drag", "orbit (free camera)"},
-        {"Right/middle drag", "pan"},
-        {"Wheel", "dolly"},
+        {"Right drag", "pan (free camera)"},
+        {"Wheel", "dolly (free camera)"},
         {"Drop a .jts", "open it"},
         {"Panel edge", "drag to resize the panel"},
     };
     if (ImGui::BeginTable("keys", 2, ImGuiTableFlags_RowBg)) {
         ImGui::TableSetupColumn("key", ImGuiTableColumnFlags_WidthFixed,
-                                ImGui::CalcTextSize("Right/middle drag").x);
+                                ImGui::CalcTextSize("Ctrl+Shift+Z").x);
         ImGui::TableSetupColumn("action", ImGuiTableColumnFlags_WidthStretch);
         for (const auto& row : rows) {
             ImGui::TableNextRow();
