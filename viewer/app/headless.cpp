@@ -67,8 +67,12 @@ void HeadlessViewer::press_key(AppState& state, int key, bool ctrl, bool shift) 
     frame(state);
 }
 
-void HeadlessViewer::drag(AppState& state, int button, float x0, float y0, float x1, float y1) {
+void HeadlessViewer::drag(AppState& state, int button, float x0, float y0, float x1, float y1,
+                          int modifiers) {
     ImGuiIO& io = ImGui::GetIO();
+    io.KeyCtrl = (modifiers & kCtrl) != 0;
+    io.KeyShift = (modifiers & kShift) != 0;
+    io.KeyAlt = (modifiers & kAlt) != 0;
     io.MousePos = ImVec2(x0, y0);
     frame(state);
     io.MouseDown[button] = true;
@@ -81,6 +85,7 @@ void HeadlessViewer::drag(AppState& state, int button, float x0, float y0, float
     }
     io.MouseDown[button] = false;
     frame(state);
+    io.KeyCtrl = io.KeyShift = io.KeyAlt = false;
 }
 
 bool HeadlessViewer::click(AppState& state, const std::string& label) {

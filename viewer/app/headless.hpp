@@ -12,6 +12,9 @@
 
 namespace jt::view {
 
+// Keys held through a drag (flags).
+enum DragModifier { kNoModifier = 0, kCtrl = 1, kShift = 2, kAlt = 4 };
+
 class HeadlessViewer {
   public:
     HeadlessViewer(int width, int height);
@@ -24,8 +27,10 @@ class HeadlessViewer {
     void press_key(AppState& state, int key, bool ctrl = false, bool shift = false);
     // Drags the mouse with `button` (0 left, 1 right, 2 middle) from one point
     // to another (window units, y down) over a few frames, as a user would:
-    // pressed at the first point, moved, released at the second.
-    void drag(AppState& state, int button, float x0, float y0, float x1, float y1);
+    // pressed at the first point, moved, released at the second; `modifiers`
+    // (DragModifier flags) held throughout.
+    void drag(AppState& state, int button, float x0, float y0, float x1, float y1,
+              int modifiers = kNoModifier);
     // Clicks the control drawn under `label` in the last frame (see
     // ui_items.hpp) with the left button; false when there is none.
     bool click(AppState& state, const std::string& label);
@@ -60,6 +65,8 @@ class HeadlessViewer {
     int height() const { return context_.height(); }
     // The texture the frames draw the image from.
     const Presenter& presenter() const { return frame_state_.presenter; }
+    // The texture the compare views draw A or the difference from.
+    const Presenter& compare_texture() const { return frame_state_.compare; }
     // The selection as the last frame drew it over the image.
     const SelectionOverlay& overlay() const { return frame_state_.overlay; }
     // Where the last frame drew the image (zoomed and panned), and the part of

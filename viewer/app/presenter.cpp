@@ -31,10 +31,12 @@ void Presenter::upload(const Image8& image, std::optional<PixelRect> changed) {
         glTexImage2D(GL_TEXTURE_2D, 0, GL_RGB8, width_, height_, 0, GL_RGB, GL_UNSIGNED_BYTE,
                      image.rgb.data());
         texels_uploaded_ += static_cast<long long>(width_) * height_;
-    } else if (changed && !changed->empty()) {
+    } else {
+        const PixelRect whole{0, 0, width_, height_};
+        const PixelRect c = changed.value_or(whole);
         // Clip: a rectangle from a job of another size must never read out of bounds.
-        const PixelRect r{std::max(changed->x0, 0), std::max(changed->y0, 0),
-                          std::min(changed->x1, width_), std::min(changed->y1, height_)};
+        const PixelRect r{std::max(c.x0, 0), std::max(c.y0, 0), std::min(c.x1, width_),
+                          std::min(c.y1, height_)};
         if (!r.empty()) {
             glPixelStorei(GL_UNPACK_SKIP_PIXELS, r.x0);
             glPixelStorei(GL_UNPACK_SKIP_ROWS, r.y0);

@@ -2,11 +2,13 @@
 
 #include "app_actions.hpp"
 #include "document_edits.hpp"
+#include "image_compare.hpp"
 #include "keys.hpp"
 #include "panels/panels.hpp"
 #include "panels/widgets.hpp"
 #include "picking.hpp"
 #include "pixel_inspector.hpp"
+#include "render_region.hpp"
 #include "ui_items.hpp"
 
 #include <imgui.h>
@@ -103,6 +105,9 @@ void handle_shortcuts(AppState& state, FrameState& frame, const ImagePlace& imag
     if (pressed(keys::digit('1')) || pressed(keys::keypad_1)) zoom_actual_pixels(state, image);
     if (pressed(keys::equal) || pressed(keys::keypad_add)) zoom_step(state, image, 1);
     if (pressed(keys::minus) || pressed(keys::keypad_subtract)) zoom_step(state, image, -1);
+    if (pressed(keys::letter('A')) && state.compare.a)
+        state.compare.mode =
+            state.compare.mode == CompareMode::a ? CompareMode::live : CompareMode::a;
     if (pressed(keys::letter('H'))) state.show_ui = !state.show_ui;
     if (pressed(keys::letter('T'))) frame.text_editor.open = !frame.text_editor.open;
     handle_space(state);
@@ -125,7 +130,29 @@ ImageDrag::Mode drag_mode(int button) {
     if (button == ImGuiMouseButton_Middle) return ImageDrag::Mode::image_pan;
     if (button == ImGuiMouseButton_Right) return ImageDrag::Mode::camera_pan;
     if (ImGui::IsKeyDown(keys::space)) return ImageDrag::Mode::image_pan;
+    if (ImGui::GetIO().KeyCtrl) return ImageDrag::Mode::region;
     return ImageDrag::Mode::orbit;
+}
+
+// The region a Ctrl+drag from the press to (x, y) spans, as --region counts it.
+std::optional<FrameRegion> dragged_region(const ImageDrag& drag, const ImagePlace& image, float x,
+                                          float y) {
+    const auto at = [&](float wx, float wy) {
+        return window_to_image_clamped(image.where, image.width, image.height, wx, wy);
+    };
+    return region_spanning(at(drag.press_x, drag.press_y), at(x, y), image.width, image.height);
+}
+
+void end_drag(AppState& state, const ImagePlace& image) {
+    const ImageDrag& drag = state.drag;
+    if (drag.mode == ImageDrag::Mode::region) {
+        if (!drag.moved) return;  // a Ctrl+click sets no region
+        if (const auto region = dragged_region(drag, image, drag.last_x, drag.last_y))
+            set_render_region(state, *region);
+    } else if (!drag.moved && drag.button == ImGuiMouseButton_Left &&
+               drag.mode == ImageDrag::Mode::orbit) {
+        click_image(state, image, drag.press_x, drag.press_y);
+    }
 }
 
 void follow_drag(AppState& state, const ImagePlace& image, float dx, float dy) {
@@ -142,6 +169,8 @@ void follow_drag(AppState& state, const ImagePlace& image, float dx, float dy) {
             use_free_camera(state);
             pan(state.free_camera, dx, dy, image.where.height());
             break;
+        case ImageDrag::Mode::region:  // drawn while dragging, set when let go
+            break;
     }
 }
 
@@ -154,9 +183,7 @@ void handle_image_mouse(AppState& state, const ImagePlace& image) {
     const bool over = image.shows(io.MousePos.x, io.MousePos.y);
     const bool usable = !io.WantCaptureMouse && state.doc.loaded && image.where.height() > 0;
     if (drag.button >= 0 && !ImGui::IsMouseDown(drag.button)) {
-        if (!drag.moved && drag.button == ImGuiMouseButton_Left &&
-            drag.mode == ImageDrag::Mode::orbit)
-            click_image(state, image, drag.press_x, drag.press_y);
+        end_drag(state, image);
         drag.button = -1;
     }
     if (drag.button < 0 && usable && over) {
@@ -193,8 +220,115 @@ void handle_image_mouse(AppState& state, const ImagePlace& image) {
     }
 }
 
+void draw_region(ImDrawList* draw_list, const ImagePlace& image, const FrameRegion& region,
+                 ImU32 colour) {
+    const PixelRect r = to_image_rect(region, image.height);
+    const WindowPoint a =
+        image_to_window(image.where, image.width, image.height, {1.0 * r.x0, 1.0 * r.y1});
+    const WindowPoint b =
+        image_to_window(image.where, image.width, image.height, {1.0 * r.x1, 1.0 * r.y0});
+    draw_list->AddRect(ImVec2(a.x - 1, a.y - 1), ImVec2(b.x + 1, b.y + 1), IM_COL32(0, 0, 0, 200),
+                       0.0f, 0, 3.0f);
+    draw_list->AddRect(ImVec2(a.x - 1, a.y - 1), ImVec2(b.x + 1, b.y + 1), colour, 0.0f, 0, 1.0f);
+}
+
+// The render region over the image, and the one being dragged.
+void draw_regions(const AppState& state, ImDrawList* draw_list, const ImagePlace& image) {
+    if (image.width <= 0) return;
+    if (state.render_region &&
+        check_region_in_frame(*state.render_region, image.width, image.height))
+        draw_region(draw_list, image, *state.render_region, IM_COL32(120, 220, 255, 255));
+    const ImageDrag& drag = state.drag;
+    if (drag.button >= 0 && drag.mode == ImageDrag::Mode::region && drag.moved)
+        if (const auto region = dragged_region(drag, image, drag.last_x, drag.last_y))
+            draw_region(draw_list, image, *region, IM_COL32(255, 255, 255, 255));
+}
+
+// Keeps the compare texture holding what the view shows: A, or the difference
+// of A and the live image (again whenever the live image changed).
+void update_compare_texture(const AppState& state, FrameState& frame, bool display_changed) {
+    const CompareMode mode = state.compare.mode;
+    if (!comparable(state) || mode == CompareMode::live) return;
+    const bool difference = mode == CompareMode::difference;
+    const bool stale = frame.compare_holds_version != state.compare.a_version ||
+                       frame.compare_holds_difference != difference;
+    if (!stale && !(difference && display_changed)) return;
+    if (difference) {
+        CompareDifference diff = compare_difference(state);
+        frame.compare.upload(diff.image, std::nullopt);
+        frame.compare_summary = std::move(diff.summary);
+    } else {
+        frame.compare.upload(*state.compare.a, std::nullopt);
+    }
+    frame.compare_holds_version = state.compare.a_version;
+    frame.compare_holds_difference = difference;
+}
+
+// The live image, or A and the difference as the compare mode asks.
+void draw_image(const AppState& state, const FrameState& frame, ImDrawList* draw_list,
+                const ImagePlace& image) {
+    const CompareMode mode = state.compare.mode;
+    if (!comparable(state) || mode == CompareMode::live || !frame.compare.has_image()) {
+        frame.presenter.draw(draw_list, image.where);
+        return;
+    }
+    if (mode != CompareMode::split) {
+        frame.compare.draw(draw_list, image.where);
+        return;
+    }
+    const float x = image_to_window(image.where, image.width, image.height,
+                                    {static_cast<double>(split_column(state)), 0.0})
+                        .x;
+    const ScreenRect& r = image.where;
+    draw_list->PushClipRect(ImVec2(r.x0, r.y0), ImVec2(x, r.y1), true);
+    frame.compare.draw(draw_list, r);
+    draw_list->PopClipRect();
+    draw_list->PushClipRect(ImVec2(x, r.y0), ImVec2(r.x1, r.y1), true);
+    frame.presenter.draw(draw_list, r);
+    draw_list->PopClipRect();
+    draw_list->AddLine(ImVec2(x, r.y0), ImVec2(x, r.y1), IM_COL32(255, 255, 255, 200), 1.0f);
+}
+
 // The image view's controls, over the image's top left corner.
-void image_toolbar(AppState& state, const ImagePlace& image) {
+void compare_mode_button(AppState& state, const char* label, CompareMode mode, const char* tip) {
+    ImGui::SameLine();
+    if (ImGui::RadioButton(label, state.compare.mode == mode)) state.compare.mode = mode;
+    note_item(label, true);
+    tooltip(tip);
+}
+
+// Snapshot A and how it shows against the live image.
+void compare_controls(AppState& state, const FrameState& frame) {
+    if (button("Snapshot A",
+               "Keep the image as it is now as A, to compare the live render "
+               "with (split, A alone, or their difference)"))
+        snapshot_a(state);
+    if (!state.compare.a) return;
+    if (!comparable(state)) {
+        ImGui::SameLine();
+        ImGui::TextUnformatted("A has another size than the image");
+        return;
+    }
+    compare_mode_button(state, "Live", CompareMode::live, "The live image alone");
+    compare_mode_button(state, "Split", CompareMode::split,
+                        "A left of the line, the live image right; drag the slider to move it");
+    compare_mode_button(state, "A", CompareMode::a, "A alone (the A key toggles A and live)");
+    compare_mode_button(state, "Difference", CompareMode::difference,
+                        "Where A and live differ, as jtracer-cli diff draws it: red to yellow "
+                        "to white as the difference grows, the rest a dim copy of A");
+    if (state.compare.mode == CompareMode::split) {
+        ImGui::SameLine();
+        ImGui::SetNextItemWidth(ImGui::GetFontSize() * 8.0f);
+        ImGui::SliderFloat("##split", &state.compare.split, 0.0f, 1.0f, "split %.2f");
+        note_item("split", true);
+        tooltip("Where the line between A (left) and live (right) is");
+    } else if (state.compare.mode == CompareMode::difference) {
+        ImGui::SameLine();
+        ImGui::TextUnformatted(frame.compare_summary.c_str());
+    }
+}
+
+void image_toolbar(AppState& state, const FrameState& frame, const ImagePlace& image) {
     const float pad = ImGui::GetStyle().WindowPadding.x;
     ImGui::SetNextWindowPos(ImVec2(image.area.x0 + pad, image.area.y0 + pad));
     ImGui::SetNextWindowBgAlpha(0.75f);
@@ -216,6 +350,19 @@ void image_toolbar(AppState& state, const ImagePlace& image) {
     const float zoom = shown_zoom(image.width, image.height, image.area, image.framebuffer_scale,
                                   state.image_view);
     ImGui::Text("%.0f%%", zoom * 100.0f);
+    ImGui::SameLine();
+    if (button("Clear region",
+               "Render the whole image again. Ctrl+drag on the image renders only that "
+               "rectangle (as jtracer-cli --region); the rest keeps what it showed",
+               state.render_region ? std::string()
+                                   : "No region: Ctrl+drag on the image to render only a "
+                                     "rectangle of it (as jtracer-cli --region)"))
+        clear_render_region(state);
+    if (state.render_region) {
+        ImGui::SameLine();
+        ImGui::Text("region %s", format_frame_region(*state.render_region).c_str());
+    }
+    compare_controls(state, frame);
     note_window("image toolbar");
     ImGui::End();
 }
@@ -357,7 +504,7 @@ void viewer_frame(AppState& state, FrameState& frame, const FrameInfo& info) {
         }
         status_window(state, h - status_h, w);
         if (frame.presenter.has_image())
-            image_toolbar(state, place(state, frame, area, info.framebuffer_scale));
+            image_toolbar(state, frame, place(state, frame, area, info.framebuffer_scale));
         // Once the panel edge is let go: a drag writes the file once, not every frame.
         if (!ImGui::IsMouseDown(ImGuiMouseButton_Left)) remember_settings(state);
     }
@@ -366,8 +513,9 @@ void viewer_frame(AppState& state, FrameState& frame, const FrameInfo& info) {
     track_edits(state, before, generation, ImGui::IsAnyItemActive());
     check_edits(state);
     update_render(state);
-    if (const std::optional<PixelRect> changed = take_display_changes(state))
-        frame.presenter.upload(state.display, changed);
+    const std::optional<PixelRect> changed = take_display_changes(state);
+    if (changed) frame.presenter.upload(state.display, changed);
+    update_compare_texture(state, frame, changed.has_value());
     const ImagePlace image = place(state, frame, area, info.framebuffer_scale);
     handle_image_mouse(state, image);
     // After the mouse: what is drawn is where this frame's zoom and pan put it.
@@ -377,8 +525,9 @@ void viewer_frame(AppState& state, FrameState& frame, const FrameInfo& info) {
     frame.image_rect = drawn.where;
     ImDrawList* draw_list = ImGui::GetBackgroundDrawList();
     draw_list->PushClipRect(ImVec2(area.x0, area.y0), ImVec2(area.x1, area.y1), true);
-    frame.presenter.draw(draw_list, drawn.where);
+    draw_image(state, frame, draw_list, drawn);
     frame.overlay.draw(state, draw_list, drawn.where, drawn.width, drawn.height);
+    draw_regions(state, draw_list, drawn);
     draw_list->PopClipRect();
     collect_ui_items(nullptr);
 }

@@ -23,6 +23,11 @@ struct FrameInfo {
 // context (its texture must go before the context does).
 struct FrameState {
     Presenter presenter;
+    // A (split and A views) or the difference image, whichever the view shows.
+    Presenter compare;
+    std::uint64_t compare_holds_version = ~std::uint64_t{0};  // of state.compare.a
+    bool compare_holds_difference = false;
+    std::string compare_summary;  // of the difference shown
     SelectionOverlay overlay;
     std::vector<UiItem> ui_items;
     TextEditorState text_editor;

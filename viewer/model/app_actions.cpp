@@ -1,5 +1,7 @@
 #include "app_actions.hpp"
 
+#include "render_region.hpp"
+
 #include "image_files.hpp"
 #include "jtracer/limits.hpp"
 #include "jtracer/model_cache.hpp"
@@ -551,6 +553,8 @@ std::optional<RenderRequest> render_request(const AppState& state, std::string& 
     request.options.samples = std::clamp(settings.samples, kMinSamples, kMaxSamples);
     request.options.threads = state.config.render_threads;
     request.options.previews = true;
+    request.options.region =
+        render_region_rect(state, request.options.width, request.options.height);
     // The frames come first: a frame drawn late is a late picture however fast
     // the render is (and with a software GL the frame needs a core too).
     request.options.background = state.config.render_in_background;

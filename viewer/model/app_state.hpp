@@ -7,6 +7,7 @@
 #include "file_watcher.hpp"
 #include "free_camera.hpp"
 #include "image_layout.hpp"
+#include "jtracer/region.hpp"
 #include "primitive_ids.hpp"
 #include "recent_files.hpp"
 #include "render_controller.hpp"
@@ -50,7 +51,7 @@ struct RenderRequest {
     bool operator==(const RenderRequest& other) const {
         return scene == other.scene && options.width == other.options.width &&
                options.height == other.options.height && options.samples == other.options.samples &&
-               options.camera == other.options.camera;
+               options.camera == other.options.camera && options.region == other.options.region;
     }
 };
 
@@ -72,12 +73,27 @@ struct ImageDrag {
         orbit,       // left: the free camera orbits
         camera_pan,  // right: the free camera pans
         image_pan,   // middle, or Space + left: the image view pans (the camera stays)
+        region,      // Ctrl + left: a rectangle to render alone (render_region.hpp)
     };
     int button = -1;  // ImGuiMouseButton, -1 when no drag
     Mode mode = Mode::orbit;
     float last_x = 0, last_y = 0;
     float press_x = 0, press_y = 0;
     bool moved = false;  // beyond a click's slack: the camera follows
+};
+
+// How the image shows against a snapshot A (image_compare.hpp).
+enum class CompareMode {
+    live,        // the live image alone
+    split,       // A left of the split line, live right
+    a,           // A alone (toggled against live with the A key)
+    difference,  // the per-pixel difference of A and live, as jtracer-cli diff draws it
+};
+struct CompareState {
+    std::optional<Image8> a;      // the snapshot, when one was kept
+    std::uint64_t a_version = 0;  // bumped by each snapshot, so the texture follows
+    CompareMode mode = CompareMode::live;
+    float split = 0.5f;  // where the line is, across the image (0: all live, 1: all A)
 };
 
 struct AppState {
@@ -156,6 +172,9 @@ struct AppState {
     std::optional<PixelRect> display_changed;
     ImageView image_view;       // zoom and pan of the image (image_layout.hpp)
     bool space_panned = false;  // Space is held for a pan: its release does not pause
+    // The part of the image that renders alone, as jtracer-cli --region counts it.
+    std::optional<FrameRegion> render_region;
+    CompareState compare;
     bool show_ui = true;
     float sidebar_width = kDefaultPanelWidth;  // in font heights, so that it scales with the font
     ViewerSettings saved_settings;             // as in config.settings_file

@@ -108,6 +108,14 @@ std::optional<ImagePoint> window_to_image(const ScreenRect& where, int image_w, 
                       (where.y1 - y) / where.height() * image_h};
 }
 
+ImagePoint window_to_image_clamped(const ScreenRect& where, int image_w, int image_h, float x,
+                                   float y) {
+    if (image_w <= 0 || image_h <= 0 || where.width() <= 0 || where.height() <= 0) return {};
+    const double u = std::clamp((x - where.x0) / where.width(), 0.0f, 1.0f);
+    const double v = std::clamp((where.y1 - y) / where.height(), 0.0f, 1.0f);
+    return ImagePoint{u * image_w, v * image_h};
+}
+
 WindowPoint image_to_window(const ScreenRect& where, int image_w, int image_h,
                             const ImagePoint& p) {
     if (image_w <= 0 || image_h <= 0) return {};

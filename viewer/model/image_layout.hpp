@@ -75,6 +75,11 @@ ImageView clamp_view(const ImageView& view, int image_w, int image_h, ScreenRect
 std::optional<ImagePoint> window_to_image(const ScreenRect& where, int image_w, int image_h,
                                           float x, float y);
 
+// The same for any window point, moved onto the image's nearest edge when
+// outside it (a drag that ends past the image).
+ImagePoint window_to_image_clamped(const ScreenRect& where, int image_w, int image_h, float x,
+                                   float y);
+
 struct WindowPoint {
     float x = 0, y = 0;
 };

@@ -1,0 +1,27 @@
+#pragma once
+// Render region: the user's rectangle of the image that renders alone, with
+// jtracer-cli's --region semantics (region.hpp: X0,Y0,X1,Y1, half-open, from
+// the top-left). The rest of the image keeps the pixels it showed.
+
+#include "app_state.hpp"
+#include "jtracer/region.hpp"
+
+#include <optional>
+
+namespace jt::view {
+
+// The whole pixels a drag from image point `a` to `b` covers (image points from
+// the bottom left, as pick.hpp counts them), inside an `image_w` x `image_h`
+// image, as --region counts them; nothing when it covers no pixel.
+std::optional<FrameRegion> region_spanning(const ImagePoint& a, const ImagePoint& b, int image_w,
+                                           int image_h);
+
+// Renders only `region` from now on (each edit re-renders it alone), until cleared.
+void set_render_region(AppState& state, const FrameRegion& region);
+void clear_render_region(AppState& state);
+
+// The region the render is limited to, in Image8 coordinates: state.render_region
+// while it lies inside a `width` x `height` frame, else nothing.
+std::optional<PixelRect> render_region_rect(const AppState& state, int width, int height);
+
+}  // namespace jt::view
