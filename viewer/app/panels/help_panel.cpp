@@ -20,6 +20,8 @@ void help_panel() {
         {"+ / -", "zoom the image in / out (about the mouse)"},
         {"Ctrl+wheel", "zoom the image about the mouse"},
         {"Middle drag, Space+drag", "pan the image (the camera stays)"},
+        {"Ctrl+drag", "render only that rectangle (Render region)"},
+        {"A", "show snapshot A / the live image"},
         {"H", "hide / show the panels"},
         {"T", "show / hide the text editor"},
         {"Esc", "close a popup or picker; with none open, quit"},
