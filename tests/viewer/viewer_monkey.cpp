@@ -26,16 +26,19 @@
 #include "common/files.hpp"
 #include "document_edits.hpp"
 #include "headless.hpp"
+#include "image_compare.hpp"
 #include "jtracer/parser.hpp"
 #include "jtracer/png.hpp"
 #include "jtracer/schema.hpp"
 #include "keys.hpp"
 #include "panels/panels.hpp"
 #include "picking.hpp"
+#include "render_region.hpp"
 
 #include <imgui.h>
 
 #include <chrono>
+#include <cmath>
 #include <cstdio>
 #include <cstdlib>
 #include <filesystem>
@@ -213,8 +216,10 @@ class Monkey {
         ImGuiIO& io = ImGui::GetIO();
         const float w = static_cast<float>(viewer_.width()),
                     h = static_cast<float>(viewer_.height());
-        const int kind = pick(100);
-        if (kind < 12) {
+        const int kind = pick(106);
+        if (kind >= 100) {
+            image_tool_event(w, h);
+        } else if (kind < 12) {
             last_event_ = "mouse move";
             io.MousePos = ImVec2(uniform(0, w), uniform(0, h));
             frame();
@@ -255,9 +260,10 @@ class Monkey {
         } else if (kind < 88) {
             last_event_ = "click to select";
             const float x = uniform(0, w), y = uniform(0, h);
+            const Selection before = state_.selection;
             viewer_.drag(state_, 0, x, y, x, y);
             frames_ += 6;
-            check_selection();
+            check_selection(before);
         } else if (kind < 89) {
             last_event_ = "object filter";
             const char* filters[] = {"", "sphere", "plane 1", "zzz"};
@@ -271,6 +277,81 @@ class Monkey {
             frame();
         } else {
             change_the_file();
+        }
+    }
+
+    // The image view and its tools: zoom, pan, Render region, A/B compare.
+    void image_tool_event(float w, float h) {
+        ImGuiIO& io = ImGui::GetIO();
+        switch (pick(6)) {
+            case 0:
+                last_event_ = "Ctrl+wheel";
+                viewer_.scroll(state_, uniform(0, w), uniform(0, h), uniform(-4, 4), true);
+                frames_ += 2;
+                break;
+            case 1: {
+                static const int zoom_keys[] = {keys::equal, keys::minus, keys::digit('1'),
+                                                keys::letter('F'), keys::letter('A')};
+                last_event_ = "zoom or compare key";
+                viewer_.press_key(state_, zoom_keys[pick(5)]);
+                frames_ += 2;
+                break;
+            }
+            case 2: {
+                const bool space = pick(2);
+                last_event_ = space ? "Space+drag" : "middle drag";
+                io.KeysDown[keys::space] = space;
+                viewer_.drag(state_, space ? 0 : 2, uniform(0, w), uniform(0, h), uniform(0, w),
+                             uniform(0, h));
+                io.KeysDown[keys::space] = false;
+                frame();
+                frames_ += 7;
+                break;
+            }
+            case 3:
+                last_event_ = "Ctrl+drag region";
+                viewer_.drag(state_, 0, uniform(0, w), uniform(0, h), uniform(0, w), uniform(0, h),
+                             kCtrl);
+                frames_ += 6;
+                break;
+            case 4:
+                last_event_ = "clear region";
+                clear_render_region(state_);
+                frame();
+                break;
+            default: {
+                last_event_ = "compare";
+                const int what = pick(4);
+                if (what == 0) snapshot_a(state_);
+                if (what == 1) state_.compare.mode = static_cast<CompareMode>(pick(4));
+                if (what == 2) state_.compare.split = uniform(-0.2f, 1.2f);
+                if (what == 3) clear_snapshot_a(state_);
+                frame();
+                break;
+            }
+        }
+        check_image_view();
+    }
+
+    // The image cannot be lost: along each axis a zoomed image larger than its
+    // area covers it, a smaller one is centred; a region render stays inside its frame.
+    void check_image_view() {
+        const ScreenRect r = viewer_.image_rect(), area = viewer_.image_area();
+        if (r.width() > 0 && area.width() > 0) {
+            const auto check_axis = [&](float lo, float hi, float area_lo, float area_hi,
+                                        const char* axis) {
+                const bool covers = lo <= area_lo + 1 && hi >= area_hi - 1;
+                const bool centred = std::abs((lo + hi) - (area_lo + area_hi)) <= 2;
+                if (!covers && !centred) fail(std::string("the image left its area along ") + axis);
+            };
+            check_axis(r.x0, r.x1, area.x0, area.x1, "x");
+            check_axis(r.y0, r.y1, area.y0, area.y1, "y");
+        }
+        if (state_.started && state_.started->options.region) {
+            const PixelRect& region = *state_.started->options.region;
+            if (region.x0 < 0 || region.y0 < 0 || region.x1 > state_.started->options.width ||
+                region.y1 > state_.started->options.height || region.empty())
+                fail("a region render outside its frame");
         }
     }
 
@@ -463,9 +544,12 @@ class Monkey {
     // Every file in the folder is whole: the scene is a text the monkey wrote
     // or one the viewer saved; images are whole PNGs; no temporary is left.
     // A click selects an object or light the scene has now, or nothing: never
-    // an index of a scene the image no longer shows.
-    void check_selection() {
-        if (state_.selection != current_selection(state_))
+    // an index of a scene the image no longer shows. (A click that misses the
+    // image, on a panel, beside a zoomed-out image, changes nothing, and an
+    // earlier selection may name an object deleted since: current_selection
+    // reads it as none.)
+    void check_selection(const Selection& before) {
+        if (state_.selection != before && state_.selection != current_selection(state_))
             fail("a click selected " + std::to_string(state_.selection.index) + " of " +
                  std::to_string(state_.doc.scene.primitives.size()) + " objects");
     }
