@@ -2,6 +2,7 @@
 # Builds the libFuzzer targets (preset fuzz: clang 14, ASan + UBSan, over
 # jtracer_scene) and runs each for a bounded time:
 #   scripts/fuzz.sh [SECONDS_EACH] [TARGET...]   (default 60 s, every target)
+#   JT_FUZZ_SEED=N scripts/fuzz.sh ...            (the same mutations every run)
 #
 # The build, corpora, crash artifacts and logs (one per run, timestamped) go to
 # build/fuzz/, never into the repo.
@@ -48,6 +49,11 @@ export LSAN_OPTIONS=suppressions=$PWD/fuzz/lsan-assimp.supp:print_suppressions=0
 # The targets run side by side (one core each), so the whole run takes about
 # SECONDS_EACH; the summaries follow in order.
 stamp=$(date +%Y%m%d-%H%M%S)
+# JT_FUZZ_SEED fixes libFuzzer's random seed, so that a run from the same
+# corpus mutates the same way every time (CI's run, scripts/test.sh, is then
+# the same on every machine of the same speed); unset, each run differs.
+seed=()
+[ -n "${JT_FUZZ_SEED:-}" ] && seed=(-seed="$JT_FUZZ_SEED")
 pids=()
 for target in "${targets[@]}"; do
     corpus=$out/corpus/$target
@@ -59,7 +65,7 @@ for target in "${targets[@]}"; do
     # every execution down (a longer seed is cut to this length).
     [ "$target" = model_fuzzer ] && dict=(-max_len=131072)
     echo "== $target: $seconds s (log: $out/$target-$stamp.log)"
-    "$bin/$target" "${dict[@]}" -max_total_time="$seconds" -timeout=60 \
+    "$bin/$target" "${dict[@]}" "${seed[@]}" -max_total_time="$seconds" -timeout=60 \
         -rss_limit_mb=2048 -print_final_stats=1 \
         -artifact_prefix="$artifacts/" "$corpus" "$out/seeds/$target" \
         >"$out/$target-$stamp.log" 2>&1 &

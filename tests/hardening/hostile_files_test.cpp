@@ -8,6 +8,8 @@
 #include "cli_sandbox.hpp"
 
 #include <filesystem>
+#include <fstream>
+#include <iterator>
 #include <string>
 
 namespace jt::test {
@@ -139,6 +141,39 @@ TEST_F(HostileModels, PlyHeaderThatNeverEndsIsRefusedInsteadOfReadForEver) {
                        "property float y\nproperty float z\n0 0 0\n1 0 0\n0 1 0\n");
     expect_refused_everywhere(
         "endless.ply", "its PLY header does not end (no end_header line within 10000 lines)");
+}
+
+// Found by fuzz/model_fuzzer: Assimp also reads for ever when the data starts
+// on the end_header line itself.
+TEST_F(HostileModels, PlyWhoseDataStartsOnTheEndHeaderLineIsRefused) {
+    write_scene_naming("joined.ply",
+                       "ply\nformat ascii 1.0\nelement vertex 3\nproperty float x\n"
+                       "property float y\nproperty float z\nend_header0 0 0\n1 0 0\n0 1 0\n");
+    expect_refused_everywhere("joined.ply",
+                              "its PLY header's end_header line has more on it (the data must "
+                              "start on the next line)");
+}
+
+// Found by fuzz/model_fuzzer: Assimp's glTF 1.0 importer fails its own
+// assertions (an abort in Debian's build) and reads past its buffers on
+// malformed files; glTF 1.0 is refused, as the language reads glTF 2.0.
+TEST_F(HostileModels, GltfOneIsRefusedByItsVersion) {
+    const std::pair<std::string, std::string> cases[] = {
+        {"glb-failing-an-assimp-assertion", "GLTF: Unsupported binary glTF version"},
+        {"gltf1-reading-past-its-buffer", "GLTF: Unsupported glTF version: 1.0"},
+    };
+    for (const auto& [input, problem] : cases) {
+        SCOPED_TRACE(input);
+        std::ifstream in(fs::path(JT_SOURCE_DIR) / "tests/hardening/regressions/model" / input,
+                         std::ios::binary);
+        const char importer = static_cast<char>(in.get());  // the fuzzer's importer byte
+        const std::string model((std::istreambuf_iterator<char>(in)),
+                                std::istreambuf_iterator<char>());
+        ASSERT_GT(model.size(), 1000u);
+        const std::string name = importer == 4 ? "v1.glb" : "v1.gltf";
+        write_scene_naming(name, model);
+        expect_refused_everywhere(name, problem);
+    }
 }
 
 // Assimp opens an absolute buffer path below the model's folder ("scene//etc/passwd"),

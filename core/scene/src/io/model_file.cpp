@@ -3,6 +3,7 @@
 #include "io/confined_io_system.hpp"
 #include "io/file_bytes.hpp"
 
+#include <assimp/importerdesc.h>
 #include <assimp/scene.h>
 #include <assimp/Importer.hpp>
 #include <glm/geometric.hpp>
@@ -17,10 +18,27 @@
 #include <memory>
 #include <new>
 #include <sstream>
+#include <stdexcept>
 #include <string>
+#include <string_view>
 #include <system_error>
 #include <utility>
 #include <vector>
+
+// Debian's Assimp is built with its internal assertions on, and a failed one
+// aborts the process: a malformed model file would end the program. This
+// definition takes the library's place (its calls go through the PLT, and the
+// program's symbol comes first) and throws instead; the importer turns the
+// exception into its error string, which read_model reports as the model's.
+namespace Assimp {
+void aiAssertViolation(const char* expression, const char* file, int line) {
+    std::string where = file ? file : "?";
+    where = where.substr(where.find_last_of('/') + 1) + ":" + std::to_string(line);
+    throw std::runtime_error("malformed model (Assimp's check '" +
+                             std::string(expression ? expression : "?") + "' failed at " + where +
+                             ")");
+}
+}  // namespace Assimp
 
 namespace jt {
 
@@ -32,17 +50,22 @@ std::string lower_extension(const std::filesystem::path& file) {
     return ext;
 }
 
-// A PLY header must end (Assimp 5.2 reads one without "end_header" for
-// ever) and its element counts must fit in the file (each instance takes a
-// byte at least), so that a short file cannot make the reader reserve room
-// for billions. "" when both hold, or when the file is no PLY.
+// A PLY header must end with a line that is "end_header" alone (Assimp 5.2
+// reads for ever through a header without one, and through one whose data
+// starts on the end_header line itself) and its element counts must fit in the file (each instance
+// takes a byte at least), so that a short file cannot make the reader reserve room for billions. ""
+// when both hold, or when the file is no PLY.
 constexpr int max_ply_header_lines = 10000;
 std::string ply_header_problem(const std::filesystem::path& file, std::uintmax_t size) {
     std::ifstream in(file, std::ios::binary);
     std::string line;
     if (!std::getline(in, line) || line.rfind("ply", 0) != 0) return "";
     for (int lines = 0; lines < max_ply_header_lines && std::getline(in, line); ++lines) {
-        if (line.rfind("end_header", 0) == 0) return "";
+        if (line.rfind("end_header", 0) == 0) {
+            if (line.find_first_not_of(" \t\r", 10) == std::string::npos) return "";
+            return "its PLY header's end_header line has more on it (the data must start on the "
+                   "next line)";
+        }
         std::istringstream words(line);
         std::string keyword, name;
         double count = 0.0;
@@ -67,6 +90,19 @@ std::filesystem::path reference_folder(const std::filesystem::path& file,
     const auto relative = model.lexically_relative(scene);
     if (!relative.empty() && *relative.begin() != "..") return scene;
     return model.parent_path();
+}
+
+// The language reads glTF 2.0 (docs/language.md §13.5). Assimp's glTF 1.0
+// importer is left out: on malformed input it reads past its buffers
+// (found by fuzz/model_fuzzer), and no current tool writes glTF 1.0.
+void leave_out_gltf1(Assimp::Importer& importer) {
+    for (std::size_t i = 0; i < importer.GetImporterCount(); ++i) {
+        const aiImporterDesc* info = importer.GetImporterInfo(i);
+        if (info && std::string_view(info->mName) == "glTF Importer") {
+            importer.UnregisterLoader(importer.GetImporter(i));
+            return;
+        }
+    }
 }
 
 glm::dmat4 to_glm(const aiMatrix4x4& m) {
@@ -212,6 +248,7 @@ Expected<Model> read_model(const std::filesystem::path& file, const std::filesys
         return Error{file_message(file, problem)};
     try {
         Assimp::Importer importer;
+        leave_out_gltf1(importer);
         auto* io = new ConfinedIOSystem(reference_folder(file, folder));
         importer.SetIOHandler(io);  // the importer owns it
         const aiScene* scene = importer.ReadFile(file.string(), 0);
