@@ -154,6 +154,16 @@ TEST_F(HostileModels, PlyWhoseDataStartsOnTheEndHeaderLineIsRefused) {
                               "start on the next line)");
 }
 
+// Found by fuzz/model_fuzzer: Assimp corrupts its heap (the program aborts)
+// on a binary PLY whose header declares its vertices twice.
+TEST_F(HostileModels, PlyDeclaringAnElementTwiceIsRefused) {
+    write_scene_naming("twice.ply",
+                       "ply\nformat binary_little_endian 1.0\nelement vertex 3\n"
+                       "property float x\nelement vertex 3\nproperty float y\nend_header\n" +
+                           std::string(24, '\0'));
+    expect_refused_everywhere("twice.ply", "its PLY header declares the element 'vertex' twice");
+}
+
 // Found by fuzz/model_fuzzer: Assimp's glTF 1.0 importer fails its own
 // assertions (an abort in Debian's build) and reads past its buffers on
 // malformed files; glTF 1.0 is refused, as the language reads glTF 2.0.

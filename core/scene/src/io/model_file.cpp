@@ -52,7 +52,9 @@ std::string lower_extension(const std::filesystem::path& file) {
 
 // A PLY header must end with a line that is "end_header" alone (Assimp 5.2
 // reads for ever through a header without one, and through one whose data
-// starts on the end_header line itself) and its element counts must fit in the file (each instance
+// starts on the end_header line itself), must declare each element once
+// (Assimp corrupts its heap on a binary file that declares one twice) and its
+// element counts must fit in the file (each instance
 // takes a byte at least), so that a short file cannot make the reader reserve room for billions. ""
 // when both hold, or when the file is no PLY.
 constexpr int max_ply_header_lines = 10000;
@@ -60,6 +62,7 @@ std::string ply_header_problem(const std::filesystem::path& file, std::uintmax_t
     std::ifstream in(file, std::ios::binary);
     std::string line;
     if (!std::getline(in, line) || line.rfind("ply", 0) != 0) return "";
+    std::vector<std::string> elements;
     for (int lines = 0; lines < max_ply_header_lines && std::getline(in, line); ++lines) {
         if (line.rfind("end_header", 0) == 0) {
             if (line.find_first_not_of(" \t\r", 10) == std::string::npos) return "";
@@ -71,6 +74,9 @@ std::string ply_header_problem(const std::filesystem::path& file, std::uintmax_t
         double count = 0.0;
         if (!(words >> keyword) || keyword != "element") continue;
         if (!(words >> name >> count)) return "a PLY element line without a count: " + line;
+        if (std::find(elements.begin(), elements.end(), name) != elements.end())
+            return "its PLY header declares the element '" + name + "' twice";
+        elements.push_back(name);
         if (!(count <= static_cast<double>(size)))
             return "its header claims " + line.substr(8) + ", more than the file's " +
                    std::to_string(size) + " bytes can hold";
