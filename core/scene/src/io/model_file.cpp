@@ -3,6 +3,7 @@
 #include "io/confined_io_system.hpp"
 #include "io/file_bytes.hpp"
 
+#include <assimp/BaseImporter.h>
 #include <assimp/importerdesc.h>
 #include <assimp/scene.h>
 #include <assimp/Importer.hpp>
@@ -105,7 +106,9 @@ void leave_out_gltf1(Assimp::Importer& importer) {
     for (std::size_t i = 0; i < importer.GetImporterCount(); ++i) {
         const aiImporterDesc* info = importer.GetImporterInfo(i);
         if (info && std::string_view(info->mName) == "glTF Importer") {
-            importer.UnregisterLoader(importer.GetImporter(i));
+            // Once unregistered, the loader is ours to delete.
+            std::unique_ptr<Assimp::BaseImporter> gltf1(importer.GetImporter(i));
+            if (importer.UnregisterLoader(gltf1.get()) != aiReturn_SUCCESS) gltf1.release();
             return;
         }
     }
