@@ -51,20 +51,22 @@ std::string lower_extension(const std::filesystem::path& file) {
     return ext;
 }
 
-// A PLY header must end with a line that is "end_header" alone (Assimp 5.2
-// reads for ever through a header without one, and through one whose data
-// starts on the end_header line itself), must declare each element once
-// (Assimp corrupts its heap on a binary file that declares one twice) and its
-// element counts must fit in the file (each instance
-// takes a byte at least), so that a short file cannot make the reader reserve room for billions. ""
-// when both hold, or when the file is no PLY.
-constexpr int max_ply_header_lines = 10000;
+// What a PLY header must be before Assimp reads the file, or "" when it is
+// one (or the file is no PLY):
+// - it ends with a line that is "end_header" alone: Assimp 5.2 reads for ever
+//   through a header without one, and through one whose data starts on the
+//   end_header line itself;
+// - it declares each element once: Assimp corrupts its heap on a binary file
+//   that declares one twice;
+// - its element counts fit in the file (each instance takes a byte at least),
+//   so that a short file cannot make the reader reserve room for billions.
+constexpr int kMaxPlyHeaderLines = 10000;
 std::string ply_header_problem(const std::filesystem::path& file, std::uintmax_t size) {
     std::ifstream in(file, std::ios::binary);
     std::string line;
     if (!std::getline(in, line) || line.rfind("ply", 0) != 0) return "";
     std::vector<std::string> elements;
-    for (int lines = 0; lines < max_ply_header_lines && std::getline(in, line); ++lines) {
+    for (int lines = 0; lines < kMaxPlyHeaderLines && std::getline(in, line); ++lines) {
         if (line.rfind("end_header", 0) == 0) {
             if (line.find_first_not_of(" \t\r", 10) == std::string::npos) return "";
             return "its PLY header's end_header line has more on it (the data must start on the "
@@ -83,7 +85,7 @@ std::string ply_header_problem(const std::filesystem::path& file, std::uintmax_t
                    std::to_string(size) + " bytes can hold";
     }
     return "its PLY header does not end (no end_header line within " +
-           std::to_string(max_ply_header_lines) + " lines)";
+           std::to_string(kMaxPlyHeaderLines) + " lines)";
 }
 
 // Where the files a model refers to may be: the scene's folder when the
