@@ -69,20 +69,28 @@ void HeadlessViewer::press_key(AppState& state, int key, bool ctrl, bool shift) 
 
 void HeadlessViewer::drag(AppState& state, int button, float x0, float y0, float x1, float y1,
                           int modifiers) {
+    press_mouse(state, button, x0, y0, modifiers);
+    constexpr int steps = 4;
+    for (int i = 1; i <= steps; ++i) {
+        const float t = static_cast<float>(i) / steps;
+        move_mouse(state, x0 + (x1 - x0) * t, y0 + (y1 - y0) * t);
+    }
+    release_mouse(state, button);
+}
+
+void HeadlessViewer::press_mouse(AppState& state, int button, float x, float y, int modifiers) {
     ImGuiIO& io = ImGui::GetIO();
     io.KeyCtrl = (modifiers & kCtrl) != 0;
     io.KeyShift = (modifiers & kShift) != 0;
     io.KeyAlt = (modifiers & kAlt) != 0;
-    io.MousePos = ImVec2(x0, y0);
+    io.MousePos = ImVec2(x, y);
     frame(state);
     io.MouseDown[button] = true;
     frame(state);  // pressed where it is, then moved
-    constexpr int steps = 4;
-    for (int i = 1; i <= steps; ++i) {
-        const float t = static_cast<float>(i) / steps;
-        io.MousePos = ImVec2(x0 + (x1 - x0) * t, y0 + (y1 - y0) * t);
-        frame(state);
-    }
+}
+
+void HeadlessViewer::release_mouse(AppState& state, int button) {
+    ImGuiIO& io = ImGui::GetIO();
     io.MouseDown[button] = false;
     frame(state);
     io.KeyCtrl = io.KeyShift = io.KeyAlt = false;

@@ -31,6 +31,11 @@ class HeadlessViewer {
     // (DragModifier flags) held throughout.
     void drag(AppState& state, int button, float x0, float y0, float x1, float y1,
               int modifiers = kNoModifier);
+    // The same in steps: the button pressed at (x, y) with `modifiers` held
+    // (a frame before and one after the press), then moves (move_mouse), then
+    // let go (a frame) and the modifiers with it.
+    void press_mouse(AppState& state, int button, float x, float y, int modifiers = kNoModifier);
+    void release_mouse(AppState& state, int button);
     // Clicks the control drawn under `label` in the last frame (see
     // ui_items.hpp) with the left button; false when there is none.
     bool click(AppState& state, const std::string& label);

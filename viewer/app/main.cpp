@@ -167,7 +167,10 @@ int run_window(const Arguments& args) {
             // While a load or a render's first pass is under way, sleep until
             // the loader or the render wakes the loop (or input arrives), so
             // that the frame showing it starts at once, not at the next tick.
-            if (render_complete(app) && !app.loader.busy() && !args.exit_when_done)
+            // An object drag writes the cursor's last position once its interval
+            // passes: frames go on while the mouse holds still.
+            if (render_complete(app) && !app.loader.busy() && !app.object_drag &&
+                !args.exit_when_done)
                 window.wait_events(0.2);
             else if (waiting_for_workers(app))
                 window.wait_events(0.05);

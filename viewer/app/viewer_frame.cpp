@@ -4,6 +4,7 @@
 #include "document_edits.hpp"
 #include "image_compare.hpp"
 #include "keys.hpp"
+#include "object_drag.hpp"
 #include "panels/panels.hpp"
 #include "panels/widgets.hpp"
 #include "picking.hpp"
@@ -30,11 +31,15 @@ bool pressed(int key) {
     return ImGui::IsKeyPressed(key, false);
 }
 
-// Esc closes whatever is open first (a popup, a colour picker, a combo; a
-// text field or a widget being dragged handles Esc itself) and asks to quit
-// only when nothing is.
+// Esc cancels a drag that moves an object, else closes whatever is open first
+// (a popup, a colour picker, a combo; a text field or a widget being dragged
+// handles Esc itself) and asks to quit only when nothing is.
 void handle_escape(AppState& state) {
     if (!pressed(keys::escape)) return;
+    if (state.object_drag) {
+        cancel_object_drag(state);
+        return;
+    }
     if (ImGui::IsPopupOpen("", ImGuiPopupFlags_AnyPopupId)) {
         if (state.unsaved_prompt) resolve_unsaved(state, UnsavedChoice::cancel);
         ImGui::ClosePopupToLevel(0, true);
@@ -116,20 +121,30 @@ void handle_shortcuts(AppState& state, FrameState& frame, const ImagePlace& imag
 // How far (window units) a press may move and still be a click.
 constexpr float kClickSlack = 3.0f;
 
+// How near a light's marker a click must be to select it, in image pixels.
+double marker_radius(const ImagePlace& image) {
+    return light_marker_radius() * image.width / static_cast<double>(image.where.width());
+}
+
 // A click on the image selects what it shows (a light's marker first).
 void click_image(AppState& state, const ImagePlace& image, float x, float y) {
     if (!image.shows(x, y)) return;
     const std::optional<ImagePoint> at =
         window_to_image(image.where, image.width, image.height, x, y);
     if (!at) return;
-    const double pixels_per_unit = image.width / static_cast<double>(image.where.width());
-    select_at(state, at->x, at->y, light_marker_radius() * pixels_per_unit);
+    select_at(state, at->x, at->y, marker_radius(image));
+}
+
+// Where window point (x, y) is on the image's plane, also past its edges.
+ImagePoint image_point(const ImagePlace& image, float x, float y) {
+    return window_to_image_plane(image.where, image.width, image.height, x, y);
 }
 
 ImageDrag::Mode drag_mode(int button) {
     if (button == ImGuiMouseButton_Middle) return ImageDrag::Mode::image_pan;
     if (button == ImGuiMouseButton_Right) return ImageDrag::Mode::camera_pan;
     if (ImGui::IsKeyDown(keys::space)) return ImageDrag::Mode::image_pan;
+    if (ImGui::GetIO().KeyAlt) return ImageDrag::Mode::move_object;
     if (ImGui::GetIO().KeyCtrl) return ImageDrag::Mode::region;
     return ImageDrag::Mode::orbit;
 }
@@ -149,8 +164,11 @@ void end_drag(AppState& state, const ImagePlace& image) {
         if (!drag.moved) return;  // a Ctrl+click sets no region
         if (const auto region = dragged_region(drag, image, drag.last_x, drag.last_y))
             set_render_region(state, *region);
+    } else if (drag.mode == ImageDrag::Mode::move_object && drag.moved) {
+        finish_object_drag(state, image_point(image, drag.last_x, drag.last_y),
+                           ImGui::GetIO().KeyShift);
     } else if (!drag.moved && drag.button == ImGuiMouseButton_Left &&
-               drag.mode == ImageDrag::Mode::orbit) {
+               (drag.mode == ImageDrag::Mode::orbit || drag.mode == ImageDrag::Mode::move_object)) {
         click_image(state, image, drag.press_x, drag.press_y);
     }
 }
@@ -169,14 +187,16 @@ void follow_drag(AppState& state, const ImagePlace& image, float dx, float dy) {
             use_free_camera(state);
             pan(state.free_camera, dx, dy, image.where.height());
             break;
-        case ImageDrag::Mode::region:  // drawn while dragging, set when let go
+        case ImageDrag::Mode::region:       // drawn while dragging, set when let go
+        case ImageDrag::Mode::move_object:  // follows the cursor every frame
             break;
     }
 }
 
 // Mouse on the image: a click selects, a drag moves the free camera (started
-// from the scene camera) or pans the image view, the wheel dollies the camera
-// and Ctrl+wheel zooms the image about the mouse.
+// from the scene camera) or pans the image view, an Alt+drag moves the
+// selection, the wheel dollies the camera and Ctrl+wheel zooms the image
+// about the mouse.
 void handle_image_mouse(AppState& state, const ImagePlace& image) {
     const ImGuiIO& io = ImGui::GetIO();
     ImageDrag& drag = state.drag;
@@ -198,13 +218,21 @@ void handle_image_mouse(AppState& state, const ImagePlace& image) {
     }
     if (drag.button >= 0 && ImGui::IsMousePosValid()) {
         if (!drag.moved &&
-            std::hypot(io.MousePos.x - drag.press_x, io.MousePos.y - drag.press_y) > kClickSlack)
+            std::hypot(io.MousePos.x - drag.press_x, io.MousePos.y - drag.press_y) > kClickSlack) {
             drag.moved = true;
+            if (drag.mode == ImageDrag::Mode::move_object)
+                start_object_drag(state, image_point(image, drag.press_x, drag.press_y),
+                                  marker_radius(image));
+        }
         if (!drag.moved) return;
         const float dx = io.MousePos.x - drag.last_x, dy = io.MousePos.y - drag.last_y;
         drag.last_x = io.MousePos.x;
         drag.last_y = io.MousePos.y;
-        if (dx != 0.0f || dy != 0.0f) follow_drag(state, image, dx, dy);
+        // Every frame, moved or not: a position held back by the write interval is written.
+        if (drag.mode == ImageDrag::Mode::move_object)
+            drag_object_to(state, image_point(image, drag.last_x, drag.last_y), io.KeyShift);
+        else if (dx != 0.0f || dy != 0.0f)
+            follow_drag(state, image, dx, dy);
     } else if (io.MouseWheel != 0.0f && over && usable) {
         if (io.KeyCtrl) {
             const float zoom = shown_zoom(image.width, image.height, image.area,

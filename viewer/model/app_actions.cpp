@@ -7,6 +7,7 @@
 #include "jtracer/model_cache.hpp"
 #include "jtracer/texture.hpp"
 #include "jtracer/validate.hpp"
+#include "object_drag.hpp"
 #include "ui_rounding.hpp"
 
 #include <algorithm>
@@ -358,8 +359,14 @@ void recheck_draft(AppState& state) {
 namespace {
 
 // Moves one step through the undo history; `step` is the stack's undo or redo.
+// Undo or redo during a drag that moves an object gives back the document as
+// the drag found it, and nothing more: the drag is the step being undone.
 template <class Step>
 void step_history(AppState& state, Step step, const char* done) {
+    if (state.object_drag) {
+        cancel_object_drag(state);
+        return;
+    }
     if (auto version = step(version_of(state.doc))) {
         const Scene before = state.doc.scene;
         restore_version(state.doc, *version);

@@ -4,6 +4,7 @@
 // command does). No GL, no ImGui: the frame code (viewer/app) draws this state
 // and keeps the texture itself.
 
+#include "drag_geometry.hpp"
 #include "file_watcher.hpp"
 #include "free_camera.hpp"
 #include "image_layout.hpp"
@@ -23,6 +24,7 @@
 #include <chrono>
 #include <cstdint>
 #include <filesystem>
+#include <memory>
 #include <optional>
 #include <string>
 #include <vector>
@@ -70,16 +72,41 @@ struct GuardedCommand {
 struct ImageDrag {
     // What a drag does, chosen at the press by its button and modifiers.
     enum class Mode {
-        orbit,       // left: the free camera orbits
-        camera_pan,  // right: the free camera pans
-        image_pan,   // middle, or Space + left: the image view pans (the camera stays)
-        region,      // Ctrl + left: a rectangle to render alone (render_region.hpp)
+        orbit,        // left: the free camera orbits
+        camera_pan,   // right: the free camera pans
+        image_pan,    // middle, or Space + left: the image view pans (the camera stays)
+        region,       // Ctrl + left: a rectangle to render alone (render_region.hpp)
+        move_object,  // Alt + left: the selected object or light moves (object_drag.hpp)
     };
     int button = -1;  // ImGuiMouseButton, -1 when no drag
     Mode mode = Mode::orbit;
     float last_x = 0, last_y = 0;
     float press_x = 0, press_y = 0;
     bool moved = false;  // beyond a click's slack: the camera follows
+};
+
+// An object or light being moved by a drag (object_drag.hpp): what moves,
+// in which plane, from which value, and the document to go back to.
+struct ObjectDrag {
+    Selection target;  // a primitive or a light
+    // The frame the drag started on: its camera maps the cursor to rays
+    // while the render restarts with each move.
+    std::shared_ptr<const PreparedFrame> frame;
+    ImagePoint press;  // where the drag started, image pixels
+    DragPlane plane;   // facing the camera, through the point grabbed
+    // A plane primitive moves along its unit world normal alone.
+    std::optional<Vec3> only_along;
+    double pixel_size = 0.0;  // of one image pixel on the plane: the step of the numbers
+    // The value the drag moves: the light's position, or the vector of the
+    // primitive's last transform operation, a translate (zero when the drag
+    // adds that translate, at its first move).
+    Vec3 start{0.0};
+    bool adds_translate = false;
+    Vec3 written{0.0};             // the value the document holds now
+    bool changed = false;          // the drag has changed the document
+    DocumentVersion before;        // the document at the press: what undo and Esc give back
+    std::uint64_t generation = 0;  // scene_generation after the drag's last write
+    std::chrono::steady_clock::time_point last_write;
 };
 
 // How the image shows against a snapshot A (image_compare.hpp).
@@ -149,6 +176,7 @@ struct AppState {
     FreeCamera free_camera;
     std::string new_camera_name = "viewer";
     ImageDrag drag;
+    std::optional<ObjectDrag> object_drag;  // while an Alt+drag moves something
 
     Selection selection;            // read through current_selection (picking.hpp)
     bool reveal_selection = false;  // its panel opens and scrolls to it in the next frame

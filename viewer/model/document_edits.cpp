@@ -30,19 +30,12 @@ std::string kind_name(TransformKind kind) {
 
 }  // namespace
 
-bool edit_text_structure(AppState& state,
-                         const std::function<Expected<std::string>(const SceneText&)>& edit,
-                         const std::string& done) {
+Expected<void> rewrite_text(AppState& state,
+                            const std::function<Expected<std::string>(const SceneText&)>& edit) {
     SceneDocument& doc = state.doc;
-    if (!doc.loaded) {
-        state.message = "No scene is open";
-        return false;
-    }
-    if (doc.draft) {
-        state.message = "The text has errors: fix them in the text editor first";
-        return false;
-    }
-    const DocumentVersion before = version_of(doc);
+    if (!doc.loaded) return Error{"No scene is open"};
+    if (doc.draft) return Error{"The text has errors: fix them in the text editor first"};
+    const Scene before = doc.scene;
     Expected<std::string> edited = Error{""};
     if (doc.scene == doc.original) {
         edited = edit(SceneText{doc.text, doc.original, doc.source});
@@ -52,19 +45,25 @@ bool edit_text_structure(AppState& state,
         const ParseResult parsed = parse_scene(text);
         edited = edit(SceneText{text, parsed.scene, parsed.source});
     }
-    if (!edited) {
-        state.message = "Not done: " + edited.error().message;
-        return false;
-    }
-    if (const Expected<void> taken = replace_text(doc, std::move(*edited)); !taken) {
-        state.message = "Not done: " + taken.error().message;
-        return false;
-    }
-    state.undo.record(before);
-    keep_camera_selection(state, before.scene);
+    if (!edited) return Error{"Not done: " + edited.error().message};
+    if (const Expected<void> taken = replace_text(doc, std::move(*edited)); !taken)
+        return Error{"Not done: " + taken.error().message};
+    keep_camera_selection(state, before);
     state.edit_base.reset();
     state.typing = false;
     ++state.scene_generation;
+    return {};
+}
+
+bool edit_text_structure(AppState& state,
+                         const std::function<Expected<std::string>(const SceneText&)>& edit,
+                         const std::string& done) {
+    const DocumentVersion before = version_of(state.doc);
+    if (const Expected<void> rewritten = rewrite_text(state, edit); !rewritten) {
+        state.message = rewritten.error().message;
+        return false;
+    }
+    state.undo.record(before);
     state.message = done + " (Save scene to keep it)";
     return true;
 }

@@ -27,6 +27,11 @@ inline constexpr std::chrono::milliseconds kTypingPause{250};
 bool edit_text_structure(AppState& state,
                          const std::function<Expected<std::string>(const SceneText&)>& edit,
                          const std::string& done);
+// The same without recording an undo step or a message, for an edit that
+// keeps its own step (a drag that moves an object records one when let go);
+// the error is the message to show.
+Expected<void> rewrite_text(AppState& state,
+                            const std::function<Expected<std::string>(const SceneText&)>& edit);
 
 bool add_object(AppState& state, ShapeKind kind);  // in front of the view's camera
 // A mesh of the model `file` (relative to the scene's folder, as a mesh's

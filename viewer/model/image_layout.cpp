@@ -100,12 +100,18 @@ ImageView pan_view(const ImageView& view, int image_w, int image_h, ScreenRect a
     return clamp_view(out, image_w, image_h, area, framebuffer_scale);
 }
 
+ImagePoint window_to_image_plane(const ScreenRect& where, int image_w, int image_h, float x,
+                                 float y) {
+    if (image_w <= 0 || image_h <= 0 || where.width() <= 0 || where.height() <= 0) return {};
+    return ImagePoint{(x - where.x0) / where.width() * image_w,
+                      (where.y1 - y) / where.height() * image_h};
+}
+
 std::optional<ImagePoint> window_to_image(const ScreenRect& where, int image_w, int image_h,
                                           float x, float y) {
     if (image_w <= 0 || image_h <= 0 || where.width() <= 0 || where.height() <= 0) return {};
     if (!where.contains(x, y)) return {};
-    return ImagePoint{(x - where.x0) / where.width() * image_w,
-                      (where.y1 - y) / where.height() * image_h};
+    return window_to_image_plane(where, image_w, image_h, x, y);
 }
 
 ImagePoint window_to_image_clamped(const ScreenRect& where, int image_w, int image_h, float x,

@@ -80,6 +80,11 @@ std::optional<ImagePoint> window_to_image(const ScreenRect& where, int image_w, 
 ImagePoint window_to_image_clamped(const ScreenRect& where, int image_w, int image_h, float x,
                                    float y);
 
+// The same for any window point, not moved: outside the image it is outside
+// [0, image_w) x [0, image_h) (a drag that moves an object on past the edge).
+ImagePoint window_to_image_plane(const ScreenRect& where, int image_w, int image_h, float x,
+                                 float y);
+
 struct WindowPoint {
     float x = 0, y = 0;
 };

@@ -22,14 +22,20 @@ PixelRect frame_rect(const PreparedFrame& frame) {
     return {0, 0, frame.options.width, frame.options.height};
 }
 
-std::optional<PickedPrimitive> pick_primitive(const PreparedFrame& frame, int x, int y) {
-    if (x < 0 || y < 0 || x >= frame.options.width || y >= frame.options.height) return {};
+std::optional<CameraRay> camera_ray(const PreparedFrame& frame, const ImagePoint& at) {
     const CameraFrame& camera = frame.camera;
-    const Vec3 d = camera_direction(camera, x + 0.5, y + 0.5);
+    const Vec3 d = camera_direction(camera, at.x, at.y);
     // A camera that cannot form a frame sees nothing (render_tile: background).
     if (!finite(camera.position) || !finite(d)) return {};
+    return CameraRay{camera.position, d};
+}
+
+std::optional<PickedPrimitive> pick_primitive(const PreparedFrame& frame, int x, int y) {
+    if (x < 0 || y < 0 || x >= frame.options.width || y >= frame.options.height) return {};
+    const std::optional<CameraRay> ray = camera_ray(frame, {x + 0.5, y + 0.5});
+    if (!ray) return {};
     Hit hit;
-    if (!closest_hit(*frame.scene->geometry, camera.position, d, 0.0, hit)) return {};
+    if (!closest_hit(*frame.scene->geometry, ray->origin, ray->direction, 0.0, hit)) return {};
     return PickedPrimitive{static_cast<int>(hit.source), hit.t};
 }
 

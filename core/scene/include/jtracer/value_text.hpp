@@ -14,6 +14,15 @@ namespace jt {
 // back the same. -0 is written "0". Finite values only ("nan", "inf" do not parse).
 std::string number_text(double value);
 
+// `value` rounded to a multiple of the power of ten three digits below
+// `scale`'s first (scale 2.5: a multiple of 0.01), so that the number an
+// editor makes for a scene of that size is short. Below 1 the step is divided
+// out by an exact power of ten, so the result is the double nearest the
+// decimal and its number_text is short ("1.23"). Never -0; a scale that is
+// not positive and finite leaves the value as it is.
+double rounded_to_scale(double value, double scale);
+Vec3 rounded_to_scale(const Vec3& value, double scale);
+
 // "<1, 0.5, 0>": three number_texts.
 std::string vector_text(const Vec3& value);
 

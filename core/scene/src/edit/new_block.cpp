@@ -3,6 +3,7 @@
 #include "jtracer/camera_edit.hpp"
 #include "jtracer/schema.hpp"
 #include "jtracer/validate.hpp"
+#include "jtracer/value_text.hpp"
 
 #include <glm/geometric.hpp>
 #include <glm/trigonometric.hpp>
@@ -46,22 +47,6 @@ View active_view(const Scene& scene) {
     return view;
 }
 
-// `value` rounded to a multiple of a power of ten three digits below
-// `scale`. Below 1 the step is divided out by an exact power of ten, so the
-// result is the double nearest the decimal and its text is short ("1.23").
-double rounded(double value, double scale) {
-    if (!(scale > 0.0) || !std::isfinite(scale) || !std::isfinite(value)) return value;
-    const double exponent = std::floor(std::log10(scale)) - 2.0;
-    const double r = exponent < 0.0
-                         ? std::round(value * std::pow(10.0, -exponent)) / std::pow(10.0, -exponent)
-                         : std::round(value / std::pow(10.0, exponent)) * std::pow(10.0, exponent);
-    return r == 0.0 ? 0.0 : r;  // never -0
-}
-
-Vec3 rounded(const Vec3& v, double scale) {
-    return {rounded(v.x, scale), rounded(v.y, scale), rounded(v.z, scale)};
-}
-
 }  // namespace
 
 std::string_view keyword_of(ShapeKind kind) {
@@ -100,7 +85,7 @@ struct Placement {
 Placement placement(const View& view) {
     const double along = view.distance / 2.0;
     const double half = view.half_height(along);
-    return {rounded(view.eye + view.forward * along, half), half};
+    return {rounded_to_scale(view.eye + view.forward * along, half), half};
 }
 
 }  // namespace
@@ -112,28 +97,30 @@ Primitive new_primitive(ShapeKind kind, const Scene& scene) {
     p.material = new_material();
     switch (kind) {
         case ShapeKind::sphere:
-            p.shape = Sphere{at, rounded(half / 5.0, half)};
+            p.shape = Sphere{at, rounded_to_scale(half / 5.0, half)};
             break;
         case ShapeKind::plane: {
-            const Vec3 normal = rounded(view.up, 1.0);
-            p.shape =
-                Plane{normal, rounded(glm::dot(glm::normalize(normal), at) - half / 2.0, half)};
+            const Vec3 normal = rounded_to_scale(view.up, 1.0);
+            p.shape = Plane{
+                normal, rounded_to_scale(glm::dot(glm::normalize(normal), at) - half / 2.0, half)};
             break;
         }
         case ShapeKind::cylinder: {
-            const Cylinder c{rounded(half / 5.0, half), rounded(half / 2.0, half)};
+            const Cylinder c{rounded_to_scale(half / 5.0, half),
+                             rounded_to_scale(half / 2.0, half)};
             p.shape = c;
             p.transforms.push_back({TransformKind::translate,
-                                    rounded(at - Vec3{0.0, c.height / 2.0, 0.0}, half), 0.0});
+                                    rounded_to_scale(at - Vec3{0.0, c.height / 2.0, 0.0}, half),
+                                    0.0});
             break;
         }
         case ShapeKind::triangle: {
             const double r = half / 5.0;
             const Vec3 right = glm::cross(view.forward, view.up);
             Triangle t;
-            t.a = rounded(at - right * r - view.up * (r / 2.0), half);
-            t.b = rounded(at + right * r - view.up * (r / 2.0), half);
-            t.c = rounded(at + view.up * r, half);
+            t.a = rounded_to_scale(at - right * r - view.up * (r / 2.0), half);
+            t.b = rounded_to_scale(at + right * r - view.up * (r / 2.0), half);
+            t.c = rounded_to_scale(at + view.up * r, half);
             p.shape = t;
             break;
         }
@@ -157,17 +144,17 @@ Primitive new_mesh(const Scene& scene, const std::string& file, const Model& mod
     const Vec3 extent = high - low;
     const double largest = std::max({extent.x, extent.y, extent.z});
     const double diameter = 2.0 * half / 5.0;
-    const double s = largest > 0.0 ? rounded(diameter / largest, diameter / largest) : 1.0;
+    const double s = largest > 0.0 ? rounded_to_scale(diameter / largest, diameter / largest) : 1.0;
     if (s != 1.0) p.transforms.push_back({TransformKind::scale, Vec3(s), 0.0});
     p.transforms.push_back(
-        {TransformKind::translate, rounded(at - (low + high) * (s / 2.0), half), 0.0});
+        {TransformKind::translate, rounded_to_scale(at - (low + high) * (s / 2.0), half), 0.0});
     return p;
 }
 
 PointLight new_light(const Scene& scene) {
     const View view = active_view(scene);
     const double half = view.half_height(view.distance);
-    return {rounded(view.eye + view.up * half, half), Colour{0.7}};
+    return {rounded_to_scale(view.eye + view.up * half, half), Colour{0.7}};
 }
 
 Camera new_camera(const Scene& scene) {

@@ -5,6 +5,7 @@
 
 #include <array>
 #include <charconv>
+#include <cmath>
 
 namespace jt {
 
@@ -13,6 +14,20 @@ std::string number_text(double value) {
     char buf[64];
     auto [end, ec] = std::to_chars(buf, buf + sizeof buf, value);
     return ec == std::errc() ? std::string(buf, end) : std::string("0");
+}
+
+double rounded_to_scale(double value, double scale) {
+    if (!(scale > 0.0) || !std::isfinite(scale) || !std::isfinite(value)) return value;
+    const double exponent = std::floor(std::log10(scale)) - 2.0;
+    const double r = exponent < 0.0
+                         ? std::round(value * std::pow(10.0, -exponent)) / std::pow(10.0, -exponent)
+                         : std::round(value / std::pow(10.0, exponent)) * std::pow(10.0, exponent);
+    return r == 0.0 ? 0.0 : r;  // never -0
+}
+
+Vec3 rounded_to_scale(const Vec3& v, double scale) {
+    return {rounded_to_scale(v.x, scale), rounded_to_scale(v.y, scale),
+            rounded_to_scale(v.z, scale)};
 }
 
 std::string vector_text(const Vec3& v) {

@@ -1,0 +1,250 @@
+#include "object_drag.hpp"
+
+#include "document_edits.hpp"
+#include "jtracer/affine.hpp"
+#include "jtracer/model_cache.hpp"
+#include "jtracer/schema.hpp"
+#include "jtracer/texture.hpp"
+#include "jtracer/transform_edit.hpp"
+#include "jtracer/value_text.hpp"
+#include "picking.hpp"
+
+#include <glm/geometric.hpp>
+
+#include <cmath>
+#include <limits>
+
+namespace jt::view {
+
+namespace {
+
+template <class... F>
+struct overloaded : F... {
+    using F::operator()...;
+};
+template <class... F>
+overloaded(F...) -> overloaded<F...>;
+
+Vec3 mesh_centre(const Scene& scene, const Mesh& mesh) {
+    const auto model = shared_model(asset_path(scene, mesh.file), scene.asset_folder);
+    if (!model || (*model)->positions.empty()) return Vec3{0.0};
+    Vec3 low(std::numeric_limits<double>::infinity());
+    Vec3 high(-std::numeric_limits<double>::infinity());
+    for (const auto& p : (*model)->positions) {
+        low = glm::min(low, Vec3(p));
+        high = glm::max(high, Vec3(p));
+    }
+    return (low + high) * 0.5;
+}
+
+std::string target_name(const Scene& scene, const Selection& target) {
+    const BlockRef block{
+        target.kind == Selection::Kind::light ? BlockKind::light : BlockKind::primitive,
+        static_cast<std::size_t>(target.index)};
+    return block_name(scene, block);
+}
+
+// Where the drag grabs the target: the point of it under the press, or its centre.
+std::optional<Vec3> grabbed_point(AppState& state, const PreparedFrame& frame,
+                                  const Selection& target, const ImagePoint& at) {
+    const Scene& scene = state.doc.scene;
+    const auto index = static_cast<std::size_t>(target.index);
+    if (target.kind == Selection::Kind::light) return scene.lights[index].position;
+    const int x = static_cast<int>(std::floor(at.x)), y = static_cast<int>(std::floor(at.y));
+    if (const std::optional<PickedPrimitive> hit = pick_primitive(frame, x, y);
+        hit && hit->primitive == target.index)
+        if (const std::optional<CameraRay> ray = camera_ray(frame, {x + 0.5, y + 0.5}))
+            return ray->origin + ray->direction * hit->distance;
+    return object_centre(scene, scene.primitives[index]);
+}
+
+// A plane's normal in world space, or nothing when its transform leaves it out.
+std::optional<Vec3> world_normal(const Primitive& primitive) {
+    const Plane* plane = std::get_if<Plane>(&primitive.shape);
+    if (!plane) return std::nullopt;
+    const auto transform = object_transform(primitive.transforms);
+    const ObjectTransform* t = std::get_if<ObjectTransform>(&transform);
+    if (!t) return std::nullopt;
+    return unit_length(t->normal_matrix * plane->normal);
+}
+
+// The value under image point `at`, or nothing when its ray misses the plane.
+std::optional<Vec3> value_at(const ObjectDrag& drag, const ImagePoint& at, bool one_axis) {
+    const std::optional<Vec3> delta = drag_delta(*drag.frame, drag.plane, drag.press, at);
+    if (!delta) return std::nullopt;
+    const Vec3 move = drag.only_along ? along(*delta, *drag.only_along)
+                      : one_axis      ? along_largest_axis(*delta)
+                                      : *delta;
+    return moved_value(drag.start, move, drag.pixel_size);
+}
+
+void say_moved(AppState& state, const ObjectDrag& drag, const char* verb) {
+    const std::string name = target_name(state.doc.scene, drag.target);
+    const bool light = drag.target.kind == Selection::Kind::light;
+    state.message = std::string(verb) + " " + name + (light ? ": position " : ": translate ") +
+                    vector_text(drag.written);
+}
+
+// Something else replaced the document since the drag's last write (a reload
+// from disk, a text edit taken in): the drag stops where it is.
+bool overtaken(AppState& state) {
+    if (state.object_drag->generation == state.scene_generation) return false;
+    state.object_drag.reset();
+    state.message = "The scene changed: the move stopped";
+    return true;
+}
+
+// Puts `value` into the document; false (the drag given back) when the text
+// edit that adds the translate fails.
+bool write_value(AppState& state, const Vec3& value) {
+    ObjectDrag& drag = *state.object_drag;
+    const auto index = static_cast<std::size_t>(drag.target.index);
+    if (drag.target.kind == Selection::Kind::light) {
+        state.doc.scene.lights[index].position = value;
+    } else if (drag.adds_translate) {
+        const TransformOp op{TransformKind::translate, value, 0.0};
+        const Expected<void> added = rewrite_text(state, [&](const SceneText& s) {
+            return add_transform_op(s, index, s.scene.primitives[index].transforms.size(), op);
+        });
+        if (!added) {
+            const std::string why = added.error().message;
+            cancel_object_drag(state);
+            state.message = "Not moved: " + why;
+            return false;
+        }
+        drag.adds_translate = false;
+    } else {
+        state.doc.scene.primitives[index].transforms.back().vector = value;
+    }
+    drag.written = value;
+    drag.changed = true;
+    drag.generation = ++state.scene_generation;
+    return true;
+}
+
+}  // namespace
+
+std::optional<Vec3> object_centre(const Scene& scene, const Primitive& primitive) {
+    const auto transform = object_transform(primitive.transforms);
+    const ObjectTransform* t = std::get_if<ObjectTransform>(&transform);
+    if (!t) return std::nullopt;
+    const Vec3 local = std::visit(
+        overloaded{
+            [](const Sphere& s) { return s.center; },
+            [](const Plane& p) { return unit_length(p.normal).value_or(Vec3{0.0}) * p.distance; },
+            [](const Cylinder& c) {
+                return Vec3{0.0, c.height * 0.5, 0.0};
+            },
+            [](const Triangle& tr) { return (tr.a + tr.b + tr.c) / 3.0; },
+            [&](const Mesh& m) { return mesh_centre(scene, m); },
+        },
+        primitive.shape);
+    return apply_point(t->to_world, local);
+}
+
+bool start_object_drag(AppState& state, const ImagePoint& at, double marker_radius) {
+    state.object_drag.reset();
+    if (!state.doc.loaded || state.doc.draft) {
+        state.message =
+            state.doc.draft ? "Not moved: the text has errors; fix them first" : "No scene is open";
+        return false;
+    }
+    const std::shared_ptr<const PreparedFrame> frame = shown_frame(state);
+    if (!frame) {
+        state.message = "Not moved: the image is not ready yet";
+        return false;
+    }
+    Selection target = current_selection(state);
+    if (target.kind == Selection::Kind::none) {
+        select_at(state, at.x, at.y, marker_radius);
+        target = current_selection(state);
+    }
+    if (target.kind == Selection::Kind::none) {
+        state.message = "Nothing to move: Alt+drag on an object or light, or select one first";
+        return false;
+    }
+    const std::optional<Vec3> grabbed = grabbed_point(state, *frame, target, at);
+    const std::optional<DragPlane> plane =
+        grabbed ? plane_facing_camera(*frame, *grabbed) : std::nullopt;
+    const std::optional<double> pixel = plane ? pixel_size_on(*frame, *plane, at) : std::nullopt;
+    const std::string name = target_name(state.doc.scene, target);
+    if (!pixel) {
+        state.message = "Not moved: " + name +
+                        (grabbed ? " is behind the camera" : " is left out of the render");
+        return false;
+    }
+    ObjectDrag drag;
+    drag.target = target;
+    drag.frame = frame;
+    drag.press = at;
+    drag.plane = *plane;
+    drag.pixel_size = *pixel;
+    if (target.kind == Selection::Kind::light) {
+        drag.start = state.doc.scene.lights[static_cast<std::size_t>(target.index)].position;
+    } else {
+        const Primitive& p = state.doc.scene.primitives[static_cast<std::size_t>(target.index)];
+        drag.only_along = world_normal(p);
+        if (std::holds_alternative<Plane>(p.shape) && !drag.only_along) {
+            state.message = "Not moved: " + name + " is left out of the render";
+            return false;
+        }
+        const bool translate_last =
+            !p.transforms.empty() && p.transforms.back().kind == TransformKind::translate;
+        drag.adds_translate = !translate_last;
+        drag.start = translate_last ? p.transforms.back().vector : Vec3{0.0};
+    }
+    drag.written = drag.start;
+    drag.before = version_of(state.doc);
+    drag.generation = state.scene_generation;
+    state.object_drag = std::move(drag);
+    state.message = "Moving " + name +
+                    (state.object_drag->only_along
+                         ? " along its normal (a plane cannot move within itself); Esc cancels"
+                         : " (Shift: along one axis; Esc cancels)");
+    return true;
+}
+
+void drag_object_to(AppState& state, const ImagePoint& at, bool one_axis,
+                    std::chrono::steady_clock::time_point now) {
+    if (!state.object_drag || overtaken(state)) return;
+    ObjectDrag& drag = *state.object_drag;
+    const std::optional<Vec3> value = value_at(drag, at, one_axis);
+    if (!value || *value == drag.written) return;
+    if (drag.changed && now - drag.last_write < kDragWriteInterval) return;
+    if (!write_value(state, *value)) return;
+    state.object_drag->last_write = now;
+    say_moved(state, *state.object_drag, "Moving");
+}
+
+void finish_object_drag(AppState& state, const ImagePoint& at, bool one_axis) {
+    if (!state.object_drag || overtaken(state)) return;
+    if (const std::optional<Vec3> value = value_at(*state.object_drag, at, one_axis);
+        value && *value != state.object_drag->written && !write_value(state, *value))
+        return;
+    const ObjectDrag drag = std::move(*state.object_drag);
+    state.object_drag.reset();
+    if (drag.written == drag.start) {
+        if (drag.changed) {
+            restore_version(state.doc, drag.before);
+            ++state.scene_generation;
+        }
+        state.message = "Not moved: let go where it started";
+        return;
+    }
+    state.undo.record(drag.before);
+    say_moved(state, drag, "Moved");
+    state.message += " (Save scene to keep it)";
+}
+
+void cancel_object_drag(AppState& state) {
+    if (!state.object_drag) return;
+    const ObjectDrag drag = std::move(*state.object_drag);
+    state.object_drag.reset();
+    if (drag.changed && drag.generation == state.scene_generation) {
+        restore_version(state.doc, drag.before);
+        ++state.scene_generation;
+    }
+    state.message = "Move cancelled";
+}
+
+}  // namespace jt::view
