@@ -3,7 +3,8 @@
 // drags and wheel on the image, clicks and drags on every control the last
 // frame drew, keys (Esc, Ctrl+Z, Ctrl+Shift+Z, Space, C, R, S, Ctrl+S,
 // Ctrl+Q, ...), typing, camera changes, copy-to-scene, clicks that select in
-// the image, the Objects filter, structure edits (add, duplicate, delete
+// the image, Alt+drags that move an object or light (with Shift, with Esc
+// half-way), the Objects filter, structure edits (add, duplicate, delete
 // blocks, transform operations, cameras), text typed into the document
 // (broken and mended), and the scene file
 // rewritten, truncated, deleted, replaced by garbage or by a scene with fewer
@@ -15,6 +16,9 @@
 //     file is left beside it; every image saved is a whole PNG;
 //   - with no undo history (just loaded), the scene is the file's scene;
 //   - a click on the image selects something the scene has (or nothing);
+//   - an Alt+drag that moved something is one undo step, which gives the
+//     text before the drag back (and redo the moved one); one cancelled with
+//     Esc, or that moved nothing, left the text as it was;
 // and every few events, undoing everything gives back the scene the history
 // started from (the loaded file's, when nothing was saved since) and redoing
 // everything the scene before. Crashes and sanitizer reports end the run.
@@ -37,6 +41,7 @@
 
 #include <imgui.h>
 
+#include <algorithm>
 #include <chrono>
 #include <cmath>
 #include <cstdio>
@@ -216,8 +221,10 @@ class Monkey {
         ImGuiIO& io = ImGui::GetIO();
         const float w = static_cast<float>(viewer_.width()),
                     h = static_cast<float>(viewer_.height());
-        const int kind = pick(106);
-        if (kind >= 100) {
+        const int kind = pick(110);
+        if (kind >= 106) {
+            move_object_event(w, h);
+        } else if (kind >= 100) {
             image_tool_event(w, h);
         } else if (kind < 12) {
             last_event_ = "mouse move";
@@ -331,6 +338,57 @@ class Monkey {
             }
         }
         check_image_view();
+    }
+
+    // Alt+drag (with Shift half the time) from anywhere to anywhere, Esc
+    // pressed half-way in a quarter of them.
+    void move_object_event(float w, float h) {
+        const bool shift = pick(2), escape = pick(4) == 0;
+        last_event_ = std::string("Alt+") + (shift ? "Shift+" : "") + "drag" +
+                      (escape ? " cancelled by Esc" : "");
+        const std::string before = document_text(state_.doc);
+        const std::size_t steps = state_.undo.size();
+        const auto loaded_before = state_.last_load_times.taken;
+        // Pressed near the middle of the image (where the test scene's sphere
+        // is, and no control) half the time: the text check below needs a
+        // press that no control took.
+        const ScreenRect r = viewer_.image_rect(), area = viewer_.image_area();
+        const bool on_image = pick(2) && r.width() > 0 && area.width() > 0;
+        const float cx = (std::max(r.x0, area.x0) + std::min(r.x1, area.x1)) / 2;
+        const float cy = (std::max(r.y0, area.y0) + std::min(r.y1, area.y1)) / 2;
+        const float reach = std::min(r.width(), area.width()) / 6;
+        const float x0 = on_image ? cx + uniform(-reach, reach) : uniform(0, w);
+        const float y0 = on_image ? cy + uniform(-reach, reach) : uniform(0, h);
+        const float x1 = uniform(0, w), y1 = uniform(0, h);
+        const bool prompt = state_.unsaved_prompt.has_value();
+        viewer_.press_mouse(state_, 0, x0, y0, kAlt | (shift ? kShift : kNoModifier));
+        viewer_.move_mouse(state_, (x0 + x1) / 2, (y0 + y1) / 2);
+        if (escape) {
+            viewer_.press_key(state_, keys::escape, false, shift);
+            frames_ += 2;
+        }
+        viewer_.move_mouse(state_, x1, y1);
+        viewer_.release_mouse(state_, 0);
+        frames_ += 5;
+        if (state_.object_drag) fail("the drag is still going on after the mouse was let go");
+        const bool moved = state_.message.rfind("Moved ", 0) == 0;
+        if (!moved) {
+            const bool undisturbed = on_image && !prompt && !load_may_arrive() &&
+                                     state_.last_load_times.taken == loaded_before;
+            if (undisturbed && document_text(state_.doc) != before)
+                fail("an Alt+drag that moved nothing changed the text");
+            return;
+        }
+        if (escape) fail("an Alt+drag cancelled by Esc moved something");
+        const std::size_t at_most = state_.undo.capacity();
+        if (state_.undo.size() != std::min(steps + 1, at_most))
+            fail("an Alt+drag made " + std::to_string(state_.undo.size() - steps) + " undo steps");
+        const std::string after = document_text(state_.doc);
+        undo(state_);
+        if (document_text(state_.doc) != before) fail("undo of an Alt+drag is not the text before");
+        redo(state_);
+        if (document_text(state_.doc) != after) fail("redo of an Alt+drag is not the moved text");
+        frame();
     }
 
     // The image cannot be lost: along each axis a zoomed image larger than its

@@ -35,6 +35,7 @@ class SnapshotStack {
     bool can_undo() const { return !undo_.empty(); }
     bool can_redo() const { return !redo_.empty(); }
     std::size_t size() const { return undo_.size(); }
+    std::size_t capacity() const { return capacity_; }
 
   private:
     static std::optional<Snapshot> step(std::vector<Snapshot>& from, std::vector<Snapshot>& to,
