@@ -18,14 +18,20 @@ namespace jt::view {
 
 namespace {
 
-template <class... F>
-struct overloaded : F... {
-    using F::operator()...;
-};
-template <class... F>
-overloaded(F...) -> overloaded<F...>;
-
-Vec3 mesh_centre(const Scene& scene, const Mesh& mesh) {
+// Each shape's centre in its object space.
+Vec3 local_centre(const Scene&, const Sphere& s) {
+    return s.center;
+}
+Vec3 local_centre(const Scene&, const Plane& p) {
+    return unit_length(p.normal).value_or(Vec3{0.0}) * p.distance;
+}
+Vec3 local_centre(const Scene&, const Cylinder& c) {
+    return {0.0, c.height * 0.5, 0.0};
+}
+Vec3 local_centre(const Scene&, const Triangle& t) {
+    return (t.a + t.b + t.c) / 3.0;
+}
+Vec3 local_centre(const Scene& scene, const Mesh& mesh) {
     const auto model = shared_model(asset_path(scene, mesh.file), scene.asset_folder);
     if (!model || (*model)->positions.empty()) return Vec3{0.0};
     Vec3 low(std::numeric_limits<double>::infinity());
@@ -109,7 +115,7 @@ bool write_value(AppState& state, const Vec3& value) {
         if (!added) {
             const std::string why = added.error().message;
             cancel_object_drag(state);
-            state.message = "Not moved: " + why;
+            state.message = why;
             return false;
         }
         drag.adds_translate = false;
@@ -128,17 +134,8 @@ std::optional<Vec3> object_centre(const Scene& scene, const Primitive& primitive
     const auto transform = object_transform(primitive.transforms);
     const ObjectTransform* t = std::get_if<ObjectTransform>(&transform);
     if (!t) return std::nullopt;
-    const Vec3 local = std::visit(
-        overloaded{
-            [](const Sphere& s) { return s.center; },
-            [](const Plane& p) { return unit_length(p.normal).value_or(Vec3{0.0}) * p.distance; },
-            [](const Cylinder& c) {
-                return Vec3{0.0, c.height * 0.5, 0.0};
-            },
-            [](const Triangle& tr) { return (tr.a + tr.b + tr.c) / 3.0; },
-            [&](const Mesh& m) { return mesh_centre(scene, m); },
-        },
-        primitive.shape);
+    const Vec3 local =
+        std::visit([&](const auto& shape) { return local_centre(scene, shape); }, primitive.shape);
     return apply_point(t->to_world, local);
 }
 

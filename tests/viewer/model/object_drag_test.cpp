@@ -146,6 +146,21 @@ TEST(DragGeometry, ShiftKeepsTheLargestAxisAndNumbersAreShort) {
     EXPECT_EQ(vector_text(moved_value({10, 0, 0}, {123.456, 0, 0}, 2.5)), "<133.5, 0, 0>");
 }
 
+TEST(DragGeometry, AnObjectsCentreIsWhereItsShapeIsAfterItsTransform) {
+    const Scene scene;
+    const std::vector<TransformOp> up_two{{TransformKind::zrotate, {}, 90},
+                                          {TransformKind::translate, {0, 2, 0}, 0}};
+    // The cylinder's axis turned from +y to -x, then moved up.
+    const Primitive cylinder{Cylinder{0.5, 4.0}, {}, up_two};
+    expect_near(*object_centre(scene, cylinder), Vec3(-2, 2, 0), 1e-12, "cylinder");
+    const Primitive triangle{Triangle{{0, 0, 0}, {3, 0, 0}, {0, 3, 0}}, {}, {}};
+    expect_near(*object_centre(scene, triangle), Vec3(1, 1, 0), 1e-12, "triangle");
+    const Primitive plane{Plane{{0, 2, 0}, 1.5}, {}, {}};
+    expect_near(*object_centre(scene, plane), Vec3(0, 1.5, 0), 1e-12, "plane");
+    const Primitive flat{Sphere{}, {}, {{TransformKind::scale, {1, 0, 1}, 0}}};
+    EXPECT_FALSE(object_centre(scene, flat)) << "left out of the render";
+}
+
 TEST_F(ObjectDragTest, ADragWritesATranslateOfTheMoveAndKeepsEveryOtherByte) {
     select(state, {Kind::primitive, 1});
     const Vec3 grab = grabbed();
