@@ -37,8 +37,9 @@ void help_panel() {
         {"Panel edge", "drag to resize the panel"},
     };
     if (ImGui::BeginTable("keys", 2, ImGuiTableFlags_RowBg)) {
+        // As wide as the longest key that cannot wrap.
         ImGui::TableSetupColumn("key", ImGuiTableColumnFlags_WidthFixed,
-                                ImGui::CalcTextSize("Ctrl+Shift+Z").x);
+                                ImGui::CalcTextSize("Alt+Shift+drag").x);
         ImGui::TableSetupColumn("action", ImGuiTableColumnFlags_WidthStretch);
         for (const auto& row : rows) {
             ImGui::TableNextRow();
