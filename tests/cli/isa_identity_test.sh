@@ -3,7 +3,8 @@
 # JTracer was built. Renders every scene in scenes/ and BVH-sized scenes from
 # the bench generator (thousands of overlapping spheres and cylinders) with
 # Embree's default choice and forced to each ISA this CPU runs
-# (JTRACER_EMBREE_CONFIG=isa=...), and requires identical bytes. The sums are
+# (JTRACER_EMBREE_CONFIG=isa=...), and with libjpeg-turbo's SIMD code off
+# (JSIMD_FORCENONE=1), and requires identical bytes. The sums are
 # kept in SUMS_DIR/BUILD.sums and compared with those of the other builds of
 # the same revision (release, debug, sanitizers) found there.
 # Usage: isa_identity_test.sh CLI SOURCE_DIR SUMS_DIR BUILD
@@ -63,6 +64,11 @@ for scene in "${scenes[@]}"; do
         cmp -s "$work/default.bmp" "$work/$isa.bmp" ||
             fail "$name: isa=$isa gives other bytes than Embree's default"
     done
+    # libjpeg-turbo picks its vector unit too (JPEG image maps): its plain C code.
+    JSIMD_FORCENONE=1 "$cli" "$scene" -q -o "$work/no-simd.bmp" --width 256 --height 144 ||
+        fail "$name JSIMD_FORCENONE=1: render failed"
+    cmp -s "$work/default.bmp" "$work/no-simd.bmp" ||
+        fail "$name: libjpeg-turbo without SIMD gives other bytes"
     echo "$(md5sum <"$work/default.bmp" | cut -d' ' -f1) $name" >>"$sums"
 done
 echo "isa identity: ${#scenes[@]} scenes byte-identical with isa=${isas[*]} and the default"

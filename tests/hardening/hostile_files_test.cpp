@@ -1,8 +1,7 @@
 // Files from strangers named by a scene: pictures whose headers claim sizes
-// no machine could hold, or whose tables would make stb_image write out of
-// bounds; models that claim more vertices than their bytes hold or whose
-// buffers lie outside the scene's folder. Each is refused before anything is
-// decoded or allocated, with an error at the image_map or mesh file string,
+// no machine could hold, or whose tables made stb_image write out of bounds; models that claim more
+// vertices than their bytes hold or whose buffers lie outside the scene's folder. Each is refused
+// before anything is decoded or allocated, with an error at the image_map or mesh file string,
 // through --check and through a render alike.
 
 #include "cli_sandbox.hpp"
@@ -44,7 +43,6 @@ TEST_F(HostileImageMaps, SizesNoMachineCouldHoldAreRefusedAtTheImageMapString) {
     const std::pair<const char*, const char*> pictures[] = {
         {"claims-100000x100000.png", "100000x100000"},
         {"claims-100000x100000.bmp", "100000x100000"},
-        {"claims-65535x65535.jpg", "65535x65535"},
         // Found by the fuzzer: the product of the two sides overflowed.
         {"png-claiming-4294967295x4294967295.png", "4294967295x4294967295"},
     };
@@ -57,18 +55,20 @@ TEST_F(HostileImageMaps, SizesNoMachineCouldHoldAreRefusedAtTheImageMapString) {
     }
 }
 
-// Found by fuzz/image_map_fuzzer: stb_image 2.27 wrote past its Huffman table
-// for the JPEG (io/jpeg_tables.hpp), spent a minute decoding zeros into the 58
-// million pixels the 90-byte BMP claims (io/image_claims.hpp), decoded a
-// BMP of no pixels, which sampling would have divided by, and copied a PNG's
-// empty first IDAT chunk to a null pointer (io/png_chunks.hpp; the second PNG
-// is otherwise sound).
+// Found by fuzz/image_map_fuzzer: stb_image 2.27 wrote past its Huffman tables
+// for the JPEGs (which libjpeg-turbo now reads, io/jpeg.hpp), spent a minute decoding zeros into
+// the 58 million pixels the 90-byte BMP claims (io/image_claims.hpp), decoded a BMP of no pixels,
+// which sampling would have divided by, and copied a PNG's empty first IDAT chunk to a null pointer
+// (io/png_chunks.hpp; the second PNG is otherwise sound).
 TEST_F(HostileImageMaps, FilesThatMisledStbImageAreRefused) {
     const std::pair<const char*, const char*> pictures[] = {
         {"jpeg-huffman-table-of-too-many-codes.jpg",
-         "a corrupt JPEG: a Huffman table of 1928 codes (at most 256)"},
-        {"jpeg-huffman-counts-past-the-end.jpg",  // stb_image reads zeros past the end
-         "a corrupt JPEG: a Huffman table of 1671 codes (at most 256)"},
+         "cannot read the JPEG: Bogus Huffman table definition"},
+        {"jpeg-huffman-counts-past-the-end.jpg",  // stb_image read zeros past the end
+         "cannot read the JPEG: Bogus Huffman table definition"},
+        // libjpeg's own limit, checked before anything is allocated.
+        {"claims-65535x65535.jpg",
+         "cannot read the JPEG: Maximum supported image dimension is 65500 pixels"},
         {"bmp-90-bytes-claiming-5x11665411.bmp",
          "the file is too short for the 5x11665411 pixels its header claims (90 bytes)"},
         {"bmp-of-0x0-pixels.bmp", "the image has no pixels (0x0)"},
@@ -81,6 +81,22 @@ TEST_F(HostileImageMaps, FilesThatMisledStbImageAreRefused) {
         expect_refused(run({"hostile.jts", "--check"}), problem);
         expect_refused(run({"hostile.jts", "-o", "out.bmp"}), problem);
     }
+}
+
+// Found by fuzz/image_map_fuzzer: on this JPEG, whose entropy-coded data ends
+// early, stb_image 2.27 shifted an int by 32 (undefined). Its header is sound,
+// so --check passes; the render reads the pixels, refuses them, writes nothing.
+TEST_F(HostileImageMaps, AJpegWhoseDataEndsEarlyIsRefusedWhenItIsDecoded) {
+    write_scene_naming("jpeg-entropy-data-ending-early.jpg");
+    EXPECT_EQ(run({"hostile.jts", "--check"}).code, 0);
+    const ProgramRun r = run({"hostile.jts", "-o", "out.bmp"});
+    EXPECT_NE(r.code, 0);
+    EXPECT_NE(r.err.find("'jpeg-entropy-data-ending-early.jpg': cannot read the JPEG: Corrupt "
+                         "JPEG data: premature end of data segment"),
+              std::string::npos)
+        << r.err;
+    EXPECT_FALSE(exists("out.bmp"));
+    EXPECT_TRUE(temporary_files().empty());
 }
 
 class HostileModels : public CliSandbox {

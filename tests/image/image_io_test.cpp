@@ -98,6 +98,10 @@ TEST(ImageFile, FormatFollowsTheExtension) {
     EXPECT_EQ(format_from_extension("shot.bmp"), ImageFormat::bmp);
     EXPECT_EQ(format_from_extension("shot.png.bak"), ImageFormat::bmp);
     EXPECT_EQ(format_from_extension("shot"), ImageFormat::bmp);
+    EXPECT_EQ(format_named_by("SHOT.Bmp"), ImageFormat::bmp);
+    EXPECT_EQ(format_named_by("a/shot.png"), ImageFormat::png);
+    EXPECT_FALSE(format_named_by("shot.png.bak"));
+    EXPECT_FALSE(format_named_by("shot"));
 
     fs::path dir = make_scratch_dir("format");
     Image8 image = sample_image();

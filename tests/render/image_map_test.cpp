@@ -14,6 +14,7 @@
 
 #include <filesystem>
 #include <fstream>
+#include <iterator>
 
 namespace jt::test {
 namespace {
@@ -106,6 +107,32 @@ TEST(ImageMap, DecodesPngAndBmpToBytesOver255) {
     }
     const std::vector<std::uint8_t> junk{'n', 'o', 't', ' ', 'a', 'n', ' ', 'i', 'm', 'g'};
     EXPECT_FALSE(decode_texture(junk));
+}
+
+// scenes/maps/label.jpg (4:2:0, quality 92): a cream label with red bands at
+// rows 40-70 and 186-216 from the top; lossy, so within a few levels.
+TEST(ImageMap, DecodesJpegThroughLibjpegTurbo) {
+    std::ifstream in(fs::path(JT_SOURCE_DIR) / "scenes/maps/label.jpg", std::ios::binary);
+    const std::vector<std::uint8_t> bytes{std::istreambuf_iterator<char>(in), {}};
+    Expected<Texture> t = decode_texture(bytes);
+    ASSERT_TRUE(t) << t.error().message;
+    ASSERT_EQ(t->width, 512);
+    ASSERT_EQ(t->height, 256);
+    auto expect_texel = [&](int x, int row_from_top, int r, int g, int b) {
+        const std::size_t at = 3 * (static_cast<std::size_t>(255 - row_from_top) * 512 + x);
+        EXPECT_NEAR(t->rgb[at] * 255.0f, r, 4.0f) << x << "," << row_from_top;
+        EXPECT_NEAR(t->rgb[at + 1] * 255.0f, g, 4.0f) << x << "," << row_from_top;
+        EXPECT_NEAR(t->rgb[at + 2] * 255.0f, b, 4.0f) << x << "," << row_from_top;
+    };
+    expect_texel(20, 10, 0xf4, 0xef, 0xe4);    // cream
+    expect_texel(20, 55, 0xb3, 0x26, 0x1e);    // the upper red band
+    expect_texel(480, 200, 0xb3, 0x26, 0x1e);  // the lower one
+    expect_texel(480, 240, 0xf4, 0xef, 0xe4);
+
+    std::vector<std::uint8_t> cut(bytes.begin(), bytes.begin() + bytes.size() / 2);
+    const Expected<Texture> half = decode_texture(cut);
+    ASSERT_FALSE(half);
+    EXPECT_EQ(half.error().message.rfind("cannot read the JPEG: ", 0), 0u) << half.error().message;
 }
 
 // A plane facing +z at z = 0, image-mapped, seen head-on at the texel centre

@@ -268,10 +268,11 @@ int main(int argc, char** argv) {
         if (!parse_size(args.size, args.width, args.height))
             throw CLI::ValidationError(
                 "--size", "takes WxH between 64x64 and 8192x8192, got '" + args.size + "'");
-        if (!args.screenshot.empty() && image_format_for(args.screenshot) != ImageFormat::png)
+        if (!args.screenshot.empty() &&
+            jt::format_named_by(args.screenshot) != jt::ImageFormat::png)
             throw CLI::ValidationError("--screenshot", "writes a PNG: name it .png");
         if (!args.save_render.empty() &&
-            (args.screenshot.empty() || image_format_for(args.save_render) == ImageFormat::unknown))
+            (args.screenshot.empty() || !jt::format_named_by(args.save_render)))
             throw CLI::ValidationError("--save-render",
                                        "goes with --screenshot and writes a .bmp or .png");
     };

@@ -1,11 +1,7 @@
 #include "image_files.hpp"
 
 #include "jtracer/atomic_file.hpp"
-#include "jtracer/bmp.hpp"
-#include "jtracer/png.hpp"
 
-#include <algorithm>
-#include <cctype>
 #include <cerrno>
 #include <cstdint>
 #include <cstdio>
@@ -19,14 +15,17 @@
 
 namespace jt::view {
 
-ImageFormat image_format_for(const std::filesystem::path& path) {
-    std::string ext = path.extension().string();
-    std::transform(ext.begin(), ext.end(), ext.begin(),
-                   [](unsigned char c) { return static_cast<char>(std::tolower(c)); });
-    if (ext == ".png") return ImageFormat::png;
-    if (ext == ".bmp") return ImageFormat::bmp;
-    return ImageFormat::unknown;
+namespace {
+
+std::string unknown_format_message(const std::filesystem::path& path) {
+    return "cannot tell the image format of " + path.string() + ": name it .png or .bmp";
 }
+
+std::string os_error(const std::filesystem::path& path, int error) {
+    return "cannot write " + path.string() + ": " + std::strerror(error);
+}
+
+}  // namespace
 
 Expected<void> write_text_atomically(const std::filesystem::path& path, const std::string& text) {
     const std::span<const std::uint8_t> bytes(reinterpret_cast<const std::uint8_t*>(text.data()),
@@ -38,39 +37,16 @@ Expected<void> save_image(const std::filesystem::path& path, const Image8& image
     if (image.width <= 0 || image.height <= 0 ||
         image.rgb.size() != static_cast<std::size_t>(image.width) * image.height * 3)
         return Error{"there is no image to save yet"};
-    switch (image_format_for(path)) {
-        case ImageFormat::png:
-            return write_png(path, image);
-        case ImageFormat::bmp:
-            return write_bmp(path, image);
-        case ImageFormat::unknown:
-            break;
-    }
-    return Error{"cannot tell the image format of " + path.string() + ": name it .png or .bmp"};
+    const std::optional<ImageFormat> format = format_named_by(path);
+    if (!format) return Error{unknown_format_message(path)};
+    return write_image(path, image, *format);
 }
-
-namespace {
-
-std::string os_error(const std::filesystem::path& path, int error) {
-    return "cannot write " + path.string() + ": " + std::strerror(error);
-}
-
-}  // namespace
 
 Expected<bool> save_new_image(const std::filesystem::path& path, const Image8& image) {
     if (image.width <= 0 || image.height <= 0) return Error{"there is no image to save yet"};
-    std::vector<std::uint8_t> bytes;
-    switch (image_format_for(path)) {
-        case ImageFormat::png:
-            bytes = encode_png(image);
-            break;
-        case ImageFormat::bmp:
-            bytes = encode_bmp(image);
-            break;
-        case ImageFormat::unknown:
-            return Error{"cannot tell the image format of " + path.string() +
-                         ": name it .png or .bmp"};
-    }
+    const std::optional<ImageFormat> format = format_named_by(path);
+    if (!format) return Error{unknown_format_message(path)};
+    const std::vector<std::uint8_t> bytes = encode_image(image, *format);
     // The whole file is written under a temporary name, then linked to its
     // name: readers never see it partial, and link fails if the name is taken.
     std::string pattern = path.string() + ".tmp-XXXXXX";

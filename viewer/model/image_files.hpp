@@ -5,16 +5,15 @@
 
 #include "jtracer/error.hpp"
 #include "jtracer/image.hpp"
+#include "jtracer/image_file.hpp"
 
 #include <filesystem>
 #include <string>
 
 namespace jt::view {
 
-enum class ImageFormat { png, bmp, unknown };
-ImageFormat image_format_for(const std::filesystem::path& path);
-
-// On failure the target is untouched.
+// The format from the name's extension (format_named_by): a name that is
+// neither .png nor .bmp is refused. On failure the target is untouched.
 Expected<void> save_image(const std::filesystem::path& path, const Image8& image);
 
 // Writes a new file `path` and never replaces one: true when written, false

@@ -9,11 +9,21 @@
 
 namespace jt {
 
-ImageFormat format_from_extension(const std::filesystem::path& path) {
+std::optional<ImageFormat> format_named_by(const std::filesystem::path& path) {
     std::string ext = path.extension().string();
     std::transform(ext.begin(), ext.end(), ext.begin(),
                    [](unsigned char c) { return static_cast<char>(std::tolower(c)); });
-    return ext == ".png" ? ImageFormat::png : ImageFormat::bmp;
+    if (ext == ".png") return ImageFormat::png;
+    if (ext == ".bmp") return ImageFormat::bmp;
+    return std::nullopt;
+}
+
+ImageFormat format_from_extension(const std::filesystem::path& path) {
+    return format_named_by(path).value_or(ImageFormat::bmp);
+}
+
+std::vector<std::uint8_t> encode_image(const Image8& image, ImageFormat format) {
+    return format == ImageFormat::png ? encode_png(image) : encode_bmp(image);
 }
 
 Expected<void> write_image(const std::filesystem::path& path, const Image8& image,

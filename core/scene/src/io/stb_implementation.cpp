@@ -1,4 +1,5 @@
-// The one translation unit that compiles stb's implementations (libstb-dev).
+// The one translation unit that compiles stb's implementations (libstb-dev):
+// the PNG and BMP readers and the writers (JPEGs are read by io/jpeg.cpp).
 // Their code is not ours to warn about.
 #pragma GCC diagnostic push
 #pragma GCC diagnostic ignored "-Wall"
@@ -14,7 +15,6 @@
 #include <stb_image_write.h>
 #define STB_IMAGE_IMPLEMENTATION
 #define STBI_ONLY_PNG
-#define STBI_ONLY_JPEG
 #define STBI_ONLY_BMP
 #define STBI_NO_STDIO
 #include <stb_image.h>

@@ -2,7 +2,7 @@
 
 #include "io/file_bytes.hpp"
 #include "io/image_claims.hpp"
-#include "io/jpeg_tables.hpp"
+#include "io/jpeg.hpp"
 #include "io/png_chunks.hpp"
 
 #include <stb_image.h>
@@ -31,18 +31,25 @@ bool exceeds_cap(std::pair<std::int64_t, std::int64_t> size) {
            size.first * size.second > kMaxTextureTexels;
 }
 
-// The header's verdict: "" or why stb cannot decode it.
+// The header's verdict: "" or why the picture cannot be decoded. JPEGs go to
+// libjpeg-turbo (io/jpeg.hpp), PNGs and BMPs to stb_image.
 std::string header_problem(std::span<const std::uint8_t> bytes, int& width, int& height) {
     if (bytes.size() > static_cast<std::size_t>(std::numeric_limits<int>::max()))
         return "the file is too large";
-    if (const auto claimed = png_claimed_size(bytes); claimed && exceeds_cap(*claimed))
-        return too_large(claimed->first, claimed->second);
-    if (std::string problem = jpeg_table_problem(bytes); !problem.empty()) return problem;
-    if (std::string problem = png_chunk_problem(bytes); !problem.empty()) return problem;
-    int channels = 0;
-    if (!stbi_info_from_memory(bytes.data(), static_cast<int>(bytes.size()), &width, &height,
-                               &channels))
-        return std::string("not a readable PNG, JPEG or BMP image: ") + stbi_failure_reason();
+    if (has_jpeg_signature(bytes)) {
+        const Expected<JpegSize> size = read_jpeg_size(bytes);
+        if (!size) return size.error().message;
+        width = size->width;
+        height = size->height;
+    } else {
+        if (const auto claimed = png_claimed_size(bytes); claimed && exceeds_cap(*claimed))
+            return too_large(claimed->first, claimed->second);
+        if (std::string problem = png_chunk_problem(bytes); !problem.empty()) return problem;
+        int channels = 0;
+        if (!stbi_info_from_memory(bytes.data(), static_cast<int>(bytes.size()), &width, &height,
+                                   &channels))
+            return std::string("not a readable PNG, JPEG or BMP image: ") + stbi_failure_reason();
+    }
     if (width <= 0 || height <= 0)
         return "the image has no pixels (" + std::to_string(width) + "x" + std::to_string(height) +
                ")";
@@ -54,7 +61,7 @@ std::string header_problem(std::span<const std::uint8_t> bytes, int& width, int&
     return "";
 }
 
-// Texels from stb's top-down rows into bottom-up ones, scaled to [0, 1].
+// Texels from the decoders' top-down rows into bottom-up ones, scaled to [0, 1].
 template <class Sample>
 Texture texels_of(const Sample* samples, int width, int height, float full_scale) {
     Texture t{width, height, std::vector<float>(static_cast<std::size_t>(width) * height * 3)};
@@ -76,6 +83,12 @@ Expected<Texture> decode_texture(std::span<const std::uint8_t> bytes) {
     // The pixels must be the size the header was checked for.
     int width = 0, height = 0, channels = 0;
     auto as_checked = [&] { return width == header_width && height == header_height; };
+    if (has_jpeg_signature(bytes)) {
+        const Expected<std::vector<std::uint8_t>> rgb =
+            decode_jpeg(bytes, {header_width, header_height});
+        if (!rgb) return rgb.error();
+        return texels_of(rgb->data(), header_width, header_height, 255.0f);
+    }
     bool decoded = false;
     const int size = static_cast<int>(bytes.size());
     if (stbi_is_16_bit_from_memory(bytes.data(), size)) {
