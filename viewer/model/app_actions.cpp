@@ -78,6 +78,10 @@ void finish_open(AppState& state, const std::filesystem::path& path, LoadAttempt
         state.recent.add(path);
         state.open_path_input = path.string();
         state.message = "Opened " + path.string();
+    } else if (document_is_blank(state.doc)) {
+        state.message = path.filename().string() +
+                        " is empty: Start a scene in the File panel, or type one in the Text "
+                        "editor (T)";
     } else if (state.doc.diagnostics_source.empty() && !has_located(state.doc.diagnostics)) {
         state.message = "Could not open " + path.string() + ": see Diagnostics";
     } else {

@@ -4,8 +4,10 @@
 #include "jtracer/block_edit.hpp"
 #include "jtracer/camera_edit.hpp"
 #include "jtracer/model_cache.hpp"
+#include "jtracer/new_block.hpp"
 #include "jtracer/parser.hpp"
 #include "jtracer/schema.hpp"
+#include "jtracer/serializer.hpp"
 #include "jtracer/texture.hpp"
 #include "jtracer/transform_edit.hpp"
 #include "ui_rounding.hpp"
@@ -243,6 +245,17 @@ bool take_checked_text(AppState& state) {
     state.checked_scene = doc.scene;  // the diagnostics describe it already
     ++state.scene_generation;
     state.message = "Text taken in";
+    return true;
+}
+
+bool start_new_scene(AppState& state) {
+    if (!document_is_blank(state.doc)) {
+        state.message = "A new scene starts only in an empty file: open or create one";
+        return false;
+    }
+    type_text(state, serialize_scene(new_scene()));
+    state.typing = false;  // the next keystroke is an undo step of its own
+    state.message = "Started a scene: add objects in the Objects panel (Save scene to keep it)";
     return true;
 }
 

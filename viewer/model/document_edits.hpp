@@ -53,6 +53,11 @@ bool add_camera(AppState& state);
 bool rename_camera(AppState& state, std::size_t camera, const std::string& name);
 bool set_aspect_from_image(AppState& state, std::size_t camera);
 
+// Puts new_scene()'s text into a blank document (document_is_blank), as typing it would (one undo
+// step, checked off the UI thread): then the panels can add to it. False, with
+// the reason in state.message, when the document is not blank.
+bool start_new_scene(AppState& state);
+
 // The text editor's text changed to `text`: it becomes the document's draft,
 // checked off the UI thread once typing pauses (kTypingPause). The first
 // keystroke after a pause records one undo step.

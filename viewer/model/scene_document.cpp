@@ -59,6 +59,9 @@ void accept_load(SceneDocument& doc, const std::filesystem::path& path, LoadAtte
 }
 
 DocumentVersion version_of(const SceneDocument& doc) {
+    // Before any text was taken in, the file's own text is what the editor
+    // shows: undo brings it back as a draft.
+    if (!doc.loaded && !doc.draft) return {doc.text, doc.scene, doc.disk_text};
     return {doc.text, doc.scene, doc.draft};
 }
 
@@ -172,6 +175,11 @@ Expected<void> save_scene_copy(SceneDocument& doc, const std::filesystem::path& 
     doc.diagnostics_source = doc.text;
     doc.load_failed = false;
     return {};
+}
+
+bool document_is_blank(const SceneDocument& doc) {
+    if (doc.path.empty()) return false;
+    return document_text(doc).find_first_not_of(" \t\r\n") == std::string::npos;
 }
 
 }  // namespace jt::view

@@ -95,6 +95,10 @@ std::string format_diagnostics(const SceneDocument& doc);
 
 bool has_unsaved_edits(const SceneDocument& doc);
 
+// A file with nothing in it (its text blank): one to start a scene in
+// (start_new_scene).
+bool document_is_blank(const SceneDocument& doc);
+
 // Writes the edits into the file in place (see source_edit.hpp), atomically,
 // then takes the new text as the document's base.
 // Does not look at what is on disk now: see file_changed_on_disk.

@@ -35,6 +35,46 @@ void settle_text(AppState& state) {
     for (int i = 0; i < 100 && !take_checked_text(state); ++i) state.checker.wait();
 }
 
+// An empty file opens as one to start a scene in: Start a scene gives it a
+// size, a camera and a light (valid as it is), the panels then add to it, and
+// undo goes back to the empty file.
+TEST(DocumentEdits, AnEmptyFileStartsANewSceneThatThePanelsBuildOn) {
+    const std::filesystem::path path = make_scratch_dir("document_edits_new") / "new.jts";
+    write_file(path, "\n");
+    AppState state(test_config());
+    open_scene(state, path);
+    EXPECT_FALSE(state.doc.loaded);
+    EXPECT_TRUE(document_is_blank(state.doc));
+    EXPECT_NE(state.message.find("new.jts is empty: Start a scene"), std::string::npos)
+        << state.message;
+
+    ASSERT_TRUE(start_new_scene(state)) << state.message;
+    EXPECT_FALSE(document_is_blank(state.doc));
+    settle_text(state);
+    ASSERT_TRUE(state.doc.loaded) << format_diagnostics(state.doc);
+    EXPECT_FALSE(state.doc.draft);
+    EXPECT_EQ(format_diagnostics(state.doc), "") << "no error and no warning";
+    EXPECT_TRUE(state.doc.scene == new_scene());
+    ASSERT_EQ(state.doc.scene.cameras.size(), 1u);
+    EXPECT_EQ(state.doc.scene.cameras[0].aspect, 640.0 / 360.0);
+    EXPECT_FALSE(start_new_scene(state)) << "only an empty file starts one";
+
+    ASSERT_TRUE(add_object(state, ShapeKind::sphere));
+    ASSERT_EQ(state.doc.scene.primitives.size(), 1u);
+    ModelLoop loop;
+    ASSERT_TRUE(loop.run_until_complete(state));
+    EXPECT_TRUE(state.render_note.empty()) << state.render_note;
+    ASSERT_TRUE(save_scene(state)) << state.message;
+    EXPECT_TRUE(parsed(file_text(path)) == state.doc.scene);
+
+    undo(state);
+    undo(state);
+    EXPECT_EQ(document_text(state.doc), "\n") << "back to the empty file";
+    EXPECT_TRUE(document_is_blank(state.doc)) << "where a scene can be started again";
+    redo(state);
+    EXPECT_TRUE(state.doc.scene == new_scene());
+}
+
 TEST(DocumentEdits, AddDuplicateDeleteThenSaveGivesTheExpectedSceneAndKeepsOtherBytes) {
     const std::filesystem::path path = scene_copy("document_edits_save");
     const std::string before = file_text(path);

@@ -1,4 +1,5 @@
 #include "app_actions.hpp"
+#include "document_edits.hpp"
 #include "panels/panels.hpp"
 #include "panels/widgets.hpp"
 #include "ui_items.hpp"
@@ -125,6 +126,11 @@ void file_panel(AppState& state) {
     if (button("Redo", "Redo the edit undone last (Ctrl+Shift+Z)",
                state.undo.can_redo() ? "" : "Nothing to redo"))
         redo(state);
+    if (document_is_blank(state.doc) &&
+        button("Start a scene",
+               "Fill this empty file with an image size, a camera and a light, then add objects "
+               "in the Objects panel (Ctrl+Z takes it back)"))
+        start_new_scene(state);
     if (state.loader.busy()) ImGui::TextDisabled("Loading...");
     reload_choice(state);
     save_conflict_choice(state);

@@ -42,4 +42,10 @@ PointLight new_light(const Scene& scene);
 // A copy of the active camera (or a default one) with a name no camera has.
 Camera new_camera(const Scene& scene);
 
+// A scene to start from, valid as it is: a 640x360 image, a camera whose
+// aspect matches it looking at a point a unit above the origin, a white light
+// above and beside the camera, and nothing else, so that new_primitive puts
+// the first objects where the camera sees them.
+Scene new_scene();
+
 }  // namespace jt

@@ -164,4 +164,24 @@ Camera new_camera(const Scene& scene) {
     return camera;
 }
 
+Scene new_scene() {
+    Scene scene;
+    scene.settings.width = 640;
+    scene.settings.height = 360;
+    scene.settings.recurse_depth = 5;
+    scene.settings.filename = "scene.bmp";
+    scene.settings.background = Colour(0.05, 0.06, 0.09);
+    scene.settings.ambient_light = Colour(0.2);
+    Camera camera;
+    camera.position = Vec3(0.0, 2.0, 8.0);
+    camera.look_at = Vec3(0.0, 1.0, 0.0);
+    camera.aspect = static_cast<double>(scene.settings.width) / scene.settings.height;
+    scene.cameras.push_back(camera);
+    PointLight light;
+    light.position = Vec3(-4.0, 6.0, 6.0);
+    light.intensity = Colour(1.0);
+    scene.lights.push_back(light);
+    return scene;
+}
+
 }  // namespace jt
