@@ -23,6 +23,7 @@ LoadAttempt attempt_load(const std::filesystem::path& path) {
         return attempt;
     }
     LoadedScene& loaded = *read;
+    attempt.read = true;
     attempt.diagnostics = check_scene(loaded);
     attempt.parse_diagnostics = loaded.parsed.diagnostics;
     attempt.times.validated = LoadTimes::Clock::now();
@@ -37,6 +38,7 @@ void accept_load(SceneDocument& doc, const std::filesystem::path& path, LoadAtte
     doc.diagnostics = std::move(attempt.diagnostics);
     doc.diagnostics_path = path;
     doc.load_failed = !attempt.ok;
+    doc.file_unread = !attempt.read;
     if (!attempt.ok) {
         doc.diagnostics_source = std::move(attempt.text);  // moved: it may be huge
         if (!doc.loaded) {
@@ -178,7 +180,7 @@ Expected<void> save_scene_copy(SceneDocument& doc, const std::filesystem::path& 
 }
 
 bool document_is_blank(const SceneDocument& doc) {
-    if (doc.path.empty()) return false;
+    if (doc.path.empty() || doc.file_unread) return false;
     return document_text(doc).find_first_not_of(" \t\r\n") == std::string::npos;
 }
 

@@ -34,6 +34,7 @@ struct SceneDocument {
     std::string diagnostics_source;          // the text they point into (to quote lines)
     std::filesystem::path diagnostics_path;  // the file they are about
     bool load_failed = false;                // the latest load attempt had errors: `scene` is older
+    bool file_unread = false;                // the latest load could not read the file at all
     // Text typed in the text editor, not yet taken in: waiting for its check,
     // or with errors (`diagnostics` then describe it and `scene` is the last
     // good one).
@@ -74,6 +75,7 @@ struct LoadTimes {
 
 struct LoadAttempt {
     bool ok = false;
+    bool read = false;  // the file's bytes were read (ok or not, they are `text`)
     std::string text;
     Scene scene;
     SceneSource source;
