@@ -59,7 +59,8 @@ TEST_F(HostileImageMaps, SizesNoMachineCouldHoldAreRefusedAtTheImageMapString) {
 // for the JPEGs (which libjpeg-turbo now reads, io/jpeg.hpp), spent a minute decoding zeros into
 // the 58 million pixels the 90-byte BMP claims (io/image_claims.hpp), decoded a BMP of no pixels,
 // which sampling would have divided by, and copied a PNG's empty first IDAT chunk to a null pointer
-// (io/png_chunks.hpp; the second PNG is otherwise sound).
+// (io/png_chunks.hpp; the second PNG is otherwise sound), and reserved the
+// memory a PNG's IDAT chunk claimed before reading it.
 TEST_F(HostileImageMaps, FilesThatMisledStbImageAreRefused) {
     const std::pair<const char*, const char*> pictures[] = {
         {"jpeg-huffman-table-of-too-many-codes.jpg",
@@ -74,6 +75,10 @@ TEST_F(HostileImageMaps, FilesThatMisledStbImageAreRefused) {
         {"bmp-of-0x0-pixels.bmp", "the image has no pixels (0x0)"},
         {"png-first-idat-empty.png", "a PNG whose first IDAT chunk is empty (at byte 33)"},
         {"png-4x3-empty-idat-first.png", "a PNG whose first IDAT chunk is empty (at byte 33)"},
+        // stb_image reserved the 1.9 GB this IDAT chunk claims before reading it.
+        {"png-idat-claiming-past-the-end.png",
+         "a PNG whose IDAT chunk at byte 64 claims 1929379853 bytes, past the end of the file "
+         "(108 bytes)"},
     };
     for (const auto& [picture, problem] : pictures) {
         SCOPED_TRACE(picture);
