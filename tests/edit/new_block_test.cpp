@@ -49,6 +49,12 @@ TEST(NewBlock, APlaneBelowTheViewAndACylinderStandingInIt) {
     EXPECT_LT(plane.distance, 2.0);  // below the camera and its view's centre
     EXPECT_GT(plane.distance, 0.0);  // but within the view's half-height there
 
+    // A camera that looks down still gets a level floor, below the point.
+    const Plane floor =
+        std::get<Plane>(new_primitive(ShapeKind::plane, looking({0, 2, 8}, {0, 1, 0})).shape);
+    EXPECT_EQ(floor.normal, Vec3(0, 1, 0));
+    EXPECT_LT(floor.distance, 1.5);
+
     const Primitive cylinder = new_primitive(ShapeKind::cylinder, scene);
     const Cylinder& c = std::get<Cylinder>(cylinder.shape);
     ASSERT_EQ(cylinder.transforms.size(), 1u);

@@ -122,9 +122,18 @@ bool add_light(AppState& state) {
 
 bool duplicate_block(AppState& state, BlockRef block) {
     const std::string name = block_name(state.doc.scene, block);
-    return edit_text_structure(
-        state, [&](const SceneText& s) { return jt::duplicate_block(s, block); },
-        "Duplicated " + name);
+    if (!edit_text_structure(
+            state, [&](const SceneText& s) { return jt::duplicate_block(s, block); },
+            "Duplicated " + name))
+        return false;
+    // The copy comes right after the original: it is selected, to be moved or changed.
+    if (block.kind != BlockKind::camera) {
+        state.selection = {
+            block.kind == BlockKind::light ? Selection::Kind::light : Selection::Kind::primitive,
+            static_cast<int>(block.index) + 1};
+        state.reveal_selection = true;
+    }
+    return true;
 }
 
 bool delete_block(AppState& state, BlockRef block) {
@@ -225,26 +234,35 @@ void type_text(AppState& state, std::string text) {
     state.checker.check(state.draft_id, std::move(text), doc.path, kTypingPause);
 }
 
-bool take_checked_text(AppState& state) {
-    std::optional<CheckedText> checked = state.checker.take();
-    if (!checked) return false;
+namespace {
+
+// The draft's check, taken in: a text without errors becomes the document.
+void take_in(AppState& state, CheckedText checked) {
     SceneDocument& doc = state.doc;
-    if (checked->id != state.draft_id || !doc.draft) return true;  // overtaken
     state.typing = false;  // the pause ended: the next keystroke is a new undo step
-    doc.diagnostics = checked->diagnostics;
-    doc.diagnostics_source = checked->text;
+    doc.diagnostics = checked.diagnostics;
+    doc.diagnostics_source = checked.text;
     doc.diagnostics_path = doc.path;
-    if (!checked->ok) {
+    if (!checked.ok) {
         state.message = "The text has errors (see Diagnostics): the image is of the last good text";
-        return true;
+        return;
     }
     const Scene before = doc.scene;
-    take_text(doc, std::move(checked->text), std::move(checked->parsed));
+    take_text(doc, std::move(checked.text), std::move(checked.parsed));
     doc.loaded = true;  // a file that never loaded (empty, broken) now has a scene
     keep_camera_selection(state, before);
     state.checked_scene = doc.scene;  // the diagnostics describe it already
     ++state.scene_generation;
-    state.message = "Text taken in";
+    state.message = "The text parses: the image follows it";
+}
+
+}  // namespace
+
+bool take_checked_text(AppState& state) {
+    std::optional<CheckedText> checked = state.checker.take();
+    if (!checked) return false;
+    if (checked->id != state.draft_id || !state.doc.draft) return true;  // overtaken
+    take_in(state, std::move(*checked));
     return true;
 }
 
@@ -253,8 +271,13 @@ bool start_new_scene(AppState& state) {
         state.message = "A new scene starts only in an empty file: open or create one";
         return false;
     }
-    type_text(state, serialize_scene(new_scene()));
-    state.typing = false;  // the next keystroke is an undo step of its own
+    // As if typed, but taken in at once: the text is short and known to be sound.
+    std::string text = serialize_scene(new_scene());
+    state.undo.record(version_of(state.doc));
+    state.edit_base.reset();
+    state.doc.draft = text;
+    ++state.draft_id;
+    take_in(state, check_text(state.draft_id, std::move(text), state.doc.path));
     state.message = "Started a scene: add objects in the Objects panel (Save scene to keep it)";
     return true;
 }

@@ -50,8 +50,8 @@ TEST(DocumentEdits, AnEmptyFileStartsANewSceneThatThePanelsBuildOn) {
 
     ASSERT_TRUE(start_new_scene(state)) << state.message;
     EXPECT_FALSE(document_is_blank(state.doc));
-    settle_text(state);
-    ASSERT_TRUE(state.doc.loaded) << format_diagnostics(state.doc);
+    ASSERT_TRUE(state.doc.loaded) << "at once: " << format_diagnostics(state.doc);
+    EXPECT_NE(state.message.find("Started a scene: add objects"), std::string::npos);
     EXPECT_FALSE(state.doc.draft);
     EXPECT_EQ(format_diagnostics(state.doc), "") << "no error and no warning";
     EXPECT_TRUE(state.doc.scene == new_scene());
@@ -89,6 +89,7 @@ TEST(DocumentEdits, AddDuplicateDeleteThenSaveGivesTheExpectedSceneAndKeepsOther
     expected.primitives.push_back(new_primitive(ShapeKind::sphere, view));
     ASSERT_TRUE(duplicate_block(state, {BlockKind::primitive, 1})) << state.message;
     expected.primitives.insert(expected.primitives.begin() + 2, expected.primitives[1]);
+    EXPECT_EQ(state.selection, (Selection{Selection::Kind::primitive, 2})) << "the copy";
     ASSERT_TRUE(delete_block(state, {BlockKind::light, 0})) << state.message;
     expected.lights.clear();
     EXPECT_TRUE(state.doc.scene == expected);

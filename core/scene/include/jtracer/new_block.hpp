@@ -27,8 +27,8 @@ Material new_material();
 // A primitive of that kind with new_material(), in front of the active camera
 // halfway to its look_at point: a sphere and a standing cylinder a fifth of
 // the view's height there across, a plane below that point facing the
-// camera's up, and a triangle as wide as that sphere standing upright and
-// facing the camera (counter-clockwise seen from it).
+// camera's `up` as written (level even when the camera looks down), and a triangle as wide as that
+// sphere standing upright and facing the camera (counter-clockwise seen from it).
 Primitive new_primitive(ShapeKind kind, const Scene& scene);
 
 // A mesh of `file` (a name as the scene's `file` holds it) where new_primitive

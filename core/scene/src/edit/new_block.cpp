@@ -20,8 +20,9 @@ namespace {
 struct View {
     Vec3 eye{0.0};
     Vec3 forward{0.0, 0.0, -1.0};
-    Vec3 up{0.0, 1.0, 0.0};  // at right angles to forward
-    double distance = 5.0;   // to the look_at point
+    Vec3 up{0.0, 1.0, 0.0};   // at right angles to forward
+    Vec3 sky{0.0, 1.0, 0.0};  // the camera's own up, of unit length: the scene's vertical
+    double distance = 5.0;    // to the look_at point
     double fov = 45.0;
     // Half the height the view spans at `at` from the eye.
     double half_height(double at) const { return at * std::tan(glm::radians(fov) / 2.0); }
@@ -42,8 +43,10 @@ View active_view(const Scene& scene) {
     if (camera.fov > 0.0 && camera.fov < 180.0) view.fov = camera.fov;
     const Vec3 right = glm::cross(view.forward, camera.up);
     const double right_length = glm::length(right);
-    if (std::isfinite(right_length) && right_length > 1e-12)
+    if (std::isfinite(right_length) && right_length > 1e-12) {
         view.up = glm::cross(right / right_length, view.forward);
+        view.sky = glm::normalize(camera.up);
+    }
     return view;
 }
 
@@ -100,7 +103,8 @@ Primitive new_primitive(ShapeKind kind, const Scene& scene) {
             p.shape = Sphere{at, rounded_to_scale(half / 5.0, half)};
             break;
         case ShapeKind::plane: {
-            const Vec3 normal = rounded_to_scale(view.up, 1.0);
+            // Level with the scene's vertical, not tilted with a camera that looks down.
+            const Vec3 normal = rounded_to_scale(view.sky, 1.0);
             p.shape = Plane{
                 normal, rounded_to_scale(glm::dot(glm::normalize(normal), at) - half / 2.0, half)};
             break;
