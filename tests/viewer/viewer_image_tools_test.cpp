@@ -11,7 +11,7 @@
 #include "jtracer/region.hpp"
 #include "keys.hpp"
 #include "render_region.hpp"
-#include "viewer_test_files.hpp"
+#include "viewer_fixture.hpp"
 
 #include <gtest/gtest.h>
 
@@ -25,18 +25,13 @@ namespace {
 namespace fs = std::filesystem;
 using namespace jt::test;
 
-class ViewerImageTools : public ::testing::Test {
+class ViewerImageTools : public ViewerFixture {
   protected:
     void SetUp() override {
-        ASSERT_TRUE(viewer.ok()) << viewer.error();
-        open_scene(state, kScene);
-        ASSERT_TRUE(viewer.run_until_complete(state, kTimeout));
+        open_rendered(kScene);
         ASSERT_EQ(state.display.width, kW);
     }
-    // The window point of image point (x, y) (from the bottom left) as the last frame drew it.
-    WindowPoint at(double x, double y) const {
-        return image_to_window(viewer.image_rect(), kW, kH, {x, y});
-    }
+    WindowPoint at(double x, double y) const { return window_point({x, y}); }
     // jtracer-cli's image of the scene as the viewer has it now, with `extra` arguments.
     Image8 cli_image(const std::vector<std::string>& extra) {
         const fs::path scene = dir / "scene.jts";
@@ -52,8 +47,6 @@ class ViewerImageTools : public ::testing::Test {
 
     static constexpr int kW = 64, kH = 48;
     fs::path dir = make_scratch_dir("viewer-image-tools");
-    HeadlessViewer viewer{960, 640};
-    AppState state{test_config()};
 };
 
 TEST_F(ViewerImageTools, ACtrlDragRendersTheRegionAloneAsTheCliRendersIt) {

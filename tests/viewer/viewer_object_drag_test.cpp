@@ -10,7 +10,7 @@
 #include "jtracer/value_text.hpp"
 #include "keys.hpp"
 #include "picking.hpp"
-#include "viewer_test_files.hpp"
+#include "viewer_fixture.hpp"
 
 #include <gtest/gtest.h>
 #include <glm/geometric.hpp>
@@ -26,22 +26,18 @@ namespace {
 using namespace jt::test;
 using Kind = Selection::Kind;
 
-class ViewerObjectDrag : public ::testing::Test {
+class ViewerObjectDrag : public ViewerFixture {
   protected:
     void SetUp() override {
-        ASSERT_TRUE(viewer.ok()) << viewer.error();
         path = scene_copy("viewer_object_drag");
         original = read_file(path);
-        open_scene(state, path);
-        ASSERT_TRUE(viewer.run_until_complete(state, kTimeout));
+        open_rendered(path);
+        if (HasFatalFailure()) return;
         frame = shown_frame(state);
         ASSERT_TRUE(frame);
         const std::optional<ImagePoint> centre = project_to_image(*frame, {0, 1, 0});
         ASSERT_TRUE(centre);
         sphere_pixel = {std::floor(centre->x) + 0.5, std::floor(centre->y) + 0.5};
-    }
-    WindowPoint window_point(ImagePoint p) const {
-        return image_to_window(viewer.image_rect(), state.display.width, state.display.height, p);
     }
     // Window units per image pixel.
     double scale() const { return viewer.image_rect().width() / state.display.width; }
@@ -65,8 +61,6 @@ class ViewerObjectDrag : public ::testing::Test {
                (2 * (to.x - from.x) / w * t * c.aspect * right + 2 * (to.y - from.y) / h * t * up);
     }
 
-    HeadlessViewer viewer{960, 640};
-    AppState state{test_config()};
     std::filesystem::path path;
     std::string original;
     std::shared_ptr<const PreparedFrame> frame;

@@ -7,7 +7,7 @@
 #include "jtracer/render_job.hpp"
 #include "keys.hpp"
 #include "picking.hpp"
-#include "viewer_test_files.hpp"
+#include "viewer_fixture.hpp"
 
 #include <gtest/gtest.h>
 
@@ -21,32 +21,14 @@ namespace {
 using namespace jt::test;
 using Kind = Selection::Kind;
 
-class ViewerPicking : public ::testing::Test {
+class ViewerPicking : public ViewerFixture {
   protected:
-    void SetUp() override {
-        ASSERT_TRUE(viewer.ok()) << viewer.error();
-        open_scene(state, kScene);
-        ASSERT_TRUE(viewer.run_until_complete(state, kTimeout));
-    }
-    // The window point of image pixel (x, y) (from the bottom left).
-    WindowPoint window_point(double x, double y) const {
-        const UiItem* panel = find_item(viewer.ui_items(), "panel");
-        const float x0 = panel->rect.x1, x1 = static_cast<float>(viewer.width());
-        const ScreenRect area{x0, 0, x1, find_item(viewer.ui_items(), "status")->rect.y0};
-        const ScreenRect where =
-            place_image(state.display.width, state.display.height, area, 1.0f, state.image_view);
-        const WindowPoint p =
-            image_to_window(where, state.display.width, state.display.height, {x, y});
-        return p;
-    }
+    void SetUp() override { open_rendered(kScene); }
     void click_pixel(int x, int y) {
-        const WindowPoint p = window_point(x + 0.5, y + 0.5);
+        const WindowPoint p = window_point({x + 0.5, y + 0.5});
         viewer.drag(state, 0, p.x, p.y, p.x, p.y);
         viewer.frame(state);  // the frame after the click shows what it selected
     }
-
-    HeadlessViewer viewer{960, 640};
-    AppState state{test_config()};
 };
 
 TEST_F(ViewerPicking, AClickSelectsOutlinesOverTheImageAndOpensTheObject) {
@@ -80,7 +62,7 @@ TEST_F(ViewerPicking, AClickSelectsOutlinesOverTheImageAndOpensTheObject) {
 }
 
 TEST_F(ViewerPicking, HoveringThePictureInspectsThePixelUnderTheMouse) {
-    const WindowPoint p = window_point(32.5, 20.5);
+    const WindowPoint p = window_point({32.5, 20.5});
     viewer.move_mouse(state, p.x, p.y);
     const std::uint8_t* rgb = state.display.pixel(32, 20);
     char expected[64];
