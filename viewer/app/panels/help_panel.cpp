@@ -33,6 +33,7 @@ void help_panel() {
         {"Left drag", "orbit (free camera)"},
         {"Right drag", "pan (free camera)"},
         {"Wheel", "dolly (free camera)"},
+        {"Ctrl+click", "type a number field's value (Enter takes it; dragging it changes it)"},
         {"Drop a .jts", "open it"},
         {"Panel edge", "drag to resize the panel"},
     };
