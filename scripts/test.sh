@@ -3,7 +3,7 @@
 # the release build first (and what it installs and packages: install-test.sh),
 # a debug jtracer-cli that must render the same bytes,
 # then the fuzz targets (built with clang, each run for JT_FUZZ_SECONDS,
-# default 60), then everything again under ASan + UBSan.
+# default 30), then everything again under ASan + UBSan.
 # Set JT_SKIP_FUZZ=1 or JT_SKIP_ASAN=1 to leave those steps out.
 set -euo pipefail
 cd "$(dirname "$0")/.."
@@ -29,7 +29,7 @@ bash tests/cli/isa_identity_test.sh build/debug/cli/jtracer-cli . build/isa-iden
 if [ "${JT_SKIP_FUZZ:-0}" != 1 ]; then
     # A fixed seed: the suite checks that the fuzzers find nothing new along a
     # known path; looking for new findings is the long runs' job (docs/hardening.md).
-    JT_FUZZ_SEED=${JT_FUZZ_SEED:-1} ./scripts/fuzz.sh "${JT_FUZZ_SECONDS:-60}"
+    JT_FUZZ_SEED=${JT_FUZZ_SEED:-1} ./scripts/fuzz.sh "${JT_FUZZ_SECONDS:-30}"
 fi
 if [ "${JT_SKIP_ASAN:-0}" != 1 ]; then
     run_preset asan

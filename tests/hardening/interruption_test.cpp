@@ -13,11 +13,10 @@ namespace {
 
 using Clock = std::chrono::steady_clock;
 
-#ifdef JT_SANITIZED
-constexpr double stop_limit_seconds = 5.0;  // sanitizers slow each tile down several times
-#else
-constexpr double stop_limit_seconds = 1.0;
-#endif
+// The render would run for 15 s or more: stopping well within that is the
+// promptness the test asks for, with room for a sanitizer build on a busy
+// machine (a tile there takes several times as long).
+constexpr double stop_limit_seconds = 5.0;
 
 class Interruption : public CliSandbox, public testing::WithParamInterface<int> {};
 

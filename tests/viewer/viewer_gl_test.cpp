@@ -287,7 +287,10 @@ TEST_F(ViewerGl, AnEditCancelsTheRunningRenderAndRestartsAtOnce) {
     viewer.frame(state);
     const auto latency = std::chrono::steady_clock::now() - before;
     EXPECT_EQ(state.renderer.jobs_started(), jobs + 1);
-    EXPECT_LT(latency, std::chrono::milliseconds(500)) << "cancel + restart took too long";
+    // The old render has minutes of work left: a frame that waited for it
+    // would take that long. Software GL makes any frame slow, so the bound
+    // is a hang's, not a latency figure (bench/viewer has those).
+    EXPECT_LT(latency, std::chrono::seconds(5)) << "cancel + restart waited for the old render";
     EXPECT_FALSE(render_complete(state));
 }
 
