@@ -10,23 +10,30 @@ cd "$(dirname "$0")/.."
 ./scripts/install-deps.sh
 
 jobs=$(nproc)
+# Each stage's header says how long the run has taken so far.
+stage() {
+    printf '== [%d:%02d] %s\n' $((SECONDS / 60)) $((SECONDS % 60)) "$*"
+}
 run_preset() {
     local preset=$1
-    echo "== $preset: configure and build"
+    stage "$preset: configure and build"
     cmake --preset "$preset" >/dev/null
     cmake --build --preset "$preset" -j "$jobs"
-    echo "== $preset: tests"
-    ctest --preset "$preset" -j "$jobs"
+    stage "$preset: tests"
+    # One test more than the cores: several tests spend most of their time
+    # waiting (the MPI network test on its timeouts, the viewer's on frames).
+    ctest --preset "$preset" -j "$((jobs + 1))"
 }
 
 run_preset release
-echo "== release: install, package, uninstall"
+stage "release: install, package, uninstall"
 ./scripts/install-test.sh build/release
-echo "== debug: jtracer-cli gives the release build's bytes"
+stage "debug: jtracer-cli gives the release build's bytes"
 cmake --preset debug >/dev/null
 cmake --build --preset debug --target jtracer-cli -j "$jobs"
 bash tests/cli/isa_identity_test.sh build/debug/cli/jtracer-cli . build/isa-identity debug
 if [ "${JT_SKIP_FUZZ:-0}" != 1 ]; then
+    stage "fuzz"
     # A fixed seed: the suite checks that the fuzzers find nothing new along a
     # known path; looking for new findings is the long runs' job (docs/hardening.md).
     JT_FUZZ_SEED=${JT_FUZZ_SEED:-1} ./scripts/fuzz.sh "${JT_FUZZ_SECONDS:-30}"
@@ -34,3 +41,4 @@ fi
 if [ "${JT_SKIP_ASAN:-0}" != 1 ]; then
     run_preset asan
 fi
+stage "done"
