@@ -92,7 +92,7 @@ RankSetUp set_up_rank(const Options& o, FrameSetup& setup) {
         mine.message = "jtracer-mpi: " + prepared.error().message + "; nothing was written\n";
         return mine;
     }
-    // One frame a rank: the camera table is built once, by the rank's first tile.
+    // One frame a rank: the view table is built once, by the rank's first tile.
     mine.frame = jt::prepare_frame(*prepared, setup.render);
     mine.tiles = cut_work_tiles(setup.render.width, setup.render.height, o.tile_size);
     return mine;

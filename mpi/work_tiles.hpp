@@ -22,7 +22,7 @@ struct WorkTile {
 
 // Renders the pixels of `tile` exactly as a render of the whole frame would,
 // with the rank's local cores (oneTBB). Every tile of the rank shares the
-// frame's camera table, built by its first tile.
+// frame's view table, built by its first tile.
 WorkTile render_work_tile(const PreparedFrame& frame, const PixelRect& tile);
 
 }  // namespace jt::mpi

@@ -1,5 +1,5 @@
 // render_tile: tiles of one prepared frame give exactly the pixels of a whole
-// render, and the frame builds its camera table once for all of them.
+// render, and the frame builds its view table once for all of them.
 
 #include "jtracer/render_tile.hpp"
 #include "jtracer/parser.hpp"
@@ -63,16 +63,16 @@ TEST(RenderTile, ATileReachingOutOfTheFrameIsClipped) {
     EXPECT_EQ(render_tile(*prepare_frame(prepared, options), {80, 0, 90, 10}).pixels, Image8());
 }
 
-TEST(RenderTile, TheCameraTableIsBuiltOncePerFrame) {
+TEST(RenderTile, TheViewTableIsBuiltOncePerFrame) {
     const Scene scene = tile_scene();
     const auto frame = prepare_frame(prepare_scene(scene).value(), render_options_for(scene));
     static_cast<void>(render_tile(*frame, {0, 0, 32, 32}));
-    const DirectionTable& table = frame->camera_table();
-    ASSERT_GT(table.resolution, 0) << "the tiles traced through a camera table";
+    const ViewTable& table = frame->view_table();
+    ASSERT_TRUE(table.built) << "the tiles traced through a view table";
     const std::uint32_t* lists = table.shapes.data();
     static_cast<void>(render_tile(*frame, {32, 0, 64, 32}));
-    EXPECT_EQ(&frame->camera_table(), &table);
-    EXPECT_EQ(frame->camera_table().shapes.data(), lists) << "later tiles reuse the same table";
+    EXPECT_EQ(&frame->view_table(), &table);
+    EXPECT_EQ(frame->view_table().shapes.data(), lists) << "later tiles reuse the same table";
 }
 
 }  // namespace

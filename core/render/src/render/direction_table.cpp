@@ -55,13 +55,13 @@ BoundingSphere bounding_sphere(const TransformedShape& s) {
 
 }  // namespace
 
-int table_resolution(std::size_t shapes, bool for_camera) {
+int table_resolution(std::size_t shapes) {
     // Some 24 cells a shape (six faces of (2 sqrt N)^2), so that most cells list
-    // none or one. The caps were measured on the benchmark scenes: finer tables
-    // cost more to build than they save, except around a camera, whose rays
-    // are spread over the whole image rather than toward a few shapes.
+    // none or one. The cap was measured on the benchmark scenes: finer tables
+    // cost more to build than they save (128 cells an edge: 15% slower on
+    // lattice and nested_shells, 5% faster on spheres_5761).
     const double per_edge = std::ceil(2.0 * std::sqrt(static_cast<double>(shapes)));
-    return static_cast<int>(std::clamp(per_edge, 8.0, for_camera ? 128.0 : 64.0));
+    return static_cast<int>(std::clamp(per_edge, 8.0, 64.0));
 }
 
 namespace {
@@ -110,9 +110,8 @@ std::vector<CellCone> cell_cones(int resolution) {
     return cones;
 }
 
-// Calls add(cell, covers) for every cell whose cone meets the cone of
-// directions within `angle` of the unit `axis`; `covers` when that cone holds
-// the cell's.
+// Calls add(cell) for every cell whose cone meets the cone of directions
+// within `angle` of the unit `axis`.
 template <typename Add>
 void rasterise_cone(const Vec3& axis, double angle, int resolution,
                     const std::vector<CellCone>& cones, Add&& add) {
@@ -150,10 +149,7 @@ void rasterise_cone(const Vec3& axis, double angle, int resolution,
                 // sum of their angles: compare cosines.
                 const double cos_between = c.u * axis[j] + c.v * axis[l] + c.w * sign * axis[k];
                 const double cos_sum = cos_angle * c.cos_radius - sin_angle * c.sin_radius;
-                if (!(cos_between >= cos_sum - angle_slack)) continue;
-                const double cos_difference = cos_angle * c.cos_radius + sin_angle * c.sin_radius;
-                add(face_base + local,
-                    angle > std::acos(c.cos_radius) && cos_between >= cos_difference + angle_slack);
+                if (cos_between >= cos_sum - angle_slack) add(face_base + local);
             }
     }
 }
@@ -173,7 +169,6 @@ DirectionTable build_direction_table(const Geometry& geometry, const Vec3& posit
     // nearest first.
     struct Listing {
         std::uint32_t cell, candidate;
-        bool covers;
     };
     std::vector<Listing> pairs;
     std::vector<double> nearest_of(shapes);  // by sphere index, then shape index
@@ -188,13 +183,12 @@ DirectionTable build_direction_table(const Geometry& geometry, const Vec3& posit
                                 radius / distance > std::sin(max_cone_angle);
         if (everywhere) {
             for (std::size_t cell = 0; cell < cells; ++cell)
-                pairs.push_back({static_cast<std::uint32_t>(cell), candidate, false});
+                pairs.push_back({static_cast<std::uint32_t>(cell), candidate});
             return;
         }
         const double angle = std::asin(radius / distance) + angle_slack;
-        rasterise_cone(offset / distance, angle, r, cones, [&](std::size_t cell, bool covers) {
-            pairs.push_back(
-                {static_cast<std::uint32_t>(cell), candidate, covers && !(candidate & shape_flag)});
+        rasterise_cone(offset / distance, angle, r, cones, [&](std::size_t cell) {
+            pairs.push_back({static_cast<std::uint32_t>(cell), candidate});
         });
     };
     for (std::uint32_t i = 0; i < geometry.spheres.size(); ++i) {
@@ -218,16 +212,12 @@ DirectionTable build_direction_table(const Geometry& geometry, const Vec3& posit
     std::vector<Listing> sorted(pairs.size());
     std::vector<std::uint32_t> fill(table.cell_start.begin(), table.cell_start.end() - 1);
     for (const Listing& p : pairs) sorted[fill[p.cell]++] = p;
-    table.covered.assign(cells, 0);
-    for (std::size_t c = 0; c < cells; ++c) {
-        auto first = sorted.begin() + table.cell_start[c];
-        auto last = sorted.begin() + table.cell_start[c + 1];
-        std::stable_sort(first, last, [&](const Listing& a, const Listing& b) {
-            return nearest(a.candidate) < nearest(b.candidate);
-        });
-        const auto scanned = first + std::min<std::ptrdiff_t>(last - first, max_covered_position);
-        table.covered[c] = std::any_of(first, scanned, [](const Listing& p) { return p.covers; });
-    }
+    for (std::size_t c = 0; c < cells; ++c)
+        std::stable_sort(sorted.begin() + table.cell_start[c],
+                         sorted.begin() + table.cell_start[c + 1],
+                         [&](const Listing& a, const Listing& b) {
+                             return nearest(a.candidate) < nearest(b.candidate);
+                         });
     table.shapes.resize(sorted.size());
     table.nearest.resize(sorted.size());
     for (std::size_t i = 0; i < sorted.size(); ++i) {
@@ -254,7 +244,7 @@ std::optional<ListedShapes> shapes_toward(const DirectionTable& table, const Vec
     const std::size_t first = table.cell_start[cell];
     const std::size_t count = table.cell_start[cell + 1] - first;
     return ListedShapes{std::span(table.shapes).subspan(first, count),
-                        std::span(table.nearest).subspan(first, count), table.covered[cell] != 0};
+                        std::span(table.nearest).subspan(first, count)};
 }
 
 std::vector<DirectionTable> build_light_tables(const Geometry& geometry,
@@ -263,8 +253,7 @@ std::vector<DirectionTable> build_light_tables(const Geometry& geometry,
     if (lights.empty() || shapes == 0 || shapes * lights.size() > max_table_work) return {};
     std::vector<DirectionTable> tables(lights.size());
     tbb::parallel_for(std::size_t{0}, lights.size(), [&](std::size_t i) {
-        tables[i] =
-            build_direction_table(geometry, lights[i].position, table_resolution(shapes, false));
+        tables[i] = build_direction_table(geometry, lights[i].position, table_resolution(shapes));
     });
     return tables;
 }

@@ -14,13 +14,20 @@ void report_embree_error(void*, RTCError code, const char* message) {
 
 const char* error_name(RTCError code) {
     switch (code) {
-    case RTC_ERROR_NONE: return "no error reported";
-    case RTC_ERROR_UNKNOWN: return "unknown error";
-    case RTC_ERROR_INVALID_ARGUMENT: return "invalid argument";
-    case RTC_ERROR_INVALID_OPERATION: return "invalid operation";
-    case RTC_ERROR_OUT_OF_MEMORY: return "out of memory";
-    case RTC_ERROR_UNSUPPORTED_CPU: return "this CPU is not supported";
-    case RTC_ERROR_CANCELLED: return "cancelled";
+        case RTC_ERROR_NONE:
+            return "no error reported";
+        case RTC_ERROR_UNKNOWN:
+            return "unknown error";
+        case RTC_ERROR_INVALID_ARGUMENT:
+            return "invalid argument";
+        case RTC_ERROR_INVALID_OPERATION:
+            return "invalid operation";
+        case RTC_ERROR_OUT_OF_MEMORY:
+            return "out of memory";
+        case RTC_ERROR_UNSUPPORTED_CPU:
+            return "this CPU is not supported";
+        case RTC_ERROR_CANCELLED:
+            return "cancelled";
     }
     return "unknown error";
 }

@@ -5,8 +5,8 @@
 #include "jtracer/render_tile.hpp"
 
 #include "render/camera_rays.hpp"
-#include "render/direction_table.hpp"
 #include "render/render_passes.hpp"
+#include "render/view_table.hpp"
 
 #include <atomic>
 #include <mutex>
@@ -22,17 +22,17 @@ struct PreparedFrame {
     RenderOptions options;  // as frame_options leaves them
     CameraFrame camera;
 
-    // The shapes by direction around camera.position. Built on first use, not
-    // with the frame: previews trace a few rays a block, for which the table
-    // (tens of ms for thousands of shapes) would cost more than it saves.
-    // Call it before a parallel loop over tiles, never inside one: the build
-    // runs its own parallel loop, and a worker that waited inside it for the
-    // once_flag could be handed another tile's wait.
-    const DirectionTable& camera_table() const;
+    // The shapes each block of the image may see first. Built on first use,
+    // not with the frame: previews trace a few rays a block, for which the
+    // table (milliseconds for thousands of shapes) would cost more than it
+    // saves. Call it before a parallel loop over tiles, never inside one: a
+    // worker that waited inside it for the once_flag could be handed another
+    // tile's wait.
+    const ViewTable& view_table() const;
 
   private:
     mutable std::once_flag table_built_;
-    mutable DirectionTable table_;
+    mutable ViewTable table_;
 };
 
 // `options` as a frame renders them: samples clamped to kMinSamples..kMaxSamples, sizes to >= 0.

@@ -23,6 +23,9 @@ constexpr std::uint32_t no_source = std::numeric_limits<std::uint32_t>::max();
 // than Embree's walk past most of them.
 constexpr std::size_t max_cell_candidates = 16;
 constexpr std::size_t short_candidate_list = 2;
+// A covered list is walked however long it is, but only so far: a walk that
+// has tested this many without settling the ray hands it to the BVH.
+constexpr std::size_t max_covered_position = 256;
 
 // Embree hands our callbacks the context pointer we passed in; the query
 // structs start with it so that they can be found again from it.
@@ -263,7 +266,7 @@ void shape_occluded(const RTCOccludedFunctionNArguments* args) {
 }
 
 bool closest_hit(const Geometry& geometry, const Vec3& origin, const Vec3& direction, double t_min,
-                 Hit& hit, const DirectionTable* around_origin, TriangleId skip) {
+                 Hit& hit, const ListedShapes* candidates, TriangleId skip) {
     ClosestQuery q;
     q.geometry = &geometry;
     q.origin = origin;
@@ -287,17 +290,16 @@ bool closest_hit(const Geometry& geometry, const Vec3& origin, const Vec3& direc
         }
     }
 
-    // A long list is walked too when a sphere near its start covers the cell
+    // A long list is walked too when a sphere on it covers the block
     // (heavily overlapping spheres): that sphere's hit soon ends the walk,
     // long before Embree would have offered every sphere whose box the ray
     // crosses. Past max_covered_position shapes the BVH walk takes over from
     // the best hit so far.
     bool settled = false;
-    if (around_origin)
-        if (std::optional<ListedShapes> listed = shapes_toward(*around_origin, direction);
-            listed && (!geometry.bvh || listed->size() <= max_cell_candidates || listed->covered))
-            settled =
-                closest_by_listed(q, *listed, geometry.bvh ? max_covered_position : listed->size());
+    if (candidates &&
+        (!geometry.bvh || candidates->size() <= max_cell_candidates || candidates->covered))
+        settled = closest_by_listed(q, *candidates,
+                                    geometry.bvh ? max_covered_position : candidates->size());
     if (!settled && !geometry.bvh) {
         closest_by_testing_all(q);
     } else if (!settled) {
@@ -327,6 +329,7 @@ bool closest_hit(const Geometry& geometry, const Vec3& origin, const Vec3& direc
     if (q.source == no_source) return false;
     hit.triangle = {};
     hit.shading = Vec3(0.0);
+    hit.uv = glm::dvec2(0.0);
 
     hit.t = q.t;
     hit.source = q.source;

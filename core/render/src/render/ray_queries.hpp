@@ -13,25 +13,27 @@
 
 namespace jt {
 
+// closest_hit sets every field when it finds a hit: a Hit is made for every
+// ray, and zeroing it first showed in profiles.
 struct Hit {
-    double t = 0.0;
-    Vec3 normal{0.0};  // outward geometric normal, world space, not unit length
-    std::uint32_t source = 0;
+    double t;
+    Vec3 normal;  // outward geometric normal, world space, not unit length
+    std::uint32_t source;
     // A triangle's: which one, its smooth shading normal (world space, not unit
-    // length; zero for none) and its texture coordinates.
+    // length; zero for none) and its texture coordinates (zero for none).
     TriangleId triangle;
-    Vec3 shading{0.0};
-    glm::dvec2 uv{0.0};
+    Vec3 shading;
+    glm::dvec2 uv;
 };
 
 // Nearest surface along origin + t * direction with t in (t_min, infinity).
 // Equal distances resolve to the lower primitive index, so that the answer
 // never depends on BVH traversal order.
-// With `around_origin`, a table built around `origin`, tests the shapes of
-// the ray's cell instead of walking the BVH when they are few.
-// `skip`, a triangle the ray must not meet (the one it leaves).
+// With `candidates`, every shape the ray may meet first (a list of a view
+// or direction table), tests those instead of walking the BVH when they are
+// few. `skip`, a triangle the ray must not meet (the one it leaves).
 bool closest_hit(const Geometry& geometry, const Vec3& origin, const Vec3& direction, double t_min,
-                 Hit& hit, const DirectionTable* around_origin = nullptr, TriangleId skip = {});
+                 Hit& hit, const ListedShapes* candidates = nullptr, TriangleId skip = {});
 
 // The surface that blocked a previous shadow ray: shadow rays toward one light
 // from neighbouring points are mostly blocked by the same surface, and testing

@@ -163,9 +163,6 @@ bool RenderJob::run_pass() {
         s.pass_started = std::chrono::steady_clock::now();
     }
     const RenderPass& pass = s.passes[index];
-    // Built by the first full-resolution pass, off the thread that made the
-    // job, and before the pass's tiles run (prepared_frame.hpp says why).
-    if (pass.block == 1) static_cast<void>(s.frame->camera_table());
     const std::vector<PixelRect> tiles = cut_tiles(s.region, pass.block, tile_blocks);
     if (s.tiles_pass != index) {  // a fresh pass, not one resumed after a cancel
         s.tiles_pass = index;
@@ -173,6 +170,10 @@ bool RenderJob::run_pass() {
         s.work_before_pass = s.work_done.load();
     }
     s.arena.execute([&] {
+        // Built by the first full-resolution pass, off the thread that made
+        // the job, on the job's threads, and before the pass's tiles run
+        // (prepared_frame.hpp says why).
+        if (pass.block == 1) static_cast<void>(s.frame->view_table());
         tbb::parallel_for(
             tbb::blocked_range<std::size_t>(0, tiles.size(), 1),
             [&](const tbb::blocked_range<std::size_t>& range) {

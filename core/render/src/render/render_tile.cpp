@@ -52,7 +52,7 @@ bool trace_blocks(const PreparedFrame& f, int b, TileBuffer& out, const std::ato
             // The centre of the block, as far as the image reaches.
             double cx = bx + 0.5 * (std::min(bx + b, f.options.width) - bx);
             double cy = by + 0.5 * (std::min(by + b, f.options.height) - by);
-            // Previews run before the camera table is built: the BVH answers.
+            // Previews run before the view table is built: the BVH answers.
             Colour c =
                 trace_ray(*f.scene, camera.position, camera_direction(camera, cx, cy), 0.0, rays);
             for (int y = std::max(by, tile.y0); y < std::min(by + b, tile.y1); ++y)
@@ -67,15 +67,19 @@ bool trace_samples(const PreparedFrame& f, const RenderPass& pass, TileBuffer& o
                    const std::atomic<bool>& cancel, std::uint64_t& rays) {
     const PixelRect& tile = out.rect;
     const CameraFrame& camera = f.camera;
-    const DirectionTable* table = &f.camera_table();
+    const ViewTable& table = f.view_table();
+    auto trace = [&](double x, double y) {
+        const Vec3 direction = camera_direction(camera, x, y);
+        if (!table.built) return trace_ray(*f.scene, camera.position, direction, 0.0, rays);
+        const ListedShapes seen = shapes_seen(table, x, y);
+        return trace_ray(*f.scene, camera.position, direction, 0.0, rays, &seen);
+    };
     const bool accumulate = f.options.samples > 1;
     for (int y = tile.y0; y < tile.y1; ++y) {
         if (cancel.load(std::memory_order_relaxed)) return false;
         for (int x = tile.x0; x < tile.x1; ++x) {
             if (!accumulate) {
-                put(out, x, y,
-                    trace_ray(*f.scene, camera.position, camera_direction(camera, x + 0.5, y + 0.5),
-                              0.0, rays, table));
+                put(out, x, y, trace(x + 0.5, y + 0.5));
                 continue;
             }
             // A pixel's samples add up in index order, whatever the threads
@@ -84,9 +88,7 @@ bool trace_samples(const PreparedFrame& f, const RenderPass& pass, TileBuffer& o
             if (pass.sample_begin == 0) sum = Colour(0.0);
             for (int k = pass.sample_begin; k < pass.sample_end; ++k) {
                 SampleOffset o = sample_offset(k);
-                sum += clamp01(trace_ray(*f.scene, camera.position,
-                                         camera_direction(camera, x + o.x, y + o.y), 0.0, rays,
-                                         table));
+                sum += clamp01(trace(x + o.x, y + o.y));
             }
             put(out, x, y, sum / static_cast<double>(pass.sample_end));
         }
@@ -96,12 +98,8 @@ bool trace_samples(const PreparedFrame& f, const RenderPass& pass, TileBuffer& o
 
 }  // namespace
 
-const DirectionTable& PreparedFrame::camera_table() const {
-    std::call_once(table_built_, [this] {
-        const Geometry& g = *scene->geometry;
-        table_ = build_direction_table(g, camera.position,
-                                       table_resolution(g.spheres.size() + g.shapes.size(), true));
-    });
+const ViewTable& PreparedFrame::view_table() const {
+    std::call_once(table_built_, [this] { table_ = build_view_table(*scene->geometry, camera); });
     return table_;
 }
 
@@ -136,7 +134,6 @@ RenderedTile render_tile(const PreparedFrame& frame, const PixelRect& tile) {
     RenderedTile rendered;
     if (rect.empty()) return rendered;
     rendered.pixels = Image8(rect.width(), rect.height());
-    static_cast<void>(frame.camera_table());  // built here, outside the parallel loop
     const RenderPass every_sample{"", 1, 0, frame.options.samples, 0};
     const std::vector<PixelRect> pieces = cut_tiles(rect, 1, tile_blocks);
     const std::atomic<bool> never{false};
@@ -144,6 +141,7 @@ RenderedTile render_tile(const PreparedFrame& frame, const PixelRect& tile) {
     tbb::task_arena arena(frame.options.threads > 0 ? frame.options.threads
                                                     : tbb::task_arena::automatic);
     arena.execute([&] {
+        static_cast<void>(frame.view_table());  // built here, outside the parallel loop
         tbb::parallel_for(
             tbb::blocked_range<std::size_t>(0, pieces.size(), 1),
             [&](const tbb::blocked_range<std::size_t>& range) {

@@ -98,26 +98,29 @@ Colour shade_hit(const PreparedScene& scene, const Material& m, const Vec3& poin
     return c;
 }
 
-// What a ray meets first.
+// What a ray meets first. Only `kind` is set up front: first_surface sets
+// every other field that its kind reads, and zeroing the whole struct twice a
+// bounce showed in profiles.
 struct SurfaceHit {
     enum class Kind : std::uint8_t { miss, no_normal, surface };
     Kind kind = Kind::miss;
-    Vec3 point{0.0};
-    Vec3 normal{0.0};      // unit, facing the ray: the shading normal N
-    Vec3 geometric{0.0};   // unit, facing the ray: Ng (the same as N but on triangles)
-    bool entering = true;  // the ray arrives from the outside (docs/language.md §13.2)
-    Vec3 lifted{0.0};      // point moved off the surface toward the ray's side
-    double offset = 0.0;
-    std::uint32_t source = 0;
+    Vec3 point;
+    Vec3 normal;     // unit, facing the ray: the shading normal N
+    Vec3 geometric;  // unit, facing the ray: Ng (the same as N but on triangles)
+    bool entering;   // the ray arrives from the outside (docs/language.md §13.2)
+    Vec3 lifted;     // point moved off the surface toward the ray's side
+    double offset;
+    std::uint32_t source;
     TriangleId triangle;  // on a triangle: which
-    glm::dvec2 uv{0.0};   // on a triangle: its texture coordinates
+    glm::dvec2 uv;        // on a triangle: its texture coordinates
 };
 
 SurfaceHit first_surface(const Geometry& geometry, const Vec3& o, const Vec3& d, double t_lower,
-                         const DirectionTable* table) {
+                         const ListedShapes* candidates) {
     SurfaceHit s;
     Hit hit;
-    if (!finite(o) || !finite(d) || !closest_hit(geometry, o, d, t_lower, hit, table)) return s;
+    if (!finite(o) || !finite(d) || !closest_hit(geometry, o, d, t_lower, hit, candidates))
+        return s;
     s.point = o + hit.t * d;
     s.geometric = glm::normalize(hit.normal);
     const double along = glm::dot(s.geometric, d);
@@ -170,9 +173,9 @@ constexpr double min_branch_weight = 1e-6;
 // hit can spawn both a reflected and a transmitted ray.
 Colour trace_branching(const PreparedScene& scene, const Vec3& o, const Vec3& d, double t_lower,
                        int depth, int depth_limit, double weight, std::uint64_t& rays,
-                       const DirectionTable* table) {
+                       const ListedShapes* candidates) {
     ++rays;
-    const SurfaceHit s = first_surface(*scene.geometry, o, d, t_lower, table);
+    const SurfaceHit s = first_surface(*scene.geometry, o, d, t_lower, candidates);
     if (s.kind == SurfaceHit::Kind::miss) return scene.settings.background;
     if (s.kind == SurfaceHit::Kind::no_normal) return Colour(0.0);
     Colour c = shade_surface(scene, s, d, rays);
@@ -200,16 +203,26 @@ double surface_offset(const Vec3& origin, const Vec3& point, double distance) {
 }
 
 Colour trace_ray(const PreparedScene& scene, const Vec3& origin, const Vec3& unit_direction,
-                 double t_min, std::uint64_t& rays, const DirectionTable* around_origin) {
+                 double t_min, std::uint64_t& rays, const ListedShapes* first_candidates) {
     const Geometry& geometry = *scene.geometry;
     const int depth_limit = std::clamp(scene.settings.recurse_depth, 0, max_depth);
     if (scene.has_transmission)
         return trace_branching(scene, origin, unit_direction, t_min, 0, depth_limit, 1.0, rays,
-                               around_origin);
+                               first_candidates);
     // c_k = local_k + reflection_k * c_(k+1): kept per bounce and folded back in
     // the end, so the sum rounds exactly as the recursive definition does.
-    std::array<Colour, max_depth + 1> local;
-    std::array<double, max_depth + 1> reflection;
+    // Plain doubles, left uninitialised: glm's vectors zero themselves, and
+    // zeroing room for every possible bounce (8 KiB) cost more than most rays.
+    struct Bounce {
+        double local[3];
+        double reflection;
+    };
+    std::array<Bounce, max_depth + 1> bounces;
+    auto keep = [&](int depth, const Colour& c) {
+        bounces[depth].local[0] = c.x;
+        bounces[depth].local[1] = c.y;
+        bounces[depth].local[2] = c.z;
+    };
 
     Vec3 o = origin;
     Vec3 d = unit_direction;
@@ -217,25 +230,27 @@ Colour trace_ray(const PreparedScene& scene, const Vec3& origin, const Vec3& uni
     int last = 0;
     for (int depth = 0;; ++depth) {
         last = depth;
-        reflection[depth] = 0.0;
+        bounces[depth].reflection = 0.0;
         ++rays;
-        const DirectionTable* table = depth == 0 ? around_origin : nullptr;
-        const SurfaceHit s = first_surface(geometry, o, d, t_lower, table);
+        const SurfaceHit s =
+            first_surface(geometry, o, d, t_lower, depth == 0 ? first_candidates : nullptr);
         if (s.kind != SurfaceHit::Kind::surface) {
-            local[depth] =
-                s.kind == SurfaceHit::Kind::miss ? scene.settings.background : Colour(0.0);
+            keep(depth, s.kind == SurfaceHit::Kind::miss ? scene.settings.background : Colour(0.0));
             break;
         }
-        local[depth] = shade_surface(scene, s, d, rays);
+        keep(depth, shade_surface(scene, s, d, rays));
         const Material& m = scene.materials[scene.material_of[s.source]];
         if (depth >= depth_limit || !(m.reflection > 0.0)) break;
-        reflection[depth] = m.reflection;
+        bounces[depth].reflection = m.reflection;
         d = mirror(d, s.normal);
         o = s.lifted;
         t_lower = 0.0;
     }
-    Colour c = local[last];
-    for (int k = last - 1; k >= 0; --k) c = local[k] + reflection[k] * c;
+    auto local = [&](int k) {
+        return Colour(bounces[k].local[0], bounces[k].local[1], bounces[k].local[2]);
+    };
+    Colour c = local(last);
+    for (int k = last - 1; k >= 0; --k) c = local(k) + bounces[k].reflection * c;
     return c;
 }
 

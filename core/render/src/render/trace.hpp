@@ -9,9 +9,10 @@ namespace jt {
 
 // The colour seen along origin + t * unit_direction, t > t_min, unclamped.
 // Adds the rays it traces (this one, shadow and reflection rays) to `rays`.
-// `around_origin`, when given, is a table built around `origin` for the first hit.
+// `first_candidates`, when given, lists every shape the ray may meet first
+// (closest_hit's `candidates`).
 Colour trace_ray(const PreparedScene& scene, const Vec3& origin, const Vec3& unit_direction,
-                 double t_min, std::uint64_t& rays, const DirectionTable* around_origin = nullptr);
+                 double t_min, std::uint64_t& rays, const ListedShapes* first_candidates = nullptr);
 
 // How far to lift a secondary ray's origin off the surface at `point`, reached
 // from `origin` after `distance`: well above the rounding error of the hit

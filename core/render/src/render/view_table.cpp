@@ -1,0 +1,288 @@
+#include "render/view_table.hpp"
+
+#include "render/prepared_scene.hpp"
+
+#include <tbb/parallel_for.h>
+
+#include <glm/geometric.hpp>
+
+#include <algorithm>
+#include <cmath>
+#include <limits>
+#include <numbers>
+
+namespace jt {
+
+namespace {
+
+// Past this many shapes the table costs more to build than the BVH walks it
+// saves; past this many listings it would take hundreds of MB.
+constexpr std::size_t max_view_shapes = std::size_t{1} << 16;
+constexpr std::size_t max_view_listed = std::size_t{1} << 22;
+
+// The table is built a band of block rows at a time, the bands in parallel:
+// each band's lists depend only on the shapes, so the table is the same
+// whatever the threads do.
+constexpr int band_rows = 8;
+
+// Slack far beyond the rounding of the double computations that aim a ray and
+// decide its hits, so that a ray on a block's edge still finds every shape it
+// may meet: on angles (radians) and on positions in the image (pixels).
+constexpr double angle_slack = 1e-7;
+constexpr double pixel_slack = 1e-2;
+
+constexpr double half_pi = 0.5 * std::numbers::pi;
+constexpr double unbounded = std::numeric_limits<double>::infinity();
+
+double max_abs(const Vec3& v) {
+    return std::max({std::abs(v.x), std::abs(v.y), std::abs(v.z)});
+}
+
+bool finite(const Vec3& v) {
+    return std::isfinite(v.x) && std::isfinite(v.y) && std::isfinite(v.z);
+}
+
+// A shape as the table sees it: its padded bounding sphere, and for a world
+// sphere the sphere itself, shrunk, for deciding which blocks it covers.
+struct Candidate {
+    std::uint32_t listed;  // sphere index, or shape index | shape_flag
+    Vec3 center;
+    double radius;         // of the padded bounding sphere
+    double inner_radius;   // every ray passing this close to `center` hits; 0: none
+    double reach;          // no hit on the shape lies farther from the camera
+    double nearest;        // no point of the shape lies nearer the camera
+    const RTCBounds* box;  // a transformed shape's box, tighter than its sphere
+};
+
+Candidate candidate(std::uint32_t listed, const Vec3& center, double radius, double true_radius,
+                    const RTCBounds* box, const Vec3& eye) {
+    Candidate c;
+    c.listed = listed;
+    c.center = center;
+    c.radius = radius * (1.0 + 1e-6) + 1e-7 * (max_abs(center) + max_abs(eye) + radius);
+    const double distance = glm::length(center - eye);
+    c.nearest = distance > c.radius ? (distance - c.radius) * (1.0 - 1e-9) : 0.0;
+    c.inner_radius = std::max(true_radius * (1.0 - 1e-7) - 1e-9 * distance, 0.0);
+    c.reach = (distance + c.radius) * (1.0 + 1e-6);
+    c.box = box;
+    return c;
+}
+
+// A range of image-plane coordinates (s = tan of a ray's angle from the
+// forward axis, in the plane of that axis and the right or up axis).
+struct Span {
+    double lo = -unbounded, hi = unbounded;
+    bool empty() const { return lo > hi; }
+};
+
+Span overlap(const Span& a, const Span& b) {
+    return {std::max(a.lo, b.lo), std::min(a.hi, b.hi)};
+}
+
+// The rays whose projection onto one such plane meets the projection of a
+// sphere at (a, z) in it (a along the right or up axis, z forward), `radius`
+// wide. Empty when none does.
+Span plane_span(double a, double z, double radius) {
+    const double distance = std::hypot(a, z);
+    if (!(distance > radius)) return {};  // the camera's axis through the sphere
+    const double centre = std::atan2(a, z);
+    const double half = std::asin(radius / distance) + angle_slack;
+    const double lo = centre - half, hi = centre + half;
+    // Rays run forward, at angles inside (-pi/2, pi/2); the sphere's angles
+    // span less than pi around `centre` in (-pi, pi], so no wrapping is needed.
+    if (hi <= -half_pi || lo >= half_pi) return {1.0, -1.0};
+    return {lo <= -half_pi ? -unbounded : std::tan(lo), hi >= half_pi ? unbounded : std::tan(hi)};
+}
+
+// The spans of a box wholly in front of the camera: a ray meets the box only
+// through the hull of its corners' images. False when a corner is not in front.
+bool box_spans(const RTCBounds& b, const CameraFrame& c, Span& across, Span& down) {
+    across = {unbounded, -unbounded};
+    down = {unbounded, -unbounded};
+    for (int k = 0; k < 8; ++k) {
+        const Vec3 corner(k & 1 ? b.upper_x : b.lower_x, k & 2 ? b.upper_y : b.lower_y,
+                          k & 4 ? b.upper_z : b.lower_z);
+        const Vec3 v = corner - c.position;
+        const double z = glm::dot(v, c.forward);
+        if (!(z > 0.0) || !std::isfinite(z)) return false;
+        const double s = glm::dot(v, c.right) / z, t = glm::dot(v, c.up) / z;
+        across = {std::min(across.lo, s), std::max(across.hi, s)};
+        down = {std::min(down.lo, t), std::max(down.hi, t)};
+    }
+    return true;
+}
+
+// The blocks along one image axis whose pixels hold image-plane coordinates
+// in `span`; `scale` is the coordinate's range over the image (tan(fov/2),
+// times the aspect across), `pixels` the image's size along the axis.
+bool block_range(const Span& span, double scale, int pixels, int blocks, int& first, int& last) {
+    auto pixel = [&](double s) { return (s / scale + 1.0) * 0.5 * pixels; };
+    const double lo = span.lo == -unbounded ? -unbounded : pixel(span.lo) - pixel_slack;
+    const double hi = span.hi == unbounded ? unbounded : pixel(span.hi) + pixel_slack;
+    if (!(hi >= 0.0) || !(lo < pixels)) return false;
+    first = lo <= 0.0 ? 0 : static_cast<int>(lo) / view_block;
+    last = hi >= pixels ? blocks - 1 : std::min(static_cast<int>(hi) / view_block, blocks - 1);
+    return true;
+}
+
+// Where a candidate shows: its blocks (none when column0 > column1), and the
+// cone of rays that surely hit it (cos_cover > 1: it covers no block; -1: the
+// camera is inside it, so every ray does).
+struct Extent {
+    int column0 = 1, column1 = 0, row0 = 1, row1 = 0;
+    Vec3 axis{0.0};
+    double cos_cover = 2.0;
+};
+
+Extent extent(const Candidate& c, const CameraFrame& camera, int columns, int rows) {
+    Extent e;
+    const Vec3 offset = c.center - camera.position;
+    const double distance = glm::length(offset);
+    if (!(distance > c.radius)) {  // around the camera: every block
+        e.column0 = 0, e.column1 = columns - 1, e.row0 = 0, e.row1 = rows - 1;
+    } else {
+        const double z = glm::dot(offset, camera.forward);
+        Span across = plane_span(glm::dot(offset, camera.right), z, c.radius);
+        Span down = plane_span(glm::dot(offset, camera.up), z, c.radius);
+        Span box_across, box_down;
+        if (c.box && box_spans(*c.box, camera, box_across, box_down)) {
+            across = overlap(across, box_across);
+            down = overlap(down, box_down);
+        }
+        if (across.empty() || down.empty() ||
+            !block_range(across, camera.tan_half_fov * camera.aspect, camera.width, columns,
+                         e.column0, e.column1) ||
+            !block_range(down, camera.tan_half_fov, camera.height, rows, e.row0, e.row1))
+            return {};
+    }
+    if (c.inner_radius > 0.0) {
+        e.axis = offset / distance;
+        e.cos_cover = distance < c.inner_radius
+                          ? -1.0
+                          : std::cos(std::asin(c.inner_radius / distance) - angle_slack);
+    }
+    return e;
+}
+
+struct Listing {
+    std::uint32_t block, listed;
+    double nearest;
+};
+
+}  // namespace
+
+ViewTable build_view_table(const Geometry& geometry, const CameraFrame& camera) {
+    const std::size_t shapes = geometry.spheres.size() + geometry.shapes.size();
+    if (shapes == 0 || shapes > max_view_shapes) return {};
+    if (!finite(camera.position) || !finite(camera.forward) || !finite(camera.right) ||
+        !finite(camera.up) || !(camera.tan_half_fov > 0.0) || !std::isfinite(camera.tan_half_fov) ||
+        !(camera.aspect > 0.0) || camera.width < 1 || camera.height < 1)
+        return {};
+
+    std::vector<Candidate> candidates;
+    candidates.reserve(shapes);
+    for (std::uint32_t i = 0; i < geometry.spheres.size(); ++i) {
+        const WorldSphere& s = geometry.spheres[i];
+        candidates.push_back(candidate(i, s.center, s.radius, s.radius, nullptr, camera.position));
+    }
+    for (std::uint32_t i = 0; i < geometry.shapes.size(); ++i) {
+        const TransformedShape& s = geometry.shapes[i];
+        candidates.push_back(candidate(i | shape_flag, s.bounding_center,
+                                       std::sqrt(s.bounding_radius_sq), 0.0, &s.bounds,
+                                       camera.position));
+    }
+    // Nearest first (ties in index order): each block's list comes out sorted,
+    // and a block's cap is known before the shapes beyond it come up.
+    std::stable_sort(candidates.begin(), candidates.end(),
+                     [](const Candidate& a, const Candidate& b) { return a.nearest < b.nearest; });
+
+    ViewTable table;
+    table.built = true;
+    table.columns = (camera.width + view_block - 1) / view_block;
+    table.rows = (camera.height + view_block - 1) / view_block;
+    const std::size_t blocks = static_cast<std::size_t>(table.columns) * table.rows;
+
+    std::vector<Extent> extents(candidates.size());
+    tbb::parallel_for(std::size_t{0}, candidates.size(), [&](std::size_t i) {
+        extents[i] = extent(candidates[i], camera, table.columns, table.rows);
+    });
+
+    // The ray directions at the blocks' corners: a sphere whose cone holds all
+    // four holds the whole block, since a cone meets the image plane in a
+    // convex region.
+    const int corner_columns = table.columns + 1;
+    std::vector<Vec3> corners(static_cast<std::size_t>(corner_columns) * (table.rows + 1));
+    tbb::parallel_for(0, table.rows + 1, [&](int j) {
+        for (int i = 0; i <= table.columns; ++i)
+            corners[static_cast<std::size_t>(j) * corner_columns + i] =
+                camera_direction(camera, std::min(i * view_block, camera.width),
+                                 std::min(j * view_block, camera.height));
+    });
+    auto corner = [&](int i, int j) -> const Vec3& {
+        return corners[static_cast<std::size_t>(j) * corner_columns + i];
+    };
+
+    // Each band lists its blocks' shapes in candidate order; a shape nearer
+    // than a block's cap is listed, and a sphere holding the whole block caps
+    // it at its far side.
+    const int bands = (table.rows + band_rows - 1) / band_rows;
+    std::vector<std::vector<Listing>> band_listings(static_cast<std::size_t>(bands));
+    table.covered.assign(blocks, 0);
+    tbb::parallel_for(0, bands, [&](int band) {
+        const int first_row = band * band_rows;
+        const int last_row = std::min(first_row + band_rows, table.rows) - 1;
+        const std::size_t base = static_cast<std::size_t>(first_row) * table.columns;
+        std::vector<double> cap(
+            (last_row - first_row + 1) * static_cast<std::size_t>(table.columns), unbounded);
+        std::vector<Listing>& listings = band_listings[static_cast<std::size_t>(band)];
+        for (std::size_t i = 0; i < candidates.size(); ++i) {
+            const Extent& e = extents[i];
+            const int row0 = std::max(e.row0, first_row), row1 = std::min(e.row1, last_row);
+            if (row0 > row1 || e.column0 > e.column1) continue;
+            const Candidate& c = candidates[i];
+            auto inside = [&](const Vec3& d) {
+                return e.cos_cover <= -1.0 || glm::dot(d, e.axis) >= e.cos_cover;
+            };
+            for (int row = row0; row <= row1; ++row)
+                for (int column = e.column0; column <= e.column1; ++column) {
+                    const std::size_t b = static_cast<std::size_t>(row) * table.columns + column;
+                    if (c.nearest > cap[b - base]) continue;
+                    listings.push_back({static_cast<std::uint32_t>(b), c.listed, c.nearest});
+                    if (e.cos_cover <= 1.0 && inside(corner(column, row)) &&
+                        inside(corner(column + 1, row)) && inside(corner(column, row + 1)) &&
+                        inside(corner(column + 1, row + 1))) {
+                        table.covered[b] = 1;
+                        cap[b - base] = std::min(cap[b - base], c.reach);
+                    }
+                }
+            if (listings.size() > max_view_listed) return;
+        }
+    });
+    std::size_t listed = 0;
+    for (const std::vector<Listing>& l : band_listings) listed += l.size();
+    if (listed > max_view_listed) return {};
+
+    // A stable counting sort by block keeps each block's list nearest first;
+    // a band's blocks are contiguous, so each band fills its own part.
+    table.block_start.assign(blocks + 1, 0);
+    for (const std::vector<Listing>& l : band_listings)
+        for (const Listing& listing : l) ++table.block_start[listing.block + 1];
+    for (std::size_t b = 0; b < blocks; ++b) table.block_start[b + 1] += table.block_start[b];
+    table.shapes.resize(listed);
+    table.nearest.resize(listed);
+    tbb::parallel_for(0, bands, [&](int band) {
+        const std::size_t first = static_cast<std::size_t>(band) * band_rows * table.columns;
+        const std::size_t last = std::min<std::size_t>(
+            first + static_cast<std::size_t>(band_rows) * table.columns, blocks);
+        std::vector<std::uint32_t> fill(table.block_start.begin() + first,
+                                        table.block_start.begin() + last);
+        for (const Listing& l : band_listings[static_cast<std::size_t>(band)]) {
+            const std::uint32_t at = fill[l.block - first]++;
+            table.shapes[at] = l.listed;
+            table.nearest[at] = l.nearest;
+        }
+    });
+    return table;
+}
+
+}  // namespace jt
