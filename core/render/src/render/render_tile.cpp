@@ -68,27 +68,46 @@ bool trace_samples(const PreparedFrame& f, const RenderPass& pass, TileBuffer& o
     const PixelRect& tile = out.rect;
     const CameraFrame& camera = f.camera;
     const ViewTable& table = f.view_table();
-    auto trace = [&](double x, double y) {
-        const Vec3 direction = camera_direction(camera, x, y);
+    // Where a block lists no shape and nothing unlisted could be met (no
+    // planes, no triangles), its rays meet nothing: the background, as
+    // trace_ray would find it, without its set-up.
+    const Geometry& geometry = *f.scene->geometry;
+    const bool open_sky = table.built && geometry.planes.empty() && !geometry.triangles;
+    auto trace = [&](double x, double y, const Vec3& direction) {
         if (!table.built) return trace_ray(*f.scene, camera.position, direction, 0.0, rays);
         const ListedShapes seen = shapes_seen(table, x, y);
+        if (open_sky && seen.size() == 0) {
+            ++rays;
+            return f.scene->settings.background;
+        }
         return trace_ray(*f.scene, camera.position, direction, 0.0, rays, &seen);
     };
-    const bool accumulate = f.options.samples > 1;
+    if (f.options.samples == 1) {
+        // A row's directions first, in a loop of their own: their divisions
+        // and square roots then overlap instead of each waiting its ray.
+        std::vector<Vec3> directions(static_cast<std::size_t>(tile.width()));
+        for (int y = tile.y0; y < tile.y1; ++y) {
+            if (cancel.load(std::memory_order_relaxed)) return false;
+            for (int x = tile.x0; x < tile.x1; ++x)
+                directions[static_cast<std::size_t>(x - tile.x0)] =
+                    camera_direction(camera, x + 0.5, y + 0.5);
+            for (int x = tile.x0; x < tile.x1; ++x)
+                put(out, x, y,
+                    trace(x + 0.5, y + 0.5, directions[static_cast<std::size_t>(x - tile.x0)]));
+        }
+        return true;
+    }
     for (int y = tile.y0; y < tile.y1; ++y) {
         if (cancel.load(std::memory_order_relaxed)) return false;
         for (int x = tile.x0; x < tile.x1; ++x) {
-            if (!accumulate) {
-                put(out, x, y, trace(x + 0.5, y + 0.5));
-                continue;
-            }
             // A pixel's samples add up in index order, whatever the threads
             // and tiles do.
             Colour& sum = out.sums[out.index(x, y)];
             if (pass.sample_begin == 0) sum = Colour(0.0);
             for (int k = pass.sample_begin; k < pass.sample_end; ++k) {
-                SampleOffset o = sample_offset(k);
-                sum += clamp01(trace(x + o.x, y + o.y));
+                const SampleOffset o = sample_offset(k);
+                sum += clamp01(
+                    trace(x + o.x, y + o.y, camera_direction(camera, x + o.x, y + o.y)));
             }
             put(out, x, y, sum / static_cast<double>(pass.sample_end));
         }
