@@ -92,6 +92,8 @@ struct RenderJob::State {
     }
     // The full-size image, black outside the region; image_mutex held.
     Image8 full_image() const {
+        // The whole frame: a plain copy, without zeroing megabytes first.
+        if (region == PixelRect{0, 0, options.width, options.height}) return image;
         Image8 full(options.width, options.height);  // not a copy: see Image8's constructor
         const std::size_t row_bytes = static_cast<std::size_t>(region.width()) * 3;
         for (int y = region.y0; y < region.y1; ++y)
