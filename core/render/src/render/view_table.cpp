@@ -165,8 +165,7 @@ Extent extent(const Candidate& c, const CameraFrame& camera, int columns, int ro
 }
 
 struct Listing {
-    std::uint32_t block, listed;
-    double nearest;
+    std::uint32_t block, candidate;  // an index into the sorted candidates
 };
 
 }  // namespace
@@ -247,7 +246,8 @@ ViewTable build_view_table(const Geometry& geometry, const CameraFrame& camera) 
                 for (int column = e.column0; column <= e.column1; ++column) {
                     const std::size_t b = static_cast<std::size_t>(row) * table.columns + column;
                     if (c.nearest > cap[b - base]) continue;
-                    listings.push_back({static_cast<std::uint32_t>(b), c.listed, c.nearest});
+                    listings.push_back(
+                        {static_cast<std::uint32_t>(b), static_cast<std::uint32_t>(i)});
                     if (e.cos_cover <= 1.0 && inside(corner(column, row)) &&
                         inside(corner(column + 1, row)) && inside(corner(column, row + 1)) &&
                         inside(corner(column + 1, row + 1))) {
@@ -278,8 +278,8 @@ ViewTable build_view_table(const Geometry& geometry, const CameraFrame& camera) 
                                         table.block_start.begin() + last);
         for (const Listing& l : band_listings[static_cast<std::size_t>(band)]) {
             const std::uint32_t at = fill[l.block - first]++;
-            table.shapes[at] = l.listed;
-            table.nearest[at] = l.nearest;
+            table.shapes[at] = candidates[l.candidate].listed;
+            table.nearest[at] = candidates[l.candidate].nearest;
         }
     });
     return table;
