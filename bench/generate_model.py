@@ -83,6 +83,14 @@ def write(path, along, around, p, q, tube):
     return faces
 
 
+def write_knot(path, triangles, p=2, q=3, tube=0.45):
+    """A knot of about `triangles` triangles; returns how many it has."""
+    # along = 8 * around keeps the cells about square.
+    around = max(3, round(math.sqrt(triangles / 16.0)))
+    along = max(3, round(triangles / (2.0 * around)))
+    return write(path, along, around, p, q, tube)
+
+
 def main():
     parser = argparse.ArgumentParser(description=__doc__.splitlines()[0])
     parser.add_argument("output")
@@ -91,10 +99,7 @@ def main():
     parser.add_argument("--q", type=int, default=3)
     parser.add_argument("--tube", type=float, default=0.45)
     args = parser.parse_args()
-    # along = 8 * around keeps the cells about square.
-    around = max(3, round(math.sqrt(args.triangles / 16.0)))
-    along = max(3, round(args.triangles / (2.0 * around)))
-    faces = write(args.output, along, around, args.p, args.q, args.tube)
+    faces = write_knot(args.output, args.triangles, args.p, args.q, args.tube)
     print("%s: %d triangles" % (args.output, faces), file=sys.stderr)
 
 

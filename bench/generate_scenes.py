@@ -4,6 +4,9 @@
 Every scene is generated from a fixed seed, so two runs give identical files.
 Large scenes are never committed: they are cheap to regenerate.
 
+Two scenes also write the model file they name beside them (knot_100k.ply,
+knot_1m.ply).
+
 usage: generate_scenes.py OUT_DIR [--showcase PATH] [--skip-million] [--only NAME ...]
 """
 
@@ -12,6 +15,9 @@ import math
 import os
 import random
 import sys
+
+sys.path.insert(0, os.path.dirname(os.path.abspath(__file__)))
+import generate_model  # noqa: E402  (beside this script)
 
 WIDTH, HEIGHT = 1920, 1080
 ASPECT = WIDTH / HEIGHT
@@ -321,6 +327,25 @@ def few(out, size):
     out.write("}\n")
 
 
+def knot_mesh(out, out_dir, triangles, model_name):
+    """A torus knot of `triangles` triangles (bench/generate_model.py, written
+    beside the scene), smooth-shaded, over a floor, one light: meshes raced
+    against POV-Ray's mesh2 (Tachyon reads no model files)."""
+    path = os.path.join(out_dir, model_name)
+    temporary = path + ".tmp"
+    generate_model.write_knot(temporary, triangles)
+    os.replace(temporary, path)
+    settings(out, 1)
+    camera(out, (0.0, 3.5, 9.5), (0.0, 0.0, 0.0), 40)
+    out.write("scene {\n")
+    out.write("    plane { normal: <0, 1, 0>; distance: -1.6; ")
+    out.write(material((0.6, 0.6, 0.6), specular=0.0) + " }\n")
+    out.write(f"    mesh {{ file: \"{model_name}\"; ")
+    out.write(material((0.85, 0.45, 0.2), specular=0.5, specular_k=60, reflection=0.2) + " }\n")
+    light(out, (4.0, 9.0, 6.0), (0.9, 0.9, 0.9))
+    out.write("}\n")
+
+
 def separate_spheres(out, size):
     """spheres of the nested-shells count scattered as random_spheres does."""
     random_spheres(out, SHELL_COUNT, size)
@@ -342,7 +367,8 @@ def main():
     parser = argparse.ArgumentParser(description=__doc__.splitlines()[0])
     parser.add_argument("out_dir")
     parser.add_argument("--showcase", default=os.path.join(os.path.dirname(__file__), "..", "scenes", "showcase.jts"))
-    parser.add_argument("--skip-million", action="store_true", help="leave out spheres_1m")
+    parser.add_argument("--skip-million", action="store_true",
+                        help="leave out spheres_1m and mesh_1m")
     parser.add_argument("--only", nargs="*", help="write only the scenes with these names")
     args = parser.parse_args()
 
@@ -355,6 +381,8 @@ def main():
         "spheres_10k": lambda out: random_spheres(out, 10000),
         "spheres_100k": lambda out: random_spheres(out, 100000),
         "spheres_1m": lambda out: random_spheres(out, 1000000),
+        "mesh_100k": lambda out: knot_mesh(out, args.out_dir, 100000, "knot_100k.ply"),
+        "mesh_1m": lambda out: knot_mesh(out, args.out_dir, 1000000, "knot_1m.ply"),
     }
     for name, write in TACHYON_SCENES.items():
         scenes[name] = lambda out, write=write: write(out, (WIDTH, HEIGHT))
@@ -363,7 +391,7 @@ def main():
     for name, write in scenes.items():
         if args.only and name not in args.only:
             continue
-        if args.skip_million and name == "spheres_1m":
+        if args.skip_million and name in ("spheres_1m", "mesh_1m"):
             continue
         path = os.path.join(args.out_dir, name + ".jts")
         temporary = path + ".tmp"

@@ -85,7 +85,7 @@ def jtracer_rays(output):
 
 # The scenes in the order of the table; the generator writes them all.
 ORDER = ["showcase", "hall_of_mirrors", "forest", "lights16",
-         "spheres_1k", "spheres_10k", "spheres_100k", "spheres_1m"]
+         "spheres_1k", "spheres_10k", "spheres_100k", "spheres_1m", "mesh_100k", "mesh_1m"]
 TACHYON_SCENES = ["sphereflake", "nested_shells", "spheres_5761", "lattice", "tree", "few"]
 ORDER += TACHYON_SCENES + [n + "_1024" for n in TACHYON_SCENES]
 
