@@ -44,10 +44,6 @@ struct BoundingSphere {
     double radius;
 };
 
-double max_abs(const Vec3& v) {
-    return std::max({std::abs(v.x), std::abs(v.y), std::abs(v.z)});
-}
-
 // prepare_scene gives every shape a bounding sphere around its padded box.
 BoundingSphere bounding_sphere(const TransformedShape& s) {
     return {s.bounding_center, std::sqrt(s.bounding_radius_sq)};
@@ -174,11 +170,9 @@ DirectionTable build_direction_table(const Geometry& geometry, const Vec3& posit
     std::vector<double> nearest_of(shapes);  // by sphere index, then shape index
     auto add_shape = [&](const BoundingSphere& b, std::uint32_t candidate, std::size_t slot) {
         const Vec3 offset = b.center - position;
-        const double distance = glm::length(offset);
-        const double radius =
-            b.radius * (1.0 + 1e-6) + 1e-7 * (max_abs(b.center) + max_abs(position) + b.radius);
-        // Shrunk far beyond the rounding of an exact hit's distance.
-        nearest_of[slot] = distance > radius ? (distance - radius) * (1.0 - 1e-9) : 0.0;
+        const PaddedBound padded = padded_bound(b.center, b.radius, position);
+        const double distance = padded.distance, radius = padded.radius;
+        nearest_of[slot] = padded.nearest;
         const bool everywhere = !(distance > radius) || !std::isfinite(distance) ||
                                 radius / distance > std::sin(max_cone_angle);
         if (everywhere) {

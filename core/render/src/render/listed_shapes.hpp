@@ -3,6 +3,12 @@
 // ray's origin or end (view_table.hpp, direction_table.hpp): testing those,
 // exactly as the BVH callbacks would, gives the same answer bit for bit.
 
+#include "jtracer/scene.hpp"
+
+#include <glm/geometric.hpp>
+
+#include <algorithm>
+#include <cmath>
 #include <cstddef>
 #include <cstdint>
 #include <span>
@@ -24,5 +30,25 @@ struct ListedShapes {
     bool covered = false;
     std::size_t size() const { return shapes.size(); }
 };
+
+// A shape's bounding sphere as a table around `point` lists it: the radius
+// padded, and the distances shrunk, far beyond the rounding of the double
+// computations that decide a hit, so that the lists stay conservative.
+struct PaddedBound {
+    double radius;    // padded
+    double distance;  // from `point` to the centre
+    double nearest;   // no point of the shape is nearer `point`
+};
+
+inline PaddedBound padded_bound(const Vec3& center, double radius, const Vec3& point) {
+    auto max_abs = [](const Vec3& v) {
+        return std::max({std::abs(v.x), std::abs(v.y), std::abs(v.z)});
+    };
+    PaddedBound b;
+    b.radius = radius * (1.0 + 1e-6) + 1e-7 * (max_abs(center) + max_abs(point) + radius);
+    b.distance = glm::length(center - point);
+    b.nearest = b.distance > b.radius ? (b.distance - b.radius) * (1.0 - 1e-9) : 0.0;
+    return b;
+}
 
 }  // namespace jt

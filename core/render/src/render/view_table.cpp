@@ -35,10 +35,6 @@ constexpr double pixel_slack = 1e-2;
 constexpr double half_pi = 0.5 * std::numbers::pi;
 constexpr double unbounded = std::numeric_limits<double>::infinity();
 
-double max_abs(const Vec3& v) {
-    return std::max({std::abs(v.x), std::abs(v.y), std::abs(v.z)});
-}
-
 bool finite(const Vec3& v) {
     return std::isfinite(v.x) && std::isfinite(v.y) && std::isfinite(v.z);
 }
@@ -60,9 +56,10 @@ Candidate candidate(std::uint32_t listed, const Vec3& center, double radius, dou
     Candidate c;
     c.listed = listed;
     c.center = center;
-    c.radius = radius * (1.0 + 1e-6) + 1e-7 * (max_abs(center) + max_abs(eye) + radius);
-    const double distance = glm::length(center - eye);
-    c.nearest = distance > c.radius ? (distance - c.radius) * (1.0 - 1e-9) : 0.0;
+    const PaddedBound padded = padded_bound(center, radius, eye);
+    const double distance = padded.distance;
+    c.radius = padded.radius;
+    c.nearest = padded.nearest;
     c.inner_radius = std::max(true_radius * (1.0 - 1e-7) - 1e-9 * distance, 0.0);
     c.reach = (distance + c.radius) * (1.0 + 1e-6);
     c.box = box;
