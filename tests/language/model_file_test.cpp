@@ -164,5 +164,17 @@ TEST(ModelFile, AbsurdCountsAndHugeFilesAreRefusedBeforeReading) {
     EXPECT_NE(huge.find("too large"), std::string::npos) << huge;
 }
 
+TEST(ModelFile, TheBoxHoldsTheCornersTheTrianglesName) {
+    Model model;
+    model.positions = {{0, 0, 0}, {2, 1, 0}, {0, 3, -1}, {100, 100, 100}};  // the last unused
+    model.triangles = {{0, 1, 2}};
+    const ModelBox box = model_box(model);
+    ASSERT_FALSE(box.empty());
+    EXPECT_EQ(box.lower, glm::dvec3(0, 0, -1));
+    EXPECT_EQ(box.upper, glm::dvec3(2, 3, 0));
+    model.triangles.clear();
+    EXPECT_TRUE(model_box(model).empty());
+}
+
 }  // namespace
 }  // namespace jt::test

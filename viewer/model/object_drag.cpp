@@ -12,7 +12,6 @@
 #include <glm/geometric.hpp>
 
 #include <cmath>
-#include <limits>
 
 namespace jt::view {
 
@@ -33,14 +32,9 @@ Vec3 local_centre(const Scene&, const Triangle& t) {
 }
 Vec3 local_centre(const Scene& scene, const Mesh& mesh) {
     const auto model = shared_model(asset_path(scene, mesh.file), scene.asset_folder);
-    if (!model || (*model)->positions.empty()) return Vec3{0.0};
-    Vec3 low(std::numeric_limits<double>::infinity());
-    Vec3 high(-std::numeric_limits<double>::infinity());
-    for (const auto& p : (*model)->positions) {
-        low = glm::min(low, Vec3(p));
-        high = glm::max(high, Vec3(p));
-    }
-    return (low + high) * 0.5;
+    if (!model) return Vec3{0.0};
+    const ModelBox box = model_box(**model);
+    return box.empty() ? Vec3{0.0} : (box.lower + box.upper) * 0.5;
 }
 
 std::string target_name(const Scene& scene, const Selection& target) {

@@ -51,4 +51,12 @@ inline constexpr std::size_t kMaxModelTriangles = std::size_t{1} << 26;
 // std::bad_alloc, as everywhere (error.hpp).
 Expected<Model> read_model(const std::filesystem::path& file, const std::filesystem::path& folder);
 
+// The box around the corners the model's triangles name, in its own space;
+// empty (lower > upper) when it has no triangle.
+struct ModelBox {
+    glm::dvec3 lower, upper;
+    bool empty() const { return lower.x > upper.x; }
+};
+ModelBox model_box(const Model& model);
+
 }  // namespace jt

@@ -10,7 +10,6 @@
 
 #include <algorithm>
 #include <cmath>
-#include <limits>
 
 namespace jt {
 
@@ -134,17 +133,12 @@ Primitive new_primitive(ShapeKind kind, const Scene& scene) {
 
 Primitive new_mesh(const Scene& scene, const std::string& file, const Model& model) {
     const auto [at, half] = placement(active_view(scene));
-    Vec3 low(std::numeric_limits<double>::infinity());
-    Vec3 high(-std::numeric_limits<double>::infinity());
-    for (const auto& triangle : model.triangles)
-        for (const std::uint32_t corner : triangle) {
-            low = glm::min(low, Vec3(model.positions[corner]));
-            high = glm::max(high, Vec3(model.positions[corner]));
-        }
+    const ModelBox box = model_box(model);
     Primitive p;
     p.material = new_material();
     p.shape = Mesh{file, std::string(kSmoothShading)};
-    if (model.triangles.empty()) return p;
+    if (box.empty()) return p;
+    const Vec3 low = box.lower, high = box.upper;
     const Vec3 extent = high - low;
     const double largest = std::max({extent.x, extent.y, extent.z});
     const double diameter = 2.0 * half / 5.0;
