@@ -210,6 +210,103 @@ TEST_F(HostileModels, GltfOneIsRefusedByItsVersion) {
     }
 }
 
+// Found by fuzz/model_fuzzer: Assimp 5.2 reads a glTF 2.0 accessor's elements
+// without checking them against its buffer view; an animation's output moved
+// 48 bytes on had it read past the end of its buffer.
+TEST_F(HostileModels, GltfAccessorPastItsBufferViewIsRefused) {
+    std::ifstream in(fs::path(JT_SOURCE_DIR) /
+                         "tests/hardening/regressions/model/gltf-animation-reading-past-its-view",
+                     std::ios::binary);
+    in.get();  // the fuzzer's importer byte
+    const std::string model((std::istreambuf_iterator<char>(in)), std::istreambuf_iterator<char>());
+    ASSERT_GT(model.size(), 1000u);
+    write_scene_naming("skin.gltf", model);
+    expect_refused_everywhere(
+        "skin.gltf",
+        "its glTF accessor 6 would read 12 elements of 16 bytes from byte 96 of "
+        "buffer view 4, which holds 240");
+}
+
+// A triangle's positions in a 36-byte buffer, with the buffer view, the
+// accessor and the buffer's own fields given; JSON for a .gltf file.
+std::string gltf_triangle(const std::string& buffer, const std::string& view,
+                          const std::string& accessor) {
+    return R"({"asset": {"version": "2.0"}, "buffers": [{)" + buffer +
+           R"(}], "bufferViews": [{"buffer": 0, )" + view +
+           R"(}], "accessors": [{"bufferView": 0, "componentType": 5126, "type": "VEC3", )" +
+           accessor + R"(}], "meshes": [{"primitives": [{"attributes": {"POSITION": 0}}]}],
+"nodes": [{"mesh": 0}], "scenes": [{"nodes": [0]}], "scene": 0})";
+}
+
+const std::string kZeros36 =
+    R"("uri": "data:application/octet-stream;base64,)" + std::string(48, 'A') + R"(", )";
+
+// The same in a .glb: a header, the JSON chunk and a binary chunk of 36 bytes.
+std::string glb(const std::string& json) {
+    std::string padded = json;
+    padded.resize((padded.size() + 3) / 4 * 4, ' ');
+    const auto u32 = [](std::size_t v) {
+        std::string bytes(4, '\0');
+        for (int i = 0; i < 4; ++i)
+            bytes[static_cast<std::size_t>(i)] = static_cast<char>(v >> (8 * i));
+        return bytes;
+    };
+    const std::size_t total = 12 + 8 + padded.size() + 8 + 36;
+    return "glTF" + u32(2) + u32(total) + u32(padded.size()) + "JSON" + padded + u32(36) +
+           std::string("BIN\0", 4) + std::string(36, '\0');
+}
+
+// Every range a glTF file claims must lie inside what holds it: the view in
+// its buffer, the accessor's elements (and a sparse accessor's indices) in
+// their view, a .glb's buffer in its binary chunk. A file that claims more is
+// refused before Assimp reads it, saying which part and by how much.
+TEST_F(HostileModels, GltfRangesPastWhatHoldsThemAreRefused) {
+    const struct {
+        std::string name, model, problem;
+    } cases[] = {
+        {"view.gltf",
+         gltf_triangle(kZeros36 + R"("byteLength": 36)", R"("byteOffset": 8, "byteLength": 36)",
+                       R"("count": 3)"),
+         "its glTF buffer view 0 takes bytes 8 to 44 of buffer 0, which holds 36"},
+        {"count.gltf",
+         gltf_triangle(kZeros36 + R"("byteLength": 36)", R"("byteLength": 36)", R"("count": 4)"),
+         "its glTF accessor 0 would read 4 elements of 12 bytes from byte 0 of buffer view 0, "
+         "which holds 36"},
+        {"huge.gltf",
+         gltf_triangle(kZeros36 + R"("byteLength": 36)", R"("byteLength": 36)",
+                       R"("count": 18446744073709551615)"),
+         "its glTF accessor 0 would read 18446744073709551615 elements of 12 bytes from byte 0 of "
+         "buffer view 0, which holds 36"},
+        {"stride.gltf",
+         gltf_triangle(kZeros36 + R"("byteLength": 36)", R"("byteLength": 36, "byteStride": 16)",
+                       R"("count": 3)"),
+         "its glTF accessor 0 would read 3 elements of 12 bytes from byte 0 of buffer view 0, "
+         "which holds 36"},
+        {"sparse.gltf",
+         gltf_triangle(kZeros36 + R"("byteLength": 36)", R"("byteLength": 36)",
+                       R"("count": 3, "sparse": {"count": 2, "indices": {"bufferView": 0, )"
+                       R"("byteOffset": 32, "componentType": 5125}, "values": {"bufferView": 0}})"),
+         "its glTF accessor 0's sparse indices would read 2 elements of 4 bytes from byte 32 of "
+         "buffer view 0, which holds 36"},
+        {"chunk.glb",
+         glb(gltf_triangle(R"("byteLength": 100)", R"("byteLength": 36)", R"("count": 3)")),
+         "its glTF buffer 0 claims 100 bytes, more than the binary chunk's 36"},
+    };
+    for (const auto& c : cases) {
+        SCOPED_TRACE(c.name);
+        write_scene_naming(c.name, c.model);
+        expect_refused_everywhere(c.name, c.problem);
+    }
+    // The same files with every range inside load.
+    write_scene_naming("fits.gltf", gltf_triangle(kZeros36 + R"("byteLength": 36)",
+                                                  R"("byteLength": 36)", R"("count": 3)"));
+    EXPECT_EQ(run({"scene/hostile.jts", "--check"}).code, 0);
+    write_scene_naming("fits.glb", glb(gltf_triangle(R"("byteLength": 36)", R"("byteLength": 36)",
+                                                     R"("count": 3)")));
+    const ProgramRun r = run({"scene/hostile.jts", "--check"});
+    EXPECT_EQ(r.code, 0) << r.err;
+}
+
 // Assimp opens an absolute buffer path below the model's folder ("scene//etc/passwd"),
 // which the confinement allows and which does not exist; a path that leaves
 // the folder (..) is the confinement's to refuse.

@@ -13,6 +13,7 @@
 #include "viewer_fixture.hpp"
 
 #include <gtest/gtest.h>
+#include <imgui.h>
 #include <glm/geometric.hpp>
 
 #include <chrono>
@@ -148,6 +149,21 @@ TEST_F(ViewerObjectDrag, ShiftKeepsTheMoveOnOneAxis) {
     EXPECT_NEAR(ops[0].vector.x, want.x, std::abs(want.x) * 0.01);
     EXPECT_LT(ops[0].vector.x, 0.0);
     EXPECT_EQ(ops[0].vector.y, 0.0) << "Shift: x alone, no drift in y";
+    EXPECT_EQ(ops[0].vector.z, 0.0);
+}
+
+// A slow frame takes in the button and the keys let go together: the move
+// ends as it was shown, on one axis.
+TEST_F(ViewerObjectDrag, ShiftLetGoWithTheButtonKeepsTheAxisShown) {
+    const WindowPoint at = window_point(sphere_pixel);
+    viewer.press_mouse(state, 0, at.x, at.y, kAlt | kShift);
+    for (int i = 1; i <= 4; ++i) viewer.move_mouse(state, at.x - 17.5f * i, at.y + 5.0f * i);
+    ImGui::GetIO().KeyShift = ImGui::GetIO().KeyAlt = false;
+    viewer.release_mouse(state, 0);
+    const auto& ops = state.doc.scene.primitives[1].transforms;
+    ASSERT_EQ(ops.size(), 1u) << state.message;
+    EXPECT_LT(ops[0].vector.x, 0.0);
+    EXPECT_EQ(ops[0].vector.y, 0.0) << "the axis shown while dragging";
     EXPECT_EQ(ops[0].vector.z, 0.0);
 }
 

@@ -165,8 +165,7 @@ void end_drag(AppState& state, const ImagePlace& image) {
         if (const auto region = dragged_region(drag, image, drag.last_x, drag.last_y))
             set_render_region(state, *region);
     } else if (drag.mode == ImageDrag::Mode::move_object && drag.moved) {
-        finish_object_drag(state, image_point(image, drag.last_x, drag.last_y),
-                           ImGui::GetIO().KeyShift);
+        finish_object_drag(state, image_point(image, drag.last_x, drag.last_y), drag.one_axis);
     } else if (!drag.moved && drag.button == ImGuiMouseButton_Left &&
                (drag.mode == ImageDrag::Mode::orbit || drag.mode == ImageDrag::Mode::move_object)) {
         click_image(state, image, drag.press_x, drag.press_y);
@@ -229,9 +228,10 @@ void handle_image_mouse(AppState& state, const ImagePlace& image) {
         drag.last_x = io.MousePos.x;
         drag.last_y = io.MousePos.y;
         // Every frame, moved or not: a position held back by the write interval is written.
-        if (drag.mode == ImageDrag::Mode::move_object)
-            drag_object_to(state, image_point(image, drag.last_x, drag.last_y), io.KeyShift);
-        else if (dx != 0.0f || dy != 0.0f)
+        if (drag.mode == ImageDrag::Mode::move_object) {
+            drag.one_axis = io.KeyShift;
+            drag_object_to(state, image_point(image, drag.last_x, drag.last_y), drag.one_axis);
+        } else if (dx != 0.0f || dy != 0.0f)
             follow_drag(state, image, dx, dy);
     } else if (io.MouseWheel != 0.0f && over && usable) {
         if (io.KeyCtrl) {

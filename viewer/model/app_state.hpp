@@ -83,6 +83,9 @@ struct ImageDrag {
     float last_x = 0, last_y = 0;
     float press_x = 0, press_y = 0;
     bool moved = false;  // beyond a click's slack: the camera follows
+    // Shift as last seen with the button down: a slow frame can take in the
+    // button and Shift let go together, and the move keeps the axis it showed.
+    bool one_axis = false;
 };
 
 // An object or light being moved by a drag (object_drag.hpp): what moves,
