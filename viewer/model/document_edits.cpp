@@ -70,11 +70,28 @@ bool edit_text_structure(AppState& state,
     return true;
 }
 
+namespace {
+
+// What was added last (it becomes the scene's last primitive or light) is
+// selected, to be moved or changed next.
+void select_last(AppState& state, Selection::Kind kind) {
+    const std::size_t count = kind == Selection::Kind::light ? state.doc.scene.lights.size()
+                                                             : state.doc.scene.primitives.size();
+    if (count == 0) return;
+    state.selection = {kind, static_cast<int>(count) - 1};
+    state.reveal_selection = true;
+}
+
+}  // namespace
+
 bool add_object(AppState& state, ShapeKind kind) {
     const Primitive added = new_primitive(kind, viewed_scene(state));
-    return edit_text_structure(
-        state, [&](const SceneText& s) { return add_primitive(s, added); },
-        "Added a " + std::string(keyword_of(kind)));
+    if (!edit_text_structure(
+            state, [&](const SceneText& s) { return add_primitive(s, added); },
+            "Added a " + std::string(keyword_of(kind))))
+        return false;
+    select_last(state, Selection::Kind::primitive);
+    return true;
 }
 
 namespace {
@@ -109,15 +126,22 @@ bool add_mesh(AppState& state, const std::string& file) {
         return false;
     }
     const Primitive added = new_mesh(viewed_scene(state), name, **model);
-    return edit_text_structure(
-        state, [&](const SceneText& s) { return add_primitive(s, added); },
-        "Added a mesh of " + name);
+    if (!edit_text_structure(
+            state, [&](const SceneText& s) { return add_primitive(s, added); },
+            "Added a mesh of " + name))
+        return false;
+    select_last(state, Selection::Kind::primitive);
+    return true;
 }
 
 bool add_light(AppState& state) {
     const PointLight added = new_light(viewed_scene(state));
-    return edit_text_structure(
-        state, [&](const SceneText& s) { return jt::add_light(s, added); }, "Added a point light");
+    if (!edit_text_structure(
+            state, [&](const SceneText& s) { return jt::add_light(s, added); },
+            "Added a point light"))
+        return false;
+    select_last(state, Selection::Kind::light);
+    return true;
 }
 
 bool duplicate_block(AppState& state, BlockRef block) {

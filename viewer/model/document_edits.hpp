@@ -33,6 +33,7 @@ bool edit_text_structure(AppState& state,
 Expected<void> rewrite_text(AppState& state,
                             const std::function<Expected<std::string>(const SceneText&)>& edit);
 
+// Each add selects what it added (to be moved or changed next).
 bool add_object(AppState& state, ShapeKind kind);  // in front of the view's camera
 // A mesh of the model `file` (relative to the scene's folder, as a mesh's
 // `file` is; an absolute path inside that folder is written relative to it)

@@ -87,6 +87,8 @@ TEST(DocumentEdits, AddDuplicateDeleteThenSaveGivesTheExpectedSceneAndKeepsOther
     Scene view;
     view.cameras.push_back(expected.cameras[0]);  // the view shows "front"
     expected.primitives.push_back(new_primitive(ShapeKind::sphere, view));
+    const int last = static_cast<int>(expected.primitives.size()) - 1;
+    EXPECT_EQ(state.selection, (Selection{Selection::Kind::primitive, last})) << "the new sphere";
     ASSERT_TRUE(duplicate_block(state, {BlockKind::primitive, 1})) << state.message;
     expected.primitives.insert(expected.primitives.begin() + 2, expected.primitives[1]);
     EXPECT_EQ(state.selection, (Selection{Selection::Kind::primitive, 2})) << "the copy";
@@ -129,7 +131,10 @@ TEST(DocumentEdits, AddTriangleAndMeshThenSaveGivesTheExpectedSceneAndKeepsOther
     EXPECT_FALSE(add_mesh(state, "models/none.obj"));
     EXPECT_NE(state.message.find("none.obj"), std::string::npos) << state.message;
     // An absolute path inside the scene's folder is written relative to it.
+    const int triangle = static_cast<int>(expected.primitives.size()) - 1;
+    EXPECT_EQ(state.selection, (Selection{Selection::Kind::primitive, triangle})) << "the triangle";
     ASSERT_TRUE(add_mesh(state, model_file.string())) << state.message;
+    EXPECT_EQ(state.selection, (Selection{Selection::Kind::primitive, triangle + 1})) << "the mesh";
     const Expected<Model> quad = read_model(model_file, path.parent_path());
     ASSERT_TRUE(quad);
     expected.primitives.push_back(new_mesh(view, "models/quad.obj", *quad));
@@ -204,6 +209,9 @@ TEST(DocumentEdits, OneUndoHistoryAcrossPanelStructureAndTextEdits) {
     const std::string t1 = document_text(state.doc);
     ASSERT_NE(t1, t0);
     ASSERT_TRUE(add_light(state));
+    EXPECT_EQ(state.selection, (Selection{Selection::Kind::light,
+                                          static_cast<int>(state.doc.scene.lights.size()) - 1}))
+        << "the new light";
     const std::string t2 = document_text(state.doc);
     std::string typed = t2;
     typed.replace(typed.find("fov: 40;"), 8, "fov: 30;");
