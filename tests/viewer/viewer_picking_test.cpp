@@ -200,5 +200,18 @@ TEST_F(ViewerPicking, TheObjectsListDrawsOnlyTheRowsInViewOfAHundredThousand) {
         << "the filter lists only what matches";
 }
 
+// A light added from its panel opens there (its fields shown), as a picked one does.
+TEST_F(ViewerPicking, AddPointLightOpensTheNewLightInItsPanel) {
+    ASSERT_TRUE(viewer.click(state, "Render settings"));
+    ASSERT_TRUE(viewer.click(state, "Camera"));
+    ASSERT_TRUE(viewer.click(state, "Lights"));
+    viewer.frame(state);
+    EXPECT_EQ(find_item(viewer.ui_items(), "intensity"), nullptr) << "no light is open yet";
+    ASSERT_TRUE(viewer.click(state, "Add point light"));
+    for (int i = 0; i < 2; ++i) viewer.frame(state);
+    EXPECT_EQ(state.selection.kind, Kind::light);
+    EXPECT_NE(find_item(viewer.ui_items(), "intensity"), nullptr) << "the new light's fields";
+}
+
 }  // namespace
 }  // namespace jt::view

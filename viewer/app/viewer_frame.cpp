@@ -519,6 +519,9 @@ void viewer_frame(AppState& state, FrameState& frame, const FrameInfo& info) {
     // Keys zoom about the image as the last frame placed it.
     handle_shortcuts(state, frame, place(state, frame, frame.image_area, info.framebuffer_scale));
 
+    // A reveal asked for by now is shown by the panels below; one a panel's
+    // own button asks for (they act after the panel is drawn) is the next frame's.
+    const bool revealing = state.reveal_selection;
     ScreenRect area{0, 0, w, h};
     if (state.show_ui) {
         const float status_h = std::min(status_height(), h);
@@ -536,7 +539,7 @@ void viewer_frame(AppState& state, FrameState& frame, const FrameInfo& info) {
         // Once the panel edge is let go: a drag writes the file once, not every frame.
         if (!ImGui::IsMouseDown(ImGuiMouseButton_Left)) remember_settings(state);
     }
-    state.reveal_selection = false;  // the panels have shown it
+    if (revealing) state.reveal_selection = false;  // the panels have shown it
     unsaved_prompt(state);
     track_edits(state, before, generation, ImGui::IsAnyItemActive());
     check_edits(state);
