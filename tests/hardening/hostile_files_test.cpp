@@ -307,6 +307,34 @@ TEST_F(HostileModels, GltfRangesPastWhatHoldsThemAreRefused) {
     EXPECT_EQ(r.code, 0) << r.err;
 }
 
+// Found by fuzz/model_fuzzer: Assimp 5.2 follows a skin's inverseBindMatrices
+// without checking there is one (glTF lets a skin leave them out), and the
+// program died; its JSON reader takes text that is not UTF-8, which the checks
+// above must read too (the fuzzer's input: a key of simple_skin with bytes
+// inserted, which hid its inverseBindMatrices).
+TEST_F(HostileModels, GltfSkinWithoutInverseBindMatricesAndJsonThatDoesNotParseAreRefused) {
+    std::string skinned =
+        gltf_triangle(kZeros36 + R"("byteLength": 36)", R"("byteLength": 36)", R"("count": 3)");
+    skinned.replace(skinned.find(R"("nodes": [{"mesh": 0}])"), 22,
+                    R"("nodes": [{"mesh": 0, "skin": 0}], "skins": [{"joints": [0]}])");
+    write_scene_naming("skin.gltf", skinned);
+    expect_refused_everywhere("skin.gltf",
+                              "its glTF skin 0 has no inverseBindMatrices (glTF allows that, but "
+                              "the model reader, Assimp 5.2, fails on it)");
+
+    std::ifstream in(
+        fs::path(JT_SOURCE_DIR) / "tests/hardening/regressions/model/gltf-skin-key-not-utf8",
+        std::ios::binary);
+    in.get();  // the fuzzer's importer byte
+    const std::string model((std::istreambuf_iterator<char>(in)), std::istreambuf_iterator<char>());
+    ASSERT_GT(model.size(), 1000u);
+    write_scene_naming("bytes.gltf", model);
+    expect_refused_everywhere(
+        "bytes.gltf",
+        "its glTF JSON does not parse: line 29, column 17: syntax error while "
+        "parsing object key - invalid string: ill-formed UTF-8 byte");
+}
+
 // Assimp opens an absolute buffer path below the model's folder ("scene//etc/passwd"),
 // which the confinement allows and which does not exist; a path that leaves
 // the folder (..) is the confinement's to refuse.

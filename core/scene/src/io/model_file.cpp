@@ -2,7 +2,7 @@
 
 #include "io/confined_io_system.hpp"
 #include "io/file_bytes.hpp"
-#include "io/gltf_bounds.hpp"
+#include "io/gltf_rules.hpp"
 
 #include <assimp/BaseImporter.h>
 #include <assimp/importerdesc.h>
@@ -261,7 +261,7 @@ Expected<Model> read_model(const std::filesystem::path& file, const std::filesys
     if (const std::string ext = lower_extension(file); ext == ".gltf" || ext == ".glb") {
         const Expected<std::vector<std::uint8_t>> bytes = read_file_bytes(file);
         if (!bytes) return bytes.error();
-        if (std::string problem = gltf_bounds_problem(*bytes); !problem.empty())
+        if (std::string problem = gltf_problem(*bytes); !problem.empty())
             return Error{file_message(file, problem)};
     }
     try {

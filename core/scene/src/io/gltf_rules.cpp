@@ -1,4 +1,4 @@
-#include "io/gltf_bounds.hpp"
+#include "io/gltf_rules.hpp"
 
 #include <nlohmann/json.hpp>
 
@@ -187,12 +187,40 @@ std::string accessor_problem(const json& accessor, std::size_t index,
                         whole(values, "byteOffset", 0), *sparse_count, size, false);
 }
 
+// nlohmann's own words for a parse error, without its exception's prefix or
+// the bytes it last read (which need not be printable).
+std::string parse_error_message(const json::parse_error& error) {
+    std::string message = error.what();
+    constexpr std::string_view kPrefix = "parse error at ";
+    if (const std::size_t at = message.find(kPrefix); at != std::string::npos)
+        message.erase(0, at + kPrefix.size());
+    if (const std::size_t at = message.find("; last read:"); at != std::string::npos)
+        message.erase(at);
+    return message;
+}
+
+std::string skins_problem(const json& root) {
+    const auto it = root.find("skins");
+    if (it == root.end() || !it->is_array()) return "";
+    for (std::size_t i = 0; i < it->size(); ++i)
+        if (!(*it)[i].is_object() || !(*it)[i].contains("inverseBindMatrices"))
+            return "its glTF skin " + std::to_string(i) +
+                   " has no inverseBindMatrices (glTF allows that, but the model reader, Assimp "
+                   "5.2, fails on it)";
+    return "";
+}
+
 }  // namespace
 
-std::string gltf_bounds_problem(std::span<const std::uint8_t> bytes) {
+std::string gltf_problem(std::span<const std::uint8_t> bytes) {
     const std::optional<GltfText> text = gltf_text(bytes);
     if (!text) return "";
-    const json root = json::parse(text->json, nullptr, /*allow_exceptions=*/false);
+    json root;
+    try {
+        root = json::parse(text->json);
+    } catch (const json::parse_error& error) {
+        return "its glTF JSON does not parse: " + parse_error_message(error);
+    }
     if (!root.is_object()) return "";
     const auto version = root.find("asset");
     if (version == root.end() || !version->is_object() ||
@@ -205,7 +233,7 @@ std::string gltf_bounds_problem(std::span<const std::uint8_t> bytes) {
         for (std::size_t i = 0; i < it->size(); ++i)
             if (std::string problem = accessor_problem((*it)[i], i, views); !problem.empty())
                 return problem;
-    return "";
+    return skins_problem(root);
 }
 
 }  // namespace jt

@@ -1,0 +1,26 @@
+#pragma once
+// Cases Assimp 5.2 (Debian 12's libassimp5) mishandles, found by
+// fuzz/model_fuzzer, checked here from the file's own JSON before Assimp reads
+// it, and refused with what is wrong:
+// - it reads an accessor's elements without checking that they lie inside its
+//   buffer view: an animation accessor that claimed more bytes than its view
+//   held had it read past the end of its buffer (a heap overflow). Every
+//   accessor, sparse part, buffer view and .glb buffer is checked against what
+//   holds it;
+// - it follows a skin's inverseBindMatrices without checking that there is one
+//   (glTF lets a skin leave them out): a null pointer, the program dies;
+// - its JSON reader takes text that is not JSON (bytes that are not UTF-8, for
+//   one), so that the checks above would not see what it reads: a .gltf's text,
+//   or a .glb's JSON chunk, must parse as JSON.
+
+#include <cstdint>
+#include <span>
+#include <string>
+
+namespace jt {
+
+// "" when `bytes` are not a glTF 2.0 file (JSON or binary .glb) or break none
+// of the rules above; else which rule, and where.
+std::string gltf_problem(std::span<const std::uint8_t> bytes);
+
+}  // namespace jt
