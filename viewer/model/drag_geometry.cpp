@@ -14,16 +14,12 @@ namespace {
 // scale of ten pixels makes it the power of ten at or below a tenth of one.
 constexpr double kPixelsPerScale = 10.0;
 
-bool finite(const Vec3& v) {
-    return std::isfinite(v.x) && std::isfinite(v.y) && std::isfinite(v.z);
-}
-
 }  // namespace
 
 std::optional<DragPlane> plane_facing_camera(const PreparedFrame& frame, const Vec3& point) {
     const PixelRect image = frame_rect(frame);
     const std::optional<CameraRay> centre = camera_ray(frame, {image.x1 * 0.5, image.y1 * 0.5});
-    if (!centre || !finite(point)) return std::nullopt;
+    if (!centre || !all_finite(point)) return std::nullopt;
     return DragPlane{point, centre->direction};
 }
 
@@ -32,7 +28,7 @@ std::optional<Vec3> meet_plane(const DragPlane& plane, const CameraRay& ray) {
     const double t = glm::dot(plane.point - ray.origin, plane.normal) / facing;
     if (!(t > 0.0) || !std::isfinite(t)) return std::nullopt;
     const Vec3 hit = ray.origin + ray.direction * t;
-    if (!finite(hit)) return std::nullopt;
+    if (!all_finite(hit)) return std::nullopt;
     return hit;
 }
 

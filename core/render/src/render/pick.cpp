@@ -10,14 +10,6 @@
 
 namespace jt {
 
-namespace {
-
-bool finite(const Vec3& v) {
-    return std::isfinite(v.x) && std::isfinite(v.y) && std::isfinite(v.z);
-}
-
-}  // namespace
-
 PixelRect frame_rect(const PreparedFrame& frame) {
     return {0, 0, frame.options.width, frame.options.height};
 }
@@ -26,7 +18,7 @@ std::optional<CameraRay> camera_ray(const PreparedFrame& frame, const ImagePoint
     const CameraFrame& camera = frame.camera;
     const Vec3 d = camera_direction(camera, at.x, at.y);
     // A camera that cannot form a frame sees nothing (render_tile: background).
-    if (!finite(camera.position) || !finite(d)) return {};
+    if (!all_finite(camera.position) || !all_finite(d)) return {};
     return CameraRay{camera.position, d};
 }
 
@@ -43,7 +35,7 @@ std::optional<ImagePoint> project_to_image(const PreparedFrame& frame, const Vec
     const CameraFrame& c = frame.camera;
     const Vec3 v = point - c.position;
     const double depth = glm::dot(v, c.forward);
-    if (!(depth > 0.0) || !finite(v)) return {};
+    if (!(depth > 0.0) || !all_finite(v)) return {};
     // camera_direction backwards: the offsets along right and up at unit depth.
     const double sx = glm::dot(v, c.right) / depth;
     const double sy = glm::dot(v, c.up) / depth;

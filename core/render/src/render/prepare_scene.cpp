@@ -19,10 +19,6 @@ Geometry::~Geometry() {
 
 namespace {
 
-bool finite(const Vec3& v) {
-    return std::isfinite(v.x) && std::isfinite(v.y) && std::isfinite(v.z);
-}
-
 // Past this many bounded primitives, a faster Morton build pays off more than a
 // better tree: the render of a huge scene is short next to its build.
 constexpr std::size_t fast_build_threshold = 500000;
@@ -33,7 +29,8 @@ constexpr std::size_t brute_force_limit = 8;
 
 void add_sphere(Geometry& g, const Sphere& sphere, const ObjectTransform* transform,
                 std::uint32_t source) {
-    if (!finite(sphere.center) || !(sphere.radius > 0.0) || !std::isfinite(sphere.radius)) return;
+    if (!all_finite(sphere.center) || !(sphere.radius > 0.0) || !std::isfinite(sphere.radius))
+        return;
     if (!transform) {
         g.spheres.push_back({sphere.center, sphere.radius, source});
         return;

@@ -23,10 +23,6 @@ double max_abs(const Vec3& v) {
     return std::max({std::abs(v.x), std::abs(v.y), std::abs(v.z)});
 }
 
-bool finite(const Vec3& v) {
-    return std::isfinite(v.x) && std::isfinite(v.y) && std::isfinite(v.z);
-}
-
 // The fraction of a light that reaches along origin + t * direction for t in
 // (0, t_max): the product of the transmission of every surface crossed, 0 at
 // the first opaque one (docs/language.md §13.2). Each query starts from the
@@ -119,14 +115,14 @@ SurfaceHit first_surface(const Geometry& geometry, const Vec3& o, const Vec3& d,
                          const ListedShapes* candidates) {
     SurfaceHit s;
     Hit hit;
-    if (!finite(o) || !finite(d) || !closest_hit(geometry, o, d, t_lower, hit, candidates))
+    if (!all_finite(o) || !all_finite(d) || !closest_hit(geometry, o, d, t_lower, hit, candidates))
         return s;
     s.point = o + hit.t * d;
     s.geometric = glm::normalize(hit.normal);
     const double along = glm::dot(s.geometric, d);
     s.entering = along < 0.0;
     if (along > 0.0) s.geometric = -s.geometric;  // two-sided: face the ray
-    if (!finite(s.geometric)) {
+    if (!all_finite(s.geometric)) {
         s.kind = SurfaceHit::Kind::no_normal;
         return s;
     }
@@ -134,7 +130,7 @@ SurfaceHit first_surface(const Geometry& geometry, const Vec3& o, const Vec3& d,
     if (hit.shading != Vec3(0.0)) {
         // A smooth normal turns to the side the geometric one faces (§13.5).
         const Vec3 n = glm::normalize(hit.shading);
-        if (finite(n)) s.normal = glm::dot(n, s.geometric) < 0.0 ? -n : n;
+        if (all_finite(n)) s.normal = glm::dot(n, s.geometric) < 0.0 ? -n : n;
     }
     s.kind = SurfaceHit::Kind::surface;
     s.offset = surface_offset(o, s.point, hit.t);

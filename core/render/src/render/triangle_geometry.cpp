@@ -104,10 +104,6 @@ void attach_loose(TriangleGeometry& t) {
     rtcReleaseGeometry(g);
 }
 
-bool finite(const Vec3& v) {
-    return std::isfinite(v.x) && std::isfinite(v.y) && std::isfinite(v.z);
-}
-
 }  // namespace
 
 Expected<std::unique_ptr<TriangleGeometry>> build_triangle_geometry(const Scene& scene) {
@@ -140,7 +136,7 @@ Expected<std::unique_ptr<TriangleGeometry>> build_triangle_geometry(const Scene&
             const auto& c = loose.corners;
             // Zero area in its own space or in the world's: left out (the validator warned).
             if (glm::cross(triangle->b - triangle->a, triangle->c - triangle->a) == Vec3(0.0) ||
-                !finite(c[0]) || !finite(c[1]) || !finite(c[2]) ||
+                !all_finite(c[0]) || !all_finite(c[1]) || !all_finite(c[2]) ||
                 glm::cross(c[1] - c[0], c[2] - c[0]) == Vec3(0.0))
                 continue;
             t->loose.push_back(loose);

@@ -35,10 +35,6 @@ constexpr double pixel_slack = 1e-2;
 constexpr double half_pi = 0.5 * std::numbers::pi;
 constexpr double unbounded = std::numeric_limits<double>::infinity();
 
-bool finite(const Vec3& v) {
-    return std::isfinite(v.x) && std::isfinite(v.y) && std::isfinite(v.z);
-}
-
 // A shape as the table sees it: its padded bounding sphere, and for a world
 // sphere the sphere itself, shrunk, for deciding which blocks it covers.
 struct Candidate {
@@ -171,9 +167,10 @@ struct Listing {
 ViewTable build_view_table(const Geometry& geometry, const CameraFrame& camera) {
     const std::size_t shapes = geometry.spheres.size() + geometry.shapes.size();
     if (shapes == 0 || shapes > max_view_shapes) return {};
-    if (!finite(camera.position) || !finite(camera.forward) || !finite(camera.right) ||
-        !finite(camera.up) || !(camera.tan_half_fov > 0.0) || !std::isfinite(camera.tan_half_fov) ||
-        !(camera.aspect > 0.0) || camera.width < 1 || camera.height < 1)
+    if (!all_finite(camera.position) || !all_finite(camera.forward) || !all_finite(camera.right) ||
+        !all_finite(camera.up) || !(camera.tan_half_fov > 0.0) ||
+        !std::isfinite(camera.tan_half_fov) || !(camera.aspect > 0.0) || camera.width < 1 ||
+        camera.height < 1)
         return {};
 
     std::vector<Candidate> candidates;

@@ -9,6 +9,7 @@
 
 #include <glm/vec3.hpp>
 
+#include <cmath>
 #include <optional>
 #include <string>
 #include <string_view>
@@ -19,6 +20,11 @@ namespace jt {
 
 using Vec3 = glm::dvec3;
 using Colour = glm::dvec3;  // linear RGB, each channel in [0, 1] after parsing
+
+// Whether every component is a number (neither NaN nor infinite).
+inline bool all_finite(const Vec3& v) {
+    return std::isfinite(v.x) && std::isfinite(v.y) && std::isfinite(v.z);
+}
 
 struct RenderSettings {
     int width = 0;

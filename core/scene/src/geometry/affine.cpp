@@ -18,10 +18,6 @@ bool all_finite(const glm::dmat3& m) {
     return true;
 }
 
-bool all_finite(const Vec3& v) {
-    return std::isfinite(v.x) && std::isfinite(v.y) && std::isfinite(v.z);
-}
-
 // Exact zeros for the multiples of 90 degrees, so that a quarter turn maps axes
 // onto axes without a 6e-17 residue.
 void sin_cos_degrees(double degrees, double& s, double& c) {
@@ -119,7 +115,7 @@ Affine inverse_of(const TransformOp& op) {
 }
 
 bool all_finite(const Affine& a) {
-    return all_finite(a.linear) && all_finite(a.translation);
+    return all_finite(a.linear) && jt::all_finite(a.translation);
 }
 
 }  // namespace

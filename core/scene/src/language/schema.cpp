@@ -114,7 +114,7 @@ bool is_finite(double value) {
     return std::isfinite(value);
 }
 bool is_finite(const Vec3& v) {
-    return std::isfinite(v.x) && std::isfinite(v.y) && std::isfinite(v.z);
+    return all_finite(v);
 }
 
 std::string not_finite_message(std::string_view name, std::string_view got) {
