@@ -7,8 +7,6 @@
 #include "cli_sandbox.hpp"
 
 #include <filesystem>
-#include <fstream>
-#include <iterator>
 #include <string>
 
 namespace jt::test {
@@ -140,6 +138,19 @@ class HostileModels : public CliSandbox {
     }
 };
 
+// A model fuzz/model_fuzzer found (tests/hardening/regressions/model): its
+// first byte picked the importer, the rest is the file.
+struct FuzzedModel {
+    char importer = 0;
+    std::string bytes;
+};
+FuzzedModel fuzzed_model(const std::string& input) {
+    const std::string all =
+        read_file(fs::path(JT_SOURCE_DIR) / "tests/hardening/regressions/model" / input);
+    if (all.empty()) return {};
+    return {all[0], all.substr(1)};
+}
+
 // A triangle's three positions in a glTF buffer at `uri`.
 std::string gltf_with_buffer(const std::string& uri) {
     return R"({"asset": {"version": "2.0"}, "buffers": [{"uri": ")" + uri +
@@ -198,14 +209,10 @@ TEST_F(HostileModels, GltfOneIsRefusedByItsVersion) {
     };
     for (const auto& [input, problem] : cases) {
         SCOPED_TRACE(input);
-        std::ifstream in(fs::path(JT_SOURCE_DIR) / "tests/hardening/regressions/model" / input,
-                         std::ios::binary);
-        const char importer = static_cast<char>(in.get());  // the fuzzer's importer byte
-        const std::string model((std::istreambuf_iterator<char>(in)),
-                                std::istreambuf_iterator<char>());
-        ASSERT_GT(model.size(), 1000u);
-        const std::string name = importer == 4 ? "v1.glb" : "v1.gltf";
-        write_scene_naming(name, model);
+        const FuzzedModel model = fuzzed_model(input);
+        ASSERT_GT(model.bytes.size(), 1000u);
+        const std::string name = model.importer == 4 ? "v1.glb" : "v1.gltf";
+        write_scene_naming(name, model.bytes);
         expect_refused_everywhere(name, problem);
     }
 }
@@ -214,13 +221,9 @@ TEST_F(HostileModels, GltfOneIsRefusedByItsVersion) {
 // without checking them against its buffer view; an animation's output moved
 // 48 bytes on had it read past the end of its buffer.
 TEST_F(HostileModels, GltfAccessorPastItsBufferViewIsRefused) {
-    std::ifstream in(fs::path(JT_SOURCE_DIR) /
-                         "tests/hardening/regressions/model/gltf-animation-reading-past-its-view",
-                     std::ios::binary);
-    in.get();  // the fuzzer's importer byte
-    const std::string model((std::istreambuf_iterator<char>(in)), std::istreambuf_iterator<char>());
-    ASSERT_GT(model.size(), 1000u);
-    write_scene_naming("skin.gltf", model);
+    const FuzzedModel model = fuzzed_model("gltf-animation-reading-past-its-view");
+    ASSERT_GT(model.bytes.size(), 1000u);
+    write_scene_naming("skin.gltf", model.bytes);
     expect_refused_everywhere(
         "skin.gltf",
         "its glTF accessor 6 would read 12 elements of 16 bytes from byte 96 of "
@@ -322,13 +325,9 @@ TEST_F(HostileModels, GltfSkinWithoutInverseBindMatricesAndJsonThatDoesNotParseA
                               "its glTF skin 0 has no inverseBindMatrices (glTF allows that, but "
                               "the model reader, Assimp 5.2, fails on it)");
 
-    std::ifstream in(
-        fs::path(JT_SOURCE_DIR) / "tests/hardening/regressions/model/gltf-skin-key-not-utf8",
-        std::ios::binary);
-    in.get();  // the fuzzer's importer byte
-    const std::string model((std::istreambuf_iterator<char>(in)), std::istreambuf_iterator<char>());
-    ASSERT_GT(model.size(), 1000u);
-    write_scene_naming("bytes.gltf", model);
+    const FuzzedModel model = fuzzed_model("gltf-skin-key-not-utf8");
+    ASSERT_GT(model.bytes.size(), 1000u);
+    write_scene_naming("bytes.gltf", model.bytes);
     expect_refused_everywhere(
         "bytes.gltf",
         "its glTF JSON does not parse: line 29, column 17: syntax error while "
