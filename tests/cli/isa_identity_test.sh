@@ -4,7 +4,8 @@
 # the bench generator (thousands of overlapping spheres and cylinders) with
 # Embree's default choice and forced to each ISA this CPU runs
 # (JTRACER_EMBREE_CONFIG=isa=...), and with libjpeg-turbo's SIMD code off
-# (JSIMD_FORCENONE=1), and requires identical bytes. The sums are
+# (JSIMD_FORCENONE=1), and requires identical bytes. It prints the CPU's
+# features, the target Embree's default takes and each level it compared. The sums are
 # kept in SUMS_DIR/BUILD.sums and compared with those of the other builds of
 # the same revision (release, debug, sanitizers) found there.
 # Usage: isa_identity_test.sh CLI SOURCE_DIR SUMS_DIR BUILD
@@ -24,32 +25,58 @@ while IFS= read -r scene; do scenes+=("$scene"); done < <(
     find "$source_dir/scenes" "$work/generated" -name '*.jts' | sort)
 [ ${#scenes[@]} -ge 10 ] || fail "only ${#scenes[@]} scenes found"
 
-# An ISA is tried only when Embree runs it here; the config must take effect.
+# Embree's report of a device: the CPU features it enables (the ISA line under
+# Config) and the code paths it may take, the highest last (Targets).
+probe() {
+    JTRACER_EMBREE_CONFIG="verbose=1${1:+,isa=$1}" "$cli" "${scenes[0]}" -q \
+        -o "$work/probe.bmp" --width 8 --height 8 2>&1
+}
+config_line() { # FIELD REPORT
+    grep -A4 '^  Config' <<<"$2" | grep -m1 "^ *$1 *:" | sed 's/^[^:]*: *//; s/ *(supported)//; s/ *$//'
+}
+highest_target() { # REPORT
+    config_line Targets "$1" | awk '{print $NF}'
+}
+
+default_report=$(probe "") || fail "Embree's default does not start: $default_report"
+default_target=$(highest_target "$default_report")
+default_targets=" $(config_line Targets "$default_report") "
+[ -n "$default_target" ] || fail "no Targets line in Embree's report: $default_report"
+
+# Each level Embree can be forced to, and the highest target it must then
+# take. Embree names its AVX-512 target AVX512 (3.13) or AVX512SKX/AVX512KNL
+# (older), and its ISA line lists AVX512F, AVX512DQ, ...: the targets, not the
+# feature names, say which code runs. A level Embree runs by default on this
+# CPU must also run when forced; only a level above the CPU's is left out.
 levels=(sse2 sse4.2 avx avx2 avx512)
+targets=(SSE2 SSE4.2 AVX AVX2 'AVX512[A-Z]*')
 isas=()
+compared=()
+left_out=()
 for i in "${!levels[@]}"; do
-    isa=${levels[i]}
+    isa=${levels[i]} target=${targets[i]}
     set +e
-    report=$(JTRACER_EMBREE_CONFIG="verbose=1,isa=$isa" "$cli" "${scenes[0]}" -q \
-        -o "$work/probe.bmp" --width 8 --height 8 2>&1)
+    report=$(probe "$isa")
     code=$?
     set -e
     if [ $code -ne 0 ]; then
         grep -q "cannot start Embree with JTRACER_EMBREE_CONFIG='verbose=1,isa=$isa'" <<<"$report" ||
             fail "isa=$isa: unexpected failure: $report"
+        ! grep -qE " ($target) " <<<"$default_targets" ||
+            fail "isa=$isa refused, though Embree's default runs its target here ($default_targets)"
         echo "isa=$isa: not supported by this CPU, left out"
+        left_out+=("$isa")
         continue
     fi
-    chosen=$(grep -A3 '^  Config' <<<"$report" | grep 'ISA' | head -1)
-    want=$(tr a-z A-Z <<<"$isa")
-    grep -qw -- "${want}" <<<"$chosen" || fail "isa=$isa not applied: '$chosen'"
-    if ((i + 1 < ${#levels[@]})); then
-        above=$(tr a-z A-Z <<<"${levels[i + 1]}")
-        ! grep -qw -- "$above" <<<"$chosen" || fail "isa=$isa still allows $above: '$chosen'"
-    fi
+    chosen=$(highest_target "$report")
+    grep -qxE -- "$target" <<<"$chosen" ||
+        fail "isa=$isa not applied: its highest target is '$chosen', not $target (Targets: $(config_line Targets "$report"))"
     isas+=("$isa")
+    compared+=("isa=$isa ($chosen)")
 done
 [ ${#isas[@]} -ge 2 ] || fail "fewer than two ISAs to compare: ${isas[*]}"
+echo "isa identity: this CPU: $(config_line ISA "$default_report")"
+echo "isa identity: Embree's default takes $default_target; compared with ${compared[*]}"
 
 sums=$work/sums
 : >"$sums"
@@ -71,7 +98,7 @@ for scene in "${scenes[@]}"; do
         fail "$name: libjpeg-turbo without SIMD gives other bytes"
     echo "$(md5sum <"$work/default.bmp" | cut -d' ' -f1) $name" >>"$sums"
 done
-echo "isa identity: ${#scenes[@]} scenes byte-identical with isa=${isas[*]} and the default"
+echo "isa identity: ${#scenes[@]} scenes byte-identical with Embree's default ($default_target) and ${compared[*]}${left_out[*]:+; left out (above this CPU): ${left_out[*]}}"
 
 # Across builds of the same revision.
 version=$("$cli" --version)
