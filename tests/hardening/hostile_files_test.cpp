@@ -47,7 +47,8 @@ TEST_F(HostileImageMaps, SizesNoMachineCouldHoldAreRefusedAtTheImageMapString) {
     for (const auto& [picture, claimed] : pictures) {
         SCOPED_TRACE(picture);
         write_scene_naming(picture);
-        const std::string problem = "the image is too large (" + std::string(claimed) + " texels)";
+        const std::string problem = "the image is too large (" + std::string(claimed) +
+                                    " texels; an image map has at most 268435456)";
         expect_refused(run({"hostile.jts", "--check"}), problem);
         expect_refused(run({"hostile.jts", "-o", "out.bmp"}), problem);
     }
@@ -204,8 +205,11 @@ TEST_F(HostileModels, PlyDeclaringAnElementTwiceIsRefused) {
 // malformed files; glTF 1.0 is refused, as the language reads glTF 2.0.
 TEST_F(HostileModels, GltfOneIsRefusedByItsVersion) {
     const std::pair<std::string, std::string> cases[] = {
-        {"glb-failing-an-assimp-assertion", "GLTF: Unsupported binary glTF version"},
-        {"gltf1-reading-past-its-buffer", "GLTF: Unsupported glTF version: 1.0"},
+        {"glb-failing-an-assimp-assertion",
+         "it is binary glTF version 1 (.glb), which is not read: only glTF 2.0 is (convert the "
+         "file to glTF 2.0)"},
+        {"gltf1-reading-past-its-buffer",
+         "it is glTF 1.0, which is not read: only glTF 2.0 is (convert the file to glTF 2.0)"},
     };
     for (const auto& [input, problem] : cases) {
         SCOPED_TRACE(input);

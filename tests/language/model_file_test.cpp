@@ -11,6 +11,8 @@
 
 #include <filesystem>
 #include <string>
+#include <utility>
+#include <vector>
 
 namespace jt::test {
 namespace {
@@ -130,14 +132,28 @@ TEST(ModelFile, MissingAndMalformedFilesAreErrorsNamingTheFile) {
     EXPECT_NE(read_error(dir.path(), dir.path()).find("not a regular file"), std::string::npos);
 }
 
+// A file outside the folder is never opened. An OBJ's material library is
+// not needed (materials in the file are ignored): the model loads and says
+// what it left out, whether the library exists or not.
 TEST(ModelFile, ReferencesOutsideTheSceneFolderAreRefused) {
     ScratchDir dir;
     fs::create_directories(dir.path() / "scene");
     write_file(dir.path() / "secret.mtl", "newmtl x\nKd 1 0 0\n");
-    write_file(dir.path() / "scene/escape.obj",
-               "mtllib ../secret.mtl\nv 0 0 0\nv 1 0 0\nv 0 1 0\nf 1 2 3\n");
-    const std::string obj = read_error(dir.path() / "scene/escape.obj", dir.path() / "scene");
-    EXPECT_NE(obj.find("outside the folder"), std::string::npos) << obj;
+    for (const char* library : {"../secret.mtl", "../none.mtl"}) {
+        SCOPED_TRACE(library);
+        write_file(dir.path() / "scene/escape.obj",
+                   std::string("mtllib ") + library + "\nv 0 0 0\nv 1 0 0\nv 0 1 0\nf 1 2 3\n");
+        const Expected<Model> obj =
+            read_model(dir.path() / "scene/escape.obj", dir.path() / "scene");
+        ASSERT_TRUE(obj.has_value()) << obj.error().message;
+        EXPECT_EQ(obj->triangles.size(), 1u);
+        const std::vector<std::string> warnings = model_warnings(*obj);
+        ASSERT_EQ(warnings.size(), 1u);
+        EXPECT_EQ(warnings[0].rfind("refers to the material library '", 0), 0u) << warnings[0];
+        EXPECT_NE(warnings[0].find(library), std::string::npos) << warnings[0];
+        EXPECT_NE(warnings[0].find("outside the folder"), std::string::npos) << warnings[0];
+        EXPECT_NE(warnings[0].find("that file is left out"), std::string::npos) << warnings[0];
+    }
 
     std::string gltf(kNestedGltf);
     const std::string data =
@@ -162,6 +178,102 @@ TEST(ModelFile, AbsurdCountsAndHugeFilesAreRefusedBeforeReading) {
     fs::resize_file(dir.path() / "huge.stl", kMaxModelFileBytes + 1);
     const std::string huge = read_error(dir.path() / "huge.stl", dir.path());
     EXPECT_NE(huge.find("too large"), std::string::npos) << huge;
+}
+
+std::vector<std::string> warnings_of(const fs::path& file) {
+    return model_warnings(read_ok(file));
+}
+
+// Assimp drops a glTF face whose indices are out of range with a log line
+// only; the file's accessors say how many there were.
+TEST(ModelFile, TrianglesAReaderDropsAreCountedAndNamed) {
+    const Model m = read_ok(kModels / "glTF2/IndexOutOfRange/IndexOutOfRange.gltf");
+    EXPECT_EQ(m.triangles.size(), 11u);
+    EXPECT_EQ(m.left_out.out_of_range, 1u);
+    EXPECT_EQ(model_warnings(m),
+              std::vector<std::string>{"1 of its 12 triangles is left out: 1 names a corner the "
+                                       "file does not have (an index out of range)"});
+    EXPECT_EQ(read_error(kModels / "glTF2/IndexOutOfRange/AllIndicesOutOfRange.gltf", kModels),
+              "'" + (kModels / "glTF2/IndexOutOfRange/AllIndicesOutOfRange.gltf").string() +
+                  "': none of its 12 triangles can be read: they name corners the file does not "
+                  "have (indices out of range)");
+    // Our own reading drops the same, and corners that are not finite.
+    ScratchDir dir;
+    write_file(dir.path() / "bad.ply",
+               "ply\nformat ascii 1.0\nelement vertex 4\nproperty float x\nproperty float y\n"
+               "property float z\nelement face 3\nproperty list uchar int vertex_indices\n"
+               "end_header\n0 0 0\n1 0 0\n0 1 0\n1e39 0 0\n3 0 1 2\n3 0 1 3\n3 0 1 9\n");
+    const Model ply = read_ok(dir.path() / "bad.ply");
+    EXPECT_EQ(ply.triangles.size(), 1u);
+    EXPECT_EQ(model_warnings(ply),
+              std::vector<std::string>{
+                  "2 of its 3 triangles are left out: 1 names a corner the file does not have (an "
+                  "index out of range), 1 has a corner at infinity or NaN"});
+    EXPECT_EQ(warnings_of(kModels / "glTF2/BoxWithInfinites-glTF-Binary/BoxWithInfinites.glb"),
+              std::vector<std::string>{"holds no usable triangle (12 have a corner at infinity "
+                                       "or NaN): the mesh is left out"});
+    EXPECT_TRUE(warnings_of(kModels / "OBJ/box.obj").empty());
+}
+
+TEST(ModelFile, PointCloudsAndLinesSayWhatTheyHold) {
+    EXPECT_EQ(warnings_of(kModels / "PLY/points.ply"),
+              std::vector<std::string>{"holds only 4 points, no triangle: the mesh is left out"});
+    EXPECT_EQ(warnings_of(kModels / "OBJ/testpoints.obj"),
+              std::vector<std::string>{"holds only 24 points, no triangle: the mesh is left out"});
+    EXPECT_EQ(warnings_of(kModels / "OBJ/testline.obj"),
+              std::vector<std::string>{"holds only 18 lines, no triangle: the mesh is left out"});
+    ScratchDir dir;
+    write_file(dir.path() / "flat.obj", "v 0 0 0\nv 1 0 0\nv 2 0 0\nf 1 2 3\n");
+    EXPECT_EQ(warnings_of(dir.path() / "flat.obj"),
+              std::vector<std::string>{"holds no triangle of non-zero area: the mesh is left out"});
+}
+
+// Assimp's words named another cause (or printed 200 bytes of the file).
+TEST(ModelFile, ReaderFailuresNameTheirCause) {
+    const std::string only_2 = "which is not read: only glTF 2.0 is (convert the file to glTF 2.0)";
+    for (const auto& [file, what] : std::vector<std::pair<std::string, std::string>>{
+             {"glTF/TwoBoxes/TwoBoxes.gltf", "glTF 1.0"},
+             {"glTF/CesiumMilkTruck/CesiumMilkTruck.gltf", "glTF 1"},
+             {"glTF/BoxTextured-glTF-Binary/BoxTextured.glb", "binary glTF version 1 (.glb)"}}) {
+        const std::string error = read_error(kModels / file, kModels);
+        EXPECT_NE(error.find("': it is " + what + ", " + only_2), std::string::npos) << error;
+    }
+    for (const char* file :
+         {"OBJ/box_UTF16BE.obj", "AC/SphereWithLight_UTF16LE.ac", "Collada/cube_UTF16LE.dae"}) {
+        const std::string error = read_error(kModels / file, kModels);
+        EXPECT_NE(error.find("': the file is UTF-16 text (it starts with a byte order mark), which "
+                             "the model reader does not read: save it as UTF-8"),
+                  std::string::npos)
+            << error;
+    }
+
+    ScratchDir dir;
+    write_file(dir.path() / "bad.stl",
+               "solid x\n facet normal 0 0 1\n  outer loop\n   vertex 0 0 0\n"
+               "   vertex 1 0 0\n   vertex abc 1 0\n  endloop\n endfacet\nendsolid x\n");
+    EXPECT_EQ(read_error(dir.path() / "bad.stl", dir.path()),
+              "'" + (dir.path() / "bad.stl").string() +
+                  "': line 6, column 11 (byte 83): a number was expected, not 'abc'");
+
+    const std::string box = read_file(kModels / "3MF/box.3mf");
+    ASSERT_GT(box.size(), 1000u);
+    write_file(dir.path() / "cut.3mf", box.substr(0, 600));
+    EXPECT_NE(read_error(dir.path() / "cut.3mf", dir.path())
+                  .find("': its zip archive cannot be read: it is cut short or damaged"),
+              std::string::npos);
+    write_file(dir.path() / "text.3mf", "v 0 0 0\n");
+    EXPECT_NE(read_error(dir.path() / "text.3mf", dir.path())
+                  .find("': the file is not a zip archive, as a 3MF file must be"),
+              std::string::npos);
+    write_file(dir.path() / "zipped.amf", box);
+    EXPECT_NE(read_error(dir.path() / "zipped.amf", dir.path())
+                  .find("': the file is a zip archive (a zipped AMF?), which the model reader "
+                        "opens only as 3MF: unzip it first"),
+              std::string::npos);
+    write_file(dir.path() / "gzipped.amf", std::string("\x1f\x8b\x08\0\0\0\0\0", 8));
+    EXPECT_NE(read_error(dir.path() / "gzipped.amf", dir.path()).find("gzip-compressed"),
+              std::string::npos);
+    EXPECT_EQ(read_ok(kModels / "3MF/box.3mf").triangles.size(), 12u);
 }
 
 TEST(ModelFile, TheBoxHoldsTheCornersTheTrianglesName) {

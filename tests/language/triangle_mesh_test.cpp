@@ -123,5 +123,33 @@ TEST(TriangleMesh, ModelProblemsAreLocatedAtTheFileString) {
     EXPECT_NE(all.find("none.obj': No such file or directory"), std::string::npos) << all;
 }
 
+// A model that loads in part warns at its file string, once for each reason,
+// and is not an error: assimp-testmodels' IndexOutOfRange has a triangle
+// naming a corner it lacks; an OBJ's material library outside the folder is
+// left out unopened.
+TEST(TriangleMesh, WhatAModelLeavesOutIsAWarningAtTheFileString) {
+    test::ScratchDir dir;
+    const std::filesystem::path gltf = "/usr/share/assimp/models/glTF2/IndexOutOfRange";
+    std::filesystem::create_directories(dir.path() / "scene");
+    for (const char* file : {"IndexOutOfRange.gltf", "IndexOutOfRange.bin"})
+        std::filesystem::copy_file(gltf / file, dir.path() / "scene" / file);
+    test::write_file(dir.path() / "scene/m.obj",
+                     "mtllib ../m.mtl\nv 0 0 0\nv 1 0 0\nv 0 1 0\nf 1 2 3\n");
+    test::write_file(dir.path() / "scene/s.jts", std::string(kHead) +
+                                                     "scene {\n"
+                                                     "  mesh { file: \"IndexOutOfRange.gltf\"; }\n"
+                                                     "  mesh { file: \"m.obj\"; }\n"
+                                                     "}\n");
+    Expected<LoadedScene> loaded = load_scene_file(dir.path() / "scene/s.jts");
+    ASSERT_TRUE(loaded.has_value());
+    const std::string folder = std::filesystem::weakly_canonical(dir.path() / "scene").string();
+    EXPECT_EQ(brief(check_scene(*loaded)),
+              "4:16: warning: mesh 1: 'IndexOutOfRange.gltf' 1 of its 12 triangles is left out: 1 "
+              "names a corner the file does not have (an index out of range)\n"
+              "5:16: warning: mesh 2: 'm.obj' refers to the material library '" +
+                  (dir.path() / "scene/../m.mtl").string() + "', outside the folder '" + folder +
+                  "': that file is left out");
+}
+
 }  // namespace
 }  // namespace jt

@@ -122,7 +122,7 @@ bool add_mesh(AppState& state, const std::string& file) {
         return false;
     }
     if ((*model)->triangles.empty()) {
-        state.message = "Not added: '" + name + "' holds no triangle of non-zero area";
+        state.message = "Not added: '" + name + "' " + model_warnings(**model).back();
         return false;
     }
     const Primitive added = new_mesh(viewed_scene(state), name, **model);

@@ -18,9 +18,20 @@
 #include <array>
 #include <cstdint>
 #include <filesystem>
+#include <string>
 #include <vector>
 
 namespace jt {
+
+// What a file holds that its model leaves out, for the warning at the mesh's
+// `file` string (model_warnings). Zero-area triangles are not counted: the
+// language skips them silently (docs/language.md §13.5).
+struct ModelLeftOut {
+    std::size_t points = 0, lines = 0;  // faces of one and of two corners
+    std::size_t out_of_range = 0;       // triangles naming a corner the file does not have
+    std::size_t not_finite = 0;         // triangles with a corner at infinity or NaN
+    std::string refused_file;           // why a file it refers to was not opened, or ""
+};
 
 // A model's object space is the file's coordinates after its own node
 // transforms (glTF). Vertex positions are single precision, as every model
@@ -35,6 +46,7 @@ struct Model {
     std::vector<glm::vec2> uvs;  // parallel to positions, or empty
     // Counter-clockwise seen from the front; none of zero area.
     std::vector<std::array<std::uint32_t, 3>> triangles;
+    ModelLeftOut left_out;
 };
 
 // Files larger than this are refused before any is read (the model file and
@@ -45,11 +57,18 @@ inline constexpr std::size_t kMaxModelTriangles = std::size_t{1} << 26;
 
 // Reads every triangle of `file`. Files it refers to (glTF buffers, OBJ
 // material libraries) are opened only inside `folder` (the scene's folder)
-// or, for a model outside it, inside the model's own folder; a reference
-// that leaves it is an error. A model with no triangle of non-zero area is
+// or, for a model outside it, inside the model's own folder; one outside it
+// is never opened: an error when the model cannot be read without it (a glTF
+// buffer), else it is left out (an OBJ's material library) and
+// left_out.refused_file says so. A model with no triangle of non-zero area is
 // not an error: its triangle list is empty. Running out of memory raises
 // std::bad_alloc, as everywhere (error.hpp).
 Expected<Model> read_model(const std::filesystem::path& file, const std::filesystem::path& folder);
+
+// The warnings a mesh of `model` gets, each to follow the file's name: what
+// the file held that is left out, and when no triangle is left, that the mesh
+// is left out and why ("holds only points (8): the mesh is left out").
+std::vector<std::string> model_warnings(const Model& model);
 
 // The box around the corners the model's triangles name, in its own space;
 // empty (lower > upper) when it has no triangle.

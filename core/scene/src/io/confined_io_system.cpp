@@ -2,6 +2,7 @@
 
 #include "jtracer/model_file.hpp"
 
+#include <cctype>
 #include <system_error>
 
 namespace jt {
@@ -14,6 +15,13 @@ bool inside(const std::filesystem::path& path, const std::filesystem::path& fold
     for (auto f = folder.begin(); f != folder.end(); ++f, ++p)
         if (p == path.end() || *p != *f) return false;
     return true;
+}
+
+// An OBJ's `mtllib`: materials, which a mesh can be read without.
+bool material_library(const char* file) {
+    std::string ext = std::filesystem::path(file).extension().string();
+    for (char& c : ext) c = static_cast<char>(std::tolower(static_cast<unsigned char>(c)));
+    return ext == ".mtl";
 }
 
 }  // namespace
@@ -29,11 +37,13 @@ bool ConfinedIOSystem::allowed(const char* file) const {
         std::filesystem::weakly_canonical(std::filesystem::absolute(file, error), error);
     std::string why;
     if (error || folder_.empty() || !inside(path, folder_)) {
-        why.append("it refers to '").append(file).append("', outside the folder '");
+        why.append(material_library(file) ? "refers to the material library '" : "refers to '");
+        why.append(file).append("', outside the folder '");
         why.append(folder_.string()).append("'");
     } else if (const std::uintmax_t size = std::filesystem::file_size(path, error);
                !error && size > kMaxModelFileBytes) {
-        why.append("'").append(file).append("' is too large (").append(std::to_string(size));
+        why.append("refers to '").append(file).append("', which is too large (");
+        why.append(std::to_string(size));
         why.append(" bytes; at most ").append(std::to_string(kMaxModelFileBytes)).append(")");
     }
     if (why.empty()) return true;

@@ -18,8 +18,9 @@ class ConfinedIOSystem : public Assimp::DefaultIOSystem {
     bool Exists(const char* file) const override;
     Assimp::IOStream* Open(const char* file, const char* mode = "rb") override;
 
-    // Why the first refused file was refused ("" when none was): the import
-    // may have gone on without it, but its result is not used.
+    // Why the first refused file was refused, as a phrase after the model's
+    // name ("refers to 'x.mtl', outside the folder '/y'"), or "" when none
+    // was. The import may have gone on without it.
     const std::string& refusal() const { return refusal_; }
 
   private:

@@ -210,30 +210,90 @@ std::string skins_problem(const json& root) {
     return "";
 }
 
-}  // namespace
+// The version a glTF file's asset gives, as written ("2.0", 1, ...), or ""
+// when it gives none.
+std::string asset_version(const json& root) {
+    const auto asset = root.find("asset");
+    if (asset == root.end() || !asset->is_object()) return "";
+    const auto version = asset->find("version");
+    if (version == asset->end()) return "";
+    return version->is_string() ? version->get<std::string>() : version->dump();
+}
 
-std::string gltf_problem(std::span<const std::uint8_t> bytes) {
-    const std::optional<GltfText> text = gltf_text(bytes);
-    if (!text) return "";
-    json root;
-    try {
-        root = json::parse(text->json);
-    } catch (const json::parse_error& error) {
-        return "its glTF JSON does not parse: " + parse_error_message(error);
+std::string not_gltf2(const std::string& what) {
+    return "it is " + what + ", which is not read: only glTF 2.0 is (convert the file to glTF 2.0)";
+}
+
+// The triangles a primitive of `mode` makes of `count` corners (glTF 2.0
+// §3.7.2.1); 0 for points and lines.
+std::uint64_t primitive_triangles(std::uint64_t mode, std::uint64_t count) {
+    if (mode == 4) return count / 3;
+    if (mode == 5 || mode == 6) return count > 2 ? count - 2 : 0;
+    return 0;
+}
+
+std::uint64_t declared_triangles(const json& root) {
+    const auto meshes = root.find("meshes");
+    const auto accessors = root.find("accessors");
+    if (meshes == root.end() || !meshes->is_array() || accessors == root.end() ||
+        !accessors->is_array())
+        return 0;
+    auto accessor_count = [&](std::optional<std::uint64_t> index) -> std::uint64_t {
+        if (!index || *index >= accessors->size()) return 0;
+        return whole((*accessors)[*index], "count", 0).value_or(0);
+    };
+    std::uint64_t triangles = 0;
+    for (const json& mesh : *meshes) {
+        if (!mesh.is_object()) continue;
+        const json& primitives = mesh.value("primitives", json::array());
+        if (!primitives.is_array()) continue;
+        for (const json& primitive : primitives) {
+            if (!primitive.is_object()) continue;
+            const std::uint64_t mode = whole(primitive, "mode", 4).value_or(0);
+            std::uint64_t count = 0;
+            if (primitive.contains("indices")) {
+                count = accessor_count(whole(primitive, "indices", 0));
+            } else {
+                const json& attributes = primitive.value("attributes", json::object());
+                if (attributes.is_object())
+                    count = accessor_count(whole(attributes, "POSITION", accessors->size()));
+            }
+            triangles += primitive_triangles(mode, count);
+        }
     }
-    if (!root.is_object()) return "";
-    const auto version = root.find("asset");
-    if (version == root.end() || !version->is_object() ||
-        version->value("version", json()) != json("2.0"))
-        return "";
+    return triangles;
+}
+
+std::string gltf2_problem(const json& root, std::optional<std::uint64_t> bin_chunk_bytes) {
     std::vector<View> views;
-    if (std::string problem = views_problem(root, text->bin_chunk_bytes, views); !problem.empty())
+    if (std::string problem = views_problem(root, bin_chunk_bytes, views); !problem.empty())
         return problem;
     if (const auto it = root.find("accessors"); it != root.end() && it->is_array())
         for (std::size_t i = 0; i < it->size(); ++i)
             if (std::string problem = accessor_problem((*it)[i], i, views); !problem.empty())
                 return problem;
     return skins_problem(root);
+}
+
+}  // namespace
+
+GltfCheck check_gltf(std::span<const std::uint8_t> bytes) {
+    if (bytes.size() >= 8 && read_u32(bytes, 0) == kGlbMagic && read_u32(bytes, 4) != 2)
+        return {not_gltf2("binary glTF version " + std::to_string(read_u32(bytes, 4)) + " (.glb)"),
+                0};
+    const std::optional<GltfText> text = gltf_text(bytes);
+    if (!text) return {};
+    json root;
+    try {
+        root = json::parse(text->json);
+    } catch (const json::parse_error& error) {
+        return {"its glTF JSON does not parse: " + parse_error_message(error), 0};
+    }
+    if (!root.is_object()) return {};
+    const std::string version = asset_version(root);
+    if (version.empty()) return {};
+    if (version.rfind("2.", 0) != 0) return {not_gltf2("glTF " + version), 0};
+    return {gltf2_problem(root, text->bin_chunk_bytes), declared_triangles(root)};
 }
 
 }  // namespace jt

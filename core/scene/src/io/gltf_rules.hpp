@@ -11,7 +11,13 @@
 //   (glTF lets a skin leave them out): a null pointer, the program dies;
 // - its JSON reader takes text that is not JSON (bytes that are not UTF-8, for
 //   one), so that the checks above would not see what it reads: a .gltf's text,
-//   or a .glb's JSON chunk, must parse as JSON.
+//   or a .glb's JSON chunk, must parse as JSON;
+// - it names a glTF 1.0 file's problem by the first member 1.0 lays out
+//   otherwise ('Member "version" was not of type "string"'): a file that says
+//   it is glTF 1 is refused as such.
+// It also counts the triangles the file's mesh primitives declare, which tells
+// how many Assimp dropped (it leaves out faces whose indices are out of range,
+// with no more than a log line).
 
 #include <cstdint>
 #include <span>
@@ -19,8 +25,14 @@
 
 namespace jt {
 
-// "" when `bytes` are not a glTF 2.0 file (JSON or binary .glb) or break none
-// of the rules above; else which rule, and where.
-std::string gltf_problem(std::span<const std::uint8_t> bytes);
+struct GltfCheck {
+    // "" when `bytes` are not a glTF file (JSON or binary .glb) or break none
+    // of the rules above; else which rule, and where.
+    std::string problem;
+    // The triangles of every mesh primitive of a triangle mode (TRIANGLES,
+    // TRIANGLE_STRIP, TRIANGLE_FAN), counted from its indices or positions.
+    std::uint64_t declared_triangles = 0;
+};
+GltfCheck check_gltf(std::span<const std::uint8_t> bytes);
 
 }  // namespace jt

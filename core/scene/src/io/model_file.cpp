@@ -3,6 +3,7 @@
 #include "io/confined_io_system.hpp"
 #include "io/file_bytes.hpp"
 #include "io/gltf_rules.hpp"
+#include "io/model_messages.hpp"
 
 #include <assimp/BaseImporter.h>
 #include <assimp/importerdesc.h>
@@ -128,7 +129,8 @@ bool finite(const glm::vec3& v) {
 }
 
 // The triangles of one aiMesh placed by `to_model`, fanned from each
-// polygon's first vertex; zero-area and broken ones are skipped.
+// polygon's first vertex; zero-area and broken ones are skipped, and the
+// broken ones, points and lines counted (ModelLeftOut).
 class ModelBuilder {
   public:
     explicit ModelBuilder(bool use_normals) : use_normals_(use_normals) {}
@@ -139,6 +141,8 @@ class ModelBuilder {
         const glm::dmat3 normal_matrix = glm::transpose(glm::inverse(glm::dmat3(to_model)));
         const bool normals = use_normals_ && mesh.mNormals;
         const bool uvs = mesh.mTextureCoords[0] != nullptr;
+        // Vertices and no face: a point cloud (OBJ's v lines alone, a PLY of vertices).
+        if (mesh.mNumFaces == 0) model_.left_out.points += mesh.mNumVertices;
         // The first mesh with normals (or UVs) gives the earlier ones zeros:
         // corners without.
         if (normals && !has_normals_) model_.normals.assign(first, glm::vec3(0.0f));
@@ -168,11 +172,15 @@ class ModelBuilder {
         }
         for (unsigned f = 0; f < mesh.mNumFaces; ++f) {
             const aiFace& face = mesh.mFaces[f];
-            if (face.mNumIndices < 3 || !face.mIndices) continue;  // points and lines
+            if (!face.mIndices) continue;
+            if (face.mNumIndices == 1) ++model_.left_out.points;
+            if (face.mNumIndices == 2) ++model_.left_out.lines;
             for (unsigned k = 2; k < face.mNumIndices; ++k) {
                 const unsigned a = face.mIndices[0], b = face.mIndices[k - 1], c = face.mIndices[k];
-                if (a >= mesh.mNumVertices || b >= mesh.mNumVertices || c >= mesh.mNumVertices)
+                if (a >= mesh.mNumVertices || b >= mesh.mNumVertices || c >= mesh.mNumVertices) {
+                    ++model_.left_out.out_of_range;
                     continue;
+                }
                 add_triangle({first + a, first + b, first + c});
                 if (model_.triangles.size() > kMaxModelTriangles) return false;
             }
@@ -184,12 +192,16 @@ class ModelBuilder {
     }
 
     Model take() && { return std::move(model_); }
+    ModelLeftOut& left_out() { return model_.left_out; }
 
   private:
     void add_triangle(const std::array<std::uint32_t, 3>& corners) {
         const glm::vec3 &a = model_.positions[corners[0]], &b = model_.positions[corners[1]],
                         &c = model_.positions[corners[2]];
-        if (!finite(a) || !finite(b) || !finite(c)) return;
+        if (!finite(a) || !finite(b) || !finite(c)) {
+            ++model_.left_out.not_finite;
+            return;
+        }
         const glm::dvec3 normal =
             glm::cross(glm::dvec3(b) - glm::dvec3(a), glm::dvec3(c) - glm::dvec3(a));
         if (normal == glm::dvec3(0.0)) return;  // zero area: skipped silently
@@ -208,8 +220,17 @@ std::string too_many() {
 
 // Every mesh of every node, each placed by its node's transform and its
 // parents'; an explicit stack, since a hostile file can nest nodes deeply.
-Expected<Model> gather(const aiScene& scene, bool use_normals) {
+//
+// `declared_triangles`, when the file says how many it has (glTF), tells how
+// many the reader dropped: those it gave fewer named corners out of range.
+Expected<Model> gather(const aiScene& scene, bool use_normals, std::uint64_t declared_triangles) {
     ModelBuilder builder(use_normals);
+    std::uint64_t read = 0;
+    for (unsigned m = 0; m < scene.mNumMeshes; ++m)
+        if (const aiMesh* mesh = scene.mMeshes[m])
+            for (unsigned f = 0; f < mesh->mNumFaces; ++f)
+                if (mesh->mFaces[f].mNumIndices >= 3) read += mesh->mFaces[f].mNumIndices - 2;
+    if (declared_triangles > read) builder.left_out().out_of_range += declared_triangles - read;
     struct Pending {
         const aiNode* node;
         glm::dmat4 to_model;
@@ -258,33 +279,105 @@ Expected<Model> read_model(const std::filesystem::path& file, const std::filesys
                                             std::to_string(kMaxModelFileBytes) + ")")};
     if (std::string problem = ply_header_problem(file, size); !problem.empty())
         return Error{file_message(file, problem)};
+    std::uint64_t declared_triangles = 0;
     if (const std::string ext = lower_extension(file); ext == ".gltf" || ext == ".glb") {
         const Expected<std::vector<std::uint8_t>> bytes = read_file_bytes(file);
         if (!bytes) return bytes.error();
-        if (std::string problem = gltf_problem(*bytes); !problem.empty())
-            return Error{file_message(file, problem)};
+        const GltfCheck check = check_gltf(*bytes);
+        if (!check.problem.empty()) return Error{file_message(file, check.problem)};
+        declared_triangles = check.declared_triangles;
     }
+    // The file's own bytes say more than Assimp's words for some failures
+    // (io/model_messages.hpp); read only when it failed.
+    auto failure = [&](const std::string& reason) -> Error {
+        const Expected<std::vector<std::uint8_t>> bytes = read_file_bytes(file);
+        if (!bytes) return Error{file_message(file, reason)};
+        if (std::string wide = wide_text_problem(*bytes); !wide.empty())
+            return Error{file_message(file, wide)};
+        return Error{file_message(file, import_failure(reason, *bytes))};
+    };
     try {
         Assimp::Importer importer;
         leave_out_gltf1(importer);
         auto* io = new ConfinedIOSystem(reference_folder(file, folder));
         importer.SetIOHandler(io);  // the importer owns it
         const aiScene* scene = importer.ReadFile(file.string(), 0);
-        if (!io->refusal().empty()) return Error{file_message(file, io->refusal())};
         if (!scene) {
             // Assimp turns every exception into its error string, running out
             // of memory too; that one is the programs' to report (error.hpp).
             const std::string why = importer.GetErrorString();
             if (why == std::bad_alloc().what()) throw std::bad_alloc();
-            return Error{file_message(file, why)};
+            // A refused file the model needed is the reason it failed.
+            if (!io->refusal().empty()) return Error{file_message(file, "it " + io->refusal())};
+            // Assimp's glTF reader drops faces whose indices are out of range,
+            // and fails when that leaves a mesh none.
+            if (declared_triangles > 0 && why.find("has no faces") != std::string::npos)
+                return Error{file_message(
+                    file, "none of its " + std::to_string(declared_triangles) +
+                              " triangles can be read: they name corners the file does not "
+                              "have (indices out of range)")};
+            return failure(why);
         }
         // STL's normals are one a facet, not a vertex (docs/language.md §13.5).
-        return gather(*scene, lower_extension(file) != ".stl");
+        Expected<Model> model = gather(*scene, lower_extension(file) != ".stl", declared_triangles);
+        if (model) model->left_out.refused_file = io->refusal();
+        if (model && model->triangles.empty()) {
+            // Text Assimp could not read shows as a model of nothing.
+            const Expected<std::vector<std::uint8_t>> bytes = read_file_bytes(file);
+            if (bytes)
+                if (std::string wide = wide_text_problem(*bytes); !wide.empty())
+                    return Error{file_message(file, wide)};
+        }
+        return model;
     } catch (const std::bad_alloc&) {
         throw;
     } catch (const std::exception& e) {
         return Error{file_message(file, std::string("cannot load the model: ") + e.what())};
     }
+}
+
+namespace {
+
+// "1 point", "2 points"; "1 names", "2 name".
+std::string count_of(std::size_t n, const char* one, const char* many) {
+    return std::to_string(n) + " " + (n == 1 ? one : many);
+}
+
+}  // namespace
+
+std::vector<std::string> model_warnings(const Model& model) {
+    std::vector<std::string> warnings;
+    const ModelLeftOut& out = model.left_out;
+    if (!out.refused_file.empty()) warnings.push_back(out.refused_file + ": that file is left out");
+    // Why triangles were dropped: "2 name a corner ..., 1 has a corner ...".
+    std::string why;
+    if (out.out_of_range > 0)
+        why = count_of(out.out_of_range, "names", "name") +
+              " a corner the file does not have (an index out of range)";
+    if (out.not_finite > 0) {
+        if (!why.empty()) why += ", ";
+        why += count_of(out.not_finite, "has", "have") + " a corner at infinity or NaN";
+    }
+    const std::size_t broken = out.out_of_range + out.not_finite;
+    if (!model.triangles.empty()) {
+        if (broken > 0)
+            warnings.push_back(std::to_string(broken) + " of its " +
+                               std::to_string(broken + model.triangles.size()) + " triangles " +
+                               (broken == 1 ? "is" : "are") + " left out: " + why);
+        return warnings;
+    }
+    if (broken > 0) {
+        warnings.push_back("holds no usable triangle (" + why + "): the mesh is left out");
+    } else if (out.points > 0 || out.lines > 0) {
+        std::string held;
+        if (out.points > 0) held = count_of(out.points, "point", "points");
+        if (out.points > 0 && out.lines > 0) held += " and ";
+        if (out.lines > 0) held += count_of(out.lines, "line", "lines");
+        warnings.push_back("holds only " + held + ", no triangle: the mesh is left out");
+    } else {
+        warnings.push_back("holds no triangle of non-zero area: the mesh is left out");
+    }
+    return warnings;
 }
 
 }  // namespace jt

@@ -22,7 +22,7 @@ struct StbFree {
 
 std::string too_large(std::int64_t width, std::int64_t height) {
     return "the image is too large (" + std::to_string(width) + "x" + std::to_string(height) +
-           " texels)";
+           " texels; an image map has at most " + std::to_string(kMaxTextureTexels) + ")";
 }
 
 // Each side below the cap first, so that the product cannot overflow.

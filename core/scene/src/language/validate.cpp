@@ -201,18 +201,16 @@ class Validator {
             if (!model)
                 verdict.error = model.error().message;
             else
-                verdict.empty = (*model)->triangles.empty();
+                verdict.warnings = model_warnings(**model);
             known = models_.emplace(mesh.file, verdict).first;
         }
-        if (!known->second.error.empty())
-            error(pos, which + known->second.error);
-        else if (known->second.empty)
-            warning(pos, which + "'" + mesh.file +
-                             "' holds no triangle of non-zero area: the mesh is left out");
+        if (!known->second.error.empty()) error(pos, which + known->second.error);
+        for (const std::string& w : known->second.warnings)
+            warning(pos, which + "'" + mesh.file + "' " + w);
     }
     struct ModelVerdict {
         std::string error;  // "": it loads
-        bool empty = false;
+        std::vector<std::string> warnings;
     };
     std::map<std::string, ModelVerdict> models_;
 

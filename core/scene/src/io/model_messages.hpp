@@ -1,0 +1,22 @@
+#pragma once
+// Assimp's reasons for a model it cannot read, in words that name the cause:
+// it says "Failed to open file" for a zip it cannot open, "no valid file" or
+// nothing at all for UTF-16 text, and quotes 200 bytes of the file where a
+// number should be. These read the file's bytes and say what is wrong there.
+
+#include <cstdint>
+#include <span>
+#include <string>
+
+namespace jt {
+
+// Why a file whose text starts with a UTF-16 or UTF-32 byte order mark cannot
+// be read, or "" when it does not start with one.
+std::string wide_text_problem(std::span<const std::uint8_t> bytes);
+
+// Assimp's `reason` for refusing `bytes`, reworded when the bytes tell the
+// cause better: a compressed or zip file it does not open, and a number that
+// does not parse, located by line, column and byte. Otherwise `reason`.
+std::string import_failure(const std::string& reason, std::span<const std::uint8_t> bytes);
+
+}  // namespace jt
