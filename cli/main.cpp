@@ -1,7 +1,7 @@
 // jtracer-cli: scene file in, image file out. The work lives in the core; this
 // file only orders the steps and maps failures to exit codes.
 
-#include "image_compare.hpp"
+#include "diff_command.hpp"
 #include "list_cameras.hpp"
 #include "memory_budget.hpp"
 #include "options.hpp"

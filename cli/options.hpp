@@ -1,7 +1,7 @@
 #pragma once
 // jtracer-cli's command line, parsed into a plain struct.
 
-#include "image_compare.hpp"
+#include "diff_command.hpp"
 
 #include "jtracer/frontend/render_flags.hpp"
 
@@ -18,7 +18,7 @@ struct Options : frontend::RenderFlags {
     std::optional<jt::FrameRegion> region;
     bool region_output = false;  // write the region alone, as a region file (region_file.hpp)
     bool check_only = false;
-    // Compare the written render with this reference image (image_compare.hpp).
+    // Compare the written render with this reference image (diff_command.hpp).
     std::optional<std::string> expect;
     Tolerance tolerance;
     bool list_cameras = false;  // print the scene's camera names only (list_cameras.hpp)

@@ -1,11 +1,11 @@
 // The image tools through the frame code: Render region (a Ctrl+drag renders
 // that rectangle alone, as jtracer-cli --region does) and A/B compare.
 
+#include "ab_compare.hpp"
 #include "app_actions.hpp"
 #include "common/files.hpp"
 #include "common/run_program.hpp"
 #include "headless.hpp"
-#include "image_compare.hpp"
 #include "jtracer/bmp.hpp"
 #include "jtracer/image_diff.hpp"
 #include "jtracer/region.hpp"

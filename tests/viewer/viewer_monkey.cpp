@@ -26,11 +26,11 @@
 //   viewer_monkey --seed 7 --events 500     one run (replay a failure by its seed)
 //   viewer_monkey --soak 2000               edit/reload cycles; resident memory bounded
 
+#include "ab_compare.hpp"
 #include "app_actions.hpp"
 #include "common/files.hpp"
 #include "document_edits.hpp"
 #include "headless.hpp"
-#include "image_compare.hpp"
 #include "jtracer/parser.hpp"
 #include "jtracer/png.hpp"
 #include "jtracer/schema.hpp"

@@ -1,8 +1,8 @@
 #include "viewer_frame.hpp"
 
+#include "ab_compare.hpp"
 #include "app_actions.hpp"
 #include "document_edits.hpp"
-#include "image_compare.hpp"
 #include "keys.hpp"
 #include "object_drag.hpp"
 #include "panels/panels.hpp"

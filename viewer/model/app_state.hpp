@@ -112,7 +112,7 @@ struct ObjectDrag {
     std::chrono::steady_clock::time_point last_write;
 };
 
-// How the image shows against a snapshot A (image_compare.hpp).
+// How the image shows against a snapshot A (ab_compare.hpp).
 enum class CompareMode {
     live,        // the live image alone
     split,       // A left of the split line, live right

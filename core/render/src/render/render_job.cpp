@@ -83,7 +83,7 @@ struct RenderJob::State {
     bool cancelled = false;
 
     // False when cancelled before the tile was whole (nothing of it is kept).
-    bool render_tile(const RenderPass& pass, const PixelRect& tile);
+    bool run_tile(const RenderPass& pass, const PixelRect& tile);
     void publish(const PixelRect& tile, const std::vector<std::uint8_t>& rgb);
 
     std::size_t sum_index(int x, int y) const {
@@ -111,7 +111,7 @@ void RenderJob::State::publish(const PixelRect& tile, const std::vector<std::uin
     dirty = holding_both(dirty, tile);
 }
 
-bool RenderJob::State::render_tile(const RenderPass& pass, const PixelRect& tile) {
+bool RenderJob::State::run_tile(const RenderPass& pass, const PixelRect& tile) {
     if (cancel_requested.load(std::memory_order_relaxed)) return false;
     TileBuffer out(tile);
     // The new sums stay in the tile until it is whole: a tile cancelled part
@@ -181,7 +181,7 @@ bool RenderJob::run_pass() {
             [&](const tbb::blocked_range<std::size_t>& range) {
                 for (std::size_t i = range.begin(); i != range.end(); ++i) {
                     if (s.tiles_done[i]) continue;
-                    if (!s.render_tile(pass, tiles[i])) return;
+                    if (!s.run_tile(pass, tiles[i])) return;
                     s.tiles_done[i] = 1;
                     // Work in rays of this pass, spread evenly over its tiles.
                     const PixelRect& t = tiles[i];

@@ -1,4 +1,4 @@
-#include "image_compare.hpp"
+#include "ab_compare.hpp"
 
 #include "jtracer/image_diff.hpp"
 

@@ -1,4 +1,4 @@
-#include "image_compare.hpp"
+#include "diff_command.hpp"
 
 #include "jtracer/frontend/render_flags.hpp"
 #include "jtracer/image_diff.hpp"
