@@ -12,7 +12,7 @@ packages=(
     clang libclang-rt-14-dev valgrind
     tachyon-bin-nox
     mandoc man-db dpkg-dev file bash-completion zsh desktop-file-utils shared-mime-info
-    python3
+    python3 python3-dev pybind11-dev python3-numpy python3-pytest
 )
 
 missing=()

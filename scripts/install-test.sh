@@ -3,9 +3,10 @@
 #  1. `cmake --install` to a temporary prefix, moved elsewhere afterwards: every
 #     file in place, nothing naming the source or build tree, the programs,
 #     man pages, completions, desktop entry, MIME type, CMake package and
-#     pkg-config file all working from the moved copy;
+#     pkg-config file and Python module all working from the moved copy;
 #  2. `cpack -G DEB`: jtracer_<version>_amd64.deb with its Depends, installed
-#     with dpkg, used (version, showcase render, man -w), and removed cleanly.
+#     with dpkg, used (version, showcase render, man -w, import jtracer), and
+#     removed cleanly.
 # Step 2 needs root or sudo, like scripts/install-deps.sh; JT_SKIP_DEB=1 skips it.
 set -euo pipefail
 cd "$(dirname "$0")/.."
@@ -36,6 +37,13 @@ for file in bin/jtracer-cli bin/jtracer-merge share/jtracer/scenes/showcase.jts 
     include/jtracer/version.hpp include/jtracer/render_job.hpp; do
     [ -e "$prefix/$file" ] || fail "cmake --install did not install $file"
 done
+# The Python module, where Debian's python3 looks for the prefix's modules.
+python_dir=$(sed -n 's/^JT_PYTHON_INSTALL_DIR:STRING=//p' "$build/CMakeCache.txt")
+if [ -n "$python_dir" ]; then
+    for file in "$python_dir"/jtracer.pyi "$python_dir"/jtracer.cpython-*.so; do
+        compgen -G "$prefix/$file" >/dev/null || fail "cmake --install did not install $file"
+    done
+fi
 [ -f "$libdir/cmake/JTracer/JTracerConfig.cmake" ] || fail "no JTracerConfig.cmake"
 [ -f "$libdir/pkgconfig/jtracer.pc" ] || fail "no jtracer.pc"
 with_viewer=0
@@ -64,6 +72,33 @@ if [ "$with_viewer" = 1 ]; then
         2>"$work/view.err" || fail "jtracer-view without a scene: $(cat "$work/view.err")"
     grep -q 'wrote view.png' "$work/view.err" || fail "jtracer-view: $(cat "$work/view.err")"
     ! grep -qi 'error\|cannot' "$work/view.err" || fail "jtracer-view: $(cat "$work/view.err")"
+fi
+
+# The module renders the installed showcase to the installed jtracer-cli's BMP
+# pixels (and the reference's), from the copy PYTHONPATH names. Debian's
+# python3: the module is built for it and uses its numpy.
+check_python_module() { # PYTHON_DIR SCENE CLI
+    /usr/bin/python3 - "$1" "$2" "$3" "$reference" "$work" <<'PYTHON'
+import pathlib, subprocess, sys
+python_dir, scene_path, cli, reference, work = sys.argv[1:]
+import jtracer
+where = pathlib.Path(jtracer.__file__).resolve()
+assert where.parent == pathlib.Path(python_dir).resolve(), f"imported {where}, not from {python_dir}"
+image = jtracer.load(scene_path).render(width=160, height=90)
+bmp = pathlib.Path(work) / "module-cli.bmp"
+subprocess.run([cli, "-q", scene_path, "-o", str(bmp), "--width", "160", "--height", "90"], check=True)
+assert (jtracer.read_image(bmp) == image).all(), "the module's render differs from jtracer-cli's"
+difference = jtracer.diff(reference, image)
+assert difference.same_size and difference.pixels_over == 0, difference
+version = subprocess.run([cli, "--version"], capture_output=True, text=True, check=True).stdout
+assert version.split()[1] == jtracer.__version__, (version, jtracer.__version__)
+print(f"jtracer {jtracer.__version__} from {where}: the showcase matches jtracer-cli's pixels")
+PYTHON
+}
+if [ -n "$python_dir" ]; then
+    step "the installed Python module renders the installed showcase"
+    PYTHONPATH=$prefix/$python_dir check_python_module "$prefix/$python_dir" \
+        "$prefix/share/jtracer/scenes/showcase.jts" "$prefix/bin/jtracer-cli"
 fi
 
 step "the CI script of docs/ci.md, with the installed jtracer-cli"
@@ -143,10 +178,18 @@ trap 'remove; rm -rf "$work"' EXIT
     --expect "$reference"
 found=$(man -w jtracer-cli)
 [ "$found" = /usr/share/man/man1/jtracer-cli.1.gz ] || fail "man -w jtracer-cli: '$found'"
+if [ -n "$python_dir" ]; then
+    step "python3 imports the .deb's module without PYTHONPATH"
+    (unset PYTHONPATH && cd "$work" && check_python_module "/usr/$python_dir" \
+        /usr/share/jtracer/scenes/showcase.jts /usr/bin/jtracer-cli)
+fi
 step "dpkg -r jtracer"
 remove
 [ ! -e /usr/bin/jtracer-cli ] || fail "dpkg -r left /usr/bin/jtracer-cli"
 [ ! -e /usr/share/jtracer ] || fail "dpkg -r left /usr/share/jtracer"
+if [ -n "$python_dir" ] && compgen -G "/usr/$python_dir/jtracer*" >/dev/null; then
+    fail "dpkg -r left the Python module in /usr/$python_dir"
+fi
 status=$(dpkg-query -W -f='${Status}' jtracer 2>/dev/null || true)
 if [[ $status == *"ok installed"* ]]; then fail "dpkg -r: jtracer is still installed"; fi
 echo "install-test: all passed in ${SECONDS}s"

@@ -23,6 +23,10 @@ run_preset() {
     # One test more than the cores: several tests spend most of their time
     # waiting (the MPI network test on its timeouts, the viewer's on frames).
     ctest --preset "$preset" -j "$((jobs + 1))"
+    # pytest's own summary of the Python module's tests: ctest keeps the output
+    # of a test that passed only in its log.
+    sed -n 's/^\(=\+ .* in [0-9.]\+s.* =\+\)$/python_module: \1/p' \
+        "build/$preset/Testing/Temporary/LastTest.log"
 }
 
 run_preset release

@@ -29,6 +29,19 @@ std::string camera_names(const Scene& scene) {
 
 FrameSetup set_up_frame(std::string_view program, const RenderFlags& flags,
                         const std::optional<FrameRegion>& region) {
+    // Without the source map: check_scene builds it only if there is something to locate.
+    Expected<LoadedScene> read = load_scene_file(flags.scene_path, {.source_map = false});
+    if (!read) {
+        FrameSetup setup;
+        setup.exit_code = exit_io_error;
+        setup.message = std::string(program) + ": " + read.error().message + "\n";
+        return setup;
+    }
+    return set_up_frame(program, flags, std::move(*read), region);
+}
+
+FrameSetup set_up_frame(std::string_view program, const RenderFlags& flags, LoadedScene loaded,
+                        const std::optional<FrameRegion>& region) {
     FrameSetup setup;
     const std::string prefix = std::string(program) + ": ";
     auto fail = [&](int code, const std::string& message) {
@@ -36,10 +49,6 @@ FrameSetup set_up_frame(std::string_view program, const RenderFlags& flags,
         setup.message += prefix + message + "\n";
         return std::move(setup);
     };
-    // Without the source map: check_scene builds it only if there is something to locate.
-    Expected<LoadedScene> read = load_scene_file(flags.scene_path, {.source_map = false});
-    if (!read) return fail(exit_io_error, read.error().message);
-    LoadedScene& loaded = *read;
     if (Expected<void> applied = apply_overrides(flags, loaded.parsed.scene); !applied)
         return fail(exit_usage, applied.error().message);
     std::vector<Diagnostic> diagnostics = check_scene(loaded);
@@ -47,6 +56,7 @@ FrameSetup set_up_frame(std::string_view program, const RenderFlags& flags,
     const bool errors = has_errors(diagnostics);
     if (flags.quiet && !errors) diagnostics.clear();  // quiet drops warnings, never errors
     setup.message = format_diagnostics(diagnostics, loaded.path, loaded.text);
+    setup.diagnostics = std::move(diagnostics);
     if (errors) {
         setup.exit_code = exit_scene_error;
         return setup;

@@ -13,10 +13,12 @@
 #include "jtracer/region.hpp"
 #include "jtracer/render_job.hpp"
 #include "jtracer/scene.hpp"
+#include "jtracer/scene_file.hpp"
 
 #include <optional>
 #include <string>
 #include <string_view>
+#include <vector>
 
 namespace jt::frontend {
 
@@ -25,15 +27,22 @@ struct FrameSetup {
     // To print on stderr whatever the verdict: the diagnostics (warnings only
     // when not quiet), or the error, each line ending in '\n'.
     std::string message;
-    Scene scene;           // with the overrides applied; free of errors
-    RenderOptions render;  // size, samples, camera, threads, region; previews off
-    std::string output;    // the image file to write
+    std::vector<Diagnostic> diagnostics;  // what `message` lists, for a caller that wants them
+    Scene scene;                          // with the overrides applied; free of errors
+    RenderOptions render;                 // size, samples, camera, threads, region; previews off
+    std::string output;                   // the image file to write
     ImageFormat format = ImageFormat::bmp;
 };
 
 // `program` ("jtracer-cli") starts the messages that are not diagnostics.
 // `region` (top-left origin, region.hpp) must lie inside the frame.
 FrameSetup set_up_frame(std::string_view program, const RenderFlags& flags,
+                        const std::optional<FrameRegion>& region = std::nullopt);
+
+// The same for a scene already read (flags.scene_path is not used): what a
+// program that holds scenes in memory (the Python module) renders, set up
+// exactly as the command line sets up a file.
+FrameSetup set_up_frame(std::string_view program, const RenderFlags& flags, LoadedScene loaded,
                         const std::optional<FrameRegion>& region = std::nullopt);
 
 // The scene's camera names, quoted, for messages: "\"front\", \"top\"", or

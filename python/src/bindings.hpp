@@ -1,0 +1,70 @@
+#pragma once
+// The pieces of the `jtracer` Python module, one file each, registered by
+// module.cpp. Everything they do is the core's (or frontend/'s, for what the
+// command line does to a scene before it renders): these files only convert
+// between Python objects and the core's types.
+
+#include "jtracer/diagnostics.hpp"
+#include "jtracer/image.hpp"
+#include "jtracer/render_job.hpp"
+#include "jtracer/scene_file.hpp"
+
+#include <pybind11/numpy.h>
+#include <pybind11/pybind11.h>
+
+#include <array>
+#include <memory>
+#include <mutex>
+#include <optional>
+#include <string>
+#include <vector>
+
+namespace jt::python {
+
+namespace py = pybind11;
+
+// Diagnostic and SceneError (errors.cpp).
+void bind_errors(py::module_& m);
+// Diagnostic objects for `diagnostics` of the file `path` (as given).
+py::list diagnostic_list(const std::vector<Diagnostic>& diagnostics, const std::string& path);
+// Raises jtracer.SceneError: its text is `message` (what --check prints), its
+// .diagnostics the list.
+[[noreturn]] void raise_scene_error(const std::string& message,
+                                    const std::vector<Diagnostic>& diagnostics,
+                                    const std::string& path);
+// Raises OSError with the core's message ("cannot read 'a.png': no such file").
+[[noreturn]] void raise_os_error(const std::string& message);
+
+// Arrays, read_image, write_image, diff (images.cpp).
+void bind_images(py::module_& m);
+// An image as a (height, width, 3) uint8 array, top row first.
+py::array_t<std::uint8_t> to_array(const Image8& image);
+
+// load, parse, check, Scene and its views (scene.cpp).
+void bind_scene(py::module_& m);
+
+// A loaded scene as Python holds it. Read-only from Python: every render
+// starts from `loaded` and applies its own overrides to a copy.
+struct PythonScene {
+    LoadedScene loaded;  // as read and checked, without a source map
+    std::vector<Diagnostic> warnings;
+    // The last render's prepared scene: the next one reuses its acceleration
+    // structure (prepare_scene's `previous`). Renders may run at once on
+    // several Python threads (the GIL is released), hence the mutex.
+    std::mutex prepared_mutex;
+    std::shared_ptr<const PreparedScene> prepared;
+};
+
+// Scene.render's arguments, as Python passes them (None: the scene's own).
+struct RenderArguments {
+    std::optional<int> width, height, samples;
+    std::optional<std::string> camera;
+    int threads = 0;
+    std::optional<std::array<int, 4>> region;  // x0, y0, x1, y1 from the top-left corner
+    py::object progress;                       // None or a callable taking a fraction
+};
+
+// Scene.render (render.cpp).
+py::array_t<std::uint8_t> render_scene(PythonScene& scene, const RenderArguments& arguments);
+
+}  // namespace jt::python

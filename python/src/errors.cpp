@@ -1,0 +1,105 @@
+// How the module fails: jtracer.SceneError holding jtracer.Diagnostic objects
+// (the scene language's findings as `jtracer-cli --check` prints them, one
+// object each), and OSError for what the core reports as an I/O error.
+
+#include "bindings.hpp"
+
+#include <pybind11/operators.h>
+
+#include <utility>
+
+namespace jt::python {
+
+namespace {
+
+// One finding with the file it is about. line and column are 0 for a finding
+// about the file as a whole, as in the core.
+struct PythonDiagnostic {
+    std::string file;
+    int line = 0;
+    int column = 0;
+    std::string severity;  // "error" or "warning"
+    std::string message;
+    bool operator==(const PythonDiagnostic&) const = default;
+};
+
+// "scene.jts:3:12: error: MESSAGE": the first line --check prints for it.
+std::string header_line(const PythonDiagnostic& d) {
+    const Diagnostic core{
+        d.severity == "error" ? Severity::error : Severity::warning, {d.line, d.column}, d.message};
+    const std::string text = format_diagnostic(core, d.file, {});
+    return text.substr(0, text.find('\n'));
+}
+
+// The exception class, made once by bind_diagnostics and kept for the life of
+// the process (a module's types are never unloaded).
+PyObject* scene_error_type = nullptr;
+
+}  // namespace
+
+py::list diagnostic_list(const std::vector<Diagnostic>& diagnostics, const std::string& path) {
+    py::list list;
+    for (const Diagnostic& d : diagnostics)
+        list.append(PythonDiagnostic{path, d.pos.line, d.pos.column,
+                                     d.severity == Severity::error ? "error" : "warning",
+                                     d.message});
+    return list;
+}
+
+void raise_scene_error(const std::string& message, const std::vector<Diagnostic>& diagnostics,
+                       const std::string& path) {
+    std::string text = message;
+    if (!text.empty() && text.back() == '\n') text.pop_back();
+    py::object error = py::reinterpret_borrow<py::object>(scene_error_type)(text);
+    error.attr("diagnostics") = diagnostic_list(diagnostics, path);
+    PyErr_SetObject(scene_error_type, error.ptr());
+    throw py::error_already_set();
+}
+
+void raise_os_error(const std::string& message) {
+    PyErr_SetString(PyExc_OSError, message.c_str());
+    throw py::error_already_set();
+}
+
+void bind_errors(py::module_& m) {
+    py::class_<PythonDiagnostic>(m, "Diagnostic",
+                                 "A finding in a scene file: where, how bad, and what.")
+        .def(py::init([](std::string file, int line, int column, std::string severity,
+                         std::string message) {
+                 if (severity != "error" && severity != "warning")
+                     throw py::value_error("severity: \"error\" or \"warning\", not \"" + severity +
+                                           "\"");
+                 return PythonDiagnostic{std::move(file), line, column, std::move(severity),
+                                         std::move(message)};
+             }),
+             py::arg("file"), py::arg("line"), py::arg("column"), py::arg("severity"),
+             py::arg("message"))
+        .def_readonly("file", &PythonDiagnostic::file, "The file as it was given")
+        .def_readonly("line", &PythonDiagnostic::line, "1-based; 0 when about the whole file")
+        .def_readonly("column", &PythonDiagnostic::column, "1-based, in bytes; 0 with line 0")
+        .def_readonly("severity", &PythonDiagnostic::severity, "\"error\" or \"warning\"")
+        .def_readonly("message", &PythonDiagnostic::message)
+        .def("__str__", &header_line)
+        .def("__repr__",
+             [](const PythonDiagnostic& d) {
+                 return "Diagnostic(file=" + py::repr(py::str(d.file)).cast<std::string>() +
+                        ", line=" + std::to_string(d.line) +
+                        ", column=" + std::to_string(d.column) +
+                        ", severity=" + py::repr(py::str(d.severity)).cast<std::string>() +
+                        ", message=" + py::repr(py::str(d.message)).cast<std::string>() + ")";
+             })
+        .def(py::self == py::self)
+        .def("__hash__", [](const PythonDiagnostic& d) {
+            return py::hash(py::make_tuple(d.file, d.line, d.column, d.severity, d.message));
+        });
+
+    scene_error_type = PyErr_NewExceptionWithDoc(
+        "jtracer.SceneError",
+        "A scene with errors. str() is what `jtracer-cli --check` prints; .diagnostics "
+        "lists them (warnings included) as Diagnostic objects.",
+        PyExc_Exception, nullptr);
+    if (!scene_error_type) throw py::error_already_set();
+    m.add_object("SceneError", py::reinterpret_borrow<py::object>(scene_error_type));
+}
+
+}  // namespace jt::python

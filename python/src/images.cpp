@@ -1,0 +1,130 @@
+// Images as NumPy arrays: (height, width, 3) uint8, the top row first, as
+// NumPy, Pillow and matplotlib hold pictures. The core's Image8 counts rows
+// from the bottom (image.hpp), so each conversion flips the rows.
+// read_image, write_image and diff are the core's, as jtracer-cli uses them.
+
+#include "bindings.hpp"
+
+#include "jtracer/image_diff.hpp"
+#include "jtracer/image_file.hpp"
+#include "jtracer/limits.hpp"
+
+#include <pybind11/stl/filesystem.h>
+
+#include <cmath>
+#include <cstring>
+#include <filesystem>
+
+namespace jt::python {
+
+namespace {
+
+Image8 from_array(const py::array& array) {
+    if (!py::isinstance<py::array_t<std::uint8_t>>(array) ||
+        !array.dtype().is(py::dtype::of<std::uint8_t>()))
+        throw py::type_error("an image is a uint8 array, not " +
+                             py::str(array.dtype()).cast<std::string>());
+    if (array.ndim() != 3 || array.shape(2) != 3)
+        throw py::value_error("an image is an array of shape (height, width, 3), not " +
+                              py::str(py::tuple(array.attr("shape"))).cast<std::string>());
+    const auto pixels = array.unchecked<std::uint8_t, 3>();
+    const py::ssize_t height = pixels.shape(0), width = pixels.shape(1);
+    if (width < 1 || height < 1 || width > kMaxImageSide || height > kMaxImageSide)
+        throw py::value_error("an image is 1.." + std::to_string(kMaxImageSide) +
+                              " pixels on each side, not " + std::to_string(width) + "x" +
+                              std::to_string(height));
+    Image8 image(static_cast<int>(width), static_cast<int>(height));
+    for (py::ssize_t row = 0; row < height; ++row) {
+        std::uint8_t* out = image.pixel(0, static_cast<int>(height - 1 - row));
+        for (py::ssize_t x = 0; x < width; ++x)
+            for (py::ssize_t c = 0; c < 3; ++c) *out++ = pixels(row, x, c);
+    }
+    return image;
+}
+
+Image8 read_or_raise(const std::filesystem::path& path) {
+    Expected<Image8> read = read_image(path);
+    if (!read) raise_os_error(read.error().message);
+    return std::move(*read);
+}
+
+Image8 image_or_path(const py::object& value) {
+    if (py::isinstance<py::array>(value)) return from_array(value.cast<py::array>());
+    return read_or_raise(value.cast<std::filesystem::path>());
+}
+
+}  // namespace
+
+py::array_t<std::uint8_t> to_array(const Image8& image) {
+    py::array_t<std::uint8_t> array({image.height, image.width, 3});
+    std::uint8_t* out = array.mutable_data();
+    const std::size_t row_bytes = static_cast<std::size_t>(image.width) * 3;
+    for (int row = 0; row < image.height; ++row)
+        std::memcpy(out + row * row_bytes, image.pixel(0, image.height - 1 - row), row_bytes);
+    return array;
+}
+
+void bind_images(py::module_& m) {
+    m.def(
+        "read_image",
+        [](const std::filesystem::path& path) { return to_array(read_or_raise(path)); },
+        py::arg("path"),
+        "Reads a BMP or PNG (told apart by their first bytes) as a (height, width, 3) uint8 "
+        "array, the top row first. Raises OSError when it cannot.");
+    m.def(
+        "write_image",
+        [](const std::filesystem::path& path, const py::array& array) {
+            const Image8 image = from_array(array);
+            if (Expected<void> written = write_image(path, image, format_from_extension(path));
+                !written)
+                raise_os_error(written.error().message);
+        },
+        py::arg("path"), py::arg("image"),
+        "Writes a (height, width, 3) uint8 array as jtracer-cli writes images: PNG for a "
+        "name ending in .png, BMP otherwise; through a temporary file, so that a failed "
+        "write leaves no partial file. Raises OSError when it cannot.");
+
+    py::class_<ImageDiff>(m, "Diff",
+                          "jtracer.diff's result: the figures `jtracer-cli diff` prints.")
+        .def_readonly("same_size", &ImageDiff::same_size)
+        .def_readonly("max_difference", &ImageDiff::max_channel_difference,
+                      "The largest difference of one channel of one pixel, 0..255")
+        .def_readonly("pixels", &ImageDiff::pixels, "Pixels in each image (same size only)")
+        .def_readonly("pixels_over", &ImageDiff::pixels_over,
+                      "Pixels with a channel differing by more than the threshold")
+        .def_readonly("percent_over", &ImageDiff::percent_over, "pixels_over, in % of pixels")
+        .def_readonly("mae", &ImageDiff::mean_absolute_error,
+                      "Mean absolute difference over every channel, 0..255")
+        .def_readonly("psnr", &ImageDiff::psnr, "Peak signal-to-noise ratio in dB; inf: equal")
+        .def_property_readonly(
+            "heat_map",
+            [](const ImageDiff& d) -> py::object {
+                if (!d.same_size) return py::none();
+                return to_array(d.image);
+            },
+            "The differences as `jtracer-cli diff -o` writes them (None when the sizes differ)")
+        .def("__repr__", [](const ImageDiff& d) {
+            if (!d.same_size) return std::string("Diff(same_size=False)");
+            char text[200];
+            std::snprintf(text, sizeof text,
+                          "Diff(same_size=True, max_difference=%d, pixels_over=%zu, "
+                          "mae=%.4f, psnr=%s)",
+                          d.max_channel_difference, d.pixels_over, d.mean_absolute_error,
+                          std::isinf(d.psnr) ? "inf" : std::to_string(d.psnr).c_str());
+            return std::string(text);
+        });
+    m.def(
+        "diff",
+        [](const py::object& expected, const py::object& actual, int threshold) {
+            if (threshold < 0 || threshold > 255)
+                throw py::value_error("threshold: 0..255, not " + std::to_string(threshold));
+            const Image8 a = image_or_path(expected), b = image_or_path(actual);
+            py::gil_scoped_release unlocked;
+            return diff_images(a, b, threshold);
+        },
+        py::arg("expected"), py::arg("actual"), py::arg("threshold") = 0,
+        "Compares two images (arrays or paths to BMP or PNG files) as `jtracer-cli diff` does: "
+        "`threshold` is the largest channel difference still counted as equal.");
+}
+
+}  // namespace jt::python

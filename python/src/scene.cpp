@@ -1,0 +1,185 @@
+// jtracer.load, parse and check, and the Scene they return with its read-only
+// views. A view's attributes are the schema's properties (schema.hpp), named
+// and converted from the table, so that a property added there shows here.
+
+#include "bindings.hpp"
+
+#include "jtracer/frontend/render_flags.hpp"
+#include "jtracer/schema.hpp"
+#include "jtracer/serializer.hpp"
+
+#include <pybind11/operators.h>
+#include <pybind11/stl.h>
+#include <pybind11/stl/filesystem.h>
+
+#include <filesystem>
+#include <new>
+
+namespace jt::python {
+
+namespace {
+
+// A property's value as Python holds it: int, float, str, a tuple of three
+// floats for vectors and colours.
+py::object to_python(int value) {
+    return py::int_(value);
+}
+py::object to_python(double value) {
+    return py::float_(value);
+}
+py::object to_python(const std::string& value) {
+    return py::str(value);
+}
+py::object to_python(const Vec3& value) {
+    return py::make_tuple(value.x, value.y, value.z);
+}
+
+// A class whose attributes are the block's schema properties, read-only, with
+// a repr listing them and to_dict().
+template <class Block>
+void bind_view(py::module_& m, const char* name, const char* doc) {
+    py::class_<Block> view(m, name, doc);
+    for (const PropertySpec<Block>& property : schema_of<Block>().properties) {
+        const PropertySpec<Block>* spec = &property;  // the tables are static
+        view.def_property_readonly(std::string(property.name).c_str(), [spec](const Block& b) {
+            return with_member(*spec, b, [](const auto& v) { return to_python(v); });
+        });
+    }
+    view.def(
+        "to_dict",
+        [](const Block& b) {
+            py::dict values;
+            for (const PropertySpec<Block>& p : schema_of<Block>().properties)
+                values[py::str(std::string(p.name))] =
+                    with_member(p, b, [](const auto& v) { return to_python(v); });
+            return values;
+        },
+        "The properties by their names in the scene language");
+    view.def("__repr__", [name](const Block& b) {
+        std::string text = std::string(name) + "(";
+        bool first = true;
+        for (const PropertySpec<Block>& p : schema_of<Block>().properties) {
+            const py::object value = with_member(p, b, [](const auto& v) { return to_python(v); });
+            text += (first ? "" : ", ") + std::string(p.name) + "=" +
+                    py::repr(value).cast<std::string>();
+            first = false;
+        }
+        return text + ")";
+    });
+    view.def(py::self == py::self);
+}
+
+// What `jtracer-cli --check` reports for a loaded scene.
+std::vector<Diagnostic> findings(const LoadedScene& loaded) {
+    std::vector<Diagnostic> diagnostics = check_scene(loaded);
+    frontend::name_setting_flags(diagnostics);
+    return diagnostics;
+}
+
+std::shared_ptr<PythonScene> checked_scene(LoadedScene loaded) {
+    std::vector<Diagnostic> diagnostics = findings(loaded);
+    if (has_errors(diagnostics))
+        raise_scene_error(format_diagnostics(diagnostics, loaded.path, loaded.text), diagnostics,
+                          loaded.path);
+    auto scene = std::make_shared<PythonScene>();
+    scene->loaded = std::move(loaded);
+    scene->warnings = std::move(diagnostics);
+    return scene;
+}
+
+// As jtracer-cli reads a file: without the source map, which check_scene
+// builds only when there is something to locate.
+LoadedScene read_file(const std::filesystem::path& path) {
+    Expected<LoadedScene> loaded = load_scene_file(path, {.source_map = false});
+    if (!loaded) raise_os_error(loaded.error().message);
+    return std::move(*loaded);
+}
+
+}  // namespace
+
+void bind_scene(py::module_& m) {
+    bind_view<RenderSettings>(m, "Settings",
+                              "A scene's render_settings block (read-only): its properties by "
+                              "their names in the scene language.");
+    bind_view<Camera>(m, "Camera",
+                      "One perspective_camera block (read-only): its properties by their "
+                      "names in the scene language.");
+
+    py::class_<PythonScene, std::shared_ptr<PythonScene>>(
+        m, "Scene",
+        "A scene read and checked without errors. Read-only: render() applies its own "
+        "overrides to a copy.")
+        .def_property_readonly(
+            "path", [](const PythonScene& s) { return s.loaded.path; },
+            "The file as given to load(), or parse()'s path")
+        .def_property_readonly("settings",
+                               [](const PythonScene& s) { return s.loaded.parsed.scene.settings; })
+        .def_property_readonly("cameras",
+                               [](const PythonScene& s) { return s.loaded.parsed.scene.cameras; })
+        .def_property_readonly(
+            "warnings",
+            [](const PythonScene& s) { return diagnostic_list(s.warnings, s.loaded.path); },
+            "The warnings `jtracer-cli --check` prints for it, as Diagnostic objects")
+        .def(
+            "text", [](const PythonScene& s) { return serialize_scene(s.loaded.parsed.scene); },
+            "The scene as canonical .jts text (every block and property written out)")
+        .def(
+            "render",
+            [](PythonScene& s, std::optional<int> width, std::optional<int> height,
+               std::optional<int> samples, std::optional<std::string> camera, int threads,
+               std::optional<std::array<int, 4>> region, py::object progress) {
+                return render_scene(s, {width, height, samples, std::move(camera), threads, region,
+                                        std::move(progress)});
+            },
+            py::arg("width") = py::none(), py::arg("height") = py::none(),
+            py::arg("samples") = py::none(), py::arg("camera") = py::none(), py::arg("threads") = 0,
+            py::arg("region") = py::none(), py::arg("progress") = py::none(),
+            "Renders as `jtracer-cli` renders the same scene with the same options and "
+            "returns the image as a (height, width, 3) uint8 array, the top row first; the "
+            "same bytes as jtracer-cli's BMP. width, height, samples and camera (a name) "
+            "override the scene's; threads=0 uses every core. region=(x0, y0, x1, y1), "
+            "counted from the top-left corner as --region, renders only those pixels (the "
+            "rest stays black). progress, when given, is called with the fraction done "
+            "(0..1) now and then, on the calling thread. The GIL is released while the "
+            "render runs; Ctrl+C stops it with KeyboardInterrupt.")
+        .def("__repr__", [](const PythonScene& s) {
+            const Scene& scene = s.loaded.parsed.scene;
+            return "<jtracer.Scene " + py::repr(py::str(s.loaded.path)).cast<std::string>() + ": " +
+                   std::to_string(scene.primitives.size()) + " primitives, " +
+                   std::to_string(scene.lights.size()) + " lights, " +
+                   std::to_string(scene.cameras.size()) + " cameras>";
+        });
+
+    m.def(
+        "load", [](const std::filesystem::path& path) { return checked_scene(read_file(path)); },
+        py::arg("path"),
+        "Reads and checks a .jts file. Raises SceneError (with .diagnostics) when it has "
+        "errors, OSError when it cannot be read.");
+    m.def(
+        "parse",
+        [](std::string text, const std::filesystem::path& path) {
+            LoadedScene loaded;
+            loaded.path = path.string();
+            loaded.options = {.source_map = false};
+            loaded.text = std::move(text);
+            loaded.parsed = parse_scene(loaded.text, loaded.options);
+            if (loaded.parsed.out_of_memory) throw std::bad_alloc();
+            loaded.parsed.scene.asset_folder = path.parent_path().string();
+            return checked_scene(std::move(loaded));
+        },
+        py::arg("text"), py::arg("path") = "<string>",
+        "Parses and checks .jts text. `path` names it in diagnostics, and its folder is "
+        "where the scene's relative file names (meshes, image maps) are found; the "
+        "default, \"<string>\", looks in the current directory. Raises SceneError.");
+    m.def(
+        "check",
+        [](const std::filesystem::path& path) {
+            const LoadedScene loaded = read_file(path);
+            return diagnostic_list(findings(loaded), loaded.path);
+        },
+        py::arg("path"),
+        "What `jtracer-cli --check` reports for a .jts file, errors and warnings, as a list "
+        "of Diagnostic objects (empty: none). Raises OSError when it cannot be read.");
+}
+
+}  // namespace jt::python

@@ -1,0 +1,109 @@
+# jtracer.load / parse / check, SceneError and the scene's read-only views.
+import re
+
+import jtracer
+import pytest
+from conftest import run
+
+BAD = """render_settings { width: 64; height: 32; }
+cameras { perspective_camera { position: <0, 0, 5>; look_at: <0, 0, 0>; aspect: 2; } }
+scene {
+    sphere { radius: -1; }
+    point_light { position: <1, 2, 3>; intensity: <1, 1, 1>; colour: 2; }
+}
+"""
+
+WARNED = """render_settings { width: 64; height: 32; }
+cameras { perspective_camera { position: <0, 0, 5>; look_at: <0, 0, 0>; aspect: 1; } }
+scene { sphere { radius: 1; } }
+"""
+
+
+def test_scene_error_is_what_check_prints(tmp_path, cli):
+    path = tmp_path / "bad.jts"
+    path.write_text(BAD)
+    code, _, printed = run(cli, "--check", path, check=False)
+    assert code == 1
+    with pytest.raises(jtracer.SceneError) as raised:
+        jtracer.load(path)
+    assert str(raised.value) + "\n" == printed
+    diagnostics = raised.value.diagnostics
+    assert len(diagnostics) >= 2
+    # Each Diagnostic's str() is the header line --check prints for it.
+    headers = [line for line in printed.splitlines() if re.match(r"\S.*: (error|warning): ", line)]
+    assert [str(d) for d in diagnostics] == headers
+    first = diagnostics[0]
+    assert (first.file, first.line, first.severity) == (str(path), 4, "error")
+    assert first.column > 0 and "radius" in first.message
+    assert jtracer.check(path) == diagnostics
+
+
+def test_check_lists_warnings_without_raising(tmp_path, cli):
+    path = tmp_path / "warned.jts"
+    path.write_text(WARNED)
+    _, _, printed = run(cli, "--check", path)
+    found = jtracer.check(path)
+    assert found and all(d.severity == "warning" for d in found)
+    assert [str(d) for d in found] == [l for l in printed.splitlines() if ": warning: " in l]
+    scene = jtracer.load(path)
+    assert scene.warnings == found
+    assert jtracer.check(tmp_path / "../" / tmp_path.name / "warned.jts")[0].file.endswith(
+        "warned.jts"
+    )
+
+
+def test_parse_names_its_text_and_finds_files_beside_its_path(source_dir):
+    with pytest.raises(jtracer.SceneError) as raised:
+        jtracer.parse(BAD)
+    assert raised.value.diagnostics[0].file == "<string>"
+    assert str(raised.value).startswith("<string>:4:")
+    # The globe's image map is found from the path's folder, as load would.
+    globe = source_dir / "scenes" / "globe.jts"
+    scene = jtracer.parse(globe.read_text(), path=globe)
+    assert scene.render(width=32, height=18).shape == (18, 32, 3)
+
+
+def test_unreadable_files_raise_oserror(tmp_path):
+    with pytest.raises(OSError, match="no such file"):
+        jtracer.load(tmp_path / "missing.jts")
+    with pytest.raises(OSError, match="directory"):
+        jtracer.check(tmp_path)
+
+
+def test_views_have_the_schema_names_and_values(showcase):
+    scene = jtracer.load(showcase)
+    text = scene.text()
+    settings = scene.settings
+    assert (settings.width, settings.height) == (800, 450)
+    assert settings.active_camera == "Main"
+    assert isinstance(settings.background, tuple) and len(settings.background) == 3
+    # Every property the canonical text writes for the block is an attribute of
+    # the view, with the same name (the schema's) and the same value.
+    block = re.search(r"render_settings \{(.*?)\n\}", text, re.S).group(1)
+    written = dict(re.findall(r"^\s+(\w+): (.+);$", block, re.M))
+    assert written and set(written) <= set(settings.to_dict())
+    assert written["width"] == "800" and written["filename"] == '"showcase.bmp"'
+    names = [c.name for c in scene.cameras]
+    assert names == ["Main", "High Angle"]
+    main = scene.cameras[0]
+    assert set(main.to_dict()) == {"name", "position", "look_at", "up", "aspect", "fov"}
+    assert main.fov == pytest.approx(38.0)
+    assert "Camera(name='Main', position=(0.0, 2.4, 9.0)" in repr(main)
+    with pytest.raises(AttributeError):
+        main.fov = 10.0  # read-only
+    with pytest.raises(AttributeError):
+        scene.settings.width = 1
+
+
+def test_text_reads_back_as_the_same_scene(showcase):
+    scene = jtracer.load(showcase)
+    again = jtracer.parse(scene.text(), path=showcase)
+    assert again.text() == scene.text()
+    assert again.cameras == scene.cameras and again.settings == scene.settings
+
+
+def test_version_is_the_programs(cli):
+    _, printed, _ = run(cli, "--version")
+    assert printed.split()[1] == jtracer.__version__
+    assert printed.strip() == "jtracer-cli " + jtracer.version_string
+    assert re.fullmatch(r"\d+\.\d+\.\d+", jtracer.__version__)
