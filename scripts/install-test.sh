@@ -157,6 +157,10 @@ deb=$work/deb/jtracer_${version}_amd64.deb
 depends=$(dpkg-deb -f "$deb" Depends)
 echo "Depends: $depends"
 grep -q 'libtbb' <<<"$depends" || fail "Depends lacks the TBB library: $depends"
+if [ -n "$python_dir" ]; then
+    suggests=$(dpkg-deb -f "$deb" Suggests)
+    grep -q 'python3-numpy' <<<"$suggests" || fail "Suggests lacks python3-numpy: $suggests"
+fi
 contents=$(dpkg-deb -c "$deb")
 if grep -q '/usr/local/' <<<"$contents"; then fail "the .deb installs under /usr/local"; fi
 
