@@ -2,7 +2,7 @@
 // input comes, nothing changes on disk. Dear ImGui's rule is that such a frame
 // allocates nothing; this prints how far the viewer is from it.
 //
-//   viewer_idle_frame [--frames N] [--objects N[,N...]]
+//   viewer_idle_frame [--frames N] [--objects N[,N...]] [--where]
 //
 // For each scene size (default 10 and 100,000 spheres) the scene is opened in
 // the viewer's own frame code (OSMesa, as the tests do) and rendered to the
@@ -11,7 +11,8 @@
 // ImGui, the texture, drawn by OSMesa in software). Figures: the main
 // thread's CPU time per frame (median, min, max) and the heap allocations the
 // frame made with operator new (C++ code: ours and the standard library;
-// Mesa's and ImGui's malloc calls are not counted).
+// Mesa's and ImGui's malloc calls are not counted). --where prints the call
+// stack of each allocation of the last frame measured, to find them.
 
 #include "app_actions.hpp"
 #include "headless.hpp"
@@ -30,6 +31,7 @@
 #include <string>
 #include <vector>
 
+#include <execinfo.h>
 #include <unistd.h>
 
 namespace {
@@ -37,6 +39,7 @@ namespace {
 // Counts only what the thread that set `counting` allocates: the render and
 // loader threads are idle, but a stray wakeup must not be blamed on the frame.
 thread_local bool counting = false;
+bool print_where = false;
 std::atomic<long long> allocations{0};
 std::atomic<long long> allocated_bytes{0};
 
@@ -44,6 +47,14 @@ void* counted_new(std::size_t size) {
     if (counting) {
         allocations.fetch_add(1, std::memory_order_relaxed);
         allocated_bytes.fetch_add(static_cast<long long>(size), std::memory_order_relaxed);
+        if (print_where) {
+            counting = false;  // backtrace() may allocate
+            void* frames[24];
+            const int n = backtrace(frames, 24);
+            std::fprintf(stderr, "allocation of %zu bytes:\n", size);
+            backtrace_symbols_fd(frames, n, 2);
+            counting = true;
+        }
     }
     if (void* p = std::malloc(size ? size : 1)) return p;
     throw std::bad_alloc();
@@ -108,14 +119,16 @@ struct FrameCost {
 };
 
 template <typename Frame>
-FrameCost measure(int frames, Frame&& frame) {
+FrameCost measure(int frames, Frame&& frame, bool where) {
     FrameCost cost;
     for (int i = 0; i < frames; ++i) {
+        print_where = where && i + 1 == frames;
         const long long a0 = allocations.load(), b0 = allocated_bytes.load();
         const double t0 = thread_cpu_ms();
         counting = true;
         frame();
         counting = false;
+        print_where = false;
         cost.cpu_ms.push_back(thread_cpu_ms() - t0);
         cost.allocations.push_back(allocations.load() - a0);
         cost.bytes.push_back(allocated_bytes.load() - b0);
@@ -142,6 +155,7 @@ void print(const char* what, int objects, const FrameCost& cost) {
 int main(int argc, char** argv) {
     int frames = 50;
     std::vector<int> sizes = {10, 100000};
+    bool where = false;
     for (int i = 1; i < argc; ++i) {
         const std::string arg = argv[i];
         if (arg == "--frames" && i + 1 < argc) {
@@ -151,13 +165,17 @@ int main(int argc, char** argv) {
             std::stringstream list(argv[++i]);
             for (std::string item; std::getline(list, item, ',');)
                 sizes.push_back(std::max(1, std::atoi(item.c_str())));
+        } else if (arg == "--where") {
+            where = true;
         } else {
-            std::fprintf(stderr, "usage: viewer_idle_frame [--frames N] [--objects N[,N...]]\n");
+            std::fprintf(stderr,
+                         "usage: viewer_idle_frame [--frames N] [--objects N[,N...]] [--where]\n");
             return 2;
         }
     }
     setenv("LP_NUM_THREADS", "1", 0);
     HeadlessViewer viewer(1280, 720);
+    viewer.set_check_revisions(false);  // a test's check, not the viewer's cost
     if (!viewer.ok()) {
         std::fprintf(stderr, "viewer_idle_frame: no OSMesa context: %s\n", viewer.error().c_str());
         return 1;
@@ -174,8 +192,12 @@ int main(int argc, char** argv) {
                          objects, state.message.c_str());
             return 1;
         }
-        print("model frame", objects, measure(frames, [&] { model_frame(state); }));
-        print("whole frame", objects, measure(frames, [&] { viewer.frame(state); }));
+        print("model frame", objects,
+              measure(
+                  frames, [&] { model_frame(state); }, where));
+        print("whole frame", objects,
+              measure(
+                  frames, [&] { viewer.frame(state); }, where));
         std::filesystem::remove(file);
     }
     return 0;

@@ -178,6 +178,7 @@ TEST_F(ViewerGl, SaveSceneWritesOnlyTheEditedValues) {
     ASSERT_TRUE(viewer.run_until_complete(state, kTimeout));
     state.doc.scene.primitives[1].material.pigment = Colour(0.25, 0.5, 0.75);
     state.doc.scene.settings.samples = 2;
+    note_scene_changed(state.doc);  // as a panel field announces its change
     viewer.frame(state);
     viewer.press_key(state, keys::letter('S'), /*ctrl=*/true);
     EXPECT_FALSE(has_unsaved_edits(state.doc)) << state.message;
@@ -233,6 +234,7 @@ TEST_F(ViewerGl, ResumeContinuesThePausedRenderWhereItStopped) {
     state.doc.scene.settings.width = 128;
     state.doc.scene.settings.height = 72;
     state.doc.scene.settings.samples = 128;  // passes up to 128 samples: time to pause
+    note_scene_changed(state.doc);
     viewer.frame(state);
     const auto deadline = std::chrono::steady_clock::now() + kTimeout;
     while (state.renderer.progress().samples_done < 2 &&

@@ -9,6 +9,8 @@
 
 #include <algorithm>
 #include <cstdio>
+#include <cstdlib>
+#include <optional>
 
 namespace jt::view {
 
@@ -46,7 +48,18 @@ void HeadlessViewer::frame(AppState& state) {
                             static_cast<int>(context_.height() / scale_), scale_, 1.0f / 30.0f);
     layer_.set_scale(content_scale_, scale_);
     layer_.begin_frame();
+    // The frames compare the document's revision, not its scenes: a change
+    // made without announcing it would never be rendered nor undone.
+    std::optional<Scene> scene_before;
+    if (check_revisions_) scene_before = state.doc.scene;
+    const std::uint64_t revision_before = state.doc.revision;
     viewer_frame(state, frame_state_, FrameInfo{scale_});
+    if (scene_before && state.doc.revision == revision_before && *scene_before != state.doc.scene) {
+        std::fprintf(stderr,
+                     "HeadlessViewer: a frame changed the scene without note_scene_changed: "
+                     "the change would be neither rendered nor undoable\n");
+        std::abort();
+    }
     layer_.end_frame(context_.width(), context_.height());
     const double seconds =
         std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();

@@ -58,6 +58,9 @@ class HeadlessViewer {
     // Simulates the monitor's content scale (Xft.dpi 192: 2), as
     // glfwGetWindowContentScale reports it.
     void set_content_scale(float scale) { content_scale_ = scale > 0 ? scale : 1.0f; }
+    // Every frame() checks that a change of the scene bumped the document's
+    // revision (what the frames compare), aborting when not; off for benchmarks.
+    void set_check_revisions(bool on) { check_revisions_ = on; }
     // The longest frame() so far, in seconds.
     double slowest_frame() const { return slowest_frame_; }
     // The same less the time the thread waited for a core while runnable: on a
@@ -87,6 +90,7 @@ class HeadlessViewer {
     FrameState frame_state_;  // after the context: its texture goes first
     float scale_ = 1.0f;
     float content_scale_ = 1.0f;
+    bool check_revisions_ = true;
     double slowest_frame_ = 0.0;
     double slowest_unqueued_frame_ = 0.0;
 };

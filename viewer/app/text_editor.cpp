@@ -45,11 +45,12 @@ std::string_view line_text(const std::string& text, int line) {
 // Keeps the document's text in the buffer: recomputed only when the document changed.
 void follow_document(const AppState& state, TextEditorState& ed) {
     const SceneDocument& doc = state.doc;
-    if (doc.text == ed.shown_base && doc.draft == ed.shown_draft && doc.scene == ed.shown_scene)
+    if (doc.revision == ed.shown_revision && doc.text == ed.shown_base &&
+        doc.draft == ed.shown_draft)
         return;
     ed.shown_base = doc.text;
     ed.shown_draft = doc.draft;
-    ed.shown_scene = doc.scene;
+    ed.shown_revision = doc.revision;
     std::string text = document_text(doc);
     if (text == ed.shown) return;
     ed.shown = text;

@@ -9,6 +9,7 @@
 #include "app_state.hpp"
 #include "jtracer/scene.hpp"
 
+#include <cstdint>
 #include <optional>
 #include <string>
 
@@ -20,7 +21,7 @@ struct TextEditorState {
     std::string shown;   // the document text `buffer` was last set from
     // The document the shown text was made from (document_text is not free).
     std::string shown_base;
-    Scene shown_scene;
+    std::uint64_t shown_revision = 0;  // SceneDocument::revision
     std::optional<std::string> shown_draft;
     bool push = false;             // the buffer changed under an active widget
     int cursor = 0;                // byte offset of the cursor, while the widget is active

@@ -514,8 +514,7 @@ void viewer_frame(AppState& state, FrameState& frame, const FrameInfo& info) {
     reload_if_changed(state);
     take_finished_load(state);
     take_checked_text(state);
-    const Scene before = state.doc.scene;
-    const std::uint64_t generation = state.scene_generation;
+    const EditMark before = begin_edit_tracking(state);
     // Keys zoom about the image as the last frame placed it.
     handle_shortcuts(state, frame, place(state, frame, frame.image_area, info.framebuffer_scale));
 
@@ -541,7 +540,7 @@ void viewer_frame(AppState& state, FrameState& frame, const FrameInfo& info) {
     }
     if (revealing) state.reveal_selection = false;  // the panels have shown it
     unsaved_prompt(state);
-    track_edits(state, before, generation, ImGui::IsAnyItemActive());
+    track_edits(state, before, ImGui::IsAnyItemActive());
     check_edits(state);
     update_render(state);
     const std::optional<PixelRect> changed = take_display_changes(state);

@@ -30,7 +30,7 @@ void after_scene_replaced(AppState& state, const Scene& before) {
     state.edit_base.reset();
     state.pending_reload.reset();
     state.save_conflict.clear();
-    ++state.scene_generation;
+    note_command_edit(state);
 }
 
 bool has_located(const std::vector<Diagnostic>& diagnostics) {
@@ -152,7 +152,7 @@ namespace {
 // image (update_render), and one that loads is shown.
 void files_changed(AppState& state, bool models) {
     if (models) state.renderer.forget_prepared();
-    state.checked_scene.reset();
+    state.checked_revision.reset();
     state.rejected.reset();
     state.started.reset();
 }
@@ -234,6 +234,7 @@ void resolve_reload(AppState& state, ReloadChoice choice) {
     after_scene_replaced(state, before);
     if (edited) {
         state.doc.scene = std::move(*edited);
+        note_command_edit(state);
         keep_camera_selection(state, before);
         // One undo shows the file as it is.
         state.undo.record({state.doc.text, state.doc.original, std::nullopt});
@@ -250,8 +251,8 @@ bool save_now(AppState& state) {
         state.message = "Scene not saved: " + saved.error().message;
         return false;
     }
-    state.watcher.acknowledge();  // our own write is not an outside change
-    state.checked_scene.reset();  // the diagnostics now describe the new text
+    state.watcher.acknowledge();     // our own write is not an outside change
+    state.checked_revision.reset();  // the diagnostics now describe the new text
     state.save_conflict.clear();
     state.pending_reload.reset();
     state.message = "Saved " + state.doc.path.string();
@@ -309,7 +310,7 @@ bool save_scene_as(AppState& state, const std::filesystem::path& path, bool repl
     }
     state.watcher = FileWatcher(state.config.watch_interval);
     state.watcher.watch(path);
-    state.checked_scene.reset();
+    state.checked_revision.reset();
     state.save_conflict.clear();
     state.pending_reload.reset();
     state.recent.add(path);
@@ -324,16 +325,16 @@ void check_edits(AppState& state) {
     // newer text: both stay until the file is fixed or the user chooses.
     if (!doc.loaded || doc.load_failed ||
         (state.pending_reload && state.pending_reload->text != doc.disk_text) || doc.draft) {
-        state.checked_scene.reset();
+        state.checked_revision.reset();
         return;
     }
-    if (state.checked_scene && *state.checked_scene == doc.scene) return;
+    if (state.checked_revision == doc.revision) return;
     doc.diagnostics = doc.parse_diagnostics;
     std::vector<Diagnostic> more = validate_scene(doc.scene, doc.source);
     doc.diagnostics.insert(doc.diagnostics.end(), more.begin(), more.end());
     doc.diagnostics_source = doc.text;
     doc.diagnostics_path = doc.path;
-    state.checked_scene = doc.scene;
+    state.checked_revision = doc.revision;
 }
 
 void edit_scene(AppState& state, const std::function<void(Scene&)>& change) {
@@ -342,7 +343,7 @@ void edit_scene(AppState& state, const std::function<void(Scene&)>& change) {
     change(state.doc.scene);
     keep_camera_selection(state, before);
     state.undo.record(version);
-    ++state.scene_generation;
+    note_command_edit(state);
 }
 
 namespace {
@@ -379,7 +380,7 @@ void step_history(AppState& state, Step step, const char* done) {
     }
     recheck_draft(state);
     state.edit_base.reset();
-    ++state.scene_generation;
+    note_command_edit(state);
 }
 
 }  // namespace
@@ -394,15 +395,33 @@ void redo(AppState& state) {
         state, [&](auto current) { return state.undo.redo(std::move(current)); }, "Redone");
 }
 
-void track_edits(AppState& state, const Scene& before_frame, std::uint64_t generation_before,
-                 bool widget_active) {
-    if (state.scene_generation != generation_before) {
+void note_command_edit(AppState& state) {
+    ++state.scene_generation;
+    note_scene_changed(state.doc);
+}
+
+EditMark begin_edit_tracking(AppState& state) {
+    if (!state.edit_base && state.settled_revision != state.doc.revision) {
+        state.settled_scene = state.doc.scene;
+        state.settled_revision = state.doc.revision;
+    }
+    return {state.doc.revision, state.scene_generation};
+}
+
+void track_edits(AppState& state, EditMark before, bool widget_active) {
+    if (state.scene_generation != before.generation) {
         state.edit_base.reset();
         return;
     }
-    if (state.doc.scene != before_frame && !state.edit_base) state.edit_base = before_frame;
+    if (state.doc.revision != before.revision && !state.edit_base &&
+        state.settled_revision == before.revision) {
+        state.edit_base = std::move(state.settled_scene);
+        state.settled_revision.reset();
+    }
     if (!widget_active && state.edit_base) {
-        state.undo.record({state.doc.text, *state.edit_base, state.doc.draft});
+        // A field touched and put back leaves no step to undo.
+        if (*state.edit_base != state.doc.scene)
+            state.undo.record({state.doc.text, *state.edit_base, state.doc.draft});
         state.edit_base.reset();
     }
 }
@@ -459,7 +478,7 @@ bool copy_free_camera_to_scene(AppState& state, const std::string& name) {
     const DocumentVersion version = version_of(state.doc);
     state.doc.scene.cameras.push_back(std::move(camera));
     state.undo.record(version);
-    ++state.scene_generation;
+    note_command_edit(state);
     state.camera_index = static_cast<int>(state.doc.scene.cameras.size()) - 1;
     state.free_camera_active = false;
     state.message = "Added camera \"" + name + "\" (Save scene to keep it)";
@@ -536,18 +555,20 @@ std::optional<RenderRequest> render_request(const AppState& state, std::string& 
         note = "No scene loaded";
         return std::nullopt;
     }
-    RenderRequest request;
-    request.scene = state.doc.scene;
-    if (request.scene.cameras.empty()) {
+    const Scene& scene = state.doc.scene;
+    if (scene.cameras.empty()) {
         note = "The scene has no camera";
         return std::nullopt;
     }
+    RenderRequest request;
+    request.scene_revision = state.doc.revision;
+    request.primitive_count = scene.primitives.size();
     request.options.camera = selected_camera(state);
     if (state.free_camera_active) {
-        request.scene.cameras.push_back(camera_from(state.free_camera, "viewer"));
-        request.options.camera = static_cast<int>(request.scene.cameras.size()) - 1;
+        request.free_camera = state.free_camera;
+        request.options.camera = static_cast<int>(scene.cameras.size());
     }
-    const RenderSettings& settings = request.scene.settings;
+    const RenderSettings& settings = scene.settings;
     request.options.width = settings.width;
     request.options.height = settings.height;
     if (settings.width <= 0 || settings.height <= 0) {
@@ -570,6 +591,12 @@ std::optional<RenderRequest> render_request(const AppState& state, std::string& 
     // the render is (and with a software GL the frame needs a core too).
     request.options.background = state.config.render_in_background;
     return request;
+}
+
+Scene scene_to_render(const AppState& state, const RenderRequest& request) {
+    Scene scene = state.doc.scene;
+    if (request.free_camera) scene.cameras.push_back(camera_from(*request.free_camera, "viewer"));
+    return scene;
 }
 
 namespace {
@@ -605,14 +632,15 @@ void update_render(AppState& state) {
         if (request && request == state.rejected) {
             state.render_note = state.rejected_reason;
         } else if (request && request != state.started) {
-            if (const std::string error = validation_error(request->scene); !error.empty()) {
+            const Scene scene = scene_to_render(state, *request);
+            if (const std::string error = validation_error(scene); !error.empty()) {
                 // Keep the last image rather than render nonsense; say why.
                 state.rejected = std::move(request);
                 state.rejected_reason = "Not rendered: " + error;
                 state.render_note = state.rejected_reason;
             } else {
                 state.rejected.reset();
-                state.renderer.start(request->scene, request->options);
+                state.renderer.start(scene, request->options);
                 state.started = std::move(request);
                 state.display_complete = false;
                 wait_for_first_pass(state);

@@ -67,11 +67,23 @@ void edit_scene(AppState& state, const std::function<void(Scene&)>& change);
 void undo(AppState& state);
 void redo(AppState& state);
 
-// Called once a frame with the scene as it was before the frame's widgets ran:
-// records one undo step per continuous edit (a whole drag is one step).
-// Changes made by commands (see AppState::scene_generation) are not edits.
-void track_edits(AppState& state, const Scene& before_frame, std::uint64_t generation_before,
-                 bool widget_active);
+// Every command that changes the scene and keeps the undo stack itself (open,
+// reload, undo, structure edits, drags) announces it with this: the change is
+// then not taken for a panel edit (AppState::scene_generation).
+void note_command_edit(AppState& state);
+
+// Where the document stood before a frame's widgets ran.
+struct EditMark {
+    std::uint64_t revision = 0;    // SceneDocument::revision
+    std::uint64_t generation = 0;  // AppState::scene_generation
+};
+// Called before the frame's widgets run; keeps state.settled_scene current
+// (a copy once per change, none on a frame with nothing to do).
+EditMark begin_edit_tracking(AppState& state);
+// Called after them, with begin_edit_tracking's mark: records one undo step
+// per continuous panel edit (a whole drag is one step). A panel field that
+// changes the scene says so with note_scene_changed(state.doc).
+void track_edits(AppState& state, EditMark before, bool widget_active);
 
 // The index of the scene camera the view shows (or the free camera started
 // from): always one of the scene's cameras, -1 when it has none. Every command
@@ -118,6 +130,9 @@ std::optional<PixelRect> take_display_changes(AppState& state);
 // The render that update_render would start now, or nothing (with the reason
 // in `note`) when there is nothing to render.
 std::optional<RenderRequest> render_request(const AppState& state, std::string& note);
+// The scene a request renders: the document's, with the free camera added
+// when it renders.
+Scene scene_to_render(const AppState& state, const RenderRequest& request);
 
 // A pass as a user reads it: "preview 1/8", "full resolution", "sample 4 of 16".
 std::string pass_label(const RenderProgress& progress, int target_samples);

@@ -46,14 +46,19 @@ struct ViewerConfig {
     int max_pixels = 4096 * 4096;  // larger images are refused, not allocated
 };
 
-// What the current render was started from; a new render starts when this changes.
+// What the current render was started from; a new render starts when this
+// changes. Cheap to make and compare every frame: the scene is named by its
+// revision, and copied for the render only when one starts.
 struct RenderRequest {
-    Scene scene;
+    std::uint64_t scene_revision = 0;       // SceneDocument::revision
+    std::optional<FreeCamera> free_camera;  // renders instead of a scene camera
+    std::size_t primitive_count = 0;        // of the scene rendered (picking's check)
     RenderOptions options;
     bool operator==(const RenderRequest& other) const {
-        return scene == other.scene && options.width == other.options.width &&
-               options.height == other.options.height && options.samples == other.options.samples &&
-               options.camera == other.options.camera && options.region == other.options.region;
+        return scene_revision == other.scene_revision && free_camera == other.free_camera &&
+               options.width == other.options.width && options.height == other.options.height &&
+               options.samples == other.options.samples && options.camera == other.options.camera &&
+               options.region == other.options.region;
     }
 };
 
@@ -150,6 +155,11 @@ struct AppState {
     bool camera_name_editing = false;
     std::optional<Scene>
         edit_base;  // the scene before the edit in progress (one undo step per drag)
+    // The scene as it was when no edit was in progress, at settled_revision:
+    // the edit_base of the next panel edit, copied once per change rather
+    // than every frame (begin_edit_tracking).
+    Scene settled_scene;
+    std::optional<std::uint64_t> settled_revision;
     // Bumped by every command that replaces the scene and keeps the undo stack
     // itself (open, reload, undo, redo, scripted edits), so that the change is
     // not mistaken for a widget edit.
@@ -170,8 +180,8 @@ struct AppState {
     std::optional<GuardedCommand> unsaved_prompt;
     std::string save_as_conflict;  // the file Save scene as would replace, until confirmed
     std::string save_scene_path;   // the Save scene as field
-    // The scene the diagnostics were last checked for (check_edits).
-    std::optional<Scene> checked_scene;
+    // The revision of the scene the diagnostics were last checked for (check_edits).
+    std::optional<std::uint64_t> checked_revision;
 
     // Which camera renders: one of the scene's, or the free camera.
     int camera_index = 0;

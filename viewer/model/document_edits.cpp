@@ -39,7 +39,7 @@ Expected<void> rewrite_text(AppState& state,
     if (doc.draft) return Error{"The text has errors: fix them in the text editor first"};
     const Scene before = doc.scene;
     Expected<std::string> edited = Error{""};
-    if (doc.scene == doc.original) {
+    if (!scene_edited(doc)) {
         edited = edit(SceneText{doc.text, doc.original, doc.source});
     } else {
         // The panels' edits become text first, so that the edit starts from what is shown.
@@ -53,7 +53,7 @@ Expected<void> rewrite_text(AppState& state,
     keep_camera_selection(state, before);
     state.edit_base.reset();
     state.typing = false;
-    ++state.scene_generation;
+    note_command_edit(state);
     return {};
 }
 
@@ -275,8 +275,8 @@ void take_in(AppState& state, CheckedText checked) {
     take_text(doc, std::move(checked.text), std::move(checked.parsed));
     doc.loaded = true;  // a file that never loaded (empty, broken) now has a scene
     keep_camera_selection(state, before);
-    state.checked_scene = doc.scene;  // the diagnostics describe it already
-    ++state.scene_generation;
+    note_command_edit(state);
+    state.checked_revision = doc.revision;  // the diagnostics describe it already
     state.message = "The text parses: the image follows it";
 }
 

@@ -13,6 +13,7 @@ struct FreeCamera {
     Vec3 up{0.0, 1.0, 0.0};  // the orbit axis: the scene camera's up
     double aspect = 1.0;
     double fov = 45.0;
+    bool operator==(const FreeCamera&) const = default;
 };
 
 FreeCamera free_camera_from(const Camera& camera);

@@ -1,5 +1,6 @@
 #include "object_drag.hpp"
 
+#include "app_actions.hpp"
 #include "document_edits.hpp"
 #include "jtracer/affine.hpp"
 #include "jtracer/model_cache.hpp"
@@ -118,7 +119,8 @@ bool write_value(AppState& state, const Vec3& value) {
     }
     drag.written = value;
     drag.changed = true;
-    drag.generation = ++state.scene_generation;
+    note_command_edit(state);
+    drag.generation = state.scene_generation;
     return true;
 }
 
@@ -217,7 +219,7 @@ void finish_object_drag(AppState& state, const ImagePoint& at, bool one_axis) {
     if (drag.written == drag.start) {
         if (drag.changed) {
             restore_version(state.doc, drag.before);
-            ++state.scene_generation;
+            note_command_edit(state);
         }
         state.message = "Not moved: let go where it started";
         return;
@@ -233,7 +235,7 @@ void cancel_object_drag(AppState& state) {
     state.object_drag.reset();
     if (drag.changed && drag.generation == state.scene_generation) {
         restore_version(state.doc, drag.before);
-        ++state.scene_generation;
+        note_command_edit(state);
     }
     state.message = "Move cancelled";
 }

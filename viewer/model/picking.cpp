@@ -8,8 +8,7 @@
 namespace jt::view {
 
 std::shared_ptr<const PreparedFrame> shown_frame(AppState& state) {
-    if (!state.started ||
-        state.started->scene.primitives.size() != state.doc.scene.primitives.size())
+    if (!state.started || state.started->primitive_count != state.doc.scene.primitives.size())
         return nullptr;
     std::shared_ptr<const PreparedScene> scene = state.renderer.current_prepared();
     if (!scene) return nullptr;

@@ -58,6 +58,7 @@ void accept_load(SceneDocument& doc, const std::filesystem::path& path, LoadAtte
     doc.source = std::move(attempt.source);
     doc.scene = doc.original;
     doc.draft.reset();
+    note_scene_changed(doc);
 }
 
 DocumentVersion version_of(const SceneDocument& doc) {
@@ -75,12 +76,13 @@ void restore_version(SceneDocument& doc, const DocumentVersion& version) {
     }
     doc.scene = version.scene;
     doc.draft = version.draft;
+    note_scene_changed(doc);
 }
 
 std::string document_text(const SceneDocument& doc) {
     if (doc.draft) return *doc.draft;
     if (!doc.loaded) return doc.disk_text;
-    if (doc.scene == doc.original) return doc.text;
+    if (!scene_edited(doc)) return doc.text;
     SourceEditResult edit = apply_scene_edits(doc.text, doc.source, doc.original, doc.scene);
     return edit.ok() ? std::move(edit.text) : doc.text;
 }
@@ -93,6 +95,7 @@ void take_text(SceneDocument& doc, std::string text, ParseResult parsed) {
     doc.scene = doc.original;
     doc.draft.reset();
     doc.load_failed = false;
+    note_scene_changed(doc);
 }
 
 Expected<void> replace_text(SceneDocument& doc, std::string text) {
@@ -114,9 +117,15 @@ std::string format_diagnostics(const SceneDocument& doc) {
     return out;
 }
 
+bool scene_edited(const SceneDocument& doc) {
+    if (!doc.edited_at || doc.edited_at->first != doc.revision)
+        doc.edited_at = {doc.revision, doc.scene != doc.original};
+    return doc.edited_at->second;
+}
+
 bool has_unsaved_edits(const SceneDocument& doc) {
     return (doc.loaded || doc.draft) &&
-           (doc.draft || doc.scene != doc.original || doc.text != doc.disk_text);
+           (doc.draft || scene_edited(doc) || doc.text != doc.disk_text);
 }
 
 bool file_changed_on_disk(const SceneDocument& doc, std::string& what) {
@@ -171,6 +180,9 @@ Expected<void> save_scene_copy(SceneDocument& doc, const std::filesystem::path& 
     doc.text = std::move(edit.text);
     doc.disk_text = doc.text;
     doc.original = doc.scene;
+    // The scene itself did not change (no new revision: it is no edit), but
+    // it now equals the original.
+    doc.edited_at = {doc.revision, false};
     doc.source = std::move(check.source);
     doc.diagnostics = check.diagnostics;
     doc.parse_diagnostics = std::move(check.diagnostics);
@@ -181,7 +193,12 @@ Expected<void> save_scene_copy(SceneDocument& doc, const std::filesystem::path& 
 
 bool document_is_blank(const SceneDocument& doc) {
     if (doc.path.empty() || doc.file_unread) return false;
-    return document_text(doc).find_first_not_of(" \t\r\n") == std::string::npos;
+    constexpr const char* blank = " \t\r\n";
+    // Asked every frame: the text is looked at where it is, not copied.
+    if (doc.draft) return doc.draft->find_first_not_of(blank) == std::string::npos;
+    if (!doc.loaded) return doc.disk_text.find_first_not_of(blank) == std::string::npos;
+    if (!scene_edited(doc)) return doc.text.find_first_not_of(blank) == std::string::npos;
+    return document_text(doc).find_first_not_of(blank) == std::string::npos;
 }
 
 }  // namespace jt::view

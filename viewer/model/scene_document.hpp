@@ -13,9 +13,11 @@
 #include "jtracer/source_map.hpp"
 
 #include <chrono>
+#include <cstdint>
 #include <filesystem>
 #include <optional>
 #include <string>
+#include <utility>
 #include <vector>
 
 namespace jt::view {
@@ -39,7 +41,19 @@ struct SceneDocument {
     // or with errors (`diagnostics` then describe it and `scene` is the last
     // good one).
     std::optional<std::string> draft;
+    // Counts the changes of `scene`, whoever makes them (a load, a panel
+    // field, a drag, undo): a frame compares this number instead of the
+    // scenes, so that a frame with nothing to do copies and compares nothing.
+    std::uint64_t revision = 0;
+    // Whether `scene` differs from `original`, as found at a revision: asked
+    // every frame (the title's "*"), it is worked out once per change.
+    mutable std::optional<std::pair<std::uint64_t, bool>> edited_at;
 };
+
+// Every change of doc.scene is announced with this.
+inline void note_scene_changed(SceneDocument& doc) {
+    ++doc.revision;
+}
 
 // What undo brings back: the document's base text, its scene as edited, its draft.
 struct DocumentVersion {
@@ -96,6 +110,8 @@ void accept_load(SceneDocument& doc, const std::filesystem::path& path, LoadAtte
 std::string format_diagnostics(const SceneDocument& doc);
 
 bool has_unsaved_edits(const SceneDocument& doc);
+// The scene differs from the one its text holds (panel edits not yet saved).
+bool scene_edited(const SceneDocument& doc);
 
 // A file with nothing in it (its text blank): one to start a scene in
 // (start_new_scene).

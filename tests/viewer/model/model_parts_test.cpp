@@ -310,18 +310,18 @@ TEST(EditTracking, AWholeDragIsOneUndoStep) {
     state.doc.loaded = true;
     const Scene start = state.doc.scene;
     for (int frame = 0; frame < 5; ++frame) {  // the widget stays active while dragging
-        const Scene before = state.doc.scene;
+        const EditMark before = begin_edit_tracking(state);
         state.doc.scene.settings.width += 10;
-        track_edits(state, before, state.scene_generation, /*widget_active=*/true);
+        note_scene_changed(state.doc);  // as the panel field does
+        track_edits(state, before, /*widget_active=*/true);
     }
     EXPECT_FALSE(state.undo.can_undo()) << "recorded when the drag ends";
-    track_edits(state, state.doc.scene, state.scene_generation, /*widget_active=*/false);
+    track_edits(state, begin_edit_tracking(state), /*widget_active=*/false);
     EXPECT_EQ(state.undo.size(), 1u);
-    const Scene dragged = state.doc.scene;
-    const auto generation = state.scene_generation;
+    const EditMark before_undo = begin_edit_tracking(state);
     undo(state);
     EXPECT_EQ(state.doc.scene, start);
-    track_edits(state, dragged, generation, false);  // the frame in which undo ran
+    track_edits(state, before_undo, false);  // the frame in which undo ran
     EXPECT_TRUE(state.undo.can_redo()) << "undo is not mistaken for an edit";
     redo(state);
     EXPECT_EQ(state.doc.scene.settings.width, 50);

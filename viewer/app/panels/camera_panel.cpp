@@ -50,7 +50,7 @@ void scene_camera_editor(AppState& state, int selected) {
         command = [&state, index, name = state.camera_name_input] {
             rename_camera(state, index, name);
         };
-    edit_properties(camera);
+    if (edit_properties(camera)) note_scene_changed(state.doc);
     const Scene& scene = state.doc.scene;
     const std::string no_size = scene.settings.width > 0 && scene.settings.height > 0
                                     ? ""

@@ -39,7 +39,7 @@ void lights_panel(AppState& state) {
             same_line_if_fits("Delete");
             if (button("Delete", "Remove this light's block from the text (Ctrl+Z brings it back)"))
                 command = [&state, ref] { delete_block(state, ref); };
-            edit_properties(lights[i]);
+            if (edit_properties(lights[i])) note_scene_changed(state.doc);
             ImGui::TreePop();
         }
         ImGui::PopID();

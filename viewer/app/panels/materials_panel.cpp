@@ -5,8 +5,8 @@
 
 namespace jt::view {
 
-void material_editor(Material& m) {
-    edit_properties(m);
+bool material_editor(Material& m) {
+    return edit_properties(m);
 }
 
 }  // namespace jt::view

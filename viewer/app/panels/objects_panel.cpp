@@ -20,8 +20,8 @@ namespace jt::view {
 
 namespace {
 
-void shape_editor(Shape& shape) {
-    std::visit([](auto& s) { edit_properties(s); }, shape);
+bool shape_editor(Shape& shape) {
+    return std::visit([](auto& s) { return edit_properties(s); }, shape);
 }
 
 std::string object_name(const Primitive& p, std::size_t index) {
@@ -163,7 +163,7 @@ void objects_panel(AppState& state) {
     same_line_if_fits("Delete");
     if (button("Delete", "Remove this object's block from the text (Ctrl+Z brings it back)"))
         command = [&state, ref] { delete_block(state, ref); };
-    shape_editor(p.shape);
+    if (shape_editor(p.shape)) note_scene_changed(state.doc);
     if (const auto* mesh = std::get_if<Mesh>(&p.shape)) model_file_row(state, *mesh, i, command);
     ImGui::Separator();
     ImGui::TextDisabled("material");
@@ -173,7 +173,7 @@ void objects_panel(AppState& state) {
                    "Write this object's material into its block, to edit it there"))
             command = [&state, i] { add_material_block(state, i); };
     }
-    material_editor(p.material);
+    if (material_editor(p.material)) note_scene_changed(state.doc);
     ImGui::Separator();
     ImGui::TextDisabled("transform");
     if (!has_child(state.doc, i, "transform")) {
@@ -181,7 +181,8 @@ void objects_panel(AppState& state) {
         if (button("Add transform block", "Give this object an empty transform block"))
             command = [&state, i] { add_transform_block(state, i); };
     }
-    if (std::optional<TransformCommand> op = transform_editor(p.transforms))
+    bool transform_changed = false;
+    if (std::optional<TransformCommand> op = transform_editor(p.transforms, transform_changed))
         command = [&state, i, op = *op] {
             switch (op.kind) {
                 case TransformCommand::Kind::add:
@@ -195,6 +196,7 @@ void objects_panel(AppState& state) {
                     break;
             }
         };
+    if (transform_changed) note_scene_changed(state.doc);
     ImGui::PopID();
     if (command) command();
 }

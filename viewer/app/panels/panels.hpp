@@ -18,7 +18,9 @@ void help_panel();
 void status_line(AppState& state);
 
 // Parts of objects_panel, one primitive at a time.
-void material_editor(Material& material);
+// Each field that changes the scene makes the editor return true (or set
+// `changed`): the caller announces it with note_scene_changed.
+bool material_editor(Material& material);
 // What the transform editor's buttons ask for: run after the panel is drawn,
 // since it replaces the scene the panel holds references into.
 struct TransformCommand {
@@ -27,7 +29,8 @@ struct TransformCommand {
     std::size_t to = 0;                           // where it moves
     TransformKind op = TransformKind::translate;  // the kind added
 };
-std::optional<TransformCommand> transform_editor(std::vector<TransformOp>& transforms);
+std::optional<TransformCommand> transform_editor(std::vector<TransformOp>& transforms,
+                                                 bool& changed);
 
 // "sample 4 of 16 | 1.2 s elapsed, about 3.0 s left | 3.4 Mrays/s",
 // "paused at preview 1/4 | edit waiting: Space renders it", "done: ..."

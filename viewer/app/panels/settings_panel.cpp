@@ -9,7 +9,7 @@ void settings_panel(AppState& state) {
     if (!panel_header("Render settings", "Render settings", true)) return;
     ImGui::BeginDisabled(!state.doc.loaded);
     RenderSettings& s = state.doc.scene.settings;
-    edit_properties(s);
+    if (edit_properties(s)) note_scene_changed(state.doc);
     ImGui::EndDisabled();
 }
 

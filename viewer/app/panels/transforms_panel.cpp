@@ -9,13 +9,15 @@
 
 namespace jt::view {
 
-std::optional<TransformCommand> transform_editor(std::vector<TransformOp>& transforms) {
+std::optional<TransformCommand> transform_editor(std::vector<TransformOp>& transforms,
+                                                 bool& changed) {
     std::optional<TransformCommand> command;
     if (transforms.empty()) ImGui::TextDisabled("no transform operations");
     const std::size_t count = transforms.size();
     for (std::size_t i = 0; i < count; ++i) {
         ImGui::PushID(static_cast<int>(i));
-        edit_property(transform_op(transforms[i].kind).property, transforms[i]);
+        changed =
+            edit_property(transform_op(transforms[i].kind).property, transforms[i]) || changed;
         if (button("Up", "Move this operation one place earlier (applied before the one above)",
                    i == 0 ? "It is already the first" : ""))
             command = TransformCommand{TransformCommand::Kind::move, i, i - 1, {}};

@@ -1,0 +1,131 @@
+// A frame with nothing to do (the render finished, no input, no change on
+// disk) must cost nothing that grows with the scene: Dear ImGui's rule is that
+// an idle frame allocates nothing. This executable counts the main thread's
+// operator new calls, so it has one of its own.
+
+#include "app_actions.hpp"
+#include "common/scratch_dir.hpp"
+#include "headless.hpp"
+#include "model_frame.hpp"
+#include "viewer_test_files.hpp"
+
+#include <gtest/gtest.h>
+
+#include <cstdlib>
+#include <fstream>
+#include <new>
+#include <sstream>
+
+namespace {
+
+thread_local bool counting = false;
+long long allocations = 0;
+long long allocated_bytes = 0;
+
+void* counted_new(std::size_t size) {
+    if (counting) {
+        ++allocations;
+        allocated_bytes += static_cast<long long>(size);
+    }
+    if (void* p = std::malloc(size ? size : 1)) return p;
+    throw std::bad_alloc();
+}
+
+}  // namespace
+
+void* operator new(std::size_t size) {
+    return counted_new(size);
+}
+void* operator new[](std::size_t size) {
+    return counted_new(size);
+}
+void operator delete(void* p) noexcept {
+    std::free(p);
+}
+void operator delete[](void* p) noexcept {
+    std::free(p);
+}
+void operator delete(void* p, std::size_t) noexcept {
+    std::free(p);
+}
+void operator delete[](void* p, std::size_t) noexcept {
+    std::free(p);
+}
+
+namespace jt::view {
+namespace {
+
+struct Allocated {
+    long long count = 0, bytes = 0;
+};
+
+template <typename Frame>
+Allocated allocated_by(Frame&& frame) {
+    const long long count = allocations, bytes = allocated_bytes;
+    counting = true;
+    frame();
+    counting = false;
+    return {allocations - count, allocated_bytes - bytes};
+}
+
+// Enough objects that a copy of the scene (about 40 MB for 100,000) stands
+// out from anything a frame of the panels needs.
+constexpr int kObjects = 20000;
+
+std::filesystem::path write_scene(const std::filesystem::path& folder) {
+    std::ostringstream text;
+    text << "render_settings { width: 64; height: 36; }\n"
+            "cameras { perspective_camera { position: <0, 0, 30>; look_at: <0, 0, 0>; "
+            "aspect: 1.7777777777777777; fov: 60; } }\n"
+            "scene {\npoint_light { position: <10, 20, 40>; intensity: <1, 1, 1>; }\n";
+    for (int i = 0; i < kObjects; ++i)
+        text << "sphere { center: <" << (i % 150) * 0.1 - 7.5 << ", " << (i / 150) * 0.1 - 7
+             << ", 0>; radius: 0.04; }\n";
+    text << "}\n";
+    const auto path = folder / "many.jts";
+    std::ofstream(path, std::ios::binary) << text.str();
+    return path;
+}
+
+class IdleFrame : public ::testing::Test {
+  protected:
+    void SetUp() override {
+        ASSERT_TRUE(viewer.ok()) << viewer.error();
+        viewer.set_check_revisions(false);  // its copies would be counted
+        open_scene(state, write_scene(dir.path()));
+        ASSERT_TRUE(viewer.run_until_complete(state, test::kTimeout, 5)) << state.message;
+    }
+    test::ScratchDir dir{"idle-frame"};
+    HeadlessViewer viewer{960, 640};
+    AppState state{test::test_config()};
+};
+
+TEST_F(IdleFrame, TheModelSideAllocatesNothing) {
+    for (int i = 0; i < 5; ++i) {
+        const Allocated a = allocated_by([&] { model_frame(state); });
+        EXPECT_EQ(a.count, 0) << a.bytes << " bytes in frame " << i;
+    }
+}
+
+TEST_F(IdleFrame, AWholeFrameCopiesNoScene) {
+    for (int i = 0; i < 5; ++i) {
+        const Allocated a = allocated_by([&] { viewer.frame(state); });
+        // What remains is a few labels, whatever the scene's size.
+        EXPECT_LT(a.bytes, 16 * 1024) << a.count << " allocations in frame " << i;
+    }
+}
+
+TEST_F(IdleFrame, AnEditAfterIdleFramesStillRendersAndUndoes) {
+    for (int i = 0; i < 3; ++i) viewer.frame(state);
+    const std::uint64_t jobs = state.renderer.jobs_started();
+    edit_scene(state, [](Scene& s) { s.primitives[7].material.pigment = Colour(1, 0, 0); });
+    viewer.frame(state);
+    EXPECT_GT(state.renderer.jobs_started(), jobs) << "the edit starts a render";
+    undo(state);
+    viewer.frame(state);
+    EXPECT_EQ(state.doc.scene, state.doc.original);
+    EXPECT_FALSE(has_unsaved_edits(state.doc));
+}
+
+}  // namespace
+}  // namespace jt::view
