@@ -1,11 +1,14 @@
 #include "diff_command.hpp"
 
+#include "comparison_report.hpp"
+
 #include "jtracer/frontend/render_flags.hpp"
 #include "jtracer/image_diff.hpp"
 #include "jtracer/image_file.hpp"
 
 #include <CLI/CLI.hpp>
 
+#include <chrono>
 #include <cmath>
 #include <cstdio>
 #include <filesystem>
@@ -44,6 +47,40 @@ std::string report(const ImageDiff& d, const Tolerance& tolerance) {
     return text;
 }
 
+double seconds_since(std::chrono::steady_clock::time_point start) {
+    return std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
+}
+
+// The report of a comparison of `expected` with `actual`, whose heat map is
+// left in `diff.image`; `report.diff` keeps the figures only.
+ComparisonReport compared(ComparisonReport r, const Image8& expected, const Image8& actual,
+                          ImageDiff& diff, const Tolerance& tolerance) {
+    r.expected_size = ImageSize{expected.width, expected.height};
+    r.actual_size = ImageSize{actual.width, actual.height};
+    r.threshold = tolerance.threshold;
+    r.max_percent = tolerance.max_percent;
+    r.verdict = within(diff, tolerance) ? Verdict::within : Verdict::outside;
+    r.text = diff.same_size ? report(diff, tolerance) : "the sizes differ\n";
+    Image8 heat_map = std::move(diff.image);  // not copied into the report
+    r.diff = diff;
+    diff.image = std::move(heat_map);
+    return r;
+}
+
+// Writes --junit's file when asked; on failure says why and returns false.
+bool junit_written(const std::optional<std::string>& junit, const ComparisonReport& r,
+                   const std::string& suite, const std::string& program) {
+    if (!junit) return true;
+    if (const Expected<void> written = write_junit(*junit, r, suite); !written) {
+        std::cerr << program << ": --junit: " << written.error().message << "\n";
+        return false;
+    }
+    return true;
+}
+
+constexpr const char* kDiffSuite = "jtracer-cli diff";
+constexpr const char* kExpectSuite = "jtracer-cli --expect";
+
 }  // namespace
 
 void add_tolerance_flags(CLI::App& app, Tolerance& tolerance) {
@@ -58,8 +95,9 @@ void add_tolerance_flags(CLI::App& app, Tolerance& tolerance) {
 int run_diff_command(int argc, char** argv) {
     std::string expected_path, actual_path;
     std::string heat_map_path;
+    std::optional<std::string> junit;
     Tolerance tolerance;
-    bool quiet = false;
+    bool quiet = false, json = false;
     CLI::App app{"jtracer-cli diff: compares two images (BMP or PNG, any mix) pixel by pixel.",
                  "jtracer-cli diff"};
     app.footer(
@@ -69,84 +107,163 @@ int run_diff_command(int argc, char** argv) {
         "Examples:\n"
         "  jtracer-cli diff reference.png render.png                    exact match\n"
         "  jtracer-cli diff reference.png render.bmp --threshold 2 --max-pixels 0.1 -o diff.png\n"
+        "  jtracer-cli diff reference.png render.png --json --junit report.xml   for CI\n"
         "\n"
         "Exit codes: 0 within the tolerance, 1 outside it (or the sizes differ), 2 bad\n"
-        "command line, 3 an image that cannot be read or a heat map that cannot be written.\n");
+        "command line, 3 an image that cannot be read or a heat map or report that cannot\n"
+        "be written.\n");
     app.add_option("expected", expected_path, "The reference image (BMP or PNG)")->required();
     app.add_option("actual", actual_path, "The image to check against it (BMP or PNG)")->required();
     app.add_option("-o,--output", heat_map_path,
                    "Write a heat map of the differences here (PNG, or BMP for a .bmp name): "
                    "pixels over the threshold from red to white, the rest dim grey");
     add_tolerance_flags(app, tolerance);
+    app.add_flag("--json", json,
+                 "Print the comparison as one JSON object instead: both paths and sizes, the "
+                 "tolerance, the figures, the verdict and the heat map's path");
+    app.add_option("--junit", junit,
+                   "Also write the comparison as a JUnit XML test case to this file, failed "
+                   "outside the tolerance with the figures as its message")
+        ->type_name("FILE");
     app.add_flag("-q,--quiet", quiet, "Print nothing but errors; the exit code tells the result");
     if (std::optional<int> code = parse_command_line(app, argc, argv, "jtracer-cli diff"))
         return *code;
 
+    const std::string program = "jtracer-cli diff";
+    const auto start = std::chrono::steady_clock::now();
+    ComparisonReport r;
+    r.name = actual_path;
+    r.expected_path = expected_path;
+    r.actual_path = actual_path;
+    r.threshold = tolerance.threshold;
+    r.max_percent = tolerance.max_percent;
+    // Prints the JSON and writes the JUnit file, whatever the verdict.
+    auto finish = [&](int code) -> int {
+        r.seconds = seconds_since(start);
+        if (json) std::cout << comparison_json(r) << "\n";
+        if (!junit_written(junit, r, kDiffSuite, program)) return exit_io_error;
+        return code;
+    };
     try {
         Expected<Image8> expected = read_image(expected_path);
         Expected<Image8> actual = expected ? read_image(actual_path) : Expected<Image8>(Image8{});
         for (const Expected<Image8>* image : {&expected, &actual})
             if (!*image) {
-                std::cerr << "jtracer-cli diff: " << image->error().message << "\n";
-                return exit_io_error;
+                std::cerr << program << ": " << image->error().message << "\n";
+                r.error = image->error().message;
+                if (expected) r.expected_size = ImageSize{expected->width, expected->height};
+                return finish(exit_io_error);
             }
-        const ImageDiff d = diff_images(*expected, *actual, tolerance.threshold);
-        const bool ok = within(d, tolerance);
-        if (!quiet) {
+        ImageDiff d = diff_images(*expected, *actual, tolerance.threshold);
+        r = compared(std::move(r), *expected, *actual, d, tolerance);
+        if (!quiet && !json) {
             std::cout << expected_path << ": " << size_text(*expected) << "\n"
-                      << actual_path << ": " << size_text(*actual) << "\n";
-            if (d.same_size)
-                std::cout << report(d, tolerance);
-            else
-                std::cout << "the sizes differ\n";
-            std::cout << (ok ? "within the tolerance\n" : "OUTSIDE the tolerance\n");
+                      << actual_path << ": " << size_text(*actual) << "\n"
+                      << r.text
+                      << (r.verdict == Verdict::within ? "within the tolerance\n"
+                                                       : "OUTSIDE the tolerance\n");
         }
         if (!heat_map_path.empty()) {
             if (!d.same_size) {
-                std::cerr << "jtracer-cli diff: the sizes differ, so no heat map was written\n";
+                std::cerr << program << ": the sizes differ, so no heat map was written\n";
             } else if (const Expected<void> written = write_image(
                            heat_map_path, d.image, format_from_extension(heat_map_path));
                        !written) {
-                std::cerr << "jtracer-cli diff: " << written.error().message << "\n";
-                return exit_io_error;
+                std::cerr << program << ": " << written.error().message << "\n";
+                return finish(exit_io_error);
+            } else {
+                r.heat_map_path = heat_map_path;
             }
         }
-        return ok ? exit_ok : exit_outside_tolerance;
+        return finish(r.verdict == Verdict::within ? exit_ok : exit_outside_tolerance);
     } catch (const std::bad_alloc&) {
-        std::cerr << "jtracer-cli diff: out of memory\n";
+        std::cerr << program << ": out of memory\n";
         return exit_io_error;
     }
 }
 
 int check_expected(const Image8& render, const std::string& render_path,
-                   const std::string& reference, const Tolerance& tolerance, bool quiet) {
+                   const ExpectOptions& expect, double seconds) {
+    const std::string& reference = expect.reference;
+    ComparisonReport r;
+    r.name = expect.scene_path;
+    r.expected_path = reference;
+    r.actual_path = render_path;
+    r.threshold = expect.tolerance.threshold;
+    r.max_percent = expect.tolerance.max_percent;
+    r.actual_size = ImageSize{render.width, render.height};
+    r.seconds = seconds;
+    auto finish = [&](int code) -> int {
+        return junit_written(expect.junit, r, kExpectSuite, "jtracer-cli") ? code : exit_io_error;
+    };
+    // --update: the render replaces the reference, in the format its name asks for.
+    auto update = [&](const std::string& why) -> int {
+        if (const Expected<void> written =
+                write_image(reference, render, format_from_extension(reference));
+            !written) {
+            std::cerr << "jtracer-cli: --update: " << written.error().message << "\n";
+            r.verdict = Verdict::error;
+            r.error = written.error().message;
+            return finish(exit_io_error);
+        }
+        std::cerr << "updated " << reference << " with the render (" << why << ")\n";
+        r.verdict = Verdict::updated;
+        return finish(exit_ok);
+    };
+
     const Expected<Image8> expected = read_image(reference);
     if (!expected) {
+        if (expect.update) return update("it could not be read: " + expected.error().message);
         std::cerr << "jtracer-cli: --expect: " << expected.error().message << "\n";
-        return exit_io_error;
+        r.verdict = Verdict::error;
+        r.error = expected.error().message;
+        return finish(exit_io_error);
     }
-    const ImageDiff d = diff_images(*expected, render, tolerance.threshold);
-    if (within(d, tolerance)) {
-        if (!quiet) std::cerr << "matches " << reference << "\n";
-        return exit_ok;
+    ImageDiff d = diff_images(*expected, render, expect.tolerance.threshold);
+    r = compared(std::move(r), *expected, render, d, expect.tolerance);
+    if (r.verdict == Verdict::within) {
+        if (!expect.quiet) std::cerr << "matches " << reference << "\n";
+        return finish(exit_ok);
     }
     if (!d.same_size) {
+        const std::string sizes =
+            "the render is " + size_text(render) + ", the reference " + size_text(*expected);
+        if (expect.update) return update(sizes);
         std::cerr << "jtracer-cli: the render (" << size_text(render) << ", in " << render_path
                   << ") is not the size of " << reference << " (" << size_text(*expected) << ")\n";
-        return exit_outside_tolerance;
+        return finish(exit_outside_tolerance);
+    }
+    if (expect.update) {
+        char why[96];
+        std::snprintf(why, sizeof why, "it differed: max channel difference %d, %zu pixels over",
+                      d.max_channel_difference, d.pixels_over);
+        return update(why);
     }
     const std::string heat_map_path =
         std::filesystem::path(render_path).replace_extension(".diff.png").string();
-    std::cerr << "jtracer-cli: the render differs from " << reference << ":\n"
-              << report(d, tolerance);
+    std::cerr << "jtracer-cli: the render differs from " << reference << ":\n" << r.text;
     if (const Expected<void> written = write_image(heat_map_path, d.image, ImageFormat::png);
         !written) {
         std::cerr << "jtracer-cli: " << written.error().message << "\n";
-        return exit_io_error;
+        return finish(exit_io_error);
     }
+    r.heat_map_path = heat_map_path;
     std::cerr << "the render is in " << render_path << ", the differences in " << heat_map_path
               << "\n";
-    return exit_outside_tolerance;
+    return finish(exit_outside_tolerance);
+}
+
+int record_failed_render(const ExpectOptions& expect, int code) {
+    if (!expect.junit) return code;
+    ComparisonReport r;
+    r.name = expect.scene_path;
+    r.expected_path = expect.reference;
+    r.threshold = expect.tolerance.threshold;
+    r.max_percent = expect.tolerance.max_percent;
+    r.verdict = Verdict::error;
+    r.error = "the render failed (jtracer-cli exit code " + std::to_string(code) +
+              "), so it was not compared; its messages are on stderr";
+    return junit_written(expect.junit, r, kExpectSuite, "jtracer-cli") ? code : exit_io_error;
 }
 
 }  // namespace jt::cli

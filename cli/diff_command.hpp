@@ -1,10 +1,12 @@
 #pragma once
 // Comparing images from the command line, for users' CI: `jtracer-cli diff
 // EXPECTED ACTUAL` and `jtracer-cli scene.jts --expect REFERENCE`, both on
-// core's diff_images and both with the same tolerance flags.
+// core's diff_images and both with the same tolerance flags, and both able to
+// leave a JUnit XML file of the comparison (comparison_report.hpp).
 
 #include "jtracer/image.hpp"
 
+#include <optional>
 #include <string>
 
 namespace CLI {
@@ -25,16 +27,34 @@ struct Tolerance {
 // Declares --threshold and --max-pixels.
 void add_tolerance_flags(CLI::App& app, Tolerance& tolerance);
 
-// `jtracer-cli diff ...`: argv[0] is "diff". Prints the comparison on stdout.
-// Exit codes: 0 within the tolerance, 1 outside it (or sizes differ), 2 bad
-// command line, 3 an image that cannot be read or a heat map not written.
+// `jtracer-cli diff ...`: argv[0] is "diff". Prints the comparison on stdout
+// (with --json as one JSON object). Exit codes: 0 within the tolerance, 1
+// outside it (or sizes differ), 2 bad command line, 3 an image that cannot be
+// read or a heat map or JUnit file not written.
 int run_diff_command(int argc, char** argv);
 
-// --expect: compares the render written to `render_path` with `reference`
+// What --expect does besides comparing.
+struct ExpectOptions {
+    std::string reference;
+    Tolerance tolerance;
+    bool update = false;               // --update: a render that differs replaces the reference
+    std::optional<std::string> junit;  // --junit FILE
+    std::string scene_path;            // the JUnit test case's name
+    bool quiet = false;
+};
+
+// --expect: compares the render written to `render_path` with the reference
 // and reports on stderr. Outside the tolerance it writes the heat map beside
-// the render (out.png -> out.diff.png) and returns 1; 3 when the reference
-// cannot be read or the heat map not written; 0 within the tolerance.
+// the render (out.png -> out.diff.png) and returns 1, or with `update` writes
+// the render over the reference and returns 0; 3 when the reference cannot be
+// read (without `update`) or a file not written; 0 within the tolerance.
+// `seconds`: the render's time, for the JUnit file.
 int check_expected(const Image8& render, const std::string& render_path,
-                   const std::string& reference, const Tolerance& tolerance, bool quiet);
+                   const ExpectOptions& expect, double seconds);
+
+// --expect --junit when the render failed before any comparison (exit code
+// `code`): the test case in error. Returns `code`, or 3 when the file could
+// not be written.
+int record_failed_render(const ExpectOptions& expect, int code);
 
 }  // namespace jt::cli

@@ -65,7 +65,13 @@ bool render(jt::RenderJob& job, jt::frontend::ProgressStyle progress) {
     return job.progress().finished;
 }
 
-int run(const Options& o) {
+ExpectOptions expect_options(const Options& o) {
+    return {o.expect.value_or(""), o.tolerance, o.update, o.junit, o.scene_path, o.quiet};
+}
+
+// `compared` is set once the render is compared with --expect's reference.
+int run(const Options& o, bool& compared) {
+    const auto start = std::chrono::steady_clock::now();
     const FrameSetup setup = set_up_frame("jtracer-cli", o, o.region);
     std::cerr << setup.message;
     if (setup.exit_code != exit_ok) return setup.exit_code;
@@ -110,7 +116,12 @@ int run(const Options& o) {
         std::cerr << "wrote " << output << ": "
                   << render_summary(options.width, options.height, options.samples, job.progress())
                   << "\n";
-    if (o.expect) return check_expected(job.image(), output, *o.expect, o.tolerance, o.quiet);
+    if (o.expect) {
+        compared = true;
+        return check_expected(
+            job.image(), output, expect_options(o),
+            std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count());
+    }
     return exit_ok;
 }
 
@@ -121,15 +132,20 @@ int main(int argc, char** argv) {
         return run_diff_command(argc - 1, argv + 1);
     ParsedOptions parsed = parse_options(argc, argv);
     if (parsed.exit_code) return *parsed.exit_code;
+    const Options& o = parsed.options;
+    bool compared = false;
+    int code = exit_io_error;
     try {
-        if (parsed.options.list_cameras) return list_cameras(parsed.options.scene_path);
-        return run(parsed.options);
+        if (o.list_cameras) return list_cameras(o.scene_path);
+        code = run(o, compared);
     } catch (const std::bad_alloc&) {
         std::cerr << "jtracer-cli: out of memory (the scene or the image is too large for the "
                      "memory available); nothing was written\n";
-        return exit_io_error;
     } catch (const std::exception& e) {
         std::cerr << "jtracer-cli: " << e.what() << "; nothing was written\n";
-        return exit_io_error;
     }
+    // --expect --junit: a render that failed is a test case in error.
+    if (o.expect && !compared && code != exit_ok)
+        return record_failed_render(expect_options(o), code);
+    return code;
 }

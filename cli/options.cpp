@@ -20,6 +20,8 @@ ParsedOptions parse_options(int argc, char** argv) {
         "  jtracer-cli --check scenes/showcase.jts          only checks the scene\n"
         "  jtracer-cli scenes/showcase.jts --region 0,0,960,540 --region-output -o part.bmp\n"
         "  jtracer-cli scenes/showcase.jts -o shot.png --expect ref.png --threshold 2\n"
+        "  jtracer-cli scenes/showcase.jts -o shot.png --expect ref.png --update\n"
+        "                                                   rewrites ref.png if they differ\n"
         "  jtracer-cli diff ref.png shot.png -o diff.png     compares two images (see diff "
         "--help)\n"
         "\n"
@@ -48,6 +50,13 @@ ParsedOptions parse_options(int argc, char** argv) {
                    "(out.png -> out.diff.png) and exit 1")
         ->type_name("REFERENCE");
     add_tolerance_flags(app, o.tolerance);
+    app.add_flag("--update", o.update,
+                 "With --expect: when the render differs from the reference (or it is missing), "
+                 "write the render over it, say so and exit 0; never after a failed render");
+    app.add_option("--junit", o.junit,
+                   "With --expect: also write the comparison as a JUnit XML test case to this "
+                   "file, failed outside the tolerance with the figures as its message")
+        ->type_name("FILE");
     // For the shell completions; not a user's option.
     app.add_flag("--list-cameras", o.list_cameras)->group("");
     // Rules between options, reported like CLI11's own errors.
@@ -66,6 +75,9 @@ ParsedOptions parse_options(int argc, char** argv) {
         const bool tolerance_given = app.count("--threshold") + app.count("--max-pixels") > 0;
         if (tolerance_given && !o.expect)
             throw CLI::ValidationError("--threshold/--max-pixels", "need --expect REFERENCE");
+        if ((o.update || o.junit) && !o.expect)
+            throw CLI::ValidationError(o.update ? "--update" : "--junit",
+                                       "needs --expect REFERENCE");
     };
     if (std::optional<int> code =
             frontend::parse_command_line(app, argc, argv, "jtracer-cli", checks))

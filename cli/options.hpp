@@ -21,7 +21,9 @@ struct Options : frontend::RenderFlags {
     // Compare the written render with this reference image (diff_command.hpp).
     std::optional<std::string> expect;
     Tolerance tolerance;
-    bool list_cameras = false;  // print the scene's camera names only (list_cameras.hpp)
+    bool update = false;               // --update: a render that differs replaces the reference
+    std::optional<std::string> junit;  // --junit FILE: the comparison as a JUnit test case
+    bool list_cameras = false;         // print the scene's camera names only (list_cameras.hpp)
 };
 
 struct ParsedOptions {

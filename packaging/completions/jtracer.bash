@@ -41,12 +41,12 @@ _jtracer() {
     jtracer-cli)
         if [[ ${COMP_WORDS[1]} == diff ]] && ((COMP_CWORD > 1)); then
             program=jtracer-cli-diff
-            options='-h --help -o --output --threshold --max-pixels -q --quiet'
+            options='-h --help -o --output --threshold --max-pixels --json --junit -q --quiet'
             positional='*.@(bmp|BMP|png|PNG)'
         else
             options='-h --help --version -o --output --camera --width --height --samples
                 --threads -q --quiet --progress --region --region-output --check --expect --threshold
-                --max-pixels'
+                --max-pixels --update --junit'
         fi
         ;;
     jtracer-mpi)
@@ -78,6 +78,10 @@ _jtracer() {
         ;;
     --expect | --save-render)
         _jtracer_files '*.@(bmp|BMP|png|PNG)'
+        return
+        ;;
+    --junit)
+        _jtracer_files '*.@(xml|XML)'
         return
         ;;
     --camera)
