@@ -110,6 +110,13 @@ def test_other_python_threads_run_while_it_renders(showcase):
     assert took > 0.2 and ticks > 0.25 * took / 0.001
 
 
+# The command line's bound (tests/hardening/interruption_test.cpp): on an idle
+# machine the render stops within a tick and a tile, some 0.1 s, but a loaded
+# one (the suite runs tests side by side) may take seconds to schedule it; an
+# unanswered Ctrl+C leaves the render running for minutes.
+STOP_LIMIT_SECONDS = 5.0
+
+
 @pytest.mark.parametrize("with_progress", [False, True])
 def test_ctrl_c_interrupts_promptly(source_dir, with_progress):
     # Without a progress callable no Python code runs during the render: only
@@ -143,5 +150,5 @@ except KeyboardInterrupt:
         child.wait()
     words = out.split()
     assert words and words[0] == "KeyboardInterrupt", out
-    assert float(words[1]) - sent < 1.0
+    assert float(words[1]) - sent < STOP_LIMIT_SECONDS
     assert child.returncode == 0
