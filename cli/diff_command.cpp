@@ -86,10 +86,12 @@ constexpr const char* kExpectSuite = "jtracer-cli --expect";
 void add_tolerance_flags(CLI::App& app, Tolerance& tolerance) {
     app.add_option("--threshold", tolerance.threshold,
                    "Largest difference of a channel (0-255) still counted as equal (default 0)")
-        ->check(CLI::Range(0, 255));
+        ->check(CLI::Range(0, 255))
+        ->type_name("N");
     app.add_option("--max-pixels", tolerance.max_percent,
-                   "Percentage of the pixels allowed over the threshold (default 0)")
-        ->check(CLI::Range(0.0, 100.0));
+                   "Percentage of the pixels allowed over the threshold, 0..100 (default 0)")
+        ->check(CLI::Range(0.0, 100.0))
+        ->type_name("P");
 }
 
 int run_diff_command(int argc, char** argv) {
@@ -116,7 +118,8 @@ int run_diff_command(int argc, char** argv) {
     app.add_option("actual", actual_path, "The image to check against it (BMP or PNG)")->required();
     app.add_option("-o,--output", heat_map_path,
                    "Write a heat map of the differences here (PNG, or BMP for a .bmp name): "
-                   "pixels over the threshold from red to white, the rest dim grey");
+                   "pixels over the threshold from red to white, the rest dim grey")
+        ->type_name("FILE");
     add_tolerance_flags(app, tolerance);
     app.add_flag("--json", json,
                  "Print the comparison as one JSON object instead: both paths and sizes, the "

@@ -72,7 +72,8 @@ int main(int argc, char** argv) {
     jt::frontend::add_version_flag(app, "jtracer-merge");
     app.add_option("-o,--output", output,
                    "The whole frame; a name ending in .png gives a PNG, anything else a BMP")
-        ->required();
+        ->required()
+        ->type_name("FILE");
     app.add_option("parts", part_paths, "The region files (BMP)")->required();
     app.add_flag("-q,--quiet", quiet, "No summary; errors still show");
     if (std::optional<int> code =

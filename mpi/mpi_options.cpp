@@ -28,7 +28,8 @@ ParsedOptions parse_options(int argc, char** argv, bool speaks) {
     frontend::add_render_flags(app, o);
     app.add_option("--tile-size", o.tile_size,
                    "Side of the square tiles handed out to the ranks, in pixels (default 128)")
-        ->check(CLI::Range(16, 4096));
+        ->check(CLI::Range(16, 4096))
+        ->type_name("N");
     app.add_flag("--stats", o.stats,
                  "After the render, print where the time went: the coordinator's waiting and "
                  "merging, and every rank's tiles");
@@ -36,7 +37,8 @@ ParsedOptions parse_options(int argc, char** argv, bool speaks) {
                    "Seconds without a word from a rank (every rank says something at least "
                    "once a second) after which rank 0 declares it lost and ends the job "
                    "(default 10)")
-        ->check(CLI::Range(2.0, 3600.0));
+        ->check(CLI::Range(2.0, 3600.0))
+        ->type_name("SECONDS");
     // Ranks other than 0 keep their (identical) words to themselves.
     std::ostringstream muted;
     std::ostream& out = speaks ? std::cout : muted;

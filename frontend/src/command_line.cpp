@@ -4,7 +4,41 @@
 
 #include <CLI/CLI.hpp>
 
+#include <cctype>
+#include <memory>
+
 namespace jt::frontend {
+
+namespace {
+
+// --help as GNU tools print it: "Usage: jtracer-cli [OPTIONS] SCENE" with the
+// program's name (not the path it was started from), operands in capitals,
+// and each option followed by the word for its value ("--width N") rather
+// than CLI11's type and validator ("INT:INT in [1 - 65535]", or a
+// transformer's whole mapping); the ranges and choices are in the option's
+// description.
+class GnuHelp : public CLI::Formatter {
+  public:
+    GnuHelp() { label("Positionals", "Arguments"); }
+
+    std::string make_option_name(const CLI::Option* opt, bool positional) const override {
+        if (!positional) return CLI::Formatter::make_option_name(opt, positional);
+        std::string name = opt->get_name(true, false);
+        for (char& c : name) c = static_cast<char>(std::toupper(static_cast<unsigned char>(c)));
+        return name;
+    }
+
+    std::string make_option_opts(const CLI::Option* opt) const override {
+        if (opt->get_positional() || opt->get_type_size() == 0) return {};
+        if (!opt->get_option_text().empty()) return " " + opt->get_option_text();
+        const std::string type = opt->get_type_name();
+        std::string opts = " " + type.substr(0, type.find(':'));
+        if (!opt->get_default_str().empty()) opts += "=" + opt->get_default_str();
+        return opts;
+    }
+};
+
+}  // namespace
 
 void add_version_flag(CLI::App& app, const std::string& program) {
     app.set_version_flag("--version", program + " " + jt::version_string());
@@ -14,6 +48,8 @@ std::optional<int> parse_command_line(CLI::App& app, int argc, const char* const
                                       const std::string& program,
                                       const std::function<void()>& checks, std::ostream& out,
                                       std::ostream& err) {
+    if (app.get_name().empty()) app.name(program);
+    app.formatter(std::make_shared<GnuHelp>());
     try {
         app.parse(argc, argv);
         if (checks) checks();

@@ -254,17 +254,22 @@ int main(int argc, char** argv) {
     jt::frontend::add_version_flag(cli, "jtracer-view");
     cli.add_option("--screenshot", args.screenshot,
                    "render headless (OSMesa, no display), write the whole window to this PNG "
-                   "once the render completes, and exit");
+                   "once the render completes, and exit")
+        ->type_name("FILE");
     cli.add_option("--save-render", args.save_render,
                    "with --screenshot: also write the rendered image itself (not the window) "
-                   "to this BMP or PNG, the pixels jtracer-cli writes for the scene");
-    cli.add_option("--size", args.size, "window or screenshot size, WxH")->capture_default_str();
+                   "to this BMP or PNG, the pixels jtracer-cli writes for the scene")
+        ->type_name("FILE");
+    cli.add_option("--size", args.size, "window or screenshot size, WxH")
+        ->capture_default_str()
+        ->type_name("WxH");
     cli.add_flag("--exit-when-done", args.exit_when_done,
                  "quit once the render completes (for tests)");
     cli.add_option("--timeout", args.timeout_seconds,
                    "with --screenshot or --exit-when-done: give up after this many seconds")
         ->capture_default_str()
-        ->check(timeout_check());
+        ->check(timeout_check())
+        ->type_name("SECONDS");
     const auto checks = [&] {
         if (!parse_size(args.size, args.width, args.height))
             throw CLI::ValidationError(
