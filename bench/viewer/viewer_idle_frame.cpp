@@ -68,6 +68,22 @@ void* operator new(std::size_t size) {
 void* operator new[](std::size_t size) {
     return counted_new(size);
 }
+// The nothrow forms too: a library's nothrow new freed by the plain delete
+// below must have come from malloc (AddressSanitizer checks the pairs).
+void* operator new(std::size_t size, const std::nothrow_t&) noexcept {
+    try {
+        return counted_new(size);
+    } catch (const std::bad_alloc&) {
+        return nullptr;
+    }
+}
+void* operator new[](std::size_t size, const std::nothrow_t&) noexcept {
+    try {
+        return counted_new(size);
+    } catch (const std::bad_alloc&) {
+        return nullptr;
+    }
+}
 void operator delete(void* p) noexcept {
     std::free(p);
 }
