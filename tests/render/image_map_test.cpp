@@ -109,6 +109,96 @@ TEST(ImageMap, DecodesPngAndBmpToBytesOver255) {
     EXPECT_FALSE(decode_texture(junk));
 }
 
+// encode_bmp's bottom-up file of `image` stored top-down instead: the height
+// negated and the rows in the opposite order (each padded to 4 bytes).
+std::vector<std::uint8_t> top_down_bmp(const Image8& image) {
+    std::vector<std::uint8_t> bytes = encode_bmp(image);
+    const std::uint32_t height = ~static_cast<std::uint32_t>(image.height) + 1;
+    for (int k = 0; k < 4; ++k) bytes[22 + k] = static_cast<std::uint8_t>(height >> (8 * k));
+    const std::size_t offset = 54, stride = (static_cast<std::size_t>(image.width) * 3 + 3) & ~3u;
+    std::vector<std::uint8_t> rows(bytes.begin() + offset, bytes.end());
+    for (int j = 0; j < image.height; ++j)
+        std::copy_n(rows.begin() + stride * (image.height - 1 - j), stride,
+                    bytes.begin() + offset + stride * j);
+    return bytes;
+}
+
+// 5 x 3 texels of distinct colours: rows of 15 bytes, padded to 16 in a BMP.
+Image8 five_by_three() {
+    Image8 image(5, 3);
+    for (int j = 0; j < 3; ++j)
+        for (int i = 0; i < 5; ++i) {
+            std::uint8_t* p = image.pixel(i, j);
+            p[0] = static_cast<std::uint8_t>(40 * i + 10);
+            p[1] = static_cast<std::uint8_t>(80 * j + 20);
+            p[2] = static_cast<std::uint8_t>(200 - 30 * i - 20 * j);
+        }
+    return image;
+}
+
+TEST(ImageMap, ATopDownBmpReadsAsTheSameBottomUpOne) {
+    const Image8 image = five_by_three();
+    const Expected<Texture> bottom_up = decode_texture(encode_bmp(image));
+    const Expected<Texture> top_down = decode_texture(top_down_bmp(image));
+    ASSERT_TRUE(bottom_up) << bottom_up.error().message;
+    ASSERT_TRUE(top_down) << top_down.error().message;
+    EXPECT_EQ(top_down->width, 5);
+    EXPECT_EQ(top_down->height, 3);
+    EXPECT_EQ(top_down->rgb, bottom_up->rgb);
+    EXPECT_EQ(bottom_up->rgb[3 * (2 * 5 + 4) + 1], 180.0f / 255.0f);  // texel (4, 2): the top row
+
+    // And a sphere mapped with each renders the same bytes, which show the map.
+    const fs::path dir = scratch_dir("top_down");
+    std::ofstream(dir / "bottom_up.bmp", std::ios::binary)
+        .write(reinterpret_cast<const char*>(encode_bmp(image).data()),
+               static_cast<std::streamsize>(encode_bmp(image).size()));
+    const std::vector<std::uint8_t> flipped = top_down_bmp(image);
+    std::ofstream(dir / "top_down.bmp", std::ios::binary)
+        .write(reinterpret_cast<const char*>(flipped.data()),
+               static_cast<std::streamsize>(flipped.size()));
+    Scene s = scene_with_camera(camera_at({0, 0, 5}, {0, 0, 0}), 24, 24);
+    s.asset_folder = dir.string();
+    s.settings.ambient_light = Colour(1.0);
+    Material m = glowing({1, 1, 1});
+    m.image_map = "bottom_up.bmp";
+    s.primitives = {sphere({0, 0, 0}, 1.5, m)};
+    const Image8 from_bottom_up = render(s);
+    s.primitives[0].material.image_map = "top_down.bmp";
+    const Image8 from_top_down = render(s);
+    EXPECT_EQ(from_top_down, from_bottom_up);
+    EXPECT_NE(at(from_bottom_up, 12, 4), at(from_bottom_up, 12, 20));  // the map's rows differ
+    fs::remove_all(dir);
+}
+
+// BMPs stb_image does not read say what they are, not "unknown image type".
+TEST(ImageMap, AnUnsupportedBmpSaysWhatIsNotSupported) {
+    auto with = [](std::size_t at, std::uint32_t value, int bytes) {
+        std::vector<std::uint8_t> bmp = encode_bmp(five_by_three());
+        for (int k = 0; k < bytes; ++k) bmp[at + k] = static_cast<std::uint8_t>(value >> (8 * k));
+        return bmp;
+    };
+    const struct {
+        std::vector<std::uint8_t> bytes;
+        const char* problem;
+    } cases[] = {
+        {with(30, 1, 4), "RLE-compressed BMP is not supported"},
+        {with(30, 2, 4), "RLE-compressed BMP is not supported"},
+        {with(30, 4, 4), "JPEG-compressed BMP is not supported"},
+        {with(30, 5, 4), "PNG-compressed BMP is not supported"},
+        {with(30, 9, 4), "BMP compression type 9 is not supported"},
+        {with(28, 2, 2), "a BMP of 2 bits a pixel is not supported (only 1, 4, 8, 16, 24 and 32)"},
+        {with(14, 64, 4),
+         "a BMP whose info header is 64 bytes long is not supported (only 12, 40, 56, 108 and "
+         "124)"},
+        {with(30, 3, 4), "a BMP with bit-field masks must have 16 or 32 bits a pixel, not 24"},
+    };
+    for (const auto& c : cases) {
+        const Expected<Texture> t = decode_texture(c.bytes);
+        ASSERT_FALSE(t) << c.problem;
+        EXPECT_EQ(t.error().message, c.problem);
+    }
+}
+
 // scenes/maps/label.jpg (4:2:0, quality 92): a cream label with red bands at
 // rows 40-70 and 186-216 from the top; lossy, so within a few levels.
 TEST(ImageMap, DecodesJpegThroughLibjpegTurbo) {

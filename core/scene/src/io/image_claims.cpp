@@ -1,5 +1,6 @@
 #include "io/image_claims.hpp"
 
+#include "io/bmp_header.hpp"
 #include "jtracer/png.hpp"
 
 #include <algorithm>
@@ -54,10 +55,10 @@ std::uint64_t fewest_bytes_for(std::span<const std::uint8_t> bytes, std::int64_t
         const std::uint64_t row = (w * png_bits_per_pixel(bytes[24], bytes[25]) + 7) / 8;
         return h * (1 + row) / 1032;  // a filter byte a row
     }
-    if (bytes.size() >= 2 && bytes[0] == 'B' && bytes[1] == 'M') {
+    if (has_bmp_signature(bytes)) {
         // A header cut short before its bit count counts one bit a pixel.
-        const std::uint64_t bits =
-            bytes.size() >= 30 ? std::max<std::uint64_t>(1, bytes[28] | bytes[29] << 8) : 1;
+        const std::optional<BmpHeader> header = read_bmp_header(bytes);
+        const std::uint64_t bits = header ? std::max<std::uint64_t>(1, header->bits_per_pixel) : 1;
         return h * ((w * bits + 7) / 8);
     }
     if (bytes.size() >= 2 && bytes[0] == 0xFF && bytes[1] == 0xD8)

@@ -1,5 +1,6 @@
 #include "jtracer/texture.hpp"
 
+#include "io/bmp_header.hpp"
 #include "io/file_bytes.hpp"
 #include "io/image_claims.hpp"
 #include "io/jpeg.hpp"
@@ -32,7 +33,8 @@ bool exceeds_cap(std::pair<std::int64_t, std::int64_t> size) {
 }
 
 // The header's verdict: "" or why the picture cannot be decoded. JPEGs go to
-// libjpeg-turbo (io/jpeg.hpp), PNGs and BMPs to stb_image.
+// libjpeg-turbo (io/jpeg.hpp), PNGs and BMPs to stb_image, a BMP after its
+// header is read here (io/bmp_header.hpp).
 std::string header_problem(std::span<const std::uint8_t> bytes, int& width, int& height) {
     if (bytes.size() > static_cast<std::size_t>(std::numeric_limits<int>::max()))
         return "the file is too large";
@@ -41,6 +43,24 @@ std::string header_problem(std::span<const std::uint8_t> bytes, int& width, int&
         if (!size) return size.error().message;
         width = size->width;
         height = size->height;
+    } else if (has_bmp_signature(bytes)) {
+        const std::optional<BmpHeader> header = read_bmp_header(bytes);
+        if (!header)
+            return "the file ends inside its BMP header (" + std::to_string(bytes.size()) +
+                   " bytes)";
+        if (std::string problem = bmp_header_problem(*header); !problem.empty()) return problem;
+        // Rows stored top-down have a negative height; stb_image reads both.
+        const std::int64_t rows = header->height < 0 ? -header->height : header->height;
+        if (header->width <= 0 || rows == 0)
+            return "the image has no pixels (" + std::to_string(header->width) + "x" +
+                   std::to_string(rows) + ")";
+        if (exceeds_cap({header->width, rows})) return too_large(header->width, rows);
+        int channels = 0;
+        if (!stbi_info_from_memory(bytes.data(), static_cast<int>(bytes.size()), &width, &height,
+                                   &channels))
+            return "not a readable BMP image: its header is damaged";
+        width = static_cast<int>(header->width);
+        height = static_cast<int>(rows);
     } else {
         if (const auto claimed = png_claimed_size(bytes); claimed && exceeds_cap(*claimed))
             return too_large(claimed->first, claimed->second);
