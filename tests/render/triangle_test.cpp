@@ -130,6 +130,51 @@ TEST(Triangles, ALightBehindTheFaceButBeforeTheSmoothNormalIsNotBlockedByItsOwnT
     EXPECT_EQ(at(render(s), 0, 0), (Rgb{0, 0, 0}));
 }
 
+// A glass triangle in z = 0 seen at 60 degrees from +z: entering glass of
+// index 1.5, the ray refracts down to a glowing floor (green); taken for a ray
+// leaving the glass it would be totally reflected (1.5 sin 60 > 1) up into the
+// background (red).
+Scene glass_triangle_over_a_floor(const Primitive& glass) {
+    const Vec3 aim{2, -2, 0};
+    Scene s = scene_with_camera(camera_at(aim + Vec3(0, -std::sqrt(3.0), 1), aim), 9, 9);
+    s.settings.recurse_depth = 1;
+    s.settings.ambient_light = Colour(1.0);
+    s.settings.background = {1, 0, 0};
+    s.primitives.push_back(glass);
+    s.primitives.push_back(plane({0, 0, 1}, -1.0, glowing({0, 1, 0})));
+    return s;
+}
+
+// The outward normal of a triangle under a transform M is M^-T cross(b - a,
+// c - a): under a mirror (det M < 0) the corners wind the other way in world
+// space, and the outside stays where M puts it.
+TEST(Triangles, AMirroredGlassTriangleRefractsAsItsOutwardNormalSays) {
+    Material glass;  // black: only the transmitted ray shows
+    glass.transmission = 1.0;
+    glass.ior = 1.5;
+    // Counter-clockwise seen from +z; mirrored in x, its outward normal
+    // M^-T (0, 0, 1) is still +z, though its world corners (5, -5), (-5, -5),
+    // (5, 5) wind clockwise seen from there.
+    Primitive mirrored = triangle({-5, -5, 0}, {5, -5, 0}, {-5, 5, 0}, glass);
+    mirrored.transforms = {scale({-1, 1, 1})};
+    // Those corners counter-clockwise, with no transform.
+    const Primitive plain = triangle({5, -5, 0}, {5, 5, 0}, {-5, -5, 0}, glass);
+    const Image8 expected_image = render(glass_triangle_over_a_floor(plain));
+    EXPECT_EQ(at(expected_image, 4, 4), (Rgb{0, 255, 0}));
+    const Image8 image = render(glass_triangle_over_a_floor(mirrored));
+    EXPECT_EQ(at(image, 4, 4), (Rgb{0, 255, 0}));
+    EXPECT_TRUE(image == expected_image);
+    // Mirrored in two axes (det > 0) is no mirror: turned back by a rotation
+    // onto the same region, it is entered from above as well.
+    mirrored.transforms = {scale({-1, -1, 1}), rotate(TransformKind::zrotate, -90)};
+    EXPECT_EQ(at(render(glass_triangle_over_a_floor(mirrored)), 4, 4), (Rgb{0, 255, 0}));
+    // Seen from below, the same ray leaves the glass: totally reflected down, to black.
+    Scene below = glass_triangle_over_a_floor(plain);
+    below.cameras[0] = camera_at({2, -2 - std::sqrt(3.0), -1}, {2, -2, 0});
+    below.primitives.pop_back();
+    EXPECT_EQ(at(render(below), 4, 4), (Rgb{255, 0, 0}));
+}
+
 TEST(Triangles, InstancesShareOneModelAndFollowTheirTransforms) {
     ScratchDir dir;
     const auto model = facing_triangle(dir.path(), "");

@@ -133,6 +133,7 @@ Expected<std::unique_ptr<TriangleGeometry>> build_triangle_geometry(const Scene&
             loose.uvs = {glm::dvec2(triangle->uv_a), glm::dvec2(triangle->uv_b),
                          glm::dvec2(triangle->uv_c)};
             loose.source = source;
+            loose.mirrored = transform.mirrors;
             const auto& c = loose.corners;
             // Zero area in its own space or in the world's: left out (the validator warned).
             if (glm::cross(triangle->b - triangle->a, triangle->c - triangle->a) == Vec3(0.0) ||

@@ -44,11 +44,14 @@ struct MeshInstance {
 };
 
 // One triangle block, moved to world space: corners in double precision, its
-// texture coordinates, and the Scene primitive it came from.
+// texture coordinates, and the Scene primitive it came from. Under a mirroring
+// transform the world-space corners wind the other way round the outward
+// normal M^-T cross(b - a, c - a) (docs/language.md §13.5): `mirrored` says so.
 struct LooseTriangle {
     std::array<Vec3, 3> corners;
     std::array<glm::dvec2, 3> uvs;
     std::uint32_t source = 0;
+    bool mirrored = false;
 };
 
 struct TriangleGeometry {

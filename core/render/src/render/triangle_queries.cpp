@@ -116,6 +116,7 @@ TriangleSurface triangle_surface(const TriangleGeometry& g, const TriangleHit& h
     if (hit.id.instance == TriangleId::no_instance) {
         const LooseTriangle& t = g.loose[hit.id.triangle];
         s.geometric = glm::cross(t.corners[1] - t.corners[0], t.corners[2] - t.corners[0]);
+        if (t.mirrored) s.geometric = -s.geometric;
         s.uv = w * t.uvs[0] + hit.u * t.uvs[1] + hit.v * t.uvs[2];
         return s;
     }

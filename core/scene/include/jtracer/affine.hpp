@@ -41,6 +41,10 @@ struct ObjectTransform {
     Affine to_world;                // object space -> world space
     Affine to_object;               // world space -> object space, for rays
     glm::dmat3 normal_matrix{1.0};  // the inverse transpose of to_world.linear, for normals
+    // det(to_world.linear) < 0: the map turns space inside out (an odd number
+    // of negative scale components), so a winding seen in world space is
+    // reversed. Counted from the ops, exact however large or small the map.
+    bool mirrors = false;
 };
 
 // Why a transform list leaves its primitive out of the render.

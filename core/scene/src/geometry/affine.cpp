@@ -129,6 +129,9 @@ std::variant<ObjectTransform, LeftOut> object_transform(const std::vector<Transf
         m.to_object = then(inverse_of(ops[k]), m.to_object);
         if (!all_finite(m.to_world) || !all_finite(m.to_object))
             return LeftOut{LeftOut::Reason::out_of_range, k};
+        if (ops[k].kind == TransformKind::scale)
+            for (int axis = 0; axis < 3; ++axis)
+                if (ops[k].vector[axis] < 0.0) m.mirrors = !m.mirrors;
     }
     m.normal_matrix = glm::transpose(m.to_object.linear);
     return m;
