@@ -175,6 +175,30 @@ TEST(Triangles, AMirroredGlassTriangleRefractsAsItsOutwardNormalSays) {
     EXPECT_EQ(at(render(below), 4, 4), (Rgb{255, 0, 0}));
 }
 
+// One triangle in y = 0 whose vertex normals all lean far from its face,
+// <1, 0.1, 0>, seen from above: the ray reflected about that normal heads
+// below the face, where it must see what lies there (the background), not the
+// triangle it leaves (docs/language.md §13.5: no surface reflects itself).
+TEST(Triangles, ARayReflectedBehindItsFaceDoesNotMeetItsOwnTriangle) {
+    ScratchDir dir;
+    const auto model = dir.path() / "leaning.obj";
+    write_file(model,
+               "v -40 0 40\nv 40 0 40\nv 0 0 -40\nvn 1 0.1 0\nvn 1 0.1 0\nvn 1 0.1 0\n"
+               "f 1//1 2//2 3//3\n");
+    Scene s = scene_with_camera(camera_at({0.3, 5, 0.2}, {0.3, 0, 0.2}, {0, 0, -1}, 20.0), 7, 7);
+    s.settings.recurse_depth = 1;
+    s.settings.ambient_light = Colour(1.0);
+    s.settings.background = {0, 0, 1};
+    Material m = glowing({0.5, 0, 0});
+    m.reflection = 1.0;
+    s.primitives.push_back(mesh(model, m, kSmoothShading));
+    const Image8 image = render(s);
+    // Half red of its own, and the blue background its reflection sees.
+    for (int y = 0; y < 7; ++y)
+        for (int x = 0; x < 7; ++x)
+            EXPECT_EQ(at(image, x, y), (Rgb{128, 0, 255})) << x << ", " << y;
+}
+
 TEST(Triangles, InstancesShareOneModelAndFollowTheirTransforms) {
     ScratchDir dir;
     const auto model = facing_triangle(dir.path(), "");

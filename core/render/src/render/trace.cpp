@@ -111,11 +111,16 @@ struct SurfaceHit {
     glm::dvec2 uv;        // on a triangle: its texture coordinates
 };
 
+// `leaving`: the triangle a secondary ray starts on, which it never meets
+// again (docs/language.md §13.5: no surface reflects itself). Lifted along Ng,
+// a ray reflected or refracted about a smooth normal that points far from the
+// face may still head back through it.
 SurfaceHit first_surface(const Geometry& geometry, const Vec3& o, const Vec3& d, double t_lower,
-                         const ListedShapes* candidates) {
+                         const ListedShapes* candidates, TriangleId leaving) {
     SurfaceHit s;
     Hit hit;
-    if (!all_finite(o) || !all_finite(d) || !closest_hit(geometry, o, d, t_lower, hit, candidates))
+    if (!all_finite(o) || !all_finite(d) ||
+        !closest_hit(geometry, o, d, t_lower, hit, candidates, leaving))
         return s;
     s.point = o + hit.t * d;
     s.geometric = glm::normalize(hit.normal);
@@ -169,9 +174,9 @@ constexpr double min_branch_weight = 1e-6;
 // hit can spawn both a reflected and a transmitted ray.
 Colour trace_branching(const PreparedScene& scene, const Vec3& o, const Vec3& d, double t_lower,
                        int depth, int depth_limit, double weight, std::uint64_t& rays,
-                       const ListedShapes* candidates) {
+                       const ListedShapes* candidates, TriangleId leaving) {
     ++rays;
-    const SurfaceHit s = first_surface(*scene.geometry, o, d, t_lower, candidates);
+    const SurfaceHit s = first_surface(*scene.geometry, o, d, t_lower, candidates, leaving);
     if (s.kind == SurfaceHit::Kind::miss) return scene.settings.background;
     if (s.kind == SurfaceHit::Kind::no_normal) return Colour(0.0);
     Colour c = shade_surface(scene, s, d, rays);
@@ -179,14 +184,15 @@ Colour trace_branching(const PreparedScene& scene, const Vec3& o, const Vec3& d,
     const Material& m = scene.materials[scene.material_of[s.source]];
     if (m.reflection > 0.0 && weight * m.reflection >= min_branch_weight)
         c += m.reflection * trace_branching(scene, s.lifted, mirror(d, s.normal), 0.0, depth + 1,
-                                            depth_limit, weight * m.reflection, rays, nullptr);
+                                            depth_limit, weight * m.reflection, rays, nullptr,
+                                            s.triangle);
     if (m.transmission > 0.0 && weight * m.transmission >= min_branch_weight) {
         const Vec3 t = transmitted_direction(d, s.normal, s.entering, m.ior);
         // Total internal reflection stays on the ray's side; a refracted ray crosses.
         const Vec3 from =
             glm::dot(t, s.geometric) > 0.0 ? s.lifted : s.point - s.offset * s.geometric;
         c += m.transmission * trace_branching(scene, from, t, 0.0, depth + 1, depth_limit,
-                                              weight * m.transmission, rays, nullptr);
+                                              weight * m.transmission, rays, nullptr, s.triangle);
     }
     return c;
 }
@@ -204,7 +210,7 @@ Colour trace_ray(const PreparedScene& scene, const Vec3& origin, const Vec3& uni
     const int depth_limit = std::clamp(scene.settings.recurse_depth, 0, max_depth);
     if (scene.has_transmission)
         return trace_branching(scene, origin, unit_direction, t_min, 0, depth_limit, 1.0, rays,
-                               first_candidates);
+                               first_candidates, {});
     // c_k = local_k + reflection_k * c_(k+1): kept per bounce and folded back in
     // the end, so the sum rounds exactly as the recursive definition does.
     // Plain doubles, left uninitialised: glm's vectors zero themselves, and
@@ -223,13 +229,14 @@ Colour trace_ray(const PreparedScene& scene, const Vec3& origin, const Vec3& uni
     Vec3 o = origin;
     Vec3 d = unit_direction;
     double t_lower = t_min;
+    TriangleId leaving;
     int last = 0;
     for (int depth = 0;; ++depth) {
         last = depth;
         bounces[depth].reflection = 0.0;
         ++rays;
-        const SurfaceHit s =
-            first_surface(geometry, o, d, t_lower, depth == 0 ? first_candidates : nullptr);
+        const SurfaceHit s = first_surface(geometry, o, d, t_lower,
+                                           depth == 0 ? first_candidates : nullptr, leaving);
         if (s.kind != SurfaceHit::Kind::surface) {
             keep(depth, s.kind == SurfaceHit::Kind::miss ? scene.settings.background : Colour(0.0));
             break;
@@ -241,6 +248,7 @@ Colour trace_ray(const PreparedScene& scene, const Vec3& origin, const Vec3& uni
         d = mirror(d, s.normal);
         o = s.lifted;
         t_lower = 0.0;
+        leaving = s.triangle;
     }
     auto local = [&](int k) {
         return Colour(bounces[k].local[0], bounces[k].local[1], bounces[k].local[2]);
