@@ -269,6 +269,39 @@ TEST(Triangles, RaysThroughSharedEdgesAndVerticesNeverMiss) {
     EXPECT_EQ(misses, 0) << "of " << rays;
 }
 
+// The scene of issue 27: the octahedron scaled 0.75, flat, seen along an axis
+// from 5 away with a light at 9 behind the camera. The centre pixel's ray
+// meets the vertex on that axis exactly, where four faces meet; each faces the
+// light at dot(N, L) = 1/sqrt(3), so the vertex is lit as every face near it.
+TEST(Triangles, AVertexSharedByFlatFacesIsLitAsTheFacesAroundIt) {
+    ScratchDir dir;
+    Material m;
+    m.pigment = {1.0, 0.16, 0.25};
+    m.ambient = Colour(0.12);
+    m.diffuse = Colour(0.4);
+    const Rgb lit = expected(0.12 * m.pigment + 0.4 * m.pigment / std::sqrt(3.0));
+    const Vec3 axes[] = {{0, 0, 1}, {0, 0, -1}, {1, 0, 0}, {-1, 0, 0}, {0, 1, 0}, {0, -1, 0}};
+    for (const Vec3& axis : axes) {
+        const Vec3 up = axis.y == 0 ? Vec3(0, 1, 0) : Vec3(0, 0, 1);
+        Scene s = scene_with_camera(camera_at(5.0 * axis, {0, 0, 0}, up, 10.0), 9, 9);
+        s.settings.ambient_light = Colour(1.0);
+        Primitive p = mesh(octahedron(dir.path()), m, kFlatShading);
+        p.transforms = {scale(Vec3(0.75))};
+        s.primitives.push_back(p);
+        s.lights.push_back({9.0 * axis, Colour(1.0)});
+        const Image8 image = render(s);
+        EXPECT_EQ(at(image, 4, 4), lit)
+            << "the vertex at " << 0.75 * axis.x << ", " << 0.75 * axis.y << ", " << 0.75 * axis.z;
+        // Its neighbours, 0.1 off the vertex on one face each, see the light
+        // a little more than a degree off the axis.
+        for (const auto& [x, y] : {std::pair{3, 4}, {5, 4}, {4, 3}, {4, 5}}) {
+            const Rgb c = at(image, x, y);
+            EXPECT_NEAR(c.r, lit.r, 2) << x << ", " << y;
+            EXPECT_NEAR(c.g, lit.g, 2) << x << ", " << y;
+        }
+    }
+}
+
 // A ray leaving a mesh's surface never meets it again at its start (no acne):
 // a lit sphere-like mesh renders no dark specks where the light faces it.
 TEST(Triangles, SecondaryRaysDoNotMeetTheirOwnSurface) {

@@ -5,6 +5,8 @@
 
 #include <glm/geometric.hpp>
 
+#include <algorithm>
+#include <array>
 #include <cmath>
 #include <limits>
 
@@ -40,6 +42,23 @@ bool exact_point(const TriangleGeometry& g, TriangleId id, const Vec3& origin,
         corner(m, id.triangle, 0), corner(m, id.triangle, 1), corner(m, id.triangle, 2), out);
 }
 
+// The corners of triangle `id` in the space its hits are computed in: a
+// loose triangle's in world space, a mesh triangle's in its model's.
+std::array<Vec3, 3> corners_of(const TriangleGeometry& g, TriangleId id) {
+    if (id.instance == TriangleId::no_instance) return g.loose[id.triangle].corners;
+    const Model& m = *g.models[g.instances[id.instance].model]->model;
+    return {corner(m, id.triangle, 0), corner(m, id.triangle, 1), corner(m, id.triangle, 2)};
+}
+
+// Whether triangles a and b of one mesh instance (or both loose) share a corner.
+bool neighbours(const TriangleGeometry& g, TriangleId a, TriangleId b) {
+    if (a.instance != b.instance) return false;
+    const std::array<Vec3, 3> ca = corners_of(g, a), cb = corners_of(g, b);
+    for (const Vec3& p : ca)
+        if (std::find(cb.begin(), cb.end(), p) != cb.end()) return true;
+    return false;
+}
+
 TriangleId id_of(const RTCFilterFunctionNArguments* args) {
     const unsigned instance = RTCHitN_instID(args->hit, args->N, 0, 0);
     return {instance == RTC_INVALID_GEOMETRY_ID ? TriangleId::no_instance : instance,
@@ -47,12 +66,24 @@ TriangleId id_of(const RTCFilterFunctionNArguments* args) {
 }
 
 // Whether the candidate the filter sees lies in the query's range, exactly.
+// A ray that leaves a triangle (`skip`) starts within a rounding of its edges
+// and corners, too close for Embree's single-precision test to tell on which
+// side of a neighbour's edge it passes: at a vertex of a convex solid it
+// reports the face across the vertex, whose plane the lifted start lies just
+// behind (a vertex lit from outside came out in shadow). A triangle that
+// shares a corner with the one the ray leaves is met only where the point in
+// double precision lies inside it. Other triangles keep Embree's watertight
+// answer, so that no ray slips between two of them.
 bool keep(const RTCFilterFunctionNArguments* args) {
     const auto& q = *reinterpret_cast<const TriangleQuery*>(args->context);
     const TriangleId id = id_of(args);
     if (id == q.skip) return false;
     TrianglePoint p;
-    return exact_point(*q.geometry, id, q.origin, q.direction, p) && p.t > q.t_min && p.t < q.t_max;
+    if (!exact_point(*q.geometry, id, q.origin, q.direction, p) || !(p.t > q.t_min) ||
+        !(p.t < q.t_max))
+        return false;
+    if (q.skip == TriangleId{} || !neighbours(*q.geometry, id, q.skip)) return true;
+    return p.u >= 0.0 && p.v >= 0.0 && p.u + p.v <= 1.0;
 }
 
 TriangleQuery query(const TriangleGeometry& g, const Vec3& origin, const Vec3& direction,
