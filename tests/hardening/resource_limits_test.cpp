@@ -84,7 +84,9 @@ TEST_F(ResourceLimits, PictureClaimingTenBillionTexelsIsRefusedFromItsHeaderInOn
                    picture + "\"; } } }\n");
     ProgramRun r = run_in_one_gib("map.jts -o out.bmp");
     EXPECT_EQ(r.code, 1) << r.err;
-    EXPECT_EQ(r.err.rfind("map.jts:3:40: error: image_map: the image is too large", 0), 0u)
+    EXPECT_EQ(
+        r.err.rfind("map.jts:3:40: error: image_map: '" + picture + "': the image is too large", 0),
+        0u)
         << r.err;
     EXPECT_FALSE(exists("out.bmp"));
 }

@@ -279,6 +279,47 @@ TEST(ImageMap, AMissingImageIsALocatedError) {
     fs::remove_all(dir);
 }
 
+// A JPEG cut short has a sound header: the check decodes it as the render
+// would, and refuses it at its string with the render's own words.
+TEST(ImageMap, ATruncatedJpegFailsTheCheckWithTheRendersError) {
+    const fs::path dir = scratch_dir("truncated");
+    std::ifstream in(fs::path(JT_SOURCE_DIR) / "scenes/maps/label.jpg", std::ios::binary);
+    const std::vector<std::uint8_t> bytes{std::istreambuf_iterator<char>(in), {}};
+    std::ofstream(dir / "cut.jpg", std::ios::binary)
+        .write(reinterpret_cast<const char*>(bytes.data()),
+               static_cast<std::streamsize>(bytes.size() * 2 / 3));
+    std::ofstream(dir / "scene.jts") << plane_scene("cut.jpg", 0, 0);
+    Expected<LoadedScene> loaded = load_scene_file(dir / "scene.jts");
+    ASSERT_TRUE(loaded);
+    const std::vector<Diagnostic> found = check_scene(*loaded);
+    ASSERT_EQ(found.size(), 1u);
+    EXPECT_EQ(found[0].severity, Severity::error);
+    EXPECT_EQ(found[0].pos.line, 4);
+    EXPECT_EQ(found[0].pos.column, 16);
+    const auto prepared = prepare_scene(loaded->parsed.scene);
+    ASSERT_FALSE(prepared);
+    EXPECT_EQ(found[0].message, prepared.error().message);
+    EXPECT_NE(found[0].message.find("cut.jpg': cannot read the JPEG: "), std::string::npos)
+        << found[0].message;
+    fs::remove_all(dir);
+}
+
+// The check's decoded picture is the one the render uses: decoded once.
+TEST(ImageMap, TheRenderUsesThePictureTheCheckDecoded) {
+    const fs::path dir = scratch_dir("decoded_once");
+    ASSERT_TRUE(write_png(dir / "four.png", four_colours()));
+    std::ofstream(dir / "scene.jts") << plane_scene("four.png", 0, 0);
+    Expected<LoadedScene> loaded = load_scene_file(dir / "scene.jts");
+    ASSERT_TRUE(loaded);
+    EXPECT_TRUE(check_scene(*loaded).empty());
+    const Expected<std::shared_ptr<const Texture>> held = load_texture(dir / "four.png");
+    ASSERT_TRUE(held);
+    const auto prepared = prepare_scene(loaded->parsed.scene);
+    ASSERT_TRUE(prepared) << prepared.error().message;
+    EXPECT_EQ((*prepared)->textures[0].get(), held->get());
+    fs::remove_all(dir);
+}
+
 TEST(ImageMap, OneFileIsLoadedOnceForEveryMaterialThatNamesIt) {
     const fs::path dir = scratch_dir("shared");
     ASSERT_TRUE(write_png(dir / "four.png", four_colours()));

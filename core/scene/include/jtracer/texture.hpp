@@ -27,10 +27,12 @@ inline constexpr std::int64_t kMaxTextureTexels = std::int64_t{1} << 28;
 
 // A PNG, JPEG or BMP; grey, palette and alpha images become RGB.
 Expected<Texture> decode_texture(std::span<const std::uint8_t> bytes);
-Expected<std::shared_ptr<const Texture>> load_texture(const std::filesystem::path& path);
 
-// Why the file cannot be an image map (from its header only), or "" when it can.
-std::string texture_problem(const std::filesystem::path& path);
+// The file decoded, from memory when an unchanged copy is held: the validator
+// decodes every image map, so that --check refuses what the render would
+// (a JPEG whose data ends early), and the render that follows decodes it no
+// more (io/stamped_cache.hpp). Errors name the file.
+Expected<std::shared_ptr<const Texture>> load_texture(const std::filesystem::path& path);
 
 // Where a file name of the scene is found: relative names from its asset_folder.
 std::filesystem::path asset_path(const Scene& scene, const std::string& name);

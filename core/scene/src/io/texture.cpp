@@ -5,6 +5,8 @@
 #include "io/image_claims.hpp"
 #include "io/jpeg.hpp"
 #include "io/png_chunks.hpp"
+#include "io/stamped_cache.hpp"
+#include "jtracer/file_stamp.hpp"
 
 #include <stb_image.h>
 
@@ -16,6 +18,10 @@
 namespace jt {
 
 namespace {
+
+// Pictures held after their last user lets go: a scene's few maps, between
+// its validation and its render.
+constexpr std::size_t kept_textures = 4;
 
 struct StbFree {
     void operator()(void* p) const { stbi_image_free(p); }
@@ -128,18 +134,19 @@ Expected<Texture> decode_texture(std::span<const std::uint8_t> bytes) {
 }
 
 Expected<std::shared_ptr<const Texture>> load_texture(const std::filesystem::path& path) {
-    Expected<std::vector<std::uint8_t>> bytes = read_file_bytes(path);
-    if (!bytes) return bytes.error();
-    Expected<Texture> texture = decode_texture(*bytes);
-    if (!texture) return Error{file_message(path, texture.error().message)};
-    return std::make_shared<const Texture>(std::move(*texture));
-}
-
-std::string texture_problem(const std::filesystem::path& path) {
-    Expected<std::vector<std::uint8_t>> bytes = read_file_bytes(path);
-    if (!bytes) return bytes.error().message;
-    int width = 0, height = 0;
-    return header_problem(*bytes, width, height);
+    static StampedCache<std::string, Texture> cache(kept_textures);
+    std::error_code error;
+    const std::filesystem::path absolute = std::filesystem::absolute(path, error);
+    const FileStamp stamp = file_stamp(absolute);
+    auto decode = [&]() -> Expected<Texture> {
+        Expected<std::vector<std::uint8_t>> bytes = read_file_bytes(path);
+        if (!bytes) return bytes.error();
+        Expected<Texture> texture = decode_texture(*bytes);
+        if (!texture) return Error{file_message(path, texture.error().message)};
+        return texture;
+    };
+    if (error || !stamp.exists) return decode().error();  // read_file_bytes's own words
+    return cache.get(absolute.lexically_normal().string(), stamp, decode);
 }
 
 std::filesystem::path asset_path(const Scene& scene, const std::string& name) {

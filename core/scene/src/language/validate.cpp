@@ -214,17 +214,19 @@ class Validator {
     };
     std::map<std::string, ModelVerdict> models_;
 
-    // The picture must be readable (docs/language.md §13.4); each file is
-    // looked at once however many materials name it.
+    // The picture must decode (docs/language.md §13.4), with the error the
+    // render would give; each file is decoded once however many materials
+    // name it, and the render takes it from memory (texture.hpp).
     void check_image_map(const Material& m, const BlockSource* block) {
         if (m.image_map.empty()) return;
         const SourcePos pos = where_material(block, "image_map");
         if (m.checker) warning(pos, "'image_map' and 'checker' are both set: the image map wins");
         auto known = image_problems_.find(m.image_map);
-        if (known == image_problems_.end())
-            known = image_problems_
-                        .emplace(m.image_map, texture_problem(asset_path(scene_, m.image_map)))
-                        .first;
+        if (known == image_problems_.end()) {
+            auto texture = load_texture(asset_path(scene_, m.image_map));
+            known =
+                image_problems_.emplace(m.image_map, texture ? "" : texture.error().message).first;
+        }
         if (!known->second.empty()) error(pos, "image_map: " + known->second);
     }
     std::map<std::string, std::string> image_problems_;
