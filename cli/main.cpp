@@ -5,6 +5,7 @@
 #include "list_cameras.hpp"
 #include "memory_budget.hpp"
 #include "options.hpp"
+#include "scene_info.hpp"
 
 #include "jtracer/frontend/frame_setup.hpp"
 #include "jtracer/frontend/progress.hpp"
@@ -130,6 +131,8 @@ int run(const Options& o, bool& compared) {
 int main(int argc, char** argv) {
     if (argc > 1 && std::string_view(argv[1]) == "diff")
         return run_diff_command(argc - 1, argv + 1);
+    if (argc > 1 && std::string_view(argv[1]) == "info")
+        return run_info_command(argc - 1, argv + 1);
     ParsedOptions parsed = parse_options(argc, argv);
     if (parsed.exit_code) return *parsed.exit_code;
     const Options& o = parsed.options;

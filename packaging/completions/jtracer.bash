@@ -43,6 +43,9 @@ _jtracer() {
             program=jtracer-cli-diff
             options='-h --help -o --output --threshold --max-pixels --json --junit -q --quiet'
             positional='*.@(bmp|BMP|png|PNG)'
+        elif [[ ${COMP_WORDS[1]} == info ]] && ((COMP_CWORD > 1)); then
+            program=jtracer-cli-info
+            options='-h --help --json'
         else
             options='-h --help --version -o --output --camera --width --height --samples
                 --threads -q --quiet --progress --region --region-output --check --expect --threshold
@@ -102,7 +105,12 @@ _jtracer() {
         COMPREPLY=($(compgen -W "$options" -- "$cur"))
         return
     fi
-    [[ $program == jtracer-cli && $COMP_CWORD == 1 && diff == "$cur"* ]] && COMPREPLY+=(diff)
+    if [[ $program == jtracer-cli && $COMP_CWORD == 1 ]]; then
+        local command
+        for command in diff info; do
+            [[ $command == "$cur"* ]] && COMPREPLY+=("$command")
+        done
+    fi
     _jtracer_files "$positional"
 }
 

@@ -60,13 +60,18 @@ declare -A tools=([jtracer-cli]=$cli [jtracer-merge]=$merge)
 [ -z "$mpi" ] || tools[jtracer-mpi]=$mpi
 for program in "${!tools[@]}"; do same_options "$program"; done
 same_options jtracer-cli diff
+same_options jtracer-cli info
 
 expect --camera jtracer-cli --cam
 expect $'--max-pixels' jtracer-cli --max
-# Scenes and folders, not other files; "diff" only as the first word.
-expect $'diff\nfolder\nother.jts\nscene.jts' jtracer-cli ''
+# Scenes and folders, not other files; "diff" and "info" only as the first word.
+expect $'diff\nfolder\ninfo\nother.jts\nscene.jts' jtracer-cli ''
 expect $'scene.jts' jtracer-cli sc
 expect $'diff' jtracer-cli d
+expect $'info' jtracer-cli i
+# info takes a scene.
+expect $'scene.jts' jtracer-cli info sc
+expect $'--json' jtracer-cli info --j
 expect '' jtracer-cli scene.jts d
 # diff takes images; -o an image.
 expect $'part1.bmp\npart2.png' jtracer-cli diff part

@@ -25,6 +25,7 @@ check_page() {
 }
 check_page "$man_dir/jtracer-cli.1" "$cli"
 check_page "$man_dir/jtracer-cli.1" "$cli" diff
+check_page "$man_dir/jtracer-cli.1" "$cli" info
 check_page "$man_dir/jtracer-merge.1" "$merge"
 [ -z "$view" ] || check_page "$man_dir/jtracer-view.1" "$view"
 [ -z "$mpi" ] || check_page "$man_dir/jtracer-mpi.1" "$mpi"
@@ -38,7 +39,7 @@ check_documented() {
     done < <(grep -oE '(^\.| )Fl (\\-)?[a-z][a-z-]*' "$page" |
         sed -E 's/.*Fl //; s/^\\-/--/; s/^([a-z])$/-\1/' | sort -u)
 }
-check_documented "$man_dir/jtracer-cli.1" "$(help_options "$cli"; help_options "$cli" diff)"
+check_documented "$man_dir/jtracer-cli.1" "$(help_options "$cli"; help_options "$cli" diff; help_options "$cli" info)"
 check_documented "$man_dir/jtracer-merge.1" "$(help_options "$merge")"
 [ -z "$view" ] || check_documented "$man_dir/jtracer-view.1" "$(help_options "$view")"
 [ -z "$mpi" ] || check_documented "$man_dir/jtracer-mpi.1" "$(help_options "$mpi")"

@@ -1,0 +1,100 @@
+# jtracer-cli info: what a scene holds, on a scene with spheres, a mesh from
+# each model format the project reads and an image map; --json parsed.
+import json
+import math
+import pathlib
+import shutil
+
+import pytest
+from conftest import run
+
+MODELS = pathlib.Path("/usr/share/assimp/models")  # assimp-testmodels, as tests/language use
+
+
+@pytest.fixture
+def scene(tmp_path, source_dir):
+    shutil.copy(MODELS / "OBJ" / "box.obj", tmp_path)
+    shutil.copy(source_dir / "scenes" / "models" / "knot.ply", tmp_path)
+    shutil.copy(MODELS / "STL" / "Spider_ascii.stl", tmp_path)
+    shutil.copytree(MODELS / "glTF2" / "BoxTextured-glTF", tmp_path / "gltf")
+    shutil.copy(MODELS / "glTF2" / "BoxTextured-glTF-Binary" / "BoxTextured.glb", tmp_path)
+    shutil.copy(source_dir / "scenes" / "maps" / "tiles.png", tmp_path)
+    meshes = "".join(
+        f'    mesh {{ file: "{name}"; material {{ pigment: <1, 1, 1>; }} '
+        f"transform {{ translate: <{i * 10}, 0, 0>; }} }}\n"
+        for i, name in enumerate(["box.obj", "knot.ply", "Spider_ascii.stl",
+                                  "gltf/BoxTextured.gltf", "BoxTextured.glb", "box.obj"])
+    )
+    path = tmp_path / "inventory.jts"
+    path.write_text(f"""render_settings {{ width: 64; height: 48; }}
+cameras {{
+    perspective_camera {{ name: "front"; position: <0, 0, 10>; look_at: <0, 0, 0>; aspect: 1.3333333333333333; }}
+    perspective_camera {{ name: "side"; position: <10, 0, 0>; look_at: <0, 0, 0>; aspect: 1.3333333333333333; }}
+}}
+scene {{
+    sphere {{ center: <0, 0, -100>; radius: 2; material {{ pigment: <1, 0, 0>; image_map: "tiles.png"; }} }}
+    sphere {{ center: <0, 50, 0>; radius: 1; transform {{ scale: <3, 3, 3>; }} }}
+    plane {{ normal: <0, 1, 0>; distance: -1; }}
+{meshes}    point_light {{ position: <5, 5, 5>; intensity: <1, 1, 1>; }}
+}}
+""")
+    return path
+
+
+def test_info_json_counts_meshes_maps_lights_and_cameras(cli, scene):
+    _, out, _ = run(cli, "info", scene, "--json")
+    info = json.loads(out)
+    assert info["primitives"] == {"sphere": 2, "plane": 1, "cylinder": 0, "triangle": 0, "mesh": 6}
+    meshes = info["meshes"]
+    assert [m["file"] for m in meshes] == ["box.obj", "knot.ply", "Spider_ascii.stl",
+                                         "gltf/BoxTextured.gltf", "BoxTextured.glb", "box.obj"]
+    assert all(m["triangles"] > 0 and m["vertices"] >= 3 for m in meshes)
+    assert meshes[0]["triangles"] == 12  # six quads
+    assert meshes[1]["triangles"] == 20020 and meshes[1]["vertices"] == 10332
+    # STL has facet normals only; PLY and glTF carry vertex normals.
+    assert meshes[2]["normals"] == "generated"
+    assert [meshes[i]["normals"] for i in (1, 3, 4)] == ["file"] * 3
+    assert [m["read_before"] for m in meshes] == [False] * 5 + [True]
+    assert all(m["load_seconds"] >= 0 for m in meshes)
+    # Each mesh's world box is its model's box moved by its translate.
+    first, last = meshes[0]["bbox"], meshes[5]["bbox"]
+    assert last["lower"] == pytest.approx([first["lower"][0] + 50] + first["lower"][1:])
+    assert last["upper"] == pytest.approx([first["upper"][0] + 50] + first["upper"][1:])
+    # The scene's box holds the spheres (the scaled one reaches y = 153) and
+    # the meshes, not the plane.
+    box = info["bbox"]
+    assert box["lower"][2] == pytest.approx(-102) and box["upper"][1] == pytest.approx(153)
+    assert box["upper"][0] >= last["upper"][0] and info["unbounded"] == 1
+    assert info["image_maps"] == [{"path": str(scene.parent / "tiles.png"), "width": 64,
+                                   "height": 64, "bytes": 64 * 64 * 3 * 4}]
+    assert info["lights"] == [{"position": [5, 5, 5], "intensity": [1, 1, 1]}]
+    front, side = info["cameras"]
+    assert (front["name"], front["active"], side["active"]) == ("front", True, False)
+    assert side["direction"] == pytest.approx([-1, 0, 0])
+    assert math.isclose(sum(c * c for c in front["direction"]), 1.0)
+    memory = info["memory"]
+    assert memory["image_maps"] == 64 * 64 * 3 * 4
+    assert memory["models"] > 20020 * 12  # the knot's triangles alone
+    assert memory["total"] >= memory["models"] + memory["image_maps"]
+
+
+def test_info_text_names_every_mesh_and_camera(cli, scene):
+    _, out, _ = run(cli, "info", scene)
+    assert "primitives: cylinder 0 mesh 6 plane 1 sphere 2 triangle 0" in out
+    for name in ("box.obj", "knot.ply: 20020 triangles", "Spider_ascii.stl", "BoxTextured.glb"):
+        assert f"mesh {name}" in out
+    assert "the file of an earlier mesh" in out
+    assert 'camera "side": at <10, 0, 0> looking at <0, 0, 0> (direction <-1, 0, 0>)' in out
+    assert "image map" in out and "64x64" in out
+    assert "(and 1 unbounded planes)" in out
+
+
+def test_info_of_a_bad_scene_reports_like_check(cli, tmp_path):
+    bad = tmp_path / "bad.jts"
+    bad.write_text("scene { sphere { radius: -1; } }\n")
+    code, out, err = run(cli, "info", bad, check=False)
+    assert code == 1 and out == "" and "bad.jts:1:" in err
+    code, _, err = run(cli, "info", tmp_path / "missing.jts", check=False)
+    assert code == 3 and "missing.jts" in err
+    code, _, err = run(cli, "info", check=False)
+    assert code == 2
