@@ -142,7 +142,7 @@ Expected<json> describe(const Scene& scene) {
     for (const std::filesystem::path& path : named_files(scene).images) {
         const Expected<std::shared_ptr<const Texture>> texture = load_texture(path);
         if (!texture) return texture.error();
-        const std::size_t bytes = (*texture)->rgb.size() * sizeof(float);
+        const std::size_t bytes = (*texture)->rgb8.size() + (*texture)->rgb16.size() * 2;
         bytes_maps += bytes;
         maps.push_back({{"path", path.string()},
                         {"width", (*texture)->width},

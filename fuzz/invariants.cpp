@@ -107,12 +107,11 @@ std::string check_texture_bytes(std::span<const std::uint8_t> bytes) {
     if (!decoded) return decoded.error().message.empty() ? "an error without a message" : "";
     const Texture& t = *decoded;
     const auto texels = static_cast<std::int64_t>(t.width) * t.height;
+    const std::size_t values = t.rgb16.empty() ? t.rgb8.size() : t.rgb16.size();
     if (t.width <= 0 || t.height <= 0 || texels > kMaxTextureTexels ||
-        t.rgb.size() != static_cast<std::size_t>(texels) * 3)
+        values != static_cast<std::size_t>(texels) * 3 || (!t.rgb8.empty() && !t.rgb16.empty()))
         return "decoded texture has inconsistent size " + std::to_string(t.width) + "x" +
-               std::to_string(t.height) + " with " + std::to_string(t.rgb.size()) + " values";
-    for (float v : t.rgb)
-        if (!(v >= 0.0f && v <= 1.0f)) return "a texel value outside [0, 1]: " + std::to_string(v);
+               std::to_string(t.height) + " with " + std::to_string(values) + " values";
     return {};
 }
 

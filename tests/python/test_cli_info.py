@@ -66,14 +66,14 @@ def test_info_json_counts_meshes_maps_lights_and_cameras(cli, scene):
     assert box["lower"][2] == pytest.approx(-102) and box["upper"][1] == pytest.approx(153)
     assert box["upper"][0] >= last["upper"][0] and info["unbounded"] == 1
     assert info["image_maps"] == [{"path": str(scene.parent / "tiles.png"), "width": 64,
-                                   "height": 64, "bytes": 64 * 64 * 3 * 4}]
+                                   "height": 64, "bytes": 64 * 64 * 3}]
     assert info["lights"] == [{"position": [5, 5, 5], "intensity": [1, 1, 1]}]
     front, side = info["cameras"]
     assert (front["name"], front["active"], side["active"]) == ("front", True, False)
     assert side["direction"] == pytest.approx([-1, 0, 0])
     assert math.isclose(sum(c * c for c in front["direction"]), 1.0)
     memory = info["memory"]
-    assert memory["image_maps"] == 64 * 64 * 3 * 4
+    assert memory["image_maps"] == 64 * 64 * 3
     assert memory["models"] > 20020 * 12  # the knot's triangles alone
     assert memory["total"] >= memory["models"] + memory["image_maps"]
 

@@ -54,23 +54,27 @@ TEST(ImageMap, PlaneUvFollowsItsAxes) {
     expect_uv(plane_uv(Plane{{1, 0, 0}, 0}, 1.0, Vec3(0, -0.5, -0.25)), 0.5, 0.25);
 }
 
-// A 2 x 2 picture: bottom row 0 and 1, top row 0.5 and 0.25 (red only).
+// A 2 x 2 picture, red only: bottom row 0 and 1, top row 0.5 and 0.25 (16-bit
+// samples, where 0.5 and 0.25 are 32768 and 16384 / 65535 away from exact:
+// the blend below is checked against the texels as they are).
 Texture two_by_two() {
-    Texture t{2, 2, std::vector<float>(12, 0.0f)};
-    t.rgb[0] = 0.0f, t.rgb[3] = 1.0f, t.rgb[6] = 0.5f, t.rgb[9] = 0.25f;
+    Texture t{2, 2, {}, std::vector<std::uint16_t>(12, 0)};
+    t.rgb16[0] = 0, t.rgb16[3] = 65535, t.rgb16[6] = 32768, t.rgb16[9] = 16384;
     return t;
 }
 
 TEST(ImageMap, BilinearBlendOfTheNearestTexelCentres) {
     const Texture t = two_by_two();
-    EXPECT_EQ(sample_bilinear(t, {0.25, 0.25}).x, 0.0);   // texel (0, 0)'s centre
-    EXPECT_EQ(sample_bilinear(t, {0.75, 0.25}).x, 1.0);   // texel (1, 0)
-    EXPECT_EQ(sample_bilinear(t, {0.75, 0.75}).x, 0.25);  // texel (1, 1)
-    EXPECT_EQ(sample_bilinear(t, {0.5, 0.25}).x, 0.5);    // between (0, 0) and (1, 0)
-    EXPECT_EQ(sample_bilinear(t, {0.5, 0.5}).x, 0.4375);  // (0 + 1 + 0.5 + 0.25) / 4
-    // 3/8 of the way from (0, 0) to (1, 0), half-way up: 0.5 (0.375 + ...).
+    const double half = 32768.0f / 65535.0f, quarter = 16384.0f / 65535.0f;
+    EXPECT_EQ(texel(t, 0, 1).x, half);                       // value / 65535 in single precision
+    EXPECT_EQ(sample_bilinear(t, {0.25, 0.25}).x, 0.0);      // texel (0, 0)'s centre
+    EXPECT_EQ(sample_bilinear(t, {0.75, 0.25}).x, 1.0);      // texel (1, 0)
+    EXPECT_EQ(sample_bilinear(t, {0.75, 0.75}).x, quarter);  // texel (1, 1)
+    EXPECT_EQ(sample_bilinear(t, {0.5, 0.25}).x, 0.5);       // between (0, 0) and (1, 0)
+    EXPECT_DOUBLE_EQ(sample_bilinear(t, {0.5, 0.5}).x, (0 + 1 + half + quarter) / 4);
+    // 3/8 of the way from (0, 0) to (1, 0), half-way up.
     EXPECT_DOUBLE_EQ(sample_bilinear(t, {0.4375, 0.5}).x,
-                     0.5 * (0.625 * 0.0 + 0.375 * 1.0) + 0.5 * (0.625 * 0.5 + 0.375 * 0.25));
+                     0.5 * (0.625 * 0.0 + 0.375 * 1.0) + 0.5 * (0.625 * half + 0.375 * quarter));
     // Past the left edge the blend wraps to the right column.
     EXPECT_EQ(sample_bilinear(t, {0.0, 0.25}).x, 0.5);
     EXPECT_EQ(sample_bilinear(t, {1.0, 0.25}).x, 0.5);    // u = 1 wraps to 0
@@ -100,10 +104,13 @@ TEST(ImageMap, DecodesPngAndBmpToBytesOver255) {
         ASSERT_TRUE(t) << t.error().message;
         ASSERT_EQ(t->width, 2);
         ASSERT_EQ(t->height, 2);
-        EXPECT_EQ(t->rgb[0], 51.0f / 255.0f);       // bottom left, red
-        EXPECT_EQ(t->rgb[3 + 1], 102.0f / 255.0f);  // bottom right, green
-        EXPECT_EQ(t->rgb[6 + 2], 153.0f / 255.0f);  // top left, blue
-        EXPECT_EQ(t->rgb[9], 1.0f);
+        // Kept as decoded, a byte a channel.
+        EXPECT_EQ(t->rgb8.size(), 12u);
+        EXPECT_TRUE(t->rgb16.empty());
+        EXPECT_EQ(texel(*t, 0, 0).x, 51.0f / 255.0f);   // bottom left, red
+        EXPECT_EQ(texel(*t, 1, 0).y, 102.0f / 255.0f);  // bottom right, green
+        EXPECT_EQ(texel(*t, 0, 1).z, 153.0f / 255.0f);  // top left, blue
+        EXPECT_EQ(texel(*t, 1, 1).x, 1.0f);
     }
     const std::vector<std::uint8_t> junk{'n', 'o', 't', ' ', 'a', 'n', ' ', 'i', 'm', 'g'};
     EXPECT_FALSE(decode_texture(junk));
@@ -144,8 +151,8 @@ TEST(ImageMap, ATopDownBmpReadsAsTheSameBottomUpOne) {
     ASSERT_TRUE(top_down) << top_down.error().message;
     EXPECT_EQ(top_down->width, 5);
     EXPECT_EQ(top_down->height, 3);
-    EXPECT_EQ(top_down->rgb, bottom_up->rgb);
-    EXPECT_EQ(bottom_up->rgb[3 * (2 * 5 + 4) + 1], 180.0f / 255.0f);  // texel (4, 2): the top row
+    EXPECT_EQ(top_down->rgb8, bottom_up->rgb8);
+    EXPECT_EQ(texel(*bottom_up, 4, 2).y, 180.0f / 255.0f);  // the top row
 
     // And a sphere mapped with each renders the same bytes, which show the map.
     const fs::path dir = scratch_dir("top_down");
@@ -209,10 +216,10 @@ TEST(ImageMap, DecodesJpegThroughLibjpegTurbo) {
     ASSERT_EQ(t->width, 512);
     ASSERT_EQ(t->height, 256);
     auto expect_texel = [&](int x, int row_from_top, int r, int g, int b) {
-        const std::size_t at = 3 * (static_cast<std::size_t>(255 - row_from_top) * 512 + x);
-        EXPECT_NEAR(t->rgb[at] * 255.0f, r, 4.0f) << x << "," << row_from_top;
-        EXPECT_NEAR(t->rgb[at + 1] * 255.0f, g, 4.0f) << x << "," << row_from_top;
-        EXPECT_NEAR(t->rgb[at + 2] * 255.0f, b, 4.0f) << x << "," << row_from_top;
+        const Colour c = texel(*t, x, 255 - row_from_top);
+        EXPECT_NEAR(c.x * 255.0, r, 4.0) << x << "," << row_from_top;
+        EXPECT_NEAR(c.y * 255.0, g, 4.0) << x << "," << row_from_top;
+        EXPECT_NEAR(c.z * 255.0, b, 4.0) << x << "," << row_from_top;
     };
     expect_texel(20, 10, 0xf4, 0xef, 0xe4);    // cream
     expect_texel(20, 55, 0xb3, 0x26, 0x1e);    // the upper red band

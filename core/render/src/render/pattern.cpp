@@ -32,11 +32,6 @@ int wrap_index(long long i, int n) {
     return static_cast<int>(m < 0 ? m + n : m);
 }
 
-Colour texel(const Texture& t, int i, int j) {
-    const float* p = &t.rgb[3 * (static_cast<std::size_t>(j) * t.width + i)];
-    return {p[0], p[1], p[2]};
-}
-
 }  // namespace
 
 bool has_pattern(const Material& m) {

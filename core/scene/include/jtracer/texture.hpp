@@ -14,13 +14,30 @@
 
 namespace jt {
 
-// Texel (i, j) is rgb[3 * (j * width + i)], row j = 0 at the bottom of the
-// picture; values are byte / 255 (16-bit samples: value / 65535), no gamma.
+// The samples as decoded, 8 bits a channel (16 for a 16-bit PNG, then in
+// rgb16 and rgb8 is empty): 3 or 6 bytes a texel rather than 12 as floats,
+// which held a 16000 x 12000 JPEG in 2.3 GB. Texel (i, j) starts at
+// 3 * (j * width + i), row j = 0 at the bottom of the picture.
 struct Texture {
     int width = 0;
     int height = 0;
-    std::vector<float> rgb;
+    std::vector<std::uint8_t> rgb8;
+    std::vector<std::uint16_t> rgb16;
 };
+
+// Texel (i, j)'s channels: byte / 255 (16-bit samples: value / 65535) in
+// single precision, as docs/language.md §13.4 says, no gamma.
+inline Colour texel(const Texture& t, int i, int j) {
+    const std::size_t at = 3 * (static_cast<std::size_t>(j) * t.width + i);
+    if (!t.rgb16.empty()) {
+        const std::uint16_t* p = &t.rgb16[at];
+        return {static_cast<float>(p[0]) / 65535.0f, static_cast<float>(p[1]) / 65535.0f,
+                static_cast<float>(p[2]) / 65535.0f};
+    }
+    const std::uint8_t* p = &t.rgb8[at];
+    return {static_cast<float>(p[0]) / 255.0f, static_cast<float>(p[1]) / 255.0f,
+            static_cast<float>(p[2]) / 255.0f};
+}
 
 // Pictures larger than this many texels are refused rather than decoded.
 inline constexpr std::int64_t kMaxTextureTexels = std::int64_t{1} << 28;

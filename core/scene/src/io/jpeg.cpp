@@ -45,7 +45,7 @@ Expected<std::vector<std::uint8_t>> decode_jpeg(std::span<const std::uint8_t> by
     // A warning stops the decoding too; the scan limit refuses a progressive
     // file of thousands of scans, each of which would cost a pass over the
     // whole picture.
-    const int flags = TJFLAG_STOPONWARNING | TJFLAG_LIMITSCANS;
+    const int flags = TJFLAG_STOPONWARNING | TJFLAG_LIMITSCANS | TJFLAG_BOTTOMUP;
     if (tjDecompress2(handle.get(), bytes.data(), bytes.size(), rgb.data(), size.width, 0,
                       size.height, TJPF_RGB, flags) != 0)
         return Error{unreadable(handle.get())};

@@ -26,7 +26,8 @@ struct JpegSize {
 // read or colours it does not turn into RGB (CMYK).
 Expected<JpegSize> read_jpeg_size(std::span<const std::uint8_t> bytes);
 
-// 8-bit RGB texels, the top row first, of a JPEG whose header gave `size`. A
+// 8-bit RGB texels, the bottom row first (as a Texture keeps them, with no
+// copy to turn them round), of a JPEG whose header gave `size`. A
 // damaged file (even one libjpeg would only warn about: data that ends early)
 // is an error, never a picture made up in part.
 Expected<std::vector<std::uint8_t>> decode_jpeg(std::span<const std::uint8_t> bytes, JpegSize size);

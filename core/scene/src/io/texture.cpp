@@ -87,17 +87,15 @@ std::string header_problem(std::span<const std::uint8_t> bytes, int& width, int&
     return "";
 }
 
-// Texels from the decoders' top-down rows into bottom-up ones, scaled to [0, 1].
+// stb_image's top-down rows, bottom-up.
 template <class Sample>
-Texture texels_of(const Sample* samples, int width, int height, float full_scale) {
-    Texture t{width, height, std::vector<float>(static_cast<std::size_t>(width) * height * 3)};
+std::vector<Sample> bottom_up(const Sample* samples, int width, int height) {
+    std::vector<Sample> out(static_cast<std::size_t>(width) * height * 3);
     const std::size_t row = static_cast<std::size_t>(width) * 3;
-    for (int j = 0; j < height; ++j) {
-        const Sample* from = samples + row * static_cast<std::size_t>(height - 1 - j);
-        float* to = t.rgb.data() + row * static_cast<std::size_t>(j);
-        for (std::size_t k = 0; k < row; ++k) to[k] = static_cast<float>(from[k]) / full_scale;
-    }
-    return t;
+    for (int j = 0; j < height; ++j)
+        std::copy_n(samples + row * static_cast<std::size_t>(height - 1 - j), row,
+                    out.data() + row * static_cast<std::size_t>(j));
+    return out;
 }
 
 }  // namespace
@@ -110,22 +108,23 @@ Expected<Texture> decode_texture(std::span<const std::uint8_t> bytes) {
     int width = 0, height = 0, channels = 0;
     auto as_checked = [&] { return width == header_width && height == header_height; };
     if (has_jpeg_signature(bytes)) {
-        const Expected<std::vector<std::uint8_t>> rgb =
-            decode_jpeg(bytes, {header_width, header_height});
+        Expected<std::vector<std::uint8_t>> rgb = decode_jpeg(bytes, {header_width, header_height});
         if (!rgb) return rgb.error();
-        return texels_of(rgb->data(), header_width, header_height, 255.0f);
+        return Texture{header_width, header_height, std::move(*rgb), {}};
     }
     bool decoded = false;
     const int size = static_cast<int>(bytes.size());
     if (stbi_is_16_bit_from_memory(bytes.data(), size)) {
         std::unique_ptr<stbi_us, StbFree> samples(
             stbi_load_16_from_memory(bytes.data(), size, &width, &height, &channels, 3));
-        if (samples && as_checked()) return texels_of(samples.get(), width, height, 65535.0f);
+        if (samples && as_checked())
+            return Texture{width, height, {}, bottom_up(samples.get(), width, height)};
         decoded = samples != nullptr;
     } else {
         std::unique_ptr<stbi_uc, StbFree> samples(
             stbi_load_from_memory(bytes.data(), size, &width, &height, &channels, 3));
-        if (samples && as_checked()) return texels_of(samples.get(), width, height, 255.0f);
+        if (samples && as_checked())
+            return Texture{width, height, bottom_up(samples.get(), width, height), {}};
         decoded = samples != nullptr;
     }
     if (decoded)
