@@ -6,7 +6,8 @@
 // the image, Alt+drags that move an object or light (with Shift, with Esc
 // half-way), the Objects filter, structure edits (add, duplicate, delete
 // blocks, transform operations, cameras), text typed into the document
-// (broken and mended), and the scene file
+// (broken and mended), key sequences typed fast into the text editor
+// through the window's KeyTaps, and the scene file
 // rewritten, truncated, deleted, replaced by garbage or by a scene with fewer
 // cameras while the viewer has it open. After every event it checks:
 //
@@ -15,6 +16,8 @@
 //     the viewer that parses to exactly the viewer's scene; no temporary
 //     file is left beside it; every image saved is a whole PNG;
 //   - with no undo history (just loaded), the scene is the file's scene;
+//   - keys typed fast come out in order, Ctrl+Z past the start of the
+//     history changes nothing, and redo to the end gives the typing back;
 //   - a click on the image selects something the scene has (or nothing);
 //   - an Alt+drag that moved something is one undo step, which gives the
 //     text before the drag back (and redo the moved one); one cancelled with
@@ -226,8 +229,10 @@ class Monkey {
         ImGuiIO& io = ImGui::GetIO();
         const float w = static_cast<float>(viewer_.width()),
                     h = static_cast<float>(viewer_.height());
-        const int kind = pick(110);
-        if (kind >= 106) {
+        const int kind = pick(112);
+        if (kind >= 110) {
+            key_sequence_in_the_text();
+        } else if (kind >= 106) {
             move_object_event(w, h);
         } else if (kind >= 100) {
             image_tool_event(w, h);
@@ -486,6 +491,93 @@ class Monkey {
             text.insert(at, 1, " ;x1<{}"[pick(7)]);
         type_text(state_, text);
         if (pick(2)) state_.checker.wait();
+    }
+
+    static std::string near(const std::string& text, int at) {
+        const std::size_t from = static_cast<std::size_t>(std::max(at - 12, 0));
+        return text.substr(std::min(from, text.size()), 24);
+    }
+
+    // Keys as a keyboard sends them, through the window's KeyTaps, into the
+    // text editor at a random place, from the start of the undo history:
+    // Backspaces and characters typed fast at a random frame rate come out in
+    // order (issue 27 item 11); then Ctrl+Z back to the start, and twice more,
+    // gives the text before the typing (ImGui's own undo once went on past it,
+    // item 10), and Ctrl+Shift+Z back to the end gives the typing again.
+    void key_sequence_in_the_text() {
+        last_event_ = "key sequence in the text";
+        if (!state_.doc.loaded || !state_.show_ui || state_.unsaved_prompt || state_.object_drag ||
+            ImGui::IsPopupOpen("", ImGuiPopupFlags_AnyPopupId))
+            return;
+        TextEditorState& editor = viewer_.text_editor();
+        if (!editor.open) viewer_.press_key(state_, keys::letter('T'));  // as a user opens it
+        frames_ += 2;
+        if (!editor.open) return;
+        const double frame_ms = uniform(4, 150);
+        const auto ctrl_z = [&](bool shift) {
+            constexpr int ctrl_mod = 0x0002, shift_mod = 0x0001;
+            const int mods = ctrl_mod | (shift ? shift_mod : 0);
+            std::vector<KeyEvent> keys_down = {{keys::left_ctrl, 0, kKeyPress, ctrl_mod, 0}};
+            if (shift) keys_down.push_back({keys::left_shift, 0, kKeyPress, mods, 0});
+            keys_down.push_back({keys::letter('Z'), 0, kKeyPress, mods, 0});
+            keys_down.push_back({keys::letter('Z'), 0, kKeyRelease, mods, 0});
+            if (shift) keys_down.push_back({keys::left_shift, 0, kKeyRelease, ctrl_mod, 0});
+            keys_down.push_back({keys::left_ctrl, 0, kKeyRelease, 0, 0});
+            viewer_.key_events(state_, keys_down, uniform(2, 40), frame_ms);
+            frames_ += 4;
+        };
+        const auto undo_all = [&] {
+            for (int i = 0; i < 200 && state_.undo.can_undo(); ++i) undo(state_);
+            frame();
+        };
+        undo_all();
+        const std::string before = editor.buffer;
+        const int at = pick(static_cast<int>(before.size()) + 1);
+        editor.jump = at;
+        frame();
+        frame();
+        if (editor.cursor != at || editor.buffer != before) return;  // not in the editor
+        std::vector<KeyEvent> events;
+        const int backspaces = pick(4);
+        for (int i = 0; i < backspaces; ++i) {
+            events.push_back({keys::backspace, 0, kKeyPress, 0, 0});
+            events.push_back({keys::backspace, 0, kKeyRelease, 0, 0});
+        }
+        std::string typed;
+        for (int i = pick(5); i > 0; --i) typed += "1x ;{"[pick(5)];
+        for (char c : typed) {
+            const int code = c == 'x' ? 'X' : c;
+            events.push_back({code, 0, kKeyPress, 0, 0});
+            events.push_back(typed_character(static_cast<unsigned char>(c)));
+            events.push_back({code, 0, kKeyRelease, 0, 0});
+        }
+        const double event_ms = uniform(2, 40);
+        viewer_.key_events(state_, events, event_ms, frame_ms);
+        frames_ += 4;
+        std::string expected = before;
+        const int deleted = std::min(backspaces, at);
+        expected.replace(static_cast<std::size_t>(at - deleted), static_cast<std::size_t>(deleted),
+                         typed);
+        if (document_text(state_.doc) != expected) {
+            fail("typed " + std::to_string(backspaces) + " Backspaces and '" + typed + "' " +
+                 std::to_string(event_ms) + " ms apart, a frame every " + std::to_string(frame_ms) +
+                 " ms at byte " + std::to_string(at) + ": the text differs (near it: '" +
+                 near(document_text(state_.doc), at) + "', expected '" + near(expected, at) + "')");
+            return;
+        }
+        if (load_may_arrive()) return;
+        for (int i = 0; i < 8 && state_.undo.can_undo(); ++i) ctrl_z(false);
+        ctrl_z(false);
+        ctrl_z(false);
+        if (load_may_arrive()) return;
+        if (document_text(state_.doc) != before)
+            fail(
+                "Ctrl+Z to the start of the history and past it does not give the text before "
+                "the typing (near it: '" +
+                near(document_text(state_.doc), at) + "', before '" + near(before, at) + "')");
+        for (int i = 0; i < 8 && state_.undo.can_redo(); ++i) ctrl_z(true);
+        if (!load_may_arrive() && document_text(state_.doc) != expected)
+            fail("Ctrl+Shift+Z to the end does not give the typing back");
     }
 
     // One of the controls the last frame drew, or nullopt (after a frame) when none.

@@ -1,6 +1,7 @@
 #include "headless.hpp"
 
 #include "app_actions.hpp"
+#include "keys.hpp"
 #include "model_frame.hpp"
 #include "screenshot.hpp"
 #include "viewer_frame.hpp"
@@ -15,7 +16,9 @@
 namespace jt::view {
 
 HeadlessViewer::HeadlessViewer(int width, int height)
-    : context_(width, height), layer_(OsMesaContext::proc_loader()) {
+    : context_(width, height),
+      layer_(OsMesaContext::proc_loader()),
+      key_taps_(kKeyPress, kKeyRelease) {
     // As the GLFW backend reports: the panel edge can be dragged.
     if (layer_.ok()) ImGui::GetIO().BackendFlags |= ImGuiBackendFlags_HasMouseCursors;
 }
@@ -38,14 +41,44 @@ long long run_queue_wait_ns() {
     return n == 2 ? waiting : 0;
 }
 
+// What the GLFW backend does with a key event or a character.
+void key_to_imgui(const KeyEvent& e) {
+    ImGuiIO& io = ImGui::GetIO();
+    if (e.codepoint != 0) {
+        io.AddInputCharacter(e.codepoint);
+        return;
+    }
+    if (e.key < 0 || e.key >= static_cast<int>(IM_ARRAYSIZE(io.KeysDown))) return;
+    if (e.action == kKeyPress) io.KeysDown[e.key] = true;
+    if (e.action == kKeyRelease) io.KeysDown[e.key] = false;
+    io.KeyShift = io.KeysDown[keys::left_shift] || io.KeysDown[keys::right_shift];
+    io.KeyCtrl = io.KeysDown[keys::left_ctrl] || io.KeysDown[keys::right_ctrl];
+    io.KeyAlt = io.KeysDown[keys::left_alt] || io.KeysDown[keys::right_alt];
+}
+
 }  // namespace
+
+void HeadlessViewer::key_events(AppState& state, const std::vector<KeyEvent>& events,
+                                double event_ms, double frame_ms) {
+    // ImGui's clock as the frames' (a key held over frames repeats after its delay).
+    frame_seconds_ = static_cast<float>(frame_ms / 1000.0);
+    std::size_t next = 0;
+    for (double now = 0.0; next < events.size() || key_taps_.holding(); now += frame_ms) {
+        for (; next < events.size() && static_cast<double>(next) * event_ms <= now; ++next)
+            key_taps_.event(events[next], key_to_imgui);
+        frame(state);
+        key_taps_.frame_done(key_to_imgui);
+    }
+    frame(state);
+    frame_seconds_ = kFrameSeconds;
+}
 
 void HeadlessViewer::frame(AppState& state) {
     const auto start = std::chrono::steady_clock::now();
     const long long waited_before = run_queue_wait_ns();
     // Window units = framebuffer pixels / scale, as GLFW reports on a HiDPI screen.
     ImGuiLayer::set_display(static_cast<int>(context_.width() / scale_),
-                            static_cast<int>(context_.height() / scale_), scale_, 1.0f / 30.0f);
+                            static_cast<int>(context_.height() / scale_), scale_, frame_seconds_);
     layer_.set_scale(content_scale_, scale_);
     layer_.begin_frame();
     // The frames compare the document's revision, not its scenes: a change

@@ -5,6 +5,7 @@
 #include "app_state.hpp"
 #include "gl/gl_context_osmesa.hpp"
 #include "imgui_layer.hpp"
+#include "key_taps.hpp"
 #include "viewer_frame.hpp"
 
 #include <chrono>
@@ -25,6 +26,12 @@ class HeadlessViewer {
     void frame(AppState& state);
     // Holds `key` down for one frame (with the modifiers), then releases it.
     void press_key(AppState& state, int key, bool ctrl = false, bool shift = false);
+    // Key events and typed characters as the window's callbacks get them,
+    // one every `event_ms`, while frames are drawn one every `frame_ms`
+    // (simulated time: events that come during a frame reach the next one),
+    // through the window's KeyTaps; then frames until none waits.
+    void key_events(AppState& state, const std::vector<KeyEvent>& events, double event_ms,
+                    double frame_ms);
     // Drags the mouse with `button` (0 left, 1 right, 2 middle) from one point
     // to another (window units, y down) over a few frames, as a user would:
     // pressed at the first point, moved, released at the second; `modifiers`
@@ -43,6 +50,8 @@ class HeadlessViewer {
     void move_mouse(AppState& state, float x, float y);
     // Turns the wheel by `steps` with the mouse at (x, y) (Ctrl held: zooms the image).
     void scroll(AppState& state, float x, float y, float steps, bool ctrl = false);
+    // The text editor's state (what the editor shows, where its cursor is).
+    TextEditorState& text_editor() { return frame_state_.text_editor; }
     // Runs frames until the render of the current scene is complete and shown,
     // then `settle_frames` more so the UI shows the final state. False on timeout
     // or when there is nothing to render.
@@ -88,6 +97,9 @@ class HeadlessViewer {
     OsMesaContext context_;
     ImGuiLayer layer_;
     FrameState frame_state_;  // after the context: its texture goes first
+    KeyTaps key_taps_;
+    static constexpr float kFrameSeconds = 1.0f / 30.0f;  // ImGui's time between frames
+    float frame_seconds_ = kFrameSeconds;
     float scale_ = 1.0f;
     float content_scale_ = 1.0f;
     bool check_revisions_ = true;

@@ -1,11 +1,16 @@
 #include "key_taps.hpp"
 
 #include <algorithm>
-#include <utility>
 
 namespace jt::view {
 
 namespace {
+
+// GLFW's codes: keys below 256 type characters; from 340 they are modifiers
+// (Shift, Ctrl, Alt, Super, left and right) and Menu.
+constexpr int kFirstNonCharacterKey = 256;
+constexpr int kFirstModifierKey = 340;
+constexpr int kShortcutMods = 0x0002 | 0x0004 | 0x0008;  // GLFW_MOD_CONTROL, _ALT, _SUPER
 
 bool holds(const std::vector<int>& keys, int key) {
     return std::find(keys.begin(), keys.end(), key) != keys.end();
@@ -13,38 +18,40 @@ bool holds(const std::vector<int>& keys, int key) {
 
 }  // namespace
 
-// A key repeat (GLFW_REPEAT) changes nothing ImGui reads and is never held.
-bool KeyTaps::changes_key(const KeyEvent& event) const {
-    return event.action == press_ || event.action == release_;
+// A key repeat (GLFW_REPEAT) changes nothing ImGui reads: it always fits.
+bool KeyTaps::fits_this_frame(const KeyEvent& event) const {
+    if (event.codepoint != 0) return !editing_key_pressed_;
+    const bool changes_key = event.action == press_ || event.action == release_;
+    return !changes_key || !holds(changed_, event.key);
 }
 
 void KeyTaps::pass(const KeyEvent& event, const Sink& sink) {
-    if (changes_key(event)) changed_.push_back(event.key);
+    if (event.codepoint == 0 && (event.action == press_ || event.action == release_))
+        changed_.push_back(event.key);
+    if (event.codepoint == 0 && event.action != release_) {
+        const bool editing = event.key >= kFirstNonCharacterKey && event.key < kFirstModifierKey;
+        if (editing || (event.mods & kShortcutMods) != 0) editing_key_pressed_ = true;
+    }
     sink(event);
 }
 
-void KeyTaps::event(const KeyEvent& event, const Sink& sink) {
-    const bool earlier_held = std::any_of(held_.begin(), held_.end(),
-                                          [&](const KeyEvent& e) { return e.key == event.key; });
-    if (earlier_held || (changes_key(event) && holds(changed_, event.key))) {
-        held_.push_back(event);
-        return;
+void KeyTaps::pass_what_fits(const Sink& sink) {
+    while (!held_.empty() && fits_this_frame(held_.front())) {
+        const KeyEvent event = held_.front();
+        held_.pop_front();
+        pass(event, sink);
     }
-    pass(event, sink);
+}
+
+void KeyTaps::event(const KeyEvent& event, const Sink& sink) {
+    held_.push_back(event);
+    pass_what_fits(sink);
 }
 
 void KeyTaps::frame_done(const Sink& sink) {
     changed_.clear();
-    std::vector<KeyEvent> waiting = std::exchange(held_, {});
-    std::vector<int> still_held;  // keys with an earlier event still waiting
-    for (const KeyEvent& event : waiting) {
-        if (holds(still_held, event.key) || (changes_key(event) && holds(changed_, event.key))) {
-            held_.push_back(event);
-            still_held.push_back(event.key);
-            continue;
-        }
-        pass(event, sink);
-    }
+    editing_key_pressed_ = false;
+    pass_what_fits(sink);
 }
 
 }  // namespace jt::view

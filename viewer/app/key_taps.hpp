@@ -1,20 +1,35 @@
 #pragma once
-// Lets ImGui 1.86 see every key tap. It reads a key as "down at the start of
-// the frame": a key pressed and released between two frames (a tap while a
-// frame renders, or two events in one batch) was never seen down, and its
-// shortcut (Ctrl+Z, Esc, Space) was lost; three Backspaces typed within one
-// slow frame deleted one character. So each key changes at most once a frame:
-// an event that would change a key already changed since the last frame waits,
-// in order, for the frames after.
+// Lets ImGui 1.86 see every key tap, and typing in the order it was typed.
+// ImGui reads a key as "down at the start of the frame": a key pressed and
+// released between two frames (a tap while a frame renders, or two events in
+// one batch) was never seen down, and its shortcut (Ctrl+Z, Esc, Space) was
+// lost; three Backspaces typed within one slow frame deleted one character.
+// And a text field takes the frame's typed characters before its keys: in
+// `877|`, Backspace x3 then "123" in one frame gave "871". So the events wait
+// in one queue, in order, and each frame takes them from its front while
+//   - each key changes (is pressed or let go) at most once a frame, and
+//   - a character comes in no frame in which an editing key (Backspace,
+//     Delete, Enter, an arrow...: a key that is no character or modifier) or
+//     a shortcut (a key with Ctrl, Alt or Super) was pressed before it.
 
+#include <deque>
 #include <functional>
 #include <vector>
 
 namespace jt::view {
 
+// A key event (key, scancode, action, mods as GLFW passes them) or, when
+// `codepoint` is not 0, a typed character.
 struct KeyEvent {
-    int key = 0, scancode = 0, action = 0, mods = 0;  // as GLFW passes them
+    int key = 0, scancode = 0, action = 0, mods = 0;
+    unsigned codepoint = 0;
 };
+
+inline KeyEvent typed_character(unsigned codepoint) {
+    KeyEvent e;
+    e.codepoint = codepoint;
+    return e;
+}
 
 class KeyTaps {
   public:
@@ -22,20 +37,24 @@ class KeyTaps {
     // `press` and `release`: the platform's action codes (GLFW_PRESS, GLFW_RELEASE).
     KeyTaps(int press, int release) : press_(press), release_(release) {}
 
-    // Passes `event` on to `sink` now, or holds it back (its key has changed
-    // since the last frame, or an earlier event of its key is held).
+    // Passes `event` on to `sink` now, or holds it back behind the events
+    // that wait, or because this frame cannot take it (see above).
     void event(const KeyEvent& event, const Sink& sink);
-    // After each frame: passes on, in order, the held-back events whose key
-    // has not changed yet in the frame to come.
+    // After each frame: passes on, in order, the held-back events the frame
+    // to come can take.
     void frame_done(const Sink& sink);
+    // Events wait for a frame: the frame loop must not sleep.
+    bool holding() const { return !held_.empty(); }
 
   private:
-    bool changes_key(const KeyEvent& event) const;
+    bool fits_this_frame(const KeyEvent& event) const;
     void pass(const KeyEvent& event, const Sink& sink);
+    void pass_what_fits(const Sink& sink);
 
     int press_, release_;
-    std::vector<int> changed_;  // keys pressed or released since the last frame
-    std::vector<KeyEvent> held_;
+    std::vector<int> changed_;          // keys pressed or released since the last frame
+    bool editing_key_pressed_ = false;  // since the last frame
+    std::deque<KeyEvent> held_;
 };
 
 }  // namespace jt::view

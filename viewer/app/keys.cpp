@@ -10,6 +10,8 @@ void use_glfw_key_codes(ImGuiIO& io) {
     io.KeyMap[ImGuiKey_RightArrow] = keys::right;
     io.KeyMap[ImGuiKey_UpArrow] = keys::up;
     io.KeyMap[ImGuiKey_DownArrow] = keys::down;
+    io.KeyMap[ImGuiKey_Home] = keys::home;
+    io.KeyMap[ImGuiKey_End] = keys::end;
     io.KeyMap[ImGuiKey_Delete] = keys::del;
     io.KeyMap[ImGuiKey_Backspace] = keys::backspace;
     io.KeyMap[ImGuiKey_Space] = keys::space;

@@ -28,10 +28,22 @@ inline constexpr int right = 262;
 inline constexpr int left = 263;
 inline constexpr int down = 264;
 inline constexpr int up = 265;
+inline constexpr int home = 268;
+inline constexpr int end = 269;
+inline constexpr int left_shift = 340;
+inline constexpr int left_ctrl = 341;
+inline constexpr int left_alt = 342;
+inline constexpr int right_shift = 344;
+inline constexpr int right_ctrl = 345;
+inline constexpr int right_alt = 346;
 
 }  // namespace jt::view::keys
 
 namespace jt::view {
+
+// GLFW's key actions (GLFW_PRESS, GLFW_RELEASE).
+inline constexpr int kKeyPress = 1;
+inline constexpr int kKeyRelease = 0;
 
 // Fills io.KeyMap with the codes above, as the GLFW backend would.
 void use_glfw_key_codes(ImGuiIO& io);

@@ -70,11 +70,19 @@ CLI::Validator timeout_check() {
 KeyTaps key_taps{GLFW_PRESS, GLFW_RELEASE};
 
 void key_to_imgui(GLFWwindow* window, const KeyEvent& e) {
-    ImGui_ImplGlfw_KeyCallback(window, e.key, e.scancode, e.action, e.mods);
+    if (e.codepoint != 0)
+        ImGui_ImplGlfw_CharCallback(window, e.codepoint);
+    else
+        ImGui_ImplGlfw_KeyCallback(window, e.key, e.scancode, e.action, e.mods);
 }
 
 void on_key(GLFWwindow* window, int key, int scancode, int action, int mods) {
-    key_taps.event({key, scancode, action, mods},
+    key_taps.event({key, scancode, action, mods, 0},
+                   [window](const KeyEvent& e) { key_to_imgui(window, e); });
+}
+
+void on_char(GLFWwindow* window, unsigned codepoint) {
+    key_taps.event(typed_character(codepoint),
                    [window](const KeyEvent& e) { key_to_imgui(window, e); });
 }
 
@@ -139,7 +147,9 @@ int run_window(const Arguments& args) {
         return 1;
     }
     ImGui_ImplGlfw_InitForOpenGL(window.handle(), true);
-    glfwSetKeyCallback(window.handle(), on_key);  // in place of the backend's, which it calls
+    // In place of the backend's, which they call.
+    glfwSetKeyCallback(window.handle(), on_key);
+    glfwSetCharCallback(window.handle(), on_char);
     ImGui::GetIO().BackendFlags |= ImGuiBackendFlags_HasMouseCursors;  // the panel edge resizes
     std::optional<std::string> dropped;
     window.on_drop([&](const std::string& path) { dropped = path; });
@@ -170,8 +180,11 @@ int run_window(const Arguments& args) {
             // that the frame showing it starts at once, not at the next tick.
             // An object drag writes the cursor's last position once its interval
             // passes: frames go on while the mouse holds still.
-            if (render_complete(app) && !app.loader.busy() && !app.object_drag &&
-                !args.exit_when_done)
+            // Keys held back for the next frame (key_taps.hpp) need it now.
+            if (key_taps.holding())
+                window.poll_events();
+            else if (render_complete(app) && !app.loader.busy() && !app.object_drag &&
+                     !args.exit_when_done)
                 window.wait_events(0.2);
             else if (waiting_for_workers(app))
                 window.wait_events(0.05);

@@ -4,6 +4,7 @@
 #include "document_edits.hpp"
 #include "keys.hpp"
 #include "panels/panels.hpp"
+#include "text_cursor.hpp"
 #include "ui_items.hpp"
 
 #include <imgui.h>
@@ -58,15 +59,36 @@ void follow_document(const AppState& state, TextEditorState& ed) {
     ed.push = true;
 }
 
+// The widget keeps its own undo history and, for Esc, the text it was
+// activated with; both describe text the app may have replaced since (an undo
+// of the app's, a panel edit), and acting on them would change bytes at stale
+// offsets. Undo is the app's alone (Ctrl+Z walks the one history), so after
+// every frame the widget's history is empty and its Esc text is the text now.
+void forget_widget_history(ImGuiInputTextState& widget, std::string_view text) {
+    ImStb::StbUndoState& undo = widget.Stb.undostate;
+    undo.undo_point = 0;
+    undo.undo_char_point = 0;
+    undo.redo_point = STB_TEXTEDIT_UNDOSTATECOUNT;
+    undo.redo_char_point = STB_TEXTEDIT_UNDOCHARCOUNT;
+    ImVector<char>& initial = widget.InitialTextA;
+    if (initial.Size == static_cast<int>(text.size()) + 1 &&
+        std::memcmp(initial.Data, text.data(), text.size()) == 0)
+        return;
+    initial.resize(static_cast<int>(text.size()) + 1);
+    std::memcpy(initial.Data, text.data(), text.size());
+    initial[static_cast<int>(text.size())] = '\0';
+}
+
 int on_input(ImGuiInputTextCallbackData* data) {
     auto& ed = *static_cast<TextEditorState*>(data->UserData);
     if (ed.push) {
         ed.push = false;
-        if (std::string_view(data->Buf, static_cast<std::size_t>(data->BufTextLen)) != ed.buffer) {
-            const int keep = std::min(data->CursorPos, static_cast<int>(ed.buffer.size()));
+        const std::string_view now(data->Buf, static_cast<std::size_t>(data->BufTextLen));
+        if (now != ed.buffer) {
+            const int cursor = cursor_after_replace(now, ed.buffer, data->CursorPos);
             data->DeleteChars(0, data->BufTextLen);
             data->InsertChars(0, ed.buffer.data(), ed.buffer.data() + ed.buffer.size());
-            data->CursorPos = data->SelectionStart = data->SelectionEnd = keep;
+            data->CursorPos = data->SelectionStart = data->SelectionEnd = cursor;
         }
     }
     if (ed.jump) {
@@ -75,6 +97,9 @@ int on_input(ImGuiInputTextCallbackData* data) {
         ed.jump.reset();
     }
     ed.cursor = data->CursorPos;
+    if (ImGuiInputTextState* widget = ImGui::GetInputTextState(ImGui::GetActiveID()))
+        forget_widget_history(
+            *widget, std::string_view(data->Buf, static_cast<std::size_t>(data->BufTextLen)));
     return 0;
 }
 
@@ -149,6 +174,15 @@ void text_editor(AppState& state, TextEditorState& ed, float x0, float y0, float
         ImGui::End();
         return;
     }
+    if (ed.buffer.find('\0') != std::string::npos) {
+        // The widget's text ends at the first NUL: editing would cut the rest.
+        ImGui::TextWrapped(
+            "%s holds NUL bytes: it is no text the editor can show. Diagnostics say what is "
+            "wrong; the viewer reloads it when it changes.",
+            name.c_str());
+        ImGui::End();
+        return;
+    }
     if (ed.buffer.size() > kMaxEditableText) {
         ImGui::TextWrapped(
             "%s is %.1f MB: too large to edit here. Edit it in another editor; the "
@@ -166,6 +200,11 @@ void text_editor(AppState& state, TextEditorState& ed, float x0, float y0, float
         ImGui::TextColored(ImVec4(1.0f, 0.45f, 0.4f, 1.0f), "errors: showing the last good image");
     else
         ImGui::TextDisabled("Ctrl+Z undoes panel and text edits alike");
+    if (doc.file_deleted)
+        ImGui::TextColored(ImVec4(1.0f, 0.7f, 0.3f, 1.0f),
+                           "%s was deleted on disk: this is the viewer's copy; Save scene "
+                           "writes it again",
+                           name.c_str());
 
     const float list_height = ImGui::GetTextLineHeightWithSpacing() * 5.0f + 8.0f;
     const float editor_height =

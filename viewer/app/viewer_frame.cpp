@@ -400,6 +400,9 @@ void inspect_hovered_pixel(AppState& state, const ImagePlace& image) {
     state.inspected.clear();
     const ImGuiIO& io = ImGui::GetIO();
     if (state.drag.button >= 0 || io.WantCaptureMouse || !ImGui::IsMousePosValid()) return;
+    // A popup opened this frame (Esc's prompt) is not in WantCaptureMouse yet,
+    // and ImGui 1.86 asserts on a tooltip that appears under a modal.
+    if (ImGui::IsPopupOpen("", ImGuiPopupFlags_AnyPopupId | ImGuiPopupFlags_AnyPopupLevel)) return;
     if (!image.shows(io.MousePos.x, io.MousePos.y)) return;
     const std::optional<ImagePoint> at =
         window_to_image(image.where, image.width, image.height, io.MousePos.x, io.MousePos.y);

@@ -90,12 +90,39 @@ void finish_open(AppState& state, const std::filesystem::path& path, LoadAttempt
     }
 }
 
+// The open file, read again, has errors: with no unsaved edits the text
+// editor shows it with its errors (accept_broken_file); the last good scene
+// and image stay.
+void show_broken_file(AppState& state, LoadAttempt attempt) {
+    accept_broken_file(state.doc, std::move(attempt));
+    // The scene is not replaced (no new revision, no render); the history
+    // was of the text before.
+    state.undo.clear();
+    state.edit_base.reset();
+    state.pending_reload.reset();
+    state.save_conflict.clear();
+    state.typing = false;
+    state.checker.cancel();
+    state.message = state.doc.path.filename().string() +
+                    (state.doc.loaded ? " has errors: the text editor (T) shows them; the image is "
+                                        "of the last good scene"
+                                      : " has errors");
+}
+
 void finish_reload(AppState& state, LoadAttempt attempt) {
     const std::string name = state.doc.path.filename().string();
-    if (!attempt.ok) {
+    if (!attempt.read) {
+        // Nothing to show instead: the viewer's text is all there is now.
         accept_load(state.doc, state.doc.path, std::move(attempt));
-        state.message = state.doc.loaded ? "The file has errors: showing the last good scene"
-                                         : "The file has errors";
+        state.message = state.doc.file_deleted
+                            ? name +
+                                  " was deleted: the viewer keeps its text; Save scene writes "
+                                  "it again"
+                            : name + " cannot be read: see Diagnostics";
+        return;
+    }
+    if (!attempt.ok && !has_unsaved_edits(state.doc)) {
+        show_broken_file(state, std::move(attempt));
         return;
     }
     if (!has_unsaved_edits(state.doc)) {
@@ -113,17 +140,17 @@ void finish_reload(AppState& state, LoadAttempt attempt) {
     if (!unchanged) {
         if (const Expected<Scene> reapplied = reapply_edits(state.doc, attempt); !reapplied)
             state.reapply_problem = reapplied.error().message;
-        state.doc.load_failed = false;
+        state.doc.load_failed = !attempt.ok;
         state.doc.diagnostics = attempt.diagnostics;
         state.doc.diagnostics_source = attempt.text;
     }
+    const bool broken = !attempt.ok;
     state.pending_reload = std::move(attempt);
     state.message = unchanged ? name +
                                     " is unchanged on disk; reloading it would drop your "
                                     "unsaved edits: choose in the File panel"
-                              : name +
-                                    " changed on disk while you have unsaved edits: choose "
-                                    "in the File panel";
+                              : name + " changed on disk" + (broken ? " (it has errors)" : "") +
+                                    " while you have unsaved edits: choose in the File panel";
 }
 
 }  // namespace
@@ -229,6 +256,11 @@ void resolve_reload(AppState& state, ReloadChoice choice) {
         edited = std::move(*reapplied);
     }
     LoadAttempt newer = std::move(*state.pending_reload);
+    if (!newer.ok) {
+        show_broken_file(state, std::move(newer));
+        state.message = "Reloaded " + name + " (it has errors); your edits were dropped";
+        return;
+    }
     const Scene before = state.doc.scene;
     accept_load(state.doc, state.doc.path, std::move(newer));
     after_scene_replaced(state, before);

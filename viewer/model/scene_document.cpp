@@ -18,6 +18,8 @@ LoadAttempt attempt_load(const std::filesystem::path& path) {
     // The core reads and parses in one call: both steps end here.
     attempt.times.read = attempt.times.parsed = LoadTimes::Clock::now();
     if (!read) {
+        std::error_code ec;
+        attempt.missing = !std::filesystem::exists(path, ec) && !ec;
         attempt.diagnostics.push_back(
             Diagnostic{Severity::error, SourcePos{}, read.error().message});
         return attempt;
@@ -39,6 +41,7 @@ void accept_load(SceneDocument& doc, const std::filesystem::path& path, LoadAtte
     doc.diagnostics_path = path;
     doc.load_failed = !attempt.ok;
     doc.file_unread = !attempt.read;
+    doc.file_deleted = attempt.missing;
     if (!attempt.ok) {
         doc.diagnostics_source = std::move(attempt.text);  // moved: it may be huge
         if (!doc.loaded) {
@@ -59,6 +62,14 @@ void accept_load(SceneDocument& doc, const std::filesystem::path& path, LoadAtte
     doc.scene = doc.original;
     doc.draft.reset();
     note_scene_changed(doc);
+}
+
+void accept_broken_file(SceneDocument& doc, LoadAttempt attempt) {
+    const std::filesystem::path path = doc.path;
+    accept_load(doc, path, std::move(attempt));
+    if (!doc.loaded) return;  // the file's text is shown already (document_text)
+    doc.disk_text = doc.diagnostics_source;
+    doc.draft = doc.disk_text;
 }
 
 DocumentVersion version_of(const SceneDocument& doc) {
@@ -124,8 +135,8 @@ bool scene_edited(const SceneDocument& doc) {
 }
 
 bool has_unsaved_edits(const SceneDocument& doc) {
-    return (doc.loaded || doc.draft) &&
-           (doc.draft || scene_edited(doc) || doc.text != doc.disk_text);
+    if (doc.draft) return *doc.draft != doc.disk_text;  // a broken file's own text is saved
+    return doc.loaded && (scene_edited(doc) || doc.text != doc.disk_text);
 }
 
 bool file_changed_on_disk(const SceneDocument& doc, std::string& what) {
@@ -148,6 +159,7 @@ bool file_changed_on_disk(const SceneDocument& doc, std::string& what) {
 }
 
 Expected<Scene> reapply_edits(const SceneDocument& doc, const LoadAttempt& newer) {
+    if (!newer.ok) return Error{"the file on disk has errors"};
     if (doc.draft || doc.text != doc.disk_text)
         return Error{
             "the text itself was edited (typed, or blocks added or deleted); only "

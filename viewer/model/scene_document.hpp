@@ -37,6 +37,7 @@ struct SceneDocument {
     std::filesystem::path diagnostics_path;  // the file they are about
     bool load_failed = false;                // the latest load attempt had errors: `scene` is older
     bool file_unread = false;                // the latest load could not read the file at all
+    bool file_deleted = false;               // ... because it is not there
     // Text typed in the text editor, not yet taken in: waiting for its check,
     // or with errors (`diagnostics` then describe it and `scene` is the last
     // good one).
@@ -89,7 +90,8 @@ struct LoadTimes {
 
 struct LoadAttempt {
     bool ok = false;
-    bool read = false;  // the file's bytes were read (ok or not, they are `text`)
+    bool read = false;     // the file's bytes were read (ok or not, they are `text`)
+    bool missing = false;  // not read because the file is not there
     std::string text;
     Scene scene;
     SceneSource source;
@@ -105,6 +107,12 @@ LoadAttempt attempt_load(const std::filesystem::path& path);
 // Takes `attempt` into `doc`: on success the scene is replaced, on failure
 // the last good scene stays and only the diagnostics change.
 void accept_load(SceneDocument& doc, const std::filesystem::path& path, LoadAttempt attempt);
+
+// The open file was read again and has errors: the document shows its text
+// as a draft, with its diagnostics, so that it can be fixed in place (the
+// scene and image stay the last good ones). That draft is the file as it is,
+// no unsaved edit, and, having errors, is never saved over the file.
+void accept_broken_file(SceneDocument& doc, LoadAttempt attempt);
 
 // "file:line:col: error: message" lines, as the CLI prints them.
 std::string format_diagnostics(const SceneDocument& doc);

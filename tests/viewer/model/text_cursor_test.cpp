@@ -1,0 +1,28 @@
+// Where the text editor's cursor goes when the app replaces the text.
+
+#include "text_cursor.hpp"
+
+#include <gtest/gtest.h>
+
+namespace jt::view {
+namespace {
+
+TEST(TextCursor, AnUndoOfTypingPutsTheCursorWhereTheTypingStarted) {
+    const std::string typed = "a\n# hello\nb\n", undone = "a\n\nb\n";
+    EXPECT_EQ(cursor_after_replace(typed, undone, 9), 2) << "after the typed text";
+    EXPECT_EQ(cursor_after_replace(typed, undone, 5), 2) << "inside it";
+    EXPECT_EQ(cursor_after_replace(typed, undone, 1), 1) << "before it: kept";
+    EXPECT_EQ(cursor_after_replace(typed, undone, 11), 4) << "after it: moved with the text";
+    EXPECT_EQ(cursor_after_replace(undone, typed, 2), 2) << "a redo: the start of the insert";
+    EXPECT_EQ(cursor_after_replace(undone, typed, 3), 10) << "after it: moved";
+}
+
+TEST(TextCursor, StaysInsideTheNewText) {
+    EXPECT_EQ(cursor_after_replace("abcdef", "", 4), 0);
+    EXPECT_EQ(cursor_after_replace("abc", "abc", 99), 3);
+    EXPECT_EQ(cursor_after_replace("abc", "xbc", -4), 0);
+    EXPECT_EQ(cursor_after_replace("width: 1;", "width: 25;", 8), 9);
+}
+
+}  // namespace
+}  // namespace jt::view

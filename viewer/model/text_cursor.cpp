@@ -1,0 +1,22 @@
+#include "text_cursor.hpp"
+
+#include <algorithm>
+#include <cstddef>
+
+namespace jt::view {
+
+int cursor_after_replace(std::string_view before, std::string_view after, int cursor) {
+    const std::size_t at = static_cast<std::size_t>(std::clamp<long>(cursor, 0, before.size()));
+    const std::size_t shorter = std::min(before.size(), after.size());
+    std::size_t prefix = 0;
+    while (prefix < shorter && before[prefix] == after[prefix]) ++prefix;
+    std::size_t suffix = 0;
+    while (suffix < shorter - prefix &&
+           before[before.size() - 1 - suffix] == after[after.size() - 1 - suffix])
+        ++suffix;
+    if (at <= prefix) return static_cast<int>(at);
+    if (at >= before.size() - suffix) return static_cast<int>(at - before.size() + after.size());
+    return static_cast<int>(after.size() - suffix);
+}
+
+}  // namespace jt::view
