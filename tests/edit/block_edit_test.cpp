@@ -20,20 +20,23 @@ std::size_t line_of(std::string_view text, std::string_view part) {
     return text.rfind('\n', at) + 1;
 }
 
-TEST(AddBlock, EveryKindGoesAfterTheLastItemInTheBlocksStyle) {
+// A primitive goes with the primitives (after the last, before the lights
+// that follow it: issue 27 item 17), a light after the last item.
+TEST(AddBlock, EveryKindGoesAfterTheLastOfItsKindInTheBlocksStyle) {
     const Parsed base(kEditScene);
     const std::size_t close = base.text.rfind("}\n");
+    const std::size_t after_objects = line_of(base.text, "    point_light") - 1;  // the blank line
     for (ShapeKind kind : kShapeKinds) {
         SCOPED_TRACE(std::string(keyword_of(kind)));
         const Primitive added = new_primitive(kind, base.scene());
         Scene expected = base.scene();
         expected.primitives.push_back(added);
         const std::string text = expect_scene(add_primitive(base.scene_text(), added), expected);
-        expect_only_changed(base.text, text, close, close);
+        expect_only_changed(base.text, text, after_objects, after_objects);
         // A blank line, then the serializer's block at the items' indentation.
         std::string block = "\n";
         for (const std::string& line : block_lines(added)) block += "    " + line + "\n";
-        EXPECT_EQ(text.substr(close, block.size()), block);
+        EXPECT_EQ(text.substr(after_objects, block.size()), block);
     }
     const PointLight light = new_light(base.scene());
     Scene expected = base.scene();
@@ -67,6 +70,18 @@ TEST(AddBlock, IntoAnEmptyOrOneLineSceneBlock) {
     const std::string inline_text =
         expect_scene(add_light(one_line.scene_text(), expected.lights[0]), expected);
     EXPECT_EQ(inline_text.find('\n'), std::string::npos) << inline_text;
+}
+
+// In new_scene()'s text, which holds a light and no primitive, the first
+// primitive goes before the light.
+TEST(AddBlock, TheFirstPrimitiveGoesBeforeTheLights) {
+    const Parsed base(serialize_scene(new_scene()));
+    const Primitive added = new_primitive(ShapeKind::sphere, base.scene());
+    Scene expected = base.scene();
+    expected.primitives.push_back(added);
+    const std::string text = expect_scene(add_primitive(base.scene_text(), added), expected);
+    ASSERT_NE(text.find("sphere {"), std::string::npos) << text;
+    EXPECT_LT(text.find("sphere {"), text.find("point_light {")) << text;
 }
 
 TEST(DuplicateBlock, CopiesThePrimitiveWithItsCommentsRightAfterIt) {

@@ -63,6 +63,26 @@ TEST(NewBlock, APlaneBelowTheViewAndACylinderStandingInIt) {
     EXPECT_EQ(cylinder.transforms[0].vector.z, 5.0);
 }
 
+// Issue 27 item 17: a plane in new_scene() lay at distance 0.67, through
+// the middle of the view; it goes at the view's floor, under the objects.
+TEST(NewBlock, APlaneGoesAtTheViewsFloorUnderTheObjects) {
+    Scene scene = new_scene();
+    EXPECT_EQ(scene.cameras[0].name, "main");
+    const Plane floor = std::get<Plane>(new_primitive(ShapeKind::plane, scene).shape);
+    EXPECT_EQ(floor.normal, Vec3(0, 1, 0));
+    EXPECT_EQ(floor.distance, 0.0) << "the camera looks at a point a unit above the origin";
+    Primitive low = new_primitive(ShapeKind::sphere, scene);
+    std::get<Sphere>(low.shape) = Sphere{Vec3(1, -2, 0), 0.5};
+    scene.primitives.push_back(low);
+    Primitive lifted = new_primitive(ShapeKind::cylinder, scene);
+    lifted.transforms = {{TransformKind::translate, Vec3(0, -3, 0), 0.0}};
+    const Plane under = std::get<Plane>(new_primitive(ShapeKind::plane, scene).shape);
+    EXPECT_EQ(under.distance, -2.5) << "under the sphere";
+    scene.primitives.push_back(lifted);
+    EXPECT_EQ(std::get<Plane>(new_primitive(ShapeKind::plane, scene).shape).distance, -3.0)
+        << "under the translated cylinder";
+}
+
 TEST(NewBlock, ATriangleStandingInTheViewFacingTheCamera) {
     const Scene scene = looking({0, 2, 10}, {0, 2, 0});
     const Primitive added = new_primitive(ShapeKind::triangle, scene);

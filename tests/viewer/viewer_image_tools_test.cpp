@@ -97,6 +97,26 @@ TEST_F(ViewerImageTools, ACtrlClickSetsNoRegionAndADragPastTheImageStopsAtItsEdg
     EXPECT_EQ(*state.render_region, (FrameRegion{0, 0, 21, 28}));
 }
 
+// Issue 27 item 19: a region, then the camera moves: the rest of the image
+// showed the old view beside the region's new one. The region is cleared and
+// the whole image is the new view's, as the CLI renders it.
+TEST_F(ViewerImageTools, MovingTheCameraClearsTheRegionAndRendersTheWholeNewView) {
+    const WindowPoint a = at(10.3, 40.6), b = at(41.7, 12.2);
+    viewer.drag(state, 0, a.x, a.y, b.x, b.y, kCtrl);
+    ASSERT_TRUE(state.render_region);
+    ASSERT_TRUE(viewer.run_until_complete(state, kTimeout));
+    const WindowPoint c = at(20, 20), d = at(30, 24);
+    viewer.drag(state, 0, c.x, c.y, d.x, d.y);  // orbits
+    ASSERT_TRUE(state.free_camera_active);
+    ASSERT_TRUE(viewer.run_until_complete(state, kTimeout));
+    EXPECT_FALSE(state.render_region);
+    ASSERT_TRUE(state.started);
+    EXPECT_FALSE(state.started->options.region);
+    ASSERT_TRUE(copy_free_camera_to_scene(state, "moved"));
+    ASSERT_TRUE(viewer.run_until_complete(state, kTimeout));
+    EXPECT_EQ(state.display, cli_image({"--camera", "moved"})) << "every pixel of the new view";
+}
+
 // Snapshot A, an edit, then A against the live image.
 class ViewerCompare : public ViewerImageTools {
   protected:

@@ -50,6 +50,8 @@ class HeadlessViewer {
     void move_mouse(AppState& state, float x, float y);
     // Turns the wheel by `steps` with the mouse at (x, y) (Ctrl held: zooms the image).
     void scroll(AppState& state, float x, float y, float steps, bool ctrl = false);
+    // The reload choice's bar (the differences it shows).
+    const ReloadBarState& reload_bar() const { return frame_state_.reload_bar; }
     // The text editor's state (what the editor shows, where its cursor is).
     TextEditorState& text_editor() { return frame_state_.text_editor; }
     // Runs frames until the render of the current scene is complete and shown,

@@ -535,6 +535,7 @@ void viewer_frame(AppState& state, FrameState& frame, const FrameInfo& info) {
             area.x1 = w - editor_w;
             text_editor(state, frame.text_editor, area.x1, 0.0f, w, area.y1);
         }
+        area.y0 += reload_bar(state, frame.reload_bar, area);
         status_window(state, h - status_h, w);
         if (frame.presenter.has_image())
             image_toolbar(state, frame, place(state, frame, area, info.framebuffer_scale));

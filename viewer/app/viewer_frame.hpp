@@ -5,6 +5,7 @@
 
 #include "app_state.hpp"
 #include "presenter.hpp"
+#include "reload_bar.hpp"
 #include "selection_overlay.hpp"
 #include "text_editor.hpp"
 #include "ui_items.hpp"
@@ -31,6 +32,7 @@ struct FrameState {
     SelectionOverlay overlay;
     std::vector<UiItem> ui_items;
     TextEditorState text_editor;
+    ReloadBarState reload_bar;
     ScreenRect image_area;  // where the last frame could show the image
     ScreenRect image_rect;  // where it put it (place_image; may reach past image_area)
 };

@@ -146,11 +146,12 @@ void finish_reload(AppState& state, LoadAttempt attempt) {
     }
     const bool broken = !attempt.ok;
     state.pending_reload = std::move(attempt);
-    state.message = unchanged ? name +
-                                    " is unchanged on disk; reloading it would drop your "
-                                    "unsaved edits: choose in the File panel"
-                              : name + " changed on disk" + (broken ? " (it has errors)" : "") +
-                                    " while you have unsaved edits: choose in the File panel";
+    state.message = unchanged
+                        ? name +
+                              " is unchanged on disk; reloading it would drop your "
+                              "unsaved edits: choose in the bar above the image"
+                        : name + " changed on disk" + (broken ? " (it has errors)" : "") +
+                              " while you have unsaved edits: choose in the bar above the image";
 }
 
 }  // namespace
@@ -661,6 +662,8 @@ void update_render(AppState& state) {
     } else {
         state.edit_waiting = false;
         std::optional<RenderRequest> request = render_request(state, state.render_note);
+        if (request && clear_region_for_new_view(state, *request))
+            request = render_request(state, state.render_note);
         if (request && request == state.rejected) {
             state.render_note = state.rejected_reason;
         } else if (request && request != state.started) {

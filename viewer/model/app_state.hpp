@@ -215,6 +215,14 @@ struct AppState {
     bool space_panned = false;  // Space is held for a pan: its release does not pause
     // The part of the image that renders alone, as jtracer-cli --region counts it.
     std::optional<FrameRegion> render_region;
+    // The view the rest of the image shows while the region renders alone
+    // (render_region.hpp): the camera, whatever its name, and the image size.
+    struct RegionView {
+        Camera camera;
+        int width = 0, height = 0;
+        bool operator==(const RegionView&) const = default;
+    };
+    std::optional<RegionView> region_view;
     CompareState compare;
     bool show_ui = true;
     float sidebar_width = kDefaultPanelWidth;  // in font heights, so that it scales with the font

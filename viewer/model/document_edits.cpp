@@ -10,6 +10,7 @@
 #include "jtracer/serializer.hpp"
 #include "jtracer/texture.hpp"
 #include "jtracer/transform_edit.hpp"
+#include "jtracer/value_text.hpp"
 #include "ui_rounding.hpp"
 
 namespace jt::view {
@@ -296,7 +297,11 @@ bool start_new_scene(AppState& state) {
         return false;
     }
     // As if typed, but taken in at once: the text is short and known to be sound.
-    std::string text = serialize_scene(new_scene());
+    Scene scene = new_scene();
+    // The image is named after the scene file, as jtracer-cli's -o would be.
+    const std::string image = state.doc.path.stem().string() + ".bmp";
+    if (state.doc.path.has_stem() && is_writable_string(image)) scene.settings.filename = image;
+    std::string text = serialize_scene(scene);
     state.undo.record(version_of(state.doc));
     state.edit_base.reset();
     state.doc.draft = text;

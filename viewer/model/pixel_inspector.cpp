@@ -15,7 +15,8 @@ std::optional<PixelReport> inspect_pixel(AppState& state, int x, int y) {
     report.y = image.height - 1 - y;
     const std::uint8_t* p = image.pixel(x, y);
     report.rgb = {p[0], p[1], p[2]};
-    report.hit = primitive_at(state, x, y);
+    report.earlier_render = !state.display_complete && state.passes_shown == 0;
+    if (!report.earlier_render) report.hit = primitive_at(state, x, y);
     return report;
 }
 
@@ -25,6 +26,7 @@ std::string describe(const PixelReport& r, const Scene& scene) {
                   r.rgb[0], r.rgb[1], r.rgb[2], r.rgb[0] / 255.0, r.rgb[1] / 255.0,
                   r.rgb[2] / 255.0);
     std::string line = text;
+    if (r.earlier_render) return line + "(rendering: the pixel is of the render before)";
     if (!r.hit || static_cast<std::size_t>(r.hit->primitive) >= scene.primitives.size())
         return line + "background";
     const Primitive& p = scene.primitives[static_cast<std::size_t>(r.hit->primitive)];

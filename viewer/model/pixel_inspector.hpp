@@ -16,6 +16,10 @@ struct PixelReport {
     int x = 0, y = 0;  // from the top-left corner, as --region counts
     std::array<std::uint8_t, 3> rgb{};
     std::optional<PickedPrimitive> hit;
+    // The pixel shows a render before the current one (whose first pass is
+    // not shown yet): what the current view's ray meets there is not what
+    // the pixel shows, and `hit` is left empty.
+    bool earlier_render = false;
 };
 
 // Pixel (x, y) of state.display (Image8 coordinates: y from the bottom), or
@@ -23,7 +27,8 @@ struct PixelReport {
 std::optional<PixelReport> inspect_pixel(AppState& state, int x, int y);
 
 // "x 12, y 30   RGB 230 51 26 = 0.902 0.200 0.102   sphere 2 at 5.83", on
-// two lines; "background" when the ray meets nothing.
+// two lines; "background" when the ray meets nothing; for a pixel of an
+// earlier render, that it is rendering.
 std::string describe(const PixelReport& report, const Scene& scene);
 
 }  // namespace jt::view

@@ -1,5 +1,7 @@
 #include "render_region.hpp"
 
+#include "app_actions.hpp"
+
 #include <algorithm>
 #include <cmath>
 
@@ -23,8 +25,31 @@ std::optional<FrameRegion> region_spanning(const ImagePoint& a, const ImagePoint
     return region;
 }
 
+namespace {
+
+// The view a render of `request` shows: the free camera, or the scene camera.
+std::optional<AppState::RegionView> view_of(const AppState& state, const RenderRequest& request) {
+    Camera camera;
+    if (request.free_camera) {
+        camera = camera_from(*request.free_camera, "");
+    } else {
+        const auto& cameras = state.doc.scene.cameras;
+        const int index = request.options.camera;
+        if (index < 0 || static_cast<std::size_t>(index) >= cameras.size()) return std::nullopt;
+        camera = cameras[static_cast<std::size_t>(index)];
+    }
+    camera.name.clear();
+    return AppState::RegionView{camera, request.options.width, request.options.height};
+}
+
+}  // namespace
+
 void set_render_region(AppState& state, const FrameRegion& region) {
     state.render_region = region;
+    // The image shows the view of the render under way or last finished.
+    std::string note;
+    if (const std::optional<RenderRequest> now = render_request(state, note))
+        state.region_view = view_of(state, *now);
     state.message = "Rendering region " + format_frame_region(region) +
                     " alone (as jtracer-cli --region " + format_frame_region(region) + ")";
 }
@@ -33,6 +58,24 @@ void clear_render_region(AppState& state) {
     if (!state.render_region) return;
     state.render_region.reset();
     state.message = "Region cleared: the whole image renders";
+}
+
+bool clear_region_for_new_view(AppState& state, const RenderRequest& next) {
+    if (!state.render_region) {
+        state.region_view.reset();
+        return false;
+    }
+    const std::optional<AppState::RegionView> view = view_of(state, next);
+    // The first render with the region: the rest shows this view.
+    if (!state.region_view) {
+        state.region_view = view;
+        return false;
+    }
+    if (view == state.region_view) return false;
+    state.render_region.reset();
+    state.region_view.reset();
+    state.message = "The view changed: the region is cleared and the whole image renders";
+    return true;
 }
 
 std::optional<PixelRect> render_region_rect(const AppState& state, int width, int height) {

@@ -20,6 +20,13 @@ std::optional<FrameRegion> region_spanning(const ImagePoint& a, const ImagePoint
 void set_render_region(AppState& state, const FrameRegion& region);
 void clear_render_region(AppState& state);
 
+// Before a render of `next` starts: with a region set, the rest of the image
+// shows the view of the renders before; when `next` shows another view (the
+// camera moved, another camera, another size) the region is cleared, so that
+// the whole image renders from the new view and no pixel shows an old one.
+// True when it was.
+bool clear_region_for_new_view(AppState& state, const RenderRequest& next);
+
 // The region the render is limited to, in Image8 coordinates: state.render_region
 // while it lies inside a `width` x `height` frame, else nothing.
 std::optional<PixelRect> render_region_rect(const AppState& state, int width, int height);

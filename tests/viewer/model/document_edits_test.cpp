@@ -54,7 +54,9 @@ TEST(DocumentEdits, AnEmptyFileStartsANewSceneThatThePanelsBuildOn) {
     EXPECT_NE(state.message.find("Started a scene: add objects"), std::string::npos);
     EXPECT_FALSE(state.doc.draft);
     EXPECT_EQ(format_diagnostics(state.doc), "") << "no error and no warning";
-    EXPECT_TRUE(state.doc.scene == new_scene());
+    Scene begun = new_scene();
+    begun.settings.filename = "new.bmp";  // named after the file
+    EXPECT_TRUE(state.doc.scene == begun);
     ASSERT_EQ(state.doc.scene.cameras.size(), 1u);
     EXPECT_EQ(state.doc.scene.cameras[0].aspect, 640.0 / 360.0);
     EXPECT_FALSE(start_new_scene(state)) << "only an empty file starts one";
@@ -72,7 +74,7 @@ TEST(DocumentEdits, AnEmptyFileStartsANewSceneThatThePanelsBuildOn) {
     EXPECT_EQ(document_text(state.doc), "\n") << "back to the empty file";
     EXPECT_TRUE(document_is_blank(state.doc)) << "where a scene can be started again";
     redo(state);
-    EXPECT_TRUE(state.doc.scene == new_scene());
+    EXPECT_TRUE(state.doc.scene == begun);
 }
 
 TEST(DocumentEdits, AddDuplicateDeleteThenSaveGivesTheExpectedSceneAndKeepsOtherBytes) {
@@ -145,10 +147,13 @@ TEST(DocumentEdits, AddTriangleAndMeshThenSaveGivesTheExpectedSceneAndKeepsOther
     const ParseResult reread = parse_scene(after);
     ASSERT_TRUE(reread.ok()) << after;
     EXPECT_TRUE(reread.scene == expected) << after;
-    // The two new blocks go after the last item; every byte before and after them stays.
-    const std::size_t close = before.rfind("}\n");
-    EXPECT_EQ(after.substr(0, close), before.substr(0, close));
-    EXPECT_EQ(after.substr(after.size() - (before.size() - close)), before.substr(close));
+    // The two new blocks go with the objects, after the last one (before the
+    // light); every byte before and after them stays.
+    const std::size_t objects_end = before.find("    point_light");
+    ASSERT_NE(objects_end, std::string::npos);
+    EXPECT_EQ(after.substr(0, objects_end), before.substr(0, objects_end));
+    EXPECT_EQ(after.substr(after.size() - (before.size() - objects_end)),
+              before.substr(objects_end));
     EXPECT_NE(after.find("file: \"models/quad.obj\""), std::string::npos) << after;
     // And it renders: the model loads from the scene's folder.
     ModelLoop model;

@@ -104,5 +104,19 @@ TEST_F(Picking, TheInspectorGivesThePixelsBytesAndWhatItShows) {
               "x 3, y 4   RGB 230 51 0 = 0.902 0.200 0.000\nbackground");
 }
 
+// Issue 27 item 19: until the current render's first pass shows, the display
+// holds the render before (another view, perhaps): the inspector names no
+// hit of the current view over it.
+TEST_F(Picking, TheInspectorDescribesNoHitOverAPixelOfTheRenderBefore) {
+    ASSERT_TRUE(inspect_pixel(state, 32, 30)->hit) << "the sphere, in the finished render";
+    state.display_complete = false;  // as just after a new render started
+    state.passes_shown = 0;
+    const std::optional<PixelReport> r = inspect_pixel(state, 32, 30);
+    ASSERT_TRUE(r);
+    EXPECT_TRUE(r->earlier_render);
+    EXPECT_FALSE(r->hit);
+    EXPECT_NE(describe(*r, state.doc.scene).find("rendering"), std::string::npos);
+}
+
 }  // namespace
 }  // namespace jt::view

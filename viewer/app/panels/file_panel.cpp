@@ -13,37 +13,6 @@ namespace {
 
 const ImVec4 warning_colour(1.0f, 0.7f, 0.3f, 1.0f);
 
-// The file was read again while there are unsaved edits: nothing happens
-// until the user says which to keep.
-void reload_choice(AppState& state) {
-    if (!state.pending_reload) return;
-    const std::string name = state.doc.path.filename().string();
-    const bool unchanged = state.pending_reload->text == state.doc.disk_text;
-    ImGui::PushStyleColor(ImGuiCol_Text, warning_colour);
-    if (unchanged)
-        ImGui::TextWrapped("%s is unchanged on disk. Reloading it would drop your unsaved edits.",
-                           name.c_str());
-    else
-        ImGui::TextWrapped("%s changed on disk, and you have unsaved edits.", name.c_str());
-    ImGui::PopStyleColor();
-    if (button("Reload, drop my edits", "Show the file as it is on disk; your edits are lost"))
-        resolve_reload(state, ReloadChoice::drop_edits);
-    if (!unchanged && state.reapply_problem.empty()) {
-        same_line_if_fits("Reload, re-apply my edits");
-        if (button("Reload, re-apply my edits",
-                   "Take the file's new text and make your edits to it again"))
-            resolve_reload(state, ReloadChoice::reapply_edits);
-    }
-    same_line_if_fits("Keep mine");
-    if (button("Keep mine",
-               "Ignore the file's text for now; Save scene will ask before "
-               "replacing it"))
-        resolve_reload(state, ReloadChoice::keep_edits);
-    if (!unchanged && !state.reapply_problem.empty())
-        ImGui::TextWrapped("(your edits cannot be re-applied to the new text: %s)",
-                           state.reapply_problem.c_str());
-}
-
 // Save scene was refused because the file changed on disk.
 void save_conflict_choice(AppState& state) {
     if (state.save_conflict.empty() || state.pending_reload) return;
@@ -132,7 +101,8 @@ void file_panel(AppState& state) {
                "in the Objects panel (Ctrl+Z takes it back)"))
         start_new_scene(state);
     if (state.loader.busy()) ImGui::TextDisabled("Loading...");
-    reload_choice(state);
+    if (state.pending_reload)
+        ImGui::TextColored(warning_colour, "Choose in the bar above the image: the file changed.");
     save_conflict_choice(state);
     ImGui::SetNextItemWidth(-font * 8.5f);
     ImGui::InputTextWithHint("##scene_as", "copy.jts", &state.save_scene_path);

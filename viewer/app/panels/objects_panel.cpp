@@ -133,7 +133,9 @@ void objects_panel(AppState& state) {
     auto& primitives = state.doc.scene.primitives;
     const Selection selection = current_selection(state);
     const int selected = selection.kind == Selection::Kind::primitive ? selection.index : -1;
-    if (state.reveal_selection && selected >= 0) ImGui::SetNextItemOpen(true);
+    // Empty, it is where a scene starts: open, with the Add object menu.
+    if ((state.reveal_selection && selected >= 0) || (state.doc.loaded && primitives.empty()))
+        ImGui::SetNextItemOpen(true);
     const std::string title = "Objects (" + std::to_string(primitives.size()) + ")###objects";
     if (!panel_header(title.c_str(), "Objects", false)) return;
     add_object_menu(state);
@@ -143,7 +145,9 @@ void objects_panel(AppState& state) {
         "Lists only the objects whose name holds this text. A click on the image selects "
         "the object under it.");
     const std::vector<int> shown = filtered(primitives, state.object_filter);
-    if (shown.empty())
+    if (primitives.empty())
+        ImGui::TextDisabled("No objects yet: Add object puts one in front of the camera");
+    else if (shown.empty())
         ImGui::TextDisabled("no object matches");
     else
         object_list(state, shown, selected);

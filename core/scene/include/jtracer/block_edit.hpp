@@ -11,12 +11,15 @@
 
 namespace jt {
 
-// Appends the primitive to the scene block in use (one is appended to the
-// text if there is none), written as the serializer writes it, with the
-// indentation of the blocks before it and a blank line before it when they
-// are separated by blank lines. It becomes the scene's last primitive.
+// Adds the primitive to the scene block in use (one is appended to the text
+// if there is none), written as the serializer writes it, with the objects:
+// right after the last primitive (set apart by a blank line when it is), or
+// before the first light when there is no primitive. It becomes the scene's
+// last primitive.
 Expected<std::string> add_primitive(const SceneText& scene, const Primitive& primitive);
-// The same for a point light: it becomes the scene's last light.
+// Appends a point light to the scene block, after its last item, with the
+// indentation of the blocks before it and a blank line before it when they
+// are separated by blank lines: it becomes the scene's last light.
 Expected<std::string> add_light(const SceneText& scene, const PointLight& light);
 
 // A copy of the block's text (everything from its keyword to its closing

@@ -26,9 +26,11 @@ Material new_material();
 
 // A primitive of that kind with new_material(), in front of the active camera
 // halfway to its look_at point: a sphere and a standing cylinder a fifth of
-// the view's height there across, a plane below that point facing the
-// camera's `up` as written (level even when the camera looks down), and a triangle as wide as that
-// sphere standing upright and facing the camera (counter-clockwise seen from it).
+// the view's height there across, a plane facing the camera's `up` as written
+// (level even when the camera looks down) at the height of the view's floor
+// and under the scene's objects (floor_height in new_block.cpp), and a
+// triangle as wide as that sphere standing upright and facing the camera
+// (counter-clockwise seen from it).
 Primitive new_primitive(ShapeKind kind, const Scene& scene);
 
 // A mesh of `file` (a name as the scene's `file` holds it) where new_primitive
@@ -42,7 +44,7 @@ PointLight new_light(const Scene& scene);
 // A copy of the active camera (or a default one) with a name no camera has.
 Camera new_camera(const Scene& scene);
 
-// A scene to start from, valid as it is: a 640x360 image, a camera whose
+// A scene to start from, valid as it is: a 640x360 image, a camera "main" whose
 // aspect matches it looking at a point a unit above the origin, a white light
 // above and beside the camera, and nothing else, so that new_primitive puts
 // the first objects where the camera sees them.

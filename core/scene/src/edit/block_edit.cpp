@@ -67,7 +67,20 @@ Expected<std::string> add_primitive(const SceneText& scene, const Primitive& pri
     if (!has_writable_strings(primitive))
         return Error{"the image_map \"" + primitive.material.image_map +
                      "\" cannot be written in a .jts string"};
-    return add_item(scene, block_lines(primitive));
+    const std::vector<std::string> lines = block_lines(primitive);
+    // With the objects: after the last one, else before the first light.
+    const SceneSource& source = scene.source;
+    if (source.scene && !source.primitives.empty()) {
+        const Range last = edit::block_range(source.primitives.back());
+        return edit::edited_text(
+            scene, {edit::insertion_after(scene.text, last, lines,
+                                          edit::set_apart_by_blank_lines(scene.text, last))});
+    }
+    if (source.scene && !source.lights.empty())
+        return edit::edited_text(
+            scene,
+            {edit::insertion_before(scene.text, edit::block_range(source.lights.front()), lines)});
+    return add_item(scene, lines);
 }
 
 Expected<std::string> add_light(const SceneText& scene, const PointLight& light) {

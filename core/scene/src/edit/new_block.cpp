@@ -1,6 +1,7 @@
 #include "jtracer/new_block.hpp"
 
 #include "jtracer/camera_edit.hpp"
+#include "jtracer/primitive_bounds.hpp"
 #include "jtracer/schema.hpp"
 #include "jtracer/validate.hpp"
 #include "jtracer/value_text.hpp"
@@ -90,6 +91,27 @@ Placement placement(const View& view) {
     return {rounded_to_scale(view.eye + view.forward * along, half), half};
 }
 
+// Where a new plane lies along the unit `n`: the height of the view's floor,
+// below the point the camera looks at by the camera's own height above it
+// (new_scene's camera, 1 above that point, gets a floor at 0) but by no more
+// than a third of the view's half-height there, so that the floor is seen; and
+// under every object whose extent is known, so that they stand on it.
+double floor_height(const Scene& scene, const View& view, const Vec3& n) {
+    const Vec3 look_at = view.eye + view.forward * view.distance;
+    const double centre = glm::dot(n, look_at), eye = glm::dot(n, view.eye);
+    double drop = view.half_height(view.distance) / 3.0;
+    if (eye > centre) drop = std::min(drop, eye - centre);
+    double floor = centre - drop;
+    for (const Primitive& p : scene.primitives)
+        if (const std::optional<Bounds> box = primitive_bounds(p)) {
+            double lowest = 0.0;
+            for (int axis = 0; axis < 3; ++axis)
+                lowest += std::min(n[axis] * box->lower[axis], n[axis] * box->upper[axis]);
+            floor = std::min(floor, lowest);
+        }
+    return floor;
+}
+
 }  // namespace
 
 Primitive new_primitive(ShapeKind kind, const Scene& scene) {
@@ -105,7 +127,7 @@ Primitive new_primitive(ShapeKind kind, const Scene& scene) {
             // Level with the scene's vertical, not tilted with a camera that looks down.
             const Vec3 normal = rounded_to_scale(view.sky, 1.0);
             p.shape = Plane{
-                normal, rounded_to_scale(glm::dot(glm::normalize(normal), at) - half / 2.0, half)};
+                normal, rounded_to_scale(floor_height(scene, view, glm::normalize(normal)), half)};
             break;
         }
         case ShapeKind::cylinder: {
@@ -171,6 +193,7 @@ Scene new_scene() {
     scene.settings.background = Colour(0.05, 0.06, 0.09);
     scene.settings.ambient_light = Colour(0.2);
     Camera camera;
+    camera.name = "main";
     camera.position = Vec3(0.0, 2.0, 8.0);
     camera.look_at = Vec3(0.0, 1.0, 0.0);
     camera.aspect = static_cast<double>(scene.settings.width) / scene.settings.height;

@@ -1,0 +1,77 @@
+// Issue 27 item 13: when the file changes under unsaved edits, the choice
+// comes to the user, across the top of the image, with the differences
+// between the two texts; through the OSMesa frame code.
+
+#include "app_actions.hpp"
+#include "common/files.hpp"
+#include "document_edits.hpp"
+#include "headless.hpp"
+#include "viewer_test_files.hpp"
+
+#include <gtest/gtest.h>
+
+#include <filesystem>
+#include <string>
+
+namespace jt::view {
+namespace {
+
+using namespace jt::test;
+namespace fs = std::filesystem;
+
+TEST(ViewerReloadBar, TheChoiceIsAboveTheImageAndShowsTheDifferences) {
+    HeadlessViewer viewer(1100, 700);
+    ASSERT_TRUE(viewer.ok()) << viewer.error();
+    AppState state{test_config()};
+    const fs::path file = scene_copy("reload-bar");
+    open_scene(state, file);
+    ASSERT_TRUE(viewer.run_until_complete(state, kTimeout));
+    const ScreenRect image_area = viewer.image_area();
+    EXPECT_EQ(find_item(viewer.ui_items(), "reload bar"), nullptr) << "no choice to make";
+
+    edit_scene(state, [](Scene& s) { s.settings.width = 32; });
+    viewer.frame(state);
+    std::string theirs = read_file(file);
+    theirs.replace(theirs.find("fov: 50;"), 8, "fov: 55;");
+    write_file(file, theirs);
+    ASSERT_TRUE(viewer.run_until_loaded(state));
+    ASSERT_TRUE(state.pending_reload);
+    EXPECT_NE(state.message.find("bar above the image"), std::string::npos) << state.message;
+    viewer.frame(state);
+    const UiItem* bar = find_item(viewer.ui_items(), "reload bar");
+    ASSERT_NE(bar, nullptr);
+    EXPECT_EQ(bar->rect.x0, image_area.x0);
+    EXPECT_EQ(bar->rect.y0, image_area.y0);
+    EXPECT_EQ(bar->rect.x1, image_area.x1) << "across the image";
+    EXPECT_GE(viewer.image_area().y0, bar->rect.y1) << "the image moves down under it";
+    for (const char* choice : {"Reload, drop my edits", "Reload, re-apply my edits", "Keep mine"}) {
+        const UiItem* item = find_item(viewer.ui_items(), choice);
+        ASSERT_NE(item, nullptr) << choice;
+        EXPECT_FALSE(item->clipped) << choice;
+        EXPECT_GE(item->rect.y0, bar->rect.y0) << choice << " is in the bar";
+        EXPECT_LE(item->rect.y1, bar->rect.y1) << choice << " is in the bar";
+    }
+
+    ASSERT_TRUE(viewer.click(state, "Show differences"));
+    viewer.frame(state);
+    ASSERT_NE(find_item(viewer.ui_items(), "differences"), nullptr);
+    const TextDiff& diff = viewer.reload_bar().diff;
+    EXPECT_EQ(diff.removed, 2) << "width: 32 and fov: 50, mine";
+    EXPECT_EQ(diff.added, 2) << "width: 64 and fov: 55, theirs";
+    bool fov = false;
+    for (const DiffLine& line : diff.lines)
+        if (line.kind == DiffLine::Kind::added && line.text.find("fov: 55;") != std::string::npos)
+            fov = true;
+    EXPECT_TRUE(fov);
+
+    ASSERT_TRUE(viewer.click(state, "Reload, re-apply my edits"));
+    EXPECT_FALSE(state.pending_reload);
+    viewer.frame(state);
+    EXPECT_EQ(find_item(viewer.ui_items(), "reload bar"), nullptr);
+    EXPECT_EQ(state.doc.scene.settings.width, 32);
+    EXPECT_EQ(state.doc.scene.cameras[1].fov, 55.0);
+    fs::remove_all(file.parent_path());
+}
+
+}  // namespace
+}  // namespace jt::view

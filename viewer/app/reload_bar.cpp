@@ -1,0 +1,116 @@
+#include "reload_bar.hpp"
+
+#include "app_actions.hpp"
+#include "document_edits.hpp"
+#include "panels/panels.hpp"
+#include "panels/widgets.hpp"
+#include "ui_items.hpp"
+
+#include <imgui.h>
+
+#include <algorithm>
+#include <cstdio>
+
+namespace jt::view {
+
+namespace {
+
+const ImVec4 kWarning(1.0f, 0.7f, 0.3f, 1.0f);
+const ImVec4 kRemoved(1.0f, 0.5f, 0.45f, 1.0f);
+const ImVec4 kAdded(0.5f, 0.9f, 0.5f, 1.0f);
+
+void choices(AppState& state, ReloadBarState& bar, bool unchanged) {
+    if (button("Reload, drop my edits", "Show the file as it is on disk; your edits are lost"))
+        resolve_reload(state, ReloadChoice::drop_edits);
+    if (!unchanged && state.reapply_problem.empty()) {
+        same_line_if_fits("Reload, re-apply my edits");
+        if (button("Reload, re-apply my edits",
+                   "Take the file's new text and make your edits to it again"))
+            resolve_reload(state, ReloadChoice::reapply_edits);
+    }
+    same_line_if_fits("Keep mine");
+    if (button("Keep mine",
+               "Ignore the file's text for now; Save scene will ask before replacing it"))
+        resolve_reload(state, ReloadChoice::keep_edits);
+    same_line_if_fits("Show differences");
+    if (button(bar.show_differences ? "Hide differences" : "Show differences",
+               "The lines of your text (red, -) against the file's (green, +)"))
+        bar.show_differences = !bar.show_differences;
+}
+
+void differences(const AppState& state, ReloadBarState& bar, float max_height) {
+    const std::string mine = document_text(state.doc);
+    const std::string& theirs = state.pending_reload->text;
+    if (mine != bar.mine || theirs != bar.theirs) {
+        bar.diff = diff_lines(mine, theirs);
+        bar.mine = mine;
+        bar.theirs = theirs;
+    }
+    const TextDiff& diff = bar.diff;
+    ImGui::Text("Yours to the file's: %d line%s removed (-), %d added (+)%s", diff.removed,
+                diff.removed == 1 ? "" : "s", diff.added,
+                diff.coarse ? "; too many to match up line by line" : "");
+    const float line_h = ImGui::GetTextLineHeightWithSpacing();
+    const float height =
+        std::min(max_height, line_h * static_cast<float>(diff.lines.size() + 1) + 8.0f);
+    ImGui::BeginChild("##differences", ImVec2(0, height), true,
+                      ImGuiWindowFlags_HorizontalScrollbar);
+    push_monospace_font();
+    ImGuiListClipper clipper;
+    clipper.Begin(static_cast<int>(diff.lines.size()));
+    while (clipper.Step())
+        for (int i = clipper.DisplayStart; i < clipper.DisplayEnd; ++i) {
+            const DiffLine& line = diff.lines[static_cast<std::size_t>(i)];
+            const bool removed = line.kind == DiffLine::Kind::removed;
+            const bool added = line.kind == DiffLine::Kind::added;
+            char number[16];
+            std::snprintf(number, sizeof number, "%5d %c ", removed ? line.old_line : line.new_line,
+                          removed ? '-'
+                          : added ? '+'
+                                  : ' ');
+            const std::string text = number + line.text;
+            if (removed || added) ImGui::PushStyleColor(ImGuiCol_Text, removed ? kRemoved : kAdded);
+            ImGui::TextUnformatted(text.c_str());
+            if (removed || added) ImGui::PopStyleColor();
+        }
+    pop_monospace_font();
+    ImGui::EndChild();
+    note_window("differences");
+}
+
+}  // namespace
+
+float reload_bar(AppState& state, ReloadBarState& bar, const ScreenRect& area) {
+    if (!state.pending_reload || area.width() <= 0.0f) {
+        bar.show_differences = false;
+        return 0.0f;
+    }
+    const float width = area.width();
+    ImGui::SetNextWindowPos(ImVec2(area.x0, area.y0));
+    ImGui::SetNextWindowSizeConstraints(ImVec2(width, 0.0f), ImVec2(width, area.height()));
+    ImGui::Begin("##reload_bar", nullptr,
+                 ImGuiWindowFlags_NoDecoration | ImGuiWindowFlags_NoMove |
+                     ImGuiWindowFlags_NoSavedSettings | ImGuiWindowFlags_AlwaysAutoResize);
+    const std::string name = state.doc.path.filename().string();
+    const bool unchanged = state.pending_reload->text == state.doc.disk_text;
+    ImGui::PushStyleColor(ImGuiCol_Text, kWarning);
+    if (unchanged)
+        ImGui::TextWrapped("%s is unchanged on disk. Reloading it would drop your unsaved edits.",
+                           name.c_str());
+    else
+        ImGui::TextWrapped("%s changed on disk%s, and you have unsaved edits.", name.c_str(),
+                           state.pending_reload->ok ? "" : " (it has errors)");
+    ImGui::PopStyleColor();
+    choices(state, bar, unchanged);
+    if (state.pending_reload && !unchanged && !state.reapply_problem.empty())
+        ImGui::TextWrapped("(your edits cannot be re-applied to the new text: %s)",
+                           state.reapply_problem.c_str());
+    if (state.pending_reload && bar.show_differences)
+        differences(state, bar, area.height() * 0.45f);
+    const float height = ImGui::GetWindowHeight();
+    note_window("reload bar");
+    ImGui::End();
+    return std::min(height, area.height());
+}
+
+}  // namespace jt::view

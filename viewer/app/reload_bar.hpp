@@ -1,0 +1,26 @@
+#pragma once
+// The reload choice, across the top of the image: the file changed on disk
+// (or was reloaded) while there are unsaved edits, and nothing happens until
+// the user says which to keep. It can show the differences between the
+// viewer's text and the file's, line by line (text_diff.hpp).
+
+#include "app_state.hpp"
+#include "image_layout.hpp"
+#include "text_diff.hpp"
+
+#include <string>
+
+namespace jt::view {
+
+struct ReloadBarState {
+    bool show_differences = false;
+    // The texts `diff` was made from (remade only when either changes).
+    std::string mine, theirs;
+    TextDiff diff;
+};
+
+// Draws the bar at the top of `area` while a reload waits for the choice;
+// returns how much of the area's height it takes (0 when there is none).
+float reload_bar(AppState& state, ReloadBarState& bar, const ScreenRect& area);
+
+}  // namespace jt::view
