@@ -1,12 +1,19 @@
 #include "panels/panels.hpp"
 #include "panels/property_fields.hpp"
+#include "panels/widgets.hpp"
 
 #include <imgui.h>
 
 namespace jt::view {
 
 bool material_editor(Material& m) {
-    return edit_properties(m);
+    bool changed = edit_properties(m);
+    changed = edit_file_name("image_map", m.image_map,
+                             "A PNG, JPEG or BMP file, relative to the scene's folder, mapped "
+                             "onto the object (map_size is one tile); empty: none. Enter "
+                             "applies it.") ||
+              changed;
+    return changed;
 }
 
 }  // namespace jt::view

@@ -1,13 +1,16 @@
 #pragma once
 // Edit fields for a block's properties, read from the schema (jtracer/schema.hpp):
 // one field per number, vector and colour property, labelled with its name in
-// the file and held to the language's range, in the schema's order. A
-// property added to the schema gets its field here without a line of panel
-// code. Strings (names, the filename) have no field.
+// the file and held to the language's range, in the schema's order (an
+// optional colour with a checkbox that sets or clears it). A property added
+// to the schema gets its field here without a line of panel code. Strings
+// (names, the filename, image maps) have no field here: the panels give the
+// ones they edit their own.
 
 #include "jtracer/schema.hpp"
 #include "panels/widgets.hpp"
 
+#include <optional>
 #include <type_traits>
 
 namespace jt::view {
@@ -38,6 +41,8 @@ bool edit_property(const PropertySpec<Block>& property, Block& block) {
         } else if constexpr (std::is_same_v<T, double>) {
             return edit_number(label, value, field_speed(property.range, property.unit, value),
                                bounds.min, bounds.max);
+        } else if constexpr (std::is_same_v<T, std::optional<Vec3>>) {
+            return edit_optional_colour(label, value, Colour(0.1));
         } else if constexpr (std::is_same_v<T, Vec3>) {
             if (property.kind == ValueKind::colour) return edit_colour(label, value);
             const double size = std::max({std::abs(value.x), std::abs(value.y), std::abs(value.z)});

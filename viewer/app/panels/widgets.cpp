@@ -1,9 +1,11 @@
 #include "panels/widgets.hpp"
 
+#include "jtracer/value_text.hpp"
 #include "ui_items.hpp"
 #include "ui_rounding.hpp"
 
 #include <imgui.h>
+#include <imgui_stdlib.h>
 
 #include <algorithm>
 #include <cmath>
@@ -72,6 +74,46 @@ bool edit_int(const char* label, int& value, int min, int max) {
     v = std::clamp(v, min, max);
     if (v == value) return false;
     value = v;
+    return true;
+}
+
+bool edit_optional_colour(const char* label, std::optional<Colour>& value, const Colour& when_set) {
+    bool on = value.has_value();
+    ImGui::PushID(label);
+    const bool toggled = ImGui::Checkbox("##set", &on);
+    note_item(label, true);
+    tooltip(on ? "Set: clear the box to take it out of the material"
+               : "Not set: tick the box to give the material one");
+    ImGui::SameLine();
+    bool changed = false;
+    if (toggled) {
+        value = on ? std::optional<Colour>(when_set) : std::nullopt;
+        changed = true;
+    }
+    if (value) {
+        Colour colour = *value;
+        if (edit_colour(label, colour)) {
+            value = colour;
+            changed = true;
+        }
+    } else {
+        ImGui::TextDisabled("%s (none)", label);
+    }
+    ImGui::PopID();
+    return changed;
+}
+
+bool edit_file_name(const char* label, std::string& value, const char* tooltip_text) {
+    std::string edited = value;
+    const bool enter =
+        ImGui::InputTextWithHint(label, "none", &edited, ImGuiInputTextFlags_EnterReturnsTrue);
+    note_item(label, true);
+    const bool writable = is_writable_string(edited);
+    tooltip(writable ? tooltip_text
+                     : "This name cannot be written in a .jts string (quotes, control or "
+                       "non-ASCII characters): Enter does not apply it");
+    if (!enter || !writable || edited == value) return false;
+    value = edited;
     return true;
 }
 

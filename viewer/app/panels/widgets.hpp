@@ -7,6 +7,7 @@
 
 #include "jtracer/scene.hpp"
 
+#include <optional>
 #include <string>
 
 namespace jt::view {
@@ -15,6 +16,12 @@ bool edit_number(const char* label, double& value, float speed, double min = 0.0
 bool edit_vector(const char* label, Vec3& value, float speed = 0.05f);
 bool edit_colour(const char* label, Colour& value);
 bool edit_int(const char* label, int& value, int min, int max);
+// A colour that may be unset (a material's checker): a checkbox sets it (to
+// `when_set`) or clears it, and its colour is edited while set.
+bool edit_optional_colour(const char* label, std::optional<Colour>& value, const Colour& when_set);
+// A file name (a material's image_map), applied when Enter is pressed; a
+// name a .jts string cannot hold is refused and the field shows why.
+bool edit_file_name(const char* label, std::string& value, const char* tooltip_text);
 
 // A panel's collapsing header, recorded under `id` (its label without counts).
 bool panel_header(const char* label, const char* id, bool default_open);

@@ -1,0 +1,59 @@
+// Issue 27 item 21: the material panel edits a checker's colour and an image
+// map's file, which the showcase's backdrop and the globe use; through the
+// OSMesa frame code, into the text as Save scene writes it.
+
+#include "app_actions.hpp"
+#include "document_edits.hpp"
+#include "headless.hpp"
+#include "keys.hpp"
+#include "picking.hpp"
+#include "viewer_test_files.hpp"
+
+#include <gtest/gtest.h>
+#include <imgui.h>
+
+#include <filesystem>
+#include <string>
+
+namespace jt::view {
+namespace {
+
+using namespace jt::test;
+namespace fs = std::filesystem;
+
+TEST(ViewerMaterialFields, ACheckerCanBeSetEditedAndClearedAndAnImageMapNamed) {
+    HeadlessViewer viewer(1100, 900);
+    ASSERT_TRUE(viewer.ok()) << viewer.error();
+    AppState state{test_config()};
+    const fs::path file = scene_copy("material-fields");
+    open_scene(state, file);
+    ASSERT_TRUE(viewer.run_until_complete(state, kTimeout));
+    select(state, {Selection::Kind::primitive, 1});  // the sphere
+    for (int i = 0; i < 4; ++i) viewer.frame(state);
+    ASSERT_NE(find_item(viewer.ui_items(), "checker"), nullptr) << "a checker field";
+    ASSERT_NE(find_item(viewer.ui_items(), "image_map"), nullptr) << "an image map field";
+
+    ASSERT_TRUE(viewer.click(state, "checker"));
+    viewer.frame(state);
+    ASSERT_TRUE(state.doc.scene.primitives[1].material.checker);
+    EXPECT_NE(document_text(state.doc).find("checker: <0.1, 0.1, 0.1>;"), std::string::npos)
+        << document_text(state.doc);
+    ASSERT_TRUE(viewer.click(state, "checker"));
+    viewer.frame(state);
+    EXPECT_FALSE(state.doc.scene.primitives[1].material.checker);
+    EXPECT_EQ(document_text(state.doc).find("checker"), std::string::npos)
+        << document_text(state.doc);
+
+    ASSERT_TRUE(viewer.click(state, "image_map"));
+    for (char c : std::string("maps/tiles.png")) ImGui::GetIO().AddInputCharacter(c);
+    viewer.frame(state);
+    EXPECT_EQ(state.doc.scene.primitives[1].material.image_map, "") << "applied on Enter only";
+    viewer.press_key(state, keys::enter);
+    EXPECT_EQ(state.doc.scene.primitives[1].material.image_map, "maps/tiles.png");
+    EXPECT_NE(document_text(state.doc).find("image_map: \"maps/tiles.png\";"), std::string::npos)
+        << document_text(state.doc);
+    fs::remove_all(file.parent_path());
+}
+
+}  // namespace
+}  // namespace jt::view
