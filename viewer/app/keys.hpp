@@ -15,8 +15,10 @@ inline constexpr int digit(char c) {
     return c;
 }  // GLFW: '0'..'9' too
 inline constexpr int minus = 45;
+inline constexpr int period = 46;
 inline constexpr int equal = 61;  // '+' on most layouts is Shift and this key
 inline constexpr int keypad_1 = 321;
+inline constexpr int keypad_decimal = 330;
 inline constexpr int keypad_subtract = 333;
 inline constexpr int keypad_add = 334;
 inline constexpr int escape = 256;

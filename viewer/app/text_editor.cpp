@@ -4,6 +4,8 @@
 #include "document_edits.hpp"
 #include "keys.hpp"
 #include "panels/panels.hpp"
+#include "picking.hpp"
+#include "selection_commands.hpp"
 #include "text_cursor.hpp"
 #include "ui_items.hpp"
 
@@ -32,6 +34,17 @@ int line_count(const std::string& text) {
 int line_of(const std::string& text, int offset) {
     offset = std::clamp(offset, 0, static_cast<int>(text.size()));
     return 1 + static_cast<int>(std::count(text.begin(), text.begin() + offset, '\n'));
+}
+
+// The length of the longest line, in bytes.
+std::size_t widest_line(std::string_view text) {
+    std::size_t widest = 0;
+    while (!text.empty()) {
+        const std::size_t end = std::min(text.find('\n'), text.size());
+        widest = std::max(widest, end);
+        text.remove_prefix(std::min(end + 1, text.size()));
+    }
+    return widest;
 }
 
 // The text of line `line` (from 1).
@@ -123,19 +136,39 @@ void error_list(AppState& state, TextEditorState& ed, float height) {
             else
                 std::snprintf(where, sizeof where, "%s: ", error ? "error" : "warning");
             const std::string label = std::string(where) + d.message;
+            // Wrapped, so that a long message is read whole; a click goes to its place.
             ImGui::PushStyleColor(ImGuiCol_Text, error ? kErrorText : IM_COL32(230, 190, 80, 255));
-            ImGui::PushID(shown);
-            if (ImGui::Selectable(label.c_str()) && d.pos.line > 0) {
+            ImGui::PushTextWrapPos(0.0f);
+            ImGui::TextUnformatted(label.c_str());
+            ImGui::PopTextWrapPos();
+            ImGui::PopStyleColor();
+            if (ImGui::IsItemHovered()) {
+                ImGui::GetWindowDrawList()->AddRectFilled(ImGui::GetItemRectMin(),
+                                                          ImGui::GetItemRectMax(), kCurrentLine);
+                if (d.pos.line > 0) ImGui::SetMouseCursor(ImGuiMouseCursor_Hand);
+            }
+            if (ImGui::IsItemClicked() && d.pos.line > 0) {
                 ed.jump = offset_of(ed.buffer, d.pos.line, d.pos.column);
                 ed.scroll_to = d.pos.line;
             }
-            ImGui::PopID();
-            ImGui::PopStyleColor();
             note_item(label.c_str(), false);
         }
     }
     if (shown == 0) ImGui::TextDisabled("No errors or warnings.");
     ImGui::EndChild();
+}
+
+// The text as the document's base shows the blocks where its source map
+// says: a pick in the image scrolls to the block picked, and a click in a
+// block selects it. (With panel edits or a draft the offsets may differ.)
+void follow_selection(AppState& state, TextEditorState& ed, bool clicked) {
+    if (ed.buffer != state.doc.text) return;
+    if (clicked) {
+        const Selection at = selection_at_offset(state, static_cast<std::size_t>(ed.cursor));
+        if (at.kind != Selection::Kind::none && at != state.selection) select(state, at);
+    } else if (state.reveal_selection) {
+        if (const std::optional<int> line = selection_line(state)) ed.scroll_to = *line;
+    }
 }
 
 void undo_keys(AppState& state) {
@@ -227,7 +260,12 @@ void text_editor(AppState& state, TextEditorState& ed, float x0, float y0, float
     const float pad_x = ImGui::GetStyle().FramePadding.x;
     ImGui::SetCursorPosX(ImGui::GetCursorPosX() + gutter);
     if (ed.jump && !active) ImGui::SetKeyboardFocusHere();
-    const float width = std::max(ImGui::GetContentRegionAvail().x, 40.0f * line_h);
+    // As wide as the widest line: the widget then never scrolls sideways
+    // itself (the view does, below), so what is drawn over it lines up.
+    const float char_w = ImGui::CalcTextSize("M").x;
+    const float width =
+        std::max(ImGui::GetContentRegionAvail().x,
+                 static_cast<float>(widest_line(ed.buffer) + 4) * char_w + 2.0f * pad_x);
     // At least the view's height, so that a click anywhere below the text lands in it.
     const ImVec2 size(width, std::max(static_cast<float>(lines + 1) * line_h + 2.0f * pad_y,
                                       ImGui::GetContentRegionAvail().y));
@@ -237,6 +275,13 @@ void text_editor(AppState& state, TextEditorState& ed, float x0, float y0, float
         ImGuiInputTextFlags_AllowTabInput | ImGuiInputTextFlags_CallbackAlways, on_input, &ed);
     ImGui::PopStyleColor();
     note_item("text", false);
+    const bool clicked =
+        ImGui::IsMouseClicked(ImGuiMouseButton_Left) &&
+        ImGui::IsMouseHoveringRect(ImGui::GetItemRectMin(), ImGui::GetItemRectMax());
+    // The cursor a click puts is read in the callback of the frame after (the
+    // widget runs no callback in the frame that activates it).
+    follow_selection(state, ed, ed.select_at_cursor);
+    ed.select_at_cursor = clicked && ImGui::GetActiveID() == widget;
     if (changed && ed.buffer != ed.shown) {
         ed.shown = ed.buffer;
         type_text(state, ed.buffer);
@@ -254,6 +299,9 @@ void text_editor(AppState& state, TextEditorState& ed, float x0, float y0, float
     auto line_y = [&](int line) {
         return origin.y + pad_y + static_cast<float>(line - 1) * line_h;
     };
+    ed.line1_x = left + gutter + pad_x;
+    ed.line1_y = line_y(1);
+    ed.line_height = line_h;
     if (ImGui::GetActiveID() == widget) {
         const int current = line_of(ed.buffer, ed.cursor);
         draw->AddRectFilled(ImVec2(left, line_y(current)), ImVec2(right, line_y(current) + line_h),
@@ -298,6 +346,22 @@ void text_editor(AppState& state, TextEditorState& ed, float x0, float y0, float
         const float y = static_cast<float>(line_of(ed.buffer, ed.cursor) - 1) * line_h;
         if (y < scroll) ImGui::SetScrollY(y);
         if (y + 2 * line_h > scroll + view_h) ImGui::SetScrollY(y + 2 * line_h - view_h);
+    }
+    if (ImGui::GetActiveID() == widget) {
+        // And sideways: the cursor's column stays in view.
+        const int line = line_of(ed.buffer, ed.cursor);
+        const int column_offset = ed.cursor - offset_of(ed.buffer, line, 1);
+        const std::string_view before =
+            line_text(ed.buffer, line).substr(0, static_cast<std::size_t>(column_offset));
+        const float x =
+            gutter + pad_x + ImGui::CalcTextSize(before.data(), before.data() + before.size()).x;
+        const float scroll_x = ImGui::GetScrollX();
+        const float view_w =
+            ImGui::GetWindowContentRegionMax().x - ImGui::GetWindowContentRegionMin().x;
+        const float margin = 4.0f * char_w;
+        if (x < scroll_x + gutter + margin) ImGui::SetScrollX(std::max(0.0f, x - gutter - margin));
+        if (x > scroll_x + view_w - margin) ImGui::SetScrollX(x - view_w + margin);
+        ed.cursor_x = origin.x + x;
     }
     ImGui::EndChild();
     pop_monospace_font();

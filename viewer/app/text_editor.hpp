@@ -5,6 +5,8 @@
 // the cursor at its line:col. What is typed goes to the document
 // (document_edits.hpp: type_text); what the panels change shows in the text
 // at once. Ctrl+Z / Ctrl+Shift+Z in it walk the viewer's one undo history.
+// An object or light picked in the image scrolls the text to its block, and
+// a click in a block selects its object or light.
 
 #include "app_state.hpp"
 #include "jtracer/scene.hpp"
@@ -23,10 +25,15 @@ struct TextEditorState {
     std::string shown_base;
     std::uint64_t shown_revision = 0;  // SceneDocument::revision
     std::optional<std::string> shown_draft;
-    bool push = false;             // the buffer changed under an active widget
-    int cursor = 0;                // byte offset of the cursor, while the widget is active
-    std::optional<int> jump;       // put the cursor here (a click on an error)
-    std::optional<int> scroll_to;  // line to bring into view
+    bool push = false;              // the buffer changed under an active widget
+    int cursor = 0;                 // byte offset of the cursor, while the widget is active
+    std::optional<int> jump;        // put the cursor here (a click on an error)
+    std::optional<int> scroll_to;   // line to bring into view
+    bool select_at_cursor = false;  // a click in the text: select the block at the cursor
+    // Where the last frame drew the text: the top left of line 1 (scrolled)
+    // and the height of a line, in window units.
+    float line1_x = 0.0f, line1_y = 0.0f, line_height = 0.0f;
+    float cursor_x = 0.0f;  // the cursor's x, while the widget is active
 };
 
 // Texts larger than this are not put in the widget (it keeps a copy per character).

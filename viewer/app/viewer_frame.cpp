@@ -10,6 +10,7 @@
 #include "picking.hpp"
 #include "pixel_inspector.hpp"
 #include "render_region.hpp"
+#include "selection_keys.hpp"
 #include "ui_items.hpp"
 
 #include <imgui.h>
@@ -97,6 +98,7 @@ void handle_shortcuts(AppState& state, FrameState& frame, const ImagePlace& imag
     const ImGuiIO& io = ImGui::GetIO();
     handle_escape(state);
     if (io.WantTextInput || state.unsaved_prompt) return;  // typing in a field: letters are text
+    selection_keys(state);
     if (io.KeyCtrl) {
         if (pressed(keys::letter('S'))) save_scene(state);
         if (pressed(keys::letter('Z'))) io.KeyShift ? redo(state) : undo(state);

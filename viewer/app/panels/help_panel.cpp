@@ -25,6 +25,9 @@ void help_panel() {
          "move the selected object or light in the plane facing the camera (with nothing "
          "selected, the one under the cursor); one undo step"},
         {"Alt+Shift+drag", "the same along one axis: x, y or z, whichever it moves along most"},
+        {"Delete, X", "delete the selected object or light (Ctrl+Z brings it back)"},
+        {"Ctrl+D, Shift+D", "duplicate the selection; the copy is selected"},
+        {". (period)", "frame the selection: the view's camera turns to it and comes close"},
         {"A", "show snapshot A / the live image"},
         {"H", "hide / show the panels"},
         {"T", "show / hide the text editor"},
