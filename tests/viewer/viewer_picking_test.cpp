@@ -73,6 +73,26 @@ TEST_F(ViewerPicking, HoveringThePictureInspectsThePixelUnderTheMouse) {
     EXPECT_TRUE(state.inspected.empty());
 }
 
+// Issue 27 item 22: the inspector's box sat at the mouse, on the object just
+// picked, and hid its outline. It goes to the image's bottom corner away
+// from the mouse, clear of the picked sphere.
+TEST_F(ViewerPicking, TheInspectorBoxKeepsClearOfThePickedObject) {
+    const WindowPoint p = window_point({32.5, 30.5});
+    viewer.drag(state, 0, p.x, p.y, p.x, p.y);
+    ASSERT_EQ(state.selection, (Selection{Selection::Kind::primitive, 1}));
+    viewer.move_mouse(state, p.x, p.y);
+    viewer.move_mouse(state, p.x, p.y);
+    ASSERT_FALSE(state.inspected.empty());
+    const UiItem* box = find_item(viewer.ui_items(), "pixel inspector");
+    ASSERT_NE(box, nullptr);
+    // The sphere (radius 1 at 6 units, fov 40) is about a third of the image high.
+    const float clear = viewer.image_rect().height() * 0.2f;
+    const ScreenRect around{p.x - clear, p.y - clear, p.x + clear, p.y + clear};
+    EXPECT_TRUE(box->rect.x1 <= around.x0 || box->rect.x0 >= around.x1 ||
+                box->rect.y1 <= around.y0 || box->rect.y0 >= around.y1)
+        << "the box overlaps the sphere around the mouse";
+}
+
 // Zoomed to 4 and panned with the mouse as a user would: the image is larger
 // than the window's image area, so the pan moves it.
 class ViewerZoomedPicking : public ViewerPicking {
@@ -201,6 +221,29 @@ TEST_F(ViewerPicking, TheObjectsListDrawsOnlyTheRowsInViewOfAHundredThousand) {
 }
 
 // A light added from its panel opens there (its fields shown), as a picked one does.
+// Issue 27 item 18: after Add object the panel scrolled the list to the top
+// of the window, so the next click hit another field. The list was in view:
+// what the user clicks next stays where it was.
+TEST_F(ViewerPicking, AddObjectKeepsThePanelWhereItWas) {
+    // Render settings and Camera closed: the Objects panel in the middle of the sidebar.
+    ASSERT_TRUE(viewer.click(state, "Render settings"));
+    ASSERT_TRUE(viewer.click(state, "Camera"));
+    if (!find_item(viewer.ui_items(), "Add object")) {
+        ASSERT_TRUE(viewer.click(state, "Objects"));
+    }
+    viewer.frame(state);
+    const UiItem* add = find_item(viewer.ui_items(), "Add object");
+    ASSERT_NE(add, nullptr);
+    const float before = add->rect.y0;
+    ASSERT_TRUE(viewer.click(state, "Add object"));
+    ASSERT_TRUE(viewer.click(state, "sphere"));
+    for (int i = 0; i < 3; ++i) viewer.frame(state);
+    ASSERT_EQ(state.doc.scene.primitives.size(), 3u) << state.message;
+    add = find_item(viewer.ui_items(), "Add object");
+    ASSERT_NE(add, nullptr);
+    EXPECT_EQ(add->rect.y0, before) << "the panel did not scroll";
+}
+
 TEST_F(ViewerPicking, AddPointLightOpensTheNewLightInItsPanel) {
     ASSERT_TRUE(viewer.click(state, "Render settings"));
     ASSERT_TRUE(viewer.click(state, "Camera"));

@@ -441,6 +441,49 @@ TEST(ViewerLayout, NothingIsClippedAtTwiceTheScale) {
     EXPECT_LT(panel->rect.x1, 2560 * 0.5f);
 }
 
+// Issue 27 item 20: at a small window on a 2x screen the image's toolbar
+// covered a third of the image; it keeps to one short row there.
+TEST(ViewerLayout, TheToolbarLeavesASmallImageMostlyUncovered) {
+    HeadlessViewer viewer(1400, 900);  // 700x450 window units at 2x, as found
+    ASSERT_TRUE(viewer.ok());
+    viewer.set_framebuffer_scale(2.0f);
+    viewer.set_content_scale(2.0f);
+    AppState state{test_config()};
+    open_scene(state, kScene);
+    ASSERT_TRUE(viewer.run_until_complete(state, kTimeout));
+    const UiItem* toolbar = find_item(viewer.ui_items(), "image toolbar");
+    ASSERT_NE(toolbar, nullptr);
+    const ScreenRect image = viewer.image_rect();
+    const float covered =
+        std::max(0.0f,
+                 std::min(toolbar->rect.x1, image.x1) - std::max(toolbar->rect.x0, image.x0)) *
+        std::max(0.0f, std::min(toolbar->rect.y1, image.y1) - std::max(toolbar->rect.y0, image.y0));
+    EXPECT_LT(covered, 0.12f * image.width() * image.height())
+        << "the toolbar covers " << covered / (image.width() * image.height()) << " of the image";
+    EXPECT_NE(find_item(viewer.ui_items(), "More"), nullptr) << "the rest is a click away";
+}
+
+// Issue 27 item 20: a tiny window squeezed the panel and that squeezed
+// width was remembered (panel_width = 14) for the next run.
+TEST(ViewerLayout, ATinyWindowDoesNotChangeTheRememberedPanelWidth) {
+    const fs::path folder = scene_copy("panel-width-tiny").parent_path();
+    ViewerConfig config = test_config();
+    config.settings_file = folder / "config" / "viewer-settings.txt";
+    fs::create_directories(config.settings_file.parent_path());
+    write_file(config.settings_file, "panel_width = 26\n");
+    ASSERT_EQ(read_viewer_settings(config.settings_file).panel_width, 26.0f);
+    HeadlessViewer viewer(301, 200);  // 0.6 of it, the squeezed panel, is no whole unit
+    ASSERT_TRUE(viewer.ok());
+    AppState state{config};
+    open_scene(state, kScene);
+    for (int i = 0; i < 4; ++i) viewer.frame(state);
+    viewer.move_mouse(state, 250, 100);
+    EXPECT_EQ(state.sidebar_width, 26.0f);
+    remember_settings(state);
+    EXPECT_EQ(read_viewer_settings(config.settings_file).panel_width, 26.0f);
+    fs::remove_all(folder);
+}
+
 TEST(ViewerLayout, ThePanelEdgeDragsAndTheWidthIsRememberedAcrossRuns) {
     const fs::path folder = scene_copy("panel-width").parent_path();
     ViewerConfig config = test_config();

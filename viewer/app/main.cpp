@@ -234,6 +234,9 @@ int run_window(const Arguments& args) {
                 }
             }
         }
+        // Quitting: the window goes at once, then the render's threads stop
+        // and the rest is torn down (which can take a moment mid-render).
+        window.hide();
         if (args.exit_when_done && exit_code == 0) {
             std::cerr << "jtracer-view: " << window_title(app) << "\n";
             if (busy_frames > 0)
@@ -242,6 +245,7 @@ int run_window(const Arguments& args) {
                              "slowest %.1f ms\n",
                              busy_frames, busy_frames / busy_seconds, slowest_frame * 1000.0);
         }
+        app.renderer.stop();
     }
     ImGui_ImplGlfw_Shutdown();
     return exit_code;

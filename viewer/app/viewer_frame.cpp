@@ -358,6 +358,8 @@ void compare_controls(AppState& state, const FrameState& frame) {
     }
 }
 
+void region_and_compare(AppState& state, const FrameState& frame);
+
 void image_toolbar(AppState& state, const FrameState& frame, const ImagePlace& image) {
     const float pad = ImGui::GetStyle().WindowPadding.x;
     ImGui::SetNextWindowPos(ImVec2(image.area.x0 + pad, image.area.y0 + pad));
@@ -381,6 +383,22 @@ void image_toolbar(AppState& state, const FrameState& frame, const ImagePlace& i
                                   state.image_view);
     ImGui::Text("%.0f%%", zoom * 100.0f);
     ImGui::SameLine();
+    // In a small image area the toolbar keeps to one short row, the rest in a
+    // menu: it covered a third of the image at 700x450 on a 2x screen.
+    if (image.area.width() < ImGui::GetFontSize() * 28.0f) {
+        if (button("More", "Render region and A/B compare")) ImGui::OpenPopup("##view_more");
+        if (ImGui::BeginPopup("##view_more")) {
+            region_and_compare(state, frame);
+            ImGui::EndPopup();
+        }
+    } else {
+        region_and_compare(state, frame);
+    }
+    note_window("image toolbar");
+    ImGui::End();
+}
+
+void region_and_compare(AppState& state, const FrameState& frame) {
     if (button("Clear region",
                "Render the whole image again. Ctrl+drag on the image renders only that "
                "rectangle (as jtracer-cli --region); the rest keeps what it showed",
@@ -393,8 +411,6 @@ void image_toolbar(AppState& state, const FrameState& frame, const ImagePlace& i
         ImGui::Text("region %s", format_frame_region(*state.render_region).c_str());
     }
     compare_controls(state, frame);
-    note_window("image toolbar");
-    ImGui::End();
 }
 
 // Hovering the image (not dragging) shows what the pixel under the mouse holds.
@@ -403,7 +419,7 @@ void inspect_hovered_pixel(AppState& state, const ImagePlace& image) {
     const ImGuiIO& io = ImGui::GetIO();
     if (state.drag.button >= 0 || io.WantCaptureMouse || !ImGui::IsMousePosValid()) return;
     // A popup opened this frame (Esc's prompt) is not in WantCaptureMouse yet,
-    // and ImGui 1.86 asserts on a tooltip that appears under a modal.
+    // and ImGui 1.86 asserts on a window that appears under a modal.
     if (ImGui::IsPopupOpen("", ImGuiPopupFlags_AnyPopupId | ImGuiPopupFlags_AnyPopupLevel)) return;
     if (!image.shows(io.MousePos.x, io.MousePos.y)) return;
     const std::optional<ImagePoint> at =
@@ -413,9 +429,21 @@ void inspect_hovered_pixel(AppState& state, const ImagePlace& image) {
         inspect_pixel(state, static_cast<int>(at->x), static_cast<int>(at->y));
     if (!report) return;
     state.inspected = describe(*report, state.doc.scene);
-    ImGui::BeginTooltip();
+    // In the image's bottom corner away from the mouse: a box at the mouse sat
+    // on the object just picked and hid its outline.
+    const float pad = ImGui::GetStyle().WindowPadding.x;
+    const bool left = io.MousePos.x > (image.area.x0 + image.area.x1) * 0.5f;
+    ImGui::SetNextWindowPos(
+        ImVec2(left ? image.area.x0 + pad : image.area.x1 - pad, image.area.y1 - pad),
+        ImGuiCond_Always, ImVec2(left ? 0.0f : 1.0f, 1.0f));
+    ImGui::SetNextWindowBgAlpha(0.8f);
+    ImGui::Begin("##pixel_inspector", nullptr,
+                 ImGuiWindowFlags_NoDecoration | ImGuiWindowFlags_NoInputs |
+                     ImGuiWindowFlags_AlwaysAutoResize | ImGuiWindowFlags_NoSavedSettings |
+                     ImGuiWindowFlags_NoFocusOnAppearing | ImGuiWindowFlags_NoNav);
     ImGui::TextUnformatted(state.inspected.c_str());
-    ImGui::EndTooltip();
+    note_window("pixel inspector");
+    ImGui::End();
 }
 
 // The sidebar's width: the user's (dragged at its right edge), kept within
@@ -436,8 +464,10 @@ float sidebar(AppState& state, FrameState& frame, float window_width, float heig
     ImGui::Begin("JTracer", nullptr,
                  ImGuiWindowFlags_NoMove | ImGuiWindowFlags_NoCollapse |
                      ImGuiWindowFlags_NoSavedSettings | ImGuiWindowFlags_NoTitleBar);
-    // A drag on the right edge resized the window in Begin: remember it.
-    if (ImGui::GetWindowWidth() != width)
+    // A drag on the right edge resized the window in Begin: remember it. Only
+    // a drag: a window too small for the user's width squeezes the panel, and
+    // that width is not the user's.
+    if (ImGui::GetWindowWidth() != width && ImGui::IsMouseDown(ImGuiMouseButton_Left))
         state.sidebar_width = ImGui::GetWindowWidth() / ImGui::GetFontSize();
     ImGui::PushItemWidth(-ImGui::GetFontSize() * 7.5f);
     ImGui::Checkbox("Text editor", &frame.text_editor.open);

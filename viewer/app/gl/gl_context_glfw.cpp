@@ -34,6 +34,8 @@ GlfwWindow::GlfwWindow(int width, int height, const std::string& title) {
         glfwTerminate();
         return;
     }
+    glfwSetWindowSizeLimits(window_, kMinWindowWidth, kMinWindowHeight, GLFW_DONT_CARE,
+                            GLFW_DONT_CARE);
     fit_to_work_area();
     glfwShowWindow(window_);
     glfwMakeContextCurrent(window_);
@@ -86,6 +88,11 @@ void GlfwWindow::fit_to_work_area() {
 
 void GlfwWindow::set_title(const std::string& title) {
     glfwSetWindowTitle(window_, title.c_str());
+}
+
+void GlfwWindow::hide() {
+    glfwHideWindow(window_);
+    glfwPollEvents();  // so that the server unmaps it now
 }
 
 void GlfwWindow::sizes(int& window_w, int& window_h, int& framebuffer_w, int& framebuffer_h) const {

@@ -12,6 +12,11 @@ struct GLFWwindow;
 
 namespace jt::view {
 
+// The smallest window, in screen units: below it the panel, the text editor
+// and the image's toolbar leave no image to see.
+inline constexpr int kMinWindowWidth = 800;
+inline constexpr int kMinWindowHeight = 520;
+
 class GlfwWindow {
   public:
     // Opens a window and makes its context current. On failure, ok() is false
@@ -33,6 +38,7 @@ class GlfwWindow {
     // The monitor's content scale (2 for Xft.dpi 192 or a Retina screen).
     float content_scale() const;
     void set_title(const std::string& title);
+    void hide();
     // Window size in screen units and framebuffer size in pixels; they differ
     // on HiDPI screens.
     void sizes(int& window_w, int& window_h, int& framebuffer_w, int& framebuffer_h) const;

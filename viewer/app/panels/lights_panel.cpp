@@ -31,7 +31,7 @@ void lights_panel(AppState& state) {
         const bool open =
             ImGui::TreeNodeEx(label.c_str(), chosen ? ImGuiTreeNodeFlags_Selected : 0);
         note_item(label.c_str(), false);
-        if (reveal && chosen) ImGui::SetScrollHereY(0.2f);
+        if (reveal && chosen) scroll_here_if_hidden();
         if (open) {
             const BlockRef ref{BlockKind::light, i};
             if (button("Duplicate", "Add a copy of this light's block right after it"))

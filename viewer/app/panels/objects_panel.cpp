@@ -49,7 +49,7 @@ void object_list(AppState& state, const std::vector<int>& shown, int selected) {
     const float row = ImGui::GetTextLineHeightWithSpacing();
     const float height =
         std::min(static_cast<float>(shown.size()), 10.0f) * row + ImGui::GetStyle().WindowPadding.y;
-    if (state.reveal_selection && selected >= 0) ImGui::SetScrollHereY(0.2f);  // the sidebar's
+    if (state.reveal_selection && selected >= 0) scroll_here_if_hidden();  // the sidebar's
     ImGui::BeginChild("##object_list", ImVec2(0, std::max(height, row)), true);
     if (state.reveal_selection && selected >= 0) {
         const auto at = std::find(shown.begin(), shown.end(), selected);

@@ -144,6 +144,13 @@ bool button(const char* label, const char* tooltip_text, const std::string& why_
     return clicked && !disabled;
 }
 
+void scroll_here_if_hidden() {
+    const float y = ImGui::GetCursorPosY();
+    const float top = ImGui::GetScrollY();
+    const float bottom = top + ImGui::GetWindowHeight() - 3.0f * ImGui::GetFrameHeightWithSpacing();
+    if (y < top || y > bottom) ImGui::SetScrollHereY(0.2f);
+}
+
 void same_line_if_fits(const char* label) {
     const ImGuiStyle& style = ImGui::GetStyle();
     const float width = ImGui::CalcTextSize(label, nullptr, true).x + style.FramePadding.x * 2.0f;

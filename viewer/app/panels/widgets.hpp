@@ -31,6 +31,10 @@ bool panel_header(const char* label, const char* id, bool default_open);
 bool button(const char* label, const char* tooltip, const std::string& why_disabled = {});
 // Shows `text` while the last item is hovered, also when it is disabled.
 void tooltip(const char* text);
+// Scrolls the window so that the next item is in view, only when it is not:
+// a reveal of what the user just added there must not move what they are
+// about to click next.
+void scroll_here_if_hidden();
 // Puts the next button on the line of the last item when `label` fits there,
 // so that a row of buttons wraps instead of running off the panel.
 void same_line_if_fits(const char* label);
