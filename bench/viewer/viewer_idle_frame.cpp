@@ -14,9 +14,9 @@
 // Mesa's and ImGui's malloc calls are not counted). --where prints the call
 // stack of each allocation of the last frame measured, to find them.
 
-#include "app_actions.hpp"
-#include "headless.hpp"
-#include "model_frame.hpp"
+#include "app/headless.hpp"
+#include "model/app_actions.hpp"
+#include "model/model_frame.hpp"
 
 #include <algorithm>
 #include <atomic>

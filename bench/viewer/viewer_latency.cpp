@@ -25,11 +25,11 @@
 // it gets one thread (LP_NUM_THREADS=1 unless set), so that it takes as little
 // as possible from the render.
 
-#include "app_actions.hpp"
-#include "gl/gl.hpp"
-#include "headless.hpp"
+#include "app/gl/gl.hpp"
+#include "app/headless.hpp"
 #include "jtracer/parser.hpp"
 #include "jtracer/source_edit.hpp"
+#include "model/app_actions.hpp"
 
 #include <algorithm>
 #include <chrono>

@@ -3,11 +3,11 @@
 // an idle frame allocates nothing. This executable counts the main thread's
 // operator new calls, so it has one of its own.
 
-#include "app_actions.hpp"
+#include "app/headless.hpp"
 #include "common/scratch_dir.hpp"
-#include "headless.hpp"
-#include "model_frame.hpp"
-#include "viewer_test_files.hpp"
+#include "model/app_actions.hpp"
+#include "model/model_frame.hpp"
+#include "viewer/viewer_test_files.hpp"
 
 #include <gtest/gtest.h>
 

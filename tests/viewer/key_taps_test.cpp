@@ -1,7 +1,7 @@
 // The window's key events reach ImGui through KeyTaps, so that a key tapped
 // between two frames is still seen.
 
-#include "key_taps.hpp"
+#include "app/key_taps.hpp"
 
 #include <gtest/gtest.h>
 

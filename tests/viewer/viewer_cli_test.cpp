@@ -5,7 +5,7 @@
 #include "common/run_program.hpp"
 #include "common/scratch_dir.hpp"
 #include "jtracer/version.hpp"
-#include "viewer_test_files.hpp"
+#include "viewer/viewer_test_files.hpp"
 
 #include <gtest/gtest.h>
 

@@ -2,9 +2,9 @@
 // What the frame code's tests start from: a 960x640 headless viewer (OSMesa)
 // and its state, with a scene opened and rendered to the end.
 
-#include "headless.hpp"
-#include "image_layout.hpp"
-#include "viewer_test_files.hpp"
+#include "app/headless.hpp"
+#include "model/image_layout.hpp"
+#include "viewer/viewer_test_files.hpp"
 
 #include <gtest/gtest.h>
 

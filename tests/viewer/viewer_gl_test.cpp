@@ -1,15 +1,15 @@
 // The viewer's frame code in an offscreen OSMesa GL 3.3 context: what it shows
 // is what the core renders, and edits, camera switches and reloads behave.
 
-#include "app_actions.hpp"
+#include "app/headless.hpp"
+#include "app/keys.hpp"
+#include "app/viewer_frame.hpp"
 #include "common/files.hpp"
-#include "headless.hpp"
 #include "jtracer/parser.hpp"
 #include "jtracer/render_job.hpp"
-#include "keys.hpp"
-#include "viewer_frame.hpp"
-#include "viewer_test_files.hpp"
-#include "wakeup.hpp"
+#include "model/app_actions.hpp"
+#include "model/wakeup.hpp"
+#include "viewer/viewer_test_files.hpp"
 
 #include <gtest/gtest.h>
 #include <glm/geometric.hpp>

@@ -1,17 +1,17 @@
 // The image tools through the frame code: Render region (a Ctrl+drag renders
 // that rectangle alone, as jtracer-cli --region does) and A/B compare.
 
-#include "ab_compare.hpp"
-#include "app_actions.hpp"
+#include "app/headless.hpp"
+#include "app/keys.hpp"
 #include "common/files.hpp"
 #include "common/run_program.hpp"
-#include "headless.hpp"
 #include "jtracer/bmp.hpp"
 #include "jtracer/image_diff.hpp"
 #include "jtracer/region.hpp"
-#include "keys.hpp"
-#include "render_region.hpp"
-#include "viewer_fixture.hpp"
+#include "model/ab_compare.hpp"
+#include "model/app_actions.hpp"
+#include "model/render_region.hpp"
+#include "viewer/viewer_fixture.hpp"
 
 #include <gtest/gtest.h>
 

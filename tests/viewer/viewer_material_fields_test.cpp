@@ -2,12 +2,12 @@
 // map's file, which the showcase's backdrop and the globe use; through the
 // OSMesa frame code, into the text as Save scene writes it.
 
-#include "app_actions.hpp"
-#include "document_edits.hpp"
-#include "headless.hpp"
-#include "keys.hpp"
-#include "picking.hpp"
-#include "viewer_test_files.hpp"
+#include "app/headless.hpp"
+#include "app/keys.hpp"
+#include "model/app_actions.hpp"
+#include "model/document_edits.hpp"
+#include "model/picking.hpp"
+#include "viewer/viewer_test_files.hpp"
 
 #include <gtest/gtest.h>
 #include <imgui.h>

@@ -29,18 +29,18 @@
 //   viewer_monkey --seed 7 --events 500     one run (replay a failure by its seed)
 //   viewer_monkey --soak 2000               edit/reload cycles; resident memory bounded
 
-#include "ab_compare.hpp"
-#include "app_actions.hpp"
+#include "app/headless.hpp"
+#include "app/keys.hpp"
+#include "app/panels/panels.hpp"
 #include "common/files.hpp"
-#include "document_edits.hpp"
-#include "headless.hpp"
 #include "jtracer/parser.hpp"
 #include "jtracer/png.hpp"
 #include "jtracer/schema.hpp"
-#include "keys.hpp"
-#include "panels/panels.hpp"
-#include "picking.hpp"
-#include "render_region.hpp"
+#include "model/ab_compare.hpp"
+#include "model/app_actions.hpp"
+#include "model/document_edits.hpp"
+#include "model/picking.hpp"
+#include "model/render_region.hpp"
 
 #include <imgui.h>
 

@@ -4,13 +4,13 @@
 // and the outline follows it; undo gives the file's bytes back and redo the
 // moved ones; Esc during the drag cancels it; Shift keeps one axis.
 
-#include "app_actions.hpp"
+#include "app/headless.hpp"
+#include "app/keys.hpp"
 #include "common/files.hpp"
-#include "headless.hpp"
 #include "jtracer/value_text.hpp"
-#include "keys.hpp"
-#include "picking.hpp"
-#include "viewer_fixture.hpp"
+#include "model/app_actions.hpp"
+#include "model/picking.hpp"
+#include "viewer/viewer_fixture.hpp"
 
 #include <gtest/gtest.h>
 #include <imgui.h>

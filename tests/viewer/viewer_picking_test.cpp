@@ -2,12 +2,12 @@
 // under it, outlines it over the image (never in it), opens it in the Objects
 // panel; the background clears; the list stays a few rows with 100,000 objects.
 
-#include "app_actions.hpp"
-#include "headless.hpp"
+#include "app/headless.hpp"
+#include "app/keys.hpp"
 #include "jtracer/render_job.hpp"
-#include "keys.hpp"
-#include "picking.hpp"
-#include "viewer_fixture.hpp"
+#include "model/app_actions.hpp"
+#include "model/picking.hpp"
+#include "viewer/viewer_fixture.hpp"
 
 #include <gtest/gtest.h>
 

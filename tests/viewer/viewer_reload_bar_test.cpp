@@ -2,11 +2,11 @@
 // comes to the user, across the top of the image, with the differences
 // between the two texts; through the OSMesa frame code.
 
-#include "app_actions.hpp"
+#include "app/headless.hpp"
 #include "common/files.hpp"
-#include "document_edits.hpp"
-#include "headless.hpp"
-#include "viewer_test_files.hpp"
+#include "model/app_actions.hpp"
+#include "model/document_edits.hpp"
+#include "viewer/viewer_test_files.hpp"
 
 #include <gtest/gtest.h>
 

@@ -3,16 +3,16 @@
 // that lag behind an edit, prompts that say the wrong thing, edits lost on
 // quit, files overwritten without asking, clipped or unexplained controls.
 
-#include "app_actions.hpp"
+#include "app/headless.hpp"
+#include "app/keys.hpp"
+#include "app/panels/panels.hpp"
+#include "app/viewer_frame.hpp"
 #include "common/files.hpp"
-#include "headless.hpp"
 #include "jtracer/parser.hpp"
 #include "jtracer/scene_file.hpp"
 #include "jtracer/validate.hpp"
-#include "keys.hpp"
-#include "panels/panels.hpp"
-#include "viewer_frame.hpp"
-#include "viewer_test_files.hpp"
+#include "model/app_actions.hpp"
+#include "viewer/viewer_test_files.hpp"
 
 #include <gtest/gtest.h>
 #include <imgui.h>

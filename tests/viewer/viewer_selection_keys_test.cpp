@@ -1,13 +1,13 @@
 // Issue 27 item 16: the keys a user of Blender or any editor expects, and the
 // text editor following the selection; through the OSMesa frame code.
 
-#include "app_actions.hpp"
-#include "document_edits.hpp"
-#include "headless.hpp"
-#include "keys.hpp"
-#include "picking.hpp"
-#include "pixel_inspector.hpp"
-#include "viewer_fixture.hpp"
+#include "app/headless.hpp"
+#include "app/keys.hpp"
+#include "model/app_actions.hpp"
+#include "model/document_edits.hpp"
+#include "model/picking.hpp"
+#include "model/pixel_inspector.hpp"
+#include "viewer/viewer_fixture.hpp"
 
 #include <gtest/gtest.h>
 #include <imgui.h>

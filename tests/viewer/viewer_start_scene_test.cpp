@@ -3,12 +3,12 @@
 // image is named after the file and the camera has a name; new objects go
 // with the objects, and a plane lies at the view's floor.
 
-#include "app_actions.hpp"
+#include "app/headless.hpp"
 #include "common/files.hpp"
 #include "common/scratch_dir.hpp"
-#include "document_edits.hpp"
-#include "headless.hpp"
-#include "viewer_test_files.hpp"
+#include "model/app_actions.hpp"
+#include "model/document_edits.hpp"
+#include "viewer/viewer_test_files.hpp"
 
 #include <gtest/gtest.h>
 

@@ -1,8 +1,8 @@
 #pragma once
 // The viewer tests' scene, copies of it to change, and their configuration.
 
-#include "app_state.hpp"
 #include "common/scratch_dir.hpp"
+#include "model/app_state.hpp"
 
 #include <chrono>
 #include <filesystem>

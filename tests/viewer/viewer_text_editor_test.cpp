@@ -3,14 +3,14 @@
 // past the start of the history, fast typing), and a file broken or deleted
 // on disk while it is open.
 
-#include "app_actions.hpp"
+#include "app/headless.hpp"
+#include "app/keys.hpp"
+#include "app/text_editor.hpp"
 #include "common/files.hpp"
-#include "document_edits.hpp"
-#include "headless.hpp"
 #include "jtracer/diagnostics.hpp"
-#include "keys.hpp"
-#include "text_editor.hpp"
-#include "viewer_test_files.hpp"
+#include "model/app_actions.hpp"
+#include "model/document_edits.hpp"
+#include "viewer/viewer_test_files.hpp"
 
 #include <gtest/gtest.h>
 #include <imgui.h>

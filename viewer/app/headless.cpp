@@ -1,10 +1,10 @@
-#include "headless.hpp"
+#include "app/headless.hpp"
 
-#include "app_actions.hpp"
-#include "keys.hpp"
-#include "model_frame.hpp"
-#include "screenshot.hpp"
-#include "viewer_frame.hpp"
+#include "app/keys.hpp"
+#include "app/screenshot.hpp"
+#include "app/viewer_frame.hpp"
+#include "model/app_actions.hpp"
+#include "model/model_frame.hpp"
 
 #include <imgui.h>
 

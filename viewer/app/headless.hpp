@@ -2,11 +2,11 @@
 // The viewer without a window: an OSMesa context, ImGui, and a frame loop that
 // stops when the render is complete. Used by --screenshot and by the tests.
 
-#include "app_state.hpp"
-#include "gl/gl_context_osmesa.hpp"
-#include "imgui_layer.hpp"
-#include "key_taps.hpp"
-#include "viewer_frame.hpp"
+#include "app/gl/gl_context_osmesa.hpp"
+#include "app/imgui_layer.hpp"
+#include "app/key_taps.hpp"
+#include "app/viewer_frame.hpp"
+#include "model/app_state.hpp"
 
 #include <chrono>
 #include <string>

@@ -1,7 +1,7 @@
-#include "imgui_layer.hpp"
+#include "app/imgui_layer.hpp"
 
-#include "gl/gl.hpp"
-#include "keys.hpp"
+#include "app/gl/gl.hpp"
+#include "app/keys.hpp"
 
 #include <imgui.h>
 #include <imgui_impl_opengl3.h>

@@ -3,7 +3,7 @@
 // current. The platform side (GLFW events, or a fixed size when headless) is
 // fed by the caller before begin_frame().
 
-#include "gl/gl_proc.hpp"
+#include "app/gl/gl_proc.hpp"
 
 #include <string>
 

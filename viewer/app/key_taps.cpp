@@ -1,4 +1,4 @@
-#include "key_taps.hpp"
+#include "app/key_taps.hpp"
 
 #include <algorithm>
 

@@ -1,4 +1,4 @@
-#include "keys.hpp"
+#include "app/keys.hpp"
 
 #include <imgui.h>
 

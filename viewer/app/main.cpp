@@ -3,14 +3,14 @@
 //   jtracer-view [scene.jts]                      a window (GLFW)
 //   jtracer-view scene.jts --screenshot out.png   headless (OSMesa), no display needed
 
-#include "app_actions.hpp"
-#include "app_state.hpp"
-#include "gl/gl_context_glfw.hpp"
-#include "headless.hpp"
-#include "image_files.hpp"
-#include "imgui_layer.hpp"
-#include "key_taps.hpp"
-#include "viewer_frame.hpp"
+#include "app/gl/gl_context_glfw.hpp"
+#include "app/headless.hpp"
+#include "app/imgui_layer.hpp"
+#include "app/key_taps.hpp"
+#include "app/viewer_frame.hpp"
+#include "model/app_actions.hpp"
+#include "model/app_state.hpp"
+#include "model/image_files.hpp"
 
 #include "jtracer/frontend/command_line.hpp"
 

@@ -1,6 +1,6 @@
-#include "presenter.hpp"
+#include "app/presenter.hpp"
 
-#include "gl/gl.hpp"
+#include "app/gl/gl.hpp"
 
 #include <imgui.h>
 

@@ -2,8 +2,8 @@
 // Shows the render as an OpenGL texture: uploads only the rectangles that
 // changed and draws the texture fitted to an area of the window.
 
-#include "image_layout.hpp"
 #include "jtracer/image.hpp"
+#include "model/image_layout.hpp"
 
 #include <optional>
 

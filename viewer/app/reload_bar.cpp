@@ -1,10 +1,10 @@
-#include "reload_bar.hpp"
+#include "app/reload_bar.hpp"
 
-#include "app_actions.hpp"
-#include "document_edits.hpp"
-#include "panels/panels.hpp"
-#include "panels/widgets.hpp"
-#include "ui_items.hpp"
+#include "app/panels/panels.hpp"
+#include "app/panels/widgets.hpp"
+#include "app/ui_items.hpp"
+#include "model/app_actions.hpp"
+#include "model/document_edits.hpp"
 
 #include <imgui.h>
 

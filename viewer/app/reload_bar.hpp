@@ -4,9 +4,9 @@
 // the user says which to keep. It can show the differences between the
 // viewer's text and the file's, line by line (text_diff.hpp).
 
-#include "app_state.hpp"
-#include "image_layout.hpp"
-#include "text_diff.hpp"
+#include "model/app_state.hpp"
+#include "model/image_layout.hpp"
+#include "model/text_diff.hpp"
 
 #include <string>
 

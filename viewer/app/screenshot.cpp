@@ -1,6 +1,6 @@
-#include "screenshot.hpp"
+#include "app/screenshot.hpp"
 
-#include "gl/gl.hpp"
+#include "app/gl/gl.hpp"
 
 namespace jt::view {
 

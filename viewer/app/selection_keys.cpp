@@ -1,7 +1,7 @@
-#include "selection_keys.hpp"
+#include "app/selection_keys.hpp"
 
-#include "keys.hpp"
-#include "selection_commands.hpp"
+#include "app/keys.hpp"
+#include "model/selection_commands.hpp"
 
 #include <imgui.h>
 

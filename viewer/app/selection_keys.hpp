@@ -3,7 +3,7 @@
 // editors: Delete or X deletes it, Ctrl+D or Shift+D duplicates it, the
 // period key (or the keypad's) frames it (selection_commands.hpp).
 
-#include "app_state.hpp"
+#include "model/app_state.hpp"
 
 namespace jt::view {
 

@@ -1,7 +1,7 @@
-#include "selection_overlay.hpp"
+#include "app/selection_overlay.hpp"
 
-#include "gl/gl.hpp"
-#include "picking.hpp"
+#include "app/gl/gl.hpp"
+#include "model/picking.hpp"
 
 #include <imgui.h>
 

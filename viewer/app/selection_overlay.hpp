@@ -3,8 +3,8 @@
 // pixels tinted and outlined (a texture made from the primitive ids of the
 // shown frame), and every light as a small marker at its projected position.
 
-#include "app_state.hpp"
-#include "image_layout.hpp"
+#include "model/app_state.hpp"
+#include "model/image_layout.hpp"
 
 #include <memory>
 

@@ -1,13 +1,13 @@
-#include "text_editor.hpp"
+#include "app/text_editor.hpp"
 
-#include "app_actions.hpp"
-#include "document_edits.hpp"
-#include "keys.hpp"
-#include "panels/panels.hpp"
-#include "picking.hpp"
-#include "selection_commands.hpp"
-#include "text_cursor.hpp"
-#include "ui_items.hpp"
+#include "app/keys.hpp"
+#include "app/panels/panels.hpp"
+#include "app/ui_items.hpp"
+#include "model/app_actions.hpp"
+#include "model/document_edits.hpp"
+#include "model/picking.hpp"
+#include "model/selection_commands.hpp"
+#include "model/text_cursor.hpp"
 
 #include <imgui.h>
 #include <imgui_internal.h>

@@ -8,8 +8,8 @@
 // An object or light picked in the image scrolls the text to its block, and
 // a click in a block selects its object or light.
 
-#include "app_state.hpp"
 #include "jtracer/scene.hpp"
+#include "model/app_state.hpp"
 
 #include <cstdint>
 #include <optional>

@@ -1,4 +1,4 @@
-#include "ui_items.hpp"
+#include "app/ui_items.hpp"
 
 #include <imgui.h>
 #include <imgui_internal.h>

@@ -4,7 +4,7 @@
 // its window's edge. The tests and the monkey click controls by label, and
 // check that nothing is clipped and every disabled control says why.
 
-#include "image_layout.hpp"
+#include "model/image_layout.hpp"
 
 #include <string>
 #include <vector>

@@ -3,12 +3,12 @@
 // whatever GL context is current, between ImGuiLayer::begin_frame and
 // end_frame, so a GLFW window and an OSMesa buffer show the same thing.
 
-#include "app_state.hpp"
-#include "presenter.hpp"
-#include "reload_bar.hpp"
-#include "selection_overlay.hpp"
-#include "text_editor.hpp"
-#include "ui_items.hpp"
+#include "app/presenter.hpp"
+#include "app/reload_bar.hpp"
+#include "app/selection_overlay.hpp"
+#include "app/text_editor.hpp"
+#include "app/ui_items.hpp"
+#include "model/app_state.hpp"
 
 #include <string>
 #include <vector>

@@ -1,4 +1,4 @@
-#include "ab_compare.hpp"
+#include "model/ab_compare.hpp"
 
 #include "jtracer/image_diff.hpp"
 

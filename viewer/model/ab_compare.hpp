@@ -3,7 +3,7 @@
 // by side at a split line, alone, or as their per-pixel difference computed by
 // the core's diff_images (the heat map jtracer-cli diff writes).
 
-#include "app_state.hpp"
+#include "model/app_state.hpp"
 
 #include <string>
 

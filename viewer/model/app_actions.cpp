@@ -1,14 +1,14 @@
-#include "app_actions.hpp"
+#include "model/app_actions.hpp"
 
-#include "render_region.hpp"
+#include "model/render_region.hpp"
 
-#include "image_files.hpp"
 #include "jtracer/limits.hpp"
 #include "jtracer/model_cache.hpp"
 #include "jtracer/texture.hpp"
 #include "jtracer/validate.hpp"
-#include "object_drag.hpp"
-#include "ui_rounding.hpp"
+#include "model/image_files.hpp"
+#include "model/object_drag.hpp"
+#include "model/ui_rounding.hpp"
 
 #include <algorithm>
 #include <chrono>

@@ -3,7 +3,7 @@
 // panels, the keyboard shortcuts and the tests. Each leaves a one-line
 // outcome in state.message.
 
-#include "app_state.hpp"
+#include "model/app_state.hpp"
 
 #include <filesystem>
 #include <functional>

@@ -4,22 +4,22 @@
 // command does). No GL, no ImGui: the frame code (viewer/app) draws this state
 // and keeps the texture itself.
 
-#include "drag_geometry.hpp"
-#include "file_watcher.hpp"
-#include "free_camera.hpp"
-#include "image_layout.hpp"
 #include "jtracer/region.hpp"
-#include "primitive_ids.hpp"
-#include "recent_files.hpp"
-#include "render_controller.hpp"
-#include "scene_document.hpp"
-#include "scene_loader.hpp"
-#include "selection.hpp"
-#include "shown_frame.hpp"
-#include "text_checker.hpp"
-#include "undo_stack.hpp"
-#include "viewer_settings.hpp"
-#include "wakeup.hpp"
+#include "model/drag_geometry.hpp"
+#include "model/file_watcher.hpp"
+#include "model/free_camera.hpp"
+#include "model/image_layout.hpp"
+#include "model/primitive_ids.hpp"
+#include "model/recent_files.hpp"
+#include "model/render_controller.hpp"
+#include "model/scene_document.hpp"
+#include "model/scene_loader.hpp"
+#include "model/selection.hpp"
+#include "model/shown_frame.hpp"
+#include "model/text_checker.hpp"
+#include "model/undo_stack.hpp"
+#include "model/viewer_settings.hpp"
+#include "model/wakeup.hpp"
 
 #include <chrono>
 #include <cstdint>

@@ -1,6 +1,7 @@
-#include "document_edits.hpp"
+#include "model/document_edits.hpp"
 
-#include "app_actions.hpp"
+#include "model/app_actions.hpp"
+
 #include "jtracer/block_edit.hpp"
 #include "jtracer/camera_edit.hpp"
 #include "jtracer/model_cache.hpp"
@@ -11,7 +12,7 @@
 #include "jtracer/texture.hpp"
 #include "jtracer/transform_edit.hpp"
 #include "jtracer/value_text.hpp"
-#include "ui_rounding.hpp"
+#include "model/ui_rounding.hpp"
 
 namespace jt::view {
 

@@ -6,10 +6,10 @@
 // in the text editor. Each is one undo step in the same history as the
 // panels' value edits; Save scene writes the text they leave.
 
-#include "app_state.hpp"
 #include "jtracer/error.hpp"
 #include "jtracer/new_block.hpp"
 #include "jtracer/scene_text.hpp"
+#include "model/app_state.hpp"
 
 #include <chrono>
 #include <cstddef>

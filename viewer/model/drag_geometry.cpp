@@ -1,4 +1,4 @@
-#include "drag_geometry.hpp"
+#include "model/drag_geometry.hpp"
 
 #include "jtracer/value_text.hpp"
 

@@ -1,4 +1,4 @@
-#include "file_watcher.hpp"
+#include "model/file_watcher.hpp"
 
 #include <algorithm>
 

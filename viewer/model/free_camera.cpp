@@ -1,4 +1,4 @@
-#include "free_camera.hpp"
+#include "model/free_camera.hpp"
 
 #include <glm/geometric.hpp>
 

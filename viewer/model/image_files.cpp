@@ -1,4 +1,4 @@
-#include "image_files.hpp"
+#include "model/image_files.hpp"
 
 #include "jtracer/atomic_file.hpp"
 

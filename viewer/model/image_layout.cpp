@@ -1,4 +1,4 @@
-#include "image_layout.hpp"
+#include "model/image_layout.hpp"
 
 #include <algorithm>
 #include <cmath>

@@ -6,7 +6,7 @@
 // may be given a time before which it does not start: a newer request then
 // moves that time (the text editor waits for typing to pause).
 
-#include "wakeup.hpp"
+#include "model/wakeup.hpp"
 
 #include <chrono>
 #include <condition_variable>

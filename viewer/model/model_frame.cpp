@@ -1,7 +1,7 @@
-#include "model_frame.hpp"
+#include "model/model_frame.hpp"
 
-#include "app_actions.hpp"
-#include "document_edits.hpp"
+#include "model/app_actions.hpp"
+#include "model/document_edits.hpp"
 
 #include <thread>
 

@@ -3,7 +3,7 @@
 // a render is done: what --screenshot and the tests wait with, with or without
 // the frame code around it.
 
-#include "app_state.hpp"
+#include "model/app_state.hpp"
 
 #include <chrono>
 #include <functional>

@@ -1,14 +1,14 @@
-#include "object_drag.hpp"
+#include "model/object_drag.hpp"
 
-#include "app_actions.hpp"
-#include "document_edits.hpp"
 #include "jtracer/affine.hpp"
 #include "jtracer/model_cache.hpp"
 #include "jtracer/schema.hpp"
 #include "jtracer/texture.hpp"
 #include "jtracer/transform_edit.hpp"
 #include "jtracer/value_text.hpp"
-#include "picking.hpp"
+#include "model/app_actions.hpp"
+#include "model/document_edits.hpp"
+#include "model/picking.hpp"
 
 #include <glm/geometric.hpp>
 

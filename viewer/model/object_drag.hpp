@@ -22,7 +22,7 @@
 // drag is one undo step, Esc (or Ctrl+Z) during it gives the document back as
 // it was, and a drag let go where it started changes nothing.
 
-#include "app_state.hpp"
+#include "model/app_state.hpp"
 
 #include <chrono>
 

@@ -1,7 +1,7 @@
-#include "picking.hpp"
+#include "model/picking.hpp"
 
-#include "app_actions.hpp"
 #include "jtracer/schema.hpp"
+#include "model/app_actions.hpp"
 
 #include <cmath>
 

@@ -3,7 +3,7 @@
 // frame the render draws), where the lights appear, and selection by click.
 // Pixels are Image8's: x from the left, y from the bottom (docs/language.md §7.3).
 
-#include "app_state.hpp"
+#include "model/app_state.hpp"
 
 #include <memory>
 #include <optional>

@@ -1,7 +1,7 @@
-#include "pixel_inspector.hpp"
+#include "model/pixel_inspector.hpp"
 
 #include "jtracer/schema.hpp"
-#include "picking.hpp"
+#include "model/picking.hpp"
 
 #include <cstdio>
 

@@ -3,7 +3,7 @@
 // --region counts pixels (from the top-left corner, docs/language.md §7.3 has
 // rows from the bottom), its bytes, and the primitive its ray meets first.
 
-#include "app_state.hpp"
+#include "model/app_state.hpp"
 
 #include <array>
 #include <cstdint>

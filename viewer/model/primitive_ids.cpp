@@ -1,4 +1,4 @@
-#include "primitive_ids.hpp"
+#include "model/primitive_ids.hpp"
 
 namespace jt::view {
 

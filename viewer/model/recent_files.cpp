@@ -1,7 +1,7 @@
-#include "recent_files.hpp"
+#include "model/recent_files.hpp"
 
-#include "image_files.hpp"
-#include "viewer_settings.hpp"
+#include "model/image_files.hpp"
+#include "model/viewer_settings.hpp"
 
 #include <algorithm>
 #include <fstream>

@@ -1,4 +1,4 @@
-#include "render_controller.hpp"
+#include "model/render_controller.hpp"
 
 #include <atomic>
 #include <exception>

@@ -7,7 +7,7 @@
 
 #include "jtracer/render_job.hpp"
 #include "jtracer/scene.hpp"
-#include "wakeup.hpp"
+#include "model/wakeup.hpp"
 
 #include <chrono>
 #include <cstdint>

@@ -1,6 +1,6 @@
-#include "render_region.hpp"
+#include "model/render_region.hpp"
 
-#include "app_actions.hpp"
+#include "model/app_actions.hpp"
 
 #include <algorithm>
 #include <cmath>

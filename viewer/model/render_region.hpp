@@ -3,8 +3,8 @@
 // jtracer-cli's --region semantics (region.hpp: X0,Y0,X1,Y1, half-open, from
 // the top-left). The rest of the image keeps the pixels it showed.
 
-#include "app_state.hpp"
 #include "jtracer/region.hpp"
+#include "model/app_state.hpp"
 
 #include <optional>
 

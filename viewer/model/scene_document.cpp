@@ -1,9 +1,9 @@
-#include "scene_document.hpp"
+#include "model/scene_document.hpp"
 
-#include "image_files.hpp"
 #include "jtracer/parser.hpp"
 #include "jtracer/scene_file.hpp"
 #include "jtracer/source_edit.hpp"
+#include "model/image_files.hpp"
 
 #include <algorithm>
 #include <fstream>

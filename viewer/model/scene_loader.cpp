@@ -1,4 +1,4 @@
-#include "scene_loader.hpp"
+#include "model/scene_loader.hpp"
 
 #include <exception>
 

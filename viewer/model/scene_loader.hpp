@@ -4,9 +4,9 @@
 // result up on a later frame. The newest request wins: a load that is
 // overtaken by another request finishes, but its result is dropped.
 
-#include "latest_wins_worker.hpp"
-#include "scene_document.hpp"
-#include "wakeup.hpp"
+#include "model/latest_wins_worker.hpp"
+#include "model/scene_document.hpp"
+#include "model/wakeup.hpp"
 
 #include <filesystem>
 #include <optional>

@@ -1,9 +1,9 @@
-#include "selection_commands.hpp"
+#include "model/selection_commands.hpp"
 
-#include "app_actions.hpp"
-#include "document_edits.hpp"
 #include "jtracer/primitive_bounds.hpp"
-#include "picking.hpp"
+#include "model/app_actions.hpp"
+#include "model/document_edits.hpp"
+#include "model/picking.hpp"
 
 #include <glm/geometric.hpp>
 #include <glm/trigonometric.hpp>

@@ -3,7 +3,7 @@
 // Shift+D, frame it), and where it is in the text, so that the text editor
 // scrolls to the block picked in the image and a click in a block selects it.
 
-#include "app_state.hpp"
+#include "model/app_state.hpp"
 
 #include <optional>
 

@@ -1,4 +1,4 @@
-#include "text_checker.hpp"
+#include "model/text_checker.hpp"
 
 #include "jtracer/scene_file.hpp"
 

@@ -6,8 +6,8 @@
 
 #include "jtracer/diagnostics.hpp"
 #include "jtracer/parser.hpp"
-#include "latest_wins_worker.hpp"
-#include "wakeup.hpp"
+#include "model/latest_wins_worker.hpp"
+#include "model/wakeup.hpp"
 
 #include <chrono>
 #include <cstdint>

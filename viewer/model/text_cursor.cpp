@@ -1,4 +1,4 @@
-#include "text_cursor.hpp"
+#include "model/text_cursor.hpp"
 
 #include <algorithm>
 #include <cstddef>

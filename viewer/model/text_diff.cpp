@@ -1,4 +1,4 @@
-#include "text_diff.hpp"
+#include "model/text_diff.hpp"
 
 #include <algorithm>
 #include <cstdint>

@@ -1,4 +1,4 @@
-#include "ui_rounding.hpp"
+#include "model/ui_rounding.hpp"
 
 #include <cmath>
 #include <cstdio>

@@ -1,6 +1,6 @@
-#include "viewer_settings.hpp"
+#include "model/viewer_settings.hpp"
 
-#include "image_files.hpp"
+#include "model/image_files.hpp"
 
 #include <charconv>
 #include <cmath>

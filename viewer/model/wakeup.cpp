@@ -1,4 +1,4 @@
-#include "wakeup.hpp"
+#include "model/wakeup.hpp"
 
 #include <utility>
 

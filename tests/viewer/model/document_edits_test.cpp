@@ -3,14 +3,14 @@
 // and Save scene writes the text they leave, every byte outside the changed
 // blocks as it was.
 
-#include "document_edits.hpp"
-#include "app_actions.hpp"
+#include "model/document_edits.hpp"
 #include "common/files.hpp"
 #include "jtracer/model_file.hpp"
 #include "jtracer/new_block.hpp"
 #include "jtracer/parser.hpp"
-#include "model_loop.hpp"
-#include "viewer_test_files.hpp"
+#include "model/app_actions.hpp"
+#include "viewer/model/model_loop.hpp"
+#include "viewer/viewer_test_files.hpp"
 
 #include <gtest/gtest.h>
 

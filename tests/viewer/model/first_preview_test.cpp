@@ -3,13 +3,13 @@
 // woken by the workers instead of the next tick, and a material edit that
 // reuses the prepared geometry. None of it may change the final pixels.
 
-#include "app_actions.hpp"
 #include "common/scenes.hpp"
 #include "jtracer/parser.hpp"
 #include "jtracer/render_job.hpp"
+#include "model/app_actions.hpp"
+#include "model/wakeup.hpp"
 #include "render/prepared_scene.hpp"
-#include "viewer_test_files.hpp"
-#include "wakeup.hpp"
+#include "viewer/viewer_test_files.hpp"
 
 #include <gtest/gtest.h>
 

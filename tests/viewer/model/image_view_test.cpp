@@ -1,7 +1,7 @@
 // The image view's zoom and pan (image_layout.hpp): the one mapping between
 // window and image points that picking, the inspector and the overlays use.
 
-#include "image_layout.hpp"
+#include "model/image_layout.hpp"
 
 #include <gtest/gtest.h>
 

@@ -3,11 +3,11 @@
 // is reported where the scene names it and keeps the last image, Reload model
 // reads a file whose stamp did not move, and no unsaved scene edit is lost.
 
-#include "app_actions.hpp"
 #include "common/files.hpp"
 #include "jtracer/png.hpp"
-#include "model_loop.hpp"
-#include "viewer_test_files.hpp"
+#include "model/app_actions.hpp"
+#include "viewer/model/model_loop.hpp"
+#include "viewer/viewer_test_files.hpp"
 
 #include <gtest/gtest.h>
 

@@ -2,8 +2,8 @@
 // Frames of the viewer's model alone, without GL or ImGui, with the same
 // calls as HeadlessViewer's: the model's tests run the viewer this way.
 
-#include "model_frame.hpp"
-#include "viewer_test_files.hpp"
+#include "model/model_frame.hpp"
+#include "viewer/viewer_test_files.hpp"
 
 #include <chrono>
 

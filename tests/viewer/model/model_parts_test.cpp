@@ -1,17 +1,17 @@
 // The viewer model's parts: file watching, the free camera, undo, image
 // placement, image files, recent files, remembered settings, edit tracking.
 
-#include "app_actions.hpp"
 #include "common/files.hpp"
 #include "common/image_header.hpp"
 #include "common/scratch_dir.hpp"
-#include "file_watcher.hpp"
-#include "free_camera.hpp"
-#include "image_files.hpp"
-#include "image_layout.hpp"
-#include "recent_files.hpp"
-#include "undo_stack.hpp"
-#include "viewer_settings.hpp"
+#include "model/app_actions.hpp"
+#include "model/file_watcher.hpp"
+#include "model/free_camera.hpp"
+#include "model/image_files.hpp"
+#include "model/image_layout.hpp"
+#include "model/recent_files.hpp"
+#include "model/undo_stack.hpp"
+#include "model/viewer_settings.hpp"
 
 #include <gtest/gtest.h>
 #include <glm/geometric.hpp>

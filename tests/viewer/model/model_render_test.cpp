@@ -1,10 +1,10 @@
 // The viewer's model renders with no GL context: the display it keeps is the
 // core's image, and the rectangles it reports as changed are where it changed.
 
-#include "app_actions.hpp"
 #include "jtracer/render_job.hpp"
-#include "model_loop.hpp"
-#include "viewer_test_files.hpp"
+#include "model/app_actions.hpp"
+#include "viewer/model/model_loop.hpp"
+#include "viewer/viewer_test_files.hpp"
 
 #include <gtest/gtest.h>
 

@@ -4,16 +4,16 @@
 // translate in the text with every byte outside the object's block kept; one
 // undo step per drag, Esc and a drag let go where it started changing nothing.
 
-#include "object_drag.hpp"
-#include "app_actions.hpp"
+#include "model/object_drag.hpp"
 #include "common/files.hpp"
-#include "document_edits.hpp"
-#include "drag_geometry.hpp"
 #include "jtracer/parser.hpp"
 #include "jtracer/value_text.hpp"
-#include "model_loop.hpp"
-#include "picking.hpp"
-#include "viewer_test_files.hpp"
+#include "model/app_actions.hpp"
+#include "model/document_edits.hpp"
+#include "model/drag_geometry.hpp"
+#include "model/picking.hpp"
+#include "viewer/model/model_loop.hpp"
+#include "viewer/viewer_test_files.hpp"
 
 #include <gtest/gtest.h>
 #include <glm/geometric.hpp>

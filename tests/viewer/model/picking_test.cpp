@@ -2,11 +2,11 @@
 // pixel shows, a light's marker wins near it, the background clears, and a
 // selection that no longer names anything reads as none.
 
-#include "picking.hpp"
-#include "app_actions.hpp"
-#include "model_loop.hpp"
-#include "pixel_inspector.hpp"
-#include "viewer_test_files.hpp"
+#include "model/picking.hpp"
+#include "model/app_actions.hpp"
+#include "model/pixel_inspector.hpp"
+#include "viewer/model/model_loop.hpp"
+#include "viewer/viewer_test_files.hpp"
 
 #include <gtest/gtest.h>
 

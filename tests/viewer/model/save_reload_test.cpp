@@ -3,11 +3,11 @@
 // unasked, and a file that is deleted, cut short, garbage or huge never costs
 // the last good image, the UI's frames or a crash.
 
-#include "app_actions.hpp"
 #include "common/files.hpp"
 #include "jtracer/parser.hpp"
-#include "model_loop.hpp"
-#include "viewer_test_files.hpp"
+#include "model/app_actions.hpp"
+#include "viewer/model/model_loop.hpp"
+#include "viewer/viewer_test_files.hpp"
 
 #include <gtest/gtest.h>
 

@@ -1,6 +1,6 @@
 // Where the text editor's cursor goes when the app replaces the text.
 
-#include "text_cursor.hpp"
+#include "model/text_cursor.hpp"
 
 #include <gtest/gtest.h>
 

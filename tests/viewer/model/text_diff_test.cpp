@@ -1,6 +1,6 @@
 // The line diff the reload choice shows between the viewer's text and the file's.
 
-#include "text_diff.hpp"
+#include "model/text_diff.hpp"
 
 #include <gtest/gtest.h>
 

@@ -9,7 +9,7 @@
 
 #include <imgui_impl_opengl3_loader.h>
 
-#include "gl/gl_proc.hpp"
+#include "app/gl/gl_proc.hpp"
 
 #include <string>
 

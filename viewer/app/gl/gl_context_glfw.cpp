@@ -1,4 +1,4 @@
-#include "gl/gl_context_glfw.hpp"
+#include "app/gl/gl_context_glfw.hpp"
 
 #define GLFW_INCLUDE_NONE
 #include <GLFW/glfw3.h>

@@ -3,7 +3,7 @@
 // it owns the window and forwards events; the viewer's frame code does not know
 // it exists.
 
-#include "gl/gl_proc.hpp"
+#include "app/gl/gl_proc.hpp"
 
 #include <functional>
 #include <string>

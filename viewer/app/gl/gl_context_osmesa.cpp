@@ -1,4 +1,4 @@
-#include "gl/gl_context_osmesa.hpp"
+#include "app/gl/gl_context_osmesa.hpp"
 
 // Kept apart from gl.hpp: osmesa.h brings in <GL/gl.h>, which clashes with
 // ImGui's loader header.

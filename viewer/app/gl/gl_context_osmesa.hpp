@@ -3,7 +3,7 @@
 // OSMesa): no display, no GPU. The headless --screenshot path and the tests
 // run the viewer's frame code in it.
 
-#include "gl/gl_proc.hpp"
+#include "app/gl/gl_proc.hpp"
 
 #include <memory>
 #include <string>

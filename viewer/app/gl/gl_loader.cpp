@@ -1,6 +1,6 @@
 // The one translation unit that holds ImGui's gl3w loader implementation.
 #define IMGL3W_IMPL
-#include "gl/gl.hpp"
+#include "app/gl/gl.hpp"
 
 #include <cstring>
 

@@ -1,5 +1,5 @@
-#include "panels/panels.hpp"
-#include "panels/widgets.hpp"
+#include "app/panels/panels.hpp"
+#include "app/panels/widgets.hpp"
 
 #include <imgui.h>
 

@@ -1,6 +1,6 @@
-#include "panels/panels.hpp"
-#include "panels/property_fields.hpp"
-#include "panels/widgets.hpp"
+#include "app/panels/panels.hpp"
+#include "app/panels/property_fields.hpp"
+#include "app/panels/widgets.hpp"
 
 #include <imgui.h>
 

@@ -1,11 +1,11 @@
-#include "app_actions.hpp"
-#include "document_edits.hpp"
+#include "app/panels/panels.hpp"
+#include "app/panels/property_fields.hpp"
+#include "app/panels/widgets.hpp"
+#include "app/ui_items.hpp"
 #include "jtracer/texture.hpp"
-#include "panels/panels.hpp"
-#include "panels/property_fields.hpp"
-#include "panels/widgets.hpp"
-#include "picking.hpp"
-#include "ui_items.hpp"
+#include "model/app_actions.hpp"
+#include "model/document_edits.hpp"
+#include "model/picking.hpp"
 
 #include <imgui.h>
 #include <imgui_stdlib.h>

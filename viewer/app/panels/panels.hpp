@@ -2,7 +2,7 @@
 // The viewer's panels. Each draws its part of the sidebar (or the status line)
 // for one frame and edits AppState through app_actions.hpp.
 
-#include "app_state.hpp"
+#include "model/app_state.hpp"
 
 #include <optional>
 

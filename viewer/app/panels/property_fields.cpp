@@ -1,4 +1,4 @@
-#include "panels/property_fields.hpp"
+#include "app/panels/property_fields.hpp"
 
 #include <algorithm>
 #include <cmath>

@@ -7,8 +7,8 @@
 // (names, the filename, image maps) have no field here: the panels give the
 // ones they edit their own.
 
+#include "app/panels/widgets.hpp"
 #include "jtracer/schema.hpp"
-#include "panels/widgets.hpp"
 
 #include <optional>
 #include <type_traits>

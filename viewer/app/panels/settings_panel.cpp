@@ -1,5 +1,5 @@
-#include "panels/panels.hpp"
-#include "panels/property_fields.hpp"
+#include "app/panels/panels.hpp"
+#include "app/panels/property_fields.hpp"
 
 #include <imgui.h>
 

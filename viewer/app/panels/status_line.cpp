@@ -1,5 +1,5 @@
-#include "app_actions.hpp"
-#include "panels/panels.hpp"
+#include "app/panels/panels.hpp"
+#include "model/app_actions.hpp"
 
 #include <imgui.h>
 

@@ -1,7 +1,7 @@
-#include "panels/panels.hpp"
-#include "panels/property_fields.hpp"
-#include "panels/widgets.hpp"
-#include "ui_items.hpp"
+#include "app/panels/panels.hpp"
+#include "app/panels/property_fields.hpp"
+#include "app/panels/widgets.hpp"
+#include "app/ui_items.hpp"
 
 #include <imgui.h>
 

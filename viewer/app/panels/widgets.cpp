@@ -1,8 +1,8 @@
-#include "panels/widgets.hpp"
+#include "app/panels/widgets.hpp"
 
+#include "app/ui_items.hpp"
 #include "jtracer/value_text.hpp"
-#include "ui_items.hpp"
-#include "ui_rounding.hpp"
+#include "model/ui_rounding.hpp"
 
 #include <imgui.h>
 #include <imgui_stdlib.h>
