@@ -2,7 +2,9 @@
 // The scene language's properties as data (docs/language.md §4): for each block,
 // each property's name, kind, range and the member of the scene model it sets.
 // The parser, the validator, the serializer, save-in-place and the viewer's
-// panels all read these tables, so a property is added here and nowhere else.
+// panels all read these tables, so a property is added here and nowhere else;
+// a shape is its type in scene.hpp's Shape variant, its table here and its
+// geometry. The file's structure (which block holds which) is here too.
 //
 // A property's default is its member's initial value in scene.hpp
 // (default_value below reads it from there): the model and the table cannot
@@ -14,13 +16,16 @@
 #include "jtracer/limits.hpp"
 #include "jtracer/scene.hpp"
 
+#include <algorithm>
 #include <array>
+#include <cstddef>
 #include <limits>
 #include <optional>
 #include <span>
 #include <string>
 #include <string_view>
 #include <type_traits>
+#include <utility>
 #include <variant>
 
 namespace jt {
@@ -126,6 +131,9 @@ struct TransformOpSpec {
 };
 
 // --- the tables -------------------------------------------------------------
+
+// The block of a primitive's transform operations (transform_ops below).
+inline constexpr std::string_view kTransformKeyword = "transform";
 
 namespace schema_detail {
 
@@ -261,7 +269,9 @@ inline constexpr std::array<TransformOpSpec, 5> kTransformOps{{
     {TransformKind::zrotate, number("zrotate", &TransformOp::degrees, {}, "degrees")},
 }};
 
-inline constexpr std::array<std::string_view, 2> kPrimitiveChildren{"material", "transform"};
+inline constexpr BlockSchema<Material> kMaterialSchema{"material", "material", kMaterial};
+inline constexpr std::array<std::string_view, 2> kPrimitiveChildren{kMaterialSchema.keyword,
+                                                                    kTransformKeyword};
 
 inline constexpr BlockSchema<RenderSettings> kRenderSettingsSchema{
     "render_settings", "render_settings", kRenderSettings};
@@ -275,7 +285,6 @@ inline constexpr BlockSchema<Triangle> kTriangleSchema{"triangle", "triangle", k
 inline constexpr BlockSchema<Mesh> kMeshSchema{"mesh", "mesh", kMesh, kPrimitiveChildren};
 inline constexpr BlockSchema<PointLight> kPointLightSchema{"point_light", "point_light",
                                                            kPointLight};
-inline constexpr BlockSchema<Material> kMaterialSchema{"material", "material", kMaterial};
 
 }  // namespace schema_detail
 
@@ -325,6 +334,62 @@ constexpr std::string_view keyword_of(const Shape& shape) {
                       shape);
 }
 
+// --- the file's structure (docs/language.md §3) ----------------------------
+
+// The two blocks that hold only blocks.
+inline constexpr std::string_view kCamerasKeyword = "cameras";
+inline constexpr std::string_view kSceneKeyword = "scene";
+
+namespace schema_detail {
+template <std::size_t... I>
+constexpr auto shape_keywords(std::index_sequence<I...>) {
+    return std::array<std::string_view, sizeof...(I)>{
+        schema_of<std::variant_alternative_t<I, Shape>>().keyword...};
+}
+template <std::size_t... N>
+constexpr auto joined(const std::array<std::string_view, N>&... lists) {
+    std::array<std::string_view, (N + ...)> out{};
+    std::size_t i = 0;
+    ((std::copy(lists.begin(), lists.end(), out.begin() + i), i += N), ...);
+    return out;
+}
+inline constexpr auto kShapeKeywords =
+    shape_keywords(std::make_index_sequence<std::variant_size_v<Shape>>{});
+inline constexpr std::array<std::string_view, 3> kTopBlocks{kRenderSettingsSchema.keyword,
+                                                            kCamerasKeyword, kSceneKeyword};
+inline constexpr std::array<std::string_view, 1> kCamerasBlocks{kCameraSchema.keyword};
+inline constexpr auto kSceneBlocks =
+    joined(kShapeKeywords, std::array<std::string_view, 1>{kPointLightSchema.keyword});
+inline constexpr auto kBlockKeywords =
+    joined(kTopBlocks, kCamerasBlocks, kSceneBlocks, kPrimitiveChildren);
+}  // namespace schema_detail
+
+// The blocks of a file's top level: render_settings, cameras, scene.
+constexpr std::span<const std::string_view> top_blocks() {
+    return schema_detail::kTopBlocks;
+}
+// The blocks `cameras` holds: perspective_camera.
+constexpr std::span<const std::string_view> cameras_blocks() {
+    return schema_detail::kCamerasBlocks;
+}
+// The primitives' keywords, a shape each in the Shape variant's order:
+// sphere, plane, cylinder, triangle, mesh.
+constexpr std::span<const std::string_view> shape_keywords() {
+    return schema_detail::kShapeKeywords;
+}
+// The blocks `scene` holds: the primitives, then point_light.
+constexpr std::span<const std::string_view> scene_blocks() {
+    return schema_detail::kSceneBlocks;
+}
+// The blocks a primitive holds besides its properties: material, transform.
+constexpr std::span<const std::string_view> primitive_blocks() {
+    return schema_detail::kPrimitiveChildren;
+}
+// Every block keyword of the language, each once.
+constexpr std::span<const std::string_view> block_keywords() {
+    return schema_detail::kBlockKeywords;
+}
+
 // The transform block's operations, in the order messages list them.
 constexpr std::span<const TransformOpSpec> transform_ops() {
     return schema_detail::kTransformOps;
@@ -335,7 +400,6 @@ constexpr const TransformOpSpec& transform_op(TransformKind kind) {
         if (op.kind == kind) return op;
     return schema_detail::kTransformOps[0];  // never: every kind has an entry
 }
-inline constexpr std::string_view kTransformKeyword = "transform";
 
 // The property named `name` (or aliased so) in a block, or nullptr.
 template <class Block>

@@ -29,11 +29,8 @@ namespace jt {
 namespace lang {
 namespace {
 
-constexpr std::array<std::string_view, 3> kTopBlocks{"render_settings", "cameras", "scene"};
-constexpr std::array<std::string_view, 1> kCameraBlocks{"perspective_camera"};
-constexpr std::array<std::string_view, 6> kSceneBlocks{"sphere",   "plane", "cylinder",
-                                                       "triangle", "mesh",  "point_light"};
-constexpr std::array<std::string_view, 2> kPrimitiveBlocks{"material", "transform"};
+// Which blocks each level holds, and their keywords, come from the schema
+// (schema.hpp): a new shape or block is an entry there, not a list here.
 constexpr std::array<std::string_view, 0> kNoBlocks{};
 
 // The default shape a primitive keyword opens, or nullopt for another word.
@@ -57,16 +54,22 @@ TextSpan span_of(const Token& t) {
     return {static_cast<std::uint32_t>(t.offset), static_cast<std::uint32_t>(t.length), t.pos};
 }
 
-// Every keyword a block record can have, so that records point at these
-// literals rather than at the text.
-constexpr std::array<std::string_view, 12> kRecordedKeywords{
-    "render_settings", "cameras",  "scene", "perspective_camera", "sphere",   "plane",
-    "cylinder",        "triangle", "mesh",  "point_light",        "material", "transform"};
-
+// The schema's own copy of a block keyword, so that records point at the
+// schema's literals rather than at the text.
 std::string_view static_keyword(std::string_view word) {
-    for (std::string_view k : kRecordedKeywords)
+    for (std::string_view k : block_keywords())
         if (k == word) return k;
     return {};  // never: blocks are opened only at a known keyword
+}
+
+// "a, b and c" (or "a, b or c" with `last` "or").
+std::string listed(std::span<const std::string_view> names, std::string_view last) {
+    std::string out;
+    for (std::size_t i = 0; i < names.size(); ++i) {
+        if (i > 0) out += i + 1 == names.size() ? " " + std::string(last) + " " : ", ";
+        out += names[i];
+    }
+    return out;
 }
 
 // How many records `items` adds at the end of `all`, as a range of indices.
@@ -407,11 +410,11 @@ class Parser {
     }
 
     void block_in_property_block(const BlockSource& block) {
-        if (block.keyword == "point_light" &&
-            (cur_->text == "material" || cur_->text == "transform")) {
-            sink_.error(cur_->pos,
-                        "a point_light takes no '" + std::string(cur_->text) +
-                            "' block: only sphere, plane, cylinder, triangle and mesh do");
+        if (block.keyword == schema_of<PointLight>().keyword &&
+            contains(primitive_blocks(), cur_->text)) {
+            sink_.error(cur_->pos, "a " + std::string(block.keyword) + " takes no '" +
+                                       std::string(cur_->text) + "' block: only " +
+                                       listed(shape_keywords(), "and") + " do");
             skip_block();
             return;
         }
@@ -420,24 +423,22 @@ class Parser {
 
     void parse_file() {
         while (!at(TokenKind::end)) {
-            if (at(TokenKind::word) && cur_->text == "render_settings") {
+            if (at(TokenKind::word) && cur_->text == schema_of<RenderSettings>().keyword) {
                 parse_render_settings();
-            } else if (at(TokenKind::word) && cur_->text == "cameras") {
+            } else if (at(TokenKind::word) && cur_->text == kCamerasKeyword) {
                 parse_cameras();
-            } else if (at(TokenKind::word) && cur_->text == "scene") {
+            } else if (at(TokenKind::word) && cur_->text == kSceneKeyword) {
                 parse_scene();
             } else if (at(TokenKind::word)) {
-                unknown_block("at the top level", kTopBlocks);
+                unknown_block("at the top level", top_blocks());
             } else if (at(TokenKind::lbrace)) {
-                sink_.error(cur_->pos,
-                            "expected a block name (render_settings, cameras or scene) "
-                            "before '{'");
+                sink_.error(cur_->pos, "expected a block name (" + listed(top_blocks(), "or") +
+                                           ") before '{'");
                 skip_braced();
             } else {
                 if (!at(TokenKind::bad_value)) {  // a bad value was reported by the lexer
-                    sink_.error(cur_->pos,
-                                "expected a block (render_settings, cameras or scene), got " +
-                                    describe(*cur_));
+                    sink_.error(cur_->pos, "expected a block (" + listed(top_blocks(), "or") +
+                                               "), got " + describe(*cur_));
                 }
                 advance();
             }
@@ -463,9 +464,9 @@ class Parser {
     void parse_cameras() {
         BlockSource cameras;
         if (!open_block(cameras)) return;
-        parse_body(cameras, kCameraBlocks, only_blocks(cameras, kCameraBlocks), [&] {
-            if (cur_->text != "perspective_camera") {
-                unknown_block("in 'cameras'", kCameraBlocks);
+        parse_body(cameras, cameras_blocks(), only_blocks(cameras, cameras_blocks()), [&] {
+            if (cur_->text != schema_of<Camera>().keyword) {
+                unknown_block("in '" + std::string(kCamerasKeyword) + "'", cameras_blocks());
                 return;
             }
             BlockSource block;
@@ -486,9 +487,9 @@ class Parser {
         std::size_t hint = std::exchange(primitive_hint_, 0);
         reserve_records(primitives, hint);
         if (source_map_) reserve_records(primitive_sources, hint);
-        parse_body(block, kSceneBlocks, only_blocks(block, kSceneBlocks), [&] {
+        parse_body(block, scene_blocks(), only_blocks(block, scene_blocks()), [&] {
             std::string_view kind = cur_->text;
-            if (kind == "point_light") {
+            if (kind == schema_of<PointLight>().keyword) {
                 BlockSource light_block;
                 PointLight light;
                 if (!parse_property_block(light_block, 0, light)) return;
@@ -504,7 +505,7 @@ class Parser {
                 primitives.push_back(std::move(primitive));
                 if (source_map_) primitive_sources.push_back(primitive_block);
             } else {
-                unknown_block("in 'scene'", kSceneBlocks);
+                unknown_block("in '" + std::string(kSceneKeyword) + "'", scene_blocks());
             }
         });
         if (result_.source.scene) {
@@ -527,17 +528,17 @@ class Parser {
         std::vector<BlockSource>& children = result_.source.children;
         const std::size_t first_child = children.size();
         parse_body(
-            block, kPrimitiveBlocks,
+            block, primitive_blocks(),
             [&](const Property& p) { reader_.apply(primitive.shape, open, p); },
             [&] {
                 BlockSource child;
                 bool opened;
-                if (cur_->text == "material") {
+                if (cur_->text == schema_of<Material>().keyword) {
                     opened = parse_property_block(child, 1, primitive.material);
-                } else if (cur_->text == "transform") {
+                } else if (cur_->text == kTransformKeyword) {
                     opened = parse_property_block(child, 1, primitive.transforms);
                 } else {
-                    unknown_block("in '" + std::string(block.keyword) + "'", kPrimitiveBlocks);
+                    unknown_block("in '" + std::string(block.keyword) + "'", primitive_blocks());
                     return;
                 }
                 if (opened && source_map_) children.push_back(child);

@@ -117,11 +117,11 @@ std::string serialize_scene(const Scene& scene) {
     w.text = "# Written by JTracer.\n\n";
     write_block(w, scene.settings);
     w.blank();
-    w.open("cameras");
+    w.open(kCamerasKeyword);
     for (const Camera& c : scene.cameras) write_block(w, c);
     w.close();
     w.blank();
-    w.open("scene");
+    w.open(kSceneKeyword);
     for (const Primitive& p : scene.primitives) write_primitive(w, p);
     for (const PointLight& light : scene.lights) write_block(w, light);
     w.close();
