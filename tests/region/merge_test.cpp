@@ -15,9 +15,9 @@ RegionPart part(const std::string& name, FrameRegion region, int frame_w = 6, in
     p.pixels = Image8(region.width(), region.height());
     for (int y = 0; y < region.height(); ++y)
         for (int x = 0; x < region.width(); ++x) {
-            // Image8 row y of the part is frame row (top-left origin) y1 - 1 - y.
-            p.pixels.pixel(x, y)[0] = static_cast<std::uint8_t>(region.x0 + x);
-            p.pixels.pixel(x, y)[1] = static_cast<std::uint8_t>(region.y1 - 1 - y);
+            // Image8 row y of the part is frame row (top-left origin) bottom - 1 - y.
+            p.pixels.pixel(x, y)[0] = static_cast<std::uint8_t>(region.left + x);
+            p.pixels.pixel(x, y)[1] = static_cast<std::uint8_t>(region.bottom - 1 - y);
         }
     return p;
 }

@@ -1,9 +1,10 @@
-// Regions as users type them, their conversion to image coordinates, region
-// files, and RenderJob::region_image against a full render.
+// Regions as users type them, their conversion to image coordinates (the one
+// row flip), region files, and RenderJob::region_image against a full render.
 
 #include "jtracer/region.hpp"
 #include "common/scratch_dir.hpp"
 #include "jtracer/bmp.hpp"
+#include "jtracer/image.hpp"
 #include "jtracer/parser.hpp"
 #include "jtracer/region_file.hpp"
 #include "jtracer/render_job.hpp"
@@ -175,6 +176,23 @@ scene {
     int lit = 0;
     for (std::uint8_t c : job.region_image().rgb) lit += c > 0;
     EXPECT_GT(lit, 0) << "the sphere shows in the region";
+}
+
+// Every region of small frames, to image rows and back: the rows a region
+// names from the top are the image's rows flipped_row maps them to.
+TEST(Region, EveryRegionFlipsThroughFlippedRowAndBack) {
+    for (int h = 1; h <= 5; ++h)
+        for (int top = 0; top < h; ++top)
+            for (int bottom = top + 1; bottom <= h; ++bottom) {
+                const FrameRegion region{1, top, 3, bottom};
+                const PixelRect rect = to_image_rect(region, h);
+                EXPECT_EQ(rect.height(), region.height());
+                EXPECT_EQ(rect.y1 - 1, flipped_row(top, h)) << "the region's top row";
+                EXPECT_EQ(rect.y0, flipped_row(bottom - 1, h)) << "the region's bottom row";
+                EXPECT_EQ(to_frame_region(rect, h), region);
+            }
+    EXPECT_EQ(flipped_row(0, 4), 3);
+    EXPECT_EQ(flipped_row(3, 4), 0);
 }
 
 }  // namespace

@@ -12,7 +12,7 @@ std::optional<PixelReport> inspect_pixel(AppState& state, int x, int y) {
     if (x < 0 || y < 0 || x >= image.width || y >= image.height) return std::nullopt;
     PixelReport report;
     report.x = x;
-    report.y = image.height - 1 - y;
+    report.y = flipped_row(y, image.height);
     const std::uint8_t* p = image.pixel(x, y);
     report.rgb = {p[0], p[1], p[2]};
     report.earlier_render = !state.display_complete && state.passes_shown == 0;

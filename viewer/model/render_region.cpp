@@ -14,13 +14,14 @@ std::optional<FrameRegion> region_spanning(const ImagePoint& a, const ImagePoint
         const int c = static_cast<int>(end ? std::ceil(x) : std::floor(x));
         return std::clamp(c, 0, image_w);
     };
-    // Image rows count from the bottom, --region's from the top.
     const auto row = [&](double y, bool end) {
-        const int r = static_cast<int>(end ? std::ceil(image_h - y) : std::floor(image_h - y));
+        const int r = static_cast<int>(end ? std::ceil(y) : std::floor(y));
         return std::clamp(r, 0, image_h);
     };
-    const FrameRegion region{column(std::min(a.x, b.x), false), row(std::max(a.y, b.y), false),
-                             column(std::max(a.x, b.x), true), row(std::min(a.y, b.y), true)};
+    // The pixels in image rows (from the bottom), then as --region counts them (from the top).
+    const PixelRect pixels{column(std::min(a.x, b.x), false), row(std::min(a.y, b.y), false),
+                           column(std::max(a.x, b.x), true), row(std::max(a.y, b.y), true)};
+    const FrameRegion region = to_frame_region(pixels, image_h);
     if (region.width() <= 0 || region.height() <= 0) return std::nullopt;
     return region;
 }

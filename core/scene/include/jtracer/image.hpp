@@ -2,7 +2,10 @@
 // Images as plain pixel arrays.
 //
 // Pixel (x, y) follows docs/language.md §7.3: x from the left, y from the
-// bottom. Row 0 is the bottom row, as in a BMP and an OpenGL texture.
+// bottom. Row 0 is the bottom row, as in a BMP and an OpenGL texture. Files
+// that store the top row first, screens and the regions users type count
+// rows from the top (region.hpp's FrameRegion): flipped_row below is the one
+// conversion between the two.
 
 #include <algorithm>
 #include <cstdint>
@@ -28,7 +31,9 @@ struct Image8 {
     bool operator==(const Image8&) const = default;
 };
 
-// Half-open pixel rectangle [x0, x1) x [y0, y1) in the coordinates above.
+// Half-open pixel rectangle [x0, x1) x [y0, y1) in the coordinates above:
+// y0 is its bottom row. (A FrameRegion, counted from the top, names its
+// bounds left, top, right, bottom instead.)
 struct PixelRect {
     int x0 = 0, y0 = 0, x1 = 0, y1 = 0;
     int width() const { return x1 - x0; }
@@ -36,6 +41,13 @@ struct PixelRect {
     bool empty() const { return x1 <= x0 || y1 <= y0; }
     bool operator==(const PixelRect&) const = default;
 };
+
+// Row `row` counted from the other edge of an image `height` rows high:
+// bottom-up (Image8, PixelRect) to top-down (files stored top row first,
+// screens, FrameRegion) and back. The one place the two conventions meet.
+constexpr int flipped_row(int row, int height) {
+    return height - 1 - row;
+}
 
 // The smallest rectangle holding `a` (when there is one) and `b`: how the
 // pixels changed since the last look accumulate.

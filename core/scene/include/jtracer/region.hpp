@@ -15,11 +15,12 @@
 
 namespace jt {
 
-// A window of a frame in top-left-origin pixel bounds, half-open.
+// A window of a frame in top-left-origin pixel bounds, half-open: columns
+// [left, right), rows [top, bottom) counted from the top row.
 struct FrameRegion {
-    int x0 = 0, y0 = 0, x1 = 0, y1 = 0;
-    int width() const { return x1 - x0; }
-    int height() const { return y1 - y0; }
+    int left = 0, top = 0, right = 0, bottom = 0;
+    int width() const { return right - left; }
+    int height() const { return bottom - top; }
     bool operator==(const FrameRegion&) const = default;
 };
 
@@ -35,7 +36,7 @@ std::string format_frame_region(const FrameRegion& region);
 Expected<void> check_region_in_frame(const FrameRegion& region, int frame_width, int frame_height);
 
 // The same pixels in Image8 coordinates (row 0 at the bottom) of a frame
-// `frame_height` rows high, and back.
+// `frame_height` rows high, and back (through flipped_row).
 PixelRect to_image_rect(const FrameRegion& region, int frame_height);
 FrameRegion to_frame_region(const PixelRect& rect, int frame_height);
 

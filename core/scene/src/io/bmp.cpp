@@ -92,7 +92,7 @@ Expected<Image8> decode_bmp(std::span<const std::uint8_t> bytes) {
         return Error{"BMP file is truncated"};
     Image8 image(width, static_cast<int>(rows));
     for (int y = 0; y < image.height; ++y) {
-        int stored = top_down ? image.height - 1 - y : y;
+        int stored = top_down ? flipped_row(y, image.height) : y;
         const std::uint8_t* row = h + offset + stride * static_cast<std::size_t>(stored);
         std::uint8_t* dst = image.pixel(0, y);
         for (int x = 0; x < width; ++x) {

@@ -31,7 +31,7 @@ Expected<void> check_part(const RegionPart& part, const RegionPart& first) {
 }
 
 bool overlap(const FrameRegion& a, const FrameRegion& b) {
-    return a.x0 < b.x1 && b.x0 < a.x1 && a.y0 < b.y1 && b.y0 < a.y1;
+    return a.left < b.right && b.left < a.right && a.top < b.bottom && b.top < a.bottom;
 }
 
 // The first pixel, in reading order, that no part covers (parts known not to
@@ -40,8 +40,8 @@ std::optional<std::pair<int, int>> first_gap(const std::vector<RegionPart>& part
     std::vector<std::uint8_t> covered(static_cast<std::size_t>(w) * h, 0);
     for (const RegionPart& part : parts) {
         const FrameRegion& r = part.placement.region;
-        for (int y = r.y0; y < r.y1; ++y)
-            std::fill_n(&covered[static_cast<std::size_t>(y) * w + r.x0], r.width(), 1);
+        for (int y = r.top; y < r.bottom; ++y)
+            std::fill_n(&covered[static_cast<std::size_t>(y) * w + r.left], r.width(), 1);
     }
     for (int y = 0; y < h; ++y)
         for (int x = 0; x < w; ++x)

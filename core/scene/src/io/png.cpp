@@ -34,7 +34,7 @@ std::vector<std::uint8_t> encode_png(const Image8& image) {
     if (image.width <= 0 || image.height <= 0) return out;
     const int stride = image.width * 3;
     // Start at the top row and step down through memory: PNG stores top first.
-    const std::uint8_t* top = image.pixel(0, image.height - 1);
+    const std::uint8_t* top = image.pixel(0, flipped_row(0, image.height));
     stbi_write_png_to_func(append_bytes, &out, image.width, image.height, 3, top, -stride);
     return out;
 }
@@ -52,8 +52,8 @@ Expected<Image8> decode_png(std::span<const std::uint8_t> bytes) {
     Image8 image(width, height);
     const std::size_t stride = static_cast<std::size_t>(width) * 3;
     for (int y = 0; y < height; ++y)
-        std::memcpy(image.pixel(0, y), pixels + stride * static_cast<std::size_t>(height - 1 - y),
-                    stride);
+        std::memcpy(image.pixel(0, y),
+                    pixels + stride * static_cast<std::size_t>(flipped_row(y, height)), stride);
     stbi_image_free(pixels);
     return image;
 }

@@ -39,10 +39,10 @@ Expected<FrameRegion> parse_frame_region(std::string_view text) {
         return Error{message};
     }
     FrameRegion r{v[0], v[1], v[2], v[3]};
-    if (r.x0 < 0 || r.y0 < 0) {
+    if (r.left < 0 || r.top < 0) {
         return Error{quoted + ": X0 and Y0 must not be negative"};
     }
-    if (r.x1 <= r.x0 || r.y1 <= r.y0) {
+    if (r.right <= r.left || r.bottom <= r.top) {
         return Error{quoted +
                      " is empty: the bounds are half-open, so X1 must exceed X0 and Y1 Y0"};
     }
@@ -50,8 +50,8 @@ Expected<FrameRegion> parse_frame_region(std::string_view text) {
 }
 
 std::string format_frame_region(const FrameRegion& r) {
-    std::string text = std::to_string(r.x0);
-    for (int v : {r.y0, r.x1, r.y1}) text.append(",").append(std::to_string(v));
+    std::string text = std::to_string(r.left);
+    for (int v : {r.top, r.right, r.bottom}) text.append(",").append(std::to_string(v));
     return text;
 }
 
@@ -59,23 +59,26 @@ Expected<void> check_region_in_frame(const FrameRegion& r, int frame_width, int 
     std::string message = "region ";
     message += format_frame_region(r);
     const std::string frame = std::to_string(frame_width) + "x" + std::to_string(frame_height);
-    if (r.x0 < 0 || r.y0 < 0 || r.x1 <= r.x0 || r.y1 <= r.y0)
+    if (r.left < 0 || r.top < 0 || r.right <= r.left || r.bottom <= r.top)
         return Error{message + " is empty or has negative bounds"};
-    if (r.x1 > frame_width)
+    if (r.right > frame_width)
         return Error{message + " reaches past the right edge of the " + frame +
                      " image (X1 may be at most " + std::to_string(frame_width) + ")"};
-    if (r.y1 > frame_height)
+    if (r.bottom > frame_height)
         return Error{message + " reaches past the bottom edge of the " + frame +
                      " image (Y1 may be at most " + std::to_string(frame_height) + ")"};
     return {};
 }
 
+// A half-open span of rows [first, end) counted from one edge is
+// [flipped_row(end - 1), flipped_row(first) + 1) counted from the other.
 PixelRect to_image_rect(const FrameRegion& r, int frame_height) {
-    return {r.x0, frame_height - r.y1, r.x1, frame_height - r.y0};
+    return {r.left, flipped_row(r.bottom - 1, frame_height), r.right,
+            flipped_row(r.top, frame_height) + 1};
 }
 
 FrameRegion to_frame_region(const PixelRect& r, int frame_height) {
-    return {r.x0, frame_height - r.y1, r.x1, frame_height - r.y0};
+    return {r.x0, flipped_row(r.y1 - 1, frame_height), r.x1, flipped_row(r.y0, frame_height) + 1};
 }
 
 Image8 crop_image(const Image8& image, const PixelRect& rect) {

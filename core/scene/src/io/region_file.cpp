@@ -37,10 +37,10 @@ Expected<void> write_region_bmp(const std::filesystem::path& path, const Image8&
     const std::uint32_t fields[] = {version,
                                     static_cast<std::uint32_t>(p.frame_width),
                                     static_cast<std::uint32_t>(p.frame_height),
-                                    static_cast<std::uint32_t>(p.region.x0),
-                                    static_cast<std::uint32_t>(p.region.y0),
-                                    static_cast<std::uint32_t>(p.region.x1),
-                                    static_cast<std::uint32_t>(p.region.y1)};
+                                    static_cast<std::uint32_t>(p.region.left),
+                                    static_cast<std::uint32_t>(p.region.top),
+                                    static_cast<std::uint32_t>(p.region.right),
+                                    static_cast<std::uint32_t>(p.region.bottom)};
     for (std::size_t i = 0; i < std::size(fields); ++i) put32(&record[4 + 4 * i], fields[i]);
     bytes.insert(bytes.begin() + bmp_headers, record.begin(), record.end());
     if (bytes.size() > 0xFFFFFFFFu)
@@ -75,8 +75,8 @@ Expected<RegionPart> read_region_bmp(const std::filesystem::path& path) {
     p.frame_width = field(0);
     p.frame_height = field(1);
     p.region = {field(2), field(3), field(4), field(5)};
-    if (p.frame_width <= 0 || p.frame_height <= 0 || p.region.x0 < 0 || p.region.y0 < 0 ||
-        p.region.x1 < 0 || p.region.y1 < 0)
+    if (p.frame_width <= 0 || p.frame_height <= 0 || p.region.left < 0 || p.region.top < 0 ||
+        p.region.right < 0 || p.region.bottom < 0)
         return Error{file_message(path, "region record holds numbers out of range")};
     return part;
 }

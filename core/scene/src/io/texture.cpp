@@ -7,6 +7,7 @@
 #include "io/png_chunks.hpp"
 #include "io/stamped_cache.hpp"
 #include "jtracer/file_stamp.hpp"
+#include "jtracer/image.hpp"
 
 #include <stb_image.h>
 
@@ -93,7 +94,7 @@ std::vector<Sample> bottom_up(const Sample* samples, int width, int height) {
     std::vector<Sample> out(static_cast<std::size_t>(width) * height * 3);
     const std::size_t row = static_cast<std::size_t>(width) * 3;
     for (int j = 0; j < height; ++j)
-        std::copy_n(samples + row * static_cast<std::size_t>(height - 1 - j), row,
+        std::copy_n(samples + row * static_cast<std::size_t>(flipped_row(j, height)), row,
                     out.data() + row * static_cast<std::size_t>(j));
     return out;
 }
