@@ -1,5 +1,6 @@
 // BMP and PNG files, atomic writes and the image diff.
 
+#include "common/files.hpp"
 #include "common/scratch_dir.hpp"
 #include "jtracer/atomic_file.hpp"
 #include "jtracer/bmp.hpp"
@@ -149,6 +150,32 @@ TEST(AtomicFile, FailureNamesTheFileAndWritesNothing) {
     ASSERT_FALSE(over_directory);
     EXPECT_NE(over_directory.error().message.find("directory"), std::string::npos);
     EXPECT_TRUE(fs::is_directory(dir / "taken.bmp"));
+}
+
+TEST(AtomicFile, NewFileNeverReplacesOneAndLeavesNoTemporary) {
+    fs::path dir = make_scratch_dir("new_file");
+    const fs::path target = dir / "new.bin";
+    const std::vector<std::uint8_t> first{1, 2, 3}, second{4, 5};
+    const Expected<bool> written = write_new_file(target, first);
+    ASSERT_TRUE(written) << written.error().message;
+    EXPECT_TRUE(*written);
+    EXPECT_EQ(fs::status(target).permissions() & fs::perms::all,
+              fs::perms::owner_read | fs::perms::owner_write | fs::perms::group_read |
+                  fs::perms::others_read);
+    const Expected<bool> again = write_new_file(target, second);
+    ASSERT_TRUE(again) << again.error().message;
+    EXPECT_FALSE(*again) << "the name is taken";
+    EXPECT_EQ(test::read_file(target), std::string("\x01\x02\x03"));
+    const Expected<bool> nowhere = write_new_file(dir / "missing" / "x.bin", first);
+    ASSERT_FALSE(nowhere);
+    EXPECT_NE(nowhere.error().message.find("missing/x.bin"), std::string::npos)
+        << nowhere.error().message;
+    int entries = 0;
+    for (auto& e : fs::directory_iterator(dir)) {
+        (void)e;
+        ++entries;
+    }
+    EXPECT_EQ(entries, 1) << "no temporary file left beside the target";
 }
 
 TEST(ImageDiff, CountsPixelsOverTheThreshold) {

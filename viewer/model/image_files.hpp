@@ -16,9 +16,8 @@ namespace jt::view {
 // neither .png nor .bmp is refused. On failure the target is untouched.
 Expected<void> save_image(const std::filesystem::path& path, const Image8& image);
 
-// Writes a new file `path` and never replaces one: true when written, false
-// when something is already there (the check and the creation are one step,
-// link(2), so a file that appears meanwhile is not overwritten either).
+// Writes a new file `path` and never replaces one (core's write_new_file):
+// true when written, false when something is already there.
 Expected<bool> save_new_image(const std::filesystem::path& path, const Image8& image);
 
 // Saves under `path`, or when that exists under the first free numbered name

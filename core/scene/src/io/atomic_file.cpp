@@ -45,6 +45,33 @@ Expected<void> write_in_place(const std::filesystem::path& target,
     return {};
 }
 
+// A temporary file beside `real` holding the bytes, written, synced and
+// closed: its name, or the errno of the failure (then nothing is left).
+struct Temporary {
+    std::vector<char> name;  // NUL-terminated, for the system calls
+    int error = 0;
+};
+
+Temporary write_temporary(const std::filesystem::path& real, std::span<const std::uint8_t> bytes) {
+    // Beside the target, so the rename or link stays within one file system.
+    const std::string pattern = real.string() + ".tmp-XXXXXX";
+    Temporary t{std::vector<char>(pattern.begin(), pattern.end())};
+    t.name.push_back('\0');
+    const int fd = ::mkstemp(t.name.data());
+    if (fd < 0) return {{}, errno};
+    int error = write_all(fd, bytes);
+    // mkstemp creates the file 0600; an image is an ordinary readable file.
+    ::fchmod(fd, 0644);
+    // EINVAL: the file system cannot sync (a pipe-like or special one); the bytes are written.
+    if (error == 0 && ::fsync(fd) != 0 && errno != EINVAL) error = errno;
+    if (::close(fd) != 0 && error == 0) error = errno;
+    if (error != 0) {
+        ::unlink(t.name.data());
+        return {{}, error};
+    }
+    return t;
+}
+
 }  // namespace
 
 Expected<void> write_file_atomically(const std::filesystem::path& target,
@@ -62,32 +89,28 @@ Expected<void> write_file_atomically(const std::filesystem::path& target,
         real = std::filesystem::weakly_canonical(target, ec);
         if (ec) return failure(target, ec.value());
     }
-    // Beside the target, so the rename stays within one file system.
-    std::string pattern = real.string() + ".tmp-XXXXXX";
-    std::vector<char> name(pattern.begin(), pattern.end());
-    name.push_back('\0');
-    int fd = ::mkstemp(name.data());
-    if (fd < 0) return failure(target, errno);
-    auto abandon = [&](int error) {
-        ::close(fd);
-        ::unlink(name.data());
-        return failure(target, error);
-    };
-    if (int error = write_all(fd, bytes); error != 0) return abandon(error);
-    // mkstemp creates the file 0600; an image is an ordinary readable file.
-    ::fchmod(fd, 0644);
-    if (::fsync(fd) != 0 && errno != EINVAL) return abandon(errno);
-    if (::close(fd) != 0) {
-        int error = errno;
-        ::unlink(name.data());
-        return failure(target, error);
-    }
-    if (std::rename(name.data(), real.c_str()) != 0) {
-        int error = errno;
-        ::unlink(name.data());
+    const Temporary temp = write_temporary(real, bytes);
+    if (temp.error != 0) return failure(target, temp.error);
+    if (std::rename(temp.name.data(), real.c_str()) != 0) {
+        const int error = errno;
+        ::unlink(temp.name.data());
         return failure(target, error);
     }
     return {};
+}
+
+Expected<bool> write_new_file(const std::filesystem::path& target,
+                              std::span<const std::uint8_t> bytes) {
+    if (target.empty()) return Error{"cannot write an image to an empty file name"};
+    const Temporary temp = write_temporary(target, bytes);
+    if (temp.error != 0) return failure(target, temp.error);
+    // The whole file is there under its temporary name, then linked to its own:
+    // readers never see it partial, and link fails if the name is taken.
+    const int error = ::link(temp.name.data(), target.c_str()) != 0 ? errno : 0;
+    ::unlink(temp.name.data());
+    if (error == EEXIST) return false;
+    if (error != 0) return failure(target, error);
+    return true;
 }
 
 }  // namespace jt
