@@ -1,9 +1,11 @@
 // Regions as users type them, their conversion to image coordinates (the one
-// row flip), region files, and RenderJob::region_image against a full render.
+// row flip), region files, crop and paste with their contracts, and
+// RenderJob::region_image against a full render.
 
 #include "jtracer/region.hpp"
 #include "common/scratch_dir.hpp"
 #include "jtracer/bmp.hpp"
+#include "jtracer/check.hpp"
 #include "jtracer/image.hpp"
 #include "jtracer/parser.hpp"
 #include "jtracer/region_file.hpp"
@@ -193,6 +195,25 @@ TEST(Region, EveryRegionFlipsThroughFlippedRowAndBack) {
             }
     EXPECT_EQ(flipped_row(0, 4), 3);
     EXPECT_EQ(flipped_row(3, 4), 0);
+}
+
+// The contracts of crop_image and paste_image (JT_DCHECK): checked in debug
+// and sanitizer builds, where breaking one stops the program and says which.
+TEST(RegionContracts, CropAndPasteOutsideTheImageStop) {
+    if (!kContractsChecked) GTEST_SKIP() << "contracts are compiled out of this build";
+    testing::FLAGS_gtest_death_test_style = "threadsafe";
+    Image8 frame(4, 4);
+    const Image8 part(3, 3);
+    EXPECT_DEATH(paste_image(frame, part, 2, 2), "contract broken: the part fits inside the frame");
+    EXPECT_DEATH(crop_image(frame, {0, 0, 5, 4}),
+                 "contract broken: the rectangle lies inside the image");
+}
+
+// A release build compiles the check out: its condition is not evaluated.
+TEST(RegionContracts, OnlyCheckedBuildsEvaluateTheCondition) {
+    int evaluated = 0;
+    JT_DCHECK(++evaluated > 0, "counts its evaluations");
+    EXPECT_EQ(evaluated, kContractsChecked ? 1 : 0);
 }
 
 }  // namespace

@@ -21,7 +21,7 @@ struct PreparedFrame;  // defined in the core's private headers
 
 // The frame `options` describes: width, height, camera, the samples a pixel
 // gets from render_tile and the cores it uses (threads; previews and region do
-// not matter here). `scene` must not be null.
+// not matter here). `scene` must not be null (JT_DCHECK).
 std::shared_ptr<const PreparedFrame> prepare_frame(std::shared_ptr<const PreparedScene> scene,
                                                    const RenderOptions& options);
 

@@ -1,5 +1,6 @@
 #include "jtracer/render_tile.hpp"
 
+#include "jtracer/check.hpp"
 #include "jtracer/limits.hpp"
 #include "render/prepared_frame.hpp"
 #include "render/prepared_scene.hpp"
@@ -106,8 +107,7 @@ bool trace_samples(const PreparedFrame& f, const RenderPass& pass, TileBuffer& o
             if (pass.sample_begin == 0) sum = Colour(0.0);
             for (int k = pass.sample_begin; k < pass.sample_end; ++k) {
                 const SampleOffset o = sample_offset(k);
-                sum += clamp01(
-                    trace(x + o.x, y + o.y, camera_direction(camera, x + o.x, y + o.y)));
+                sum += clamp01(trace(x + o.x, y + o.y, camera_direction(camera, x + o.x, y + o.y)));
             }
             put(out, x, y, sum / static_cast<double>(pass.sample_end));
         }
@@ -139,6 +139,7 @@ RenderOptions frame_options(RenderOptions options) {
 
 std::shared_ptr<const PreparedFrame> prepare_frame(std::shared_ptr<const PreparedScene> scene,
                                                    const RenderOptions& options) {
+    JT_DCHECK(scene != nullptr, "a frame is made of a prepared scene");
     auto frame = std::make_shared<PreparedFrame>();
     frame->options = frame_options(options);
     frame->camera = frame_for(*scene, frame->options);

@@ -15,6 +15,7 @@
 // the view, where a cell of a table around the camera (direction_table.hpp)
 // spans dozens of pixels and sent its rays to the BVH.
 
+#include "jtracer/check.hpp"
 #include "render/camera_rays.hpp"
 #include "render/listed_shapes.hpp"
 
@@ -49,6 +50,8 @@ ViewTable build_view_table(const Geometry& geometry, const CameraFrame& camera);
 // left corner, as camera_direction takes them) may meet first. Call it only
 // for points inside the image, and only of a table that was built.
 inline ListedShapes shapes_seen(const ViewTable& table, double x, double y) {
+    JT_DCHECK(table.columns > 0 && table.rows > 0, "only a table that was built lists shapes");
+    JT_DCHECK(x >= 0.0 && y >= 0.0, "the point lies inside the image");
     const int column = std::min(static_cast<int>(x) / view_block, table.columns - 1);
     const int row = std::min(static_cast<int>(y) / view_block, table.rows - 1);
     const std::size_t index = static_cast<std::size_t>(row) * table.columns + column;

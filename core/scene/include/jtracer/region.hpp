@@ -40,12 +40,12 @@ Expected<void> check_region_in_frame(const FrameRegion& region, int frame_width,
 PixelRect to_image_rect(const FrameRegion& region, int frame_height);
 FrameRegion to_frame_region(const PixelRect& rect, int frame_height);
 
-// The pixels of `rect` (Image8 coordinates, inside `image`) as an image of
-// their own.
+// The pixels of `rect` (Image8 coordinates, inside `image`: JT_DCHECK) as an
+// image of their own.
 Image8 crop_image(const Image8& image, const PixelRect& rect);
 
 // Copies `part` into `frame` with its bottom-left pixel at (x0, y0) (Image8
-// coordinates); the part must fit.
+// coordinates); the part must fit (JT_DCHECK).
 void paste_image(Image8& frame, const Image8& part, int x0, int y0);
 
 }  // namespace jt

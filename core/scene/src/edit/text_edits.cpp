@@ -1,5 +1,7 @@
 #include "edit/text_edits.hpp"
 
+#include "jtracer/check.hpp"
+
 #include <algorithm>
 #include <numeric>
 
@@ -14,6 +16,16 @@ std::string apply_text_edits(std::string_view text, std::vector<TextEdit> edits)
         if (edits[a].offset != edits[b].offset) return edits[a].offset > edits[b].offset;
         return a > b;
     });
+    if constexpr (kContractsChecked) {
+        // In back-to-front order, each replaced range ends before the one applied before it.
+        std::size_t limit = std::string_view::npos;
+        for (std::size_t i : order) {
+            if (edits[i].length == 0) continue;
+            JT_DCHECK(edits[i].offset + edits[i].length <= limit,
+                      "edits replace no byte another edit replaces");
+            limit = edits[i].offset;
+        }
+    }
     std::string out(text);
     for (std::size_t i : order) {
         const TextEdit& e = edits[i];

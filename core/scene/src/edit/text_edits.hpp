@@ -16,7 +16,7 @@ struct TextEdit {
 };
 
 // Applies every edit. Insertions at the same offset keep the order they were
-// given in. Edits must not overlap.
+// given in. Edits must not replace overlapping bytes (JT_DCHECK).
 std::string apply_text_edits(std::string_view text, std::vector<TextEdit> edits);
 
 // The whitespace that starts the line holding `offset`.

@@ -1,5 +1,7 @@
 #include "jtracer/region.hpp"
 
+#include "jtracer/check.hpp"
+
 #include <algorithm>
 #include <charconv>
 #include <vector>
@@ -82,6 +84,9 @@ FrameRegion to_frame_region(const PixelRect& r, int frame_height) {
 }
 
 Image8 crop_image(const Image8& image, const PixelRect& rect) {
+    JT_DCHECK(rect.x0 >= 0 && rect.y0 >= 0 && rect.x1 <= image.width && rect.y1 <= image.height &&
+                  !rect.empty(),
+              "the rectangle lies inside the image");
     Image8 part(rect.width(), rect.height());
     const std::size_t row_bytes = static_cast<std::size_t>(rect.width()) * 3;
     for (int y = 0; y < rect.height(); ++y)
@@ -90,6 +95,9 @@ Image8 crop_image(const Image8& image, const PixelRect& rect) {
 }
 
 void paste_image(Image8& frame, const Image8& part, int x0, int y0) {
+    JT_DCHECK(
+        x0 >= 0 && y0 >= 0 && x0 + part.width <= frame.width && y0 + part.height <= frame.height,
+        "the part fits inside the frame");
     const std::size_t row_bytes = static_cast<std::size_t>(part.width) * 3;
     for (int y = 0; y < part.height; ++y)
         std::copy_n(part.pixel(0, y), row_bytes, frame.pixel(x0, y0 + y));

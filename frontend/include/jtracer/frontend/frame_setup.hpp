@@ -35,7 +35,8 @@ struct FrameSetup {
 };
 
 // `program` ("jtracer-cli") starts the messages that are not diagnostics.
-// `region` (top-left origin, region.hpp) must lie inside the frame.
+// `region` (top-left origin, region.hpp) outside the frame is a usage error
+// (exit_usage, "--region: ...").
 FrameSetup set_up_frame(std::string_view program, const RenderFlags& flags,
                         const std::optional<FrameRegion>& region = std::nullopt);
 
