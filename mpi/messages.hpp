@@ -22,6 +22,8 @@
 #include <mpi.h>
 
 #include <cstdint>
+#include <cstdio>
+#include <cstdlib>
 
 namespace jt::mpi {
 
@@ -56,9 +58,16 @@ struct RankStats {
 };
 
 // Sends a message without a payload.
-void send_signal(int rank, int tag);
+inline void send_signal(int rank, int tag) {
+    MPI_Send(nullptr, 0, MPI_BYTE, rank, tag, MPI_COMM_WORLD);
+}
 
 // Rank 0, given a message no worker sends: names `rank` and aborts the job.
-[[noreturn]] void abort_on_malformed_message(int rank);
+[[noreturn]] inline void abort_on_malformed_message(int rank) {
+    std::fprintf(stderr, "jtracer-mpi: rank %d sent a malformed message; nothing was written\n",
+                 rank);
+    MPI_Abort(MPI_COMM_WORLD, 3);
+    std::abort();  // MPI_Abort does not return
+}
 
 }  // namespace jt::mpi

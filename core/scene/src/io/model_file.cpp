@@ -9,6 +9,7 @@
 #include <assimp/importerdesc.h>
 #include <assimp/scene.h>
 #include <assimp/Importer.hpp>
+#include <glm/common.hpp>
 #include <glm/geometric.hpp>
 #include <glm/mat3x3.hpp>
 #include <glm/mat4x4.hpp>
@@ -18,6 +19,7 @@
 #include <cctype>
 #include <cmath>
 #include <fstream>
+#include <limits>
 #include <memory>
 #include <new>
 #include <sstream>
@@ -378,6 +380,17 @@ std::vector<std::string> model_warnings(const Model& model) {
         warnings.push_back("holds no triangle of non-zero area: the mesh is left out");
     }
     return warnings;
+}
+
+ModelBox model_box(const Model& model) {
+    ModelBox box{glm::dvec3(std::numeric_limits<double>::infinity()),
+                 glm::dvec3(-std::numeric_limits<double>::infinity())};
+    for (const auto& triangle : model.triangles)
+        for (const std::uint32_t corner : triangle) {
+            box.lower = glm::min(box.lower, glm::dvec3(model.positions[corner]));
+            box.upper = glm::max(box.upper, glm::dvec3(model.positions[corner]));
+        }
+    return box;
 }
 
 }  // namespace jt
