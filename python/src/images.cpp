@@ -5,6 +5,7 @@
 
 #include "bindings.hpp"
 
+#include "jtracer/image.hpp"
 #include "jtracer/image_diff.hpp"
 #include "jtracer/image_file.hpp"
 #include "jtracer/limits.hpp"
@@ -35,7 +36,7 @@ Image8 from_array(const py::array& array) {
                               std::to_string(height));
     Image8 image(static_cast<int>(width), static_cast<int>(height));
     for (py::ssize_t row = 0; row < height; ++row) {
-        std::uint8_t* out = image.pixel(0, static_cast<int>(height - 1 - row));
+        std::uint8_t* out = image.pixel(0, flipped_row(static_cast<int>(row), image.height));
         for (py::ssize_t x = 0; x < width; ++x)
             for (py::ssize_t c = 0; c < 3; ++c) *out++ = pixels(row, x, c);
     }
@@ -60,7 +61,8 @@ py::array_t<std::uint8_t> to_array(const Image8& image) {
     std::uint8_t* out = array.mutable_data();
     const std::size_t row_bytes = static_cast<std::size_t>(image.width) * 3;
     for (int row = 0; row < image.height; ++row)
-        std::memcpy(out + row * row_bytes, image.pixel(0, image.height - 1 - row), row_bytes);
+        std::memcpy(out + row * row_bytes, image.pixel(0, flipped_row(row, image.height)),
+                    row_bytes);
     return array;
 }
 
