@@ -10,6 +10,12 @@
 // The text must also parse back to the generated scene exactly, validate
 // without errors, and warn once for each primitive a zero scale leaves out.
 //
+// A second run does the same with the extensions of docs/language.md §13
+// (random_scene_1_1: triangles, meshes aimed at exactly through vertices and
+// edges, glass, mirrored glass triangles, smooth normals far from the faces,
+// BMP image maps stored top-down and bottom-up), with the files written to a
+// folder of their own; its seeds are set by JT_DIFFERENTIAL_SEEDS_1_1.
+//
 // Seeds: 0-299 by default (0-59 under the sanitizers). Any range by hand:
 //   JT_DIFFERENTIAL_SEEDS=1000-4999 build/release/tests/render/render_tests
 //   --gtest_filter='Differential.*'
@@ -29,6 +35,7 @@
 
 #include <gtest/gtest.h>
 
+#include <unistd.h>
 #include <cstdlib>
 #include <filesystem>
 #include <fstream>
@@ -50,9 +57,9 @@ struct SeedRange {
     std::uint64_t first = 0, last = default_last_seed;
 };
 
-SeedRange seed_range() {
+SeedRange seed_range(const char* variable = "JT_DIFFERENTIAL_SEEDS") {
     SeedRange range;
-    const char* text = std::getenv("JT_DIFFERENTIAL_SEEDS");
+    const char* text = std::getenv(variable);
     if (!text || !*text) return range;
     std::string s(text);
     const std::size_t dash = s.find('-');
@@ -101,11 +108,10 @@ int ambiguity_limit(const Image8& image) {
     return std::max(3, image.width * image.height / 100);
 }
 
-fs::path write_artifacts(std::uint64_t seed, const std::string& text, const Image8& core,
+fs::path write_artifacts(const std::string& stem, const std::string& text, const Image8& core,
                          const reference::ReferenceImage& ref) {
     const fs::path dir = fs::path(JT_ARTIFACT_DIR) / "differential";
     fs::create_directories(dir);
-    const std::string stem = "seed-" + std::to_string(seed);
     std::ofstream(dir / (stem + ".jts")) << text;
     // Artifacts only help to look: a failure to write one is not the test's.
     static_cast<void>(write_png(dir / (stem + ".core.png"), core));
@@ -126,15 +132,28 @@ struct SeedResult {
     std::string failure;
 };
 
-SeedResult check_seed(std::uint64_t seed) {
+// The files a generated scene names, in a folder of their own; its path.
+std::string write_scene_files(std::uint64_t seed, const RandomScene& generated) {
+    if (generated.file_bytes.empty()) return "";
+    const fs::path dir = fs::temp_directory_path() /
+                         ("jtracer_differential_" + std::to_string(::getpid())) /
+                         ("seed-" + std::to_string(seed));
+    fs::create_directories(dir);
+    for (const auto& [name, bytes] : generated.file_bytes)
+        std::ofstream(dir / name, std::ios::binary) << bytes;
+    return dir.string();
+}
+
+SeedResult check_seed(std::uint64_t seed, bool extensions) {
     SeedResult result;
-    const RandomScene generated = random_scene(seed);
-    const ParseResult parsed = parse_scene(generated.text);
+    const RandomScene generated = extensions ? random_scene_1_1(seed) : random_scene(seed);
+    ParseResult parsed = parse_scene(generated.text);
     std::string problem;
     if (!parsed.ok())
         problem = "the text does not parse";
     else if (!(parsed.scene == generated.scene))
         problem = "the text parses to another scene";
+    parsed.scene.asset_folder = write_scene_files(seed, generated);
     std::vector<Diagnostic> findings = validate_scene(parsed.scene, parsed.source);
     int zero_scale_warnings = 0;
     for (const Diagnostic& d : findings) {
@@ -156,16 +175,17 @@ SeedResult check_seed(std::uint64_t seed) {
     options.height = scene.settings.height;
     options.camera = active_camera_index(scene);
     const Image8 core = render_image(prepare_scene(scene).value(), options);
-    const reference::ReferenceImage ref = reference::render(generated.scene);
+    const reference::ReferenceImage ref = reference::render(generated.scene, generated.files);
     const Comparison c = compare(core, ref);
     result.pixels = core.width * core.height;
     result.ambiguous = c.ambiguous;
+    const std::string stem_name = (extensions ? "seed-1.1-" : "seed-") + std::to_string(seed);
     const bool passed =
         c.mismatched == 0 && c.out_of_range == 0 && c.ambiguous <= ambiguity_limit(core);
     if (const char* keep = std::getenv("JT_DIFFERENTIAL_KEEP"); keep && *keep == '1')
-        write_artifacts(seed, generated.text, core, ref);
+        write_artifacts(stem_name, generated.text, core, ref);
     if (passed) return result;
-    const fs::path stem = write_artifacts(seed, generated.text, core, ref);
+    const fs::path stem = write_artifacts(stem_name, generated.text, core, ref);
     std::ostringstream s;
     s << "seed " << seed << ": " << c.mismatched << " pixels differ, " << c.out_of_range
       << " ambiguous pixels outside the reference's range, " << c.ambiguous
@@ -176,12 +196,11 @@ SeedResult check_seed(std::uint64_t seed) {
     return result;
 }
 
-TEST(Differential, RandomScenesRenderAsTheReferenceSays) {
-    const SeedRange range = seed_range();
+void check_seeds(const SeedRange& range, bool extensions) {
     int failed = 0;
     long long pixels = 0, ambiguous = 0;
     for (std::uint64_t seed = range.first; seed <= range.last; ++seed) {
-        const SeedResult r = check_seed(seed);
+        const SeedResult r = check_seed(seed, extensions);
         pixels += r.pixels;
         ambiguous += r.ambiguous;
         if (!r.failure.empty()) {
@@ -189,9 +208,20 @@ TEST(Differential, RandomScenesRenderAsTheReferenceSays) {
             ADD_FAILURE() << r.failure;
         }
     }
-    std::printf("differential: seeds %llu-%llu, %d failed; %lld pixels compared, %lld ambiguous\n",
-                static_cast<unsigned long long>(range.first),
-                static_cast<unsigned long long>(range.last), failed, pixels, ambiguous);
+    std::printf(
+        "differential%s: seeds %llu-%llu, %d failed; %lld pixels compared, %lld ambiguous\n",
+        extensions ? " (language 1.1)" : "", static_cast<unsigned long long>(range.first),
+        static_cast<unsigned long long>(range.last), failed, pixels, ambiguous);
+}
+
+TEST(Differential, RandomScenesRenderAsTheReferenceSays) {
+    check_seeds(seed_range(), false);
+}
+
+TEST(Differential, ScenesWithMeshesGlassAndMapsRenderAsTheReferenceSays) {
+    check_seeds(seed_range("JT_DIFFERENTIAL_SEEDS_1_1"), true);
+    fs::remove_all(fs::temp_directory_path() /
+                   ("jtracer_differential_" + std::to_string(::getpid())));
 }
 
 // The comparison can fail: a scene rendered with one light dimmed is caught.

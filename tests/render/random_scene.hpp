@@ -14,6 +14,14 @@
 // Materials use every property; one or two cameras, 0-3 lights, reflections up
 // to depth 4; one scene in four has 9-30 primitives, more than a BVH-less
 // render tests one by one.
+//
+// With the extensions of docs/language.md §13 (random_scene_1_1), triangles and
+// meshes join them, with the files they name: triangles sometimes glass
+// (transmission, ior) and mirrored, sometimes image-mapped with a BMP stored
+// top-down or bottom-up; meshes (an octahedron or a tetrahedron from an OBJ),
+// flat or smooth with vertex normals that may lean far from the faces, each
+// placed so that one pixel's centre ray meets one of its vertices or the middle
+// of one of its edges exactly.
 
 #include "reference_tracer.hpp"
 
@@ -23,6 +31,7 @@
 
 #include <cstdint>
 #include <cstdio>
+#include <map>
 #include <random>
 #include <string>
 
@@ -31,12 +40,14 @@ namespace jt::test {
 struct RandomScene {
     Scene scene;
     std::string text;
-    int flattened = 0;  // primitives with a zero scale component
+    int flattened = 0;                              // primitives with a zero scale component
+    reference::Files files;                         // what the reference knows of them
+    std::map<std::string, std::string> file_bytes;  // the files, by name, for the core
 };
 
 class SceneGenerator {
   public:
-    explicit SceneGenerator(std::uint64_t seed) : rng_(seed) {}
+    SceneGenerator(std::uint64_t seed, bool extensions) : rng_(seed), extensions_(extensions) {}
 
     RandomScene generate() {
         RandomScene out;
@@ -55,13 +66,21 @@ class SceneGenerator {
         const int primitives = chance(0.25) ? integer(9, 30) : integer(2, 8);
         int planes = 0;
         for (int i = 0; i < primitives; ++i) {
+            if (extensions_ && chance(0.5)) {
+                s.primitives.push_back(chance(0.5) ? triangle() : mesh(out, s));
+                if (reference::flattened(s.primitives.back().transforms)) ++out.flattened;
+                continue;
+            }
             const double kind = uniform(0, 1);
             // Built with its shape: assigning one over a default Sphere makes
             // GCC 12 warn falsely about the Mesh alternative's string.
             const bool plane = kind < 0.15 && planes < 2;
             if (plane) ++planes;
-            Primitive p{plane ? Shape(Plane{}) : kind < 0.5 ? Shape(Cylinder{}) : Shape(Sphere{}),
-                        {}, {}};
+            Primitive p{plane        ? Shape(Plane{})
+                        : kind < 0.5 ? Shape(Cylinder{})
+                                     : Shape(Sphere{}),
+                        {},
+                        {}};
             p.material = material();
             p.transforms = transforms();
             if (reference::flattened(p.transforms)) ++out.flattened;
@@ -69,10 +88,164 @@ class SceneGenerator {
             s.primitives.push_back(p);
         }
         out.text = text(s);
+        for (auto& [name, pic] : pending_pictures_) {
+            out.file_bytes[name] = bmp_bytes(pic, name.find("top-down") != std::string::npos);
+            out.files.pictures[name] = std::move(pic);
+        }
         return out;
     }
 
+    // A 24-bit BMP of the picture, written here (not by the core's writer):
+    // rows padded to 4 bytes, bottom-up, or top-down with a negative height.
+    static std::string bmp_bytes(const reference::Picture& pic, bool top_down) {
+        const std::size_t stride = (3 * static_cast<std::size_t>(pic.width) + 3) & ~std::size_t{3};
+        std::string b(54 + stride * pic.height, '\0');
+        auto put = [&](std::size_t at, std::uint32_t v, int bytes) {
+            for (int k = 0; k < bytes; ++k) b[at + k] = static_cast<char>(v >> (8 * k));
+        };
+        b[0] = 'B';
+        b[1] = 'M';
+        put(2, static_cast<std::uint32_t>(b.size()), 4);
+        put(10, 54, 4);
+        put(14, 40, 4);
+        put(18, static_cast<std::uint32_t>(pic.width), 4);
+        put(22, static_cast<std::uint32_t>(top_down ? -pic.height : pic.height), 4);
+        put(26, 1, 2);
+        put(28, 24, 2);
+        for (int j = 0; j < pic.height; ++j) {
+            const std::size_t row = 54 + stride * (top_down ? pic.height - 1 - j : j);
+            for (int i = 0; i < pic.width; ++i)
+                for (int c = 0; c < 3; ++c)  // BGR
+                    b[row + 3 * i + c] = static_cast<char>(
+                        pic.rgb[3 * (static_cast<std::size_t>(j) * pic.width + i) + 2 - c]);
+        }
+        return b;
+    }
+
   private:
+    // A triangle near a target, through its transform; some glass, some image-mapped.
+    Primitive triangle() {
+        Triangle t;
+        Primitive p{t, material(), transforms()};
+        if (chance(0.4)) {
+            p.material.transmission = uniform(0.3, 1.0);
+            p.material.ior = log_uniform(0.6, 2.2);
+            if (chance(0.7)) p.transforms.push_back({TransformKind::scale, mirror_scale(), 0.0});
+        }
+        if (chance(0.3)) p.material.image_map = picture();
+        const Vec3 target = size_ * point(1.2);
+        const reference::Map object = reference::to_object(unflattened(p.transforms));
+        auto corner = [&] {
+            const Vec3 world = target + size_ * log_uniform(0.3, 1.5) * direction();
+            return object.linear * world + object.translation;
+        };
+        auto& tri = std::get<Triangle>(p.shape);
+        do {
+            tri.a = corner();
+            tri.b = corner();
+            tri.c = corner();
+        } while (glm::length(glm::cross(tri.b - tri.a, tri.c - tri.a)) <
+                 0.05 * glm::length(tri.b - tri.a) * glm::length(tri.c - tri.a));
+        tri.uv_a = {uniform(-1, 2), uniform(-1, 2), 0};
+        tri.uv_b = {uniform(-1, 2), uniform(-1, 2), 0};
+        tri.uv_c = {uniform(-1, 2), uniform(-1, 2), 0};
+        return p;
+    }
+
+    // A scale with an odd number of negative components: a mirror.
+    Vec3 mirror_scale() {
+        Vec3 v(1.0);
+        v[integer(0, 2)] = -1.0;
+        if (chance(0.3)) v = -v;
+        return v * log_uniform(0.5, 2.0);
+    }
+
+    // A picture of 2-6 x 2-5 random texels, written as a BMP stored bottom-up
+    // or top-down; its name.
+    std::string picture() {
+        reference::Picture pic;
+        pic.width = integer(2, 6);
+        pic.height = integer(2, 5);
+        for (int k = 0; k < 3 * pic.width * pic.height; ++k)
+            pic.rgb.push_back(static_cast<std::uint8_t>(integer(0, 255)));
+        const bool top_down = chance(0.5);
+        const std::string name =
+            "map" + std::to_string(pictures_++) + (top_down ? "-top-down.bmp" : "-bottom-up.bmp");
+        pending_pictures_.emplace_back(name, pic);
+        return name;
+    }
+
+    // An octahedron or a tetrahedron with corners on a grid of 1/4 (exact in
+    // any reader's floats), flat or smooth, placed so that the centre ray of a
+    // random pixel meets a vertex or the middle of an edge.
+    Primitive mesh(RandomScene& out, const Scene& s) {
+        reference::Model m;
+        const bool octahedron = chance(0.5);
+        if (octahedron) {
+            m.positions = {{1, 0, 0}, {-1, 0, 0}, {0, 1, 0}, {0, -1, 0}, {0, 0, 1}, {0, 0, -1}};
+            m.faces = {{0, 2, 4}, {2, 1, 4}, {1, 3, 4}, {3, 0, 4},
+                       {2, 0, 5}, {1, 2, 5}, {3, 1, 5}, {0, 3, 5}};
+        } else {
+            m.positions = {{1, 1, 1}, {1, -1, -1}, {-1, 1, -1}, {-1, -1, 1}};
+            m.faces = {{0, 1, 2}, {0, 3, 1}, {0, 2, 3}, {1, 3, 2}};
+        }
+        for (Vec3& v : m.positions)
+            for (int k = 0; k < 3; ++k) v[k] += 0.25 * integer(-1, 1);
+        const bool smooth = chance(0.6);
+        if (smooth) {
+            const bool leaning = chance(0.5);  // far from the faces, any way
+            for (const Vec3& v : m.positions)
+                m.normals.push_back(leaning ? Vec3(0.25 * integer(-4, 4), 0.25 * integer(-4, 4),
+                                                   0.25 * integer(1, 4))
+                                            : v);
+        }
+        const std::string name = "model" + std::to_string(models_++) + ".obj";
+        std::string obj;
+        for (const Vec3& v : m.positions)
+            obj += "v " + num(v.x) + " " + num(v.y) + " " + num(v.z) + "\n";
+        for (const Vec3& n : m.normals)
+            obj += "vn " + num(n.x) + " " + num(n.y) + " " + num(n.z) + "\n";
+        for (const auto& f : m.faces) {
+            obj += "f";
+            for (int k : f)
+                obj += " " + std::to_string(k + 1) + (smooth ? "//" + std::to_string(k + 1) : "");
+            obj += "\n";
+        }
+        out.file_bytes[name] = obj;
+        Primitive p{Mesh{name, std::string(smooth ? kSmoothShading : kFlatShading)}, material(),
+                    transforms()};
+        // The model's own size first, then its ops; then a last translation puts
+        // the chosen point on the chosen pixel's ray.
+        const double gain = std::cbrt(
+            std::abs(glm::determinant(reference::to_world(unflattened(p.transforms)).linear)));
+        p.transforms.insert(
+            p.transforms.begin(),
+            {TransformKind::scale, Vec3(size_ * log_uniform(0.3, 1.0) / gain), 0.0});
+        const auto& face = m.faces[integer(0, static_cast<int>(m.faces.size()) - 1)];
+        const int k = integer(0, 2);
+        const Vec3 aim = chance(0.5)
+                             ? m.positions[face[k]]
+                             : 0.5 * (m.positions[face[k]] + m.positions[face[(k + 1) % 3]]);
+        const Camera& camera = s.cameras[reference::active_camera(s)];
+        const int w = s.settings.width, h = s.settings.height;
+        const Vec3 d =
+            reference::pixel_direction(camera, w, h, integer(0, w - 1), integer(0, h - 1));
+        const Vec3 world = camera.position + glm::length(camera.position) * uniform(0.4, 0.9) * d;
+        const reference::Map placed = reference::to_world(unflattened(p.transforms));
+        p.transforms.push_back(
+            {TransformKind::translate, world - (placed.linear * aim + placed.translation), 0.0});
+        out.files.models[name] = std::move(m);
+        return p;
+    }
+
+    static std::vector<TransformOp> unflattened(std::vector<TransformOp> ops) {
+        for (TransformOp& op : ops)
+            if (op.kind == TransformKind::scale)
+                for (int k = 0; k < 3; ++k)
+                    if (op.vector[k] == 0.0) op.vector[k] = 1.0;
+        return ops;
+    }
+
     double uniform(double a, double b) {
         return std::uniform_real_distribution<double>(a, b)(rng_);
     }
@@ -116,6 +289,10 @@ class SceneGenerator {
         if (chance(0.5)) m.diffuse_k = log_uniform(0.3, 4.0);
         m.specular_k = log_uniform(1.0, 300.0);
         if (chance(0.4)) m.reflection = chance(0.2) ? 1.0 : uniform(0, 1);
+        if (extensions_ && chance(0.15)) {
+            m.transmission = uniform(0.3, 1.0);
+            m.ior = log_uniform(0.6, 2.2);
+        }
         return m;
     }
 
@@ -276,6 +453,12 @@ class SceneGenerator {
             t = "  plane { ";
             property("normal", vec(plane->normal), false);
             property("distance", num(plane->distance), false);
+        } else if (const auto* tri = std::get_if<Triangle>(&p.shape)) {
+            t = "  triangle { a: " + vec(tri->a) + "; b: " + vec(tri->b) + "; c: " + vec(tri->c) +
+                "; uv_a: " + vec(tri->uv_a) + "; uv_b: " + vec(tri->uv_b) +
+                "; uv_c: " + vec(tri->uv_c) + "; ";
+        } else if (const auto* mesh = std::get_if<Mesh>(&p.shape)) {
+            t = "  mesh { file: \"" + mesh->file + "\"; shading: \"" + mesh->shading + "\"; ";
         }
         const Material& m = p.material;
         const Material d;
@@ -294,6 +477,9 @@ class SceneGenerator {
         material_property("diffuse_k", num(m.diffuse_k), m.diffuse_k == d.diffuse_k);
         material_property("specular_k", num(m.specular_k), m.specular_k == d.specular_k);
         material_property("reflection", num(m.reflection), m.reflection == d.reflection);
+        if (m.transmission != d.transmission)
+            t += "transmission: " + num(m.transmission) + "; ior: " + num(m.ior) + "; ";
+        if (!m.image_map.empty()) t += "image_map: \"" + m.image_map + "\"; ";
         t += "} ";
         if (!p.transforms.empty()) {
             const std::size_t split_at =
@@ -327,11 +513,19 @@ class SceneGenerator {
     }
 
     std::mt19937_64 rng_;
+    bool extensions_ = false;
     double size_ = 1.0;
+    int models_ = 0, pictures_ = 0;
+    std::vector<std::pair<std::string, reference::Picture>> pending_pictures_;
 };
 
 inline RandomScene random_scene(std::uint64_t seed) {
-    return SceneGenerator(seed).generate();
+    return SceneGenerator(seed, false).generate();
+}
+
+// With triangles, meshes, glass and image maps (docs/language.md §13).
+inline RandomScene random_scene_1_1(std::uint64_t seed) {
+    return SceneGenerator(seed, true).generate();
 }
 
 }  // namespace jt::test

@@ -1,13 +1,20 @@
 #pragma once
-// An independent, deliberately plain renderer of docs/language.md sections 5-8, for
-// the differential test: one ray through each pixel centre, every ray tested
-// against every primitive in that primitive's own object space, in double
-// precision; no acceleration structure, no tables, no tiles, no code shared
-// with the core (only the Scene values and glm's vector arithmetic).
+// An independent, deliberately plain renderer of docs/language.md sections 5-8
+// and of the extensions of section 13 that random scenes use (triangles and
+// meshes, flat and smooth; refraction and transmitted shadows; image maps on
+// triangles), for the differential test: one ray through each pixel centre,
+// every ray tested against every primitive in that primitive's own object
+// space, in double precision; no acceleration structure, no tables, no tiles,
+// no code shared with the core (only the Scene values and glm's vector
+// arithmetic). It reads no file: the generator hands it the triangles and
+// texels it wrote (Files).
 //
 // Secondary rays start exactly on the surface: the root of the ray's own
 // primitive at the start point is removed algebraically (the other root of a
-// quadratic through a known root), not by an offset.
+// quadratic through a known root), not by an offset. A ray leaving a triangle
+// of a mesh meets no triangle of that mesh whose plane holds its start (its
+// own, and at an edge or vertex the ones that share it): a plane through the
+// start is met only there.
 //
 // Besides its colour, each pixel says whether its bytes are numerically
 // ambiguous: whether errors of the size any double-precision renderer makes
@@ -22,7 +29,12 @@
 // - two surfaces lie within 1e-8 (relative) of each other along one of its
 //   rays, or a secondary ray meets another surface within 1e-6 (relative) of
 //   its start: coincident or touching surfaces, where the nearest hit or the
-//   shadow is a matter of rounding.
+//   shadow is a matter of rounding;
+// - its ray passes within rounding of an edge or a corner of a triangle: then
+//   the ray shaded as a hit on each triangle through that point, and a ray
+//   aimed just inside each, join the variants (a renderer may take any of
+//   them, and the four turned rays need not meet them all: at a corner, or at
+//   a silhouette, perhaps none).
 
 #include "jtracer/image.hpp"
 #include "jtracer/scene.hpp"
@@ -34,7 +46,9 @@
 #include <array>
 #include <cmath>
 #include <cstdint>
+#include <map>
 #include <numbers>
+#include <string>
 #include <vector>
 
 namespace jt::reference {
@@ -113,6 +127,36 @@ inline double max_abs(const Vec3& v) {
     return std::max({std::abs(v.x), std::abs(v.y), std::abs(v.z)});
 }
 
+// A model file's triangles as the generator wrote them (object space).
+struct Model {
+    std::vector<Vec3> positions;
+    std::vector<Vec3> normals;  // one a vertex, or none
+    std::vector<std::array<int, 3>> faces;
+};
+
+// A picture's texels, row 0 at the bottom, 3 bytes a texel.
+struct Picture {
+    int width = 0, height = 0;
+    std::vector<std::uint8_t> rgb;
+};
+
+// The files a scene names, by the name it gives them.
+struct Files {
+    std::map<std::string, Model> models;
+    std::map<std::string, Picture> pictures;
+};
+
+// The unit direction of the ray through pixel (i, j)'s centre (§7.1).
+inline Vec3 pixel_direction(const Camera& camera, int w, int h, int i, int j) {
+    const Vec3 f = glm::normalize(camera.look_at - camera.position);
+    const Vec3 r = glm::normalize(glm::cross(f, camera.up));
+    const Vec3 u = glm::cross(r, f);
+    const double t = std::tan(camera.fov / 2 * std::numbers::pi / 180);
+    const double sx = (2 * (i + 0.5) / w - 1) * t * camera.aspect;
+    const double sy = (2 * (j + 0.5) / h - 1) * t;
+    return glm::normalize(f + sx * r + sy * u);
+}
+
 struct Rgb8 {
     std::uint8_t r = 0, g = 0, b = 0;
     bool operator==(const Rgb8&) const = default;
@@ -128,7 +172,7 @@ struct ReferenceImage {
 
 class Tracer {
   public:
-    explicit Tracer(const Scene& scene) : scene_(scene) {
+    Tracer(const Scene& scene, const Files& files) : scene_(scene) {
         for (std::size_t i = 0; i < scene.primitives.size(); ++i) {
             const Primitive& p = scene.primitives[i];
             if (flattened(p.transforms)) continue;
@@ -138,9 +182,17 @@ class Tracer {
             q.material = &p.material;
             const Map inverse = to_object(p.transforms);
             q.world_to_object = inverse;
+            q.object_to_world = to_world(p.transforms);
+
             q.normal_matrix = glm::transpose(inverse.linear);
             if (const auto* plane = std::get_if<Plane>(&p.shape))
                 q.unit_normal = plane->normal / std::sqrt(glm::dot(plane->normal, plane->normal));
+            if (const auto* mesh = std::get_if<Mesh>(&p.shape)) {
+                q.model = &files.models.at(mesh->file);
+                q.smooth = mesh->shading == kSmoothShading && !q.model->normals.empty();
+            }
+            if (!p.material.image_map.empty()) q.picture = &files.pictures.at(p.material.image_map);
+            transmissive_ = transmissive_ || p.material.transmission > 0;
             placed_.push_back(q);
         }
     }
@@ -151,7 +203,6 @@ class Tracer {
         const Vec3 f = glm::normalize(camera.look_at - camera.position);
         const Vec3 r = glm::normalize(glm::cross(f, camera.up));
         const Vec3 u = glm::cross(r, f);
-        const double t = std::tan(camera.fov / 2 * std::numbers::pi / 180);
         ReferenceImage out;
         out.image = Image8(w, h);
         out.ambiguous.assign(static_cast<std::size_t>(w) * h, false);
@@ -159,16 +210,13 @@ class Tracer {
         constexpr double turn = 1e-8;
         for (int j = 0; j < h; ++j) {
             for (int i = 0; i < w; ++i) {
-                const double sx = (2 * (i + 0.5) / w - 1) * t * camera.aspect;
-                const double sy = (2 * (j + 0.5) / h - 1) * t;
-                const Vec3 d = glm::normalize(f + sx * r + sy * u);
+                const Vec3 d = pixel_direction(camera, w, h, i, j);
                 Flags flags;
                 const Rgb8 centre = quantize(trace(camera.position, d, 0, {}, 0.0, false, flags));
                 bool ambiguous = flags.ambiguous || near_rounding_boundary(flags.colour);
                 std::array<std::uint8_t, 6> range = {centre.r, centre.g, centre.b,
                                                      centre.r, centre.g, centre.b};
-                auto variant = [&](const Vec3& direction, bool lifted) {
-                    Flags ignored;
+                auto variant = [&](const Vec3& direction, bool lifted, Flags ignored = {}) {
                     Rgb8 c =
                         quantize(trace(camera.position, direction, 0, {}, 0.0, lifted, ignored));
                     if (!(c == centre)) ambiguous = true;
@@ -182,6 +230,22 @@ class Tracer {
                 for (const Vec3& axis : {r, u})
                     for (double sign : {-1.0, 1.0})
                         variant(glm::normalize(d + sign * turn * axis), false);
+                for (const auto& [placed, face] : faces_through(camera.position, d)) {
+                    Flags forced;
+                    forced.force_placed = placed;
+                    forced.force_face = face;
+                    variant(d, false, forced);
+                    // And just inside it, where the faces around no longer hold the point.
+                    const Placed& q = placed_[placed];
+                    Root root;
+                    plane_root(q, face, camera.position, d, root);
+                    const std::array<Vec3, 3> v = face_corners(q, face);
+                    const Vec3 at = (1 - root.u - root.v) * v[0] + root.u * v[1] + root.v * v[2];
+                    const Vec3 inside = at + 1e-6 * ((v[0] + v[1] + v[2]) / 3.0 - at);
+                    const Vec3 aim =
+                        q.object_to_world.linear * inside + q.object_to_world.translation;
+                    variant(glm::normalize(aim - camera.position), false);
+                }
                 std::uint8_t* p = out.image.pixel(i, j);
                 p[0] = centre.r;
                 p[1] = centre.g;
@@ -199,27 +263,46 @@ class Tracer {
         const Shape* shape = nullptr;
         const Material* material = nullptr;
         Map world_to_object;
+        Map object_to_world;
         glm::dmat3 normal_matrix{1.0};
-        Vec3 unit_normal{0.0};  // planes
+        Vec3 unit_normal{0.0};             // planes
+        const Model* model = nullptr;      // meshes
+        bool smooth = false;               // a mesh shaded with its vertex normals
+        const Picture* picture = nullptr;  // its image map
     };
 
     // Where a ray starts: on surface `part` of placed primitive `placed`, or
     // nowhere (placed < 0) for a primary or lifted ray.
     struct Origin {
         int placed = -1;
-        int part = 0;  // sphere 0; cylinder side 0, bottom 1, top 2; plane 0
+        int part = 0;  // sphere 0; cylinder side 0, bottom 1, top 2; plane 0; a mesh's face
+        Vec3 object_point{0.0};  // meshes: where in object space it starts
+        // Started 1e-7 off the surface: meets every surface but the face it
+        // leaves (no surface reflects itself, §13.5), its own primitive included.
+        bool lifted = false;
+    };
+
+    // One root: its part, the outward normal in object space (not unit
+    // length) and, on a triangle, the barycentric weights of corners b and c.
+    struct Root {
+        double t = INFINITY;
+        int part = 0;
+        Vec3 normal{0.0};
+        double u = 0, v = 0;
     };
 
     struct Hit {
         double t = INFINITY;
         int placed = -1;
-        int part = 0;
-        Vec3 object_normal{0.0};
+        Root root;
     };
 
     struct Flags {
         bool ambiguous = false;
         Colour colour{0.0};  // the unclamped colour of the primary ray
+        // The primary ray's hit taken on this face of this placed primitive,
+        // when the ray meets the face's plane where it meets the nearest surface.
+        int force_placed = -1, force_face = -1;
     };
 
     static Rgb8 quantize(const Colour& c) {
@@ -245,9 +328,20 @@ class Tracer {
         const Placed& q = placed_[which];
         const Vec3 o = q.world_to_object.linear * world_origin + q.world_to_object.translation;
         const Vec3 d = q.world_to_object.linear * world_direction;
-        const bool own = from.placed == which;
-        auto offer = [&](double t, int part, const Vec3& normal) {
-            if (t > 0 && std::isfinite(t)) visit(t, part, normal);
+        const bool own_face = from.placed == which;  // the triangle it leaves is never met
+        const bool own = own_face && !from.lifted;
+        auto offer = [&](double t, int part, const Vec3& normal, double u = 0, double v = 0) {
+            if (t > 0 && std::isfinite(t)) visit(Root{t, part, normal, u, v});
+        };
+        // Moller-Trumbore, inside or on the edges.
+        auto triangle = [&](const Vec3& a, const Vec3& b, const Vec3& c, int part) {
+            const Vec3 e1 = b - a, e2 = c - a, p = glm::cross(d, e2);
+            const double det = glm::dot(e1, p);
+            if (det == 0) return;
+            const Vec3 s = o - a, q = glm::cross(s, e1);
+            const double u = glm::dot(s, p) / det, v = glm::dot(d, q) / det;
+            if (u < 0 || v < 0 || u + v > 1) return;
+            offer(glm::dot(e2, q) / det, part, glm::cross(e1, e2), u, v);
         };
         if (const auto* sphere = std::get_if<Sphere>(q.shape)) {
             const Vec3 f = o - sphere->center;
@@ -295,7 +389,66 @@ class Tracer {
             const double denominator = glm::dot(q.unit_normal, d);
             if (denominator == 0) return;
             offer((plane->distance - glm::dot(q.unit_normal, o)) / denominator, 0, q.unit_normal);
+        } else if (const auto* t = std::get_if<Triangle>(q.shape)) {
+            if (!own_face) triangle(t->a, t->b, t->c, 0);
+        } else if (q.model) {
+            const Model& m = *q.model;
+            for (int f = 0; f < static_cast<int>(m.faces.size()); ++f) {
+                const Vec3 &a = m.positions[m.faces[f][0]], &b = m.positions[m.faces[f][1]],
+                           &c = m.positions[m.faces[f][2]];
+                if (own_face && f == from.part) continue;
+                if (own && holds(a, b, c, from.object_point)) continue;
+                triangle(a, b, c, f);
+            }
         }
+    }
+
+    // The corners of face f of placed primitive q (a triangle's is face 0), object space.
+    static std::array<Vec3, 3> face_corners(const Placed& q, int f) {
+        if (const auto* t = std::get_if<Triangle>(q.shape)) return {t->a, t->b, t->c};
+        const auto& face = q.model->faces[f];
+        return {q.model->positions[face[0]], q.model->positions[face[1]],
+                q.model->positions[face[2]]};
+    }
+
+    // Where the ray meets the plane of face f, inside or not.
+    static bool plane_root(const Placed& q, int f, const Vec3& world_origin,
+                           const Vec3& world_direction, Root& root) {
+        const Vec3 o = q.world_to_object.linear * world_origin + q.world_to_object.translation;
+        const Vec3 d = q.world_to_object.linear * world_direction;
+        const std::array<Vec3, 3> v = face_corners(q, f);
+        const Vec3 e1 = v[1] - v[0], e2 = v[2] - v[0], p = glm::cross(d, e2);
+        const double det = glm::dot(e1, p);
+        if (det == 0) return false;
+        const Vec3 sv = o - v[0], qv = glm::cross(sv, e1);
+        root = {glm::dot(e2, qv) / det, f, glm::cross(e1, e2), glm::dot(sv, p) / det,
+                glm::dot(d, qv) / det};
+        return root.t > 0 && std::isfinite(root.t);
+    }
+
+    // The faces (placed primitive, face) whose edge or corner the ray passes
+    // within rounding of.
+    std::vector<std::pair<int, int>> faces_through(const Vec3& o, const Vec3& d) const {
+        std::vector<std::pair<int, int>> found;
+        for (int k = 0; k < static_cast<int>(placed_.size()); ++k) {
+            const Placed& q = placed_[k];
+            const bool loose = std::holds_alternative<Triangle>(*q.shape);
+            if (!loose && !q.model) continue;
+            const int faces = loose ? 1 : static_cast<int>(q.model->faces.size());
+            for (int f = 0; f < faces; ++f) {
+                Root r;
+                if (!plane_root(q, f, o, d, r)) continue;
+                const double least = std::min({r.u, r.v, 1 - r.u - r.v});
+                if (least >= -1e-9 && least <= 1e-9) found.emplace_back(k, f);
+            }
+        }
+        return found;
+    }
+
+    // Whether the plane of triangle abc passes through p, up to rounding.
+    static bool holds(const Vec3& a, const Vec3& b, const Vec3& c, const Vec3& p) {
+        const Vec3 n = glm::normalize(glm::cross(b - a, c - a));
+        return std::abs(glm::dot(n, p - a)) <= 1e-12 * (max_abs(a) + max_abs(p - a));
     }
 
     // The nearest hit; equal distances go to the lower primitive index.
@@ -304,11 +457,12 @@ class Tracer {
         Hit best;
         double second = INFINITY;
         for (int k = 0; k < static_cast<int>(placed_.size()); ++k) {
-            roots(k, o, d, from, [&](double t, int part, const Vec3& normal) {
+            roots(k, o, d, from, [&](const Root& root) {
+                const double t = root.t;
                 if (from.placed >= 0 && t < 1e-6 * magnitude) flags.ambiguous = true;
                 if (t < best.t) {
                     second = best.t;
-                    best = {t, k, part, normal};
+                    best = {t, k, root};
                 } else {
                     second = std::min(second, t);
                 }
@@ -318,24 +472,44 @@ class Tracer {
         return best;
     }
 
-    bool blocked(const Vec3& o, const Vec3& d, double distance, const Origin& from,
-                 double magnitude, Flags& flags) const {
-        bool any = false;
+    bool q_is_mesh(int k) const { return placed_[k].model != nullptr; }
+
+    // The fraction of a light that reaches across `distance`: 0 when an opaque
+    // surface is in the way; with transmissive surfaces in the scene, the
+    // product of the transmission of every crossing (one a distance on a mesh,
+    // where two faces share an edge) (§13.2).
+    double light_through(const Vec3& o, const Vec3& d, double distance, const Origin& from,
+                         double magnitude, Flags& flags) const {
+        double through = 1.0;
         for (int k = 0; k < static_cast<int>(placed_.size()); ++k) {
-            roots(k, o, d, from, [&](double t, int, const Vec3&) {
+            std::vector<double> crossings;
+            roots(k, o, d, from, [&](const Root& root) {
+                const double t = root.t;
                 if (from.placed >= 0 && t < 1e-6 * magnitude) flags.ambiguous = true;
                 if (std::abs(t - distance) <= 1e-8 * magnitude) flags.ambiguous = true;
-                if (t < distance) any = true;
+                if (t < distance) crossings.push_back(t);
             });
+            std::sort(crossings.begin(), crossings.end());
+            for (std::size_t c = 0; c < crossings.size(); ++c) {
+                if (c > 0 && q_is_mesh(k) &&
+                    crossings[c] - crossings[c - 1] <= 1e-12 * crossings[c])
+                    continue;
+                through *= transmissive_ ? placed_[k].material->transmission : 0.0;
+            }
         }
-        return any;
+        return through;
     }
 
     // docs/language.md §8.5. `lifted`: secondary rays start 1e-7 of the magnitude off
     // the surface and meet every surface, their own included.
     Colour trace(const Vec3& o, const Vec3& d, int depth, const Origin& from, double magnitude,
-                 bool lifted, Flags& flags) const {
-        const Hit hit = nearest(o, d, from, magnitude, flags);
+                 bool lifted, Flags& flags, double weight = 1.0) const {
+        Hit hit = nearest(o, d, from, magnitude, flags);
+        Root forced;
+        if (depth == 0 && flags.force_placed >= 0 &&
+            plane_root(placed_[flags.force_placed], flags.force_face, o, d, forced) &&
+            (hit.placed < 0 || forced.t <= hit.t * (1 + 1e-9)))
+            hit = {forced.t, flags.force_placed, forced};
         if (hit.placed < 0) {
             if (depth == 0) flags.colour = scene_.settings.background;
             return scene_.settings.background;
@@ -343,36 +517,98 @@ class Tracer {
         const Placed& q = placed_[hit.placed];
         const Material& m = *q.material;
         const Vec3 p = o + hit.t * d;
-        Vec3 n = glm::normalize(q.normal_matrix * hit.object_normal);
-        if (glm::dot(n, d) > 0) n = -n;
+        const Root& root = hit.root;
+        // Ng, outward (M^-T of the object's outward normal), then facing the ray.
+        const Vec3 outward = glm::normalize(q.normal_matrix * root.normal);
+        const bool entering = glm::dot(d, outward) < 0;
+        const Vec3 ng = entering ? outward : -outward;
+        Vec3 n = ng;
+        const double w = 1 - root.u - root.v;
+        if (q.smooth) {
+            const Model& model = *q.model;
+            const auto& face = model.faces[root.part];
+            const Vec3 blend = w * model.normals[face[0]] + root.u * model.normals[face[1]] +
+                               root.v * model.normals[face[2]];
+            if (blend != Vec3(0.0)) {
+                n = glm::normalize(q.normal_matrix * blend);
+                if (glm::dot(n, ng) < 0) n = -n;
+            }
+        }
+        Colour pigment = m.pigment;
+        if (q.picture) {
+            const auto* t = std::get_if<Triangle>(q.shape);
+            const Vec3 uv = t ? w * t->uv_a + root.u * t->uv_b + root.v * t->uv_c : Vec3(0.0);
+            pigment = bilinear(*q.picture, uv.x, uv.y);
+        }
         const Vec3 v = -d;
         const double scale = std::max({max_abs(o), max_abs(p), hit.t});
-        const Origin here = lifted ? Origin{} : Origin{hit.placed, hit.part};
-        const Vec3 start = lifted ? p + 1e-7 * scale * n : p;
+        const Vec3 object_point = q.world_to_object.linear * p + q.world_to_object.translation;
+        const Origin here{hit.placed, root.part, object_point, lifted};
+        const Vec3 start = lifted ? p + 1e-7 * scale * ng : p;
 
-        Colour c = scene_.settings.ambient_light * m.ambient * m.pigment;
+        Colour c = scene_.settings.ambient_light * m.ambient * pigment;
         for (const PointLight& light : scene_.lights) {
             const Vec3 l = glm::normalize(light.position - p);
             const double n_dot_l = glm::dot(n, l);
             if (n_dot_l <= 0) continue;
             const Vec3 to_light = light.position - start;
             const double distance = glm::length(to_light);
-            if (blocked(start, to_light / distance, distance, here, scale, flags)) continue;
-            c += light.intensity * m.diffuse * m.pigment * std::pow(n_dot_l, 1 / m.diffuse_k);
+            const double through =
+                light_through(start, to_light / distance, distance, here, scale, flags);
+            if (!(through > 0)) continue;
+            const Colour intensity = light.intensity * through;
+            c += intensity * m.diffuse * pigment * std::pow(n_dot_l, 1 / m.diffuse_k);
             const Vec3 reflected = 2 * n_dot_l * n - l;
             const double r_dot_v = glm::dot(reflected, v);
-            if (r_dot_v > 0) c += light.intensity * m.specular * std::pow(r_dot_v, m.specular_k);
+            if (r_dot_v > 0) c += intensity * m.specular * std::pow(r_dot_v, m.specular_k);
         }
-        if (depth < scene_.settings.recurse_depth && m.reflection > 0) {
+        // §13.2: with glass in the scene, a branch whose weight in the pixel is
+        // below 1e-6 is not traced.
+        auto traced = [&](double factor) { return !transmissive_ || weight * factor >= 1e-6; };
+        if (depth < scene_.settings.recurse_depth && m.reflection > 0 && traced(m.reflection)) {
             const Vec3 mirrored = glm::normalize(d - 2 * glm::dot(d, n) * n);
-            c += m.reflection * trace(start, mirrored, depth + 1, here, scale, lifted, flags);
+            c += m.reflection * trace(start, mirrored, depth + 1, here, scale, lifted, flags,
+                                      weight * m.reflection);
+        }
+        if (depth < scene_.settings.recurse_depth && m.transmission > 0 && traced(m.transmission)) {
+            const double eta = entering ? 1 / m.ior : m.ior;
+            const double cosi = -glm::dot(d, n);
+            const double k = 1 - eta * eta * (1 - cosi * cosi);
+            const Vec3 t = glm::normalize(k < 0 ? d + 2 * cosi * n
+                                                : eta * d + (eta * cosi - std::sqrt(k)) * n);
+            const Vec3 from = lifted ? p + (glm::dot(t, ng) > 0 ? 1e-7 : -1e-7) * scale * ng : p;
+            c += m.transmission *
+                 trace(from, t, depth + 1, here, scale, lifted, flags, weight * m.transmission);
         }
         if (depth == 0) flags.colour = c;
         return c;
     }
 
+    // The bilinear blend of the four texel centres nearest (u, v), wrapped
+    // round both edges (§13.4), each channel byte / 255 in single precision.
+    static Colour bilinear(const Picture& picture, double u, double v) {
+        auto wrap = [](double x) { return x - std::floor(x) < 1 ? x - std::floor(x) : 0.0; };
+        const double x = wrap(u) * picture.width - 0.5, y = wrap(v) * picture.height - 0.5;
+        const double fx = std::floor(x), fy = std::floor(y);
+        auto index = [](double k, int n) {
+            const long long m = static_cast<long long>(k) % n;
+            return static_cast<int>(m < 0 ? m + n : m);
+        };
+        auto texel = [&](double i, double j) {
+            const std::uint8_t* t =
+                &picture
+                     .rgb[3 * (static_cast<std::size_t>(index(j, picture.height)) * picture.width +
+                               index(i, picture.width))];
+            return Colour(t[0] / 255.0f, t[1] / 255.0f, t[2] / 255.0f);
+        };
+        const Colour bottom = (1 - (x - fx)) * texel(fx, fy) + (x - fx) * texel(fx + 1, fy);
+        const Colour top = (1 - (x - fx)) * texel(fx, fy + 1) + (x - fx) * texel(fx + 1, fy + 1);
+        return (1 - (y - fy)) * bottom + (y - fy) * top;
+    }
+
     const Scene& scene_;
     std::vector<Placed> placed_;
+    bool transmissive_ = false;
 };
 
 // The camera docs/language.md §7.1 says renders: the one named by active_camera, else the first.
@@ -384,8 +620,8 @@ inline int active_camera(const Scene& scene) {
     return 0;
 }
 
-inline ReferenceImage render(const Scene& scene) {
-    return Tracer(scene).render(active_camera(scene));
+inline ReferenceImage render(const Scene& scene, const Files& files = {}) {
+    return Tracer(scene, files).render(active_camera(scene));
 }
 
 }  // namespace jt::reference
