@@ -12,8 +12,11 @@
 #include <gtest/gtest.h>
 #include <glm/geometric.hpp>
 
+#include <algorithm>
 #include <cmath>
 #include <random>
+#include <utility>
+#include <vector>
 
 namespace jt::test {
 namespace {
@@ -269,6 +272,21 @@ TEST(Triangles, RaysThroughSharedEdgesAndVerticesNeverMiss) {
     EXPECT_EQ(misses, 0) << "of " << rays;
 }
 
+// The octahedron in material m, flat, under `transforms`, seen by a 9 x 9
+// camera with a field of 10 degrees, lit by white ambient light and one white
+// point light.
+Scene flat_octahedron(const std::filesystem::path& dir, const Material& m,
+                      std::vector<TransformOp> transforms, const Camera& camera,
+                      const Vec3& light) {
+    Scene s = scene_with_camera(camera, 9, 9);
+    s.settings.ambient_light = Colour(1.0);
+    Primitive p = mesh(octahedron(dir), m, kFlatShading);
+    p.transforms = std::move(transforms);
+    s.primitives.push_back(p);
+    s.lights.push_back({light, Colour(1.0)});
+    return s;
+}
+
 // The scene of issue 27: the octahedron scaled 0.75, flat, seen along an axis
 // from 5 away with a light at 9 behind the camera. The centre pixel's ray
 // meets the vertex on that axis exactly, where four faces meet; each faces the
@@ -283,13 +301,9 @@ TEST(Triangles, AVertexSharedByFlatFacesIsLitAsTheFacesAroundIt) {
     const Vec3 axes[] = {{0, 0, 1}, {0, 0, -1}, {1, 0, 0}, {-1, 0, 0}, {0, 1, 0}, {0, -1, 0}};
     for (const Vec3& axis : axes) {
         const Vec3 up = axis.y == 0 ? Vec3(0, 1, 0) : Vec3(0, 0, 1);
-        Scene s = scene_with_camera(camera_at(5.0 * axis, {0, 0, 0}, up, 10.0), 9, 9);
-        s.settings.ambient_light = Colour(1.0);
-        Primitive p = mesh(octahedron(dir.path()), m, kFlatShading);
-        p.transforms = {scale(Vec3(0.75))};
-        s.primitives.push_back(p);
-        s.lights.push_back({9.0 * axis, Colour(1.0)});
-        const Image8 image = render(s);
+        const Image8 image =
+            render(flat_octahedron(dir.path(), m, {scale(Vec3(0.75))},
+                                   camera_at(5.0 * axis, {0, 0, 0}, up, 10.0), 9.0 * axis));
         EXPECT_EQ(at(image, 4, 4), lit)
             << "the vertex at " << 0.75 * axis.x << ", " << 0.75 * axis.y << ", " << 0.75 * axis.z;
         // Its neighbours, 0.1 off the vertex on one face each, see the light
@@ -300,6 +314,51 @@ TEST(Triangles, AVertexSharedByFlatFacesIsLitAsTheFacesAroundIt) {
             EXPECT_NEAR(c.g, lit.g, 2) << x << ", " << y;
         }
     }
+}
+
+// The octahedron squashed to a quarter of its height, flat: at its top vertex
+// V = (0, 0, 0.25) the four faces have outward normals (+-1, +-1, 4) / sqrt(18),
+// each less than 90 degrees from every other, so V lifted along any face's
+// inward normal lies inside the solid. A horizontal ray through V only touches
+// the solid there: the faces it leaves behind turn their backs to it. The
+// light, up and back toward the camera, lights every face at V (the back
+// faces from their inner side) and the segment to it touches the solid only at
+// V, so whichever face the ray meets there is lit: a back face's shadow ray,
+// lifted into the solid, must not be stopped by the faces around V on its way
+// out (docs/language.md §13.5: P lies on all of them).
+TEST(Triangles, ASilhouetteVertexIsLitOnWhicheverFaceTheRayMeetsThere) {
+    ScratchDir dir;
+    Material m;
+    m.pigment = {1.0, 0.5, 0.25};
+    m.ambient = Colour(0.1);
+    m.diffuse = Colour(0.8);
+    const Vec3 top{0, 0, 0.25};
+    int back_faces = 0;
+    for (const double degrees : {0, 20, 70, 90, 110, 160, 180, 200, 250, 270, 290, 340}) {
+        const double a = degrees * M_PI / 180;
+        const Vec3 d{std::cos(a), std::sin(a), 0};
+        const Vec3 l = glm::normalize(-d + Vec3(0, 0, 0.05));
+        Scene s = flat_octahedron(dir.path(), m, {scale({1, 1, 0.25})},
+                                  camera_at(top - 5.0 * d, top, {0, 0, 1}, 10.0), top + 9.0 * l);
+        s.settings.background = {0, 0, 1};
+        // The value of each face at V; none is the ambient term alone.
+        std::vector<Rgb> lit;
+        for (const double x : {-1.0, 1.0})
+            for (const double y : {-1.0, 1.0}) {
+                const Vec3 n = glm::normalize(Vec3(x, y, 4));
+                const double facing = glm::dot(n, d) > 0 ? -glm::dot(n, l) : glm::dot(n, l);
+                ASSERT_GT(facing, 0.05) << degrees;
+                lit.push_back(expected(0.1 * m.pigment + 0.8 * facing * m.pigment));
+                if (glm::dot(n, d) > 0) ++back_faces;
+            }
+        const Rgb c = at(render(s), 4, 4);
+        const bool as_a_face = std::any_of(lit.begin(), lit.end(), [&](const Rgb& v) {
+            return std::abs(c.r - v.r) <= 1 && std::abs(c.g - v.g) <= 1 && std::abs(c.b - v.b) <= 1;
+        });
+        EXPECT_TRUE(as_a_face) << "seen along " << degrees << " degrees: " << c
+                               << "; ambient alone is " << expected(0.1 * m.pigment);
+    }
+    EXPECT_EQ(back_faces, 24);
 }
 
 // A ray leaving a mesh's surface never meets it again at its start (no acne):

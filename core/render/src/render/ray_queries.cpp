@@ -266,7 +266,7 @@ void shape_occluded(const RTCOccludedFunctionNArguments* args) {
 }
 
 bool closest_hit(const Geometry& geometry, const Vec3& origin, const Vec3& direction, double t_min,
-                 Hit& hit, const ListedShapes* candidates, TriangleId skip) {
+                 Hit& hit, const ListedShapes* candidates, const Departure& from) {
     ClosestQuery q;
     q.geometry = &geometry;
     q.origin = origin;
@@ -315,7 +315,7 @@ bool closest_hit(const Geometry& geometry, const Vec3& origin, const Vec3& direc
     TriangleHit triangle;
     if (geometry.triangles &&
         closest_triangle(*geometry.triangles, origin, direction, t_min, just_beyond(q.t), triangle,
-                         skip) &&
+                         from) &&
         better(triangle.t, triangle.source, q)) {
         const TriangleSurface surface = triangle_surface(*geometry.triangles, triangle);
         hit.t = triangle.t;
@@ -348,7 +348,8 @@ bool closest_hit(const Geometry& geometry, const Vec3& origin, const Vec3& direc
 }
 
 bool occluded(const Geometry& geometry, const Vec3& origin, const Vec3& direction, double t_min,
-              double t_max, OccluderHint* hint, const DirectionTable* light, TriangleId skip) {
+              double t_max, OccluderHint* hint, const DirectionTable* light,
+              const Departure& from) {
     std::optional<ListedShapes> candidates;
     if (light) candidates = shapes_toward(*light, -direction);
     // Testing a short list costs about what testing the hint does: the hint
@@ -385,7 +386,7 @@ bool occluded(const Geometry& geometry, const Vec3& origin, const Vec3& directio
         blocker = q.blocker;
     }
     if (!blocked && geometry.triangles)
-        blocked = triangle_blocks(*geometry.triangles, origin, direction, t_min, t_max, skip);
+        blocked = triangle_blocks(*geometry.triangles, origin, direction, t_min, t_max, from);
     if (blocked && hint) *hint = blocker;
     return blocked;
 }

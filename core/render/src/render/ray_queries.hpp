@@ -31,9 +31,9 @@ struct Hit {
 // never depends on BVH traversal order.
 // With `candidates`, every shape the ray may meet first (a list of a view
 // or direction table), tests those instead of walking the BVH when they are
-// few. `skip`, a triangle the ray must not meet (the one it leaves).
+// few. `from`: the triangle a secondary ray leaves, met as closest_triangle says.
 bool closest_hit(const Geometry& geometry, const Vec3& origin, const Vec3& direction, double t_min,
-                 Hit& hit, const ListedShapes* candidates = nullptr, TriangleId skip = {});
+                 Hit& hit, const ListedShapes* candidates = nullptr, const Departure& from = {});
 
 // The surface that blocked a previous shadow ray: shadow rays toward one light
 // from neighbouring points are mostly blocked by the same surface, and testing
@@ -52,7 +52,7 @@ struct OccluderHint {
 // few: the answer is the same.
 bool occluded(const Geometry& geometry, const Vec3& origin, const Vec3& direction, double t_min,
               double t_max, OccluderHint* hint = nullptr, const DirectionTable* light = nullptr,
-              TriangleId skip = {});
+              const Departure& from = {});
 
 // Embree callbacks for the two user geometries; prepare_scene registers them.
 void sphere_bounds(const RTCBoundsFunctionArguments* args);

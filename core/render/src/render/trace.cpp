@@ -28,12 +28,12 @@ double max_abs(const Vec3& v) {
 // the first opaque one (docs/language.md §13.2). Each query starts from the
 // same origin past the previous hit, so no surface is counted twice.
 double transmittance(const PreparedScene& scene, const Vec3& origin, const Vec3& direction,
-                     double t_max, TriangleId skip) {
+                     double t_max, const Departure& from) {
     double through = 1.0;
     double t_lower = 0.0;
     Hit hit;
     while (through > 0.0 &&
-           closest_hit(*scene.geometry, origin, direction, t_lower, hit, nullptr, skip) &&
+           closest_hit(*scene.geometry, origin, direction, t_lower, hit, nullptr, from) &&
            hit.t < t_max) {
         through *= scene.materials[scene.material_of[hit.source]].transmission;
         t_lower = hit.t;
@@ -48,6 +48,7 @@ double transmittance(const PreparedScene& scene, const Vec3& origin, const Vec3&
 Colour shade_hit(const PreparedScene& scene, const Material& m, const Vec3& point,
                  const Vec3& lifted, const Vec3& normal, const Vec3& view, TriangleId own,
                  std::uint64_t& rays) {
+    const Departure from{own, point};
     Colour c = scene.settings.ambient_light * m.ambient * m.pigment;
     const Geometry& geometry = *scene.geometry;
     const std::vector<DirectionTable>* light_tables =
@@ -74,12 +75,12 @@ Colour shade_hit(const PreparedScene& scene, const Material& m, const Vec3& poin
         Colour intensity = light.intensity;
         if (scene.has_transmission) {
             const double through = transmittance(scene, lifted, shadow_direction / shadow_distance,
-                                                 shadow_distance, own);
+                                                 shadow_distance, from);
             if (!(through > 0.0)) continue;
             intensity *= through;
         } else if (occluded(geometry, lifted, shadow_direction / shadow_distance, 0.0,
                             shadow_distance, &hints[light_index],
-                            light_tables ? &(*light_tables)[light_index] : nullptr, own)) {
+                            light_tables ? &(*light_tables)[light_index] : nullptr, from)) {
             continue;
         }
         // pow(x, 1) is x exactly, and adding a zero term changes nothing: both
@@ -116,7 +117,7 @@ struct SurfaceHit {
 // a ray reflected or refracted about a smooth normal that points far from the
 // face may still head back through it.
 SurfaceHit first_surface(const Geometry& geometry, const Vec3& o, const Vec3& d, double t_lower,
-                         const ListedShapes* candidates, TriangleId leaving) {
+                         const ListedShapes* candidates, const Departure& leaving) {
     SurfaceHit s;
     Hit hit;
     if (!all_finite(o) || !all_finite(d) ||
@@ -174,7 +175,7 @@ constexpr double min_branch_weight = 1e-6;
 // hit can spawn both a reflected and a transmitted ray.
 Colour trace_branching(const PreparedScene& scene, const Vec3& o, const Vec3& d, double t_lower,
                        int depth, int depth_limit, double weight, std::uint64_t& rays,
-                       const ListedShapes* candidates, TriangleId leaving) {
+                       const ListedShapes* candidates, const Departure& leaving) {
     ++rays;
     const SurfaceHit s = first_surface(*scene.geometry, o, d, t_lower, candidates, leaving);
     if (s.kind == SurfaceHit::Kind::miss) return scene.settings.background;
@@ -185,14 +186,15 @@ Colour trace_branching(const PreparedScene& scene, const Vec3& o, const Vec3& d,
     if (m.reflection > 0.0 && weight * m.reflection >= min_branch_weight)
         c += m.reflection * trace_branching(scene, s.lifted, mirror(d, s.normal), 0.0, depth + 1,
                                             depth_limit, weight * m.reflection, rays, nullptr,
-                                            s.triangle);
+                                            {s.triangle, s.point});
     if (m.transmission > 0.0 && weight * m.transmission >= min_branch_weight) {
         const Vec3 t = transmitted_direction(d, s.normal, s.entering, m.ior);
         // Total internal reflection stays on the ray's side; a refracted ray crosses.
         const Vec3 from =
             glm::dot(t, s.geometric) > 0.0 ? s.lifted : s.point - s.offset * s.geometric;
         c += m.transmission * trace_branching(scene, from, t, 0.0, depth + 1, depth_limit,
-                                              weight * m.transmission, rays, nullptr, s.triangle);
+                                              weight * m.transmission, rays, nullptr,
+                                              {s.triangle, s.point});
     }
     return c;
 }
@@ -229,7 +231,7 @@ Colour trace_ray(const PreparedScene& scene, const Vec3& origin, const Vec3& uni
     Vec3 o = origin;
     Vec3 d = unit_direction;
     double t_lower = t_min;
-    TriangleId leaving;
+    Departure leaving;
     int last = 0;
     for (int depth = 0;; ++depth) {
         last = depth;
@@ -248,7 +250,7 @@ Colour trace_ray(const PreparedScene& scene, const Vec3& origin, const Vec3& uni
         d = mirror(d, s.normal);
         o = s.lifted;
         t_lower = 0.0;
-        leaving = s.triangle;
+        leaving = {s.triangle, s.point};
     }
     auto local = [&](int k) {
         return Colour(bounces[k].local[0], bounces[k].local[1], bounces[k].local[2]);

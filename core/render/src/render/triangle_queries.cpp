@@ -21,7 +21,8 @@ struct TriangleQuery {
     const TriangleGeometry* geometry;
     Vec3 origin, direction;
     double t_min, t_max;
-    TriangleId skip;
+    Departure from;
+    double lift;  // |origin - from.point|
 };
 
 Vec3 corner(const Model& m, std::uint32_t triangle, int k) {
@@ -66,28 +67,35 @@ TriangleId id_of(const RTCFilterFunctionNArguments* args) {
 }
 
 // Whether the candidate the filter sees lies in the query's range, exactly.
-// A ray that leaves a triangle (`skip`) starts within a rounding of its edges
-// and corners, too close for Embree's single-precision test to tell on which
-// side of a neighbour's edge it passes: at a vertex of a convex solid it
-// reports the face across the vertex, whose plane the lifted start lies just
-// behind (a vertex lit from outside came out in shadow). A triangle that
-// shares a corner with the one the ray leaves is met only where the point in
-// double precision lies inside it. Other triangles keep Embree's watertight
-// answer, so that no ray slips between two of them.
+// A ray that leaves a triangle starts at a point P of it lifted by ε, and P at
+// a shared vertex or edge lies on every triangle around it, which therefore
+// never shadows or reflects it (docs/language.md §13.5). The lift cannot tell:
+// along the normal facing the ray it carries P just behind the plane of a face
+// across the vertex (Embree's single-precision test then reports that face,
+// though the ray passes outside it), and at a back face met on a silhouette it
+// carries P into the solid, where the ray toward a light outside crosses a
+// neighbour on its way out (the vertex, lit, came out black). So a triangle
+// that shares a corner with the one the ray leaves is met only where the ray
+// from P itself, in double precision, passes inside it farther than ε from P.
+// Other triangles keep Embree's watertight answer, so that no ray slips
+// between two of them.
 bool keep(const RTCFilterFunctionNArguments* args) {
     const auto& q = *reinterpret_cast<const TriangleQuery*>(args->context);
     const TriangleId id = id_of(args);
-    if (id == q.skip) return false;
+    if (id == q.from.triangle) return false;
     TrianglePoint p;
     if (!exact_point(*q.geometry, id, q.origin, q.direction, p) || !(p.t > q.t_min) ||
         !(p.t < q.t_max))
         return false;
-    if (q.skip == TriangleId{} || !neighbours(*q.geometry, id, q.skip)) return true;
-    return p.u >= 0.0 && p.v >= 0.0 && p.u + p.v <= 1.0;
+    if (q.from.triangle == TriangleId{} || !neighbours(*q.geometry, id, q.from.triangle))
+        return true;
+    TrianglePoint from_p;
+    return exact_point(*q.geometry, id, q.from.point, q.direction, from_p) && from_p.t > q.lift &&
+           from_p.u >= 0.0 && from_p.v >= 0.0 && from_p.u + from_p.v <= 1.0;
 }
 
 TriangleQuery query(const TriangleGeometry& g, const Vec3& origin, const Vec3& direction,
-                    double t_min, double t_max, TriangleId skip) {
+                    double t_min, double t_max, const Departure& from) {
     TriangleQuery q;
     rtcInitIntersectContext(&q.context);
     q.geometry = &g;
@@ -95,7 +103,8 @@ TriangleQuery query(const TriangleGeometry& g, const Vec3& origin, const Vec3& d
     q.direction = direction;
     q.t_min = t_min;
     q.t_max = t_max;
-    q.skip = skip;
+    q.from = from;
+    q.lift = glm::length(origin - from.point);
     return q;
 }
 
@@ -110,8 +119,8 @@ void triangle_occluded_filter(const RTCFilterFunctionNArguments* args) {
 }
 
 bool closest_triangle(const TriangleGeometry& g, const Vec3& origin, const Vec3& direction,
-                      double t_min, double t_max, TriangleHit& hit, TriangleId skip) {
-    TriangleQuery q = query(g, origin, direction, t_min, t_max, skip);
+                      double t_min, double t_max, TriangleHit& hit, const Departure& from) {
+    TriangleQuery q = query(g, origin, direction, t_min, t_max, from);
     RTCRayHit rayhit;
     set_float_ray(rayhit.ray, origin, direction, t_min, t_max);
     rayhit.hit.geomID = RTC_INVALID_GEOMETRY_ID;
@@ -133,8 +142,8 @@ bool closest_triangle(const TriangleGeometry& g, const Vec3& origin, const Vec3&
 }
 
 bool triangle_blocks(const TriangleGeometry& g, const Vec3& origin, const Vec3& direction,
-                     double t_min, double t_max, TriangleId skip) {
-    TriangleQuery q = query(g, origin, direction, t_min, t_max, skip);
+                     double t_min, double t_max, const Departure& from) {
+    TriangleQuery q = query(g, origin, direction, t_min, t_max, from);
     RTCRay ray;
     set_float_ray(ray, origin, direction, t_min, t_max);
     rtcOccluded1(g.scene, &q.context, &ray);

@@ -18,14 +18,24 @@ struct TriangleHit {
     std::uint32_t source = 0;
 };
 
-// The nearest triangle along origin + t * direction with t in (t_min, t_max),
-// other than `skip`.
-bool closest_triangle(const TriangleGeometry& g, const Vec3& origin, const Vec3& direction,
-                      double t_min, double t_max, TriangleHit& hit, TriangleId skip = {});
+// Where a secondary ray leaves a triangle: which one, and the point P on it
+// that the ray's origin is P lifted from (docs/language.md §8.5). A primary
+// ray leaves none.
+struct Departure {
+    TriangleId triangle;
+    Vec3 point{0.0};
+};
 
-// Whether a triangle other than `skip` lies at some t in (t_min, t_max).
+// The nearest triangle along origin + t * direction with t in (t_min, t_max).
+// A ray that leaves a triangle never meets it, and meets a triangle that
+// shares a corner with it only where the ray from P itself passes inside that
+// triangle farther than the lift from P (docs/language.md §13.5).
+bool closest_triangle(const TriangleGeometry& g, const Vec3& origin, const Vec3& direction,
+                      double t_min, double t_max, TriangleHit& hit, const Departure& from = {});
+
+// Whether a triangle lies at some t in (t_min, t_max), as closest_triangle meets them.
 bool triangle_blocks(const TriangleGeometry& g, const Vec3& origin, const Vec3& direction,
-                     double t_min, double t_max, TriangleId skip = {});
+                     double t_min, double t_max, const Departure& from = {});
 
 // What shading needs at a hit: the outward geometric normal
 // cross(b - a, c - a) in world space (not unit length); the smooth shading
