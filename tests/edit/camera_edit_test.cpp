@@ -92,7 +92,7 @@ TEST(CameraEdit, EveryPropertyNumerically) {
     Camera wrong = base.scene().cameras[0];
     wrong.aspect = 0;
     EXPECT_EQ(error_of(set_camera(base.scene_text(), 0, wrong)),
-              "camera 1: 'aspect' must be greater than 0, got 0");
+              "camera 1: 'aspect' must be greater than 0 and at most 1e+09, got 0");
 }
 
 TEST(CameraEdit, AspectFromTheImageSize) {

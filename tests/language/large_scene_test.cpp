@@ -84,7 +84,7 @@ TEST(LargeScene, DiagnosticsInABigScene) {
     std::string text = many_spheres();
     text.insert(text.rfind("point_light"), "sphere { radius: -1; material { x { } } }\n");
     EXPECT_EQ(test::brief(parse_scene(text).diagnostics),
-              "6002:18: error: 'radius' must be greater than 0, got -1\n"
+              "6002:18: error: 'radius' must be greater than 0 and at most 1e+09, got -1\n"
               "6002:33: error: unexpected block 'x' in 'material', which holds only properties");
 }
 

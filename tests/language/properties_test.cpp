@@ -116,7 +116,7 @@ TEST(Vectors, AreNotClipped) {
 
 TEST(Camera, AspectMustBePositive) {
     EXPECT_EQ(brief("cameras { perspective_camera { aspect: 0; } }"),
-              "1:40: error: 'aspect' must be greater than 0, got 0");
+              "1:40: error: 'aspect' must be greater than 0 and at most 1e+09, got 0");
 }
 
 TEST(Camera, FovMustBeStrictlyBetween0And180) {
@@ -136,10 +136,10 @@ TEST(Camera, UnknownPropertyIsAnError) {
 
 TEST(Shapes, RadiusAndHeightMustBePositive) {
     EXPECT_EQ(brief("scene { sphere { radius: 0; } }"),
-              "1:26: error: 'radius' must be greater than 0, got 0");
+              "1:26: error: 'radius' must be greater than 0 and at most 1e+09, got 0");
     EXPECT_EQ(brief("scene { cylinder { radius: -1; height: 0; } }"),
-              "1:28: error: 'radius' must be greater than 0, got -1\n"
-              "1:40: error: 'height' must be greater than 0, got 0");
+              "1:28: error: 'radius' must be greater than 0 and at most 1e+09, got -1\n"
+              "1:40: error: 'height' must be greater than 0 and at most 1e+09, got 0");
 }
 
 TEST(Shapes, RejectedValuesLeaveTheDefault) {
@@ -162,8 +162,8 @@ TEST(Shapes, PropertiesOfOtherShapesAreUnknown) {
 
 TEST(Materials, ExponentsMustBePositive) {
     EXPECT_EQ(brief("scene { sphere { material { diffuse_k: 0; specular_k: -3; } } }"),
-              "1:40: error: 'diffuse_k' must be greater than 0, got 0\n"
-              "1:55: error: 'specular_k' must be greater than 0, got -3");
+              "1:40: error: 'diffuse_k' must be greater than 0 and at most 1e+09, got 0\n"
+              "1:55: error: 'specular_k' must be greater than 0 and at most 1e+09, got -3");
 }
 
 TEST(Materials, ReflectionOutsideZeroOneIsClampedWithAWarning) {

@@ -119,7 +119,7 @@ TEST_F(SceneFile, ValidationIsSkippedWhenParsingFailed) {
     const LoadedScene loaded =
         load_scene_file(write("bad.jts", "scene { sphere { radius: -1; } }")).value();
     EXPECT_EQ(test::brief(check_scene(loaded)),
-              "1:26: error: 'radius' must be greater than 0, got -1");
+              "1:26: error: 'radius' must be greater than 0 and at most 1e+09, got -1");
 }
 
 TEST_F(SceneFile, LoadReportsIoErrorsWithoutParsing) {

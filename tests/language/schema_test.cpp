@@ -32,7 +32,7 @@ using test::brief;
 
 // A range in brief: '[' or ']' an inclusive bound, '(' or ')' an open one,
 // '<' or '>' a clamping one; then "nonzero" or "nonempty" when they apply.
-std::string allowed(const ValueRange& r) {
+std::string allowed(const ValueRange& r, ValueKind kind) {
     if (r.nonzero) return "nonzero";
     if (r.nonempty) return "nonempty";
     if (!r.choices.empty()) {
@@ -40,12 +40,10 @@ std::string allowed(const ValueRange& r) {
         for (std::string_view c : r.choices) out += " " + std::string(c);
         return out;
     }
-    if (!std::isfinite(r.low) && !std::isfinite(r.high)) return "any";
-    std::string out = r.clamp_low ? "<" : r.low_open || !std::isfinite(r.low) ? "(" : "[";
-    out += std::isfinite(r.low) ? number_text(r.low) : "-inf";
-    out += ", ";
-    out += std::isfinite(r.high) ? number_text(r.high) : "inf";
-    return out + (r.clamp_high ? ">" : r.high_open || !std::isfinite(r.high) ? ")" : "]");
+    if (kind == ValueKind::string) return "any";
+    std::string out = r.clamp_low ? "<" : r.low_open ? "(" : "[";
+    out += number_text(r.low) + ", " + number_text(r.high);
+    return out + (r.clamp_high ? ">" : r.high_open ? ")" : "]");
 }
 
 const char* kind_name(ValueKind kind) {
@@ -68,7 +66,7 @@ template <class Block>
 std::string describe(std::string_view keyword, const PropertySpec<Block>& p, bool with_default) {
     std::string line = std::string(keyword) + "." + std::string(p.name) + " " + kind_name(p.kind);
     if (with_default) line += " " + value_text(p, Block{});
-    line += " " + allowed(p.range);
+    line += " " + allowed(p.range, p.kind);
     if (!p.unit.empty()) line += " " + std::string(p.unit);
     if (p.omit_default) line += " omitted-when-default";
     if (!p.alias.empty()) line += " alias:" + std::string(p.alias);
@@ -102,45 +100,45 @@ TEST(Schema, MatchesTheLanguagesPropertyTable) {
               "render_settings.ambient_light colour <0, 0, 0> <0, 1>\n"
               "render_settings.samples int 1 [1, 1024] omitted-when-default\n"
               "perspective_camera.name string \"\" any alias:active_camera\n"
-              "perspective_camera.position vector <0, 0, 0> any\n"
-              "perspective_camera.look_at vector <0, 0, -1> any\n"
-              "perspective_camera.up vector <0, 1, 0> any\n"
-              "perspective_camera.aspect number 1 (0, inf)\n"
+              "perspective_camera.position vector <0, 0, 0> [-1e+09, 1e+09]\n"
+              "perspective_camera.look_at vector <0, 0, -1> [-1e+09, 1e+09]\n"
+              "perspective_camera.up vector <0, 1, 0> [-1e+09, 1e+09]\n"
+              "perspective_camera.aspect number 1 (0, 1e+09]\n"
               "perspective_camera.fov number 45 (0, 180) degrees\n"
-              "sphere.center vector <0, 0, 0> any\n"
-              "sphere.radius number 1 (0, inf)\n"
+              "sphere.center vector <0, 0, 0> [-1e+09, 1e+09]\n"
+              "sphere.radius number 1 (0, 1e+09]\n"
               "plane.normal vector <0, 1, 0> nonzero\n"
-              "plane.distance number 0 any\n"
-              "cylinder.radius number 0.5 (0, inf)\n"
-              "cylinder.height number 1 (0, inf)\n"
-              "triangle.a vector <0, 0, 0> any\n"
-              "triangle.b vector <1, 0, 0> any\n"
-              "triangle.c vector <0, 1, 0> any\n"
-              "triangle.uv_a vector <0, 0, 0> any omitted-when-default\n"
-              "triangle.uv_b vector <1, 0, 0> any omitted-when-default\n"
-              "triangle.uv_c vector <0, 1, 0> any omitted-when-default\n"
+              "plane.distance number 0 [-1e+09, 1e+09]\n"
+              "cylinder.radius number 0.5 (0, 1e+09]\n"
+              "cylinder.height number 1 (0, 1e+09]\n"
+              "triangle.a vector <0, 0, 0> [-1e+09, 1e+09]\n"
+              "triangle.b vector <1, 0, 0> [-1e+09, 1e+09]\n"
+              "triangle.c vector <0, 1, 0> [-1e+09, 1e+09]\n"
+              "triangle.uv_a vector <0, 0, 0> [-1e+09, 1e+09] omitted-when-default\n"
+              "triangle.uv_b vector <1, 0, 0> [-1e+09, 1e+09] omitted-when-default\n"
+              "triangle.uv_c vector <0, 1, 0> [-1e+09, 1e+09] omitted-when-default\n"
               "mesh.file string \"\" nonempty\n"
               "mesh.shading string \"smooth\" one of smooth flat omitted-when-default\n"
-              "point_light.position vector <0, 0, 0> any\n"
+              "point_light.position vector <0, 0, 0> [-1e+09, 1e+09]\n"
               "point_light.intensity colour <0, 0, 0> <0, 1>\n"
               "material.pigment colour <0, 0, 0> <0, 1>\n"
               "material.ambient colour <0, 0, 0> <0, 1>\n"
               "material.diffuse colour <0, 0, 0> <0, 1>\n"
               "material.specular colour <0, 0, 0> <0, 1>\n"
-              "material.diffuse_k number 1 (0, inf)\n"
-              "material.specular_k number 64 (0, inf)\n"
+              "material.diffuse_k number 1 (0, 1e+09]\n"
+              "material.specular_k number 64 (0, 1e+09]\n"
               "material.reflection number 0 <0, 1>\n"
               "material.transmission number 0 <0, 1> omitted-when-default\n"
-              "material.ior number 1 (0, inf) omitted-when-default\n"
+              "material.ior number 1 (0, 1e+09] omitted-when-default\n"
               "material.checker colour  <0, 1> omitted-when-default\n"
-              "material.checker_size number 1 (0, inf) omitted-when-default\n"
+              "material.checker_size number 1 (0, 1e+09] omitted-when-default\n"
               "material.image_map string \"\" any omitted-when-default\n"
-              "material.map_size number 1 (0, inf) omitted-when-default\n"
-              "transform.translate vector any\n"
-              "transform.scale vector any\n"
-              "transform.xrotate number any degrees\n"
-              "transform.yrotate number any degrees\n"
-              "transform.zrotate number any degrees\n");
+              "material.map_size number 1 (0, 1e+09] omitted-when-default\n"
+              "transform.translate vector [-1e+09, 1e+09]\n"
+              "transform.scale vector [-1e+09, 1e+09]\n"
+              "transform.xrotate number [-1e+09, 1e+09] degrees\n"
+              "transform.yrotate number [-1e+09, 1e+09] degrees\n"
+              "transform.zrotate number [-1e+09, 1e+09] degrees\n");
 }
 
 // --- the blocks, from the schema --------------------------------------------------
@@ -468,12 +466,13 @@ struct Probe {
 std::vector<Probe> probes(const ValueRange& r, ValueKind kind) {
     const double step = kind == ValueKind::whole ? 1.0 : 0.5;
     std::vector<Probe> out;
-    if (std::isfinite(r.low)) {
+    if (kind == ValueKind::string) return out;
+    {
         out.push_back({r.low_open ? r.low : r.low - step,
                        r.clamp_low ? RangeVerdict::clamped : RangeVerdict::outside, r.low});
         if (!r.low_open) out.push_back({r.low, RangeVerdict::inside, r.low});
     }
-    if (std::isfinite(r.high)) {
+    {
         out.push_back({r.high_open ? r.high : r.high + step,
                        r.clamp_high ? RangeVerdict::clamped : RangeVerdict::outside, r.high});
         if (!r.high_open) out.push_back({r.high, RangeVerdict::inside, r.high});
@@ -675,17 +674,19 @@ INSTANTIATE_TEST_SUITE_P(Schema, EveryProperty, testing::ValuesIn(every_property
 TEST(Schema, RangeRulesReadAsSentences) {
     EXPECT_EQ(range_rule({.low = 0, .high = kMaxImageSide}, ValueKind::whole),
               "must be a whole number from 0 to 65535");
+    // A bound not given is the limit on every number in a scene.
     EXPECT_EQ(range_rule({.low = 0, .low_open = true}, ValueKind::number),
-              "must be greater than 0");
+              "must be greater than 0 and at most 1e+09");
     EXPECT_EQ(range_rule({.low = 0, .high = 180, .low_open = true, .high_open = true},
                          ValueKind::number, "degrees"),
               "must be between 0 and 180 degrees (exclusive)");
     EXPECT_EQ(range_rule({.low = 0, .high = 256, .clamp_high = true}, ValueKind::whole),
               "must be 0 or more");
     EXPECT_EQ(range_rule({.low = 0, .high = 1}, ValueKind::number), "must be from 0 to 1");
-    EXPECT_EQ(range_rule({.high = 2}, ValueKind::number), "must be 2 or less");
-    EXPECT_EQ(range_rule({.high = 2, .high_open = true}, ValueKind::number), "must be less than 2");
-    EXPECT_EQ(range_rule({}, ValueKind::vector), "must be finite");
+    EXPECT_EQ(range_rule({.high = 2}, ValueKind::number), "must be from -1e+09 to 2");
+    EXPECT_EQ(range_rule({.high = 2, .high_open = true}, ValueKind::number),
+              "must be at least -1e+09 and less than 2");
+    EXPECT_EQ(range_rule({}, ValueKind::vector), "must be from -1e+09 to 1e+09");
 }
 
 }  // namespace

@@ -20,8 +20,12 @@ Scene awkward_scene() {
     s.settings.background = {0.1, 1.0 / 3.0, 2.0 / 3.0};
     s.settings.ambient_light = {std::nextafter(0.5, 1.0), 0, 1};
     s.settings.samples = 16;
-    s.cameras.push_back(Camera{
-        "First", {0.1, 0.2, 0.3}, {1e-300, -0.0, 5e300}, {0, 0, 1}, 1.3333333333333333, 33.3});
+    s.cameras.push_back(Camera{"First",
+                               {0.1, 0.2, 0.3},
+                               {1e-300, -0.0, 987654321.00000012},
+                               {0, 0, 1},
+                               1.3333333333333333,
+                               33.3});
     s.cameras.push_back(test::named_camera("Second"));
     s.primitives.push_back(
         Primitive{Sphere{{std::numeric_limits<double>::min(), 1e-17, -7.125}, 0.30000000000000004},

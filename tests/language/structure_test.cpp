@@ -106,7 +106,7 @@ TEST(Structure, ErrorsAreAllReportedWithRecovery) {
                     "  plane { normal: <0, 0, 0>; }\n"
                     "  cube { }\n"
                     "}\n"),
-              "2:20: error: 'radius' must be greater than 0, got -1\n"
+              "2:20: error: 'radius' must be greater than 0 and at most 1e+09, got -1\n"
               "2:32: error: 'center' takes a vector like <0, 1, 0>, got the number 3\n"
               "3:19: error: 'normal' must not be the zero vector, got <0, 0, 0>\n"
               "4:3: error: unknown block 'cube' in 'scene' (allowed: sphere, plane, cylinder, "

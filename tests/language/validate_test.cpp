@@ -140,15 +140,16 @@ TEST(Validate, CatchesOutOfRangeValuesInScenesBuiltInCode) {
                                      }(),
                                      {}});
     // The parser's messages (schema.hpp), with the block they are in.
-    EXPECT_EQ(brief(validate_scene(s, SceneSource{})),
-              "0:0: error: camera 1: 'fov' must be between 0 and 180 degrees (exclusive), got "
-              "180\n"
-              "0:0: error: sphere 1: 'radius' must be greater than 0, got -1\n"
-              "0:0: error: plane 2: 'normal' must not be the zero vector, got <0, 0, 0>\n"
-              "0:0: error: plane 2: 'reflection' 2 is outside 0..1\n"
-              "0:0: error: cylinder 3: 'radius' must be greater than 0, got 0\n"
-              "0:0: error: cylinder 3: 'height' must be greater than 0, got 0\n"
-              "0:0: error: cylinder 3: 'specular_k' must be greater than 0, got 0");
+    EXPECT_EQ(
+        brief(validate_scene(s, SceneSource{})),
+        "0:0: error: camera 1: 'fov' must be between 0 and 180 degrees (exclusive), got "
+        "180\n"
+        "0:0: error: sphere 1: 'radius' must be greater than 0 and at most 1e+09, got -1\n"
+        "0:0: error: plane 2: 'normal' must not be the zero vector, got <0, 0, 0>\n"
+        "0:0: error: plane 2: 'reflection' 2 is outside 0..1\n"
+        "0:0: error: cylinder 3: 'radius' must be greater than 0 and at most 1e+09, got 0\n"
+        "0:0: error: cylinder 3: 'height' must be greater than 0 and at most 1e+09, got 0\n"
+        "0:0: error: cylinder 3: 'specular_k' must be greater than 0 and at most 1e+09, got 0");
 }
 
 }  // namespace

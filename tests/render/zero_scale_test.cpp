@@ -188,16 +188,17 @@ TEST(ZeroScale, WarningsSayWhichOpLeavesThePrimitiveOut) {
     EXPECT_EQ(zero_scale_warnings(parse_and_validate(two).diagnostics),
               (std::vector<std::string>{position_of(two, "scale: <0"),
                                         position_of(two, "scale: <1, 1, -0")}));
+    // Each number is within the language's limit (1e9); their product is not.
+    std::string ops;
+    for (int i = 0; i < 34; ++i) ops += "scale: <1e9, 1e9, 1e9>; ";
     const std::string huge = scene_text(
-        "  sphere { transform { scale: <1e200, 1e200, 1e200>; zrotate: 20; scale: <1e200, 1, 1>; "
-        "} }\n",
-        false);
+        "  sphere { transform { " + ops + "zrotate: 20; scale: <1e9, 1, 1>; } }\n", false);
     Parsed p = parse_and_validate(huge);
     std::vector<std::string> warned;
     for (const Diagnostic& d : p.diagnostics)
         if (d.message.find("range of double precision") != std::string::npos)
             warned.push_back(std::to_string(d.pos.line) + ":" + std::to_string(d.pos.column));
-    EXPECT_EQ(warned, std::vector<std::string>{position_of(huge, "scale: <1e200, 1,")});
+    EXPECT_EQ(warned, std::vector<std::string>{position_of(huge, "scale: <1e9, 1,")});
     EXPECT_EQ(render(p.scene), render_text(scene_text("", false)));
 }
 

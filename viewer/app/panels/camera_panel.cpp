@@ -138,7 +138,9 @@ void camera_panel(AppState& state) {
     }
     if (state.free_camera_active) {
         double fov = state.free_camera.fov;
-        if (edit_number("free fov", fov, 0.5f, 1.0, 179.0)) state.free_camera.fov = fov;
+        if (edit_number("free fov", fov, 0.5f, 1.0, 179.0,
+                        [] { return std::string("must be from 1 to 179 degrees"); }))
+            state.free_camera.fov = fov;
         tooltip("The free camera's vertical field of view, in degrees");
     }
     if (!state.free_camera_active && selected >= 0) scene_camera_editor(state, selected);

@@ -16,10 +16,10 @@
 namespace jt::view {
 
 // The widget bounds for a range: an open bound moves inside by a small step
-// (radius > 0 stops at 0.0001); an infinite one is no bound.
+// (radius > 0 stops at 0.0001).
 struct FieldBounds {
     double min = 0.0;
-    double max = 0.0;  // max <= min: unbounded
+    double max = 0.0;
 };
 FieldBounds field_bounds(const ValueRange& range);
 
@@ -35,18 +35,22 @@ bool edit_property(const PropertySpec<Block>& property, Block& block) {
     return with_member(property, block, [&](auto& value) {
         using T = std::decay_t<decltype(value)>;
         const FieldBounds bounds = field_bounds(property.range);
+        const auto why = [&property] {
+            return range_rule(property.range, property.kind, property.unit);
+        };
         if constexpr (std::is_same_v<T, int>) {
             return edit_int(label, value, static_cast<int>(bounds.min),
                             static_cast<int>(bounds.max));
         } else if constexpr (std::is_same_v<T, double>) {
             return edit_number(label, value, field_speed(property.range, property.unit, value),
-                               bounds.min, bounds.max);
+                               bounds.min, bounds.max, why);
         } else if constexpr (std::is_same_v<T, std::optional<Vec3>>) {
             return edit_optional_colour(label, value, Colour(0.1));
         } else if constexpr (std::is_same_v<T, Vec3>) {
             if (property.kind == ValueKind::colour) return edit_colour(label, value);
             const double size = std::max({std::abs(value.x), std::abs(value.y), std::abs(value.z)});
-            return edit_vector(label, value, field_speed(property.range, property.unit, size));
+            return edit_vector(label, value, field_speed(property.range, property.unit, size),
+                               bounds.min, bounds.max, why);
         } else {
             return false;
         }

@@ -19,34 +19,84 @@ double from_widget(float f) {
     return ui_rounded(static_cast<double>(f));
 }
 
+// The one field whose typed value was last refused, and why. ImGui keeps no
+// text for an item between frames, and only one field is typed into at a time.
+struct Refusal {
+    ImGuiID field = 0;
+    std::string message;
+};
+Refusal& refusal() {
+    static Refusal r;
+    return r;
+}
+
+// After a field's widget (`id`): a refused value notes why, an accepted one
+// clears the note, and the note is drawn under its field.
+void settle_refusal(ImGuiID id, const char* label, bool refused, bool accepted, double typed,
+                    const std::function<std::string()>& why) {
+    Refusal& r = refusal();
+    if (refused) {
+        r.field = id;
+        r.message = std::string(label) + ": ";
+        r.message += std::isfinite(typed) ? number_text(typed) : std::string("the value typed");
+        r.message += " is refused: ";
+        r.message += why ? why() : std::string("outside the field's range");
+    } else if (accepted && r.field == id) {
+        r.field = 0;
+    }
+    if (r.field != id || id == 0) return;
+    ImGui::PushTextWrapPos(0.0f);
+    ImGui::TextColored(ImVec4(1.0f, 0.45f, 0.4f, 1.0f), "%s", r.message.c_str());
+    ImGui::PopTextWrapPos();
+    note_item(r.message.c_str(), false);
+}
+
+bool outside(double v, double min, double max) {
+    return !std::isfinite(v) || (max > min && !(v >= min && v <= max));
+}
+
 }  // namespace
 
-bool edit_number(const char* label, double& value, float speed, double min, double max) {
+// Drags stop at the bounds; typed values are not clamped by ImGui (no
+// AlwaysClamp), so one past them is refused with the reason, never moved.
+bool edit_number(const char* label, double& value, float speed, double min, double max,
+                 const std::function<std::string()>& why) {
+    const ImGuiID id = ImGui::GetID(label);  // the id the widget takes
     float f = static_cast<float>(value);
-    const bool bounded = max > min;
-    const bool changed =
-        ImGui::DragFloat(label, &f, speed, static_cast<float>(min), static_cast<float>(max), "%.4g",
-                         bounded ? ImGuiSliderFlags_AlwaysClamp : 0);
+    const bool changed = ImGui::DragFloat(label, &f, speed, static_cast<float>(min),
+                                          static_cast<float>(max), "%.4g");
     note_item(label, false);
-    if (!changed) return false;
-    double next = from_widget(f);
-    if (bounded) next = std::clamp(next, min, max);
-    if (!std::isfinite(next) || next == value) return false;
+    const double next = changed ? from_widget(f) : value;
+    const bool refused = changed && outside(next, min, max);
+    const bool accepted = changed && !refused && next != value;
+    settle_refusal(id, label, refused, accepted, next, why);
+    if (!accepted) return false;
     value = next;
     return true;
 }
 
-bool edit_vector(const char* label, Vec3& value, float speed) {
+bool edit_vector(const char* label, Vec3& value, float speed, double min, double max,
+                 const std::function<std::string()>& why) {
+    const ImGuiID id = ImGui::GetID(label);
     float f[3] = {static_cast<float>(value.x), static_cast<float>(value.y),
                   static_cast<float>(value.z)};
-    const bool changed = ImGui::DragFloat3(label, f, speed, 0.0f, 0.0f, "%.4g");
+    const bool changed = ImGui::DragFloat3(label, f, speed, static_cast<float>(min),
+                                           static_cast<float>(max), "%.4g");
     note_item(label, false);
-    if (!changed) return false;
     Vec3 next = value;
-    for (int i = 0; i < 3; ++i)
-        if (f[i] != static_cast<float>(value[i]) && std::isfinite(f[i]))
-            next[i] = from_widget(f[i]);
-    if (next == value) return false;
+    bool refused = false;
+    double typed = 0.0;
+    for (int i = 0; changed && i < 3; ++i) {
+        if (f[i] == static_cast<float>(value[i])) continue;  // untouched: stays exact
+        next[i] = from_widget(f[i]);
+        if (outside(next[i], min, max)) {
+            refused = true;
+            typed = next[i];
+        }
+    }
+    const bool accepted = changed && !refused && next != value;
+    settle_refusal(id, label, refused, accepted, typed, why);
+    if (!accepted) return false;
     value = next;
     return true;
 }

@@ -17,4 +17,12 @@ inline constexpr int kMaxSamples = 1024;
 // keeps one entry per bounce on its stack, so this also bounds that stack.
 inline constexpr int kMaxRecurseDepth = 256;
 
+// The largest magnitude of any number a scene holds (a position, a radius, a
+// scale, an intensity...). Secondary rays start 1e-9 of the distances involved
+// off their surface (docs/language.md §8.5), so past 1e9 a surface a unit from
+// the camera can no longer be told from its own lift, and a value this large
+// next to unit-sized ones renders as noise. A scene made larger or smaller as
+// a whole keeps its image; only the numbers written are held to this bound.
+inline constexpr double kMaxMagnitude = 1e9;
+
 }  // namespace jt

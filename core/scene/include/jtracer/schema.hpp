@@ -40,10 +40,10 @@ enum class ValueKind {
 
 // The values a property accepts. Past a bound a value is an error, or, for a
 // clamping bound, it is moved onto the bound with a warning.
+// A bound left unset is the language's limit on every number, kMaxMagnitude.
 struct ValueRange {
-    static constexpr double unbounded = std::numeric_limits<double>::infinity();
-    double low = -unbounded;
-    double high = unbounded;
+    double low = -kMaxMagnitude;
+    double high = kMaxMagnitude;
     bool low_open = false;  // low itself is outside
     bool high_open = false;
     bool clamp_low = false;  // below low: clamped to low (never with low_open)

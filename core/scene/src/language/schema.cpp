@@ -88,8 +88,8 @@ std::string range_rule(const ValueRange& range, ValueKind kind, std::string_view
         return rule;
     }
     // Only the bounds past which a value is an error; clamping bounds are not rules.
-    const bool low = std::isfinite(range.low) && !range.clamp_low;
-    const bool high = std::isfinite(range.high) && !range.clamp_high;
+    const bool low = !range.clamp_low;
+    const bool high = !range.clamp_high;
     const std::string l = number_text(range.low), h = number_text(range.high);
     std::string u;  // built with append: GCC 12 warns falsely on "literal" + std::string&&
     if (!unit.empty()) u.append(1, ' ').append(unit);
