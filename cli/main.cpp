@@ -2,10 +2,10 @@
 // file only orders the steps and maps failures to exit codes.
 
 #include "diff_command.hpp"
+#include "info_command.hpp"
 #include "list_cameras.hpp"
 #include "memory_budget.hpp"
 #include "options.hpp"
-#include "scene_info.hpp"
 
 #include "jtracer/frontend/frame_setup.hpp"
 #include "jtracer/frontend/progress.hpp"

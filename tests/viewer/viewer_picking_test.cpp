@@ -4,6 +4,7 @@
 
 #include "app/headless.hpp"
 #include "app/keys.hpp"
+#include "common/files.hpp"
 #include "jtracer/render_job.hpp"
 #include "model/app_actions.hpp"
 #include "model/picking.hpp"
@@ -13,7 +14,10 @@
 
 #include <chrono>
 #include <cstdio>
+#include <filesystem>
+#include <string>
 #include <thread>
+#include <vector>
 
 namespace jt::view {
 namespace {
@@ -254,6 +258,49 @@ TEST_F(ViewerPicking, AddPointLightOpensTheNewLightInItsPanel) {
     for (int i = 0; i < 2; ++i) viewer.frame(state);
     EXPECT_EQ(state.selection.kind, Kind::light);
     EXPECT_NE(find_item(viewer.ui_items(), "intensity"), nullptr) << "the new light's fields";
+}
+
+// Issue 32: a selected mesh shows what jtracer-cli info prints of it: its
+// triangles, its bounds and size in world units, its file.
+TEST(ViewerMeshFigures, TheObjectsPanelShowsTheSelectedMeshsTrianglesBoundsAndSize) {
+    const std::filesystem::path dir = make_scratch_dir("mesh-figures");
+    // A unit cube about the origin: 12 triangles, its 8 corners read as 24
+    // vertices (one a face corner, as Assimp reads OBJ faces).
+    std::string cube;
+    for (int i = 0; i < 8; ++i)
+        cube += "v " + std::to_string(i & 1 ? 0.5 : -0.5) + " " +
+                std::to_string(i & 2 ? 0.5 : -0.5) + " " + std::to_string(i & 4 ? 0.5 : -0.5) +
+                "\n";
+    cube += "f 1 3 4 2\nf 5 6 8 7\nf 1 2 6 5\nf 3 7 8 4\nf 1 5 7 3\nf 2 4 8 6\n";
+    write_file(dir / "cube.obj", cube);
+    write_file(dir / "scene.jts", R"(render_settings { width: 48; height: 32; }
+cameras { perspective_camera { position: <10, 3, 12>; look_at: <10, 0, 0>; aspect: 1.5; } }
+scene {
+    sphere { center: <0, 0, 0>; radius: 1; }
+    mesh { file: "cube.obj"; transform { scale: <2, 4, 2>; translate: <10, 0, 0>; } }
+    point_light { position: <5, 5, 5>; intensity: <1, 1, 1>; }
+}
+)");
+    HeadlessViewer viewer(960, 900);
+    ASSERT_TRUE(viewer.ok()) << viewer.error();
+    AppState state{test_config()};
+    open_scene(state, dir / "scene.jts");
+    ASSERT_TRUE(viewer.run_until_complete(state, kTimeout));
+    const std::vector<std::string> figures = {"12 triangles, 24 vertices, normals generated",
+                                              "bounds <9, -2, -1> to <11, 2, 1>", "size <2, 4, 2>"};
+    select(state, {Kind::primitive, 0});  // the sphere: no figures
+    for (int i = 0; i < 3; ++i) viewer.frame(state);
+    for (const std::string& line : figures) EXPECT_EQ(find_item(viewer.ui_items(), line), nullptr);
+    select(state, {Kind::primitive, 1});
+    for (int i = 0; i < 3; ++i) viewer.frame(state);
+    for (const std::string& line : figures)
+        EXPECT_NE(find_item(viewer.ui_items(), line), nullptr) << line;
+    // The figures follow an edit of the mesh's transforms.
+    edit_scene(state,
+               [](Scene& scene) { scene.primitives[1].transforms.back().vector = Vec3(20, 0, 0); });
+    for (int i = 0; i < 3; ++i) viewer.frame(state);
+    EXPECT_NE(find_item(viewer.ui_items(), "bounds <19, -2, -1> to <21, 2, 1>"), nullptr);
+    std::filesystem::remove_all(dir);
 }
 
 }  // namespace

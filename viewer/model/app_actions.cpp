@@ -179,7 +179,10 @@ namespace {
 // no longer loads is reported where the scene names it and keeps the last
 // image (update_render), and one that loads is shown.
 void files_changed(AppState& state, bool models) {
-    if (models) state.renderer.forget_prepared();
+    if (models) {
+        state.renderer.forget_prepared();
+        state.mesh_figures.reset();
+    }
     state.checked_revision.reset();
     state.rejected.reset();
     state.started.reset();

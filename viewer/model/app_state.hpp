@@ -5,6 +5,7 @@
 // and keeps the texture itself.
 
 #include "jtracer/region.hpp"
+#include "jtracer/scene_info.hpp"
 #include "model/drag_geometry.hpp"
 #include "model/file_watcher.hpp"
 #include "model/free_camera.hpp"
@@ -117,6 +118,14 @@ struct ObjectDrag {
     std::chrono::steady_clock::time_point last_write;
 };
 
+// The figures of the mesh the Objects panel shows (scene_info.hpp), worked
+// out once per selection and scene revision, not every frame.
+struct MeshFigures {
+    int primitive = -1;
+    std::uint64_t revision = 0;           // SceneDocument::revision
+    Expected<MeshInfo> info = Error{""};  // or why its model does not load
+};
+
 // How the image shows against a snapshot A (ab_compare.hpp).
 enum class CompareMode {
     live,        // the live image alone
@@ -197,6 +206,7 @@ struct AppState {
     std::string inspected;          // what the pixel under the mouse holds, or empty
     ShownFrame shown_frame;         // what picking picks in
     PrimitiveIds primitive_ids;     // what every pixel shows, for the selection's outline
+    std::optional<MeshFigures> mesh_figures;  // forgotten when a model file changes
 
     RenderController renderer;
     std::optional<RenderRequest> started;   // the request the current render answers

@@ -81,6 +81,20 @@ Selection current_selection(const AppState& state) {
     return s;
 }
 
+const Expected<MeshInfo>& mesh_figures(AppState& state, int primitive) {
+    std::optional<MeshFigures>& kept = state.mesh_figures;
+    if (!kept || kept->primitive != primitive || kept->revision != state.doc.revision) {
+        const auto& primitives = state.doc.scene.primitives;
+        kept.emplace();
+        kept->primitive = primitive;
+        kept->revision = state.doc.revision;
+        if (primitive >= 0 && static_cast<std::size_t>(primitive) < primitives.size())
+            kept->info =
+                mesh_info(state.doc.scene, primitives[static_cast<std::size_t>(primitive)]);
+    }
+    return kept->info;
+}
+
 std::shared_ptr<const PrimitiveIdImage> shown_primitive_ids(AppState& state) {
     const std::shared_ptr<const PreparedFrame> frame = shown_frame(state);
     if (!frame) return nullptr;

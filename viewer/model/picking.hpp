@@ -35,6 +35,10 @@ void select_at(AppState& state, double x, double y, double marker_radius);
 // The selection while it still names a primitive or light of the scene, else none.
 Selection current_selection(const AppState& state);
 
+// The figures of mesh `primitive` of the scene (its model from the shared
+// cache), kept in state.mesh_figures until the scene or the selection changes.
+const Expected<MeshInfo>& mesh_figures(AppState& state, int primitive);
+
 // The ids of the primitives every pixel shows, once computed off the UI
 // thread (asked for here), or null until then.
 std::shared_ptr<const PrimitiveIdImage> shown_primitive_ids(AppState& state);

@@ -11,6 +11,7 @@
 #include <imgui_stdlib.h>
 
 #include <algorithm>
+#include <cstdio>
 #include <functional>
 #include <string>
 #include <variant>
@@ -99,6 +100,43 @@ void model_file_row(AppState& state, const Mesh& mesh, std::size_t i,
         command = [&state, i] { reload_model(state, i); };
 }
 
+// "<1, 0.5, 2.25>" to six digits, as jtracer-cli info prints it: a model's
+// single-precision corners in full would be noise.
+std::string figure_vector(const Vec3& v) {
+    char text[96];
+    std::snprintf(text, sizeof text, "<%g, %g, %g>", v.x, v.y, v.z);
+    return text;
+}
+
+// A line of text, recorded under itself so that the tests can find it.
+void figure_line(const std::string& text) {
+    ImGui::TextUnformatted(text.c_str());
+    note_item(text.c_str(), false);
+}
+
+// What the selected mesh's model holds and where it lies (scene_info.hpp), as
+// jtracer-cli info prints it.
+void mesh_figure_rows(AppState& state, int primitive) {
+    const Expected<MeshInfo>& figures = mesh_figures(state, primitive);
+    if (!figures) {
+        ImGui::TextDisabled("the model does not load: see Diagnostics");
+        return;
+    }
+    figure_line(std::to_string(figures->triangles) + " triangles, " +
+                std::to_string(figures->vertices) + " vertices, normals " +
+                (figures->file_normals ? "from the file" : "generated"));
+    if (figures->world_box.empty()) {
+        ImGui::TextDisabled("no triangle in the world (none, or flattened)");
+    } else {
+        figure_line("bounds " + figure_vector(*figures->world_box.lower) + " to " +
+                    figure_vector(*figures->world_box.upper));
+        figure_line("size " + figure_vector(figures->world_box.size()));
+    }
+    ImGui::PushTextWrapPos(0.0f);
+    ImGui::TextDisabled("file %s", figures->path.string().c_str());
+    ImGui::PopTextWrapPos();
+}
+
 }  // namespace
 
 void add_object_menu(AppState& state) {
@@ -168,7 +206,10 @@ void objects_panel(AppState& state) {
     if (button("Delete", "Remove this object's block from the text (Ctrl+Z brings it back)"))
         command = [&state, ref] { delete_block(state, ref); };
     if (shape_editor(p.shape)) note_scene_changed(state.doc);
-    if (const auto* mesh = std::get_if<Mesh>(&p.shape)) model_file_row(state, *mesh, i, command);
+    if (const auto* mesh = std::get_if<Mesh>(&p.shape)) {
+        model_file_row(state, *mesh, i, command);
+        mesh_figure_rows(state, selected);
+    }
     ImGui::Separator();
     ImGui::TextDisabled("material");
     if (!has_child(state.doc, i, "material")) {

@@ -1,5 +1,6 @@
 #include "render/embree_device.hpp"
 
+#include <atomic>
 #include <cstdio>
 #include <cstdlib>
 
@@ -32,6 +33,15 @@ const char* error_name(RTCError code) {
     return "unknown error";
 }
 
+std::atomic<std::int64_t> device_bytes{0};
+
+// Counts, never refuses: Embree calls it before each allocation (bytes > 0)
+// and after each release (bytes < 0), from whichever thread builds.
+bool count_embree_bytes(void*, ssize_t bytes, bool) {
+    device_bytes.fetch_add(bytes, std::memory_order_relaxed);
+    return true;
+}
+
 struct Device {
     RTCDevice handle = nullptr;
     std::string failure;
@@ -46,6 +56,7 @@ const Device& device() {
         made.handle = rtcNewDevice(config);
         if (made.handle) {
             rtcSetDeviceErrorFunction(made.handle, report_embree_error, nullptr);
+            rtcSetDeviceMemoryMonitorFunction(made.handle, count_embree_bytes, nullptr);
         } else {
             made.failure = "cannot start Embree";
             if (config)
@@ -61,6 +72,10 @@ const Device& device() {
 
 RTCDevice embree_device() {
     return device().handle;
+}
+
+std::int64_t embree_device_bytes() {
+    return device_bytes.load(std::memory_order_relaxed);
 }
 
 std::string embree_device_failure() {

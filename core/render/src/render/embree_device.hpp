@@ -8,6 +8,7 @@
 
 #include <embree3/rtcore.h>
 
+#include <cstdint>
 #include <string>
 
 namespace jt {
@@ -16,6 +17,10 @@ inline constexpr const char* kEmbreeConfigVariable = "JTRACER_EMBREE_CONFIG";
 
 // Null when Embree could not start; embree_device_failure() says why.
 RTCDevice embree_device();
+
+// The bytes Embree's device holds now (its acceleration structures and the
+// buffers it allocated), as its memory monitor counts them; 0 before it starts.
+std::int64_t embree_device_bytes();
 
 // "cannot start Embree with JTRACER_EMBREE_CONFIG='isa=foo': ..." after a
 // failed start, empty otherwise.

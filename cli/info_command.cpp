@@ -1,0 +1,187 @@
+#include "info_command.hpp"
+
+#include "jtracer/frontend/command_line.hpp"
+#include "jtracer/frontend/render_flags.hpp"
+#include "jtracer/scene_file.hpp"
+#include "jtracer/scene_info.hpp"
+#include "jtracer/validate.hpp"
+
+#include <CLI/CLI.hpp>
+#include <glm/geometric.hpp>
+#include <nlohmann/json.hpp>
+
+#include <cstdio>
+#include <iostream>
+
+namespace jt::cli {
+
+using nlohmann::json;
+using namespace frontend;
+
+namespace {
+
+json vec(const Vec3& v) {
+    return json::array({v.x, v.y, v.z});
+}
+json box_json(const WorldBox& b) {
+    return b.empty() ? json() : json{{"lower", vec(*b.lower)}, {"upper", vec(*b.upper)}};
+}
+
+// Everything `info` reports, as JSON; the text form is printed from it.
+Expected<json> describe(const Scene& scene) {
+    const Expected<SceneInfo> info = scene_info(scene);
+    if (!info) return info.error();
+    json out;
+    json meshes = json::array();
+    for (const MeshInfo& m : info->meshes)
+        meshes.push_back({{"file", m.file},
+                          {"path", m.path.string()},
+                          {"triangles", m.triangles},
+                          {"vertices", m.vertices},
+                          {"normals", m.file_normals ? "file" : "generated"},
+                          {"shading", m.shading},
+                          {"bbox", box_json(m.world_box)},
+                          {"load_seconds", m.load_seconds},
+                          {"read_before", m.read_before}});
+    out["primitives"] = info->primitives;
+    out["meshes"] = meshes;
+    out["bbox"] = box_json(info->world_box);
+    out["unbounded"] = info->unbounded;
+    out["left_out"] = info->left_out;
+
+    json maps = json::array();
+    for (const ImageMapInfo& map : info->image_maps)
+        maps.push_back({{"path", map.path.string()},
+                        {"width", map.width},
+                        {"height", map.height},
+                        {"bytes", map.bytes}});
+    out["image_maps"] = maps;
+
+    json lights = json::array();
+    for (const PointLight& l : scene.lights)
+        lights.push_back({{"position", vec(l.position)}, {"intensity", vec(l.intensity)}});
+    out["lights"] = lights;
+
+    json cameras = json::array();
+    const int active = active_camera_index(scene);
+    for (std::size_t i = 0; i < scene.cameras.size(); ++i) {
+        const Camera& c = scene.cameras[i];
+        cameras.push_back({{"name", c.name},
+                           {"position", vec(c.position)},
+                           {"look_at", vec(c.look_at)},
+                           {"direction", vec(glm::normalize(c.look_at - c.position))},
+                           {"fov", c.fov},
+                           {"active", static_cast<int>(i) == active}});
+    }
+    out["cameras"] = cameras;
+    const SceneMemory& memory = info->memory;
+    out["memory"] = {{"models", memory.models},
+                     {"image_maps", memory.image_maps},
+                     {"primitives", memory.primitives},
+                     {"embree", memory.embree},
+                     {"total", memory.total()}};
+    return out;
+}
+
+std::string vec_text(const json& v) {
+    char text[96];
+    std::snprintf(text, sizeof text, "<%g, %g, %g>", v[0].get<double>(), v[1].get<double>(),
+                  v[2].get<double>());
+    return text;
+}
+
+std::string box_text(const json& b) {
+    if (b.is_null()) return "none";
+    return vec_text(b["lower"]) + " to " + vec_text(b["upper"]);
+}
+
+std::string mib(std::size_t bytes) {
+    char text[32];
+    std::snprintf(text, sizeof text, "%.2f MiB", static_cast<double>(bytes) / (1 << 20));
+    return text;
+}
+
+void print_text(const json& d) {
+    std::cout << "primitives:";
+    for (const auto& [kind, count] : d["primitives"].items())
+        std::cout << " " << kind << " " << count;
+    std::cout << "\n";
+    for (const json& m : d["meshes"]) {
+        char read[48];
+        std::snprintf(read, sizeof read, "read in %.3f s", m["load_seconds"].get<double>());
+        std::cout << "mesh " << m["file"].get<std::string>() << ": " << m["triangles"]
+                  << " triangles, " << m["vertices"] << " vertices, normals "
+                  << m["normals"].get<std::string>() << ", " << m["shading"].get<std::string>()
+                  << "; world box " << box_text(m["bbox"]) << "; "
+                  << (m["read_before"].get<bool>() ? "the file of an earlier mesh" : read) << "\n";
+    }
+    std::cout << "world box: " << box_text(d["bbox"]);
+    if (d["unbounded"].get<int>() > 0)
+        std::cout << " (and " << d["unbounded"] << " unbounded planes)";
+    std::cout << "\n";
+    for (const json& map : d["image_maps"])
+        std::cout << "image map " << map["path"].get<std::string>() << ": " << map["width"] << "x"
+                  << map["height"] << ", " << mib(map["bytes"].get<std::size_t>()) << "\n";
+    for (const json& l : d["lights"])
+        std::cout << "point light at " << vec_text(l["position"]) << ", intensity "
+                  << vec_text(l["intensity"]) << "\n";
+    for (const json& c : d["cameras"])
+        std::cout << "camera \"" << c["name"].get<std::string>() << "\""
+                  << (c["active"].get<bool>() ? " (active)" : "") << ": at "
+                  << vec_text(c["position"]) << " looking at " << vec_text(c["look_at"])
+                  << " (direction " << vec_text(c["direction"]) << "), fov " << c["fov"] << "\n";
+    const json& memory = d["memory"];
+    std::cout << "memory of the prepared scene: " << mib(memory["total"].get<std::size_t>())
+              << " (models " << mib(memory["models"].get<std::size_t>()) << ", image maps "
+              << mib(memory["image_maps"].get<std::size_t>())
+              << ", Embree's acceleration structure and triangles "
+              << mib(memory["embree"].get<std::size_t>()) << ")\n";
+}
+
+}  // namespace
+
+int run_info_command(int argc, char** argv) {
+    std::string scene_path;
+    bool json_output = false;
+    CLI::App app{"jtracer-cli info: what a scene holds once loaded.", "jtracer-cli info"};
+    app.footer(
+        "Prints the primitives of each kind; each mesh with its file, triangles, vertices,\n"
+        "where its normals come from, its box in world space and the time it took to read;\n"
+        "the scene's world box; each image map's size and memory; the lights; the cameras\n"
+        "and where they look; and the prepared scene's memory, Embree's counted as it\n"
+        "builds (info prepares the scene as a render would).\n"
+        "\n"
+        "Examples:\n"
+        "  jtracer-cli info scenes/mesh.jts\n"
+        "  jtracer-cli info scenes/mesh.jts --json\n"
+        "\n"
+        "Exit codes: 0 ok, 1 errors in the scene, 2 bad command line, 3 a file that cannot\n"
+        "be read.\n");
+    app.add_option("scene", scene_path, "The scene file (.jts)")->required();
+    app.add_flag("--json", json_output, "Print it all as one JSON object");
+    if (std::optional<int> code = parse_command_line(app, argc, argv, "jtracer-cli info"))
+        return *code;
+    Expected<LoadedScene> loaded = load_scene_file(scene_path, {.source_map = false});
+    if (!loaded) {
+        std::cerr << "jtracer-cli info: " << loaded.error().message << "\n";
+        return exit_io_error;
+    }
+    std::vector<Diagnostic> diagnostics = check_scene(*loaded);
+    name_setting_flags(diagnostics);
+    if (has_errors(diagnostics)) {
+        std::cerr << format_diagnostics(diagnostics, loaded->path, loaded->text);
+        return exit_scene_error;
+    }
+    const Expected<json> description = describe(loaded->parsed.scene);
+    if (!description) {
+        std::cerr << "jtracer-cli info: " << description.error().message << "\n";
+        return exit_io_error;
+    }
+    if (json_output)
+        std::cout << description->dump() << "\n";
+    else
+        print_text(*description);
+    return exit_ok;
+}
+
+}  // namespace jt::cli

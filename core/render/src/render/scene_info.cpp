@@ -1,0 +1,122 @@
+#include "jtracer/scene_info.hpp"
+
+#include "jtracer/affine.hpp"
+#include "jtracer/model_cache.hpp"
+#include "jtracer/primitive_bounds.hpp"
+#include "jtracer/render_job.hpp"
+#include "jtracer/schema.hpp"
+#include "jtracer/texture.hpp"
+#include "render/embree_device.hpp"
+
+#include <algorithm>
+#include <chrono>
+
+namespace jt {
+
+void WorldBox::add(const Vec3& point) {
+    lower = lower ? glm::min(*lower, point) : point;
+    upper = upper ? glm::max(*upper, point) : point;
+}
+
+void WorldBox::add(const WorldBox& box) {
+    if (!box.empty()) add(*box.lower), add(*box.upper);
+}
+
+namespace {
+
+std::size_t model_bytes(const Model& m) {
+    return m.positions.size() * sizeof(m.positions[0]) + m.normals.size() * sizeof(m.normals[0]) +
+           m.uvs.size() * sizeof(m.uvs[0]) + m.triangles.size() * sizeof(m.triangles[0]);
+}
+
+bool has_normals(const Model& m) {
+    return std::any_of(m.normals.begin(), m.normals.end(),
+                       [](const glm::vec3& n) { return n != glm::vec3(0.0f); });
+}
+
+struct ReadModel {
+    Expected<Model> model = Error{""};
+    double seconds = 0.0;
+};
+
+}  // namespace
+
+MeshInfo mesh_info(const Scene& scene, const Primitive& primitive, const Mesh& mesh,
+                   const Model& model) {
+    MeshInfo info;
+    info.file = mesh.file;
+    info.path = asset_path(scene, mesh.file);
+    info.triangles = model.triangles.size();
+    info.vertices = model.positions.size();
+    info.file_normals = has_normals(model);
+    info.shading = mesh.shading;
+    const auto transform = object_transform(primitive.transforms);
+    if (const auto* placed = std::get_if<ObjectTransform>(&transform))
+        for (const auto& triangle : model.triangles)
+            for (std::uint32_t corner : triangle)
+                info.world_box.add(apply_point(placed->to_world, Vec3(model.positions[corner])));
+    return info;
+}
+
+Expected<MeshInfo> mesh_info(const Scene& scene, const Primitive& primitive) {
+    const auto* mesh = std::get_if<Mesh>(&primitive.shape);
+    if (!mesh) return Error{"not a mesh"};
+    const Expected<std::shared_ptr<const Model>> model =
+        shared_model(asset_path(scene, mesh->file), scene.asset_folder);
+    if (!model) return model.error();
+    return mesh_info(scene, primitive, *mesh, **model);
+}
+
+Expected<SceneInfo> scene_info(const Scene& scene) {
+    SceneInfo info;
+    for (const Shape& kind :
+         {Shape{Sphere{}}, Shape{Plane{}}, Shape{Cylinder{}}, Shape{Triangle{}}, Shape{Mesh{}}})
+        info.primitives[std::string(keyword_of(kind))] = 0;
+    std::map<std::filesystem::path, ReadModel> models;  // each file read once, timed
+    for (const Primitive& p : scene.primitives) {
+        ++info.primitives[std::string(keyword_of(p.shape))];
+        if (!std::holds_alternative<ObjectTransform>(object_transform(p.transforms))) {
+            ++info.left_out;
+            continue;
+        }
+        if (std::holds_alternative<Plane>(p.shape)) {
+            ++info.unbounded;
+        } else if (const auto* mesh = std::get_if<Mesh>(&p.shape)) {
+            const std::filesystem::path path = asset_path(scene, mesh->file);
+            auto [at, fresh] = models.try_emplace(path);
+            if (fresh) {
+                const auto start = std::chrono::steady_clock::now();
+                at->second.model = read_model(path, scene.asset_folder);
+                at->second.seconds =
+                    std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
+                if (at->second.model) info.memory.models += model_bytes(*at->second.model);
+            }
+            if (!at->second.model) return at->second.model.error();
+            MeshInfo row = mesh_info(scene, p, *mesh, *at->second.model);
+            row.load_seconds = at->second.seconds;
+            row.read_before = !fresh;
+            info.world_box.add(row.world_box);
+            info.meshes.push_back(std::move(row));
+        } else if (const std::optional<Bounds> box = primitive_bounds(p)) {
+            info.world_box.add(box->lower);
+            info.world_box.add(box->upper);
+        }
+    }
+    for (const std::filesystem::path& path : named_files(scene).images) {
+        const Expected<std::shared_ptr<const Texture>> texture = load_texture(path);
+        if (!texture) return texture.error();
+        const std::size_t bytes = (*texture)->rgb8.size() + (*texture)->rgb16.size() * 2;
+        info.memory.image_maps += bytes;
+        info.image_maps.push_back({path, (*texture)->width, (*texture)->height, bytes});
+    }
+    info.memory.primitives = scene.primitives.size() * sizeof(Primitive);
+
+    const std::int64_t before = embree_device_bytes();
+    const Expected<std::shared_ptr<const PreparedScene>> prepared = prepare_scene(scene);
+    if (!prepared) return prepared.error();
+    info.memory.embree =
+        static_cast<std::size_t>(std::max<std::int64_t>(embree_device_bytes() - before, 0));
+    return info;
+}
+
+}  // namespace jt
