@@ -75,12 +75,12 @@ double ms_between(Clock::time_point t0, Clock::time_point t) {
 
 // The steps the viewer recorded, for the render (and load) that answered.
 void add_steps(Timing& timing, const AppState& state, Clock::time_point t0, bool load) {
-    const RunTimeline run = state.renderer.timeline();
+    const RunTimeline run = state.render.renderer.timeline();
     timing.start_call_ms = ms_between(t0, run.started);
     if (run.prepared) timing.prepared_ms = ms_between(t0, *run.prepared);
     if (run.first_pass) timing.rendered_ms = ms_between(t0, *run.first_pass);
     if (!load) return;
-    const LoadTimes& l = state.last_load_times;
+    const LoadTimes& l = state.files.last_load_times;
     timing.load_started_ms = ms_between(t0, l.started);
     timing.read_ms = ms_between(t0, l.read);
     timing.parsed_ms = ms_between(t0, l.parsed);
@@ -103,7 +103,7 @@ void pace(const AppState& state, Clock::time_point frame_start) {
         std::this_thread::sleep_until(
             frame_start + std::chrono::microseconds(static_cast<long>(frame_interval_ms * 1000)));
     const std::uint64_t seen = state.wakeup.count();
-    if (wait_for_workers && waiting_for_workers(state))
+    if (wait_for_workers && waiting_for_workers(state.files, state.render))
         state.wakeup.wait(seen, Clock::now() + std::chrono::milliseconds(50));
 }
 
@@ -114,11 +114,11 @@ Timing frames_until_first_pass(HeadlessViewer& viewer, AppState& state, Clock::t
     for (auto frame_start = t0;; frame_start = Clock::now()) {
         viewer.frame(state);
         glFinish();
-        const bool new_job = state.renderer.jobs_started() > jobs_before;
+        const bool new_job = state.render.renderer.jobs_started() > jobs_before;
         if (timing.started_ms == 0 && new_job) timing.started_ms = ms_since(t0);  // this frame
         // The frame fetched the first pass (in the frame that started the
         // render, when it came within the wait; else in a later one).
-        if (new_job && state.passes_shown >= 1) {
+        if (new_job && state.render.passes_shown >= 1) {
             timing.shown_ms = ms_since(t0);
             add_steps(timing, state, t0, load);
             return timing;
@@ -276,26 +276,26 @@ int main(int argc, char** argv) {
         settle(state);
         // Saved by an editor: every other time with the floor recoloured.
         std::ofstream(file, std::ios::binary) << (i % 2 ? text : recoloured);
-        const auto jobs = state.renderer.jobs_started();
+        const auto jobs = state.render.renderer.jobs_started();
         const auto t0 = Clock::now();
         reload_scene(state);
         reload.runs.push_back(frames_until_first_pass(viewer, state, t0, jobs, true));
     }
     for (int i = 0; i < runs; ++i) {
         settle(state);
-        const auto jobs = state.renderer.jobs_started();
+        const auto jobs = state.render.renderer.jobs_started();
         const auto t0 = Clock::now();
         edit_scene(state, [&](Scene& s) {
             s.primitives[0].material.pigment = Colour(0.2 + 0.03 * (i % 20), 0.4, 0.6);
         });
         material.runs.push_back(frames_until_first_pass(viewer, state, t0, jobs));
     }
-    use_free_camera(state);
+    use_free_camera(state.view, state.doc.scene);
     for (int i = 0; i < runs; ++i) {
         settle(state);
-        const auto jobs = state.renderer.jobs_started();
+        const auto jobs = state.render.renderer.jobs_started();
         const auto t0 = Clock::now();
-        orbit(state.free_camera, i % 2 ? -15.0f : 15.0f, 0.0f, 720.0f);
+        orbit(state.view.free_camera, i % 2 ? -15.0f : 15.0f, 0.0f, 720.0f);
         camera.runs.push_back(frames_until_first_pass(viewer, state, t0, jobs));
     }
     std::filesystem::remove(file);

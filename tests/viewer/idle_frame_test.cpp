@@ -133,10 +133,10 @@ TEST_F(IdleFrame, AWholeFrameCopiesNoScene) {
 
 TEST_F(IdleFrame, AnEditAfterIdleFramesStillRendersAndUndoes) {
     for (int i = 0; i < 3; ++i) viewer.frame(state);
-    const std::uint64_t jobs = state.renderer.jobs_started();
+    const std::uint64_t jobs = state.render.renderer.jobs_started();
     edit_scene(state, [](Scene& s) { s.primitives[7].material.pigment = Colour(1, 0, 0); });
     viewer.frame(state);
-    EXPECT_GT(state.renderer.jobs_started(), jobs) << "the edit starts a render";
+    EXPECT_GT(state.render.renderer.jobs_started(), jobs) << "the edit starts a render";
     undo(state);
     viewer.frame(state);
     EXPECT_EQ(state.doc.scene, state.doc.original);

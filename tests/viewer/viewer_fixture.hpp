@@ -22,7 +22,8 @@ class ViewerFixture : public ::testing::Test {
     // The window point of image point `p` (pixels from the bottom left) as
     // the last frame drew the image.
     WindowPoint window_point(ImagePoint p) const {
-        return image_to_window(viewer.image_rect(), state.display.width, state.display.height, p);
+        return image_to_window(viewer.image_rect(), state.render.display.width,
+                               state.render.display.height, p);
     }
 
     HeadlessViewer viewer{960, 640};

@@ -44,12 +44,12 @@ class ViewerGl : public ::testing::Test {
 };
 
 TEST_F(ViewerGl, TextureAndScreenShowExactlyTheCoresImage) {
-    state.show_ui = false;
-    state.image_view = actual_pixels_view();
+    state.view.show_ui = false;
+    state.view.image_view = actual_pixels_view();
     open_scene(state, kScene);
-    ASSERT_TRUE(viewer.run_until_complete(state, kTimeout)) << state.render_note;
+    ASSERT_TRUE(viewer.run_until_complete(state, kTimeout)) << state.render.render_note;
     const Image8 expected = core_render(state.doc.scene, 0);
-    EXPECT_EQ(state.display, expected);
+    EXPECT_EQ(state.render.display, expected);
     EXPECT_EQ(viewer.presenter().read_texture(), expected);
 
     // On screen, the image sits centred at one pixel per pixel.
@@ -65,12 +65,12 @@ TEST_F(ViewerGl, TextureAndScreenShowExactlyTheCoresImage) {
 
 TEST_F(ViewerGl, OnHiDpiActualPixelsAreFramebufferPixels) {
     viewer.set_framebuffer_scale(2.0f);  // a 160x120 window on a 320x240 framebuffer
-    state.show_ui = false;
-    state.image_view = actual_pixels_view();
+    state.view.show_ui = false;
+    state.view.image_view = actual_pixels_view();
     open_scene(state, kScene);
     ASSERT_TRUE(viewer.run_until_complete(state, kTimeout));
     const Image8 screen = viewer.screenshot();
-    const Image8& expected = state.display;
+    const Image8& expected = state.render.display;
     const int x0 = (320 - 64) / 2, y0 = (240 - 48) / 2;
     int mismatches = 0;
     for (int y = 0; y < 48; ++y)
@@ -81,12 +81,12 @@ TEST_F(ViewerGl, OnHiDpiActualPixelsAreFramebufferPixels) {
 }
 
 TEST_F(ViewerGl, FitFillsTheAreaKeepingTheAspect) {
-    state.show_ui = false;
+    state.view.show_ui = false;
     open_scene(state, kScene);
     ASSERT_TRUE(viewer.run_until_complete(state, kTimeout));
     // 64x48 fitted into 320x240 is 320x240: every image pixel is a 5x5 block.
     const Image8 screen = viewer.screenshot();
-    const Image8& image = state.display;
+    const Image8& image = state.render.display;
     for (int y : {0, 17, 47})
         for (int x : {0, 31, 63})
             for (int c = 0; c < 3; ++c)
@@ -106,27 +106,27 @@ TEST_F(ViewerGl, OnlyChangedRegionsAreUploadedAfterTheFirst) {
 TEST_F(ViewerGl, SwitchingCameraShowsThatCamerasRender) {
     open_scene(state, kScene);
     ASSERT_TRUE(viewer.run_until_complete(state, kTimeout));
-    const Image8 front = state.display;
+    const Image8 front = state.render.display;
     viewer.press_key(state, keys::letter('C'));
-    EXPECT_EQ(state.camera_index, 1);
+    EXPECT_EQ(state.view.camera_index, 1);
     ASSERT_TRUE(viewer.run_until_complete(state, kTimeout));
-    EXPECT_NE(state.display, front);
-    EXPECT_EQ(state.display, core_render(state.doc.scene, 1));
-    EXPECT_EQ(viewer.presenter().read_texture(), state.display);
+    EXPECT_NE(state.render.display, front);
+    EXPECT_EQ(state.render.display, core_render(state.doc.scene, 1));
+    EXPECT_EQ(viewer.presenter().read_texture(), state.render.display);
 }
 
 TEST_F(ViewerGl, MaterialEditChangesTheImageToTheEditedScenesRender) {
     open_scene(state, kScene);
     ASSERT_TRUE(viewer.run_until_complete(state, kTimeout));
-    const Image8 before = state.display;
+    const Image8 before = state.render.display;
     edit_scene(state, [](Scene& s) { s.primitives[1].material.pigment = Colour(0.1, 0.3, 0.9); });
     ASSERT_TRUE(viewer.run_until_complete(state, kTimeout));
-    EXPECT_NE(state.display, before);
-    EXPECT_EQ(state.display, core_render(state.doc.scene, 0));
-    EXPECT_TRUE(state.undo.can_undo()) << "the edit is one undo step";
+    EXPECT_NE(state.render.display, before);
+    EXPECT_EQ(state.render.display, core_render(state.doc.scene, 0));
+    EXPECT_TRUE(state.history.undo.can_undo()) << "the edit is one undo step";
     viewer.press_key(state, keys::letter('Z'), /*ctrl=*/true);
     ASSERT_TRUE(viewer.run_until_complete(state, kTimeout));
-    EXPECT_EQ(state.display, before) << "undo restores the image";
+    EXPECT_EQ(state.render.display, before) << "undo restores the image";
     viewer.press_key(state, keys::letter('Z'), /*ctrl=*/true, /*shift=*/true);
     EXPECT_EQ(state.doc.scene.primitives[1].material.pigment, Colour(0.1, 0.3, 0.9));
 }
@@ -135,9 +135,9 @@ TEST_F(ViewerGl, BrokenReloadKeepsTheLastImageAndListsDiagnostics) {
     const fs::path file = scene_copy("broken");
     open_scene(state, file);
     ASSERT_TRUE(viewer.run_until_complete(state, kTimeout));
-    const Image8 good = state.display;
+    const Image8 good = state.render.display;
     const Scene good_scene = state.doc.scene;
-    const auto jobs = state.renderer.jobs_started();
+    const auto jobs = state.render.renderer.jobs_started();
 
     // Save by rename, as many editors do, with a missing ';' on line 3.
     write_file(fs::path(file).concat(".new"),
@@ -152,9 +152,9 @@ TEST_F(ViewerGl, BrokenReloadKeepsTheLastImageAndListsDiagnostics) {
     EXPECT_NE(format_diagnostics(state.doc).find("scene.jts:3:"), std::string::npos)
         << format_diagnostics(state.doc);
     EXPECT_EQ(state.doc.scene, good_scene);
-    EXPECT_EQ(state.display, good);
+    EXPECT_EQ(state.render.display, good);
     EXPECT_EQ(viewer.presenter().read_texture(), good);
-    EXPECT_EQ(state.renderer.jobs_started(), jobs) << "no render of a broken scene";
+    EXPECT_EQ(state.render.renderer.jobs_started(), jobs) << "no render of a broken scene";
 
     // Deleted, then garbage: still no crash, still the last image.
     fs::remove(file);
@@ -163,7 +163,7 @@ TEST_F(ViewerGl, BrokenReloadKeepsTheLastImageAndListsDiagnostics) {
     write_file(file, std::string("\x00\xff\xfe garbage {{{", 16));
     ASSERT_TRUE(viewer.run_until_loaded(state));
     EXPECT_TRUE(state.doc.load_failed);
-    EXPECT_EQ(state.display, good);
+    EXPECT_EQ(state.render.display, good);
 
     // Fixed: it loads and renders again.
     fs::copy_file(kScene, file, fs::copy_options::overwrite_existing);
@@ -197,20 +197,20 @@ TEST_F(ViewerGl, SaveSceneWritesOnlyTheEditedValues) {
         EXPECT_EQ(entry.path().filename(), "scene.jts") << "no temporary file left";
 
     // Our own save is not a change from outside: no reload, no new render.
-    const auto jobs = state.renderer.jobs_started();
+    const auto jobs = state.render.renderer.jobs_started();
     for (int i = 0; i < 3; ++i) viewer.frame(state);
-    EXPECT_EQ(state.renderer.jobs_started(), jobs);
+    EXPECT_EQ(state.render.renderer.jobs_started(), jobs);
 }
 
 TEST_F(ViewerGl, FreeCameraCopiedIntoTheSceneIsSavedAsANewCamera) {
     const fs::path file = scene_copy("camera");
     open_scene(state, file);
     viewer.frame(state);
-    use_free_camera(state);
-    orbit(state.free_camera, 40, 10, 240);
+    use_free_camera(state.view, state.doc.scene);
+    orbit(state.view.free_camera, 40, 10, 240);
     copy_free_camera_to_scene(state, "mine");
     ASSERT_EQ(state.doc.scene.cameras.size(), 3u);
-    EXPECT_EQ(state.camera_index, 2);
+    EXPECT_EQ(state.view.camera_index, 2);
     ASSERT_TRUE(save_scene(state)) << state.message;
     ParseResult saved = parse_scene(read_file(file));
     ASSERT_TRUE(saved.ok());
@@ -237,31 +237,31 @@ TEST_F(ViewerGl, ResumeContinuesThePausedRenderWhereItStopped) {
     note_scene_changed(state.doc);
     viewer.frame(state);
     const auto deadline = std::chrono::steady_clock::now() + kTimeout;
-    while (state.renderer.progress().samples_done < 2 &&
+    while (state.render.renderer.progress().samples_done < 2 &&
            std::chrono::steady_clock::now() < deadline)
         viewer.frame(state);
     viewer.press_key(state, keys::space);
-    ASSERT_TRUE(state.paused);
-    const RenderProgress at_pause = state.renderer.progress();
+    ASSERT_TRUE(state.render.paused);
+    const RenderProgress at_pause = state.render.renderer.progress();
     ASSERT_FALSE(at_pause.finished) << "the render finished before the test could pause it";
     ASSERT_GE(at_pause.samples_done, 2);
     // Paused: nothing renders, the image stays.
-    const Image8 paused_image = state.display;
+    const Image8 paused_image = state.render.display;
     std::this_thread::sleep_for(std::chrono::milliseconds(50));
     for (int i = 0; i < 3; ++i) viewer.frame(state);
-    EXPECT_EQ(state.renderer.progress().pass, at_pause.pass);
-    EXPECT_EQ(state.display, paused_image);
-    EXPECT_FALSE(render_complete(state));
+    EXPECT_EQ(state.render.renderer.progress().pass, at_pause.pass);
+    EXPECT_EQ(state.render.display, paused_image);
+    EXPECT_FALSE(render_complete(state.render));
 
-    const auto jobs = state.renderer.jobs_started();
+    const auto jobs = state.render.renderer.jobs_started();
     viewer.press_key(state, keys::space);
-    EXPECT_FALSE(state.paused);
-    EXPECT_GE(state.renderer.progress().samples_done, at_pause.samples_done)
+    EXPECT_FALSE(state.render.paused);
+    EXPECT_GE(state.render.renderer.progress().samples_done, at_pause.samples_done)
         << "samples already accumulated are kept";
     ASSERT_TRUE(viewer.run_until_complete(state, kTimeout));
-    EXPECT_EQ(state.renderer.jobs_started(), jobs) << "the same job continued";
+    EXPECT_EQ(state.render.renderer.jobs_started(), jobs) << "the same job continued";
     // Only the passes left at the pause ran (the interrupted one again).
-    EXPECT_EQ(state.renderer.passes_since_start(), at_pause.pass_count - at_pause.pass);
+    EXPECT_EQ(state.render.renderer.passes_since_start(), at_pause.pass_count - at_pause.pass);
     EXPECT_EQ(viewer.presenter().read_texture(), core_render(state.doc.scene, 0));
 }
 
@@ -271,10 +271,10 @@ TEST_F(ViewerGl, EditsWhilePausedRenderAfresh) {
     viewer.press_key(state, keys::space);
     edit_scene(state, [](Scene& s) { s.primitives[1].material.pigment = Colour(0, 1, 0); });
     viewer.frame(state);
-    const auto jobs = state.renderer.jobs_started();
+    const auto jobs = state.render.renderer.jobs_started();
     viewer.press_key(state, keys::space);
     ASSERT_TRUE(viewer.run_until_complete(state, kTimeout));
-    EXPECT_EQ(state.renderer.jobs_started(), jobs + 1);
+    EXPECT_EQ(state.render.renderer.jobs_started(), jobs + 1);
     EXPECT_EQ(viewer.presenter().read_texture(), core_render(state.doc.scene, 0));
 }
 
@@ -282,18 +282,18 @@ TEST_F(ViewerGl, AnEditCancelsTheRunningRenderAndRestartsAtOnce) {
     open_scene(state, fs::path(JT_SOURCE_DIR) / "scenes" / "showcase.jts");
     edit_scene(state, [](Scene& s) { s.settings.samples = 1024; });  // minutes of work
     viewer.frame(state);
-    const auto jobs = state.renderer.jobs_started();
+    const auto jobs = state.render.renderer.jobs_started();
     std::this_thread::sleep_for(std::chrono::milliseconds(100));
     const auto before = std::chrono::steady_clock::now();
     edit_scene(state, [](Scene& s) { s.lights[0].intensity = Colour(0.5, 0.5, 0.5); });
     viewer.frame(state);
     const auto latency = std::chrono::steady_clock::now() - before;
-    EXPECT_EQ(state.renderer.jobs_started(), jobs + 1);
+    EXPECT_EQ(state.render.renderer.jobs_started(), jobs + 1);
     // The old render has minutes of work left: a frame that waited for it
     // would take that long. Software GL makes any frame slow, so the bound
     // is a hang's, not a latency figure (bench/viewer has those).
     EXPECT_LT(latency, std::chrono::seconds(5)) << "cancel + restart waited for the old render";
-    EXPECT_FALSE(render_complete(state));
+    EXPECT_FALSE(render_complete(state.render));
 }
 
 TEST_F(ViewerGl, TitleShowsTheFileAndTheProgress) {
@@ -306,31 +306,33 @@ TEST_F(ViewerGl, TitleShowsTheFileAndTheProgress) {
 }
 
 TEST_F(ViewerGl, MouseOnTheImageDrivesTheFreeCamera) {
-    state.show_ui = false;  // the image fills the window: 320x240 for a 64x48 image
+    state.view.show_ui = false;  // the image fills the window: 320x240 for a 64x48 image
     open_scene(state, kScene);
     ASSERT_TRUE(viewer.run_until_complete(state, kTimeout));
-    const Image8 scene_view = state.display;
+    const Image8 scene_view = state.render.display;
     const Camera scene_camera = state.doc.scene.cameras[0];
 
     viewer.drag(state, 0, 160, 120, 220, 120);  // left: orbit
-    ASSERT_TRUE(state.free_camera_active);
-    const FreeCamera orbited = state.free_camera;
+    ASSERT_TRUE(state.view.free_camera_active);
+    const FreeCamera orbited = state.view.free_camera;
     EXPECT_NE(orbited.position, scene_camera.position);
     EXPECT_EQ(orbited.look_at, scene_camera.look_at);
     ASSERT_TRUE(viewer.run_until_complete(state, kTimeout));
-    EXPECT_NE(state.display, scene_view);
+    EXPECT_NE(state.render.display, scene_view);
 
     viewer.drag(state, 1, 160, 120, 160, 60);  // right: pan
-    EXPECT_NE(state.free_camera.look_at, orbited.look_at);
-    const double distance = glm::length(state.free_camera.position - state.free_camera.look_at);
+    EXPECT_NE(state.view.free_camera.look_at, orbited.look_at);
+    const double distance =
+        glm::length(state.view.free_camera.position - state.view.free_camera.look_at);
     viewer.scroll(state, 160, 120, 2);  // wheel: dolly closer
-    EXPECT_LT(glm::length(state.free_camera.position - state.free_camera.look_at), distance);
+    EXPECT_LT(glm::length(state.view.free_camera.position - state.view.free_camera.look_at),
+              distance);
     EXPECT_EQ(state.doc.scene.cameras[0], scene_camera) << "the scene's camera is untouched";
 
     viewer.press_key(state, keys::letter('C'));  // back to a scene camera
-    EXPECT_FALSE(state.free_camera_active);
+    EXPECT_FALSE(state.view.free_camera_active);
     ASSERT_TRUE(viewer.run_until_complete(state, kTimeout));
-    EXPECT_EQ(state.display, scene_view);
+    EXPECT_EQ(state.render.display, scene_view);
 }
 
 TEST_F(ViewerGl, ResizingTheRenderResizesTheTexture) {
@@ -341,7 +343,7 @@ TEST_F(ViewerGl, ResizingTheRenderResizesTheTexture) {
         s.settings.height = 30;
     });
     ASSERT_TRUE(viewer.run_until_complete(state, kTimeout));
-    EXPECT_EQ(state.display.width, 40);
+    EXPECT_EQ(state.render.display.width, 40);
     EXPECT_EQ(viewer.presenter().width(), 40);
     EXPECT_EQ(viewer.presenter().read_texture(), core_render(state.doc.scene, 0));
 }
@@ -350,14 +352,14 @@ TEST_F(ViewerGl, ShortcutsReloadAndSaveTheImage) {
     const fs::path file = scene_copy("keys");
     open_scene(state, file);
     ASSERT_TRUE(viewer.run_until_complete(state, kTimeout));
-    state.save_image_path = (file.parent_path() / "key.png").string();
+    state.fields.save_image_path = (file.parent_path() / "key.png").string();
     viewer.press_key(state, keys::letter('S'));
     EXPECT_TRUE(fs::exists(file.parent_path() / "key.png")) << state.message;
 
     edit_scene(state, [](Scene& s) { s.settings.recurse_depth = 0; });
     viewer.press_key(state, keys::letter('R'));  // with unsaved edits: asks first
     ASSERT_TRUE(viewer.run_until_loaded(state));
-    ASSERT_TRUE(state.pending_reload.has_value()) << state.message;
+    ASSERT_TRUE(state.files.pending_reload.has_value()) << state.message;
     EXPECT_EQ(state.doc.scene.settings.recurse_depth, 0);
     viewer.frame(state);
     EXPECT_EQ(find_item(viewer.ui_items(), "Reload, re-apply my edits"), nullptr)
@@ -365,22 +367,23 @@ TEST_F(ViewerGl, ShortcutsReloadAndSaveTheImage) {
     EXPECT_NE(find_item(viewer.ui_items(), "Keep mine"), nullptr);
     resolve_reload(state, ReloadChoice::drop_edits);
     EXPECT_EQ(state.doc.scene.settings.recurse_depth, 2);
-    EXPECT_FALSE(state.undo.can_undo());
+    EXPECT_FALSE(state.history.undo.can_undo());
 }
 
 TEST_F(ViewerGl, AnEditThatMakesTheSceneInvalidKeepsTheImageAndSaysWhy) {
     open_scene(state, kScene);
     ASSERT_TRUE(viewer.run_until_complete(state, kTimeout));
-    const Image8 good = state.display;
-    const auto jobs = state.renderer.jobs_started();
+    const Image8 good = state.render.display;
+    const auto jobs = state.render.renderer.jobs_started();
     edit_scene(state, [](Scene& s) { std::get<Plane>(s.primitives[0].shape).normal = Vec3(0); });
     for (int i = 0; i < 3; ++i) viewer.frame(state);
-    EXPECT_EQ(state.renderer.jobs_started(), jobs);
-    EXPECT_NE(state.render_note.find("normal"), std::string::npos) << state.render_note;
-    EXPECT_EQ(state.display, good);
+    EXPECT_EQ(state.render.renderer.jobs_started(), jobs);
+    EXPECT_NE(state.render.render_note.find("normal"), std::string::npos)
+        << state.render.render_note;
+    EXPECT_EQ(state.render.display, good);
     undo(state);
     ASSERT_TRUE(viewer.run_until_complete(state, kTimeout));
-    EXPECT_TRUE(state.render_note.empty()) << state.render_note;
+    EXPECT_TRUE(state.render.render_note.empty()) << state.render.render_note;
 }
 
 TEST_F(ViewerGl, OpeningAMissingFileExplainsAndKeepsWhatIsOpen) {
@@ -391,12 +394,12 @@ TEST_F(ViewerGl, OpeningAMissingFileExplainsAndKeepsWhatIsOpen) {
     EXPECT_NE(state.doc.diagnostics[0].message.find("no such file"), std::string::npos);
     open_scene(state, kScene);
     ASSERT_TRUE(viewer.run_until_complete(state, kTimeout));
-    const Image8 good = state.display;
+    const Image8 good = state.render.display;
     open_scene(state, "/nonexistent/other.jts");
     viewer.frame(state);
     EXPECT_TRUE(state.doc.loaded);
     EXPECT_EQ(state.doc.path, kScene) << "the open scene stays";
-    EXPECT_EQ(state.display, good);
+    EXPECT_EQ(state.render.display, good);
 }
 
 // A scale component dragged to 0 in the transform panel leaves the primitive
@@ -411,13 +414,13 @@ TEST_F(ViewerGl, ScaleEditedToZeroLeavesThePrimitiveOut) {
                                       {TransformKind::yrotate, Vec3(0.0), 60.0}};
     });
     ASSERT_TRUE(viewer.run_until_complete(state, kTimeout));
-    const Image8 shown = state.display;
+    const Image8 shown = state.render.display;
     edit_scene(state, [](Scene& s) { s.primitives[1].transforms[1].vector.x = 0.0; });
     ASSERT_TRUE(viewer.run_until_complete(state, kTimeout));
     Scene without = state.doc.scene;
     without.primitives.erase(without.primitives.begin() + 1);
-    EXPECT_EQ(state.display, core_render(without, 0));
-    EXPECT_NE(state.display, shown);
+    EXPECT_EQ(state.render.display, core_render(without, 0));
+    EXPECT_NE(state.render.display, shown);
 }
 
 TEST_F(ViewerGl, EscapeAsksToQuit) {
@@ -439,20 +442,21 @@ TEST(Wakeup, FrameAfterTheRendersWakeupShowsTheFirstPass) {
     int frames = 0;
     // The frame that starts the render waits a few milliseconds for the first
     // pass and may show some of its tiles already; the test is about the pass.
-    while (state.passes_shown < 1 && Clock::now() < deadline) {
+    while (state.render.passes_shown < 1 && Clock::now() < deadline) {
         const std::uint64_t seen = state.wakeup.count();
-        if (waiting_for_workers(state)) {
+        if (waiting_for_workers(state.files, state.render)) {
             ASSERT_TRUE(state.wakeup.wait(seen, deadline));
-            EXPECT_FALSE(waiting_for_workers(state)) << "woken with something to show";
+            EXPECT_FALSE(waiting_for_workers(state.files, state.render))
+                << "woken with something to show";
         }
         viewer.frame(state);
         ++frames;
     }
-    ASSERT_GE(state.passes_shown, 1);
+    ASSERT_GE(state.render.passes_shown, 1);
     EXPECT_TRUE(viewer.presenter().has_image());
-    EXPECT_GT(state.renderer.passes_since_start(), 0);
+    EXPECT_GT(state.render.renderer.passes_since_start(), 0);
     EXPECT_LE(frames, 3) << "one frame takes the load in, the next shows the first pass";
-    EXPECT_FALSE(waiting_for_workers(state));
+    EXPECT_FALSE(waiting_for_workers(state.files, state.render));
 }
 
 TEST(Wakeup, FrameThatStartsTheRenderShowsAFirstPassDoneWithinTheWait) {
@@ -463,10 +467,10 @@ TEST(Wakeup, FrameThatStartsTheRenderShowsAFirstPassDoneWithinTheWait) {
     AppState state(config);
     open_scene(state, kScene);
     viewer.frame(state);
-    EXPECT_EQ(state.renderer.jobs_started(), 1u);
-    EXPECT_GT(state.renderer.passes_since_start(), 0);
+    EXPECT_EQ(state.render.renderer.jobs_started(), 1u);
+    EXPECT_GT(state.render.renderer.passes_since_start(), 0);
     EXPECT_TRUE(viewer.presenter().has_image()) << "in the texture in the frame that started it";
-    EXPECT_GE(state.passes_shown, 1);
+    EXPECT_GE(state.render.passes_shown, 1);
 }
 
 }  // namespace

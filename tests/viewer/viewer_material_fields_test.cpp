@@ -28,7 +28,7 @@ TEST(ViewerMaterialFields, ACheckerCanBeSetEditedAndClearedAndAnImageMapNamed) {
     const fs::path file = scene_copy("material-fields");
     open_scene(state, file);
     ASSERT_TRUE(viewer.run_until_complete(state, kTimeout));
-    select(state, {Selection::Kind::primitive, 1});  // the sphere
+    select(state.view, {Selection::Kind::primitive, 1});  // the sphere
     for (int i = 0; i < 4; ++i) viewer.frame(state);
     ASSERT_NE(find_item(viewer.ui_items(), "checker"), nullptr) << "a checker field";
     ASSERT_NE(find_item(viewer.ui_items(), "image_map"), nullptr) << "an image map field";
@@ -64,7 +64,7 @@ TEST(ViewerMaterialFields, AValuePastTheLimitIsRefusedAndTheFieldSaysTheLimit) {
     const fs::path file = scene_copy("field-limit");
     open_scene(state, file);
     ASSERT_TRUE(viewer.run_until_complete(state, kTimeout));
-    select(state, {Selection::Kind::primitive, 1});  // the sphere, radius 1
+    select(state.view, {Selection::Kind::primitive, 1});  // the sphere, radius 1
     for (int i = 0; i < 4; ++i) viewer.frame(state);
     const std::string before = document_text(state.doc);
     auto type_into = [&](const std::string& label, const std::string& text) {

@@ -148,7 +148,7 @@ class Monkey {
     // Edit, then the file changes on disk and is reloaded (the edit dropped
     // at the prompt), over and over: memory must not grow with the cycles.
     void soak(int cycles) {
-        state_.show_ui = false;  // the cycles, not the panels, are what is measured
+        state_.view.show_ui = false;  // the cycles, not the panels, are what is measured
         long after_warm_up = 0;
         const int warm_up = std::min(200, cycles / 4);
         for (int i = 0; i < cycles; ++i) {
@@ -158,7 +158,7 @@ class Monkey {
             viewer_.frame(state_);
             rewrite_scene(texts_[static_cast<std::size_t>(i) % 2]);
             wait_for_load();
-            if (state_.pending_reload) resolve_reload(state_, ReloadChoice::drop_edits);
+            if (state_.files.pending_reload) resolve_reload(state_, ReloadChoice::drop_edits);
             viewer_.frame(state_);
             if (has_unsaved_edits(state_.doc)) fail("edits left after drop_edits");
             if (i + 1 == warm_up) after_warm_up = resident_kib();
@@ -214,15 +214,15 @@ class Monkey {
         const auto deadline = std::chrono::steady_clock::now() + std::chrono::seconds(30);
         do {
             frame();
-        } while (state_.loader.busy() && std::chrono::steady_clock::now() < deadline);
+        } while (state_.files.loader.busy() && std::chrono::steady_clock::now() < deadline);
         frame();
     }
 
     // Whatever the monkey typed, the viewer writes only inside the scratch folder.
     void keep_paths_in_scratch() {
-        state_.save_image_path = (dir_ / "shot.png").string();
-        state_.save_scene_path = (dir_ / (pick(2) ? "copy.jts" : "scene.jts")).string();
-        state_.open_path_input = (pick(4) ? file_ : dir_ / "copy.jts").string();
+        state_.fields.save_image_path = (dir_ / "shot.png").string();
+        state_.fields.save_scene_path = (dir_ / (pick(2) ? "copy.jts" : "scene.jts")).string();
+        state_.fields.open_path_input = (pick(4) ? file_ : dir_ / "copy.jts").string();
     }
 
     void random_event() {
@@ -266,8 +266,8 @@ class Monkey {
             if (pick(2)) {
                 select_camera(state_, pick(4) - 1);
             } else {
-                use_free_camera(state_);
-                orbit(state_.free_camera, uniform(-50, 50), uniform(-50, 50), 240);
+                use_free_camera(state_.view, state_.doc.scene);
+                orbit(state_.view.free_camera, uniform(-50, 50), uniform(-50, 50), 240);
             }
             frame();
         } else if (kind < 84) {
@@ -277,14 +277,14 @@ class Monkey {
         } else if (kind < 88) {
             last_event_ = "click to select";
             const float x = uniform(0, w), y = uniform(0, h);
-            const Selection before = state_.selection;
+            const Selection before = state_.view.selection;
             viewer_.drag(state_, 0, x, y, x, y);
             frames_ += 6;
             check_selection(before);
         } else if (kind < 89) {
             last_event_ = "object filter";
             const char* filters[] = {"", "sphere", "plane 1", "zzz"};
-            state_.object_filter = filters[pick(4)];
+            state_.fields.object_filter = filters[pick(4)];
             frame();
         } else if (kind < 92) {
             structure_edit();
@@ -340,9 +340,9 @@ class Monkey {
                 last_event_ = "compare";
                 const int what = pick(4);
                 if (what == 0) snapshot_a(state_);
-                if (what == 1) state_.compare.mode = static_cast<CompareMode>(pick(4));
-                if (what == 2) state_.compare.split = uniform(-0.2f, 1.2f);
-                if (what == 3) clear_snapshot_a(state_);
+                if (what == 1) state_.view.compare.mode = static_cast<CompareMode>(pick(4));
+                if (what == 2) state_.view.compare.split = uniform(-0.2f, 1.2f);
+                if (what == 3) clear_snapshot_a(state_.view.compare);
                 frame();
                 break;
             }
@@ -357,8 +357,8 @@ class Monkey {
         last_event_ = std::string("Alt+") + (shift ? "Shift+" : "") + "drag" +
                       (escape ? " cancelled by Esc" : "");
         const std::string before = document_text(state_.doc);
-        const std::size_t steps = state_.undo.size();
-        const auto loaded_before = state_.last_load_times.taken;
+        const std::size_t steps = state_.history.undo.size();
+        const auto loaded_before = state_.files.last_load_times.taken;
         // Pressed near the middle of the image (where the test scene's sphere
         // is, and no control) half the time: the text check below needs a
         // press that no control took.
@@ -370,7 +370,7 @@ class Monkey {
         const float x0 = on_image ? cx + uniform(-reach, reach) : uniform(0, w);
         const float y0 = on_image ? cy + uniform(-reach, reach) : uniform(0, h);
         const float x1 = uniform(0, w), y1 = uniform(0, h);
-        const bool prompt = state_.unsaved_prompt.has_value();
+        const bool prompt = state_.files.unsaved_prompt.has_value();
         viewer_.press_mouse(state_, 0, x0, y0, kAlt | (shift ? kShift : kNoModifier));
         viewer_.move_mouse(state_, (x0 + x1) / 2, (y0 + y1) / 2);
         if (escape) {
@@ -380,19 +380,20 @@ class Monkey {
         viewer_.move_mouse(state_, x1, y1);
         viewer_.release_mouse(state_, 0);
         frames_ += 5;
-        if (state_.object_drag) fail("the drag is still going on after the mouse was let go");
+        if (state_.drags.object) fail("the drag is still going on after the mouse was let go");
         const bool moved = state_.message.rfind("Moved ", 0) == 0;
         if (!moved) {
             const bool undisturbed = on_image && !prompt && !load_may_arrive() &&
-                                     state_.last_load_times.taken == loaded_before;
+                                     state_.files.last_load_times.taken == loaded_before;
             if (undisturbed && document_text(state_.doc) != before)
                 fail("an Alt+drag that moved nothing changed the text");
             return;
         }
         if (escape) fail("an Alt+drag cancelled by Esc moved something");
-        const std::size_t at_most = state_.undo.capacity();
-        if (state_.undo.size() != std::min(steps + 1, at_most))
-            fail("an Alt+drag made " + std::to_string(state_.undo.size() - steps) + " undo steps");
+        const std::size_t at_most = state_.history.undo.capacity();
+        if (state_.history.undo.size() != std::min(steps + 1, at_most))
+            fail("an Alt+drag made " + std::to_string(state_.history.undo.size() - steps) +
+                 " undo steps");
         const std::string after = document_text(state_.doc);
         undo(state_);
         if (document_text(state_.doc) != before) fail("undo of an Alt+drag is not the text before");
@@ -415,10 +416,11 @@ class Monkey {
             check_axis(r.x0, r.x1, area.x0, area.x1, "x");
             check_axis(r.y0, r.y1, area.y0, area.y1, "y");
         }
-        if (state_.started && state_.started->options.region) {
-            const PixelRect& region = *state_.started->options.region;
-            if (region.x0 < 0 || region.y0 < 0 || region.x1 > state_.started->options.width ||
-                region.y1 > state_.started->options.height || region.empty())
+        if (state_.render.started && state_.render.started->options.region) {
+            const PixelRect& region = *state_.render.started->options.region;
+            if (region.x0 < 0 || region.y0 < 0 ||
+                region.x1 > state_.render.started->options.width ||
+                region.y1 > state_.render.started->options.height || region.empty())
                 fail("a region render outside its frame");
         }
     }
@@ -490,7 +492,7 @@ class Monkey {
         else
             text.insert(at, 1, " ;x1<{}"[pick(7)]);
         type_text(state_, text);
-        if (pick(2)) state_.checker.wait();
+        if (pick(2)) state_.check.checker.wait();
     }
 
     static std::string near(const std::string& text, int at) {
@@ -506,8 +508,8 @@ class Monkey {
     // item 10), and Ctrl+Shift+Z back to the end gives the typing again.
     void key_sequence_in_the_text() {
         last_event_ = "key sequence in the text";
-        if (!state_.doc.loaded || !state_.show_ui || state_.unsaved_prompt || state_.object_drag ||
-            ImGui::IsPopupOpen("", ImGuiPopupFlags_AnyPopupId))
+        if (!state_.doc.loaded || !state_.view.show_ui || state_.files.unsaved_prompt ||
+            state_.drags.object || ImGui::IsPopupOpen("", ImGuiPopupFlags_AnyPopupId))
             return;
         TextEditorState& editor = viewer_.text_editor();
         if (!editor.open) viewer_.press_key(state_, keys::letter('T'));  // as a user opens it
@@ -527,7 +529,7 @@ class Monkey {
             frames_ += 4;
         };
         const auto undo_all = [&] {
-            for (int i = 0; i < 200 && state_.undo.can_undo(); ++i) undo(state_);
+            for (int i = 0; i < 200 && state_.history.undo.can_undo(); ++i) undo(state_);
             frame();
         };
         undo_all();
@@ -566,7 +568,7 @@ class Monkey {
             return;
         }
         if (load_may_arrive()) return;
-        for (int i = 0; i < 8 && state_.undo.can_undo(); ++i) ctrl_z(false);
+        for (int i = 0; i < 8 && state_.history.undo.can_undo(); ++i) ctrl_z(false);
         ctrl_z(false);
         ctrl_z(false);
         if (load_may_arrive()) return;
@@ -575,7 +577,7 @@ class Monkey {
                 "Ctrl+Z to the start of the history and past it does not give the text before "
                 "the typing (near it: '" +
                 near(document_text(state_.doc), at) + "', before '" + near(before, at) + "')");
-        for (int i = 0; i < 8 && state_.undo.can_redo(); ++i) ctrl_z(true);
+        for (int i = 0; i < 8 && state_.history.undo.can_redo(); ++i) ctrl_z(true);
         if (!load_may_arrive() && document_text(state_.doc) != expected)
             fail("Ctrl+Shift+Z to the end does not give the typing back");
     }
@@ -681,19 +683,20 @@ class Monkey {
         }
         check_files();
         check_saves();
-        const bool mid_edit = ImGui::IsAnyItemActive() || state_.edit_base.has_value();
-        if (!state_.undo.can_undo() && !state_.undo.can_redo() && !mid_edit && state_.doc.loaded &&
-            has_unsaved_edits(state_.doc) && !saved_since_history_start_)
+        const bool mid_edit = ImGui::IsAnyItemActive() || state_.history.edit_base.has_value();
+        if (!state_.history.undo.can_undo() && !state_.history.undo.can_redo() && !mid_edit &&
+            state_.doc.loaded && has_unsaved_edits(state_.doc) && !saved_since_history_start_)
             fail("no undo history, yet the scene differs from the file's");
         if (state_.doc.loaded) {
-            const int selected = selected_camera(state_);
-            if (state_.camera_index < 0 ||
-                state_.camera_index >= static_cast<int>(state_.doc.scene.cameras.size()))
-                fail("camera_index " + std::to_string(state_.camera_index) + " of " +
+            const int selected = selected_camera(state_.view, state_.doc.scene);
+            if (state_.view.camera_index < 0 ||
+                state_.view.camera_index >= static_cast<int>(state_.doc.scene.cameras.size()))
+                fail("camera_index " + std::to_string(state_.view.camera_index) + " of " +
                      std::to_string(state_.doc.scene.cameras.size()) + " cameras");
             (void)selected;
         }
-        if (!state_.undo.can_undo() && !state_.undo.can_redo()) saved_since_history_start_ = false;
+        if (!state_.history.undo.can_undo() && !state_.history.undo.can_redo())
+            saved_since_history_start_ = false;
     }
 
     // Every file in the folder is whole: the scene is a text the monkey wrote
@@ -704,8 +707,9 @@ class Monkey {
     // earlier selection may name an object deleted since: current_selection
     // reads it as none.)
     void check_selection(const Selection& before) {
-        if (state_.selection != before && state_.selection != current_selection(state_))
-            fail("a click selected " + std::to_string(state_.selection.index) + " of " +
+        if (state_.view.selection != before &&
+            state_.view.selection != current_selection(state_.view, state_.doc.scene))
+            fail("a click selected " + std::to_string(state_.view.selection.index) + " of " +
                  std::to_string(state_.doc.scene.primitives.size()) + " objects");
     }
 
@@ -746,15 +750,16 @@ class Monkey {
     // unmodified document replaces it and its history): the round trip is
     // only checked when none can arrive.
     bool load_may_arrive() const {
-        return state_.loader.busy() || state_.pending_reload.has_value();
+        return state_.files.loader.busy() || state_.files.pending_reload.has_value();
     }
 
     void check_undo_round_trip() {
-        if (ImGui::IsAnyItemActive() || state_.edit_base || !state_.undo.can_undo()) return;
+        if (ImGui::IsAnyItemActive() || state_.history.edit_base || !state_.history.undo.can_undo())
+            return;
         if (load_may_arrive()) return;
         const Scene now = state_.doc.scene;
         int steps = 0;
-        while (state_.undo.can_undo()) {
+        while (state_.history.undo.can_undo()) {
             undo(state_);
             ++steps;
         }

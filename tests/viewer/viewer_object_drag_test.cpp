@@ -41,7 +41,7 @@ class ViewerObjectDrag : public ViewerFixture {
         sphere_pixel = {std::floor(centre->x) + 0.5, std::floor(centre->y) + 0.5};
     }
     // Window units per image pixel.
-    double scale() const { return viewer.image_rect().width() / state.display.width; }
+    double scale() const { return viewer.image_rect().width() / state.render.display.width; }
     std::string text() const { return document_text(state.doc); }
     // The move the camera makes of the point grabbed at `from` for a cursor
     // moved to `to`: on the plane facing the camera at that point's depth D,
@@ -57,7 +57,7 @@ class ViewerObjectDrag : public ViewerFixture {
             pick_primitive(*frame, static_cast<int>(from.x), static_cast<int>(from.y));
         const CameraRay ray = *camera_ray(*frame, from);
         const double depth = glm::dot(ray.direction * pick->distance, forward);
-        const double w = state.display.width, h = state.display.height;
+        const double w = state.render.display.width, h = state.render.display.height;
         return depth *
                (2 * (to.x - from.x) / w * t * c.aspect * right + 2 * (to.y - from.y) / h * t * up);
     }
@@ -71,14 +71,14 @@ class ViewerObjectDrag : public ViewerFixture {
 TEST_F(ViewerObjectDrag, AltDragMovesTheSelectedSphereUnderTheCursorAndUndoGivesTheBytesBack) {
     const WindowPoint at = window_point(sphere_pixel);
     viewer.drag(state, 0, at.x, at.y, at.x, at.y);  // a click selects
-    ASSERT_EQ(state.selection, (Selection{Kind::primitive, 1})) << state.message;
-    const std::size_t steps = state.undo.size();
+    ASSERT_EQ(state.view.selection, (Selection{Kind::primitive, 1})) << state.message;
+    const std::size_t steps = state.history.undo.size();
 
     constexpr float kRight = 60, kUp = 30;  // window units
     viewer.drag(state, 0, at.x, at.y, at.x + kRight, at.y - kUp, kAlt);
-    EXPECT_FALSE(state.free_camera_active) << "Alt+drag moves the object, not the camera";
-    EXPECT_EQ(state.selection, (Selection{Kind::primitive, 1}));
-    EXPECT_EQ(state.undo.size(), steps + 1) << "one drag, one undo step";
+    EXPECT_FALSE(state.view.free_camera_active) << "Alt+drag moves the object, not the camera";
+    EXPECT_EQ(state.view.selection, (Selection{Kind::primitive, 1}));
+    EXPECT_EQ(state.history.undo.size(), steps + 1) << "one drag, one undo step";
     const ImagePoint to{sphere_pixel.x + kRight / scale(), sphere_pixel.y + kUp / scale()};
     const Vec3 want = expected_move(sphere_pixel, to);
     const auto& ops = state.doc.scene.primitives[1].transforms;
@@ -100,8 +100,8 @@ TEST_F(ViewerObjectDrag, AltDragMovesTheSelectedSphereUnderTheCursorAndUndoGives
     ASSERT_TRUE(pick);
     EXPECT_EQ(pick->primitive, 1);
     int sphere_pixels = 0;
-    for (int y = 0; y < state.display.height; ++y)
-        for (int x = 0; x < state.display.width; ++x)
+    for (int y = 0; y < state.render.display.height; ++y)
+        for (int x = 0; x < state.render.display.width; ++x)
             if (const auto p = pick_primitive(*now, x, y); p && p->primitive == 1) ++sphere_pixels;
     const auto deadline = std::chrono::steady_clock::now() + kTimeout;
     while (viewer.overlay().outlined_pixels() != sphere_pixels &&
@@ -125,7 +125,8 @@ TEST_F(ViewerObjectDrag, EscDuringTheDragPutsTheObjectBackAndQuitsNothing) {
     viewer.press_mouse(state, 0, at.x, at.y, kAlt);
     viewer.move_mouse(state, at.x + 50, at.y + 10);
     viewer.move_mouse(state, at.x + 60, at.y + 10);
-    EXPECT_EQ(state.selection, (Selection{Kind::primitive, 1})) << "taken from under the cursor";
+    EXPECT_EQ(state.view.selection, (Selection{Kind::primitive, 1}))
+        << "taken from under the cursor";
     EXPECT_NE(text(), original) << "the text follows the drag";
     viewer.press_key(state, keys::escape);
     EXPECT_EQ(text(), original);
@@ -133,9 +134,9 @@ TEST_F(ViewerObjectDrag, EscDuringTheDragPutsTheObjectBackAndQuitsNothing) {
     viewer.release_mouse(state, 0);
     EXPECT_EQ(text(), original) << "a cancelled drag stays cancelled";
     EXPECT_FALSE(has_unsaved_edits(state.doc));
-    EXPECT_FALSE(state.undo.can_undo());
+    EXPECT_FALSE(state.history.undo.can_undo());
     EXPECT_FALSE(state.quit);
-    EXPECT_FALSE(state.unsaved_prompt);
+    EXPECT_FALSE(state.files.unsaved_prompt);
     EXPECT_EQ(state.message, "Move cancelled");
 }
 

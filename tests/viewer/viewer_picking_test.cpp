@@ -36,10 +36,10 @@ class ViewerPicking : public ViewerFixture {
 };
 
 TEST_F(ViewerPicking, AClickSelectsOutlinesOverTheImageAndOpensTheObject) {
-    const Image8 before = state.display;
+    const Image8 before = state.render.display;
     click_pixel(32, 20);  // the sphere, in the middle of the 64x48 image
-    ASSERT_EQ(state.selection, (Selection{Kind::primitive, 1})) << state.message;
-    EXPECT_FALSE(state.free_camera_active) << "a click does not move the camera";
+    ASSERT_EQ(state.view.selection, (Selection{Kind::primitive, 1})) << state.message;
+    EXPECT_FALSE(state.view.free_camera_active) << "a click does not move the camera";
     // The sidebar scrolls to the list in the frame that reveals it; its rows
     // are drawn once the list is in view.
     for (int i = 0; i < 2; ++i) viewer.frame(state);
@@ -57,10 +57,10 @@ TEST_F(ViewerPicking, AClickSelectsOutlinesOverTheImageAndOpensTheObject) {
             if (const auto pick = pick_primitive(*frame, x, y); pick && pick->primitive == 1)
                 ++sphere_pixels;
     EXPECT_EQ(viewer.overlay().outlined_pixels(), sphere_pixels);
-    EXPECT_EQ(state.display, before) << "the outline is drawn over the image, not into it";
+    EXPECT_EQ(state.render.display, before) << "the outline is drawn over the image, not into it";
 
     click_pixel(32, 46);  // the sky above the sphere
-    EXPECT_EQ(state.selection.kind, Kind::none);
+    EXPECT_EQ(state.view.selection.kind, Kind::none);
     viewer.frame(state);
     EXPECT_EQ(viewer.overlay().outlined_pixels(), 0);
 }
@@ -68,13 +68,14 @@ TEST_F(ViewerPicking, AClickSelectsOutlinesOverTheImageAndOpensTheObject) {
 TEST_F(ViewerPicking, HoveringThePictureInspectsThePixelUnderTheMouse) {
     const WindowPoint p = window_point({32.5, 20.5});
     viewer.move_mouse(state, p.x, p.y);
-    const std::uint8_t* rgb = state.display.pixel(32, 20);
+    const std::uint8_t* rgb = state.render.display.pixel(32, 20);
     char expected[64];
     std::snprintf(expected, sizeof expected, "x 32, y 27   RGB %d %d %d", rgb[0], rgb[1], rgb[2]);
-    EXPECT_EQ(state.inspected.rfind(expected, 0), 0u) << state.inspected;
-    EXPECT_NE(state.inspected.find("sphere 2 at distance"), std::string::npos) << state.inspected;
+    EXPECT_EQ(state.view.inspected.rfind(expected, 0), 0u) << state.view.inspected;
+    EXPECT_NE(state.view.inspected.find("sphere 2 at distance"), std::string::npos)
+        << state.view.inspected;
     viewer.move_mouse(state, 20, 20);  // over the panel
-    EXPECT_TRUE(state.inspected.empty());
+    EXPECT_TRUE(state.view.inspected.empty());
 }
 
 // Issue 27 item 22: the inspector's box sat at the mouse, on the object just
@@ -83,10 +84,10 @@ TEST_F(ViewerPicking, HoveringThePictureInspectsThePixelUnderTheMouse) {
 TEST_F(ViewerPicking, TheInspectorBoxKeepsClearOfThePickedObject) {
     const WindowPoint p = window_point({32.5, 30.5});
     viewer.drag(state, 0, p.x, p.y, p.x, p.y);
-    ASSERT_EQ(state.selection, (Selection{Selection::Kind::primitive, 1}));
+    ASSERT_EQ(state.view.selection, (Selection{Selection::Kind::primitive, 1}));
     viewer.move_mouse(state, p.x, p.y);
     viewer.move_mouse(state, p.x, p.y);
-    ASSERT_FALSE(state.inspected.empty());
+    ASSERT_FALSE(state.view.inspected.empty());
     const UiItem* box = find_item(viewer.ui_items(), "pixel inspector");
     ASSERT_NE(box, nullptr);
     // The sphere (radius 1 at 6 units, fov 40) is about a third of the image high.
@@ -112,15 +113,15 @@ class ViewerZoomedPicking : public ViewerPicking {
         const float cx = (area.x0 + area.x1) * 0.5f, cy = (area.y0 + area.y1) * 0.5f;
         viewer.move_mouse(state, cx, cy);
         viewer.press_key(state, keys::digit('1'));  // 1:1
-        EXPECT_FLOAT_EQ(state.image_view.zoom, 1.0f);
+        EXPECT_FLOAT_EQ(state.view.image_view.zoom, 1.0f);
         viewer.press_key(state, keys::equal);
         viewer.press_key(state, keys::equal);
-        ASSERT_FLOAT_EQ(state.image_view.zoom, 4.0f);
+        ASSERT_FLOAT_EQ(state.view.image_view.zoom, 4.0f);
         viewer.drag(state, 2, cx, cy, cx - 150, cy + 90);  // middle: pan the image
-        ASSERT_FALSE(state.free_camera_active) << "the pan moves the image, not the camera";
+        ASSERT_FALSE(state.view.free_camera_active) << "the pan moves the image, not the camera";
         ASSERT_FLOAT_EQ(viewer.image_rect().width(), 1024.0f);
-        ASSERT_NE(state.image_view.pan_x, 0.0f);
-        ASSERT_NE(state.image_view.pan_y, 0.0f);
+        ASSERT_NE(state.view.image_view.pan_x, 0.0f);
+        ASSERT_NE(state.view.image_view.pan_y, 0.0f);
     }
     // The window point of the centre of image pixel (x, y) as the last frame drew it.
     WindowPoint zoomed_point(int x, int y) const {
@@ -146,14 +147,14 @@ TEST_F(ViewerZoomedPicking, AClickSelectsWhatTheUnzoomedPixelShows) {
             const std::optional<PickedPrimitive> pick = pick_primitive(*frame, x, y);
             const Selection expected =
                 pick ? Selection{Kind::primitive, pick->primitive} : Selection{};
-            if (state.selection.kind == Kind::light) continue;  // a marker is in front
-            EXPECT_EQ(state.selection, expected) << "pixel " << x << ", " << y;
+            if (state.view.selection.kind == Kind::light) continue;  // a marker is in front
+            EXPECT_EQ(state.view.selection, expected) << "pixel " << x << ", " << y;
             ++checked;
             hits += pick.has_value();
         }
     EXPECT_GT(checked, 20);
     EXPECT_GT(hits, 5);
-    EXPECT_FALSE(state.free_camera_active);
+    EXPECT_FALSE(state.view.free_camera_active);
 }
 
 TEST_F(ViewerZoomedPicking, TheInspectorReportsThePixelUnderTheMouse) {
@@ -163,12 +164,12 @@ TEST_F(ViewerZoomedPicking, TheInspectorReportsThePixelUnderTheMouse) {
             const WindowPoint p = zoomed_point(x, y);
             if (!shows_image(p)) continue;
             viewer.move_mouse(state, p.x, p.y);
-            const std::uint8_t* rgb = state.display.pixel(x, y);
+            const std::uint8_t* rgb = state.render.display.pixel(x, y);
             char expected[64];
             std::snprintf(expected, sizeof expected, "x %d, y %d   RGB %d %d %d", x, 191 - y,
                           rgb[0], rgb[1], rgb[2]);
-            EXPECT_EQ(state.inspected.rfind(expected, 0), 0u)
-                << state.inspected << " at " << p.x << ", " << p.y << " expected " << expected;
+            EXPECT_EQ(state.view.inspected.rfind(expected, 0), 0u)
+                << state.view.inspected << " at " << p.x << ", " << p.y << " expected " << expected;
             ++checked;
         }
     EXPECT_GT(checked, 10);
@@ -176,20 +177,20 @@ TEST_F(ViewerZoomedPicking, TheInspectorReportsThePixelUnderTheMouse) {
     const ScreenRect r = viewer.image_rect();
     if (r.x0 < viewer.image_area().x0) {
         viewer.move_mouse(state, viewer.image_area().x0 - 5, (r.y0 + r.y1) * 0.5f);
-        EXPECT_TRUE(state.inspected.empty()) << state.inspected;
+        EXPECT_TRUE(state.view.inspected.empty()) << state.view.inspected;
     }
 }
 
 TEST_F(ViewerZoomedPicking, CtrlWheelZoomsAboutTheMouseAndFitShowsItAll) {
     const WindowPoint p = zoomed_point(120, 100);
     viewer.scroll(state, p.x, p.y, 2, /*ctrl=*/true);
-    EXPECT_NEAR(state.image_view.zoom, 4.0f * 1.25f * 1.25f, 1e-4f);
-    EXPECT_FALSE(state.free_camera_active) << "Ctrl+wheel zooms the image, not the camera";
+    EXPECT_NEAR(state.view.image_view.zoom, 4.0f * 1.25f * 1.25f, 1e-4f);
+    EXPECT_FALSE(state.view.free_camera_active) << "Ctrl+wheel zooms the image, not the camera";
     const WindowPoint after = zoomed_point(120, 100);
     EXPECT_NEAR(after.x, p.x, 6.25f) << "the pixel under the mouse stays under it";
     EXPECT_NEAR(after.y, p.y, 6.25f);
     viewer.press_key(state, keys::letter('F'));
-    EXPECT_TRUE(state.image_view.fit);
+    EXPECT_TRUE(state.view.image_view.fit);
     const ScreenRect r = viewer.image_rect(), area = viewer.image_area();
     EXPECT_GE(r.x0, area.x0 - 1);
     EXPECT_LE(r.x1, area.x1 + 1);
@@ -214,10 +215,10 @@ TEST_F(ViewerPicking, TheObjectsListDrawsOnlyTheRowsInViewOfAHundredThousand) {
     };
     EXPECT_GT(rows(), 0);
     EXPECT_LT(rows(), 40) << "only the rows in view are drawn";
-    select(state, {Kind::primitive, 60000});
+    select(state.view, {Kind::primitive, 60000});
     for (int i = 0; i < 3; ++i) viewer.frame(state);
     EXPECT_NE(find_item(viewer.ui_items(), "sphere 60001"), nullptr) << "scrolled to the selection";
-    state.object_filter = "sphere 99999";
+    state.fields.object_filter = "sphere 99999";
     viewer.frame(state);
     EXPECT_NE(find_item(viewer.ui_items(), "sphere 99999"), nullptr);
     EXPECT_EQ(rows(), 1 + (find_item(viewer.ui_items(), "sphere 60001") ? 1 : 0))
@@ -256,7 +257,7 @@ TEST_F(ViewerPicking, AddPointLightOpensTheNewLightInItsPanel) {
     EXPECT_EQ(find_item(viewer.ui_items(), "intensity"), nullptr) << "no light is open yet";
     ASSERT_TRUE(viewer.click(state, "Add point light"));
     for (int i = 0; i < 2; ++i) viewer.frame(state);
-    EXPECT_EQ(state.selection.kind, Kind::light);
+    EXPECT_EQ(state.view.selection.kind, Kind::light);
     EXPECT_NE(find_item(viewer.ui_items(), "intensity"), nullptr) << "the new light's fields";
 }
 
@@ -288,10 +289,10 @@ scene {
     ASSERT_TRUE(viewer.run_until_complete(state, kTimeout));
     const std::vector<std::string> figures = {"12 triangles, 24 vertices, normals generated",
                                               "bounds <9, -2, -1> to <11, 2, 1>", "size <2, 4, 2>"};
-    select(state, {Kind::primitive, 0});  // the sphere: no figures
+    select(state.view, {Kind::primitive, 0});  // the sphere: no figures
     for (int i = 0; i < 3; ++i) viewer.frame(state);
     for (const std::string& line : figures) EXPECT_EQ(find_item(viewer.ui_items(), line), nullptr);
-    select(state, {Kind::primitive, 1});
+    select(state.view, {Kind::primitive, 1});
     for (int i = 0; i < 3; ++i) viewer.frame(state);
     for (const std::string& line : figures)
         EXPECT_NE(find_item(viewer.ui_items(), line), nullptr) << line;

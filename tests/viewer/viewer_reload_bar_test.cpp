@@ -35,7 +35,7 @@ TEST(ViewerReloadBar, TheChoiceIsAboveTheImageAndShowsTheDifferences) {
     theirs.replace(theirs.find("fov: 50;"), 8, "fov: 55;");
     write_file(file, theirs);
     ASSERT_TRUE(viewer.run_until_loaded(state));
-    ASSERT_TRUE(state.pending_reload);
+    ASSERT_TRUE(state.files.pending_reload);
     EXPECT_NE(state.message.find("bar above the image"), std::string::npos) << state.message;
     viewer.frame(state);
     const UiItem* bar = find_item(viewer.ui_items(), "reload bar");
@@ -65,7 +65,7 @@ TEST(ViewerReloadBar, TheChoiceIsAboveTheImageAndShowsTheDifferences) {
     EXPECT_TRUE(fov);
 
     ASSERT_TRUE(viewer.click(state, "Reload, re-apply my edits"));
-    EXPECT_FALSE(state.pending_reload);
+    EXPECT_FALSE(state.files.pending_reload);
     viewer.frame(state);
     EXPECT_EQ(find_item(viewer.ui_items(), "reload bar"), nullptr);
     EXPECT_EQ(state.doc.scene.settings.width, 32);

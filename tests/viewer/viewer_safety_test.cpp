@@ -62,29 +62,29 @@ TEST_F(ViewerSafety, CopyToSceneThenUndoKeepsTheViewOnACameraThatExists) {
     for (bool by_button : {false, true}) {
         const ImVec2 c = image_centre();
         viewer.drag(state, 0, c.x, c.y, c.x + 40, c.y + 10);
-        ASSERT_TRUE(state.free_camera_active);
-        state.new_camera_name = by_button ? "by_button" : "by_key";
+        ASSERT_TRUE(state.view.free_camera_active);
+        state.fields.new_camera_name = by_button ? "by_button" : "by_key";
         viewer.frame(state);
         ASSERT_TRUE(viewer.click(state, "Copy to scene"));
         ASSERT_EQ(state.doc.scene.cameras.size(), 3u) << state.message;
-        EXPECT_EQ(state.camera_index, 2);
+        EXPECT_EQ(state.view.camera_index, 2);
         if (by_button)
             ASSERT_TRUE(viewer.click(state, "Undo"));
         else
             viewer.press_key(state, keys::letter('Z'), /*ctrl=*/true);
         ASSERT_EQ(state.doc.scene.cameras.size(), 2u);
-        EXPECT_GE(state.camera_index, 0);
-        EXPECT_LT(state.camera_index, 2);
+        EXPECT_GE(state.view.camera_index, 0);
+        EXPECT_LT(state.view.camera_index, 2);
         for (int i = 0; i < 3; ++i) viewer.frame(state);
         // Redo brings the camera back, and the view can show it again.
         viewer.press_key(state, keys::letter('Z'), /*ctrl=*/true, /*shift=*/true);
         ASSERT_EQ(state.doc.scene.cameras.size(), 3u);
         select_camera(state, 2);
         viewer.press_key(state, keys::letter('Z'), /*ctrl=*/true);
-        EXPECT_LT(state.camera_index, 2);
+        EXPECT_LT(state.view.camera_index, 2);
         ASSERT_TRUE(viewer.run_until_complete(state, kTimeout));
         // Nothing is left to undo for the next round but the scene as loaded.
-        while (state.undo.can_undo()) undo(state);
+        while (state.history.undo.can_undo()) undo(state);
         EXPECT_EQ(state.doc.scene, state.doc.original);
         viewer.frame(state);
     }
@@ -96,12 +96,12 @@ TEST_F(ViewerSafety, ReplacingTheSceneKeepsTheSelectedCameraByName) {
     open_and_render();
     select_camera(state, 1);  // "top"
     edit_scene(state, [](Scene& s) { s.cameras.erase(s.cameras.begin()); });
-    EXPECT_EQ(state.camera_index, 0);
+    EXPECT_EQ(state.view.camera_index, 0);
     EXPECT_EQ(state.doc.scene.cameras[0].name, "top");
     undo(state);
-    EXPECT_EQ(state.camera_index, 1) << "still \"top\"";
+    EXPECT_EQ(state.view.camera_index, 1) << "still \"top\"";
     edit_scene(state, [](Scene& s) { s.cameras.resize(1); });
-    EXPECT_EQ(state.camera_index, 0);
+    EXPECT_EQ(state.view.camera_index, 0);
     for (int i = 0; i < 3; ++i) viewer.frame(state);
 }
 
@@ -117,22 +117,22 @@ TEST_F(ViewerSafety, ADragMovesTheCameraOnlyByTheMotionAfterThePress) {
     io.MouseDown[0] = true;
     viewer.frame(state);
     const FreeCamera start = free_camera_from(state.doc.scene.cameras[0]);
-    EXPECT_FALSE(state.free_camera_active) << "no motion since the press yet";
+    EXPECT_FALSE(state.view.free_camera_active) << "no motion since the press yet";
     io.MousePos = ImVec2(c.x + 8, c.y);
     viewer.frame(state);
     io.MouseDown[0] = false;
     viewer.frame(state);
-    ASSERT_TRUE(state.free_camera_active);
-    const double moved = glm::length(state.free_camera.position - start.position);
+    ASSERT_TRUE(state.view.free_camera_active);
+    const double moved = glm::length(state.view.free_camera.position - start.position);
     const double distance = glm::length(start.position - start.look_at);
     // 8 pixels of a view several hundred pixels high: a few degrees, not a jump.
     EXPECT_GT(moved, 0.0);
     EXPECT_LT(moved, distance * 0.2) << "the camera jumped";
 
     // A drag that starts on the panel never moves the camera.
-    state.free_camera_active = false;
+    state.view.free_camera_active = false;
     viewer.drag(state, 0, 20, 300, c.x, c.y);
-    EXPECT_FALSE(state.free_camera_active);
+    EXPECT_FALSE(state.view.free_camera_active);
 }
 
 // After a live width change the Diagnostics panel says what --check says.
@@ -143,7 +143,7 @@ TEST_F(ViewerSafety, DiagnosticsFollowEveryEditAsCheckWould) {
     viewer.frame(state);
     ASSERT_FALSE(state.doc.diagnostics.empty()) << "the aspect no longer matches";
     // What jtracer-cli --check says about the same values, written to a file.
-    state.save_scene_path = (file.parent_path() / "checked.jts").string();
+    state.fields.save_scene_path = (file.parent_path() / "checked.jts").string();
     viewer.frame(state);
     ASSERT_TRUE(viewer.click(state, "Save scene as"));
     Expected<LoadedScene> loaded = jt::load_scene_file(file.parent_path() / "checked.jts");
@@ -167,7 +167,7 @@ TEST_F(ViewerSafety, ReloadPromptSaysWhetherTheFileChanged) {
     ASSERT_FALSE(live.empty());
     viewer.press_key(state, keys::letter('R'));
     ASSERT_TRUE(viewer.run_until_loaded(state));
-    ASSERT_TRUE(state.pending_reload);
+    ASSERT_TRUE(state.files.pending_reload);
     EXPECT_NE(state.message.find("unchanged"), std::string::npos) << state.message;
     EXPECT_EQ(state.message.find("was reloaded"), std::string::npos) << state.message;
     viewer.frame(state);
@@ -181,7 +181,7 @@ TEST_F(ViewerSafety, ReloadPromptSaysWhetherTheFileChanged) {
     ASSERT_TRUE(viewer.click(state, "Keep mine"));
     write_file(file, read_file(file) + "\n# theirs\n");
     ASSERT_TRUE(viewer.run_until_loaded(state));
-    ASSERT_TRUE(state.pending_reload);
+    ASSERT_TRUE(state.files.pending_reload);
     EXPECT_NE(state.message.find("changed on disk"), std::string::npos) << state.message;
     viewer.frame(state);
     EXPECT_NE(find_item(viewer.ui_items(), "Reload, re-apply my edits"), nullptr);
@@ -219,24 +219,24 @@ TEST_F(ViewerSafety, EscapeClosesWhatIsOpenAndNeverDropsEdits) {
     viewer.press_key(state, keys::escape);
     EXPECT_FALSE(ImGui::IsPopupOpen("", ImGuiPopupFlags_AnyPopupId));
     EXPECT_FALSE(state.quit);
-    EXPECT_FALSE(state.unsaved_prompt);
+    EXPECT_FALSE(state.files.unsaved_prompt);
     // Typing in a field: Esc leaves the field.
     ASSERT_TRUE(viewer.click(state, "camera name"));
     ASSERT_TRUE(ImGui::GetIO().WantTextInput);
     viewer.press_key(state, keys::escape);
     EXPECT_FALSE(state.quit);
-    EXPECT_FALSE(state.unsaved_prompt);
+    EXPECT_FALSE(state.files.unsaved_prompt);
     // Nothing open: Esc asks, a second Esc cancels.
     viewer.press_key(state, keys::escape);
     EXPECT_FALSE(state.quit);
-    ASSERT_TRUE(state.unsaved_prompt);
+    ASSERT_TRUE(state.files.unsaved_prompt);
     viewer.press_key(state, keys::escape);
-    EXPECT_FALSE(state.unsaved_prompt);
+    EXPECT_FALSE(state.files.unsaved_prompt);
     EXPECT_FALSE(state.quit);
     EXPECT_TRUE(has_unsaved_edits(state.doc));
     // Ctrl+Q asks too; Save writes the edits, then quits.
     viewer.press_key(state, keys::letter('Q'), /*ctrl=*/true);
-    ASSERT_TRUE(state.unsaved_prompt);
+    ASSERT_TRUE(state.files.unsaved_prompt);
     viewer.frame(state);
     ASSERT_TRUE(viewer.click(state, "Save"));
     EXPECT_TRUE(state.quit);
@@ -252,7 +252,7 @@ TEST_F(ViewerSafety, OpeningAnotherFileWithEditsAsksAndDiscardOpensIt) {
     edit_scene(state, [](Scene& s) { s.settings.recurse_depth = 1; });
     request_open_guarded(state, other);  // as Open, Recent and a dropped file do
     viewer.frame(state);
-    ASSERT_TRUE(state.unsaved_prompt);
+    ASSERT_TRUE(state.files.unsaved_prompt);
     ASSERT_TRUE(viewer.click(state, "Cancel"));
     EXPECT_EQ(state.doc.path, file);
     EXPECT_EQ(state.doc.scene.settings.recurse_depth, 1);
@@ -268,7 +268,7 @@ TEST_F(ViewerSafety, ImageSavesNeverReplaceAFile) {
     open_and_render();
     const fs::path png = file.parent_path() / "view.png";
     write_file(png, "someone else's picture");
-    state.save_image_path = png.string();
+    state.fields.save_image_path = png.string();
     viewer.press_key(state, keys::letter('S'));
     viewer.press_key(state, keys::letter('S'));
     EXPECT_EQ(read_file(png), "someone else's picture");
@@ -285,11 +285,11 @@ TEST_F(ViewerSafety, SaveSceneAsAsksBeforeReplacingAndThenEditsTheNewFile) {
     edit_scene(state, [](Scene& s) { s.settings.recurse_depth = 1; });
     const fs::path copy = file.parent_path() / "copy.jts";
     write_file(copy, "# precious\n");
-    state.save_scene_path = copy.string();
+    state.fields.save_scene_path = copy.string();
     viewer.frame(state);
     ASSERT_TRUE(viewer.click(state, "Save scene as"));
     EXPECT_EQ(read_file(copy), "# precious\n");
-    EXPECT_FALSE(state.save_as_conflict.empty());
+    EXPECT_FALSE(state.files.save_as_conflict.empty());
     ASSERT_TRUE(viewer.click(state, "Replace it"));
     EXPECT_EQ(state.doc.path, copy);
     EXPECT_FALSE(has_unsaved_edits(state.doc));
@@ -337,8 +337,8 @@ TEST_F(ViewerSafety, SavedNumbersAreShortAndOneComponentEditsKeepTheRestAsWritte
     open_and_render();
     const ImVec2 c = image_centre();
     viewer.drag(state, 0, c.x, c.y, c.x + 37, c.y + 11);
-    ASSERT_TRUE(state.free_camera_active);
-    state.new_camera_name = "kept";
+    ASSERT_TRUE(state.view.free_camera_active);
+    state.fields.new_camera_name = "kept";
     viewer.frame(state);
     ASSERT_TRUE(viewer.click(state, "Copy to scene"));
     // The light's position field: a drag on its first third changes x alone.
@@ -478,8 +478,8 @@ TEST(ViewerLayout, ATinyWindowDoesNotChangeTheRememberedPanelWidth) {
     open_scene(state, kScene);
     for (int i = 0; i < 4; ++i) viewer.frame(state);
     viewer.move_mouse(state, 250, 100);
-    EXPECT_EQ(state.sidebar_width, 26.0f);
-    remember_settings(state);
+    EXPECT_EQ(state.view.sidebar_width, 26.0f);
+    remember_settings(state.view, state.config);
     EXPECT_EQ(read_viewer_settings(config.settings_file).panel_width, 26.0f);
     fs::remove_all(folder);
 }
@@ -499,17 +499,17 @@ TEST(ViewerLayout, ThePanelEdgeDragsAndTheWidthIsRememberedAcrossRuns) {
         const UiItem* panel = find_item(viewer.ui_items(), "panel");
         ASSERT_NE(panel, nullptr);
         edge = panel->rect.x1;
-        const float before = state.sidebar_width;
+        const float before = state.view.sidebar_width;
         EXPECT_EQ(before, kDefaultPanelWidth);
         viewer.drag(state, 0, edge - 1, 300, edge + 119, 300);
-        EXPECT_GT(state.sidebar_width, before) << "dragged wider";
+        EXPECT_GT(state.view.sidebar_width, before) << "dragged wider";
         viewer.frame(state);
         const UiItem* wider = find_item(viewer.ui_items(), "panel");
         ASSERT_NE(wider, nullptr);
         dragged_edge = wider->rect.x1;
         EXPECT_GT(dragged_edge, edge + 60);
-        EXPECT_FALSE(state.free_camera_active) << "resizing is not a camera drag";
-        EXPECT_EQ(read_viewer_settings(config.settings_file).panel_width, state.sidebar_width);
+        EXPECT_FALSE(state.view.free_camera_active) << "resizing is not a camera drag";
+        EXPECT_EQ(read_viewer_settings(config.settings_file).panel_width, state.view.sidebar_width);
     }
     // Where the panel of a new run ends.
     const auto next_run_edge = [&] {

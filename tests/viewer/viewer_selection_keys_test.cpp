@@ -29,7 +29,8 @@ class ViewerSelectionKeys : public ViewerFixture {
     }
     void select_sphere() {
         click_image(32, 30);
-        ASSERT_EQ(state.selection, (Selection{Selection::Kind::primitive, 1})) << state.message;
+        ASSERT_EQ(state.view.selection, (Selection{Selection::Kind::primitive, 1}))
+            << state.message;
     }
 };
 
@@ -38,21 +39,21 @@ TEST_F(ViewerSelectionKeys, DeleteAndXDeleteCtrlDAndShiftDDuplicate) {
     select_sphere();
     viewer.press_key(state, keys::del);
     EXPECT_EQ(state.doc.scene.primitives.size(), count - 1) << state.message;
-    EXPECT_EQ(state.selection.kind, Selection::Kind::none);
+    EXPECT_EQ(state.view.selection.kind, Selection::Kind::none);
     viewer.press_key(state, keys::letter('Z'), true);
     ASSERT_EQ(state.doc.scene.primitives.size(), count) << "one undo step";
 
     select_sphere();
     viewer.press_key(state, keys::letter('D'), true);
     ASSERT_EQ(state.doc.scene.primitives.size(), count + 1) << state.message;
-    EXPECT_EQ(state.selection, (Selection{Selection::Kind::primitive, 2})) << "the copy";
+    EXPECT_EQ(state.view.selection, (Selection{Selection::Kind::primitive, 2})) << "the copy";
     EXPECT_EQ(state.doc.scene.primitives[2], state.doc.scene.primitives[1]);
     viewer.press_key(state, keys::letter('D'), false, true);
     EXPECT_EQ(state.doc.scene.primitives.size(), count + 2) << "Shift+D too";
-    EXPECT_EQ(state.selection, (Selection{Selection::Kind::primitive, 3})) << "its copy";
+    EXPECT_EQ(state.view.selection, (Selection{Selection::Kind::primitive, 3})) << "its copy";
     viewer.press_key(state, keys::letter('X'));
     EXPECT_EQ(state.doc.scene.primitives.size(), count + 1) << "X deletes too";
-    EXPECT_EQ(state.selection.kind, Selection::Kind::none);
+    EXPECT_EQ(state.view.selection.kind, Selection::Kind::none);
     viewer.press_key(state, keys::letter('X'));
     EXPECT_EQ(state.doc.scene.primitives.size(), count + 1) << "nothing selected: nothing deleted";
 }
@@ -60,10 +61,10 @@ TEST_F(ViewerSelectionKeys, DeleteAndXDeleteCtrlDAndShiftDDuplicate) {
 TEST_F(ViewerSelectionKeys, PeriodFramesTheSelection) {
     select_sphere();
     viewer.press_key(state, keys::period);
-    ASSERT_TRUE(state.free_camera_active) << state.message;
+    ASSERT_TRUE(state.view.free_camera_active) << state.message;
     const Sphere& sphere = std::get<Sphere>(state.doc.scene.primitives[1].shape);
-    EXPECT_EQ(state.free_camera.look_at, sphere.center);
-    const double distance = glm::length(state.free_camera.position - sphere.center);
+    EXPECT_EQ(state.view.free_camera.look_at, sphere.center);
+    const double distance = glm::length(state.view.free_camera.position - sphere.center);
     EXPECT_GT(distance, sphere.radius * 2.0);
     EXPECT_LT(distance, sphere.radius * 12.0);
     ASSERT_TRUE(viewer.run_until_complete(state, kTimeout));
@@ -106,7 +107,7 @@ TEST_F(ViewerSelectionKeys, APickScrollsTheTextToItsBlockAndAClickInABlockSelect
     io.MouseDown[0] = false;
     viewer.frame(state);
     viewer.frame(state);
-    EXPECT_EQ(state.selection, (Selection{Selection::Kind::light, 0})) << state.message;
+    EXPECT_EQ(state.view.selection, (Selection{Selection::Kind::light, 0})) << state.message;
 }
 
 }  // namespace

@@ -103,8 +103,8 @@ TEST_F(ViewerTextEditor, CtrlZPastTheStartOfTheHistoryChangesNothingAndRedoComes
         shortcut(keys_typed, keys::letter('Z'), shift);
         viewer.key_events(state, keys_typed, 40.0, 16.0);
     };
-    for (int i = 0; i < 13 && state.undo.can_undo(); ++i) ctrl_z(false);
-    ASSERT_FALSE(state.undo.can_undo());
+    for (int i = 0; i < 13 && state.history.undo.can_undo(); ++i) ctrl_z(false);
+    ASSERT_FALSE(state.history.undo.can_undo());
     EXPECT_EQ(text(), original) << "Ctrl+Z undoes the typing";
     EXPECT_EQ(viewer.text_editor().cursor, offset_of(original, 10, 1))
         << "the cursor goes back to where the typing was";
@@ -112,7 +112,7 @@ TEST_F(ViewerTextEditor, CtrlZPastTheStartOfTheHistoryChangesNothingAndRedoComes
         ctrl_z(false);
         ASSERT_EQ(text(), original) << "a Ctrl+Z past the start of the history changed the text";
     }
-    for (int i = 0; i < 13 && state.undo.can_redo(); ++i) ctrl_z(true);
+    for (int i = 0; i < 13 && state.history.undo.can_redo(); ++i) ctrl_z(true);
     EXPECT_EQ(text(), typed) << "Ctrl+Shift+Z brings the typing back";
 }
 
@@ -123,7 +123,7 @@ TEST_F(ViewerTextEditor, EscAfterAnUndoKeepsTheUndoneText) {
     std::vector<KeyEvent> events;
     type(events, "# x");
     viewer.key_events(state, events, 40.0, 16.0);
-    for (int i = 0; i < 4 && state.undo.can_undo(); ++i) {
+    for (int i = 0; i < 4 && state.history.undo.can_undo(); ++i) {
         events.clear();
         shortcut(events, keys::letter('Z'));
         viewer.key_events(state, events, 40.0, 16.0);
@@ -151,7 +151,7 @@ TEST_F(ViewerTextEditor, FastTypingKeepsItsOrderWhateverTheFrameRate) {
         type(events, "123");
         viewer.key_events(state, events, 12.0, frame_ms);
         ASSERT_EQ(text(), expected) << "with a frame every " << frame_ms << " ms";
-        while (state.undo.can_undo()) undo(state);  // one step, or more on a slow machine
+        while (state.history.undo.can_undo()) undo(state);  // one step, or more on a slow machine
         viewer.frame(state);
         ASSERT_EQ(text(), original);
     }
@@ -191,7 +191,7 @@ TEST_F(ViewerTextEditor, ABrokenFileOnDiskIsShownWithItsErrorsAndNeverSavedOver)
     std::vector<KeyEvent> events;
     type(events, ";");
     viewer.key_events(state, events, 40.0, 16.0);
-    state.checker.wait();
+    state.check.checker.wait();
     viewer.frame(state);
     EXPECT_FALSE(state.doc.draft.has_value()) << "the mended text parses";
     EXPECT_TRUE(save_scene(state)) << state.message;

@@ -120,12 +120,13 @@ int run_screenshot(const Arguments& args) {
     }
     if (!complete) {
         std::cerr << "jtracer-view: the render did not complete ("
-                  << (state.render_note.empty() ? "timed out" : state.render_note)
+                  << (state.render.render_note.empty() ? "timed out" : state.render.render_note)
                   << "); wrote the screenshot as it stands to " << args.screenshot << "\n";
         return 1;
     }
     if (!args.save_render.empty())
-        if (const jt::Expected<void> saved = jt::view::save_image(args.save_render, state.display);
+        if (const jt::Expected<void> saved =
+                jt::view::save_image(args.save_render, state.render.display);
             !saved) {
             std::cerr << "jtracer-view: " << saved.error().message << "\n";
             return 1;
@@ -162,7 +163,7 @@ int run_window(const Arguments& args) {
         config.settings_file = default_settings_path();
         AppState app(config);
         app.wakeup.set_callback(GlfwWindow::wake);
-        app.recent.load(default_recent_files_path());
+        app.files.recent.load(default_recent_files_path());
         open_scene(app, args.scene);
         print_diagnostics(app);
         const auto started = std::chrono::steady_clock::now();
@@ -183,10 +184,10 @@ int run_window(const Arguments& args) {
             // Keys held back for the next frame (key_taps.hpp) need it now.
             if (key_taps.holding())
                 window.poll_events();
-            else if (render_complete(app) && !app.loader.busy() && !app.object_drag &&
+            else if (render_complete(app.render) && !app.files.loader.busy() && !app.drags.object &&
                      !args.exit_when_done)
                 window.wait_events(0.2);
-            else if (waiting_for_workers(app))
+            else if (waiting_for_workers(app.files, app.render))
                 window.wait_events(0.05);
             else
                 window.poll_events();
@@ -212,7 +213,7 @@ int run_window(const Arguments& args) {
             if (const std::string t = window_title(app); t != title) window.set_title(title = t);
             const auto now = std::chrono::steady_clock::now();
             // Frame 1 compiles shaders and uploads the font: startup, not responsiveness.
-            if (!render_complete(app) && app.started && ++frames_drawn > 2) {
+            if (!render_complete(app.render) && app.render.started && ++frames_drawn > 2) {
                 const double seconds = std::chrono::duration<double>(now - frame_start).count();
                 ++busy_frames;
                 busy_seconds += seconds;
@@ -220,9 +221,10 @@ int run_window(const Arguments& args) {
             }
             frame_start = now;
             if (args.exit_when_done) {
-                if (render_complete(app) && ++frames_after_done > 2) break;
-                if (!app.started && !app.render_note.empty()) {
-                    std::cerr << "jtracer-view: nothing to render: " << app.render_note << "\n";
+                if (render_complete(app.render) && ++frames_after_done > 2) break;
+                if (!app.render.started && !app.render.render_note.empty()) {
+                    std::cerr << "jtracer-view: nothing to render: " << app.render.render_note
+                              << "\n";
                     exit_code = 1;
                     break;
                 }
@@ -245,7 +247,7 @@ int run_window(const Arguments& args) {
                              "slowest %.1f ms\n",
                              busy_frames, busy_frames / busy_seconds, slowest_frame * 1000.0);
         }
-        app.renderer.stop();
+        app.render.renderer.stop();
     }
     ImGui_ImplGlfw_Shutdown();
     return exit_code;

@@ -22,7 +22,7 @@ const ImVec4 kAdded(0.5f, 0.9f, 0.5f, 1.0f);
 void choices(AppState& state, ReloadBarState& bar, bool unchanged) {
     if (button("Reload, drop my edits", "Show the file as it is on disk; your edits are lost"))
         resolve_reload(state, ReloadChoice::drop_edits);
-    if (!unchanged && state.reapply_problem.empty()) {
+    if (!unchanged && state.files.reapply_problem.empty()) {
         same_line_if_fits("Reload, re-apply my edits");
         if (button("Reload, re-apply my edits",
                    "Take the file's new text and make your edits to it again"))
@@ -40,7 +40,7 @@ void choices(AppState& state, ReloadBarState& bar, bool unchanged) {
 
 void differences(const AppState& state, ReloadBarState& bar, float max_height) {
     const std::string mine = document_text(state.doc);
-    const std::string& theirs = state.pending_reload->text;
+    const std::string& theirs = state.files.pending_reload->text;
     if (mine != bar.mine || theirs != bar.theirs) {
         bar.diff = diff_lines(mine, theirs);
         bar.mine = mine;
@@ -81,7 +81,7 @@ void differences(const AppState& state, ReloadBarState& bar, float max_height) {
 }  // namespace
 
 float reload_bar(AppState& state, ReloadBarState& bar, const ScreenRect& area) {
-    if (!state.pending_reload || area.width() <= 0.0f) {
+    if (!state.files.pending_reload || area.width() <= 0.0f) {
         bar.show_differences = false;
         return 0.0f;
     }
@@ -92,20 +92,20 @@ float reload_bar(AppState& state, ReloadBarState& bar, const ScreenRect& area) {
                  ImGuiWindowFlags_NoDecoration | ImGuiWindowFlags_NoMove |
                      ImGuiWindowFlags_NoSavedSettings | ImGuiWindowFlags_AlwaysAutoResize);
     const std::string name = state.doc.path.filename().string();
-    const bool unchanged = state.pending_reload->text == state.doc.disk_text;
+    const bool unchanged = state.files.pending_reload->text == state.doc.disk_text;
     ImGui::PushStyleColor(ImGuiCol_Text, kWarning);
     if (unchanged)
         ImGui::TextWrapped("%s is unchanged on disk. Reloading it would drop your unsaved edits.",
                            name.c_str());
     else
         ImGui::TextWrapped("%s changed on disk%s, and you have unsaved edits.", name.c_str(),
-                           state.pending_reload->ok ? "" : " (it has errors)");
+                           state.files.pending_reload->ok ? "" : " (it has errors)");
     ImGui::PopStyleColor();
     choices(state, bar, unchanged);
-    if (state.pending_reload && !unchanged && !state.reapply_problem.empty())
+    if (state.files.pending_reload && !unchanged && !state.files.reapply_problem.empty())
         ImGui::TextWrapped("(your edits cannot be re-applied to the new text: %s)",
-                           state.reapply_problem.c_str());
-    if (state.pending_reload && bar.show_differences)
+                           state.files.reapply_problem.c_str());
+    if (state.files.pending_reload && bar.show_differences)
         differences(state, bar, area.height() * 0.45f);
     const float height = ImGui::GetWindowHeight();
     note_window("reload bar");

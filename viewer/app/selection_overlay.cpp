@@ -58,7 +58,7 @@ void SelectionOverlay::rebuild(const PrimitiveIdImage& ids, int primitive) {
 void SelectionOverlay::draw(AppState& state, ImDrawList* draw_list, const ScreenRect& where,
                             int image_w, int image_h) {
     if (where.width() <= 0 || image_w <= 0) return;
-    const Selection selected = current_selection(state);
+    const Selection selected = current_selection(state.view, state.doc.scene);
     if (selected.kind == Selection::Kind::primitive) {
         const std::shared_ptr<const PrimitiveIdImage> ids = shown_primitive_ids(state);
         if (ids && ids->width == image_w && ids->height == image_h) {

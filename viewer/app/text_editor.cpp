@@ -165,8 +165,8 @@ void follow_selection(AppState& state, TextEditorState& ed, bool clicked) {
     if (ed.buffer != state.doc.text) return;
     if (clicked) {
         const Selection at = selection_at_offset(state, static_cast<std::size_t>(ed.cursor));
-        if (at.kind != Selection::Kind::none && at != state.selection) select(state, at);
-    } else if (state.reveal_selection) {
+        if (at.kind != Selection::Kind::none && at != state.view.selection) select(state.view, at);
+    } else if (state.view.reveal_selection) {
         if (const std::optional<int> line = selection_line(state)) ed.scroll_to = *line;
     }
 }
@@ -227,7 +227,7 @@ void text_editor(AppState& state, TextEditorState& ed, float x0, float y0, float
     const bool draft = doc.draft.has_value();
     ImGui::Text("%s%s", name.c_str(), has_unsaved_edits(doc) ? " *" : "");
     ImGui::SameLine();
-    if (state.checker.in_flight())
+    if (state.check.checker.in_flight())
         ImGui::TextDisabled("checking...");
     else if (draft)
         ImGui::TextColored(ImVec4(1.0f, 0.45f, 0.4f, 1.0f), "errors: showing the last good image");

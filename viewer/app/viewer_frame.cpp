@@ -37,12 +37,12 @@ bool pressed(int key) {
 // handles Esc itself) and asks to quit only when nothing is.
 void handle_escape(AppState& state) {
     if (!pressed(keys::escape)) return;
-    if (state.object_drag) {
+    if (state.drags.object) {
         cancel_object_drag(state);
         return;
     }
     if (ImGui::IsPopupOpen("", ImGuiPopupFlags_AnyPopupId)) {
-        if (state.unsaved_prompt) resolve_unsaved(state, UnsavedChoice::cancel);
+        if (state.files.unsaved_prompt) resolve_unsaved(state, UnsavedChoice::cancel);
         ImGui::ClosePopupToLevel(0, true);
         return;
     }
@@ -64,7 +64,7 @@ struct ImagePlace {
 ImagePlace place(const AppState& state, const FrameState& frame, ScreenRect area,
                  float framebuffer_scale) {
     const int w = frame.presenter.width(), h = frame.presenter.height();
-    return {area, place_image(w, h, area, framebuffer_scale, state.image_view), w, h,
+    return {area, place_image(w, h, area, framebuffer_scale, state.view.image_view), w, h,
             framebuffer_scale};
 }
 
@@ -78,26 +78,27 @@ ImVec2 zoom_centre(const ImagePlace& image) {
 
 void zoom_step(AppState& state, const ImagePlace& image, int steps) {
     const ImVec2 at = zoom_centre(image);
-    state.image_view = zoom_view_step(state.image_view, image.width, image.height, image.area,
-                                      image.framebuffer_scale, steps, at.x, at.y);
+    state.view.image_view = zoom_view_step(state.view.image_view, image.width, image.height,
+                                           image.area, image.framebuffer_scale, steps, at.x, at.y);
 }
 
 void zoom_actual_pixels(AppState& state, const ImagePlace& image) {
     const ImVec2 at = zoom_centre(image);
-    state.image_view = zoom_view_to(state.image_view, image.width, image.height, image.area,
-                                    image.framebuffer_scale, 1.0f, at.x, at.y);
+    state.view.image_view = zoom_view_to(state.view.image_view, image.width, image.height,
+                                         image.area, image.framebuffer_scale, 1.0f, at.x, at.y);
 }
 
 // Space toggles the pause when let go, unless it was held for a pan.
 void handle_space(AppState& state) {
-    if (pressed(keys::space)) state.space_panned = false;
-    if (ImGui::IsKeyReleased(keys::space) && !state.space_panned) toggle_pause(state);
+    if (pressed(keys::space)) state.view.space_panned = false;
+    if (ImGui::IsKeyReleased(keys::space) && !state.view.space_panned) toggle_pause(state);
 }
 
 void handle_shortcuts(AppState& state, FrameState& frame, const ImagePlace& image) {
     const ImGuiIO& io = ImGui::GetIO();
     handle_escape(state);
-    if (io.WantTextInput || state.unsaved_prompt) return;  // typing in a field: letters are text
+    if (io.WantTextInput || state.files.unsaved_prompt)
+        return;  // typing in a field: letters are text
     selection_keys(state);
     if (io.KeyCtrl) {
         if (pressed(keys::letter('S'))) save_scene(state);
@@ -108,14 +109,14 @@ void handle_shortcuts(AppState& state, FrameState& frame, const ImagePlace& imag
     if (pressed(keys::letter('R'))) reload_scene(state);
     if (pressed(keys::letter('C'))) next_camera(state);
     if (pressed(keys::letter('S'))) save_image_numbered(state);
-    if (pressed(keys::letter('F'))) state.image_view = ImageView{};
+    if (pressed(keys::letter('F'))) state.view.image_view = ImageView{};
     if (pressed(keys::digit('1')) || pressed(keys::keypad_1)) zoom_actual_pixels(state, image);
     if (pressed(keys::equal) || pressed(keys::keypad_add)) zoom_step(state, image, 1);
     if (pressed(keys::minus) || pressed(keys::keypad_subtract)) zoom_step(state, image, -1);
-    if (pressed(keys::letter('A')) && state.compare.a)
-        state.compare.mode =
-            state.compare.mode == CompareMode::a ? CompareMode::live : CompareMode::a;
-    if (pressed(keys::letter('H'))) state.show_ui = !state.show_ui;
+    if (pressed(keys::letter('A')) && state.view.compare.a)
+        state.view.compare.mode =
+            state.view.compare.mode == CompareMode::a ? CompareMode::live : CompareMode::a;
+    if (pressed(keys::letter('H'))) state.view.show_ui = !state.view.show_ui;
     if (pressed(keys::letter('T'))) frame.text_editor.open = !frame.text_editor.open;
     handle_space(state);
 }
@@ -161,7 +162,7 @@ std::optional<FrameRegion> dragged_region(const ImageDrag& drag, const ImagePlac
 }
 
 void end_drag(AppState& state, const ImagePlace& image) {
-    const ImageDrag& drag = state.drag;
+    const ImageDrag& drag = state.drags.image;
     if (drag.mode == ImageDrag::Mode::region) {
         if (!drag.moved) return;  // a Ctrl+click sets no region
         if (const auto region = dragged_region(drag, image, drag.last_x, drag.last_y))
@@ -175,18 +176,18 @@ void end_drag(AppState& state, const ImagePlace& image) {
 }
 
 void follow_drag(AppState& state, const ImagePlace& image, float dx, float dy) {
-    switch (state.drag.mode) {
+    switch (state.drags.image.mode) {
         case ImageDrag::Mode::image_pan:
-            state.image_view = pan_view(state.image_view, image.width, image.height, image.area,
-                                        image.framebuffer_scale, dx, dy);
+            state.view.image_view = pan_view(state.view.image_view, image.width, image.height,
+                                             image.area, image.framebuffer_scale, dx, dy);
             break;
         case ImageDrag::Mode::orbit:
-            use_free_camera(state);
-            orbit(state.free_camera, dx, dy, image.where.height());
+            use_free_camera(state.view, state.doc.scene);
+            orbit(state.view.free_camera, dx, dy, image.where.height());
             break;
         case ImageDrag::Mode::camera_pan:
-            use_free_camera(state);
-            pan(state.free_camera, dx, dy, image.where.height());
+            use_free_camera(state.view, state.doc.scene);
+            pan(state.view.free_camera, dx, dy, image.where.height());
             break;
         case ImageDrag::Mode::region:       // drawn while dragging, set when let go
         case ImageDrag::Mode::move_object:  // follows the cursor every frame
@@ -200,7 +201,7 @@ void follow_drag(AppState& state, const ImagePlace& image, float dx, float dy) {
 // about the mouse.
 void handle_image_mouse(AppState& state, const ImagePlace& image) {
     const ImGuiIO& io = ImGui::GetIO();
-    ImageDrag& drag = state.drag;
+    ImageDrag& drag = state.drags.image;
     const bool over = image.shows(io.MousePos.x, io.MousePos.y);
     const bool usable = !io.WantCaptureMouse && state.doc.loaded && image.where.height() > 0;
     if (drag.button >= 0 && !ImGui::IsMouseDown(drag.button)) {
@@ -213,7 +214,7 @@ void handle_image_mouse(AppState& state, const ImagePlace& image) {
                 const ImVec2 at = io.MouseClickedPos[button];
                 drag = {button, drag_mode(button), at.x, at.y, at.x, at.y, false};
                 if (drag.mode == ImageDrag::Mode::image_pan && button == ImGuiMouseButton_Left)
-                    state.space_panned = true;
+                    state.view.space_panned = true;
                 break;
             }
     }
@@ -238,14 +239,14 @@ void handle_image_mouse(AppState& state, const ImagePlace& image) {
     } else if (io.MouseWheel != 0.0f && over && usable) {
         if (io.KeyCtrl) {
             const float zoom = shown_zoom(image.width, image.height, image.area,
-                                          image.framebuffer_scale, state.image_view) *
+                                          image.framebuffer_scale, state.view.image_view) *
                                std::pow(kWheelZoomFactor, io.MouseWheel);
-            state.image_view =
-                zoom_view_to(state.image_view, image.width, image.height, image.area,
+            state.view.image_view =
+                zoom_view_to(state.view.image_view, image.width, image.height, image.area,
                              image.framebuffer_scale, zoom, io.MousePos.x, io.MousePos.y);
         } else {
-            use_free_camera(state);
-            dolly(state.free_camera, io.MouseWheel);
+            use_free_camera(state.view, state.doc.scene);
+            dolly(state.view.free_camera, io.MouseWheel);
         }
     }
 }
@@ -265,10 +266,10 @@ void draw_region(ImDrawList* draw_list, const ImagePlace& image, const FrameRegi
 // The render region over the image, and the one being dragged.
 void draw_regions(const AppState& state, ImDrawList* draw_list, const ImagePlace& image) {
     if (image.width <= 0) return;
-    if (state.render_region &&
-        check_region_in_frame(*state.render_region, image.width, image.height))
-        draw_region(draw_list, image, *state.render_region, IM_COL32(120, 220, 255, 255));
-    const ImageDrag& drag = state.drag;
+    if (state.view.render_region &&
+        check_region_in_frame(*state.view.render_region, image.width, image.height))
+        draw_region(draw_list, image, *state.view.render_region, IM_COL32(120, 220, 255, 255));
+    const ImageDrag& drag = state.drags.image;
     if (drag.button >= 0 && drag.mode == ImageDrag::Mode::region && drag.moved)
         if (const auto region = dragged_region(drag, image, drag.last_x, drag.last_y))
             draw_region(draw_list, image, *region, IM_COL32(255, 255, 255, 255));
@@ -277,28 +278,29 @@ void draw_regions(const AppState& state, ImDrawList* draw_list, const ImagePlace
 // Keeps the compare texture holding what the view shows: A, or the difference
 // of A and the live image (again whenever the live image changed).
 void update_compare_texture(const AppState& state, FrameState& frame, bool display_changed) {
-    const CompareMode mode = state.compare.mode;
-    if (!comparable(state) || mode == CompareMode::live) return;
+    const CompareMode mode = state.view.compare.mode;
+    if (!comparable(state.view.compare, state.render.display) || mode == CompareMode::live) return;
     const bool difference = mode == CompareMode::difference;
-    const bool stale = frame.compare_holds_version != state.compare.a_version ||
+    const bool stale = frame.compare_holds_version != state.view.compare.a_version ||
                        frame.compare_holds_difference != difference;
     if (!stale && !(difference && display_changed)) return;
     if (difference) {
-        CompareDifference diff = compare_difference(state);
+        CompareDifference diff = compare_difference(state.view.compare, state.render.display);
         frame.compare.upload(diff.image, std::nullopt);
         frame.compare_summary = std::move(diff.summary);
     } else {
-        frame.compare.upload(*state.compare.a, std::nullopt);
+        frame.compare.upload(*state.view.compare.a, std::nullopt);
     }
-    frame.compare_holds_version = state.compare.a_version;
+    frame.compare_holds_version = state.view.compare.a_version;
     frame.compare_holds_difference = difference;
 }
 
 // The live image, or A and the difference as the compare mode asks.
 void draw_image(const AppState& state, const FrameState& frame, ImDrawList* draw_list,
                 const ImagePlace& image) {
-    const CompareMode mode = state.compare.mode;
-    if (!comparable(state) || mode == CompareMode::live || !frame.compare.has_image()) {
+    const CompareMode mode = state.view.compare.mode;
+    if (!comparable(state.view.compare, state.render.display) || mode == CompareMode::live ||
+        !frame.compare.has_image()) {
         frame.presenter.draw(draw_list, image.where);
         return;
     }
@@ -306,9 +308,11 @@ void draw_image(const AppState& state, const FrameState& frame, ImDrawList* draw
         frame.compare.draw(draw_list, image.where);
         return;
     }
-    const float x = image_to_window(image.where, image.width, image.height,
-                                    {static_cast<double>(split_column(state)), 0.0})
-                        .x;
+    const float x =
+        image_to_window(
+            image.where, image.width, image.height,
+            {static_cast<double>(split_column(state.view.compare, state.render.display)), 0.0})
+            .x;
     const ScreenRect& r = image.where;
     draw_list->PushClipRect(ImVec2(r.x0, r.y0), ImVec2(x, r.y1), true);
     frame.compare.draw(draw_list, r);
@@ -322,7 +326,7 @@ void draw_image(const AppState& state, const FrameState& frame, ImDrawList* draw
 // The image view's controls, over the image's top left corner.
 void compare_mode_button(AppState& state, const char* label, CompareMode mode, const char* tip) {
     ImGui::SameLine();
-    if (ImGui::RadioButton(label, state.compare.mode == mode)) state.compare.mode = mode;
+    if (ImGui::RadioButton(label, state.view.compare.mode == mode)) state.view.compare.mode = mode;
     note_item(label, true);
     tooltip(tip);
 }
@@ -333,8 +337,8 @@ void compare_controls(AppState& state, const FrameState& frame) {
                "Keep the image as it is now as A, to compare the live render "
                "with (split, A alone, or their difference)"))
         snapshot_a(state);
-    if (!state.compare.a) return;
-    if (!comparable(state)) {
+    if (!state.view.compare.a) return;
+    if (!comparable(state.view.compare, state.render.display)) {
         ImGui::SameLine();
         ImGui::TextUnformatted("A has another size than the image");
         return;
@@ -346,13 +350,13 @@ void compare_controls(AppState& state, const FrameState& frame) {
     compare_mode_button(state, "Difference", CompareMode::difference,
                         "Where A and live differ, as jtracer-cli diff draws it: red to yellow "
                         "to white as the difference grows, the rest a dim copy of A");
-    if (state.compare.mode == CompareMode::split) {
+    if (state.view.compare.mode == CompareMode::split) {
         ImGui::SameLine();
         ImGui::SetNextItemWidth(ImGui::GetFontSize() * 8.0f);
-        ImGui::SliderFloat("##split", &state.compare.split, 0.0f, 1.0f, "split %.2f");
+        ImGui::SliderFloat("##split", &state.view.compare.split, 0.0f, 1.0f, "split %.2f");
         note_item("split", true);
         tooltip("Where the line between A (left) and live (right) is");
-    } else if (state.compare.mode == CompareMode::difference) {
+    } else if (state.view.compare.mode == CompareMode::difference) {
         ImGui::SameLine();
         ImGui::TextUnformatted(frame.compare_summary.c_str());
     }
@@ -368,7 +372,8 @@ void image_toolbar(AppState& state, const FrameState& frame, const ImagePlace& i
                  ImGuiWindowFlags_NoDecoration | ImGuiWindowFlags_NoMove |
                      ImGuiWindowFlags_NoSavedSettings | ImGuiWindowFlags_AlwaysAutoResize |
                      ImGuiWindowFlags_NoFocusOnAppearing);
-    if (button("Fit", "The whole image, as large as it fits (F)")) state.image_view = ImageView{};
+    if (button("Fit", "The whole image, as large as it fits (F)"))
+        state.view.image_view = ImageView{};
     ImGui::SameLine();
     if (button("1:1", "One image pixel per screen pixel (1)")) zoom_actual_pixels(state, image);
     ImGui::SameLine();
@@ -380,7 +385,7 @@ void image_toolbar(AppState& state, const FrameState& frame, const ImagePlace& i
         zoom_step(state, image, 1);
     ImGui::SameLine();
     const float zoom = shown_zoom(image.width, image.height, image.area, image.framebuffer_scale,
-                                  state.image_view);
+                                  state.view.image_view);
     ImGui::Text("%.0f%%", zoom * 100.0f);
     ImGui::SameLine();
     // In a small image area the toolbar keeps to one short row, the rest in a
@@ -402,22 +407,22 @@ void region_and_compare(AppState& state, const FrameState& frame) {
     if (button("Clear region",
                "Render the whole image again. Ctrl+drag on the image renders only that "
                "rectangle (as jtracer-cli --region); the rest keeps what it showed",
-               state.render_region ? std::string()
-                                   : "No region: Ctrl+drag on the image to render only a "
-                                     "rectangle of it (as jtracer-cli --region)"))
+               state.view.render_region ? std::string()
+                                        : "No region: Ctrl+drag on the image to render only a "
+                                          "rectangle of it (as jtracer-cli --region)"))
         clear_render_region(state);
-    if (state.render_region) {
+    if (state.view.render_region) {
         ImGui::SameLine();
-        ImGui::Text("region %s", format_frame_region(*state.render_region).c_str());
+        ImGui::Text("region %s", format_frame_region(*state.view.render_region).c_str());
     }
     compare_controls(state, frame);
 }
 
 // Hovering the image (not dragging) shows what the pixel under the mouse holds.
 void inspect_hovered_pixel(AppState& state, const ImagePlace& image) {
-    state.inspected.clear();
+    state.view.inspected.clear();
     const ImGuiIO& io = ImGui::GetIO();
-    if (state.drag.button >= 0 || io.WantCaptureMouse || !ImGui::IsMousePosValid()) return;
+    if (state.drags.image.button >= 0 || io.WantCaptureMouse || !ImGui::IsMousePosValid()) return;
     // A popup opened this frame (Esc's prompt) is not in WantCaptureMouse yet,
     // and ImGui 1.86 asserts on a window that appears under a modal.
     if (ImGui::IsPopupOpen("", ImGuiPopupFlags_AnyPopupId | ImGuiPopupFlags_AnyPopupLevel)) return;
@@ -428,7 +433,7 @@ void inspect_hovered_pixel(AppState& state, const ImagePlace& image) {
     const std::optional<PixelReport> report =
         inspect_pixel(state, static_cast<int>(at->x), static_cast<int>(at->y));
     if (!report) return;
-    state.inspected = describe(*report, state.doc.scene);
+    state.view.inspected = describe(*report, state.doc.scene);
     // In the image's bottom corner away from the mouse: a box at the mouse sat
     // on the object just picked and hid its outline.
     const float pad = ImGui::GetStyle().WindowPadding.x;
@@ -441,7 +446,7 @@ void inspect_hovered_pixel(AppState& state, const ImagePlace& image) {
                  ImGuiWindowFlags_NoDecoration | ImGuiWindowFlags_NoInputs |
                      ImGuiWindowFlags_AlwaysAutoResize | ImGuiWindowFlags_NoSavedSettings |
                      ImGuiWindowFlags_NoFocusOnAppearing | ImGuiWindowFlags_NoNav);
-    ImGui::TextUnformatted(state.inspected.c_str());
+    ImGui::TextUnformatted(state.view.inspected.c_str());
     note_window("pixel inspector");
     ImGui::End();
 }
@@ -452,7 +457,7 @@ float sidebar_width(const AppState& state, float window_width) {
     const float font = ImGui::GetFontSize();
     const float least = 20.0f * font;
     const float most = std::max(least, window_width - 12.0f * font);
-    return std::clamp(state.sidebar_width * font, std::min(least, window_width * 0.6f),
+    return std::clamp(state.view.sidebar_width * font, std::min(least, window_width * 0.6f),
                       std::min(most, window_width * 0.75f));
 }
 
@@ -468,7 +473,7 @@ float sidebar(AppState& state, FrameState& frame, float window_width, float heig
     // a drag: a window too small for the user's width squeezes the panel, and
     // that width is not the user's.
     if (ImGui::GetWindowWidth() != width && ImGui::IsMouseDown(ImGuiMouseButton_Left))
-        state.sidebar_width = ImGui::GetWindowWidth() / ImGui::GetFontSize();
+        state.view.sidebar_width = ImGui::GetWindowWidth() / ImGui::GetFontSize();
     ImGui::PushItemWidth(-ImGui::GetFontSize() * 7.5f);
     ImGui::Checkbox("Text editor", &frame.text_editor.open);
     note_item("Text editor", true);
@@ -515,14 +520,14 @@ void status_window(AppState& state, float y, float width) {
 
 // Save / Discard / Cancel before a command that would drop unsaved edits.
 void unsaved_prompt(AppState& state) {
-    if (!state.unsaved_prompt) return;
+    if (!state.files.unsaved_prompt) return;
     if (!ImGui::IsPopupOpen(unsaved_popup)) ImGui::OpenPopup(unsaved_popup);
     const ImVec2 centre(ImGui::GetIO().DisplaySize.x * 0.5f, ImGui::GetIO().DisplaySize.y * 0.5f);
     ImGui::SetNextWindowPos(centre, ImGuiCond_Always, ImVec2(0.5f, 0.5f));
     if (!ImGui::BeginPopupModal(unsaved_popup, nullptr,
                                 ImGuiWindowFlags_AlwaysAutoResize | ImGuiWindowFlags_NoMove))
         return;
-    const bool quitting = state.unsaved_prompt->kind == GuardedCommand::Kind::quit;
+    const bool quitting = state.files.unsaved_prompt->kind == GuardedCommand::Kind::quit;
     const std::string name = state.doc.path.filename().string();
     ImGui::Text("%s has unsaved edits.", name.c_str());
     ImGui::TextUnformatted(quitting ? "Save them before quitting?"
@@ -549,15 +554,15 @@ void viewer_frame(AppState& state, FrameState& frame, const FrameInfo& info) {
     reload_if_changed(state);
     take_finished_load(state);
     take_checked_text(state);
-    const EditMark before = begin_edit_tracking(state);
+    const EditMark before = begin_edit_tracking(state.history, state.doc);
     // Keys zoom about the image as the last frame placed it.
     handle_shortcuts(state, frame, place(state, frame, frame.image_area, info.framebuffer_scale));
 
     // A reveal asked for by now is shown by the panels below; one a panel's
     // own button asks for (they act after the panel is drawn) is the next frame's.
-    const bool revealing = state.reveal_selection;
+    const bool revealing = state.view.reveal_selection;
     ScreenRect area{0, 0, w, h};
-    if (state.show_ui) {
+    if (state.view.show_ui) {
         const float status_h = std::min(status_height(), h);
         area.x0 = sidebar(state, frame, w, h - status_h);
         area.y1 = h - status_h;
@@ -572,15 +577,15 @@ void viewer_frame(AppState& state, FrameState& frame, const FrameInfo& info) {
         if (frame.presenter.has_image())
             image_toolbar(state, frame, place(state, frame, area, info.framebuffer_scale));
         // Once the panel edge is let go: a drag writes the file once, not every frame.
-        if (!ImGui::IsMouseDown(ImGuiMouseButton_Left)) remember_settings(state);
+        if (!ImGui::IsMouseDown(ImGuiMouseButton_Left)) remember_settings(state.view, state.config);
     }
-    if (revealing) state.reveal_selection = false;  // the panels have shown it
+    if (revealing) state.view.reveal_selection = false;  // the panels have shown it
     unsaved_prompt(state);
-    track_edits(state, before, ImGui::IsAnyItemActive());
-    check_edits(state);
+    track_edits(state.history, state.doc, before, ImGui::IsAnyItemActive());
+    check_edits(state.check, state.doc, state.files);
     update_render(state);
-    const std::optional<PixelRect> changed = take_display_changes(state);
-    if (changed) frame.presenter.upload(state.display, changed);
+    const std::optional<PixelRect> changed = take_display_changes(state.render);
+    if (changed) frame.presenter.upload(state.render.display, changed);
     update_compare_texture(state, frame, changed.has_value());
     const ImagePlace image = place(state, frame, area, info.framebuffer_scale);
     handle_image_mouse(state, image);
@@ -604,7 +609,7 @@ std::string window_title(const AppState& state) {
         title += " - " + state.doc.path.filename().string();
         if (has_unsaved_edits(state.doc)) title += " *";
     }
-    if (const std::string status = render_title_status(state); !status.empty())
+    if (const std::string status = render_title_status(state.render); !status.empty())
         title += " - " + status;
     return title;
 }

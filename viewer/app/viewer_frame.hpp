@@ -20,13 +20,13 @@ struct FrameInfo {
 };
 
 // What the frame code keeps between frames beside the model: the texture that
-// shows state.display, and what the last frame drew where. Lives with the GL
+// shows state.render.display, and what the last frame drew where. Lives with the GL
 // context (its texture must go before the context does).
 struct FrameState {
     Presenter presenter;
     // A (split and A views) or the difference image, whichever the view shows.
     Presenter compare;
-    std::uint64_t compare_holds_version = ~std::uint64_t{0};  // of state.compare.a
+    std::uint64_t compare_holds_version = ~std::uint64_t{0};  // of state.view.compare.a
     bool compare_holds_difference = false;
     std::string compare_summary;  // of the difference shown
     SelectionOverlay overlay;

@@ -9,36 +9,35 @@
 namespace jt::view {
 
 void snapshot_a(AppState& state) {
-    if (state.display.width <= 0) {
+    if (state.render.display.width <= 0) {
         state.message = "No image to keep as A yet";
         return;
     }
-    state.compare.a = state.display;
-    ++state.compare.a_version;
-    if (state.compare.mode == CompareMode::live) state.compare.mode = CompareMode::split;
+    state.view.compare.a = state.render.display;
+    ++state.view.compare.a_version;
+    if (state.view.compare.mode == CompareMode::live) state.view.compare.mode = CompareMode::split;
     state.message = "Kept the image as A: the split shows A left of the line, live right";
 }
 
-void clear_snapshot_a(AppState& state) {
-    state.compare.a.reset();
-    ++state.compare.a_version;
-    state.compare.mode = CompareMode::live;
+void clear_snapshot_a(CompareState& compare) {
+    compare.a.reset();
+    ++compare.a_version;
+    compare.mode = CompareMode::live;
 }
 
-bool comparable(const AppState& state) {
-    const std::optional<Image8>& a = state.compare.a;
-    return a && a->width == state.display.width && a->height == state.display.height &&
-           a->width > 0;
+bool comparable(const CompareState& compare, const Image8& display) {
+    const std::optional<Image8>& a = compare.a;
+    return a && a->width == display.width && a->height == display.height && a->width > 0;
 }
 
-int split_column(const AppState& state) {
-    const int w = state.display.width;
-    return std::clamp(static_cast<int>(std::lround(state.compare.split * w)), 0, w);
+int split_column(const CompareState& compare, const Image8& display) {
+    const int w = display.width;
+    return std::clamp(static_cast<int>(std::lround(compare.split * w)), 0, w);
 }
 
-CompareDifference compare_difference(const AppState& state) {
-    if (!comparable(state)) return {};
-    ImageDiff diff = diff_images(*state.compare.a, state.display);
+CompareDifference compare_difference(const CompareState& compare, const Image8& display) {
+    if (!comparable(compare, display)) return {};
+    ImageDiff diff = diff_images(*compare.a, display);
     char summary[128];
     if (std::isinf(diff.psnr))
         std::snprintf(summary, sizeof summary, "identical");

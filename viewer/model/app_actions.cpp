@@ -25,12 +25,12 @@ int scene_camera_index(const Scene& scene) {
 }
 
 void after_scene_replaced(AppState& state, const Scene& before) {
-    keep_camera_selection(state, before);
-    state.undo.clear();
-    state.edit_base.reset();
-    state.pending_reload.reset();
-    state.save_conflict.clear();
-    note_command_edit(state);
+    keep_camera_selection(state.view, state.doc.scene, before);
+    state.history.undo.clear();
+    state.history.edit_base.reset();
+    state.files.pending_reload.reset();
+    state.files.save_conflict.clear();
+    note_command_edit(state.history, state.doc);
 }
 
 bool has_located(const std::vector<Diagnostic>& diagnostics) {
@@ -45,19 +45,19 @@ std::string camera_label(const Camera& camera, int index) {
 
 }  // namespace
 
-void keep_camera_selection(AppState& state, const Scene& before) {
-    const auto& cameras = state.doc.scene.cameras;
+void keep_camera_selection(ViewState& view, const Scene& scene, const Scene& before) {
+    const auto& cameras = scene.cameras;
     const int count = static_cast<int>(cameras.size());
-    const int old = state.camera_index;
+    const int old = view.camera_index;
     if (old >= 0 && old < static_cast<int>(before.cameras.size())) {
         const std::string& name = before.cameras[old].name;
         if (old < count && cameras[old].name == name) return;
-        if (const int same = name.empty() ? -1 : find_camera(state.doc.scene, name); same >= 0) {
-            state.camera_index = same;
+        if (const int same = name.empty() ? -1 : find_camera(scene, name); same >= 0) {
+            view.camera_index = same;
             return;
         }
     }
-    if (old < 0 || old >= count) state.camera_index = scene_camera_index(state.doc.scene);
+    if (old < 0 || old >= count) view.camera_index = scene_camera_index(scene);
 }
 
 namespace {
@@ -68,15 +68,15 @@ void finish_open(AppState& state, const std::filesystem::path& path, LoadAttempt
     const Scene before = state.doc.scene;
     accept_load(state.doc, path, std::move(attempt));
     if (ok || first) {
-        state.watcher = FileWatcher(state.config.watch_interval);
-        state.watcher.watch(path);
+        state.files.watcher = FileWatcher(state.config.watch_interval);
+        state.files.watcher.watch(path);
     }
     if (ok) {
-        state.camera_index = scene_camera_index(state.doc.scene);
-        state.free_camera_active = false;
+        state.view.camera_index = scene_camera_index(state.doc.scene);
+        state.view.free_camera_active = false;
         after_scene_replaced(state, before);
-        state.recent.add(path);
-        state.open_path_input = path.string();
+        state.files.recent.add(path);
+        state.fields.open_path_input = path.string();
         state.message = "Opened " + path.string();
     } else if (document_is_blank(state.doc)) {
         state.message = path.filename().string() +
@@ -97,12 +97,12 @@ void show_broken_file(AppState& state, LoadAttempt attempt) {
     accept_broken_file(state.doc, std::move(attempt));
     // The scene is not replaced (no new revision, no render); the history
     // was of the text before.
-    state.undo.clear();
-    state.edit_base.reset();
-    state.pending_reload.reset();
-    state.save_conflict.clear();
-    state.typing = false;
-    state.checker.cancel();
+    state.history.undo.clear();
+    state.history.edit_base.reset();
+    state.files.pending_reload.reset();
+    state.files.save_conflict.clear();
+    state.history.typing = false;
+    state.check.checker.cancel();
     state.message = state.doc.path.filename().string() +
                     (state.doc.loaded ? " has errors: the text editor (T) shows them; the image is "
                                         "of the last good scene"
@@ -136,16 +136,16 @@ void finish_reload(AppState& state, LoadAttempt attempt) {
     // The same text again: the only choice is whether to drop the edits, and
     // the diagnostics stay those of the edited scene.
     const bool unchanged = attempt.text == state.doc.disk_text;
-    state.reapply_problem.clear();
+    state.files.reapply_problem.clear();
     if (!unchanged) {
         if (const Expected<Scene> reapplied = reapply_edits(state.doc, attempt); !reapplied)
-            state.reapply_problem = reapplied.error().message;
+            state.files.reapply_problem = reapplied.error().message;
         state.doc.load_failed = !attempt.ok;
         state.doc.diagnostics = attempt.diagnostics;
         state.doc.diagnostics_source = attempt.text;
     }
     const bool broken = !attempt.ok;
-    state.pending_reload = std::move(attempt);
+    state.files.pending_reload = std::move(attempt);
     state.message = unchanged
                         ? name +
                               " is unchanged on disk; reloading it would drop your "
@@ -158,18 +158,18 @@ void finish_reload(AppState& state, LoadAttempt attempt) {
 
 void open_scene(AppState& state, const std::filesystem::path& path) {
     request_open(state, path);
-    state.loader.wait();
+    state.files.loader.wait();
     take_finished_load(state);
 }
 
 void request_open(AppState& state, const std::filesystem::path& path) {
-    state.loader.request(path, LoadPurpose::open);
+    state.files.loader.request(path, LoadPurpose::open);
     state.message = "Opening " + path.string();
 }
 
 void reload_scene(AppState& state) {
     if (state.doc.path.empty()) return;
-    state.loader.request(state.doc.path, LoadPurpose::reload);
+    state.files.loader.request(state.doc.path, LoadPurpose::reload);
 }
 
 namespace {
@@ -180,21 +180,21 @@ namespace {
 // image (update_render), and one that loads is shown.
 void files_changed(AppState& state, bool models) {
     if (models) {
-        state.renderer.forget_prepared();
-        state.mesh_figures.reset();
+        state.render.renderer.forget_prepared();
+        state.view.mesh_figures.reset();
     }
-    state.checked_revision.reset();
-    state.rejected.reset();
-    state.started.reset();
+    state.check.checked_revision.reset();
+    state.render.rejected.reset();
+    state.render.started.reset();
 }
 
 bool assets_changed(AppState& state) {
-    if (!state.asset_watcher.due()) return false;
+    if (!state.files.asset_watcher.due()) return false;
     const NamedFiles files = named_files(state.doc.scene);
     std::vector<std::filesystem::path> watched = files.models;
     watched.insert(watched.end(), files.images.begin(), files.images.end());
-    state.asset_watcher.watch(watched);
-    const std::vector<std::filesystem::path> changed = state.asset_watcher.poll();
+    state.files.asset_watcher.watch(watched);
+    const std::vector<std::filesystem::path> changed = state.files.asset_watcher.poll();
     if (changed.empty()) return false;
     bool models = false;
     for (const std::filesystem::path& file : changed)
@@ -213,7 +213,7 @@ bool assets_changed(AppState& state) {
 
 bool reload_if_changed(AppState& state) {
     const bool assets = state.doc.loaded && assets_changed(state);
-    if (!state.watcher.poll()) return assets;
+    if (!state.files.watcher.poll()) return assets;
     reload_scene(state);
     return true;
 }
@@ -229,9 +229,9 @@ void reload_model(AppState& state, std::size_t primitive) {
 }
 
 bool take_finished_load(AppState& state) {
-    std::optional<FinishedLoad> done = state.loader.take();
+    std::optional<FinishedLoad> done = state.files.loader.take();
     if (!done) return false;
-    state.last_load_times = done->attempt.times;
+    state.files.last_load_times = done->attempt.times;
     // A reload of a file that is no longer the open one is stale.
     if (done->purpose == LoadPurpose::reload && done->path != state.doc.path) return true;
     if (done->purpose == LoadPurpose::open)
@@ -242,24 +242,24 @@ bool take_finished_load(AppState& state) {
 }
 
 void resolve_reload(AppState& state, ReloadChoice choice) {
-    if (!state.pending_reload) return;
+    if (!state.files.pending_reload) return;
     const std::string name = state.doc.path.filename().string();
     if (choice == ReloadChoice::keep_edits) {
-        state.pending_reload.reset();
+        state.files.pending_reload.reset();
         state.message = "Kept your edits; " + name +
                         " on disk differs, so Save scene will ask before overwriting it";
         return;
     }
     std::optional<Scene> edited;
     if (choice == ReloadChoice::reapply_edits) {
-        Expected<Scene> reapplied = reapply_edits(state.doc, *state.pending_reload);
+        Expected<Scene> reapplied = reapply_edits(state.doc, *state.files.pending_reload);
         if (!reapplied) {
             state.message = "Edits not re-applied: " + reapplied.error().message;
             return;
         }
         edited = std::move(*reapplied);
     }
-    LoadAttempt newer = std::move(*state.pending_reload);
+    LoadAttempt newer = std::move(*state.files.pending_reload);
     if (!newer.ok) {
         show_broken_file(state, std::move(newer));
         state.message = "Reloaded " + name + " (it has errors); your edits were dropped";
@@ -270,10 +270,10 @@ void resolve_reload(AppState& state, ReloadChoice choice) {
     after_scene_replaced(state, before);
     if (edited) {
         state.doc.scene = std::move(*edited);
-        note_command_edit(state);
-        keep_camera_selection(state, before);
+        note_command_edit(state.history, state.doc);
+        keep_camera_selection(state.view, state.doc.scene, before);
         // One undo shows the file as it is.
-        state.undo.record({state.doc.text, state.doc.original, std::nullopt});
+        state.history.undo.record({state.doc.text, state.doc.original, std::nullopt});
         state.message = "Reloaded " + name + " and re-applied your edits (not saved yet)";
     } else {
         state.message = "Reloaded " + name + "; your edits were dropped";
@@ -287,10 +287,10 @@ bool save_now(AppState& state) {
         state.message = "Scene not saved: " + saved.error().message;
         return false;
     }
-    state.watcher.acknowledge();     // our own write is not an outside change
-    state.checked_revision.reset();  // the diagnostics now describe the new text
-    state.save_conflict.clear();
-    state.pending_reload.reset();
+    state.files.watcher.acknowledge();     // our own write is not an outside change
+    state.check.checked_revision.reset();  // the diagnostics now describe the new text
+    state.files.save_conflict.clear();
+    state.files.pending_reload.reset();
     state.message = "Saved " + state.doc.path.string();
     return true;
 }
@@ -300,9 +300,9 @@ bool save_now(AppState& state) {
 bool save_scene(AppState& state) {
     std::string what;
     if (state.doc.loaded && file_changed_on_disk(state.doc, what)) {
-        state.save_conflict = state.doc.path.filename().string() + " " + what +
-                              " since it was loaded; saving would replace that";
-        state.message = "Scene not saved: " + state.save_conflict;
+        state.files.save_conflict = state.doc.path.filename().string() + " " + what +
+                                    " since it was loaded; saving would replace that";
+        state.message = "Scene not saved: " + state.files.save_conflict;
         return false;
     }
     return save_now(state);
@@ -314,7 +314,7 @@ bool save_scene_anyway(AppState& state) {
 
 bool save_image(AppState& state, const std::filesystem::path& path) {
     const Expected<std::filesystem::path> written =
-        jt::view::save_image_numbered(path, state.display);
+        jt::view::save_image_numbered(path, state.render.display);
     if (!written) {
         state.message = "Image not saved: " + written.error().message;
         return false;
@@ -325,18 +325,18 @@ bool save_image(AppState& state, const std::filesystem::path& path) {
 }
 
 bool save_image_numbered(AppState& state) {
-    return save_image(state, state.save_image_path);
+    return save_image(state, state.fields.save_image_path);
 }
 
 bool save_scene_as(AppState& state, const std::filesystem::path& path, bool replace) {
-    state.save_as_conflict.clear();
+    state.files.save_as_conflict.clear();
     if (!state.doc.loaded) {
         state.message = "Scene not saved: no scene is open";
         return false;
     }
     std::error_code ec;
     if (!replace && std::filesystem::exists(path, ec)) {
-        state.save_as_conflict = path.string();
+        state.files.save_as_conflict = path.string();
         state.message = "Scene not saved: " + path.string() + " exists";
         return false;
     }
@@ -344,42 +344,41 @@ bool save_scene_as(AppState& state, const std::filesystem::path& path, bool repl
         state.message = "Scene not saved: " + saved.error().message;
         return false;
     }
-    state.watcher = FileWatcher(state.config.watch_interval);
-    state.watcher.watch(path);
-    state.checked_revision.reset();
-    state.save_conflict.clear();
-    state.pending_reload.reset();
-    state.recent.add(path);
-    state.open_path_input = path.string();
+    state.files.watcher = FileWatcher(state.config.watch_interval);
+    state.files.watcher.watch(path);
+    state.check.checked_revision.reset();
+    state.files.save_conflict.clear();
+    state.files.pending_reload.reset();
+    state.files.recent.add(path);
+    state.fields.open_path_input = path.string();
     state.message = "Saved " + path.string();
     return true;
 }
 
-void check_edits(AppState& state) {
-    SceneDocument& doc = state.doc;
+void check_edits(CheckState& check, SceneDocument& doc, const FileState& files) {
     // A failed load's diagnostics describe the file, and a pending reload's the
     // newer text: both stay until the file is fixed or the user chooses.
     if (!doc.loaded || doc.load_failed ||
-        (state.pending_reload && state.pending_reload->text != doc.disk_text) || doc.draft) {
-        state.checked_revision.reset();
+        (files.pending_reload && files.pending_reload->text != doc.disk_text) || doc.draft) {
+        check.checked_revision.reset();
         return;
     }
-    if (state.checked_revision == doc.revision) return;
+    if (check.checked_revision == doc.revision) return;
     doc.diagnostics = doc.parse_diagnostics;
     std::vector<Diagnostic> more = validate_scene(doc.scene, doc.source);
     doc.diagnostics.insert(doc.diagnostics.end(), more.begin(), more.end());
     doc.diagnostics_source = doc.text;
     doc.diagnostics_path = doc.path;
-    state.checked_revision = doc.revision;
+    check.checked_revision = doc.revision;
 }
 
 void edit_scene(AppState& state, const std::function<void(Scene&)>& change) {
     const Scene before = state.doc.scene;
     const DocumentVersion version = version_of(state.doc);
     change(state.doc.scene);
-    keep_camera_selection(state, before);
-    state.undo.record(version);
-    note_command_edit(state);
+    keep_camera_selection(state.view, state.doc.scene, before);
+    state.history.undo.record(version);
+    note_command_edit(state.history, state.doc);
 }
 
 namespace {
@@ -387,12 +386,12 @@ namespace {
 // After undo or redo: a draft brought back is checked again (for its
 // diagnostics); any other text ends the typing burst and its pending check.
 void recheck_draft(AppState& state) {
-    state.typing = false;
+    state.history.typing = false;
     if (state.doc.draft)
-        state.checker.check(++state.draft_id, *state.doc.draft, state.doc.path,
-                            std::chrono::milliseconds(0));
+        state.check.checker.check(++state.check.draft_id, *state.doc.draft, state.doc.path,
+                                  std::chrono::milliseconds(0));
     else
-        state.checker.cancel();
+        state.check.checker.cancel();
 }
 
 }  // namespace
@@ -404,96 +403,97 @@ namespace {
 // the drag found it, and nothing more: the drag is the step being undone.
 template <class Step>
 void step_history(AppState& state, Step step, const char* done) {
-    if (state.object_drag) {
+    if (state.drags.object) {
         cancel_object_drag(state);
         return;
     }
     if (auto version = step(version_of(state.doc))) {
         const Scene before = state.doc.scene;
         restore_version(state.doc, *version);
-        keep_camera_selection(state, before);
+        keep_camera_selection(state.view, state.doc.scene, before);
         state.message = done;
     }
     recheck_draft(state);
-    state.edit_base.reset();
-    note_command_edit(state);
+    state.history.edit_base.reset();
+    note_command_edit(state.history, state.doc);
 }
 
 }  // namespace
 
 void undo(AppState& state) {
     step_history(
-        state, [&](auto current) { return state.undo.undo(std::move(current)); }, "Undone");
+        state, [&](auto current) { return state.history.undo.undo(std::move(current)); }, "Undone");
 }
 
 void redo(AppState& state) {
     step_history(
-        state, [&](auto current) { return state.undo.redo(std::move(current)); }, "Redone");
+        state, [&](auto current) { return state.history.undo.redo(std::move(current)); }, "Redone");
 }
 
-void note_command_edit(AppState& state) {
-    ++state.scene_generation;
-    note_scene_changed(state.doc);
+void note_command_edit(EditHistory& history, SceneDocument& doc) {
+    ++history.scene_generation;
+    note_scene_changed(doc);
 }
 
-EditMark begin_edit_tracking(AppState& state) {
-    if (!state.edit_base && state.settled_revision != state.doc.revision) {
-        state.settled_scene = state.doc.scene;
-        state.settled_revision = state.doc.revision;
+EditMark begin_edit_tracking(EditHistory& history, const SceneDocument& doc) {
+    if (!history.edit_base && history.settled_revision != doc.revision) {
+        history.settled_scene = doc.scene;
+        history.settled_revision = doc.revision;
     }
-    return {state.doc.revision, state.scene_generation};
+    return {doc.revision, history.scene_generation};
 }
 
-void track_edits(AppState& state, EditMark before, bool widget_active) {
-    if (state.scene_generation != before.generation) {
-        state.edit_base.reset();
+void track_edits(EditHistory& history, const SceneDocument& doc, EditMark before,
+                 bool widget_active) {
+    if (history.scene_generation != before.generation) {
+        history.edit_base.reset();
         return;
     }
-    if (state.doc.revision != before.revision && !state.edit_base &&
-        state.settled_revision == before.revision) {
-        state.edit_base = std::move(state.settled_scene);
-        state.settled_revision.reset();
+    if (doc.revision != before.revision && !history.edit_base &&
+        history.settled_revision == before.revision) {
+        history.edit_base = std::move(history.settled_scene);
+        history.settled_revision.reset();
     }
-    if (!widget_active && state.edit_base) {
+    if (!widget_active && history.edit_base) {
         // A field touched and put back leaves no step to undo.
-        if (*state.edit_base != state.doc.scene)
-            state.undo.record({state.doc.text, *state.edit_base, state.doc.draft});
-        state.edit_base.reset();
+        if (*history.edit_base != doc.scene)
+            history.undo.record({doc.text, *history.edit_base, doc.draft});
+        history.edit_base.reset();
     }
 }
 
-int selected_camera(const AppState& state) {
-    const int count = static_cast<int>(state.doc.scene.cameras.size());
+int selected_camera(const ViewState& view, const Scene& scene) {
+    const int count = static_cast<int>(scene.cameras.size());
     if (count == 0) return -1;
-    return std::clamp(state.camera_index, 0, count - 1);
+    return std::clamp(view.camera_index, 0, count - 1);
 }
 
 void select_camera(AppState& state, int index) {
     const int count = static_cast<int>(state.doc.scene.cameras.size());
     if (count == 0) return;
-    state.camera_index = std::clamp(index, 0, count - 1);
-    state.free_camera_active = false;
-    state.message =
-        "Camera: " + camera_label(state.doc.scene.cameras[state.camera_index], state.camera_index);
+    state.view.camera_index = std::clamp(index, 0, count - 1);
+    state.view.free_camera_active = false;
+    state.message = "Camera: " + camera_label(state.doc.scene.cameras[state.view.camera_index],
+                                              state.view.camera_index);
 }
 
 void next_camera(AppState& state) {
     const int count = static_cast<int>(state.doc.scene.cameras.size());
     if (count == 0) return;
-    select_camera(state,
-                  state.free_camera_active ? state.camera_index : (state.camera_index + 1) % count);
+    select_camera(state, state.view.free_camera_active ? state.view.camera_index
+                                                       : (state.view.camera_index + 1) % count);
 }
 
-void use_free_camera(AppState& state) {
-    if (state.free_camera_active || state.doc.scene.cameras.empty()) return;
-    reset_free_camera(state);
-    state.free_camera_active = true;
+void use_free_camera(ViewState& view, const Scene& scene) {
+    if (view.free_camera_active || scene.cameras.empty()) return;
+    reset_free_camera(view, scene);
+    view.free_camera_active = true;
 }
 
-void reset_free_camera(AppState& state) {
-    const auto& cameras = state.doc.scene.cameras;
+void reset_free_camera(ViewState& view, const Scene& scene) {
+    const auto& cameras = scene.cameras;
     if (cameras.empty()) return;
-    state.free_camera = free_camera_from(cameras[selected_camera(state)]);
+    view.free_camera = free_camera_from(cameras[selected_camera(view, scene)]);
 }
 
 bool copy_free_camera_to_scene(AppState& state, const std::string& name) {
@@ -503,20 +503,22 @@ bool copy_free_camera_to_scene(AppState& state, const std::string& name) {
         return false;
     }
     const Scene before = state.doc.scene;
-    const FreeCamera from = state.free_camera_active
-                                ? state.free_camera
-                                : free_camera_from(state.doc.scene.cameras[selected_camera(state)]);
+    const FreeCamera from =
+        state.view.free_camera_active
+            ? state.view.free_camera
+            : free_camera_from(
+                  state.doc.scene.cameras[selected_camera(state.view, state.doc.scene)]);
     Camera camera = camera_from(from, name);
-    if (state.free_camera_active) {  // moved with the mouse: short numbers in the file
+    if (state.view.free_camera_active) {  // moved with the mouse: short numbers in the file
         camera.position = ui_rounded(camera.position);
         camera.look_at = ui_rounded(camera.look_at);
     }
     const DocumentVersion version = version_of(state.doc);
     state.doc.scene.cameras.push_back(std::move(camera));
-    state.undo.record(version);
-    note_command_edit(state);
-    state.camera_index = static_cast<int>(state.doc.scene.cameras.size()) - 1;
-    state.free_camera_active = false;
+    state.history.undo.record(version);
+    note_command_edit(state.history, state.doc);
+    state.view.camera_index = static_cast<int>(state.doc.scene.cameras.size()) - 1;
+    state.view.free_camera_active = false;
     state.message = "Added camera \"" + name + "\" (Save scene to keep it)";
     return true;
 }
@@ -535,7 +537,7 @@ void guard(AppState& state, GuardedCommand command) {
         run_guarded(state, command);
         return;
     }
-    state.unsaved_prompt = std::move(command);
+    state.files.unsaved_prompt = std::move(command);
     state.message = "Unsaved edits: save them, discard them or cancel";
 }
 
@@ -550,9 +552,9 @@ void request_open_guarded(AppState& state, const std::filesystem::path& path) {
 }
 
 void resolve_unsaved(AppState& state, UnsavedChoice choice) {
-    if (!state.unsaved_prompt) return;
-    const GuardedCommand command = std::move(*state.unsaved_prompt);
-    state.unsaved_prompt.reset();
+    if (!state.files.unsaved_prompt) return;
+    const GuardedCommand command = std::move(*state.files.unsaved_prompt);
+    state.files.unsaved_prompt.reset();
     if (choice == UnsavedChoice::cancel) {
         state.message = "Cancelled: your edits are still here";
         return;
@@ -561,18 +563,18 @@ void resolve_unsaved(AppState& state, UnsavedChoice choice) {
     run_guarded(state, command);
 }
 
-void remember_settings(AppState& state) {
-    ViewerSettings now = state.saved_settings;
-    now.panel_width = std::clamp(state.sidebar_width, kLeastPanelWidth, kMostPanelWidth);
-    if (now == state.saved_settings || state.config.settings_file.empty()) return;
-    state.saved_settings = now;
-    static_cast<void>(write_viewer_settings(state.config.settings_file, now));
+void remember_settings(ViewState& view, const ViewerConfig& config) {
+    ViewerSettings now = view.saved_settings;
+    now.panel_width = std::clamp(view.sidebar_width, kLeastPanelWidth, kMostPanelWidth);
+    if (now == view.saved_settings || config.settings_file.empty()) return;
+    view.saved_settings = now;
+    static_cast<void>(write_viewer_settings(config.settings_file, now));
 }
 
 void toggle_pause(AppState& state) {
-    state.paused = !state.paused;
-    if (state.paused) {
-        state.renderer.pause();
+    state.render.paused = !state.render.paused;
+    if (state.render.paused) {
+        state.render.renderer.pause();
         state.message = "Paused";
         return;
     }
@@ -581,8 +583,8 @@ void toggle_pause(AppState& state) {
     // otherwise (edited while paused) update_render starts a new one.
     std::string note;
     const std::optional<RenderRequest> request = render_request(state, note);
-    if (!state.started || request != state.started || !state.renderer.resume())
-        state.started.reset();
+    if (!state.render.started || request != state.render.started || !state.render.renderer.resume())
+        state.render.started.reset();
 }
 
 std::optional<RenderRequest> render_request(const AppState& state, std::string& note) {
@@ -599,9 +601,9 @@ std::optional<RenderRequest> render_request(const AppState& state, std::string& 
     RenderRequest request;
     request.scene_revision = state.doc.revision;
     request.primitive_count = scene.primitives.size();
-    request.options.camera = selected_camera(state);
-    if (state.free_camera_active) {
-        request.free_camera = state.free_camera;
+    request.options.camera = selected_camera(state.view, state.doc.scene);
+    if (state.view.free_camera_active) {
+        request.free_camera = state.view.free_camera;
         request.options.camera = static_cast<int>(scene.cameras.size());
     }
     const RenderSettings& settings = scene.settings;
@@ -622,15 +624,15 @@ std::optional<RenderRequest> render_request(const AppState& state, std::string& 
     request.options.threads = state.config.render_threads;
     request.options.previews = true;
     request.options.region =
-        render_region_rect(state, request.options.width, request.options.height);
+        render_region_rect(state.view, request.options.width, request.options.height);
     // The frames come first: a frame drawn late is a late picture however fast
     // the render is (and with a software GL the frame needs a core too).
     request.options.background = state.config.render_in_background;
     return request;
 }
 
-Scene scene_to_render(const AppState& state, const RenderRequest& request) {
-    Scene scene = state.doc.scene;
+Scene scene_to_render(const SceneDocument& doc, const RenderRequest& request) {
+    Scene scene = doc.scene;
     if (request.free_camera) scene.cameras.push_back(camera_from(*request.free_camera, "viewer"));
     return scene;
 }
@@ -651,7 +653,8 @@ void wait_for_first_pass(AppState& state) {
     const auto deadline = std::chrono::steady_clock::now() + state.config.first_pass_wait;
     for (;;) {
         const std::uint64_t seen = state.wakeup.count();
-        if (state.renderer.passes_since_start() > 0 || !state.renderer.active()) return;
+        if (state.render.renderer.passes_since_start() > 0 || !state.render.renderer.active())
+            return;
         if (!state.wakeup.wait(seen, deadline)) return;
     }
 }
@@ -659,44 +662,44 @@ void wait_for_first_pass(AppState& state) {
 }  // namespace
 
 void update_render(AppState& state) {
-    if (state.paused) {
+    if (state.render.paused) {
         std::string note;
-        state.edit_waiting = render_request(state, note) != state.started;
+        state.render.edit_waiting = render_request(state, note) != state.render.started;
     } else {
-        state.edit_waiting = false;
-        std::optional<RenderRequest> request = render_request(state, state.render_note);
+        state.render.edit_waiting = false;
+        std::optional<RenderRequest> request = render_request(state, state.render.render_note);
         if (request && clear_region_for_new_view(state, *request))
-            request = render_request(state, state.render_note);
-        if (request && request == state.rejected) {
-            state.render_note = state.rejected_reason;
-        } else if (request && request != state.started) {
-            const Scene scene = scene_to_render(state, *request);
+            request = render_request(state, state.render.render_note);
+        if (request && request == state.render.rejected) {
+            state.render.render_note = state.render.rejected_reason;
+        } else if (request && request != state.render.started) {
+            const Scene scene = scene_to_render(state.doc, *request);
             if (const std::string error = validation_error(scene); !error.empty()) {
                 // Keep the last image rather than render nonsense; say why.
-                state.rejected = std::move(request);
-                state.rejected_reason = "Not rendered: " + error;
-                state.render_note = state.rejected_reason;
+                state.render.rejected = std::move(request);
+                state.render.rejected_reason = "Not rendered: " + error;
+                state.render.render_note = state.render.rejected_reason;
             } else {
-                state.rejected.reset();
-                state.renderer.start(scene, request->options);
-                state.started = std::move(request);
-                state.display_complete = false;
+                state.render.rejected.reset();
+                state.render.renderer.start(scene, request->options);
+                state.render.started = std::move(request);
+                state.render.display_complete = false;
                 wait_for_first_pass(state);
             }
         }
     }
     // Read `finished` and the progress before fetching: a fetch after them has
     // every pixel they count.
-    const bool finished = state.renderer.finished();
-    const RenderProgress progress = state.renderer.progress();
-    if (auto changed = state.renderer.fetch(state.display))
-        state.display_changed = holding_both(state.display_changed, *changed);
-    state.passes_shown = progress.finished ? progress.pass_count : progress.pass;
-    if (finished && state.started) state.display_complete = true;
+    const bool finished = state.render.renderer.finished();
+    const RenderProgress progress = state.render.renderer.progress();
+    if (auto changed = state.render.renderer.fetch(state.render.display))
+        state.render.display_changed = holding_both(state.render.display_changed, *changed);
+    state.render.passes_shown = progress.finished ? progress.pass_count : progress.pass;
+    if (finished && state.render.started) state.render.display_complete = true;
 }
 
-std::optional<PixelRect> take_display_changes(AppState& state) {
-    return std::exchange(state.display_changed, std::nullopt);
+std::optional<PixelRect> take_display_changes(RenderState& render) {
+    return std::exchange(render.display_changed, std::nullopt);
 }
 
 std::string pass_label(const RenderProgress& p, int target_samples) {
@@ -707,31 +710,31 @@ std::string pass_label(const RenderProgress& p, int target_samples) {
     return "sample " + std::to_string(reached) + " of " + std::to_string(target_samples);
 }
 
-std::string render_title_status(const AppState& state) {
-    if (!state.started) return state.paused ? "paused" : "";
-    const RenderProgress p = state.renderer.progress();
+std::string render_title_status(const RenderState& render) {
+    if (!render.started) return render.paused ? "paused" : "";
+    const RenderProgress p = render.renderer.progress();
     char text[96];
-    if (state.paused) return state.edit_waiting ? "paused, edit waiting" : "paused";
-    if (render_complete(state)) {
+    if (render.paused) return render.edit_waiting ? "paused, edit waiting" : "paused";
+    if (render_complete(render)) {
         std::snprintf(text, sizeof text, "done, %d sample%s, %.1f s", p.samples_done,
                       p.samples_done == 1 ? "" : "s", p.seconds);
         return text;
     }
     std::snprintf(text, sizeof text, "%s %d%%",
-                  pass_label(p, state.started->options.samples).c_str(),
+                  pass_label(p, render.started->options.samples).c_str(),
                   static_cast<int>(p.fraction * 100.0));
     return text;
 }
 
-bool render_complete(const AppState& state) {
-    return state.started && state.display_complete && !state.paused;
+bool render_complete(const RenderState& render) {
+    return render.started && render.display_complete && !render.paused;
 }
 
-bool waiting_for_workers(const AppState& state) {
-    if (state.loader.in_flight()) return true;
-    if (state.loader.busy()) return false;  // a finished load waits to be taken in
-    return state.started && !state.paused && state.renderer.active() &&
-           state.renderer.passes_since_start() == 0;
+bool waiting_for_workers(const FileState& files, const RenderState& render) {
+    if (files.loader.in_flight()) return true;
+    if (files.loader.busy()) return false;  // a finished load waits to be taken in
+    return render.started && !render.paused && render.renderer.active() &&
+           render.renderer.passes_since_start() == 0;
 }
 
 }  // namespace jt::view

@@ -1,8 +1,8 @@
 #pragma once
 // Everything the viewer knows between frames. Plain data plus the few objects
-// that own threads (loader, render); behaviour lives in app_actions.hpp (what a
-// command does). No GL, no ImGui: the frame code (viewer/app) draws this state
-// and keeps the texture itself.
+// that own threads (loader, checker, render); behaviour lives in
+// app_actions.hpp (what a command does). No GL, no ImGui: the frame code
+// (viewer/app) draws this state and keeps the texture itself.
 
 #include "jtracer/region.hpp"
 #include "jtracer/scene_info.hpp"
@@ -140,28 +140,11 @@ struct CompareState {
     float split = 0.5f;  // where the line is, across the image (0: all live, 1: all A)
 };
 
-struct AppState {
-    explicit AppState(ViewerConfig config = {}) : config(std::move(config)) {
-        loader.set_wakeup(&wakeup);
-        renderer.set_wakeup(&wakeup);
-        checker.set_wakeup(&wakeup);
-        asset_watcher = FileSetWatcher(this->config.watch_interval);
-        saved_settings = read_viewer_settings(this->config.settings_file);
-        sidebar_width = saved_settings.panel_width;
-    }
-
-    ViewerConfig config;
-    // Before the loader and the renderer: their threads notify it until they end.
-    Wakeup wakeup;
-    SceneDocument doc;
+// The undo history, and what tells a panel edit from a command's: one undo
+// step per continuous panel edit (a whole drag is one step).
+struct EditHistory {
     SnapshotStack<DocumentVersion> undo;  // one history for panel, structure and text edits
-    TextChecker checker;                  // checks the text editor's draft once typing pauses
-    std::uint64_t draft_id = 0;           // of the newest draft sent to the checker
     bool typing = false;  // a burst of typing whose undo step is recorded is going on
-    // The selected scene camera's name field (renamed on Enter).
-    std::string camera_name_input;
-    int camera_name_for = -1;
-    bool camera_name_editing = false;
     std::optional<Scene>
         edit_base;  // the scene before the edit in progress (one undo step per drag)
     // The scene as it was when no edit was in progress, at settled_revision:
@@ -173,12 +156,25 @@ struct AppState {
     // itself (open, reload, undo, redo, scripted edits), so that the change is
     // not mistaken for a widget edit.
     std::uint64_t scene_generation = 0;
+};
+
+// The checks of the text typed in the editor and of the edited scene.
+struct CheckState {
+    TextChecker checker;         // checks the text editor's draft once typing pauses
+    std::uint64_t draft_id = 0;  // of the newest draft sent to the checker
+    // The revision of the scene the diagnostics were last checked for (check_edits).
+    std::optional<std::uint64_t> checked_revision;
+};
+
+// The file on disk: watching it and the files it names, loading, saving, and
+// the questions they leave for the user.
+struct FileState {
+    explicit FileState(const ViewerConfig& config) : asset_watcher(config.watch_interval) {}
     FileWatcher watcher;
     FileSetWatcher asset_watcher;  // the model and image files the scene names
     SceneLoader loader;            // opens and reloads off the UI thread
     RecentFiles recent;
     LoadTimes last_load_times;  // of the last open or reload taken in
-
     // A newer text of the file, loaded while there were unsaved edits: held
     // until the user chooses (resolve_reload) so that neither is lost unasked.
     std::optional<LoadAttempt> pending_reload;
@@ -188,26 +184,10 @@ struct AppState {
     std::string save_conflict;
     std::optional<GuardedCommand> unsaved_prompt;
     std::string save_as_conflict;  // the file Save scene as would replace, until confirmed
-    std::string save_scene_path;   // the Save scene as field
-    // The revision of the scene the diagnostics were last checked for (check_edits).
-    std::optional<std::uint64_t> checked_revision;
+};
 
-    // Which camera renders: one of the scene's, or the free camera.
-    int camera_index = 0;
-    bool free_camera_active = false;
-    FreeCamera free_camera;
-    std::string new_camera_name = "viewer";
-    ImageDrag drag;
-    std::optional<ObjectDrag> object_drag;  // while an Alt+drag moves something
-
-    Selection selection;            // read through current_selection (picking.hpp)
-    bool reveal_selection = false;  // its panel opens and scrolls to it in the next frame
-    std::string object_filter;      // the Objects panel lists the objects whose name holds it
-    std::string inspected;          // what the pixel under the mouse holds, or empty
-    ShownFrame shown_frame;         // what picking picks in
-    PrimitiveIds primitive_ids;     // what every pixel shows, for the selection's outline
-    std::optional<MeshFigures> mesh_figures;  // forgotten when a model file changes
-
+// The render: what it was started from, the job, and its pixels as shown.
+struct RenderState {
     RenderController renderer;
     std::optional<RenderRequest> started;   // the request the current render answers
     std::string render_note;                // why nothing renders, when so
@@ -221,6 +201,23 @@ struct AppState {
     // The part of `display` changed since the frame code last took it
     // (take_display_changes): what it sends to the texture.
     std::optional<PixelRect> display_changed;
+};
+
+// What the user looks at and through: the camera, the selection, the image's
+// zoom and pan, the region rendered alone, the compare view, the sidebar.
+struct ViewState {
+    // Which camera renders: one of the scene's, or the free camera.
+    int camera_index = 0;
+    bool free_camera_active = false;
+    FreeCamera free_camera;
+
+    Selection selection;                      // read through current_selection (picking.hpp)
+    bool reveal_selection = false;            // its panel opens and scrolls to it in the next frame
+    std::string inspected;                    // what the pixel under the mouse holds, or empty
+    ShownFrame shown_frame;                   // what picking picks in
+    PrimitiveIds primitive_ids;               // what every pixel shows, for the selection's outline
+    std::optional<MeshFigures> mesh_figures;  // forgotten when a model file changes
+
     ImageView image_view;       // zoom and pan of the image (image_layout.hpp)
     bool space_panned = false;  // Space is held for a pan: its release does not pause
     // The part of the image that renders alone, as jtracer-cli --region counts it.
@@ -237,10 +234,51 @@ struct AppState {
     bool show_ui = true;
     float sidebar_width = kDefaultPanelWidth;  // in font heights, so that it scales with the font
     ViewerSettings saved_settings;             // as in config.settings_file
+};
 
+// The mouse drags in progress.
+struct Drags {
+    ImageDrag image;
+    std::optional<ObjectDrag> object;  // while an Alt+drag moves something
+};
+
+// What the UI's text fields hold as typed, before a command takes it.
+struct TextFields {
+    // The selected scene camera's name field (renamed on Enter).
+    std::string camera_name_input;
+    int camera_name_for = -1;
+    bool camera_name_editing = false;
+    std::string new_camera_name = "viewer";
+    std::string object_filter;  // the Objects panel lists the objects whose name holds it
     std::string open_path_input;
     std::string new_mesh_file;  // the Add object menu's model file field
     std::string save_image_path = "jtracer-view.png";
+    std::string save_scene_path;  // the Save scene as field
+};
+
+// Everything the viewer knows between frames, in parts with one job each; a
+// command takes the parts it changes (app_actions.hpp), or the whole state
+// when it orchestrates several.
+struct AppState {
+    explicit AppState(ViewerConfig config = {}) : config(std::move(config)), files(this->config) {
+        files.loader.set_wakeup(&wakeup);
+        render.renderer.set_wakeup(&wakeup);
+        check.checker.set_wakeup(&wakeup);
+        view.saved_settings = read_viewer_settings(this->config.settings_file);
+        view.sidebar_width = view.saved_settings.panel_width;
+    }
+
+    ViewerConfig config;
+    // Before the loader and the renderer: their threads notify it until they end.
+    Wakeup wakeup;
+    SceneDocument doc;
+    EditHistory history;
+    CheckState check;
+    FileState files;
+    RenderState render;
+    ViewState view;
+    Drags drags;
+    TextFields fields;
     std::string message;  // the result of the last command, for the status line
     bool quit = false;
 };

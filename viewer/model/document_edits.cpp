@@ -21,9 +21,9 @@ namespace {
 // The scene as the view sees it: one camera, the one the image shows.
 Scene viewed_scene(const AppState& state) {
     Scene view;
-    if (state.free_camera_active)
-        view.cameras.push_back(camera_from(state.free_camera, "view"));
-    else if (const int selected = selected_camera(state); selected >= 0)
+    if (state.view.free_camera_active)
+        view.cameras.push_back(camera_from(state.view.free_camera, "view"));
+    else if (const int selected = selected_camera(state.view, state.doc.scene); selected >= 0)
         view.cameras.push_back(state.doc.scene.cameras[static_cast<std::size_t>(selected)]);
     return view;
 }
@@ -52,10 +52,10 @@ Expected<void> rewrite_text(AppState& state,
     if (!edited) return Error{"Not done: " + edited.error().message};
     if (const Expected<void> taken = replace_text(doc, std::move(*edited)); !taken)
         return Error{"Not done: " + taken.error().message};
-    keep_camera_selection(state, before);
-    state.edit_base.reset();
-    state.typing = false;
-    note_command_edit(state);
+    keep_camera_selection(state.view, state.doc.scene, before);
+    state.history.edit_base.reset();
+    state.history.typing = false;
+    note_command_edit(state.history, state.doc);
     return {};
 }
 
@@ -67,7 +67,7 @@ bool edit_text_structure(AppState& state,
         state.message = rewritten.error().message;
         return false;
     }
-    state.undo.record(before);
+    state.history.undo.record(before);
     state.message = done + " (Save scene to keep it)";
     return true;
 }
@@ -80,8 +80,8 @@ void select_last(AppState& state, Selection::Kind kind) {
     const std::size_t count = kind == Selection::Kind::light ? state.doc.scene.lights.size()
                                                              : state.doc.scene.primitives.size();
     if (count == 0) return;
-    state.selection = {kind, static_cast<int>(count) - 1};
-    state.reveal_selection = true;
+    state.view.selection = {kind, static_cast<int>(count) - 1};
+    state.view.reveal_selection = true;
 }
 
 }  // namespace
@@ -154,10 +154,10 @@ bool duplicate_block(AppState& state, BlockRef block) {
         return false;
     // The copy comes right after the original: it is selected, to be moved or changed.
     if (block.kind != BlockKind::camera) {
-        state.selection = {
+        state.view.selection = {
             block.kind == BlockKind::light ? Selection::Kind::light : Selection::Kind::primitive,
             static_cast<int>(block.index) + 1};
-        state.reveal_selection = true;
+        state.view.reveal_selection = true;
     }
     return true;
 }
@@ -214,23 +214,23 @@ bool remove_transform_op(AppState& state, std::size_t primitive, std::size_t ind
 
 bool add_camera(AppState& state) {
     const Scene& scene = state.doc.scene;
-    const int selected = selected_camera(state);
+    const int selected = selected_camera(state.view, state.doc.scene);
     Camera camera;
-    if (state.free_camera_active) {
-        camera = camera_from(state.free_camera, "");
+    if (state.view.free_camera_active) {
+        camera = camera_from(state.view.free_camera, "");
         camera.position = ui_rounded(camera.position);
         camera.look_at = ui_rounded(camera.look_at);
     } else if (selected >= 0) {
         camera = scene.cameras[static_cast<std::size_t>(selected)];
     }
     camera.name = unique_camera_name(
-        scene, state.free_camera_active || camera.name.empty() ? "view" : camera.name);
+        scene, state.view.free_camera_active || camera.name.empty() ? "view" : camera.name);
     const bool added = edit_text_structure(
         state, [&](const SceneText& s) { return jt::add_camera(s, camera); },
         "Added camera \"" + camera.name + "\"");
     if (added) {
-        state.camera_index = static_cast<int>(state.doc.scene.cameras.size()) - 1;
-        state.free_camera_active = false;
+        state.view.camera_index = static_cast<int>(state.doc.scene.cameras.size()) - 1;
+        state.view.free_camera_active = false;
     }
     return added;
 }
@@ -250,14 +250,14 @@ bool set_aspect_from_image(AppState& state, std::size_t camera) {
 void type_text(AppState& state, std::string text) {
     SceneDocument& doc = state.doc;
     if (!doc.loaded && doc.path.empty()) return;
-    if (!state.typing) {
-        state.undo.record(version_of(doc));
-        state.typing = true;
+    if (!state.history.typing) {
+        state.history.undo.record(version_of(doc));
+        state.history.typing = true;
     }
-    state.edit_base.reset();
+    state.history.edit_base.reset();
     doc.draft = text;
-    ++state.draft_id;
-    state.checker.check(state.draft_id, std::move(text), doc.path, kTypingPause);
+    ++state.check.draft_id;
+    state.check.checker.check(state.check.draft_id, std::move(text), doc.path, kTypingPause);
 }
 
 namespace {
@@ -265,7 +265,7 @@ namespace {
 // The draft's check, taken in: a text without errors becomes the document.
 void take_in(AppState& state, CheckedText checked) {
     SceneDocument& doc = state.doc;
-    state.typing = false;  // the pause ended: the next keystroke is a new undo step
+    state.history.typing = false;  // the pause ended: the next keystroke is a new undo step
     doc.diagnostics = checked.diagnostics;
     doc.diagnostics_source = checked.text;
     doc.diagnostics_path = doc.path;
@@ -276,18 +276,18 @@ void take_in(AppState& state, CheckedText checked) {
     const Scene before = doc.scene;
     take_text(doc, std::move(checked.text), std::move(checked.parsed));
     doc.loaded = true;  // a file that never loaded (empty, broken) now has a scene
-    keep_camera_selection(state, before);
-    note_command_edit(state);
-    state.checked_revision = doc.revision;  // the diagnostics describe it already
+    keep_camera_selection(state.view, state.doc.scene, before);
+    note_command_edit(state.history, state.doc);
+    state.check.checked_revision = doc.revision;  // the diagnostics describe it already
     state.message = "The text parses: the image follows it";
 }
 
 }  // namespace
 
 bool take_checked_text(AppState& state) {
-    std::optional<CheckedText> checked = state.checker.take();
+    std::optional<CheckedText> checked = state.check.checker.take();
     if (!checked) return false;
-    if (checked->id != state.draft_id || !state.doc.draft) return true;  // overtaken
+    if (checked->id != state.check.draft_id || !state.doc.draft) return true;  // overtaken
     take_in(state, std::move(*checked));
     return true;
 }
@@ -303,11 +303,11 @@ bool start_new_scene(AppState& state) {
     const std::string image = state.doc.path.stem().string() + ".bmp";
     if (state.doc.path.has_stem() && is_writable_string(image)) scene.settings.filename = image;
     std::string text = serialize_scene(scene);
-    state.undo.record(version_of(state.doc));
-    state.edit_base.reset();
+    state.history.undo.record(version_of(state.doc));
+    state.history.edit_base.reset();
     state.doc.draft = text;
-    ++state.draft_id;
-    take_in(state, check_text(state.draft_id, std::move(text), state.doc.path));
+    ++state.check.draft_id;
+    take_in(state, check_text(state.check.draft_id, std::move(text), state.doc.path));
     state.message = "Started a scene: add objects in the Objects panel (Save scene to keep it)";
     return true;
 }

@@ -11,7 +11,7 @@ void model_frame(AppState& state) {
     reload_if_changed(state);
     take_finished_load(state);
     take_checked_text(state);
-    check_edits(state);
+    check_edits(state.check, state.doc, state.files);
     update_render(state);
 }
 
@@ -19,9 +19,9 @@ bool run_frames_until_complete(AppState& state, const std::function<void()>& fra
                                std::chrono::milliseconds timeout, int settle_frames) {
     const auto deadline = std::chrono::steady_clock::now() + timeout;
     frame();
-    while (!render_complete(state) || state.loader.busy()) {
-        const bool loading = state.loader.busy();
-        if ((!state.started && !loading) || std::chrono::steady_clock::now() > deadline)
+    while (!render_complete(state.render) || state.files.loader.busy()) {
+        const bool loading = state.files.loader.busy();
+        if ((!state.render.started && !loading) || std::chrono::steady_clock::now() > deadline)
             return false;
         // Leave the cores to the render; the picture is only read at the end.
         std::this_thread::sleep_for(std::chrono::milliseconds(20));
@@ -35,7 +35,7 @@ bool run_frames_until_loaded(AppState& state, const std::function<void()>& frame
                              std::chrono::milliseconds timeout) {
     const auto deadline = std::chrono::steady_clock::now() + timeout;
     frame();
-    while (state.loader.busy()) {
+    while (state.files.loader.busy()) {
         if (std::chrono::steady_clock::now() > deadline) return false;
         std::this_thread::sleep_for(std::chrono::milliseconds(2));
         frame();

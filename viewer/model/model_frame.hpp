@@ -16,7 +16,7 @@ namespace jt::view {
 void model_frame(AppState& state);
 
 // Runs `frame` until the render of the current scene is complete and in
-// state.display, then `settle_frames` more. False on timeout or when there is
+// state.render.display, then `settle_frames` more. False on timeout or when there is
 // nothing to render.
 bool run_frames_until_complete(AppState& state, const std::function<void()>& frame,
                                std::chrono::milliseconds timeout, int settle_frames);

@@ -89,8 +89,8 @@ void say_moved(AppState& state, const ObjectDrag& drag, const char* verb) {
 // Something else replaced the document since the drag's last write (a reload
 // from disk, a text edit taken in): the drag stops where it is.
 bool overtaken(AppState& state) {
-    if (state.object_drag->generation == state.scene_generation) return false;
-    state.object_drag.reset();
+    if (state.drags.object->generation == state.history.scene_generation) return false;
+    state.drags.object.reset();
     state.message = "The scene changed: the move stopped";
     return true;
 }
@@ -98,7 +98,7 @@ bool overtaken(AppState& state) {
 // Puts `value` into the document; false (the drag given back) when the text
 // edit that adds the translate fails.
 bool write_value(AppState& state, const Vec3& value) {
-    ObjectDrag& drag = *state.object_drag;
+    ObjectDrag& drag = *state.drags.object;
     const auto index = static_cast<std::size_t>(drag.target.index);
     if (drag.target.kind == Selection::Kind::light) {
         state.doc.scene.lights[index].position = value;
@@ -119,8 +119,8 @@ bool write_value(AppState& state, const Vec3& value) {
     }
     drag.written = value;
     drag.changed = true;
-    note_command_edit(state);
-    drag.generation = state.scene_generation;
+    note_command_edit(state.history, state.doc);
+    drag.generation = state.history.scene_generation;
     return true;
 }
 
@@ -136,7 +136,7 @@ std::optional<Vec3> object_centre(const Scene& scene, const Primitive& primitive
 }
 
 bool start_object_drag(AppState& state, const ImagePoint& at, double marker_radius) {
-    state.object_drag.reset();
+    state.drags.object.reset();
     if (!state.doc.loaded || state.doc.draft) {
         state.message =
             state.doc.draft ? "Not moved: the text has errors; fix them first" : "No scene is open";
@@ -147,10 +147,10 @@ bool start_object_drag(AppState& state, const ImagePoint& at, double marker_radi
         state.message = "Not moved: the image is not ready yet";
         return false;
     }
-    Selection target = current_selection(state);
+    Selection target = current_selection(state.view, state.doc.scene);
     if (target.kind == Selection::Kind::none) {
         select_at(state, at.x, at.y, marker_radius);
-        target = current_selection(state);
+        target = current_selection(state.view, state.doc.scene);
     }
     if (target.kind == Selection::Kind::none) {
         state.message = "Nothing to move: Alt+drag on an object or light, or select one first";
@@ -188,10 +188,10 @@ bool start_object_drag(AppState& state, const ImagePoint& at, double marker_radi
     }
     drag.written = drag.start;
     drag.before = version_of(state.doc);
-    drag.generation = state.scene_generation;
-    state.object_drag = std::move(drag);
+    drag.generation = state.history.scene_generation;
+    state.drags.object = std::move(drag);
     state.message = "Moving " + name +
-                    (state.object_drag->only_along
+                    (state.drags.object->only_along
                          ? " along its normal (a plane cannot move within itself); Esc cancels"
                          : " (Shift: along one axis; Esc cancels)");
     return true;
@@ -199,43 +199,43 @@ bool start_object_drag(AppState& state, const ImagePoint& at, double marker_radi
 
 void drag_object_to(AppState& state, const ImagePoint& at, bool one_axis,
                     std::chrono::steady_clock::time_point now) {
-    if (!state.object_drag || overtaken(state)) return;
-    ObjectDrag& drag = *state.object_drag;
+    if (!state.drags.object || overtaken(state)) return;
+    ObjectDrag& drag = *state.drags.object;
     const std::optional<Vec3> value = value_at(drag, at, one_axis);
     if (!value || *value == drag.written) return;
     if (drag.changed && now - drag.last_write < kDragWriteInterval) return;
     if (!write_value(state, *value)) return;
-    state.object_drag->last_write = now;
-    say_moved(state, *state.object_drag, "Moving");
+    state.drags.object->last_write = now;
+    say_moved(state, *state.drags.object, "Moving");
 }
 
 void finish_object_drag(AppState& state, const ImagePoint& at, bool one_axis) {
-    if (!state.object_drag || overtaken(state)) return;
-    if (const std::optional<Vec3> value = value_at(*state.object_drag, at, one_axis);
-        value && *value != state.object_drag->written && !write_value(state, *value))
+    if (!state.drags.object || overtaken(state)) return;
+    if (const std::optional<Vec3> value = value_at(*state.drags.object, at, one_axis);
+        value && *value != state.drags.object->written && !write_value(state, *value))
         return;
-    const ObjectDrag drag = std::move(*state.object_drag);
-    state.object_drag.reset();
+    const ObjectDrag drag = std::move(*state.drags.object);
+    state.drags.object.reset();
     if (drag.written == drag.start) {
         if (drag.changed) {
             restore_version(state.doc, drag.before);
-            note_command_edit(state);
+            note_command_edit(state.history, state.doc);
         }
         state.message = "Not moved: let go where it started";
         return;
     }
-    state.undo.record(drag.before);
+    state.history.undo.record(drag.before);
     say_moved(state, drag, "Moved");
     state.message += " (Save scene to keep it)";
 }
 
 void cancel_object_drag(AppState& state) {
-    if (!state.object_drag) return;
-    const ObjectDrag drag = std::move(*state.object_drag);
-    state.object_drag.reset();
-    if (drag.changed && drag.generation == state.scene_generation) {
+    if (!state.drags.object) return;
+    const ObjectDrag drag = std::move(*state.drags.object);
+    state.drags.object.reset();
+    if (drag.changed && drag.generation == state.history.scene_generation) {
         restore_version(state.doc, drag.before);
-        note_command_edit(state);
+        note_command_edit(state.history, state.doc);
     }
     state.message = "Move cancelled";
 }

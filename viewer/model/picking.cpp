@@ -8,12 +8,13 @@
 namespace jt::view {
 
 std::shared_ptr<const PreparedFrame> shown_frame(AppState& state) {
-    if (!state.started || state.started->primitive_count != state.doc.scene.primitives.size())
+    if (!state.render.started ||
+        state.render.started->primitive_count != state.doc.scene.primitives.size())
         return nullptr;
-    std::shared_ptr<const PreparedScene> scene = state.renderer.current_prepared();
+    std::shared_ptr<const PreparedScene> scene = state.render.renderer.current_prepared();
     if (!scene) return nullptr;
-    const RenderOptions& o = state.started->options;
-    ShownFrame& shown = state.shown_frame;
+    const RenderOptions& o = state.render.started->options;
+    ShownFrame& shown = state.view.shown_frame;
     if (shown.scene != scene || shown.width != o.width || shown.height != o.height ||
         shown.camera != o.camera) {
         shown = {scene, o.width, o.height, o.camera, prepare_frame(scene, o)};
@@ -38,9 +39,9 @@ std::vector<LightMarker> light_markers(AppState& state) {
     return markers;
 }
 
-void select(AppState& state, Selection selection) {
-    state.selection = selection;
-    state.reveal_selection = selection.kind != Selection::Kind::none;
+void select(ViewState& view, Selection selection) {
+    view.selection = selection;
+    view.reveal_selection = selection.kind != Selection::Kind::none;
 }
 
 void select_at(AppState& state, double x, double y, double marker_radius) {
@@ -54,35 +55,34 @@ void select_at(AppState& state, double x, double y, double marker_radius) {
         }
     }
     if (light) {
-        select(state, {Selection::Kind::light, *light});
+        select(state.view, {Selection::Kind::light, *light});
         state.message = "Selected point_light " + std::to_string(*light + 1);
         return;
     }
     const std::optional<PickedPrimitive> hit =
         primitive_at(state, static_cast<int>(std::floor(x)), static_cast<int>(std::floor(y)));
     if (!hit) {
-        select(state, {});
+        select(state.view, {});
         state.message = "Selection cleared";
         return;
     }
-    select(state, {Selection::Kind::primitive, hit->primitive});
+    select(state.view, {Selection::Kind::primitive, hit->primitive});
     const Primitive& p = state.doc.scene.primitives[static_cast<std::size_t>(hit->primitive)];
     state.message =
         "Selected " + std::string(keyword_of(p.shape)) + " " + std::to_string(hit->primitive + 1);
 }
 
-Selection current_selection(const AppState& state) {
-    const Selection& s = state.selection;
-    const std::size_t count = s.kind == Selection::Kind::primitive
-                                  ? state.doc.scene.primitives.size()
-                              : s.kind == Selection::Kind::light ? state.doc.scene.lights.size()
-                                                                 : 0;
+Selection current_selection(const ViewState& view, const Scene& scene) {
+    const Selection& s = view.selection;
+    const std::size_t count = s.kind == Selection::Kind::primitive ? scene.primitives.size()
+                              : s.kind == Selection::Kind::light   ? scene.lights.size()
+                                                                   : 0;
     if (s.index < 0 || static_cast<std::size_t>(s.index) >= count) return {};
     return s;
 }
 
 const Expected<MeshInfo>& mesh_figures(AppState& state, int primitive) {
-    std::optional<MeshFigures>& kept = state.mesh_figures;
+    std::optional<MeshFigures>& kept = state.view.mesh_figures;
     if (!kept || kept->primitive != primitive || kept->revision != state.doc.revision) {
         const auto& primitives = state.doc.scene.primitives;
         kept.emplace();
@@ -98,8 +98,8 @@ const Expected<MeshInfo>& mesh_figures(AppState& state, int primitive) {
 std::shared_ptr<const PrimitiveIdImage> shown_primitive_ids(AppState& state) {
     const std::shared_ptr<const PreparedFrame> frame = shown_frame(state);
     if (!frame) return nullptr;
-    state.primitive_ids.request(frame);
-    return state.primitive_ids.ready(frame.get());
+    state.view.primitive_ids.request(frame);
+    return state.view.primitive_ids.ready(frame.get());
 }
 
 }  // namespace jt::view

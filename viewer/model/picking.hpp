@@ -27,16 +27,16 @@ struct LightMarker {
 std::vector<LightMarker> light_markers(AppState& state);
 
 // Selects `selection` and asks its panel to open and scroll to it.
-void select(AppState& state, Selection selection);
+void select(ViewState& view, Selection selection);
 // Selects what a click at image point (x, y) shows: a light whose marker lies
 // within `marker_radius` pixels first, else the primitive; the background
 // clears the selection.
 void select_at(AppState& state, double x, double y, double marker_radius);
 // The selection while it still names a primitive or light of the scene, else none.
-Selection current_selection(const AppState& state);
+Selection current_selection(const ViewState& view, const Scene& scene);
 
 // The figures of mesh `primitive` of the scene (its model from the shared
-// cache), kept in state.mesh_figures until the scene or the selection changes.
+// cache), kept in state.view.mesh_figures until the scene or the selection changes.
 const Expected<MeshInfo>& mesh_figures(AppState& state, int primitive);
 
 // The ids of the primitives every pixel shows, once computed off the UI

@@ -8,14 +8,14 @@
 namespace jt::view {
 
 std::optional<PixelReport> inspect_pixel(AppState& state, int x, int y) {
-    const Image8& image = state.display;
+    const Image8& image = state.render.display;
     if (x < 0 || y < 0 || x >= image.width || y >= image.height) return std::nullopt;
     PixelReport report;
     report.x = x;
     report.y = flipped_row(y, image.height);
     const std::uint8_t* p = image.pixel(x, y);
     report.rgb = {p[0], p[1], p[2]};
-    report.earlier_render = !state.display_complete && state.passes_shown == 0;
+    report.earlier_render = !state.render.display_complete && state.render.passes_shown == 0;
     if (!report.earlier_render) report.hit = primitive_at(state, x, y);
     return report;
 }

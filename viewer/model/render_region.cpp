@@ -29,7 +29,7 @@ std::optional<FrameRegion> region_spanning(const ImagePoint& a, const ImagePoint
 namespace {
 
 // The view a render of `request` shows: the free camera, or the scene camera.
-std::optional<AppState::RegionView> view_of(const AppState& state, const RenderRequest& request) {
+std::optional<ViewState::RegionView> view_of(const AppState& state, const RenderRequest& request) {
     Camera camera;
     if (request.free_camera) {
         camera = camera_from(*request.free_camera, "");
@@ -40,49 +40,49 @@ std::optional<AppState::RegionView> view_of(const AppState& state, const RenderR
         camera = cameras[static_cast<std::size_t>(index)];
     }
     camera.name.clear();
-    return AppState::RegionView{camera, request.options.width, request.options.height};
+    return ViewState::RegionView{camera, request.options.width, request.options.height};
 }
 
 }  // namespace
 
 void set_render_region(AppState& state, const FrameRegion& region) {
-    state.render_region = region;
+    state.view.render_region = region;
     // The image shows the view of the render under way or last finished.
     std::string note;
     if (const std::optional<RenderRequest> now = render_request(state, note))
-        state.region_view = view_of(state, *now);
+        state.view.region_view = view_of(state, *now);
     state.message = "Rendering region " + format_frame_region(region) +
                     " alone (as jtracer-cli --region " + format_frame_region(region) + ")";
 }
 
 void clear_render_region(AppState& state) {
-    if (!state.render_region) return;
-    state.render_region.reset();
+    if (!state.view.render_region) return;
+    state.view.render_region.reset();
     state.message = "Region cleared: the whole image renders";
 }
 
 bool clear_region_for_new_view(AppState& state, const RenderRequest& next) {
-    if (!state.render_region) {
-        state.region_view.reset();
+    if (!state.view.render_region) {
+        state.view.region_view.reset();
         return false;
     }
-    const std::optional<AppState::RegionView> view = view_of(state, next);
+    const std::optional<ViewState::RegionView> view = view_of(state, next);
     // The first render with the region: the rest shows this view.
-    if (!state.region_view) {
-        state.region_view = view;
+    if (!state.view.region_view) {
+        state.view.region_view = view;
         return false;
     }
-    if (view == state.region_view) return false;
-    state.render_region.reset();
-    state.region_view.reset();
+    if (view == state.view.region_view) return false;
+    state.view.render_region.reset();
+    state.view.region_view.reset();
     state.message = "The view changed: the region is cleared and the whole image renders";
     return true;
 }
 
-std::optional<PixelRect> render_region_rect(const AppState& state, int width, int height) {
-    if (!state.render_region || !check_region_in_frame(*state.render_region, width, height))
+std::optional<PixelRect> render_region_rect(const ViewState& view, int width, int height) {
+    if (!view.render_region || !check_region_in_frame(*view.render_region, width, height))
         return std::nullopt;
-    return to_image_rect(*state.render_region, height);
+    return to_image_rect(*view.render_region, height);
 }
 
 }  // namespace jt::view

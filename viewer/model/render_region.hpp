@@ -27,8 +27,8 @@ void clear_render_region(AppState& state);
 // True when it was.
 bool clear_region_for_new_view(AppState& state, const RenderRequest& next);
 
-// The region the render is limited to, in Image8 coordinates: state.render_region
+// The region the render is limited to, in Image8 coordinates: state.view.render_region
 // while it lies inside a `width` x `height` frame, else nothing.
-std::optional<PixelRect> render_region_rect(const AppState& state, int width, int height);
+std::optional<PixelRect> render_region_rect(const ViewState& view, int width, int height);
 
 }  // namespace jt::view

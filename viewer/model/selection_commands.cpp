@@ -15,7 +15,7 @@ namespace jt::view {
 namespace {
 
 std::optional<BlockRef> selected_block(const AppState& state) {
-    const Selection s = current_selection(state);
+    const Selection s = current_selection(state.view, state.doc.scene);
     if (s.kind == Selection::Kind::none) return std::nullopt;
     return BlockRef{s.kind == Selection::Kind::light ? BlockKind::light : BlockKind::primitive,
                     static_cast<std::size_t>(s.index)};
@@ -40,7 +40,7 @@ double framing_distance(double radius, double fov_degrees) {
 bool delete_selection(AppState& state) {
     const std::optional<BlockRef> block = selected_block(state);
     if (!block || !delete_block(state, *block)) return false;
-    state.selection = {};
+    state.view.selection = {};
     return true;
 }
 
@@ -50,7 +50,7 @@ bool duplicate_selection(AppState& state) {
 }
 
 bool frame_selection(AppState& state) {
-    const Selection s = current_selection(state);
+    const Selection s = current_selection(state.view, state.doc.scene);
     if (s.kind == Selection::Kind::none || state.doc.scene.cameras.empty()) {
         state.message = "Nothing is selected to frame: click an object or light first";
         return false;
@@ -67,8 +67,8 @@ bool frame_selection(AppState& state) {
         state.message = "A plane or mesh has no size known to frame";
         return false;
     }
-    use_free_camera(state);
-    FreeCamera& camera = state.free_camera;
+    use_free_camera(state.view, state.doc.scene);
+    FreeCamera& camera = state.view.free_camera;
     Vec3 forward = camera.look_at - camera.position;
     const double length = glm::length(forward);
     forward = length > 0.0 && std::isfinite(length) ? forward / length : Vec3(0.0, 0.0, -1.0);
@@ -81,7 +81,7 @@ bool frame_selection(AppState& state) {
 }
 
 std::optional<int> selection_line(const AppState& state) {
-    const BlockSource* block = block_source(state, current_selection(state));
+    const BlockSource* block = block_source(state, current_selection(state.view, state.doc.scene));
     if (!block) return std::nullopt;
     return block->keyword_span.pos.line;
 }

@@ -31,8 +31,8 @@ Scene parsed(const std::string& text) {
 
 // Waits for the typed text's check and takes it in.
 void settle_text(AppState& state) {
-    state.checker.wait();
-    for (int i = 0; i < 100 && !take_checked_text(state); ++i) state.checker.wait();
+    state.check.checker.wait();
+    for (int i = 0; i < 100 && !take_checked_text(state); ++i) state.check.checker.wait();
 }
 
 // An empty file opens as one to start a scene in: Start a scene gives it a
@@ -65,7 +65,7 @@ TEST(DocumentEdits, AnEmptyFileStartsANewSceneThatThePanelsBuildOn) {
     ASSERT_EQ(state.doc.scene.primitives.size(), 1u);
     ModelLoop loop;
     ASSERT_TRUE(loop.run_until_complete(state));
-    EXPECT_TRUE(state.render_note.empty()) << state.render_note;
+    EXPECT_TRUE(state.render.render_note.empty()) << state.render.render_note;
     ASSERT_TRUE(save_scene(state)) << state.message;
     EXPECT_TRUE(parsed(file_text(path)) == state.doc.scene);
 
@@ -90,10 +90,11 @@ TEST(DocumentEdits, AddDuplicateDeleteThenSaveGivesTheExpectedSceneAndKeepsOther
     view.cameras.push_back(expected.cameras[0]);  // the view shows "front"
     expected.primitives.push_back(new_primitive(ShapeKind::sphere, view));
     const int last = static_cast<int>(expected.primitives.size()) - 1;
-    EXPECT_EQ(state.selection, (Selection{Selection::Kind::primitive, last})) << "the new sphere";
+    EXPECT_EQ(state.view.selection, (Selection{Selection::Kind::primitive, last}))
+        << "the new sphere";
     ASSERT_TRUE(duplicate_block(state, {BlockKind::primitive, 1})) << state.message;
     expected.primitives.insert(expected.primitives.begin() + 2, expected.primitives[1]);
-    EXPECT_EQ(state.selection, (Selection{Selection::Kind::primitive, 2})) << "the copy";
+    EXPECT_EQ(state.view.selection, (Selection{Selection::Kind::primitive, 2})) << "the copy";
     ASSERT_TRUE(delete_block(state, {BlockKind::light, 0})) << state.message;
     expected.lights.clear();
     EXPECT_TRUE(state.doc.scene == expected);
@@ -134,9 +135,11 @@ TEST(DocumentEdits, AddTriangleAndMeshThenSaveGivesTheExpectedSceneAndKeepsOther
     EXPECT_NE(state.message.find("none.obj"), std::string::npos) << state.message;
     // An absolute path inside the scene's folder is written relative to it.
     const int triangle = static_cast<int>(expected.primitives.size()) - 1;
-    EXPECT_EQ(state.selection, (Selection{Selection::Kind::primitive, triangle})) << "the triangle";
+    EXPECT_EQ(state.view.selection, (Selection{Selection::Kind::primitive, triangle}))
+        << "the triangle";
     ASSERT_TRUE(add_mesh(state, model_file.string())) << state.message;
-    EXPECT_EQ(state.selection, (Selection{Selection::Kind::primitive, triangle + 1})) << "the mesh";
+    EXPECT_EQ(state.view.selection, (Selection{Selection::Kind::primitive, triangle + 1}))
+        << "the mesh";
     const Expected<Model> quad = read_model(model_file, path.parent_path());
     ASSERT_TRUE(quad);
     expected.primitives.push_back(new_mesh(view, "models/quad.obj", *quad));
@@ -158,7 +161,7 @@ TEST(DocumentEdits, AddTriangleAndMeshThenSaveGivesTheExpectedSceneAndKeepsOther
     // And it renders: the model loads from the scene's folder.
     ModelLoop model;
     ASSERT_TRUE(model.run_until_complete(state));
-    EXPECT_TRUE(state.render_note.empty()) << state.render_note;
+    EXPECT_TRUE(state.render.render_note.empty()) << state.render.render_note;
 }
 
 TEST(DocumentEdits, ATextErrorKeepsTheImageAndIsListedAtItsLineTheFixRendersAgain) {
@@ -167,7 +170,7 @@ TEST(DocumentEdits, ATextErrorKeepsTheImageAndIsListedAtItsLineTheFixRendersAgai
     open_scene(state, path);
     ModelLoop loop;
     ASSERT_TRUE(loop.run_until_complete(state));
-    const Image8 good = state.display;
+    const Image8 good = state.render.display;
     const Scene good_scene = state.doc.scene;
 
     // Line 34 is the sphere's "radius: 1;": break it.
@@ -189,7 +192,7 @@ TEST(DocumentEdits, ATextErrorKeepsTheImageAndIsListedAtItsLineTheFixRendersAgai
     EXPECT_NE(first->message.find("expected ';'"), std::string::npos) << first->message;
     EXPECT_EQ(state.doc.diagnostics_source, text) << "they point into the typed text";
     for (int i = 0; i < 5; ++i) loop.frame(state);
-    EXPECT_EQ(state.display, good) << "the last good image stays";
+    EXPECT_EQ(state.render.display, good) << "the last good image stays";
     EXPECT_FALSE(save_scene(state)) << "a text with errors is not saved";
 
     // The fix: a bigger sphere, rendered again.
@@ -199,7 +202,7 @@ TEST(DocumentEdits, ATextErrorKeepsTheImageAndIsListedAtItsLineTheFixRendersAgai
     EXPECT_FALSE(state.doc.draft);
     EXPECT_EQ(std::get<Sphere>(state.doc.scene.primitives[1].shape).radius, 1.4);
     ASSERT_TRUE(loop.run_until_complete(state));
-    EXPECT_NE(state.display, good);
+    EXPECT_NE(state.render.display, good);
     ASSERT_TRUE(save_scene(state)) << state.message;
     EXPECT_EQ(file_text(path), text);
 }
@@ -214,8 +217,9 @@ TEST(DocumentEdits, OneUndoHistoryAcrossPanelStructureAndTextEdits) {
     const std::string t1 = document_text(state.doc);
     ASSERT_NE(t1, t0);
     ASSERT_TRUE(add_light(state));
-    EXPECT_EQ(state.selection, (Selection{Selection::Kind::light,
-                                          static_cast<int>(state.doc.scene.lights.size()) - 1}))
+    EXPECT_EQ(
+        state.view.selection,
+        (Selection{Selection::Kind::light, static_cast<int>(state.doc.scene.lights.size()) - 1}))
         << "the new light";
     const std::string t2 = document_text(state.doc);
     std::string typed = t2;
@@ -235,7 +239,7 @@ TEST(DocumentEdits, OneUndoHistoryAcrossPanelStructureAndTextEdits) {
             << "undo to " << i;
         EXPECT_TRUE(state.doc.scene == parsed(history[static_cast<std::size_t>(i)]));
     }
-    EXPECT_FALSE(state.undo.can_undo());
+    EXPECT_FALSE(state.history.undo.can_undo());
     EXPECT_FALSE(has_unsaved_edits(state.doc)) << "back to the file";
     for (std::size_t i = 1; i < history.size(); ++i) {
         redo(state);
@@ -262,7 +266,7 @@ TEST(DocumentEdits, TransformOpsCamerasAndRefusals) {
     EXPECT_NE(state.message.find("already named"), std::string::npos) << state.message;
     ASSERT_TRUE(add_camera(state));
     EXPECT_EQ(state.doc.scene.cameras.size(), 3u);
-    EXPECT_EQ(selected_camera(state), 2);
+    EXPECT_EQ(selected_camera(state.view, state.doc.scene), 2);
     ASSERT_TRUE(delete_block(state, {BlockKind::camera, 0}));
     ASSERT_TRUE(delete_block(state, {BlockKind::camera, 0}));
     EXPECT_FALSE(delete_block(state, {BlockKind::camera, 0}));
@@ -299,7 +303,7 @@ TEST(DocumentEdits, AnEmptyFileBecomesASceneThroughTheText) {
         "cameras { perspective_camera { position: <0, 1, 5>; } }\n";
     type_text(state, text);
     EXPECT_TRUE(has_unsaved_edits(state.doc)) << "typed text is never dropped unasked";
-    state.checker.wait();
+    state.check.checker.wait();
     ASSERT_TRUE(take_checked_text(state));
     ASSERT_TRUE(state.doc.loaded) << state.message;
     ASSERT_TRUE(add_object(state, ShapeKind::sphere)) << state.message;

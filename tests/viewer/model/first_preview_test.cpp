@@ -113,9 +113,10 @@ TEST(Wakeup, FinishedLoadWakesTheLoopAndEndsTheWait) {
     const std::uint64_t seen = state.wakeup.count();
     request_open(state, kScene);
     ASSERT_TRUE(state.wakeup.wait(seen, Clock::now() + kTimeout));
-    EXPECT_FALSE(state.loader.in_flight());
-    EXPECT_TRUE(state.loader.busy()) << "the result waits to be taken in";
-    EXPECT_FALSE(waiting_for_workers(state)) << "the next frame has a load to take in";
+    EXPECT_FALSE(state.files.loader.in_flight());
+    EXPECT_TRUE(state.files.loader.busy()) << "the result waits to be taken in";
+    EXPECT_FALSE(waiting_for_workers(state.files, state.render))
+        << "the next frame has a load to take in";
     EXPECT_TRUE(take_finished_load(state));
     EXPECT_TRUE(state.doc.loaded);
 }

@@ -65,7 +65,7 @@ class ViewerModelFiles : public ::testing::Test {
         ASSERT_TRUE(write_png(dir.path() / "map.png", flat_image(200, 40, 40)));
         open_scene(state, dir.path() / "scene.jts");
         ASSERT_TRUE(model.run_until_complete(state));
-        first = state.display;
+        first = state.render.display;
     }
 
     // What a fresh viewer shows for the files as they are now.
@@ -73,7 +73,7 @@ class ViewerModelFiles : public ::testing::Test {
         AppState other{test_config()};
         open_scene(other, dir.path() / "scene.jts");
         EXPECT_TRUE(model.run_until_complete(other));
-        return other.display;
+        return other.render.display;
     }
 
     // Frames until the render that answers the change is complete.
@@ -100,9 +100,9 @@ TEST_F(ViewerModelFiles, AChangedModelFileShowsTheNewGeometry) {
     ASSERT_GT(covered, 0) << "the square shows the map's colour";
     save_as_editor(dir.path() / "model.obj", square_obj(0.5));
     run_after_change();
-    EXPECT_NE(state.display, first);
-    EXPECT_EQ(state.display, fresh_render());
-    const int now = count_colour(state.display, 200, 40, 40);
+    EXPECT_NE(state.render.display, first);
+    EXPECT_EQ(state.render.display, fresh_render());
+    const int now = count_colour(state.render.display, 200, 40, 40);
     EXPECT_GT(now, 0);
     EXPECT_LT(now, covered / 2) << "half the edge: about a quarter of the pixels";
     EXPECT_FALSE(has_unsaved_edits(state.doc));
@@ -112,13 +112,13 @@ TEST_F(ViewerModelFiles, AChangedImageMapShowsTheNewPicture) {
     ASSERT_TRUE(write_png(dir.path() / "map.png.tmp", flat_image(30, 90, 220)));
     fs::rename(dir.path() / "map.png.tmp", dir.path() / "map.png");
     run_after_change();
-    EXPECT_EQ(count_colour(state.display, 200, 40, 40), 0);
-    EXPECT_EQ(count_colour(state.display, 30, 90, 220), count_colour(first, 200, 40, 40));
-    EXPECT_EQ(state.display, fresh_render());
+    EXPECT_EQ(count_colour(state.render.display, 200, 40, 40), 0);
+    EXPECT_EQ(count_colour(state.render.display, 30, 90, 220), count_colour(first, 200, 40, 40));
+    EXPECT_EQ(state.render.display, fresh_render());
 }
 
 TEST_F(ViewerModelFiles, ABrokenModelIsLocatedAndKeepsTheLastImage) {
-    static_cast<void>(take_display_changes(state));  // shown
+    static_cast<void>(take_display_changes(state.render));  // shown
     save_as_editor(dir.path() / "model.obj", "v 0 0 0\nf 1 2 3 oops\n\x01\x02garbage");
     model.frame(state);
     for (int i = 0; i < 5; ++i) model.frame(state);
@@ -127,14 +127,15 @@ TEST_F(ViewerModelFiles, ABrokenModelIsLocatedAndKeepsTheLastImage) {
     EXPECT_EQ(d.severity, Severity::error);
     EXPECT_EQ(d.pos, kFileString) << d.message;
     EXPECT_NE(d.message.find("model.obj"), std::string::npos) << d.message;
-    EXPECT_EQ(state.display, first);
-    EXPECT_FALSE(take_display_changes(state)) << "nothing new to show";
-    EXPECT_NE(state.render_note.find("Not rendered"), std::string::npos) << state.render_note;
+    EXPECT_EQ(state.render.display, first);
+    EXPECT_FALSE(take_display_changes(state.render)) << "nothing new to show";
+    EXPECT_NE(state.render.render_note.find("Not rendered"), std::string::npos)
+        << state.render.render_note;
 
     save_as_editor(dir.path() / "model.obj", square_obj(1.0));  // fixed
     run_after_change();
     EXPECT_TRUE(state.doc.diagnostics.empty()) << state.doc.diagnostics.front().message;
-    EXPECT_EQ(state.display, first);
+    EXPECT_EQ(state.render.display, first);
 }
 
 TEST_F(ViewerModelFiles, ReloadModelReadsAFileWhoseStampDidNotMove) {
@@ -149,27 +150,29 @@ TEST_F(ViewerModelFiles, ReloadModelReadsAFileWhoseStampDidNotMove) {
     }
     fs::last_write_time(file, time);
     for (int i = 0; i < 3; ++i) model.frame(state);
-    ASSERT_TRUE(state.started.has_value());
-    EXPECT_EQ(state.display, first) << "the watcher cannot tell";
+    ASSERT_TRUE(state.render.started.has_value());
+    EXPECT_EQ(state.render.display, first) << "the watcher cannot tell";
 
     reload_model(state, 0);
     ASSERT_TRUE(model.run_until_complete(state));
-    EXPECT_NE(state.display, first);
-    EXPECT_LT(count_colour(state.display, 200, 40, 40), count_colour(first, 200, 40, 40) / 2);
+    EXPECT_NE(state.render.display, first);
+    EXPECT_LT(count_colour(state.render.display, 200, 40, 40),
+              count_colour(first, 200, 40, 40) / 2);
 }
 
 TEST_F(ViewerModelFiles, AModelChangeKeepsTheUnsavedEdits) {
     edit_scene(state, [](Scene& s) { s.primitives[0].material.ambient = Colour(0.5); });
     ASSERT_TRUE(model.run_until_complete(state));
     const Scene edited = state.doc.scene;
-    const Image8 before = state.display;
+    const Image8 before = state.render.display;
     save_as_editor(dir.path() / "model.obj", square_obj(0.5));
     run_after_change();
     EXPECT_EQ(state.doc.scene, edited);
     EXPECT_TRUE(has_unsaved_edits(state.doc));
-    EXPECT_FALSE(state.pending_reload) << "nothing to choose: the scene text did not change";
-    EXPECT_NE(state.display, before);
-    EXPECT_EQ(count_colour(state.display, 100, 20, 20), count_colour(fresh_render(), 200, 40, 40));
+    EXPECT_FALSE(state.files.pending_reload) << "nothing to choose: the scene text did not change";
+    EXPECT_NE(state.render.display, before);
+    EXPECT_EQ(count_colour(state.render.display, 100, 20, 20),
+              count_colour(fresh_render(), 200, 40, 40));
 }
 
 }  // namespace

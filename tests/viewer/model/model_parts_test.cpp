@@ -310,19 +310,20 @@ TEST(EditTracking, AWholeDragIsOneUndoStep) {
     state.doc.loaded = true;
     const Scene start = state.doc.scene;
     for (int frame = 0; frame < 5; ++frame) {  // the widget stays active while dragging
-        const EditMark before = begin_edit_tracking(state);
+        const EditMark before = begin_edit_tracking(state.history, state.doc);
         state.doc.scene.settings.width += 10;
         note_scene_changed(state.doc);  // as the panel field does
-        track_edits(state, before, /*widget_active=*/true);
+        track_edits(state.history, state.doc, before, /*widget_active=*/true);
     }
-    EXPECT_FALSE(state.undo.can_undo()) << "recorded when the drag ends";
-    track_edits(state, begin_edit_tracking(state), /*widget_active=*/false);
-    EXPECT_EQ(state.undo.size(), 1u);
-    const EditMark before_undo = begin_edit_tracking(state);
+    EXPECT_FALSE(state.history.undo.can_undo()) << "recorded when the drag ends";
+    track_edits(state.history, state.doc, begin_edit_tracking(state.history, state.doc),
+                /*widget_active=*/false);
+    EXPECT_EQ(state.history.undo.size(), 1u);
+    const EditMark before_undo = begin_edit_tracking(state.history, state.doc);
     undo(state);
     EXPECT_EQ(state.doc.scene, start);
-    track_edits(state, before_undo, false);  // the frame in which undo ran
-    EXPECT_TRUE(state.undo.can_redo()) << "undo is not mistaken for an edit";
+    track_edits(state.history, state.doc, before_undo, false);  // the frame in which undo ran
+    EXPECT_TRUE(state.history.undo.can_redo()) << "undo is not mistaken for an edit";
     redo(state);
     EXPECT_EQ(state.doc.scene.settings.width, 50);
 }

@@ -34,33 +34,34 @@ TEST(ModelRender, TheDisplayIsTheCoresImageAndEveryChangeIsReported) {
     int reports = 0;
     const auto frame = [&] {
         model_frame(state);
-        const std::optional<PixelRect> changed = take_display_changes(state);
+        const std::optional<PixelRect> changed = take_display_changes(state.render);
         if (!changed) return;
         ++reports;
-        if (mirror.width != state.display.width || mirror.height != state.display.height)
-            mirror = Image8(state.display.width, state.display.height);
+        if (mirror.width != state.render.display.width ||
+            mirror.height != state.render.display.height)
+            mirror = Image8(state.render.display.width, state.render.display.height);
         for (int y = 0; y < mirror.height; ++y)
             for (int x = 0; x < mirror.width; ++x)
                 if (inside(*changed, x, y))
-                    std::copy_n(state.display.pixel(x, y), 3, mirror.pixel(x, y));
+                    std::copy_n(state.render.display.pixel(x, y), 3, mirror.pixel(x, y));
                 else
                     EXPECT_TRUE(std::equal(mirror.pixel(x, y), mirror.pixel(x, y) + 3,
-                                           state.display.pixel(x, y)))
+                                           state.render.display.pixel(x, y)))
                         << "pixel " << x << "," << y << " changed outside the reported rectangle";
     };
     ASSERT_TRUE(run_frames_until_complete(state, frame, kTimeout, 2));
     EXPECT_GE(reports, 1);
-    EXPECT_EQ(state.display, core_render(state.doc.scene));
-    EXPECT_EQ(mirror, state.display);
-    EXPECT_FALSE(take_display_changes(state)) << "taken: nothing new until the next pass";
+    EXPECT_EQ(state.render.display, core_render(state.doc.scene));
+    EXPECT_EQ(mirror, state.render.display);
+    EXPECT_FALSE(take_display_changes(state.render)) << "taken: nothing new until the next pass";
 
     // An edit renders again; the changes since are reported again.
     edit_scene(state, [](Scene& s) { s.primitives[1].material.pigment = Colour(0.1, 0.8, 0.2); });
     reports = 0;
     ASSERT_TRUE(run_frames_until_complete(state, frame, kTimeout, 2));
     EXPECT_GE(reports, 1);
-    EXPECT_EQ(state.display, core_render(state.doc.scene));
-    EXPECT_EQ(mirror, state.display);
+    EXPECT_EQ(state.render.display, core_render(state.doc.scene));
+    EXPECT_EQ(mirror, state.render.display);
 }
 
 }  // namespace

@@ -162,13 +162,13 @@ TEST(DragGeometry, AnObjectsCentreIsWhereItsShapeIsAfterItsTransform) {
 }
 
 TEST_F(ObjectDragTest, ADragWritesATranslateOfTheMoveAndKeepsEveryOtherByte) {
-    select(state, {Kind::primitive, 1});
+    select(state.view, {Kind::primitive, 1});
     const Vec3 grab = grabbed();
     const ImagePoint to{press.x + 9, press.y - 4};
-    const std::size_t steps = state.undo.size();
+    const std::size_t steps = state.history.undo.size();
     drag_to(to);
-    EXPECT_EQ(state.selection, (Selection{Kind::primitive, 1})) << "the selection stays";
-    EXPECT_EQ(state.undo.size(), steps + 1) << "one drag, one undo step";
+    EXPECT_EQ(state.view.selection, (Selection{Kind::primitive, 1})) << "the selection stays";
+    EXPECT_EQ(state.history.undo.size(), steps + 1) << "one drag, one undo step";
 
     const Vec3 want = expected_move(depth_of(grab), press, to);
     const double pixel = depth_of(grab) * 2 * camera_axes().tan_half_fov / kHeight;
@@ -220,7 +220,7 @@ TEST_F(ObjectDragTest, ADragWritesATranslateOfTheMoveAndKeepsEveryOtherByte) {
 }
 
 TEST_F(ObjectDragTest, ALaterDragUpdatesTheTrailingTranslateInsteadOfStackingOne) {
-    select(state, {Kind::primitive, 1});
+    select(state.view, {Kind::primitive, 1});
     drag_to({press.x + 6, press.y});
     const Vec3 first = state.doc.scene.primitives[1].transforms.back().vector;
     ASSERT_TRUE(model.run_until_complete(state));
@@ -232,7 +232,7 @@ TEST_F(ObjectDragTest, ALaterDragUpdatesTheTrailingTranslateInsteadOfStackingOne
     ASSERT_EQ(ops.size(), 1u) << "one translate, updated";
     EXPECT_GT(ops[0].vector.x, first.x);
     EXPECT_GT(ops[0].vector.y, first.y);
-    EXPECT_EQ(state.undo.size(), 2u);
+    EXPECT_EQ(state.history.undo.size(), 2u);
     undo(state);
     EXPECT_EQ(state.doc.scene.primitives[1].transforms.back().vector, first);
 }
@@ -244,7 +244,7 @@ TEST_F(ObjectDragTest, ATranslateAfterARotationIsAddedLastSoTheMoveIsInWorldSpac
     edit_scene(state, [](Scene& s) { s.primitives[1].transforms[1].degrees = 90; });
     ASSERT_TRUE(model.run_until_complete(state));
     frame = shown_frame(state);
-    select(state, {Kind::primitive, 1});
+    select(state.view, {Kind::primitive, 1});
     const Vec3 centre = *object_centre(state.doc.scene, state.doc.scene.primitives[1]);
     drag_to({press.x + 8, press.y}, /*one_axis=*/true);
     const auto& ops = state.doc.scene.primitives[1].transforms;
@@ -258,15 +258,15 @@ TEST_F(ObjectDragTest, ATranslateAfterARotationIsAddedLastSoTheMoveIsInWorldSpac
 }
 
 TEST_F(ObjectDragTest, EscAndADragLetGoWhereItStartedChangeNothing) {
-    select(state, {Kind::primitive, 1});
-    const std::size_t steps = state.undo.size();
+    select(state.view, {Kind::primitive, 1});
+    const std::size_t steps = state.history.undo.size();
     ASSERT_TRUE(start_object_drag(state, press, 0.0));
     drag_object_to(state, {press.x + 10, press.y + 2}, false);
     EXPECT_NE(text(), original) << "the text follows the drag";
     cancel_object_drag(state);
     EXPECT_EQ(text(), original);
     EXPECT_FALSE(has_unsaved_edits(state.doc));
-    EXPECT_EQ(state.undo.size(), steps);
+    EXPECT_EQ(state.history.undo.size(), steps);
 
     // Moved away and back: the translate added on the way goes again.
     ASSERT_TRUE(start_object_drag(state, press, 0.0));
@@ -275,7 +275,7 @@ TEST_F(ObjectDragTest, EscAndADragLetGoWhereItStartedChangeNothing) {
     finish_object_drag(state, press, false);
     EXPECT_EQ(text(), original);
     EXPECT_FALSE(has_unsaved_edits(state.doc));
-    EXPECT_EQ(state.undo.size(), steps);
+    EXPECT_EQ(state.history.undo.size(), steps);
 
     // Undo during the drag is the drag's own undo: nothing older goes.
     edit_scene(state, [](Scene& s) { s.settings.samples = 2; });
@@ -283,12 +283,12 @@ TEST_F(ObjectDragTest, EscAndADragLetGoWhereItStartedChangeNothing) {
     ASSERT_TRUE(start_object_drag(state, press, 0.0));
     drag_object_to(state, {press.x + 10, press.y}, false);
     undo(state);
-    EXPECT_FALSE(state.object_drag);
+    EXPECT_FALSE(state.drags.object);
     EXPECT_EQ(text(), edited);
 }
 
 TEST_F(ObjectDragTest, TheTextFollowsAtMostEveryIntervalAndTheLatestPositionWins) {
-    select(state, {Kind::primitive, 1});
+    select(state.view, {Kind::primitive, 1});
     ASSERT_TRUE(start_object_drag(state, press, 0.0));
     const Clock::time_point t0 = Clock::now();
     drag_object_to(state, {press.x + 4, press.y}, false, t0);
@@ -300,14 +300,14 @@ TEST_F(ObjectDragTest, TheTextFollowsAtMostEveryIntervalAndTheLatestPositionWins
     const Vec3 latest = state.doc.scene.primitives[1].transforms.back().vector;
     EXPECT_NEAR(latest.x, 3 * first.x, 0.02) << "the latest position, not the one held back";
     finish_object_drag(state, {press.x + 12, press.y}, false);
-    EXPECT_EQ(state.undo.size(), 1u);
+    EXPECT_EQ(state.history.undo.size(), 1u);
 }
 
 TEST_F(ObjectDragTest, ALightMovesItsPositionAndAPlaneAlongItsNormal) {
     const Vec3 light = state.doc.scene.lights[0].position;
     const std::optional<ImagePoint> marker = project_to_image(*frame, light);
     ASSERT_TRUE(marker);
-    select(state, {Kind::light, 0});
+    select(state.view, {Kind::light, 0});
     press = *marker;
     drag_to({press.x - 5, press.y});
     const Vec3 moved = state.doc.scene.lights[0].position;
@@ -320,7 +320,7 @@ TEST_F(ObjectDragTest, ALightMovesItsPositionAndAPlaneAlongItsNormal) {
     EXPECT_EQ(text(), original);
 
     // The floor (normal +y): dragged down in the image it moves down, in y alone.
-    select(state, {Kind::primitive, 0});
+    select(state.view, {Kind::primitive, 0});
     press = {32.5, 6.5};
     ASSERT_EQ(pick_primitive(*frame, 32, 6)->primitive, 0);
     drag_to({32.5, 2.5});
@@ -332,17 +332,17 @@ TEST_F(ObjectDragTest, ALightMovesItsPositionAndAPlaneAlongItsNormal) {
 }
 
 TEST_F(ObjectDragTest, WithNothingSelectedTheDragTakesWhatIsUnderTheCursor) {
-    ASSERT_EQ(state.selection.kind, Kind::none);
+    ASSERT_EQ(state.view.selection.kind, Kind::none);
     ASSERT_TRUE(start_object_drag(state, press, 0.0)) << state.message;
-    EXPECT_EQ(state.selection, (Selection{Kind::primitive, 1}));
+    EXPECT_EQ(state.view.selection, (Selection{Kind::primitive, 1}));
     cancel_object_drag(state);
-    select(state, {});
+    select(state.view, {});
     EXPECT_FALSE(start_object_drag(state, {32.5, 46.5}, 0.0)) << "the sky";
     EXPECT_NE(state.message.find("Nothing to move"), std::string::npos) << state.message;
     // Selected, a press off the object grabs it at its centre's depth.
-    select(state, {Kind::primitive, 1});
+    select(state.view, {Kind::primitive, 1});
     ASSERT_TRUE(start_object_drag(state, {32.5, 46.5}, 0.0));
-    EXPECT_NEAR(glm::dot(state.object_drag->plane.point - Vec3(0, 1, 0), camera_axes().forward),
+    EXPECT_NEAR(glm::dot(state.drags.object->plane.point - Vec3(0, 1, 0), camera_axes().forward),
                 0.0, 1e-12);
     cancel_object_drag(state);
 }

@@ -30,17 +30,17 @@ TEST_F(Picking, AClickSelectsWhatTheCoresPickSaysThePixelShows) {
     const std::shared_ptr<const PreparedFrame> frame = shown_frame(state);
     ASSERT_TRUE(frame);
     int on_sphere = 0, on_plane = 0, on_background = 0;
-    for (int y = 0; y < state.display.height; ++y)
-        for (int x = 0; x < state.display.width; ++x) {
+    for (int y = 0; y < state.render.display.height; ++y)
+        for (int x = 0; x < state.render.display.width; ++x) {
             select_at(state, x + 0.5, y + 0.5, 0.0);
             const std::optional<PickedPrimitive> pick = pick_primitive(*frame, x, y);
             if (!pick) {
-                EXPECT_EQ(state.selection.kind, Kind::none) << x << "," << y;
+                EXPECT_EQ(state.view.selection.kind, Kind::none) << x << "," << y;
                 ++on_background;
                 continue;
             }
-            EXPECT_EQ(state.selection, (Selection{Kind::primitive, pick->primitive}));
-            EXPECT_TRUE(state.reveal_selection);
+            EXPECT_EQ(state.view.selection, (Selection{Kind::primitive, pick->primitive}));
+            EXPECT_TRUE(state.view.reveal_selection);
             (pick->primitive == 0 ? on_plane : on_sphere) += 1;
         }
     EXPECT_GT(on_sphere, 0);
@@ -53,16 +53,16 @@ TEST_F(Picking, ALightsMarkerIsSelectedWithinItsRadius) {
     ASSERT_EQ(markers.size(), 1u);
     const ImagePoint at = markers[0].at;
     select_at(state, at.x + 1.5, at.y, 2.0);
-    EXPECT_EQ(state.selection, (Selection{Kind::light, 0}));
+    EXPECT_EQ(state.view.selection, (Selection{Kind::light, 0}));
     select_at(state, at.x + 3.0, at.y, 2.0);
-    EXPECT_NE(state.selection.kind, Kind::light) << "beyond the radius";
+    EXPECT_NE(state.view.selection.kind, Kind::light) << "beyond the radius";
 }
 
 TEST_F(Picking, ASelectionOfSomethingDeletedReadsAsNone) {
-    select(state, {Kind::primitive, 1});
-    EXPECT_EQ(current_selection(state), (Selection{Kind::primitive, 1}));
+    select(state.view, {Kind::primitive, 1});
+    EXPECT_EQ(current_selection(state.view, state.doc.scene), (Selection{Kind::primitive, 1}));
     edit_scene(state, [](Scene& s) { s.primitives.pop_back(); });
-    EXPECT_EQ(current_selection(state).kind, Kind::none);
+    EXPECT_EQ(current_selection(state.view, state.doc.scene).kind, Kind::none);
     EXPECT_FALSE(shown_frame(state)) << "the image still shows the old objects: no picking";
     ASSERT_TRUE(model.run_until_complete(state));
     EXPECT_TRUE(shown_frame(state));
@@ -79,7 +79,7 @@ namespace {
 TEST_F(Picking, TheInspectorGivesThePixelsBytesAndWhatItShows) {
     const std::shared_ptr<const PreparedFrame> frame = shown_frame(state);
     ASSERT_TRUE(frame);
-    const Image8& image = state.display;
+    const Image8& image = state.render.display;
     for (int y = 0; y < image.height; ++y)
         for (int x = 0; x < image.width; ++x) {
             const std::optional<PixelReport> r = inspect_pixel(state, x, y);
@@ -109,8 +109,8 @@ TEST_F(Picking, TheInspectorGivesThePixelsBytesAndWhatItShows) {
 // hit of the current view over it.
 TEST_F(Picking, TheInspectorDescribesNoHitOverAPixelOfTheRenderBefore) {
     ASSERT_TRUE(inspect_pixel(state, 32, 30)->hit) << "the sphere, in the finished render";
-    state.display_complete = false;  // as just after a new render started
-    state.passes_shown = 0;
+    state.render.display_complete = false;  // as just after a new render started
+    state.render.passes_shown = 0;
     const std::optional<PixelReport> r = inspect_pixel(state, 32, 30);
     ASSERT_TRUE(r);
     EXPECT_TRUE(r->earlier_render);

@@ -71,13 +71,13 @@ class ViewerFiles : public ::testing::Test {
 TEST_F(ViewerFiles, ReloadWithUnsavedEditsKeepsThemUntilTheUserChooses) {
     edit_pigment();
     they_save(kTheirs);
-    ASSERT_TRUE(state.pending_reload.has_value()) << state.message;
+    ASSERT_TRUE(state.files.pending_reload.has_value()) << state.message;
     EXPECT_EQ(state.doc.scene.primitives[1].material.pigment, kMyPigment) << "edits kept";
     EXPECT_TRUE(has_unsaved_edits(state.doc));
-    EXPECT_TRUE(state.reapply_problem.empty()) << state.reapply_problem;
+    EXPECT_TRUE(state.files.reapply_problem.empty()) << state.files.reapply_problem;
 
     resolve_reload(state, ReloadChoice::keep_edits);
-    EXPECT_FALSE(state.pending_reload.has_value());
+    EXPECT_FALSE(state.files.pending_reload.has_value());
     EXPECT_EQ(state.doc.scene.primitives[1].material.pigment, kMyPigment);
     EXPECT_EQ(read_file(file), kTheirs) << "nothing written yet";
 }
@@ -95,7 +95,7 @@ TEST_F(ViewerFiles, ReloadCanReapplyTheEditsOntoTheNewerText) {
     edit_pigment();
     they_save(kTheirs);
     resolve_reload(state, ReloadChoice::reapply_edits);
-    EXPECT_FALSE(state.pending_reload.has_value());
+    EXPECT_FALSE(state.files.pending_reload.has_value());
     EXPECT_EQ(state.doc.scene.primitives[1].material.pigment, kMyPigment) << "my edit";
     EXPECT_EQ(state.doc.scene.lights[0].intensity, Colour(0.5)) << "their change";
     EXPECT_TRUE(has_unsaved_edits(state.doc));
@@ -111,15 +111,15 @@ TEST_F(ViewerFiles, SaveRefusesToOverwriteANewerFileUntilToldTo) {
     they_save(kTheirs);
     resolve_reload(state, ReloadChoice::keep_edits);
     EXPECT_FALSE(save_scene(state));
-    EXPECT_NE(state.save_conflict.find("changed by another program"), std::string::npos)
-        << state.save_conflict;
+    EXPECT_NE(state.files.save_conflict.find("changed by another program"), std::string::npos)
+        << state.files.save_conflict;
     EXPECT_EQ(read_file(file), kTheirs);
     ASSERT_TRUE(save_scene_anyway(state)) << state.message;
-    EXPECT_TRUE(state.save_conflict.empty());
+    EXPECT_TRUE(state.files.save_conflict.empty());
     EXPECT_EQ(read_file(file), kMine);
     // Our own save is not a change from outside.
     ASSERT_TRUE(model.run_until_loaded(state));
-    EXPECT_FALSE(state.pending_reload.has_value());
+    EXPECT_FALSE(state.files.pending_reload.has_value());
 }
 
 TEST_F(ViewerFiles, SaveRefusesToOverwriteABrokenOrDeletedFile) {
@@ -134,7 +134,8 @@ TEST_F(ViewerFiles, SaveRefusesToOverwriteABrokenOrDeletedFile) {
     fs::remove(file);
     ASSERT_TRUE(model.run_until_loaded(state));
     EXPECT_FALSE(save_scene(state));
-    EXPECT_NE(state.save_conflict.find("was deleted"), std::string::npos) << state.save_conflict;
+    EXPECT_NE(state.files.save_conflict.find("was deleted"), std::string::npos)
+        << state.files.save_conflict;
     EXPECT_FALSE(fs::exists(file));
     ASSERT_TRUE(save_scene_anyway(state)) << state.message;
     EXPECT_EQ(read_file(file), kMine);
@@ -151,8 +152,8 @@ TEST_F(ViewerFiles, SavingAnUntouchedFileNeedsNoConfirmation) {
 }
 
 TEST_F(ViewerFiles, UndoingANewCameraAfterSavingSavesItsRemoval) {
-    use_free_camera(state);
-    orbit(state.free_camera, 40, 10, 240);
+    use_free_camera(state.view, state.doc.scene);
+    orbit(state.view.free_camera, 40, 10, 240);
     ASSERT_TRUE(copy_free_camera_to_scene(state, "mine"));
     EXPECT_FALSE(copy_free_camera_to_scene(state, "mine")) << "names stay unique";
     ASSERT_TRUE(save_scene(state)) << state.message;
@@ -176,10 +177,10 @@ void PrintTo(const Fault& fault, std::ostream* out) {
 class ViewerFaults : public ViewerFiles, public ::testing::WithParamInterface<Fault> {};
 
 TEST_P(ViewerFaults, KeepTheLastImageShowTheErrorAndRecover) {
-    const Image8 good = state.display;
-    static_cast<void>(take_display_changes(state));  // shown
+    const Image8 good = state.render.display;
+    static_cast<void>(take_display_changes(state.render));  // shown
     const Scene good_scene = state.doc.scene;
-    const auto jobs = state.renderer.jobs_started();
+    const auto jobs = state.render.renderer.jobs_started();
     if (GetParam().contents)  // written in place: a save cut short leaves just this
         std::ofstream(file, std::ios::binary | std::ios::trunc) << GetParam().contents(kOriginal);
     else
@@ -192,26 +193,26 @@ TEST_P(ViewerFaults, KeepTheLastImageShowTheErrorAndRecover) {
     model.frame(state);  // sees the change, starts the reload
     do {
         const auto start = std::chrono::steady_clock::now();
-        const bool loading = state.loader.busy();
+        const bool loading = state.files.loader.busy();
         model.frame(state);
         slowest_ms = std::max(slowest_ms, std::chrono::duration<double, std::milli>(
                                               std::chrono::steady_clock::now() - start)
                                               .count());
         ++frames;
         if (loading) ++frames_while_loading;
-    } while (state.loader.busy() && std::chrono::steady_clock::now() < deadline);
+    } while (state.files.loader.busy() && std::chrono::steady_clock::now() < deadline);
     std::printf("%s: %d frames while loading, slowest %.1f ms\n", GetParam().name, frames,
                 slowest_ms);
     RecordProperty("slowest_frame_ms", std::to_string(slowest_ms));
-    ASSERT_FALSE(state.loader.busy()) << "the load never finished";
+    ASSERT_FALSE(state.files.loader.busy()) << "the load never finished";
 
     EXPECT_TRUE(state.doc.load_failed);
     ASSERT_FALSE(state.doc.diagnostics.empty());
     EXPECT_FALSE(format_diagnostics(state.doc).empty());
     EXPECT_EQ(state.doc.scene, good_scene);
-    EXPECT_EQ(state.display, good);
-    EXPECT_FALSE(take_display_changes(state)) << "nothing new to show";
-    EXPECT_EQ(state.renderer.jobs_started(), jobs);
+    EXPECT_EQ(state.render.display, good);
+    EXPECT_FALSE(take_display_changes(state.render)) << "nothing new to show";
+    EXPECT_EQ(state.render.renderer.jobs_started(), jobs);
     if (std::string(GetParam().name) == "huge") {
         EXPECT_GT(frames_while_loading, 2);
     }
@@ -221,7 +222,7 @@ TEST_P(ViewerFaults, KeepTheLastImageShowTheErrorAndRecover) {
     EXPECT_FALSE(state.doc.load_failed);
     EXPECT_TRUE(state.doc.diagnostics.empty());
     ASSERT_TRUE(model.run_until_complete(state, kTimeout));
-    EXPECT_EQ(state.display, good);
+    EXPECT_EQ(state.render.display, good);
 }
 
 // 100 MB: the good scene, then a comment the lexer reads through to an error

@@ -38,16 +38,16 @@ void scene_camera_editor(AppState& state, int selected) {
     Camera& camera = state.doc.scene.cameras[static_cast<std::size_t>(selected)];
     const std::size_t index = static_cast<std::size_t>(selected);
     std::function<void()> command;
-    if (state.camera_name_for != selected || !state.camera_name_editing)
-        state.camera_name_input = camera.name;
-    state.camera_name_for = selected;
-    const bool entered =
-        ImGui::InputText("name", &state.camera_name_input, ImGuiInputTextFlags_EnterReturnsTrue);
-    state.camera_name_editing = ImGui::IsItemActive();
+    if (state.fields.camera_name_for != selected || !state.fields.camera_name_editing)
+        state.fields.camera_name_input = camera.name;
+    state.fields.camera_name_for = selected;
+    const bool entered = ImGui::InputText("name", &state.fields.camera_name_input,
+                                          ImGuiInputTextFlags_EnterReturnsTrue);
+    state.fields.camera_name_editing = ImGui::IsItemActive();
     note_item("name", true);
     tooltip("Type a new name and press Enter to rename the camera (active_camera follows)");
-    if (entered && state.camera_name_input != camera.name)
-        command = [&state, index, name = state.camera_name_input] {
+    if (entered && state.fields.camera_name_input != camera.name)
+        command = [&state, index, name = state.fields.camera_name_input] {
             rename_camera(state, index, name);
         };
     if (edit_properties(camera)) note_scene_changed(state.doc);
@@ -78,21 +78,21 @@ void scene_camera_editor(AppState& state, int selected) {
 void camera_panel(AppState& state) {
     if (!panel_header("Camera", "Camera", true)) return;
     const Scene& scene = state.doc.scene;
-    const int selected = selected_camera(state);
-    const std::string current = state.free_camera_active ? "free camera"
-                                : selected < 0           ? "(none)"
-                                                         : camera_label(scene, selected);
+    const int selected = selected_camera(state.view, state.doc.scene);
+    const std::string current = state.view.free_camera_active ? "free camera"
+                                : selected < 0                ? "(none)"
+                                                              : camera_label(scene, selected);
     if (ImGui::BeginCombo("View", current.c_str())) {
         int chosen = -1;
         bool free = false;
         for (int i = 0; i < static_cast<int>(scene.cameras.size()); ++i)
             if (ImGui::Selectable(camera_label(scene, i).c_str(),
-                                  !state.free_camera_active && i == selected))
+                                  !state.view.free_camera_active && i == selected))
                 chosen = i;
-        if (ImGui::Selectable("free camera", state.free_camera_active)) free = true;
+        if (ImGui::Selectable("free camera", state.view.free_camera_active)) free = true;
         ImGui::EndCombo();
         if (chosen >= 0) select_camera(state, chosen);
-        if (free) use_free_camera(state);
+        if (free) use_free_camera(state.view, state.doc.scene);
     }
     note_item("View", true);
     tooltip(
@@ -104,11 +104,11 @@ void camera_panel(AppState& state) {
         "(Middle drag, Space+drag, Ctrl+wheel: pan and zoom the image.)");
     ImGui::PopStyleColor();
     if (button("Reset to scene camera", "Leave the free camera and show the selected scene camera",
-               state.free_camera_active ? "" : "The view already shows a scene camera")) {
-        reset_free_camera(state);
-        state.free_camera_active = false;
+               state.view.free_camera_active ? "" : "The view already shows a scene camera")) {
+        reset_free_camera(state.view, state.doc.scene);
+        state.view.free_camera_active = false;
     }
-    if (!state.free_camera_active && selected >= 0) {
+    if (!state.view.free_camera_active && selected >= 0) {
         same_line_if_fits("Make active");
         const std::string why = why_not_make_active(scene, selected);
         if (button("Make active",
@@ -120,30 +120,30 @@ void camera_panel(AppState& state) {
         }
     }
     ImGui::SetNextItemWidth(ImGui::GetFontSize() * 10.0f);
-    ImGui::InputText("##name", &state.new_camera_name);
+    ImGui::InputText("##name", &state.fields.new_camera_name);
     note_item("camera name", true);
     tooltip("The name of the camera that Copy to scene adds");
     same_line_if_fits("Copy to scene");
     const std::string why_not_copy =
-        !state.doc.loaded || selected < 0 ? "No scene with a camera is open"
-        : state.new_camera_name.empty()   ? "Type a name for the new camera first"
-                                          : "";
+        !state.doc.loaded || selected < 0      ? "No scene with a camera is open"
+        : state.fields.new_camera_name.empty() ? "Type a name for the new camera first"
+                                               : "";
     if (button("Copy to scene", "Add the current view to the scene as a new camera", why_not_copy))
-        copy_free_camera_to_scene(state, state.new_camera_name);
-    if (state.free_camera_active) {
-        const FreeCamera& free = state.free_camera;
+        copy_free_camera_to_scene(state, state.fields.new_camera_name);
+    if (state.view.free_camera_active) {
+        const FreeCamera& free = state.view.free_camera;
         ImGui::Text("position <%.3g, %.3g, %.3g>", free.position.x, free.position.y,
                     free.position.z);
         ImGui::Text("look_at  <%.3g, %.3g, %.3g>", free.look_at.x, free.look_at.y, free.look_at.z);
     }
-    if (state.free_camera_active) {
-        double fov = state.free_camera.fov;
+    if (state.view.free_camera_active) {
+        double fov = state.view.free_camera.fov;
         if (edit_number("free fov", fov, 0.5f, 1.0, 179.0,
                         [] { return std::string("must be from 1 to 179 degrees"); }))
-            state.free_camera.fov = fov;
+            state.view.free_camera.fov = fov;
         tooltip("The free camera's vertical field of view, in degrees");
     }
-    if (!state.free_camera_active && selected >= 0) scene_camera_editor(state, selected);
+    if (!state.view.free_camera_active && selected >= 0) scene_camera_editor(state, selected);
 }
 
 }  // namespace jt::view

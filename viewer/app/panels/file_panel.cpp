@@ -15,9 +15,9 @@ const ImVec4 warning_colour(1.0f, 0.7f, 0.3f, 1.0f);
 
 // Save scene was refused because the file changed on disk.
 void save_conflict_choice(AppState& state) {
-    if (state.save_conflict.empty() || state.pending_reload) return;
+    if (state.files.save_conflict.empty() || state.files.pending_reload) return;
     ImGui::PushStyleColor(ImGuiCol_Text, warning_colour);
-    ImGui::TextWrapped("Not saved: %s.", state.save_conflict.c_str());
+    ImGui::TextWrapped("Not saved: %s.", state.files.save_conflict.c_str());
     ImGui::PopStyleColor();
     if (button("Reload (choose what to keep)",
                "Read the file again, then choose between its "
@@ -27,19 +27,19 @@ void save_conflict_choice(AppState& state) {
     if (button("Save anyway", "Replace what is on disk with your edited scene"))
         save_scene_anyway(state);
     same_line_if_fits("Cancel##conflict");
-    if (button("Cancel##conflict", "Do not save now")) state.save_conflict.clear();
+    if (button("Cancel##conflict", "Do not save now")) state.files.save_conflict.clear();
 }
 
 // Save scene as would replace an existing file.
 void save_as_choice(AppState& state) {
-    if (state.save_as_conflict.empty()) return;
+    if (state.files.save_as_conflict.empty()) return;
     ImGui::PushStyleColor(ImGuiCol_Text, warning_colour);
-    ImGui::TextWrapped("%s exists.", state.save_as_conflict.c_str());
+    ImGui::TextWrapped("%s exists.", state.files.save_as_conflict.c_str());
     ImGui::PopStyleColor();
     if (button("Replace it", "Write the scene over that file"))
-        save_scene_as(state, state.save_scene_path, /*replace=*/true);
+        save_scene_as(state, state.fields.save_scene_path, /*replace=*/true);
     same_line_if_fits("Cancel##save_as");
-    if (button("Cancel##save_as", "Do not save now")) state.save_as_conflict.clear();
+    if (button("Cancel##save_as", "Do not save now")) state.files.save_as_conflict.clear();
 }
 
 std::string why_not_save(const AppState& state) {
@@ -55,23 +55,23 @@ void file_panel(AppState& state) {
     const float font = ImGui::GetFontSize();
     ImGui::TextWrapped("%s", state.doc.path.empty() ? "(no scene)" : state.doc.path.c_str());
     ImGui::SetNextItemWidth(-font * 4.0f);
-    const bool enter = ImGui::InputTextWithHint("##open", "scene.jts", &state.open_path_input,
-                                                ImGuiInputTextFlags_EnterReturnsTrue);
+    const bool enter = ImGui::InputTextWithHint(
+        "##open", "scene.jts", &state.fields.open_path_input, ImGuiInputTextFlags_EnterReturnsTrue);
     note_item("open path", true);
     tooltip(
         "The path of a .jts file to open (Enter opens it). You can also drop a file on the "
         "window.");
     ImGui::SameLine();
     if ((button("Open", "Open the file named on the left (asks first if you have unsaved edits)",
-                state.open_path_input.empty() ? "Type the path of a .jts file first" : "") ||
+                state.fields.open_path_input.empty() ? "Type the path of a .jts file first" : "") ||
          enter) &&
-        !state.open_path_input.empty())
-        request_open_guarded(state, state.open_path_input);
-    if (!state.recent.paths().empty()) {
+        !state.fields.open_path_input.empty())
+        request_open_guarded(state, state.fields.open_path_input);
+    if (!state.files.recent.paths().empty()) {
         ImGui::SetNextItemWidth(-font * 4.0f);
-        if (ImGui::BeginCombo("Recent", state.recent.paths().front().c_str())) {
+        if (ImGui::BeginCombo("Recent", state.files.recent.paths().front().c_str())) {
             std::string chosen;
-            for (const std::string& path : state.recent.paths())
+            for (const std::string& path : state.files.recent.paths())
                 if (ImGui::Selectable(path.c_str())) chosen = path;
             ImGui::EndCombo();
             if (!chosen.empty()) request_open_guarded(state, chosen);
@@ -89,44 +89,44 @@ void file_panel(AppState& state) {
         save_scene(state);
     same_line_if_fits("Undo");
     if (button("Undo", "Undo the last edit (Ctrl+Z)",
-               state.undo.can_undo() ? "" : "Nothing to undo"))
+               state.history.undo.can_undo() ? "" : "Nothing to undo"))
         undo(state);
     same_line_if_fits("Redo");
     if (button("Redo", "Redo the edit undone last (Ctrl+Shift+Z)",
-               state.undo.can_redo() ? "" : "Nothing to redo"))
+               state.history.undo.can_redo() ? "" : "Nothing to redo"))
         redo(state);
     if (document_is_blank(state.doc) &&
         button("Start a scene",
                "Fill this empty file with an image size, a camera and a light, then add objects "
                "in the Objects panel (Ctrl+Z takes it back)"))
         start_new_scene(state);
-    if (state.loader.busy()) ImGui::TextDisabled("Loading...");
-    if (state.pending_reload)
+    if (state.files.loader.busy()) ImGui::TextDisabled("Loading...");
+    if (state.files.pending_reload)
         ImGui::TextColored(warning_colour, "Choose in the bar above the image: the file changed.");
     save_conflict_choice(state);
     ImGui::SetNextItemWidth(-font * 8.5f);
-    ImGui::InputTextWithHint("##scene_as", "copy.jts", &state.save_scene_path);
+    ImGui::InputTextWithHint("##scene_as", "copy.jts", &state.fields.save_scene_path);
     note_item("save scene path", true);
     tooltip("Where Save scene as writes the edited scene");
     ImGui::SameLine();
     if (button("Save scene as", "Write the edited scene to this file and keep editing that one",
-               !state.doc.loaded               ? "No scene is open"
-               : state.save_scene_path.empty() ? "Type the new file's path first"
-                                               : ""))
-        save_scene_as(state, state.save_scene_path, /*replace=*/false);
+               !state.doc.loaded                      ? "No scene is open"
+               : state.fields.save_scene_path.empty() ? "Type the new file's path first"
+                                                      : ""))
+        save_scene_as(state, state.fields.save_scene_path, /*replace=*/false);
     save_as_choice(state);
     ImGui::SetNextItemWidth(-font * 8.5f);
-    ImGui::InputText("##image", &state.save_image_path);
+    ImGui::InputText("##image", &state.fields.save_image_path);
     note_item("save image path", true);
     tooltip(
         "Where S saves the image, PNG or BMP by the name's ending. An existing file is never "
         "replaced: name-001.png, name-002.png, ... are used instead.");
     ImGui::SameLine();
     if (button("Save image (S)", "Save the image as shown now under the name on the left",
-               state.display.width <= 0        ? "Nothing has rendered yet"
-               : state.save_image_path.empty() ? "Type the image's path first"
-                                               : ""))
-        save_image(state, state.save_image_path);
+               state.render.display.width <= 0        ? "Nothing has rendered yet"
+               : state.fields.save_image_path.empty() ? "Type the image's path first"
+                                                      : ""))
+        save_image(state, state.fields.save_image_path);
 }
 
 }  // namespace jt::view

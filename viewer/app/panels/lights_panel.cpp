@@ -14,9 +14,9 @@ namespace jt::view {
 
 void lights_panel(AppState& state) {
     auto& lights = state.doc.scene.lights;
-    const Selection selection = current_selection(state);
+    const Selection selection = current_selection(state.view, state.doc.scene);
     const int selected = selection.kind == Selection::Kind::light ? selection.index : -1;
-    const bool reveal = state.reveal_selection && selected >= 0;
+    const bool reveal = state.view.reveal_selection && selected >= 0;
     if (reveal) ImGui::SetNextItemOpen(true);
     const std::string title = "Lights (" + std::to_string(lights.size()) + ")###lights";
     if (!panel_header(title.c_str(), "Lights", false)) return;

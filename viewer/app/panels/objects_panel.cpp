@@ -50,9 +50,9 @@ void object_list(AppState& state, const std::vector<int>& shown, int selected) {
     const float row = ImGui::GetTextLineHeightWithSpacing();
     const float height =
         std::min(static_cast<float>(shown.size()), 10.0f) * row + ImGui::GetStyle().WindowPadding.y;
-    if (state.reveal_selection && selected >= 0) scroll_here_if_hidden();  // the sidebar's
+    if (state.view.reveal_selection && selected >= 0) scroll_here_if_hidden();  // the sidebar's
     ImGui::BeginChild("##object_list", ImVec2(0, std::max(height, row)), true);
-    if (state.reveal_selection && selected >= 0) {
+    if (state.view.reveal_selection && selected >= 0) {
         const auto at = std::find(shown.begin(), shown.end(), selected);
         if (at != shown.end())
             ImGui::SetScrollY(static_cast<float>(at - shown.begin()) * row -
@@ -71,7 +71,7 @@ void object_list(AppState& state, const std::vector<int>& shown, int selected) {
             ImGui::SameLine();
             const std::string label = object_name(p, static_cast<std::size_t>(i));
             if (ImGui::Selectable(label.c_str(), i == selected))
-                select(state,
+                select(state.view,
                        i == selected ? Selection{} : Selection{Selection::Kind::primitive, i});
             note_item(label.c_str(), false);
             ImGui::PopID();
@@ -151,15 +151,16 @@ void add_object_menu(AppState& state) {
         ImGui::Separator();
         ImGui::TextDisabled("mesh of a model file (OBJ, PLY, STL, glTF)");
         const bool enter =
-            ImGui::InputTextWithHint("##mesh_file", "models/knot.ply", &state.new_mesh_file,
+            ImGui::InputTextWithHint("##mesh_file", "models/knot.ply", &state.fields.new_mesh_file,
                                      ImGuiInputTextFlags_EnterReturnsTrue);
         note_item("Mesh file", false);
         tooltip("The model's path, relative to the scene's folder");
         ImGui::SameLine();
-        if ((button("Add mesh", "Add a mesh of this file in front of the camera, scaled to fit",
-                    state.new_mesh_file.empty() ? "Type the path of a model file first" : "") ||
+        if ((button(
+                 "Add mesh", "Add a mesh of this file in front of the camera, scaled to fit",
+                 state.fields.new_mesh_file.empty() ? "Type the path of a model file first" : "") ||
              enter) &&
-            !state.new_mesh_file.empty() && add_mesh(state, state.new_mesh_file))
+            !state.fields.new_mesh_file.empty() && add_mesh(state, state.fields.new_mesh_file))
             ImGui::CloseCurrentPopup();
         ImGui::EndPopup();
     }
@@ -169,20 +170,21 @@ void add_object_menu(AppState& state) {
 // references into the scene while it draws.
 void objects_panel(AppState& state) {
     auto& primitives = state.doc.scene.primitives;
-    const Selection selection = current_selection(state);
+    const Selection selection = current_selection(state.view, state.doc.scene);
     const int selected = selection.kind == Selection::Kind::primitive ? selection.index : -1;
     // Empty, it is where a scene starts: open, with the Add object menu.
-    if ((state.reveal_selection && selected >= 0) || (state.doc.loaded && primitives.empty()))
+    if ((state.view.reveal_selection && selected >= 0) || (state.doc.loaded && primitives.empty()))
         ImGui::SetNextItemOpen(true);
     const std::string title = "Objects (" + std::to_string(primitives.size()) + ")###objects";
     if (!panel_header(title.c_str(), "Objects", false)) return;
     add_object_menu(state);
-    ImGui::InputTextWithHint("##filter", "filter, e.g. sphere or plane 2", &state.object_filter);
+    ImGui::InputTextWithHint("##filter", "filter, e.g. sphere or plane 2",
+                             &state.fields.object_filter);
     note_item("Object filter", false);
     tooltip(
         "Lists only the objects whose name holds this text. A click on the image selects "
         "the object under it.");
-    const std::vector<int> shown = filtered(primitives, state.object_filter);
+    const std::vector<int> shown = filtered(primitives, state.fields.object_filter);
     if (primitives.empty())
         ImGui::TextDisabled("No objects yet: Add object puts one in front of the camera");
     else if (shown.empty())

@@ -22,20 +22,21 @@ std::string seconds_text(double seconds) {
 }  // namespace
 
 std::string render_status(const AppState& state) {
-    if (!state.render_note.empty() && !state.started) return state.render_note;
-    if (!state.started) return state.paused ? "paused" : "idle";
-    const RenderProgress p = state.renderer.progress();
-    const int samples = state.started->options.samples;
-    if (p.pass_count == 0) return state.paused ? "paused" : "preparing the scene";
+    if (!state.render.render_note.empty() && !state.render.started) return state.render.render_note;
+    if (!state.render.started) return state.render.paused ? "paused" : "idle";
+    const RenderProgress p = state.render.renderer.progress();
+    const int samples = state.render.started->options.samples;
+    if (p.pass_count == 0) return state.render.paused ? "paused" : "preparing the scene";
     const double mrays = p.seconds > 0 ? static_cast<double>(p.rays) / p.seconds / 1e6 : 0.0;
     char speed[48];
     std::snprintf(speed, sizeof speed, "%.1f Mrays/s", mrays);
-    if (state.paused) {
+    if (state.render.paused) {
         std::string text = "paused at " + pass_label(p, samples);
-        text += state.edit_waiting ? " | edit waiting: Space renders it" : " | Space resumes";
+        text +=
+            state.render.edit_waiting ? " | edit waiting: Space renders it" : " | Space resumes";
         return text;
     }
-    if (render_complete(state))
+    if (render_complete(state.render))
         return "done: " + std::to_string(p.samples_done) +
                (p.samples_done == 1 ? " sample" : " samples") + " in " + seconds_text(p.seconds) +
                " | " + speed;
@@ -47,24 +48,25 @@ std::string render_status(const AppState& state) {
 }
 
 void status_line(AppState& state) {
-    const RenderProgress p = state.renderer.progress();
+    const RenderProgress p = state.render.renderer.progress();
     const std::string status = render_status(state);
     const float font = ImGui::GetFontSize();
-    const float fraction = render_complete(state) ? 1.0f : static_cast<float>(p.fraction);
+    const float fraction = render_complete(state.render) ? 1.0f : static_cast<float>(p.fraction);
     ImGui::ProgressBar(fraction, ImVec2(font * 10.0f, 0));
     ImGui::SameLine();
-    if (state.paused)
+    if (state.render.paused)
         ImGui::TextColored(ImVec4(1.0f, 0.7f, 0.3f, 1.0f), "%s", status.c_str());
     else
         ImGui::TextUnformatted(status.c_str());
-    const std::string error = state.renderer.error();
+    const std::string error = state.render.renderer.error();
     if (!error.empty()) {
         ImGui::SameLine();
         ImGui::TextColored(ImVec4(1, 0.45f, 0.4f, 1), "%s", error.c_str());
     }
-    if (!state.render_note.empty() && state.started) {
+    if (!state.render.render_note.empty() && state.render.started) {
         ImGui::SameLine();
-        ImGui::TextColored(ImVec4(1.0f, 0.7f, 0.3f, 1.0f), "| %s", state.render_note.c_str());
+        ImGui::TextColored(ImVec4(1.0f, 0.7f, 0.3f, 1.0f), "| %s",
+                           state.render.render_note.c_str());
     }
     ImGui::TextDisabled("%s", state.message.c_str());
 }
