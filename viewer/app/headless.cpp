@@ -1,7 +1,8 @@
 #include "app/headless.hpp"
 
+#include "app/gl/gl.hpp"
+
 #include "app/keys.hpp"
-#include "app/screenshot.hpp"
 #include "app/viewer_frame.hpp"
 #include "model/app_actions.hpp"
 #include "model/model_frame.hpp"
@@ -14,6 +15,22 @@
 #include <optional>
 
 namespace jt::view {
+
+namespace {
+
+// What the current GL context drew, rows bottom-up as in Image8.
+Image8 read_framebuffer(int width, int height) {
+    Image8 image(width, height);
+    if (width <= 0 || height <= 0) return image;
+    glFinish();
+    glPixelStorei(GL_PACK_ALIGNMENT, 1);
+    // glReadPixels returns the bottom row first, which is Image8's order.
+    glReadPixels(0, 0, width, height, GL_RGB, GL_UNSIGNED_BYTE, image.rgb.data());
+    glPixelStorei(GL_PACK_ALIGNMENT, 4);
+    return image;
+}
+
+}  // namespace
 
 HeadlessViewer::HeadlessViewer(int width, int height)
     : context_(width, height),

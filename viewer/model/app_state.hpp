@@ -4,6 +4,7 @@
 // app_actions.hpp (what a command does). No GL, no ImGui: the frame code
 // (viewer/app) draws this state and keeps the texture itself.
 
+#include "jtracer/pick.hpp"
 #include "jtracer/region.hpp"
 #include "jtracer/scene_info.hpp"
 #include "model/drag_geometry.hpp"
@@ -15,8 +16,6 @@
 #include "model/render_controller.hpp"
 #include "model/scene_document.hpp"
 #include "model/scene_loader.hpp"
-#include "model/selection.hpp"
-#include "model/shown_frame.hpp"
 #include "model/text_checker.hpp"
 #include "model/undo_stack.hpp"
 #include "model/viewer_settings.hpp"
@@ -31,6 +30,24 @@
 #include <vector>
 
 namespace jt::view {
+
+// What the user has selected: one primitive or one light of the scene, by its
+// index in Scene::primitives or Scene::lights.
+struct Selection {
+    enum class Kind { none, primitive, light };
+    Kind kind = Kind::none;
+    int index = -1;
+    bool operator==(const Selection&) const = default;
+};
+
+// The frame the image on screen is rendered from (prepared scene, camera,
+// size), for picking in it; remade only when the render's prepared scene or
+// view changes (picking.hpp).
+struct ShownFrame {
+    std::shared_ptr<const PreparedScene> scene;
+    int width = 0, height = 0, camera = -1;
+    std::shared_ptr<const PreparedFrame> frame;
+};
 
 struct ViewerConfig {
     std::filesystem::path recent_files;   // empty: remember nothing between runs

@@ -12,7 +12,6 @@
 #include "jtracer/texture.hpp"
 #include "jtracer/transform_edit.hpp"
 #include "jtracer/value_text.hpp"
-#include "model/ui_rounding.hpp"
 
 namespace jt::view {
 

@@ -2,7 +2,6 @@
 
 #include "app/ui_items.hpp"
 #include "jtracer/value_text.hpp"
-#include "model/ui_rounding.hpp"
 
 #include <imgui.h>
 #include <imgui_stdlib.h>
@@ -14,7 +13,7 @@ namespace jt::view {
 
 namespace {
 
-// A float from a widget back to the double it stands for (ui_rounding.hpp).
+// A float from a widget back to the double it stands for (jtracer/value_text.hpp: ui_rounded).
 double from_widget(float f) {
     return ui_rounded(static_cast<double>(f));
 }

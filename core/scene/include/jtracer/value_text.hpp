@@ -23,6 +23,15 @@ std::string number_text(double value);
 double rounded_to_scale(double value, double scale);
 Vec3 rounded_to_scale(const Vec3& value, double scale);
 
+// Values made with the mouse (a dragged widget, an orbited camera) are kept to
+// the precision a person works at, 6 significant digits, so that the file
+// gets 0.3 and -2.23547 rather than 0.30000001192092896 (a float widget's
+// value) or -2.2354736889656803 (an orbit's). Values typed in the file are
+// never rounded: only what a UI made.
+constexpr int kUiDigits = 6;
+double ui_rounded(double value);
+Vec3 ui_rounded(const Vec3& value);
+
 // "<1, 0.5, 0>": three number_texts.
 std::string vector_text(const Vec3& value);
 

@@ -6,6 +6,8 @@
 #include <array>
 #include <charconv>
 #include <cmath>
+#include <cstdio>
+#include <cstdlib>
 
 namespace jt {
 
@@ -28,6 +30,17 @@ double rounded_to_scale(double value, double scale) {
 Vec3 rounded_to_scale(const Vec3& v, double scale) {
     return {rounded_to_scale(v.x, scale), rounded_to_scale(v.y, scale),
             rounded_to_scale(v.z, scale)};
+}
+
+double ui_rounded(double value) {
+    if (!std::isfinite(value)) return value;
+    char text[32];
+    std::snprintf(text, sizeof text, "%.*g", kUiDigits, value);
+    return std::strtod(text, nullptr);
+}
+
+Vec3 ui_rounded(const Vec3& value) {
+    return {ui_rounded(value.x), ui_rounded(value.y), ui_rounded(value.z)};
 }
 
 std::string vector_text(const Vec3& v) {

@@ -1,0 +1,107 @@
+// The panels and editors that are a block's properties, drawn from the
+// schema: render settings, lights, and an object's material and transforms.
+
+#include "app/panels/panels.hpp"
+
+#include "app/panels/property_fields.hpp"
+#include "app/panels/widgets.hpp"
+#include "app/ui_items.hpp"
+#include "model/document_edits.hpp"
+#include "model/picking.hpp"
+
+#include <imgui.h>
+
+#include <functional>
+#include <string>
+
+namespace jt::view {
+
+void settings_panel(AppState& state) {
+    if (!panel_header("Render settings", "Render settings", true)) return;
+    ImGui::BeginDisabled(!state.doc.loaded);
+    RenderSettings& s = state.doc.scene.settings;
+    if (edit_properties(s)) note_scene_changed(state.doc);
+    ImGui::EndDisabled();
+}
+
+void lights_panel(AppState& state) {
+    auto& lights = state.doc.scene.lights;
+    const Selection selection = current_selection(state.view, state.doc.scene);
+    const int selected = selection.kind == Selection::Kind::light ? selection.index : -1;
+    const bool reveal = state.view.reveal_selection && selected >= 0;
+    if (reveal) ImGui::SetNextItemOpen(true);
+    const std::string title = "Lights (" + std::to_string(lights.size()) + ")###lights";
+    if (!panel_header(title.c_str(), "Lights", false)) return;
+    std::function<void()> command;
+    if (button("Add point light", "Add a white light above the camera the view shows"))
+        command = [&state] { add_light(state); };
+    for (std::size_t i = 0; i < lights.size(); ++i) {
+        ImGui::PushID(static_cast<int>(i));
+        const std::string label = "point_light " + std::to_string(i + 1);
+        const bool chosen = static_cast<int>(i) == selected;
+        if (reveal && chosen) ImGui::SetNextItemOpen(true);
+        const bool open =
+            ImGui::TreeNodeEx(label.c_str(), chosen ? ImGuiTreeNodeFlags_Selected : 0);
+        note_item(label.c_str(), false);
+        if (reveal && chosen) scroll_here_if_hidden();
+        if (open) {
+            const BlockRef ref{BlockKind::light, i};
+            if (button("Duplicate", "Add a copy of this light's block right after it"))
+                command = [&state, ref] { duplicate_block(state, ref); };
+            same_line_if_fits("Delete");
+            if (button("Delete", "Remove this light's block from the text (Ctrl+Z brings it back)"))
+                command = [&state, ref] { delete_block(state, ref); };
+            if (edit_properties(lights[i])) note_scene_changed(state.doc);
+            ImGui::TreePop();
+        }
+        ImGui::PopID();
+    }
+    if (command) command();
+}
+
+bool material_editor(Material& m) {
+    bool changed = edit_properties(m);
+    changed = edit_file_name("image_map", m.image_map,
+                             "A PNG, JPEG or BMP file, relative to the scene's folder, mapped "
+                             "onto the object (map_size is one tile); empty: none. Enter "
+                             "applies it.") ||
+              changed;
+    return changed;
+}
+
+std::optional<TransformCommand> transform_editor(std::vector<TransformOp>& transforms,
+                                                 bool& changed) {
+    std::optional<TransformCommand> command;
+    if (transforms.empty()) ImGui::TextDisabled("no transform operations");
+    const std::size_t count = transforms.size();
+    for (std::size_t i = 0; i < count; ++i) {
+        ImGui::PushID(static_cast<int>(i));
+        changed =
+            edit_property(transform_op(transforms[i].kind).property, transforms[i]) || changed;
+        if (button("Up", "Move this operation one place earlier (applied before the one above)",
+                   i == 0 ? "It is already the first" : ""))
+            command = TransformCommand{TransformCommand::Kind::move, i, i - 1, {}};
+        ImGui::SameLine();
+        if (button("Down", "Move this operation one place later",
+                   i + 1 == count ? "It is already the last" : ""))
+            command = TransformCommand{TransformCommand::Kind::move, i, i + 1, {}};
+        ImGui::SameLine();
+        if (button("Remove", "Remove this operation from the transform"))
+            command = TransformCommand{TransformCommand::Kind::remove, i, 0, {}};
+        ImGui::PopID();
+    }
+    if (button("Add operation", "Append an operation to the transform (applied last)"))
+        ImGui::OpenPopup("add operation");
+    if (ImGui::BeginPopup("add operation")) {
+        for (const TransformOpSpec& spec : transform_ops()) {
+            const std::string name(spec.property.name);
+            if (ImGui::MenuItem(name.c_str()))
+                command = TransformCommand{TransformCommand::Kind::add, 0, 0, spec.kind};
+            note_item(name.c_str(), false);
+        }
+        ImGui::EndPopup();
+    }
+    return command;
+}
+
+}  // namespace jt::view

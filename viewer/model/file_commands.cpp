@@ -1,0 +1,376 @@
+#include "model/file_commands.hpp"
+
+#include "model/app_actions.hpp"
+
+#include "jtracer/model_cache.hpp"
+#include "jtracer/texture.hpp"
+#include "jtracer/validate.hpp"
+#include "model/image_files.hpp"
+
+#include <algorithm>
+
+namespace jt::view {
+
+namespace {
+
+void after_scene_replaced(AppState& state, const Scene& before) {
+    keep_camera_selection(state.view, state.doc.scene, before);
+    state.history.undo.clear();
+    state.history.edit_base.reset();
+    state.files.pending_reload.reset();
+    state.files.save_conflict.clear();
+    note_command_edit(state.history, state.doc);
+}
+
+bool has_located(const std::vector<Diagnostic>& diagnostics) {
+    for (const Diagnostic& d : diagnostics)
+        if (d.pos.line > 0) return true;
+    return false;
+}
+
+}  // namespace
+
+namespace {
+
+void finish_open(AppState& state, const std::filesystem::path& path, LoadAttempt attempt) {
+    const bool ok = attempt.ok;
+    const bool first = !state.doc.loaded;
+    const Scene before = state.doc.scene;
+    accept_load(state.doc, path, std::move(attempt));
+    if (ok || first) {
+        state.files.watcher = FileWatcher(state.config.watch_interval);
+        state.files.watcher.watch(path);
+    }
+    if (ok) {
+        state.view.camera_index = std::max(active_camera_index(state.doc.scene), 0);
+        state.view.free_camera_active = false;
+        after_scene_replaced(state, before);
+        state.files.recent.add(path);
+        state.fields.open_path_input = path.string();
+        state.message = "Opened " + path.string();
+    } else if (document_is_blank(state.doc)) {
+        state.message = path.filename().string() +
+                        " is empty: Start a scene in the File panel, or type one in the Text "
+                        "editor (T)";
+    } else if (state.doc.diagnostics_source.empty() && !has_located(state.doc.diagnostics)) {
+        state.message = "Could not open " + path.string() + ": see Diagnostics";
+    } else {
+        state.message = path.filename().string() + " has errors: see Diagnostics" +
+                        (state.doc.loaded && !first ? " (still showing the last good scene)" : "");
+    }
+}
+
+// The open file, read again, has errors: with no unsaved edits the text
+// editor shows it with its errors (accept_broken_file); the last good scene
+// and image stay.
+void show_broken_file(AppState& state, LoadAttempt attempt) {
+    accept_broken_file(state.doc, std::move(attempt));
+    // The scene is not replaced (no new revision, no render); the history
+    // was of the text before.
+    state.history.undo.clear();
+    state.history.edit_base.reset();
+    state.files.pending_reload.reset();
+    state.files.save_conflict.clear();
+    state.history.typing = false;
+    state.check.checker.cancel();
+    state.message = state.doc.path.filename().string() +
+                    (state.doc.loaded ? " has errors: the text editor (T) shows them; the image is "
+                                        "of the last good scene"
+                                      : " has errors");
+}
+
+void finish_reload(AppState& state, LoadAttempt attempt) {
+    const std::string name = state.doc.path.filename().string();
+    if (!attempt.read) {
+        // Nothing to show instead: the viewer's text is all there is now.
+        accept_load(state.doc, state.doc.path, std::move(attempt));
+        state.message = state.doc.file_deleted
+                            ? name +
+                                  " was deleted: the viewer keeps its text; Save scene writes "
+                                  "it again"
+                            : name + " cannot be read: see Diagnostics";
+        return;
+    }
+    if (!attempt.ok && !has_unsaved_edits(state.doc)) {
+        show_broken_file(state, std::move(attempt));
+        return;
+    }
+    if (!has_unsaved_edits(state.doc)) {
+        const Scene before = state.doc.scene;
+        accept_load(state.doc, state.doc.path, std::move(attempt));
+        after_scene_replaced(state, before);
+        state.message = "Reloaded " + name;
+        return;
+    }
+    // Replacing the scene now would throw the edits away: ask first.
+    // The same text again: the only choice is whether to drop the edits, and
+    // the diagnostics stay those of the edited scene.
+    const bool unchanged = attempt.text == state.doc.disk_text;
+    state.files.reapply_problem.clear();
+    if (!unchanged) {
+        if (const Expected<Scene> reapplied = reapply_edits(state.doc, attempt); !reapplied)
+            state.files.reapply_problem = reapplied.error().message;
+        state.doc.load_failed = !attempt.ok;
+        state.doc.diagnostics = attempt.diagnostics;
+        state.doc.diagnostics_source = attempt.text;
+    }
+    const bool broken = !attempt.ok;
+    state.files.pending_reload = std::move(attempt);
+    state.message = unchanged
+                        ? name +
+                              " is unchanged on disk; reloading it would drop your "
+                              "unsaved edits: choose in the bar above the image"
+                        : name + " changed on disk" + (broken ? " (it has errors)" : "") +
+                              " while you have unsaved edits: choose in the bar above the image";
+}
+
+}  // namespace
+
+void open_scene(AppState& state, const std::filesystem::path& path) {
+    request_open(state, path);
+    state.files.loader.wait();
+    take_finished_load(state);
+}
+
+void request_open(AppState& state, const std::filesystem::path& path) {
+    state.files.loader.request(path, LoadPurpose::open);
+    state.message = "Opening " + path.string();
+}
+
+void reload_scene(AppState& state) {
+    if (state.doc.path.empty()) return;
+    state.files.loader.request(state.doc.path, LoadPurpose::reload);
+}
+
+namespace {
+
+// After a model or image file changed (or is to be read again): the scene's
+// diagnostics are checked and its render started again, so that a file that
+// no longer loads is reported where the scene names it and keeps the last
+// image (update_render), and one that loads is shown.
+void files_changed(AppState& state, bool models) {
+    if (models) {
+        state.render.renderer.forget_prepared();
+        state.view.mesh_figures.reset();
+    }
+    state.check.checked_revision.reset();
+    state.render.rejected.reset();
+    state.render.started.reset();
+}
+
+bool assets_changed(AppState& state) {
+    if (!state.files.asset_watcher.due()) return false;
+    const NamedFiles files = named_files(state.doc.scene);
+    std::vector<std::filesystem::path> watched = files.models;
+    watched.insert(watched.end(), files.images.begin(), files.images.end());
+    state.files.asset_watcher.watch(watched);
+    const std::vector<std::filesystem::path> changed = state.files.asset_watcher.poll();
+    if (changed.empty()) return false;
+    bool models = false;
+    for (const std::filesystem::path& file : changed)
+        if (std::find(files.models.begin(), files.models.end(), file) != files.models.end()) {
+            forget_model(file);
+            models = true;
+        }
+    files_changed(state, models);
+    state.message = changed.front().filename().string() +
+                    (changed.size() > 1 ? " and other files" : "") +
+                    " changed on disk: rendering again";
+    return true;
+}
+
+}  // namespace
+
+bool reload_if_changed(AppState& state) {
+    const bool assets = state.doc.loaded && assets_changed(state);
+    if (!state.files.watcher.poll()) return assets;
+    reload_scene(state);
+    return true;
+}
+
+void reload_model(AppState& state, std::size_t primitive) {
+    const auto& primitives = state.doc.scene.primitives;
+    const Mesh* mesh =
+        primitive < primitives.size() ? std::get_if<Mesh>(&primitives[primitive].shape) : nullptr;
+    if (!mesh) return;
+    forget_model(asset_path(state.doc.scene, mesh->file));
+    files_changed(state, true);
+    state.message = "Reading " + mesh->file + " again";
+}
+
+bool take_finished_load(AppState& state) {
+    std::optional<FinishedLoad> done = state.files.loader.take();
+    if (!done) return false;
+    state.files.last_load_times = done->attempt.times;
+    // A reload of a file that is no longer the open one is stale.
+    if (done->purpose == LoadPurpose::reload && done->path != state.doc.path) return true;
+    if (done->purpose == LoadPurpose::open)
+        finish_open(state, done->path, std::move(done->attempt));
+    else
+        finish_reload(state, std::move(done->attempt));
+    return true;
+}
+
+void resolve_reload(AppState& state, ReloadChoice choice) {
+    if (!state.files.pending_reload) return;
+    const std::string name = state.doc.path.filename().string();
+    if (choice == ReloadChoice::keep_edits) {
+        state.files.pending_reload.reset();
+        state.message = "Kept your edits; " + name +
+                        " on disk differs, so Save scene will ask before overwriting it";
+        return;
+    }
+    std::optional<Scene> edited;
+    if (choice == ReloadChoice::reapply_edits) {
+        Expected<Scene> reapplied = reapply_edits(state.doc, *state.files.pending_reload);
+        if (!reapplied) {
+            state.message = "Edits not re-applied: " + reapplied.error().message;
+            return;
+        }
+        edited = std::move(*reapplied);
+    }
+    LoadAttempt newer = std::move(*state.files.pending_reload);
+    if (!newer.ok) {
+        show_broken_file(state, std::move(newer));
+        state.message = "Reloaded " + name + " (it has errors); your edits were dropped";
+        return;
+    }
+    const Scene before = state.doc.scene;
+    accept_load(state.doc, state.doc.path, std::move(newer));
+    after_scene_replaced(state, before);
+    if (edited) {
+        state.doc.scene = std::move(*edited);
+        note_command_edit(state.history, state.doc);
+        keep_camera_selection(state.view, state.doc.scene, before);
+        // One undo shows the file as it is.
+        state.history.undo.record({state.doc.text, state.doc.original, std::nullopt});
+        state.message = "Reloaded " + name + " and re-applied your edits (not saved yet)";
+    } else {
+        state.message = "Reloaded " + name + "; your edits were dropped";
+    }
+}
+
+namespace {
+
+bool save_now(AppState& state) {
+    if (const Expected<void> saved = save_scene_in_place(state.doc); !saved) {
+        state.message = "Scene not saved: " + saved.error().message;
+        return false;
+    }
+    state.files.watcher.acknowledge();     // our own write is not an outside change
+    state.check.checked_revision.reset();  // the diagnostics now describe the new text
+    state.files.save_conflict.clear();
+    state.files.pending_reload.reset();
+    state.message = "Saved " + state.doc.path.string();
+    return true;
+}
+
+}  // namespace
+
+bool save_scene(AppState& state) {
+    std::string what;
+    if (state.doc.loaded && file_changed_on_disk(state.doc, what)) {
+        state.files.save_conflict = state.doc.path.filename().string() + " " + what +
+                                    " since it was loaded; saving would replace that";
+        state.message = "Scene not saved: " + state.files.save_conflict;
+        return false;
+    }
+    return save_now(state);
+}
+
+bool save_scene_anyway(AppState& state) {
+    return save_now(state);
+}
+
+bool save_image(AppState& state, const std::filesystem::path& path) {
+    const Expected<std::filesystem::path> written =
+        jt::view::save_image_numbered(path, state.render.display);
+    if (!written) {
+        state.message = "Image not saved: " + written.error().message;
+        return false;
+    }
+    state.message = "Saved image " + written->string();
+    if (*written != path) state.message += " (" + path.filename().string() + " exists)";
+    return true;
+}
+
+bool save_image_numbered(AppState& state) {
+    return save_image(state, state.fields.save_image_path);
+}
+
+bool save_scene_as(AppState& state, const std::filesystem::path& path, bool replace) {
+    state.files.save_as_conflict.clear();
+    if (!state.doc.loaded) {
+        state.message = "Scene not saved: no scene is open";
+        return false;
+    }
+    std::error_code ec;
+    if (!replace && std::filesystem::exists(path, ec)) {
+        state.files.save_as_conflict = path.string();
+        state.message = "Scene not saved: " + path.string() + " exists";
+        return false;
+    }
+    if (const Expected<void> saved = save_scene_copy(state.doc, path); !saved) {
+        state.message = "Scene not saved: " + saved.error().message;
+        return false;
+    }
+    state.files.watcher = FileWatcher(state.config.watch_interval);
+    state.files.watcher.watch(path);
+    state.check.checked_revision.reset();
+    state.files.save_conflict.clear();
+    state.files.pending_reload.reset();
+    state.files.recent.add(path);
+    state.fields.open_path_input = path.string();
+    state.message = "Saved " + path.string();
+    return true;
+}
+
+namespace {
+
+void run_guarded(AppState& state, const GuardedCommand& command) {
+    if (command.kind == GuardedCommand::Kind::quit)
+        state.quit = true;
+    else
+        request_open(state, command.path);
+}
+
+void guard(AppState& state, GuardedCommand command) {
+    if (!has_unsaved_edits(state.doc)) {
+        run_guarded(state, command);
+        return;
+    }
+    state.files.unsaved_prompt = std::move(command);
+    state.message = "Unsaved edits: save them, discard them or cancel";
+}
+
+}  // namespace
+
+void request_quit(AppState& state) {
+    guard(state, {GuardedCommand::Kind::quit, {}});
+}
+
+void request_open_guarded(AppState& state, const std::filesystem::path& path) {
+    guard(state, {GuardedCommand::Kind::open, path});
+}
+
+void resolve_unsaved(AppState& state, UnsavedChoice choice) {
+    if (!state.files.unsaved_prompt) return;
+    const GuardedCommand command = std::move(*state.files.unsaved_prompt);
+    state.files.unsaved_prompt.reset();
+    if (choice == UnsavedChoice::cancel) {
+        state.message = "Cancelled: your edits are still here";
+        return;
+    }
+    if (choice == UnsavedChoice::save && !save_scene(state)) return;  // the message says why
+    run_guarded(state, command);
+}
+
+void remember_settings(ViewState& view, const ViewerConfig& config) {
+    ViewerSettings now = view.saved_settings;
+    now.panel_width = std::clamp(view.sidebar_width, kLeastPanelWidth, kMostPanelWidth);
+    if (now == view.saved_settings || config.settings_file.empty()) return;
+    view.saved_settings = now;
+    static_cast<void>(write_viewer_settings(config.settings_file, now));
+}
+
+}  // namespace jt::view

@@ -1,0 +1,183 @@
+#include "model/render_commands.hpp"
+
+#include "model/app_actions.hpp"
+
+#include "jtracer/limits.hpp"
+#include "jtracer/validate.hpp"
+#include "model/render_region.hpp"
+
+#include <algorithm>
+#include <chrono>
+#include <cstdio>
+#include <cstdlib>
+#include <utility>
+
+namespace jt::view {
+
+void toggle_pause(AppState& state) {
+    state.render.paused = !state.render.paused;
+    if (state.render.paused) {
+        state.render.renderer.pause();
+        state.message = "Paused";
+        return;
+    }
+    state.message = "Rendering";
+    // Continue the paused render when it still answers what should be shown;
+    // otherwise (edited while paused) update_render starts a new one.
+    std::string note;
+    const std::optional<RenderRequest> request = render_request(state, note);
+    if (!state.render.started || request != state.render.started || !state.render.renderer.resume())
+        state.render.started.reset();
+}
+
+std::optional<RenderRequest> render_request(const AppState& state, std::string& note) {
+    note.clear();
+    if (!state.doc.loaded) {
+        note = "No scene loaded";
+        return std::nullopt;
+    }
+    const Scene& scene = state.doc.scene;
+    if (scene.cameras.empty()) {
+        note = "The scene has no camera";
+        return std::nullopt;
+    }
+    RenderRequest request;
+    request.scene_revision = state.doc.revision;
+    request.primitive_count = scene.primitives.size();
+    request.options.camera = selected_camera(state.view, state.doc.scene);
+    if (state.view.free_camera_active) {
+        request.free_camera = state.view.free_camera;
+        request.options.camera = static_cast<int>(scene.cameras.size());
+    }
+    const RenderSettings& settings = scene.settings;
+    request.options.width = settings.width;
+    request.options.height = settings.height;
+    if (settings.width <= 0 || settings.height <= 0) {
+        note = "width/height are not set: previewing at 640x480";
+        request.options.width = 640;
+        request.options.height = 480;
+    }
+    if (static_cast<long long>(request.options.width) * request.options.height >
+        state.config.max_pixels) {
+        note = "The image is too large to preview (" + std::to_string(request.options.width) + "x" +
+               std::to_string(request.options.height) + ")";
+        return std::nullopt;
+    }
+    request.options.samples = std::clamp(settings.samples, kMinSamples, kMaxSamples);
+    request.options.threads = state.config.render_threads;
+    request.options.previews = true;
+    request.options.region =
+        render_region_rect(state.view, request.options.width, request.options.height);
+    // The frames come first: a frame drawn late is a late picture however fast
+    // the render is (and with a software GL the frame needs a core too).
+    request.options.background = state.config.render_in_background;
+    return request;
+}
+
+Scene scene_to_render(const SceneDocument& doc, const RenderRequest& request) {
+    Scene scene = doc.scene;
+    if (request.free_camera) scene.cameras.push_back(camera_from(*request.free_camera, "viewer"));
+    return scene;
+}
+
+namespace {
+
+// The first error validation finds in what a render would show, or empty. An
+// edit can make the scene invalid (a zero plane normal, say).
+std::string validation_error(const Scene& scene) {
+    for (const Diagnostic& d : validate_scene(scene, SceneSource{}))
+        if (d.severity == Severity::error) return d.message;
+    return {};
+}
+
+// Waits, at most config.first_pass_wait, for the render just started to finish
+// its first pass (the render's wakeup ends the wait at once).
+void wait_for_first_pass(AppState& state) {
+    const auto deadline = std::chrono::steady_clock::now() + state.config.first_pass_wait;
+    for (;;) {
+        const std::uint64_t seen = state.wakeup.count();
+        if (state.render.renderer.passes_since_start() > 0 || !state.render.renderer.active())
+            return;
+        if (!state.wakeup.wait(seen, deadline)) return;
+    }
+}
+
+}  // namespace
+
+void update_render(AppState& state) {
+    if (state.render.paused) {
+        std::string note;
+        state.render.edit_waiting = render_request(state, note) != state.render.started;
+    } else {
+        state.render.edit_waiting = false;
+        std::optional<RenderRequest> request = render_request(state, state.render.render_note);
+        if (request && clear_region_for_new_view(state, *request))
+            request = render_request(state, state.render.render_note);
+        if (request && request == state.render.rejected) {
+            state.render.render_note = state.render.rejected_reason;
+        } else if (request && request != state.render.started) {
+            const Scene scene = scene_to_render(state.doc, *request);
+            if (const std::string error = validation_error(scene); !error.empty()) {
+                // Keep the last image rather than render nonsense; say why.
+                state.render.rejected = std::move(request);
+                state.render.rejected_reason = "Not rendered: " + error;
+                state.render.render_note = state.render.rejected_reason;
+            } else {
+                state.render.rejected.reset();
+                state.render.renderer.start(scene, request->options);
+                state.render.started = std::move(request);
+                state.render.display_complete = false;
+                wait_for_first_pass(state);
+            }
+        }
+    }
+    // Read `finished` and the progress before fetching: a fetch after them has
+    // every pixel they count.
+    const bool finished = state.render.renderer.finished();
+    const RenderProgress progress = state.render.renderer.progress();
+    if (auto changed = state.render.renderer.fetch(state.render.display))
+        state.render.display_changed = holding_both(state.render.display_changed, *changed);
+    state.render.passes_shown = progress.finished ? progress.pass_count : progress.pass;
+    if (finished && state.render.started) state.render.display_complete = true;
+}
+
+std::optional<PixelRect> take_display_changes(RenderState& render) {
+    return std::exchange(render.display_changed, std::nullopt);
+}
+
+std::string pass_label(const RenderProgress& p, int target_samples) {
+    if (p.pass_name.rfind("preview", 0) == 0) return p.pass_name;
+    // The core names its full-resolution passes by the samples they reach.
+    const int reached = std::atoi(p.pass_name.c_str());
+    if (target_samples <= 1 || reached <= 1) return "full resolution";
+    return "sample " + std::to_string(reached) + " of " + std::to_string(target_samples);
+}
+
+std::string render_title_status(const RenderState& render) {
+    if (!render.started) return render.paused ? "paused" : "";
+    const RenderProgress p = render.renderer.progress();
+    char text[96];
+    if (render.paused) return render.edit_waiting ? "paused, edit waiting" : "paused";
+    if (render_complete(render)) {
+        std::snprintf(text, sizeof text, "done, %d sample%s, %.1f s", p.samples_done,
+                      p.samples_done == 1 ? "" : "s", p.seconds);
+        return text;
+    }
+    std::snprintf(text, sizeof text, "%s %d%%",
+                  pass_label(p, render.started->options.samples).c_str(),
+                  static_cast<int>(p.fraction * 100.0));
+    return text;
+}
+
+bool render_complete(const RenderState& render) {
+    return render.started && render.display_complete && !render.paused;
+}
+
+bool waiting_for_workers(const FileState& files, const RenderState& render) {
+    if (files.loader.in_flight()) return true;
+    if (files.loader.busy()) return false;  // a finished load waits to be taken in
+    return render.started && !render.paused && render.renderer.active() &&
+           render.renderer.passes_since_start() == 0;
+}
+
+}  // namespace jt::view

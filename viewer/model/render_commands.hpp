@@ -1,0 +1,46 @@
+#pragma once
+// The render: what should be rendered now (render_request), starting it when
+// that changes, pausing, taking its pixels in, and how its state reads.
+
+#include "model/app_state.hpp"
+
+#include <optional>
+#include <string>
+
+namespace jt::view {
+
+// Pauses the render, or continues it from where it paused.
+void toggle_pause(AppState& state);
+
+// Starts a render when what should be shown changed (and gives its first pass
+// up to config.first_pass_wait to be done), then moves the finished pixels
+// into state.render.display and notes where (state.render.display_changed).
+void update_render(AppState& state);
+// The rectangle of state.render.display changed since the last call, or nothing:
+// what the frame code sends to the texture.
+std::optional<PixelRect> take_display_changes(RenderState& render);
+// The render that update_render would start now, or nothing (with the reason
+// in `note`) when there is nothing to render.
+std::optional<RenderRequest> render_request(const AppState& state, std::string& note);
+// The scene a request renders: the document's, with the free camera added
+// when it renders.
+Scene scene_to_render(const SceneDocument& doc, const RenderRequest& request);
+
+// A pass as a user reads it: "preview 1/8", "full resolution", "sample 4 of 16".
+std::string pass_label(const RenderProgress& progress, int target_samples);
+
+// The render's state for the window title: "preview 1/8 34%", "paused",
+// "paused, edit waiting", "done, 16 samples, 2.1 s"; empty before any render.
+std::string render_title_status(const RenderState& render);
+
+// True once the render of the current scene has rendered every pass.
+bool render_complete(const RenderState& render);
+
+// True while the next frame would show nothing new until a worker reports: a
+// file is loading, or the render just started has no pass done yet. The frame
+// loop then sleeps until state.wakeup (or input) wakes it, so that the picture
+// is taken in as soon as it exists rather than at the next frame tick, and no
+// frame takes cores from the render meanwhile.
+bool waiting_for_workers(const FileState& files, const RenderState& render);
+
+}  // namespace jt::view
