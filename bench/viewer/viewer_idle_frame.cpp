@@ -12,90 +12,26 @@
 // thread's CPU time per frame (median, min, max) and the heap allocations the
 // frame made with operator new (C++ code: ours and the standard library;
 // Mesa's and ImGui's malloc calls are not counted). --where prints the call
-// stack of each allocation of the last frame measured, to find them.
+// stack of each allocation of the last frame measured, to find them
+// (tests/common/counting_new.hpp counts them).
 
 #include "app/headless.hpp"
+#include "common/counting_new.hpp"
 #include "model/app_actions.hpp"
 #include "model/model_frame.hpp"
 
 #include <algorithm>
-#include <atomic>
 #include <cmath>
 #include <cstdio>
 #include <cstdlib>
 #include <ctime>
 #include <filesystem>
 #include <fstream>
-#include <new>
 #include <sstream>
 #include <string>
 #include <vector>
 
-#include <execinfo.h>
 #include <unistd.h>
-
-namespace {
-
-// Counts only what the thread that set `counting` allocates: the render and
-// loader threads are idle, but a stray wakeup must not be blamed on the frame.
-thread_local bool counting = false;
-bool print_where = false;
-std::atomic<long long> allocations{0};
-std::atomic<long long> allocated_bytes{0};
-
-void* counted_new(std::size_t size) {
-    if (counting) {
-        allocations.fetch_add(1, std::memory_order_relaxed);
-        allocated_bytes.fetch_add(static_cast<long long>(size), std::memory_order_relaxed);
-        if (print_where) {
-            counting = false;  // backtrace() may allocate
-            void* frames[24];
-            const int n = backtrace(frames, 24);
-            std::fprintf(stderr, "allocation of %zu bytes:\n", size);
-            backtrace_symbols_fd(frames, n, 2);
-            counting = true;
-        }
-    }
-    if (void* p = std::malloc(size ? size : 1)) return p;
-    throw std::bad_alloc();
-}
-
-}  // namespace
-
-void* operator new(std::size_t size) {
-    return counted_new(size);
-}
-void* operator new[](std::size_t size) {
-    return counted_new(size);
-}
-// The nothrow forms too: a library's nothrow new freed by the plain delete
-// below must have come from malloc (AddressSanitizer checks the pairs).
-void* operator new(std::size_t size, const std::nothrow_t&) noexcept {
-    try {
-        return counted_new(size);
-    } catch (const std::bad_alloc&) {
-        return nullptr;
-    }
-}
-void* operator new[](std::size_t size, const std::nothrow_t&) noexcept {
-    try {
-        return counted_new(size);
-    } catch (const std::bad_alloc&) {
-        return nullptr;
-    }
-}
-void operator delete(void* p) noexcept {
-    std::free(p);
-}
-void operator delete[](void* p) noexcept {
-    std::free(p);
-}
-void operator delete(void* p, std::size_t) noexcept {
-    std::free(p);
-}
-void operator delete[](void* p, std::size_t) noexcept {
-    std::free(p);
-}
 
 namespace {
 
@@ -138,16 +74,12 @@ template <typename Frame>
 FrameCost measure(int frames, Frame&& frame, bool where) {
     FrameCost cost;
     for (int i = 0; i < frames; ++i) {
-        print_where = where && i + 1 == frames;
-        const long long a0 = allocations.load(), b0 = allocated_bytes.load();
         const double t0 = thread_cpu_ms();
-        counting = true;
-        frame();
-        counting = false;
-        print_where = false;
+        const jt::test::Allocated allocated =
+            jt::test::allocated_by(frame, where && i + 1 == frames);
         cost.cpu_ms.push_back(thread_cpu_ms() - t0);
-        cost.allocations.push_back(allocations.load() - a0);
-        cost.bytes.push_back(allocated_bytes.load() - b0);
+        cost.allocations.push_back(allocated.count);
+        cost.bytes.push_back(allocated.bytes);
     }
     return cost;
 }

@@ -268,19 +268,26 @@ TEST(ImageMap, APlaneShowsItsTexelsFoundBesideTheScene) {
     fs::remove_all(dir);
 }
 
+// check_scene's finding on a plane_scene whose map cannot be read: one error,
+// at the opening quote of the image map's name.
+Diagnostic map_error(const LoadedScene& loaded) {
+    const std::vector<Diagnostic> found = check_scene(loaded);
+    EXPECT_EQ(found.size(), 1u);
+    if (found.empty()) return {};
+    EXPECT_EQ(found[0].severity, Severity::error);
+    EXPECT_EQ(found[0].pos.line, 4);
+    EXPECT_EQ(found[0].pos.column, 16);
+    return found[0];
+}
+
 TEST(ImageMap, AMissingImageIsALocatedError) {
     const fs::path dir = scratch_dir("missing");
     std::ofstream(dir / "scene.jts") << plane_scene("nowhere.png", 0, 0);
     Expected<LoadedScene> loaded = load_scene_file(dir / "scene.jts");
     ASSERT_TRUE(loaded);
-    const std::vector<Diagnostic> found = check_scene(*loaded);
-    ASSERT_EQ(found.size(), 1u);
-    EXPECT_EQ(found[0].severity, Severity::error);
-    EXPECT_EQ(found[0].pos.line, 4);
-    EXPECT_EQ(found[0].pos.column, 16);  // the opening quote of the name
-    EXPECT_NE(found[0].message.find("image_map: cannot read"), std::string::npos)
-        << found[0].message;
-    EXPECT_NE(found[0].message.find("nowhere.png"), std::string::npos) << found[0].message;
+    const Diagnostic error = map_error(*loaded);
+    EXPECT_NE(error.message.find("image_map: cannot read"), std::string::npos) << error.message;
+    EXPECT_NE(error.message.find("nowhere.png"), std::string::npos) << error.message;
     // prepare_scene refuses it too, for scenes that skip the checks.
     EXPECT_FALSE(prepare_scene(loaded->parsed.scene));
     fs::remove_all(dir);
@@ -298,16 +305,12 @@ TEST(ImageMap, ATruncatedJpegFailsTheCheckWithTheRendersError) {
     std::ofstream(dir / "scene.jts") << plane_scene("cut.jpg", 0, 0);
     Expected<LoadedScene> loaded = load_scene_file(dir / "scene.jts");
     ASSERT_TRUE(loaded);
-    const std::vector<Diagnostic> found = check_scene(*loaded);
-    ASSERT_EQ(found.size(), 1u);
-    EXPECT_EQ(found[0].severity, Severity::error);
-    EXPECT_EQ(found[0].pos.line, 4);
-    EXPECT_EQ(found[0].pos.column, 16);
+    const Diagnostic error = map_error(*loaded);
     const auto prepared = prepare_scene(loaded->parsed.scene);
     ASSERT_FALSE(prepared);
-    EXPECT_EQ(found[0].message, prepared.error().message);
-    EXPECT_NE(found[0].message.find("cut.jpg': cannot read the JPEG: "), std::string::npos)
-        << found[0].message;
+    EXPECT_EQ(error.message, prepared.error().message);
+    EXPECT_NE(error.message.find("cut.jpg': cannot read the JPEG: "), std::string::npos)
+        << error.message;
     fs::remove_all(dir);
 }
 

@@ -1,9 +1,10 @@
 // A frame with nothing to do (the render finished, no input, no change on
 // disk) must cost nothing that grows with the scene: Dear ImGui's rule is that
 // an idle frame allocates nothing. This executable counts the main thread's
-// operator new calls, so it has one of its own.
+// operator new calls (common/counting_new.hpp), so it has one of its own.
 
 #include "app/headless.hpp"
+#include "common/counting_new.hpp"
 #include "common/scratch_dir.hpp"
 #include "model/app_actions.hpp"
 #include "model/model_frame.hpp"
@@ -11,78 +12,14 @@
 
 #include <gtest/gtest.h>
 
-#include <cstdlib>
 #include <fstream>
-#include <new>
 #include <sstream>
-
-namespace {
-
-thread_local bool counting = false;
-long long allocations = 0;
-long long allocated_bytes = 0;
-
-void* counted_new(std::size_t size) {
-    if (counting) {
-        ++allocations;
-        allocated_bytes += static_cast<long long>(size);
-    }
-    if (void* p = std::malloc(size ? size : 1)) return p;
-    throw std::bad_alloc();
-}
-
-}  // namespace
-
-void* operator new(std::size_t size) {
-    return counted_new(size);
-}
-void* operator new[](std::size_t size) {
-    return counted_new(size);
-}
-// The nothrow forms too: a library's nothrow new freed by the plain delete
-// below must have come from malloc (AddressSanitizer checks the pairs).
-void* operator new(std::size_t size, const std::nothrow_t&) noexcept {
-    try {
-        return counted_new(size);
-    } catch (const std::bad_alloc&) {
-        return nullptr;
-    }
-}
-void* operator new[](std::size_t size, const std::nothrow_t&) noexcept {
-    try {
-        return counted_new(size);
-    } catch (const std::bad_alloc&) {
-        return nullptr;
-    }
-}
-void operator delete(void* p) noexcept {
-    std::free(p);
-}
-void operator delete[](void* p) noexcept {
-    std::free(p);
-}
-void operator delete(void* p, std::size_t) noexcept {
-    std::free(p);
-}
-void operator delete[](void* p, std::size_t) noexcept {
-    std::free(p);
-}
 
 namespace jt::view {
 namespace {
 
-struct Allocated {
-    long long count = 0, bytes = 0;
-};
-
-template <typename Frame>
-Allocated allocated_by(Frame&& frame) {
-    const long long count = allocations, bytes = allocated_bytes;
-    counting = true;
-    frame();
-    counting = false;
-    return {allocations - count, allocated_bytes - bytes};
-}
+using jt::test::Allocated;
+using jt::test::allocated_by;
 
 // Enough objects that a copy of the scene (about 40 MB for 100,000) stands
 // out from anything a frame of the panels needs.

@@ -90,10 +90,22 @@ void restore_version(SceneDocument& doc, const DocumentVersion& version) {
     note_scene_changed(doc);
 }
 
+namespace {
+
+// The text the editor shows when it is held as it is (a draft, the file's own
+// text, the base text with no edit); null when the edits must be written into
+// the base text first.
+const std::string* held_text(const SceneDocument& doc) {
+    if (doc.draft) return &*doc.draft;
+    if (!doc.loaded) return &doc.disk_text;
+    if (!scene_edited(doc)) return &doc.text;
+    return nullptr;
+}
+
+}  // namespace
+
 std::string document_text(const SceneDocument& doc) {
-    if (doc.draft) return *doc.draft;
-    if (!doc.loaded) return doc.disk_text;
-    if (!scene_edited(doc)) return doc.text;
+    if (const std::string* held = held_text(doc)) return *held;
     SourceEditResult edit = apply_scene_edits(doc.text, doc.source, doc.original, doc.scene);
     return edit.ok() ? std::move(edit.text) : doc.text;
 }
@@ -206,10 +218,9 @@ Expected<void> save_scene_copy(SceneDocument& doc, const std::filesystem::path& 
 bool document_is_blank(const SceneDocument& doc) {
     if (doc.path.empty() || doc.file_unread) return false;
     constexpr const char* blank = " \t\r\n";
-    // Asked every frame: the text is looked at where it is, not copied.
-    if (doc.draft) return doc.draft->find_first_not_of(blank) == std::string::npos;
-    if (!doc.loaded) return doc.disk_text.find_first_not_of(blank) == std::string::npos;
-    if (!scene_edited(doc)) return doc.text.find_first_not_of(blank) == std::string::npos;
+    // Asked every frame: a held text is looked at where it is, not copied.
+    if (const std::string* held = held_text(doc))
+        return held->find_first_not_of(blank) == std::string::npos;
     return document_text(doc).find_first_not_of(blank) == std::string::npos;
 }
 
