@@ -108,9 +108,12 @@ std::string figure_vector(const Vec3& v) {
     return text;
 }
 
-// A line of text, recorded under itself so that the tests can find it.
+// A line of text, recorded under itself so that the tests can find it;
+// wrapped at the panel's edge (a box's two corners need more than its width).
 void figure_line(const std::string& text) {
+    ImGui::PushTextWrapPos(0.0f);
     ImGui::TextUnformatted(text.c_str());
+    ImGui::PopTextWrapPos();
     note_item(text.c_str(), false);
 }
 
