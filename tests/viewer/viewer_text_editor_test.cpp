@@ -240,6 +240,40 @@ TEST_F(ViewerTextEditor, TheViewFollowsTheCursorSidewaysAndLongErrorsWrap) {
     EXPECT_LE(item->rect.x1, window->rect.x1);
 }
 
+// Issue 27 item 18: while the text was being edited (after every keystroke,
+// until its check a quarter second later, and as long as it has errors) a
+// two-line note stood above the Camera panel: the sidebar under the mouse
+// moved 38 pixels down and back, and a click meant for a field hit another.
+TEST_F(ViewerTextEditor, TypingInTheTextKeepsThePanelsWhereTheyWere) {
+    const UiItem* view = find_item(viewer.ui_items(), "View");
+    ASSERT_NE(view, nullptr) << "the Camera panel's camera choice";
+    const float before = view->rect.y0;
+    put_cursor(3, 13);  // "    width: 6|4;"
+    std::vector<KeyEvent> events;
+    type(events, "x");  // an error: the draft stays until it is mended
+    viewer.key_events(state, events, 40.0, 16.0);
+    state.check.checker.wait();
+    viewer.frame(state);
+    viewer.frame(state);
+    ASSERT_TRUE(state.doc.draft.has_value());
+    view = find_item(viewer.ui_items(), "View");
+    ASSERT_NE(view, nullptr);
+    EXPECT_EQ(view->rect.y0, before) << "while the text has errors";
+    EXPECT_FALSE(view->enabled) << "the panels are read-only";
+
+    events.clear();
+    tap(events, keys::backspace);
+    viewer.key_events(state, events, 40.0, 16.0);
+    state.check.checker.wait();
+    viewer.frame(state);
+    viewer.frame(state);
+    ASSERT_FALSE(state.doc.draft.has_value()) << state.message;
+    view = find_item(viewer.ui_items(), "View");
+    ASSERT_NE(view, nullptr);
+    EXPECT_EQ(view->rect.y0, before) << "once it parses";
+    EXPECT_TRUE(view->enabled);
+}
+
 // A deleted file says so, and the editor keeps the viewer's text.
 TEST_F(ViewerTextEditor, ADeletedFileSaysItWasDeletedAndKeepsTheText) {
     fs::remove(file);

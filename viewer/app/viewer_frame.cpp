@@ -45,15 +45,18 @@ float sidebar(AppState& state, FrameState& frame, float window_width, float heig
     ImGui::Checkbox("Text editor", &frame.text_editor.open);
     note_item("Text editor", true);
     tooltip("The scene's text beside the image (T): typing re-renders once it parses");
-    file_panel(state);
-    // A draft with errors is the document now: the panels show the last good
-    // scene, and edits to it would be lost when the draft parses.
+    // A draft (typed text not yet checked, or with errors) is the document
+    // now: the panels show the last good scene, and edits to it would be lost
+    // when the draft parses. The note shares the checkbox's line: a line of
+    // its own, there after every keystroke, moved the panels under the mouse.
     const bool draft = state.doc.draft.has_value();
     if (draft) {
-        ImGui::TextColored(ImVec4(1.0f, 0.45f, 0.4f, 1.0f), "The text is being edited:");
-        ImGui::TextWrapped("the panels are read-only until it parses.");
-        ImGui::BeginDisabled();
+        ImGui::SameLine();
+        ImGui::TextColored(ImVec4(1.0f, 0.45f, 0.4f, 1.0f), "panels read-only");
+        tooltip("The text is being edited: the panels are read-only until it parses");
     }
+    file_panel(state);
+    if (draft) ImGui::BeginDisabled();
     camera_panel(state);
     settings_panel(state);
     objects_panel(state);
