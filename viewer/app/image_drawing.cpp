@@ -138,14 +138,10 @@ void draw_regions(const AppState& state, ImDrawList* draw_list, const ImagePlace
             draw_region(draw_list, image, *region, IM_COL32(255, 255, 255, 255));
 }
 
-void image_toolbar(AppState& state, const FrameState& frame, const ImagePlace& image) {
-    const float pad = ImGui::GetStyle().WindowPadding.x;
-    ImGui::SetNextWindowPos(ImVec2(image.area.x0 + pad, image.area.y0 + pad));
-    ImGui::SetNextWindowBgAlpha(0.75f);
-    ImGui::Begin("##image_view", nullptr,
-                 ImGuiWindowFlags_NoDecoration | ImGuiWindowFlags_NoMove |
-                     ImGuiWindowFlags_NoSavedSettings | ImGuiWindowFlags_AlwaysAutoResize |
-                     ImGuiWindowFlags_NoFocusOnAppearing);
+namespace {
+
+// Fit, 1:1, zoom out and in, and the zoom shown.
+void zoom_controls(AppState& state, const ImagePlace& image) {
     if (button("Fit", "The whole image, as large as it fits (F)"))
         state.view.image_view = ImageView{};
     ImGui::SameLine();
@@ -161,20 +157,48 @@ void image_toolbar(AppState& state, const FrameState& frame, const ImagePlace& i
     const float zoom = shown_zoom(image.width, image.height, image.area, image.framebuffer_scale,
                                   state.view.image_view);
     ImGui::Text("%.0f%%", zoom * 100.0f);
-    ImGui::SameLine();
-    // In a small image area the toolbar keeps to one short row, the rest in a
-    // menu: it covered a third of the image at 700x450 on a 2x screen.
-    if (image.area.width() < ImGui::GetFontSize() * 28.0f) {
-        if (button("More", "Render region and A/B compare")) ImGui::OpenPopup("##view_more");
-        if (ImGui::BeginPopup("##view_more")) {
-            region_and_compare(state, frame);
-            ImGui::EndPopup();
-        }
+}
+
+// Image areas narrower than these (in font sizes) get a shorter toolbar: at
+// 700x450 on a 2x screen the whole row covered a third of the image, and in
+// the smallest window at Xft.dpi 192 even the zoom row ran past its edge.
+constexpr float kFullToolbarWidth = 28.0f;
+constexpr float kZoomRowWidth = 17.0f;
+
+}  // namespace
+
+void image_toolbar(AppState& state, const FrameState& frame, const ImagePlace& image) {
+    const float pad = ImGui::GetStyle().WindowPadding.x;
+    ImGui::SetNextWindowPos(ImVec2(image.area.x0 + pad, image.area.y0 + pad));
+    ImGui::SetNextWindowBgAlpha(0.75f);
+    ImGui::Begin("##image_view", nullptr,
+                 ImGuiWindowFlags_NoDecoration | ImGuiWindowFlags_NoMove |
+                     ImGuiWindowFlags_NoSavedSettings | ImGuiWindowFlags_AlwaysAutoResize |
+                     ImGuiWindowFlags_NoFocusOnAppearing);
+    const float width = image.area.width() / ImGui::GetFontSize();
+    if (width < kZoomRowWidth) {
+        if (button("Image", "Fit and zoom, render region and A/B compare"))
+            ImGui::OpenPopup("##view_more");
     } else {
+        zoom_controls(state, image);
+        ImGui::SameLine();
+        if (width >= kFullToolbarWidth)
+            region_and_compare(state, frame);
+        else if (button("More", "Render region and A/B compare"))
+            ImGui::OpenPopup("##view_more");
+    }
+    if (ImGui::BeginPopup("##view_more")) {
+        if (width < kZoomRowWidth) zoom_controls(state, image);
         region_and_compare(state, frame);
+        ImGui::EndPopup();
     }
     note_window("image toolbar");
     ImGui::End();
+}
+
+bool inspector_box_fits(const std::string& text, const ScreenRect& area) {
+    const float pad = ImGui::GetStyle().WindowPadding.x;
+    return ImGui::CalcTextSize(text.c_str()).x + pad * 4.0f <= area.width();
 }
 
 void inspect_hovered_pixel(AppState& state, const ImagePlace& image) {
@@ -192,6 +216,7 @@ void inspect_hovered_pixel(AppState& state, const ImagePlace& image) {
         inspect_pixel(state, static_cast<int>(at->x), static_cast<int>(at->y));
     if (!report) return;
     state.view.inspected = describe(*report, state.doc.scene);
+    if (!inspector_box_fits(state.view.inspected, image.area)) return;
     // In the image's bottom corner away from the mouse: a box at the mouse sat
     // on the object just picked and hid its outline.
     const float pad = ImGui::GetStyle().WindowPadding.x;

@@ -77,13 +77,14 @@ float status_height() {
            style.WindowPadding.y * 2.0f;
 }
 
-void status_window(AppState& state, float y, float width) {
+// `inspected`: the pixel inspector's text when its box does not fit the image.
+void status_window(AppState& state, float y, float width, const std::string& inspected) {
     ImGui::SetNextWindowPos(ImVec2(0, y));
     ImGui::SetNextWindowSize(ImVec2(width, status_height()));
     ImGui::Begin(
         "##status", nullptr,
         ImGuiWindowFlags_NoDecoration | ImGuiWindowFlags_NoMove | ImGuiWindowFlags_NoSavedSettings);
-    status_line(state);
+    status_line(state, inspected);
     note_window("status");
     ImGui::End();
 }
@@ -144,7 +145,11 @@ void viewer_frame(AppState& state, FrameState& frame, const FrameInfo& info) {
             text_editor(state, frame.text_editor, area.x1, 0.0f, w, area.y1);
         }
         area.y0 += reload_bar(state, frame.reload_bar, area);
-        status_window(state, h - status_h, w);
+        // The inspector's text from the last frame (inspect_hovered_pixel comes later).
+        const std::string& inspected = state.view.inspected;
+        const bool in_status =
+            !inspected.empty() && !inspector_box_fits(inspected, frame.image_area);
+        status_window(state, h - status_h, w, in_status ? inspected : std::string());
         if (frame.presenter.has_image())
             image_toolbar(state, frame, place_in_area(state, frame, area, info.framebuffer_scale));
         // Once the panel edge is let go: a drag writes the file once, not every frame.

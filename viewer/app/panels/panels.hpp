@@ -5,6 +5,7 @@
 #include "model/app_state.hpp"
 
 #include <optional>
+#include <string>
 
 namespace jt::view {
 
@@ -15,7 +16,9 @@ void objects_panel(AppState& state);  // every primitive: shape, material, trans
 void lights_panel(AppState& state);
 void diagnostics_panel(AppState& state);
 void help_panel();
-void status_line(AppState& state);
+// The render's progress, then the last message, or `inspected` (the pixel
+// inspector's text, when not empty) in its place.
+void status_line(AppState& state, const std::string& inspected = {});
 
 // Parts of objects_panel, one primitive at a time.
 // Each field that changes the scene makes the editor return true (or set

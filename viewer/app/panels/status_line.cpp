@@ -4,6 +4,7 @@
 #include <imgui.h>
 
 #include <cstdio>
+#include <string>
 
 namespace jt::view {
 
@@ -47,7 +48,7 @@ std::string render_status(const AppState& state) {
     return text + " | " + speed;
 }
 
-void status_line(AppState& state) {
+void status_line(AppState& state, const std::string& inspected) {
     const RenderProgress p = state.render.renderer.progress();
     const std::string status = render_status(state);
     const float font = ImGui::GetFontSize();
@@ -68,7 +69,14 @@ void status_line(AppState& state) {
         ImGui::TextColored(ImVec4(1.0f, 0.7f, 0.3f, 1.0f), "| %s",
                            state.render.render_note.c_str());
     }
-    ImGui::TextDisabled("%s", state.message.c_str());
+    if (inspected.empty()) {
+        ImGui::TextDisabled("%s", state.message.c_str());
+        return;
+    }
+    std::string line = inspected;  // its lines side by side
+    for (std::size_t at = line.find('\n'); at != std::string::npos; at = line.find('\n', at))
+        line.replace(at, 1, " | ");
+    ImGui::TextUnformatted(line.c_str());
 }
 
 }  // namespace jt::view
