@@ -33,6 +33,11 @@ py::object to_python(const std::string& value) {
 py::object to_python(const Vec3& value) {
     return py::make_tuple(value.x, value.y, value.z);
 }
+// An unset value (a focus distance that follows look_at, no smooth_angle) is None.
+template <class T>
+py::object to_python(const std::optional<T>& value) {
+    return value ? to_python(*value) : py::none();
+}
 
 // A class whose attributes are the block's schema properties, read-only, with
 // a repr listing them and to_dict().

@@ -255,7 +255,9 @@ void expect_distinct_members() {
         with_member(p, probe, [&](auto& v) {
             using T = std::decay_t<decltype(v)>;
             const bool vector = p.kind == ValueKind::vector || p.kind == ValueKind::colour;
-            const bool is_int = std::is_same_v<T, int>, is_double = std::is_same_v<T, double>,
+            const bool is_int = std::is_same_v<T, int>,
+                       is_double = std::is_same_v<T, double> ||
+                                   std::is_same_v<T, std::optional<double>>,
                        is_vec = std::is_same_v<T, Vec3> || std::is_same_v<T, std::optional<Vec3>>,
                        is_string = std::is_same_v<T, std::string>;
             EXPECT_EQ(is_int, p.kind == ValueKind::whole) << p.name;
@@ -352,12 +354,13 @@ std::string set_sample(const PropertySpec<Block>& spec, Block& block, int i) {
         if constexpr (std::is_same_v<T, int>) {
             v = s.whole[i];
             return std::to_string(v);
-        } else if constexpr (std::is_same_v<T, double>) {
+        } else if constexpr (std::is_same_v<T, double> ||
+                             std::is_same_v<T, std::optional<double>>) {
             // The first two candidates in range and not the default.
             const Block defaults{};
             const double default_value = with_member(spec, defaults, [](const auto& d) {
                 if constexpr (std::is_same_v<std::decay_t<decltype(d)>, double>) return d;
-                return 0.0;
+                return -1.0;  // an unset optional: every candidate differs
             });
             int found = 0;
             bool set = false;
@@ -373,7 +376,8 @@ std::string set_sample(const PropertySpec<Block>& spec, Block& block, int i) {
             }
             EXPECT_TRUE(set) << "no sample in the range of " << spec.name;
             // Sample 0 as a file might write it: a trailing 0 the shortest text has not.
-            return i == 0 ? number_text(v) + "0" : number_text(v);
+            const double written = schema_detail::set_value(v);
+            return i == 0 ? number_text(written) + "0" : number_text(written);
         } else if constexpr (std::is_same_v<T, std::optional<Vec3>>) {
             v = s.colour[i];
             return i == 0 ? s.colour_written : s.colour_edited;
@@ -571,6 +575,8 @@ void check_validated_ranges(const Case<Block>& c) {
             using V = decltype(value);
             if constexpr (std::is_same_v<M, V> ||
                           (std::is_same_v<M, std::optional<Vec3>> && std::is_same_v<V, Vec3>) ||
+                          (std::is_same_v<M, std::optional<double>> &&
+                           std::is_arithmetic_v<V>) ||
                           (std::is_arithmetic_v<M> && std::is_arithmetic_v<V>))
                 member = static_cast<M>(value);
         });

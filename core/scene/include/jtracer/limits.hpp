@@ -13,6 +13,10 @@ inline constexpr int kMaxImageSide = 65535;
 inline constexpr int kMinSamples = 1;
 inline constexpr int kMaxSamples = 1024;
 
+// A soft light's shadow rays per shading point (docs/language.md §14.1).
+inline constexpr int kMinShadowSamples = 1;
+inline constexpr int kMaxShadowSamples = 1024;
+
 // Deeper recurse_depth values are clamped here, with a warning; the tracer
 // keeps one entry per bounce on its stack, so this also bounds that stack.
 inline constexpr int kMaxRecurseDepth = 256;

@@ -35,6 +35,9 @@ struct RenderSettings {
     Colour background{0.0};
     Colour ambient_light{0.0};
     int samples = 1;  // extension: rays per pixel, kMinSamples..kMaxSamples (limits.hpp)
+    // Extension (docs/language.md §14.3): an equirectangular image every ray
+    // that meets nothing returns; "": the background colour.
+    std::string background_map;
 
     bool operator==(const RenderSettings&) const = default;
 };
@@ -46,6 +49,10 @@ struct Camera {
     Vec3 up{0.0, 1.0, 0.0};
     double aspect = 1.0;
     double fov = 45.0;  // vertical, degrees
+    // Extensions (docs/language.md §14.2): a lens of this radius, focused at
+    // this distance along the view direction; unset: |look_at - position|.
+    double aperture = 0.0;
+    std::optional<double> focus_distance;
 
     bool operator==(const Camera&) const = default;
 };
@@ -117,9 +124,17 @@ struct Triangle {
 inline constexpr std::string_view kSmoothShading = "smooth";
 inline constexpr std::string_view kFlatShading = "flat";
 
+inline constexpr std::string_view kSceneMaterials = "scene";
+inline constexpr std::string_view kFileMaterials = "file";
+
 struct Mesh {
     std::string file;  // relative to Scene::asset_folder; required
     std::string shading{kSmoothShading};
+    // Extensions (docs/language.md §14.4, §14.5): corners without a normal in
+    // the file get one from the faces around them within this angle (degrees);
+    // "file" takes each part's colour and texture from the model file.
+    std::optional<double> smooth_angle;
+    std::string materials{kSceneMaterials};
     bool operator==(const Mesh&) const = default;
 };
 
@@ -137,6 +152,10 @@ struct Primitive {
 struct PointLight {
     Vec3 position{0.0};
     Colour intensity{0.0};
+    // Extension (docs/language.md §14.1): a sphere of light of this radius
+    // casting soft shadows, its visibility taken at shadow_samples points.
+    double radius = 0.0;
+    int shadow_samples = 16;
     bool operator==(const PointLight&) const = default;
 };
 

@@ -67,7 +67,7 @@ struct MemberTypes<RenderSettings> {
 };
 template <>
 struct MemberTypes<Camera> {
-    using type = MemberOf<Camera, double, Vec3, std::string>;
+    using type = MemberOf<Camera, double, std::optional<double>, Vec3, std::string>;
 };
 template <>
 struct MemberTypes<Sphere> {
@@ -87,11 +87,11 @@ struct MemberTypes<Triangle> {
 };
 template <>
 struct MemberTypes<Mesh> {
-    using type = MemberOf<Mesh, std::string>;
+    using type = MemberOf<Mesh, std::optional<double>, std::string>;
 };
 template <>
 struct MemberTypes<PointLight> {
-    using type = MemberOf<PointLight, Vec3>;
+    using type = MemberOf<PointLight, int, double, Vec3>;
 };
 template <>
 struct MemberTypes<Material> {
@@ -164,6 +164,14 @@ constexpr PropertySpec<Block> optional_colour(std::string_view name,
     return {name, ValueKind::colour, member,
             ValueRange{.low = 0.0, .high = 1.0, .clamp_low = true, .clamp_high = true}};
 }
+// A number with no default: unset means the feature is off, or takes a value
+// that depends on others (a camera's focus distance).
+template <class Block>
+constexpr PropertySpec<Block> optional_number(std::string_view name,
+                                              std::optional<double> Block::*member,
+                                              ValueRange range = {}, std::string_view unit = {}) {
+    return {name, ValueKind::number, member, range, unit};
+}
 // An extension's property is written only when set, so that a scene that
 // does not use it serialises as manual-only text.
 template <class Block>
@@ -178,9 +186,10 @@ constexpr PropertySpec<Block> string(std::string_view name, std::string Block::*
 }
 
 inline constexpr ValueRange kPositive{.low = 0.0, .low_open = true};
+inline constexpr ValueRange kNonNegative{.low = 0.0};
 inline constexpr ValueRange kImageSide{.low = 0.0, .high = kMaxImageSide};
 
-inline constexpr std::array<PropertySpec<RenderSettings>, 8> kRenderSettings{{
+inline constexpr std::array<PropertySpec<RenderSettings>, 9> kRenderSettings{{
     whole("width", &RenderSettings::width, kImageSide),
     whole("height", &RenderSettings::height, kImageSide),
     whole("recurse_depth", &RenderSettings::recurse_depth,
@@ -192,9 +201,11 @@ inline constexpr std::array<PropertySpec<RenderSettings>, 8> kRenderSettings{{
     // An extension (docs/language.md §9.1): written only when used, so that
     // scenes that do not use it stay manual-only text.
     whole("samples", &RenderSettings::samples, {.low = kMinSamples, .high = kMaxSamples}, true),
+    // Extension (docs/language.md §14.3).
+    string("background_map", &RenderSettings::background_map, {}, true),
 }};
 
-inline constexpr std::array<PropertySpec<Camera>, 6> kCamera{{
+inline constexpr std::array<PropertySpec<Camera>, 8> kCamera{{
     // The manual's own example names a camera with active_camera.
     {.name = "name", .kind = ValueKind::string, .member = &Camera::name, .alias = "active_camera"},
     vector("position", &Camera::position),
@@ -203,6 +214,9 @@ inline constexpr std::array<PropertySpec<Camera>, 6> kCamera{{
     number("aspect", &Camera::aspect, kPositive),
     number("fov", &Camera::fov, {.low = 0.0, .high = 180.0, .low_open = true, .high_open = true},
            "degrees"),
+    // Extensions (docs/language.md §14.2).
+    only_when_set(number("aperture", &Camera::aperture, kNonNegative)),
+    only_when_set(optional_number("focus_distance", &Camera::focus_distance, kPositive)),
 }};
 
 inline constexpr std::array<PropertySpec<Sphere>, 2> kSphere{{
@@ -231,14 +245,25 @@ inline constexpr std::array<PropertySpec<Triangle>, 6> kTriangle{{
 }};
 
 inline constexpr std::array<std::string_view, 2> kShadings{kSmoothShading, kFlatShading};
-inline constexpr std::array<PropertySpec<Mesh>, 2> kMesh{{
+inline constexpr std::array<std::string_view, 2> kMaterialSources{kSceneMaterials,
+                                                                  kFileMaterials};
+inline constexpr std::array<PropertySpec<Mesh>, 4> kMesh{{
     string("file", &Mesh::file, {.nonempty = true}),
     string("shading", &Mesh::shading, {.choices = kShadings}, true),
+    // Extensions (docs/language.md §14.4, §14.5).
+    only_when_set(optional_number("smooth_angle", &Mesh::smooth_angle,
+                                  {.low = 0.0, .high = 180.0}, "degrees")),
+    string("materials", &Mesh::materials, {.choices = kMaterialSources}, true),
 }};
 
-inline constexpr std::array<PropertySpec<PointLight>, 2> kPointLight{{
+inline constexpr std::array<PropertySpec<PointLight>, 4> kPointLight{{
     vector("position", &PointLight::position),
     colour("intensity", &PointLight::intensity),
+    // Extensions (docs/language.md §14.1): shadow_samples is checked whatever
+    // the radius, and used only when the radius is above 0.
+    only_when_set(number("radius", &PointLight::radius, kNonNegative)),
+    whole("shadow_samples", &PointLight::shadow_samples,
+          {.low = kMinShadowSamples, .high = kMaxShadowSamples}, true),
 }};
 
 inline constexpr ValueRange kFraction{
@@ -444,6 +469,7 @@ std::string value_text(const Vec3& value);
 std::string value_text(const std::string& value);
 // An unset optional value has no text: it is never written.
 std::string value_text(const std::optional<Vec3>& value);
+std::string value_text(const std::optional<double>& value);
 
 template <class Block>
 std::string value_text(const PropertySpec<Block>& property, const Block& block) {
@@ -516,6 +542,14 @@ inline const Vec3& set_value(const std::optional<Vec3>& value) {
     static const Vec3 unset{0.0};
     return value ? *value : unset;
 }
+inline const double& set_value(const std::optional<double>& value) {
+    static const double unset = 0.0;
+    return value ? *value : unset;
+}
+template <class T>
+inline constexpr bool is_optional_v = false;
+template <class T>
+inline constexpr bool is_optional_v<std::optional<T>> = true;
 bool is_finite(double value);
 bool is_finite(const Vec3& value);
 // "'position' must be finite, got <nan, 0, 0>"
@@ -544,7 +578,7 @@ std::optional<std::string> value_problem(const PropertySpec<Block>& property, co
     return with_member(property, block, [&](const auto& member) -> std::optional<std::string> {
         const auto& v = schema_detail::set_value(member);
         using T = std::decay_t<decltype(v)>;
-        if constexpr (std::is_same_v<std::decay_t<decltype(member)>, std::optional<Vec3>>) {
+        if constexpr (schema_detail::is_optional_v<std::decay_t<decltype(member)>>) {
             if (!member) return std::nullopt;
         }
         if constexpr (std::is_same_v<T, std::string>) {

@@ -62,6 +62,9 @@ std::vector<Change> changes(std::span<const PropertySpec<Block>> properties, con
                 // No .jts text unsets a value: a save could only drop the line.
                 if (!value) fail("an unset '" + std::string(property.name) + "' cannot be saved");
             }
+            if constexpr (std::is_same_v<T, std::optional<double>>) {
+                if (!value) fail("an unset '" + std::string(property.name) + "' cannot be saved");
+            }
         });
         check_writable(property, b, fail);
         found.push_back(std::move(change));

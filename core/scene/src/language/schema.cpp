@@ -22,6 +22,10 @@ std::string value_text(const std::optional<Vec3>& value) {
     return value ? vector_text(*value) : std::string();
 }
 
+std::string value_text(const std::optional<double>& value) {
+    return value ? number_text(*value) : std::string();
+}
+
 std::string value_text(const std::string& value) {
     // There are no escapes: what cannot stand in quotes becomes '_'.
     std::string written = value;
