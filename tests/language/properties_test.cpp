@@ -131,7 +131,8 @@ TEST(Camera, FovMustBeStrictlyBetween0And180) {
 TEST(Camera, UnknownPropertyIsAnError) {
     EXPECT_EQ(brief("cameras { perspective_camera { lookat: <0, 0, 0>; } }"),
               "1:32: error: unknown property 'lookat' in 'perspective_camera'; did you mean "
-              "'look_at'? (allowed: name, position, look_at, up, aspect, fov)");
+              "'look_at'? (allowed: name, position, look_at, up, aspect, fov, aperture, "
+              "focus_distance)");
 }
 
 TEST(Shapes, RadiusAndHeightMustBePositive) {

@@ -52,10 +52,10 @@ TEST(Structure, UnknownPropertySuggestsTheNearestName) {
     EXPECT_EQ(brief("render_settings { widht: 2; }"),
               "1:19: error: unknown property 'widht' in 'render_settings'; did you mean "
               "'width'? (allowed: width, height, recurse_depth, filename, active_camera, "
-              "background, ambient_light, samples)");
+              "background, ambient_light, samples, background_map)");
     EXPECT_EQ(brief("scene { point_light { colour: <1, 1, 1>; } }"),
               "1:23: error: unknown property 'colour' in 'point_light' (allowed: position, "
-              "intensity)");
+              "intensity, radius, shadow_samples)");
 }
 
 TEST(Structure, UnknownBlockInsideABlockIsSkippedWhole) {

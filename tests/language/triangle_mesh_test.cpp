@@ -47,7 +47,7 @@ TEST(TriangleMesh, MistakesAreLocatedWithSuggestions) {
               "(allowed: sphere, plane, cylinder, triangle, mesh, point_light)");
     EXPECT_EQ(brief(std::string(kHead) + "scene { mesh { fille: \"a.obj\"; } }"),
               "3:16: error: unknown property 'fille' in 'mesh'; did you mean 'file'? "
-              "(allowed: file, shading, material, transform)");
+              "(allowed: file, shading, smooth_angle, materials, material, transform)");
     EXPECT_EQ(brief(std::string(kHead) + "scene { mesh { file: \"a\"; shading: \"smoth\"; } }"),
               "3:36: error: 'shading' must be \"smooth\" or \"flat\", got smoth");
     EXPECT_EQ(brief(std::string(kHead) + "scene { triangle { a: 1; } }"),
