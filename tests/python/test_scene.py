@@ -86,7 +86,9 @@ def test_views_have_the_schema_names_and_values(showcase):
     names = [c.name for c in scene.cameras]
     assert names == ["Main", "High Angle"]
     main = scene.cameras[0]
-    assert set(main.to_dict()) == {"name", "position", "look_at", "up", "aspect", "fov"}
+    assert set(main.to_dict()) == {
+        "name", "position", "look_at", "up", "aspect", "fov", "aperture", "focus_distance"}
+    assert main.aperture == 0.0 and main.focus_distance is None  # unset: follows look_at
     assert main.fov == pytest.approx(38.0)
     assert "Camera(name='Main', position=(0.0, 2.4, 9.0)" in repr(main)
     with pytest.raises(AttributeError):
