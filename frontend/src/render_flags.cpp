@@ -49,7 +49,7 @@ void add_render_flags(CLI::App& app, RenderFlags& o) {
 
 void name_setting_flags(std::vector<Diagnostic>& diagnostics) {
     for (Diagnostic& d : diagnostics) {
-        if (d.setting == "width" || d.setting == "height") {
+        if (d.setting == "width" || d.setting == "height" || d.setting == "samples") {
             d.message.append(" or pass --").append(d.setting);
         }
     }

@@ -1,4 +1,5 @@
-// The language 1.1 example scenes (meshes, glass, image maps) at a small size:
+// The example scenes of languages 1.1 (meshes, glass, image maps) and 1.2 (soft
+// shadows, a lens) at a small size:
 // jtracer-view's render and jtracer-mpi's image on two ranks are jtracer-cli's,
 // byte for byte.
 
@@ -67,6 +68,7 @@ TEST_P(ExampleScenes, TheViewerAndTheFarmRenderTheClisBytes) {
 }
 
 INSTANTIATE_TEST_SUITE_P(Language11, ExampleScenes, ::testing::Values("mesh", "glass", "globe"));
+INSTANTIATE_TEST_SUITE_P(Language12, ExampleScenes, ::testing::Values("soft_focus"));
 
 }  // namespace
 }  // namespace jt

@@ -109,6 +109,30 @@ TEST(Validate, ActiveCameraNamingNoCameraWarns) {
     EXPECT_EQ(active_camera_index(Scene{}), -1);
 }
 
+TEST(Validate, ALensWithOneSampleWarnsAtTheActiveCamerasAperture) {
+    const std::string cameras =
+        "cameras {\n  perspective_camera { name: \"a\"; aperture: 0.2; }\n"
+        "  perspective_camera { name: \"b\"; aperture: 0.5; }\n}\nscene { }";
+    const std::string one = "render_settings { width: 2; height: 2; }\n";
+    EXPECT_EQ(validate(one + cameras),
+              "3:45: warning: camera \"a\": 'aperture' 0.2 blurs nothing while 'samples' is 1 (one "
+              "ray a pixel, through the lens centre): set 'samples' to 16 or more");
+    EXPECT_EQ(
+        validate("render_settings { width: 2; height: 2; active_camera: \"b\"; }\n" + cameras),
+        "4:45: warning: camera \"b\": 'aperture' 0.5 blurs nothing while 'samples' is 1 (one "
+        "ray a pixel, through the lens centre): set 'samples' to 16 or more");
+    EXPECT_EQ(validate("render_settings { width: 2; height: 2; samples: 4; }\n" + cameras), "");
+    EXPECT_EQ(validate(one + "cameras { perspective_camera { aperture: 0; } }\nscene { }"), "");
+    // The samples the render will use: --samples is applied before validation.
+    ParseResult r = test::parse_clean(one + cameras);
+    r.scene.settings.samples = 16;
+    EXPECT_EQ(brief(validate_scene(r.scene, r.source)), "");
+    r.scene.settings.samples = 1;
+    const std::vector<Diagnostic> found = validate_scene(r.scene, r.source);
+    ASSERT_EQ(found.size(), 1u);
+    EXPECT_EQ(found[0].setting, "samples");  // so the command line can name --samples
+}
+
 TEST(Validate, ZeroScaleComponentWarnsAtTheScaleOperation) {
     EXPECT_EQ(validate("render_settings { width: 2; height: 2; }\n"
                        "cameras { perspective_camera { } }\n"

@@ -2,6 +2,7 @@
 
 #include "jtracer/check.hpp"
 #include "jtracer/limits.hpp"
+#include "render/camera_rays.hpp"
 #include "render/prepared_frame.hpp"
 #include "render/prepared_scene.hpp"
 #include "render/sample_pattern.hpp"
@@ -11,6 +12,7 @@
 #include <tbb/task_arena.h>
 
 #include <algorithm>
+#include <optional>
 
 namespace jt {
 
@@ -54,8 +56,11 @@ bool trace_blocks(const PreparedFrame& f, int b, TileBuffer& out, const std::ato
             double cx = bx + 0.5 * (std::min(bx + b, f.options.width) - bx);
             double cy = by + 0.5 * (std::min(by + b, f.options.height) - by);
             // Previews run before the view table is built: the BVH answers.
-            Colour c =
-                trace_ray(*f.scene, camera.position, camera_direction(camera, cx, cy), 0.0, rays);
+            // They show hard shadows and the pinhole image, which are quick.
+            const PixelSample sample{static_cast<std::uint32_t>(bx), static_cast<std::uint32_t>(by),
+                                     0, false};
+            Colour c = trace_ray(*f.scene, camera.position, camera_direction(camera, cx, cy), 0.0,
+                                 sample, rays);
             for (int y = std::max(by, tile.y0); y < std::min(by + b, tile.y1); ++y)
                 for (int x = std::max(bx, tile.x0); x < std::min(bx + b, tile.x1); ++x)
                     put(out, x, y, c);
@@ -74,14 +79,14 @@ bool trace_samples(const PreparedFrame& f, const RenderPass& pass, TileBuffer& o
     // trace_ray would find it, without its set-up.
     const Geometry& geometry = *f.scene->geometry;
     const bool open_sky = table.built && geometry.planes.empty() && !geometry.triangles;
-    auto trace = [&](double x, double y, const Vec3& direction) {
-        if (!table.built) return trace_ray(*f.scene, camera.position, direction, 0.0, rays);
+    auto trace = [&](double x, double y, const Vec3& direction, const PixelSample& sample) {
+        if (!table.built) return trace_ray(*f.scene, camera.position, direction, 0.0, sample, rays);
         const ListedShapes seen = shapes_seen(table, x, y);
         if (open_sky && seen.size() == 0) {
             ++rays;
             return f.scene->settings.background;
         }
-        return trace_ray(*f.scene, camera.position, direction, 0.0, rays, &seen);
+        return trace_ray(*f.scene, camera.position, direction, 0.0, sample, rays, &seen);
     };
     if (f.options.samples == 1) {
         // A row's directions first, in a loop of their own: their divisions
@@ -94,10 +99,12 @@ bool trace_samples(const PreparedFrame& f, const RenderPass& pass, TileBuffer& o
                     camera_direction(camera, x + 0.5, y + 0.5);
             for (int x = tile.x0; x < tile.x1; ++x)
                 put(out, x, y,
-                    trace(x + 0.5, y + 0.5, directions[static_cast<std::size_t>(x - tile.x0)]));
+                    trace(x + 0.5, y + 0.5, directions[static_cast<std::size_t>(x - tile.x0)],
+                          {static_cast<std::uint32_t>(x), static_cast<std::uint32_t>(y), 0}));
         }
         return true;
     }
+    const bool has_lens = camera.aperture > 0.0;
     for (int y = tile.y0; y < tile.y1; ++y) {
         if (cancel.load(std::memory_order_relaxed)) return false;
         for (int x = tile.x0; x < tile.x1; ++x) {
@@ -107,7 +114,18 @@ bool trace_samples(const PreparedFrame& f, const RenderPass& pass, TileBuffer& o
             if (pass.sample_begin == 0) sum = Colour(0.0);
             for (int k = pass.sample_begin; k < pass.sample_end; ++k) {
                 const SampleOffset o = sample_offset(k);
-                sum += clamp01(trace(x + o.x, y + o.y, camera_direction(camera, x + o.x, y + o.y)));
+                const Vec3 d = camera_direction(camera, x + o.x, y + o.y);
+                const PixelSample sample{static_cast<std::uint32_t>(x),
+                                         static_cast<std::uint32_t>(y),
+                                         static_cast<std::uint32_t>(k)};
+                // A ray from off the camera's position: the view table, made
+                // for rays from the position, cannot list what it meets.
+                const std::optional<LensRay> lens =
+                    has_lens ? lens_ray(camera, d, f.options.samples, sample.i, sample.j, sample.k)
+                             : std::nullopt;
+                sum += clamp01(
+                    lens ? trace_ray(*f.scene, lens->origin, lens->direction, 0.0, sample, rays)
+                         : trace(x + o.x, y + o.y, d, sample));
             }
             put(out, x, y, sum / static_cast<double>(pass.sample_end));
         }

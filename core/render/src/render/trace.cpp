@@ -1,7 +1,9 @@
 #include "render/trace.hpp"
 
 #include "jtracer/limits.hpp"
+#include "render/light_disk.hpp"
 #include "render/pattern.hpp"
+#include "render/pixel_hash.hpp"
 #include "render/ray_queries.hpp"
 #include "render/refraction.hpp"
 
@@ -39,60 +41,6 @@ double transmittance(const PreparedScene& scene, const Vec3& origin, const Vec3&
         t_lower = hit.t;
     }
     return through;
-}
-
-// The local (non-reflected) light at a hit: ambient, then each light's diffuse
-// and specular terms when nothing shadows it. A triangle's shadow rays never
-// meet the triangle they leave (`own`): a smooth normal may face a light its
-// flat face turns away from (docs/language.md §13.5).
-Colour shade_hit(const PreparedScene& scene, const Material& m, const Vec3& point,
-                 const Vec3& lifted, const Vec3& normal, const Vec3& view, TriangleId own,
-                 std::uint64_t& rays) {
-    const Departure from{own, point};
-    Colour c = scene.settings.ambient_light * m.ambient * m.pigment;
-    const Geometry& geometry = *scene.geometry;
-    const std::vector<DirectionTable>* light_tables =
-        scene.light_tables && !scene.light_tables->empty() ? scene.light_tables.get() : nullptr;
-    // One hint a light, per thread: consecutive shadow rays of a thread come
-    // from neighbouring pixels of one tile. Hints never change a result, so
-    // neither thread count nor tile order can show in the image.
-    thread_local std::vector<OccluderHint> hints;
-    if (hints.size() < scene.lights.size()) hints.resize(scene.lights.size());
-    for (std::size_t light_index = 0; light_index < scene.lights.size(); ++light_index) {
-        const PointLight& light = scene.lights[light_index];
-        Vec3 to_light = light.position - point;
-        double distance = glm::length(to_light);
-        if (!(distance > 0.0)) continue;
-        Vec3 l = to_light / distance;
-        double n_dot_l = glm::dot(normal, l);
-        if (!(n_dot_l > 0.0)) continue;
-        // A black light adds nothing whether shadowed or not: skip its shadow ray.
-        if (light.intensity == Colour(0.0)) continue;
-        Vec3 shadow_direction = light.position - lifted;
-        double shadow_distance = glm::length(shadow_direction);
-        if (!(shadow_distance > 0.0)) continue;
-        ++rays;
-        Colour intensity = light.intensity;
-        if (scene.has_transmission) {
-            const double through = transmittance(scene, lifted, shadow_direction / shadow_distance,
-                                                 shadow_distance, from);
-            if (!(through > 0.0)) continue;
-            intensity *= through;
-        } else if (occluded(geometry, lifted, shadow_direction / shadow_distance, 0.0,
-                            shadow_distance, &hints[light_index],
-                            light_tables ? &(*light_tables)[light_index] : nullptr, from)) {
-            continue;
-        }
-        // pow(x, 1) is x exactly, and adding a zero term changes nothing: both
-        // shortcuts leave every bit as the plain formula would.
-        double diffuse_factor = m.diffuse_k == 1.0 ? n_dot_l : std::pow(n_dot_l, 1.0 / m.diffuse_k);
-        c += intensity * m.diffuse * m.pigment * diffuse_factor;
-        if (m.specular == Colour(0.0)) continue;
-        Vec3 r = 2.0 * n_dot_l * normal - l;
-        double r_dot_v = glm::dot(r, view);
-        if (r_dot_v > 0.0) c += intensity * m.specular * std::pow(r_dot_v, m.specular_k);
-    }
-    return c;
 }
 
 // What a ray meets first. Only `kind` is set up front: first_surface sets
@@ -147,17 +95,119 @@ SurfaceHit first_surface(const Geometry& geometry, const Vec3& o, const Vec3& d,
     return s;
 }
 
+// What a soft light lets through to a hit: the mean visibility of its disk's
+// points (docs/language.md §14.1), summed in index order. Its rays all leave
+// one point but toward points off the light's centre, so the light's
+// direction table (built for rays through the centre) does not apply; the
+// occluder hint only orders the tests and never changes an answer.
+double disk_visibility(const PreparedScene& scene, const PointLight& light, const SurfaceHit& s,
+                       const Vec3& l, const PixelSample& sample, OccluderHint& hint) {
+    const LightDisk disk = light_disk(light.position, light.radius, l);
+    const int count = light.shadow_samples;
+    const double turn = pixel_angle(sample.i, sample.j, sample.k);
+    const Vec3 above = s.lifted;
+    const Vec3 below = s.point - s.offset * s.geometric;
+    const Departure from{s.triangle, s.point};
+    double sum = 0.0;
+    for (int m = 0; m < count; ++m) {
+        const Vec3 q = disk_point(disk, m, count, turn);
+        const Vec3 l_m = glm::normalize(q - s.point);
+        double v = 0.0;
+        if (glm::dot(s.normal, l_m) > 0.0) {
+            // Toward a point behind the face (a smooth normal on a mesh), the
+            // ray starts under it and only its own triangle cannot block it.
+            const Vec3 origin = glm::dot(s.geometric, l_m) < 0.0 ? below : above;
+            const Vec3 path = q - origin;
+            const double length = glm::length(path);
+            if (length > 0.0) {
+                if (scene.has_transmission)
+                    v = transmittance(scene, origin, path / length, length, from);
+                else
+                    v = occluded(*scene.geometry, origin, path / length, 0.0, length, &hint,
+                                 nullptr, from)
+                            ? 0.0
+                            : 1.0;
+            }
+        }
+        sum += v;
+    }
+    return sum / count;
+}
+
+// The local (non-reflected) light at a hit: ambient, then each light's diffuse
+// and specular terms when nothing shadows it. A triangle's shadow rays never
+// meet the triangle they leave (`own`): a smooth normal may face a light its
+// flat face turns away from (docs/language.md §13.5).
+Colour shade_hit(const PreparedScene& scene, const Material& m, const SurfaceHit& s,
+                 const Vec3& view, const PixelSample& sample, std::uint64_t& rays) {
+    const Vec3& point = s.point;
+    const Vec3& lifted = s.lifted;
+    const Vec3& normal = s.normal;
+    const Departure from{s.triangle, point};
+    Colour c = scene.settings.ambient_light * m.ambient * m.pigment;
+    const Geometry& geometry = *scene.geometry;
+    const std::vector<DirectionTable>* light_tables =
+        scene.light_tables && !scene.light_tables->empty() ? scene.light_tables.get() : nullptr;
+    // One hint a light, per thread: consecutive shadow rays of a thread come
+    // from neighbouring pixels of one tile. Hints never change a result, so
+    // neither thread count nor tile order can show in the image.
+    thread_local std::vector<OccluderHint> hints;
+    if (hints.size() < scene.lights.size()) hints.resize(scene.lights.size());
+    for (std::size_t light_index = 0; light_index < scene.lights.size(); ++light_index) {
+        const PointLight& light = scene.lights[light_index];
+        Vec3 to_light = light.position - point;
+        double distance = glm::length(to_light);
+        if (!(distance > 0.0)) continue;
+        Vec3 l = to_light / distance;
+        double n_dot_l = glm::dot(normal, l);
+        if (!(n_dot_l > 0.0)) continue;
+        // A black light adds nothing whether shadowed or not: skip its shadow ray.
+        if (light.intensity == Colour(0.0)) continue;
+        Colour intensity = light.intensity;
+        // Inside its sphere, a soft light is a point light (§14.1).
+        if (light.radius > 0.0 && distance > light.radius && sample.soft_shadows) {
+            rays += static_cast<std::uint64_t>(light.shadow_samples);
+            const double visible = disk_visibility(scene, light, s, l, sample, hints[light_index]);
+            if (!(visible > 0.0)) continue;
+            intensity *= visible;
+        } else {
+            Vec3 shadow_direction = light.position - lifted;
+            double shadow_distance = glm::length(shadow_direction);
+            if (!(shadow_distance > 0.0)) continue;
+            ++rays;
+            if (scene.has_transmission) {
+                const double through = transmittance(
+                    scene, lifted, shadow_direction / shadow_distance, shadow_distance, from);
+                if (!(through > 0.0)) continue;
+                intensity *= through;
+            } else if (occluded(geometry, lifted, shadow_direction / shadow_distance, 0.0,
+                                shadow_distance, &hints[light_index],
+                                light_tables ? &(*light_tables)[light_index] : nullptr, from)) {
+                continue;
+            }
+        }
+        // pow(x, 1) is x exactly, and adding a zero term changes nothing: both
+        // shortcuts leave every bit as the plain formula would.
+        double diffuse_factor = m.diffuse_k == 1.0 ? n_dot_l : std::pow(n_dot_l, 1.0 / m.diffuse_k);
+        c += intensity * m.diffuse * m.pigment * diffuse_factor;
+        if (m.specular == Colour(0.0)) continue;
+        Vec3 r = 2.0 * n_dot_l * normal - l;
+        double r_dot_v = glm::dot(r, view);
+        if (r_dot_v > 0.0) c += intensity * m.specular * std::pow(r_dot_v, m.specular_k);
+    }
+    return c;
+}
+
 Colour shade_surface(const PreparedScene& scene, const SurfaceHit& s, const Vec3& d,
-                     std::uint64_t& rays) {
+                     const PixelSample& sample, std::uint64_t& rays) {
     const Material& m = scene.materials[scene.material_of[s.source]];
-    if (!has_pattern(m))
-        return shade_hit(scene, m, s.point, s.lifted, s.normal, -d, s.triangle, rays);
+    if (!has_pattern(m)) return shade_hit(scene, m, s, -d, sample, rays);
     const PatternSpace& space = scene.pattern_space[s.source];
     Material patterned = m;
     patterned.pigment =
         pattern_pigment(m, scene.textures[scene.material_of[s.source]].get(), space.shape,
                         apply_point(space.to_object, s.point), Uv{s.uv.x, s.uv.y});
-    return shade_hit(scene, patterned, s.point, s.lifted, s.normal, -d, s.triangle, rays);
+    return shade_hit(scene, patterned, s, -d, sample, rays);
 }
 
 Vec3 mirror(const Vec3& d, const Vec3& n) {
@@ -174,26 +224,27 @@ constexpr double min_branch_weight = 1e-6;
 // The recursive Whitted tracer for scenes with transmissive surfaces, where a
 // hit can spawn both a reflected and a transmitted ray.
 Colour trace_branching(const PreparedScene& scene, const Vec3& o, const Vec3& d, double t_lower,
-                       int depth, int depth_limit, double weight, std::uint64_t& rays,
-                       const ListedShapes* candidates, const Departure& leaving) {
+                       int depth, int depth_limit, double weight, const PixelSample& sample,
+                       std::uint64_t& rays, const ListedShapes* candidates,
+                       const Departure& leaving) {
     ++rays;
     const SurfaceHit s = first_surface(*scene.geometry, o, d, t_lower, candidates, leaving);
     if (s.kind == SurfaceHit::Kind::miss) return scene.settings.background;
     if (s.kind == SurfaceHit::Kind::no_normal) return Colour(0.0);
-    Colour c = shade_surface(scene, s, d, rays);
+    Colour c = shade_surface(scene, s, d, sample, rays);
     if (depth >= depth_limit) return c;
     const Material& m = scene.materials[scene.material_of[s.source]];
     if (m.reflection > 0.0 && weight * m.reflection >= min_branch_weight)
         c += m.reflection * trace_branching(scene, s.lifted, mirror(d, s.normal), 0.0, depth + 1,
-                                            depth_limit, weight * m.reflection, rays, nullptr,
-                                            {s.triangle, s.point});
+                                            depth_limit, weight * m.reflection, sample, rays,
+                                            nullptr, {s.triangle, s.point});
     if (m.transmission > 0.0 && weight * m.transmission >= min_branch_weight) {
         const Vec3 t = transmitted_direction(d, s.normal, s.entering, m.ior);
         // Total internal reflection stays on the ray's side; a refracted ray crosses.
         const Vec3 from =
             glm::dot(t, s.geometric) > 0.0 ? s.lifted : s.point - s.offset * s.geometric;
         c += m.transmission * trace_branching(scene, from, t, 0.0, depth + 1, depth_limit,
-                                              weight * m.transmission, rays, nullptr,
+                                              weight * m.transmission, sample, rays, nullptr,
                                               {s.triangle, s.point});
     }
     return c;
@@ -207,12 +258,13 @@ double surface_offset(const Vec3& origin, const Vec3& point, double distance) {
 }
 
 Colour trace_ray(const PreparedScene& scene, const Vec3& origin, const Vec3& unit_direction,
-                 double t_min, std::uint64_t& rays, const ListedShapes* first_candidates) {
+                 double t_min, const PixelSample& sample, std::uint64_t& rays,
+                 const ListedShapes* first_candidates) {
     const Geometry& geometry = *scene.geometry;
     const int depth_limit = std::clamp(scene.settings.recurse_depth, 0, max_depth);
     if (scene.has_transmission)
-        return trace_branching(scene, origin, unit_direction, t_min, 0, depth_limit, 1.0, rays,
-                               first_candidates, {});
+        return trace_branching(scene, origin, unit_direction, t_min, 0, depth_limit, 1.0, sample,
+                               rays, first_candidates, {});
     // c_k = local_k + reflection_k * c_(k+1): kept per bounce and folded back in
     // the end, so the sum rounds exactly as the recursive definition does.
     // Plain doubles, left uninitialised: glm's vectors zero themselves, and
@@ -243,7 +295,7 @@ Colour trace_ray(const PreparedScene& scene, const Vec3& origin, const Vec3& uni
             keep(depth, s.kind == SurfaceHit::Kind::miss ? scene.settings.background : Colour(0.0));
             break;
         }
-        keep(depth, shade_surface(scene, s, d, rays));
+        keep(depth, shade_surface(scene, s, d, sample, rays));
         const Material& m = scene.materials[scene.material_of[s.source]];
         if (depth >= depth_limit || !(m.reflection > 0.0)) break;
         bounces[depth].reflection = m.reflection;

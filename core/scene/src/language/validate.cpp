@@ -151,6 +151,16 @@ class Validator {
                                 " by more than 1%, so the image will look stretched");
                 }
             }
+            // Overrides (--samples) are applied before validation, so
+            // `samples` here is the render's.
+            if (c.aperture > 0.0 && s.samples == 1 &&
+                static_cast<int>(i) == active_camera_index(scene_)) {
+                warning(where(block, "aperture"),
+                        which + ": 'aperture' " + number_text(c.aperture) +
+                            " blurs nothing while 'samples' is 1 (one ray a pixel, through the "
+                            "lens centre): set 'samples' to 16 or more");
+                out_.back().setting = "samples";
+            }
         }
     }
 
