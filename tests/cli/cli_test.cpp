@@ -159,6 +159,24 @@ TEST_F(Cli, SceneErrorsExitOneAndWriteNothing) {
     EXPECT_EQ(run("-q nosize.jts -o out.bmp --width 8 --height 6").code, 0);
 }
 
+TEST_F(Cli, ALensWithOneSampleWarnsUnlessSamplesArePassed) {
+    std::string lens = small_scene;
+    lens.replace(lens.find("aspect: 1.7778; }"), 17, "aspect: 1.7778; aperture: 0.1; }");
+    write("lens.jts", lens);
+    test::ProgramRun r = run("--progress none lens.jts -o out.bmp");
+    EXPECT_EQ(r.code, 0) << r.err;
+    EXPECT_NE(r.err.find("lens.jts:4:110: warning:"), std::string::npos) << r.err;
+    EXPECT_NE(r.err.find("warning: camera \"front\": 'aperture' 0.1 blurs nothing "
+                         "while 'samples' is 1"),
+              std::string::npos)
+        << r.err;
+    EXPECT_NE(r.err.find("set 'samples' to 16 or more or pass --samples"), std::string::npos)
+        << r.err;
+    r = run("--progress none lens.jts -o out.bmp --samples 4");
+    EXPECT_EQ(r.code, 0) << r.err;
+    EXPECT_EQ(r.err.find("aperture"), std::string::npos) << r.err;
+}
+
 TEST_F(Cli, UsageErrorsExitTwo) {
     EXPECT_EQ(run("").code, 2);
     EXPECT_EQ(run("scene.jts --width 0").code, 2);

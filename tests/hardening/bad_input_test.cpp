@@ -52,7 +52,7 @@ std::vector<MalformedScene> malformed_scenes() {
         {"ranges: too many shadow samples",
          camera + "scene { point_light { radius: 1; shadow_samples: 1025; } }\n", "2:50"},
         {"ranges: negative aperture",
-         "cameras { perspective_camera { look_at: <0, 0, -1>; aperture: -1; } }\n", "1:48"},
+         "cameras { perspective_camera { look_at: <0, 0, -1>; aperture: -1; } }\n", "1:63"},
         {"ranges: focus distance 0",
          "cameras { perspective_camera { look_at: <0, 0, -1>; focus_distance: 0; } }\n", "1:69"},
         {"validation: look_at equals position",
