@@ -108,9 +108,12 @@ TEST(SoftShadow, RadiusZeroIsThePointLightWhateverItsSamples) {
     }
 }
 
-TEST(SoftShadow, SameBytesForEveryThreadCountRegionAndTile) {
-    const Scene scene =
-        parse(shadow_scene("radius: 0.8; shadow_samples: 24;", "radius: 0.3; shadow_samples: 5;"));
+TEST(SoftShadow, SameBytesWithALensForEveryThreadCountRegionAndTile) {
+    // With a lens too: its rays carry the pixel's angle as the lights' do.
+    std::string text =
+        shadow_scene("radius: 0.8; shadow_samples: 24;", "radius: 0.3; shadow_samples: 5;");
+    text.replace(text.find("aspect: 1.3333;"), 15, "aspect: 1.3333; aperture: 0.15;");
+    const Scene scene = parse(text);
     for (int samples : {1, 3}) {
         SCOPED_TRACE(samples);
         const Image8 whole = render_with(scene, samples, 1);
