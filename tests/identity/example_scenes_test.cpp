@@ -1,6 +1,6 @@
-// The language 1.1 example scenes (meshes, glass, image maps) at a small size:
-// jtracer-view's render and jtracer-mpi's image on two ranks are jtracer-cli's,
-// byte for byte.
+// The language 1.1 and 1.2 example scenes (meshes, glass, image maps, a sky
+// map) at a small size: jtracer-view's render and jtracer-mpi's image on two
+// ranks are jtracer-cli's, byte for byte.
 
 #include "common/files.hpp"
 #include "common/scratch_dir.hpp"
@@ -67,6 +67,7 @@ TEST_P(ExampleScenes, TheViewerAndTheFarmRenderTheClisBytes) {
 }
 
 INSTANTIATE_TEST_SUITE_P(Language11, ExampleScenes, ::testing::Values("mesh", "glass", "globe"));
+INSTANTIATE_TEST_SUITE_P(Language12, ExampleScenes, ::testing::Values("sky"));
 
 }  // namespace
 }  // namespace jt
