@@ -56,6 +56,12 @@ Expected<json> describe(const Scene& scene) {
                         {"height", map.height},
                         {"bytes", map.bytes}});
     out["image_maps"] = maps;
+    const std::optional<ImageMapInfo>& sky = info->background_map;
+    out["background_map"] = sky ? json{{"path", sky->path.string()},
+                                       {"width", sky->width},
+                                       {"height", sky->height},
+                                       {"bytes", sky->bytes}}
+                                : json();
 
     json lights = json::array();
     for (const PointLight& l : scene.lights)
@@ -122,6 +128,9 @@ void print_text(const json& d) {
     for (const json& map : d["image_maps"])
         std::cout << "image map " << map["path"].get<std::string>() << ": " << map["width"] << "x"
                   << map["height"] << ", " << mib(map["bytes"].get<std::size_t>()) << "\n";
+    if (const json& sky = d["background_map"]; !sky.is_null())
+        std::cout << "background map " << sky["path"].get<std::string>() << ": " << sky["width"]
+                  << "x" << sky["height"] << ", " << mib(sky["bytes"].get<std::size_t>()) << "\n";
     for (const json& l : d["lights"])
         std::cout << "point light at " << vec_text(l["position"]) << ", intensity "
                   << vec_text(l["intensity"]) << "\n";
@@ -147,9 +156,9 @@ int run_info_command(int argc, char** argv) {
     app.footer(
         "Prints the primitives of each kind; each mesh with its file, triangles, vertices,\n"
         "where its normals come from, its box in world space and the time it took to read;\n"
-        "the scene's world box; each image map's size and memory; the lights; the cameras\n"
-        "and where they look; and the prepared scene's memory, Embree's counted as it\n"
-        "builds (info prepares the scene as a render would).\n"
+        "the scene's world box; each image map's and the background map's size and memory;\n"
+        "the lights; the cameras and where they look; and the prepared scene's memory,\n"
+        "Embree's counted as it builds (info prepares the scene as a render would).\n"
         "\n"
         "Examples:\n"
         "  jtracer-cli info scenes/mesh.jts\n"

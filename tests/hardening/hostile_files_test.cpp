@@ -107,6 +107,61 @@ TEST_F(HostileImageMaps, AJpegWhoseDataEndsEarlyIsRefusedByTheCheckAsByTheRender
     expect_refused(run({"hostile.jts", "-o", "out.bmp"}), problem);
 }
 
+// A sky map is read by the image maps' reader, with its limits: the same
+// pictures are refused at the background_map string (line 2, column 21), by
+// --check and the render alike, and so are a missing file, a directory and "".
+class HostileBackgroundMaps : public CliSandbox {
+  protected:
+    void write_scene_naming(const std::string& picture) {
+        write_file(dir / "sky.jts",
+                   "render_settings { width: 8; height: 8;\n"
+                   "    background_map: \"" +
+                       picture +
+                       "\"; }\n"
+                       "cameras { perspective_camera { } }\n"
+                       "scene { }\n");
+    }
+    void expect_refused_everywhere(const std::string& message) const {
+        for (const auto& args : {std::vector<std::string>{"sky.jts", "--check"},
+                                 std::vector<std::string>{"sky.jts", "-o", "out.bmp"}}) {
+            const ProgramRun r = run(args);
+            EXPECT_EQ(r.code, 1) << r.err;
+            EXPECT_EQ(r.err.rfind("sky.jts:2:21: error: background_map: " + message + "\n", 0), 0u)
+                << r.err;
+            EXPECT_FALSE(exists("out.bmp"));
+            EXPECT_TRUE(temporary_files().empty());
+        }
+    }
+};
+
+TEST_F(HostileBackgroundMaps, PicturesRefusedAsImageMapsAreRefusedAtTheString) {
+    const std::pair<const char*, const char*> pictures[] = {
+        {"claims-100000x100000.png",
+         "the image is too large (100000x100000 texels; an image map has at most 268435456)"},
+        {"bmp-90-bytes-claiming-5x11665411.bmp",
+         "the file is too short for the 5x11665411 pixels its header claims (90 bytes)"},
+        {"jpeg-entropy-data-ending-early.jpg",
+         "cannot read the JPEG: Corrupt JPEG data: premature end of data segment"},
+    };
+    for (const auto& [picture, problem] : pictures) {
+        SCOPED_TRACE(picture);
+        fs::copy_file(hostile / picture, dir / picture, fs::copy_options::overwrite_existing);
+        write_scene_naming(picture);
+        expect_refused_everywhere("'" + std::string(picture) + "': " + problem);
+    }
+}
+
+TEST_F(HostileBackgroundMaps, MissingFilesDirectoriesAndEmptyNamesAreRefusedAtTheString) {
+    write_scene_naming("nowhere.png");
+    expect_refused_everywhere("cannot read 'nowhere.png': No such file or directory");
+    fs::create_directory(dir / "maps");
+    write_scene_naming("maps");
+    expect_refused_everywhere("cannot read 'maps': Is a directory");
+    write_scene_naming("");
+    expect_refused_everywhere(
+        "the file name is empty (leave 'background_map' out to show the background colour)");
+}
+
 class HostileModels : public CliSandbox {
   protected:
     void SetUp() override {

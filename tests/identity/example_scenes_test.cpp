@@ -1,7 +1,6 @@
 // The example scenes of languages 1.1 (meshes, glass, image maps) and 1.2 (soft
-// shadows, a lens) at a small size:
-// jtracer-view's render and jtracer-mpi's image on two ranks are jtracer-cli's,
-// byte for byte.
+// shadows, a lens, a sky map) at a small size: jtracer-view's render and
+// jtracer-mpi's image on two ranks are jtracer-cli's, byte for byte.
 
 #include "common/files.hpp"
 #include "common/scratch_dir.hpp"
@@ -68,7 +67,7 @@ TEST_P(ExampleScenes, TheViewerAndTheFarmRenderTheClisBytes) {
 }
 
 INSTANTIATE_TEST_SUITE_P(Language11, ExampleScenes, ::testing::Values("mesh", "glass", "globe"));
-INSTANTIATE_TEST_SUITE_P(Language12, ExampleScenes, ::testing::Values("soft_focus"));
+INSTANTIATE_TEST_SUITE_P(Language12, ExampleScenes, ::testing::Values("soft_focus", "sky"));
 
 }  // namespace
 }  // namespace jt

@@ -148,6 +148,25 @@ TEST(Validate, NoSceneBlockWarns) {
               "0:0: warning: no scene block: the image will show only the background");
 }
 
+// A sky map must be readable (docs/language.md §14.3); the error is at its
+// string, the warning about a background the map hides at `background`.
+TEST(Validate, BackgroundMapDiagnosticsAreLocated) {
+    const std::string head = "render_settings { width: 40; height: 20;\n";
+    const std::string tail = "cameras { perspective_camera { aspect: 2; } }\nscene { }\n";
+    EXPECT_EQ(validate(head + " background_map: \"nowhere.png\"; }\n" + tail),
+              "2:18: error: background_map: cannot read 'nowhere.png': No such file or directory");
+    EXPECT_EQ(validate(head + " background_map: \"\"; }\n" + tail),
+              "2:18: error: background_map: the file name is empty (leave 'background_map' out "
+              "to show the background colour)");
+    EXPECT_EQ(
+        validate(head + " background: <0, 0, 1>;\n background_map: \"nowhere.png\"; }\n" + tail),
+        "2:14: warning: 'background' and 'background_map' are both set: the background map "
+        "wins, so no ray shows this colour\n"
+        "3:18: error: background_map: cannot read 'nowhere.png': No such file or directory");
+    // A background written alone, or the default map, says nothing.
+    EXPECT_EQ(validate(head + " background: <0, 0, 1>; }\n" + tail), "");
+}
+
 TEST(Validate, CatchesOutOfRangeValuesInScenesBuiltInCode) {
     Scene s;
     s.settings.width = s.settings.height = 4;

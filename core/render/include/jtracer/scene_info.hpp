@@ -1,8 +1,8 @@
 #pragma once
 // Figures about a scene once loaded: how many primitives of each kind, each
-// mesh's triangles and world box, the image maps' sizes, and the memory its
-// prepared form takes. `jtracer-cli info` prints them; the viewer's Objects
-// panel shows a selected mesh's.
+// mesh's triangles and world box, the image maps' and background map's sizes,
+// and the memory its prepared form takes. `jtracer-cli info` prints them; the
+// viewer's Objects panel shows a selected mesh's.
 
 #include "jtracer/error.hpp"
 #include "jtracer/model_file.hpp"
@@ -56,7 +56,7 @@ struct ImageMapInfo {
 // Bytes of the prepared scene (render_job.hpp's prepare_scene).
 struct SceneMemory {
     std::size_t models = 0;      // vertices and triangles of the models read
-    std::size_t image_maps = 0;  // decoded texels
+    std::size_t image_maps = 0;  // decoded texels, the background map's included
     std::size_t primitives = 0;  // the primitive records
     // What Embree holds while the prepared scene lives: its acceleration
     // structure and its copy of the triangles, as its memory monitor counts
@@ -72,6 +72,8 @@ struct SceneInfo {
     int unbounded = 0;                      // planes: no box holds them
     int left_out = 0;                       // flattened by a zero scale, or out of range
     std::vector<ImageMapInfo> image_maps;   // each file once, in scene order
+    // render_settings' background_map, when it names one.
+    std::optional<ImageMapInfo> background_map;
     SceneMemory memory;
 };
 

@@ -68,6 +68,17 @@ Uv shape_uv(const Shape& shape, double map_size, const Vec3& p, Uv surface) {
     return surface;
 }
 
+namespace {
+
+// Columns i and i1 blended with weight ax, rows j and j1 with weight ay.
+Colour blend(const Texture& t, int i, int i1, double ax, int j, int j1, double ay) {
+    const Colour bottom = (1.0 - ax) * texel(t, i, j) + ax * texel(t, i1, j);
+    const Colour top = (1.0 - ax) * texel(t, i, j1) + ax * texel(t, i1, j1);
+    return (1.0 - ay) * bottom + ay * top;
+}
+
+}  // namespace
+
 Colour sample_bilinear(const Texture& t, Uv uv) {
     // Texel i's centre is at (i + 0.5) / width.
     const double x = wrap(uv.u) * t.width - 0.5, y = wrap(uv.v) * t.height - 0.5;
@@ -76,9 +87,21 @@ Colour sample_bilinear(const Texture& t, Uv uv) {
     const auto i0 = static_cast<long long>(fx), j0 = static_cast<long long>(fy);
     const int i = wrap_index(i0, t.width), i1 = wrap_index(i0 + 1, t.width);
     const int j = wrap_index(j0, t.height), j1 = wrap_index(j0 + 1, t.height);
-    const Colour bottom = (1.0 - ax) * texel(t, i, j) + ax * texel(t, i1, j);
-    const Colour top = (1.0 - ax) * texel(t, i, j1) + ax * texel(t, i1, j1);
-    return (1.0 - ay) * bottom + ay * top;
+    return blend(t, i, i1, ax, j, j1, ay);
+}
+
+Colour sample_bilinear_rows_clamped(const Texture& t, Uv uv) {
+    const double x = wrap(uv.u) * t.width - 0.5;
+    const double fx = std::floor(x);
+    const double ax = x - fx;
+    const auto i0 = static_cast<long long>(fx);
+    const int i = wrap_index(i0, t.width), i1 = wrap_index(i0 + 1, t.width);
+    // Below the bottom row's centre and above the top row's, the row itself:
+    // the poles of a sky do not meet.
+    const double y = std::clamp(uv.v * t.height - 0.5, 0.0, static_cast<double>(t.height - 1));
+    const double fy = std::floor(y);
+    const int j = static_cast<int>(fy), j1 = std::min(j + 1, t.height - 1);
+    return blend(t, i, i1, ax, j, j1, y - fy);
 }
 
 Colour pattern_pigment(const Material& m, const Texture* image, const Shape& shape,

@@ -24,6 +24,11 @@ Uv shape_uv(const Shape& shape, double map_size, const Vec3& p, Uv surface = {})
 // around both edges; (0, 0) is the bottom-left corner of the picture.
 Colour sample_bilinear(const Texture& texture, Uv uv);
 
+// The same blend wrapping around the left and right edges only: v = 0 and
+// below is the bottom row, v = 1 and above the top row, each row a blend of
+// its own texels (docs/language.md §14.3). uv.v must be a number.
+Colour sample_bilinear_rows_clamped(const Texture& texture, Uv uv);
+
 // The pigment at `object_point`, a point in the primitive's object space
 // (before its transform): the image's texel when the material has one
 // (`image`, loaded from its image_map), else the checker's colour on odd

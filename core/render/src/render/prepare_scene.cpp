@@ -10,6 +10,8 @@
 #include <algorithm>
 #include <cmath>
 #include <optional>
+#include <string>
+#include <string_view>
 
 namespace jt {
 
@@ -200,37 +202,65 @@ std::vector<PatternSpace> pattern_spaces(const std::vector<Primitive>& primitive
     return spaces;
 }
 
-// The picture of each material's image_map, each file read once: from the
-// previous prepared scene when it read the file as it is now (or the file is
-// gone for the moment, as while an editor saves it), else from disk.
+// The picture read from `path` whose stamp is now `stamp`, when `in` holds it
+// as it is now (or the file is gone for the moment, as while an editor saves
+// it): among its first `end` textures, or as its background map.
+std::shared_ptr<const Texture> held_picture(const PreparedScene& in,
+                                            const std::filesystem::path& path,
+                                            const FileStamp& stamp, std::size_t end) {
+    auto current = [&](const std::filesystem::path& file, const FileStamp& then) {
+        return file == path && (then == stamp || !stamp.exists);
+    };
+    for (std::size_t i = 0; i < end; ++i)
+        if (in.textures[i] && current(in.texture_files[i], in.texture_stamps[i]))
+            return in.textures[i];
+    if (in.background_map && current(in.background_map_file, in.background_map_stamp))
+        return in.background_map;
+    return nullptr;
+}
+
+// The picture at `path`: from this scene or the previous prepared one when
+// either holds it as it is now, else from disk. Errors start with `property`.
+Expected<std::shared_ptr<const Texture>> picture(const PreparedScene& prepared, std::size_t end,
+                                                 const PreparedScene* previous,
+                                                 const std::filesystem::path& path,
+                                                 const FileStamp& stamp,
+                                                 std::string_view property) {
+    std::shared_ptr<const Texture> texture = held_picture(prepared, path, stamp, end);
+    if (!texture && previous)
+        texture = held_picture(*previous, path, stamp, previous->textures.size());
+    if (texture) return texture;
+    Expected<std::shared_ptr<const Texture>> read = load_texture(path);
+    if (!read) return Error{std::string(property) + ": " + read.error().message};
+    return read;
+}
+
+// The picture of each material's image_map and of the background map, each
+// file read once.
 Expected<void> load_textures(const Scene& scene, PreparedScene& prepared,
                              const PreparedScene* previous) {
     prepared.textures.assign(prepared.materials.size(), nullptr);
     prepared.texture_files.assign(prepared.materials.size(), {});
     prepared.texture_stamps.assign(prepared.materials.size(), {});
-    auto find = [](const PreparedScene& in, const std::filesystem::path& path,
-                   const FileStamp& stamp, std::size_t end) {
-        for (std::size_t i = 0; i < end; ++i)
-            if (in.textures[i] && in.texture_files[i] == path &&
-                (in.texture_stamps[i] == stamp || !stamp.exists))
-                return in.textures[i];
-        return std::shared_ptr<const Texture>();
-    };
     for (std::size_t i = 0; i < prepared.materials.size(); ++i) {
         if (prepared.materials[i].image_map.empty()) continue;
         const std::filesystem::path path = asset_path(scene, prepared.materials[i].image_map);
         const FileStamp stamp = file_stamp(path);
-        std::shared_ptr<const Texture> texture = find(prepared, path, stamp, i);
-        if (!texture && previous) texture = find(*previous, path, stamp, previous->textures.size());
-        if (!texture) {
-            Expected<std::shared_ptr<const Texture>> read = load_texture(path);
-            if (!read) return Error{"image_map: " + read.error().message};
-            texture = *read;
-        }
-        prepared.textures[i] = std::move(texture);
+        auto texture = picture(prepared, i, previous, path, stamp, "image_map");
+        if (!texture) return texture.error();
+        prepared.textures[i] = std::move(*texture);
         prepared.texture_files[i] = path;
         prepared.texture_stamps[i] = stamp;
     }
+    if (scene.settings.background_map.empty()) return {};
+    const std::filesystem::path path = asset_path(scene, scene.settings.background_map);
+    const FileStamp stamp = file_stamp(path);
+    auto texture =
+        picture(prepared, prepared.textures.size(), previous, path, stamp, "background_map");
+    if (!texture) return texture.error();
+    prepared.background_map = std::move(*texture);
+    prepared.background_map_file = path;
+    prepared.background_map_stamp = stamp;
     return {};
 }
 

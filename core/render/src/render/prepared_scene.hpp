@@ -105,6 +105,11 @@ struct PreparedScene {
     std::vector<std::shared_ptr<const Texture>> textures;
     std::vector<std::filesystem::path> texture_files;  // where each was read from
     std::vector<FileStamp> texture_stamps;             // and its stamp then
+    // The picture of render_settings' background_map (null for none), where it
+    // was read from and its stamp then, as for `textures`.
+    std::shared_ptr<const Texture> background_map;
+    std::filesystem::path background_map_file;
+    FileStamp background_map_stamp;
     // Whether any material transmits: only then do shadow rays look past the
     // first surface they meet (docs/language.md §13.2).
     bool has_transmission = false;

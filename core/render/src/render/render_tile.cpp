@@ -6,6 +6,7 @@
 #include "render/prepared_frame.hpp"
 #include "render/prepared_scene.hpp"
 #include "render/sample_pattern.hpp"
+#include "render/sky_map.hpp"
 #include "render/trace.hpp"
 
 #include <tbb/parallel_for.h>
@@ -75,8 +76,8 @@ bool trace_samples(const PreparedFrame& f, const RenderPass& pass, TileBuffer& o
     const CameraFrame& camera = f.camera;
     const ViewTable& table = f.view_table();
     // Where a block lists no shape and nothing unlisted could be met (no
-    // planes, no triangles), its rays meet nothing: the background, as
-    // trace_ray would find it, without its set-up.
+    // planes, no triangles), its rays meet nothing: the background (or its
+    // map), as trace_ray would find it, without its set-up.
     const Geometry& geometry = *f.scene->geometry;
     const bool open_sky = table.built && geometry.planes.empty() && !geometry.triangles;
     auto trace = [&](double x, double y, const Vec3& direction, const PixelSample& sample) {
@@ -84,7 +85,7 @@ bool trace_samples(const PreparedFrame& f, const RenderPass& pass, TileBuffer& o
         const ListedShapes seen = shapes_seen(table, x, y);
         if (open_sky && seen.size() == 0) {
             ++rays;
-            return f.scene->settings.background;
+            return miss_colour(*f.scene, direction);
         }
         return trace_ray(*f.scene, camera.position, direction, 0.0, sample, rays, &seen);
     };

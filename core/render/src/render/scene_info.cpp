@@ -102,12 +102,24 @@ Expected<SceneInfo> scene_info(const Scene& scene) {
             info.world_box.add(box->upper);
         }
     }
+    // Each picture's memory once, though a material may name the background
+    // map's file too: they share one decoded copy.
+    const std::filesystem::path sky = scene.settings.background_map.empty()
+                                          ? std::filesystem::path()
+                                          : asset_path(scene, scene.settings.background_map);
+    std::vector<std::filesystem::path> material_maps;
+    for (const Primitive& p : scene.primitives)
+        if (!p.material.image_map.empty())
+            material_maps.push_back(asset_path(scene, p.material.image_map));
     for (const std::filesystem::path& path : named_files(scene).images) {
         const Expected<std::shared_ptr<const Texture>> texture = load_texture(path);
         if (!texture) return texture.error();
         const std::size_t bytes = (*texture)->rgb8.size() + (*texture)->rgb16.size() * 2;
         info.memory.image_maps += bytes;
-        info.image_maps.push_back({path, (*texture)->width, (*texture)->height, bytes});
+        const ImageMapInfo row{path, (*texture)->width, (*texture)->height, bytes};
+        if (!sky.empty() && path == sky) info.background_map = row;
+        if (std::find(material_maps.begin(), material_maps.end(), path) != material_maps.end())
+            info.image_maps.push_back(row);
     }
     info.memory.primitives = scene.primitives.size() * sizeof(Primitive);
 

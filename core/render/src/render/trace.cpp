@@ -6,6 +6,7 @@
 #include "render/pixel_hash.hpp"
 #include "render/ray_queries.hpp"
 #include "render/refraction.hpp"
+#include "render/sky_map.hpp"
 
 #include <glm/geometric.hpp>
 
@@ -229,7 +230,7 @@ Colour trace_branching(const PreparedScene& scene, const Vec3& o, const Vec3& d,
                        const Departure& leaving) {
     ++rays;
     const SurfaceHit s = first_surface(*scene.geometry, o, d, t_lower, candidates, leaving);
-    if (s.kind == SurfaceHit::Kind::miss) return scene.settings.background;
+    if (s.kind == SurfaceHit::Kind::miss) return miss_colour(scene, d);
     if (s.kind == SurfaceHit::Kind::no_normal) return Colour(0.0);
     Colour c = shade_surface(scene, s, d, sample, rays);
     if (depth >= depth_limit) return c;
@@ -292,7 +293,7 @@ Colour trace_ray(const PreparedScene& scene, const Vec3& origin, const Vec3& uni
         const SurfaceHit s = first_surface(geometry, o, d, t_lower,
                                            depth == 0 ? first_candidates : nullptr, leaving);
         if (s.kind != SurfaceHit::Kind::surface) {
-            keep(depth, s.kind == SurfaceHit::Kind::miss ? scene.settings.background : Colour(0.0));
+            keep(depth, s.kind == SurfaceHit::Kind::miss ? miss_colour(scene, d) : Colour(0.0));
             break;
         }
         keep(depth, shade_surface(scene, s, d, sample, rays));

@@ -57,7 +57,7 @@ std::filesystem::path asset_path(const Scene& scene, const std::string& name);
 // Every file the scene names, each once in scene order, as asset_path finds it.
 struct NamedFiles {
     std::vector<std::filesystem::path> models;  // of meshes
-    std::vector<std::filesystem::path> images;  // of image maps
+    std::vector<std::filesystem::path> images;  // the background map, then image maps
 };
 NamedFiles named_files(const Scene& scene);
 

@@ -22,9 +22,13 @@ Expected<std::vector<std::uint8_t>> read_file_bytes(const std::filesystem::path&
     if (!file) return Error{"cannot read " + file_message(path, std::strerror(errno))};
     std::uint8_t buffer[65536];
     std::size_t n;
+    errno = 0;
     while ((n = std::fread(buffer, 1, sizeof buffer, file.get())) > 0)
         bytes.insert(bytes.end(), buffer, buffer + n);
-    if (std::ferror(file.get())) return Error{"cannot read " + file_message(path, "read error")};
+    // A directory opens but does not read (EISDIR): say so, not "read error".
+    if (std::ferror(file.get()))
+        return Error{"cannot read " +
+                     file_message(path, errno != 0 ? std::strerror(errno) : "read error")};
     return bytes;
 }
 

@@ -162,6 +162,7 @@ NamedFiles named_files(const Scene& scene) {
         const std::filesystem::path path = asset_path(scene, name);
         if (std::find(to.begin(), to.end(), path) == to.end()) to.push_back(path);
     };
+    add(files.images, scene.settings.background_map);
     for (const Primitive& p : scene.primitives) {
         if (const auto* mesh = std::get_if<Mesh>(&p.shape)) add(files.models, mesh->file);
         add(files.images, p.material.image_map);

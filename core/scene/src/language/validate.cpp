@@ -30,6 +30,7 @@ class Validator {
 
     std::vector<Diagnostic> run() {
         check_settings();
+        check_background_map();
         check_cameras();
         check_primitives();
         check_lights();
@@ -115,6 +116,36 @@ class Validator {
                         (scene_.cameras[0].name.empty() ? std::string()
                                                         : " (\"" + scene_.cameras[0].name + "\")"));
         }
+    }
+
+    // Whether the property was written in the block (any occurrence).
+    bool written(const BlockSource* block, std::string_view name) const {
+        if (!block) return false;
+        for (const PropertySource& p : properties_of(source_, *block))
+            if (p.name == name) return true;
+        return false;
+    }
+
+    // The map must decode, with the render's own error, as image maps must
+    // (docs/language.md §14.3); the check's decoded picture is the render's.
+    void check_background_map() {
+        const RenderSettings& s = scene_.settings;
+        const BlockSource* block = settings_block();
+        const SourcePos pos = where(block, "background_map");
+        if (s.background_map.empty()) {
+            // The default means "no map"; written out, "" names no file.
+            if (written(block, "background_map"))
+                error(pos,
+                      "background_map: the file name is empty (leave 'background_map' out to "
+                      "show the background colour)");
+            return;
+        }
+        if (written(block, "background"))
+            warning(where(block, "background"),
+                    "'background' and 'background_map' are both set: the background map wins, "
+                    "so no ray shows this colour");
+        auto texture = load_texture(asset_path(scene_, s.background_map));
+        if (!texture) error(pos, "background_map: " + texture.error().message);
     }
 
     void check_cameras() {
