@@ -45,6 +45,12 @@ std::vector<MalformedScene> malformed_scenes() {
         {"ranges: 1e400", "render_settings { width: 1e400; }\n", "1:26"},
         {"ranges: nan spelled out", camera + "scene { sphere { radius: nan; } }\n", "2:26"},
         {"ranges: inf spelled out", camera + "scene { sphere { radius: inf; } }\n", "2:26"},
+        {"ranges: smooth_angle -1",
+         camera + "scene { mesh { smooth_angle: -1; file: \"m.obj\"; } }\n", "2:30"},
+        {"ranges: smooth_angle 181",
+         camera + "scene { mesh { smooth_angle: 181; file: \"m.obj\"; } }\n", "2:30"},
+        {"kinds: string for smooth_angle",
+         camera + "scene { mesh { smooth_angle: \"x\"; file: \"m.obj\"; } }\n", "2:30"},
         {"validation: look_at equals position",
          "render_settings { width: 8; height: 8; }\n"
          "cameras { perspective_camera { position: <1, 2, 3>; look_at: <1, 2, 3>; } }\n",

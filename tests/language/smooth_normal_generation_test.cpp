@@ -213,6 +213,28 @@ TEST(SmoothNormalGeneration, WarningsAtTheFileStringAndAtTheProperty) {
               "ignored");
 }
 
+// A model past the work bound is an error where the angle is written, for
+// --check as for a render.
+TEST(SmoothNormalGeneration, AModelPastTheWorkBoundIsAnErrorAtTheAngle) {
+    test::ScratchDir dir;
+    constexpr int sides = 6000;
+    std::string obj = "v 0 0 1\n";
+    for (int i = 0; i < sides; ++i) {
+        const double a = 2 * std::numbers::pi * i / sides;
+        obj += "v " + std::to_string(std::cos(a)) + " " + std::to_string(std::sin(a)) + " 0\n";
+    }
+    for (int i = 0; i < sides; ++i)
+        obj += "f 1 " + std::to_string(2 + i) + " " + std::to_string(2 + (i + 1) % sides) + "\n";
+    test::write_file(dir.path() / "cone.obj", obj);
+    const std::string found =
+        check(dir.path(), "scene { mesh { file: \"cone.obj\"; smooth_angle: 30; } }\n");
+    EXPECT_EQ(
+        found.rfind("3:48: error: mesh 1: 'cone.obj': smooth_angle would compare more than ", 0),
+        0u)
+        << found;
+    EXPECT_NE(found.find("6000 triangles meet at <0, 0, 1>"), std::string::npos) << found;
+}
+
 TEST(SmoothNormalGeneration, TheAngleIsCheckedWhereItIsWritten) {
     const std::string mesh = std::string(kHead) + "scene { mesh { file: \"m.obj\"; smooth_angle: ";
     EXPECT_EQ(brief(mesh + "-1; } }"),

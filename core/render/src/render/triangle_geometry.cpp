@@ -111,11 +111,11 @@ Expected<const CornerNormals*> generated_normals(TriangleModel& model, double de
     if (corners_without_normals(*model.model) == 0) return nullptr;
     auto known = model.generated.find(degrees);
     if (known == model.generated.end()) {
-        Expected<CornerNormals> normals = smooth_corner_normals(*model.model, degrees);
+        auto normals = shared_corner_normals(model.model, degrees);
         if (!normals) return normals.error();
         known = model.generated.emplace(degrees, std::move(*normals)).first;
     }
-    return &known->second;
+    return known->second.get();
 }
 
 }  // namespace

@@ -31,7 +31,7 @@ namespace jt {
 struct TriangleModel {
     std::shared_ptr<const Model> model;
     RTCScene scene = nullptr;
-    std::map<double, CornerNormals> generated;
+    std::map<double, std::shared_ptr<const CornerNormals>> generated;
 
     TriangleModel() = default;
     TriangleModel(const TriangleModel&) = delete;

@@ -13,6 +13,7 @@
 
 #include <array>
 #include <cstddef>
+#include <memory>
 #include <vector>
 
 namespace jt {
@@ -33,5 +34,11 @@ using CornerNormals = std::vector<std::array<Vec3, 3>>;
 // an error saying where, not a hang.
 Expected<CornerNormals> smooth_corner_normals(const Model& model, double degrees);
 std::size_t smooth_normal_comparisons(const Model& model);
+
+// The same, from memory when this model (shared_model's copy) and angle were
+// asked for lately: the validator makes them, to report a model past the
+// bound where the angle is written, and the render that follows takes them.
+Expected<std::shared_ptr<const CornerNormals>> shared_corner_normals(
+    const std::shared_ptr<const Model>& model, double degrees);
 
 }  // namespace jt

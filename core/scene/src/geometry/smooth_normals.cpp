@@ -8,6 +8,8 @@
 #include <algorithm>
 #include <cmath>
 #include <cstdint>
+#include <deque>
+#include <mutex>
 #include <numbers>
 #include <string>
 #include <utility>
@@ -109,6 +111,34 @@ Expected<CornerNormals> smooth_corner_normals(const Model& model, double degrees
         }
     }
     return normals;
+}
+
+Expected<std::shared_ptr<const CornerNormals>> shared_corner_normals(
+    const std::shared_ptr<const Model>& model, double degrees) {
+    using Result = Expected<std::shared_ptr<const CornerNormals>>;
+    // A handful: a scene's few smooth meshes between validation and render.
+    // Each entry holds its model, so the address cannot name another one.
+    struct Entry {
+        std::shared_ptr<const Model> model;
+        double degrees;
+        Result result;
+    };
+    constexpr std::size_t kept = 4;
+    static std::mutex mutex;
+    static std::deque<Entry> recent;
+    {
+        const std::lock_guard<std::mutex> lock(mutex);
+        for (const Entry& e : recent)
+            if (e.model == model && e.degrees == degrees) return e.result;
+    }
+    // Made outside the lock: another model's render need not wait for this one.
+    Expected<CornerNormals> made = smooth_corner_normals(*model, degrees);
+    Result result = made ? Result(std::make_shared<const CornerNormals>(std::move(*made)))
+                         : Result(made.error());
+    const std::lock_guard<std::mutex> lock(mutex);
+    recent.push_front({model, degrees, result});
+    if (recent.size() > kept) recent.pop_back();
+    return result;
 }
 
 }  // namespace jt

@@ -202,6 +202,7 @@ class Validator {
             if (!model) {
                 verdict.error = model.error().message;
             } else {
+                verdict.model = *model;
                 verdict.warnings = model_warnings(**model);
                 verdict.corners = 3 * (*model)->triangles.size();
                 verdict.corners_without_normals = corners_without_normals(**model);
@@ -218,6 +219,7 @@ class Validator {
         std::string error;  // "": it loads
         std::vector<std::string> warnings;
         std::size_t corners = 0, corners_without_normals = 0;
+        std::shared_ptr<const Model> model;  // null when it does not load
     };
 
     // Language 1.1 shades a triangle flat when the file lacks a normal at any
@@ -227,6 +229,15 @@ class Validator {
         if (mesh.shading == kFlatShading && mesh.smooth_angle) {
             warning(where(block, "smooth_angle"),
                     which + "'smooth_angle' does nothing with shading \"flat\": it is ignored");
+        }
+        // Made here to report a model past the work bound at the angle; the
+        // render takes them from memory (smooth_normals.hpp).
+        if (mesh.shading == kSmoothShading && mesh.smooth_angle && verdict.model &&
+            verdict.corners_without_normals > 0) {
+            const auto normals = shared_corner_normals(verdict.model, *mesh.smooth_angle);
+            if (!normals)
+                error(where(block, "smooth_angle"),
+                      which + "'" + mesh.file + "': " + normals.error().message);
         }
         if (mesh.shading == kSmoothShading && !mesh.smooth_angle &&
             verdict.corners_without_normals > 0) {
