@@ -44,7 +44,7 @@ def frame(t, p, q):
     return c, n, b
 
 
-def write(path, along, around, p, q, tube):
+def write(path, along, around, p, q, tube, normals=True):
     rows = []  # (position, normal) per grid point, the seams doubled
     for i in range(along + 1):
         t = 2.0 * math.pi * (i % along) / along
@@ -63,15 +63,21 @@ def write(path, along, around, p, q, tube):
                 "comment a (%d, %d) torus knot written by bench/generate_model.py\n"
                 "element vertex %d\n"
                 "property float x\nproperty float y\nproperty float z\n"
-                "property float nx\nproperty float ny\nproperty float nz\n"
+                "%s"
                 "property float s\nproperty float t\n"
                 "element face %d\nproperty list uchar uint vertex_indices\nend_header\n"
-                % (p, q, vertices, faces)
+                % (
+                    p,
+                    q,
+                    vertices,
+                    "property float nx\nproperty float ny\nproperty float nz\n" if normals else "",
+                    faces,
+                )
             ).encode()
         )
-        vertex = struct.Struct("<8f")
+        vertex = struct.Struct("<8f" if normals else "<5f")
         for pos, d, s, t in rows:
-            out.write(vertex.pack(*pos, *d, s, t))
+            out.write(vertex.pack(*pos, *d, s, t) if normals else vertex.pack(*pos, s, t))
         face = struct.Struct("<B3I")
         w = around + 1
         for i in range(along):
@@ -83,12 +89,12 @@ def write(path, along, around, p, q, tube):
     return faces
 
 
-def write_knot(path, triangles, p=2, q=3, tube=0.45):
+def write_knot(path, triangles, p=2, q=3, tube=0.45, normals=True):
     """A knot of about `triangles` triangles; returns how many it has."""
     # along = 8 * around keeps the cells about square.
     around = max(3, round(math.sqrt(triangles / 16.0)))
     along = max(3, round(triangles / (2.0 * around)))
-    return write(path, along, around, p, q, tube)
+    return write(path, along, around, p, q, tube, normals)
 
 
 def main():
@@ -98,8 +104,15 @@ def main():
     parser.add_argument("--p", type=int, default=2)
     parser.add_argument("--q", type=int, default=3)
     parser.add_argument("--tube", type=float, default=0.45)
+    parser.add_argument(
+        "--no-normals",
+        action="store_true",
+        help="leave the vertex normals out (for smooth_angle, docs/language.md 14.4)",
+    )
     args = parser.parse_args()
-    faces = write_knot(args.output, args.triangles, args.p, args.q, args.tube)
+    faces = write_knot(
+        args.output, args.triangles, args.p, args.q, args.tube, not args.no_normals
+    )
     print("%s: %d triangles" % (args.output, faces), file=sys.stderr)
 
 

@@ -20,6 +20,7 @@
 #include "converter_cli.hpp"
 #include "jtracer/affine.hpp"
 #include "jtracer/model_cache.hpp"
+#include "jtracer/smooth_normals.hpp"
 #include "jtracer/texture.hpp"
 #include "jtracer/validate.hpp"
 #include "render/camera_rays.hpp"
@@ -158,10 +159,12 @@ void write_matrix(PovWriter& out, const jt::Affine& world) {
 }
 
 // A mesh2 of triangles: mirrored corners, the normals when given (smooth
-// shading), the texture coordinates when given.
+// shading), the texture coordinates when given. Normals are one a vertex, or
+// with `normal_per_corner` one for each corner of each triangle in turn.
 void write_mesh2(PovWriter& out, const std::vector<Vec3>& positions,
                  const std::vector<Vec3>& normals, const std::vector<glm::dvec2>& uvs,
-                 const std::vector<std::array<std::uint32_t, 3>>& triangles) {
+                 const std::vector<std::array<std::uint32_t, 3>>& triangles,
+                 bool normal_per_corner = false) {
     out.printf("mesh2 {\n vertex_vectors { %zu", positions.size());
     for (const Vec3& v : positions) out.vector(", ", mirror(v));
     out.printf(" }\n");
@@ -178,6 +181,12 @@ void write_mesh2(PovWriter& out, const std::vector<Vec3>& positions,
     out.printf(" face_indices { %zu", triangles.size());
     for (const auto& t : triangles) out.printf(", <%u, %u, %u>", t[0], t[1], t[2]);
     out.printf(" }\n");
+    if (normal_per_corner) {
+        out.printf(" normal_indices { %zu", triangles.size());
+        for (std::size_t t = 0; t < triangles.size(); ++t)
+            out.printf(", <%zu, %zu, %zu>", 3 * t, 3 * t + 1, 3 * t + 2);
+        out.printf(" }\n");
+    }
 }
 
 // A mesh's model as mesh2; false when it cannot be read or holds nothing.
@@ -193,6 +202,17 @@ bool write_model(PovWriter& out, const jt::Mesh& mesh, const jt::Scene& scene) {
                         std::none_of(m.normals.begin(), m.normals.end(),
                                      [](const glm::vec3& n) { return n == glm::vec3(0.0f); });
     if (smooth) normals.assign(m.normals.begin(), m.normals.end());
+    // With smooth_angle, the corners without a file normal have generated
+    // ones (docs/language.md §14.4): written one a corner.
+    if (mesh.shading == jt::kSmoothShading && mesh.smooth_angle && !smooth &&
+        jt::corners_without_normals(m) > 0) {
+        const auto corners = jt::shared_corner_normals(*model, *mesh.smooth_angle);
+        if (!corners) return false;
+        for (const auto& triangle : **corners)
+            normals.insert(normals.end(), triangle.begin(), triangle.end());
+        write_mesh2(out, positions, normals, uvs, m.triangles, true);
+        return true;
+    }
     write_mesh2(out, positions, normals, uvs, m.triangles);
     return true;
 }

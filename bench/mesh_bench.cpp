@@ -6,7 +6,10 @@
 // model placed 100 times, to show that instances cost no model memory.
 //
 //   bench/generate_model.py --triangles 1000000 /tmp/knot1m.ply
-//   build/release/bench/mesh-bench /tmp/knot1m.ply [--threads N]
+//   build/release/bench/mesh-bench /tmp/knot1m.ply [--threads N] [--smooth-angle A]
+//
+// --smooth-angle gives the mesh that smooth_angle, so that a model without
+// normals shows what generating them costs (docs/language.md §14.4).
 
 #include "jtracer/model_cache.hpp"
 #include "jtracer/render_job.hpp"
@@ -18,6 +21,7 @@
 #include <cstdio>
 #include <cstdlib>
 #include <fstream>
+#include <optional>
 #include <string>
 
 namespace {
@@ -46,7 +50,7 @@ double status_mib(const std::string& key) {
     return 0.0;
 }
 
-jt::Scene scene_of(const std::string& file, int copies) {
+jt::Scene scene_of(const std::string& file, int copies, std::optional<double> smooth_angle) {
     jt::Scene scene;
     scene.settings.width = 1920;
     scene.settings.height = 1080;
@@ -57,7 +61,10 @@ jt::Scene scene_of(const std::string& file, int copies) {
     camera.aspect = 1920.0 / 1080.0;
     scene.cameras.push_back(camera);
     for (int i = 0; i < copies; ++i) {
-        jt::Primitive p{jt::Mesh{file, "smooth"}, {}, {}};
+        jt::Mesh mesh;
+        mesh.file = file;
+        mesh.smooth_angle = smooth_angle;
+        jt::Primitive p{mesh, {}, {}};
         p.material.pigment = {0.9, 0.6, 0.2};
         p.material.ambient = jt::Colour(0.3);
         p.material.diffuse = jt::Colour(0.9);
@@ -78,12 +85,16 @@ jt::Scene scene_of(const std::string& file, int copies) {
 
 int main(int argc, char** argv) {
     if (argc < 2) {
-        std::fprintf(stderr, "usage: mesh-bench MODEL.ply [--threads N]\n");
+        std::fprintf(stderr, "usage: mesh-bench MODEL.ply [--threads N] [--smooth-angle A]\n");
         return 2;
     }
     const std::string file = argv[1];
     int threads = 0;
-    if (argc >= 4 && std::string(argv[2]) == "--threads") threads = std::atoi(argv[3]);
+    std::optional<double> smooth_angle;
+    for (int i = 2; i + 1 < argc; i += 2) {
+        if (std::string(argv[i]) == "--threads") threads = std::atoi(argv[i + 1]);
+        if (std::string(argv[i]) == "--smooth-angle") smooth_angle = std::atof(argv[i + 1]);
+    }
 
     auto start = Clock::now();
     double cpu_start = cpu_seconds();
@@ -98,7 +109,7 @@ int main(int argc, char** argv) {
                 cpu_seconds() - cpu_start, status_mib("VmRSS"));
 
     for (int copies : {1, 100}) {
-        const jt::Scene scene = scene_of(file, copies);
+        const jt::Scene scene = scene_of(file, copies, smooth_angle);
         start = Clock::now();
         cpu_start = cpu_seconds();
         auto prepared = jt::prepare_scene(scene);

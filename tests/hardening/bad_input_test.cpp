@@ -55,6 +55,12 @@ std::vector<MalformedScene> malformed_scenes() {
          "cameras { perspective_camera { look_at: <0, 0, -1>; aperture: -1; } }\n", "1:63"},
         {"ranges: focus distance 0",
          "cameras { perspective_camera { look_at: <0, 0, -1>; focus_distance: 0; } }\n", "1:69"},
+        {"ranges: smooth_angle -1",
+         camera + "scene { mesh { smooth_angle: -1; file: \"m.obj\"; } }\n", "2:30"},
+        {"ranges: smooth_angle 181",
+         camera + "scene { mesh { smooth_angle: 181; file: \"m.obj\"; } }\n", "2:30"},
+        {"kinds: string for smooth_angle",
+         camera + "scene { mesh { smooth_angle: \"x\"; file: \"m.obj\"; } }\n", "2:30"},
         {"validation: look_at equals position",
          "render_settings { width: 8; height: 8; }\n"
          "cameras { perspective_camera { position: <1, 2, 3>; look_at: <1, 2, 3>; } }\n",

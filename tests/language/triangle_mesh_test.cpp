@@ -103,7 +103,9 @@ TEST(TriangleMesh, AMeshNeedsAFile) {
 TEST(TriangleMesh, ModelProblemsAreLocatedAtTheFileString) {
     test::ScratchDir dir;
     std::filesystem::create_directories(dir.path() / "models");
-    test::write_file(dir.path() / "models/ok.obj", "v 0 0 0\nv 1 0 0\nv 0 1 0\nf 1 2 3\n");
+    // With its normals: a smooth mesh without them is warned about.
+    test::write_file(dir.path() / "models/ok.obj",
+                     "v 0 0 0\nv 1 0 0\nv 0 1 0\nvn 0 0 1\nf 1//1 2//1 3//1\n");
     test::write_file(dir.path() / "models/line.obj", "v 0 0 0\nv 1 0 0\nv 2 0 0\nf 1 2 3\n");
     test::write_file(dir.path() / "s.jts", std::string(kHead) +
                                                "scene {\n"
@@ -134,7 +136,7 @@ TEST(TriangleMesh, WhatAModelLeavesOutIsAWarningAtTheFileString) {
     for (const char* file : {"IndexOutOfRange.gltf", "IndexOutOfRange.bin"})
         std::filesystem::copy_file(gltf / file, dir.path() / "scene" / file);
     test::write_file(dir.path() / "scene/m.obj",
-                     "mtllib ../m.mtl\nv 0 0 0\nv 1 0 0\nv 0 1 0\nf 1 2 3\n");
+                     "mtllib ../m.mtl\nv 0 0 0\nv 1 0 0\nv 0 1 0\nvn 0 0 1\nf 1//1 2//1 3//1\n");
     test::write_file(dir.path() / "scene/s.jts", std::string(kHead) +
                                                      "scene {\n"
                                                      "  mesh { file: \"IndexOutOfRange.gltf\"; }\n"

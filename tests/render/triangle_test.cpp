@@ -31,7 +31,10 @@ Primitive triangle(const Vec3& a, const Vec3& b, const Vec3& c, const Material& 
 
 Primitive mesh(const std::filesystem::path& file, const Material& m = {},
                std::string_view shading = kSmoothShading) {
-    return Primitive{Mesh{file.string(), std::string(shading)}, m, {}};
+    Mesh shape;
+    shape.file = file.string();
+    shape.shading = std::string(shading);
+    return Primitive{shape, m, {}};
 }
 
 // The triangle z = -2 with corners (-1,-1), (1,-1), (-1,1): the ray from the

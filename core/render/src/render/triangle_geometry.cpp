@@ -104,6 +104,20 @@ void attach_loose(TriangleGeometry& t) {
     rtcReleaseGeometry(g);
 }
 
+// The corner normals of `model` at smooth_angle `degrees`, made once for all
+// the meshes that use them; null when the file gives every corner a normal,
+// so those meshes keep language 1.1's path.
+Expected<const CornerNormals*> generated_normals(TriangleModel& model, double degrees) {
+    if (corners_without_normals(*model.model) == 0) return nullptr;
+    auto known = model.generated.find(degrees);
+    if (known == model.generated.end()) {
+        auto normals = shared_corner_normals(model.model, degrees);
+        if (!normals) return normals.error();
+        known = model.generated.emplace(degrees, std::move(*normals)).first;
+    }
+    return known->second.get();
+}
+
 }  // namespace
 
 Expected<std::unique_ptr<TriangleGeometry>> build_triangle_geometry(const Scene& scene) {
@@ -154,6 +168,11 @@ Expected<std::unique_ptr<TriangleGeometry>> build_triangle_geometry(const Scene&
         }
         MeshInstance instance;
         instance.model = known->second;
+        if (mesh->smooth_angle && mesh->shading == kSmoothShading) {
+            auto normals = generated_normals(*t->models[known->second], *mesh->smooth_angle);
+            if (!normals) return Error{"mesh: '" + mesh->file + "': " + normals.error().message};
+            instance.corner_normals = *normals;
+        }
         instance.to_object = transform.to_object;
         instance.normal_matrix = transform.normal_matrix;
         instance.smooth = mesh->shading == kSmoothShading;

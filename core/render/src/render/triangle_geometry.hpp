@@ -12,21 +12,26 @@
 #include "jtracer/error.hpp"
 #include "jtracer/model_file.hpp"
 #include "jtracer/scene.hpp"
+#include "jtracer/smooth_normals.hpp"
 
 #include <embree3/rtcore.h>
 
 #include <array>
 #include <cstdint>
 #include <limits>
+#include <map>
 #include <memory>
 #include <vector>
 
 namespace jt {
 
-// A model in its own Embree scene, shared by all its instances.
+// A model in its own Embree scene, shared by all its instances, and the
+// corner normals generated for it, one set for each smooth_angle its smooth
+// meshes name (docs/language.md §14.4).
 struct TriangleModel {
     std::shared_ptr<const Model> model;
     RTCScene scene = nullptr;
+    std::map<double, std::shared_ptr<const CornerNormals>> generated;
 
     TriangleModel() = default;
     TriangleModel(const TriangleModel&) = delete;
@@ -40,6 +45,10 @@ struct MeshInstance {
     Affine to_object;
     glm::dmat3 normal_matrix{1.0};  // inverse transpose of the object-to-world map
     bool smooth = true;             // shading: "smooth"
+    // With smooth_angle, when the file lacks a normal at some corner: every
+    // corner's normal (in TriangleModel::generated). Null: the file's normals
+    // alone, as in language 1.1.
+    const CornerNormals* corner_normals = nullptr;
     std::uint32_t source = 0;
 };
 

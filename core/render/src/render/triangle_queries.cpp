@@ -166,7 +166,10 @@ TriangleSurface triangle_surface(const TriangleGeometry& g, const TriangleHit& h
     const Vec3 a = corner(m, hit.id.triangle, 0);
     s.geometric = instance.normal_matrix *
                   glm::cross(corner(m, hit.id.triangle, 1) - a, corner(m, hit.id.triangle, 2) - a);
-    if (instance.smooth && !m.normals.empty()) {
+    if (instance.smooth && instance.corner_normals) {
+        const auto& n = (*instance.corner_normals)[hit.id.triangle];
+        s.shading = instance.normal_matrix * (w * n[0] + hit.u * n[1] + hit.v * n[2]);
+    } else if (instance.smooth && !m.normals.empty()) {
         const Vec3 na(m.normals[corners[0]]), nb(m.normals[corners[1]]), nc(m.normals[corners[2]]);
         if (na != Vec3(0.0) && nb != Vec3(0.0) && nc != Vec3(0.0))
             s.shading = instance.normal_matrix * (w * na + hit.u * nb + hit.v * nc);

@@ -3,6 +3,8 @@
 // values, in the parser, the validator, the render job, the command-line flags
 // and the viewer's fields, uses these names.
 
+#include <cstddef>
+
 namespace jt {
 
 // Widest and tallest image a scene may ask for (0 means "not set"). Images
@@ -16,6 +18,14 @@ inline constexpr int kMaxSamples = 1024;
 // A soft light's shadow rays per shading point (docs/language.md §14.1).
 inline constexpr int kMinShadowSamples = 1;
 inline constexpr int kMaxShadowSamples = 1024;
+
+// Generated smooth normals (docs/language.md §14.4) compare the triangles that
+// meet at one position pairwise. A model may take this many comparisons, plus
+// this many for each corner of its triangles (a real one needs a few dozen a
+// corner), so that triangles of many directions around one point cannot hang
+// a render.
+inline constexpr std::size_t kSmoothNormalComparisons = std::size_t{1} << 24;
+inline constexpr std::size_t kSmoothNormalComparisonsPerCorner = 64;
 
 // Deeper recurse_depth values are clamped here, with a warning; the tracer
 // keeps one entry per bounce on its stack, so this also bounds that stack.

@@ -3,6 +3,7 @@
 #include "jtracer/affine.hpp"
 #include "jtracer/model_cache.hpp"
 #include "jtracer/schema.hpp"
+#include "jtracer/smooth_normals.hpp"
 #include "jtracer/texture.hpp"
 #include "jtracer/value_text.hpp"
 
@@ -239,20 +240,56 @@ class Validator {
         if (known == models_.end()) {
             ModelVerdict verdict;
             auto model = shared_model(asset_path(scene_, mesh.file), scene_.asset_folder);
-            if (!model)
+            if (!model) {
                 verdict.error = model.error().message;
-            else
+            } else {
+                verdict.model = *model;
                 verdict.warnings = model_warnings(**model);
+                verdict.corners = 3 * (*model)->triangles.size();
+                verdict.corners_without_normals = corners_without_normals(**model);
+            }
             known = models_.emplace(mesh.file, verdict).first;
         }
-        if (!known->second.error.empty()) error(pos, which + known->second.error);
-        for (const std::string& w : known->second.warnings)
+        const ModelVerdict& verdict = known->second;
+        if (!verdict.error.empty()) error(pos, which + verdict.error);
+        for (const std::string& w : verdict.warnings)
             warning(pos, which + "'" + mesh.file + "' " + w);
+        check_smooth_angle(mesh, block, which, verdict);
     }
     struct ModelVerdict {
         std::string error;  // "": it loads
         std::vector<std::string> warnings;
+        std::size_t corners = 0, corners_without_normals = 0;
+        std::shared_ptr<const Model> model;  // null when it does not load
     };
+
+    // Language 1.1 shades a triangle flat when the file lacks a normal at any
+    // of its corners; smooth_angle generates them (docs/language.md §14.4).
+    void check_smooth_angle(const Mesh& mesh, const BlockSource* block, const std::string& which,
+                            const ModelVerdict& verdict) {
+        if (mesh.shading == kFlatShading && mesh.smooth_angle) {
+            warning(where(block, "smooth_angle"),
+                    which + "'smooth_angle' does nothing with shading \"flat\": it is ignored");
+        }
+        // Made here to report a model past the work bound at the angle; the
+        // render takes them from memory (smooth_normals.hpp).
+        if (mesh.shading == kSmoothShading && mesh.smooth_angle && verdict.model &&
+            verdict.corners_without_normals > 0) {
+            const auto normals = shared_corner_normals(verdict.model, *mesh.smooth_angle);
+            if (!normals)
+                error(where(block, "smooth_angle"),
+                      which + "'" + mesh.file + "': " + normals.error().message);
+        }
+        if (mesh.shading == kSmoothShading && !mesh.smooth_angle &&
+            verdict.corners_without_normals > 0) {
+            warning(where(block, "file"),
+                    which + "'" + mesh.file + "' has no normal at " +
+                        std::to_string(verdict.corners_without_normals) + " of its " +
+                        std::to_string(verdict.corners) +
+                        " triangle corners: their triangles are shaded flat; smooth_angle (such "
+                        "as 60) generates normals there");
+        }
+    }
     std::map<std::string, ModelVerdict> models_;
 
     // The picture must decode (docs/language.md §13.4), with the error the
