@@ -16,6 +16,13 @@
 // BMP image maps stored top-down and bottom-up), with the files written to a
 // folder of their own; its seeds are set by JT_DIFFERENTIAL_SEEDS_1_1.
 //
+// The features of docs/language.md §14 have a run each (lights with a radius,
+// lenses, sky maps, generated normals) and one run with all of them together,
+// on language 1.1's scenes; their seeds are set by JT_DIFFERENTIAL_SEEDS_1_2.
+// A feature's run skips until the core implements it: kLanded below says
+// which do (JT_DIFFERENTIAL_UNLANDED=1 runs them all, to try an
+// implementation before turning it on).
+//
 // Seeds: 0-299 by default (0-59 under the sanitizers). Any range by hand:
 //   JT_DIFFERENTIAL_SEEDS=1000-4999 build/release/tests/render/render_tests
 //   --gtest_filter='Differential.*'
@@ -53,12 +60,30 @@ constexpr std::uint64_t default_last_seed = 59;
 constexpr std::uint64_t default_last_seed = 299;
 #endif
 
+// The features of §14 the core implements. A feature's generator joins the
+// differential runs when its implementation lands: turn it on here then.
+constexpr Features kLanded{
+    .soft_shadows = false,
+    .lens = false,
+    .sky = false,
+    .generated_normals = false,
+};
+
+// Language 1.2's runs are several, each on fewer seeds.
+#if defined(__SANITIZE_ADDRESS__)
+constexpr std::uint64_t default_last_seed_1_2 = 14;
+#else
+constexpr std::uint64_t default_last_seed_1_2 = 79;
+#endif
+
 struct SeedRange {
     std::uint64_t first = 0, last = default_last_seed;
 };
 
-SeedRange seed_range(const char* variable = "JT_DIFFERENTIAL_SEEDS") {
+SeedRange seed_range(const char* variable = "JT_DIFFERENTIAL_SEEDS",
+                     std::uint64_t last = default_last_seed) {
     SeedRange range;
+    range.last = last;
     const char* text = std::getenv(variable);
     if (!text || !*text) return range;
     std::string s(text);
@@ -144,9 +169,23 @@ std::string write_scene_files(std::uint64_t seed, const RandomScene& generated) 
     return dir.string();
 }
 
-SeedResult check_seed(std::uint64_t seed, bool extensions) {
+// Which generator a run uses, and the prefix of its artifacts' names.
+struct Run {
+    RandomScene (*generate)(std::uint64_t seed, Features features) = nullptr;
+    Features features;
+    std::string name;  // "" for language 1.0
+};
+
+RandomScene language_1_0(std::uint64_t seed, Features) {
+    return random_scene(seed);
+}
+RandomScene language_1_1(std::uint64_t seed, Features) {
+    return random_scene_1_1(seed);
+}
+
+SeedResult check_seed(std::uint64_t seed, const Run& run) {
     SeedResult result;
-    const RandomScene generated = extensions ? random_scene_1_1(seed) : random_scene(seed);
+    const RandomScene generated = run.generate(seed, run.features);
     ParseResult parsed = parse_scene(generated.text);
     std::string problem;
     if (!parsed.ok())
@@ -173,13 +212,15 @@ SeedResult check_seed(std::uint64_t seed, bool extensions) {
     RenderOptions options;
     options.width = scene.settings.width;
     options.height = scene.settings.height;
+    options.samples = scene.settings.samples;
     options.camera = active_camera_index(scene);
     const Image8 core = render_image(prepare_scene(scene).value(), options);
     const reference::ReferenceImage ref = reference::render(generated.scene, generated.files);
     const Comparison c = compare(core, ref);
     result.pixels = core.width * core.height;
     result.ambiguous = c.ambiguous;
-    const std::string stem_name = (extensions ? "seed-1.1-" : "seed-") + std::to_string(seed);
+    const std::string stem_name =
+        (run.name.empty() ? "seed-" : "seed-" + run.name + "-") + std::to_string(seed);
     const bool passed =
         c.mismatched == 0 && c.out_of_range == 0 && c.ambiguous <= ambiguity_limit(core);
     if (const char* keep = std::getenv("JT_DIFFERENTIAL_KEEP"); keep && *keep == '1')
@@ -196,11 +237,11 @@ SeedResult check_seed(std::uint64_t seed, bool extensions) {
     return result;
 }
 
-void check_seeds(const SeedRange& range, bool extensions) {
+void check_seeds(const SeedRange& range, const Run& run) {
     int failed = 0;
     long long pixels = 0, ambiguous = 0;
     for (std::uint64_t seed = range.first; seed <= range.last; ++seed) {
-        const SeedResult r = check_seed(seed, extensions);
+        const SeedResult r = check_seed(seed, run);
         pixels += r.pixels;
         ambiguous += r.ambiguous;
         if (!r.failure.empty()) {
@@ -210,18 +251,62 @@ void check_seeds(const SeedRange& range, bool extensions) {
     }
     std::printf(
         "differential%s: seeds %llu-%llu, %d failed; %lld pixels compared, %lld ambiguous\n",
-        extensions ? " (language 1.1)" : "", static_cast<unsigned long long>(range.first),
-        static_cast<unsigned long long>(range.last), failed, pixels, ambiguous);
+        run.name.empty() ? "" : (" (" + run.name + ")").c_str(),
+        static_cast<unsigned long long>(range.first), static_cast<unsigned long long>(range.last),
+        failed, pixels, ambiguous);
+}
+
+void remove_scene_files() {
+    fs::remove_all(fs::temp_directory_path() /
+                   ("jtracer_differential_" + std::to_string(::getpid())));
 }
 
 TEST(Differential, RandomScenesRenderAsTheReferenceSays) {
-    check_seeds(seed_range(), false);
+    check_seeds(seed_range(), {language_1_0, {}, ""});
 }
 
 TEST(Differential, ScenesWithMeshesGlassAndMapsRenderAsTheReferenceSays) {
-    check_seeds(seed_range("JT_DIFFERENTIAL_SEEDS_1_1"), true);
-    fs::remove_all(fs::temp_directory_path() /
-                   ("jtracer_differential_" + std::to_string(::getpid())));
+    check_seeds(seed_range("JT_DIFFERENTIAL_SEEDS_1_1"), {language_1_1, {}, "1.1"});
+    remove_scene_files();
+}
+
+// One run of language 1.2's scenes with `features`, or a skip naming what the
+// core does not implement yet.
+void check_features(const Features& features, const std::string& name) {
+    const bool missing = (features.soft_shadows && !kLanded.soft_shadows) ||
+                         (features.lens && !kLanded.lens) || (features.sky && !kLanded.sky) ||
+                         (features.generated_normals && !kLanded.generated_normals);
+    const char* unlanded = std::getenv("JT_DIFFERENTIAL_UNLANDED");
+    if (missing && !(unlanded && *unlanded == '1'))
+        GTEST_SKIP() << name << ": not in the core yet (kLanded)";
+    check_seeds(seed_range("JT_DIFFERENTIAL_SEEDS_1_2", default_last_seed_1_2),
+                {random_scene_1_2, features, name});
+    remove_scene_files();
+}
+
+TEST(Differential, LightsWithARadiusRenderAsTheReferenceSays) {
+    check_features({.soft_shadows = true}, "1.2-soft");
+}
+
+TEST(Differential, LensesRenderAsTheReferenceSays) {
+    check_features({.lens = true}, "1.2-lens");
+}
+
+TEST(Differential, SkyMapsRenderAsTheReferenceSays) {
+    check_features({.sky = true}, "1.2-sky");
+}
+
+TEST(Differential, GeneratedNormalsRenderAsTheReferenceSays) {
+    check_features({.generated_normals = true}, "1.2-normals");
+}
+
+// Every feature that has landed, together.
+TEST(Differential, LandedLanguage12FeaturesTogetherRenderAsTheReferenceSays) {
+    const char* unlanded = std::getenv("JT_DIFFERENTIAL_UNLANDED");
+    if (unlanded && *unlanded == '1') return check_features({true, true, true, true}, "1.2");
+    if (!kLanded.soft_shadows && !kLanded.lens && !kLanded.sky && !kLanded.generated_normals)
+        GTEST_SKIP() << "no feature of language 1.2 is in the core yet (kLanded)";
+    check_features(kLanded, "1.2");
 }
 
 // The comparison can fail: a scene rendered with one light dimmed is caught.

@@ -22,6 +22,14 @@
 // flat or smooth with vertex normals that may lean far from the faces, each
 // placed so that one pixel's centre ray meets one of its vertices or the middle
 // of one of its edges exactly.
+//
+// With the features of docs/language.md §14 (random_scene_1_2, each feature on
+// its own or together): lights with a radius and 1-6 shadow samples (some with
+// shadow_samples but radius 0); cameras with a lens, with or without a focus
+// distance, rendered with 1-4 samples on smaller images; a sky map (a BMP of a
+// few texels); meshes without normals, smooth with a smooth_angle (often 0,
+// 60 or 180), some with every face's corners written apart as STL does, some
+// flat with a smooth_angle that does nothing.
 
 #include "reference_tracer.hpp"
 
@@ -32,10 +40,19 @@
 #include <cstdint>
 #include <cstdio>
 #include <map>
+#include <optional>
 #include <random>
 #include <string>
 
 namespace jt::test {
+
+// The features of docs/language.md §14 a generated scene may use.
+struct Features {
+    bool soft_shadows = false;       // lights with a radius (§14.1)
+    bool lens = false;               // cameras with an aperture (§14.2)
+    bool sky = false;                // a background map (§14.3)
+    bool generated_normals = false;  // meshes without normals, smooth_angle (§14.4)
+};
 
 struct RandomScene {
     Scene scene;
@@ -47,7 +64,8 @@ struct RandomScene {
 
 class SceneGenerator {
   public:
-    SceneGenerator(std::uint64_t seed, bool extensions) : rng_(seed), extensions_(extensions) {}
+    SceneGenerator(std::uint64_t seed, bool extensions, Features features = {})
+        : rng_(seed), extensions_(extensions), features_(features) {}
 
     RandomScene generate() {
         RandomScene out;
@@ -55,6 +73,13 @@ class SceneGenerator {
         size_ = log_uniform(1e-3, 1e3);
         s.settings.width = integer(16, 48);
         s.settings.height = integer(12, 36);
+        if (features_.lens || features_.soft_shadows) {
+            // Several samples a pixel on a smaller image, to keep a seed quick.
+            s.settings.samples = chance(0.3) ? 1 : integer(2, 4);
+            s.settings.width = std::max(8, s.settings.width * 2 / (1 + s.settings.samples));
+            s.settings.height = std::max(6, s.settings.height * 2 / (1 + s.settings.samples));
+        }
+        if (features_.sky && chance(0.7)) s.settings.background_map = picture();
         s.settings.recurse_depth = chance(0.4) ? 0 : integer(1, 4);
         if (chance(0.5)) s.settings.background = colour();
         if (chance(0.6)) s.settings.ambient_light = colour();
@@ -62,7 +87,13 @@ class SceneGenerator {
         for (int i = 0; i < cameras; ++i) s.cameras.push_back(camera(i, s.settings));
         if (chance(0.5)) s.settings.active_camera = s.cameras[integer(0, cameras - 1)].name;
         const int lights = chance(0.1) ? 0 : integer(1, 3);
-        for (int i = 0; i < lights; ++i) s.lights.push_back({size_ * point(5.0), bright_colour()});
+        for (int i = 0; i < lights; ++i) {
+            s.lights.push_back({size_ * point(5.0), bright_colour()});
+            if (!features_.soft_shadows) continue;
+            if (chance(0.4)) s.lights.back().radius = size_ * log_uniform(0.05, 1.0);
+            if (s.lights.back().radius > 0 || chance(0.2))
+                s.lights.back().shadow_samples = integer(1, 6);
+        }
         const int primitives = chance(0.25) ? integer(9, 30) : integer(2, 8);
         int planes = 0;
         for (int i = 0; i < primitives; ++i) {
@@ -192,7 +223,23 @@ class SceneGenerator {
         for (Vec3& v : m.positions)
             for (int k = 0; k < 3; ++k) v[k] += 0.25 * integer(-1, 1);
         const bool smooth = chance(0.6);
-        if (smooth) {
+        std::optional<double> smooth_angle;
+        bool split = false;
+        if (features_.generated_normals && chance(smooth ? 0.6 : 0.2)) {
+            const double angles[] = {0.0, 60.0, 180.0, uniform(0, 180)};
+            smooth_angle = angles[integer(0, 3)];
+            split = chance(0.3);
+        }
+        if (split) {  // every face's corners written apart, as STL does
+            reference::Model apart;
+            for (const auto& face : m.faces) {
+                const int first = static_cast<int>(apart.positions.size());
+                for (int k : face) apart.positions.push_back(m.positions[k]);
+                apart.faces.push_back({first, first + 1, first + 2});
+            }
+            m = std::move(apart);
+        }
+        if (smooth && !smooth_angle) {
             const bool leaning = chance(0.5);  // far from the faces, any way
             for (const Vec3& v : m.positions)
                 m.normals.push_back(leaning ? Vec3(0.25 * integer(-4, 4), 0.25 * integer(-4, 4),
@@ -208,12 +255,14 @@ class SceneGenerator {
         for (const auto& f : m.faces) {
             obj += "f";
             for (int k : f)
-                obj += " " + std::to_string(k + 1) + (smooth ? "//" + std::to_string(k + 1) : "");
+                obj += " " + std::to_string(k + 1) +
+                       (m.normals.empty() ? "" : "//" + std::to_string(k + 1));
             obj += "\n";
         }
         out.file_bytes[name] = obj;
-        Primitive p{Mesh{name, std::string(smooth ? kSmoothShading : kFlatShading)}, material(),
-                    transforms()};
+        Primitive p{Mesh{name, std::string(smooth ? kSmoothShading : kFlatShading), smooth_angle,
+                         std::string(kSceneMaterials)},
+                    material(), transforms()};
         // The model's own size first, then its ops; then a last translation puts
         // the chosen point on the chosen pixel's ray.
         const double gain = std::cbrt(
@@ -277,6 +326,11 @@ class SceneGenerator {
         c.fov = uniform(25, 90);
         c.aspect =
             chance(0.7) ? static_cast<double>(settings.width) / settings.height : uniform(0.5, 2.0);
+        if (features_.lens && chance(0.7)) {
+            const double distance = glm::length(c.look_at - c.position);
+            c.aperture = distance * log_uniform(0.002, 0.05);
+            if (chance(0.5)) c.focus_distance = distance * uniform(0.3, 1.5);
+        }
         return c;
     }
 
@@ -407,11 +461,17 @@ class SceneGenerator {
                         "; ambient_light: " + vec(s.settings.ambient_light) + ";";
         if (!s.settings.active_camera.empty())
             t += " active_camera: \"" + s.settings.active_camera + "\";";
+        if (s.settings.samples != 1) t += " samples: " + std::to_string(s.settings.samples) + ";";
+        if (!s.settings.background_map.empty())
+            t += " background_map: \"" + s.settings.background_map + "\";";
         t += " }\ncameras {\n";
         for (const Camera& c : s.cameras)
             t += "  perspective_camera { name: \"" + c.name + "\"; position: " + vec(c.position) +
                  "; look_at: " + vec(c.look_at) + "; up: " + vec(c.up) + "; fov: " + num(c.fov) +
-                 "; aspect: " + num(c.aspect) + "; }\n";
+                 "; aspect: " + num(c.aspect) + ";" +
+                 (c.aperture > 0 ? " aperture: " + num(c.aperture) + ";" : "") +
+                 (c.focus_distance ? " focus_distance: " + num(*c.focus_distance) + ";" : "") +
+                 " }\n";
         t += "}\nscene {\n";
         std::size_t light = 0;
         for (const Primitive& p : s.primitives) {
@@ -432,8 +492,12 @@ class SceneGenerator {
     }
 
     std::string light_text(const PointLight& l) {
-        return "  point_light { position: " + vec(l.position) + "; intensity: " + vec(l.intensity) +
-               "; }\n";
+        std::string t = "  point_light { position: " + vec(l.position) +
+                        "; intensity: " + vec(l.intensity) + ";";
+        if (l.radius > 0) t += " radius: " + num(l.radius) + ";";
+        if (l.shadow_samples != PointLight{}.shadow_samples)
+            t += " shadow_samples: " + std::to_string(l.shadow_samples) + ";";
+        return t + " }\n";
     }
 
     std::string primitive_text(const Primitive& p) {
@@ -459,6 +523,7 @@ class SceneGenerator {
                 "; uv_c: " + vec(tri->uv_c) + "; ";
         } else if (const auto* mesh = std::get_if<Mesh>(&p.shape)) {
             t = "  mesh { file: \"" + mesh->file + "\"; shading: \"" + mesh->shading + "\"; ";
+            if (mesh->smooth_angle) t += "smooth_angle: " + num(*mesh->smooth_angle) + "; ";
         }
         const Material& m = p.material;
         const Material d;
@@ -514,6 +579,7 @@ class SceneGenerator {
 
     std::mt19937_64 rng_;
     bool extensions_ = false;
+    Features features_;
     double size_ = 1.0;
     int models_ = 0, pictures_ = 0;
     std::vector<std::pair<std::string, reference::Picture>> pending_pictures_;
@@ -526,6 +592,11 @@ inline RandomScene random_scene(std::uint64_t seed) {
 // With triangles, meshes, glass and image maps (docs/language.md §13).
 inline RandomScene random_scene_1_1(std::uint64_t seed) {
     return SceneGenerator(seed, true).generate();
+}
+
+// Language 1.1's scenes with the features of docs/language.md §14 asked for.
+inline RandomScene random_scene_1_2(std::uint64_t seed, Features features) {
+    return SceneGenerator(seed, true, features).generate();
 }
 
 }  // namespace jt::test

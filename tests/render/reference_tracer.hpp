@@ -1,9 +1,11 @@
 #pragma once
-// An independent, deliberately plain renderer of docs/language.md sections 5-8
-// and of the extensions of section 13 that random scenes use (triangles and
-// meshes, flat and smooth; refraction and transmitted shadows; image maps on
-// triangles), for the differential test: one ray through each pixel centre,
-// every ray tested against every primitive in that primitive's own object
+// An independent, deliberately plain renderer of docs/language.md sections 5-9
+// and of the extensions of sections 13 and 14 that random scenes use (triangles
+// and meshes, flat and smooth; refraction and transmitted shadows; image maps on
+// triangles; the pixel hash, lights with a radius, the lens, sky maps and
+// generated smooth normals), for the differential test, written from the text
+// of SEMANTICS.md §5-§9.4: the R2 samples of each pixel (one at its centre by
+// default), every ray tested against every primitive in that primitive's own object
 // space, in double precision; no acceleration structure, no tables, no tiles,
 // no code shared with the core (only the Scene values and glm's vector
 // arithmetic). It reads no file: the generator hands it the triangles and
@@ -30,11 +32,17 @@
 //   rays, or a secondary ray meets another surface within 1e-6 (relative) of
 //   its start: coincident or touching surfaces, where the nearest hit or the
 //   shadow is a matter of rounding;
+// - a point of a light's disk lies within rounding of the horizon of the
+//   surface it lights, or the hit point within rounding of the light's sphere;
 // - its ray passes within rounding of an edge or a corner of a triangle: then
 //   the ray shaded as a hit on each triangle through that point, and a ray
 //   aimed just inside each, join the variants (a renderer may take any of
 //   them, and the four turned rays need not meet them all: at a corner, or at
 //   a silhouette, perhaps none).
+// With several samples a pixel, each sample's variants give it a least and a
+// greatest clamped colour; the pixel's range is the byte of the mean of the
+// least and of the greatest, and it is ambiguous when those differ or when
+// any sample is flagged.
 
 #include "jtracer/image.hpp"
 #include "jtracer/scene.hpp"
@@ -146,15 +154,69 @@ struct Files {
     std::map<std::string, Picture> pictures;
 };
 
-// The unit direction of the ray through pixel (i, j)'s centre (§7.1).
-inline Vec3 pixel_direction(const Camera& camera, int w, int h, int i, int j) {
+// The unit direction of the ray through image point (x, y), x from the left
+// and y from the bottom in pixels (§7.1).
+inline Vec3 sample_direction(const Camera& camera, int w, int h, double x, double y) {
     const Vec3 f = glm::normalize(camera.look_at - camera.position);
     const Vec3 r = glm::normalize(glm::cross(f, camera.up));
     const Vec3 u = glm::cross(r, f);
     const double t = std::tan(camera.fov / 2 * std::numbers::pi / 180);
-    const double sx = (2 * (i + 0.5) / w - 1) * t * camera.aspect;
-    const double sy = (2 * (j + 0.5) / h - 1) * t;
+    const double sx = (2 * x / w - 1) * t * camera.aspect;
+    const double sy = (2 * y / h - 1) * t;
     return glm::normalize(f + sx * r + sy * u);
+}
+
+// The unit direction of the ray through pixel (i, j)'s centre (§7.1).
+inline Vec3 pixel_direction(const Camera& camera, int w, int h, int i, int j) {
+    return sample_direction(camera, w, h, i + 0.5, j + 0.5);
+}
+
+// Sample k's place in its pixel (§9.2): the R2 sequence from the centre.
+inline double sample_offset(double step, int k) {
+    const double x = 0.5 + step * static_cast<double>(k);
+    return x - std::floor(x);
+}
+inline constexpr double kR2X = 0.7548776662466927, kR2Y = 0.5698402909980532;
+
+// The angle SEMANTICS.md §9.0 takes from pixel (i, j) and an integer s.
+inline double pixel_angle(int i, int j, int s) {
+    std::uint32_t h = (static_cast<std::uint32_t>(i) * 73856093u) ^
+                      (static_cast<std::uint32_t>(j) * 19349663u) ^
+                      (static_cast<std::uint32_t>(s) * 83492791u);
+    h = h ^ (h >> 16);
+    h = h * 0x45d9f3bu;
+    h = h ^ (h >> 16);
+    return 2 * std::numbers::pi * static_cast<double>(h) / 4294967296.0;
+}
+
+inline constexpr double kGoldenAngle = 2.399963229728653;
+
+// The pixel hash's s for the lens (§14.2).
+inline constexpr int kLensHash = 2048;
+
+// A primary ray: where it starts and its unit direction.
+struct Ray {
+    Vec3 origin{0.0};
+    Vec3 direction{0.0};
+};
+
+// Sample k (of n) of pixel (i, j) through the camera's lens (§14.2), d the
+// pinhole direction of the sample.
+inline Ray lens_ray(const Camera& camera, const Vec3& d, int i, int j, int k, int n) {
+    const Vec3 e = camera.position;
+    const double rho = camera.aperture * std::sqrt(static_cast<double>(k) / n);
+    if (camera.aperture <= 0 || rho == 0) return {e, d};
+    const Vec3 f = glm::normalize(camera.look_at - camera.position);
+    const Vec3 r = glm::normalize(glm::cross(f, camera.up));
+    const Vec3 u = glm::cross(r, f);
+    const Vec3 look = camera.look_at - camera.position;
+    const double focus = camera.focus_distance
+                             ? *camera.focus_distance
+                             : std::sqrt(look.x * look.x + look.y * look.y + look.z * look.z);
+    const Vec3 in_focus = e + d * (focus / glm::dot(d, f));
+    const double theta = k * kGoldenAngle + pixel_angle(i, j, kLensHash);
+    const Vec3 from = e + rho * (std::cos(theta) * r + std::sin(theta) * u);
+    return {from, glm::normalize(in_focus - from)};
 }
 
 struct Rgb8 {
@@ -189,75 +251,124 @@ class Tracer {
                 q.unit_normal = plane->normal / std::sqrt(glm::dot(plane->normal, plane->normal));
             if (const auto* mesh = std::get_if<Mesh>(&p.shape)) {
                 q.model = &files.models.at(mesh->file);
-                q.smooth = mesh->shading == kSmoothShading && !q.model->normals.empty();
+                if (mesh->shading == kSmoothShading && !q.model->normals.empty())
+                    for (const auto& face : q.model->faces)
+                        q.corner_normals.push_back({q.model->normals[face[0]],
+                                                    q.model->normals[face[1]],
+                                                    q.model->normals[face[2]]});
+                else if (mesh->shading == kSmoothShading && mesh->smooth_angle)
+                    q.corner_normals = generated_normals(*q.model, *mesh->smooth_angle);
             }
             if (!p.material.image_map.empty()) q.picture = &files.pictures.at(p.material.image_map);
             transmissive_ = transmissive_ || p.material.transmission > 0;
             placed_.push_back(q);
         }
+        if (!scene.settings.background_map.empty())
+            sky_ = &files.pictures.at(scene.settings.background_map);
     }
 
     ReferenceImage render(int camera_index) const {
         const Camera& camera = scene_.cameras[camera_index];
         const int w = scene_.settings.width, h = scene_.settings.height;
-        const Vec3 f = glm::normalize(camera.look_at - camera.position);
-        const Vec3 r = glm::normalize(glm::cross(f, camera.up));
-        const Vec3 u = glm::cross(r, f);
+        const int n = scene_.settings.samples;
         ReferenceImage out;
         out.image = Image8(w, h);
         out.ambiguous.assign(static_cast<std::size_t>(w) * h, false);
         out.range.resize(static_cast<std::size_t>(w) * h);
-        constexpr double turn = 1e-8;
         for (int j = 0; j < h; ++j) {
             for (int i = 0; i < w; ++i) {
-                const Vec3 d = pixel_direction(camera, w, h, i, j);
-                Flags flags;
-                const Rgb8 centre = quantize(trace(camera.position, d, 0, {}, 0.0, false, flags));
-                bool ambiguous = flags.ambiguous || near_rounding_boundary(flags.colour);
-                std::array<std::uint8_t, 6> range = {centre.r, centre.g, centre.b,
-                                                     centre.r, centre.g, centre.b};
-                auto variant = [&](const Vec3& direction, bool lifted, Flags ignored = {}) {
-                    Rgb8 c =
-                        quantize(trace(camera.position, direction, 0, {}, 0.0, lifted, ignored));
-                    if (!(c == centre)) ambiguous = true;
-                    const std::uint8_t v[3] = {c.r, c.g, c.b};
-                    for (int k = 0; k < 3; ++k) {
-                        range[k] = std::min(range[k], v[k]);
-                        range[3 + k] = std::max(range[3 + k], v[k]);
-                    }
-                };
-                variant(d, true);
-                for (const Vec3& axis : {r, u})
-                    for (double sign : {-1.0, 1.0})
-                        variant(glm::normalize(d + sign * turn * axis), false);
-                for (const auto& [placed, face] : faces_through(camera.position, d)) {
-                    Flags forced;
-                    forced.force_placed = placed;
-                    forced.force_face = face;
-                    variant(d, false, forced);
-                    // And just inside it, where the faces around no longer hold the point.
-                    const Placed& q = placed_[placed];
-                    Root root;
-                    plane_root(q, face, camera.position, d, root);
-                    const std::array<Vec3, 3> v = face_corners(q, face);
-                    const Vec3 at = (1 - root.u - root.v) * v[0] + root.u * v[1] + root.v * v[2];
-                    const Vec3 inside = at + 1e-6 * ((v[0] + v[1] + v[2]) / 3.0 - at);
-                    const Vec3 aim =
-                        q.object_to_world.linear * inside + q.object_to_world.translation;
-                    variant(glm::normalize(aim - camera.position), false);
+                Colour sum(0.0), least(0.0), greatest(0.0), single(0.0);
+                bool ambiguous = false;
+                for (int k = 0; k < n; ++k) {
+                    const Sample s = sample(camera, i, j, k, n);
+                    sum += n == 1 ? s.colour : clamped(s.colour);
+                    single = s.colour;
+                    least += s.least;
+                    greatest += s.greatest;
+                    ambiguous = ambiguous || s.ambiguous;
                 }
+                const Colour mean = n == 1 ? single : sum / static_cast<double>(n);
+                const Rgb8 centre = quantize(mean);
+                const Rgb8 low = quantize(least / static_cast<double>(n));
+                const Rgb8 high = quantize(greatest / static_cast<double>(n));
+                ambiguous = ambiguous || near_rounding_boundary(mean) || !(low == high);
                 std::uint8_t* p = out.image.pixel(i, j);
                 p[0] = centre.r;
                 p[1] = centre.g;
                 p[2] = centre.b;
-                out.ambiguous[static_cast<std::size_t>(j) * w + i] = ambiguous;
-                out.range[static_cast<std::size_t>(j) * w + i] = range;
+                const std::size_t at = static_cast<std::size_t>(j) * w + i;
+                out.ambiguous[at] = ambiguous;
+                out.range[at] = {std::min(centre.r, low.r),  std::min(centre.g, low.g),
+                                 std::min(centre.b, low.b),  std::max(centre.r, high.r),
+                                 std::max(centre.g, high.g), std::max(centre.b, high.b)};
             }
         }
         return out;
     }
 
   private:
+    // One pixel sample: its colour, and the least and greatest clamped
+    // colour its variant rays gave (itself included).
+    struct Sample {
+        Colour colour{0.0};
+        Colour least{0.0}, greatest{0.0};
+        bool ambiguous = false;
+    };
+
+    static Colour clamped(const Colour& c) { return glm::clamp(c, Colour(0.0), Colour(1.0)); }
+
+    Sample sample(const Camera& camera, int i, int j, int k, int n) const {
+        const int w = scene_.settings.width, h = scene_.settings.height;
+        const Vec3 f = glm::normalize(camera.look_at - camera.position);
+        const Vec3 r = glm::normalize(glm::cross(f, camera.up));
+        const Vec3 u = glm::cross(r, f);
+        constexpr double turn = 1e-8;
+        const Vec3 d =
+            sample_direction(camera, w, h, i + sample_offset(kR2X, k), j + sample_offset(kR2Y, k));
+        const Ray ray = lens_ray(camera, d, i, j, k, n);
+        Flags flags;
+        flags.i = i;
+        flags.j = j;
+        flags.k = k;
+        Sample out;
+        out.colour = trace(ray.origin, ray.direction, 0, {}, 0.0, false, flags);
+        out.ambiguous = flags.ambiguous;
+        out.least = out.greatest = clamped(out.colour);
+        const Flags plain = [&] {
+            Flags p;
+            p.i = i;
+            p.j = j;
+            p.k = k;
+            return p;
+        }();
+        auto variant = [&](const Ray& v, bool lifted, Flags ignored) {
+            const Colour c = clamped(trace(v.origin, v.direction, 0, {}, 0.0, lifted, ignored));
+            out.least = glm::min(out.least, c);
+            out.greatest = glm::max(out.greatest, c);
+        };
+        variant(ray, true, plain);
+        for (const Vec3& axis : {r, u})
+            for (double sign : {-1.0, 1.0})
+                variant(lens_ray(camera, glm::normalize(d + sign * turn * axis), i, j, k, n), false,
+                        plain);
+        for (const auto& [placed, face] : faces_through(ray.origin, ray.direction)) {
+            Flags forced = plain;
+            forced.force_placed = placed;
+            forced.force_face = face;
+            variant(ray, false, forced);
+            // And just inside it, where the faces around no longer hold the point.
+            const Placed& q = placed_[placed];
+            Root root;
+            plane_root(q, face, ray.origin, ray.direction, root);
+            const std::array<Vec3, 3> v = face_corners(q, face);
+            const Vec3 at = (1 - root.u - root.v) * v[0] + root.u * v[1] + root.v * v[2];
+            const Vec3 inside = at + 1e-6 * ((v[0] + v[1] + v[2]) / 3.0 - at);
+            const Vec3 aim = q.object_to_world.linear * inside + q.object_to_world.translation;
+            variant({ray.origin, glm::normalize(aim - ray.origin)}, false, plain);
+        }
+        return out;
+    }
+
     struct Placed {
         std::size_t index = 0;
         const Shape* shape = nullptr;
@@ -265,9 +376,11 @@ class Tracer {
         Map world_to_object;
         Map object_to_world;
         glm::dmat3 normal_matrix{1.0};
-        Vec3 unit_normal{0.0};             // planes
-        const Model* model = nullptr;      // meshes
-        bool smooth = false;               // a mesh shaded with its vertex normals
+        Vec3 unit_normal{0.0};         // planes
+        const Model* model = nullptr;  // meshes
+        // A smooth mesh's normal at each corner of each face, object space:
+        // the file's, or generated (§14.4); empty when shaded flat.
+        std::vector<std::array<Vec3, 3>> corner_normals;
         const Picture* picture = nullptr;  // its image map
     };
 
@@ -303,6 +416,7 @@ class Tracer {
         // The primary ray's hit taken on this face of this placed primitive,
         // when the ray meets the face's plane where it meets the nearest surface.
         int force_placed = -1, force_face = -1;
+        int i = 0, j = 0, k = 0;  // the pixel and sample the ray descends from (§14.0)
     };
 
     static Rgb8 quantize(const Colour& c) {
@@ -511,8 +625,9 @@ class Tracer {
             (hit.placed < 0 || forced.t <= hit.t * (1 + 1e-9)))
             hit = {forced.t, flags.force_placed, forced};
         if (hit.placed < 0) {
-            if (depth == 0) flags.colour = scene_.settings.background;
-            return scene_.settings.background;
+            const Colour missed = sky_ ? sky(*sky_, d) : scene_.settings.background;
+            if (depth == 0) flags.colour = missed;
+            return missed;
         }
         const Placed& q = placed_[hit.placed];
         const Material& m = *q.material;
@@ -524,11 +639,9 @@ class Tracer {
         const Vec3 ng = entering ? outward : -outward;
         Vec3 n = ng;
         const double w = 1 - root.u - root.v;
-        if (q.smooth) {
-            const Model& model = *q.model;
-            const auto& face = model.faces[root.part];
-            const Vec3 blend = w * model.normals[face[0]] + root.u * model.normals[face[1]] +
-                               root.v * model.normals[face[2]];
+        if (!q.corner_normals.empty()) {
+            const std::array<Vec3, 3>& corner = q.corner_normals[root.part];
+            const Vec3 blend = w * corner[0] + root.u * corner[1] + root.v * corner[2];
             if (blend != Vec3(0.0)) {
                 n = glm::normalize(q.normal_matrix * blend);
                 if (glm::dot(n, ng) < 0) n = -n;
@@ -548,6 +661,10 @@ class Tracer {
 
         Colour c = scene_.settings.ambient_light * m.ambient * pigment;
         for (const PointLight& light : scene_.lights) {
+            if (light.radius > 0) {
+                c += disk_light(light, p, n, ng, v, m, pigment, start, here, scale, lifted, flags);
+                continue;
+            }
             const Vec3 l = glm::normalize(light.position - p);
             const double n_dot_l = glm::dot(n, l);
             if (n_dot_l <= 0) continue;
@@ -584,6 +701,110 @@ class Tracer {
         return c;
     }
 
+    // SEMANTICS.md §9.1: the diffuse and specular terms of a light of radius
+    // r > 0 at hit point p, its intensity scaled by the share of the points of
+    // its disk that p sees. `start`: where the point light's shadow ray would
+    // start (p, or p lifted along ng).
+    Colour disk_light(const PointLight& light, const Vec3& p, const Vec3& n, const Vec3& ng,
+                      const Vec3& v, const Material& m, const Colour& pigment, const Vec3& start,
+                      const Origin& here, double scale, bool lifted, Flags& flags) const {
+        const Vec3 to = light.position - p;
+        const double dist = std::sqrt(to.x * to.x + to.y * to.y + to.z * to.z);
+        if (std::abs(dist - light.radius) <= 1e-9 * std::max(dist, scale)) flags.ambiguous = true;
+        double vis = 1.0;
+        const Vec3 l = dist <= light.radius ? glm::normalize(to) : to / dist;
+        const double n_dot_l = glm::dot(n, l);
+        if (n_dot_l <= 0) return Colour(0.0);
+        if (dist <= light.radius) {  // inside the light's sphere: a point light
+            const Vec3 to_light = light.position - start;
+            const double distance = glm::length(to_light);
+            vis = light_through(start, to_light / distance, distance, here, scale, flags);
+        } else {
+            Vec3 e1 = glm::cross(l, Vec3(0, 1, 0));
+            if (e1.x == 0 && e1.y == 0 && e1.z == 0) e1 = glm::cross(l, Vec3(1, 0, 0));
+            e1 = glm::normalize(e1);
+            const Vec3 e2 = glm::cross(l, e1);
+            const int count = light.shadow_samples;
+            const double phi = pixel_angle(flags.i, flags.j, flags.k);
+            double sum = 0.0;
+            for (int k = 0; k < count; ++k) {
+                const double rho = light.radius * std::sqrt((k + 0.5) / count);
+                const double theta = k * kGoldenAngle + phi;
+                const Vec3 q = light.position + rho * (std::cos(theta) * e1 + std::sin(theta) * e2);
+                const Vec3 lk = glm::normalize(q - p);
+                const double horizon = glm::dot(n, lk);
+                if (std::abs(horizon) <= 1e-9) flags.ambiguous = true;
+                if (horizon <= 0) continue;
+                // A smooth mesh's point below its own face leaves through it.
+                const double side = glm::dot(ng, lk) < 0 ? -1.0 : 1.0;
+                const Vec3 from = lifted ? p + side * 1e-7 * scale * ng : p;
+                const Vec3 to_point = q - from;
+                const double distance = glm::length(to_point);
+                sum += light_through(from, to_point / distance, distance, here, scale, flags);
+            }
+            vis = sum / count;
+        }
+        if (!(vis > 0)) return Colour(0.0);
+        const Colour intensity = light.intensity * vis;
+        Colour c = intensity * m.diffuse * pigment * std::pow(n_dot_l, 1 / m.diffuse_k);
+        const Vec3 reflected = 2 * n_dot_l * n - l;
+        const double r_dot_v = glm::dot(reflected, v);
+        if (r_dot_v > 0) c += intensity * m.specular * std::pow(r_dot_v, m.specular_k);
+        return c;
+    }
+
+    // SEMANTICS.md §9.4: each corner's normal, the area-weighted sum of the
+    // faces that share its position within `degrees` of the corner's face,
+    // in file order (the face itself always counts).
+    static std::vector<std::array<Vec3, 3>> generated_normals(const Model& model, double degrees) {
+        const double limit = std::cos(degrees * std::numbers::pi / 180) - 1e-12;
+        std::vector<Vec3> area, unit;
+        for (const auto& face : model.faces) {
+            const Vec3 a = model.positions[face[0]], b = model.positions[face[1]],
+                       c = model.positions[face[2]];
+            area.push_back(glm::cross(b - a, c - a));
+            unit.push_back(glm::normalize(area.back()));
+        }
+        std::vector<std::array<Vec3, 3>> out(model.faces.size());
+        for (std::size_t f = 0; f < model.faces.size(); ++f) {
+            for (int corner = 0; corner < 3; ++corner) {
+                const Vec3 at = model.positions[model.faces[f][corner]];
+                Vec3 sum(0.0);
+                for (std::size_t g = 0; g < model.faces.size(); ++g) {
+                    bool shares = false;
+                    for (int k : model.faces[g]) shares = shares || model.positions[k] == at;
+                    if (shares && (g == f || glm::dot(unit[f], unit[g]) >= limit)) sum += area[g];
+                }
+                out[f][corner] = sum == Vec3(0.0) ? unit[f] : glm::normalize(sum);
+            }
+        }
+        return out;
+    }
+
+    // SEMANTICS.md §9.3: the sky map in unit direction d, u wrapped, v held
+    // at the poles.
+    static Colour sky(const Picture& picture, const Vec3& d) {
+        const double u = 0.5 + std::atan2(d.x, -d.z) / (2 * std::numbers::pi);
+        const double v = 0.5 + std::asin(std::clamp(d.y, -1.0, 1.0)) / std::numbers::pi;
+        const double wrapped = u - std::floor(u) < 1 ? u - std::floor(u) : 0.0;
+        const double x = wrapped * picture.width - 0.5;
+        const double y = std::clamp(v * picture.height - 0.5, 0.0, picture.height - 1.0);
+        const double fx = std::floor(x), fy = std::floor(y);
+        const int row0 = static_cast<int>(fy), row1 = std::min(row0 + 1, picture.height - 1);
+        auto column = [&](double i) {
+            const long long m = static_cast<long long>(i) % picture.width;
+            return static_cast<int>(m < 0 ? m + picture.width : m);
+        };
+        auto texel = [&](double i, int row) {
+            const std::uint8_t* t =
+                &picture.rgb[3 * (static_cast<std::size_t>(row) * picture.width + column(i))];
+            return Colour(t[0] / 255.0f, t[1] / 255.0f, t[2] / 255.0f);
+        };
+        const Colour bottom = (1 - (x - fx)) * texel(fx, row0) + (x - fx) * texel(fx + 1, row0);
+        const Colour top = (1 - (x - fx)) * texel(fx, row1) + (x - fx) * texel(fx + 1, row1);
+        return (1 - (y - fy)) * bottom + (y - fy) * top;
+    }
+
     // The bilinear blend of the four texel centres nearest (u, v), wrapped
     // round both edges (§13.4), each channel byte / 255 in single precision.
     static Colour bilinear(const Picture& picture, double u, double v) {
@@ -609,6 +830,7 @@ class Tracer {
     const Scene& scene_;
     std::vector<Placed> placed_;
     bool transmissive_ = false;
+    const Picture* sky_ = nullptr;  // the background map, when the scene has one
 };
 
 // The camera docs/language.md §7.1 says renders: the one named by active_camera, else the first.
