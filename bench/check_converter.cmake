@@ -1,7 +1,9 @@
 # Converts the showcase with jts-to-pov and checks what the POV-Ray scene says:
 # one object per primitive, the lights, the camera mirrored in z, no gamma,
 # glass and the checker; then the mesh scene's triangles and meshes as mesh2,
-# and the globe scene's image maps on a plane, a sphere and a cylinder.
+# and the globe scene's image maps on a plane, a sphere and a cylinder; and
+# language 1.2: a light's radius as a circular area light, the lens as focal
+# blur, the sky map as a sky_sphere, generated normals as the mesh2's own.
 # Also checks that a missing scene is an I/O error (exit 3) and writes nothing.
 include(${CMAKE_CURRENT_LIST_DIR}/converter_check.cmake)
 convert(${SCENE} ${OUT})
@@ -37,4 +39,17 @@ if(DEFINED GLOBE_SCENE)
     expect_count("\nunion \\{\n cylinder \\{ [^\n]* open [^\n]* map_type 2 \\} matrix <0, 0, 1, 0, 1.6, 0," 1)
     expect_count("\n disc \\{ [^\n]* map_type 0 \\} matrix <1.2, 0, 0, 0, 0, -1.2, 0, 1, 0, -0.6, 0, 0.6>" 2)
     expect_count("uv_mapping" 0)
+endif()
+
+if(DEFINED LANGUAGE_1_2_SCENE)
+    convert(${LANGUAGE_1_2_SCENE} ${OUT}.1.2.pov)
+    # radius 0.5: a disk of diameter 1; 10 shadow samples: 4 x 4 points
+    expect_count("area_light <1, 0, 0>, <0, 1, 0>, 4, 4 circular orient" 1)
+    expect_count("area_light" 1)                    # radius 0: a point light, whatever its samples
+    # focus_distance 6 along the view axis; aperture 0.05 is POV-Ray's 0.2; samples 16
+    expect_count(" focal_point <0, 1.25579159, -2.04633274> aperture 0.2 blur_samples 16, 16 }" 1)
+    expect_count("\nsky_sphere \\{ pigment \\{ image_map \\{ png \"[^\"]*tiles\\.png\" gamma 1\\.0 interpolate 2 map_type 1 \\} matrix <0, 0, -1, 0, 1, 0, -1, 0, 0," 1)
+    # smooth_angle 180 on a tetrahedron: each corner's normal points away from its centre
+    expect_count(" normal_vectors \\{ 12(, <-?0\\.577350269, -?0\\.577350269, -?0\\.577350269>)+ \\}" 1)
+    expect_count(" normal_indices \\{ 4, <0, 1, 2>, <3, 4, 5>, <6, 7, 8>, <9, 10, 11> \\}" 1)
 endif()

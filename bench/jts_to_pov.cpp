@@ -16,6 +16,13 @@
 //   through a pigment matrix that turns POV-Ray's u, v into §13.4's
 //   triangle, mesh -> mesh2 (the model's vertex normals when smooth, its UVs)
 // with no gamma anywhere (assumed_gamma 1; render with File_Gamma=1.0).
+// Language 1.2 (docs/language.md §14):
+//   a light's radius r, shadow_samples M -> area_light, circular and orient: a
+//       disk of diameter 2r facing the lit point, n x n points (n^2 >= M)
+//   aperture a, focus_distance -> aperture 4a (POV-Ray 3.7 moves the eye by
+//       up to a quarter of its aperture: measured, docs/benchmarks.md §1.4),
+//       focal_point on the view axis, blur_samples n, n (JTracer's samples)
+//   background_map -> sky_sphere with a spherical image map (map_type 1)
 
 #include "converter_cli.hpp"
 #include "jtracer/affine.hpp"
@@ -51,7 +58,7 @@ double mean(const jt::Colour& c) {
 std::string_view image_format(const std::string& file) {
     const std::string ext = std::filesystem::path(file).extension().string();
     if (ext == ".jpg" || ext == ".jpeg" || ext == ".JPG" || ext == ".JPEG") return "jpeg";
-    if (ext == ".bmp" || ext == ".BMP") return "sys";
+    if (ext == ".bmp" || ext == ".BMP") return "bmp";  // "sys" is no format on Unix
     return "png";
 }
 
@@ -273,7 +280,7 @@ void write_primitive(PovWriter& out, const jt::Primitive& p, const jt::Scene& sc
     out.printf(" }\n");
 }
 
-void write_camera(PovWriter& out, const jt::Camera& camera) {
+void write_camera(PovWriter& out, const jt::Camera& camera, int samples) {
     // docs/language.md §7: the ray is f + sx r + sy u with |sx| <= t * aspect, |sy| <= t.
     // POV-Ray spans `right` and `up` over the image and scales `direction` so that
     // `angle` is the full horizontal field of view: 2 atan(t * aspect).
@@ -284,7 +291,44 @@ void write_camera(PovWriter& out, const jt::Camera& camera) {
     out.vector(" direction ", mirror(frame.forward));
     out.vector(" right ", mirror(frame.right) * camera.aspect);
     out.vector(" up ", mirror(frame.up));
-    out.printf(" angle %.12g }\n", angle);
+    out.printf(" angle %.12g", angle);
+    if (camera.aperture > 0.0) {
+        // POV-Ray's blur samples are its rays per pixel, as JTracer's samples are.
+        const double focus = camera.focus_distance ? *camera.focus_distance
+                                                   : glm::length(camera.look_at - camera.position);
+        out.vector(" focal_point ", mirror(frame.position + frame.forward * focus));
+        out.printf(" aperture %.9g blur_samples %d, %d", 4.0 * camera.aperture, samples, samples);
+    }
+    out.printf(" }\n");
+}
+
+// docs/language.md §14.1: a sphere of light of radius r seen as a disk facing
+// the lit point, M points of it tested for shadows: POV-Ray's circular,
+// oriented area light of the disk's diameter, with n x n points, n^2 >= M.
+void write_light(PovWriter& out, const jt::PointLight& light) {
+    out.vector("light_source { ", mirror(light.position));
+    out.vector(", rgb ", light.intensity);
+    if (light.radius > 0.0) {
+        int n = 1;
+        while (n * n < light.shadow_samples) ++n;
+        const double d = 2.0 * light.radius;
+        out.printf(" area_light <%.9g, 0, 0>, <0, %.9g, 0>, %d, %d circular orient", d, d, n, n);
+    }
+    out.printf(" }\n");
+}
+
+// docs/language.md §14.3: every ray that misses sees the map at its
+// direction d, u = 0.5 + atan2(d.x, -d.z) / 2 pi. POV-Ray's spherical u is
+// the angle from its +x toward its +z; its z is -z here, so the picture's
+// space turned a quarter about y (x to -z, z to -x, in POV-Ray's terms)
+// makes them one. v is the latitude in both.
+void write_sky(PovWriter& out, const jt::Scene& scene) {
+    const std::string path =
+        std::filesystem::absolute(jt::asset_path(scene, scene.settings.background_map));
+    out.printf("sky_sphere { pigment { image_map { %s \"%s\" gamma 1.0 interpolate 2 map_type 1 }",
+               std::string(image_format(path)).c_str(), path.c_str());
+    write_rows(out, {Vec3(0, 0, -1), Vec3(0, 1, 0), Vec3(-1, 0, 0), Vec3(0.0)});
+    out.printf(" } }\n");
 }
 
 std::string convert(const jt::Scene& scene, int camera_index) {
@@ -297,13 +341,11 @@ std::string convert(const jt::Scene& scene, int camera_index) {
     out.printf(" max_trace_level %d }\n", std::min(s.recurse_depth, 255) + 1);
     out.vector("background { rgb ", s.background);
     out.printf(" }\n");
-    if (camera_index >= 0) write_camera(out, scene.cameras[static_cast<std::size_t>(camera_index)]);
-    for (const jt::PointLight& light : scene.lights) {
-        if (light.intensity == jt::Colour(0.0)) continue;
-        out.vector("light_source { ", mirror(light.position));
-        out.vector(", rgb ", light.intensity);
-        out.printf(" }\n");
-    }
+    if (!s.background_map.empty()) write_sky(out, scene);
+    if (camera_index >= 0)
+        write_camera(out, scene.cameras[static_cast<std::size_t>(camera_index)], s.samples);
+    for (const jt::PointLight& light : scene.lights)
+        if (light.intensity != jt::Colour(0.0)) write_light(out, light);
     for (const jt::Primitive& p : scene.primitives) write_primitive(out, p, scene);
     return out.text();
 }
