@@ -17,7 +17,7 @@
 // folder of their own; its seeds are set by JT_DIFFERENTIAL_SEEDS_1_1.
 //
 // The features of docs/language.md §14 have a run each (lights with a radius,
-// lenses, sky maps, generated normals) and one run with all of them together,
+// lenses, sky maps, generated normals, an OBJ's materials) and one run with all of them together,
 // on language 1.1's scenes; their seeds are set by JT_DIFFERENTIAL_SEEDS_1_2.
 // A feature's run skips until the core implements it: kLanded below says
 // which do (JT_DIFFERENTIAL_UNLANDED=1 runs them all, to try an
@@ -67,6 +67,7 @@ constexpr Features kLanded{
     .lens = false,
     .sky = false,
     .generated_normals = false,
+    .file_materials = false,
 };
 
 // Language 1.2's runs are several, each on fewer seeds.
@@ -275,7 +276,8 @@ TEST(Differential, ScenesWithMeshesGlassAndMapsRenderAsTheReferenceSays) {
 void check_features(const Features& features, const std::string& name) {
     const bool missing = (features.soft_shadows && !kLanded.soft_shadows) ||
                          (features.lens && !kLanded.lens) || (features.sky && !kLanded.sky) ||
-                         (features.generated_normals && !kLanded.generated_normals);
+                         (features.generated_normals && !kLanded.generated_normals) ||
+                         (features.file_materials && !kLanded.file_materials);
     const char* unlanded = std::getenv("JT_DIFFERENTIAL_UNLANDED");
     if (missing && !(unlanded && *unlanded == '1'))
         GTEST_SKIP() << name << ": not in the core yet (kLanded)";
@@ -300,11 +302,16 @@ TEST(Differential, GeneratedNormalsRenderAsTheReferenceSays) {
     check_features({.generated_normals = true}, "1.2-normals");
 }
 
+TEST(Differential, MaterialsFromTheModelFileRenderAsTheReferenceSays) {
+    check_features({.file_materials = true}, "1.2-materials");
+}
+
 // Every feature that has landed, together.
 TEST(Differential, LandedLanguage12FeaturesTogetherRenderAsTheReferenceSays) {
     const char* unlanded = std::getenv("JT_DIFFERENTIAL_UNLANDED");
-    if (unlanded && *unlanded == '1') return check_features({true, true, true, true}, "1.2");
-    if (!kLanded.soft_shadows && !kLanded.lens && !kLanded.sky && !kLanded.generated_normals)
+    if (unlanded && *unlanded == '1') return check_features({true, true, true, true, true}, "1.2");
+    if (!kLanded.soft_shadows && !kLanded.lens && !kLanded.sky && !kLanded.generated_normals &&
+        !kLanded.file_materials)
         GTEST_SKIP() << "no feature of language 1.2 is in the core yet (kLanded)";
     check_features(kLanded, "1.2");
 }

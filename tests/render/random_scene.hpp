@@ -29,7 +29,8 @@
 // distance, rendered with 1-4 samples on smaller images; a sky map (a BMP of a
 // few texels); meshes without normals, smooth with a smooth_angle (often 0,
 // 60 or 180), some with every face's corners written apart as STL does, some
-// flat with a smooth_angle that does nothing.
+// flat with a smooth_angle that does nothing; meshes with materials: "file",
+// an OBJ whose runs of faces take 1-3 materials' Kd or the mesh's own.
 
 #include "reference_tracer.hpp"
 
@@ -52,6 +53,7 @@ struct Features {
     bool lens = false;               // cameras with an aperture (§14.2)
     bool sky = false;                // a background map (§14.3)
     bool generated_normals = false;  // meshes without normals, smooth_angle (§14.4)
+    bool file_materials = false;     // meshes with materials: "file", an OBJ's Kd (§14.5)
 };
 
 struct RandomScene {
@@ -183,6 +185,27 @@ class SceneGenerator {
         return p;
     }
 
+    // The parts of a model with materials: "file": 1-3 materials with a Kd
+    // of whole 256ths (exact in any reader's floats), runs of faces in them,
+    // some faces in none; the .mtl text.
+    std::string parts(reference::Model& m) {
+        const int count = integer(1, 3);
+        std::string mtl;
+        for (int c = 0; c < count; ++c) {
+            const Colour kd(integer(0, 256) / 256.0, integer(0, 256) / 256.0,
+                            integer(0, 256) / 256.0);
+            m.part_colours.push_back(kd);
+            mtl += "newmtl m" + std::to_string(c) + "\nKd " + num(kd.x) + " " + num(kd.y) + " " +
+                   num(kd.z) + "\n";
+        }
+        int part = chance(0.3) ? -1 : integer(0, count - 1);
+        for (std::size_t f = 0; f < m.faces.size(); ++f) {
+            if (f > 0 && chance(0.4)) part = integer(-1, count - 1);
+            m.face_part.push_back(part);
+        }
+        return mtl;
+    }
+
     // A scale with an odd number of negative components: a mirror.
     Vec3 mirror_scale() {
         Vec3 v(1.0);
@@ -246,22 +269,31 @@ class SceneGenerator {
                                                    0.25 * integer(1, 4))
                                             : v);
         }
-        const std::string name = "model" + std::to_string(models_++) + ".obj";
+        const std::string stem = "model" + std::to_string(models_++);
+        const std::string name = stem + ".obj";
         std::string obj;
+        const bool file_materials = features_.file_materials && chance(0.7);
+        if (file_materials) obj += "mtllib " + stem + ".mtl\n";
+        if (file_materials) out.file_bytes[stem + ".mtl"] = parts(m);
         for (const Vec3& v : m.positions)
             obj += "v " + num(v.x) + " " + num(v.y) + " " + num(v.z) + "\n";
         for (const Vec3& n : m.normals)
             obj += "vn " + num(n.x) + " " + num(n.y) + " " + num(n.z) + "\n";
-        for (const auto& f : m.faces) {
+        for (std::size_t f = 0; f < m.faces.size(); ++f) {
+            // A run's first face names its part: faces before any usemtl,
+            // or after an unknown name, take the mesh's own material.
+            const int part = m.face_part.empty() ? -1 : m.face_part[f];
+            if (!m.face_part.empty() && (f == 0 ? part >= 0 : part != m.face_part[f - 1]))
+                obj += part >= 0 ? "usemtl m" + std::to_string(part) + "\n" : "usemtl unknown\n";
             obj += "f";
-            for (int k : f)
+            for (int k : m.faces[f])
                 obj += " " + std::to_string(k + 1) +
                        (m.normals.empty() ? "" : "//" + std::to_string(k + 1));
             obj += "\n";
         }
         out.file_bytes[name] = obj;
         Primitive p{Mesh{name, std::string(smooth ? kSmoothShading : kFlatShading), smooth_angle,
-                         std::string(kSceneMaterials)},
+                         std::string(file_materials ? kFileMaterials : kSceneMaterials)},
                     material(), transforms()};
         // The model's own size first, then its ops; then a last translation puts
         // the chosen point on the chosen pixel's ray.
@@ -524,6 +556,7 @@ class SceneGenerator {
         } else if (const auto* mesh = std::get_if<Mesh>(&p.shape)) {
             t = "  mesh { file: \"" + mesh->file + "\"; shading: \"" + mesh->shading + "\"; ";
             if (mesh->smooth_angle) t += "smooth_angle: " + num(*mesh->smooth_angle) + "; ";
+            if (mesh->materials != kSceneMaterials) t += "materials: \"" + mesh->materials + "\"; ";
         }
         const Material& m = p.material;
         const Material d;

@@ -2,10 +2,10 @@
 // An independent, deliberately plain renderer of docs/language.md sections 5-9
 // and of the extensions of sections 13 and 14 that random scenes use (triangles
 // and meshes, flat and smooth; refraction and transmitted shadows; image maps on
-// triangles; the pixel hash, lights with a radius, the lens, sky maps and
-// generated smooth normals), for the differential test, written from the text
-// of SEMANTICS.md §5-§9.4: the R2 samples of each pixel (one at its centre by
-// default), every ray tested against every primitive in that primitive's own object
+// triangles; the pixel hash, lights with a radius, the lens, sky maps,
+// generated smooth normals and an OBJ's Kd per usemtl), for the differential
+// test, written from the text of SEMANTICS.md §5-§9.5: the R2 samples of each pixel (one at its
+// centre by default), every ray tested against every primitive in that primitive's own object
 // space, in double precision; no acceleration structure, no tables, no tiles,
 // no code shared with the core (only the Scene values and glm's vector
 // arithmetic). It reads no file: the generator hands it the triangles and
@@ -140,6 +140,10 @@ struct Model {
     std::vector<Vec3> positions;
     std::vector<Vec3> normals;  // one a vertex, or none
     std::vector<std::array<int, 3>> faces;
+    // With materials: "file" (§14.5): each face's part, an index into
+    // part_colours (its Kd), or -1 for the mesh's own material.
+    std::vector<int> face_part;
+    std::vector<Colour> part_colours;
 };
 
 // A picture's texels, row 0 at the bottom, 3 bytes a texel.
@@ -251,6 +255,7 @@ class Tracer {
                 q.unit_normal = plane->normal / std::sqrt(glm::dot(plane->normal, plane->normal));
             if (const auto* mesh = std::get_if<Mesh>(&p.shape)) {
                 q.model = &files.models.at(mesh->file);
+                q.file_materials = mesh->materials == kFileMaterials;
                 if (mesh->shading == kSmoothShading && !q.model->normals.empty())
                     for (const auto& face : q.model->faces)
                         q.corner_normals.push_back({q.model->normals[face[0]],
@@ -381,6 +386,7 @@ class Tracer {
         // A smooth mesh's normal at each corner of each face, object space:
         // the file's, or generated (§14.4); empty when shaded flat.
         std::vector<std::array<Vec3, 3>> corner_normals;
+        bool file_materials = false;       // pigments from the model's parts (§14.5)
         const Picture* picture = nullptr;  // its image map
     };
 
@@ -648,7 +654,9 @@ class Tracer {
             }
         }
         Colour pigment = m.pigment;
-        if (q.picture) {
+        if (q.file_materials && !q.model->face_part.empty() && q.model->face_part[root.part] >= 0)
+            pigment = q.model->part_colours[q.model->face_part[root.part]];
+        else if (q.picture) {
             const auto* t = std::get_if<Triangle>(q.shape);
             const Vec3 uv = t ? w * t->uv_a + root.u * t->uv_b + root.v * t->uv_c : Vec3(0.0);
             pigment = bilinear(*q.picture, uv.x, uv.y);
