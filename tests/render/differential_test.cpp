@@ -5,7 +5,8 @@
 // The comparison: every pixel the reference does not flag as numerically
 // ambiguous must match to the byte; an ambiguous pixel must lie, channel by
 // channel, within one level of the values the reference's variant rays gave;
-// and a scene may have at most max(3, 1%) ambiguous pixels, plus one for
+// and a scene may have at most max(3, 1% of its pixel samples) ambiguous
+// pixels (a pixel of several samples is ambiguous when any of them is), plus one for
 // each mesh (each is placed so that a pixel's centre ray meets one of its
 // vertices or edges exactly); more means the scene or the flagging has gone
 // wrong, not that the render is right.
@@ -140,7 +141,8 @@ int ambiguity_limit(const Image8& image, const Scene& scene) {
     const auto meshes =
         std::count_if(scene.primitives.begin(), scene.primitives.end(),
                       [](const Primitive& p) { return std::holds_alternative<Mesh>(p.shape); });
-    return std::max(3, image.width * image.height / 100) + static_cast<int>(meshes);
+    return std::max(3, image.width * image.height * scene.settings.samples / 100) +
+           static_cast<int>(meshes);
 }
 
 fs::path write_artifacts(const std::string& stem, const std::string& text, const Image8& core,

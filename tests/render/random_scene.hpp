@@ -99,25 +99,29 @@ class SceneGenerator {
         const int primitives = chance(0.25) ? integer(9, 30) : integer(2, 8);
         int planes = 0;
         for (int i = 0; i < primitives; ++i) {
-            if (extensions_ && chance(0.5)) {
-                s.primitives.push_back(chance(0.5) ? triangle() : mesh(out, s));
-                if (reference::flattened(s.primitives.back().transforms)) ++out.flattened;
-                continue;
-            }
-            const double kind = uniform(0, 1);
-            // Built with its shape: assigning one over a default Sphere makes
-            // GCC 12 warn falsely about the Mesh alternative's string.
-            const bool plane = kind < 0.15 && planes < 2;
-            if (plane) ++planes;
-            Primitive p{plane        ? Shape(Plane{})
-                        : kind < 0.5 ? Shape(Cylinder{})
-                                     : Shape(Sphere{}),
-                        {},
-                        {}};
-            p.material = material();
-            p.transforms = transforms();
+            // Drawn again when the ops shrink it so much that its own size
+            // or place passes the language's limit of 1e9.
+            Primitive p;
+            do {
+                if (extensions_ && chance(0.5)) {
+                    p = chance(0.5) ? triangle() : mesh(out, s);
+                    continue;
+                }
+                const double kind = uniform(0, 1);
+                // Built with its shape: assigning one over a default Sphere makes
+                // GCC 12 warn falsely about the Mesh alternative's string.
+                const bool plane = kind < 0.15 && planes < 2;
+                p = Primitive{plane        ? Shape(Plane{})
+                              : kind < 0.5 ? Shape(Cylinder{})
+                                           : Shape(Sphere{}),
+                              {},
+                              {}};
+                p.material = material();
+                p.transforms = transforms();
+                place(p);
+            } while (!within_limits(p));
+            if (std::holds_alternative<Plane>(p.shape)) ++planes;
             if (reference::flattened(p.transforms)) ++out.flattened;
-            place(p);
             s.primitives.push_back(p);
         }
         out.text = text(s);
@@ -204,6 +208,24 @@ class SceneGenerator {
             m.face_part.push_back(part);
         }
         return mtl;
+    }
+
+    // Whether every number of the primitive is within the language's 1e9.
+    static bool within_limits(const Primitive& p) {
+        constexpr double limit = 1e9;
+        auto fits = [&](const Vec3& v) { return reference::max_abs(v) <= limit; };
+        bool ok = true;
+        if (const auto* sphere = std::get_if<Sphere>(&p.shape))
+            ok = fits(sphere->center) && sphere->radius <= limit;
+        else if (const auto* cylinder = std::get_if<Cylinder>(&p.shape))
+            ok = cylinder->radius <= limit && cylinder->height <= limit;
+        else if (const auto* plane = std::get_if<Plane>(&p.shape))
+            ok = fits(plane->normal) && std::abs(plane->distance) <= limit;
+        else if (const auto* t = std::get_if<Triangle>(&p.shape))
+            ok = fits(t->a) && fits(t->b) && fits(t->c);
+        for (const TransformOp& op : p.transforms)
+            ok = ok && fits(op.vector) && std::abs(op.degrees) <= limit;
+        return ok;
     }
 
     // A scale with an odd number of negative components: a mirror.
