@@ -70,8 +70,8 @@ constexpr std::uint64_t default_last_seed = 299;
 constexpr Features kLanded{
     .soft_shadows = false,
     .lens = false,
-    .sky = false,
-    .generated_normals = false,
+    .sky = true,
+    .generated_normals = true,
     .file_materials = false,
 };
 
