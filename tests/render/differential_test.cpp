@@ -68,8 +68,8 @@ constexpr std::uint64_t default_last_seed = 299;
 // The features of §14 the core implements. A feature's generator joins the
 // differential runs when its implementation lands: turn it on here then.
 constexpr Features kLanded{
-    .soft_shadows = false,
-    .lens = false,
+    .soft_shadows = true,
+    .lens = true,
     .sky = true,
     .generated_normals = true,
     .file_materials = false,

@@ -158,7 +158,9 @@ Primitive new_mesh(const Scene& scene, const std::string& file, const Model& mod
     const ModelBox box = model_box(model);
     Primitive p;
     p.material = new_material();
-    p.shape = Mesh{file, std::string(kSmoothShading)};
+    Mesh mesh;
+    mesh.file = file;
+    p.shape = mesh;
     if (box.empty()) return p;
     const Vec3 low = box.lower, high = box.upper;
     const Vec3 extent = high - low;
