@@ -2,11 +2,10 @@
 // comes to the user, across the top of the image, with the differences
 // between the two texts; through the OSMesa frame code.
 
-#include "app/headless.hpp"
 #include "common/files.hpp"
 #include "model/app_actions.hpp"
 #include "model/document_edits.hpp"
-#include "viewer/viewer_test_files.hpp"
+#include "viewer/viewer_fixture.hpp"
 
 #include <gtest/gtest.h>
 
@@ -19,13 +18,14 @@ namespace {
 using namespace jt::test;
 namespace fs = std::filesystem;
 
-TEST(ViewerReloadBar, TheChoiceIsAboveTheImageAndShowsTheDifferences) {
-    HeadlessViewer viewer(1100, 700);
-    ASSERT_TRUE(viewer.ok()) << viewer.error();
-    AppState state{test_config()};
-    const fs::path file = scene_copy("reload-bar");
-    open_scene(state, file);
-    ASSERT_TRUE(viewer.run_until_complete(state, kTimeout));
+class ViewerReloadBar : public ViewerFixture {
+  protected:
+    ViewerReloadBar() : ViewerFixture(1100, 700) {}
+};
+
+TEST_F(ViewerReloadBar, TheChoiceIsAboveTheImageAndShowsTheDifferences) {
+    const fs::path file = open_rendered_copy("reload-bar");
+    ASSERT_FALSE(HasFatalFailure());
     const ScreenRect image_area = viewer.image_area();
     EXPECT_EQ(find_item(viewer.ui_items(), "reload bar"), nullptr) << "no choice to make";
 
@@ -70,7 +70,6 @@ TEST(ViewerReloadBar, TheChoiceIsAboveTheImageAndShowsTheDifferences) {
     EXPECT_EQ(find_item(viewer.ui_items(), "reload bar"), nullptr);
     EXPECT_EQ(state.doc.scene.settings.width, 32);
     EXPECT_EQ(state.doc.scene.cameras[1].fov, 55.0);
-    fs::remove_all(file.parent_path());
 }
 
 }  // namespace

@@ -3,12 +3,11 @@
 // image is named after the file and the camera has a name; new objects go
 // with the objects, and a plane lies at the view's floor.
 
-#include "app/headless.hpp"
 #include "common/files.hpp"
 #include "common/scratch_dir.hpp"
 #include "model/app_actions.hpp"
 #include "model/document_edits.hpp"
-#include "viewer/viewer_test_files.hpp"
+#include "viewer/viewer_fixture.hpp"
 
 #include <gtest/gtest.h>
 
@@ -21,11 +20,15 @@ namespace {
 using namespace jt::test;
 namespace fs = std::filesystem;
 
-TEST(ViewerStartScene, TheObjectsPanelOpensOnTheEmptyListAndObjectsGoWithTheObjects) {
-    HeadlessViewer viewer(1100, 700);
-    ASSERT_TRUE(viewer.ok()) << viewer.error();
-    AppState state{test_config()};
+class ViewerStartScene : public ViewerFixture {
+  protected:
+    ViewerStartScene() : ViewerFixture(1100, 700) {}
+    void TearDown() override { fs::remove_all(dir); }
     const fs::path dir = make_scratch_dir("viewer-start-scene");
+};
+
+TEST_F(ViewerStartScene, TheObjectsPanelOpensOnTheEmptyListAndObjectsGoWithTheObjects) {
+    ASSERT_TRUE(viewer.ok()) << viewer.error();
     const fs::path file = dir / "garden.jts";
     write_file(file, "");
     open_scene(state, file);
@@ -43,7 +46,6 @@ TEST(ViewerStartScene, TheObjectsPanelOpensOnTheEmptyListAndObjectsGoWithTheObje
     const std::string with_plane = document_text(state.doc);
     EXPECT_LT(with_plane.find("plane {"), with_plane.find("point_light {")) << with_plane;
     EXPECT_NE(with_plane.find("distance: 0;"), std::string::npos) << with_plane;
-    fs::remove_all(dir);
 }
 
 }  // namespace
