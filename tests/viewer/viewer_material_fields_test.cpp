@@ -101,5 +101,22 @@ TEST_F(ViewerMaterialFields, AValuePastTheLimitIsRefusedAndTheFieldSaysTheLimit)
     EXPECT_NE(refusal().find("must be from -1e+09 to 1e+09"), std::string::npos) << refusal();
 }
 
+// A whole number typed past its limit is refused as a number is, never
+// clamped: width 100000 once became 65535 without a word.
+TEST_F(ViewerMaterialFields, AWholeNumberPastItsLimitIsRefusedNotClamped) {
+    open_rendered_copy("int-field-limit");
+    ASSERT_FALSE(HasFatalFailure());
+    for (int i = 0; i < 2; ++i) viewer.frame(state);
+    const int width = state.doc.scene.settings.width;
+    const std::string before = document_text(state.doc);
+    ASSERT_TRUE(type_into("width", "100000")) << "a width field";
+    EXPECT_EQ(state.doc.scene.settings.width, width) << "neither taken nor clamped to 65535";
+    EXPECT_EQ(document_text(state.doc), before);
+    EXPECT_EQ(refusal(), "width: 100000 is refused: must be a whole number from 0 to 65535");
+    ASSERT_TRUE(type_into("width", "80"));
+    EXPECT_EQ(state.doc.scene.settings.width, 80);
+    EXPECT_EQ(refusal(), "") << "a value taken clears the note";
+}
+
 }  // namespace
 }  // namespace jt::view

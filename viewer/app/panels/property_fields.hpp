@@ -40,7 +40,7 @@ bool edit_property(const PropertySpec<Block>& property, Block& block) {
         };
         if constexpr (std::is_same_v<T, int>) {
             return edit_int(label, value, static_cast<int>(bounds.min),
-                            static_cast<int>(bounds.max));
+                            static_cast<int>(bounds.max), why);
         } else if constexpr (std::is_same_v<T, double>) {
             return edit_number(label, value, field_speed(property.range, property.unit, value),
                                bounds.min, bounds.max, why);

@@ -31,13 +31,16 @@ Refusal& refusal() {
 
 // After a field's widget (`id`): a refused value notes why, an accepted one
 // clears the note, and the note is drawn under its field.
+// A whole number's field (`whole`) says the number as typed, not as 1e+05.
 void settle_refusal(ImGuiID id, const char* label, bool refused, bool accepted, double typed,
-                    const std::function<std::string()>& why) {
+                    const std::function<std::string()>& why, bool whole = false) {
     Refusal& r = refusal();
     if (refused) {
         r.field = id;
         r.message = std::string(label) + ": ";
-        r.message += std::isfinite(typed) ? number_text(typed) : std::string("the value typed");
+        r.message += !std::isfinite(typed) ? std::string("the value typed")
+                     : whole               ? std::to_string(static_cast<long long>(typed))
+                                           : number_text(typed);
         r.message += " is refused: ";
         r.message += why ? why() : std::string("outside the field's range");
     } else if (accepted && r.field == id) {
@@ -114,14 +117,18 @@ bool edit_colour(const char* label, Colour& value) {
     return true;
 }
 
-bool edit_int(const char* label, int& value, int min, int max) {
+// Whole numbers follow the same rule as edit_number: a typed value past the
+// bounds is refused and the field says why, never clamped to the bound.
+bool edit_int(const char* label, int& value, int min, int max,
+              const std::function<std::string()>& why) {
+    const ImGuiID id = ImGui::GetID(label);
     int v = value;
-    const bool changed =
-        ImGui::DragInt(label, &v, 1.0f, min, max, "%d", ImGuiSliderFlags_AlwaysClamp);
+    const bool changed = ImGui::DragInt(label, &v, 1.0f, min, max, "%d");
     note_item(label, false);
-    if (!changed) return false;
-    v = std::clamp(v, min, max);
-    if (v == value) return false;
+    const bool refused = changed && max > min && (v < min || v > max);
+    const bool accepted = changed && !refused && v != value;
+    settle_refusal(id, label, refused, accepted, v, why, /*whole=*/true);
+    if (!accepted) return false;
     value = v;
     return true;
 }

@@ -13,7 +13,7 @@
 
 namespace jt::view {
 
-// A number (or each of a vector's components) held to [min, max] when
+// A number (or each of a vector's components, or a whole number) held to [min, max] when
 // max > min: dragging stops at the bounds, and a value typed past them is
 // refused, the field keeping its value and saying `why()` ("must be at most
 // 1e+09") under it until it is next changed.
@@ -22,7 +22,8 @@ bool edit_number(const char* label, double& value, float speed, double min = 0.0
 bool edit_vector(const char* label, Vec3& value, float speed = 0.05f, double min = 0.0,
                  double max = 0.0, const std::function<std::string()>& why = {});
 bool edit_colour(const char* label, Colour& value);
-bool edit_int(const char* label, int& value, int min, int max);
+bool edit_int(const char* label, int& value, int min, int max,
+              const std::function<std::string()>& why = {});
 // A colour that may be unset (a material's checker): a checkbox sets it (to
 // `when_set`) or clears it, and its colour is edited while set.
 bool edit_optional_colour(const char* label, std::optional<Colour>& value, const Colour& when_set);
