@@ -588,7 +588,7 @@ class Monkey {
             frame();
             return std::nullopt;
         }
-        const std::vector<UiItem>& items = viewer_.ui_items();
+        const UiItems& items = viewer_.ui_items();
         return items[static_cast<std::size_t>(pick(static_cast<int>(items.size())))];
     }
 

@@ -93,7 +93,7 @@ class HeadlessViewer {
     ScreenRect image_rect() const { return frame_state_.image_rect; }
     ScreenRect image_area() const { return frame_state_.image_area; }
     // What the last frame drew where (ui_items.hpp).
-    const std::vector<UiItem>& ui_items() const { return frame_state_.ui_items; }
+    const UiItems& ui_items() const { return frame_state_.ui_items; }
 
   private:
     OsMesaContext context_;

@@ -69,7 +69,7 @@ void region_and_compare(AppState& state, const FrameState& frame) {
     if (button("Clear region",
                "Render the whole image again. Ctrl+drag on the image renders only that "
                "rectangle (as jtracer-cli --region); the rest keeps what it showed",
-               state.view.render_region ? std::string()
+               state.view.render_region ? ""
                                         : "No region: Ctrl+drag on the image to render only a "
                                           "rectangle of it (as jtracer-cli --region)"))
         clear_render_region(state);

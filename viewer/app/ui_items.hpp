@@ -6,7 +6,9 @@
 
 #include "model/image_layout.hpp"
 
+#include <cstddef>
 #include <string>
+#include <string_view>
 #include <vector>
 
 namespace jt::view {
@@ -19,9 +21,22 @@ struct UiItem {
     bool clipped = false;  // its right edge is past the visible part of its window
 };
 
+// A frame's items. Their storage stays from one frame to the next and a label
+// is copied into the string that held the same item last frame, so a frame
+// like the last one records its items without allocating.
+struct UiItems {
+    std::vector<UiItem> slots;  // slots[count...] are kept for the next frame
+    std::size_t count = 0;
+    const UiItem* begin() const { return slots.data(); }
+    const UiItem* end() const { return slots.data() + count; }
+    std::size_t size() const { return count; }
+    bool empty() const { return count == 0; }
+    const UiItem& operator[](std::size_t i) const { return slots[i]; }
+};
+
 // Items are collected into `items` until the next call (nullptr: collect none).
 // viewer_frame starts each frame with the frame's list.
-void collect_ui_items(std::vector<UiItem>* items);
+void collect_ui_items(UiItems* items);
 
 // Records the last ImGui item under `label`.
 void note_item(const char* label, bool has_tooltip);
@@ -30,6 +45,6 @@ void note_item(const char* label, bool has_tooltip);
 void note_window(const char* label);
 
 // The item of `items` called `label`, or nullptr.
-const UiItem* find_item(const std::vector<UiItem>& items, const std::string& label);
+const UiItem* find_item(const UiItems& items, std::string_view label);
 
 }  // namespace jt::view

@@ -149,7 +149,8 @@ void viewer_frame(AppState& state, FrameState& frame, const FrameInfo& info) {
         const std::string& inspected = state.view.inspected;
         const bool in_status =
             !inspected.empty() && !inspector_box_fits(inspected, frame.image_area);
-        status_window(state, h - status_h, w, in_status ? inspected : std::string());
+        static const std::string none;
+        status_window(state, h - status_h, w, in_status ? inspected : none);
         if (frame.presenter.has_image())
             image_toolbar(state, frame, place_in_area(state, frame, area, info.framebuffer_scale));
         // Once the panel edge is let go: a drag writes the file once, not every frame.

@@ -30,7 +30,7 @@ struct FrameState {
     bool compare_holds_difference = false;
     std::string compare_summary;  // of the difference shown
     SelectionOverlay overlay;
-    std::vector<UiItem> ui_items;
+    UiItems ui_items;
     TextEditorState text_editor;
     ReloadBarState reload_bar;
     ScreenRect image_area;  // where the last frame could show the image

@@ -267,6 +267,11 @@ struct TextFields {
     bool camera_name_editing = false;
     std::string new_camera_name = "viewer";
     std::string object_filter;  // the Objects panel lists the objects whose name holds it
+    // The objects object_filter lets through, worked out again only when the
+    // filter or the scene changes: at 100,000 objects the list is 400 kB.
+    std::string filtered_for;
+    std::uint64_t filtered_revision = 0;  // SceneDocument::revision
+    std::vector<int> filtered;
     std::string open_path_input;
     std::string new_mesh_file;  // the Add object menu's model file field
     std::string save_image_path = "jtracer-view.png";

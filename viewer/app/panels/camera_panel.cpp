@@ -10,24 +10,27 @@
 
 #include "jtracer/validate.hpp"
 
+#include <cstdio>
 #include <functional>
 
 namespace jt::view {
 
 namespace {
 
-std::string camera_label(const Scene& scene, int i) {
-    return scene.cameras[i].name.empty() ? "camera " + std::to_string(i + 1)
-                                         : scene.cameras[i].name;
+// A camera's name, or "camera 2" written into `unnamed` for one without a name.
+const char* camera_label(const Scene& scene, int i, char (&unnamed)[32]) {
+    if (!scene.cameras[i].name.empty()) return scene.cameras[i].name.c_str();
+    std::snprintf(unnamed, sizeof unnamed, "camera %d", i + 1);
+    return unnamed;
 }
 
 // Why "Make active" cannot be pressed for the selected camera, or empty.
-std::string why_not_make_active(const Scene& scene, int selected) {
+const char* why_not_make_active(const Scene& scene, int selected) {
     if (scene.cameras[selected].name.empty())
         return "Only a named camera can be made active: give it a name: in the file";
     if (selected == active_camera_index(scene))
         return "This camera is already the one jtracer-cli renders (active_camera)";
-    return {};
+    return "";
 }
 
 // The selected scene camera's name and numbers, and the commands on it. The
@@ -52,9 +55,9 @@ void scene_camera_editor(AppState& state, int selected) {
         };
     if (edit_properties(camera)) note_scene_changed(state.doc);
     const Scene& scene = state.doc.scene;
-    const std::string no_size = scene.settings.width > 0 && scene.settings.height > 0
-                                    ? ""
-                                    : "Set the image's width and height first";
+    const char* no_size = scene.settings.width > 0 && scene.settings.height > 0
+                              ? ""
+                              : "Set the image's width and height first";
     if (button("Set aspect from image", "aspect = width / height of render_settings", no_size))
         command = [&state, index] { set_aspect_from_image(state, index); };
     same_line_if_fits("Add camera");
@@ -79,14 +82,15 @@ void camera_panel(AppState& state) {
     if (!panel_header("Camera", "Camera", true)) return;
     const Scene& scene = state.doc.scene;
     const int selected = selected_camera(state.view, state.doc.scene);
-    const std::string current = state.view.free_camera_active ? "free camera"
-                                : selected < 0                ? "(none)"
-                                                              : camera_label(scene, selected);
-    if (ImGui::BeginCombo("View", current.c_str())) {
+    char unnamed[32];
+    const char* current = state.view.free_camera_active ? "free camera"
+                          : selected < 0                ? "(none)"
+                                                        : camera_label(scene, selected, unnamed);
+    if (ImGui::BeginCombo("View", current)) {
         int chosen = -1;
         bool free = false;
         for (int i = 0; i < static_cast<int>(scene.cameras.size()); ++i)
-            if (ImGui::Selectable(camera_label(scene, i).c_str(),
+            if (ImGui::Selectable(camera_label(scene, i, unnamed),
                                   !state.view.free_camera_active && i == selected))
                 chosen = i;
         if (ImGui::Selectable("free camera", state.view.free_camera_active)) free = true;
@@ -110,7 +114,7 @@ void camera_panel(AppState& state) {
     }
     if (!state.view.free_camera_active && selected >= 0) {
         same_line_if_fits("Make active");
-        const std::string why = why_not_make_active(scene, selected);
+        const char* why = why_not_make_active(scene, selected);
         if (button("Make active",
                    "Make this camera the scene's active_camera (what jtracer-cli "
                    "renders); Save scene to keep it",
@@ -124,10 +128,10 @@ void camera_panel(AppState& state) {
     note_item("camera name", true);
     tooltip("The name of the camera that Copy to scene adds");
     same_line_if_fits("Copy to scene");
-    const std::string why_not_copy =
-        !state.doc.loaded || selected < 0      ? "No scene with a camera is open"
-        : state.fields.new_camera_name.empty() ? "Type a name for the new camera first"
-                                               : "";
+    const char* why_not_copy = !state.doc.loaded || selected < 0 ? "No scene with a camera is open"
+                               : state.fields.new_camera_name.empty()
+                                   ? "Type a name for the new camera first"
+                                   : "";
     if (button("Copy to scene", "Add the current view to the scene as a new camera", why_not_copy))
         copy_free_camera_to_scene(state, state.fields.new_camera_name);
     if (state.view.free_camera_active) {

@@ -3,14 +3,17 @@
 
 #include <imgui.h>
 
+#include <cstdio>
+
 namespace jt::view {
 
 void diagnostics_panel(AppState& state) {
     const auto& diagnostics = state.doc.diagnostics;
     const bool errors = state.doc.load_failed;
-    const std::string title = "Diagnostics (" + std::to_string(diagnostics.size()) + ")###diag";
+    char title[48];
+    std::snprintf(title, sizeof title, "Diagnostics (%zu)###diag", diagnostics.size());
     if (errors) ImGui::SetNextItemOpen(true);
-    if (!panel_header(title.c_str(), "Diagnostics", false)) return;
+    if (!panel_header(title, "Diagnostics", false)) return;
     if (diagnostics.empty()) {
         ImGui::TextDisabled("No errors or warnings.");
         return;

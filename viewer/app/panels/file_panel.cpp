@@ -42,10 +42,10 @@ void save_as_choice(AppState& state) {
     if (button("Cancel##save_as", "Do not save now")) state.files.save_as_conflict.clear();
 }
 
-std::string why_not_save(const AppState& state) {
+const char* why_not_save(const AppState& state) {
     if (!state.doc.loaded) return "No scene is open";
     if (!has_unsaved_edits(state.doc)) return "No unsaved edits: the file holds this scene";
-    return {};
+    return "";
 }
 
 }  // namespace

@@ -25,55 +25,80 @@ bool shape_editor(Shape& shape) {
     return std::visit([](auto& s) { return edit_properties(s); }, shape);
 }
 
-std::string object_name(const Primitive& p, std::size_t index) {
-    return std::string(keyword_of(p.shape)) + " " + std::to_string(index + 1);
+// "sphere 3": the object's keyword and its place among all objects.
+struct ObjectName {
+    char text[48];
+};
+ObjectName object_name(const Primitive& p, std::size_t index) {
+    ObjectName name;
+    const std::string_view keyword = keyword_of(p.shape);
+    std::snprintf(name.text, sizeof name.text, "%.*s %zu", static_cast<int>(keyword.size()),
+                  keyword.data(), index + 1);
+    return name;
 }
 
-// The objects the filter lets through, in scene order (all of them when it is empty).
-std::vector<int> filtered(const std::vector<Primitive>& primitives, const std::string& filter) {
-    std::vector<int> shown;
-    if (filter.empty()) {
-        shown.resize(primitives.size());
-        for (std::size_t i = 0; i < primitives.size(); ++i) shown[i] = static_cast<int>(i);
-        return shown;
+// The rows of the list: every object in scene order, or the ones the filter
+// lets through.
+struct ShownObjects {
+    const std::vector<int>* filtered = nullptr;  // nullptr: all of them
+    int count = 0;
+    int operator[](int row) const {
+        return filtered ? (*filtered)[static_cast<std::size_t>(row)] : row;
     }
-    for (std::size_t i = 0; i < primitives.size(); ++i)
-        if (object_name(primitives[i], i).find(filter) != std::string::npos)
-            shown.push_back(static_cast<int>(i));
-    return shown;
+};
+
+ShownObjects shown_objects(TextFields& fields, const SceneDocument& doc) {
+    const auto& primitives = doc.scene.primitives;
+    if (fields.object_filter.empty()) return {nullptr, static_cast<int>(primitives.size())};
+    if (fields.filtered_for != fields.object_filter || fields.filtered_revision != doc.revision) {
+        fields.filtered.clear();
+        for (std::size_t i = 0; i < primitives.size(); ++i)
+            if (std::string_view(object_name(primitives[i], i).text).find(fields.object_filter) !=
+                std::string_view::npos)
+                fields.filtered.push_back(static_cast<int>(i));
+        fields.filtered_for = fields.object_filter;
+        fields.filtered_revision = doc.revision;
+    }
+    return {&fields.filtered, static_cast<int>(fields.filtered.size())};
+}
+
+// The row that lists object `i`, or -1 when the filter hides it.
+int row_of(const ShownObjects& shown, int i) {
+    if (!shown.filtered) return i < shown.count ? i : -1;
+    const auto at = std::find(shown.filtered->begin(), shown.filtered->end(), i);
+    return at == shown.filtered->end() ? -1 : static_cast<int>(at - shown.filtered->begin());
 }
 
 // One row a listed object; only the rows in view are drawn (ImGuiListClipper),
 // so that a scene of 100,000 objects lists as fast as one of ten.
-void object_list(AppState& state, const std::vector<int>& shown, int selected) {
+void object_list(AppState& state, const ShownObjects& shown, int selected) {
     auto& primitives = state.doc.scene.primitives;
     const float row = ImGui::GetTextLineHeightWithSpacing();
     const float height =
-        std::min(static_cast<float>(shown.size()), 10.0f) * row + ImGui::GetStyle().WindowPadding.y;
+        std::min(static_cast<float>(shown.count), 10.0f) * row + ImGui::GetStyle().WindowPadding.y;
     if (state.view.reveal_selection && selected >= 0) scroll_here_if_hidden();  // the sidebar's
     ImGui::BeginChild("##object_list", ImVec2(0, std::max(height, row)), true);
     if (state.view.reveal_selection && selected >= 0) {
-        const auto at = std::find(shown.begin(), shown.end(), selected);
-        if (at != shown.end())
-            ImGui::SetScrollY(static_cast<float>(at - shown.begin()) * row -
-                              ImGui::GetWindowHeight() * 0.4f);
+        const int at = row_of(shown, selected);
+        if (at >= 0)
+            ImGui::SetScrollY(static_cast<float>(at) * row - ImGui::GetWindowHeight() * 0.4f);
     }
     ImGuiListClipper clipper;
-    clipper.Begin(static_cast<int>(shown.size()), row);
+    clipper.Begin(shown.count, row);
     while (clipper.Step())
         for (int k = clipper.DisplayStart; k < clipper.DisplayEnd; ++k) {
-            const int i = shown[static_cast<std::size_t>(k)];
+            const int i = shown[k];
             const Primitive& p = primitives[static_cast<std::size_t>(i)];
             ImGui::PushID(i);
             const Colour& c = p.material.pigment;
             ImGui::ColorButton("##swatch", ImVec4(float(c.x), float(c.y), float(c.z), 1.0f),
                                ImGuiColorEditFlags_NoTooltip, ImVec2(14, 14));
             ImGui::SameLine();
-            const std::string label = object_name(p, static_cast<std::size_t>(i));
-            if (ImGui::Selectable(label.c_str(), i == selected))
+            const ObjectName label = object_name(p, static_cast<std::size_t>(i));
+            if (ImGui::Selectable(label.text, i == selected))
                 select(state.view,
                        i == selected ? Selection{} : Selection{Selection::Kind::primitive, i});
-            note_item(label.c_str(), false);
+            note_item(label.text, false);
             ImGui::PopID();
         }
     ImGui::EndChild();
@@ -178,8 +203,9 @@ void objects_panel(AppState& state) {
     // Empty, it is where a scene starts: open, with the Add object menu.
     if ((state.view.reveal_selection && selected >= 0) || (state.doc.loaded && primitives.empty()))
         ImGui::SetNextItemOpen(true);
-    const std::string title = "Objects (" + std::to_string(primitives.size()) + ")###objects";
-    if (!panel_header(title.c_str(), "Objects", false)) return;
+    char title[48];
+    std::snprintf(title, sizeof title, "Objects (%zu)###objects", primitives.size());
+    if (!panel_header(title, "Objects", false)) return;
     add_object_menu(state);
     ImGui::InputTextWithHint("##filter", "filter, e.g. sphere or plane 2",
                              &state.fields.object_filter);
@@ -187,10 +213,10 @@ void objects_panel(AppState& state) {
     tooltip(
         "Lists only the objects whose name holds this text. A click on the image selects "
         "the object under it.");
-    const std::vector<int> shown = filtered(primitives, state.fields.object_filter);
+    const ShownObjects shown = shown_objects(state.fields, state.doc);
     if (primitives.empty())
         ImGui::TextDisabled("No objects yet: Add object puts one in front of the camera");
-    else if (shown.empty())
+    else if (shown.count == 0)
         ImGui::TextDisabled("no object matches");
     else
         object_list(state, shown, selected);
@@ -203,7 +229,7 @@ void objects_panel(AppState& state) {
     std::function<void()> command;
     ImGui::PushID(selected);
     ImGui::Separator();
-    ImGui::TextUnformatted(object_name(p, i).c_str());
+    ImGui::TextUnformatted(object_name(p, i).text);
     const BlockRef ref{BlockKind::primitive, i};
     if (button("Duplicate", "Add a copy of this object's block right after it"))
         command = [&state, ref] { duplicate_block(state, ref); };

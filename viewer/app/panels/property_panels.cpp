@@ -11,6 +11,7 @@
 
 #include <imgui.h>
 
+#include <cstdio>
 #include <functional>
 #include <string>
 
@@ -30,19 +31,20 @@ void lights_panel(AppState& state) {
     const int selected = selection.kind == Selection::Kind::light ? selection.index : -1;
     const bool reveal = state.view.reveal_selection && selected >= 0;
     if (reveal) ImGui::SetNextItemOpen(true);
-    const std::string title = "Lights (" + std::to_string(lights.size()) + ")###lights";
-    if (!panel_header(title.c_str(), "Lights", false)) return;
+    char title[48];
+    std::snprintf(title, sizeof title, "Lights (%zu)###lights", lights.size());
+    if (!panel_header(title, "Lights", false)) return;
     std::function<void()> command;
     if (button("Add point light", "Add a white light above the camera the view shows"))
         command = [&state] { add_light(state); };
     for (std::size_t i = 0; i < lights.size(); ++i) {
         ImGui::PushID(static_cast<int>(i));
-        const std::string label = "point_light " + std::to_string(i + 1);
+        char label[48];
+        std::snprintf(label, sizeof label, "point_light %zu", i + 1);
         const bool chosen = static_cast<int>(i) == selected;
         if (reveal && chosen) ImGui::SetNextItemOpen(true);
-        const bool open =
-            ImGui::TreeNodeEx(label.c_str(), chosen ? ImGuiTreeNodeFlags_Selected : 0);
-        note_item(label.c_str(), false);
+        const bool open = ImGui::TreeNodeEx(label, chosen ? ImGuiTreeNodeFlags_Selected : 0);
+        note_item(label, false);
         if (reveal && chosen) scroll_here_if_hidden();
         if (open) {
             const BlockRef ref{BlockKind::light, i};

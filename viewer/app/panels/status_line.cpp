@@ -22,35 +22,66 @@ std::string seconds_text(double seconds) {
 
 }  // namespace
 
-std::string render_status(const AppState& state) {
-    if (!state.render.render_note.empty() && !state.render.started) return state.render.render_note;
-    if (!state.render.started) return state.render.paused ? "paused" : "idle";
+void render_status(const AppState& state, std::string& text) {
+    text.clear();
+    if (!state.render.render_note.empty() && !state.render.started) {
+        text += state.render.render_note;
+        return;
+    }
+    if (!state.render.started) {
+        text += state.render.paused ? "paused" : "idle";
+        return;
+    }
     const RenderProgress p = state.render.renderer.progress();
     const int samples = state.render.started->options.samples;
-    if (p.pass_count == 0) return state.render.paused ? "paused" : "preparing the scene";
+    if (p.pass_count == 0) {
+        text += state.render.paused ? "paused" : "preparing the scene";
+        return;
+    }
     const double mrays = p.seconds > 0 ? static_cast<double>(p.rays) / p.seconds / 1e6 : 0.0;
     char speed[48];
     std::snprintf(speed, sizeof speed, "%.1f Mrays/s", mrays);
     if (state.render.paused) {
-        std::string text = "paused at " + pass_label(p, samples);
+        text += "paused at ";
+        text += pass_label(p, samples);
         text +=
             state.render.edit_waiting ? " | edit waiting: Space renders it" : " | Space resumes";
-        return text;
+        return;
     }
-    if (render_complete(state.render))
-        return "done: " + std::to_string(p.samples_done) +
-               (p.samples_done == 1 ? " sample" : " samples") + " in " + seconds_text(p.seconds) +
-               " | " + speed;
-    std::string text = pass_label(p, samples) + " | " + seconds_text(p.seconds) + " elapsed";
+    if (render_complete(state.render)) {
+        char done[48];
+        std::snprintf(done, sizeof done, "done: %d %s in ", p.samples_done,
+                      p.samples_done == 1 ? "sample" : "samples");
+        text += done;
+        text += seconds_text(p.seconds);
+        text += " | ";
+        text += speed;
+        return;
+    }
+    text += pass_label(p, samples);
+    text += " | ";
+    text += seconds_text(p.seconds);
+    text += " elapsed";
     // The ETA once enough is done to extrapolate from.
-    if (p.fraction > 0.02 && p.fraction < 1.0)
-        text += ", about " + seconds_text(p.seconds * (1.0 - p.fraction) / p.fraction) + " left";
-    return text + " | " + speed;
+    if (p.fraction > 0.02 && p.fraction < 1.0) {
+        text += ", about ";
+        text += seconds_text(p.seconds * (1.0 - p.fraction) / p.fraction);
+        text += " left";
+    }
+    text += " | ";
+    text += speed;
+}
+
+std::string render_status(const AppState& state) {
+    std::string text;
+    render_status(state, text);
+    return text;
 }
 
 void status_line(AppState& state, const std::string& inspected) {
     const RenderProgress p = state.render.renderer.progress();
-    const std::string status = render_status(state);
+    static std::string status;  // one status line; its storage kept from frame to frame
+    render_status(state, status);
     const float font = ImGui::GetFontSize();
     const float fraction = render_complete(state.render) ? 1.0f : static_cast<float>(p.fraction);
     ImGui::ProgressBar(fraction, ImVec2(font * 10.0f, 0));

@@ -190,14 +190,18 @@ void tooltip(const char* text) {
     }
 }
 
-bool button(const char* label, const char* tooltip_text, const std::string& why_disabled) {
-    const bool disabled = !why_disabled.empty();
+bool button(const char* label, const char* tooltip_text, const char* why_disabled) {
+    const bool disabled = why_disabled && *why_disabled;
     ImGui::BeginDisabled(disabled);
     const bool clicked = ImGui::Button(label);
     ImGui::EndDisabled();
-    tooltip(disabled ? why_disabled.c_str() : tooltip_text);
+    tooltip(disabled ? why_disabled : tooltip_text);
     note_item(label, true);
     return clicked && !disabled;
+}
+
+bool button(const char* label, const char* tooltip_text, const std::string& why_disabled) {
+    return button(label, tooltip_text, why_disabled.c_str());
 }
 
 void scroll_here_if_hidden() {

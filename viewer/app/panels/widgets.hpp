@@ -34,9 +34,11 @@ bool edit_file_name(const char* label, std::string& value, const char* tooltip_t
 // A panel's collapsing header, recorded under `id` (its label without counts).
 bool panel_header(const char* label, const char* id, bool default_open);
 
-// A button that says what it does when hovered. With `why_disabled` set it is
-// greyed out and its tooltip says why instead.
-bool button(const char* label, const char* tooltip, const std::string& why_disabled = {});
+// A button that says what it does when hovered. With `why_disabled` set (not
+// empty) it is greyed out and its tooltip says why instead. A literal reason
+// takes the const char* form, which builds no string on every frame.
+bool button(const char* label, const char* tooltip, const char* why_disabled = "");
+bool button(const char* label, const char* tooltip, const std::string& why_disabled);
 // Shows `text` while the last item is hovered, also when it is disabled.
 void tooltip(const char* text);
 // Scrolls the window so that the next item is in view, only when it is not:
