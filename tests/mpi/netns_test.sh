@@ -154,11 +154,21 @@ grep -q "rank 2" "$work/killed.log" || fail "killed rank: no message naming rank
 complete_or_nothing "killed rank" killed.bmp cli.bmp "${settings[@]}"
 no_strays h1 h2 h3
 
+# Mid-frame is an event, not a time: the link goes down once h3's tiles are
+# flowing (rank 0 has taken 100 KB from it), however long a loaded machine
+# takes to start the ranks and prepare the scene.
 echo "== h3's link pulled mid-frame"
 pulled_settings=(--width 1920 --height 1080 --samples 8)
+received() { cat "/sys/class/net/${tag}v3/statistics/rx_bytes"; }
+before=$(received)
 farm pulled.bmp "${pulled_settings[@]}" --tile-size 32 2> "$work/pulled.log" &
 farm_pid=$!
-sleep 3
+for tries in $(seq 900); do  # up to 90 s
+    ip netns exec "${tag}h1" ss -tnp state established dst 10.77.0.3 | grep -q '"jtracer-mpi"' &&
+        [ $(( $(received) - before )) -gt 100000 ] && break
+    sleep 0.1
+done
+[ "$tries" -lt 900 ] || fail "pulled link: h3 sent no tiles within 90 s"
 pull_h3_link "pulled link" "$work/pulled.log"
 complete_or_nothing "pulled link" pulled.bmp cli-pulled.bmp "${pulled_settings[@]}"
 no_strays h1 h2
@@ -187,7 +197,6 @@ reconnect_h3
 echo "== h3 slowed, its link pulled in the middle of a 786 KB tile"
 slow_h3
 big_settings=(--width 2048 --height 1024 --samples 1)
-received() { cat "/sys/class/net/${tag}v3/statistics/rx_bytes"; }
 before=$(received)
 farm big.bmp "${big_settings[@]}" --tile-size 512 2> "$work/big.log" &
 farm_pid=$!

@@ -18,6 +18,9 @@
 #include <imgui.h>
 #include <glm/geometric.hpp>
 
+#include <chrono>
+#include <thread>
+
 namespace jt::view {
 namespace {
 
@@ -322,6 +325,14 @@ TEST_F(ViewerSafety, StatusAndTitleNameThePassTheTimesAndPausing) {
     EXPECT_NE(render_status(state).find("edit waiting"), std::string::npos) << render_status(state);
     EXPECT_NE(window_title(state).find("edit waiting"), std::string::npos) << window_title(state);
     viewer.press_key(state, keys::space);
+    // Until its first pass the render is "preparing the scene", however long
+    // a loaded machine takes to get there: wait for the pass, not for time.
+    const auto deadline = std::chrono::steady_clock::now() + kTimeout;
+    while (state.render.renderer.progress().pass_count == 0 && !render_complete(state.render) &&
+           std::chrono::steady_clock::now() < deadline) {
+        std::this_thread::sleep_for(std::chrono::milliseconds(5));
+        viewer.frame(state);
+    }
     const std::string running = render_status(state);
     EXPECT_TRUE(running.find("preview") == 0 || running.find("full resolution") == 0 ||
                 running.find("sample ") == 0 || running.find("done") == 0)

@@ -27,7 +27,11 @@ class ViewerSelectionKeys : public ViewerFixture {
         const WindowPoint p = window_point({x, y});
         viewer.drag(state, 0, p.x, p.y, p.x, p.y);
     }
+    // A click picks in the frame the image was rendered from: after a change
+    // of the objects (a delete, its undo) that frame is prepared anew, so the
+    // click waits for the render, however long a loaded machine takes.
     void select_sphere() {
+        ASSERT_TRUE(viewer.run_until_complete(state, kTimeout));
         click_image(32, 30);
         ASSERT_EQ(state.view.selection, (Selection{Selection::Kind::primitive, 1}))
             << state.message;
