@@ -14,6 +14,9 @@
 // Mesa's and ImGui's malloc calls are not counted). --where prints the call
 // stack of each allocation of the last frame measured, to find them
 // (tests/common/counting_new.hpp counts them).
+// Last, what the undo tracking keeps between edits: copies of the blocks the
+// panels show (edit_commands.hpp: settle_block), next to the bytes one copy
+// of the whole scene takes.
 
 #include "app/headless.hpp"
 #include "common/counting_new.hpp"
@@ -146,6 +149,18 @@ int main(int argc, char** argv) {
         print("whole frame", objects,
               measure(
                   frames, [&] { viewer.frame(state); }, where));
+        // What the undo tracking keeps between edits: copies of the blocks the
+        // panels show, against what one copy of the whole scene would take.
+        long long kept = 0;
+        for (const BlockCopy& copy : state.history.settled)
+            kept += static_cast<long long>(sizeof copy) +
+                    jt::test::allocated_by([&] { BlockCopy again = copy; }).bytes;
+        const long long scene_bytes =
+            jt::test::allocated_by([&] { Scene again = state.doc.scene; }).bytes;
+        std::printf(
+            "  edit tracking %7d objects   %zu block copies kept (%lld bytes); a scene "
+            "copy would take %lld bytes\n",
+            objects, state.history.settled.size(), kept, scene_bytes);
         std::filesystem::remove(file);
     }
     return 0;

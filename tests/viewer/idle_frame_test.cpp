@@ -68,6 +68,10 @@ TEST_F(IdleFrame, AWholeFrameAllocatesNothing) {
         const Allocated a = allocated_by([&] { viewer.frame(state); });
         EXPECT_EQ(a.count, 0) << a.bytes << " bytes in frame " << i;
     }
+    // What an undo of the next field edit needs is kept block by block: the
+    // render settings and the camera the panels show, never a second scene.
+    EXPECT_LE(state.history.settled.size(), 2u);
+    EXPECT_FALSE(state.history.edit_base);
 }
 
 // The same with the 20,000 objects listed, one of them selected (its fields

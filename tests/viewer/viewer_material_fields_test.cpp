@@ -11,6 +11,7 @@
 
 #include <gtest/gtest.h>
 #include <imgui.h>
+#include <imgui_internal.h>
 
 #include <string>
 
@@ -116,6 +117,45 @@ TEST_F(ViewerMaterialFields, AWholeNumberPastItsLimitIsRefusedNotClamped) {
     ASSERT_TRUE(type_into("width", "80"));
     EXPECT_EQ(state.doc.scene.settings.width, 80);
     EXPECT_EQ(refusal(), "") << "a value taken clears the note";
+}
+
+// ImGui's colour picker changes the value in the frame it becomes active, so
+// the value before the edit must be kept before the fields are drawn: one
+// undo step gives the colour back exactly, and a redo the picked one.
+TEST_F(ViewerMaterialFields, AColourPickedInThePickerIsOneUndoStep) {
+    open_rendered_copy("colour-picker");
+    ASSERT_FALSE(HasFatalFailure());
+    select(state.view, {Selection::Kind::primitive, 1});  // the sphere
+    for (int i = 0; i < 4; ++i) viewer.frame(state);
+    const Colour before = state.doc.scene.primitives[1].material.pigment;
+    const std::size_t steps = state.history.undo.size();
+    const UiItem* field = find_item(viewer.ui_items(), "pigment");
+    ASSERT_NE(field, nullptr);
+    // The swatch, between the three numbers and the label, opens the picker.
+    const float swatch_x = field->rect.x1 - ImGui::CalcTextSize("pigment").x -
+                           ImGui::GetStyle().ItemInnerSpacing.x - ImGui::GetFrameHeight() * 0.5f;
+    const float y = (field->rect.y0 + field->rect.y1) * 0.5f;
+    viewer.press_mouse(state, 0, swatch_x, y);
+    viewer.release_mouse(state, 0);
+    viewer.frame(state);
+    ASSERT_FALSE(GImGui->OpenPopupStack.empty()) << "the picker is open";
+    const ImGuiWindow* picker = GImGui->OpenPopupStack.back().Window;
+    ASSERT_NE(picker, nullptr);
+    // Inside its saturation-value square, below the label line.
+    const float x0 = picker->Pos.x + ImGui::GetStyle().WindowPadding.x + 20.0f;
+    const float y0 = picker->Pos.y + ImGui::GetStyle().WindowPadding.y +
+                     ImGui::GetFrameHeightWithSpacing() + 30.0f;
+    viewer.drag(state, 0, x0, y0, x0 + 10.0f, y0 + 10.0f);
+    viewer.frame(state);
+    const Colour picked = state.doc.scene.primitives[1].material.pigment;
+    ASSERT_NE(picked, before) << "the picker changed the colour";
+    EXPECT_EQ(state.history.undo.size(), steps + 1) << "one step for the whole pick";
+    undo(state);
+    viewer.frame(state);
+    EXPECT_EQ(state.doc.scene.primitives[1].material.pigment, before);
+    EXPECT_EQ(state.doc.scene, state.doc.original);
+    redo(state);
+    EXPECT_EQ(state.doc.scene.primitives[1].material.pigment, picked);
 }
 
 }  // namespace

@@ -27,6 +27,7 @@
 #include <memory>
 #include <optional>
 #include <string>
+#include <variant>
 #include <vector>
 
 namespace jt::view {
@@ -157,17 +158,34 @@ struct CompareState {
     float split = 0.5f;  // where the line is, across the image (0: all live, 1: all A)
 };
 
+// The one block a panel's fields edit: the render settings, or one camera,
+// object or light of the scene.
+struct EditedBlock {
+    enum class Kind { settings, camera, primitive, light };
+    Kind kind = Kind::settings;
+    std::size_t index = 0;  // into Scene::cameras, ::primitives or ::lights
+    bool operator==(const EditedBlock&) const = default;
+};
+// A copy of such a block's value.
+struct BlockCopy {
+    EditedBlock block;
+    std::variant<RenderSettings, Camera, Primitive, PointLight> value;
+};
+
 // The undo history, and what tells a panel edit from a command's: one undo
 // step per continuous panel edit (a whole drag is one step).
 struct EditHistory {
     SnapshotStack<DocumentVersion> undo;  // one history for panel, structure and text edits
     bool typing = false;  // a burst of typing whose undo step is recorded is going on
-    std::optional<Scene>
-        edit_base;  // the scene before the edit in progress (one undo step per drag)
-    // The scene as it was when no edit was in progress, at settled_revision:
-    // the edit_base of the next panel edit, copied once per change rather
-    // than every frame (begin_edit_tracking).
-    Scene settled_scene;
+    // The block the panel edit in progress changes, as it was before the edit
+    // (one undo step per drag).
+    std::optional<BlockCopy> edit_base;
+    // The blocks the panels show, as they were at settled_revision while no
+    // edit was in progress: the edit_base of the next panel edit. A field can
+    // change its value in the frame it becomes active (ImGui's colour picker
+    // does), so the copy is taken before the fields are drawn, once per change
+    // of the scene and one block at a time (settle_block), never the scene.
+    std::vector<BlockCopy> settled;
     std::optional<std::uint64_t> settled_revision;
     // Bumped by every command that replaces the scene and keeps the undo stack
     // itself (open, reload, undo, redo, scripted edits), so that the change is

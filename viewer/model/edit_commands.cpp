@@ -2,10 +2,13 @@
 
 #include "model/app_actions.hpp"
 
+#include "jtracer/check.hpp"
 #include "jtracer/validate.hpp"
 #include "model/object_drag.hpp"
 
 #include <chrono>
+#include <type_traits>
+#include <variant>
 
 namespace jt::view {
 
@@ -89,12 +92,85 @@ void note_command_edit(EditHistory& history, SceneDocument& doc) {
     note_scene_changed(doc);
 }
 
-EditMark begin_edit_tracking(EditHistory& history, const SceneDocument& doc) {
-    if (!history.edit_base && history.settled_revision != doc.revision) {
-        history.settled_scene = doc.scene;
+namespace {
+
+BlockCopy copy_of(const Scene& scene, EditedBlock block) {
+    switch (block.kind) {
+        case EditedBlock::Kind::settings:
+            return {block, scene.settings};
+        case EditedBlock::Kind::camera:
+            return {block, scene.cameras[block.index]};
+        case EditedBlock::Kind::primitive:
+            return {block, scene.primitives[block.index]};
+        case EditedBlock::Kind::light:
+            return {block, scene.lights[block.index]};
+    }
+    return {block, scene.settings};
+}
+
+// The place of `copy`'s block in `scene`, as its value's type, or null when
+// the scene has no such block.
+template <class T>
+T* place_of(Scene& scene, const BlockCopy& copy) {
+    const std::size_t i = copy.block.index;
+    if constexpr (std::is_same_v<T, RenderSettings>)
+        return &scene.settings;
+    else if constexpr (std::is_same_v<T, Camera>)
+        return i < scene.cameras.size() ? &scene.cameras[i] : nullptr;
+    else if constexpr (std::is_same_v<T, Primitive>)
+        return i < scene.primitives.size() ? &scene.primitives[i] : nullptr;
+    else
+        return i < scene.lights.size() ? &scene.lights[i] : nullptr;
+}
+
+bool holds(const Scene& scene, const BlockCopy& copy) {
+    return std::visit(
+        [&](const auto& value) {
+            using T = std::decay_t<decltype(value)>;
+            const T* place = place_of<T>(const_cast<Scene&>(scene), copy);
+            return place && *place == value;
+        },
+        copy.value);
+}
+
+void put_back(Scene& scene, const BlockCopy& copy) {
+    std::visit(
+        [&](const auto& value) {
+            using T = std::decay_t<decltype(value)>;
+            if (T* place = place_of<T>(scene, copy)) *place = value;
+        },
+        copy.value);
+}
+
+}  // namespace
+
+EditMark begin_edit_tracking(const EditHistory& history, const SceneDocument& doc) {
+    return {doc.revision, history.scene_generation};
+}
+
+void settle_block(EditHistory& history, const SceneDocument& doc, EditedBlock block) {
+    if (history.edit_base) return;  // its base is taken; the rest waits for the step
+    if (history.settled_revision != doc.revision) {
+        history.settled.clear();
         history.settled_revision = doc.revision;
     }
-    return {doc.revision, history.scene_generation};
+    for (const BlockCopy& copy : history.settled)
+        if (copy.block == block) return;
+    history.settled.push_back(copy_of(doc.scene, block));
+}
+
+void note_block_edited(EditHistory& history, SceneDocument& doc, EditedBlock block) {
+    if (!history.edit_base && history.settled_revision == doc.revision) {
+        for (BlockCopy& copy : history.settled)
+            if (copy.block == block) {
+                history.edit_base = std::move(copy);
+                break;
+            }
+        JT_DCHECK(history.edit_base, "a panel settles a block before drawing its fields");
+        history.settled.clear();
+        history.settled_revision.reset();
+    }
+    note_scene_changed(doc);
 }
 
 void track_edits(EditHistory& history, const SceneDocument& doc, EditMark before,
@@ -103,17 +179,14 @@ void track_edits(EditHistory& history, const SceneDocument& doc, EditMark before
         history.edit_base.reset();
         return;
     }
-    if (doc.revision != before.revision && !history.edit_base &&
-        history.settled_revision == before.revision) {
-        history.edit_base = std::move(history.settled_scene);
-        history.settled_revision.reset();
+    if (widget_active || !history.edit_base) return;
+    // A field touched and put back leaves no step to undo.
+    if (!holds(doc.scene, *history.edit_base)) {
+        Scene was = doc.scene;  // the undo stack keeps whole versions
+        put_back(was, *history.edit_base);
+        history.undo.record({doc.text, std::move(was), doc.draft});
     }
-    if (!widget_active && history.edit_base) {
-        // A field touched and put back leaves no step to undo.
-        if (*history.edit_base != doc.scene)
-            history.undo.record({doc.text, *history.edit_base, doc.draft});
-        history.edit_base.reset();
-    }
+    history.edit_base.reset();
 }
 
 }  // namespace jt::view

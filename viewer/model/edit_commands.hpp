@@ -32,12 +32,19 @@ struct EditMark {
     std::uint64_t revision = 0;    // SceneDocument::revision
     std::uint64_t generation = 0;  // EditHistory::scene_generation
 };
-// Called before the frame's widgets run; keeps history.settled_scene current (a
-// copy once per change, none on a frame with nothing to do).
-EditMark begin_edit_tracking(EditHistory& history, const SceneDocument& doc);
-// Called after them, with begin_edit_tracking's mark: records one undo step
-// per continuous panel edit (a whole drag is one step). A panel field that
-// changes the scene says so with note_scene_changed(state.doc).
+// Called before the frame's widgets run.
+EditMark begin_edit_tracking(const EditHistory& history, const SceneDocument& doc);
+// A panel calls this before it draws the fields of `block`: it keeps a copy of
+// the block as it is (once per change of the scene, none on a frame with
+// nothing to do), the value an edit of those fields goes back to on undo.
+void settle_block(EditHistory& history, const SceneDocument& doc, EditedBlock block);
+// And this when a field changed `block`: the scene changed
+// (note_scene_changed), and the block's settled copy becomes the base of the
+// edit in progress.
+void note_block_edited(EditHistory& history, SceneDocument& doc, EditedBlock block);
+// Called after the widgets, with begin_edit_tracking's mark: records one undo
+// step per continuous panel edit (a whole drag is one step), when the widget
+// is let go.
 void track_edits(EditHistory& history, const SceneDocument& doc, EditMark before,
                  bool widget_active);
 

@@ -309,10 +309,12 @@ TEST(EditTracking, AWholeDragIsOneUndoStep) {
     AppState state;
     state.doc.loaded = true;
     const Scene start = state.doc.scene;
+    const EditedBlock settings{EditedBlock::Kind::settings, 0};
     for (int frame = 0; frame < 5; ++frame) {  // the widget stays active while dragging
         const EditMark before = begin_edit_tracking(state.history, state.doc);
+        settle_block(state.history, state.doc, settings);  // as the panel does
         state.doc.scene.settings.width += 10;
-        note_scene_changed(state.doc);  // as the panel field does
+        note_block_edited(state.history, state.doc, settings);
         track_edits(state.history, state.doc, before, /*widget_active=*/true);
     }
     EXPECT_FALSE(state.history.undo.can_undo()) << "recorded when the drag ends";

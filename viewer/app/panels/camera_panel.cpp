@@ -53,7 +53,9 @@ void scene_camera_editor(AppState& state, int selected) {
         command = [&state, index, name = state.fields.camera_name_input] {
             rename_camera(state, index, name);
         };
-    if (edit_properties(camera)) note_scene_changed(state.doc);
+    const EditedBlock block{EditedBlock::Kind::camera, index};
+    settle_block(state.history, state.doc, block);
+    if (edit_properties(camera)) note_block_edited(state.history, state.doc, block);
     const Scene& scene = state.doc.scene;
     const char* no_size = scene.settings.width > 0 && scene.settings.height > 0
                               ? ""

@@ -236,7 +236,10 @@ void objects_panel(AppState& state) {
     same_line_if_fits("Delete");
     if (button("Delete", "Remove this object's block from the text (Ctrl+Z brings it back)"))
         command = [&state, ref] { delete_block(state, ref); };
-    if (shape_editor(p.shape)) note_scene_changed(state.doc);
+    // The shape, material and transform fields all edit this one block.
+    const EditedBlock block{EditedBlock::Kind::primitive, i};
+    settle_block(state.history, state.doc, block);
+    if (shape_editor(p.shape)) note_block_edited(state.history, state.doc, block);
     if (const auto* mesh = std::get_if<Mesh>(&p.shape)) {
         model_file_row(state, *mesh, i, command);
         mesh_figure_rows(state, selected);
@@ -249,7 +252,7 @@ void objects_panel(AppState& state) {
                    "Write this object's material into its block, to edit it there"))
             command = [&state, i] { add_material_block(state, i); };
     }
-    if (material_editor(p.material)) note_scene_changed(state.doc);
+    if (material_editor(p.material)) note_block_edited(state.history, state.doc, block);
     ImGui::Separator();
     ImGui::TextDisabled("transform");
     if (!has_child(state.doc, i, "transform")) {
@@ -272,7 +275,7 @@ void objects_panel(AppState& state) {
                     break;
             }
         };
-    if (transform_changed) note_scene_changed(state.doc);
+    if (transform_changed) note_block_edited(state.history, state.doc, block);
     ImGui::PopID();
     if (command) command();
 }

@@ -7,6 +7,7 @@
 #include "app/panels/widgets.hpp"
 #include "app/ui_items.hpp"
 #include "model/document_edits.hpp"
+#include "model/edit_commands.hpp"
 #include "model/picking.hpp"
 
 #include <imgui.h>
@@ -21,7 +22,9 @@ void settings_panel(AppState& state) {
     if (!panel_header("Render settings", "Render settings", true)) return;
     ImGui::BeginDisabled(!state.doc.loaded);
     RenderSettings& s = state.doc.scene.settings;
-    if (edit_properties(s)) note_scene_changed(state.doc);
+    const EditedBlock block{EditedBlock::Kind::settings, 0};
+    settle_block(state.history, state.doc, block);
+    if (edit_properties(s)) note_block_edited(state.history, state.doc, block);
     ImGui::EndDisabled();
 }
 
@@ -53,7 +56,9 @@ void lights_panel(AppState& state) {
             same_line_if_fits("Delete");
             if (button("Delete", "Remove this light's block from the text (Ctrl+Z brings it back)"))
                 command = [&state, ref] { delete_block(state, ref); };
-            if (edit_properties(lights[i])) note_scene_changed(state.doc);
+            const EditedBlock block{EditedBlock::Kind::light, i};
+            settle_block(state.history, state.doc, block);
+            if (edit_properties(lights[i])) note_block_edited(state.history, state.doc, block);
             ImGui::TreePop();
         }
         ImGui::PopID();
