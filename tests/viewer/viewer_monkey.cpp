@@ -210,11 +210,13 @@ class Monkey {
         file_deleted_ = false;
     }
 
+    // The next frame notices the change on disk and starts its load; this
+    // waits for the loader to finish it (its own event, however long a loaded
+    // machine takes: a hang is the test's timeout) instead of running frames
+    // against the clock, and the frame after takes it in.
     void wait_for_load() {
-        const auto deadline = std::chrono::steady_clock::now() + std::chrono::seconds(30);
-        do {
-            frame();
-        } while (state_.files.loader.busy() && std::chrono::steady_clock::now() < deadline);
+        frame();
+        state_.files.loader.wait();
         frame();
     }
 
