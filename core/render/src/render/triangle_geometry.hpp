@@ -49,6 +49,8 @@ struct MeshInstance {
     // corner's normal (in TriangleModel::generated). Null: the file's normals
     // alone, as in language 1.1.
     const CornerNormals* corner_normals = nullptr;
+    // materials: "file": the model's parts give the pigment (render/file_pigment.hpp).
+    bool file_materials = false;
     std::uint32_t source = 0;
 };
 
