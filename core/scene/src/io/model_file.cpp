@@ -222,9 +222,10 @@ class ModelBuilder {
     // with colours gives the earlier ones none.
     void add_colours(const aiMesh& mesh, std::uint32_t first) {
         const aiColor4D* colours = mesh.mColors[0];
-        if (colours && model_.colours.empty())
+        if (colours && !has_colours_)
             model_.colours.assign(first, glm::vec3(kNoVertexColour, 0.0f, 0.0f));
-        if (model_.colours.empty()) return;
+        has_colours_ = has_colours_ || colours;
+        if (!has_colours_) return;
         for (unsigned i = 0; i < mesh.mNumVertices; ++i) {
             glm::vec3 c(kNoVertexColour, 0.0f, 0.0f);
             if (colours) {
@@ -251,7 +252,7 @@ class ModelBuilder {
 
     bool use_normals_;
     const MaterialPlan* plan_;
-    bool has_normals_ = false, has_uvs_ = false;
+    bool has_normals_ = false, has_uvs_ = false, has_colours_ = false;
     Model model_;
 };
 
