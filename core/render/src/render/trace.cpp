@@ -207,7 +207,7 @@ Colour shade_surface(const PreparedScene& scene, const SurfaceHit& s, const Vec3
     const Material& m = scene.materials[scene.material_of[s.source]];
     // A mesh's part with colours from its file replaces the block's pigment
     // and pattern (docs/language.md §14.5).
-    if (s.triangle.instance != TriangleId::no_instance)
+    if (s.triangle.instance != TriangleId::no_instance && scene.geometry->triangles->file_materials)
         if (const std::optional<Colour> pigment =
                 file_pigment(*scene.geometry->triangles, s.triangle, s.barycentric, s.uv)) {
             Material own = m;

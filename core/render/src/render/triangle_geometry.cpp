@@ -180,6 +180,7 @@ Expected<std::unique_ptr<TriangleGeometry>> build_triangle_geometry(const Scene&
         instance.normal_matrix = transform.normal_matrix;
         instance.smooth = mesh->shading == kSmoothShading;
         instance.file_materials = file_materials;
+        t->file_materials = t->file_materials || file_materials;
         instance.source = source;
         attach_instance(t->scene, *t->models[known->second], transform);
         t->instances.push_back(instance);

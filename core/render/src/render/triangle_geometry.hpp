@@ -70,7 +70,8 @@ struct TriangleGeometry {
     std::vector<MeshInstance> instances;  // index = instance geometry id in `scene`
     std::vector<LooseTriangle> loose;
     unsigned loose_geometry_id = RTC_INVALID_GEOMETRY_ID;
-    RTCScene scene = nullptr;  // the instances and the loose triangles
+    bool file_materials = false;  // some instance has materials: "file"
+    RTCScene scene = nullptr;     // the instances and the loose triangles
 
     TriangleGeometry() = default;
     TriangleGeometry(const TriangleGeometry&) = delete;

@@ -221,7 +221,7 @@ class ModelBuilder {
     // The mesh's vertex colours (first set), clipped to [0, 1]; the first mesh
     // with colours gives the earlier ones none.
     void add_colours(const aiMesh& mesh, std::uint32_t first) {
-        const aiColor4D* colours = mesh.mColors[0];
+        const aiColor4D* colours = plan_->vertex_colours ? mesh.mColors[0] : nullptr;
         if (colours && !has_colours_)
             model_.colours.assign(first, glm::vec3(kNoVertexColour, 0.0f, 0.0f));
         has_colours_ = has_colours_ || colours;

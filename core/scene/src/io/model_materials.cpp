@@ -125,6 +125,8 @@ Expected<std::map<std::string, LibraryMaterial>> read_libraries(
             } else if (current && k == "map_kd") {
                 const std::vector<std::string_view> w = words(rest);
                 if (!w.empty()) current->map_kd = std::string(w.back());
+                // Files written on Windows separate folders with backslashes.
+                std::replace(current->map_kd.begin(), current->map_kd.end(), '\\', '/');
             }
         });
         if (!problem.empty()) return Error{problem};
@@ -379,11 +381,16 @@ Expected<MaterialPlan> gltf_plan(const aiScene& scene, const std::filesystem::pa
 Expected<MaterialPlan> plan_materials(const aiScene& scene, const std::filesystem::path& file,
                                       const ConfinedIOSystem& io, std::uint64_t gltf_materials) {
     const std::string ext = lower(file.extension().string());
-    if (ext == ".obj") return obj_plan(scene, file, io);
-    if (ext == ".gltf" || ext == ".glb") return gltf_plan(scene, file, io, gltf_materials);
-    MaterialPlan plan;
-    plan.parts.emplace_back();
-    plan.face_parts.assign(scene.mNumMeshes, {0});
+    Expected<MaterialPlan> plan = MaterialPlan{};
+    if (ext == ".obj")
+        plan = obj_plan(scene, file, io);
+    else if (ext == ".gltf" || ext == ".glb")
+        plan = gltf_plan(scene, file, io, gltf_materials);
+    else {
+        plan->parts.emplace_back();
+        plan->face_parts.assign(scene.mNumMeshes, {0});
+    }
+    if (plan) plan->vertex_colours = ext == ".obj" || ext == ".ply";
     return plan;
 }
 

@@ -28,6 +28,9 @@ struct MaterialPlan {
     // For each Assimp mesh, the part of each of its faces (every face of a
     // glTF primitive or of a format without materials: one part).
     std::vector<std::vector<std::uint32_t>> face_parts;
+    // Whether the format's vertex colours count: PLY's and OBJ's only, as the
+    // language lists them.
+    bool vertex_colours = false;
 
     std::uint32_t part(unsigned mesh, unsigned face) const {
         const std::vector<std::uint32_t>& faces = face_parts[mesh];
