@@ -10,6 +10,7 @@
 
 #include <algorithm>
 #include <chrono>
+#include <set>
 
 namespace jt {
 
@@ -90,6 +91,7 @@ Expected<SceneInfo> scene_info(const Scene& scene) {
         info.primitives[std::string(keyword_of(kind))] = 0;
     // Each file read once (once more when also with its materials), timed.
     std::map<std::pair<std::filesystem::path, bool>, ReadModel> models;
+    std::set<const Texture*> textures;  // the models' own, each counted once
     for (const Primitive& p : scene.primitives) {
         ++info.primitives[std::string(keyword_of(p.shape))];
         if (!std::holds_alternative<ObjectTransform>(object_transform(p.transforms))) {
@@ -107,7 +109,14 @@ Expected<SceneInfo> scene_info(const Scene& scene) {
                 at->second.model = read_model(path, scene.asset_folder, file_materials);
                 at->second.seconds =
                     std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
-                if (at->second.model) info.memory.models += model_bytes(*at->second.model);
+                if (at->second.model) {
+                    info.memory.models += model_bytes(*at->second.model);
+                    // The pictures of its parts count with the image maps.
+                    for (const ModelPart& part : at->second.model->parts)
+                        if (part.texture && textures.insert(part.texture.get()).second)
+                            info.memory.image_maps +=
+                                part.texture->rgb8.size() + part.texture->rgb16.size() * 2;
+                }
             }
             if (!at->second.model) return at->second.model.error();
             MeshInfo row = mesh_info(scene, p, *mesh, *at->second.model);
