@@ -35,8 +35,8 @@ struct MeshPartInfo {
     std::size_t triangles = 0;
 };
 
-// The model's parts in the order first used, each with its triangles; empty
-// for a model read without its materials.
+// The model's parts that hold a triangle, in the order first used, each with
+// its triangles; empty for a model read without its materials.
 std::vector<MeshPartInfo> mesh_parts(const Model& model);
 
 struct MeshInfo {

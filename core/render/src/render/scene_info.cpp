@@ -53,6 +53,8 @@ std::vector<MeshPartInfo> mesh_parts(const Model& model) {
         parts[i].vertex_colours = part.vertex_colours;
     }
     for (const std::uint32_t part : model.part_of) ++parts[part].triangles;
+    // Materials of meshes no node places, or of points and lines only.
+    std::erase_if(parts, [](const MeshPartInfo& part) { return part.triangles == 0; });
     return parts;
 }
 

@@ -232,6 +232,7 @@ Expected<std::shared_ptr<const Texture>> texture_file(const std::filesystem::pat
 Expected<std::shared_ptr<const Texture>> embedded_texture(const aiTexture& embedded,
                                                           const std::string& name) {
     Texture texture;
+    if (!embedded.pcData) return Error{"its texture '" + name + "' has no data"};
     if (embedded.mHeight == 0) {
         const auto* bytes = reinterpret_cast<const std::uint8_t*>(embedded.pcData);
         Expected<Texture> decoded = decode_texture({bytes, embedded.mWidth});
@@ -288,6 +289,7 @@ Expected<MaterialPlan> obj_plan(const aiScene& scene, const std::filesystem::pat
     };
     plan.face_parts.resize(scene.mNumMeshes);
     const bool by_scan = scan_matches(scan, scene);
+    std::vector<std::uint32_t> part_of_name(scan.names.size(), kNoIndex);
     std::size_t k = 0;
     for (unsigned m = 0; m < scene.mNumMeshes; ++m) {
         const aiMesh* mesh = scene.mMeshes[m];
@@ -307,9 +309,14 @@ Expected<MaterialPlan> obj_plan(const aiScene& scene, const std::filesystem::pat
         faces.reserve(mesh->mNumFaces);
         for (unsigned f = 0; f < mesh->mNumFaces; ++f, ++k) {
             const std::uint32_t name = scan.faces[k].first;
-            faces.push_back(part_named(name == kNoIndex ? nullptr : &scan.names[name]));
+            if (name == kNoIndex) {
+                faces.push_back(parts.none());
+                continue;
+            }
+            // Looked up once a name, not once a face.
+            if (part_of_name[name] == kNoIndex) part_of_name[name] = part_named(&scan.names[name]);
+            faces.push_back(part_of_name[name]);
         }
-        if (faces.empty()) faces.push_back(parts.none());
     }
     plan.parts = std::move(parts).take();
     for (ModelPart& part : plan.parts) {
