@@ -37,7 +37,8 @@ constexpr std::string_view kQuads =
 TEST(ModelMaterials, ObjPartsInTheOrderFirstUsed) {
     test::ScratchDir dir;
     write_file(dir.path() / "m.obj", "mtllib m.mtl\n" + std::string(kQuads));
-    write_file(dir.path() / "m.mtl", "newmtl red\nKd 1 0 0\nmap_Kd -o 0.5 0.5 -bm 1 pic.png\n");
+    write_file(dir.path() / "m.mtl",
+               "newmtl red\nKd 1 0 0  # a comment\nmap_Kd -o 0.5 0.5 -bm 1 pic.png\n");
     ASSERT_TRUE(write_png(dir.path() / "pic.png", one_texel()));
     const Expected<Model> model = read_model(dir.path() / "m.obj", dir.path(), true);
     ASSERT_TRUE(model.has_value()) << model.error().message;

@@ -89,6 +89,7 @@ struct LibraryMaterial {
 
 // `Kd r [g b]`: nullopt when not three (or one) finite numbers.
 std::optional<Colour> read_kd(std::string_view rest) {
+    rest = rest.substr(0, rest.find('#'));  // a comment after the numbers
     const std::vector<std::string_view> w = words(rest);
     if (w.size() != 1 && w.size() != 3) return std::nullopt;
     double v[3] = {0.0, 0.0, 0.0};
