@@ -101,13 +101,13 @@ TEST(ModelMaterials, VertexColoursAreClippedAndMissingOnesMarked) {
 }
 
 // The errors a scene gets: at the mesh's `file` string, naming the file that
-// cannot be read; with "scene", none.
+// cannot be read; with "scene", none (flat shading: the models have no normals).
 std::string check(const fs::path& folder, const std::string& model, const char* materials) {
     write_file(folder / "s.jts",
                "render_settings { width: 4; height: 4; }\n"
                "cameras { perspective_camera { } }\n"
                "scene {\n  mesh { file: \"" +
-                   model + "\"; materials: \"" + materials + "\"; }\n}\n");
+                   model + "\"; shading: \"flat\"; materials: \"" + materials + "\"; }\n}\n");
     Expected<LoadedScene> loaded = load_scene_file(folder / "s.jts");
     if (!loaded) return "not loaded: " + loaded.error().message;
     return brief(check_scene(*loaded));
