@@ -33,7 +33,14 @@ Expected<json> describe(const Scene& scene) {
     if (!info) return info.error();
     json out;
     json meshes = json::array();
-    for (const MeshInfo& m : info->meshes)
+    for (const MeshInfo& m : info->meshes) {
+        json parts = json::array();
+        for (const MeshPartInfo& part : m.parts)
+            parts.push_back({{"name", part.name},
+                             {"base_colour", part.base ? vec(*part.base) : json()},
+                             {"texture", part.texture},
+                             {"vertex_colours", part.vertex_colours},
+                             {"triangles", part.triangles}});
         meshes.push_back({{"file", m.file},
                           {"path", m.path.string()},
                           {"triangles", m.triangles},
@@ -42,7 +49,10 @@ Expected<json> describe(const Scene& scene) {
                           {"shading", m.shading},
                           {"bbox", box_json(m.world_box)},
                           {"load_seconds", m.load_seconds},
-                          {"read_before", m.read_before}});
+                          {"read_before", m.read_before},
+                          {"materials", m.materials},
+                          {"parts", parts}});
+    }
     out["primitives"] = info->primitives;
     out["meshes"] = meshes;
     out["bbox"] = box_json(info->world_box);
@@ -120,6 +130,18 @@ void print_text(const json& d) {
                   << m["normals"].get<std::string>() << ", " << m["shading"].get<std::string>()
                   << "; world box " << box_text(m["bbox"]) << "; "
                   << (m["read_before"].get<bool>() ? "the file of an earlier mesh" : read) << "\n";
+        // With materials "file": each part of the model and what colours it.
+        for (const json& part : m["parts"]) {
+            const std::string name = part["name"].get<std::string>();
+            std::cout << "  part " << (name.empty() ? "(no material)" : "\"" + name + "\"") << ": "
+                      << part["triangles"] << " triangles";
+            if (!part["base_colour"].is_null())
+                std::cout << ", base colour " << vec_text(part["base_colour"]);
+            if (!part["texture"].get<std::string>().empty())
+                std::cout << ", texture " << part["texture"].get<std::string>();
+            if (part["vertex_colours"].get<bool>()) std::cout << ", vertex colours";
+            std::cout << "\n";
+        }
     }
     std::cout << "world box: " << box_text(d["bbox"]);
     if (d["unbounded"].get<int>() > 0)
@@ -155,7 +177,9 @@ int run_info_command(int argc, char** argv) {
     CLI::App app{"jtracer-cli info: what a scene holds once loaded.", "jtracer-cli info"};
     app.footer(
         "Prints the primitives of each kind; each mesh with its file, triangles, vertices,\n"
-        "where its normals come from, its box in world space and the time it took to read;\n"
+        "where its normals come from, its box in world space and the time it took to read\n"
+        "(with materials \"file\", each part of the model: its material, base colour,\n"
+        "texture and vertex colours);\n"
         "the scene's world box; each image map's and the background map's size and memory;\n"
         "the lights; the cameras and where they look; and the prepared scene's memory,\n"
         "Embree's counted as it builds (info prepares the scene as a render would).\n"

@@ -117,6 +117,60 @@ TEST_F(BadInput, SceneWithoutCameraIsAnErrorAboutTheWholeFile) {
     EXPECT_FALSE(fs::exists(dir / "out.bmp"));
 }
 
+// A mesh with materials "file" whose material library or texture cannot be
+// used: an error at its `file` string (line 3, column 22) naming that file,
+// exit 1, nothing written. The same model with "scene" renders.
+TEST_F(BadInput, ModelMaterialFilesThatCannotBeUsedAreLocatedAtTheFileString) {
+    const std::string precious = "precious bytes\n";
+    const std::string triangle = "v -1 -1 0\nv 1 -1 0\nv 0 1 0\nusemtl x\nf 1 2 3\n";
+    fs::create_directories(dir / "scene");
+    write_file(dir / "outside.png", "\x89PNG\r\n\x1a\n");
+    struct Case {
+        const char* what;
+        std::string mtllib, mtl;  // the OBJ's library line and the library's text
+        std::string named;        // what the error must name
+    };
+    const std::vector<Case> cases = {
+        {"missing library", "mtllib none.mtl", "", "none.mtl' cannot be read (no such file)"},
+        {"library outside", "mtllib ../secret.mtl", "", "outside the folder"},
+        {"missing texture", "mtllib m.mtl", "newmtl x\nmap_Kd -clamp on gone.png\n",
+         "its texture 'gone.png': cannot read"},
+        {"texture outside", "mtllib m.mtl", "newmtl x\nmap_Kd ../outside.png\n",
+         "its texture '../outside.png' lies outside the folder"},
+        {"texture not a picture", "mtllib m.mtl", "newmtl x\nmap_Kd m.obj\n",
+         "its texture 'm.obj': '"},
+        {"texture truncated", "mtllib m.mtl", "newmtl x\nmap_Kd cut.png\n",
+         "its texture 'cut.png': '"},
+        {"Kd of four numbers", "mtllib m.mtl", "newmtl x\nKd 1 0 0 0\n",
+         "has a Kd that is not one"},
+        {"Kd infinite", "mtllib m.mtl", "newmtl x\nKd 1e999\n", "has a Kd that is not one"},
+    };
+    write_file(dir / "secret.mtl", "newmtl x\nKd 1 0 0\n");
+    write_file(dir / "scene/cut.png", "\x89PNG\r\n\x1a\n\0\0\0\rIHDR");
+    for (const Case& c : cases) {
+        SCOPED_TRACE(c.what);
+        write_file(dir / "scene/m.obj", c.mtllib + "\n" + triangle);
+        write_file(dir / "scene/m.mtl", c.mtl);
+        for (const char* materials : {"file", "scene"}) {
+            write_file(dir / "scene/bad.jts", camera +
+                                                  "render_settings { width: 4; height: 4; }\n"
+                                                  "scene { mesh { file: \"m.obj\"; materials: \"" +
+                                                  materials + "\"; } }\n");
+            write_file(dir / "keep.bmp", precious);
+            ProgramRun r = run({"scene/bad.jts", "-o", "keep.bmp"});
+            if (std::string(materials) == "scene") {
+                EXPECT_EQ(r.code, 0) << r.err;
+                continue;
+            }
+            EXPECT_EQ(r.code, 1) << r.err;
+            EXPECT_EQ(r.err.find("scene/bad.jts:3:22: error: "), 0u) << r.err;
+            EXPECT_NE(r.err.find(c.named), std::string::npos) << r.err;
+            EXPECT_EQ(read_file(dir / "keep.bmp"), precious);
+            EXPECT_TRUE(temporary_files().empty());
+        }
+    }
+}
+
 // Root reads and writes through any permission bits, so as root the CLI runs
 // as 'nobody' for these (run_unprivileged); the test is skipped only when even
 // that cannot be arranged.

@@ -69,5 +69,42 @@ TEST_P(ExampleScenes, TheViewerAndTheFarmRenderTheClisBytes) {
 INSTANTIATE_TEST_SUITE_P(Language11, ExampleScenes, ::testing::Values("mesh", "glass", "globe"));
 INSTANTIATE_TEST_SUITE_P(Language12, ExampleScenes, ::testing::Values("soft_focus", "sky"));
 
+// A model read with materials "file" (docs/language.md §14.5): two usemtl
+// parts, one textured, faces before any usemtl and vertex colours; the
+// viewer's finished image is jtracer-cli's.
+using FileMaterials = test::ScratchTest;
+
+TEST_F(FileMaterials, TheViewerRendersTheClisBytes) {
+    fs::copy_file(kScenes / "maps/tiles.png", dir / "tiles.png");
+    test::write_file(dir / "m.mtl",
+                     "newmtl red\nKd 0.9 0.2 0.1\n"
+                     "newmtl tiled\nKd 0.8 1 0.9\nmap_Kd -s 2 2 1 tiles.png\n");
+    test::write_file(dir / "m.obj",
+                     "mtllib m.mtl\n"
+                     "v -2 -1 0 1 1 0\nv 0 -1 0 0 1 1\nv 0 1 0 1 0 1\nv -2 1 0\n"
+                     "v 2 -1 0\nv 2 1 0\nvt 0 0\nvt 2 0\nvt 2 2\nvt 0 2\n"
+                     "f 1 2 3\nusemtl red\nf 1 3 4\n"
+                     "usemtl tiled\nf 2/1 5/2 6/3 3/4\n");
+    test::write_file(dir / "scene.jts", R"(render_settings { width: 160; height: 90; }
+cameras { perspective_camera { position: <0.5, 1, 5>; look_at: <0, 0, 0>; aspect: 1.7777777777777777; } }
+scene {
+    mesh { file: "m.obj"; materials: "file";
+           material { ambient: <0.3, 0.3, 0.3>; diffuse: <0.8, 0.8, 0.8>; reflection: 0.2; } }
+    plane { material { pigment: <1, 1, 1>; diffuse: <0.5, 0.5, 0.5>; } distance: -1.5; }
+    point_light { position: <2, 4, 6>; intensity: <1, 1, 1>; }
+}
+)");
+    ProgramRun cli = run_shell("'" JT_CLI "' scene.jts -q -o cli.png");
+    ASSERT_EQ(cli.code, 0) << cli.err;
+    ProgramRun view = run_shell("'" JT_VIEWER_EXE
+                                "' scene.jts --screenshot window.png"
+                                " --size 640x400 --save-render view.png --timeout 120");
+    ASSERT_EQ(view.code, 0) << view.err;
+    const Expected<Image8> expected = read_png(dir / "cli.png"), shown = read_png(dir / "view.png");
+    ASSERT_TRUE(expected && shown);
+    EXPECT_EQ(expected->width, 160);
+    EXPECT_TRUE(*shown == *expected) << "jtracer-view's render differs";
+}
+
 }  // namespace
 }  // namespace jt

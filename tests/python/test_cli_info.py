@@ -101,3 +101,35 @@ def test_info_of_a_bad_scene_reports_like_check(cli, tmp_path):
     assert code == 3 and "missing.jts" in err
     code, _, err = run(cli, "info", check=False)
     assert code == 2
+
+
+def test_info_lists_the_parts_of_a_mesh_with_materials_from_its_file(cli, tmp_path):
+    # An OBJ with a face before any usemtl, a red part and a textured one
+    # (docs/language.md 14.5); the same file with "scene" has no parts.
+    shutil.copy(MODELS / "OBJ" / "SpiderTex.jpg", tmp_path)
+    (tmp_path / "m.mtl").write_text("newmtl red\nKd 1 0 0\nnewmtl skin\nmap_Kd -s 2 2 1 SpiderTex.jpg\n")
+    (tmp_path / "m.obj").write_text("mtllib m.mtl\nv 0 0 0\nv 1 0 0\nv 0 1 0\nv 1 1 0\n"
+                                    "f 1 2 3\nusemtl red\nf 2 4 3\nf 1 2 4\nusemtl skin\nf 1 4 3\n")
+    scene = tmp_path / "parts.jts"
+    scene.write_text("""render_settings { width: 8; height: 8; }
+cameras { perspective_camera { position: <0.5, 0.5, 3>; look_at: <0.5, 0.5, 0>; } }
+scene {
+    mesh { file: "m.obj"; materials: "file"; }
+    mesh { file: "m.obj"; }
+}
+""")
+    _, out, _ = run(cli, "info", scene, "--json")
+    with_parts, without = json.loads(out)["meshes"]
+    assert with_parts["materials"] == "file" and without["materials"] == "scene"
+    assert without["parts"] == []
+    assert with_parts["parts"] == [
+        {"name": "", "base_colour": None, "texture": "", "vertex_colours": False, "triangles": 1},
+        {"name": "red", "base_colour": [1, 0, 0], "texture": "", "vertex_colours": False,
+         "triangles": 2},
+        {"name": "skin", "base_colour": [1, 1, 1], "texture": "SpiderTex.jpg",
+         "vertex_colours": False, "triangles": 1},
+    ]
+    _, out, _ = run(cli, "info", scene)
+    assert '  part "red": 2 triangles, base colour <1, 0, 0>\n' in out
+    assert '  part "skin": 1 triangles, base colour <1, 1, 1>, texture SpiderTex.jpg\n' in out
+    assert "  part (no material): 1 triangles\n" in out

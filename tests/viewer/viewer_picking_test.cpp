@@ -301,6 +301,38 @@ scene {
                [](Scene& scene) { scene.primitives[1].transforms.back().vector = Vec3(20, 0, 0); });
     for (int i = 0; i < 3; ++i) viewer.frame(state);
     EXPECT_NE(find_item(viewer.ui_items(), "bounds <19, -2, -1> to <21, 2, 1>"), nullptr);
+    // With materials "file", its parts (docs/language.md §14.5).
+    EXPECT_EQ(find_item(viewer.ui_items(), "(no material): 12 triangles"), nullptr);
+    edit_scene(state, [](Scene& scene) {
+        std::get<Mesh>(scene.primitives[1].shape).materials = std::string(kFileMaterials);
+    });
+    for (int i = 0; i < 3; ++i) viewer.frame(state);
+    EXPECT_NE(find_item(viewer.ui_items(), "(no material): 12 triangles"), nullptr);
+    std::filesystem::remove_all(dir);
+}
+
+// Each part of a model read with materials "file" is listed with its colour.
+TEST(ViewerMeshFigures, TheObjectsPanelListsTheFilesPartsWithTheirColours) {
+    const std::filesystem::path dir = make_scratch_dir("mesh-parts");
+    write_file(dir / "m.obj",
+               "mtllib m.mtl\nv 0 0 0\nv 1 0 0\nv 0 1 0\nv 1 1 0\n"
+               "usemtl red\nf 1 2 3\nusemtl blue\nf 2 4 3\n");
+    write_file(dir / "m.mtl", "newmtl red\nKd 1 0 0\nnewmtl blue\nKd 0 0 1\n");
+    write_file(dir / "scene.jts", R"(render_settings { width: 32; height: 32; }
+cameras { perspective_camera { position: <0.5, 0.5, 4>; look_at: <0.5, 0.5, 0>; } }
+scene {
+    mesh { file: "m.obj"; materials: "file"; }
+}
+)");
+    HeadlessViewer viewer(960, 900);
+    ASSERT_TRUE(viewer.ok()) << viewer.error();
+    AppState state{test_config()};
+    open_scene(state, dir / "scene.jts");
+    ASSERT_TRUE(viewer.run_until_complete(state, kTimeout));
+    select(state.view, {Kind::primitive, 0});
+    for (int i = 0; i < 3; ++i) viewer.frame(state);
+    EXPECT_NE(find_item(viewer.ui_items(), "red: 1 triangles, base <1, 0, 0>"), nullptr);
+    EXPECT_NE(find_item(viewer.ui_items(), "blue: 1 triangles, base <0, 0, 1>"), nullptr);
     std::filesystem::remove_all(dir);
 }
 

@@ -142,6 +142,30 @@ void figure_line(const std::string& text) {
     note_item(text.c_str(), false);
 }
 
+// With materials "file": each part of the model with a swatch of its base
+// colour (docs/language.md §14.5); faces without a material show none.
+void part_rows(const std::vector<MeshPartInfo>& parts) {
+    for (std::size_t i = 0; i < parts.size(); ++i) {
+        const MeshPartInfo& part = parts[i];
+        ImGui::PushID(static_cast<int>(i));
+        if (part.base) {
+            const ImVec4 swatch(static_cast<float>(part.base->x), static_cast<float>(part.base->y),
+                                static_cast<float>(part.base->z), 1.0f);
+            ImGui::ColorButton("##base", swatch,
+                               ImGuiColorEditFlags_NoTooltip | ImGuiColorEditFlags_NoDragDrop,
+                               ImVec2(ImGui::GetTextLineHeight(), ImGui::GetTextLineHeight()));
+            ImGui::SameLine();
+        }
+        std::string line = part.name.empty() ? "(no material)" : part.name;
+        line += ": " + std::to_string(part.triangles) + " triangles";
+        if (part.base) line += ", base " + figure_vector(*part.base);
+        if (!part.texture.empty()) line += ", texture " + part.texture;
+        if (part.vertex_colours) line += ", vertex colours";
+        figure_line(line);
+        ImGui::PopID();
+    }
+}
+
 // What the selected mesh's model holds and where it lies (scene_info.hpp), as
 // jtracer-cli info prints it.
 void mesh_figure_rows(AppState& state, int primitive) {
@@ -163,6 +187,7 @@ void mesh_figure_rows(AppState& state, int primitive) {
     ImGui::PushTextWrapPos(0.0f);
     ImGui::TextDisabled("file %s", figures->path.string().c_str());
     ImGui::PopTextWrapPos();
+    part_rows(figures->parts);
 }
 
 }  // namespace

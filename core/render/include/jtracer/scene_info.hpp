@@ -26,16 +26,31 @@ struct WorldBox {
     void add(const WorldBox& box);
 };
 
+// One part of a model read with `materials: "file"` (docs/language.md §14.5).
+struct MeshPartInfo {
+    std::string name;             // the material's name; "" for the faces without one
+    std::optional<Colour> base;   // none for the faces without a material
+    std::string texture;          // as the file names it; "" for none
+    bool vertex_colours = false;  // some triangle has a colour at all three corners
+    std::size_t triangles = 0;
+};
+
+// The model's parts that hold a triangle, in the order first used, each with
+// its triangles; empty for a model read without its materials.
+std::vector<MeshPartInfo> mesh_parts(const Model& model);
+
 struct MeshInfo {
     std::string file;            // as the scene names it
     std::filesystem::path path;  // where it was read from (asset_path)
     std::size_t triangles = 0;
     std::size_t vertices = 0;
-    bool file_normals = false;  // the file gives vertex normals; else they are generated
-    std::string shading;        // the mesh's `shading`
-    WorldBox world_box;         // around its triangles' corners, through its transforms
-    double load_seconds = 0.0;  // to read the file (scene_info only)
-    bool read_before = false;   // the file of an earlier mesh (scene_info only)
+    bool file_normals = false;        // the file gives vertex normals; else they are generated
+    std::string shading;              // the mesh's `shading`
+    std::string materials;            // the mesh's `materials`
+    std::vector<MeshPartInfo> parts;  // with materials "file": mesh_parts
+    WorldBox world_box;               // around its triangles' corners, through its transforms
+    double load_seconds = 0.0;        // to read the file (scene_info only)
+    bool read_before = false;         // the file of an earlier mesh (scene_info only)
 };
 
 // A mesh's figures from its model, through the primitive's transforms (its

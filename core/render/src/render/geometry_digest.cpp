@@ -55,6 +55,7 @@ GeometryDigest digest_geometry(const Scene& scene) {
         } else if (const auto* m = std::get_if<Mesh>(&p.shape)) {
             d.add(m->file);
             d.add(m->shading);
+            d.add(m->materials);  // "file" reads another model
             // A model file changed on disk is a new geometry.
             const FileStamp stamp = file_stamp(asset_path(scene, m->file));
             d.add(stamp.inode);

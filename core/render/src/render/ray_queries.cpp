@@ -324,6 +324,7 @@ bool closest_hit(const Geometry& geometry, const Vec3& origin, const Vec3& direc
         hit.triangle = triangle.id;
         hit.shading = surface.shading;
         hit.uv = surface.uv;
+        hit.barycentric = {triangle.u, triangle.v};
         return true;
     }
     if (q.source == no_source) return false;

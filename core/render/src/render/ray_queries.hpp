@@ -24,6 +24,7 @@ struct Hit {
     TriangleId triangle;
     Vec3 shading;
     glm::dvec2 uv;
+    glm::dvec2 barycentric;  // a triangle's weights of its second and third corner
 };
 
 // Nearest surface along origin + t * direction with t in (t_min, infinity).

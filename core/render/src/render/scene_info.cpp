@@ -10,6 +10,7 @@
 
 #include <algorithm>
 #include <chrono>
+#include <set>
 
 namespace jt {
 
@@ -26,7 +27,8 @@ namespace {
 
 std::size_t model_bytes(const Model& m) {
     return m.positions.size() * sizeof(m.positions[0]) + m.normals.size() * sizeof(m.normals[0]) +
-           m.uvs.size() * sizeof(m.uvs[0]) + m.triangles.size() * sizeof(m.triangles[0]);
+           m.uvs.size() * sizeof(m.uvs[0]) + m.triangles.size() * sizeof(m.triangles[0]) +
+           m.colours.size() * sizeof(m.colours[0]) + m.part_of.size() * sizeof(m.part_of[0]);
 }
 
 bool has_normals(const Model& m) {
@@ -41,6 +43,21 @@ struct ReadModel {
 
 }  // namespace
 
+std::vector<MeshPartInfo> mesh_parts(const Model& model) {
+    std::vector<MeshPartInfo> parts(model.parts.size());
+    for (std::size_t i = 0; i < parts.size(); ++i) {
+        const ModelPart& part = model.parts[i];
+        parts[i].name = part.name;
+        if (part.has_material) parts[i].base = part.base;
+        parts[i].texture = part.texture_name;
+        parts[i].vertex_colours = part.vertex_colours;
+    }
+    for (const std::uint32_t part : model.part_of) ++parts[part].triangles;
+    // Materials of meshes no node places, or of points and lines only.
+    std::erase_if(parts, [](const MeshPartInfo& part) { return part.triangles == 0; });
+    return parts;
+}
+
 MeshInfo mesh_info(const Scene& scene, const Primitive& primitive, const Mesh& mesh,
                    const Model& model) {
     MeshInfo info;
@@ -50,6 +67,8 @@ MeshInfo mesh_info(const Scene& scene, const Primitive& primitive, const Mesh& m
     info.vertices = model.positions.size();
     info.file_normals = has_normals(model);
     info.shading = mesh.shading;
+    info.materials = mesh.materials;
+    info.parts = mesh_parts(model);
     const auto transform = object_transform(primitive.transforms);
     if (const auto* placed = std::get_if<ObjectTransform>(&transform))
         for (const auto& triangle : model.triangles)
@@ -61,8 +80,8 @@ MeshInfo mesh_info(const Scene& scene, const Primitive& primitive, const Mesh& m
 Expected<MeshInfo> mesh_info(const Scene& scene, const Primitive& primitive) {
     const auto* mesh = std::get_if<Mesh>(&primitive.shape);
     if (!mesh) return Error{"not a mesh"};
-    const Expected<std::shared_ptr<const Model>> model =
-        shared_model(asset_path(scene, mesh->file), scene.asset_folder);
+    const Expected<std::shared_ptr<const Model>> model = shared_model(
+        asset_path(scene, mesh->file), scene.asset_folder, mesh->materials == kFileMaterials);
     if (!model) return model.error();
     return mesh_info(scene, primitive, *mesh, **model);
 }
@@ -72,7 +91,9 @@ Expected<SceneInfo> scene_info(const Scene& scene) {
     for (const Shape& kind :
          {Shape{Sphere{}}, Shape{Plane{}}, Shape{Cylinder{}}, Shape{Triangle{}}, Shape{Mesh{}}})
         info.primitives[std::string(keyword_of(kind))] = 0;
-    std::map<std::filesystem::path, ReadModel> models;  // each file read once, timed
+    // Each file read once (once more when also with its materials), timed.
+    std::map<std::pair<std::filesystem::path, bool>, ReadModel> models;
+    std::set<const Texture*> textures;  // the models' own, each counted once
     for (const Primitive& p : scene.primitives) {
         ++info.primitives[std::string(keyword_of(p.shape))];
         if (!std::holds_alternative<ObjectTransform>(object_transform(p.transforms))) {
@@ -83,13 +104,21 @@ Expected<SceneInfo> scene_info(const Scene& scene) {
             ++info.unbounded;
         } else if (const auto* mesh = std::get_if<Mesh>(&p.shape)) {
             const std::filesystem::path path = asset_path(scene, mesh->file);
-            auto [at, fresh] = models.try_emplace(path);
+            const bool file_materials = mesh->materials == kFileMaterials;
+            auto [at, fresh] = models.try_emplace({path, file_materials});
             if (fresh) {
                 const auto start = std::chrono::steady_clock::now();
-                at->second.model = read_model(path, scene.asset_folder);
+                at->second.model = read_model(path, scene.asset_folder, file_materials);
                 at->second.seconds =
                     std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
-                if (at->second.model) info.memory.models += model_bytes(*at->second.model);
+                if (at->second.model) {
+                    info.memory.models += model_bytes(*at->second.model);
+                    // The pictures of its parts count with the image maps.
+                    for (const ModelPart& part : at->second.model->parts)
+                        if (part.texture && textures.insert(part.texture.get()).second)
+                            info.memory.image_maps +=
+                                part.texture->rgb8.size() + part.texture->rgb16.size() * 2;
+                }
             }
             if (!at->second.model) return at->second.model.error();
             MeshInfo row = mesh_info(scene, p, *mesh, *at->second.model);

@@ -1,6 +1,7 @@
 #include "render/trace.hpp"
 
 #include "jtracer/limits.hpp"
+#include "render/file_pigment.hpp"
 #include "render/light_disk.hpp"
 #include "render/pattern.hpp"
 #include "render/pixel_hash.hpp"
@@ -57,8 +58,9 @@ struct SurfaceHit {
     Vec3 lifted;     // point moved off the surface toward the ray's side
     double offset;
     std::uint32_t source;
-    TriangleId triangle;  // on a triangle: which
-    glm::dvec2 uv;        // on a triangle: its texture coordinates
+    TriangleId triangle;     // on a triangle: which
+    glm::dvec2 uv;           // on a triangle: its texture coordinates
+    glm::dvec2 barycentric;  // on a triangle: the weights of its second and third corner
 };
 
 // `leaving`: the triangle a secondary ray starts on, which it never meets
@@ -93,6 +95,7 @@ SurfaceHit first_surface(const Geometry& geometry, const Vec3& o, const Vec3& d,
     s.source = hit.source;
     s.triangle = hit.triangle;
     s.uv = hit.uv;
+    s.barycentric = hit.barycentric;
     return s;
 }
 
@@ -202,6 +205,15 @@ Colour shade_hit(const PreparedScene& scene, const Material& m, const SurfaceHit
 Colour shade_surface(const PreparedScene& scene, const SurfaceHit& s, const Vec3& d,
                      const PixelSample& sample, std::uint64_t& rays) {
     const Material& m = scene.materials[scene.material_of[s.source]];
+    // A mesh's part with colours from its file replaces the block's pigment
+    // and pattern (docs/language.md §14.5).
+    if (s.triangle.instance != TriangleId::no_instance && scene.geometry->triangles->file_materials)
+        if (const std::optional<Colour> pigment =
+                file_pigment(*scene.geometry->triangles, s.triangle, s.barycentric, s.uv)) {
+            Material own = m;
+            own.pigment = *pigment;
+            return shade_hit(scene, own, s, -d, sample, rays);
+        }
     if (!has_pattern(m)) return shade_hit(scene, m, s, -d, sample, rays);
     const PatternSpace& space = scene.pattern_space[s.source];
     Material patterned = m;

@@ -122,7 +122,8 @@ Expected<const CornerNormals*> generated_normals(TriangleModel& model, double de
 
 Expected<std::unique_ptr<TriangleGeometry>> build_triangle_geometry(const Scene& scene) {
     std::unique_ptr<TriangleGeometry> t;
-    std::map<std::string, std::uint32_t> model_of_file;
+    // A file read with its materials is another model than the file without.
+    std::map<std::pair<std::string, bool>, std::uint32_t> model_of_file;
     for (std::size_t i = 0; i < scene.primitives.size(); ++i) {
         const Primitive& p = scene.primitives[i];
         const auto* triangle = std::get_if<Triangle>(&p.shape);
@@ -158,13 +159,15 @@ Expected<std::unique_ptr<TriangleGeometry>> build_triangle_geometry(const Scene&
             continue;
         }
         const std::string path = asset_path(scene, mesh->file).string();
-        auto known = model_of_file.find(path);
+        const bool file_materials = mesh->materials == kFileMaterials;
+        auto known = model_of_file.find({path, file_materials});
         if (known == model_of_file.end()) {
-            auto model = shared_model(path, scene.asset_folder);
+            auto model = shared_model(path, scene.asset_folder, file_materials);
             if (!model) return Error{"mesh: " + model.error().message};
             if ((*model)->triangles.empty()) continue;
             t->models.push_back(model_scene(*model));
-            known = model_of_file.emplace(path, t->models.size() - 1).first;
+            known =
+                model_of_file.emplace(std::pair(path, file_materials), t->models.size() - 1).first;
         }
         MeshInstance instance;
         instance.model = known->second;
@@ -176,6 +179,8 @@ Expected<std::unique_ptr<TriangleGeometry>> build_triangle_geometry(const Scene&
         instance.to_object = transform.to_object;
         instance.normal_matrix = transform.normal_matrix;
         instance.smooth = mesh->shading == kSmoothShading;
+        instance.file_materials = file_materials;
+        t->file_materials = t->file_materials || file_materials;
         instance.source = source;
         attach_instance(t->scene, *t->models[known->second], transform);
         t->instances.push_back(instance);

@@ -49,6 +49,8 @@ struct MeshInstance {
     // corner's normal (in TriangleModel::generated). Null: the file's normals
     // alone, as in language 1.1.
     const CornerNormals* corner_normals = nullptr;
+    // materials: "file": the model's parts give the pigment (render/file_pigment.hpp).
+    bool file_materials = false;
     std::uint32_t source = 0;
 };
 
@@ -68,7 +70,8 @@ struct TriangleGeometry {
     std::vector<MeshInstance> instances;  // index = instance geometry id in `scene`
     std::vector<LooseTriangle> loose;
     unsigned loose_geometry_id = RTC_INVALID_GEOMETRY_ID;
-    RTCScene scene = nullptr;  // the instances and the loose triangles
+    bool file_materials = false;  // some instance has materials: "file"
+    RTCScene scene = nullptr;     // the instances and the loose triangles
 
     TriangleGeometry() = default;
     TriangleGeometry(const TriangleGeometry&) = delete;

@@ -10,11 +10,12 @@
 
 namespace jt {
 
-// read_model's result for (file, folder), from memory when an unchanged copy
+// read_model's result for (file, folder, file_materials), from memory when an unchanged copy
 // is held. The few models used last stay held after their last user lets go,
 // so that validating a scene and then rendering it reads each file once.
 Expected<std::shared_ptr<const Model>> shared_model(const std::filesystem::path& file,
-                                                    const std::filesystem::path& folder);
+                                                    const std::filesystem::path& folder,
+                                                    bool file_materials = false);
 
 // The next shared_model of `file` reads it again even if its stamp has not
 // moved (a user's Reload: a copy tool may keep the time, and a glTF's buffer

@@ -11,6 +11,7 @@
 // the files it names. shared_model (model_cache.hpp) loads each file once.
 
 #include "jtracer/error.hpp"
+#include "jtracer/texture.hpp"
 
 #include <glm/vec2.hpp>
 #include <glm/vec3.hpp>
@@ -18,6 +19,7 @@
 #include <array>
 #include <cstdint>
 #include <filesystem>
+#include <memory>
 #include <string>
 #include <vector>
 
@@ -33,6 +35,25 @@ struct ModelLeftOut {
     std::string refused_file;           // why a file it refers to was not opened, or ""
 };
 
+// One part of a model read with its materials (docs/language.md §14.5): the
+// faces of one OBJ material (`usemtl`) or of one glTF material, or the faces
+// with none (before any `usemtl`, after an unknown name, a glTF primitive
+// without a material, every face of a format without materials).
+struct ModelPart {
+    std::string name;           // the material's name; "" for the faces with none
+    bool has_material = false;  // then `base` applies (1 when the file gives no colour)
+    Colour base{1.0};           // OBJ Kd, glTF baseColorFactor's r, g, b
+    // How the file names its texture ("" for none; "embedded image 2" for one
+    // inside the file) and the picture, decoded as image_map's are.
+    std::string texture_name;
+    std::shared_ptr<const Texture> texture;
+    bool vertex_colours = false;  // some triangle of it has a colour at all three corners
+    bool operator==(const ModelPart&) const = default;
+};
+
+// A corner's colour when the file gives it none (`Model::colours`).
+inline constexpr float kNoVertexColour = -1.0f;
+
 // A model's object space is the file's coordinates after its own node
 // transforms (glTF). Vertex positions are single precision, as every model
 // format stores them; the renderer refines hits on them in double. Every one
@@ -46,6 +67,14 @@ struct Model {
     std::vector<glm::vec2> uvs;  // parallel to positions, or empty
     // Counter-clockwise seen from the front; none of zero area.
     std::vector<std::array<std::uint32_t, 3>> triangles;
+    // Read only with the file's materials (read_model's `file_materials`),
+    // else all three are empty. Colours are parallel to positions (or empty
+    // when the file has none), clipped to [0, 1]; a corner without one has
+    // kNoVertexColour in x. part_of is parallel to triangles, an index into
+    // parts; parts lists each material used once, in the order first used.
+    std::vector<glm::vec3> colours;
+    std::vector<ModelPart> parts;
+    std::vector<std::uint32_t> part_of;
     ModelLeftOut left_out;
 };
 
@@ -63,7 +92,13 @@ inline constexpr std::size_t kMaxModelTriangles = std::size_t{1} << 26;
 // left_out.refused_file says so. A model with no triangle of non-zero area is
 // not an error: its triangle list is empty. Running out of memory raises
 // std::bad_alloc, as everywhere (error.hpp).
-Expected<Model> read_model(const std::filesystem::path& file, const std::filesystem::path& folder);
+//
+// With `file_materials` (a mesh's `materials: "file"`), it also reads each
+// part's colour and texture and the vertex colours; then a material library
+// or texture that cannot be read is an error, and textures are confined as
+// buffers are. Without, the file's materials are never looked at.
+Expected<Model> read_model(const std::filesystem::path& file, const std::filesystem::path& folder,
+                           bool file_materials = false);
 
 // The warnings a mesh of `model` gets, each to follow the file's name: what
 // the file held that is left out, and when no triangle is left, that the mesh

@@ -55,10 +55,29 @@ bool ConfinedIOSystem::Exists(const char* file) const {
     return allowed(file) && DefaultIOSystem::Exists(file);
 }
 
+bool ConfinedIOSystem::contains(const std::filesystem::path& file) const {
+    std::error_code error;
+    const std::filesystem::path path =
+        std::filesystem::weakly_canonical(std::filesystem::absolute(file, error), error);
+    return !error && !folder_.empty() && inside(path, folder_);
+}
+
 Assimp::IOStream* ConfinedIOSystem::Open(const char* file, const char* mode) {
     // Reading only: a model never writes.
     if (std::string(mode).find_first_of("wa+") != std::string::npos) return nullptr;
-    return allowed(file) ? DefaultIOSystem::Open(file, mode) : nullptr;
+    const bool library = material_library(file);
+    const std::string refused_before = refusal_;
+    Assimp::IOStream* stream = allowed(file) ? DefaultIOSystem::Open(file, mode) : nullptr;
+    if (library && stream) libraries_.emplace_back(file);
+    if (library && !stream && library_failure_.empty()) {
+        if (refusal_ != refused_before)
+            library_failure_ = "it " + refusal_;
+        else
+            library_failure_ = "its material library '" + std::string(file) + "' cannot be read (" +
+                               (DefaultIOSystem::Exists(file) ? "unreadable" : "no such file") +
+                               ")";
+    }
+    return stream;
 }
 
 }  // namespace jt

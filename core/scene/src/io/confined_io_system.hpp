@@ -8,6 +8,7 @@
 
 #include <filesystem>
 #include <string>
+#include <vector>
 
 namespace jt {
 
@@ -23,12 +24,25 @@ class ConfinedIOSystem : public Assimp::DefaultIOSystem {
     // was. The import may have gone on without it.
     const std::string& refusal() const { return refusal_; }
 
+    // The material libraries (.mtl) opened, in order, and why the first that
+    // could not be opened was not ("" when none failed): the model's
+    // materials are read from them (io/model_materials.hpp).
+    const std::vector<std::filesystem::path>& libraries() const { return libraries_; }
+    const std::string& library_failure() const { return library_failure_; }
+
+    // Whether `file` lies inside the folder (textures are confined as the
+    // files Assimp opens are); the folder, canonical.
+    bool contains(const std::filesystem::path& file) const;
+    const std::filesystem::path& folder() const { return folder_; }
+
   private:
     // True when `file` may be opened; else keeps why not as the refusal.
     bool allowed(const char* file) const;
 
     std::filesystem::path folder_;  // canonical
     mutable std::string refusal_;   // Exists is const in Assimp's interface
+    std::vector<std::filesystem::path> libraries_;
+    std::string library_failure_;
 };
 
 }  // namespace jt

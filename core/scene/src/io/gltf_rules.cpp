@@ -280,20 +280,22 @@ std::string gltf2_problem(const json& root, std::optional<std::uint64_t> bin_chu
 GltfCheck check_gltf(std::span<const std::uint8_t> bytes) {
     if (bytes.size() >= 8 && read_u32(bytes, 0) == kGlbMagic && read_u32(bytes, 4) != 2)
         return {not_gltf2("binary glTF version " + std::to_string(read_u32(bytes, 4)) + " (.glb)"),
-                0};
+                0, 0};
     const std::optional<GltfText> text = gltf_text(bytes);
     if (!text) return {};
     json root;
     try {
         root = json::parse(text->json);
     } catch (const json::parse_error& error) {
-        return {"its glTF JSON does not parse: " + parse_error_message(error), 0};
+        return {"its glTF JSON does not parse: " + parse_error_message(error), 0, 0};
     }
     if (!root.is_object()) return {};
     const std::string version = asset_version(root);
     if (version.empty()) return {};
-    if (version.rfind("2.", 0) != 0) return {not_gltf2("glTF " + version), 0};
-    return {gltf2_problem(root, text->bin_chunk_bytes), declared_triangles(root)};
+    if (version.rfind("2.", 0) != 0) return {not_gltf2("glTF " + version), 0, 0};
+    const auto materials = root.find("materials");
+    return {gltf2_problem(root, text->bin_chunk_bytes), declared_triangles(root),
+            materials != root.end() && materials->is_array() ? materials->size() : 0};
 }
 
 }  // namespace jt

@@ -17,7 +17,7 @@
 //   it is glTF 1 is refused as such.
 // It also counts the triangles the file's mesh primitives declare, which tells
 // how many Assimp dropped (it leaves out faces whose indices are out of range,
-// with no more than a log line).
+// with no more than a log line), and its materials.
 
 #include <cstdint>
 #include <span>
@@ -32,6 +32,9 @@ struct GltfCheck {
     // The triangles of every mesh primitive of a triangle mode (TRIANGLES,
     // TRIANGLE_STRIP, TRIANGLE_FAN), counted from its indices or positions.
     std::uint64_t declared_triangles = 0;
+    // How many materials the file declares: Assimp gives a primitive without
+    // one a material of its own, numbered after them.
+    std::uint64_t materials = 0;
 };
 GltfCheck check_gltf(std::span<const std::uint8_t> bytes);
 

@@ -5,6 +5,7 @@
 
 #include <string>
 #include <system_error>
+#include <tuple>
 #include <utility>
 
 namespace jt {
@@ -15,7 +16,8 @@ namespace {
 // distinct models between its validation and its render.
 constexpr std::size_t kept_models = 4;
 
-using Key = std::pair<std::string, std::string>;  // the file, the scene's folder
+// The file, the scene's folder, and whether its materials were read.
+using Key = std::tuple<std::string, std::string, bool>;
 
 StampedCache<Key, Model>& cache() {
     static StampedCache<Key, Model> c(kept_models);
@@ -25,21 +27,24 @@ StampedCache<Key, Model>& cache() {
 }  // namespace
 
 Expected<std::shared_ptr<const Model>> shared_model(const std::filesystem::path& file,
-                                                    const std::filesystem::path& folder) {
+                                                    const std::filesystem::path& folder,
+                                                    bool file_materials) {
     std::error_code error;
     const std::filesystem::path absolute = std::filesystem::absolute(file, error);
     const FileStamp stamp = file_stamp(absolute);
-    if (error || !stamp.exists) return read_model(file, folder).error();  // its own words
+    if (error || !stamp.exists)
+        return read_model(file, folder, file_materials).error();  // its own words
     const std::filesystem::path scene_folder = folder.empty() ? "." : folder;
     const Key key(absolute.lexically_normal().string(),
-                  std::filesystem::absolute(scene_folder, error).lexically_normal().string());
-    return cache().get(key, stamp, [&] { return read_model(file, folder); });
+                  std::filesystem::absolute(scene_folder, error).lexically_normal().string(),
+                  file_materials);
+    return cache().get(key, stamp, [&] { return read_model(file, folder, file_materials); });
 }
 
 void forget_model(const std::filesystem::path& file) {
     std::error_code error;
     const std::string absolute = std::filesystem::absolute(file, error).lexically_normal().string();
-    cache().forget([&](const Key& key) { return key.first == absolute; });
+    cache().forget([&](const Key& key) { return std::get<0>(key) == absolute; });
 }
 
 }  // namespace jt

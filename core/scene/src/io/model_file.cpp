@@ -3,6 +3,7 @@
 #include "io/confined_io_system.hpp"
 #include "io/file_bytes.hpp"
 #include "io/gltf_rules.hpp"
+#include "io/model_materials.hpp"
 #include "io/model_messages.hpp"
 
 #include <assimp/BaseImporter.h>
@@ -22,6 +23,7 @@
 #include <limits>
 #include <memory>
 #include <new>
+#include <optional>
 #include <sstream>
 #include <stdexcept>
 #include <string>
@@ -135,9 +137,13 @@ bool finite(const glm::vec3& v) {
 // broken ones, points and lines counted (ModelLeftOut).
 class ModelBuilder {
   public:
-    explicit ModelBuilder(bool use_normals) : use_normals_(use_normals) {}
+    // With `plan`, each triangle's part and the vertex colours are kept too.
+    ModelBuilder(bool use_normals, const MaterialPlan* plan)
+        : use_normals_(use_normals), plan_(plan) {
+        if (plan_) model_.parts = plan_->parts;
+    }
 
-    bool add(const aiMesh& mesh, const glm::dmat4& to_model, bool identity) {
+    bool add(const aiMesh& mesh, unsigned mesh_index, const glm::dmat4& to_model, bool identity) {
         const auto first = static_cast<std::uint32_t>(model_.positions.size());
         if (model_.positions.size() + mesh.mNumVertices > kMaxModelTriangles) return false;
         const glm::dmat3 normal_matrix = glm::transpose(glm::inverse(glm::dmat3(to_model)));
@@ -151,6 +157,7 @@ class ModelBuilder {
         if (uvs && !has_uvs_) model_.uvs.assign(first, glm::vec2(0.0f));
         has_normals_ = has_normals_ || normals;
         has_uvs_ = has_uvs_ || uvs;
+        if (plan_) add_colours(mesh, first);
         for (unsigned i = 0; i < mesh.mNumVertices; ++i) {
             const aiVector3D& v = mesh.mVertices[i];
             const glm::dvec3 p = identity ? glm::dvec3(v.x, v.y, v.z)
@@ -183,7 +190,10 @@ class ModelBuilder {
                     ++model_.left_out.out_of_range;
                     continue;
                 }
+                const std::size_t before = model_.triangles.size();
                 add_triangle({first + a, first + b, first + c});
+                if (plan_ && model_.triangles.size() > before)
+                    model_.part_of.push_back(plan_->part(mesh_index, f));
                 if (model_.triangles.size() > kMaxModelTriangles) return false;
             }
         }
@@ -193,10 +203,40 @@ class ModelBuilder {
         return true;
     }
 
-    Model take() && { return std::move(model_); }
+    Model take() && {
+        // A part has vertex colours when one of its triangles has them at every corner.
+        if (!model_.colours.empty())
+            for (std::size_t t = 0; t < model_.triangles.size(); ++t) {
+                const auto& c = model_.triangles[t];
+                if (model_.colours[c[0]].x != kNoVertexColour &&
+                    model_.colours[c[1]].x != kNoVertexColour &&
+                    model_.colours[c[2]].x != kNoVertexColour)
+                    model_.parts[model_.part_of[t]].vertex_colours = true;
+            }
+        return std::move(model_);
+    }
     ModelLeftOut& left_out() { return model_.left_out; }
 
   private:
+    // The mesh's vertex colours (first set), clipped to [0, 1]; the first mesh
+    // with colours gives the earlier ones none.
+    void add_colours(const aiMesh& mesh, std::uint32_t first) {
+        const aiColor4D* colours = plan_->vertex_colours ? mesh.mColors[0] : nullptr;
+        if (colours && !has_colours_)
+            model_.colours.assign(first, glm::vec3(kNoVertexColour, 0.0f, 0.0f));
+        has_colours_ = has_colours_ || colours;
+        if (!has_colours_) return;
+        for (unsigned i = 0; i < mesh.mNumVertices; ++i) {
+            glm::vec3 c(kNoVertexColour, 0.0f, 0.0f);
+            if (colours) {
+                const glm::vec3 read(colours[i].r, colours[i].g, colours[i].b);
+                // NaN has no place in [0, 1]: such a corner has no colour.
+                if (finite(read)) c = glm::clamp(read, 0.0f, 1.0f);
+            }
+            model_.colours.push_back(c);
+        }
+    }
+
     void add_triangle(const std::array<std::uint32_t, 3>& corners) {
         const glm::vec3 &a = model_.positions[corners[0]], &b = model_.positions[corners[1]],
                         &c = model_.positions[corners[2]];
@@ -211,7 +251,8 @@ class ModelBuilder {
     }
 
     bool use_normals_;
-    bool has_normals_ = false, has_uvs_ = false;
+    const MaterialPlan* plan_;
+    bool has_normals_ = false, has_uvs_ = false, has_colours_ = false;
     Model model_;
 };
 
@@ -225,8 +266,9 @@ std::string too_many() {
 //
 // `declared_triangles`, when the file says how many it has (glTF), tells how
 // many the reader dropped: those it gave fewer named corners out of range.
-Expected<Model> gather(const aiScene& scene, bool use_normals, std::uint64_t declared_triangles) {
-    ModelBuilder builder(use_normals);
+Expected<Model> gather(const aiScene& scene, bool use_normals, std::uint64_t declared_triangles,
+                       const MaterialPlan* plan) {
+    ModelBuilder builder(use_normals, plan);
     std::uint64_t read = 0;
     for (unsigned m = 0; m < scene.mNumMeshes; ++m)
         if (const aiMesh* mesh = scene.mMeshes[m])
@@ -242,7 +284,7 @@ Expected<Model> gather(const aiScene& scene, bool use_normals, std::uint64_t dec
         stack.push_back({scene.mRootNode, to_glm(scene.mRootNode->mTransformation)});
     } else {
         for (unsigned m = 0; m < scene.mNumMeshes; ++m)
-            if (scene.mMeshes[m] && !builder.add(*scene.mMeshes[m], glm::dmat4(1.0), true))
+            if (scene.mMeshes[m] && !builder.add(*scene.mMeshes[m], m, glm::dmat4(1.0), true))
                 return Error{too_many()};
     }
     std::size_t visited = 0;
@@ -254,7 +296,7 @@ Expected<Model> gather(const aiScene& scene, bool use_normals, std::uint64_t dec
         for (unsigned k = 0; k < at.node->mNumMeshes; ++k) {
             const unsigned m = at.node->mMeshes[k];
             if (m >= scene.mNumMeshes || !scene.mMeshes[m]) continue;
-            if (!builder.add(*scene.mMeshes[m], at.to_model, identity)) return Error{too_many()};
+            if (!builder.add(*scene.mMeshes[m], m, at.to_model, identity)) return Error{too_many()};
         }
         for (unsigned c = at.node->mNumChildren; c-- > 0;) {
             const aiNode* child = at.node->mChildren[c];
@@ -266,7 +308,8 @@ Expected<Model> gather(const aiScene& scene, bool use_normals, std::uint64_t dec
 
 }  // namespace
 
-Expected<Model> read_model(const std::filesystem::path& file, const std::filesystem::path& folder) {
+Expected<Model> read_model(const std::filesystem::path& file, const std::filesystem::path& folder,
+                           bool file_materials) {
     std::error_code error;
     const auto status = std::filesystem::status(file, error);
     if (error || !std::filesystem::exists(status))
@@ -281,13 +324,14 @@ Expected<Model> read_model(const std::filesystem::path& file, const std::filesys
                                             std::to_string(kMaxModelFileBytes) + ")")};
     if (std::string problem = ply_header_problem(file, size); !problem.empty())
         return Error{file_message(file, problem)};
-    std::uint64_t declared_triangles = 0;
+    std::uint64_t declared_triangles = 0, gltf_materials = 0;
     if (const std::string ext = lower_extension(file); ext == ".gltf" || ext == ".glb") {
         const Expected<std::vector<std::uint8_t>> bytes = read_file_bytes(file);
         if (!bytes) return bytes.error();
         const GltfCheck check = check_gltf(*bytes);
         if (!check.problem.empty()) return Error{file_message(file, check.problem)};
         declared_triangles = check.declared_triangles;
+        gltf_materials = check.materials;
     }
     // The file's own bytes say more than Assimp's words for some failures
     // (io/model_messages.hpp); read only when it failed.
@@ -320,8 +364,15 @@ Expected<Model> read_model(const std::filesystem::path& file, const std::filesys
                               "have (indices out of range)")};
             return failure(why);
         }
+        std::optional<MaterialPlan> plan;
+        if (file_materials) {
+            Expected<MaterialPlan> planned = plan_materials(*scene, file, *io, gltf_materials);
+            if (!planned) return Error{file_message(file, planned.error().message)};
+            plan = std::move(*planned);
+        }
         // STL's normals are one a facet, not a vertex (docs/language.md §13.5).
-        Expected<Model> model = gather(*scene, lower_extension(file) != ".stl", declared_triangles);
+        Expected<Model> model = gather(*scene, lower_extension(file) != ".stl", declared_triangles,
+                                       plan ? &*plan : nullptr);
         if (model) model->left_out.refused_file = io->refusal();
         if (model && model->triangles.empty()) {
             // Text Assimp could not read shows as a model of nothing.

@@ -236,10 +236,12 @@ class Validator {
     void check_mesh(const Mesh& mesh, const BlockSource* block, const std::string& which) {
         if (mesh.file.empty()) return;  // check_values reported it
         const SourcePos pos = where(block, "file");
-        auto known = models_.find(mesh.file);
+        const bool file_materials = mesh.materials == kFileMaterials;
+        auto known = models_.find({mesh.file, file_materials});
         if (known == models_.end()) {
             ModelVerdict verdict;
-            auto model = shared_model(asset_path(scene_, mesh.file), scene_.asset_folder);
+            auto model =
+                shared_model(asset_path(scene_, mesh.file), scene_.asset_folder, file_materials);
             if (!model) {
                 verdict.error = model.error().message;
             } else {
@@ -248,7 +250,7 @@ class Validator {
                 verdict.corners = 3 * (*model)->triangles.size();
                 verdict.corners_without_normals = corners_without_normals(**model);
             }
-            known = models_.emplace(mesh.file, verdict).first;
+            known = models_.emplace(std::pair(mesh.file, file_materials), verdict).first;
         }
         const ModelVerdict& verdict = known->second;
         if (!verdict.error.empty()) error(pos, which + verdict.error);
@@ -290,7 +292,7 @@ class Validator {
                         "as 60) generates normals there");
         }
     }
-    std::map<std::string, ModelVerdict> models_;
+    std::map<std::pair<std::string, bool>, ModelVerdict> models_;  // by file and materials
 
     // The picture must decode (docs/language.md §13.4), with the error the
     // render would give; each file is decoded once however many materials
