@@ -72,7 +72,7 @@ constexpr Features kLanded{
     .lens = true,
     .sky = true,
     .generated_normals = true,
-    .file_materials = false,
+    .file_materials = true,
 };
 
 // Language 1.2's runs are six, each on fewer seeds: a seed of theirs takes
