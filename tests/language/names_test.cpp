@@ -2,6 +2,7 @@
 
 #include "jtracer/parser.hpp"
 #include "jtracer/serializer.hpp"
+#include "jtracer/source_edit.hpp"
 #include "test_util.hpp"
 
 #include <gtest/gtest.h>
@@ -213,6 +214,48 @@ TEST(Names, ScenesWithNamesRoundTripThroughTheSerializer) {
     const std::string text = serialize_scene(r.scene);
     ParseResult again = parse_clean(text);
     EXPECT_TRUE(again.scene == r.scene) << text;
+}
+
+// Save-in-place never writes a literal over a name or an expression.
+TEST(Names, SavingInPlaceRefusesToOverwriteNamesAndExpressions) {
+    const std::string text =
+        "define r = 2;\n"
+        "scene { sphere { radius: r; } sphere { radius: r * 2; } "
+        "sphere { radius: 3; center: <1, -2, 3>; } }\n";
+    ParseResult r = parse_clean(text);
+    for (std::size_t i : {0u, 1u}) {
+        Scene edited = r.scene;
+        std::get<Sphere>(edited.primitives[i].shape).radius = 5;
+        SourceEditResult edit = apply_scene_edits(text, r.source, r.scene, edited);
+        EXPECT_FALSE(edit.ok());
+        EXPECT_EQ(edit.text, text);
+        EXPECT_EQ(edit.error, i == 0 ? "'radius' at line 2 is written as the name r; edit it in "
+                                       "the text, not as a value"
+                                     : "'radius' at line 2 is written as the expression r * 2; "
+                                       "edit it in the text, not as a value");
+    }
+    // A literal beside them is still written in place, a signed component kept.
+    Scene edited = r.scene;
+    std::get<Sphere>(edited.primitives[2].shape).center.x = 4;
+    SourceEditResult edit = apply_scene_edits(text, r.source, r.scene, edited);
+    ASSERT_TRUE(edit.ok()) << edit.error;
+    EXPECT_NE(edit.text.find("center: <4, -2, 3>;"), std::string::npos) << edit.text;
+}
+
+// A value inherited from a named material is written into the primitive's own
+// material block, never into the shared material.
+TEST(Names, EditingAnInheritedMaterialValueWritesThePrimitivesOwnBlock) {
+    const std::string text =
+        "material m { reflection: 0.5; }\n"
+        "scene { sphere { material: m; } }\n";
+    ParseResult r = parse_clean(text);
+    Scene edited = r.scene;
+    edited.primitives[0].material.reflection = 0.25;
+    SourceEditResult edit = apply_scene_edits(text, r.source, r.scene, edited);
+    ASSERT_TRUE(edit.ok()) << edit.error;
+    EXPECT_NE(edit.text.find("material m { reflection: 0.5; }"), std::string::npos) << edit.text;
+    ParseResult again = parse_clean(edit.text);
+    EXPECT_TRUE(again.scene == edited) << edit.text;
 }
 
 }  // namespace
