@@ -122,10 +122,16 @@ class SourceWriter {
             std::string written(
                 text_.substr(span.offset, std::min<std::size_t>(span.length, shown)));
             if (span.length > shown) written += "...";
-            fail("'" + std::string(property.name) + "' at line " +
-                 std::to_string(property.name_span.pos.line) + " is written as " +
-                 (property.origin == ValueOrigin::name ? "the name " : "the expression ") +
-                 written + "; edit it in the text, not as a value");
+            // Appended, not concatenated: GCC 12 warns (-Wrestrict) about "'" + s.
+            std::string message(1, '\'');
+            message.append(property.name)
+                .append("' at line ")
+                .append(std::to_string(property.name_span.pos.line))
+                .append(" is written as ")
+                .append(property.origin == ValueOrigin::name ? "the name " : "the expression ")
+                .append(written)
+                .append("; edit it in the text, not as a value");
+            fail(std::move(message));
             return;
         }
         const std::string value =
