@@ -4,6 +4,8 @@
 
 #include <CLI/CLI.hpp>
 
+#include <charconv>
+#include <cmath>
 #include <map>
 #include <string>
 
@@ -45,6 +47,44 @@ void add_render_flags(CLI::App& app, RenderFlags& o) {
                    "on a terminal, nothing otherwise; log: a plain line per 10%, for log files")
         ->transform(CLI::CheckedTransformer(modes))
         ->type_name("MODE");
+    add_scene_value_flags(app, o.defines, o.clock);
+}
+
+void add_scene_value_flags(CLI::App& app, std::vector<std::string>& defines,
+                           std::optional<double>& clock) {
+    app.add_option("--define", defines,
+                   "Set a name the scene defines, as a file would write its value: r=2, "
+                   "'c=<1, 0, 0>', 's=\"out.png\"' (repeatable; the file's own definition is "
+                   "then ignored)")
+        ->check(CLI::Validator(
+            [](std::string& argument) -> std::string {
+                Expected<Define> define = parse_define(argument);
+                return define ? std::string() : define.error().message;
+            },
+            "NAME=VALUE"))
+        ->type_name("NAME=VALUE")
+        ->take_all()
+        ->allow_extra_args(false);
+    app.add_option("--clock", clock, "The value of clock in the scene (default 0)")
+        ->check(CLI::Validator(
+            [](std::string& text) -> std::string {
+                double value = 0.0;
+                auto [end, ec] = std::from_chars(text.data(), text.data() + text.size(), value);
+                if (ec != std::errc() || end != text.data() + text.size() || !std::isfinite(value))
+                    return "expected a finite number, got '" + text + "'";
+                return {};
+            },
+            "V"))
+        ->type_name("V");
+}
+
+ParseOptions parse_options_for(const RenderFlags& flags) {
+    ParseOptions options;
+    options.source_map = false;
+    for (const std::string& argument : flags.defines)
+        if (Expected<Define> define = parse_define(argument)) options.defines.push_back(*define);
+    options.clock = flags.clock.value_or(0.0);
+    return options;
 }
 
 void name_setting_flags(std::vector<Diagnostic>& diagnostics) {

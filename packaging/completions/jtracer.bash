@@ -49,12 +49,12 @@ _jtracer() {
         else
             options='-h --help --version -o --output --camera --width --height --samples
                 --threads -q --quiet --progress --region --region-output --check --expect --threshold
-                --max-pixels --update --junit'
+                --max-pixels --update --junit --define --clock'
         fi
         ;;
     jtracer-mpi)
         options='-h --help --version -o --output --camera --width --height --samples --threads
-            -q --quiet --progress --tile-size --rank-timeout --stats'
+            -q --quiet --progress --tile-size --rank-timeout --stats --define --clock'
         ;;
     jtracer-merge)
         options='-h --help --version -o --output -q --quiet'
@@ -96,8 +96,11 @@ _jtracer() {
         return
         ;;
     --width | --height | --samples | --threads | --region | --threshold | --max-pixels | \
-        --tile-size | --rank-timeout | --size | --timeout)
+        --tile-size | --rank-timeout | --size | --timeout | --clock)
         return # a number or a list of numbers: nothing to offer
+        ;;
+    --define)
+        return # NAME=VALUE, written as in a scene file: nothing to offer
         ;;
     esac
 

@@ -18,15 +18,17 @@ struct PythonDiagnostic {
     std::string file;
     int line = 0;
     int column = 0;
-    std::string severity;  // "error" or "warning"
+    std::string severity;  // "error", "warning" or "note"
     std::string message;
     bool operator==(const PythonDiagnostic&) const = default;
 };
 
 // "scene.jts:3:12: error: MESSAGE": the first line --check prints for it.
 std::string header_line(const PythonDiagnostic& d) {
-    const Diagnostic core{
-        d.severity == "error" ? Severity::error : Severity::warning, {d.line, d.column}, d.message};
+    const Severity severity = d.severity == "error"     ? Severity::error
+                              : d.severity == "warning" ? Severity::warning
+                                                        : Severity::note;
+    const Diagnostic core{severity, {d.line, d.column}, d.message};
     const std::string text = format_diagnostic(core, d.file, {});
     return text.substr(0, text.find('\n'));
 }
@@ -41,7 +43,9 @@ py::list diagnostic_list(const std::vector<Diagnostic>& diagnostics, const std::
     py::list list;
     for (const Diagnostic& d : diagnostics)
         list.append(PythonDiagnostic{path, d.pos.line, d.pos.column,
-                                     d.severity == Severity::error ? "error" : "warning",
+                                     d.severity == Severity::error     ? "error"
+                                     : d.severity == Severity::warning ? "warning"
+                                                                       : "note",
                                      d.message});
     return list;
 }
@@ -66,9 +70,9 @@ void bind_errors(py::module_& m) {
                                  "A finding in a scene file: where, how bad, and what.")
         .def(py::init([](std::string file, int line, int column, std::string severity,
                          std::string message) {
-                 if (severity != "error" && severity != "warning")
-                     throw py::value_error("severity: \"error\" or \"warning\", not \"" + severity +
-                                           "\"");
+                 if (severity != "error" && severity != "warning" && severity != "note")
+                     throw py::value_error("severity: \"error\", \"warning\" or \"note\", not \"" +
+                                           severity + "\"");
                  return PythonDiagnostic{std::move(file), line, column, std::move(severity),
                                          std::move(message)};
              }),
@@ -77,7 +81,9 @@ void bind_errors(py::module_& m) {
         .def_readonly("file", &PythonDiagnostic::file, "The file as it was given")
         .def_readonly("line", &PythonDiagnostic::line, "1-based; 0 when about the whole file")
         .def_readonly("column", &PythonDiagnostic::column, "1-based, in bytes; 0 with line 0")
-        .def_readonly("severity", &PythonDiagnostic::severity, "\"error\" or \"warning\"")
+        .def_readonly("severity", &PythonDiagnostic::severity,
+                      "\"error\", \"warning\" or \"note\" (a --define that replaces a "
+                      "definition)")
         .def_readonly("message", &PythonDiagnostic::message)
         .def("__str__", &header_line)
         .def("__repr__",

@@ -92,10 +92,47 @@ std::shared_ptr<PythonScene> checked_scene(LoadedScene loaded) {
     return scene;
 }
 
+// The `defines` argument of load() and parse() as ParseOptions, as
+// jtracer-cli's --define NAME=VALUE: a number (int or float), three numbers
+// (a vector), or a str holding the value as a file writes it ('"out.png"' for a
+// string, "2 * pi" for an expression). Raises TypeError or ValueError.
+ParseOptions options_with(const std::optional<py::dict>& defines) {
+    ParseOptions options;
+    options.source_map = false;
+    if (!defines) return options;
+    for (const auto& [key, value] : *defines) {
+        if (!py::isinstance<py::str>(key)) throw py::type_error("defines: the names must be str");
+        const std::string name = key.cast<std::string>();
+        auto number_text = [&](py::handle v) -> std::string {
+            if (py::isinstance<py::bool_>(v) ||
+                !(py::isinstance<py::int_>(v) || py::isinstance<py::float_>(v)))
+                throw py::type_error("defines['" + name +
+                                     "']: expected a number, three numbers or a str");
+            return py::repr(v).cast<std::string>();
+        };
+        std::string text;
+        if (py::isinstance<py::str>(value)) {
+            text = value.cast<std::string>();
+        } else if (py::isinstance<py::sequence>(value)) {
+            const py::sequence items = value.cast<py::sequence>();
+            if (items.size() != 3)
+                throw py::value_error("defines['" + name + "']: a vector takes three numbers");
+            text = "<" + number_text(items[0]) + ", " + number_text(items[1]) + ", " +
+                   number_text(items[2]) + ">";
+        } else {
+            text = number_text(value);
+        }
+        Expected<Define> define = parse_define(name + "=" + text);
+        if (!define) throw py::value_error("defines: " + define.error().message);
+        options.defines.push_back(std::move(*define));
+    }
+    return options;
+}
+
 // As jtracer-cli reads a file: without the source map, which check_scene
 // builds only when there is something to locate.
-LoadedScene read_file(const std::filesystem::path& path) {
-    Expected<LoadedScene> loaded = load_scene_file(path, {.source_map = false});
+LoadedScene read_file(const std::filesystem::path& path, const ParseOptions& options) {
+    Expected<LoadedScene> loaded = load_scene_file(path, options);
     if (!loaded) raise_os_error(loaded.error().message);
     return std::move(*loaded);
 }
@@ -156,30 +193,39 @@ void bind_scene(py::module_& m) {
         });
 
     m.def(
-        "load", [](const std::filesystem::path& path) { return checked_scene(read_file(path)); },
-        py::arg("path"),
+        "load",
+        [](const std::filesystem::path& path, std::optional<py::dict> defines) {
+            const ParseOptions options = options_with(defines);
+            return checked_scene(read_file(path, options));
+        },
+        py::arg("path"), py::arg("defines") = py::none(),
         "Reads and checks a .jts file. Raises SceneError (with .diagnostics) when it has "
-        "errors, OSError when it cannot be read.");
+        "errors, OSError when it cannot be read. defines, a dict, sets names as "
+        "jtracer-cli's --define NAME=VALUE does: a number, three numbers (a vector), or a "
+        "str holding the value as a file writes it ('\"out.png\"', \"2 * pi\"); the "
+        "file's own definitions of those names are then ignored. A bad name or value "
+        "raises ValueError.");
     m.def(
         "parse",
-        [](std::string text, const std::filesystem::path& path) {
+        [](std::string text, const std::filesystem::path& path, std::optional<py::dict> defines) {
             LoadedScene loaded;
             loaded.path = path.string();
-            loaded.options = {.source_map = false};
+            loaded.options = options_with(defines);
             loaded.text = std::move(text);
             loaded.parsed = parse_scene(loaded.text, loaded.options);
             if (loaded.parsed.out_of_memory) throw std::bad_alloc();
             loaded.parsed.scene.asset_folder = path.parent_path().string();
             return checked_scene(std::move(loaded));
         },
-        py::arg("text"), py::arg("path") = "<string>",
+        py::arg("text"), py::arg("path") = "<string>", py::arg("defines") = py::none(),
         "Parses and checks .jts text. `path` names it in diagnostics, and its folder is "
         "where the scene's relative file names (meshes, image maps) are found; the "
-        "default, \"<string>\", looks in the current directory. Raises SceneError.");
+        "default, \"<string>\", looks in the current directory. defines as for load(). "
+        "Raises SceneError.");
     m.def(
         "check",
         [](const std::filesystem::path& path) {
-            const LoadedScene loaded = read_file(path);
+            const LoadedScene loaded = read_file(path, options_with(std::nullopt));
             return diagnostic_list(findings(loaded), loaded.path);
         },
         py::arg("path"),

@@ -49,8 +49,22 @@ TEST(Numbers, MalformedNumberIsOneErrorAtItsStart) {
     EXPECT_EQ(brief("scene { sphere { center: <1.0, 9.1, .3.2>; } }"),
               "1:37: error: malformed number '.3.2'");
     EXPECT_EQ(brief("scene { plane { distance: 1..2; } }"), "1:27: error: malformed number '1..2'");
-    EXPECT_EQ(brief("scene { plane { distance: --1; } }"), "1:27: error: malformed number '--1'");
     EXPECT_EQ(brief("scene { plane { distance: 1e; } }"), "1:27: error: malformed number '1e'");
+    EXPECT_EQ(brief("scene { plane { distance: 1.5.; } }"), "1:27: error: malformed number '1.5.'");
+}
+
+// Language 1.3 (docs/language.md §15.1): a sign is an operator, except in an exponent.
+TEST(Numbers, SignsAreOperatorsExceptInAnExponent) {
+    auto distance = [](const std::string& value) {
+        ParseResult r = parse_clean("scene { plane { distance: " + value + "; } }");
+        return std::get<Plane>(r.scene.primitives.at(0).shape).distance;
+    };
+    EXPECT_EQ(distance("--1"), 1.0);
+    EXPECT_EQ(distance("1-2"), -1.0);
+    EXPECT_EQ(distance("2*-3"), -6.0);
+    EXPECT_EQ(distance("1e-3"), 1e-3);
+    EXPECT_EQ(distance("1E+2-1"), 99.0);
+    EXPECT_EQ(distance("+2"), 2.0);
 }
 
 TEST(Numbers, OutOfRangeIsAnError) {
@@ -58,15 +72,16 @@ TEST(Numbers, OutOfRangeIsAnError) {
               "1:27: error: the number 1e400 is out of range (numbers must be finite doubles)");
 }
 
-TEST(Numbers, NanAndInfinitySpelledOutAreRejectedWithTheKind) {
+TEST(Numbers, NanAndInfinitySpelledOutAreUnknownNamesThatMustBeFinite) {
     EXPECT_EQ(brief("scene { plane { distance: nan; } }"),
-              "1:27: error: 'distance' takes a number like 1.5, got the word 'nan': numbers "
-              "must be finite");
+              "1:27: error: unknown name 'nan' (names must be defined before they are used); "
+              "numbers must be finite");
     EXPECT_EQ(brief("scene { plane { distance: inf; } }"),
-              "1:27: error: 'distance' takes a number like 1.5, got the word 'inf': numbers "
-              "must be finite");
+              "1:27: error: unknown name 'inf' (names must be defined before they are used); "
+              "numbers must be finite");
     EXPECT_EQ(brief("scene { sphere { center: <0, Infinity, 0>; } }"),
-              "1:30: error: expected a number in the vector, got the word 'Infinity'");
+              "1:30: error: unknown name 'Infinity' (names must be defined before they are "
+              "used); numbers must be finite");
 }
 
 TEST(Strings, ReadPrintableAscii) {

@@ -263,8 +263,8 @@ void expect_distinct_members() {
             using T = std::decay_t<decltype(v)>;
             const bool vector = p.kind == ValueKind::vector || p.kind == ValueKind::colour;
             const bool is_int = std::is_same_v<T, int>,
-                       is_double = std::is_same_v<T, double> ||
-                                   std::is_same_v<T, std::optional<double>>,
+                       is_double =
+                           std::is_same_v<T, double> || std::is_same_v<T, std::optional<double>>,
                        is_vec = std::is_same_v<T, Vec3> || std::is_same_v<T, std::optional<Vec3>>,
                        is_string = std::is_same_v<T, std::string>;
             EXPECT_EQ(is_int, p.kind == ValueKind::whole) << p.name;
@@ -582,8 +582,7 @@ void check_validated_ranges(const Case<Block>& c) {
             using V = decltype(value);
             if constexpr (std::is_same_v<M, V> ||
                           (std::is_same_v<M, std::optional<Vec3>> && std::is_same_v<V, Vec3>) ||
-                          (std::is_same_v<M, std::optional<double>> &&
-                           std::is_arithmetic_v<V>) ||
+                          (std::is_same_v<M, std::optional<double>> && std::is_arithmetic_v<V>) ||
                           (std::is_arithmetic_v<M> && std::is_arithmetic_v<V>))
                 member = static_cast<M>(value);
         });

@@ -74,7 +74,7 @@ TEST(Structure, WrongKindNamesTheExpectedKind) {
     EXPECT_EQ(brief("render_settings { width: \"wide\"; }"),
               "1:26: error: 'width' takes a whole number like 640, got the string \"wide\"");
     EXPECT_EQ(brief("render_settings { filename: out; }"),
-              "1:29: error: 'filename' takes a string like \"name\", got the word 'out'");
+              "1:29: error: unknown name 'out' (names must be defined before they are used)");
     EXPECT_EQ(brief("render_settings { background: 1; }"),
               "1:31: error: 'background' takes a colour like <1, 0.5, 0>, got the number 1");
 }

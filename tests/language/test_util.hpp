@@ -16,7 +16,10 @@ inline std::string brief(const std::vector<Diagnostic>& diagnostics) {
     for (const Diagnostic& d : diagnostics) {
         if (!out.empty()) out += '\n';
         out += std::to_string(d.pos.line) + ':' + std::to_string(d.pos.column) +
-               (d.severity == Severity::error ? ": error: " : ": warning: ") + d.message;
+               (d.severity == Severity::error     ? ": error: "
+                : d.severity == Severity::warning ? ": warning: "
+                                                  : ": note: ") +
+               d.message;
     }
     return out;
 }

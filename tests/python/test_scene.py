@@ -109,3 +109,45 @@ def test_version_is_the_programs(cli):
     assert printed.split()[1] == jtracer.__version__
     assert printed.strip() == "jtracer-cli " + jtracer.version_string
     assert re.fullmatch(r"\d+\.\d+\.\d+", jtracer.__version__)
+
+
+DEFINED = """define r = 1;
+define out = "a.bmp";
+render_settings { width: 16; height: 16; filename: out; ambient_light: <1, 1, 1>; }
+cameras { perspective_camera { position: <0, 0, 5>; look_at: <0, 0, 0>; fov: 30 + clock; } }
+scene { sphere { radius: r; material { pigment: <1, 1, 1>; ambient: <1, 1, 1>; } } }
+"""
+
+
+def test_defines_set_names_as_the_command_line_does(tmp_path, cli):
+    plain = jtracer.parse(DEFINED)
+    assert plain.settings.filename == "a.bmp"
+    scene = jtracer.parse(DEFINED, defines={"r": 0.5, "out": '"b.bmp"', "fov_unused": 2})
+    assert scene.settings.filename == "b.bmp"
+    notes = [d for d in scene.warnings if d.severity == "note"]
+    assert [(d.line, d.column) for d in notes] == [(1, 8), (2, 8)]
+    assert "'r' is set by --define" in notes[0].message
+    assert any("the scene defines no 'fov_unused'" in d.message for d in scene.warnings)
+    # The same image as jtracer-cli --define gives.
+    path = tmp_path / "defined.jts"
+    path.write_text(DEFINED)
+    loaded = jtracer.load(path, defines={"r": "2 * 0.25"})
+    run(cli, str(path), "--define", "r=0.5", "-o", str(tmp_path / "cli.bmp"), "-q")
+    assert (loaded.render() == jtracer.read_image(tmp_path / "cli.bmp")).all()
+    assert not (loaded.render() == plain.render()).all()
+
+
+def test_bad_defines_raise_value_or_type_errors():
+    with pytest.raises(ValueError, match="clock cannot be set with --define"):
+        jtracer.parse(DEFINED, defines={"clock": 1})
+    with pytest.raises(ValueError, match="division by zero"):
+        jtracer.parse(DEFINED, defines={"r": "1 / 0"})
+    with pytest.raises(ValueError, match="three numbers"):
+        jtracer.parse(DEFINED, defines={"c": (1, 2)})
+    with pytest.raises(TypeError):
+        jtracer.parse(DEFINED, defines={"r": True})
+    with pytest.raises(TypeError):
+        jtracer.parse(DEFINED, defines={1: 2})
+    vector = jtracer.parse(DEFINED.replace("define r = 1;", "define r = 1;\ndefine c = <0, 0, 0>;"),
+                           defines={"c": (0, 1, 0)})
+    assert vector.cameras[0].fov == 30

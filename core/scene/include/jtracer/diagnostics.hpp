@@ -15,7 +15,9 @@ struct SourcePos {
     bool operator==(const SourcePos&) const = default;
 };
 
-enum class Severity { warning, error };
+// A note neither stops a render nor counts as a warning: it says what was
+// done on request (a definition overridden by --define).
+enum class Severity { warning, error, note };
 
 struct Diagnostic {
     Severity severity = Severity::error;

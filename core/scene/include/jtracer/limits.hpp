@@ -39,4 +39,9 @@ inline constexpr int kMaxRecurseDepth = 256;
 // a whole keeps its image; only the numbers written are held to this bound.
 inline constexpr double kMaxMagnitude = 1e9;
 
+// Parentheses, calls and vector literals inside one another in one value
+// (docs/language.md §15.3). The expression parser recurses once per level, so
+// this bounds its stack whatever the input.
+inline constexpr int kMaxExpressionNesting = 256;
+
 }  // namespace jt

@@ -3,20 +3,41 @@
 // crashes, whatever the bytes (docs/language.md §2-§4).
 
 #include "jtracer/diagnostics.hpp"
+#include "jtracer/error.hpp"
 #include "jtracer/scene.hpp"
 #include "jtracer/source_map.hpp"
 
+#include <string>
 #include <string_view>
 #include <vector>
 
 namespace jt {
+
+// One `--define NAME=VALUE` of a front end (docs/language.md §15.2): VALUE is
+// written as in a file (`2`, `<1, 0, 0>`, `"out.png"`, `2 * pi`).
+struct Define {
+    std::string name;
+    std::string value;
+    bool operator==(const Define&) const = default;
+};
 
 struct ParseOptions {
     // False: leave ParseResult::source empty. A tool that only renders needs
     // the source map only to locate validation findings, and for a million
     // spheres the map costs more than the scene (see check_scene).
     bool source_map = true;
+    // Names set before the main file is read, in command-line order (a later
+    // one of the same name wins, with a warning). The file's own definition
+    // of such a name is then ignored, with a note.
+    std::vector<Define> defines = {};
+    // The value of `clock` (docs/language.md §15.4).
+    double clock = 0.0;
 };
+
+// Splits and checks one `--define` argument "NAME=VALUE": NAME a name that is
+// not reserved (nor `clock`), VALUE a string literal or an expression of
+// numbers, `pi` and `clock`. The error says what is wrong, without the option.
+Expected<Define> parse_define(std::string_view argument);
 
 struct ParseResult {
     Scene scene;

@@ -20,6 +20,7 @@
 #include <cstdint>
 #include <optional>
 #include <span>
+#include <string>
 #include <string_view>
 #include <vector>
 
@@ -33,18 +34,36 @@ struct TextSpan {
     bool operator==(const TextSpan&) const = default;
 };
 
-struct PropertySource {
-    std::string_view name;  // the property's name as read, in static storage (never the text's)
-    TextSpan name_span;
-    TextSpan value_span;  // the value's own text, e.g. "<1, 0.5, 0>" or "2.0"
-    bool operator==(const PropertySource&) const = default;
-};
-
 // `count` consecutive records from `first`, in one of SceneSource's arrays.
 struct IndexRange {
     std::uint32_t first = 0;
     std::uint32_t count = 0;
     bool operator==(const IndexRange&) const = default;
+};
+
+// How a value is written (docs/language.md §15): a literal (`2`, `-1.5`,
+// `<1, -2, 3>`, `"out.bmp"`) may be rewritten in place; a name (`r`) or an
+// expression (`r * 2`, `<0, clock, 0>`) may not, since the value comes from
+// elsewhere or is computed.
+enum class ValueOrigin : std::uint8_t { literal, name, expression };
+
+struct PropertySource {
+    std::string_view name;  // the property's name as read, in static storage (never the text's)
+    TextSpan name_span;
+    TextSpan value_span;  // the value's own text, e.g. "<1, 0.5, 0>" or "2.0"
+    ValueOrigin origin = ValueOrigin::literal;
+    bool operator==(const PropertySource&) const = default;
+};
+
+// A `define NAME = VALUE;` or a named material `material NAME { ... }` at the
+// top level, in file order. A named material's properties are its block's.
+struct DefinitionSource {
+    std::string name;
+    TextSpan name_span;
+    TextSpan value_span;  // a define's value; empty for a material
+    ValueOrigin origin = ValueOrigin::literal;
+    std::optional<IndexRange> material_properties;  // into SceneSource::properties
+    bool operator==(const DefinitionSource&) const = default;
 };
 
 struct BlockSource {
@@ -54,6 +73,9 @@ struct BlockSource {
     std::uint32_t close_brace = 0;  // offset of '}'
     IndexRange properties;          // into SceneSource::properties, in file order, repeats included
     IndexRange children;            // into SceneSource::children: material and transform blocks
+    // A primitive's `material: NAME;`: the named material's index in
+    // SceneSource::definitions, whose properties the primitive inherits.
+    std::optional<std::uint32_t> named_material;
     bool operator==(const BlockSource&) const = default;
 };
 
@@ -65,6 +87,7 @@ struct SceneSource {
     std::vector<BlockSource> lights;             // parallel to Scene::lights
     std::vector<BlockSource> children;           // every primitive's nested blocks
     std::vector<PropertySource> properties;      // every block's properties
+    std::vector<DefinitionSource> definitions;   // top-level defines and named materials
     bool operator==(const SceneSource&) const = default;
 };
 

@@ -112,9 +112,28 @@ class SourceWriter {
         return true;
     }
 
-    // A vector keeps the text of the components that did not change.
+    // A vector keeps the text of the components that did not change. A value
+    // written as a name or an expression is never replaced by a literal
+    // (docs/language.md §15.3): such an edit fails, and the text stays as it was.
     void replace(const PropertySource& property, const Change& change) {
         const TextSpan& span = property.value_span;
+        if (property.origin != ValueOrigin::literal) {
+            constexpr std::size_t shown = 60;
+            std::string written(
+                text_.substr(span.offset, std::min<std::size_t>(span.length, shown)));
+            if (span.length > shown) written += "...";
+            // Appended, not concatenated: GCC 12 warns (-Wrestrict) about "'" + s.
+            std::string message(1, '\'');
+            message.append(property.name)
+                .append("' at line ")
+                .append(std::to_string(property.name_span.pos.line))
+                .append(" is written as ")
+                .append(property.origin == ValueOrigin::name ? "the name " : "the expression ")
+                .append(written)
+                .append("; edit it in the text, not as a value");
+            fail(std::move(message));
+            return;
+        }
         const std::string value =
             change.vector
                 ? edited_vector_text(text_.substr(span.offset, span.length), *change.vector)

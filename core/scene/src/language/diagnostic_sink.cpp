@@ -25,4 +25,9 @@ void DiagnosticSink::warning(SourcePos pos, std::string message) {
     diagnostics_.push_back({Severity::warning, pos, std::move(message)});
 }
 
+void DiagnosticSink::note(SourcePos pos, std::string message) {
+    if (stopped_) return;
+    diagnostics_.push_back({Severity::note, pos, std::move(message)});
+}
+
 }  // namespace jt::lang

@@ -16,10 +16,13 @@ class DiagnosticSink {
 
     void error(SourcePos pos, std::string message);
     void warning(SourcePos pos, std::string message);
+    // Notes count toward no limit.
+    void note(SourcePos pos, std::string message);
     // False once further warnings would be dropped: skip composing them.
     bool accepts_warnings() const { return !stopped_ && warnings_ <= max_warnings; }
     // True once the error cap was reached: parsing should stop.
     bool stopped() const { return stopped_; }
+    int error_count() const { return errors_; }
     std::vector<Diagnostic> take() { return std::move(diagnostics_); }
 
   private:

@@ -34,7 +34,9 @@ std::string format_diagnostic(const Diagnostic& d, std::string_view filename,
     if (d.pos.line > 0) {
         out += ':' + std::to_string(d.pos.line) + ':' + std::to_string(d.pos.column);
     }
-    out += d.severity == Severity::error ? ": error: " : ": warning: ";
+    out += d.severity == Severity::error     ? ": error: "
+           : d.severity == Severity::warning ? ": warning: "
+                                             : ": note: ";
     out += d.message;
     out += '\n';
     if (d.pos.line <= 0) return out;

@@ -23,8 +23,9 @@ constexpr auto char_classes = [] {
     for (int c = 'A'; c <= 'Z'; ++c) table[c] = word_start;
     table['_'] = word_start;
     // Characters that continue something that started like a number, so that
-    // ".3.2", "1..2" and "--1" are each one malformed number.
-    for (int c : {'.', '+', '-'}) table[c] = number_part;
+    // ".3.2" and "1..2" are each one malformed number. A sign is an operator
+    // (docs/language.md §15.1) except right after an exponent's 'e'.
+    table['.'] = number_part;
     table['e'] |= number_part;
     table['E'] |= number_part;
     return table;
@@ -114,13 +115,34 @@ void Lexer::next(Token& out) {
             case ',':
                 single(TokenKind::comma);
                 return;
+            case '=':
+                single(TokenKind::equals);
+                return;
+            case '(':
+                single(TokenKind::lparen);
+                return;
+            case ')':
+                single(TokenKind::rparen);
+                return;
+            case '+':
+                single(TokenKind::plus);
+                return;
+            case '-':
+                single(TokenKind::minus);
+                return;
+            case '*':
+                single(TokenKind::star);
+                return;
+            case '/':
+                single(TokenKind::slash);
+                return;
             case '"':
                 lex_string(start, out);
                 return;
             default:
                 break;
         }
-        if (is_digit(c) || c == '.' || c == '+' || c == '-') {
+        if (is_digit(c) || c == '.') {
             lex_number(start, out);
             return;
         }
@@ -149,7 +171,7 @@ namespace {
 enum class NumberScan { malformed, exact, needs_library };
 
 // One pass over a number-like run: checks the grammar
-//   sign? (digits ('.' digits?)? | '.' digits) (('e'|'E') sign? digits)?
+//   (digits ('.' digits?)? | '.' digits) (('e'|'E') sign? digits)?
 // and computes the value on Clinger's fast path: at most 15 significant digits
 // and a power of ten up to 22 make m / 10^k or m * 10^k one correctly rounded
 // operation, the same double std::from_chars gives. Other numbers need the library.
@@ -159,8 +181,6 @@ NumberScan scan_number(std::string_view s, double& out) {
                                         1e16, 1e17, 1e18, 1e19, 1e20, 1e21, 1e22};
     const std::size_t n = s.size();
     std::size_t i = 0;
-    bool negative = false;
-    if (s[0] == '+' || s[0] == '-') negative = s[i++] == '-';
     std::uint64_t mantissa = 0;
     int significant = 0, scale = 0;
     std::size_t digits = 0;
@@ -196,7 +216,7 @@ NumberScan scan_number(std::string_view s, double& out) {
     if (significant > 15 || scale < -22 || scale > 22) return NumberScan::needs_library;
     double value = static_cast<double>(mantissa);
     value = scale < 0 ? value / powers[-scale] : value * powers[scale];
-    out = negative ? -value : value;
+    out = value;
     return NumberScan::exact;
 }
 
@@ -204,7 +224,13 @@ NumberScan scan_number(std::string_view s, double& out) {
 
 void Lexer::lex_number(std::size_t start, Token& token) {
     const std::size_t n = text_.size();
-    while (at_ < n && is_number_char(text_[at_])) ++at_;
+    while (at_ < n) {
+        const char c = text_[at_];
+        const bool exponent_sign = (c == '+' || c == '-') && at_ > start &&
+                                   (text_[at_ - 1] == 'e' || text_[at_ - 1] == 'E');
+        if (!is_number_char(c) && !exponent_sign) break;
+        ++at_;
+    }
     std::string_view run = text_.substr(start, at_ - start);
     set(token, TokenKind::number, run, start, run.size(), pos_of(start));
     switch (scan_number(run, token.number)) {
@@ -217,9 +243,8 @@ void Lexer::lex_number(std::size_t start, Token& token) {
         case NumberScan::needs_library:
             break;
     }
-    std::string_view digits = run[0] == '+' ? run.substr(1) : run;
-    auto [end, ec] = std::from_chars(digits.data(), digits.data() + digits.size(), token.number);
-    if (ec != std::errc() || end != digits.data() + digits.size() || !std::isfinite(token.number)) {
+    auto [end, ec] = std::from_chars(run.data(), run.data() + run.size(), token.number);
+    if (ec != std::errc() || end != run.data() + run.size() || !std::isfinite(token.number)) {
         sink_.error(token.pos, "the number " + std::string(run.substr(0, 40)) +
                                    " is out of range (numbers must be finite doubles)");
         token.kind = TokenKind::bad_value;

@@ -11,7 +11,7 @@ namespace jt::lang {
 
 enum class TokenKind {
     word,       // [a-z_A-Z][a-zA-Z0-9_]*: keywords and names (case is checked by the parser)
-    number,     // a finite number; its value is in Token::number
+    number,     // a finite unsigned number; its value is in Token::number
     string,     // "..."; Token::text excludes the quotes
     bad_value,  // a malformed number or string, already reported
     lbrace,
@@ -21,6 +21,14 @@ enum class TokenKind {
     less,
     greater,
     comma,
+    // Language 1.3 (docs/language.md §15): definitions and arithmetic.
+    equals,
+    lparen,
+    rparen,
+    plus,
+    minus,
+    star,
+    slash,
     end,
 };
 

@@ -9,7 +9,10 @@
 
 #include "io/reserve_records.hpp"
 #include "jtracer/schema.hpp"
+#include "language/define_value.hpp"
+#include "language/expression.hpp"
 #include "language/lexer.hpp"
+#include "language/names.hpp"
 #include "language/properties.hpp"
 #include "language/quote.hpp"
 #include "language/suggest.hpp"
@@ -97,17 +100,43 @@ std::size_t property_count_hint(std::string_view text) {
     return std::min(colons, text.size() / 4);
 }
 
-class Parser {
+// Copies into `to` each material property whose bit is clear in `kept`.
+void inherit_material(const Material& from, Material& to, std::uint32_t kept) {
+    const auto properties = schema_of<Material>().properties;
+    for (std::size_t i = 0; i < properties.size(); ++i) {
+        if (kept & (1u << i)) continue;
+        std::visit([&](auto member) { to.*member = from.*member; }, properties[i].member);
+    }
+}
+
+// The bits of the material properties named in `records`.
+std::uint32_t material_mask(std::span<const PropertySource> records) {
+    const auto properties = schema_of<Material>().properties;
+    std::uint32_t mask = 0;
+    for (const PropertySource& p : records)
+        for (std::size_t i = 0; i < properties.size() && i < 32; ++i)
+            if (properties[i].name == p.name) mask |= 1u << i;
+    return mask;
+}
+
+std::string where(SourcePos pos) {
+    return std::to_string(pos.line) + ":" + std::to_string(pos.column);
+}
+
+class Parser final : private TokenCursor {
   public:
-    Parser(std::string_view text, ParseOptions options)
-        : lexer_(text, sink_),
+    Parser(std::string_view text, const ParseOptions& options)
+        : text_(text),
+          lexer_(text, sink_),
           reader_(sink_),
+          expressions_(*this, sink_, names_, options.clock),
           primitive_hint_(primitive_count_hint(text)),
           source_map_(options.source_map) {
         if (source_map_) {
             reserve_records(result_.source.properties, property_count_hint(text));
             reserve_records(result_.source.children, primitive_hint_);
         }
+        set_command_line_names(options);
         lexer_.next(*cur_);
         lexer_.next(*next_);
     }
@@ -117,6 +146,9 @@ class Parser {
 
     ParseResult run() {
         parse_file();
+        for (const auto& [name, symbol] : command_line_)
+            if (!symbol->defined_in_file && sink_.accepts_warnings())
+                sink_.warning({}, "--define " + name + ": the scene defines no " + quote(name));
         result_.diagnostics = sink_.take();
         if (!source_map_) result_.source = {};
         return std::move(result_);
@@ -124,10 +156,12 @@ class Parser {
 
   private:
     // The two tokens swap places: the lexer writes the new one in place (lexer.hpp).
-    void advance() {
+    void advance() override {
         std::swap(cur_, next_);
         lexer_.next(*next_);
     }
+    const Token& cur() const override { return *cur_; }
+    const Token& peek() const override { return *next_; }
     bool at(TokenKind kind) const { return cur_->kind == kind; }
 
     // --- recovery -------------------------------------------------------
@@ -182,80 +216,61 @@ class Parser {
 
     // --- values and properties ------------------------------------------
 
-    Value read_vector() {
-        Value v;
-        v.form = Value::Form::vector;
-        const std::size_t open = cur_->offset;
-        const SourcePos open_pos = cur_->pos;
-        advance();
-        bool bad = false;
-        for (int k = 0; k < 3; ++k) {
-            if (k > 0) {
-                if (!at(TokenKind::comma)) {
-                    sink_.error(cur_->pos,
-                                "a vector takes three numbers separated by commas, like "
-                                "<0, 1, 0>; expected ',' but got " +
-                                    describe(*cur_));
-                    skip_vector();
-                    v.form = Value::Form::bad;
-                    return v;
-                }
-                advance();
-            }
-            if (at(TokenKind::number)) {
-                v.vector[k] = cur_->number;
-            } else if (at(TokenKind::bad_value)) {
-                bad = true;
-            } else {
-                sink_.error(cur_->pos, "expected a number in the vector, got " + describe(*cur_));
-                skip_vector();
-                v.form = Value::Form::bad;
-                return v;
-            }
-            advance();
+    // Whether the token can start a value: anything else is "expected a value".
+    static bool starts_value(TokenKind kind) {
+        switch (kind) {
+            case TokenKind::number:
+            case TokenKind::string:
+            case TokenKind::word:
+            case TokenKind::less:
+            case TokenKind::lparen:
+            case TokenKind::plus:
+            case TokenKind::minus:
+            case TokenKind::bad_value:
+                return true;
+            default:
+                return false;
         }
-        if (!at(TokenKind::greater)) {
-            sink_.error(cur_->pos,
-                        "a vector takes exactly three numbers, like <0, 1, 0>; expected '>' but "
-                        "got " +
-                            describe(*cur_));
-            skip_vector();
+    }
+
+    // A value: a literal, a name or an expression, evaluated (§15.3). A lone
+    // number before ';' takes a short path: most values of most scenes are one.
+    Value read_value(bool evaluate = true) {
+        Value v;
+        if (!starts_value(cur_->kind)) return v;  // none; nothing consumed
+        if (cur_->kind == TokenKind::number && next_->kind == TokenKind::semicolon) {
+            v.form = Value::Form::number;
+            v.number = cur_->number;
+            v.text = cur_->text;
+            v.span = span_of(*cur_);
+            v.end = {cur_->pos.line, cur_->pos.column + static_cast<int>(cur_->length)};
+            advance();
+            return v;
+        }
+        const ParsedValue parsed = expressions_.read(evaluate);
+        v.span = parsed.span;
+        v.end = parsed.end;
+        v.origin = parsed.origin;
+        if (!parsed.ok) {
             v.form = Value::Form::bad;
             return v;
         }
-        v.span = {static_cast<std::uint32_t>(open),
-                  static_cast<std::uint32_t>(cur_->offset + 1 - open), open_pos};
-        v.end = {cur_->pos.line, cur_->pos.column + 1};
-        advance();
-        if (bad) v.form = Value::Form::bad;
-        return v;
-    }
-
-    Value read_value() {
-        Value v;
-        switch (cur_->kind) {
-            case TokenKind::less:
-                return read_vector();
-            case TokenKind::number:
+        switch (parsed.value.kind) {
+            case ExprValue::Kind::number:
                 v.form = Value::Form::number;
+                v.number = parsed.value.number;
+                if (parsed.origin == ValueOrigin::literal)
+                    v.text = text_.substr(v.span.offset, v.span.length);
                 break;
-            case TokenKind::string:
+            case ExprValue::Kind::vector:
+                v.form = Value::Form::vector;
+                v.vector = parsed.value.vector;
+                break;
+            case ExprValue::Kind::string:
                 v.form = Value::Form::string;
+                v.text = parsed.value.text;
                 break;
-            case TokenKind::word:
-                v.form = Value::Form::word;
-                break;
-            case TokenKind::bad_value:
-                v.form = Value::Form::bad;
-                break;
-            default:
-                return v;  // none; nothing consumed
         }
-        v.number = cur_->number;
-        v.text = cur_->text;
-        v.span = span_of(*cur_);
-        v.end = {cur_->pos.line, cur_->pos.column + static_cast<int>(cur_->length)};
-        advance();
         return v;
     }
 
@@ -347,6 +362,7 @@ class Parser {
                                     "the file");
                     return;
                 case TokenKind::word:
+                    if (top_level_only()) break;
                     if (next_->kind == TokenKind::lbrace || contains(child_names, cur_->text)) {
                         on_child();
                     } else {
@@ -371,6 +387,26 @@ class Parser {
                     break;
             }
         }
+    }
+
+    // At `define` or `include` inside a block: an error at the keyword (a
+    // property of that name, with ':', is left to the block).
+    bool top_level_only() {
+        const bool define = cur_->text == kDefineKeyword;
+        if ((!define && cur_->text != kIncludeKeyword) || next_->kind == TokenKind::colon)
+            return false;
+        if (define) {
+            sink_.error(cur_->pos, "'define' may stand only at the top level, outside every block");
+            skip_statement();
+        } else {
+            include_not_supported();
+        }
+        return true;
+    }
+
+    void include_not_supported() {
+        sink_.error(cur_->pos, "'include' is not supported yet by this version of JTracer");
+        skip_statement();
     }
 
     void unknown_block(std::string_view where, std::span<const std::string_view> allowed) {
@@ -429,6 +465,13 @@ class Parser {
                 parse_cameras();
             } else if (at(TokenKind::word) && cur_->text == kSceneKeyword) {
                 parse_scene();
+            } else if (at(TokenKind::word) && cur_->text == kDefineKeyword) {
+                parse_define();
+            } else if (at(TokenKind::word) && cur_->text == kIncludeKeyword) {
+                include_not_supported();
+            } else if (at(TokenKind::word) && cur_->text == schema_of<Material>().keyword &&
+                       next_->kind != TokenKind::lbrace) {
+                parse_named_material();
             } else if (at(TokenKind::word)) {
                 unknown_block("at the top level", top_blocks());
             } else if (at(TokenKind::lbrace)) {
@@ -527,14 +570,43 @@ class Parser {
         BlockSource& block = open.source;
         std::vector<BlockSource>& children = result_.source.children;
         const std::size_t first_child = children.size();
+        std::uint32_t own_material = 0;  // the properties its own material blocks set
+        const Symbol* named = nullptr;
+        SourcePos named_at;
         parse_body(
             block, primitive_blocks(),
             [&](const Property& p) { reader_.apply(primitive.shape, open, p); },
             [&] {
                 BlockSource child;
                 bool opened;
+                if (cur_->text == schema_of<Material>().keyword &&
+                    next_->kind == TokenKind::colon) {
+                    const SourcePos at = cur_->pos;
+                    if (const Symbol* found = read_material_reference()) {
+                        if (named) {
+                            sink_.error(at,
+                                        "a primitive names at most one material; this one "
+                                        "already names one at " +
+                                            where(named_at));
+                            return;
+                        }
+                        named = found;
+                        named_at = at;
+                        inherit_material(found->material, primitive.material, own_material);
+                        block.named_material = found->definition;
+                    }
+                    return;
+                }
+                if (cur_->text == schema_of<Material>().keyword && next_->kind == TokenKind::word) {
+                    sink_.error(cur_->pos,
+                                "a named material is defined at the top level; inside a "
+                                "primitive, write 'material: NAME;' to use one");
+                    skip_block();
+                    return;
+                }
                 if (cur_->text == schema_of<Material>().keyword) {
                     opened = parse_property_block(child, 1, primitive.material);
+                    own_material |= material_mask(property_buffers_[1]);
                 } else if (cur_->text == kTransformKeyword) {
                     opened = parse_property_block(child, 1, primitive.transforms);
                 } else {
@@ -547,9 +619,238 @@ class Parser {
                           static_cast<std::uint32_t>(children.size() - first_child)};
     }
 
+    // At `material` ':' in a primitive: reads `material: NAME;` whole and
+    // returns the named material, or nullptr (reported).
+    const Symbol* read_material_reference() {
+        advance();
+        advance();
+        const Token name = *cur_;
+        const std::string expected =
+            "'material:' takes the name of a material defined at the top level with "
+            "'material NAME { ... }'";
+        if (name.kind != TokenKind::word) {
+            if (name.kind != TokenKind::bad_value)
+                sink_.error(name.pos, expected + ", got " + describe(name));
+            skip_statement();
+            return nullptr;
+        }
+        const Symbol* symbol = names_.find(name.text);
+        advance();
+        if (!symbol) {
+            std::string message = "unknown name " + quote(name.text.substr(0, 40)) +
+                                  " (names must be defined before they are used)";
+            const std::vector<std::string_view> known = names_.names();
+            if (std::string_view near = nearest_name(name.text, known); !near.empty())
+                message += "; did you mean " + quote(near) + "?";
+            sink_.error(name.pos, std::move(message));
+            skip_statement();
+            return nullptr;
+        }
+        if (symbol->kind != Symbol::Kind::material) {
+            if (!symbol->bad)
+                sink_.error(name.pos, quote(name.text) + " is " + kind_words(*symbol) +
+                                          ", not a material: " + expected);
+            skip_statement();
+            return nullptr;
+        }
+        if (!at(TokenKind::semicolon)) {
+            sink_.error(cur_->pos, "expected ';' after 'material: " + std::string(name.text) +
+                                       "', got " + describe(*cur_));
+            skip_statement();
+            return symbol->bad ? nullptr : symbol;
+        }
+        advance();
+        return symbol->bad ? nullptr : symbol;
+    }
+
+    static std::string kind_words(const Symbol& symbol) {
+        switch (symbol.value.kind) {
+            case ExprValue::Kind::number:
+                return "a number";
+            case ExprValue::Kind::vector:
+                return "a vector";
+            default:
+                return "a string";
+        }
+    }
+
+    // --- names (docs/language.md §15.2) --------------------------------
+
+    // The --define values, evaluated before the file: a bad one (the front
+    // ends check them first) is an error without a location.
+    void set_command_line_names(const ParseOptions& options) {
+        for (const Define& define : options.defines) {
+            ExprValue value;
+            std::string error;
+            if (!evaluate_define_value(define.value, options.clock, value, error)) {
+                sink_.error({}, "--define " + define.name + "=" + define.value + ": " + error);
+                continue;
+            }
+            Symbol* symbol = names_.find(define.name);
+            if (symbol) {
+                if (sink_.accepts_warnings())
+                    sink_.warning({}, "--define " + define.name +
+                                          " is given more than once; the last value is used");
+            } else {
+                symbol = &names_.add(define.name);
+                command_line_.emplace_back(define.name, symbol);
+            }
+            symbol->from_command_line = true;
+            symbol->value = value;
+            if (value.kind == ExprValue::Kind::string)
+                NameTable::set_string(*symbol, std::string(value.text));
+        }
+    }
+
+    // At a name being defined: false (reported) when it is reserved or taken.
+    // `overridden` is set for a name a --define holds.
+    bool claim_name(const Token& name, bool& overridden) {
+        overridden = false;
+        if (is_reserved_name(name.text)) {
+            sink_.error(name.pos, quote(name.text) +
+                                      " is reserved (a keyword, a function, pi or clock) and "
+                                      "cannot be defined");
+            return false;
+        }
+        Symbol* existing = names_.find(name.text);
+        if (!existing) return true;
+        if (existing->from_command_line && !existing->defined_in_file) {
+            existing->defined_in_file = true;
+            existing->defined_at = name.pos;
+            overridden = true;
+            return true;
+        }
+        sink_.error(name.pos, quote(name.text) + " is defined twice: it was first defined at " +
+                                  where(existing->defined_at));
+        return false;
+    }
+
+    // At `define`: define NAME '=' (STRING | expr) ';'
+    void parse_define() {
+        advance();
+        if (!at(TokenKind::word)) {
+            if (!at(TokenKind::bad_value))
+                sink_.error(cur_->pos, "expected a name after 'define', got " + describe(*cur_));
+            skip_statement();
+            return;
+        }
+        const Token name = *cur_;
+        bool overridden = false;
+        const bool claimed = claim_name(name, overridden);
+        advance();
+        if (!at(TokenKind::equals)) {
+            sink_.error(cur_->pos, "expected '=' after 'define " + std::string(name.text) +
+                                       "', got " + describe(*cur_));
+            skip_statement();
+            return;
+        }
+        advance();
+        Value value = read_value(!overridden);
+        if (value.form == Value::Form::none) {
+            sink_.error(cur_->pos, "expected a value after 'define " + std::string(name.text) +
+                                       " =', got " + describe(*cur_));
+            skip_statement();
+            return;
+        }
+        const bool good = value.form != Value::Form::bad;
+        if (claimed && !overridden) {
+            Symbol& symbol = names_.add(name.text);
+            symbol.defined_at = name.pos;
+            symbol.definition = static_cast<std::uint32_t>(result_.source.definitions.size());
+            symbol.bad = !good;
+            if (value.form == Value::Form::number) {
+                symbol.value.kind = ExprValue::Kind::number;
+                symbol.value.number = value.number;
+            } else if (value.form == Value::Form::vector) {
+                symbol.value.kind = ExprValue::Kind::vector;
+                symbol.value.vector = value.vector;
+            } else if (value.form == Value::Form::string) {
+                NameTable::set_string(symbol, std::string(value.text));
+            }
+        }
+        if (overridden) {
+            sink_.note(name.pos,
+                       quote(name.text) + " is set by --define; this definition is ignored");
+        }
+        if (source_map_ && claimed) {
+            result_.source.definitions.push_back(
+                {std::string(name.text), span_of(name), value.span, value.origin, std::nullopt});
+        }
+        if (!good) {
+            skip_statement();
+            return;
+        }
+        if (at(TokenKind::semicolon)) {
+            advance();
+            return;
+        }
+        sink_.error(value.end,
+                    "expected ';' after the value of 'define " + std::string(name.text) + "'");
+        if (!at(TokenKind::word) && !at(TokenKind::rbrace)) skip_statement();
+    }
+
+    // At `material` NAME: a named material, `material NAME { property* }`.
+    void parse_named_material() {
+        BlockSource block;
+        block.keyword = schema_of<Material>().keyword;
+        block.keyword_span = span_of(*cur_);
+        advance();
+        if (!at(TokenKind::word)) {
+            sink_.error(cur_->pos,
+                        "expected a name or '{' after 'material', got " + describe(*cur_));
+            skip_statement();
+            return;
+        }
+        const Token name = *cur_;
+        bool overridden = false;
+        bool claimed = claim_name(name, overridden);
+        if (overridden) {
+            // A --define holds a value of that name: a material cannot replace it.
+            sink_.error(name.pos,
+                        quote(name.text) + " is set by --define; a material cannot have its name");
+            claimed = false;
+        }
+        advance();
+        if (!at(TokenKind::lbrace)) {
+            sink_.error(cur_->pos, "expected '{' after 'material " + std::string(name.text) +
+                                       "', got " + describe(*cur_));
+            skip_statement();
+            return;
+        }
+        block.open_brace = static_cast<std::uint32_t>(cur_->offset);
+        advance();
+        Material material;
+        const std::size_t errors_before = error_count();
+        read_properties(block, 0, [&](OpenBlock& open) {
+            parse_body(
+                block, kNoBlocks, [&](const Property& p) { reader_.apply(material, open, p); },
+                [&] { block_in_property_block(block); });
+        });
+        if (!claimed) return;
+        Symbol& symbol = names_.add(name.text);
+        symbol.kind = Symbol::Kind::material;
+        symbol.material = material;
+        symbol.defined_at = name.pos;
+        symbol.bad = error_count() != errors_before;
+        symbol.definition = static_cast<std::uint32_t>(result_.source.definitions.size());
+        if (source_map_) {
+            result_.source.definitions.push_back({std::string(name.text),
+                                                  span_of(name),
+                                                  {},
+                                                  ValueOrigin::literal,
+                                                  block.properties});
+        }
+    }
+
+    std::size_t error_count() const { return static_cast<std::size_t>(sink_.error_count()); }
+
+    std::string_view text_;
     DiagnosticSink sink_;
     Lexer lexer_;
     PropertyReader reader_;
+    NameTable names_;
+    std::vector<std::pair<std::string, Symbol*>> command_line_;  // each --define name once
+    ExpressionReader expressions_;
     std::array<Token, 2> tokens_;
     Token* cur_ = &tokens_[0];   // the token at hand
     Token* next_ = &tokens_[1];  // one token of lookahead

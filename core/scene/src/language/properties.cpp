@@ -13,23 +13,20 @@ namespace jt::lang {
 
 namespace {
 
-bool is_non_finite_word(std::string_view w) {
-    std::string lower;
-    for (char c : w) lower += static_cast<char>(c >= 'A' && c <= 'Z' ? c - 'A' + 'a' : c);
-    return lower == "nan" || lower == "inf" || lower == "infinity";
+// A literal number as spelled, a computed one as value_text writes it.
+std::string written_number(const Value& v) {
+    return v.text.empty() ? value_text(v.number) : std::string(v.text.substr(0, 40));
 }
 
 std::string got(const Value& v) {
     switch (v.form) {
         case Value::Form::number:
-            return "the number " + std::string(v.text.substr(0, 40));
+            return "the number " + written_number(v);
         case Value::Form::vector:
             return "the vector " + vector_text(v.vector);
         case Value::Form::string:
             return "the string \"" + std::string(v.text.substr(0, 40)) +
                    (v.text.size() > 40 ? "...\"" : "\"");
-        case Value::Form::word:
-            return "the word '" + std::string(v.text.substr(0, 40)) + "'";
         default:
             return "nothing";
     }
@@ -37,8 +34,9 @@ std::string got(const Value& v) {
 
 // The value as the file wrote it, for messages.
 std::string written(const Value& v) {
-    return v.form == Value::Form::vector ? vector_text(v.vector)
-                                         : std::string(v.text.substr(0, 40));
+    if (v.form == Value::Form::vector) return vector_text(v.vector);
+    if (v.form == Value::Form::number) return written_number(v);
+    return std::string(v.text.substr(0, 40));
 }
 
 // The value as it would be written again: strings in quotes.
@@ -51,9 +49,6 @@ std::string as_written(const Value& v) {
 void PropertyReader::kind_error(const Property& p, ValueKind expected) {
     std::string message = quote(p.name) + " takes " + std::string(kind_description(expected)) +
                           ", got " + got(p.value);
-    if (p.value.form == Value::Form::word && is_non_finite_word(p.value.text)) {
-        message += ": numbers must be finite";
-    }
     sink_.error(p.value.span.pos, std::move(message));
 }
 
@@ -161,7 +156,7 @@ void PropertyReader::record(OpenBlock& block, const Property& p, std::string_vie
                                                std::to_string(first_line) + ")");
         }
     }
-    block.properties.push_back({as_name, p.name_span, p.value.span});
+    block.properties.push_back({as_name, p.name_span, p.value.span, p.value.origin});
 }
 
 void PropertyReader::apply(RenderSettings& settings, OpenBlock& block, const Property& p) {

@@ -16,14 +16,17 @@
 
 namespace jt::lang {
 
+// A value read and evaluated (docs/language.md §15.3): a literal, a name or
+// an expression, already checked for everything but the property's kind.
 struct Value {
-    enum class Form { none, bad, number, vector, string, word };
+    enum class Form { none, bad, number, vector, string };
     Form form = Form::none;
     double number = 0.0;
     Vec3 vector{0.0};
-    std::string_view text;  // a string's contents, a word or a number's spelling
+    std::string_view text;  // a string's contents, or a literal number's spelling ("-1.50")
     TextSpan span;          // the whole value as written
     SourcePos end;          // just past the value
+    ValueOrigin origin = ValueOrigin::literal;
 };
 
 struct Property {

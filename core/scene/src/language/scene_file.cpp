@@ -98,7 +98,9 @@ std::vector<Diagnostic> check_scene(const LoadedScene& loaded) {
         if (!found.empty() && !loaded.options.source_map) {
             // Same text, same scene lists: the map lines up with the scene
             // (overrides applied to it change values, not the lists).
-            found = validate_scene(loaded.parsed.scene, parse_scene(loaded.text).source);
+            ParseOptions with_map = loaded.options;
+            with_map.source_map = true;
+            found = validate_scene(loaded.parsed.scene, parse_scene(loaded.text, with_map).source);
         }
         for (Diagnostic& d : found) all.push_back(std::move(d));
     }

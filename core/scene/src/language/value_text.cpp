@@ -63,28 +63,47 @@ std::string string_text(std::string_view text) {
 }
 
 std::string edited_vector_text(std::string_view written, const Vec3& value) {
-    // The written vector's tokens: '<' number ',' number ',' number '>', with
-    // anything the lexer skips (spaces, comments) between them.
+    // The written vector's tokens: '<' component ',' component ',' component
+    // '>', a component a number with at most one sign before it, and anything
+    // the lexer skips (spaces, comments) between them. Anything else (an
+    // expression) is written anew.
     lang::DiagnosticSink sink;
     lang::Lexer lexer(written, sink);
-    std::array<lang::Token, 7> tokens;
-    for (lang::Token& token : tokens) lexer.next(token);
-    lang::Token after;
-    lexer.next(after);
-    constexpr std::array<lang::TokenKind, 7> shape{lang::TokenKind::less,   lang::TokenKind::number,
-                                                   lang::TokenKind::comma,  lang::TokenKind::number,
-                                                   lang::TokenKind::comma,  lang::TokenKind::number,
-                                                   lang::TokenKind::greater};
-    bool plain = after.kind == lang::TokenKind::end && tokens[0].offset == 0;
-    for (std::size_t i = 0; i < shape.size(); ++i) plain = plain && tokens[i].kind == shape[i];
-    if (!plain) return vector_text(value);
+    lang::Token token;
+    lexer.next(token);
+    if (token.kind != lang::TokenKind::less || token.offset != 0) return vector_text(value);
+    struct Component {
+        std::size_t offset, end;
+        double number;
+    };
+    std::array<Component, 3> parts{};
+    for (std::size_t k = 0; k < 3; ++k) {
+        lexer.next(token);
+        if (k > 0) {
+            if (token.kind != lang::TokenKind::comma) return vector_text(value);
+            lexer.next(token);
+        }
+        const std::size_t start = token.offset;
+        double sign = 1.0;
+        if (token.kind == lang::TokenKind::minus || token.kind == lang::TokenKind::plus) {
+            sign = token.kind == lang::TokenKind::minus ? -1.0 : 1.0;
+            lexer.next(token);
+        }
+        if (token.kind != lang::TokenKind::number) return vector_text(value);
+        parts[k] = {start, token.offset + token.length, sign * token.number};
+    }
+    lexer.next(token);
+    if (token.kind != lang::TokenKind::greater) return vector_text(value);
+    lexer.next(token);
+    if (token.kind != lang::TokenKind::end) return vector_text(value);
     std::string out;
     std::size_t copied = 0;  // bytes of `written` already in `out`
-    for (int k = 0; k < 3; ++k) {
-        const lang::Token& number = tokens[1 + 2 * static_cast<std::size_t>(k)];
-        if (number.number == value[k]) continue;
-        out.append(written.substr(copied, number.offset - copied)).append(number_text(value[k]));
-        copied = number.offset + number.length;
+    for (std::size_t k = 0; k < 3; ++k) {
+        const Component& c = parts[k];
+        if (c.number == value[static_cast<int>(k)]) continue;
+        out.append(written.substr(copied, c.offset - copied))
+            .append(number_text(value[static_cast<int>(k)]));
+        copied = c.end;
     }
     return out.append(written.substr(copied));
 }

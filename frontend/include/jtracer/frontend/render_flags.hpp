@@ -6,6 +6,7 @@
 #include "jtracer/diagnostics.hpp"
 #include "jtracer/frontend/command_line.hpp"
 #include "jtracer/frontend/progress.hpp"
+#include "jtracer/parser.hpp"
 
 #include <optional>
 #include <string>
@@ -27,11 +28,23 @@ struct RenderFlags {
     int threads = 0;  // 0: every core
     bool quiet = false;
     ProgressMode progress = ProgressMode::automatic;
+    // --define NAME=VALUE, each checked by parse_define, in command-line
+    // order; --clock V (docs/language.md §15.2, §15.4).
+    std::vector<std::string> defines;
+    std::optional<double> clock;
 };
 
+// The options the scene is parsed with: --define and --clock.
+ParseOptions parse_options_for(const RenderFlags& flags);
+
 // Declares the scene argument and -o, --camera, --width, --height, --samples,
-// --threads, --progress and -q.
+// --threads, --progress, -q, --define and --clock.
 void add_render_flags(CLI::App& app, RenderFlags& flags);
+
+// --define (repeatable) and --clock alone, for a front end with its own
+// other flags (jtracer-view).
+void add_scene_value_flags(CLI::App& app, std::vector<std::string>& defines,
+                           std::optional<double>& clock);
 
 // Adds to each diagnostic that asks for a render setting the flag that sets
 // it: "... set 'width' in render_settings or pass --width".
