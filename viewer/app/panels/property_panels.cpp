@@ -20,7 +20,14 @@ void settings_panel(AppState& state) {
     if (!panel_header("Render settings", "Render settings", true)) return;
     ImGui::BeginDisabled(!state.doc.loaded);
     RenderSettings& s = state.doc.scene.settings;
-    if (edit_properties(s)) note_scene_changed(state.doc);
+    bool changed = edit_properties(s);
+    changed = edit_file_name("background_map", s.background_map,
+                             "A PNG, JPEG or BMP file, relative to the scene's folder, seen "
+                             "wherever a ray meets nothing (equirectangular: its centre straight "
+                             "down -z); empty: the background colour. Enter applies it; the "
+                             "render follows the file when it changes on disk.") ||
+              changed;
+    if (changed) note_scene_changed(state.doc);
     ImGui::EndDisabled();
 }
 

@@ -32,7 +32,7 @@ std::string render_status(const AppState& state) {
     char speed[48];
     std::snprintf(speed, sizeof speed, "%.1f Mrays/s", mrays);
     if (state.render.paused) {
-        std::string text = "paused at " + pass_label(p, samples);
+        std::string text = "paused at " + pass_label(p, samples, state.render.converging);
         text +=
             state.render.edit_waiting ? " | edit waiting: Space renders it" : " | Space resumes";
         return text;
@@ -41,7 +41,8 @@ std::string render_status(const AppState& state) {
         return "done: " + std::to_string(p.samples_done) +
                (p.samples_done == 1 ? " sample" : " samples") + " in " + seconds_text(p.seconds) +
                " | " + speed;
-    std::string text = pass_label(p, samples) + " | " + seconds_text(p.seconds) + " elapsed";
+    std::string text = pass_label(p, samples, state.render.converging) + " | " +
+                       seconds_text(p.seconds) + " elapsed";
     // The ETA once enough is done to extrapolate from.
     if (p.fraction > 0.02 && p.fraction < 1.0)
         text += ", about " + seconds_text(p.seconds * (1.0 - p.fraction) / p.fraction) + " left";
