@@ -43,9 +43,9 @@ cameras {
     }
 }
 scene {
-    plane { material { pigment: <0.7, 0.7, 0.7>; } }
-    sphere { center: <0, 1, 0>; radius: 1; material { pigment: <0.9, 0.2, 0.1>; } }
-    sphere { center: <1.8, 0.5, -2.5>; radius: 0.5; material { pigment: <0.2, 0.4, 0.9>; } }
+    plane { material { pigment: <0.7, 0.7, 0.7>; diffuse: <0.8, 0.8, 0.8>; } }
+    sphere { center: <0, 1, 0>; radius: 1; material { pigment: <0.9, 0.2, 0.1>; diffuse: <0.8, 0.8, 0.8>; } }
+    sphere { center: <1.8, 0.5, -2.5>; radius: 0.5; material { pigment: <0.2, 0.4, 0.9>; diffuse: <0.8, 0.8, 0.8>; } }
     point_light { position: <2, 5, 3>; intensity: <1, 1, 1>; radius: 0.6; shadow_samples: 12; }
 }
 )";
