@@ -111,6 +111,14 @@ TEST(SourceEdit, AnUnsetOptionalValueLosesItsStatements) {
     EXPECT_EQ(save(text, edited), kScene);
 }
 
+TEST(SourceEdit, AnEmptiedBackgroundMapLosesItsStatement) {
+    const std::string text = replace_once(kScene, "    height:48;\n",
+                                          "    height:48;\n    background_map: \"sky.png\";\n");
+    Scene edited = parse_ok(text).scene;
+    edited.settings.background_map.clear();
+    EXPECT_EQ(save(text, edited), kScene);
+}
+
 TEST(SourceEdit, InsertsIntoAOneLineBlockInline) {
     Scene edited = parse_ok(kScene).scene;
     edited.cameras[0].fov = 60;

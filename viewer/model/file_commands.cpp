@@ -163,12 +163,6 @@ bool assets_changed(AppState& state) {
     const NamedFiles files = named_files(state.doc.scene);
     std::vector<std::filesystem::path> watched = files.models;
     watched.insert(watched.end(), files.images.begin(), files.images.end());
-    // The sky map is an image the render reads like an image map.
-    if (const std::string& sky = state.doc.scene.settings.background_map; !sky.empty()) {
-        const std::filesystem::path path = asset_path(state.doc.scene, sky);
-        if (std::find(watched.begin(), watched.end(), path) == watched.end())
-            watched.push_back(path);
-    }
     state.files.asset_watcher.watch(watched);
     const std::vector<std::filesystem::path> changed = state.files.asset_watcher.poll();
     if (changed.empty()) return false;

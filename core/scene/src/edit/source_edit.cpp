@@ -64,6 +64,11 @@ std::vector<Change> changes(std::span<const PropertySpec<Block>> properties, con
                 change.unset = !value;
             }
             if constexpr (std::is_same_v<T, std::optional<double>>) change.unset = !value;
+            // An extension's string emptied (a background_map cleared in a
+            // panel) is not written, as the serializer leaves it out: `""`
+            // would be an error there.
+            if constexpr (std::is_same_v<T, std::string>)
+                change.unset = value.empty() && !is_written(property, b);
         });
         check_writable(property, b, fail);
         found.push_back(std::move(change));
