@@ -134,7 +134,9 @@ TEST_F(ViewerModelFiles, ABrokenModelIsLocatedAndKeepsTheLastImage) {
 
     save_as_editor(dir.path() / "model.obj", square_obj(1.0));  // fixed
     run_after_change();
-    EXPECT_TRUE(state.doc.diagnostics.empty()) << state.doc.diagnostics.front().message;
+    // Fixed, only the warning that the smooth mesh has no normals stays.
+    for (const Diagnostic& d : state.doc.diagnostics)
+        EXPECT_NE(d.severity, Severity::error) << d.message;
     EXPECT_EQ(state.render.display, first);
 }
 
