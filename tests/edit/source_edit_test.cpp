@@ -97,6 +97,28 @@ TEST(SourceEdit, InsertsAMissingPropertyOnItsOwnLineWithTheBlocksIndent) {
     EXPECT_EQ(save(kScene, edited), expected);
 }
 
+// An optional value cleared in a panel (a camera's focus_distance, a
+// material's checker) loses its statements; every other byte stays.
+TEST(SourceEdit, AnUnsetOptionalValueLosesItsStatements) {
+    const std::string text = replace_once(
+        replace_once(kScene, "        look_at: <0,0,0>;\n",
+                     "        look_at: <0,0,0>;\n        focus_distance: 3;  # near\n"),
+        "material { pigment: <1, 0, 0>; }", "material { pigment: <1, 0, 0>; checker: <0, 0, 1>; }");
+    Scene edited = parse_ok(text).scene;
+    ASSERT_TRUE(edited.cameras[1].focus_distance);
+    edited.cameras[1].focus_distance.reset();
+    edited.primitives[0].material.checker.reset();
+    EXPECT_EQ(save(text, edited), kScene);
+}
+
+TEST(SourceEdit, AnEmptiedBackgroundMapLosesItsStatement) {
+    const std::string text = replace_once(kScene, "    height:48;\n",
+                                          "    height:48;\n    background_map: \"sky.png\";\n");
+    Scene edited = parse_ok(text).scene;
+    edited.settings.background_map.clear();
+    EXPECT_EQ(save(text, edited), kScene);
+}
+
 TEST(SourceEdit, InsertsIntoAOneLineBlockInline) {
     Scene edited = parse_ok(kScene).scene;
     edited.cameras[0].fov = 60;

@@ -204,8 +204,8 @@ TEST_F(ViewerPicking, TheObjectsListDrawsOnlyTheRowsInViewOfAHundredThousand) {
             s.primitives.push_back(Primitive{Sphere{Vec3(i * 0.01, -5, -20), 0.001}, {}, {}});
     });
     // Render settings and Camera closed first, so that the list is inside the window.
+    ASSERT_TRUE(viewer.click(state, "Camera"));  // first: its fields may hide the next header
     ASSERT_TRUE(viewer.click(state, "Render settings"));
-    ASSERT_TRUE(viewer.click(state, "Camera"));
     ASSERT_TRUE(viewer.click(state, "Objects"));
     viewer.frame(state);
     const auto rows = [&] {
@@ -231,8 +231,8 @@ TEST_F(ViewerPicking, TheObjectsListDrawsOnlyTheRowsInViewOfAHundredThousand) {
 // what the user clicks next stays where it was.
 TEST_F(ViewerPicking, AddObjectKeepsThePanelWhereItWas) {
     // Render settings and Camera closed: the Objects panel in the middle of the sidebar.
+    ASSERT_TRUE(viewer.click(state, "Camera"));  // first: its fields may hide the next header
     ASSERT_TRUE(viewer.click(state, "Render settings"));
-    ASSERT_TRUE(viewer.click(state, "Camera"));
     if (!find_item(viewer.ui_items(), "Add object")) {
         ASSERT_TRUE(viewer.click(state, "Objects"));
     }
@@ -250,8 +250,8 @@ TEST_F(ViewerPicking, AddObjectKeepsThePanelWhereItWas) {
 }
 
 TEST_F(ViewerPicking, AddPointLightOpensTheNewLightInItsPanel) {
+    ASSERT_TRUE(viewer.click(state, "Camera"));  // first: its fields may hide the next header
     ASSERT_TRUE(viewer.click(state, "Render settings"));
-    ASSERT_TRUE(viewer.click(state, "Camera"));
     ASSERT_TRUE(viewer.click(state, "Lights"));
     viewer.frame(state);
     EXPECT_EQ(find_item(viewer.ui_items(), "intensity"), nullptr) << "no light is open yet";

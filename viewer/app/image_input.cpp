@@ -89,6 +89,16 @@ void click_image(AppState& state, const ImagePlace& image, float x, float y) {
     select_at(state, at->x, at->y, marker_radius(image));
 }
 
+// A Ctrl+click on the image focuses the shown camera on what it shows.
+void focus_click(AppState& state, const ImagePlace& image, float x, float y) {
+    if (!image.shows(x, y)) return;
+    const std::optional<ImagePoint> at =
+        window_to_image(image.where, image.width, image.height, x, y);
+    if (!at) return;
+    focus_camera_at(state, static_cast<int>(std::floor(at->x)),
+                    static_cast<int>(std::floor(at->y)));
+}
+
 // Where window point (x, y) is on the image's plane, also past its edges.
 ImagePoint image_point(const ImagePlace& image, float x, float y) {
     return window_to_image_plane(image.where, image.width, image.height, x, y);
@@ -106,7 +116,11 @@ ImageDrag::Mode drag_mode(int button) {
 void end_drag(AppState& state, const ImagePlace& image) {
     const ImageDrag& drag = state.drags.image;
     if (drag.mode == ImageDrag::Mode::region) {
-        if (!drag.moved) return;  // a Ctrl+click sets no region
+        if (!drag.moved) {  // a Ctrl+click sets no region: it focuses
+            if (drag.button == ImGuiMouseButton_Left)
+                focus_click(state, image, drag.press_x, drag.press_y);
+            return;
+        }
         if (const auto region = dragged_region(drag, image, drag.last_x, drag.last_y))
             set_render_region(state, *region);
     } else if (drag.mode == ImageDrag::Mode::move_object && drag.moved) {
@@ -186,10 +200,10 @@ void handle_shortcuts(AppState& state, FrameState& frame, const ImagePlace& imag
     handle_space(state);
 }
 
-// Mouse on the image: a click selects, a drag moves the free camera (started
-// from the scene camera) or pans the image view, an Alt+drag moves the
-// selection, the wheel dollies the camera and Ctrl+wheel zooms the image
-// about the mouse.
+// Mouse on the image: a click selects, a Ctrl+click focuses the camera, a
+// drag moves the free camera (started from the scene camera) or pans the
+// image view, an Alt+drag moves the selection, the wheel dollies the camera and Ctrl+wheel zooms
+// the image about the mouse.
 void handle_image_mouse(AppState& state, const ImagePlace& image) {
     const ImGuiIO& io = ImGui::GetIO();
     ImageDrag& drag = state.drags.image;

@@ -225,6 +225,7 @@ struct FileState {
 struct RenderState {
     RenderController renderer;
     std::optional<RenderRequest> started;   // the request the current render answers
+    std::string converging;                 // what its passes refine (converging_effects)
     std::string render_note;                // why nothing renders, when so
     std::optional<RenderRequest> rejected;  // an edited scene that failed validation
     std::string rejected_reason;

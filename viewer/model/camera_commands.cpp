@@ -1,9 +1,15 @@
 #include "model/camera_commands.hpp"
 
 #include "model/app_actions.hpp"
+#include "model/picking.hpp"
+
+#include "jtracer/pick.hpp"
+#include "jtracer/schema.hpp"
 
 #include "jtracer/validate.hpp"
 #include "jtracer/value_text.hpp"
+
+#include <glm/geometric.hpp>
 
 #include <algorithm>
 
@@ -94,6 +100,50 @@ bool copy_free_camera_to_scene(AppState& state, const std::string& name) {
     state.view.camera_index = static_cast<int>(state.doc.scene.cameras.size()) - 1;
     state.view.free_camera_active = false;
     state.message = "Added camera \"" + name + "\" (Save scene to keep it)";
+    return true;
+}
+
+bool focus_camera_at(AppState& state, int x, int y) {
+    if (state.view.free_camera_active) {
+        state.message =
+            "The free camera has no lens: choose a scene camera (View) to focus it with Ctrl+click";
+        return false;
+    }
+    const int index = selected_camera(state.view, state.doc.scene);
+    const std::shared_ptr<const PreparedFrame> frame = shown_frame(state);
+    if (index < 0 || !frame) {
+        state.message = "No rendered image to focus on yet";
+        return false;
+    }
+    const std::optional<PickedPrimitive> hit = pick_primitive(*frame, x, y);
+    const std::optional<CameraRay> ray = camera_ray(*frame, {x + 0.5, y + 0.5});
+    if (!hit || !ray) {
+        state.message = "Nothing there to focus on: Ctrl+click a surface (the background has none)";
+        return false;
+    }
+    Camera& camera = state.doc.scene.cameras[static_cast<std::size_t>(index)];
+    // Section 5's f, and the hit as the tracer places it: origin + t * d.
+    const Vec3 f = glm::normalize(camera.look_at - camera.position);
+    const Vec3 point = ray->origin + ray->direction * hit->distance;
+    const double depth = glm::dot(point - camera.position, f);
+    if (!(depth > 0.0) || !std::isfinite(depth)) {
+        state.message = "That surface is not in front of the camera: nothing to focus on";
+        return false;
+    }
+    const std::string label = camera_label(camera, index);
+    if (camera.focus_distance == depth) {
+        state.message = label + " is focused there already (focus_distance " +
+                        number_text(ui_rounded(depth)) + ")";
+        return false;
+    }
+    edit_scene(state, [&](Scene& scene) {
+        scene.cameras[static_cast<std::size_t>(index)].focus_distance = depth;
+    });
+    const Primitive& p = state.doc.scene.primitives[static_cast<std::size_t>(hit->primitive)];
+    state.message = label + ": focus_distance " + number_text(ui_rounded(depth)) + " (on " +
+                    std::string(keyword_of(p.shape)) + " " + std::to_string(hit->primitive + 1) +
+                    ")";
+    if (camera.aperture == 0.0) state.message += "; aperture is 0, so all stays sharp";
     return true;
 }
 

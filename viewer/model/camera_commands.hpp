@@ -26,4 +26,12 @@ void reset_free_camera(ViewState& view, const Scene& scene);
 // selects it; refused when a camera already has that name.
 bool copy_free_camera_to_scene(AppState& state, const std::string& name);
 
+// Ctrl+click on the image (docs/language.md §14.6): the scene camera the view
+// shows gets focus_distance = dot(hit - position, f), hit being where the
+// pixel-centre pinhole ray through pixel (x, y) of the shown image (Image8's:
+// y from the bottom) first meets a surface and f the camera's view direction.
+// One undo step. Over the background, with the free camera, or while the
+// image shows no frame, nothing changes and the message says why.
+bool focus_camera_at(AppState& state, int x, int y);
+
 }  // namespace jt::view

@@ -125,6 +125,7 @@ void update_render(AppState& state) {
             } else {
                 state.render.rejected.reset();
                 state.render.renderer.start(scene, request->options);
+                state.render.converging = converging_effects(scene, *request);
                 state.render.started = std::move(request);
                 state.render.display_complete = false;
                 wait_for_first_pass(state);
@@ -145,12 +146,36 @@ std::optional<PixelRect> take_display_changes(RenderState& render) {
     return std::exchange(render.display_changed, std::nullopt);
 }
 
-std::string pass_label(const RenderProgress& p, int target_samples) {
-    if (p.pass_name.rfind("preview", 0) == 0) return p.pass_name;
+std::string converging_effects(const Scene& scene, const RenderRequest& request) {
+    const bool soft = std::any_of(scene.lights.begin(), scene.lights.end(),
+                                  [](const PointLight& light) { return light.radius > 0.0; });
+    // The free camera is a pinhole; one sample a pixel is the lens's centre alone.
+    const auto camera = static_cast<std::size_t>(request.options.camera);
+    const bool lens = !request.free_camera && request.options.samples > 1 &&
+                      camera < scene.cameras.size() && scene.cameras[camera].aperture > 0.0;
+    if (soft && lens) return "soft shadows and lens";
+    if (soft) return "soft shadows";
+    return lens ? "lens" : "";
+}
+
+std::string pass_label(const RenderProgress& p, int target_samples, const std::string& converging) {
+    if (p.pass_name.rfind("preview", 0) == 0) {
+        // The previews trace hard shadows through the lens's centre.
+        if (converging.empty()) return p.pass_name;
+        const bool soft = converging.find("soft shadows") != std::string::npos;
+        const bool lens = converging.find("lens") != std::string::npos;
+        return p.pass_name + (soft && lens ? " (hard shadows, sharp)"
+                              : soft       ? " (hard shadows)"
+                                           : " (sharp)");
+    }
     // The core names its full-resolution passes by the samples they reach.
-    const int reached = std::atoi(p.pass_name.c_str());
-    if (target_samples <= 1 || reached <= 1) return "full resolution";
-    return "sample " + std::to_string(reached) + " of " + std::to_string(target_samples);
+    const int reached = std::max(std::atoi(p.pass_name.c_str()), 1);
+    if (target_samples <= 1)
+        return converging.empty() ? "full resolution" : "full resolution with " + converging;
+    if (converging.empty() && reached <= 1) return "full resolution";
+    const std::string sample =
+        "sample " + std::to_string(reached) + " of " + std::to_string(target_samples);
+    return converging.empty() ? sample : converging + ": " + sample;
 }
 
 std::string render_title_status(const RenderState& render) {
@@ -164,7 +189,7 @@ std::string render_title_status(const RenderState& render) {
         return text;
     }
     std::snprintf(text, sizeof text, "%s %d%%",
-                  pass_label(p, render.started->options.samples).c_str(),
+                  pass_label(p, render.started->options.samples, render.converging).c_str(),
                   static_cast<int>(p.fraction * 100.0));
     return text;
 }

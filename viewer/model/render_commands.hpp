@@ -26,8 +26,17 @@ std::optional<RenderRequest> render_request(const AppState& state, std::string& 
 // when it renders.
 Scene scene_to_render(const SceneDocument& doc, const RenderRequest& request);
 
-// A pass as a user reads it: "preview 1/8", "full resolution", "sample 4 of 16".
-std::string pass_label(const RenderProgress& progress, int target_samples);
+// What the passes after the first full-resolution one refine, besides the
+// edges: "soft shadows" (a light with a radius), "lens" (the camera rendered
+// has an aperture and more than one sample), both joined by "and", or empty.
+std::string converging_effects(const Scene& scene, const RenderRequest& request);
+
+// A pass as a user reads it: "preview 1/8", "full resolution", "sample 4 of 16";
+// with `converging` ("soft shadows and lens") the full-resolution passes say
+// what they refine, "soft shadows and lens: sample 4 of 16", and the previews
+// what they leave out: "preview 1/8 (hard shadows, sharp)".
+std::string pass_label(const RenderProgress& progress, int target_samples,
+                       const std::string& converging = {});
 
 // The render's state for the window title: "preview 1/8 34%", "paused",
 // "paused, edit waiting", "done, 16 samples, 2.1 s"; empty before any render.

@@ -248,6 +248,44 @@ TEST(PassLabel, NamesThePassAsAUserReadsIt) {
     EXPECT_EQ(label("4 samples", 16), "sample 4 of 16");
 }
 
+// Issue 29 item 7: the status line says what the passes refine.
+TEST(PassLabel, SaysWhatIsConverging) {
+    const auto label = [](const char* name, int samples, const char* converging) {
+        RenderProgress p;
+        p.pass_name = name;
+        return pass_label(p, samples, converging);
+    };
+    EXPECT_EQ(label("preview 1/8", 64, "soft shadows and lens"),
+              "preview 1/8 (hard shadows, sharp)");
+    EXPECT_EQ(label("preview 1/4", 64, "soft shadows"), "preview 1/4 (hard shadows)");
+    EXPECT_EQ(label("preview 1/2", 64, "lens"), "preview 1/2 (sharp)");
+    EXPECT_EQ(label("1 sample", 64, "soft shadows and lens"),
+              "soft shadows and lens: sample 1 of 64");
+    EXPECT_EQ(label("8 samples", 64, "lens"), "lens: sample 8 of 64");
+    EXPECT_EQ(label("1 sample", 1, "soft shadows"), "full resolution with soft shadows");
+    EXPECT_EQ(label("8 samples", 64, ""), "sample 8 of 64");
+}
+
+TEST(PassLabel, TheSoftShadowsAndTheLensAreFoundInTheSceneRendered) {
+    Scene scene;
+    scene.cameras.resize(2);
+    scene.lights.resize(2);
+    RenderRequest request;
+    request.options.samples = 16;
+    request.options.camera = 1;
+    EXPECT_EQ(converging_effects(scene, request), "");
+    scene.lights[1].radius = 0.5;
+    EXPECT_EQ(converging_effects(scene, request), "soft shadows");
+    scene.cameras[0].aperture = 0.1;
+    EXPECT_EQ(converging_effects(scene, request), "soft shadows") << "another camera's lens";
+    scene.cameras[1].aperture = 0.1;
+    EXPECT_EQ(converging_effects(scene, request), "soft shadows and lens");
+    scene.lights[1].radius = 0.0;
+    EXPECT_EQ(converging_effects(scene, request), "lens");
+    request.options.samples = 1;
+    EXPECT_EQ(converging_effects(scene, request), "") << "one sample: the lens's centre alone";
+}
+
 TEST(ViewerSettings, WrittenWholeAndReadBack) {
     const fs::path store = make_scratch_dir("settings") / "sub" / "viewer-settings.txt";
     EXPECT_EQ(read_viewer_settings(store), ViewerSettings{}) << "missing: the defaults";

@@ -21,6 +21,10 @@ void help_panel() {
         {"Ctrl+wheel", "zoom the image about the mouse"},
         {"Middle drag, Space+drag", "pan the image (the camera stays)"},
         {"Ctrl+drag", "render only that rectangle (Render region)"},
+        {"Ctrl+click image",
+         "focus the camera on the surface under the cursor: its focus_distance becomes that "
+         "surface's depth along the view direction (blur needs an aperture and samples above "
+         "1); one undo step"},
         {"Alt+drag",
          "move the selected object or light in the plane facing the camera (with nothing "
          "selected, the one under the cursor); one undo step"},
@@ -36,7 +40,8 @@ void help_panel() {
         {"Left drag", "orbit (free camera)"},
         {"Right drag", "pan (free camera)"},
         {"Wheel", "dolly (free camera)"},
-        {"Ctrl+click", "type a number field's value (Enter takes it; dragging it changes it)"},
+        {"Ctrl+click field",
+         "type a number field's value (Enter takes it; dragging it changes it)"},
         {"Drop a .jts", "open it"},
         {"Panel edge", "drag to resize the panel"},
     };

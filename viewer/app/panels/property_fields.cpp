@@ -1,5 +1,7 @@
 #include "app/panels/property_fields.hpp"
 
+#include "jtracer/value_text.hpp"
+
 #include <algorithm>
 #include <cmath>
 
@@ -19,6 +21,23 @@ float field_speed(const ValueRange& range, std::string_view unit, double size) {
         return static_cast<float>((range.high - range.low) / 200.0);
     if (unit == "degrees") return 0.5f;
     return static_cast<float>(std::max(0.01, 0.01 * std::abs(size)));
+}
+
+UnsetNumber unset_number(std::string_view property, const Camera& camera) {
+    if (property != "focus_distance") return {0.0, "not set"};
+    // As the render takes it: the length that normalises look_at - position.
+    const Vec3 d = camera.look_at - camera.position;
+    const double distance = std::sqrt(d.x * d.x + d.y * d.y + d.z * d.z);
+    if (!(distance > 0.0) || !std::isfinite(distance))
+        return {1.0, "not set (look_at is the position)"};
+    return {distance, number_text(ui_rounded(distance)) + " = |look_at - position|"};
+}
+
+UnsetNumber unset_number(std::string_view property, const Mesh&) {
+    // 60 degrees rounds a curved model and keeps a box's 90-degree edges.
+    if (property == "smooth_angle")
+        return {60.0, "off (corners without a normal in the file are flat)"};
+    return {0.0, "not set"};
 }
 
 }  // namespace jt::view

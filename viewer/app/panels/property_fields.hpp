@@ -2,15 +2,18 @@
 // Edit fields for a block's properties, read from the schema (jtracer/schema.hpp):
 // one field per number, vector and colour property, labelled with its name in
 // the file and held to the language's range, in the schema's order (an
-// optional colour with a checkbox that sets or clears it). A property added
-// to the schema gets its field here without a line of panel code. Strings
-// (names, the filename, image maps) have no field here: the panels give the
-// ones they edit their own.
+// optional colour or number with a checkbox that sets or clears it, a string
+// of a few allowed words as a combo). A property added to the schema gets its
+// field here without a line of panel code. Other strings (names, the
+// filename, image maps) have no field here: the panels give the ones they
+// edit their own.
 
 #include "app/panels/widgets.hpp"
 #include "jtracer/schema.hpp"
 
 #include <optional>
+#include <string>
+#include <string_view>
 #include <type_traits>
 
 namespace jt::view {
@@ -26,6 +29,21 @@ FieldBounds field_bounds(const ValueRange& range);
 // Drag speed per pixel: a 200th of a bounded range, half a degree for angles,
 // else 1% of the value's size (at least 0.01).
 float field_speed(const ValueRange& range, std::string_view unit, double size);
+
+// What an unset optional number stands for: the value a tick writes (the one
+// it takes unset, when it has one) and the words the greyed field shows.
+struct UnsetNumber {
+    double when_set = 0.0;
+    std::string note;
+};
+// A camera's focus_distance is |look_at - position| (docs/language.md §14.2);
+// a mesh's smooth_angle is off (§14.4).
+UnsetNumber unset_number(std::string_view property, const Camera& camera);
+UnsetNumber unset_number(std::string_view property, const Mesh& mesh);
+template <class Block>
+UnsetNumber unset_number(std::string_view, const Block&) {
+    return {0.0, "not set"};
+}
 
 // The field for one property of `block`; true when the user changed it.
 template <class Block>
@@ -44,6 +62,15 @@ bool edit_property(const PropertySpec<Block>& property, Block& block) {
         } else if constexpr (std::is_same_v<T, double>) {
             return edit_number(label, value, field_speed(property.range, property.unit, value),
                                bounds.min, bounds.max, why);
+        } else if constexpr (std::is_same_v<T, std::optional<double>>) {
+            const UnsetNumber unset = unset_number(property.name, block);
+            return edit_optional_number(
+                label, value, unset.when_set, unset.note,
+                field_speed(property.range, property.unit, value ? *value : unset.when_set),
+                bounds.min, bounds.max, why);
+        } else if constexpr (std::is_same_v<T, std::string>) {
+            if (property.range.choices.empty()) return false;
+            return edit_choice(label, value, property.range.choices);
         } else if constexpr (std::is_same_v<T, std::optional<Vec3>>) {
             return edit_optional_colour(label, value, Colour(0.1));
         } else if constexpr (std::is_same_v<T, Vec3>) {

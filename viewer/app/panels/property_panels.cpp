@@ -24,7 +24,14 @@ void settings_panel(AppState& state) {
     RenderSettings& s = state.doc.scene.settings;
     const EditedBlock block{EditedBlock::Kind::settings, 0};
     settle_block(state.history, state.doc, block);
-    if (edit_properties(s)) note_block_edited(state.history, state.doc, block);
+    bool changed = edit_properties(s);
+    changed = edit_file_name("background_map", s.background_map,
+                             "A PNG, JPEG or BMP file, relative to the scene's folder, seen "
+                             "wherever a ray meets nothing (equirectangular: its centre straight "
+                             "down -z); empty: the background colour. Enter applies it; the "
+                             "render follows the file when it changes on disk.") ||
+              changed;
+    if (changed) note_block_edited(state.history, state.doc, block);
     ImGui::EndDisabled();
 }
 

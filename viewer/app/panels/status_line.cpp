@@ -43,7 +43,7 @@ void render_status(const AppState& state, std::string& text) {
     std::snprintf(speed, sizeof speed, "%.1f Mrays/s", mrays);
     if (state.render.paused) {
         text += "paused at ";
-        text += pass_label(p, samples);
+        text += pass_label(p, samples, state.render.converging);
         text +=
             state.render.edit_waiting ? " | edit waiting: Space renders it" : " | Space resumes";
         return;
@@ -58,7 +58,7 @@ void render_status(const AppState& state, std::string& text) {
         text += speed;
         return;
     }
-    text += pass_label(p, samples);
+    text += pass_label(p, samples, state.render.converging);
     text += " | ";
     text += seconds_text(p.seconds);
     text += " elapsed";

@@ -218,4 +218,49 @@ void same_line_if_fits(const char* label) {
     if (ImGui::GetItemRectMax().x + style.ItemSpacing.x + width <= right) ImGui::SameLine();
 }
 
+bool edit_optional_number(const char* label, std::optional<double>& value, double when_set,
+                          const std::string& unset_note, float speed, double min, double max,
+                          const std::function<std::string()>& why) {
+    bool on = value.has_value();
+    ImGui::PushID(label);
+    const bool toggled = ImGui::Checkbox("##set", &on);
+    note_item(label, true);
+    tooltip(on ? "Set: clear the box to go back to the value it takes when not written"
+               : "Not set: tick the box to write the value shown, then edit it");
+    ImGui::SameLine();
+    bool changed = false;
+    if (toggled) {
+        value = on ? std::optional<double>(when_set) : std::nullopt;
+        changed = true;
+    }
+    if (value) {
+        double number = *value;
+        if (edit_number(label, number, speed, min, max, why)) {
+            value = number;
+            changed = true;
+        }
+    } else {
+        ImGui::TextDisabled("%s: %s", label, unset_note.c_str());
+        note_item((std::string(label) + ": " + unset_note).c_str(), false);
+    }
+    ImGui::PopID();
+    return changed;
+}
+
+bool edit_choice(const char* label, std::string& value, std::span<const std::string_view> choices) {
+    std::string chosen = value;
+    if (ImGui::BeginCombo(label, value.c_str())) {
+        for (std::string_view choice : choices) {
+            const std::string word(choice);
+            if (ImGui::Selectable(word.c_str(), word == value)) chosen = word;
+            note_item(word.c_str(), false);
+        }
+        ImGui::EndCombo();
+    }
+    note_item(label, true);
+    if (chosen == value) return false;
+    value = chosen;
+    return true;
+}
+
 }  // namespace jt::view

@@ -9,7 +9,9 @@
 
 #include <functional>
 #include <optional>
+#include <span>
 #include <string>
+#include <string_view>
 
 namespace jt::view {
 
@@ -27,6 +29,15 @@ bool edit_int(const char* label, int& value, int min, int max,
 // A colour that may be unset (a material's checker): a checkbox sets it (to
 // `when_set`) or clears it, and its colour is edited while set.
 bool edit_optional_colour(const char* label, std::optional<Colour>& value, const Colour& when_set);
+// A number that may be unset (a camera's focus_distance, a mesh's
+// smooth_angle): a checkbox sets it (to `when_set`) or clears it. While unset
+// the field shows, greyed, what the property stands for then (`unset_note`,
+// "7.07 = |look_at - position|"); while set it is edit_number's field.
+bool edit_optional_number(const char* label, std::optional<double>& value, double when_set,
+                          const std::string& unset_note, float speed, double min = 0.0,
+                          double max = 0.0, const std::function<std::string()>& why = {});
+// One of a string property's few allowed words (a mesh's shading), as a combo.
+bool edit_choice(const char* label, std::string& value, std::span<const std::string_view> choices);
 // A file name (a material's image_map), applied when Enter is pressed; a
 // name a .jts string cannot hold is refused and the field shows why.
 bool edit_file_name(const char* label, std::string& value, const char* tooltip_text);

@@ -24,6 +24,7 @@ struct Change {
     std::string_view name;       // as the schema spells it (a parsed alias is recorded under it)
     std::string text;            // the new value as .jts text
     std::optional<Vec3> vector;  // a vector's new value
+    bool unset = false;          // an optional value cleared: its statements go
     std::string line() const { return std::string(name) + ": " + text + ";"; }
 };
 
@@ -57,14 +58,17 @@ std::vector<Change> changes(std::span<const PropertySpec<Block>> properties, con
         with_member(property, b, [&](const auto& value) {
             using T = std::decay_t<decltype(value)>;
             if constexpr (std::is_same_v<T, Vec3>) change.vector = value;
+            // No .jts text unsets a value: clearing one drops its statements.
             if constexpr (std::is_same_v<T, std::optional<Vec3>>) {
                 change.vector = value;
-                // No .jts text unsets a value: a save could only drop the line.
-                if (!value) fail("an unset '" + std::string(property.name) + "' cannot be saved");
+                change.unset = !value;
             }
-            if constexpr (std::is_same_v<T, std::optional<double>>) {
-                if (!value) fail("an unset '" + std::string(property.name) + "' cannot be saved");
-            }
+            if constexpr (std::is_same_v<T, std::optional<double>>) change.unset = !value;
+            // An extension's string emptied (a background_map cleared in a
+            // panel) is not written, as the serializer leaves it out: `""`
+            // would be an error there.
+            if constexpr (std::is_same_v<T, std::string>)
+                change.unset = value.empty() && !is_written(property, b);
         });
         check_writable(property, b, fail);
         found.push_back(std::move(change));
@@ -102,7 +106,13 @@ class SourceWriter {
 
     // The value of the last property named `change.name` across `blocks` (in
     // file order) is the one in force: replace it. False when none is written.
+    // An unset value removes every statement of it across the blocks.
     bool replace_last(const std::vector<const BlockSource*>& blocks, const Change& change) {
+        if (change.unset) {
+            bool removed = false;
+            for (const BlockSource* block : blocks) removed = remove_all(*block, change) || removed;
+            return removed;
+        }
         const PropertySource* last = nullptr;
         for (const BlockSource* block : blocks)
             for (const PropertySource& p : properties(*block))
@@ -145,6 +155,10 @@ class SourceWriter {
     // Writes the change into `block`, replacing the value in force or
     // inserting `name: value;` before the block's closing brace.
     void set(const BlockSource& block, const Change& change) {
+        if (change.unset) {
+            remove_all(block, change);
+            return;
+        }
         const PropertySource* last = nullptr;
         for (const PropertySource& p : properties(block))
             if (p.name == change.name) last = &p;
@@ -154,6 +168,19 @@ class SourceWriter {
         }
         insert_into(block.close_brace, indent_hint(block), {change.line()});
         ++changed_;
+    }
+
+    // Removes every statement of `change.name` in `block` (an earlier one
+    // would otherwise come back into force); false when it has none.
+    bool remove_all(const BlockSource& block, const Change& change) {
+        bool removed = false;
+        for (const PropertySource& p : properties(block))
+            if (p.name == change.name) {
+                edits_.push_back(edit::removal(text_, edit::statement_range(text_, p), false));
+                removed = true;
+            }
+        if (removed) ++changed_;
+        return removed;
     }
 
     void insert_into(std::size_t close, std::optional<std::size_t> first_item,
@@ -274,7 +301,7 @@ void write_primitive(SourceWriter& w, const BlockSource& block, const Primitive&
     const auto materials = w.children_named(block, schema_of<Material>().keyword);
     std::vector<std::string> unwritten;
     for (const Change& change : changes(a.material, b.material, w.failure())) {
-        if (w.replace_last(materials, change)) continue;
+        if (w.replace_last(materials, change) || change.unset) continue;
         if (!materials.empty()) {
             w.set(*materials.back(), change);
         } else {
