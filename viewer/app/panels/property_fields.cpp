@@ -4,6 +4,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <cstdio>
 
 namespace jt::view {
 
@@ -23,21 +24,33 @@ float field_speed(const ValueRange& range, std::string_view unit, double size) {
     return static_cast<float>(std::max(0.01, 0.01 * std::abs(size)));
 }
 
+UnsetNumber unset_note(double when_set, const char* note) {
+    UnsetNumber unset;
+    unset.when_set = when_set;
+    std::snprintf(unset.note.data(), unset.note.size(), "%s", note);
+    return unset;
+}
+
 UnsetNumber unset_number(std::string_view property, const Camera& camera) {
-    if (property != "focus_distance") return {0.0, "not set"};
+    if (property != "focus_distance") return unset_note(0.0, "not set");
     // As the render takes it: the length that normalises look_at - position.
     const Vec3 d = camera.look_at - camera.position;
     const double distance = std::sqrt(d.x * d.x + d.y * d.y + d.z * d.z);
     if (!(distance > 0.0) || !std::isfinite(distance))
-        return {1.0, "not set (look_at is the position)"};
-    return {distance, number_text(ui_rounded(distance)) + " = |look_at - position|"};
+        return unset_note(1.0, "not set (look_at is the position)");
+    // A number's shortest text fits the small-string buffer: no allocation.
+    const std::string shown = number_text(ui_rounded(distance));
+    UnsetNumber unset;
+    unset.when_set = distance;
+    std::snprintf(unset.note.data(), unset.note.size(), "%s = |look_at - position|", shown.c_str());
+    return unset;
 }
 
 UnsetNumber unset_number(std::string_view property, const Mesh&) {
     // 60 degrees rounds a curved model and keeps a box's 90-degree edges.
     if (property == "smooth_angle")
-        return {60.0, "off (corners without a normal in the file are flat)"};
-    return {0.0, "not set"};
+        return unset_note(60.0, "off (corners without a normal in the file are flat)");
+    return unset_note(0.0, "not set");
 }
 
 }  // namespace jt::view

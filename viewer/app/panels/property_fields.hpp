@@ -11,6 +11,7 @@
 #include "app/panels/widgets.hpp"
 #include "jtracer/schema.hpp"
 
+#include <array>
 #include <optional>
 #include <string>
 #include <string_view>
@@ -32,17 +33,20 @@ float field_speed(const ValueRange& range, std::string_view unit, double size);
 
 // What an unset optional number stands for: the value a tick writes (the one
 // it takes unset, when it has one) and the words the greyed field shows.
+// The note lives in the struct, not on the heap: the field is drawn every
+// frame, and an idle frame allocates nothing.
 struct UnsetNumber {
     double when_set = 0.0;
-    std::string note;
+    std::array<char, 96> note{};
 };
+UnsetNumber unset_note(double when_set, const char* note);
 // A camera's focus_distance is |look_at - position| (docs/language.md §14.2);
 // a mesh's smooth_angle is off (§14.4).
 UnsetNumber unset_number(std::string_view property, const Camera& camera);
 UnsetNumber unset_number(std::string_view property, const Mesh& mesh);
 template <class Block>
 UnsetNumber unset_number(std::string_view, const Block&) {
-    return {0.0, "not set"};
+    return unset_note(0.0, "not set");
 }
 
 // The field for one property of `block`; true when the user changed it.
@@ -65,7 +69,7 @@ bool edit_property(const PropertySpec<Block>& property, Block& block) {
         } else if constexpr (std::is_same_v<T, std::optional<double>>) {
             const UnsetNumber unset = unset_number(property.name, block);
             return edit_optional_number(
-                label, value, unset.when_set, unset.note,
+                label, value, unset.when_set, unset.note.data(),
                 field_speed(property.range, property.unit, value ? *value : unset.when_set),
                 bounds.min, bounds.max, why);
         } else if constexpr (std::is_same_v<T, std::string>) {

@@ -8,6 +8,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <cstdio>
 
 namespace jt::view {
 
@@ -219,7 +220,7 @@ void same_line_if_fits(const char* label) {
 }
 
 bool edit_optional_number(const char* label, std::optional<double>& value, double when_set,
-                          const std::string& unset_note, float speed, double min, double max,
+                          const char* unset_note, float speed, double min, double max,
                           const std::function<std::string()>& why) {
     bool on = value.has_value();
     ImGui::PushID(label);
@@ -240,8 +241,10 @@ bool edit_optional_number(const char* label, std::optional<double>& value, doubl
             changed = true;
         }
     } else {
-        ImGui::TextDisabled("%s: %s", label, unset_note.c_str());
-        note_item((std::string(label) + ": " + unset_note).c_str(), false);
+        ImGui::TextDisabled("%s: %s", label, unset_note);
+        char shown[160];
+        std::snprintf(shown, sizeof shown, "%s: %s", label, unset_note);
+        note_item(shown, false);
     }
     ImGui::PopID();
     return changed;

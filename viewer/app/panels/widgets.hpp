@@ -34,8 +34,8 @@ bool edit_optional_colour(const char* label, std::optional<Colour>& value, const
 // the field shows, greyed, what the property stands for then (`unset_note`,
 // "7.07 = |look_at - position|"); while set it is edit_number's field.
 bool edit_optional_number(const char* label, std::optional<double>& value, double when_set,
-                          const std::string& unset_note, float speed, double min = 0.0,
-                          double max = 0.0, const std::function<std::string()>& why = {});
+                          const char* unset_note, float speed, double min = 0.0, double max = 0.0,
+                          const std::function<std::string()>& why = {});
 // One of a string property's few allowed words (a mesh's shading), as a combo.
 bool edit_choice(const char* label, std::string& value, std::span<const std::string_view> choices);
 // A file name (a material's image_map), applied when Enter is pressed; a
