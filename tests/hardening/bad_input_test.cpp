@@ -167,6 +167,7 @@ TEST_F(BadInput, ModelMaterialFilesThatCannotBeUsedAreLocatedAtTheFileString) {
     const std::vector<Case> cases = {
         {"missing library", "mtllib none.mtl", "", "none.mtl' cannot be read (no such file)"},
         {"library outside", "mtllib ../secret.mtl", "", "outside the folder"},
+        {"library is a folder", "mtllib lib.mtl", "", "lib.mtl', which is a folder"},
         {"missing texture", "mtllib m.mtl", "newmtl x\nmap_Kd -clamp on gone.png\n",
          "its texture 'gone.png': cannot read"},
         {"texture outside", "mtllib m.mtl", "newmtl x\nmap_Kd ../outside.png\n",
@@ -180,6 +181,7 @@ TEST_F(BadInput, ModelMaterialFilesThatCannotBeUsedAreLocatedAtTheFileString) {
         {"Kd infinite", "mtllib m.mtl", "newmtl x\nKd 1e999\n", "has a Kd that is not one"},
     };
     write_file(dir / "secret.mtl", "newmtl x\nKd 1 0 0\n");
+    fs::create_directories(dir / "scene/lib.mtl");
     write_file(dir / "scene/cut.png", "\x89PNG\r\n\x1a\n\0\0\0\rIHDR");
     for (const Case& c : cases) {
         SCOPED_TRACE(c.what);

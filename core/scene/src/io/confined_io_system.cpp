@@ -40,6 +40,11 @@ bool ConfinedIOSystem::allowed(const char* file) const {
         why.append(material_library(file) ? "refers to the material library '" : "refers to '");
         why.append(file).append("', outside the folder '");
         why.append(folder_.string()).append("'");
+    } else if (std::filesystem::is_directory(path, error)) {
+        // Opening a folder succeeds on Linux and only its reading fails, for
+        // which Assimp has nothing better to say than "File read error".
+        why.append(material_library(file) ? "refers to the material library '" : "refers to '");
+        why.append(file).append("', which is a folder");
     } else if (const std::uintmax_t size = std::filesystem::file_size(path, error);
                !error && size > kMaxModelFileBytes) {
         why.append("refers to '").append(file).append("', which is too large (");
