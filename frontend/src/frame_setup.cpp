@@ -51,7 +51,8 @@ FrameSetup set_up_frame(std::string_view program, const RenderFlags& flags, Load
     };
     if (Expected<void> applied = apply_overrides(flags, loaded.parsed.scene); !applied)
         return fail(exit_usage, applied.error().message);
-    std::vector<Diagnostic> diagnostics = check_scene(loaded);
+    // Quiet drops warnings: locating them would only cost another parse.
+    std::vector<Diagnostic> diagnostics = check_scene(loaded, {.locate_warnings = !flags.quiet});
     name_setting_flags(diagnostics);
     const bool errors = has_errors(diagnostics);
     if (flags.quiet && !errors) diagnostics.clear();  // quiet drops warnings, never errors

@@ -6,6 +6,7 @@
 
 #include <charconv>
 #include <cmath>
+#include <cstring>
 #include <random>
 
 namespace jt {
@@ -197,6 +198,58 @@ TEST(Numbers, FastPathAgreesWithFromChars) {
         double got = std::get<Plane>(r.scene.primitives.at(0).shape).distance;
         ASSERT_EQ(got, expected) << number;
     }
+}
+
+// A vector of plain numbers is read on a fast path (lexer.hpp's plain_vector);
+// it must give the value and the spans the token-by-token path gives, which
+// a newline before the ';' forces.
+TEST(Numbers, PlainVectorsAgreeWithTheExpressionPath) {
+    std::mt19937_64 rng(31);
+    auto component = [&] {
+        std::string s;
+        const int sign = static_cast<int>(rng() % 4);
+        if (sign == 1) s += "-";
+        if (sign == 2) s += "+";
+        if (sign == 3) s += "- ";
+        s += std::to_string(rng() % 1000);
+        if (rng() % 2) s += "." + std::to_string(rng() % 100000);
+        if (rng() % 4 == 0) s += (rng() % 2 ? "e-" : "E") + std::to_string(rng() % 40);
+        return s;
+    };
+    auto blank = [&] { return std::string(rng() % 3, rng() % 2 ? ' ' : '\t'); };
+    for (int trial = 0; trial < 5000; ++trial) {
+        const std::string vector = "<" + blank() + component() + blank() + "," + blank() +
+                                   component() + "," + component() + blank() + ">";
+        const ParseResult fast =
+            parse_scene("scene { sphere { center: " + vector + blank() + "; } }");
+        const ParseResult slow = parse_scene("scene { sphere { center: " + vector + "\n; } }");
+        ASSERT_EQ(fast.ok(), slow.ok()) << vector;
+        ASSERT_EQ(fast.diagnostics.size(), slow.diagnostics.size()) << vector;
+        if (!fast.ok()) continue;
+        const Vec3 a = std::get<Sphere>(fast.scene.primitives.at(0).shape).center;
+        const Vec3 b = std::get<Sphere>(slow.scene.primitives.at(0).shape).center;
+        ASSERT_EQ(std::memcmp(&a, &b, sizeof a), 0) << vector;  // -0 too
+        const PropertySource& p = fast.source.properties.at(0);
+        const PropertySource& q = slow.source.properties.at(0);
+        ASSERT_EQ(p.value_span, q.value_span) << vector;
+        ASSERT_EQ(p.origin, q.origin) << vector;
+    }
+}
+
+// What is not a plain vector followed by ';' is still read as an expression.
+TEST(Numbers, OnlyAPlainVectorTakesTheFastPath) {
+    ParseResult r = parse_scene("scene { sphere { center: <1, 2, 3> * 2; } }");
+    ASSERT_TRUE(r.ok());
+    EXPECT_EQ(std::get<Sphere>(r.scene.primitives.at(0).shape).center, Vec3(2, 4, 6));
+    EXPECT_EQ(r.source.properties.at(0).origin, ValueOrigin::expression);
+    r = parse_scene("scene { sphere { center: <1, --2, 3>; } }");
+    ASSERT_TRUE(r.ok());
+    EXPECT_EQ(std::get<Sphere>(r.scene.primitives.at(0).shape).center, Vec3(1, 2, 3));
+    EXPECT_EQ(r.source.properties.at(0).origin, ValueOrigin::expression);
+    EXPECT_FALSE(parse_scene("scene { sphere { center: <1, 2>; } }").ok());
+    EXPECT_FALSE(parse_scene("scene { sphere { center: <1, 2, 3, 4>; } }").ok());
+    EXPECT_FALSE(parse_scene("scene { sphere { center: <1, 2.3.4, 3>; } }").ok());
+    EXPECT_FALSE(parse_scene("scene { sphere { center: <1, 2, 1e999>; } }").ok());
 }
 
 }  // namespace

@@ -115,6 +115,45 @@ TEST_F(SceneFile, WithoutTheSourceMapTheFindingsAreStillLocated) {
     EXPECT_TRUE(check_scene(load_scene_file(clean, {.source_map = false}).value()).empty());
 }
 
+// A finding about the settings or cameras alone is located by a parse that
+// keeps no primitive: the same positions as with the whole map.
+TEST_F(SceneFile, FindingsOutsidePrimitivesAreLocatedWithoutThem) {
+    fs::path path = write("a.jts",
+                          "render_settings { width: 8; height: 4; }\n"
+                          "cameras { perspective_camera { aspect: 1; } }\n"
+                          "scene { sphere { radius: 2; material { pigment: <1, 0, 0>; } }\n"
+                          "  point_light { position: <0, 1, 0>; }\n"
+                          "  sphere { transform { translate: <1, 0, 0>; } } }\n");
+    const LoadedScene mapped = load_scene_file(path).value();
+    const LoadedScene unmapped = load_scene_file(path, {.source_map = false}).value();
+    EXPECT_EQ(check_scene(unmapped), check_scene(mapped));
+    EXPECT_EQ(test::brief(check_scene(unmapped)),
+              "2:40: warning: camera 1: 'aspect' 1 differs from width/height = 2 by more than 1%, "
+              "so the image will look stretched");
+}
+
+// A quiet caller drops warnings: they stay unlocated (no second parse), while
+// errors are located as ever.
+TEST_F(SceneFile, WarningsNeedNotBeLocated) {
+    fs::path warned = write("w.jts",
+                            "render_settings { width: 8; height: 4; }\n"
+                            "cameras { perspective_camera { aspect: 1; } }\n"
+                            "scene { sphere { } }\n");
+    const LoadedScene loaded = load_scene_file(warned, {.source_map = false}).value();
+    const std::vector<Diagnostic> found = check_scene(loaded, {.locate_warnings = false});
+    ASSERT_EQ(found.size(), 1u);
+    EXPECT_EQ(found[0].pos, SourcePos{});
+    EXPECT_EQ(found[0].severity, Severity::warning);
+
+    fs::path wrong = write("e.jts",
+                           "render_settings { width: 8; height: 4; }\n"
+                           "cameras { perspective_camera { look_at: <0, 0, 0>; aspect: 1; } }\n"
+                           "scene { sphere { } }\n");
+    const LoadedScene bad = load_scene_file(wrong, {.source_map = false}).value();
+    EXPECT_EQ(check_scene(bad, {.locate_warnings = false}),
+              check_scene(load_scene_file(wrong).value()));
+}
+
 TEST_F(SceneFile, ValidationIsSkippedWhenParsingFailed) {
     const LoadedScene loaded =
         load_scene_file(write("bad.jts", "scene { sphere { radius: -1; } }")).value();

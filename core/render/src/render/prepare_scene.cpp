@@ -211,9 +211,9 @@ std::shared_ptr<const Texture> held_picture(const PreparedScene& in,
     auto current = [&](const std::filesystem::path& file, const FileStamp& then) {
         return file == path && (then == stamp || !stamp.exists);
     };
-    for (std::size_t i = 0; i < end; ++i)
-        if (in.textures[i] && current(in.texture_files[i], in.texture_stamps[i]))
-            return in.textures[i];
+    for (const PreparedScene::TextureSource& held : in.texture_sources)
+        if (held.material < end && current(held.file, held.stamp))
+            return in.textures[held.material];
     if (in.background_map && current(in.background_map_file, in.background_map_stamp))
         return in.background_map;
     return nullptr;
@@ -239,9 +239,9 @@ Expected<std::shared_ptr<const Texture>> picture(const PreparedScene& prepared, 
 // file read once.
 Expected<void> load_textures(const Scene& scene, PreparedScene& prepared,
                              const PreparedScene* previous) {
-    prepared.textures.assign(prepared.materials.size(), nullptr);
-    prepared.texture_files.assign(prepared.materials.size(), {});
-    prepared.texture_stamps.assign(prepared.materials.size(), {});
+    // Only a pattern reads `textures` (trace.cpp), as only it reads pattern_space.
+    if (!prepared.pattern_space.empty())
+        prepared.textures.assign(prepared.materials.size(), nullptr);
     for (std::size_t i = 0; i < prepared.materials.size(); ++i) {
         if (prepared.materials[i].image_map.empty()) continue;
         const std::filesystem::path path = asset_path(scene, prepared.materials[i].image_map);
@@ -249,8 +249,7 @@ Expected<void> load_textures(const Scene& scene, PreparedScene& prepared,
         auto texture = picture(prepared, i, previous, path, stamp, "image_map");
         if (!texture) return texture.error();
         prepared.textures[i] = std::move(*texture);
-        prepared.texture_files[i] = path;
-        prepared.texture_stamps[i] = stamp;
+        prepared.texture_sources.push_back({i, path, stamp});
     }
     if (scene.settings.background_map.empty()) return {};
     const std::filesystem::path path = asset_path(scene, scene.settings.background_map);

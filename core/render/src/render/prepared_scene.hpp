@@ -101,10 +101,17 @@ struct PreparedScene {
     // empty when no material has one.
     std::vector<PatternSpace> pattern_space;
     // The picture of each material's image_map (null for none), parallel to
-    // `materials`; a file named by several materials is loaded once.
+    // `materials` when any material has a pattern, else empty; a file named by
+    // several materials is loaded once.
     std::vector<std::shared_ptr<const Texture>> textures;
-    std::vector<std::filesystem::path> texture_files;  // where each was read from
-    std::vector<FileStamp> texture_stamps;             // and its stamp then
+    // Where each picture of `textures` was read from and its stamp then, one
+    // entry a material with an image_map: a million plain materials need none.
+    struct TextureSource {
+        std::size_t material = 0;
+        std::filesystem::path file;
+        FileStamp stamp;
+    };
+    std::vector<TextureSource> texture_sources;
     // The picture of render_settings' background_map (null for none), where it
     // was read from and its stamp then, as for `textures`.
     std::shared_ptr<const Texture> background_map;

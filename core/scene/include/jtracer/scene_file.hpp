@@ -42,11 +42,19 @@ struct LoadedScene {
 // `parsed.scene` first, then call check_scene.
 Expected<LoadedScene> load_scene_file(const std::filesystem::path& path, ParseOptions options = {});
 
+struct CheckOptions {
+    // False: warnings about a scene loaded without its source map stay at line
+    // 0 rather than cost another parse to locate, for a caller that drops
+    // them (a quiet command line). Errors are always located.
+    bool locate_warnings = true;
+};
+
 // The parse diagnostics followed by validate_scene's (validation runs only when
 // parsing found no errors, so that one mistake does not cascade). A scene
 // loaded without its source map is validated without it, and only when that
-// finds something is the text parsed again to say where.
-std::vector<Diagnostic> check_scene(const LoadedScene& loaded);
+// finds something is the text parsed again to say where (keeping the
+// primitives' records only when a finding concerns a primitive).
+std::vector<Diagnostic> check_scene(const LoadedScene& loaded, CheckOptions options = {});
 
 // Every diagnostic formatted by format_diagnostic, concatenated.
 std::string format_diagnostics(const std::vector<Diagnostic>& diagnostics,

@@ -222,6 +222,49 @@ NumberScan scan_number(std::string_view s, double& out) {
 
 }  // namespace
 
+std::size_t Lexer::plain_vector(std::size_t offset, Vec3& out) const {
+    const std::size_t n = text_.size();
+    std::size_t i = offset + 1;
+    auto skip_blanks = [&] {
+        while (i < n && (text_[i] == ' ' || text_[i] == '\t' || text_[i] == '\r')) ++i;
+    };
+    double parts[3];
+    for (int k = 0; k < 3; ++k) {
+        skip_blanks();
+        if (k > 0) {
+            if (i >= n || text_[i] != ',') return 0;
+            ++i;
+            skip_blanks();
+        }
+        bool negative = false;
+        if (i < n && (text_[i] == '-' || text_[i] == '+')) {
+            negative = text_[i] == '-';
+            ++i;
+            skip_blanks();
+        }
+        if (i >= n || !(is_digit(text_[i]) || text_[i] == '.')) return 0;
+        // The run lex_number would take as one token.
+        const std::size_t start = i;
+        while (i < n) {
+            const char c = text_[i];
+            const bool exponent_sign =
+                (c == '+' || c == '-') && i > start && (text_[i - 1] == 'e' || text_[i - 1] == 'E');
+            if (!is_number_char(c) && !exponent_sign) break;
+            ++i;
+        }
+        double value = 0.0;
+        if (scan_number(text_.substr(start, i - start), value) != NumberScan::exact) return 0;
+        parts[k] = negative ? -value : value;
+    }
+    skip_blanks();
+    if (i >= n || text_[i] != '>') return 0;
+    const std::size_t end = ++i;
+    skip_blanks();
+    if (i >= n || text_[i] != ';') return 0;
+    out = Vec3{parts[0], parts[1], parts[2]};
+    return end;
+}
+
 void Lexer::lex_number(std::size_t start, Token& token) {
     const std::size_t n = text_.size();
     while (at_ < n) {

@@ -2,6 +2,7 @@
 // Splits .jts text into tokens (docs/language.md §2). Tokens are views into
 // the text: lexing allocates nothing per token.
 
+#include "jtracer/scene.hpp"
 #include "language/diagnostic_sink.hpp"
 
 #include <cstddef>
@@ -52,6 +53,15 @@ class Lexer {
     // value made the parser copy it with wide loads right after the lexer's
     // narrow stores, a store-forwarding stall per token (a quarter of a parse).
     void next(Token& out);
+
+    // At the '<' at `offset`: a vector of three plain numbers, each with at
+    // most one sign, written on one line without comments and followed by
+    // ';' (`<0.5, -1, 2e3>;`), as generators write most values. Returns the
+    // offset just past its '>' and sets `out` to the value the expression
+    // reader gives it, or returns 0 for anything else (read it token by token).
+    std::size_t plain_vector(std::size_t offset, Vec3& out) const;
+    // Continues from `offset`, on the line of the last token read.
+    void skip_to(std::size_t offset) { at_ = offset; }
 
   private:
     void skip_space_and_comments();

@@ -16,6 +16,7 @@
 #include "language/properties.hpp"
 #include "language/quote.hpp"
 #include "language/suggest.hpp"
+#include "language/validation.hpp"
 
 #include <algorithm>
 #include <array>
@@ -125,14 +126,17 @@ std::string where(SourcePos pos) {
 
 class Parser final : private TokenCursor {
   public:
-    Parser(std::string_view text, const ParseOptions& options)
+    // `primitives` false: the primitives and their records are read (for the
+    // diagnostics) but not kept (validation.hpp's source_without_primitives).
+    Parser(std::string_view text, const ParseOptions& options, bool primitives = true)
         : text_(text),
           lexer_(text, sink_),
           reader_(sink_),
           expressions_(*this, sink_, names_, options.clock),
-          primitive_hint_(primitive_count_hint(text)),
-          source_map_(options.source_map) {
-        if (source_map_) {
+          primitive_hint_(primitives ? primitive_count_hint(text) : 0),
+          source_map_(options.source_map),
+          keep_primitives_(primitives) {
+        if (source_map_ && keep_primitives_) {
             reserve_records(result_.source.properties, property_count_hint(text));
             reserve_records(result_.source.children, primitive_hint_);
         }
@@ -247,6 +251,21 @@ class Parser final : private TokenCursor {
             advance();
             return v;
         }
+        // So does a vector of plain numbers, the other most common value.
+        if (cur_->kind == TokenKind::less && evaluate) {
+            Vec3 vector;
+            if (const std::size_t end = lexer_.plain_vector(cur_->offset, vector)) {
+                const auto length = static_cast<std::uint32_t>(end - cur_->offset);
+                v.form = Value::Form::vector;
+                v.vector = vector;
+                v.span = {static_cast<std::uint32_t>(cur_->offset), length, cur_->pos};
+                v.end = {cur_->pos.line, cur_->pos.column + static_cast<int>(length)};
+                lexer_.skip_to(end);
+                lexer_.next(*cur_);
+                lexer_.next(*next_);
+                return v;
+            }
+        }
         const ParsedValue parsed = expressions_.read(evaluate);
         v.span = parsed.span;
         v.end = parsed.end;
@@ -337,7 +356,7 @@ class Parser final : private TokenCursor {
         buffer.clear();
         OpenBlock open{block, buffer};
         read(open);
-        if (source_map_) {
+        if (source_map_ && !(in_primitive_ && !keep_primitives_)) {
             block.properties =
                 append_records(result_.source.properties, std::span<const PropertySource>(buffer));
         }
@@ -543,8 +562,11 @@ class Parser final : private TokenCursor {
                 primitive.shape = std::move(*shape);
                 BlockSource primitive_block;
                 if (!open_block(primitive_block)) return;
+                in_primitive_ = true;
                 read_properties(primitive_block, 0,
                                 [&](OpenBlock& open) { parse_primitive_body(primitive, open); });
+                in_primitive_ = false;
+                if (!keep_primitives_) return;
                 primitives.push_back(std::move(primitive));
                 if (source_map_) primitive_sources.push_back(primitive_block);
             } else {
@@ -613,7 +635,7 @@ class Parser final : private TokenCursor {
                     unknown_block("in '" + std::string(block.keyword) + "'", primitive_blocks());
                     return;
                 }
-                if (opened && source_map_) children.push_back(child);
+                if (opened && source_map_ && keep_primitives_) children.push_back(child);
             });
         block.children = {static_cast<std::uint32_t>(first_child),
                           static_cast<std::uint32_t>(children.size() - first_child)};
@@ -857,11 +879,19 @@ class Parser final : private TokenCursor {
     ParseResult result_;
     std::size_t primitive_hint_;
     bool source_map_;  // false: records are still made (for messages) but not kept
+    bool keep_primitives_;
+    bool in_primitive_ = false;  // reading a primitive's block
     std::array<std::vector<PropertySource>, 2> property_buffers_;
 };
 
 }  // namespace
 }  // namespace lang
+
+SceneSource lang::source_without_primitives(std::string_view text, const ParseOptions& options) {
+    ParseOptions with_map = options;
+    with_map.source_map = true;
+    return lang::Parser(text, with_map, false).run().source;
+}
 
 ParseResult parse_scene(std::string_view text, ParseOptions options) {
     try {

@@ -3,6 +3,7 @@
 #include "io/huge_pages.hpp"
 #include "jtracer/validate.hpp"
 #include "language/quote.hpp"
+#include "language/validation.hpp"
 
 #include <cerrno>
 #include <cstdio>
@@ -91,18 +92,26 @@ Expected<LoadedScene> load_scene_file(const std::filesystem::path& path, ParseOp
     return loaded;
 }
 
-std::vector<Diagnostic> check_scene(const LoadedScene& loaded) {
+std::vector<Diagnostic> check_scene(const LoadedScene& loaded, CheckOptions options) {
     std::vector<Diagnostic> all = loaded.parsed.diagnostics;
     if (!has_errors(all)) {
-        std::vector<Diagnostic> found = validate_scene(loaded.parsed.scene, loaded.parsed.source);
-        if (!found.empty() && !loaded.options.source_map) {
+        lang::Validation found =
+            lang::validate_scene_parts(loaded.parsed.scene, loaded.parsed.source);
+        const bool locate = !found.diagnostics.empty() && !loaded.options.source_map &&
+                            (options.locate_warnings || has_errors(found.diagnostics));
+        if (locate) {
             // Same text, same scene lists: the map lines up with the scene
-            // (overrides applied to it change values, not the lists).
+            // (overrides applied to it change values, not the lists). Findings
+            // about the settings, cameras or lights alone (an aspect that no
+            // longer matches --width) need no record of the primitives.
             ParseOptions with_map = loaded.options;
             with_map.source_map = true;
-            found = validate_scene(loaded.parsed.scene, parse_scene(loaded.text, with_map).source);
+            const SceneSource source = found.about_primitives
+                                           ? parse_scene(loaded.text, with_map).source
+                                           : lang::source_without_primitives(loaded.text, with_map);
+            found.diagnostics = validate_scene(loaded.parsed.scene, source);
         }
-        for (Diagnostic& d : found) all.push_back(std::move(d));
+        for (Diagnostic& d : found.diagnostics) all.push_back(std::move(d));
     }
     return all;
 }

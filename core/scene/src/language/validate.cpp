@@ -6,6 +6,7 @@
 #include "jtracer/smooth_normals.hpp"
 #include "jtracer/texture.hpp"
 #include "jtracer/value_text.hpp"
+#include "language/validation.hpp"
 
 #include <glm/geometric.hpp>
 
@@ -29,16 +30,18 @@ class Validator {
   public:
     Validator(const Scene& scene, const SceneSource& source) : scene_(scene), source_(source) {}
 
-    std::vector<Diagnostic> run() {
+    lang::Validation run() {
         check_settings();
         check_background_map();
         check_cameras();
+        const std::size_t before_primitives = out_.size();
         check_primitives();
+        const bool about_primitives = out_.size() != before_primitives;
         check_lights();
         if (!source_.scene && scene_.primitives.empty() && scene_.lights.empty()) {
             warning({}, "no scene block: the image will show only the background");
         }
-        return std::move(out_);
+        return {std::move(out_), about_primitives};
     }
 
   private:
@@ -378,6 +381,10 @@ unsigned long long bmp_file_size(int width, int height) {
 }
 
 std::vector<Diagnostic> validate_scene(const Scene& scene, const SceneSource& source) {
+    return Validator(scene, source).run().diagnostics;
+}
+
+lang::Validation lang::validate_scene_parts(const Scene& scene, const SceneSource& source) {
     return Validator(scene, source).run();
 }
 
