@@ -6,6 +6,7 @@
 
 #include <glm/geometric.hpp>
 
+#include <algorithm>
 #include <bit>
 #include <cmath>
 #include <limits>
@@ -346,6 +347,73 @@ bool closest_hit(const Geometry& geometry, const Vec3& origin, const Vec3& direc
         hit.normal = s.normal_matrix * n;
     }
     return true;
+}
+
+bool shapes_toward_disk(const Geometry& geometry, const Vec3& point, double lift,
+                        const Vec3& centre, double radius, DiskCandidates& out) {
+    out.count = 0;
+    const std::size_t bounded = geometry.spheres.size() + geometry.shapes.size();
+    if (bounded > max_disk_candidates) return false;
+    const Vec3 axis = centre - point;
+    const double axis_sq = glm::dot(axis, axis);
+    auto max_abs = [](const Vec3& v) {
+        return std::max({std::abs(v.x), std::abs(v.y), std::abs(v.z)});
+    };
+    // Far beyond the rounding of the distances below and of the rays' own
+    // origins, directions and disk points.
+    const double spread =
+        radius * (1.0 + 1e-6) + 2.0 * lift + 1e-7 * (max_abs(point) + max_abs(centre) + radius);
+    auto offer = [&](std::uint32_t listed, const Vec3& c, double r) {
+        const PaddedBound b = padded_bound(c, r, point);
+        const Vec3 f = c - point;
+        const double s = axis_sq > 0.0 ? std::clamp(glm::dot(f, axis) / axis_sq, 0.0, 1.0) : 0.0;
+        const Vec3 off = f - s * axis;
+        const double reach = b.radius + spread;
+        if (glm::dot(off, off) > reach * reach) return;
+        // Kept nearest first (insertion: a handful of shapes).
+        std::size_t k = out.count++;
+        const double nearest = std::max(0.0, b.nearest - 2.0 * lift);
+        for (; k > 0 && out.nearest[k - 1] > nearest; --k) {
+            out.nearest[k] = out.nearest[k - 1];
+            out.shapes[k] = out.shapes[k - 1];
+        }
+        out.nearest[k] = nearest;
+        out.shapes[k] = listed;
+    };
+    for (std::uint32_t i = 0; i < geometry.spheres.size(); ++i)
+        offer(i, geometry.spheres[i].center, geometry.spheres[i].radius);
+    for (std::uint32_t i = 0; i < geometry.shapes.size(); ++i)
+        offer(i | shape_flag, geometry.shapes[i].bounding_center,
+              std::sqrt(geometry.shapes[i].bounding_radius_sq));
+    return true;
+}
+
+bool occluded_among(const Geometry& geometry, const ListedShapes& candidates, const Vec3& origin,
+                    const Vec3& direction, double t_min, double t_max, OccluderHint* hint,
+                    const Departure& from) {
+    if (hint && hinted_blocks(geometry, *hint, origin, direction, t_min, t_max)) return true;
+    OccluderHint blocker;
+    bool blocked = false;
+    for (std::uint32_t i = 0; i < geometry.planes.size() && !blocked; ++i) {
+        const WorldPlane& p = geometry.planes[i];
+        if (intersect_plane(origin, direction, p.normal, p.distance, t_min, t_max) != no_hit) {
+            blocker = {OccluderHint::Set::plane, i};
+            blocked = true;
+        }
+    }
+    // A blocker lies nearer the origin than the ray's end.
+    const double reach = t_max * glm::length(direction) * (1.0 + 1e-9);
+    for (std::size_t k = 0; k < candidates.size() && !blocked && candidates.nearest[k] < reach;
+         ++k) {
+        if (listed_blocks(geometry, candidates.shapes[k], origin, direction, t_min, t_max)) {
+            blocker = hint_for(candidates.shapes[k]);
+            blocked = true;
+        }
+    }
+    if (!blocked && geometry.triangles)
+        blocked = triangle_blocks(*geometry.triangles, origin, direction, t_min, t_max, from);
+    if (blocked && hint) *hint = blocker;
+    return blocked;
 }
 
 bool occluded(const Geometry& geometry, const Vec3& origin, const Vec3& direction, double t_min,

@@ -31,13 +31,16 @@ double max_abs(const Vec3& v) {
 // (0, t_max): the product of the transmission of every surface crossed, 0 at
 // the first opaque one (docs/language.md §13.2). Each query starts from the
 // same origin past the previous hit, so no surface is counted twice.
+// `candidates`: a list around the origin of every shape that may lie across
+// the ray before t_max (a nearer hit is all the loop uses), or null.
 double transmittance(const PreparedScene& scene, const Vec3& origin, const Vec3& direction,
-                     double t_max, const Departure& from) {
+                     double t_max, const Departure& from,
+                     const ListedShapes* candidates = nullptr) {
     double through = 1.0;
     double t_lower = 0.0;
     Hit hit;
     while (through > 0.0 &&
-           closest_hit(*scene.geometry, origin, direction, t_lower, hit, nullptr, from) &&
+           closest_hit(*scene.geometry, origin, direction, t_lower, hit, candidates, from) &&
            hit.t < t_max) {
         through *= scene.materials[scene.material_of[hit.source]].transmission;
         t_lower = hit.t;
@@ -103,7 +106,8 @@ SurfaceHit first_surface(const Geometry& geometry, const Vec3& o, const Vec3& d,
 // points (docs/language.md §14.1), summed in index order. Its rays all leave
 // one point but toward points off the light's centre, so the light's
 // direction table (built for rays through the centre) does not apply; the
-// occluder hint only orders the tests and never changes an answer.
+// shapes near the cone from the hit to the disk, found once for all its rays,
+// do. The occluder hint only orders the tests and never changes an answer.
 double disk_visibility(const PreparedScene& scene, const PointLight& light, const SurfaceHit& s,
                        const Vec3& l, const PixelSample& sample, OccluderHint& hint) {
     const LightDisk disk = light_disk(light.position, light.radius, l);
@@ -112,6 +116,10 @@ double disk_visibility(const PreparedScene& scene, const PointLight& light, cons
     const Vec3 above = s.lifted;
     const Vec3 below = s.point - s.offset * s.geometric;
     const Departure from{s.triangle, s.point};
+    DiskCandidates near;
+    const bool culled =
+        shapes_toward_disk(*scene.geometry, s.point, s.offset, light.position, light.radius, near);
+    const ListedShapes listed = near.listed();
     double sum = 0.0;
     for (int m = 0; m < count; ++m) {
         const Vec3 q = disk_point(disk, m, count, turn);
@@ -124,11 +132,18 @@ double disk_visibility(const PreparedScene& scene, const PointLight& light, cons
             const Vec3 path = q - origin;
             const double length = glm::length(path);
             if (length > 0.0) {
+                const Vec3 direction = path / length;
                 if (scene.has_transmission)
-                    v = transmittance(scene, origin, path / length, length, from);
+                    v = transmittance(scene, origin, direction, length, from,
+                                      culled ? &listed : nullptr);
+                else if (culled)
+                    v = occluded_among(*scene.geometry, listed, origin, direction, 0.0, length,
+                                       &hint, from)
+                            ? 0.0
+                            : 1.0;
                 else
-                    v = occluded(*scene.geometry, origin, path / length, 0.0, length, &hint,
-                                 nullptr, from)
+                    v = occluded(*scene.geometry, origin, direction, 0.0, length, &hint, nullptr,
+                                 from)
                             ? 0.0
                             : 1.0;
             }
