@@ -12,6 +12,7 @@
 #include <array>
 #include <cstddef>
 #include <cstdint>
+#include <span>
 
 namespace jt {
 
@@ -56,6 +57,19 @@ struct OccluderHint {
 bool occluded(const Geometry& geometry, const Vec3& origin, const Vec3& direction, double t_min,
               double t_max, OccluderHint* hint = nullptr, const DirectionTable* light = nullptr,
               const Departure& from = {});
+
+// A shadow ray: any surface at some t in (t_min, t_max) blocks it.
+struct ShadowRay {
+    Vec3 origin, direction;
+    double t_min, t_max;
+};
+
+// occluded() of each of up to shadow_packet rays, blocked[i] for rays[i],
+// the same answers; their BVH walks go as one packet. For the rays of a soft
+// light from one hit, which leave one point for one small disk.
+inline constexpr std::size_t shadow_packet = 16;
+void occluded_together(const Geometry& geometry, std::span<const ShadowRay> rays, bool* blocked,
+                       OccluderHint* hint = nullptr, const Departure& from = {});
 
 // The shapes that may lie across a shadow ray of a soft light from one hit
 // (docs/language.md §14.1). The rays leave points within `lift` of `point` for

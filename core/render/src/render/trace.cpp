@@ -14,6 +14,7 @@
 #include <algorithm>
 #include <array>
 #include <cmath>
+#include <span>
 #include <vector>
 
 namespace jt {
@@ -120,35 +121,49 @@ double disk_visibility(const PreparedScene& scene, const PointLight& light, cons
     const bool culled =
         shapes_toward_disk(*scene.geometry, s.point, s.offset, light.position, light.radius, near);
     const ListedShapes listed = near.listed();
+    // In packets of rays: v of each, then the sum in index order. Rays left to
+    // the BVH wait in `rays` (their v is 1 until the packet says otherwise).
     double sum = 0.0;
-    for (int m = 0; m < count; ++m) {
-        const Vec3 q = disk_point(disk, m, count, turn);
-        const Vec3 l_m = glm::normalize(q - s.point);
-        double v = 0.0;
-        if (glm::dot(s.normal, l_m) > 0.0) {
+    std::array<double, shadow_packet> v;
+    std::array<ShadowRay, shadow_packet> rays;
+    std::array<int, shadow_packet> ray_of;
+    for (int first = 0; first < count; first += static_cast<int>(shadow_packet)) {
+        const int n = std::min(count - first, static_cast<int>(shadow_packet));
+        std::size_t waiting = 0;
+        for (int k = 0; k < n; ++k) {
+            const Vec3 q = disk_point(disk, first + k, count, turn);
+            const Vec3 l_m = glm::normalize(q - s.point);
+            v[k] = 0.0;
+            if (!(glm::dot(s.normal, l_m) > 0.0)) continue;
             // Toward a point behind the face (a smooth normal on a mesh), the
             // ray starts under it and only its own triangle cannot block it.
             const Vec3 origin = glm::dot(s.geometric, l_m) < 0.0 ? below : above;
             const Vec3 path = q - origin;
             const double length = glm::length(path);
-            if (length > 0.0) {
-                const Vec3 direction = path / length;
-                if (scene.has_transmission)
-                    v = transmittance(scene, origin, direction, length, from,
-                                      culled ? &listed : nullptr);
-                else if (culled)
-                    v = occluded_among(*scene.geometry, listed, origin, direction, 0.0, length,
-                                       &hint, from)
-                            ? 0.0
-                            : 1.0;
-                else
-                    v = occluded(*scene.geometry, origin, direction, 0.0, length, &hint, nullptr,
-                                 from)
-                            ? 0.0
-                            : 1.0;
+            if (!(length > 0.0)) continue;
+            const Vec3 direction = path / length;
+            if (scene.has_transmission) {
+                v[k] = transmittance(scene, origin, direction, length, from,
+                                     culled ? &listed : nullptr);
+            } else if (culled) {
+                v[k] = occluded_among(*scene.geometry, listed, origin, direction, 0.0, length,
+                                      &hint, from)
+                           ? 0.0
+                           : 1.0;
+            } else {
+                v[k] = 1.0;
+                rays[waiting] = {origin, direction, 0.0, length};
+                ray_of[waiting++] = k;
             }
         }
-        sum += v;
+        if (waiting > 0) {
+            std::array<bool, shadow_packet> blocked;
+            occluded_together(*scene.geometry, std::span(rays.data(), waiting), blocked.data(),
+                              &hint, from);
+            for (std::size_t w = 0; w < waiting; ++w)
+                if (blocked[w]) v[ray_of[w]] = 0.0;
+        }
+        for (int k = 0; k < n; ++k) sum += v[k];
     }
     return sum / count;
 }
