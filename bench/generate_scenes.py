@@ -11,6 +11,7 @@ usage: generate_scenes.py OUT_DIR [--showcase PATH] [--skip-million] [--only NAM
 """
 
 import argparse
+import io
 import math
 import os
 import random
@@ -70,6 +71,26 @@ def showcase(out, showcase_path):
         text = f.read()
     text = text.replace("width: 800;", f"width: {WIDTH};").replace("height: 450;", f"height: {HEIGHT};")
     out.write(text)
+
+
+def soft_showcase(out, showcase_path, opaque):
+    """The showcase at its own 800x450 with its three lights soft (radius 0.5,
+    16 shadow samples: 48 shadow rays a hit); `opaque` takes the glass ball's
+    transmission away, so that shadow rays are any-hit queries."""
+    with open(showcase_path, encoding="ascii") as f:
+        text = f.read()
+    text = text.replace("        intensity:", "        radius: 0.5;\n        shadow_samples: 16;\n        intensity:")
+    if opaque:
+        text = text.replace("transmission: 0.9;", "transmission: 0.0;")
+    out.write(text)
+
+
+def soft_lights(write, out, *args):
+    """What `write` writes, its lights made soft as soft_showcase's are."""
+    text = io.StringIO()
+    write(text, *args)
+    out.write(text.getvalue().replace(
+        "; intensity: <", "; radius: 0.5; shadow_samples: 16; intensity: <"))
 
 
 def hall_of_mirrors(out):
@@ -374,6 +395,8 @@ def main():
 
     scenes = {
         "showcase": lambda out: showcase(out, args.showcase),
+        "showcase_soft": lambda out: soft_showcase(out, args.showcase, False),
+        "showcase_soft_opaque": lambda out: soft_showcase(out, args.showcase, True),
         "hall_of_mirrors": hall_of_mirrors,
         "forest": forest,
         "lights16": sixteen_lights,
@@ -384,6 +407,9 @@ def main():
         "mesh_100k": lambda out: knot_mesh(out, args.out_dir, 100000, "knot_100k.ply"),
         "mesh_1m": lambda out: knot_mesh(out, args.out_dir, 1000000, "knot_1m.ply"),
     }
+    # Soft-light twins of two race scenes (opaque, with a BVH), for the shadow rays' timings.
+    scenes["few_soft"] = lambda out: soft_lights(few, out, (WIDTH, HEIGHT))
+    scenes["nested_shells_soft_1024"] = lambda out: soft_lights(nested_shells, out, SQUARE)
     for name, write in TACHYON_SCENES.items():
         scenes[name] = lambda out, write=write: write(out, (WIDTH, HEIGHT))
         scenes[name + "_1024"] = lambda out, write=write: write(out, SQUARE)

@@ -2,10 +2,12 @@
 
 #include "geometry/bounds.hpp"
 #include "geometry/intersect.hpp"
+#include "jtracer/check.hpp"
 #include "render/float_ray.hpp"
 
 #include <glm/geometric.hpp>
 
+#include <algorithm>
 #include <bit>
 #include <cmath>
 #include <limits>
@@ -44,12 +46,13 @@ struct ClosestQuery {
     CylinderPart part;
 };
 
+// One ray, or a packet whose lanes name their ray by their id: Embree may
+// hand a packet's lanes to the callbacks one by one, in copies.
 struct OcclusionQuery {
     RTCIntersectContext context;
     const Geometry* geometry;
-    Vec3 origin, direction;
-    double t_min, t_max;
-    OccluderHint blocker;  // what blocked the ray, once something did
+    const ShadowRay* rays;
+    OccluderHint blocker;  // what blocked a ray, once something did
 };
 
 // Up to and including `t`, for the tie rule.
@@ -82,8 +85,35 @@ void accept(const RTCIntersectFunctionNArguments* args, double t) {
     RTCHitN_instID(hit, args->N, 0, 0) = RTC_INVALID_GEOMETRY_ID;
 }
 
-void mark_occluded(const RTCOccludedFunctionNArguments* args) {
-    RTCRayN_tfar(args->ray, args->N, 0) = -float_infinity;
+// Tests each live lane of the callback's rays against one surface.
+template <class Blocks>
+void occlude_lanes(const RTCOccludedFunctionNArguments* args, OccluderHint hit, Blocks blocks) {
+    auto& q = *reinterpret_cast<OcclusionQuery*>(args->context);
+    for (unsigned lane = 0; lane < args->N; ++lane) {
+        if (!args->valid[lane]) continue;
+        const ShadowRay& r = q.rays[RTCRayN_id(args->ray, args->N, lane)];
+        if (blocks(q.geometry, r)) {
+            q.blocker = hit;
+            RTCRayN_tfar(args->ray, args->N, lane) = -float_infinity;
+        }
+    }
+}
+
+// Lane `lane` of a packet, as set_float_ray sets a single ray; its id names it.
+template <class Packet>
+void set_float_lane(Packet& packet, unsigned lane, const ShadowRay& r) {
+    packet.org_x[lane] = static_cast<float>(r.origin.x);
+    packet.org_y[lane] = static_cast<float>(r.origin.y);
+    packet.org_z[lane] = static_cast<float>(r.origin.z);
+    packet.dir_x[lane] = static_cast<float>(r.direction.x);
+    packet.dir_y[lane] = static_cast<float>(r.direction.y);
+    packet.dir_z[lane] = static_cast<float>(r.direction.z);
+    packet.tnear[lane] = float_down(r.t_min);
+    packet.tfar[lane] = float_up(r.t_max);
+    packet.time[lane] = 0.0f;
+    packet.mask[lane] = 0xFFFFFFFFu;
+    packet.id[lane] = lane;
+    packet.flags[lane] = 0;
 }
 
 // Whether the line through the ray misses the shape's bounding sphere (the
@@ -234,13 +264,13 @@ void sphere_intersect(const RTCIntersectFunctionNArguments* args) {
 }
 
 void sphere_occluded(const RTCOccludedFunctionNArguments* args) {
-    if (!args->valid[0]) return;
-    auto& q = *reinterpret_cast<OcclusionQuery*>(args->context);
-    const WorldSphere& s = q.geometry->spheres[args->primID];
-    if (intersect_sphere(q.origin, q.direction, s.center, s.radius, q.t_min, q.t_max) != no_hit) {
-        q.blocker = {OccluderHint::Set::sphere, args->primID};
-        mark_occluded(args);
-    }
+    const unsigned index = args->primID;
+    occlude_lanes(
+        args, {OccluderHint::Set::sphere, index}, [index](const Geometry* g, const ShadowRay& r) {
+            const WorldSphere& s = g->spheres[index];
+            return intersect_sphere(r.origin, r.direction, s.center, s.radius, r.t_min, r.t_max) !=
+                   no_hit;
+        });
 }
 
 void shape_bounds(const RTCBoundsFunctionArguments* args) {
@@ -255,14 +285,13 @@ void shape_intersect(const RTCIntersectFunctionNArguments* args) {
 }
 
 void shape_occluded(const RTCOccludedFunctionNArguments* args) {
-    if (!args->valid[0]) return;
-    auto& q = *reinterpret_cast<OcclusionQuery*>(args->context);
-    const TransformedShape& s = q.geometry->shapes[args->primID];
-    CylinderPart part;
-    if (shape_distance(s, q.origin, q.direction, q.t_min, q.t_max, part) != no_hit) {
-        q.blocker = {OccluderHint::Set::shape, args->primID};
-        mark_occluded(args);
-    }
+    const unsigned index = args->primID;
+    occlude_lanes(args, {OccluderHint::Set::shape, index},
+                  [index](const Geometry* g, const ShadowRay& r) {
+                      CylinderPart part;
+                      return shape_distance(g->shapes[index], r.origin, r.direction, r.t_min,
+                                            r.t_max, part) != no_hit;
+                  });
 }
 
 bool closest_hit(const Geometry& geometry, const Vec3& origin, const Vec3& direction, double t_min,
@@ -348,6 +377,73 @@ bool closest_hit(const Geometry& geometry, const Vec3& origin, const Vec3& direc
     return true;
 }
 
+bool shapes_toward_disk(const Geometry& geometry, const Vec3& point, double lift,
+                        const Vec3& centre, double radius, DiskCandidates& out) {
+    out.count = 0;
+    const std::size_t bounded = geometry.spheres.size() + geometry.shapes.size();
+    if (bounded > max_disk_candidates) return false;
+    const Vec3 axis = centre - point;
+    const double axis_sq = glm::dot(axis, axis);
+    auto max_abs = [](const Vec3& v) {
+        return std::max({std::abs(v.x), std::abs(v.y), std::abs(v.z)});
+    };
+    // Far beyond the rounding of the distances below and of the rays' own
+    // origins, directions and disk points.
+    const double spread =
+        radius * (1.0 + 1e-6) + 2.0 * lift + 1e-7 * (max_abs(point) + max_abs(centre) + radius);
+    auto offer = [&](std::uint32_t listed, const Vec3& c, double r) {
+        const PaddedBound b = padded_bound(c, r, point);
+        const Vec3 f = c - point;
+        const double s = axis_sq > 0.0 ? std::clamp(glm::dot(f, axis) / axis_sq, 0.0, 1.0) : 0.0;
+        const Vec3 off = f - s * axis;
+        const double reach = b.radius + spread;
+        if (glm::dot(off, off) > reach * reach) return;
+        // Kept nearest first (insertion: a handful of shapes).
+        std::size_t k = out.count++;
+        const double nearest = std::max(0.0, b.nearest - 2.0 * lift);
+        for (; k > 0 && out.nearest[k - 1] > nearest; --k) {
+            out.nearest[k] = out.nearest[k - 1];
+            out.shapes[k] = out.shapes[k - 1];
+        }
+        out.nearest[k] = nearest;
+        out.shapes[k] = listed;
+    };
+    for (std::uint32_t i = 0; i < geometry.spheres.size(); ++i)
+        offer(i, geometry.spheres[i].center, geometry.spheres[i].radius);
+    for (std::uint32_t i = 0; i < geometry.shapes.size(); ++i)
+        offer(i | shape_flag, geometry.shapes[i].bounding_center,
+              std::sqrt(geometry.shapes[i].bounding_radius_sq));
+    return true;
+}
+
+bool occluded_among(const Geometry& geometry, const ListedShapes& candidates, const Vec3& origin,
+                    const Vec3& direction, double t_min, double t_max, OccluderHint* hint,
+                    const Departure& from) {
+    if (hint && hinted_blocks(geometry, *hint, origin, direction, t_min, t_max)) return true;
+    OccluderHint blocker;
+    bool blocked = false;
+    for (std::uint32_t i = 0; i < geometry.planes.size() && !blocked; ++i) {
+        const WorldPlane& p = geometry.planes[i];
+        if (intersect_plane(origin, direction, p.normal, p.distance, t_min, t_max) != no_hit) {
+            blocker = {OccluderHint::Set::plane, i};
+            blocked = true;
+        }
+    }
+    // A blocker lies nearer the origin than the ray's end.
+    const double reach = t_max * glm::length(direction) * (1.0 + 1e-9);
+    for (std::size_t k = 0; k < candidates.size() && !blocked && candidates.nearest[k] < reach;
+         ++k) {
+        if (listed_blocks(geometry, candidates.shapes[k], origin, direction, t_min, t_max)) {
+            blocker = hint_for(candidates.shapes[k]);
+            blocked = true;
+        }
+    }
+    if (!blocked && geometry.triangles)
+        blocked = triangle_blocks(*geometry.triangles, origin, direction, t_min, t_max, from);
+    if (blocked && hint) *hint = blocker;
+    return blocked;
+}
+
 bool occluded(const Geometry& geometry, const Vec3& origin, const Vec3& direction, double t_min,
               double t_max, OccluderHint* hint, const DirectionTable* light,
               const Departure& from) {
@@ -373,13 +469,11 @@ bool occluded(const Geometry& geometry, const Vec3& origin, const Vec3& directio
     } else if (!blocked && !geometry.bvh) {
         blocked = occluded_by_testing_all(geometry, origin, direction, t_min, t_max, blocker);
     } else if (!blocked) {
+        const ShadowRay one{origin, direction, t_min, t_max};
         OcclusionQuery q;
         rtcInitIntersectContext(&q.context);
         q.geometry = &geometry;
-        q.origin = origin;
-        q.direction = direction;
-        q.t_min = t_min;
-        q.t_max = t_max;
+        q.rays = &one;
         RTCRay ray;
         set_float_ray(ray, origin, direction, t_min, t_max);
         rtcOccluded1(geometry.bvh, &q.context, &ray);
@@ -390,6 +484,63 @@ bool occluded(const Geometry& geometry, const Vec3& origin, const Vec3& directio
         blocked = triangle_blocks(*geometry.triangles, origin, direction, t_min, t_max, from);
     if (blocked && hint) *hint = blocker;
     return blocked;
+}
+
+}  // namespace jt
+
+namespace jt {
+
+void occluded_together(const Geometry& geometry, std::span<const ShadowRay> rays, bool* blocked,
+                       OccluderHint* hint, const Departure& from) {
+    JT_DCHECK(rays.size() <= shadow_packet, "one packet of rays at most");
+    OccluderHint blocker;
+    bool any = false;
+    bool all = true;
+    for (std::size_t i = 0; i < rays.size(); ++i) {
+        const ShadowRay& r = rays[i];
+        blocked[i] =
+            hint && hinted_blocks(geometry, *hint, r.origin, r.direction, r.t_min, r.t_max);
+        for (std::uint32_t p = 0; p < geometry.planes.size() && !blocked[i]; ++p) {
+            const WorldPlane& plane = geometry.planes[p];
+            if (intersect_plane(r.origin, r.direction, plane.normal, plane.distance, r.t_min,
+                                r.t_max) != no_hit) {
+                blocker = {OccluderHint::Set::plane, p};
+                any = blocked[i] = true;
+            }
+        }
+        all = all && blocked[i];
+    }
+    if (!all && !geometry.bvh) {
+        for (std::size_t i = 0; i < rays.size(); ++i)
+            if (!blocked[i] && occluded_by_testing_all(geometry, rays[i].origin, rays[i].direction,
+                                                       rays[i].t_min, rays[i].t_max, blocker))
+                any = blocked[i] = true;
+    } else if (!all) {
+        OcclusionQuery q;
+        rtcInitIntersectContext(&q.context);
+        q.context.flags = RTC_INTERSECT_CONTEXT_FLAG_COHERENT;
+        q.geometry = &geometry;
+        q.rays = rays.data();
+        RTCRay16 packet;
+        // Embree loads the mask and the packet as whole vectors: aligned as they are.
+        alignas(64) std::array<int, shadow_packet> valid{};
+        // Idle lanes hold a copy of the first ray, so that no lane is garbage.
+        for (unsigned lane = 0; lane < shadow_packet; ++lane)
+            set_float_lane(packet, lane, rays[std::min<std::size_t>(lane, rays.size() - 1)]);
+        for (unsigned lane = 0; lane < rays.size(); ++lane) valid[lane] = blocked[lane] ? 0 : -1;
+        rtcOccluded16(valid.data(), geometry.bvh, &q.context, &packet);
+        for (unsigned lane = 0; lane < rays.size(); ++lane)
+            if (valid[lane] && packet.tfar[lane] < 0.0f) {
+                any = blocked[lane] = true;
+                blocker = q.blocker;
+            }
+    }
+    if (geometry.triangles)
+        for (std::size_t i = 0; i < rays.size(); ++i)
+            if (!blocked[i])
+                blocked[i] = triangle_blocks(*geometry.triangles, rays[i].origin, rays[i].direction,
+                                             rays[i].t_min, rays[i].t_max, from);
+    if (any && hint) *hint = blocker;
 }
 
 }  // namespace jt

@@ -9,7 +9,10 @@
 
 #include <embree3/rtcore.h>
 
+#include <array>
+#include <cstddef>
 #include <cstdint>
+#include <span>
 
 namespace jt {
 
@@ -54,6 +57,48 @@ struct OccluderHint {
 bool occluded(const Geometry& geometry, const Vec3& origin, const Vec3& direction, double t_min,
               double t_max, OccluderHint* hint = nullptr, const DirectionTable* light = nullptr,
               const Departure& from = {});
+
+// A shadow ray: any surface at some t in (t_min, t_max) blocks it.
+struct ShadowRay {
+    Vec3 origin, direction;
+    double t_min, t_max;
+};
+
+// occluded() of each of up to shadow_packet rays, blocked[i] for rays[i],
+// the same answers; their BVH walks go as one packet. For the rays of a soft
+// light from one hit, which leave one point for one small disk.
+inline constexpr std::size_t shadow_packet = 16;
+void occluded_together(const Geometry& geometry, std::span<const ShadowRay> rays, bool* blocked,
+                       OccluderHint* hint = nullptr, const Departure& from = {});
+
+// The shapes that may lie across a shadow ray of a soft light from one hit
+// (docs/language.md §14.1). The rays leave points within `lift` of `point` for
+// points of the light's disk of `radius` about `centre`, so every point of
+// every ray lies within radius + lift of the segment from `point` to `centre`:
+// a shape whose bounding sphere stays farther from that segment meets none.
+// Found once for the hit's M rays, they are listed nearest `point` first, as a
+// list around the rays' origins (ListedShapes) that closest_hit and
+// occluded_among walk instead of every shape or the BVH.
+inline constexpr std::size_t max_disk_candidates = 64;
+struct DiskCandidates {
+    std::array<std::uint32_t, max_disk_candidates> shapes;
+    std::array<double, max_disk_candidates> nearest;
+    std::size_t count = 0;
+    ListedShapes listed() const { return {{shapes.data(), count}, {nearest.data(), count}}; }
+};
+
+// False, leaving `out` unusable, for a geometry of more than max_disk_candidates
+// bounded shapes: testing each of those against the disk costs more than the
+// BVH walks it would spare.
+bool shapes_toward_disk(const Geometry& geometry, const Vec3& point, double lift,
+                        const Vec3& centre, double radius, DiskCandidates& out);
+
+// occluded() with the spheres and shapes limited to `candidates`, a list
+// around the ray's origin holding every shape that may lie across the ray
+// (planes and triangles are all tested): the same answer.
+bool occluded_among(const Geometry& geometry, const ListedShapes& candidates, const Vec3& origin,
+                    const Vec3& direction, double t_min, double t_max, OccluderHint* hint,
+                    const Departure& from);
 
 // Embree callbacks for the two user geometries; prepare_scene registers them.
 void sphere_bounds(const RTCBoundsFunctionArguments* args);

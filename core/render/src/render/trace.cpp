@@ -14,6 +14,7 @@
 #include <algorithm>
 #include <array>
 #include <cmath>
+#include <span>
 #include <vector>
 
 namespace jt {
@@ -31,13 +32,16 @@ double max_abs(const Vec3& v) {
 // (0, t_max): the product of the transmission of every surface crossed, 0 at
 // the first opaque one (docs/language.md §13.2). Each query starts from the
 // same origin past the previous hit, so no surface is counted twice.
+// `candidates`: a list around the origin of every shape that may lie across
+// the ray before t_max (a nearer hit is all the loop uses), or null.
 double transmittance(const PreparedScene& scene, const Vec3& origin, const Vec3& direction,
-                     double t_max, const Departure& from) {
+                     double t_max, const Departure& from,
+                     const ListedShapes* candidates = nullptr) {
     double through = 1.0;
     double t_lower = 0.0;
     Hit hit;
     while (through > 0.0 &&
-           closest_hit(*scene.geometry, origin, direction, t_lower, hit, nullptr, from) &&
+           closest_hit(*scene.geometry, origin, direction, t_lower, hit, candidates, from) &&
            hit.t < t_max) {
         through *= scene.materials[scene.material_of[hit.source]].transmission;
         t_lower = hit.t;
@@ -103,7 +107,8 @@ SurfaceHit first_surface(const Geometry& geometry, const Vec3& o, const Vec3& d,
 // points (docs/language.md §14.1), summed in index order. Its rays all leave
 // one point but toward points off the light's centre, so the light's
 // direction table (built for rays through the centre) does not apply; the
-// occluder hint only orders the tests and never changes an answer.
+// shapes near the cone from the hit to the disk, found once for all its rays,
+// do. The occluder hint only orders the tests and never changes an answer.
 double disk_visibility(const PreparedScene& scene, const PointLight& light, const SurfaceHit& s,
                        const Vec3& l, const PixelSample& sample, OccluderHint& hint) {
     const LightDisk disk = light_disk(light.position, light.radius, l);
@@ -112,28 +117,53 @@ double disk_visibility(const PreparedScene& scene, const PointLight& light, cons
     const Vec3 above = s.lifted;
     const Vec3 below = s.point - s.offset * s.geometric;
     const Departure from{s.triangle, s.point};
+    DiskCandidates near;
+    const bool culled =
+        shapes_toward_disk(*scene.geometry, s.point, s.offset, light.position, light.radius, near);
+    const ListedShapes listed = near.listed();
+    // In packets of rays: v of each, then the sum in index order. Rays left to
+    // the BVH wait in `rays` (their v is 1 until the packet says otherwise).
     double sum = 0.0;
-    for (int m = 0; m < count; ++m) {
-        const Vec3 q = disk_point(disk, m, count, turn);
-        const Vec3 l_m = glm::normalize(q - s.point);
-        double v = 0.0;
-        if (glm::dot(s.normal, l_m) > 0.0) {
+    std::array<double, shadow_packet> v;
+    std::array<ShadowRay, shadow_packet> rays;
+    std::array<int, shadow_packet> ray_of;
+    for (int first = 0; first < count; first += static_cast<int>(shadow_packet)) {
+        const int n = std::min(count - first, static_cast<int>(shadow_packet));
+        std::size_t waiting = 0;
+        for (int k = 0; k < n; ++k) {
+            const Vec3 q = disk_point(disk, first + k, count, turn);
+            const Vec3 l_m = glm::normalize(q - s.point);
+            v[k] = 0.0;
+            if (!(glm::dot(s.normal, l_m) > 0.0)) continue;
             // Toward a point behind the face (a smooth normal on a mesh), the
             // ray starts under it and only its own triangle cannot block it.
             const Vec3 origin = glm::dot(s.geometric, l_m) < 0.0 ? below : above;
             const Vec3 path = q - origin;
             const double length = glm::length(path);
-            if (length > 0.0) {
-                if (scene.has_transmission)
-                    v = transmittance(scene, origin, path / length, length, from);
-                else
-                    v = occluded(*scene.geometry, origin, path / length, 0.0, length, &hint,
-                                 nullptr, from)
-                            ? 0.0
-                            : 1.0;
+            if (!(length > 0.0)) continue;
+            const Vec3 direction = path / length;
+            if (scene.has_transmission) {
+                v[k] = transmittance(scene, origin, direction, length, from,
+                                     culled ? &listed : nullptr);
+            } else if (culled) {
+                v[k] = occluded_among(*scene.geometry, listed, origin, direction, 0.0, length,
+                                      &hint, from)
+                           ? 0.0
+                           : 1.0;
+            } else {
+                v[k] = 1.0;
+                rays[waiting] = {origin, direction, 0.0, length};
+                ray_of[waiting++] = k;
             }
         }
-        sum += v;
+        if (waiting > 0) {
+            std::array<bool, shadow_packet> blocked;
+            occluded_together(*scene.geometry, std::span(rays.data(), waiting), blocked.data(),
+                              &hint, from);
+            for (std::size_t w = 0; w < waiting; ++w)
+                if (blocked[w]) v[ray_of[w]] = 0.0;
+        }
+        for (int k = 0; k < n; ++k) sum += v[k];
     }
     return sum / count;
 }
