@@ -80,6 +80,7 @@ Expected<LoadedScene> load_scene_file(const std::filesystem::path& path, ParseOp
     if (!text) return text.error();
     LoadedScene loaded;
     loaded.path = path.string();
+    if (options.main_file.empty()) options.main_file = loaded.path;
     loaded.options = options;
     loaded.text = std::move(*text);
     loaded.parsed = parse_scene(loaded.text, options);
@@ -108,9 +109,10 @@ std::vector<Diagnostic> check_scene(const LoadedScene& loaded) {
 }
 
 std::string format_diagnostics(const std::vector<Diagnostic>& diagnostics,
-                               std::string_view filename, std::string_view source) {
+                               std::string_view filename, std::string_view source,
+                               std::span<const SourceFile> files) {
     std::string out;
-    for (const Diagnostic& d : diagnostics) out += format_diagnostic(d, filename, source);
+    for (const Diagnostic& d : diagnostics) out += format_diagnostic(d, filename, source, files);
     return out;
 }
 
