@@ -197,12 +197,30 @@ Expected<void> save_scene_copy(SceneDocument& doc, const std::filesystem::path& 
     if (doc.draft) return Error{"the text has errors (see Diagnostics): fix them before saving"};
     SourceEditResult edit = apply_scene_edits(doc.text, doc.source, doc.original, doc.scene);
     if (!edit.ok()) return Error{edit.error};
-    // Check before writing: the new text must mean exactly the edited scene.
-    ParseResult check = parse_scene(edit.text, parse_options_for(doc.path));
+    if (!edit.files.empty() && path != doc.path)
+        return Error{
+            "values read from included files are saved in place (Save scene), "
+            "not into a copy"};
+    // Check before writing: the new texts must mean exactly the edited
+    // scene. The included files are read as they would be written.
+    ParseOptions options = parse_options_for(doc.path);
+    options.read_include = [&](const std::string& file,
+                               std::uintmax_t max_bytes) -> Expected<IncludedText> {
+        Expected<IncludedText> read = read_include_file(file, max_bytes);
+        if (!read) return read;
+        for (const EditedFile& edited : edit.files)
+            if (doc.source.files[edited.file - 1].canonical == read->canonical)
+                read->text = edited.text;
+        return read;
+    };
+    ParseResult check = parse_scene(edit.text, options);
     if (!check.ok() || check.scene != doc.scene)
         return Error{
             "internal error: the edited text would not read back as the edited scene; "
             "the file was left as it was"};
+    for (const EditedFile& edited : edit.files)
+        if (Expected<void> written = write_text_atomically(edited.path, edited.text); !written)
+            return written;
     if (Expected<void> written = write_text_atomically(path, edit.text); !written) return written;
     doc.path = path;
     doc.diagnostics_path = path;

@@ -71,6 +71,24 @@ TEST_F(ViewerIncludes, AMissingIncludedFileAppearingReloads) {
     EXPECT_EQ(radius_of_first(state), 3.0);
 }
 
+TEST_F(ViewerIncludes, SavingAnEditOfAnIncludedValueWritesThatFile) {
+    const std::string ball_text = "# ball\nsphere { center: <0, 0, -5>; radius: 1; }  # one\n";
+    save_as_editor(ball, ball_text);
+    save_as_editor(main, kMain);
+    open_scene(state, main);
+    ASSERT_TRUE(state.doc.loaded) << format_diagnostics(state.doc);
+    edit_scene(state, [](Scene& s) { std::get<Sphere>(s.primitives[0].shape).radius = 1.5; });
+    const Expected<void> saved = save_scene_in_place(state.doc);
+    ASSERT_TRUE(saved) << saved.error().message;
+    EXPECT_EQ(read_file(main), kMain);
+    EXPECT_EQ(read_file(ball), "# ball\nsphere { center: <0, 0, -5>; radius: 1.5; }  # one\n");
+    EXPECT_FALSE(scene_edited(state.doc));
+    // Not into a copy: the included file would be changed under the original.
+    edit_scene(state, [](Scene& s) { std::get<Sphere>(s.primitives[0].shape).radius = 2; });
+    EXPECT_FALSE(save_scene_copy(state.doc, scratch.path() / "copy.jts"));
+    EXPECT_FALSE(fs::exists(scratch.path() / "copy.jts"));
+}
+
 TEST_F(ViewerIncludes, ADiagnosticInAnIncludedFileIsQuotedFromIt) {
     save_as_editor(ball, "sphere { radius: -1; }\n");
     save_as_editor(main, kMain);
