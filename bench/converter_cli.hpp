@@ -61,7 +61,7 @@ inline std::optional<LoadedScene> load_checked_scene(const char* program, const 
     }
     auto diagnostics = check_scene(*read);
     if (has_errors(diagnostics)) {
-        std::cerr << format_diagnostics(diagnostics, read->path, read->text);
+        std::cerr << format_diagnostics(diagnostics, *read);
         exit_code = exit_scene_errors;
         return std::nullopt;
     }

@@ -202,7 +202,7 @@ int run_info_command(int argc, char** argv) {
     std::vector<Diagnostic> diagnostics = check_scene(*loaded);
     name_setting_flags(diagnostics);
     if (has_errors(diagnostics)) {
-        std::cerr << format_diagnostics(diagnostics, loaded->path, loaded->text);
+        std::cerr << format_diagnostics(diagnostics, *loaded);
         return exit_scene_error;
     }
     const Expected<json> description = describe(loaded->parsed.scene);

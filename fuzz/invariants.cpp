@@ -5,6 +5,7 @@
 #include "jtracer/model_file.hpp"
 #include "jtracer/parser.hpp"
 #include "jtracer/serializer.hpp"
+#include "jtracer/source_map.hpp"
 #include "jtracer/texture.hpp"
 #include "jtracer/validate.hpp"
 
@@ -17,6 +18,7 @@
 #include <cstdlib>
 #include <filesystem>
 #include <fstream>
+#include <map>
 #include <new>
 #include <optional>
 #include <vector>
@@ -44,18 +46,45 @@ std::string describe(const Diagnostic& d) {
     return std::to_string(d.pos.line) + ":" + std::to_string(d.pos.column) + " '" + d.message + "'";
 }
 
-std::string check_located(const std::vector<Diagnostic>& diagnostics, std::string_view text,
-                          const char* stage) {
-    const std::vector<std::size_t> lengths = line_lengths(text);
+// The only files an `include` of a fuzz input reads: texts of the fuzzer's
+// own, so that no input reads the disk, yet includes, cycles, unclosed blocks
+// and names across files are all within reach of the dictionary.
+const std::map<std::string, std::string, std::less<>>& fuzz_files() {
+    static const std::map<std::string, std::string, std::less<>> files{
+        {"defs.jts", "define r = 2;\nmaterial m { pigment: <1, 0, 0>; }\n"},
+        {"ball.jts", "sphere { radius: r; material: m; }\n"},
+        {"camera.jts", "perspective_camera { position: <0, 0, -5>; }\n"},
+        {"open.jts", "sphere {\n"},
+        {"self.jts", "include \"self.jts\";\n"},
+        {"sub/twice.jts", "include \"../ball.jts\"; include \"../ball.jts\";\n"},
+    };
+    return files;
+}
+
+Expected<IncludedText> read_fuzz_file(const std::string& path, std::uintmax_t) {
+    const std::string name = std::filesystem::path(path).lexically_normal().generic_string();
+    const auto found = fuzz_files().find(name);
+    if (found == fuzz_files().end())
+        return Error{"cannot read '" + name + "': the fuzzer reads only files of its own"};
+    return IncludedText{"/fuzz/" + name, found->second};
+}
+
+std::string check_located(const std::vector<Diagnostic>& diagnostics, std::string_view main_text,
+                          const char* stage, std::span<const SourceFile> files = {}) {
     for (const Diagnostic& d : diagnostics) {
         if (d.message.empty()) return std::string(stage) + ": empty message at " + describe(d);
         if (d.pos.line == 0) continue;
+        if (d.pos.file > files.size())
+            return std::string(stage) + ": diagnostic in no file at " + describe(d);
+        const std::string_view text = file_text(files, main_text, d.pos.file);
+        const std::vector<std::size_t> lengths = line_lengths(text);
         if (d.pos.line < 0 || static_cast<std::size_t>(d.pos.line) > lengths.size() ||
             d.pos.column < 1 ||
             static_cast<std::size_t>(d.pos.column) > lengths[d.pos.line - 1] + 1)
             return std::string(stage) + ": diagnostic outside the text at " + describe(d);
-        std::string formatted = format_diagnostic(d, "fuzz.jts", text);
-        if (!formatted.starts_with("fuzz.jts:"))
+        std::string formatted = format_diagnostic(d, "fuzz.jts", main_text, files);
+        const std::string_view name = file_name(files, "fuzz.jts", d.pos.file);
+        if (!formatted.starts_with(std::string(name) + ":"))
             return std::string(stage) + ": badly formatted diagnostic " + formatted;
     }
     return {};
@@ -69,11 +98,15 @@ std::string check_diagnostics_within(const std::vector<Diagnostic>& diagnostics,
 }
 
 std::string check_scene_text(std::string_view text) {
-    ParseResult parsed = parse_scene(text);
-    if (std::string e = check_located(parsed.diagnostics, text, "parse"); !e.empty()) return e;
+    ParseOptions options;
+    options.read_include = read_fuzz_file;
+    ParseResult parsed = parse_scene(text, options);
+    const std::span<const SourceFile> files = parsed.source.files;
+    if (std::string e = check_located(parsed.diagnostics, text, "parse", files); !e.empty())
+        return e;
     if (!parsed.ok()) return {};
     std::vector<Diagnostic> checks = validate_scene(parsed.scene, parsed.source);
-    if (std::string e = check_located(checks, text, "validate"); !e.empty()) return e;
+    if (std::string e = check_located(checks, text, "validate", files); !e.empty()) return e;
 
     const std::string canonical = serialize_scene(parsed.scene);
     ParseResult reparsed = parse_scene(canonical);

@@ -56,7 +56,7 @@ FrameSetup set_up_frame(std::string_view program, const RenderFlags& flags, Load
     name_setting_flags(diagnostics);
     const bool errors = has_errors(diagnostics);
     if (flags.quiet && !errors) diagnostics.clear();  // quiet drops warnings, never errors
-    setup.message = format_diagnostics(diagnostics, loaded.path, loaded.text);
+    setup.message = format_diagnostics(diagnostics, loaded);
     setup.diagnostics = std::move(diagnostics);
     if (errors) {
         setup.exit_code = exit_scene_error;

@@ -137,11 +137,6 @@ TEST(Names, NamedMaterialMistakes) {
               "render_settings, cameras, scene)");
 }
 
-TEST(Names, IncludeIsNotSupportedYet) {
-    EXPECT_EQ(brief("include \"a.jts\";"),
-              "1:1: error: 'include' is not supported yet by this version of JTracer");
-}
-
 TEST(Names, CommandLineDefinesWinWithANote) {
     ParseOptions options;
     options.defines = {{"r", "3"}, {"s", "\"out.bmp\""}};

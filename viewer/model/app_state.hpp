@@ -204,10 +204,12 @@ struct CheckState {
 // The file on disk: watching it and the files it names, loading, saving, and
 // the questions they leave for the user.
 struct FileState {
-    explicit FileState(const ViewerConfig& config) : asset_watcher(config.watch_interval) {}
+    explicit FileState(const ViewerConfig& config)
+        : asset_watcher(config.watch_interval), include_watcher(config.watch_interval) {}
     FileWatcher watcher;
-    FileSetWatcher asset_watcher;  // the model and image files the scene names
-    SceneLoader loader;            // opens and reloads off the UI thread
+    FileSetWatcher asset_watcher;    // the model and image files the scene names
+    FileSetWatcher include_watcher;  // the files the scene includes (SceneDocument::included_files)
+    SceneLoader loader;              // opens and reloads off the UI thread
     RecentFiles recent;
     LoadTimes last_load_times;  // of the last open or reload taken in
     // A newer text of the file, loaded while there were unsaved edits: held

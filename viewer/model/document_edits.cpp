@@ -45,7 +45,7 @@ Expected<void> rewrite_text(AppState& state,
     } else {
         // The panels' edits become text first, so that the edit starts from what is shown.
         const std::string text = document_text(doc);
-        const ParseResult parsed = parse_scene(text);
+        const ParseResult parsed = parse_scene(text, parse_options_for(state.doc.path));
         edited = edit(SceneText{text, parsed.scene, parsed.source});
     }
     if (!edited) return Error{"Not done: " + edited.error().message};

@@ -183,7 +183,12 @@ bool assets_changed(AppState& state) {
 
 bool reload_if_changed(AppState& state) {
     const bool assets = state.doc.loaded && assets_changed(state);
-    if (!state.files.watcher.poll()) return assets;
+    bool included = false;
+    if (state.files.include_watcher.due()) {
+        state.files.include_watcher.watch(state.doc.included_files);
+        included = !state.files.include_watcher.poll().empty();
+    }
+    if (!state.files.watcher.poll() && !included) return assets;
     reload_scene(state);
     return true;
 }

@@ -39,6 +39,11 @@ LoadAttempt attempt_load(const std::filesystem::path& path) {
 void accept_load(SceneDocument& doc, const std::filesystem::path& path, LoadAttempt attempt) {
     doc.diagnostics = std::move(attempt.diagnostics);
     doc.diagnostics_path = path;
+    doc.diagnostics_files = attempt.source.files;
+    doc.included_files.clear();
+    for (const SourceFile& file : attempt.source.files) doc.included_files.push_back(file.path);
+    for (const std::string& file : attempt.source.unread_includes)
+        doc.included_files.push_back(file);
     doc.load_failed = !attempt.ok;
     doc.file_unread = !attempt.read;
     doc.file_deleted = attempt.missing;
@@ -81,7 +86,7 @@ DocumentVersion version_of(const SceneDocument& doc) {
 
 void restore_version(SceneDocument& doc, const DocumentVersion& version) {
     if (version.text != doc.text) {
-        ParseResult parsed = parse_scene(version.text);
+        ParseResult parsed = parse_scene(version.text, parse_options_for(doc.path));
         parsed.scene.asset_folder = doc.original.asset_folder;
         take_text(doc, version.text, std::move(parsed));
     }
@@ -122,7 +127,7 @@ void take_text(SceneDocument& doc, std::string text, ParseResult parsed) {
 }
 
 Expected<void> replace_text(SceneDocument& doc, std::string text) {
-    ParseResult parsed = parse_scene(text);
+    ParseResult parsed = parse_scene(text, parse_options_for(doc.path));
     for (const Diagnostic& d : parsed.diagnostics)
         if (d.severity == Severity::error)
             return Error{"the edited text does not parse (" + std::to_string(d.pos.line) + ":" +
@@ -136,7 +141,7 @@ std::string format_diagnostics(const SceneDocument& doc) {
     std::string out;
     const std::string name = doc.diagnostics_path.string();
     for (const Diagnostic& d : doc.diagnostics)
-        out += format_diagnostic(d, name, doc.diagnostics_source);
+        out += format_diagnostic(d, name, doc.diagnostics_source, doc.diagnostics_files);
     return out;
 }
 
@@ -178,7 +183,7 @@ Expected<Scene> reapply_edits(const SceneDocument& doc, const LoadAttempt& newer
             "changed values can be re-applied to a newer file"};
     SourceEditResult edit = apply_scene_edits(newer.text, newer.source, doc.original, doc.scene);
     if (!edit.ok()) return Error{edit.error};
-    ParseResult parsed = parse_scene(edit.text);
+    ParseResult parsed = parse_scene(edit.text, parse_options_for(doc.path));
     if (!parsed.ok()) return Error{"the edits do not fit the new text"};
     return std::move(parsed.scene);
 }
@@ -192,12 +197,30 @@ Expected<void> save_scene_copy(SceneDocument& doc, const std::filesystem::path& 
     if (doc.draft) return Error{"the text has errors (see Diagnostics): fix them before saving"};
     SourceEditResult edit = apply_scene_edits(doc.text, doc.source, doc.original, doc.scene);
     if (!edit.ok()) return Error{edit.error};
-    // Check before writing: the new text must mean exactly the edited scene.
-    ParseResult check = parse_scene(edit.text);
+    if (!edit.files.empty() && path != doc.path)
+        return Error{
+            "values read from included files are saved in place (Save scene), "
+            "not into a copy"};
+    // Check before writing: the new texts must mean exactly the edited
+    // scene. The included files are read as they would be written.
+    ParseOptions options = parse_options_for(doc.path);
+    options.read_include = [&](const std::string& file,
+                               std::uintmax_t max_bytes) -> Expected<IncludedText> {
+        Expected<IncludedText> read = read_include_file(file, max_bytes);
+        if (!read) return read;
+        for (const EditedFile& edited : edit.files)
+            if (doc.source.files[edited.file - 1].canonical == read->canonical)
+                read->text = edited.text;
+        return read;
+    };
+    ParseResult check = parse_scene(edit.text, options);
     if (!check.ok() || check.scene != doc.scene)
         return Error{
             "internal error: the edited text would not read back as the edited scene; "
             "the file was left as it was"};
+    for (const EditedFile& edited : edit.files)
+        if (Expected<void> written = write_text_atomically(edited.path, edited.text); !written)
+            return written;
     if (Expected<void> written = write_text_atomically(path, edit.text); !written) return written;
     doc.path = path;
     doc.diagnostics_path = path;
@@ -211,6 +234,7 @@ Expected<void> save_scene_copy(SceneDocument& doc, const std::filesystem::path& 
     doc.diagnostics = check.diagnostics;
     doc.parse_diagnostics = std::move(check.diagnostics);
     doc.diagnostics_source = doc.text;
+    doc.diagnostics_files = doc.source.files;
     doc.load_failed = false;
     return {};
 }

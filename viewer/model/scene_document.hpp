@@ -33,11 +33,16 @@ struct SceneDocument {
     std::vector<Diagnostic> parse_diagnostics;  // the parser's warnings about `text`
     // Of the latest load attempt, or of the edited scene (check_edits).
     std::vector<Diagnostic> diagnostics;
-    std::string diagnostics_source;          // the text they point into (to quote lines)
-    std::filesystem::path diagnostics_path;  // the file they are about
-    bool load_failed = false;                // the latest load attempt had errors: `scene` is older
-    bool file_unread = false;                // the latest load could not read the file at all
-    bool file_deleted = false;               // ... because it is not there
+    std::string diagnostics_source;             // the text they point into (to quote lines)
+    std::filesystem::path diagnostics_path;     // the file they are about
+    std::vector<SourceFile> diagnostics_files;  // the included files they may be in
+    // Every file the latest load read or tried to read through `include`:
+    // watched like the scene file, so that a change, or a missing file
+    // appearing, reloads (docs/language.md §15.5).
+    std::vector<std::filesystem::path> included_files;
+    bool load_failed = false;   // the latest load attempt had errors: `scene` is older
+    bool file_unread = false;   // the latest load could not read the file at all
+    bool file_deleted = false;  // ... because it is not there
     // Text typed in the text editor, not yet taken in: waiting for its check,
     // or with errors (`diagnostics` then describe it and `scene` is the last
     // good one).
@@ -52,6 +57,14 @@ struct SceneDocument {
 };
 
 // Every change of doc.scene is announced with this.
+// How the viewer parses a text of the file `path`: its includes are read
+// from the file's folder (docs/language.md §15.5).
+inline ParseOptions parse_options_for(const std::filesystem::path& path) {
+    ParseOptions options;
+    options.main_file = path.string();
+    return options;
+}
+
 inline void note_scene_changed(SceneDocument& doc) {
     ++doc.revision;
 }

@@ -9,7 +9,8 @@ namespace jt::view {
 CheckedText check_text(std::uint64_t id, std::string text, const std::filesystem::path& path) {
     LoadedScene loaded;
     loaded.path = path.string();
-    loaded.parsed = parse_scene(text);
+    loaded.options.main_file = loaded.path;
+    loaded.parsed = parse_scene(text, loaded.options);
     loaded.parsed.scene.asset_folder = path.parent_path().string();
     loaded.text = std::move(text);
     CheckedText checked;

@@ -28,7 +28,8 @@ void diagnostics_panel(AppState& state) {
             error ? ImVec4(1.0f, 0.45f, 0.4f, 1.0f) : ImVec4(1.0f, 0.85f, 0.4f, 1.0f);
         // As the CLI prints it: the message, then the source line and a caret
         // under the column, in the monospaced font so that the caret lines up.
-        const std::string text = format_diagnostic(d, file, state.doc.diagnostics_source);
+        const std::string text =
+            format_diagnostic(d, file, state.doc.diagnostics_source, state.doc.diagnostics_files);
         const std::size_t first_line = text.find('\n');
         ImGui::PushStyleColor(ImGuiCol_Text, colour);
         ImGui::TextWrapped("%s", text.substr(0, first_line).c_str());

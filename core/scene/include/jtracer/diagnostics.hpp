@@ -1,6 +1,7 @@
 #pragma once
 // Compiler-style diagnostics: FILE:LINE:COL: error: MESSAGE, the source line, a caret.
 
+#include <cstdint>
 #include <string>
 #include <string_view>
 #include <vector>
@@ -8,10 +9,13 @@
 namespace jt {
 
 // 1-based line and column (columns count bytes). line == 0 means "no location":
-// the diagnostic is about the file as a whole.
+// the diagnostic is about the file as a whole. `file` says which text: 0 the
+// main file, k > 0 the k-th included file read (SceneSource::files[k - 1],
+// jtracer/source_files.hpp), so that every span and message knows its file.
 struct SourcePos {
     int line = 0;
     int column = 0;
+    std::uint32_t file = 0;
     bool operator==(const SourcePos&) const = default;
 };
 

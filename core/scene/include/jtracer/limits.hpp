@@ -44,4 +44,14 @@ inline constexpr double kMaxMagnitude = 1e9;
 // this bounds its stack whatever the input.
 inline constexpr int kMaxExpressionNesting = 256;
 
+// Includes inside one another (docs/language.md §15.5): the main file has
+// depth 0, and a file may be opened at depth 32 at most. The parser recurses
+// once per level, so this also bounds its stack.
+inline constexpr int kMaxIncludeDepth = 32;
+
+// Readings of included files in one scene, counting every reading of a file
+// included several times. Nesting alone would let a few small files that each
+// include the next twice be read 2^32 times; past this the scene is refused.
+inline constexpr std::size_t kMaxIncludeReadings = 4096;
+
 }  // namespace jt

@@ -7,6 +7,8 @@
 #include "jtracer/scene.hpp"
 #include "jtracer/source_map.hpp"
 
+#include <cstdint>
+#include <functional>
 #include <string>
 #include <string_view>
 #include <vector>
@@ -21,6 +23,21 @@ struct Define {
     bool operator==(const Define&) const = default;
 };
 
+// An included file read: its identity (absolute, symlinks resolved) and text.
+struct IncludedText {
+    std::string canonical;
+    std::string text;
+};
+
+// Reads the file an `include` names, at most `max_bytes` of it; the error says
+// which file and why ("cannot read 'a.jts': no such file").
+using IncludeReader =
+    std::function<Expected<IncludedText>(const std::string& path, std::uintmax_t max_bytes)>;
+
+// The reader parse_scene uses by default: the file system, through the scene
+// loader's read_text_file.
+Expected<IncludedText> read_include_file(const std::string& path, std::uintmax_t max_bytes);
+
 struct ParseOptions {
     // False: leave ParseResult::source empty. A tool that only renders needs
     // the source map only to locate validation findings, and for a million
@@ -32,6 +49,15 @@ struct ParseOptions {
     std::vector<Define> defines = {};
     // The value of `clock` (docs/language.md §15.4).
     double clock = 0.0;
+    // The main file's path as given (docs/language.md §15.5): `include`
+    // paths are relative to its folder, and a diagnostic in an included file
+    // is named from it ("scenes/a.jts" for `include "a.jts";` in
+    // "scenes/main.jts"). Empty for a text of no file: includes are then
+    // relative to the working directory.
+    std::string main_file = {};
+    // How included files are read; empty: read_include_file. The fuzzer
+    // confines it to files of its own.
+    IncludeReader read_include = {};
 };
 
 // Splits and checks one `--define` argument "NAME=VALUE": NAME a name that is

@@ -7,7 +7,7 @@
 //   if (!loaded) { report loaded.error().message; stop; }
 //   ... apply --width/--height/--camera to loaded->parsed.scene ...
 //   auto diagnostics = jt::check_scene(*loaded);   // parse + validation
-//   std::cerr << jt::format_diagnostics(diagnostics, loaded->path, loaded->text);
+//   std::cerr << jt::format_diagnostics(diagnostics, *loaded);
 //   if (jt::has_errors(diagnostics)) stop;
 
 #include "jtracer/diagnostics.hpp"
@@ -16,6 +16,7 @@
 
 #include <cstdint>
 #include <filesystem>
+#include <span>
 #include <string>
 #include <string_view>
 #include <vector>
@@ -33,11 +34,12 @@ Expected<std::string> read_text_file(const std::filesystem::path& path,
 struct LoadedScene {
     std::string path;      // as given: the FILE of FILE:LINE:COL diagnostics
     std::string text;      // the file's contents
-    ParseResult parsed;    // scene, source spans and parse diagnostics
+    ParseResult parsed;    // scene, source spans (included files too) and parse diagnostics
     ParseOptions options;  // what it was parsed with
 };
 
-// Reads and parses; fails only when the file cannot be read (mistakes in the
+// Reads and parses, with `options.main_file` set to `path` when empty (so
+// includes are read from its folder); fails only when the file cannot be read (mistakes in the
 // text are diagnostics). Does not validate: apply any overrides to
 // `parsed.scene` first, then call check_scene.
 Expected<LoadedScene> load_scene_file(const std::filesystem::path& path, ParseOptions options = {});
@@ -56,8 +58,16 @@ struct CheckOptions {
 // primitives' records only when a finding concerns a primitive).
 std::vector<Diagnostic> check_scene(const LoadedScene& loaded, CheckOptions options = {});
 
-// Every diagnostic formatted by format_diagnostic, concatenated.
+// Every diagnostic formatted by format_diagnostic, concatenated; `files`
+// are the included files (SceneSource::files) a diagnostic may be in.
 std::string format_diagnostics(const std::vector<Diagnostic>& diagnostics,
-                               std::string_view filename, std::string_view source);
+                               std::string_view filename, std::string_view source,
+                               std::span<const SourceFile> files = {});
+
+// The same for a loaded scene: named as given, with its included files.
+inline std::string format_diagnostics(const std::vector<Diagnostic>& diagnostics,
+                                      const LoadedScene& loaded) {
+    return format_diagnostics(diagnostics, loaded.path, loaded.text, loaded.parsed.source.files);
+}
 
 }  // namespace jt

@@ -415,6 +415,16 @@ constexpr std::span<const std::string_view> block_keywords() {
     return schema_detail::kBlockKeywords;
 }
 
+// The string properties that name a file beside the scene: in an included
+// file they are relative to that file's folder (docs/language.md §15.5).
+inline constexpr std::array<std::string_view, 3> kFileProperties{"file", "image_map",
+                                                                 "background_map"};
+constexpr bool names_a_file(std::string_view property) {
+    for (std::string_view name : kFileProperties)
+        if (name == property) return true;
+    return false;
+}
+
 // The transform block's operations, in the order messages list them.
 constexpr std::span<const TransformOpSpec> transform_ops() {
     return schema_detail::kTransformOps;

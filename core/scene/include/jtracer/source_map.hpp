@@ -15,6 +15,7 @@
 //   for (const BlockSource& child : children_of(source, block)) ...
 
 #include "jtracer/diagnostics.hpp"
+#include "jtracer/source_files.hpp"
 
 #include <cstddef>
 #include <cstdint>
@@ -26,7 +27,9 @@
 
 namespace jt {
 
-// Offsets are 32-bit: parse_scene refuses texts of 4 GiB or more.
+// Offsets are 32-bit: parse_scene refuses texts of 4 GiB or more. The offset
+// is into the text of file `pos.file` (jtracer/source_files.hpp): a block,
+// its properties and its children are all in one file.
 struct TextSpan {
     std::uint32_t offset = 0;  // byte offset into the text
     std::uint32_t length = 0;
@@ -88,6 +91,13 @@ struct SceneSource {
     std::vector<BlockSource> children;           // every primitive's nested blocks
     std::vector<PropertySource> properties;      // every block's properties
     std::vector<DefinitionSource> definitions;   // top-level defines and named materials
+    // Every reading of an included file, in reading order (SourcePos::file
+    // k > 0 is files[k - 1]); empty for a scene without `include`. Kept even
+    // when parsed without a source map: diagnostics quote these texts.
+    std::vector<SourceFile> files;
+    // The paths of included files that could not be read, for a watcher to
+    // notice when they appear.
+    std::vector<std::string> unread_includes;
     bool operator==(const SceneSource&) const = default;
 };
 

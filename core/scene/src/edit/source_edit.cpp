@@ -85,7 +85,8 @@ std::vector<Change> changes(const Block& a, const Block& b, Fail fail) {
 // Collects the edits for one save, then splices them in one go.
 class SourceWriter {
   public:
-    SourceWriter(std::string_view text, const SceneSource& source) : text_(text), source_(source) {}
+    SourceWriter(std::string_view text, const SceneSource& source)
+        : text_(text), source_(source), edits_(source.files.size() + 1) {}
 
     std::span<const PropertySource> properties(const BlockSource& block) const {
         return properties_of(source_, block);
@@ -102,7 +103,45 @@ class SourceWriter {
     }
     const std::string& error() const { return error_; }
     int changed() const { return changed_; }
-    std::string result() const { return edit::apply_text_edits(text_, edits_); }
+    std::string result() const { return edit::apply_text_edits(text_, edits_[0]); }
+
+    // The included files the edits change, each once, by their first reading.
+    // A file read several times holds one text: the edits of every reading
+    // are made in it, and must agree where they touch the same bytes.
+    std::vector<EditedFile> edited_files() {
+        std::vector<EditedFile> out;
+        for (std::uint32_t f = 1; f < edits_.size(); ++f) {
+            if (edits_[f].empty()) continue;
+            const SourceFile& file = source_.files[f - 1];
+            auto same = [&](const EditedFile& e) {
+                return source_.files[e.file - 1].canonical == file.canonical;
+            };
+            if (std::any_of(out.begin(), out.end(), same)) continue;
+            std::vector<TextEdit> all;
+            int readings = 0;
+            for (std::uint32_t g = f; g < edits_.size(); ++g) {
+                if (source_.files[g - 1].canonical != file.canonical) continue;
+                ++readings;
+                for (const TextEdit& e : edits_[g]) {
+                    auto clash = std::find_if(all.begin(), all.end(), [&](const TextEdit& o) {
+                        return o.offset < e.offset + e.length && e.offset < o.offset + o.length;
+                    });
+                    if (clash != all.end() &&
+                        (clash->offset != e.offset || clash->length != e.length ||
+                         clash->replacement != e.replacement)) {
+                        fail("'" + file.name +
+                             "' is included several times and the edits of its readings "
+                             "differ; edit it in the text");
+                        return {};
+                    }
+                    if (clash == all.end()) all.push_back(e);
+                }
+            }
+            out.push_back(
+                {f, file.path, edit::apply_text_edits(file.text, std::move(all)), readings});
+        }
+        return out;
+    }
 
     // The value of the last property named `change.name` across `blocks` (in
     // file order) is the one in force: replace it. False when none is written.
@@ -127,10 +166,11 @@ class SourceWriter {
     // (docs/language.md §15.3): such an edit fails, and the text stays as it was.
     void replace(const PropertySource& property, const Change& change) {
         const TextSpan& span = property.value_span;
+        const std::string_view text = text_of(span.pos.file);
         if (property.origin != ValueOrigin::literal) {
             constexpr std::size_t shown = 60;
             std::string written(
-                text_.substr(span.offset, std::min<std::size_t>(span.length, shown)));
+                text.substr(span.offset, std::min<std::size_t>(span.length, shown)));
             if (span.length > shown) written += "...";
             // Appended, not concatenated: GCC 12 warns (-Wrestrict) about "'" + s.
             std::string message(1, '\'');
@@ -146,9 +186,9 @@ class SourceWriter {
         }
         const std::string value =
             change.vector
-                ? edited_vector_text(text_.substr(span.offset, span.length), *change.vector)
+                ? edited_vector_text(text.substr(span.offset, span.length), *change.vector)
                 : change.text;
-        edits_.push_back({span.offset, span.length, value});
+        edits_of(span.pos.file).push_back({span.offset, span.length, value});
         ++changed_;
     }
 
@@ -166,7 +206,7 @@ class SourceWriter {
             replace(*last, change);
             return;
         }
-        insert_into(block.close_brace, indent_hint(block), {change.line()});
+        insert_into(file_of(block), block.close_brace, indent_hint(block), {change.line()});
         ++changed_;
     }
 
@@ -174,32 +214,42 @@ class SourceWriter {
     // would otherwise come back into force); false when it has none.
     bool remove_all(const BlockSource& block, const Change& change) {
         bool removed = false;
+        const std::uint32_t file = file_of(block);
+        const std::string_view text = text_of(file);
         for (const PropertySource& p : properties(block))
             if (p.name == change.name) {
-                edits_.push_back(edit::removal(text_, edit::statement_range(text_, p), false));
+                edits_of(file).push_back(
+                    edit::removal(text, edit::statement_range(text, p), false));
                 removed = true;
             }
         if (removed) ++changed_;
         return removed;
     }
 
-    void insert_into(std::size_t close, std::optional<std::size_t> first_item,
+    void insert_into(std::uint32_t file, std::size_t close, std::optional<std::size_t> first_item,
                      const std::vector<std::string>& lines) {
-        edits_.push_back(edit::insertion_before_close(text_, close, first_item, lines));
+        edits_of(file).push_back(
+            edit::insertion_before_close(text_of(file), close, first_item, lines));
     }
 
     void remove(const BlockSource& block) {
-        edits_.push_back(edit::removal(text_, edit::block_range(block), false));
+        const std::uint32_t file = file_of(block);
+        edits_of(file).push_back(edit::removal(text_of(file), edit::block_range(block), false));
         ++changed_;
     }
 
     void append(const std::string& block_text) {
         std::string inserted = !text_.empty() && text_.back() != '\n' ? "\n" : "";
-        edits_.push_back({text_.size(), 0, inserted + "\n" + block_text});
+        edits_[0].push_back({text_.size(), 0, inserted + "\n" + block_text});
         ++changed_;
     }
 
-    std::string_view text() const { return text_; }
+    // The text of file `file` (SourcePos::file): a block and all it holds
+    // are in one file, the file of its keyword.
+    std::string_view text_of(std::uint32_t file) const {
+        return file_text(source_.files, text_, file);
+    }
+    static std::uint32_t file_of(const BlockSource& block) { return block.keyword_span.pos.file; }
     void count_insertion() { ++changed_; }
 
     std::optional<std::size_t> indent_hint(const BlockSource& block) const {
@@ -216,9 +266,19 @@ class SourceWriter {
     }
 
   private:
+    // Edits of a file no source names (never, for a source parsed from the
+    // text) are dropped with a failure rather than written elsewhere.
+    std::vector<TextEdit>& edits_of(std::uint32_t file) {
+        if (file < edits_.size()) return edits_[file];
+        fail("an edited value is in a file the scene does not list");
+        discarded_.clear();
+        return discarded_;
+    }
+
     std::string_view text_;
     const SceneSource& source_;
-    std::vector<TextEdit> edits_;
+    std::vector<std::vector<TextEdit>> edits_;  // per file: [0] the main text's
+    std::vector<TextEdit> discarded_;
     std::string error_;
     int changed_ = 0;
 };
@@ -276,12 +336,13 @@ void write_cameras(SourceWriter& w, const SceneSource& source, const Scene& a, c
         w.append(block + "}\n");
         return;
     }
-    const auto close = cameras_close(w.text(), source.cameras.back());
+    const std::uint32_t file = SourceWriter::file_of(source.cameras.back());
+    const auto close = cameras_close(w.text_of(file), source.cameras.back());
     if (!close) {
         w.fail("cannot find the end of the cameras block");
         return;
     }
-    w.insert_into(*close, source.cameras.back().keyword_span.offset, lines);
+    w.insert_into(file, *close, source.cameras.back().keyword_span.offset, lines);
     w.count_insertion();
 }
 
@@ -311,7 +372,8 @@ void write_primitive(SourceWriter& w, const BlockSource& block, const Primitive&
     if (!unwritten.empty()) {
         std::string line = std::string(schema_of<Material>().keyword) + " {";
         for (const auto& item : unwritten) line += " " + item;
-        w.insert_into(block.close_brace, w.indent_hint(block), {line + " }"});
+        w.insert_into(SourceWriter::file_of(block), block.close_brace, w.indent_hint(block),
+                      {line + " }"});
         w.count_insertion();
     }
 
@@ -356,7 +418,9 @@ SourceEditResult apply_scene_edits(std::string_view text, const SceneSource& sou
             for (const Change& change : changes(original.lights[i], edited.lights[i], w.failure()))
                 w.set(source.lights[i], change);
     }
+    if (w.error().empty()) result.files = w.edited_files();
     result.error = w.error();
+    if (!result.error.empty()) result.files.clear();
     result.text = result.error.empty() ? w.result() : std::string(text);
     result.values_changed = result.error.empty() ? w.changed() : 0;
     return result;

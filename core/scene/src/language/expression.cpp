@@ -266,6 +266,7 @@ bool ExpressionReader::parse_primary(int depth) {
     if (find_function(word)) return parse_call(depth);
     const Symbol* symbol = names_.find(word);
     if (!symbol) {
+        if (!names_.reports_unknown()) return false;
         const std::vector<std::string_view> known = names_.names();
         std::string message = "unknown name " + quote(word.substr(0, 40)) +
                               " (names must be defined before they are used)";

@@ -6,6 +6,7 @@
 #include "language/diagnostic_sink.hpp"
 
 #include <cstddef>
+#include <cstdint>
 #include <string_view>
 
 namespace jt::lang {
@@ -44,7 +45,9 @@ struct Token {
 
 class Lexer {
   public:
-    Lexer(std::string_view text, DiagnosticSink& sink) : text_(text), sink_(sink) {
+    // `file` is the text's index (SourcePos::file): 0 the main file.
+    Lexer(std::string_view text, DiagnosticSink& sink, std::uint32_t file = 0)
+        : text_(text), sink_(sink), file_(file) {
         // A UTF-8 byte order mark is harmless: skip it (columns still count its bytes).
         if (text_.starts_with("\xEF\xBB\xBF")) at_ = 3;
     }
@@ -68,11 +71,12 @@ class Lexer {
     void lex_number(std::size_t start, Token& out);
     void lex_string(std::size_t start, Token& out);
     SourcePos pos_of(std::size_t offset) const {
-        return {line_, static_cast<int>(offset - line_start_) + 1};
+        return {line_, static_cast<int>(offset - line_start_) + 1, file_};
     }
 
     std::string_view text_;
     DiagnosticSink& sink_;
+    std::uint32_t file_;
     std::size_t at_ = 0;
     int line_ = 1;
     std::size_t line_start_ = 0;

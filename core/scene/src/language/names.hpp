@@ -56,8 +56,13 @@ class NameTable {
     // Every name defined so far, for did-you-mean.
     std::vector<std::string_view> names() const;
     bool empty() const { return symbols_.empty(); }
+    // After an included file could not be read, its names are missing: a use
+    // of an unknown name is then no longer reported (docs/language.md §15.5).
+    bool reports_unknown() const { return reports_unknown_; }
+    void stop_reporting_unknown() { reports_unknown_ = false; }
 
   private:
+    bool reports_unknown_ = true;
     std::map<std::string, Symbol, std::less<>> symbols_;  // nodes stay put: views into them last
 };
 

@@ -11,6 +11,7 @@
 #include "jtracer/schema.hpp"
 #include "language/define_value.hpp"
 #include "language/expression.hpp"
+#include "language/include_stack.hpp"
 #include "language/lexer.hpp"
 #include "language/names.hpp"
 #include "language/properties.hpp"
@@ -21,6 +22,7 @@
 #include <algorithm>
 #include <array>
 #include <cstdint>
+#include <deque>
 #include <limits>
 #include <new>
 #include <optional>
@@ -132,6 +134,7 @@ class Parser final : private TokenCursor {
         : text_(text),
           lexer_(text, sink_),
           reader_(sink_),
+          include_(options),
           expressions_(*this, sink_, names_, options.clock),
           primitive_hint_(primitives ? primitive_count_hint(text) : 0),
           source_map_(options.source_map),
@@ -155,6 +158,9 @@ class Parser final : private TokenCursor {
                 sink_.warning({}, "--define " + name + ": the scene defines no " + quote(name));
         result_.diagnostics = sink_.take();
         if (!source_map_) result_.source = {};
+        // Kept with or without the map: diagnostics quote the included texts.
+        result_.source.files = include_.take_files();
+        result_.source.unread_includes = include_.take_unread();
         return std::move(result_);
     }
 
@@ -162,7 +168,7 @@ class Parser final : private TokenCursor {
     // The two tokens swap places: the lexer writes the new one in place (lexer.hpp).
     void advance() override {
         std::swap(cur_, next_);
-        lexer_.next(*next_);
+        reading_->next(*next_);
     }
     const Token& cur() const override { return *cur_; }
     const Token& peek() const override { return *next_; }
@@ -306,6 +312,7 @@ class Parser final : private TokenCursor {
         }
         advance();
         property.value = read_value();
+        rebase_file_name(property);
         if (property.value.form == Value::Form::none) {
             sink_.error(cur_->pos, "expected a value after '" + std::string(property.name) +
                                        ":', got " + describe(*cur_));
@@ -365,22 +372,38 @@ class Parser final : private TokenCursor {
     // Reads a block's entries up to and including its '}'. `on_property` gets
     // each well-formed property; `on_child` is called at the keyword of each
     // nested block and must consume it whole.
+    // `included`: reading the statements of a file included in the block,
+    // which end at that file's end, and where a '}' closes nothing.
     template <class OnProperty, class OnChild>
     void parse_body(BlockSource& block, std::span<const std::string_view> child_names,
-                    OnProperty on_property, OnChild on_child) {
+                    OnProperty on_property, OnChild on_child, bool included = false) {
         for (;;) {
             switch (cur_->kind) {
                 case TokenKind::rbrace:
+                    if (included) {
+                        sink_.error(cur_->pos,
+                                    "this '}' closes no block of this file: a block opened in a "
+                                    "file closes in that file");
+                        advance();
+                        break;
+                    }
                     block.close_brace = static_cast<std::uint32_t>(cur_->offset);
                     advance();
                     return;
                 case TokenKind::end:
+                    if (included) return;
                     sink_.error(block.keyword_span.pos,
                                 "this '" + std::string(block.keyword) +
                                     "' block is never closed: expected '}' before the end of "
                                     "the file");
                     return;
                 case TokenKind::word:
+                    if (cur_->text == kIncludeKeyword && next_->kind != TokenKind::colon &&
+                        (block.keyword == kCamerasKeyword || block.keyword == kSceneKeyword)) {
+                        parse_include(
+                            [&] { parse_body(block, child_names, on_property, on_child, true); });
+                        break;
+                    }
                     if (top_level_only()) break;
                     if (next_->kind == TokenKind::lbrace || contains(child_names, cur_->text)) {
                         on_child();
@@ -418,14 +441,72 @@ class Parser final : private TokenCursor {
             sink_.error(cur_->pos, "'define' may stand only at the top level, outside every block");
             skip_statement();
         } else {
-            include_not_supported();
+            sink_.error(cur_->pos,
+                        "'include' may stand only at the top level, directly in 'cameras' or "
+                        "directly in 'scene'");
+            skip_statement();
         }
         return true;
     }
 
-    void include_not_supported() {
-        sink_.error(cur_->pos, "'include' is not supported yet by this version of JTracer");
-        skip_statement();
+    // --- include (docs/language.md §15.5) -------------------------------
+
+    // At `include`: include STRING ';'. The file's text is read right here,
+    // by `statements`, with its own lexer; then reading resumes after the ';'.
+    template <class Statements>
+    void parse_include(Statements statements) {
+        advance();
+        if (!at(TokenKind::string)) {
+            if (!at(TokenKind::bad_value))
+                sink_.error(cur_->pos,
+                            "expected the path of a file in double quotes after "
+                            "'include', got " +
+                                describe(*cur_));
+            skip_statement();
+            return;
+        }
+        const Token path = *cur_;
+        advance();
+        if (at(TokenKind::semicolon)) {
+            advance();
+        } else {
+            sink_.error(
+                {path.pos.line, path.pos.column + static_cast<int>(path.length), path.pos.file},
+                "expected ';' after 'include \"" + std::string(path.text.substr(0, 40)) + "\"'");
+        }
+        bool unreadable = false;
+        const std::optional<IncludeStack::Opened> opened =
+            include_.open(path.text, path.pos, sink_, unreadable);
+        if (!opened) {
+            if (unreadable) names_.stop_reporting_unknown();
+            return;
+        }
+        const std::array<Token, 2> resume{*cur_, *next_};
+        const std::string_view resume_text = text_;
+        Lexer* const resume_lexer = reading_;
+        Lexer lexer(opened->text, sink_, opened->file);
+        reading_ = &lexer;
+        text_ = opened->text;
+        lexer.next(*cur_);
+        lexer.next(*next_);
+        statements();
+        include_.close();
+        *cur_ = resume[0];
+        *next_ = resume[1];
+        reading_ = resume_lexer;
+        text_ = resume_text;
+    }
+
+    // A file name (`file`, `image_map`, `background_map`) written in an
+    // included file is relative to that file's folder: the scene holds it
+    // relative to the main file's, as every other.
+    void rebase_file_name(Property& property) {
+        if (property.value.form != Value::Form::string || property.name_span.pos.file == 0 ||
+            !names_a_file(property.name))
+            return;
+        std::string rebased =
+            include_.rebased_asset(property.value.text, property.name_span.pos.file);
+        if (!rebased.empty()) property.value.text = rebased_names_.emplace_back(std::move(rebased));
     }
 
     void unknown_block(std::string_view where, std::span<const std::string_view> allowed) {
@@ -487,7 +568,7 @@ class Parser final : private TokenCursor {
             } else if (at(TokenKind::word) && cur_->text == kDefineKeyword) {
                 parse_define();
             } else if (at(TokenKind::word) && cur_->text == kIncludeKeyword) {
-                include_not_supported();
+                parse_include([&] { parse_file(); });
             } else if (at(TokenKind::word) && cur_->text == schema_of<Material>().keyword &&
                        next_->kind != TokenKind::lbrace) {
                 parse_named_material();
@@ -659,6 +740,10 @@ class Parser final : private TokenCursor {
         const Symbol* symbol = names_.find(name.text);
         advance();
         if (!symbol) {
+            if (!names_.reports_unknown()) {
+                skip_statement();
+                return nullptr;
+            }
             std::string message = "unknown name " + quote(name.text.substr(0, 40)) +
                                   " (names must be defined before they are used)";
             const std::vector<std::string_view> known = names_.names();
@@ -742,8 +827,10 @@ class Parser final : private TokenCursor {
             overridden = true;
             return true;
         }
-        sink_.error(name.pos, quote(name.text) + " is defined twice: it was first defined at " +
-                                  where(existing->defined_at));
+        std::string message = quote(name.text) + " is defined twice: it was first defined at " +
+                              include_.where(existing->defined_at);
+        if (name.pos.file != 0) message += "; read again here" + include_.chain(name.pos.file);
+        sink_.error(name.pos, std::move(message));
         return false;
     }
 
@@ -866,10 +953,13 @@ class Parser final : private TokenCursor {
 
     std::size_t error_count() const { return static_cast<std::size_t>(sink_.error_count()); }
 
-    std::string_view text_;
+    std::string_view text_;  // the text being read: the main one or an included one
     DiagnosticSink sink_;
-    Lexer lexer_;
+    Lexer lexer_;               // the main text's
+    Lexer* reading_ = &lexer_;  // the text being read's
     PropertyReader reader_;
+    IncludeStack include_;
+    std::deque<std::string> rebased_names_;  // values point at these: a deque keeps them put
     NameTable names_;
     std::vector<std::pair<std::string, Symbol*>> command_line_;  // each --define name once
     ExpressionReader expressions_;

@@ -81,6 +81,7 @@ Expected<LoadedScene> load_scene_file(const std::filesystem::path& path, ParseOp
     if (!text) return text.error();
     LoadedScene loaded;
     loaded.path = path.string();
+    if (options.main_file.empty()) options.main_file = loaded.path;
     loaded.options = options;
     loaded.text = std::move(*text);
     loaded.parsed = parse_scene(loaded.text, options);
@@ -117,9 +118,10 @@ std::vector<Diagnostic> check_scene(const LoadedScene& loaded, CheckOptions opti
 }
 
 std::string format_diagnostics(const std::vector<Diagnostic>& diagnostics,
-                               std::string_view filename, std::string_view source) {
+                               std::string_view filename, std::string_view source,
+                               std::span<const SourceFile> files) {
     std::string out;
-    for (const Diagnostic& d : diagnostics) out += format_diagnostic(d, filename, source);
+    for (const Diagnostic& d : diagnostics) out += format_diagnostic(d, filename, source, files);
     return out;
 }
 

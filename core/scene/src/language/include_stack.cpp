@@ -1,0 +1,155 @@
+#include "language/include_stack.hpp"
+
+#include "jtracer/limits.hpp"
+#include "jtracer/scene_file.hpp"
+#include "language/lexer.hpp"
+#include "language/quote.hpp"
+
+#include <filesystem>
+#include <system_error>
+
+namespace jt {
+
+Expected<IncludedText> read_include_file(const std::string& path, std::uintmax_t max_bytes) {
+    Expected<std::string> text = read_text_file(path, max_bytes);
+    if (!text) return text.error();
+    std::error_code ec;
+    std::filesystem::path canonical = std::filesystem::canonical(path, ec);
+    if (ec) return Error{"cannot read " + lang::quote(path) + ": " + ec.message()};
+    return IncludedText{canonical.string(), std::move(*text)};
+}
+
+namespace lang {
+
+namespace {
+
+namespace fs = std::filesystem;
+
+// `path` joined to the folder of `of`, lexically; an absolute `path` as it is.
+fs::path beside(const fs::path& of, const fs::path& path) {
+    if (path.is_absolute()) return path;
+    return of.parent_path() / path;
+}
+
+std::string normal(const fs::path& path) {
+    return path.lexically_normal().generic_string();
+}
+
+std::string main_canonical(const ParseOptions& options) {
+    if (options.main_file.empty()) return {};
+    std::error_code ec;
+    fs::path canonical = fs::canonical(options.main_file, ec);
+    return ec ? std::string() : canonical.string();
+}
+
+}  // namespace
+
+IncludeStack::IncludeStack(const ParseOptions& options)
+    : main_name_(options.main_file.empty() ? "<text>" : options.main_file),
+      main_path_(options.main_file),
+      main_canonical_(main_canonical(options)),
+      read_(options.read_include ? options.read_include : IncludeReader(read_include_file)),
+      bytes_left_(max_scene_file_bytes) {}
+
+std::optional<IncludeStack::Opened> IncludeStack::open(std::string_view path, SourcePos at,
+                                                       DiagnosticSink& sink, bool& unreadable) {
+    unreadable = false;
+    if (path.empty()) {
+        sink.error(at, "'include' takes the path of a file; this string is empty");
+        return std::nullopt;
+    }
+    if (open_.size() + 1 > static_cast<std::size_t>(kMaxIncludeDepth)) {
+        sink.error(at, "includes are nested too deeply: a file may be included at most " +
+                           std::to_string(kMaxIncludeDepth) + " levels deep");
+        return std::nullopt;
+    }
+    if (files_.size() >= kMaxIncludeReadings) {
+        sink.error(at, "too many files included: a scene may read at most " +
+                           std::to_string(kMaxIncludeReadings) + " (counting repeats)");
+        return std::nullopt;
+    }
+    const fs::path written(path);
+    const std::uint32_t from = at.file;
+    const fs::path read_path =
+        beside(from == 0 ? fs::path(main_path_) : fs::path(files_[from - 1].path), written);
+    Expected<IncludedText> read = read_(read_path.string(), bytes_left_);
+    if (!read) {
+        unreadable = true;
+        unread_.push_back(read_path.string());
+        sink.error(at, read.error().message);
+        return std::nullopt;
+    }
+    const std::string shown = normal(beside(fs::path(name(from)), written));
+    auto reading = [&](std::uint32_t file) {
+        return file == 0 ? main_canonical_ : files_[file - 1].canonical;
+    };
+    bool cycle = !main_canonical_.empty() && read->canonical == main_canonical_;
+    for (std::uint32_t file : open_) cycle = cycle || reading(file) == read->canonical;
+    if (cycle) {
+        sink.error(at, "an include cycle: " + quote(shown) +
+                           " is already being read, so it would include itself");
+        return std::nullopt;
+    }
+    if (std::size_t bad = find_invalid_text_byte(read->text); bad != std::string_view::npos) {
+        unreadable = true;
+        sink.error(at, "cannot read " + quote(shown) + ": it is not a text file (it contains " +
+                           (read->text[bad] == '\0' ? "a NUL byte" : "a byte that is not UTF-8") +
+                           ")");
+        return std::nullopt;
+    }
+    bytes_left_ -= std::min<std::uintmax_t>(bytes_left_, read->text.size());
+    const std::string relative =
+        from == 0 ? normal(written) : normal(beside(fs::path(relative_[from - 1]), written));
+    files_.push_back(
+        {shown, read_path.string(), std::move(read->canonical), std::move(read->text), at});
+    relative_.push_back(relative);
+    const auto file = static_cast<std::uint32_t>(files_.size());
+    open_.push_back(file);
+    return Opened{file, files_.back().text};
+}
+
+void IncludeStack::close() {
+    if (!open_.empty()) open_.pop_back();
+}
+
+std::string IncludeStack::rebased_asset(std::string_view path, std::uint32_t file) const {
+    if (file == 0 || file > relative_.size()) return {};
+    const fs::path written(path);
+    const fs::path folder = fs::path(relative_[file - 1]).parent_path();
+    if (written.is_absolute() || folder.empty()) return {};
+    return normal(folder / written);
+}
+
+std::string_view IncludeStack::name(std::uint32_t file) const {
+    if (file == 0 || file > files_.size()) return main_name_;
+    return files_[file - 1].name;
+}
+
+std::string IncludeStack::location(SourcePos pos) const {
+    return std::string(name(pos.file)) + ":" + std::to_string(pos.line) + ":" +
+           std::to_string(pos.column);
+}
+
+std::string IncludeStack::chain(std::uint32_t file) const {
+    std::string out;
+    // Each step goes to an earlier file, so this ends at the main file.
+    while (file > 0 && file <= files_.size()) {
+        const SourcePos at = files_[file - 1].included_at;
+        out += ", included from " + location(at);
+        file = at.file;
+    }
+    return out;
+}
+
+std::string IncludeStack::where(SourcePos pos) const {
+    if (pos.file == 0) return std::to_string(pos.line) + ":" + std::to_string(pos.column);
+    return location(pos) + chain(pos.file);
+}
+
+std::vector<SourceFile> IncludeStack::take_files() {
+    return std::vector<SourceFile>(std::make_move_iterator(files_.begin()),
+                                   std::make_move_iterator(files_.end()));
+}
+
+}  // namespace lang
+}  // namespace jt

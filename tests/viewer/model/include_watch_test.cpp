@@ -1,0 +1,104 @@
+// The viewer watches every file its scene includes (docs/language.md §15.5):
+// a change reloads, and so does a missing included file appearing.
+
+#include "common/files.hpp"
+#include "common/scratch_dir.hpp"
+#include "model/app_actions.hpp"
+#include "viewer/model/model_loop.hpp"
+#include "viewer/viewer_test_files.hpp"
+
+#include <gtest/gtest.h>
+
+#include <filesystem>
+#include <string>
+
+namespace jt::view {
+namespace {
+
+namespace fs = std::filesystem;
+using namespace jt::test;
+
+const std::string kMain =
+    "render_settings { width: 32; height: 24; }\n"
+    "cameras { perspective_camera { aspect: 1.3333333333333333; } }\n"
+    "scene { point_light { position: <3, 5, 4>; } include \"parts/ball.jts\"; }\n";
+
+// Written beside and renamed over, as editors save.
+void save_as_editor(const fs::path& path, const std::string& text) {
+    fs::create_directories(path.parent_path());
+    const fs::path temp = fs::path(path).concat(".tmp");
+    write_file(temp, text);
+    fs::rename(temp, path);
+}
+
+double radius_of_first(const AppState& state) {
+    return std::get<Sphere>(state.doc.scene.primitives.at(0).shape).radius;
+}
+
+class ViewerIncludes : public ::testing::Test {
+  protected:
+    ScratchDir scratch{"viewer-include"};
+    const fs::path main = scratch.path() / "main.jts";
+    const fs::path ball = scratch.path() / "parts" / "ball.jts";
+    ModelLoop model;
+    AppState state{test_config()};
+};
+
+TEST_F(ViewerIncludes, AChangedIncludedFileReloads) {
+    save_as_editor(ball, "sphere { center: <0, 0, -5>; radius: 1; }\n");
+    save_as_editor(main, kMain);
+    open_scene(state, main);
+    ASSERT_TRUE(state.doc.loaded) << format_diagnostics(state.doc);
+    model.frame(state);
+    EXPECT_EQ(radius_of_first(state), 1.0);
+    save_as_editor(ball, "sphere { center: <0, 0, -5>; radius: 2; }\n");
+    model.frame(state);
+    ASSERT_TRUE(model.run_until_loaded(state));
+    EXPECT_EQ(radius_of_first(state), 2.0) << state.message;
+}
+
+TEST_F(ViewerIncludes, AMissingIncludedFileAppearingReloads) {
+    save_as_editor(main, kMain);
+    open_scene(state, main);
+    EXPECT_FALSE(state.doc.loaded);
+    const std::string shown = format_diagnostics(state.doc);
+    EXPECT_NE(shown.find("parts/ball.jts': no such file"), std::string::npos) << shown;
+    model.frame(state);
+    save_as_editor(ball, "sphere { center: <0, 0, -5>; radius: 3; }\n");
+    model.frame(state);
+    ASSERT_TRUE(model.run_until_loaded(state));
+    ASSERT_TRUE(state.doc.loaded) << format_diagnostics(state.doc);
+    EXPECT_EQ(radius_of_first(state), 3.0);
+}
+
+TEST_F(ViewerIncludes, SavingAnEditOfAnIncludedValueWritesThatFile) {
+    const std::string ball_text = "# ball\nsphere { center: <0, 0, -5>; radius: 1; }  # one\n";
+    save_as_editor(ball, ball_text);
+    save_as_editor(main, kMain);
+    open_scene(state, main);
+    ASSERT_TRUE(state.doc.loaded) << format_diagnostics(state.doc);
+    edit_scene(state, [](Scene& s) { std::get<Sphere>(s.primitives[0].shape).radius = 1.5; });
+    const Expected<void> saved = save_scene_in_place(state.doc);
+    ASSERT_TRUE(saved) << saved.error().message;
+    EXPECT_EQ(read_file(main), kMain);
+    EXPECT_EQ(read_file(ball), "# ball\nsphere { center: <0, 0, -5>; radius: 1.5; }  # one\n");
+    EXPECT_FALSE(scene_edited(state.doc));
+    // Not into a copy: the included file would be changed under the original.
+    edit_scene(state, [](Scene& s) { std::get<Sphere>(s.primitives[0].shape).radius = 2; });
+    EXPECT_FALSE(save_scene_copy(state.doc, scratch.path() / "copy.jts"));
+    EXPECT_FALSE(fs::exists(scratch.path() / "copy.jts"));
+}
+
+TEST_F(ViewerIncludes, ADiagnosticInAnIncludedFileIsQuotedFromIt) {
+    save_as_editor(ball, "sphere { radius: -1; }\n");
+    save_as_editor(main, kMain);
+    open_scene(state, main);
+    const std::string shown = format_diagnostics(state.doc);
+    EXPECT_NE(shown.find("parts/ball.jts:1:18: error:"), std::string::npos) << shown;
+    EXPECT_NE(shown.find("    sphere { radius: -1; }\n"), std::string::npos) << shown;
+    EXPECT_NE(shown.find("note: included from " + main.string() + ":3:54"), std::string::npos)
+        << shown;
+}
+
+}  // namespace
+}  // namespace jt::view
