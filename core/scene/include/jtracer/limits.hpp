@@ -44,4 +44,8 @@ inline constexpr double kMaxMagnitude = 1e9;
 // this bounds its stack whatever the input.
 inline constexpr int kMaxExpressionNesting = 256;
 
+// --frames N: at most a million frames, 11 hours of film at 25 per second;
+// enough for any sequence, and a frame number always fits a file name.
+inline constexpr int kMaxFrames = 1000000;
+
 }  // namespace jt
