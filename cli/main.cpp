@@ -3,9 +3,11 @@
 
 #include "diff_command.hpp"
 #include "info_command.hpp"
+#include "interruptible_render.hpp"
 #include "list_cameras.hpp"
 #include "memory_budget.hpp"
 #include "options.hpp"
+#include "sequence_command.hpp"
 
 #include "jtracer/frontend/frame_setup.hpp"
 #include "jtracer/frontend/progress.hpp"
@@ -13,58 +15,15 @@
 #include "jtracer/region_file.hpp"
 #include "jtracer/render_job.hpp"
 
-#include <atomic>
 #include <chrono>
-#include <condition_variable>
-#include <csignal>
-#include <cstdio>
 #include <exception>
 #include <iostream>
-#include <mutex>
 #include <new>
-#include <thread>
 
 namespace {
 
 using namespace jt::cli;
 using namespace jt::frontend;
-
-// The signal that asked the render to stop (SIGINT, SIGTERM), 0 while none has.
-std::atomic<int> interrupted{0};
-
-extern "C" void on_interrupt(int signal) {
-    interrupted.store(signal);
-}
-
-// Runs the job on a thread of its own while this one draws progress and
-// watches for Ctrl-C. Returns false when interrupted. The end of the render
-// wakes this thread at once, so that a small render does not wait out a tick.
-bool render(jt::RenderJob& job, jt::frontend::ProgressStyle progress) {
-    ProgressDisplay display(progress);
-    std::mutex mutex;
-    std::condition_variable finished;
-    bool done = false;
-    std::thread worker([&] {
-        job.run();
-        {
-            std::lock_guard<std::mutex> lock(mutex);
-            done = true;
-        }
-        finished.notify_one();
-    });
-    std::unique_lock<std::mutex> lock(mutex);
-    while (!done) {
-        lock.unlock();
-        if (interrupted.load() != 0) job.cancel();
-        display.update(job.progress());
-        lock.lock();
-        finished.wait_for(lock, std::chrono::milliseconds(100), [&] { return done; });
-    }
-    lock.unlock();
-    worker.join();
-    display.finish();
-    return job.progress().finished;
-}
 
 ExpectOptions expect_options(const Options& o) {
     return {o.expect.value_or(""), o.tolerance, o.update, o.junit, o.scene_path, o.quiet};
@@ -95,15 +54,11 @@ int run(const Options& o, bool& compared) {
     // Until the job exists a signal ends the process at once (nothing is written
     // yet); from here on it cancels the render, which stops within a tile.
     jt::RenderJob job(*prepared, options);
-    std::signal(SIGINT, on_interrupt);
-    std::signal(SIGTERM, on_interrupt);
-    if (!render(job, jt::frontend::progress_style_for_stderr(o.progress, o.quiet)) ||
-        interrupted.load() != 0) {
-        const int signal = interrupted.load() != 0 ? interrupted.load() : SIGINT;
-        std::cerr << "jtracer-cli: interrupted by " << (signal == SIGTERM ? "SIGTERM" : "SIGINT")
-                  << "; nothing was written\n";
-        return 128 + signal;
-    }
+    catch_interrupts();
+    ProgressDisplay display(progress_style_for_stderr(o.progress, o.quiet));
+    const bool rendered = render_interruptibly(job, display);
+    display.finish();
+    if (!rendered) return report_interrupt("nothing was written");
     // A region file keeps only the region's pixels and records where they belong.
     const jt::Expected<void> written =
         o.region_output ? jt::write_region_bmp(output, job.region_image(),
@@ -140,6 +95,7 @@ int main(int argc, char** argv) {
     int code = exit_io_error;
     try {
         if (o.list_cameras) return list_cameras(o.scene_path);
+        if (o.frames) return run_sequence(o);
         code = run(o, compared);
     } catch (const std::bad_alloc&) {
         std::cerr << "jtracer-cli: out of memory (the scene or the image is too large for the "

@@ -24,6 +24,10 @@ ParsedOptions parse_options(int argc, char** argv) {
         "                                                   rewrites ref.png if they differ\n"
         "  jtracer-cli diff ref.png shot.png -o diff.png     compares two images (see diff "
         "--help)\n"
+        "  jtracer-cli scenes/orbit.jts --frames 48 -o orbit-%04d.png\n"
+        "                                                   48 frames, clock 0 to 1\n"
+        "  jtracer-cli scenes/orbit.jts --frames 48 --frame-range 0..11 -o orbit-%04d.png\n"
+        "                                                   the first 12 of them\n"
         "\n"
         "Exit codes: 0 ok, 1 errors in the scene (or, with --expect, a render outside the\n"
         "tolerance), 2 bad command line, 3 file I/O error or not enough memory, 130\n"
@@ -78,6 +82,9 @@ ParsedOptions parse_options(int argc, char** argv) {
         if ((o.update || o.junit) && !o.expect)
             throw CLI::ValidationError(o.update ? "--update" : "--junit",
                                        "needs --expect REFERENCE");
+        if (o.expect && o.frames)
+            throw CLI::ValidationError("--expect", "compares one image: not with --frames");
+        frontend::check_sequence_flags(o);
     };
     if (std::optional<int> code =
             frontend::parse_command_line(app, argc, argv, "jtracer-cli", checks))

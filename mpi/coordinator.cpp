@@ -66,7 +66,7 @@ class Coordinator {
     }
 
     CoordinatorResult run(const std::atomic<bool>& stop,
-                          const std::function<void(const Image8&)>& deliver) {
+                          const std::function<bool(const Image8&)>& deliver) {
         start_ = Clock::now();
         frontend::ProgressDisplay display(settings_.progress);
         for (int rank = 1; rank < settings_.ranks; ++rank)
@@ -84,8 +84,9 @@ class Coordinator {
         result_.seconds = seconds_since(start_);
         if (pasted_ < tiles_.size()) return std::move(result_);
         result_.complete = true;
-        deliver(frame_image_);
-        for (int rank = 1; rank < settings_.ranks; ++rank) send_signal(rank, tag_stop);
+        const bool delivered = deliver(frame_image_);
+        for (int rank = 1; rank < settings_.ranks; ++rank)
+            send_stop(rank, settings_.another_frame && delivered);
         winding_down_ = true;
         while (!all_stopped() && !lost()) serve_once();
         return std::move(result_);
@@ -201,6 +202,8 @@ class Coordinator {
     // halfway leaves the worker silent rather than rank 0 blocked.
     bool receive_from(int rank) {
         WorkerState& worker = workers_[static_cast<std::size_t>(rank)];
+        // What a stopped worker sends next is the next frame's hello.
+        if (worker.stopped) return false;
         if (worker.receiving == MPI_REQUEST_NULL && !start_receiving(rank, worker)) return false;
         int done = 0;
         MPI_Test(&worker.receiving, &done, MPI_STATUS_IGNORE);
@@ -305,7 +308,7 @@ CoordinatorResult run_coordinator(const std::shared_ptr<const PreparedFrame>& fr
                                   int height, const std::vector<PixelRect>& tiles,
                                   const CoordinatorSettings& settings,
                                   const std::atomic<bool>& stop,
-                                  const std::function<void(const Image8&)>& deliver) {
+                                  const std::function<bool(const Image8&)>& deliver) {
     return Coordinator(frame, width, height, tiles, settings).run(stop, deliver);
 }
 

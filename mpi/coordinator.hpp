@@ -23,6 +23,9 @@ struct CoordinatorSettings {
     // A worker silent this long (no tile, no heartbeat) is declared lost.
     double rank_timeout = 10.0;
     frontend::ProgressStyle progress = frontend::ProgressStyle::none;
+    // A sequence has a frame after this one: the workers are told so when
+    // they stop, unless delivering this frame failed.
+    bool another_frame = false;
 };
 
 struct CoordinatorResult {
@@ -40,14 +43,14 @@ struct CoordinatorResult {
 
 // Renders `tiles` of a `width` x `height` frame over the job's ranks, every
 // worker having said it is ready (roll_call.hpp); as soon
-// as every tile is in, calls `deliver` with the frame, then tells the workers to
-// stop and waits for each to say it has. Returns early, incomplete, when `stop`
-// becomes true or a rank is lost; the workers are then still waiting and the
-// caller must abort the job.
+// as every tile is in, calls `deliver` with the frame (which says whether it
+// went well), then tells the workers to stop and waits for each to say it has. Returns early,
+// incomplete, when `stop` becomes true or a rank is lost; the workers are then still waiting and
+// the caller must abort the job.
 CoordinatorResult run_coordinator(const std::shared_ptr<const PreparedFrame>& frame, int width,
                                   int height, const std::vector<PixelRect>& tiles,
                                   const CoordinatorSettings& settings,
                                   const std::atomic<bool>& stop,
-                                  const std::function<void(const Image8&)>& deliver);
+                                  const std::function<bool(const Image8&)>& deliver);
 
 }  // namespace jt::mpi

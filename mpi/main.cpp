@@ -1,8 +1,9 @@
-// jtracer-mpi: one frame rendered by every rank of an MPI job. Every rank reads
-// and prepares the scene itself (only the file name travels, in argv); rank 0
-// hands out tiles on demand, renders tiles itself in between, and alone writes
-// the image, atomically, once every tile is in. This file orders the steps and
-// makes sure every rank ends the same way.
+// jtracer-mpi: one frame, or each frame of a sequence (--frames) in turn,
+// rendered by every rank of an MPI job. Every rank reads and prepares the
+// scene itself (only the file name travels, in argv); rank 0 hands out tiles
+// on demand, renders tiles itself in between, and alone writes each image,
+// atomically, once every tile is in. This file orders the steps and makes
+// sure every rank ends the same way.
 
 #include "coordinator.hpp"
 #include "cpu_affinity.hpp"
@@ -13,6 +14,7 @@
 
 #include "jtracer/frontend/frame_setup.hpp"
 #include "jtracer/frontend/progress.hpp"
+#include "jtracer/frontend/scene_sequence.hpp"
 #include "jtracer/image_file.hpp"
 
 #include <mpi.h>
@@ -77,25 +79,52 @@ void stop_local_launcher() {
     if (getppid() == parent) kill(parent, SIGKILL);
 }
 
-// Reads, checks and prepares the scene: the same steps on every rank, each
-// on its own machine.
-RankSetUp set_up_rank(const Options& o, FrameSetup& setup) {
-    setup = jt::frontend::set_up_frame("jtracer-mpi", o);
+// What a rank renders of one frame, and where rank 0 writes it.
+struct RankFrame {
     RankSetUp mine;
-    mine.exit_code = setup.exit_code;
-    mine.message = setup.message;
-    if (setup.exit_code != exit_ok) return mine;
-    const jt::Expected<std::shared_ptr<const jt::PreparedScene>> prepared =
-        jt::prepare_scene(setup.scene);
-    if (!prepared) {
-        mine.exit_code = exit_io_error;
-        mine.message = "jtracer-mpi: " + prepared.error().message + "; nothing was written\n";
-        return mine;
+    jt::RenderOptions render;
+    std::string output;
+    jt::ImageFormat format = jt::ImageFormat::bmp;
+    double clock = 0.0;
+};
+
+// Reads, checks and prepares the scene (at frame `index` of a sequence): the
+// same steps on every rank, each on its own machine.
+RankFrame set_up_rank(const Options& o, jt::frontend::SceneSequence* sequence, int index) {
+    RankFrame frame;
+    RankSetUp& mine = frame.mine;
+    std::shared_ptr<const jt::PreparedScene> scene;
+    if (sequence) {
+        jt::frontend::SequenceFrame set_up = sequence->frame(index);
+        mine.exit_code = set_up.exit_code;
+        mine.message = set_up.message;
+        if (mine.exit_code != exit_ok) return frame;
+        frame.render = set_up.render;
+        frame.output = set_up.output;
+        frame.format = set_up.format;
+        frame.clock = set_up.clock;
+        scene = set_up.prepared;
+    } else {
+        FrameSetup setup = jt::frontend::set_up_frame("jtracer-mpi", o);
+        mine.exit_code = setup.exit_code;
+        mine.message = setup.message;
+        if (setup.exit_code != exit_ok) return frame;
+        const jt::Expected<std::shared_ptr<const jt::PreparedScene>> prepared =
+            jt::prepare_scene(setup.scene);
+        if (!prepared) {
+            mine.exit_code = exit_io_error;
+            mine.message = "jtracer-mpi: " + prepared.error().message + "; nothing was written\n";
+            return frame;
+        }
+        frame.render = setup.render;
+        frame.output = setup.output;
+        frame.format = setup.format;
+        scene = *prepared;
     }
     // One frame a rank: the view table is built once, by the rank's first tile.
-    mine.frame = jt::prepare_frame(*prepared, setup.render);
-    mine.tiles = cut_work_tiles(setup.render.width, setup.render.height, o.tile_size);
-    return mine;
+    mine.frame = jt::prepare_frame(scene, frame.render);
+    mine.tiles = cut_work_tiles(frame.render.width, frame.render.height, o.tile_size);
+    return frame;
 }
 
 // Rank 0 ends a job it has lost a worker of: the others cannot be told.
@@ -155,77 +184,117 @@ void print_stats(const CoordinatorResult& result, const std::vector<RankStats>& 
     }
 }
 
+// A worker: the frames rank 0 leads it through, until it says no more.
+int run_worker_frames(const Options& o, jt::frontend::SceneSequence* sequence, int first,
+                      int rank) {
+    int code = exit_ok;
+    bool another_frame = true;
+    for (int index = first; another_frame; ++index) {
+        another_frame = false;
+        code = run_worker(
+            host_name(),
+            [&] {
+                RankFrame frame = set_up_rank(o, sequence, index);
+                if (frame.mine.exit_code == exit_ok && index == first && !o.quiet)
+                    if (auto warning =
+                            narrow_affinity_warning(current_cpu_share(), rank, host_name()))
+                        std::cerr << *warning << std::flush;
+                return frame.mine;
+            },
+            another_frame);
+    }
+    return code;
+}
+
+// What rank 0 says of a frame it wrote.
+void report_frame(const Options& o, const RankFrame& frame, int index,
+                  const CoordinatorResult& result, int ranks) {
+    if (o.quiet) return;
+    jt::RenderProgress summary;
+    summary.rays = result.rays;
+    summary.seconds = result.seconds;
+    std::cerr << "wrote " << frame.output;
+    if (o.frames)
+        std::cerr << " (frame " << index << ", clock "
+                  << jt::frontend::shortest_decimal(frame.clock) << ")";
+    std::cerr << ": "
+              << jt::frontend::render_summary(frame.render.width, frame.render.height,
+                                              frame.render.samples, summary)
+              << ", " << ranks << (ranks == 1 ? " rank" : " ranks") << "\n";
+}
+
 int run(int argc, char** argv, int rank, int ranks) {
     const auto start = Clock::now();
     ParsedOptions parsed = parse_options(argc, argv, rank == 0);
     if (parsed.exit_code) return *parsed.exit_code;
     const Options& o = parsed.options;
-    auto warn_of_narrow_affinity = [&] {
-        if (!o.quiet)
-            if (auto warning = narrow_affinity_warning(current_cpu_share(), rank, host_name()))
-                std::cerr << *warning << std::flush;
-    };
+    std::optional<jt::frontend::SceneSequence> sequence;
+    if (o.frames) sequence.emplace("jtracer-mpi", o);
+    jt::frontend::SceneSequence* frames = sequence ? &*sequence : nullptr;
+    const jt::frontend::FrameRange range =
+        sequence ? sequence->range() : jt::frontend::FrameRange{};
+    if (rank != 0) return run_worker_frames(o, frames, range.first, rank);
 
-    FrameSetup setup;
-    if (rank != 0)
-        return run_worker(host_name(), [&] {
-            RankSetUp mine = set_up_rank(o, setup);
-            if (mine.exit_code == exit_ok) warn_of_narrow_affinity();
-            return mine;
-        });
+    for (int index = range.first; index <= range.last; ++index) {
+        const auto frame_start = Clock::now();
+        const RankFrame frame = set_up_rank(o, frames, index);
+        const RankSetUp& mine = frame.mine;
+        const double setup_seconds =
+            std::chrono::duration<double>(Clock::now() - frame_start).count();
+        const RollCall call = call_the_roll(ranks, host_name(), mine.exit_code, o.rank_timeout);
+        if (call.lost)
+            end_for_lost_rank(*call.lost, call.hosts, o.rank_timeout,
+                              index == range.first ? "; nothing was written"
+                                                   : "; the frames before it were written");
+        if (const int code = agree_on_setup(mine, call); code != exit_ok) {
+            for (int worker = 1; worker < ranks; ++worker) send_stop(worker, false);
+            return code;
+        }
+        if (index == range.first) {
+            if (!o.quiet)
+                if (auto warning = narrow_affinity_warning(current_cpu_share(), 0, host_name()))
+                    std::cerr << *warning << std::flush;
+            std::signal(SIGINT, on_interrupt);
+            std::signal(SIGTERM, on_interrupt);
+        }
 
-    const RankSetUp mine = set_up_rank(o, setup);
-    const double setup_seconds = std::chrono::duration<double>(Clock::now() - start).count();
-    const RollCall call = call_the_roll(ranks, host_name(), mine.exit_code, o.rank_timeout);
-    if (call.lost)
-        end_for_lost_rank(*call.lost, call.hosts, o.rank_timeout, "; nothing was written");
-    if (const int code = agree_on_setup(mine, call); code != exit_ok) {
-        for (int worker = 1; worker < ranks; ++worker) send_signal(worker, tag_stop);
-        return code;
+        CoordinatorSettings settings;
+        settings.ranks = ranks;
+        settings.rank_timeout = o.rank_timeout;
+        settings.progress = jt::frontend::progress_style_for_stderr(o.progress, o.quiet);
+        settings.another_frame = index < range.last;
+        std::optional<jt::Expected<void>> written;
+        CoordinatorResult result =
+            run_coordinator(mine.frame, frame.render.width, frame.render.height, mine.tiles,
+                            settings, interrupted, [&](const jt::Image8& image) {
+                                written = jt::write_image(frame.output, image, frame.format);
+                                return static_cast<bool>(*written);
+                            });
+        if (result.lost)
+            end_for_lost_rank(
+                *result.lost, call.hosts, o.rank_timeout,
+                written && *written ? " after the image was written" : "; nothing was written");
+        if (!result.complete) {
+            // The workers still wait for tiles; only an abort ends them.
+            std::cerr << "jtracer-mpi: stopped before every tile came back (interrupted, or a "
+                         "rank died); "
+                      << (index == range.first ? "nothing was written"
+                                               : "the frames before it were written")
+                      << "\n";
+            MPI_Abort(MPI_COMM_WORLD, 130);
+            return 130;
+        }
+        result.stats.setup_seconds = setup_seconds;
+        std::vector<RankStats> stats = result.rank_stats;
+        stats.front() = result.stats;
+        if (!*written) {
+            std::cerr << "jtracer-mpi: " << written->error().message << "\n";
+            return exit_io_error;
+        }
+        report_frame(o, frame, index, result, ranks);
+        const double total = std::chrono::duration<double>(Clock::now() - start).count();
+        if (o.stats) print_stats(result, stats, mine.tiles.size(), o.tile_size, total);
     }
-    warn_of_narrow_affinity();
-    std::signal(SIGINT, on_interrupt);
-    std::signal(SIGTERM, on_interrupt);
-
-    CoordinatorSettings settings;
-    settings.ranks = ranks;
-    settings.rank_timeout = o.rank_timeout;
-    settings.progress = jt::frontend::progress_style_for_stderr(o.progress, o.quiet);
-    std::optional<jt::Expected<void>> written;
-    CoordinatorResult result =
-        run_coordinator(mine.frame, setup.render.width, setup.render.height, mine.tiles, settings,
-                        interrupted, [&](const jt::Image8& image) {
-                            written = jt::write_image(setup.output, image, setup.format);
-                        });
-    if (result.lost)
-        end_for_lost_rank(
-            *result.lost, call.hosts, o.rank_timeout,
-            written && *written ? " after the image was written" : "; nothing was written");
-    if (!result.complete) {
-        // The workers still wait for tiles; only an abort ends them.
-        std::cerr << "jtracer-mpi: stopped before every tile came back (interrupted, or a rank "
-                     "died); nothing was written\n";
-        MPI_Abort(MPI_COMM_WORLD, 130);
-        return 130;
-    }
-    result.stats.setup_seconds = setup_seconds;
-    std::vector<RankStats> stats = result.rank_stats;
-    stats.front() = result.stats;
-    if (!*written) {
-        std::cerr << "jtracer-mpi: " << written->error().message << "\n";
-        return exit_io_error;
-    }
-    const double total = std::chrono::duration<double>(Clock::now() - start).count();
-    if (!o.quiet) {
-        jt::RenderProgress summary;
-        summary.rays = result.rays;
-        summary.seconds = result.seconds;
-        std::cerr << "wrote " << setup.output << ": "
-                  << jt::frontend::render_summary(setup.render.width, setup.render.height,
-                                                  setup.render.samples, summary)
-                  << ", " << ranks << (ranks == 1 ? " rank" : " ranks") << "\n";
-    }
-    if (o.stats) print_stats(result, stats, mine.tiles.size(), o.tile_size, total);
     return exit_ok;
 }
 

@@ -10,8 +10,12 @@
 // for heartbeat_seconds (preparing the scene, waiting, or rendering a long
 // tile) sends an empty tag_heartbeat, so that rank 0 can tell a slow rank from
 // a lost one. Once the frame is complete, or when a rank's set-up failed, rank
-// 0 sends tag_stop; the worker drops the tiles it still holds and answers
-// tag_stopped with its RankStats, the last thing it sends.
+// 0 sends tag_stop (an int32: 1 when another frame of a sequence follows, 0
+// when the job ends); the worker drops the tiles it still holds, assigned or
+// still on their way, and answers tag_stopped with its RankStats, the last
+// thing it sends for the frame. For the next frame of a sequence every
+// worker starts again with tag_hello; messages between two ranks keep their
+// order, so nothing of one frame is read as the next one's.
 //
 // Rank 0 never blocks on a worker: it receives with MPI_Iprobe / MPI_Irecv and
 // no collective call is made, and a piece is small enough to cross a slow link
@@ -60,6 +64,12 @@ struct RankStats {
 // Sends a message without a payload.
 inline void send_signal(int rank, int tag) {
     MPI_Send(nullptr, 0, MPI_BYTE, rank, tag, MPI_COMM_WORLD);
+}
+
+// Tells a worker to stop the frame, and whether another one follows.
+inline void send_stop(int rank, bool another_frame) {
+    const std::int32_t more = another_frame ? 1 : 0;
+    MPI_Send(&more, 1, MPI_INT32_T, rank, tag_stop, MPI_COMM_WORLD);
 }
 
 // Rank 0, given a message no worker sends: names `rank` and aborts the job.

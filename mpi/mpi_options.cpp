@@ -17,10 +17,12 @@ ParsedOptions parse_options(int argc, char** argv, bool speaks) {
         "Examples:\n"
         "  mpirun -np 4 jtracer-mpi scenes/showcase.jts -o shot.bmp --width 3840 --height 2160\n"
         "  mpirun --hostfile hosts -np 16 jtracer-mpi scene.jts --samples 16 --stats\n"
+        "  mpirun -np 4 jtracer-mpi scenes/orbit.jts --frames 48 -o orbit-%04d.png\n"
         "\n"
         "Every rank reads the scene file itself (it must be at the same path on every\n"
         "machine). Rank 0 hands out tiles on demand, renders tiles itself in between, and\n"
-        "alone writes the image (BMP, or PNG for a -o name ending in .png).\n"
+        "alone writes the image (BMP, or PNG for a -o name ending in .png). With --frames,\n"
+        "the ranks render the frames one after another, each over all of them.\n"
         "\n"
         "Exit codes: 0 ok, 1 errors in the scene, 2 bad command line, 3 file I/O errors;\n"
         "a rank that dies or an interrupt aborts the whole job (non-zero, nothing written).\n");
@@ -43,8 +45,8 @@ ParsedOptions parse_options(int argc, char** argv, bool speaks) {
     std::ostringstream muted;
     std::ostream& out = speaks ? std::cout : muted;
     std::ostream& err = speaks ? std::cerr : muted;
-    if (std::optional<int> code =
-            frontend::parse_command_line(app, argc, argv, "jtracer-mpi", {}, out, err))
+    if (std::optional<int> code = frontend::parse_command_line(
+            app, argc, argv, "jtracer-mpi", [&] { frontend::check_sequence_flags(o); }, out, err))
         parsed.exit_code = *code;
     return parsed;
 }

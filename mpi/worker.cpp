@@ -53,7 +53,8 @@ class Worker {
     }
 
   public:
-    int run(const std::string& host, const std::function<RankSetUp()>& set_up) {
+    int run(const std::string& host, const std::function<RankSetUp()>& set_up,
+            bool& another_frame) {
         MPI_Send(host.data(), static_cast<int>(host.size()), MPI_CHAR, 0, tag_hello,
                  MPI_COMM_WORLD);
         last_said_ = Clock::now();
@@ -66,7 +67,9 @@ class Worker {
         stats_.setup_seconds = std::chrono::duration<double>(Clock::now() - start).count();
         say_ready();
         render_until_stopped();
+        drop_late_assignments();
         MPI_Send(&stats_, sizeof stats_, MPI_BYTE, 0, tag_stopped, MPI_COMM_WORLD);
+        another_frame = another_frame_;
         return set_up_.exit_code;
     }
 
@@ -75,6 +78,7 @@ class Worker {
     RankStats stats_;
     Clock::time_point last_said_;
     bool stopped_ = false;
+    bool another_frame_ = false;  // what the stop said
 
     void say(int tag) {
         send_signal(0, tag);
@@ -122,10 +126,25 @@ class Worker {
         MPI_Status status;
         MPI_Iprobe(0, tag_stop, MPI_COMM_WORLD, &arrived, &status);
         if (arrived) {
-            MPI_Recv(nullptr, 0, MPI_BYTE, 0, tag_stop, MPI_COMM_WORLD, MPI_STATUS_IGNORE);
+            std::int32_t more = 0;
+            MPI_Recv(&more, 1, MPI_INT32_T, 0, tag_stop, MPI_COMM_WORLD, MPI_STATUS_IGNORE);
+            another_frame_ = more != 0;
             stopped_ = true;
         }
         return stopped_;
+    }
+
+    // Tiles handed out before the stop that this rank never took (another
+    // rank's copy came back first): gone before the next frame's tiles come,
+    // and all here, since rank 0 sent them before the stop.
+    void drop_late_assignments() {
+        while (true) {
+            int arrived = 0;
+            MPI_Iprobe(0, tag_assign, MPI_COMM_WORLD, &arrived, MPI_STATUS_IGNORE);
+            if (!arrived) return;
+            std::int32_t index = 0;
+            MPI_Recv(&index, 1, MPI_INT32_T, 0, tag_assign, MPI_COMM_WORLD, MPI_STATUS_IGNORE);
+        }
     }
 
     // The next tile index, or nothing once rank 0 says stop. Probes and sleeps
@@ -164,8 +183,9 @@ class Worker {
 
 }  // namespace
 
-int run_worker(const std::string& host, const std::function<RankSetUp()>& set_up) {
-    return Worker().run(host, set_up);
+int run_worker(const std::string& host, const std::function<RankSetUp()>& set_up,
+               bool& another_frame) {
+    return Worker().run(host, set_up, another_frame);
 }
 
 }  // namespace jt::mpi

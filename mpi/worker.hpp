@@ -23,8 +23,10 @@ struct RankSetUp {
     std::string message;  // the set-up's report: diagnostics, or why it failed
 };
 
-// Runs `set_up` on a thread of its own, then the tiles; returns the rank's
-// exit code. Its figures go to rank 0 with its last message.
-int run_worker(const std::string& host, const std::function<RankSetUp()>& set_up);
+// Runs `set_up` on a thread of its own, then the tiles of one frame; returns
+// the rank's exit code. Its figures go to rank 0 with its last message.
+// `another_frame` is set when rank 0's stop said that a frame follows.
+int run_worker(const std::string& host, const std::function<RankSetUp()>& set_up,
+               bool& another_frame);
 
 }  // namespace jt::mpi

@@ -40,6 +40,22 @@ gallery_width=320
         echo "jtracer-cli $scene -o $name.png"
         echo '```'
     done
+    # The animation: 48 small frames in one contact sheet (a second or two).
+    frames=$(mktemp -d)
+    trap 'rm -rf "$frames"' EXIT
+    "$cli" -q scenes/orbit.jts --frames 48 --width 160 --height 90 -o "$frames/orbit-%02d.bmp"
+    scripts/contact_sheet.py docs/images/orbit_sheet.png 8 "$frames"/orbit-*.bmp
+    echo
+    echo "## \`scenes/orbit.jts\` (48 frames)"
+    echo
+    echo "An animation driven by \`clock\`: the camera circles the scene once while the ball"
+    echo "bounces twice. Frames 0 to 47, left to right and top to bottom, 160 pixels wide:"
+    echo
+    echo "![orbit](images/orbit_sheet.png)"
+    echo
+    echo '```sh'
+    echo "jtracer-cli scenes/orbit.jts --frames 48 -o orbit-%04d.png"
+    echo '```'
 } >docs/gallery.md.new
 mv docs/gallery.md.new docs/gallery.md
 echo "gallery: wrote docs/gallery.md and $(ls docs/images/*.png | wc -l) pictures in docs/images/"

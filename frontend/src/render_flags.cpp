@@ -1,5 +1,7 @@
 #include "jtracer/frontend/render_flags.hpp"
 
+#include "jtracer/frontend/frame_file_name.hpp"
+
 #include "jtracer/limits.hpp"
 
 #include <CLI/CLI.hpp>
@@ -48,6 +50,37 @@ void add_render_flags(CLI::App& app, RenderFlags& o) {
         ->transform(CLI::CheckedTransformer(modes))
         ->type_name("MODE");
     add_scene_value_flags(app, o.defines, o.clock);
+    app.add_option("--frames", o.frames,
+                   "Render a sequence of N images, frame f at clock f / (N - 1) (0 when N is "
+                   "1), 1.." +
+                       std::to_string(kMaxFrames) +
+                       "; -o then names them with a frame number field: -o shot-%04d.png")
+        ->check(CLI::Range(1, kMaxFrames))
+        ->type_name("N");
+    app.add_option_function<std::string>(
+           "--frame-range",
+           [&o](const std::string& text) {
+               Expected<FrameRange> range = parse_frame_range(text);
+               if (!range) throw CLI::ValidationError("--frame-range", range.error().message);
+               o.frame_range = *range;
+           },
+           "With --frames: render only the frames A to B, counted from 0, both included (for "
+           "job arrays and farms)")
+        ->type_name("A..B");
+}
+
+void check_sequence_flags(const RenderFlags& o) {
+    if (o.frame_range && !o.frames) throw CLI::ValidationError("--frame-range", "needs --frames N");
+    if (!o.frames) return;
+    if (o.clock)
+        throw CLI::ValidationError("--clock",
+                                   "cannot be given with --frames (each frame has its own clock)");
+    if (o.frame_range)
+        if (Expected<void> inside = check_frame_range(*o.frame_range, *o.frames); !inside)
+            throw CLI::ValidationError("--frame-range", inside.error().message);
+    if (o.output)
+        if (Expected<FrameNamePattern> pattern = parse_frame_name_pattern(*o.output); !pattern)
+            throw CLI::ValidationError("-o/--output", pattern.error().message);
 }
 
 void add_scene_value_flags(CLI::App& app, std::vector<std::string>& defines,

@@ -34,6 +34,23 @@ std::string plane_error(const std::string& value) {
     return brief("scene { plane { distance: " + value + "; } }");
 }
 
+// What lets a frame sequence read a scene once (docs/language.md §15.4).
+TEST(Expressions, AParseSaysWhetherAnyValueReadTheClock) {
+    auto reads = [](const std::string& text, const ParseOptions& options = {}) {
+        return parse_scene(text, options).reads_clock;
+    };
+    EXPECT_FALSE(reads("scene { sphere { radius: 2 * pi; } }"));
+    EXPECT_FALSE(reads("define c = \"clock\"; scene { sphere { radius: 1; } }"));
+    EXPECT_TRUE(reads("scene { sphere { radius: 1 + clock; } }"));
+    EXPECT_TRUE(reads("define r = clock; scene { sphere { radius: 1; } }"));
+    ParseOptions defined;
+    defined.defines = {{"r", "0.5 + clock"}};
+    EXPECT_TRUE(reads("define r = 1; scene { sphere { radius: r; } }", defined));
+    // A definition that --define overrides is not evaluated.
+    defined.defines = {{"r", "0.5"}};
+    EXPECT_FALSE(reads("define r = clock; scene { sphere { radius: r; } }", defined));
+}
+
 TEST(Expressions, ArithmeticFollowsPrecedenceLeftToRight) {
     EXPECT_EQ(number_of("1 + 2 * 3"), 7.0);
     EXPECT_EQ(number_of("(1 + 2) * 3"), 9.0);

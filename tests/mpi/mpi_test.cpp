@@ -83,6 +83,58 @@ TEST_F(Mpi, BadSceneIsReportedOnceAndEveryRankFails) {
     EXPECT_TRUE(outputs().empty());
 }
 
+// A sphere that grows with clock, over many small tiles, so that tiles handed
+// out twice at the end of one frame are still on their way when it stops.
+const std::string growing = R"(
+cameras { perspective_camera { position: <0, 0, 6>; look_at: <0, 0, 0>; aspect: 1.5; } }
+scene {
+    sphere { radius: 0.5 + clock; material { pigment: <1, 0.5, 0.2>; ambient: <1, 1, 1>; } }
+}
+render_settings { width: 96; height: 64; filename: "seq.bmp"; ambient_light: <1, 1, 1>; }
+)";
+
+TEST_F(Mpi, EveryFrameOfASequenceMatchesTheCli) {
+    test::write_file(dir / "seq.jts", growing);
+    ProgramRun single = run_shell(cli + "-q seq.jts --frames 5 -o 'cli-%d.png'");
+    ASSERT_EQ(single.code, 0) << single.err;
+    ProgramRun r = run_shell(mpirun(3) + "seq.jts --frames 5 --tile-size 16 -o 'mpi-%d.png'");
+    ASSERT_EQ(r.code, 0) << r.err;
+    EXPECT_EQ(count(r.err, "wrote mpi-"), 5u) << r.err;
+    for (int f = 0; f < 5; ++f) {
+        const std::string n = std::to_string(f);
+        EXPECT_EQ(test::read_file(dir / ("mpi-" + n + ".png")),
+                  test::read_file(dir / ("cli-" + n + ".png")))
+            << "frame " << f;
+    }
+    EXPECT_NE(test::read_file(dir / "mpi-0.png"), test::read_file(dir / "mpi-4.png"));
+    // A range, named after the scene's filename.
+    r = run_shell(mpirun(2) + "seq.jts -q --frames 5 --frame-range 3..4 --tile-size 16");
+    ASSERT_EQ(r.code, 0) << r.err;
+    EXPECT_FALSE(std::filesystem::exists(dir / "seq-0002.bmp"));
+    ASSERT_EQ(run_shell(cli + "-q seq.jts --clock 0.75 -o alone.bmp").code, 0);
+    EXPECT_EQ(test::read_file(dir / "seq-0003.bmp"), test::read_file(dir / "alone.bmp"));
+    EXPECT_TRUE(std::filesystem::exists(dir / "seq-0004.bmp"));
+}
+
+TEST_F(Mpi, AnErrorAtOneFrameEndsEveryRankOnce) {
+    std::string text = growing;
+    text.replace(text.find("0.5 + clock"), 11, "0.5 - clock");
+    test::write_file(dir / "bad.jts", text);
+    ProgramRun r = run_shell("timeout 120 " + mpirun(3) + "bad.jts -q --frames 3 -o 'f%d.bmp'");
+    EXPECT_EQ(r.code, 1) << r.err;
+    EXPECT_EQ(count(r.err, "note: at frame 1 (clock = 0.5)"), 1u) << r.err;
+    EXPECT_EQ(outputs(), std::vector<std::string>{"f0.bmp"});
+}
+
+TEST_F(Mpi, SequenceUsageErrorsAreReportedOnce) {
+    for (const char* args : {"--frames 3 --clock 1 -o 'a%d.bmp'", "--frames 3 -o a.bmp",
+                             "--frame-range 0..1 -o a.bmp"}) {
+        ProgramRun r = run_shell(mpirun(2) + showcase + args);
+        EXPECT_EQ(r.code, 2) << args << "\n" << r.err;
+        EXPECT_EQ(count(r.err, "Run 'jtracer-mpi --help'"), 1u) << args << "\n" << r.err;
+    }
+}
+
 TEST_F(Mpi, MissingSceneFileIsReportedOnce) {
     ProgramRun r = run_shell(mpirun(2) + "nowhere.jts -o out.bmp");
     EXPECT_EQ(r.code, 3) << r.err;

@@ -54,4 +54,8 @@ inline constexpr int kMaxIncludeDepth = 32;
 // include the next twice be read 2^32 times; past this the scene is refused.
 inline constexpr std::size_t kMaxIncludeReadings = 4096;
 
+// --frames N: at most a million frames, 11 hours of film at 25 per second;
+// enough for any sequence, and a frame number always fits a file name.
+inline constexpr int kMaxFrames = 1000000;
+
 }  // namespace jt

@@ -70,6 +70,9 @@ struct ParseResult {
     SceneSource source;                   // empty when parsed with source_map = false
     std::vector<Diagnostic> diagnostics;  // in the order found
     bool out_of_memory = false;           // parsing stopped for want of memory (one diagnostic)
+    // Some value that was evaluated named `clock` (in the file or in a
+    // --define): false means the scene is the same at every clock.
+    bool reads_clock = false;
     bool ok() const { return !has_errors(diagnostics); }
 };
 

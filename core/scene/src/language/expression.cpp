@@ -259,6 +259,7 @@ bool ExpressionReader::parse_primary(int depth) {
     const std::string_view word = t.text;
     if (word == "pi" || word == "clock") {
         literal_ = false;
+        if (word == "clock" && evaluating_) read_clock_ = true;
         push(op, number(word == "pi" ? kPi : clock_));
         take();
         return true;

@@ -52,6 +52,10 @@ class ExpressionReader {
     // --define). On a syntax error nothing past the error is consumed.
     ParsedValue read(bool evaluate = true);
 
+    // True once a value read for evaluation has named `clock`: a scene
+    // whose values never do is the same at every frame.
+    bool read_clock() const { return read_clock_; }
+
     // One step of evaluation, in postfix order.
     struct Op {
         enum class Code : std::uint8_t { push, sign, group, add, sub, mul, div, call, vector };
@@ -93,6 +97,7 @@ class ExpressionReader {
     std::uint32_t end_offset_ = 0;
     SourcePos end_pos_;
     bool literal_ = true;
+    bool read_clock_ = false;
     bool single_name_ = false;
 };
 

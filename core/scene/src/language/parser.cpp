@@ -157,6 +157,7 @@ class Parser final : private TokenCursor {
             if (!symbol->defined_in_file && sink_.accepts_warnings())
                 sink_.warning({}, "--define " + name + ": the scene defines no " + quote(name));
         result_.diagnostics = sink_.take();
+        result_.reads_clock = result_.reads_clock || expressions_.read_clock();
         if (!source_map_) result_.source = {};
         // Kept with or without the map: diagnostics quote the included texts.
         result_.source.files = include_.take_files();
@@ -787,6 +788,8 @@ class Parser final : private TokenCursor {
     // ends check them first) is an error without a location.
     void set_command_line_names(const ParseOptions& options) {
         for (const Define& define : options.defines) {
+            // Over-cautious for a string that holds the word; never wrong.
+            if (define.value.find("clock") != std::string::npos) result_.reads_clock = true;
             ExprValue value;
             std::string error;
             if (!evaluate_define_value(define.value, options.clock, value, error)) {

@@ -5,6 +5,7 @@
 
 #include "jtracer/diagnostics.hpp"
 #include "jtracer/frontend/command_line.hpp"
+#include "jtracer/frontend/frame_numbering.hpp"
 #include "jtracer/frontend/progress.hpp"
 #include "jtracer/parser.hpp"
 
@@ -32,14 +33,23 @@ struct RenderFlags {
     // order; --clock V (docs/language.md §15.2, §15.4).
     std::vector<std::string> defines;
     std::optional<double> clock;
+    // --frames N and --frame-range A..B: a sequence at clocks 0..1 (§15.4).
+    std::optional<int> frames;
+    std::optional<FrameRange> frame_range;
 };
 
 // The options the scene is parsed with: --define and --clock.
 ParseOptions parse_options_for(const RenderFlags& flags);
 
 // Declares the scene argument and -o, --camera, --width, --height, --samples,
-// --threads, --progress, -q, --define and --clock.
+// --threads, --progress, -q, --define, --clock, --frames and --frame-range.
 void add_render_flags(CLI::App& app, RenderFlags& flags);
+
+// The rules between the sequence flags, for the programs' checks: --clock
+// not with --frames, --frame-range only with --frames and within it, -o a
+// pattern with one frame number field. Throws CLI::ValidationError naming
+// the option.
+void check_sequence_flags(const RenderFlags& flags);
 
 // --define (repeatable) and --clock alone, for a front end with its own
 // other flags (jtracer-view).

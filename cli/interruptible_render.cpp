@@ -1,0 +1,67 @@
+#include "interruptible_render.hpp"
+
+#include <atomic>
+#include <chrono>
+#include <condition_variable>
+#include <csignal>
+#include <iostream>
+#include <mutex>
+#include <thread>
+
+namespace jt::cli {
+
+namespace {
+
+std::atomic<int> interrupted{0};
+
+extern "C" void on_interrupt(int signal) {
+    interrupted.store(signal);
+}
+
+}  // namespace
+
+void catch_interrupts() {
+    std::signal(SIGINT, on_interrupt);
+    std::signal(SIGTERM, on_interrupt);
+}
+
+int interrupting_signal() {
+    return interrupted.load();
+}
+
+// The end of the render wakes this thread at once, so that a small render
+// does not wait out a tick.
+bool render_interruptibly(RenderJob& job, frontend::ProgressDisplay& display,
+                          const ProgressView& view) {
+    std::mutex mutex;
+    std::condition_variable finished;
+    bool done = false;
+    std::thread worker([&] {
+        job.run();
+        {
+            std::lock_guard<std::mutex> lock(mutex);
+            done = true;
+        }
+        finished.notify_one();
+    });
+    std::unique_lock<std::mutex> lock(mutex);
+    while (!done) {
+        lock.unlock();
+        if (interrupted.load() != 0) job.cancel();
+        display.update(view ? view(job.progress()) : job.progress());
+        lock.lock();
+        finished.wait_for(lock, std::chrono::milliseconds(100), [&] { return done; });
+    }
+    lock.unlock();
+    worker.join();
+    return job.progress().finished && interrupted.load() == 0;
+}
+
+int report_interrupt(const char* what) {
+    const int signal = interrupted.load() != 0 ? interrupted.load() : SIGINT;
+    std::cerr << "jtracer-cli: interrupted by " << (signal == SIGTERM ? "SIGTERM" : "SIGINT")
+              << "; " << what << "\n";
+    return 128 + signal;
+}
+
+}  // namespace jt::cli

@@ -1,0 +1,88 @@
+#include "sequence_command.hpp"
+
+#include "interruptible_render.hpp"
+#include "memory_budget.hpp"
+
+#include "jtracer/frontend/scene_sequence.hpp"
+#include "jtracer/frontend/sequence_progress.hpp"
+#include "jtracer/region_file.hpp"
+
+#include <chrono>
+#include <iostream>
+
+namespace jt::cli {
+
+namespace {
+
+using namespace jt::frontend;
+using Clock = std::chrono::steady_clock;
+
+// What stays of a sequence stopped at frame `index`.
+std::string kept(const FrameRange& range, int index) {
+    if (index == range.first) return "no frame was written";
+    return "frames " + std::to_string(range.first) + ".." + std::to_string(index - 1) +
+           " were written";
+}
+
+}  // namespace
+
+int run_sequence(const Options& o) {
+    SceneSequence sequence("jtracer-cli", o, o.region);
+    const FrameRange range = sequence.range();
+    const int total = range.last - range.first + 1;
+    ProgressDisplay display(progress_style_for_stderr(o.progress, o.quiet));
+    const auto start = Clock::now();
+    catch_interrupts();
+    for (int index = range.first; index <= range.last; ++index) {
+        const SequenceFrame frame = sequence.frame(index, !o.check_only);
+        if (!frame.message.empty()) {
+            display.finish();
+            std::cerr << frame.message;
+        }
+        if (frame.exit_code != exit_ok) return frame.exit_code;
+        if (o.check_only) continue;
+        if (Expected<void> fits = check_render_memory(frame.render, o.region_output); !fits) {
+            display.finish();
+            std::cerr << "jtracer-cli: " << fits.error().message << "; " << kept(range, index)
+                      << "\n";
+            return exit_io_error;
+        }
+        RenderJob job(frame.prepared, frame.render);
+        const int done = index - range.first;
+        const bool rendered = render_interruptibly(job, display, [&](const RenderProgress& p) {
+            const double seconds = std::chrono::duration<double>(Clock::now() - start).count();
+            return sequence_progress(p, done, total, seconds);
+        });
+        if (!rendered) {
+            display.finish();
+            return report_interrupt(kept(range, index).c_str());
+        }
+        const Expected<void> written =
+            o.region_output ? write_region_bmp(frame.output, job.region_image(),
+                                               {frame.render.width, frame.render.height, *o.region})
+                            : write_image(frame.output, job.image(), frame.format);
+        display.finish();
+        if (!written) {
+            std::cerr << "jtracer-cli: " << written.error().message << "; " << kept(range, index)
+                      << "\n";
+            return exit_io_error;
+        }
+        if (!o.quiet)
+            std::cerr << "wrote " << frame.output << " (frame " << index << ", clock "
+                      << shortest_decimal(frame.clock) << "): "
+                      << render_summary(frame.render.width, frame.render.height,
+                                        frame.render.samples, job.progress())
+                      << "\n";
+    }
+    display.finish();
+    if (o.check_only && !o.quiet)
+        std::cerr << o.scene_path << ": no errors in frames " << range.first << ".." << range.last
+                  << "\n";
+    if (!o.quiet && !o.check_only && total > 1)
+        std::cerr << "wrote " << total << " frames in "
+                  << format_duration(std::chrono::duration<double>(Clock::now() - start).count())
+                  << "\n";
+    return exit_ok;
+}
+
+}  // namespace jt::cli

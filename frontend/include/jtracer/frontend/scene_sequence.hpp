@@ -1,0 +1,74 @@
+#pragma once
+// A scene rendered at the frames of a sequence (docs/language.md §15.4), each
+// frame set up exactly as set_up_frame sets up a render at `--clock` of the
+// frame's clock, so that a frame's bytes equal that render's.
+//
+// What it saves: a scene none of whose values names `clock` is the same at
+// every frame, so it is read, checked and prepared once for the whole
+// sequence. Any other is read again at every frame, and prepared with the
+// previous frame's scene at hand (its acceleration structure is reused when
+// the geometry did not move; models and textures come from the shared caches,
+// held meanwhile by the previous frame).
+
+#include "jtracer/frontend/frame_file_name.hpp"
+#include "jtracer/frontend/frame_setup.hpp"
+
+#include <memory>
+#include <optional>
+#include <set>
+#include <string>
+#include <string_view>
+
+namespace jt::frontend {
+
+struct SequenceFrame {
+    int index = 0;
+    double clock = 0.0;
+    int exit_code = exit_ok;  // non-zero: stop with it; `message` says why
+    // For stderr: the diagnostics no earlier frame printed (a warning that
+    // every frame gives shows once), and for an error of a scene that reads
+    // `clock` the line "note: at frame F (clock = V)".
+    std::string message;
+    RenderOptions render;
+    std::string output;  // this frame's file
+    ImageFormat format = ImageFormat::bmp;
+    // The render-ready scene; null unless asked for, and on failure.
+    std::shared_ptr<const PreparedScene> prepared;
+};
+
+class SceneSequence {
+  public:
+    // `flags.frames` must be set; flags.output, when set, is a valid pattern
+    // (check_sequence_flags).
+    SceneSequence(std::string_view program, const RenderFlags& flags,
+                  std::optional<FrameRegion> region = std::nullopt);
+
+    // The frames to render: --frame-range, or all of them.
+    FrameRange range() const { return range_; }
+    int count() const { return count_; }
+
+    // Sets up frame `index`, and prepares it when `prepare` (a failure to
+    // prepare is exit_io_error).
+    SequenceFrame frame(int index, bool prepare = true);
+
+  private:
+    FrameSetup set_up(double clock, bool& reads_clock);
+    std::string unprinted(const std::vector<Diagnostic>& diagnostics);
+
+    std::string program_;
+    RenderFlags flags_;
+    std::optional<FrameRegion> region_;
+    int count_ = 1;
+    FrameRange range_;
+    std::optional<FrameNamePattern> pattern_;
+    // Set once a frame showed that the scene is the same at every clock:
+    // every later frame renders this set-up and this prepared scene.
+    std::optional<FrameSetup> fixed_;
+    std::shared_ptr<const PreparedScene> previous_;
+    std::set<std::string> printed_;  // formatted diagnostics already shown
+    // The text of the frame being set up, to format its diagnostics.
+    std::string path_;
+    std::string text_;
+};
+
+}  // namespace jt::frontend

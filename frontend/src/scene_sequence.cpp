@@ -1,0 +1,83 @@
+#include "jtracer/frontend/scene_sequence.hpp"
+
+#include "jtracer/scene_file.hpp"
+
+namespace jt::frontend {
+
+SceneSequence::SceneSequence(std::string_view program, const RenderFlags& flags,
+                             std::optional<FrameRegion> region)
+    : program_(program), flags_(flags), region_(region), count_(flags.frames.value_or(1)) {
+    range_ = flags.frame_range.value_or(FrameRange{0, count_ - 1});
+    if (flags.output)
+        if (Expected<FrameNamePattern> pattern = parse_frame_name_pattern(*flags.output))
+            pattern_ = *pattern;
+}
+
+FrameSetup SceneSequence::set_up(double clock, bool& reads_clock) {
+    RenderFlags flags = flags_;
+    flags.clock = clock;
+    Expected<LoadedScene> read = load_scene_file(flags.scene_path, parse_options_for(flags));
+    if (!read) {
+        FrameSetup setup;
+        setup.exit_code = exit_io_error;
+        setup.message = program_ + ": " + read.error().message + "\n";
+        return setup;
+    }
+    reads_clock = read->parsed.reads_clock;
+    path_ = read->path;
+    text_ = read->text;
+    return set_up_frame(program_, flags, std::move(*read), region_);
+}
+
+std::string SceneSequence::unprinted(const std::vector<Diagnostic>& diagnostics) {
+    std::string message;
+    for (const Diagnostic& d : diagnostics) {
+        std::string text = format_diagnostic(d, path_, text_);
+        if (printed_.insert(text).second) message += text;
+    }
+    return message;
+}
+
+SequenceFrame SceneSequence::frame(int index, bool prepare) {
+    SequenceFrame frame;
+    frame.index = index;
+    frame.clock = frame_clock(index, count_);
+    bool reads_clock = false;
+    std::optional<FrameSetup> fresh;
+    if (!fixed_) fresh = set_up(frame.clock, reads_clock);
+    const FrameSetup& setup = fixed_ ? *fixed_ : *fresh;
+    frame.exit_code = setup.exit_code;
+    if (fresh) {
+        // A usage or I/O failure is reported whole; diagnostics only once.
+        const bool diagnostics_only =
+            setup.exit_code == exit_ok || setup.exit_code == exit_scene_error;
+        frame.message = diagnostics_only ? unprinted(setup.diagnostics) : setup.message;
+        if (setup.exit_code == exit_scene_error && reads_clock)
+            frame.message += "note: at frame " + std::to_string(index) +
+                             " (clock = " + shortest_decimal(frame.clock) + ")\n";
+    }
+    if (setup.exit_code != exit_ok) return frame;
+    frame.render = setup.render;
+    frame.output =
+        pattern_ ? frame_file_name(*pattern_, index) : numbered_file_name(setup.output, index);
+    // The name typed on the command line decides, as for one image.
+    frame.format = pattern_ ? format_from_extension(frame.output) : setup.format;
+    if (prepare) {
+        if (fixed_ && previous_) {
+            frame.prepared = previous_;
+        } else {
+            Expected<std::shared_ptr<const PreparedScene>> prepared =
+                prepare_scene(setup.scene, previous_);
+            if (!prepared) {
+                frame.exit_code = exit_io_error;
+                frame.message += program_ + ": " + prepared.error().message + "\n";
+                return frame;
+            }
+            frame.prepared = previous_ = *prepared;
+        }
+    }
+    if (fresh && !reads_clock) fixed_ = std::move(*fresh);
+    return frame;
+}
+
+}  // namespace jt::frontend

@@ -1,0 +1,194 @@
+// jtracer-cli --frames and --frame-range (docs/language.md §15.4).
+
+#include "common/files.hpp"
+#include "common/scratch_dir.hpp"
+
+#include <gtest/gtest.h>
+
+#include <filesystem>
+#include <string>
+
+namespace jt {
+namespace {
+
+namespace fs = std::filesystem;
+
+// A sphere whose radius grows with clock; `name` is the scene's filename.
+const std::string growing_scene = R"(
+define name = "seq.bmp";
+cameras { perspective_camera { position: <0, 0, 6>; look_at: <0, 0, 0>; } }
+scene {
+    sphere { radius: 0.5 + clock; material { pigment: <1, 1, 1>; ambient: <1, 1, 1>; } }
+}
+render_settings { width: 24; height: 24; filename: name; ambient_light: <1, 1, 1>; }
+)";
+
+class CliFrames : public test::ScratchTest {
+  protected:
+    void SetUp() override { test::write_file(dir / "scene.jts", growing_scene); }
+
+    test::ProgramRun run(const std::string& args) { return run_shell("'" JT_CLI "' " + args); }
+
+    std::string bytes(const std::string& name) { return test::read_file(dir / name); }
+
+    static int count(const std::string& text, const std::string& what) {
+        int n = 0;
+        for (std::size_t at = text.find(what); at != std::string::npos;
+             at = text.find(what, at + 1))
+            ++n;
+        return n;
+    }
+};
+
+// Frame f of N has clock f / (N - 1), written back as the shortest decimal.
+TEST_F(CliFrames, EveryFrameEqualsItsClockRenderedAlone) {
+    test::ProgramRun r = run("scene.jts --frames 4 -o 'shot-%04d.png'");
+    ASSERT_EQ(r.code, 0) << r.err;
+    const char* clocks[] = {"0", "0.3333333333333333", "0.6666666666666666", "1"};
+    for (int f = 0; f < 4; ++f) {
+        const std::string alone = "alone-" + std::to_string(f) + ".png";
+        ASSERT_EQ(run(std::string("-q scene.jts --clock ") + clocks[f] + " -o " + alone).code, 0);
+        const std::string frame = "shot-000" + std::to_string(f) + ".png";
+        ASSERT_TRUE(fs::exists(dir / frame)) << frame;
+        EXPECT_EQ(bytes(frame).substr(0, 4), "\x89PNG");
+        EXPECT_EQ(bytes(frame), bytes(alone)) << frame;
+    }
+    EXPECT_NE(bytes("shot-0000.png"), bytes("shot-0003.png"));
+    EXPECT_FALSE(fs::exists(dir / "shot-0004.png"));
+    EXPECT_NE(r.err.find("(frame 1, clock 0.3333333333333333)"), std::string::npos) << r.err;
+}
+
+TEST_F(CliFrames, ADefineOfClockIsEvaluatedPerFrame) {
+    ASSERT_EQ(run("-q scene.jts --frames 3 --define 'name=\"x.bmp\"' -o 'd%d.bmp'").code, 0);
+    ASSERT_EQ(run("-q scene.jts --frames 3 -o 'e%d.bmp' --define 'name=clock'").code, 1);
+    ASSERT_EQ(run("-q scene.jts --clock 0.5 -o half.bmp").code, 0);
+    EXPECT_EQ(bytes("d1.bmp"), bytes("half.bmp"));
+    EXPECT_FALSE(fs::exists(dir / "e0.bmp"));
+}
+
+TEST_F(CliFrames, OneFrameHasClockZero) {
+    ASSERT_EQ(run("-q scene.jts --frames 1 -o 'one-%d.bmp'").code, 0);
+    ASSERT_EQ(run("-q scene.jts -o zero.bmp").code, 0);
+    EXPECT_EQ(bytes("one-0.bmp"), bytes("zero.bmp"));
+}
+
+TEST_F(CliFrames, PatternFieldsAndPercentSigns) {
+    ASSERT_EQ(run("-q scene.jts --frames 2 -o '%%_%09d_%%.bmp'").code, 0);
+    EXPECT_TRUE(fs::exists(dir / "%_000000001_%.bmp"));
+    ASSERT_EQ(run("-q scene.jts --frames 11 --frame-range 10..10 -o 'p%d.bmp'").code, 0);
+    EXPECT_TRUE(fs::exists(dir / "p10.bmp"));
+    ASSERT_EQ(run("-q scene.jts --frames 2 -o 'q%01d.bmp'").code, 0);
+    EXPECT_TRUE(fs::exists(dir / "q1.bmp"));
+}
+
+TEST_F(CliFrames, BadPatternsExitTwoNamingTheOption) {
+    for (const char* pattern :
+         {"shot.png", "shot-%d-%d.png", "shot-%x.png", "shot-%0d.png", "shot-%00d.png",
+          "shot-%4d.png", "shot-%010d.png", "shot-%", "%s.png", "100%.png"}) {
+        test::ProgramRun r = run(std::string("scene.jts --frames 3 -o '") + pattern + "'");
+        EXPECT_EQ(r.code, 2) << pattern << "\n" << r.err;
+        EXPECT_NE(r.err.find("-o/--output"), std::string::npos) << pattern << "\n" << r.err;
+    }
+    EXPECT_EQ(std::distance(fs::directory_iterator(dir), fs::directory_iterator()), 1);
+}
+
+TEST_F(CliFrames, OptionRulesExitTwoNamingTheOption) {
+    const std::pair<const char*, const char*> cases[] = {
+        {"--frames 3 --clock 0.5 -o 'a%d.bmp'", "--clock"},
+        {"--frame-range 0..1 -o a.bmp", "--frame-range"},
+        {"--frames 4 --frame-range 2..4 -o 'a%d.bmp'", "--frame-range"},
+        {"--frames 4 --frame-range 3..1 -o 'a%d.bmp'", "--frame-range"},
+        {"--frames 4 --frame-range 1 -o 'a%d.bmp'", "--frame-range"},
+        {"--frames 4 --frame-range -1..2 -o 'a%d.bmp'", "--frame-range"},
+        {"--frames 4 --frame-range a..b -o 'a%d.bmp'", "--frame-range"},
+        {"--frames 0 -o 'a%d.bmp'", "--frames"},
+        {"--frames 2 -o 'a%d.png' --expect ref.png", "--expect"},
+    };
+    for (const auto& [args, option] : cases) {
+        test::ProgramRun r = run(std::string("scene.jts ") + args);
+        EXPECT_EQ(r.code, 2) << args << "\n" << r.err;
+        EXPECT_NE(r.err.find(option), std::string::npos) << args << "\n" << r.err;
+    }
+    EXPECT_EQ(std::distance(fs::directory_iterator(dir), fs::directory_iterator()), 1);
+}
+
+// Without -o: "-" and four digits before the extension of the last path
+// component; never a % field; always a BMP.
+TEST_F(CliFrames, TheScenesFilenameIsNumbered) {
+    fs::create_directory(dir / "out.d");
+    ASSERT_EQ(run("-q scene.jts --frames 2").code, 0);
+    EXPECT_TRUE(fs::exists(dir / "seq-0000.bmp"));
+    EXPECT_TRUE(fs::exists(dir / "seq-0001.bmp"));
+    ASSERT_EQ(run("-q scene.jts --frames 2 --define 'name=\"out.d/plain\"'").code, 0);
+    EXPECT_TRUE(fs::exists(dir / "out.d/plain-0001"));
+    ASSERT_EQ(run("-q scene.jts --frames 2 --define 'name=\"a%d.png\"'").code, 0);
+    ASSERT_TRUE(fs::exists(dir / "a%d-0001.png"));
+    EXPECT_EQ(bytes("a%d-0001.png").substr(0, 2), "BM");
+    ASSERT_EQ(run("-q scene.jts --frames 12000 --frame-range 11999..11999").code, 0);
+    EXPECT_TRUE(fs::exists(dir / "seq-11999.bmp"));
+}
+
+TEST_F(CliFrames, ARangeRendersOnlyItsFramesAndTheSameBytes) {
+    ASSERT_EQ(run("-q scene.jts --frames 6 -o 'all-%d.bmp'").code, 0);
+    ASSERT_EQ(run("-q scene.jts --frames 6 --frame-range 2..3 -o 'part-%d.bmp'").code, 0);
+    for (int f : {0, 1, 4, 5})
+        EXPECT_FALSE(fs::exists(dir / ("part-" + std::to_string(f) + ".bmp")));
+    for (int f : {2, 3})
+        EXPECT_EQ(bytes("part-" + std::to_string(f) + ".bmp"),
+                  bytes("all-" + std::to_string(f) + ".bmp"));
+}
+
+// The radius reaches 0 at frame 2 of 5 (clock 0.5): an error there, with its
+// frame; the frames before it stay.
+TEST_F(CliFrames, AnErrorAtOneFrameNamesItAndKeepsEarlierFrames) {
+    std::string text = growing_scene;
+    text.replace(text.find("0.5 + clock"), 11, "sqrt(0.5 - clock)");
+    test::write_file(dir / "shrinking.jts", text);
+    test::ProgramRun r = run("shrinking.jts --frames 5 -o 'f%d.bmp'");
+    EXPECT_EQ(r.code, 1) << r.err;
+    EXPECT_NE(r.err.find("shrinking.jts:5:22: error: 'radius' must be greater than 0"),
+              std::string::npos)
+        << r.err;
+    EXPECT_NE(r.err.find("note: at frame 2 (clock = 0.5)\n"), std::string::npos) << r.err;
+    for (int f : {0, 1}) EXPECT_TRUE(fs::exists(dir / ("f" + std::to_string(f) + ".bmp")));
+    EXPECT_FALSE(fs::exists(dir / "f2.bmp"));
+    EXPECT_FALSE(fs::exists(dir / "f3.bmp"));
+    EXPECT_FALSE(fs::exists(dir / "f4.bmp"));
+    // --check sees it too, and writes nothing.
+    test::ProgramRun check = run("--check shrinking.jts --frames 5 -o 'c%d.bmp'");
+    EXPECT_EQ(check.code, 1) << check.err;
+    EXPECT_NE(check.err.find("note: at frame 2 (clock = 0.5)"), std::string::npos) << check.err;
+    EXPECT_FALSE(fs::exists(dir / "c0.bmp"));
+}
+
+TEST_F(CliFrames, AWarningOfEveryFrameIsPrintedOnce) {
+    std::string text = growing_scene;
+    text.replace(text.find("pigment: <1, 1, 1>"), 18, "pigment: <2, 1, 1>");
+    test::write_file(dir / "clipped.jts", text);
+    test::ProgramRun r = run("clipped.jts --frames 3 -o 'w%d.bmp'");
+    ASSERT_EQ(r.code, 0) << r.err;
+    EXPECT_EQ(count(r.err, "warning:"), 1) << r.err;
+    EXPECT_EQ(count(r.err, "wrote w"), 3) << r.err;
+    test::ProgramRun quiet = run("-q clipped.jts --frames 3 -o 'w%d.bmp'");
+    ASSERT_EQ(quiet.code, 0);
+    EXPECT_EQ(quiet.err, "");
+}
+
+// A scene that never reads clock renders the same image at every frame.
+TEST_F(CliFrames, ASceneWithoutClockGivesEqualFrames) {
+    std::string text = growing_scene;
+    text.replace(text.find("0.5 + clock"), 11, "0.75");
+    test::write_file(dir / "still.jts", text);
+    ASSERT_EQ(run("-q still.jts --frames 3 -o 's%d.bmp'").code, 0);
+    ASSERT_EQ(run("-q still.jts -o alone.bmp").code, 0);
+    for (int f : {0, 1, 2}) EXPECT_EQ(bytes("s" + std::to_string(f) + ".bmp"), bytes("alone.bmp"));
+}
+
+TEST_F(CliFrames, ProgressLogCoversTheSequence) {
+    test::ProgramRun r = run("scene.jts --frames 2 --progress log -o 'g%d.bmp'");
+    ASSERT_EQ(r.code, 0) << r.err;
+    EXPECT_NE(r.err.find("wrote 2 frames in"), std::string::npos) << r.err;
+}
+
+}  // namespace
+}  // namespace jt
