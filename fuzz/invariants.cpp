@@ -6,6 +6,7 @@
 #include "jtracer/parser.hpp"
 #include "jtracer/serializer.hpp"
 #include "jtracer/source_map.hpp"
+#include "jtracer/source_serializer.hpp"
 #include "jtracer/texture.hpp"
 #include "jtracer/validate.hpp"
 
@@ -118,6 +119,19 @@ std::string check_scene_text(std::string_view text) {
         return "round trip: the reparsed scene differs\n" + canonical;
     if (serialize_scene(reparsed.scene) != canonical)
         return "round trip: serializing twice gives different text\n" + canonical;
+
+    // The same, keeping the text's names and expressions.
+    const std::string kept = serialize_scene(parsed.scene, {text, parsed});
+    ParseResult kept_parsed = parse_scene(kept);
+    if (!kept_parsed.ok()) {
+        std::string first =
+            kept_parsed.diagnostics.empty() ? "" : describe(kept_parsed.diagnostics[0]);
+        return "source round trip: the serialized scene does not parse: " + first + "\n" + kept;
+    }
+    if (!(kept_parsed.scene == parsed.scene))
+        return "source round trip: the reparsed scene differs\n" + kept;
+    if (serialize_scene(kept_parsed.scene, {kept, kept_parsed}) != kept)
+        return "source round trip: serializing twice gives different text\n" + kept;
     return {};
 }
 

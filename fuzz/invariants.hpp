@@ -17,7 +17,8 @@ namespace jt::fuzz {
 // Parses `text`, validates when parsing succeeded, and checks: every
 // diagnostic lies within the text (or is unlocated) and formats; a scene
 // without errors serializes to text that parses back, without errors, to an
-// equal scene, and serializing that gives the same text again.
+// equal scene, and serializing that gives the same text again; the same for
+// the serializer that keeps the text's names (source_serializer.hpp).
 std::string check_scene_text(std::string_view text);
 
 // Empty when every diagnostic has a message and lies within `text` (at most one

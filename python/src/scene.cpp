@@ -6,7 +6,7 @@
 
 #include "jtracer/frontend/render_flags.hpp"
 #include "jtracer/schema.hpp"
-#include "jtracer/serializer.hpp"
+#include "jtracer/source_serializer.hpp"
 
 #include <pybind11/operators.h>
 #include <pybind11/stl.h>
@@ -129,6 +129,15 @@ ParseOptions options_with(const std::optional<py::dict>& defines) {
     return options;
 }
 
+// The scene's text, keeping its file's names: the file was read without the
+// source map (as jtracer-cli reads it), so it is parsed again with it.
+std::string scene_text(const PythonScene& s) {
+    ParseOptions options = s.loaded.options;
+    options.source_map = true;
+    const ParseResult parsed = parse_scene(s.loaded.text, options);
+    return serialize_scene(s.loaded.parsed.scene, {s.loaded.text, parsed, options.defines});
+}
+
 // As jtracer-cli reads a file: without the source map, which check_scene
 // builds only when there is something to locate.
 LoadedScene read_file(const std::filesystem::path& path, const ParseOptions& options) {
@@ -162,9 +171,12 @@ void bind_scene(py::module_& m) {
             "warnings",
             [](const PythonScene& s) { return diagnostic_list(s.warnings, s.loaded.path); },
             "The warnings `jtracer-cli --check` prints for it, as Diagnostic objects")
-        .def(
-            "text", [](const PythonScene& s) { return serialize_scene(s.loaded.parsed.scene); },
-            "The scene as canonical .jts text (every block and property written out)")
+        .def("text", &scene_text,
+             "The scene as canonical .jts text (every block and property written out), "
+             "keeping the file's definitions, named materials, and the values it wrote as "
+             "names or expressions; the defines given to load() or parse() replace the "
+             "file's own definitions of those names, so that parse() reads it back as the "
+             "same scene")
         .def(
             "render",
             [](PythonScene& s, std::optional<int> width, std::optional<int> height,

@@ -151,3 +151,35 @@ def test_bad_defines_raise_value_or_type_errors():
     vector = jtracer.parse(DEFINED.replace("define r = 1;", "define r = 1;\ndefine c = <0, 0, 0>;"),
                            defines={"c": (0, 1, 0)})
     assert vector.cameras[0].fov == 30
+
+
+NAMED = (
+    "define r = 2;\n"
+    "material glossy { reflection: 0.5; pigment: <1, 0, 0> * r / 2; }\n"
+    "render_settings { width: 8 * r; height: 8; }\n"
+    "cameras { perspective_camera { name: \"c\"; position: <0, 1, 5> * r; } }\n"
+    "scene { sphere { radius: r / 2; material: glossy; }\n"
+    "        point_light { position: <0, r, 0>; intensity: <1, 1, 1>; } }\n"
+)
+
+
+def test_text_keeps_the_names_and_expressions_of_the_file():
+    scene = jtracer.parse(NAMED)
+    text = scene.text()
+    for written in ("define r = 2;\n", "material glossy {\n", "    width: 8 * r;\n",
+                    "        radius: r / 2;\n", "        material: glossy;\n",
+                    "        position: <0, 1, 5> * r;\n", "    pigment: <1, 0, 0> * r / 2;\n"):
+        assert written in text
+    again = jtracer.parse(text)
+    assert again.text() == text
+    assert again.settings == scene.settings and again.cameras == scene.cameras
+
+
+def test_text_holds_the_defines_it_was_read_with(tmp_path):
+    path = tmp_path / "named.jts"
+    path.write_text(NAMED)
+    scene = jtracer.load(path, defines={"r": 3})
+    text = scene.text()
+    assert "define r = 3;\n" in text and "define r = 2;" not in text
+    again = jtracer.parse(text)
+    assert again.settings.width == 24 and again.cameras == scene.cameras

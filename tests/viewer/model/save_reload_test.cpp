@@ -164,6 +164,33 @@ TEST_F(ViewerFiles, UndoingANewCameraAfterSavingSavesItsRemoval) {
     EXPECT_EQ(read_file(file), kOriginal) << "byte for byte the file before the camera";
 }
 
+// Save as writes the file's text with the edits in place, so a file's names,
+// named materials and expressions are kept, never replaced by their values.
+TEST(ViewerSaveAs, KeepsTheFilesNamesAndExpressions) {
+    const ScratchDir dir("save_as_names");
+    const fs::path file = dir.path() / "named.jts";
+    const std::string named =
+        "define r = 1;\n"
+        "material grey { pigment: <0.5, 0.5, 0.5> * r; }\n"
+        "render_settings { width: 16 * r; height: 12; }\n"
+        "cameras { perspective_camera { position: <0, 1, 6> * r; aspect: 4 / 3; } }\n"
+        "scene {\n"
+        "    sphere { radius: r / 2; material: grey; }\n"
+        "    point_light { position: <3, 5, 4>; intensity: <1, 1, 1>; }\n"
+        "}\n";
+    write_file(file, named);
+    ModelLoop model;
+    AppState state{test_config()};
+    open_scene(state, file);
+    ASSERT_TRUE(model.run_until_complete(state, kTimeout));
+    edit_scene(state, [](Scene& s) { s.lights[0].intensity = Colour(0.5); });
+    const fs::path copy = dir.path() / "copy.jts";
+    ASSERT_TRUE(save_scene_as(state, copy, false)) << state.message;
+    const std::string saved = read_file(copy);
+    EXPECT_EQ(saved, replaced(named, "intensity: <1, 1, 1>", "intensity: <0.5, 0.5, 0.5>"));
+    EXPECT_TRUE(parse_scene(saved).scene == state.doc.scene);
+}
+
 // A file the viewer had loaded, then broken in each way a file breaks.
 struct Fault {
     const char* name;
