@@ -69,6 +69,7 @@ void RenderController::stop() {
 void RenderController::forget_prepared() {
     std::lock_guard lock(mutex_);
     prepared_.reset();
+    prepared_from_.reset();
 }
 
 void RenderController::pause() {
@@ -81,8 +82,8 @@ void RenderController::pause() {
 // which may still be winding down) has ended.
 void RenderController::launch(const std::shared_ptr<Run>& run, const Scene* scene,
                               std::shared_ptr<Run> paused) {
-    std::optional<Scene> to_prepare;
-    if (scene) to_prepare = *scene;
+    std::shared_ptr<const Scene> to_prepare;
+    if (scene) to_prepare = std::make_shared<const Scene>(*scene);
     run->thread =
         std::thread([this, run, to_prepare = std::move(to_prepare), paused = std::move(paused)] {
             try {
@@ -93,12 +94,17 @@ void RenderController::launch(const std::shared_ptr<Run>& run, const Scene* scen
                 }
                 if (to_prepare) {
                     std::shared_ptr<const PreparedScene> previous;
+                    std::shared_ptr<const Scene> previous_scene;
                     {
                         std::lock_guard lock(mutex_);
                         previous = prepared_;
+                        previous_scene = prepared_from_;
                     }
+                    // A material edit patches the previous scene in place of
+                    // preparing every object again.
                     Expected<std::shared_ptr<const PreparedScene>> prepared =
-                        prepare_scene(*to_prepare, previous);
+                        previous_scene ? prepare_scene_edit(*previous_scene, *to_prepare, previous)
+                                       : prepare_scene(*to_prepare, previous);
                     if (!prepared) {
                         run->fail("the render failed: " + prepared.error().message);
                         run->done = true;
@@ -108,7 +114,10 @@ void RenderController::launch(const std::shared_ptr<Run>& run, const Scene* scen
                     job = std::make_shared<RenderJob>(*prepared, run->options);
                     {
                         std::lock_guard lock(mutex_);
-                        if (current_ == run) prepared_ = *prepared;  // a newer run's stays
+                        if (current_ == run) {  // a newer run's stays
+                            prepared_ = *prepared;
+                            prepared_from_ = to_prepare;
+                        }
                     }
                     std::lock_guard lock(run->mutex);
                     run->job = job;

@@ -36,7 +36,8 @@ class RenderController {
 
     // Cancels any job and renders `scene` through `options` (camera index, size,
     // samples). The acceleration structure of the previous scene is reused when
-    // only materials, lights, cameras or settings changed.
+    // only materials, lights, cameras or settings changed, and an edit of
+    // materials only patches the previous scene (prepare_scene_edit).
     void start(const Scene& scene, const RenderOptions& options);
     // The next start() builds the scene from scratch: geometry and image maps
     // are read again rather than reused, even from files that look unchanged.
@@ -84,6 +85,7 @@ class RenderController {
     mutable std::mutex mutex_;
     std::shared_ptr<Run> current_;                   // guarded by mutex_
     std::shared_ptr<const PreparedScene> prepared_;  // guarded by mutex_
+    std::shared_ptr<const Scene> prepared_from_;     // what prepared_ was prepared from; mutex_
     std::vector<std::shared_ptr<Run>> retired_;      // cancelled, winding down (UI thread only)
     std::uint64_t jobs_started_ = 0;
     Wakeup* wakeup_ = nullptr;

@@ -7,6 +7,7 @@
 #include "jtracer/parser.hpp"
 #include "jtracer/render_job.hpp"
 #include "model/app_actions.hpp"
+#include "model/model_frame.hpp"
 #include "model/wakeup.hpp"
 #include "render/prepared_scene.hpp"
 #include "viewer/viewer_test_files.hpp"
@@ -146,12 +147,44 @@ TEST(RenderReuse, MaterialEditReusesTheGeometryAndRendersTheEditedScene) {
     ASSERT_TRUE(second);
     EXPECT_NE(second, first);
     EXPECT_EQ(second->geometry, first->geometry) << "materials and lights leave the BVH as it was";
+    EXPECT_EQ(second->materials_gathered, 1u) << "only the recoloured object's material is new";
     EXPECT_EQ(edited, render_image(prepare_scene(scene).value(), options_for(scene, false)))
         << "and the picture is that of the edited scene prepared from scratch";
 
     std::get<Sphere>(scene.primitives[2].shape).radius *= 0.5;
     render(scene);
     EXPECT_NE(renderer.prepared()->geometry, first->geometry) << "a shape edit builds anew";
+}
+
+TEST(RenderReuse, ColourEditInTheViewerPatchesThePreparedScene) {
+    AppState state(test_config());
+    open_scene(state, kScene);
+    ASSERT_TRUE(state.doc.loaded) << state.message;
+    const auto frame = [&] { model_frame(state); };
+    ASSERT_TRUE(run_frames_until_complete(state, frame, kTimeout, 2));
+    const auto opened = state.render.renderer.prepared();
+    ASSERT_TRUE(opened);
+    EXPECT_EQ(opened->materials_gathered, state.doc.scene.primitives.size());
+    const Image8 before = state.render.display;
+
+    edit_scene(state, [](Scene& s) { s.primitives[1].material.pigment = Colour(0.1, 0.8, 0.2); });
+    ASSERT_TRUE(run_frames_until_complete(state, frame, kTimeout, 2));
+    const auto edited = state.render.renderer.prepared();
+    ASSERT_TRUE(edited);
+    EXPECT_NE(edited, opened);
+    EXPECT_EQ(edited->materials_gathered, 1u) << "the scene was not prepared again as a whole";
+    EXPECT_EQ(edited->geometry, opened->geometry);
+    EXPECT_NE(state.render.display, before) << "the edit shows";
+    RenderOptions options = render_options_for(state.doc.scene);
+    options.previews = false;
+    EXPECT_EQ(state.render.display, render_image(prepare_scene(state.doc.scene).value(), options))
+        << "the same bytes as the edited scene prepared from scratch";
+
+    // Moving the object is not a material edit: the whole scene is prepared.
+    edit_scene(state, [](Scene& s) { s.primitives[1].transforms.push_back({}); });
+    ASSERT_TRUE(run_frames_until_complete(state, frame, kTimeout, 2));
+    EXPECT_EQ(state.render.renderer.prepared()->materials_gathered,
+              state.doc.scene.primitives.size());
 }
 
 }  // namespace

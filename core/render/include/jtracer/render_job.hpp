@@ -47,6 +47,17 @@ struct PreparedScene;  // defined in the core's private headers
 Expected<std::shared_ptr<const PreparedScene>> prepare_scene(
     const Scene& scene, std::shared_ptr<const PreparedScene> previous = nullptr);
 
+// Prepares `scene` after an edit of `before`, the scene `previous` was
+// prepared from. When the edit changed materials only (of one object or many),
+// besides lights, cameras or settings, the result shares everything else with
+// `previous` and only the changed objects' materials are gathered again, so
+// that recolouring one object of a huge scene costs next to nothing. Any other
+// edit, and any scene that reads files (image maps, background map, meshes,
+// whose state on disk only prepare_scene checks), goes through
+// prepare_scene(scene, previous). The image is the same either way.
+Expected<std::shared_ptr<const PreparedScene>> prepare_scene_edit(
+    const Scene& before, const Scene& scene, std::shared_ptr<const PreparedScene> previous);
+
 struct RenderOptions {
     int width = 0;  // final image size in pixels, > 0
     int height = 0;

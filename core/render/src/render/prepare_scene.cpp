@@ -297,6 +297,7 @@ Expected<std::shared_ptr<const PreparedScene>> prepare_scene(
         for (const Material& m : prepared->materials)
             prepared->has_transmission = prepared->has_transmission || m.transmission > 0.0;
         prepared->pattern_space = pattern_spaces(scene.primitives, prepared->materials);
+        prepared->materials_gathered = scene.primitives.size();
     };
     if (scene.primitives.size() > 10000)
         tbb::parallel_invoke(build, gather_materials);

@@ -126,6 +126,10 @@ struct PreparedScene {
     std::shared_ptr<const std::vector<DirectionTable>> light_tables;
     std::vector<Camera> cameras;
     RenderSettings settings;
+    // How many primitives' materials this preparation gathered: every one for
+    // prepare_scene, only those an edit changed for prepare_scene_edit (how a
+    // test tells that the whole scene was not prepared again).
+    std::size_t materials_gathered = 0;
 };
 
 }  // namespace jt
