@@ -51,10 +51,9 @@ void set_material(PreparedScene& prepared, std::uint32_t i, const Material& m) {
     }
     of[i] = static_cast<std::uint32_t>(prepared.materials.size());
     prepared.materials.push_back(m);
-    // No material names a file here (changed_materials), so no picture.
-    prepared.textures.emplace_back();
-    prepared.texture_files.emplace_back();
-    prepared.texture_stamps.emplace_back();
+    // No material names a file here (changed_materials), so no picture; the
+    // pictures are parallel to the materials only when some has a pattern.
+    if (!prepared.textures.empty()) prepared.textures.emplace_back();
 }
 
 }  // namespace
