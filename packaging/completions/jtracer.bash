@@ -49,12 +49,13 @@ _jtracer() {
         else
             options='-h --help --version -o --output --camera --width --height --samples
                 --threads -q --quiet --progress --region --region-output --check --expect --threshold
-                --max-pixels --update --junit --define --clock'
+                --max-pixels --update --junit --define --clock --frames --frame-range'
         fi
         ;;
     jtracer-mpi)
         options='-h --help --version -o --output --camera --width --height --samples --threads
-            -q --quiet --progress --tile-size --rank-timeout --stats --define --clock'
+            -q --quiet --progress --tile-size --rank-timeout --stats --define --clock --frames
+            --frame-range'
         ;;
     jtracer-merge)
         options='-h --help --version -o --output -q --quiet'
@@ -96,7 +97,7 @@ _jtracer() {
         return
         ;;
     --width | --height | --samples | --threads | --region | --threshold | --max-pixels | \
-        --tile-size | --rank-timeout | --size | --timeout | --clock)
+        --tile-size | --rank-timeout | --size | --timeout | --clock | --frames | --frame-range)
         return # a number or a list of numbers: nothing to offer
         ;;
     --define)
