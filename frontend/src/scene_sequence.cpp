@@ -26,13 +26,14 @@ FrameSetup SceneSequence::set_up(double clock, bool& reads_clock) {
     reads_clock = read->parsed.reads_clock;
     path_ = read->path;
     text_ = read->text;
+    files_ = read->parsed.source.files;
     return set_up_frame(program_, flags, std::move(*read), region_);
 }
 
 std::string SceneSequence::unprinted(const std::vector<Diagnostic>& diagnostics) {
     std::string message;
     for (const Diagnostic& d : diagnostics) {
-        std::string text = format_diagnostic(d, path_, text_);
+        std::string text = format_diagnostics({d}, path_, text_, files_);
         if (printed_.insert(text).second) message += text;
     }
     return message;

@@ -161,6 +161,23 @@ TEST_F(CliFrames, AnErrorAtOneFrameNamesItAndKeepsEarlierFrames) {
     EXPECT_FALSE(fs::exists(dir / "c0.bmp"));
 }
 
+// An included file's clock is read per frame too, and its error quoted from it.
+TEST_F(CliFrames, AnIncludedFilesErrorIsLocatedInIt) {
+    test::write_file(dir / "ball.jts", "sphere { radius: 0.5 - clock; }\n");
+    std::string text = growing_scene;
+    text.replace(text.find("    sphere {"), 4, "    include \"ball.jts\";\n    ");
+    test::write_file(dir / "main.jts", text);
+    test::ProgramRun r = run("main.jts --frames 3 -o 'i%d.bmp'");
+    EXPECT_EQ(r.code, 1) << r.err;
+    EXPECT_NE(r.err.find("ball.jts:1:18: error: 'radius' must be greater than 0"),
+              std::string::npos)
+        << r.err;
+    EXPECT_NE(r.err.find("sphere { radius: 0.5 - clock; }"), std::string::npos) << r.err;
+    EXPECT_NE(r.err.find("note: at frame 1 (clock = 0.5)"), std::string::npos) << r.err;
+    EXPECT_TRUE(fs::exists(dir / "i0.bmp"));
+    EXPECT_FALSE(fs::exists(dir / "i1.bmp"));
+}
+
 TEST_F(CliFrames, AWarningOfEveryFrameIsPrintedOnce) {
     std::string text = growing_scene;
     text.replace(text.find("pigment: <1, 1, 1>"), 18, "pigment: <2, 1, 1>");

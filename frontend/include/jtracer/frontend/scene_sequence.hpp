@@ -66,9 +66,10 @@ class SceneSequence {
     std::optional<FrameSetup> fixed_;
     std::shared_ptr<const PreparedScene> previous_;
     std::set<std::string> printed_;  // formatted diagnostics already shown
-    // The text of the frame being set up, to format its diagnostics.
+    // The texts of the frame being set up, to format its diagnostics.
     std::string path_;
     std::string text_;
+    std::vector<SourceFile> files_;  // its included files
 };
 
 }  // namespace jt::frontend
