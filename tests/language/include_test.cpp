@@ -83,6 +83,23 @@ TEST_F(Include, FilesAreReadInPlaceAtTheTopInCamerasAndInScene) {
               "2");
 }
 
+// A vector of plain numbers (read in one scan, lexer.hpp's plain_vector) is
+// read from the file it is written in, even where the main text holds another
+// vector at the same offset.
+TEST_F(Include, PlainVectorsAreReadFromTheirOwnFile) {
+    const std::string main_text = "scene { include \"a.jts\"; sphere { center: <7, 8, 9>; } }\n";
+    const std::size_t at = main_text.find('<');
+    write("a.jts", "sphere { center:" + std::string(at - 16, ' ') + "<1, -2, 3>; }\n");
+    ParseResult r = parse(main_text);
+    EXPECT_EQ(brief(r.diagnostics), "");
+    ASSERT_EQ(r.scene.primitives.size(), 2u);
+    EXPECT_EQ(sphere(r, 0).center, Vec3(1, -2, 3));
+    EXPECT_EQ(sphere(r, 1).center, Vec3(7, 8, 9));
+    const PropertySource& center =
+        r.source.properties.at(r.source.primitives.at(0).properties.first);
+    EXPECT_EQ(center.value_span.pos, (SourcePos{1, static_cast<int>(at) + 1, 1}));
+}
+
 TEST_F(Include, AScenelessOfIncludesKeepsNoFiles) {
     ParseResult r = parse("scene { sphere { } }");
     EXPECT_TRUE(r.source.files.empty());

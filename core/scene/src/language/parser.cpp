@@ -261,15 +261,15 @@ class Parser final : private TokenCursor {
         // So does a vector of plain numbers, the other most common value.
         if (cur_->kind == TokenKind::less && evaluate) {
             Vec3 vector;
-            if (const std::size_t end = lexer_.plain_vector(cur_->offset, vector)) {
+            if (const std::size_t end = reading_->plain_vector(cur_->offset, vector)) {
                 const auto length = static_cast<std::uint32_t>(end - cur_->offset);
                 v.form = Value::Form::vector;
                 v.vector = vector;
                 v.span = {static_cast<std::uint32_t>(cur_->offset), length, cur_->pos};
                 v.end = {cur_->pos.line, cur_->pos.column + static_cast<int>(length)};
-                lexer_.skip_to(end);
-                lexer_.next(*cur_);
-                lexer_.next(*next_);
+                reading_->skip_to(end);
+                reading_->next(*cur_);
+                reading_->next(*next_);
                 return v;
             }
         }
