@@ -145,7 +145,10 @@ def plot(figures, out):
         root = [] if os.geteuid() == 0 else ["sudo"]
         subprocess.run(root + ["apt-get", "install", "-y", "-q", "python3-matplotlib"], check=True,
                        env=dict(os.environ, DEBIAN_FRONTEND="noninteractive"))
-        import matplotlib
+        try:
+            import matplotlib
+        except ImportError:
+            sys.exit("scaling.py: matplotlib is installed for Debian's python3: run it with /usr/bin/python3")
     matplotlib.use("Agg")
     import matplotlib.pyplot as plt
 
@@ -194,6 +197,8 @@ def plot(figures, out):
     ax.set_title(f"{figures['scene']} at {w}x{h}: threads")
     ax.grid(alpha=0.3, which="both")
     ax.legend(fontsize=8)
+    fig.suptitle(f"jtracer-cli, medians of {figures['runs']} alternated runs; load average "
+                 f"{figures['load_before'][0]:.1f} before, {figures['load_after'][0]:.1f} after", fontsize=10)
     fig.tight_layout()
     fig.savefig(out, dpi=90)
     print(f"wrote {out}", file=sys.stderr)
