@@ -389,7 +389,7 @@ def main():
     parser.add_argument("out_dir")
     parser.add_argument("--showcase", default=os.path.join(os.path.dirname(__file__), "..", "scenes", "showcase.jts"))
     parser.add_argument("--skip-million", action="store_true",
-                        help="leave out spheres_1m and mesh_1m")
+                        help="leave out spheres_1m, spheres_1m_320 and mesh_1m")
     parser.add_argument("--only", nargs="*", help="write only the scenes with these names")
     args = parser.parse_args()
 
@@ -404,6 +404,8 @@ def main():
         "spheres_10k": lambda out: random_spheres(out, 10000),
         "spheres_100k": lambda out: random_spheres(out, 100000),
         "spheres_1m": lambda out: random_spheres(out, 1000000),
+        # The same million spheres at 320x240: the cost of the scene, not of the pixels.
+        "spheres_1m_320": lambda out: random_spheres(out, 1000000, size=(320, 240)),
         "mesh_100k": lambda out: knot_mesh(out, args.out_dir, 100000, "knot_100k.ply"),
         "mesh_1m": lambda out: knot_mesh(out, args.out_dir, 1000000, "knot_1m.ply"),
     }
@@ -417,7 +419,7 @@ def main():
     for name, write in scenes.items():
         if args.only and name not in args.only:
             continue
-        if args.skip_million and name in ("spheres_1m", "mesh_1m"):
+        if args.skip_million and name in ("spheres_1m", "spheres_1m_320", "mesh_1m"):
             continue
         path = os.path.join(args.out_dir, name + ".jts")
         temporary = path + ".tmp"

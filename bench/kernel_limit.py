@@ -8,7 +8,7 @@ and prints the medians. The share is JTracer's rate over the best of
 kernel-limit's three.
 
 usage: kernel_limit.py --cli PATH --kernel-limit PATH --scenes DIR [--runs N] [--threads N]
-                       [--only NAME ...]
+                       [--only NAME ...] [--json FILE]  (FILE: the medians, for bench/targets.py)
 """
 
 import argparse
@@ -19,7 +19,7 @@ import subprocess
 import sys
 
 sys.path.insert(0, os.path.dirname(os.path.abspath(__file__)))
-from race import jtracer_rays, scene_names  # noqa: E402
+from race import jtracer_rays, scene_names, write_json  # noqa: E402
 
 MODE = re.compile(r"mode (ray\d+): (\d+) rays, ([\d.]+) s")
 MODES = ("ray1", "ray8", "ray16")
@@ -33,6 +33,7 @@ def main():
     parser.add_argument("--runs", type=int, default=3)
     parser.add_argument("--threads", type=int, default=2)
     parser.add_argument("--only", nargs="*")
+    parser.add_argument("--json", help="also write the medians to this file")
     args = parser.parse_args()
 
     names = scene_names(args.scenes, args.only)
@@ -78,6 +79,11 @@ def main():
     for name, jt_rays, limit_rays, rate, best, share in rows:
         print(f"| {name} | {jt_rays / 1e6:.2f} M | {limit_rays / 1e6:.2f} M | {rate:.2f} "
               f"| {best['ray1']:.2f} | {best['ray8']:.2f} | {best['ray16']:.2f} | {100 * share:.0f}% |")
+    if args.json:
+        write_json(args.json, {
+            "runs": args.runs, "threads": args.threads, "load_before": load_before, "load_after": load_after,
+            "scenes": [{"name": name, "jtracer_mrays_per_s": rate, "embree_mrays_per_s": best, "share": share}
+                       for name, jt_rays, limit_rays, rate, best, share in rows]})
     return 0
 
 

@@ -12,11 +12,15 @@ Before a scene is timed with Tachyon, check_silhouettes.py renders both sides in
 flat per-primitive colours: Tachyon is timed only where it shows the same
 geometry. A scene with a shape Tachyon lacks (an ellipsoid) has no Tachyon column.
 
+With --json FILE, the medians are also written there for bench/targets.py.
+
 usage: race.py --cli PATH --converter PATH --tachyon-converter PATH --scenes DIR --out DIR
                [--runs N] [--threads N] [--only NAME ...] [--no-povray] [--no-tachyon]
+               [--json FILE]
 """
 
 import argparse
+import json
 import os
 import re
 import resource
@@ -84,8 +88,8 @@ def jtracer_rays(output):
 
 
 # The scenes in the order of the table; the generator writes them all.
-ORDER = ["showcase", "hall_of_mirrors", "forest", "lights16",
-         "spheres_1k", "spheres_10k", "spheres_100k", "spheres_1m", "mesh_100k", "mesh_1m"]
+ORDER = ["showcase", "hall_of_mirrors", "forest", "lights16", "spheres_1k", "spheres_10k",
+         "spheres_100k", "spheres_1m_320", "spheres_1m", "mesh_100k", "mesh_1m"]
 TACHYON_SCENES = ["sphereflake", "nested_shells", "spheres_5761", "lattice", "tree", "few"]
 ORDER += TACHYON_SCENES + [n + "_1024" for n in TACHYON_SCENES]
 
@@ -144,6 +148,7 @@ def main():
     parser.add_argument("--only", nargs="*")
     parser.add_argument("--no-povray", action="store_true")
     parser.add_argument("--no-tachyon", action="store_true")
+    parser.add_argument("--json", help="also write the medians to this file")
     args = parser.parse_args()
     if not args.no_tachyon and not args.tachyon_converter:
         parser.error("--tachyon-converter is needed unless --no-tachyon")
@@ -211,7 +216,26 @@ def main():
               f"| {figure(ratio(cpu['jtracer'], cpu['tachyon']))} "
               f"| {figure(ratio(cpu['jtracer'], cpu['povray']))} | {rate:.1f} "
               f"| {figure(peak['jtracer'], 0)} / {figure(peak['tachyon'], 0)} / {figure(peak['povray'], 0)} |")
+    if args.json:
+        write_json(args.json, {
+            "runs": args.runs, "threads": args.threads, "load_before": load_before, "load_after": load_after,
+            "scenes": [{"name": name, "size": size, "wall": wall, "cpu": cpu, "peak_mib": peak, "mrays_per_s": rate}
+                       for name, size, wall, cpu, peak, rate in rows]})
     return 0
+
+
+def write_json(path, data):
+    """`data` as JSON; NaN (a renderer not raced) becomes null."""
+    def clean(value):
+        if isinstance(value, float) and value != value:
+            return None
+        if isinstance(value, dict):
+            return {k: clean(v) for k, v in value.items()}
+        if isinstance(value, (list, tuple)):
+            return [clean(v) for v in value]
+        return value
+    with open(path, "w", encoding="utf-8") as f:
+        json.dump(clean(data), f, indent=1)
 
 
 if __name__ == "__main__":

@@ -11,6 +11,11 @@
 #   bench/run.sh --kernel-limit     instead of the race, JTracer's rays/s as a share of
 #                                   Embree's native kernel (bench/kernel_limit.py) on the
 #                                   1920x1080 scenes of the Tachyon race (or --only ...)
+#   bench/run.sh --targets          every target of the race with PASS or MISS and by how
+#                                   much (bench/targets.py): the race scenes at 1920x1080 and
+#                                   1024x1024 and a million spheres at 320x240 and 1920x1080
+#                                   against Tachyon and POV-Ray, each one's share of Embree's
+#                                   kernel, mesh_1m under 3 s, a 1x1 render under 20 ms
 #
 # Environment: JT_BENCH_BUILD (build dir, default build/bench), JT_BENCH_WORK
 # (scenes, .pov files and images, default build/bench-work).
@@ -25,6 +30,7 @@ quick=0
 only=()
 race_options=()
 kernel_limit=0
+targets=0
 while [[ $# -gt 0 ]]; do
     case "$1" in
         --quick) quick=1; runs=3; shift ;;
@@ -32,8 +38,9 @@ while [[ $# -gt 0 ]]; do
         --threads) threads="$2"; shift 2 ;;
         --no-povray|--no-tachyon) race_options+=("$1"); shift ;;
         --kernel-limit) kernel_limit=1; shift ;;
+        --targets) targets=1; shift ;;
         --only) shift; while [[ $# -gt 0 && "$1" != --* ]]; do only+=("$1"); shift; done ;;
-        -h|--help) sed -n '2,17p' "$0"; exit 0 ;;
+        -h|--help) sed -n '2,22p' "$0"; exit 0 ;;
         *) echo "run.sh: unknown option '$1' (see --help)" >&2; exit 2 ;;
     esac
 done
@@ -56,6 +63,13 @@ cmake -S "$repo" -B "$build" -G Ninja -DCMAKE_BUILD_TYPE=Release \
     -DJT_BUILD_TESTS=OFF -DJT_BUILD_VIEWER=OFF -DJT_BUILD_MPI=OFF -DJT_BUILD_BENCH=ON >/dev/null
 cmake --build "$build" --target jtracer-cli jts-to-pov jts-to-tachyon kernel-limit -- -j"$(nproc)"
 
+target_scenes=(sphereflake nested_shells spheres_5761 lattice tree few
+               sphereflake_1024 nested_shells_1024 spheres_5761_1024 lattice_1024 tree_1024 few_1024
+               spheres_1m_320 spheres_1m)
+if [[ $targets -eq 1 && ${#only[@]} -eq 0 ]]; then
+    only=("${target_scenes[@]}" mesh_1m)
+fi
+
 echo "== generating scenes in $work/scenes"
 generate=(python3 "$repo/bench/generate_scenes.py" "$work/scenes" --showcase "$repo/scenes/showcase.jts")
 [[ $quick -eq 1 ]] && generate+=(--skip-million)
@@ -75,6 +89,33 @@ if [[ $kernel_limit -eq 1 ]]; then
     echo "== JTracer against the kernel limit ($runs runs each, $threads threads)"
     "${limit[@]}"
     echo "$machine; Embree $(dpkg-query -W -f='${Version}' libembree3-3 2>/dev/null)"
+    exit 0
+fi
+
+if [[ $targets -eq 1 ]]; then
+    results="$work/targets"
+    mkdir -p "$results"
+    echo "== racing ($runs runs each, $threads threads); images in $work/images"
+    python3 "$repo/bench/race.py" --cli "$build/cli/jtracer-cli" --converter "$build/bench/jts-to-pov" \
+        --tachyon-converter "$build/bench/jts-to-tachyon" --scenes "$work/scenes" --out "$work/images" \
+        --runs "$runs" --threads "$threads" "${race_options[@]}" --only "${only[@]}" \
+        --json "$results/race.json"
+    echo "== JTracer against the kernel limit ($runs runs each, $threads threads)"
+    kernel_scenes=()
+    for name in "${only[@]}"; do [[ $name == mesh_* ]] || kernel_scenes+=("$name"); done
+    python3 "$repo/bench/kernel_limit.py" --cli "$build/cli/jtracer-cli" \
+        --kernel-limit "$build/bench/kernel-limit" --scenes "$work/scenes" --runs "$runs" \
+        --threads "$threads" --only "${kernel_scenes[@]}" --json "$results/kernel.json"
+    echo "== start-up: a 1x1 render of few_1024, safe write included"
+    python3 "$repo/bench/generate_scenes.py" "$work/scenes" --only few_1024 >/dev/null
+    python3 "$repo/bench/startup_cost.py" --cli "$build/cli/jtracer-cli" --runs 21 \
+        --threads "$threads" "$work/scenes/few_1024.jts" --json "$results/startup.json"
+    echo "== the targets"
+    python3 "$repo/bench/targets.py" --race "$results/race.json" --kernel "$results/kernel.json" \
+        --startup "$results/startup.json"
+    echo "$machine; povray $(dpkg-query -W -f='${Version}' povray 2>/dev/null);" \
+        "tachyon-bin-nox $(dpkg-query -W -f='${Version}' tachyon-bin-nox 2>/dev/null);" \
+        "Embree $(dpkg-query -W -f='${Version}' libembree3-3 2>/dev/null)"
     exit 0
 fi
 

@@ -9,7 +9,8 @@ Two figures per binary, medians of alternated runs:
 With several binaries (--cli A --cli B), their runs alternate, so that a change
 can be measured before and after on a busy machine.
 
-usage: startup_cost.py --cli PATH [--cli PATH ...] SCENE.jts [--runs N] [--threads N]
+usage: startup_cost.py --cli PATH [--cli PATH ...] SCENE.jts [--runs N] [--threads N] [--json FILE]
+(FILE: the medians of the first --cli, for bench/targets.py)
 """
 
 import argparse
@@ -21,7 +22,7 @@ import tempfile
 import time
 
 sys.path.insert(0, os.path.dirname(os.path.abspath(__file__)))
-from race import jtracer_rays  # noqa: E402
+from race import jtracer_rays, write_json  # noqa: E402
 
 
 def timed(command):
@@ -35,6 +36,7 @@ def main():
     parser.add_argument("--cli", action="append", required=True)
     parser.add_argument("--runs", type=int, default=21)
     parser.add_argument("--threads", type=int, default=2)
+    parser.add_argument("--json", help="also write the first binary's medians to this file")
     parser.add_argument("scene")
     args = parser.parse_args()
     fixed = {cli: [] for cli in args.cli}
@@ -55,6 +57,12 @@ def main():
     for cli in args.cli:
         print(f"  {cli}: whole run minus render {1000 * statistics.median(fixed[cli]):.1f} ms, "
               f"1x1 run {1000 * statistics.median(tiny[cli]):.1f} ms")
+    if args.json:
+        cli = args.cli[0]
+        write_json(args.json, {"scene": os.path.basename(args.scene), "runs": args.runs,
+                               "threads": args.threads, "load_before": load_before, "load_after": load_after,
+                               "fixed_ms": 1000 * statistics.median(fixed[cli]),
+                               "one_pixel_ms": 1000 * statistics.median(tiny[cli])})
     return 0
 
 

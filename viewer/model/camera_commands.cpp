@@ -28,11 +28,16 @@ std::string camera_label(const Camera& camera, int index) {
 }  // namespace
 
 void keep_camera_selection(ViewState& view, const Scene& scene, const Scene& before) {
+    keep_camera_selection(view, scene, before.cameras);
+}
+
+void keep_camera_selection(ViewState& view, const Scene& scene,
+                           const std::vector<Camera>& cameras_before) {
     const auto& cameras = scene.cameras;
     const int count = static_cast<int>(cameras.size());
     const int old = view.camera_index;
-    if (old >= 0 && old < static_cast<int>(before.cameras.size())) {
-        const std::string& name = before.cameras[old].name;
+    if (old >= 0 && old < static_cast<int>(cameras_before.size())) {
+        const std::string& name = cameras_before[old].name;
         if (old < count && cameras[old].name == name) return;
         if (const int same = name.empty() ? -1 : find_camera(scene, name); same >= 0) {
             view.camera_index = same;

@@ -17,6 +17,10 @@ int selected_camera(const ViewState& view, const Scene& scene);
 // text), the selected camera index may name no camera or another one: keeps
 // the same camera by name when it is still there, else the scene's active one.
 void keep_camera_selection(ViewState& view, const Scene& scene, const Scene& before);
+// The same, from the cameras `before` had: all an edit needs to keep of a
+// large scene.
+void keep_camera_selection(ViewState& view, const Scene& scene,
+                           const std::vector<Camera>& cameras_before);
 void select_camera(AppState& state, int index);
 void next_camera(AppState& state);
 // Starts moving freely from the selected scene camera (or keeps moving).

@@ -116,7 +116,7 @@ void update_render(AppState& state) {
         if (request && request == state.render.rejected) {
             state.render.render_note = state.render.rejected_reason;
         } else if (request && request != state.render.started) {
-            const Scene scene = scene_to_render(state.doc, *request);
+            Scene scene = scene_to_render(state.doc, *request);
             if (const std::string error = validation_error(scene); !error.empty()) {
                 // Keep the last image rather than render nonsense; say why.
                 state.render.rejected = std::move(request);
@@ -124,8 +124,8 @@ void update_render(AppState& state) {
                 state.render.render_note = state.render.rejected_reason;
             } else {
                 state.render.rejected.reset();
-                state.render.renderer.start(scene, request->options);
                 state.render.converging = converging_effects(scene, *request);
+                state.render.renderer.start(std::move(scene), request->options);  // not a copy
                 state.render.started = std::move(request);
                 state.render.display_complete = false;
                 wait_for_first_pass(state);

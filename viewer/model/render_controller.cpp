@@ -80,10 +80,9 @@ void RenderController::pause() {
 // Runs `run` on a new thread: prepares `scene` first when given, else
 // continues the run's job, once the thread of `paused` (the run it continues,
 // which may still be winding down) has ended.
-void RenderController::launch(const std::shared_ptr<Run>& run, const Scene* scene,
+void RenderController::launch(const std::shared_ptr<Run>& run, std::shared_ptr<const Scene> scene,
                               std::shared_ptr<Run> paused) {
-    std::shared_ptr<const Scene> to_prepare;
-    if (scene) to_prepare = std::make_shared<const Scene>(*scene);
+    std::shared_ptr<const Scene> to_prepare = std::move(scene);
     run->thread =
         std::thread([this, run, to_prepare = std::move(to_prepare), paused = std::move(paused)] {
             try {
@@ -141,7 +140,7 @@ void RenderController::launch(const std::shared_ptr<Run>& run, const Scene* scen
         });
 }
 
-void RenderController::start(const Scene& scene, const RenderOptions& options) {
+void RenderController::start(Scene scene, const RenderOptions& options) {
     join_retired(false);
     auto run = std::make_shared<Run>();
     run->options = options;
@@ -156,7 +155,7 @@ void RenderController::start(const Scene& scene, const RenderOptions& options) {
         retired_.push_back(std::move(old));
     }
     ++jobs_started_;
-    launch(run, &scene);
+    launch(run, std::make_shared<const Scene>(std::move(scene)));
 }
 
 bool RenderController::resume() {

@@ -38,7 +38,7 @@ class RenderController {
     // samples). The acceleration structure of the previous scene is reused when
     // only materials, lights, cameras or settings changed, and an edit of
     // materials only patches the previous scene (prepare_scene_edit).
-    void start(const Scene& scene, const RenderOptions& options);
+    void start(Scene scene, const RenderOptions& options);
     // The next start() builds the scene from scratch: geometry and image maps
     // are read again rather than reused, even from files that look unchanged.
     void forget_prepared();
@@ -77,7 +77,7 @@ class RenderController {
   private:
     struct Run;  // one worker thread and the job it renders
 
-    void launch(const std::shared_ptr<Run>& run, const Scene* scene,
+    void launch(const std::shared_ptr<Run>& run, std::shared_ptr<const Scene> scene,
                 std::shared_ptr<Run> paused = nullptr);
     std::shared_ptr<RenderJob> current_job() const;
     void join_retired(bool all);
