@@ -5,10 +5,13 @@
 #include "jtracer/source_serializer.hpp"
 #include "jtracer/serializer.hpp"
 
+#include "common/files.hpp"
+#include "common/scratch_dir.hpp"
 #include "test_util.hpp"
 
 #include <gtest/gtest.h>
 
+#include <filesystem>
 #include <string>
 #include <vector>
 
@@ -270,6 +273,47 @@ TEST(SourceSerializer, ATextWithErrorsOrNoSourceMapGivesTheCanonicalText) {
     const std::string out = serialize_scene(unmapped.scene, {text, unmapped});
     EXPECT_EQ(out, serialize_scene(unmapped.scene));
     EXPECT_NE(out.find("radius: 2;"), std::string::npos);
+}
+
+}  // namespace
+}  // namespace jt
+
+namespace jt {
+namespace {
+
+// What included files wrote is written in place of their include, from each
+// file's own text; a file name written in an included file (relative to its
+// folder) is written as the value the scene holds.
+TEST(SourceSerializer, IncludedFilesAreWrittenInPlaceFromTheirOwnText) {
+    const test::ScratchDir scratch("source_serializer_include");
+    const std::filesystem::path& dir = scratch.path();
+    std::filesystem::create_directories(dir / "parts");
+    test::write_file(dir / "parts" / "defs.jts",
+                     "define tex = \"wood.png\";\n"
+                     "define r = 3;\n"
+                     "material wood { image_map: tex; pigment: <1, 1, 1> / r; }\n");
+    test::write_file(dir / "parts" / "balls.jts",
+                     "sphere { radius: r * 2; material: wood; }\n"
+                     "sphere { radius: r; material { image_map: tex; } }\n");
+    const std::string text =
+        "include \"parts/defs.jts\";\n"
+        "scene { include \"parts/balls.jts\"; sphere { radius: r / 2; } }\n";
+    ParseOptions options;
+    options.main_file = (dir / "main.jts").string();
+    const ParseResult parsed = parse_scene(text, options);
+    ASSERT_TRUE(parsed.ok()) << brief(parsed.diagnostics);
+    ASSERT_EQ(parsed.scene.primitives.at(1).material.image_map, "parts/wood.png");
+    const std::string out = serialize_scene(parsed.scene, {text, parsed});
+    EXPECT_EQ(out.find("include"), std::string::npos) << out;
+    for (const char* written :
+         {"define tex = \"wood.png\";\n", "define r = 3;\n", "    image_map: \"parts/wood.png\";\n",
+          "    pigment: <1, 1, 1> / r;\n", "        radius: r * 2;\n", "        material: wood;\n",
+          "            image_map: \"parts/wood.png\";\n", "        radius: r / 2;\n"})
+        EXPECT_NE(out.find(written), std::string::npos) << written << "\n" << out;
+    const ParseResult again = parse_scene(out, options);
+    EXPECT_EQ(brief(again.diagnostics), "") << out;
+    EXPECT_TRUE(again.scene == parsed.scene) << out;
+    EXPECT_EQ(serialize_scene(again.scene, {out, again}), out);
 }
 
 }  // namespace

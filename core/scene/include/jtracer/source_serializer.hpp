@@ -43,6 +43,10 @@ struct ParsedText {
 //   expression, written as the text wrote it while `scene` holds the value it
 //   had when parsed (`from.parsed.scene`, block by block in order); a value
 //   changed since is written as a literal, as is every other value.
+// What included files wrote is written in place of their `include`, from
+// each file's own text (the result has no include and stands alone); a file
+// name an included file wrote is written as the value the scene holds, since
+// it was relative to that file's folder.
 // A --define value stands in place of the text's own definition of that name
 // (before everything when the text has none), so that the result reads back
 // as `scene` with no --define; `clock` must be what it was.

@@ -2,6 +2,7 @@
 
 #include "jtracer/schema.hpp"
 #include "jtracer/serializer.hpp"
+#include "jtracer/source_files.hpp"
 #include "language/scene_writer.hpp"
 
 #include <optional>
@@ -47,8 +48,18 @@ class Original {
     const SceneSource& source() const { return parsed_.source; }
     const Scene& scene() const { return parsed_.scene; }
 
+    // A span's text, from the file it lies in (the main text or an included one).
     std::string_view written(const TextSpan& span) const {
-        return text_.substr(span.offset, span.length);
+        return file_text(parsed_.source.files, text_, span.pos.file)
+            .substr(span.offset, span.length);
+    }
+
+    // Whether a record's value may be written as the text wrote it. A file
+    // name written in an included file is relative to that file's folder and
+    // the scene holds it relative to the main file's: written in the result,
+    // which has no include, it must be that value.
+    static bool keeps_text(const PropertySource& record) {
+        return record.name_span.pos.file == 0 || !names_a_file(record.name);
     }
 
     // A value the text wrote as a name or an expression, as written, while
@@ -57,7 +68,8 @@ class Original {
     PropertyText kept(const PropertySpec<Block>& property, const Block& now, const Block& then,
                       std::span<const PropertySource> records) const {
         const PropertySource* record = last_record(records, property.name);
-        if (!record || record->origin == ValueOrigin::literal || !same_value(property, now, then))
+        if (!record || record->origin == ValueOrigin::literal || !keeps_text(*record) ||
+            !same_value(property, now, then))
             return {};
         return {How::as_written, written(record->value_span)};
     }
@@ -97,6 +109,22 @@ class Original {
     void write_material(Writer& w, const Material& now, const Material& then,
                         const BlockSource& block) const;
 
+    // The value named material `definition` gives `property`, as value_text,
+    // from a primitive that inherits it as parsed; none when no primitive
+    // does, and then the value means nothing to the scene.
+    std::optional<std::string> inherited_value(const PropertySpec<Material>& property,
+                                               std::uint32_t definition) const {
+        for (std::size_t i = 0; i < source().primitives.size(); ++i) {
+            const BlockSource& block = source().primitives[i];
+            if (block.named_material != definition) continue;
+            const std::vector<PropertySource> own =
+                child_records(block, schema_of<Material>().keyword);
+            if (!last_record(own, property.name))
+                return value_text(property, scene().primitives[i].material);
+        }
+        return std::nullopt;
+    }
+
     std::string_view text_;
     const ParseResult& parsed_;
 };
@@ -125,7 +153,7 @@ void Original::write_material(Writer& w, const Material& now, const Material& th
     auto choose = [&](const PropertySpec<Material>& property) -> PropertyText {
         const bool same = same_value(property, now, then);
         if (const PropertySource* record = last_record(own, property.name)) {
-            if (same && record->origin != ValueOrigin::literal)
+            if (same && record->origin != ValueOrigin::literal && keeps_text(*record))
                 return {How::as_written, written(record->value_span)};
             return {How::literal, {}};
         }
@@ -189,7 +217,8 @@ void Original::write_definitions(Writer& w, std::span<const Define> defines) con
         define(d.name, d.value);
         any = true;
     }
-    for (const DefinitionSource& definition : source().definitions) {
+    for (std::uint32_t index = 0; index < source().definitions.size(); ++index) {
+        const DefinitionSource& definition = source().definitions[index];
         any = true;
         if (!definition.material_properties) {
             const Define* set = command_line(definition.name);
@@ -202,9 +231,13 @@ void Original::write_definitions(Writer& w, std::span<const Define> defines) con
                 .subspan(definition.material_properties->first,
                          definition.material_properties->count);
         w.open(std::string(schema_of<Material>().keyword) + " " + definition.name);
-        for (const PropertySpec<Material>& property : schema_of<Material>().properties)
-            if (const PropertySource* record = last_record(records, property.name))
-                w.property(property.name, written(record->value_span));
+        for (const PropertySpec<Material>& property : schema_of<Material>().properties) {
+            const PropertySource* record = last_record(records, property.name);
+            if (!record) continue;
+            const std::optional<std::string> value =
+                keeps_text(*record) ? std::nullopt : inherited_value(property, index);
+            w.property(property.name, value ? *value : written(record->value_span));
+        }
         w.close();
     }
     if (any) w.blank();
