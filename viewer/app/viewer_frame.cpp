@@ -55,6 +55,7 @@ float sidebar(AppState& state, FrameState& frame, float window_width, float heig
         ImGui::TextColored(ImVec4(1.0f, 0.45f, 0.4f, 1.0f), "panels read-only");
         tooltip("The text is being edited: the panels are read-only until it parses");
     }
+    time_panel(state);
     file_panel(state);
     if (draft) ImGui::BeginDisabled();
     camera_panel(state);
@@ -125,6 +126,7 @@ void viewer_frame(AppState& state, FrameState& frame, const FrameInfo& info) {
     reload_if_changed(state);
     take_finished_load(state);
     take_checked_text(state);
+    step_play(state, std::chrono::steady_clock::now());
     const EditMark before = begin_edit_tracking(state.history, state.doc);
     // Keys zoom about the image as the last frame placed it.
     handle_shortcuts(state, frame,
