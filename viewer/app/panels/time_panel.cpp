@@ -18,7 +18,7 @@ void time_panel(AppState& state) {
     if (!state.doc.uses_clock) return;
     const auto now = std::chrono::steady_clock::now();
     const bool playing = state.time.playing;
-    if (button(playing ? "Pause###play" : "Play###play",
+    if (button(playing ? "Pause" : "Play",
                playing ? "Stop at this clock"
                        : "Play the scene's time: clock runs from 0 to 1 in 4 seconds, then "
                          "again from 0 (each step renders anew; the file is not changed)"))
