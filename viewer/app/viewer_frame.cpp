@@ -55,7 +55,6 @@ float sidebar(AppState& state, FrameState& frame, float window_width, float heig
         ImGui::TextColored(ImVec4(1.0f, 0.45f, 0.4f, 1.0f), "panels read-only");
         tooltip("The text is being edited: the panels are read-only until it parses");
     }
-    time_panel(state);
     file_panel(state);
     if (draft) ImGui::BeginDisabled();
     camera_panel(state);

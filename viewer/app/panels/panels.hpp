@@ -16,7 +16,8 @@ void objects_panel(AppState& state);  // every primitive: shape, material, trans
 void lights_panel(AppState& state);
 void diagnostics_panel(AppState& state);
 void help_panel();
-// The time slider and play button, when the scene uses `clock`.
+// The time slider and play button, when the scene uses `clock` (drawn in
+// the image's toolbar, which stays in view while the panels scroll).
 void time_panel(AppState& state);
 // The render's progress, then the last message, or `inspected` (the pixel
 // inspector's text, when not empty) in its place.
