@@ -139,8 +139,10 @@ std::string describe_source(const SceneDocument& doc, const FieldSource& source)
         case FieldOrigin::name: {
             std::string out = "From " + std::string(text);
             if (const Define* define = define_of(doc, text))
-                out += ", set by --define " + define->name + "=" + shortened(define->value);
-            else if (const DefinitionSource* d = definition_of(doc, text))
+                return out + ", set by --define " + define->name + "=" + shortened(define->value) +
+                       " on the command line. The value is computed: it cannot be edited "
+                       "here.";
+            if (const DefinitionSource* d = definition_of(doc, text))
                 out += ", defined at " + text_place(doc, d->name_span);
             return out +
                    ". The value is computed: edit it in the text editor (T), where the "

@@ -113,7 +113,7 @@ TEST_F(ViewerNames, AFieldKnowsWhetherItIsALiteralANameAnExpressionOrInherited) 
 
     state.doc.options.defines = {Define{"r", "2"}};
     EXPECT_EQ(describe_source(state.doc, field_source(state.doc, first, "radius"))
-                  .rfind("From r, set by --define r=2.", 0),
+                  .rfind("From r, set by --define r=2 on the command line.", 0),
               0u);
 }
 
