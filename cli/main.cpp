@@ -4,7 +4,7 @@
 #include "diff_command.hpp"
 #include "info_command.hpp"
 #include "interruptible_render.hpp"
-#include "list_cameras.hpp"
+#include "list_names.hpp"
 #include "memory_budget.hpp"
 #include "options.hpp"
 #include "sequence_command.hpp"
@@ -95,6 +95,7 @@ int main(int argc, char** argv) {
     int code = exit_io_error;
     try {
         if (o.list_cameras) return list_cameras(o.scene_path);
+        if (o.list_defines) return list_defines(o.scene_path);
         if (o.frames) return run_sequence(o);
         code = run(o, compared);
     } catch (const std::bad_alloc&) {

@@ -63,6 +63,7 @@ ParsedOptions parse_options(int argc, char** argv) {
         ->type_name("FILE");
     // For the shell completions; not a user's option.
     app.add_flag("--list-cameras", o.list_cameras)->group("");
+    app.add_flag("--list-defines", o.list_defines)->group("");
     // Rules between options, reported like CLI11's own errors.
     auto checks = [&] {
         if (o.region_output && !o.region)

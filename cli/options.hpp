@@ -23,7 +23,8 @@ struct Options : frontend::RenderFlags {
     Tolerance tolerance;
     bool update = false;               // --update: a render that differs replaces the reference
     std::optional<std::string> junit;  // --junit FILE: the comparison as a JUnit test case
-    bool list_cameras = false;         // print the scene's camera names only (list_cameras.hpp)
+    bool list_cameras = false;         // print the scene's camera names only (list_names.hpp)
+    bool list_defines = false;         // print the names the scene defines only (list_names.hpp)
 };
 
 struct ParsedOptions {

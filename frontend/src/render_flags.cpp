@@ -112,11 +112,17 @@ void add_scene_value_flags(CLI::App& app, std::vector<std::string>& defines,
 }
 
 ParseOptions parse_options_for(const RenderFlags& flags) {
-    ParseOptions options;
+    ParseOptions options = scene_value_options(flags.defines, flags.clock);
     options.source_map = false;
-    for (const std::string& argument : flags.defines)
+    return options;
+}
+
+ParseOptions scene_value_options(const std::vector<std::string>& defines,
+                                 std::optional<double> clock) {
+    ParseOptions options;
+    for (const std::string& argument : defines)
         if (Expected<Define> define = parse_define(argument)) options.defines.push_back(*define);
-    options.clock = flags.clock.value_or(0.0);
+    options.clock = clock.value_or(0.0);
     return options;
 }
 

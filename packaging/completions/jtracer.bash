@@ -1,6 +1,7 @@
 # bash completion for jtracer-cli, jtracer-view, jtracer-mpi and jtracer-merge:
-# their options, .jts scenes, images, and the scene's camera names after
-# --camera (asked of `jtracer-cli --list-cameras SCENE`). Installed under each
+# their options, .jts scenes, images, the scene's camera names after --camera
+# (asked of `jtracer-cli --list-cameras SCENE`) and the names it defines after
+# --define, as NAME= (`jtracer-cli --list-defines SCENE`). Installed under each
 # program's name, as bash-completion loads completions/<program> on demand.
 # tests/install/completion_test.sh keeps the option lists equal to --help's.
 
@@ -11,8 +12,10 @@ _jtracer_files() {
     COMPREPLY+=($(compgen -f -X "!$1" -- "$cur") $(compgen -d -- "$cur"))
 }
 
-# The cameras of the first .jts file on the command line, matching $cur.
-_jtracer_cameras() {
+# What `jtracer-cli $2 SCENE` lists for the first .jts file on the command
+# line ($1: the program being completed), each one matching $cur, with $3
+# after it: the scene's cameras, or the names it defines.
+_jtracer_scene_names() {
     local word scene= lister=jtracer-cli name typed
     for word in "${COMP_WORDS[@]:1}"; do
         if [[ $word == *.jts ]]; then
@@ -27,8 +30,8 @@ _jtracer_cameras() {
     typed=${cur//\\/}
     typed=${typed#[\"\']}
     while IFS= read -r name; do
-        [[ $name == "$typed"* ]] && COMPREPLY+=("$(printf '%q' "$name")")
-    done < <("$lister" --list-cameras "$scene" 2>/dev/null)
+        [[ $name == "$typed"* ]] && COMPREPLY+=("$(printf '%q' "$name")${3-}")
+    done < <("$lister" "$2" "$scene" 2>/dev/null)
 }
 
 _jtracer() {
@@ -62,7 +65,8 @@ _jtracer() {
         positional='*.@(bmp|BMP)'
         ;;
     jtracer-view)
-        options='-h --help --version --screenshot --save-render --size --exit-when-done --timeout'
+        options='-h --help --version --define --clock --screenshot --save-render --size
+            --exit-when-done --timeout'
         ;;
     *) return ;;
     esac
@@ -89,7 +93,7 @@ _jtracer() {
         return
         ;;
     --camera)
-        _jtracer_cameras "$1"
+        _jtracer_scene_names "$1" --list-cameras
         return
         ;;
     --progress)
@@ -101,7 +105,11 @@ _jtracer() {
         return # a number or a list of numbers: nothing to offer
         ;;
     --define)
-        return # NAME=VALUE, written as in a scene file: nothing to offer
+        # NAME= for the names the scene defines; the value is the user's.
+        [[ $cur == *=* ]] && return
+        compopt -o nospace 2>/dev/null
+        _jtracer_scene_names "$1" --list-defines =
+        return
         ;;
     esac
 

@@ -252,5 +252,19 @@ TEST_F(Expect, ListCamerasPrintsTheNamesOneALine) {
     EXPECT_EQ(out().find("list-cameras"), std::string::npos);
 }
 
+// What the completions of --define offer: the names the scene defines, in
+// file order, not its named materials, also when the scene has errors.
+TEST_F(Expect, ListDefinesPrintsTheDefinedNamesOneALine) {
+    std::ofstream(dir / "named.jts")
+        << "define r = 2;\n# define commented = 1;\nmaterial shiny { reflection: 0.5; }\n"
+           "define colour_1 = <1, 0, 0> * r;\ndefine out = \"x.png\";\n"
+        << scene << "\nscene { sphere { radius: ; } }\n";
+    ASSERT_EQ(run(cli + " --list-defines named.jts").code, 0);
+    EXPECT_EQ(out(), "r\ncolour_1\nout\n");
+    EXPECT_EQ(run(cli + " --list-defines missing.jts").code, 3);
+    ASSERT_EQ(run(cli + " --help").code, 0);
+    EXPECT_EQ(out().find("list-defines"), std::string::npos);
+}
+
 }  // namespace
 }  // namespace jt

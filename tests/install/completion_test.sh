@@ -12,6 +12,9 @@ work=$(mktemp -d)
 trap 'rm -rf "$work"' EXIT
 cd "$work"
 cat >scene.jts <<'SCENE'
+define radius = 1;
+define red = <1, 0, 0>;
+material shiny { reflection: 0.5; }
 render_settings { width: 8; height: 8; }
 cameras {
     perspective_camera { name: "Main"; position: <0, 1, 5>; }
@@ -90,6 +93,18 @@ expect 'Main' "$cli" scene.jts --camera M
 PATH=$(dirname "$cli"):$PATH expect "$cameras" jtracer-mpi scene.jts --camera ''
 expect '' "$cli" --camera ''
 
+# --define offers NAME= for each name the scene defines (not its materials),
+# for the three programs that take it; the value is the user's.
+defines=$'radius=\nred='
+PATH=$(dirname "$cli"):$PATH expect "$defines" jtracer-cli scene.jts --define ''
+expect "$defines" "$cli" scene.jts --define ''
+expect 'red=' "$cli" scene.jts --define re
+CWORD=2 expect 'radius=' "$cli" --define ra scene.jts
+PATH=$(dirname "$cli"):$PATH expect "$defines" jtracer-view scene.jts --define ''
+PATH=$(dirname "$cli"):$PATH expect "$defines" jtracer-mpi scene.jts --define ''
+expect '' "$cli" scene.jts --define 'radius=2'
+expect '' "$cli" --define ''
+
 # zsh: the completion loads for every program and names every option.
 if command -v zsh >/dev/null; then
     registered=$(HOME=$work zsh -f -c "fpath=('$completions' \$fpath); autoload -U compinit
@@ -98,7 +113,7 @@ if command -v zsh >/dev/null; then
     [ "$registered" = "_jtracer _jtracer _jtracer _jtracer" ] || fail "zsh registered: $registered"
     for program in "${!tools[@]}"; do
         for option in $(help_options "${tools[$program]}"); do
-            grep -qE -- "(\\{|'|\\)|,)$option[],[}]" "$completions/_jtracer" ||
+            grep -qE -- "(\\{|'|\\)|,|\\*)$option[],[}]" "$completions/_jtracer" ||
                 fail "_jtracer (zsh) lacks $option of $program"
         done
     done

@@ -89,6 +89,32 @@ TEST_F(IdleFrame, AFrameWithTheObjectsListedAndFieldsOpenAllocatesNothing) {
     }
 }
 
+// Fields written as names, expressions and a named material's, and the time
+// slider: their marks and the text under a computed field allocate nothing
+// (a tooltip's words are made only while it shows).
+TEST_F(IdleFrame, AFrameWithComputedAndInheritedFieldsAndTheSliderAllocatesNothing) {
+    const auto path = dir.path() / "names.jts";
+    std::ofstream(path, std::ios::binary)
+        << "define r = 0.5;\n"
+           "material shiny { pigment: <0.9, 0.2, 0.1>; diffuse: <0.8, 0.8, 0.8>; }\n"
+           "render_settings { width: 64; height: 36; }\n"
+           "cameras { perspective_camera { position: <0, 0, 10>; look_at: <0, 0, 0>; "
+           "aspect: 1.7777777777777777; fov: 60; } }\n"
+           "scene {\n point_light { position: <10, 20, 40>; intensity: <1, 1, 1>; }\n"
+           " sphere { center: <clock * 2 - 1, r * 2 - 1, 0>; radius: r; material: shiny;\n"
+           "   transform { yrotate: 90 * clock; } }\n}\n";
+    open_scene(state, path);
+    ASSERT_TRUE(viewer.run_until_complete(state, test::kTimeout, 5)) << state.message;
+    select(state.view, {Selection::Kind::primitive, 0});
+    for (int i = 0; i < 3; ++i) viewer.frame(state);
+    ASSERT_NE(find_item(viewer.ui_items(), "= r"), nullptr) << state.message;
+    ASSERT_NE(find_item(viewer.ui_items(), "clock"), nullptr) << "the slider";
+    for (int i = 0; i < 5; ++i) {
+        const Allocated a = allocated_by([&] { viewer.frame(state); });
+        EXPECT_EQ(a.count, 0) << a.bytes << " bytes in frame " << i;
+    }
+}
+
 TEST_F(IdleFrame, AnEditAfterIdleFramesStillRendersAndUndoes) {
     for (int i = 0; i < 3; ++i) viewer.frame(state);
     const std::uint64_t jobs = state.render.renderer.jobs_started();

@@ -1,6 +1,7 @@
 #include "app/image_drawing.hpp"
 
 #include "app/image_input.hpp"
+#include "app/panels/panels.hpp"
 #include "app/panels/widgets.hpp"
 #include "app/ui_items.hpp"
 #include "model/ab_compare.hpp"
@@ -192,6 +193,10 @@ void image_toolbar(AppState& state, const FrameState& frame, const ImagePlace& i
         region_and_compare(state, frame);
         ImGui::EndPopup();
     }
+    // Over the image, where it stays in view while the panels scroll.
+    ImGui::PushItemWidth(ImGui::GetFontSize() * 12.0f);
+    time_panel(state);
+    ImGui::PopItemWidth();
     note_window("image toolbar");
     ImGui::End();
 }

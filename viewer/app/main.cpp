@@ -13,6 +13,7 @@
 #include "model/image_files.hpp"
 
 #include "jtracer/frontend/command_line.hpp"
+#include "jtracer/frontend/render_flags.hpp"
 
 #include <GLFW/glfw3.h>
 #include <imgui.h>
@@ -38,6 +39,11 @@ struct Arguments {
     bool exit_when_done = false;
     double timeout_seconds = 600;
     int width = 1280, height = 800;
+    // --define NAME=VALUE and --clock V, as jtracer-cli reads them; applied
+    // to every load and reload.
+    std::vector<std::string> defines;
+    std::optional<double> clock;
+    jt::ParseOptions options() const { return jt::frontend::scene_value_options(defines, clock); }
 };
 
 // The showcase installed with the viewer: PREFIX/share/jtracer/scenes beside
@@ -108,6 +114,7 @@ int run_screenshot(const Arguments& args) {
         return 1;
     }
     AppState state;
+    state.doc.options = args.options();
     open_scene(state, args.scene);
     print_diagnostics(state);
     const auto timeout =
@@ -164,6 +171,7 @@ int run_window(const Arguments& args) {
         AppState app(config);
         app.wakeup.set_callback(GlfwWindow::wake);
         app.files.recent.load(default_recent_files_path());
+        app.doc.options = args.options();
         open_scene(app, args.scene);
         print_diagnostics(app);
         const auto started = std::chrono::steady_clock::now();
@@ -185,7 +193,7 @@ int run_window(const Arguments& args) {
             if (key_taps.holding())
                 window.poll_events();
             else if (render_complete(app.render) && !app.files.loader.busy() && !app.drags.object &&
-                     !args.exit_when_done)
+                     !app.time.playing && !args.exit_when_done)
                 window.wait_events(0.2);
             else if (waiting_for_workers(app.files, app.render))
                 window.wait_events(0.05);
@@ -267,6 +275,7 @@ int main(int argc, char** argv) {
         "JTracer\n"
         "  jtracer-view scene.jts\n"
         "  jtracer-view scene.jts --screenshot shot.png --size 1600x1000   no display needed\n"
+        "  jtracer-view scene.jts --define r=2 --define 'c=<1, 0, 0>'      set names it defines\n"
         "\n"
         "Exit codes: 0 ok, 1 no window or GL context, a screenshot not written or a render\n"
         "not complete in time, 2 bad command line.\n");
@@ -279,6 +288,7 @@ int main(int argc, char** argv) {
                    "with --screenshot: also write the rendered image itself (not the window) "
                    "to this BMP or PNG, the pixels jtracer-cli writes for the scene")
         ->type_name("FILE");
+    jt::frontend::add_scene_value_flags(cli, args.defines, args.clock);
     cli.add_option("--size", args.size, "window or screenshot size, WxH")
         ->capture_default_str()
         ->type_name("WxH");

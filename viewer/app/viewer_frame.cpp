@@ -125,6 +125,7 @@ void viewer_frame(AppState& state, FrameState& frame, const FrameInfo& info) {
     reload_if_changed(state);
     take_finished_load(state);
     take_checked_text(state);
+    step_play(state, std::chrono::steady_clock::now());
     const EditMark before = begin_edit_tracking(state.history, state.doc);
     // Keys zoom about the image as the last frame placed it.
     handle_shortcuts(state, frame,

@@ -16,6 +16,7 @@
 #include "model/render_controller.hpp"
 #include "model/scene_document.hpp"
 #include "model/scene_loader.hpp"
+#include "model/scene_time.hpp"
 #include "model/text_checker.hpp"
 #include "model/undo_stack.hpp"
 #include "model/viewer_settings.hpp"
@@ -320,6 +321,7 @@ struct AppState {
     FileState files;
     RenderState render;
     ViewState view;
+    TimeState time;  // the time slider and play (scene_time.hpp)
     Drags drags;
     TextFields fields;
     std::string message;  // the result of the last command, for the status line

@@ -45,7 +45,7 @@ Expected<void> rewrite_text(AppState& state,
     } else {
         // The panels' edits become text first, so that the edit starts from what is shown.
         const std::string text = document_text(doc);
-        const ParseResult parsed = parse_scene(text, parse_options_for(state.doc.path));
+        const ParseResult parsed = parse_document_text(doc, text);
         edited = edit(SceneText{text, parsed.scene, parsed.source});
     }
     if (!edited) return Error{"Not done: " + edited.error().message};
@@ -256,7 +256,8 @@ void type_text(AppState& state, std::string text) {
     state.history.edit_base.reset();
     doc.draft = text;
     ++state.check.draft_id;
-    state.check.checker.check(state.check.draft_id, std::move(text), doc.path, kTypingPause);
+    state.check.checker.check(state.check.draft_id, std::move(text), doc.path, kTypingPause,
+                              doc.options);
 }
 
 namespace {
@@ -273,6 +274,12 @@ void take_in(AppState& state, CheckedText checked) {
         return;
     }
     const Scene before = doc.scene;
+    if (checked.clock != doc.options.clock) {
+        // The clock moved while the text was checked: its values are taken at this one.
+        ParseResult now = parse_document_text(doc, checked.text);
+        now.scene.asset_folder = checked.parsed.scene.asset_folder;
+        if (now.ok()) checked.parsed = std::move(now);
+    }
     take_text(doc, std::move(checked.text), std::move(checked.parsed));
     doc.loaded = true;  // a file that never loaded (empty, broken) now has a scene
     keep_camera_selection(state.view, state.doc.scene, before);
@@ -306,7 +313,8 @@ bool start_new_scene(AppState& state) {
     state.history.edit_base.reset();
     state.doc.draft = text;
     ++state.check.draft_id;
-    take_in(state, check_text(state.check.draft_id, std::move(text), state.doc.path));
+    take_in(state,
+            check_text(state.check.draft_id, std::move(text), state.doc.path, state.doc.options));
     state.message = "Started a scene: add objects in the Objects panel (Save scene to keep it)";
     return true;
 }

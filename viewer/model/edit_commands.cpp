@@ -48,7 +48,7 @@ void recheck_draft(AppState& state) {
     state.history.typing = false;
     if (state.doc.draft)
         state.check.checker.check(++state.check.draft_id, *state.doc.draft, state.doc.path,
-                                  std::chrono::milliseconds(0));
+                                  std::chrono::milliseconds(0), state.doc.options);
     else
         state.check.checker.cancel();
 }

@@ -133,13 +133,13 @@ void open_scene(AppState& state, const std::filesystem::path& path) {
 }
 
 void request_open(AppState& state, const std::filesystem::path& path) {
-    state.files.loader.request(path, LoadPurpose::open);
+    state.files.loader.request(path, LoadPurpose::open, state.doc.options);
     state.message = "Opening " + path.string();
 }
 
 void reload_scene(AppState& state) {
     if (state.doc.path.empty()) return;
-    state.files.loader.request(state.doc.path, LoadPurpose::reload);
+    state.files.loader.request(state.doc.path, LoadPurpose::reload, state.doc.options);
 }
 
 namespace {

@@ -10,6 +10,7 @@ namespace jt::view {
 void model_frame(AppState& state) {
     reload_if_changed(state);
     take_finished_load(state);
+    step_play(state, std::chrono::steady_clock::now());
     take_checked_text(state);
     check_edits(state.check, state.doc, state.files);
     update_render(state);

@@ -4,17 +4,20 @@
 #include "jtracer/scene_file.hpp"
 #include "jtracer/source_edit.hpp"
 #include "model/image_files.hpp"
+#include "model/scene_time.hpp"
 
 #include <algorithm>
 #include <fstream>
 
 namespace jt::view {
 
-LoadAttempt attempt_load(const std::filesystem::path& path) {
+LoadAttempt attempt_load(const std::filesystem::path& path, const ParseOptions& options) {
     LoadAttempt attempt;
     attempt.times.started = LoadTimes::Clock::now();
     // With the source map: saving in place writes edits back at their spans.
-    Expected<LoadedScene> read = load_scene_file(path);
+    ParseOptions with_map = options;
+    with_map.source_map = true;
+    Expected<LoadedScene> read = load_scene_file(path, with_map);
     // The core reads and parses in one call: both steps end here.
     attempt.times.read = attempt.times.parsed = LoadTimes::Clock::now();
     if (!read) {
@@ -34,6 +37,32 @@ LoadAttempt attempt_load(const std::filesystem::path& path) {
     attempt.scene = std::move(loaded.parsed.scene);
     attempt.source = std::move(loaded.parsed.source);
     return attempt;
+}
+
+ParseOptions document_options(const SceneDocument& doc) {
+    ParseOptions options = doc.options;
+    options.source_map = true;
+    options.main_file = doc.path.string();
+    return options;
+}
+
+ParseOptions document_options(const SceneDocument& doc, const SourceEditResult& edit) {
+    ParseOptions options = document_options(doc);
+    if (edit.files.empty()) return options;
+    options.read_include = [&doc, &edit](const std::string& file,
+                                         std::uintmax_t max_bytes) -> Expected<IncludedText> {
+        Expected<IncludedText> read = read_include_file(file, max_bytes);
+        if (!read) return read;
+        for (const EditedFile& edited : edit.files)
+            if (doc.source.files[edited.file - 1].canonical == read->canonical)
+                read->text = edited.text;
+        return read;
+    };
+    return options;
+}
+
+ParseResult parse_document_text(const SceneDocument& doc, std::string_view text) {
+    return parse_scene(text, document_options(doc));
 }
 
 void accept_load(SceneDocument& doc, const std::filesystem::path& path, LoadAttempt attempt) {
@@ -66,6 +95,7 @@ void accept_load(SceneDocument& doc, const std::filesystem::path& path, LoadAtte
     doc.source = std::move(attempt.source);
     doc.scene = doc.original;
     doc.draft.reset();
+    doc.uses_clock = text_uses_clock(doc.text, doc.source);
     note_scene_changed(doc);
 }
 
@@ -80,18 +110,32 @@ void accept_broken_file(SceneDocument& doc, LoadAttempt attempt) {
 DocumentVersion version_of(const SceneDocument& doc) {
     // Before any text was taken in, the file's own text is what the editor
     // shows: undo brings it back as a draft.
-    if (!doc.loaded && !doc.draft) return {doc.text, doc.scene, doc.disk_text};
-    return {doc.text, doc.scene, doc.draft};
+    const double clock = doc.options.clock;
+    if (!doc.loaded && !doc.draft) return {doc.text, doc.scene, doc.disk_text, clock};
+    return {doc.text, doc.scene, doc.draft, clock};
 }
 
 void restore_version(SceneDocument& doc, const DocumentVersion& version) {
     if (version.text != doc.text) {
-        ParseResult parsed = parse_scene(version.text, parse_options_for(doc.path));
+        ParseResult parsed = parse_document_text(doc, version.text);
         parsed.scene.asset_folder = doc.original.asset_folder;
         take_text(doc, version.text, std::move(parsed));
     }
     doc.scene = version.scene;
     doc.draft = version.draft;
+    // A version kept at another clock: its edits are taken at this one.
+    if (version.clock != doc.options.clock && doc.loaded) {
+        ParseOptions then = document_options(doc);
+        then.clock = version.clock;
+        const Scene original_then = parse_scene(doc.text, then).scene;
+        const SourceEditResult edit =
+            apply_scene_edits(doc.text, doc.source, original_then, doc.scene);
+        if (edit.ok()) {
+            ParseResult now = parse_scene(edit.text, document_options(doc, edit));
+            now.scene.asset_folder = doc.original.asset_folder;
+            if (now.ok()) doc.scene = std::move(now.scene);
+        }
+    }
     note_scene_changed(doc);
 }
 
@@ -123,11 +167,12 @@ void take_text(SceneDocument& doc, std::string text, ParseResult parsed) {
     doc.scene = doc.original;
     doc.draft.reset();
     doc.load_failed = false;
+    doc.uses_clock = text_uses_clock(doc.text, doc.source);
     note_scene_changed(doc);
 }
 
 Expected<void> replace_text(SceneDocument& doc, std::string text) {
-    ParseResult parsed = parse_scene(text, parse_options_for(doc.path));
+    ParseResult parsed = parse_document_text(doc, text);
     for (const Diagnostic& d : parsed.diagnostics)
         if (d.severity == Severity::error)
             return Error{"the edited text does not parse (" + std::to_string(d.pos.line) + ":" +
@@ -183,7 +228,7 @@ Expected<Scene> reapply_edits(const SceneDocument& doc, const LoadAttempt& newer
             "changed values can be re-applied to a newer file"};
     SourceEditResult edit = apply_scene_edits(newer.text, newer.source, doc.original, doc.scene);
     if (!edit.ok()) return Error{edit.error};
-    ParseResult parsed = parse_scene(edit.text, parse_options_for(doc.path));
+    ParseResult parsed = parse_document_text(doc, edit.text);
     if (!parsed.ok()) return Error{"the edits do not fit the new text"};
     return std::move(parsed.scene);
 }
@@ -203,17 +248,7 @@ Expected<void> save_scene_copy(SceneDocument& doc, const std::filesystem::path& 
             "not into a copy"};
     // Check before writing: the new texts must mean exactly the edited
     // scene. The included files are read as they would be written.
-    ParseOptions options = parse_options_for(doc.path);
-    options.read_include = [&](const std::string& file,
-                               std::uintmax_t max_bytes) -> Expected<IncludedText> {
-        Expected<IncludedText> read = read_include_file(file, max_bytes);
-        if (!read) return read;
-        for (const EditedFile& edited : edit.files)
-            if (doc.source.files[edited.file - 1].canonical == read->canonical)
-                read->text = edited.text;
-        return read;
-    };
-    ParseResult check = parse_scene(edit.text, options);
+    ParseResult check = parse_scene(edit.text, document_options(doc, edit));
     if (!check.ok() || check.scene != doc.scene)
         return Error{
             "internal error: the edited text would not read back as the edited scene; "

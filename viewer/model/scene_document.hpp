@@ -10,6 +10,7 @@
 #include "jtracer/error.hpp"
 #include "jtracer/parser.hpp"
 #include "jtracer/scene.hpp"
+#include "jtracer/source_edit.hpp"
 #include "jtracer/source_map.hpp"
 
 #include <chrono>
@@ -54,17 +55,16 @@ struct SceneDocument {
     // Whether `scene` differs from `original`, as found at a revision: asked
     // every frame (the title's "*"), it is worked out once per change.
     mutable std::optional<std::pair<std::uint64_t, bool>> edited_at;
+    // What every text of the document is parsed with: the command line's
+    // --define, and the clock the time slider stands at (docs/language.md
+    // §15.2, §15.4). Always with the source map: saving writes at its spans.
+    ParseOptions options;
+    // The word `clock` stands in a value of `text` (a property or a define):
+    // the time slider shows. Worked out once per text taken in.
+    bool uses_clock = false;
 };
 
 // Every change of doc.scene is announced with this.
-// How the viewer parses a text of the file `path`: its includes are read
-// from the file's folder (docs/language.md §15.5).
-inline ParseOptions parse_options_for(const std::filesystem::path& path) {
-    ParseOptions options;
-    options.main_file = path.string();
-    return options;
-}
-
 inline void note_scene_changed(SceneDocument& doc) {
     ++doc.revision;
 }
@@ -74,6 +74,7 @@ struct DocumentVersion {
     std::string text;
     Scene scene;
     std::optional<std::string> draft;
+    double clock = 0.0;  // the clock `scene`'s values were computed at
     bool operator==(const DocumentVersion&) const = default;
 };
 
@@ -115,7 +116,16 @@ struct LoadAttempt {
 
 // Reads, parses and validates `path` through the core (scene_file.hpp). A
 // missing, unreadable or garbage file comes back as diagnostics.
-LoadAttempt attempt_load(const std::filesystem::path& path);
+LoadAttempt attempt_load(const std::filesystem::path& path, const ParseOptions& options = {});
+
+// What the document's texts are parsed with: doc.options, with the source
+// map and the file's path for its includes.
+ParseOptions document_options(const SceneDocument& doc);
+// The same, reading each included file `edit` changes as it would be
+// written (`edit` must outlive the options).
+ParseOptions document_options(const SceneDocument& doc, const SourceEditResult& edit);
+// `text` parsed as the document parses every text.
+ParseResult parse_document_text(const SceneDocument& doc, std::string_view text);
 
 // Takes `attempt` into `doc`: on success the scene is replaced, on failure
 // the last good scene stays and only the diagnostics change.

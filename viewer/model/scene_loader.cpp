@@ -6,8 +6,9 @@ namespace jt::view {
 
 SceneLoader::SceneLoader() : worker_(&SceneLoader::load) {}
 
-void SceneLoader::request(const std::filesystem::path& path, LoadPurpose purpose) {
-    worker_.submit(Request{path, purpose, LoadTimes::Clock::now()});
+void SceneLoader::request(const std::filesystem::path& path, LoadPurpose purpose,
+                          const ParseOptions& options) {
+    worker_.submit(Request{path, purpose, options, LoadTimes::Clock::now()});
 }
 
 std::optional<FinishedLoad> SceneLoader::take() {
@@ -19,7 +20,7 @@ std::optional<FinishedLoad> SceneLoader::take() {
 FinishedLoad SceneLoader::load(Request request) {
     LoadAttempt attempt;
     try {
-        attempt = attempt_load(request.path);
+        attempt = attempt_load(request.path, request.options);
     } catch (const std::exception& e) {  // out of memory, say
         attempt = LoadAttempt{};
         attempt.diagnostics.push_back(Diagnostic{Severity::error, SourcePos{},

@@ -25,7 +25,9 @@ class SceneLoader {
   public:
     SceneLoader();
 
-    void request(const std::filesystem::path& path, LoadPurpose purpose);
+    // Parsed with `options` (the document's --define and clock).
+    void request(const std::filesystem::path& path, LoadPurpose purpose,
+                 const ParseOptions& options = {});
     // The result of the newest request once it is done, handed out once.
     std::optional<FinishedLoad> take();
     // A request is waiting, loading, or done but not yet taken.
@@ -41,6 +43,7 @@ class SceneLoader {
     struct Request {
         std::filesystem::path path;
         LoadPurpose purpose;
+        ParseOptions options;
         LoadTimes::Clock::time_point requested;
     };
     static FinishedLoad load(Request request);

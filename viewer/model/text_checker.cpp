@@ -6,9 +6,12 @@
 
 namespace jt::view {
 
-CheckedText check_text(std::uint64_t id, std::string text, const std::filesystem::path& path) {
+CheckedText check_text(std::uint64_t id, std::string text, const std::filesystem::path& path,
+                       const ParseOptions& options) {
     LoadedScene loaded;
     loaded.path = path.string();
+    loaded.options = options;
+    loaded.options.source_map = true;
     loaded.options.main_file = loaded.path;
     loaded.parsed = parse_scene(text, loaded.options);
     loaded.parsed.scene.asset_folder = path.parent_path().string();
@@ -17,6 +20,7 @@ CheckedText check_text(std::uint64_t id, std::string text, const std::filesystem
     checked.id = id;
     checked.diagnostics = check_scene(loaded);
     checked.ok = !has_errors(checked.diagnostics);
+    checked.clock = options.clock;
     checked.text = std::move(loaded.text);
     checked.parsed = std::move(loaded.parsed);
     return checked;
@@ -25,13 +29,14 @@ CheckedText check_text(std::uint64_t id, std::string text, const std::filesystem
 TextChecker::TextChecker() : worker_(&TextChecker::run_check) {}
 
 void TextChecker::check(std::uint64_t id, std::string text, const std::filesystem::path& path,
-                        std::chrono::milliseconds pause) {
-    worker_.submit(Request{id, std::move(text), path}, std::chrono::steady_clock::now() + pause);
+                        std::chrono::milliseconds pause, const ParseOptions& options) {
+    worker_.submit(Request{id, std::move(text), path, options},
+                   std::chrono::steady_clock::now() + pause);
 }
 
 CheckedText TextChecker::run_check(Request request) {
     try {
-        return check_text(request.id, std::move(request.text), request.path);
+        return check_text(request.id, std::move(request.text), request.path, request.options);
     } catch (const std::exception& e) {  // out of memory, say
         CheckedText checked;
         checked.id = request.id;

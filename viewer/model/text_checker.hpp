@@ -23,10 +23,12 @@ struct CheckedText {
     ParseResult parsed;                   // the scene's asset_folder set to the file's folder
     std::vector<Diagnostic> diagnostics;  // parsing's, then validation's (check_scene)
     bool ok = false;                      // no errors
+    double clock = 0.0;                   // the clock it was parsed at
 };
 
 // Parses and validates `text` as jtracer-cli --check would a file at `path`.
-CheckedText check_text(std::uint64_t id, std::string text, const std::filesystem::path& path);
+CheckedText check_text(std::uint64_t id, std::string text, const std::filesystem::path& path,
+                       const ParseOptions& options = {});
 
 class TextChecker {
   public:
@@ -34,7 +36,7 @@ class TextChecker {
 
     // Checks `text` once `pause` has passed without a newer call.
     void check(std::uint64_t id, std::string text, const std::filesystem::path& path,
-               std::chrono::milliseconds pause);
+               std::chrono::milliseconds pause, const ParseOptions& options = {});
     // Drops the waiting text and any result not yet taken.
     void cancel() { worker_.cancel(); }
     // The newest check's result once it is done, handed out once.
@@ -51,6 +53,7 @@ class TextChecker {
         std::uint64_t id;
         std::string text;
         std::filesystem::path path;
+        ParseOptions options;
     };
     static CheckedText run_check(Request request);
 

@@ -55,7 +55,11 @@ void scene_camera_editor(AppState& state, int selected) {
         };
     const EditedBlock block{EditedBlock::Kind::camera, index};
     settle_block(state.history, state.doc, block);
-    if (edit_properties(camera)) note_block_edited(state.history, state.doc, block);
+    const BlockSource* source = block_source(state.doc, block);
+    if (edit_properties(camera, state.doc, [&](std::string_view name) {
+            return field_source(state.doc, source, name);
+        }))
+        note_block_edited(state.history, state.doc, block);
     const Scene& scene = state.doc.scene;
     const char* no_size = scene.settings.width > 0 && scene.settings.height > 0
                               ? ""

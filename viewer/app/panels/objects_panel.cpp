@@ -21,8 +21,13 @@ namespace jt::view {
 
 namespace {
 
-bool shape_editor(Shape& shape) {
-    return std::visit([](auto& s) { return edit_properties(s); }, shape);
+bool shape_editor(Shape& shape, const SceneDocument& doc, const BlockSource* source) {
+    return std::visit(
+        [&](auto& s) {
+            return edit_properties(
+                s, doc, [&](std::string_view name) { return field_source(doc, source, name); });
+        },
+        shape);
 }
 
 // "sphere 3": the object's keyword and its place among all objects.
@@ -264,20 +269,31 @@ void objects_panel(AppState& state) {
     // The shape, material and transform fields all edit this one block.
     const EditedBlock block{EditedBlock::Kind::primitive, i};
     settle_block(state.history, state.doc, block);
-    if (shape_editor(p.shape)) note_block_edited(state.history, state.doc, block);
+    const BlockSource* source = block_source(state.doc, block);
+    if (shape_editor(p.shape, state.doc, source))
+        note_block_edited(state.history, state.doc, block);
     if (const auto* mesh = std::get_if<Mesh>(&p.shape)) {
         model_file_row(state, *mesh, i, command);
         mesh_figure_rows(state, selected);
     }
     ImGui::Separator();
     ImGui::TextDisabled("material");
+    if (const DefinitionSource* named = named_material(state.doc, source)) {
+        ImGui::SameLine();
+        ImGui::TextDisabled("from %s, tinted fields inherited", named->name.c_str());
+        tooltip(
+            "This object names a shared material (material: NAME;). A tinted field shows "
+            "the shared material's value; editing it writes the value into this object's "
+            "own material { } block, and the shared material stays as it is.");
+    }
     if (!has_child(state.doc, i, "material")) {
         ImGui::SameLine();
         if (button("Add material block",
                    "Write this object's material into its block, to edit it there"))
             command = [&state, i] { add_material_block(state, i); };
     }
-    if (material_editor(p.material)) note_block_edited(state.history, state.doc, block);
+    if (material_editor(p.material, state.doc, source))
+        note_block_edited(state.history, state.doc, block);
     ImGui::Separator();
     ImGui::TextDisabled("transform");
     if (!has_child(state.doc, i, "transform")) {
@@ -286,7 +302,8 @@ void objects_panel(AppState& state) {
             command = [&state, i] { add_transform_block(state, i); };
     }
     bool transform_changed = false;
-    if (std::optional<TransformCommand> op = transform_editor(p.transforms, transform_changed))
+    if (std::optional<TransformCommand> op =
+            transform_editor(p.transforms, transform_changed, state.doc, source))
         command = [&state, i, op = *op] {
             switch (op.kind) {
                 case TransformCommand::Kind::add:

@@ -16,6 +16,9 @@ void objects_panel(AppState& state);  // every primitive: shape, material, trans
 void lights_panel(AppState& state);
 void diagnostics_panel(AppState& state);
 void help_panel();
+// The time slider and play button, when the scene uses `clock` (drawn in
+// the image's toolbar, which stays in view while the panels scroll).
+void time_panel(AppState& state);
 // The render's progress, then the last message, or `inspected` (the pixel
 // inspector's text, when not empty) in its place.
 void status_line(AppState& state, const std::string& inspected = {});
@@ -23,7 +26,9 @@ void status_line(AppState& state, const std::string& inspected = {});
 // Parts of objects_panel, one primitive at a time.
 // Each field that changes the scene makes the editor return true (or set
 // `changed`): the caller announces it with note_scene_changed.
-bool material_editor(Material& material);
+// Each field is marked by where its value comes from in `primitive`'s text
+// (field_sources.hpp), when it has one.
+bool material_editor(Material& material, const SceneDocument& doc, const BlockSource* primitive);
 // What the transform editor's buttons ask for: run after the panel is drawn,
 // since it replaces the scene the panel holds references into.
 struct TransformCommand {
@@ -33,7 +38,8 @@ struct TransformCommand {
     TransformKind op = TransformKind::translate;  // the kind added
 };
 std::optional<TransformCommand> transform_editor(std::vector<TransformOp>& transforms,
-                                                 bool& changed);
+                                                 bool& changed, const SceneDocument& doc,
+                                                 const BlockSource* primitive);
 
 // "sample 4 of 16 | 1.2 s elapsed, about 3.0 s left | 3.4 Mrays/s",
 // "paused at preview 1/4 | edit waiting: Space renders it", "done: ..."

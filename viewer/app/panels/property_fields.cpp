@@ -1,6 +1,9 @@
 #include "app/panels/property_fields.hpp"
 
+#include "app/ui_items.hpp"
 #include "jtracer/value_text.hpp"
+
+#include <imgui.h>
 
 #include <algorithm>
 #include <cmath>
@@ -22,6 +25,48 @@ float field_speed(const ValueRange& range, std::string_view unit, double size) {
         return static_cast<float>((range.high - range.low) / 200.0);
     if (unit == "degrees") return 0.5f;
     return static_cast<float>(std::max(0.01, 0.01 * std::abs(size)));
+}
+
+FieldMark::FieldMark(const SceneDocument* doc, const FieldSource& source)
+    : doc_(doc), source_(source), read_only_(doc && jt::view::read_only(source)) {
+    if (!doc_) return;
+    if (read_only_) {
+        ImGui::BeginDisabled();
+    } else if (source_.origin == FieldOrigin::inherited) {
+        // Tinted: the value is the named material's until edited here.
+        ImGui::PushStyleColor(ImGuiCol_FrameBg, ImVec4(0.16f, 0.30f, 0.27f, 0.70f));
+        ImGui::PushStyleColor(ImGuiCol_FrameBgHovered, ImVec4(0.20f, 0.40f, 0.36f, 0.70f));
+        colours_ = 2;
+    }
+}
+
+FieldMark::~FieldMark() {
+    if (!doc_) return;
+    if (read_only_) ImGui::EndDisabled();
+    ImGui::PopStyleColor(colours_);
+    if (source_.origin == FieldOrigin::unwritten || source_.origin == FieldOrigin::literal) return;
+    if (ImGui::IsItemHovered(ImGuiHoveredFlags_AllowWhenDisabled)) {
+        const std::string text = describe_source(*doc_, source_);
+        tooltip(text.c_str());
+    }
+    if (!read_only_) return;
+    // What it is computed from, under the field: `= r * 2`, cut to one line.
+    const std::string_view written = written_text(*doc_, source_);
+    constexpr int most = 48;
+    const int shown = static_cast<int>(std::min<std::size_t>(written.size(), most));
+    const std::size_t line_end = written.find('\n');
+    const int cut = line_end < static_cast<std::size_t>(shown) ? static_cast<int>(line_end) : shown;
+    char line[64];
+    std::snprintf(line, sizeof line, "= %.*s%s", cut, written.data(),
+                  cut < static_cast<int>(written.size()) ? "..." : "");
+    ImGui::Indent();
+    ImGui::TextDisabled("%s", line);
+    ImGui::Unindent();
+    note_item(line, true);
+    if (ImGui::IsItemHovered()) {
+        const std::string text = describe_source(*doc_, source_);
+        tooltip(text.c_str());
+    }
 }
 
 UnsetNumber unset_note(double when_set, const char* note) {

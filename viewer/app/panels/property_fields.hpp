@@ -10,6 +10,7 @@
 
 #include "app/panels/widgets.hpp"
 #include "jtracer/schema.hpp"
+#include "model/field_sources.hpp"
 
 #include <array>
 #include <optional>
@@ -49,9 +50,42 @@ UnsetNumber unset_number(std::string_view, const Block&) {
     return unset_note(0.0, "not set");
 }
 
-// The field for one property of `block`; true when the user changed it.
 template <class Block>
-bool edit_property(const PropertySpec<Block>& property, Block& block) {
+bool edit_property_field(const PropertySpec<Block>& property, Block& block);
+
+// Marks a field by where its value comes from (field_sources.hpp), around
+// the widget: a name or an expression greys it out (it cannot change) and
+// shows the text it is computed from under it; an inherited value tints it.
+// Hovering tells where the value comes from. Nothing is allocated unless the
+// tooltip shows.
+class FieldMark {
+  public:
+    FieldMark(const SceneDocument* doc, const FieldSource& source);
+    ~FieldMark();
+    FieldMark(const FieldMark&) = delete;
+    FieldMark& operator=(const FieldMark&) = delete;
+    bool read_only() const { return read_only_; }
+
+  private:
+    const SceneDocument* doc_;
+    FieldSource source_;
+    bool read_only_ = false;
+    int colours_ = 0;
+};
+
+// The field for one property of `block`; true when the user changed it.
+// With `doc`, the field is marked by `source`, where its value comes from.
+template <class Block>
+bool edit_property(const PropertySpec<Block>& property, Block& block,
+                   const SceneDocument* doc = nullptr, const FieldSource& source = {}) {
+    const FieldMark mark(doc, source);
+    const bool changed = edit_property_field(property, block);
+    // Disabled, the widget cannot change; a computed value is never written here.
+    return changed && !mark.read_only();
+}
+
+template <class Block>
+bool edit_property_field(const PropertySpec<Block>& property, Block& block) {
     // Names in the tables are string literals, so data() ends in a NUL.
     const char* label = property.name.data();
     return with_member(property, block, [&](auto& value) {
@@ -94,6 +128,16 @@ bool edit_properties(Block& block) {
     bool changed = false;
     for (const PropertySpec<Block>& property : schema_of<Block>().properties)
         changed = edit_property(property, block) || changed;
+    return changed;
+}
+
+// The same, each field marked by where its value comes from:
+// `source_of(name)` gives its FieldSource in `doc`.
+template <class Block, class SourceOf>
+bool edit_properties(Block& block, const SceneDocument& doc, const SourceOf& source_of) {
+    bool changed = false;
+    for (const PropertySpec<Block>& property : schema_of<Block>().properties)
+        changed = edit_property(property, block, &doc, source_of(property.name)) || changed;
     return changed;
 }
 

@@ -24,13 +24,20 @@ void settings_panel(AppState& state) {
     RenderSettings& s = state.doc.scene.settings;
     const EditedBlock block{EditedBlock::Kind::settings, 0};
     settle_block(state.history, state.doc, block);
-    bool changed = edit_properties(s);
-    changed = edit_file_name("background_map", s.background_map,
-                             "A PNG, JPEG or BMP file, relative to the scene's folder, seen "
-                             "wherever a ray meets nothing (equirectangular: its centre straight "
-                             "down -z); empty: the background colour. Enter applies it; the "
-                             "render follows the file when it changes on disk.") ||
-              changed;
+    const SceneDocument& doc = state.doc;
+    const BlockSource* source = block_source(doc, block);
+    bool changed = edit_properties(
+        s, doc, [&](std::string_view name) { return field_source(doc, source, name); });
+    {
+        const FieldMark mark(&doc, field_source(doc, source, "background_map"));
+        const bool typed =
+            edit_file_name("background_map", s.background_map,
+                           "A PNG, JPEG or BMP file, relative to the scene's folder, seen "
+                           "wherever a ray meets nothing (equirectangular: its centre "
+                           "straight down -z); empty: the background colour. Enter applies "
+                           "it; the render follows the file when it changes on disk.");
+        changed = (typed && !mark.read_only()) || changed;
+    }
     if (changed) note_block_edited(state.history, state.doc, block);
     ImGui::EndDisabled();
 }
@@ -65,7 +72,11 @@ void lights_panel(AppState& state) {
                 command = [&state, ref] { delete_block(state, ref); };
             const EditedBlock block{EditedBlock::Kind::light, i};
             settle_block(state.history, state.doc, block);
-            if (edit_properties(lights[i])) note_block_edited(state.history, state.doc, block);
+            const BlockSource* source = block_source(state.doc, block);
+            if (edit_properties(lights[i], state.doc, [&](std::string_view name) {
+                    return field_source(state.doc, source, name);
+                }))
+                note_block_edited(state.history, state.doc, block);
             ImGui::TreePop();
         }
         ImGui::PopID();
@@ -73,25 +84,31 @@ void lights_panel(AppState& state) {
     if (command) command();
 }
 
-bool material_editor(Material& m) {
-    bool changed = edit_properties(m);
-    changed = edit_file_name("image_map", m.image_map,
-                             "A PNG, JPEG or BMP file, relative to the scene's folder, mapped "
-                             "onto the object (map_size is one tile); empty: none. Enter "
-                             "applies it.") ||
-              changed;
-    return changed;
+bool material_editor(Material& m, const SceneDocument& doc, const BlockSource* primitive) {
+    const auto source_of = [&](std::string_view name) {
+        return material_field_source(doc, primitive, name);
+    };
+    bool changed = edit_properties(m, doc, source_of);
+    const FieldMark mark(&doc, source_of("image_map"));
+    const bool typed =
+        edit_file_name("image_map", m.image_map,
+                       "A PNG, JPEG or BMP file, relative to the scene's folder, mapped "
+                       "onto the object (map_size is one tile); empty: none. Enter "
+                       "applies it.");
+    return (typed && !mark.read_only()) || changed;
 }
 
 std::optional<TransformCommand> transform_editor(std::vector<TransformOp>& transforms,
-                                                 bool& changed) {
+                                                 bool& changed, const SceneDocument& doc,
+                                                 const BlockSource* primitive) {
     std::optional<TransformCommand> command;
     if (transforms.empty()) ImGui::TextDisabled("no transform operations");
     const std::size_t count = transforms.size();
     for (std::size_t i = 0; i < count; ++i) {
         ImGui::PushID(static_cast<int>(i));
-        changed =
-            edit_property(transform_op(transforms[i].kind).property, transforms[i]) || changed;
+        changed = edit_property(transform_op(transforms[i].kind).property, transforms[i], &doc,
+                                transform_field_source(doc, primitive, i)) ||
+                  changed;
         if (button("Up", "Move this operation one place earlier (applied before the one above)",
                    i == 0 ? "It is already the first" : ""))
             command = TransformCommand{TransformCommand::Kind::move, i, i - 1, {}};

@@ -40,6 +40,10 @@ struct RenderFlags {
 
 // The options the scene is parsed with: --define and --clock.
 ParseOptions parse_options_for(const RenderFlags& flags);
+// The same from add_scene_value_flags' two values (already checked by it),
+// with the source map on.
+ParseOptions scene_value_options(const std::vector<std::string>& defines,
+                                 std::optional<double> clock);
 
 // Declares the scene argument and -o, --camera, --width, --height, --samples,
 // --threads, --progress, -q, --define, --clock, --frames and --frame-range.
