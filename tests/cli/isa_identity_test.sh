@@ -1,6 +1,7 @@
 #!/usr/bin/env bash
 # The image must not depend on which vector unit Embree picks, nor on how
-# JTracer was built. Renders every scene in scenes/ and BVH-sized scenes from
+# JTracer was built. Renders every scene in scenes/ (not the parts/ that
+# scenes include) and BVH-sized scenes from
 # the bench generator (thousands of overlapping spheres and cylinders) with
 # Embree's default choice and forced to each ISA this CPU runs
 # (JTRACER_EMBREE_CONFIG=isa=...), and with libjpeg-turbo's SIMD code off
@@ -30,7 +31,7 @@ python3 "$source_dir/bench/generate_scenes.py" "$work/generated" \
     --only lattice_1024 nested_shells_1024 sphereflake_1024 tree_1024 >/dev/null
 scenes=()
 while IFS= read -r scene; do scenes+=("$scene"); done < <(
-    find "$source_dir/scenes" "$work/generated" -name '*.jts' | sort)
+    find "$source_dir/scenes" "$work/generated" -name '*.jts' -not -path '*/parts/*' | sort)
 [ ${#scenes[@]} -ge 10 ] || fail "only ${#scenes[@]} scenes found"
 
 # Embree's report of a device: the CPU features it enables (the ISA line under
