@@ -25,13 +25,14 @@ namespace py = pybind11;
 
 // Diagnostic and SceneError (errors.cpp).
 void bind_errors(py::module_& m);
-// Diagnostic objects for `diagnostics` of the file `path` (as given).
-py::list diagnostic_list(const std::vector<Diagnostic>& diagnostics, const std::string& path);
+// Diagnostic objects for `diagnostics` of `loaded`, each naming its own file:
+// the path as given, or an included file as --check names it.
+py::list diagnostic_list(const std::vector<Diagnostic>& diagnostics, const LoadedScene& loaded);
 // Raises jtracer.SceneError: its text is `message` (what --check prints), its
 // .diagnostics the list.
 [[noreturn]] void raise_scene_error(const std::string& message,
                                     const std::vector<Diagnostic>& diagnostics,
-                                    const std::string& path);
+                                    const LoadedScene& loaded);
 // Raises OSError with the core's message ("cannot read 'a.png': no such file").
 [[noreturn]] void raise_os_error(const std::string& message);
 

@@ -4,6 +4,8 @@
 
 #include "bindings.hpp"
 
+#include "jtracer/source_files.hpp"
+
 #include <pybind11/operators.h>
 
 #include <utility>
@@ -39,23 +41,25 @@ PyObject* scene_error_type = nullptr;
 
 }  // namespace
 
-py::list diagnostic_list(const std::vector<Diagnostic>& diagnostics, const std::string& path) {
+py::list diagnostic_list(const std::vector<Diagnostic>& diagnostics, const LoadedScene& loaded) {
     py::list list;
     for (const Diagnostic& d : diagnostics)
-        list.append(PythonDiagnostic{path, d.pos.line, d.pos.column,
-                                     d.severity == Severity::error     ? "error"
-                                     : d.severity == Severity::warning ? "warning"
-                                                                       : "note",
-                                     d.message});
+        list.append(PythonDiagnostic{
+            std::string(file_name(loaded.parsed.source.files, loaded.path, d.pos.file)), d.pos.line,
+            d.pos.column,
+            d.severity == Severity::error     ? "error"
+            : d.severity == Severity::warning ? "warning"
+                                              : "note",
+            d.message});
     return list;
 }
 
 void raise_scene_error(const std::string& message, const std::vector<Diagnostic>& diagnostics,
-                       const std::string& path) {
+                       const LoadedScene& loaded) {
     std::string text = message;
     if (!text.empty() && text.back() == '\n') text.pop_back();
     py::object error = py::reinterpret_borrow<py::object>(scene_error_type)(text);
-    error.attr("diagnostics") = diagnostic_list(diagnostics, path);
+    error.attr("diagnostics") = diagnostic_list(diagnostics, loaded);
     PyErr_SetObject(scene_error_type, error.ptr());
     throw py::error_already_set();
 }

@@ -112,7 +112,7 @@ py::array_t<std::uint8_t> render_scene(PythonScene& scene, const RenderArguments
         setup = frontend::set_up_frame(program, flags, scene.loaded, region);
     }
     if (setup.exit_code == frontend::exit_scene_error)
-        raise_scene_error(setup.message, setup.diagnostics, scene.loaded.path);
+        raise_scene_error(setup.message, setup.diagnostics, scene.loaded);
     if (setup.exit_code != frontend::exit_ok) throw py::value_error(reason(setup, program));
 
     std::shared_ptr<const PreparedScene> prepared;

@@ -84,8 +84,7 @@ std::vector<Diagnostic> findings(const LoadedScene& loaded) {
 std::shared_ptr<PythonScene> checked_scene(LoadedScene loaded) {
     std::vector<Diagnostic> diagnostics = findings(loaded);
     if (has_errors(diagnostics))
-        raise_scene_error(format_diagnostics(diagnostics, loaded.path, loaded.text), diagnostics,
-                          loaded.path);
+        raise_scene_error(format_diagnostics(diagnostics, loaded), diagnostics, loaded);
     auto scene = std::make_shared<PythonScene>();
     scene->loaded = std::move(loaded);
     scene->warnings = std::move(diagnostics);
@@ -168,8 +167,7 @@ void bind_scene(py::module_& m) {
         .def_property_readonly("cameras",
                                [](const PythonScene& s) { return s.loaded.parsed.scene.cameras; })
         .def_property_readonly(
-            "warnings",
-            [](const PythonScene& s) { return diagnostic_list(s.warnings, s.loaded.path); },
+            "warnings", [](const PythonScene& s) { return diagnostic_list(s.warnings, s.loaded); },
             "The warnings `jtracer-cli --check` prints for it, as Diagnostic objects")
         .def("text", &scene_text,
              "The scene as canonical .jts text (every block and property written out), "
@@ -223,6 +221,8 @@ void bind_scene(py::module_& m) {
             LoadedScene loaded;
             loaded.path = path.string();
             loaded.options = options_with(defines);
+            // A text of no file reads its includes from the working directory.
+            if (path != "<string>") loaded.options.main_file = loaded.path;
             loaded.text = std::move(text);
             loaded.parsed = parse_scene(loaded.text, loaded.options);
             if (loaded.parsed.out_of_memory) throw std::bad_alloc();
@@ -231,14 +231,14 @@ void bind_scene(py::module_& m) {
         },
         py::arg("text"), py::arg("path") = "<string>", py::arg("defines") = py::none(),
         "Parses and checks .jts text. `path` names it in diagnostics, and its folder is "
-        "where the scene's relative file names (meshes, image maps) are found; the "
-        "default, \"<string>\", looks in the current directory. defines as for load(). "
+        "where the scene's relative file names (includes, meshes, image maps) are found; "
+        "the default, \"<string>\", looks in the current directory. defines as for load(). "
         "Raises SceneError.");
     m.def(
         "check",
         [](const std::filesystem::path& path) {
             const LoadedScene loaded = read_file(path, options_with(std::nullopt));
-            return diagnostic_list(findings(loaded), loaded.path);
+            return diagnostic_list(findings(loaded), loaded);
         },
         py::arg("path"),
         "What `jtracer-cli --check` reports for a .jts file, errors and warnings, as a list "

@@ -183,3 +183,25 @@ def test_text_holds_the_defines_it_was_read_with(tmp_path):
     assert "define r = 3;\n" in text and "define r = 2;" not in text
     again = jtracer.parse(text)
     assert again.settings.width == 24 and again.cameras == scene.cameras
+
+
+def test_includes_are_read_from_the_paths_folder_and_diagnostics_name_their_file(tmp_path):
+    (tmp_path / "parts").mkdir()
+    (tmp_path / "parts" / "ball.jts").write_text("sphere { radius: 2; }\n")
+    main = tmp_path / "main.jts"
+    main_text = WARNED.replace("scene { sphere { radius: 1; } }",
+                               'scene { include "parts/ball.jts"; }')
+    main.write_text(main_text)
+    loaded = jtracer.load(main)
+    parsed = jtracer.parse(main_text, path=main)
+    assert "radius: 2;" in loaded.text() and parsed.text() == loaded.text()
+    # Without a path the include is read from the working directory.
+    with pytest.raises(jtracer.SceneError, match="parts/ball.jts"):
+        jtracer.parse(main_text)
+    (tmp_path / "parts" / "ball.jts").write_text("sphere { radius: -1; }\n")
+    with pytest.raises(jtracer.SceneError) as raised:
+        jtracer.load(main)
+    first = raised.value.diagnostics[0]
+    assert (first.file, first.line, first.column) == (str(tmp_path / "parts/ball.jts"), 1, 18)
+    assert str(raised.value).startswith(f"{tmp_path}/parts/ball.jts:1:18: error: ")
+    assert f"note: included from {main}:3:17" in str(raised.value)
