@@ -91,6 +91,29 @@ std::string check_located(const std::vector<Diagnostic>& diagnostics, std::strin
     return {};
 }
 
+// A frame sequence's next frame, which takes the primitives that read no
+// `clock` from the frame before (parser.hpp's EarlierParse), reads the scene
+// a parse from scratch at its clock reads.
+std::string check_frame_to_frame(std::string_view text, ParseOptions options) {
+    options.source_map = false;
+    options.record_primitive_readings = true;
+    options.clock = 0.25;
+    ParseResult first = parse_scene(text, options);
+    if (!first.ok()) return {};
+    EarlierParse earlier{std::string(text), first.source.files, std::move(first.scene.primitives),
+                         std::move(first.primitive_readings)};
+    options.clock = 0.75;
+    ParseResult scratch = parse_scene(text, options);
+    options.earlier = &earlier;
+    ParseResult next = parse_scene(text, options);
+    if (scratch.ok() != next.ok())
+        return "frame to frame: the next frame parses " + std::string(next.ok() ? "" : "not ") +
+               "where a parse from scratch does " + std::string(scratch.ok() ? "" : "not");
+    if (scratch.ok() && !(next.scene == scratch.scene))
+        return "frame to frame: the next frame's scene differs from a parse from scratch";
+    return {};
+}
+
 }  // namespace
 
 std::string check_diagnostics_within(const std::vector<Diagnostic>& diagnostics,
@@ -133,7 +156,7 @@ std::string check_scene_text(std::string_view text) {
         return "source round trip: the reparsed scene differs\n" + kept;
     if (serialize_scene(kept_parsed.scene, {kept, kept_parsed}) != kept)
         return "source round trip: serializing twice gives different text\n" + kept;
-    return {};
+    return check_frame_to_frame(text, options);
 }
 
 std::string check_bmp_bytes(std::span<const std::uint8_t> bytes) {

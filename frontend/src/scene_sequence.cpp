@@ -16,7 +16,11 @@ SceneSequence::SceneSequence(std::string_view program, const RenderFlags& flags,
 FrameSetup SceneSequence::set_up(double clock, bool& reads_clock) {
     RenderFlags flags = flags_;
     flags.clock = clock;
-    Expected<LoadedScene> read = load_scene_file(flags.scene_path, parse_options_for(flags));
+    ParseOptions options = parse_options_for(flags);
+    options.record_primitive_readings = true;
+    options.earlier = &earlier_;
+    Expected<LoadedScene> read = load_scene_file(flags.scene_path, options);
+    earlier_.primitives = {};  // taken, or of other texts
     if (!read) {
         FrameSetup setup;
         setup.exit_code = exit_io_error;
@@ -25,15 +29,16 @@ FrameSetup SceneSequence::set_up(double clock, bool& reads_clock) {
     }
     reads_clock = read->parsed.reads_clock;
     path_ = read->path;
-    text_ = read->text;
-    files_ = read->parsed.source.files;
+    earlier_.text = read->text;
+    earlier_.files = read->parsed.source.files;
+    earlier_.readings = std::move(read->parsed.primitive_readings);
     return set_up_frame(program_, flags, std::move(*read), region_);
 }
 
 std::string SceneSequence::unprinted(const std::vector<Diagnostic>& diagnostics) {
     std::string message;
     for (const Diagnostic& d : diagnostics) {
-        std::string text = format_diagnostics({d}, path_, text_, files_);
+        std::string text = format_diagnostics({d}, path_, earlier_.text, earlier_.files);
         if (printed_.insert(text).second) message += text;
     }
     return message;
@@ -78,6 +83,7 @@ SequenceFrame SceneSequence::frame(int index, bool prepare) {
         }
     }
     if (fresh && !reads_clock) fixed_ = std::move(*fresh);
+    if (fresh && reads_clock) earlier_.primitives = std::move(fresh->scene.primitives);
     return frame;
 }
 

@@ -38,6 +38,27 @@ using IncludeReader =
 // loader's read_text_file.
 Expected<IncludedText> read_include_file(const std::string& path, std::uintmax_t max_bytes);
 
+// Where a primitive was read, and whether any of its values (its own, its
+// material's, its transform's, or a named material's it uses) read `clock`.
+struct PrimitiveReading {
+    std::uint32_t file = 0;     // SourcePos::file of its keyword
+    std::uint32_t keyword = 0;  // the keyword's offset in that file's text
+    std::uint32_t resume = 0;   // the offset of the token after its '}'
+    SourcePos resume_pos;       // and that token's position
+    bool reads_clock = false;
+};
+
+// The same texts parsed, without errors, at another clock: a frame sequence's previous frame
+// (docs/language.md §15.4). Its primitives that read no `clock` are moved out
+// of it into the new scene instead of being read again: in a scene where only
+// a camera, a light or a few objects move, a frame reads little of the text.
+struct EarlierParse {
+    std::string text;                        // the main text it read
+    std::vector<SourceFile> files;           // the included texts it read
+    std::vector<Primitive> primitives;       // the scene's: the new parse takes the array
+    std::vector<PrimitiveReading> readings;  // parallel to `primitives`
+};
+
 struct ParseOptions {
     // False: leave ParseResult::source empty. A tool that only renders needs
     // the source map only to locate validation findings, and for a million
@@ -58,6 +79,13 @@ struct ParseOptions {
     // How included files are read; empty: read_include_file. The fuzzer
     // confines it to files of its own.
     IncludeReader read_include = {};
+    // Fill ParseResult::primitive_readings (for a later parse at another clock).
+    bool record_primitive_readings = false;
+    // Take the primitives that read no `clock` from this earlier parse. Used
+    // only without the source map (a taken primitive has no records), and
+    // only while the texts read are the earlier parse's own, byte for byte.
+    // Diagnostics inside a taken primitive are not repeated.
+    EarlierParse* earlier = nullptr;
 };
 
 // Splits and checks one `--define` argument "NAME=VALUE": NAME a name that is
@@ -73,6 +101,8 @@ struct ParseResult {
     // Some value that was evaluated named `clock` (in the file or in a
     // --define): false means the scene is the same at every clock.
     bool reads_clock = false;
+    // With ParseOptions::record_primitive_readings: one per primitive of `scene`.
+    std::vector<PrimitiveReading> primitive_readings;
     bool ok() const { return !has_errors(diagnostics); }
 };
 

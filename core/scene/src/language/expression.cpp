@@ -259,7 +259,7 @@ bool ExpressionReader::parse_primary(int depth) {
     const std::string_view word = t.text;
     if (word == "pi" || word == "clock") {
         literal_ = false;
-        if (word == "clock" && evaluating_) read_clock_ = true;
+        if (word == "clock" && evaluating_) ++clock_reads_;
         push(op, number(word == "pi" ? kPi : clock_));
         take();
         return true;
@@ -290,6 +290,7 @@ bool ExpressionReader::parse_primary(int depth) {
     }
     literal_ = false;
     single_name_ = true;
+    if (symbol->reads_clock && evaluating_) ++clock_reads_;
     push(op, symbol->value);
     take();
     return true;

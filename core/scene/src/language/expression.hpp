@@ -54,7 +54,13 @@ class ExpressionReader {
 
     // True once a value read for evaluation has named `clock`: a scene
     // whose values never do is the same at every frame.
-    bool read_clock() const { return read_clock_; }
+    bool read_clock() const { return clock_reads_ > 0; }
+    // How many times values read for evaluation named `clock` or a name
+    // whose value did: a part of the text whose reading leaves it unchanged
+    // is the same at every frame.
+    std::uint64_t clock_reads() const { return clock_reads_; }
+    // Counts a reading of `clock` made elsewhere (a named material's use).
+    void note_clock_read() { ++clock_reads_; }
 
     // One step of evaluation, in postfix order.
     struct Op {
@@ -97,7 +103,7 @@ class ExpressionReader {
     std::uint32_t end_offset_ = 0;
     SourcePos end_pos_;
     bool literal_ = true;
-    bool read_clock_ = false;
+    std::uint64_t clock_reads_ = 0;
     bool single_name_ = false;
 };
 

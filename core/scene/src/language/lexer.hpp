@@ -65,6 +65,12 @@ class Lexer {
     std::size_t plain_vector(std::size_t offset, Vec3& out) const;
     // Continues from `offset`, on the line of the last token read.
     void skip_to(std::size_t offset) { at_ = offset; }
+    // Continues from `offset`, which is at `pos` (a token this text gave before).
+    void resume_at(std::size_t offset, SourcePos pos) {
+        at_ = offset;
+        line_ = pos.line;
+        line_start_ = offset - static_cast<std::size_t>(pos.column - 1);
+    }
 
   private:
     void skip_space_and_comments();

@@ -34,6 +34,7 @@ struct Symbol {
     bool from_command_line = false;
     bool defined_in_file = false;  // a --define's name the file defines too
     bool bad = false;              // its definition had an error (reported there): uses say nothing
+    bool reads_clock = false;      // its value named `clock`, directly or through other names
     std::uint32_t definition = 0;  // its index in SceneSource::definitions
 };
 

@@ -138,7 +138,12 @@ class Parser final : private TokenCursor {
           expressions_(*this, sink_, names_, options.clock),
           primitive_hint_(primitives ? primitive_count_hint(text) : 0),
           source_map_(options.source_map),
-          keep_primitives_(primitives) {
+          keep_primitives_(primitives),
+          record_readings_(options.record_primitive_readings && primitives),
+          earlier_(options.earlier && !options.source_map && primitives &&
+                           options.earlier->text == text
+                       ? options.earlier
+                       : nullptr) {
         if (source_map_ && keep_primitives_) {
             reserve_records(result_.source.properties, property_count_hint(text));
             reserve_records(result_.source.children, primitive_hint_);
@@ -482,6 +487,11 @@ class Parser final : private TokenCursor {
             if (unreadable) names_.stop_reporting_unknown();
             return;
         }
+        // An included file that changed since the earlier parse: its offsets
+        // say nothing of what it holds now.
+        if (earlier_ && (opened->file > earlier_->files.size() ||
+                         earlier_->files[opened->file - 1].text != opened->text))
+            earlier_ = nullptr;
         const std::array<Token, 2> resume{*cur_, *next_};
         const std::string_view resume_text = text_;
         Lexer* const resume_lexer = reading_;
@@ -626,10 +636,15 @@ class Parser final : private TokenCursor {
         std::vector<Primitive> primitives;
         std::vector<PointLight> lights;
         std::vector<BlockSource> primitive_sources, light_sources;
+        std::vector<PrimitiveReading> readings;
         if (!open_block(block)) return;
         // Only the first scene block gets the hint: it was counted over the whole text.
         std::size_t hint = std::exchange(primitive_hint_, 0);
-        reserve_records(primitives, hint);
+        // The earlier parse's primitives stay where they are, each replaced
+        // by the one read at its index unless taken: a frame holds one array.
+        std::size_t placed = 0;
+        if (earlier_) primitives = std::move(earlier_->primitives);
+        if (primitives.empty()) reserve_records(primitives, hint);
         if (source_map_) reserve_records(primitive_sources, hint);
         parse_body(block, scene_blocks(), only_blocks(block, scene_blocks()), [&] {
             std::string_view kind = cur_->text;
@@ -640,6 +655,10 @@ class Parser final : private TokenCursor {
                 lights.push_back(light);
                 light_sources.push_back(std::move(light_block));
             } else if (std::optional<Shape> shape = shape_of_keyword(kind)) {
+                if (take_earlier(primitives, placed, readings)) return;
+                const std::uint32_t file = cur_->pos.file;
+                const auto keyword = static_cast<std::uint32_t>(cur_->offset);
+                const std::uint64_t clock_reads = expressions_.clock_reads();
                 Primitive primitive;
                 primitive.shape = std::move(*shape);
                 BlockSource primitive_block;
@@ -649,8 +668,15 @@ class Parser final : private TokenCursor {
                                 [&](OpenBlock& open) { parse_primitive_body(primitive, open); });
                 in_primitive_ = false;
                 if (!keep_primitives_) return;
-                primitives.push_back(std::move(primitive));
+                if (placed < primitives.size())
+                    primitives[placed] = std::move(primitive);
+                else
+                    primitives.push_back(std::move(primitive));
+                ++placed;
                 if (source_map_) primitive_sources.push_back(primitive_block);
+                if (record_readings_)
+                    readings.push_back({file, keyword, static_cast<std::uint32_t>(cur_->offset),
+                                        cur_->pos, expressions_.clock_reads() > clock_reads});
             } else {
                 unknown_block("in '" + std::string(kSceneKeyword) + "'", scene_blocks());
             }
@@ -661,11 +687,33 @@ class Parser final : private TokenCursor {
                               std::to_string(result_.source.scene->keyword_span.pos.line) +
                               " is ignored");
         }
+        primitives.erase(primitives.begin() + static_cast<std::ptrdiff_t>(placed),
+                         primitives.end());
         result_.scene.primitives = std::move(primitives);
+        result_.primitive_readings = std::move(readings);
         result_.scene.lights = std::move(lights);
         result_.source.primitives = std::move(primitive_sources);
         result_.source.lights = std::move(light_sources);
         result_.source.scene = std::move(block);
+    }
+
+    // At a primitive's keyword: keeps the earlier parse's primitive at index
+    // `placed` of `primitives` when it was read from here and read no `clock`,
+    // and goes on after its '}'. False: read it.
+    bool take_earlier(std::vector<Primitive>& primitives, std::size_t& placed,
+                      std::vector<PrimitiveReading>& readings) {
+        if (!earlier_ || placed >= earlier_->readings.size() || placed >= primitives.size())
+            return false;
+        const PrimitiveReading& reading = earlier_->readings[placed];
+        if (reading.reads_clock || reading.file != cur_->pos.file ||
+            reading.keyword != cur_->offset)
+            return false;
+        ++placed;
+        if (record_readings_) readings.push_back(reading);
+        reading_->resume_at(reading.resume, reading.resume_pos);
+        reading_->next(*cur_);
+        reading_->next(*next_);
+        return true;
     }
 
     // A primitive's children go straight to the scene's array of child records:
@@ -696,6 +744,7 @@ class Parser final : private TokenCursor {
                         }
                         named = found;
                         named_at = at;
+                        if (found->reads_clock) expressions_.note_clock_read();
                         inherit_material(found->material, primitive.material, own_material);
                         block.named_material = found->definition;
                     }
@@ -806,6 +855,7 @@ class Parser final : private TokenCursor {
                 command_line_.emplace_back(define.name, symbol);
             }
             symbol->from_command_line = true;
+            symbol->reads_clock = define.value.find("clock") != std::string::npos;
             symbol->value = value;
             if (value.kind == ExprValue::Kind::string)
                 NameTable::set_string(*symbol, std::string(value.text));
@@ -857,6 +907,7 @@ class Parser final : private TokenCursor {
             return;
         }
         advance();
+        const std::uint64_t clock_reads = expressions_.clock_reads();
         Value value = read_value(!overridden);
         if (value.form == Value::Form::none) {
             sink_.error(cur_->pos, "expected a value after 'define " + std::string(name.text) +
@@ -870,6 +921,7 @@ class Parser final : private TokenCursor {
             symbol.defined_at = name.pos;
             symbol.definition = static_cast<std::uint32_t>(result_.source.definitions.size());
             symbol.bad = !good;
+            symbol.reads_clock = expressions_.clock_reads() > clock_reads;
             if (value.form == Value::Form::number) {
                 symbol.value.kind = ExprValue::Kind::number;
                 symbol.value.number = value.number;
@@ -933,6 +985,7 @@ class Parser final : private TokenCursor {
         advance();
         Material material;
         const std::size_t errors_before = error_count();
+        const std::uint64_t clock_reads = expressions_.clock_reads();
         read_properties(block, 0, [&](OpenBlock& open) {
             parse_body(
                 block, kNoBlocks, [&](const Property& p) { reader_.apply(material, open, p); },
@@ -944,6 +997,7 @@ class Parser final : private TokenCursor {
         symbol.material = material;
         symbol.defined_at = name.pos;
         symbol.bad = error_count() != errors_before;
+        symbol.reads_clock = expressions_.clock_reads() > clock_reads;
         symbol.definition = static_cast<std::uint32_t>(result_.source.definitions.size());
         if (source_map_) {
             result_.source.definitions.push_back({std::string(name.text),
@@ -973,6 +1027,8 @@ class Parser final : private TokenCursor {
     std::size_t primitive_hint_;
     bool source_map_;  // false: records are still made (for messages) but not kept
     bool keep_primitives_;
+    bool record_readings_;
+    EarlierParse* earlier_;      // null: read every primitive
     bool in_primitive_ = false;  // reading a primitive's block
     std::array<std::vector<PropertySource>, 2> property_buffers_;
 };

@@ -5,10 +5,12 @@
 //
 // What it saves: a scene none of whose values names `clock` is the same at
 // every frame, so it is read, checked and prepared once for the whole
-// sequence. Any other is read again at every frame, and prepared with the
-// previous frame's scene at hand (its acceleration structure is reused when
-// the geometry did not move; models and textures come from the shared caches,
-// held meanwhile by the previous frame).
+// sequence. Any other is read again at every frame, but its primitives that
+// read no `clock` are taken from the previous frame rather than read again
+// (parser.hpp's EarlierParse), and it is prepared with the previous frame's
+// scene at hand (its acceleration structure is reused when the geometry did
+// not move; models and textures come from the shared caches, held meanwhile
+// by the previous frame).
 
 #include "jtracer/frontend/frame_file_name.hpp"
 #include "jtracer/frontend/frame_setup.hpp"
@@ -66,10 +68,10 @@ class SceneSequence {
     std::optional<FrameSetup> fixed_;
     std::shared_ptr<const PreparedScene> previous_;
     std::set<std::string> printed_;  // formatted diagnostics already shown
-    // The texts of the frame being set up, to format its diagnostics.
+    // The frame being set up: its path and texts, to format its diagnostics;
+    // once it has rendered, its primitives, for the next frame to take.
     std::string path_;
-    std::string text_;
-    std::vector<SourceFile> files_;  // its included files
+    EarlierParse earlier_;
 };
 
 }  // namespace jt::frontend
