@@ -36,7 +36,12 @@ void finish_open(AppState& state, const std::filesystem::path& path, LoadAttempt
     const bool ok = attempt.ok;
     const bool first = !state.doc.loaded;
     const Scene before = state.doc.scene;
+    const std::filesystem::path was = state.doc.path;
     accept_load(state.doc, path, std::move(attempt));
+    // An open was asked before dropping text typed in included files (guard):
+    // none carries over, and another scene's file is not shown.
+    state.editor.drafts.clear();
+    if (state.doc.path != was) state.editor.shown.clear();
     if (ok || first) {
         state.files.watcher = FileWatcher(state.config.watch_interval);
         state.files.watcher.watch(path);

@@ -202,6 +202,26 @@ TEST_F(EditorFilesTest, QuittingWithTextTypedInAnIncludedFileAsksFirst) {
     EXPECT_EQ(read_file(ball), "sphere { radius: 3; }\n");
 }
 
+TEST_F(EditorFilesTest, OpeningAnotherSceneAsksAndDropsTheTypedTextOnlyWhenTold) {
+    write(ball, kBall);
+    open();
+    const fs::path other = scratch.path() / "other.jts";
+    write(other, kHead + "scene { sphere { radius: 2; } }\n");
+    show_file(state.editor, state.doc, canonical_of(state.doc, "parts/ball.jts"));
+    type_included_text(state.editor, state.doc, "sphere { radius: 3; }\n");
+    request_open_guarded(state, other);
+    ASSERT_TRUE(state.files.unsaved_prompt.has_value());
+    resolve_unsaved(state, UnsavedChoice::cancel);
+    EXPECT_TRUE(has_included_drafts(state.editor));
+    request_open_guarded(state, other);
+    resolve_unsaved(state, UnsavedChoice::discard);
+    ASSERT_TRUE(model.run_until_loaded(state));
+    EXPECT_EQ(state.doc.path, other);
+    EXPECT_FALSE(has_unsaved_work(state)) << "nothing typed carries over to another scene";
+    EXPECT_TRUE(state.editor.shown.empty());
+    EXPECT_EQ(read_file(ball), kBall);
+}
+
 TEST_F(EditorFilesTest, SavingAPanelEditSaysWhichFilesWereWritten) {
     write(ball, kBall);
     open();
