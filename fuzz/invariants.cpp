@@ -122,7 +122,8 @@ std::string check_scene_text(std::string_view text) {
 
     // The same, keeping the text's names and expressions.
     const std::string kept = serialize_scene(parsed.scene, {text, parsed});
-    ParseResult kept_parsed = parse_scene(kept);
+    // It may keep the text's includes: read them as the text's were.
+    ParseResult kept_parsed = parse_scene(kept, options);
     if (!kept_parsed.ok()) {
         std::string first =
             kept_parsed.diagnostics.empty() ? "" : describe(kept_parsed.diagnostics[0]);

@@ -1,6 +1,5 @@
 #include "coordinator.hpp"
 
-#include "jtracer/frontend/progress.hpp"
 #include "silence_watch.hpp"
 #include "work_tiles.hpp"
 
@@ -68,19 +67,19 @@ class Coordinator {
     CoordinatorResult run(const std::atomic<bool>& stop,
                           const std::function<bool(const Image8&)>& deliver) {
         start_ = Clock::now();
-        frontend::ProgressDisplay display(settings_.progress);
         for (int rank = 1; rank < settings_.ranks; ++rank)
             for (int i = 0; i < tiles_ahead; ++i) hand_out(rank);
         start_local_tile();
         auto last_shown = Clock::now();
         while (pasted_ < tiles_.size() && !stop.load() && !lost()) {
             serve_once();
-            if (seconds_since(last_shown) > 0.1) {
-                display.update(progress(seconds_since(start_)));
+            if (settings_.on_progress && seconds_since(last_shown) > 0.1) {
+                settings_.on_progress(progress(seconds_since(start_)));
                 last_shown = Clock::now();
             }
         }
-        display.finish();
+        // Once more as it ends: a frame quicker than the interval still counts.
+        if (settings_.on_progress) settings_.on_progress(progress(seconds_since(start_)));
         result_.seconds = seconds_since(start_);
         if (pasted_ < tiles_.size()) return std::move(result_);
         result_.complete = true;

@@ -5,8 +5,8 @@
 #include "messages.hpp"
 #include "silence_watch.hpp"
 
-#include "jtracer/frontend/progress.hpp"
 #include "jtracer/image.hpp"
+#include "jtracer/render_job.hpp"
 #include "jtracer/render_tile.hpp"
 
 #include <atomic>
@@ -22,7 +22,9 @@ struct CoordinatorSettings {
     int ranks = 1;  // counting rank 0
     // A worker silent this long (no tile, no heartbeat) is declared lost.
     double rank_timeout = 10.0;
-    frontend::ProgressStyle progress = frontend::ProgressStyle::none;
+    // Called about ten times a second, and once at the end, with the frame's progress; the caller
+    // owns the display, so that one bar or log covers a whole sequence.
+    std::function<void(const RenderProgress&)> on_progress;
     // A sequence has a frame after this one: the workers are told so when
     // they stop, unless delivering this frame failed.
     bool another_frame = false;

@@ -15,6 +15,7 @@
 #include "jtracer/frontend/frame_setup.hpp"
 #include "jtracer/frontend/progress.hpp"
 #include "jtracer/frontend/scene_sequence.hpp"
+#include "jtracer/frontend/sequence_progress.hpp"
 #include "jtracer/image_file.hpp"
 
 #include <mpi.h>
@@ -235,6 +236,12 @@ int run(int argc, char** argv, int rank, int ranks) {
         sequence ? sequence->range() : jt::frontend::FrameRange{};
     if (rank != 0) return run_worker_frames(o, frames, range.first, rank);
 
+    // One display for the whole sequence, as jtracer-cli's: the bar or log goes
+    // on from frame to frame and its time left is the sequence's.
+    jt::frontend::ProgressDisplay display(
+        jt::frontend::progress_style_for_stderr(o.progress, o.quiet));
+    const int total = range.last - range.first + 1;
+    const auto sequence_start = Clock::now();
     for (int index = range.first; index <= range.last; ++index) {
         const auto frame_start = Clock::now();
         const RankFrame frame = set_up_rank(o, frames, index);
@@ -261,7 +268,12 @@ int run(int argc, char** argv, int rank, int ranks) {
         CoordinatorSettings settings;
         settings.ranks = ranks;
         settings.rank_timeout = o.rank_timeout;
-        settings.progress = jt::frontend::progress_style_for_stderr(o.progress, o.quiet);
+        settings.on_progress = [&](const jt::RenderProgress& p) {
+            if (!o.frames) return display.update(p);
+            const double seconds =
+                std::chrono::duration<double>(Clock::now() - sequence_start).count();
+            display.update(jt::frontend::sequence_progress(p, index - range.first, total, seconds));
+        };
         settings.another_frame = index < range.last;
         std::optional<jt::Expected<void>> written;
         CoordinatorResult result =
@@ -270,6 +282,7 @@ int run(int argc, char** argv, int rank, int ranks) {
                                 written = jt::write_image(frame.output, image, frame.format);
                                 return static_cast<bool>(*written);
                             });
+        display.finish();
         if (result.lost)
             end_for_lost_rank(
                 *result.lost, call.hosts, o.rank_timeout,
@@ -292,9 +305,14 @@ int run(int argc, char** argv, int rank, int ranks) {
             return exit_io_error;
         }
         report_frame(o, frame, index, result, ranks);
-        const double total = std::chrono::duration<double>(Clock::now() - start).count();
-        if (o.stats) print_stats(result, stats, mine.tiles.size(), o.tile_size, total);
+        const double seconds = std::chrono::duration<double>(Clock::now() - start).count();
+        if (o.stats) print_stats(result, stats, mine.tiles.size(), o.tile_size, seconds);
     }
+    if (!o.quiet && o.frames && total > 1)
+        std::cerr << "wrote " << total << " frames in "
+                  << jt::frontend::format_duration(
+                         std::chrono::duration<double>(Clock::now() - sequence_start).count())
+                  << "\n";
     return exit_ok;
 }
 

@@ -5,8 +5,11 @@
 
 #include <gtest/gtest.h>
 
+#include <algorithm>
 #include <filesystem>
+#include <sstream>
 #include <string>
+#include <vector>
 
 namespace jt {
 namespace {
@@ -202,9 +205,20 @@ TEST_F(CliFrames, ASceneWithoutClockGivesEqualFrames) {
 }
 
 TEST_F(CliFrames, ProgressLogCoversTheSequence) {
-    test::ProgramRun r = run("scene.jts --frames 2 --progress log -o 'g%d.bmp'");
+    // Frames short enough that none alone reaches the log's first second, but
+    // not the whole sequence.
+    test::ProgramRun r = run(
+        "scene.jts --frames 20 --width 480 --height 320 --samples 16 --progress log -o 'g%d.bmp'");
     ASSERT_EQ(r.code, 0) << r.err;
-    EXPECT_NE(r.err.find("wrote 2 frames in"), std::string::npos) << r.err;
+    EXPECT_NE(r.err.find("wrote 20 frames in"), std::string::npos) << r.err;
+    // One log over the sequence: its percentages only go up.
+    std::vector<int> percents;
+    std::istringstream lines(r.err);
+    for (std::string line; std::getline(lines, line);)
+        if (line.starts_with("rendering: ")) percents.push_back(std::stoi(line.substr(11)));
+    ASSERT_FALSE(percents.empty()) << r.err;
+    EXPECT_TRUE(std::is_sorted(percents.begin(), percents.end())) << r.err;
+    EXPECT_EQ(std::adjacent_find(percents.begin(), percents.end()), percents.end()) << r.err;
 }
 
 }  // namespace

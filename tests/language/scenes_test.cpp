@@ -63,20 +63,50 @@ TEST(Scenes, EveryFileRoundTripsThroughTheSerializer) {
     }
 }
 
-// Kept as written where the text uses names: the same scene again, and for a
-// file without definitions, the canonical text itself.
+// Kept as written where the text uses names or includes: the same scene
+// again, read from the file's folder, and for a file without definitions or
+// includes, the canonical text itself.
 TEST(Scenes, EveryFileRoundTripsThroughTheSourceSerializer) {
     for (const auto& path : scene_files()) {
         const LoadedScene loaded = load_scene_file(path).value();
         const std::string text = serialize_scene(loaded.parsed.scene, {loaded.text, loaded.parsed});
-        ParseResult again = parse_scene(text);
+        ParseResult again = parse_scene(text, loaded.options);
         EXPECT_EQ(test::brief(again.diagnostics), "") << path << "\n" << text;
         EXPECT_TRUE(again.scene == loaded.parsed.scene) << path << "\n" << text;
         EXPECT_EQ(again.source.definitions.size(), loaded.parsed.source.definitions.size());
-        if (loaded.parsed.source.definitions.empty()) {
+        // Every include is kept, and reads the same files again.
+        EXPECT_EQ(again.source.files.size(), loaded.parsed.source.files.size()) << path;
+        EXPECT_EQ(serialize_scene(again.scene, {text, again}), text) << path;
+        if (loaded.parsed.source.definitions.empty() && loaded.parsed.source.files.empty()) {
             EXPECT_EQ(text, serialize_scene(loaded.parsed.scene)) << path;
         }
     }
+}
+
+// scenes/split/main.jts keeps its two includes where the canonical layout
+// puts what they give: the definitions first, the objects first in `scene`.
+TEST(Scenes, TheSplitSceneKeepsItsIncludes) {
+    const LoadedScene loaded =
+        load_scene_file(std::filesystem::path(JT_SOURCE_DIR) / "scenes" / "split" / "main.jts")
+            .value();
+    const std::string text = serialize_scene(loaded.parsed.scene, {loaded.text, loaded.parsed});
+    EXPECT_TRUE(
+        text.starts_with("# Written by JTracer.\n"
+                         "\n"
+                         "include \"parts/materials.jts\";\n"
+                         "\n"
+                         "render_settings {\n"))
+        << text;
+    EXPECT_NE(text.find("scene {\n"
+                        "    include \"parts/objects.jts\";\n"
+                        "    point_light {\n"),
+              std::string::npos)
+        << text;
+    for (const char* inlined : {"define ", "material ", "sphere", "plane"})
+        EXPECT_EQ(text.find(inlined), std::string::npos) << inlined << "\n" << text;
+    const ParseResult again = parse_scene(text, loaded.options);
+    EXPECT_EQ(test::brief(again.diagnostics), "") << text;
+    EXPECT_TRUE(again.scene == loaded.parsed.scene) << text;
 }
 
 TEST(Showcase, UsesEveryFeature) {

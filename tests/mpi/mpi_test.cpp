@@ -4,8 +4,12 @@
 #include "common/files.hpp"
 #include "common/scratch_dir.hpp"
 
+#include <algorithm>
 #include <chrono>
+#include <sstream>
+#include <string>
 #include <thread>
+#include <vector>
 
 namespace jt {
 namespace {
@@ -114,6 +118,26 @@ TEST_F(Mpi, EveryFrameOfASequenceMatchesTheCli) {
     ASSERT_EQ(run_shell(cli + "-q seq.jts --clock 0.75 -o alone.bmp").code, 0);
     EXPECT_EQ(test::read_file(dir / "seq-0003.bmp"), test::read_file(dir / "alone.bmp"));
     EXPECT_TRUE(std::filesystem::exists(dir / "seq-0004.bmp"));
+}
+
+TEST_F(Mpi, ProgressCoversTheWholeSequence) {
+    // Frames short enough that none alone reaches the log's first second, but
+    // not the whole sequence.
+    test::write_file(dir / "seq.jts", growing);
+    ProgramRun r = run_shell(
+        mpirun(2) +
+        "seq.jts --frames 20 --width 480 --height 320 --samples 16 --progress log -o 'p%d.bmp'");
+    ASSERT_EQ(r.code, 0) << r.err;
+    EXPECT_EQ(count(r.err, "wrote p"), 20u) << r.err;
+    EXPECT_EQ(count(r.err, "wrote 20 frames in"), 1u) << r.err;
+    // One log over the sequence: its percentages only go up.
+    std::vector<int> percents;
+    std::istringstream lines(r.err);
+    for (std::string line; std::getline(lines, line);)
+        if (line.starts_with("rendering: ")) percents.push_back(std::stoi(line.substr(11)));
+    ASSERT_FALSE(percents.empty()) << r.err;
+    EXPECT_TRUE(std::is_sorted(percents.begin(), percents.end())) << r.err;
+    EXPECT_EQ(std::adjacent_find(percents.begin(), percents.end()), percents.end()) << r.err;
 }
 
 TEST_F(Mpi, AnErrorAtOneFrameEndsEveryRankOnce) {

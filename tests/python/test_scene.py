@@ -2,6 +2,7 @@
 import re
 
 import jtracer
+import numpy as np
 import pytest
 from conftest import run
 
@@ -185,6 +186,25 @@ def test_text_holds_the_defines_it_was_read_with(tmp_path):
     assert again.settings.width == 24 and again.cameras == scene.cameras
 
 
+def test_text_writes_out_an_include_that_defines_a_given_name(tmp_path):
+    (tmp_path / "defs.jts").write_text("define r = 2;\n")
+    (tmp_path / "lamp.jts").write_text("point_light { position: <0, r, 0>; }\n")
+    main = tmp_path / "main.jts"
+    main.write_text('include "defs.jts";\n' + NAMED.split("\n", 1)[1].replace(
+        "        point_light { position: <0, r, 0>; intensity: <1, 1, 1>; } }",
+        '        include "lamp.jts"; }'))
+    kept = jtracer.load(main).text()
+    assert 'include "defs.jts";\n' in kept and 'include "lamp.jts";\n' in kept
+    assert "define" not in kept
+    scene = jtracer.load(main, defines={"r": 3})
+    text = scene.text()
+    assert "define r = 3;\n" in text and "defs.jts" not in text
+    assert 'include "lamp.jts";\n' in text
+    again = jtracer.parse(text, path=main)
+    assert again.settings == scene.settings and again.cameras == scene.cameras
+    assert np.array_equal(again.render(), scene.render()) and again.text() == text
+
+
 def test_includes_are_read_from_the_paths_folder_and_diagnostics_name_their_file(tmp_path):
     (tmp_path / "parts").mkdir()
     (tmp_path / "parts" / "ball.jts").write_text("sphere { radius: 2; }\n")
@@ -194,7 +214,10 @@ def test_includes_are_read_from_the_paths_folder_and_diagnostics_name_their_file
     main.write_text(main_text)
     loaded = jtracer.load(main)
     parsed = jtracer.parse(main_text, path=main)
-    assert "radius: 2;" in loaded.text() and parsed.text() == loaded.text()
+    # The text keeps the include, and reads back from the same path.
+    text = loaded.text()
+    assert 'include "parts/ball.jts";' in text and "radius" not in text
+    assert parsed.text() == text and jtracer.parse(text, path=main).text() == text
     # Without a path the include is read from the working directory.
     with pytest.raises(jtracer.SceneError, match="parts/ball.jts"):
         jtracer.parse(main_text)

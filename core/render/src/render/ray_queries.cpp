@@ -249,6 +249,19 @@ bool hinted_blocks(const Geometry& g, const OccluderHint& hint, const Vec3& orig
     return false;
 }
 
+// Planes are few and unbounded, so they are tested before any list or BVH.
+bool plane_blocks(const Geometry& geometry, const Vec3& origin, const Vec3& direction, double t_min,
+                  double t_max, OccluderHint& blocker) {
+    for (std::uint32_t i = 0; i < geometry.planes.size(); ++i) {
+        const WorldPlane& p = geometry.planes[i];
+        if (intersect_plane(origin, direction, p.normal, p.distance, t_min, t_max) != no_hit) {
+            blocker = {OccluderHint::Set::plane, i};
+            return true;
+        }
+    }
+    return false;
+}
+
 }  // namespace
 
 void sphere_bounds(const RTCBoundsFunctionArguments* args) {
@@ -421,14 +434,7 @@ bool occluded_among(const Geometry& geometry, const ListedShapes& candidates, co
                     const Departure& from) {
     if (hint && hinted_blocks(geometry, *hint, origin, direction, t_min, t_max)) return true;
     OccluderHint blocker;
-    bool blocked = false;
-    for (std::uint32_t i = 0; i < geometry.planes.size() && !blocked; ++i) {
-        const WorldPlane& p = geometry.planes[i];
-        if (intersect_plane(origin, direction, p.normal, p.distance, t_min, t_max) != no_hit) {
-            blocker = {OccluderHint::Set::plane, i};
-            blocked = true;
-        }
-    }
+    bool blocked = plane_blocks(geometry, origin, direction, t_min, t_max, blocker);
     // A blocker lies nearer the origin than the ray's end.
     const double reach = t_max * glm::length(direction) * (1.0 + 1e-9);
     for (std::size_t k = 0; k < candidates.size() && !blocked && candidates.nearest[k] < reach;
@@ -455,14 +461,7 @@ bool occluded(const Geometry& geometry, const Vec3& origin, const Vec3& directio
     if (hint && !short_list && hinted_blocks(geometry, *hint, origin, direction, t_min, t_max))
         return true;
     OccluderHint blocker;
-    bool blocked = false;
-    for (std::uint32_t i = 0; i < geometry.planes.size() && !blocked; ++i) {
-        const WorldPlane& p = geometry.planes[i];
-        if (intersect_plane(origin, direction, p.normal, p.distance, t_min, t_max) != no_hit) {
-            blocker = {OccluderHint::Set::plane, i};
-            blocked = true;
-        }
-    }
+    bool blocked = plane_blocks(geometry, origin, direction, t_min, t_max, blocker);
     if (!blocked && candidates && (!geometry.bvh || candidates->size() <= max_cell_candidates)) {
         blocked =
             occluded_by_listed(geometry, *candidates, origin, direction, t_min, t_max, blocker);

@@ -1,6 +1,6 @@
 #pragma once
 // Scene + the text it was parsed from -> canonical .jts text that keeps the
-// text's names (docs/language.md §15.2, §15.3).
+// text's names and includes (docs/language.md §15.2, §15.3, §15.5).
 //
 // serialize_scene(scene) writes every value as a literal: right for a scene
 // made in code, but a scene read from a file that says `define r = 2;` and
@@ -9,10 +9,10 @@
 // or an expression wrote kept as written, so that the file keeps meaning what
 // it meant when one of its values changes.
 //
-//   ParseResult parsed = parse_scene(text);             // with the source map
+//   ParseResult parsed = parse_scene(text, options);    // with the source map
 //   Scene edited = parsed.scene; ...                      // any changes
 //   std::string out = serialize_scene(edited, {text, parsed});
-//   assert(parse_scene(out).scene == edited);
+//   assert(parse_scene(out, options).scene == edited);    // the same main_file
 
 #include "jtracer/parser.hpp"
 #include "jtracer/scene.hpp"
@@ -43,10 +43,19 @@ struct ParsedText {
 //   expression, written as the text wrote it while `scene` holds the value it
 //   had when parsed (`from.parsed.scene`, block by block in order); a value
 //   changed since is written as a literal, as is every other value.
-// What included files wrote is written in place of their `include`, from
-// each file's own text (the result has no include and stands alone); a file
-// name an included file wrote is written as the value the scene holds, since
-// it was relative to that file's folder.
+// An `include` of the text whose files gave blocks, defines and named
+// materials that `scene` still holds as read (each block equal to the one
+// parsed at its index), and that stand as one unbroken run of the layout
+// where the include may stand, is written as the text wrote it, once, in
+// place of all it gave: the result then reads back as `scene` only when
+// parsed with the same ParseOptions::main_file folder and the same files.
+// Any other include is written out in place, from each file's own text, as
+// a text without it would be; a file name such a file wrote is written as
+// the value the scene holds, since it was relative to that file's folder.
+// No included file is ever written: one that gave something that changed
+// may be shared, or read more than once, so the change goes into the
+// result instead. An include that gave the scene nothing (an empty file, or
+// blocks a later one replaced) is dropped.
 // A --define value stands in place of the text's own definition of that name
 // (before everything when the text has none), so that the result reads back
 // as `scene` with no --define; `clock` must be what it was.

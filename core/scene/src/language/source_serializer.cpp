@@ -3,6 +3,7 @@
 #include "jtracer/schema.hpp"
 #include "jtracer/serializer.hpp"
 #include "jtracer/source_files.hpp"
+#include "language/kept_includes.hpp"
 #include "language/scene_writer.hpp"
 
 #include <optional>
@@ -37,6 +38,23 @@ bool is_unset(const PropertySpec<Block>& property, const Block& block) {
         else
             return false;
     });
+}
+
+// An item of the layout as the include plan says: after the line of the
+// include that starts there, if one does, and not at all when an include
+// gives it.
+template <class Write>
+void place(Writer& w, const lang::Placement& placement, Write write) {
+    if (!placement.include.empty()) w.line("include " + std::string(placement.include) + ";");
+    if (!placement.covered) write();
+}
+
+// A part of the top level, followed by a blank line when it wrote anything.
+template <class Write>
+void section(Writer& w, Write write) {
+    const std::size_t before = w.text.size();
+    write();
+    if (w.text.size() != before) w.blank();
 }
 
 // The parse `scene` is written against: its text, source spans and the
@@ -91,7 +109,8 @@ class Original {
 
     void write_primitive(Writer& w, const Primitive& now, const Primitive* then,
                          const BlockSource* block) const;
-    void write_definitions(Writer& w, std::span<const Define> defines) const;
+    void write_definitions(Writer& w, std::span<const Define> defines,
+                           std::span<const lang::Placement> placements) const;
 
   private:
     // The records of a primitive's child blocks of one keyword, in file order.
@@ -195,7 +214,8 @@ void Original::write_primitive(Writer& w, const Primitive& now, const Primitive*
     w.close();
 }
 
-void Original::write_definitions(Writer& w, std::span<const Define> defines) const {
+void Original::write_definitions(Writer& w, std::span<const Define> defines,
+                                 std::span<const lang::Placement> placements) const {
     // The --define values in effect: a later one of a name wins.
     auto command_line = [&](std::string_view name) -> const Define* {
         for (auto it = defines.rbegin(); it != defines.rend(); ++it)
@@ -210,37 +230,35 @@ void Original::write_definitions(Writer& w, std::span<const Define> defines) con
     auto define = [&](std::string_view name, std::string_view value) {
         w.line("define " + std::string(name) + " = " + std::string(value) + ";");
     };
-    bool any = false;
     for (std::size_t i = 0; i < defines.size(); ++i) {
         const Define& d = defines[i];
         if (command_line(d.name) != &d || defined_in_text(d.name)) continue;
         define(d.name, d.value);
-        any = true;
     }
     for (std::uint32_t index = 0; index < source().definitions.size(); ++index) {
         const DefinitionSource& definition = source().definitions[index];
-        any = true;
-        if (!definition.material_properties) {
-            const Define* set = command_line(definition.name);
-            define(definition.name,
-                   set ? std::string_view(set->value) : written(definition.value_span));
-            continue;
-        }
-        const std::span<const PropertySource> records =
-            std::span(source().properties)
-                .subspan(definition.material_properties->first,
-                         definition.material_properties->count);
-        w.open(std::string(schema_of<Material>().keyword) + " " + definition.name);
-        for (const PropertySpec<Material>& property : schema_of<Material>().properties) {
-            const PropertySource* record = last_record(records, property.name);
-            if (!record) continue;
-            const std::optional<std::string> value =
-                keeps_text(*record) ? std::nullopt : inherited_value(property, index);
-            w.property(property.name, value ? *value : written(record->value_span));
-        }
-        w.close();
+        place(w, placements[index], [&] {
+            if (!definition.material_properties) {
+                const Define* set = command_line(definition.name);
+                define(definition.name,
+                       set ? std::string_view(set->value) : written(definition.value_span));
+                return;
+            }
+            const std::span<const PropertySource> records =
+                std::span(source().properties)
+                    .subspan(definition.material_properties->first,
+                             definition.material_properties->count);
+            w.open(std::string(schema_of<Material>().keyword) + " " + definition.name);
+            for (const PropertySpec<Material>& property : schema_of<Material>().properties) {
+                const PropertySource* record = last_record(records, property.name);
+                if (!record) continue;
+                const std::optional<std::string> value =
+                    keeps_text(*record) ? std::nullopt : inherited_value(property, index);
+                w.property(property.name, value ? *value : written(record->value_span));
+            }
+            w.close();
+        });
     }
-    if (any) w.blank();
 }
 
 // Whether the source is parallel to the scene parsed with it: not so when it
@@ -258,28 +276,48 @@ std::string serialize_scene(const Scene& scene, const ParsedText& from) {
     const Original original(from);
     const Scene& then = original.scene();
     const SceneSource& source = original.source();
+    const lang::IncludePlan plan = lang::plan_includes(scene, from.parsed, from.text, from.defines);
     auto at = [](const auto& items, std::size_t i) {
         return i < items.size() ? &items[i] : nullptr;
     };
+    // lang::write_blocks's layout, where a kept include stands in place of
+    // what it gives (kept_includes.hpp).
     Writer w;
     w.text = lang::kWrittenBy;
-    original.write_definitions(w, from.defines);
-    lang::write_blocks(
-        w, scene,
-        [&] {
+    section(w, [&] { original.write_definitions(w, from.defines, plan.definitions); });
+    section(w, [&] {
+        place(w, plan.settings, [&] {
             original.write_block(w, scene.settings, &then.settings,
                                  source.render_settings ? &*source.render_settings : nullptr);
-        },
-        [&](std::size_t i) {
-            original.write_block(w, scene.cameras[i], at(then.cameras, i), at(source.cameras, i));
-        },
-        [&](std::size_t i) {
-            original.write_primitive(w, scene.primitives[i], at(then.primitives, i),
-                                     at(source.primitives, i));
-        },
-        [&](std::size_t i) {
-            original.write_block(w, scene.lights[i], at(then.lights, i), at(source.lights, i));
         });
+    });
+    section(w, [&] {
+        place(w, plan.cameras_block, [&] {
+            w.open(kCamerasKeyword);
+            for (std::size_t i = 0; i < scene.cameras.size(); ++i)
+                place(w, plan.cameras[i], [&] {
+                    original.write_block(w, scene.cameras[i], at(then.cameras, i),
+                                         at(source.cameras, i));
+                });
+            w.close();
+        });
+    });
+    place(w, plan.scene_block, [&] {
+        w.open(kSceneKeyword);
+        for (std::size_t i = 0; i < scene.primitives.size(); ++i)
+            place(w, plan.primitives[i], [&] {
+                original.write_primitive(w, scene.primitives[i], at(then.primitives, i),
+                                         at(source.primitives, i));
+            });
+        for (std::size_t i = 0; i < scene.lights.size(); ++i)
+            place(w, plan.lights[i], [&] {
+                original.write_block(w, scene.lights[i], at(then.lights, i), at(source.lights, i));
+            });
+        w.close();
+    });
+    // An include that starts in an earlier part and gives the scene block as
+    // well leaves that part's blank line last: drop it.
+    if (w.text.ends_with("\n\n")) w.text.pop_back();
     return std::move(w.text);
 }
 
