@@ -1,7 +1,7 @@
 // The text editor as a user meets it (issue 27), through the OSMesa frame
 // code: keys as a keyboard sends them, through the window's KeyTaps (Ctrl+Z
 // past the start of the history, fast typing), and a file broken or deleted
-// on disk while it is open.
+// on disk while it is open, and the files a scene includes.
 
 #include "app/headless.hpp"
 #include "app/keys.hpp"
@@ -10,6 +10,7 @@
 #include "jtracer/diagnostics.hpp"
 #include "model/app_actions.hpp"
 #include "model/document_edits.hpp"
+#include "model/editor_files.hpp"
 #include "viewer/viewer_test_files.hpp"
 
 #include <gtest/gtest.h>
@@ -284,6 +285,83 @@ TEST_F(ViewerTextEditor, ADeletedFileSaysItWasDeletedAndKeepsTheText) {
     EXPECT_EQ(viewer.text_editor().buffer, original);
     EXPECT_TRUE(save_scene_anyway(state)) << state.message;
     EXPECT_EQ(read_file(file), original);
+}
+
+// Issue 30 item 5: an included file is opened from the button above the
+// text, typed in (Ctrl+Z undoes that typing only), kept while another file
+// is shown, and Ctrl+S writes it into its file.
+TEST(ViewerIncludedFileEditor, OpensTypesUndoesAndSavesAnIncludedFile) {
+    HeadlessViewer viewer{1200, 700};
+    ASSERT_TRUE(viewer.ok()) << viewer.error();
+    const fs::path dir = make_scratch_dir("included-file-editor");
+    const std::string main_text =
+        "render_settings { width: 32; height: 24; }\n"
+        "cameras { perspective_camera { aspect: 1.3333333333333333; } }\n"
+        "scene { point_light { position: <3, 5, 4>; } include \"parts/ball.jts\"; }\n";
+    const std::string ball_text = "sphere { center: <0, 0, -5>; radius: 1; }\n";
+    fs::create_directories(dir / "parts");
+    write_file(dir / "main.jts", main_text);
+    write_file(dir / "parts" / "ball.jts", ball_text);
+    AppState state{test_config()};
+    open_scene(state, dir / "main.jts");
+    ASSERT_TRUE(state.doc.loaded) << format_diagnostics(state.doc);
+    viewer.press_key(state, keys::letter('T'));
+    TextEditorState& ed = viewer.text_editor();
+    ASSERT_TRUE(ed.open);
+    EXPECT_EQ(ed.buffer, main_text);
+
+    ASSERT_TRUE(viewer.click(state, "parts/ball.jts")) << "a button for the included file";
+    viewer.frame(state);
+    EXPECT_FALSE(state.editor.shown.empty());
+    EXPECT_EQ(ed.buffer, ball_text);
+
+    ed.jump = 0;
+    viewer.frame(state);
+    viewer.frame(state);
+    std::vector<KeyEvent> events;
+    type(events, "# hi\n");
+    viewer.key_events(state, events, 40.0, 16.0);
+    const std::string typed = "# hi\n" + ball_text;
+    ASSERT_EQ(ed.buffer, typed);
+    ASSERT_NE(draft_of(state.editor, state.editor.shown), nullptr);
+    EXPECT_EQ(draft_of(state.editor, state.editor.shown)->text, typed);
+    EXPECT_EQ(document_text(state.doc), main_text) << "the scene file's text is not touched";
+
+    // Ctrl+Z undoes the typing in this file, and is no undo of the scene's.
+    for (int i = 0; i < 10 && ed.buffer != ball_text; ++i) {
+        events.clear();
+        shortcut(events, keys::letter('Z'));
+        viewer.key_events(state, events, 40.0, 16.0);
+    }
+    EXPECT_EQ(ed.buffer, ball_text);
+    EXPECT_FALSE(has_included_drafts(state.editor)) << "typed back: nothing to save";
+
+    events.clear();
+    type(events, "# hi\n");
+    viewer.key_events(state, events, 40.0, 16.0);
+    ASSERT_EQ(ed.buffer, typed);
+
+    // The scene file shown and back: the typing is still there.
+    ASSERT_TRUE(viewer.click(state, "main.jts"));
+    viewer.frame(state);
+    EXPECT_EQ(ed.buffer, main_text);
+    ASSERT_TRUE(viewer.click(state, "parts/ball.jts *")) << "marked as typed in";
+    viewer.frame(state);
+    EXPECT_EQ(ed.buffer, typed);
+
+    ed.jump = 0;
+    viewer.frame(state);
+    viewer.frame(state);
+    viewer.press_key(state, keys::letter('S'), true);
+    EXPECT_EQ(read_file(dir / "parts" / "ball.jts"), typed) << state.message;
+    EXPECT_EQ(read_file(dir / "main.jts"), main_text);
+    EXPECT_EQ(state.message, "Saved parts/ball.jts");
+    EXPECT_FALSE(has_unsaved_work(state));
+    viewer.frame(state);
+    viewer.frame(state);
+    EXPECT_EQ(ed.buffer, typed) << "the file as saved";
+    EXPECT_EQ(state.message, "Saved parts/ball.jts") << "its own write reloads nothing";
+    fs::remove_all(dir);
 }
 
 }  // namespace

@@ -2,9 +2,11 @@
 
 #include "app/keys.hpp"
 #include "app/panels/panels.hpp"
+#include "app/panels/widgets.hpp"
 #include "app/ui_items.hpp"
 #include "model/app_actions.hpp"
 #include "model/document_edits.hpp"
+#include "model/editor_files.hpp"
 #include "model/picking.hpp"
 #include "model/selection_commands.hpp"
 #include "model/text_cursor.hpp"
@@ -56,20 +58,38 @@ std::string_view line_text(const std::string& text, int line) {
         (end == std::string::npos ? text.size() : end) - static_cast<std::size_t>(start));
 }
 
-// Keeps the document's text in the buffer: recomputed only when the document changed.
-void follow_document(const AppState& state, TextEditorState& ed) {
-    const SceneDocument& doc = state.doc;
-    if (doc.revision == ed.shown_revision && doc.text == ed.shown_base &&
-        doc.draft == ed.shown_draft)
-        return;
-    ed.shown_base = doc.text;
-    ed.shown_draft = doc.draft;
-    ed.shown_revision = doc.revision;
-    std::string text = document_text(doc);
+void set_buffer(TextEditorState& ed, std::string text) {
     if (text == ed.shown) return;
     ed.shown = text;
     ed.buffer = std::move(text);
     ed.push = true;
+}
+
+// Keeps the shown file's text in the buffer: recomputed only when the
+// document, the file shown or its draft changed.
+void follow_document(const AppState& state, TextEditorState& ed) {
+    const SceneDocument& doc = state.doc;
+    const std::string& file = state.editor.shown;
+    if (!file.empty()) {
+        const IncludedDraft* draft = draft_of(state.editor, file);
+        if (ed.shown_file == file && doc.revision == ed.shown_revision &&
+            doc.file_generation == ed.shown_generation && (draft != nullptr) == ed.shown_file_draft)
+            return;
+        ed.shown_file = file;
+        ed.shown_revision = doc.revision;
+        ed.shown_generation = doc.file_generation;
+        ed.shown_file_draft = draft != nullptr;
+        set_buffer(ed, draft ? draft->text : included_text(doc, file));
+        return;
+    }
+    if (ed.shown_file.empty() && doc.revision == ed.shown_revision && doc.text == ed.shown_base &&
+        doc.draft == ed.shown_draft)
+        return;
+    ed.shown_file.clear();
+    ed.shown_base = doc.text;
+    ed.shown_draft = doc.draft;
+    ed.shown_revision = doc.revision;
+    set_buffer(ed, document_text(doc));
 }
 
 // The widget keeps its own undo history and, for Esc, the text it was
@@ -94,8 +114,10 @@ void forget_widget_history(ImGuiInputTextState& widget, std::string_view text) {
 
 int on_input(ImGuiInputTextCallbackData* data) {
     auto& ed = *static_cast<TextEditorState*>(data->UserData);
+    bool replaced = false;
     if (ed.push) {
         ed.push = false;
+        replaced = true;
         const std::string_view now(data->Buf, static_cast<std::size_t>(data->BufTextLen));
         if (now != ed.buffer) {
             const int cursor = cursor_after_replace(now, ed.buffer, data->CursorPos);
@@ -110,30 +132,72 @@ int on_input(ImGuiInputTextCallbackData* data) {
         ed.jump.reset();
     }
     ed.cursor = data->CursorPos;
-    if (ImGuiInputTextState* widget = ImGui::GetInputTextState(ImGui::GetActiveID()))
+    // An included file's typing is undone in the widget itself (the app's
+    // history is the scene's), each file in a widget of its own: its history
+    // goes only when the app replaces its text.
+    const bool own_history = !ed.shown_file.empty() && !replaced;
+    if (ImGuiInputTextState* widget = ImGui::GetInputTextState(ImGui::GetActiveID());
+        widget && !own_history)
         forget_widget_history(
             *widget, std::string_view(data->Buf, static_cast<std::size_t>(data->BufTextLen)));
     return 0;
 }
 
-// The diagnostics that point into the text shown.
+// The diagnostics that point into the scene file's text shown.
 bool diagnostics_apply(const AppState& state, const TextEditorState& ed) {
     return state.doc.diagnostics_source == ed.shown ||
            (!state.doc.draft && state.doc.diagnostics_source == state.doc.text);
 }
 
+// The reading of an included file a diagnostic is in, or null for the scene file's.
+const SourceFile* reading_of_diagnostic(const SceneDocument& doc, const Diagnostic& d) {
+    if (d.pos.file == 0 || d.pos.file > doc.diagnostics_files.size()) return nullptr;
+    return &doc.diagnostics_files[d.pos.file - 1];
+}
+
+// Whether `d` is listed under the text shown: in the scene file's view
+// every diagnostic (those in included files named by their file), in an
+// included file's the ones in the text shown.
+bool listed(const AppState& state, const TextEditorState& ed, const Diagnostic& d) {
+    if (ed.shown_file.empty()) return diagnostics_apply(state, ed);
+    const SourceFile* read = reading_of_diagnostic(state.doc, d);
+    return read && read->canonical == ed.shown_file && read->text == ed.shown;
+}
+
+// Whether `d` marks a line of the text shown.
+bool marked(const AppState& state, const TextEditorState& ed, const Diagnostic& d) {
+    if (ed.shown_file.empty()) return d.pos.file == 0 && diagnostics_apply(state, ed);
+    return listed(state, ed, d);
+}
+
 void error_list(AppState& state, TextEditorState& ed, float height) {
     ImGui::BeginChild("##errors", ImVec2(0, height), true);
     int shown = 0;
-    if (diagnostics_apply(state, ed)) {
+    const IncludedDraft* draft = draft_of(state.editor, ed.shown_file);
+    if (draft && !draft->problem.empty()) {
+        ++shown;
+        ImGui::PushStyleColor(ImGuiCol_Text, kErrorText);
+        ImGui::PushTextWrapPos(0.0f);
+        ImGui::TextUnformatted(("Not saved: " + draft->problem).c_str());
+        ImGui::PopTextWrapPos();
+        ImGui::PopStyleColor();
+    }
+    {
         for (const Diagnostic& d : state.doc.diagnostics) {
+            if (!listed(state, ed, d)) continue;
             ++shown;
             const bool error = d.severity == Severity::error;
-            char where[64];
-            if (d.pos.line > 0)
-                std::snprintf(where, sizeof where, "%d:%d: %s: ", d.pos.line, d.pos.column,
-                              error ? "error" : "warning");
-            else
+            // One in an included file, listed under the scene file's text, names its file.
+            const SourceFile* in =
+                ed.shown_file.empty() ? reading_of_diagnostic(state.doc, d) : nullptr;
+            char where[320];
+            if (d.pos.line > 0) {
+                const std::string_view file =
+                    in ? short_file_name(state.doc, in->name) : std::string_view();
+                std::snprintf(where, sizeof where,
+                              "%.*s%s%d:%d: %s: ", static_cast<int>(file.size()), file.data(),
+                              in ? ":" : "", d.pos.line, d.pos.column, error ? "error" : "warning");
+            } else
                 std::snprintf(where, sizeof where, "%s: ", error ? "error" : "warning");
             const std::string label = std::string(where) + d.message;
             // Wrapped, so that a long message is read whole; a click goes to its place.
@@ -148,6 +212,11 @@ void error_list(AppState& state, TextEditorState& ed, float height) {
                 if (d.pos.line > 0) ImGui::SetMouseCursor(ImGuiMouseCursor_Hand);
             }
             if (ImGui::IsItemClicked() && d.pos.line > 0) {
+                if (in) {
+                    // Opens the file it is in, at its place.
+                    show_file(state.editor, state.doc, in->canonical);
+                    follow_document(state, ed);
+                }
                 ed.jump = offset_of(ed.buffer, d.pos.line, d.pos.column);
                 ed.scroll_to = d.pos.line;
             }
@@ -162,7 +231,7 @@ void error_list(AppState& state, TextEditorState& ed, float height) {
 // says: a pick in the image scrolls to the block picked, and a click in a
 // block selects it. (With panel edits or a draft the offsets may differ.)
 void follow_selection(AppState& state, TextEditorState& ed, bool clicked) {
-    if (ed.buffer != state.doc.text) return;
+    if (!ed.shown_file.empty() || ed.buffer != state.doc.text) return;
     if (clicked) {
         const Selection at = selection_at_offset(state, static_cast<std::size_t>(ed.cursor));
         if (at.kind != Selection::Kind::none && at != state.view.selection) select(state.view, at);
@@ -171,12 +240,77 @@ void follow_selection(AppState& state, TextEditorState& ed, bool clicked) {
     }
 }
 
-void undo_keys(AppState& state) {
+// In an included file the widget undoes its own typing (on_input).
+void undo_keys(AppState& state, bool included) {
     const ImGuiIO& io = ImGui::GetIO();
     if (!io.KeyCtrl) return;
-    if (ImGui::IsKeyPressed(keys::letter('Z'), false)) io.KeyShift ? redo(state) : undo(state);
-    if (ImGui::IsKeyPressed(keys::letter('Y'), false)) redo(state);
+    if (!included && ImGui::IsKeyPressed(keys::letter('Z'), false))
+        io.KeyShift ? redo(state) : undo(state);
+    if (!included && ImGui::IsKeyPressed(keys::letter('Y'), false)) redo(state);
     if (ImGui::IsKeyPressed(keys::letter('S'), false)) save_scene(state);
+}
+
+// One button a file when the scene includes any: the scene file, then each
+// included file once (and one typed in that the scene no longer reads).
+void file_buttons(AppState& state, TextEditorState& ed, const std::string& main_name) {
+    const EditorFiles& files = state.editor;
+    const SceneDocument& doc = state.doc;
+    const std::span<const SourceFile> readings = latest_readings(doc);
+    if (readings.empty() && files.drafts.empty()) return;
+    // A file read a thousand times is listed once: found once per change, not every frame.
+    if (!ed.listed_once || ed.listed_revision != doc.revision ||
+        ed.listed_generation != doc.file_generation || ed.listed_failed != doc.load_failed) {
+        ed.listed_once = true;
+        ed.listed_revision = doc.revision;
+        ed.listed_generation = doc.file_generation;
+        ed.listed_failed = doc.load_failed;
+        ed.listed.clear();
+        for (std::size_t i = 0; i < readings.size(); ++i)
+            if (first_reading(readings, i)) ed.listed.push_back(i);
+    }
+    const auto file_button = [&](std::string_view name, const std::string& canonical, bool first) {
+        const bool shown = files.shown == canonical;
+        const bool typed = canonical.empty() ? has_unsaved_edits(state.doc)
+                                             : draft_of(files, canonical) != nullptr;
+        char label[320];
+        std::snprintf(label, sizeof label, "%.*s%s", static_cast<int>(name.size()), name.data(),
+                      typed ? " *" : "");
+        if (!first) same_line_if_fits(label);
+        if (shown)
+            ImGui::PushStyleColor(ImGuiCol_Button, ImGui::GetStyleColorVec4(ImGuiCol_ButtonActive));
+        const bool clicked = ImGui::SmallButton(label);
+        if (shown) ImGui::PopStyleColor();
+        note_item(label, false);
+        if (clicked && !shown) show_file(state.editor, state.doc, canonical);
+    };
+    static const std::string scene_file;
+    file_button(main_name, scene_file, true);
+    for (const std::size_t i : ed.listed)
+        if (i < readings.size())
+            file_button(short_file_name(doc, readings[i].name), readings[i].canonical, false);
+    for (const IncludedDraft& d : files.drafts)
+        if (reading_count(readings, d.canonical) == 0) file_button(d.name, d.canonical, false);
+}
+
+// The line under the file buttons for an included file: its name, how many
+// times it is read, and what Save does.
+void included_header(AppState& state, const std::string& canonical) {
+    const IncludedDraft* draft = draft_of(state.editor, canonical);
+    const SourceFile* read = reading_of(state.doc, canonical);
+    const std::string_view name = read    ? short_file_name(state.doc, read->name)
+                                  : draft ? std::string_view(draft->name)
+                                          : std::string_view();
+    ImGui::Text("%.*s%s", static_cast<int>(name.size()), name.data(), draft ? " *" : "");
+    ImGui::SameLine();
+    ImGui::TextDisabled("Ctrl+S saves it and reloads the scene; Ctrl+Z undoes typing here");
+    if (const int count = reading_count(latest_readings(state.doc), canonical); count > 1)
+        ImGui::TextColored(ImVec4(0.9f, 0.75f, 0.3f, 1.0f),
+                           "Included %d times: every object read from it changes", count);
+    if (!read)
+        ImGui::TextColored(ImVec4(1.0f, 0.7f, 0.3f, 1.0f),
+                           "The scene no longer reads this file: Save scene still writes it");
+    if (draft && button("Revert", "Drop what was typed in this file: show its text again"))
+        revert_included_draft(state.editor, canonical);
 }
 
 }  // namespace
@@ -199,7 +333,6 @@ void text_editor(AppState& state, TextEditorState& ed, float x0, float y0, float
                  ImGuiWindowFlags_NoMove | ImGuiWindowFlags_NoCollapse |
                      ImGuiWindowFlags_NoSavedSettings | ImGuiWindowFlags_NoResize);
     note_window("text editor");
-    follow_document(state, ed);
     const SceneDocument& doc = state.doc;
     const std::string name = doc.path.filename().string();
     if (!doc.loaded && doc.path.empty()) {
@@ -207,6 +340,13 @@ void text_editor(AppState& state, TextEditorState& ed, float x0, float y0, float
         ImGui::End();
         return;
     }
+    file_buttons(state, ed, name);
+    // A file no longer read and no longer typed in shows the scene file.
+    if (!state.editor.shown.empty() && !reading_of(doc, state.editor.shown) &&
+        !draft_of(state.editor, state.editor.shown))
+        state.editor.shown.clear();
+    follow_document(state, ed);
+    const bool included = !ed.shown_file.empty();
     if (ed.buffer.find('\0') != std::string::npos) {
         // The widget's text ends at the first NUL: editing would cut the rest.
         ImGui::TextWrapped(
@@ -225,19 +365,24 @@ void text_editor(AppState& state, TextEditorState& ed, float x0, float y0, float
         return;
     }
     const bool draft = doc.draft.has_value();
-    ImGui::Text("%s%s", name.c_str(), has_unsaved_edits(doc) ? " *" : "");
-    ImGui::SameLine();
-    if (state.check.checker.in_flight())
-        ImGui::TextDisabled("checking...");
-    else if (draft)
-        ImGui::TextColored(ImVec4(1.0f, 0.45f, 0.4f, 1.0f), "errors: showing the last good image");
-    else
-        ImGui::TextDisabled("Ctrl+Z undoes panel and text edits alike");
-    if (doc.file_deleted)
-        ImGui::TextColored(ImVec4(1.0f, 0.7f, 0.3f, 1.0f),
-                           "%s was deleted on disk: this is the viewer's copy; Save scene "
-                           "writes it again",
-                           name.c_str());
+    if (included) {
+        included_header(state, ed.shown_file);
+    } else {
+        ImGui::Text("%s%s", name.c_str(), has_unsaved_edits(doc) ? " *" : "");
+        ImGui::SameLine();
+        if (state.check.checker.in_flight())
+            ImGui::TextDisabled("checking...");
+        else if (draft)
+            ImGui::TextColored(ImVec4(1.0f, 0.45f, 0.4f, 1.0f),
+                               "errors: showing the last good image");
+        else
+            ImGui::TextDisabled("Ctrl+Z undoes panel and text edits alike");
+        if (doc.file_deleted)
+            ImGui::TextColored(ImVec4(1.0f, 0.7f, 0.3f, 1.0f),
+                               "%s was deleted on disk: this is the viewer's copy; Save scene "
+                               "writes it again",
+                               name.c_str());
+    }
 
     const float list_height = ImGui::GetTextLineHeightWithSpacing() * 5.0f + 8.0f;
     const float editor_height =
@@ -251,10 +396,13 @@ void text_editor(AppState& state, TextEditorState& ed, float x0, float y0, float
     const float gutter = ImGui::CalcTextSize(widest).x + ImGui::CalcTextSize("  ").x;
     ImGui::BeginChild("##scroll", ImVec2(0, editor_height), true,
                       ImGuiWindowFlags_HorizontalScrollbar);
+    // Each file in a widget of its own: ImGui keeps a widget's undo history
+    // while it is active, and one file's must never apply to another's text.
+    ImGui::PushID(ed.shown_file.c_str());
     const ImGuiID widget = ImGui::GetID("##source");
     const bool active = ImGui::GetActiveID() == widget;
-    if (active) undo_keys(state);
-    follow_document(state, ed);  // an undo just now shows at once
+    if (active) undo_keys(state, included);
+    follow_document(state, ed);  // an undo or a save just now shows at once
     const ImVec2 origin = ImGui::GetCursorScreenPos();
     const float pad_y = ImGui::GetStyle().FramePadding.y;
     const float pad_x = ImGui::GetStyle().FramePadding.x;
@@ -274,6 +422,7 @@ void text_editor(AppState& state, TextEditorState& ed, float x0, float y0, float
         "##source", &ed.buffer, size,
         ImGuiInputTextFlags_AllowTabInput | ImGuiInputTextFlags_CallbackAlways, on_input, &ed);
     ImGui::PopStyleColor();
+    ImGui::PopID();
     note_item("text", false);
     const bool clicked =
         ImGui::IsMouseClicked(ImGuiMouseButton_Left) &&
@@ -284,8 +433,14 @@ void text_editor(AppState& state, TextEditorState& ed, float x0, float y0, float
     ed.select_at_cursor = clicked && ImGui::GetActiveID() == widget;
     if (changed && ed.buffer != ed.shown) {
         ed.shown = ed.buffer;
-        type_text(state, ed.buffer);
-        ed.shown_draft = state.doc.draft;  // the document now holds what the buffer holds
+        if (included) {
+            type_included_text(state.editor, state.doc, ed.buffer);
+            // The draft now holds what the buffer holds.
+            ed.shown_file_draft = draft_of(state.editor, ed.shown_file) != nullptr;
+        } else {
+            type_text(state, ed.buffer);
+            ed.shown_draft = state.doc.draft;  // the document now holds what the buffer holds
+        }
     }
 
     // Line numbers, the cursor's line and the marked lines, over the visible part only.
@@ -312,9 +467,9 @@ void text_editor(AppState& state, TextEditorState& ed, float x0, float y0, float
         std::snprintf(number, sizeof number, "%*d", static_cast<int>(std::strlen(widest)), line);
         draw->AddText(ImVec2(left, line_y(line)), kLineNumber, number);
     }
-    if (diagnostics_apply(state, ed)) {
+    {
         for (const Diagnostic& d : doc.diagnostics) {
-            if (d.pos.line <= 0 || d.pos.line > lines) continue;
+            if (d.pos.line <= 0 || d.pos.line > lines || !marked(state, ed, d)) continue;
             const bool error = d.severity == Severity::error;
             const float y = line_y(d.pos.line);
             draw->AddRectFilled(ImVec2(left, y), ImVec2(right, y + line_h),

@@ -7,6 +7,11 @@
 // at once. Ctrl+Z / Ctrl+Shift+Z in it walk the viewer's one undo history.
 // An object or light picked in the image scrolls the text to its block, and
 // a click in a block selects its object or light.
+// Above the text, when the scene includes files, one button a file (the
+// scene file first, then each included file once): choosing one shows its
+// text (model/editor_files.hpp). What is typed in an included file is its
+// draft, kept when another file is shown, written by Save scene (Ctrl+S);
+// Ctrl+Z there undoes the typing in that file.
 
 #include "jtracer/scene.hpp"
 #include "model/app_state.hpp"
@@ -14,6 +19,7 @@
 #include <cstdint>
 #include <optional>
 #include <string>
+#include <vector>
 
 namespace jt::view {
 
@@ -25,6 +31,17 @@ struct TextEditorState {
     std::string shown_base;
     std::uint64_t shown_revision = 0;  // SceneDocument::revision
     std::optional<std::string> shown_draft;
+    // The included file the buffer holds (SourceFile::canonical; empty: the
+    // scene file), and what its text was made from.
+    std::string shown_file;
+    std::uint64_t shown_generation = 0;  // SceneDocument::file_generation
+    bool shown_file_draft = false;       // the file had a draft
+    // The file buttons: the indexes of the first readings of each included
+    // file (latest_readings), found again only when the document changed.
+    std::vector<std::size_t> listed;
+    std::uint64_t listed_revision = 0, listed_generation = 0;
+    bool listed_failed = false;
+    bool listed_once = false;
     bool push = false;              // the buffer changed under an active widget
     int cursor = 0;                 // byte offset of the cursor, while the widget is active
     std::optional<int> jump;        // put the cursor here (a click on an error)

@@ -185,7 +185,7 @@ std::string window_title(const AppState& state) {
     std::string title = "JTracer";
     if (!state.doc.path.empty()) {
         title += " - " + state.doc.path.filename().string();
-        if (has_unsaved_edits(state.doc)) title += " *";
+        if (has_unsaved_work(state)) title += " *";
     }
     if (const std::string status = render_title_status(state.render); !status.empty())
         title += " - " + status;

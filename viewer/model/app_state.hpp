@@ -8,6 +8,7 @@
 #include "jtracer/region.hpp"
 #include "jtracer/scene_info.hpp"
 #include "model/drag_geometry.hpp"
+#include "model/editor_files.hpp"
 #include "model/file_watcher.hpp"
 #include "model/free_camera.hpp"
 #include "model/image_layout.hpp"
@@ -316,6 +317,7 @@ struct AppState {
     // Before the loader and the renderer: their threads notify it until they end.
     Wakeup wakeup;
     SceneDocument doc;
+    EditorFiles editor;  // the files the text editor shows, and what is typed in included ones
     EditHistory history;
     CheckState check;
     FileState files;

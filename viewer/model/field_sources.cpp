@@ -3,6 +3,9 @@
 #include "jtracer/schema.hpp"
 #include "model/app_state.hpp"
 
+#include <algorithm>
+#include <cstdio>
+
 namespace jt::view {
 
 namespace {
@@ -117,6 +120,30 @@ FieldSource transform_field_source(const SceneDocument& doc, const BlockSource* 
             if (at++ == index) return written(&p);
     }
     return {};
+}
+
+SharedText shared_text(const SceneDocument& doc, const BlockSource* block) {
+    if (!block) return {};
+    const std::uint32_t file = block->keyword_span.pos.file;
+    if (file == 0 || file > doc.source.files.size()) return {};
+    const SourceFile& read = doc.source.files[file - 1];
+    int readings = 0;
+    for (const SourceFile& f : doc.source.files) readings += f.canonical == read.canonical;
+    return {short_file_name(doc, read.name), readings};
+}
+
+std::string_view shared_text_note(const SharedText& shared, std::span<char> out) {
+    if (shared.readings < 1 || out.empty()) return {};
+    const int name_size = static_cast<int>(shared.name.size());
+    const int n =
+        shared.readings == 1
+            ? std::snprintf(out.data(), out.size(), "in %.*s", name_size, shared.name.data())
+            : std::snprintf(out.data(), out.size(),
+                            "in %.*s (included %d times): an edit changes every object read "
+                            "from it",
+                            name_size, shared.name.data(), shared.readings);
+    if (n < 0) return {};
+    return {out.data(), std::min(static_cast<std::size_t>(n), out.size() - 1)};
 }
 
 std::string text_place(const SceneDocument& doc, const TextSpan& span) {

@@ -11,6 +11,7 @@
 #include "model/scene_document.hpp"
 
 #include <cstddef>
+#include <span>
 #include <string>
 #include <string_view>
 
@@ -48,6 +49,21 @@ const DefinitionSource* named_material(const SceneDocument& doc, const BlockSour
 // The `index`th operation of a primitive's transform blocks.
 FieldSource transform_field_source(const SceneDocument& doc, const BlockSource* primitive,
                                    std::size_t index);
+
+// The included file a block is written in (docs/language.md §15.6), and how
+// many times the scene reads it: each reading makes objects of its own, and
+// an edit of a value written there changes all of them. No allocation:
+// asked every frame.
+struct SharedText {
+    std::string_view name;  // the file's, short (short_file_name)
+    int readings = 0;       // 0 when the block is in the scene file
+};
+SharedText shared_text(const SceneDocument& doc, const BlockSource* block);
+
+// "in parts/ball.jts", or "in parts/ball.jts (included 3 times): an edit
+// changes every object read from it", written into `out` (cut to fit);
+// empty when the block is in the scene file.
+std::string_view shared_text_note(const SharedText& shared, std::span<char> out);
 
 // "FILE:LINE" of a place in the document's text: the one place that names the
 // file a span is in.

@@ -36,7 +36,12 @@ void finish_open(AppState& state, const std::filesystem::path& path, LoadAttempt
     const bool ok = attempt.ok;
     const bool first = !state.doc.loaded;
     const Scene before = state.doc.scene;
+    const std::filesystem::path was = state.doc.path;
     accept_load(state.doc, path, std::move(attempt));
+    // An open was asked before dropping text typed in included files (guard):
+    // none carries over, and another scene's file is not shown.
+    state.editor.drafts.clear();
+    if (state.doc.path != was) state.editor.shown.clear();
     if (ok || first) {
         state.files.watcher = FileWatcher(state.config.watch_interval);
         state.files.watcher.watch(path);
@@ -257,27 +262,77 @@ void resolve_reload(AppState& state, ReloadChoice choice) {
 
 namespace {
 
+// Reads the scene again now, after the viewer wrote a file it includes: the
+// image and the panels follow at once, and the status line says what was
+// written rather than "Reloaded".
+void reload_now(AppState& state) {
+    if (state.doc.loaded)
+        reload_scene(state);
+    else
+        request_open(state, state.doc.path);  // the first good load: as opening it
+    state.files.loader.wait();
+    take_finished_load(state);
+}
+
 bool save_now(AppState& state) {
-    if (const Expected<void> saved = save_scene_in_place(state.doc); !saved) {
-        state.message = "Scene not saved: " + saved.error().message;
+    SceneDocument& doc = state.doc;
+    const bool drafts = has_included_drafts(state.editor);
+    if (const Expected<void> checked = check_included_drafts(doc, state.editor); !checked) {
+        state.message = "Not saved: " + checked.error().message;
         return false;
     }
-    state.files.watcher.acknowledge();     // our own write is not an outside change
+    std::vector<std::string> written;
+    // With only included files typed in, the scene file is left as it is.
+    if (!drafts || has_unsaved_edits(doc)) {
+        Expected<std::vector<std::string>> saved = save_scene_in_place(doc);
+        if (!saved) {
+            state.message = "Scene not saved: " + saved.error().message;
+            return false;
+        }
+        state.files.watcher.acknowledge();  // our own write is not an outside change
+        written = std::move(*saved);
+    }
+    if (drafts) {
+        Expected<std::vector<std::string>> saved = write_included_drafts(state.editor);
+        if (!saved) {
+            state.message = "Not saved: " + saved.error().message +
+                            (written.empty() ? "" : " (" + listed_names(written) + " saved)");
+            return false;
+        }
+        for (std::string& name : *saved)
+            if (std::find(written.begin(), written.end(), name) == written.end())
+                written.push_back(std::move(name));
+    }
+    state.files.include_watcher.acknowledge();
     state.check.checked_revision.reset();  // the diagnostics now describe the new text
     state.files.save_conflict.clear();
     state.files.pending_reload.reset();
-    state.message = "Saved " + state.doc.path.string();
+    if (drafts) reload_now(state);
+    state.message = written.empty() ? "Nothing to save: the files hold this scene"
+                                    : "Saved " + listed_names(written);
     return true;
 }
 
 }  // namespace
 
+bool has_unsaved_work(const AppState& state) {
+    return has_unsaved_edits(state.doc) || has_included_drafts(state.editor);
+}
+
 bool save_scene(AppState& state) {
     std::string what;
-    if (state.doc.loaded && file_changed_on_disk(state.doc, what)) {
+    // The scene file is written unless only included files were typed in.
+    const bool writes_scene = !has_included_drafts(state.editor) || has_unsaved_edits(state.doc);
+    if (state.doc.loaded && writes_scene && file_changed_on_disk(state.doc, what)) {
         state.files.save_conflict = state.doc.path.filename().string() + " " + what +
                                     " since it was loaded; saving would replace that";
         state.message = "Scene not saved: " + state.files.save_conflict;
+        return false;
+    }
+    if (const std::string conflict = included_draft_conflict(state.doc, state.editor);
+        !conflict.empty()) {
+        state.files.save_conflict = conflict + "; saving would replace that";
+        state.message = "Not saved: " + state.files.save_conflict;
         return false;
     }
     return save_now(state);
@@ -315,18 +370,20 @@ bool save_scene_as(AppState& state, const std::filesystem::path& path, bool repl
         state.message = "Scene not saved: " + path.string() + " exists";
         return false;
     }
-    if (const Expected<void> saved = save_scene_copy(state.doc, path); !saved) {
+    const Expected<std::vector<std::string>> saved = save_scene_copy(state.doc, path);
+    if (!saved) {
         state.message = "Scene not saved: " + saved.error().message;
         return false;
     }
     state.files.watcher = FileWatcher(state.config.watch_interval);
     state.files.watcher.watch(path);
+    state.files.include_watcher.acknowledge();  // values edited in included files were written
     state.check.checked_revision.reset();
     state.files.save_conflict.clear();
     state.files.pending_reload.reset();
     state.files.recent.add(path);
     state.fields.open_path_input = path.string();
-    state.message = "Saved " + path.string();
+    state.message = "Saved " + (saved->empty() ? path.string() : listed_names(*saved));
     return true;
 }
 
@@ -340,7 +397,7 @@ void run_guarded(AppState& state, const GuardedCommand& command) {
 }
 
 void guard(AppState& state, GuardedCommand command) {
-    if (!has_unsaved_edits(state.doc)) {
+    if (!has_unsaved_work(state)) {
         run_guarded(state, command);
         return;
     }

@@ -38,10 +38,15 @@ enum class ReloadChoice {
 };
 void resolve_reload(AppState& state, ReloadChoice choice);
 
-// Saves the edits into the file, unless the file changed on disk since it was
-// loaded: then nothing is written and `save_conflict` says so.
+// Unsaved edits of the scene, or text typed in an included file (editor_files.hpp).
+bool has_unsaved_work(const AppState& state);
+
+// Saves the edits into the file, and the text typed in included files into
+// theirs (then reloads the scene), unless a file changed on disk since it was
+// loaded: then nothing is written and `save_conflict` says so. The status
+// line names the files written ("Saved /home/me/scene.jts and parts/ball.jts").
 bool save_scene(AppState& state);
-// Saves even though the file changed on disk, replacing what is there.
+// Saves even though a file changed on disk, replacing what is there.
 bool save_scene_anyway(AppState& state);
 // Writes the current image to `path`; never replaces a file (see
 // save_image_numbered in image_files.hpp): when `path` exists the first free

@@ -47,4 +47,8 @@ std::vector<std::filesystem::path> FileSetWatcher::poll(Clock::time_point now) {
     return changed;
 }
 
+void FileSetWatcher::acknowledge() {
+    for (auto& [file, seen] : seen_) seen = file_stamp(file);
+}
+
 }  // namespace jt::view

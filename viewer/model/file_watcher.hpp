@@ -49,6 +49,8 @@ class FileSetWatcher {
     // The watched files that changed since the last poll (or since they were
     // first watched), each once; empty before the interval has passed.
     std::vector<std::filesystem::path> poll(Clock::time_point now = Clock::now());
+    // Takes every watched file's current state as seen, e.g. after saving them ourselves.
+    void acknowledge();
     const std::vector<std::pair<std::filesystem::path, FileStamp>>& files() const { return seen_; }
 
   private:

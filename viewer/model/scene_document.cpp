@@ -66,6 +66,7 @@ ParseResult parse_document_text(const SceneDocument& doc, std::string_view text)
 }
 
 void accept_load(SceneDocument& doc, const std::filesystem::path& path, LoadAttempt attempt) {
+    ++doc.file_generation;
     doc.diagnostics = std::move(attempt.diagnostics);
     doc.diagnostics_path = path;
     doc.diagnostics_files = attempt.source.files;
@@ -182,6 +183,17 @@ Expected<void> replace_text(SceneDocument& doc, std::string text) {
     return {};
 }
 
+std::string_view short_file_name(const SceneDocument& doc, std::string_view name) {
+    // Diagnostics name an included file from the scene file's name as given
+    // (docs/language.md §15.6), which is where its folder is cut off.
+    const std::string_view main = doc.path.native();
+    const std::size_t slash = main.rfind('/');
+    if (slash == std::string_view::npos) return name;
+    const std::string_view folder = main.substr(0, slash + 1);
+    if (name.size() > folder.size() && name.starts_with(folder)) name.remove_prefix(folder.size());
+    return name;
+}
+
 std::string format_diagnostics(const SceneDocument& doc) {
     std::string out;
     const std::string name = doc.diagnostics_path.string();
@@ -233,11 +245,12 @@ Expected<Scene> reapply_edits(const SceneDocument& doc, const LoadAttempt& newer
     return std::move(parsed.scene);
 }
 
-Expected<void> save_scene_in_place(SceneDocument& doc) {
+Expected<std::vector<std::string>> save_scene_in_place(SceneDocument& doc) {
     return save_scene_copy(doc, doc.path);
 }
 
-Expected<void> save_scene_copy(SceneDocument& doc, const std::filesystem::path& path) {
+Expected<std::vector<std::string>> save_scene_copy(SceneDocument& doc,
+                                                   const std::filesystem::path& path) {
     if (!doc.loaded) return Error{"no scene is open"};
     if (doc.draft) return Error{"the text has errors (see Diagnostics): fix them before saving"};
     SourceEditResult edit = apply_scene_edits(doc.text, doc.source, doc.original, doc.scene);
@@ -253,10 +266,23 @@ Expected<void> save_scene_copy(SceneDocument& doc, const std::filesystem::path& 
         return Error{
             "internal error: the edited text would not read back as the edited scene; "
             "the file was left as it was"};
-    for (const EditedFile& edited : edit.files)
+    // The scene file is left alone when only values in included files
+    // changed and it holds its text already, so that the status line names
+    // only the files that changed.
+    const Expected<std::string> on_disk = path == doc.path && edit.text == doc.text
+                                              ? read_text_file(path)
+                                              : Expected<std::string>(Error{"not read"});
+    const bool write_main = !on_disk || *on_disk != edit.text;
+    std::vector<std::string> names;
+    if (write_main) names.push_back(path.string());
+    for (const EditedFile& edited : edit.files) {
         if (Expected<void> written = write_text_atomically(edited.path, edited.text); !written)
-            return written;
-    if (Expected<void> written = write_text_atomically(path, edit.text); !written) return written;
+            return Error{written.error().message};
+        names.emplace_back(short_file_name(doc, doc.source.files[edited.file - 1].name));
+    }
+    if (write_main)
+        if (Expected<void> written = write_text_atomically(path, edit.text); !written)
+            return Error{written.error().message};
     doc.path = path;
     doc.diagnostics_path = path;
     doc.text = std::move(edit.text);
@@ -271,7 +297,8 @@ Expected<void> save_scene_copy(SceneDocument& doc, const std::filesystem::path& 
     doc.diagnostics_source = doc.text;
     doc.diagnostics_files = doc.source.files;
     doc.load_failed = false;
-    return {};
+    ++doc.file_generation;
+    return names;
 }
 
 bool document_is_blank(const SceneDocument& doc) {

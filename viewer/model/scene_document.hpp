@@ -41,6 +41,9 @@ struct SceneDocument {
     // watched like the scene file, so that a change, or a missing file
     // appearing, reloads (docs/language.md §15.5).
     std::vector<std::filesystem::path> included_files;
+    // Counts the loads taken in (good or not) and the saves: either may
+    // change the texts read (the included files' too) without a new revision.
+    std::uint64_t file_generation = 0;
     bool load_failed = false;   // the latest load attempt had errors: `scene` is older
     bool file_unread = false;   // the latest load could not read the file at all
     bool file_deleted = false;  // ... because it is not there
@@ -137,6 +140,12 @@ void accept_load(SceneDocument& doc, const std::filesystem::path& path, LoadAtte
 // no unsaved edit, and, having errors, is never saved over the file.
 void accept_broken_file(SceneDocument& doc, LoadAttempt attempt);
 
+// An included file's name as diagnostics print it (SourceFile::name), short:
+// relative to the scene file's folder when it is inside it ("parts/ball.jts"
+// for "/home/me/scenes/parts/ball.jts" of "/home/me/scenes/main.jts").
+// A view into `name`: asked every frame, it allocates nothing.
+std::string_view short_file_name(const SceneDocument& doc, std::string_view name);
+
 // "file:line:col: error: message" lines, as the CLI prints them.
 std::string format_diagnostics(const SceneDocument& doc);
 
@@ -149,11 +158,16 @@ bool scene_edited(const SceneDocument& doc);
 bool document_is_blank(const SceneDocument& doc);
 
 // Writes the edits into the file in place (see source_edit.hpp), atomically,
-// then takes the new text as the document's base.
+// then takes the new text as the document's base. Values read from included
+// files are written into those. The files written come back for the status
+// line: the scene file's path (left out when it already holds its text, only
+// included values having changed), then the included files' names as
+// diagnostics name them, each once.
 // Does not look at what is on disk now: see file_changed_on_disk.
-Expected<void> save_scene_in_place(SceneDocument& doc);
+Expected<std::vector<std::string>> save_scene_in_place(SceneDocument& doc);
 // The same into another file, which becomes the document's file.
-Expected<void> save_scene_copy(SceneDocument& doc, const std::filesystem::path& path);
+Expected<std::vector<std::string>> save_scene_copy(SceneDocument& doc,
+                                                   const std::filesystem::path& path);
 
 // True when the file no longer holds the text the document was loaded from
 // (edited by someone else, broken, deleted), so that saving over it would

@@ -78,7 +78,7 @@ TEST_F(ViewerIncludes, SavingAnEditOfAnIncludedValueWritesThatFile) {
     open_scene(state, main);
     ASSERT_TRUE(state.doc.loaded) << format_diagnostics(state.doc);
     edit_scene(state, [](Scene& s) { std::get<Sphere>(s.primitives[0].shape).radius = 1.5; });
-    const Expected<void> saved = save_scene_in_place(state.doc);
+    const auto saved = save_scene_in_place(state.doc);
     ASSERT_TRUE(saved) << saved.error().message;
     EXPECT_EQ(read_file(main), kMain);
     EXPECT_EQ(read_file(ball), "# ball\nsphere { center: <0, 0, -5>; radius: 1.5; }  # one\n");

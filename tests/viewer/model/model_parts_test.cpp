@@ -72,6 +72,20 @@ TEST(FileWatcher, AcknowledgedChangesAreNotReported) {
     EXPECT_FALSE(watcher.poll());
 }
 
+TEST(FileSetWatcher, AcknowledgedChangesAreNotReportedButLaterOnesAre) {
+    const fs::path dir = make_scratch_dir("watch6");
+    write_file(dir / "a.jts", "abc");
+    write_file(dir / "b.jts", "abc");
+    FileSetWatcher watcher(std::chrono::milliseconds(0));
+    watcher.watch({dir / "a.jts", dir / "b.jts"});
+    write_file(dir / "a.jts", "abcd");
+    write_file(dir / "b.jts", "abcde");
+    watcher.acknowledge();  // the viewer wrote them itself
+    EXPECT_TRUE(watcher.poll().empty());
+    write_file(dir / "b.jts", "x");
+    EXPECT_EQ(watcher.poll(), std::vector<fs::path>{dir / "b.jts"});
+}
+
 TEST(FileWatcher, ChecksTheDiskAtMostOncePerInterval) {
     const fs::path file = make_scratch_dir("watch5") / "a.jts";
     write_file(file, "abc");

@@ -56,6 +56,7 @@ void scene_camera_editor(AppState& state, int selected) {
     const EditedBlock block{EditedBlock::Kind::camera, index};
     settle_block(state.history, state.doc, block);
     const BlockSource* source = block_source(state.doc, block);
+    shared_text_line(state.doc, source);
     if (edit_properties(camera, state.doc, [&](std::string_view name) {
             return field_source(state.doc, source, name);
         }))

@@ -43,6 +43,7 @@ void save_as_choice(AppState& state) {
 }
 
 const char* why_not_save(const AppState& state) {
+    if (has_included_drafts(state.editor)) return "";  // text typed in an included file
     if (!state.doc.loaded) return "No scene is open";
     if (!has_unsaved_edits(state.doc)) return "No unsaved edits: the file holds this scene";
     return "";

@@ -270,6 +270,7 @@ void objects_panel(AppState& state) {
     const EditedBlock block{EditedBlock::Kind::primitive, i};
     settle_block(state.history, state.doc, block);
     const BlockSource* source = block_source(state.doc, block);
+    shared_text_line(state.doc, source);
     if (shape_editor(p.shape, state.doc, source))
         note_block_edited(state.history, state.doc, block);
     if (const auto* mesh = std::get_if<Mesh>(&p.shape)) {

@@ -27,6 +27,22 @@ float field_speed(const ValueRange& range, std::string_view unit, double size) {
     return static_cast<float>(std::max(0.01, 0.01 * std::abs(size)));
 }
 
+void shared_text_line(const SceneDocument& doc, const BlockSource* block) {
+    const SharedText shared = shared_text(doc, block);
+    char buffer[256];
+    const std::string_view note = shared_text_note(shared, buffer);
+    if (note.empty()) return;
+    // Read once it is only where the value is; read more than once, a warning.
+    const bool many = shared.readings > 1;
+    ImGui::PushStyleColor(ImGuiCol_Text, many ? IM_COL32(230, 190, 80, 255)
+                                              : ImGui::GetColorU32(ImGuiCol_TextDisabled));
+    ImGui::PushTextWrapPos(0.0f);
+    ImGui::TextUnformatted(note.data(), note.data() + note.size());
+    ImGui::PopTextWrapPos();
+    ImGui::PopStyleColor();
+    note_item("included text", false);
+}
+
 FieldMark::FieldMark(const SceneDocument* doc, const FieldSource& source)
     : doc_(doc), source_(source), read_only_(doc && jt::view::read_only(source)) {
     if (!doc_) return;

@@ -53,6 +53,12 @@ UnsetNumber unset_number(std::string_view, const Block&) {
 template <class Block>
 bool edit_property_field(const PropertySpec<Block>& property, Block& block);
 
+// Under a block's header, when its text is in an included file: a line
+// naming the file and, when the scene includes it more than once, saying
+// that an edit changes every object read from it (field_sources.hpp:
+// shared_text). Recorded as "included text".
+void shared_text_line(const SceneDocument& doc, const BlockSource* block);
+
 // Marks a field by where its value comes from (field_sources.hpp), around
 // the widget: a name or an expression greys it out (it cannot change) and
 // shows the text it is computed from under it; an inherited value tints it.

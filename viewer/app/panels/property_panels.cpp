@@ -73,6 +73,7 @@ void lights_panel(AppState& state) {
             const EditedBlock block{EditedBlock::Kind::light, i};
             settle_block(state.history, state.doc, block);
             const BlockSource* source = block_source(state.doc, block);
+            shared_text_line(state.doc, source);
             if (edit_properties(lights[i], state.doc, [&](std::string_view name) {
                     return field_source(state.doc, source, name);
                 }))
