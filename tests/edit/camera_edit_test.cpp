@@ -16,7 +16,7 @@ TEST(CameraEdit, UniqueNames) {
     EXPECT_EQ(unique_camera_name(base.scene(), "top"), "top");
     EXPECT_EQ(unique_camera_name(base.scene(), "side"), "side 2");
     Scene more = base.scene();
-    more.cameras.push_back(Camera{.name = "side 2"});
+    more.cameras.push_back(Camera{.name = "side 2", .focus_distance = std::nullopt});
     EXPECT_EQ(unique_camera_name(more, "side"), "side 3");
     EXPECT_EQ(unique_camera_name(more, "side 2"), "side 3");
 }

@@ -25,7 +25,9 @@ Scene awkward_scene() {
                                {1e-300, -0.0, 987654321.00000012},
                                {0, 0, 1},
                                1.3333333333333333,
-                               33.3});
+                               33.3,
+                               0.0,
+                               std::nullopt});
     s.cameras.push_back(test::named_camera("Second"));
     s.primitives.push_back(
         Primitive{Sphere{{std::numeric_limits<double>::min(), 1e-17, -7.125}, 0.30000000000000004},

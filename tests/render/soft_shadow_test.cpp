@@ -209,8 +209,12 @@ scene {
         const bool near_edge =
             std::abs(p.z - inner) < pixel + 0.01 || std::abs(p.z - outer) < pixel + 0.01;
         SCOPED_TRACE(testing::Message() << "z " << p.z << " pixel " << pixel);
-        if (p.z > outer && !near_edge) EXPECT_EQ(s, l);
-        if (p.z < inner && !near_edge) EXPECT_EQ(s, k);
+        if (p.z > outer && !near_edge) {
+            EXPECT_EQ(s, l);
+        }
+        if (p.z < inner && !near_edge) {
+            EXPECT_EQ(s, k);
+        }
         if (p.z > inner && p.z < outer && !near_edge) {
             EXPECT_GT(s.r, k.r);
             EXPECT_LT(s.r, l.r);
