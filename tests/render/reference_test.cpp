@@ -56,8 +56,7 @@ TEST_P(SceneReference, MatchesItsReferenceImage) {
     loaded.parsed.scene.settings.width = reference_width;
     loaded.parsed.scene.settings.height = reference_height;
     std::vector<Diagnostic> diagnostics = check_scene(loaded);
-    ASSERT_FALSE(has_errors(diagnostics))
-        << format_diagnostics(diagnostics, loaded);
+    ASSERT_FALSE(has_errors(diagnostics)) << format_diagnostics(diagnostics, loaded);
 
     const Scene& scene = loaded.parsed.scene;
     Image8 actual = render_image(prepare_scene(scene).value(), render_options_for(scene));

@@ -245,14 +245,13 @@ inline constexpr std::array<PropertySpec<Triangle>, 6> kTriangle{{
 }};
 
 inline constexpr std::array<std::string_view, 2> kShadings{kSmoothShading, kFlatShading};
-inline constexpr std::array<std::string_view, 2> kMaterialSources{kSceneMaterials,
-                                                                  kFileMaterials};
+inline constexpr std::array<std::string_view, 2> kMaterialSources{kSceneMaterials, kFileMaterials};
 inline constexpr std::array<PropertySpec<Mesh>, 4> kMesh{{
     string("file", &Mesh::file, {.nonempty = true}),
     string("shading", &Mesh::shading, {.choices = kShadings}, true),
     // Extensions (docs/language.md §14.4, §14.5).
-    only_when_set(optional_number("smooth_angle", &Mesh::smooth_angle,
-                                  {.low = 0.0, .high = 180.0}, "degrees")),
+    only_when_set(optional_number("smooth_angle", &Mesh::smooth_angle, {.low = 0.0, .high = 180.0},
+                                  "degrees")),
     string("materials", &Mesh::materials, {.choices = kMaterialSources}, true),
 }};
 
