@@ -226,6 +226,44 @@ TEST_F(HostileModels, PlyClaimingTwoToTheFortyVerticesIsRefusedFromItsHeader) {
         "its header claims vertex 1099511627776, more than the file's 127 bytes can hold");
 }
 
+// Debian's assimp-testmodels invalid/OutOfMemory.off: 309 bytes whose header
+// claims 353535235358 vertices. Assimp 5.2 took the count modulo 2^32 (1.3
+// billion), allocated 16 GB for them and filled it: the CLI grew past 7 GB
+// in 20 s. An OFF header's counts must fit in the file, as a PLY's must,
+// however the keyword is spelt (COFF, nOFF, none).
+TEST_F(HostileModels, OffClaimingBillionsOfVerticesIsRefusedFromItsHeader) {
+    const std::string cube_rest =
+        "-0.5 -0.5 0.5\n0.5 -0.5 0.5\n-0.5 0.5 0.5\n0.5 0.5 0.5\n-0.5 0.5 -0.5\n0.5 0.5 -0.5\n"
+        "-0.5 -0.5 -0.5\n0.5 -0.5 -0.5\n4 0 1 3 2\n4 2 3 5 4\n4 4 5 7 6\n4 6 7 1 0\n"
+        "4 1 7 5 3\n4 6 0 2 4\n";
+    const auto bytes = [&](const std::string& header) {
+        return std::to_string(header.size() + cube_rest.size());
+    };
+    write_scene_naming("OutOfMemory.off", "OFF\n353535235358 6 0\n" + cube_rest);
+    expect_refused_everywhere("OutOfMemory.off",
+                              "its OFF header claims 353535235358 vertices, more than the file's " +
+                                  bytes("OFF\n353535235358 6 0\n") + " bytes can hold");
+    // Faces too, after a comment and a keyword with prefixes.
+    write_scene_naming("faces.off", "# made by hand\nCOFF 8 4000000000 0\n" + cube_rest);
+    expect_refused_everywhere(
+        "faces.off", "its OFF header claims 4000000000 faces, more than the file's " +
+                         bytes("# made by hand\nCOFF 8 4000000000 0\n") + " bytes can hold");
+    // Assimp reads a file that starts with OFF as one, whatever its extension.
+    write_scene_naming("shape.txt", "OFF\n4000000000 6 0\n" + cube_rest);
+    expect_refused_everywhere("shape.txt",
+                              "its OFF header claims 4000000000 vertices, more than the file's " +
+                                  bytes("OFF\n4000000000 6 0\n") + " bytes can hold");
+    // A .off file may leave the keyword out and start with the counts.
+    write_scene_naming("bare.off", "4000000000 6 0\n" + cube_rest);
+    expect_refused_everywhere("bare.off",
+                              "its OFF header claims 4000000000 vertices, more than the file's " +
+                                  bytes("4000000000 6 0\n") + " bytes can hold");
+    // The honest cube loads.
+    write_scene_naming("cube.off", "OFF\n8 6 0\n" + cube_rest);
+    const ProgramRun r = run({"scene/hostile.jts", "--check"});
+    EXPECT_EQ(r.code, 0) << r.err;
+}
+
 // Found by fuzz/model_fuzzer: Assimp reads a PLY header that never ends for ever.
 TEST_F(HostileModels, PlyHeaderThatNeverEndsIsRefusedInsteadOfReadForEver) {
     write_scene_naming("endless.ply",
