@@ -455,5 +455,54 @@ TEST_F(HostileModels, GltfBuffersOutsideTheScenesFolderAreRefused) {
     EXPECT_EQ(r.code, 0) << r.err;
 }
 
+// A mesh shrunk far past what Embree's single-precision instance transform
+// holds: Embree moves each ray that meets the mesh's box into the mesh's space
+// by the inverse of its float map, and Debian's build aborts (assertion
+// `ray.valid()`) when a component there passes 1.8e18. A quad scaled by 1e-20
+// with a light 3 units away (its shadow ray's direction grows to 1e20 there),
+// and a quad scaled by 1e-10 seen from 1e9 (the camera ray's origin grows to
+// 1e19), each aborted the CLI.
+class ShrunkMeshes : public CliSandbox {
+  protected:
+    // Pixel (x, y) of out.bmp counted from the bottom left (9x9, 24-bit,
+    // bottom-up rows of 28 bytes), as its 3 bytes.
+    std::string pixel(int x, int y) const {
+        const std::string bmp = read_file(dir / "out.bmp");
+        const std::size_t at = 54 + static_cast<std::size_t>(y) * 28 + x * 3;
+        return bmp.size() >= at + 3 ? bmp.substr(at, 3) : "(no image)";
+    }
+    ProgramRun render(const std::string& camera, const std::string& meshes) const {
+        write_file(dir / "quad.obj", "v -1 -1 0\nv 1 -1 0\nv 1 1 0\nv -1 1 0\nf 1 2 3 4\n");
+        write_file(dir / "shrunk.jts",
+                   "render_settings { width: 9; height: 9; ambient_light: <1, 1, 1>; }\n"
+                   "cameras { perspective_camera { position: " +
+                       camera + "; look_at: <0, 0, 0>; aspect: 1; } }\nscene {\n" + meshes + "}\n");
+        return run({"shrunk.jts", "-q", "-o", "out.bmp"});
+    }
+    static std::string quad(const std::string& transform) {
+        return "mesh { file: \"quad.obj\"; material { pigment: <1, 1, 1>; ambient: <1, 1, 1>; } "
+               "transform { " +
+               transform + " } }\n";
+    }
+    const std::string white = std::string(3, '\xff'), black = std::string(3, '\0');
+};
+
+TEST_F(ShrunkMeshes, AMeshShrunkBy1e20LitFromThreeUnitsAwayRenders) {
+    const ProgramRun r =
+        render("<0, 0, 5>", quad("scale: <1e-20, 1e-20, 1e-20>;") +
+                                "point_light { position: <0, 3, 0>; intensity: <1, 1, 1>; }\n");
+    EXPECT_EQ(r.signal, 0) << r.err;
+    ASSERT_EQ(r.code, 0) << r.err;
+    EXPECT_EQ(pixel(0, 0), black);
+}
+
+TEST_F(ShrunkMeshes, AMeshShrunkBy1e10SeenFromAfarIsMetByTheRayThroughIt) {
+    const ProgramRun r = render("<0, 0, 1e9>", quad("scale: <1e-10, 1e-10, 1e-10>;"));
+    EXPECT_EQ(r.signal, 0) << r.err;
+    ASSERT_EQ(r.code, 0) << r.err;
+    EXPECT_EQ(pixel(4, 4), white) << "the centre pixel's ray passes through the quad's centre";
+    EXPECT_EQ(pixel(0, 0), black);
+}
+
 }  // namespace
 }  // namespace jt::test
