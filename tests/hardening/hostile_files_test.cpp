@@ -504,5 +504,72 @@ TEST_F(ShrunkMeshes, AMeshShrunkBy1e10SeenFromAfarIsMetByTheRayThroughIt) {
     EXPECT_EQ(pixel(0, 0), black);
 }
 
+// Rays that start past Embree's float range: each number of a scene is within
+// 1e9, but a mirror scaled by 1e9 twice sends its reflections from 1e27 away,
+// and Debian's Embree aborts (assertion `ray.valid()`) on a ray whose origin
+// has a component past 1.8e18. The camera sits at the centre of the mirror
+// (or in front of it), so the centre pixel's ray comes straight back and meets
+// what stands behind the camera: it shows white, every other pixel black.
+class FarRays : public CliSandbox {
+  protected:
+    std::string pixel(int x, int y) const {
+        const std::string bmp = read_file(dir / "out.bmp");
+        const std::size_t at = 54 + static_cast<std::size_t>(y) * 28 + x * 3;
+        return bmp.size() >= at + 3 ? bmp.substr(at, 3) : "(no image)";
+    }
+    ProgramRun render(const std::string& items) const {
+        write_file(dir / "quad.obj", "v -1 -1 0\nv 1 -1 0\nv 1 1 0\nv -1 1 0\nf 1 2 3 4\n");
+        write_file(dir / "far.jts",
+                   "render_settings { width: 9; height: 9; ambient_light: <1, 1, 1>; "
+                   "recurse_depth: 2; }\n"
+                   "cameras { perspective_camera { position: <0, 0, 0>; look_at: <0, 0, -1>; "
+                   "aspect: 1; } }\nscene {\n" +
+                       items + "}\n");
+        return run({"far.jts", "-q", "-o", "out.bmp"});
+    }
+    static constexpr const char* mirror_sphere =
+        "sphere { radius: 1e9; material { pigment: <0, 0, 0>; reflection: 1; } "
+        "transform { scale: <1e9, 1e9, 1e9>; scale: <1e9, 1e9, 1e9>; } }\n";
+    static constexpr const char* white_quad_behind =
+        "mesh { file: \"quad.obj\"; material { pigment: <1, 1, 1>; ambient: <1, 1, 1>; } "
+        "transform { translate: <0, 0, 1>; } }\n";
+    const std::string white = std::string(3, '\xff'), black = std::string(3, '\0');
+};
+
+TEST_F(FarRays, AMeshSeenInAMirrorScaledPastFloatRangeRenders) {
+    const ProgramRun r = render(std::string(mirror_sphere) + white_quad_behind);
+    EXPECT_EQ(r.signal, 0) << r.err;
+    ASSERT_EQ(r.code, 0) << r.err;
+    EXPECT_EQ(pixel(4, 4), white) << "the reflection of the centre pixel's ray meets the quad";
+    EXPECT_EQ(pixel(0, 0), black);
+}
+
+TEST_F(FarRays, ShadowAndSoftShadowRaysFromPastFloatRangeRender) {
+    const ProgramRun r =
+        render(std::string(mirror_sphere) + white_quad_behind +
+               "point_light { position: <0, 0, 0.2>; intensity: <1, 1, 1>; }\n"
+               "point_light { position: <0, 0, 0.3>; radius: 0.01; intensity: <1, 1, 1>; }\n");
+    EXPECT_EQ(r.signal, 0) << r.err;
+    ASSERT_EQ(r.code, 0) << r.err;
+    EXPECT_EQ(pixel(4, 4), white);
+    EXPECT_EQ(pixel(0, 0), black);
+}
+
+TEST_F(FarRays, SpheresInTheirBvhSeenInAPlaneScaledPastFloatRangeRender) {
+    // Ten spheres: more than are tested without a BVH.
+    std::string items =
+        "plane { normal: <0, 0, 1>; distance: -1; material { pigment: <0, 0, 0>; "
+        "reflection: 1; } transform { scale: <1e9, 1e9, 1e9>; scale: <1e9, 1e9, 1e9>; "
+        "scale: <3, 3, 3>; } }\n";
+    for (int i = 0; i < 10; ++i)
+        items += "sphere { radius: 0.5; center: <" + std::to_string(2 * i) +
+                 ", 0, 1>; material { pigment: <1, 1, 1>; ambient: <1, 1, 1>; } }\n";
+    const ProgramRun r = render(items);
+    EXPECT_EQ(r.signal, 0) << r.err;
+    ASSERT_EQ(r.code, 0) << r.err;
+    EXPECT_EQ(pixel(4, 4), white) << "the reflection of the centre pixel's ray meets a sphere";
+    EXPECT_EQ(pixel(0, 0), black);
+}
+
 }  // namespace
 }  // namespace jt::test
