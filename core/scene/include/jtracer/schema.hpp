@@ -435,11 +435,17 @@ constexpr const TransformOpSpec& transform_op(TransformKind kind) {
     return schema_detail::kTransformOps[0];  // never: every kind has an entry
 }
 
+// Whether two names are the same. Names of a block share a few lengths
+// (pigment, ambient, diffuse): the first byte decides most before memcmp.
+constexpr bool same_name(std::string_view a, std::string_view b) {
+    return a.size() == b.size() && (a.empty() || (a[0] == b[0] && a == b));
+}
+
 // The property named `name` (or aliased so) in a block, or nullptr.
 template <class Block>
 constexpr const PropertySpec<Block>* find_property(std::string_view name) {
     for (const PropertySpec<Block>& p : schema_of<Block>().properties)
-        if (p.name == name || (!p.alias.empty() && p.alias == name)) return &p;
+        if (same_name(p.name, name) || (!p.alias.empty() && same_name(p.alias, name))) return &p;
     return nullptr;
 }
 
