@@ -436,9 +436,13 @@ constexpr const TransformOpSpec& transform_op(TransformKind kind) {
 }
 
 // Whether two names are the same. Names of a block share a few lengths
-// (pigment, ambient, diffuse): the first byte decides most before memcmp.
+// (pigment, ambient, diffuse): the length and the first byte decide most,
+// and the few bytes of a match are compared here, not by a call to memcmp.
 constexpr bool same_name(std::string_view a, std::string_view b) {
-    return a.size() == b.size() && (a.empty() || (a[0] == b[0] && a == b));
+    if (a.size() != b.size()) return false;
+    for (std::size_t i = 0; i < a.size(); ++i)
+        if (a[i] != b[i]) return false;
+    return true;
 }
 
 // The property named `name` (or aliased so) in a block, or nullptr.

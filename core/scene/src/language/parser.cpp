@@ -662,7 +662,8 @@ class Parser final : private TokenCursor {
                 parse_define();
             } else if (at(TokenKind::word) && cur_->text == kIncludeKeyword) {
                 parse_include([&] { parse_file(); });
-            } else if (at(TokenKind::word) && cur_->text == schema_of<Material>().keyword &&
+            } else if (at(TokenKind::word) &&
+                       same_name(cur_->text, schema_of<Material>().keyword) &&
                        next_->kind != TokenKind::lbrace) {
                 parse_named_material();
             } else if (at(TokenKind::word)) {
@@ -813,7 +814,7 @@ class Parser final : private TokenCursor {
             [&] {
                 BlockSource child;
                 bool opened;
-                if (cur_->text == schema_of<Material>().keyword &&
+                if (same_name(cur_->text, schema_of<Material>().keyword) &&
                     next_->kind == TokenKind::colon) {
                     const SourcePos at = cur_->pos;
                     if (const Symbol* found = read_material_reference()) {
@@ -832,17 +833,18 @@ class Parser final : private TokenCursor {
                     }
                     return;
                 }
-                if (cur_->text == schema_of<Material>().keyword && next_->kind == TokenKind::word) {
+                if (same_name(cur_->text, schema_of<Material>().keyword) &&
+                    next_->kind == TokenKind::word) {
                     sink_.error(cur_->pos,
                                 "a named material is defined at the top level; inside a "
                                 "primitive, write 'material: NAME;' to use one");
                     skip_block();
                     return;
                 }
-                if (cur_->text == schema_of<Material>().keyword) {
+                if (same_name(cur_->text, schema_of<Material>().keyword)) {
                     opened = parse_property_block(child, 1, primitive.material);
                     own_material |= material_mask(property_buffers_[1]);
-                } else if (cur_->text == kTransformKeyword) {
+                } else if (same_name(cur_->text, kTransformKeyword)) {
                     opened = parse_property_block(child, 1, primitive.transforms);
                 } else {
                     unknown_block("in '" + std::string(block.keyword) + "'", primitive_blocks());
