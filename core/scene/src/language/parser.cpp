@@ -93,7 +93,7 @@ IndexRange append_records(std::vector<T>& all, std::span<const T> items) {
 
 // The '{' and ':' of a text, counted in one pass eight bytes at a time: the
 // upper bounds below size the scene's arrays once, and two byte-by-byte counts
-// were a tenth of a dense parse.
+// were 8% of a dense parse.
 struct BraceAndColonCount {
     std::size_t braces = 0;
     std::size_t colons = 0;
