@@ -308,7 +308,8 @@ class Parser final : private TokenCursor {
             v.number = cur_->number;
             v.text = cur_->text;
             v.span = span_of(*cur_);
-            v.end = {cur_->pos.line, cur_->pos.column + static_cast<int>(cur_->length)};
+            v.end = {cur_->pos.line, cur_->pos.column + static_cast<int>(cur_->length),
+                     cur_->pos.file};
             advance();
             return v;
         }
@@ -320,7 +321,8 @@ class Parser final : private TokenCursor {
                 v.form = Value::Form::vector;
                 v.vector = vector;
                 v.span = {static_cast<std::uint32_t>(cur_->offset), length, cur_->pos};
-                v.end = {cur_->pos.line, cur_->pos.column + static_cast<int>(length)};
+                v.end = {cur_->pos.line, cur_->pos.column + static_cast<int>(length),
+                         cur_->pos.file};
                 reading_->skip_to(end);
                 reading_->next(*cur_);
                 reading_->next(*next_);
@@ -380,7 +382,7 @@ class Parser final : private TokenCursor {
             v.text = text_.substr(plain.offset, plain.length);
         }
         v.span = {static_cast<std::uint32_t>(plain.offset), length, pos};
-        v.end = {pos.line, pos.column + static_cast<int>(length)};
+        v.end = {pos.line, pos.column + static_cast<int>(length), pos.file};
         v.origin = ValueOrigin::literal;
         reading_->next(*cur_);
         reading_->next(*next_);
