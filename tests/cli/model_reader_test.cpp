@@ -46,9 +46,12 @@ class ModelReaderModule : public test::ScratchTest {
         fs::copy_file(JT_CLI, dir / "elsewhere/bin/jtracer-cli");
     }
 
-    // The copy, with `library_path` as LD_LIBRARY_PATH when given.
-    test::ProgramRun run_copy(const std::string& scene, const std::string& library_path = "") {
+    // The copy, with `library_path` as LD_LIBRARY_PATH and `fake_version` as
+    // JT_FAKE_VERSION (fake_model_reader.cpp) when given.
+    test::ProgramRun run_copy(const std::string& scene, const std::string& library_path = "",
+                              const std::string& fake_version = "") {
         std::string line = library_path.empty() ? "" : "LD_LIBRARY_PATH='" + library_path + "' ";
+        if (!fake_version.empty()) line += "JT_FAKE_VERSION='" + fake_version + "' ";
         return run_shell(line + "elsewhere/bin/jtracer-cli -q " + scene + " -o out.bmp");
     }
 
@@ -89,12 +92,21 @@ TEST_F(ModelReaderModule, ABrokenOneIsAnErrorAtTheMeshsFile) {
         ": " + (dir / "broken/libjtracer_model_reader.so").string() + ": invalid ELF header");
 }
 
-TEST_F(ModelReaderModule, OneFromAnotherBuildIsAnErrorAtTheMeshsFile) {
+TEST_F(ModelReaderModule, OneOfAnotherVersionIsAnErrorAtTheMeshsFile) {
     fs::create_directories(dir / "other");
     fs::copy_file(JT_FAKE_MODEL_READER, dir / "other/libjtracer_model_reader.so");
-    expect_error_at_file(run_copy("with.jts", (dir / "other").string()),
-                         "libjtracer_model_reader.so: it is from JTracer 0.0.0 (another build), "
-                         "this program from ");
+    expect_error_at_file(run_copy("with.jts", (dir / "other").string(), "0.0.1"),
+                         "libjtracer_model_reader.so: it is from JTracer 0.0.1, this program "
+                         "from " JT_VERSION_STRING "\n");
+}
+
+TEST_F(ModelReaderModule, OneOfTheSameVersionWithOtherTypesIsAnErrorAtTheMeshsFile) {
+    fs::create_directories(dir / "other");
+    fs::copy_file(JT_FAKE_MODEL_READER, dir / "other/libjtracer_model_reader.so");
+    expect_error_at_file(
+        run_copy("with.jts", (dir / "other").string()),
+        "libjtracer_model_reader.so: it is from another build of JTracer " JT_VERSION_STRING
+        " (its types differ from this program's)\n");
 }
 
 }  // namespace

@@ -397,7 +397,9 @@ Expected<Model> import_model(const std::filesystem::path& file, const std::files
 
 }  // namespace jt
 
+// The module's one entry point (io/model_reader.hpp).
 extern "C" JT_MODEL_READER_EXPORT const jt::ModelReader* jt_model_reader() {
-    static const jt::ModelReader reader{jt::version_string(), jt::import_model};
+    static constexpr jt::ModelReader reader{jt::project_version.data(), jt::model_reader_layout(),
+                                            jt::import_model};
     return &reader;
 }

@@ -5,7 +5,6 @@
 #include <dlfcn.h>
 #include <link.h>
 
-#include <cstring>
 #include <filesystem>
 #include <memory>
 #include <string>
@@ -55,11 +54,13 @@ Expected<const ModelReader*> open_model_reader() {
     auto entry = reinterpret_cast<ModelReaderEntry>(dlsym(module, kModelReaderEntry));
     if (!entry) return Error{failed + " " + path + ": " + dlerror()};
     const ModelReader* reader = entry();
-    // The version first: a module of another build may lay the rest out otherwise.
     if (!reader || !reader->version) return Error{failed + " " + path + ": it names no version"};
-    if (std::strcmp(reader->version, version_string()) != 0)
+    if (reader->version != project_version)
         return Error{failed + " " + path + ": it is from JTracer " + reader->version +
-                     ", this program from " + version_string()};
+                     ", this program from " + std::string(project_version)};
+    if (reader->layout != model_reader_layout())
+        return Error{failed + " " + path + ": it is from another build of JTracer " +
+                     reader->version + " (its types differ from this program's)"};
     if (!reader->read) return Error{failed + " " + path + ": it offers no reader"};
     return reader;
 }
