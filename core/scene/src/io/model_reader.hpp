@@ -59,9 +59,10 @@ constexpr std::uint64_t model_reader_layout() {
     return hash;
 }
 
-// The module's file name, found through the RUNPATH of the program or library
-// that opens it (jt_find_model_reader, core/CMakeLists.txt), and the one
-// function it exports.
+// The module's file name, looked for where the dynamic loader looks for the
+// libraries of the program or library that opens it: LD_LIBRARY_PATH, its
+// RUNPATH (jt_find_model_reader, core/CMakeLists.txt), the system's folders;
+// and the one function it exports.
 inline constexpr const char* kModelReaderFile = "libjtracer_model_reader.so";
 inline constexpr const char* kModelReaderEntry = "jt_model_reader";
 using ModelReaderEntry = const ModelReader* (*)();
