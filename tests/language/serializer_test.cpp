@@ -122,5 +122,18 @@ TEST(Serializer, EmptySceneReadsBackEqual) {
     EXPECT_TRUE(r.scene == Scene{});
 }
 
+// A `mesh { }` without its `file` parses (the validator reports it); writing
+// its empty default as `file: "";` made text that does not parse. Kept as
+// tests/hardening/regressions/parser/mesh-without-file.jts.
+TEST(Serializer, AMeshWithoutItsFileReadsBackEqual) {
+    ParseResult first = parse_scene("scene { mesh { } }");
+    ASSERT_TRUE(first.ok()) << test::brief(first.diagnostics);
+    const std::string text = serialize_scene(first.scene);
+    EXPECT_EQ(text.find("file:"), std::string::npos) << text;
+    ParseResult again = parse_scene(text);
+    EXPECT_TRUE(again.ok()) << test::brief(again.diagnostics) << "\n" << text;
+    EXPECT_TRUE(again.scene == first.scene) << text;
+}
+
 }  // namespace
 }  // namespace jt

@@ -319,6 +319,13 @@ bool has_unsaved_work(const AppState& state) {
     return has_unsaved_edits(state.doc) || has_included_drafts(state.editor);
 }
 
+std::vector<std::string> unsaved_file_names(const AppState& state) {
+    std::vector<std::string> names;
+    if (has_unsaved_edits(state.doc)) names.push_back(state.doc.path.filename().string());
+    for (const IncludedDraft& d : state.editor.drafts) names.push_back(d.name);
+    return names;
+}
+
 bool save_scene(AppState& state) {
     std::string what;
     // The scene file is written unless only included files were typed in.

@@ -97,6 +97,69 @@ std::string ply_header_problem(const std::filesystem::path& file, std::uintmax_t
            std::to_string(kMaxPlyHeaderLines) + " lines)";
 }
 
+// The words at the start of a text file as Assimp's OFF reader takes them:
+// separated by blanks and line ends, with lines that start with '#' skipped.
+class HeaderWords {
+  public:
+    explicit HeaderWords(const std::filesystem::path& file) : in_(file, std::ios::binary) {}
+    // The next word, or "" at the end of the file or past kMaxWord characters
+    // (no header of numbers and keywords has such words).
+    std::string next() {
+        int c = in_.get();
+        for (;;) {
+            while (c != EOF && std::isspace(c)) c = in_.get();
+            if (c != '#') break;
+            while (c != EOF && c != '\n') c = in_.get();
+        }
+        std::string word;
+        for (; c != EOF && !std::isspace(c) && c != '#'; c = in_.get()) {
+            if (word.size() == kMaxWord) return "";
+            word += static_cast<char>(c);
+        }
+        return word;
+    }
+
+  private:
+    static constexpr std::size_t kMaxWord = 64;
+    std::ifstream in_;
+};
+
+// What an OFF header must be before Assimp reads the file, or "" when it is
+// one (or the file is no OFF): its counts of vertices and faces must fit in
+// the file (each takes a line, a byte at least). Assimp 5.2 allocates and
+// fills its vertices from the count before reading a line, so a short file
+// claiming billions took all the memory. The keyword ([ST][C][N][4][n]OFF,
+// a dimension after it for nOFF) marks an OFF file whatever its extension,
+// and a .off file may leave it out and start with the counts.
+std::string off_header_problem(const std::filesystem::path& file, std::uintmax_t size) {
+    HeaderWords words(file);
+    std::string word = words.next();
+    std::string_view keyword = word;
+    bool dimension = false;
+    for (const std::string_view prefix : {"ST", "C", "N", "4", "n"})
+        if (keyword.substr(0, prefix.size()) == prefix) {
+            keyword.remove_prefix(prefix.size());
+            dimension = prefix == "n";
+        }
+    if (keyword == "OFF") {
+        if (dimension) words.next();
+        word = words.next();
+    } else if (lower_extension(file) != ".off") {
+        return "";
+    }
+    const std::string faces = words.next();
+    for (const auto& [count, what] : {std::pair{word, "vertices"}, std::pair{faces, "faces"}}) {
+        // Assimp reads a count's leading digits.
+        const std::string digits = count.substr(0, count.find_first_not_of("0123456789"));
+        if (digits.empty()) continue;
+        if (digits.size() > std::numeric_limits<std::uintmax_t>::digits10 ||
+            std::stoull(digits) > size)
+            return "its OFF header claims " + digits + " " + what + ", more than the file's " +
+                   std::to_string(size) + " bytes can hold";
+    }
+    return "";
+}
+
 // Where the files a model refers to may be: the scene's folder when the
 // model lies in it, else the model's own folder.
 std::filesystem::path reference_folder(const std::filesystem::path& file,
@@ -326,6 +389,8 @@ Expected<Model> import_model(const std::filesystem::path& file, const std::files
                                             " bytes; at most " +
                                             std::to_string(kMaxModelFileBytes) + ")")};
     if (std::string problem = ply_header_problem(file, size); !problem.empty())
+        return Error{file_message(file, problem)};
+    if (std::string problem = off_header_problem(file, size); !problem.empty())
         return Error{file_message(file, problem)};
     std::uint64_t declared_triangles = 0, gltf_materials = 0;
     if (const std::string ext = lower_extension(file); ext == ".gltf" || ext == ".glb") {

@@ -29,6 +29,12 @@ constexpr std::size_t fast_build_threshold = 500000;
 // walking a BVH: on the showcase (6 shapes) that halves the time a ray.
 constexpr std::size_t brute_force_limit = 8;
 
+// A scene handed over (prepare_scene(Scene&&)) still has its materials copied
+// while the copy stays this small (about 19,000 materials): a short list stays
+// in the caches, where reading each primitive's own material would walk the
+// whole scene. Past it, the materials are read where the scene holds them.
+constexpr std::size_t max_copied_materials = (std::size_t{4} << 20) / sizeof(Material);
+
 void add_sphere(Geometry& g, const Sphere& sphere, const ObjectTransform* transform,
                 std::uint32_t source) {
     if (!all_finite(sphere.center) || !(sphere.radius > 0.0) || !std::isfinite(sphere.radius))
@@ -263,10 +269,12 @@ Expected<void> load_textures(const Scene& scene, PreparedScene& prepared,
     return {};
 }
 
-}  // namespace
-
-Expected<std::shared_ptr<const PreparedScene>> prepare_scene(
-    const Scene& scene, std::shared_ptr<const PreparedScene> previous) {
+// The scene's materials are read in place only from a scene the prepared one
+// owns, only when no pattern needs `textures` and `pattern_space` (parallel to
+// a gathered list), and only when a copy would be large.
+Expected<std::shared_ptr<const PreparedScene>> prepare(
+    const Scene& scene, std::shared_ptr<const Scene> owned,
+    std::shared_ptr<const PreparedScene> previous) {
     // Checked here, before any work: build_geometry needs the device.
     if (!embree_device()) return Error{embree_device_failure()};
     auto prepared = std::make_shared<PreparedScene>();
@@ -286,18 +294,30 @@ Expected<std::shared_ptr<const PreparedScene>> prepare_scene(
     // Materials and geometry are independent; for a million primitives each is
     // worth a core.
     auto gather_materials = [&] {
-        prepared->materials.reserve(scene.primitives.size());
+        prepared->materials_gathered = scene.primitives.size();
+        const bool may_read_in_place =
+            owned && std::none_of(scene.primitives.begin(), scene.primitives.end(),
+                                  [](const Primitive& p) { return has_pattern(p.material); });
+        const std::size_t most = may_read_in_place ? max_copied_materials : scene.primitives.size();
+        prepared->materials.reserve(std::min(most, scene.primitives.size()));
         prepared->material_of.reserve(scene.primitives.size());
         for (const Primitive& p : scene.primitives) {
-            if (prepared->materials.empty() || !(prepared->materials.back() == p.material))
+            if (prepared->materials.empty() || !(prepared->materials.back() == p.material)) {
+                if (prepared->materials.size() == most) {
+                    prepared->materials = {};
+                    prepared->material_of = {};
+                    prepared->scene = std::move(owned);
+                    break;
+                }
                 prepared->materials.push_back(p.material);
+            }
             prepared->material_of.push_back(
                 static_cast<std::uint32_t>(prepared->materials.size() - 1));
         }
-        for (const Material& m : prepared->materials)
-            prepared->has_transmission = prepared->has_transmission || m.transmission > 0.0;
+        for (const Primitive& p : scene.primitives)
+            prepared->has_transmission =
+                prepared->has_transmission || p.material.transmission > 0.0;
         prepared->pattern_space = pattern_spaces(scene.primitives, prepared->materials);
-        prepared->materials_gathered = scene.primitives.size();
     };
     if (scene.primitives.size() > 10000)
         tbb::parallel_invoke(build, gather_materials);
@@ -317,6 +337,20 @@ Expected<std::shared_ptr<const PreparedScene>> prepare_scene(
     prepared->cameras = scene.cameras;
     prepared->settings = scene.settings;
     return std::shared_ptr<const PreparedScene>(std::move(prepared));
+}
+
+}  // namespace
+
+Expected<std::shared_ptr<const PreparedScene>> prepare_scene(
+    const Scene& scene, std::shared_ptr<const PreparedScene> previous) {
+    return prepare(scene, nullptr, std::move(previous));
+}
+
+Expected<std::shared_ptr<const PreparedScene>> prepare_scene(
+    Scene&& scene, std::shared_ptr<const PreparedScene> previous) {
+    auto owned = std::make_shared<const Scene>(std::move(scene));
+    const Scene& held = *owned;
+    return prepare(held, std::move(owned), std::move(previous));
 }
 
 }  // namespace jt

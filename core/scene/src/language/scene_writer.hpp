@@ -49,7 +49,7 @@ class Writer {
 // How one property of a block is written.
 struct PropertyText {
     enum class How : std::uint8_t {
-        canonical,   // its value as value_text, unless the schema omits it (is_written)
+        canonical,   // its value as value_text, unless writes_canonically says not
         literal,     // its value as value_text, always
         as_written,  // `text`, the value as a file wrote it
         omitted,     // not at all
@@ -58,13 +58,23 @@ struct PropertyText {
     std::string_view text;
 };
 
+// Whether the canonical layout writes the property: not when the schema omits
+// its default, nor when its default is a value its own range refuses. A
+// `mesh { }` without its `file` parses (the validator reports it) and holds
+// "", which written as `file: "";` would not read back.
+template <class Block>
+bool writes_canonically(const PropertySpec<Block>& property, const Block& block) {
+    if (!is_written(property, block)) return false;
+    return !(is_default(property, block) && value_problem(property, block));
+}
+
 // Whether `choose` writes anything of `block`.
 template <class Block, class Choose>
 bool writes_any(const Block& block, Choose choose) {
     for (const PropertySpec<Block>& property : schema_of<Block>().properties) {
         const PropertyText how = choose(property);
         if (how.how != PropertyText::How::omitted &&
-            (how.how != PropertyText::How::canonical || is_written(property, block)))
+            (how.how != PropertyText::How::canonical || writes_canonically(property, block)))
             return true;
     }
     return false;
@@ -77,7 +87,7 @@ void write_properties(Writer& w, const Block& block, Choose choose) {
         const PropertyText how = choose(property);
         switch (how.how) {
             case PropertyText::How::canonical:
-                if (is_written(property, block))
+                if (writes_canonically(property, block))
                     w.property(property.name, value_text(property, block));
                 break;
             case PropertyText::How::literal:
