@@ -22,8 +22,11 @@ Geometry::~Geometry() {
 namespace {
 
 // Past this many bounded primitives, a faster Morton build pays off more than a
-// better tree: the render of a huge scene is short next to its build.
-constexpr std::size_t fast_build_threshold = 500000;
+// better tree: the render of a large scene is short next to its build, and the
+// build is all of the wait for its first preview. Measured on spheres_100k
+// (docs/benchmarks.md §4.1): the Morton build takes a quarter of the CPU time of
+// the binned SAH build, and the whole render no more.
+constexpr std::size_t fast_build_threshold = 50000;
 
 // Up to this many bounded shapes, the ray queries test every one instead of
 // walking a BVH: on the showcase (6 shapes) that halves the time a ray.
@@ -91,11 +94,14 @@ void add_plane(Geometry& g, const Plane& plane, const ObjectTransform& transform
     g.planes.push_back({*world_normal, distance, source});
 }
 
+// Embree builds a user geometry's tree at the geometry's own quality: the
+// scene's quality alone still gets the SAH build.
 template <typename Intersect, typename Occluded, typename Bounds>
-unsigned attach_user_geometry(RTCScene bvh, Geometry& g, std::size_t count, Bounds bounds,
-                              Intersect intersect, Occluded occluded) {
+unsigned attach_user_geometry(RTCScene bvh, Geometry& g, std::size_t count, RTCBuildQuality quality,
+                              Bounds bounds, Intersect intersect, Occluded occluded) {
     RTCGeometry geometry = rtcNewGeometry(embree_device(), RTC_GEOMETRY_TYPE_USER);
     rtcSetGeometryUserPrimitiveCount(geometry, static_cast<unsigned>(count));
+    rtcSetGeometryBuildQuality(geometry, quality);
     rtcSetGeometryUserData(geometry, &g);
     rtcSetGeometryBoundsFunction(geometry, bounds, &g);
     rtcSetGeometryIntersectFunction(geometry, intersect);
@@ -178,15 +184,17 @@ Expected<std::shared_ptr<const Geometry>> build_geometry(const Scene& scene,
     }
 
     g->bvh = rtcNewScene(embree_device());
-    rtcSetSceneBuildQuality(
-        g->bvh, bounded > fast_build_threshold ? RTC_BUILD_QUALITY_LOW : RTC_BUILD_QUALITY_MEDIUM);
+    const RTCBuildQuality quality =
+        bounded > fast_build_threshold ? RTC_BUILD_QUALITY_LOW : RTC_BUILD_QUALITY_MEDIUM;
+    rtcSetSceneBuildQuality(g->bvh, quality);
     rtcSetSceneFlags(g->bvh, RTC_SCENE_FLAG_ROBUST);
     if (!g->spheres.empty())
-        g->sphere_geometry_id = attach_user_geometry(g->bvh, *g, g->spheres.size(), sphere_bounds,
-                                                     sphere_intersect, sphere_occluded);
+        g->sphere_geometry_id =
+            attach_user_geometry(g->bvh, *g, g->spheres.size(), quality, sphere_bounds,
+                                 sphere_intersect, sphere_occluded);
     if (!g->shapes.empty())
-        g->shape_geometry_id = attach_user_geometry(g->bvh, *g, g->shapes.size(), shape_bounds,
-                                                    shape_intersect, shape_occluded);
+        g->shape_geometry_id = attach_user_geometry(g->bvh, *g, g->shapes.size(), quality,
+                                                    shape_bounds, shape_intersect, shape_occluded);
     rtcCommitScene(g->bvh);
     return std::shared_ptr<const Geometry>(std::move(g));
 }
