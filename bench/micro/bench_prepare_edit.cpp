@@ -20,12 +20,14 @@ jt::Scene spheres(int count) {
     std::mt19937 rng(7);
     std::uniform_real_distribution<double> unit(0.0, 1.0);
     for (int i = 0; i < count; ++i) {
-        jt::Primitive p;
-        p.shape = jt::Sphere{{100 * unit(rng) - 50, 100 * unit(rng) - 50, 100 * unit(rng) - 50},
-                             0.2 + 0.3 * unit(rng)};
-        p.material.pigment = {unit(rng), unit(rng), unit(rng)};
-        p.material.diffuse = jt::Colour(0.8);
-        scene.primitives.push_back(p);
+        // Built whole: assigning a sphere to a default primitive's shape makes
+        // GCC 12 warn (-Wmaybe-uninitialized) about the variant's mesh string.
+        const jt::Sphere sphere{{100 * unit(rng) - 50, 100 * unit(rng) - 50, 100 * unit(rng) - 50},
+                                0.2 + 0.3 * unit(rng)};
+        jt::Material material;
+        material.pigment = {unit(rng), unit(rng), unit(rng)};
+        material.diffuse = jt::Colour(0.8);
+        scene.primitives.push_back(jt::Primitive{sphere, material, {}});
     }
     scene.lights.push_back({{100, 200, 150}, jt::Colour(0.9)});
     return scene;
