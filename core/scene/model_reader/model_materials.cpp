@@ -148,14 +148,16 @@ struct ObjFaces {
 ObjFaces scan_obj(std::string_view text) {
     ObjFaces scan;
     std::uint32_t current = kNoIndex;
-    std::set<std::string_view> objects;
+    // Owned copies: the line for_each_line hands over lives in a buffer it
+    // reuses for the next line.
+    std::set<std::string, std::less<>> objects;
     for_each_line(text, [&](std::string_view key, std::string_view rest) {
         if (key == "usemtl") {
             const auto known = std::find(scan.names.begin(), scan.names.end(), rest);
             current = static_cast<std::uint32_t>(known - scan.names.begin());
             if (known == scan.names.end()) scan.names.emplace_back(rest);
         } else if (key == "o") {
-            if (!objects.insert(rest).second) scan.reliable = false;
+            if (!objects.emplace(rest).second) scan.reliable = false;
         } else if (key == "f" || key == "l" || key == "p") {
             const auto n = static_cast<std::uint32_t>(words(rest).size());
             if (n == 0) return;
