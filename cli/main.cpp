@@ -19,6 +19,7 @@
 #include <exception>
 #include <iostream>
 #include <new>
+#include <utility>
 
 namespace {
 
@@ -32,7 +33,7 @@ ExpectOptions expect_options(const Options& o) {
 // `compared` is set once the render is compared with --expect's reference.
 int run(const Options& o, bool& compared) {
     const auto start = std::chrono::steady_clock::now();
-    const FrameSetup setup = set_up_frame("jtracer-cli", o, o.region);
+    FrameSetup setup = set_up_frame("jtracer-cli", o, o.region);
     std::cerr << setup.message;
     if (setup.exit_code != exit_ok) return setup.exit_code;
     if (o.check_only) {
@@ -46,7 +47,7 @@ int run(const Options& o, bool& compared) {
         return exit_io_error;
     }
     jt::Expected<std::shared_ptr<const jt::PreparedScene>> prepared =
-        jt::prepare_scene(setup.scene);
+        jt::prepare_scene(std::move(setup.scene));
     if (!prepared) {
         std::cerr << "jtracer-cli: " << prepared.error().message << "; nothing was written\n";
         return exit_io_error;

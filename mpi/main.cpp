@@ -33,6 +33,7 @@
 #include <optional>
 #include <string>
 #include <thread>
+#include <utility>
 #include <vector>
 
 namespace {
@@ -111,7 +112,7 @@ RankFrame set_up_rank(const Options& o, jt::frontend::SceneSequence* sequence, i
         mine.message = setup.message;
         if (setup.exit_code != exit_ok) return frame;
         const jt::Expected<std::shared_ptr<const jt::PreparedScene>> prepared =
-            jt::prepare_scene(setup.scene);
+            jt::prepare_scene(std::move(setup.scene));
         if (!prepared) {
             mine.exit_code = exit_io_error;
             mine.message = "jtracer-mpi: " + prepared.error().message + "; nothing was written\n";

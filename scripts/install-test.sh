@@ -3,7 +3,8 @@
 #  1. `cmake --install` to a temporary prefix, moved elsewhere afterwards: every
 #     file in place, nothing naming the source or build tree, the programs,
 #     man pages, completions, desktop entry, MIME type, CMake package and
-#     pkg-config file and Python module all working from the moved copy;
+#     pkg-config file and Python module all working from the moved copy, and
+#     the model reader module found by each of them;
 #  2. `cpack -G DEB`: jtracer_<version>_amd64.deb with its Depends, installed
 #     with dpkg, used (version, showcase render, man -w, import jtracer), and
 #     removed cleanly.
@@ -20,8 +21,10 @@ fail() {
     echo "install-test: FAIL: $*" >&2
     exit 1
 }
-# The reference image tests/render/reference_test.cpp renders at 160x90.
+# The reference images tests/render/reference_test.cpp renders at 160x90;
+# mesh.jts reads a model file, through the model reader module.
 reference=$source/tests/references/showcase.png
+mesh_reference=$source/tests/references/mesh.png
 
 # --- 1. cmake --install ---------------------------------------------------
 step "cmake --install to a temporary prefix"
@@ -31,7 +34,8 @@ mv "$work/staged" "$work/prefix"
 prefix=$work/prefix
 libdir=$(dirname "$(find "$prefix" -name libjtracer_scene.a)")
 for file in bin/jtracer-cli bin/jtracer-merge share/jtracer/scenes/showcase.jts \
-    share/jtracer/scenes/manual/sphere.jts share/man/man1/jtracer-cli.1.gz \
+    share/jtracer/scenes/manual/sphere.jts share/jtracer/scenes/mesh.jts \
+    share/man/man1/jtracer-cli.1.gz \
     share/man/man1/jtracer-merge.1.gz share/man/man5/jts.5.gz \
     share/bash-completion/completions/jtracer-cli share/mime/packages/jtracer.xml \
     include/jtracer/version.hpp include/jtracer/render_job.hpp; do
@@ -46,6 +50,8 @@ if [ -n "$python_dir" ]; then
 fi
 [ -f "$libdir/cmake/JTracer/JTracerConfig.cmake" ] || fail "no JTracerConfig.cmake"
 [ -f "$libdir/pkgconfig/jtracer.pc" ] || fail "no jtracer.pc"
+model_reader=${libdir#"$prefix"/}/jtracer/modules/libjtracer_model_reader.so
+[ -f "$prefix/$model_reader" ] || fail "cmake --install did not install $model_reader"
 with_viewer=0
 if [ -e "$prefix/bin/jtracer-view" ]; then
     with_viewer=1
@@ -66,6 +72,8 @@ step "the installed programs render the installed showcase"
 "$prefix/bin/jtracer-cli" --version
 "$prefix/bin/jtracer-cli" -q "$prefix/share/jtracer/scenes/showcase.jts" -o "$work/showcase.png" --width 160 --height 90 \
     --expect "$reference"
+"$prefix/bin/jtracer-cli" -q "$prefix/share/jtracer/scenes/mesh.jts" -o "$work/mesh.png" --width 160 --height 90 \
+    --expect "$mesh_reference"
 if [ "$with_viewer" = 1 ]; then
     # No scene given: the viewer opens the showcase beside its own bin/.
     (cd "$work" && "$prefix/bin/jtracer-view" --screenshot view.png --size 320x200 --timeout 120) \
@@ -74,11 +82,11 @@ if [ "$with_viewer" = 1 ]; then
     ! grep -qi 'error\|cannot' "$work/view.err" || fail "jtracer-view: $(cat "$work/view.err")"
 fi
 
-# The module renders the installed showcase to the installed jtracer-cli's BMP
+# The module renders an installed scene to the installed jtracer-cli's BMP
 # pixels (and the reference's), from the copy PYTHONPATH names. Debian's
 # python3: the module is built for it and uses its numpy.
-check_python_module() { # PYTHON_DIR SCENE CLI
-    /usr/bin/python3 - "$1" "$2" "$3" "$reference" "$work" <<'PYTHON'
+check_python_module() { # PYTHON_DIR SCENE CLI REFERENCE
+    /usr/bin/python3 - "$1" "$2" "$3" "$4" "$work" <<'PYTHON'
 import pathlib, subprocess, sys
 python_dir, scene_path, cli, reference, work = sys.argv[1:]
 import jtracer
@@ -92,13 +100,16 @@ difference = jtracer.diff(reference, image)
 assert difference.same_size and difference.pixels_over == 0, difference
 version = subprocess.run([cli, "--version"], capture_output=True, text=True, check=True).stdout
 assert version.split()[1] == jtracer.__version__, (version, jtracer.__version__)
-print(f"jtracer {jtracer.__version__} from {where}: the showcase matches jtracer-cli's pixels")
+print(f"jtracer {jtracer.__version__} from {where}: {pathlib.Path(scene_path).name} matches jtracer-cli's pixels")
 PYTHON
 }
 if [ -n "$python_dir" ]; then
-    step "the installed Python module renders the installed showcase"
-    PYTHONPATH=$prefix/$python_dir check_python_module "$prefix/$python_dir" \
-        "$prefix/share/jtracer/scenes/showcase.jts" "$prefix/bin/jtracer-cli"
+    step "the installed Python module renders the installed showcase and mesh scene"
+    for scene in showcase mesh; do
+        PYTHONPATH=$prefix/$python_dir check_python_module "$prefix/$python_dir" \
+            "$prefix/share/jtracer/scenes/$scene.jts" "$prefix/bin/jtracer-cli" \
+            "$source/tests/references/$scene.png"
+    done
 fi
 
 step "the CI script of docs/ci.md, with the installed jtracer-cli"
@@ -163,6 +174,7 @@ if [ -n "$python_dir" ]; then
 fi
 contents=$(dpkg-deb -c "$deb")
 if grep -q '/usr/local/' <<<"$contents"; then fail "the .deb installs under /usr/local"; fi
+grep -q " ./usr/$model_reader\$" <<<"$contents" || fail "the .deb lacks /usr/$model_reader"
 
 sudo_cmd=()
 [ "$(id -u)" -eq 0 ] || sudo_cmd=(sudo)
@@ -180,20 +192,27 @@ trap 'remove; rm -rf "$work"' EXIT
 /usr/bin/jtracer-cli --version
 /usr/bin/jtracer-cli -q /usr/share/jtracer/scenes/showcase.jts -o "$work/deb-showcase.png" --width 160 --height 90 \
     --expect "$reference"
+/usr/bin/jtracer-cli -q /usr/share/jtracer/scenes/mesh.jts -o "$work/deb-mesh.png" --width 160 --height 90 \
+    --expect "$mesh_reference"
 found=$(man -w jtracer-cli)
 [ "$found" = /usr/share/man/man1/jtracer-cli.1.gz ] || fail "man -w jtracer-cli: '$found'"
 if [ -n "$python_dir" ]; then
     step "python3 imports the .deb's module without PYTHONPATH"
-    (unset PYTHONPATH && cd "$work" && check_python_module "/usr/$python_dir" \
-        /usr/share/jtracer/scenes/showcase.jts /usr/bin/jtracer-cli)
+    for scene in showcase mesh; do
+        (unset PYTHONPATH && cd "$work" && check_python_module "/usr/$python_dir" \
+            "/usr/share/jtracer/scenes/$scene.jts" /usr/bin/jtracer-cli \
+            "$source/tests/references/$scene.png")
+    done
 fi
 step "dpkg -r jtracer"
 remove
 [ ! -e /usr/bin/jtracer-cli ] || fail "dpkg -r left /usr/bin/jtracer-cli"
 [ ! -e /usr/share/jtracer ] || fail "dpkg -r left /usr/share/jtracer"
+[ ! -e "/usr/$model_reader" ] || fail "dpkg -r left /usr/$model_reader"
 if [ -n "$python_dir" ] && compgen -G "/usr/$python_dir/jtracer*" >/dev/null; then
     fail "dpkg -r left the Python module in /usr/$python_dir"
 fi
 status=$(dpkg-query -W -f='${Status}' jtracer 2>/dev/null || true)
-if [[ $status == *"ok installed"* ]]; then fail "dpkg -r: jtracer is still installed"; fi
+# Nothing left for a purge either: no conffiles, no maintainer scripts.
+if [ -n "$status" ]; then fail "dpkg -r left jtracer in dpkg's records: $status"; fi
 echo "install-test: all passed in ${SECONDS}s"

@@ -50,6 +50,16 @@ void BM_PrepareEdit(benchmark::State& state) {
     prepare_after_edit(state, true);
 }
 
+// The open's case: nothing prepared before.
+void BM_PrepareFresh(benchmark::State& state) {
+    const jt::Scene scene = spheres(static_cast<int>(state.range(0)));
+    for (auto _ : state) {
+        auto prepared = jt::prepare_scene(scene);
+        benchmark::DoNotOptimize(prepared);
+    }
+}
+
+BENCHMARK(BM_PrepareFresh)->Arg(100000)->Unit(benchmark::kMillisecond);
 BENCHMARK(BM_PrepareAgain)->Arg(100000)->Unit(benchmark::kMillisecond);
 BENCHMARK(BM_PrepareEdit)->Arg(100000)->Unit(benchmark::kMillisecond);
 

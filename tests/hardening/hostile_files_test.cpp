@@ -226,6 +226,44 @@ TEST_F(HostileModels, PlyClaimingTwoToTheFortyVerticesIsRefusedFromItsHeader) {
         "its header claims vertex 1099511627776, more than the file's 127 bytes can hold");
 }
 
+// Debian's assimp-testmodels invalid/OutOfMemory.off: 309 bytes whose header
+// claims 353535235358 vertices. Assimp 5.2 took the count modulo 2^32 (1.3
+// billion), allocated 16 GB for them and filled it: the CLI grew past 7 GB
+// in 20 s. An OFF header's counts must fit in the file, as a PLY's must,
+// however the keyword is spelt (COFF, nOFF, none).
+TEST_F(HostileModels, OffClaimingBillionsOfVerticesIsRefusedFromItsHeader) {
+    const std::string cube_rest =
+        "-0.5 -0.5 0.5\n0.5 -0.5 0.5\n-0.5 0.5 0.5\n0.5 0.5 0.5\n-0.5 0.5 -0.5\n0.5 0.5 -0.5\n"
+        "-0.5 -0.5 -0.5\n0.5 -0.5 -0.5\n4 0 1 3 2\n4 2 3 5 4\n4 4 5 7 6\n4 6 7 1 0\n"
+        "4 1 7 5 3\n4 6 0 2 4\n";
+    const auto bytes = [&](const std::string& header) {
+        return std::to_string(header.size() + cube_rest.size());
+    };
+    write_scene_naming("OutOfMemory.off", "OFF\n353535235358 6 0\n" + cube_rest);
+    expect_refused_everywhere("OutOfMemory.off",
+                              "its OFF header claims 353535235358 vertices, more than the file's " +
+                                  bytes("OFF\n353535235358 6 0\n") + " bytes can hold");
+    // Faces too, after a comment and a keyword with prefixes.
+    write_scene_naming("faces.off", "# made by hand\nCOFF 8 4000000000 0\n" + cube_rest);
+    expect_refused_everywhere(
+        "faces.off", "its OFF header claims 4000000000 faces, more than the file's " +
+                         bytes("# made by hand\nCOFF 8 4000000000 0\n") + " bytes can hold");
+    // Assimp reads a file that starts with OFF as one, whatever its extension.
+    write_scene_naming("shape.txt", "OFF\n4000000000 6 0\n" + cube_rest);
+    expect_refused_everywhere("shape.txt",
+                              "its OFF header claims 4000000000 vertices, more than the file's " +
+                                  bytes("OFF\n4000000000 6 0\n") + " bytes can hold");
+    // A .off file may leave the keyword out and start with the counts.
+    write_scene_naming("bare.off", "4000000000 6 0\n" + cube_rest);
+    expect_refused_everywhere("bare.off",
+                              "its OFF header claims 4000000000 vertices, more than the file's " +
+                                  bytes("4000000000 6 0\n") + " bytes can hold");
+    // The honest cube loads.
+    write_scene_naming("cube.off", "OFF\n8 6 0\n" + cube_rest);
+    const ProgramRun r = run({"scene/hostile.jts", "--check"});
+    EXPECT_EQ(r.code, 0) << r.err;
+}
+
 // Found by fuzz/model_fuzzer: Assimp reads a PLY header that never ends for ever.
 TEST_F(HostileModels, PlyHeaderThatNeverEndsIsRefusedInsteadOfReadForEver) {
     write_scene_naming("endless.ply",
@@ -415,6 +453,122 @@ TEST_F(HostileModels, GltfBuffersOutsideTheScenesFolderAreRefused) {
     write_scene_naming("hostile.gltf", gltf_with_buffer("inside.bin"));
     const ProgramRun r = run({"scene/hostile.jts", "--check"});
     EXPECT_EQ(r.code, 0) << r.err;
+}
+
+// A mesh shrunk far past what Embree's single-precision instance transform
+// holds: Embree moves each ray that meets the mesh's box into the mesh's space
+// by the inverse of its float map, and Debian's build aborts (assertion
+// `ray.valid()`) when a component there passes 1.8e18. A quad scaled by 1e-20
+// with a light 3 units away (its shadow ray's direction grows to 1e20 there),
+// and a quad scaled by 1e-10 seen from 1e9 (the camera ray's origin grows to
+// 1e19), each aborted the CLI.
+class ShrunkMeshes : public CliSandbox {
+  protected:
+    // Pixel (x, y) of out.bmp counted from the bottom left (9x9, 24-bit,
+    // bottom-up rows of 28 bytes), as its 3 bytes.
+    std::string pixel(int x, int y) const {
+        const std::string bmp = read_file(dir / "out.bmp");
+        const std::size_t at = 54 + static_cast<std::size_t>(y) * 28 + x * 3;
+        return bmp.size() >= at + 3 ? bmp.substr(at, 3) : "(no image)";
+    }
+    ProgramRun render(const std::string& camera, const std::string& meshes) const {
+        write_file(dir / "quad.obj", "v -1 -1 0\nv 1 -1 0\nv 1 1 0\nv -1 1 0\nf 1 2 3 4\n");
+        write_file(dir / "shrunk.jts",
+                   "render_settings { width: 9; height: 9; ambient_light: <1, 1, 1>; }\n"
+                   "cameras { perspective_camera { position: " +
+                       camera + "; look_at: <0, 0, 0>; aspect: 1; } }\nscene {\n" + meshes + "}\n");
+        return run({"shrunk.jts", "-q", "-o", "out.bmp"});
+    }
+    static std::string quad(const std::string& transform) {
+        return "mesh { file: \"quad.obj\"; material { pigment: <1, 1, 1>; ambient: <1, 1, 1>; } "
+               "transform { " +
+               transform + " } }\n";
+    }
+    const std::string white = std::string(3, '\xff'), black = std::string(3, '\0');
+};
+
+TEST_F(ShrunkMeshes, AMeshShrunkBy1e20LitFromThreeUnitsAwayRenders) {
+    const ProgramRun r =
+        render("<0, 0, 5>", quad("scale: <1e-20, 1e-20, 1e-20>;") +
+                                "point_light { position: <0, 3, 0>; intensity: <1, 1, 1>; }\n");
+    EXPECT_EQ(r.signal, 0) << r.err;
+    ASSERT_EQ(r.code, 0) << r.err;
+    EXPECT_EQ(pixel(0, 0), black);
+}
+
+TEST_F(ShrunkMeshes, AMeshShrunkBy1e10SeenFromAfarIsMetByTheRayThroughIt) {
+    const ProgramRun r = render("<0, 0, 1e9>", quad("scale: <1e-10, 1e-10, 1e-10>;"));
+    EXPECT_EQ(r.signal, 0) << r.err;
+    ASSERT_EQ(r.code, 0) << r.err;
+    EXPECT_EQ(pixel(4, 4), white) << "the centre pixel's ray passes through the quad's centre";
+    EXPECT_EQ(pixel(0, 0), black);
+}
+
+// Rays that start past Embree's float range: each number of a scene is within
+// 1e9, but a mirror scaled by 1e9 twice sends its reflections from 1e27 away,
+// and Debian's Embree aborts (assertion `ray.valid()`) on a ray whose origin
+// has a component past 1.8e18. The camera sits at the centre of the mirror
+// (or in front of it), so the centre pixel's ray comes straight back and meets
+// what stands behind the camera: it shows white, every other pixel black.
+class FarRays : public CliSandbox {
+  protected:
+    std::string pixel(int x, int y) const {
+        const std::string bmp = read_file(dir / "out.bmp");
+        const std::size_t at = 54 + static_cast<std::size_t>(y) * 28 + x * 3;
+        return bmp.size() >= at + 3 ? bmp.substr(at, 3) : "(no image)";
+    }
+    ProgramRun render(const std::string& items) const {
+        write_file(dir / "quad.obj", "v -1 -1 0\nv 1 -1 0\nv 1 1 0\nv -1 1 0\nf 1 2 3 4\n");
+        write_file(dir / "far.jts",
+                   "render_settings { width: 9; height: 9; ambient_light: <1, 1, 1>; "
+                   "recurse_depth: 2; }\n"
+                   "cameras { perspective_camera { position: <0, 0, 0>; look_at: <0, 0, -1>; "
+                   "aspect: 1; } }\nscene {\n" +
+                       items + "}\n");
+        return run({"far.jts", "-q", "-o", "out.bmp"});
+    }
+    static constexpr const char* mirror_sphere =
+        "sphere { radius: 1e9; material { pigment: <0, 0, 0>; reflection: 1; } "
+        "transform { scale: <1e9, 1e9, 1e9>; scale: <1e9, 1e9, 1e9>; } }\n";
+    static constexpr const char* white_quad_behind =
+        "mesh { file: \"quad.obj\"; material { pigment: <1, 1, 1>; ambient: <1, 1, 1>; } "
+        "transform { translate: <0, 0, 1>; } }\n";
+    const std::string white = std::string(3, '\xff'), black = std::string(3, '\0');
+};
+
+TEST_F(FarRays, AMeshSeenInAMirrorScaledPastFloatRangeRenders) {
+    const ProgramRun r = render(std::string(mirror_sphere) + white_quad_behind);
+    EXPECT_EQ(r.signal, 0) << r.err;
+    ASSERT_EQ(r.code, 0) << r.err;
+    EXPECT_EQ(pixel(4, 4), white) << "the reflection of the centre pixel's ray meets the quad";
+    EXPECT_EQ(pixel(0, 0), black);
+}
+
+TEST_F(FarRays, ShadowAndSoftShadowRaysFromPastFloatRangeRender) {
+    const ProgramRun r =
+        render(std::string(mirror_sphere) + white_quad_behind +
+               "point_light { position: <0, 0, 0.2>; intensity: <1, 1, 1>; }\n"
+               "point_light { position: <0, 0, 0.3>; radius: 0.01; intensity: <1, 1, 1>; }\n");
+    EXPECT_EQ(r.signal, 0) << r.err;
+    ASSERT_EQ(r.code, 0) << r.err;
+    EXPECT_EQ(pixel(4, 4), white);
+    EXPECT_EQ(pixel(0, 0), black);
+}
+
+TEST_F(FarRays, SpheresInTheirBvhSeenInAPlaneScaledPastFloatRangeRender) {
+    // Ten spheres: more than are tested without a BVH.
+    std::string items =
+        "plane { normal: <0, 0, 1>; distance: -1; material { pigment: <0, 0, 0>; "
+        "reflection: 1; } transform { scale: <1e9, 1e9, 1e9>; scale: <1e9, 1e9, 1e9>; "
+        "scale: <3, 3, 3>; } }\n";
+    for (int i = 0; i < 10; ++i)
+        items += "sphere { radius: 0.5; center: <" + std::to_string(2 * i) +
+                 ", 0, 1>; material { pigment: <1, 1, 1>; ambient: <1, 1, 1>; } }\n";
+    const ProgramRun r = render(items);
+    EXPECT_EQ(r.signal, 0) << r.err;
+    ASSERT_EQ(r.code, 0) << r.err;
+    EXPECT_EQ(pixel(4, 4), white) << "the reflection of the centre pixel's ray meets a sphere";
+    EXPECT_EQ(pixel(0, 0), black);
 }
 
 }  // namespace

@@ -263,6 +263,24 @@ TEST_F(Include, DiagnosticsNameTheFileAndEveryIncludeOnTheWay) {
               "note: included from ./main.jts:2:11\n");
 }
 
+// "expected ';'" points just past the value, in the file that holds it,
+// whichever way the value was read: a lone number, a plain vector, an
+// expression, a define's value.
+TEST_F(Include, AMissingSemicolonIsReportedInTheIncludedFile) {
+    write("parts/objects.jts",
+          "sphere { radius: 1 }\n"
+          "sphere { center: <1, 2, 3> }\n"
+          "sphere { radius: 2 * 3 }\n");
+    write("parts/names.jts", "define r = 1 + 2\n");
+    ParseResult r =
+        parse("include \"parts/names.jts\";\nscene {\n  include \"parts/objects.jts\";\n}\n");
+    EXPECT_EQ(located(r),
+              "parts/names.jts:1:17: error: expected ';' after the value of 'define r'\n"
+              "parts/objects.jts:1:19: error: expected ';' after the value of 'radius'\n"
+              "parts/objects.jts:2:27: error: expected ';' after the value of 'center'\n"
+              "parts/objects.jts:3:23: error: expected ';' after the value of 'radius'");
+}
+
 TEST_F(Include, NotesDoNotCountTowardTheErrorLimit) {
     std::string bad;
     for (int i = 0; i < 30; ++i) bad += "x;\n";

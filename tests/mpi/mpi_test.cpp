@@ -19,6 +19,7 @@ using test::ProgramRun;
 const std::string cli = "'" JT_CLI "' ";
 const std::string showcase = "'" JT_SOURCE_DIR "/scenes/showcase.jts' ";
 const std::string manual = "'" JT_SOURCE_DIR "/scenes/manual/cylinder.jts' ";
+const std::string mesh = "'" JT_SOURCE_DIR "/scenes/mesh.jts' ";
 
 // mpirun as CI runs it: as root, more ranks than cores. OpenMPI's own
 // allocations outlive MPI_Finalize, many in plugins already unloaded (which no
@@ -77,6 +78,11 @@ TEST_F(Mpi, ShowcaseMatchesTheCliByteForByte) {
 
 TEST_F(Mpi, ManualSceneMatchesTheCliByteForByte) {
     expect_same_bytes_as_cli(manual, "--width 96 --height 64", "32", {2, 4});
+}
+
+TEST_F(Mpi, MeshSceneMatchesTheCliByteForByte) {
+    // Every rank opens the model reader module as jtracer-cli does.
+    expect_same_bytes_as_cli(mesh, "--width 96 --height 54", "32", {2});
 }
 
 TEST_F(Mpi, BadSceneIsReportedOnceAndEveryRankFails) {

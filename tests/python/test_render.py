@@ -37,6 +37,14 @@ def test_render_is_the_cli_bmp(tmp_path, cli, showcase, options, flags):
         assert image[y0:y1, x0:x1].any()
 
 
+def test_a_model_file_is_read_by_the_model_reader_as_in_the_cli(tmp_path, cli, source_dir):
+    # The module opens the model reader (core/scene/src/io/model_reader.hpp) by its own RUNPATH.
+    mesh = source_dir / "scenes" / "mesh.jts"
+    image = jtracer.load(mesh).render(width=80, height=45)
+    run(cli, "-q", mesh, "-o", tmp_path / "cli.bmp", "--width", "80", "--height", "45")
+    assert np.array_equal(image, bmp_pixels(tmp_path / "cli.bmp"))
+
+
 def test_the_scene_size_without_overrides(source_dir):
     scene = jtracer.load(source_dir / "scenes" / "manual" / "sphere.jts")
     s = scene.settings

@@ -43,6 +43,43 @@ TEST(KeyTaps, AReleaseInTheFrameOfItsPressWaitsForTheFrame) {
     EXPECT_EQ(passed.size(), 2u) << "nothing held back";
 }
 
+// Ctrl held over a frame, then Z pressed and Ctrl let go before the next one
+// (a quick chord: Ctrl comes up before Z, as xdotool and fast hands send it):
+// the frame must see Z down with Ctrl still down, or Ctrl+Z is lost (and
+// Ctrl pressed just after a letter must not turn that letter into a shortcut).
+TEST(KeyTaps, AModifierChangesInNoFrameWhoseKeyWasPressedBeforeIt) {
+    constexpr int press = 1, release = 0, ctrl = 341, z = 90, q = 81;
+    constexpr int ctrl_mod = 0x0002;
+    KeyTaps taps(press, release);
+    std::vector<KeyEvent> passed;
+    const KeyTaps::Sink sink = [&](const KeyEvent& e) { passed.push_back(e); };
+    taps.event({ctrl, 0, press, 0}, sink);
+    taps.frame_done(sink);
+    passed.clear();
+    taps.event({z, 0, press, ctrl_mod}, sink);
+    taps.event({ctrl, 0, release, ctrl_mod}, sink);
+    taps.event({z, 0, release, 0}, sink);
+    ASSERT_EQ(passed.size(), 1u) << "Ctrl's release waits for the frame that sees Z";
+    EXPECT_EQ(passed[0].key, z);
+    taps.frame_done(sink);
+    ASSERT_EQ(passed.size(), 3u);
+    EXPECT_EQ(passed[1].key, ctrl);
+    EXPECT_EQ(passed[1].action, release);
+    EXPECT_EQ(passed[2].key, z);
+    EXPECT_EQ(passed[2].action, release);
+    taps.frame_done(sink);
+    passed.clear();
+
+    // Q typed, then Ctrl pressed within the same frame: that frame is no Ctrl+Q.
+    taps.event({q, 0, press, 0}, sink);
+    taps.event({ctrl, 0, press, 0}, sink);
+    ASSERT_EQ(passed.size(), 1u);
+    EXPECT_EQ(passed[0].key, q);
+    taps.frame_done(sink);
+    ASSERT_EQ(passed.size(), 2u);
+    EXPECT_EQ(passed[1].key, ctrl);
+}
+
 // Three Backspaces within one frame delete three characters: one a frame, in
 // order, and what was typed after them waits its turn.
 TEST(KeyTaps, EachKeyChangesAtMostOnceAFrameAndLaterEventsWait) {

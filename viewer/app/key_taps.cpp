@@ -10,7 +10,12 @@ namespace {
 // (Shift, Ctrl, Alt, Super, left and right) and Menu.
 constexpr int kFirstNonCharacterKey = 256;
 constexpr int kFirstModifierKey = 340;
+constexpr int kLastModifierKey = 347;                    // GLFW_KEY_RIGHT_SUPER; 348 is Menu
 constexpr int kShortcutMods = 0x0002 | 0x0004 | 0x0008;  // GLFW_MOD_CONTROL, _ALT, _SUPER
+
+bool is_modifier(int key) {
+    return key >= kFirstModifierKey && key <= kLastModifierKey;
+}
 
 bool holds(const std::vector<int>& keys, int key) {
     return std::find(keys.begin(), keys.end(), key) != keys.end();
@@ -22,12 +27,16 @@ bool holds(const std::vector<int>& keys, int key) {
 bool KeyTaps::fits_this_frame(const KeyEvent& event) const {
     if (event.codepoint != 0) return !editing_key_pressed_;
     const bool changes_key = event.action == press_ || event.action == release_;
-    return !changes_key || !holds(changed_, event.key);
+    if (!changes_key) return true;
+    if (is_modifier(event.key) && key_pressed_) return false;
+    return !holds(changed_, event.key);
 }
 
 void KeyTaps::pass(const KeyEvent& event, const Sink& sink) {
     if (event.codepoint == 0 && (event.action == press_ || event.action == release_))
         changed_.push_back(event.key);
+    if (event.codepoint == 0 && event.action == press_ && !is_modifier(event.key))
+        key_pressed_ = true;
     if (event.codepoint == 0 && event.action != release_) {
         const bool editing = event.key >= kFirstNonCharacterKey && event.key < kFirstModifierKey;
         if (editing || (event.mods & kShortcutMods) != 0) editing_key_pressed_ = true;
@@ -51,6 +60,7 @@ void KeyTaps::event(const KeyEvent& event, const Sink& sink) {
 void KeyTaps::frame_done(const Sink& sink) {
     changed_.clear();
     editing_key_pressed_ = false;
+    key_pressed_ = false;
     pass_what_fits(sink);
 }
 

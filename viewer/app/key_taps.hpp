@@ -7,7 +7,11 @@
 // And a text field takes the frame's typed characters before its keys: in
 // `877|`, Backspace x3 then "123" in one frame gave "871". So the events wait
 // in one queue, in order, and each frame takes them from its front while
-//   - each key changes (is pressed or let go) at most once a frame, and
+//   - each key changes (is pressed or let go) at most once a frame,
+//   - a modifier (Shift, Ctrl, Alt, Super) changes in no frame in which
+//     another key was pressed before it: Ctrl let go just after Z (a quick
+//     chord) would leave the frame seeing Z without Ctrl, and Ctrl pressed
+//     just after Q would make a typed Q the shortcut Ctrl+Q, and
 //   - a character comes in no frame in which an editing key (Backspace,
 //     Delete, Enter, an arrow...: a key that is no character or modifier) or
 //     a shortcut (a key with Ctrl, Alt or Super) was pressed before it.
@@ -54,6 +58,7 @@ class KeyTaps {
     int press_, release_;
     std::vector<int> changed_;          // keys pressed or released since the last frame
     bool editing_key_pressed_ = false;  // since the last frame
+    bool key_pressed_ = false;          // a key other than a modifier, since the last frame
     std::deque<KeyEvent> held_;
 };
 

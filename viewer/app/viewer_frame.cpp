@@ -99,8 +99,9 @@ void unsaved_prompt(AppState& state) {
                                 ImGuiWindowFlags_AlwaysAutoResize | ImGuiWindowFlags_NoMove))
         return;
     const bool quitting = state.files.unsaved_prompt->kind == GuardedCommand::Kind::quit;
-    const std::string name = state.doc.path.filename().string();
-    ImGui::Text("%s has unsaved edits.", name.c_str());
+    const std::vector<std::string> names = unsaved_file_names(state);
+    ImGui::Text("%s %s unsaved edits.", listed_names(names).c_str(),
+                names.size() > 1 ? "have" : "has");
     ImGui::TextUnformatted(quitting ? "Save them before quitting?"
                                     : "Save them before opening another file?");
     std::optional<UnsavedChoice> choice;

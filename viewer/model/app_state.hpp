@@ -201,6 +201,10 @@ struct CheckState {
     std::uint64_t draft_id = 0;  // of the newest draft sent to the checker
     // The revision of the scene the diagnostics were last checked for (check_edits).
     std::optional<std::uint64_t> checked_revision;
+    // The revision of the scene that validation last found free of errors: while
+    // checked_revision is that one too, a render of the scene need not validate
+    // it again (update_render).
+    std::optional<std::uint64_t> error_free_revision;
 };
 
 // The file on disk: watching it and the files it names, loading, saving, and

@@ -23,6 +23,8 @@ void check_edits(CheckState& check, SceneDocument& doc, const FileState& files) 
     if (check.checked_revision == doc.revision) return;
     doc.diagnostics = doc.parse_diagnostics;
     std::vector<Diagnostic> more = validate_scene(doc.scene, doc.source);
+    check.error_free_revision =
+        has_errors(more) ? std::nullopt : std::optional<std::uint64_t>(doc.revision);
     doc.diagnostics.insert(doc.diagnostics.end(), more.begin(), more.end());
     doc.diagnostics_source = doc.text;
     doc.diagnostics_path = doc.path;

@@ -6,6 +6,8 @@
 #include "model/app_state.hpp"
 
 #include <filesystem>
+#include <string>
+#include <vector>
 
 namespace jt::view {
 
@@ -40,6 +42,9 @@ void resolve_reload(AppState& state, ReloadChoice choice);
 
 // Unsaved edits of the scene, or text typed in an included file (editor_files.hpp).
 bool has_unsaved_work(const AppState& state);
+// The files that hold it, as the editor names them: the scene file's name
+// first when its edits are unsaved, then each included file typed in.
+std::vector<std::string> unsaved_file_names(const AppState& state);
 
 // Saves the edits into the file, and the text typed in included files into
 // theirs (then reloads the scene), unless a file changed on disk since it was

@@ -83,8 +83,15 @@ Scene scene_to_render(const SceneDocument& doc, const RenderRequest& request) {
 namespace {
 
 // The first error validation finds in what a render would show, or empty. An
-// edit can make the scene invalid (a zero plane normal, say).
-std::string validation_error(const Scene& scene) {
+// edit can make the scene invalid (a zero plane normal, say). The document's
+// own scene is not validated again when the check of its diagnostics, still
+// current, found no errors (a changed model file ends the check's currency).
+std::string validation_error(const AppState& state, const Scene& scene,
+                             const RenderRequest& request) {
+    const CheckState& check = state.check;
+    if (!request.free_camera && check.checked_revision == state.doc.revision &&
+        check.error_free_revision == state.doc.revision)
+        return {};
     for (const Diagnostic& d : validate_scene(scene, SceneSource{}))
         if (d.severity == Severity::error) return d.message;
     return {};
@@ -117,7 +124,8 @@ void update_render(AppState& state) {
             state.render.render_note = state.render.rejected_reason;
         } else if (request && request != state.render.started) {
             Scene scene = scene_to_render(state.doc, *request);
-            if (const std::string error = validation_error(scene); !error.empty()) {
+            if (const std::string error = validation_error(state, scene, *request);
+                !error.empty()) {
                 // Keep the last image rather than render nonsense; say why.
                 state.render.rejected = std::move(request);
                 state.render.rejected_reason = "Not rendered: " + error;

@@ -8,6 +8,7 @@
 #include "common/scratch_dir.hpp"
 #include "jtracer/file_stamp.hpp"
 #include "model/app_actions.hpp"
+#include "model/document_edits.hpp"
 #include "model/edit_commands.hpp"
 #include "model/field_sources.hpp"
 #include "viewer/model/model_loop.hpp"
@@ -200,6 +201,19 @@ TEST_F(EditorFilesTest, QuittingWithTextTypedInAnIncludedFileAsksFirst) {
     resolve_unsaved(state, UnsavedChoice::save);
     EXPECT_TRUE(state.quit);
     EXPECT_EQ(read_file(ball), "sphere { radius: 3; }\n");
+}
+
+// The prompt names the files that hold unsaved work: under Xvfb it said
+// "main.jts has unsaved edits" when only parts/materials.jts had been typed in.
+TEST_F(EditorFilesTest, ThePromptNamesTheFilesWithUnsavedWork) {
+    write(ball, kBall);
+    open();
+    EXPECT_TRUE(unsaved_file_names(state).empty());
+    show_file(state.editor, state.doc, canonical_of(state.doc, "parts/ball.jts"));
+    type_included_text(state.editor, state.doc, "sphere { radius: 3; }\n");
+    EXPECT_EQ(unsaved_file_names(state), std::vector<std::string>{"parts/ball.jts"});
+    type_text(state, document_text(state.doc) + "# typed\n");
+    EXPECT_EQ(unsaved_file_names(state), (std::vector<std::string>{"main.jts", "parts/ball.jts"}));
 }
 
 TEST_F(EditorFilesTest, OpeningAnotherSceneAsksAndDropsTheTypedTextOnlyWhenTold) {

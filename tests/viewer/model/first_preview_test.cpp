@@ -19,6 +19,7 @@
 #include <cerrno>
 #include <chrono>
 #include <fstream>
+#include <iterator>
 #include <sstream>
 #include <thread>
 
@@ -120,6 +121,38 @@ TEST(Wakeup, FinishedLoadWakesTheLoopAndEndsTheWait) {
         << "the next frame has a load to take in";
     EXPECT_TRUE(take_finished_load(state));
     EXPECT_TRUE(state.doc.loaded);
+}
+
+TEST(FirstPreview, AnOpenedSceneIsNotValidatedAgainBeforeItsRender) {
+    // The "top" camera's aspect no longer matches the image: a warning, so
+    // that the diagnostics the loader found are not trivially empty.
+    const std::filesystem::path file = scene_copy("jt_first_preview_validated");
+    std::string text;
+    {
+        std::ifstream in(file);
+        text.assign(std::istreambuf_iterator<char>(in), {});
+    }
+    const std::string aspect = "aspect: 1.3333333333333333;\n        fov: 50;";
+    ASSERT_NE(text.find(aspect), std::string::npos);
+    text.replace(text.find(aspect), aspect.size(), "aspect: 2;\n        fov: 50;");
+    std::ofstream(file, std::ios::trunc) << text;
+
+    AppState state(test_config());
+    open_scene(state, file);
+    ASSERT_TRUE(state.doc.loaded) << state.message;
+    EXPECT_EQ(state.check.checked_revision, state.doc.revision)
+        << "the loader's diagnostics describe the scene taken in";
+    EXPECT_EQ(state.check.error_free_revision, state.doc.revision) << "and it has no errors";
+    const std::vector<Diagnostic> loaded = state.doc.diagnostics;
+    ASSERT_EQ(loaded.size(), 1u);
+    EXPECT_EQ(loaded[0].severity, Severity::warning);
+
+    model_frame(state);
+    EXPECT_EQ(state.render.renderer.jobs_started(), 1u) << state.render.render_note;
+    // What a check of the scene finds now is what the loader found.
+    state.check.checked_revision.reset();
+    check_edits(state.check, state.doc, state.files);
+    EXPECT_EQ(state.doc.diagnostics, loaded);
 }
 
 TEST(RenderReuse, MaterialEditReusesTheGeometryAndRendersTheEditedScene) {

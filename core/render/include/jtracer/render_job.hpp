@@ -47,6 +47,14 @@ struct PreparedScene;  // defined in the core's private headers
 Expected<std::shared_ptr<const PreparedScene>> prepare_scene(
     const Scene& scene, std::shared_ptr<const PreparedScene> previous = nullptr);
 
+// The same for a scene its caller gives up (a program that renders it once):
+// the prepared scene keeps it and, when a copy of the materials would be
+// large, reads each primitive's material where the scene holds it, which for
+// a million spheres of distinct colours is 216 MB less. The image is the same
+// to the byte.
+Expected<std::shared_ptr<const PreparedScene>> prepare_scene(
+    Scene&& scene, std::shared_ptr<const PreparedScene> previous = nullptr);
+
 // Prepares `scene` after an edit of `before`, the scene `previous` was
 // prepared from. When the edit changed materials only (of one object or many),
 // besides lights, cameras or settings, the result shares everything else with

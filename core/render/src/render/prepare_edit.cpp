@@ -61,7 +61,10 @@ void set_material(PreparedScene& prepared, std::uint32_t i, const Material& m) {
 Expected<std::shared_ptr<const PreparedScene>> prepare_scene_edit(
     const Scene& before, const Scene& scene, std::shared_ptr<const PreparedScene> previous) {
     std::optional<std::vector<std::uint32_t>> changed;
-    if (previous && previous->geometry) changed = changed_materials(before, scene);
+    // A scene that reads its materials in place (prepare_scene(Scene&&)) has
+    // no list to patch.
+    if (previous && previous->geometry && !previous->scene)
+        changed = changed_materials(before, scene);
     // Patterns need each primitive's pattern space, which the previous scene
     // kept only when some material had a pattern.
     if (changed && previous->pattern_space.empty() &&

@@ -22,12 +22,21 @@ Geometry::~Geometry() {
 namespace {
 
 // Past this many bounded primitives, a faster Morton build pays off more than a
-// better tree: the render of a huge scene is short next to its build.
-constexpr std::size_t fast_build_threshold = 500000;
+// better tree: the render of a large scene is short next to its build, and the
+// build is all of the wait for its first preview. Measured on spheres_100k
+// (docs/benchmarks.md §4.1): the Morton build takes a quarter of the CPU time of
+// the binned SAH build, and the whole render no more.
+constexpr std::size_t fast_build_threshold = 50000;
 
 // Up to this many bounded shapes, the ray queries test every one instead of
 // walking a BVH: on the showcase (6 shapes) that halves the time a ray.
 constexpr std::size_t brute_force_limit = 8;
+
+// A scene handed over (prepare_scene(Scene&&)) still has its materials copied
+// while the copy stays this small (about 19,000 materials): a short list stays
+// in the caches, where reading each primitive's own material would walk the
+// whole scene. Past it, the materials are read where the scene holds them.
+constexpr std::size_t max_copied_materials = (std::size_t{4} << 20) / sizeof(Material);
 
 void add_sphere(Geometry& g, const Sphere& sphere, const ObjectTransform* transform,
                 std::uint32_t source) {
@@ -85,11 +94,14 @@ void add_plane(Geometry& g, const Plane& plane, const ObjectTransform& transform
     g.planes.push_back({*world_normal, distance, source});
 }
 
+// Embree builds a user geometry's tree at the geometry's own quality: the
+// scene's quality alone still gets the SAH build.
 template <typename Intersect, typename Occluded, typename Bounds>
-unsigned attach_user_geometry(RTCScene bvh, Geometry& g, std::size_t count, Bounds bounds,
-                              Intersect intersect, Occluded occluded) {
+unsigned attach_user_geometry(RTCScene bvh, Geometry& g, std::size_t count, RTCBuildQuality quality,
+                              Bounds bounds, Intersect intersect, Occluded occluded) {
     RTCGeometry geometry = rtcNewGeometry(embree_device(), RTC_GEOMETRY_TYPE_USER);
     rtcSetGeometryUserPrimitiveCount(geometry, static_cast<unsigned>(count));
+    rtcSetGeometryBuildQuality(geometry, quality);
     rtcSetGeometryUserData(geometry, &g);
     rtcSetGeometryBoundsFunction(geometry, bounds, &g);
     rtcSetGeometryIntersectFunction(geometry, intersect);
@@ -172,15 +184,17 @@ Expected<std::shared_ptr<const Geometry>> build_geometry(const Scene& scene,
     }
 
     g->bvh = rtcNewScene(embree_device());
-    rtcSetSceneBuildQuality(
-        g->bvh, bounded > fast_build_threshold ? RTC_BUILD_QUALITY_LOW : RTC_BUILD_QUALITY_MEDIUM);
+    const RTCBuildQuality quality =
+        bounded > fast_build_threshold ? RTC_BUILD_QUALITY_LOW : RTC_BUILD_QUALITY_MEDIUM;
+    rtcSetSceneBuildQuality(g->bvh, quality);
     rtcSetSceneFlags(g->bvh, RTC_SCENE_FLAG_ROBUST);
     if (!g->spheres.empty())
-        g->sphere_geometry_id = attach_user_geometry(g->bvh, *g, g->spheres.size(), sphere_bounds,
-                                                     sphere_intersect, sphere_occluded);
+        g->sphere_geometry_id =
+            attach_user_geometry(g->bvh, *g, g->spheres.size(), quality, sphere_bounds,
+                                 sphere_intersect, sphere_occluded);
     if (!g->shapes.empty())
-        g->shape_geometry_id = attach_user_geometry(g->bvh, *g, g->shapes.size(), shape_bounds,
-                                                    shape_intersect, shape_occluded);
+        g->shape_geometry_id = attach_user_geometry(g->bvh, *g, g->shapes.size(), quality,
+                                                    shape_bounds, shape_intersect, shape_occluded);
     rtcCommitScene(g->bvh);
     return std::shared_ptr<const Geometry>(std::move(g));
 }
@@ -263,10 +277,12 @@ Expected<void> load_textures(const Scene& scene, PreparedScene& prepared,
     return {};
 }
 
-}  // namespace
-
-Expected<std::shared_ptr<const PreparedScene>> prepare_scene(
-    const Scene& scene, std::shared_ptr<const PreparedScene> previous) {
+// The scene's materials are read in place only from a scene the prepared one
+// owns, only when no pattern needs `textures` and `pattern_space` (parallel to
+// a gathered list), and only when a copy would be large.
+Expected<std::shared_ptr<const PreparedScene>> prepare(
+    const Scene& scene, std::shared_ptr<const Scene> owned,
+    std::shared_ptr<const PreparedScene> previous) {
     // Checked here, before any work: build_geometry needs the device.
     if (!embree_device()) return Error{embree_device_failure()};
     auto prepared = std::make_shared<PreparedScene>();
@@ -286,18 +302,30 @@ Expected<std::shared_ptr<const PreparedScene>> prepare_scene(
     // Materials and geometry are independent; for a million primitives each is
     // worth a core.
     auto gather_materials = [&] {
-        prepared->materials.reserve(scene.primitives.size());
+        prepared->materials_gathered = scene.primitives.size();
+        const bool may_read_in_place =
+            owned && std::none_of(scene.primitives.begin(), scene.primitives.end(),
+                                  [](const Primitive& p) { return has_pattern(p.material); });
+        const std::size_t most = may_read_in_place ? max_copied_materials : scene.primitives.size();
+        prepared->materials.reserve(std::min(most, scene.primitives.size()));
         prepared->material_of.reserve(scene.primitives.size());
         for (const Primitive& p : scene.primitives) {
-            if (prepared->materials.empty() || !(prepared->materials.back() == p.material))
+            if (prepared->materials.empty() || !(prepared->materials.back() == p.material)) {
+                if (prepared->materials.size() == most) {
+                    prepared->materials = {};
+                    prepared->material_of = {};
+                    prepared->scene = std::move(owned);
+                    break;
+                }
                 prepared->materials.push_back(p.material);
+            }
             prepared->material_of.push_back(
                 static_cast<std::uint32_t>(prepared->materials.size() - 1));
         }
-        for (const Material& m : prepared->materials)
-            prepared->has_transmission = prepared->has_transmission || m.transmission > 0.0;
+        for (const Primitive& p : scene.primitives)
+            prepared->has_transmission =
+                prepared->has_transmission || p.material.transmission > 0.0;
         prepared->pattern_space = pattern_spaces(scene.primitives, prepared->materials);
-        prepared->materials_gathered = scene.primitives.size();
     };
     if (scene.primitives.size() > 10000)
         tbb::parallel_invoke(build, gather_materials);
@@ -317,6 +345,20 @@ Expected<std::shared_ptr<const PreparedScene>> prepare_scene(
     prepared->cameras = scene.cameras;
     prepared->settings = scene.settings;
     return std::shared_ptr<const PreparedScene>(std::move(prepared));
+}
+
+}  // namespace
+
+Expected<std::shared_ptr<const PreparedScene>> prepare_scene(
+    const Scene& scene, std::shared_ptr<const PreparedScene> previous) {
+    return prepare(scene, nullptr, std::move(previous));
+}
+
+Expected<std::shared_ptr<const PreparedScene>> prepare_scene(
+    Scene&& scene, std::shared_ptr<const PreparedScene> previous) {
+    auto owned = std::make_shared<const Scene>(std::move(scene));
+    const Scene& held = *owned;
+    return prepare(held, std::move(owned), std::move(previous));
 }
 
 }  // namespace jt

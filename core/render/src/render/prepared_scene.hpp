@@ -94,6 +94,12 @@ struct Geometry {
 
 struct PreparedScene {
     std::shared_ptr<const Geometry> geometry;
+    // The scene itself, when its caller handed it over (prepare_scene(Scene&&)),
+    // no material has a pattern and a copy would be large: each primitive's
+    // material is then read where the scene holds it, and `materials` and
+    // `material_of` stay empty. A copy costs 216 bytes a distinct material
+    // (216 MB for a million spheres of random colours).
+    std::shared_ptr<const Scene> scene;
     // Runs of primitives with equal materials share one entry.
     std::vector<Material> materials;
     std::vector<std::uint32_t> material_of;  // indexed by Scene primitive
@@ -131,5 +137,11 @@ struct PreparedScene {
     // test tells that the whole scene was not prepared again).
     std::size_t materials_gathered = 0;
 };
+
+// The material of Scene primitive `source`.
+inline const Material& primitive_material(const PreparedScene& prepared, std::uint32_t source) {
+    return prepared.scene ? prepared.scene->primitives[source].material
+                          : prepared.materials[prepared.material_of[source]];
+}
 
 }  // namespace jt

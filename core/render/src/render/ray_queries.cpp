@@ -3,11 +3,13 @@
 #include "geometry/bounds.hpp"
 #include "geometry/intersect.hpp"
 #include "jtracer/check.hpp"
+#include "render/far_ray.hpp"
 #include "render/float_ray.hpp"
 
 #include <glm/geometric.hpp>
 
 #include <algorithm>
+#include <array>
 #include <bit>
 #include <cmath>
 #include <limits>
@@ -44,6 +46,8 @@ struct ClosestQuery {
     HitKind kind;
     std::uint32_t index;
     CylinderPart part;
+    // For a ray moved into Embree's reach: how its distances map to Embree's.
+    const FarRay* far = nullptr;
 };
 
 // One ray, or a packet whose lanes name their ray by their id: Embree may
@@ -76,10 +80,10 @@ double shape_distance(const TransformedShape& s, const Vec3& origin, const Vec3&
     return intersect_cylinder(o, d, s.radius, s.height, t_min, t_max, part);
 }
 
-void accept(const RTCIntersectFunctionNArguments* args, double t) {
+void accept(const RTCIntersectFunctionNArguments* args, const ClosestQuery& q) {
     RTCRayN* ray = RTCRayHitN_RayN(args->rayhit, args->N);
     RTCHitN* hit = RTCRayHitN_HitN(args->rayhit, args->N);
-    RTCRayN_tfar(ray, args->N, 0) = float_up(t);
+    RTCRayN_tfar(ray, args->N, 0) = q.far ? far_t_up(*q.far, q.t) : float_up(q.t);
     RTCHitN_geomID(hit, args->N, 0) = args->geomID;
     RTCHitN_primID(hit, args->N, 0) = args->primID;
     RTCHitN_instID(hit, args->N, 0, 0) = RTC_INVALID_GEOMETRY_ID;
@@ -262,6 +266,32 @@ bool plane_blocks(const Geometry& geometry, const Vec3& origin, const Vec3& dire
     return false;
 }
 
+// One ray against the BVH of spheres and shapes; a ray out of Embree's reach
+// is moved into it (render/far_ray.hpp) or tested against every shape.
+bool occluded_by_bvh(const Geometry& geometry, const ShadowRay& one, OccluderHint& blocker) {
+    OcclusionQuery q;
+    rtcInitIntersectContext(&q.context);
+    q.geometry = &geometry;
+    q.rays = &one;
+    RTCRay ray;
+    if (embree_takes(one.origin, one.direction)) {
+        set_float_ray(ray, one.origin, one.direction, one.t_min, one.t_max);
+    } else {
+        RTCBounds bounds;
+        rtcGetSceneBounds(geometry.bvh, &bounds);
+        const FarRay far = fit_far_ray(one.origin, one.direction, one.t_min, one.t_max, bounds);
+        if (far.fit == FarRay::Fit::misses) return false;
+        if (far.fit == FarRay::Fit::out_of_reach)
+            return occluded_by_testing_all(geometry, one.origin, one.direction, one.t_min,
+                                           one.t_max, blocker);
+        set_far_ray(ray, far, one.t_min, one.t_max);
+    }
+    rtcOccluded1(geometry.bvh, &q.context, &ray);
+    if (!(ray.tfar < 0.0f)) return false;
+    blocker = q.blocker;
+    return true;
+}
+
 }  // namespace
 
 void sphere_bounds(const RTCBoundsFunctionArguments* args) {
@@ -273,7 +303,7 @@ void sphere_bounds(const RTCBoundsFunctionArguments* args) {
 void sphere_intersect(const RTCIntersectFunctionNArguments* args) {
     if (!args->valid[0]) return;
     auto& q = *reinterpret_cast<ClosestQuery*>(args->context);
-    if (offer_sphere(q, args->primID)) accept(args, q.t);
+    if (offer_sphere(q, args->primID)) accept(args, q);
 }
 
 void sphere_occluded(const RTCOccludedFunctionNArguments* args) {
@@ -294,7 +324,7 @@ void shape_bounds(const RTCBoundsFunctionArguments* args) {
 void shape_intersect(const RTCIntersectFunctionNArguments* args) {
     if (!args->valid[0]) return;
     auto& q = *reinterpret_cast<ClosestQuery*>(args->context);
-    if (offer_shape(q, args->primID)) accept(args, q.t);
+    if (offer_shape(q, args->primID)) accept(args, q);
 }
 
 void shape_occluded(const RTCOccludedFunctionNArguments* args) {
@@ -347,11 +377,25 @@ bool closest_hit(const Geometry& geometry, const Vec3& origin, const Vec3& direc
     } else if (!settled) {
         rtcInitIntersectContext(&q.context);
         RTCRayHit rayhit;
-        set_float_ray(rayhit.ray, origin, direction, t_min, q.t);
         rayhit.hit.geomID = RTC_INVALID_GEOMETRY_ID;
         rayhit.hit.primID = RTC_INVALID_GEOMETRY_ID;
         rayhit.hit.instID[0] = RTC_INVALID_GEOMETRY_ID;
-        rtcIntersect1(geometry.bvh, &q.context, &rayhit);
+        if (embree_takes(origin, direction)) {
+            set_float_ray(rayhit.ray, origin, direction, t_min, q.t);
+            rtcIntersect1(geometry.bvh, &q.context, &rayhit);
+        } else {
+            RTCBounds bounds;
+            rtcGetSceneBounds(geometry.bvh, &bounds);
+            const FarRay far = fit_far_ray(origin, direction, t_min, q.t, bounds);
+            if (far.fit == FarRay::Fit::out_of_reach) {
+                closest_by_testing_all(q);
+            } else if (far.fit == FarRay::Fit::moved) {
+                q.far = &far;
+                set_far_ray(rayhit.ray, far, t_min, q.t);
+                rtcIntersect1(geometry.bvh, &q.context, &rayhit);
+                q.far = nullptr;
+            }
+        }
     }
     // Triangles last, no farther than the nearest other surface.
     TriangleHit triangle;
@@ -468,16 +512,7 @@ bool occluded(const Geometry& geometry, const Vec3& origin, const Vec3& directio
     } else if (!blocked && !geometry.bvh) {
         blocked = occluded_by_testing_all(geometry, origin, direction, t_min, t_max, blocker);
     } else if (!blocked) {
-        const ShadowRay one{origin, direction, t_min, t_max};
-        OcclusionQuery q;
-        rtcInitIntersectContext(&q.context);
-        q.geometry = &geometry;
-        q.rays = &one;
-        RTCRay ray;
-        set_float_ray(ray, origin, direction, t_min, t_max);
-        rtcOccluded1(geometry.bvh, &q.context, &ray);
-        blocked = ray.tfar < 0.0f;
-        blocker = q.blocker;
+        blocked = occluded_by_bvh(geometry, {origin, direction, t_min, t_max}, blocker);
     }
     if (!blocked && geometry.triangles)
         blocked = triangle_blocks(*geometry.triangles, origin, direction, t_min, t_max, from);
@@ -515,6 +550,14 @@ void occluded_together(const Geometry& geometry, std::span<const ShadowRay> rays
                                                        rays[i].t_min, rays[i].t_max, blocker))
                 any = blocked[i] = true;
     } else if (!all) {
+        // A ray out of Embree's reach is answered on its own, and its lane in
+        // the packet holds a ray Embree takes.
+        std::array<bool, shadow_packet> far{};
+        for (std::size_t i = 0; i < rays.size(); ++i) {
+            far[i] = !embree_takes(rays[i].origin, rays[i].direction);
+            if (far[i] && !blocked[i] && occluded_by_bvh(geometry, rays[i], blocker))
+                any = blocked[i] = true;
+        }
         OcclusionQuery q;
         rtcInitIntersectContext(&q.context);
         q.context.flags = RTC_INTERSECT_CONTEXT_FLAG_COHERENT;
@@ -524,10 +567,15 @@ void occluded_together(const Geometry& geometry, std::span<const ShadowRay> rays
         // Embree loads the mask and the packet as whole vectors: aligned as they are.
         alignas(64) std::array<int, shadow_packet> valid{};
         // Idle lanes hold a copy of the first ray, so that no lane is garbage.
-        for (unsigned lane = 0; lane < shadow_packet; ++lane)
-            set_float_lane(packet, lane, rays[std::min<std::size_t>(lane, rays.size() - 1)]);
-        for (unsigned lane = 0; lane < rays.size(); ++lane) valid[lane] = blocked[lane] ? 0 : -1;
-        rtcOccluded16(valid.data(), geometry.bvh, &q.context, &packet);
+        const ShadowRay idle{Vec3(0.0), Vec3(0.0, 0.0, 1.0), 0.0, 0.0};
+        for (unsigned lane = 0; lane < shadow_packet; ++lane) {
+            const std::size_t i = std::min<std::size_t>(lane, rays.size() - 1);
+            set_float_lane(packet, lane, far[i] ? idle : rays[i]);
+        }
+        for (unsigned lane = 0; lane < rays.size(); ++lane)
+            valid[lane] = blocked[lane] || far[lane] ? 0 : -1;
+        if (std::find(valid.begin(), valid.end(), -1) != valid.end())
+            rtcOccluded16(valid.data(), geometry.bvh, &q.context, &packet);
         for (unsigned lane = 0; lane < rays.size(); ++lane)
             if (valid[lane] && packet.tfar[lane] < 0.0f) {
                 any = blocked[lane] = true;

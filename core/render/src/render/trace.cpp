@@ -43,7 +43,7 @@ double transmittance(const PreparedScene& scene, const Vec3& origin, const Vec3&
     while (through > 0.0 &&
            closest_hit(*scene.geometry, origin, direction, t_lower, hit, candidates, from) &&
            hit.t < t_max) {
-        through *= scene.materials[scene.material_of[hit.source]].transmission;
+        through *= primitive_material(scene, hit.source).transmission;
         t_lower = hit.t;
     }
     return through;
@@ -234,7 +234,7 @@ Colour shade_hit(const PreparedScene& scene, const Material& m, const SurfaceHit
 
 Colour shade_surface(const PreparedScene& scene, const SurfaceHit& s, const Vec3& d,
                      const PixelSample& sample, std::uint64_t& rays) {
-    const Material& m = scene.materials[scene.material_of[s.source]];
+    const Material& m = primitive_material(scene, s.source);
     // A mesh's part with colours from its file replaces the block's pigment
     // and pattern (docs/language.md §14.5).
     if (s.triangle.instance != TriangleId::no_instance && scene.geometry->triangles->file_materials)
@@ -245,6 +245,7 @@ Colour shade_surface(const PreparedScene& scene, const SurfaceHit& s, const Vec3
             return shade_hit(scene, own, s, -d, sample, rays);
         }
     if (!has_pattern(m)) return shade_hit(scene, m, s, -d, sample, rays);
+    // A scene with a pattern always gathers its materials, so material_of holds.
     const PatternSpace& space = scene.pattern_space[s.source];
     Material patterned = m;
     patterned.pigment =
@@ -276,7 +277,7 @@ Colour trace_branching(const PreparedScene& scene, const Vec3& o, const Vec3& d,
     if (s.kind == SurfaceHit::Kind::no_normal) return Colour(0.0);
     Colour c = shade_surface(scene, s, d, sample, rays);
     if (depth >= depth_limit) return c;
-    const Material& m = scene.materials[scene.material_of[s.source]];
+    const Material& m = primitive_material(scene, s.source);
     if (m.reflection > 0.0 && weight * m.reflection >= min_branch_weight)
         c += m.reflection * trace_branching(scene, s.lifted, mirror(d, s.normal), 0.0, depth + 1,
                                             depth_limit, weight * m.reflection, sample, rays,
@@ -339,7 +340,7 @@ Colour trace_ray(const PreparedScene& scene, const Vec3& origin, const Vec3& uni
             break;
         }
         keep(depth, shade_surface(scene, s, d, sample, rays));
-        const Material& m = scene.materials[scene.material_of[s.source]];
+        const Material& m = primitive_material(scene, s.source);
         if (depth >= depth_limit || !(m.reflection > 0.0)) break;
         bounces[depth].reflection = m.reflection;
         d = mirror(d, s.normal);

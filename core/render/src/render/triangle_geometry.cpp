@@ -7,6 +7,7 @@
 
 #include <glm/geometric.hpp>
 
+#include <algorithm>
 #include <cmath>
 #include <map>
 #include <string>
@@ -15,6 +16,7 @@ namespace jt {
 
 TriangleModel::~TriangleModel() {
     if (scene) rtcReleaseScene(scene);
+    for (const auto& [exponent, copy] : shrunk) rtcReleaseScene(copy);
 }
 
 TriangleGeometry::~TriangleGeometry() {
@@ -48,37 +50,76 @@ RTCScene new_robust_scene(std::size_t triangles) {
     return scene;
 }
 
-std::unique_ptr<TriangleModel> model_scene(std::shared_ptr<const Model> model) {
-    auto m = std::make_unique<TriangleModel>();
-    m->scene = new_robust_scene(model->triangles.size());
-    RTCGeometry g = new_triangle_geometry(model->positions.size(), model->triangles.size());
+// The BVH of `model`'s triangles with every corner coordinate times 2^-e
+// (exact in float unless it underflows).
+RTCScene corner_scene(const Model& model, int e) {
+    RTCScene scene = new_robust_scene(model.triangles.size());
+    RTCGeometry g = new_triangle_geometry(model.positions.size(), model.triangles.size());
     auto* v = static_cast<float*>(rtcGetGeometryBufferData(g, RTC_BUFFER_TYPE_VERTEX, 0));
-    for (const glm::vec3& p : model->positions) {
-        *v++ = p.x;
-        *v++ = p.y;
-        *v++ = p.z;
+    for (const glm::vec3& p : model.positions) {
+        *v++ = std::ldexp(p.x, -e);
+        *v++ = std::ldexp(p.y, -e);
+        *v++ = std::ldexp(p.z, -e);
     }
     auto* i = static_cast<std::uint32_t*>(rtcGetGeometryBufferData(g, RTC_BUFFER_TYPE_INDEX, 0));
-    for (const auto& t : model->triangles) {
+    for (const auto& t : model.triangles) {
         *i++ = t[0];
         *i++ = t[1];
         *i++ = t[2];
     }
     rtcCommitGeometry(g);
-    rtcAttachGeometry(m->scene, g);
+    rtcAttachGeometry(scene, g);
     rtcReleaseGeometry(g);
-    rtcCommitScene(m->scene);
+    rtcCommitScene(scene);
+    return scene;
+}
+
+std::unique_ptr<TriangleModel> model_scene(std::shared_ptr<const Model> model) {
+    auto m = std::make_unique<TriangleModel>();
+    m->scene = corner_scene(*model, 0);
     m->model = std::move(model);
     return m;
 }
 
-void attach_instance(RTCScene top, const TriangleModel& model, const ObjectTransform& transform) {
+// Embree moves a ray into a mesh's space by the inverse of the float map it
+// is given, and Debian's build aborts (assertion `ray.valid()`) when a
+// component of the moved origin or direction passes 1.8e18. A mesh shrunk by
+// 1e-10 seen from 1e9 away, or by 1e-20 from anywhere, got there. So a map
+// whose inverse has a row sum above kMaxPlainInverse (a shrink past about
+// 6e-8) goes to Embree as M * 2^e with the model's corners times 2^-e, e
+// chosen so that the inverse's row sums fall below 1: the same world
+// triangles, and moved rays no longer than the world's. Below it, rays that
+// start within 1e11 of the mesh stay in range. Powers of two scale floats
+// exactly, and hits are worked out again in double precision from the model
+// itself; meshes shrunk less keep the shared BVH and their images' bytes.
+constexpr double kMaxPlainInverse = 1 << 24;
+
+int shrink_exponent(const ObjectTransform& transform) {
+    double largest_row = 0.0;
+    for (int r = 0; r < 3; ++r) {
+        double row = 0.0;
+        for (int c = 0; c < 3; ++c) row += std::abs(transform.to_object.linear[c][r]);
+        largest_row = std::max(largest_row, row);
+    }
+    if (!(largest_row > kMaxPlainInverse)) return 0;
+    return std::ilogb(largest_row) + 1;
+}
+
+void attach_instance(RTCScene top, TriangleModel& model, const ObjectTransform& transform) {
     RTCGeometry g = rtcNewGeometry(embree_device(), RTC_GEOMETRY_TYPE_INSTANCE);
-    rtcSetGeometryInstancedScene(g, model.scene);
+    const int e = shrink_exponent(transform);
+    RTCScene corners = model.scene;
+    if (e != 0) {
+        auto known = model.shrunk.find(e);
+        if (known == model.shrunk.end())
+            known = model.shrunk.emplace(e, corner_scene(*model.model, e)).first;
+        corners = known->second;
+    }
+    rtcSetGeometryInstancedScene(g, corners);
     float xfm[12];  // 3x4, column-major: the linear part's columns, then the translation
     for (int c = 0; c < 3; ++c)
         for (int r = 0; r < 3; ++r)
-            xfm[3 * c + r] = static_cast<float>(transform.to_world.linear[c][r]);
+            xfm[3 * c + r] = static_cast<float>(std::ldexp(transform.to_world.linear[c][r], e));
     for (int r = 0; r < 3; ++r) xfm[9 + r] = static_cast<float>(transform.to_world.translation[r]);
     rtcSetGeometryTransform(g, 0, RTC_FORMAT_FLOAT3X4_COLUMN_MAJOR, xfm);
     rtcCommitGeometry(g);

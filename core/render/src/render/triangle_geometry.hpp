@@ -31,6 +31,9 @@ namespace jt {
 struct TriangleModel {
     std::shared_ptr<const Model> model;
     RTCScene scene = nullptr;
+    // The model's corners times 2^-e, by e: for meshes whose map shrinks them
+    // past what Embree's float instance transform holds (attach_instance).
+    std::map<int, RTCScene> shrunk;
     std::map<double, std::shared_ptr<const CornerNormals>> generated;
 
     TriangleModel() = default;

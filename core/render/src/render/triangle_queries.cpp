@@ -1,6 +1,7 @@
 #include "render/triangle_queries.hpp"
 
 #include "geometry/intersect.hpp"
+#include "render/far_ray.hpp"
 #include "render/float_ray.hpp"
 
 #include <glm/geometric.hpp>
@@ -79,9 +80,7 @@ TriangleId id_of(const RTCFilterFunctionNArguments* args) {
 // from P itself, in double precision, passes inside it farther than ε from P.
 // Other triangles keep Embree's watertight answer, so that no ray slips
 // between two of them.
-bool keep(const RTCFilterFunctionNArguments* args) {
-    const auto& q = *reinterpret_cast<const TriangleQuery*>(args->context);
-    const TriangleId id = id_of(args);
+bool keep(const TriangleQuery& q, TriangleId id) {
     if (id == q.from.triangle) return false;
     TrianglePoint p;
     if (!exact_point(*q.geometry, id, q.origin, q.direction, p) || !(p.t > q.t_min) ||
@@ -92,6 +91,52 @@ bool keep(const RTCFilterFunctionNArguments* args) {
     TrianglePoint from_p;
     return exact_point(*q.geometry, id, q.from.point, q.direction, from_p) && from_p.t > q.lift &&
            from_p.u >= 0.0 && from_p.v >= 0.0 && from_p.u + from_p.v <= 1.0;
+}
+
+bool keep(const RTCFilterFunctionNArguments* args) {
+    return keep(*reinterpret_cast<const TriangleQuery*>(args->context), id_of(args));
+}
+
+// The walk for a ray out of Embree's reach even when moved (render/far_ray.hpp):
+// every triangle, in double precision, the nearest kept one first (the lowest
+// id of equally near ones). `first` stops at any kept one.
+bool nearest_by_testing_all(const TriangleQuery& q, TriangleId& nearest, bool first) {
+    const TriangleGeometry& g = *q.geometry;
+    double best = no_hit;
+    auto offer = [&](TriangleId id) {
+        TrianglePoint p;
+        if (!exact_point(g, id, q.origin, q.direction, p) || !(p.u >= 0.0) || !(p.v >= 0.0) ||
+            !(p.u + p.v <= 1.0) || !(p.t < best) || !keep(q, id))
+            return false;
+        best = p.t;
+        nearest = id;
+        return first;
+    };
+    for (std::uint32_t i = 0; i < g.loose.size(); ++i)
+        if (offer({TriangleId::no_instance, i})) return true;
+    for (std::uint32_t k = 0; k < g.instances.size(); ++k) {
+        const Model& m = *g.models[g.instances[k].model]->model;
+        for (std::uint32_t i = 0; i < m.triangles.size(); ++i)
+            if (offer({k, i})) return true;
+    }
+    return best < no_hit;
+}
+
+// The float ray Embree walks for the query's ray; false when no triangle can
+// be met (out of reach: `walk` says to test them all).
+bool embree_ray(const TriangleQuery& q, RTCRay& ray, bool& walk) {
+    walk = false;
+    if (embree_takes(q.origin, q.direction)) {
+        set_float_ray(ray, q.origin, q.direction, q.t_min, q.t_max);
+        return true;
+    }
+    RTCBounds bounds;
+    rtcGetSceneBounds(q.geometry->scene, &bounds);
+    const FarRay far = fit_far_ray(q.origin, q.direction, q.t_min, q.t_max, bounds);
+    walk = far.fit == FarRay::Fit::out_of_reach;
+    if (far.fit != FarRay::Fit::moved) return false;
+    set_far_ray(ray, far, q.t_min, q.t_max);
+    return true;
 }
 
 TriangleQuery query(const TriangleGeometry& g, const Vec3& origin, const Vec3& direction,
@@ -122,15 +167,19 @@ bool closest_triangle(const TriangleGeometry& g, const Vec3& origin, const Vec3&
                       double t_min, double t_max, TriangleHit& hit, const Departure& from) {
     TriangleQuery q = query(g, origin, direction, t_min, t_max, from);
     RTCRayHit rayhit;
-    set_float_ray(rayhit.ray, origin, direction, t_min, t_max);
-    rayhit.hit.geomID = RTC_INVALID_GEOMETRY_ID;
-    rayhit.hit.primID = RTC_INVALID_GEOMETRY_ID;
-    rayhit.hit.instID[0] = RTC_INVALID_GEOMETRY_ID;
-    rtcIntersect1(g.scene, &q.context, &rayhit);
-    if (rayhit.hit.geomID == RTC_INVALID_GEOMETRY_ID) return false;
-    const unsigned instance = rayhit.hit.instID[0];
-    hit.id = {instance == RTC_INVALID_GEOMETRY_ID ? TriangleId::no_instance : instance,
-              rayhit.hit.primID};
+    bool walk = false;
+    if (!embree_ray(q, rayhit.ray, walk)) {
+        if (!walk || !nearest_by_testing_all(q, hit.id, false)) return false;
+    } else {
+        rayhit.hit.geomID = RTC_INVALID_GEOMETRY_ID;
+        rayhit.hit.primID = RTC_INVALID_GEOMETRY_ID;
+        rayhit.hit.instID[0] = RTC_INVALID_GEOMETRY_ID;
+        rtcIntersect1(g.scene, &q.context, &rayhit);
+        if (rayhit.hit.geomID == RTC_INVALID_GEOMETRY_ID) return false;
+        const unsigned instance = rayhit.hit.instID[0];
+        hit.id = {instance == RTC_INVALID_GEOMETRY_ID ? TriangleId::no_instance : instance,
+                  rayhit.hit.primID};
+    }
     TrianglePoint p;
     if (!exact_point(g, hit.id, origin, direction, p)) return false;
     hit.t = p.t;
@@ -145,7 +194,11 @@ bool triangle_blocks(const TriangleGeometry& g, const Vec3& origin, const Vec3& 
                      double t_min, double t_max, const Departure& from) {
     TriangleQuery q = query(g, origin, direction, t_min, t_max, from);
     RTCRay ray;
-    set_float_ray(ray, origin, direction, t_min, t_max);
+    bool walk = false;
+    if (!embree_ray(q, ray, walk)) {
+        TriangleId any;
+        return walk && nearest_by_testing_all(q, any, true);
+    }
     rtcOccluded1(g.scene, &q.context, &ray);
     return ray.tfar < 0.0f;
 }

@@ -435,11 +435,21 @@ constexpr const TransformOpSpec& transform_op(TransformKind kind) {
     return schema_detail::kTransformOps[0];  // never: every kind has an entry
 }
 
+// Whether two names are the same. Names of a block share a few lengths
+// (pigment, ambient, diffuse): the length and the first byte decide most,
+// and the few bytes of a match are compared here, not by a call to memcmp.
+constexpr bool same_name(std::string_view a, std::string_view b) {
+    if (a.size() != b.size()) return false;
+    for (std::size_t i = 0; i < a.size(); ++i)
+        if (a[i] != b[i]) return false;
+    return true;
+}
+
 // The property named `name` (or aliased so) in a block, or nullptr.
 template <class Block>
 constexpr const PropertySpec<Block>* find_property(std::string_view name) {
     for (const PropertySpec<Block>& p : schema_of<Block>().properties)
-        if (p.name == name || (!p.alias.empty() && p.alias == name)) return &p;
+        if (same_name(p.name, name) || (!p.alias.empty() && same_name(p.alias, name))) return &p;
     return nullptr;
 }
 

@@ -125,7 +125,7 @@ bool is_function_name(std::string_view name) {
 void ExpressionReader::take() {
     const Token& t = tokens_.cur();
     end_offset_ = static_cast<std::uint32_t>(t.offset + t.length);
-    end_pos_ = {t.pos.line, t.pos.column + static_cast<int>(t.length)};
+    end_pos_ = {t.pos.line, t.pos.column + static_cast<int>(t.length), t.pos.file};
     tokens_.advance();
 }
 

@@ -3,6 +3,7 @@
 #include "language/quote.hpp"
 
 #include <array>
+#include <bit>
 #include <charconv>
 #include <cmath>
 #include <cstdint>
@@ -14,7 +15,7 @@ namespace jt::lang {
 
 namespace {
 
-enum CharClass : unsigned char { digit = 1, word_start = 2, number_part = 4 };
+enum CharClass : unsigned char { digit = 1, word_start = 2, number_part = 4, blank = 8 };
 
 constexpr auto char_classes = [] {
     std::array<unsigned char, 256> table{};
@@ -28,6 +29,29 @@ constexpr auto char_classes = [] {
     table['.'] = number_part;
     table['e'] |= number_part;
     table['E'] |= number_part;
+    // What skip_space_and_comments skips.
+    for (char c : {' ', '\t', '\r', '\n', '#'}) table[static_cast<unsigned char>(c)] = blank;
+    return table;
+}();
+
+// The token each byte that is a token alone makes; `end` for the others.
+constexpr auto single_byte_tokens = [] {
+    std::array<TokenKind, 256> table{};
+    table.fill(TokenKind::end);
+    table['{'] = TokenKind::lbrace;
+    table['}'] = TokenKind::rbrace;
+    table[':'] = TokenKind::colon;
+    table[';'] = TokenKind::semicolon;
+    table['<'] = TokenKind::less;
+    table['>'] = TokenKind::greater;
+    table[','] = TokenKind::comma;
+    table['='] = TokenKind::equals;
+    table['('] = TokenKind::lparen;
+    table[')'] = TokenKind::rparen;
+    table['+'] = TokenKind::plus;
+    table['-'] = TokenKind::minus;
+    table['*'] = TokenKind::star;
+    table['/'] = TokenKind::slash;
     return table;
 }();
 
@@ -46,6 +70,9 @@ bool is_word_char(char c) {
 bool is_number_char(char c) {
     return has_class(c, number_part);
 }
+bool starts_blank_or_comment(char c) {
+    return has_class(c, blank);
+}
 
 void set(Token& out, TokenKind kind, std::string_view text, std::size_t offset, std::size_t length,
          SourcePos pos) {
@@ -63,13 +90,34 @@ std::string byte_name(unsigned char c) {
     return buf;
 }
 
+// The spaces at `i`, eight at a time while eight remain: indentation is the
+// most of the blank bytes people's scenes hold.
+std::size_t skip_spaces(std::string_view text, std::size_t i) {
+    constexpr std::uint64_t spaces = 0x2020202020202020ull;
+    while (i + 8 <= text.size()) {
+        std::uint64_t w;
+        std::memcpy(&w, text.data() + i, 8);
+        const std::uint64_t other = w ^ spaces;  // nonzero in the bytes that are not spaces
+        if (other != 0) {
+            if constexpr (std::endian::native == std::endian::little)
+                return i + static_cast<std::size_t>(std::countr_zero(other)) / 8;
+            break;
+        }
+        i += 8;
+    }
+    while (i < text.size() && text[i] == ' ') ++i;
+    return i;
+}
+
 }  // namespace
 
 void Lexer::skip_space_and_comments() {
     const std::size_t n = text_.size();
     while (at_ < n) {
         char c = text_[at_];
-        if (c == ' ' || c == '\t' || c == '\r') {
+        if (c == ' ') {
+            at_ = skip_spaces(text_, at_ + 1);
+        } else if (c == '\t' || c == '\r') {
             ++at_;
         } else if (c == '\n') {
             ++at_;
@@ -85,71 +133,31 @@ void Lexer::skip_space_and_comments() {
 }
 
 void Lexer::next(Token& out) {
-    skip_space_and_comments();
+    // Most tokens follow another directly, or one blank: skip the call then.
+    if (at_ < text_.size() && starts_blank_or_comment(text_[at_])) skip_space_and_comments();
     while (!sink_.stopped() && at_ < text_.size()) {
         const std::size_t start = at_;
         const char c = text_[start];
-        auto single = [&](TokenKind kind) {
-            ++at_;
-            set(out, kind, text_.substr(start, 1), start, 1, pos_of(start));
-        };
-        switch (c) {
-            case '{':
-                single(TokenKind::lbrace);
-                return;
-            case '}':
-                single(TokenKind::rbrace);
-                return;
-            case ':':
-                single(TokenKind::colon);
-                return;
-            case ';':
-                single(TokenKind::semicolon);
-                return;
-            case '<':
-                single(TokenKind::less);
-                return;
-            case '>':
-                single(TokenKind::greater);
-                return;
-            case ',':
-                single(TokenKind::comma);
-                return;
-            case '=':
-                single(TokenKind::equals);
-                return;
-            case '(':
-                single(TokenKind::lparen);
-                return;
-            case ')':
-                single(TokenKind::rparen);
-                return;
-            case '+':
-                single(TokenKind::plus);
-                return;
-            case '-':
-                single(TokenKind::minus);
-                return;
-            case '*':
-                single(TokenKind::star);
-                return;
-            case '/':
-                single(TokenKind::slash);
-                return;
-            case '"':
-                lex_string(start, out);
-                return;
-            default:
-                break;
-        }
-        if (is_digit(c) || c == '.') {
-            lex_number(start, out);
-            return;
-        }
+        // Words first, then the one-byte tokens from a table: a switch's
+        // jump, taken to a different place each token, was mispredicted.
         if (is_word_start(c)) {
             while (at_ < text_.size() && is_word_char(text_[at_])) ++at_;
             set(out, TokenKind::word, text_.substr(start, at_ - start), start, at_ - start,
                 pos_of(start));
+            return;
+        }
+        if (const TokenKind kind = single_byte_tokens[static_cast<unsigned char>(c)];
+            kind != TokenKind::end) {
+            ++at_;
+            set(out, kind, text_.substr(start, 1), start, 1, pos_of(start));
+            return;
+        }
+        if (c == '"') {
+            lex_string(start, out);
+            return;
+        }
+        if (is_digit(c) || c == '.') {
+            lex_number(start, out);
             return;
         }
         auto u = static_cast<unsigned char>(c);
@@ -170,15 +178,17 @@ namespace {
 
 enum class NumberScan { malformed, exact, needs_library };
 
+// Exact doubles: Clinger's fast path divides or multiplies by one of them.
+constexpr double powers_of_ten[] = {1e0,  1e1,  1e2,  1e3,  1e4,  1e5,  1e6,  1e7,
+                                    1e8,  1e9,  1e10, 1e11, 1e12, 1e13, 1e14, 1e15,
+                                    1e16, 1e17, 1e18, 1e19, 1e20, 1e21, 1e22};
+
 // One pass over a number-like run: checks the grammar
 //   (digits ('.' digits?)? | '.' digits) (('e'|'E') sign? digits)?
 // and computes the value on Clinger's fast path: at most 15 significant digits
 // and a power of ten up to 22 make m / 10^k or m * 10^k one correctly rounded
 // operation, the same double std::from_chars gives. Other numbers need the library.
 NumberScan scan_number(std::string_view s, double& out) {
-    static constexpr double powers[] = {1e0,  1e1,  1e2,  1e3,  1e4,  1e5,  1e6,  1e7,
-                                        1e8,  1e9,  1e10, 1e11, 1e12, 1e13, 1e14, 1e15,
-                                        1e16, 1e17, 1e18, 1e19, 1e20, 1e21, 1e22};
     const std::size_t n = s.size();
     std::size_t i = 0;
     std::uint64_t mantissa = 0;
@@ -215,54 +225,151 @@ NumberScan scan_number(std::string_view s, double& out) {
     if (i != n) return NumberScan::malformed;
     if (significant > 15 || scale < -22 || scale > 22) return NumberScan::needs_library;
     double value = static_cast<double>(mantissa);
-    value = scale < 0 ? value / powers[-scale] : value * powers[scale];
+    value = scale < 0 ? value / powers_of_ten[-scale] : value * powers_of_ten[scale];
     out = value;
     return NumberScan::exact;
 }
 
 }  // namespace
 
-std::size_t Lexer::plain_vector(std::size_t offset, Vec3& out) const {
-    const std::size_t n = text_.size();
-    std::size_t i = offset + 1;
-    auto skip_blanks = [&] {
-        while (i < n && (text_[i] == ' ' || text_[i] == '\t' || text_[i] == '\r')) ++i;
-    };
-    double parts[3];
-    for (int k = 0; k < 3; ++k) {
-        skip_blanks();
-        if (k > 0) {
-            if (i >= n || text_[i] != ',') return 0;
-            ++i;
-            skip_blanks();
+namespace {
+
+bool is_blank(char c) {
+    return c == ' ' || c == '\t' || c == '\r';
+}
+
+void skip_blanks(std::string_view s, std::size_t& i) {
+    while (i < s.size() && is_blank(s[i])) ++i;
+}
+
+// The number at `i`, in one pass, when lex_number would take it as one
+// token and scan_number would give it exactly: the same grammar, the same
+// mantissa and scale, the same division or product. False for anything else
+// (malformed, or needing the library), which the tokens then read and report.
+bool read_exact_number(std::string_view s, std::size_t& i, double& out) {
+    const std::size_t n = s.size();
+    std::size_t k = i;
+    std::uint64_t mantissa = 0;
+    std::size_t digits = 0, significant = 0;
+    std::int64_t scale = 0;
+    // Zeros before the first other digit are not significant.
+    const std::size_t leading = k;
+    while (k < n && s[k] == '0') ++k;
+    digits += k - leading;
+    std::size_t first = k;
+    for (; k < n && is_digit(s[k]); ++k)
+        mantissa = mantissa * 10 + static_cast<unsigned>(s[k] - '0');
+    digits += k - first;
+    significant += k - first;
+    if (k < n && s[k] == '.') {
+        ++k;
+        if (mantissa == 0) {
+            const std::size_t zeros = k;
+            while (k < n && s[k] == '0') ++k;
+            digits += k - zeros;
+            scale -= static_cast<std::int64_t>(k - zeros);
         }
-        bool negative = false;
-        if (i < n && (text_[i] == '-' || text_[i] == '+')) {
-            negative = text_[i] == '-';
-            ++i;
-            skip_blanks();
-        }
-        if (i >= n || !(is_digit(text_[i]) || text_[i] == '.')) return 0;
-        // The run lex_number would take as one token.
-        const std::size_t start = i;
-        while (i < n) {
-            const char c = text_[i];
-            const bool exponent_sign =
-                (c == '+' || c == '-') && i > start && (text_[i - 1] == 'e' || text_[i - 1] == 'E');
-            if (!is_number_char(c) && !exponent_sign) break;
-            ++i;
-        }
-        double value = 0.0;
-        if (scan_number(text_.substr(start, i - start), value) != NumberScan::exact) return 0;
-        parts[k] = negative ? -value : value;
+        first = k;
+        for (; k < n && is_digit(s[k]); ++k)
+            mantissa = mantissa * 10 + static_cast<unsigned>(s[k] - '0');
+        digits += k - first;
+        significant += k - first;
+        scale -= static_cast<std::int64_t>(k - first);
     }
-    skip_blanks();
-    if (i >= n || text_[i] != '>') return 0;
-    const std::size_t end = ++i;
-    skip_blanks();
-    if (i >= n || text_[i] != ';') return 0;
+    if (digits == 0) return false;
+    if (k < n && (s[k] == 'e' || s[k] == 'E')) {
+        ++k;
+        bool negative_exponent = false;
+        if (k < n && (s[k] == '+' || s[k] == '-')) negative_exponent = s[k++] == '-';
+        first = k;
+        int exponent = 0;
+        for (; k < n && is_digit(s[k]); ++k) {
+            if (exponent < 100000) exponent = exponent * 10 + (s[k] - '0');
+        }
+        if (k == first) return false;
+        scale += negative_exponent ? -exponent : exponent;
+    }
+    // The lexer's run goes on past the grammar: one malformed number.
+    if (k < n && is_number_char(s[k])) return false;
+    if (significant > 15 || scale < -22 || scale > 22) return false;
+    double value = static_cast<double>(mantissa);
+    value = scale < 0 ? value / powers_of_ten[-scale] : value * powers_of_ten[scale];
+    out = value;
+    i = k;
+    return true;
+}
+
+// At most one sign, blanks, then a number as read_exact_number reads it: what
+// the expression reader takes for a signed literal.
+bool read_signed_number(std::string_view s, std::size_t& i, double& out) {
+    std::size_t k = i;
+    bool negative = false;
+    if (k < s.size() && (s[k] == '-' || s[k] == '+')) {
+        negative = s[k] == '-';
+        ++k;
+        skip_blanks(s, k);
+    }
+    if (k >= s.size() || !(is_digit(s[k]) || s[k] == '.')) return false;
+    double value = 0.0;
+    if (!read_exact_number(s, k, value)) return false;
+    out = negative ? -value : value;
+    i = k;
+    return true;
+}
+
+// At the '<' at `i`: three signed numbers between commas and '>'.
+bool read_plain_vector(std::string_view s, std::size_t& i, Vec3& out) {
+    std::size_t k = i + 1;
+    double parts[3];
+    for (int c = 0; c < 3; ++c) {
+        skip_blanks(s, k);
+        if (c > 0) {
+            if (k >= s.size() || s[k] != ',') return false;
+            ++k;
+            skip_blanks(s, k);
+        }
+        if (!read_signed_number(s, k, parts[c])) return false;
+    }
+    skip_blanks(s, k);
+    if (k >= s.size() || s[k] != '>') return false;
     out = Vec3{parts[0], parts[1], parts[2]};
-    return end;
+    i = k + 1;
+    return true;
+}
+
+// Blanks and a ';' at `i`.
+bool semicolon_follows(std::string_view s, std::size_t i) {
+    skip_blanks(s, i);
+    return i < s.size() && s[i] == ';';
+}
+
+}  // namespace
+
+bool Lexer::read_plain_value(PlainValue& out) {
+    std::size_t i = at_;
+    skip_blanks(text_, i);
+    const std::size_t start = i;
+    if (i < text_.size() && text_[i] == '<') {
+        if (!read_plain_vector(text_, i, out.vector)) return false;
+        out.is_vector = true;
+    } else {
+        if (!read_signed_number(text_, i, out.number)) return false;
+        out.is_vector = false;
+    }
+    out.offset = start;
+    out.length = i - start;
+    skip_blanks(text_, i);
+    if (i >= text_.size() || text_[i] != ';') return false;
+    at_ = i + 1;
+    return true;
+}
+
+std::size_t Lexer::plain_vector(std::size_t offset, Vec3& out) const {
+    std::size_t i = offset;
+    Vec3 vector;
+    if (!read_plain_vector(text_, i, vector) || !semicolon_follows(text_, i)) return 0;
+    out = vector;
+    return i;
 }
 
 void Lexer::lex_number(std::size_t start, Token& token) {

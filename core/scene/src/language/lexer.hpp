@@ -57,11 +57,25 @@ class Lexer {
     // narrow stores, a store-forwarding stall per token (a quarter of a parse).
     void next(Token& out);
 
-    // At the '<' at `offset`: a vector of three plain numbers, each with at
-    // most one sign, written on one line without comments and followed by
-    // ';' (`<0.5, -1, 2e3>;`), as generators write most values. Returns the
-    // offset just past its '>' and sets `out` to the value the expression
-    // reader gives it, or returns 0 for anything else (read it token by token).
+    // A value of plain numbers, read by read_plain_value without tokens.
+    struct PlainValue {
+        bool is_vector = false;
+        double number = 0.0;     // when !is_vector
+        Vec3 vector{0.0};        // when is_vector
+        std::size_t offset = 0;  // of its first byte: its sign, its first digit or '<'
+        std::size_t length = 0;
+    };
+    // From just past the last token read (a property's ':'): a number with at
+    // most one sign, or a vector of three such (`<0.5, -1, 2e3>`), written on
+    // that line without comments and followed by ';' on it, as generators and
+    // people write most values. Sets `out` to what the tokens and the
+    // expression reader make of it and continues after the ';'; returns false
+    // and moves nothing for anything else, or for a number the tokens would
+    // read with an error or not on Clinger's fast path (read those by tokens).
+    bool read_plain_value(PlainValue& out);
+    // At the '<' at `offset` (anywhere on the line of the last token read):
+    // the same for a vector, followed by ';'. Returns the offset just past its
+    // '>' and moves nothing, or returns 0.
     std::size_t plain_vector(std::size_t offset, Vec3& out) const;
     // Continues from `offset`, on the line of the last token read.
     void skip_to(std::size_t offset) { at_ = offset; }

@@ -22,6 +22,7 @@
 #include <algorithm>
 #include <array>
 #include <cstdint>
+#include <cstring>
 #include <deque>
 #include <limits>
 #include <new>
@@ -46,13 +47,15 @@ std::optional<Shape> shape_of_keyword(std::string_view word) {
         return std::nullopt;
     } else {
         using Alternative = std::variant_alternative_t<I, Shape>;
-        if (word == schema_of<Alternative>().keyword) return Shape(Alternative{});
+        if (same_name(word, schema_of<Alternative>().keyword)) return Shape(Alternative{});
         return shape_of_keyword<I + 1>(word);
     }
 }
 
 bool contains(std::span<const std::string_view> names, std::string_view word) {
-    return std::find(names.begin(), names.end(), word) != names.end();
+    for (std::string_view name : names)
+        if (same_name(name, word)) return true;
+    return false;
 }
 
 // Offsets fit in 32 bits: parse_scene refuses texts of 4 GiB or more.
@@ -64,7 +67,7 @@ TextSpan span_of(const Token& t) {
 // schema's literals rather than at the text.
 std::string_view static_keyword(std::string_view word) {
     for (std::string_view k : block_keywords())
-        if (k == word) return k;
+        if (same_name(k, word)) return k;
     return {};  // never: blocks are opened only at a known keyword
 }
 
@@ -88,19 +91,62 @@ IndexRange append_records(std::vector<T>& all, std::span<const T> items) {
     return range;
 }
 
+// The '{' and ':' of a text, counted in one pass eight bytes at a time: the
+// upper bounds below size the scene's arrays once, and two byte-by-byte counts
+// were 8% of a dense parse.
+struct BraceAndColonCount {
+    std::size_t braces = 0;
+    std::size_t colons = 0;
+};
+
+BraceAndColonCount count_braces_and_colons(std::string_view text) {
+    constexpr std::uint64_t ones = 0x0101010101010101ull, lows = 0x7F7F7F7F7F7F7F7Full;
+    // 0x01 in each byte of `w` equal to `byte`, 0 in the others.
+    auto matches = [](std::uint64_t w, unsigned char byte) {
+        const std::uint64_t x = w ^ (ones * byte);
+        return (~(((x & lows) + lows) | x | lows)) >> 7;
+    };
+    // The sum of the eight byte counters of `lanes`, each at most 255.
+    auto sum = [](std::uint64_t lanes) {
+        constexpr std::uint64_t even = 0x00FF00FF00FF00FFull;
+        const std::uint64_t pairs = (lanes & even) + ((lanes >> 8) & even);
+        return static_cast<std::size_t>((pairs * 0x0001000100010001ull) >> 48);
+    };
+    constexpr std::size_t words_per_flush = 255;  // a byte counter holds 255
+    BraceAndColonCount count;
+    const char* p = text.data();
+    std::size_t left = text.size();
+    while (left >= 8) {
+        const std::size_t words = std::min(left / 8, words_per_flush);
+        std::uint64_t braces = 0, colons = 0;
+        for (std::size_t k = 0; k < words; ++k, p += 8) {
+            std::uint64_t w;
+            std::memcpy(&w, p, 8);
+            braces += matches(w, '{');
+            colons += matches(w, ':');
+        }
+        count.braces += sum(braces);
+        count.colons += sum(colons);
+        left -= words * 8;
+    }
+    for (; left > 0; --left, ++p) {
+        count.braces += *p == '{';
+        count.colons += *p == ':';
+    }
+    return count;
+}
+
 // An upper bound on the primitives a text can hold (each has a '{'), capped by
 // its size, so that the scene's arrays are sized once instead of growing by
 // copies: for a million spheres those copies cost more than the parsing.
-std::size_t primitive_count_hint(std::string_view text) {
+std::size_t primitive_count_hint(std::string_view text, const BraceAndColonCount& count) {
     constexpr std::size_t bytes_per_primitive_at_least = 32;  // a hint, not a limit
-    auto braces = static_cast<std::size_t>(std::count(text.begin(), text.end(), '{'));
-    return std::min(braces, text.size() / bytes_per_primitive_at_least);
+    return std::min(count.braces, text.size() / bytes_per_primitive_at_least);
 }
 
 // The same for property records: each has a ':' and takes 4 bytes at least.
-std::size_t property_count_hint(std::string_view text) {
-    auto colons = static_cast<std::size_t>(std::count(text.begin(), text.end(), ':'));
-    return std::min(colons, text.size() / 4);
+std::size_t property_count_hint(std::string_view text, const BraceAndColonCount& count) {
+    return std::min(count.colons, text.size() / 4);
 }
 
 // Copies into `to` each material property whose bit is clear in `kept`.
@@ -118,7 +164,7 @@ std::uint32_t material_mask(std::span<const PropertySource> records) {
     std::uint32_t mask = 0;
     for (const PropertySource& p : records)
         for (std::size_t i = 0; i < properties.size() && i < 32; ++i)
-            if (properties[i].name == p.name) mask |= 1u << i;
+            if (same_name(properties[i].name, p.name)) mask |= 1u << i;
     return mask;
 }
 
@@ -136,7 +182,6 @@ class Parser final : private TokenCursor {
           reader_(sink_),
           include_(options),
           expressions_(*this, sink_, names_, options.clock),
-          primitive_hint_(primitives ? primitive_count_hint(text) : 0),
           source_map_(options.source_map),
           keep_primitives_(primitives),
           record_readings_(options.record_primitive_readings && primitives),
@@ -144,9 +189,13 @@ class Parser final : private TokenCursor {
                            options.earlier->text == text
                        ? options.earlier
                        : nullptr) {
-        if (source_map_ && keep_primitives_) {
-            reserve_records(result_.source.properties, property_count_hint(text));
-            reserve_records(result_.source.children, primitive_hint_);
+        if (keep_primitives_) {
+            const BraceAndColonCount count = count_braces_and_colons(text);
+            primitive_hint_ = primitive_count_hint(text, count);
+            if (source_map_) {
+                reserve_records(result_.source.properties, property_count_hint(text, count));
+                reserve_records(result_.source.children, primitive_hint_);
+            }
         }
         set_command_line_names(options);
         lexer_.next(*cur_);
@@ -259,7 +308,8 @@ class Parser final : private TokenCursor {
             v.number = cur_->number;
             v.text = cur_->text;
             v.span = span_of(*cur_);
-            v.end = {cur_->pos.line, cur_->pos.column + static_cast<int>(cur_->length)};
+            v.end = {cur_->pos.line, cur_->pos.column + static_cast<int>(cur_->length),
+                     cur_->pos.file};
             advance();
             return v;
         }
@@ -271,7 +321,8 @@ class Parser final : private TokenCursor {
                 v.form = Value::Form::vector;
                 v.vector = vector;
                 v.span = {static_cast<std::uint32_t>(cur_->offset), length, cur_->pos};
-                v.end = {cur_->pos.line, cur_->pos.column + static_cast<int>(length)};
+                v.end = {cur_->pos.line, cur_->pos.column + static_cast<int>(length),
+                         cur_->pos.file};
                 reading_->skip_to(end);
                 reading_->next(*cur_);
                 reading_->next(*next_);
@@ -305,10 +356,44 @@ class Parser final : private TokenCursor {
         return v;
     }
 
+    // At a property's ':': a value of plain numbers followed by ';', read by the
+    // lexer in one scan (lexer.hpp), into what read_value would make of it.
+    // False, with nothing consumed, for anything else. Most values of most
+    // scenes are such: their tokens and the expression reader are the most of
+    // a parse. A stopped sink ends the tokens, so it ends this path too.
+    bool read_plain_value(Value& v) {
+        if (sink_.stopped()) return false;
+        Lexer::PlainValue plain;
+        if (!reading_->read_plain_value(plain)) return false;
+        const Token& colon = *next_;  // the value is on its line
+        const SourcePos pos{colon.pos.line,
+                            colon.pos.column + static_cast<int>(plain.offset - colon.offset),
+                            colon.pos.file};
+        const auto length = static_cast<std::uint32_t>(plain.length);
+        if (plain.is_vector) {
+            v.form = Value::Form::vector;
+            v.vector = plain.vector;
+            v.number = 0.0;
+            v.text = {};
+        } else {
+            v.form = Value::Form::number;
+            v.number = plain.number;
+            v.vector = Vec3{0.0};
+            v.text = text_.substr(plain.offset, plain.length);
+        }
+        v.span = {static_cast<std::uint32_t>(plain.offset), length, pos};
+        v.end = {pos.line, pos.column + static_cast<int>(length), pos.file};
+        v.origin = ValueOrigin::literal;
+        reading_->next(*cur_);
+        reading_->next(*next_);
+        return true;
+    }
+
     // name ':' value ';' -- on success `property` holds it and the ';' is consumed.
     bool read_property(Property& property) {
         property.name = cur_->text;
         property.name_span = span_of(*cur_);
+        if (next_->kind == TokenKind::colon && read_plain_value(property.value)) return true;
         advance();
         if (!at(TokenKind::colon)) {
             sink_.error(cur_->pos, "expected ':' after '" + std::string(property.name) + "', got " +
@@ -404,7 +489,7 @@ class Parser final : private TokenCursor {
                                     "the file");
                     return;
                 case TokenKind::word:
-                    if (cur_->text == kIncludeKeyword && next_->kind != TokenKind::colon &&
+                    if (next_->kind != TokenKind::colon && same_name(cur_->text, kIncludeKeyword) &&
                         (block.keyword == kCamerasKeyword || block.keyword == kSceneKeyword)) {
                         parse_include(
                             [&] { parse_body(block, child_names, on_property, on_child, true); });
@@ -413,9 +498,8 @@ class Parser final : private TokenCursor {
                     if (top_level_only()) break;
                     if (next_->kind == TokenKind::lbrace || contains(child_names, cur_->text)) {
                         on_child();
-                    } else {
-                        Property property;
-                        if (read_property(property)) on_property(property);
+                    } else if (read_property(property_)) {
+                        on_property(property_);
                     }
                     break;
                 case TokenKind::bad_value:  // already reported by the lexer
@@ -440,9 +524,9 @@ class Parser final : private TokenCursor {
     // At `define` or `include` inside a block: an error at the keyword (a
     // property of that name, with ':', is left to the block).
     bool top_level_only() {
-        const bool define = cur_->text == kDefineKeyword;
-        if ((!define && cur_->text != kIncludeKeyword) || next_->kind == TokenKind::colon)
-            return false;
+        if (next_->kind == TokenKind::colon) return false;
+        const bool define = same_name(cur_->text, kDefineKeyword);
+        if (!define && !same_name(cur_->text, kIncludeKeyword)) return false;
         if (define) {
             sink_.error(cur_->pos, "'define' may stand only at the top level, outside every block");
             skip_statement();
@@ -580,7 +664,8 @@ class Parser final : private TokenCursor {
                 parse_define();
             } else if (at(TokenKind::word) && cur_->text == kIncludeKeyword) {
                 parse_include([&] { parse_file(); });
-            } else if (at(TokenKind::word) && cur_->text == schema_of<Material>().keyword &&
+            } else if (at(TokenKind::word) &&
+                       same_name(cur_->text, schema_of<Material>().keyword) &&
                        next_->kind != TokenKind::lbrace) {
                 parse_named_material();
             } else if (at(TokenKind::word)) {
@@ -648,7 +733,7 @@ class Parser final : private TokenCursor {
         if (source_map_) reserve_records(primitive_sources, hint);
         parse_body(block, scene_blocks(), only_blocks(block, scene_blocks()), [&] {
             std::string_view kind = cur_->text;
-            if (kind == schema_of<PointLight>().keyword) {
+            if (same_name(kind, schema_of<PointLight>().keyword)) {
                 BlockSource light_block;
                 PointLight light;
                 if (!parse_property_block(light_block, 0, light)) return;
@@ -731,7 +816,7 @@ class Parser final : private TokenCursor {
             [&] {
                 BlockSource child;
                 bool opened;
-                if (cur_->text == schema_of<Material>().keyword &&
+                if (same_name(cur_->text, schema_of<Material>().keyword) &&
                     next_->kind == TokenKind::colon) {
                     const SourcePos at = cur_->pos;
                     if (const Symbol* found = read_material_reference()) {
@@ -750,17 +835,18 @@ class Parser final : private TokenCursor {
                     }
                     return;
                 }
-                if (cur_->text == schema_of<Material>().keyword && next_->kind == TokenKind::word) {
+                if (same_name(cur_->text, schema_of<Material>().keyword) &&
+                    next_->kind == TokenKind::word) {
                     sink_.error(cur_->pos,
                                 "a named material is defined at the top level; inside a "
                                 "primitive, write 'material: NAME;' to use one");
                     skip_block();
                     return;
                 }
-                if (cur_->text == schema_of<Material>().keyword) {
+                if (same_name(cur_->text, schema_of<Material>().keyword)) {
                     opened = parse_property_block(child, 1, primitive.material);
                     own_material |= material_mask(property_buffers_[1]);
-                } else if (cur_->text == kTransformKeyword) {
+                } else if (same_name(cur_->text, kTransformKeyword)) {
                     opened = parse_property_block(child, 1, primitive.transforms);
                 } else {
                     unknown_block("in '" + std::string(block.keyword) + "'", primitive_blocks());
@@ -1024,13 +1110,16 @@ class Parser final : private TokenCursor {
     Token* cur_ = &tokens_[0];   // the token at hand
     Token* next_ = &tokens_[1];  // one token of lookahead
     ParseResult result_;
-    std::size_t primitive_hint_;
+    std::size_t primitive_hint_ = 0;
     bool source_map_;  // false: records are still made (for messages) but not kept
     bool keep_primitives_;
     bool record_readings_;
     EarlierParse* earlier_;      // null: read every primitive
     bool in_primitive_ = false;  // reading a primitive's block
     std::array<std::vector<PropertySource>, 2> property_buffers_;
+    // The property being read, reused: read_property sets all of it, and a
+    // fresh one cleared 136 bytes per property first.
+    Property property_;
 };
 
 }  // namespace

@@ -119,7 +119,8 @@ void PropertyReader::apply_block(Block& target, OpenBlock& block, const Property
         return;
     }
     if (!read(*spec, p, target)) return;
-    if (p.name != spec->name) {
+    // Only a name with an alias can have been found by another name.
+    if (!spec->alias.empty() && p.name != spec->name) {
         sink_.warning(p.name_span.pos, quote(p.name) + " inside a " + std::string(schema.noun) +
                                            " is read as " + quote(spec->name) + "; write " +
                                            std::string(spec->name) + ": " + as_written(p.value) +
@@ -130,15 +131,15 @@ void PropertyReader::apply_block(Block& target, OpenBlock& block, const Property
 
 int FirstLines::find(std::string_view name) const {
     for (std::size_t i = 0; i < count_; ++i)
-        if (inline_[i].first == name) return inline_[i].second;
+        if (same_name({inline_[i].name, inline_[i].size}, name)) return inline_[i].line;
     for (const auto& [known, line] : more_)
-        if (known == name) return line;
+        if (same_name(known, name)) return line;
     return 0;
 }
 
 void FirstLines::add(std::string_view name, int line) {
     if (count_ < inline_capacity)
-        inline_[count_++] = {name, line};
+        inline_[count_++] = {name.data(), name.size(), line};
     else
         more_.emplace_back(name, line);
 }
@@ -178,7 +179,7 @@ void PropertyReader::apply(PointLight& light, OpenBlock& block, const Property& 
 void PropertyReader::apply(std::vector<TransformOp>& transforms, OpenBlock& block,
                            const Property& p) {
     for (const TransformOpSpec& op_spec : transform_ops()) {
-        if (p.name != op_spec.property.name) continue;
+        if (!same_name(p.name, op_spec.property.name)) continue;
         TransformOp op;
         op.kind = op_spec.kind;
         if (!read(op_spec.property, p, op)) return;

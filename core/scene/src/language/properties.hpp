@@ -8,7 +8,7 @@
 #include "jtracer/source_map.hpp"
 #include "language/diagnostic_sink.hpp"
 
-#include <array>
+#include <cstddef>
 #include <span>
 #include <string_view>
 #include <utility>
@@ -40,13 +40,23 @@ struct Property {
 // spheres must not cost a million heap allocations here.
 class FirstLines {
   public:
+    // Provided, so that a value-initialised FirstLines (an OpenBlock's) is not
+    // zeroed first: a block is opened for every primitive and its material,
+    // and clearing the entries cost more than reading most blocks' names.
+    FirstLines() noexcept {}
+
     // The line where `name` was first set, or 0.
     int find(std::string_view name) const;
     void add(std::string_view name, int line);
 
   private:
+    struct Entry {  // trivial, so the array is left unwritten until used
+        const char* name;
+        std::size_t size;
+        int line;
+    };
     static constexpr std::size_t inline_capacity = 12;
-    std::array<std::pair<std::string_view, int>, inline_capacity> inline_{};
+    Entry inline_[inline_capacity];  // the first count_ are set
     std::size_t count_ = 0;
     std::vector<std::pair<std::string_view, int>> more_;  // never used by known names
 };

@@ -62,6 +62,13 @@ RangeCheck<double> check_range(const ValueRange& range, double value) {
 }
 
 RangeCheck<Vec3> check_range(const ValueRange& range, const Vec3& value) {
+    // Every component strictly between the bounds (so finite, and not NaN):
+    // inside, as most vectors are, without the bound-by-bound checks.
+    auto between = [&](double x) { return range.low < x && x < range.high; };
+    if (between(value.x) && between(value.y) && between(value.z)) {
+        if (range.nonzero && value == Vec3(0.0)) return {RangeVerdict::outside, value};
+        return {RangeVerdict::inside, value};
+    }
     RangeCheck<Vec3> result{RangeVerdict::inside, value};
     for (int k = 0; k < 3; ++k) {
         const RangeCheck<double> component = check_range(range, value[k]);

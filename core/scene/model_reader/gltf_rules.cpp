@@ -1,4 +1,4 @@
-#include "io/gltf_rules.hpp"
+#include "model_reader/gltf_rules.hpp"
 
 #include <nlohmann/json.hpp>
 

@@ -1,4 +1,4 @@
-#include "io/model_messages.hpp"
+#include "model_reader/model_messages.hpp"
 
 #include <algorithm>
 #include <string_view>

@@ -11,9 +11,10 @@
 // material; one without a material is numbered after the file's materials.
 // Other formats have no materials: every face is in the part without one.
 
-#include "io/confined_io_system.hpp"
+#include "io/model_reader.hpp"
 #include "jtracer/error.hpp"
 #include "jtracer/model_file.hpp"
+#include "model_reader/confined_io_system.hpp"
 
 #include <assimp/scene.h>
 
@@ -41,8 +42,9 @@ struct MaterialPlan {
 // `gltf_materials`: how many materials a glTF file declares (else unused).
 // Fails, in words to follow the model's name, when a material library the
 // model names cannot be read or a texture cannot be decoded or lies outside
-// the folder the model may read from.
+// the folder the model may read from. Textures are decoded by `host`'s.
 Expected<MaterialPlan> plan_materials(const aiScene& scene, const std::filesystem::path& file,
-                                      const ConfinedIOSystem& io, std::uint64_t gltf_materials);
+                                      const ConfinedIOSystem& io, std::uint64_t gltf_materials,
+                                      const ModelReaderHost& host);
 
 }  // namespace jt

@@ -1,4 +1,4 @@
-#include "io/confined_io_system.hpp"
+#include "model_reader/confined_io_system.hpp"
 
 #include "jtracer/model_file.hpp"
 

@@ -26,7 +26,7 @@ class ConfinedIOSystem : public Assimp::DefaultIOSystem {
 
     // The material libraries (.mtl) opened, in order, and why the first that
     // could not be opened was not ("" when none failed): the model's
-    // materials are read from them (io/model_materials.hpp).
+    // materials are read from them (model_reader/model_materials.hpp).
     const std::vector<std::filesystem::path>& libraries() const { return libraries_; }
     const std::string& library_failure() const { return library_failure_; }
 

@@ -1,4 +1,4 @@
-#include "io/model_materials.hpp"
+#include "model_reader/model_materials.hpp"
 
 #include "io/file_bytes.hpp"
 #include "jtracer/texture.hpp"
@@ -219,11 +219,12 @@ class PartList {
 // and decoded (and cached) as image maps are.
 Expected<std::shared_ptr<const Texture>> texture_file(const std::filesystem::path& path,
                                                       const std::string& name,
-                                                      const ConfinedIOSystem& io) {
+                                                      const ConfinedIOSystem& io,
+                                                      const ModelReaderHost& host) {
     if (!io.contains(path))
         return Error{"its texture '" + name + "' lies outside the folder '" + io.folder().string() +
                      "'"};
-    Expected<std::shared_ptr<const Texture>> texture = load_texture(path);
+    Expected<std::shared_ptr<const Texture>> texture = host.load_texture(path);
     if (!texture) return Error{"its texture '" + name + "': " + texture.error().message};
     return texture;
 }
@@ -231,12 +232,13 @@ Expected<std::shared_ptr<const Texture>> texture_file(const std::filesystem::pat
 // A texture inside the file (a .glb's or a data URI's image): compressed
 // bytes, or (formats of old) texels given as they are, top row first.
 Expected<std::shared_ptr<const Texture>> embedded_texture(const aiTexture& embedded,
-                                                          const std::string& name) {
+                                                          const std::string& name,
+                                                          const ModelReaderHost& host) {
     Texture texture;
     if (!embedded.pcData) return Error{"its texture '" + name + "' has no data"};
     if (embedded.mHeight == 0) {
         const auto* bytes = reinterpret_cast<const std::uint8_t*>(embedded.pcData);
-        Expected<Texture> decoded = decode_texture({bytes, embedded.mWidth});
+        Expected<Texture> decoded = host.decode_texture({bytes, embedded.mWidth});
         if (!decoded) return Error{"its texture '" + name + "': " + decoded.error().message};
         texture = std::move(*decoded);
     } else {
@@ -264,7 +266,7 @@ Expected<std::shared_ptr<const Texture>> embedded_texture(const aiTexture& embed
 }
 
 Expected<MaterialPlan> obj_plan(const aiScene& scene, const std::filesystem::path& file,
-                                const ConfinedIOSystem& io) {
+                                const ConfinedIOSystem& io, const ModelReaderHost& host) {
     if (!io.library_failure().empty()) return Error{io.library_failure()};
     Expected<std::map<std::string, LibraryMaterial>> library = read_libraries(io.libraries());
     if (!library) return library.error();
@@ -323,7 +325,7 @@ Expected<MaterialPlan> obj_plan(const aiScene& scene, const std::filesystem::pat
     for (ModelPart& part : plan.parts) {
         if (part.texture_name.empty()) continue;
         const auto& [name, path] = textures.at(part.name);
-        Expected<std::shared_ptr<const Texture>> texture = texture_file(path, name, io);
+        Expected<std::shared_ptr<const Texture>> texture = texture_file(path, name, io, host);
         if (!texture) return texture.error();
         part.texture = std::move(*texture);
     }
@@ -331,7 +333,8 @@ Expected<MaterialPlan> obj_plan(const aiScene& scene, const std::filesystem::pat
 }
 
 Expected<MaterialPlan> gltf_plan(const aiScene& scene, const std::filesystem::path& file,
-                                 const ConfinedIOSystem& io, std::uint64_t gltf_materials) {
+                                 const ConfinedIOSystem& io, std::uint64_t gltf_materials,
+                                 const ModelReaderHost& host) {
     MaterialPlan plan;
     PartList parts;
     plan.face_parts.resize(scene.mNumMeshes);
@@ -367,13 +370,13 @@ Expected<MaterialPlan> gltf_plan(const aiScene& scene, const std::filesystem::pa
             if (const aiTexture* embedded = scene.GetEmbeddedTexture(uri.c_str())) {
                 part.texture_name = "embedded image " + uri.substr(uri.rfind('*') + 1);
                 Expected<std::shared_ptr<const Texture>> decoded =
-                    embedded_texture(*embedded, part.texture_name);
+                    embedded_texture(*embedded, part.texture_name, host);
                 if (!decoded) return decoded.error();
                 part.texture = std::move(*decoded);
             } else if (!uri.empty()) {
                 part.texture_name = uri;
                 Expected<std::shared_ptr<const Texture>> read =
-                    texture_file(file.parent_path() / uri, uri, io);
+                    texture_file(file.parent_path() / uri, uri, io, host);
                 if (!read) return read.error();
                 part.texture = std::move(*read);
             }
@@ -387,13 +390,14 @@ Expected<MaterialPlan> gltf_plan(const aiScene& scene, const std::filesystem::pa
 }  // namespace
 
 Expected<MaterialPlan> plan_materials(const aiScene& scene, const std::filesystem::path& file,
-                                      const ConfinedIOSystem& io, std::uint64_t gltf_materials) {
+                                      const ConfinedIOSystem& io, std::uint64_t gltf_materials,
+                                      const ModelReaderHost& host) {
     const std::string ext = lower(file.extension().string());
     Expected<MaterialPlan> plan = MaterialPlan{};
     if (ext == ".obj")
-        plan = obj_plan(scene, file, io);
+        plan = obj_plan(scene, file, io, host);
     else if (ext == ".gltf" || ext == ".glb")
-        plan = gltf_plan(scene, file, io, gltf_materials);
+        plan = gltf_plan(scene, file, io, gltf_materials, host);
     else {
         plan->parts.emplace_back();
         plan->face_parts.assign(scene.mNumMeshes, {0});

@@ -1,0 +1,126 @@
+// prepare_scene(Scene&&): a scene handed over is kept by the prepared scene,
+// which reads each primitive's material where the scene holds it once a copy
+// would be large, and renders the same bytes as a preparation that copies.
+
+#include "random_scene.hpp"
+#include "render/prepared_scene.hpp"
+#include "scene_builder.hpp"
+
+#include <gtest/gtest.h>
+
+#include <cstdint>
+
+namespace jt::test {
+namespace {
+
+Image8 render_prepared(const std::shared_ptr<const PreparedScene>& prepared, const Scene& scene) {
+    RenderOptions options = render_options_for(scene);
+    options.threads = 2;
+    return render_image(prepared, options);
+}
+
+// Mirrors, glass and plain spheres of distinct colours over a reflective
+// floor: every material term the tracer reads, and shadow rays that look past
+// transmitting surfaces.
+Scene mixed_scene() {
+    Scene s = scene_with_camera(camera_at({0, 4, 10}, {0, 0.5, 0}, {0, 1, 0}, 45.0, 1.0), 48, 48);
+    s.settings.recurse_depth = 4;
+    s.settings.background = {0.1, 0.15, 0.3};
+    s.settings.ambient_light = {0.2, 0.2, 0.2};
+    Material floor = matte({0.6, 0.6, 0.6});
+    floor.reflection = 0.4;
+    s.primitives.push_back(plane({0, 1, 0}, 0.0, floor));
+    for (int i = 0; i < 9; ++i) {
+        Material m = matte({0.1 * i, 0.9 - 0.08 * i, 0.5});
+        m.specular = {0.5, 0.5, 0.5};
+        m.specular_k = 10.0 + 5.0 * i;
+        m.diffuse_k = i % 3 == 0 ? 2.0 : 1.0;
+        if (i % 3 == 1) m.reflection = 0.6;
+        if (i % 3 == 2) {
+            m.transmission = 0.8;
+            m.ior = 1.5;
+        }
+        s.primitives.push_back(sphere({i % 3 * 1.5 - 1.5, 0.5, i / 3 * 1.5 - 2.0}, 0.5, m));
+    }
+    s.lights.push_back({{4, 8, 6}, {0.8, 0.8, 0.7}});
+    s.lights.push_back({{-5, 3, 2}, {0.2, 0.2, 0.4}});
+    return s;
+}
+
+// Appends more distinct materials than prepare_scene copies for a scene
+// handed over, on spheres flattened by a zero scale, which the transform rule
+// leaves out of the picture.
+constexpr int many_materials = 20000;
+Scene with_many_materials(Scene s) {
+    for (int i = 0; i < many_materials; ++i) {
+        Primitive p = sphere({0, 0, 0}, 1.0, matte({double(i) / many_materials, 0.5, 0.5}));
+        p.transforms = {scale({0, 1, 1})};
+        s.primitives.push_back(p);
+    }
+    return s;
+}
+
+TEST(OwnedScene, AFewMaterialsAreStillCopied) {
+    const auto owned = prepare_scene(mixed_scene()).value();
+    EXPECT_FALSE(owned->scene);
+    EXPECT_EQ(owned->materials.size(), mixed_scene().primitives.size());
+}
+
+TEST(OwnedScene, ManyMaterialsAreReadInPlaceWithTheSameBytes) {
+    const Scene scene = with_many_materials(mixed_scene());
+    const auto copied = prepare_scene(scene).value();
+    ASSERT_FALSE(copied->scene);
+    ASSERT_FALSE(copied->materials.empty());
+
+    const auto owned = prepare_scene(Scene(scene)).value();
+    ASSERT_TRUE(owned->scene);
+    EXPECT_EQ(*owned->scene, scene);
+    EXPECT_TRUE(owned->materials.empty());
+    EXPECT_TRUE(owned->material_of.empty());
+    EXPECT_TRUE(owned->has_transmission);
+    EXPECT_EQ(owned->materials_gathered, scene.primitives.size());
+    EXPECT_EQ(render_prepared(owned, scene), render_prepared(copied, scene));
+}
+
+TEST(OwnedScene, RandomScenesRenderTheSameBytes) {
+    for (std::uint64_t seed = 1; seed <= 12; ++seed) {
+        const Scene scene = with_many_materials(random_scene(seed).scene);
+        const auto owned = prepare_scene(Scene(scene)).value();
+        ASSERT_TRUE(owned->scene) << "seed " << seed;
+        EXPECT_EQ(render_prepared(owned, scene),
+                  render_prepared(prepare_scene(scene).value(), scene))
+            << "seed " << seed;
+    }
+}
+
+// A pattern reads pictures and pattern spaces that are parallel to a gathered
+// list, so such a scene is gathered even when handed over.
+TEST(OwnedScene, APatternGathersTheMaterials) {
+    Scene scene = with_many_materials(mixed_scene());
+    scene.primitives[3].material.checker = Colour(0.1, 0.1, 0.1);
+    scene.primitives[3].material.checker_size = 0.2;
+    const auto owned = prepare_scene(Scene(scene)).value();
+    EXPECT_FALSE(owned->scene);
+    EXPECT_FALSE(owned->materials.empty());
+    EXPECT_FALSE(owned->pattern_space.empty());
+    EXPECT_EQ(render_prepared(owned, scene), render_prepared(prepare_scene(scene).value(), scene));
+}
+
+// With no list to patch, an edit after a handed-over scene prepares the whole
+// scene again (its geometry reused): the same bytes as a fresh preparation.
+TEST(OwnedScene, AnEditAfterItPreparesTheWholeScene) {
+    const Scene before = with_many_materials(mixed_scene());
+    const auto previous = prepare_scene(Scene(before)).value();
+    ASSERT_TRUE(previous->scene);
+    Scene after = before;
+    after.primitives[4].material.pigment = {0.95, 0.1, 0.1};
+    const auto edited = prepare_scene_edit(before, after, previous).value();
+    EXPECT_EQ(edited->materials_gathered, after.primitives.size());
+    EXPECT_EQ(edited->geometry, previous->geometry);
+    const Image8 image = render_prepared(edited, after);
+    EXPECT_EQ(image, render_prepared(prepare_scene(after).value(), after));
+    EXPECT_NE(image, render_prepared(previous, before));
+}
+
+}  // namespace
+}  // namespace jt::test
