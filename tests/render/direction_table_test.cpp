@@ -32,7 +32,7 @@ bool blocks(const Geometry& g, std::uint32_t candidate, const Vec3& o, const Vec
     const TransformedShape& s = g.shapes[i];
     Vec3 oo = apply_point(s.to_object, o), dd = apply_vector(s.to_object, d);
     CylinderPart part;
-    double t = s.kind == ShapeKind::sphere
+    double t = s.kind == TransformedShape::Kind::sphere
                    ? intersect_sphere(oo, dd, s.center, s.radius, 0.0, t_max)
                    : intersect_cylinder(oo, dd, s.radius, s.height, 0.0, t_max, part);
     return t != no_hit;

@@ -28,7 +28,7 @@ bool blocks(const Geometry& g, std::uint32_t listed, const ShadowRay& r) {
     const TransformedShape& s = g.shapes[i];
     const Vec3 o = apply_point(s.to_object, r.origin), d = apply_vector(s.to_object, r.direction);
     CylinderPart part;
-    const double t = s.kind == ShapeKind::sphere
+    const double t = s.kind == TransformedShape::Kind::sphere
                          ? intersect_sphere(o, d, s.center, s.radius, r.t_min, r.t_max)
                          : intersect_cylinder(o, d, s.radius, s.height, r.t_min, r.t_max, part);
     return t != no_hit;

@@ -170,7 +170,7 @@ void expect_bvh_agrees_with_brute_force(int count, double extent, int rays, int 
         for (const TransformedShape& s : g.shapes) {
             Vec3 oo = apply_point(s.to_object, o), dd = apply_vector(s.to_object, d);
             CylinderPart part;
-            consider(s.kind == ShapeKind::sphere
+            consider(s.kind == TransformedShape::Kind::sphere
                          ? intersect_sphere(oo, dd, s.center, s.radius, 0.0, no_hit)
                          : intersect_cylinder(oo, dd, s.radius, s.height, 0.0, no_hit, part),
                      s.source);

@@ -57,7 +57,7 @@ void add_sphere(Geometry& g, const Sphere& sphere, const ObjectTransform* transf
     s.normal_matrix = transform->normal_matrix;
     s.center = sphere.center;
     s.radius = sphere.radius;
-    s.kind = ShapeKind::sphere;
+    s.kind = TransformedShape::Kind::sphere;
     s.source = source;
     s.bounds = padded_float_bounds(
         transformed_sphere_box(sphere.center, sphere.radius, transform->to_world), 0.0);
@@ -74,7 +74,7 @@ void add_cylinder(Geometry& g, const Cylinder& cylinder, const ObjectTransform& 
     s.normal_matrix = transform.normal_matrix;
     s.radius = cylinder.radius;
     s.height = cylinder.height;
-    s.kind = ShapeKind::cylinder;
+    s.kind = TransformedShape::Kind::cylinder;
     s.source = source;
     s.bounds = padded_float_bounds(
         transformed_cylinder_box(cylinder.radius, cylinder.height, transform.to_world), 0.0);

@@ -28,17 +28,16 @@ struct WorldSphere {
     std::uint32_t source = 0;
 };
 
-enum class ShapeKind : std::uint8_t { sphere, cylinder };
-
 // A sphere or cylinder defined in object space (sphere: center and radius;
 // cylinder: radius and height) and seen through a non-trivial transform.
 struct TransformedShape {
+    enum class Kind : std::uint8_t { sphere, cylinder };
     Affine to_object;
     glm::dmat3 normal_matrix{1.0};  // inverse transpose of the object-to-world map
     Vec3 center{0.0};
     double radius = 1.0;
     double height = 1.0;
-    ShapeKind kind = ShapeKind::sphere;
+    Kind kind = Kind::sphere;
     std::uint32_t source = 0;
     RTCBounds bounds{};
     // A sphere around the padded box, for rejecting rays cheaply when no BVH

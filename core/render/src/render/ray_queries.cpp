@@ -75,7 +75,7 @@ double shape_distance(const TransformedShape& s, const Vec3& origin, const Vec3&
                       double t_min, double t_max, CylinderPart& part) {
     Vec3 o = apply_point(s.to_object, origin);
     Vec3 d = apply_vector(s.to_object, direction);
-    if (s.kind == ShapeKind::sphere)
+    if (s.kind == TransformedShape::Kind::sphere)
         return intersect_sphere(o, d, s.center, s.radius, t_min, t_max);
     return intersect_cylinder(o, d, s.radius, s.height, t_min, t_max, part);
 }
@@ -428,7 +428,8 @@ bool closest_hit(const Geometry& geometry, const Vec3& origin, const Vec3& direc
     } else {
         const TransformedShape& s = geometry.shapes[q.index];
         Vec3 p = apply_point(s.to_object, origin) + q.t * apply_vector(s.to_object, direction);
-        Vec3 n = s.kind == ShapeKind::sphere ? p - s.center : cylinder_normal(p, q.part);
+        Vec3 n =
+            s.kind == TransformedShape::Kind::sphere ? p - s.center : cylinder_normal(p, q.part);
         hit.normal = s.normal_matrix * n;
     }
     return true;
