@@ -38,7 +38,9 @@ inline bool embree_takes(const Vec3& origin, const Vec3& direction) {
 // direction * 2^-exponent: a distance t along the ray is (t - shift) * 2^exponent
 // along Embree's.
 struct FarRay {
-    enum class Fit { moved, misses, out_of_reach };
+    // as_is: Embree takes the ray unmoved; moved: shift and exponent say how;
+    // misses: nothing Embree holds can be met; out_of_reach: test every surface.
+    enum class Fit { as_is, moved, misses, out_of_reach };
     Fit fit = Fit::moved;
     Vec3 origin{0.0}, direction{0.0};
     double shift = 0.0;
@@ -110,6 +112,24 @@ inline void set_far_ray(RTCRay& ray, const FarRay& far, double t_min, double t_m
     set_float_ray(ray, far.origin, far.direction, 0.0, 0.0);
     ray.tnear = float_down(std::ldexp(t_min - far.shift, far.exponent));
     ray.tfar = far_t_up(far, t_max);
+}
+
+// Sets `ray` to what Embree walks against `scene` for the ray from `origin`
+// along `direction` between t_min and t_max: the ray itself when Embree takes
+// it, else the moved one. The result says which, or that `ray` is not set.
+inline FarRay fit_embree_ray(RTCScene scene, const Vec3& origin, const Vec3& direction,
+                             double t_min, double t_max, RTCRay& ray) {
+    if (embree_takes(origin, direction)) {
+        set_float_ray(ray, origin, direction, t_min, t_max);
+        FarRay as_is;
+        as_is.fit = FarRay::Fit::as_is;
+        return as_is;
+    }
+    RTCBounds bounds;
+    rtcGetSceneBounds(scene, &bounds);
+    const FarRay far = fit_far_ray(origin, direction, t_min, t_max, bounds);
+    if (far.fit == FarRay::Fit::moved) set_far_ray(ray, far, t_min, t_max);
+    return far;
 }
 
 }  // namespace jt

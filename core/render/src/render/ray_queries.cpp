@@ -274,18 +274,12 @@ bool occluded_by_bvh(const Geometry& geometry, const ShadowRay& one, OccluderHin
     q.geometry = &geometry;
     q.rays = &one;
     RTCRay ray;
-    if (embree_takes(one.origin, one.direction)) {
-        set_float_ray(ray, one.origin, one.direction, one.t_min, one.t_max);
-    } else {
-        RTCBounds bounds;
-        rtcGetSceneBounds(geometry.bvh, &bounds);
-        const FarRay far = fit_far_ray(one.origin, one.direction, one.t_min, one.t_max, bounds);
-        if (far.fit == FarRay::Fit::misses) return false;
-        if (far.fit == FarRay::Fit::out_of_reach)
-            return occluded_by_testing_all(geometry, one.origin, one.direction, one.t_min,
-                                           one.t_max, blocker);
-        set_far_ray(ray, far, one.t_min, one.t_max);
-    }
+    const FarRay far =
+        fit_embree_ray(geometry.bvh, one.origin, one.direction, one.t_min, one.t_max, ray);
+    if (far.fit == FarRay::Fit::misses) return false;
+    if (far.fit == FarRay::Fit::out_of_reach)
+        return occluded_by_testing_all(geometry, one.origin, one.direction, one.t_min, one.t_max,
+                                       blocker);
     rtcOccluded1(geometry.bvh, &q.context, &ray);
     if (!(ray.tfar < 0.0f)) return false;
     blocker = q.blocker;
@@ -380,21 +374,13 @@ bool closest_hit(const Geometry& geometry, const Vec3& origin, const Vec3& direc
         rayhit.hit.geomID = RTC_INVALID_GEOMETRY_ID;
         rayhit.hit.primID = RTC_INVALID_GEOMETRY_ID;
         rayhit.hit.instID[0] = RTC_INVALID_GEOMETRY_ID;
-        if (embree_takes(origin, direction)) {
-            set_float_ray(rayhit.ray, origin, direction, t_min, q.t);
+        const FarRay far = fit_embree_ray(geometry.bvh, origin, direction, t_min, q.t, rayhit.ray);
+        if (far.fit == FarRay::Fit::out_of_reach) {
+            closest_by_testing_all(q);
+        } else if (far.fit != FarRay::Fit::misses) {
+            if (far.fit == FarRay::Fit::moved) q.far = &far;
             rtcIntersect1(geometry.bvh, &q.context, &rayhit);
-        } else {
-            RTCBounds bounds;
-            rtcGetSceneBounds(geometry.bvh, &bounds);
-            const FarRay far = fit_far_ray(origin, direction, t_min, q.t, bounds);
-            if (far.fit == FarRay::Fit::out_of_reach) {
-                closest_by_testing_all(q);
-            } else if (far.fit == FarRay::Fit::moved) {
-                q.far = &far;
-                set_far_ray(rayhit.ray, far, t_min, q.t);
-                rtcIntersect1(geometry.bvh, &q.context, &rayhit);
-                q.far = nullptr;
-            }
+            q.far = nullptr;
         }
     }
     // Triangles last, no farther than the nearest other surface.

@@ -125,18 +125,10 @@ bool nearest_by_testing_all(const TriangleQuery& q, TriangleId& nearest, bool fi
 // The float ray Embree walks for the query's ray; false when no triangle can
 // be met (out of reach: `walk` says to test them all).
 bool embree_ray(const TriangleQuery& q, RTCRay& ray, bool& walk) {
-    walk = false;
-    if (embree_takes(q.origin, q.direction)) {
-        set_float_ray(ray, q.origin, q.direction, q.t_min, q.t_max);
-        return true;
-    }
-    RTCBounds bounds;
-    rtcGetSceneBounds(q.geometry->scene, &bounds);
-    const FarRay far = fit_far_ray(q.origin, q.direction, q.t_min, q.t_max, bounds);
+    const FarRay far =
+        fit_embree_ray(q.geometry->scene, q.origin, q.direction, q.t_min, q.t_max, ray);
     walk = far.fit == FarRay::Fit::out_of_reach;
-    if (far.fit != FarRay::Fit::moved) return false;
-    set_far_ray(ray, far, q.t_min, q.t_max);
-    return true;
+    return far.fit == FarRay::Fit::as_is || far.fit == FarRay::Fit::moved;
 }
 
 TriangleQuery query(const TriangleGeometry& g, const Vec3& origin, const Vec3& direction,
