@@ -12,6 +12,11 @@ usage: check_silhouettes.py --cli PATH --converter PATH [--tachyon PATH] SCENE.j
 Exit status 0 when the masks agree on at least --min-agreement of the pixels
 (default 0.995; a pixel agrees when the other image shows its colour within one pixel)
 and every colour covers about as many pixels in both, 1 otherwise.
+
+Tachyon aims its rays at pixel corners and JTracer at pixel centres, so Tachyon's mask
+is rendered at twice the size and every other pixel of every other row kept: those are
+the rays through JTracer's pixel centres. Without it, scenes whose primitives are a
+pixel or less across (a million spheres at 320x240) agree on only 92% of the pixels.
 """
 
 import argparse
@@ -35,6 +40,17 @@ def classes(path):
         for x in range(0, width * 3, 3):
             codes.append((row[x + 2] > 127) | (row[x + 1] > 127) << 1 | (row[x] > 127) << 2)
     return width, height, codes
+
+
+def every_other_pixel(mask):
+    """The pixels of a mask rendered at twice the size whose rays pass through the
+    centres of the pixels at the size asked for."""
+    width, height, codes = mask
+    half_width, half_height = width // 2, height // 2
+    kept = bytearray()
+    for y in range(0, 2 * half_height, 2):
+        kept += codes[y * width: y * width + 2 * half_width: 2]
+    return half_width, half_height, kept
 
 
 def compare(a, b):
@@ -88,16 +104,17 @@ def main():
     jt_image, tachyon_image = stem + ".jtracer.bmp", stem + ".tachyon.bmp"
     subprocess.run([args.converter, args.scene, mask_dat, "--silhouette", mask_jts], check=True)
     jt_command = [args.cli, mask_jts, "-o", jt_image, "--threads", str(args.threads), "-q"]
-    tachyon_command = [args.tachyon, mask_dat, "-numthreads", str(args.threads), "-aasamples", "0",
-                       "-format", "BMP", "-o", tachyon_image]
     if args.size:
         width, height = args.size.lower().split("x")
         jt_command += ["--width", width, "--height", height]
-        tachyon_command += ["-res", width, height]
     subprocess.run(jt_command, check=True)
+    jt_mask = classes(jt_image)
+    width, height = jt_mask[0], jt_mask[1]
+    tachyon_command = [args.tachyon, mask_dat, "-numthreads", str(args.threads), "-aasamples", "0",
+                       "-format", "BMP", "-o", tachyon_image, "-res", str(2 * width), str(2 * height)]
     subprocess.run(tachyon_command, check=True, stdout=subprocess.DEVNULL)
 
-    agreement, problems = compare(classes(jt_image), classes(tachyon_image))
+    agreement, problems = compare(jt_mask, every_other_pixel(classes(tachyon_image)))
     verdict = "agree" if agreement >= args.min_agreement and not problems else "DISAGREE"
     print(f"{name}: silhouettes {verdict}: {100 * agreement:.2f}% of pixels show the same primitive "
           f"colour within a pixel ({jt_image}, {tachyon_image})")
