@@ -210,7 +210,12 @@ bool scene_edited(const SceneDocument& doc) {
 
 bool has_unsaved_edits(const SceneDocument& doc) {
     if (doc.draft) return *doc.draft != doc.disk_text;  // a broken file's own text is saved
-    return doc.loaded && (scene_edited(doc) || doc.text != doc.disk_text);
+    if (!doc.loaded) return false;
+    if (scene_edited(doc)) return true;
+    const std::pair key{doc.revision, doc.file_generation};
+    if (!doc.text_changed_at || doc.text_changed_at->first != key)
+        doc.text_changed_at = {key, doc.text != doc.disk_text};
+    return doc.text_changed_at->second;
 }
 
 bool file_changed_on_disk(const SceneDocument& doc, std::string& what) {
