@@ -228,6 +228,9 @@ bool take_finished_load(AppState& state) {
         finish_open(state, done->path, std::move(done->attempt));
     else
         finish_reload(state, std::move(done->attempt));
+    // Only an open without errors comes with a preparation, and such an
+    // open always makes its scene the document's original.
+    if (done->ahead) state.render.renderer.adopt_prepared(std::move(*done->ahead));
     return true;
 }
 
@@ -263,7 +266,7 @@ void resolve_reload(AppState& state, ReloadChoice choice) {
         note_command_edit(state.history, state.doc);
         keep_camera_selection(state.view, state.doc.scene, before);
         // One undo shows the file as it is.
-        state.history.undo.record({state.doc.text, state.doc.original, std::nullopt});
+        state.history.undo.record({state.doc.text, *state.doc.original, std::nullopt});
         state.message = "Reloaded " + name + " and re-applied your edits (not saved yet)";
     } else {
         state.message = "Reloaded " + name + "; your edits were dropped";

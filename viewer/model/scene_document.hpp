@@ -16,6 +16,7 @@
 #include <chrono>
 #include <cstdint>
 #include <filesystem>
+#include <memory>
 #include <optional>
 #include <string>
 #include <utility>
@@ -28,7 +29,10 @@ struct SceneDocument {
     bool loaded = false;    // a good scene is held (from this file or an earlier one)
     std::string text;       // the text `original` and `source` were parsed from
     std::string disk_text;  // the file's bytes as last loaded or saved
-    Scene original;         // the scene as in `text`
+    // The scene as in `text`; shared (never changed in place) so that a
+    // render of the unedited scene and its preparation ahead use it as it is,
+    // without copying 100,000 objects.
+    std::shared_ptr<const Scene> original = std::make_shared<const Scene>();
     SceneSource source;
     Scene scene;                                // as edited in the viewer
     std::vector<Diagnostic> parse_diagnostics;  // the parser's warnings about `text`
@@ -114,7 +118,11 @@ struct LoadAttempt {
     bool read = false;     // the file's bytes were read (ok or not, they are `text`)
     bool missing = false;  // not read because the file is not there
     std::string text;
-    Scene scene;
+    std::shared_ptr<const Scene> scene = std::make_shared<const Scene>();
+    // A copy of `scene` made on the loader's thread for the document's edited
+    // scene, so that the frame taking the load in copies nothing; when empty
+    // accept_load copies `scene`.
+    std::optional<Scene> scene_copy;
     SceneSource source;
     std::vector<Diagnostic> diagnostics;        // parsing's and validation's (check_scene)
     std::vector<Diagnostic> parse_diagnostics;  // parsing's alone
