@@ -5,6 +5,7 @@
 //
 //   viewer_latency [--runs N] [--pace HZ] [--no-wait] [--render-priority-normal]
 //                  [--first-pass-wait MS] [--steps] [--scene file.jts] [--size WxH]
+//                  [--open-only]
 //
 // Runs the viewer's own code (loader thread, AppState, frame loop, render
 // controller, presenter) in an OSMesa context, as the tests do. Each event is
@@ -23,7 +24,8 @@
 // (--first-pass-wait MS to change it, 0: not at all). --steps adds when each step
 // inside was reached. OSMesa draws in software what a GPU draws in a window:
 // it gets one thread (LP_NUM_THREADS=1 unless set), so that it takes as little
-// as possible from the render.
+// as possible from the render. --open-only times the opens alone (for a
+// profile of them, or a quicker run on a large scene).
 
 #include "app/gl/gl.hpp"
 #include "app/headless.hpp"
@@ -192,7 +194,7 @@ std::filesystem::path resized_copy(const std::filesystem::path& scene, int width
 
 int main(int argc, char** argv) {
     int runs = 20, width = 1280, height = 720;
-    bool steps = false;
+    bool steps = false, open_only = false;
     std::filesystem::path scene = JT_SHOWCASE;
     for (int i = 1; i < argc; ++i) {
         const std::string arg = argv[i];
@@ -209,6 +211,8 @@ int main(int argc, char** argv) {
             first_pass_wait = std::chrono::milliseconds(std::max(0, std::atoi(argv[++i])));
         } else if (arg == "--steps") {
             steps = true;
+        } else if (arg == "--open-only") {
+            open_only = true;
         } else if (arg == "--scene" && i + 1 < argc) {
             scene = argv[++i];
         } else if (arg == "--size" && i + 1 < argc &&
@@ -218,7 +222,7 @@ int main(int argc, char** argv) {
             std::fprintf(stderr,
                          "usage: viewer_latency [--runs N] [--pace HZ] [--no-wait] "
                          "[--render-priority-normal] [--first-pass-wait MS] [--steps] "
-                         "[--scene file.jts] [--size WxH]\n");
+                         "[--scene file.jts] [--size WxH] [--open-only]\n");
             return 2;
         }
     }
@@ -267,6 +271,13 @@ int main(int argc, char** argv) {
         request_open(state, file);
         load.runs.push_back(frames_until_first_pass(viewer, state, t0, 0, true));
         settle(state);
+    }
+    if (open_only) {
+        std::filesystem::remove(file);
+        std::printf("viewer latency, %s at %dx%d, %d opens\n", scene.filename().c_str(), width,
+                    height, runs);
+        print(load, steps);
+        return 0;
     }
     AppState state(config);
     open_scene(state, file);

@@ -137,7 +137,7 @@ TEST_F(IdleFrame, AnEditAfterIdleFramesStillRendersAndUndoes) {
     EXPECT_GT(state.render.renderer.jobs_started(), jobs) << "the edit starts a render";
     undo(state);
     viewer.frame(state);
-    EXPECT_EQ(state.doc.scene, state.doc.original);
+    EXPECT_EQ(state.doc.scene, *state.doc.original);
     EXPECT_FALSE(has_unsaved_edits(state.doc));
 }
 

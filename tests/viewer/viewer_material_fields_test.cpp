@@ -153,7 +153,7 @@ TEST_F(ViewerMaterialFields, AColourPickedInThePickerIsOneUndoStep) {
     undo(state);
     viewer.frame(state);
     EXPECT_EQ(state.doc.scene.primitives[1].material.pigment, before);
-    EXPECT_EQ(state.doc.scene, state.doc.original);
+    EXPECT_EQ(state.doc.scene, *state.doc.original);
     redo(state);
     EXPECT_EQ(state.doc.scene.primitives[1].material.pigment, picked);
 }

@@ -766,7 +766,7 @@ class Monkey {
             ++steps;
         }
         frame();
-        if (!saved_since_history_start_ && state_.doc.scene != state_.doc.original)
+        if (!saved_since_history_start_ && state_.doc.scene != *state_.doc.original)
             fail("undo back to the start does not give the file's scene");
         const bool undisturbed = !load_may_arrive();
         for (int i = 0; i < steps; ++i) redo(state_);

@@ -88,7 +88,7 @@ TEST_F(ViewerSafety, CopyToSceneThenUndoKeepsTheViewOnACameraThatExists) {
         ASSERT_TRUE(viewer.run_until_complete(state, kTimeout));
         // Nothing is left to undo for the next round but the scene as loaded.
         while (state.history.undo.can_undo()) undo(state);
-        EXPECT_EQ(state.doc.scene, state.doc.original);
+        EXPECT_EQ(state.doc.scene, *state.doc.original);
         viewer.frame(state);
     }
 }

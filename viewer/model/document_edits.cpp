@@ -41,7 +41,7 @@ Expected<void> rewrite_text(AppState& state,
     const Scene before = doc.scene;
     Expected<std::string> edited = Error{""};
     if (!scene_edited(doc)) {
-        edited = edit(SceneText{doc.text, doc.original, doc.source});
+        edited = edit(SceneText{doc.text, *doc.original, doc.source});
     } else {
         // The panels' edits become text first, so that the edit starts from what is shown.
         const std::string text = document_text(doc);

@@ -40,7 +40,7 @@ std::string included_text(const SceneDocument& doc, std::string_view canonical) 
     // The panels' edits apply to the document's own readings.
     if (latest_readings(doc).data() == doc.source.files.data() && doc.loaded && !doc.draft &&
         scene_edited(doc)) {
-        SourceEditResult edit = apply_scene_edits(doc.text, doc.source, doc.original, doc.scene);
+        SourceEditResult edit = apply_scene_edits(doc.text, doc.source, *doc.original, doc.scene);
         if (edit.ok())
             for (EditedFile& edited : edit.files)
                 if (doc.source.files[edited.file - 1].canonical == canonical)
@@ -129,7 +129,7 @@ Expected<void> check_included_drafts(const SceneDocument& doc, EditorFiles& file
     std::string main_text = document_text(doc);
     std::vector<std::pair<std::string, std::string>> texts;  // canonical, text
     if (doc.loaded && !doc.draft && scene_edited(doc)) {
-        SourceEditResult edit = apply_scene_edits(doc.text, doc.source, doc.original, doc.scene);
+        SourceEditResult edit = apply_scene_edits(doc.text, doc.source, *doc.original, doc.scene);
         if (edit.ok())
             for (EditedFile& edited : edit.files)
                 texts.emplace_back(doc.source.files[edited.file - 1].canonical,

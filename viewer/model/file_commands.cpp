@@ -13,8 +13,8 @@ namespace jt::view {
 
 namespace {
 
-void after_scene_replaced(AppState& state, const Scene& before) {
-    keep_camera_selection(state.view, state.doc.scene, before);
+void after_scene_replaced(AppState& state, const std::vector<Camera>& cameras_before) {
+    keep_camera_selection(state.view, state.doc.scene, cameras_before);
     state.history.undo.clear();
     state.history.edit_base.reset();
     state.files.pending_reload.reset();
@@ -25,6 +25,9 @@ void after_scene_replaced(AppState& state, const Scene& before) {
     // noticeable part of the wait for the first preview.
     state.check.checked_revision = state.doc.revision;
     state.check.error_free_revision = state.doc.revision;
+    // The scene is its text's own, just taken in: the title's "*" need not
+    // compare 100,000 objects to find that out.
+    state.doc.edited_at = {state.doc.revision, false};
 }
 
 bool has_located(const std::vector<Diagnostic>& diagnostics) {
@@ -40,7 +43,9 @@ namespace {
 void finish_open(AppState& state, const std::filesystem::path& path, LoadAttempt attempt) {
     const bool ok = attempt.ok;
     const bool first = !state.doc.loaded;
-    const Scene before = state.doc.scene;
+    // Only the cameras are compared: copying the whole scene would cost as
+    // much as the load's own copies.
+    const std::vector<Camera> before = state.doc.scene.cameras;
     const std::filesystem::path was = state.doc.path;
     accept_load(state.doc, path, std::move(attempt));
     // An open was asked before dropping text typed in included files (guard):
@@ -106,7 +111,7 @@ void finish_reload(AppState& state, LoadAttempt attempt) {
         return;
     }
     if (!has_unsaved_edits(state.doc)) {
-        const Scene before = state.doc.scene;
+        const std::vector<Camera> before = state.doc.scene.cameras;
         accept_load(state.doc, state.doc.path, std::move(attempt));
         after_scene_replaced(state, before);
         state.message = "Reloaded " + name;
@@ -223,6 +228,9 @@ bool take_finished_load(AppState& state) {
         finish_open(state, done->path, std::move(done->attempt));
     else
         finish_reload(state, std::move(done->attempt));
+    // Only an open without errors comes with a preparation, and such an
+    // open always makes its scene the document's original.
+    if (done->ahead) state.render.renderer.adopt_prepared(std::move(*done->ahead));
     return true;
 }
 
@@ -250,7 +258,7 @@ void resolve_reload(AppState& state, ReloadChoice choice) {
         state.message = "Reloaded " + name + " (it has errors); your edits were dropped";
         return;
     }
-    const Scene before = state.doc.scene;
+    const std::vector<Camera> before = state.doc.scene.cameras;
     accept_load(state.doc, state.doc.path, std::move(newer));
     after_scene_replaced(state, before);
     if (edited) {
@@ -258,7 +266,7 @@ void resolve_reload(AppState& state, ReloadChoice choice) {
         note_command_edit(state.history, state.doc);
         keep_camera_selection(state.view, state.doc.scene, before);
         // One undo shows the file as it is.
-        state.history.undo.record({state.doc.text, state.doc.original, std::nullopt});
+        state.history.undo.record({state.doc.text, *state.doc.original, std::nullopt});
         state.message = "Reloaded " + name + " and re-applied your edits (not saved yet)";
     } else {
         state.message = "Reloaded " + name + "; your edits were dropped";

@@ -123,8 +123,13 @@ void update_render(AppState& state) {
         if (request && request == state.render.rejected) {
             state.render.render_note = state.render.rejected_reason;
         } else if (request && request != state.render.started) {
-            Scene scene = scene_to_render(state.doc, *request);
-            if (const std::string error = validation_error(state, scene, *request);
+            // An unedited scene renders as the document holds it, without a
+            // copy (and, just opened, with the preparation started for it).
+            std::shared_ptr<const Scene> scene =
+                !request->free_camera && !scene_edited(state.doc)
+                    ? state.doc.original
+                    : std::make_shared<const Scene>(scene_to_render(state.doc, *request));
+            if (const std::string error = validation_error(state, *scene, *request);
                 !error.empty()) {
                 // Keep the last image rather than render nonsense; say why.
                 state.render.rejected = std::move(request);
@@ -132,8 +137,8 @@ void update_render(AppState& state) {
                 state.render.render_note = state.render.rejected_reason;
             } else {
                 state.render.rejected.reset();
-                state.render.converging = converging_effects(scene, *request);
-                state.render.renderer.start(std::move(scene), request->options);  // not a copy
+                state.render.converging = converging_effects(*scene, *request);
+                state.render.renderer.start(std::move(scene), request->options);
                 state.render.started = std::move(request);
                 state.render.display_complete = false;
                 wait_for_first_pass(state);

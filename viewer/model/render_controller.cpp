@@ -70,6 +70,31 @@ void RenderController::forget_prepared() {
     std::lock_guard lock(mutex_);
     prepared_.reset();
     prepared_from_.reset();
+    ahead_.reset();
+}
+
+void RenderController::adopt_prepared(PreparedAhead ahead) {
+    std::lock_guard lock(mutex_);
+    ahead_ = std::move(ahead);
+}
+
+std::shared_ptr<const Scene> RenderController::finish_adopted() {
+    std::optional<PreparedAhead> ahead;
+    {
+        std::lock_guard lock(mutex_);
+        ahead = ahead_;
+    }
+    if (!ahead) return nullptr;
+    ahead->prepared.wait();
+    std::lock_guard lock(mutex_);
+    // Another run may have taken it meanwhile, or forget_prepared dropped it.
+    if (!ahead_ || ahead_->scene != ahead->scene) return nullptr;
+    ahead_.reset();
+    const auto& prepared = ahead->prepared.get();
+    if (!prepared) return nullptr;
+    prepared_ = *prepared;
+    prepared_from_ = ahead->scene;
+    return ahead->scene;
 }
 
 void RenderController::pause() {
@@ -92,6 +117,7 @@ void RenderController::launch(const std::shared_ptr<Run>& run, std::shared_ptr<c
                     if (!run->stop) job->resume();
                 }
                 if (to_prepare) {
+                    const std::shared_ptr<const Scene> adopted = finish_adopted();
                     std::shared_ptr<const PreparedScene> previous;
                     std::shared_ptr<const Scene> previous_scene;
                     {
@@ -100,10 +126,15 @@ void RenderController::launch(const std::shared_ptr<Run>& run, std::shared_ptr<c
                         previous_scene = prepared_from_;
                     }
                     // A material edit patches the previous scene in place of
-                    // preparing every object again.
+                    // preparing every object again; the very scene prepared
+                    // ahead, just now, needs nothing more. (Later runs of it
+                    // go through prepare_scene_edit, which notices a changed
+                    // image map or model file.)
                     Expected<std::shared_ptr<const PreparedScene>> prepared =
-                        previous_scene ? prepare_scene_edit(*previous_scene, *to_prepare, previous)
-                                       : prepare_scene(*to_prepare, previous);
+                        adopted && adopted == to_prepare && previous ? Expected(previous)
+                        : previous_scene
+                            ? prepare_scene_edit(*previous_scene, *to_prepare, previous)
+                            : prepare_scene(*to_prepare, previous);
                     if (!prepared) {
                         run->fail("the render failed: " + prepared.error().message);
                         run->done = true;
@@ -141,6 +172,10 @@ void RenderController::launch(const std::shared_ptr<Run>& run, std::shared_ptr<c
 }
 
 void RenderController::start(Scene scene, const RenderOptions& options) {
+    start(std::make_shared<const Scene>(std::move(scene)), options);
+}
+
+void RenderController::start(std::shared_ptr<const Scene> scene, const RenderOptions& options) {
     join_retired(false);
     auto run = std::make_shared<Run>();
     run->options = options;
@@ -155,7 +190,7 @@ void RenderController::start(Scene scene, const RenderOptions& options) {
         retired_.push_back(std::move(old));
     }
     ++jobs_started_;
-    launch(run, std::make_shared<const Scene>(std::move(scene)));
+    launch(run, std::move(scene));
 }
 
 bool RenderController::resume() {

@@ -7,6 +7,7 @@
 
 #include "jtracer/render_job.hpp"
 #include "jtracer/scene.hpp"
+#include "model/prepared_ahead.hpp"
 #include "model/wakeup.hpp"
 
 #include <chrono>
@@ -39,6 +40,14 @@ class RenderController {
     // only materials, lights, cameras or settings changed, and an edit of
     // materials only patches the previous scene (prepare_scene_edit).
     void start(Scene scene, const RenderOptions& options);
+    // The same for a scene shared with its owner, without a copy. The very
+    // scene of an adopted preparation (adopt_prepared), started next, renders
+    // with that preparation.
+    void start(std::shared_ptr<const Scene> scene, const RenderOptions& options);
+    // Takes a preparation started ahead (prepared_ahead.hpp) as the latest
+    // prepared scene: the next run waits for it to finish and then reuses
+    // it as it would reuse its own.
+    void adopt_prepared(PreparedAhead ahead);
     // The next start() builds the scene from scratch: geometry and image maps
     // are read again rather than reused, even from files that look unchanged.
     void forget_prepared();
@@ -80,12 +89,16 @@ class RenderController {
     void launch(const std::shared_ptr<Run>& run, std::shared_ptr<const Scene> scene,
                 std::shared_ptr<Run> paused = nullptr);
     std::shared_ptr<RenderJob> current_job() const;
+    // On a run's thread: waits for an adopted preparation, if any, and makes
+    // it the latest prepared scene; returns its scene (null: none adopted).
+    std::shared_ptr<const Scene> finish_adopted();
     void join_retired(bool all);
 
     mutable std::mutex mutex_;
     std::shared_ptr<Run> current_;                   // guarded by mutex_
     std::shared_ptr<const PreparedScene> prepared_;  // guarded by mutex_
     std::shared_ptr<const Scene> prepared_from_;     // what prepared_ was prepared from; mutex_
+    std::optional<PreparedAhead> ahead_;             // adopted, not yet waited for; mutex_
     std::vector<std::shared_ptr<Run>> retired_;      // cancelled, winding down (UI thread only)
     std::uint64_t jobs_started_ = 0;
     Wakeup* wakeup_ = nullptr;

@@ -34,7 +34,7 @@ LoadAttempt attempt_load(const std::filesystem::path& path, const ParseOptions& 
     attempt.times.validated = LoadTimes::Clock::now();
     attempt.ok = !has_errors(attempt.diagnostics);
     attempt.text = std::move(loaded.text);
-    attempt.scene = std::move(loaded.parsed.scene);
+    attempt.scene = std::make_shared<const Scene>(std::move(loaded.parsed.scene));
     attempt.source = std::move(loaded.parsed.source);
     return attempt;
 }
@@ -94,7 +94,10 @@ void accept_load(SceneDocument& doc, const std::filesystem::path& path, LoadAtte
     doc.disk_text = doc.text;
     doc.original = std::move(attempt.scene);
     doc.source = std::move(attempt.source);
-    doc.scene = doc.original;
+    if (attempt.scene_copy)
+        doc.scene = std::move(*attempt.scene_copy);
+    else
+        doc.scene = *doc.original;
     doc.draft.reset();
     doc.uses_clock = text_uses_clock(doc.text, doc.source);
     note_scene_changed(doc);
@@ -119,7 +122,7 @@ DocumentVersion version_of(const SceneDocument& doc) {
 void restore_version(SceneDocument& doc, const DocumentVersion& version) {
     if (version.text != doc.text) {
         ParseResult parsed = parse_document_text(doc, version.text);
-        parsed.scene.asset_folder = doc.original.asset_folder;
+        parsed.scene.asset_folder = doc.original->asset_folder;
         take_text(doc, version.text, std::move(parsed));
     }
     doc.scene = version.scene;
@@ -133,7 +136,7 @@ void restore_version(SceneDocument& doc, const DocumentVersion& version) {
             apply_scene_edits(doc.text, doc.source, original_then, doc.scene);
         if (edit.ok()) {
             ParseResult now = parse_scene(edit.text, document_options(doc, edit));
-            now.scene.asset_folder = doc.original.asset_folder;
+            now.scene.asset_folder = doc.original->asset_folder;
             if (now.ok()) doc.scene = std::move(now.scene);
         }
     }
@@ -156,16 +159,16 @@ const std::string* held_text(const SceneDocument& doc) {
 
 std::string document_text(const SceneDocument& doc) {
     if (const std::string* held = held_text(doc)) return *held;
-    SourceEditResult edit = apply_scene_edits(doc.text, doc.source, doc.original, doc.scene);
+    SourceEditResult edit = apply_scene_edits(doc.text, doc.source, *doc.original, doc.scene);
     return edit.ok() ? std::move(edit.text) : doc.text;
 }
 
 void take_text(SceneDocument& doc, std::string text, ParseResult parsed) {
     doc.text = std::move(text);
-    doc.original = std::move(parsed.scene);
+    doc.original = std::make_shared<const Scene>(std::move(parsed.scene));
     doc.source = std::move(parsed.source);
     doc.parse_diagnostics = std::move(parsed.diagnostics);
-    doc.scene = doc.original;
+    doc.scene = *doc.original;
     doc.draft.reset();
     doc.load_failed = false;
     doc.uses_clock = text_uses_clock(doc.text, doc.source);
@@ -178,7 +181,7 @@ Expected<void> replace_text(SceneDocument& doc, std::string text) {
         if (d.severity == Severity::error)
             return Error{"the edited text does not parse (" + std::to_string(d.pos.line) + ":" +
                          std::to_string(d.pos.column) + ": " + d.message + ")"};
-    parsed.scene.asset_folder = doc.original.asset_folder;
+    parsed.scene.asset_folder = doc.original->asset_folder;
     take_text(doc, std::move(text), std::move(parsed));
     return {};
 }
@@ -204,13 +207,18 @@ std::string format_diagnostics(const SceneDocument& doc) {
 
 bool scene_edited(const SceneDocument& doc) {
     if (!doc.edited_at || doc.edited_at->first != doc.revision)
-        doc.edited_at = {doc.revision, doc.scene != doc.original};
+        doc.edited_at = {doc.revision, doc.scene != *doc.original};
     return doc.edited_at->second;
 }
 
 bool has_unsaved_edits(const SceneDocument& doc) {
     if (doc.draft) return *doc.draft != doc.disk_text;  // a broken file's own text is saved
-    return doc.loaded && (scene_edited(doc) || doc.text != doc.disk_text);
+    if (!doc.loaded) return false;
+    if (scene_edited(doc)) return true;
+    const std::pair key{doc.revision, doc.file_generation};
+    if (!doc.text_changed_at || doc.text_changed_at->first != key)
+        doc.text_changed_at = {key, doc.text != doc.disk_text};
+    return doc.text_changed_at->second;
 }
 
 bool file_changed_on_disk(const SceneDocument& doc, std::string& what) {
@@ -238,7 +246,7 @@ Expected<Scene> reapply_edits(const SceneDocument& doc, const LoadAttempt& newer
         return Error{
             "the text itself was edited (typed, or blocks added or deleted); only "
             "changed values can be re-applied to a newer file"};
-    SourceEditResult edit = apply_scene_edits(newer.text, newer.source, doc.original, doc.scene);
+    SourceEditResult edit = apply_scene_edits(newer.text, newer.source, *doc.original, doc.scene);
     if (!edit.ok()) return Error{edit.error};
     ParseResult parsed = parse_document_text(doc, edit.text);
     if (!parsed.ok()) return Error{"the edits do not fit the new text"};
@@ -253,7 +261,7 @@ Expected<std::vector<std::string>> save_scene_copy(SceneDocument& doc,
                                                    const std::filesystem::path& path) {
     if (!doc.loaded) return Error{"no scene is open"};
     if (doc.draft) return Error{"the text has errors (see Diagnostics): fix them before saving"};
-    SourceEditResult edit = apply_scene_edits(doc.text, doc.source, doc.original, doc.scene);
+    SourceEditResult edit = apply_scene_edits(doc.text, doc.source, *doc.original, doc.scene);
     if (!edit.ok()) return Error{edit.error};
     if (!edit.files.empty() && path != doc.path)
         return Error{
@@ -287,7 +295,7 @@ Expected<std::vector<std::string>> save_scene_copy(SceneDocument& doc,
     doc.diagnostics_path = path;
     doc.text = std::move(edit.text);
     doc.disk_text = doc.text;
-    doc.original = doc.scene;
+    doc.original = std::make_shared<const Scene>(doc.scene);
     // The scene itself did not change (no new revision: it is no edit), but
     // it now equals the original.
     doc.edited_at = {doc.revision, false};

@@ -16,6 +16,7 @@
 #include <chrono>
 #include <cstdint>
 #include <filesystem>
+#include <memory>
 #include <optional>
 #include <string>
 #include <utility>
@@ -28,7 +29,10 @@ struct SceneDocument {
     bool loaded = false;    // a good scene is held (from this file or an earlier one)
     std::string text;       // the text `original` and `source` were parsed from
     std::string disk_text;  // the file's bytes as last loaded or saved
-    Scene original;         // the scene as in `text`
+    // The scene as in `text`; shared (never changed in place) so that a
+    // render of the unedited scene and its preparation ahead use it as it is,
+    // without copying 100,000 objects.
+    std::shared_ptr<const Scene> original = std::make_shared<const Scene>();
     SceneSource source;
     Scene scene;                                // as edited in the viewer
     std::vector<Diagnostic> parse_diagnostics;  // the parser's warnings about `text`
@@ -58,6 +62,10 @@ struct SceneDocument {
     // Whether `scene` differs from `original`, as found at a revision: asked
     // every frame (the title's "*"), it is worked out once per change.
     mutable std::optional<std::pair<std::uint64_t, bool>> edited_at;
+    // Whether `text` differs from `disk_text`, as found at a revision and
+    // file generation (every change of either text moves one of them): asked
+    // every frame too, and the texts of 100,000 objects are 14 MB.
+    mutable std::optional<std::pair<std::pair<std::uint64_t, std::uint64_t>, bool>> text_changed_at;
     // What every text of the document is parsed with: the command line's
     // --define, and the clock the time slider stands at (docs/language.md
     // §15.2, §15.4). Always with the source map: saving writes at its spans.
@@ -110,7 +118,11 @@ struct LoadAttempt {
     bool read = false;     // the file's bytes were read (ok or not, they are `text`)
     bool missing = false;  // not read because the file is not there
     std::string text;
-    Scene scene;
+    std::shared_ptr<const Scene> scene = std::make_shared<const Scene>();
+    // A copy of `scene` made on the loader's thread for the document's edited
+    // scene, so that the frame taking the load in copies nothing; when empty
+    // accept_load copies `scene`.
+    std::optional<Scene> scene_copy;
     SceneSource source;
     std::vector<Diagnostic> diagnostics;        // parsing's and validation's (check_scene)
     std::vector<Diagnostic> parse_diagnostics;  // parsing's alone

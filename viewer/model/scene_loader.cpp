@@ -1,10 +1,13 @@
 #include "model/scene_loader.hpp"
 
 #include <exception>
+#include <memory>
+#include <utility>
 
 namespace jt::view {
 
-SceneLoader::SceneLoader() : worker_(&SceneLoader::load) {}
+SceneLoader::SceneLoader()
+    : worker_([this](Request request) { return load(std::move(request)); }) {}
 
 void SceneLoader::request(const std::filesystem::path& path, LoadPurpose purpose,
                           const ParseOptions& options) {
@@ -27,7 +30,26 @@ FinishedLoad SceneLoader::load(Request request) {
                                                  std::string("cannot load the file: ") + e.what()});
     }
     attempt.times.requested = request.requested;
-    return FinishedLoad{request.path, request.purpose, std::move(attempt)};
+    std::optional<PreparedAhead> ahead;
+    // Only an open: a reload of the same objects reuses the geometry already
+    // prepared (the render controller's prepare_scene_edit), which a fresh
+    // preparation here would only delay.
+    if (attempt.ok && request.purpose == LoadPurpose::open) {
+        try {
+            ahead = preparer_.start(attempt.scene);
+            // The document's edited scene, copied while the scene is being
+            // prepared.
+            attempt.scene_copy = *attempt.scene;
+        } catch (const std::exception& e) {  // out of memory
+            const LoadTimes times = attempt.times;
+            attempt = LoadAttempt{};
+            attempt.times = times;
+            attempt.diagnostics.push_back(Diagnostic{
+                Severity::error, SourcePos{}, std::string("cannot load the file: ") + e.what()});
+            ahead.reset();
+        }
+    }
+    return FinishedLoad{request.path, request.purpose, std::move(attempt), std::move(ahead)};
 }
 
 }  // namespace jt::view

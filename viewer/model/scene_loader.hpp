@@ -5,6 +5,7 @@
 // overtaken by another request finishes, but its result is dropped.
 
 #include "model/latest_wins_worker.hpp"
+#include "model/prepared_ahead.hpp"
 #include "model/scene_document.hpp"
 #include "model/wakeup.hpp"
 
@@ -19,6 +20,9 @@ struct FinishedLoad {
     std::filesystem::path path;
     LoadPurpose purpose = LoadPurpose::open;
     LoadAttempt attempt;
+    // An open without errors: its scene's preparation, under way (see
+    // prepared_ahead.hpp) of attempt.scene, the same object.
+    std::optional<PreparedAhead> ahead;
 };
 
 class SceneLoader {
@@ -46,8 +50,9 @@ class SceneLoader {
         ParseOptions options;
         LoadTimes::Clock::time_point requested;
     };
-    static FinishedLoad load(Request request);
+    FinishedLoad load(Request request);
 
+    AheadPreparer preparer_;  // before worker_: used by its thread, joined after it
     LatestWinsWorker<Request, FinishedLoad> worker_;
 };
 

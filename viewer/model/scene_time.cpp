@@ -72,13 +72,13 @@ bool set_clock(AppState& state, double clock) {
             }
         return false;
     }
-    original.scene.asset_folder = doc.original.asset_folder;
+    original.scene.asset_folder = doc.original->asset_folder;
     Scene edited = original.scene;
     if (scene_edited(doc)) {
         // The panels' edits are literal values: written into the text, they
         // read back the same at any clock.
         const SourceEditResult edit =
-            apply_scene_edits(doc.text, doc.source, doc.original, doc.scene);
+            apply_scene_edits(doc.text, doc.source, *doc.original, doc.scene);
         if (!edit.ok()) {
             state.message = "Cannot compute the scene at another clock: " + edit.error;
             return false;
@@ -88,10 +88,10 @@ bool set_clock(AppState& state, double clock) {
         ParseResult with_edits = parse_scene(edit.text, with_files);
         if (!with_edits.ok()) return false;
         edited = std::move(with_edits.scene);
-        edited.asset_folder = doc.original.asset_folder;
+        edited.asset_folder = doc.original->asset_folder;
     }
     doc.options.clock = clock;
-    doc.original = std::move(original.scene);
+    doc.original = std::make_shared<const Scene>(std::move(original.scene));
     doc.source = std::move(original.source);
     doc.parse_diagnostics = std::move(original.diagnostics);
     doc.scene = std::move(edited);

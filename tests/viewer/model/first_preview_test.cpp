@@ -8,6 +8,8 @@
 #include "jtracer/render_job.hpp"
 #include "model/app_actions.hpp"
 #include "model/model_frame.hpp"
+#include "model/prepared_ahead.hpp"
+#include "model/scene_loader.hpp"
 #include "model/wakeup.hpp"
 #include "render/prepared_scene.hpp"
 #include "viewer/viewer_test_files.hpp"
@@ -218,6 +220,56 @@ TEST(RenderReuse, ColourEditInTheViewerPatchesThePreparedScene) {
     ASSERT_TRUE(run_frames_until_complete(state, frame, kTimeout, 2));
     EXPECT_EQ(state.render.renderer.prepared()->materials_gathered,
               state.doc.scene.primitives.size());
+}
+
+TEST(RenderReuse, AnAdoptedPreparationRendersItsSceneWithoutPreparingAgain) {
+    const auto scene = std::make_shared<const Scene>(showcase_at(160, 90));
+    const RenderOptions options = options_for(*scene, true);
+    AheadPreparer preparer;
+    const PreparedAhead ahead = preparer.start(scene);
+    RenderController renderer;
+    renderer.adopt_prepared(ahead);
+    auto render = [&](std::shared_ptr<const Scene> s) {
+        renderer.start(std::move(s), options);
+        const auto deadline = Clock::now() + kTimeout;
+        while (!renderer.finished() && Clock::now() < deadline)
+            std::this_thread::sleep_for(std::chrono::milliseconds(2));
+        EXPECT_TRUE(renderer.finished());
+        Image8 image;
+        renderer.fetch(image);
+        return image;
+    };
+    const Image8 image = render(scene);
+    ASSERT_TRUE(ahead.prepared.get());
+    EXPECT_EQ(renderer.prepared(), *ahead.prepared.get())
+        << "the very scene prepared ahead renders with that preparation";
+    EXPECT_EQ(image, render_image(prepare_scene(*scene).value(), options_for(*scene, false)))
+        << "and the picture is that of the scene prepared by the render";
+
+    // Rendered again (the same scene, or an equal one), it goes through the
+    // usual reuse, which looks at the files it reads again.
+    render(scene);
+    EXPECT_NE(renderer.prepared(), *ahead.prepared.get());
+    EXPECT_EQ(renderer.prepared()->geometry, (*ahead.prepared.get())->geometry);
+}
+
+TEST(FirstPreview, AnOpenWithoutErrorsIsPreparedByTheLoader) {
+    SceneLoader loader;
+    loader.request(kScene, LoadPurpose::open);
+    loader.wait();
+    std::optional<FinishedLoad> opened = loader.take();
+    ASSERT_TRUE(opened && opened->attempt.ok);
+    ASSERT_TRUE(opened->ahead) << "an open without errors is prepared while it is taken in";
+    EXPECT_EQ(opened->ahead->scene, opened->attempt.scene) << "the scene itself, not a copy";
+    ASSERT_TRUE(opened->attempt.scene_copy);
+    EXPECT_EQ(*opened->attempt.scene_copy, *opened->attempt.scene);
+    EXPECT_TRUE(opened->ahead->prepared.get());
+
+    loader.request(kScene, LoadPurpose::reload);
+    loader.wait();
+    const std::optional<FinishedLoad> reloaded = loader.take();
+    ASSERT_TRUE(reloaded && reloaded->attempt.ok);
+    EXPECT_FALSE(reloaded->ahead) << "a reload reuses the geometry prepared already";
 }
 
 }  // namespace
