@@ -3,6 +3,7 @@
 #include "jtracer/model_cache.hpp"
 #include "jtracer/texture.hpp"
 #include "render/embree_device.hpp"
+#include "render/far_ray.hpp"
 #include "render/triangle_queries.hpp"
 
 #include <glm/geometric.hpp>
@@ -77,6 +78,9 @@ RTCScene corner_scene(const Model& model, int e) {
 std::unique_ptr<TriangleModel> model_scene(std::shared_ptr<const Model> model) {
     auto m = std::make_unique<TriangleModel>();
     m->scene = corner_scene(*model, 0);
+    for (const glm::vec3& p : model->positions)
+        m->extent = std::max(
+            {m->extent, double(std::abs(p.x)), double(std::abs(p.y)), double(std::abs(p.z))});
     m->model = std::move(model);
     return m;
 }
@@ -105,23 +109,51 @@ int shrink_exponent(const ObjectTransform& transform) {
     return std::ilogb(largest_row) + 1;
 }
 
-void attach_instance(RTCScene top, TriangleModel& model, const ObjectTransform& transform) {
+// The BVH of the model's corners times 2^-e, made once.
+RTCScene scaled_corners(TriangleModel& model, int e) {
+    if (e == 0) return model.scene;
+    auto known = model.shrunk.find(e);
+    if (known == model.shrunk.end())
+        known = model.shrunk.emplace(e, corner_scene(*model.model, e)).first;
+    return known->second;
+}
+
+// The exponent e that brings the model's corners times 2^-e below 2^50, well
+// within Embree's reach; 0 when they are within it already.
+int reach_exponent(const TriangleModel& model) {
+    return model.extent > embree_reach ? std::ilogb(model.extent) - 49 : 0;
+}
+
+// Whether some corner of the mesh may lie past Embree's reach, in the corners
+// its instance names (the model's times 2^-shrink) or in the world: each
+// world coordinate is bounded by the translation's plus the map's row of
+// magnitudes times the model's extent.
+bool beyond_reach(const TriangleModel& model, const ObjectTransform& transform, int shrink) {
+    if (!(std::ldexp(model.extent, -shrink) <= embree_reach)) return true;
+    for (int r = 0; r < 3; ++r) {
+        double reach = std::abs(transform.to_world.translation[r]);
+        for (int c = 0; c < 3; ++c)
+            reach += std::abs(transform.to_world.linear[c][r]) * model.extent;
+        if (!(reach <= embree_reach)) return true;
+    }
+    return false;
+}
+
+// A mesh beyond Embree's reach keeps its instance, disabled, so that instance
+// ids stay the indices of TriangleGeometry::instances; rays meet it through
+// TriangleGeometry::far_instances instead.
+void attach_instance(RTCScene top, TriangleModel& model, const ObjectTransform& transform,
+                     bool enabled) {
     RTCGeometry g = rtcNewGeometry(embree_device(), RTC_GEOMETRY_TYPE_INSTANCE);
     const int e = shrink_exponent(transform);
-    RTCScene corners = model.scene;
-    if (e != 0) {
-        auto known = model.shrunk.find(e);
-        if (known == model.shrunk.end())
-            known = model.shrunk.emplace(e, corner_scene(*model.model, e)).first;
-        corners = known->second;
-    }
-    rtcSetGeometryInstancedScene(g, corners);
+    rtcSetGeometryInstancedScene(g, scaled_corners(model, e));
     float xfm[12];  // 3x4, column-major: the linear part's columns, then the translation
     for (int c = 0; c < 3; ++c)
         for (int r = 0; r < 3; ++r)
             xfm[3 * c + r] = static_cast<float>(std::ldexp(transform.to_world.linear[c][r], e));
     for (int r = 0; r < 3; ++r) xfm[9 + r] = static_cast<float>(transform.to_world.translation[r]);
     rtcSetGeometryTransform(g, 0, RTC_FORMAT_FLOAT3X4_COLUMN_MAJOR, xfm);
+    if (!enabled) rtcDisableGeometry(g);
     rtcCommitGeometry(g);
     rtcAttachGeometry(top, g);
     rtcReleaseGeometry(g);
@@ -132,8 +164,15 @@ void attach_loose(TriangleGeometry& t) {
     auto* v = static_cast<float*>(rtcGetGeometryBufferData(g, RTC_BUFFER_TYPE_VERTEX, 0));
     auto* i = static_cast<std::uint32_t*>(rtcGetGeometryBufferData(g, RTC_BUFFER_TYPE_INDEX, 0));
     std::uint32_t next = 0;
-    for (const LooseTriangle& triangle : t.loose) {
-        for (const Vec3& p : triangle.corners) {
+    for (std::uint32_t k = 0; k < t.loose.size(); ++k) {
+        const LooseTriangle& triangle = t.loose[k];
+        const bool far = !within_reach(triangle.corners[0]) || !within_reach(triangle.corners[1]) ||
+                         !within_reach(triangle.corners[2]);
+        // Embree's BVH leaves such a triangle out; it stands here as a point,
+        // which Embree's test never meets, and is tested exactly instead.
+        if (far) t.far_loose.push_back(k);
+        for (const Vec3& corner : triangle.corners) {
+            const Vec3 p = far ? Vec3(0.0) : corner;
             *v++ = static_cast<float>(p.x);
             *v++ = static_cast<float>(p.y);
             *v++ = static_cast<float>(p.z);
@@ -223,7 +262,14 @@ Expected<std::unique_ptr<TriangleGeometry>> build_triangle_geometry(const Scene&
         instance.file_materials = file_materials;
         t->file_materials = t->file_materials || file_materials;
         instance.source = source;
-        attach_instance(t->scene, *t->models[known->second], transform);
+        TriangleModel& model = *t->models[known->second];
+        const bool far = beyond_reach(model, transform, shrink_exponent(transform));
+        attach_instance(t->scene, model, transform, !far);
+        if (far) {
+            const int e = reach_exponent(model);
+            t->far_instances.push_back(
+                {static_cast<std::uint32_t>(t->instances.size()), scaled_corners(model, e), e});
+        }
         t->instances.push_back(instance);
     }
     if (!t) return std::unique_ptr<TriangleGeometry>();

@@ -35,6 +35,8 @@ struct TriangleModel {
     // past what Embree's float instance transform holds (attach_instance).
     std::map<int, RTCScene> shrunk;
     std::map<double, std::shared_ptr<const CornerNormals>> generated;
+    // The largest magnitude of any corner coordinate.
+    double extent = 0.0;
 
     TriangleModel() = default;
     TriangleModel(const TriangleModel&) = delete;
@@ -68,10 +70,25 @@ struct LooseTriangle {
     bool mirrored = false;
 };
 
+// A mesh whose triangles reach past what Embree's BVH holds (1.8e18, see
+// render/far_ray.hpp), in the world or in its file: Embree's top BVH leaves
+// its instance out without a word. Each ray is moved into the model's space
+// in double precision, times 2^-exponent, and walks `corners` (its model's
+// corners times 2^-exponent) on its own.
+struct FarInstance {
+    std::uint32_t instance = 0;  // index into TriangleGeometry::instances
+    RTCScene corners = nullptr;  // owned by the model
+    int exponent = 0;
+};
+
 struct TriangleGeometry {
     std::vector<std::unique_ptr<TriangleModel>> models;
     std::vector<MeshInstance> instances;  // index = instance geometry id in `scene`
+    std::vector<FarInstance> far_instances;
     std::vector<LooseTriangle> loose;
+    // Loose triangles with a corner past Embree's reach (indices into
+    // `loose`): its BVH leaves them out, so each query tests them exactly.
+    std::vector<std::uint32_t> far_loose;
     unsigned loose_geometry_id = RTC_INVALID_GEOMETRY_ID;
     bool file_materials = false;  // some instance has materials: "file"
     RTCScene scene = nullptr;     // the instances and the loose triangles
