@@ -275,6 +275,50 @@ TEST(Triangles, RaysThroughSharedEdgesAndVerticesNeverMiss) {
     EXPECT_EQ(misses, 0) << "of " << rays;
 }
 
+// An octahedron scaled past Embree's float range (3e18) is walked on its own
+// (TriangleGeometry::far_instances): rays aimed exactly at its shared vertices
+// and edges still never slip through, and meet it where they aim.
+TEST(Triangles, AMeshPastEmbreesReachIsWatertight) {
+    ScratchDir dir;
+    Scene s = scene_with_camera(camera_at({0, 0, 0}, {0, 0, -1}));
+    Primitive huge = mesh(octahedron(dir.path()));
+    huge.transforms = {rotate(TransformKind::yrotate, 30), scale({1e9, 1e9, 1e9}),
+                       scale({1e9, 1e9, 1e9}), scale({3, 3, 3})};
+    s.primitives.push_back(huge);
+    auto prepared = prepare_scene(s).value();
+    ASSERT_EQ(prepared->geometry->triangles->far_instances.size(), 1u);
+    const double size = 3e18;
+    const double c = std::cos(M_PI / 6), sn = std::sin(M_PI / 6);
+    auto turn = [&](const Vec3& v) { return Vec3{c * v.x + sn * v.z, v.y, -sn * v.x + c * v.z}; };
+    const std::vector<Vec3> corners{{1, 0, 0},  {-1, 0, 0}, {0, 1, 0},
+                                    {0, -1, 0}, {0, 0, 1},  {0, 0, -1}};
+    std::vector<Vec3> targets = corners;
+    for (std::size_t i = 0; i < corners.size(); ++i)
+        for (std::size_t j = i + 1; j < corners.size(); ++j)
+            if (corners[i] != -corners[j]) targets.push_back(0.5 * (corners[i] + corners[j]));
+    std::mt19937 rng(5);
+    std::uniform_real_distribution<double> tilt(-0.25, 0.25);
+    int misses = 0, rays = 0;
+    for (int k = 0; k < 100; ++k) {
+        for (const Vec3& target : targets) {
+            const Vec3 out =
+                glm::normalize(glm::normalize(target) + Vec3(tilt(rng), tilt(rng), tilt(rng)));
+            const Vec3 placed = size * turn(target);
+            const Vec3 origin = placed + 7.0 * size * turn(out);
+            Hit hit;
+            ++rays;
+            if (!closest_hit(*prepared->geometry, origin, placed - origin, 0.0, hit)) {
+                ++misses;
+                continue;
+            }
+            EXPECT_NEAR(hit.t, 1.0, 1e-9);
+            EXPECT_TRUE(occluded(*prepared->geometry, origin, placed - origin, 0.0, 1.0 + 1e-9));
+            EXPECT_FALSE(occluded(*prepared->geometry, origin, placed - origin, 0.0, 1.0 - 1e-9));
+        }
+    }
+    EXPECT_EQ(misses, 0) << "of " << rays;
+}
+
 // The octahedron in material m, flat, under `transforms`, seen by a 9 x 9
 // camera with a field of 10 degrees, lit by white ambient light and one white
 // point light.
