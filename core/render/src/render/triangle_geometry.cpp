@@ -98,15 +98,38 @@ std::unique_ptr<TriangleModel> model_scene(std::shared_ptr<const Model> model) {
 // itself; meshes shrunk less keep the shared BVH and their images' bytes.
 constexpr double kMaxPlainInverse = 1 << 24;
 
-int shrink_exponent(const ObjectTransform& transform) {
+// The largest row sum of |m|: the norm that bounds how much m can lengthen a vector.
+double largest_row_sum(const glm::dmat3& m) {
     double largest_row = 0.0;
     for (int r = 0; r < 3; ++r) {
         double row = 0.0;
-        for (int c = 0; c < 3; ++c) row += std::abs(transform.to_object.linear[c][r]);
+        for (int c = 0; c < 3; ++c) row += std::abs(m[c][r]);
         largest_row = std::max(largest_row, row);
     }
+    return largest_row;
+}
+
+int shrink_exponent(const ObjectTransform& transform) {
+    const double largest_row = largest_row_sum(transform.to_object.linear);
     if (!(largest_row > kMaxPlainInverse)) return 0;
     return std::ilogb(largest_row) + 1;
+}
+
+// Embree moves a ray into an instance's space in single precision by the
+// float inverse of its map, and the rounding grows with the map's condition
+// number: a tetrahedron stretched 600 times more along one axis than another
+// (a random scene's) moved a reflected ray by 3e-5 of its size, and the ray,
+// which passes 3e-6 inside a corner of the solid, missed both faces there.
+// Past this condition number (the product of the map's and its inverse's
+// largest row sums), a mesh is walked on its own, its rays moved into its
+// space in double precision (FarInstance), where the float rounding is that
+// of the model's own coordinates.
+constexpr double kMaxInstanceCondition = 16.0;
+
+bool ill_conditioned(const ObjectTransform& transform) {
+    return !(largest_row_sum(transform.to_world.linear) *
+                 largest_row_sum(transform.to_object.linear) <=
+             kMaxInstanceCondition);
 }
 
 // The BVH of the model's corners times 2^-e, made once.
@@ -139,9 +162,9 @@ bool beyond_reach(const TriangleModel& model, const ObjectTransform& transform, 
     return false;
 }
 
-// A mesh beyond Embree's reach keeps its instance, disabled, so that instance
-// ids stay the indices of TriangleGeometry::instances; rays meet it through
-// TriangleGeometry::far_instances instead.
+// A mesh walked on its own (FarInstance) keeps its instance, disabled, so that
+// instance ids stay the indices of TriangleGeometry::instances; rays meet it
+// through TriangleGeometry::far_instances instead.
 void attach_instance(RTCScene top, TriangleModel& model, const ObjectTransform& transform,
                      bool enabled) {
     RTCGeometry g = rtcNewGeometry(embree_device(), RTC_GEOMETRY_TYPE_INSTANCE);
@@ -263,7 +286,8 @@ Expected<std::unique_ptr<TriangleGeometry>> build_triangle_geometry(const Scene&
         t->file_materials = t->file_materials || file_materials;
         instance.source = source;
         TriangleModel& model = *t->models[known->second];
-        const bool far = beyond_reach(model, transform, shrink_exponent(transform));
+        const bool far = beyond_reach(model, transform, shrink_exponent(transform)) ||
+                         ill_conditioned(transform);
         attach_instance(t->scene, model, transform, !far);
         if (far) {
             const int e = reach_exponent(model);

@@ -70,11 +70,13 @@ struct LooseTriangle {
     bool mirrored = false;
 };
 
-// A mesh whose triangles reach past what Embree's BVH holds (1.8e18, see
-// render/far_ray.hpp), in the world or in its file: Embree's top BVH leaves
-// its instance out without a word. Each ray is moved into the model's space
-// in double precision, times 2^-exponent, and walks `corners` (its model's
-// corners times 2^-exponent) on its own.
+// A mesh walked on its own: one whose triangles reach past what Embree's BVH
+// holds (1.8e18, see render/far_ray.hpp), in the world or in its file, which
+// Embree's top BVH leaves out without a word, or one whose map is so
+// ill-conditioned that Embree's float move into its space misses faces
+// (triangle_geometry.cpp). Each ray is moved into the model's space in double
+// precision, times 2^-exponent, and walks `corners` (its model's corners
+// times 2^-exponent) on its own.
 struct FarInstance {
     std::uint32_t instance = 0;  // index into TriangleGeometry::instances
     RTCScene corners = nullptr;  // owned by the model
