@@ -78,9 +78,13 @@ RTCScene corner_scene(const Model& model, int e) {
 std::unique_ptr<TriangleModel> model_scene(std::shared_ptr<const Model> model) {
     auto m = std::make_unique<TriangleModel>();
     m->scene = corner_scene(*model, 0);
-    for (const glm::vec3& p : model->positions)
+    if (!model->positions.empty()) m->lower = m->upper = Vec3(model->positions[0]);
+    for (const glm::vec3& p : model->positions) {
         m->extent = std::max(
             {m->extent, double(std::abs(p.x)), double(std::abs(p.y)), double(std::abs(p.z))});
+        m->lower = glm::min(m->lower, Vec3(p));
+        m->upper = glm::max(m->upper, Vec3(p));
+    }
     m->model = std::move(model);
     return m;
 }
@@ -123,8 +127,11 @@ int shrink_exponent(const ObjectTransform& transform) {
 // Past this condition number (the product of the map's and its inverse's
 // largest row sums), a mesh is walked on its own, its rays moved into its
 // space in double precision (FarInstance), where the float rounding is that
-// of the model's own coordinates.
-constexpr double kMaxInstanceCondition = 16.0;
+// of the model's own coordinates. Each such mesh costs every ray a box test
+// and, when it passes, a walk of its own; below the limit (a plank scaled
+// 20 times longer than it is thick) meshes keep Embree's instancing, and the
+// rounding it adds stays within about 64 float steps.
+constexpr double kMaxInstanceCondition = 64.0;
 
 bool ill_conditioned(const ObjectTransform& transform) {
     return !(largest_row_sum(transform.to_world.linear) *
@@ -160,6 +167,28 @@ bool beyond_reach(const TriangleModel& model, const ObjectTransform& transform, 
         if (!(reach <= embree_reach)) return true;
     }
     return false;
+}
+
+// The box FarInstance::lower and upper describe: the model's box through the
+// map, padded as render/listed_shapes.hpp pads bounds; unbounded when any of
+// it is not finite.
+void bound_far_instance(FarInstance& far, const TriangleModel& model,
+                        const ObjectTransform& transform) {
+    Vec3 lower(std::numeric_limits<double>::infinity()), upper(-lower);
+    for (int k = 0; k < 8; ++k) {
+        const Vec3 corner((k & 1) ? model.upper.x : model.lower.x,
+                          (k & 2) ? model.upper.y : model.lower.y,
+                          (k & 4) ? model.upper.z : model.lower.z);
+        const Vec3 p = apply_point(transform.to_world, corner);
+        lower = glm::min(lower, p);
+        upper = glm::max(upper, p);
+    }
+    if (!all_finite(lower) || !all_finite(upper)) return;
+    const double largest = std::max({std::abs(lower.x), std::abs(lower.y), std::abs(lower.z),
+                                     std::abs(upper.x), std::abs(upper.y), std::abs(upper.z)});
+    const Vec3 pad = 1e-6 * (upper - lower) + Vec3(1e-7 * largest);
+    far.lower = lower - pad;
+    far.upper = upper + pad;
 }
 
 // A mesh walked on its own (FarInstance) keeps its instance, disabled, so that
@@ -290,9 +319,12 @@ Expected<std::unique_ptr<TriangleGeometry>> build_triangle_geometry(const Scene&
                          ill_conditioned(transform);
         attach_instance(t->scene, model, transform, !far);
         if (far) {
-            const int e = reach_exponent(model);
-            t->far_instances.push_back(
-                {static_cast<std::uint32_t>(t->instances.size()), scaled_corners(model, e), e});
+            FarInstance walked;
+            walked.instance = static_cast<std::uint32_t>(t->instances.size());
+            walked.exponent = reach_exponent(model);
+            walked.corners = scaled_corners(model, walked.exponent);
+            bound_far_instance(walked, model, transform);
+            t->far_instances.push_back(walked);
         }
         t->instances.push_back(instance);
     }

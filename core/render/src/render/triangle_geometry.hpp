@@ -35,8 +35,9 @@ struct TriangleModel {
     // past what Embree's float instance transform holds (attach_instance).
     std::map<int, RTCScene> shrunk;
     std::map<double, std::shared_ptr<const CornerNormals>> generated;
-    // The largest magnitude of any corner coordinate.
+    // The largest magnitude of any corner coordinate, and the corners' box.
     double extent = 0.0;
+    Vec3 lower{0.0}, upper{0.0};
 
     TriangleModel() = default;
     TriangleModel(const TriangleModel&) = delete;
@@ -81,6 +82,10 @@ struct FarInstance {
     std::uint32_t instance = 0;  // index into TriangleGeometry::instances
     RTCScene corners = nullptr;  // owned by the model
     int exponent = 0;
+    // A world-space box around the mesh, padded far beyond rounding: a ray
+    // that misses it is not walked.
+    Vec3 lower{-std::numeric_limits<double>::infinity()};
+    Vec3 upper{std::numeric_limits<double>::infinity()};
 };
 
 struct TriangleGeometry {

@@ -145,6 +145,24 @@ Vec3 times_power_of_two(const Vec3& v, int exponent) {
     return Vec3(std::ldexp(v.x, exponent), std::ldexp(v.y, exponent), std::ldexp(v.z, exponent));
 }
 
+// Whether the ray's stretch from t_min to t_max misses the box.
+bool misses_box(const Vec3& lower, const Vec3& upper, const Vec3& origin, const Vec3& direction,
+                double t_min, double t_max) {
+    double enter = t_min, leave = t_max;
+    for (int a = 0; a < 3; ++a) {
+        if (direction[a] == 0.0) {
+            if (origin[a] < lower[a] || origin[a] > upper[a]) return true;
+            continue;
+        }
+        double t0 = (lower[a] - origin[a]) / direction[a],
+               t1 = (upper[a] - origin[a]) / direction[a];
+        if (t0 > t1) std::swap(t0, t1);
+        enter = std::max(enter, t0);
+        leave = std::min(leave, t1);
+    }
+    return enter > leave;
+}
+
 // The walk of one mesh beyond Embree's reach: the ray moved into its model's
 // space in double precision, times 2^-exponent, against the model's own BVH.
 // Its direction is scaled to a length near 1 by another power of two (and its
@@ -154,6 +172,7 @@ Vec3 times_power_of_two(const Vec3& v, int exponent) {
 // nearer than q.t_max goes to `nearest`; `first` stops at any kept one.
 bool nearest_in_far_instance(TriangleQuery& q, const FarInstance& far, TriangleId& nearest,
                              bool first) {
+    if (misses_box(far.lower, far.upper, q.origin, q.direction, q.t_min, q.t_max)) return false;
     const MeshInstance& instance = q.geometry->instances[far.instance];
     const Vec3 origin =
         times_power_of_two(apply_point(instance.to_object, q.origin), -far.exponent);
