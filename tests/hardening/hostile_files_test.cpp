@@ -571,5 +571,95 @@ TEST_F(FarRays, SpheresInTheirBvhSeenInAPlaneScaledPastFloatRangeRender) {
     EXPECT_EQ(pixel(0, 0), black);
 }
 
+// Shapes whose bounds pass Embree's float range (1.8e18): its BVH leaves
+// them out, so they are tested exactly on every ray instead. Each fills the
+// whole view (or its reflection) 1 unit from the camera; every pixel shows it
+// white.
+class HugeShapes : public FarRays {
+  protected:
+    std::string all_white() const {
+        std::string wrong;
+        for (int y = 0; y < 9; ++y)
+            for (int x = 0; x < 9; ++x)
+                if (pixel(x, y) != white)
+                    wrong += " (" + std::to_string(x) + ", " + std::to_string(y) + ")";
+        return wrong;
+    }
+    // Nine small spheres off to the side: more than are tested without a BVH.
+    static std::string small_spheres() {
+        std::string items;
+        for (int i = 0; i < 9; ++i)
+            items += "sphere { radius: 0.1; center: <" + std::to_string(100 + i) + ", 0, 0>; }\n";
+        return items;
+    }
+    static constexpr const char* huge = "scale: <1e9, 1e9, 1e9>; scale: <1e9, 1e9, 1e9>; ";
+    static constexpr const char* lit = "material { pigment: <1, 1, 1>; ambient: <1, 1, 1>; } ";
+    // A black mirror filling the view at z = -1: the reflected rays, which no
+    // table lists shapes for, walk the BVH.
+    static constexpr const char* mirror =
+        "plane { normal: <0, 0, 1>; distance: -1; material { pigment: <0, 0, 0>; reflection: 1; "
+        "} }\n";
+};
+
+TEST_F(HugeShapes, AMeshPastFloatRangeIsNotLeftOut) {
+    const ProgramRun r = render(std::string("mesh { file: \"quad.obj\"; ") + lit + "transform { " +
+                                huge + "scale: <9, 9, 1>; translate: <0, 0, -1>; } }\n");
+    EXPECT_EQ(r.signal, 0) << r.err;
+    ASSERT_EQ(r.code, 0) << r.err;
+    EXPECT_EQ(all_white(), "") << "pixels that miss the quad";
+}
+
+TEST_F(HugeShapes, AMeshWhoseFileIsPastFloatRangeIsNotLeftOut) {
+    write_file(dir / "big.obj",
+               "v -9e19 -9e19 0\nv 9e19 -9e19 0\nv 9e19 9e19 0\nv -9e19 9e19 0\nf 1 2 3 4\n");
+    const ProgramRun r = render(std::string("mesh { file: \"big.obj\"; ") + lit +
+                                "transform { scale: <0.1, 0.1, 0.1>; translate: <0, 0, -1>; } }\n");
+    EXPECT_EQ(r.signal, 0) << r.err;
+    ASSERT_EQ(r.code, 0) << r.err;
+    EXPECT_EQ(all_white(), "") << "pixels that miss the quad";
+}
+
+TEST_F(HugeShapes, ATrianglePastFloatRangeIsNotLeftOut) {
+    const ProgramRun r =
+        render(std::string("triangle { a: <-1, -1, 0>; b: <3, -1, 0>; c: <-1, 3, 0>; ") + lit +
+               "transform { " + huge + "scale: <9, 9, 1>; translate: <0, 0, -1>; } }\n");
+    EXPECT_EQ(r.signal, 0) << r.err;
+    ASSERT_EQ(r.code, 0) << r.err;
+    EXPECT_EQ(all_white(), "") << "pixels that miss the triangle";
+}
+
+TEST_F(HugeShapes, AMeshPastFloatRangeCastsItsShadow) {
+    // A white floor at z = -1 lit from z = 3 through the quad at z = 2.
+    const ProgramRun r = render(
+        "plane { normal: <0, 0, 1>; distance: -1; material { pigment: <1, 1, 1>; "
+        "diffuse: <1, 1, 1>; } }\n"
+        "point_light { position: <0, 0, 3>; intensity: <1, 1, 1>; }\n"
+        "mesh { file: \"quad.obj\"; transform { " +
+        std::string(huge) + "scale: <9, 9, 1>; translate: <0, 0, 2>; } }\n");
+    EXPECT_EQ(r.signal, 0) << r.err;
+    ASSERT_EQ(r.code, 0) << r.err;
+    EXPECT_EQ(pixel(4, 4), black) << "the quad shadows the floor";
+    EXPECT_EQ(pixel(0, 0), black);
+}
+
+TEST_F(HugeShapes, ASpherePastFloatRangeAmongOthersIsNotLeftOut) {
+    // Centre 9e18 behind the camera, its surface at z = 1, seen in the mirror.
+    const ProgramRun r =
+        render(small_spheres() + mirror + "sphere { center: <0, 0, 1>; " + lit + "transform { " +
+               huge + "scale: <9, 9, 9>; translate: <0, 0, 1>; } }\n");
+    EXPECT_EQ(r.signal, 0) << r.err;
+    ASSERT_EQ(r.code, 0) << r.err;
+    EXPECT_EQ(all_white(), "") << "pixels whose reflection misses the sphere";
+}
+
+TEST_F(HugeShapes, AnEllipsoidPastFloatRangeAmongOthersIsNotLeftOut) {
+    const ProgramRun r =
+        render(small_spheres() + mirror + "sphere { center: <0, 0, 1>; " + lit + "transform { " +
+               huge + "scale: <9, 9, 1e-18>; translate: <0, 0, 1>; } }\n");
+    EXPECT_EQ(r.signal, 0) << r.err;
+    ASSERT_EQ(r.code, 0) << r.err;
+    EXPECT_EQ(all_white(), "") << "pixels whose reflection misses the ellipsoid";
+}
+
 }  // namespace
 }  // namespace jt::test

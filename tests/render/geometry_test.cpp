@@ -148,11 +148,14 @@ TEST(Intersect, CylinderPartsAndRims) {
 // Embree only culls: the BVH answer must equal a brute-force loop over every
 // primitive with the same exact routines, for `rays` random rays through a
 // crowd of `count` spheres, ellipsoids and cylinders.
-void expect_bvh_agrees_with_brute_force(int count, double extent, int rays, int min_hits) {
+// `extra` primitives join the crowd.
+void expect_bvh_agrees_with_brute_force(int count, double extent, int rays, int min_hits,
+                                        const std::vector<Primitive>& extra = {}) {
     std::mt19937 rng(7);
     std::uniform_real_distribution<double> u(-10.0, 10.0);
     Scene scene = random_crowd(rng, count, extent, 1.5);
     scene.primitives.push_back(plane({0.2, 1, 0.1}, -12.0));
+    scene.primitives.insert(scene.primitives.end(), extra.begin(), extra.end());
     auto prepared = prepare_scene(scene).value();
     const Geometry& g = *prepared->geometry;
     ASSERT_GT(g.shapes.size(), static_cast<std::size_t>(count / 2));
@@ -206,6 +209,18 @@ TEST(RayQueries, BvhAgreesWithBruteForce) {
 // build, a looser tree): the answers stay exact.
 TEST(RayQueries, MortonBuiltBvhAgreesWithBruteForce) {
     expect_bvh_agrees_with_brute_force(60000, 60.0, 300, 100);
+}
+
+// Embree's BVH leaves out a box that reaches past 1.8e18: the shapes that
+// reach there are tested on every ray instead, and the answers stay exact.
+// Each slab below is 2 thick and 2e19 wide, through the crowd's middle.
+TEST(RayQueries, ShapesPastEmbreesReachAgreeWithBruteForce) {
+    Primitive slab = sphere({0, 0, 0}, 1.0);
+    slab.transforms = {scale({1e9, 1e9, 1e9}), scale({1e9, 1e9, 1e9}), scale({10, 1e-18, 10})};
+    Primitive wall = cylinder(1.0, 2.0);
+    wall.transforms = {translate({0, -1, 0}), scale({1e9, 1e9, 1e9}), scale({1e9, 1e9, 1e9}),
+                       scale({10, 1e-18, 10}), rotate(TransformKind::zrotate, 90)};
+    expect_bvh_agrees_with_brute_force(600, 10.0, 4000, 1000, {slab, wall});
 }
 
 }  // namespace

@@ -29,6 +29,13 @@ inline bool within_reach(const Vec3& v) {
            std::abs(v.z) <= embree_reach;
 }
 
+// Whether Embree's BVH holds a primitive with this box: its build leaves out,
+// without a word, every box that reaches past FLT_LARGE (false for NaN too).
+inline bool within_reach(const RTCBounds& box) {
+    return within_reach(Vec3(box.lower_x, box.lower_y, box.lower_z)) &&
+           within_reach(Vec3(box.upper_x, box.upper_y, box.upper_z));
+}
+
 // Whether Embree takes the ray as it is (false for NaN too).
 inline bool embree_takes(const Vec3& origin, const Vec3& direction) {
     return within_reach(origin) && within_reach(direction);

@@ -1,5 +1,7 @@
 #include "geometry/bounds.hpp"
 #include "render/embree_device.hpp"
+#include "render/far_ray.hpp"
+#include "render/listed_shapes.hpp"
 #include "render/pattern.hpp"
 #include "render/prepared_scene.hpp"
 #include "render/ray_queries.hpp"
@@ -182,6 +184,12 @@ Expected<std::shared_ptr<const Geometry>> build_geometry(const Scene& scene,
         s.bounds.upper_z += static_cast<float>(g->bounds_slack);
         add_bounding_sphere(s);  // for the direction tables' lists, which have no boxes
     }
+    for (std::uint32_t i = 0; i < g->spheres.size(); ++i)
+        if (!within_reach(padded_float_bounds(
+                sphere_box(g->spheres[i].center, g->spheres[i].radius), g->bounds_slack)))
+            g->beyond_bvh.push_back(i);
+    for (std::uint32_t i = 0; i < g->shapes.size(); ++i)
+        if (!within_reach(g->shapes[i].bounds)) g->beyond_bvh.push_back(i | shape_flag);
 
     g->bvh = rtcNewScene(embree_device());
     const RTCBuildQuality quality =

@@ -78,6 +78,11 @@ struct Geometry {
     RTCScene bvh = nullptr;
     unsigned sphere_geometry_id = RTC_INVALID_GEOMETRY_ID;
     unsigned shape_geometry_id = RTC_INVALID_GEOMETRY_ID;
+    // With a BVH: the spheres and shapes (listed as in listed_shapes.hpp)
+    // whose boxes reach past what Embree's BVH holds (render/far_ray.hpp).
+    // The BVH leaves them out, so every query tests them exactly, as it does
+    // the planes. Empty in any scene whose numbers stay near unit size.
+    std::vector<std::uint32_t> beyond_bvh;
     // Triangles and meshes, in Embree's own geometry; null when there are none.
     std::unique_ptr<TriangleGeometry> triangles;
 

@@ -156,6 +156,15 @@ bool offer_shape(ClosestQuery& q, std::uint32_t index) {
     return true;
 }
 
+// Offers `listed` (a sphere index, or a shape index with shape_flag) to the
+// query; a shape's bounding sphere is tried before its exact test.
+void offer_listed(ClosestQuery& q, std::uint32_t listed) {
+    if (!(listed & shape_flag))
+        offer_sphere(q, listed);
+    else if (!misses_bounds(q.geometry->shapes[listed & ~shape_flag], q.origin, q.direction))
+        offer_shape(q, listed & ~shape_flag);
+}
+
 // The queries of a geometry without a BVH: every shape tested, in index order.
 void closest_by_testing_all(ClosestQuery& q) {
     const Geometry& g = *q.geometry;
@@ -224,11 +233,7 @@ bool closest_by_listed(ClosestQuery& q, const ListedShapes& listed, std::size_t 
     for (std::size_t k = 0; k < listed.size(); ++k) {
         if (listed.nearest[k] > q.t * length) return true;
         if (k == limit) return false;
-        const std::uint32_t shape = listed.shapes[k];
-        if (!(shape & shape_flag))
-            offer_sphere(q, shape);
-        else if (!misses_bounds(q.geometry->shapes[shape & ~shape_flag], q.origin, q.direction))
-            offer_shape(q, shape & ~shape_flag);
+        offer_listed(q, listed.shapes[k]);
     }
     return true;
 }
@@ -253,9 +258,11 @@ bool hinted_blocks(const Geometry& g, const OccluderHint& hint, const Vec3& orig
     return false;
 }
 
-// Planes are few and unbounded, so they are tested before any list or BVH.
-bool plane_blocks(const Geometry& geometry, const Vec3& origin, const Vec3& direction, double t_min,
-                  double t_max, OccluderHint& blocker) {
+// Planes are few and unbounded, so they are tested before any list or BVH;
+// so are the shapes the BVH leaves out (Geometry::beyond_bvh), which no list
+// or walk may be relied on to hold.
+bool unbounded_blocks(const Geometry& geometry, const Vec3& origin, const Vec3& direction,
+                      double t_min, double t_max, OccluderHint& blocker) {
     for (std::uint32_t i = 0; i < geometry.planes.size(); ++i) {
         const WorldPlane& p = geometry.planes[i];
         if (intersect_plane(origin, direction, p.normal, p.distance, t_min, t_max) != no_hit) {
@@ -263,6 +270,11 @@ bool plane_blocks(const Geometry& geometry, const Vec3& origin, const Vec3& dire
             return true;
         }
     }
+    for (const std::uint32_t listed : geometry.beyond_bvh)
+        if (listed_blocks(geometry, listed, origin, direction, t_min, t_max)) {
+            blocker = hint_for(listed);
+            return true;
+        }
     return false;
 }
 
@@ -355,6 +367,7 @@ bool closest_hit(const Geometry& geometry, const Vec3& origin, const Vec3& direc
             q.index = i;
         }
     }
+    for (const std::uint32_t listed : geometry.beyond_bvh) offer_listed(q, listed);
 
     // A long list is walked too when a sphere on it covers the block
     // (heavily overlapping spheres): that sphere's hit soon ends the walk,
@@ -465,7 +478,7 @@ bool occluded_among(const Geometry& geometry, const ListedShapes& candidates, co
                     const Departure& from) {
     if (hint && hinted_blocks(geometry, *hint, origin, direction, t_min, t_max)) return true;
     OccluderHint blocker;
-    bool blocked = plane_blocks(geometry, origin, direction, t_min, t_max, blocker);
+    bool blocked = unbounded_blocks(geometry, origin, direction, t_min, t_max, blocker);
     // A blocker lies nearer the origin than the ray's end.
     const double reach = t_max * glm::length(direction) * (1.0 + 1e-9);
     for (std::size_t k = 0; k < candidates.size() && !blocked && candidates.nearest[k] < reach;
@@ -492,7 +505,7 @@ bool occluded(const Geometry& geometry, const Vec3& origin, const Vec3& directio
     if (hint && !short_list && hinted_blocks(geometry, *hint, origin, direction, t_min, t_max))
         return true;
     OccluderHint blocker;
-    bool blocked = plane_blocks(geometry, origin, direction, t_min, t_max, blocker);
+    bool blocked = unbounded_blocks(geometry, origin, direction, t_min, t_max, blocker);
     if (!blocked && candidates && (!geometry.bvh || candidates->size() <= max_cell_candidates)) {
         blocked =
             occluded_by_listed(geometry, *candidates, origin, direction, t_min, t_max, blocker);
@@ -521,14 +534,9 @@ void occluded_together(const Geometry& geometry, std::span<const ShadowRay> rays
         const ShadowRay& r = rays[i];
         blocked[i] =
             hint && hinted_blocks(geometry, *hint, r.origin, r.direction, r.t_min, r.t_max);
-        for (std::uint32_t p = 0; p < geometry.planes.size() && !blocked[i]; ++p) {
-            const WorldPlane& plane = geometry.planes[p];
-            if (intersect_plane(r.origin, r.direction, plane.normal, plane.distance, r.t_min,
-                                r.t_max) != no_hit) {
-                blocker = {OccluderHint::Set::plane, p};
-                any = blocked[i] = true;
-            }
-        }
+        if (!blocked[i] &&
+            unbounded_blocks(geometry, r.origin, r.direction, r.t_min, r.t_max, blocker))
+            any = blocked[i] = true;
         all = all && blocked[i];
     }
     if (!all && !geometry.bvh) {

@@ -3,6 +3,7 @@
 #include "jtracer/model_cache.hpp"
 #include "jtracer/texture.hpp"
 #include "render/embree_device.hpp"
+#include "render/far_ray.hpp"
 #include "render/triangle_queries.hpp"
 
 #include <glm/geometric.hpp>
@@ -77,6 +78,13 @@ RTCScene corner_scene(const Model& model, int e) {
 std::unique_ptr<TriangleModel> model_scene(std::shared_ptr<const Model> model) {
     auto m = std::make_unique<TriangleModel>();
     m->scene = corner_scene(*model, 0);
+    if (!model->positions.empty()) m->lower = m->upper = Vec3(model->positions[0]);
+    for (const glm::vec3& p : model->positions) {
+        m->extent = std::max(
+            {m->extent, double(std::abs(p.x)), double(std::abs(p.y)), double(std::abs(p.z))});
+        m->lower = glm::min(m->lower, Vec3(p));
+        m->upper = glm::max(m->upper, Vec3(p));
+    }
     m->model = std::move(model);
     return m;
 }
@@ -94,34 +102,110 @@ std::unique_ptr<TriangleModel> model_scene(std::shared_ptr<const Model> model) {
 // itself; meshes shrunk less keep the shared BVH and their images' bytes.
 constexpr double kMaxPlainInverse = 1 << 24;
 
-int shrink_exponent(const ObjectTransform& transform) {
+// The largest row sum of |m|: the norm that bounds how much m can lengthen a vector.
+double largest_row_sum(const glm::dmat3& m) {
     double largest_row = 0.0;
     for (int r = 0; r < 3; ++r) {
         double row = 0.0;
-        for (int c = 0; c < 3; ++c) row += std::abs(transform.to_object.linear[c][r]);
+        for (int c = 0; c < 3; ++c) row += std::abs(m[c][r]);
         largest_row = std::max(largest_row, row);
     }
+    return largest_row;
+}
+
+int shrink_exponent(const ObjectTransform& transform) {
+    const double largest_row = largest_row_sum(transform.to_object.linear);
     if (!(largest_row > kMaxPlainInverse)) return 0;
     return std::ilogb(largest_row) + 1;
 }
 
-void attach_instance(RTCScene top, TriangleModel& model, const ObjectTransform& transform) {
+// Embree moves a ray into an instance's space in single precision by the
+// float inverse of its map, and the rounding grows with the map's condition
+// number: a tetrahedron stretched 600 times more along one axis than another
+// (a random scene's) moved a reflected ray by 3e-5 of its size, and the ray,
+// which passes 3e-6 inside a corner of the solid, missed both faces there.
+// Past this condition number (the product of the map's and its inverse's
+// largest row sums), a mesh is walked on its own, its rays moved into its
+// space in double precision (FarInstance), where the float rounding is that
+// of the model's own coordinates. Each such mesh costs every ray a box test
+// and, when it passes, a walk of its own; below the limit (a plank scaled
+// 20 times longer than it is thick) meshes keep Embree's instancing, and the
+// rounding it adds stays within about 64 float steps.
+constexpr double kMaxInstanceCondition = 64.0;
+
+bool ill_conditioned(const ObjectTransform& transform) {
+    return !(largest_row_sum(transform.to_world.linear) *
+                 largest_row_sum(transform.to_object.linear) <=
+             kMaxInstanceCondition);
+}
+
+// The BVH of the model's corners times 2^-e, made once.
+RTCScene scaled_corners(TriangleModel& model, int e) {
+    if (e == 0) return model.scene;
+    auto known = model.shrunk.find(e);
+    if (known == model.shrunk.end())
+        known = model.shrunk.emplace(e, corner_scene(*model.model, e)).first;
+    return known->second;
+}
+
+// The exponent e that brings the model's corners times 2^-e below 2^50, well
+// within Embree's reach; 0 when they are within it already.
+int reach_exponent(const TriangleModel& model) {
+    return model.extent > embree_reach ? std::ilogb(model.extent) - 49 : 0;
+}
+
+// Whether some corner of the mesh may lie past Embree's reach, in the corners
+// its instance names (the model's times 2^-shrink) or in the world: each
+// world coordinate is bounded by the translation's plus the map's row of
+// magnitudes times the model's extent.
+bool beyond_reach(const TriangleModel& model, const ObjectTransform& transform, int shrink) {
+    if (!(std::ldexp(model.extent, -shrink) <= embree_reach)) return true;
+    for (int r = 0; r < 3; ++r) {
+        double reach = std::abs(transform.to_world.translation[r]);
+        for (int c = 0; c < 3; ++c)
+            reach += std::abs(transform.to_world.linear[c][r]) * model.extent;
+        if (!(reach <= embree_reach)) return true;
+    }
+    return false;
+}
+
+// The box FarInstance::lower and upper describe: the model's box through the
+// map, padded as render/listed_shapes.hpp pads bounds; unbounded when any of
+// it is not finite.
+void bound_far_instance(FarInstance& far, const TriangleModel& model,
+                        const ObjectTransform& transform) {
+    Vec3 lower(std::numeric_limits<double>::infinity()), upper(-lower);
+    for (int k = 0; k < 8; ++k) {
+        const Vec3 corner((k & 1) ? model.upper.x : model.lower.x,
+                          (k & 2) ? model.upper.y : model.lower.y,
+                          (k & 4) ? model.upper.z : model.lower.z);
+        const Vec3 p = apply_point(transform.to_world, corner);
+        lower = glm::min(lower, p);
+        upper = glm::max(upper, p);
+    }
+    if (!all_finite(lower) || !all_finite(upper)) return;
+    const double largest = std::max({std::abs(lower.x), std::abs(lower.y), std::abs(lower.z),
+                                     std::abs(upper.x), std::abs(upper.y), std::abs(upper.z)});
+    const Vec3 pad = 1e-6 * (upper - lower) + Vec3(1e-7 * largest);
+    far.lower = lower - pad;
+    far.upper = upper + pad;
+}
+
+// A mesh walked on its own (FarInstance) keeps its instance, disabled, so that
+// instance ids stay the indices of TriangleGeometry::instances; rays meet it
+// through TriangleGeometry::far_instances instead.
+void attach_instance(RTCScene top, TriangleModel& model, const ObjectTransform& transform,
+                     bool enabled) {
     RTCGeometry g = rtcNewGeometry(embree_device(), RTC_GEOMETRY_TYPE_INSTANCE);
     const int e = shrink_exponent(transform);
-    RTCScene corners = model.scene;
-    if (e != 0) {
-        auto known = model.shrunk.find(e);
-        if (known == model.shrunk.end())
-            known = model.shrunk.emplace(e, corner_scene(*model.model, e)).first;
-        corners = known->second;
-    }
-    rtcSetGeometryInstancedScene(g, corners);
+    rtcSetGeometryInstancedScene(g, scaled_corners(model, e));
     float xfm[12];  // 3x4, column-major: the linear part's columns, then the translation
     for (int c = 0; c < 3; ++c)
         for (int r = 0; r < 3; ++r)
             xfm[3 * c + r] = static_cast<float>(std::ldexp(transform.to_world.linear[c][r], e));
     for (int r = 0; r < 3; ++r) xfm[9 + r] = static_cast<float>(transform.to_world.translation[r]);
     rtcSetGeometryTransform(g, 0, RTC_FORMAT_FLOAT3X4_COLUMN_MAJOR, xfm);
+    if (!enabled) rtcDisableGeometry(g);
     rtcCommitGeometry(g);
     rtcAttachGeometry(top, g);
     rtcReleaseGeometry(g);
@@ -132,8 +216,15 @@ void attach_loose(TriangleGeometry& t) {
     auto* v = static_cast<float*>(rtcGetGeometryBufferData(g, RTC_BUFFER_TYPE_VERTEX, 0));
     auto* i = static_cast<std::uint32_t*>(rtcGetGeometryBufferData(g, RTC_BUFFER_TYPE_INDEX, 0));
     std::uint32_t next = 0;
-    for (const LooseTriangle& triangle : t.loose) {
-        for (const Vec3& p : triangle.corners) {
+    for (std::uint32_t k = 0; k < t.loose.size(); ++k) {
+        const LooseTriangle& triangle = t.loose[k];
+        const bool far = !within_reach(triangle.corners[0]) || !within_reach(triangle.corners[1]) ||
+                         !within_reach(triangle.corners[2]);
+        // Embree's BVH leaves such a triangle out; it stands here as a point,
+        // which Embree's test never meets, and is tested exactly instead.
+        if (far) t.far_loose.push_back(k);
+        for (const Vec3& corner : triangle.corners) {
+            const Vec3 p = far ? Vec3(0.0) : corner;
             *v++ = static_cast<float>(p.x);
             *v++ = static_cast<float>(p.y);
             *v++ = static_cast<float>(p.z);
@@ -223,7 +314,18 @@ Expected<std::unique_ptr<TriangleGeometry>> build_triangle_geometry(const Scene&
         instance.file_materials = file_materials;
         t->file_materials = t->file_materials || file_materials;
         instance.source = source;
-        attach_instance(t->scene, *t->models[known->second], transform);
+        TriangleModel& model = *t->models[known->second];
+        const bool far = beyond_reach(model, transform, shrink_exponent(transform)) ||
+                         ill_conditioned(transform);
+        attach_instance(t->scene, model, transform, !far);
+        if (far) {
+            FarInstance walked;
+            walked.instance = static_cast<std::uint32_t>(t->instances.size());
+            walked.exponent = reach_exponent(model);
+            walked.corners = scaled_corners(model, walked.exponent);
+            bound_far_instance(walked, model, transform);
+            t->far_instances.push_back(walked);
+        }
         t->instances.push_back(instance);
     }
     if (!t) return std::unique_ptr<TriangleGeometry>();

@@ -35,6 +35,9 @@ struct TriangleModel {
     // past what Embree's float instance transform holds (attach_instance).
     std::map<int, RTCScene> shrunk;
     std::map<double, std::shared_ptr<const CornerNormals>> generated;
+    // The largest magnitude of any corner coordinate, and the corners' box.
+    double extent = 0.0;
+    Vec3 lower{0.0}, upper{0.0};
 
     TriangleModel() = default;
     TriangleModel(const TriangleModel&) = delete;
@@ -68,10 +71,31 @@ struct LooseTriangle {
     bool mirrored = false;
 };
 
+// A mesh walked on its own: one whose triangles reach past what Embree's BVH
+// holds (1.8e18, see render/far_ray.hpp), in the world or in its file, which
+// Embree's top BVH leaves out without a word, or one whose map is so
+// ill-conditioned that Embree's float move into its space misses faces
+// (triangle_geometry.cpp). Each ray is moved into the model's space in double
+// precision, times 2^-exponent, and walks `corners` (its model's corners
+// times 2^-exponent) on its own.
+struct FarInstance {
+    std::uint32_t instance = 0;  // index into TriangleGeometry::instances
+    RTCScene corners = nullptr;  // owned by the model
+    int exponent = 0;
+    // A world-space box around the mesh, padded far beyond rounding: a ray
+    // that misses it is not walked.
+    Vec3 lower{-std::numeric_limits<double>::infinity()};
+    Vec3 upper{std::numeric_limits<double>::infinity()};
+};
+
 struct TriangleGeometry {
     std::vector<std::unique_ptr<TriangleModel>> models;
     std::vector<MeshInstance> instances;  // index = instance geometry id in `scene`
+    std::vector<FarInstance> far_instances;
     std::vector<LooseTriangle> loose;
+    // Loose triangles with a corner past Embree's reach (indices into
+    // `loose`): its BVH leaves them out, so each query tests them exactly.
+    std::vector<std::uint32_t> far_loose;
     unsigned loose_geometry_id = RTC_INVALID_GEOMETRY_ID;
     bool file_materials = false;  // some instance has materials: "file"
     RTCScene scene = nullptr;     // the instances and the loose triangles

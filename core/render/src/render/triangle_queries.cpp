@@ -24,6 +24,9 @@ struct TriangleQuery {
     double t_min, t_max;
     Departure from;
     double lift;  // |origin - from.point|
+    // The instance whose corners Embree walks on their own (a FarInstance):
+    // its hits name no instance.
+    std::uint32_t far_instance = TriangleId::no_instance;
 };
 
 Vec3 corner(const Model& m, std::uint32_t triangle, int k) {
@@ -94,7 +97,22 @@ bool keep(const TriangleQuery& q, TriangleId id) {
 }
 
 bool keep(const RTCFilterFunctionNArguments* args) {
-    return keep(*reinterpret_cast<const TriangleQuery*>(args->context), id_of(args));
+    const auto& q = *reinterpret_cast<const TriangleQuery*>(args->context);
+    TriangleId id = id_of(args);
+    if (q.far_instance != TriangleId::no_instance) id.instance = q.far_instance;
+    return keep(q, id);
+}
+
+// Tests triangle `id` exactly: true when the ray passes inside it nearer than
+// `best`, and the query keeps it; `best` and `nearest` are then that hit.
+bool offer_exactly(const TriangleQuery& q, TriangleId id, double& best, TriangleId& nearest) {
+    TrianglePoint p;
+    if (!exact_point(*q.geometry, id, q.origin, q.direction, p) || !(p.u >= 0.0) || !(p.v >= 0.0) ||
+        !(p.u + p.v <= 1.0) || !(p.t < best) || !keep(q, id))
+        return false;
+    best = p.t;
+    nearest = id;
+    return true;
 }
 
 // The walk for a ray out of Embree's reach even when moved (render/far_ray.hpp):
@@ -103,15 +121,7 @@ bool keep(const RTCFilterFunctionNArguments* args) {
 bool nearest_by_testing_all(const TriangleQuery& q, TriangleId& nearest, bool first) {
     const TriangleGeometry& g = *q.geometry;
     double best = no_hit;
-    auto offer = [&](TriangleId id) {
-        TrianglePoint p;
-        if (!exact_point(g, id, q.origin, q.direction, p) || !(p.u >= 0.0) || !(p.v >= 0.0) ||
-            !(p.u + p.v <= 1.0) || !(p.t < best) || !keep(q, id))
-            return false;
-        best = p.t;
-        nearest = id;
-        return first;
-    };
+    auto offer = [&](TriangleId id) { return offer_exactly(q, id, best, nearest) && first; };
     for (std::uint32_t i = 0; i < g.loose.size(); ++i)
         if (offer({TriangleId::no_instance, i})) return true;
     for (std::uint32_t k = 0; k < g.instances.size(); ++k) {
@@ -129,6 +139,108 @@ bool embree_ray(const TriangleQuery& q, RTCRay& ray, bool& walk) {
         fit_embree_ray(q.geometry->scene, q.origin, q.direction, q.t_min, q.t_max, ray);
     walk = far.fit == FarRay::Fit::out_of_reach;
     return far.fit == FarRay::Fit::as_is || far.fit == FarRay::Fit::moved;
+}
+
+Vec3 times_power_of_two(const Vec3& v, int exponent) {
+    return Vec3(std::ldexp(v.x, exponent), std::ldexp(v.y, exponent), std::ldexp(v.z, exponent));
+}
+
+// Whether the ray's stretch from t_min to t_max misses the box.
+bool misses_box(const Vec3& lower, const Vec3& upper, const Vec3& origin, const Vec3& direction,
+                double t_min, double t_max) {
+    double enter = t_min, leave = t_max;
+    for (int a = 0; a < 3; ++a) {
+        if (direction[a] == 0.0) {
+            if (origin[a] < lower[a] || origin[a] > upper[a]) return true;
+            continue;
+        }
+        double t0 = (lower[a] - origin[a]) / direction[a],
+               t1 = (upper[a] - origin[a]) / direction[a];
+        if (t0 > t1) std::swap(t0, t1);
+        enter = std::max(enter, t0);
+        leave = std::min(leave, t1);
+    }
+    return enter > leave;
+}
+
+// The walk of one mesh beyond Embree's reach: the ray moved into its model's
+// space in double precision, times 2^-exponent, against the model's own BVH.
+// Its direction is scaled to a length near 1 by another power of two (and its
+// distances the other way): Embree's float test multiplies coordinates by the
+// direction, and a shrunk mesh's map lengthens it past what a float holds.
+// The filter decides each hit on the ray as it is. The nearest kept triangle
+// nearer than q.t_max goes to `nearest`; `first` stops at any kept one.
+bool nearest_in_far_instance(TriangleQuery& q, const FarInstance& far, TriangleId& nearest,
+                             bool first) {
+    if (misses_box(far.lower, far.upper, q.origin, q.direction, q.t_min, q.t_max)) return false;
+    const MeshInstance& instance = q.geometry->instances[far.instance];
+    const Vec3 origin =
+        times_power_of_two(apply_point(instance.to_object, q.origin), -far.exponent);
+    Vec3 direction = apply_vector(instance.to_object, q.direction);
+    const double longest =
+        std::max({std::abs(direction.x), std::abs(direction.y), std::abs(direction.z)});
+    if (!(longest > 0.0) || !std::isfinite(longest)) return false;
+    const int k = std::ilogb(longest);
+    direction = times_power_of_two(direction, -k);
+    RTCRayHit rayhit;
+    const FarRay fit =
+        fit_embree_ray(far.corners, origin, direction, std::ldexp(q.t_min, k - far.exponent),
+                       std::ldexp(q.t_max, k - far.exponent), rayhit.ray);
+    if (fit.fit == FarRay::Fit::misses) return false;
+    if (fit.fit == FarRay::Fit::out_of_reach) {
+        const Model& m = *q.geometry->models[instance.model]->model;
+        double best = q.t_max;
+        bool found = false;
+        for (std::uint32_t i = 0; i < m.triangles.size(); ++i)
+            if (offer_exactly(q, {far.instance, i}, best, nearest)) {
+                found = true;
+                if (first) break;
+            }
+        return found;
+    }
+    q.far_instance = far.instance;
+    bool found = false;
+    if (first) {
+        rtcOccluded1(far.corners, &q.context, &rayhit.ray);
+        found = rayhit.ray.tfar < 0.0f;
+    } else {
+        rayhit.hit.geomID = RTC_INVALID_GEOMETRY_ID;
+        rayhit.hit.primID = RTC_INVALID_GEOMETRY_ID;
+        rayhit.hit.instID[0] = RTC_INVALID_GEOMETRY_ID;
+        rtcIntersect1(far.corners, &q.context, &rayhit);
+        found = rayhit.hit.geomID != RTC_INVALID_GEOMETRY_ID;
+        if (found) nearest = {far.instance, rayhit.hit.primID};
+    }
+    q.far_instance = TriangleId::no_instance;
+    return found;
+}
+
+// The triangles Embree's BVH leaves out (TriangleGeometry::far_loose and
+// far_instances), offered after what it found (`found`, at `nearest`): the
+// nearest kept one of them all ends in `nearest`. `first` stops at any kept one.
+bool nearest_beyond_bvh(TriangleQuery& q, TriangleId& nearest, bool found, bool first) {
+    const TriangleGeometry& g = *q.geometry;
+    const double t_max = q.t_max;
+    double best = no_hit;
+    TrianglePoint p;
+    if (found && exact_point(g, nearest, q.origin, q.direction, p)) best = p.t;
+    for (const std::uint32_t k : g.far_loose) {
+        if (found && first) return true;
+        found = offer_exactly(q, {TriangleId::no_instance, k}, best, nearest) || found;
+    }
+    for (const FarInstance& far : g.far_instances) {
+        if (found && first) return true;
+        q.t_max = std::min(t_max, best);
+        TriangleId id;
+        if (nearest_in_far_instance(q, far, id, first) &&
+            (first || (exact_point(g, id, q.origin, q.direction, p) && p.t < best))) {
+            best = first ? best : p.t;
+            nearest = id;
+            found = true;
+        }
+    }
+    q.t_max = t_max;
+    return found;
 }
 
 TriangleQuery query(const TriangleGeometry& g, const Vec3& origin, const Vec3& direction,
@@ -160,18 +272,23 @@ bool closest_triangle(const TriangleGeometry& g, const Vec3& origin, const Vec3&
     TriangleQuery q = query(g, origin, direction, t_min, t_max, from);
     RTCRayHit rayhit;
     bool walk = false;
+    bool found = false;
     if (!embree_ray(q, rayhit.ray, walk)) {
-        if (!walk || !nearest_by_testing_all(q, hit.id, false)) return false;
+        found = walk && nearest_by_testing_all(q, hit.id, false);
     } else {
         rayhit.hit.geomID = RTC_INVALID_GEOMETRY_ID;
         rayhit.hit.primID = RTC_INVALID_GEOMETRY_ID;
         rayhit.hit.instID[0] = RTC_INVALID_GEOMETRY_ID;
         rtcIntersect1(g.scene, &q.context, &rayhit);
-        if (rayhit.hit.geomID == RTC_INVALID_GEOMETRY_ID) return false;
+        found = rayhit.hit.geomID != RTC_INVALID_GEOMETRY_ID;
         const unsigned instance = rayhit.hit.instID[0];
-        hit.id = {instance == RTC_INVALID_GEOMETRY_ID ? TriangleId::no_instance : instance,
-                  rayhit.hit.primID};
+        if (found)
+            hit.id = {instance == RTC_INVALID_GEOMETRY_ID ? TriangleId::no_instance : instance,
+                      rayhit.hit.primID};
     }
+    if (!g.far_loose.empty() || !g.far_instances.empty())
+        found = nearest_beyond_bvh(q, hit.id, found, false);
+    if (!found) return false;
     TrianglePoint p;
     if (!exact_point(g, hit.id, origin, direction, p)) return false;
     hit.t = p.t;
@@ -187,12 +304,17 @@ bool triangle_blocks(const TriangleGeometry& g, const Vec3& origin, const Vec3& 
     TriangleQuery q = query(g, origin, direction, t_min, t_max, from);
     RTCRay ray;
     bool walk = false;
+    TriangleId any;
+    bool blocked = false;
     if (!embree_ray(q, ray, walk)) {
-        TriangleId any;
-        return walk && nearest_by_testing_all(q, any, true);
+        blocked = walk && nearest_by_testing_all(q, any, true);
+    } else {
+        rtcOccluded1(g.scene, &q.context, &ray);
+        blocked = ray.tfar < 0.0f;
     }
-    rtcOccluded1(g.scene, &q.context, &ray);
-    return ray.tfar < 0.0f;
+    if (!blocked && (!g.far_loose.empty() || !g.far_instances.empty()))
+        blocked = nearest_beyond_bvh(q, any, false, true);
+    return blocked;
 }
 
 TriangleSurface triangle_surface(const TriangleGeometry& g, const TriangleHit& hit) {
