@@ -158,13 +158,29 @@ void inherit_material(const Material& from, Material& to, std::uint32_t kept) {
     }
 }
 
-// The bits of the material properties named in `records`.
+constexpr bool material_names_are_unique() {
+    const auto properties = schema_of<Material>().properties;
+    for (std::size_t i = 0; i < properties.size(); ++i)
+        for (std::size_t j = i + 1; j < properties.size(); ++j)
+            if (same_name(properties[i].name, properties[j].name)) return false;
+    return true;
+}
+static_assert(material_names_are_unique(), "material_mask stops at a name's first match");
+
+// The bits of the material properties named in `records`. Names are unique,
+// so the search for each stops at its match: the common ones come first, and
+// comparing every name with each record was 7% of a parse.
 std::uint32_t material_mask(std::span<const PropertySource> records) {
     const auto properties = schema_of<Material>().properties;
     std::uint32_t mask = 0;
-    for (const PropertySource& p : records)
-        for (std::size_t i = 0; i < properties.size() && i < 32; ++i)
-            if (same_name(properties[i].name, p.name)) mask |= 1u << i;
+    for (const PropertySource& p : records) {
+        for (std::size_t i = 0; i < properties.size() && i < 32; ++i) {
+            if (same_name(properties[i].name, p.name)) {
+                mask |= 1u << i;
+                break;
+            }
+        }
+    }
     return mask;
 }
 
