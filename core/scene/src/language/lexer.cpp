@@ -141,9 +141,15 @@ void Lexer::next(Token& out) {
         // Words first, then the one-byte tokens from a table: a switch's
         // jump, taken to a different place each token, was mispredicted.
         if (is_word_start(c)) {
-            while (at_ < text_.size() && is_word_char(text_[at_])) ++at_;
-            set(out, TokenKind::word, text_.substr(start, at_ - start), start, at_ - start,
-                pos_of(start));
+            // A local index: at_ itself would be stored back at every byte,
+            // as the text's bytes might alias it for all the compiler knows.
+            const char* const data = text_.data();
+            const std::size_t n = text_.size();
+            std::size_t end = start + 1;
+            while (end < n && is_word_char(data[end])) ++end;
+            at_ = end;
+            set(out, TokenKind::word, std::string_view(data + start, end - start), start,
+                end - start, pos_of(start));
             return;
         }
         if (const TokenKind kind = single_byte_tokens[static_cast<unsigned char>(c)];
@@ -160,18 +166,24 @@ void Lexer::next(Token& out) {
             lex_number(start, out);
             return;
         }
-        auto u = static_cast<unsigned char>(c);
-        if (u >= 0x20 && u < 0x7f) {
-            sink_.error(pos_of(start), std::string("unexpected character '") + c + "'");
-        } else {
-            sink_.error(pos_of(start), "unexpected byte " + byte_name(u));
-        }
-        ++at_;
-        // Skip the rest of a multi-byte UTF-8 character as part of the same mistake.
-        while (at_ < text_.size() && (static_cast<unsigned char>(text_[at_]) & 0xC0) == 0x80) ++at_;
-        skip_space_and_comments();
+        skip_unexpected();
     }
     set(out, TokenKind::end, {}, text_.size(), 0, pos_of(at_));
+}
+
+void Lexer::skip_unexpected() {
+    const std::size_t start = at_;
+    const char c = text_[start];
+    auto u = static_cast<unsigned char>(c);
+    if (u >= 0x20 && u < 0x7f) {
+        sink_.error(pos_of(start), std::string("unexpected character '") + c + "'");
+    } else {
+        sink_.error(pos_of(start), "unexpected byte " + byte_name(u));
+    }
+    ++at_;
+    // Skip the rest of a multi-byte UTF-8 character as part of the same mistake.
+    while (at_ < text_.size() && (static_cast<unsigned char>(text_[at_]) & 0xC0) == 0x80) ++at_;
+    skip_space_and_comments();
 }
 
 namespace {
