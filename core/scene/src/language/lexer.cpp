@@ -11,6 +11,10 @@
 #include <cstring>
 #include <string>
 
+#if defined(__SSE2__)
+#include <emmintrin.h>
+#endif
+
 namespace jt::lang {
 
 namespace {
@@ -467,11 +471,36 @@ std::string describe(const Token& token) {
     }
 }
 
+namespace {
+
+// Whether the 32 bytes at `p` are all ASCII and none is NUL: SSE2 (every
+// x86-64 has it) checks 16 bytes in three instructions, a quarter of what
+// the eight-byte test below takes for them.
+bool plain_ascii_32([[maybe_unused]] const unsigned char* p) {
+#if defined(__SSE2__)
+    const __m128i zero = _mm_setzero_si128();
+    const __m128i a = _mm_loadu_si128(reinterpret_cast<const __m128i*>(p));
+    const __m128i b = _mm_loadu_si128(reinterpret_cast<const __m128i*>(p + 16));
+    // A byte's top bit: set from 0x80 up, and by the comparison for a NUL.
+    const __m128i marked = _mm_or_si128(_mm_or_si128(a, _mm_cmpeq_epi8(a, zero)),
+                                        _mm_or_si128(b, _mm_cmpeq_epi8(b, zero)));
+    return _mm_movemask_epi8(marked) == 0;
+#else
+    return false;
+#endif
+}
+
+}  // namespace
+
 std::size_t find_invalid_text_byte(std::string_view text) {
     const auto* s = reinterpret_cast<const unsigned char*>(text.data());
     const std::size_t n = text.size();
     std::size_t i = 0;
     while (i < n) {
+        if (i + 32 <= n && plain_ascii_32(s + i)) {
+            i += 32;
+            continue;
+        }
         // Fast path: eight ASCII bytes with no NUL among them.
         if (i + 8 <= n) {
             std::uint64_t w;
