@@ -32,6 +32,10 @@
 #include <utility>
 #include <vector>
 
+#if defined(__SSE2__)
+#include <emmintrin.h>
+#endif
+
 namespace jt {
 namespace lang {
 namespace {
@@ -116,6 +120,30 @@ BraceAndColonCount count_braces_and_colons(std::string_view text) {
     BraceAndColonCount count;
     const char* p = text.data();
     std::size_t left = text.size();
+#if defined(__SSE2__)
+    // Sixteen bytes at a time with SSE2 (every x86-64 has it): a comparison
+    // makes 0xFF of each match, and subtracting that adds one to a byte
+    // counter; the counters are summed before they can pass 255.
+    const __m128i braces16 = _mm_set1_epi8('{'), colons16 = _mm_set1_epi8(':');
+    const __m128i zero = _mm_setzero_si128();
+    auto total = [&](__m128i counters) {  // the sum of the 16 byte counters
+        const __m128i sums = _mm_sad_epu8(counters, zero);
+        return static_cast<std::size_t>(_mm_cvtsi128_si32(sums)) +
+               static_cast<std::size_t>(_mm_cvtsi128_si32(_mm_unpackhi_epi64(sums, sums)));
+    };
+    while (left >= 16) {
+        const std::size_t blocks = std::min(left / 16, words_per_flush);
+        __m128i braces = zero, colons = zero;
+        for (std::size_t k = 0; k < blocks; ++k, p += 16) {
+            const __m128i v = _mm_loadu_si128(reinterpret_cast<const __m128i*>(p));
+            braces = _mm_sub_epi8(braces, _mm_cmpeq_epi8(v, braces16));
+            colons = _mm_sub_epi8(colons, _mm_cmpeq_epi8(v, colons16));
+        }
+        count.braces += total(braces);
+        count.colons += total(colons);
+        left -= blocks * 16;
+    }
+#endif
     while (left >= 8) {
         const std::size_t words = std::min(left / 8, words_per_flush);
         std::uint64_t braces = 0, colons = 0;
