@@ -7,8 +7,13 @@
 // first touch cost as much as the parsing), and "warm", where the heap keeps
 // its pages between parses, which measures the parser's own work.
 // "DenseColdNoMap" parses without the source map, as jtracer-cli does.
+//
+// "ValidateDense" is the checks that follow the parse (validate_scene, as
+// check_scene runs it), on the scene parsed without the map, in bytes of its
+// text a second so that it compares with the parse.
 
 #include "jtracer/parser.hpp"
+#include "jtracer/validate.hpp"
 
 #include <benchmark/benchmark.h>
 
@@ -109,11 +114,26 @@ void BM_ParseDenseWarm(benchmark::State& state) {
     parse_with_warm_heap(state, dense_text());
 }
 
+void BM_ValidateDense(benchmark::State& state) {
+    const std::string& text = dense_text();
+    const jt::ParseResult parsed = jt::parse_scene(text, {.source_map = false});
+    for (auto _ : state) {
+        std::vector<jt::Diagnostic> found = jt::validate_scene(parsed.scene, parsed.source);
+        // One warning, for the camera's aspect; no error.
+        for (const jt::Diagnostic& d : found)
+            if (d.severity == jt::Severity::error) state.SkipWithError("the scene has errors");
+        benchmark::DoNotOptimize(found);
+    }
+    state.SetBytesProcessed(static_cast<std::int64_t>(state.iterations()) *
+                            static_cast<std::int64_t>(text.size()));
+}
+
 BENCHMARK(BM_ParseNormalCold)->Unit(benchmark::kMillisecond);
 BENCHMARK(BM_ParseDenseCold)->Unit(benchmark::kMillisecond);
 BENCHMARK(BM_ParseDenseColdNoMap)->Unit(benchmark::kMillisecond);
 BENCHMARK(BM_ParseNormalWarm)->Unit(benchmark::kMillisecond);
 BENCHMARK(BM_ParseDenseWarm)->Unit(benchmark::kMillisecond);
+BENCHMARK(BM_ValidateDense)->Unit(benchmark::kMillisecond);
 
 }  // namespace
 

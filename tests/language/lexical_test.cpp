@@ -3,6 +3,7 @@
 #include "test_util.hpp"
 
 #include "jtracer/limits.hpp"
+#include "language/lexer.hpp"
 
 #include <charconv>
 #include <cmath>
@@ -145,6 +146,56 @@ TEST(Text, InvalidUtf8IsRejectedAtItsLineAndColumn) {
     EXPECT_EQ(brief("\xED\xA0\x80"),
               "1:1: error: the file is not a text file: it contains a "
               "byte that is not UTF-8 text");  // a surrogate
+}
+
+// The first byte a text is refused for, byte by byte: what the lexer's fast
+// paths over blocks of ASCII must agree with.
+std::size_t first_refused_byte(std::string_view text) {
+    const auto* s = reinterpret_cast<const unsigned char*>(text.data());
+    for (std::size_t i = 0; i < text.size();) {
+        const unsigned char c = s[i];
+        if (c == 0) return i;
+        if (c < 0x80) {
+            ++i;
+            continue;
+        }
+        const std::size_t length = (c & 0xE0) == 0xC0   ? 2
+                                   : (c & 0xF0) == 0xE0 ? 3
+                                   : (c & 0xF8) == 0xF0 ? 4
+                                                        : 0;
+        if (length == 0 || i + length > text.size()) return i;
+        std::uint32_t code = c & (0x7F >> length);
+        for (std::size_t k = 1; k < length; ++k) {
+            if ((s[i + k] & 0xC0) != 0x80) return i;
+            code = (code << 6) | (s[i + k] & 0x3F);
+        }
+        const std::uint32_t least = length == 2 ? 0x80 : length == 3 ? 0x800 : 0x10000;
+        if (code < least || code > 0x10FFFF || (code >= 0xD800 && code <= 0xDFFF)) return i;
+        i += length;
+    }
+    return std::string_view::npos;
+}
+
+TEST(Text, TheFirstRefusedByteIsFoundWhereverItIs) {
+    std::mt19937_64 rng(3);
+    static const char* const inserts[] = {"\0",   "\xC3\xA9", "\xE2\x82\xAC", "\xFF",
+                                          "\x80", "\xC3",     "\xED\xA0\x80"};
+    int refused = 0;
+    for (int trial = 0; trial < 20000; ++trial) {
+        std::string text(rng() % 130, 'x');
+        for (char& c : text) c = static_cast<char>(' ' + rng() % 95);
+        for (int k = static_cast<int>(rng() % 3); k > 0 && !text.empty(); --k) {
+            const char* insert = inserts[rng() % std::size(inserts)];
+            const std::size_t length = insert[0] == 0 ? 1 : std::strlen(insert);
+            text.insert(rng() % text.size(), insert, length);
+        }
+        SCOPED_TRACE(trial);
+        const std::size_t expected = first_refused_byte(text);
+        refused += expected != std::string_view::npos;
+        EXPECT_EQ(lang::find_invalid_text_byte(text), expected);
+    }
+    EXPECT_GT(refused, 5000);  // and many were accepted
+    EXPECT_LT(refused, 15000);
 }
 
 TEST(Text, Utf8InCommentsIsFineAndOutsideIsAnUnexpectedCharacter) {

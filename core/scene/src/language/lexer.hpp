@@ -88,8 +88,12 @@ class Lexer {
 
   private:
     void skip_space_and_comments();
-    void lex_number(std::size_t start, Token& out);
-    void lex_string(std::size_t start, Token& out);
+    // The rare tokens and the errors stay out of next(): inlined, their
+    // strings made next() save six registers and a frame for every token.
+    [[gnu::noinline]] void lex_number(std::size_t start, Token& out);
+    [[gnu::noinline]] void lex_string(std::size_t start, Token& out);
+    // Reports the byte at at_, which starts no token, and skips it.
+    [[gnu::noinline]] void skip_unexpected();
     SourcePos pos_of(std::size_t offset) const {
         return {line_, static_cast<int>(offset - line_start_) + 1, file_};
     }

@@ -78,6 +78,14 @@ bool PropertyReader::read(const PropertySpec<Block>& spec, const Property& p, Bl
             std::conditional_t<is_vector, Vec3, double> value;
             if constexpr (is_vector) {
                 value = v.vector;
+                // check_range's own first test, here without the call: most
+                // vectors are strictly inside their range (so finite too).
+                const ValueRange& range = spec.range;
+                auto between = [&](double x) { return range.low < x && x < range.high; };
+                if (!range.nonzero && between(value.x) && between(value.y) && between(value.z)) {
+                    out = value;
+                    return true;
+                }
             } else {
                 // Whole numbers truncate toward zero before the range applies
                 // (docs/language.md §3.2).
@@ -127,21 +135,6 @@ void PropertyReader::apply_block(Block& target, OpenBlock& block, const Property
                                            "; instead");
     }
     record(block, p, spec->name, true);
-}
-
-int FirstLines::find(std::string_view name) const {
-    for (std::size_t i = 0; i < count_; ++i)
-        if (same_name({inline_[i].name, inline_[i].size}, name)) return inline_[i].line;
-    for (const auto& [known, line] : more_)
-        if (same_name(known, name)) return line;
-    return 0;
-}
-
-void FirstLines::add(std::string_view name, int line) {
-    if (count_ < inline_capacity)
-        inline_[count_++] = {name.data(), name.size(), line};
-    else
-        more_.emplace_back(name, line);
 }
 
 void PropertyReader::record(OpenBlock& block, const Property& p, std::string_view as_name,
