@@ -52,6 +52,14 @@ struct WorldPlane {
     std::uint32_t source = 0;
 };
 
+// The BVH of hard shadow rays, native float spheres that cull for the exact
+// test (render/shadow_spheres.hpp); its scene is null when there is none.
+struct ShadowSpheres {
+    RTCScene bvh = nullptr;
+    double reach = 0.0;  // the largest coordinate of an origin it takes
+    double tail = 0.0;   // how far past their end its float rays run
+};
+
 struct PatternSpace {
     Affine to_object;
     Shape shape;
@@ -78,6 +86,7 @@ struct Geometry {
     RTCScene bvh = nullptr;
     unsigned sphere_geometry_id = RTC_INVALID_GEOMETRY_ID;
     unsigned shape_geometry_id = RTC_INVALID_GEOMETRY_ID;
+    ShadowSpheres shadow;
     // Triangles and meshes, in Embree's own geometry; null when there are none.
     std::unique_ptr<TriangleGeometry> triangles;
 
