@@ -21,10 +21,11 @@
 namespace jt::test {
 namespace {
 
-// Overlapping plain spheres of many sizes, every fifth primitive a
+// Heavily overlapping plain spheres of many sizes (the shadow BVH is built
+// only for such), every fifth primitive a
 // transformed cylinder (the shadow BVH's user geometry).
 Scene sphere_crowd(std::mt19937& rng) {
-    std::uniform_real_distribution<double> u(-6.0, 6.0), r(0.05, 2.0), angle(0.0, 360.0);
+    std::uniform_real_distribution<double> u(-4.0, 4.0), r(0.05, 2.5), angle(0.0, 360.0);
     Scene scene;
     for (int i = 0; i < 300; ++i) {
         Primitive p = i % 5 == 4 ? cylinder(0.3 * r(rng), 2.0 * r(rng))
@@ -116,7 +117,7 @@ TEST(ShadowSpheres, PaddedFloatSpheresKeepEveryExactHit) {
         EXPECT_EQ(tally.wrong, 0) << "seed " << seed;
         // Both answers common, so that the comparison means something.
         EXPECT_GT(tally.blocked, 5000) << "seed " << seed;
-        EXPECT_GT(tally.open, 5000) << "seed " << seed;
+        EXPECT_GT(tally.open, 2000) << "seed " << seed;
     }
 }
 

@@ -4,11 +4,13 @@
 #include "render/float_ray.hpp"
 #include "render/ray_queries.hpp"
 
+#include <glm/common.hpp>
 #include <glm/geometric.hpp>
 
 #include <algorithm>
 #include <cmath>
 #include <limits>
+#include <vector>
 
 namespace jt {
 
@@ -19,6 +21,29 @@ namespace {
 constexpr double min_magnitude = 1e-12;
 constexpr double max_magnitude = 1e15;
 
+// The shadow BVH pays where the spheres overlap heavily, their boxes holding
+// many spheres a ray misses: there Embree's leaf test culls what would each
+// have been a callback. Where they hardly overlap, the user geometry's tight
+// single boxes already cull as well, and the float spheres' leaves of several
+// spheres cost more (sphereflake, lattice and spheres_5761 were 6-14% slower
+// with it, nested_shells 14% faster; docs/benchmarks.md §2.5). The measure:
+// the spheres' volumes summed over the volume of their bounding box, which
+// is 8 on nested_shells and under 0.2 on the other race scenes; above 1 the
+// spheres must overlap.
+constexpr double min_overlap = 1.0;
+
+bool spheres_overlap_heavily(const std::vector<WorldSphere>& spheres) {
+    Vec3 lower(std::numeric_limits<double>::infinity()), upper(-lower);
+    double volume = 0.0;
+    for (const WorldSphere& s : spheres) {
+        lower = glm::min(lower, s.center - Vec3(s.radius));
+        upper = glm::max(upper, s.center + Vec3(s.radius));
+        volume += 4.0 / 3.0 * 3.141592653589793 * s.radius * s.radius * s.radius;
+    }
+    const Vec3 size = upper - lower;
+    return volume > min_overlap * size.x * size.y * size.z;
+}
+
 float padded_radius(double radius, double pad) {
     return float_up(radius + pad);
 }
@@ -27,7 +52,9 @@ float padded_radius(double radius, double pad) {
 
 void build_shadow_spheres(Geometry& g, double magnitude, RTCBuildQuality quality,
                           double pad_factor) {
-    if (g.spheres.empty() || !(magnitude >= min_magnitude && magnitude <= max_magnitude)) return;
+    if (g.spheres.empty() || !(magnitude >= min_magnitude && magnitude <= max_magnitude) ||
+        !spheres_overlap_heavily(g.spheres))
+        return;
     ShadowSpheres& shadow = g.shadow;
     shadow.reach = shadow_reach_factor * magnitude;
     const double pad = pad_factor * shadow.reach;
