@@ -26,7 +26,7 @@ constexpr double max_magnitude = 1e15;
 // have been a callback. Where they hardly overlap, the user geometry's tight
 // single boxes already cull as well, and the float spheres' leaves of several
 // spheres cost more (sphereflake, lattice and spheres_5761 were 6-14% slower
-// with it, nested_shells 14% faster; docs/benchmarks.md §2.5). The measure:
+// with it, nested_shells 12% faster; docs/benchmarks.md §2.7). The measure:
 // the spheres' volumes summed over the volume of their bounding box, which
 // is 8 on nested_shells and under 0.2 on the other race scenes; above 1 the
 // spheres must overlap.
