@@ -6,6 +6,7 @@
 #include "render/shadow_spheres.hpp"
 #include "geometry/intersect.hpp"
 #include "jtracer/affine.hpp"
+#include "render/direction_table.hpp"
 #include "render/prepared_scene.hpp"
 #include "render/ray_queries.hpp"
 #include "scene_builder.hpp"
@@ -119,6 +120,44 @@ TEST(ShadowSpheres, PaddedFloatSpheresKeepEveryExactHit) {
         EXPECT_GT(tally.blocked, 5000) << "seed " << seed;
         EXPECT_GT(tally.open, 2000) << "seed " << seed;
     }
+}
+
+// In a crowded scene a shadow ray walks its light's cell list up to far more
+// shapes than elsewhere before the shadow BVH takes over: both must give the
+// exact answer, for rays from lifted points of the spheres' surfaces and
+// from anywhere around them.
+TEST(ShadowSpheres, CrowdedCellsGiveTheExactAnswer) {
+    std::mt19937 rng(4);
+    auto prepared = prepare_scene(sphere_crowd(rng)).value();
+    const Geometry& g = *prepared->geometry;
+    ASSERT_TRUE(g.crowded);
+    std::uniform_real_distribution<double> unit(-1.0, 1.0);
+    int long_cells = 0;
+    for (const Vec3 light : {Vec3{0, 20, 0}, Vec3{15, -3, -10}, Vec3{-9, 4, 12}}) {
+        const DirectionTable table =
+            build_direction_table(g, light, table_resolution(g.spheres.size() + g.shapes.size()));
+        Tally tally;
+        for (int i = 0; i < 4000; ++i) {
+            const WorldSphere& s = g.spheres[rng() % g.spheres.size()];
+            const Vec3 n = glm::normalize(Vec3{unit(rng), unit(rng), unit(rng)});
+            const Vec3 origin = i % 2 ? s.center + s.radius * n + 1e-9 * 8.0 * n
+                                      : 9.0 * Vec3{unit(rng), unit(rng), unit(rng)};
+            const double distance = glm::length(light - origin);
+            const ShadowRay r{origin, (light - origin) / distance, 0.0, distance};
+            auto cell = shapes_toward(table, -r.direction);
+            ASSERT_TRUE(cell);
+            if (cell->size() > 16) ++long_cells;
+            const bool exact = exactly_occluded(g, r);
+            (exact ? tally.blocked : tally.open) += 1;
+            OccluderHint hint;
+            if (occluded(g, r.origin, r.direction, r.t_min, r.t_max, &hint, &table) != exact)
+                ++tally.wrong;
+        }
+        EXPECT_EQ(tally.wrong, 0);
+        EXPECT_GT(tally.blocked, 500);
+        EXPECT_GT(tally.open, 100);
+    }
+    EXPECT_GT(long_cells, 1000);
 }
 
 // The same rays against float spheres of the exact radius: Embree's float

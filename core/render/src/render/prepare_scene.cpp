@@ -199,7 +199,8 @@ Expected<std::shared_ptr<const Geometry>> build_geometry(const Scene& scene,
         g->shape_geometry_id = attach_user_geometry(g->bvh, *g, g->shapes.size(), quality,
                                                     shape_bounds, shape_intersect, shape_occluded);
     rtcCommitScene(g->bvh);
-    build_shadow_spheres(*g, magnitude, quality);
+    g->crowded = spheres_overlap_heavily(g->spheres);
+    if (g->crowded) build_shadow_spheres(*g, magnitude, quality);
     return std::shared_ptr<const Geometry>(std::move(g));
 }
 

@@ -87,6 +87,9 @@ struct Geometry {
     unsigned sphere_geometry_id = RTC_INVALID_GEOMETRY_ID;
     unsigned shape_geometry_id = RTC_INVALID_GEOMETRY_ID;
     ShadowSpheres shadow;
+    // Whether the spheres overlap heavily (render/shadow_spheres.hpp); only
+    // then is there a shadow BVH, and hard shadow rays walk longer cell lists.
+    bool crowded = false;
     // Triangles and meshes, in Embree's own geometry; null when there are none.
     std::unique_ptr<TriangleGeometry> triangles;
 

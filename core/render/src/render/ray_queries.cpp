@@ -27,6 +27,10 @@ constexpr std::uint32_t no_source = std::numeric_limits<std::uint32_t>::max();
 // (a closest-hit query, once it has tested as many): testing each costs more
 // than Embree's walk past most of them.
 constexpr std::size_t max_cell_candidates = 16;
+// Where the spheres overlap heavily (Geometry::crowded), testing a light's
+// cell list beats the BVH walk, even the shadow BVH's, up to about this many
+// (docs/benchmarks.md §2.7).
+constexpr std::size_t max_crowded_light_candidates = 256;
 constexpr std::size_t short_candidate_list = 2;
 // A covered list is walked however long it is, but only so far: a walk that
 // has tested this many without settling the ray hands it to the BVH.
@@ -302,6 +306,17 @@ bool occluded_by_shadow_bvh(const Geometry& geometry, const ShadowRay& one, Occl
     return true;
 }
 
+// A shadow ray whose light's cell lists more shapes than max_cell_candidates,
+// or that has no cell: the list still, where the spheres are crowded and it is
+// not too long, else a BVH walk.
+bool occluded_beyond_cell(const Geometry& geometry, const ListedShapes* candidates,
+                          const ShadowRay& one, OccluderHint& blocker) {
+    if (geometry.crowded && candidates && candidates->size() <= max_crowded_light_candidates)
+        return occluded_by_listed(geometry, *candidates, one.origin, one.direction, one.t_min,
+                                  one.t_max, blocker);
+    return occluded_by_shadow_bvh(geometry, one, blocker);
+}
+
 }  // namespace
 
 void sphere_bounds(const RTCBoundsFunctionArguments* args) {
@@ -529,7 +544,8 @@ bool occluded(const Geometry& geometry, const Vec3& origin, const Vec3& directio
     } else if (!blocked && !geometry.bvh) {
         blocked = occluded_by_testing_all(geometry, origin, direction, t_min, t_max, blocker);
     } else if (!blocked) {
-        blocked = occluded_by_shadow_bvh(geometry, {origin, direction, t_min, t_max}, blocker);
+        blocked = occluded_beyond_cell(geometry, candidates ? &*candidates : nullptr,
+                                       {origin, direction, t_min, t_max}, blocker);
     }
     if (!blocked && geometry.triangles)
         blocked = triangle_blocks(*geometry.triangles, origin, direction, t_min, t_max, from);

@@ -21,16 +21,11 @@ namespace {
 constexpr double min_magnitude = 1e-12;
 constexpr double max_magnitude = 1e15;
 
-// The shadow BVH pays where the spheres overlap heavily, their boxes holding
-// many spheres a ray misses: there Embree's leaf test culls what would each
-// have been a callback. Where they hardly overlap, the user geometry's tight
-// single boxes already cull as well, and the float spheres' leaves of several
-// spheres cost more (sphereflake, lattice and spheres_5761 were 6-14% slower
-// with it, nested_shells 12% faster; docs/benchmarks.md §2.7). The measure:
-// the spheres' volumes summed over the volume of their bounding box, which
-// is 8 on nested_shells and under 0.2 on the other race scenes; above 1 the
-// spheres must overlap.
-constexpr double min_overlap = 1.0;
+float padded_radius(double radius, double pad) {
+    return float_up(radius + pad);
+}
+
+}  // namespace
 
 bool spheres_overlap_heavily(const std::vector<WorldSphere>& spheres) {
     Vec3 lower(std::numeric_limits<double>::infinity()), upper(-lower);
@@ -44,17 +39,9 @@ bool spheres_overlap_heavily(const std::vector<WorldSphere>& spheres) {
     return volume > min_overlap * size.x * size.y * size.z;
 }
 
-float padded_radius(double radius, double pad) {
-    return float_up(radius + pad);
-}
-
-}  // namespace
-
 void build_shadow_spheres(Geometry& g, double magnitude, RTCBuildQuality quality,
                           double pad_factor) {
-    if (g.spheres.empty() || !(magnitude >= min_magnitude && magnitude <= max_magnitude) ||
-        !spheres_overlap_heavily(g.spheres))
-        return;
+    if (g.spheres.empty() || !(magnitude >= min_magnitude && magnitude <= max_magnitude)) return;
     ShadowSpheres& shadow = g.shadow;
     shadow.reach = shadow_reach_factor * magnitude;
     const double pad = pad_factor * shadow.reach;

@@ -42,11 +42,24 @@
 
 #include <embree3/rtcore.h>
 
+#include <vector>
+
 namespace jt {
 
 // As above: the reach in multiples of the scene's magnitude, the pad of the reach.
 inline constexpr double shadow_reach_factor = 2.0;
 inline constexpr double shadow_pad_factor = 0x1p-10;
+
+// The measure of crowding that the shadow BVH and the longer walks of the
+// lights' cells (ray_queries.cpp) pay on: the spheres' volumes summed over
+// the volume of their bounding box, above min_overlap. It is 8 on
+// nested_shells and under 0.2 on the other race scenes; above 1 the spheres
+// must overlap. Where they hardly overlap, the main BVH's single tight boxes
+// cull as well as the float spheres, whose leaves of several spheres cost
+// more, and a long cell list costs more than its BVH walk (docs/benchmarks.md
+// §2.7 has the figures).
+inline constexpr double min_overlap = 1.0;
+bool spheres_overlap_heavily(const std::vector<WorldSphere>& spheres);
 
 // Builds geometry.shadow (its BVH and the distances above) from the
 // geometry's spheres and shapes; nothing when it has no plain spheres.
