@@ -5,6 +5,7 @@
 #include "render/pattern.hpp"
 #include "render/prepared_scene.hpp"
 #include "render/ray_queries.hpp"
+#include "render/shadow_spheres.hpp"
 
 #include <tbb/parallel_invoke.h>
 #include <glm/geometric.hpp>
@@ -19,6 +20,7 @@ namespace jt {
 
 Geometry::~Geometry() {
     if (bvh) rtcReleaseScene(bvh);
+    if (shadow.bvh) rtcReleaseScene(shadow.bvh);
 }
 
 namespace {
@@ -174,7 +176,8 @@ Expected<std::shared_ptr<const Geometry>> build_geometry(const Scene& scene,
         return std::shared_ptr<const Geometry>(std::move(g));
     }
 
-    g->bounds_slack = 1e-6 * scene_magnitude(*g);
+    const double magnitude = scene_magnitude(*g);
+    g->bounds_slack = 1e-6 * magnitude;
     for (TransformedShape& s : g->shapes) {
         s.bounds.lower_x -= static_cast<float>(g->bounds_slack);
         s.bounds.lower_y -= static_cast<float>(g->bounds_slack);
@@ -204,6 +207,8 @@ Expected<std::shared_ptr<const Geometry>> build_geometry(const Scene& scene,
         g->shape_geometry_id = attach_user_geometry(g->bvh, *g, g->shapes.size(), quality,
                                                     shape_bounds, shape_intersect, shape_occluded);
     rtcCommitScene(g->bvh);
+    g->crowded = spheres_overlap_heavily(g->spheres);
+    if (g->crowded) build_shadow_spheres(*g, magnitude, quality);
     return std::shared_ptr<const Geometry>(std::move(g));
 }
 

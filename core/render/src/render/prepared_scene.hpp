@@ -52,6 +52,14 @@ struct WorldPlane {
     std::uint32_t source = 0;
 };
 
+// The BVH of hard shadow rays, native float spheres that cull for the exact
+// test (render/shadow_spheres.hpp); its scene is null when there is none.
+struct ShadowSpheres {
+    RTCScene bvh = nullptr;
+    double reach = 0.0;  // the largest coordinate of an origin it takes
+    double tail = 0.0;   // how far past their end its float rays run
+};
+
 struct PatternSpace {
     Affine to_object;
     Shape shape;
@@ -83,6 +91,10 @@ struct Geometry {
     // The BVH leaves them out, so every query tests them exactly, as it does
     // the planes. Empty in any scene whose numbers stay near unit size.
     std::vector<std::uint32_t> beyond_bvh;
+    ShadowSpheres shadow;
+    // Whether the spheres overlap heavily (render/shadow_spheres.hpp); only
+    // then is there a shadow BVH, and hard shadow rays walk longer cell lists.
+    bool crowded = false;
     // Triangles and meshes, in Embree's own geometry; null when there are none.
     std::unique_ptr<TriangleGeometry> triangles;
 

@@ -5,6 +5,7 @@
 #include "jtracer/check.hpp"
 #include "render/far_ray.hpp"
 #include "render/float_ray.hpp"
+#include "render/shadow_spheres.hpp"
 
 #include <glm/geometric.hpp>
 
@@ -26,6 +27,10 @@ constexpr std::uint32_t no_source = std::numeric_limits<std::uint32_t>::max();
 // (a closest-hit query, once it has tested as many): testing each costs more
 // than Embree's walk past most of them.
 constexpr std::size_t max_cell_candidates = 16;
+// Where the spheres overlap heavily (Geometry::crowded), testing a light's
+// cell list beats the BVH walk, even the shadow BVH's, up to about this many
+// (docs/benchmarks.md §2.7).
+constexpr std::size_t max_crowded_light_candidates = 256;
 constexpr std::size_t short_candidate_list = 2;
 // A covered list is walked however long it is, but only so far: a walk that
 // has tested this many without settling the ray hands it to the BVH.
@@ -298,6 +303,32 @@ bool occluded_by_bvh(const Geometry& geometry, const ShadowRay& one, OccluderHin
     return true;
 }
 
+// occluded_by_bvh through the shadow BVH of float spheres where it takes the ray.
+bool occluded_by_shadow_bvh(const Geometry& geometry, const ShadowRay& one, OccluderHint& blocker) {
+    RTCRay ray;
+    if (!fit_shadow_ray(geometry.shadow, one.origin, one.direction, one.t_min, one.t_max, ray))
+        return occluded_by_bvh(geometry, one, blocker);
+    OcclusionQuery q;
+    rtcInitIntersectContext(&q.context);
+    q.geometry = &geometry;
+    q.rays = &one;
+    rtcOccluded1(geometry.shadow.bvh, &q.context, &ray);
+    if (!(ray.tfar < 0.0f)) return false;
+    blocker = q.blocker;
+    return true;
+}
+
+// A shadow ray whose light's cell lists more shapes than max_cell_candidates,
+// or that has no cell: the list still, where the spheres are crowded and it is
+// not too long, else a BVH walk.
+bool occluded_beyond_cell(const Geometry& geometry, const ListedShapes* candidates,
+                          const ShadowRay& one, OccluderHint& blocker) {
+    if (geometry.crowded && candidates && candidates->size() <= max_crowded_light_candidates)
+        return occluded_by_listed(geometry, *candidates, one.origin, one.direction, one.t_min,
+                                  one.t_max, blocker);
+    return occluded_by_shadow_bvh(geometry, one, blocker);
+}
+
 }  // namespace
 
 void sphere_bounds(const RTCBoundsFunctionArguments* args) {
@@ -320,6 +351,20 @@ void sphere_occluded(const RTCOccludedFunctionNArguments* args) {
             return intersect_sphere(r.origin, r.direction, s.center, s.radius, r.t_min, r.t_max) !=
                    no_hit;
         });
+}
+
+void sphere_occluded_filter(const RTCFilterFunctionNArguments* args) {
+    auto& q = *reinterpret_cast<OcclusionQuery*>(args->context);
+    for (unsigned lane = 0; lane < args->N; ++lane) {
+        if (!args->valid[lane]) continue;
+        const std::uint32_t index = RTCHitN_primID(args->hit, args->N, lane);
+        const ShadowRay& r = q.rays[RTCRayN_id(args->ray, args->N, lane)];
+        const WorldSphere& s = q.geometry->spheres[index];
+        if (intersect_sphere(r.origin, r.direction, s.center, s.radius, r.t_min, r.t_max) != no_hit)
+            q.blocker = {OccluderHint::Set::sphere, index};
+        else
+            args->valid[lane] = 0;
+    }
 }
 
 void shape_bounds(const RTCBoundsFunctionArguments* args) {
@@ -512,7 +557,8 @@ bool occluded(const Geometry& geometry, const Vec3& origin, const Vec3& directio
     } else if (!blocked && !geometry.bvh) {
         blocked = occluded_by_testing_all(geometry, origin, direction, t_min, t_max, blocker);
     } else if (!blocked) {
-        blocked = occluded_by_bvh(geometry, {origin, direction, t_min, t_max}, blocker);
+        blocked = occluded_beyond_cell(geometry, candidates ? &*candidates : nullptr,
+                                       {origin, direction, t_min, t_max}, blocker);
     }
     if (!blocked && geometry.triangles)
         blocked = triangle_blocks(*geometry.triangles, origin, direction, t_min, t_max, from);

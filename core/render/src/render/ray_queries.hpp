@@ -108,4 +108,8 @@ void shape_bounds(const RTCBoundsFunctionArguments* args);
 void shape_intersect(const RTCIntersectFunctionNArguments* args);
 void shape_occluded(const RTCOccludedFunctionNArguments* args);
 
+// The occlusion filter of the shadow BVH's float spheres (render/shadow_spheres.hpp):
+// keeps a float hit only where the sphere blocks the double ray.
+void sphere_occluded_filter(const RTCFilterFunctionNArguments* args);
+
 }  // namespace jt
