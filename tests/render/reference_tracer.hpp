@@ -29,7 +29,9 @@
 //   use lie between);
 // - a channel lies within 1e-6 of a rounding boundary of the 0..255 scale;
 // - two surfaces lie within 1e-8 (relative) of each other along one of its
-//   rays, or a secondary ray meets another surface within 1e-6 (relative) of
+//   rays (1e-6 when both are triangles, which a renderer may order in single
+//   precision, as §13.5 allows the core), or a secondary ray meets another
+//   surface within 1e-6 (relative) of
 //   its start: coincident or touching surfaces, where the nearest hit or the
 //   shadow is a matter of rounding;
 // - a point of a light's disk lies within rounding of the horizon of the
@@ -576,23 +578,40 @@ class Tracer {
                 Flags& flags) const {
         Hit best;
         double second = INFINITY;
+        bool second_triangle = false;  // the second root is a triangle's
         for (int k = 0; k < static_cast<int>(placed_.size()); ++k) {
             roots(k, o, d, from, [&](const Root& root) {
                 const double t = root.t;
                 if (from.placed >= 0 && t < 1e-6 * magnitude) flags.ambiguous = true;
                 if (t < best.t) {
                     second = best.t;
+                    second_triangle = best.placed >= 0 && is_triangle(best.placed);
                     best = {t, k, root};
-                } else {
-                    second = std::min(second, t);
+                } else if (t < second) {
+                    second = t;
+                    second_triangle = is_triangle(k);
                 }
             });
         }
-        if (second - best.t <= 1e-8 * std::max(best.t, magnitude)) flags.ambiguous = true;
+        // Which of two triangles a ray meets first is decided in single
+        // precision (docs/language.md §13.5: Embree's float test picks the
+        // triangle, and only its hit is refined in double).
+        const double tie =
+            best.placed >= 0 && is_triangle(best.placed) && second_triangle ? kTriangleTie : 1e-8;
+        if (second - best.t <= tie * std::max(best.t, magnitude)) flags.ambiguous = true;
         return best;
     }
 
     bool q_is_mesh(int k) const { return placed_[k].model != nullptr; }
+
+    // A triangle or a mesh: its hits are found in single precision.
+    bool is_triangle(int k) const {
+        return placed_[k].model != nullptr || std::holds_alternative<Triangle>(*placed_[k].shape);
+    }
+
+    // Two triangles' hits nearer each other than this (relative) along a ray
+    // are within the rounding of a single-precision test, some ulps of 6e-8.
+    static constexpr double kTriangleTie = 1e-6;
 
     // The fraction of a light that reaches across `distance`: 0 when an opaque
     // surface is in the way; with transmissive surfaces in the scene, the
