@@ -29,11 +29,12 @@
 //   use lie between);
 // - a channel lies within 1e-6 of a rounding boundary of the 0..255 scale;
 // - two surfaces lie within 1e-8 (relative) of each other along one of its
-//   rays (1e-6 when both are triangles, which a renderer may order in single
-//   precision, as §13.5 allows the core), or a secondary ray meets another
-//   surface within 1e-6 (relative) of
+//   rays, or a secondary ray meets another surface within 1e-6 (relative) of
 //   its start: coincident or touching surfaces, where the nearest hit or the
-//   shadow is a matter of rounding;
+//   shadow is a matter of rounding; two triangles within 1e-6 of each other,
+//   which a renderer may order in single precision (§13.5 allows the core
+//   that), and then the primary ray shaded as a hit on each triangle within
+//   1e-6 of its nearest joins the variants;
 // - a point of a light's disk lies within rounding of the horizon of the
 //   surface it lights, or the hit point within rounding of the light's sphere;
 // - its ray passes within rounding of an edge or a corner of a triangle: then
@@ -373,6 +374,13 @@ class Tracer {
             const Vec3 aim = q.object_to_world.linear * inside + q.object_to_world.translation;
             variant({ray.origin, glm::normalize(aim - ray.origin)}, false, plain);
         }
+        for (const auto& [placed, face] : faces_tied(ray.origin, ray.direction)) {
+            Flags forced = plain;
+            forced.force_placed = placed;
+            forced.force_face = face;
+            forced.force_slack = kTriangleTie;
+            variant(ray, false, forced);
+        }
         return out;
     }
 
@@ -424,6 +432,8 @@ class Tracer {
         // The primary ray's hit taken on this face of this placed primitive,
         // when the ray meets the face's plane where it meets the nearest surface.
         int force_placed = -1, force_face = -1;
+        // How much farther (relative) than the nearest surface the forced face may lie.
+        double force_slack = 1e-9;
         int i = 0, j = 0, k = 0;  // the pixel and sample the ray descends from (§14.0)
     };
 
@@ -567,6 +577,27 @@ class Tracer {
         return found;
     }
 
+    // The triangles (placed primitive, face) other than the nearest surface
+    // that the ray meets within kTriangleTie of it, when that surface is a
+    // triangle: a single-precision test may meet any of them first.
+    std::vector<std::pair<int, int>> faces_tied(const Vec3& o, const Vec3& d) const {
+        Hit best;
+        std::vector<Hit> triangles;
+        for (int k = 0; k < static_cast<int>(placed_.size()); ++k) {
+            roots(k, o, d, {}, [&](const Root& root) {
+                if (root.t < best.t) best = {root.t, k, root};
+                if (is_triangle(k)) triangles.push_back({root.t, k, root});
+            });
+        }
+        std::vector<std::pair<int, int>> found;
+        if (best.placed < 0 || !is_triangle(best.placed)) return found;
+        for (const Hit& h : triangles)
+            if (!(h.placed == best.placed && h.root.part == best.root.part) &&
+                h.t - best.t <= kTriangleTie * best.t)
+                found.emplace_back(h.placed, h.root.part);
+        return found;
+    }
+
     // Whether the plane of triangle abc passes through p, up to rounding.
     static bool holds(const Vec3& a, const Vec3& b, const Vec3& c, const Vec3& p) {
         const Vec3 n = glm::normalize(glm::cross(b - a, c - a));
@@ -647,7 +678,7 @@ class Tracer {
         Root forced;
         if (depth == 0 && flags.force_placed >= 0 &&
             plane_root(placed_[flags.force_placed], flags.force_face, o, d, forced) &&
-            (hit.placed < 0 || forced.t <= hit.t * (1 + 1e-9)))
+            (hit.placed < 0 || forced.t <= hit.t * (1 + flags.force_slack)))
             hit = {forced.t, flags.force_placed, forced};
         if (hit.placed < 0) {
             const Colour missed = sky_ ? sky(*sky_, d) : scene_.settings.background;
