@@ -27,7 +27,8 @@
 //   between two of the four rays), or when secondary rays start 1e-7 of the
 //   scene's magnitude off the surface instead of on it (the offsets renderers
 //   use lie between);
-// - a channel lies within 1e-6 of a rounding boundary of the 0..255 scale;
+// - a channel lies within 1e-6 of a rounding boundary of the 0..255 scale
+//   (unless it is the exact mean of 2^k samples that each clamp to 0 or 1);
 // - two surfaces lie within 1e-8 (relative) of each other along one of its
 //   rays, or a secondary ray meets another surface within 1e-6 (relative) of
 //   its start: coincident or touching surfaces, where the nearest hit or the
@@ -287,8 +288,14 @@ class Tracer {
             for (int i = 0; i < w; ++i) {
                 Colour sum(0.0), least(0.0), greatest(0.0), single(0.0);
                 bool ambiguous = false;
+                // Per channel: every sample's clamped value is 0 or 1 whatever
+                // the rounding, so that the mean is exact (n a power of two).
+                std::array<bool, 3> exact{true, true, true};
                 for (int k = 0; k < n; ++k) {
                     const Sample s = sample(camera, i, j, k, n);
+                    for (int c = 0; c < 3; ++c)
+                        exact[c] =
+                            exact[c] && (s.colour[c] == 0 || s.colour[c] >= 1 + kClampMargin);
                     sum += n == 1 ? s.colour : clamped(s.colour);
                     single = s.colour;
                     least += s.least;
@@ -299,7 +306,8 @@ class Tracer {
                 const Rgb8 centre = quantize(mean);
                 const Rgb8 low = quantize(least / static_cast<double>(n));
                 const Rgb8 high = quantize(greatest / static_cast<double>(n));
-                ambiguous = ambiguous || near_rounding_boundary(mean) || !(low == high);
+                if (n == 1 || (n & (n - 1)) != 0) exact = {false, false, false};
+                ambiguous = ambiguous || near_rounding_boundary(mean, exact) || !(low == high);
                 std::uint8_t* p = out.image.pixel(i, j);
                 p[0] = centre.r;
                 p[1] = centre.g;
@@ -444,8 +452,15 @@ class Tracer {
         return {q(c.x), q(c.y), q(c.z)};
     }
 
-    static bool near_rounding_boundary(const Colour& c) {
+    // Above 1 by this (relative), a channel clamps to 1 under any rounding.
+    static constexpr double kClampMargin = 1e-6;
+
+    // Whether a channel not known `exact` lies within 1e-6 of a rounding
+    // boundary. An exact mean of samples each 0 or 1 (two of four at 1: 127.5)
+    // sits on a boundary that every renderer rounds alike.
+    static bool near_rounding_boundary(const Colour& c, const std::array<bool, 3>& exact) {
         for (int k = 0; k < 3; ++k) {
+            if (exact[k]) continue;
             const double v = std::clamp(c[k], 0.0, 1.0) * 255 + 0.5;
             const double fraction = v - std::floor(v);
             if (v > 0.5 && v < 255.5 && (fraction < 1e-6 || fraction > 1 - 1e-6)) return true;
