@@ -27,11 +27,15 @@
 //   between two of the four rays), or when secondary rays start 1e-7 of the
 //   scene's magnitude off the surface instead of on it (the offsets renderers
 //   use lie between);
-// - a channel lies within 1e-6 of a rounding boundary of the 0..255 scale;
+// - a channel lies within 1e-6 of a rounding boundary of the 0..255 scale
+//   (unless it is the exact mean of 2^k samples that each clamp to 0 or 1);
 // - two surfaces lie within 1e-8 (relative) of each other along one of its
 //   rays, or a secondary ray meets another surface within 1e-6 (relative) of
 //   its start: coincident or touching surfaces, where the nearest hit or the
-//   shadow is a matter of rounding;
+//   shadow is a matter of rounding; two triangles within 1e-6 of each other,
+//   which a renderer may order in single precision (§13.5 allows the core
+//   that), and then the primary ray shaded as a hit on each triangle within
+//   1e-6 of its nearest joins the variants;
 // - a point of a light's disk lies within rounding of the horizon of the
 //   surface it lights, or the hit point within rounding of the light's sphere;
 // - its ray passes within rounding of an edge or a corner of a triangle: then
@@ -284,8 +288,14 @@ class Tracer {
             for (int i = 0; i < w; ++i) {
                 Colour sum(0.0), least(0.0), greatest(0.0), single(0.0);
                 bool ambiguous = false;
+                // Per channel: every sample's clamped value is 0 or 1 whatever
+                // the rounding, so that the mean is exact (n a power of two).
+                std::array<bool, 3> exact{true, true, true};
                 for (int k = 0; k < n; ++k) {
                     const Sample s = sample(camera, i, j, k, n);
+                    for (int c = 0; c < 3; ++c)
+                        exact[c] =
+                            exact[c] && (s.colour[c] == 0 || s.colour[c] >= 1 + kClampMargin);
                     sum += n == 1 ? s.colour : clamped(s.colour);
                     single = s.colour;
                     least += s.least;
@@ -296,7 +306,8 @@ class Tracer {
                 const Rgb8 centre = quantize(mean);
                 const Rgb8 low = quantize(least / static_cast<double>(n));
                 const Rgb8 high = quantize(greatest / static_cast<double>(n));
-                ambiguous = ambiguous || near_rounding_boundary(mean) || !(low == high);
+                if (n == 1 || (n & (n - 1)) != 0) exact = {false, false, false};
+                ambiguous = ambiguous || near_rounding_boundary(mean, exact) || !(low == high);
                 std::uint8_t* p = out.image.pixel(i, j);
                 p[0] = centre.r;
                 p[1] = centre.g;
@@ -371,6 +382,13 @@ class Tracer {
             const Vec3 aim = q.object_to_world.linear * inside + q.object_to_world.translation;
             variant({ray.origin, glm::normalize(aim - ray.origin)}, false, plain);
         }
+        for (const auto& [placed, face] : faces_tied(ray.origin, ray.direction)) {
+            Flags forced = plain;
+            forced.force_placed = placed;
+            forced.force_face = face;
+            forced.force_slack = kTriangleTie;
+            variant(ray, false, forced);
+        }
         return out;
     }
 
@@ -422,6 +440,8 @@ class Tracer {
         // The primary ray's hit taken on this face of this placed primitive,
         // when the ray meets the face's plane where it meets the nearest surface.
         int force_placed = -1, force_face = -1;
+        // How much farther (relative) than the nearest surface the forced face may lie.
+        double force_slack = 1e-9;
         int i = 0, j = 0, k = 0;  // the pixel and sample the ray descends from (§14.0)
     };
 
@@ -432,8 +452,15 @@ class Tracer {
         return {q(c.x), q(c.y), q(c.z)};
     }
 
-    static bool near_rounding_boundary(const Colour& c) {
+    // Above 1 by this (relative), a channel clamps to 1 under any rounding.
+    static constexpr double kClampMargin = 1e-6;
+
+    // Whether a channel not known `exact` lies within 1e-6 of a rounding
+    // boundary. An exact mean of samples each 0 or 1 (two of four at 1: 127.5)
+    // sits on a boundary that every renderer rounds alike.
+    static bool near_rounding_boundary(const Colour& c, const std::array<bool, 3>& exact) {
         for (int k = 0; k < 3; ++k) {
+            if (exact[k]) continue;
             const double v = std::clamp(c[k], 0.0, 1.0) * 255 + 0.5;
             const double fraction = v - std::floor(v);
             if (v > 0.5 && v < 255.5 && (fraction < 1e-6 || fraction > 1 - 1e-6)) return true;
@@ -565,6 +592,27 @@ class Tracer {
         return found;
     }
 
+    // The triangles (placed primitive, face) other than the nearest surface
+    // that the ray meets within kTriangleTie of it, when that surface is a
+    // triangle: a single-precision test may meet any of them first.
+    std::vector<std::pair<int, int>> faces_tied(const Vec3& o, const Vec3& d) const {
+        Hit best;
+        std::vector<Hit> triangles;
+        for (int k = 0; k < static_cast<int>(placed_.size()); ++k) {
+            roots(k, o, d, {}, [&](const Root& root) {
+                if (root.t < best.t) best = {root.t, k, root};
+                if (is_triangle(k)) triangles.push_back({root.t, k, root});
+            });
+        }
+        std::vector<std::pair<int, int>> found;
+        if (best.placed < 0 || !is_triangle(best.placed)) return found;
+        for (const Hit& h : triangles)
+            if (!(h.placed == best.placed && h.root.part == best.root.part) &&
+                h.t - best.t <= kTriangleTie * best.t)
+                found.emplace_back(h.placed, h.root.part);
+        return found;
+    }
+
     // Whether the plane of triangle abc passes through p, up to rounding.
     static bool holds(const Vec3& a, const Vec3& b, const Vec3& c, const Vec3& p) {
         const Vec3 n = glm::normalize(glm::cross(b - a, c - a));
@@ -576,23 +624,40 @@ class Tracer {
                 Flags& flags) const {
         Hit best;
         double second = INFINITY;
+        bool second_triangle = false;  // the second root is a triangle's
         for (int k = 0; k < static_cast<int>(placed_.size()); ++k) {
             roots(k, o, d, from, [&](const Root& root) {
                 const double t = root.t;
                 if (from.placed >= 0 && t < 1e-6 * magnitude) flags.ambiguous = true;
                 if (t < best.t) {
                     second = best.t;
+                    second_triangle = best.placed >= 0 && is_triangle(best.placed);
                     best = {t, k, root};
-                } else {
-                    second = std::min(second, t);
+                } else if (t < second) {
+                    second = t;
+                    second_triangle = is_triangle(k);
                 }
             });
         }
-        if (second - best.t <= 1e-8 * std::max(best.t, magnitude)) flags.ambiguous = true;
+        // Which of two triangles a ray meets first is decided in single
+        // precision (docs/language.md §13.5: Embree's float test picks the
+        // triangle, and only its hit is refined in double).
+        const double tie =
+            best.placed >= 0 && is_triangle(best.placed) && second_triangle ? kTriangleTie : 1e-8;
+        if (second - best.t <= tie * std::max(best.t, magnitude)) flags.ambiguous = true;
         return best;
     }
 
     bool q_is_mesh(int k) const { return placed_[k].model != nullptr; }
+
+    // A triangle or a mesh: its hits are found in single precision.
+    bool is_triangle(int k) const {
+        return placed_[k].model != nullptr || std::holds_alternative<Triangle>(*placed_[k].shape);
+    }
+
+    // Two triangles' hits nearer each other than this (relative) along a ray
+    // are within the rounding of a single-precision test, some ulps of 6e-8.
+    static constexpr double kTriangleTie = 1e-6;
 
     // The fraction of a light that reaches across `distance`: 0 when an opaque
     // surface is in the way; with transmissive surfaces in the scene, the
@@ -628,7 +693,7 @@ class Tracer {
         Root forced;
         if (depth == 0 && flags.force_placed >= 0 &&
             plane_root(placed_[flags.force_placed], flags.force_face, o, d, forced) &&
-            (hit.placed < 0 || forced.t <= hit.t * (1 + 1e-9)))
+            (hit.placed < 0 || forced.t <= hit.t * (1 + flags.force_slack)))
             hit = {forced.t, flags.force_placed, forced};
         if (hit.placed < 0) {
             const Colour missed = sky_ ? sky(*sky_, d) : scene_.settings.background;

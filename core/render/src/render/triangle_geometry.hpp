@@ -21,6 +21,7 @@
 #include <limits>
 #include <map>
 #include <memory>
+#include <mutex>
 #include <vector>
 
 namespace jt {
@@ -35,6 +36,12 @@ struct TriangleModel {
     // past what Embree's float instance transform holds (attach_instance).
     std::map<int, RTCScene> shrunk;
     std::map<double, std::shared_ptr<const CornerNormals>> generated;
+    // Every corner of every triangle (3 * triangle + corner), sorted by its
+    // position: the triangles around a point (corners_by_position in
+    // triangle_queries.cpp). Built on first use, by whichever render thread
+    // needs it: most scenes never do.
+    mutable std::once_flag corners_sorted;
+    mutable std::vector<std::uint32_t> corners_by_position;
     // The largest magnitude of any corner coordinate, and the corners' box.
     double extent = 0.0;
     Vec3 lower{0.0}, upper{0.0};

@@ -10,6 +10,7 @@
 #include <array>
 #include <cmath>
 #include <limits>
+#include <numeric>
 
 namespace jt {
 
@@ -103,6 +104,25 @@ bool keep(const RTCFilterFunctionNArguments* args) {
     return keep(q, id);
 }
 
+bool position_less(const glm::vec3& a, const glm::vec3& b) {
+    return a.x < b.x || (a.x == b.x && (a.y < b.y || (a.y == b.y && a.z < b.z)));
+}
+
+// The model's corners sorted by position (TriangleModel::corners_by_position).
+const std::vector<std::uint32_t>& corners_by_position(const TriangleModel& tm) {
+    std::call_once(tm.corners_sorted, [&tm] {
+        const Model& m = *tm.model;
+        auto at = [&m](std::uint32_t k) { return m.positions[m.triangles[k / 3][k % 3]]; };
+        std::vector<std::uint32_t>& sorted = tm.corners_by_position;
+        sorted.resize(3 * m.triangles.size());
+        std::iota(sorted.begin(), sorted.end(), 0u);
+        std::sort(sorted.begin(), sorted.end(), [&](std::uint32_t a, std::uint32_t b) {
+            return position_less(at(a), at(b)) || (at(a) == at(b) && a < b);
+        });
+    });
+    return tm.corners_by_position;
+}
+
 // Tests triangle `id` exactly: true when the ray passes inside it nearer than
 // `best`, and the query keeps it; `best` and `nearest` are then that hit.
 bool offer_exactly(const TriangleQuery& q, TriangleId id, double& best, TriangleId& nearest) {
@@ -113,6 +133,48 @@ bool offer_exactly(const TriangleQuery& q, TriangleId id, double& best, Triangle
     best = p.t;
     nearest = id;
     return true;
+}
+
+// A ray leaving a mesh triangle at P within this barycentric weight of one of
+// its edges has its start within Embree's single-precision rounding of that
+// edge for any triangle larger than about 1e-4 of the coordinates around it.
+constexpr double near_edge_weight = 1e-3;
+
+// The triangles around the one a ray leaves, tested exactly, after Embree's
+// answer (`found`, at `nearest`): the nearest kept one of them all ends in
+// `nearest`. Leaving P near an edge into the fold between its triangle and a
+// neighbour (a ray reflected inside a mesh's crease, closer to the edge at
+// each bounce), the ray meets that neighbour within rounding of the shared
+// edge, where Embree's float test may put it just outside; its watertight
+// partner across the edge is the triangle the ray leaves, which it never
+// meets, so the ray would slip out through the closed fold.
+bool nearest_around_departure(const TriangleQuery& q, TriangleId& nearest, bool found) {
+    const TriangleId from = q.from.triangle;
+    if (from.instance == TriangleId::no_instance || from.triangle == TriangleId{}.triangle)
+        return found;
+    const TriangleGeometry& g = *q.geometry;
+    TrianglePoint p;
+    if (!exact_point(g, from, q.from.point, q.direction, p) ||
+        !(std::min({p.u, p.v, 1.0 - p.u - p.v}) < near_edge_weight))
+        return found;
+    double best = no_hit;
+    TrianglePoint h;
+    if (found && exact_point(g, nearest, q.origin, q.direction, h)) best = h.t;
+    const TriangleModel& tm = *g.models[g.instances[from.instance].model];
+    const Model& m = *tm.model;
+    const std::vector<std::uint32_t>& sorted = corners_by_position(tm);
+    auto at = [&m](std::uint32_t k) { return m.positions[m.triangles[k / 3][k % 3]]; };
+    for (const std::uint32_t corner : m.triangles[from.triangle]) {
+        const glm::vec3 position = m.positions[corner];
+        auto k = std::lower_bound(
+            sorted.begin(), sorted.end(), position,
+            [&](std::uint32_t c, const glm::vec3& x) { return position_less(at(c), x); });
+        for (; k != sorted.end() && at(*k) == position; ++k) {
+            const TriangleId id{from.instance, *k / 3};
+            if (id != from) found = offer_exactly(q, id, best, nearest) || found;
+        }
+    }
+    return found;
 }
 
 // The walk for a ray out of Embree's reach even when moved (render/far_ray.hpp):
@@ -288,6 +350,7 @@ bool closest_triangle(const TriangleGeometry& g, const Vec3& origin, const Vec3&
     }
     if (!g.far_loose.empty() || !g.far_instances.empty())
         found = nearest_beyond_bvh(q, hit.id, found, false);
+    found = nearest_around_departure(q, hit.id, found);
     if (!found) return false;
     TrianglePoint p;
     if (!exact_point(g, hit.id, origin, direction, p)) return false;
