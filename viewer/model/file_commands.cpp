@@ -164,6 +164,7 @@ namespace {
 // no longer loads is reported where the scene names it and keeps the last
 // image (update_render), and one that loads is shown.
 void files_changed(AppState& state, bool models) {
+    state.render.renderer.files_changed();
     if (models) {
         state.render.renderer.forget_prepared();
         state.view.mesh_figures.reset();
