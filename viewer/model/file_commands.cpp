@@ -154,6 +154,10 @@ void request_open(AppState& state, const std::filesystem::path& path) {
 
 void reload_scene(AppState& state) {
     if (state.doc.path.empty()) return;
+    // An open under way replaces the document anyway; a reload of the file
+    // it replaces would overtake it (the loader keeps only the newest
+    // request) and the open would be lost.
+    if (state.files.loader.opening()) return;
     state.files.loader.request(state.doc.path, LoadPurpose::reload, state.doc.options);
 }
 

@@ -11,6 +11,7 @@ SceneLoader::SceneLoader()
 
 void SceneLoader::request(const std::filesystem::path& path, LoadPurpose purpose,
                           const ParseOptions& options) {
+    newest_is_open_ = purpose == LoadPurpose::open;
     worker_.submit(Request{path, purpose, options, LoadTimes::Clock::now()});
 }
 
