@@ -154,6 +154,10 @@ void request_open(AppState& state, const std::filesystem::path& path) {
 
 void reload_scene(AppState& state) {
     if (state.doc.path.empty()) return;
+    // An open under way replaces the document anyway; a reload of the file
+    // it replaces would overtake it (the loader keeps only the newest
+    // request) and the open would be lost.
+    if (state.files.loader.opening()) return;
     state.files.loader.request(state.doc.path, LoadPurpose::reload, state.doc.options);
 }
 
@@ -164,6 +168,7 @@ namespace {
 // no longer loads is reported where the scene names it and keeps the last
 // image (update_render), and one that loads is shown.
 void files_changed(AppState& state, bool models) {
+    state.render.renderer.files_changed();
     if (models) {
         state.render.renderer.forget_prepared();
         state.view.mesh_figures.reset();

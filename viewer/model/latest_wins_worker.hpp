@@ -62,6 +62,12 @@ class LatestWinsWorker {
         std::lock_guard lock(mutex_);
         return next_ || running_;
     }
+    // A newer request waits: the result of the one running now will be
+    // dropped (for `run`, to skip work only that result needs).
+    bool superseded() const {
+        std::lock_guard lock(mutex_);
+        return next_.has_value();
+    }
     // A request is waiting, running, or done but not yet taken.
     bool busy() const {
         std::lock_guard lock(mutex_);

@@ -76,6 +76,12 @@ void RenderController::forget_prepared() {
 void RenderController::adopt_prepared(PreparedAhead ahead) {
     std::lock_guard lock(mutex_);
     ahead_ = std::move(ahead);
+    ahead_as_is_ = true;
+}
+
+void RenderController::files_changed() {
+    std::lock_guard lock(mutex_);
+    ahead_as_is_ = false;
 }
 
 std::shared_ptr<const Scene> RenderController::finish_adopted() {
@@ -94,7 +100,7 @@ std::shared_ptr<const Scene> RenderController::finish_adopted() {
     if (!prepared) return nullptr;
     prepared_ = *prepared;
     prepared_from_ = ahead->scene;
-    return ahead->scene;
+    return ahead_as_is_ ? ahead->scene : nullptr;
 }
 
 void RenderController::pause() {

@@ -51,6 +51,10 @@ class RenderController {
     // The next start() builds the scene from scratch: geometry and image maps
     // are read again rather than reused, even from files that look unchanged.
     void forget_prepared();
+    // Image maps or model files may have changed: an adopted preparation not
+    // yet used was made from the files as they were, so the next run only
+    // reuses it through prepare_scene_edit, which reads them again.
+    void files_changed();
     // Stops the current job and waits for its thread; the pixels fetched so far stay.
     void stop();
     // Stops the current job so that resume() can continue it. Does not wait
@@ -90,7 +94,8 @@ class RenderController {
                 std::shared_ptr<Run> paused = nullptr);
     std::shared_ptr<RenderJob> current_job() const;
     // On a run's thread: waits for an adopted preparation, if any, and makes
-    // it the latest prepared scene; returns its scene (null: none adopted).
+    // it the latest prepared scene; returns its scene when that may render
+    // with it as it is (null: none adopted, or files changed since).
     std::shared_ptr<const Scene> finish_adopted();
     void join_retired(bool all);
 
@@ -99,7 +104,8 @@ class RenderController {
     std::shared_ptr<const PreparedScene> prepared_;  // guarded by mutex_
     std::shared_ptr<const Scene> prepared_from_;     // what prepared_ was prepared from; mutex_
     std::optional<PreparedAhead> ahead_;             // adopted, not yet waited for; mutex_
-    std::vector<std::shared_ptr<Run>> retired_;      // cancelled, winding down (UI thread only)
+    bool ahead_as_is_ = false;  // ahead_ renders its scene with no look at its files; mutex_
+    std::vector<std::shared_ptr<Run>> retired_;  // cancelled, winding down (UI thread only)
     std::uint64_t jobs_started_ = 0;
     Wakeup* wakeup_ = nullptr;
 };

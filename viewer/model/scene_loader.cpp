@@ -11,6 +11,7 @@ SceneLoader::SceneLoader()
 
 void SceneLoader::request(const std::filesystem::path& path, LoadPurpose purpose,
                           const ParseOptions& options) {
+    newest_is_open_ = purpose == LoadPurpose::open;
     worker_.submit(Request{path, purpose, options, LoadTimes::Clock::now()});
 }
 
@@ -33,8 +34,9 @@ FinishedLoad SceneLoader::load(Request request) {
     std::optional<PreparedAhead> ahead;
     // Only an open: a reload of the same objects reuses the geometry already
     // prepared (the render controller's prepare_scene_edit), which a fresh
-    // preparation here would only delay.
-    if (attempt.ok && request.purpose == LoadPurpose::open) {
+    // preparation here would only delay. Nor an open already overtaken: its
+    // result is dropped, and the next open would wait for its preparation.
+    if (attempt.ok && request.purpose == LoadPurpose::open && !worker_.superseded()) {
         try {
             ahead = preparer_.start(attempt.scene);
             // The document's edited scene, copied while the scene is being

@@ -36,6 +36,8 @@ class SceneLoader {
     std::optional<FinishedLoad> take();
     // A request is waiting, loading, or done but not yet taken.
     bool busy() const { return worker_.busy(); }
+    // The newest request is an open whose result is not taken yet.
+    bool opening() const { return newest_is_open_ && worker_.busy(); }
     // A request is waiting or loading (its result is not ready yet).
     bool in_flight() const { return worker_.in_flight(); }
     // Notified whenever a result is ready to take. Set before the first request.
@@ -52,7 +54,8 @@ class SceneLoader {
     };
     FinishedLoad load(Request request);
 
-    AheadPreparer preparer_;  // before worker_: used by its thread, joined after it
+    bool newest_is_open_ = false;  // UI thread only, as request()
+    AheadPreparer preparer_;       // before worker_: used by its thread, joined after it
     LatestWinsWorker<Request, FinishedLoad> worker_;
 };
 

@@ -320,5 +320,41 @@ TEST(DocumentEdits, AnEmptyFileBecomesASceneThroughTheText) {
     EXPECT_EQ(read_file(path).substr(0, first_line), text.substr(0, first_line));
 }
 
+// The title's "*" is remembered between changes (has_unsaved_edits): every
+// way the text or the file's text changes must be seen, back to "saved" too.
+TEST(DocumentEdits, UnsavedFollowsTypingUndoRedoAndSaveAs) {
+    const std::filesystem::path path = scene_copy("document_edits_unsaved");
+    AppState state(test_config());
+    open_scene(state, path);
+    ASSERT_TRUE(state.doc.loaded) << state.message;
+    EXPECT_FALSE(has_unsaved_edits(state.doc));
+    const std::string saved = state.doc.text;
+
+    type_text(state, saved + "# typed\n");
+    settle_text(state);
+    ASSERT_FALSE(state.doc.draft);
+    EXPECT_TRUE(has_unsaved_edits(state.doc));
+    type_text(state, saved);  // typed back to the file's text
+    settle_text(state);
+    EXPECT_FALSE(has_unsaved_edits(state.doc));
+
+    type_text(state, saved + "# again\n");
+    settle_text(state);
+    EXPECT_TRUE(has_unsaved_edits(state.doc));
+    undo(state);
+    ASSERT_EQ(state.doc.text, saved);
+    EXPECT_FALSE(has_unsaved_edits(state.doc)) << "undone back to the saved text";
+    redo(state);
+    EXPECT_TRUE(has_unsaved_edits(state.doc));
+
+    const std::filesystem::path other = path.parent_path() / "other.jts";
+    ASSERT_TRUE(save_scene_as(state, other, true)) << state.message;
+    EXPECT_FALSE(has_unsaved_edits(state.doc)) << "saved, under another name";
+    edit_scene(state, [](Scene& s) { std::get<Sphere>(s.primitives[1].shape).radius = 0.5; });
+    EXPECT_TRUE(has_unsaved_edits(state.doc));
+    undo(state);
+    EXPECT_FALSE(has_unsaved_edits(state.doc));
+}
+
 }  // namespace
 }  // namespace jt::view

@@ -117,6 +117,24 @@ TEST_F(ViewerModelFiles, AChangedImageMapShowsTheNewPicture) {
     EXPECT_EQ(state.render.display, fresh_render());
 }
 
+// Opened while paused, the scene's preparation made ahead waits unused; an
+// image map changed meanwhile must not show as it was when that was made.
+TEST_F(ViewerModelFiles, AnImageMapChangedBeforeTheFirstRenderShowsTheNewPicture) {
+    AppState paused{test_config()};
+    toggle_pause(paused);
+    open_scene(paused, dir.path() / "scene.jts");
+    ASSERT_TRUE(paused.doc.loaded) << paused.message;
+    model.frame(paused);  // the watcher looks at the files as the open found them
+    EXPECT_EQ(paused.render.renderer.jobs_started(), 0u);
+    ASSERT_TRUE(write_png(dir.path() / "map.png.tmp", flat_image(30, 90, 220)));
+    fs::rename(dir.path() / "map.png.tmp", dir.path() / "map.png");
+    model.frame(paused);  // and sees the change
+    toggle_pause(paused);
+    ASSERT_TRUE(model.run_until_complete(paused));
+    EXPECT_EQ(count_colour(paused.render.display, 200, 40, 40), 0) << "not the old picture";
+    EXPECT_EQ(paused.render.display, fresh_render());
+}
+
 TEST_F(ViewerModelFiles, ABrokenModelIsLocatedAndKeepsTheLastImage) {
     static_cast<void>(take_display_changes(state.render));  // shown
     save_as_editor(dir.path() / "model.obj", "v 0 0 0\nf 1 2 3 oops\n\x01\x02garbage");

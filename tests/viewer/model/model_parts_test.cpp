@@ -9,6 +9,7 @@
 #include "model/free_camera.hpp"
 #include "model/image_files.hpp"
 #include "model/image_layout.hpp"
+#include "model/latest_wins_worker.hpp"
 #include "model/recent_files.hpp"
 #include "model/undo_stack.hpp"
 #include "model/viewer_settings.hpp"
@@ -16,8 +17,10 @@
 #include <gtest/gtest.h>
 #include <glm/geometric.hpp>
 
+#include <atomic>
 #include <chrono>
 #include <fstream>
+#include <future>
 #include <thread>
 
 namespace jt::view {
@@ -27,6 +30,36 @@ namespace fs = std::filesystem;
 
 using test::make_scratch_dir;
 using test::write_file;
+
+// The loader skips the preparation ahead of an open whose result will be
+// dropped: a request being run sees a newer one waiting.
+TEST(LatestWinsWorker, ARunningRequestSeesThatANewerOneWaits) {
+    std::promise<void> started;
+    std::promise<void> go;
+    const std::shared_future<void> may_go = go.get_future().share();
+    std::atomic<bool> first_superseded{false};
+    LatestWinsWorker<int, bool>* self = nullptr;
+    LatestWinsWorker<int, bool> worker([&](int n) {
+        if (n == 1) {
+            started.set_value();
+            may_go.wait();
+            first_superseded = self->superseded();
+        }
+        return self->superseded();
+    });
+    self = &worker;
+    worker.submit(1);
+    started.get_future().wait();
+    EXPECT_FALSE(worker.superseded()) << "nothing newer yet";
+    worker.submit(2);
+    EXPECT_TRUE(worker.superseded());
+    go.set_value();
+    worker.wait();
+    EXPECT_TRUE(first_superseded) << "the first request, run, saw the second waiting";
+    const std::optional<bool> newest = worker.take();
+    ASSERT_TRUE(newest);
+    EXPECT_FALSE(*newest) << "the newest is not superseded";
+}
 
 TEST(FileWatcher, SeesAnInPlaceWriteThatChangesTheSize) {
     const fs::path file = make_scratch_dir("watch1") / "a.jts";

@@ -82,6 +82,19 @@ TEST_F(ViewerFiles, ReloadWithUnsavedEditsKeepsThemUntilTheUserChooses) {
     EXPECT_EQ(read_file(file), kTheirs) << "nothing written yet";
 }
 
+// R pressed just after opening another file, or the open file changing on
+// disk meanwhile, asks to reload the file the open replaces: the open must
+// still happen, not be overtaken and dropped.
+TEST_F(ViewerFiles, AReloadDoesNotOvertakeAnOpenUnderWay) {
+    const fs::path other = scene_copy("reload_overtakes_open");
+    request_open(state, other);
+    reload_scene(state);
+    state.files.loader.wait();
+    take_finished_load(state);
+    EXPECT_EQ(state.doc.path, other) << state.message;
+    fs::remove_all(other.parent_path());
+}
+
 TEST_F(ViewerFiles, ReloadCanDropTheEdits) {
     edit_pigment();
     they_save(kTheirs);
