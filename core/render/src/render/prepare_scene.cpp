@@ -6,6 +6,7 @@
 #include "render/prepared_scene.hpp"
 #include "render/ray_queries.hpp"
 #include "render/shadow_spheres.hpp"
+#include "render/user_geometry.hpp"
 
 #include <tbb/parallel_invoke.h>
 #include <glm/geometric.hpp>
@@ -98,24 +99,6 @@ void add_plane(Geometry& g, const Plane& plane, const ObjectTransform& transform
     g.planes.push_back({*world_normal, distance, source});
 }
 
-// Embree builds a user geometry's tree at the geometry's own quality: the
-// scene's quality alone still gets the SAH build.
-template <typename Intersect, typename Occluded, typename Bounds>
-unsigned attach_user_geometry(RTCScene bvh, Geometry& g, std::size_t count, RTCBuildQuality quality,
-                              Bounds bounds, Intersect intersect, Occluded occluded) {
-    RTCGeometry geometry = rtcNewGeometry(embree_device(), RTC_GEOMETRY_TYPE_USER);
-    rtcSetGeometryUserPrimitiveCount(geometry, static_cast<unsigned>(count));
-    rtcSetGeometryBuildQuality(geometry, quality);
-    rtcSetGeometryUserData(geometry, &g);
-    rtcSetGeometryBoundsFunction(geometry, bounds, &g);
-    rtcSetGeometryIntersectFunction(geometry, intersect);
-    rtcSetGeometryOccludedFunction(geometry, occluded);
-    rtcCommitGeometry(geometry);
-    unsigned id = rtcAttachGeometry(bvh, geometry);
-    rtcReleaseGeometry(geometry);
-    return id;
-}
-
 // The sphere through the corners of the shape's box, grown by a margin far
 // above any rounding of the test that uses it, so that it never rejects a hit.
 void add_bounding_sphere(TransformedShape& s) {
@@ -201,10 +184,10 @@ Expected<std::shared_ptr<const Geometry>> build_geometry(const Scene& scene,
     rtcSetSceneFlags(g->bvh, RTC_SCENE_FLAG_ROBUST);
     if (!g->spheres.empty())
         g->sphere_geometry_id =
-            attach_user_geometry(g->bvh, *g, g->spheres.size(), quality, sphere_bounds,
+            attach_user_geometry(g->bvh, g.get(), g->spheres.size(), quality, sphere_bounds,
                                  sphere_intersect, sphere_occluded);
     if (!g->shapes.empty())
-        g->shape_geometry_id = attach_user_geometry(g->bvh, *g, g->shapes.size(), quality,
+        g->shape_geometry_id = attach_user_geometry(g->bvh, g.get(), g->shapes.size(), quality,
                                                     shape_bounds, shape_intersect, shape_occluded);
     rtcCommitScene(g->bvh);
     g->crowded = spheres_overlap_heavily(g->spheres);

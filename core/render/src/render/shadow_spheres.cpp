@@ -3,6 +3,7 @@
 #include "render/embree_device.hpp"
 #include "render/float_ray.hpp"
 #include "render/ray_queries.hpp"
+#include "render/user_geometry.hpp"
 
 #include <glm/common.hpp>
 #include <glm/geometric.hpp>
@@ -72,18 +73,9 @@ void build_shadow_spheres(Geometry& g, double magnitude, RTCBuildQuality quality
     rtcReleaseGeometry(spheres);
     shadow.tail = 2.0 * (largest + pad);
 
-    if (!g.shapes.empty()) {
-        RTCGeometry shapes = rtcNewGeometry(embree_device(), RTC_GEOMETRY_TYPE_USER);
-        rtcSetGeometryUserPrimitiveCount(shapes, static_cast<unsigned>(g.shapes.size()));
-        rtcSetGeometryBuildQuality(shapes, quality);
-        rtcSetGeometryUserData(shapes, &g);
-        rtcSetGeometryBoundsFunction(shapes, shape_bounds, &g);
-        rtcSetGeometryIntersectFunction(shapes, shape_intersect);
-        rtcSetGeometryOccludedFunction(shapes, shape_occluded);
-        rtcCommitGeometry(shapes);
-        rtcAttachGeometry(shadow.bvh, shapes);
-        rtcReleaseGeometry(shapes);
-    }
+    if (!g.shapes.empty())
+        attach_user_geometry(shadow.bvh, &g, g.shapes.size(), quality, shape_bounds,
+                             shape_intersect, shape_occluded);
     rtcCommitScene(shadow.bvh);
 }
 
