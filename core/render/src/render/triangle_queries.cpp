@@ -377,6 +377,9 @@ bool triangle_blocks(const TriangleGeometry& g, const Vec3& origin, const Vec3& 
     }
     if (!blocked && (!g.far_loose.empty() || !g.far_instances.empty()))
         blocked = nearest_beyond_bvh(q, any, false, true);
+    // Leaving near an edge into a fold, a shadow ray slips out of it as a
+    // reflected one would (nearest_around_departure).
+    if (!blocked) blocked = nearest_around_departure(q, any, false);
     return blocked;
 }
 
