@@ -418,6 +418,40 @@ TEST(Triangles, AnIllConditionedMeshIsMetNearItsEdges) {
     EXPECT_TRUE(occluded(*prepared->geometry, origin, direction, 0.0, 47.0));
 }
 
+// A random scene's (differential seed 1.1 826): two faces of a mesh meeting
+// at a ridge, the mesh squashed about 1e-3 thin and so ill-conditioned that
+// it is walked on its own, and a shadow ray that crosses the ridge, 1e-5 and
+// 5e-4 (barycentric) inside the two faces. Moved into the model's space, the
+// ray's start lay 400 model sizes away, where a float rounds by 3e-5; the
+// ray, started there, passed outside both faces.
+TEST(Triangles, ARayFromFarOffCrossesARidgeOfAnIllConditionedMesh) {
+    ScratchDir dir;
+    const auto file = dir.path() / "ridge.obj";
+    write_file(file,
+               "v 1.25 0 0.25\nv 0 1 -0.25\nv 0 0 1\nv -0.25 0.25 -1\n"
+               "f 1 2 3\nf 2 1 4\n");
+    Scene s = scene_with_camera(camera_at({0, 0, 0}, {0, 0, -1}));
+    Primitive p = mesh(file);
+    p.transforms = {scale(Vec3(1131.8823735734179)),
+                    rotate(TransformKind::zrotate, 50.360224365951865),
+                    rotate(TransformKind::xrotate, 219.77232076200232),
+                    scale({0.52879878672746583, 55.724243021772345, 0.0012129687815898491}),
+                    translate({176.52827709637091, 38369.012926038988, 61.318712039527476})};
+    s.primitives.push_back(p);
+    auto prepared = prepare_scene(s).value();
+    ASSERT_EQ(prepared->geometry->triangles->far_instances.size(), 1u);
+    const Vec3 origin{186.84590082234729, 1336.1477506009321, 717.69544907414445};
+    const Vec3 light{832.61665833632992, 1068.2992760750931, -529.00094949631796};
+    const Vec3 direction = glm::normalize(light - origin);
+    Hit hit;
+    const bool met = closest_hit(*prepared->geometry, origin, direction, 0.0, hit);
+    EXPECT_TRUE(met);
+    if (met) {
+        EXPECT_NEAR(hit.t, 753.682811, 1e-6);
+    }
+    EXPECT_TRUE(occluded(*prepared->geometry, origin, direction, 0.0, glm::length(light - origin)));
+}
+
 // The octahedron in material m, flat, under `transforms`, seen by a 9 x 9
 // camera with a field of 10 degrees, lit by white ambient light and one white
 // point light.
