@@ -15,6 +15,7 @@
 #include <algorithm>
 #include <cmath>
 #include <random>
+#include <span>
 #include <utility>
 #include <vector>
 
@@ -275,6 +276,73 @@ TEST(Triangles, RaysThroughSharedEdgesAndVerticesNeverMiss) {
     EXPECT_EQ(misses, 0) << "of " << rays;
 }
 
+// Rays from inside a tetrahedron's face F, lifted off it as a hit's are,
+// leaving 1e-7 to 3e-6 (barycentric) from its edge with face N and heading
+// out through N near that edge, where they pass in double precision: the
+// closest hit along each is N, and a shadow ray along it toward a light
+// outside is blocked by N. Within single-precision rounding of the edge,
+// Embree's float test may put such a ray just outside N, and the partner
+// across the edge is F, which the ray leaves and never meets.
+TEST(Triangles, AShadowRayLeavingNearAnEdgeIntoAFoldIsBlocked) {
+    ScratchDir dir;
+    const auto file = dir.path() / "tetrahedron.obj";
+    write_file(file,
+               "v 0.75 1.25 0.75\nv 1.25 -1 -1\nv -1 1 -0.75\nv -1 -1 0.75\n"
+               "f 1 2 3\nf 1 4 2\nf 1 3 4\nf 2 4 3\n");
+    Scene s = scene_with_camera(camera_at({0, 0, 0}, {0, 0, -1}));
+    Primitive p = mesh(file);
+    const Vec3 shift{37.3, -21.7, 55.1};
+    p.transforms = {translate(shift)};
+    s.primitives.push_back(p);
+    auto prepared = prepare_scene(s).value();
+    const Geometry& geometry = *prepared->geometry;
+    // F = (a, b, c) and N = (a, d, b) share the edge ab.
+    const Vec3 a{0.75, 1.25, 0.75}, b{1.25, -1, -1}, c{-1, 1, -0.75}, d{-1, -1, 0.75};
+    const TriangleId f{0, 0}, n{0, 1};
+    Vec3 inward = glm::normalize(glm::cross(b - a, c - a));
+    if (glm::dot(inward, d - a) < 0) inward = -inward;
+    // Where the ray o + t dir crosses N's plane, and whether inside N
+    // (Moller-Trumbore, in double, in the model's space).
+    auto through_n = [&](const Vec3& o, const Vec3& dir, double& t) {
+        const Vec3 e1 = d - a, e2 = b - a, pv = glm::cross(dir, e2), tv = o - a,
+                   qv = glm::cross(tv, e1);
+        const double det = glm::dot(e1, pv), u = glm::dot(tv, pv) / det,
+                     v = glm::dot(dir, qv) / det;
+        t = glm::dot(e2, qv) / det;
+        return u >= 0 && v >= 0 && u + v <= 1;
+    };
+    std::mt19937 rng(7);
+    std::uniform_real_distribution<double> along(0.1, 0.9), exponent(-7, -5.5), jitter(-1, 1);
+    int rays = 0, slipped = 0, slipped_together = 0, closest_elsewhere = 0;
+    while (rays < 2000) {
+        const double w = std::pow(10.0, exponent(rng)), w_n = std::pow(10.0, exponent(rng));
+        const double x = along(rng);
+        const Vec3 point = (1 - w) * (a + x * (b - a)) + w * c;
+        const Vec3 aim = (1 - w_n) * (a + (x + w * jitter(rng)) * (b - a)) + w_n * d;
+        const Vec3 dir = glm::normalize(aim - point);
+        const Vec3 from = point + shift;
+        const double lift = 1e-9 * std::max({std::abs(from.x), std::abs(from.y), std::abs(from.z)});
+        const Vec3 origin = from + lift * inward;
+        double t_point = 0, t_origin = 0;
+        if (!through_n(point, dir, t_point) || !(t_point > lift) ||
+            !through_n(origin - shift, dir, t_origin) || !(t_origin > 0))
+            continue;
+        ++rays;
+        const Departure leaving{f, from};
+        Hit hit;
+        if (!closest_hit(geometry, origin, dir, 0.0, hit, nullptr, leaving) || hit.triangle != n)
+            ++closest_elsewhere;
+        if (!occluded(geometry, origin, dir, 0.0, 100.0, nullptr, nullptr, leaving)) ++slipped;
+        const ShadowRay ray{origin, dir, 0.0, 100.0};
+        bool blocked = false;
+        occluded_together(geometry, std::span(&ray, 1), &blocked, nullptr, leaving);
+        if (!blocked) ++slipped_together;
+    }
+    EXPECT_EQ(closest_elsewhere, 0);
+    EXPECT_EQ(slipped, 0) << "of " << rays;
+    EXPECT_EQ(slipped_together, 0) << "of " << rays;
+}
+
 // An octahedron scaled past Embree's float range (3e18) is walked on its own
 // (TriangleGeometry::far_instances): rays aimed exactly at its shared vertices
 // and edges still never slip through, and meet it where they aim.
@@ -348,6 +416,40 @@ TEST(Triangles, AnIllConditionedMeshIsMetNearItsEdges) {
     ASSERT_TRUE(closest_hit(*prepared->geometry, origin, direction, 0.0, hit));
     EXPECT_NEAR(hit.t, 46.9694511, 1e-6);
     EXPECT_TRUE(occluded(*prepared->geometry, origin, direction, 0.0, 47.0));
+}
+
+// A random scene's (differential seed 1.1 826): two faces of a mesh meeting
+// at a ridge, the mesh squashed about 1e-3 thin and so ill-conditioned that
+// it is walked on its own, and a shadow ray that crosses the ridge, 1e-5 and
+// 5e-4 (barycentric) inside the two faces. Moved into the model's space, the
+// ray's start lay 400 model sizes away, where a float rounds by 3e-5; the
+// ray, started there, passed outside both faces.
+TEST(Triangles, ARayFromFarOffCrossesARidgeOfAnIllConditionedMesh) {
+    ScratchDir dir;
+    const auto file = dir.path() / "ridge.obj";
+    write_file(file,
+               "v 1.25 0 0.25\nv 0 1 -0.25\nv 0 0 1\nv -0.25 0.25 -1\n"
+               "f 1 2 3\nf 2 1 4\n");
+    Scene s = scene_with_camera(camera_at({0, 0, 0}, {0, 0, -1}));
+    Primitive p = mesh(file);
+    p.transforms = {scale(Vec3(1131.8823735734179)),
+                    rotate(TransformKind::zrotate, 50.360224365951865),
+                    rotate(TransformKind::xrotate, 219.77232076200232),
+                    scale({0.52879878672746583, 55.724243021772345, 0.0012129687815898491}),
+                    translate({176.52827709637091, 38369.012926038988, 61.318712039527476})};
+    s.primitives.push_back(p);
+    auto prepared = prepare_scene(s).value();
+    ASSERT_EQ(prepared->geometry->triangles->far_instances.size(), 1u);
+    const Vec3 origin{186.84590082234729, 1336.1477506009321, 717.69544907414445};
+    const Vec3 light{832.61665833632992, 1068.2992760750931, -529.00094949631796};
+    const Vec3 direction = glm::normalize(light - origin);
+    Hit hit;
+    const bool met = closest_hit(*prepared->geometry, origin, direction, 0.0, hit);
+    EXPECT_TRUE(met);
+    if (met) {
+        EXPECT_NEAR(hit.t, 753.682811, 1e-6);
+    }
+    EXPECT_TRUE(occluded(*prepared->geometry, origin, direction, 0.0, glm::length(light - origin)));
 }
 
 // The octahedron in material m, flat, under `transforms`, seen by a 9 x 9

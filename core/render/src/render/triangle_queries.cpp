@@ -230,6 +230,11 @@ bool misses_box(const Vec3& lower, const Vec3& upper, const Vec3& origin, const 
 // Its direction is scaled to a length near 1 by another power of two (and its
 // distances the other way): Embree's float test multiplies coordinates by the
 // direction, and a shrunk mesh's map lengthens it past what a float holds.
+// Its start is moved along it to where it enters the model's box
+// (fit_far_ray), always: a float origin rounds at its own size, and one
+// hundreds of model sizes away (an ill-conditioned mesh's map stretches the
+// world's distances so) put a shadow ray that crosses a ridge of the mesh
+// 1e-5 inside it outside both faces there.
 // The filter decides each hit on the ray as it is. The nearest kept triangle
 // nearer than q.t_max goes to `nearest`; `first` stops at any kept one.
 bool nearest_in_far_instance(TriangleQuery& q, const FarInstance& far, TriangleId& nearest,
@@ -245,9 +250,12 @@ bool nearest_in_far_instance(TriangleQuery& q, const FarInstance& far, TriangleI
     const int k = std::ilogb(longest);
     direction = times_power_of_two(direction, -k);
     RTCRayHit rayhit;
-    const FarRay fit =
-        fit_embree_ray(far.corners, origin, direction, std::ldexp(q.t_min, k - far.exponent),
-                       std::ldexp(q.t_max, k - far.exponent), rayhit.ray);
+    const double t_min = std::ldexp(q.t_min, k - far.exponent),
+                 t_max = std::ldexp(q.t_max, k - far.exponent);
+    RTCBounds bounds;
+    rtcGetSceneBounds(far.corners, &bounds);
+    const FarRay fit = fit_far_ray(origin, direction, t_min, t_max, bounds);
+    if (fit.fit == FarRay::Fit::moved) set_far_ray(rayhit.ray, fit, t_min, t_max);
     if (fit.fit == FarRay::Fit::misses) return false;
     if (fit.fit == FarRay::Fit::out_of_reach) {
         const Model& m = *q.geometry->models[instance.model]->model;
@@ -377,6 +385,9 @@ bool triangle_blocks(const TriangleGeometry& g, const Vec3& origin, const Vec3& 
     }
     if (!blocked && (!g.far_loose.empty() || !g.far_instances.empty()))
         blocked = nearest_beyond_bvh(q, any, false, true);
+    // Leaving near an edge into a fold, a shadow ray slips out of it as a
+    // reflected one would (nearest_around_departure).
+    if (!blocked) blocked = nearest_around_departure(q, any, false);
     return blocked;
 }
 
