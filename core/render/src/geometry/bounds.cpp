@@ -1,5 +1,7 @@
 #include "geometry/bounds.hpp"
 
+#include "geometry/float_step.hpp"
+
 #include <algorithm>
 #include <cmath>
 #include <limits>
@@ -15,13 +17,13 @@ constexpr double relative_margin = 1e-6;
 
 float float_down(double x) {
     float f = static_cast<float>(x);
-    if (static_cast<double>(f) > x) f = std::nextafter(f, -std::numeric_limits<float>::infinity());
+    if (static_cast<double>(f) > x) f = next_float_down(f);
     return f;
 }
 
 float float_up(double x) {
     float f = static_cast<float>(x);
-    if (static_cast<double>(f) < x) f = std::nextafter(f, std::numeric_limits<float>::infinity());
+    if (static_cast<double>(f) < x) f = next_float_up(f);
     return f;
 }
 

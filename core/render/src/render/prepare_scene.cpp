@@ -170,10 +170,13 @@ Expected<std::shared_ptr<const Geometry>> build_geometry(const Scene& scene,
         s.bounds.upper_z += static_cast<float>(g->bounds_slack);
         add_bounding_sphere(s);  // for the direction tables' lists, which have no boxes
     }
-    for (std::uint32_t i = 0; i < g->spheres.size(); ++i)
-        if (!within_reach(padded_float_bounds(
-                sphere_box(g->spheres[i].center, g->spheres[i].radius), g->bounds_slack)))
-            g->beyond_bvh.push_back(i);
+    g->sphere_boxes.resize(g->spheres.size());
+    for (std::uint32_t i = 0; i < g->spheres.size(); ++i) {
+        const RTCBounds b = padded_float_bounds(
+            sphere_box(g->spheres[i].center, g->spheres[i].radius), g->bounds_slack);
+        g->sphere_boxes[i] = {b.lower_x, b.lower_y, b.lower_z, b.upper_x, b.upper_y, b.upper_z};
+        if (!within_reach(b)) g->beyond_bvh.push_back(i);
+    }
     for (std::uint32_t i = 0; i < g->shapes.size(); ++i)
         if (!within_reach(g->shapes[i].bounds)) g->beyond_bvh.push_back(i | shape_flag);
 
@@ -190,6 +193,7 @@ Expected<std::shared_ptr<const Geometry>> build_geometry(const Scene& scene,
         g->shape_geometry_id = attach_user_geometry(g->bvh, g.get(), g->shapes.size(), quality,
                                                     shape_bounds, shape_intersect, shape_occluded);
     rtcCommitScene(g->bvh);
+    g->sphere_boxes = {};
     g->crowded = spheres_overlap_heavily(g->spheres);
     if (g->crowded) build_shadow_spheres(*g, magnitude, quality);
     return std::shared_ptr<const Geometry>(std::move(g));

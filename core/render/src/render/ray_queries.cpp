@@ -1,6 +1,5 @@
 #include "render/ray_queries.hpp"
 
-#include "geometry/bounds.hpp"
 #include "geometry/intersect.hpp"
 #include "jtracer/check.hpp"
 #include "render/far_ray.hpp"
@@ -333,8 +332,8 @@ bool occluded_beyond_cell(const Geometry& geometry, const ListedShapes* candidat
 
 void sphere_bounds(const RTCBoundsFunctionArguments* args) {
     const auto* g = static_cast<const Geometry*>(args->geometryUserPtr);
-    const WorldSphere& s = g->spheres[args->primID];
-    *args->bounds_o = padded_float_bounds(sphere_box(s.center, s.radius), g->bounds_slack);
+    const std::array<float, 6>& b = g->sphere_boxes[args->primID];
+    *args->bounds_o = RTCBounds{b[0], b[1], b[2], 0.0f, b[3], b[4], b[5], 0.0f};
 }
 
 void sphere_intersect(const RTCIntersectFunctionNArguments* args) {
