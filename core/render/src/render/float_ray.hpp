@@ -3,42 +3,34 @@
 // float bounds that keep it conservative: Embree only culls, and its float
 // range must hold every exact hit in the double range.
 
+#include "geometry/float_step.hpp"
 #include "jtracer/scene.hpp"
 
 #include <embree3/rtcore.h>
 
-#include <bit>
-#include <cstdint>
 #include <limits>
 
 namespace jt {
 
 inline constexpr float float_infinity = std::numeric_limits<float>::infinity();
 
-// Neighbours of non-negative finite numbers by their bit patterns: the library
-// nextafter is a call per ray and showed in profiles.
-inline float float_above(float f) {
-    if (f == 0.0f) return std::numeric_limits<float>::denorm_min();
-    return std::bit_cast<float>(std::bit_cast<std::uint32_t>(f) + 1u);
-}
-
 inline float float_down(double x) {
     if (!(x > 0.0)) return 0.0f;
     if (x >= static_cast<double>(std::numeric_limits<float>::max()))
         return std::numeric_limits<float>::max();
     float f = static_cast<float>(x);
-    if (static_cast<double>(f) > x) f = std::bit_cast<float>(std::bit_cast<std::uint32_t>(f) - 1u);
+    if (static_cast<double>(f) > x) f = next_float_down(f);
     return f;
 }
 
 // One float step above too, so that Embree's own rounding of box entry
 // distances cannot cull a box that holds an equally near exact hit.
 inline float float_up(double x) {
-    if (!(x > 0.0)) return float_above(0.0f);
+    if (!(x > 0.0)) return next_float_up(0.0f);
     if (!(x < static_cast<double>(std::numeric_limits<float>::max()))) return float_infinity;
     float f = static_cast<float>(x);
-    if (static_cast<double>(f) < x) f = float_above(f);
-    return float_above(f);
+    if (static_cast<double>(f) < x) f = next_float_up(f);
+    return next_float_up(f);
 }
 
 inline void set_float_ray(RTCRay& ray, const Vec3& origin, const Vec3& direction, double t_min,
