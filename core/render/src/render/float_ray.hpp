@@ -33,6 +33,13 @@ inline float float_up(double x) {
     return next_float_up(f);
 }
 
+// Embree writes a hit only where it finds one: the ids say "none" until then.
+inline void clear_hit(RTCHit& hit) {
+    hit.geomID = RTC_INVALID_GEOMETRY_ID;
+    hit.primID = RTC_INVALID_GEOMETRY_ID;
+    hit.instID[0] = RTC_INVALID_GEOMETRY_ID;
+}
+
 inline void set_float_ray(RTCRay& ray, const Vec3& origin, const Vec3& direction, double t_min,
                           double t_max) {
     ray.org_x = static_cast<float>(origin.x);

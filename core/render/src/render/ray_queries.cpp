@@ -428,9 +428,7 @@ bool closest_hit(const Geometry& geometry, const Vec3& origin, const Vec3& direc
     } else if (!settled) {
         rtcInitIntersectContext(&q.context);
         RTCRayHit rayhit;
-        rayhit.hit.geomID = RTC_INVALID_GEOMETRY_ID;
-        rayhit.hit.primID = RTC_INVALID_GEOMETRY_ID;
-        rayhit.hit.instID[0] = RTC_INVALID_GEOMETRY_ID;
+        clear_hit(rayhit.hit);
         const FarRay far = fit_embree_ray(geometry.bvh, origin, direction, t_min, q.t, rayhit.ray);
         if (far.fit == FarRay::Fit::out_of_reach) {
             closest_by_testing_all(q);

@@ -274,9 +274,7 @@ bool nearest_in_far_instance(TriangleQuery& q, const FarInstance& far, TriangleI
         rtcOccluded1(far.corners, &q.context, &rayhit.ray);
         found = rayhit.ray.tfar < 0.0f;
     } else {
-        rayhit.hit.geomID = RTC_INVALID_GEOMETRY_ID;
-        rayhit.hit.primID = RTC_INVALID_GEOMETRY_ID;
-        rayhit.hit.instID[0] = RTC_INVALID_GEOMETRY_ID;
+        clear_hit(rayhit.hit);
         rtcIntersect1(far.corners, &q.context, &rayhit);
         found = rayhit.hit.geomID != RTC_INVALID_GEOMETRY_ID;
         if (found) nearest = {far.instance, rayhit.hit.primID};
@@ -346,9 +344,7 @@ bool closest_triangle(const TriangleGeometry& g, const Vec3& origin, const Vec3&
     if (!embree_ray(q, rayhit.ray, walk)) {
         found = walk && nearest_by_testing_all(q, hit.id, false);
     } else {
-        rayhit.hit.geomID = RTC_INVALID_GEOMETRY_ID;
-        rayhit.hit.primID = RTC_INVALID_GEOMETRY_ID;
-        rayhit.hit.instID[0] = RTC_INVALID_GEOMETRY_ID;
+        clear_hit(rayhit.hit);
         rtcIntersect1(g.scene, &q.context, &rayhit);
         found = rayhit.hit.geomID != RTC_INVALID_GEOMETRY_ID;
         const unsigned instance = rayhit.hit.instID[0];
