@@ -186,7 +186,7 @@ TEST(RenderReuse, MaterialEditReusesTheGeometryAndRendersTheEditedScene) {
     EXPECT_EQ(edited, render_image(prepare_scene(scene).value(), options_for(scene, false)))
         << "and the picture is that of the edited scene prepared from scratch";
 
-    std::get<Sphere>(scene.primitives[2].shape).radius *= 0.5;
+    shape_as<Sphere>(scene.primitives[2].shape).radius *= 0.5;
     render(scene);
     EXPECT_NE(renderer.prepared()->geometry, first->geometry) << "a shape edit builds anew";
 }

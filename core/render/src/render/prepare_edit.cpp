@@ -31,8 +31,8 @@ std::optional<std::vector<std::uint32_t>> changed_materials(const Scene& before,
     for (std::size_t i = 0; i < after.primitives.size(); ++i) {
         const Primitive& a = before.primitives[i];
         const Primitive& b = after.primitives[i];
-        if (std::holds_alternative<Mesh>(b.shape) || !b.material.image_map.empty() ||
-            !(a.shape == b.shape) || a.transforms != b.transforms)
+        if (shape_is<Mesh>(b.shape) || !b.material.image_map.empty() || !(a.shape == b.shape) ||
+            a.transforms != b.transforms)
             return std::nullopt;
         if (!(a.material == b.material)) changed.push_back(static_cast<std::uint32_t>(i));
     }

@@ -146,11 +146,11 @@ Expected<std::shared_ptr<const Geometry>> build_geometry(const Scene& scene,
             transform = std::get<ObjectTransform>(placed);
         }
         auto source = static_cast<std::uint32_t>(i);
-        if (const auto* sphere = std::get_if<Sphere>(&p.shape))
+        if (const auto* sphere = shape_if<Sphere>(&p.shape))
             add_sphere(*g, *sphere, p.transforms.empty() ? nullptr : &transform, source);
-        else if (const auto* cylinder = std::get_if<Cylinder>(&p.shape))
+        else if (const auto* cylinder = shape_if<Cylinder>(&p.shape))
             add_cylinder(*g, *cylinder, transform, source);
-        else if (const auto* plane = std::get_if<Plane>(&p.shape))
+        else if (const auto* plane = shape_if<Plane>(&p.shape))
             add_plane(*g, *plane, transform, source);
     }
     std::size_t bounded = g->spheres.size() + g->shapes.size();
