@@ -191,6 +191,61 @@ TEST(RenderReuse, MaterialEditReusesTheGeometryAndRendersTheEditedScene) {
     EXPECT_NE(renderer.prepared()->geometry, first->geometry) << "a shape edit builds anew";
 }
 
+// More distinct materials than a preparation copies (a colour an object, as
+// in a generated scene of 100,000 spheres): the render reads them where its
+// scene holds them, and a colour edit of one object still patches the
+// preparation rather than gathering every material again.
+TEST(RenderReuse, ManyColoursAreReadInPlaceAndAColourEditPatches) {
+    // The showcase's cameras and lights over a wall of small balls (no
+    // pattern: a pattern's pictures are parallel to a gathered list).
+    Scene scene = showcase_at(160, 90);
+    scene.primitives.clear();
+    constexpr int kColumns = 200, kRows = 100;
+    for (int i = 0; i < kColumns * kRows; ++i) {
+        Sphere sphere;
+        sphere.center = Vec3(-3.0 + 0.03 * (i % kColumns), 0.02 * (i / kColumns), 0.0);
+        sphere.radius = 0.012;
+        if (i == 0) {  // the one recoloured, large and in the middle of the picture
+            sphere.center = Vec3(0.0, 1.0, 0.5);
+            sphere.radius = 0.5;
+        }
+        Primitive p;
+        p.shape = sphere;
+        p.material.pigment = Colour(double(i) / (kColumns * kRows), 0.5, 0.5);
+        p.material.ambient = Colour(0.2, 0.2, 0.2);
+        p.material.diffuse = Colour(0.8, 0.8, 0.8);
+        scene.primitives.push_back(p);
+    }
+    const RenderOptions options = options_for(scene, true);
+    RenderController renderer;
+    auto render = [&](const Scene& s) {
+        renderer.start(s, options);
+        const auto deadline = Clock::now() + kTimeout;
+        while (!renderer.finished() && Clock::now() < deadline)
+            std::this_thread::sleep_for(std::chrono::milliseconds(2));
+        EXPECT_TRUE(renderer.finished());
+        Image8 image;
+        renderer.fetch(image);
+        return image;
+    };
+    const Image8 before = render(scene);
+    const auto first = renderer.prepared();
+    ASSERT_TRUE(first);
+    EXPECT_TRUE(first->scene) << "read in place, not copied";
+    EXPECT_TRUE(first->materials.empty());
+
+    scene.primitives[0].material.pigment = Colour(0.2, 0.7, 0.3);
+    const Image8 edited = render(scene);
+    const auto second = renderer.prepared();
+    ASSERT_TRUE(second);
+    EXPECT_EQ(second->materials_gathered, 1u) << "the scene was not prepared again as a whole";
+    EXPECT_EQ(second->geometry, first->geometry);
+    EXPECT_TRUE(second->scene);
+    EXPECT_NE(edited, before) << "the edit shows";
+    EXPECT_EQ(edited, render_image(prepare_scene(scene).value(), options_for(scene, false)))
+        << "the same bytes as the edited scene prepared from scratch";
+}
+
 TEST(RenderReuse, ColourEditInTheViewerPatchesThePreparedScene) {
     AppState state(test_config());
     open_scene(state, kScene);
