@@ -4,6 +4,7 @@
 // reuses the prepared geometry. None of it may change the final pixels.
 
 #include "common/scenes.hpp"
+#include "common/scratch_dir.hpp"
 #include "jtracer/parser.hpp"
 #include "jtracer/render_job.hpp"
 #include "model/app_actions.hpp"
@@ -306,6 +307,43 @@ TEST(RenderReuse, AnAdoptedPreparationRendersItsSceneWithoutPreparingAgain) {
     render(scene);
     EXPECT_NE(renderer.prepared(), *ahead.prepared.get());
     EXPECT_EQ(renderer.prepared()->geometry, (*ahead.prepared.get())->geometry);
+}
+
+// The loader copies an opened scene for the document beside its validation:
+// attempt_load hands the parsed scene over before validating it, and only
+// when the parse found no error.
+TEST(FirstPreview, AttemptLoadHandsOverTheParsedSceneBeforeValidating) {
+    const std::filesystem::path dir = make_scratch_dir("jt_first_preview_parsed");
+    const std::string settings = "render_settings { width: 8; height: 8; }\n";
+    const std::string sphere =
+        "scene { sphere { center: <0, 0, 0>; radius: 1; material { pigment: <1, 0, 0>; } } }\n";
+    // Parses, but the camera looks nowhere: an error only validation finds.
+    std::ofstream(dir / "invalid.jts")
+        << settings
+        << "cameras { perspective_camera { position: <0, 0, 0>; look_at: <0, 0, 0>; } }\n"
+        << sphere;
+    std::ofstream(dir / "broken.jts") << settings << "scene { sphere { center: <0, 0 } }\n";
+
+    std::vector<const Scene*> handed;
+    const ParsedScene note = [&](const std::shared_ptr<const Scene>& scene) {
+        handed.push_back(scene.get());
+    };
+    const LoadAttempt good = attempt_load(kScene, {}, note);
+    ASSERT_TRUE(good.ok);
+    ASSERT_EQ(handed.size(), 1u);
+    EXPECT_EQ(handed[0], good.scene.get()) << "the attempt's scene itself";
+
+    handed.clear();
+    const LoadAttempt invalid = attempt_load(dir / "invalid.jts", {}, note);
+    EXPECT_TRUE(invalid.read);
+    EXPECT_FALSE(invalid.ok);
+    EXPECT_EQ(handed.size(), 1u) << "handed over before the validation found the error";
+
+    handed.clear();
+    const LoadAttempt broken = attempt_load(dir / "broken.jts", {}, note);
+    EXPECT_TRUE(broken.read);
+    EXPECT_FALSE(broken.ok);
+    EXPECT_TRUE(handed.empty()) << "a text with parse errors is not handed over";
 }
 
 TEST(FirstPreview, AnOpenWithoutErrorsIsPreparedByTheLoader) {
