@@ -149,6 +149,16 @@ TEST(OwnedScene, ASharedSceneIsReadInPlaceAndItsEditPatched) {
     EXPECT_EQ(image, render_prepared(prepare_scene(after).value(), after));
     EXPECT_NE(image, render_prepared(previous, *before));
 
+    // With no transmission left, the edit that brings one back is found by
+    // looking at the changed objects alone.
+    Scene glass = after;
+    glass.primitives[6].material.transmission = 0.8;
+    const auto shared_glass = std::make_shared<const Scene>(glass);
+    const auto glazed = prepare_scene_edit(after, shared_glass, edited).value();
+    EXPECT_EQ(glazed->materials_gathered, 1u);
+    EXPECT_TRUE(glazed->has_transmission);
+    EXPECT_EQ(render_prepared(glazed, glass), render_prepared(prepare_scene(glass).value(), glass));
+
     // A pattern needs pattern spaces, which a scene read in place has none of.
     Scene checkered = after;
     checkered.primitives[4].material.checker = Colour(0.1, 0.1, 0.1);

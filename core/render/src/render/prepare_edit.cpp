@@ -81,9 +81,14 @@ Expected<std::shared_ptr<const PreparedScene>> edit(const Scene& before, const S
     auto prepared = std::make_shared<PreparedScene>(*previous);
     if (previous->scene) {
         prepared->scene = std::move(owned);  // which holds the edited materials
+        // Only an edit that may have taken the last transmission away walks
+        // the whole scene.
+        const auto transmits = [](const Primitive& p) { return p.material.transmission > 0.0; };
         prepared->has_transmission =
-            std::any_of(scene.primitives.begin(), scene.primitives.end(),
-                        [](const Primitive& p) { return p.material.transmission > 0.0; });
+            std::any_of(changed->begin(), changed->end(),
+                        [&](std::uint32_t i) { return transmits(scene.primitives[i]); }) ||
+            (previous->has_transmission &&
+             std::any_of(scene.primitives.begin(), scene.primitives.end(), transmits));
     } else {
         for (std::uint32_t i : *changed) set_material(*prepared, i, scene.primitives[i].material);
         prepared->has_transmission =
