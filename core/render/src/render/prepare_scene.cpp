@@ -361,4 +361,11 @@ Expected<std::shared_ptr<const PreparedScene>> prepare_scene(
     return prepare(held, std::move(owned), std::move(previous));
 }
 
+Expected<std::shared_ptr<const PreparedScene>> prepare_scene(
+    std::shared_ptr<const Scene> scene, std::shared_ptr<const PreparedScene> previous) {
+    if (!scene) scene = std::make_shared<const Scene>();
+    const Scene& held = *scene;
+    return prepare(held, std::move(scene), std::move(previous));
+}
+
 }  // namespace jt
