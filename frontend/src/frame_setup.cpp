@@ -1,5 +1,6 @@
 #include "jtracer/frontend/frame_setup.hpp"
 
+#include "jtracer/parallel_chunks.hpp"
 #include "jtracer/scene_file.hpp"
 
 namespace jt::frontend {
@@ -52,7 +53,8 @@ FrameSetup set_up_frame(std::string_view program, const RenderFlags& flags, Load
     if (Expected<void> applied = apply_overrides(flags, loaded.parsed.scene); !applied)
         return fail(exit_usage, applied.error().message);
     // Quiet drops warnings: locating them would only cost another parse.
-    std::vector<Diagnostic> diagnostics = check_scene(loaded, {.locate_warnings = !flags.quiet});
+    std::vector<Diagnostic> diagnostics = check_scene(
+        loaded, {.locate_warnings = !flags.quiet, .run_chunks = parallel_chunks(flags.threads)});
     name_setting_flags(diagnostics);
     const bool errors = has_errors(diagnostics);
     if (flags.quiet && !errors) diagnostics.clear();  // quiet drops warnings, never errors

@@ -4,6 +4,7 @@
 // Run after parsing and after any overrides (the CLI's --width/--height/--camera,
 // the viewer's edits), so that the checks see the values that will render.
 
+#include "jtracer/chunk_runner.hpp"
 #include "jtracer/diagnostics.hpp"
 #include "jtracer/scene.hpp"
 #include "jtracer/source_map.hpp"
@@ -21,7 +22,10 @@ namespace jt {
 // range of doubles: the renderer's own rule); no scene block.
 // Each is located at the property or block concerned when `source` has it,
 // at line 0 otherwise. `source` may be empty (a scene built in code).
-std::vector<Diagnostic> validate_scene(const Scene& scene, const SceneSource& source);
+// `run_chunks`, when given, checks a large scene's primitives in pieces on its
+// threads; the diagnostics are the same, in the same order, either way.
+std::vector<Diagnostic> validate_scene(const Scene& scene, const SceneSource& source,
+                                       const ChunkRunner& run_chunks = {});
 
 // The camera a render uses: the one named by settings.active_camera, else the
 // first; -1 when there is none.

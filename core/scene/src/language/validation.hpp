@@ -3,6 +3,7 @@
 // (scene_file.hpp): a scene loaded without its source map is parsed again to
 // locate them, and only findings about primitives need the primitives' records.
 
+#include "jtracer/chunk_runner.hpp"
 #include "jtracer/diagnostics.hpp"
 #include "jtracer/parser.hpp"
 #include "jtracer/scene.hpp"
@@ -18,7 +19,8 @@ struct Validation {
     bool about_primitives = false;        // whether any concerns a primitive
 };
 
-Validation validate_scene_parts(const Scene& scene, const SceneSource& source);
+Validation validate_scene_parts(const Scene& scene, const SceneSource& source,
+                                const ChunkRunner& run_chunks = {});
 
 // The source map of `text` without the primitives' records (SceneSource::
 // primitives stays empty, so validate_scene leaves their findings unlocated),
