@@ -261,11 +261,42 @@ TEST(Validate, ChunksOnThreadsFindTheSameAsOnePass) {
          {"'reflection' 2 is outside", "'radius' must be", "zero area", "flattens the primitive",
           "image_map: cannot read", "mesh 39995: cannot read"})
         EXPECT_NE(all.find(finding), std::string::npos) << finding;
-    EXPECT_TRUE(one_pass == validate_scene(r.scene, r.source, run_backwards));
-    EXPECT_TRUE(one_pass == validate_scene(r.scene, r.source, run_on_threads));
+    EXPECT_TRUE(one_pass == validate_scene(r.scene, r.source, {.run_chunks = run_backwards}));
+    EXPECT_TRUE(one_pass == validate_scene(r.scene, r.source, {.run_chunks = run_on_threads}));
     // Unlocated, as check_scene validates a scene loaded without its map first.
     EXPECT_TRUE(validate_scene(r.scene, SceneSource{}) ==
-                validate_scene(r.scene, SceneSource{}, run_on_threads));
+                validate_scene(r.scene, SceneSource{}, {.run_chunks = run_on_threads}));
+}
+
+// A scene as parsed holds no value out of its range but a default: the checks
+// that take it as parsed find what the whole checks find, the mesh left
+// without its file among them, at the same places.
+TEST(Validate, PrimitivesAsParsedFindTheSame) {
+    const std::string text =
+        "render_settings { width: 40; height: 20; }\n"
+        "cameras { perspective_camera { aspect: 2; } }\n"
+        "scene {\n"
+        "  sphere { center: <1, 2, 3>; radius: 1e9;\n"
+        "    material { pigment: <1, 0, 0.5>; reflection: 1; transmission: 1; ior: 3;\n"
+        "      specular_k: 1e9; checker: <0, 0, 0>; checker_size: 0.001; } }\n"
+        "  mesh { }\n"
+        "  cylinder { radius: 2; height: 3; transform { scale: <1, 0, 1>; xrotate: -720; } }\n"
+        "  triangle { a: <0, 0, 0>; b: <1, 1, 1>; c: <2, 2, 2>; uv_a: <1, 1, 0>; }\n"
+        "  plane { normal: <0, 0, -1>; distance: -1e9; }\n"
+        "  mesh { shading: \"flat\"; }\n"
+        "}\n";
+    const ParseResult r = test::parse_clean(text);
+    const std::vector<Diagnostic> all = validate_scene(r.scene, r.source);
+    EXPECT_EQ(brief(all),
+              "7:3: error: mesh 2: 'file' must not be empty\n"
+              "8:48: warning: 'scale' <1, 0, 1> has a zero component: it flattens the primitive "
+              "to nothing; it is left out\n"
+              "9:3: warning: triangle 4: its corners <0, 0, 0>, <1, 1, 1>, <2, 2, 2> lie on one "
+              "line (zero area): it is left out\n"
+              "11:3: error: mesh 6: 'file' must not be empty");
+    EXPECT_TRUE(all == validate_scene(r.scene, r.source, {.primitives_as_parsed = true}));
+    EXPECT_TRUE(validate_scene(r.scene, SceneSource{}) ==
+                validate_scene(r.scene, SceneSource{}, {.primitives_as_parsed = true}));
 }
 
 }  // namespace

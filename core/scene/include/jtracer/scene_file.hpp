@@ -10,10 +10,10 @@
 //   std::cerr << jt::format_diagnostics(diagnostics, *loaded);
 //   if (jt::has_errors(diagnostics)) stop;
 
-#include "jtracer/chunk_runner.hpp"
 #include "jtracer/diagnostics.hpp"
 #include "jtracer/error.hpp"
 #include "jtracer/parser.hpp"
+#include "jtracer/validate.hpp"
 
 #include <cstdint>
 #include <filesystem>
@@ -50,8 +50,8 @@ struct CheckOptions {
     // 0 rather than cost another parse to locate, for a caller that drops
     // them (a quiet command line). Errors are always located.
     bool locate_warnings = true;
-    // Threads to check a large scene's primitives on (validate_scene).
-    ChunkRunner run_chunks = {};
+    // How validate_scene works (its threads, what it may take as checked).
+    ValidateOptions validation = {};
 };
 
 // The parse diagnostics followed by validate_scene's (validation runs only when

@@ -22,10 +22,21 @@ namespace jt {
 // range of doubles: the renderer's own rule); no scene block.
 // Each is located at the property or block concerned when `source` has it,
 // at line 0 otherwise. `source` may be empty (a scene built in code).
-// `run_chunks`, when given, checks a large scene's primitives in pieces on its
-// threads; the diagnostics are the same, in the same order, either way.
+// The options change the work, never the diagnostics.
+struct ValidateOptions {
+    // When given, a large scene's primitives are checked in pieces on its
+    // threads; the diagnostics are the same, in the same order, either way.
+    ChunkRunner run_chunks = {};
+    // The caller's word that the primitives are exactly as the parser made
+    // them (values from code or edits: false). The parser checked every value
+    // it read against its range (the same rules, schema.hpp), so only the
+    // properties whose default is out of range (`file` of a mesh: left
+    // unwritten, never read) are checked again.
+    bool primitives_as_parsed = false;
+};
+
 std::vector<Diagnostic> validate_scene(const Scene& scene, const SceneSource& source,
-                                       const ChunkRunner& run_chunks = {});
+                                       const ValidateOptions& options = {});
 
 // The camera a render uses: the one named by settings.active_camera, else the
 // first; -1 when there is none.

@@ -97,7 +97,7 @@ std::vector<Diagnostic> check_scene(const LoadedScene& loaded, CheckOptions opti
     std::vector<Diagnostic> all = loaded.parsed.diagnostics;
     if (!has_errors(all)) {
         lang::Validation found = lang::validate_scene_parts(
-            loaded.parsed.scene, loaded.parsed.source, options.run_chunks);
+            loaded.parsed.scene, loaded.parsed.source, options.validation);
         const bool locate = !found.diagnostics.empty() && !loaded.options.source_map &&
                             (options.locate_warnings || has_errors(found.diagnostics));
         if (locate) {
@@ -110,7 +110,7 @@ std::vector<Diagnostic> check_scene(const LoadedScene& loaded, CheckOptions opti
             const SceneSource source = found.about_primitives
                                            ? parse_scene(loaded.text, with_map).source
                                            : lang::source_without_primitives(loaded.text, with_map);
-            found.diagnostics = validate_scene(loaded.parsed.scene, source, options.run_chunks);
+            found.diagnostics = validate_scene(loaded.parsed.scene, source, options.validation);
         }
         for (Diagnostic& d : found.diagnostics) all.push_back(std::move(d));
     }

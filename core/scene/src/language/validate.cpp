@@ -34,6 +34,22 @@ const BlockSource* at(const std::vector<BlockSource>& sources, const std::vector
 // enough chunks for any number of threads to share a million primitives.
 constexpr std::size_t primitives_a_chunk = 8192;
 
+// The properties of a block whose default value is out of range, in the
+// schema's order: the only ones a primitive as parsed can hold out of range
+// (ValidateOptions::primitives_as_parsed), as a property left unwritten keeps
+// its default unchecked.
+template <class Block>
+const std::vector<const PropertySpec<Block>*>& defaults_out_of_range() {
+    static const std::vector<const PropertySpec<Block>*> found = [] {
+        std::vector<const PropertySpec<Block>*> out;
+        const Block fresh{};
+        for (const PropertySpec<Block>& property : schema_of<Block>().properties)
+            if (value_problem(property, fresh)) out.push_back(&property);
+        return out;
+    }();
+    return found;
+}
+
 // What a model file gave when read.
 struct ModelVerdict {
     std::string error;  // "": it loads
@@ -54,9 +70,9 @@ struct FileVerdicts {
 
 class Validator {
   public:
-    Validator(const Scene& scene, const SceneSource& source, const ChunkRunner& run_chunks,
+    Validator(const Scene& scene, const SceneSource& source, const ValidateOptions& options,
               FileVerdicts& files)
-        : scene_(scene), source_(source), run_chunks_(run_chunks), files_(files) {}
+        : scene_(scene), source_(source), options_(options), files_(files) {}
 
     lang::Validation run() {
         check_settings();
@@ -118,6 +134,19 @@ class Validator {
             }
         }
         return ok;
+    }
+
+    // check_values for a primitive's block: all its properties, or for a
+    // primitive as parsed those whose default is out of range.
+    template <class Block, class Which, class Locate>
+    void check_primitive_values(const Block& block, Which which, Locate locate) {
+        if (!options_.primitives_as_parsed) {
+            check_values(block, which, locate);
+            return;
+        }
+        for (const PropertySpec<Block>* property : defaults_out_of_range<Block>())
+            if (auto problem = value_problem(*property, block))
+                error(locate(property->name), which() + *problem);
     }
 
     const BlockSource* settings_block() const {
@@ -235,14 +264,14 @@ class Validator {
     // the chunks' order, so the list is the one a single pass would make.
     void check_primitives() {
         const std::size_t count = scene_.primitives.size();
-        if (!run_chunks_ || count <= 2 * primitives_a_chunk) {
+        if (!options_.run_chunks || count <= 2 * primitives_a_chunk) {
             check_primitives(0, count);
             return;
         }
         const std::size_t chunks = (count + primitives_a_chunk - 1) / primitives_a_chunk;
         std::vector<std::vector<Diagnostic>> found(chunks);
-        run_chunks_(chunks, [&](std::size_t chunk) {
-            Validator part(scene_, source_, run_chunks_, files_);
+        options_.run_chunks(chunks, [&](std::size_t chunk) {
+            Validator part(scene_, source_, options_, files_);
             const std::size_t begin = chunk * primitives_a_chunk;
             part.check_primitives(begin, std::min(count, begin + primitives_a_chunk));
             found[chunk] = std::move(part.out_);
@@ -261,13 +290,16 @@ class Validator {
             };
             std::visit(
                 [&](const auto& shape) {
-                    check_values(shape, which,
-                                 [&](std::string_view name) { return where(block, name); });
+                    check_primitive_values(
+                        shape, which, [&](std::string_view name) { return where(block, name); });
                 },
                 p.shape);
-            check_values(p.material, which,
-                         [&](std::string_view name) { return where_material(block, name); });
-            for (std::size_t k = 0; k < p.transforms.size(); ++k) {
+            check_primitive_values(p.material, which, [&](std::string_view name) {
+                return where_material(block, name);
+            });
+            // As parsed, an operation is there only if the parser read it.
+            const std::size_t unread = options_.primitives_as_parsed ? 0 : p.transforms.size();
+            for (std::size_t k = 0; k < unread; ++k) {
                 const TransformOp& op = p.transforms[k];
                 if (auto problem = value_problem(transform_op(op.kind).property, op))
                     error(op_position(block, k), which() + *problem);
@@ -413,15 +445,15 @@ class Validator {
 
     const Scene& scene_;
     const SceneSource& source_;
-    const ChunkRunner& run_chunks_;
+    const ValidateOptions& options_;
     FileVerdicts& files_;
     std::vector<Diagnostic> out_;
 };
 
 lang::Validation validate(const Scene& scene, const SceneSource& source,
-                          const ChunkRunner& run_chunks) {
+                          const ValidateOptions& options) {
     FileVerdicts files;
-    return Validator(scene, source, run_chunks, files).run();
+    return Validator(scene, source, options, files).run();
 }
 
 }  // namespace
@@ -443,13 +475,13 @@ unsigned long long bmp_file_size(int width, int height) {
 }
 
 std::vector<Diagnostic> validate_scene(const Scene& scene, const SceneSource& source,
-                                       const ChunkRunner& run_chunks) {
-    return validate(scene, source, run_chunks).diagnostics;
+                                       const ValidateOptions& options) {
+    return validate(scene, source, options).diagnostics;
 }
 
 lang::Validation lang::validate_scene_parts(const Scene& scene, const SceneSource& source,
-                                            const ChunkRunner& run_chunks) {
-    return validate(scene, source, run_chunks);
+                                            const ValidateOptions& options) {
+    return validate(scene, source, options);
 }
 
 }  // namespace jt

@@ -3,11 +3,11 @@
 // (scene_file.hpp): a scene loaded without its source map is parsed again to
 // locate them, and only findings about primitives need the primitives' records.
 
-#include "jtracer/chunk_runner.hpp"
 #include "jtracer/diagnostics.hpp"
 #include "jtracer/parser.hpp"
 #include "jtracer/scene.hpp"
 #include "jtracer/source_map.hpp"
+#include "jtracer/validate.hpp"
 
 #include <string_view>
 #include <vector>
@@ -20,7 +20,7 @@ struct Validation {
 };
 
 Validation validate_scene_parts(const Scene& scene, const SceneSource& source,
-                                const ChunkRunner& run_chunks = {});
+                                const ValidateOptions& options = {});
 
 // The source map of `text` without the primitives' records (SceneSource::
 // primitives stays empty, so validate_scene leaves their findings unlocated),
