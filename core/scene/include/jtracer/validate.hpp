@@ -13,15 +13,6 @@
 
 namespace jt {
 
-// Errors: no camera; width or height 0; an image whose BMP would pass 4 GiB;
-// a camera whose look_at equals its position or whose up is parallel to its
-// view direction; values out of their allowed range (for scenes built in code).
-// Warnings: a camera aspect differing from width/height by over 1%; an
-// active_camera naming no camera; a transform that leaves its primitive out (a
-// scale with a zero component anywhere in the list, or magnitudes past the
-// range of doubles: the renderer's own rule); no scene block.
-// Each is located at the property or block concerned when `source` has it,
-// at line 0 otherwise. `source` may be empty (a scene built in code).
 // The options change the work, never the diagnostics.
 struct ValidateOptions {
     // When given, a large scene's primitives are checked in pieces on its
@@ -35,6 +26,15 @@ struct ValidateOptions {
     bool primitives_as_parsed = false;
 };
 
+// Errors: no camera; width or height 0; an image whose BMP would pass 4 GiB;
+// a camera whose look_at equals its position or whose up is parallel to its
+// view direction; values out of their allowed range (for scenes built in code).
+// Warnings: a camera aspect differing from width/height by over 1%; an
+// active_camera naming no camera; a transform that leaves its primitive out (a
+// scale with a zero component anywhere in the list, or magnitudes past the
+// range of doubles: the renderer's own rule); no scene block.
+// Each is located at the property or block concerned when `source` has it,
+// at line 0 otherwise. `source` may be empty (a scene built in code).
 std::vector<Diagnostic> validate_scene(const Scene& scene, const SceneSource& source,
                                        const ValidateOptions& options = {});
 
