@@ -246,17 +246,17 @@ void write_primitive(PovWriter& out, const jt::Primitive& p, const jt::Scene& sc
     // Planes and spheres are written mirrored and then moved by the mirrored
     // map; the map of an untransformed primitive is the identity and is left out.
     std::optional<ImageMapping> mapping;
-    if (const auto* sphere = std::get_if<jt::Sphere>(&p.shape)) {
+    if (const auto* sphere = jt::shape_if<jt::Sphere>(&p.shape)) {
         out.vector("sphere { ", mirror(sphere->center));
         out.printf(", %.9g", sphere->radius);
         mapping = around_y(1, sphere->center, 1.0);
-    } else if (const auto* plane = std::get_if<jt::Plane>(&p.shape)) {
+    } else if (const auto* plane = jt::shape_if<jt::Plane>(&p.shape)) {
         auto normal = jt::unit_length(plane->normal);
         if (!normal) return;
         out.vector("plane { ", mirror(*normal));
         out.printf(", %.9g", plane->distance);
         mapping = plane_mapping(*normal, p.material.map_size);
-    } else if (const auto* cylinder = std::get_if<jt::Cylinder>(&p.shape)) {
+    } else if (const auto* cylinder = jt::shape_if<jt::Cylinder>(&p.shape)) {
         if (!p.material.image_map.empty()) {
             write_mapped_cylinder(out, *cylinder, p.material, scene);
             if (!p.transforms.empty()) write_matrix(out, world);
@@ -264,16 +264,16 @@ void write_primitive(PovWriter& out, const jt::Primitive& p, const jt::Scene& sc
             return;
         }
         out.printf("cylinder { <0, 0, 0>, <0, %.9g, 0>, %.9g", cylinder->height, cylinder->radius);
-    } else if (const auto* triangle = std::get_if<jt::Triangle>(&p.shape)) {
+    } else if (const auto* triangle = jt::shape_if<jt::Triangle>(&p.shape)) {
         if (glm::cross(triangle->b - triangle->a, triangle->c - triangle->a) == Vec3(0.0)) return;
         write_mesh2(
             out, {triangle->a, triangle->b, triangle->c}, {},
             {glm::dvec2(triangle->uv_a), glm::dvec2(triangle->uv_b), glm::dvec2(triangle->uv_c)},
             {{0u, 1u, 2u}});
-    } else if (const auto* mesh = std::get_if<jt::Mesh>(&p.shape)) {
+    } else if (const auto* mesh = jt::shape_if<jt::Mesh>(&p.shape)) {
         if (!write_model(out, *mesh, scene)) return;
     }
-    if (std::holds_alternative<jt::Triangle>(p.shape) || std::holds_alternative<jt::Mesh>(p.shape))
+    if (jt::shape_is<jt::Triangle>(p.shape) || jt::shape_is<jt::Mesh>(p.shape))
         mapping = ImageMapping{true};
     write_material(out, p.material, scene, mapping);
     if (!p.transforms.empty()) write_matrix(out, world);

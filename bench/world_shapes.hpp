@@ -50,7 +50,7 @@ inline WorldShapes world_shapes(const Scene& scene) {
         if (std::holds_alternative<LeftOut>(placed)) continue;
         const ObjectTransform& transform = std::get<ObjectTransform>(placed);
         const Affine& world = transform.to_world;
-        if (const auto* plane = std::get_if<Plane>(&p.shape)) {
+        if (const auto* plane = shape_if<Plane>(&p.shape)) {
             auto n = unit_length(plane->normal);
             auto world_normal = n ? unit_length(transform.normal_matrix * *n) : std::nullopt;
             if (world_normal)
@@ -60,16 +60,15 @@ inline WorldShapes world_shapes(const Scene& scene) {
         }
         auto scale = similarity_scale(world.linear);
         // Triangles and meshes are not among the shapes these tools compare.
-        const bool triangles =
-            std::holds_alternative<Triangle>(p.shape) || std::holds_alternative<Mesh>(p.shape);
+        const bool triangles = shape_is<Triangle>(p.shape) || shape_is<Mesh>(p.shape);
         if (!scale || triangles) {
             if (!shapes.first_unplaceable) shapes.first_unplaceable = i;
             continue;
         }
-        if (const auto* sphere = std::get_if<Sphere>(&p.shape)) {
+        if (const auto* sphere = shape_if<Sphere>(&p.shape)) {
             shapes.spheres.push_back(
                 {apply_point(world, sphere->center), *scale * sphere->radius, i});
-        } else if (const auto* cylinder = std::get_if<Cylinder>(&p.shape)) {
+        } else if (const auto* cylinder = shape_if<Cylinder>(&p.shape)) {
             shapes.cylinders.push_back({apply_point(world, Vec3(0.0)),
                                         apply_point(world, Vec3(0.0, cylinder->height, 0.0)),
                                         *scale * cylinder->radius, i});

@@ -48,7 +48,7 @@ TEST_F(IncludeEdit, AValueOfAnIncludedFileIsWrittenIntoThatFile) {
     const ParseResult r = parse();
     ASSERT_TRUE(r.ok());
     Scene edited = r.scene;
-    std::get<Sphere>(edited.primitives[1].shape).center.y = 5;
+    shape_as<Sphere>(edited.primitives[1].shape).center.y = 5;
     edited.primitives[1].material.pigment = Colour(1, 0, 0);
     edited.primitives[1].material.reflection = 0.25;  // never written: inserted there
     const SourceEditResult result = apply_scene_edits(main_text, r.source, r.scene, edited);
@@ -68,8 +68,8 @@ TEST_F(IncludeEdit, AValueOfAnIncludedFileIsWrittenIntoThatFile) {
 TEST_F(IncludeEdit, EditsOfBothFilesLeaveEveryOtherByte) {
     const ParseResult r = parse();
     Scene edited = r.scene;
-    std::get<Sphere>(edited.primitives[0].shape).radius = 2;
-    std::get<Sphere>(edited.primitives[1].shape).center.x = -1;
+    shape_as<Sphere>(edited.primitives[0].shape).radius = 2;
+    shape_as<Sphere>(edited.primitives[1].shape).center.x = -1;
     const SourceEditResult result = apply_scene_edits(main_text, r.source, r.scene, edited);
     ASSERT_TRUE(result.ok()) << result.error;
     EXPECT_EQ(result.text,
@@ -92,14 +92,14 @@ TEST_F(IncludeEdit, AFileReadTwiceChangesForEveryReadingOrNotAtAll) {
     const ParseResult r = parse_scene(twice, options);
     ASSERT_TRUE(r.ok());
     Scene edited = r.scene;
-    for (Primitive& p : edited.primitives) std::get<Sphere>(p.shape).center.z = 7;
+    for (Primitive& p : edited.primitives) shape_as<Sphere>(p.shape).center.z = 7;
     SourceEditResult result = apply_scene_edits(twice, r.source, r.scene, edited);
     ASSERT_TRUE(result.ok()) << result.error;
     ASSERT_EQ(result.files.size(), 1u);
     EXPECT_EQ(result.files[0].readings, 2);
     EXPECT_NE(result.files[0].text.find("center: <1.0, 2.0, 7>;"), std::string::npos);
     // The two readings edited differently: one text cannot hold both.
-    std::get<Sphere>(edited.primitives[1].shape).center.z = 8;
+    shape_as<Sphere>(edited.primitives[1].shape).center.z = 8;
     result = apply_scene_edits(twice, r.source, r.scene, edited);
     EXPECT_FALSE(result.ok());
     EXPECT_TRUE(result.files.empty());

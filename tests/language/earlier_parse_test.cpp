@@ -113,7 +113,7 @@ TEST(EarlierParse, ADefineFromTheCommandLineThatReadsClockCounts) {
     const ParseResult r = parse_scene(scene_text, options);
     ASSERT_TRUE(r.ok());
     EXPECT_FALSE(taken(r)[4]);
-    EXPECT_DOUBLE_EQ(std::get<Sphere>(r.scene.primitives[4].shape).radius, 1.5);
+    EXPECT_DOUBLE_EQ(shape_as<Sphere>(r.scene.primitives[4].shape).radius, 1.5);
     EXPECT_TRUE(taken(r)[0]);
 }
 
@@ -166,7 +166,7 @@ TEST(EarlierParse, TakesFromIncludedFilesOnlyWhileTheyAreUnchanged) {
     r = parse_scene(text, options);
     ASSERT_TRUE(r.ok());
     EXPECT_EQ(taken(r), (std::vector<bool>{false, false, false}));
-    EXPECT_DOUBLE_EQ(std::get<Sphere>(r.scene.primitives[0].shape).radius, 4.0);
+    EXPECT_DOUBLE_EQ(shape_as<Sphere>(r.scene.primitives[0].shape).radius, 4.0);
 }
 
 TEST(EarlierParse, AnotherMainTextIsReadWhole) {

@@ -21,13 +21,13 @@ double number_of(const std::string& value, const ParseOptions& options = {}) {
     ParseResult r = parse_scene("scene { plane { distance: " + value + "; } }", options);
     EXPECT_EQ(test::brief(r.diagnostics), "") << value;
     if (r.scene.primitives.empty()) return std::nan("");
-    return std::get<Plane>(r.scene.primitives[0].shape).distance;
+    return shape_as<Plane>(r.scene.primitives[0].shape).distance;
 }
 
 Vec3 vector_of(const std::string& value) {
     ParseResult r = parse_clean("scene { sphere { center: " + value + "; } }");
     if (r.scene.primitives.empty()) return Vec3{std::nan("")};
-    return std::get<Sphere>(r.scene.primitives[0].shape).center;
+    return shape_as<Sphere>(r.scene.primitives[0].shape).center;
 }
 
 std::string plane_error(const std::string& value) {

@@ -47,7 +47,7 @@ class Include : public testing::Test {
 };
 
 const Sphere& sphere(const ParseResult& r, std::size_t i) {
-    return std::get<Sphere>(r.scene.primitives.at(i).shape);
+    return shape_as<Sphere>(r.scene.primitives.at(i).shape);
 }
 
 TEST_F(Include, FilesAreReadInPlaceAtTheTopInCamerasAndInScene) {
@@ -153,9 +153,9 @@ TEST_F(Include, PathsAreRelativeToTheNamingFile) {
     EXPECT_EQ(brief(r.diagnostics), "");
     EXPECT_EQ(r.scene.settings.background_map, "parts/sky.png");
     ASSERT_EQ(r.scene.primitives.size(), 2u);
-    EXPECT_EQ(std::get<Mesh>(r.scene.primitives[0].shape).file, "models/m.obj");
+    EXPECT_EQ(shape_as<Mesh>(r.scene.primitives[0].shape).file, "models/m.obj");
     EXPECT_EQ(r.scene.primitives[0].material.image_map, "parts/wood.png");
-    EXPECT_EQ(std::get<Mesh>(r.scene.primitives[1].shape).file, "/abs/m.obj");
+    EXPECT_EQ(shape_as<Mesh>(r.scene.primitives[1].shape).file, "/abs/m.obj");
     ASSERT_EQ(r.source.files.size(), 2u);
     EXPECT_EQ(r.source.files[1].name, (dir / "parts/b.jts").string());
     // An absolute include path is allowed.

@@ -37,7 +37,7 @@ TEST(LargeScene, EveryRecordInPlace) {
     ASSERT_EQ(r.source.properties.size(), 5u * sphere_count + 2u);
     for (int i = 0; i < sphere_count; i += 997) {
         const Primitive& p = r.scene.primitives[static_cast<std::size_t>(i)];
-        EXPECT_EQ(std::get<Sphere>(p.shape).center, Vec3(i, 0, 0));
+        EXPECT_EQ(shape_as<Sphere>(p.shape).center, Vec3(i, 0, 0));
         EXPECT_EQ(p.material.pigment, Colour(0.5, i % 2, 0));
         ASSERT_EQ(p.transforms.size(), 1u);
         EXPECT_EQ(p.transforms[0].vector, Vec3(i + 1, 1, 1));

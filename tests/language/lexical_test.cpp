@@ -20,7 +20,7 @@ double radius_of(std::string_view number) {
     std::string text = "scene { sphere { radius: " + std::string(number) + "; } }";
     ParseResult r = parse_clean(text);
     if (r.scene.primitives.size() != 1) return -1;
-    return std::get<Sphere>(r.scene.primitives[0].shape).radius;
+    return shape_as<Sphere>(r.scene.primitives[0].shape).radius;
 }
 
 TEST(Numbers, AcceptEveryFormTheSemanticsList) {
@@ -44,7 +44,7 @@ TEST(Numbers, AcceptEveryFormTheSemanticsList) {
 
 TEST(Numbers, NegativeNumbersReadNegative) {
     ParseResult r = parse_clean("scene { plane { distance: -1.25; } }");
-    EXPECT_EQ(std::get<Plane>(r.scene.primitives.at(0).shape).distance, -1.25);
+    EXPECT_EQ(shape_as<Plane>(r.scene.primitives.at(0).shape).distance, -1.25);
 }
 
 TEST(Numbers, MalformedNumberIsOneErrorAtItsStart) {
@@ -59,7 +59,7 @@ TEST(Numbers, MalformedNumberIsOneErrorAtItsStart) {
 TEST(Numbers, SignsAreOperatorsExceptInAnExponent) {
     auto distance = [](const std::string& value) {
         ParseResult r = parse_clean("scene { plane { distance: " + value + "; } }");
-        return std::get<Plane>(r.scene.primitives.at(0).shape).distance;
+        return shape_as<Plane>(r.scene.primitives.at(0).shape).distance;
     };
     EXPECT_EQ(distance("--1"), 1.0);
     EXPECT_EQ(distance("1-2"), -1.0);
@@ -246,7 +246,7 @@ TEST(Numbers, FastPathAgreesWithFromChars) {
             continue;
         }
         ASSERT_TRUE(r.ok()) << number;
-        double got = std::get<Plane>(r.scene.primitives.at(0).shape).distance;
+        double got = shape_as<Plane>(r.scene.primitives.at(0).shape).distance;
         ASSERT_EQ(got, expected) << number;
     }
 }
@@ -277,8 +277,8 @@ TEST(Numbers, PlainVectorsAgreeWithTheExpressionPath) {
         ASSERT_EQ(fast.ok(), slow.ok()) << vector;
         ASSERT_EQ(fast.diagnostics.size(), slow.diagnostics.size()) << vector;
         if (!fast.ok()) continue;
-        const Vec3 a = std::get<Sphere>(fast.scene.primitives.at(0).shape).center;
-        const Vec3 b = std::get<Sphere>(slow.scene.primitives.at(0).shape).center;
+        const Vec3 a = shape_as<Sphere>(fast.scene.primitives.at(0).shape).center;
+        const Vec3 b = shape_as<Sphere>(slow.scene.primitives.at(0).shape).center;
         ASSERT_EQ(std::memcmp(&a, &b, sizeof a), 0) << vector;  // -0 too
         const PropertySource& p = fast.source.properties.at(0);
         const PropertySource& q = slow.source.properties.at(0);
@@ -291,11 +291,11 @@ TEST(Numbers, PlainVectorsAgreeWithTheExpressionPath) {
 TEST(Numbers, OnlyAPlainVectorTakesTheFastPath) {
     ParseResult r = parse_scene("scene { sphere { center: <1, 2, 3> * 2; } }");
     ASSERT_TRUE(r.ok());
-    EXPECT_EQ(std::get<Sphere>(r.scene.primitives.at(0).shape).center, Vec3(2, 4, 6));
+    EXPECT_EQ(shape_as<Sphere>(r.scene.primitives.at(0).shape).center, Vec3(2, 4, 6));
     EXPECT_EQ(r.source.properties.at(0).origin, ValueOrigin::expression);
     r = parse_scene("scene { sphere { center: <1, --2, 3>; } }");
     ASSERT_TRUE(r.ok());
-    EXPECT_EQ(std::get<Sphere>(r.scene.primitives.at(0).shape).center, Vec3(1, 2, 3));
+    EXPECT_EQ(shape_as<Sphere>(r.scene.primitives.at(0).shape).center, Vec3(1, 2, 3));
     EXPECT_EQ(r.source.properties.at(0).origin, ValueOrigin::expression);
     EXPECT_FALSE(parse_scene("scene { sphere { center: <1, 2>; } }").ok());
     EXPECT_FALSE(parse_scene("scene { sphere { center: <1, 2, 3, 4>; } }").ok());

@@ -20,7 +20,7 @@ std::string brief_with(std::string_view text, const ParseOptions& options) {
 }
 
 const Sphere& sphere(const ParseResult& r, std::size_t i = 0) {
-    return std::get<Sphere>(r.scene.primitives.at(i).shape);
+    return shape_as<Sphere>(r.scene.primitives.at(i).shape);
 }
 
 TEST(Names, DefineNumbersVectorsAndStrings) {
@@ -220,7 +220,7 @@ TEST(Names, SavingInPlaceRefusesToOverwriteNamesAndExpressions) {
     ParseResult r = parse_clean(text);
     for (std::size_t i : {0u, 1u}) {
         Scene edited = r.scene;
-        std::get<Sphere>(edited.primitives[i].shape).radius = 5;
+        shape_as<Sphere>(edited.primitives[i].shape).radius = 5;
         SourceEditResult edit = apply_scene_edits(text, r.source, r.scene, edited);
         EXPECT_FALSE(edit.ok());
         EXPECT_EQ(edit.text, text);
@@ -231,7 +231,7 @@ TEST(Names, SavingInPlaceRefusesToOverwriteNamesAndExpressions) {
     }
     // A literal beside them is still written in place, a signed component kept.
     Scene edited = r.scene;
-    std::get<Sphere>(edited.primitives[2].shape).center.x = 4;
+    shape_as<Sphere>(edited.primitives[2].shape).center.x = 4;
     SourceEditResult edit = apply_scene_edits(text, r.source, r.scene, edited);
     ASSERT_TRUE(edit.ok()) << edit.error;
     EXPECT_NE(edit.text.find("center: <4, -2, 3>;"), std::string::npos) << edit.text;

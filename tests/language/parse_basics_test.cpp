@@ -51,9 +51,9 @@ scene {
     EXPECT_EQ(s.cameras[0].fov, 60.0);
     EXPECT_EQ(s.cameras[1], (test::named_camera("b")));
     ASSERT_EQ(s.primitives.size(), 3u);
-    EXPECT_EQ(std::get<Sphere>(s.primitives[0].shape), (Sphere{{1, 0, 0}, 2}));
-    EXPECT_EQ(std::get<Plane>(s.primitives[1].shape), (Plane{{0, 0, 1}, -2}));
-    EXPECT_EQ(std::get<Cylinder>(s.primitives[2].shape), (Cylinder{0.75, 5}));
+    EXPECT_EQ(shape_as<Sphere>(s.primitives[0].shape), (Sphere{{1, 0, 0}, 2}));
+    EXPECT_EQ(shape_as<Plane>(s.primitives[1].shape), (Plane{{0, 0, 1}, -2}));
+    EXPECT_EQ(shape_as<Cylinder>(s.primitives[2].shape), (Cylinder{0.75, 5}));
     ASSERT_EQ(s.lights.size(), 1u);
     EXPECT_EQ(s.lights[0].position, Vec3(1.5, 2, 4));
     EXPECT_EQ(s.lights[0].intensity, Colour(0, 0.8, 0));

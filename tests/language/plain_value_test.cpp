@@ -211,8 +211,8 @@ TEST(PlainValue, ParsesAsTheTokenPathDoes) {
         SCOPED_TRACE(scene(""));
         ASSERT_EQ(fast.ok(), slow.ok());
         if (!fast.ok()) continue;
-        const Sphere& a = std::get<Sphere>(fast.scene.primitives.at(0).shape);
-        const Sphere& b = std::get<Sphere>(slow.scene.primitives.at(0).shape);
+        const Sphere& a = shape_as<Sphere>(fast.scene.primitives.at(0).shape);
+        const Sphere& b = shape_as<Sphere>(slow.scene.primitives.at(0).shape);
         EXPECT_TRUE(same_bits(a.radius, b.radius));
         EXPECT_EQ(std::memcmp(&a.center, &b.center, sizeof a.center), 0);
         ASSERT_EQ(fast.source.properties.size(), slow.source.properties.size());
@@ -231,8 +231,8 @@ TEST(PlainValue, StopsWithTheTokens) {
     const ParseResult slow = parse_scene("scene { sphere { " + errors + "center: <1, 2, 3>\n; } }");
     EXPECT_EQ(fast.diagnostics.size(), static_cast<std::size_t>(DiagnosticSink::max_errors) + 1);
     EXPECT_EQ(fast.source.properties.size(), slow.source.properties.size());
-    EXPECT_EQ(std::get<Sphere>(fast.scene.primitives.at(0).shape).center,
-              std::get<Sphere>(slow.scene.primitives.at(0).shape).center);
+    EXPECT_EQ(shape_as<Sphere>(fast.scene.primitives.at(0).shape).center,
+              shape_as<Sphere>(slow.scene.primitives.at(0).shape).center);
 }
 
 // A value out of range or of the wrong kind read by the scan gets the

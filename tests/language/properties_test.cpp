@@ -31,9 +31,9 @@ TEST(Defaults, EmptyBlocksGiveTheTableDefaults) {
     EXPECT_EQ(c.aspect, 1.0);
     EXPECT_EQ(c.fov, 45.0);
     ASSERT_EQ(s.primitives.size(), 3u);
-    EXPECT_EQ(std::get<Sphere>(s.primitives[0].shape), (Sphere{{0, 0, 0}, 1.0}));
-    EXPECT_EQ(std::get<Plane>(s.primitives[1].shape), (Plane{{0, 1, 0}, 0.0}));
-    EXPECT_EQ(std::get<Cylinder>(s.primitives[2].shape), (Cylinder{0.5, 1.0}));
+    EXPECT_EQ(shape_as<Sphere>(s.primitives[0].shape), (Sphere{{0, 0, 0}, 1.0}));
+    EXPECT_EQ(shape_as<Plane>(s.primitives[1].shape), (Plane{{0, 1, 0}, 0.0}));
+    EXPECT_EQ(shape_as<Cylinder>(s.primitives[2].shape), (Cylinder{0.5, 1.0}));
     const Material& m = s.primitives[0].material;
     EXPECT_EQ(m.pigment, Colour(0));
     EXPECT_EQ(m.ambient, Colour(0));
@@ -111,7 +111,7 @@ TEST(Colours, AreClippedToZeroOneWithAWarning) {
 
 TEST(Vectors, AreNotClipped) {
     ParseResult r = parse_clean("scene { sphere { center: <-5, 10, 1e3>; } }");
-    EXPECT_EQ(std::get<Sphere>(r.scene.primitives.at(0).shape).center, Vec3(-5, 10, 1000));
+    EXPECT_EQ(shape_as<Sphere>(r.scene.primitives.at(0).shape).center, Vec3(-5, 10, 1000));
 }
 
 TEST(Camera, AspectMustBePositive) {
@@ -145,12 +145,12 @@ TEST(Shapes, RadiusAndHeightMustBePositive) {
 
 TEST(Shapes, RejectedValuesLeaveTheDefault) {
     ParseResult r = parse_scene("scene { cylinder { radius: -1; height: 2; } }");
-    EXPECT_EQ(std::get<Cylinder>(r.scene.primitives.at(0).shape), (Cylinder{0.5, 2.0}));
+    EXPECT_EQ(shape_as<Cylinder>(r.scene.primitives.at(0).shape), (Cylinder{0.5, 2.0}));
 }
 
 TEST(Shapes, PlaneNormalMustBeNonZeroAndIsKeptAsWritten) {
     ParseResult r = parse_clean("scene { plane { normal: <0, 0, 2>; distance: -2; } }");
-    EXPECT_EQ(std::get<Plane>(r.scene.primitives.at(0).shape).normal, Vec3(0, 0, 2));
+    EXPECT_EQ(shape_as<Plane>(r.scene.primitives.at(0).shape).normal, Vec3(0, 0, 2));
     EXPECT_EQ(brief("scene { plane { normal: <0, 0, 0>; } }"),
               "1:25: error: 'normal' must not be the zero vector, got <0, 0, 0>");
 }

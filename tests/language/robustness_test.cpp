@@ -39,7 +39,7 @@ TEST_F(Timed, NestedBracesInsideAPrimitive) {
                        " radius: 2; } }";
     ParseResult r = parse_scene(text);
     EXPECT_EQ(r.diagnostics.size(), 1u);
-    EXPECT_EQ(std::get<Sphere>(r.scene.primitives.at(0).shape).radius, 2.0);
+    EXPECT_EQ(shape_as<Sphere>(r.scene.primitives.at(0).shape).radius, 2.0);
 }
 
 TEST_F(Timed, TwoMegabyteStringLiteral) {

@@ -158,7 +158,7 @@ void for_each_block(F f) {
     f(std::type_identity<RenderSettings>{});
     f(std::type_identity<Camera>{});
     [&]<std::size_t... I>(std::index_sequence<I...>) {
-        (f(std::type_identity<std::variant_alternative_t<I, Shape>>{}), ...);
+        (f(std::type_identity<ShapeAlternative<I>>{}), ...);
     }
     (std::make_index_sequence<std::variant_size_v<Shape>>{});
     f(std::type_identity<PointLight>{});
@@ -243,7 +243,7 @@ Block& block_in(Scene& s) {
         return s.primitives.at(0).transforms.at(0);
     } else {
         for (Primitive& p : s.primitives)
-            if (auto* shape = std::get_if<Block>(&p.shape)) return *shape;
+            if (auto* shape = shape_if<Block>(&p.shape)) return *shape;
         throw std::out_of_range("no primitive of that shape");
     }
 }

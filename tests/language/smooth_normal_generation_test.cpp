@@ -244,7 +244,7 @@ TEST(SmoothNormalGeneration, TheAngleIsCheckedWhereItIsWritten) {
     EXPECT_EQ(brief(mesh + "\"x\"; } }"),
               "3:45: error: 'smooth_angle' takes a number like 1.5, got the string \"x\"");
     const ParseResult r = test::parse_clean(mesh + "0; } }");
-    EXPECT_EQ(std::get<Mesh>(r.scene.primitives[0].shape).smooth_angle, 0.0);
+    EXPECT_EQ(shape_as<Mesh>(r.scene.primitives[0].shape).smooth_angle, 0.0);
 }
 
 }  // namespace

@@ -283,7 +283,7 @@ TEST_P(SourceRoundTrip, EditedValuesReadBackAsEdited) {
             (moves ? op.vector.x : op.degrees) += 1;
         }
         if (chance(4)) p.transforms.push_back({TransformKind::xrotate, Vec3(0.0), 10});
-        if (auto* s = std::get_if<Sphere>(&p.shape); s && chance(2)) s->radius = 0.5;
+        if (auto* s = shape_if<Sphere>(&p.shape); s && chance(2)) s->radius = 0.5;
     }
     if (chance(3)) edited.primitives.erase(edited.primitives.begin());
     if (chance(3)) edited.primitives.push_back(Primitive{Cylinder{}, {}, {}});

@@ -43,7 +43,7 @@ std::string reserialized(std::string_view text) {
 }
 
 Sphere& sphere(Scene& scene, std::size_t i = 0) {
-    return std::get<Sphere>(scene.primitives.at(i).shape);
+    return shape_as<Sphere>(scene.primitives.at(i).shape);
 }
 
 constexpr std::string_view kNamed =
@@ -372,7 +372,7 @@ TEST(SourceSerializer, AnEditedValueFromAnIncludedFileWritesItsFileOutInPlace) {
     files.write("parts/defs.jts", kDefs);
     files.write("parts/balls.jts", kBalls);
     const std::string out = files.reserialized(kMain, [](Scene& s) {
-        std::get<Sphere>(s.primitives.at(1).shape).radius = 5;  // was r
+        shape_as<Sphere>(s.primitives.at(1).shape).radius = 5;  // was r
     });
     EXPECT_NE(out.find("include \"parts/defs.jts\";\n"), std::string::npos) << out;
     EXPECT_EQ(out.find("parts/balls.jts"), std::string::npos) << out;
@@ -498,7 +498,7 @@ TEST(SourceSerializer, AFileIncludedTwiceIsKeptOrWrittenByReading) {
               std::string::npos)
         << out;
     const std::string edited = files.reserialized(
-        text, [](Scene& s) { std::get<Sphere>(s.primitives.at(1).shape).radius = 3; });
+        text, [](Scene& s) { shape_as<Sphere>(s.primitives.at(1).shape).radius = 3; });
     EXPECT_NE(edited.find("scene {\n"
                           "    include \"ball.jts\";\n"
                           "    sphere {\n"),

@@ -18,7 +18,7 @@ TEST(Structure, MissingSemicolonPointsJustPastTheValue) {
 TEST(Structure, MissingSemicolonStillReadsTheNextProperty) {
     ParseResult r = parse_scene("scene { sphere { center: <1, 2, 3>\n radius: 2; } }");
     ASSERT_EQ(r.scene.primitives.size(), 1u);
-    EXPECT_EQ(std::get<Sphere>(r.scene.primitives[0].shape), (Sphere{{1, 2, 3}, 2}));
+    EXPECT_EQ(shape_as<Sphere>(r.scene.primitives[0].shape), (Sphere{{1, 2, 3}, 2}));
 }
 
 TEST(Structure, MissingColon) {
@@ -63,7 +63,7 @@ TEST(Structure, UnknownBlockInsideABlockIsSkippedWhole) {
     EXPECT_EQ(brief(r.diagnostics),
               "1:18: error: unknown block 'matrial' in 'sphere'; did you mean 'material'? "
               "(allowed: material, transform)");
-    EXPECT_EQ(std::get<Sphere>(r.scene.primitives.at(0).shape).radius, 3.0);
+    EXPECT_EQ(shape_as<Sphere>(r.scene.primitives.at(0).shape).radius, 3.0);
 }
 
 TEST(Structure, WrongKindNamesTheExpectedKind) {
@@ -157,7 +157,7 @@ TEST(Structure, SeveralSceneBlocksLastWinsWithAWarning) {
               "2:1: warning: another 'scene' block: only the last one is used, so the one at "
               "line 1 is ignored");
     ASSERT_EQ(r.scene.primitives.size(), 1u);
-    EXPECT_TRUE(std::holds_alternative<Plane>(r.scene.primitives[0].shape));
+    EXPECT_TRUE(shape_is<Plane>(r.scene.primitives[0].shape));
     EXPECT_TRUE(r.scene.lights.empty());
     EXPECT_EQ(r.source.primitives.size(), 1u);
     EXPECT_TRUE(r.source.lights.empty());
@@ -179,7 +179,7 @@ TEST(Structure, RepeatedPropertyLaterWinsWithAWarning) {
     EXPECT_EQ(brief(r.diagnostics),
               "3:2: warning: 'radius' is set again in this 'sphere'; the later value wins (first "
               "set at line 2)");
-    EXPECT_EQ(std::get<Sphere>(r.scene.primitives.at(0).shape).radius, 3.0);
+    EXPECT_EQ(shape_as<Sphere>(r.scene.primitives.at(0).shape).radius, 3.0);
 }
 
 TEST(Structure, TransformPropertiesAllApplyInOrderWithoutWarning) {

@@ -29,13 +29,13 @@ TEST(TriangleMesh, ParseWithTheirDefaults) {
                                             "         material { pigment: <1, 0, 0>; } }\n"
                                             "}\n");
     ASSERT_EQ(r.scene.primitives.size(), 2u);
-    const auto& t = std::get<Triangle>(r.scene.primitives[0].shape);
+    const auto& t = shape_as<Triangle>(r.scene.primitives[0].shape);
     EXPECT_EQ(t.a, Vec3(0, 0, 0));
     EXPECT_EQ(t.b, Vec3(2, 0, 0));
     EXPECT_EQ(t.c, Vec3(0, 1, 0));
     EXPECT_EQ(t.uv_b, Vec3(1, 0, 0));
     EXPECT_EQ(t.uv_c, Vec3(0, 2, 0));
-    const auto& m = std::get<Mesh>(r.scene.primitives[1].shape);
+    const auto& m = shape_as<Mesh>(r.scene.primitives[1].shape);
     EXPECT_EQ(m.file, "m.obj");
     EXPECT_EQ(m.shading, "flat");
     EXPECT_EQ(r.scene.primitives[1].material.pigment, Colour(1, 0, 0));
@@ -72,8 +72,8 @@ TEST(TriangleMesh, EditedInPlace) {
                              "    mesh { file: \"a.obj\"; }\n}\n";
     const ParseResult base = test::parse_clean(text);
     Scene edited = base.scene;
-    std::get<Triangle>(edited.primitives[0].shape).c = {0, 4, 0};
-    std::get<Mesh>(edited.primitives[1].shape).shading = "flat";
+    shape_as<Triangle>(edited.primitives[0].shape).c = {0, 4, 0};
+    shape_as<Mesh>(edited.primitives[1].shape).shading = "flat";
     const SourceEditResult result = apply_scene_edits(text, base.source, base.scene, edited);
     ASSERT_TRUE(result.ok()) << result.error;
     EXPECT_NE(result.text.find("triangle { c: <0, 4, 0>; }  # keep"), std::string::npos)

@@ -138,9 +138,8 @@ Comparison compare(const Image8& core, const reference::ReferenceImage& ref) {
 }
 
 int ambiguity_limit(const Image8& image, const Scene& scene) {
-    const auto meshes =
-        std::count_if(scene.primitives.begin(), scene.primitives.end(),
-                      [](const Primitive& p) { return std::holds_alternative<Mesh>(p.shape); });
+    const auto meshes = std::count_if(scene.primitives.begin(), scene.primitives.end(),
+                                      [](const Primitive& p) { return shape_is<Mesh>(p.shape); });
     return std::max(3, image.width * image.height * scene.settings.samples / 100) +
            static_cast<int>(meshes);
 }
@@ -407,13 +406,13 @@ TEST(Differential, ACoreThatIgnoresALanguage12FeatureIsCaught) {
          {.generated_normals = true},
          [](Scene& s) {
              for (Primitive& p : s.primitives)
-                 if (auto* mesh = std::get_if<Mesh>(&p.shape)) mesh->smooth_angle.reset();
+                 if (auto* mesh = shape_if<Mesh>(&p.shape)) mesh->smooth_angle.reset();
          }},
         {"materials",
          {.file_materials = true},
          [](Scene& s) {
              for (Primitive& p : s.primitives)
-                 if (auto* mesh = std::get_if<Mesh>(&p.shape))
+                 if (auto* mesh = shape_if<Mesh>(&p.shape))
                      mesh->materials = std::string(kSceneMaterials);
          }},
     };

@@ -122,5 +122,52 @@ TEST(OwnedScene, AnEditAfterItPreparesTheWholeScene) {
     EXPECT_NE(image, render_prepared(previous, before));
 }
 
+// A scene shared with its caller is read in place as a handed-over one is,
+// and a material edit of it is patched by holding the edited scene: nothing
+// gathered, the geometry kept, the bytes of a fresh preparation.
+TEST(OwnedScene, ASharedSceneIsReadInPlaceAndItsEditPatched) {
+    const auto before = std::make_shared<const Scene>(with_many_materials(mixed_scene()));
+    const auto previous = prepare_scene(before).value();
+    ASSERT_TRUE(previous->scene);
+    EXPECT_EQ(previous->scene, before) << "held, not copied";
+    EXPECT_TRUE(previous->materials.empty());
+    EXPECT_EQ(render_prepared(previous, *before),
+              render_prepared(prepare_scene(*before).value(), *before));
+
+    Scene after = *before;
+    after.primitives[4].material.pigment = {0.95, 0.1, 0.1};
+    after.primitives[3].material.transmission = 0.0;
+    after.primitives[6].material.transmission = 0.0;
+    after.primitives[9].material.transmission = 0.0;
+    const auto shared_after = std::make_shared<const Scene>(after);
+    const auto edited = prepare_scene_edit(*before, shared_after, previous).value();
+    EXPECT_EQ(edited->materials_gathered, 4u);
+    EXPECT_EQ(edited->geometry, previous->geometry);
+    EXPECT_EQ(edited->scene, shared_after);
+    EXPECT_FALSE(edited->has_transmission) << "worked out from the edited scene";
+    const Image8 image = render_prepared(edited, after);
+    EXPECT_EQ(image, render_prepared(prepare_scene(after).value(), after));
+    EXPECT_NE(image, render_prepared(previous, *before));
+
+    // With no transmission left, the edit that brings one back is found by
+    // looking at the changed objects alone.
+    Scene glass = after;
+    glass.primitives[6].material.transmission = 0.8;
+    const auto shared_glass = std::make_shared<const Scene>(glass);
+    const auto glazed = prepare_scene_edit(after, shared_glass, edited).value();
+    EXPECT_EQ(glazed->materials_gathered, 1u);
+    EXPECT_TRUE(glazed->has_transmission);
+    EXPECT_EQ(render_prepared(glazed, glass), render_prepared(prepare_scene(glass).value(), glass));
+
+    // A pattern needs pattern spaces, which a scene read in place has none of.
+    Scene checkered = after;
+    checkered.primitives[4].material.checker = Colour(0.1, 0.1, 0.1);
+    const auto shared_checkered = std::make_shared<const Scene>(checkered);
+    const auto gathered = prepare_scene_edit(after, shared_checkered, edited).value();
+    EXPECT_EQ(gathered->materials_gathered, checkered.primitives.size());
+    EXPECT_EQ(render_prepared(gathered, checkered),
+              render_prepared(prepare_scene(checkered).value(), checkered));
+}
+
 }  // namespace
 }  // namespace jt::test

@@ -101,7 +101,7 @@ TEST(Pick, TheDistanceReachesThePickedSurfaceAndProjectsBackToThePixel) {
             const std::optional<PickedPrimitive> pick = pick_primitive(*frame, x, y);
             if (!pick) continue;
             ++checked;
-            const Sphere& s = std::get<Sphere>(scene.primitives[pick->primitive].shape);
+            const Sphere& s = shape_as<Sphere>(scene.primitives[pick->primitive].shape);
             // The ray as docs/language.md §7 makes it, rebuilt here: to the pixel's centre.
             const Vec3 forward = glm::normalize(camera.look_at - camera.position);
             const Vec3 right = glm::normalize(glm::cross(forward, camera.up));

@@ -120,7 +120,7 @@ class SceneGenerator {
                 p.transforms = transforms();
                 place(p);
             } while (!within_limits(p));
-            if (std::holds_alternative<Plane>(p.shape)) ++planes;
+            if (shape_is<Plane>(p.shape)) ++planes;
             if (reference::flattened(p.transforms)) ++out.flattened;
             s.primitives.push_back(p);
         }
@@ -176,7 +176,7 @@ class SceneGenerator {
             const Vec3 world = target + size_ * log_uniform(0.3, 1.5) * direction();
             return object.linear * world + object.translation;
         };
-        auto& tri = std::get<Triangle>(p.shape);
+        auto& tri = shape_as<Triangle>(p.shape);
         do {
             tri.a = corner();
             tri.b = corner();
@@ -215,13 +215,13 @@ class SceneGenerator {
         constexpr double limit = 1e9;
         auto fits = [&](const Vec3& v) { return reference::max_abs(v) <= limit; };
         bool ok = true;
-        if (const auto* sphere = std::get_if<Sphere>(&p.shape))
+        if (const auto* sphere = shape_if<Sphere>(&p.shape))
             ok = fits(sphere->center) && sphere->radius <= limit;
-        else if (const auto* cylinder = std::get_if<Cylinder>(&p.shape))
+        else if (const auto* cylinder = shape_if<Cylinder>(&p.shape))
             ok = cylinder->radius <= limit && cylinder->height <= limit;
-        else if (const auto* plane = std::get_if<Plane>(&p.shape))
+        else if (const auto* plane = shape_if<Plane>(&p.shape))
             ok = fits(plane->normal) && std::abs(plane->distance) <= limit;
-        else if (const auto* t = std::get_if<Triangle>(&p.shape))
+        else if (const auto* t = shape_if<Triangle>(&p.shape))
             ok = fits(t->a) && fits(t->b) && fits(t->c);
         for (const TransformOp& op : p.transforms)
             ok = ok && fits(op.vector) && std::abs(op.degrees) <= limit;
@@ -466,14 +466,14 @@ class SceneGenerator {
         const reference::Map object = reference::to_object(unflattened);
         const double gain = std::cbrt(std::abs(glm::determinant(world.linear)));
         const double size = size_ * log_uniform(0.2, 1.2) / gain;
-        if (auto* sphere = std::get_if<Sphere>(&p.shape)) {
+        if (auto* sphere = shape_if<Sphere>(&p.shape)) {
             sphere->radius = size;
             sphere->center = object.linear * target + object.translation;
-        } else if (auto* cylinder = std::get_if<Cylinder>(&p.shape)) {
+        } else if (auto* cylinder = shape_if<Cylinder>(&p.shape)) {
             cylinder->radius = size;
             cylinder->height = size * uniform(0.5, 3.0);
             aim_a_translation(p.transforms, unflattened, target);
-        } else if (auto* plane = std::get_if<Plane>(&p.shape)) {
+        } else if (auto* plane = shape_if<Plane>(&p.shape)) {
             plane->normal = direction() * uniform(0.5, 2.0);
             const Vec3 through = chance(0.5) ? target : size_ * point(3.0);
             const Vec3 on = object.linear * through + object.translation;
@@ -559,23 +559,23 @@ class SceneGenerator {
         auto property = [&](const char* name, const std::string& value, bool is_default) {
             if (!is_default || chance(0.5)) t += std::string(name) + ": " + value + "; ";
         };
-        if (const auto* sphere = std::get_if<Sphere>(&p.shape)) {
+        if (const auto* sphere = shape_if<Sphere>(&p.shape)) {
             t = "  sphere { ";
             property("center", vec(sphere->center), sphere->center == Vec3(0.0));
             property("radius", num(sphere->radius), sphere->radius == 1.0);
-        } else if (const auto* cylinder = std::get_if<Cylinder>(&p.shape)) {
+        } else if (const auto* cylinder = shape_if<Cylinder>(&p.shape)) {
             t = "  cylinder { ";
             property("radius", num(cylinder->radius), false);
             property("height", num(cylinder->height), false);
-        } else if (const auto* plane = std::get_if<Plane>(&p.shape)) {
+        } else if (const auto* plane = shape_if<Plane>(&p.shape)) {
             t = "  plane { ";
             property("normal", vec(plane->normal), false);
             property("distance", num(plane->distance), false);
-        } else if (const auto* tri = std::get_if<Triangle>(&p.shape)) {
+        } else if (const auto* tri = shape_if<Triangle>(&p.shape)) {
             t = "  triangle { a: " + vec(tri->a) + "; b: " + vec(tri->b) + "; c: " + vec(tri->c) +
                 "; uv_a: " + vec(tri->uv_a) + "; uv_b: " + vec(tri->uv_b) +
                 "; uv_c: " + vec(tri->uv_c) + "; ";
-        } else if (const auto* mesh = std::get_if<Mesh>(&p.shape)) {
+        } else if (const auto* mesh = shape_if<Mesh>(&p.shape)) {
             t = "  mesh { file: \"" + mesh->file + "\"; shading: \"" + mesh->shading + "\"; ";
             if (mesh->smooth_angle) t += "smooth_angle: " + num(*mesh->smooth_angle) + "; ";
             if (mesh->materials != kSceneMaterials) t += "materials: \"" + mesh->materials + "\"; ";

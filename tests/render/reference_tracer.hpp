@@ -255,9 +255,9 @@ class Tracer {
             q.object_to_world = to_world(p.transforms);
 
             q.normal_matrix = glm::transpose(inverse.linear);
-            if (const auto* plane = std::get_if<Plane>(&p.shape))
+            if (const auto* plane = shape_if<Plane>(&p.shape))
                 q.unit_normal = plane->normal / std::sqrt(glm::dot(plane->normal, plane->normal));
-            if (const auto* mesh = std::get_if<Mesh>(&p.shape)) {
+            if (const auto* mesh = shape_if<Mesh>(&p.shape)) {
                 q.model = &files.models.at(mesh->file);
                 q.file_materials = mesh->materials == kFileMaterials;
                 if (mesh->shading == kSmoothShading && !q.model->normals.empty())
@@ -490,7 +490,7 @@ class Tracer {
             if (u < 0 || v < 0 || u + v > 1) return;
             offer(glm::dot(e2, q) / det, part, glm::cross(e1, e2), u, v);
         };
-        if (const auto* sphere = std::get_if<Sphere>(q.shape)) {
+        if (const auto* sphere = shape_if<Sphere>(q.shape)) {
             const Vec3 f = o - sphere->center;
             const double a = glm::dot(d, d), b = glm::dot(f, d);
             if (own) {  // roots 0 and -2b/a
@@ -504,7 +504,7 @@ class Tracer {
             if (h2 < 0) return;
             const double half = std::sqrt(h2 / a);
             for (double t : {-b / a - half, -b / a + half}) offer(t, 0, f + t * d);
-        } else if (const auto* cylinder = std::get_if<Cylinder>(q.shape)) {
+        } else if (const auto* cylinder = shape_if<Cylinder>(q.shape)) {
             const double r = cylinder->radius, height = cylinder->height;
             const double a = d.x * d.x + d.z * d.z, b = o.x * d.x + o.z * d.z;
             auto side = [&](double t) {
@@ -531,12 +531,12 @@ class Tracer {
                 const double x = o.x + t * d.x, z = o.z + t * d.z;
                 if (x * x + z * z <= r * r) offer(t, part, {0, part == 1 ? -1.0 : 1.0, 0});
             }
-        } else if (const auto* plane = std::get_if<Plane>(q.shape)) {
+        } else if (const auto* plane = shape_if<Plane>(q.shape)) {
             if (own) return;
             const double denominator = glm::dot(q.unit_normal, d);
             if (denominator == 0) return;
             offer((plane->distance - glm::dot(q.unit_normal, o)) / denominator, 0, q.unit_normal);
-        } else if (const auto* t = std::get_if<Triangle>(q.shape)) {
+        } else if (const auto* t = shape_if<Triangle>(q.shape)) {
             if (!own_face) triangle(t->a, t->b, t->c, 0);
         } else if (q.model) {
             const Model& m = *q.model;
@@ -552,7 +552,7 @@ class Tracer {
 
     // The corners of face f of placed primitive q (a triangle's is face 0), object space.
     static std::array<Vec3, 3> face_corners(const Placed& q, int f) {
-        if (const auto* t = std::get_if<Triangle>(q.shape)) return {t->a, t->b, t->c};
+        if (const auto* t = shape_if<Triangle>(q.shape)) return {t->a, t->b, t->c};
         const auto& face = q.model->faces[f];
         return {q.model->positions[face[0]], q.model->positions[face[1]],
                 q.model->positions[face[2]]};
@@ -579,7 +579,7 @@ class Tracer {
         std::vector<std::pair<int, int>> found;
         for (int k = 0; k < static_cast<int>(placed_.size()); ++k) {
             const Placed& q = placed_[k];
-            const bool loose = std::holds_alternative<Triangle>(*q.shape);
+            const bool loose = shape_is<Triangle>(*q.shape);
             if (!loose && !q.model) continue;
             const int faces = loose ? 1 : static_cast<int>(q.model->faces.size());
             for (int f = 0; f < faces; ++f) {
@@ -652,7 +652,7 @@ class Tracer {
 
     // A triangle or a mesh: its hits are found in single precision.
     bool is_triangle(int k) const {
-        return placed_[k].model != nullptr || std::holds_alternative<Triangle>(*placed_[k].shape);
+        return placed_[k].model != nullptr || shape_is<Triangle>(*placed_[k].shape);
     }
 
     // Two triangles' hits nearer each other than this (relative) along a ray
@@ -722,7 +722,7 @@ class Tracer {
         if (q.file_materials && !q.model->face_part.empty() && q.model->face_part[root.part] >= 0)
             pigment = q.model->part_colours[q.model->face_part[root.part]];
         else if (q.picture) {
-            const auto* t = std::get_if<Triangle>(q.shape);
+            const auto* t = shape_if<Triangle>(q.shape);
             const Vec3 uv = t ? w * t->uv_a + root.u * t->uv_b + root.v * t->uv_c : Vec3(0.0);
             pigment = bilinear(*q.picture, uv.x, uv.y);
         }

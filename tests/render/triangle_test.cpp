@@ -44,7 +44,7 @@ Primitive mesh(const std::filesystem::path& file, const Material& m = {},
 TEST(Triangles, HitAtAKnownPointWithBarycentricUv) {
     Scene s = scene_with_camera(camera_at({0, 0, 0}, {0, 0, -1}));
     Primitive p = triangle({-1, -1, -2}, {1, -1, -2}, {-1, 1, -2});
-    auto& t = std::get<Triangle>(p.shape);
+    auto& t = shape_as<Triangle>(p.shape);
     t.uv_a = {0.5, 0.5, 0};
     t.uv_b = {1.5, 0.5, 0};
     t.uv_c = {0.5, 2.5, 0};

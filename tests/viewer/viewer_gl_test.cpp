@@ -375,7 +375,7 @@ TEST_F(ViewerGl, AnEditThatMakesTheSceneInvalidKeepsTheImageAndSaysWhy) {
     ASSERT_TRUE(viewer.run_until_complete(state, kTimeout));
     const Image8 good = state.render.display;
     const auto jobs = state.render.renderer.jobs_started();
-    edit_scene(state, [](Scene& s) { std::get<Plane>(s.primitives[0].shape).normal = Vec3(0); });
+    edit_scene(state, [](Scene& s) { shape_as<Plane>(s.primitives[0].shape).normal = Vec3(0); });
     for (int i = 0; i < 3; ++i) viewer.frame(state);
     EXPECT_EQ(state.render.renderer.jobs_started(), jobs);
     EXPECT_NE(state.render.render_note.find("normal"), std::string::npos)

@@ -142,7 +142,7 @@ TEST_F(ViewerLensFields, AMeshsMaterialsAreChosenInACombo) {
     const std::size_t steps = state.history.undo.size();
     ASSERT_TRUE(viewer.click(state, "file")) << "the combo lists the choices";
     frames(1);
-    EXPECT_EQ(std::get<Mesh>(state.doc.scene.primitives[1].shape).materials, "file");
+    EXPECT_EQ(shape_as<Mesh>(state.doc.scene.primitives[1].shape).materials, "file");
     EXPECT_NE(text().find("mesh { file: \"tri.obj\"; material { pigment: <0.2, 0.9, 0.1>; } "
                           "materials: \"file\"; }"),
               std::string::npos)
@@ -151,7 +151,7 @@ TEST_F(ViewerLensFields, AMeshsMaterialsAreChosenInACombo) {
 
     ASSERT_TRUE(viewer.click(state, "smooth_angle"));
     frames(1);
-    EXPECT_EQ(std::get<Mesh>(state.doc.scene.primitives[1].shape).smooth_angle, 60.0);
+    EXPECT_EQ(shape_as<Mesh>(state.doc.scene.primitives[1].shape).smooth_angle, 60.0);
     EXPECT_NE(text().find("smooth_angle: 60;"), std::string::npos) << text();
 }
 

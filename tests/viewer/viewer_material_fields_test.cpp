@@ -86,7 +86,7 @@ TEST_F(ViewerMaterialFields, AValuePastTheLimitIsRefusedAndTheFieldSaysTheLimit)
 
     for (const std::string typed : {"1e17", "1e308"}) {
         ASSERT_TRUE(type_into("radius", typed)) << "a radius field";
-        const auto& sphere = std::get<Sphere>(state.doc.scene.primitives[1].shape);
+        const auto& sphere = shape_as<Sphere>(state.doc.scene.primitives[1].shape);
         EXPECT_EQ(sphere.radius, 1.0) << typed << " is refused";
         EXPECT_EQ(document_text(state.doc), before) << typed << " never reaches the file";
         EXPECT_NE(refusal().find("radius: "), std::string::npos) << typed;
@@ -94,11 +94,11 @@ TEST_F(ViewerMaterialFields, AValuePastTheLimitIsRefusedAndTheFieldSaysTheLimit)
             << refusal();
     }
     ASSERT_TRUE(type_into("radius", "2.5"));
-    EXPECT_EQ(std::get<Sphere>(state.doc.scene.primitives[1].shape).radius, 2.5);
+    EXPECT_EQ(shape_as<Sphere>(state.doc.scene.primitives[1].shape).radius, 2.5);
     EXPECT_EQ(refusal(), "") << "a value taken clears the note";
 
     ASSERT_TRUE(type_into("center", "2e9"));
-    EXPECT_EQ(std::get<Sphere>(state.doc.scene.primitives[1].shape).center, Vec3(0, 1, 0));
+    EXPECT_EQ(shape_as<Sphere>(state.doc.scene.primitives[1].shape).center, Vec3(0, 1, 0));
     EXPECT_NE(refusal().find("must be from -1e+09 to 1e+09"), std::string::npos) << refusal();
 }
 

@@ -137,7 +137,7 @@ TEST_F(ViewerNamesTime, ANameOrAnExpressionIsShownReadOnlyWithWhatItIsComputedFr
     viewer.frame(state);
     viewer.press_key(state, keys::enter);
     viewer.frame(state);
-    EXPECT_EQ(std::get<Sphere>(state.doc.scene.primitives[0].shape).radius, 0.5);
+    EXPECT_EQ(shape_as<Sphere>(state.doc.scene.primitives[0].shape).radius, 0.5);
     EXPECT_EQ(document_text(state.doc), before);
 }
 

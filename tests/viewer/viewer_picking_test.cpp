@@ -304,7 +304,7 @@ scene {
     // With materials "file", its parts (docs/language.md §14.5).
     EXPECT_EQ(find_item(viewer.ui_items(), "(no material): 12 triangles"), nullptr);
     edit_scene(state, [](Scene& scene) {
-        std::get<Mesh>(scene.primitives[1].shape).materials = std::string(kFileMaterials);
+        shape_as<Mesh>(scene.primitives[1].shape).materials = std::string(kFileMaterials);
     });
     for (int i = 0; i < 3; ++i) viewer.frame(state);
     EXPECT_NE(find_item(viewer.ui_items(), "(no material): 12 triangles"), nullptr);

@@ -66,7 +66,7 @@ TEST_F(ViewerSelectionKeys, PeriodFramesTheSelection) {
     select_sphere();
     viewer.press_key(state, keys::period);
     ASSERT_TRUE(state.view.free_camera_active) << state.message;
-    const Sphere& sphere = std::get<Sphere>(state.doc.scene.primitives[1].shape);
+    const Sphere& sphere = shape_as<Sphere>(state.doc.scene.primitives[1].shape);
     EXPECT_EQ(state.view.free_camera.look_at, sphere.center);
     const double distance = glm::length(state.view.free_camera.position - sphere.center);
     EXPECT_GT(distance, sphere.radius * 2.0);

@@ -216,7 +216,7 @@ bool reload_if_changed(AppState& state) {
 void reload_model(AppState& state, std::size_t primitive) {
     const auto& primitives = state.doc.scene.primitives;
     const Mesh* mesh =
-        primitive < primitives.size() ? std::get_if<Mesh>(&primitives[primitive].shape) : nullptr;
+        primitive < primitives.size() ? shape_if<Mesh>(&primitives[primitive].shape) : nullptr;
     if (!mesh) return;
     forget_model(asset_path(state.doc.scene, mesh->file));
     files_changed(state, true);

@@ -61,7 +61,7 @@ std::optional<Vec3> grabbed_point(AppState& state, const PreparedFrame& frame,
 
 // A plane's normal in world space, or nothing when its transform leaves it out.
 std::optional<Vec3> world_normal(const Primitive& primitive) {
-    const Plane* plane = std::get_if<Plane>(&primitive.shape);
+    const Plane* plane = shape_if<Plane>(&primitive.shape);
     if (!plane) return std::nullopt;
     const auto transform = object_transform(primitive.transforms);
     const ObjectTransform* t = std::get_if<ObjectTransform>(&transform);
@@ -131,7 +131,7 @@ std::optional<Vec3> object_centre(const Scene& scene, const Primitive& primitive
     const ObjectTransform* t = std::get_if<ObjectTransform>(&transform);
     if (!t) return std::nullopt;
     const Vec3 local =
-        std::visit([&](const auto& shape) { return local_centre(scene, shape); }, primitive.shape);
+        visit_shape([&](const auto& shape) { return local_centre(scene, shape); }, primitive.shape);
     return apply_point(t->to_world, local);
 }
 
@@ -177,7 +177,7 @@ bool start_object_drag(AppState& state, const ImagePoint& at, double marker_radi
     } else {
         const Primitive& p = state.doc.scene.primitives[static_cast<std::size_t>(target.index)];
         drag.only_along = world_normal(p);
-        if (std::holds_alternative<Plane>(p.shape) && !drag.only_along) {
+        if (shape_is<Plane>(p.shape) && !drag.only_along) {
             state.message = "Not moved: " + name + " is left out of the render";
             return false;
         }

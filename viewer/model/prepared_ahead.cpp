@@ -16,7 +16,7 @@ PreparedAhead AheadPreparer::start(std::shared_ptr<const Scene> scene) {
     PreparedAhead ahead{scene, promise.get_future().share()};
     thread_ = std::thread([scene = std::move(scene), promise = std::move(promise)]() mutable {
         try {
-            promise.set_value(prepare_scene(*scene));
+            promise.set_value(prepare_scene(scene));
         } catch (const std::exception& e) {  // out of memory, say
             promise.set_value(Error{std::string("the render failed: ") + e.what()});
         }

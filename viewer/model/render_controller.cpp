@@ -138,9 +138,8 @@ void RenderController::launch(const std::shared_ptr<Run>& run, std::shared_ptr<c
                     // image map or model file.)
                     Expected<std::shared_ptr<const PreparedScene>> prepared =
                         adopted && adopted == to_prepare && previous ? Expected(previous)
-                        : previous_scene
-                            ? prepare_scene_edit(*previous_scene, *to_prepare, previous)
-                            : prepare_scene(*to_prepare, previous);
+                        : previous_scene ? prepare_scene_edit(*previous_scene, to_prepare, previous)
+                                         : prepare_scene(to_prepare, previous);
                     if (!prepared) {
                         run->fail("the render failed: " + prepared.error().message);
                         run->done = true;

@@ -11,7 +11,8 @@
 
 namespace jt::view {
 
-LoadAttempt attempt_load(const std::filesystem::path& path, const ParseOptions& options) {
+LoadAttempt attempt_load(const std::filesystem::path& path, const ParseOptions& options,
+                         const ParsedScene& parsed) {
     LoadAttempt attempt;
     attempt.times.started = LoadTimes::Clock::now();
     // With the source map: saving in place writes edits back at their spans.
@@ -27,15 +28,20 @@ LoadAttempt attempt_load(const std::filesystem::path& path, const ParseOptions& 
             Diagnostic{Severity::error, SourcePos{}, read.error().message});
         return attempt;
     }
-    LoadedScene& loaded = *read;
+    // The scene stays where it was parsed, so that what `parsed` starts can
+    // read it while it is validated; the pointer keeps the load's other
+    // members (emptied below) alive with it.
+    const auto loaded = std::make_shared<LoadedScene>(std::move(*read));
+    std::shared_ptr<const Scene> scene(loaded, &loaded->parsed.scene);
     attempt.read = true;
-    attempt.diagnostics = check_scene(loaded);
-    attempt.parse_diagnostics = loaded.parsed.diagnostics;
+    if (parsed && !has_errors(loaded->parsed.diagnostics)) parsed(scene);
+    attempt.diagnostics = check_scene(*loaded);
+    attempt.parse_diagnostics = std::move(loaded->parsed.diagnostics);
     attempt.times.validated = LoadTimes::Clock::now();
     attempt.ok = !has_errors(attempt.diagnostics);
-    attempt.text = std::move(loaded.text);
-    attempt.scene = std::make_shared<const Scene>(std::move(loaded.parsed.scene));
-    attempt.source = std::move(loaded.parsed.source);
+    attempt.text = std::move(loaded->text);
+    attempt.scene = std::move(scene);
+    attempt.source = std::move(loaded->parsed.source);
     return attempt;
 }
 

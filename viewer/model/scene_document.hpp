@@ -16,6 +16,7 @@
 #include <chrono>
 #include <cstdint>
 #include <filesystem>
+#include <functional>
 #include <memory>
 #include <optional>
 #include <string>
@@ -119,9 +120,9 @@ struct LoadAttempt {
     bool missing = false;  // not read because the file is not there
     std::string text;
     std::shared_ptr<const Scene> scene = std::make_shared<const Scene>();
-    // A copy of `scene` made on the loader's thread for the document's edited
-    // scene, so that the frame taking the load in copies nothing; when empty
-    // accept_load copies `scene`.
+    // A copy of `scene` made beside the validation and the preparation for
+    // the document's edited scene, so that the frame taking the load in
+    // copies nothing; when empty accept_load copies `scene`.
     std::optional<Scene> scene_copy;
     SceneSource source;
     std::vector<Diagnostic> diagnostics;        // parsing's and validation's (check_scene)
@@ -129,9 +130,15 @@ struct LoadAttempt {
     LoadTimes times;
 };
 
+// Called with the scene a load parsed without errors, before it is
+// validated: work that reads it (the document's copy of it) can start there
+// and run beside the validation. The scene is the attempt's, never changed.
+using ParsedScene = std::function<void(const std::shared_ptr<const Scene>&)>;
+
 // Reads, parses and validates `path` through the core (scene_file.hpp). A
 // missing, unreadable or garbage file comes back as diagnostics.
-LoadAttempt attempt_load(const std::filesystem::path& path, const ParseOptions& options = {});
+LoadAttempt attempt_load(const std::filesystem::path& path, const ParseOptions& options = {},
+                         const ParsedScene& parsed = {});
 
 // What the document's texts are parsed with: doc.options, with the source
 // map and the file's path for its includes.

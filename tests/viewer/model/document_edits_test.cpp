@@ -200,7 +200,7 @@ TEST(DocumentEdits, ATextErrorKeepsTheImageAndIsListedAtItsLineTheFixRendersAgai
     type_text(state, text);
     settle_text(state);
     EXPECT_FALSE(state.doc.draft);
-    EXPECT_EQ(std::get<Sphere>(state.doc.scene.primitives[1].shape).radius, 1.4);
+    EXPECT_EQ(shape_as<Sphere>(state.doc.scene.primitives[1].shape).radius, 1.4);
     ASSERT_TRUE(loop.run_until_complete(state));
     EXPECT_NE(state.render.display, good);
     ASSERT_TRUE(save_scene(state)) << state.message;
@@ -213,7 +213,7 @@ TEST(DocumentEdits, OneUndoHistoryAcrossPanelStructureAndTextEdits) {
     open_scene(state, path);
     const std::string t0 = document_text(state.doc);
     // A value edit, as a panel makes it.
-    edit_scene(state, [](Scene& s) { std::get<Sphere>(s.primitives[1].shape).radius = 0.5; });
+    edit_scene(state, [](Scene& s) { shape_as<Sphere>(s.primitives[1].shape).radius = 0.5; });
     const std::string t1 = document_text(state.doc);
     ASSERT_NE(t1, t0);
     ASSERT_TRUE(add_light(state));
@@ -350,7 +350,7 @@ TEST(DocumentEdits, UnsavedFollowsTypingUndoRedoAndSaveAs) {
     const std::filesystem::path other = path.parent_path() / "other.jts";
     ASSERT_TRUE(save_scene_as(state, other, true)) << state.message;
     EXPECT_FALSE(has_unsaved_edits(state.doc)) << "saved, under another name";
-    edit_scene(state, [](Scene& s) { std::get<Sphere>(s.primitives[1].shape).radius = 0.5; });
+    edit_scene(state, [](Scene& s) { shape_as<Sphere>(s.primitives[1].shape).radius = 0.5; });
     EXPECT_TRUE(has_unsaved_edits(state.doc));
     undo(state);
     EXPECT_FALSE(has_unsaved_edits(state.doc));

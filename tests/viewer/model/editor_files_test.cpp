@@ -37,7 +37,7 @@ const std::string kHead =
 const std::string kBall = "sphere { center: <0, 0, -5>; radius: 1; }\n";
 
 double radius_of(const AppState& state, std::size_t i) {
-    return std::get<Sphere>(state.doc.scene.primitives.at(i).shape).radius;
+    return shape_as<Sphere>(state.doc.scene.primitives.at(i).shape).radius;
 }
 
 // The names the editor's file buttons show after the scene file's.
@@ -241,7 +241,7 @@ TEST_F(EditorFilesTest, SavingAPanelEditSaysWhichFilesWereWritten) {
     open();
     ASSERT_TRUE(state.doc.loaded) << format_diagnostics(state.doc);
     edit_scene(state, [](Scene& s) {
-        std::get<Sphere>(s.primitives[0].shape).radius = 1.5;
+        shape_as<Sphere>(s.primitives[0].shape).radius = 1.5;
         s.lights[0].position.x = 2;
     });
     ASSERT_TRUE(save_scene(state)) << state.message;
@@ -257,7 +257,7 @@ TEST_F(EditorFilesTest, APanelEditOfAnIncludedValueIsOneUndoStepAndSavesOnlyItsF
     write(ball, kBall);
     open();
     ASSERT_TRUE(state.doc.loaded) << format_diagnostics(state.doc);
-    edit_scene(state, [](Scene& s) { std::get<Sphere>(s.primitives[0].shape).radius = 1.5; });
+    edit_scene(state, [](Scene& s) { shape_as<Sphere>(s.primitives[0].shape).radius = 1.5; });
     undo(state);
     EXPECT_EQ(radius_of(state, 0), 1.0);
     EXPECT_FALSE(has_unsaved_work(state));

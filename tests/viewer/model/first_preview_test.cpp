@@ -4,6 +4,7 @@
 // reuses the prepared geometry. None of it may change the final pixels.
 
 #include "common/scenes.hpp"
+#include "common/scratch_dir.hpp"
 #include "jtracer/parser.hpp"
 #include "jtracer/render_job.hpp"
 #include "model/app_actions.hpp"
@@ -186,9 +187,64 @@ TEST(RenderReuse, MaterialEditReusesTheGeometryAndRendersTheEditedScene) {
     EXPECT_EQ(edited, render_image(prepare_scene(scene).value(), options_for(scene, false)))
         << "and the picture is that of the edited scene prepared from scratch";
 
-    std::get<Sphere>(scene.primitives[2].shape).radius *= 0.5;
+    shape_as<Sphere>(scene.primitives[2].shape).radius *= 0.5;
     render(scene);
     EXPECT_NE(renderer.prepared()->geometry, first->geometry) << "a shape edit builds anew";
+}
+
+// More distinct materials than a preparation copies (a colour an object, as
+// in a generated scene of 100,000 spheres): the render reads them where its
+// scene holds them, and a colour edit of one object still patches the
+// preparation rather than gathering every material again.
+TEST(RenderReuse, ManyColoursAreReadInPlaceAndAColourEditPatches) {
+    // The showcase's cameras and lights over a wall of small balls (no
+    // pattern: a pattern's pictures are parallel to a gathered list).
+    Scene scene = showcase_at(160, 90);
+    scene.primitives.clear();
+    constexpr int kColumns = 200, kRows = 100;
+    for (int i = 0; i < kColumns * kRows; ++i) {
+        Sphere sphere;
+        sphere.center = Vec3(-3.0 + 0.03 * (i % kColumns), 0.02 * (i / kColumns), 0.0);
+        sphere.radius = 0.012;
+        if (i == 0) {  // the one recoloured, large and in the middle of the picture
+            sphere.center = Vec3(0.0, 1.0, 0.5);
+            sphere.radius = 0.5;
+        }
+        Primitive p;
+        p.shape = sphere;
+        p.material.pigment = Colour(double(i) / (kColumns * kRows), 0.5, 0.5);
+        p.material.ambient = Colour(0.2, 0.2, 0.2);
+        p.material.diffuse = Colour(0.8, 0.8, 0.8);
+        scene.primitives.push_back(p);
+    }
+    const RenderOptions options = options_for(scene, true);
+    RenderController renderer;
+    auto render = [&](const Scene& s) {
+        renderer.start(s, options);
+        const auto deadline = Clock::now() + kTimeout;
+        while (!renderer.finished() && Clock::now() < deadline)
+            std::this_thread::sleep_for(std::chrono::milliseconds(2));
+        EXPECT_TRUE(renderer.finished());
+        Image8 image;
+        renderer.fetch(image);
+        return image;
+    };
+    const Image8 before = render(scene);
+    const auto first = renderer.prepared();
+    ASSERT_TRUE(first);
+    EXPECT_TRUE(first->scene) << "read in place, not copied";
+    EXPECT_TRUE(first->materials.empty());
+
+    scene.primitives[0].material.pigment = Colour(0.2, 0.7, 0.3);
+    const Image8 edited = render(scene);
+    const auto second = renderer.prepared();
+    ASSERT_TRUE(second);
+    EXPECT_EQ(second->materials_gathered, 1u) << "the scene was not prepared again as a whole";
+    EXPECT_EQ(second->geometry, first->geometry);
+    EXPECT_TRUE(second->scene);
+    EXPECT_NE(edited, before) << "the edit shows";
+    EXPECT_EQ(edited, render_image(prepare_scene(scene).value(), options_for(scene, false)))
+        << "the same bytes as the edited scene prepared from scratch";
 }
 
 TEST(RenderReuse, ColourEditInTheViewerPatchesThePreparedScene) {
@@ -251,6 +307,43 @@ TEST(RenderReuse, AnAdoptedPreparationRendersItsSceneWithoutPreparingAgain) {
     render(scene);
     EXPECT_NE(renderer.prepared(), *ahead.prepared.get());
     EXPECT_EQ(renderer.prepared()->geometry, (*ahead.prepared.get())->geometry);
+}
+
+// The loader copies an opened scene for the document beside its validation:
+// attempt_load hands the parsed scene over before validating it, and only
+// when the parse found no error.
+TEST(FirstPreview, AttemptLoadHandsOverTheParsedSceneBeforeValidating) {
+    const std::filesystem::path dir = make_scratch_dir("jt_first_preview_parsed");
+    const std::string settings = "render_settings { width: 8; height: 8; }\n";
+    const std::string sphere =
+        "scene { sphere { center: <0, 0, 0>; radius: 1; material { pigment: <1, 0, 0>; } } }\n";
+    // Parses, but the camera looks nowhere: an error only validation finds.
+    std::ofstream(dir / "invalid.jts")
+        << settings
+        << "cameras { perspective_camera { position: <0, 0, 0>; look_at: <0, 0, 0>; } }\n"
+        << sphere;
+    std::ofstream(dir / "broken.jts") << settings << "scene { sphere { center: <0, 0 } }\n";
+
+    std::vector<const Scene*> handed;
+    const ParsedScene note = [&](const std::shared_ptr<const Scene>& scene) {
+        handed.push_back(scene.get());
+    };
+    const LoadAttempt good = attempt_load(kScene, {}, note);
+    ASSERT_TRUE(good.ok);
+    ASSERT_EQ(handed.size(), 1u);
+    EXPECT_EQ(handed[0], good.scene.get()) << "the attempt's scene itself";
+
+    handed.clear();
+    const LoadAttempt invalid = attempt_load(dir / "invalid.jts", {}, note);
+    EXPECT_TRUE(invalid.read);
+    EXPECT_FALSE(invalid.ok);
+    EXPECT_EQ(handed.size(), 1u) << "handed over before the validation found the error";
+
+    handed.clear();
+    const LoadAttempt broken = attempt_load(dir / "broken.jts", {}, note);
+    EXPECT_TRUE(broken.read);
+    EXPECT_FALSE(broken.ok);
+    EXPECT_TRUE(handed.empty()) << "a text with parse errors is not handed over";
 }
 
 TEST(FirstPreview, AnOpenWithoutErrorsIsPreparedByTheLoader) {

@@ -32,7 +32,7 @@ void save_as_editor(const fs::path& path, const std::string& text) {
 }
 
 double radius_of_first(const AppState& state) {
-    return std::get<Sphere>(state.doc.scene.primitives.at(0).shape).radius;
+    return shape_as<Sphere>(state.doc.scene.primitives.at(0).shape).radius;
 }
 
 class ViewerIncludes : public ::testing::Test {
@@ -77,14 +77,14 @@ TEST_F(ViewerIncludes, SavingAnEditOfAnIncludedValueWritesThatFile) {
     save_as_editor(main, kMain);
     open_scene(state, main);
     ASSERT_TRUE(state.doc.loaded) << format_diagnostics(state.doc);
-    edit_scene(state, [](Scene& s) { std::get<Sphere>(s.primitives[0].shape).radius = 1.5; });
+    edit_scene(state, [](Scene& s) { shape_as<Sphere>(s.primitives[0].shape).radius = 1.5; });
     const auto saved = save_scene_in_place(state.doc);
     ASSERT_TRUE(saved) << saved.error().message;
     EXPECT_EQ(read_file(main), kMain);
     EXPECT_EQ(read_file(ball), "# ball\nsphere { center: <0, 0, -5>; radius: 1.5; }  # one\n");
     EXPECT_FALSE(scene_edited(state.doc));
     // Not into a copy: the included file would be changed under the original.
-    edit_scene(state, [](Scene& s) { std::get<Sphere>(s.primitives[0].shape).radius = 2; });
+    edit_scene(state, [](Scene& s) { shape_as<Sphere>(s.primitives[0].shape).radius = 2; });
     EXPECT_FALSE(save_scene_copy(state.doc, scratch.path() / "copy.jts"));
     EXPECT_FALSE(fs::exists(scratch.path() / "copy.jts"));
 }

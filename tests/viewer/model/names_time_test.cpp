@@ -67,10 +67,10 @@ TEST_F(ViewerNames, ADefineFromTheCommandLineIsAppliedOnOpenAndOnEveryReload) {
     state.doc.options.defines = {Define{"r", "2"}};
     open(kNamed);
     const auto radius = [&] {
-        return std::get<Sphere>(state.doc.scene.primitives[0].shape).radius;
+        return shape_as<Sphere>(state.doc.scene.primitives[0].shape).radius;
     };
     EXPECT_EQ(radius(), 2.0) << "--define r=2 wins over the file's r = 0.5";
-    EXPECT_EQ(std::get<Sphere>(state.doc.scene.primitives[0].shape).center, Vec3(0, 4, 0))
+    EXPECT_EQ(shape_as<Sphere>(state.doc.scene.primitives[0].shape).center, Vec3(0, 4, 0))
         << "lift = 2 * r sees the --define";
     bool noted = false;
     for (const Diagnostic& d : state.doc.parse_diagnostics)
@@ -82,7 +82,7 @@ TEST_F(ViewerNames, ADefineFromTheCommandLineIsAppliedOnOpenAndOnEveryReload) {
     write_file(state.doc.path, changed);
     reload_scene(state);
     ASSERT_TRUE(model.run_until_loaded(state));
-    EXPECT_EQ(std::get<Sphere>(state.doc.scene.primitives[1].shape).radius, 0.75) << "reloaded";
+    EXPECT_EQ(shape_as<Sphere>(state.doc.scene.primitives[1].shape).radius, 0.75) << "reloaded";
     EXPECT_EQ(radius(), 2.0) << "the reload is parsed with the --define too";
 }
 
@@ -149,7 +149,7 @@ TEST_F(ViewerNames, SavingNeverReplacesANameOrAnExpressionByALiteral) {
     const std::string before = read_file(state.doc.path);
     // What a panel cannot do (the field is read-only), a script tries.
     edit_scene(state,
-               [](Scene& s) { std::get<Sphere>(s.primitives[0].shape).center = Vec3(0, 3, 0); });
+               [](Scene& s) { shape_as<Sphere>(s.primitives[0].shape).center = Vec3(0, 3, 0); });
     EXPECT_FALSE(save_scene_in_place(state.doc));
     EXPECT_EQ(read_file(state.doc.path), before) << "the file is left as it was";
 }
@@ -191,14 +191,14 @@ TEST_F(ViewerNames, TheClockComputesTheSceneAgainKeepsPanelEditsAndNeverWritesTh
     open(kTimed);
     ASSERT_TRUE(state.doc.uses_clock);
     const auto center = [&] {
-        return std::get<Sphere>(state.doc.scene.primitives[0].shape).center;
+        return shape_as<Sphere>(state.doc.scene.primitives[0].shape).center;
     };
     EXPECT_EQ(center(), Vec3(-1, 0.5, 0));
     const std::size_t steps = state.history.undo.size();
-    edit_scene(state, [](Scene& s) { std::get<Sphere>(s.primitives[1].shape).radius = 99.25; });
+    edit_scene(state, [](Scene& s) { shape_as<Sphere>(s.primitives[1].shape).radius = 99.25; });
     ASSERT_TRUE(set_clock(state, 0.75));
     EXPECT_EQ(center(), Vec3(0.5, 0.5, 0)) << "computed at clock 0.75";
-    EXPECT_EQ(std::get<Sphere>(state.doc.scene.primitives[1].shape).radius, 99.25)
+    EXPECT_EQ(shape_as<Sphere>(state.doc.scene.primitives[1].shape).radius, 99.25)
         << "the panel edit stays";
     EXPECT_EQ(state.history.undo.size(), steps + 1) << "moving the clock is no undo step";
     EXPECT_EQ(read_file(state.doc.path), kTimed) << "nor an edit of the file";
@@ -210,7 +210,7 @@ TEST_F(ViewerNames, TheClockComputesTheSceneAgainKeepsPanelEditsAndNeverWritesTh
     EXPECT_NE(read_file(state.doc.path).find("<clock * 2 - 1, 0.5, 0>"), std::string::npos);
     // Undo brings the radius back, at the clock the slider stands at now.
     undo(state);
-    EXPECT_EQ(std::get<Sphere>(state.doc.scene.primitives[1].shape).radius, 99.5);
+    EXPECT_EQ(shape_as<Sphere>(state.doc.scene.primitives[1].shape).radius, 99.5);
     EXPECT_EQ(center(), Vec3(0.5, 0.5, 0)) << "undo does not move the clock back";
 }
 
@@ -222,8 +222,8 @@ TEST_F(ViewerNames, AReloadAndATextEditKeepTheClockTheSliderStandsAt) {
     write_file(state.doc.path, changed);
     reload_scene(state);
     ASSERT_TRUE(model.run_until_loaded(state));
-    EXPECT_EQ(std::get<Sphere>(state.doc.scene.primitives[0].shape).radius, 0.4);
-    EXPECT_EQ(std::get<Sphere>(state.doc.scene.primitives[0].shape).center, Vec3(1, 0.5, 0));
+    EXPECT_EQ(shape_as<Sphere>(state.doc.scene.primitives[0].shape).radius, 0.4);
+    EXPECT_EQ(shape_as<Sphere>(state.doc.scene.primitives[0].shape).center, Vec3(1, 0.5, 0));
 }
 
 TEST_F(ViewerNames, PlayLoopsTheClockFromZeroToOne) {
@@ -250,7 +250,7 @@ TEST_F(ViewerNames, AClockAtWhichTheSceneHasAnErrorLeavesTheLastGoodOne) {
     EXPECT_EQ(state.doc.options.clock, 0.0);
     EXPECT_NE(state.message.find("At clock 1 the scene has an error (3:"), std::string::npos)
         << state.message;
-    EXPECT_EQ(std::get<Sphere>(state.doc.scene.primitives[0].shape).radius, 1.0);
+    EXPECT_EQ(shape_as<Sphere>(state.doc.scene.primitives[0].shape).radius, 1.0);
 }
 
 }  // namespace

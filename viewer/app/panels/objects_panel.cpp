@@ -22,7 +22,7 @@ namespace jt::view {
 namespace {
 
 bool shape_editor(Shape& shape, const SceneDocument& doc, const BlockSource* source) {
-    return std::visit(
+    return visit_shape(
         [&](auto& s) {
             return edit_properties(
                 s, doc, [&](std::string_view name) { return field_source(doc, source, name); });
@@ -273,7 +273,7 @@ void objects_panel(AppState& state) {
     shared_text_line(state.doc, source);
     if (shape_editor(p.shape, state.doc, source))
         note_block_edited(state.history, state.doc, block);
-    if (const auto* mesh = std::get_if<Mesh>(&p.shape)) {
+    if (const auto* mesh = shape_if<Mesh>(&p.shape)) {
         model_file_row(state, *mesh, i, command);
         mesh_figure_rows(state, selected);
     }

@@ -55,6 +55,13 @@ Expected<std::shared_ptr<const PreparedScene>> prepare_scene(
 Expected<std::shared_ptr<const PreparedScene>> prepare_scene(
     Scene&& scene, std::shared_ptr<const PreparedScene> previous = nullptr);
 
+// The same for a scene shared with its caller, who never changes it (the
+// viewer's scenes are const once made): kept and read in place as a scene
+// handed over is, without a copy of 100,000 distinct materials before the
+// first preview. Null: as an empty scene.
+Expected<std::shared_ptr<const PreparedScene>> prepare_scene(
+    std::shared_ptr<const Scene> scene, std::shared_ptr<const PreparedScene> previous = nullptr);
+
 // Prepares `scene` after an edit of `before`, the scene `previous` was
 // prepared from. When the edit changed materials only (of one object or many),
 // besides lights, cameras or settings, the result shares everything else with
@@ -65,6 +72,14 @@ Expected<std::shared_ptr<const PreparedScene>> prepare_scene(
 // prepare_scene(scene, previous). The image is the same either way.
 Expected<std::shared_ptr<const PreparedScene>> prepare_scene_edit(
     const Scene& before, const Scene& scene, std::shared_ptr<const PreparedScene> previous);
+
+// The same for a shared `scene` (as prepare_scene's above). When `previous`
+// reads its materials in place, a material edit is patched by reading them in
+// place from `scene` instead: nothing is gathered, and the result holds
+// `scene`.
+Expected<std::shared_ptr<const PreparedScene>> prepare_scene_edit(
+    const Scene& before, std::shared_ptr<const Scene> scene,
+    std::shared_ptr<const PreparedScene> previous);
 
 struct RenderOptions {
     int width = 0;  // final image size in pixels, > 0

@@ -41,18 +41,18 @@ GeometryDigest digest_geometry(const Scene& scene) {
     Digester d;
     for (const Primitive& p : primitives) {
         d.add(static_cast<std::uint64_t>(p.shape.index()));
-        if (const auto* s = std::get_if<Sphere>(&p.shape)) {
+        if (const auto* s = shape_if<Sphere>(&p.shape)) {
             d.add(s->center);
             d.add(s->radius);
-        } else if (const auto* c = std::get_if<Cylinder>(&p.shape)) {
+        } else if (const auto* c = shape_if<Cylinder>(&p.shape)) {
             d.add(c->radius);
             d.add(c->height);
-        } else if (const auto* l = std::get_if<Plane>(&p.shape)) {
+        } else if (const auto* l = shape_if<Plane>(&p.shape)) {
             d.add(l->normal);
             d.add(l->distance);
-        } else if (const auto* t = std::get_if<Triangle>(&p.shape)) {
+        } else if (const auto* t = shape_if<Triangle>(&p.shape)) {
             for (const Vec3* v : {&t->a, &t->b, &t->c, &t->uv_a, &t->uv_b, &t->uv_c}) d.add(*v);
-        } else if (const auto* m = std::get_if<Mesh>(&p.shape)) {
+        } else if (const auto* m = shape_if<Mesh>(&p.shape)) {
             d.add(m->file);
             d.add(m->shading);
             d.add(m->materials);  // "file" reads another model

@@ -62,9 +62,9 @@ Uv plane_uv(const Plane& plane, double map_size, const Vec3& p) {
 }
 
 Uv shape_uv(const Shape& shape, double map_size, const Vec3& p, Uv surface) {
-    if (const auto* s = std::get_if<Sphere>(&shape)) return sphere_uv(*s, p);
-    if (const auto* c = std::get_if<Cylinder>(&shape)) return cylinder_uv(*c, p);
-    if (const auto* l = std::get_if<Plane>(&shape)) return plane_uv(*l, map_size, p);
+    if (const auto* s = shape_if<Sphere>(&shape)) return sphere_uv(*s, p);
+    if (const auto* c = shape_if<Cylinder>(&shape)) return cylinder_uv(*c, p);
+    if (const auto* l = shape_if<Plane>(&shape)) return plane_uv(*l, map_size, p);
     return surface;
 }
 

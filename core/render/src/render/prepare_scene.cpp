@@ -165,11 +165,11 @@ Expected<std::shared_ptr<Geometry>> build_geometry(const Scene& scene) {
             transform = std::get<ObjectTransform>(placed);
         }
         auto source = static_cast<std::uint32_t>(i);
-        if (const auto* sphere = std::get_if<Sphere>(&p.shape))
+        if (const auto* sphere = shape_if<Sphere>(&p.shape))
             add_sphere(*g, *sphere, p.transforms.empty() ? nullptr : &transform, source);
-        else if (const auto* cylinder = std::get_if<Cylinder>(&p.shape))
+        else if (const auto* cylinder = shape_if<Cylinder>(&p.shape))
             add_cylinder(*g, *cylinder, transform, source);
-        else if (const auto* plane = std::get_if<Plane>(&p.shape))
+        else if (const auto* plane = shape_if<Plane>(&p.shape))
             add_plane(*g, *plane, transform, source);
     }
     std::size_t bounded = g->spheres.size() + g->shapes.size();
@@ -407,6 +407,13 @@ Expected<std::shared_ptr<const PreparedScene>> prepare_scene(
     auto owned = std::make_shared<const Scene>(std::move(scene));
     const Scene& held = *owned;
     return prepare(held, std::move(owned), std::move(previous));
+}
+
+Expected<std::shared_ptr<const PreparedScene>> prepare_scene(
+    std::shared_ptr<const Scene> scene, std::shared_ptr<const PreparedScene> previous) {
+    if (!scene) scene = std::make_shared<const Scene>();
+    const Scene& held = *scene;
+    return prepare(held, std::move(scene), std::move(previous));
 }
 
 }  // namespace jt

@@ -117,7 +117,8 @@ struct Geometry {
 
 struct PreparedScene {
     std::shared_ptr<const Geometry> geometry;
-    // The scene itself, when its caller handed it over (prepare_scene(Scene&&)),
+    // The scene itself, when its caller handed it over (prepare_scene(Scene&&))
+    // or shares it unchanging (prepare_scene(std::shared_ptr<const Scene>)),
     // no material has a pattern and a copy would be large: each primitive's
     // material is then read where the scene holds it, and `materials` and
     // `material_of` stay empty. A copy costs 216 bytes a distinct material

@@ -78,7 +78,7 @@ MeshInfo mesh_info(const Scene& scene, const Primitive& primitive, const Mesh& m
 }
 
 Expected<MeshInfo> mesh_info(const Scene& scene, const Primitive& primitive) {
-    const auto* mesh = std::get_if<Mesh>(&primitive.shape);
+    const auto* mesh = shape_if<Mesh>(&primitive.shape);
     if (!mesh) return Error{"not a mesh"};
     const Expected<std::shared_ptr<const Model>> model = shared_model(
         asset_path(scene, mesh->file), scene.asset_folder, mesh->materials == kFileMaterials);
@@ -100,9 +100,9 @@ Expected<SceneInfo> scene_info(const Scene& scene) {
             ++info.left_out;
             continue;
         }
-        if (std::holds_alternative<Plane>(p.shape)) {
+        if (shape_is<Plane>(p.shape)) {
             ++info.unbounded;
-        } else if (const auto* mesh = std::get_if<Mesh>(&p.shape)) {
+        } else if (const auto* mesh = shape_if<Mesh>(&p.shape)) {
             const std::filesystem::path path = asset_path(scene, mesh->file);
             const bool file_materials = mesh->materials == kFileMaterials;
             auto [at, fresh] = models.try_emplace({path, file_materials});

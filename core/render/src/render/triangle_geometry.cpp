@@ -258,8 +258,8 @@ Expected<std::unique_ptr<TriangleGeometry>> build_triangle_geometry(const Scene&
     std::map<std::pair<std::string, bool>, std::uint32_t> model_of_file;
     for (std::size_t i = 0; i < scene.primitives.size(); ++i) {
         const Primitive& p = scene.primitives[i];
-        const auto* triangle = std::get_if<Triangle>(&p.shape);
-        const auto* mesh = std::get_if<Mesh>(&p.shape);
+        const auto* triangle = shape_if<Triangle>(&p.shape);
+        const auto* mesh = shape_if<Mesh>(&p.shape);
         if (!triangle && !mesh) continue;
         ObjectTransform transform;
         if (!p.transforms.empty()) {

@@ -9,7 +9,10 @@
 
 #include <glm/vec3.hpp>
 
+#include "jtracer/boxed.hpp"
+
 #include <cmath>
+#include <cstddef>
 #include <optional>
 #include <string>
 #include <string_view>
@@ -138,7 +141,87 @@ struct Mesh {
     bool operator==(const Mesh&) const = default;
 };
 
-using Shape = std::variant<Sphere, Plane, Cylinder, Triangle, Mesh>;
+// Triangles and meshes are boxed so that a shape takes 40 bytes, not the 152
+// a triangle's corners and texture coordinates would give every sphere.
+using Shape = std::variant<Sphere, Plane, Cylinder, Boxed<Triangle>, Boxed<Mesh>>;
+
+namespace shape_detail {
+template <class T>
+struct Stored {
+    using type = T;
+};
+template <>
+struct Stored<Triangle> {
+    using type = Boxed<Triangle>;
+};
+template <>
+struct Stored<Mesh> {
+    using type = Boxed<Mesh>;
+};
+template <class T>
+struct Unboxed {
+    using type = T;
+};
+template <class T>
+struct Unboxed<Boxed<T>> {
+    using type = T;
+};
+template <class T>
+constexpr const T& unbox(const T& shape) {
+    return shape;
+}
+template <class T>
+constexpr T& unbox(T& shape) {
+    return shape;
+}
+template <class T>
+constexpr const T& unbox(const Boxed<T>& shape) {
+    return *shape;
+}
+template <class T>
+constexpr T& unbox(Boxed<T>& shape) {
+    return *shape;
+}
+}  // namespace shape_detail
+
+// The I-th kind of shape, as callers name it (Triangle, not Boxed<Triangle>).
+template <std::size_t I>
+using ShapeAlternative = typename shape_detail::Unboxed<std::variant_alternative_t<I, Shape>>::type;
+
+// std::get_if, std::get, std::holds_alternative and std::visit for a Shape,
+// seeing through the boxes: callers name Triangle, never Boxed<Triangle>.
+template <class T>
+const T* shape_if(const Shape* shape) {
+    const auto* stored = std::get_if<typename shape_detail::Stored<T>::type>(shape);
+    return stored != nullptr ? &shape_detail::unbox(*stored) : nullptr;
+}
+template <class T>
+T* shape_if(Shape* shape) {
+    auto* stored = std::get_if<typename shape_detail::Stored<T>::type>(shape);
+    return stored != nullptr ? &shape_detail::unbox(*stored) : nullptr;
+}
+template <class T>
+const T& shape_as(const Shape& shape) {
+    return shape_detail::unbox(std::get<typename shape_detail::Stored<T>::type>(shape));
+}
+template <class T>
+T& shape_as(Shape& shape) {
+    return shape_detail::unbox(std::get<typename shape_detail::Stored<T>::type>(shape));
+}
+template <class T>
+bool shape_is(const Shape& shape) {
+    return std::holds_alternative<typename shape_detail::Stored<T>::type>(shape);
+}
+template <class Visitor>
+constexpr decltype(auto) visit_shape(Visitor&& visitor, const Shape& shape) {
+    return std::visit(
+        [&](const auto& s) -> decltype(auto) { return visitor(shape_detail::unbox(s)); }, shape);
+}
+template <class Visitor>
+constexpr decltype(auto) visit_shape(Visitor&& visitor, Shape& shape) {
+    return std::visit([&](auto& s) -> decltype(auto) { return visitor(shape_detail::unbox(s)); },
+                      shape);
+}
 
 struct Primitive {
     Shape shape;

@@ -354,8 +354,8 @@ constexpr const BlockSchema<Material>& schema_of<Material>() {
 
 // "sphere", "plane", "cylinder", "triangle" or "mesh": the keyword of a primitive's shape.
 constexpr std::string_view keyword_of(const Shape& shape) {
-    return std::visit([](const auto& s) { return schema_of<std::decay_t<decltype(s)>>().keyword; },
-                      shape);
+    return visit_shape([](const auto& s) { return schema_of<std::decay_t<decltype(s)>>().keyword; },
+                       shape);
 }
 
 // --- the file's structure (docs/language.md §3) ----------------------------
@@ -367,8 +367,7 @@ inline constexpr std::string_view kSceneKeyword = "scene";
 namespace schema_detail {
 template <std::size_t... I>
 constexpr auto shape_keywords(std::index_sequence<I...>) {
-    return std::array<std::string_view, sizeof...(I)>{
-        schema_of<std::variant_alternative_t<I, Shape>>().keyword...};
+    return std::array<std::string_view, sizeof...(I)>{schema_of<ShapeAlternative<I>>().keyword...};
 }
 template <std::size_t... N>
 constexpr auto joined(const std::array<std::string_view, N>&... lists) {

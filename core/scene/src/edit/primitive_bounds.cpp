@@ -11,13 +11,13 @@ namespace {
 
 // The points whose box holds the shape, in object space.
 std::vector<Vec3> extent_points(const Shape& shape) {
-    if (const auto* s = std::get_if<Sphere>(&shape)) {
+    if (const auto* s = shape_if<Sphere>(&shape)) {
         const Vec3 r(s->radius);
         return {s->center - r, s->center + r};
     }
-    if (const auto* c = std::get_if<Cylinder>(&shape))
+    if (const auto* c = shape_if<Cylinder>(&shape))
         return {Vec3(-c->radius, 0.0, -c->radius), Vec3(c->radius, c->height, c->radius)};
-    if (const auto* t = std::get_if<Triangle>(&shape)) return {t->a, t->b, t->c};
+    if (const auto* t = shape_if<Triangle>(&shape)) return {t->a, t->b, t->c};
     return {};
 }
 

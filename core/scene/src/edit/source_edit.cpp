@@ -352,9 +352,9 @@ void write_primitive(SourceWriter& w, const BlockSource& block, const Primitive&
         w.fail("a primitive changed its kind; that cannot be saved in place");
         return;
     }
-    std::visit(
+    visit_shape(
         [&](const auto& before) {
-            const auto& after = std::get<std::decay_t<decltype(before)>>(b.shape);
+            const auto& after = shape_as<std::decay_t<decltype(before)>>(b.shape);
             for (const Change& change : changes(before, after, w.failure())) w.set(block, change);
         },
         a.shape);

@@ -164,7 +164,7 @@ NamedFiles named_files(const Scene& scene) {
     };
     add(files.images, scene.settings.background_map);
     for (const Primitive& p : scene.primitives) {
-        if (const auto* mesh = std::get_if<Mesh>(&p.shape)) add(files.models, mesh->file);
+        if (const auto* mesh = shape_if<Mesh>(&p.shape)) add(files.models, mesh->file);
         add(files.images, p.material.image_map);
     }
     return files;

@@ -50,7 +50,7 @@ std::optional<Shape> shape_of_keyword(std::string_view word) {
     if constexpr (I == std::variant_size_v<Shape>) {
         return std::nullopt;
     } else {
-        using Alternative = std::variant_alternative_t<I, Shape>;
+        using Alternative = ShapeAlternative<I>;
         if (same_name(word, schema_of<Alternative>().keyword)) return Shape(Alternative{});
         return shape_of_keyword<I + 1>(word);
     }

@@ -160,7 +160,7 @@ void PropertyReader::apply(Camera& camera, OpenBlock& block, const Property& p) 
     apply_block(camera, block, p);
 }
 void PropertyReader::apply(Shape& shape, OpenBlock& block, const Property& p) {
-    std::visit([&](auto& s) { apply_block(s, block, p); }, shape);
+    visit_shape([&](auto& s) { apply_block(s, block, p); }, shape);
 }
 void PropertyReader::apply(Material& material, OpenBlock& block, const Property& p) {
     apply_block(material, block, p);

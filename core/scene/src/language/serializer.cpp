@@ -22,7 +22,7 @@ std::vector<std::string> Writer::lines() const {
 
 void write_primitive(Writer& w, const Primitive& p) {
     w.open(keyword_of(p.shape));
-    std::visit([&](const auto& shape) { write_properties(w, shape); }, p.shape);
+    visit_shape([&](const auto& shape) { write_properties(w, shape); }, p.shape);
     write_block(w, p.material);
     if (!p.transforms.empty()) write_transform(w, p.transforms);
     w.close();

@@ -191,10 +191,10 @@ void Original::write_primitive(Writer& w, const Primitive& now, const Primitive*
         return;
     }
     w.open(keyword_of(now.shape));
-    std::visit(
+    visit_shape(
         [&](const auto& shape) {
             using Shape = std::decay_t<decltype(shape)>;
-            const Shape& was = std::get<Shape>(then->shape);
+            const Shape& was = shape_as<Shape>(then->shape);
             lang::write_properties(w, shape, [&](const PropertySpec<Shape>& property) {
                 return kept(property, shape, was, properties_of(source(), *block));
             });

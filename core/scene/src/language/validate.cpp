@@ -288,7 +288,7 @@ class Validator {
             const auto which = [&] {
                 return std::string(keyword_of(p.shape)) + " " + std::to_string(i + 1) + ": ";
             };
-            std::visit(
+            visit_shape(
                 [&](const auto& shape) {
                     check_primitive_values(
                         shape, which, [&](std::string_view name) { return where(block, name); });
@@ -306,9 +306,9 @@ class Validator {
             }
             check_transforms(p, block);
             check_image_map(p.material, block);
-            if (const auto* triangle = std::get_if<Triangle>(&p.shape))
+            if (const auto* triangle = shape_if<Triangle>(&p.shape))
                 check_triangle(*triangle, block, which);
-            if (const auto* mesh = std::get_if<Mesh>(&p.shape)) check_mesh(*mesh, block, which());
+            if (const auto* mesh = shape_if<Mesh>(&p.shape)) check_mesh(*mesh, block, which());
         }
     }
 
