@@ -131,6 +131,10 @@ std::string check_scene_text(std::string_view text) {
     if (!parsed.ok()) return {};
     std::vector<Diagnostic> checks = validate_scene(parsed.scene, parsed.source);
     if (std::string e = check_located(checks, text, "validate", files); !e.empty()) return e;
+    // A parsed scene's values were checked by the parser: the checks that take
+    // them as parsed find the same.
+    if (validate_scene(parsed.scene, parsed.source, {.primitives_as_parsed = true}) != checks)
+        return "validate: taking the primitives as parsed finds other diagnostics";
 
     const std::string canonical = serialize_scene(parsed.scene);
     ParseResult reparsed = parse_scene(canonical);

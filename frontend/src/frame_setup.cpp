@@ -1,5 +1,6 @@
 #include "jtracer/frontend/frame_setup.hpp"
 
+#include "jtracer/parallel_chunks.hpp"
 #include "jtracer/scene_file.hpp"
 
 namespace jt::frontend {
@@ -19,6 +20,11 @@ Expected<void> apply_overrides(const RenderFlags& flags, Scene& scene) {
     return {};
 }
 
+// `as_parsed`: the primitives are as the parser made them, which only a set-up
+// that read the file itself can say (the overrides change settings alone).
+FrameSetup set_up_loaded(std::string_view program, const RenderFlags& flags, LoadedScene loaded,
+                         const std::optional<FrameRegion>& region, bool as_parsed);
+
 }  // namespace
 
 std::string camera_names(const Scene& scene) {
@@ -37,11 +43,18 @@ FrameSetup set_up_frame(std::string_view program, const RenderFlags& flags,
         setup.message = std::string(program) + ": " + read.error().message + "\n";
         return setup;
     }
-    return set_up_frame(program, flags, std::move(*read), region);
+    return set_up_loaded(program, flags, std::move(*read), region, true);
 }
 
 FrameSetup set_up_frame(std::string_view program, const RenderFlags& flags, LoadedScene loaded,
                         const std::optional<FrameRegion>& region) {
+    return set_up_loaded(program, flags, std::move(loaded), region, false);
+}
+
+namespace {
+
+FrameSetup set_up_loaded(std::string_view program, const RenderFlags& flags, LoadedScene loaded,
+                         const std::optional<FrameRegion>& region, bool as_parsed) {
     FrameSetup setup;
     const std::string prefix = std::string(program) + ": ";
     auto fail = [&](int code, const std::string& message) {
@@ -52,7 +65,10 @@ FrameSetup set_up_frame(std::string_view program, const RenderFlags& flags, Load
     if (Expected<void> applied = apply_overrides(flags, loaded.parsed.scene); !applied)
         return fail(exit_usage, applied.error().message);
     // Quiet drops warnings: locating them would only cost another parse.
-    std::vector<Diagnostic> diagnostics = check_scene(loaded, {.locate_warnings = !flags.quiet});
+    std::vector<Diagnostic> diagnostics =
+        check_scene(loaded, {.locate_warnings = !flags.quiet,
+                             .validation = {.run_chunks = parallel_chunks(flags.threads),
+                                            .primitives_as_parsed = as_parsed}});
     name_setting_flags(diagnostics);
     const bool errors = has_errors(diagnostics);
     if (flags.quiet && !errors) diagnostics.clear();  // quiet drops warnings, never errors
@@ -79,5 +95,7 @@ FrameSetup set_up_frame(std::string_view program, const RenderFlags& flags, Load
     setup.format = flags.output ? format_from_extension(setup.output) : ImageFormat::bmp;
     return setup;
 }
+
+}  // namespace
 
 }  // namespace jt::frontend

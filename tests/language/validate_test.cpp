@@ -4,6 +4,10 @@
 
 #include "test_util.hpp"
 
+#include <algorithm>
+#include <atomic>
+#include <thread>
+
 namespace jt {
 namespace {
 
@@ -193,6 +197,106 @@ TEST(Validate, CatchesOutOfRangeValuesInScenesBuiltInCode) {
         "0:0: error: cylinder 3: 'radius' must be greater than 0 and at most 1e+09, got 0\n"
         "0:0: error: cylinder 3: 'height' must be greater than 0 and at most 1e+09, got 0\n"
         "0:0: error: cylinder 3: 'specular_k' must be greater than 0 and at most 1e+09, got 0");
+}
+
+// Chunks run in reverse order, as a pool may finish them.
+void run_backwards(std::size_t count, const std::function<void(std::size_t)>& work) {
+    for (std::size_t i = count; i-- > 0;) work(i);
+}
+
+// Chunks shared by three threads, each taking the next one left.
+void run_on_threads(std::size_t count, const std::function<void(std::size_t)>& work) {
+    std::atomic<std::size_t> next{0};
+    const auto take = [&] {
+        for (std::size_t i = next++; i < count; i = next++) work(i);
+    };
+    std::vector<std::thread> threads;
+    for (int t = 0; t < 3; ++t) threads.emplace_back(take);
+    for (std::thread& t : threads) t.join();
+}
+
+// A large scene with findings of every kind about its primitives, spread over
+// many chunks: values out of range (as code may set them), a zero-area
+// triangle, a flattening scale, an unreadable image map and model (each file
+// read once whichever chunk meets it first).
+TEST(Validate, ChunksOnThreadsFindTheSameAsOnePass) {
+    constexpr int kinds = 6;
+    constexpr int primitives = 40000;
+    std::string text =
+        "render_settings { width: 40; height: 20; }\n"
+        "cameras { perspective_camera { aspect: 2; } }\n"
+        "scene {\n";
+    for (int i = 0; i < primitives; ++i) {
+        switch (i % kinds) {
+            case 0:
+                text += "sphere { center: <" + std::to_string(i) + ", 0, 0>; radius: 1; }\n";
+                break;
+            case 1:
+                text += "triangle { a: <0, 0, 0>; b: <1, 1, 1>; c: <2, 2, 2>; }\n";
+                break;
+            case 2:
+                text += "cylinder { transform { scale: <1, 0, 1>; } }\n";
+                break;
+            case 3:
+                text += "sphere { material { image_map: \"nowhere.png\"; } }\n";
+                break;
+            case 4:
+                text += "mesh { file: \"nowhere.obj\"; }\n";
+                break;
+            default:
+                text += "plane { normal: <0, 1, 0>; }\n";
+        }
+    }
+    text += "}\n";
+    ParseResult r = test::parse_clean(text);
+    ASSERT_EQ(r.scene.primitives.size(), std::size_t{primitives});
+    for (std::size_t i = 0; i < r.scene.primitives.size(); i += 7) {
+        r.scene.primitives[i].material.reflection = 2.0;
+        if (auto* sphere = std::get_if<Sphere>(&r.scene.primitives[i].shape)) sphere->radius = -1.0;
+    }
+    const std::vector<Diagnostic> one_pass = validate_scene(r.scene, r.source);
+    ASSERT_GT(one_pass.size(), std::size_t{primitives / 2}) << brief(one_pass).substr(0, 2000);
+    const std::string all = brief(one_pass);
+    for (const char* finding :
+         {"'reflection' 2 is outside", "'radius' must be", "zero area", "flattens the primitive",
+          "image_map: cannot read", "mesh 39995: cannot read"})
+        EXPECT_NE(all.find(finding), std::string::npos) << finding;
+    EXPECT_TRUE(one_pass == validate_scene(r.scene, r.source, {.run_chunks = run_backwards}));
+    EXPECT_TRUE(one_pass == validate_scene(r.scene, r.source, {.run_chunks = run_on_threads}));
+    // Unlocated, as check_scene validates a scene loaded without its map first.
+    EXPECT_TRUE(validate_scene(r.scene, SceneSource{}) ==
+                validate_scene(r.scene, SceneSource{}, {.run_chunks = run_on_threads}));
+}
+
+// A scene as parsed holds no value out of its range but a default: the checks
+// that take it as parsed find what the whole checks find, the mesh left
+// without its file among them, at the same places.
+TEST(Validate, PrimitivesAsParsedFindTheSame) {
+    const std::string text =
+        "render_settings { width: 40; height: 20; }\n"
+        "cameras { perspective_camera { aspect: 2; } }\n"
+        "scene {\n"
+        "  sphere { center: <1, 2, 3>; radius: 1e9;\n"
+        "    material { pigment: <1, 0, 0.5>; reflection: 1; transmission: 1; ior: 3;\n"
+        "      specular_k: 1e9; checker: <0, 0, 0>; checker_size: 0.001; } }\n"
+        "  mesh { }\n"
+        "  cylinder { radius: 2; height: 3; transform { scale: <1, 0, 1>; xrotate: -720; } }\n"
+        "  triangle { a: <0, 0, 0>; b: <1, 1, 1>; c: <2, 2, 2>; uv_a: <1, 1, 0>; }\n"
+        "  plane { normal: <0, 0, -1>; distance: -1e9; }\n"
+        "  mesh { shading: \"flat\"; }\n"
+        "}\n";
+    const ParseResult r = test::parse_clean(text);
+    const std::vector<Diagnostic> all = validate_scene(r.scene, r.source);
+    EXPECT_EQ(brief(all),
+              "7:3: error: mesh 2: 'file' must not be empty\n"
+              "8:48: warning: 'scale' <1, 0, 1> has a zero component: it flattens the primitive "
+              "to nothing; it is left out\n"
+              "9:3: warning: triangle 4: its corners <0, 0, 0>, <1, 1, 1>, <2, 2, 2> lie on one "
+              "line (zero area): it is left out\n"
+              "11:3: error: mesh 6: 'file' must not be empty");
+    EXPECT_TRUE(all == validate_scene(r.scene, r.source, {.primitives_as_parsed = true}));
+    EXPECT_TRUE(validate_scene(r.scene, SceneSource{}) ==
+                validate_scene(r.scene, SceneSource{}, {.primitives_as_parsed = true}));
 }
 
 }  // namespace

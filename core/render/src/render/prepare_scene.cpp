@@ -8,11 +8,16 @@
 #include "render/shadow_spheres.hpp"
 #include "render/user_geometry.hpp"
 
+#include <tbb/blocked_range.h>
+#include <tbb/parallel_for.h>
 #include <tbb/parallel_invoke.h>
+#include <tbb/parallel_reduce.h>
 #include <glm/common.hpp>
 #include <glm/geometric.hpp>
 
 #include <algorithm>
+#include <array>
+#include <atomic>
 #include <cmath>
 #include <limits>
 #include <optional>
@@ -85,6 +90,12 @@ void sort_spheres_along_a_curve(std::vector<WorldSphere>& spheres) {
 // whole scene. Past it, the materials are read where the scene holds them.
 constexpr std::size_t max_copied_materials = (std::size_t{4} << 20) / sizeof(Material);
 
+// The world spheres' boxes and their magnitude are worked out on every core
+// in ranges of at least this many spheres: a sphere's box takes about 70 ns,
+// so a range is worth handing to another thread, and a million spheres make
+// enough of them for any number of threads.
+constexpr std::size_t spheres_a_task = 16384;
+
 void add_sphere(Geometry& g, const Sphere& sphere, const ObjectTransform* transform,
                 std::uint32_t source) {
     if (!all_finite(sphere.center) || !(sphere.radius > 0.0) || !std::isfinite(sphere.radius))
@@ -154,24 +165,32 @@ void add_bounding_sphere(TransformedShape& s) {
 }
 
 // The largest coordinate any box reaches: float rays that travel this far
-// drift from their double originals by about 2^-24 of it.
+// drift from their double originals by about 2^-24 of it. A maximum is the
+// same however its values are grouped, so the spheres' share is taken in
+// parallel.
 double scene_magnitude(const Geometry& g) {
-    double m = 0.0;
-    auto grow = [&m](const Vec3& v) {
+    auto grow = [](double& m, const Vec3& v) {
         m = std::max({m, std::abs(v.x), std::abs(v.y), std::abs(v.z)});
     };
-    for (const WorldSphere& s : g.spheres) grow(glm::abs(s.center) + Vec3(s.radius));
+    double m = tbb::parallel_reduce(
+        tbb::blocked_range<std::size_t>(0, g.spheres.size(), spheres_a_task), 0.0,
+        [&](const tbb::blocked_range<std::size_t>& range, double most) {
+            for (std::size_t i = range.begin(); i != range.end(); ++i)
+                grow(most, glm::abs(g.spheres[i].center) + Vec3(g.spheres[i].radius));
+            return most;
+        },
+        [](double a, double b) { return std::max(a, b); });
+    const auto grow_m = [&](const Vec3& v) { grow(m, v); };
     for (const TransformedShape& s : g.shapes) {
-        grow(Vec3(s.bounds.lower_x, s.bounds.lower_y, s.bounds.lower_z));
-        grow(Vec3(s.bounds.upper_x, s.bounds.upper_y, s.bounds.upper_z));
+        grow_m(Vec3(s.bounds.lower_x, s.bounds.lower_y, s.bounds.lower_z));
+        grow_m(Vec3(s.bounds.upper_x, s.bounds.upper_y, s.bounds.upper_z));
     }
     return m;
 }
 
-Expected<std::shared_ptr<const Geometry>> build_geometry(const Scene& scene,
-                                                         const GeometryDigest& digest) {
+// Without its digest, which the caller works out beside the build.
+Expected<std::shared_ptr<Geometry>> build_geometry(const Scene& scene) {
     auto g = std::make_shared<Geometry>();
-    g->digest = digest;
     auto triangles = build_triangle_geometry(scene);
     if (!triangles) return triangles.error();
     g->triangles = std::move(*triangles);
@@ -198,7 +217,7 @@ Expected<std::shared_ptr<const Geometry>> build_geometry(const Scene& scene,
     std::size_t bounded = g->spheres.size() + g->shapes.size();
     if (bounded <= brute_force_limit) {
         for (TransformedShape& s : g->shapes) add_bounding_sphere(s);
-        return std::shared_ptr<const Geometry>(std::move(g));
+        return g;
     }
 
     if (bounded > fast_build_threshold) sort_spheres_along_a_curve(g->spheres);
@@ -214,11 +233,27 @@ Expected<std::shared_ptr<const Geometry>> build_geometry(const Scene& scene,
         add_bounding_sphere(s);  // for the direction tables' lists, which have no boxes
     }
     g->sphere_boxes.resize(g->spheres.size());
-    for (std::uint32_t i = 0; i < g->spheres.size(); ++i) {
-        const RTCBounds b = padded_float_bounds(
-            sphere_box(g->spheres[i].center, g->spheres[i].radius), g->bounds_slack);
-        g->sphere_boxes[i] = {b.lower_x, b.lower_y, b.lower_z, b.upper_x, b.upper_y, b.upper_z};
-        if (!within_reach(b)) g->beyond_bvh.push_back(i);
+    std::atomic<bool> spheres_beyond{false};
+    tbb::parallel_for(tbb::blocked_range<std::size_t>(0, g->spheres.size(), spheres_a_task),
+                      [&](const tbb::blocked_range<std::size_t>& range) {
+                          bool beyond = false;
+                          for (std::size_t i = range.begin(); i != range.end(); ++i) {
+                              const RTCBounds b = padded_float_bounds(
+                                  sphere_box(g->spheres[i].center, g->spheres[i].radius),
+                                  g->bounds_slack);
+                              g->sphere_boxes[i] = {b.lower_x, b.lower_y, b.lower_z,
+                                                    b.upper_x, b.upper_y, b.upper_z};
+                              beyond = beyond || !within_reach(b);
+                          }
+                          if (beyond) spheres_beyond.store(true, std::memory_order_relaxed);
+                      });
+    // Rare (spheres past float range), so listed in order afterwards.
+    if (spheres_beyond.load(std::memory_order_relaxed)) {
+        for (std::uint32_t i = 0; i < g->spheres.size(); ++i) {
+            const std::array<float, 6>& b = g->sphere_boxes[i];
+            if (!within_reach(RTCBounds{b[0], b[1], b[2], 0.0f, b[3], b[4], b[5], 0.0f}))
+                g->beyond_bvh.push_back(i);
+        }
     }
     for (std::uint32_t i = 0; i < g->shapes.size(); ++i)
         if (!within_reach(g->shapes[i].bounds)) g->beyond_bvh.push_back(i | shape_flag);
@@ -239,7 +274,7 @@ Expected<std::shared_ptr<const Geometry>> build_geometry(const Scene& scene,
     g->sphere_boxes = {};
     g->crowded = spheres_overlap_heavily(g->spheres);
     if (g->crowded) build_shadow_spheres(*g, magnitude, quality);
-    return std::shared_ptr<const Geometry>(std::move(g));
+    return g;
 }
 
 // Each primitive's shape and world-to-object map when any material has a
@@ -329,21 +364,24 @@ Expected<std::shared_ptr<const PreparedScene>> prepare(
     // Checked here, before any work: build_geometry needs the device.
     if (!embree_device()) return Error{embree_device_failure()};
     auto prepared = std::make_shared<PreparedScene>();
-    const GeometryDigest digest = digest_geometry(scene);
+    // The digest decides first whether a previous geometry serves again;
+    // without one it is only kept for the next time, and worked out beside
+    // the build (a pass over a million primitives).
+    const bool may_reuse = previous && previous->geometry;
+    GeometryDigest digest = may_reuse ? digest_geometry(scene) : GeometryDigest{};
+    std::shared_ptr<Geometry> built_geometry;
     std::optional<Error> build_error;
     auto build = [&] {
-        if (previous && previous->geometry && previous->geometry->digest == digest) {
+        if (may_reuse && previous->geometry->digest == digest) {
             prepared->geometry = previous->geometry;
             return;
         }
-        auto built = build_geometry(scene, digest);
+        auto built = build_geometry(scene);
         if (built)
-            prepared->geometry = std::move(*built);
+            built_geometry = std::move(*built);
         else
             build_error = built.error();
     };
-    // Materials and geometry are independent; for a million primitives each is
-    // worth a core.
     auto gather_materials = [&] {
         prepared->materials_gathered = scene.primitives.size();
         const bool may_read_in_place =
@@ -370,13 +408,23 @@ Expected<std::shared_ptr<const PreparedScene>> prepare(
                 prepared->has_transmission || p.material.transmission > 0.0;
         prepared->pattern_space = pattern_spaces(scene.primitives, prepared->materials);
     };
+    // The materials, the digest and the geometry are independent; for a
+    // million primitives the build is worth a core, the rest another.
+    auto beside_build = [&] {
+        if (!may_reuse) digest = digest_geometry(scene);
+        gather_materials();
+    };
     if (scene.primitives.size() > 10000)
-        tbb::parallel_invoke(build, gather_materials);
+        tbb::parallel_invoke(build, beside_build);
     else {
         build();
-        gather_materials();
+        beside_build();
     }
     if (build_error) return *build_error;
+    if (built_geometry) {
+        built_geometry->digest = digest;
+        prepared->geometry = std::move(built_geometry);
+    }
     if (Expected<void> textures = load_textures(scene, *prepared, previous.get()); !textures)
         return textures.error();
     prepared->lights = scene.lights;

@@ -13,6 +13,7 @@
 #include "jtracer/diagnostics.hpp"
 #include "jtracer/error.hpp"
 #include "jtracer/parser.hpp"
+#include "jtracer/validate.hpp"
 
 #include <cstdint>
 #include <filesystem>
@@ -49,6 +50,8 @@ struct CheckOptions {
     // 0 rather than cost another parse to locate, for a caller that drops
     // them (a quiet command line). Errors are always located.
     bool locate_warnings = true;
+    // How validate_scene works (its threads, what it may take as checked).
+    ValidateOptions validation = {};
 };
 
 // The parse diagnostics followed by validate_scene's (validation runs only when

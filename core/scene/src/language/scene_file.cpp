@@ -96,8 +96,8 @@ Expected<LoadedScene> load_scene_file(const std::filesystem::path& path, ParseOp
 std::vector<Diagnostic> check_scene(const LoadedScene& loaded, CheckOptions options) {
     std::vector<Diagnostic> all = loaded.parsed.diagnostics;
     if (!has_errors(all)) {
-        lang::Validation found =
-            lang::validate_scene_parts(loaded.parsed.scene, loaded.parsed.source);
+        lang::Validation found = lang::validate_scene_parts(
+            loaded.parsed.scene, loaded.parsed.source, options.validation);
         const bool locate = !found.diagnostics.empty() && !loaded.options.source_map &&
                             (options.locate_warnings || has_errors(found.diagnostics));
         if (locate) {
@@ -110,7 +110,7 @@ std::vector<Diagnostic> check_scene(const LoadedScene& loaded, CheckOptions opti
             const SceneSource source = found.about_primitives
                                            ? parse_scene(loaded.text, with_map).source
                                            : lang::source_without_primitives(loaded.text, with_map);
-            found.diagnostics = validate_scene(loaded.parsed.scene, source);
+            found.diagnostics = validate_scene(loaded.parsed.scene, source, options.validation);
         }
         for (Diagnostic& d : found.diagnostics) all.push_back(std::move(d));
     }

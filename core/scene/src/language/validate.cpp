@@ -10,8 +10,10 @@
 
 #include <glm/geometric.hpp>
 
+#include <algorithm>
 #include <cmath>
 #include <map>
+#include <mutex>
 #include <string>
 
 namespace jt {
@@ -26,9 +28,51 @@ const BlockSource* at(const std::vector<BlockSource>& sources, const std::vector
     return sources.size() == items.size() ? &sources[i] : nullptr;
 }
 
+// Primitives are checked in chunks of this many on the caller's threads
+// (ChunkRunner) once there are more than two chunks: enough work a chunk that
+// handing it out costs nothing next to it (a sphere takes about 80 ns), and
+// enough chunks for any number of threads to share a million primitives.
+constexpr std::size_t primitives_a_chunk = 8192;
+
+// The properties of a block whose default value is out of range, in the
+// schema's order: the only ones a primitive as parsed can hold out of range
+// (ValidateOptions::primitives_as_parsed), as a property left unwritten keeps
+// its default unchecked.
+template <class Block>
+const std::vector<const PropertySpec<Block>*>& defaults_out_of_range() {
+    static const std::vector<const PropertySpec<Block>*> found = [] {
+        std::vector<const PropertySpec<Block>*> out;
+        const Block fresh{};
+        for (const PropertySpec<Block>& property : schema_of<Block>().properties)
+            if (value_problem(property, fresh)) out.push_back(&property);
+        return out;
+    }();
+    return found;
+}
+
+// What a model file gave when read.
+struct ModelVerdict {
+    std::string error;  // "": it loads
+    std::vector<std::string> warnings;
+    std::size_t corners = 0, corners_without_normals = 0;
+    std::shared_ptr<const Model> model;  // null when it does not load
+};
+// What each image or model file gave when read, shared by the chunks checking
+// primitives: each file is read once however many primitives name it. The
+// mutex is held while a file is read, so that a second chunk naming it waits
+// for the verdict rather than reading it again; reading calls no ChunkRunner,
+// so a thread holding it never waits for work of its own.
+struct FileVerdicts {
+    std::mutex mutex;
+    std::map<std::pair<std::string, bool>, ModelVerdict> models;  // by file and materials
+    std::map<std::string, std::string> images;  // by file: the problem, "" if none
+};
+
 class Validator {
   public:
-    Validator(const Scene& scene, const SceneSource& source) : scene_(scene), source_(source) {}
+    Validator(const Scene& scene, const SceneSource& source, const ValidateOptions& options,
+              FileVerdicts& files)
+        : scene_(scene), source_(source), options_(options), files_(files) {}
 
     lang::Validation run() {
         check_settings();
@@ -90,6 +134,19 @@ class Validator {
             }
         }
         return ok;
+    }
+
+    // check_values for a primitive's block: all its properties, or for a
+    // primitive as parsed those whose default is out of range.
+    template <class Block, class Which, class Locate>
+    void check_primitive_values(const Block& block, Which which, Locate locate) {
+        if (!options_.primitives_as_parsed) {
+            check_values(block, which, locate);
+            return;
+        }
+        for (const PropertySpec<Block>* property : defaults_out_of_range<Block>())
+            if (auto problem = value_problem(*property, block))
+                error(locate(property->name), which() + *problem);
     }
 
     const BlockSource* settings_block() const {
@@ -203,8 +260,29 @@ class Validator {
         }
     }
 
+    // Each chunk's findings go to a validator of its own and are appended in
+    // the chunks' order, so the list is the one a single pass would make.
     void check_primitives() {
-        for (std::size_t i = 0; i < scene_.primitives.size(); ++i) {
+        const std::size_t count = scene_.primitives.size();
+        if (!options_.run_chunks || count <= 2 * primitives_a_chunk) {
+            check_primitives(0, count);
+            return;
+        }
+        const std::size_t chunks = (count + primitives_a_chunk - 1) / primitives_a_chunk;
+        std::vector<std::vector<Diagnostic>> found(chunks);
+        options_.run_chunks(chunks, [&](std::size_t chunk) {
+            Validator part(scene_, source_, options_, files_);
+            const std::size_t begin = chunk * primitives_a_chunk;
+            part.check_primitives(begin, std::min(count, begin + primitives_a_chunk));
+            found[chunk] = std::move(part.out_);
+        });
+        for (std::vector<Diagnostic>& part : found)
+            out_.insert(out_.end(), std::make_move_iterator(part.begin()),
+                        std::make_move_iterator(part.end()));
+    }
+
+    void check_primitives(std::size_t begin, std::size_t end) {
+        for (std::size_t i = begin; i < end; ++i) {
             const Primitive& p = scene_.primitives[i];
             const BlockSource* block = at(source_.primitives, scene_.primitives, i);
             const auto which = [&] {
@@ -212,13 +290,16 @@ class Validator {
             };
             visit_shape(
                 [&](const auto& shape) {
-                    check_values(shape, which,
-                                 [&](std::string_view name) { return where(block, name); });
+                    check_primitive_values(
+                        shape, which, [&](std::string_view name) { return where(block, name); });
                 },
                 p.shape);
-            check_values(p.material, which,
-                         [&](std::string_view name) { return where_material(block, name); });
-            for (std::size_t k = 0; k < p.transforms.size(); ++k) {
+            check_primitive_values(p.material, which, [&](std::string_view name) {
+                return where_material(block, name);
+            });
+            // As parsed, an operation is there only if the parser read it.
+            const std::size_t unread = options_.primitives_as_parsed ? 0 : p.transforms.size();
+            for (std::size_t k = 0; k < unread; ++k) {
                 const TransformOp& op = p.transforms[k];
                 if (auto problem = value_problem(transform_op(op.kind).property, op))
                     error(op_position(block, k), which() + *problem);
@@ -246,8 +327,9 @@ class Validator {
         if (mesh.file.empty()) return;  // check_values reported it
         const SourcePos pos = where(block, "file");
         const bool file_materials = mesh.materials == kFileMaterials;
-        auto known = models_.find({mesh.file, file_materials});
-        if (known == models_.end()) {
+        std::unique_lock lock(files_.mutex);
+        auto known = files_.models.find({mesh.file, file_materials});
+        if (known == files_.models.end()) {
             ModelVerdict verdict;
             auto model =
                 shared_model(asset_path(scene_, mesh.file), scene_.asset_folder, file_materials);
@@ -259,21 +341,16 @@ class Validator {
                 verdict.corners = 3 * (*model)->triangles.size();
                 verdict.corners_without_normals = corners_without_normals(**model);
             }
-            known = models_.emplace(std::pair(mesh.file, file_materials), verdict).first;
+            known = files_.models.emplace(std::pair(mesh.file, file_materials), verdict).first;
         }
+        // An entry, once made, never changes or moves.
         const ModelVerdict& verdict = known->second;
+        lock.unlock();
         if (!verdict.error.empty()) error(pos, which + verdict.error);
         for (const std::string& w : verdict.warnings)
             warning(pos, which + "'" + mesh.file + "' " + w);
         check_smooth_angle(mesh, block, which, verdict);
     }
-    struct ModelVerdict {
-        std::string error;  // "": it loads
-        std::vector<std::string> warnings;
-        std::size_t corners = 0, corners_without_normals = 0;
-        std::shared_ptr<const Model> model;  // null when it does not load
-    };
-
     // Language 1.1 shades a triangle flat when the file lacks a normal at any
     // of its corners; smooth_angle generates them (docs/language.md §14.4).
     void check_smooth_angle(const Mesh& mesh, const BlockSource* block, const std::string& which,
@@ -301,8 +378,6 @@ class Validator {
                         "as 60) generates normals there");
         }
     }
-    std::map<std::pair<std::string, bool>, ModelVerdict> models_;  // by file and materials
-
     // The picture must decode (docs/language.md §13.4), with the error the
     // render would give; each file is decoded once however many materials
     // name it, and the render takes it from memory (texture.hpp).
@@ -310,15 +385,17 @@ class Validator {
         if (m.image_map.empty()) return;
         const SourcePos pos = where_material(block, "image_map");
         if (m.checker) warning(pos, "'image_map' and 'checker' are both set: the image map wins");
-        auto known = image_problems_.find(m.image_map);
-        if (known == image_problems_.end()) {
+        std::unique_lock lock(files_.mutex);
+        auto known = files_.images.find(m.image_map);
+        if (known == files_.images.end()) {
             auto texture = load_texture(asset_path(scene_, m.image_map));
             known =
-                image_problems_.emplace(m.image_map, texture ? "" : texture.error().message).first;
+                files_.images.emplace(m.image_map, texture ? "" : texture.error().message).first;
         }
-        if (!known->second.empty()) error(pos, "image_map: " + known->second);
+        const std::string& problem = known->second;
+        lock.unlock();
+        if (!problem.empty()) error(pos, "image_map: " + problem);
     }
-    std::map<std::string, std::string> image_problems_;
 
     // The scale op number k of a primitive is the k-th op property across its transform blocks.
     SourcePos op_position(const BlockSource* block, std::size_t k) const {
@@ -368,8 +445,16 @@ class Validator {
 
     const Scene& scene_;
     const SceneSource& source_;
+    const ValidateOptions& options_;
+    FileVerdicts& files_;
     std::vector<Diagnostic> out_;
 };
+
+lang::Validation validate(const Scene& scene, const SceneSource& source,
+                          const ValidateOptions& options) {
+    FileVerdicts files;
+    return Validator(scene, source, options, files).run();
+}
 
 }  // namespace
 
@@ -389,12 +474,14 @@ unsigned long long bmp_file_size(int width, int height) {
     return 54 + row * static_cast<unsigned>(height);
 }
 
-std::vector<Diagnostic> validate_scene(const Scene& scene, const SceneSource& source) {
-    return Validator(scene, source).run().diagnostics;
+std::vector<Diagnostic> validate_scene(const Scene& scene, const SceneSource& source,
+                                       const ValidateOptions& options) {
+    return validate(scene, source, options).diagnostics;
 }
 
-lang::Validation lang::validate_scene_parts(const Scene& scene, const SceneSource& source) {
-    return Validator(scene, source).run();
+lang::Validation lang::validate_scene_parts(const Scene& scene, const SceneSource& source,
+                                            const ValidateOptions& options) {
+    return validate(scene, source, options);
 }
 
 }  // namespace jt

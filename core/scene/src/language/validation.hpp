@@ -7,6 +7,7 @@
 #include "jtracer/parser.hpp"
 #include "jtracer/scene.hpp"
 #include "jtracer/source_map.hpp"
+#include "jtracer/validate.hpp"
 
 #include <string_view>
 #include <vector>
@@ -18,7 +19,8 @@ struct Validation {
     bool about_primitives = false;        // whether any concerns a primitive
 };
 
-Validation validate_scene_parts(const Scene& scene, const SceneSource& source);
+Validation validate_scene_parts(const Scene& scene, const SceneSource& source,
+                                const ValidateOptions& options = {});
 
 // The source map of `text` without the primitives' records (SceneSource::
 // primitives stays empty, so validate_scene leaves their findings unlocated),
