@@ -12,6 +12,7 @@
 #include <tbb/parallel_for.h>
 #include <tbb/parallel_invoke.h>
 #include <tbb/parallel_reduce.h>
+#include <tbb/parallel_sort.h>
 #include <glm/common.hpp>
 #include <glm/geometric.hpp>
 
@@ -78,7 +79,7 @@ void sort_spheres_along_a_curve(std::vector<WorldSphere>& spheres) {
                        (spread_bits(bits(cell.z)) << 2),
                    static_cast<std::uint32_t>(i)};
     }
-    std::sort(keys.begin(), keys.end());
+    tbb::parallel_sort(keys.begin(), keys.end());
     std::vector<WorldSphere> sorted(spheres.size());
     for (std::size_t i = 0; i < keys.size(); ++i) sorted[i] = spheres[keys[i].second];
     spheres = std::move(sorted);
