@@ -211,6 +211,41 @@ TEST(RayQueries, MortonBuiltBvhAgreesWithBruteForce) {
     expect_bvh_agrees_with_brute_force(60000, 60.0, 300, 100);
 }
 
+// A large scene's spheres are put in Morton order of their centres (Embree's
+// Morton builder then reads their boxes in order): each one is kept once, as
+// the scene says, and neighbours in the array are neighbours in space.
+TEST(RayQueries, ManySpheresAreKeptOnceEachInCurveOrder) {
+    constexpr int count = 60000;
+    std::mt19937 rng(11);
+    std::uniform_real_distribution<double> u(-50.0, 50.0);
+    Scene scene;
+    for (int i = 0; i < count; ++i)
+        scene.primitives.push_back(sphere({u(rng), u(rng), u(rng)}, 0.2));
+    auto prepared = prepare_scene(scene).value();
+    const std::vector<WorldSphere>& spheres = prepared->geometry->spheres;
+    ASSERT_EQ(spheres.size(), static_cast<std::size_t>(count));
+    std::vector<bool> seen(count, false);
+    for (const WorldSphere& s : spheres) {
+        ASSERT_LT(s.source, static_cast<std::uint32_t>(count));
+        ASSERT_FALSE(seen[s.source]) << s.source;
+        seen[s.source] = true;
+        const Sphere& written = shape_as<Sphere>(scene.primitives[s.source].shape);
+        ASSERT_EQ(s.center, written.center);
+        ASSERT_EQ(s.radius, written.radius);
+    }
+    const auto mean_step = [&](auto centre_of) {
+        double sum = 0.0;
+        for (int i = 1; i < count; ++i) sum += glm::distance(centre_of(i - 1), centre_of(i));
+        return sum / (count - 1);
+    };
+    const double in_array =
+        mean_step([&](int i) { return spheres[static_cast<std::size_t>(i)].center; });
+    const double in_scene = mean_step([&](int i) {
+        return shape_as<Sphere>(scene.primitives[static_cast<std::size_t>(i)].shape).center;
+    });
+    EXPECT_LT(in_array, in_scene / 10) << in_array << " against " << in_scene;
+}
+
 // Embree's BVH leaves out a box that reaches past 1.8e18: the shapes that
 // reach there are tested on every ray instead, and the answers stay exact.
 // Each slab below is 2 thick and 2e19 wide, through the crowd's middle.

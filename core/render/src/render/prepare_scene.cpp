@@ -12,12 +12,15 @@
 #include <tbb/parallel_for.h>
 #include <tbb/parallel_invoke.h>
 #include <tbb/parallel_reduce.h>
+#include <tbb/parallel_sort.h>
+#include <glm/common.hpp>
 #include <glm/geometric.hpp>
 
 #include <algorithm>
 #include <array>
 #include <atomic>
 #include <cmath>
+#include <limits>
 #include <optional>
 #include <string>
 #include <string_view>
@@ -41,6 +44,46 @@ constexpr std::size_t fast_build_threshold = 50000;
 // Up to this many bounded shapes, the ray queries test every one instead of
 // walking a BVH: on the showcase (6 shapes) that halves the time a ray.
 constexpr std::size_t brute_force_limit = 8;
+
+// Spreads the 10 low bits of v to every third bit.
+std::uint32_t spread_bits(std::uint32_t v) {
+    v &= 0x3ffu;
+    v = (v | (v << 16)) & 0x030000ffu;
+    v = (v | (v << 8)) & 0x0300f00fu;
+    v = (v | (v << 4)) & 0x030c30c3u;
+    v = (v | (v << 2)) & 0x09249249u;
+    return v;
+}
+
+// Puts the spheres in Morton order of their centres. Embree's Morton builder
+// asks for the boxes in that order, and rays meet neighbours together: in
+// source order both jumped about a 40 MB array. Which sphere a ray meets
+// first never depends on this order (ties go to the lower source).
+void sort_spheres_along_a_curve(std::vector<WorldSphere>& spheres) {
+    glm::dvec3 low(std::numeric_limits<double>::infinity());
+    glm::dvec3 high(-std::numeric_limits<double>::infinity());
+    for (const WorldSphere& s : spheres) {
+        low = glm::min(low, s.center);
+        high = glm::max(high, s.center);
+    }
+    const glm::dvec3 extent = high - low;
+    if (!all_finite(extent)) return;  // past double's range: left in source order
+    const glm::dvec3 scale(extent.x > 0 ? 1023.0 / extent.x : 0.0,
+                           extent.y > 0 ? 1023.0 / extent.y : 0.0,
+                           extent.z > 0 ? 1023.0 / extent.z : 0.0);
+    std::vector<std::pair<std::uint32_t, std::uint32_t>> keys(spheres.size());
+    for (std::size_t i = 0; i < spheres.size(); ++i) {
+        const glm::dvec3 cell = (spheres[i].center - low) * scale;
+        const auto bits = [](double c) { return static_cast<std::uint32_t>(c); };
+        keys[i] = {spread_bits(bits(cell.x)) | (spread_bits(bits(cell.y)) << 1) |
+                       (spread_bits(bits(cell.z)) << 2),
+                   static_cast<std::uint32_t>(i)};
+    }
+    tbb::parallel_sort(keys.begin(), keys.end());
+    std::vector<WorldSphere> sorted(spheres.size());
+    for (std::size_t i = 0; i < keys.size(); ++i) sorted[i] = spheres[keys[i].second];
+    spheres = std::move(sorted);
+}
 
 // A scene handed over (prepare_scene(Scene&&)) still has its materials copied
 // while the copy stays this small (about 19,000 materials): a short list stays
@@ -178,6 +221,7 @@ Expected<std::shared_ptr<Geometry>> build_geometry(const Scene& scene) {
         return g;
     }
 
+    if (bounded > fast_build_threshold) sort_spheres_along_a_curve(g->spheres);
     const double magnitude = scene_magnitude(*g);
     g->bounds_slack = 1e-6 * magnitude;
     for (TransformedShape& s : g->shapes) {
