@@ -245,7 +245,12 @@ TEST_F(ViewerGl, ResumeContinuesThePausedRenderWhereItStopped) {
     const RenderProgress at_pause = state.render.renderer.progress();
     ASSERT_FALSE(at_pause.finished) << "the render finished before the test could pause it";
     ASSERT_GE(at_pause.samples_done, 2);
-    // Paused: nothing renders, the image stays.
+    // Tiles under way when the pause came may still land; once they have,
+    // nothing renders and the image stays.
+    while (!state.render.renderer.settled() && std::chrono::steady_clock::now() < deadline)
+        viewer.frame(state);
+    ASSERT_TRUE(state.render.renderer.settled());
+    viewer.frame(state);
     const Image8 paused_image = state.render.display;
     std::this_thread::sleep_for(std::chrono::milliseconds(50));
     for (int i = 0; i < 3; ++i) viewer.frame(state);

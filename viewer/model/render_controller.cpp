@@ -241,6 +241,11 @@ bool RenderController::active() const {
     return current_ && !current_->done && !current_->stop;
 }
 
+bool RenderController::settled() const {
+    std::lock_guard lock(mutex_);
+    return !current_ || current_->done;
+}
+
 bool RenderController::finished() const {
     std::shared_ptr<Run> run;
     {

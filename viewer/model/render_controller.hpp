@@ -71,6 +71,9 @@ class RenderController {
     RenderProgress progress() const;
     bool active() const;    // a job was started and has not finished or been stopped
     bool finished() const;  // the current job rendered every pass
+    // No thread of the current run still renders: it finished, failed, or was
+    // paused and its passes under way have returned (pause() does not wait).
+    bool settled() const;
     // Why the current job could not run, or empty.
     std::string error() const;
     std::uint64_t jobs_started() const { return jobs_started_; }
