@@ -111,6 +111,10 @@ TEST_F(ViewerFiles, ReloadCanReapplyTheEditsOntoTheNewerText) {
     EXPECT_FALSE(state.files.pending_reload.has_value());
     EXPECT_EQ(state.doc.scene.primitives[1].material.pigment, kMyPigment) << "my edit";
     EXPECT_EQ(state.doc.scene.lights[0].intensity, Colour(0.5)) << "their change";
+    // Scenes compare equal whatever their folder, so this is checked alone:
+    // without it a model or image map named relative to the scene is looked
+    // for in the working directory, and the image stops rendering.
+    EXPECT_EQ(state.doc.scene.asset_folder, file.parent_path().string());
     EXPECT_TRUE(has_unsaved_edits(state.doc));
     ASSERT_TRUE(save_scene(state)) << state.message;
     EXPECT_EQ(read_file(file),
