@@ -6,6 +6,7 @@
 #include "common/files.hpp"
 #include "jtracer/parser.hpp"
 #include "model/app_actions.hpp"
+#include "model/picking.hpp"
 #include "viewer/model/model_loop.hpp"
 #include "viewer/viewer_test_files.hpp"
 
@@ -92,6 +93,26 @@ TEST_F(ViewerFiles, AReloadDoesNotOvertakeAnOpenUnderWay) {
     state.files.loader.wait();
     take_finished_load(state);
     EXPECT_EQ(state.doc.path, other) << state.message;
+    fs::remove_all(other.parent_path());
+}
+
+// A selection is an index into the scene: in another file it would name an
+// object the user never picked, tint and outline it and take Delete or
+// Alt+drag to it. A reload of the same file keeps it.
+TEST_F(ViewerFiles, OpeningAnotherFileClearsTheSelection) {
+    const Selection picked{Selection::Kind::primitive, 1};
+    state.view.selection = picked;
+    reload_scene(state);
+    state.files.loader.wait();
+    take_finished_load(state);
+    EXPECT_EQ(current_selection(state.view, state.doc.scene), picked) << "kept on reload";
+
+    const fs::path other = scene_copy("open_clears_selection");
+    request_open(state, other);
+    state.files.loader.wait();
+    take_finished_load(state);
+    ASSERT_EQ(state.doc.path, other) << state.message;
+    EXPECT_EQ(current_selection(state.view, state.doc.scene), Selection{});
     fs::remove_all(other.parent_path());
 }
 
