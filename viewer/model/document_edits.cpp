@@ -163,8 +163,24 @@ bool duplicate_block(AppState& state, BlockRef block) {
 
 bool delete_block(AppState& state, BlockRef block) {
     const std::string name = block_name(state.doc.scene, block);
-    return edit_text_structure(
-        state, [&](const SceneText& s) { return jt::delete_block(s, block); }, "Deleted " + name);
+    if (!edit_text_structure(
+            state, [&](const SceneText& s) { return jt::delete_block(s, block); },
+            "Deleted " + name))
+        return false;
+    // The selection is an index: it goes with the deleted block, and follows
+    // its object when one before it goes.
+    Selection& selection = state.view.selection;
+    const Selection::Kind kind = block.kind == BlockKind::light       ? Selection::Kind::light
+                                 : block.kind == BlockKind::primitive ? Selection::Kind::primitive
+                                                                      : Selection::Kind::none;
+    if (kind != Selection::Kind::none && selection.kind == kind) {
+        const auto deleted = static_cast<int>(block.index);
+        if (selection.index == deleted)
+            selection = {};
+        else if (selection.index > deleted)
+            --selection.index;
+    }
+    return true;
 }
 
 bool add_material_block(AppState& state, std::size_t primitive) {

@@ -59,6 +59,9 @@ void finish_open(AppState& state, const std::filesystem::path& path, LoadAttempt
     if (ok) {
         state.view.camera_index = std::max(active_camera_index(state.doc.scene), 0);
         state.view.free_camera_active = false;
+        // A selection is an index into the scene: in another file's it would
+        // be an object the user never picked.
+        if (state.doc.path != was) state.view.selection = {};
         after_scene_replaced(state, before);
         state.files.recent.add(path);
         state.fields.open_path_input = path.string();

@@ -256,6 +256,7 @@ Expected<Scene> reapply_edits(const SceneDocument& doc, const LoadAttempt& newer
     if (!edit.ok()) return Error{edit.error};
     ParseResult parsed = parse_document_text(doc, edit.text);
     if (!parsed.ok()) return Error{"the edits do not fit the new text"};
+    parsed.scene.asset_folder = newer.scene->asset_folder;
     return std::move(parsed.scene);
 }
 

@@ -207,6 +207,30 @@ TEST(DocumentEdits, ATextErrorKeepsTheImageAndIsListedAtItsLineTheFixRendersAgai
     EXPECT_EQ(file_text(path), text);
 }
 
+// The selection is an index: a Delete button in a panel must not leave it on
+// the object that moved into the deleted one's place, nor on the one after
+// the selected object when an object before it goes.
+TEST(DocumentEdits, DeletingABlockNeverLeavesTheSelectionOnAnotherObject) {
+    const std::filesystem::path path = scene_copy("document_edits_delete_selection");
+    AppState state(test_config());
+    open_scene(state, path);
+    ASSERT_EQ(state.doc.scene.primitives.size(), 2u);  // a plane, then a sphere
+    const Selection plane{Selection::Kind::primitive, 0}, sphere{Selection::Kind::primitive, 1};
+
+    state.view.selection = plane;
+    ASSERT_TRUE(delete_block(state, {BlockKind::primitive, 0})) << state.message;
+    EXPECT_EQ(state.view.selection, Selection{}) << "not the sphere, now the first object";
+
+    undo(state);
+    state.view.selection = sphere;
+    ASSERT_TRUE(delete_block(state, {BlockKind::primitive, 0})) << state.message;
+    EXPECT_EQ(state.view.selection, (Selection{Selection::Kind::primitive, 0})) << "the sphere";
+    ASSERT_TRUE(delete_block(state, {BlockKind::light, 0})) << state.message;
+    EXPECT_EQ(state.view.selection, (Selection{Selection::Kind::primitive, 0}))
+        << "a light's deletion leaves an object's selection alone";
+    std::filesystem::remove_all(path.parent_path());
+}
+
 TEST(DocumentEdits, OneUndoHistoryAcrossPanelStructureAndTextEdits) {
     const std::filesystem::path path = scene_copy("document_edits_undo");
     AppState state(test_config());

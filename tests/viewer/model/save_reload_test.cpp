@@ -6,6 +6,7 @@
 #include "common/files.hpp"
 #include "jtracer/parser.hpp"
 #include "model/app_actions.hpp"
+#include "model/picking.hpp"
 #include "viewer/model/model_loop.hpp"
 #include "viewer/viewer_test_files.hpp"
 
@@ -95,6 +96,26 @@ TEST_F(ViewerFiles, AReloadDoesNotOvertakeAnOpenUnderWay) {
     fs::remove_all(other.parent_path());
 }
 
+// A selection is an index into the scene: in another file it would name an
+// object the user never picked, tint and outline it and take Delete or
+// Alt+drag to it. A reload of the same file keeps it.
+TEST_F(ViewerFiles, OpeningAnotherFileClearsTheSelection) {
+    const Selection picked{Selection::Kind::primitive, 1};
+    state.view.selection = picked;
+    reload_scene(state);
+    state.files.loader.wait();
+    take_finished_load(state);
+    EXPECT_EQ(current_selection(state.view, state.doc.scene), picked) << "kept on reload";
+
+    const fs::path other = scene_copy("open_clears_selection");
+    request_open(state, other);
+    state.files.loader.wait();
+    take_finished_load(state);
+    ASSERT_EQ(state.doc.path, other) << state.message;
+    EXPECT_EQ(current_selection(state.view, state.doc.scene), Selection{});
+    fs::remove_all(other.parent_path());
+}
+
 TEST_F(ViewerFiles, ReloadCanDropTheEdits) {
     edit_pigment();
     they_save(kTheirs);
@@ -111,6 +132,10 @@ TEST_F(ViewerFiles, ReloadCanReapplyTheEditsOntoTheNewerText) {
     EXPECT_FALSE(state.files.pending_reload.has_value());
     EXPECT_EQ(state.doc.scene.primitives[1].material.pigment, kMyPigment) << "my edit";
     EXPECT_EQ(state.doc.scene.lights[0].intensity, Colour(0.5)) << "their change";
+    // Scenes compare equal whatever their folder, so this is checked alone:
+    // without it a model or image map named relative to the scene is looked
+    // for in the working directory, and the image stops rendering.
+    EXPECT_EQ(state.doc.scene.asset_folder, file.parent_path().string());
     EXPECT_TRUE(has_unsaved_edits(state.doc));
     ASSERT_TRUE(save_scene(state)) << state.message;
     EXPECT_EQ(read_file(file),
