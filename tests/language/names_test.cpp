@@ -137,6 +137,25 @@ TEST(Names, NamedMaterialMistakes) {
               "render_settings, cameras, scene)");
 }
 
+// A material block missing its '{' sets nothing, so it keeps nothing of the
+// named material from applying, whatever block the text read before it.
+TEST(Names, AMaterialBlockMissingItsBraceKeepsNothingFromTheNamedMaterial) {
+    const std::string text =
+        "material red { pigment: <1, 0, 0>; reflection: 0.5; }\n"
+        "scene {\n"
+        "  sphere { material { pigment: <0, 1, 0>; } }\n"
+        "  sphere { material ; material: red; }\n"
+        "}\n";
+    for (const bool source_map : {true, false}) {
+        ParseResult r = parse_scene(text, {.source_map = source_map});
+        EXPECT_EQ(brief(r.diagnostics), "4:21: error: expected '{' after 'material', got ';'");
+        ASSERT_EQ(r.scene.primitives.size(), 2u);
+        EXPECT_EQ(r.scene.primitives[0].material.pigment, Vec3(0, 1, 0));
+        EXPECT_EQ(r.scene.primitives[1].material.pigment, Vec3(1, 0, 0)) << source_map;
+        EXPECT_EQ(r.scene.primitives[1].material.reflection, 0.5) << source_map;
+    }
+}
+
 TEST(Names, CommandLineDefinesWinWithANote) {
     ParseOptions options;
     options.defines = {{"r", "3"}, {"s", "\"out.bmp\""}};

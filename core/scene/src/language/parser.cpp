@@ -896,7 +896,9 @@ class Parser final : private TokenCursor {
                 if (same_name(cur_->text, schema_of<Material>().keyword)) {
                     opened = parse_property_block(child, 1, primitive.material,
                                                   schema_of<Material>().keyword);
-                    own_material |= material_mask(property_buffers_[1]);
+                    // Unopened, the block read nothing: the buffer still holds
+                    // the records of the last block read at this level.
+                    if (opened) own_material |= material_mask(property_buffers_[1]);
                 } else if (same_name(cur_->text, kTransformKeyword)) {
                     opened = parse_property_block(child, 1, primitive.transforms);
                 } else {
