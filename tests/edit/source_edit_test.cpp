@@ -127,6 +127,23 @@ TEST(SourceEdit, InsertsIntoAOneLineBlockInline) {
     EXPECT_EQ(save(kScene, edited), expected);
 }
 
+// Several properties inserted into one line at once are spaced as one would
+// type them, whichever spacing the block has before its brace.
+TEST(SourceEdit, SeveralInlineInsertionsAreSpacedOnce) {
+    Scene edited = parse_ok(kScene).scene;
+    edited.cameras[0].fov = 60;
+    edited.cameras[0].aspect = 2;
+    std::string expected = replace_once(kScene, R"(position: <0, 0, 5>; })",
+                                        R"(position: <0, 0, 5>; aspect: 2; fov: 60; })");
+    EXPECT_EQ(save(kScene, edited), expected);
+
+    const std::string tight =
+        replace_once(kScene, R"(position: <0, 0, 5>; })", R"(position: <0, 0, 5>;})");
+    expected = replace_once(kScene, R"(position: <0, 0, 5>; })",
+                            R"(position: <0, 0, 5>; aspect: 2; fov: 60;})");
+    EXPECT_EQ(save(tight, edited), expected);
+}
+
 TEST(SourceEdit, MaterialPropertyNeverWrittenGoesToTheLastMaterialBlock) {
     Scene edited = parse_ok(kScene).scene;
     edited.primitives[0].material.reflection = 0.5;

@@ -126,8 +126,12 @@ TextEdit insertion_before_close(std::string_view text, std::size_t close,
         inserted += indented_lines(lines, indent);
         return {line_start(text, close), 0, std::move(inserted)};
     }
-    std::string inserted = close > 0 && is_blank(text[close - 1]) ? "" : " ";
-    inserted.append(inline_text(lines)).append(" ");
+    // Insertions at the same brace follow one another: each brings the one
+    // space it needs on the side the brace's own spacing does not give, so
+    // that several make `a; b; c; }` or `a; b; c;}`, never two spaces.
+    if (close > 0 && is_blank(text[close - 1])) return {close, 0, inline_text(lines) + " "};
+    std::string inserted = " ";
+    inserted.append(inline_text(lines));
     return {close, 0, std::move(inserted)};
 }
 
