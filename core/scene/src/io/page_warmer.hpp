@@ -2,15 +2,16 @@
 // Faults in a large array's pages on another thread, just ahead of the code
 // that fills it.
 //
-// Memory fresh from the kernel is zeroed at its first touch, and on the team's
-// VM that first touch runs at 0.7-2.4 GB/s against ~25 GB/s for a page already
-// there: a million primitives (280 MB) spent a quarter of a whole render in the
-// kernel's clear_page, on the parsing thread, while the other core was idle.
-// The warmer asks the kernel to fault the pages in (MADV_POPULATE_WRITE, which
-// changes no byte) a bounded distance ahead of what the filler reported, so the
-// zeroing runs beside the parse. What it faulted past the array's final size is
-// given back when it stops. Off Linux, or on a kernel without the advice, it
-// does nothing.
+// Memory fresh from the kernel is zeroed at its first touch. On the team's VM
+// that touch is cheap right after a process of our own, but costs ~2 ms a MB
+// right after another program freed much memory (Tachyon or POV-Ray before it
+// in a race): a million primitives (280 MB) then spent most of a second in
+// the kernel on the parsing thread, while the other core idled. The warmer
+// asks the kernel to fault the pages in (MADV_POPULATE_WRITE, which changes no
+// byte) a bounded distance ahead of what the filler reported, so that cost is
+// paid beside the parse. What it faulted past the array's final size is given
+// back when it stops. Off Linux, or on a kernel without the advice, it does
+// nothing.
 
 #include <atomic>
 #include <cstddef>
