@@ -4,6 +4,8 @@
 
 #include "test_util.hpp"
 
+#include "io/page_warmer.hpp"
+
 // (Strings are built with append: GCC 12 warns falsely on "literal" + std::string&&.)
 
 #include <string>
@@ -86,6 +88,32 @@ TEST(LargeScene, DiagnosticsInABigScene) {
     EXPECT_EQ(test::brief(parse_scene(text).diagnostics),
               "6002:18: error: 'radius' must be greater than 0 and at most 1e+09, got -1\n"
               "6002:33: error: unexpected block 'x' in 'material', which holds only properties");
+}
+
+// So many spheres that their primitives' pages are faulted in on another
+// thread while the parser fills them (io/page_warmer.hpp): every primitive
+// comes out as written, with or without the source map.
+TEST(LargeScene, PrimitivesFilledBesideTheirPageWarmerAreAsWritten) {
+    constexpr int count = 300000;  // ~84 MB of primitives, past the warmer's threshold
+    ASSERT_GT(count * sizeof(Primitive), PageWarmer::smallest_warmed_bytes);
+    std::string text = "scene {\n";
+    for (int i = 0; i < count; ++i)
+        text.append("sphere{center:<")
+            .append(std::to_string(i))
+            .append(",0,0>;radius:1;material{pigment:<0.5,0,")
+            .append(std::to_string(i % 2))
+            .append(">;}}\n");
+    text += "}\n";
+    for (bool source_map : {false, true}) {
+        ParseResult r = parse_scene(text, {.source_map = source_map});
+        ASSERT_TRUE(r.ok());
+        ASSERT_EQ(r.scene.primitives.size(), static_cast<std::size_t>(count));
+        for (int i = 0; i < count; ++i) {
+            const Primitive& p = r.scene.primitives[static_cast<std::size_t>(i)];
+            ASSERT_EQ(shape_as<Sphere>(p.shape).center, Vec3(i, 0, 0)) << i;
+            ASSERT_EQ(p.material.pigment, Colour(0.5, 0, i % 2)) << i;
+        }
+    }
 }
 
 }  // namespace

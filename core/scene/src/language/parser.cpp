@@ -7,6 +7,7 @@
 
 #include "jtracer/parser.hpp"
 
+#include "io/page_warmer.hpp"
 #include "io/reserve_records.hpp"
 #include "jtracer/schema.hpp"
 #include "language/define_value.hpp"
@@ -779,7 +780,12 @@ class Parser final : private TokenCursor {
         // by the one read at its index unless taken: a frame holds one array.
         std::size_t placed = 0;
         if (earlier_) primitives = std::move(earlier_->primitives);
-        if (primitives.empty()) reserve_records(primitives, hint);
+        // A large array's fresh pages are faulted in beside the parse (io/page_warmer.hpp).
+        PageWarmer warmer;
+        if (primitives.empty()) {
+            reserve_records(primitives, hint);
+            warmer.start(primitives.data(), primitives.capacity() * sizeof(Primitive));
+        }
         if (source_map_) reserve_records(primitive_sources, hint);
         parse_body(block, scene_blocks(), only_blocks(block, scene_blocks()), [&] {
             std::string_view kind = cur_->text;
@@ -808,6 +814,7 @@ class Parser final : private TokenCursor {
                 else
                     primitives.push_back(std::move(primitive));
                 ++placed;
+                warmer.filled(placed * sizeof(Primitive));
                 if (source_map_) primitive_sources.push_back(primitive_block);
                 if (record_readings_)
                     readings.push_back({file, keyword, static_cast<std::uint32_t>(cur_->offset),
@@ -824,6 +831,7 @@ class Parser final : private TokenCursor {
         }
         primitives.erase(primitives.begin() + static_cast<std::ptrdiff_t>(placed),
                          primitives.end());
+        warmer.finish(primitives.data(), primitives.size() * sizeof(Primitive));
         result_.scene.primitives = std::move(primitives);
         result_.primitive_readings = std::move(readings);
         result_.scene.lights = std::move(lights);
