@@ -23,6 +23,7 @@
 #include <chrono>
 #include <fstream>
 #include <iterator>
+#include <memory>
 #include <sstream>
 #include <thread>
 
@@ -158,19 +159,25 @@ TEST(FirstPreview, AnOpenedSceneIsNotValidatedAgainBeforeItsRender) {
     EXPECT_EQ(state.doc.diagnostics, loaded);
 }
 
+// Starts `scene` and waits for its last pass: the picture the render ends on.
+Image8 render_to_the_end(RenderController& renderer, std::shared_ptr<const Scene> scene,
+                         const RenderOptions& options) {
+    renderer.start(std::move(scene), options);
+    const auto deadline = Clock::now() + kTimeout;
+    while (!renderer.finished() && Clock::now() < deadline)
+        std::this_thread::sleep_for(std::chrono::milliseconds(2));
+    EXPECT_TRUE(renderer.finished());
+    Image8 image;
+    renderer.fetch(image);
+    return image;
+}
+
 TEST(RenderReuse, MaterialEditReusesTheGeometryAndRendersTheEditedScene) {
     Scene scene = showcase_at(160, 90);
     const RenderOptions options = options_for(scene, true);
     RenderController renderer;
     auto render = [&](const Scene& s) {
-        renderer.start(s, options);
-        const auto deadline = Clock::now() + kTimeout;
-        while (!renderer.finished() && Clock::now() < deadline)
-            std::this_thread::sleep_for(std::chrono::milliseconds(2));
-        EXPECT_TRUE(renderer.finished());
-        Image8 image;
-        renderer.fetch(image);
-        return image;
+        return render_to_the_end(renderer, std::make_shared<const Scene>(s), options);
     };
     render(scene);
     const auto first = renderer.prepared();
@@ -220,14 +227,7 @@ TEST(RenderReuse, ManyColoursAreReadInPlaceAndAColourEditPatches) {
     const RenderOptions options = options_for(scene, true);
     RenderController renderer;
     auto render = [&](const Scene& s) {
-        renderer.start(s, options);
-        const auto deadline = Clock::now() + kTimeout;
-        while (!renderer.finished() && Clock::now() < deadline)
-            std::this_thread::sleep_for(std::chrono::milliseconds(2));
-        EXPECT_TRUE(renderer.finished());
-        Image8 image;
-        renderer.fetch(image);
-        return image;
+        return render_to_the_end(renderer, std::make_shared<const Scene>(s), options);
     };
     const Image8 before = render(scene);
     const auto first = renderer.prepared();
@@ -286,14 +286,7 @@ TEST(RenderReuse, AnAdoptedPreparationRendersItsSceneWithoutPreparingAgain) {
     RenderController renderer;
     renderer.adopt_prepared(ahead);
     auto render = [&](std::shared_ptr<const Scene> s) {
-        renderer.start(std::move(s), options);
-        const auto deadline = Clock::now() + kTimeout;
-        while (!renderer.finished() && Clock::now() < deadline)
-            std::this_thread::sleep_for(std::chrono::milliseconds(2));
-        EXPECT_TRUE(renderer.finished());
-        Image8 image;
-        renderer.fetch(image);
-        return image;
+        return render_to_the_end(renderer, std::move(s), options);
     };
     const Image8 image = render(scene);
     ASSERT_TRUE(ahead.prepared.get());
