@@ -14,8 +14,11 @@
 
 #include <algorithm>
 #include <cmath>
+#include <filesystem>
+#include <memory>
 #include <random>
 #include <span>
+#include <string_view>
 #include <utility>
 #include <vector>
 
@@ -283,18 +286,29 @@ TEST(Triangles, RaysThroughSharedEdgesAndVerticesNeverMiss) {
 // outside is blocked by N. Within single-precision rounding of the edge,
 // Embree's float test may put such a ray just outside N, and the partner
 // across the edge is F, which the ray leaves and never meets.
-TEST(Triangles, AShadowRayLeavingNearAnEdgeIntoAFoldIsBlocked) {
-    ScratchDir dir;
-    const auto file = dir.path() / "tetrahedron.obj";
-    write_file(file,
-               "v 0.75 1.25 0.75\nv 1.25 -1 -1\nv -1 1 -0.75\nv -1 -1 0.75\n"
-               "f 1 2 3\nf 1 4 2\nf 1 3 4\nf 2 4 3\n");
+// A tetrahedron whose faces F = (a, b, c) and N = (a, d, b) share the edge ab,
+// as an OBJ file's text.
+constexpr const char* kTetrahedron =
+    "v 0.75 1.25 0.75\nv 1.25 -1 -1\nv -1 1 -0.75\nv -1 -1 0.75\n"
+    "f 1 2 3\nf 1 4 2\nf 1 3 4\nf 2 4 3\n";
+
+// One mesh, the OBJ text `obj` written into `dir`, under `transforms`, prepared.
+std::shared_ptr<const PreparedScene> prepared_mesh(const std::filesystem::path& dir,
+                                                   std::string_view obj,
+                                                   std::vector<TransformOp> transforms) {
+    const auto file = dir / "model.obj";
+    write_file(file, obj);
     Scene s = scene_with_camera(camera_at({0, 0, 0}, {0, 0, -1}));
     Primitive p = mesh(file);
-    const Vec3 shift{37.3, -21.7, 55.1};
-    p.transforms = {translate(shift)};
+    p.transforms = std::move(transforms);
     s.primitives.push_back(p);
-    auto prepared = prepare_scene(s).value();
+    return prepare_scene(s).value();
+}
+
+TEST(Triangles, AShadowRayLeavingNearAnEdgeIntoAFoldIsBlocked) {
+    ScratchDir dir;
+    const Vec3 shift{37.3, -21.7, 55.1};
+    auto prepared = prepared_mesh(dir.path(), kTetrahedron, {translate(shift)});
     const Geometry& geometry = *prepared->geometry;
     // F = (a, b, c) and N = (a, d, b) share the edge ab.
     const Vec3 a{0.75, 1.25, 0.75}, b{1.25, -1, -1}, c{-1, 1, -0.75}, d{-1, -1, 0.75};
@@ -396,20 +410,13 @@ TEST(Triangles, AMeshPastEmbreesReachIsWatertight) {
 // in double precision instead.
 TEST(Triangles, AnIllConditionedMeshIsMetNearItsEdges) {
     ScratchDir dir;
-    const auto file = dir.path() / "tetrahedron.obj";
-    write_file(file,
-               "v 0.75 1.25 0.75\nv 1.25 -1 -1\nv -1 1 -0.75\nv -1 -1 0.75\n"
-               "f 1 2 3\nf 1 4 2\nf 1 3 4\nf 2 4 3\n");
-    Scene s = scene_with_camera(camera_at({0, 0, 0}, {0, 0, -1}));
-    Primitive p = mesh(file);
-    p.transforms = {scale(Vec3(9.64063685567787)),
-                    rotate(TransformKind::yrotate, 34.945434113689146),
-                    scale({118.98901232279036, 137.75951600311862, 171.44186551255808}),
-                    scale({0.0016165992815658072, 0.015777376647418778, 0.6650916654087091}),
-                    rotate(TransformKind::yrotate, 39.10633567795952),
-                    translate({-387.18579221517655, 41.817545423635636, -490.10194747416307})};
-    s.primitives.push_back(p);
-    auto prepared = prepare_scene(s).value();
+    auto prepared = prepared_mesh(
+        dir.path(), kTetrahedron,
+        {scale(Vec3(9.64063685567787)), rotate(TransformKind::yrotate, 34.945434113689146),
+         scale({118.98901232279036, 137.75951600311862, 171.44186551255808}),
+         scale({0.0016165992815658072, 0.015777376647418778, 0.6650916654087091}),
+         rotate(TransformKind::yrotate, 39.10633567795952),
+         translate({-387.18579221517655, 41.817545423635636, -490.10194747416307})});
     const Vec3 origin{0.55721115204689875, 47.174279860472055, 16.551563000012983};
     const Vec3 direction{0.76349230764833165, -0.56015806689366721, 0.32140696360809529};
     Hit hit;
@@ -426,19 +433,14 @@ TEST(Triangles, AnIllConditionedMeshIsMetNearItsEdges) {
 // ray, started there, passed outside both faces.
 TEST(Triangles, ARayFromFarOffCrossesARidgeOfAnIllConditionedMesh) {
     ScratchDir dir;
-    const auto file = dir.path() / "ridge.obj";
-    write_file(file,
-               "v 1.25 0 0.25\nv 0 1 -0.25\nv 0 0 1\nv -0.25 0.25 -1\n"
-               "f 1 2 3\nf 2 1 4\n");
-    Scene s = scene_with_camera(camera_at({0, 0, 0}, {0, 0, -1}));
-    Primitive p = mesh(file);
-    p.transforms = {scale(Vec3(1131.8823735734179)),
-                    rotate(TransformKind::zrotate, 50.360224365951865),
-                    rotate(TransformKind::xrotate, 219.77232076200232),
-                    scale({0.52879878672746583, 55.724243021772345, 0.0012129687815898491}),
-                    translate({176.52827709637091, 38369.012926038988, 61.318712039527476})};
-    s.primitives.push_back(p);
-    auto prepared = prepare_scene(s).value();
+    auto prepared = prepared_mesh(
+        dir.path(),
+        "v 1.25 0 0.25\nv 0 1 -0.25\nv 0 0 1\nv -0.25 0.25 -1\n"
+        "f 1 2 3\nf 2 1 4\n",
+        {scale(Vec3(1131.8823735734179)), rotate(TransformKind::zrotate, 50.360224365951865),
+         rotate(TransformKind::xrotate, 219.77232076200232),
+         scale({0.52879878672746583, 55.724243021772345, 0.0012129687815898491}),
+         translate({176.52827709637091, 38369.012926038988, 61.318712039527476})});
     ASSERT_EQ(prepared->geometry->triangles->far_instances.size(), 1u);
     const Vec3 origin{186.84590082234729, 1336.1477506009321, 717.69544907414445};
     const Vec3 light{832.61665833632992, 1068.2992760750931, -529.00094949631796};
