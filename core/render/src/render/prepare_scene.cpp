@@ -448,9 +448,7 @@ Expected<std::shared_ptr<const PreparedScene>> prepare_scene(
 
 Expected<std::shared_ptr<const PreparedScene>> prepare_scene(
     Scene&& scene, std::shared_ptr<const PreparedScene> previous) {
-    auto owned = std::make_shared<const Scene>(std::move(scene));
-    const Scene& held = *owned;
-    return prepare(held, std::move(owned), std::move(previous));
+    return prepare_scene(std::make_shared<const Scene>(std::move(scene)), std::move(previous));
 }
 
 Expected<std::shared_ptr<const PreparedScene>> prepare_scene(
