@@ -892,10 +892,12 @@ class Parser final : private TokenCursor {
         }
         const std::string_view text = text_;
         const ParseOptions& options = options_;
-        const NameTable& names = names_;
+        // A copy each, made here: an include the parser meets in the first part
+        // may still mark this table while the parts are read.
+        const NameTable names = names_;
         const std::atomic<bool>& cancelled = parts.cancelled();
         const std::size_t properties = property_hint_;
-        parts.start(std::move(planned), [=, &options, &names, &cancelled](ScenePart& part) {
+        parts.start(std::move(planned), [=, &options, &cancelled](ScenePart& part) {
             // The whole text's counts, shared out by size with an eighth to spare:
             // arrays that grow as they go take 4 KiB page faults, 18 us each here.
             const double share =
