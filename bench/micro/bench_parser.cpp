@@ -8,6 +8,10 @@
 // its pages between parses, which measures the parser's own work.
 // "DenseColdNoMap" parses without the source map, as jtracer-cli does.
 //
+// A text of more than a MiB is read by several threads, a part each
+// (language/scene_parts.hpp): the parse figures are wall time, and each
+// "OneThread" figure the same parse with ParseOptions::threads = 1.
+//
 // "ValidateDense" is the checks that follow the parse (validate_scene, as
 // check_scene runs it), on the scene parsed without the map, in bytes of its
 // text a second so that it compares with the parse.
@@ -107,6 +111,15 @@ void BM_ParseDenseCold(benchmark::State& state) {
 void BM_ParseDenseColdNoMap(benchmark::State& state) {
     parse_with_cold_heap(state, dense_text(), {.source_map = false});
 }
+void BM_ParseNormalColdOneThread(benchmark::State& state) {
+    parse_with_cold_heap(state, normal_text(), {.threads = 1});
+}
+void BM_ParseDenseColdOneThread(benchmark::State& state) {
+    parse_with_cold_heap(state, dense_text(), {.threads = 1});
+}
+void BM_ParseDenseColdNoMapOneThread(benchmark::State& state) {
+    parse_with_cold_heap(state, dense_text(), {.source_map = false, .threads = 1});
+}
 void BM_ParseNormalWarm(benchmark::State& state) {
     parse_with_warm_heap(state, normal_text());
 }
@@ -128,11 +141,14 @@ void BM_ValidateDense(benchmark::State& state) {
                             static_cast<std::int64_t>(text.size()));
 }
 
-BENCHMARK(BM_ParseNormalCold)->Unit(benchmark::kMillisecond);
-BENCHMARK(BM_ParseDenseCold)->Unit(benchmark::kMillisecond);
-BENCHMARK(BM_ParseDenseColdNoMap)->Unit(benchmark::kMillisecond);
-BENCHMARK(BM_ParseNormalWarm)->Unit(benchmark::kMillisecond);
-BENCHMARK(BM_ParseDenseWarm)->Unit(benchmark::kMillisecond);
+BENCHMARK(BM_ParseNormalCold)->Unit(benchmark::kMillisecond)->UseRealTime();
+BENCHMARK(BM_ParseNormalColdOneThread)->Unit(benchmark::kMillisecond)->UseRealTime();
+BENCHMARK(BM_ParseDenseCold)->Unit(benchmark::kMillisecond)->UseRealTime();
+BENCHMARK(BM_ParseDenseColdOneThread)->Unit(benchmark::kMillisecond)->UseRealTime();
+BENCHMARK(BM_ParseDenseColdNoMap)->Unit(benchmark::kMillisecond)->UseRealTime();
+BENCHMARK(BM_ParseDenseColdNoMapOneThread)->Unit(benchmark::kMillisecond)->UseRealTime();
+BENCHMARK(BM_ParseNormalWarm)->Unit(benchmark::kMillisecond)->UseRealTime();
+BENCHMARK(BM_ParseDenseWarm)->Unit(benchmark::kMillisecond)->UseRealTime();
 BENCHMARK(BM_ValidateDense)->Unit(benchmark::kMillisecond);
 
 }  // namespace

@@ -114,6 +114,7 @@ void add_scene_value_flags(CLI::App& app, std::vector<std::string>& defines,
 ParseOptions parse_options_for(const RenderFlags& flags) {
     ParseOptions options = scene_value_options(flags.defines, flags.clock);
     options.source_map = false;
+    options.threads = static_cast<unsigned>(flags.threads);
     return options;
 }
 

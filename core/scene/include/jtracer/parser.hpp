@@ -79,6 +79,10 @@ struct ParseOptions {
     // How included files are read; empty: read_include_file. The fuzzer
     // confines it to files of its own.
     IncludeReader read_include = {};
+    // Threads that may read a large scene block, each a part of it
+    // (language/scene_parts.hpp); 0: one a hardware thread. The result is the
+    // same with any number.
+    unsigned threads = 0;
     // Fill ParseResult::primitive_readings (for a later parse at another clock).
     bool record_primitive_readings = false;
     // Take the primitives that read no `clock` from this earlier parse. Used
@@ -101,6 +105,9 @@ struct ParseResult {
     // Some value that was evaluated named `clock` (in the file or in a
     // --define): false means the scene is the same at every clock.
     bool reads_clock = false;
+    // How many parts of the scene block other threads read (ParseOptions::threads);
+    // the rest of the result is the same whatever it is.
+    std::size_t scene_parts_taken = 0;
     // With ParseOptions::record_primitive_readings: one per primitive of `scene`.
     std::vector<PrimitiveReading> primitive_readings;
     bool ok() const { return !has_errors(diagnostics); }

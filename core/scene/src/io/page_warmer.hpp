@@ -34,6 +34,9 @@ class PageWarmer {
 
     // Starts warming the reserved, unfilled [data, data + bytes).
     void start(void* data, std::size_t bytes);
+    // Whether a thread is warming an array (start may decline: a small array,
+    // no thread to be had, a system without the advice).
+    bool warming() const { return thread_.joinable(); }
     // How many bytes from `data` the filler has written: cheap to call often.
     void filled(std::size_t bytes) {
         if (bytes < next_report_) return;

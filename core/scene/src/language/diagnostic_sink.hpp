@@ -23,6 +23,8 @@ class DiagnosticSink {
     // True once the error cap was reached: parsing should stop.
     bool stopped() const { return stopped_; }
     int error_count() const { return errors_; }
+    // Whether anything at all was reported, notes and dropped warnings included.
+    bool any() const { return errors_ > 0 || warnings_ > 0 || !diagnostics_.empty(); }
     std::vector<Diagnostic> take() { return std::move(diagnostics_); }
 
   private:

@@ -2,6 +2,7 @@
 
 #include "language/quote.hpp"
 
+#include <algorithm>
 #include <array>
 #include <bit>
 #include <charconv>
@@ -541,13 +542,15 @@ std::size_t find_invalid_text_byte(std::string_view text) {
 }
 
 SourcePos position_of(std::string_view text, std::size_t offset) {
+    // memchr: a part of a large scene starts tens of MB into its text.
+    const std::size_t end = std::min(offset, text.size());
     int line = 1;
     std::size_t line_start = 0;
-    for (std::size_t i = 0; i < offset && i < text.size(); ++i) {
-        if (text[i] == '\n') {
-            ++line;
-            line_start = i + 1;
-        }
+    while (line_start < end) {
+        const void* nl = std::memchr(text.data() + line_start, '\n', end - line_start);
+        if (nl == nullptr) break;
+        ++line;
+        line_start = static_cast<std::size_t>(static_cast<const char*>(nl) - text.data()) + 1;
     }
     return {line, static_cast<int>(offset - line_start) + 1};
 }
