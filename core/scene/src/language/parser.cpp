@@ -183,7 +183,7 @@ void inherit_material(const Material& from, Material& to, std::uint32_t kept) {
     const auto properties = schema_of<Material>().properties;
     for (std::size_t i = 0; i < properties.size(); ++i) {
         if (kept & (1u << i)) continue;
-        std::visit([&](auto member) { to.*member = from.*member; }, properties[i].member);
+        copy_value(properties[i], from, to);
     }
 }
 
