@@ -86,11 +86,11 @@ void sort_spheres_along_a_curve(std::vector<WorldSphere>& spheres) {
 }
 
 // A scene handed over (prepare_scene(Scene&&)) still has its materials copied
-// while the copy stays this small (131,072 materials; their finishes are
+// while the copy stays this short (512 KiB of materials; their finishes are
 // shared with the scene's, not copied): a short list stays in the caches,
 // where reading each primitive's own material would walk the whole scene.
 // Past it, the materials are read where the scene holds them.
-constexpr std::size_t max_copied_materials = (std::size_t{4} << 20) / sizeof(Material);
+constexpr std::size_t max_copied_materials = 16384;
 
 // The world spheres' boxes and their magnitude are worked out on every core
 // in ranges of at least this many spheres: a sphere's box takes about 70 ns,
