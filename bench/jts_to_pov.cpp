@@ -107,11 +107,12 @@ void write_material(PovWriter& out, const jt::Material& m, const jt::Scene& scen
     // POV-Ray's diffuse is a number. A grey diffuse maps straight; a coloured
     // one is folded into the pigment, with the ambient scaled back so that
     // ambient * pigment is unchanged wherever the diffuse channel is not zero.
-    jt::Colour pigment = m.pigment, ambient = m.ambient;
-    double diffuse = std::max({m.diffuse.x, m.diffuse.y, m.diffuse.z});
-    if (diffuse > 0.0 && !(m.diffuse.x == m.diffuse.y && m.diffuse.y == m.diffuse.z)) {
+    jt::Colour pigment = m.pigment, ambient = m.finish->ambient;
+    double diffuse = std::max({m.finish->diffuse.x, m.finish->diffuse.y, m.finish->diffuse.z});
+    if (diffuse > 0.0 && !(m.finish->diffuse.x == m.finish->diffuse.y &&
+                           m.finish->diffuse.y == m.finish->diffuse.z)) {
         for (int i = 0; i < 3; ++i) {
-            double share = m.diffuse[i] / diffuse;
+            double share = m.finish->diffuse[i] / diffuse;
             pigment[i] *= share;
             ambient[i] = share > 0.0 ? ambient[i] / share : 0.0;
         }
@@ -119,37 +120,39 @@ void write_material(PovWriter& out, const jt::Material& m, const jt::Scene& scen
     // JTracer's transmission adds t times the transmitted ray to unchanged local
     // terms, as POV-Ray's transmit does for a black pigment (clear glass).
     auto colour = [&](const char* prefix, const jt::Colour& c) {
-        if (m.transmission > 0.0)
-            out.printf("%srgbt <%.9g, %.9g, %.9g, %.9g>", prefix, c.x, c.y, c.z, m.transmission);
+        if (m.finish->transmission > 0.0)
+            out.printf("%srgbt <%.9g, %.9g, %.9g, %.9g>", prefix, c.x, c.y, c.z,
+                       m.finish->transmission);
         else
             out.vector((std::string(prefix) + "rgb ").c_str(), c);
     };
-    const bool image = !m.image_map.empty() && mapping;
+    const bool image = !m.finish->image_map.empty() && mapping;
     out.printf(image && mapping->uv ? " texture { uv_mapping pigment { " : " texture { pigment { ");
     if (image) {
         // Bilinear and linear (gamma 1), like JTracer's; the bottom row is v = 0 in both.
-        const std::string path = std::filesystem::absolute(jt::asset_path(scene, m.image_map));
+        const std::string path =
+            std::filesystem::absolute(jt::asset_path(scene, m.finish->image_map));
         out.printf("image_map { %s \"%s\" gamma 1.0 interpolate 2",
                    std::string(image_format(path)).c_str(), path.c_str());
         if (!mapping->uv) out.printf(" map_type %d", mapping->map_type);
         out.printf(" }");
         if (!mapping->uv) write_rows(out, mapping->rows);
-    } else if (m.checker) {
+    } else if (m.finish->checker) {
         // The mirrored z flips the parity of floor(z) off the cube faces: the
         // two colours swap places.
-        colour("checker ", *m.checker);
+        colour("checker ", *m.finish->checker);
         colour(" ", pigment);
-        out.printf(" scale %.9g", m.checker_size);
+        out.printf(" scale %.9g", m.finish->checker_size);
     } else {
         colour("", pigment);
     }
     out.vector(" } finish { ambient rgb ", ambient);
-    out.printf(" diffuse %.9g brilliance %.9g", diffuse, 1.0 / m.diffuse_k);
-    if (mean(m.specular) > 0.0)
-        out.printf(" phong %.9g phong_size %.9g", mean(m.specular), m.specular_k);
-    if (m.reflection > 0.0) out.printf(" reflection { %.9g }", m.reflection);
+    out.printf(" diffuse %.9g brilliance %.9g", diffuse, 1.0 / m.finish->diffuse_k);
+    if (mean(m.finish->specular) > 0.0)
+        out.printf(" phong %.9g phong_size %.9g", mean(m.finish->specular), m.finish->specular_k);
+    if (m.finish->reflection > 0.0) out.printf(" reflection { %.9g }", m.finish->reflection);
     out.printf(" } }");
-    if (m.transmission > 0.0) out.printf(" interior { ior %.9g }", m.ior);
+    if (m.finish->transmission > 0.0) out.printf(" interior { ior %.9g }", m.finish->ior);
 }
 
 // POV-Ray's `matrix` lists the images of the x, y, z axes and the translation,
@@ -255,9 +258,9 @@ void write_primitive(PovWriter& out, const jt::Primitive& p, const jt::Scene& sc
         if (!normal) return;
         out.vector("plane { ", mirror(*normal));
         out.printf(", %.9g", plane->distance);
-        mapping = plane_mapping(*normal, p.material.map_size);
+        mapping = plane_mapping(*normal, p.material.finish->map_size);
     } else if (const auto* cylinder = jt::shape_if<jt::Cylinder>(&p.shape)) {
-        if (!p.material.image_map.empty()) {
+        if (!p.material.finish->image_map.empty()) {
             write_mapped_cylinder(out, *cylinder, p.material, scene);
             if (!p.transforms.empty()) write_matrix(out, world);
             out.printf(" }\n");

@@ -54,14 +54,16 @@ double mean(const jt::Colour& c) {
 // The body of a Tachyon texture: "AMBIENT a DIFFUSE d ... TEXFUNC 0".
 std::string texture_body(const jt::Material& m, const jt::Colour& ambient_light) {
     jt::Colour colour = m.pigment;
-    double diffuse = std::max({m.diffuse.x, m.diffuse.y, m.diffuse.z});
-    if (diffuse > 0.0) colour = m.pigment * m.diffuse / diffuse;
-    double ambient = mean(ambient_light * m.ambient * m.pigment);
+    double diffuse = std::max({m.finish->diffuse.x, m.finish->diffuse.y, m.finish->diffuse.z});
+    if (diffuse > 0.0) colour = m.pigment * m.finish->diffuse / diffuse;
+    double ambient = mean(ambient_light * m.finish->ambient * m.pigment);
     if (ambient > 0.0) ambient = mean(colour) > 0.0 ? ambient / mean(colour) : 0.0;
     TextWriter out;
-    out.printf("AMBIENT %.9g DIFFUSE %.9g SPECULAR %.9g OPACITY 1", ambient, diffuse, m.reflection);
-    if (mean(m.specular) > 0.0)
-        out.printf(" PHONG PLASTIC %.9g PHONG_SIZE %.9g", mean(m.specular), m.specular_k);
+    out.printf("AMBIENT %.9g DIFFUSE %.9g SPECULAR %.9g OPACITY 1", ambient, diffuse,
+               m.finish->reflection);
+    if (mean(m.finish->specular) > 0.0)
+        out.printf(" PHONG PLASTIC %.9g PHONG_SIZE %.9g", mean(m.finish->specular),
+                   m.finish->specular_k);
     out.triple(" COLOR ", colour);
     out.printf(" TEXFUNC 0");
     return out.text();
@@ -183,7 +185,7 @@ jt::Scene silhouette_scene(jt::Scene scene) {
         const int k = int(i % 7) + 1;
         jt::Material m;
         m.pigment = jt::Colour(k & 1, (k >> 1) & 1, (k >> 2) & 1);
-        m.ambient = jt::Colour(1.0);
+        m.finish.edit().ambient = jt::Colour(1.0);
         scene.primitives[i].material = m;
     }
     return scene;

@@ -72,7 +72,7 @@ KernelScene build(RTCDevice device, const jt::Scene& scene) {
     KernelScene k;
     k.bvh = rtcNewScene(device);
     auto reflection_of = [&](std::size_t primitive) {
-        return scene.primitives[primitive].material.reflection;
+        return scene.primitives[primitive].material.finish->reflection;
     };
     double extent = 1.0;
     if (!shapes.spheres.empty()) {

@@ -66,9 +66,9 @@ jt::Scene scene_of(const std::string& file, int copies, std::optional<double> sm
         mesh.smooth_angle = smooth_angle;
         jt::Primitive p{mesh, {}, {}};
         p.material.pigment = {0.9, 0.6, 0.2};
-        p.material.ambient = jt::Colour(0.3);
-        p.material.diffuse = jt::Colour(0.9);
-        p.material.specular = jt::Colour(0.5);
+        p.material.finish.edit().ambient = jt::Colour(0.3);
+        p.material.finish.edit().diffuse = jt::Colour(0.9);
+        p.material.finish.edit().specular = jt::Colour(0.5);
         if (copies > 1) {
             const double x = (i % 10 - 4.5) * 2.2, z = (i / 10 - 4.5) * 2.2;
             p.transforms = {{jt::TransformKind::scale, jt::Vec3(0.3), 0.0},

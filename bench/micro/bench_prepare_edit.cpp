@@ -26,7 +26,7 @@ jt::Scene spheres(int count) {
                                 0.2 + 0.3 * unit(rng)};
         jt::Material material;
         material.pigment = {unit(rng), unit(rng), unit(rng)};
-        material.diffuse = jt::Colour(0.8);
+        material.finish.edit().diffuse = jt::Colour(0.8);
         scene.primitives.push_back(jt::Primitive{sphere, material, {}});
     }
     scene.lights.push_back({{100, 200, 150}, jt::Colour(0.9)});

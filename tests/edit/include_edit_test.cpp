@@ -50,7 +50,7 @@ TEST_F(IncludeEdit, AValueOfAnIncludedFileIsWrittenIntoThatFile) {
     Scene edited = r.scene;
     shape_as<Sphere>(edited.primitives[1].shape).center.y = 5;
     edited.primitives[1].material.pigment = Colour(1, 0, 0);
-    edited.primitives[1].material.reflection = 0.25;  // never written: inserted there
+    edited.primitives[1].material.finish.edit().reflection = 0.25;  // never written: inserted there
     const SourceEditResult result = apply_scene_edits(main_text, r.source, r.scene, edited);
     ASSERT_TRUE(result.ok()) << result.error;
     EXPECT_EQ(result.text, main_text);

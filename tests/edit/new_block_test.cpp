@@ -127,7 +127,7 @@ TEST(NewBlock, AMeshScaledToASpheresSizeAndCentredWhereItGoes) {
 
 TEST(NewBlock, MaterialLightAndCamera) {
     const Material m = new_material();
-    EXPECT_GT(m.pigment.x * m.diffuse.x, 0.5);  // lit, it shows
+    EXPECT_GT(m.pigment.x * m.finish->diffuse.x, 0.5);  // lit, it shows
     const Scene scene = looking({0, 2, 10}, {0, 2, 0});
     const PointLight light = new_light(scene);
     EXPECT_GT(light.position.y, 2.0);  // above the camera

@@ -79,7 +79,7 @@ TEST(SourceEdit, NothingChangedGivesTheSameBytes) {
 TEST(SourceEdit, ReplacesOnlyTheValueInForce) {
     Scene edited = parse_ok(kScene).scene;
     edited.settings.height = 100;
-    edited.primitives[0].material.diffuse = Colour(0.25, 0.5, 1.0);
+    edited.primitives[0].material.finish.edit().diffuse = Colour(0.25, 0.5, 1.0);
     edited.lights[0].intensity = Colour(0.3, 0.2, 0.1);
     std::string expected = replace_once(kScene, "height:48;", "height:100;");
     expected = replace_once(expected, "diffuse: <0.5, 0.5, 0.5>;", "diffuse: <0.25, 0.5, 1>;");
@@ -107,7 +107,7 @@ TEST(SourceEdit, AnUnsetOptionalValueLosesItsStatements) {
     Scene edited = parse_ok(text).scene;
     ASSERT_TRUE(edited.cameras[1].focus_distance);
     edited.cameras[1].focus_distance.reset();
-    edited.primitives[0].material.checker.reset();
+    edited.primitives[0].material.finish.edit().checker.reset();
     EXPECT_EQ(save(text, edited), kScene);
 }
 
@@ -146,7 +146,7 @@ TEST(SourceEdit, SeveralInlineInsertionsAreSpacedOnce) {
 
 TEST(SourceEdit, MaterialPropertyNeverWrittenGoesToTheLastMaterialBlock) {
     Scene edited = parse_ok(kScene).scene;
-    edited.primitives[0].material.reflection = 0.5;
+    edited.primitives[0].material.finish.edit().reflection = 0.5;
     const std::string expected =
         replace_once(kScene, "            diffuse: <0.5, 0.5, 0.5>;  # last material block\n",
                      "            diffuse: <0.5, 0.5, 0.5>;  # last material block\n"

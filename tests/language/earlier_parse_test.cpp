@@ -55,13 +55,14 @@ EarlierParse marked_earlier(const std::string& text, ParseOptions options = at(0
     EXPECT_TRUE(first.ok());
     EarlierParse earlier{text, first.source.files, std::move(first.scene.primitives),
                          std::move(first.primitive_readings)};
-    for (Primitive& p : earlier.primitives) p.material.specular_k = 7.25;
+    for (Primitive& p : earlier.primitives) p.material.finish.edit().specular_k = 7.25;
     return earlier;
 }
 
 std::vector<bool> taken(const ParseResult& r) {
     std::vector<bool> out;
-    for (const Primitive& p : r.scene.primitives) out.push_back(p.material.specular_k == 7.25);
+    for (const Primitive& p : r.scene.primitives)
+        out.push_back(p.material.finish->specular_k == 7.25);
     return out;
 }
 

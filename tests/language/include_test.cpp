@@ -154,7 +154,7 @@ TEST_F(Include, PathsAreRelativeToTheNamingFile) {
     EXPECT_EQ(r.scene.settings.background_map, "parts/sky.png");
     ASSERT_EQ(r.scene.primitives.size(), 2u);
     EXPECT_EQ(shape_as<Mesh>(r.scene.primitives[0].shape).file, "models/m.obj");
-    EXPECT_EQ(r.scene.primitives[0].material.image_map, "parts/wood.png");
+    EXPECT_EQ(r.scene.primitives[0].material.finish->image_map, "parts/wood.png");
     EXPECT_EQ(shape_as<Mesh>(r.scene.primitives[1].shape).file, "/abs/m.obj");
     ASSERT_EQ(r.source.files.size(), 2u);
     EXPECT_EQ(r.source.files[1].name, (dir / "parts/b.jts").string());

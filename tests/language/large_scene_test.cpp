@@ -94,7 +94,7 @@ TEST(LargeScene, DiagnosticsInABigScene) {
 // thread while the parser fills them (io/page_warmer.hpp): every primitive
 // comes out as written, with or without the source map.
 TEST(LargeScene, PrimitivesFilledBesideTheirPageWarmerAreAsWritten) {
-    constexpr int count = 300000;  // ~84 MB of primitives, past the warmer's threshold
+    constexpr int count = 800000;  // ~77 MB of primitives, past the warmer's threshold
     ASSERT_GT(count * sizeof(Primitive), PageWarmer::smallest_warmed_bytes);
     std::string text = "scene {\n";
     for (int i = 0; i < count; ++i)

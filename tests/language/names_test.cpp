@@ -97,12 +97,12 @@ TEST(Names, NamedMaterialsApplyFirstThenThePrimitivesOwnBlocks) {
                                 "  sphere { material: shiny; material { pigment: <0, 1, 0>; } }\n"
                                 "}\n");
     EXPECT_EQ(r.scene.primitives.at(0).material.pigment, Vec3(1, 0, 0));
-    EXPECT_EQ(r.scene.primitives.at(0).material.reflection, 0.5);
+    EXPECT_EQ(r.scene.primitives.at(0).material.finish->reflection, 0.5);
     // The own block wins wherever the `material:` line stands.
-    EXPECT_EQ(r.scene.primitives.at(1).material.reflection, 0.25);
+    EXPECT_EQ(r.scene.primitives.at(1).material.finish->reflection, 0.25);
     EXPECT_EQ(r.scene.primitives.at(1).material.pigment, Vec3(1, 0, 0));
     EXPECT_EQ(r.scene.primitives.at(2).material.pigment, Vec3(0, 1, 0));
-    EXPECT_EQ(r.scene.primitives.at(2).material.reflection, 0.5);
+    EXPECT_EQ(r.scene.primitives.at(2).material.finish->reflection, 0.5);
     ASSERT_EQ(r.source.definitions.size(), 1u);
     ASSERT_TRUE(r.source.definitions[0].material_properties.has_value());
     EXPECT_EQ(r.source.definitions[0].material_properties->count, 2u);
@@ -152,7 +152,7 @@ TEST(Names, AMaterialBlockMissingItsBraceKeepsNothingFromTheNamedMaterial) {
         ASSERT_EQ(r.scene.primitives.size(), 2u);
         EXPECT_EQ(r.scene.primitives[0].material.pigment, Vec3(0, 1, 0));
         EXPECT_EQ(r.scene.primitives[1].material.pigment, Vec3(1, 0, 0)) << source_map;
-        EXPECT_EQ(r.scene.primitives[1].material.reflection, 0.5) << source_map;
+        EXPECT_EQ(r.scene.primitives[1].material.finish->reflection, 0.5) << source_map;
     }
 }
 
@@ -264,7 +264,7 @@ TEST(Names, EditingAnInheritedMaterialValueWritesThePrimitivesOwnBlock) {
         "scene { sphere { material: m; } }\n";
     ParseResult r = parse_clean(text);
     Scene edited = r.scene;
-    edited.primitives[0].material.reflection = 0.25;
+    edited.primitives[0].material.finish.edit().reflection = 0.25;
     SourceEditResult edit = apply_scene_edits(text, r.source, r.scene, edited);
     ASSERT_TRUE(edit.ok()) << edit.error;
     EXPECT_NE(edit.text.find("material m { reflection: 0.5; }"), std::string::npos) << edit.text;

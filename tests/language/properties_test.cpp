@@ -36,12 +36,12 @@ TEST(Defaults, EmptyBlocksGiveTheTableDefaults) {
     EXPECT_EQ(shape_as<Cylinder>(s.primitives[2].shape), (Cylinder{0.5, 1.0}));
     const Material& m = s.primitives[0].material;
     EXPECT_EQ(m.pigment, Colour(0));
-    EXPECT_EQ(m.ambient, Colour(0));
-    EXPECT_EQ(m.diffuse, Colour(0));
-    EXPECT_EQ(m.specular, Colour(0));
-    EXPECT_EQ(m.diffuse_k, 1.0);
-    EXPECT_EQ(m.specular_k, 64.0);
-    EXPECT_EQ(m.reflection, 0.0);
+    EXPECT_EQ(m.finish->ambient, Colour(0));
+    EXPECT_EQ(m.finish->diffuse, Colour(0));
+    EXPECT_EQ(m.finish->specular, Colour(0));
+    EXPECT_EQ(m.finish->diffuse_k, 1.0);
+    EXPECT_EQ(m.finish->specular_k, 64.0);
+    EXPECT_EQ(m.finish->reflection, 0.0);
     EXPECT_TRUE(s.primitives[0].transforms.empty());
     EXPECT_EQ(s.lights.at(0).position, Vec3(0));
     EXPECT_EQ(s.lights.at(0).intensity, Colour(0));
@@ -98,9 +98,9 @@ TEST(Colours, AreClippedToZeroOneWithAWarning) {
         ParseResult m = parse_scene("scene { sphere { material { " + name + ": <2, 0, 0>; } } }");
         EXPECT_EQ(m.diagnostics.size(), 1u) << name;
         EXPECT_EQ(m.scene.primitives.at(0).material.pigment.x +
-                      m.scene.primitives[0].material.ambient.x +
-                      m.scene.primitives[0].material.diffuse.x +
-                      m.scene.primitives[0].material.specular.x,
+                      m.scene.primitives[0].material.finish->ambient.x +
+                      m.scene.primitives[0].material.finish->diffuse.x +
+                      m.scene.primitives[0].material.finish->specular.x,
                   1.0)
             << name;
     }
@@ -171,9 +171,9 @@ TEST(Materials, ReflectionOutsideZeroOneIsClampedWithAWarning) {
     ParseResult r = parse_scene("scene { sphere { material { reflection: 1.5; } } }");
     EXPECT_EQ(brief(r.diagnostics),
               "1:41: warning: 'reflection' 1.5 is outside 0..1: clamped to 1");
-    EXPECT_EQ(r.scene.primitives.at(0).material.reflection, 1.0);
+    EXPECT_EQ(r.scene.primitives.at(0).material.finish->reflection, 1.0);
     ParseResult low = parse_scene("scene { sphere { material { reflection: -0.5; } } }");
-    EXPECT_EQ(low.scene.primitives.at(0).material.reflection, 0.0);
+    EXPECT_EQ(low.scene.primitives.at(0).material.finish->reflection, 0.0);
     EXPECT_EQ(low.diagnostics.size(), 1u);
 }
 

@@ -133,8 +133,8 @@ TEST(Showcase, UsesEveryFeature) {
             non_uniform_scale |= op.kind == TransformKind::scale &&
                                  (op.vector.x != op.vector.y || op.vector.y != op.vector.z);
         }
-        mirror |= p.material.reflection >= 0.5;
-        specular |= p.material.specular != Colour(0);
+        mirror |= p.material.finish->reflection >= 0.5;
+        specular |= p.material.finish->specular != Colour(0);
     }
     EXPECT_TRUE(rotation);
     EXPECT_TRUE(non_uniform_scale);

@@ -272,10 +272,10 @@ TEST_P(SourceRoundTrip, EditedValuesReadBackAsEdited) {
     for (Camera& c : edited.cameras)
         if (chance(2)) c.position.y += 0.5;
     for (Primitive& p : edited.primitives) {
-        if (chance(3)) p.material.reflection = 0.25;
+        if (chance(3)) p.material.finish.edit().reflection = 0.25;
         if (chance(3)) p.material.pigment = {0.5, 0.5, 0.5};
-        if (chance(4)) p.material.checker.reset();
-        if (chance(4)) p.material.transmission = 0.5;
+        if (chance(4)) p.material.finish.edit().checker.reset();
+        if (chance(4)) p.material.finish.edit().transmission = 0.5;
         if (!p.transforms.empty() && chance(2)) {
             TransformOp& op = p.transforms.front();
             const bool moves =

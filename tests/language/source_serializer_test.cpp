@@ -153,8 +153,8 @@ TEST(SourceSerializer, AValueChangedSinceParsingIsWrittenAsItsLiteral) {
 
 TEST(SourceSerializer, AChangeToANamedMaterialsValueGoesIntoThePrimitivesOwnBlock) {
     const std::string out = reserialized(kNamed, [](Scene& s) {
-        s.primitives[0].material.reflection = 0;       // the named material's 0.5
-        s.primitives[0].material.diffuse = {1, 1, 1};  // its own <1, 1, 1> * 0.5
+        s.primitives[0].material.finish.edit().reflection = 0;       // the named material's 0.5
+        s.primitives[0].material.finish.edit().diffuse = {1, 1, 1};  // its own <1, 1, 1> * 0.5
     });
     EXPECT_NE(out.find("        material: glossy;\n"
                        "        material {\n"
@@ -179,7 +179,7 @@ TEST(SourceSerializer, AnUnsetValueOverANamedMaterialsSetOneDropsTheName) {
         "define big = 2;\n"
         "material m { checker: <0, 0, 1>; checker_size: big; }\n"
         "scene { plane { material: m; material { diffuse_k: big; } } }\n",
-        [](Scene& s) { s.primitives[0].material.checker.reset(); });
+        [](Scene& s) { s.primitives[0].material.finish.edit().checker.reset(); });
     EXPECT_EQ(out.find("material: m;"), std::string::npos) << out;
     EXPECT_NE(out.find("            diffuse_k: big;\n"), std::string::npos) << out;
     EXPECT_NE(out.find("            checker_size: 2;\n"), std::string::npos) << out;
@@ -384,7 +384,7 @@ TEST(SourceSerializer, AnEditedValueFromAnIncludedFileWritesItsFileOutInPlace) {
     // changed: the change goes into the primitive's own block, written in
     // place with its file; the file defining the material stays included.
     const std::string inherited = files.reserialized(kMain, [](Scene& s) {
-        s.primitives.at(0).material.reflection = 0.5;
+        s.primitives.at(0).material.finish.edit().reflection = 0.5;
         s.settings.width = 10;
     });
     EXPECT_NE(inherited.find("include \"parts/defs.jts\";\n"), std::string::npos) << inherited;
@@ -646,7 +646,7 @@ TEST(SourceSerializer, IncludesOfEveryKindReadBackAsTheEditedScene) {
                 return items[random() % items.size()];
             };
             if (edit == 1 && !scene.primitives.empty())
-                any(scene.primitives).material.reflection = 0.5;
+                any(scene.primitives).material.finish.edit().reflection = 0.5;
             if (edit == 2 && !scene.primitives.empty()) scene.primitives.pop_back();
             if (edit == 3) scene.primitives.push_back(Primitive{Sphere{}, {}, {}});
             if (edit == 4) scene.primitives.insert(scene.primitives.begin(), Primitive{});

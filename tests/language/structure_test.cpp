@@ -215,9 +215,9 @@ TEST(Structure, SeveralMaterialBlocksEachSetOnlyWhatTheyName) {
         "} }");
     const Material& m = r.scene.primitives.at(0).material;
     EXPECT_EQ(m.pigment, Colour(0, 1, 0));
-    EXPECT_EQ(m.reflection, 0.5);
-    EXPECT_EQ(m.specular_k, 8.0);
-    EXPECT_EQ(m.diffuse_k, 1.0);
+    EXPECT_EQ(m.finish->reflection, 0.5);
+    EXPECT_EQ(m.finish->specular_k, 8.0);
+    EXPECT_EQ(m.finish->diffuse_k, 1.0);
 }
 
 TEST(Structure, LightsTakeNoMaterialOrTransform) {

@@ -43,7 +43,7 @@ inline Camera named_camera(std::string_view name) {
 
 inline Material reflective(double reflection) {
     Material m;
-    m.reflection = reflection;
+    m.finish.edit().reflection = reflection;
     return m;
 }
 

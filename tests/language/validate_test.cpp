@@ -182,7 +182,7 @@ TEST(Validate, CatchesOutOfRangeValuesInScenesBuiltInCode) {
     s.primitives.push_back(Primitive{Cylinder{0, 0},
                                      [] {
                                          Material m;
-                                         m.specular_k = 0;
+                                         m.finish.edit().specular_k = 0;
                                          return m;
                                      }(),
                                      {}});
@@ -251,7 +251,7 @@ TEST(Validate, ChunksOnThreadsFindTheSameAsOnePass) {
     ParseResult r = test::parse_clean(text);
     ASSERT_EQ(r.scene.primitives.size(), std::size_t{primitives});
     for (std::size_t i = 0; i < r.scene.primitives.size(); i += 7) {
-        r.scene.primitives[i].material.reflection = 2.0;
+        r.scene.primitives[i].material.finish.edit().reflection = 2.0;
         if (auto* sphere = std::get_if<Sphere>(&r.scene.primitives[i].shape)) sphere->radius = -1.0;
     }
     const std::vector<Diagnostic> one_pass = validate_scene(r.scene, r.source);

@@ -41,11 +41,11 @@ TEST(Analytic, LitSphereCentrePixel) {
     s.settings.ambient_light = {0.2, 0.2, 0.2};
     Material m;
     m.pigment = {0.8, 0.4, 0.2};
-    m.ambient = {0.5, 0.5, 0.5};
-    m.diffuse = {0.5, 0.5, 0.5};
-    m.specular = {0.3, 0.2, 0.1};
-    m.diffuse_k = 2.0;
-    m.specular_k = 3.0;
+    m.finish.edit().ambient = {0.5, 0.5, 0.5};
+    m.finish.edit().diffuse = {0.5, 0.5, 0.5};
+    m.finish.edit().specular = {0.3, 0.2, 0.1};
+    m.finish.edit().diffuse_k = 2.0;
+    m.finish.edit().specular_k = 3.0;
     s.primitives.push_back(sphere({0, 0, -5}, 1.0, m));
     s.lights.push_back({{0, 4, 0}, {0.6, 0.6, 0.6}});
     // L = normalize((0, 4, 4)) so N.L = 1/sqrt(2); R = 2 (N.L) N - L = (0, -1, 1)/sqrt(2),
@@ -53,7 +53,7 @@ TEST(Analytic, LitSphereCentrePixel) {
     const double n_dot_l = 1.0 / std::sqrt(2.0);
     const double r_dot_v = 1.0 / std::sqrt(2.0);
     Colour c = 0.2 * 0.5 * m.pigment + 0.6 * 0.5 * m.pigment * std::pow(n_dot_l, 1.0 / 2.0) +
-               0.6 * m.specular * std::pow(r_dot_v, 3.0);
+               0.6 * m.finish->specular * std::pow(r_dot_v, 3.0);
     EXPECT_EQ(at(render(s), 0, 0), expected(c));
     // By hand, red: 0.2*0.5*0.8 + 0.6*0.5*0.8*2^-0.25 + 0.6*0.3*2^-1.5
     //             = 0.08 + 0.20182 + 0.06364 = 0.34546, * 255 = 88.09 -> 88.
@@ -73,7 +73,7 @@ TEST(Analytic, ShadowedPlanePointGetsOnlyAmbient) {
     Scene s = scene_with_camera(camera_at({0, 1, 0}, {0, -1, 0}, {0, 0, -1}));
     s.settings.ambient_light = {0.5, 0.5, 0.5};
     Material floor = matte({0.8, 0.6, 0.4});
-    floor.ambient = {0.5, 0.5, 0.5};
+    floor.finish.edit().ambient = {0.5, 0.5, 0.5};
     s.primitives.push_back(plane({0, 1, 0}, -1.0, floor));
     s.lights.push_back({{0, 5, 0}, {0.5, 0.5, 0.5}});
     // Lit: ambient 0.5*0.5*pigment + 0.5*1*pigment*1.
@@ -101,7 +101,7 @@ TEST(Analytic, ReflectionOfAKnownColour) {
     Scene s = scene_with_camera(camera_at({0, 0, 0}, {0, 0, -1}));
     s.settings.ambient_light = {1, 1, 1};
     Material mirror;
-    mirror.reflection = 0.5;
+    mirror.finish.edit().reflection = 0.5;
     s.primitives.push_back(plane(z_axis, -5.0, mirror));
     const Colour ball{0.2, 0.6, 1.0};
     s.primitives.push_back(sphere({0, 0, 5}, 1.0, glowing(ball)));
@@ -122,8 +122,8 @@ TEST(Analytic, RecurseDepthLimitsBounces) {
     s.settings.ambient_light = {1, 1, 1};
     Material mirror;
     mirror.pigment = {0.1, 0.1, 0.1};
-    mirror.ambient = {1, 1, 1};
-    mirror.reflection = 0.5;
+    mirror.finish.edit().ambient = {1, 1, 1};
+    mirror.finish.edit().reflection = 0.5;
     s.primitives.push_back(plane(z_axis, -5.0, mirror));
     s.primitives.push_back(plane(z_axis, 5.0, mirror));
     for (int depth = 0; depth <= 3; ++depth) {

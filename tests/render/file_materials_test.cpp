@@ -94,9 +94,9 @@ TEST(FileMaterials, ObjPartsTakeKdAndMapKdAndTheRestKeepTheBlock) {
     // A part's colours replace the block's pattern too; (-2.5, 0.3) lies in an
     // odd cube of a checker of size 1, which "scene" shows.
     Material checkered = glowing(kBlock);
-    checkered.checker = Colour(0.9, 0.1, 0.1);
+    checkered.finish.edit().checker = Colour(0.9, 0.1, 0.1);
     EXPECT_EQ(probe(obj, "file", square(1), 0.3, checkered), expected({0.8, 0.4, 0.2}));
-    EXPECT_EQ(probe(obj, "scene", square(1), 0.3, checkered), expected(*checkered.checker));
+    EXPECT_EQ(probe(obj, "scene", square(1), 0.3, checkered), expected(*checkered.finish->checker));
     // "scene" (the default): the block everywhere, as in language 1.1.
     for (int k = 0; k < 6; ++k) {
         SCOPED_TRACE(k);
@@ -168,7 +168,7 @@ Image8 render_model(const fs::path& file, std::string_view materials, const Vec3
     Scene s = scene_with_camera(camera_at(eye, {0, 0, 0}, {0, 1, 0}, 45.0, 1.0), 48, 48);
     s.settings.ambient_light = Colour(0.4);
     Material m = glowing(Colour(1, 0, 1));
-    m.diffuse = Colour(0.7);
+    m.finish.edit().diffuse = Colour(0.7);
     Mesh mesh;
     mesh.file = file.string();
     mesh.materials = std::string(materials);

@@ -167,10 +167,10 @@ TEST(ImageMap, ATopDownBmpReadsAsTheSameBottomUpOne) {
     s.asset_folder = dir.string();
     s.settings.ambient_light = Colour(1.0);
     Material m = glowing({1, 1, 1});
-    m.image_map = "bottom_up.bmp";
+    m.finish.edit().image_map = "bottom_up.bmp";
     s.primitives = {sphere({0, 0, 0}, 1.5, m)};
     const Image8 from_bottom_up = render(s);
-    s.primitives[0].material.image_map = "top_down.bmp";
+    s.primitives[0].material.finish.edit().image_map = "top_down.bmp";
     const Image8 from_top_down = render(s);
     EXPECT_EQ(from_top_down, from_bottom_up);
     EXPECT_NE(at(from_bottom_up, 12, 4), at(from_bottom_up, 12, 20));  // the map's rows differ
@@ -336,7 +336,7 @@ TEST(ImageMap, OneFileIsLoadedOnceForEveryMaterialThatNamesIt) {
     Scene s = scene_with_camera(camera_at({0, 0, 5}, {0, 0, 0}));
     s.asset_folder = dir.string();
     Material a = glowing({1, 0, 0}), b = glowing({0, 1, 0});
-    a.image_map = b.image_map = "four.png";
+    a.finish.edit().image_map = b.finish.edit().image_map = "four.png";
     s.primitives = {sphere({0, 0, 0}, 1, a), sphere({3, 0, 0}, 1, b)};
     auto prepared = prepare_scene(s);
     ASSERT_TRUE(prepared) << prepared.error().message;

@@ -28,17 +28,17 @@ Scene mixed_scene() {
     s.settings.background = {0.1, 0.15, 0.3};
     s.settings.ambient_light = {0.2, 0.2, 0.2};
     Material floor = matte({0.6, 0.6, 0.6});
-    floor.reflection = 0.4;
+    floor.finish.edit().reflection = 0.4;
     s.primitives.push_back(plane({0, 1, 0}, 0.0, floor));
     for (int i = 0; i < 9; ++i) {
         Material m = matte({0.1 * i, 0.9 - 0.08 * i, 0.5});
-        m.specular = {0.5, 0.5, 0.5};
-        m.specular_k = 10.0 + 5.0 * i;
-        m.diffuse_k = i % 3 == 0 ? 2.0 : 1.0;
-        if (i % 3 == 1) m.reflection = 0.6;
+        m.finish.edit().specular = {0.5, 0.5, 0.5};
+        m.finish.edit().specular_k = 10.0 + 5.0 * i;
+        m.finish.edit().diffuse_k = i % 3 == 0 ? 2.0 : 1.0;
+        if (i % 3 == 1) m.finish.edit().reflection = 0.6;
         if (i % 3 == 2) {
-            m.transmission = 0.8;
-            m.ior = 1.5;
+            m.finish.edit().transmission = 0.8;
+            m.finish.edit().ior = 1.5;
         }
         s.primitives.push_back(sphere({i % 3 * 1.5 - 1.5, 0.5, i / 3 * 1.5 - 2.0}, 0.5, m));
     }
@@ -97,8 +97,8 @@ TEST(OwnedScene, RandomScenesRenderTheSameBytes) {
 // list, so such a scene is gathered even when handed over.
 TEST(OwnedScene, APatternGathersTheMaterials) {
     Scene scene = with_many_materials(mixed_scene());
-    scene.primitives[3].material.checker = Colour(0.1, 0.1, 0.1);
-    scene.primitives[3].material.checker_size = 0.2;
+    scene.primitives[3].material.finish.edit().checker = Colour(0.1, 0.1, 0.1);
+    scene.primitives[3].material.finish.edit().checker_size = 0.2;
     const auto owned = prepare_scene(Scene(scene)).value();
     EXPECT_FALSE(owned->scene);
     EXPECT_FALSE(owned->materials.empty());
@@ -136,9 +136,9 @@ TEST(OwnedScene, ASharedSceneIsReadInPlaceAndItsEditPatched) {
 
     Scene after = *before;
     after.primitives[4].material.pigment = {0.95, 0.1, 0.1};
-    after.primitives[3].material.transmission = 0.0;
-    after.primitives[6].material.transmission = 0.0;
-    after.primitives[9].material.transmission = 0.0;
+    after.primitives[3].material.finish.edit().transmission = 0.0;
+    after.primitives[6].material.finish.edit().transmission = 0.0;
+    after.primitives[9].material.finish.edit().transmission = 0.0;
     const auto shared_after = std::make_shared<const Scene>(after);
     const auto edited = prepare_scene_edit(*before, shared_after, previous).value();
     EXPECT_EQ(edited->materials_gathered, 4u);
@@ -152,7 +152,7 @@ TEST(OwnedScene, ASharedSceneIsReadInPlaceAndItsEditPatched) {
     // With no transmission left, the edit that brings one back is found by
     // looking at the changed objects alone.
     Scene glass = after;
-    glass.primitives[6].material.transmission = 0.8;
+    glass.primitives[6].material.finish.edit().transmission = 0.8;
     const auto shared_glass = std::make_shared<const Scene>(glass);
     const auto glazed = prepare_scene_edit(after, shared_glass, edited).value();
     EXPECT_EQ(glazed->materials_gathered, 1u);
@@ -161,7 +161,7 @@ TEST(OwnedScene, ASharedSceneIsReadInPlaceAndItsEditPatched) {
 
     // A pattern needs pattern spaces, which a scene read in place has none of.
     Scene checkered = after;
-    checkered.primitives[4].material.checker = Colour(0.1, 0.1, 0.1);
+    checkered.primitives[4].material.finish.edit().checker = Colour(0.1, 0.1, 0.1);
     const auto shared_checkered = std::make_shared<const Scene>(checkered);
     const auto gathered = prepare_scene_edit(after, shared_checkered, edited).value();
     EXPECT_EQ(gathered->materials_gathered, checkered.primitives.size());

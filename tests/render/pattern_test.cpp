@@ -12,8 +12,8 @@ const Colour kRed{1, 0, 0}, kBlue{0, 0, 1};
 
 Material checkered(double size = 1.0) {
     Material m = glowing(kRed);
-    m.checker = kBlue;
-    m.checker_size = size;
+    m.finish.edit().checker = kBlue;
+    m.finish.edit().checker_size = size;
     return m;
 }
 

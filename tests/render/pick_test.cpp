@@ -33,7 +33,7 @@ Scene id_scene(Scene scene) {
     for (std::size_t i = 0; i < scene.primitives.size(); ++i) {
         Material m;
         m.pigment = id_colour(static_cast<int>(i));
-        m.ambient = Colour(1.0);
+        m.finish.edit().ambient = Colour(1.0);
         scene.primitives[i].material = m;
     }
     scene.lights.clear();

@@ -18,11 +18,11 @@ Scene rows_scene(int rows = 6, int columns = 8) {
     s.settings.background = {0.1, 0.1, 0.2};
     s.settings.ambient_light = {0.2, 0.2, 0.2};
     Material floor = matte({0.7, 0.7, 0.7});
-    floor.reflection = 0.3;
+    floor.finish.edit().reflection = 0.3;
     s.primitives.push_back(plane({0, 1, 0}, 0.0, floor));
     for (int r = 0; r < rows; ++r) {
         Material m = matte({0.2 + 0.12 * r, 0.8 - 0.1 * r, 0.5});
-        m.specular = {0.4, 0.4, 0.4};
+        m.finish.edit().specular = {0.4, 0.4, 0.4};
         for (int c = 0; c < columns; ++c)
             s.primitives.push_back(sphere({c - columns / 2.0 + 0.5, 0.4, r - rows / 2.0}, 0.4, m));
     }
@@ -84,11 +84,11 @@ TEST(PrepareEdit, ManyMaterialsLightsAndSettingsAreStillAPatch) {
     const Scene before = rows_scene();
     const auto previous = prepare_scene(before).value();
     Scene after = before;
-    after.primitives[1].material.pigment = {0.1, 0.1, 0.9};  // first of a row
-    after.primitives[8].material.pigment = {0.9, 0.9, 0.1};  // last of a row
-    after.primitives[20].material.transmission = 0.7;        // shadows look past it now
-    after.primitives[20].material.ior = 1.4;
-    after.primitives[0].material.reflection = 0.0;  // the floor
+    after.primitives[1].material.pigment = {0.1, 0.1, 0.9};          // first of a row
+    after.primitives[8].material.pigment = {0.9, 0.9, 0.1};          // last of a row
+    after.primitives[20].material.finish.edit().transmission = 0.7;  // shadows look past it now
+    after.primitives[20].material.finish.edit().ior = 1.4;
+    after.primitives[0].material.finish.edit().reflection = 0.0;  // the floor
     after.lights[1].position = {-4, 6, 3};
     after.settings.background = {0.3, 0.1, 0.1};
     const Patched patched = edit_and_compare(before, previous, after);
@@ -100,7 +100,7 @@ TEST(PrepareEdit, ManyMaterialsLightsAndSettingsAreStillAPatch) {
 
     // Taking the transmission away again clears it.
     Scene back = after;
-    back.primitives[20].material.transmission = 0.0;
+    back.primitives[20].material.finish.edit().transmission = 0.0;
     const Patched undone = edit_and_compare(after, patched.scene, back);
     ASSERT_TRUE(undone.scene);
     EXPECT_FALSE(undone.scene->has_transmission);
@@ -126,7 +126,7 @@ TEST(PrepareEdit, AnythingButMaterialsPreparesTheWholeScene) {
 
     // A first pattern needs each primitive's pattern space.
     Scene checkered = before;
-    checkered.primitives[3].material.checker = Colour(0.0);
+    checkered.primitives[3].material.finish.edit().checker = Colour(0.0);
     const Patched c = edit_and_compare(before, previous, checkered);
     ASSERT_TRUE(c.scene);
     EXPECT_EQ(c.scene->materials_gathered, checkered.primitives.size());
@@ -134,7 +134,7 @@ TEST(PrepareEdit, AnythingButMaterialsPreparesTheWholeScene) {
 
     // Once there are pattern spaces, patterns are patched too.
     Scene second = checkered;
-    second.primitives[30].material.checker = Colour(0.2, 0.2, 0.9);
+    second.primitives[30].material.finish.edit().checker = Colour(0.2, 0.2, 0.9);
     const Patched s = edit_and_compare(checkered, c.scene, second);
     ASSERT_TRUE(s.scene);
     EXPECT_EQ(s.scene->materials_gathered, 1u);

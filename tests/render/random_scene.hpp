@@ -165,11 +165,11 @@ class SceneGenerator {
         Triangle t;
         Primitive p{t, material(), transforms()};
         if (chance(0.4)) {
-            p.material.transmission = uniform(0.3, 1.0);
-            p.material.ior = log_uniform(0.6, 2.2);
+            p.material.finish.edit().transmission = uniform(0.3, 1.0);
+            p.material.finish.edit().ior = log_uniform(0.6, 2.2);
             if (chance(0.7)) p.transforms.push_back({TransformKind::scale, mirror_scale(), 0.0});
         }
-        if (chance(0.3)) p.material.image_map = picture();
+        if (chance(0.3)) p.material.finish.edit().image_map = picture();
         const Vec3 target = size_ * point(1.2);
         const reference::Map object = reference::to_object(unflattened(p.transforms));
         auto corner = [&] {
@@ -391,15 +391,15 @@ class SceneGenerator {
     Material material() {
         Material m;
         m.pigment = bright_colour();
-        if (chance(0.5)) m.ambient = colour();
-        if (chance(0.85)) m.diffuse = bright_colour();
-        if (chance(0.5)) m.specular = colour();
-        if (chance(0.5)) m.diffuse_k = log_uniform(0.3, 4.0);
-        m.specular_k = log_uniform(1.0, 300.0);
-        if (chance(0.4)) m.reflection = chance(0.2) ? 1.0 : uniform(0, 1);
+        if (chance(0.5)) m.finish.edit().ambient = colour();
+        if (chance(0.85)) m.finish.edit().diffuse = bright_colour();
+        if (chance(0.5)) m.finish.edit().specular = colour();
+        if (chance(0.5)) m.finish.edit().diffuse_k = log_uniform(0.3, 4.0);
+        m.finish.edit().specular_k = log_uniform(1.0, 300.0);
+        if (chance(0.4)) m.finish.edit().reflection = chance(0.2) ? 1.0 : uniform(0, 1);
         if (extensions_ && chance(0.15)) {
-            m.transmission = uniform(0.3, 1.0);
-            m.ior = log_uniform(0.6, 2.2);
+            m.finish.edit().transmission = uniform(0.3, 1.0);
+            m.finish.edit().ior = log_uniform(0.6, 2.2);
         }
         return m;
     }
@@ -591,15 +591,22 @@ class SceneGenerator {
             property(name, value, is_default);
         };
         material_property("pigment", vec(m.pigment), m.pigment == d.pigment);
-        material_property("ambient", vec(m.ambient), m.ambient == d.ambient);
-        material_property("diffuse", vec(m.diffuse), m.diffuse == d.diffuse);
-        material_property("specular", vec(m.specular), m.specular == d.specular);
-        material_property("diffuse_k", num(m.diffuse_k), m.diffuse_k == d.diffuse_k);
-        material_property("specular_k", num(m.specular_k), m.specular_k == d.specular_k);
-        material_property("reflection", num(m.reflection), m.reflection == d.reflection);
-        if (m.transmission != d.transmission)
-            t += "transmission: " + num(m.transmission) + "; ior: " + num(m.ior) + "; ";
-        if (!m.image_map.empty()) t += "image_map: \"" + m.image_map + "\"; ";
+        material_property("ambient", vec(m.finish->ambient),
+                          m.finish->ambient == d.finish->ambient);
+        material_property("diffuse", vec(m.finish->diffuse),
+                          m.finish->diffuse == d.finish->diffuse);
+        material_property("specular", vec(m.finish->specular),
+                          m.finish->specular == d.finish->specular);
+        material_property("diffuse_k", num(m.finish->diffuse_k),
+                          m.finish->diffuse_k == d.finish->diffuse_k);
+        material_property("specular_k", num(m.finish->specular_k),
+                          m.finish->specular_k == d.finish->specular_k);
+        material_property("reflection", num(m.finish->reflection),
+                          m.finish->reflection == d.finish->reflection);
+        if (m.finish->transmission != d.finish->transmission)
+            t += "transmission: " + num(m.finish->transmission) + "; ior: " + num(m.finish->ior) +
+                 "; ";
+        if (!m.finish->image_map.empty()) t += "image_map: \"" + m.finish->image_map + "\"; ";
         t += "} ";
         if (!p.transforms.empty()) {
             const std::size_t split_at =

@@ -268,8 +268,9 @@ class Tracer {
                 else if (mesh->shading == kSmoothShading && mesh->smooth_angle)
                     q.corner_normals = generated_normals(*q.model, *mesh->smooth_angle);
             }
-            if (!p.material.image_map.empty()) q.picture = &files.pictures.at(p.material.image_map);
-            transmissive_ = transmissive_ || p.material.transmission > 0;
+            if (!p.material.finish->image_map.empty())
+                q.picture = &files.pictures.at(p.material.finish->image_map);
+            transmissive_ = transmissive_ || p.material.finish->transmission > 0;
             placed_.push_back(q);
         }
         if (!scene.settings.background_map.empty())
@@ -679,7 +680,7 @@ class Tracer {
                 if (c > 0 && q_is_mesh(k) &&
                     crossings[c] - crossings[c - 1] <= 1e-12 * crossings[c])
                     continue;
-                through *= transmissive_ ? placed_[k].material->transmission : 0.0;
+                through *= transmissive_ ? placed_[k].material->finish->transmission : 0.0;
             }
         }
         return through;
@@ -732,7 +733,7 @@ class Tracer {
         const Origin here{hit.placed, root.part, object_point, lifted};
         const Vec3 start = lifted ? p + 1e-7 * scale * ng : p;
 
-        Colour c = scene_.settings.ambient_light * m.ambient * pigment;
+        Colour c = scene_.settings.ambient_light * m.finish->ambient * pigment;
         for (const PointLight& light : scene_.lights) {
             if (light.radius > 0) {
                 c += disk_light(light, p, n, ng, v, m, pigment, start, here, scale, lifted, flags);
@@ -747,28 +748,32 @@ class Tracer {
                 light_through(start, to_light / distance, distance, here, scale, flags);
             if (!(through > 0)) continue;
             const Colour intensity = light.intensity * through;
-            c += intensity * m.diffuse * pigment * std::pow(n_dot_l, 1 / m.diffuse_k);
+            c += intensity * m.finish->diffuse * pigment *
+                 std::pow(n_dot_l, 1 / m.finish->diffuse_k);
             const Vec3 reflected = 2 * n_dot_l * n - l;
             const double r_dot_v = glm::dot(reflected, v);
-            if (r_dot_v > 0) c += intensity * m.specular * std::pow(r_dot_v, m.specular_k);
+            if (r_dot_v > 0)
+                c += intensity * m.finish->specular * std::pow(r_dot_v, m.finish->specular_k);
         }
         // §13.2: with glass in the scene, a branch whose weight in the pixel is
         // below 1e-6 is not traced.
         auto traced = [&](double factor) { return !transmissive_ || weight * factor >= 1e-6; };
-        if (depth < scene_.settings.recurse_depth && m.reflection > 0 && traced(m.reflection)) {
+        if (depth < scene_.settings.recurse_depth && m.finish->reflection > 0 &&
+            traced(m.finish->reflection)) {
             const Vec3 mirrored = glm::normalize(d - 2 * glm::dot(d, n) * n);
-            c += m.reflection * trace(start, mirrored, depth + 1, here, scale, lifted, flags,
-                                      weight * m.reflection);
+            c += m.finish->reflection * trace(start, mirrored, depth + 1, here, scale, lifted,
+                                              flags, weight * m.finish->reflection);
         }
-        if (depth < scene_.settings.recurse_depth && m.transmission > 0 && traced(m.transmission)) {
-            const double eta = entering ? 1 / m.ior : m.ior;
+        if (depth < scene_.settings.recurse_depth && m.finish->transmission > 0 &&
+            traced(m.finish->transmission)) {
+            const double eta = entering ? 1 / m.finish->ior : m.finish->ior;
             const double cosi = -glm::dot(d, n);
             const double k = 1 - eta * eta * (1 - cosi * cosi);
             const Vec3 t = glm::normalize(k < 0 ? d + 2 * cosi * n
                                                 : eta * d + (eta * cosi - std::sqrt(k)) * n);
             const Vec3 from = lifted ? p + (glm::dot(t, ng) > 0 ? 1e-7 : -1e-7) * scale * ng : p;
-            c += m.transmission *
-                 trace(from, t, depth + 1, here, scale, lifted, flags, weight * m.transmission);
+            c += m.finish->transmission * trace(from, t, depth + 1, here, scale, lifted, flags,
+                                                weight * m.finish->transmission);
         }
         if (depth == 0) flags.colour = c;
         return c;
@@ -819,10 +824,12 @@ class Tracer {
         }
         if (!(vis > 0)) return Colour(0.0);
         const Colour intensity = light.intensity * vis;
-        Colour c = intensity * m.diffuse * pigment * std::pow(n_dot_l, 1 / m.diffuse_k);
+        Colour c =
+            intensity * m.finish->diffuse * pigment * std::pow(n_dot_l, 1 / m.finish->diffuse_k);
         const Vec3 reflected = 2 * n_dot_l * n - l;
         const double r_dot_v = glm::dot(reflected, v);
-        if (r_dot_v > 0) c += intensity * m.specular * std::pow(r_dot_v, m.specular_k);
+        if (r_dot_v > 0)
+            c += intensity * m.finish->specular * std::pow(r_dot_v, m.finish->specular_k);
         return c;
     }
 

@@ -13,8 +13,8 @@ namespace {
 
 Material clear_glass(double transmission, double ior) {
     Material m;  // black pigment: only the transmitted ray shows
-    m.transmission = transmission;
-    m.ior = ior;
+    m.finish.edit().transmission = transmission;
+    m.finish.edit().ior = ior;
     return m;
 }
 
@@ -76,7 +76,7 @@ TEST(Refraction, AnOffCentreRayIsBent) {
     s.primitives.push_back(sphere({0.5, 0, -20}, 0.01, glowing({0.2, 0.4, 0.6})));
     EXPECT_EQ(at(render(s), 0, 0), (Rgb{0, 0, 0}));
     // Index 1 bends nothing.
-    s.primitives[0].material.ior = 1.0;
+    s.primitives[0].material.finish.edit().ior = 1.0;
     EXPECT_EQ(at(render(s), 0, 0), (Rgb{51, 102, 153}));
 }
 
@@ -115,8 +115,8 @@ TEST(Refraction, TransmittedLightAddsToLocalAndReflectedLight) {
     s.settings.background = {0, 0, 0.4};  // what the reflected ray sees
     Material glass = clear_glass(0.5, 1.5);
     glass.pigment = {0.2, 0, 0};
-    glass.ambient = Colour(1.0);
-    glass.reflection = 0.25;
+    glass.finish.edit().ambient = Colour(1.0);
+    glass.finish.edit().reflection = 0.25;
     // A thin slab-like plane pair would do too; a plane keeps the path simple:
     // enter the plane z = -5 (facing +z) and see the glowing plane behind it.
     s.primitives.push_back(plane({0, 0, 1}, -5.0, glass));

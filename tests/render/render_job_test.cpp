@@ -20,13 +20,13 @@ Scene busy_scene(int width, int height, int grid = 8) {
     s.settings.background = {0.1, 0.1, 0.2};
     s.settings.ambient_light = {0.2, 0.2, 0.2};
     Material floor = matte({0.7, 0.7, 0.7});
-    floor.reflection = 0.4;
+    floor.finish.edit().reflection = 0.4;
     s.primitives.push_back(plane({0, 1, 0}, 0.0, floor));
     for (int i = 0; i < grid; ++i)
         for (int j = 0; j < grid; ++j) {
             Material m = matte({0.2 + 0.1 * i, 0.9 - 0.1 * j, 0.5});
-            m.specular = {0.5, 0.5, 0.5};
-            m.reflection = (i + j) % 3 == 0 ? 0.6 : 0.0;
+            m.finish.edit().specular = {0.5, 0.5, 0.5};
+            m.finish.edit().reflection = (i + j) % 3 == 0 ? 0.6 : 0.0;
             Primitive p = (i + j) % 2 ? sphere({i - grid / 2.0, 0.45, j - grid / 2.0}, 0.45, m)
                                       : cylinder(0.3, 0.9, m);
             if ((i + j) % 2 == 0)

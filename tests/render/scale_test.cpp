@@ -20,13 +20,13 @@ Scene scaled_scene(double k) {
     s.settings.background = {0.2, 0.3, 0.5};
     s.settings.ambient_light = {0.2, 0.2, 0.2};
     Material floor = matte({0.8, 0.8, 0.8});
-    floor.ambient = {1, 1, 1};
-    floor.reflection = 0.3;
+    floor.finish.edit().ambient = {1, 1, 1};
+    floor.finish.edit().reflection = 0.3;
     s.primitives.push_back(plane({0, 1, 0}, 0.0, floor));
     s.primitives.push_back(plane({0, 0, 1}, -6.0 * k, matte({0.9, 0.7, 0.5})));
     Material ball = matte({0.9, 0.2, 0.2});
-    ball.specular = {1, 1, 1};
-    ball.reflection = 0.5;
+    ball.finish.edit().specular = {1, 1, 1};
+    ball.finish.edit().reflection = 0.5;
     s.primitives.push_back(sphere(k * Vec3(-1.2, 1, 0), k, ball));
     Primitive tube = cylinder(0.5, 2.0, matte({0.2, 0.3, 0.9}));
     tube.transforms = {rotate(TransformKind::zrotate, 90.0), translate({2.5, 0.5, 0.5}),

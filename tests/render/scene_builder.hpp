@@ -54,7 +54,7 @@ inline TransformOp rotate(TransformKind axis, double degrees) {
 inline Material matte(const Colour& pigment, const Colour& diffuse = Colour(1.0)) {
     Material m;
     m.pigment = pigment;
-    m.diffuse = diffuse;
+    m.finish.edit().diffuse = diffuse;
     return m;
 }
 
@@ -62,7 +62,7 @@ inline Material matte(const Colour& pigment, const Colour& diffuse = Colour(1.0)
 inline Material glowing(const Colour& pigment) {
     Material m;
     m.pigment = pigment;
-    m.ambient = Colour(1.0);
+    m.finish.edit().ambient = Colour(1.0);
     return m;
 }
 

@@ -160,10 +160,10 @@ TEST_F(SkyMap, AMirrorSphereReflectsTheMap) {
     Scene s = looking({0, 0, 1});
     s.settings.recurse_depth = 1;
     Material mirror;  // black: only the reflection shows
-    mirror.reflection = 1.0;
+    mirror.finish.edit().reflection = 1.0;
     s.primitives = {sphere({0, 0, 3}, 1.0, mirror)};
     EXPECT_EQ(at(render(s), 0, 0), map_texel(4, 2));
-    s.primitives[0].material.reflection = 0.5;
+    s.primitives[0].material.finish.edit().reflection = 0.5;
     EXPECT_EQ(at(render(s), 0, 0), (Rgb{29, 50, 61}));  // half of (58, 100, 122)
     // Without a bounce the mirror is black, not the map.
     s.settings.recurse_depth = 0;
@@ -177,8 +177,8 @@ TEST_F(SkyMap, RefractedRaysSeeTheMap) {
     s.settings.background_map = "sky.png";
     s.settings.recurse_depth = 2;  // in and out
     Material glass;
-    glass.transmission = 1.0;
-    glass.ior = 1.5;
+    glass.finish.edit().transmission = 1.0;
+    glass.finish.edit().ior = 1.5;
     s.primitives = {sphere({0, 0, 0}, 1.0, glass)};
     EXPECT_EQ(at(render(s), 0, 0), map_texel(4, 2));
     s.settings.recurse_depth = 1;  // still inside: black
@@ -199,7 +199,7 @@ TEST_F(SkyMap, ShadowsAndTheAmbientTermDoNotUseIt) {
     s.asset_folder = dir.string();
     s.settings.ambient_light = {0.2, 0.2, 0.2};
     Material floor = matte({0.8, 0.7, 0.6});
-    floor.ambient = Colour(1.0);
+    floor.finish.edit().ambient = Colour(1.0);
     s.primitives = {plane({0, 1, 0}, 0.0, floor), sphere({0, 1, 0}, 0.5, matte({1, 1, 1}))};
     // The sphere's shadow is centred at (1.2, 0, 0): pixel column 16.
     s.lights = {{{-6, 6, 0}, Colour(0.7)}};
@@ -242,7 +242,7 @@ TEST_F(SkyMap, EveryPathOfAMissGivesTheSameBytes) {
     EXPECT_EQ(render(planed, 1, 2), shortcut);
     // Reflections and samples, on one thread or three.
     s.settings.recurse_depth = 2;
-    s.primitives[0].material.reflection = 0.9;
+    s.primitives[0].material.finish.edit().reflection = 0.9;
     EXPECT_EQ(render(s, 4, 1), render(s, 4, 3));
     EXPECT_NE(render(s, 1, 1), shortcut);
 }
@@ -252,7 +252,7 @@ TEST_F(SkyMap, EveryPathOfAMissGivesTheSameBytes) {
 TEST_F(SkyMap, TheMapIsDecodedOnceAndShared) {
     Scene s = looking({0, 0, -1});
     Material m = glowing({1, 1, 1});
-    m.image_map = "sky.png";
+    m.finish.edit().image_map = "sky.png";
     s.primitives = {sphere({0, 0, -5}, 1.0, m)};
     const Expected<std::shared_ptr<const Texture>> held = load_texture(dir / "sky.png");
     ASSERT_TRUE(held);

@@ -209,10 +209,10 @@ TEST(SmoothNormals, AnIcosphereWithoutNormalsShadesAsTheTrueSphere) {
     Scene look = scene_of(mesh(obj, std::nullopt));
     look.settings.width = look.settings.height = 160;
     look.settings.ambient_light = Colour(0.2);
-    look.primitives[0].material.ambient = Colour(1.0);
+    look.primitives[0].material.finish.edit().ambient = Colour(1.0);
     save_png(render(look), "icosphere_flat.png");
     look.primitives[0] = mesh(obj, 60.0);
-    look.primitives[0].material.ambient = Colour(1.0);
+    look.primitives[0].material.finish.edit().ambient = Colour(1.0);
     save_png(render(look), "icosphere_smooth_angle_60.png");
 }
 

@@ -160,8 +160,8 @@ Scene glass_triangle_over_a_floor(const Primitive& glass) {
 // space, and the outside stays where M puts it.
 TEST(Triangles, AMirroredGlassTriangleRefractsAsItsOutwardNormalSays) {
     Material glass;  // black: only the transmitted ray shows
-    glass.transmission = 1.0;
-    glass.ior = 1.5;
+    glass.finish.edit().transmission = 1.0;
+    glass.finish.edit().ior = 1.5;
     // Counter-clockwise seen from +z; mirrored in x, its outward normal
     // M^-T (0, 0, 1) is still +z, though its world corners (5, -5), (-5, -5),
     // (5, 5) wind clockwise seen from there.
@@ -200,7 +200,7 @@ TEST(Triangles, ARayReflectedBehindItsFaceDoesNotMeetItsOwnTriangle) {
     s.settings.ambient_light = Colour(1.0);
     s.settings.background = {0, 0, 1};
     Material m = glowing({0.5, 0, 0});
-    m.reflection = 1.0;
+    m.finish.edit().reflection = 1.0;
     s.primitives.push_back(mesh(model, m, kSmoothShading));
     const Image8 image = render(s);
     // Half red of its own, and the blue background its reflection sees.
@@ -477,8 +477,8 @@ TEST(Triangles, AVertexSharedByFlatFacesIsLitAsTheFacesAroundIt) {
     ScratchDir dir;
     Material m;
     m.pigment = {1.0, 0.16, 0.25};
-    m.ambient = Colour(0.12);
-    m.diffuse = Colour(0.4);
+    m.finish.edit().ambient = Colour(0.12);
+    m.finish.edit().diffuse = Colour(0.4);
     const Rgb lit = expected(0.12 * m.pigment + 0.4 * m.pigment / std::sqrt(3.0));
     const Vec3 axes[] = {{0, 0, 1}, {0, 0, -1}, {1, 0, 0}, {-1, 0, 0}, {0, 1, 0}, {0, -1, 0}};
     for (const Vec3& axis : axes) {
@@ -512,8 +512,8 @@ TEST(Triangles, ASilhouetteVertexIsLitOnWhicheverFaceTheRayMeetsThere) {
     ScratchDir dir;
     Material m;
     m.pigment = {1.0, 0.5, 0.25};
-    m.ambient = Colour(0.1);
-    m.diffuse = Colour(0.8);
+    m.finish.edit().ambient = Colour(0.1);
+    m.finish.edit().diffuse = Colour(0.8);
     const Vec3 top{0, 0, 0.25};
     int back_faces = 0;
     for (const double degrees : {0, 20, 70, 90, 110, 160, 180, 200, 250, 270, 290, 340}) {

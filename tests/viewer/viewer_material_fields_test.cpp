@@ -56,21 +56,22 @@ TEST_F(ViewerMaterialFields, ACheckerCanBeSetEditedAndClearedAndAnImageMapNamed)
 
     ASSERT_TRUE(viewer.click(state, "checker"));
     viewer.frame(state);
-    ASSERT_TRUE(state.doc.scene.primitives[1].material.checker);
+    ASSERT_TRUE(state.doc.scene.primitives[1].material.finish->checker);
     EXPECT_NE(document_text(state.doc).find("checker: <0.1, 0.1, 0.1>;"), std::string::npos)
         << document_text(state.doc);
     ASSERT_TRUE(viewer.click(state, "checker"));
     viewer.frame(state);
-    EXPECT_FALSE(state.doc.scene.primitives[1].material.checker);
+    EXPECT_FALSE(state.doc.scene.primitives[1].material.finish->checker);
     EXPECT_EQ(document_text(state.doc).find("checker"), std::string::npos)
         << document_text(state.doc);
 
     ASSERT_TRUE(viewer.click(state, "image_map"));
     for (char c : std::string("maps/tiles.png")) ImGui::GetIO().AddInputCharacter(c);
     viewer.frame(state);
-    EXPECT_EQ(state.doc.scene.primitives[1].material.image_map, "") << "applied on Enter only";
+    EXPECT_EQ(state.doc.scene.primitives[1].material.finish->image_map, "")
+        << "applied on Enter only";
     viewer.press_key(state, keys::enter);
-    EXPECT_EQ(state.doc.scene.primitives[1].material.image_map, "maps/tiles.png");
+    EXPECT_EQ(state.doc.scene.primitives[1].material.finish->image_map, "maps/tiles.png");
     EXPECT_NE(document_text(state.doc).find("image_map: \"maps/tiles.png\";"), std::string::npos)
         << document_text(state.doc);
 }

@@ -158,7 +158,7 @@ TEST_F(ViewerNamesTime, AnInheritedFieldEditedInThePanelGoesIntoTheObjectsOwnMat
     viewer.frame(state);
     viewer.press_key(state, keys::enter);
     for (int i = 0; i < 3; ++i) viewer.frame(state);
-    EXPECT_EQ(state.doc.scene.primitives[0].material.reflection, 0.5);
+    EXPECT_EQ(state.doc.scene.primitives[0].material.finish->reflection, 0.5);
     const std::string text = document_text(state.doc);
     EXPECT_NE(text.find("material shiny { pigment: <0.9, 0.2, 0.1>; diffuse: <0.8, 0.8, 0.8>; "
                         "reflection: 0.25; }"),

@@ -220,8 +220,8 @@ TEST(RenderReuse, ManyColoursAreReadInPlaceAndAColourEditPatches) {
         Primitive p;
         p.shape = sphere;
         p.material.pigment = Colour(double(i) / (kColumns * kRows), 0.5, 0.5);
-        p.material.ambient = Colour(0.2, 0.2, 0.2);
-        p.material.diffuse = Colour(0.8, 0.8, 0.8);
+        p.material.finish.edit().ambient = Colour(0.2, 0.2, 0.2);
+        p.material.finish.edit().diffuse = Colour(0.8, 0.8, 0.8);
         scene.primitives.push_back(p);
     }
     const RenderOptions options = options_for(scene, true);

@@ -182,7 +182,8 @@ TEST_F(ViewerModelFiles, ReloadModelReadsAFileWhoseStampDidNotMove) {
 }
 
 TEST_F(ViewerModelFiles, AModelChangeKeepsTheUnsavedEdits) {
-    edit_scene(state, [](Scene& s) { s.primitives[0].material.ambient = Colour(0.5); });
+    edit_scene(state,
+               [](Scene& s) { s.primitives[0].material.finish.edit().ambient = Colour(0.5); });
     ASSERT_TRUE(model.run_until_complete(state));
     const Scene edited = state.doc.scene;
     const Image8 before = state.render.display;

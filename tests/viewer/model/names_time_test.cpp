@@ -121,9 +121,9 @@ TEST_F(ViewerNames, EditingAnInheritedFieldWritesTheObjectsOwnMaterialNeverTheSh
     open(kNamed);
     const std::size_t steps = state.history.undo.size();
     // The second sphere has no material block of its own: one is made.
-    edit_scene(state, [](Scene& s) { s.primitives[1].material.reflection = 0.75; });
+    edit_scene(state, [](Scene& s) { s.primitives[1].material.finish.edit().reflection = 0.75; });
     // The first has one: the value goes into it.
-    edit_scene(state, [](Scene& s) { s.primitives[0].material.reflection = 0.5; });
+    edit_scene(state, [](Scene& s) { s.primitives[0].material.finish.edit().reflection = 0.5; });
     const std::string text = document_text(state.doc);
     EXPECT_NE(text.find("material shiny {\n    pigment: <0.9, 0.2, 0.1>;\n    reflection: 0.25;"),
               std::string::npos)
@@ -138,8 +138,8 @@ TEST_F(ViewerNames, EditingAnInheritedFieldWritesTheObjectsOwnMaterialNeverTheSh
     ASSERT_TRUE(save_scene_in_place(state.doc));
     const ParseResult saved = parse_scene(read_file(state.doc.path));
     ASSERT_TRUE(saved.ok());
-    EXPECT_EQ(saved.scene.primitives[0].material.reflection, 0.5);
-    EXPECT_EQ(saved.scene.primitives[1].material.reflection, 0.75);
+    EXPECT_EQ(saved.scene.primitives[0].material.finish->reflection, 0.5);
+    EXPECT_EQ(saved.scene.primitives[1].material.finish->reflection, 0.75);
     EXPECT_EQ(saved.scene.primitives[1].material.pigment, Colour(0.9, 0.2, 0.1)) << "still shiny";
     EXPECT_EQ(state.history.undo.size(), steps + 2) << "one undo step an edit";
 }

@@ -92,7 +92,7 @@ bool material_editor(Material& m, const SceneDocument& doc, const BlockSource* p
     bool changed = edit_properties(m, doc, source_of);
     const FieldMark mark(&doc, source_of("image_map"));
     const bool typed =
-        edit_file_name("image_map", m.image_map,
+        edit_file_name("image_map", m.finish.edit().image_map,
                        "A PNG, JPEG or BMP file, relative to the scene's folder, mapped "
                        "onto the object (map_size is one tile); empty: none. Enter "
                        "applies it.");

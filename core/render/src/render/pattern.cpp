@@ -35,7 +35,7 @@ int wrap_index(long long i, int n) {
 }  // namespace
 
 bool has_pattern(const Material& m) {
-    return m.checker.has_value() || !m.image_map.empty();
+    return m.finish->checker.has_value() || !m.finish->image_map.empty();
 }
 
 Uv sphere_uv(const Sphere& sphere, const Vec3& p) {
@@ -106,8 +106,10 @@ Colour sample_bilinear_rows_clamped(const Texture& t, Uv uv) {
 
 Colour pattern_pigment(const Material& m, const Texture* image, const Shape& shape,
                        const Vec3& object_point, Uv surface) {
-    if (image) return sample_bilinear(*image, shape_uv(shape, m.map_size, object_point, surface));
-    if (m.checker && odd_cube(object_point, m.checker_size)) return *m.checker;
+    if (image)
+        return sample_bilinear(*image, shape_uv(shape, m.finish->map_size, object_point, surface));
+    if (m.finish->checker && odd_cube(object_point, m.finish->checker_size))
+        return *m.finish->checker;
     return m.pigment;
 }
 

@@ -33,8 +33,8 @@ std::optional<std::vector<std::uint32_t>> changed_materials(const Scene& before,
     for (std::size_t i = 0; i < after.primitives.size(); ++i) {
         const Primitive& a = before.primitives[i];
         const Primitive& b = after.primitives[i];
-        if (shape_is<Mesh>(b.shape) || !b.material.image_map.empty() || !(a.shape == b.shape) ||
-            a.transforms != b.transforms)
+        if (shape_is<Mesh>(b.shape) || !b.material.finish->image_map.empty() ||
+            !(a.shape == b.shape) || a.transforms != b.transforms)
             return std::nullopt;
         if (!(a.material == b.material)) changed.push_back(static_cast<std::uint32_t>(i));
     }
@@ -83,7 +83,9 @@ Expected<std::shared_ptr<const PreparedScene>> edit(const Scene& before, const S
         prepared->scene = std::move(owned);  // which holds the edited materials
         // Only an edit that may have taken the last transmission away walks
         // the whole scene.
-        const auto transmits = [](const Primitive& p) { return p.material.transmission > 0.0; };
+        const auto transmits = [](const Primitive& p) {
+            return p.material.finish->transmission > 0.0;
+        };
         prepared->has_transmission =
             std::any_of(changed->begin(), changed->end(),
                         [&](std::uint32_t i) { return transmits(scene.primitives[i]); }) ||
@@ -93,7 +95,7 @@ Expected<std::shared_ptr<const PreparedScene>> edit(const Scene& before, const S
         for (std::uint32_t i : *changed) set_material(*prepared, i, scene.primitives[i].material);
         prepared->has_transmission =
             std::any_of(prepared->materials.begin(), prepared->materials.end(),
-                        [](const Material& m) { return m.transmission > 0.0; });
+                        [](const Material& m) { return m.finish->transmission > 0.0; });
     }
     if (!(previous->lights == scene.lights)) {
         prepared->lights = scene.lights;

@@ -86,10 +86,11 @@ void sort_spheres_along_a_curve(std::vector<WorldSphere>& spheres) {
 }
 
 // A scene handed over (prepare_scene(Scene&&)) still has its materials copied
-// while the copy stays this small (about 19,000 materials): a short list stays
-// in the caches, where reading each primitive's own material would walk the
-// whole scene. Past it, the materials are read where the scene holds them.
-constexpr std::size_t max_copied_materials = (std::size_t{4} << 20) / sizeof(Material);
+// while the copy stays this short (512 KiB of materials; their finishes are
+// shared with the scene's, not copied): a short list stays in the caches,
+// where reading each primitive's own material would walk the whole scene.
+// Past it, the materials are read where the scene holds them.
+constexpr std::size_t max_copied_materials = 16384;
 
 // The world spheres' boxes and their magnitude are worked out on every core
 // in ranges of at least this many spheres: a sphere's box takes about 70 ns,
@@ -336,8 +337,9 @@ Expected<void> load_textures(const Scene& scene, PreparedScene& prepared,
     if (!prepared.pattern_space.empty())
         prepared.textures.assign(prepared.materials.size(), nullptr);
     for (std::size_t i = 0; i < prepared.materials.size(); ++i) {
-        if (prepared.materials[i].image_map.empty()) continue;
-        const std::filesystem::path path = asset_path(scene, prepared.materials[i].image_map);
+        if (prepared.materials[i].finish->image_map.empty()) continue;
+        const std::filesystem::path path =
+            asset_path(scene, prepared.materials[i].finish->image_map);
         const FileStamp stamp = file_stamp(path);
         auto texture = picture(prepared, i, previous, path, stamp, "image_map");
         if (!texture) return texture.error();
@@ -406,7 +408,7 @@ Expected<std::shared_ptr<const PreparedScene>> prepare(
         }
         for (const Primitive& p : scene.primitives)
             prepared->has_transmission =
-                prepared->has_transmission || p.material.transmission > 0.0;
+                prepared->has_transmission || p.material.finish->transmission > 0.0;
         prepared->pattern_space = pattern_spaces(scene.primitives, prepared->materials);
     };
     // The materials, the digest and the geometry are independent; for a

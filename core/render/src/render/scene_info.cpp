@@ -138,8 +138,8 @@ Expected<SceneInfo> scene_info(const Scene& scene) {
                                           : asset_path(scene, scene.settings.background_map);
     std::vector<std::filesystem::path> material_maps;
     for (const Primitive& p : scene.primitives)
-        if (!p.material.image_map.empty())
-            material_maps.push_back(asset_path(scene, p.material.image_map));
+        if (!p.material.finish->image_map.empty())
+            material_maps.push_back(asset_path(scene, p.material.finish->image_map));
     for (const std::filesystem::path& path : named_files(scene).images) {
         const Expected<std::shared_ptr<const Texture>> texture = load_texture(path);
         if (!texture) return texture.error();

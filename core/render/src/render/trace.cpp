@@ -43,7 +43,7 @@ double transmittance(const PreparedScene& scene, const Vec3& origin, const Vec3&
     while (through > 0.0 &&
            closest_hit(*scene.geometry, origin, direction, t_lower, hit, candidates, from) &&
            hit.t < t_max) {
-        through *= primitive_material(scene, hit.source).transmission;
+        through *= primitive_material(scene, hit.source).finish->transmission;
         t_lower = hit.t;
     }
     return through;
@@ -171,14 +171,16 @@ double disk_visibility(const PreparedScene& scene, const PointLight& light, cons
 // The local (non-reflected) light at a hit: ambient, then each light's diffuse
 // and specular terms when nothing shadows it. A triangle's shadow rays never
 // meet the triangle they leave (`own`): a smooth normal may face a light its
-// flat face turns away from (docs/language.md §13.5).
-Colour shade_hit(const PreparedScene& scene, const Material& m, const SurfaceHit& s,
-                 const Vec3& view, const PixelSample& sample, std::uint64_t& rays) {
+// flat face turns away from (docs/language.md §13.5). The pigment is the
+// material's, or the one its pattern or model file gives at the hit.
+Colour shade_hit(const PreparedScene& scene, const Finish& m, const Colour& pigment,
+                 const SurfaceHit& s, const Vec3& view, const PixelSample& sample,
+                 std::uint64_t& rays) {
     const Vec3& point = s.point;
     const Vec3& lifted = s.lifted;
     const Vec3& normal = s.normal;
     const Departure from{s.triangle, point};
-    Colour c = scene.settings.ambient_light * m.ambient * m.pigment;
+    Colour c = scene.settings.ambient_light * m.ambient * pigment;
     const Geometry& geometry = *scene.geometry;
     const std::vector<DirectionTable>* light_tables =
         scene.light_tables && !scene.light_tables->empty() ? scene.light_tables.get() : nullptr;
@@ -223,7 +225,7 @@ Colour shade_hit(const PreparedScene& scene, const Material& m, const SurfaceHit
         // pow(x, 1) is x exactly, and adding a zero term changes nothing: both
         // shortcuts leave every bit as the plain formula would.
         double diffuse_factor = m.diffuse_k == 1.0 ? n_dot_l : std::pow(n_dot_l, 1.0 / m.diffuse_k);
-        c += intensity * m.diffuse * m.pigment * diffuse_factor;
+        c += intensity * m.diffuse * pigment * diffuse_factor;
         if (m.specular == Colour(0.0)) continue;
         Vec3 r = 2.0 * n_dot_l * normal - l;
         double r_dot_v = glm::dot(r, view);
@@ -239,19 +241,15 @@ Colour shade_surface(const PreparedScene& scene, const SurfaceHit& s, const Vec3
     // and pattern (docs/language.md §14.5).
     if (s.triangle.instance != TriangleId::no_instance && scene.geometry->triangles->file_materials)
         if (const std::optional<Colour> pigment =
-                file_pigment(*scene.geometry->triangles, s.triangle, s.barycentric, s.uv)) {
-            Material own = m;
-            own.pigment = *pigment;
-            return shade_hit(scene, own, s, -d, sample, rays);
-        }
-    if (!has_pattern(m)) return shade_hit(scene, m, s, -d, sample, rays);
+                file_pigment(*scene.geometry->triangles, s.triangle, s.barycentric, s.uv))
+            return shade_hit(scene, *m.finish, *pigment, s, -d, sample, rays);
+    if (!has_pattern(m)) return shade_hit(scene, *m.finish, m.pigment, s, -d, sample, rays);
     // A scene with a pattern always gathers its materials, so material_of holds.
     const PatternSpace& space = scene.pattern_space[s.source];
-    Material patterned = m;
-    patterned.pigment =
+    const Colour patterned =
         pattern_pigment(m, scene.textures[scene.material_of[s.source]].get(), space.shape,
                         apply_point(space.to_object, s.point), Uv{s.uv.x, s.uv.y});
-    return shade_hit(scene, patterned, s, -d, sample, rays);
+    return shade_hit(scene, *m.finish, patterned, s, -d, sample, rays);
 }
 
 Vec3 mirror(const Vec3& d, const Vec3& n) {
@@ -277,7 +275,7 @@ Colour trace_branching(const PreparedScene& scene, const Vec3& o, const Vec3& d,
     if (s.kind == SurfaceHit::Kind::no_normal) return Colour(0.0);
     Colour c = shade_surface(scene, s, d, sample, rays);
     if (depth >= depth_limit) return c;
-    const Material& m = primitive_material(scene, s.source);
+    const Finish& m = *primitive_material(scene, s.source).finish;
     if (m.reflection > 0.0 && weight * m.reflection >= min_branch_weight)
         c += m.reflection * trace_branching(scene, s.lifted, mirror(d, s.normal), 0.0, depth + 1,
                                             depth_limit, weight * m.reflection, sample, rays,
@@ -340,7 +338,7 @@ Colour trace_ray(const PreparedScene& scene, const Vec3& origin, const Vec3& uni
             break;
         }
         keep(depth, shade_surface(scene, s, d, sample, rays));
-        const Material& m = primitive_material(scene, s.source);
+        const Finish& m = *primitive_material(scene, s.source).finish;
         if (depth >= depth_limit || !(m.reflection > 0.0)) break;
         bounces[depth].reflection = m.reflection;
         d = mirror(d, s.normal);

@@ -10,6 +10,7 @@
 #include <glm/vec3.hpp>
 
 #include "jtracer/boxed.hpp"
+#include "jtracer/shared.hpp"
 
 #include <cmath>
 #include <cstddef>
@@ -60,8 +61,13 @@ struct Camera {
     bool operator==(const Camera&) const = default;
 };
 
-struct Material {
-    Colour pigment{0.0};
+// Everything a material says but its base colour. The split follows what
+// scenes vary: a pigment differs from object to object, while the finish
+// (how light meets the surface, and the patterns laid on it) is most often
+// the same for thousands of objects. So a material holds its pigment inline
+// and its finish shared (shared.hpp): a million spheres of one finish hold
+// it once, and a primitive stays small.
+struct Finish {
     Colour ambient{0.0};
     Colour diffuse{0.0};
     Colour specular{0.0};
@@ -75,6 +81,15 @@ struct Material {
     double checker_size = 1.0;      // edge of one checker cube, object units
     std::string image_map;          // PNG, JPEG or BMP, relative to Scene::asset_folder; "": none
     double map_size = 1.0;          // size of one tile of a planar map
+
+    bool operator==(const Finish&) const = default;
+};
+
+// Read a finish property with material.finish->ambient; set one with
+// material.finish.edit().ambient = ..., which copies a shared finish first.
+struct Material {
+    Colour pigment{0.0};
+    Shared<Finish> finish;
 
     bool operator==(const Material&) const = default;
 };

@@ -93,9 +93,20 @@ template <>
 struct MemberTypes<PointLight> {
     using type = MemberOf<PointLight, int, double, Vec3>;
 };
+// A member of a part the block holds shared (Shared<Part>, shared.hpp): read
+// through the handle, set through edit(), which first copies a shared part.
+template <class Block, class Part, class T>
+struct SharedPartMember {
+    Shared<Part> Block::*part;
+    T Part::*member;
+};
+// A material's pigment is its own; every other property is its finish's.
+template <class T>
+using FinishMember = SharedPartMember<Material, Finish, T>;
 template <>
 struct MemberTypes<Material> {
-    using type = MemberOf<Material, double, Vec3, std::optional<Vec3>, std::string>;
+    using type = std::variant<Vec3 Material::*, FinishMember<double>, FinishMember<Vec3>,
+                              FinishMember<std::optional<Vec3>>, FinishMember<std::string>>;
 };
 template <>
 struct MemberTypes<TransformOp> {
@@ -103,6 +114,25 @@ struct MemberTypes<TransformOp> {
 };
 template <class Block>
 using Member = typename MemberTypes<Block>::type;
+
+// The value a member names in `block`: const when `block` is; a mutable
+// member of a shared part is the block's own copy (edit()).
+template <class Block, class T>
+constexpr T& member_ref(Block& block, T Block::*member) {
+    return block.*member;
+}
+template <class Block, class T>
+constexpr const T& member_ref(const Block& block, T Block::*member) {
+    return block.*member;
+}
+template <class Block, class Part, class T>
+T& member_ref(Block& block, SharedPartMember<Block, Part, T> member) {
+    return (block.*member.part).edit().*member.member;
+}
+template <class Block, class Part, class T>
+const T& member_ref(const Block& block, SharedPartMember<Block, Part, T> member) {
+    return (*(block.*member.part)).*member.member;
+}
 
 template <class Block>
 struct PropertySpec {
@@ -156,6 +186,23 @@ template <class Block>
 constexpr PropertySpec<Block> colour(std::string_view name, Vec3 Block::*member) {
     return {name, ValueKind::colour, member,
             ValueRange{.low = 0.0, .high = 1.0, .clamp_low = true, .clamp_high = true}};
+}
+// The same, for a property of a material's finish: &Finish::ambient.
+constexpr PropertySpec<Material> number(std::string_view name, double Finish::*member,
+                                        ValueRange range = {}) {
+    return {name, ValueKind::number, FinishMember<double>{&Material::finish, member}, range};
+}
+constexpr PropertySpec<Material> colour(std::string_view name, Vec3 Finish::*member) {
+    return {name, ValueKind::colour, FinishMember<Vec3>{&Material::finish, member},
+            ValueRange{.low = 0.0, .high = 1.0, .clamp_low = true, .clamp_high = true}};
+}
+constexpr PropertySpec<Material> optional_colour(std::string_view name,
+                                                 std::optional<Vec3> Finish::*member) {
+    return {name, ValueKind::colour, FinishMember<std::optional<Vec3>>{&Material::finish, member},
+            ValueRange{.low = 0.0, .high = 1.0, .clamp_low = true, .clamp_high = true}};
+}
+constexpr PropertySpec<Material> string(std::string_view name, std::string Finish::*member) {
+    return {name, ValueKind::string, FinishMember<std::string>{&Material::finish, member}};
 }
 // A colour with no default: unset means the feature is off.
 template <class Block>
@@ -270,19 +317,19 @@ inline constexpr ValueRange kFraction{
 
 inline constexpr std::array<PropertySpec<Material>, 13> kMaterial{{
     colour("pigment", &Material::pigment),
-    colour("ambient", &Material::ambient),
-    colour("diffuse", &Material::diffuse),
-    colour("specular", &Material::specular),
-    number("diffuse_k", &Material::diffuse_k, kPositive),
-    number("specular_k", &Material::specular_k, kPositive),
-    number("reflection", &Material::reflection, kFraction),
+    colour("ambient", &Finish::ambient),
+    colour("diffuse", &Finish::diffuse),
+    colour("specular", &Finish::specular),
+    number("diffuse_k", &Finish::diffuse_k, kPositive),
+    number("specular_k", &Finish::specular_k, kPositive),
+    number("reflection", &Finish::reflection, kFraction),
     // Extensions (docs/language.md §13.1).
-    only_when_set(number("transmission", &Material::transmission, kFraction)),
-    only_when_set(number("ior", &Material::ior, kPositive)),
-    only_when_set(optional_colour("checker", &Material::checker)),
-    only_when_set(number("checker_size", &Material::checker_size, kPositive)),
-    only_when_set(string("image_map", &Material::image_map)),
-    only_when_set(number("map_size", &Material::map_size, kPositive)),
+    only_when_set(number("transmission", &Finish::transmission, kFraction)),
+    only_when_set(number("ior", &Finish::ior, kPositive)),
+    only_when_set(optional_colour("checker", &Finish::checker)),
+    only_when_set(number("checker_size", &Finish::checker_size, kPositive)),
+    only_when_set(string("image_map", &Finish::image_map)),
+    only_when_set(number("map_size", &Finish::map_size, kPositive)),
 }};
 
 inline constexpr std::array<TransformOpSpec, 5> kTransformOps{{
@@ -455,16 +502,25 @@ constexpr const PropertySpec<Block>* find_property(std::string_view name) {
 // --- values -----------------------------------------------------------------
 
 // Calls f(value) with a reference to the member the property sets in `block`:
-// an int&, double&, Vec3& or std::string& (const when `block` is const).
+// an int&, double&, Vec3& or std::string& (const when `block` is const; a
+// mutable one of a material's finish makes the finish the material's own).
 template <class Block, class BlockRef, class F>
 decltype(auto) with_member(const PropertySpec<Block>& property, BlockRef& block, F&& f) {
-    return std::visit([&](auto member) -> decltype(auto) { return f(block.*member); },
+    return std::visit([&](auto member) -> decltype(auto) { return f(member_ref(block, member)); },
                       property.member);
 }
 
 template <class Block>
 bool same_value(const PropertySpec<Block>& property, const Block& a, const Block& b) {
-    return std::visit([&](auto member) { return a.*member == b.*member; }, property.member);
+    return std::visit([&](auto member) { return member_ref(a, member) == member_ref(b, member); },
+                      property.member);
+}
+
+// Sets the property in `to` to its value in `from`.
+template <class Block>
+void copy_value(const PropertySpec<Block>& property, const Block& from, Block& to) {
+    std::visit([&](auto member) { member_ref(to, member) = member_ref(from, member); },
+               property.member);
 }
 
 // True when `block` holds the property's default (its member's initial value).

@@ -58,14 +58,14 @@ std::string renamed_copy(const SceneText& s, const BlockSource& block, const std
 }
 
 bool has_writable_strings(const Primitive& primitive) {
-    return is_writable_string(primitive.material.image_map);
+    return is_writable_string(primitive.material.finish->image_map);
 }
 
 }  // namespace
 
 Expected<std::string> add_primitive(const SceneText& scene, const Primitive& primitive) {
     if (!has_writable_strings(primitive))
-        return Error{"the image_map \"" + primitive.material.image_map +
+        return Error{"the image_map \"" + primitive.material.finish->image_map +
                      "\" cannot be written in a .jts string"};
     const std::vector<std::string> lines = block_lines(primitive);
     // With the objects: after the last one, else before the first light.
@@ -162,8 +162,8 @@ Expected<std::string> add_child_block(const SceneText& scene, std::size_t primit
 
 Expected<std::string> add_material_block(const SceneText& scene, std::size_t primitive,
                                          const Material& material) {
-    if (!is_writable_string(material.image_map))
-        return Error{"the image_map \"" + material.image_map +
+    if (!is_writable_string(material.finish->image_map))
+        return Error{"the image_map \"" + material.finish->image_map +
                      "\" cannot be written in a .jts string"};
     return add_child_block(scene, primitive, schema_of<Material>().keyword, block_lines(material));
 }

@@ -67,13 +67,12 @@ std::string_view keyword_of(ShapeKind kind) {
 }
 
 Material new_material() {
-    Material m;
-    m.pigment = Colour{0.8};
-    m.ambient = Colour{0.2};
-    m.diffuse = Colour{0.8};
-    m.specular = Colour{0.3};
-    m.specular_k = 32.0;
-    return m;
+    Finish finish;
+    finish.ambient = Colour{0.2};
+    finish.diffuse = Colour{0.8};
+    finish.specular = Colour{0.3};
+    finish.specular_k = 32.0;
+    return Material{.pigment = Colour{0.8}, .finish = finish};
 }
 
 namespace {

@@ -165,7 +165,7 @@ NamedFiles named_files(const Scene& scene) {
     add(files.images, scene.settings.background_map);
     for (const Primitive& p : scene.primitives) {
         if (const auto* mesh = shape_if<Mesh>(&p.shape)) add(files.models, mesh->file);
-        add(files.images, p.material.image_map);
+        add(files.images, p.material.finish->image_map);
     }
     return files;
 }

@@ -9,6 +9,7 @@
 
 #include "io/page_warmer.hpp"
 #include "io/reserve_records.hpp"
+#include "jtracer/finish_table.hpp"
 #include "jtracer/schema.hpp"
 #include "language/define_value.hpp"
 #include "language/expression.hpp"
@@ -184,7 +185,7 @@ void inherit_material(const Material& from, Material& to, std::uint32_t kept) {
     const auto properties = schema_of<Material>().properties;
     for (std::size_t i = 0; i < properties.size(); ++i) {
         if (kept & (1u << i)) continue;
-        std::visit([&](auto member) { to.*member = from.*member; }, properties[i].member);
+        copy_value(properties[i], from, to);
     }
 }
 
@@ -853,10 +854,12 @@ class Parser final : private TokenCursor {
             BlockSource primitive_block;
             if (!open_block(primitive_block, keyword_of(primitive.shape))) return;
             in_primitive_ = true;
+            primitive.material.finish = take_scratch_finish();
             read_properties(primitive_block, 0,
                             [&](OpenBlock& open) { parse_primitive_body(primitive, open); });
             in_primitive_ = false;
             if (!keep_primitives_) return;
+            share_finish(primitive.material);
             if (into.placed < into.primitives.size())
                 into.primitives[into.placed] = std::move(primitive);
             else
@@ -1014,6 +1017,25 @@ class Parser final : private TokenCursor {
         reading_->next(*cur_);
         reading_->next(*next_);
         return true;
+    }
+
+    // A finish of the parser's own, at its default value, for a primitive's
+    // material blocks to write into: reading a primitive allocates a finish
+    // only when it is one not met before (share_finish keeps that one).
+    Shared<Finish> take_scratch_finish() {
+        if (scratch_finish_.unique())
+            scratch_finish_.edit() = Finish{};
+        else
+            scratch_finish_ = Shared<Finish>(Finish{});
+        return std::move(scratch_finish_);
+    }
+
+    // Makes the material share an equal finish met before; when it does, the
+    // finish it was read into is the scratch again.
+    void share_finish(Material& material) {
+        Shared<Finish> read = material.finish;
+        finishes_.share(material.finish);
+        if (!material.finish.shares_with(read)) scratch_finish_ = std::move(read);
     }
 
     // A primitive's children go straight to the scene's array of child records:
@@ -1296,6 +1318,7 @@ class Parser final : private TokenCursor {
                 [&] { block_in_property_block(block); });
         });
         if (!claimed) return;
+        finishes_.share(material.finish);
         Symbol& symbol = names_.add(name.text);
         symbol.kind = Symbol::Kind::material;
         symbol.material = material;
@@ -1340,6 +1363,8 @@ class Parser final : private TokenCursor {
     // The property being read, reused: read_property sets all of it, and a
     // fresh one cleared 136 bytes per property first.
     Property property_;
+    FinishTable finishes_;           // the primitives' finishes, each value once
+    Shared<Finish> scratch_finish_;  // see take_scratch_finish
 };
 
 }  // namespace

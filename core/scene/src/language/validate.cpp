@@ -382,15 +382,17 @@ class Validator {
     // render would give; each file is decoded once however many materials
     // name it, and the render takes it from memory (texture.hpp).
     void check_image_map(const Material& m, const BlockSource* block) {
-        if (m.image_map.empty()) return;
+        if (m.finish->image_map.empty()) return;
         const SourcePos pos = where_material(block, "image_map");
-        if (m.checker) warning(pos, "'image_map' and 'checker' are both set: the image map wins");
+        if (m.finish->checker)
+            warning(pos, "'image_map' and 'checker' are both set: the image map wins");
         std::unique_lock lock(files_.mutex);
-        auto known = files_.images.find(m.image_map);
+        auto known = files_.images.find(m.finish->image_map);
         if (known == files_.images.end()) {
-            auto texture = load_texture(asset_path(scene_, m.image_map));
+            auto texture = load_texture(asset_path(scene_, m.finish->image_map));
             known =
-                files_.images.emplace(m.image_map, texture ? "" : texture.error().message).first;
+                files_.images.emplace(m.finish->image_map, texture ? "" : texture.error().message)
+                    .first;
         }
         const std::string& problem = known->second;
         lock.unlock();
