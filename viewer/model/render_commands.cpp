@@ -218,4 +218,9 @@ bool waiting_for_workers(const FileState& files, const RenderState& render) {
            render.renderer.passes_since_start() == 0;
 }
 
+std::chrono::milliseconds workers_frame_wait(const FileState& files, const RenderState& render) {
+    const bool render_running = render.started && !render.paused && render.renderer.active();
+    return files.loader.in_flight() && !render_running ? idle_frame_wait : worker_frame_wait;
+}
+
 }  // namespace jt::view

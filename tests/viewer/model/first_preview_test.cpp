@@ -130,6 +130,26 @@ TEST(Wakeup, FinishedLoadWakesTheLoopAndEndsTheWait) {
     EXPECT_TRUE(state.doc.loaded);
 }
 
+// While a file loads and no render runs, nothing on screen changes until the
+// loader wakes the loop: the loop sleeps as long as when idle, leaving the
+// cores to the load (with software OpenGL a frame costs tens of ms of CPU).
+TEST(Wakeup, ALoadWithNoRenderRunningSleepsAsLongAsIdle) {
+    const std::filesystem::path file = make_scratch_dir("jt_wakeup_load") / "spheres.jts";
+    std::string text = "cameras { perspective_camera { } }\nscene {\n";
+    for (int i = 0; i < 40'000; ++i)
+        text += "sphere { center: <" + std::to_string(i) + ", 0, 0>; radius: 1; }\n";
+    std::ofstream(file) << text << "}\n";
+    AppState state(test_config());
+    EXPECT_EQ(workers_frame_wait(state.files, state.render), worker_frame_wait);
+    request_open(state, file);
+    // Checked at once: parsing 40,000 spheres takes tens of milliseconds.
+    ASSERT_TRUE(state.files.loader.in_flight());
+    EXPECT_TRUE(waiting_for_workers(state.files, state.render));
+    EXPECT_EQ(workers_frame_wait(state.files, state.render), idle_frame_wait);
+    EXPECT_GT(idle_frame_wait, worker_frame_wait);
+    state.files.loader.wait();
+}
+
 TEST(FirstPreview, AnOpenedSceneIsNotValidatedAgainBeforeItsRender) {
     // The "top" camera's aspect no longer matches the image: a warning, so
     // that the diagnostics the loader found are not trivially empty.
