@@ -106,7 +106,7 @@ void pace(const AppState& state, Clock::time_point frame_start) {
             frame_start + std::chrono::microseconds(static_cast<long>(frame_interval_ms * 1000)));
     const std::uint64_t seen = state.wakeup.count();
     if (wait_for_workers && waiting_for_workers(state.files, state.render))
-        state.wakeup.wait(seen, Clock::now() + workers_frame_wait(state.files, state.render));
+        state.wakeup.wait(seen, Clock::now() + workers_frame_wait(state));
 }
 
 Timing frames_until_first_pass(HeadlessViewer& viewer, AppState& state, Clock::time_point t0,

@@ -196,9 +196,7 @@ int run_window(const Arguments& args) {
                      !app.time.playing && !args.exit_when_done)
                 window.wait_events(std::chrono::duration<double>(idle_frame_wait).count());
             else if (waiting_for_workers(app.files, app.render))
-                window.wait_events(
-                    std::chrono::duration<double>(workers_frame_wait(app.files, app.render))
-                        .count());
+                window.wait_events(std::chrono::duration<double>(workers_frame_wait(app)).count());
             else
                 window.poll_events();
             // The window's close button asks like Esc does when edits are unsaved.

@@ -60,9 +60,10 @@ inline constexpr std::chrono::milliseconds idle_frame_wait{200};
 inline constexpr std::chrono::milliseconds worker_frame_wait{50};
 
 // The sleep while waiting_for_workers: idle_frame_wait for a load while no
-// render runs (nothing on screen changes until the loader wakes the loop, and
-// with software OpenGL each frame drawn meanwhile takes a core from the parse,
-// the validation and the preparation ahead), worker_frame_wait otherwise.
-std::chrono::milliseconds workers_frame_wait(const FileState& files, const RenderState& render);
+// render runs and nothing else moves (an object drag, the clock playing):
+// nothing on screen changes until the loader wakes the loop, and with software
+// OpenGL each frame drawn meanwhile takes a core from the parse, the
+// validation and the preparation ahead. worker_frame_wait otherwise.
+std::chrono::milliseconds workers_frame_wait(const AppState& state);
 
 }  // namespace jt::view
