@@ -2,6 +2,7 @@
 
 #include "jtracer/frontend/command_line.hpp"
 #include "jtracer/frontend/render_flags.hpp"
+#include "jtracer/parallel_chunks.hpp"
 #include "jtracer/scene_file.hpp"
 #include "jtracer/scene_info.hpp"
 #include "jtracer/validate.hpp"
@@ -199,7 +200,8 @@ int run_info_command(int argc, char** argv) {
         std::cerr << "jtracer-cli info: " << loaded.error().message << "\n";
         return exit_io_error;
     }
-    std::vector<Diagnostic> diagnostics = check_scene(*loaded);
+    std::vector<Diagnostic> diagnostics = check_scene(
+        *loaded, {.validation = {.run_chunks = parallel_chunks(), .primitives_as_parsed = true}});
     name_setting_flags(diagnostics);
     if (has_errors(diagnostics)) {
         std::cerr << format_diagnostics(diagnostics, *loaded);

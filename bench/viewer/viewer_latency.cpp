@@ -106,7 +106,7 @@ void pace(const AppState& state, Clock::time_point frame_start) {
             frame_start + std::chrono::microseconds(static_cast<long>(frame_interval_ms * 1000)));
     const std::uint64_t seen = state.wakeup.count();
     if (wait_for_workers && waiting_for_workers(state.files, state.render))
-        state.wakeup.wait(seen, Clock::now() + std::chrono::milliseconds(50));
+        state.wakeup.wait(seen, Clock::now() + workers_frame_wait(state));
 }
 
 Timing frames_until_first_pass(HeadlessViewer& viewer, AppState& state, Clock::time_point t0,
@@ -247,12 +247,17 @@ int main(int argc, char** argv) {
     config.first_pass_wait = first_pass_wait;
 
     // A render still running when the user acts is the usual case: let it run
-    // a little, so the cancel is part of the figure.
+    // a little, so the cancel is part of the figure. Each frame is finished
+    // as the timed ones are (a window's swap waits likewise): OSMesa draws
+    // what a frame queued when it is flushed, so unfinished frames would be
+    // drawn inside the next event's time, beside its parse (up to 100 ms of
+    // a core).
     auto settle = [&](AppState& state) {
         const auto until = Clock::now() + std::chrono::milliseconds(60);
         while (Clock::now() < until) {
             const auto frame_start = Clock::now();
             viewer.frame(state);
+            glFinish();
             pace(state, frame_start);
         }
     };
@@ -263,6 +268,7 @@ int main(int argc, char** argv) {
         AppState warm(config);  // first use of the context compiles shaders, uploads fonts
         open_scene(warm, file);
         viewer.run_until_complete(warm, std::chrono::minutes(2));
+        glFinish();
     }
     for (int i = 0; i < runs; ++i) {
         // A fresh viewer state each time: nothing prepared to reuse.

@@ -47,8 +47,9 @@ FrameSetup set_up_frame(std::string_view program, const RenderFlags& flags,
 }
 
 FrameSetup set_up_frame(std::string_view program, const RenderFlags& flags, LoadedScene loaded,
-                        const std::optional<FrameRegion>& region) {
-    return set_up_loaded(program, flags, std::move(loaded), region, false);
+                        LoadedPrimitives primitives, const std::optional<FrameRegion>& region) {
+    return set_up_loaded(program, flags, std::move(loaded), region,
+                         primitives == LoadedPrimitives::as_parsed);
 }
 
 namespace {

@@ -32,7 +32,9 @@ FrameSetup SceneSequence::set_up(double clock, bool& reads_clock) {
     earlier_.text = read->text;
     earlier_.files = read->parsed.source.files;
     earlier_.readings = std::move(read->parsed.primitive_readings);
-    return set_up_frame(program_, flags, std::move(*read), region_);
+    // The primitives taken from the earlier parse are ones it made from the
+    // same readings, so the whole scene is as a parse of this text makes it.
+    return set_up_frame(program_, flags, std::move(*read), LoadedPrimitives::as_parsed, region_);
 }
 
 std::string SceneSequence::unprinted(const std::vector<Diagnostic>& diagnostics) {

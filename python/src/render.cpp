@@ -109,7 +109,9 @@ py::array_t<std::uint8_t> render_scene(PythonScene& scene, const RenderArguments
     frontend::FrameSetup setup;
     {
         py::gil_scoped_release unlocked;
-        setup = frontend::set_up_frame(program, flags, scene.loaded, region);
+        // A Scene is read-only: its primitives are as load() or parse() made them.
+        setup = frontend::set_up_frame(program, flags, scene.loaded,
+                                       frontend::LoadedPrimitives::as_parsed, region);
     }
     if (setup.exit_code == frontend::exit_scene_error)
         raise_scene_error(setup.message, setup.diagnostics, scene.loaded);

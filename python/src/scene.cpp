@@ -5,6 +5,7 @@
 #include "bindings.hpp"
 
 #include "jtracer/frontend/render_flags.hpp"
+#include "jtracer/parallel_chunks.hpp"
 #include "jtracer/schema.hpp"
 #include "jtracer/source_serializer.hpp"
 
@@ -74,9 +75,11 @@ void bind_view(py::module_& m, const char* name, const char* doc) {
     view.def(py::self == py::self);
 }
 
-// What `jtracer-cli --check` reports for a loaded scene.
+// What `jtracer-cli --check` reports for a loaded scene, one just read or
+// parsed (so the checks may take its primitives as parsed).
 std::vector<Diagnostic> findings(const LoadedScene& loaded) {
-    std::vector<Diagnostic> diagnostics = check_scene(loaded);
+    std::vector<Diagnostic> diagnostics = check_scene(
+        loaded, {.validation = {.run_chunks = parallel_chunks(), .primitives_as_parsed = true}});
     frontend::name_setting_flags(diagnostics);
     return diagnostics;
 }

@@ -194,9 +194,9 @@ int run_window(const Arguments& args) {
                 window.poll_events();
             else if (render_complete(app.render) && !app.files.loader.busy() && !app.drags.object &&
                      !app.time.playing && !args.exit_when_done)
-                window.wait_events(0.2);
+                window.wait_events(std::chrono::duration<double>(idle_frame_wait).count());
             else if (waiting_for_workers(app.files, app.render))
-                window.wait_events(0.05);
+                window.wait_events(std::chrono::duration<double>(workers_frame_wait(app)).count());
             else
                 window.poll_events();
             // The window's close button asks like Esc does when edits are unsaved.

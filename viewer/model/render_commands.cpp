@@ -218,4 +218,11 @@ bool waiting_for_workers(const FileState& files, const RenderState& render) {
            render.renderer.passes_since_start() == 0;
 }
 
+std::chrono::milliseconds workers_frame_wait(const AppState& state) {
+    const RenderState& render = state.render;
+    const bool render_running = render.started && !render.paused && render.renderer.active();
+    const bool moving = render_running || state.drags.object || state.time.playing;
+    return state.files.loader.in_flight() && !moving ? idle_frame_wait : worker_frame_wait;
+}
+
 }  // namespace jt::view

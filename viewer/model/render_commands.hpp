@@ -4,6 +4,7 @@
 
 #include "model/app_state.hpp"
 
+#include <chrono>
 #include <optional>
 #include <string>
 
@@ -51,5 +52,18 @@ bool render_complete(const RenderState& render);
 // is taken in as soon as it exists rather than at the next frame tick, and no
 // frame takes cores from the render meanwhile.
 bool waiting_for_workers(const FileState& files, const RenderState& render);
+
+// How long the frame loop sleeps, waking at once for input or a worker's report.
+// Idle (the render complete, nothing loading): long enough to poll the files.
+inline constexpr std::chrono::milliseconds idle_frame_wait{200};
+// While waiting_for_workers with a render running: its progress is drawn this often.
+inline constexpr std::chrono::milliseconds worker_frame_wait{50};
+
+// The sleep while waiting_for_workers: idle_frame_wait for a load while no
+// render runs and nothing else moves (an object drag, the clock playing):
+// nothing on screen changes until the loader wakes the loop, and with software
+// OpenGL each frame drawn meanwhile takes a core from the parse, the
+// validation and the preparation ahead. worker_frame_wait otherwise.
+std::chrono::milliseconds workers_frame_wait(const AppState& state);
 
 }  // namespace jt::view

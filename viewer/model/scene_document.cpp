@@ -1,5 +1,6 @@
 #include "model/scene_document.hpp"
 
+#include "jtracer/parallel_chunks.hpp"
 #include "jtracer/parser.hpp"
 #include "jtracer/scene_file.hpp"
 #include "jtracer/source_edit.hpp"
@@ -35,7 +36,9 @@ LoadAttempt attempt_load(const std::filesystem::path& path, const ParseOptions& 
     std::shared_ptr<const Scene> scene(loaded, &loaded->parsed.scene);
     attempt.read = true;
     if (parsed && !has_errors(loaded->parsed.diagnostics)) parsed(scene);
-    attempt.diagnostics = check_scene(*loaded);
+    // Straight from the parser: its primitives' ranges need no second check.
+    attempt.diagnostics = check_scene(
+        *loaded, {.validation = {.run_chunks = parallel_chunks(), .primitives_as_parsed = true}});
     attempt.parse_diagnostics = std::move(loaded->parsed.diagnostics);
     attempt.times.validated = LoadTimes::Clock::now();
     attempt.ok = !has_errors(attempt.diagnostics);

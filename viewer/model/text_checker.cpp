@@ -1,5 +1,6 @@
 #include "model/text_checker.hpp"
 
+#include "jtracer/parallel_chunks.hpp"
 #include "jtracer/scene_file.hpp"
 
 #include <exception>
@@ -18,7 +19,9 @@ CheckedText check_text(std::uint64_t id, std::string text, const std::filesystem
     loaded.text = std::move(text);
     CheckedText checked;
     checked.id = id;
-    checked.diagnostics = check_scene(loaded);
+    // Straight from the parser: its primitives' ranges need no second check.
+    checked.diagnostics = check_scene(
+        loaded, {.validation = {.run_chunks = parallel_chunks(), .primitives_as_parsed = true}});
     checked.ok = !has_errors(checked.diagnostics);
     checked.clock = options.clock;
     checked.text = std::move(loaded.text);

@@ -7,10 +7,13 @@
 #include "common/scratch_dir.hpp"
 #include "jtracer/parser.hpp"
 #include "jtracer/render_job.hpp"
+#include "jtracer/scene_file.hpp"
+#include "jtracer/validate.hpp"
 #include "model/app_actions.hpp"
 #include "model/model_frame.hpp"
 #include "model/prepared_ahead.hpp"
 #include "model/scene_loader.hpp"
+#include "model/text_checker.hpp"
 #include "model/wakeup.hpp"
 #include "render/prepared_scene.hpp"
 #include "viewer/viewer_test_files.hpp"
@@ -125,6 +128,31 @@ TEST(Wakeup, FinishedLoadWakesTheLoopAndEndsTheWait) {
         << "the next frame has a load to take in";
     EXPECT_TRUE(take_finished_load(state));
     EXPECT_TRUE(state.doc.loaded);
+}
+
+// While a file loads and no render runs, nothing on screen changes until the
+// loader wakes the loop: the loop sleeps as long as when idle, leaving the
+// cores to the load (with software OpenGL a frame costs tens of ms of CPU).
+TEST(Wakeup, ALoadWithNoRenderRunningSleepsAsLongAsIdle) {
+    const std::filesystem::path file = make_scratch_dir("jt_wakeup_load") / "spheres.jts";
+    std::string text = "cameras { perspective_camera { } }\nscene {\n";
+    for (int i = 0; i < 40'000; ++i)
+        text += "sphere { center: <" + std::to_string(i) + ", 0, 0>; radius: 1; }\n";
+    std::ofstream(file) << text << "}\n";
+    AppState state(test_config());
+    EXPECT_EQ(workers_frame_wait(state), worker_frame_wait);
+    request_open(state, file);
+    // Checked at once: parsing 40,000 spheres takes tens of milliseconds.
+    ASSERT_TRUE(state.files.loader.in_flight());
+    EXPECT_TRUE(waiting_for_workers(state.files, state.render));
+    // The clock playing wants its frames meanwhile.
+    state.time.playing = true;
+    EXPECT_EQ(workers_frame_wait(state), worker_frame_wait);
+    state.time.playing = false;
+    // Still loading, so the check above was made during the load too.
+    EXPECT_EQ(workers_frame_wait(state), idle_frame_wait);
+    EXPECT_GT(idle_frame_wait, worker_frame_wait);
+    state.files.loader.wait();
 }
 
 TEST(FirstPreview, AnOpenedSceneIsNotValidatedAgainBeforeItsRender) {
@@ -356,6 +384,49 @@ TEST(FirstPreview, AnOpenWithoutErrorsIsPreparedByTheLoader) {
     const std::optional<FinishedLoad> reloaded = loader.take();
     ASSERT_TRUE(reloaded && reloaded->attempt.ok);
     EXPECT_FALSE(reloaded->ahead) << "a reload reuses the geometry prepared already";
+}
+
+// An open, and a check of the editor's text, validate a large scene in chunks
+// on TBB's threads and take the parser's range checks as made: they still
+// find what the whole checks on one thread find, errors and warnings, at the
+// same places and in the same order.
+TEST(FirstPreview, AnOpenFindsWhatTheWholeChecksFind) {
+    const std::filesystem::path file = make_scratch_dir("jt_first_preview_checks") / "checked.jts";
+    // Several of the validation's chunks (8192 primitives each), with
+    // findings in each, and the parser's one unchecked default last.
+    constexpr int primitives = 40'000;
+    std::string text =
+        "render_settings { width: 40; height: 20; }\n"
+        "cameras { perspective_camera { aspect: 1; } }\n"
+        "scene {\n";
+    for (int i = 0; i < primitives - 1; ++i) {
+        if (i % 5'000 == 17)
+            text += "triangle { a: <0, 0, 0>; b: <1, 1, 1>; c: <2, 2, 2>; }\n";
+        else if (i % 7'000 == 3)
+            text += "cylinder { transform { scale: <1, 0, 1>; } }\n";
+        else
+            text += "sphere { center: <" + std::to_string(i) + ", 0, 0>; radius: 1; }\n";
+    }
+    text += "mesh { }\n}\n";
+    std::ofstream(file) << text;
+
+    const Expected<LoadedScene> loaded = load_scene_file(file, {.source_map = true});
+    ASSERT_TRUE(loaded);
+    std::vector<Diagnostic> whole = loaded->parsed.diagnostics;
+    for (const Diagnostic& d : validate_scene(loaded->parsed.scene, loaded->parsed.source))
+        whole.push_back(d);
+    // The aspect's warning, 8 triangles, 6 cylinders and the mesh's error.
+    ASSERT_EQ(whole.size(), 16u);
+    EXPECT_EQ(whole.back().severity, Severity::error);
+
+    const LoadAttempt opened = attempt_load(file);
+    EXPECT_TRUE(opened.read);
+    EXPECT_FALSE(opened.ok);
+    EXPECT_TRUE(opened.diagnostics == whole) << opened.diagnostics.size() << " findings";
+
+    const CheckedText checked = check_text(1, text, file, {});
+    EXPECT_FALSE(checked.ok);
+    EXPECT_TRUE(checked.diagnostics == whole) << checked.diagnostics.size() << " findings";
 }
 
 }  // namespace

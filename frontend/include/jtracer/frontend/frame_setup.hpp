@@ -40,10 +40,16 @@ struct FrameSetup {
 FrameSetup set_up_frame(std::string_view program, const RenderFlags& flags,
                         const std::optional<FrameRegion>& region = std::nullopt);
 
+// Whether a loaded scene's primitives are exactly as the parser made them
+// (ValidateOptions::primitives_as_parsed): then the parser's range checks are
+// not made again. A scene edited or built in code is `changed`.
+enum class LoadedPrimitives { as_parsed, changed };
+
 // The same for a scene already read (flags.scene_path is not used): what a
 // program that holds scenes in memory (the Python module) renders, set up
 // exactly as the command line sets up a file.
 FrameSetup set_up_frame(std::string_view program, const RenderFlags& flags, LoadedScene loaded,
+                        LoadedPrimitives primitives,
                         const std::optional<FrameRegion>& region = std::nullopt);
 
 // The scene's camera names, quoted, for messages: "\"front\", \"top\"", or
