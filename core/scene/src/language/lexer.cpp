@@ -69,9 +69,6 @@ bool is_digit(char c) {
 bool is_word_start(char c) {
     return has_class(c, word_start);
 }
-bool is_word_char(char c) {
-    return has_class(c, word_start | digit);
-}
 bool is_number_char(char c) {
     return has_class(c, number_part);
 }
@@ -115,6 +112,10 @@ std::size_t skip_spaces(std::string_view text, std::size_t i) {
 }
 
 }  // namespace
+
+bool is_word_char(char c) {
+    return has_class(c, word_start | digit);
+}
 
 void Lexer::skip_space_and_comments() {
     const std::size_t n = text_.size();

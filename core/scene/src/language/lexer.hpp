@@ -106,6 +106,9 @@ class Lexer {
     std::size_t line_start_ = 0;
 };
 
+// Whether `c` may stand in a word after its first byte: [A-Za-z0-9_].
+bool is_word_char(char c);
+
 // A short description of a token for messages: "the number 2", "'}'", "the word 'foo'".
 std::string describe(const Token& token);
 

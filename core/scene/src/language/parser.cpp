@@ -814,7 +814,7 @@ class Parser final : private TokenCursor {
         // own arrays, then the scene's), which measured slower on a million spheres.
         if (hint > 0 && !warmer.warming()) start_scene_parts(parts, hint);
         parse_body(block, scene_blocks(), only_blocks(block, scene_blocks()), [&] {
-            if (!take_scene_part(parts, children, warmer)) parse_scene_child(children, warmer);
+            if (!take_scene_part(parts, children)) parse_scene_child(children, warmer);
         });
         parts.stop();
         if (result_.source.scene) {
@@ -939,12 +939,10 @@ class Parser final : private TokenCursor {
             if (!at(TokenKind::word) || next_->kind != TokenKind::lbrace) return;
             if (children.primitives.size() == children.primitives.capacity()) {
                 part.filled.push_back(std::move(children.primitives));
-                children.primitives = {};
                 reserve_records(children.primitives, per_array);
             }
             parse_scene_child(children, unused);
         }
-        children.placed = 0;
         part.properties = std::move(result_.source.properties);
         part.nested = std::move(result_.source.children);
         part.reads_clock = result_.reads_clock || expressions_.read_clock();
@@ -956,7 +954,7 @@ class Parser final : private TokenCursor {
     // At the keyword of a block in `scene`: when a part read on a thread
     // begins here and is usable, takes what it read into `into` and goes on
     // where it ended. False: read on here.
-    bool take_scene_part(ScenePartThreads& parts, SceneChildren& into, PageWarmer& warmer) {
+    bool take_scene_part(ScenePartThreads& parts, SceneChildren& into) {
         // In an included file, offsets are into another text.
         if (parts.empty() || reading_ != &lexer_) return false;
         ScenePart* part = parts.take_at(cur_->offset);
@@ -976,13 +974,7 @@ class Parser final : private TokenCursor {
         append_moved(into.light_sources, read.light_sources);
         append_moved(into.lights, read.lights);
         part->filled.push_back(std::move(read.primitives));
-        for (std::vector<Primitive>& array : part->filled) {
-            for (Primitive& primitive : array) {
-                into.primitives.push_back(std::move(primitive));
-                warmer.filled(into.primitives.size() * sizeof(Primitive));
-            }
-            array = std::vector<Primitive>();  // `= {}` would keep the memory
-        }
+        for (std::vector<Primitive>& array : part->filled) append_moved(into.primitives, array);
         into.placed = into.primitives.size();
         read = {};
         result_.reads_clock = result_.reads_clock || part->reads_clock;
@@ -997,7 +989,7 @@ class Parser final : private TokenCursor {
     static void append_moved(std::vector<T>& to, std::vector<T>& from) {
         to.insert(to.end(), std::make_move_iterator(from.begin()),
                   std::make_move_iterator(from.end()));
-        from = std::vector<T>();
+        from = std::vector<T>();  // `= {}` would keep the memory
     }
 
     // At a primitive's keyword: keeps the earlier parse's primitive at index

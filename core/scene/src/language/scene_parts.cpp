@@ -1,6 +1,7 @@
 #include "language/scene_parts.hpp"
 
 #include "jtracer/schema.hpp"
+#include "language/lexer.hpp"
 
 #include <algorithm>
 #include <cstring>
@@ -13,17 +14,13 @@ bool is_space(char c) {
     return c == ' ' || c == '\t' || c == '\r' || c == '\n';
 }
 
-bool is_word_byte(char c) {
-    return (c >= 'a' && c <= 'z') || (c >= 'A' && c <= 'Z') || (c >= '0' && c <= '9') || c == '_';
-}
-
 // The offset of a primitive's or a light's keyword that the '{' at `brace`
 // follows (blanks between), standing alone as a word; npos for anything else.
 std::size_t scene_block_keyword(std::string_view text, std::size_t brace) {
     std::size_t end = brace;
     while (end > 0 && is_space(text[end - 1])) --end;
     std::size_t begin = end;
-    while (begin > 0 && is_word_byte(text[begin - 1])) --begin;
+    while (begin > 0 && is_word_char(text[begin - 1])) --begin;
     const std::string_view word = text.substr(begin, end - begin);
     if (std::find(scene_blocks().begin(), scene_blocks().end(), word) == scene_blocks().end())
         return std::string_view::npos;

@@ -3,8 +3,8 @@
 //
 // A scene block is a list of primitives and lights, each read alone from the
 // names defined before the block: a part of the list can be read on a thread
-// of its own. Where a part begins is only guessed here, from the text's lines;
-// the parser takes a part's reading only once its own reading reaches that
+// of its own. Where a part begins is only guessed here, from the keywords
+// before a '{'; the parser takes a part's reading only once its own reading reaches that
 // offset as the next block of the scene, and only if the part gave not one
 // diagnostic. Otherwise it reads on itself, so the result is always the one
 // a single reading gives.
