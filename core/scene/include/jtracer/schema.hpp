@@ -182,10 +182,13 @@ constexpr PropertySpec<Block> vector(std::string_view name, Vec3 Block::*member,
                                      ValueRange range = {}) {
     return {name, ValueKind::vector, member, range};
 }
+// A colour's channels: each clamped into [0, 1].
+inline constexpr ValueRange kColourChannel{
+    .low = 0.0, .high = 1.0, .clamp_low = true, .clamp_high = true};
+
 template <class Block>
 constexpr PropertySpec<Block> colour(std::string_view name, Vec3 Block::*member) {
-    return {name, ValueKind::colour, member,
-            ValueRange{.low = 0.0, .high = 1.0, .clamp_low = true, .clamp_high = true}};
+    return {name, ValueKind::colour, member, kColourChannel};
 }
 // The same, for a property of a material's finish: &Finish::ambient.
 constexpr PropertySpec<Material> number(std::string_view name, double Finish::*member,
@@ -193,13 +196,12 @@ constexpr PropertySpec<Material> number(std::string_view name, double Finish::*m
     return {name, ValueKind::number, FinishMember<double>{&Material::finish, member}, range};
 }
 constexpr PropertySpec<Material> colour(std::string_view name, Vec3 Finish::*member) {
-    return {name, ValueKind::colour, FinishMember<Vec3>{&Material::finish, member},
-            ValueRange{.low = 0.0, .high = 1.0, .clamp_low = true, .clamp_high = true}};
+    return {name, ValueKind::colour, FinishMember<Vec3>{&Material::finish, member}, kColourChannel};
 }
 constexpr PropertySpec<Material> optional_colour(std::string_view name,
                                                  std::optional<Vec3> Finish::*member) {
     return {name, ValueKind::colour, FinishMember<std::optional<Vec3>>{&Material::finish, member},
-            ValueRange{.low = 0.0, .high = 1.0, .clamp_low = true, .clamp_high = true}};
+            kColourChannel};
 }
 constexpr PropertySpec<Material> string(std::string_view name, std::string Finish::*member) {
     return {name, ValueKind::string, FinishMember<std::string>{&Material::finish, member}};
@@ -208,8 +210,7 @@ constexpr PropertySpec<Material> string(std::string_view name, std::string Finis
 template <class Block>
 constexpr PropertySpec<Block> optional_colour(std::string_view name,
                                               std::optional<Vec3> Block::*member) {
-    return {name, ValueKind::colour, member,
-            ValueRange{.low = 0.0, .high = 1.0, .clamp_low = true, .clamp_high = true}};
+    return {name, ValueKind::colour, member, kColourChannel};
 }
 // A number with no default: unset means the feature is off, or takes a value
 // that depends on others (a camera's focus distance).
