@@ -35,8 +35,10 @@ std::string camera_names(const Scene& scene) {
 
 FrameSetup set_up_frame(std::string_view program, const RenderFlags& flags,
                         const std::optional<FrameRegion>& region) {
-    // Without the source map: check_scene builds it only if there is something to locate.
-    Expected<LoadedScene> read = load_scene_file(flags.scene_path, parse_options_for(flags));
+    // Without the source map: check_scene builds it only if there is something to
+    // locate. A render needs the scene, not the text: a large one is given back.
+    Expected<LoadedScene> read = load_scene_file(flags.scene_path, parse_options_for(flags),
+                                                 TextKeeping::given_back_when_large);
     if (!read) {
         FrameSetup setup;
         setup.exit_code = exit_io_error;

@@ -161,6 +161,84 @@ TEST_F(SceneFile, ValidationIsSkippedWhenParsingFailed) {
               "1:26: error: 'radius' must be greater than 0 and at most 1e+09, got -1");
 }
 
+// A text of 64 MiB or more, loaded for a render: 70 spheres, each after a
+// comment line of a MiB, then `last` on the last line.
+std::string large_text(const std::string& last) {
+    std::string text =
+        "render_settings { width: 8; height: 4; }\n"
+        "cameras { perspective_camera { aspect: 1; } }\n"
+        "scene {\n";
+    const std::string comment = "# " + std::string(std::size_t{1} << 20, 'c') + "\n";
+    for (int i = 0; i < 70; ++i)
+        text += comment + "  sphere { center: <" + std::to_string(i) + ", 0, 0>; }\n";
+    text += last + "\n}\n";
+    EXPECT_GE(text.size(), smallest_text_given_back);
+    return text;
+}
+
+// The render's load gives the text back as the parse passes it: the same
+// scene, the same diagnostics, located and quoted from the file read again.
+TEST_F(SceneFile, ALargeTextIsGivenBackAndReadAgainForItsMessages) {
+    const fs::path path = write("large.jts", large_text("  sphere { radius: 2; radius: 3; }"));
+    // One thread: parts read on others would keep the text whole.
+    const ParseOptions options{.source_map = false, .threads = 1};
+    const LoadedScene whole = load_scene_file(path, options).value();
+    const LoadedScene given =
+        load_scene_file(path, options, TextKeeping::given_back_when_large).value();
+    EXPECT_FALSE(whole.text_given_back);
+    ASSERT_TRUE(given.text_given_back);
+    EXPECT_TRUE(given.text.empty());
+    EXPECT_EQ(given.parsed.scene, whole.parsed.scene);
+    EXPECT_EQ(given.parsed.scene.primitives.size(), 71u);
+
+    const std::vector<Diagnostic> found = check_scene(given);
+    EXPECT_EQ(found, check_scene(whole));
+    ASSERT_EQ(found.size(), 2u);  // the radius set twice, the camera's aspect
+    EXPECT_EQ(found[0].pos.line, 144);
+    EXPECT_EQ(found[1].pos.line, 2);
+    const std::string quoted = format_diagnostics(found, given);
+    EXPECT_EQ(quoted, format_diagnostics(found, whole));
+    EXPECT_NE(quoted.find("    sphere { radius: 2; radius: 3; }\n"), std::string::npos) << quoted;
+
+    // A small text, or one parsed with the map, is kept whole.
+    const fs::path small = write("small.jts", "scene { sphere { } }\n");
+    EXPECT_FALSE(load_scene_file(small, options, TextKeeping::given_back_when_large)
+                     .value()
+                     .text_given_back);
+    EXPECT_FALSE(load_scene_file(path, {.threads = 1}, TextKeeping::given_back_when_large)
+                     .value()
+                     .text_given_back);
+}
+
+// Changed after it was read, the file is not read again for a text it no
+// longer holds: the messages stay unlocated and unquoted, and a note says why.
+TEST_F(SceneFile, AGivenBackTextWhoseFileChangedIsNotQuoted) {
+    const fs::path path = write("large.jts", large_text("  sphere { radius: 2; radius: 3; }"));
+    const ParseOptions options{.source_map = false, .threads = 1};
+    const LoadedScene given =
+        load_scene_file(path, options, TextKeeping::given_back_when_large).value();
+    ASSERT_TRUE(given.text_given_back);
+    const std::vector<Diagnostic> parse_found = given.parsed.diagnostics;
+    ASSERT_EQ(parse_found.size(), 1u);
+
+    write("large.jts", "scene { }\n");
+    const std::string quoted = format_diagnostics(parse_found, given);
+    EXPECT_NE(quoted.find("'radius' is set again"), std::string::npos) << quoted;
+    EXPECT_EQ(quoted.find("radius: 2; radius: 3;"), std::string::npos) << quoted;
+    EXPECT_NE(quoted.find("changed or went away after it was read, so the messages above "
+                          "cannot quote it"),
+              std::string::npos)
+        << quoted;
+
+    // The camera's aspect needs locating: it stays at line 0, with the note.
+    const std::vector<Diagnostic> found = check_scene(given);
+    ASSERT_EQ(found.size(), 3u);
+    EXPECT_EQ(found[1].pos, SourcePos{});
+    EXPECT_EQ(found[1].severity, Severity::warning);
+    EXPECT_EQ(found[2].severity, Severity::note);
+    EXPECT_NE(found[2].message.find("the messages above say no line"), std::string::npos);
+}
+
 TEST_F(SceneFile, LoadReportsIoErrorsWithoutParsing) {
     const Expected<LoadedScene> loaded = load_scene_file(dir / "missing.jts");
     ASSERT_FALSE(loaded);

@@ -20,9 +20,7 @@ struct FileStamp {
     bool operator==(const FileStamp&) const = default;
 };
 
-inline FileStamp file_stamp(const std::filesystem::path& path) {
-    struct stat info {};
-    if (::stat(path.c_str(), &info) != 0) return {};
+inline FileStamp file_stamp(const struct stat& info) {
     FileStamp stamp;
     stamp.exists = true;
     stamp.inode = static_cast<std::uint64_t>(info.st_ino);
@@ -30,6 +28,19 @@ inline FileStamp file_stamp(const std::filesystem::path& path) {
     stamp.mtime_ns = static_cast<std::int64_t>(info.st_mtim.tv_sec) * 1'000'000'000 +
                      static_cast<std::int64_t>(info.st_mtim.tv_nsec);
     return stamp;
+}
+
+inline FileStamp file_stamp(const std::filesystem::path& path) {
+    struct stat info {};
+    if (::stat(path.c_str(), &info) != 0) return {};
+    return file_stamp(info);
+}
+
+// The stamp of an open file, whatever its name now leads to.
+inline FileStamp file_stamp(int descriptor) {
+    struct stat info {};
+    if (::fstat(descriptor, &info) != 0) return {};
+    return file_stamp(info);
 }
 
 }  // namespace jt

@@ -85,6 +85,11 @@ struct ParseOptions {
     unsigned threads = 0;
     // Fill ParseResult::primitive_readings (for a later parse at another clock).
     bool record_primitive_readings = false;
+    // Called now and then, on the parsing thread, with an offset of the main
+    // text before which the parse will not read again: the caller of a huge
+    // text may give its memory back behind it (load_scene_file does). Called
+    // only while one thread reads the main text's scene block.
+    std::function<void(std::size_t offset)> text_passed = {};
     // Take the primitives that read no `clock` from this earlier parse. Used
     // only without the source map (a taken primitive has no records), and
     // only while the texts read are the earlier parse's own, byte for byte.

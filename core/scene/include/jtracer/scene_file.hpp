@@ -12,9 +12,11 @@
 
 #include "jtracer/diagnostics.hpp"
 #include "jtracer/error.hpp"
+#include "jtracer/file_stamp.hpp"
 #include "jtracer/parser.hpp"
 #include "jtracer/validate.hpp"
 
+#include <cstddef>
 #include <cstdint>
 #include <filesystem>
 #include <span>
@@ -34,16 +36,35 @@ Expected<std::string> read_text_file(const std::filesystem::path& path,
 
 struct LoadedScene {
     std::string path;      // as given: the FILE of FILE:LINE:COL diagnostics
-    std::string text;      // the file's contents
+    std::string text;      // the file's contents; empty when given back
     ParseResult parsed;    // scene, source spans (included files too) and parse diagnostics
     ParseOptions options;  // what it was parsed with
+    // TextKeeping::given_back_when_large gave the text back: a message that
+    // quotes it reads the file again, if `stamp` says it is the same file.
+    bool text_given_back = false;
+    FileStamp stamp;  // of the file when it was read
 };
+
+// What load_scene_file keeps of the file's text.
+enum class TextKeeping {
+    whole,
+    // A text of smallest_text_given_back or more, parsed without the source
+    // map, is given back to the system as the parse passes it, so that the
+    // text and its scene are never held whole together (a million spheres'
+    // render: 139 MB of text). For a caller that needs only the scene and
+    // the diagnostics: check_scene and format_diagnostics read the file
+    // again when a message has to be located or quoted.
+    given_back_when_large,
+};
+
+inline constexpr std::size_t smallest_text_given_back = std::size_t{64} << 20;
 
 // Reads and parses, with `options.main_file` set to `path` when empty (so
 // includes are read from its folder); fails only when the file cannot be read (mistakes in the
 // text are diagnostics). Does not validate: apply any overrides to
 // `parsed.scene` first, then call check_scene.
-Expected<LoadedScene> load_scene_file(const std::filesystem::path& path, ParseOptions options = {});
+Expected<LoadedScene> load_scene_file(const std::filesystem::path& path, ParseOptions options = {},
+                                      TextKeeping keeping = TextKeeping::whole);
 
 struct CheckOptions {
     // False: warnings about a scene loaded without its source map stay at line
@@ -67,10 +88,10 @@ std::string format_diagnostics(const std::vector<Diagnostic>& diagnostics,
                                std::string_view filename, std::string_view source,
                                std::span<const SourceFile> files = {});
 
-// The same for a loaded scene: named as given, with its included files.
-inline std::string format_diagnostics(const std::vector<Diagnostic>& diagnostics,
-                                      const LoadedScene& loaded) {
-    return format_diagnostics(diagnostics, loaded.path, loaded.text, loaded.parsed.source.files);
-}
+// The same for a loaded scene: named as given, with its included files. A
+// text given back is read again to quote it, and left unquoted (with a note
+// saying why) if the file changed since.
+std::string format_diagnostics(const std::vector<Diagnostic>& diagnostics,
+                               const LoadedScene& loaded);
 
 }  // namespace jt

@@ -47,6 +47,10 @@ namespace {
 // (schema.hpp): a new shape or block is an entry there, not a list here.
 constexpr std::array<std::string_view, 0> kNoBlocks{};
 
+// How often ParseOptions::text_passed hears of the parse's progress: often
+// enough that little is held behind it, rarely enough to cost nothing.
+constexpr std::size_t text_passed_step = std::size_t{4} << 20;
+
 // The default shape a primitive keyword opens, or nullopt for another word.
 template <std::size_t I = 0>
 std::optional<Shape> shape_of_keyword(std::string_view word) {
@@ -236,7 +240,8 @@ class Parser final : private TokenCursor {
                            options.earlier->text == text
                        ? options.earlier
                        : nullptr),
-          options_(options) {
+          options_(options),
+          reports_text_passed_(static_cast<bool>(options.text_passed)) {
         if (keep_primitives_) {
             const BraceAndColonCount count = count_braces_and_colons(text);
             primitive_hint_ = primitive_count_hint(text, count);
@@ -813,6 +818,9 @@ class Parser final : private TokenCursor {
         // the most of a huge scene's parse: parts would write it twice (their
         // own arrays, then the scene's), which measured slower on a million spheres.
         if (hint > 0 && !warmer.warming()) start_scene_parts(parts, hint);
+        // Threads reading parts read ahead of this one, and a part not taken
+        // is read again here: no text may be given back while they run.
+        if (!parts.empty()) reports_text_passed_ = false;
         parse_body(block, scene_blocks(), only_blocks(block, scene_blocks()), [&] {
             if (!take_scene_part(parts, children)) parse_scene_child(children, warmer);
         });
@@ -866,6 +874,7 @@ class Parser final : private TokenCursor {
                 into.primitives.push_back(std::move(primitive));
             ++into.placed;
             warmer.filled(into.placed * sizeof(Primitive));
+            report_text_passed();
             if (source_map_) into.primitive_sources.push_back(primitive_block);
             if (record_readings_)
                 into.readings.push_back({file, keyword, static_cast<std::uint32_t>(cur_->offset),
@@ -873,6 +882,17 @@ class Parser final : private TokenCursor {
         } else {
             unknown_block("in '" + std::string(kSceneKeyword) + "'", scene_blocks());
         }
+    }
+
+    // ParseOptions::text_passed, every text_passed_step bytes of the main
+    // text: nothing before the token at hand is read again (the lookahead and
+    // the lexer are past it).
+    void report_text_passed() {
+        if (!reports_text_passed_ || reading_ != &lexer_ || cur_->pos.file != 0 ||
+            cur_->offset < next_text_passed_)
+            return;
+        next_text_passed_ = cur_->offset + text_passed_step;
+        options_.text_passed(cur_->offset);
     }
 
     // --- a large scene block read in parts (scene_parts.hpp) ------------
@@ -1350,6 +1370,9 @@ class Parser final : private TokenCursor {
     bool record_readings_;
     EarlierParse* earlier_;  // null: read every primitive
     const ParseOptions& options_;
+    // ParseOptions::text_passed is called (by the main text's reader only).
+    bool reports_text_passed_ = false;
+    std::size_t next_text_passed_ = 0;
     bool in_primitive_ = false;  // reading a primitive's block
     std::array<std::vector<PropertySource>, 2> property_buffers_;
     // The property being read, reused: read_property sets all of it, and a

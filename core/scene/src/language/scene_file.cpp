@@ -1,6 +1,7 @@
 #include "jtracer/scene_file.hpp"
 
 #include "io/huge_pages.hpp"
+#include "io/text_give_back.hpp"
 #include "jtracer/validate.hpp"
 #include "language/quote.hpp"
 #include "language/validation.hpp"
@@ -9,6 +10,7 @@
 #include <cstdio>
 #include <cstring>
 #include <memory>
+#include <optional>
 #include <system_error>
 
 namespace jt {
@@ -28,9 +30,37 @@ std::string describe_errno(int error) {
     }
 }
 
+// The whole file; `stamp`, when asked for, is the stamp of the file opened
+// (taken before reading it, so that a write during the read moves it).
+Expected<std::string> read_text(const std::filesystem::path& path, std::uintmax_t max_bytes,
+                                FileStamp* stamp);
+
+// The loaded file's text when it was given back: the file read again, or
+// nullopt when it cannot be read or is no longer the file that was parsed.
+std::optional<std::string> text_read_again(const LoadedScene& loaded) {
+    FileStamp now;
+    Expected<std::string> text = read_text(loaded.path, max_scene_file_bytes, &now);
+    if (!text || now != loaded.stamp || text->size() != loaded.stamp.size) return std::nullopt;
+    return std::move(*text);
+}
+
+Diagnostic text_changed_note(const LoadedScene& loaded, std::string_view what) {
+    return {Severity::note,
+            {},
+            lang::quote(loaded.path) + " changed or went away after it was read, so " +
+                std::string(what)};
+}
+
 }  // namespace
 
 Expected<std::string> read_text_file(const std::filesystem::path& path, std::uintmax_t max_bytes) {
+    return read_text(path, max_bytes, nullptr);
+}
+
+namespace {
+
+Expected<std::string> read_text(const std::filesystem::path& path, std::uintmax_t max_bytes,
+                                FileStamp* stamp) {
     const std::string name = lang::quote(path.string());
     std::error_code ec;
     auto status = std::filesystem::status(path, ec);
@@ -49,6 +79,7 @@ Expected<std::string> read_text_file(const std::filesystem::path& path, std::uin
     errno = 0;
     std::unique_ptr<std::FILE, int (*)(std::FILE*)> f(std::fopen(path.c_str(), "rb"), &std::fclose);
     if (!f) return Error{"cannot read " + name + ": " + describe_errno(errno)};
+    if (stamp) *stamp = file_stamp(::fileno(f.get()));
     std::string text;
     // A regular file of known size is read in one go into a buffer of that
     // size: growing the string chunk by chunk would copy it and fault in twice
@@ -76,15 +107,29 @@ Expected<std::string> read_text_file(const std::filesystem::path& path, std::uin
     return text;
 }
 
-Expected<LoadedScene> load_scene_file(const std::filesystem::path& path, ParseOptions options) {
-    Expected<std::string> text = read_text_file(path);
-    if (!text) return text.error();
+}  // namespace
+
+Expected<LoadedScene> load_scene_file(const std::filesystem::path& path, ParseOptions options,
+                                      TextKeeping keeping) {
     LoadedScene loaded;
+    Expected<std::string> text = read_text(path, max_scene_file_bytes, &loaded.stamp);
+    if (!text) return text.error();
     loaded.path = path.string();
     if (options.main_file.empty()) options.main_file = loaded.path;
     loaded.options = options;
     loaded.text = std::move(*text);
-    loaded.parsed = parse_scene(loaded.text, options);
+    if (keeping == TextKeeping::given_back_when_large && !options.source_map &&
+        loaded.text.size() >= smallest_text_given_back) {
+        TextGiveBack give_back(loaded.text);
+        options.text_passed = [&give_back](std::size_t offset) { give_back.passed(offset); };
+        loaded.parsed = parse_scene(loaded.text, options);
+        if (give_back.gave_back()) {
+            std::string().swap(loaded.text);  // not `= {}`, which keeps the buffer
+            loaded.text_given_back = true;
+        }
+    } else {
+        loaded.parsed = parse_scene(loaded.text, options);
+    }
     // A machine's limit, not a mistake in the file: an I/O failure like any other.
     if (loaded.parsed.out_of_memory)
         return Error{"cannot read " + lang::quote(path.string()) +
@@ -107,10 +152,18 @@ std::vector<Diagnostic> check_scene(const LoadedScene& loaded, CheckOptions opti
             // longer matches --width) need no record of the primitives.
             ParseOptions with_map = loaded.options;
             with_map.source_map = true;
-            const SceneSource source = found.about_primitives
-                                           ? parse_scene(loaded.text, with_map).source
-                                           : lang::source_without_primitives(loaded.text, with_map);
-            found.diagnostics = validate_scene(loaded.parsed.scene, source, options.validation);
+            std::optional<std::string> again =
+                loaded.text_given_back ? text_read_again(loaded) : std::nullopt;
+            if (!loaded.text_given_back || again) {
+                const std::string_view text = again ? *again : loaded.text;
+                const SceneSource source = found.about_primitives
+                                               ? parse_scene(text, with_map).source
+                                               : lang::source_without_primitives(text, with_map);
+                found.diagnostics = validate_scene(loaded.parsed.scene, source, options.validation);
+            } else {
+                found.diagnostics.push_back(
+                    text_changed_note(loaded, "the messages above say no line"));
+            }
         }
         for (Diagnostic& d : found.diagnostics) all.push_back(std::move(d));
     }
@@ -123,6 +176,18 @@ std::string format_diagnostics(const std::vector<Diagnostic>& diagnostics,
     std::string out;
     for (const Diagnostic& d : diagnostics) out += format_diagnostic(d, filename, source, files);
     return out;
+}
+
+std::string format_diagnostics(const std::vector<Diagnostic>& diagnostics,
+                               const LoadedScene& loaded) {
+    const std::span<const SourceFile> files = loaded.parsed.source.files;
+    if (!loaded.text_given_back || diagnostics.empty())
+        return format_diagnostics(diagnostics, loaded.path, loaded.text, files);
+    if (std::optional<std::string> again = text_read_again(loaded))
+        return format_diagnostics(diagnostics, loaded.path, *again, files);
+    std::vector<Diagnostic> noted = diagnostics;
+    noted.push_back(text_changed_note(loaded, "the messages above cannot quote it"));
+    return format_diagnostics(noted, loaded.path, {}, files);
 }
 
 }  // namespace jt
