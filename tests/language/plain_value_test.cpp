@@ -86,9 +86,23 @@ std::string numeral(std::mt19937_64& rng) {
                                       ".e2",
                                       "9007199254740993",
                                       "000000000000000001.5"};
-    switch (rng() % 4) {
+    switch (rng() % 5) {
         case 0:
             return odd[rng() % std::size(odd)];
+        case 1: {
+            // Runs of up to 20 digits, zeros first or not, on either side of
+            // the point: the lengths around 8 and 15 that the scan reads apart.
+            const auto digits = [&rng](std::size_t length) {
+                std::string run;
+                const bool zeros = rng() % 3 == 0;
+                for (std::size_t d = 0; d < length; ++d)
+                    run += zeros && d < length / 2 ? '0' : static_cast<char>('0' + rng() % 10);
+                return run;
+            };
+            std::string s = digits(rng() % 21);
+            if (rng() % 2) s += "." + digits(rng() % 21);
+            return s;
+        }
         default: {
             std::string s = std::to_string(rng() % 100000);
             if (rng() % 3) s += "." + std::to_string(rng() % 1000000);
