@@ -62,7 +62,14 @@ FinishedLoad SceneLoader::load(Request request) {
             ahead.reset();
         }
     }
+    if (ahead) hold_until_prepared(*ahead);
     return FinishedLoad{request.path, request.purpose, std::move(attempt), std::move(ahead)};
+}
+
+void SceneLoader::hold_until_prepared(const PreparedAhead& ahead) const {
+    const auto until = LoadTimes::Clock::now() + prepared_ahead_hold;
+    while (!worker_.superseded() && LoadTimes::Clock::now() < until)
+        if (ahead.prepared.wait_for(prepared_ahead_hold_slice) == std::future_status::ready) return;
 }
 
 }  // namespace jt::view
