@@ -1,5 +1,7 @@
 #include "model/scene_loader.hpp"
 
+#include "model/scene_time.hpp"
+
 #include <exception>
 #include <future>
 #include <memory>
@@ -53,6 +55,8 @@ FinishedLoad SceneLoader::load(Request request) {
         try {
             ahead = preparer_.start(attempt.scene);
             attempt.scene_copy = copy.valid() ? copy.get() : Scene(*attempt.scene);
+            attempt.text_copies = LoadAttempt::TextCopies{
+                attempt.text, attempt.text, text_uses_clock(attempt.text, attempt.source)};
         } catch (const std::exception& e) {  // out of memory
             const LoadTimes times = attempt.times;
             attempt = LoadAttempt{};

@@ -441,6 +441,11 @@ TEST(FirstPreview, AnOpenIsHandedOverOnceItsPreparationIsDone) {
     EXPECT_EQ(opened->ahead->prepared.wait_for(std::chrono::seconds(0)), std::future_status::ready)
         << "handed over with its preparation done";
     EXPECT_TRUE(opened->ahead->prepared.get());
+    // Meanwhile it made the copies of the text the document keeps.
+    ASSERT_TRUE(opened->attempt.text_copies);
+    EXPECT_EQ(opened->attempt.text_copies->diagnostics_source, opened->attempt.text);
+    EXPECT_EQ(opened->attempt.text_copies->disk_text, opened->attempt.text);
+    EXPECT_FALSE(opened->attempt.text_copies->uses_clock);
 
     // Overtaken by a newer request, maybe while it waits: the newer one is handed over.
     loader.request(file, LoadPurpose::open);
