@@ -4,8 +4,8 @@
 // resolution) of the new render being in the texture.
 //
 //   viewer_latency [--runs N] [--pace HZ] [--no-wait] [--render-priority-normal]
-//                  [--first-pass-wait MS] [--steps] [--scene file.jts] [--size WxH]
-//                  [--open-only]
+//                  [--first-pass-wait MS] [--opened-pass-wait MS] [--steps]
+//                  [--scene file.jts] [--size WxH] [--open-only]
 //
 // Runs the viewer's own code (loader thread, AppState, frame loop, render
 // controller, presenter) in an OSMesa context, as the tests do. Each event is
@@ -21,7 +21,9 @@
 // window did before). The render runs below the frames' priority, as in the
 // viewer (--render-priority-normal: at the same), and the frame that starts a
 // render waits up to 6 ms for its first pass, as the viewer's does
-// (--first-pass-wait MS to change it, 0: not at all). --steps adds when each step
+// (--first-pass-wait MS to change it, 0: not at all), and up to 50 ms when it
+// renders an open's preparation made ahead (--opened-pass-wait MS; 0: as any
+// other render). --steps adds when each step
 // inside was reached. OSMesa draws in software what a GPU draws in a window:
 // it gets one thread (LP_NUM_THREADS=1 unless set), so that it takes as little
 // as possible from the render. --open-only times the opens alone (for a
@@ -97,6 +99,7 @@ double frame_interval_ms = 1000.0 / 60.0;
 bool wait_for_workers = true;
 bool render_in_background = true;  // ViewerConfig's default
 std::chrono::milliseconds first_pass_wait = ViewerConfig{}.first_pass_wait;
+std::chrono::milliseconds opened_first_pass_wait = ViewerConfig{}.opened_first_pass_wait;
 
 // Waits for the next frame: as a swap with vsync would, then as the window's
 // event loop does (main.cpp) while a load or a first pass is under way.
@@ -209,6 +212,8 @@ int main(int argc, char** argv) {
             render_in_background = false;
         } else if (arg == "--first-pass-wait" && i + 1 < argc) {
             first_pass_wait = std::chrono::milliseconds(std::max(0, std::atoi(argv[++i])));
+        } else if (arg == "--opened-pass-wait" && i + 1 < argc) {
+            opened_first_pass_wait = std::chrono::milliseconds(std::max(0, std::atoi(argv[++i])));
         } else if (arg == "--steps") {
             steps = true;
         } else if (arg == "--open-only") {
@@ -221,8 +226,9 @@ int main(int argc, char** argv) {
         } else {
             std::fprintf(stderr,
                          "usage: viewer_latency [--runs N] [--pace HZ] [--no-wait] "
-                         "[--render-priority-normal] [--first-pass-wait MS] [--steps] "
-                         "[--scene file.jts] [--size WxH] [--open-only]\n");
+                         "[--render-priority-normal] [--first-pass-wait MS] "
+                         "[--opened-pass-wait MS] [--steps] [--scene file.jts] [--size WxH] "
+                         "[--open-only]\n");
             return 2;
         }
     }
@@ -245,6 +251,7 @@ int main(int argc, char** argv) {
     config.watch_interval = std::chrono::hours(1);  // no reloads behind our back
     config.render_in_background = render_in_background;
     config.first_pass_wait = first_pass_wait;
+    config.opened_first_pass_wait = opened_first_pass_wait;
 
     // A render still running when the user acts is the usual case: let it run
     // a little, so the cancel is part of the figure. Each frame is finished
@@ -329,14 +336,15 @@ int main(int argc, char** argv) {
     std::sort(idle.begin(), idle.end());
 
     std::printf(
-        "viewer latency, %s at %dx%d, %d runs each, frames at %s%s%s, first pass wait %d ms, "
-        "%u hardware threads\n",
+        "viewer latency, %s at %dx%d, %d runs each, frames at %s%s%s, first pass wait %d ms "
+        "(%d ms after an open), %u hardware threads\n",
         scene.filename().c_str(), width, height, runs,
         frame_interval_ms > 0 ? (std::to_string(1000.0 / frame_interval_ms) + " Hz").c_str()
                               : "full speed",
         wait_for_workers ? ", waits for the workers" : ", no waiting",
         render_in_background ? ", render in the background" : ", render at normal priority",
-        static_cast<int>(first_pass_wait.count()), std::thread::hardware_concurrency());
+        static_cast<int>(first_pass_wait.count()), static_cast<int>(opened_first_pass_wait.count()),
+        std::thread::hardware_concurrency());
     std::printf("  %-16s %-26s median %7.1f ms   min %7.1f   max %7.1f\n", "idle frame",
                 "OSMesa 1680x800, UI + image", idle[idle.size() / 2], idle.front(), idle.back());
     print(load, steps);

@@ -53,10 +53,15 @@ void Presenter::upload(const Image8& image, std::optional<PixelRect> changed) {
 
 void Presenter::draw(ImDrawList* draw_list, ScreenRect where) const {
     if (!has_image() || where.width() <= 0) return;
+    // The image is opaque: drawn without blending, a software OpenGL need not
+    // read back the pixels under it. The callback after it restores ImGui's state.
+    draw_list->AddCallback([](const ImDrawList*, const ImDrawCmd*) { glDisable(GL_BLEND); },
+                           nullptr);
     // Texture row 0 is the image's bottom row; ImGui's y runs down.
     draw_list->AddImage(reinterpret_cast<ImTextureID>(static_cast<std::uintptr_t>(texture_)),
                         ImVec2(where.x0, where.y0), ImVec2(where.x1, where.y1), ImVec2(0, 1),
                         ImVec2(1, 0));
+    draw_list->AddCallback(ImDrawCallback_ResetRenderState, nullptr);
 }
 
 Image8 Presenter::read_texture() const {

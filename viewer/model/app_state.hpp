@@ -64,6 +64,14 @@ struct ViewerConfig {
     // pass takes a few milliseconds; a frame on a GPU takes one or two, so the
     // frame still makes its vsync. 0: never wait.
     std::chrono::milliseconds first_pass_wait{6};
+    // The same for the render of a scene just opened, which renders the
+    // preparation the loader made ahead (prepared_ahead.hpp). The loader hands
+    // such an open over once that preparation is done (prepared_ahead_hold),
+    // so this frame shows the first preview with the new scene's panels; on a
+    // busy machine the pass can take longer than first_pass_wait, and a frame
+    // drawn before it (with software OpenGL 10-30 ms of a core) would delay
+    // it by that frame. A preparation still under way is waited for as long.
+    std::chrono::milliseconds opened_first_pass_wait{50};
     int max_pixels = 4096 * 4096;  // larger images are refused, not allocated
 };
 

@@ -2,10 +2,10 @@
 // A scene's render preparation (the BVH build, for 100,000 objects the
 // largest step before the first preview) started on a thread of its own as
 // soon as the loader has validated the scene, so that it runs while the loader
-// copies the scene for the document and the frame takes the load in, instead
-// of after them. The render controller adopts it (RenderController::
-// adopt_prepared) and its first run waits for it rather than preparing the
-// same scene again.
+// copies the scene for the document, instead of after it; the loader hands the
+// open over once it is done (scene_loader.hpp: prepared_ahead_hold). The
+// render controller adopts it (RenderController::adopt_prepared) and its first
+// run waits for it rather than preparing the same scene again.
 
 #include "jtracer/error.hpp"
 #include "jtracer/render_job.hpp"

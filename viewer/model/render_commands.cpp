@@ -97,10 +97,16 @@ std::string validation_error(const AppState& state, const Scene& scene,
     return {};
 }
 
-// Waits, at most config.first_pass_wait, for the render just started to finish
-// its first pass (the render's wakeup ends the wait at once).
+// Waits, at most config.first_pass_wait (opened_first_pass_wait for a render
+// of a preparation made ahead), for the render just started to finish its
+// first pass (the render's wakeup ends the wait at once).
 void wait_for_first_pass(AppState& state) {
-    const auto deadline = std::chrono::steady_clock::now() + state.config.first_pass_wait;
+    const ViewerConfig& config = state.config;
+    const std::chrono::milliseconds wait =
+        state.render.renderer.renders_adopted()
+            ? std::max(config.first_pass_wait, config.opened_first_pass_wait)
+            : config.first_pass_wait;
+    const auto deadline = std::chrono::steady_clock::now() + wait;
     for (;;) {
         const std::uint64_t seen = state.wakeup.count();
         if (state.render.renderer.passes_since_start() > 0 || !state.render.renderer.active())

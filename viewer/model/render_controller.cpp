@@ -13,6 +13,7 @@ struct RenderController::Run {
     std::atomic<bool> stop{false};
     std::atomic<bool> done{false};
     std::atomic<int> passes{0};
+    bool adopted = false;  // renders the preparation adopted when it started (set before launch)
     mutable std::mutex mutex;                       // guards job and error
     std::shared_ptr<RenderJob> job;                 // set once the scene is prepared
     std::shared_ptr<const PreparedScene> prepared;  // the scene of `job`
@@ -103,6 +104,11 @@ std::shared_ptr<const Scene> RenderController::finish_adopted() {
     return ahead_as_is_ ? ahead->scene : nullptr;
 }
 
+bool RenderController::renders_adopted() const {
+    std::lock_guard lock(mutex_);
+    return current_ && current_->adopted;
+}
+
 void RenderController::pause() {
     std::lock_guard lock(mutex_);
     if (current_) current_->cancel();
@@ -188,6 +194,7 @@ void RenderController::start(std::shared_ptr<const Scene> scene, const RenderOpt
     std::shared_ptr<Run> old;
     {
         std::lock_guard lock(mutex_);
+        run->adopted = ahead_ && ahead_as_is_ && ahead_->scene == scene;
         old = std::exchange(current_, run);
     }
     if (old) {

@@ -77,6 +77,9 @@ class RenderController {
     // Why the current job could not run, or empty.
     std::string error() const;
     std::uint64_t jobs_started() const { return jobs_started_; }
+    // The current run renders the preparation adopted (adopt_prepared) when
+    // it started: its first pass follows that preparation, not one of its own.
+    bool renders_adopted() const;
     // Passes the current job has completed since it was started or last resumed.
     int passes_since_start() const;
     RunTimeline timeline() const;

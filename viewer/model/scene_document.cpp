@@ -95,12 +95,13 @@ void accept_load(SceneDocument& doc, const std::filesystem::path& path, LoadAtte
         }
         return;
     }
-    doc.diagnostics_source = attempt.text;
+    std::optional<LoadAttempt::TextCopies>& copies = attempt.text_copies;
+    doc.diagnostics_source = copies ? std::move(copies->diagnostics_source) : attempt.text;
     doc.parse_diagnostics = std::move(attempt.parse_diagnostics);
     doc.path = path;
     doc.loaded = true;
     doc.text = std::move(attempt.text);
-    doc.disk_text = doc.text;
+    doc.disk_text = copies ? std::move(copies->disk_text) : doc.text;
     doc.original = std::move(attempt.scene);
     doc.source = std::move(attempt.source);
     if (attempt.scene_copy)
@@ -108,7 +109,7 @@ void accept_load(SceneDocument& doc, const std::filesystem::path& path, LoadAtte
     else
         doc.scene = *doc.original;
     doc.draft.reset();
-    doc.uses_clock = text_uses_clock(doc.text, doc.source);
+    doc.uses_clock = copies ? copies->uses_clock : text_uses_clock(doc.text, doc.source);
     note_scene_changed(doc);
 }
 

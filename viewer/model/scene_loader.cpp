@@ -1,5 +1,7 @@
 #include "model/scene_loader.hpp"
 
+#include "model/scene_time.hpp"
+
 #include <exception>
 #include <future>
 #include <memory>
@@ -53,6 +55,8 @@ FinishedLoad SceneLoader::load(Request request) {
         try {
             ahead = preparer_.start(attempt.scene);
             attempt.scene_copy = copy.valid() ? copy.get() : Scene(*attempt.scene);
+            attempt.text_copies = LoadAttempt::TextCopies{
+                attempt.text, attempt.text, text_uses_clock(attempt.text, attempt.source)};
         } catch (const std::exception& e) {  // out of memory
             const LoadTimes times = attempt.times;
             attempt = LoadAttempt{};
@@ -62,7 +66,14 @@ FinishedLoad SceneLoader::load(Request request) {
             ahead.reset();
         }
     }
+    if (ahead) hold_until_prepared(*ahead);
     return FinishedLoad{request.path, request.purpose, std::move(attempt), std::move(ahead)};
+}
+
+void SceneLoader::hold_until_prepared(const PreparedAhead& ahead) const {
+    const auto until = LoadTimes::Clock::now() + prepared_ahead_hold;
+    while (!worker_.superseded() && LoadTimes::Clock::now() < until)
+        if (ahead.prepared.wait_for(prepared_ahead_hold_slice) == std::future_status::ready) return;
 }
 
 }  // namespace jt::view

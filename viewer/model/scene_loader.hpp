@@ -9,12 +9,24 @@
 #include "model/scene_document.hpp"
 #include "model/wakeup.hpp"
 
+#include <chrono>
 #include <filesystem>
 #include <optional>
 
 namespace jt::view {
 
 enum class LoadPurpose { open, reload };
+
+// An open's result is handed over once its preparation made ahead is done, up
+// to this long after the scene was copied: the frame that takes it in then
+// starts a render whose first pass comes within that frame's wait (a few ms),
+// and no frame is drawn beside the preparation meanwhile (with software
+// OpenGL a frame takes a core for 10-30 ms). The frame loop sleeps while the
+// load is in flight, and input still wakes it. A longer preparation (a million
+// objects) is handed over unfinished: the panels show, the preview follows.
+inline constexpr std::chrono::milliseconds prepared_ahead_hold{150};
+// How often that hold looks for a newer request, which ends it.
+inline constexpr std::chrono::milliseconds prepared_ahead_hold_slice{5};
 
 struct FinishedLoad {
     std::filesystem::path path;
@@ -53,6 +65,8 @@ class SceneLoader {
         LoadTimes::Clock::time_point requested;
     };
     FinishedLoad load(Request request);
+    // Waits for `ahead` (prepared_ahead_hold), unless a newer request comes.
+    void hold_until_prepared(const PreparedAhead& ahead) const;
 
     bool newest_is_open_ = false;  // UI thread only, as request()
     AheadPreparer preparer_;       // before worker_: used by its thread, joined after it

@@ -25,6 +25,7 @@
 #include <cerrno>
 #include <chrono>
 #include <fstream>
+#include <future>
 #include <iterator>
 #include <memory>
 #include <sstream>
@@ -153,6 +154,37 @@ TEST(Wakeup, ALoadWithNoRenderRunningSleepsAsLongAsIdle) {
     EXPECT_EQ(workers_frame_wait(state), idle_frame_wait);
     EXPECT_GT(idle_frame_wait, worker_frame_wait);
     state.files.loader.wait();
+}
+
+// The render of a scene just opened adopts the loader's preparation made
+// ahead, and its first pass comes only once that ends: the frame that takes
+// the load in waits for it (opened_first_pass_wait), so that the first preview
+// shows in that frame rather than after one more frame drawn beside the
+// preparation. Any other render waits no longer than first_pass_wait.
+TEST(FirstPreview, TheFrameThatTakesAnOpenInShowsItsFirstPass) {
+    ViewerConfig config = test_config();
+    config.first_pass_wait = std::chrono::milliseconds(0);
+    config.opened_first_pass_wait = std::chrono::minutes(1);  // long enough for any machine
+    AppState state(config);
+    request_open(state, kScene);
+    state.files.loader.wait();
+    model_frame(state);  // takes the load in and starts the render
+    ASSERT_TRUE(state.doc.loaded) << state.message;
+    ASSERT_EQ(state.render.renderer.jobs_started(), 1u) << state.render.render_note;
+    EXPECT_TRUE(state.render.renderer.renders_adopted());
+    EXPECT_GT(state.render.renderer.passes_since_start(), 0);
+    EXPECT_GE(state.render.passes_shown, 1) << "fetched in the frame that took the load in";
+
+    // A reload is not prepared ahead, nor is an edit: they wait as before.
+    reload_scene(state);
+    state.files.loader.wait();
+    model_frame(state);
+    ASSERT_EQ(state.render.renderer.jobs_started(), 2u) << state.render.render_note;
+    EXPECT_FALSE(state.render.renderer.renders_adopted());
+    edit_scene(state, [](Scene& s) { s.primitives[0].material.pigment = Colour(0.2, 0.4, 0.6); });
+    model_frame(state);
+    ASSERT_EQ(state.render.renderer.jobs_started(), 3u) << state.render.render_note;
+    EXPECT_FALSE(state.render.renderer.renders_adopted());
 }
 
 TEST(FirstPreview, AnOpenedSceneIsNotValidatedAgainBeforeItsRender) {
@@ -384,6 +416,44 @@ TEST(FirstPreview, AnOpenWithoutErrorsIsPreparedByTheLoader) {
     const std::optional<FinishedLoad> reloaded = loader.take();
     ASSERT_TRUE(reloaded && reloaded->attempt.ok);
     EXPECT_FALSE(reloaded->ahead) << "a reload reuses the geometry prepared already";
+}
+
+// The loader hands an open over once its preparation made ahead is done, so
+// that the frame taking it in shows the first preview (prepared_ahead_hold);
+// a newer request ends that hold.
+TEST(FirstPreview, AnOpenIsHandedOverOnceItsPreparationIsDone) {
+    const std::filesystem::path file = make_scratch_dir("jt_first_preview_hold") / "spheres.jts";
+    // Tens of milliseconds to prepare: more than the loader's copy of the scene.
+    std::string text =
+        "render_settings { width: 64; height: 48; }\n"
+        "cameras { perspective_camera { } }\nscene {\n";
+    for (int i = 0; i < 40'000; ++i)
+        text += "sphere { center: <" + std::to_string(i % 200) + ", " + std::to_string(i / 200) +
+                ", 0>; radius: 0.4; }\n";
+    std::ofstream(file) << text << "}\n";
+    SceneLoader loader;
+    loader.request(file, LoadPurpose::open);
+    loader.wait();
+    const std::optional<FinishedLoad> opened = loader.take();
+    ASSERT_TRUE(opened);
+    ASSERT_TRUE(opened->attempt.ok) << opened->attempt.diagnostics.front().message;
+    ASSERT_TRUE(opened->ahead);
+    EXPECT_EQ(opened->ahead->prepared.wait_for(std::chrono::seconds(0)), std::future_status::ready)
+        << "handed over with its preparation done";
+    EXPECT_TRUE(opened->ahead->prepared.get());
+    // Meanwhile it made the copies of the text the document keeps.
+    ASSERT_TRUE(opened->attempt.text_copies);
+    EXPECT_EQ(opened->attempt.text_copies->diagnostics_source, opened->attempt.text);
+    EXPECT_EQ(opened->attempt.text_copies->disk_text, opened->attempt.text);
+    EXPECT_FALSE(opened->attempt.text_copies->uses_clock);
+
+    // Overtaken by a newer request, maybe while it waits: the newer one is handed over.
+    loader.request(file, LoadPurpose::open);
+    loader.request(kScene, LoadPurpose::open);
+    loader.wait();
+    const std::optional<FinishedLoad> newest = loader.take();
+    ASSERT_TRUE(newest && newest->attempt.ok);
+    EXPECT_EQ(newest->path, kScene);
 }
 
 // An open, and a check of the editor's text, validate a large scene in chunks
