@@ -64,8 +64,8 @@ Expected<std::shared_ptr<const PreparedScene>> edit(const Scene& before, const S
                                                     std::shared_ptr<const Scene> owned,
                                                     std::shared_ptr<const PreparedScene> previous) {
     std::optional<std::vector<std::uint32_t>> changed;
-    // A scene that reads its materials in place (prepare_scene(Scene&&)) has
-    // no list to patch: only the edited scene, shared, can take its place.
+    // A scene that reads its materials in place (a shared one) has no list
+    // to patch: only the edited scene, shared, can take its place.
     if (previous && previous->geometry && (!previous->scene || owned))
         changed = changed_materials(before, scene);
     // Patterns need each primitive's pattern space, which the previous scene
