@@ -17,7 +17,6 @@
 #include <glm/geometric.hpp>
 
 #include <algorithm>
-#include <array>
 #include <atomic>
 #include <cmath>
 #include <limits>
@@ -242,28 +241,22 @@ void build_bvh(Geometry& g) {
         s.bounds.upper_z += static_cast<float>(g.bounds_slack);
         add_bounding_sphere(s);  // for the direction tables' lists, which have no boxes
     }
-    g.sphere_boxes.resize(g.spheres.size());
+    // Past half of Embree's reach, a padded box may reach beyond it; below,
+    // none of the spheres' can (their padding is a few millionths of the
+    // magnitude), and the pass is saved. NaN takes the pass.
     std::atomic<bool> spheres_beyond{false};
-    tbb::parallel_for(tbb::blocked_range<std::size_t>(0, g.spheres.size(), spheres_a_task),
-                      [&](const tbb::blocked_range<std::size_t>& range) {
-                          bool beyond = false;
-                          for (std::size_t i = range.begin(); i != range.end(); ++i) {
-                              const RTCBounds b = padded_float_bounds(
-                                  sphere_box(g.spheres[i].center, g.spheres[i].radius),
-                                  g.bounds_slack);
-                              g.sphere_boxes[i] = {b.lower_x, b.lower_y, b.lower_z,
-                                                   b.upper_x, b.upper_y, b.upper_z};
-                              beyond = beyond || !within_reach(b);
-                          }
-                          if (beyond) spheres_beyond.store(true, std::memory_order_relaxed);
-                      });
+    if (!(magnitude <= embree_reach / 2))
+        tbb::parallel_for(tbb::blocked_range<std::size_t>(0, g.spheres.size(), spheres_a_task),
+                          [&](const tbb::blocked_range<std::size_t>& range) {
+                              bool beyond = false;
+                              for (std::size_t i = range.begin(); i != range.end(); ++i)
+                                  beyond = beyond || !within_reach(padded_sphere_bounds(g, i));
+                              if (beyond) spheres_beyond.store(true, std::memory_order_relaxed);
+                          });
     // Rare (spheres past float range), so listed in order afterwards.
     if (spheres_beyond.load(std::memory_order_relaxed)) {
-        for (std::uint32_t i = 0; i < g.spheres.size(); ++i) {
-            const std::array<float, 6>& b = g.sphere_boxes[i];
-            if (!within_reach(RTCBounds{b[0], b[1], b[2], 0.0f, b[3], b[4], b[5], 0.0f}))
-                g.beyond_bvh.push_back(i);
-        }
+        for (std::uint32_t i = 0; i < g.spheres.size(); ++i)
+            if (!within_reach(padded_sphere_bounds(g, i))) g.beyond_bvh.push_back(i);
     }
     for (std::uint32_t i = 0; i < g.shapes.size(); ++i)
         if (!within_reach(g.shapes[i].bounds)) g.beyond_bvh.push_back(i | shape_flag);
@@ -280,7 +273,6 @@ void build_bvh(Geometry& g) {
         g.shape_geometry_id = attach_user_geometry(g.bvh, &g, g.shapes.size(), quality,
                                                    shape_bounds, shape_intersect, shape_occluded);
     rtcCommitScene(g.bvh);
-    g.sphere_boxes = std::vector<std::array<float, 6>>();
     g.crowded = spheres_overlap_heavily(g.spheres);
     if (g.crowded) build_shadow_spheres(g, magnitude, quality);
 }

@@ -6,6 +6,7 @@
 // inverse transform, and infinite planes (outside the BVH). Every entry keeps
 // `source`, the index of the Scene primitive it came from, for its material.
 
+#include "geometry/bounds.hpp"
 #include "jtracer/affine.hpp"
 #include "jtracer/file_stamp.hpp"
 #include "jtracer/render_job.hpp"
@@ -16,7 +17,6 @@
 
 #include <embree3/rtcore.h>
 
-#include <array>
 #include <cstdint>
 #include <memory>
 #include <vector>
@@ -82,12 +82,6 @@ struct Geometry {
     std::vector<TransformedShape> shapes;
     std::vector<WorldPlane> planes;
     double bounds_slack = 0.0;  // world-space margin added to every box
-    // Each sphere's padded float box, only while the BVH builds: the Morton
-    // builder asks for boxes in Morton order, more than once each, and a copy
-    // from here costs less than padding the sphere again at a random place.
-    // Six floats (lower then upper corner), not RTCBounds' eight: a million
-    // spheres' boxes take 24 MB at the peak of the build, not 32.
-    std::vector<std::array<float, 6>> sphere_boxes;
     // Null when there are so few bounded shapes that testing each one beats a
     // BVH walk (Embree's per-ray overhead dominates a handful of shapes).
     RTCScene bvh = nullptr;
@@ -114,6 +108,16 @@ struct Geometry {
     Geometry& operator=(const Geometry&) = delete;
     ~Geometry();
 };
+
+// Sphere `i`'s box as the BVH holds it: grown by bounds_slack and rounded
+// outward to floats. Worked out whenever the builder asks, never kept: the
+// spheres are sorted in the order the Morton builder asks for them, where
+// working a box out costs about what reading a kept one does, and a million
+// kept boxes would take 24 MB at the peak of the build.
+inline RTCBounds padded_sphere_bounds(const Geometry& g, std::size_t i) {
+    return padded_float_bounds(sphere_box(g.spheres[i].center, g.spheres[i].radius),
+                               g.bounds_slack);
+}
 
 struct PreparedScene {
     std::shared_ptr<const Geometry> geometry;
