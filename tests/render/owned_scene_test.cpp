@@ -82,9 +82,9 @@ TEST(OwnedScene, ManyMaterialsAreTakenAndThePrimitivesFreed) {
     const auto owned = prepare_scene(std::move(given)).value();
     EXPECT_FALSE(owned->scene);
     ASSERT_EQ(owned->materials.size(), scene.primitives.size());
-    ASSERT_EQ(owned->material_of.size(), scene.primitives.size());
-    for (std::size_t i = 0; i < scene.primitives.size(); ++i) {
-        const Material& m = owned->materials[owned->material_of[i]];
+    EXPECT_TRUE(owned->material_of.empty()) << "each primitive's entry at its index";
+    for (std::uint32_t i = 0; i < scene.primitives.size(); ++i) {
+        const Material& m = primitive_material(*owned, i);
         ASSERT_EQ(m, scene.primitives[i].material) << "primitive " << i;
         ASSERT_TRUE(m.finish.unique()) << "primitive " << i;
     }
@@ -103,6 +103,30 @@ TEST(OwnedScene, RandomScenesRenderTheSameBytes) {
                       render_prepared(prepare_scene(scene).value(), scene))
                 << "seed " << seed;
         }
+    }
+}
+
+// Runs of equal materials share an entry, also when the first run comes
+// after many primitives of their own; and an edit patches either form.
+TEST(OwnedScene, RunsAfterDistinctMaterialsShareEntries) {
+    Scene scene = with_many_materials(mixed_scene());
+    for (int i = 0; i < 3; ++i) scene.primitives.push_back(scene.primitives[2]);
+    const auto owned = prepare_scene(Scene(scene)).value();
+    EXPECT_EQ(owned->materials.size(), scene.primitives.size() - 2) << "the last three alike";
+    ASSERT_EQ(owned->material_of.size(), scene.primitives.size());
+    for (std::uint32_t i = 0; i < scene.primitives.size(); ++i)
+        ASSERT_EQ(primitive_material(*owned, i), scene.primitives[i].material) << i;
+    EXPECT_EQ(render_prepared(owned, scene), render_prepared(prepare_scene(scene).value(), scene));
+
+    for (const Scene& before : {scene, with_many_materials(mixed_scene())}) {
+        const auto previous = prepare_scene(Scene(before)).value();
+        Scene after = before;
+        after.primitives.back().material.pigment = {0.95, 0.1, 0.1};
+        after.primitives[4].material.pigment = {0.1, 0.95, 0.1};
+        const auto edited = prepare_scene_edit(before, after, previous).value();
+        EXPECT_EQ(edited->materials_gathered, 2u);
+        EXPECT_EQ(render_prepared(edited, after),
+                  render_prepared(prepare_scene(after).value(), after));
     }
 }
 

@@ -131,7 +131,11 @@ struct PreparedScene {
     std::shared_ptr<const Scene> scene;
     // Runs of primitives with equal materials share one entry.
     std::vector<Material> materials;
-    std::vector<std::uint32_t> material_of;  // indexed by Scene primitive
+    // Each Scene primitive's entry of `materials`; empty with `materials` not
+    // when every primitive has an entry of its own, the one at its index (a
+    // scene handed over with no two neighbours alike): shading then reads one
+    // array where it would read two at random places.
+    std::vector<std::uint32_t> material_of;
     // Each Scene primitive's shape and world-to-object map, for patterns;
     // empty when no material has one.
     std::vector<PatternSpace> pattern_space;
@@ -167,10 +171,16 @@ struct PreparedScene {
     std::size_t materials_gathered = 0;
 };
 
+// The entry of `materials` (and of `textures`) of Scene primitive `source`,
+// when the materials are not read in place.
+inline std::uint32_t material_entry(const PreparedScene& prepared, std::uint32_t source) {
+    return prepared.material_of.empty() ? source : prepared.material_of[source];
+}
+
 // The material of Scene primitive `source`.
 inline const Material& primitive_material(const PreparedScene& prepared, std::uint32_t source) {
     return prepared.scene ? prepared.scene->primitives[source].material
-                          : prepared.materials[prepared.material_of[source]];
+                          : prepared.materials[material_entry(prepared, source)];
 }
 
 }  // namespace jt
