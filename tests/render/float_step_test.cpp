@@ -1,6 +1,8 @@
 // The bit-pattern float neighbours against std::nextafter: a spread of every
 // float's bit patterns plus the edges where the arithmetic changes (zeros,
-// subnormals, the largest finite, infinities, NaNs).
+// subnormals, the largest finite, infinities, NaNs). The floats at or below
+// and at or above a double against rounding and stepping with nextafter, on
+// doubles at, between and around those floats.
 
 #include "geometry/float_step.hpp"
 
@@ -70,6 +72,41 @@ TEST(FloatStep, EdgesByName) {
     EXPECT_TRUE(same_float(next_float_up(infinity), infinity));
     EXPECT_TRUE(same_float(next_float_down(-infinity), -infinity));
     EXPECT_TRUE(std::isnan(next_float_up(std::numeric_limits<float>::quiet_NaN())));
+}
+
+// Doubles on each float of the sample, a little off it either way, half way
+// to its neighbours, and past the float range and the smallest subnormal.
+std::vector<double> doubles_around_floats() {
+    const double infinity = std::numeric_limits<double>::infinity();
+    std::vector<double> out;
+    for (std::uint32_t bits : patterns()) {
+        const float f = std::bit_cast<float>(bits);
+        const double d = f;
+        out.push_back(d);
+        out.push_back(std::nextafter(d, -infinity));
+        out.push_back(std::nextafter(d, infinity));
+        out.push_back(0.5 * (d + static_cast<double>(std::nextafter(f, -infinity))));
+        out.push_back(0.5 * (d + static_cast<double>(std::nextafter(f, infinity))));
+    }
+    for (double d : {1e-300, 1e-46, 1e39, 1e300, std::numeric_limits<double>::denorm_min()}) {
+        out.push_back(d);
+        out.push_back(-d);
+    }
+    return out;
+}
+
+TEST(FloatStep, AtOrBelowAndAboveEqualRoundingThenNextafter) {
+    const float infinity = std::numeric_limits<float>::infinity();
+    std::size_t mismatches = 0;
+    for (double x : doubles_around_floats()) {
+        const float nearest = static_cast<float>(x);
+        const double back = nearest;
+        const float below = back > x ? std::nextafter(nearest, -infinity) : nearest;
+        const float above = back < x ? std::nextafter(nearest, infinity) : nearest;
+        if (!same_float(float_at_or_below(x), below)) ++mismatches;
+        if (!same_float(float_at_or_above(x), above)) ++mismatches;
+    }
+    EXPECT_EQ(mismatches, 0u);
 }
 
 }  // namespace

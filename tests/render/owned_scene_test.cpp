@@ -1,6 +1,8 @@
-// prepare_scene(Scene&&): a scene handed over is kept by the prepared scene,
-// which reads each primitive's material where the scene holds it once a copy
-// would be large, and renders the same bytes as a preparation that copies.
+// prepare_scene(Scene&&): a scene handed over is not kept; its materials are
+// moved into the prepared scene and its primitives freed before the BVH is
+// built, and it renders the same bytes as a preparation that copies. A scene
+// shared (prepare_scene(std::shared_ptr<const Scene>)) is kept, and read in
+// place once a copy would be large.
 
 #include "random_scene.hpp"
 #include "render/prepared_scene.hpp"
@@ -48,7 +50,7 @@ Scene mixed_scene() {
 }
 
 // Appends more distinct materials than prepare_scene copies for a scene
-// handed over, on spheres flattened by a zero scale, which the transform rule
+// shared, on spheres flattened by a zero scale, which the transform rule
 // leaves out of the picture.
 constexpr int many_materials = 20000;
 Scene with_many_materials(Scene s) {
@@ -60,23 +62,32 @@ Scene with_many_materials(Scene s) {
     return s;
 }
 
-TEST(OwnedScene, AFewMaterialsAreStillCopied) {
+TEST(OwnedScene, AFewMaterialsAreTaken) {
     const auto owned = prepare_scene(mixed_scene()).value();
     EXPECT_FALSE(owned->scene);
     EXPECT_EQ(owned->materials.size(), mixed_scene().primitives.size());
 }
 
-TEST(OwnedScene, ManyMaterialsAreReadInPlaceWithTheSameBytes) {
+// Many distinct materials are moved out of the scene, not copied and not read
+// where it holds them: nothing but the prepared scene holds a finish of its
+// own afterwards, so no primitive of the scene is left.
+TEST(OwnedScene, ManyMaterialsAreTakenAndThePrimitivesFreed) {
     const Scene scene = with_many_materials(mixed_scene());
     const auto copied = prepare_scene(scene).value();
     ASSERT_FALSE(copied->scene);
     ASSERT_FALSE(copied->materials.empty());
 
-    const auto owned = prepare_scene(Scene(scene)).value();
-    ASSERT_TRUE(owned->scene);
-    EXPECT_EQ(*owned->scene, scene);
-    EXPECT_TRUE(owned->materials.empty());
-    EXPECT_TRUE(owned->material_of.empty());
+    Scene given = scene;
+    for (Primitive& p : given.primitives) p.material.finish.edit();  // a finish of its own
+    const auto owned = prepare_scene(std::move(given)).value();
+    EXPECT_FALSE(owned->scene);
+    ASSERT_EQ(owned->materials.size(), scene.primitives.size());
+    EXPECT_TRUE(owned->material_of.empty()) << "each primitive's entry at its index";
+    for (std::uint32_t i = 0; i < scene.primitives.size(); ++i) {
+        const Material& m = primitive_material(*owned, i);
+        ASSERT_EQ(m, scene.primitives[i].material) << "primitive " << i;
+        ASSERT_TRUE(m.finish.unique()) << "primitive " << i;
+    }
     EXPECT_TRUE(owned->has_transmission);
     EXPECT_EQ(owned->materials_gathered, scene.primitives.size());
     EXPECT_EQ(render_prepared(owned, scene), render_prepared(copied, scene));
@@ -84,12 +95,38 @@ TEST(OwnedScene, ManyMaterialsAreReadInPlaceWithTheSameBytes) {
 
 TEST(OwnedScene, RandomScenesRenderTheSameBytes) {
     for (std::uint64_t seed = 1; seed <= 12; ++seed) {
-        const Scene scene = with_many_materials(random_scene(seed).scene);
-        const auto owned = prepare_scene(Scene(scene)).value();
-        ASSERT_TRUE(owned->scene) << "seed " << seed;
-        EXPECT_EQ(render_prepared(owned, scene),
-                  render_prepared(prepare_scene(scene).value(), scene))
-            << "seed " << seed;
+        for (const Scene& scene :
+             {random_scene(seed).scene, with_many_materials(random_scene(seed).scene)}) {
+            const auto owned = prepare_scene(Scene(scene)).value();
+            ASSERT_FALSE(owned->scene) << "seed " << seed;
+            EXPECT_EQ(render_prepared(owned, scene),
+                      render_prepared(prepare_scene(scene).value(), scene))
+                << "seed " << seed;
+        }
+    }
+}
+
+// Runs of equal materials share an entry, also when the first run comes
+// after many primitives of their own; and an edit patches either form.
+TEST(OwnedScene, RunsAfterDistinctMaterialsShareEntries) {
+    Scene scene = with_many_materials(mixed_scene());
+    for (int i = 0; i < 3; ++i) scene.primitives.push_back(scene.primitives[2]);
+    const auto owned = prepare_scene(Scene(scene)).value();
+    EXPECT_EQ(owned->materials.size(), scene.primitives.size() - 2) << "the last three alike";
+    ASSERT_EQ(owned->material_of.size(), scene.primitives.size());
+    for (std::uint32_t i = 0; i < scene.primitives.size(); ++i)
+        ASSERT_EQ(primitive_material(*owned, i), scene.primitives[i].material) << i;
+    EXPECT_EQ(render_prepared(owned, scene), render_prepared(prepare_scene(scene).value(), scene));
+
+    for (const Scene& before : {scene, with_many_materials(mixed_scene())}) {
+        const auto previous = prepare_scene(Scene(before)).value();
+        Scene after = before;
+        after.primitives.back().material.pigment = {0.95, 0.1, 0.1};
+        after.primitives[4].material.pigment = {0.1, 0.95, 0.1};
+        const auto edited = prepare_scene_edit(before, after, previous).value();
+        EXPECT_EQ(edited->materials_gathered, 2u);
+        EXPECT_EQ(render_prepared(edited, after),
+                  render_prepared(prepare_scene(after).value(), after));
     }
 }
 
@@ -106,24 +143,24 @@ TEST(OwnedScene, APatternGathersTheMaterials) {
     EXPECT_EQ(render_prepared(owned, scene), render_prepared(prepare_scene(scene).value(), scene));
 }
 
-// With no list to patch, an edit after a handed-over scene prepares the whole
-// scene again (its geometry reused): the same bytes as a fresh preparation.
-TEST(OwnedScene, AnEditAfterItPreparesTheWholeScene) {
+// A handed-over scene leaves a list of materials, so an edit after it patches
+// that list (its geometry reused): the same bytes as a fresh preparation.
+TEST(OwnedScene, AnEditAfterItIsPatched) {
     const Scene before = with_many_materials(mixed_scene());
     const auto previous = prepare_scene(Scene(before)).value();
-    ASSERT_TRUE(previous->scene);
+    ASSERT_FALSE(previous->scene);
     Scene after = before;
     after.primitives[4].material.pigment = {0.95, 0.1, 0.1};
     const auto edited = prepare_scene_edit(before, after, previous).value();
-    EXPECT_EQ(edited->materials_gathered, after.primitives.size());
+    EXPECT_EQ(edited->materials_gathered, 1u);
     EXPECT_EQ(edited->geometry, previous->geometry);
     const Image8 image = render_prepared(edited, after);
     EXPECT_EQ(image, render_prepared(prepare_scene(after).value(), after));
     EXPECT_NE(image, render_prepared(previous, before));
 }
 
-// A scene shared with its caller is read in place as a handed-over one is,
-// and a material edit of it is patched by holding the edited scene: nothing
+// A scene shared with its caller is kept and read in place, and a material
+// edit of it is patched by holding the edited scene: nothing
 // gathered, the geometry kept, the bytes of a fresh preparation.
 TEST(OwnedScene, ASharedSceneIsReadInPlaceAndItsEditPatched) {
     const auto before = std::make_shared<const Scene>(with_many_materials(mixed_scene()));

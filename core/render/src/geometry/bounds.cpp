@@ -15,18 +15,6 @@ namespace {
 // magnitude covers rays that start and travel at the scale of the box.
 constexpr double relative_margin = 1e-6;
 
-float float_down(double x) {
-    float f = static_cast<float>(x);
-    if (static_cast<double>(f) > x) f = next_float_down(f);
-    return f;
-}
-
-float float_up(double x) {
-    float f = static_cast<float>(x);
-    if (static_cast<double>(f) < x) f = next_float_up(f);
-    return f;
-}
-
 }  // namespace
 
 Box sphere_box(const Vec3& center, double radius) {
@@ -66,12 +54,12 @@ RTCBounds padded_float_bounds(const Box& box, double slack) {
     double size = std::max({extent.x, extent.y, extent.z});
     double pad = relative_margin * (magnitude + size) + slack;
     RTCBounds b;
-    b.lower_x = float_down(box.lower.x - pad);
-    b.lower_y = float_down(box.lower.y - pad);
-    b.lower_z = float_down(box.lower.z - pad);
-    b.upper_x = float_up(box.upper.x + pad);
-    b.upper_y = float_up(box.upper.y + pad);
-    b.upper_z = float_up(box.upper.z + pad);
+    b.lower_x = float_at_or_below(box.lower.x - pad);
+    b.lower_y = float_at_or_below(box.lower.y - pad);
+    b.lower_z = float_at_or_below(box.lower.z - pad);
+    b.upper_x = float_at_or_above(box.upper.x + pad);
+    b.upper_y = float_at_or_above(box.upper.y + pad);
+    b.upper_z = float_at_or_above(box.upper.z + pad);
     b.align0 = b.align1 = 0.0f;
     return b;
 }

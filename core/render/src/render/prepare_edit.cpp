@@ -2,7 +2,8 @@
 //
 // Each material entry of a prepared scene serves one run of consecutive
 // primitives (prepare_scene merges runs of equal materials), and the tracer
-// only ever reads materials[material_of[primitive]]. So a primitive whose
+// only ever reads materials[material_of[primitive]] (or materials[primitive]
+// when every primitive has its own entry). So a primitive whose
 // material changed either takes over its entry, when the run is itself alone,
 // or gets a new entry at the end; every primitive then sees the material it
 // would see in a fresh preparation, and the pixels are the same. A prepared
@@ -44,6 +45,10 @@ std::optional<std::vector<std::uint32_t>> changed_materials(const Scene& before,
 // Gives primitive `i` the material `m` in `prepared` (see the file comment).
 void set_material(PreparedScene& prepared, std::uint32_t i, const Material& m) {
     std::vector<std::uint32_t>& of = prepared.material_of;
+    if (of.empty()) {  // every primitive's entry its own, at its index
+        prepared.materials[i] = m;
+        return;
+    }
     const std::uint32_t entry = of[i];
     const bool alone =
         (i == 0 || of[i - 1] != entry) && (std::size_t{i} + 1 == of.size() || of[i + 1] != entry);
@@ -64,8 +69,8 @@ Expected<std::shared_ptr<const PreparedScene>> edit(const Scene& before, const S
                                                     std::shared_ptr<const Scene> owned,
                                                     std::shared_ptr<const PreparedScene> previous) {
     std::optional<std::vector<std::uint32_t>> changed;
-    // A scene that reads its materials in place (prepare_scene(Scene&&)) has
-    // no list to patch: only the edited scene, shared, can take its place.
+    // A scene that reads its materials in place (a shared one) has no list
+    // to patch: only the edited scene, shared, can take its place.
     if (previous && previous->geometry && (!previous->scene || owned))
         changed = changed_materials(before, scene);
     // Patterns need each primitive's pattern space, which the previous scene

@@ -1,4 +1,5 @@
 #include "geometry/bounds.hpp"
+#include "io/huge_pages.hpp"
 #include "render/embree_device.hpp"
 #include "render/far_ray.hpp"
 #include "render/listed_shapes.hpp"
@@ -17,7 +18,6 @@
 #include <glm/geometric.hpp>
 
 #include <algorithm>
-#include <array>
 #include <atomic>
 #include <cmath>
 #include <limits>
@@ -85,11 +85,11 @@ void sort_spheres_along_a_curve(std::vector<WorldSphere>& spheres) {
     spheres = std::move(sorted);
 }
 
-// A scene handed over (prepare_scene(Scene&&)) still has its materials copied
-// while the copy stays this short (512 KiB of materials; their finishes are
-// shared with the scene's, not copied): a short list stays in the caches,
-// where reading each primitive's own material would walk the whole scene.
-// Past it, the materials are read where the scene holds them.
+// A scene shared (prepare_scene(std::shared_ptr<const Scene>)) still has its
+// materials copied while the copy stays this short (512 KiB of materials;
+// their finishes are shared with the scene's, not copied): a short list stays
+// in the caches, where reading each primitive's own material would walk the
+// whole scene. Past it, the materials are read where the scene holds them.
 constexpr std::size_t max_copied_materials = 16384;
 
 // The world spheres' boxes and their magnitude are worked out on every core
@@ -190,8 +190,10 @@ double scene_magnitude(const Geometry& g) {
     return m;
 }
 
-// Without its digest, which the caller works out beside the build.
-Expected<std::shared_ptr<Geometry>> build_geometry(const Scene& scene) {
+// Every shape of `scene` in world space, without the BVH (build_bvh) and the
+// digest (which the caller works out beside this). Reads no material: a
+// scene handed over gives its materials up meanwhile.
+Expected<std::shared_ptr<Geometry>> gather_geometry(const Scene& scene) {
     auto g = std::make_shared<Geometry>();
     auto triangles = build_triangle_geometry(scene);
     if (!triangles) return triangles.error();
@@ -216,67 +218,64 @@ Expected<std::shared_ptr<Geometry>> build_geometry(const Scene& scene) {
         else if (const auto* plane = shape_if<Plane>(&p.shape))
             add_plane(*g, *plane, transform, source);
     }
-    std::size_t bounded = g->spheres.size() + g->shapes.size();
+    return g;
+}
+
+// The BVH over the gathered spheres and shapes, with the lists it needs;
+// none for a handful of them.
+void build_bvh(Geometry& g) {
+    std::size_t bounded = g.spheres.size() + g.shapes.size();
     if (bounded <= brute_force_limit) {
-        for (TransformedShape& s : g->shapes) add_bounding_sphere(s);
-        return g;
+        for (TransformedShape& s : g.shapes) add_bounding_sphere(s);
+        return;
     }
 
-    if (bounded > fast_build_threshold) sort_spheres_along_a_curve(g->spheres);
-    const double magnitude = scene_magnitude(*g);
-    g->bounds_slack = 1e-6 * magnitude;
-    for (TransformedShape& s : g->shapes) {
-        s.bounds.lower_x -= static_cast<float>(g->bounds_slack);
-        s.bounds.lower_y -= static_cast<float>(g->bounds_slack);
-        s.bounds.lower_z -= static_cast<float>(g->bounds_slack);
-        s.bounds.upper_x += static_cast<float>(g->bounds_slack);
-        s.bounds.upper_y += static_cast<float>(g->bounds_slack);
-        s.bounds.upper_z += static_cast<float>(g->bounds_slack);
+    if (bounded > fast_build_threshold) sort_spheres_along_a_curve(g.spheres);
+    const double magnitude = scene_magnitude(g);
+    g.bounds_slack = 1e-6 * magnitude;
+    for (TransformedShape& s : g.shapes) {
+        s.bounds.lower_x -= static_cast<float>(g.bounds_slack);
+        s.bounds.lower_y -= static_cast<float>(g.bounds_slack);
+        s.bounds.lower_z -= static_cast<float>(g.bounds_slack);
+        s.bounds.upper_x += static_cast<float>(g.bounds_slack);
+        s.bounds.upper_y += static_cast<float>(g.bounds_slack);
+        s.bounds.upper_z += static_cast<float>(g.bounds_slack);
         add_bounding_sphere(s);  // for the direction tables' lists, which have no boxes
     }
-    g->sphere_boxes.resize(g->spheres.size());
+    // Past half of Embree's reach, a padded box may reach beyond it; below,
+    // none of the spheres' can (their padding is a few millionths of the
+    // magnitude), and the pass is saved. NaN takes the pass.
     std::atomic<bool> spheres_beyond{false};
-    tbb::parallel_for(tbb::blocked_range<std::size_t>(0, g->spheres.size(), spheres_a_task),
-                      [&](const tbb::blocked_range<std::size_t>& range) {
-                          bool beyond = false;
-                          for (std::size_t i = range.begin(); i != range.end(); ++i) {
-                              const RTCBounds b = padded_float_bounds(
-                                  sphere_box(g->spheres[i].center, g->spheres[i].radius),
-                                  g->bounds_slack);
-                              g->sphere_boxes[i] = {b.lower_x, b.lower_y, b.lower_z,
-                                                    b.upper_x, b.upper_y, b.upper_z};
-                              beyond = beyond || !within_reach(b);
-                          }
-                          if (beyond) spheres_beyond.store(true, std::memory_order_relaxed);
-                      });
+    if (!(magnitude <= embree_reach / 2))
+        tbb::parallel_for(tbb::blocked_range<std::size_t>(0, g.spheres.size(), spheres_a_task),
+                          [&](const tbb::blocked_range<std::size_t>& range) {
+                              bool beyond = false;
+                              for (std::size_t i = range.begin(); i != range.end(); ++i)
+                                  beyond = beyond || !within_reach(padded_sphere_bounds(g, i));
+                              if (beyond) spheres_beyond.store(true, std::memory_order_relaxed);
+                          });
     // Rare (spheres past float range), so listed in order afterwards.
     if (spheres_beyond.load(std::memory_order_relaxed)) {
-        for (std::uint32_t i = 0; i < g->spheres.size(); ++i) {
-            const std::array<float, 6>& b = g->sphere_boxes[i];
-            if (!within_reach(RTCBounds{b[0], b[1], b[2], 0.0f, b[3], b[4], b[5], 0.0f}))
-                g->beyond_bvh.push_back(i);
-        }
+        for (std::uint32_t i = 0; i < g.spheres.size(); ++i)
+            if (!within_reach(padded_sphere_bounds(g, i))) g.beyond_bvh.push_back(i);
     }
-    for (std::uint32_t i = 0; i < g->shapes.size(); ++i)
-        if (!within_reach(g->shapes[i].bounds)) g->beyond_bvh.push_back(i | shape_flag);
+    for (std::uint32_t i = 0; i < g.shapes.size(); ++i)
+        if (!within_reach(g.shapes[i].bounds)) g.beyond_bvh.push_back(i | shape_flag);
 
-    g->bvh = rtcNewScene(embree_device());
+    g.bvh = rtcNewScene(embree_device());
     const RTCBuildQuality quality =
         bounded > fast_build_threshold ? RTC_BUILD_QUALITY_LOW : RTC_BUILD_QUALITY_MEDIUM;
-    rtcSetSceneBuildQuality(g->bvh, quality);
-    rtcSetSceneFlags(g->bvh, RTC_SCENE_FLAG_ROBUST);
-    if (!g->spheres.empty())
-        g->sphere_geometry_id =
-            attach_user_geometry(g->bvh, g.get(), g->spheres.size(), quality, sphere_bounds,
-                                 sphere_intersect, sphere_occluded);
-    if (!g->shapes.empty())
-        g->shape_geometry_id = attach_user_geometry(g->bvh, g.get(), g->shapes.size(), quality,
-                                                    shape_bounds, shape_intersect, shape_occluded);
-    rtcCommitScene(g->bvh);
-    g->sphere_boxes = {};
-    g->crowded = spheres_overlap_heavily(g->spheres);
-    if (g->crowded) build_shadow_spheres(*g, magnitude, quality);
-    return g;
+    rtcSetSceneBuildQuality(g.bvh, quality);
+    rtcSetSceneFlags(g.bvh, RTC_SCENE_FLAG_ROBUST);
+    if (!g.spheres.empty())
+        g.sphere_geometry_id = attach_user_geometry(
+            g.bvh, &g, g.spheres.size(), quality, sphere_bounds, sphere_intersect, sphere_occluded);
+    if (!g.shapes.empty())
+        g.shape_geometry_id = attach_user_geometry(g.bvh, &g, g.shapes.size(), quality,
+                                                   shape_bounds, shape_intersect, shape_occluded);
+    rtcCommitScene(g.bvh);
+    g.crowded = spheres_overlap_heavily(g.spheres);
+    if (g.crowded) build_shadow_spheres(g, magnitude, quality);
 }
 
 // Each primitive's shape and world-to-object map when any material has a
@@ -358,13 +357,61 @@ Expected<void> load_textures(const Scene& scene, PreparedScene& prepared,
     return {};
 }
 
+// Each primitive's material into `prepared`, runs of equal ones as one entry;
+// `most` entries at most, else none and false (the caller reads them in place).
+bool gather_materials(const Scene& scene, std::size_t most, PreparedScene& prepared) {
+    prepared.materials.reserve(std::min(most, scene.primitives.size()));
+    prepared.material_of.reserve(scene.primitives.size());
+    for (const Primitive& p : scene.primitives) {
+        if (prepared.materials.empty() || !(prepared.materials.back() == p.material)) {
+            if (prepared.materials.size() == most) {
+                prepared.materials = std::vector<Material>();
+                prepared.material_of = std::vector<std::uint32_t>();
+                return false;
+            }
+            prepared.materials.push_back(p.material);
+        }
+        prepared.material_of.push_back(static_cast<std::uint32_t>(prepared.materials.size() - 1));
+    }
+    return true;
+}
+
+// The same for a scene handed over, whose materials are moved out, not copied:
+// its primitives are freed next, and a million distinct materials take 32 MB
+// here where the primitives holding them took 96. While no two neighbours are
+// alike, each primitive's entry is the one at its index and `material_of`
+// stays empty; the first run of equal ones lists the entries so far.
+void take_materials(Scene& scene, PreparedScene& prepared) {
+    // Room for every primitive's own material: pages never written cost
+    // nothing, while growing by copies would hold the old and new list at once.
+    // Shading reads the list at random places: on 4 KiB pages, a million
+    // materials' 32 MB miss the TLB at most hits, where the parser's array
+    // of primitives they were read from sat on 2 MiB pages.
+    prepared.materials.reserve(scene.primitives.size());
+    advise_huge_pages(prepared.materials);
+    for (std::size_t i = 0; i < scene.primitives.size(); ++i) {
+        Material& m = scene.primitives[i].material;
+        const bool alike = !prepared.materials.empty() && prepared.materials.back() == m;
+        if (alike && prepared.material_of.empty()) {
+            prepared.material_of.reserve(scene.primitives.size());
+            for (std::uint32_t j = 0; j < i; ++j) prepared.material_of.push_back(j);
+        }
+        if (!alike) prepared.materials.push_back(std::move(m));
+        if (!prepared.material_of.empty())
+            prepared.material_of.push_back(
+                static_cast<std::uint32_t>(prepared.materials.size() - 1));
+    }
+}
+
 // The scene's materials are read in place only from a scene the prepared one
-// owns, only when no pattern needs `textures` and `pattern_space` (parallel to
-// a gathered list), and only when a copy would be large.
+// shares (`owned`), only when no pattern needs `textures` and `pattern_space`
+// (parallel to a gathered list), and only when a copy would be large. A scene
+// handed over (`handed`, the same as `scene`) has its materials moved out and
+// its primitives freed before the BVH is built, the largest allocation of all.
 Expected<std::shared_ptr<const PreparedScene>> prepare(
-    const Scene& scene, std::shared_ptr<const Scene> owned,
+    const Scene& scene, std::shared_ptr<const Scene> owned, Scene* handed,
     std::shared_ptr<const PreparedScene> previous) {
-    // Checked here, before any work: build_geometry needs the device.
+    // Checked here, before any work: the geometry needs the device.
     if (!embree_device()) return Error{embree_device_failure()};
     auto prepared = std::make_shared<PreparedScene>();
     // The digest decides first whether a previous geometry serves again;
@@ -372,50 +419,46 @@ Expected<std::shared_ptr<const PreparedScene>> prepare(
     // the build (a pass over a million primitives).
     const bool may_reuse = previous && previous->geometry;
     GeometryDigest digest = may_reuse ? digest_geometry(scene) : GeometryDigest{};
+    const bool reuse = may_reuse && previous->geometry->digest == digest;
     std::shared_ptr<Geometry> built_geometry;
     std::optional<Error> build_error;
     auto build = [&] {
-        if (may_reuse && previous->geometry->digest == digest) {
-            prepared->geometry = previous->geometry;
+        if (reuse) return;
+        auto gathered = gather_geometry(scene);
+        if (!gathered) {
+            build_error = gathered.error();
             return;
         }
-        auto built = build_geometry(scene);
-        if (built)
-            built_geometry = std::move(*built);
-        else
-            build_error = built.error();
+        built_geometry = std::move(*gathered);
+        // A scene handed over is freed first (below); one shared stays anyway.
+        if (!handed) build_bvh(*built_geometry);
     };
-    auto gather_materials = [&] {
+    auto read_materials = [&] {
         prepared->materials_gathered = scene.primitives.size();
-        const bool may_read_in_place =
-            owned && std::none_of(scene.primitives.begin(), scene.primitives.end(),
-                                  [](const Primitive& p) { return has_pattern(p.material); });
-        const std::size_t most = may_read_in_place ? max_copied_materials : scene.primitives.size();
-        prepared->materials.reserve(std::min(most, scene.primitives.size()));
-        prepared->material_of.reserve(scene.primitives.size());
-        for (const Primitive& p : scene.primitives) {
-            if (prepared->materials.empty() || !(prepared->materials.back() == p.material)) {
-                if (prepared->materials.size() == most) {
-                    prepared->materials = {};
-                    prepared->material_of = {};
-                    prepared->scene = std::move(owned);
-                    break;
-                }
-                prepared->materials.push_back(p.material);
-            }
-            prepared->material_of.push_back(
-                static_cast<std::uint32_t>(prepared->materials.size() - 1));
+        if (handed) {
+            take_materials(*handed, *prepared);
+        } else {
+            const bool may_read_in_place =
+                owned && std::none_of(scene.primitives.begin(), scene.primitives.end(),
+                                      [](const Primitive& p) { return has_pattern(p.material); });
+            const std::size_t most =
+                may_read_in_place ? max_copied_materials : scene.primitives.size();
+            if (!gather_materials(scene, most, *prepared)) prepared->scene = std::move(owned);
         }
-        for (const Primitive& p : scene.primitives)
-            prepared->has_transmission =
-                prepared->has_transmission || p.material.finish->transmission > 0.0;
+        const auto transmits = [](const Material& m) { return m.finish->transmission > 0.0; };
+        prepared->has_transmission =
+            prepared->scene
+                ? std::any_of(scene.primitives.begin(), scene.primitives.end(),
+                              [&](const Primitive& p) { return transmits(p.material); })
+                : std::any_of(prepared->materials.begin(), prepared->materials.end(), transmits);
         prepared->pattern_space = pattern_spaces(scene.primitives, prepared->materials);
     };
-    // The materials, the digest and the geometry are independent; for a
-    // million primitives the build is worth a core, the rest another.
+    // The geometry reads only shapes and transforms, as the digest does, the
+    // materials only materials; for a million primitives the build is worth a
+    // core, the rest another.
     auto beside_build = [&] {
         if (!may_reuse) digest = digest_geometry(scene);
-        gather_materials();
+        read_materials();
     };
     if (scene.primitives.size() > 10000)
         tbb::parallel_invoke(build, beside_build);
@@ -424,9 +467,15 @@ Expected<std::shared_ptr<const PreparedScene>> prepare(
         beside_build();
     }
     if (build_error) return *build_error;
+    if (handed) {
+        handed->primitives = std::vector<Primitive>();
+        if (built_geometry) build_bvh(*built_geometry);
+    }
     if (built_geometry) {
         built_geometry->digest = digest;
         prepared->geometry = std::move(built_geometry);
+    } else {
+        prepared->geometry = previous->geometry;
     }
     if (Expected<void> textures = load_textures(scene, *prepared, previous.get()); !textures)
         return textures.error();
@@ -445,19 +494,21 @@ Expected<std::shared_ptr<const PreparedScene>> prepare(
 
 Expected<std::shared_ptr<const PreparedScene>> prepare_scene(
     const Scene& scene, std::shared_ptr<const PreparedScene> previous) {
-    return prepare(scene, nullptr, std::move(previous));
+    return prepare(scene, nullptr, nullptr, std::move(previous));
 }
 
 Expected<std::shared_ptr<const PreparedScene>> prepare_scene(
     Scene&& scene, std::shared_ptr<const PreparedScene> previous) {
-    return prepare_scene(std::make_shared<const Scene>(std::move(scene)), std::move(previous));
+    // Taken over here, so that its primitives are gone once prepare frees them.
+    Scene handed = std::move(scene);
+    return prepare(handed, nullptr, &handed, std::move(previous));
 }
 
 Expected<std::shared_ptr<const PreparedScene>> prepare_scene(
     std::shared_ptr<const Scene> scene, std::shared_ptr<const PreparedScene> previous) {
     if (!scene) scene = std::make_shared<const Scene>();
     const Scene& held = *scene;
-    return prepare(held, std::move(scene), std::move(previous));
+    return prepare(held, std::move(scene), nullptr, std::move(previous));
 }
 
 }  // namespace jt

@@ -6,6 +6,7 @@
 // inverse transform, and infinite planes (outside the BVH). Every entry keeps
 // `source`, the index of the Scene primitive it came from, for its material.
 
+#include "geometry/bounds.hpp"
 #include "jtracer/affine.hpp"
 #include "jtracer/file_stamp.hpp"
 #include "jtracer/render_job.hpp"
@@ -16,7 +17,6 @@
 
 #include <embree3/rtcore.h>
 
-#include <array>
 #include <cstdint>
 #include <memory>
 #include <vector>
@@ -82,12 +82,6 @@ struct Geometry {
     std::vector<TransformedShape> shapes;
     std::vector<WorldPlane> planes;
     double bounds_slack = 0.0;  // world-space margin added to every box
-    // Each sphere's padded float box, only while the BVH builds: the Morton
-    // builder asks for boxes in Morton order, more than once each, and a copy
-    // from here costs less than padding the sphere again at a random place.
-    // Six floats (lower then upper corner), not RTCBounds' eight: a million
-    // spheres' boxes take 24 MB at the peak of the build, not 32.
-    std::vector<std::array<float, 6>> sphere_boxes;
     // Null when there are so few bounded shapes that testing each one beats a
     // BVH walk (Embree's per-ray overhead dominates a handful of shapes).
     RTCScene bvh = nullptr;
@@ -115,18 +109,33 @@ struct Geometry {
     ~Geometry();
 };
 
+// Sphere `i`'s box as the BVH holds it: grown by bounds_slack and rounded
+// outward to floats. Worked out whenever the builder asks, never kept: the
+// spheres are sorted in the order the Morton builder asks for them, where
+// working a box out costs about what reading a kept one does, and a million
+// kept boxes would take 24 MB at the peak of the build.
+inline RTCBounds padded_sphere_bounds(const Geometry& g, std::size_t i) {
+    return padded_float_bounds(sphere_box(g.spheres[i].center, g.spheres[i].radius),
+                               g.bounds_slack);
+}
+
 struct PreparedScene {
     std::shared_ptr<const Geometry> geometry;
-    // The scene itself, when its caller handed it over (prepare_scene(Scene&&))
-    // or shares it unchanging (prepare_scene(std::shared_ptr<const Scene>)),
-    // no material has a pattern and a copy would be large: each primitive's
-    // material is then read where the scene holds it, and `materials` and
-    // `material_of` stay empty. A copy costs 216 bytes a distinct material
-    // (216 MB for a million spheres of random colours).
+    // The scene itself, when its caller shares it unchanging
+    // (prepare_scene(std::shared_ptr<const Scene>)), no material has a pattern
+    // and a copy would be large: each primitive's material is then read where
+    // the scene holds it, and `materials` and `material_of` stay empty. A scene
+    // handed over (prepare_scene(Scene&&)) is never kept: its materials are
+    // moved into `materials` and its primitives freed, 96 bytes a primitive,
+    // before the BVH is built.
     std::shared_ptr<const Scene> scene;
     // Runs of primitives with equal materials share one entry.
     std::vector<Material> materials;
-    std::vector<std::uint32_t> material_of;  // indexed by Scene primitive
+    // Each Scene primitive's entry of `materials`; empty with `materials` not
+    // when every primitive has an entry of its own, the one at its index (a
+    // scene handed over with no two neighbours alike): shading then reads one
+    // array where it would read two at random places.
+    std::vector<std::uint32_t> material_of;
     // Each Scene primitive's shape and world-to-object map, for patterns;
     // empty when no material has one.
     std::vector<PatternSpace> pattern_space;
@@ -162,10 +171,16 @@ struct PreparedScene {
     std::size_t materials_gathered = 0;
 };
 
+// The entry of `materials` (and of `textures`) of Scene primitive `source`,
+// when the materials are not read in place.
+inline std::uint32_t material_entry(const PreparedScene& prepared, std::uint32_t source) {
+    return prepared.material_of.empty() ? source : prepared.material_of[source];
+}
+
 // The material of Scene primitive `source`.
 inline const Material& primitive_material(const PreparedScene& prepared, std::uint32_t source) {
     return prepared.scene ? prepared.scene->primitives[source].material
-                          : prepared.materials[prepared.material_of[source]];
+                          : prepared.materials[material_entry(prepared, source)];
 }
 
 }  // namespace jt

@@ -332,8 +332,7 @@ bool occluded_beyond_cell(const Geometry& geometry, const ListedShapes* candidat
 
 void sphere_bounds(const RTCBoundsFunctionArguments* args) {
     const auto* g = static_cast<const Geometry*>(args->geometryUserPtr);
-    const std::array<float, 6>& b = g->sphere_boxes[args->primID];
-    *args->bounds_o = RTCBounds{b[0], b[1], b[2], 0.0f, b[3], b[4], b[5], 0.0f};
+    *args->bounds_o = padded_sphere_bounds(*g, args->primID);
 }
 
 void sphere_intersect(const RTCIntersectFunctionNArguments* args) {

@@ -244,10 +244,10 @@ Colour shade_surface(const PreparedScene& scene, const SurfaceHit& s, const Vec3
                 file_pigment(*scene.geometry->triangles, s.triangle, s.barycentric, s.uv))
             return shade_hit(scene, *m.finish, *pigment, s, -d, sample, rays);
     if (!has_pattern(m)) return shade_hit(scene, *m.finish, m.pigment, s, -d, sample, rays);
-    // A scene with a pattern always gathers its materials, so material_of holds.
+    // A scene with a pattern always gathers its materials, so they have entries.
     const PatternSpace& space = scene.pattern_space[s.source];
     const Colour patterned =
-        pattern_pigment(m, scene.textures[scene.material_of[s.source]].get(), space.shape,
+        pattern_pigment(m, scene.textures[material_entry(scene, s.source)].get(), space.shape,
                         apply_point(space.to_object, s.point), Uv{s.uv.x, s.uv.y});
     return shade_hit(scene, *m.finish, patterned, s, -d, sample, rays);
 }
