@@ -10,8 +10,8 @@
 
 namespace jt::view {
 
-SceneLoader::SceneLoader()
-    : worker_([this](Request request) { return load(std::move(request)); }) {}
+SceneLoader::SceneLoader(std::chrono::milliseconds hold)
+    : hold_(hold), worker_([this](Request request) { return load(std::move(request)); }) {}
 
 void SceneLoader::request(const std::filesystem::path& path, LoadPurpose purpose,
                           const ParseOptions& options) {
@@ -71,7 +71,7 @@ FinishedLoad SceneLoader::load(Request request) {
 }
 
 void SceneLoader::hold_until_prepared(const PreparedAhead& ahead) const {
-    const auto until = LoadTimes::Clock::now() + prepared_ahead_hold;
+    const auto until = LoadTimes::Clock::now() + hold_;
     while (!worker_.superseded() && LoadTimes::Clock::now() < until)
         if (ahead.prepared.wait_for(prepared_ahead_hold_slice) == std::future_status::ready) return;
 }

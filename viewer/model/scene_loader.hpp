@@ -39,7 +39,9 @@ struct FinishedLoad {
 
 class SceneLoader {
   public:
-    SceneLoader();
+    // `hold`: how long an open waits for its preparation (a test's may be long,
+    // so that a loaded machine does not decide what it checks).
+    explicit SceneLoader(std::chrono::milliseconds hold = prepared_ahead_hold);
 
     // Parsed with `options` (the document's --define and clock).
     void request(const std::filesystem::path& path, LoadPurpose purpose,
@@ -65,9 +67,10 @@ class SceneLoader {
         LoadTimes::Clock::time_point requested;
     };
     FinishedLoad load(Request request);
-    // Waits for `ahead` (prepared_ahead_hold), unless a newer request comes.
+    // Waits for `ahead` up to hold_, unless a newer request comes.
     void hold_until_prepared(const PreparedAhead& ahead) const;
 
+    std::chrono::milliseconds hold_;
     bool newest_is_open_ = false;  // UI thread only, as request()
     AheadPreparer preparer_;       // before worker_: used by its thread, joined after it
     LatestWinsWorker<Request, FinishedLoad> worker_;

@@ -431,7 +431,9 @@ TEST(FirstPreview, AnOpenIsHandedOverOnceItsPreparationIsDone) {
         text += "sphere { center: <" + std::to_string(i % 200) + ", " + std::to_string(i / 200) +
                 ", 0>; radius: 0.4; }\n";
     std::ofstream(file) << text << "}\n";
-    SceneLoader loader;
+    // A hold longer than any machine takes, so that only the hold decides; a
+    // newer request must still end it at once (the end of the test).
+    SceneLoader loader(std::chrono::minutes(10));
     loader.request(file, LoadPurpose::open);
     loader.wait();
     const std::optional<FinishedLoad> opened = loader.take();
