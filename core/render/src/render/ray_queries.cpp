@@ -217,6 +217,8 @@ bool occluded_by_testing_all(const Geometry& g, const Vec3& origin, const Vec3& 
 // the origin is, and the walk stops at the first shape that is not.
 bool occluded_by_listed(const Geometry& g, const ListedShapes& listed, const Vec3& origin,
                         const Vec3& direction, double t_min, double t_max, OccluderHint& blocker) {
+    // Most cells list nothing: no square root for those.
+    if (listed.size() == 0) return false;
     const double reach = t_max * glm::length(direction) * (1.0 + 1e-9);
     for (std::size_t k = 0; k < listed.size() && listed.nearest[k] < reach; ++k) {
         if (listed_blocks(g, listed.shapes[k], origin, direction, t_min, t_max)) {
