@@ -179,9 +179,11 @@ void closest_by_testing_all(ClosestQuery& q) {
 
 // Whether `listed` (a sphere index, or a shape index with shape_flag, as in
 // the direction tables) blocks the ray; a shape's bounding sphere is tried
-// before its exact test.
-bool listed_blocks(const Geometry& g, std::uint32_t listed, const Vec3& origin,
-                   const Vec3& direction, double t_min, double t_max) {
+// before its exact test. Forced inline: the list walks call it for every
+// shape they test, and GCC kept it a call.
+[[gnu::always_inline]] inline bool listed_blocks(const Geometry& g, std::uint32_t listed,
+                                                 const Vec3& origin, const Vec3& direction,
+                                                 double t_min, double t_max) {
     const std::uint32_t i = listed & ~shape_flag;
     if (!(listed & shape_flag)) {
         const WorldSphere& s = g.spheres[i];
