@@ -62,14 +62,6 @@ int table_resolution(std::size_t shapes) {
 
 namespace {
 
-// The cell index along a face edge of coordinate u in [-1, 1].
-int cell_coordinate(double u, int resolution) {
-    double x = (u + 1.0) * 0.5 * resolution;
-    if (!(x > 0.0)) return 0;
-    if (x >= resolution) return resolution - 1;
-    return static_cast<int>(x);
-}
-
 // Face 2k (+axis k) or 2k+1 (-axis k); u and v run along axes k+1 and k+2.
 struct FaceAxes {
     int k, j, l;
@@ -219,26 +211,6 @@ DirectionTable build_direction_table(const Geometry& geometry, const Vec3& posit
         table.nearest[i] = nearest(sorted[i].candidate);
     }
     return table;
-}
-
-std::optional<ListedShapes> shapes_toward(const DirectionTable& table, const Vec3& direction) {
-    const int r = table.resolution;
-    if (r == 0) return std::nullopt;
-    const Vec3 a(std::abs(direction.x), std::abs(direction.y), std::abs(direction.z));
-    int k = 0;
-    if (a.y > a[k]) k = 1;
-    if (a.z > a[k]) k = 2;
-    const double m = a[k];
-    if (!(m > 0.0) || !std::isfinite(a.x + a.y + a.z)) return std::nullopt;
-    const auto [_, j, l] = face_axes(k);
-    const int face = 2 * k + (direction[k] < 0.0 ? 1 : 0);
-    const std::size_t cell =
-        (static_cast<std::size_t>(face) * r + cell_coordinate(direction[l] / m, r)) * r +
-        cell_coordinate(direction[j] / m, r);
-    const std::size_t first = table.cell_start[cell];
-    const std::size_t count = table.cell_start[cell + 1] - first;
-    return ListedShapes{std::span(table.shapes).subspan(first, count),
-                        std::span(table.nearest).subspan(first, count)};
 }
 
 std::vector<DirectionTable> build_light_tables(const Geometry& geometry,
