@@ -317,6 +317,42 @@ bool read_exact_number(std::string_view s, std::size_t& i, double& out) {
     return true;
 }
 
+// The value of the digits at `k` (advanced past them) added to `mantissa`.
+std::uint64_t read_digits(std::string_view s, std::size_t& k, std::uint64_t mantissa) {
+    for (; k < s.size(); ++k) {
+        const unsigned d = static_cast<unsigned char>(s[k]) - unsigned{'0'};
+        if (d > 9) break;
+        mantissa = mantissa * 10 + d;
+    }
+    return mantissa;
+}
+
+// read_exact_number for what generators and people write most: digits, a
+// '.' and digits, 15 digits at most and no exponent. With so few digits no
+// count of the significant ones is needed (leading zeros add nothing to the
+// mantissa and each fraction digit, zero or not, one to the scale), so it is
+// one loop a run. False, with `i` unmoved, for anything else: an exponent,
+// more digits, or what is malformed, which read_exact_number then reads.
+bool read_short_number(std::string_view s, std::size_t& i, double& out) {
+    constexpr std::size_t max_short_digits = 15;  // Clinger's fast path, whatever the zeros
+    std::size_t k = i;
+    std::uint64_t mantissa = read_digits(s, k, 0);
+    const std::size_t integer_digits = k - i;
+    std::size_t fraction_digits = 0;
+    if (k < s.size() && s[k] == '.') {
+        const std::size_t first = ++k;
+        mantissa = read_digits(s, k, mantissa);
+        fraction_digits = k - first;
+    }
+    const std::size_t digits = integer_digits + fraction_digits;
+    if (digits == 0 || digits > max_short_digits) return false;
+    // An exponent, a second '.', or a run the lexer would take on.
+    if (k < s.size() && is_number_char(s[k])) return false;
+    out = static_cast<double>(mantissa) / powers_of_ten[fraction_digits];
+    i = k;
+    return true;
+}
+
 // At most one sign, blanks, then a number as read_exact_number reads it: what
 // the expression reader takes for a signed literal.
 bool read_signed_number(std::string_view s, std::size_t& i, double& out) {
@@ -329,7 +365,7 @@ bool read_signed_number(std::string_view s, std::size_t& i, double& out) {
     }
     if (k >= s.size() || !(is_digit(s[k]) || s[k] == '.')) return false;
     double value = 0.0;
-    if (!read_exact_number(s, k, value)) return false;
+    if (!read_short_number(s, k, value) && !read_exact_number(s, k, value)) return false;
     out = negative ? -value : value;
     i = k;
     return true;
