@@ -264,7 +264,9 @@ void skip_blanks(std::string_view s, std::size_t& i) {
 // token and scan_number would give it exactly: the same grammar, the same
 // mantissa and scale, the same division or product. False for anything else
 // (malformed, or needing the library), which the tokens then read and report.
-bool read_exact_number(std::string_view s, std::size_t& i, double& out) {
+// Out of line: read_short_number reads the most numbers, and this one's
+// registers, inlined, made every call save and restore six of them.
+[[gnu::noinline]] bool read_exact_number(std::string_view s, std::size_t& i, double& out) {
     const std::size_t n = s.size();
     std::size_t k = i;
     std::uint64_t mantissa = 0;
