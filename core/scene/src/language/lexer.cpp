@@ -139,8 +139,18 @@ void Lexer::skip_space_and_comments() {
 }
 
 void Lexer::next(Token& out) {
-    // Most tokens follow another directly, or one blank: skip the call then.
-    if (at_ < text_.size() && starts_blank_or_comment(text_[at_])) skip_space_and_comments();
+    // Most tokens follow another directly, one space, or a line break and
+    // an indentation: skip the call then.
+    if (at_ < text_.size() && starts_blank_or_comment(text_[at_])) {
+        if (text_[at_] == '\n') {
+            ++line_;
+            line_start_ = at_ + 1;
+            at_ = skip_spaces(text_, at_ + 1);
+        } else if (text_[at_] == ' ') {
+            at_ = skip_spaces(text_, at_ + 1);
+        }
+        if (at_ < text_.size() && starts_blank_or_comment(text_[at_])) skip_space_and_comments();
+    }
     while (!sink_.stopped() && at_ < text_.size()) {
         const std::size_t start = at_;
         const char c = text_[start];
