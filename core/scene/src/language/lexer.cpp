@@ -329,14 +329,14 @@ void skip_blanks(std::string_view s, std::size_t& i) {
     return true;
 }
 
-// The value of the digits at `k` (advanced past them) added to `mantissa`.
-std::uint64_t read_digits(std::string_view s, std::size_t& k, std::uint64_t mantissa) {
-    for (; k < s.size(); ++k) {
-        const unsigned d = static_cast<unsigned char>(s[k]) - unsigned{'0'};
-        if (d > 9) break;
+// The value of the digits at `p` (advanced past them) added to `mantissa`.
+// Unbounded: the caller knows the text ends in a byte that stops the run.
+std::uint64_t read_digits(const char*& p, std::uint64_t mantissa) {
+    for (;; ++p) {
+        const unsigned d = static_cast<unsigned char>(*p) - unsigned{'0'};
+        if (d > 9) return mantissa;
         mantissa = mantissa * 10 + d;
     }
-    return mantissa;
 }
 
 // read_exact_number for what generators and people write most: digits, a
@@ -345,23 +345,27 @@ std::uint64_t read_digits(std::string_view s, std::size_t& k, std::uint64_t mant
 // mantissa and each fraction digit, zero or not, one to the scale), so it is
 // one loop a run. False, with `i` unmoved, for anything else: an exponent,
 // more digits, or what is malformed, which read_exact_number then reads.
+// Also false for a text whose last byte could continue a number (its loops
+// test no bound: a text ends that way almost never).
 bool read_short_number(std::string_view s, std::size_t& i, double& out) {
     constexpr std::size_t max_short_digits = 15;  // Clinger's fast path, whatever the zeros
-    std::size_t k = i;
-    std::uint64_t mantissa = read_digits(s, k, 0);
-    const std::size_t integer_digits = k - i;
+    if (s.empty() || is_number_char(s.back())) return false;
+    const char* const start = s.data() + i;
+    const char* p = start;
+    std::uint64_t mantissa = read_digits(p, 0);
+    const auto integer_digits = static_cast<std::size_t>(p - start);
     std::size_t fraction_digits = 0;
-    if (k < s.size() && s[k] == '.') {
-        const std::size_t first = ++k;
-        mantissa = read_digits(s, k, mantissa);
-        fraction_digits = k - first;
+    if (*p == '.') {
+        const char* const first = ++p;
+        mantissa = read_digits(p, mantissa);
+        fraction_digits = static_cast<std::size_t>(p - first);
     }
     const std::size_t digits = integer_digits + fraction_digits;
     if (digits == 0 || digits > max_short_digits) return false;
     // An exponent, a second '.', or a run the lexer would take on.
-    if (k < s.size() && is_number_char(s[k])) return false;
+    if (is_number_char(*p)) return false;
     out = static_cast<double>(mantissa) / powers_of_ten[fraction_digits];
-    i = k;
+    i += static_cast<std::size_t>(p - start);
     return true;
 }
 
