@@ -162,7 +162,11 @@ void Lexer::next(Token& out) {
             const char* const data = text_.data();
             const std::size_t n = text_.size();
             std::size_t end = start + 1;
-            while (end < n && is_word_char(data[end])) ++end;
+            if (words_stop_inside_) {
+                while (is_word_char(data[end])) ++end;
+            } else {
+                while (end < n && is_word_char(data[end])) ++end;
+            }
             at_ = end;
             set(out, TokenKind::word, std::string_view(data + start, end - start), start,
                 end - start, pos_of(start));
