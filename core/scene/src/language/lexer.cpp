@@ -138,6 +138,36 @@ void Lexer::skip_space_and_comments() {
     }
 }
 
+bool Lexer::take_word_or_mark(Token& out) {
+    const std::size_t start = at_;
+    const char c = text_[start];
+    // Words first, then the one-byte tokens from a table: a switch's
+    // jump, taken to a different place each token, was mispredicted.
+    if (is_word_start(c)) {
+        // A local index: at_ itself would be stored back at every byte,
+        // as the text's bytes might alias it for all the compiler knows.
+        const char* const data = text_.data();
+        const std::size_t n = text_.size();
+        std::size_t end = start + 1;
+        if (words_stop_inside_) {
+            while (is_word_char(data[end])) ++end;
+        } else {
+            while (end < n && is_word_char(data[end])) ++end;
+        }
+        at_ = end;
+        set(out, TokenKind::word, std::string_view(data + start, end - start), start, end - start,
+            pos_of(start));
+        return true;
+    }
+    if (const TokenKind kind = single_byte_tokens[static_cast<unsigned char>(c)];
+        kind != TokenKind::end) {
+        ++at_;
+        set(out, kind, text_.substr(start, 1), start, 1, pos_of(start));
+        return true;
+    }
+    return false;
+}
+
 void Lexer::next(Token& out) {
     // Most tokens follow another directly, one space, or a line break and
     // an indentation: skip the call then.
@@ -151,33 +181,17 @@ void Lexer::next(Token& out) {
         }
         if (at_ < text_.size() && starts_blank_or_comment(text_[at_])) skip_space_and_comments();
     }
+    // A word or a one-byte token here, the rest out of line: with the loop
+    // and the rare tokens in it, every token paid for saving five registers.
+    if (!sink_.stopped() && at_ < text_.size() && take_word_or_mark(out)) return;
+    next_rare(out);
+}
+
+void Lexer::next_rare(Token& out) {
     while (!sink_.stopped() && at_ < text_.size()) {
+        if (take_word_or_mark(out)) return;
         const std::size_t start = at_;
         const char c = text_[start];
-        // Words first, then the one-byte tokens from a table: a switch's
-        // jump, taken to a different place each token, was mispredicted.
-        if (is_word_start(c)) {
-            // A local index: at_ itself would be stored back at every byte,
-            // as the text's bytes might alias it for all the compiler knows.
-            const char* const data = text_.data();
-            const std::size_t n = text_.size();
-            std::size_t end = start + 1;
-            if (words_stop_inside_) {
-                while (is_word_char(data[end])) ++end;
-            } else {
-                while (end < n && is_word_char(data[end])) ++end;
-            }
-            at_ = end;
-            set(out, TokenKind::word, std::string_view(data + start, end - start), start,
-                end - start, pos_of(start));
-            return;
-        }
-        if (const TokenKind kind = single_byte_tokens[static_cast<unsigned char>(c)];
-            kind != TokenKind::end) {
-            ++at_;
-            set(out, kind, text_.substr(start, 1), start, 1, pos_of(start));
-            return;
-        }
         if (c == '"') {
             lex_string(start, out);
             return;

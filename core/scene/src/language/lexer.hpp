@@ -92,6 +92,10 @@ class Lexer {
 
   private:
     void skip_space_and_comments();
+    // At at_: a word or a one-byte token read into `out`, or false.
+    inline bool take_word_or_mark(Token& out);
+    // The tokens next() leaves: strings, numbers, unexpected bytes, the end.
+    [[gnu::noinline]] void next_rare(Token& out);
     // The rare tokens and the errors stay out of next(): inlined, their
     // strings made next() save six registers and a frame for every token.
     [[gnu::noinline]] void lex_number(std::size_t start, Token& out);
