@@ -138,32 +138,60 @@ void Lexer::skip_space_and_comments() {
     }
 }
 
+bool Lexer::take_word_or_mark(Token& out) {
+    const std::size_t start = at_;
+    const char c = text_[start];
+    // Words first, then the one-byte tokens from a table: a switch's
+    // jump, taken to a different place each token, was mispredicted.
+    if (is_word_start(c)) {
+        // A local index: at_ itself would be stored back at every byte,
+        // as the text's bytes might alias it for all the compiler knows.
+        const char* const data = text_.data();
+        const std::size_t n = text_.size();
+        std::size_t end = start + 1;
+        if (words_stop_inside_) {
+            while (is_word_char(data[end])) ++end;
+        } else {
+            while (end < n && is_word_char(data[end])) ++end;
+        }
+        at_ = end;
+        set(out, TokenKind::word, std::string_view(data + start, end - start), start, end - start,
+            pos_of(start));
+        return true;
+    }
+    if (const TokenKind kind = single_byte_tokens[static_cast<unsigned char>(c)];
+        kind != TokenKind::end) {
+        ++at_;
+        set(out, kind, text_.substr(start, 1), start, 1, pos_of(start));
+        return true;
+    }
+    return false;
+}
+
 void Lexer::next(Token& out) {
-    // Most tokens follow another directly, or one blank: skip the call then.
-    if (at_ < text_.size() && starts_blank_or_comment(text_[at_])) skip_space_and_comments();
+    // Most tokens follow another directly, one space, or a line break and
+    // an indentation: skip the call then.
+    if (at_ < text_.size() && starts_blank_or_comment(text_[at_])) {
+        if (text_[at_] == '\n') {
+            ++line_;
+            line_start_ = at_ + 1;
+            at_ = skip_spaces(text_, at_ + 1);
+        } else if (text_[at_] == ' ') {
+            at_ = skip_spaces(text_, at_ + 1);
+        }
+        if (at_ < text_.size() && starts_blank_or_comment(text_[at_])) skip_space_and_comments();
+    }
+    // A word or a one-byte token here, the rest out of line: with the loop
+    // and the rare tokens in it, every token paid for saving five registers.
+    if (!sink_.stopped() && at_ < text_.size() && take_word_or_mark(out)) return;
+    next_rare(out);
+}
+
+void Lexer::next_rare(Token& out) {
     while (!sink_.stopped() && at_ < text_.size()) {
+        if (take_word_or_mark(out)) return;
         const std::size_t start = at_;
         const char c = text_[start];
-        // Words first, then the one-byte tokens from a table: a switch's
-        // jump, taken to a different place each token, was mispredicted.
-        if (is_word_start(c)) {
-            // A local index: at_ itself would be stored back at every byte,
-            // as the text's bytes might alias it for all the compiler knows.
-            const char* const data = text_.data();
-            const std::size_t n = text_.size();
-            std::size_t end = start + 1;
-            while (end < n && is_word_char(data[end])) ++end;
-            at_ = end;
-            set(out, TokenKind::word, std::string_view(data + start, end - start), start,
-                end - start, pos_of(start));
-            return;
-        }
-        if (const TokenKind kind = single_byte_tokens[static_cast<unsigned char>(c)];
-            kind != TokenKind::end) {
-            ++at_;
-            set(out, kind, text_.substr(start, 1), start, 1, pos_of(start));
-            return;
-        }
         if (c == '"') {
             lex_string(start, out);
             return;
@@ -264,7 +292,9 @@ void skip_blanks(std::string_view s, std::size_t& i) {
 // token and scan_number would give it exactly: the same grammar, the same
 // mantissa and scale, the same division or product. False for anything else
 // (malformed, or needing the library), which the tokens then read and report.
-bool read_exact_number(std::string_view s, std::size_t& i, double& out) {
+// Out of line: read_short_number reads the most numbers, and this one's
+// registers, inlined, made every call save and restore six of them.
+[[gnu::noinline]] bool read_exact_number(std::string_view s, std::size_t& i, double& out) {
     const std::size_t n = s.size();
     std::size_t k = i;
     std::uint64_t mantissa = 0;
@@ -317,6 +347,46 @@ bool read_exact_number(std::string_view s, std::size_t& i, double& out) {
     return true;
 }
 
+// The value of the digits at `p` (advanced past them) added to `mantissa`.
+// Unbounded: the caller knows the text ends in a byte that stops the run.
+std::uint64_t read_digits(const char*& p, std::uint64_t mantissa) {
+    for (;; ++p) {
+        const unsigned d = static_cast<unsigned char>(*p) - unsigned{'0'};
+        if (d > 9) return mantissa;
+        mantissa = mantissa * 10 + d;
+    }
+}
+
+// read_exact_number for what generators and people write most: digits, a
+// '.' and digits, 15 digits at most and no exponent. With so few digits no
+// count of the significant ones is needed (leading zeros add nothing to the
+// mantissa and each fraction digit, zero or not, one to the scale), so it is
+// one loop a run. False, with `i` unmoved, for anything else: an exponent,
+// more digits, or what is malformed, which read_exact_number then reads.
+// Also false for a text whose last byte could continue a number (its loops
+// test no bound: a text ends that way almost never).
+bool read_short_number(std::string_view s, std::size_t& i, double& out) {
+    constexpr std::size_t max_short_digits = 15;  // Clinger's fast path, whatever the zeros
+    if (s.empty() || is_number_char(s.back())) return false;
+    const char* const start = s.data() + i;
+    const char* p = start;
+    std::uint64_t mantissa = read_digits(p, 0);
+    const auto integer_digits = static_cast<std::size_t>(p - start);
+    std::size_t fraction_digits = 0;
+    if (*p == '.') {
+        const char* const first = ++p;
+        mantissa = read_digits(p, mantissa);
+        fraction_digits = static_cast<std::size_t>(p - first);
+    }
+    const std::size_t digits = integer_digits + fraction_digits;
+    if (digits == 0 || digits > max_short_digits) return false;
+    // An exponent, a second '.', or a run the lexer would take on.
+    if (is_number_char(*p)) return false;
+    out = static_cast<double>(mantissa) / powers_of_ten[fraction_digits];
+    i += static_cast<std::size_t>(p - start);
+    return true;
+}
+
 // At most one sign, blanks, then a number as read_exact_number reads it: what
 // the expression reader takes for a signed literal.
 bool read_signed_number(std::string_view s, std::size_t& i, double& out) {
@@ -329,7 +399,7 @@ bool read_signed_number(std::string_view s, std::size_t& i, double& out) {
     }
     if (k >= s.size() || !(is_digit(s[k]) || s[k] == '.')) return false;
     double value = 0.0;
-    if (!read_exact_number(s, k, value)) return false;
+    if (!read_short_number(s, k, value) && !read_exact_number(s, k, value)) return false;
     out = negative ? -value : value;
     i = k;
     return true;

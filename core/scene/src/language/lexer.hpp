@@ -43,6 +43,9 @@ struct Token {
     double number = 0.0;
 };
 
+// Whether `c` may stand in a word after its first byte: [A-Za-z0-9_].
+bool is_word_char(char c);
+
 class Lexer {
   public:
     // `file` is the text's index (SourcePos::file): 0 the main file.
@@ -50,6 +53,7 @@ class Lexer {
         : text_(text), sink_(sink), file_(file) {
         // A UTF-8 byte order mark is harmless: skip it (columns still count its bytes).
         if (text_.starts_with("\xEF\xBB\xBF")) at_ = 3;
+        words_stop_inside_ = !text_.empty() && !is_word_char(text_.back());
     }
     // Reads the next token into `out`; `end` at the end of the text or once the
     // sink has stopped. Written in place, field by field: returning a Token by
@@ -88,6 +92,10 @@ class Lexer {
 
   private:
     void skip_space_and_comments();
+    // At at_: a word or a one-byte token read into `out`, or false.
+    inline bool take_word_or_mark(Token& out);
+    // The tokens next() leaves: strings, numbers, unexpected bytes, the end.
+    [[gnu::noinline]] void next_rare(Token& out);
     // The rare tokens and the errors stay out of next(): inlined, their
     // strings made next() save six registers and a frame for every token.
     [[gnu::noinline]] void lex_number(std::size_t start, Token& out);
@@ -104,10 +112,10 @@ class Lexer {
     std::size_t at_ = 0;
     int line_ = 1;
     std::size_t line_start_ = 0;
+    // Whether the text's last byte ends a word: then every word ends inside
+    // the text, and next() scans one with no test of the end.
+    bool words_stop_inside_ = false;
 };
-
-// Whether `c` may stand in a word after its first byte: [A-Za-z0-9_].
-bool is_word_char(char c);
 
 // A short description of a token for messages: "the number 2", "'}'", "the word 'foo'".
 std::string describe(const Token& token);
