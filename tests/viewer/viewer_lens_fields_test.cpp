@@ -181,6 +181,9 @@ TEST_F(ViewerLensFields, ACtrlClickFocusesOnTheSurfaceUnderTheCursorInOneStep) {
     ctrl_click_pixel(32, 24);  // the sphere's front, 5 along the view direction
     ASSERT_TRUE(camera().focus_distance) << state.message;
     EXPECT_NEAR(*camera().focus_distance, 5.0, 2e-3);  // the sphere bulges toward the centre
+    // The edit started a render whose preparation may still run on a busy
+    // machine (picking has no frame until it is done): let it finish.
+    ASSERT_TRUE(viewer.run_until_complete(state, kTimeout));
     // Section 5's pixel-centre ray, as the tracer meets the sphere.
     const std::shared_ptr<const PreparedFrame> frame = shown_frame(state);
     ASSERT_TRUE(frame);
