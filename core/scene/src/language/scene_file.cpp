@@ -118,17 +118,16 @@ Expected<LoadedScene> load_scene_file(const std::filesystem::path& path, ParseOp
     if (options.main_file.empty()) options.main_file = loaded.path;
     loaded.options = options;
     loaded.text = std::move(*text);
+    std::optional<TextGiveBack> give_back;
     if (keeping == TextKeeping::given_back_when_large && !options.source_map &&
         loaded.text.size() >= smallest_text_given_back) {
-        TextGiveBack give_back(loaded.text);
-        options.text_passed = [&give_back](std::size_t offset) { give_back.passed(offset); };
-        loaded.parsed = parse_scene(loaded.text, options);
-        if (give_back.gave_back()) {
-            std::string().swap(loaded.text);  // not `= {}`, which keeps the buffer
-            loaded.text_given_back = true;
-        }
-    } else {
-        loaded.parsed = parse_scene(loaded.text, options);
+        give_back.emplace(loaded.text);
+        options.text_passed = [&give_back](std::size_t offset) { give_back->passed(offset); };
+    }
+    loaded.parsed = parse_scene(loaded.text, options);
+    if (give_back && give_back->gave_back()) {
+        std::string().swap(loaded.text);  // not `= {}`, which keeps the buffer
+        loaded.text_given_back = true;
     }
     // A machine's limit, not a mistake in the file: an I/O failure like any other.
     if (loaded.parsed.out_of_memory)
