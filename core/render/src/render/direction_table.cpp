@@ -204,12 +204,9 @@ DirectionTable build_direction_table(const Geometry& geometry, const Vec3& posit
                          [&](const Listing& a, const Listing& b) {
                              return nearest(a.candidate) < nearest(b.candidate);
                          });
-    table.shapes.resize(sorted.size());
-    table.nearest.resize(sorted.size());
-    for (std::size_t i = 0; i < sorted.size(); ++i) {
-        table.shapes[i] = sorted[i].candidate;
-        table.nearest[i] = nearest(sorted[i].candidate);
-    }
+    table.listed.resize(sorted.size());
+    for (std::size_t i = 0; i < sorted.size(); ++i)
+        table.listed[i] = {sorted[i].candidate, float_below(nearest(sorted[i].candidate))};
     return table;
 }
 

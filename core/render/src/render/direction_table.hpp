@@ -27,8 +27,7 @@ struct Geometry;
 struct DirectionTable {
     int resolution = 0;                     // cells along a cube face's edge; 0: no table
     std::vector<std::uint32_t> cell_start;  // 6 * resolution^2 + 1 offsets into `shapes`
-    std::vector<std::uint32_t> shapes;      // each cell's nearest first
-    std::vector<double> nearest;            // parallel to `shapes`: see ListedShapes
+    std::vector<Listed> listed;             // each cell's nearest first
 };
 
 // Cells along a cube face's edge for a table of `shapes` shapes.
@@ -68,8 +67,7 @@ inline std::optional<ListedShapes> shapes_toward(const DirectionTable& table,
         cell_coordinate(direction[j] / m, r);
     const std::size_t first = table.cell_start[cell];
     const std::size_t count = table.cell_start[cell + 1] - first;
-    return ListedShapes{std::span(table.shapes).subspan(first, count),
-                        std::span(table.nearest).subspan(first, count)};
+    return ListedShapes{std::span(table.listed).subspan(first, count)};
 }
 
 // One table a light, parallel to `lights`; none when no table pays.
