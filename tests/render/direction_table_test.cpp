@@ -76,8 +76,8 @@ void check_buffers(int count, unsigned seed) {
                         ? c
                         : static_cast<std::uint32_t>(c - g.spheres.size()) | shape_flag;
                 if (!blocks(g, candidate, origin, d, distance)) continue;
-                ASSERT_NE(std::ranges::find(candidates->entries, candidate, &Listed::shape),
-                          candidates->entries.end())
+                ASSERT_NE(std::ranges::find(candidates->shapes, candidate),
+                          candidates->shapes.end())
                     << "ray " << i << " blocked by " << c << " missing from its cell";
             }
             OccluderHint hint;
@@ -122,12 +122,11 @@ TEST(DirectionTable, CellsAreFewAndSmallForSparseShapes) {
     for (std::size_t c = 0; c < cells; ++c)
         for (std::uint32_t k = table.cell_start[c]; k < table.cell_start[c + 1]; ++k) {
             if (k > table.cell_start[c]) {
-                EXPECT_LE(table.listed[k - 1].nearest, table.listed[k].nearest);
+                EXPECT_LE(table.nearest[k - 1], table.nearest[k]);
             }
-            const WorldSphere& s = g.spheres[table.listed[k].shape];
-            EXPECT_LT(table.listed[k].nearest, glm::length(s.center - Vec3{0, 10, 4}) - s.radius);
-            EXPECT_GT(table.listed[k].nearest,
-                      glm::length(s.center - Vec3{0, 10, 4}) - s.radius - 1e-3);
+            const WorldSphere& s = g.spheres[table.shapes[k]];
+            EXPECT_LT(table.nearest[k], glm::length(s.center - Vec3{0, 10, 4}) - s.radius);
+            EXPECT_GT(table.nearest[k], glm::length(s.center - Vec3{0, 10, 4}) - s.radius - 1e-3);
         }
     EXPECT_GT(at_most_one, cells * 3 / 4);
     // Up, away from the floor: nothing to test.
@@ -195,8 +194,7 @@ TEST(DirectionTable, CellsSpanOnlyTheDirectionsOfShapes) {
         ASSERT_TRUE(candidates);
         for (std::uint32_t c = 0; c < g.spheres.size(); ++c)
             if (blocks(g, c, origin, d, distance)) {
-                ASSERT_NE(std::ranges::find(candidates->entries, c, &Listed::shape),
-                          candidates->entries.end())
+                ASSERT_NE(std::ranges::find(candidates->shapes, c), candidates->shapes.end())
                     << "ray " << i << " blocked by " << c << " missing from its cell";
             }
         const bool with = occluded(g, origin, d, 0.0, distance, nullptr, &table);
@@ -216,7 +214,7 @@ TEST(DirectionTable, NoneWhenShapesSurroundThePoint) {
     const Geometry& g = *prepared->geometry;
     DirectionTable table = build_direction_table(g, {0, 0, 0}, table_resolution(1500));
     EXPECT_EQ(table.resolution, 0);
-    EXPECT_TRUE(table.listed.empty());
+    EXPECT_TRUE(table.shapes.empty());
     EXPECT_FALSE(shapes_toward(table, {1, 0, 0}));
     EXPECT_TRUE(occluded(g, {0, 0, 20}, {0, 0, -1}, 0.0, 20.0, nullptr, &table));
 }

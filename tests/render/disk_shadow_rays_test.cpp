@@ -91,8 +91,7 @@ void check_disk_rays(int count, unsigned seed, bool expect_list, Counts& counts)
                             ? c
                             : static_cast<std::uint32_t>(c - g.spheres.size()) | shape_flag;
                     if (blocks(g, shape, r)) {
-                        ASSERT_NE(std::ranges::find(listed.entries, shape, &Listed::shape),
-                                  listed.entries.end())
+                        ASSERT_NE(std::ranges::find(listed.shapes, shape), listed.shapes.end())
                             << "hit " << i << " ray " << m << ": blocker " << c << " not listed";
                     }
                 }

@@ -267,7 +267,7 @@ TEST(ViewTable, ASphereMissingABlockCornerByAHairDoesNotCoverIt) {
     for (const auto& [column, row] : blocks) {
         const ListedShapes listed =
             shapes_seen(table, view_block * (column + 0.5), view_block * (row + 0.5));
-        EXPECT_NE(std::ranges::find(listed.entries, 0u, &Listed::shape), listed.entries.end())
+        EXPECT_NE(std::find(listed.shapes.begin(), listed.shapes.end(), 0u), listed.shapes.end())
             << "the wall is listed behind the sphere of block " << column << ", " << row;
         for (double dx : {0.0, 1.0 * view_block - 1e-9})
             for (double dy : {0.0, 1.0 * view_block - 1e-9}) {
@@ -293,8 +293,7 @@ TEST(ViewTable, FromInsideASphereEveryBlockIsCoveredAndNothingBeyondItIsListed) 
     for (std::size_t b = 0; b + 1 < table.block_start.size(); ++b) {
         EXPECT_TRUE(table.covered[b]) << "block " << b;
         for (std::uint32_t k = table.block_start[b]; k < table.block_start[b + 1]; ++k)
-            EXPECT_NE(table.listed[k].shape, 2u)
-                << "the far sphere lies beyond the big one's far side";
+            EXPECT_NE(table.shapes[k], 2u) << "the far sphere lies beyond the big one's far side";
     }
     EXPECT_GT(check_view(g, camera, 6), 64 * 48);
 }
@@ -388,11 +387,11 @@ TEST(ViewTable, ListsAreNearestFirstWithTrueLowerBounds) {
         for (std::uint32_t k = table.block_start[b]; k < table.block_start[b + 1]; ++k) {
             ++listed;
             if (k > table.block_start[b]) {
-                EXPECT_LE(table.listed[k - 1].nearest, table.listed[k].nearest);
+                EXPECT_LE(table.nearest[k - 1], table.nearest[k]);
             }
-            if (table.listed[k].shape & shape_flag) continue;
-            const WorldSphere& s = g.spheres[table.listed[k].shape];
-            EXPECT_LT(table.listed[k].nearest, glm::length(s.center - camera.position) - s.radius);
+            if (table.shapes[k] & shape_flag) continue;
+            const WorldSphere& s = g.spheres[table.shapes[k]];
+            EXPECT_LT(table.nearest[k], glm::length(s.center - camera.position) - s.radius);
         }
     // Blocks of 4x4 pixels list a few shapes each, not the crowd.
     EXPECT_LT(listed, 16u * (table.block_start.size() - 1));

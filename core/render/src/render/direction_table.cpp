@@ -270,12 +270,15 @@ DirectionTable build_direction_table(const Geometry& geometry, const Vec3& posit
     for (const Listing& p : pairs) ++table.cell_start[p.cell + 1];
     for (std::size_t c = 0; c < cells; ++c) table.cell_start[c + 1] += table.cell_start[c];
     std::vector<std::uint32_t> fill(table.cell_start.begin(), table.cell_start.end() - 1);
-    table.listed.resize(pairs.size());
-    for (const Listing& p : pairs)
-        table.listed[fill[p.cell]++] = {
-            p.candidate,
-            float_below(nearest_of[p.candidate & shape_flag ? spheres + (p.candidate & ~shape_flag)
-                                                            : p.candidate])};
+    table.shapes.resize(pairs.size());
+    table.nearest.resize(pairs.size());
+    for (const Listing& p : pairs) {
+        const std::uint32_t at = fill[p.cell]++;
+        table.shapes[at] = p.candidate;
+        table.nearest[at] =
+            nearest_of[p.candidate & shape_flag ? spheres + (p.candidate & ~shape_flag)
+                                                : p.candidate];
+    }
     return table;
 }
 

@@ -40,7 +40,8 @@ struct DirectionTable {
     int resolution = 0;  // cells along a face window's edge; 0: no table
     std::array<FaceWindow, 6> windows;
     std::vector<std::uint32_t> cell_start;  // 6 * resolution^2 + 1 offsets into `shapes`
-    std::vector<Listed> listed;             // each cell's nearest first
+    std::vector<std::uint32_t> shapes;      // each cell's nearest first
+    std::vector<double> nearest;            // parallel to `shapes`: see ListedShapes
 };
 
 // Cells along a cube face's edge for a table of `shapes` shapes.
@@ -84,7 +85,8 @@ inline std::optional<ListedShapes> shapes_toward(const DirectionTable& table,
         cell_coordinate((u - w.u0) * w.u_scale, r);
     const std::size_t first = table.cell_start[cell];
     const std::size_t count = table.cell_start[cell + 1] - first;
-    return ListedShapes{std::span(table.listed).subspan(first, count)};
+    return ListedShapes{std::span(table.shapes).subspan(first, count),
+                        std::span(table.nearest).subspan(first, count)};
 }
 
 // One table a light, parallel to `lights`; none when no table pays.

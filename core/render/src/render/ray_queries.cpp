@@ -226,9 +226,9 @@ bool occluded_by_testing_all(const Geometry& g, const Vec3& origin, const Vec3& 
     // Most cells list nothing: no square root for those.
     if (listed.size() == 0) return false;
     const double reach = t_max * glm::length(direction) * (1.0 + 1e-9);
-    for (std::size_t k = 0; k < listed.size() && listed[k].nearest < reach; ++k) {
-        if (listed_blocks(g, listed[k].shape, origin, direction, t_min, t_max)) {
-            blocker = hint_for(listed[k].shape);
+    for (std::size_t k = 0; k < listed.size() && listed.nearest[k] < reach; ++k) {
+        if (listed_blocks(g, listed.shapes[k], origin, direction, t_min, t_max)) {
+            blocker = hint_for(listed.shapes[k]);
             return true;
         }
     }
@@ -243,9 +243,9 @@ bool occluded_by_testing_all(const Geometry& g, const Vec3& origin, const Vec3& 
 bool closest_by_listed(ClosestQuery& q, const ListedShapes& listed, std::size_t limit) {
     const double length = glm::length(q.direction);
     for (std::size_t k = 0; k < listed.size(); ++k) {
-        if (listed[k].nearest > q.t * length) return true;
+        if (listed.nearest[k] > q.t * length) return true;
         if (k == limit) return false;
-        offer_listed(q, listed[k].shape);
+        offer_listed(q, listed.shapes[k]);
     }
     return true;
 }
@@ -507,10 +507,13 @@ bool shapes_toward_disk(const Geometry& geometry, const Vec3& point, double lift
         if (glm::dot(off, off) > reach * reach) return;
         // Kept nearest first (insertion: a handful of shapes).
         std::size_t k = out.count++;
-        const float nearest = float_below(std::max(0.0, b.nearest - 2.0 * lift));
-        for (; k > 0 && out.entries[k - 1].nearest > nearest; --k)
-            out.entries[k] = out.entries[k - 1];
-        out.entries[k] = {listed, nearest};
+        const double nearest = std::max(0.0, b.nearest - 2.0 * lift);
+        for (; k > 0 && out.nearest[k - 1] > nearest; --k) {
+            out.nearest[k] = out.nearest[k - 1];
+            out.shapes[k] = out.shapes[k - 1];
+        }
+        out.nearest[k] = nearest;
+        out.shapes[k] = listed;
     };
     for (std::uint32_t i = 0; i < geometry.spheres.size(); ++i)
         offer(i, geometry.spheres[i].center, geometry.spheres[i].radius);
@@ -528,10 +531,10 @@ bool occluded_among(const Geometry& geometry, const ListedShapes& candidates, co
     bool blocked = unbounded_blocks(geometry, origin, direction, t_min, t_max, blocker);
     // A blocker lies nearer the origin than the ray's end.
     const double reach = t_max * glm::length(direction) * (1.0 + 1e-9);
-    for (std::size_t k = 0; k < candidates.size() && !blocked && candidates[k].nearest < reach;
+    for (std::size_t k = 0; k < candidates.size() && !blocked && candidates.nearest[k] < reach;
          ++k) {
-        if (listed_blocks(geometry, candidates[k].shape, origin, direction, t_min, t_max)) {
-            blocker = hint_for(candidates[k].shape);
+        if (listed_blocks(geometry, candidates.shapes[k], origin, direction, t_min, t_max)) {
+            blocker = hint_for(candidates.shapes[k]);
             blocked = true;
         }
     }

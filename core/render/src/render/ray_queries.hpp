@@ -81,9 +81,10 @@ void occluded_together(const Geometry& geometry, std::span<const ShadowRay> rays
 // occluded_among walk instead of every shape or the BVH.
 inline constexpr std::size_t max_disk_candidates = 64;
 struct DiskCandidates {
-    std::array<Listed, max_disk_candidates> entries;
+    std::array<std::uint32_t, max_disk_candidates> shapes;
+    std::array<double, max_disk_candidates> nearest;
     std::size_t count = 0;
-    ListedShapes listed() const { return {{entries.data(), count}}; }
+    ListedShapes listed() const { return {{shapes.data(), count}, {nearest.data(), count}}; }
 };
 
 // False, leaving `out` unusable, for a geometry of more than max_disk_candidates

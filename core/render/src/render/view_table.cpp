@@ -263,7 +263,8 @@ ViewTable build_view_table(const Geometry& geometry, const CameraFrame& camera) 
     for (const std::vector<Listing>& l : band_listings)
         for (const Listing& listing : l) ++table.block_start[listing.block + 1];
     for (std::size_t b = 0; b < blocks; ++b) table.block_start[b + 1] += table.block_start[b];
-    table.listed.resize(listed);
+    table.shapes.resize(listed);
+    table.nearest.resize(listed);
     tbb::parallel_for(0, bands, [&](int band) {
         const std::size_t first = static_cast<std::size_t>(band) * band_rows * table.columns;
         const std::size_t last = std::min<std::size_t>(
@@ -272,8 +273,8 @@ ViewTable build_view_table(const Geometry& geometry, const CameraFrame& camera) 
                                         table.block_start.begin() + last);
         for (const Listing& l : band_listings[static_cast<std::size_t>(band)]) {
             const std::uint32_t at = fill[l.block - first]++;
-            table.listed[at] = {candidates[l.candidate].listed,
-                                float_below(candidates[l.candidate].nearest)};
+            table.shapes[at] = candidates[l.candidate].listed;
+            table.nearest[at] = candidates[l.candidate].nearest;
         }
     });
     return table;

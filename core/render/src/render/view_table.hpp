@@ -35,7 +35,8 @@ struct ViewTable {
     bool built = false;                      // false: no table
     int columns = 0, rows = 0;               // blocks across and down the image
     std::vector<std::uint32_t> block_start;  // columns * rows + 1 offsets into `shapes`
-    std::vector<Listed> listed;              // each block's nearest first
+    std::vector<std::uint32_t> shapes;       // each block's nearest first
+    std::vector<double> nearest;             // parallel to `shapes`: see ListedShapes
     // Per block: a sphere that every ray of the block meets is listed.
     std::vector<std::uint8_t> covered;
 };
@@ -56,7 +57,8 @@ inline ListedShapes shapes_seen(const ViewTable& table, double x, double y) {
     const std::size_t index = static_cast<std::size_t>(row) * table.columns + column;
     const std::uint32_t first = table.block_start[index];
     const std::uint32_t count = table.block_start[index + 1] - first;
-    return ListedShapes{std::span(table.listed).subspan(first, count), table.covered[index] != 0};
+    return ListedShapes{std::span(table.shapes).subspan(first, count),
+                        std::span(table.nearest).subspan(first, count), table.covered[index] != 0};
 }
 
 }  // namespace jt
