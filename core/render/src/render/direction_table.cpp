@@ -231,11 +231,21 @@ DirectionTable build_direction_table(const Geometry& geometry, const Vec3& posit
                  std::max(s[3], v.high)};
         });
     }
+    // Faces of the same window (whole faces, round a light among the shapes)
+    // share their cells' cones: four arc cosines a cell.
     std::array<std::vector<CellCone>, 6> cones;
     for (std::size_t face = 0; face < 6; ++face) {
         const std::array<double, 4>& s = spans[face];
-        table.windows[face] = window_over(s[0], s[1], s[2], s[3], r);
-        if (table.windows[face].u_scale > 0.0) cones[face] = cell_cones(r, table.windows[face]);
+        const FaceWindow w = window_over(s[0], s[1], s[2], s[3], r);
+        table.windows[face] = w;
+        if (!(w.u_scale > 0.0)) continue;
+        for (std::size_t other = 0; other < face && cones[face].empty(); ++other) {
+            const FaceWindow& o = table.windows[other];
+            if (!cones[other].empty() && o.u0 == w.u0 && o.u1 == w.u1 && o.v0 == w.v0 &&
+                o.v1 == w.v1)
+                cones[face] = cones[other];
+        }
+        if (cones[face].empty()) cones[face] = cell_cones(r, w);
     }
 
     // (cell, candidate) pairs, the shapes taken nearest first (ties in index
