@@ -60,11 +60,14 @@ int run(const Options& o, bool& compared) {
     const bool rendered = render_interruptibly(job, display);
     display.finish();
     if (!rendered) return report_interrupt("nothing was written");
-    // A region file keeps only the region's pixels and records where they belong.
+    // A region file keeps only the region's pixels and records where they
+    // belong. A whole image moves out of the job, which is done with, instead
+    // of being copied.
+    const jt::Image8 image = o.region_output ? jt::Image8() : job.take_image();
     const jt::Expected<void> written =
         o.region_output ? jt::write_region_bmp(output, job.region_image(),
                                                {options.width, options.height, *o.region})
-                        : jt::write_image(output, job.image(), setup.format);
+                        : jt::write_image(output, image, setup.format);
     if (!written) {
         std::cerr << "jtracer-cli: " << written.error().message << "\n";
         return exit_io_error;
@@ -75,8 +78,9 @@ int run(const Options& o, bool& compared) {
                   << "\n";
     if (o.expect) {
         compared = true;
+        const jt::Image8 whole_frame = o.region_output ? job.image() : jt::Image8();
         return check_expected(
-            job.image(), output, expect_options(o),
+            o.region_output ? whole_frame : image, output, expect_options(o),
             std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count());
     }
     return exit_ok;

@@ -60,7 +60,7 @@ int run_sequence(const Options& o) {
         const Expected<void> written =
             o.region_output ? write_region_bmp(frame.output, job.region_image(),
                                                {frame.render.width, frame.render.height, *o.region})
-                            : write_image(frame.output, job.image(), frame.format);
+                            : write_image(frame.output, job.take_image(), frame.format);
         display.finish();
         if (!written) {
             std::cerr << "jtracer-cli: " << written.error().message << "; " << kept(range, index)

@@ -148,7 +148,7 @@ py::array_t<std::uint8_t> render_scene(PythonScene& scene, const RenderArguments
     }
     if (!job.progress().finished) throw std::runtime_error("the render was cancelled");
     report(1.0);
-    return to_array(job.image());
+    return to_array(job.take_image());
 }
 
 }  // namespace jt::python

@@ -11,6 +11,7 @@
 #include <gtest/gtest.h>
 #include <unistd.h>
 
+#include <algorithm>
 #include <cmath>
 #include <filesystem>
 #include <fstream>
@@ -81,6 +82,42 @@ TEST(Bmp, RoundTripAndRejectsBadFiles) {
     std::vector<std::uint8_t> eight_bit = bytes;
     eight_bit[28] = 8;
     EXPECT_NE(refusal(eight_bit).find("24 bits"), std::string::npos);
+}
+
+// write_bmp makes the file a few rows at a time: every width's padding and
+// every boundary between pieces must give encode_bmp's bytes.
+TEST(Bmp, TheFileWrittenInPiecesIsTheEncodedImage) {
+    fs::path dir = make_scratch_dir("bmp_pieces");
+    // 2,000 pixels a row is 6,000 bytes: many pieces; 1-7 pixels cover every padding.
+    for (const auto& [width, height] : {std::pair{2000, 200}, std::pair{1, 1}, std::pair{2, 70000},
+                                        std::pair{5, 3}, std::pair{7, 40000}}) {
+        Image8 image(width, height);
+        for (std::size_t i = 0; i < image.rgb.size(); ++i)
+            image.rgb[i] = static_cast<std::uint8_t>((i * 2654435761u) >> 13);
+        const fs::path file = dir / "pieces.bmp";
+        const Expected<void> written = write_bmp(file, image);
+        ASSERT_TRUE(written) << written.error().message;
+        const std::vector<std::uint8_t> encoded = encode_bmp(image);
+        const std::string on_disk = test::read_file(file);
+        ASSERT_EQ(on_disk.size(), encoded.size()) << width << "x" << height;
+        EXPECT_TRUE(std::equal(encoded.begin(), encoded.end(),
+                               reinterpret_cast<const std::uint8_t*>(on_disk.data())))
+            << width << "x" << height;
+    }
+}
+
+TEST(AtomicFile, PiecesAreWrittenOneAfterAnother) {
+    fs::path dir = make_scratch_dir("atomic_pieces");
+    const std::vector<std::vector<std::uint8_t>> pieces{{'a', 'b'}, {'c'}, {'d', 'e', 'f'}};
+    std::size_t next = 0;
+    const Expected<void> written =
+        write_file_atomically(dir / "out.bin", [&]() -> std::span<const std::uint8_t> {
+            if (next == pieces.size()) return {};
+            return pieces[next++];
+        });
+    ASSERT_TRUE(written) << written.error().message;
+    EXPECT_EQ(test::read_file(dir / "out.bin"), "abcdef");
+    EXPECT_EQ(next, pieces.size());
 }
 
 TEST(Png, RoundTripKeepsRowOrder) {

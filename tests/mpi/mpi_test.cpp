@@ -128,14 +128,15 @@ TEST_F(Mpi, EveryFrameOfASequenceMatchesTheCli) {
 
 TEST_F(Mpi, ProgressCoversTheWholeSequence) {
     // Frames short enough that none alone reaches the log's first second, but
-    // not the whole sequence.
+    // not the whole sequence: 60 frames of about 0.05 s each, well past the
+    // first second on a quiet machine too.
     test::write_file(dir / "seq.jts", growing);
     ProgramRun r = run_shell(
         mpirun(2) +
-        "seq.jts --frames 20 --width 480 --height 320 --samples 16 --progress log -o 'p%d.bmp'");
+        "seq.jts --frames 60 --width 480 --height 320 --samples 16 --progress log -o 'p%d.bmp'");
     ASSERT_EQ(r.code, 0) << r.err;
-    EXPECT_EQ(count(r.err, "wrote p"), 20u) << r.err;
-    EXPECT_EQ(count(r.err, "wrote 20 frames in"), 1u) << r.err;
+    EXPECT_EQ(count(r.err, "wrote p"), 60u) << r.err;
+    EXPECT_EQ(count(r.err, "wrote 60 frames in"), 1u) << r.err;
     // One log over the sequence: its percentages only go up.
     std::vector<int> percents;
     std::istringstream lines(r.err);

@@ -48,7 +48,11 @@ void check_buffers(int count, unsigned seed) {
     std::mt19937 rng(seed + 1);
     std::uniform_real_distribution<double> u(-9.0, 9.0), unit(-1.0, 1.0);
     int blocked = 0, open = 0;
-    for (Vec3 light : {Vec3{0, 20, 0}, Vec3{0.3, 0.2, -0.1}, Vec3{-7, 3, 8}, Vec3{5, -1, 2}}) {
+    // Inside the crowd every face has cells over all of it; from outside,
+    // only windows of one to three faces (the last two lights: far off, the
+    // crowd seen across a cube edge and a cube corner).
+    for (Vec3 light : {Vec3{0, 20, 0}, Vec3{0.3, 0.2, -0.1}, Vec3{-7, 3, 8}, Vec3{5, -1, 2},
+                       Vec3{60, 60.5, 0.2}, Vec3{-45, 45.3, -44.8}}) {
         DirectionTable table = build_direction_table(g, light, table_resolution(count));
         ASSERT_GT(table.resolution, 0);
         for (int i = 0; i < 6000; ++i) {
@@ -106,11 +110,11 @@ TEST(DirectionTable, CellsAreFewAndSmallForSparseShapes) {
         build_direction_table(*prepared->geometry, {0, 10, 4}, table_resolution(64));
     ASSERT_GT(table.resolution, 0);
     const std::size_t cells = table.cell_start.size() - 1;
-    std::size_t most = 0, empty = 0;
+    std::size_t most = 0, at_most_one = 0;
     for (std::size_t c = 0; c < cells; ++c) {
         const std::size_t listed = table.cell_start[c + 1] - table.cell_start[c];
         most = std::max(most, listed);
-        empty += listed == 0;
+        at_most_one += listed <= 1;
     }
     EXPECT_LE(most, 4u);
     // Each list nearest first, and `nearest` a true lower bound.
@@ -124,7 +128,7 @@ TEST(DirectionTable, CellsAreFewAndSmallForSparseShapes) {
             EXPECT_LT(table.nearest[k], glm::length(s.center - Vec3{0, 10, 4}) - s.radius);
             EXPECT_GT(table.nearest[k], glm::length(s.center - Vec3{0, 10, 4}) - s.radius - 1e-3);
         }
-    EXPECT_GT(empty, cells * 3 / 4);
+    EXPECT_GT(at_most_one, cells * 3 / 4);
     // Up, away from the floor: nothing to test.
     auto up = shapes_toward(table, {0.1, 1.0, 0.2});
     ASSERT_TRUE(up);
@@ -136,6 +140,69 @@ TEST(DirectionTable, CellsAreFewAndSmallForSparseShapes) {
     EXPECT_LE(toward->size(), 2u);
     // A zero direction cannot pick a cell.
     EXPECT_FALSE(shapes_toward(table, {0, 0, 0}));
+}
+
+TEST(DirectionTable, CellsSpanOnlyTheDirectionsOfShapes) {
+    // 200 small spheres in a box 2 across, 40 from the light: over a whole
+    // face they would crowd into a few cells of 29 an edge (lists of
+    // dozens, left to the BVH). The cells span only the face's part where
+    // the spheres lie, so they are much finer and their lists short.
+    std::mt19937 rng(21);
+    std::uniform_real_distribution<double> u(-1.0, 1.0);
+    Scene scene;
+    for (int i = 0; i < 200; ++i)
+        scene.primitives.push_back(sphere({u(rng), 40.0 + u(rng), u(rng)}, 0.05));
+    auto prepared = prepare_scene(scene).value();
+    const Geometry& g = *prepared->geometry;
+    const Vec3 light{0, 0, 0};
+    DirectionTable table = build_direction_table(g, light, table_resolution(200));
+    ASSERT_EQ(table.resolution, 29);
+    std::size_t most = 0;
+    for (std::size_t c = 0; c + 1 < table.cell_start.size(); ++c)
+        most = std::max<std::size_t>(most, table.cell_start[c + 1] - table.cell_start[c]);
+    EXPECT_LE(most, 16u);
+    // Face 2 (+y) holds them all, within a window of about a twentieth of it.
+    for (int face = 0; face < 6; ++face) {
+        const FaceWindow& w = table.windows[static_cast<std::size_t>(face)];
+        if (face == 2) {
+            EXPECT_LT(w.u1 - w.u0, 0.1);
+            EXPECT_LT(w.v1 - w.v0, 0.1);
+        } else {
+            EXPECT_GT(w.u0, w.u1) << "face " << face << " covers nothing";
+        }
+    }
+    // Beside the window, and toward another face: nothing listed.
+    auto beside = shapes_toward(table, {0.2, 1.0, 0.0});
+    ASSERT_TRUE(beside);
+    EXPECT_EQ(beside->size(), 0u);
+    auto away = shapes_toward(table, {0.0, -1.0, 0.1});
+    ASSERT_TRUE(away);
+    EXPECT_EQ(away->size(), 0u);
+    // Every sphere a ray toward it meets is listed, and the answers agree
+    // with the BVH's.
+    std::uniform_int_distribution<std::size_t> pick(0, g.spheres.size() - 1);
+    int blocked = 0;
+    for (int i = 0; i < 4000; ++i) {
+        const WorldSphere& s = g.spheres[pick(rng)];
+        // Beyond the sphere, aimed at the light near its silhouette.
+        const Vec3 aim =
+            s.center + s.radius * (1.0 + 0.01 * u(rng)) * glm::normalize(Vec3{u(rng), 0.0, u(rng)});
+        const Vec3 origin = light + (aim - light) * (1.5 + u(rng) * 0.4);
+        const double distance = glm::length(light - origin);
+        const Vec3 d = (light - origin) / distance;
+        auto candidates = shapes_toward(table, -d);
+        ASSERT_TRUE(candidates);
+        for (std::uint32_t c = 0; c < g.spheres.size(); ++c)
+            if (blocks(g, c, origin, d, distance)) {
+                ASSERT_NE(std::ranges::find(candidates->shapes, c), candidates->shapes.end())
+                    << "ray " << i << " blocked by " << c << " missing from its cell";
+            }
+        const bool with = occluded(g, origin, d, 0.0, distance, nullptr, &table);
+        ASSERT_EQ(with, occluded(g, origin, d, 0.0, distance)) << "ray " << i;
+        blocked += with;
+    }
+    EXPECT_GT(blocked, 500);
+    EXPECT_LT(blocked, 3500);
 }
 
 TEST(DirectionTable, NoneWhenShapesSurroundThePoint) {

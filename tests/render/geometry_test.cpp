@@ -8,6 +8,8 @@
 #include "scene_builder.hpp"
 
 #include <gtest/gtest.h>
+
+#include <cmath>
 #include <glm/geometric.hpp>
 #include <glm/matrix.hpp>
 
@@ -127,6 +129,59 @@ TEST(Intersect, SphereStaysPreciseFromFarAway) {
     // From inside, the far root.
     EXPECT_EQ(intersect_sphere({0, 0, 0}, {0, 0, -1}, {0, 0, 0}, 2.0, 0.0, no_hit), 2.0);
     EXPECT_EQ(intersect_sphere({0, 3, 5}, {0, 0, -1}, {0, 0, 0}, 2.0, 0.0, no_hit), no_hit);
+}
+
+// The exact sphere test without passes_wide_of_sphere's early answer.
+bool exact_sphere_test_has_root(const Vec3& origin, const Vec3& direction, const Vec3& center,
+                                double radius) {
+    const Vec3 f = origin - center;
+    const double b = glm::dot(f, direction);
+    const double c = glm::dot(f, f) - radius * radius;
+    const double a = glm::dot(direction, direction);
+    const Vec3 perpendicular = f - (b / a) * direction;
+    double t0, t1;
+    return solve_ray_quadratic(a, b, c, glm::dot(perpendicular, perpendicular), radius * radius, t0,
+                               t1);
+}
+
+// The early miss may only answer where the exact test finds no root: rays
+// grazing spheres within a relative 1e-17 to 1e-3 of the radius, outside and
+// inside, at scales from 1e-6 to 1e7 and from near and far.
+TEST(Intersect, AWideMissIsOnlyDecidedWhereTheExactTestMisses) {
+    std::mt19937 rng(11);
+    std::uniform_real_distribution<double> unit(-1.0, 1.0);
+    std::uniform_real_distribution<double> exponent(-17.0, -3.0);
+    int decided = 0, grazing_hits = 0;
+    for (int i = 0; i < 400000; ++i) {
+        const double scale = std::pow(10.0, 13.0 * (unit(rng) + 1.0) / 2.0 - 6.0);
+        const double radius = scale * (0.01 + std::abs(unit(rng)));
+        const Vec3 center = scale * Vec3(unit(rng), unit(rng), unit(rng)) * 3.0;
+        // The point where the ray passes the centre, off it by r (1 + e).
+        const Vec3 axis = glm::normalize(Vec3(unit(rng), unit(rng), unit(rng)));
+        Vec3 side = glm::cross(axis, Vec3(unit(rng), unit(rng), unit(rng)));
+        side = glm::normalize(side);
+        const double e = (i % 2 ? 1.0 : -1.0) * std::pow(10.0, exponent(rng));
+        const Vec3 passing = center + side * (radius * (1.0 + e));
+        const double distance = scale * std::pow(10.0, 4.0 * (unit(rng) + 1.0) / 2.0);
+        const Vec3 origin = passing - axis * distance;
+        const double length = std::pow(10.0, 2.0 * unit(rng));  // directions need not be unit
+        const Vec3 direction = axis * length;
+        const Vec3 f = origin - center;
+        const double a = glm::dot(direction, direction);
+        const double b = glm::dot(f, direction);
+        const double ff = glm::dot(f, f);
+        const double c = ff - radius * radius;
+        const bool root = exact_sphere_test_has_root(origin, direction, center, radius);
+        if (passes_wide_of_sphere(a, b, c, ff)) {
+            ++decided;
+            ASSERT_FALSE(root) << "case " << i << ": e = " << e << ", scale " << scale;
+        }
+        if (root && e > 0.0) ++grazing_hits;
+    }
+    // Rays off by 1e-3 of the radius and more are decided early; the test's
+    // grazing rays reach the exact test's rounding, where it still finds roots.
+    EXPECT_GT(decided, 400000 / 2 / 10);
+    EXPECT_GT(grazing_hits, 100);
 }
 
 TEST(Intersect, CylinderPartsAndRims) {

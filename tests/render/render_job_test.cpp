@@ -7,6 +7,7 @@
 
 #include <chrono>
 #include <cstdio>
+#include <optional>
 #include <thread>
 
 namespace jt::test {
@@ -140,6 +141,27 @@ TEST(RenderJob, RegionRendersExactlyThosePixels) {
             bool inside = x >= 13 && x < 71 && y >= 7 && y < 45;
             ASSERT_EQ(at(part, x, y), (inside ? at(full, x, y) : Rgb{0, 0, 0})) << x << "," << y;
         }
+}
+
+TEST(RenderJob, TakeImageMovesTheFinalImageOut) {
+    Scene s = busy_scene(64, 36);
+    auto prepared = prepare_scene(s).value();
+    for (const std::optional<PixelRect> region :
+         {std::optional<PixelRect>(), std::optional(PixelRect{5, 3, 40, 30})}) {
+        RenderOptions o = options_for(s, 1, 0, false);
+        o.region = region;
+        RenderJob job(prepared, o);
+        job.run();
+        const Image8 shown = job.image();
+        Image8 display;
+        const Image8 taken = job.take_image();
+        EXPECT_EQ(taken.width, 64);
+        EXPECT_EQ(taken.height, 36);
+        EXPECT_TRUE(taken == shown) << "the same pixels as a copy";
+        EXPECT_TRUE(job.image().rgb.empty()) << "the job keeps none";
+        EXPECT_TRUE(job.region_image().rgb.empty());
+        EXPECT_FALSE(job.fetch_updates(display));
+    }
 }
 
 TEST(RenderJob, CancelReturnsPromptly) {

@@ -151,6 +151,11 @@ class RenderJob {
 
     // The image as it stands: final once progress().finished.
     Image8 image() const;
+    // The image, moved out of the job instead of copied: for a shell that is
+    // done with a finished or cancelled job and wants its megabytes once. The
+    // job keeps no pixels afterwards (image(), region_image() and
+    // fetch_updates() see none), so take it last.
+    Image8 take_image();
     // Only the pixels of the region (the whole image without one), as an image
     // of the region's size, row 0 at the region's bottom. The job keeps only
     // these, so a small region of a huge frame needs little memory.

@@ -9,6 +9,7 @@
 #include <algorithm>
 #include <array>
 #include <cmath>
+#include <limits>
 #include <numbers>
 
 namespace jt {
@@ -38,6 +39,9 @@ constexpr double coordinate_slack = 1e-6;
 // On a face of the cube map, the face's axis is the largest component of a
 // unit direction, so it is at least 1/sqrt(3).
 constexpr double min_face_component = 0.57735026918962576 - 1e-6;
+
+// The narrowest face window: the slack twice over.
+constexpr double min_window = 4.0 * coordinate_slack;
 
 struct BoundingSphere {
     Vec3 center;
@@ -77,16 +81,17 @@ struct CellCone {
     double cos_radius, sin_radius;
 };
 
-std::vector<CellCone> cell_cones(int resolution) {
+// The cones of one face's cells, row by row, over its window.
+std::vector<CellCone> cell_cones(int resolution, const FaceWindow& window) {
     std::vector<CellCone> cones(static_cast<std::size_t>(resolution) * resolution);
-    const double step = 2.0 / resolution;
+    const double u_step = 1.0 / window.u_scale, v_step = 1.0 / window.v_scale;
     for (int iv = 0; iv < resolution; ++iv)
         for (int iu = 0; iu < resolution; ++iu) {
-            const double u0 = -1.0 + iu * step, v0 = -1.0 + iv * step;
-            const Vec3 centre = glm::normalize(Vec3(u0 + 0.5 * step, v0 + 0.5 * step, 1.0));
+            const double u0 = window.u0 + iu * u_step, v0 = window.v0 + iv * v_step;
+            const Vec3 centre = glm::normalize(Vec3(u0 + 0.5 * u_step, v0 + 0.5 * v_step, 1.0));
             double radius = 0.0;
-            for (double du : {0.0, step})
-                for (double dv : {0.0, step}) {
+            for (double du : {0.0, u_step})
+                for (double dv : {0.0, v_step}) {
                     Vec3 corner = glm::normalize(Vec3(u0 + du, v0 + dv, 1.0));
                     radius = std::max(radius,
                                       std::acos(std::clamp(glm::dot(centre, corner), -1.0, 1.0)));
@@ -98,12 +103,15 @@ std::vector<CellCone> cell_cones(int resolution) {
     return cones;
 }
 
-// Calls add(cell) for every cell whose cone meets the cone of directions
-// within `angle` of the unit `axis`.
-template <typename Add>
-void rasterise_cone(const Vec3& axis, double angle, int resolution,
-                    const std::vector<CellCone>& cones, Add&& add) {
-    const double cos_angle = std::cos(angle), sin_angle = std::sin(angle);
+// A face coordinate range, clamped to the face.
+struct Range {
+    double low, high;
+};
+
+// Calls visit(face, u, v) with the ranges of face coordinates that directions
+// within `angle` of the unit `axis` may take on each face they may lie on.
+template <typename Visit>
+void face_ranges(const Vec3& axis, double angle, Visit&& visit) {
     // The range of each component of a direction in the cone.
     std::array<double, 3> lo{}, hi{};
     for (int i = 0; i < 3; ++i) {
@@ -118,28 +126,60 @@ void rasterise_cone(const Vec3& axis, double angle, int resolution,
         const double w_hi = sign > 0 ? hi[k] : -lo[k];
         if (w_hi < w_lo) continue;
         // u = d_j / w over the box of components: the extremes are at corners.
-        auto range = [&](int axis_index, int& first, int& last) {
+        auto range = [&](int axis_index) {
             const double a = lo[axis_index], b = hi[axis_index];
             const double low = std::min(a / w_lo, a / w_hi) - coordinate_slack;
             const double high = std::max(b / w_lo, b / w_hi) + coordinate_slack;
-            first = cell_coordinate(low, resolution);
-            last = cell_coordinate(high, resolution);
+            return Range{std::clamp(low, -1.0, 1.0), std::clamp(high, -1.0, 1.0)};
         };
-        int u0, u1, v0, v1;
-        range(j, u0, u1);
-        range(l, v0, v1);
+        visit(face, range(j), range(l));
+    }
+}
+
+// Calls add(cell) for every cell whose cone meets the cone of directions
+// within `angle` of the unit `axis`. `cones`: each face's cells' cones.
+template <typename Add>
+void rasterise_cone(const Vec3& axis, double angle, int resolution,
+                    const std::array<FaceWindow, 6>& windows,
+                    const std::array<std::vector<CellCone>, 6>& cones, Add&& add) {
+    const double cos_angle = std::cos(angle), sin_angle = std::sin(angle);
+    face_ranges(axis, angle, [&](int face, Range u, Range v) {
+        const FaceWindow& w = windows[static_cast<std::size_t>(face)];
+        const auto [k, j, l] = face_axes(face / 2);
+        const double sign = face % 2 == 0 ? 1.0 : -1.0;
+        const int u0 = cell_coordinate((u.low - w.u0) * w.u_scale, resolution);
+        const int u1 = cell_coordinate((u.high - w.u0) * w.u_scale, resolution);
+        const int v0 = cell_coordinate((v.low - w.v0) * w.v_scale, resolution);
+        const int v1 = cell_coordinate((v.high - w.v0) * w.v_scale, resolution);
         const std::size_t face_base = static_cast<std::size_t>(face) * resolution * resolution;
+        const std::vector<CellCone>& face_cones = cones[static_cast<std::size_t>(face)];
         for (int iv = v0; iv <= v1; ++iv)
             for (int iu = u0; iu <= u1; ++iu) {
                 const std::size_t local = static_cast<std::size_t>(iv) * resolution + iu;
-                const CellCone& c = cones[local];
+                const CellCone& c = face_cones[local];
                 // Cones meet when the angle between their axes is at most the
                 // sum of their angles: compare cosines.
                 const double cos_between = c.u * axis[j] + c.v * axis[l] + c.w * sign * axis[k];
                 const double cos_sum = cos_angle * c.cos_radius - sin_angle * c.sin_radius;
                 if (cos_between >= cos_sum - angle_slack) add(face_base + local);
             }
-    }
+    });
+}
+
+// A face window over the union of ranges [u_low, u_high] x [v_low, v_high]
+// (nothing when u_low > u_high), `resolution` cells along each edge.
+FaceWindow window_over(double u_low, double u_high, double v_low, double v_high, int resolution) {
+    if (u_low > u_high || v_low > v_high) return {};
+    // Cells of a width, even where a range shrank to a face's edge.
+    auto widen = [](double& low, double& high) {
+        if (high - low >= min_window) return;
+        low = std::max(-1.0, low - min_window);
+        high = std::min(1.0, high + min_window);
+    };
+    widen(u_low, u_high);
+    widen(v_low, v_high);
+    return {
+        u_low, u_high, v_low, v_high, resolution / (u_high - u_low), resolution / (v_high - v_low)};
 }
 
 }  // namespace
@@ -151,64 +191,103 @@ DirectionTable build_direction_table(const Geometry& geometry, const Vec3& posit
     if (shapes == 0 || shapes > max_table_work || resolution < 1) return table;
     const int r = resolution;
     const std::size_t cells = 6 * static_cast<std::size_t>(r) * r;
-    const std::vector<CellCone> cones = cell_cones(r);
 
-    // (cell, candidate) pairs, then a counting sort by cell, then each cell
-    // nearest first.
-    struct Listing {
-        std::uint32_t cell, candidate;
+    // Each shape's cone of directions seen from the point, or none for a
+    // shape listed in every cell; then each face's window over the cones
+    // that reach it, a whole face where a shape is listed everywhere.
+    struct ShapeCone {
+        Vec3 axis;
+        double angle;
+        bool everywhere;
     };
-    std::vector<Listing> pairs;
+    std::vector<ShapeCone> shape_cones(shapes);
     std::vector<double> nearest_of(shapes);  // by sphere index, then shape index
-    auto add_shape = [&](const BoundingSphere& b, std::uint32_t candidate, std::size_t slot) {
-        const Vec3 offset = b.center - position;
+    auto cone_of = [&](const BoundingSphere& b, std::size_t slot) {
         const PaddedBound padded = padded_bound(b.center, b.radius, position);
         const double distance = padded.distance, radius = padded.radius;
         nearest_of[slot] = padded.nearest;
         const bool everywhere = !(distance > radius) || !std::isfinite(distance) ||
                                 radius / distance > std::sin(max_cone_angle);
-        if (everywhere) {
+        shape_cones[slot] = everywhere
+                                ? ShapeCone{Vec3(0.0), 0.0, true}
+                                : ShapeCone{(b.center - position) / distance,
+                                            std::asin(radius / distance) + angle_slack, false};
+    };
+    for (std::size_t i = 0; i < geometry.spheres.size(); ++i)
+        cone_of({geometry.spheres[i].center, geometry.spheres[i].radius}, i);
+    for (std::size_t i = 0; i < geometry.shapes.size(); ++i)
+        cone_of(bounding_sphere(geometry.shapes[i]), geometry.spheres.size() + i);
+    constexpr double none = std::numeric_limits<double>::infinity();
+    std::array<std::array<double, 4>, 6> spans;  // u low, u high, v low, v high
+    spans.fill({none, -none, none, -none});
+    for (const ShapeCone& c : shape_cones) {
+        if (c.everywhere) {
+            spans.fill({-1.0, 1.0, -1.0, 1.0});
+            break;
+        }
+        face_ranges(c.axis, c.angle, [&](int face, Range u, Range v) {
+            std::array<double, 4>& s = spans[static_cast<std::size_t>(face)];
+            s = {std::min(s[0], u.low), std::max(s[1], u.high), std::min(s[2], v.low),
+                 std::max(s[3], v.high)};
+        });
+    }
+    // Faces of the same window (whole faces, round a light among the shapes)
+    // share their cells' cones: four arc cosines a cell.
+    std::array<std::vector<CellCone>, 6> cones;
+    for (std::size_t face = 0; face < 6; ++face) {
+        const std::array<double, 4>& s = spans[face];
+        const FaceWindow w = window_over(s[0], s[1], s[2], s[3], r);
+        table.windows[face] = w;
+        if (!(w.u_scale > 0.0)) continue;
+        for (std::size_t other = 0; other < face && cones[face].empty(); ++other) {
+            const FaceWindow& o = table.windows[other];
+            if (!cones[other].empty() && o.u0 == w.u0 && o.u1 == w.u1 && o.v0 == w.v0 &&
+                o.v1 == w.v1)
+                cones[face] = cones[other];
+        }
+        if (cones[face].empty()) cones[face] = cell_cones(r, w);
+    }
+
+    // (cell, candidate) pairs, the shapes taken nearest first (ties in index
+    // order), then a stable counting sort by cell: each cell's list comes out
+    // nearest first without a sort of its own.
+    struct Listing {
+        std::uint32_t cell, candidate;
+    };
+    std::vector<std::uint32_t> order(shapes);
+    for (std::uint32_t slot = 0; slot < shapes; ++slot) order[slot] = slot;
+    std::stable_sort(order.begin(), order.end(), [&](std::uint32_t a, std::uint32_t b) {
+        return nearest_of[a] < nearest_of[b];
+    });
+    const auto spheres = static_cast<std::uint32_t>(geometry.spheres.size());
+    std::vector<Listing> pairs;
+    for (const std::uint32_t slot : order) {
+        const std::uint32_t candidate = slot < spheres ? slot : (slot - spheres) | shape_flag;
+        const ShapeCone& c = shape_cones[slot];
+        if (c.everywhere) {
             for (std::size_t cell = 0; cell < cells; ++cell)
                 pairs.push_back({static_cast<std::uint32_t>(cell), candidate});
-            return;
+        } else {
+            rasterise_cone(c.axis, c.angle, r, table.windows, cones, [&](std::size_t cell) {
+                pairs.push_back({static_cast<std::uint32_t>(cell), candidate});
+            });
         }
-        const double angle = std::asin(radius / distance) + angle_slack;
-        rasterise_cone(offset / distance, angle, r, cones, [&](std::size_t cell) {
-            pairs.push_back({static_cast<std::uint32_t>(cell), candidate});
-        });
-    };
-    for (std::uint32_t i = 0; i < geometry.spheres.size(); ++i) {
-        add_shape({geometry.spheres[i].center, geometry.spheres[i].radius}, i, i);
         if (pairs.size() > max_listed) return {};
     }
-    for (std::uint32_t i = 0; i < geometry.shapes.size(); ++i) {
-        add_shape(bounding_sphere(geometry.shapes[i]), i | shape_flag, geometry.spheres.size() + i);
-        if (pairs.size() > max_listed) return {};
-    }
-    auto nearest = [&](std::uint32_t candidate) {
-        return candidate & shape_flag
-                   ? nearest_of[geometry.spheres.size() + (candidate & ~shape_flag)]
-                   : nearest_of[candidate];
-    };
 
     table.resolution = r;
     table.cell_start.assign(cells + 1, 0);
     for (const Listing& p : pairs) ++table.cell_start[p.cell + 1];
     for (std::size_t c = 0; c < cells; ++c) table.cell_start[c + 1] += table.cell_start[c];
-    std::vector<Listing> sorted(pairs.size());
     std::vector<std::uint32_t> fill(table.cell_start.begin(), table.cell_start.end() - 1);
-    for (const Listing& p : pairs) sorted[fill[p.cell]++] = p;
-    for (std::size_t c = 0; c < cells; ++c)
-        std::stable_sort(sorted.begin() + table.cell_start[c],
-                         sorted.begin() + table.cell_start[c + 1],
-                         [&](const Listing& a, const Listing& b) {
-                             return nearest(a.candidate) < nearest(b.candidate);
-                         });
-    table.shapes.resize(sorted.size());
-    table.nearest.resize(sorted.size());
-    for (std::size_t i = 0; i < sorted.size(); ++i) {
-        table.shapes[i] = sorted[i].candidate;
-        table.nearest[i] = nearest(sorted[i].candidate);
+    table.shapes.resize(pairs.size());
+    table.nearest.resize(pairs.size());
+    for (const Listing& p : pairs) {
+        const std::uint32_t at = fill[p.cell]++;
+        table.shapes[at] = p.candidate;
+        table.nearest[at] =
+            nearest_of[p.candidate & shape_flag ? spheres + (p.candidate & ~shape_flag)
+                                                : p.candidate];
     }
     return table;
 }

@@ -13,6 +13,7 @@
 #include "jtracer/scene.hpp"
 #include "render/listed_shapes.hpp"
 
+#include <array>
 #include <cmath>
 #include <cstddef>
 #include <cstdint>
@@ -24,8 +25,20 @@ namespace jt {
 
 struct Geometry;
 
+// The part of a cube face that a table's cells cover: face coordinates u, v
+// (along axes k+1 and k+2 of face axis k) in [u0, u1] x [v0, v1], scale cells
+// a unit. Where the shapes seen from the point lie within a small part of a
+// face, the face's cells span only that part, so that each is finer and lists
+// fewer; directions outside it meet no shape. A face without shapes covers
+// nothing (u0 > u1).
+struct FaceWindow {
+    double u0 = 1.0, u1 = -1.0, v0 = 1.0, v1 = -1.0;
+    double u_scale = 0.0, v_scale = 0.0;  // cells a unit of u and of v
+};
+
 struct DirectionTable {
-    int resolution = 0;                     // cells along a cube face's edge; 0: no table
+    int resolution = 0;  // cells along a face window's edge; 0: no table
+    std::array<FaceWindow, 6> windows;
     std::vector<std::uint32_t> cell_start;  // 6 * resolution^2 + 1 offsets into `shapes`
     std::vector<std::uint32_t> shapes;      // each cell's nearest first
     std::vector<double> nearest;            // parallel to `shapes`: see ListedShapes
@@ -38,9 +51,9 @@ int table_resolution(std::size_t shapes);
 // many shapes for a table to pay for its building.
 DirectionTable build_direction_table(const Geometry& geometry, const Vec3& point, int resolution);
 
-// The cell index along a face edge of coordinate u in [-1, 1].
-inline int cell_coordinate(double u, int resolution) {
-    double x = (u + 1.0) * 0.5 * resolution;
+// The cell index along a window's edge of x, the coordinate from the
+// window's start in cells.
+inline int cell_coordinate(double x, int resolution) {
     if (!(x > 0.0)) return 0;
     if (x >= resolution) return resolution - 1;
     return static_cast<int>(x);
@@ -63,9 +76,13 @@ inline std::optional<ListedShapes> shapes_toward(const DirectionTable& table,
     // Face 2k (+axis k) or 2k+1 (-axis k); u and v run along axes k+1 and k+2.
     const int j = (k + 1) % 3, l = (k + 2) % 3;
     const int face = 2 * k + (direction[k] < 0.0 ? 1 : 0);
+    const FaceWindow& w = table.windows[face];
+    const double u = direction[j] / m, v = direction[l] / m;
+    // No shape lies outside the window.
+    if (!(u >= w.u0 && u <= w.u1 && v >= w.v0 && v <= w.v1)) return ListedShapes{};
     const std::size_t cell =
-        (static_cast<std::size_t>(face) * r + cell_coordinate(direction[l] / m, r)) * r +
-        cell_coordinate(direction[j] / m, r);
+        (static_cast<std::size_t>(face) * r + cell_coordinate((v - w.v0) * w.v_scale, r)) * r +
+        cell_coordinate((u - w.u0) * w.u_scale, r);
     const std::size_t first = table.cell_start[cell];
     const std::size_t count = table.cell_start[cell + 1] - first;
     return ListedShapes{std::span(table.shapes).subspan(first, count),

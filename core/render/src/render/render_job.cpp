@@ -67,6 +67,7 @@ struct RenderJob::State {
 
     mutable std::mutex image_mutex;  // guards image and dirty
     Image8 image;                    // the region's pixels only: a small region needs little memory
+    bool image_taken = false;        // by take_image(): no pixels are left
     std::optional<PixelRect> dirty;
 
     // Tiles of pass `tiles_pass` already published. A pass cancelled part way
@@ -92,6 +93,7 @@ struct RenderJob::State {
     }
     // The full-size image, black outside the region; image_mutex held.
     Image8 full_image() const {
+        if (image_taken) return Image8();
         // The whole frame: a plain copy, without zeroing megabytes first.
         if (region == PixelRect{0, 0, options.width, options.height}) return image;
         Image8 full(options.width, options.height);  // not a copy: see Image8's constructor
@@ -256,6 +258,7 @@ RenderProgress RenderJob::progress() const {
 std::optional<PixelRect> RenderJob::fetch_updates(Image8& display) {
     State& s = *state_;
     std::lock_guard lock(s.image_mutex);
+    if (s.image_taken) return std::nullopt;
     if (display.width != s.options.width || display.height != s.options.height ||
         display.rgb.size() != static_cast<std::size_t>(s.options.width) * s.options.height * 3) {
         display = s.full_image();
@@ -277,6 +280,18 @@ Image8 RenderJob::image() const {
     return state_->full_image();
 }
 
+Image8 RenderJob::take_image() {
+    State& s = *state_;
+    std::lock_guard lock(s.image_mutex);
+    Image8 taken = s.region == PixelRect{0, 0, s.options.width, s.options.height}
+                       ? std::move(s.image)
+                       : s.full_image();
+    s.image = Image8();
+    s.image_taken = true;
+    s.dirty.reset();
+    return taken;
+}
+
 Image8 RenderJob::region_image() const {
     std::lock_guard lock(state_->image_mutex);
     return state_->image;
@@ -290,7 +305,7 @@ Image8 render_image(std::shared_ptr<const PreparedScene> scene, RenderOptions op
     options.previews = false;
     RenderJob job(std::move(scene), options);
     job.run();
-    return job.image();
+    return job.take_image();
 }
 
 RenderOptions render_options_for(const Scene& scene) {

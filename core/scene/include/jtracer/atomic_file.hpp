@@ -8,6 +8,7 @@
 
 #include <cstdint>
 #include <filesystem>
+#include <functional>
 #include <span>
 #include <string>
 
@@ -17,6 +18,16 @@ namespace jt {
 // 'out/x.bmp': No such file or directory").
 Expected<void> write_file_atomically(const std::filesystem::path& target,
                                      std::span<const std::uint8_t> bytes);
+
+// A file's bytes in pieces: each call returns the next one, an empty piece at
+// the end. A piece stays valid until the next call.
+using BytePieces = std::function<std::span<const std::uint8_t>()>;
+
+// The same, for a file made piece by piece (a BMP's rows), which then needs no
+// buffer of its whole size: megabytes of fresh memory cost more to fault in
+// than to write.
+Expected<void> write_file_atomically(const std::filesystem::path& target,
+                                     const BytePieces& next_piece);
 
 // Writes a new file `target` and never replaces one: true when written, false
 // when something is already there. The check and the creation are one step

@@ -33,13 +33,27 @@ int write_all(int fd, std::span<const std::uint8_t> bytes) {
     return 0;
 }
 
+int write_all(int fd, const BytePieces& next_piece) {
+    for (std::span<const std::uint8_t> piece = next_piece(); !piece.empty(); piece = next_piece())
+        if (const int error = write_all(fd, piece); error != 0) return error;
+    return 0;
+}
+
+// The whole of `bytes` as one piece.
+BytePieces one_piece(std::span<const std::uint8_t> bytes) {
+    return [bytes, given = false]() mutable {
+        const std::span<const std::uint8_t> piece = given ? std::span<const std::uint8_t>() : bytes;
+        given = true;
+        return piece;
+    };
+}
+
 // A device or pipe (/dev/stdout, /dev/full) is written in place: renaming over
 // it would not reach the reader, and as root would replace the device node.
-Expected<void> write_in_place(const std::filesystem::path& target,
-                              std::span<const std::uint8_t> bytes) {
+Expected<void> write_in_place(const std::filesystem::path& target, const BytePieces& next_piece) {
     int fd = ::open(target.c_str(), O_WRONLY | O_CLOEXEC);
     if (fd < 0) return failure(target, errno);
-    int error = write_all(fd, bytes);
+    int error = write_all(fd, next_piece);
     if (::close(fd) != 0 && error == 0) error = errno;
     if (error != 0) return failure(target, error);
     return {};
@@ -52,14 +66,14 @@ struct Temporary {
     int error = 0;
 };
 
-Temporary write_temporary(const std::filesystem::path& real, std::span<const std::uint8_t> bytes) {
+Temporary write_temporary(const std::filesystem::path& real, const BytePieces& next_piece) {
     // Beside the target, so the rename or link stays within one file system.
     const std::string pattern = real.string() + ".tmp-XXXXXX";
     Temporary t{std::vector<char>(pattern.begin(), pattern.end())};
     t.name.push_back('\0');
     const int fd = ::mkstemp(t.name.data());
     if (fd < 0) return {{}, errno};
-    int error = write_all(fd, bytes);
+    int error = write_all(fd, next_piece);
     // mkstemp creates the file 0600; an image is an ordinary readable file.
     ::fchmod(fd, 0644);
     // EINVAL: the file system cannot sync (a pipe-like or special one); the bytes are written.
@@ -76,20 +90,25 @@ Temporary write_temporary(const std::filesystem::path& real, std::span<const std
 
 Expected<void> write_file_atomically(const std::filesystem::path& target,
                                      std::span<const std::uint8_t> bytes) {
+    return write_file_atomically(target, one_piece(bytes));
+}
+
+Expected<void> write_file_atomically(const std::filesystem::path& target,
+                                     const BytePieces& next_piece) {
     if (target.empty()) return Error{"cannot write an image to an empty file name"};
     std::error_code ec;
     const std::filesystem::file_status status = std::filesystem::status(target, ec);
     if (std::filesystem::is_directory(status))
         return Error{"cannot write " + file_message(target, "it is a directory")};
     if (std::filesystem::exists(status) && !std::filesystem::is_regular_file(status))
-        return write_in_place(target, bytes);
+        return write_in_place(target, next_piece);
     // A symbolic link stays a link: the file it names is the one replaced.
     std::filesystem::path real = target;
     if (std::filesystem::is_symlink(std::filesystem::symlink_status(target, ec))) {
         real = std::filesystem::weakly_canonical(target, ec);
         if (ec) return failure(target, ec.value());
     }
-    const Temporary temp = write_temporary(real, bytes);
+    const Temporary temp = write_temporary(real, next_piece);
     if (temp.error != 0) return failure(target, temp.error);
     if (std::rename(temp.name.data(), real.c_str()) != 0) {
         const int error = errno;
@@ -102,7 +121,7 @@ Expected<void> write_file_atomically(const std::filesystem::path& target,
 Expected<bool> write_new_file(const std::filesystem::path& target,
                               std::span<const std::uint8_t> bytes) {
     if (target.empty()) return Error{"cannot write an image to an empty file name"};
-    const Temporary temp = write_temporary(target, bytes);
+    const Temporary temp = write_temporary(target, one_piece(bytes));
     if (temp.error != 0) return failure(target, temp.error);
     // The whole file is there under its temporary name, then linked to its own:
     // readers never see it partial, and link fails if the name is taken.

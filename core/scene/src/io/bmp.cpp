@@ -6,6 +6,7 @@
 #include "jtracer/atomic_file.hpp"
 #include "jtracer/limits.hpp"
 
+#include <algorithm>
 #include <cstdlib>
 
 namespace jt {
@@ -38,16 +39,19 @@ std::uint32_t get32(const std::uint8_t* p) {
            (std::uint32_t{p[3]} << 24);
 }
 
-}  // namespace
+// A piece of a BMP written at a time, so that it stays in the cache between
+// being made and being written.
+constexpr std::size_t bmp_piece_bytes = std::size_t{256} << 10;
 
-std::vector<std::uint8_t> encode_bmp(const Image8& image) {
-    const std::size_t stride = row_stride(image.width);
-    const std::size_t pixel_bytes = stride * static_cast<std::size_t>(image.height);
-    std::vector<std::uint8_t> out = zeroed_records<std::uint8_t>(header_size + pixel_bytes);
-    std::uint8_t* h = out.data();
+std::size_t pixel_bytes(const Image8& image) {
+    return row_stride(image.width) * static_cast<std::size_t>(image.height);
+}
+
+void put_header(const Image8& image, std::uint8_t* h) {
+    const std::size_t pixels = pixel_bytes(image);
     h[0] = 'B';
     h[1] = 'M';
-    put32(h + 2, static_cast<std::uint32_t>(out.size()));
+    put32(h + 2, static_cast<std::uint32_t>(header_size + pixels));
     put32(h + 10, header_size);  // offset of the pixels
     put32(h + 14, info_header_size);
     put32(h + 18, static_cast<std::uint32_t>(image.width));
@@ -55,18 +59,33 @@ std::vector<std::uint8_t> encode_bmp(const Image8& image) {
     put16(h + 26, 1);                                         // planes
     put16(h + 28, 24);                                        // bits per pixel
     put32(h + 30, 0);                                         // BI_RGB
-    put32(h + 34, static_cast<std::uint32_t>(pixel_bytes));
+    put32(h + 34, static_cast<std::uint32_t>(pixels));
     put32(h + 38, 2835);  // 72 dpi, in pixels per metre
     put32(h + 42, 2835);
-    for (int y = 0; y < image.height; ++y) {
-        std::uint8_t* row = out.data() + header_size + stride * static_cast<std::size_t>(y);
+}
+
+// Rows [y0, y1) as the file stores them (BGR, each padded with zeros to 4
+// bytes), from `out` on.
+void put_rows(const Image8& image, int y0, int y1, std::uint8_t* out) {
+    const std::size_t stride = row_stride(image.width);
+    for (int y = y0; y < y1; ++y) {
+        std::uint8_t* row = out + stride * static_cast<std::size_t>(y - y0);
         const std::uint8_t* src = image.pixel(0, y);
         for (int x = 0; x < image.width; ++x) {
             row[3 * x + 0] = src[3 * x + 2];
             row[3 * x + 1] = src[3 * x + 1];
             row[3 * x + 2] = src[3 * x + 0];
         }
+        std::fill(row + 3 * static_cast<std::size_t>(image.width), row + stride, std::uint8_t{0});
     }
+}
+
+}  // namespace
+
+std::vector<std::uint8_t> encode_bmp(const Image8& image) {
+    std::vector<std::uint8_t> out = zeroed_records<std::uint8_t>(header_size + pixel_bytes(image));
+    put_header(image, out.data());
+    put_rows(image, 0, image.height, out.data() + header_size);
     return out;
 }
 
@@ -110,7 +129,26 @@ Expected<void> write_bmp(const std::filesystem::path& path, const Image8& image)
         0xFFFFFFFFu)
         return Error{"cannot write " +
                      file_message(path, "the image is too large for a BMP (4 GiB)")};
-    return write_file_atomically(path, encode_bmp(image));
+    // The header, then as many rows a piece as fit bmp_piece_bytes (one at least).
+    const std::size_t stride = row_stride(image.width);
+    const int rows_a_piece = static_cast<int>(std::max<std::size_t>(1, bmp_piece_bytes / stride));
+    std::vector<std::uint8_t> piece(std::max(
+        header_size, stride * static_cast<std::size_t>(std::min(rows_a_piece, image.height))));
+    bool header_written = false;
+    int next_row = 0;
+    return write_file_atomically(path, [&]() -> std::span<const std::uint8_t> {
+        if (!header_written) {
+            header_written = true;
+            put_header(image, piece.data());
+            return {piece.data(), header_size};
+        }
+        if (next_row >= image.height) return {};
+        const int end = std::min(image.height, next_row + rows_a_piece);
+        put_rows(image, next_row, end, piece.data());
+        const std::size_t bytes = stride * static_cast<std::size_t>(end - next_row);
+        next_row = end;
+        return {piece.data(), bytes};
+    });
 }
 
 Expected<Image8> read_bmp(const std::filesystem::path& path) {
