@@ -184,6 +184,75 @@ TEST(Intersect, AWideMissIsOnlyDecidedWhereTheExactTestMisses) {
     EXPECT_GT(grazing_hits, 100);
 }
 
+// intersect_sphere's answer without its early ones: the first root it
+// computes in (t_min, t_max).
+double exact_sphere_test(const Vec3& origin, const Vec3& direction, const Vec3& center,
+                         double radius, double t_min, double t_max) {
+    const Vec3 f = origin - center;
+    const double b = glm::dot(f, direction);
+    const double c = glm::dot(f, f) - radius * radius;
+    const double a = glm::dot(direction, direction);
+    const Vec3 perpendicular = f - (b / a) * direction;
+    double t0, t1;
+    if (!solve_ray_quadratic(a, b, c, glm::dot(perpendicular, perpendicular), radius * radius, t0,
+                             t1))
+        return no_hit;
+    return first_in_range(t0, t1, t_min, t_max);
+}
+
+// An entry beyond t_max may only be decided where the exact test finds no root
+// before t_max: rays from outside, grazing spheres within a relative 1e-17 to
+// 1e-3 of the radius or crossing them anywhere, at scales from 1e-6 to 1e7,
+// with t_max just before, at and just after the computed entry (or the
+// closest approach, for a miss), off it by a relative 1e-17 to 1e-3.
+TEST(Intersect, AnEntryBeyondTMaxIsOnlyDecidedWhereTheExactTestMisses) {
+    std::mt19937 rng(13);
+    std::uniform_real_distribution<double> unit(-1.0, 1.0);
+    std::uniform_real_distribution<double> exponent(-17.0, -3.0);
+    constexpr int rays = 400000;
+    int decided = 0, undecided_before_entry = 0;
+    for (int i = 0; i < rays; ++i) {
+        const double scale = std::pow(10.0, 13.0 * (unit(rng) + 1.0) / 2.0 - 6.0);
+        const double radius = scale * (0.01 + std::abs(unit(rng)));
+        const Vec3 center = scale * Vec3(unit(rng), unit(rng), unit(rng)) * 3.0;
+        const Vec3 axis = glm::normalize(Vec3(unit(rng), unit(rng), unit(rng)));
+        const Vec3 side = glm::normalize(glm::cross(axis, Vec3(unit(rng), unit(rng), unit(rng))));
+        // Where the ray passes the centre: off it by r (1 + e), grazing from
+        // outside or inside, or anywhere across the sphere.
+        const double e = std::pow(10.0, exponent(rng));
+        const double offset = i % 3 == 0 ? 1.0 + e : i % 3 == 1 ? 1.0 - e : std::abs(unit(rng));
+        const Vec3 passing = center + side * (radius * offset);
+        // From outside: at least a thousandth of the radius before the sphere.
+        const double distance =
+            radius * (1.0 + std::pow(10.0, 7.0 * (unit(rng) + 1.0) / 2.0 - 3.0));
+        const Vec3 origin = passing - axis * distance;
+        const Vec3 direction = axis * std::pow(10.0, 2.0 * unit(rng));  // need not be unit
+        const Vec3 f = origin - center;
+        const double a = glm::dot(direction, direction);
+        const double b = glm::dot(f, direction);
+        const double ff = glm::dot(f, f);
+        const double c = ff - radius * radius;
+        const double entry = exact_sphere_test(origin, direction, center, radius, 0.0, no_hit);
+        const double near = entry != no_hit ? entry : -b / a;
+        const double off = std::pow(10.0, exponent(rng));
+        for (const double t_max : {near * (1.0 - off), std::nextafter(near, 0.0), near,
+                                   std::nextafter(near, no_hit), near * (1.0 + off)}) {
+            const double exact = exact_sphere_test(origin, direction, center, radius, 0.0, t_max);
+            if (enters_beyond(a, b, c, ff, t_max)) {
+                ++decided;
+                ASSERT_EQ(exact, no_hit) << "case " << i << ": offset " << offset << ", t_max "
+                                         << t_max << ", entry " << entry << ", scale " << scale;
+            } else if (entry != no_hit && t_max < entry) {
+                ++undecided_before_entry;
+            }
+        }
+    }
+    // Most t_max well before an entry are decided; those within the margin of
+    // it (one ulp before, or a grazing ray's) are not.
+    EXPECT_GT(decided, rays / 2);
+    EXPECT_GT(undecided_before_entry, rays / 20);
+}
+
 TEST(Intersect, CylinderPartsAndRims) {
     CylinderPart part = CylinderPart::side;
     EXPECT_EQ(intersect_cylinder({0, 5, 0}, {0, -1, 0}, 1.0, 2.0, 0.0, no_hit, part), 3.0);

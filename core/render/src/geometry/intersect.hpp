@@ -65,12 +65,63 @@ inline bool passes_wide_of_sphere(double a, double b, double c, double ff) {
     return scale > wide_miss_smallest_scale && a * c - b * b > margin;
 }
 
+// The margin of `enters_beyond`, as a multiple of the unit roundoff times
+// |f|^2: its bound needs 78 (see there); 128 leaves room.
+inline constexpr double entry_beyond_margin_ulps = 128.0;
+// Below this |d|^2 or |f|^2 the products may be subnormal, where relative
+// error bounds do not hold: such rays take the exact test.
+inline constexpr double entry_beyond_smallest = 1e-150;
+
+// True only when every root the exact test of intersect_sphere computes is at
+// or beyond t_max (given 0 <= t_max), so that it would answer no_hit. With a,
+// b, c and ff as in `passes_wide_of_sphere` and g(t) = a t^2 + 2 b t + c =
+// |f + t d|^2 - r^2: a ray starting outside (c > 0) whose t_max comes before
+// its closest approach (a t_max + b < 0) and is still outside the sphere there
+// (g(t_max) > 0) enters, if at all, after t_max. Two multiplications and two
+// additions, where the exact test needs a square root and two divisions: most
+// of the overlapping shells a primary ray is offered lie behind its nearest
+// hit.
+//
+// Why the margin suffices (u = 2^-53; a, b, c the computed values, B = -b/a,
+// D = (b^2 - a c) / a^2, the real roots B -+ sqrt(D), T = t_max):
+// - The exact test's discriminant a (r^2 - perpendicular^2) is at most
+//   b^2 - a c + 58 u a |f|^2: its perpendicular is within 38 u |f|^2 of the
+//   true one (see passes_wide_of_sphere), a is within 3 u a, b within
+//   3 u |f| |d| and c within 4 u |f|^2 of their true values, and the last
+//   subtraction and multiplication add 2 u. So with E = 58 u |f|^2 / a, its
+//   near root c / q is at least (c / a) / (B + sqrt(D + E)) (1 - 3 u), which
+//   is at least (B - sqrt(D + E)) (1 - 3 u) because c / a = B^2 - D; its far
+//   root q / a is at least B (1 - u).
+// - Both are at least T when T' = T (1 + 4 u) <= B and g(T') >= a E, that is
+//   when T' is before the smaller root of a t^2 + 2 b t + c = a E.
+// - g(T') >= g(T) - 8 u T |b| >= g(T) - 8 u |f|^2, since g's slope between T
+//   and B is at most 2 |b| in size and T |b| <= b^2 / a <= |f|^2; the
+//   computed g(T) is within 12 u |f|^2 of the real one. A computed g(T) above
+//   (58 + 8 + 12) u |f|^2 thus makes g(T') >= a E.
+// - If T' > B, the computed a t_max + b < 0 puts T within 5 u B of B, so
+//   g(B) >= g(T) - 25 u^2 |f|^2 > a E and the exact discriminant is
+//   negative: no root at all.
+// A NaN or an infinite t_max compares false and leaves the ray to the exact
+// test.
+inline bool enters_beyond(double a, double b, double c, double ff, double t_max) {
+    const double approach = a * t_max + b;
+    const double outside = (approach + b) * t_max + c;
+    return c > 0.0 && approach < 0.0 && a > entry_beyond_smallest && ff > entry_beyond_smallest &&
+           outside > entry_beyond_margin_ulps * 0x1p-53 * ff;
+}
+
 inline double first_in_range(double t0, double t1, double t_min, double t_max) {
     if (t0 > t_min && t0 < t_max) return t0;
     if (t1 > t_min && t1 < t_max) return t1;
     return no_hit;
 }
 
+// DecideEntryBeyond: whether to try `enters_beyond` before the exact roots.
+// It pays where a ray is offered spheres behind its nearest hit so far. The
+// spheres a shadow ray tests seldom lie beyond its light: there it would only
+// add work (more instructions on every benchmark scene), so shadow rays leave
+// it out.
+template <bool DecideEntryBeyond = true>
 inline double intersect_sphere(const Vec3& origin, const Vec3& direction, const Vec3& center,
                                double radius, double t_min, double t_max) {
     Vec3 f = origin - center;
@@ -85,6 +136,9 @@ inline double intersect_sphere(const Vec3& origin, const Vec3& direction, const 
     if (c > 0.0 && b >= 0.0 && t_min >= 0.0) return no_hit;
     double a = glm::dot(direction, direction);
     if (passes_wide_of_sphere(a, b, c, ff)) return no_hit;
+    // A t_max below t_min >= 0 leaves no range: enters_beyond's premise
+    // 0 <= t_max need not be tested.
+    if (DecideEntryBeyond && t_min >= 0.0 && enters_beyond(a, b, c, ff, t_max)) return no_hit;
     Vec3 perpendicular = f - (b / a) * direction;
     double t0, t1;
     if (!solve_ray_quadratic(a, b, c, glm::dot(perpendicular, perpendicular), radius * radius, t0,

@@ -187,7 +187,8 @@ void closest_by_testing_all(ClosestQuery& q) {
     const std::uint32_t i = listed & ~shape_flag;
     if (!(listed & shape_flag)) {
         const WorldSphere& s = g.spheres[i];
-        return intersect_sphere(origin, direction, s.center, s.radius, t_min, t_max) != no_hit;
+        return intersect_sphere<false>(origin, direction, s.center, s.radius, t_min, t_max) !=
+               no_hit;
     }
     const TransformedShape& s = g.shapes[i];
     CylinderPart part;
@@ -352,12 +353,12 @@ void sphere_intersect(const RTCIntersectFunctionNArguments* args) {
 
 void sphere_occluded(const RTCOccludedFunctionNArguments* args) {
     const unsigned index = args->primID;
-    occlude_lanes(
-        args, {OccluderHint::Set::sphere, index}, [index](const Geometry* g, const ShadowRay& r) {
-            const WorldSphere& s = g->spheres[index];
-            return intersect_sphere(r.origin, r.direction, s.center, s.radius, r.t_min, r.t_max) !=
-                   no_hit;
-        });
+    occlude_lanes(args, {OccluderHint::Set::sphere, index},
+                  [index](const Geometry* g, const ShadowRay& r) {
+                      const WorldSphere& s = g->spheres[index];
+                      return intersect_sphere<false>(r.origin, r.direction, s.center, s.radius,
+                                                     r.t_min, r.t_max) != no_hit;
+                  });
 }
 
 void sphere_occluded_filter(const RTCFilterFunctionNArguments* args) {
@@ -367,7 +368,8 @@ void sphere_occluded_filter(const RTCFilterFunctionNArguments* args) {
         const std::uint32_t index = RTCHitN_primID(args->hit, args->N, lane);
         const ShadowRay& r = q.rays[RTCRayN_id(args->ray, args->N, lane)];
         const WorldSphere& s = q.geometry->spheres[index];
-        if (intersect_sphere(r.origin, r.direction, s.center, s.radius, r.t_min, r.t_max) != no_hit)
+        if (intersect_sphere<false>(r.origin, r.direction, s.center, s.radius, r.t_min, r.t_max) !=
+            no_hit)
             q.blocker = {OccluderHint::Set::sphere, index};
         else
             args->valid[lane] = 0;
