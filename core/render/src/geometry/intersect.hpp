@@ -40,9 +40,10 @@ inline bool solve_ray_quadratic(double a, double b, double c, double perpendicul
 // The margin of `passes_wide_of_sphere`, as a multiple of the unit roundoff
 // times |f|^2 |d|^2: its bound needs 54 (see there); 128 leaves room.
 inline constexpr double wide_miss_margin_ulps = 128.0;
-// Below this |f|^2 |d|^2 the products may be subnormal, where relative error
-// bounds do not hold: such rays take the exact test.
-inline constexpr double wide_miss_smallest_scale = 1e-250;
+// Below this |d|^2 or |f|^2 the products of the early answers below may be
+// subnormal, where relative error bounds do not hold: such rays take the
+// exact test.
+inline constexpr double smallest_early_answer_scale = 1e-150;
 
 // True only when the exact test of intersect_sphere would find no root. With
 // f = origin - center, a = |d|^2, b = f.d and c = |f|^2 - r^2, a c - b^2 is
@@ -56,21 +57,18 @@ inline constexpr double wide_miss_smallest_scale = 1e-250;
 // centre, p <= |f|^2), and the exact test's squared perpendicular is at least
 // p - 38 u |f|^2. So a result above 128 u |f|^2 a means
 // p > r^2 + 112 u |f|^2, and the exact test's perpendicular then exceeds r^2:
-// no root. A NaN or an overflow compares
-// false and leaves the ray to the exact test; so does c <= 0 (the origin in
-// the sphere), where a c - b^2 is not positive.
+// no root. A NaN or an overflow compares false and leaves the ray to the
+// exact test; so does c <= 0 (the origin in the sphere), where a c - b^2 is
+// not positive.
 inline bool passes_wide_of_sphere(double a, double b, double c, double ff) {
-    const double scale = ff * a;
-    const double margin = wide_miss_margin_ulps * 0x1p-53 * scale;
-    return scale > wide_miss_smallest_scale && a * c - b * b > margin;
+    const double margin = wide_miss_margin_ulps * 0x1p-53 * (ff * a);
+    return a > smallest_early_answer_scale && ff > smallest_early_answer_scale &&
+           a * c - b * b > margin;
 }
 
 // The margin of `enters_beyond`, as a multiple of the unit roundoff times
 // |f|^2: its bound needs 78 (see there); 128 leaves room.
 inline constexpr double entry_beyond_margin_ulps = 128.0;
-// Below this |d|^2 or |f|^2 the products may be subnormal, where relative
-// error bounds do not hold: such rays take the exact test.
-inline constexpr double entry_beyond_smallest = 1e-150;
 
 // True only when every root the exact test of intersect_sphere computes is at
 // or beyond t_max (given 0 <= t_max), so that it would answer no_hit. With a,
@@ -106,8 +104,8 @@ inline constexpr double entry_beyond_smallest = 1e-150;
 inline bool enters_beyond(double a, double b, double c, double ff, double t_max) {
     const double approach = a * t_max + b;
     const double outside = (approach + b) * t_max + c;
-    return c > 0.0 && approach < 0.0 && a > entry_beyond_smallest && ff > entry_beyond_smallest &&
-           outside > entry_beyond_margin_ulps * 0x1p-53 * ff;
+    return c > 0.0 && approach < 0.0 && a > smallest_early_answer_scale &&
+           ff > smallest_early_answer_scale && outside > entry_beyond_margin_ulps * 0x1p-53 * ff;
 }
 
 inline double first_in_range(double t0, double t1, double t_min, double t_max) {
