@@ -177,6 +177,14 @@ void closest_by_testing_all(ClosestQuery& q) {
         if (!misses_bounds(g.shapes[i], q.origin, q.direction)) offer_shape(q, i);
 }
 
+// Whether world sphere `s` blocks a shadow ray: the one sphere test of every
+// shadow query, without the entry-beyond answer (intersect_sphere says why).
+[[gnu::always_inline]] inline bool sphere_blocks(const WorldSphere& s, const Vec3& origin,
+                                                 const Vec3& direction, double t_min,
+                                                 double t_max) {
+    return intersect_sphere<false>(origin, direction, s.center, s.radius, t_min, t_max) != no_hit;
+}
+
 // Whether `listed` (a sphere index, or a shape index with shape_flag, as in
 // the direction tables) blocks the ray; a shape's bounding sphere is tried
 // before its exact test. Forced inline: the list walks call it for every
@@ -185,11 +193,7 @@ void closest_by_testing_all(ClosestQuery& q) {
                                                  const Vec3& origin, const Vec3& direction,
                                                  double t_min, double t_max) {
     const std::uint32_t i = listed & ~shape_flag;
-    if (!(listed & shape_flag)) {
-        const WorldSphere& s = g.spheres[i];
-        return intersect_sphere<false>(origin, direction, s.center, s.radius, t_min, t_max) !=
-               no_hit;
-    }
+    if (!(listed & shape_flag)) return sphere_blocks(g.spheres[i], origin, direction, t_min, t_max);
     const TransformedShape& s = g.shapes[i];
     CylinderPart part;
     return !misses_bounds(s, origin, direction) &&
@@ -353,12 +357,10 @@ void sphere_intersect(const RTCIntersectFunctionNArguments* args) {
 
 void sphere_occluded(const RTCOccludedFunctionNArguments* args) {
     const unsigned index = args->primID;
-    occlude_lanes(args, {OccluderHint::Set::sphere, index},
-                  [index](const Geometry* g, const ShadowRay& r) {
-                      const WorldSphere& s = g->spheres[index];
-                      return intersect_sphere<false>(r.origin, r.direction, s.center, s.radius,
-                                                     r.t_min, r.t_max) != no_hit;
-                  });
+    occlude_lanes(
+        args, {OccluderHint::Set::sphere, index}, [index](const Geometry* g, const ShadowRay& r) {
+            return sphere_blocks(g->spheres[index], r.origin, r.direction, r.t_min, r.t_max);
+        });
 }
 
 void sphere_occluded_filter(const RTCFilterFunctionNArguments* args) {
@@ -367,9 +369,7 @@ void sphere_occluded_filter(const RTCFilterFunctionNArguments* args) {
         if (!args->valid[lane]) continue;
         const std::uint32_t index = RTCHitN_primID(args->hit, args->N, lane);
         const ShadowRay& r = q.rays[RTCRayN_id(args->ray, args->N, lane)];
-        const WorldSphere& s = q.geometry->spheres[index];
-        if (intersect_sphere<false>(r.origin, r.direction, s.center, s.radius, r.t_min, r.t_max) !=
-            no_hit)
+        if (sphere_blocks(q.geometry->spheres[index], r.origin, r.direction, r.t_min, r.t_max))
             q.blocker = {OccluderHint::Set::sphere, index};
         else
             args->valid[lane] = 0;
