@@ -131,17 +131,20 @@ TEST(Intersect, SphereStaysPreciseFromFarAway) {
     EXPECT_EQ(intersect_sphere({0, 3, 5}, {0, 0, -1}, {0, 0, 0}, 2.0, 0.0, no_hit), no_hit);
 }
 
-// The exact sphere test without passes_wide_of_sphere's early answer.
-bool exact_sphere_test_has_root(const Vec3& origin, const Vec3& direction, const Vec3& center,
-                                double radius) {
+// intersect_sphere's answer without its early ones: the first root it
+// computes in (t_min, t_max).
+double exact_sphere_test(const Vec3& origin, const Vec3& direction, const Vec3& center,
+                         double radius, double t_min, double t_max) {
     const Vec3 f = origin - center;
     const double b = glm::dot(f, direction);
     const double c = glm::dot(f, f) - radius * radius;
     const double a = glm::dot(direction, direction);
     const Vec3 perpendicular = f - (b / a) * direction;
     double t0, t1;
-    return solve_ray_quadratic(a, b, c, glm::dot(perpendicular, perpendicular), radius * radius, t0,
-                               t1);
+    if (!solve_ray_quadratic(a, b, c, glm::dot(perpendicular, perpendicular), radius * radius, t0,
+                             t1))
+        return no_hit;
+    return first_in_range(t0, t1, t_min, t_max);
 }
 
 // The early miss may only answer where the exact test finds no root: rays
@@ -171,7 +174,8 @@ TEST(Intersect, AWideMissIsOnlyDecidedWhereTheExactTestMisses) {
         const double b = glm::dot(f, direction);
         const double ff = glm::dot(f, f);
         const double c = ff - radius * radius;
-        const bool root = exact_sphere_test_has_root(origin, direction, center, radius);
+        const bool root =
+            exact_sphere_test(origin, direction, center, radius, -no_hit, no_hit) != no_hit;
         if (passes_wide_of_sphere(a, b, c, ff)) {
             ++decided;
             ASSERT_FALSE(root) << "case " << i << ": e = " << e << ", scale " << scale;
@@ -182,22 +186,6 @@ TEST(Intersect, AWideMissIsOnlyDecidedWhereTheExactTestMisses) {
     // grazing rays reach the exact test's rounding, where it still finds roots.
     EXPECT_GT(decided, 400000 / 2 / 10);
     EXPECT_GT(grazing_hits, 100);
-}
-
-// intersect_sphere's answer without its early ones: the first root it
-// computes in (t_min, t_max).
-double exact_sphere_test(const Vec3& origin, const Vec3& direction, const Vec3& center,
-                         double radius, double t_min, double t_max) {
-    const Vec3 f = origin - center;
-    const double b = glm::dot(f, direction);
-    const double c = glm::dot(f, f) - radius * radius;
-    const double a = glm::dot(direction, direction);
-    const Vec3 perpendicular = f - (b / a) * direction;
-    double t0, t1;
-    if (!solve_ray_quadratic(a, b, c, glm::dot(perpendicular, perpendicular), radius * radius, t0,
-                             t1))
-        return no_hit;
-    return first_in_range(t0, t1, t_min, t_max);
 }
 
 // An entry beyond t_max may only be decided where the exact test finds no root
