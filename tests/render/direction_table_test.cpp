@@ -9,6 +9,7 @@
 #include "scene_builder.hpp"
 
 #include <gtest/gtest.h>
+#include <tbb/task_arena.h>
 #include <glm/geometric.hpp>
 
 #include <algorithm>
@@ -203,6 +204,41 @@ TEST(DirectionTable, CellsSpanOnlyTheDirectionsOfShapes) {
     }
     EXPECT_GT(blocked, 500);
     EXPECT_LT(blocked, 3500);
+}
+
+bool same_table(const DirectionTable& a, const DirectionTable& b) {
+    for (std::size_t face = 0; face < 6; ++face) {
+        const FaceWindow &x = a.windows[face], &y = b.windows[face];
+        if (x.u0 != y.u0 || x.u1 != y.u1 || x.v0 != y.v0 || x.v1 != y.v1 ||
+            x.u_scale != y.u_scale || x.v_scale != y.v_scale)
+            return false;
+    }
+    return a.resolution == b.resolution && a.cell_start == b.cell_start && a.shapes == b.shapes &&
+           a.nearest == b.nearest;
+}
+
+TEST(DirectionTable, TheSameWhateverTheThreads) {
+    // Cones, windows and cells are worked out in parallel, and the tables
+    // beside the BVH: each list must still come out as on one thread, nearest
+    // first with ties in index order, for the light outside the crowd, inside
+    // it (every face whole) and seen across a cube corner.
+    Scene scene = crowd(3000, 21);
+    for (const Vec3& light : {Vec3{0, 20, 0}, Vec3{0.3, 0.2, -0.1}, Vec3{-45, 45.3, -44.8}})
+        scene.lights.push_back(PointLight{light, Colour(1.0)});
+    auto prepared = prepare_scene(scene).value();
+    const Geometry& g = *prepared->geometry;
+    ASSERT_EQ(prepared->light_tables->size(), scene.lights.size());
+    tbb::task_arena one_thread(1);
+    for (std::size_t k = 0; k < scene.lights.size(); ++k) {
+        const Vec3 light = scene.lights[k].position;
+        DirectionTable alone;
+        one_thread.execute(
+            [&] { alone = build_direction_table(g, light, table_resolution(3000)); });
+        ASSERT_GT(alone.resolution, 0);
+        EXPECT_TRUE(same_table(alone, build_direction_table(g, light, table_resolution(3000))))
+            << "light " << k;
+        EXPECT_TRUE(same_table(alone, (*prepared->light_tables)[k])) << "light " << k;
+    }
 }
 
 TEST(DirectionTable, NoneWhenShapesSurroundThePoint) {
