@@ -13,7 +13,9 @@
 #include <tbb/task_arena.h>
 
 #include <algorithm>
+#include <array>
 #include <optional>
+#include <type_traits>
 
 namespace jt {
 
@@ -90,18 +92,49 @@ bool trace_samples(const PreparedFrame& f, const RenderPass& pass, TileBuffer& o
         return trace_ray(*f.scene, camera.position, direction, 0.0, sample, rays, &seen);
     };
     if (f.options.samples == 1) {
+        // Without a sky map, the pixels of a block whose rays meet nothing
+        // are all the background colour: no ray to aim or trace.
+        const bool plain_sky = open_sky && !f.scene->background_map;
+        std::array<std::uint8_t, 3> sky{};
+        if (plain_sky) {
+            const Colour& b = f.scene->settings.background;
+            sky = {quantize_channel(b.x), quantize_channel(b.y), quantize_channel(b.z)};
+        }
         // A row's directions first, in a loop of their own: their divisions
         // and square roots then overlap instead of each waiting its ray.
         std::vector<Vec3> directions(static_cast<std::size_t>(tile.width()));
+        std::vector<std::uint8_t> sky_only(static_cast<std::size_t>(tile.width()));
+        // Compiled twice, so that scenes where no block can be plain sky
+        // keep the loop without its tests.
+        auto trace_row = [&](int y, auto plain_sky_here) {
+            for (int x = tile.x0; x < tile.x1; ++x) {
+                const auto i = static_cast<std::size_t>(x - tile.x0);
+                if constexpr (plain_sky_here) {
+                    sky_only[i] = shapes_seen(table, x + 0.5, y + 0.5).size() == 0;
+                    if (sky_only[i]) continue;
+                }
+                directions[i] = camera_direction(camera, x + 0.5, y + 0.5);
+            }
+            for (int x = tile.x0; x < tile.x1; ++x) {
+                const auto i = static_cast<std::size_t>(x - tile.x0);
+                if constexpr (plain_sky_here) {
+                    if (sky_only[i]) {
+                        ++rays;
+                        std::copy(sky.begin(), sky.end(), &out.rgb[out.index(x, y) * 3]);
+                        continue;
+                    }
+                }
+                put(out, x, y,
+                    trace(x + 0.5, y + 0.5, directions[i],
+                          {static_cast<std::uint32_t>(x), static_cast<std::uint32_t>(y), 0}));
+            }
+        };
         for (int y = tile.y0; y < tile.y1; ++y) {
             if (cancel.load(std::memory_order_relaxed)) return false;
-            for (int x = tile.x0; x < tile.x1; ++x)
-                directions[static_cast<std::size_t>(x - tile.x0)] =
-                    camera_direction(camera, x + 0.5, y + 0.5);
-            for (int x = tile.x0; x < tile.x1; ++x)
-                put(out, x, y,
-                    trace(x + 0.5, y + 0.5, directions[static_cast<std::size_t>(x - tile.x0)],
-                          {static_cast<std::uint32_t>(x), static_cast<std::uint32_t>(y), 0}));
+            if (plain_sky)
+                trace_row(y, std::true_type{});
+            else
+                trace_row(y, std::false_type{});
         }
         return true;
     }
