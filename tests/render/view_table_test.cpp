@@ -392,6 +392,9 @@ TEST(ViewTable, ListsAreNearestFirstWithTrueLowerBounds) {
             if (table.shapes[k] & shape_flag) continue;
             const WorldSphere& s = g.spheres[table.shapes[k]];
             EXPECT_LT(table.nearest[k], glm::length(s.center - camera.position) - s.radius);
+            // Never above the padded bound it stores (a float rounded to
+            // nearest would be, for about half the shapes).
+            EXPECT_LE(table.nearest[k], padded_bound(s.center, s.radius, camera.position).nearest);
         }
     // Blocks of 4x4 pixels list a few shapes each, not the crowd.
     EXPECT_LT(listed, 16u * (table.block_start.size() - 1));

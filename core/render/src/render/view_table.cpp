@@ -274,7 +274,7 @@ ViewTable build_view_table(const Geometry& geometry, const CameraFrame& camera) 
         for (const Listing& l : band_listings[static_cast<std::size_t>(band)]) {
             const std::uint32_t at = fill[l.block - first]++;
             table.shapes[at] = candidates[l.candidate].listed;
-            table.nearest[at] = candidates[l.candidate].nearest;
+            table.nearest[at] = listed_distance(candidates[l.candidate].nearest);
         }
     });
     return table;

@@ -36,7 +36,7 @@ struct ViewTable {
     int columns = 0, rows = 0;               // blocks across and down the image
     std::vector<std::uint32_t> block_start;  // columns * rows + 1 offsets into `shapes`
     std::vector<std::uint32_t> shapes;       // each block's nearest first
-    std::vector<double> nearest;             // parallel to `shapes`: see ListedShapes
+    std::vector<ListedDistance> nearest;     // parallel to `shapes`: see ListedShapes
     // Per block: a sphere that every ray of the block meets is listed.
     std::vector<std::uint8_t> covered;
 };
