@@ -128,6 +128,7 @@ TEST(DirectionTable, CellsAreFewAndSmallForSparseShapes) {
             const WorldSphere& s = g.spheres[table.shapes[k]];
             EXPECT_LT(table.nearest[k], glm::length(s.center - Vec3{0, 10, 4}) - s.radius);
             EXPECT_GT(table.nearest[k], glm::length(s.center - Vec3{0, 10, 4}) - s.radius - 1e-3);
+            EXPECT_LE(table.nearest[k], padded_bound(s.center, s.radius, Vec3{0, 10, 4}).nearest);
         }
     EXPECT_GT(at_most_one, cells * 3 / 4);
     // Up, away from the floor: nothing to test.

@@ -71,10 +71,10 @@ TEST(RenderTile, TheViewTableIsBuiltOncePerFrame) {
     static_cast<void>(render_tile(*frame, {0, 0, 32, 32}));
     const ViewTable& table = frame->view_table();
     ASSERT_TRUE(table.built) << "the tiles traced through a view table";
-    const std::uint32_t* lists = table.shapes.data();
+    const ViewBand* lists = table.bands.data();
     static_cast<void>(render_tile(*frame, {32, 0, 64, 32}));
     EXPECT_EQ(&frame->view_table(), &table);
-    EXPECT_EQ(frame->view_table().shapes.data(), lists) << "later tiles reuse the same table";
+    EXPECT_EQ(frame->view_table().bands.data(), lists) << "later tiles reuse the same table";
 }
 
 TEST(RenderTile, BlocksThatMeetNothingAreTheBackgroundAsARayWouldFindIt) {

@@ -335,9 +335,9 @@ DirectionTable build_direction_table(const Geometry& geometry, const Vec3& posit
         for (const Listing& p : pairs) {
             const std::uint32_t at = fill[p.cell]++;
             table.shapes[at] = p.candidate;
-            table.nearest[at] =
+            table.nearest[at] = listed_distance(
                 nearest_of[p.candidate & shape_flag ? spheres + (p.candidate & ~shape_flag)
-                                                    : p.candidate];
+                                                    : p.candidate]);
         }
     return table;
 }

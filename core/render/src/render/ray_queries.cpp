@@ -500,6 +500,9 @@ bool shapes_toward_disk(const Geometry& geometry, const Vec3& point, double lift
     // origins, directions and disk points.
     const double spread =
         radius * (1.0 + 1e-6) + 2.0 * lift + 1e-7 * (max_abs(point) + max_abs(centre) + radius);
+    // Sorted by the doubles: shapes whose bounds round to one float keep the
+    // order of their bounds.
+    std::array<double, max_disk_candidates> exact;
     auto offer = [&](std::uint32_t listed, const Vec3& c, double r) {
         const PaddedBound b = padded_bound(c, r, point);
         const Vec3 f = c - point;
@@ -510,11 +513,11 @@ bool shapes_toward_disk(const Geometry& geometry, const Vec3& point, double lift
         // Kept nearest first (insertion: a handful of shapes).
         std::size_t k = out.count++;
         const double nearest = std::max(0.0, b.nearest - 2.0 * lift);
-        for (; k > 0 && out.nearest[k - 1] > nearest; --k) {
-            out.nearest[k] = out.nearest[k - 1];
+        for (; k > 0 && exact[k - 1] > nearest; --k) {
+            exact[k] = exact[k - 1];
             out.shapes[k] = out.shapes[k - 1];
         }
-        out.nearest[k] = nearest;
+        exact[k] = nearest;
         out.shapes[k] = listed;
     };
     for (std::uint32_t i = 0; i < geometry.spheres.size(); ++i)
@@ -522,6 +525,7 @@ bool shapes_toward_disk(const Geometry& geometry, const Vec3& point, double lift
     for (std::uint32_t i = 0; i < geometry.shapes.size(); ++i)
         offer(i | shape_flag, geometry.shapes[i].bounding_center,
               std::sqrt(geometry.shapes[i].bounding_radius_sq));
+    for (std::size_t k = 0; k < out.count; ++k) out.nearest[k] = listed_distance(exact[k]);
     return true;
 }
 

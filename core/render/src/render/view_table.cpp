@@ -2,11 +2,13 @@
 
 #include "render/prepared_scene.hpp"
 
+#include <tbb/enumerable_thread_specific.h>
 #include <tbb/parallel_for.h>
 
 #include <glm/geometric.hpp>
 
 #include <algorithm>
+#include <atomic>
 #include <cmath>
 #include <limits>
 #include <numbers>
@@ -20,11 +22,6 @@ namespace {
 // slower); past this many listings it would take hundreds of MB.
 constexpr std::size_t max_view_shapes = std::size_t{1} << 18;
 constexpr std::size_t max_view_listed = std::size_t{1} << 22;
-
-// The table is built a band of block rows at a time, the bands in parallel:
-// each band's lists depend only on the shapes, so the table is the same
-// whatever the threads do.
-constexpr int band_rows = 8;
 
 // Slack far beyond the rounding of the double computations that aim a ray and
 // decide its hits, so that a ray on a block's edge still finds every shape it
@@ -159,7 +156,8 @@ Extent extent(const Candidate& c, const CameraFrame& camera, int columns, int ro
 }
 
 struct Listing {
-    std::uint32_t block, candidate;  // an index into the sorted candidates
+    std::uint32_t block;      // in its band, row by row
+    std::uint32_t candidate;  // an index into the sorted candidates
 };
 
 }  // namespace
@@ -218,17 +216,25 @@ ViewTable build_view_table(const Geometry& geometry, const CameraFrame& camera) 
 
     // Each band lists its blocks' shapes in candidate order; a shape nearer
     // than a block's cap is listed, and a sphere holding the whole block caps
-    // it at its far side.
-    const int bands = (table.rows + band_rows - 1) / band_rows;
-    std::vector<std::vector<Listing>> band_listings(static_cast<std::size_t>(bands));
+    // it at its far side. Each band's lists depend only on the shapes, so the
+    // table is the same whatever the threads do.
+    const int bands = (table.rows + view_band_rows - 1) / view_band_rows;
     table.covered.assign(blocks, 0);
+    table.list_start.resize(blocks + static_cast<std::size_t>(bands));
+    table.bands.resize(static_cast<std::size_t>(bands));
+    // A thread's listings of one band at a time: their pages are touched once
+    // a thread rather than once a band.
+    tbb::enumerable_thread_specific<std::vector<Listing>> scratch;
+    std::atomic<std::size_t> listed{0};
     tbb::parallel_for(0, bands, [&](int band) {
-        const int first_row = band * band_rows;
-        const int last_row = std::min(first_row + band_rows, table.rows) - 1;
+        const int first_row = band * view_band_rows;
+        const int last_row = std::min(first_row + view_band_rows, table.rows) - 1;
         const std::size_t base = static_cast<std::size_t>(first_row) * table.columns;
-        std::vector<double> cap(
-            (last_row - first_row + 1) * static_cast<std::size_t>(table.columns), unbounded);
-        std::vector<Listing>& listings = band_listings[static_cast<std::size_t>(band)];
+        const std::size_t band_blocks =
+            (last_row - first_row + 1) * static_cast<std::size_t>(table.columns);
+        std::vector<double> cap(band_blocks, unbounded);
+        std::vector<Listing>& listings = scratch.local();
+        listings.clear();
         for (std::size_t i = 0; i < candidates.size(); ++i) {
             const Extent& e = extents[i];
             const int row0 = std::max(e.row0, first_row), row1 = std::min(e.row1, last_row);
@@ -242,7 +248,7 @@ ViewTable build_view_table(const Geometry& geometry, const CameraFrame& camera) 
                     const std::size_t b = static_cast<std::size_t>(row) * table.columns + column;
                     if (c.nearest > cap[b - base]) continue;
                     listings.push_back(
-                        {static_cast<std::uint32_t>(b), static_cast<std::uint32_t>(i)});
+                        {static_cast<std::uint32_t>(b - base), static_cast<std::uint32_t>(i)});
                     if (e.cos_cover <= 1.0 && inside(corner(column, row)) &&
                         inside(corner(column + 1, row)) && inside(corner(column, row + 1)) &&
                         inside(corner(column + 1, row + 1))) {
@@ -250,33 +256,27 @@ ViewTable build_view_table(const Geometry& geometry, const CameraFrame& camera) 
                         cap[b - base] = std::min(cap[b - base], c.reach);
                     }
                 }
-            if (listings.size() > max_view_listed) return;
+            if (listings.size() > max_view_listed) break;
         }
-    });
-    std::size_t listed = 0;
-    for (const std::vector<Listing>& l : band_listings) listed += l.size();
-    if (listed > max_view_listed) return {};
+        if (listed.fetch_add(listings.size()) + listings.size() > max_view_listed) return;
 
-    // A stable counting sort by block keeps each block's list nearest first;
-    // a band's blocks are contiguous, so each band fills its own part.
-    table.block_start.assign(blocks + 1, 0);
-    for (const std::vector<Listing>& l : band_listings)
-        for (const Listing& listing : l) ++table.block_start[listing.block + 1];
-    for (std::size_t b = 0; b < blocks; ++b) table.block_start[b + 1] += table.block_start[b];
-    table.shapes.resize(listed);
-    table.nearest.resize(listed);
-    tbb::parallel_for(0, bands, [&](int band) {
-        const std::size_t first = static_cast<std::size_t>(band) * band_rows * table.columns;
-        const std::size_t last = std::min<std::size_t>(
-            first + static_cast<std::size_t>(band_rows) * table.columns, blocks);
-        std::vector<std::uint32_t> fill(table.block_start.begin() + first,
-                                        table.block_start.begin() + last);
-        for (const Listing& l : band_listings[static_cast<std::size_t>(band)]) {
-            const std::uint32_t at = fill[l.block - first]++;
-            table.shapes[at] = candidates[l.candidate].listed;
-            table.nearest[at] = candidates[l.candidate].nearest;
+        // A stable counting sort by block keeps each block's list nearest
+        // first.
+        std::uint32_t* start = table.list_start.data() + base + band;
+        std::fill(start, start + band_blocks + 1, 0u);
+        for (const Listing& l : listings) ++start[l.block + 1];
+        for (std::size_t b = 0; b < band_blocks; ++b) start[b + 1] += start[b];
+        std::vector<std::uint32_t> fill(start, start + band_blocks);
+        ViewBand& lists = table.bands[static_cast<std::size_t>(band)];
+        lists.shapes.resize(listings.size());
+        lists.nearest.resize(listings.size());
+        for (const Listing& l : listings) {
+            const std::uint32_t at = fill[l.block]++;
+            lists.shapes[at] = candidates[l.candidate].listed;
+            lists.nearest[at] = listed_distance(candidates[l.candidate].nearest);
         }
     });
+    if (listed.load() > max_view_listed) return {};
     return table;
 }
 
