@@ -107,20 +107,33 @@ bool trace_samples(const PreparedFrame& f, const RenderPass& pass, TileBuffer& o
         // Compiled twice, so that scenes where no block can be plain sky
         // keep the loop without its tests.
         auto trace_row = [&](int y, auto plain_sky_here) {
-            for (int x = tile.x0; x < tile.x1; ++x) {
-                const auto i = static_cast<std::size_t>(x - tile.x0);
-                if constexpr (plain_sky_here) {
-                    sky_only[i] = shapes_seen(table, x + 0.5, y + 0.5).size() == 0;
-                    if (sky_only[i]) continue;
+            if constexpr (plain_sky_here) {
+                // A block's pixels of the row at a time: one look-up for all.
+                for (int x = tile.x0; x < tile.x1;) {
+                    const int block_end = std::min(tile.x1, (x / view_block + 1) * view_block);
+                    const bool sky = shapes_seen(table, x + 0.5, y + 0.5).size() == 0;
+                    for (; x < block_end; ++x) {
+                        const auto i = static_cast<std::size_t>(x - tile.x0);
+                        sky_only[i] = sky;
+                        if (!sky) directions[i] = camera_direction(camera, x + 0.5, y + 0.5);
+                    }
                 }
-                directions[i] = camera_direction(camera, x + 0.5, y + 0.5);
+            } else {
+                for (int x = tile.x0; x < tile.x1; ++x)
+                    directions[static_cast<std::size_t>(x - tile.x0)] =
+                        camera_direction(camera, x + 0.5, y + 0.5);
             }
+            // Counted and coloured from locals: stores of bytes may alias any
+            // memory, so values read through references would be read again.
+            const std::uint8_t red = sky[0], green = sky[1], blue = sky[2];
+            std::uint64_t sky_rays = 0;
             for (int x = tile.x0; x < tile.x1; ++x) {
                 const auto i = static_cast<std::size_t>(x - tile.x0);
                 if constexpr (plain_sky_here) {
                     if (sky_only[i]) {
-                        ++rays;
-                        std::copy(sky.begin(), sky.end(), &out.rgb[out.index(x, y) * 3]);
+                        ++sky_rays;
+                        std::uint8_t* p = &out.rgb[out.index(x, y) * 3];
+                        p[0] = red, p[1] = green, p[2] = blue;
                         continue;
                     }
                 }
@@ -128,6 +141,7 @@ bool trace_samples(const PreparedFrame& f, const RenderPass& pass, TileBuffer& o
                     trace(x + 0.5, y + 0.5, directions[i],
                           {static_cast<std::uint32_t>(x), static_cast<std::uint32_t>(y), 0}));
             }
+            rays += sky_rays;
         };
         for (int y = tile.y0; y < tile.y1; ++y) {
             if (cancel.load(std::memory_order_relaxed)) return false;
