@@ -240,6 +240,17 @@ bool occluded_by_testing_all(const Geometry& g, const Vec3& origin, const Vec3& 
     return false;
 }
 
+// Whether the walk of a light's cell list (occluded_by_listed) tests at most
+// max_cell_candidates shapes: a long list is walked too when all but its
+// first shapes lie beyond the ray's origin, seen from the light, as they do
+// for points on the sides of a crowd that face the light.
+[[gnu::always_inline]] inline bool walk_is_short(const ListedShapes& listed, const Vec3& direction,
+                                                 double t_max) {
+    if (listed.size() <= max_cell_candidates) return true;
+    const double reach = t_max * glm::length(direction) * (1.0 + 1e-9);
+    return !(listed.nearest[max_cell_candidates] < reach);
+}
+
 // The walk of a direction table's list around the ray's origin: it stops at
 // the first shape that lies wholly beyond the best hit so far. True when that
 // settles the ray; false when `limit` shapes were tested first, and the rest
@@ -562,7 +573,7 @@ bool occluded(const Geometry& geometry, const Vec3& origin, const Vec3& directio
         return true;
     OccluderHint blocker;
     bool blocked = unbounded_blocks(geometry, origin, direction, t_min, t_max, blocker);
-    if (!blocked && candidates && (!geometry.bvh || candidates->size() <= max_cell_candidates)) {
+    if (!blocked && candidates && (!geometry.bvh || walk_is_short(*candidates, direction, t_max))) {
         blocked =
             occluded_by_listed(geometry, *candidates, origin, direction, t_min, t_max, blocker);
     } else if (!blocked && !geometry.bvh) {
