@@ -12,7 +12,6 @@
 #include <atomic>
 #include <cmath>
 #include <limits>
-#include <numbers>
 
 namespace jt {
 
@@ -95,14 +94,15 @@ std::vector<CellCone> cell_cones(int resolution, const FaceWindow& window) {
         for (int iu = 0; iu < resolution; ++iu) {
             const double u0 = window.u0 + iu * u_step, v0 = window.v0 + iv * v_step;
             const Vec3 centre = glm::normalize(Vec3(u0 + 0.5 * u_step, v0 + 0.5 * v_step, 1.0));
-            double radius = 0.0;
+            // The farthest corner is the one of the smallest cosine: one arc
+            // cosine, of that, gives the largest angle.
+            double cos_farthest = 1.0;
             for (double du : {0.0, u_step})
                 for (double dv : {0.0, v_step}) {
                     Vec3 corner = glm::normalize(Vec3(u0 + du, v0 + dv, 1.0));
-                    radius = std::max(radius,
-                                      std::acos(std::clamp(glm::dot(centre, corner), -1.0, 1.0)));
+                    cos_farthest = std::min(cos_farthest, glm::dot(centre, corner));
                 }
-            radius += angle_slack;
+            const double radius = std::acos(std::clamp(cos_farthest, -1.0, 1.0)) + angle_slack;
             cones[static_cast<std::size_t>(iv) * resolution + iu] = {
                 centre.x, centre.y, centre.z, std::cos(radius), std::sin(radius)};
         }
@@ -135,16 +135,28 @@ FaceSpans whole_faces() {
     return spans;
 }
 
+// A cone of directions: those within `angle` of the unit `axis`, with the
+// angle's cosine and sine, which is how the tests below use it.
+struct Cone {
+    Vec3 axis;
+    double cos_angle, sin_angle;
+};
+
 // Calls visit(face, u, v) with the ranges of face coordinates that directions
-// within `angle` of the unit `axis` may take on each face they may lie on.
+// in the cone may take on each face they may lie on.
 template <typename Visit>
-void face_ranges(const Vec3& axis, double angle, Visit&& visit) {
-    // The range of each component of a direction in the cone.
+void face_ranges(const Cone& cone, Visit&& visit) {
+    // The range of each component of a direction in the cone: from the cosine
+    // of the axis's angle theta to component i, cos(theta +- angle) by the sum
+    // formula, or -1 and 1 where theta + angle reaches pi and theta - angle 0.
+    // Its rounding (~1e-8 where the axis lies along i) is far inside the slack.
+    const double ca = cone.cos_angle, sa = cone.sin_angle;
     std::array<double, 3> lo{}, hi{};
     for (int i = 0; i < 3; ++i) {
-        const double theta = std::acos(std::clamp(axis[i], -1.0, 1.0));
-        lo[i] = std::cos(std::min(std::numbers::pi, theta + angle)) - angle_slack;
-        hi[i] = std::cos(std::max(0.0, theta - angle)) + angle_slack;
+        const double c = std::clamp(cone.axis[i], -1.0, 1.0);
+        const double s = std::sqrt(std::max(0.0, 1.0 - c * c));
+        lo[i] = (ca <= -c ? -1.0 : c * ca - s * sa) - angle_slack;
+        hi[i] = (ca <= c ? 1.0 : c * ca + s * sa) + angle_slack;
     }
     for (int face = 0; face < 6; ++face) {
         const auto [k, j, l] = face_axes(face / 2);
@@ -163,14 +175,14 @@ void face_ranges(const Vec3& axis, double angle, Visit&& visit) {
     }
 }
 
-// Calls add(cell) for every cell whose cone meets the cone of directions
-// within `angle` of the unit `axis`. `cones`: each face's cells' cones.
+// Calls add(cell) for every cell whose cone meets `cone`. `cones`: each
+// face's cells' cones.
 template <typename Add>
-void rasterise_cone(const Vec3& axis, double angle, int resolution,
-                    const std::array<FaceWindow, 6>& windows,
+void rasterise_cone(const Cone& cone, int resolution, const std::array<FaceWindow, 6>& windows,
                     const std::array<std::vector<CellCone>, 6>& cones, Add&& add) {
-    const double cos_angle = std::cos(angle), sin_angle = std::sin(angle);
-    face_ranges(axis, angle, [&](int face, Range u, Range v) {
+    const Vec3& axis = cone.axis;
+    const double cos_angle = cone.cos_angle, sin_angle = cone.sin_angle;
+    face_ranges(cone, [&](int face, Range u, Range v) {
         const FaceWindow& w = windows[static_cast<std::size_t>(face)];
         const auto [k, j, l] = face_axes(face / 2);
         const double sign = face % 2 == 0 ? 1.0 : -1.0;
@@ -223,8 +235,7 @@ DirectionTable build_direction_table(const Geometry& geometry, const Vec3& posit
     // shape listed in every cell; then each face's window over the cones
     // that reach it, a whole face where a shape is listed everywhere.
     struct ShapeCone {
-        Vec3 axis;
-        double angle;
+        Cone cone;
         bool everywhere;
     };
     std::vector<ShapeCone> shape_cones(shapes);
@@ -235,10 +246,13 @@ DirectionTable build_direction_table(const Geometry& geometry, const Vec3& posit
         nearest_of[slot] = padded.nearest;
         const bool everywhere = !(distance > radius) || !std::isfinite(distance) ||
                                 radius / distance > std::sin(max_cone_angle);
-        shape_cones[slot] = everywhere
-                                ? ShapeCone{Vec3(0.0), 0.0, true}
-                                : ShapeCone{(b.center - position) / distance,
-                                            std::asin(radius / distance) + angle_slack, false};
+        if (everywhere) {
+            shape_cones[slot] = {{Vec3(0.0), 1.0, 0.0}, true};
+            return;
+        }
+        const double angle = std::asin(radius / distance) + angle_slack;
+        shape_cones[slot] = {{(b.center - position) / distance, std::cos(angle), std::sin(angle)},
+                             false};
     };
     tbb::parallel_for(
         tbb::blocked_range<std::size_t>(0, shapes, shapes_a_task),
@@ -257,7 +271,7 @@ DirectionTable build_direction_table(const Geometry& geometry, const Vec3& posit
             for (std::size_t i = range.begin(); i != range.end(); ++i) {
                 const ShapeCone& c = shape_cones[i];
                 if (c.everywhere) return whole_faces();
-                face_ranges(c.axis, c.angle, [&](int face, Range u, Range v) {
+                face_ranges(c.cone, [&](int face, Range u, Range v) {
                     spans[static_cast<std::size_t>(face)].add(u, v);
                 });
             }
@@ -268,7 +282,8 @@ DirectionTable build_direction_table(const Geometry& geometry, const Vec3& posit
             return a;
         });
     // Faces of the same window (whole faces, round a light among the shapes)
-    // share their cells' cones: four arc cosines a cell.
+    // share their cells' cones: five normalisations and a few trigonometric
+    // calls a cell.
     std::array<std::vector<CellCone>, 6> cones;
     for (std::size_t face = 0; face < 6; ++face) {
         const FaceSpan& s = spans[face];
@@ -314,7 +329,7 @@ DirectionTable build_direction_table(const Geometry& geometry, const Vec3& posit
                 for (std::size_t cell = 0; cell < cells; ++cell)
                     pairs.push_back({static_cast<std::uint32_t>(cell), candidate});
             } else {
-                rasterise_cone(c.axis, c.angle, r, table.windows, cones, [&](std::size_t cell) {
+                rasterise_cone(c.cone, r, table.windows, cones, [&](std::size_t cell) {
                     pairs.push_back({static_cast<std::uint32_t>(cell), candidate});
                 });
             }
