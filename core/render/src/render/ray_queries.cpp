@@ -22,9 +22,9 @@ namespace {
 
 constexpr std::uint32_t no_source = std::numeric_limits<std::uint32_t>::max();
 
-// A direction table cell with more shapes than this leaves the ray to the BVH
-// (a closest-hit query, once it has tested as many): testing each costs more
-// than Embree's walk past most of them.
+// A shadow ray whose walk of its light's cell would test more shapes than
+// this, or a closest-hit query that has tested as many of its list, is left
+// to the BVH: testing each costs more than Embree's walk past most of them.
 constexpr std::size_t max_cell_candidates = 16;
 // Where the spheres overlap heavily (Geometry::crowded), testing a light's
 // cell list beats the BVH walk, even the shadow BVH's, up to about this many
@@ -219,6 +219,24 @@ bool occluded_by_testing_all(const Geometry& g, const Vec3& origin, const Vec3& 
     return false;
 }
 
+// How near the light a shape must come to be walked for a shadow ray: a
+// blocker lies nearer the light than the ray's origin (a list's `nearest`
+// are distances from the light).
+[[gnu::always_inline]] inline double light_walk_reach(const Vec3& direction, double t_max) {
+    return t_max * glm::length(direction) * (1.0 + 1e-9);
+}
+
+// Whether the walk of a light's list for a shadow ray tests at most `limit`
+// shapes: the list is that short, or its shape at `limit` already lies
+// beyond the ray's origin, where the walk stops. A long list often serves
+// rays from shapes near its light's end: the shapes behind them are listed
+// too, but never walked.
+[[gnu::always_inline]] inline bool light_walk_within(const ListedShapes& listed,
+                                                     const Vec3& direction, double t_max,
+                                                     std::size_t limit) {
+    return listed.size() <= limit || listed.nearest[limit] >= light_walk_reach(direction, t_max);
+}
+
 // The walk of a direction table's list around the light the ray runs to: a
 // blocker lies between the origin and the light, so nearer the light than
 // the origin is, and the walk stops at the first shape that is not. Forced
@@ -230,7 +248,7 @@ bool occluded_by_testing_all(const Geometry& g, const Vec3& origin, const Vec3& 
                                                       OccluderHint& blocker) {
     // Most cells list nothing: no square root for those.
     if (listed.size() == 0) return false;
-    const double reach = t_max * glm::length(direction) * (1.0 + 1e-9);
+    const double reach = light_walk_reach(direction, t_max);
     for (std::size_t k = 0; k < listed.size() && listed.nearest[k] < reach; ++k) {
         if (listed_blocks(g, listed.shapes[k], origin, direction, t_min, t_max)) {
             blocker = hint_for(listed.shapes[k]);
@@ -238,17 +256,6 @@ bool occluded_by_testing_all(const Geometry& g, const Vec3& origin, const Vec3& 
         }
     }
     return false;
-}
-
-// Whether the walk of a light's cell list (occluded_by_listed) tests at most
-// max_cell_candidates shapes: a long list is walked too when all but its
-// first shapes lie beyond the ray's origin, seen from the light, as they do
-// for points on the sides of a crowd that face the light.
-[[gnu::always_inline]] inline bool walk_is_short(const ListedShapes& listed, const Vec3& direction,
-                                                 double t_max) {
-    if (listed.size() <= max_cell_candidates) return true;
-    const double reach = t_max * glm::length(direction) * (1.0 + 1e-9);
-    return !(listed.nearest[max_cell_candidates] < reach);
 }
 
 // The walk of a direction table's list around the ray's origin: it stops at
@@ -438,12 +445,17 @@ bool closest_hit(const Geometry& geometry, const Vec3& origin, const Vec3& direc
     // (heavily overlapping spheres): that sphere's hit soon ends the walk,
     // long before Embree would have offered every sphere whose box the ray
     // crosses. Past max_covered_position shapes the BVH walk takes over from
-    // the best hit so far.
+    // the best hit so far. Any other long list has its head walked: its
+    // nearest shapes often settle the ray, and where they do not, the BVH
+    // walk starts from their best hit.
     bool settled = false;
-    if (candidates &&
-        (!geometry.bvh || candidates->size() <= max_cell_candidates || candidates->covered))
-        settled = closest_by_listed(q, *candidates,
-                                    geometry.bvh ? max_covered_position : candidates->size());
+    if (candidates) {
+        const std::size_t limit = !geometry.bvh ? candidates->size()
+                                  : candidates->size() <= max_cell_candidates || candidates->covered
+                                      ? max_covered_position
+                                      : max_cell_candidates;
+        settled = closest_by_listed(q, *candidates, limit);
+    }
     if (!settled && !geometry.bvh) {
         closest_by_testing_all(q);
     } else if (!settled) {
@@ -573,7 +585,8 @@ bool occluded(const Geometry& geometry, const Vec3& origin, const Vec3& directio
         return true;
     OccluderHint blocker;
     bool blocked = unbounded_blocks(geometry, origin, direction, t_min, t_max, blocker);
-    if (!blocked && candidates && (!geometry.bvh || walk_is_short(*candidates, direction, t_max))) {
+    if (!blocked && candidates &&
+        (!geometry.bvh || light_walk_within(*candidates, direction, t_max, max_cell_candidates))) {
         blocked =
             occluded_by_listed(geometry, *candidates, origin, direction, t_min, t_max, blocker);
     } else if (!blocked && !geometry.bvh) {
