@@ -4,6 +4,7 @@
 // inside a sphere, with shapes behind the camera, at wide and narrow fields.
 
 #include "render/view_table.hpp"
+#include "geometry/intersect.hpp"
 
 #include "render/prepared_scene.hpp"
 #include "render/ray_queries.hpp"
@@ -383,6 +384,42 @@ TEST(ViewTable, NoneWithoutBoundedShapesOrWithoutAFrame) {
         << "look_at at the camera: no frame, no table";
     EXPECT_TRUE(
         build_view_table(*prepared->geometry, view({0, 2, 15}, {0, 0, 0}, 45, 32, 32)).built);
+}
+
+TEST(ViewTable, ACoveringSphereIsMetWithinItsBound) {
+    // Rays from the camera that pass the inner sphere's centre at most its
+    // radius away, grazing its rim included, must meet the sphere (the exact
+    // test's root) no farther than the bound a covered block's list is cut
+    // at: from far off, from near the surface, and from inside, in the thin
+    // shell between the inner and the true sphere too.
+    std::mt19937 rng(5);
+    std::uniform_real_distribution<double> unit(-1.0, 1.0), fraction(0.0, 1.0);
+    int rays = 0;
+    for (int i = 0; i < 20000; ++i) {
+        const double scale = std::pow(10.0, 6.0 * fraction(rng) - 3.0);
+        const double radius = scale * (0.1 + fraction(rng));
+        const double distance = i % 10 == 0 ? radius * (1.0 - 1e-9 * fraction(rng))
+                                : i % 10 == 1
+                                    ? radius * fraction(rng)
+                                    : radius * (1.0 + std::pow(10.0, 4.0 * fraction(rng) - 3.0));
+        const Vec3 center =
+            distance * glm::normalize(Vec3(unit(rng), unit(rng), unit(rng)) + Vec3(0, 0, 1e-3));
+        const PaddedBound padded = padded_bound(center, radius, Vec3(0.0));
+        const double inner = std::max(radius * (1.0 - 1e-7) - 1e-9 * padded.distance, 0.0);
+        const double bound = covered_hit_bound(padded.distance, inner, padded.radius);
+        // A direction passing the centre at h from it, h up to the inner radius.
+        const Vec3 axis = center / glm::length(center);
+        const Vec3 side = glm::normalize(glm::cross(axis, Vec3(unit(rng), unit(rng), unit(rng))));
+        const double h = inner * (i % 3 == 0 ? 1.0 : std::sqrt(fraction(rng)));
+        if (!(glm::length(center) > h)) continue;
+        const double along = std::sqrt(glm::length(center) * glm::length(center) - h * h);
+        const Vec3 d = glm::normalize(along * axis + h * side);
+        const double t = intersect_sphere(Vec3(0.0), d, center, radius, 0.0, 1e300);
+        if (t == no_hit) continue;
+        ++rays;
+        ASSERT_LE(t, bound) << "ray " << i << ": distance " << distance << ", radius " << radius;
+    }
+    EXPECT_GT(rays, 15000);
 }
 
 TEST(ViewTable, ListsAreNearestFirstWithTrueLowerBounds) {

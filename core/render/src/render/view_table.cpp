@@ -39,7 +39,7 @@ struct Candidate {
     Vec3 center;
     double radius;         // of the padded bounding sphere
     double inner_radius;   // every ray passing this close to `center` hits; 0: none
-    double reach;          // no hit on the shape lies farther from the camera
+    double reach;          // a ray meeting the inner sphere hits the shape within this
     double nearest;        // no point of the shape lies nearer the camera
     const RTCBounds* box;  // a transformed shape's box, tighter than its sphere
 };
@@ -54,7 +54,7 @@ Candidate candidate(std::uint32_t listed, const Vec3& center, double radius, dou
     c.radius = padded.radius;
     c.nearest = padded.nearest;
     c.inner_radius = std::max(true_radius * (1.0 - 1e-7) - 1e-9 * distance, 0.0);
-    c.reach = (distance + c.radius) * (1.0 + 1e-6);
+    c.reach = covered_hit_bound(distance, c.inner_radius, c.radius);
     c.box = box;
     return c;
 }
@@ -161,6 +161,18 @@ struct Listing {
 };
 
 }  // namespace
+
+double covered_hit_bound(double distance, double inner_radius, double radius) {
+    // From outside the sphere, a ray passing h <= r from the centre enters
+    // at sqrt(d^2 - h^2) - sqrt(R^2 - h^2), which grows with h, so within
+    // sqrt(d^2 - r^2): the inner sphere's tangent length, much nearer than
+    // the far side. From inside, the far side bounds the exit. The slack
+    // covers the rounding of both this and the exact test.
+    const double bound = distance > radius
+                             ? std::sqrt((distance - inner_radius) * (distance + inner_radius))
+                             : distance + radius;
+    return bound * (1.0 + 1e-6);
+}
 
 ViewTable build_view_table(const Geometry& geometry, const CameraFrame& camera) {
     const std::size_t shapes = geometry.spheres.size() + geometry.shapes.size();

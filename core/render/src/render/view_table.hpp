@@ -53,6 +53,12 @@ struct ViewTable {
     std::vector<std::uint8_t> covered;
 };
 
+// How far from the camera every ray that meets a sphere's inner sphere (of
+// radius `inner_radius`, about the sphere's centre `distance` away) first
+// meets the sphere of radius `radius`: the cap a covered block puts on its
+// list, since no shape beyond it can be a first hit there.
+double covered_hit_bound(double distance, double inner_radius, double radius);
+
 // The table of `camera`'s image, or none (not built) when the geometry has no
 // bounded shapes, too many for a table to pay for its building, or the camera
 // forms no frame.
