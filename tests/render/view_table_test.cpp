@@ -387,15 +387,17 @@ TEST(ViewTable, NoneWithoutBoundedShapesOrWithoutAFrame) {
 }
 
 TEST(ViewTable, ACoveringSphereIsMetWithinItsBound) {
-    // Rays from the camera that pass the inner sphere's centre at most its
-    // radius away, grazing its rim included, must meet the sphere (the exact
-    // test's root) no farther than the bound a covered block's list is cut
-    // at: from far off, from near the surface, and from inside, in the thin
-    // shell between the inner and the true sphere too.
+    // A block a sphere covers has its corners within the inner sphere's cone;
+    // its rays, no wider from the centre's direction than its farthest
+    // corner, must meet the sphere (the exact test's root) no farther than
+    // the bound its list is cut at. Rays at exactly the farthest corner's
+    // angle and inside it; corners from the axis out to the inner sphere's
+    // rim; cameras far off, near the surface, inside, and in the thin shell
+    // between the inner and the true sphere; scales 1e-3 to 1e3.
     std::mt19937 rng(5);
     std::uniform_real_distribution<double> unit(-1.0, 1.0), fraction(0.0, 1.0);
     int rays = 0;
-    for (int i = 0; i < 20000; ++i) {
+    for (int i = 0; i < 40000; ++i) {
         const double scale = std::pow(10.0, 6.0 * fraction(rng) - 3.0);
         const double radius = scale * (0.1 + fraction(rng));
         const double distance = i % 10 == 0 ? radius * (1.0 - 1e-9 * fraction(rng))
@@ -406,20 +408,25 @@ TEST(ViewTable, ACoveringSphereIsMetWithinItsBound) {
             distance * glm::normalize(Vec3(unit(rng), unit(rng), unit(rng)) + Vec3(0, 0, 1e-3));
         const PaddedBound padded = padded_bound(center, radius, Vec3(0.0));
         const double inner = std::max(radius * (1.0 - 1e-7) - 1e-9 * padded.distance, 0.0);
-        const double bound = covered_hit_bound(padded.distance, inner, padded.radius);
-        // A direction passing the centre at h from it, h up to the inner radius.
-        const Vec3 axis = center / glm::length(center);
+        const double length = glm::length(center);
+        if (!(length > inner)) continue;
+        // The farthest corner's angle, up to the inner sphere's rim; a ray
+        // at that angle, or within it.
+        const double rim = std::asin(inner / length);
+        const double farthest = rim * (i % 4 == 0 ? 1.0 : fraction(rng));
+        const double angle = farthest * (i % 3 == 0 ? 1.0 : std::sqrt(fraction(rng)));
+        const double bound =
+            covered_hit_bound(padded.distance, inner, padded.radius, std::cos(farthest));
+        const Vec3 axis = center / length;
         const Vec3 side = glm::normalize(glm::cross(axis, Vec3(unit(rng), unit(rng), unit(rng))));
-        const double h = inner * (i % 3 == 0 ? 1.0 : std::sqrt(fraction(rng)));
-        if (!(glm::length(center) > h)) continue;
-        const double along = std::sqrt(glm::length(center) * glm::length(center) - h * h);
-        const Vec3 d = glm::normalize(along * axis + h * side);
+        const Vec3 d = glm::normalize(std::cos(angle) * axis + std::sin(angle) * side);
         const double t = intersect_sphere(Vec3(0.0), d, center, radius, 0.0, 1e300);
         if (t == no_hit) continue;
         ++rays;
-        ASSERT_LE(t, bound) << "ray " << i << ": distance " << distance << ", radius " << radius;
+        ASSERT_LE(t, bound) << "ray " << i << ": distance " << distance << ", radius " << radius
+                            << ", angle " << angle << " of " << farthest;
     }
-    EXPECT_GT(rays, 15000);
+    EXPECT_GT(rays, 30000);
 }
 
 TEST(ViewTable, ListsAreNearestFirstWithTrueLowerBounds) {

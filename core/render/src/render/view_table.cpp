@@ -30,6 +30,7 @@ constexpr double angle_slack = 1e-7;
 constexpr double pixel_slack = 1e-2;
 
 constexpr double half_pi = 0.5 * std::numbers::pi;
+const double cos_slack = std::cos(angle_slack), sin_slack = std::sin(angle_slack);
 constexpr double unbounded = std::numeric_limits<double>::infinity();
 
 // A shape as the table sees it: its padded bounding sphere, and for a world
@@ -39,7 +40,7 @@ struct Candidate {
     Vec3 center;
     double radius;         // of the padded bounding sphere
     double inner_radius;   // every ray passing this close to `center` hits; 0: none
-    double reach;          // a ray meeting the inner sphere hits the shape within this
+    double distance;       // of the padded bounding sphere's centre from the camera
     double nearest;        // no point of the shape lies nearer the camera
     const RTCBounds* box;  // a transformed shape's box, tighter than its sphere
 };
@@ -54,7 +55,7 @@ Candidate candidate(std::uint32_t listed, const Vec3& center, double radius, dou
     c.radius = padded.radius;
     c.nearest = padded.nearest;
     c.inner_radius = std::max(true_radius * (1.0 - 1e-7) - 1e-9 * distance, 0.0);
-    c.reach = covered_hit_bound(distance, c.inner_radius, c.radius);
+    c.distance = distance;
     c.box = box;
     return c;
 }
@@ -162,16 +163,27 @@ struct Listing {
 
 }  // namespace
 
-double covered_hit_bound(double distance, double inner_radius, double radius) {
-    // From outside the sphere, a ray passing h <= r from the centre enters
-    // at sqrt(d^2 - h^2) - sqrt(R^2 - h^2), which grows with h, so within
-    // sqrt(d^2 - r^2): the inner sphere's tangent length, much nearer than
-    // the far side. From inside, the far side bounds the exit. The slack
-    // covers the rounding of both this and the exact test.
-    const double bound = distance > radius
-                             ? std::sqrt((distance - inner_radius) * (distance + inner_radius))
-                             : distance + radius;
-    return bound * (1.0 + 1e-6);
+double covered_hit_bound(double distance, double inner_radius, double radius, double cos_farthest) {
+    // Inside the sphere, the far side bounds the exit.
+    if (!(distance > radius)) return (distance + radius) * (1.0 + 1e-6);
+    // From outside, a ray at angle theta to the centre's direction, passing
+    // h = d sin(theta) <= r from the centre, enters the inner sphere (and so
+    // the sphere, which holds it) at (d^2 - r^2) / (d cos(theta) +
+    // sqrt(r^2 - h^2)), which grows with theta. The angle is taken
+    // angle_slack wider for the rounding of the rays' directions; past the
+    // inner sphere's rim the bound is its tangent length, sqrt(d^2 - r^2).
+    // The slack covers the rounding of this and of the exact test, which
+    // finds the sphere's entry short of the inner sphere's by at least the
+    // 1e-7 of its radius the inner sphere is shrunk by.
+    const double tangent = std::sqrt((distance - inner_radius) * (distance + inner_radius));
+    const double sin_farthest = std::sqrt(std::max(0.0, 1.0 - cos_farthest * cos_farthest));
+    const double cos_wider = cos_farthest * cos_slack - sin_farthest * sin_slack;
+    const double h = distance * std::sqrt(std::max(0.0, 1.0 - cos_wider * cos_wider));
+    const double off_rim = (inner_radius - h) * (inner_radius + h);
+    if (!(cos_wider > 0.0) || !(off_rim >= 0.0)) return tangent * (1.0 + 1e-6);
+    const double entry = (distance - inner_radius) * (distance + inner_radius) /
+                         (distance * cos_wider + std::sqrt(off_rim));
+    return std::min(entry, tangent) * (1.0 + 1e-6);
 }
 
 ViewTable build_view_table(const Geometry& geometry, const CameraFrame& camera) {
@@ -252,21 +264,32 @@ ViewTable build_view_table(const Geometry& geometry, const CameraFrame& camera) 
             const int row0 = std::max(e.row0, first_row), row1 = std::min(e.row1, last_row);
             if (row0 > row1 || e.column0 > e.column1) continue;
             const Candidate& c = candidates[i];
-            auto inside = [&](const Vec3& d) {
-                return e.cos_cover <= -1.0 || glm::dot(d, e.axis) >= e.cos_cover;
-            };
             for (int row = row0; row <= row1; ++row)
                 for (int column = e.column0; column <= e.column1; ++column) {
                     const std::size_t b = static_cast<std::size_t>(row) * table.columns + column;
                     if (c.nearest > cap[b - base]) continue;
                     listings.push_back(
                         {static_cast<std::uint32_t>(b - base), static_cast<std::uint32_t>(i)});
-                    if (e.cos_cover <= 1.0 && inside(corner(column, row)) &&
-                        inside(corner(column + 1, row)) && inside(corner(column, row + 1)) &&
-                        inside(corner(column + 1, row + 1))) {
-                        table.covered[b] = 1;
-                        cap[b - base] = std::min(cap[b - base], c.reach);
+                    if (e.cos_cover > 1.0) continue;
+                    // The block is covered when its four corners are; its
+                    // list is then cut where every ray of it has met the
+                    // sphere, from the farthest corner's angle.
+                    double cos_farthest = 1.0;
+                    bool covered = true;
+                    for (const Vec3* d : {&corner(column, row), &corner(column + 1, row),
+                                          &corner(column, row + 1), &corner(column + 1, row + 1)}) {
+                        const double cos_angle = glm::dot(*d, e.axis);
+                        if (!(e.cos_cover <= -1.0 || cos_angle >= e.cos_cover)) {
+                            covered = false;
+                            break;
+                        }
+                        cos_farthest = std::min(cos_farthest, cos_angle);
                     }
+                    if (!covered) continue;
+                    table.covered[b] = 1;
+                    cap[b - base] = std::min(
+                        cap[b - base],
+                        covered_hit_bound(c.distance, c.inner_radius, c.radius, cos_farthest));
                 }
             if (listings.size() > max_view_listed) break;
         }

@@ -53,11 +53,13 @@ struct ViewTable {
     std::vector<std::uint8_t> covered;
 };
 
-// How far from the camera every ray that meets a sphere's inner sphere (of
-// radius `inner_radius`, about the sphere's centre `distance` away) first
-// meets the sphere of radius `radius`: the cap a covered block puts on its
-// list, since no shape beyond it can be a first hit there.
-double covered_hit_bound(double distance, double inner_radius, double radius);
+// How far from the camera every ray of a block that a sphere covers first
+// meets the sphere: the cap on the block's list, since no shape beyond it can
+// be a first hit there. The sphere (radius `radius`, its centre `distance`
+// away) covers the block when every ray of it meets the inner sphere
+// (`inner_radius`); `cos_farthest` is the cosine of the largest angle between
+// a corner of the block and the centre's direction.
+double covered_hit_bound(double distance, double inner_radius, double radius, double cos_farthest);
 
 // The table of `camera`'s image, or none (not built) when the geometry has no
 // bounded shapes, too many for a table to pay for its building, or the camera
