@@ -240,8 +240,8 @@ ViewTable build_view_table(const Geometry& geometry, const CameraFrame& camera) 
 
     // Each band lists its blocks' shapes in candidate order; a shape nearer
     // than a block's cap is listed, and a sphere holding the whole block caps
-    // it at its far side. Each band's lists depend only on the shapes, so the
-    // table is the same whatever the threads do.
+    // it where all the block's rays have met it. Each band's lists depend
+    // only on the shapes, so the table is the same whatever the threads do.
     const int bands = (table.rows + view_band_rows - 1) / view_band_rows;
     table.covered.assign(blocks, 0);
     table.list_start.resize(blocks + static_cast<std::size_t>(bands));

@@ -7,9 +7,10 @@
 // BVH callbacks would, and stops at the first shape that lies wholly beyond
 // its best hit, so the answer is the same bit for bit. A shape's blocks come
 // from the exact extent of its bounding sphere on the image plane. A sphere
-// that every ray of a block meets caps the block: a shape beyond its far side
-// could never be a first hit there, and is left out of the list (the nested
-// spheres of `nested_shells` then list a handful a block instead of dozens).
+// that every ray of a block meets caps the block where all its rays have met
+// the sphere (covered_hit_bound): a shape beyond could never be a first hit
+// there, and is left out of the list (the nested spheres of `nested_shells`
+// then list a handful a block instead of dozens).
 //
 // Blocks of a few pixels give lists of a few shapes even where thousands crowd
 // the view, where a cell of a table around the camera (direction_table.hpp)
