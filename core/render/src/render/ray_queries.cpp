@@ -5,6 +5,7 @@
 #include "render/far_ray.hpp"
 #include "render/float_ray.hpp"
 #include "render/shadow_spheres.hpp"
+#include "render/sphere_batch.hpp"
 
 #include <glm/geometric.hpp>
 
@@ -263,12 +264,50 @@ bool occluded_by_testing_all(const Geometry& g, const Vec3& origin, const Vec3& 
 // settles the ray; false when `limit` shapes were tested first, and the rest
 // of the list is left to the BVH (the best hit so far stays in the query, and
 // the answer is the nearest of all, whichever found it).
+//
+// The spheres among the next few shapes the walk may reach are first given
+// the early tests of intersect_sphere together (sphere_batch.hpp), against the
+// best hit as it stands: the ones those decide would answer no_hit to any
+// nearer best hit too, and are passed over; the rest are offered one by one,
+// in list order, each after the walk's own test of whether it goes on.
 bool closest_by_listed(ClosestQuery& q, const ListedShapes& listed, std::size_t limit) {
     const double length = glm::length(q.direction);
-    for (std::size_t k = 0; k < listed.size(); ++k) {
+    const BatchRay ray = batch_ray(q.origin, q.direction, q.t_min);
+    const std::size_t size = listed.size();
+    const auto& spheres = q.geometry->spheres;
+    std::size_t k = 0;
+    while (k < size) {
         if (listed.nearest[k] > q.t * length) return true;
         if (k == limit) return false;
-        offer_listed(q, listed.shapes[k]);
+        // The shapes the walk reaches unless a hit among them stops it.
+        const double reach = q.t * length;
+        const std::size_t end = std::min({size, limit, k + sphere_batch});
+        std::size_t count = 1;
+        while (k + count < end && !(listed.nearest[k + count] > reach)) ++count;
+        unsigned sphere_lanes = 0;
+        const WorldSphere* lanes[sphere_batch];
+        for (std::size_t j = 0; j < count; ++j) {
+            const std::uint32_t shape = listed.shapes[k + j];
+            if (shape & shape_flag) continue;
+            lanes[j] = &spheres[shape];
+            sphere_lanes |= 1u << j;
+        }
+        if (count == 1 || sphere_lanes == 0) {
+            offer_listed(q, listed.shapes[k]);
+            ++k;
+            continue;
+        }
+        // Lanes without a listed sphere test a copy of one and are not read.
+        const WorldSphere* filler = lanes[std::countr_zero(sphere_lanes)];
+        for (std::size_t j = 0; j < sphere_batch; ++j)
+            if (!(sphere_lanes >> j & 1u)) lanes[j] = filler;
+        const unsigned missed =
+            spheres_missed_early<true>(lanes, ray, just_beyond(q.t)) & sphere_lanes;
+        for (std::size_t j = 0; j < count; ++j) {
+            if (j > 0 && listed.nearest[k + j] > q.t * length) return true;
+            if (!(missed >> j & 1u)) offer_listed(q, listed.shapes[k + j]);
+        }
+        k += count;
     }
     return true;
 }
