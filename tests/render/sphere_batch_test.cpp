@@ -20,6 +20,7 @@
 #include <cstdint>
 #include <numeric>
 #include <random>
+#include <utility>
 #include <vector>
 
 namespace jt::test {
@@ -191,9 +192,13 @@ TEST(SphereBatch, ListWalksFindEveryRaysFirstHit) {
     std::uniform_real_distribution<double> unit(0.0, 1.0);
     std::uniform_int_distribution<int> pick_miss(0, std::size(misses) - 1);
     int hits = 0, rays = 0;
-    // Lists of 1, 2, 3 shapes (shorter than a batch) up to a few hundred.
-    for (const auto& [nests, per_nest] :
-         {std::pair{1, 1}, {1, 2}, {1, 3}, {1, 5}, {2, 3}, {3, 3}, {2, 9}, {4, 12}, {8, 40}}) {
+    // Nests and shells a nest: lists of 1, 2, 3 shapes (shorter than a
+    // batch), 16 to 20 (the shortest walked in batches, ending in a whole or a
+    // partial batch) and up to a few hundred.
+    constexpr std::pair<int, int> crowds[] = {{1, 1}, {1, 2},  {1, 3},  {1, 5},  {2, 3},
+                                              {3, 3}, {1, 13}, {1, 14}, {1, 15}, {1, 16},
+                                              {2, 9}, {4, 12}, {8, 40}};
+    for (const auto& [nests, per_nest] : crowds) {
         for (int scene_round = 0; scene_round < 3; ++scene_round) {
             auto prepared = prepare_scene(shells(rng, nests, per_nest)).value();
             const Geometry& g = *prepared->geometry;

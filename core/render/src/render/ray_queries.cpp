@@ -35,6 +35,10 @@ constexpr std::size_t short_candidate_list = 2;
 // A covered list is walked however long it is, but only so far: a walk that
 // has tested this many without settling the ray hands it to the BVH.
 constexpr std::size_t max_covered_position = 256;
+// A covered list at least this long is walked in batches (closest_by_listed);
+// a shorter one mostly ends at its first shapes, where a batch costs more than
+// it decides.
+constexpr std::size_t min_batched_list = 16;
 
 // Embree hands our callbacks the context pointer we passed in; the query
 // structs start with it so that they can be found again from it.
@@ -299,12 +303,13 @@ bool occluded_by_testing_all(const Geometry& g, const Vec3& origin, const Vec3& 
 // nearer best hit too, and are passed over; the rest are offered one by one,
 // in list order, each after the walk's own test of whether it goes on. Most
 // spheres of such a list lie beyond the nearest hit or pass wide of the ray.
-// Other lists mostly end at their first or second shape, where a batch would
-// only add work: they are walked one shape at a time.
+// Other lists, and short covered ones, mostly end at their first or second
+// shape, where a batch would only add work: they are walked one shape at a
+// time.
 bool closest_by_listed(ClosestQuery& q, const ListedShapes& listed, std::size_t limit) {
     const double length = glm::length(q.direction);
     const std::size_t size = listed.size();
-    if (!listed.covered) {
+    if (!listed.covered || size < 64) {
         for (std::size_t k = 0; k < size; ++k) {
             if (listed.nearest[k] > q.t * length) return true;
             if (k == limit) return false;
