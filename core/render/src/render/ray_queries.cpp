@@ -309,7 +309,7 @@ bool occluded_by_testing_all(const Geometry& g, const Vec3& origin, const Vec3& 
 bool closest_by_listed(ClosestQuery& q, const ListedShapes& listed, std::size_t limit) {
     const double length = glm::length(q.direction);
     const std::size_t size = listed.size();
-    if (!listed.covered || size < 64) {
+    if (!listed.covered || size < min_batched_list) {
         for (std::size_t k = 0; k < size; ++k) {
             if (listed.nearest[k] > q.t * length) return true;
             if (k == limit) return false;
