@@ -296,16 +296,16 @@ bool occluded_by_testing_all(const Geometry& g, const Vec3& origin, const Vec3& 
 // of the list is left to the BVH (the best hit so far stays in the query, and
 // the answer is the nearest of all, whichever found it).
 //
-// A covered list (heavily overlapping spheres) is walked in batches: the
-// spheres among the next few shapes the walk may reach are first given the
-// early tests of intersect_sphere together (sphere_batch.hpp), against the
-// best hit as it stands. The ones those decide would answer no_hit to any
-// nearer best hit too, and are passed over; the rest are offered one by one,
-// in list order, each after the walk's own test of whether it goes on. Most
-// spheres of such a list lie beyond the nearest hit or pass wide of the ray.
-// Other lists, and short covered ones, mostly end at their first or second
-// shape, where a batch would only add work: they are walked one shape at a
-// time.
+// A covered list (heavily overlapping spheres) of min_batched_list shapes or
+// more is walked in batches: the spheres among the next few shapes the walk
+// may reach are first given the early tests of intersect_sphere together
+// (sphere_batch.hpp), against the best hit as it stands. The ones those
+// decide would answer no_hit to any nearer best hit too, and are passed over;
+// the rest are offered one by one, in list order, each after the walk's own
+// test of whether it goes on. Most spheres of such a list lie beyond the
+// nearest hit or pass wide of the ray. Other lists, and short covered ones,
+// mostly end at their first or second shape, where a batch would only add
+// work: they are walked one shape at a time.
 bool closest_by_listed(ClosestQuery& q, const ListedShapes& listed, std::size_t limit) {
     const double length = glm::length(q.direction);
     const std::size_t size = listed.size();
