@@ -5,6 +5,7 @@
 #include "render/far_ray.hpp"
 #include "render/float_ray.hpp"
 #include "render/shadow_spheres.hpp"
+#include "render/sphere_batch.hpp"
 
 #include <glm/geometric.hpp>
 
@@ -34,6 +35,10 @@ constexpr std::size_t short_candidate_list = 2;
 // A covered list is walked however long it is, but only so far: a walk that
 // has tested this many without settling the ray hands it to the BVH.
 constexpr std::size_t max_covered_position = 256;
+// A covered list at least this long is walked in batches (closest_by_listed);
+// a shorter one mostly ends at its first shapes, where a batch costs more than
+// it decides.
+constexpr std::size_t min_batched_list = 16;
 
 // Embree hands our callbacks the context pointer we passed in; the query
 // structs start with it so that they can be found again from it.
@@ -205,6 +210,33 @@ OccluderHint hint_for(std::uint32_t listed) {
             listed & ~shape_flag};
 }
 
+// The spheres among the `count` (at most sphere_batch) listed shapes from
+// `first`, as lanes of a batch; the bits of the lanes that hold one. Lanes
+// past the list, and lanes of transformed shapes, hold the first sphere and
+// are not read.
+[[gnu::always_inline]] inline unsigned batch_lanes(const Geometry& g, const std::uint32_t* first,
+                                                   std::size_t count,
+                                                   const WorldSphere* (&lanes)[sphere_batch]) {
+    unsigned spheres = 0;
+    for (std::size_t j = 0; j < sphere_batch; ++j) {
+        const std::uint32_t shape = j < count ? first[j] : shape_flag;
+        const bool sphere = !(shape & shape_flag);
+        lanes[j] = g.spheres.data() + (sphere ? shape : 0u);
+        spheres |= static_cast<unsigned>(sphere) << j;
+    }
+    return spheres;
+}
+
+// spheres_missed_early, in AVX where the processor has it.
+template <bool DecideEntryBeyond>
+[[gnu::always_inline]] inline unsigned batch_missed_early(
+    bool avx, const WorldSphere* const (&lanes)[sphere_batch], const BatchRay& ray, double t_max) {
+#if defined(JT_SPHERE_BATCH_AVX)
+    if (avx) return spheres_missed_early_avx<DecideEntryBeyond>(lanes, ray, t_max);
+#endif
+    return spheres_missed_early<DecideEntryBeyond>(lanes, ray, t_max);
+}
+
 bool occluded_by_testing_all(const Geometry& g, const Vec3& origin, const Vec3& direction,
                              double t_min, double t_max, OccluderHint& blocker) {
     const auto spheres = static_cast<std::uint32_t>(g.spheres.size());
@@ -263,12 +295,54 @@ bool occluded_by_testing_all(const Geometry& g, const Vec3& origin, const Vec3& 
 // settles the ray; false when `limit` shapes were tested first, and the rest
 // of the list is left to the BVH (the best hit so far stays in the query, and
 // the answer is the nearest of all, whichever found it).
+//
+// A covered list (heavily overlapping spheres) of min_batched_list shapes or
+// more is walked in batches: the spheres among the next few shapes the walk
+// may reach are first given the early tests of intersect_sphere together
+// (sphere_batch.hpp), against the best hit as it stands. The ones those
+// decide would answer no_hit to any nearer best hit too, and are passed over;
+// the rest are offered one by one, in list order, each after the walk's own
+// test of whether it goes on. Most spheres of such a list lie beyond the
+// nearest hit or pass wide of the ray. Other lists, and short covered ones,
+// mostly end at their first or second shape, where a batch would only add
+// work: they are walked one shape at a time.
 bool closest_by_listed(ClosestQuery& q, const ListedShapes& listed, std::size_t limit) {
     const double length = glm::length(q.direction);
-    for (std::size_t k = 0; k < listed.size(); ++k) {
-        if (listed.nearest[k] > q.t * length) return true;
+    const std::size_t size = listed.size();
+    if (!listed.covered || size < min_batched_list) {
+        for (std::size_t k = 0; k < size; ++k) {
+            if (listed.nearest[k] > q.t * length) return true;
+            if (k == limit) return false;
+            offer_listed(q, listed.shapes[k]);
+        }
+        return true;
+    }
+    const BatchRay ray = batch_ray(q.origin, q.direction, q.t_min);
+    const bool avx = sphere_batch_avx();
+    std::size_t k = 0;
+    while (k < size) {
+        const double reach = q.t * length;
+        if (listed.nearest[k] > reach) return true;
         if (k == limit) return false;
-        offer_listed(q, listed.shapes[k]);
+        // The shapes the walk reaches unless a hit among them stops it.
+        const std::size_t end = std::min({size, limit, k + sphere_batch});
+        std::size_t count = 1;
+        while (k + count < end && !(listed.nearest[k + count] > reach)) ++count;
+        const WorldSphere* lanes[sphere_batch];
+        const unsigned spheres =
+            count == 1 ? 0u : batch_lanes(*q.geometry, &listed.shapes[k], count, lanes);
+        if (spheres == 0) {
+            offer_listed(q, listed.shapes[k]);
+            ++k;
+            continue;
+        }
+        const unsigned missed =
+            batch_missed_early<true>(avx, lanes, ray, just_beyond(q.t)) & spheres;
+        for (std::size_t j = 0; j < count; ++j) {
+            if (j > 0 && listed.nearest[k + j] > q.t * length) return true;
+            if (!(missed >> j & 1u)) offer_listed(q, listed.shapes[k + j]);
+        }
+        k += count;
     }
     return true;
 }
