@@ -9,6 +9,7 @@
 #include "scene_builder.hpp"
 
 #include <gtest/gtest.h>
+#include <tbb/task_arena.h>
 #include <glm/geometric.hpp>
 
 #include <algorithm>
@@ -127,6 +128,7 @@ TEST(DirectionTable, CellsAreFewAndSmallForSparseShapes) {
             const WorldSphere& s = g.spheres[table.shapes[k]];
             EXPECT_LT(table.nearest[k], glm::length(s.center - Vec3{0, 10, 4}) - s.radius);
             EXPECT_GT(table.nearest[k], glm::length(s.center - Vec3{0, 10, 4}) - s.radius - 1e-3);
+            EXPECT_LE(table.nearest[k], padded_bound(s.center, s.radius, Vec3{0, 10, 4}).nearest);
         }
     EXPECT_GT(at_most_one, cells * 3 / 4);
     // Up, away from the floor: nothing to test.
@@ -203,6 +205,73 @@ TEST(DirectionTable, CellsSpanOnlyTheDirectionsOfShapes) {
     }
     EXPECT_GT(blocked, 500);
     EXPECT_LT(blocked, 3500);
+}
+
+bool same_table(const DirectionTable& a, const DirectionTable& b) {
+    for (std::size_t face = 0; face < 6; ++face) {
+        const FaceWindow &x = a.windows[face], &y = b.windows[face];
+        if (x.u0 != y.u0 || x.u1 != y.u1 || x.v0 != y.v0 || x.v1 != y.v1 ||
+            x.u_scale != y.u_scale || x.v_scale != y.v_scale)
+            return false;
+    }
+    return a.resolution == b.resolution && a.cell_start == b.cell_start && a.shapes == b.shapes &&
+           a.nearest == b.nearest;
+}
+
+TEST(DirectionTable, TheSameWhateverTheThreads) {
+    // Cones, windows and cells are worked out in parallel, and the tables
+    // beside the BVH: each list must still come out as on one thread, nearest
+    // first with ties in index order, for the light outside the crowd, inside
+    // it (every face whole) and seen across a cube corner.
+    Scene scene = crowd(3000, 21);
+    for (const Vec3& light : {Vec3{0, 20, 0}, Vec3{0.3, 0.2, -0.1}, Vec3{-45, 45.3, -44.8}})
+        scene.lights.push_back(PointLight{light, Colour(1.0)});
+    auto prepared = prepare_scene(scene).value();
+    const Geometry& g = *prepared->geometry;
+    ASSERT_EQ(prepared->light_tables->size(), scene.lights.size());
+    tbb::task_arena one_thread(1);
+    for (std::size_t k = 0; k < scene.lights.size(); ++k) {
+        const Vec3 light = scene.lights[k].position;
+        DirectionTable alone;
+        one_thread.execute(
+            [&] { alone = build_direction_table(g, light, table_resolution(3000)); });
+        ASSERT_GT(alone.resolution, 0);
+        EXPECT_TRUE(same_table(alone, build_direction_table(g, light, table_resolution(3000))))
+            << "light " << k;
+        EXPECT_TRUE(same_table(alone, (*prepared->light_tables)[k])) << "light " << k;
+    }
+}
+
+TEST(DirectionTable, ALongListIsWalkedOnlyUpToTheRaysOrigin) {
+    // Forty spheres in a row away from the light share its cells, a list
+    // longer than a walk takes. A shadow ray from between two of them meets
+    // only those nearer the light: from near the light the walk is short,
+    // from far along the row the BVH answers. Either way the answer is the
+    // one without the table, blocked from behind the first sphere on.
+    Scene scene;
+    for (int i = 0; i < 40; ++i)
+        scene.primitives.push_back(sphere({0.01 * (i % 3), 0, -2.0 * i}, 0.5));
+    auto prepared = prepare_scene(scene).value();
+    const Geometry& g = *prepared->geometry;
+    const Vec3 light{0, 0, 10};
+    DirectionTable table = build_direction_table(g, light, table_resolution(40));
+    ASSERT_GT(table.resolution, 0);
+    const auto listed = shapes_toward(table, {0, 0, -1});
+    ASSERT_TRUE(listed);
+    ASSERT_GT(listed->size(), 20u) << "one cell lists the whole row";
+    for (int gap = 0; gap < 39; ++gap) {
+        for (double side : {0.0, 0.3, 0.49, 0.51}) {
+            const Vec3 origin{side, 0.2, -2.0 * gap - 1.0};
+            const Vec3 to_light = light - origin;
+            const double distance = glm::length(to_light);
+            const Vec3 d = to_light / distance;
+            const bool with = occluded(g, origin, d, 0.0, distance, nullptr, &table);
+            EXPECT_EQ(with, occluded(g, origin, d, 0.0, distance)) << gap << ", " << side;
+            if (side < 0.45) {
+                EXPECT_TRUE(with) << gap << ", " << side;
+            }
+        }
+    }
 }
 
 TEST(DirectionTable, NoneWhenShapesSurroundThePoint) {

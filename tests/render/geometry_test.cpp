@@ -241,6 +241,98 @@ TEST(Intersect, AnEntryBeyondTMaxIsOnlyDecidedWhereTheExactTestMisses) {
     EXPECT_GT(undecided_before_entry, rays / 20);
 }
 
+// intersect_cylinder's answer without its early one: the same side and cap
+// tests, in the same order.
+double exact_cylinder_test(const Vec3& origin, const Vec3& direction, double radius, double height,
+                           double t_min, double t_max) {
+    double best = no_hit;
+    const double r2 = radius * radius;
+    const double a = direction.x * direction.x + direction.z * direction.z;
+    if (a > 0.0) {
+        const double b = origin.x * direction.x + origin.z * direction.z;
+        const double c = origin.x * origin.x + origin.z * origin.z - r2;
+        const double px = origin.x - (b / a) * direction.x;
+        const double pz = origin.z - (b / a) * direction.z;
+        double t0, t1;
+        if (solve_ray_quadratic(a, b, c, px * px + pz * pz, r2, t0, t1))
+            for (double t : {t0, t1}) {
+                if (!(t > t_min && t < best && t < t_max)) continue;
+                const double y = origin.y + t * direction.y;
+                if (y >= 0.0 && y <= height) best = t;
+            }
+    }
+    if (direction.y != 0.0)
+        for (const double y : {0.0, height}) {
+            const double t = (y - origin.y) / direction.y;
+            if (!(t > t_min && t < best && t < t_max)) continue;
+            const double x = origin.x + t * direction.x;
+            const double z = origin.z + t * direction.z;
+            if (x * x + z * z <= r2) best = t;
+        }
+    return best;
+}
+
+// The early miss may only answer where the exact test finds no root, side or
+// cap: lines passing the axis within a relative 1e-17 to 1e-3 of the radius,
+// outside and inside, through the side or across a cap's rim (nearly
+// parallel to the caps, or steep), at scales from 1e-6 to 1e7 and from near
+// and far.
+TEST(Intersect, ACylinderWideMissIsOnlyDecidedWhereTheExactTestMisses) {
+    std::mt19937 rng(17);
+    std::uniform_real_distribution<double> unit(-1.0, 1.0);
+    std::uniform_real_distribution<double> exponent(-17.0, -3.0);
+    constexpr int rays = 400000;
+    int decided = 0, grazing_hits = 0, cap_hits = 0;
+    for (int i = 0; i < rays; ++i) {
+        const double scale = std::pow(10.0, 13.0 * (unit(rng) + 1.0) / 2.0 - 6.0);
+        const double radius = scale * (0.01 + std::abs(unit(rng)));
+        const double height = scale * (0.01 + 2.0 * std::abs(unit(rng)));
+        // The line's direction in the xz plane and its closest point to the
+        // axis there, off it by r (1 + e).
+        const double angle = 3.14159 * unit(rng);
+        const Vec3 across(std::cos(angle), 0.0, std::sin(angle));
+        const Vec3 side(-across.z, 0.0, across.x);
+        const double e = (i % 2 ? 1.0 : -1.0) * std::pow(10.0, exponent(rng));
+        // Every third line nearly parallel to the caps, every third steep,
+        // the rest anywhere; where it passes the axis, at a cap's height or
+        // anywhere along it.
+        const double slope = i % 3 == 0   ? 1e-6 * unit(rng)
+                             : i % 3 == 1 ? std::pow(10.0, 4.0 * std::abs(unit(rng))) * unit(rng)
+                                          : 2.0 * unit(rng);
+        const double y = i % 4 == 0 ? 0.0 : i % 4 == 1 ? height : height * (1.5 * unit(rng) + 0.5);
+        const Vec3 passing = side * (radius * (1.0 + e)) + Vec3(0.0, y, 0.0);
+        const Vec3 axis = glm::normalize(across + Vec3(0.0, slope, 0.0));
+        const double distance = scale * std::pow(10.0, 4.0 * (unit(rng) + 1.0) / 2.0);
+        const Vec3 origin = passing - axis * distance;
+        const Vec3 direction = axis * std::pow(10.0, 2.0 * unit(rng));  // need not be unit
+        const double a = direction.x * direction.x + direction.z * direction.z;
+        const double b = origin.x * direction.x + origin.z * direction.z;
+        const double ff = origin.x * origin.x + origin.z * origin.z;
+        const double c = ff - radius * radius;
+        const double exact =
+            exact_cylinder_test(origin, direction, radius, height, -no_hit, no_hit);
+        if (passes_wide_of_cylinder(a, b, c, ff)) {
+            ++decided;
+            ASSERT_EQ(exact, no_hit) << "case " << i << ": e = " << e << ", scale " << scale;
+        }
+        // The whole test, early answer included, agrees with the exact one.
+        CylinderPart part = CylinderPart::side;
+        ASSERT_EQ(intersect_cylinder(origin, direction, radius, height, -no_hit, no_hit, part),
+                  exact)
+            << "case " << i;
+        if (exact != no_hit && e > 0.0) {
+            ++grazing_hits;
+            if (part != CylinderPart::side) ++cap_hits;
+        }
+    }
+    // Lines off by 1e-3 of the radius and more are decided early; the test's
+    // grazing lines reach the exact test's rounding, where it still finds
+    // roots, on the side and on the caps.
+    EXPECT_GT(decided, rays / 2 / 10);
+    EXPECT_GT(grazing_hits, 100);
+    EXPECT_GT(cap_hits, 10);
+}
+
 TEST(Intersect, CylinderPartsAndRims) {
     CylinderPart part = CylinderPart::side;
     EXPECT_EQ(intersect_cylinder({0, 5, 0}, {0, -1, 0}, 1.0, 2.0, 0.0, no_hit, part), 3.0);

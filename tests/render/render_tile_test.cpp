@@ -5,7 +5,9 @@
 #include "jtracer/parser.hpp"
 #include "jtracer/region.hpp"
 
+#include "render/camera_rays.hpp"
 #include "render/prepared_frame.hpp"
+#include "render/trace.hpp"
 
 #include <gtest/gtest.h>
 
@@ -69,10 +71,50 @@ TEST(RenderTile, TheViewTableIsBuiltOncePerFrame) {
     static_cast<void>(render_tile(*frame, {0, 0, 32, 32}));
     const ViewTable& table = frame->view_table();
     ASSERT_TRUE(table.built) << "the tiles traced through a view table";
-    const std::uint32_t* lists = table.shapes.data();
+    const ViewBand* lists = table.bands.data();
     static_cast<void>(render_tile(*frame, {32, 0, 64, 32}));
     EXPECT_EQ(&frame->view_table(), &table);
-    EXPECT_EQ(frame->view_table().shapes.data(), lists) << "later tiles reuse the same table";
+    EXPECT_EQ(frame->view_table().bands.data(), lists) << "later tiles reuse the same table";
+}
+
+TEST(RenderTile, BlocksThatMeetNothingAreTheBackgroundAsARayWouldFindIt) {
+    // No plane and no sky map: most blocks of the view table list no shape,
+    // and their pixels are written as the background without a ray. Each
+    // pixel and the count of rays must be what tracing every pixel's ray
+    // without the table gives, with a background that quantizing clamps.
+    ParseResult parsed = parse_scene(R"(
+render_settings { width: 67; height: 45; background: <0.3, 1.7, -0.2>; }
+cameras { perspective_camera { position: <0, 0, 9>; look_at: <0, 0, 0>; aspect: 1.49; } }
+scene {
+    sphere { center: <-2, 0.5, 0>; radius: 0.6; material { pigment: <1, 0.2, 0.1>; diffuse: <1, 1, 1>; } }
+    sphere { center: <1.5, -1, -1>; radius: 0.4; material { pigment: <0.2, 0.9, 0.1>; diffuse: <1, 1, 1>; } }
+    sphere { center: <2.2, 1.4, 1>; radius: 0.3; material { pigment: <0.2, 0.3, 1>; diffuse: <1, 1, 1>; } }
+    point_light { position: <3, 5, 4>; intensity: <1, 1, 1>; }
+}
+)");
+    ASSERT_TRUE(parsed.ok());
+    auto prepared = prepare_scene(parsed.scene).value();
+    RenderOptions options = render_options_for(parsed.scene);
+    options.previews = false;
+    const auto frame = prepare_frame(prepared, options);
+    const RenderedTile rendered = render_tile(*frame, {0, 0, 67, 45});
+    ASSERT_TRUE(frame->view_table().built);
+    std::uint64_t rays = 0;
+    int background = 0;
+    for (int y = 0; y < 45; ++y)
+        for (int x = 0; x < 67; ++x) {
+            const Vec3 d = camera_direction(frame->camera, x + 0.5, y + 0.5);
+            const Colour c =
+                trace_ray(*prepared, frame->camera.position, d, 0.0,
+                          {static_cast<std::uint32_t>(x), static_cast<std::uint32_t>(y), 0}, rays);
+            const std::uint8_t* p = rendered.pixels.pixel(x, y);
+            const std::uint8_t expected[3] = {quantize_channel(c.x), quantize_channel(c.y),
+                                              quantize_channel(c.z)};
+            ASSERT_TRUE(std::equal(p, p + 3, expected)) << "pixel " << x << ", " << y;
+            background += p[0] == 77 && p[1] == 255 && p[2] == 0;
+        }
+    EXPECT_EQ(rendered.rays, rays);
+    EXPECT_GT(background, 67 * 45 / 2) << "most of the image is the background";
 }
 
 }  // namespace

@@ -4,6 +4,7 @@
 // inside a sphere, with shapes behind the camera, at wide and narrow fields.
 
 #include "render/view_table.hpp"
+#include "geometry/intersect.hpp"
 
 #include "render/prepared_scene.hpp"
 #include "render/ray_queries.hpp"
@@ -15,6 +16,7 @@
 #include <algorithm>
 #include <array>
 #include <random>
+#include <vector>
 
 namespace jt::test {
 namespace {
@@ -24,6 +26,15 @@ CameraFrame view(const Vec3& eye, const Vec3& look_at, double fov, int width, in
     camera.fov = fov;
     camera.aspect = static_cast<double>(width) / height;
     return camera_frame(camera, width, height);
+}
+
+// Every block's list, row by row.
+std::vector<ListedShapes> block_lists(const ViewTable& table) {
+    std::vector<ListedShapes> lists;
+    for (int row = 0; row < table.rows; ++row)
+        for (int column = 0; column < table.columns; ++column)
+            lists.push_back(block_shapes(table, column, row));
+    return lists;
 }
 
 // Whether the ray through image point (x, y) hits anything, after checking
@@ -290,10 +301,10 @@ TEST(ViewTable, FromInsideASphereEveryBlockIsCoveredAndNothingBeyondItIsListed) 
     const CameraFrame camera = view({0, 0, 2}, {0, 0, -1}, 60, 64, 48);
     const ViewTable table = build_view_table(g, camera);
     ASSERT_TRUE(table.built);
-    for (std::size_t b = 0; b + 1 < table.block_start.size(); ++b) {
-        EXPECT_TRUE(table.covered[b]) << "block " << b;
-        for (std::uint32_t k = table.block_start[b]; k < table.block_start[b + 1]; ++k)
-            EXPECT_NE(table.shapes[k], 2u) << "the far sphere lies beyond the big one's far side";
+    for (const ListedShapes& list : block_lists(table)) {
+        EXPECT_TRUE(list.covered);
+        for (const std::uint32_t shape : list.shapes)
+            EXPECT_NE(shape, 2u) << "the far sphere lies beyond the big one's far side";
     }
     EXPECT_GT(check_view(g, camera, 6), 64 * 48);
 }
@@ -349,8 +360,7 @@ TEST(ViewTable, AWalkThatRunsLongHandsOverToTheBvh) {
     const ViewTable table = build_view_table(g, camera);
     ASSERT_TRUE(table.built);
     std::size_t longest = 0;
-    for (std::size_t b = 0; b + 1 < table.block_start.size(); ++b)
-        longest = std::max<std::size_t>(longest, table.block_start[b + 1] - table.block_start[b]);
+    for (const ListedShapes& list : block_lists(table)) longest = std::max(longest, list.size());
     EXPECT_GT(longest, 256u);
     int tiny = 0;
     for (int i = 0; i < 5000; ++i) {
@@ -376,25 +386,72 @@ TEST(ViewTable, NoneWithoutBoundedShapesOrWithoutAFrame) {
         build_view_table(*prepared->geometry, view({0, 2, 15}, {0, 0, 0}, 45, 32, 32)).built);
 }
 
+TEST(ViewTable, ACoveringSphereIsMetWithinItsBound) {
+    // A block a sphere covers has its corners within the inner sphere's cone;
+    // its rays, no wider from the centre's direction than its farthest
+    // corner, must meet the sphere (the exact test's root) no farther than
+    // the bound its list is cut at. Rays at exactly the farthest corner's
+    // angle and inside it; corners from the axis out to the inner sphere's
+    // rim; cameras far off, near the surface, inside, and in the thin shell
+    // between the inner and the true sphere; scales 1e-3 to 1e3.
+    std::mt19937 rng(5);
+    std::uniform_real_distribution<double> unit(-1.0, 1.0), fraction(0.0, 1.0);
+    int rays = 0;
+    for (int i = 0; i < 40000; ++i) {
+        const double scale = std::pow(10.0, 6.0 * fraction(rng) - 3.0);
+        const double radius = scale * (0.1 + fraction(rng));
+        const double distance = i % 10 == 0 ? radius * (1.0 - 1e-9 * fraction(rng))
+                                : i % 10 == 1
+                                    ? radius * fraction(rng)
+                                    : radius * (1.0 + std::pow(10.0, 4.0 * fraction(rng) - 3.0));
+        const Vec3 center =
+            distance * glm::normalize(Vec3(unit(rng), unit(rng), unit(rng)) + Vec3(0, 0, 1e-3));
+        const PaddedBound padded = padded_bound(center, radius, Vec3(0.0));
+        const double inner = std::max(radius * (1.0 - 1e-7) - 1e-9 * padded.distance, 0.0);
+        const double length = glm::length(center);
+        if (!(length > inner)) continue;
+        // The farthest corner's angle, up to the inner sphere's rim; a ray
+        // at that angle, or within it.
+        const double rim = std::asin(inner / length);
+        const double farthest = rim * (i % 4 == 0 ? 1.0 : fraction(rng));
+        const double angle = farthest * (i % 3 == 0 ? 1.0 : std::sqrt(fraction(rng)));
+        const double bound =
+            covered_hit_bound(padded.distance, inner, padded.radius, std::cos(farthest));
+        const Vec3 axis = center / length;
+        const Vec3 side = glm::normalize(glm::cross(axis, Vec3(unit(rng), unit(rng), unit(rng))));
+        const Vec3 d = glm::normalize(std::cos(angle) * axis + std::sin(angle) * side);
+        const double t = intersect_sphere(Vec3(0.0), d, center, radius, 0.0, 1e300);
+        if (t == no_hit) continue;
+        ++rays;
+        ASSERT_LE(t, bound) << "ray " << i << ": distance " << distance << ", radius " << radius
+                            << ", angle " << angle << " of " << farthest;
+    }
+    EXPECT_GT(rays, 30000);
+}
+
 TEST(ViewTable, ListsAreNearestFirstWithTrueLowerBounds) {
     auto prepared = crowd(200, 26);
     const Geometry& g = *prepared->geometry;
     const CameraFrame camera = view({0, 2, 15}, {0, 0, 0}, 45, 64, 36);
     const ViewTable table = build_view_table(g, camera);
     ASSERT_TRUE(table.built);
+    const std::vector<ListedShapes> lists = block_lists(table);
     std::size_t listed = 0;
-    for (std::size_t b = 0; b + 1 < table.block_start.size(); ++b)
-        for (std::uint32_t k = table.block_start[b]; k < table.block_start[b + 1]; ++k) {
+    for (const ListedShapes& list : lists)
+        for (std::size_t k = 0; k < list.size(); ++k) {
             ++listed;
-            if (k > table.block_start[b]) {
-                EXPECT_LE(table.nearest[k - 1], table.nearest[k]);
+            if (k > 0) {
+                EXPECT_LE(list.nearest[k - 1], list.nearest[k]);
             }
-            if (table.shapes[k] & shape_flag) continue;
-            const WorldSphere& s = g.spheres[table.shapes[k]];
-            EXPECT_LT(table.nearest[k], glm::length(s.center - camera.position) - s.radius);
+            if (list.shapes[k] & shape_flag) continue;
+            const WorldSphere& s = g.spheres[list.shapes[k]];
+            EXPECT_LT(list.nearest[k], glm::length(s.center - camera.position) - s.radius);
+            // Never above the padded bound it stores (a float rounded to
+            // nearest would be, for about half the shapes).
+            EXPECT_LE(list.nearest[k], padded_bound(s.center, s.radius, camera.position).nearest);
         }
     // Blocks of 4x4 pixels list a few shapes each, not the crowd.
-    EXPECT_LT(listed, 16u * (table.block_start.size() - 1));
+    EXPECT_LT(listed, 16u * lists.size());
 }
 
 }  // namespace

@@ -3,14 +3,15 @@
 #include "render/prepared_scene.hpp"
 
 #include <tbb/parallel_for.h>
+#include <tbb/parallel_reduce.h>
 
 #include <glm/geometric.hpp>
 
 #include <algorithm>
 #include <array>
+#include <atomic>
 #include <cmath>
 #include <limits>
-#include <numbers>
 
 namespace jt {
 
@@ -42,6 +43,10 @@ constexpr double min_face_component = 0.57735026918962576 - 1e-6;
 
 // The narrowest face window: the slack twice over.
 constexpr double min_window = 4.0 * coordinate_slack;
+
+// Shapes a task takes when a table's cones and cells are worked out in
+// parallel: a few hundred trigonometric calls, well above a task's cost.
+constexpr std::size_t shapes_a_task = 256;
 
 struct BoundingSphere {
     Vec3 center;
@@ -85,21 +90,23 @@ struct CellCone {
 std::vector<CellCone> cell_cones(int resolution, const FaceWindow& window) {
     std::vector<CellCone> cones(static_cast<std::size_t>(resolution) * resolution);
     const double u_step = 1.0 / window.u_scale, v_step = 1.0 / window.v_scale;
-    for (int iv = 0; iv < resolution; ++iv)
+    tbb::parallel_for(0, resolution, [&](int iv) {
         for (int iu = 0; iu < resolution; ++iu) {
             const double u0 = window.u0 + iu * u_step, v0 = window.v0 + iv * v_step;
             const Vec3 centre = glm::normalize(Vec3(u0 + 0.5 * u_step, v0 + 0.5 * v_step, 1.0));
-            double radius = 0.0;
+            // The farthest corner is the one of the smallest cosine: one arc
+            // cosine, of that, gives the largest angle.
+            double cos_farthest = 1.0;
             for (double du : {0.0, u_step})
                 for (double dv : {0.0, v_step}) {
                     Vec3 corner = glm::normalize(Vec3(u0 + du, v0 + dv, 1.0));
-                    radius = std::max(radius,
-                                      std::acos(std::clamp(glm::dot(centre, corner), -1.0, 1.0)));
+                    cos_farthest = std::min(cos_farthest, glm::dot(centre, corner));
                 }
-            radius += angle_slack;
+            const double radius = std::acos(std::clamp(cos_farthest, -1.0, 1.0)) + angle_slack;
             cones[static_cast<std::size_t>(iv) * resolution + iu] = {
                 centre.x, centre.y, centre.z, std::cos(radius), std::sin(radius)};
         }
+    });
     return cones;
 }
 
@@ -108,16 +115,48 @@ struct Range {
     double low, high;
 };
 
+// The face coordinates that a table's shapes reach on one face; none yet
+// when low > high.
+struct FaceSpan {
+    Range u{std::numeric_limits<double>::infinity(), -std::numeric_limits<double>::infinity()};
+    Range v = u;
+    void add(const Range& u_range, const Range& v_range) {
+        u = {std::min(u.low, u_range.low), std::max(u.high, u_range.high)};
+        v = {std::min(v.low, v_range.low), std::max(v.high, v_range.high)};
+    }
+    void add(const FaceSpan& other) { add(other.u, other.v); }
+};
+using FaceSpans = std::array<FaceSpan, 6>;
+
+// Every face whole: a shape around the point is listed in every cell.
+FaceSpans whole_faces() {
+    FaceSpans spans;
+    for (FaceSpan& s : spans) s = {{-1.0, 1.0}, {-1.0, 1.0}};
+    return spans;
+}
+
+// A cone of directions: those within `angle` of the unit `axis`, with the
+// angle's cosine and sine, which is how the tests below use it.
+struct Cone {
+    Vec3 axis;
+    double cos_angle, sin_angle;
+};
+
 // Calls visit(face, u, v) with the ranges of face coordinates that directions
-// within `angle` of the unit `axis` may take on each face they may lie on.
+// in the cone may take on each face they may lie on.
 template <typename Visit>
-void face_ranges(const Vec3& axis, double angle, Visit&& visit) {
-    // The range of each component of a direction in the cone.
+void face_ranges(const Cone& cone, Visit&& visit) {
+    // The range of each component of a direction in the cone: from the cosine
+    // of the axis's angle theta to component i, cos(theta +- angle) by the sum
+    // formula, or -1 and 1 where theta + angle reaches pi and theta - angle 0.
+    // Its rounding (~1e-8 where the axis lies along i) is far inside the slack.
+    const double ca = cone.cos_angle, sa = cone.sin_angle;
     std::array<double, 3> lo{}, hi{};
     for (int i = 0; i < 3; ++i) {
-        const double theta = std::acos(std::clamp(axis[i], -1.0, 1.0));
-        lo[i] = std::cos(std::min(std::numbers::pi, theta + angle)) - angle_slack;
-        hi[i] = std::cos(std::max(0.0, theta - angle)) + angle_slack;
+        const double c = std::clamp(cone.axis[i], -1.0, 1.0);
+        const double s = std::sqrt(std::max(0.0, 1.0 - c * c));
+        lo[i] = (ca <= -c ? -1.0 : c * ca - s * sa) - angle_slack;
+        hi[i] = (ca <= c ? 1.0 : c * ca + s * sa) + angle_slack;
     }
     for (int face = 0; face < 6; ++face) {
         const auto [k, j, l] = face_axes(face / 2);
@@ -136,14 +175,14 @@ void face_ranges(const Vec3& axis, double angle, Visit&& visit) {
     }
 }
 
-// Calls add(cell) for every cell whose cone meets the cone of directions
-// within `angle` of the unit `axis`. `cones`: each face's cells' cones.
+// Calls add(cell) for every cell whose cone meets `cone`. `cones`: each
+// face's cells' cones.
 template <typename Add>
-void rasterise_cone(const Vec3& axis, double angle, int resolution,
-                    const std::array<FaceWindow, 6>& windows,
+void rasterise_cone(const Cone& cone, int resolution, const std::array<FaceWindow, 6>& windows,
                     const std::array<std::vector<CellCone>, 6>& cones, Add&& add) {
-    const double cos_angle = std::cos(angle), sin_angle = std::sin(angle);
-    face_ranges(axis, angle, [&](int face, Range u, Range v) {
+    const Vec3& axis = cone.axis;
+    const double cos_angle = cone.cos_angle, sin_angle = cone.sin_angle;
+    face_ranges(cone, [&](int face, Range u, Range v) {
         const FaceWindow& w = windows[static_cast<std::size_t>(face)];
         const auto [k, j, l] = face_axes(face / 2);
         const double sign = face % 2 == 0 ? 1.0 : -1.0;
@@ -196,8 +235,7 @@ DirectionTable build_direction_table(const Geometry& geometry, const Vec3& posit
     // shape listed in every cell; then each face's window over the cones
     // that reach it, a whole face where a shape is listed everywhere.
     struct ShapeCone {
-        Vec3 axis;
-        double angle;
+        Cone cone;
         bool everywhere;
     };
     std::vector<ShapeCone> shape_cones(shapes);
@@ -208,35 +246,48 @@ DirectionTable build_direction_table(const Geometry& geometry, const Vec3& posit
         nearest_of[slot] = padded.nearest;
         const bool everywhere = !(distance > radius) || !std::isfinite(distance) ||
                                 radius / distance > std::sin(max_cone_angle);
-        shape_cones[slot] = everywhere
-                                ? ShapeCone{Vec3(0.0), 0.0, true}
-                                : ShapeCone{(b.center - position) / distance,
-                                            std::asin(radius / distance) + angle_slack, false};
-    };
-    for (std::size_t i = 0; i < geometry.spheres.size(); ++i)
-        cone_of({geometry.spheres[i].center, geometry.spheres[i].radius}, i);
-    for (std::size_t i = 0; i < geometry.shapes.size(); ++i)
-        cone_of(bounding_sphere(geometry.shapes[i]), geometry.spheres.size() + i);
-    constexpr double none = std::numeric_limits<double>::infinity();
-    std::array<std::array<double, 4>, 6> spans;  // u low, u high, v low, v high
-    spans.fill({none, -none, none, -none});
-    for (const ShapeCone& c : shape_cones) {
-        if (c.everywhere) {
-            spans.fill({-1.0, 1.0, -1.0, 1.0});
-            break;
+        if (everywhere) {
+            shape_cones[slot] = {{Vec3(0.0), 1.0, 0.0}, true};
+            return;
         }
-        face_ranges(c.axis, c.angle, [&](int face, Range u, Range v) {
-            std::array<double, 4>& s = spans[static_cast<std::size_t>(face)];
-            s = {std::min(s[0], u.low), std::max(s[1], u.high), std::min(s[2], v.low),
-                 std::max(s[3], v.high)};
+        const double angle = std::asin(radius / distance) + angle_slack;
+        shape_cones[slot] = {{(b.center - position) / distance, std::cos(angle), std::sin(angle)},
+                             false};
+    };
+    tbb::parallel_for(
+        tbb::blocked_range<std::size_t>(0, shapes, shapes_a_task),
+        [&](const tbb::blocked_range<std::size_t>& range) {
+            for (std::size_t i = range.begin(); i != range.end(); ++i)
+                cone_of(i < geometry.spheres.size()
+                            ? BoundingSphere{geometry.spheres[i].center, geometry.spheres[i].radius}
+                            : bounding_sphere(geometry.shapes[i - geometry.spheres.size()]),
+                        i);
         });
-    }
+    // Each face's span of the cones, as a minimum and maximum: the same
+    // whatever order the threads join them in.
+    const FaceSpans spans = tbb::parallel_reduce(
+        tbb::blocked_range<std::size_t>(0, shapes, shapes_a_task), FaceSpans{},
+        [&](const tbb::blocked_range<std::size_t>& range, FaceSpans spans) {
+            for (std::size_t i = range.begin(); i != range.end(); ++i) {
+                const ShapeCone& c = shape_cones[i];
+                if (c.everywhere) return whole_faces();
+                face_ranges(c.cone, [&](int face, Range u, Range v) {
+                    spans[static_cast<std::size_t>(face)].add(u, v);
+                });
+            }
+            return spans;
+        },
+        [](FaceSpans a, const FaceSpans& b) {
+            for (std::size_t face = 0; face < 6; ++face) a[face].add(b[face]);
+            return a;
+        });
     // Faces of the same window (whole faces, round a light among the shapes)
-    // share their cells' cones: four arc cosines a cell.
+    // share their cells' cones: five normalisations and a few trigonometric
+    // calls a cell.
     std::array<std::vector<CellCone>, 6> cones;
     for (std::size_t face = 0; face < 6; ++face) {
-        const std::array<double, 4>& s = spans[face];
-        const FaceWindow w = window_over(s[0], s[1], s[2], s[3], r);
+        const FaceSpan& s = spans[face];
+        const FaceWindow w = window_over(s.u.low, s.u.high, s.v.low, s.v.high, r);
         table.windows[face] = w;
         if (!(w.u_scale > 0.0)) continue;
         for (std::size_t other = 0; other < face && cones[face].empty(); ++other) {
@@ -259,36 +310,50 @@ DirectionTable build_direction_table(const Geometry& geometry, const Vec3& posit
     std::stable_sort(order.begin(), order.end(), [&](std::uint32_t a, std::uint32_t b) {
         return nearest_of[a] < nearest_of[b];
     });
+    // Runs of shapes in that order are rasterised in parallel, each into its
+    // own pairs; taken run by run, the pairs are in the order a single pass
+    // would give.
     const auto spheres = static_cast<std::uint32_t>(geometry.spheres.size());
-    std::vector<Listing> pairs;
-    for (const std::uint32_t slot : order) {
-        const std::uint32_t candidate = slot < spheres ? slot : (slot - spheres) | shape_flag;
-        const ShapeCone& c = shape_cones[slot];
-        if (c.everywhere) {
-            for (std::size_t cell = 0; cell < cells; ++cell)
-                pairs.push_back({static_cast<std::uint32_t>(cell), candidate});
-        } else {
-            rasterise_cone(c.axis, c.angle, r, table.windows, cones, [&](std::size_t cell) {
-                pairs.push_back({static_cast<std::uint32_t>(cell), candidate});
-            });
+    std::vector<std::vector<Listing>> runs((shapes + shapes_a_task - 1) / shapes_a_task);
+    std::atomic<std::size_t> listed{0};
+    tbb::parallel_for(std::size_t{0}, runs.size(), [&](std::size_t run) {
+        std::vector<Listing>& pairs = runs[run];
+        const std::size_t end = std::min(shapes, (run + 1) * shapes_a_task);
+        for (std::size_t at = run * shapes_a_task; at < end; ++at) {
+            if (listed.load(std::memory_order_relaxed) > max_listed) return;
+            const std::size_t before = pairs.size();
+            const std::uint32_t slot = order[at];
+            const std::uint32_t candidate = slot < spheres ? slot : (slot - spheres) | shape_flag;
+            const ShapeCone& c = shape_cones[slot];
+            if (c.everywhere) {
+                for (std::size_t cell = 0; cell < cells; ++cell)
+                    pairs.push_back({static_cast<std::uint32_t>(cell), candidate});
+            } else {
+                rasterise_cone(c.cone, r, table.windows, cones, [&](std::size_t cell) {
+                    pairs.push_back({static_cast<std::uint32_t>(cell), candidate});
+                });
+            }
+            listed.fetch_add(pairs.size() - before, std::memory_order_relaxed);
         }
-        if (pairs.size() > max_listed) return {};
-    }
+    });
+    if (listed.load() > max_listed) return {};
 
     table.resolution = r;
     table.cell_start.assign(cells + 1, 0);
-    for (const Listing& p : pairs) ++table.cell_start[p.cell + 1];
+    for (const std::vector<Listing>& pairs : runs)
+        for (const Listing& p : pairs) ++table.cell_start[p.cell + 1];
     for (std::size_t c = 0; c < cells; ++c) table.cell_start[c + 1] += table.cell_start[c];
     std::vector<std::uint32_t> fill(table.cell_start.begin(), table.cell_start.end() - 1);
-    table.shapes.resize(pairs.size());
-    table.nearest.resize(pairs.size());
-    for (const Listing& p : pairs) {
-        const std::uint32_t at = fill[p.cell]++;
-        table.shapes[at] = p.candidate;
-        table.nearest[at] =
-            nearest_of[p.candidate & shape_flag ? spheres + (p.candidate & ~shape_flag)
-                                                : p.candidate];
-    }
+    table.shapes.resize(listed.load());
+    table.nearest.resize(listed.load());
+    for (const std::vector<Listing>& pairs : runs)
+        for (const Listing& p : pairs) {
+            const std::uint32_t at = fill[p.cell]++;
+            table.shapes[at] = p.candidate;
+            table.nearest[at] = listed_distance(
+                nearest_of[p.candidate & shape_flag ? spheres + (p.candidate & ~shape_flag)
+                                                    : p.candidate]);
+        }
     return table;
 }
 

@@ -41,7 +41,7 @@ struct DirectionTable {
     std::array<FaceWindow, 6> windows;
     std::vector<std::uint32_t> cell_start;  // 6 * resolution^2 + 1 offsets into `shapes`
     std::vector<std::uint32_t> shapes;      // each cell's nearest first
-    std::vector<double> nearest;            // parallel to `shapes`: see ListedShapes
+    std::vector<ListedDistance> nearest;    // parallel to `shapes`: see ListedShapes
 };
 
 // Cells along a cube face's edge for a table of `shapes` shapes.

@@ -3,6 +3,7 @@
 // ray's origin or end (view_table.hpp, direction_table.hpp): testing those,
 // exactly as the BVH callbacks would, gives the same answer bit for bit.
 
+#include "geometry/float_step.hpp"
 #include "jtracer/scene.hpp"
 
 #include <glm/geometric.hpp>
@@ -19,12 +20,23 @@ namespace jt {
 // with `shape_flag` set.
 inline constexpr std::uint32_t shape_flag = 0x80000000u;
 
+// How near a listed shape may come to a list's point: a float at or below the
+// double bound, so a walk may test a shape more than the double would have
+// let it, never one fewer, and the answer stays the same. Half the bytes of a
+// double: the tables of nested_shells list some two million shapes, and each
+// fresh page they take costs its fault before the first pixel.
+using ListedDistance = float;
+
+inline ListedDistance listed_distance(double nearest) {
+    return float_at_or_below(nearest);
+}
+
 // No point of shapes[i] is nearer the table's point than nearest[i], and
 // nearest never decreases along the list: a walk stops at the first shape that
 // lies beyond the hit it has (or beyond the light).
 struct ListedShapes {
     std::span<const std::uint32_t> shapes;
-    std::span<const double> nearest;
+    std::span<const ListedDistance> nearest;
     // The list holds a sphere that every ray it serves meets: a walk of even
     // a long list ends at that sphere's hit or soon after.
     bool covered = false;

@@ -221,15 +221,16 @@ Expected<std::shared_ptr<Geometry>> gather_geometry(const Scene& scene) {
     return g;
 }
 
-// The BVH over the gathered spheres and shapes, with the lists it needs;
-// none for a handful of them.
-void build_bvh(Geometry& g) {
-    std::size_t bounded = g.spheres.size() + g.shapes.size();
+// The gathered shapes as the BVH and the tables read them: in the order the
+// BVH builder wants, each transformed shape's box grown by the slack and its
+// bounding sphere around that box. The scene's magnitude before the slack,
+// which the BVH needs; none for a handful of shapes, which need no BVH.
+std::optional<double> finish_shapes(Geometry& g) {
+    const std::size_t bounded = g.spheres.size() + g.shapes.size();
     if (bounded <= brute_force_limit) {
         for (TransformedShape& s : g.shapes) add_bounding_sphere(s);
-        return;
+        return std::nullopt;
     }
-
     if (bounded > fast_build_threshold) sort_spheres_along_a_curve(g.spheres);
     const double magnitude = scene_magnitude(g);
     g.bounds_slack = 1e-6 * magnitude;
@@ -242,6 +243,13 @@ void build_bvh(Geometry& g) {
         s.bounds.upper_z += static_cast<float>(g.bounds_slack);
         add_bounding_sphere(s);  // for the direction tables' lists, which have no boxes
     }
+    return magnitude;
+}
+
+// The BVH over finished shapes (finish_shapes), with the lists it needs. It
+// leaves the shapes as they are, so the light tables may be built beside it.
+void build_bvh(Geometry& g, double magnitude) {
+    const std::size_t bounded = g.spheres.size() + g.shapes.size();
     // Past half of Embree's reach, a padded box may reach beyond it; below,
     // none of the spheres' can (their padding is a few millionths of the
     // magnitude), and the pass is saved. NaN takes the pass.
@@ -276,6 +284,20 @@ void build_bvh(Geometry& g) {
     rtcCommitScene(g.bvh);
     g.crowded = spheres_overlap_heavily(g.spheres);
     if (g.crowded) build_shadow_spheres(g, magnitude, quality);
+}
+
+// The BVH and the light tables of freshly gathered shapes. The tables read
+// only the finished shapes, as the BVH does, so they are built beside it: a
+// table around one light is otherwise a stretch of the set-up with one busy
+// core.
+std::vector<DirectionTable> build_bvh_and_light_tables(Geometry& g,
+                                                       const std::vector<PointLight>& lights) {
+    const std::optional<double> magnitude = finish_shapes(g);
+    if (!magnitude) return build_light_tables(g, lights);
+    std::vector<DirectionTable> tables;
+    tbb::parallel_invoke([&] { build_bvh(g, *magnitude); },
+                         [&] { tables = build_light_tables(g, lights); });
+    return tables;
 }
 
 // Each primitive's shape and world-to-object map when any material has a
@@ -421,6 +443,7 @@ Expected<std::shared_ptr<const PreparedScene>> prepare(
     GeometryDigest digest = may_reuse ? digest_geometry(scene) : GeometryDigest{};
     const bool reuse = may_reuse && previous->geometry->digest == digest;
     std::shared_ptr<Geometry> built_geometry;
+    std::optional<std::vector<DirectionTable>> built_tables;  // with built_geometry
     std::optional<Error> build_error;
     auto build = [&] {
         if (reuse) return;
@@ -431,7 +454,7 @@ Expected<std::shared_ptr<const PreparedScene>> prepare(
         }
         built_geometry = std::move(*gathered);
         // A scene handed over is freed first (below); one shared stays anyway.
-        if (!handed) build_bvh(*built_geometry);
+        if (!handed) built_tables = build_bvh_and_light_tables(*built_geometry, scene.lights);
     };
     auto read_materials = [&] {
         prepared->materials_gathered = scene.primitives.size();
@@ -469,7 +492,8 @@ Expected<std::shared_ptr<const PreparedScene>> prepare(
     if (build_error) return *build_error;
     if (handed) {
         handed->primitives = std::vector<Primitive>();
-        if (built_geometry) build_bvh(*built_geometry);
+        if (built_geometry)
+            built_tables = build_bvh_and_light_tables(*built_geometry, scene.lights);
     }
     if (built_geometry) {
         built_geometry->digest = digest;
@@ -480,7 +504,11 @@ Expected<std::shared_ptr<const PreparedScene>> prepare(
     if (Expected<void> textures = load_textures(scene, *prepared, previous.get()); !textures)
         return textures.error();
     prepared->lights = scene.lights;
-    if (previous && previous->geometry == prepared->geometry && previous->lights == scene.lights)
+    if (built_tables)
+        prepared->light_tables =
+            std::make_shared<const std::vector<DirectionTable>>(std::move(*built_tables));
+    else if (previous && previous->geometry == prepared->geometry &&
+             previous->lights == scene.lights)
         prepared->light_tables = previous->light_tables;
     else
         prepared->light_tables = std::make_shared<const std::vector<DirectionTable>>(

@@ -5,6 +5,7 @@
 #include "render/far_ray.hpp"
 #include "render/float_ray.hpp"
 #include "render/shadow_spheres.hpp"
+#include "render/sphere_batch.hpp"
 
 #include <glm/geometric.hpp>
 
@@ -22,9 +23,9 @@ namespace {
 
 constexpr std::uint32_t no_source = std::numeric_limits<std::uint32_t>::max();
 
-// A direction table cell with more shapes than this leaves the ray to the BVH
-// (a closest-hit query, once it has tested as many): testing each costs more
-// than Embree's walk past most of them.
+// A shadow ray whose walk of its light's cell would test more shapes than
+// this, or a closest-hit query that has tested as many of its list, is left
+// to the BVH: testing each costs more than Embree's walk past most of them.
 constexpr std::size_t max_cell_candidates = 16;
 // Where the spheres overlap heavily (Geometry::crowded), testing a light's
 // cell list beats the BVH walk, even the shadow BVH's, up to about this many
@@ -34,6 +35,10 @@ constexpr std::size_t short_candidate_list = 2;
 // A covered list is walked however long it is, but only so far: a walk that
 // has tested this many without settling the ray hands it to the BVH.
 constexpr std::size_t max_covered_position = 256;
+// A covered list at least this long is walked in batches (closest_by_listed);
+// a shorter one mostly ends at its first shapes, where a batch costs more than
+// it decides.
+constexpr std::size_t min_batched_list = 16;
 
 // Embree hands our callbacks the context pointer we passed in; the query
 // structs start with it so that they can be found again from it.
@@ -205,6 +210,33 @@ OccluderHint hint_for(std::uint32_t listed) {
             listed & ~shape_flag};
 }
 
+// The spheres among the `count` (at most sphere_batch) listed shapes from
+// `first`, as lanes of a batch; the bits of the lanes that hold one. Lanes
+// past the list, and lanes of transformed shapes, hold the first sphere and
+// are not read.
+[[gnu::always_inline]] inline unsigned batch_lanes(const Geometry& g, const std::uint32_t* first,
+                                                   std::size_t count,
+                                                   const WorldSphere* (&lanes)[sphere_batch]) {
+    unsigned spheres = 0;
+    for (std::size_t j = 0; j < sphere_batch; ++j) {
+        const std::uint32_t shape = j < count ? first[j] : shape_flag;
+        const bool sphere = !(shape & shape_flag);
+        lanes[j] = g.spheres.data() + (sphere ? shape : 0u);
+        spheres |= static_cast<unsigned>(sphere) << j;
+    }
+    return spheres;
+}
+
+// spheres_missed_early, in AVX where the processor has it.
+template <bool DecideEntryBeyond>
+[[gnu::always_inline]] inline unsigned batch_missed_early(
+    bool avx, const WorldSphere* const (&lanes)[sphere_batch], const BatchRay& ray, double t_max) {
+#if defined(JT_SPHERE_BATCH_AVX)
+    if (avx) return spheres_missed_early_avx<DecideEntryBeyond>(lanes, ray, t_max);
+#endif
+    return spheres_missed_early<DecideEntryBeyond>(lanes, ray, t_max);
+}
+
 bool occluded_by_testing_all(const Geometry& g, const Vec3& origin, const Vec3& direction,
                              double t_min, double t_max, OccluderHint& blocker) {
     const auto spheres = static_cast<std::uint32_t>(g.spheres.size());
@@ -219,6 +251,24 @@ bool occluded_by_testing_all(const Geometry& g, const Vec3& origin, const Vec3& 
     return false;
 }
 
+// How near the light a shape must come to be walked for a shadow ray: a
+// blocker lies nearer the light than the ray's origin (a list's `nearest`
+// are distances from the light).
+[[gnu::always_inline]] inline double light_walk_reach(const Vec3& direction, double t_max) {
+    return t_max * glm::length(direction) * (1.0 + 1e-9);
+}
+
+// Whether the walk of a light's list for a shadow ray tests at most `limit`
+// shapes: the list is that short, or its shape at `limit` already lies
+// beyond the ray's origin, where the walk stops. A long list often serves
+// rays from shapes near its light's end: the shapes behind them are listed
+// too, but never walked.
+[[gnu::always_inline]] inline bool light_walk_within(const ListedShapes& listed,
+                                                     const Vec3& direction, double t_max,
+                                                     std::size_t limit) {
+    return listed.size() <= limit || listed.nearest[limit] >= light_walk_reach(direction, t_max);
+}
+
 // The walk of a direction table's list around the light the ray runs to: a
 // blocker lies between the origin and the light, so nearer the light than
 // the origin is, and the walk stops at the first shape that is not. Forced
@@ -230,7 +280,7 @@ bool occluded_by_testing_all(const Geometry& g, const Vec3& origin, const Vec3& 
                                                       OccluderHint& blocker) {
     // Most cells list nothing: no square root for those.
     if (listed.size() == 0) return false;
-    const double reach = t_max * glm::length(direction) * (1.0 + 1e-9);
+    const double reach = light_walk_reach(direction, t_max);
     for (std::size_t k = 0; k < listed.size() && listed.nearest[k] < reach; ++k) {
         if (listed_blocks(g, listed.shapes[k], origin, direction, t_min, t_max)) {
             blocker = hint_for(listed.shapes[k]);
@@ -245,12 +295,54 @@ bool occluded_by_testing_all(const Geometry& g, const Vec3& origin, const Vec3& 
 // settles the ray; false when `limit` shapes were tested first, and the rest
 // of the list is left to the BVH (the best hit so far stays in the query, and
 // the answer is the nearest of all, whichever found it).
+//
+// A covered list (heavily overlapping spheres) of min_batched_list shapes or
+// more is walked in batches: the spheres among the next few shapes the walk
+// may reach are first given the early tests of intersect_sphere together
+// (sphere_batch.hpp), against the best hit as it stands. The ones those
+// decide would answer no_hit to any nearer best hit too, and are passed over;
+// the rest are offered one by one, in list order, each after the walk's own
+// test of whether it goes on. Most spheres of such a list lie beyond the
+// nearest hit or pass wide of the ray. Other lists, and short covered ones,
+// mostly end at their first or second shape, where a batch would only add
+// work: they are walked one shape at a time.
 bool closest_by_listed(ClosestQuery& q, const ListedShapes& listed, std::size_t limit) {
     const double length = glm::length(q.direction);
-    for (std::size_t k = 0; k < listed.size(); ++k) {
-        if (listed.nearest[k] > q.t * length) return true;
+    const std::size_t size = listed.size();
+    if (!listed.covered || size < min_batched_list) {
+        for (std::size_t k = 0; k < size; ++k) {
+            if (listed.nearest[k] > q.t * length) return true;
+            if (k == limit) return false;
+            offer_listed(q, listed.shapes[k]);
+        }
+        return true;
+    }
+    const BatchRay ray = batch_ray(q.origin, q.direction, q.t_min);
+    const bool avx = sphere_batch_avx();
+    std::size_t k = 0;
+    while (k < size) {
+        const double reach = q.t * length;
+        if (listed.nearest[k] > reach) return true;
         if (k == limit) return false;
-        offer_listed(q, listed.shapes[k]);
+        // The shapes the walk reaches unless a hit among them stops it.
+        const std::size_t end = std::min({size, limit, k + sphere_batch});
+        std::size_t count = 1;
+        while (k + count < end && !(listed.nearest[k + count] > reach)) ++count;
+        const WorldSphere* lanes[sphere_batch];
+        const unsigned spheres =
+            count == 1 ? 0u : batch_lanes(*q.geometry, &listed.shapes[k], count, lanes);
+        if (spheres == 0) {
+            offer_listed(q, listed.shapes[k]);
+            ++k;
+            continue;
+        }
+        const unsigned missed =
+            batch_missed_early<true>(avx, lanes, ray, just_beyond(q.t)) & spheres;
+        for (std::size_t j = 0; j < count; ++j) {
+            if (j > 0 && listed.nearest[k + j] > q.t * length) return true;
+            if (!(missed >> j & 1u)) offer_listed(q, listed.shapes[k + j]);
+        }
+        k += count;
     }
     return true;
 }
@@ -427,12 +519,17 @@ bool closest_hit(const Geometry& geometry, const Vec3& origin, const Vec3& direc
     // (heavily overlapping spheres): that sphere's hit soon ends the walk,
     // long before Embree would have offered every sphere whose box the ray
     // crosses. Past max_covered_position shapes the BVH walk takes over from
-    // the best hit so far.
+    // the best hit so far. Any other long list has its head walked: its
+    // nearest shapes often settle the ray, and where they do not, the BVH
+    // walk starts from their best hit.
     bool settled = false;
-    if (candidates &&
-        (!geometry.bvh || candidates->size() <= max_cell_candidates || candidates->covered))
-        settled = closest_by_listed(q, *candidates,
-                                    geometry.bvh ? max_covered_position : candidates->size());
+    if (candidates) {
+        const std::size_t limit = !geometry.bvh ? candidates->size()
+                                  : candidates->size() <= max_cell_candidates || candidates->covered
+                                      ? max_covered_position
+                                      : max_cell_candidates;
+        settled = closest_by_listed(q, *candidates, limit);
+    }
     if (!settled && !geometry.bvh) {
         closest_by_testing_all(q);
     } else if (!settled) {
@@ -500,6 +597,9 @@ bool shapes_toward_disk(const Geometry& geometry, const Vec3& point, double lift
     // origins, directions and disk points.
     const double spread =
         radius * (1.0 + 1e-6) + 2.0 * lift + 1e-7 * (max_abs(point) + max_abs(centre) + radius);
+    // Sorted by the doubles: shapes whose bounds round to one float keep the
+    // order of their bounds.
+    std::array<double, max_disk_candidates> exact;
     auto offer = [&](std::uint32_t listed, const Vec3& c, double r) {
         const PaddedBound b = padded_bound(c, r, point);
         const Vec3 f = c - point;
@@ -510,11 +610,11 @@ bool shapes_toward_disk(const Geometry& geometry, const Vec3& point, double lift
         // Kept nearest first (insertion: a handful of shapes).
         std::size_t k = out.count++;
         const double nearest = std::max(0.0, b.nearest - 2.0 * lift);
-        for (; k > 0 && out.nearest[k - 1] > nearest; --k) {
-            out.nearest[k] = out.nearest[k - 1];
+        for (; k > 0 && exact[k - 1] > nearest; --k) {
+            exact[k] = exact[k - 1];
             out.shapes[k] = out.shapes[k - 1];
         }
-        out.nearest[k] = nearest;
+        exact[k] = nearest;
         out.shapes[k] = listed;
     };
     for (std::uint32_t i = 0; i < geometry.spheres.size(); ++i)
@@ -522,6 +622,7 @@ bool shapes_toward_disk(const Geometry& geometry, const Vec3& point, double lift
     for (std::uint32_t i = 0; i < geometry.shapes.size(); ++i)
         offer(i | shape_flag, geometry.shapes[i].bounding_center,
               std::sqrt(geometry.shapes[i].bounding_radius_sq));
+    for (std::size_t k = 0; k < out.count; ++k) out.nearest[k] = listed_distance(exact[k]);
     return true;
 }
 
@@ -558,7 +659,8 @@ bool occluded(const Geometry& geometry, const Vec3& origin, const Vec3& directio
         return true;
     OccluderHint blocker;
     bool blocked = unbounded_blocks(geometry, origin, direction, t_min, t_max, blocker);
-    if (!blocked && candidates && (!geometry.bvh || candidates->size() <= max_cell_candidates)) {
+    if (!blocked && candidates &&
+        (!geometry.bvh || light_walk_within(*candidates, direction, t_max, max_cell_candidates))) {
         blocked =
             occluded_by_listed(geometry, *candidates, origin, direction, t_min, t_max, blocker);
     } else if (!blocked && !geometry.bvh) {

@@ -82,7 +82,7 @@ void occluded_together(const Geometry& geometry, std::span<const ShadowRay> rays
 inline constexpr std::size_t max_disk_candidates = 64;
 struct DiskCandidates {
     std::array<std::uint32_t, max_disk_candidates> shapes;
-    std::array<double, max_disk_candidates> nearest;
+    std::array<ListedDistance, max_disk_candidates> nearest;
     std::size_t count = 0;
     ListedShapes listed() const { return {{shapes.data(), count}, {nearest.data(), count}}; }
 };

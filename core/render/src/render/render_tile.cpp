@@ -13,6 +13,7 @@
 #include <tbb/task_arena.h>
 
 #include <algorithm>
+#include <array>
 #include <optional>
 
 namespace jt {
@@ -90,11 +91,19 @@ bool trace_samples(const PreparedFrame& f, const RenderPass& pass, TileBuffer& o
         return trace_ray(*f.scene, camera.position, direction, 0.0, sample, rays, &seen);
     };
     if (f.options.samples == 1) {
+        // Without a sky map, the pixels of a block whose rays meet nothing
+        // are all the background colour: no ray to aim or trace.
+        const bool plain_sky = open_sky && !f.scene->background_map;
+        std::array<std::uint8_t, 3> sky{};
+        if (plain_sky) {
+            const Colour& b = f.scene->settings.background;
+            sky = {quantize_channel(b.x), quantize_channel(b.y), quantize_channel(b.z)};
+        }
         // A row's directions first, in a loop of their own: their divisions
         // and square roots then overlap instead of each waiting its ray.
         std::vector<Vec3> directions(static_cast<std::size_t>(tile.width()));
-        for (int y = tile.y0; y < tile.y1; ++y) {
-            if (cancel.load(std::memory_order_relaxed)) return false;
+        std::vector<int> traced(static_cast<std::size_t>(tile.width()));  // x of pixels to trace
+        auto trace_row = [&](int y) {
             for (int x = tile.x0; x < tile.x1; ++x)
                 directions[static_cast<std::size_t>(x - tile.x0)] =
                     camera_direction(camera, x + 0.5, y + 0.5);
@@ -102,6 +111,42 @@ bool trace_samples(const PreparedFrame& f, const RenderPass& pass, TileBuffer& o
                 put(out, x, y,
                     trace(x + 0.5, y + 0.5, directions[static_cast<std::size_t>(x - tile.x0)],
                           {static_cast<std::uint32_t>(x), static_cast<std::uint32_t>(y), 0}));
+        };
+        // A block's pixels of the row at a time, with one look-up for all:
+        // the plain sky written at once, the rest traced as trace_row does.
+        // The colour lives in locals: byte stores may alias any memory, so
+        // values read through references would be read again.
+        auto trace_row_under_plain_sky = [&](int y) {
+            std::size_t count = 0;
+            const std::uint8_t red = sky[0], green = sky[1], blue = sky[2];
+            std::uint8_t* row = &out.rgb[out.index(tile.x0, y) * 3];
+            for (int x = tile.x0; x < tile.x1;) {
+                const int block_end = std::min(tile.x1, (x / view_block + 1) * view_block);
+                if (shapes_seen(table, x + 0.5, y + 0.5).size() == 0) {
+                    rays += static_cast<std::uint64_t>(block_end - x);
+                    for (; x < block_end; ++x) {
+                        std::uint8_t* p = row + 3 * static_cast<std::size_t>(x - tile.x0);
+                        p[0] = red, p[1] = green, p[2] = blue;
+                    }
+                } else {
+                    for (; x < block_end; ++x) traced[count++] = x;
+                }
+            }
+            for (std::size_t k = 0; k < count; ++k)
+                directions[k] = camera_direction(camera, traced[k] + 0.5, y + 0.5);
+            for (std::size_t k = 0; k < count; ++k) {
+                const int x = traced[k];
+                put(out, x, y,
+                    trace(x + 0.5, y + 0.5, directions[k],
+                          {static_cast<std::uint32_t>(x), static_cast<std::uint32_t>(y), 0}));
+            }
+        };
+        for (int y = tile.y0; y < tile.y1; ++y) {
+            if (cancel.load(std::memory_order_relaxed)) return false;
+            if (plain_sky)
+                trace_row_under_plain_sky(y);
+            else
+                trace_row(y);
         }
         return true;
     }

@@ -2,11 +2,13 @@
 
 #include "render/prepared_scene.hpp"
 
+#include <tbb/enumerable_thread_specific.h>
 #include <tbb/parallel_for.h>
 
 #include <glm/geometric.hpp>
 
 #include <algorithm>
+#include <atomic>
 #include <cmath>
 #include <limits>
 #include <numbers>
@@ -21,11 +23,6 @@ namespace {
 constexpr std::size_t max_view_shapes = std::size_t{1} << 18;
 constexpr std::size_t max_view_listed = std::size_t{1} << 22;
 
-// The table is built a band of block rows at a time, the bands in parallel:
-// each band's lists depend only on the shapes, so the table is the same
-// whatever the threads do.
-constexpr int band_rows = 8;
-
 // Slack far beyond the rounding of the double computations that aim a ray and
 // decide its hits, so that a ray on a block's edge still finds every shape it
 // may meet: on angles (radians) and on positions in the image (pixels).
@@ -33,6 +30,7 @@ constexpr double angle_slack = 1e-7;
 constexpr double pixel_slack = 1e-2;
 
 constexpr double half_pi = 0.5 * std::numbers::pi;
+const double cos_slack = std::cos(angle_slack), sin_slack = std::sin(angle_slack);
 constexpr double unbounded = std::numeric_limits<double>::infinity();
 
 // A shape as the table sees it: its padded bounding sphere, and for a world
@@ -42,7 +40,7 @@ struct Candidate {
     Vec3 center;
     double radius;         // of the padded bounding sphere
     double inner_radius;   // every ray passing this close to `center` hits; 0: none
-    double reach;          // no hit on the shape lies farther from the camera
+    double distance;       // of the padded bounding sphere's centre from the camera
     double nearest;        // no point of the shape lies nearer the camera
     const RTCBounds* box;  // a transformed shape's box, tighter than its sphere
 };
@@ -57,7 +55,7 @@ Candidate candidate(std::uint32_t listed, const Vec3& center, double radius, dou
     c.radius = padded.radius;
     c.nearest = padded.nearest;
     c.inner_radius = std::max(true_radius * (1.0 - 1e-7) - 1e-9 * distance, 0.0);
-    c.reach = (distance + c.radius) * (1.0 + 1e-6);
+    c.distance = distance;
     c.box = box;
     return c;
 }
@@ -159,10 +157,34 @@ Extent extent(const Candidate& c, const CameraFrame& camera, int columns, int ro
 }
 
 struct Listing {
-    std::uint32_t block, candidate;  // an index into the sorted candidates
+    std::uint32_t block;      // in its band, row by row
+    std::uint32_t candidate;  // an index into the sorted candidates
 };
 
 }  // namespace
+
+double covered_hit_bound(double distance, double inner_radius, double radius, double cos_farthest) {
+    // Inside the sphere, the far side bounds the exit.
+    if (!(distance > radius)) return (distance + radius) * (1.0 + 1e-6);
+    // From outside, a ray at angle theta to the centre's direction, passing
+    // h = d sin(theta) <= r from the centre, enters the inner sphere (and so
+    // the sphere, which holds it) at (d^2 - r^2) / (d cos(theta) +
+    // sqrt(r^2 - h^2)), which grows with theta. The angle is taken
+    // angle_slack wider for the rounding of the rays' directions; past the
+    // inner sphere's rim the bound is its tangent length, sqrt(d^2 - r^2).
+    // The slack covers the rounding of this and of the exact test, which
+    // finds the sphere's entry short of the inner sphere's by at least the
+    // 1e-7 of its radius the inner sphere is shrunk by.
+    const double tangent = std::sqrt((distance - inner_radius) * (distance + inner_radius));
+    const double sin_farthest = std::sqrt(std::max(0.0, 1.0 - cos_farthest * cos_farthest));
+    const double cos_wider = cos_farthest * cos_slack - sin_farthest * sin_slack;
+    const double h = distance * std::sqrt(std::max(0.0, 1.0 - cos_wider * cos_wider));
+    const double off_rim = (inner_radius - h) * (inner_radius + h);
+    if (!(cos_wider > 0.0) || !(off_rim >= 0.0)) return tangent * (1.0 + 1e-6);
+    const double entry = (distance - inner_radius) * (distance + inner_radius) /
+                         (distance * cos_wider + std::sqrt(off_rim));
+    return std::min(entry, tangent) * (1.0 + 1e-6);
+}
 
 ViewTable build_view_table(const Geometry& geometry, const CameraFrame& camera) {
     const std::size_t shapes = geometry.spheres.size() + geometry.shapes.size();
@@ -218,65 +240,78 @@ ViewTable build_view_table(const Geometry& geometry, const CameraFrame& camera) 
 
     // Each band lists its blocks' shapes in candidate order; a shape nearer
     // than a block's cap is listed, and a sphere holding the whole block caps
-    // it at its far side.
-    const int bands = (table.rows + band_rows - 1) / band_rows;
-    std::vector<std::vector<Listing>> band_listings(static_cast<std::size_t>(bands));
+    // it where all the block's rays have met it. Each band's lists depend
+    // only on the shapes, so the table is the same whatever the threads do.
+    const int bands = (table.rows + view_band_rows - 1) / view_band_rows;
     table.covered.assign(blocks, 0);
+    table.list_start.resize(blocks + static_cast<std::size_t>(bands));
+    table.bands.resize(static_cast<std::size_t>(bands));
+    // A thread's listings of one band at a time: their pages are touched once
+    // a thread rather than once a band.
+    tbb::enumerable_thread_specific<std::vector<Listing>> scratch;
+    std::atomic<std::size_t> listed{0};
     tbb::parallel_for(0, bands, [&](int band) {
-        const int first_row = band * band_rows;
-        const int last_row = std::min(first_row + band_rows, table.rows) - 1;
+        const int first_row = band * view_band_rows;
+        const int last_row = std::min(first_row + view_band_rows, table.rows) - 1;
         const std::size_t base = static_cast<std::size_t>(first_row) * table.columns;
-        std::vector<double> cap(
-            (last_row - first_row + 1) * static_cast<std::size_t>(table.columns), unbounded);
-        std::vector<Listing>& listings = band_listings[static_cast<std::size_t>(band)];
+        const std::size_t band_blocks =
+            (last_row - first_row + 1) * static_cast<std::size_t>(table.columns);
+        std::vector<double> cap(band_blocks, unbounded);
+        std::vector<Listing>& listings = scratch.local();
+        listings.clear();
         for (std::size_t i = 0; i < candidates.size(); ++i) {
             const Extent& e = extents[i];
             const int row0 = std::max(e.row0, first_row), row1 = std::min(e.row1, last_row);
             if (row0 > row1 || e.column0 > e.column1) continue;
             const Candidate& c = candidates[i];
-            auto inside = [&](const Vec3& d) {
-                return e.cos_cover <= -1.0 || glm::dot(d, e.axis) >= e.cos_cover;
-            };
             for (int row = row0; row <= row1; ++row)
                 for (int column = e.column0; column <= e.column1; ++column) {
                     const std::size_t b = static_cast<std::size_t>(row) * table.columns + column;
                     if (c.nearest > cap[b - base]) continue;
                     listings.push_back(
-                        {static_cast<std::uint32_t>(b), static_cast<std::uint32_t>(i)});
-                    if (e.cos_cover <= 1.0 && inside(corner(column, row)) &&
-                        inside(corner(column + 1, row)) && inside(corner(column, row + 1)) &&
-                        inside(corner(column + 1, row + 1))) {
-                        table.covered[b] = 1;
-                        cap[b - base] = std::min(cap[b - base], c.reach);
+                        {static_cast<std::uint32_t>(b - base), static_cast<std::uint32_t>(i)});
+                    if (e.cos_cover > 1.0) continue;
+                    // The block is covered when its four corners are; its
+                    // list is then cut where every ray of it has met the
+                    // sphere, from the farthest corner's angle.
+                    double cos_farthest = 1.0;
+                    bool covered = true;
+                    for (const Vec3* d : {&corner(column, row), &corner(column + 1, row),
+                                          &corner(column, row + 1), &corner(column + 1, row + 1)}) {
+                        const double cos_angle = glm::dot(*d, e.axis);
+                        if (!(e.cos_cover <= -1.0 || cos_angle >= e.cos_cover)) {
+                            covered = false;
+                            break;
+                        }
+                        cos_farthest = std::min(cos_farthest, cos_angle);
                     }
+                    if (!covered) continue;
+                    table.covered[b] = 1;
+                    cap[b - base] = std::min(
+                        cap[b - base],
+                        covered_hit_bound(c.distance, c.inner_radius, c.radius, cos_farthest));
                 }
-            if (listings.size() > max_view_listed) return;
+            if (listings.size() > max_view_listed) break;
         }
-    });
-    std::size_t listed = 0;
-    for (const std::vector<Listing>& l : band_listings) listed += l.size();
-    if (listed > max_view_listed) return {};
+        if (listed.fetch_add(listings.size()) + listings.size() > max_view_listed) return;
 
-    // A stable counting sort by block keeps each block's list nearest first;
-    // a band's blocks are contiguous, so each band fills its own part.
-    table.block_start.assign(blocks + 1, 0);
-    for (const std::vector<Listing>& l : band_listings)
-        for (const Listing& listing : l) ++table.block_start[listing.block + 1];
-    for (std::size_t b = 0; b < blocks; ++b) table.block_start[b + 1] += table.block_start[b];
-    table.shapes.resize(listed);
-    table.nearest.resize(listed);
-    tbb::parallel_for(0, bands, [&](int band) {
-        const std::size_t first = static_cast<std::size_t>(band) * band_rows * table.columns;
-        const std::size_t last = std::min<std::size_t>(
-            first + static_cast<std::size_t>(band_rows) * table.columns, blocks);
-        std::vector<std::uint32_t> fill(table.block_start.begin() + first,
-                                        table.block_start.begin() + last);
-        for (const Listing& l : band_listings[static_cast<std::size_t>(band)]) {
-            const std::uint32_t at = fill[l.block - first]++;
-            table.shapes[at] = candidates[l.candidate].listed;
-            table.nearest[at] = candidates[l.candidate].nearest;
+        // A stable counting sort by block keeps each block's list nearest
+        // first.
+        std::uint32_t* start = table.list_start.data() + base + band;
+        std::fill(start, start + band_blocks + 1, 0u);
+        for (const Listing& l : listings) ++start[l.block + 1];
+        for (std::size_t b = 0; b < band_blocks; ++b) start[b + 1] += start[b];
+        std::vector<std::uint32_t> fill(start, start + band_blocks);
+        ViewBand& lists = table.bands[static_cast<std::size_t>(band)];
+        lists.shapes.resize(listings.size());
+        lists.nearest.resize(listings.size());
+        for (const Listing& l : listings) {
+            const std::uint32_t at = fill[l.block]++;
+            lists.shapes[at] = candidates[l.candidate].listed;
+            lists.nearest[at] = listed_distance(candidates[l.candidate].nearest);
         }
     });
+    if (listed.load() > max_view_listed) return {};
     return table;
 }
 
