@@ -116,6 +116,36 @@ TEST(ImageMap, DecodesPngAndBmpToBytesOver255) {
     EXPECT_FALSE(decode_texture(junk));
 }
 
+// A 1x1 RGB PNG whose image data is a zlib stream of one block of the
+// reserved type 3: stb_image fails on it without giving a reason.
+std::vector<std::uint8_t> png_with_a_reserved_zlib_block() {
+    std::vector<std::uint8_t> bytes{0x89, 'P', 'N', 'G', 0x0d, 0x0a, 0x1a, 0x0a};
+    auto chunk = [&](const char* type, const std::vector<std::uint8_t>& data) {
+        const auto length = static_cast<std::uint32_t>(data.size());
+        for (int shift : {24, 16, 8, 0})
+            bytes.push_back(static_cast<std::uint8_t>(length >> shift));
+        bytes.insert(bytes.end(), type, type + 4);
+        bytes.insert(bytes.end(), data.begin(), data.end());
+        bytes.insert(bytes.end(), 4, 0);  // the CRC, which no reader here checks
+    };
+    chunk("IHDR", {0, 0, 0, 1, 0, 0, 0, 1, 8, 2, 0, 0, 0});
+    chunk("IDAT", {0x78, 0x01, 0x07});  // a zlib header, then a final block of type 3
+    chunk("IEND", {});
+    return bytes;
+}
+
+TEST(ImageMap, APngStbRejectsWithoutAReasonIsAnErrorNotACrash) {
+    // A model file's embedded texture like this one crashed the model fuzzer:
+    // the message was built from stb_image's null reason.
+    const std::vector<std::uint8_t> bytes = png_with_a_reserved_zlib_block();
+    const Expected<Texture> texture = decode_texture(bytes);
+    ASSERT_FALSE(texture);
+    EXPECT_EQ(texture.error().message, "cannot decode the image: its data is damaged");
+    const Expected<Image8> image = decode_png(bytes);
+    ASSERT_FALSE(image);
+    EXPECT_EQ(image.error().message, "not a readable PNG: its data is damaged");
+}
+
 // encode_bmp's bottom-up file of `image` stored top-down instead: the height
 // negated and the rows in the opposite order (each padded to 4 bytes).
 std::vector<std::uint8_t> top_down_bmp(const Image8& image) {

@@ -1,6 +1,7 @@
 #include "jtracer/png.hpp"
 
 #include "io/file_bytes.hpp"
+#include "io/stb_failure.hpp"
 #include "jtracer/atomic_file.hpp"
 
 #include <stb_image.h>
@@ -46,9 +47,10 @@ Expected<Image8> decode_png(std::span<const std::uint8_t> bytes) {
     if (!has_png_signature(bytes))
         return Error{"not a readable PNG: it does not start with the PNG signature"};
     int width = 0, height = 0, channels = 0;
+    forget_stb_failure();
     stbi_uc* pixels = stbi_load_from_memory(bytes.data(), static_cast<int>(bytes.size()), &width,
                                             &height, &channels, 3);
-    if (!pixels) return Error{std::string("not a readable PNG: ") + stbi_failure_reason()};
+    if (!pixels) return Error{std::string("not a readable PNG: ") + stb_failure_reason()};
     Image8 image(width, height);
     const std::size_t stride = static_cast<std::size_t>(width) * 3;
     for (int y = 0; y < height; ++y)

@@ -1,6 +1,8 @@
 // The one translation unit that compiles stb's implementations (libstb-dev):
 // the PNG and BMP readers and the writers (JPEGs are read by io/jpeg.cpp).
 // Their code is not ours to warn about.
+#include "io/stb_failure.hpp"
+
 #pragma GCC diagnostic push
 #pragma GCC diagnostic ignored "-Wall"
 #pragma GCC diagnostic ignored "-Wextra"
@@ -19,3 +21,11 @@
 #define STBI_NO_STDIO
 #include <stb_image.h>
 #pragma GCC diagnostic pop
+
+namespace jt {
+
+void forget_stb_failure() {
+    stbi__g_failure_reason = nullptr;
+}
+
+}  // namespace jt

@@ -6,6 +6,7 @@
 #include "io/jpeg.hpp"
 #include "io/png_chunks.hpp"
 #include "io/stamped_cache.hpp"
+#include "io/stb_failure.hpp"
 #include "jtracer/file_stamp.hpp"
 #include "jtracer/image.hpp"
 
@@ -73,9 +74,10 @@ std::string header_problem(std::span<const std::uint8_t> bytes, int& width, int&
             return too_large(claimed->first, claimed->second);
         if (std::string problem = png_chunk_problem(bytes); !problem.empty()) return problem;
         int channels = 0;
+        forget_stb_failure();
         if (!stbi_info_from_memory(bytes.data(), static_cast<int>(bytes.size()), &width, &height,
                                    &channels))
-            return std::string("not a readable PNG, JPEG or BMP image: ") + stbi_failure_reason();
+            return std::string("not a readable PNG, JPEG or BMP image: ") + stb_failure_reason();
     }
     if (width <= 0 || height <= 0)
         return "the image has no pixels (" + std::to_string(width) + "x" + std::to_string(height) +
@@ -115,6 +117,7 @@ Expected<Texture> decode_texture(std::span<const std::uint8_t> bytes) {
     }
     bool decoded = false;
     const int size = static_cast<int>(bytes.size());
+    forget_stb_failure();
     if (stbi_is_16_bit_from_memory(bytes.data(), size)) {
         std::unique_ptr<stbi_us, StbFree> samples(
             stbi_load_16_from_memory(bytes.data(), size, &width, &height, &channels, 3));
@@ -130,7 +133,7 @@ Expected<Texture> decode_texture(std::span<const std::uint8_t> bytes) {
     }
     if (decoded)
         return Error{"cannot decode the image: its pixels are not the size its header gives"};
-    return Error{std::string("cannot decode the image: ") + stbi_failure_reason()};
+    return Error{std::string("cannot decode the image: ") + stb_failure_reason()};
 }
 
 Expected<std::shared_ptr<const Texture>> load_texture(const std::filesystem::path& path) {
