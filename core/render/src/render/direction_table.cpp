@@ -239,11 +239,13 @@ DirectionTable build_direction_table(const Geometry& geometry, const Vec3& posit
         bool everywhere;
     };
     std::vector<ShapeCone> shape_cones(shapes);
-    std::vector<double> nearest_of(shapes);  // by sphere index, then shape index
+    std::vector<double> nearest_of(shapes);                 // by sphere index, then shape index
+    std::vector<ListedDistance> listed_nearest_of(shapes);  // as the lists hold them
     auto cone_of = [&](const BoundingSphere& b, std::size_t slot) {
         const PaddedBound padded = padded_bound(b.center, b.radius, position);
         const double distance = padded.distance, radius = padded.radius;
         nearest_of[slot] = padded.nearest;
+        listed_nearest_of[slot] = listed_distance(padded.nearest);
         const bool everywhere = !(distance > radius) || !std::isfinite(distance) ||
                                 radius / distance > std::sin(max_cone_angle);
         if (everywhere) {
@@ -350,9 +352,9 @@ DirectionTable build_direction_table(const Geometry& geometry, const Vec3& posit
         for (const Listing& p : pairs) {
             const std::uint32_t at = fill[p.cell]++;
             table.shapes[at] = p.candidate;
-            table.nearest[at] = listed_distance(
-                nearest_of[p.candidate & shape_flag ? spheres + (p.candidate & ~shape_flag)
-                                                    : p.candidate]);
+            table.nearest[at] =
+                listed_nearest_of[p.candidate & shape_flag ? spheres + (p.candidate & ~shape_flag)
+                                                           : p.candidate];
         }
     return table;
 }

@@ -38,11 +38,12 @@ constexpr double unbounded = std::numeric_limits<double>::infinity();
 struct Candidate {
     std::uint32_t listed;  // sphere index, or shape index | shape_flag
     Vec3 center;
-    double radius;         // of the padded bounding sphere
-    double inner_radius;   // every ray passing this close to `center` hits; 0: none
-    double distance;       // of the padded bounding sphere's centre from the camera
-    double nearest;        // no point of the shape lies nearer the camera
-    const RTCBounds* box;  // a transformed shape's box, tighter than its sphere
+    double radius;                  // of the padded bounding sphere
+    double inner_radius;            // every ray passing this close to `center` hits; 0: none
+    double distance;                // of the padded bounding sphere's centre from the camera
+    double nearest;                 // no point of the shape lies nearer the camera
+    ListedDistance listed_nearest;  // `nearest` as the lists hold it
+    const RTCBounds* box;           // a transformed shape's box, tighter than its sphere
 };
 
 Candidate candidate(std::uint32_t listed, const Vec3& center, double radius, double true_radius,
@@ -54,6 +55,7 @@ Candidate candidate(std::uint32_t listed, const Vec3& center, double radius, dou
     const double distance = padded.distance;
     c.radius = padded.radius;
     c.nearest = padded.nearest;
+    c.listed_nearest = listed_distance(c.nearest);
     c.inner_radius = std::max(true_radius * (1.0 - 1e-7) - 1e-9 * distance, 0.0);
     c.distance = distance;
     c.box = box;
@@ -308,7 +310,7 @@ ViewTable build_view_table(const Geometry& geometry, const CameraFrame& camera) 
         for (const Listing& l : listings) {
             const std::uint32_t at = fill[l.block]++;
             lists.shapes[at] = candidates[l.candidate].listed;
-            lists.nearest[at] = listed_distance(candidates[l.candidate].nearest);
+            lists.nearest[at] = candidates[l.candidate].listed_nearest;
         }
     });
     if (listed.load() > max_view_listed) return {};
