@@ -1,5 +1,6 @@
 #include "geometry/bounds.hpp"
 #include "io/huge_pages.hpp"
+#include "jtracer/vector_unit.hpp"
 #include "render/embree_device.hpp"
 #include "render/far_ray.hpp"
 #include "render/listed_shapes.hpp"
@@ -433,8 +434,10 @@ void take_materials(Scene& scene, PreparedScene& prepared) {
 Expected<std::shared_ptr<const PreparedScene>> prepare(
     const Scene& scene, std::shared_ptr<const Scene> owned, Scene* handed,
     std::shared_ptr<const PreparedScene> previous) {
-    // Checked here, before any work: the geometry needs the device.
+    // Checked here, before any work: the geometry needs the device, and a
+    // vector unit asked for and missing must not be passed over in silence.
     if (!embree_device()) return Error{embree_device_failure()};
+    if (!vector_unit().failure.empty()) return Error{vector_unit().failure};
     auto prepared = std::make_shared<PreparedScene>();
     // The digest decides first whether a previous geometry serves again;
     // without one it is only kept for the next time, and worked out beside

@@ -11,6 +11,7 @@
 // no_hit for; the walk gives every other lane to the scalar test.
 
 #include "geometry/intersect.hpp"
+#include "jtracer/vector_unit.hpp"
 #include "render/prepared_scene.hpp"
 
 #include <cstddef>
@@ -101,9 +102,10 @@ inline unsigned spheres_missed_early(const WorldSphere* const (&spheres)[sphere_
 
 #if defined(__x86_64__)
 #define JT_SPHERE_BATCH_AVX 1
-// Whether this processor runs spheres_missed_early_avx.
+// Whether this process runs spheres_missed_early_avx: the CPU has AVX and
+// JTRACER_SIMD does not ask for SSE2 (jtracer/vector_unit.hpp).
 inline bool sphere_batch_avx() {
-    static const bool avx = __builtin_cpu_supports("avx");
+    static const bool avx = vector_unit().unit == VectorUnit::avx;
     return avx;
 }
 
