@@ -8,6 +8,7 @@
 #include "render/prepared_scene.hpp"
 #include "render/ray_queries.hpp"
 #include "render/shadow_spheres.hpp"
+#include "render/shape_groups.hpp"
 #include "render/user_geometry.hpp"
 
 #include <tbb/blocked_range.h>
@@ -270,6 +271,8 @@ void build_bvh(Geometry& g, double magnitude) {
     }
     for (std::uint32_t i = 0; i < g.shapes.size(); ++i)
         if (!within_reach(g.shapes[i].bounds)) g.beyond_bvh.push_back(i | shape_flag);
+
+    if (g.beyond_bvh.empty()) g.groups = group_shapes(g.spheres, g.shapes);
 
     g.bvh = rtcNewScene(embree_device());
     const RTCBuildQuality quality =

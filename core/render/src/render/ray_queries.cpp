@@ -5,6 +5,7 @@
 #include "render/far_ray.hpp"
 #include "render/float_ray.hpp"
 #include "render/shadow_spheres.hpp"
+#include "render/shape_groups.hpp"
 #include "render/sphere_batch.hpp"
 
 #include <glm/geometric.hpp>
@@ -347,6 +348,53 @@ bool closest_by_listed(ClosestQuery& q, const ListedShapes& listed, std::size_t 
     return true;
 }
 
+// Whether the groups of a small scene (render/shape_groups.hpp) take a ray
+// from `origin`.
+[[gnu::always_inline]] inline bool groups_take(const ShapeGroups& groups, const Vec3& origin) {
+    return !groups.empty() && std::abs(origin.x) <= groups.reach &&
+           std::abs(origin.y) <= groups.reach && std::abs(origin.z) <= groups.reach;
+}
+
+// lanes_missed_early, in AVX where the processor has it.
+template <bool DecideEntryBeyond>
+[[gnu::always_inline]] inline unsigned lanes_missed(bool avx, const SphereLanes& lanes,
+                                                    const BatchRay& ray, double t_max) {
+#if defined(JT_SPHERE_BATCH_AVX)
+    if (avx) return lanes_missed_early_avx<DecideEntryBeyond>(lanes, ray, t_max);
+#endif
+    return lanes_missed_early<DecideEntryBeyond>(lanes, ray, t_max);
+}
+
+// Every shape of a small scene offered to the query, but for those that the
+// early answers decide: four groups' spheres at a time, then the spheres of
+// each group the ray may meet, against the best hit as it stands. What is
+// offered, and in which order, never changes the answer (closest_hit).
+void closest_by_groups(ClosestQuery& q) {
+    const ShapeGroups& groups = q.geometry->groups;
+    const BatchRay ray = batch_ray(q.origin, q.direction, q.t_min);
+    const bool avx = sphere_batch_avx();
+    for (std::size_t first = 0; first < groups.count; first += sphere_batch) {
+        const unsigned live = groups.count - first >= sphere_batch
+                                  ? (1u << sphere_batch) - 1u
+                                  : (1u << (groups.count - first)) - 1u;
+        unsigned open =
+            ~lanes_missed<false>(avx, groups.bounds[first / sphere_batch], ray, 0.0) & live;
+        while (open != 0) {
+            const std::size_t group = first + static_cast<std::size_t>(std::countr_zero(open));
+            open &= open - 1u;
+            const unsigned missed =
+                lanes_missed<true>(avx, groups.members[group], ray, just_beyond(q.t)) &
+                groups.spheres[group];
+            unsigned offer = groups.used[group] & ~missed;
+            while (offer != 0) {
+                const std::size_t j = static_cast<std::size_t>(std::countr_zero(offer));
+                offer &= offer - 1u;
+                offer_listed(q, groups.listed[group * sphere_batch + j]);
+            }
+        }
+    }
+}
+
 // Whether the hinted surface blocks the ray; false for no hint or a stale one.
 bool hinted_blocks(const Geometry& g, const OccluderHint& hint, const Vec3& origin,
                    const Vec3& direction, double t_min, double t_max) {
@@ -530,7 +578,9 @@ bool closest_hit(const Geometry& geometry, const Vec3& origin, const Vec3& direc
                                       : max_cell_candidates;
         settled = closest_by_listed(q, *candidates, limit);
     }
-    if (!settled && !geometry.bvh) {
+    if (!settled && !candidates && groups_take(geometry.groups, origin)) {
+        closest_by_groups(q);
+    } else if (!settled && !geometry.bvh) {
         closest_by_testing_all(q);
     } else if (!settled) {
         rtcInitIntersectContext(&q.context);
