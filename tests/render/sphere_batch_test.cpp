@@ -191,13 +191,14 @@ TEST(SphereBatch, ListWalksFindEveryRaysFirstHit) {
     std::mt19937_64 rng(72);
     std::uniform_real_distribution<double> unit(0.0, 1.0);
     std::uniform_int_distribution<int> pick_miss(0, std::size(misses) - 1);
-    int hits = 0, rays = 0;
+    int hits = 0, rays = 0, crowded_short = 0;
     // Nests and shells a nest: lists of 1, 2, 3 shapes (shorter than a
     // batch), 16 to 20 (the shortest walked in batches, ending in a whole or a
-    // partial batch) and up to a few hundred.
-    constexpr std::pair<int, int> crowds[] = {{1, 1}, {1, 2},  {1, 3},  {1, 5},  {2, 3},
-                                              {3, 3}, {1, 13}, {1, 14}, {1, 15}, {1, 16},
-                                              {2, 9}, {4, 12}, {8, 40}};
+    // partial batch) and up to a few hundred. Where the shells overlap heavily
+    // (Geometry::crowded), covered lists from 4 shapes go in batches.
+    constexpr std::pair<int, int> crowds[] = {{1, 1},  {1, 2},  {1, 3},  {1, 5},  {2, 3},
+                                              {3, 3},  {1, 8},  {1, 11}, {1, 13}, {1, 14},
+                                              {1, 15}, {1, 16}, {2, 9},  {4, 12}, {8, 40}};
     for (const auto& [nests, per_nest] : crowds) {
         for (int scene_round = 0; scene_round < 3; ++scene_round) {
             auto prepared = prepare_scene(shells(rng, nests, per_nest)).value();
@@ -214,6 +215,8 @@ TEST(SphereBatch, ListWalksFindEveryRaysFirstHit) {
                 // Only a covered list is walked in batches; any list may be called
                 // covered, which only lets its walk go on longer.
                 const ListedShapes listed{shapes, nearest, from % 3 != 0};
+                crowded_short +=
+                    g.crowded && listed.covered && shapes.size() >= 4 && shapes.size() < 16;
                 for (int r = 0; r < 300; ++r) {
                     const WorldSphere& aim = g.spheres[rng() % g.spheres.size()];
                     const Vec3 d = grazing(aim, origin, misses[pick_miss(rng)],
@@ -234,6 +237,7 @@ TEST(SphereBatch, ListWalksFindEveryRaysFirstHit) {
     }
     EXPECT_GT(hits, rays / 3);
     EXPECT_LT(hits, rays);
+    EXPECT_GT(crowded_short, 10) << "crowded covered lists of 4 to 15 shapes are walked";
 }
 
 TEST(SphereBatch, AWalkHintedWithAnySphereFindsEveryRaysFirstHit) {

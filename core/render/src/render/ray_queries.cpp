@@ -39,6 +39,10 @@ constexpr std::size_t max_covered_position = 256;
 // a shorter one mostly ends at its first shapes, where a batch costs more than
 // it decides.
 constexpr std::size_t min_batched_list = 16;
+// Where the spheres overlap heavily (Geometry::crowded), a covered list's
+// walk passes more spheres it enters beyond its hit than it stops at, down
+// to lists of a few.
+constexpr std::size_t min_crowded_batched_list = 4;
 
 // Embree hands our callbacks the context pointer we passed in; the query
 // structs start with it so that they can be found again from it.
@@ -300,7 +304,8 @@ bool closest_by_listed_in_batches(ClosestQuery& q, const ListedShapes& listed, s
 // the answer is the nearest of all, whichever found it).
 //
 // A covered list (heavily overlapping spheres) of min_batched_list shapes or
-// more is walked in batches: the spheres among the next few shapes the walk
+// more, or of min_crowded_batched_list where the spheres are crowded, is
+// walked in batches: the spheres among the next few shapes the walk
 // may reach are first given the early tests of intersect_sphere together
 // (sphere_batch.hpp), against the best hit as it stands. The ones those
 // decide would answer no_hit to any nearer best hit too, and are passed over;
@@ -315,7 +320,8 @@ bool closest_by_listed_in_batches(ClosestQuery& q, const ListedShapes& listed, s
 bool closest_by_listed(ClosestQuery& q, const ListedShapes& listed, std::size_t limit) {
     const double length = glm::length(q.direction);
     const std::size_t size = listed.size();
-    if (!listed.covered || size < min_batched_list) {
+    if (!listed.covered ||
+        size < (q.geometry->crowded ? min_crowded_batched_list : min_batched_list)) {
         for (std::size_t k = 0; k < size; ++k) {
             if (listed.nearest[k] > q.t * length) return true;
             if (k == limit) return false;
