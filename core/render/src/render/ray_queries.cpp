@@ -40,6 +40,10 @@ constexpr std::size_t max_covered_position = 256;
 // a shorter one mostly ends at its first shapes, where a batch costs more than
 // it decides.
 constexpr std::size_t min_batched_list = 16;
+// Where the spheres overlap heavily (Geometry::crowded), a covered list's
+// walk passes more spheres it enters beyond its hit than it stops at, down
+// to lists of a few.
+constexpr std::size_t min_crowded_batched_list = 4;
 
 // Embree hands our callbacks the context pointer we passed in; the query
 // structs start with it so that they can be found again from it.
@@ -291,6 +295,9 @@ bool occluded_by_testing_all(const Geometry& g, const Vec3& origin, const Vec3& 
     return false;
 }
 
+bool closest_by_listed_in_batches(ClosestQuery& q, const ListedShapes& listed, std::size_t limit,
+                                  double length);
+
 // The walk of a direction table's list around the ray's origin: it stops at
 // the first shape that lies wholly beyond the best hit so far. True when that
 // settles the ray; false when `limit` shapes were tested first, and the rest
@@ -298,7 +305,8 @@ bool occluded_by_testing_all(const Geometry& g, const Vec3& origin, const Vec3& 
 // the answer is the nearest of all, whichever found it).
 //
 // A covered list (heavily overlapping spheres) of min_batched_list shapes or
-// more is walked in batches: the spheres among the next few shapes the walk
+// more, or of min_crowded_batched_list where the spheres are crowded, is
+// walked in batches: the spheres among the next few shapes the walk
 // may reach are first given the early tests of intersect_sphere together
 // (sphere_batch.hpp), against the best hit as it stands. The ones those
 // decide would answer no_hit to any nearer best hit too, and are passed over;
@@ -306,11 +314,15 @@ bool occluded_by_testing_all(const Geometry& g, const Vec3& origin, const Vec3& 
 // test of whether it goes on. Most spheres of such a list lie beyond the
 // nearest hit or pass wide of the ray. Other lists, and short covered ones,
 // mostly end at their first or second shape, where a batch would only add
-// work: they are walked one shape at a time.
+// work: they are walked one shape at a time. A batched walk first offers the
+// list's hint, if it has one, and leaves the hint on its best hit; in a
+// shorter list the hinted sphere is mostly the first, and would be tested
+// twice.
 bool closest_by_listed(ClosestQuery& q, const ListedShapes& listed, std::size_t limit) {
     const double length = glm::length(q.direction);
     const std::size_t size = listed.size();
-    if (!listed.covered || size < min_batched_list) {
+    if (!listed.covered ||
+        size < (q.geometry->crowded ? min_crowded_batched_list : min_batched_list)) {
         for (std::size_t k = 0; k < size; ++k) {
             if (listed.nearest[k] > q.t * length) return true;
             if (k == limit) return false;
@@ -318,6 +330,21 @@ bool closest_by_listed(ClosestQuery& q, const ListedShapes& listed, std::size_t 
         }
         return true;
     }
+    if (listed.hint) {
+        const std::uint32_t hinted = listed.hint->sphere;
+        if (hinted < q.geometry->spheres.size()) offer_sphere(q, hinted);
+    }
+    const bool settled = closest_by_listed_in_batches(q, listed, limit, length);
+    if (listed.hint && q.kind == HitKind::sphere && q.source != no_source)
+        listed.hint->sphere = q.index;
+    return settled;
+}
+
+// closest_by_listed's walk of a covered list in batches; `length` is that of
+// the ray's direction.
+bool closest_by_listed_in_batches(ClosestQuery& q, const ListedShapes& listed, std::size_t limit,
+                                  double length) {
+    const std::size_t size = listed.size();
     const BatchRay ray = batch_ray(q.origin, q.direction, q.t_min);
     const bool avx = sphere_batch_avx();
     std::size_t k = 0;
@@ -489,7 +516,9 @@ void sphere_bounds(const RTCBoundsFunctionArguments* args) {
     *args->bounds_o = padded_sphere_bounds(*g, args->primID);
 }
 
-void sphere_intersect(const RTCIntersectFunctionNArguments* args) {
+// Flattened: GCC weighs inlining offer_sphere here against all its calls,
+// and one more of them made it stop (1% more instructions on few).
+[[gnu::flatten]] void sphere_intersect(const RTCIntersectFunctionNArguments* args) {
     if (!args->valid[0]) return;
     auto& q = *reinterpret_cast<ClosestQuery*>(args->context);
     if (offer_sphere(q, args->primID)) accept(args, q);
