@@ -475,7 +475,11 @@ std::size_t Lexer::plain_property(PlainProperty& out) const {
     }
     if (start >= n || !is_word_start(text_[start])) return 0;
     std::size_t end = start + 1;
-    while (end < n && is_word_char(text_[end])) ++end;
+    if (words_stop_inside_) {
+        while (is_word_char(text_[end])) ++end;
+    } else {
+        while (end < n && is_word_char(text_[end])) ++end;
+    }
     if (end >= n || text_[end] != ':') return 0;
     const std::size_t past = plain_value_at(text_, end + 1, out.value);
     if (past == 0) return 0;

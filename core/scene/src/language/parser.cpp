@@ -507,7 +507,7 @@ class Parser final : private TokenCursor {
     void read_plain_run(std::span<const std::string_view> child_names, OnProperty& on_property,
                         bool pending) {
         Property& property = property_;
-        Lexer::PlainProperty plain;
+        Lexer::PlainProperty& plain = plain_property_;
         while (!sink_.stopped()) {
             const std::size_t past = reading_->plain_property(plain);
             if (past == 0 || contains(child_names, plain.name)) break;
@@ -1152,8 +1152,8 @@ class Parser final : private TokenCursor {
             [&] {
                 BlockSource child;
                 bool opened;
-                if (same_name(cur_->text, schema_of<Material>().keyword) &&
-                    next_->kind == TokenKind::colon) {
+                const bool material = same_name(cur_->text, schema_of<Material>().keyword);
+                if (material && next_->kind == TokenKind::colon) {
                     const SourcePos at = cur_->pos;
                     if (const Symbol* found = read_material_reference()) {
                         if (named) {
@@ -1171,15 +1171,14 @@ class Parser final : private TokenCursor {
                     }
                     return;
                 }
-                if (same_name(cur_->text, schema_of<Material>().keyword) &&
-                    next_->kind == TokenKind::word) {
+                if (material && next_->kind == TokenKind::word) {
                     sink_.error(cur_->pos,
                                 "a named material is defined at the top level; inside a "
                                 "primitive, write 'material: NAME;' to use one");
                     skip_block();
                     return;
                 }
-                if (same_name(cur_->text, schema_of<Material>().keyword)) {
+                if (material) {
                     opened = parse_property_block(child, 1, primitive.material,
                                                   schema_of<Material>().keyword);
                     // Unopened, the block read nothing: the buffer still holds
@@ -1469,6 +1468,8 @@ class Parser final : private TokenCursor {
     // The property being read, reused: read_property sets all of it, and a
     // fresh one cleared 136 bytes per property first.
     Property property_;
+    // read_plain_run's, reused: a fresh one cleared 128 bytes a block.
+    Lexer::PlainProperty plain_property_;
     FinishTable finishes_;           // the primitives' finishes, each value once
     Shared<Finish> scratch_finish_;  // see take_scratch_finish
 };
