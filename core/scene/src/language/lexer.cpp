@@ -405,6 +405,47 @@ bool read_signed_number(std::string_view s, std::size_t& i, double& out) {
     return true;
 }
 
+// read_plain_vector for what generators write: `<a,b,c>`, no blanks but
+// spaces after the commas, each number an optional '-', then digits, a '.'
+// and digits, 15 digits at most and no exponent: each is read_short_number's
+// mantissa and division. With so little to look for a number costs half the
+// general reader's. False, with `i` unmoved, for anything else (a '+', a
+// blank elsewhere, an exponent, more digits), which read_plain_vector then
+// reads. The caller has checked that the text's last byte could not continue
+// a number, so no run of digits reaches the end: one test of the end a number.
+[[gnu::always_inline]] inline bool read_dense_vector(std::string_view s, std::size_t& i,
+                                                     Vec3& out) {
+    constexpr std::ptrdiff_t max_short_digits = 15;
+    const char* const end = s.data() + s.size();
+    const char* p = s.data() + i + 1;
+    double parts[3];
+    for (int c = 0; c < 3; ++c) {
+        if (c > 0)
+            while (p < end && *p == ' ') ++p;
+        // A sign and a digit, or a digit and what ends the number.
+        if (end - p < 2) return false;
+        const bool negative = *p == '-';
+        p += negative ? 1 : 0;
+        const char* const first = p;
+        std::uint64_t mantissa = read_digits(p, 0);
+        std::ptrdiff_t digits = p - first;
+        std::size_t fraction_digits = 0;
+        if (*p == '.') {
+            const char* const point = ++p;
+            mantissa = read_digits(p, mantissa);
+            fraction_digits = static_cast<std::size_t>(p - point);
+            digits += p - point;
+        }
+        if (digits == 0 || digits > max_short_digits || *p != (c < 2 ? ',' : '>')) return false;
+        const double value = static_cast<double>(mantissa) / powers_of_ten[fraction_digits];
+        parts[c] = negative ? -value : value;
+        ++p;
+    }
+    out = Vec3{parts[0], parts[1], parts[2]};
+    i = static_cast<std::size_t>(p - s.data());
+    return true;
+}
+
 // At the '<' at `i`: three signed numbers between commas and '>'.
 bool read_plain_vector(std::string_view s, std::size_t& i, Vec3& out) {
     std::size_t k = i + 1;
@@ -437,7 +478,9 @@ std::size_t plain_value_at(std::string_view text, std::size_t i, Lexer::PlainVal
     skip_blanks(text, i);
     const std::size_t start = i;
     if (i < text.size() && text[i] == '<') {
-        if (!read_plain_vector(text, i, out.vector)) return 0;
+        if (!(!is_number_char(text.back()) && read_dense_vector(text, i, out.vector)) &&
+            !read_plain_vector(text, i, out.vector))
+            return 0;
         out.is_vector = true;
     } else {
         if (!read_signed_number(text, i, out.number)) return 0;
