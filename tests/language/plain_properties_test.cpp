@@ -132,10 +132,11 @@ struct Compared {
     bool clean = false;
 };
 
-Compared expect_same_parse(const std::string& text) {
+Compared expect_same_parse(const std::string& text, const IncludeReader& read_include = {}) {
     Compared seen;
     for (bool map : {true, false}) {
         ParseOptions options{.source_map = map, .threads = 1};
+        options.read_include = read_include;
         options.record_primitive_readings = !map;
         ParseOptions tokens = options;
         tokens.plain_properties = false;
@@ -177,6 +178,21 @@ TEST(PlainProperties, RandomTextsReadAsTheTokensReadThem) {
     // The texts reach both ends: the error cap inside a run, and no message.
     EXPECT_GT(stopped, kTexts / 50);
     EXPECT_GT(clean, 0);
+}
+
+// The same in an included file, whose lexer and positions are its own.
+TEST(PlainProperties, IncludedTextsReadAsTheTokensReadThem) {
+    std::mt19937_64 rng(32);
+    std::string included;
+    const IncludeReader reader = [&](const std::string& path,
+                                     std::uintmax_t) -> Expected<IncludedText> {
+        return IncludedText{path, included};
+    };
+    for (int i = 0; i < 300; ++i) {
+        included = i % 10 == 9 ? many_errors(rng) : random_scene(rng, i % 3 != 0);
+        expect_same_parse("# a scene in another file\ninclude \"a.jts\";\n", reader);
+        if (HasFailure()) break;
+    }
 }
 
 TEST(PlainProperties, GeneratedSpheresReadAsTheTokensReadThem) {
