@@ -797,7 +797,8 @@ class Parser final : private TokenCursor {
     template <class Target>
     bool parse_property_block(BlockSource& block, std::size_t level, Target& target,
                               std::string_view keyword = {}) {
-        if (!(keyword.empty() ? open_block(block) : open_block(block, keyword, /*behind=*/true)))
+        if (!open_block(block, keyword.empty() ? static_keyword(cur_->text) : keyword,
+                        /*behind=*/true))
             return false;
         read_properties(block, level, [&](OpenBlock& open) {
             parse_body(
