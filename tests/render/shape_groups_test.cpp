@@ -49,17 +49,6 @@ Scene small_scene(double s, std::mt19937& rng) {
     return scene;
 }
 
-// A unit vector at right angles to `v`.
-Vec3 across(const Vec3& v, std::mt19937& rng) {
-    std::normal_distribution<double> n;
-    Vec3 u;
-    do {
-        const Vec3 w{n(rng), n(rng), n(rng)};
-        u = w - (glm::dot(w, v) / glm::dot(v, v)) * v;
-    } while (!(glm::dot(u, u) > 1e-6));
-    return glm::normalize(u);
-}
-
 Vec3 any_direction(std::mt19937& rng) {
     std::normal_distribution<double> n;
     Vec3 d;

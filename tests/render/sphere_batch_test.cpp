@@ -39,17 +39,6 @@ bool scalar_missed_early(const WorldSphere& s, const Vec3& origin, const Vec3& d
            (DecideEntryBeyond && t_min >= 0.0 && enters_beyond(a, b, c, ff, t_max));
 }
 
-// A unit vector at right angles to `v`.
-Vec3 across(const Vec3& v, std::mt19937_64& rng) {
-    std::normal_distribution<double> n;
-    Vec3 u;
-    do {
-        const Vec3 w{n(rng), n(rng), n(rng)};
-        u = w - (glm::dot(w, v) / glm::dot(v, v)) * v;
-    } while (!(glm::dot(u, u) > 1e-6));
-    return glm::normalize(u);
-}
-
 // A ray from `origin` that passes `s`'s outline by `miss` radii (negative:
 // inside it), its direction scaled by `scale`.
 Vec3 grazing(const WorldSphere& s, const Vec3& origin, double miss, double scale,
