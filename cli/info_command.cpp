@@ -6,6 +6,7 @@
 #include "jtracer/scene_file.hpp"
 #include "jtracer/scene_info.hpp"
 #include "jtracer/validate.hpp"
+#include "jtracer/vector_unit.hpp"
 
 #include <CLI/CLI.hpp>
 #include <glm/geometric.hpp>
@@ -97,6 +98,7 @@ Expected<json> describe(const Scene& scene) {
                      {"primitives", memory.primitives},
                      {"embree", memory.embree},
                      {"total", memory.total()}};
+    out["vector_unit"] = vector_unit_name(vector_unit().unit);
     return out;
 }
 
@@ -168,6 +170,8 @@ void print_text(const json& d) {
               << mib(memory["image_maps"].get<std::size_t>())
               << ", Embree's acceleration structure and triangles "
               << mib(memory["embree"].get<std::size_t>()) << ")\n";
+    std::cout << "vector unit of JTracer's batched tests: " << d["vector_unit"].get<std::string>()
+              << " (" << kVectorUnitVariable << "=sse2 or avx picks one; the image is the same)\n";
 }
 
 }  // namespace
@@ -183,7 +187,8 @@ int run_info_command(int argc, char** argv) {
         "texture and vertex colours);\n"
         "the scene's world box; each image map's and the background map's size and memory;\n"
         "the lights; the cameras and where they look; and the prepared scene's memory,\n"
-        "Embree's counted as it builds (info prepares the scene as a render would).\n"
+        "Embree's counted as it builds (info prepares the scene as a render would);\n"
+        "and the vector unit JTracer's own batched tests run on.\n"
         "\n"
         "Examples:\n"
         "  jtracer-cli info scenes/mesh.jts\n"

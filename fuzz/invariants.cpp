@@ -128,6 +128,14 @@ std::string check_scene_text(std::string_view text) {
     const std::span<const SourceFile> files = parsed.source.files;
     if (std::string e = check_located(parsed.diagnostics, text, "parse", files); !e.empty())
         return e;
+    // Runs of plain properties, read without tokens for their names, read as
+    // the tokens read them: the same scene, records and messages.
+    ParseOptions by_tokens = options;
+    by_tokens.plain_properties = false;
+    const ParseResult tokens = parse_scene(text, by_tokens);
+    if (!(tokens.scene == parsed.scene) || !(tokens.source == parsed.source) ||
+        tokens.diagnostics != parsed.diagnostics)
+        return "parse: the plain properties' reading differs from the tokens'";
     if (!parsed.ok()) return {};
     std::vector<Diagnostic> checks = validate_scene(parsed.scene, parsed.source);
     if (std::string e = check_located(checks, text, "validate", files); !e.empty()) return e;

@@ -1,11 +1,12 @@
 #!/usr/bin/env bash
-# The image must not depend on which vector unit Embree picks, nor on how
-# JTracer was built. Renders every scene in scenes/ (not the parts/ that
-# scenes include) and BVH-sized scenes from
+# The image must not depend on which vector unit Embree or JTracer picks, nor
+# on how JTracer was built. Renders every scene in scenes/ (not the parts/
+# that scenes include) and BVH-sized scenes from
 # the bench generator (thousands of overlapping spheres and cylinders) with
-# Embree's default choice and forced to each ISA this CPU runs
-# (JTRACER_EMBREE_CONFIG=isa=...), and with libjpeg-turbo's SIMD code off
-# (JSIMD_FORCENONE=1), and requires identical bytes. It prints the CPU's
+# the default choices and forced to each ISA this CPU runs: Embree's by
+# JTRACER_EMBREE_CONFIG=isa=..., JTracer's own batched tests by
+# JTRACER_SIMD (sse2 below AVX, avx from it); and with libjpeg-turbo's SIMD
+# code off (JSIMD_FORCENONE=1), and requires identical bytes. It prints the CPU's
 # features, the target Embree's default takes and each level it compared. The sums are
 # kept in SUMS_DIR/BUILD.sums and compared with those of the other builds of
 # the same revision (release, debug, sanitizers) found there.
@@ -52,6 +53,20 @@ default_target=$(highest_target "$default_report")
 default_targets=" $(config_line Targets "$default_report") "
 [ -n "$default_target" ] || fail "no Targets line in Embree's report: $default_report"
 
+# JTracer's own vector unit for each Embree level: SSE2 below AVX.
+simd_for() { # ISA
+    case $1 in sse2 | sse4.2) echo sse2 ;; *) echo avx ;; esac
+}
+# What `info` says JTracer's batched tests run on, with JTRACER_SIMD=VALUE or
+# (no argument) unset.
+vector_unit() { # [VALUE]
+    if [ $# -eq 0 ]; then
+        env -u JTRACER_SIMD "$cli" info --json "${scenes[0]}"
+    else
+        JTRACER_SIMD=$1 "$cli" info --json "${scenes[0]}"
+    fi | python3 -c 'import json, sys; print(json.load(sys.stdin)["vector_unit"])'
+}
+
 # Each level Embree can be forced to, and the highest target it must then
 # take. Embree names its AVX-512 target AVX512 (3.13) or AVX512SKX/AVX512KNL
 # (older), and its ISA line lists AVX512F, AVX512DQ, ...: the targets, not the
@@ -82,9 +97,27 @@ for i in "${!levels[@]}"; do
     grep -qxE -- "$target" <<<"$chosen" ||
         fail "isa=$isa not applied: its highest target is '$chosen', not $target (Targets: $(config_line Targets "$report"))"
     isas+=("$isa")
-    compared+=("isa=$isa ($chosen)")
+    compared+=("isa=$isa ($chosen, JTracer's $(simd_for "$isa"))")
 done
 [ -n "$builds_only" ] || [ ${#isas[@]} -ge 2 ] || fail "fewer than two ISAs to compare: ${isas[*]}"
+
+if [ -z "$builds_only" ]; then
+    cpu_avx=sse2
+    grep -qw avx /proc/cpuinfo && cpu_avx=avx
+    chosen=$(vector_unit)
+    [ "$chosen" = "$cpu_avx" ] || fail "JTracer's default vector unit is $chosen on a CPU with $cpu_avx"
+    for simd in sse2 ${cpu_avx/sse2/}; do
+        chosen=$(vector_unit "$simd")
+        [ "$chosen" = "$simd" ] || fail "JTRACER_SIMD=$simd not applied: info says $chosen"
+    done
+    if JTRACER_SIMD=avx512 "$cli" "${scenes[0]}" -q -o "$work/refused.bmp" 2>"$work/refused.txt"; then
+        fail "JTRACER_SIMD=avx512 was accepted"
+    fi
+    grep -q "JTRACER_SIMD='avx512': expected sse2 or avx" "$work/refused.txt" ||
+        fail "JTRACER_SIMD=avx512 refused without saying why: $(cat "$work/refused.txt")"
+    [ ! -e "$work/refused.bmp" ] || fail "JTRACER_SIMD=avx512 left an image behind"
+    echo "isa identity: JTracer's default vector unit here is $cpu_avx; JTRACER_SIMD applied"
+fi
 echo "isa identity: this CPU: $(config_line ISA "$default_report")"
 echo "isa identity: Embree's default takes $default_target; compared with ${compared[*]}"
 
@@ -93,13 +126,15 @@ sums=$work/sums
 for scene in "${scenes[@]}"; do
     name=${scene#"$source_dir/"}
     name=${name#"$work/"}
-    env -u JTRACER_EMBREE_CONFIG "$cli" "$scene" -q -o "$work/default.bmp" \
+    env -u JTRACER_EMBREE_CONFIG -u JTRACER_SIMD "$cli" "$scene" -q -o "$work/default.bmp" \
         --width 256 --height 144 || fail "$name: render failed"
     for isa in "${isas[@]}"; do
-        JTRACER_EMBREE_CONFIG="isa=$isa" "$cli" "$scene" -q -o "$work/$isa.bmp" \
-            --width 256 --height 144 || fail "$name isa=$isa: render failed"
+        simd=$(simd_for "$isa")
+        JTRACER_EMBREE_CONFIG="isa=$isa" JTRACER_SIMD=$simd "$cli" "$scene" -q \
+            -o "$work/$isa.bmp" --width 256 --height 144 ||
+            fail "$name isa=$isa JTRACER_SIMD=$simd: render failed"
         cmp -s "$work/default.bmp" "$work/$isa.bmp" ||
-            fail "$name: isa=$isa gives other bytes than Embree's default"
+            fail "$name: isa=$isa JTRACER_SIMD=$simd gives other bytes than the defaults"
     done
     # libjpeg-turbo picks its vector unit too (JPEG image maps): its plain C code.
     [ -z "$builds_only" ] || {

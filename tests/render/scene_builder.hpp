@@ -6,6 +6,8 @@
 #include "jtracer/render_job.hpp"
 #include "jtracer/scene.hpp"
 
+#include <glm/geometric.hpp>
+
 #include <random>
 
 namespace jt::test {
@@ -89,6 +91,18 @@ inline Rgb expected(const Colour& c) {
 
 inline std::ostream& operator<<(std::ostream& os, const Rgb& c) {
     return os << "(" << c.r << ", " << c.g << ", " << c.b << ")";
+}
+
+// A random unit vector at right angles to `v`.
+template <class Random>
+Vec3 across(const Vec3& v, Random& rng) {
+    std::normal_distribution<double> n;
+    Vec3 u;
+    do {
+        const Vec3 w{n(rng), n(rng), n(rng)};
+        u = w - (glm::dot(w, v) / glm::dot(v, v)) * v;
+    } while (!(glm::dot(u, u) > 1e-6));
+    return glm::normalize(u);
 }
 
 // `count` shapes scattered in [-extent, extent]^3, sizes up to `max_size`:

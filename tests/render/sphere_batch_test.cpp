@@ -39,17 +39,6 @@ bool scalar_missed_early(const WorldSphere& s, const Vec3& origin, const Vec3& d
            (DecideEntryBeyond && t_min >= 0.0 && enters_beyond(a, b, c, ff, t_max));
 }
 
-// A unit vector at right angles to `v`.
-Vec3 across(const Vec3& v, std::mt19937_64& rng) {
-    std::normal_distribution<double> n;
-    Vec3 u;
-    do {
-        const Vec3 w{n(rng), n(rng), n(rng)};
-        u = w - (glm::dot(w, v) / glm::dot(v, v)) * v;
-    } while (!(glm::dot(u, u) > 1e-6));
-    return glm::normalize(u);
-}
-
 // A ray from `origin` that passes `s`'s outline by `miss` radii (negative:
 // inside it), its direction scaled by `scale`.
 Vec3 grazing(const WorldSphere& s, const Vec3& origin, double miss, double scale,
@@ -191,13 +180,14 @@ TEST(SphereBatch, ListWalksFindEveryRaysFirstHit) {
     std::mt19937_64 rng(72);
     std::uniform_real_distribution<double> unit(0.0, 1.0);
     std::uniform_int_distribution<int> pick_miss(0, std::size(misses) - 1);
-    int hits = 0, rays = 0;
+    int hits = 0, rays = 0, crowded_short = 0;
     // Nests and shells a nest: lists of 1, 2, 3 shapes (shorter than a
     // batch), 16 to 20 (the shortest walked in batches, ending in a whole or a
-    // partial batch) and up to a few hundred.
-    constexpr std::pair<int, int> crowds[] = {{1, 1}, {1, 2},  {1, 3},  {1, 5},  {2, 3},
-                                              {3, 3}, {1, 13}, {1, 14}, {1, 15}, {1, 16},
-                                              {2, 9}, {4, 12}, {8, 40}};
+    // partial batch) and up to a few hundred. Where the shells overlap heavily
+    // (Geometry::crowded), covered lists from 4 shapes go in batches.
+    constexpr std::pair<int, int> crowds[] = {{1, 1},  {1, 2},  {1, 3},  {1, 5},  {2, 3},
+                                              {3, 3},  {1, 8},  {1, 11}, {1, 13}, {1, 14},
+                                              {1, 15}, {1, 16}, {2, 9},  {4, 12}, {8, 40}};
     for (const auto& [nests, per_nest] : crowds) {
         for (int scene_round = 0; scene_round < 3; ++scene_round) {
             auto prepared = prepare_scene(shells(rng, nests, per_nest)).value();
@@ -214,6 +204,8 @@ TEST(SphereBatch, ListWalksFindEveryRaysFirstHit) {
                 // Only a covered list is walked in batches; any list may be called
                 // covered, which only lets its walk go on longer.
                 const ListedShapes listed{shapes, nearest, from % 3 != 0};
+                crowded_short +=
+                    g.crowded && listed.covered && shapes.size() >= 4 && shapes.size() < 16;
                 for (int r = 0; r < 300; ++r) {
                     const WorldSphere& aim = g.spheres[rng() % g.spheres.size()];
                     const Vec3 d = grazing(aim, origin, misses[pick_miss(rng)],
@@ -234,6 +226,83 @@ TEST(SphereBatch, ListWalksFindEveryRaysFirstHit) {
     }
     EXPECT_GT(hits, rays / 3);
     EXPECT_LT(hits, rays);
+    EXPECT_GT(crowded_short, 10) << "crowded covered lists of 4 to 15 shapes are walked";
+}
+
+TEST(SphereBatch, AWalkHintedWithAnySphereFindsEveryRaysFirstHit) {
+    // A hint only orders the tests: the hinted sphere met first, met later
+    // than the first hit, missed, a twin of the first hit with the higher
+    // index (the tie rule must still pick the lower), a stale hint from the
+    // previous ray, none, or out of range. A hinted walk leaves the hint on
+    // the sphere it met first.
+    std::mt19937_64 rng(73);
+    std::uniform_real_distribution<double> unit(0.0, 1.0);
+    std::uniform_int_distribution<int> pick_miss(0, std::size(misses) - 1);
+    int hits = 0, rays = 0, twins = 0, left_on = 0;
+    constexpr std::pair<int, int> crowds[] = {{1, 16}, {1, 20}, {2, 9}, {4, 12}, {8, 40}};
+    for (const auto& [nests, per_nest] : crowds) {
+        for (int scene_round = 0; scene_round < 3; ++scene_round) {
+            auto prepared = prepare_scene(shells(rng, nests, per_nest)).value();
+            const Geometry& g = *prepared->geometry;
+            ASSERT_GE(g.spheres.size() + g.shapes.size(), 16u);
+            for (int from = 0; from < 4; ++from) {
+                const WorldSphere& home = g.spheres[from % g.spheres.size()];
+                const Vec3 origin = from % 2 == 0
+                                        ? home.center + home.radius * 40.0 * across({1, 2, 3}, rng)
+                                        : home.center + home.radius * 0.3 * across({3, 2, 1}, rng);
+                std::vector<ListedDistance> nearest;
+                const std::vector<std::uint32_t> shapes = listed_from(g, origin, nearest);
+                ListedShapes listed{shapes, nearest, true};
+                HitHint stale;
+                for (int r = 0; r < 300; ++r) {
+                    const WorldSphere& aim = g.spheres[rng() % g.spheres.size()];
+                    const Vec3 d = grazing(aim, origin, misses[pick_miss(rng)],
+                                           std::pow(10.0, 3.0 * (unit(rng) - 0.5)), rng);
+                    Hit expected;
+                    const bool hit = closest_hit(g, origin, d, 0.0, expected);
+                    ++rays;
+                    hits += hit;
+                    // The sphere met first, when a plain sphere is.
+                    std::uint32_t first = HitHint::none;
+                    for (std::uint32_t i = 0; hit && i < g.spheres.size(); ++i)
+                        if (g.spheres[i].source == expected.source) first = i;
+                    std::vector<std::uint32_t> hints = {
+                        HitHint::none, static_cast<std::uint32_t>(rng() % g.spheres.size()),
+                        static_cast<std::uint32_t>(g.spheres.size() + 3), stale.sphere};
+                    if (first != HitHint::none) {
+                        hints.push_back(first);
+                        // A twin: the same sphere listed again, later.
+                        for (std::uint32_t i = first + 1; i < g.spheres.size(); ++i)
+                            if (g.spheres[i].center == g.spheres[first].center &&
+                                g.spheres[i].radius == g.spheres[first].radius) {
+                                hints.push_back(i);
+                                ++twins;
+                            }
+                    }
+                    for (const std::uint32_t h : hints) {
+                        HitHint hint{h};
+                        listed.hint = &hint;
+                        Hit actual;
+                        ASSERT_EQ(closest_hit(g, origin, d, 0.0, actual, &listed), hit)
+                            << r << " hint " << h;
+                        if (first != HitHint::none) {
+                            ASSERT_EQ(hint.sphere, first) << r << " hint " << h;
+                            ++left_on;
+                        }
+                        if (!hit) continue;
+                        ASSERT_EQ(actual.t, expected.t) << r << " hint " << h;
+                        ASSERT_EQ(actual.source, expected.source) << r << " hint " << h;
+                        ASSERT_EQ(actual.normal, expected.normal) << r << " hint " << h;
+                    }
+                    stale.sphere = first;
+                }
+            }
+        }
+    }
+    EXPECT_GT(hits, rays / 3);
+    EXPECT_LT(hits, rays);
+    EXPECT_GT(twins, 100);
+    EXPECT_GT(left_on, rays);
 }
 
 }  // namespace

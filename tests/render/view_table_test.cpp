@@ -247,6 +247,66 @@ TEST(ViewTable, ASphereReachingABlockByAHairIsListedThere) {
     }
 }
 
+// A sphere `distance` from the camera whose outline passes the ray through
+// image point (x, y) at the angle `gap` (negative: the ray crosses the
+// outline by that much), its centre off toward image point (x - dx, y - dy),
+// and whose outline spans `angle` about its centre.
+Primitive beside_ray(const CameraFrame& c, double x, double y, double dx, double dy, double gap,
+                     double angle, double distance) {
+    const Vec3 ray = camera_direction(c, x, y);
+    const Vec3 away = camera_direction(c, x - dx, y - dy);
+    const Vec3 side = glm::normalize(away - glm::dot(away, ray) * ray);
+    const double off = angle + gap;
+    const Vec3 centre = glm::normalize(std::cos(off) * ray + std::sin(off) * side);
+    return sphere(c.position + distance * centre, distance * std::sin(angle));
+}
+
+TEST(ViewTable, ASphereIsListedInABlockItsOutlineReachesOnlyAtACorner) {
+    // Spheres just off a block's corner, diagonally: the box around each
+    // outline reaches over a pixel into the block, but the outline itself
+    // either crosses the corner's ray by a hair (the block must list the
+    // sphere: a ray just inside the corner hits it) or passes it by 0.3 of a
+    // pixel (no ray of the block meets it: the block leaves it out).
+    const CameraFrame c = view({0, 0, 0}, {0, 0, -1}, 40, 160, 120);
+    const double pixel = 2.0 * c.tan_half_fov / c.height;  // about, in radians
+    Scene scene;
+    std::vector<std::array<int, 2>> blocks;
+    std::vector<std::array<double, 2>> probes;
+    for (int k = 0; k < 24; ++k) {
+        const int column = 4 + 6 * (k % 6), row = 3 + 6 * (k / 6);
+        // The corner the sphere lies off: k % 4 picks which of the four.
+        const int cx = k % 2, cy = k / 2 % 2;
+        const double x = view_block * (column + cx), y = view_block * (row + cy);
+        const double dx = cx ? -1.0 : 1.0, dy = cy ? -1.0 : 1.0;  // away from the block
+        const bool reaches = k % 3 != 0;
+        scene.primitives.push_back(beside_ray(
+            c, x, y, dx, dy, reaches ? -1e-4 * pixel : 0.3 * pixel, 5.0 * pixel, 20.0 + k));
+        blocks.push_back({column, row});
+        // 1e-5 pixel into the block along both axes from the corner.
+        probes.push_back({x - dx * 1e-5, y - dy * 1e-5});
+    }
+    auto prepared = prepare_scene(scene).value();
+    const Geometry& g = *prepared->geometry;
+    const ViewTable table = build_view_table(g, c);
+    ASSERT_TRUE(table.built);
+    for (std::uint32_t k = 0; k < blocks.size(); ++k) {
+        const ListedShapes listed = block_shapes(table, blocks[k][0], blocks[k][1]);
+        const bool is_listed =
+            std::find(listed.shapes.begin(), listed.shapes.end(), k) != listed.shapes.end();
+        std::uint32_t source = ~0u;
+        const bool hit = same_first_hit(g, table, c, probes[k][0], probes[k][1], &source);
+        ASSERT_FALSE(::testing::Test::HasFailure()) << k;
+        if (k % 3 != 0) {
+            EXPECT_TRUE(is_listed) << "sphere " << k << " crosses the corner's ray";
+            EXPECT_TRUE(hit && source == k) << "the probe inside the corner hits sphere " << k;
+        } else {
+            EXPECT_FALSE(is_listed) << "sphere " << k << " passes the block's corner";
+            EXPECT_FALSE(hit) << k;
+        }
+    }
+    EXPECT_GT(check_view(g, c, 8), 1000);
+}
+
 TEST(ViewTable, ASphereMissingABlockCornerByAHairDoesNotCoverIt) {
     // Spheres centred on a block's centre, each just too small to hold the
     // block's farthest corner, before a far wall: the corner's ray misses the

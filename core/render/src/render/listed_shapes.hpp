@@ -31,6 +31,17 @@ inline ListedDistance listed_distance(double nearest) {
     return float_at_or_below(nearest);
 }
 
+// The sphere a previous walk met first: the primary rays of neighbouring
+// pixels mostly meet the same sphere, and offering it before a walk gives the
+// walk a near best hit from its start, so that most of the spheres it passes
+// are answered by their early tests (where heavily overlapping spheres cover
+// a block, a walk found some three nearer hits in turn before its last). Only
+// a guess: any sphere, or none, gives the same answer.
+struct HitHint {
+    static constexpr std::uint32_t none = 0xFFFFFFFFu;
+    std::uint32_t sphere = none;  // an index into Geometry::spheres
+};
+
 // No point of shapes[i] is nearer the table's point than nearest[i], and
 // nearest never decreases along the list: a walk stops at the first shape that
 // lies beyond the hit it has (or beyond the light).
@@ -40,6 +51,10 @@ struct ListedShapes {
     // The list holds a sphere that every ray it serves meets: a walk of even
     // a long list ends at that sphere's hit or soon after.
     bool covered = false;
+    // A closest-hit walk of a covered list long enough to go in batches
+    // offers this hint's sphere first, and leaves it on the sphere met first
+    // (ray_queries.cpp); other walks leave it alone.
+    HitHint* hint = nullptr;
     std::size_t size() const { return shapes.size(); }
 };
 

@@ -1,5 +1,6 @@
 #include "geometry/bounds.hpp"
 #include "io/huge_pages.hpp"
+#include "jtracer/vector_unit.hpp"
 #include "render/embree_device.hpp"
 #include "render/far_ray.hpp"
 #include "render/listed_shapes.hpp"
@@ -7,6 +8,7 @@
 #include "render/prepared_scene.hpp"
 #include "render/ray_queries.hpp"
 #include "render/shadow_spheres.hpp"
+#include "render/shape_groups.hpp"
 #include "render/user_geometry.hpp"
 
 #include <tbb/blocked_range.h>
@@ -270,6 +272,8 @@ void build_bvh(Geometry& g, double magnitude) {
     for (std::uint32_t i = 0; i < g.shapes.size(); ++i)
         if (!within_reach(g.shapes[i].bounds)) g.beyond_bvh.push_back(i | shape_flag);
 
+    if (g.beyond_bvh.empty()) g.groups = group_shapes(g.spheres, g.shapes);
+
     g.bvh = rtcNewScene(embree_device());
     const RTCBuildQuality quality =
         bounded > fast_build_threshold ? RTC_BUILD_QUALITY_LOW : RTC_BUILD_QUALITY_MEDIUM;
@@ -433,8 +437,10 @@ void take_materials(Scene& scene, PreparedScene& prepared) {
 Expected<std::shared_ptr<const PreparedScene>> prepare(
     const Scene& scene, std::shared_ptr<const Scene> owned, Scene* handed,
     std::shared_ptr<const PreparedScene> previous) {
-    // Checked here, before any work: the geometry needs the device.
+    // Checked here, before any work: the geometry needs the device, and a
+    // vector unit asked for and missing must not be passed over in silence.
     if (!embree_device()) return Error{embree_device_failure()};
+    if (!vector_unit().failure.empty()) return Error{vector_unit().failure};
     auto prepared = std::make_shared<PreparedScene>();
     // The digest decides first whether a previous geometry serves again;
     // without one it is only kept for the next time, and worked out beside

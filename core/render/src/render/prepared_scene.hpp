@@ -17,6 +17,7 @@
 
 #include <embree3/rtcore.h>
 
+#include <cstddef>
 #include <cstdint>
 #include <memory>
 #include <vector>
@@ -66,6 +67,36 @@ struct PatternSpace {
     Shape shape;
 };
 
+// Spheres decided at once by render/sphere_batch.hpp's early answers: two
+// SSE2 registers a value, or one AVX register.
+inline constexpr std::size_t sphere_batch = 4;
+
+// Four spheres' centres and radii, a value's four lanes side by side: read as
+// whole registers, where a batch of listed spheres gathers each value.
+struct alignas(32) SphereLanes {
+    double x[sphere_batch], y[sphere_batch], z[sphere_batch], r[sphere_batch];
+};
+
+// The bounded shapes of a small scene in groups of sphere_batch, for the rays
+// without a list (render/shape_groups.hpp).
+struct ShapeGroups {
+    // Group g's lanes: a sphere's own centre and radius, or a transformed
+    // shape's bounding sphere; what lane k is, as listed_shapes.hpp lists it,
+    // at listed[sphere_batch * g + k]. Unused lanes repeat the group's first.
+    std::vector<SphereLanes> members;
+    std::vector<std::uint32_t> listed;
+    // Of each group: the bits of its used lanes, and of its sphere lanes.
+    std::vector<std::uint8_t> used;
+    std::vector<std::uint8_t> spheres;
+    // The groups' spheres, sphere_batch groups an entry (unused lanes repeat
+    // the last group's and are never read).
+    std::vector<SphereLanes> bounds;
+    std::size_t count = 0;
+    // The largest coordinate of an origin the groups take.
+    double reach = 0.0;
+    bool empty() const { return count == 0; }
+};
+
 struct GeometryDigest {
     std::uint64_t a = 0, b = 0;
     std::size_t primitives = 0;
@@ -93,6 +124,10 @@ struct Geometry {
     // the planes. Empty in any scene whose numbers stay near unit size.
     std::vector<std::uint32_t> beyond_bvh;
     ShadowSpheres shadow;
+    // With a BVH of at most max_grouped_shapes shapes, none beyond it: the
+    // shapes in groups of four, which rays without a list test instead of
+    // walking the BVH (render/shape_groups.hpp).
+    ShapeGroups groups;
     // Whether the spheres overlap heavily (render/shadow_spheres.hpp); only
     // then is there a shadow BVH, and hard shadow rays walk longer cell lists.
     bool crowded = false;

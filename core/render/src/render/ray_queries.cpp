@@ -5,6 +5,7 @@
 #include "render/far_ray.hpp"
 #include "render/float_ray.hpp"
 #include "render/shadow_spheres.hpp"
+#include "render/shape_groups.hpp"
 #include "render/sphere_batch.hpp"
 
 #include <glm/geometric.hpp>
@@ -39,6 +40,10 @@ constexpr std::size_t max_covered_position = 256;
 // a shorter one mostly ends at its first shapes, where a batch costs more than
 // it decides.
 constexpr std::size_t min_batched_list = 16;
+// Where the spheres overlap heavily (Geometry::crowded), a covered list's
+// walk passes more spheres it enters beyond its hit than it stops at, down
+// to lists of a few.
+constexpr std::size_t min_crowded_batched_list = 4;
 
 // Embree hands our callbacks the context pointer we passed in; the query
 // structs start with it so that they can be found again from it.
@@ -290,6 +295,9 @@ bool occluded_by_testing_all(const Geometry& g, const Vec3& origin, const Vec3& 
     return false;
 }
 
+bool closest_by_listed_in_batches(ClosestQuery& q, const ListedShapes& listed, std::size_t limit,
+                                  double length);
+
 // The walk of a direction table's list around the ray's origin: it stops at
 // the first shape that lies wholly beyond the best hit so far. True when that
 // settles the ray; false when `limit` shapes were tested first, and the rest
@@ -297,7 +305,8 @@ bool occluded_by_testing_all(const Geometry& g, const Vec3& origin, const Vec3& 
 // the answer is the nearest of all, whichever found it).
 //
 // A covered list (heavily overlapping spheres) of min_batched_list shapes or
-// more is walked in batches: the spheres among the next few shapes the walk
+// more, or of min_crowded_batched_list where the spheres are crowded, is
+// walked in batches: the spheres among the next few shapes the walk
 // may reach are first given the early tests of intersect_sphere together
 // (sphere_batch.hpp), against the best hit as it stands. The ones those
 // decide would answer no_hit to any nearer best hit too, and are passed over;
@@ -305,11 +314,15 @@ bool occluded_by_testing_all(const Geometry& g, const Vec3& origin, const Vec3& 
 // test of whether it goes on. Most spheres of such a list lie beyond the
 // nearest hit or pass wide of the ray. Other lists, and short covered ones,
 // mostly end at their first or second shape, where a batch would only add
-// work: they are walked one shape at a time.
+// work: they are walked one shape at a time. A batched walk first offers the
+// list's hint, if it has one, and leaves the hint on its best hit; in a
+// shorter list the hinted sphere is mostly the first, and would be tested
+// twice.
 bool closest_by_listed(ClosestQuery& q, const ListedShapes& listed, std::size_t limit) {
     const double length = glm::length(q.direction);
     const std::size_t size = listed.size();
-    if (!listed.covered || size < min_batched_list) {
+    if (!listed.covered ||
+        size < (q.geometry->crowded ? min_crowded_batched_list : min_batched_list)) {
         for (std::size_t k = 0; k < size; ++k) {
             if (listed.nearest[k] > q.t * length) return true;
             if (k == limit) return false;
@@ -317,6 +330,21 @@ bool closest_by_listed(ClosestQuery& q, const ListedShapes& listed, std::size_t 
         }
         return true;
     }
+    if (listed.hint) {
+        const std::uint32_t hinted = listed.hint->sphere;
+        if (hinted < q.geometry->spheres.size()) offer_sphere(q, hinted);
+    }
+    const bool settled = closest_by_listed_in_batches(q, listed, limit, length);
+    if (listed.hint && q.kind == HitKind::sphere && q.source != no_source)
+        listed.hint->sphere = q.index;
+    return settled;
+}
+
+// closest_by_listed's walk of a covered list in batches; `length` is that of
+// the ray's direction.
+bool closest_by_listed_in_batches(ClosestQuery& q, const ListedShapes& listed, std::size_t limit,
+                                  double length) {
+    const std::size_t size = listed.size();
     const BatchRay ray = batch_ray(q.origin, q.direction, q.t_min);
     const bool avx = sphere_batch_avx();
     std::size_t k = 0;
@@ -345,6 +373,53 @@ bool closest_by_listed(ClosestQuery& q, const ListedShapes& listed, std::size_t 
         k += count;
     }
     return true;
+}
+
+// Whether the groups of a small scene (render/shape_groups.hpp) take a ray
+// from `origin`.
+[[gnu::always_inline]] inline bool groups_take(const ShapeGroups& groups, const Vec3& origin) {
+    return !groups.empty() && std::abs(origin.x) <= groups.reach &&
+           std::abs(origin.y) <= groups.reach && std::abs(origin.z) <= groups.reach;
+}
+
+// lanes_missed_early, in AVX where the processor has it.
+template <bool DecideEntryBeyond>
+[[gnu::always_inline]] inline unsigned lanes_missed(bool avx, const SphereLanes& lanes,
+                                                    const BatchRay& ray, double t_max) {
+#if defined(JT_SPHERE_BATCH_AVX)
+    if (avx) return lanes_missed_early_avx<DecideEntryBeyond>(lanes, ray, t_max);
+#endif
+    return lanes_missed_early<DecideEntryBeyond>(lanes, ray, t_max);
+}
+
+// Every shape of a small scene offered to the query, but for those that the
+// early answers decide: four groups' spheres at a time, then the spheres of
+// each group the ray may meet, against the best hit as it stands. What is
+// offered, and in which order, never changes the answer (closest_hit).
+void closest_by_groups(ClosestQuery& q) {
+    const ShapeGroups& groups = q.geometry->groups;
+    const BatchRay ray = batch_ray(q.origin, q.direction, q.t_min);
+    const bool avx = sphere_batch_avx();
+    for (std::size_t first = 0; first < groups.count; first += sphere_batch) {
+        const unsigned live = groups.count - first >= sphere_batch
+                                  ? (1u << sphere_batch) - 1u
+                                  : (1u << (groups.count - first)) - 1u;
+        unsigned open =
+            ~lanes_missed<false>(avx, groups.bounds[first / sphere_batch], ray, 0.0) & live;
+        while (open != 0) {
+            const std::size_t group = first + static_cast<std::size_t>(std::countr_zero(open));
+            open &= open - 1u;
+            const unsigned missed =
+                lanes_missed<true>(avx, groups.members[group], ray, just_beyond(q.t)) &
+                groups.spheres[group];
+            unsigned offer = groups.used[group] & ~missed;
+            while (offer != 0) {
+                const std::size_t j = static_cast<std::size_t>(std::countr_zero(offer));
+                offer &= offer - 1u;
+                offer_listed(q, groups.listed[group * sphere_batch + j]);
+            }
+        }
+    }
 }
 
 // Whether the hinted surface blocks the ray; false for no hint or a stale one.
@@ -441,7 +516,9 @@ void sphere_bounds(const RTCBoundsFunctionArguments* args) {
     *args->bounds_o = padded_sphere_bounds(*g, args->primID);
 }
 
-void sphere_intersect(const RTCIntersectFunctionNArguments* args) {
+// Flattened: GCC weighs inlining offer_sphere here against all its calls,
+// and one more of them made it stop (1% more instructions on few).
+[[gnu::flatten]] void sphere_intersect(const RTCIntersectFunctionNArguments* args) {
     if (!args->valid[0]) return;
     auto& q = *reinterpret_cast<ClosestQuery*>(args->context);
     if (offer_sphere(q, args->primID)) accept(args, q);
@@ -530,7 +607,9 @@ bool closest_hit(const Geometry& geometry, const Vec3& origin, const Vec3& direc
                                       : max_cell_candidates;
         settled = closest_by_listed(q, *candidates, limit);
     }
-    if (!settled && !geometry.bvh) {
+    if (!settled && !candidates && groups_take(geometry.groups, origin)) {
+        closest_by_groups(q);
+    } else if (!settled && !geometry.bvh) {
         closest_by_testing_all(q);
     } else if (!settled) {
         rtcInitIntersectContext(&q.context);

@@ -81,9 +81,13 @@ bool trace_samples(const PreparedFrame& f, const RenderPass& pass, TileBuffer& o
     // map), as trace_ray would find it, without its set-up.
     const Geometry& geometry = *f.scene->geometry;
     const bool open_sky = table.built && geometry.planes.empty() && !geometry.triangles;
+    // The sphere the tile's last primary ray met first: its next ones mostly
+    // meet it too.
+    HitHint hint;
     auto trace = [&](double x, double y, const Vec3& direction, const PixelSample& sample) {
         if (!table.built) return trace_ray(*f.scene, camera.position, direction, 0.0, sample, rays);
-        const ListedShapes seen = shapes_seen(table, x, y);
+        ListedShapes seen = shapes_seen(table, x, y);
+        seen.hint = &hint;
         if (open_sky && seen.size() == 0) {
             ++rays;
             return miss_colour(*f.scene, direction);

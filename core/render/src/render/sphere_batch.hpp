@@ -11,6 +11,7 @@
 // no_hit for; the walk gives every other lane to the scalar test.
 
 #include "geometry/intersect.hpp"
+#include "jtracer/vector_unit.hpp"
 #include "render/prepared_scene.hpp"
 
 #include <cstddef>
@@ -22,8 +23,8 @@
 
 namespace jt {
 
-// Spheres decided at once: two SSE2 registers a value.
-inline constexpr std::size_t sphere_batch = 4;
+// sphere_batch (spheres decided at once: two SSE2 registers a value) and
+// SphereLanes are in prepared_scene.hpp, whose ShapeGroups hold batches.
 
 #if defined(__SSE2__)
 
@@ -50,13 +51,11 @@ inline BatchRay batch_ray(const Vec3& origin, const Vec3& direction, double t_mi
 // and lane 1 of each register; one bit a lane, lane 0 in bit 0. `t` holds
 // t_max in both lanes.
 template <bool DecideEntryBeyond>
-inline unsigned sphere_pair_missed_early(const WorldSphere& p, const WorldSphere& q,
-                                         const BatchRay& ray, __m128d t) {
-    // _mm_set_pd takes the high lane first.
-    const __m128d fx = _mm_sub_pd(ray.ox, _mm_set_pd(q.center.x, p.center.x));
-    const __m128d fy = _mm_sub_pd(ray.oy, _mm_set_pd(q.center.y, p.center.y));
-    const __m128d fz = _mm_sub_pd(ray.oz, _mm_set_pd(q.center.z, p.center.z));
-    const __m128d r = _mm_set_pd(q.radius, p.radius);
+inline unsigned pair_missed_early(__m128d cx, __m128d cy, __m128d cz, __m128d r,
+                                  const BatchRay& ray, __m128d t) {
+    const __m128d fx = _mm_sub_pd(ray.ox, cx);
+    const __m128d fy = _mm_sub_pd(ray.oy, cy);
+    const __m128d fz = _mm_sub_pd(ray.oz, cz);
     // glm::dot sums (x + y) + z.
     const __m128d b = _mm_add_pd(_mm_add_pd(_mm_mul_pd(fx, ray.dx), _mm_mul_pd(fy, ray.dy)),
                                  _mm_mul_pd(fz, ray.dz));
@@ -85,6 +84,15 @@ inline unsigned sphere_pair_missed_early(const WorldSphere& p, const WorldSphere
     return static_cast<unsigned>(_mm_movemask_pd(missed));
 }
 
+template <bool DecideEntryBeyond>
+inline unsigned sphere_pair_missed_early(const WorldSphere& p, const WorldSphere& q,
+                                         const BatchRay& ray, __m128d t) {
+    // _mm_set_pd takes the high lane first.
+    return pair_missed_early<DecideEntryBeyond>(
+        _mm_set_pd(q.center.x, p.center.x), _mm_set_pd(q.center.y, p.center.y),
+        _mm_set_pd(q.center.z, p.center.z), _mm_set_pd(q.radius, p.radius), ray, t);
+}
+
 // Which of `spheres` (lane k the sphere spheres[k]) intersect_sphere<
 // DecideEntryBeyond>(origin, direction, centre, radius, t_min, t) answers
 // no_hit for by its early tests, for every t <= t_max, `ray` being made of
@@ -99,11 +107,23 @@ inline unsigned spheres_missed_early(const WorldSphere* const (&spheres)[sphere_
            sphere_pair_missed_early<DecideEntryBeyond>(*spheres[2], *spheres[3], ray, t) << 2;
 }
 
+// spheres_missed_early of the four spheres of `s`.
+template <bool DecideEntryBeyond>
+inline unsigned lanes_missed_early(const SphereLanes& s, const BatchRay& ray, double t_max) {
+    const __m128d t = _mm_set1_pd(t_max);
+    return pair_missed_early<DecideEntryBeyond>(_mm_load_pd(s.x), _mm_load_pd(s.y),
+                                                _mm_load_pd(s.z), _mm_load_pd(s.r), ray, t) |
+           pair_missed_early<DecideEntryBeyond>(_mm_load_pd(s.x + 2), _mm_load_pd(s.y + 2),
+                                                _mm_load_pd(s.z + 2), _mm_load_pd(s.r + 2), ray, t)
+               << 2;
+}
+
 #if defined(__x86_64__)
 #define JT_SPHERE_BATCH_AVX 1
-// Whether this processor runs spheres_missed_early_avx.
+// Whether this process runs spheres_missed_early_avx: the CPU has AVX and
+// JTRACER_SIMD does not ask for SSE2 (jtracer/vector_unit.hpp).
 inline bool sphere_batch_avx() {
-    static const bool avx = __builtin_cpu_supports("avx");
+    static const bool avx = vector_unit().unit == VectorUnit::avx;
     return avx;
 }
 
@@ -111,23 +131,11 @@ inline bool sphere_batch_avx() {
 // it: the same operations, four lanes at a time. AVX only, never FMA, so
 // that no multiplication and addition fuse.
 template <bool DecideEntryBeyond>
-__attribute__((target("avx"))) unsigned spheres_missed_early_avx(
-    const WorldSphere* const (&spheres)[sphere_batch], const BatchRay& ray, double t_max) {
-    const WorldSphere& s0 = *spheres[0];
-    const WorldSphere& s1 = *spheres[1];
-    const WorldSphere& s2 = *spheres[2];
-    const WorldSphere& s3 = *spheres[3];
-    // _mm256_set_pd takes the highest lane first.
-    const __m256d fx =
-        _mm256_sub_pd(_mm256_broadcast_pd(&ray.ox),
-                      _mm256_set_pd(s3.center.x, s2.center.x, s1.center.x, s0.center.x));
-    const __m256d fy =
-        _mm256_sub_pd(_mm256_broadcast_pd(&ray.oy),
-                      _mm256_set_pd(s3.center.y, s2.center.y, s1.center.y, s0.center.y));
-    const __m256d fz =
-        _mm256_sub_pd(_mm256_broadcast_pd(&ray.oz),
-                      _mm256_set_pd(s3.center.z, s2.center.z, s1.center.z, s0.center.z));
-    const __m256d r = _mm256_set_pd(s3.radius, s2.radius, s1.radius, s0.radius);
+__attribute__((target("avx"), always_inline)) inline unsigned quad_missed_early_avx(
+    __m256d cx, __m256d cy, __m256d cz, __m256d r, const BatchRay& ray, double t_max) {
+    const __m256d fx = _mm256_sub_pd(_mm256_broadcast_pd(&ray.ox), cx);
+    const __m256d fy = _mm256_sub_pd(_mm256_broadcast_pd(&ray.oy), cy);
+    const __m256d fz = _mm256_sub_pd(_mm256_broadcast_pd(&ray.oz), cz);
     const __m256d av = _mm256_broadcast_pd(&ray.a);
     // glm::dot sums (x + y) + z.
     const __m256d b = _mm256_add_pd(_mm256_add_pd(_mm256_mul_pd(fx, _mm256_broadcast_pd(&ray.dx)),
@@ -162,6 +170,30 @@ __attribute__((target("avx"))) unsigned spheres_missed_early_avx(
     }
     return static_cast<unsigned>(_mm256_movemask_pd(missed));
 }
+
+template <bool DecideEntryBeyond>
+__attribute__((target("avx"))) unsigned spheres_missed_early_avx(
+    const WorldSphere* const (&spheres)[sphere_batch], const BatchRay& ray, double t_max) {
+    const WorldSphere& s0 = *spheres[0];
+    const WorldSphere& s1 = *spheres[1];
+    const WorldSphere& s2 = *spheres[2];
+    const WorldSphere& s3 = *spheres[3];
+    // _mm256_set_pd takes the highest lane first.
+    return quad_missed_early_avx<DecideEntryBeyond>(
+        _mm256_set_pd(s3.center.x, s2.center.x, s1.center.x, s0.center.x),
+        _mm256_set_pd(s3.center.y, s2.center.y, s1.center.y, s0.center.y),
+        _mm256_set_pd(s3.center.z, s2.center.z, s1.center.z, s0.center.z),
+        _mm256_set_pd(s3.radius, s2.radius, s1.radius, s0.radius), ray, t_max);
+}
+
+// lanes_missed_early in AVX.
+template <bool DecideEntryBeyond>
+__attribute__((target("avx"))) unsigned lanes_missed_early_avx(const SphereLanes& s,
+                                                               const BatchRay& ray, double t_max) {
+    return quad_missed_early_avx<DecideEntryBeyond>(_mm256_load_pd(s.x), _mm256_load_pd(s.y),
+                                                    _mm256_load_pd(s.z), _mm256_load_pd(s.r), ray,
+                                                    t_max);
+}
 #endif
 
 #else
@@ -193,6 +225,17 @@ inline unsigned spheres_missed_early(const WorldSphere* const (&spheres)[sphere_
             missed |= 1u << k;
     }
     return missed;
+}
+
+template <bool DecideEntryBeyond>
+inline unsigned lanes_missed_early(const SphereLanes& s, const BatchRay& ray, double t_max) {
+    WorldSphere spheres[sphere_batch];
+    const WorldSphere* lanes[sphere_batch];
+    for (std::size_t k = 0; k < sphere_batch; ++k) {
+        spheres[k] = {Vec3(s.x[k], s.y[k], s.z[k]), s.r[k], 0};
+        lanes[k] = &spheres[k];
+    }
+    return spheres_missed_early<DecideEntryBeyond>(lanes, ray, t_max);
 }
 
 #endif

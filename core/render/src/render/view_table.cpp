@@ -30,6 +30,9 @@ constexpr double angle_slack = 1e-7;
 constexpr double pixel_slack = 1e-2;
 
 constexpr double half_pi = 0.5 * std::numbers::pi;
+// A block's cone of rays wider than this (cosine of its half angle; 60
+// degrees) is not used to leave shapes off its list.
+constexpr double min_cos_block_cone = 0.5;
 const double cos_slack = std::cos(angle_slack), sin_slack = std::sin(angle_slack);
 constexpr double unbounded = std::numeric_limits<double>::infinity();
 
@@ -126,7 +129,35 @@ struct Extent {
     int column0 = 1, column1 = 0, row0 = 1, row1 = 0;
     Vec3 axis{0.0};
     double cos_cover = 2.0;
+    // The cone of rays from the camera that may meet the padded bounding
+    // sphere, about the centre's direction (toward), twice angle_slack wider
+    // for the rounding of the rays', the corners' and the cones' own
+    // directions; none when the sphere holds the camera or the cone would
+    // span a right angle or more.
+    bool conic = false;
+    Vec3 toward{0.0};
+    double cos_reach = -1.0, sin_reach = 0.0;
 };
+
+// A block's rays lie in the cone about `axis` through its four corners' rays:
+// the cone meets the image plane in an ellipse around the block's corners,
+// and so around the whole block.
+struct BlockCone {
+    Vec3 axis;
+    double cos_half, sin_half;
+    bool narrow;  // false: too wide a cone to tell anything apart from it
+};
+
+// Whether no ray of a block whose cone is `b` can meet the shape of extent
+// `e`: the angle between the cones' axes exceeds both half angles together
+// (the cosine of their sum from the sum formula). A shape's blocks come from
+// the box around its outline on the image; this leaves out the blocks of the
+// box that the outline stays clear of, at its corners and, for an outline of
+// a few blocks, all around.
+bool cones_apart(const BlockCone& b, const Extent& e) {
+    return b.narrow && e.conic &&
+           glm::dot(b.axis, e.toward) < b.cos_half * e.cos_reach - b.sin_half * e.sin_reach;
+}
 
 Extent extent(const Candidate& c, const CameraFrame& camera, int columns, int rows) {
     Extent e;
@@ -148,6 +179,15 @@ Extent extent(const Candidate& c, const CameraFrame& camera, int columns, int ro
                          e.column0, e.column1) ||
             !block_range(down, camera.tan_half_fov, camera.height, rows, e.row0, e.row1))
             return {};
+    }
+    if (distance > c.radius) {
+        const double reach = std::asin(c.radius / distance) + 2.0 * angle_slack;
+        if (reach < half_pi) {
+            e.conic = true;
+            e.toward = offset / distance;
+            e.cos_reach = std::cos(reach);
+            e.sin_reach = std::sin(reach);
+        }
     }
     if (c.inner_radius > 0.0) {
         e.axis = offset / distance;
@@ -251,6 +291,7 @@ ViewTable build_view_table(const Geometry& geometry, const CameraFrame& camera) 
     // A thread's listings of one band at a time: their pages are touched once
     // a thread rather than once a band.
     tbb::enumerable_thread_specific<std::vector<Listing>> scratch;
+    tbb::enumerable_thread_specific<std::vector<BlockCone>> cone_scratch;
     std::atomic<std::size_t> listed{0};
     tbb::parallel_for(0, bands, [&](int band) {
         const int first_row = band * view_band_rows;
@@ -261,6 +302,21 @@ ViewTable build_view_table(const Geometry& geometry, const CameraFrame& camera) 
         std::vector<double> cap(band_blocks, unbounded);
         std::vector<Listing>& listings = scratch.local();
         listings.clear();
+        std::vector<BlockCone>& cones = cone_scratch.local();
+        cones.resize(band_blocks);
+        for (int row = first_row; row <= last_row; ++row)
+            for (int column = 0; column < table.columns; ++column) {
+                const Vec3* d[4] = {&corner(column, row), &corner(column + 1, row),
+                                    &corner(column, row + 1), &corner(column + 1, row + 1)};
+                BlockCone& cone =
+                    cones[static_cast<std::size_t>(row - first_row) * table.columns + column];
+                cone.axis = glm::normalize(*d[0] + *d[1] + *d[2] + *d[3]);
+                double cos_half = 1.0;
+                for (const Vec3* k : d) cos_half = std::min(cos_half, glm::dot(cone.axis, *k));
+                cone.cos_half = cos_half;
+                cone.sin_half = std::sqrt(std::max(0.0, 1.0 - cos_half * cos_half));
+                cone.narrow = cos_half > min_cos_block_cone;
+            }
         for (std::size_t i = 0; i < candidates.size(); ++i) {
             const Extent& e = extents[i];
             const int row0 = std::max(e.row0, first_row), row1 = std::min(e.row1, last_row);
@@ -269,7 +325,7 @@ ViewTable build_view_table(const Geometry& geometry, const CameraFrame& camera) 
             for (int row = row0; row <= row1; ++row)
                 for (int column = e.column0; column <= e.column1; ++column) {
                     const std::size_t b = static_cast<std::size_t>(row) * table.columns + column;
-                    if (c.nearest > cap[b - base]) continue;
+                    if (c.nearest > cap[b - base] || cones_apart(cones[b - base], e)) continue;
                     listings.push_back(
                         {static_cast<std::uint32_t>(b - base), static_cast<std::uint32_t>(i)});
                     if (e.cos_cover > 1.0) continue;

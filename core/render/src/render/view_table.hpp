@@ -6,7 +6,8 @@
 // of it, nearest first: a primary ray tests its block's list exactly as the
 // BVH callbacks would, and stops at the first shape that lies wholly beyond
 // its best hit, so the answer is the same bit for bit. A shape's blocks come
-// from the exact extent of its bounding sphere on the image plane. A sphere
+// from the exact extent of its bounding sphere on the image plane, less the
+// blocks whose cone of rays stays apart from the sphere's. A sphere
 // that every ray of a block meets caps the block where all its rays have met
 // the sphere (covered_hit_bound): a shape beyond could never be a first hit
 // there, and is left out of the list (the nested spheres of `nested_shells`

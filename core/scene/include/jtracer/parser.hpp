@@ -95,6 +95,10 @@ struct ParseOptions {
     // only while the texts read are the earlier parse's own, byte for byte.
     // Diagnostics inside a taken primitive are not repeated.
     EarlierParse* earlier = nullptr;
+    // False: read every property's name and ':' as tokens, also where the
+    // parser reads a run of them without (a generator's one-line blocks). The
+    // result is the same either way: the tests compare the two.
+    bool plain_properties = true;
 };
 
 // Splits and checks one `--define` argument "NAME=VALUE": NAME a name that is

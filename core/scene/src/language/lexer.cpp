@@ -405,6 +405,47 @@ bool read_signed_number(std::string_view s, std::size_t& i, double& out) {
     return true;
 }
 
+// read_plain_vector for what generators write: `<a,b,c>`, no blanks but
+// spaces after the commas, each number an optional '-', then digits, a '.'
+// and digits, 15 digits at most and no exponent: each is read_short_number's
+// mantissa and division. With so little to look for a number costs half the
+// general reader's. False, with `i` unmoved, for anything else (a '+', a
+// blank elsewhere, an exponent, more digits), which read_plain_vector then
+// reads. The caller has checked that the text's last byte could not continue
+// a number, so no run of digits reaches the end: one test of the end a number.
+[[gnu::always_inline]] inline bool read_dense_vector(std::string_view s, std::size_t& i,
+                                                     Vec3& out) {
+    constexpr std::ptrdiff_t max_short_digits = 15;
+    const char* const end = s.data() + s.size();
+    const char* p = s.data() + i + 1;
+    double parts[3];
+    for (int c = 0; c < 3; ++c) {
+        if (c > 0)
+            while (p < end && *p == ' ') ++p;
+        // A sign and a digit, or a digit and what ends the number.
+        if (end - p < 2) return false;
+        const bool negative = *p == '-';
+        p += negative ? 1 : 0;
+        const char* const first = p;
+        std::uint64_t mantissa = read_digits(p, 0);
+        std::ptrdiff_t digits = p - first;
+        std::size_t fraction_digits = 0;
+        if (*p == '.') {
+            const char* const point = ++p;
+            mantissa = read_digits(p, mantissa);
+            fraction_digits = static_cast<std::size_t>(p - point);
+            digits += p - point;
+        }
+        if (digits == 0 || digits > max_short_digits || *p != (c < 2 ? ',' : '>')) return false;
+        const double value = static_cast<double>(mantissa) / powers_of_ten[fraction_digits];
+        parts[c] = negative ? -value : value;
+        ++p;
+    }
+    out = Vec3{parts[0], parts[1], parts[2]};
+    i = static_cast<std::size_t>(p - s.data());
+    return true;
+}
+
 // At the '<' at `i`: three signed numbers between commas and '>'.
 bool read_plain_vector(std::string_view s, std::size_t& i, Vec3& out) {
     std::size_t k = i + 1;
@@ -431,25 +472,67 @@ bool semicolon_follows(std::string_view s, std::size_t i) {
     return i < s.size() && s[i] == ';';
 }
 
-}  // namespace
-
-bool Lexer::read_plain_value(PlainValue& out) {
-    std::size_t i = at_;
-    skip_blanks(text_, i);
+// The plain value at `i` (at or after a ':'): read_plain_value's scan, which
+// continues at the returned offset past the ';', or 0.
+std::size_t plain_value_at(std::string_view text, std::size_t i, Lexer::PlainValue& out) {
+    skip_blanks(text, i);
     const std::size_t start = i;
-    if (i < text_.size() && text_[i] == '<') {
-        if (!read_plain_vector(text_, i, out.vector)) return false;
+    if (i < text.size() && text[i] == '<') {
+        if (!(!is_number_char(text.back()) && read_dense_vector(text, i, out.vector)) &&
+            !read_plain_vector(text, i, out.vector))
+            return 0;
         out.is_vector = true;
     } else {
-        if (!read_signed_number(text_, i, out.number)) return false;
+        if (!read_signed_number(text, i, out.number)) return 0;
         out.is_vector = false;
     }
     out.offset = start;
     out.length = i - start;
-    skip_blanks(text_, i);
-    if (i >= text_.size() || text_[i] != ';') return false;
-    at_ = i + 1;
+    skip_blanks(text, i);
+    if (i >= text.size() || text[i] != ';') return 0;
+    return i + 1;
+}
+
+}  // namespace
+
+bool Lexer::read_plain_value(PlainValue& out) {
+    const std::size_t past = plain_value_at(text_, at_, out);
+    if (past == 0) return false;
+    at_ = past;
     return true;
+}
+
+std::size_t Lexer::plain_property(PlainProperty& out) const {
+    const std::size_t n = text_.size();
+    std::size_t start = at_;
+    int line = line_;
+    std::size_t line_start = line_start_;
+    // The blanks next() skips itself; it leaves any other to
+    // skip_space_and_comments, and so does this.
+    if (start < n && text_[start] == '\n') {
+        ++line;
+        line_start = start + 1;
+        start = skip_spaces(text_, start + 1);
+    } else if (start < n && text_[start] == ' ') {
+        start = skip_spaces(text_, start + 1);
+    }
+    if (start >= n || !is_word_start(text_[start])) return 0;
+    std::size_t end = start + 1;
+    if (words_stop_inside_) {
+        while (is_word_char(text_[end])) ++end;
+    } else {
+        while (end < n && is_word_char(text_[end])) ++end;
+    }
+    if (end >= n || text_[end] != ':') return 0;
+    const std::size_t past = plain_value_at(text_, end + 1, out.value);
+    if (past == 0) return 0;
+    out.name = text_.substr(start, end - start);
+    out.name_offset = start;
+    out.name_pos = {line, static_cast<int>(start - line_start) + 1, file_};
+    out.value_pos = {line, static_cast<int>(out.value.offset - line_start) + 1, file_};
+    out.line = line;
+    out.line_start = line_start;
+    return past;
 }
 
 std::size_t Lexer::plain_vector(std::size_t offset, Vec3& out) const {

@@ -81,6 +81,30 @@ class Lexer {
     // the same for a vector, followed by ';'. Returns the offset just past its
     // '>' and moves nothing, or returns 0.
     std::size_t plain_vector(std::size_t offset, Vec3& out) const;
+    // A property as generators and people write most: a name directly
+    // followed by ':' and a value as read_plain_value reads it.
+    struct PlainProperty {
+        std::string_view name;  // a view into the text, as the name's token
+        std::size_t name_offset = 0;
+        SourcePos name_pos;
+        PlainValue value;
+        SourcePos value_pos;  // of value.offset
+        int line = 0;         // the line it is on
+        std::size_t line_start = 0;
+    };
+    // The property just past the last token read, when only spaces, or one
+    // line break and an indentation of spaces, stand between them: fills
+    // `out` with what the tokens (a word, ':') and read_plain_value make of
+    // it and returns the offset just past its ';', moving nothing
+    // (continue_at moves there). Returns 0 for anything else: the tokens
+    // read that.
+    std::size_t plain_property(PlainProperty& out) const;
+    // Continues from `offset`, on the line of `property` (plain_property's).
+    void continue_at(std::size_t offset, const PlainProperty& property) {
+        at_ = offset;
+        line_ = property.line;
+        line_start_ = property.line_start;
+    }
     // Continues from `offset`, on the line of the last token read.
     void skip_to(std::size_t offset) { at_ = offset; }
     // Continues from `offset`, which is at `pos` (a token this text gave before).

@@ -241,7 +241,8 @@ class Parser final : private TokenCursor {
                        ? options.earlier
                        : nullptr),
           options_(options),
-          reports_text_passed_(static_cast<bool>(options.text_passed)) {
+          reports_text_passed_(static_cast<bool>(options.text_passed)),
+          plain_properties_(options.plain_properties) {
         if (keep_primitives_) {
             const BraceAndColonCount count = count_braces_and_colons(text);
             primitive_hint_ = primitive_count_hint(text, count);
@@ -270,7 +271,8 @@ class Parser final : private TokenCursor {
           keep_primitives_(true),
           record_readings_(false),
           earlier_(nullptr),
-          options_(options) {
+          options_(options),
+          plain_properties_(options.plain_properties) {
         lexer_.resume_at(begin, position_of(text, begin));
         lexer_.next(*cur_);
         lexer_.next(*next_);
@@ -430,19 +432,8 @@ class Parser final : private TokenCursor {
         return v;
     }
 
-    // At a property's ':': a value of plain numbers followed by ';', read by the
-    // lexer in one scan (lexer.hpp), into what read_value would make of it.
-    // False, with nothing consumed, for anything else. Most values of most
-    // scenes are such: their tokens and the expression reader are the most of
-    // a parse. A stopped sink ends the tokens, so it ends this path too.
-    bool read_plain_value(Value& v) {
-        if (sink_.stopped()) return false;
-        Lexer::PlainValue plain;
-        if (!reading_->read_plain_value(plain)) return false;
-        const Token& colon = *next_;  // the value is on its line
-        const SourcePos pos{colon.pos.line,
-                            colon.pos.column + static_cast<int>(plain.offset - colon.offset),
-                            colon.pos.file};
+    // What read_value makes of a plain value (lexer.hpp) at `pos`.
+    void set_plain_value(const Lexer::PlainValue& plain, SourcePos pos, Value& v) const {
         const auto length = static_cast<std::uint32_t>(plain.length);
         if (plain.is_vector) {
             v.form = Value::Form::vector;
@@ -458,16 +449,97 @@ class Parser final : private TokenCursor {
         v.span = {static_cast<std::uint32_t>(plain.offset), length, pos};
         v.end = {pos.line, pos.column + static_cast<int>(length), pos.file};
         v.origin = ValueOrigin::literal;
+    }
+
+    // At a property's ':': a value of plain numbers followed by ';', read by the
+    // lexer in one scan (lexer.hpp), into what read_value would make of it,
+    // with the lexer left just past the ';' and the tokens not yet read on.
+    // False, with nothing consumed, for anything else. Most values of most
+    // scenes are such: their tokens and the expression reader are the most of
+    // a parse. A stopped sink ends the tokens, so it ends this path too.
+    bool read_plain_value_in_place(Value& v) {
+        if (sink_.stopped()) return false;
+        Lexer::PlainValue plain;
+        if (!reading_->read_plain_value(plain)) return false;
+        const Token& colon = *next_;  // the value is on its line
+        set_plain_value(
+            plain,
+            {colon.pos.line, colon.pos.column + static_cast<int>(plain.offset - colon.offset),
+             colon.pos.file},
+            v);
+        return true;
+    }
+
+    // The same, the tokens then read on past the ';'.
+    bool read_plain_value(Value& v) {
+        if (!read_plain_value_in_place(v)) return false;
         reading_->next(*cur_);
         reading_->next(*next_);
         return true;
     }
 
-    // name ':' value ';' -- on success `property` holds it and the ';' is consumed.
-    bool read_property(Property& property) {
+    // At a property's name and ':' whose value is plain: that property and
+    // the run of plain properties after it (read_plain_run). False, with
+    // nothing consumed, when the value is not plain: read_property reads it.
+    template <class OnProperty>
+    bool read_plain_properties(std::span<const std::string_view> child_names,
+                               OnProperty& on_property) {
+        if (next_->kind != TokenKind::colon) return false;
+        if (!read_plain_value_in_place(property_.value)) return false;
+        property_.name = cur_->text;
+        property_.name_span = span_of(*cur_);
+        read_plain_run(child_names, on_property, true);
+        return true;
+    }
+
+    // From the lexer's place, with the tokens not read on (just past a
+    // block's '{' or, `pending`, past the ';' of property_, not yet given to
+    // `on_property`): the properties that follow, each a name, ':' and a
+    // plain value after spaces or a line break and its indentation
+    // (Lexer::plain_property; as generators write a block on one line,
+    // `center:<1,2,3>;radius:0.5;`, and people one a line), read without
+    // tokens for their names and ':' and given to `on_property` in turn, then
+    // the tokens read on. Each is given where the tokens would give it,
+    // after the two tokens that follow it (those of a property read here
+    // report nothing). A run ends where the text holds anything else, a
+    // child block's name or a stopped sink.
+    template <class OnProperty>
+    void read_plain_run(std::span<const std::string_view> child_names, OnProperty& on_property,
+                        bool pending) {
+        Property& property = property_;
+        Lexer::PlainProperty& plain = plain_property_;
+        while (!sink_.stopped()) {
+            const std::size_t past = reading_->plain_property(plain);
+            if (past == 0 || contains(child_names, plain.name)) break;
+            if (pending) {
+                on_property(property);
+                if (sink_.stopped()) {
+                    // The tokens had read the next name and ':', then nothing more.
+                    reading_->continue_at(plain.name_offset + plain.name.size() + 1, plain);
+                    reading_->next(*cur_);
+                    reading_->next(*next_);
+                    return;
+                }
+            }
+            reading_->continue_at(past, plain);
+            property.name = plain.name;
+            property.name_span = {static_cast<std::uint32_t>(plain.name_offset),
+                                  static_cast<std::uint32_t>(plain.name.size()), plain.name_pos};
+            set_plain_value(plain.value, plain.value_pos, property.value);
+            pending = true;
+        }
+        reading_->next(*cur_);
+        reading_->next(*next_);
+        if (pending) on_property(property);
+    }
+
+    // `try_plain`: first as a plain value (read_plain_value), which the
+    // caller has not tried.
+    bool read_property(Property& property, bool try_plain) {
         property.name = cur_->text;
         property.name_span = span_of(*cur_);
-        if (next_->kind == TokenKind::colon && read_plain_value(property.value)) return true;
+        if (try_plain && next_->kind == TokenKind::colon && read_plain_value(property.value))
+            return true;
         advance();
         if (!at(TokenKind::colon)) {
             sink_.error(cur_->pos, "expected ':' after '" + std::string(property.name) + "', got " +
@@ -506,9 +578,15 @@ class Parser final : private TokenCursor {
     // The same where the caller has matched the word at hand to `keyword`, a
     // schema keyword: primitives and their materials, two blocks a sphere,
     // skip static_keyword's search of the dozen keywords (3% of a parse).
-    bool open_block(BlockSource& block, std::string_view keyword) {
+    // `behind`: a '{' next is not read past (tokens_behind_, for parse_body).
+    bool open_block(BlockSource& block, std::string_view keyword, bool behind = false) {
         block.keyword = keyword;
         block.keyword_span = span_of(*cur_);
+        if (behind && plain_properties_ && next_->kind == TokenKind::lbrace) {
+            block.open_brace = static_cast<std::uint32_t>(next_->offset);
+            tokens_behind_ = true;
+            return true;
+        }
         advance();
         if (at(TokenKind::lbrace)) {
             block.open_brace = static_cast<std::uint32_t>(cur_->offset);
@@ -546,6 +624,10 @@ class Parser final : private TokenCursor {
     template <class OnProperty, class OnChild>
     void parse_body(BlockSource& block, std::span<const std::string_view> child_names,
                     OnProperty on_property, OnChild on_child, bool included = false) {
+        if (tokens_behind_) {
+            tokens_behind_ = false;
+            read_plain_run(child_names, on_property, false);
+        }
         for (;;) {
             switch (cur_->kind) {
                 case TokenKind::rbrace:
@@ -576,7 +658,11 @@ class Parser final : private TokenCursor {
                     if (top_level_only()) break;
                     if (next_->kind == TokenKind::lbrace || contains(child_names, cur_->text)) {
                         on_child();
-                    } else if (read_property(property_)) {
+                    } else if (plain_properties_) {
+                        if (!read_plain_properties(child_names, on_property) &&
+                            read_property(property_, false))
+                            on_property(property_);
+                    } else if (read_property(property_, true)) {
                         on_property(property_);
                     }
                     break;
@@ -711,7 +797,9 @@ class Parser final : private TokenCursor {
     template <class Target>
     bool parse_property_block(BlockSource& block, std::size_t level, Target& target,
                               std::string_view keyword = {}) {
-        if (!(keyword.empty() ? open_block(block) : open_block(block, keyword))) return false;
+        if (!open_block(block, keyword.empty() ? static_keyword(cur_->text) : keyword,
+                        /*behind=*/true))
+            return false;
         read_properties(block, level, [&](OpenBlock& open) {
             parse_body(
                 block, kNoBlocks, [&](const Property& p) { reader_.apply(target, open, p); },
@@ -860,7 +948,7 @@ class Parser final : private TokenCursor {
             Primitive primitive;
             primitive.shape = std::move(*shape);
             BlockSource primitive_block;
-            if (!open_block(primitive_block, keyword_of(primitive.shape))) return;
+            if (!open_block(primitive_block, keyword_of(primitive.shape), /*behind=*/true)) return;
             in_primitive_ = true;
             primitive.material.finish = take_scratch_finish();
             read_properties(primitive_block, 0,
@@ -1065,8 +1153,8 @@ class Parser final : private TokenCursor {
             [&] {
                 BlockSource child;
                 bool opened;
-                if (same_name(cur_->text, schema_of<Material>().keyword) &&
-                    next_->kind == TokenKind::colon) {
+                const bool material = same_name(cur_->text, schema_of<Material>().keyword);
+                if (material && next_->kind == TokenKind::colon) {
                     const SourcePos at = cur_->pos;
                     if (const Symbol* found = read_material_reference()) {
                         if (named) {
@@ -1084,15 +1172,14 @@ class Parser final : private TokenCursor {
                     }
                     return;
                 }
-                if (same_name(cur_->text, schema_of<Material>().keyword) &&
-                    next_->kind == TokenKind::word) {
+                if (material && next_->kind == TokenKind::word) {
                     sink_.error(cur_->pos,
                                 "a named material is defined at the top level; inside a "
                                 "primitive, write 'material: NAME;' to use one");
                     skip_block();
                     return;
                 }
-                if (same_name(cur_->text, schema_of<Material>().keyword)) {
+                if (material) {
                     opened = parse_property_block(child, 1, primitive.material,
                                                   schema_of<Material>().keyword);
                     // Unopened, the block read nothing: the buffer still holds
@@ -1373,11 +1460,17 @@ class Parser final : private TokenCursor {
     // ParseOptions::text_passed is called (by the main text's reader only).
     bool reports_text_passed_ = false;
     std::size_t next_text_passed_ = 0;
-    bool in_primitive_ = false;  // reading a primitive's block
+    bool in_primitive_ = false;     // reading a primitive's block
+    bool plain_properties_ = true;  // ParseOptions::plain_properties
+    // Just past a block's '{', the tokens not read on: parse_body starts
+    // with read_plain_run (open_block's `behind`).
+    bool tokens_behind_ = false;
     std::array<std::vector<PropertySource>, 2> property_buffers_;
     // The property being read, reused: read_property sets all of it, and a
     // fresh one cleared 136 bytes per property first.
     Property property_;
+    // read_plain_run's, reused: a fresh one cleared 128 bytes a block.
+    Lexer::PlainProperty plain_property_;
     FinishTable finishes_;           // the primitives' finishes, each value once
     Shared<Finish> scratch_finish_;  // see take_scratch_finish
 };
