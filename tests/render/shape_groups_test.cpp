@@ -139,7 +139,7 @@ TEST(ShapeGroups, RaysWithoutAListMeetWhatTheBvhMeets) {
         // Each group's rim: where its farthest lane touches it, rays tangent
         // to both, just in and just out, from points around the scene.
         const ShapeGroups& groups = grouped.groups;
-        for (std::size_t g = 0; g < groups.count; ++g) {
+        for (std::size_t g = 0; g < groups.count(); ++g) {
             const WorldSphere rim = lane(groups.bounds[g / sphere_batch], g % sphere_batch);
             for (std::size_t k = 0; k < sphere_batch; ++k) {
                 if (!(groups.used[g] >> k & 1u)) continue;
@@ -219,7 +219,7 @@ TEST(ShapeGroups, EveryShapeInOneGroupOnce) {
     const ShapeGroups& groups = g.groups;
     ASSERT_FALSE(groups.empty());
     std::vector<int> seen(g.spheres.size() + g.shapes.size(), 0);
-    for (std::size_t group = 0; group < groups.count; ++group)
+    for (std::size_t group = 0; group < groups.count(); ++group)
         for (std::size_t k = 0; k < sphere_batch; ++k) {
             if (!(groups.used[group] >> k & 1u)) continue;
             const std::uint32_t listed = groups.listed[group * sphere_batch + k];

@@ -176,6 +176,14 @@ Scene shells(std::mt19937_64& rng, int nests, int per_nest) {
     return scene;
 }
 
+// Where a walk's rays start, by `from`: outside everything (even), or inside
+// nested shells (odd).
+Vec3 walk_origin(const Geometry& g, int from, std::mt19937_64& rng) {
+    const WorldSphere& home = g.spheres[static_cast<std::size_t>(from) % g.spheres.size()];
+    return from % 2 == 0 ? home.center + home.radius * 40.0 * across({1, 2, 3}, rng)
+                         : home.center + home.radius * 0.3 * across({3, 2, 1}, rng);
+}
+
 TEST(SphereBatch, ListWalksFindEveryRaysFirstHit) {
     std::mt19937_64 rng(72);
     std::uniform_real_distribution<double> unit(0.0, 1.0);
@@ -194,11 +202,7 @@ TEST(SphereBatch, ListWalksFindEveryRaysFirstHit) {
             const Geometry& g = *prepared->geometry;
             if (g.spheres.empty()) continue;
             for (int from = 0; from < 6; ++from) {
-                const WorldSphere& home = g.spheres[from % g.spheres.size()];
-                // Outside everything, and inside nested shells.
-                const Vec3 origin = from % 2 == 0
-                                        ? home.center + home.radius * 40.0 * across({1, 2, 3}, rng)
-                                        : home.center + home.radius * 0.3 * across({3, 2, 1}, rng);
+                const Vec3 origin = walk_origin(g, from, rng);
                 std::vector<ListedDistance> nearest;
                 const std::vector<std::uint32_t> shapes = listed_from(g, origin, nearest);
                 // Only a covered list is walked in batches; any list may be called
@@ -246,10 +250,7 @@ TEST(SphereBatch, AWalkHintedWithAnySphereFindsEveryRaysFirstHit) {
             const Geometry& g = *prepared->geometry;
             ASSERT_GE(g.spheres.size() + g.shapes.size(), 16u);
             for (int from = 0; from < 4; ++from) {
-                const WorldSphere& home = g.spheres[from % g.spheres.size()];
-                const Vec3 origin = from % 2 == 0
-                                        ? home.center + home.radius * 40.0 * across({1, 2, 3}, rng)
-                                        : home.center + home.radius * 0.3 * across({3, 2, 1}, rng);
+                const Vec3 origin = walk_origin(g, from, rng);
                 std::vector<ListedDistance> nearest;
                 const std::vector<std::uint32_t> shapes = listed_from(g, origin, nearest);
                 ListedShapes listed{shapes, nearest, true};

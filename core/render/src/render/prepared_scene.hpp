@@ -91,10 +91,10 @@ struct ShapeGroups {
     // The groups' spheres, sphere_batch groups an entry (unused lanes repeat
     // the last group's and are never read).
     std::vector<SphereLanes> bounds;
-    std::size_t count = 0;
     // The largest coordinate of an origin the groups take.
     double reach = 0.0;
-    bool empty() const { return count == 0; }
+    std::size_t count() const { return members.size(); }
+    bool empty() const { return members.empty(); }
 };
 
 struct GeometryDigest {

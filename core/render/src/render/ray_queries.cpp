@@ -232,16 +232,6 @@ OccluderHint hint_for(std::uint32_t listed) {
     return spheres;
 }
 
-// spheres_missed_early, in AVX where the processor has it.
-template <bool DecideEntryBeyond>
-[[gnu::always_inline]] inline unsigned batch_missed_early(
-    bool avx, const WorldSphere* const (&lanes)[sphere_batch], const BatchRay& ray, double t_max) {
-#if defined(JT_SPHERE_BATCH_AVX)
-    if (avx) return spheres_missed_early_avx<DecideEntryBeyond>(lanes, ray, t_max);
-#endif
-    return spheres_missed_early<DecideEntryBeyond>(lanes, ray, t_max);
-}
-
 bool occluded_by_testing_all(const Geometry& g, const Vec3& origin, const Vec3& direction,
                              double t_min, double t_max, OccluderHint& blocker) {
     const auto spheres = static_cast<std::uint32_t>(g.spheres.size());
@@ -364,8 +354,7 @@ bool closest_by_listed_in_batches(ClosestQuery& q, const ListedShapes& listed, s
             ++k;
             continue;
         }
-        const unsigned missed =
-            batch_missed_early<true>(avx, lanes, ray, just_beyond(q.t)) & spheres;
+        const unsigned missed = spheres_missed<true>(avx, lanes, ray, just_beyond(q.t)) & spheres;
         for (std::size_t j = 0; j < count; ++j) {
             if (j > 0 && listed.nearest[k + j] > q.t * length) return true;
             if (!(missed >> j & 1u)) offer_listed(q, listed.shapes[k + j]);
@@ -382,16 +371,6 @@ bool closest_by_listed_in_batches(ClosestQuery& q, const ListedShapes& listed, s
            std::abs(origin.y) <= groups.reach && std::abs(origin.z) <= groups.reach;
 }
 
-// lanes_missed_early, in AVX where the processor has it.
-template <bool DecideEntryBeyond>
-[[gnu::always_inline]] inline unsigned lanes_missed(bool avx, const SphereLanes& lanes,
-                                                    const BatchRay& ray, double t_max) {
-#if defined(JT_SPHERE_BATCH_AVX)
-    if (avx) return lanes_missed_early_avx<DecideEntryBeyond>(lanes, ray, t_max);
-#endif
-    return lanes_missed_early<DecideEntryBeyond>(lanes, ray, t_max);
-}
-
 // Every shape of a small scene offered to the query, but for those that the
 // early answers decide: four groups' spheres at a time, then the spheres of
 // each group the ray may meet, against the best hit as it stands. What is
@@ -400,10 +379,10 @@ void closest_by_groups(ClosestQuery& q) {
     const ShapeGroups& groups = q.geometry->groups;
     const BatchRay ray = batch_ray(q.origin, q.direction, q.t_min);
     const bool avx = sphere_batch_avx();
-    for (std::size_t first = 0; first < groups.count; first += sphere_batch) {
-        const unsigned live = groups.count - first >= sphere_batch
-                                  ? (1u << sphere_batch) - 1u
-                                  : (1u << (groups.count - first)) - 1u;
+    const std::size_t count = groups.count();
+    for (std::size_t first = 0; first < count; first += sphere_batch) {
+        const unsigned live = count - first >= sphere_batch ? (1u << sphere_batch) - 1u
+                                                            : (1u << (count - first)) - 1u;
         unsigned open =
             ~lanes_missed<false>(avx, groups.bounds[first / sphere_batch], ray, 0.0) & live;
         while (open != 0) {

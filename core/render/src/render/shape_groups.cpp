@@ -86,10 +86,10 @@ ShapeGroups group_shapes(const std::vector<WorldSphere>& spheres,
     std::vector<std::span<std::uint32_t>> runs;
     split(order, all, runs);
 
-    out.count = runs.size();
-    out.members.resize(out.count);
-    out.bounds.resize((out.count + sphere_batch - 1) / sphere_batch);
-    for (std::size_t g = 0; g < out.count; ++g) {
+    const std::size_t count = runs.size();
+    out.members.resize(count);
+    out.bounds.resize((count + sphere_batch - 1) / sphere_batch);
+    for (std::size_t g = 0; g < count; ++g) {
         const std::span<std::uint32_t> run = runs[g];
         Vec3 lower(all[run[0]].center), upper(lower);
         for (const std::uint32_t k : run) {
@@ -115,9 +115,9 @@ ShapeGroups group_shapes(const std::vector<WorldSphere>& spheres,
         set_lane(out.bounds[g / sphere_batch], g % sphere_batch,
                  {centre, radius * (1.0 + 1e-9) + pad, 0});
     }
-    for (std::size_t g = out.count; g % sphere_batch != 0; ++g) {
+    for (std::size_t g = count; g % sphere_batch != 0; ++g) {
         SphereLanes& last = out.bounds.back();
-        const std::size_t from = (out.count - 1) % sphere_batch;
+        const std::size_t from = (count - 1) % sphere_batch;
         set_lane(last, g % sphere_batch,
                  {Vec3(last.x[from], last.y[from], last.z[from]), last.r[from], 0});
     }

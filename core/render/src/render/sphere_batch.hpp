@@ -246,4 +246,28 @@ inline bool sphere_batch_avx() {
 }
 #endif
 
+// spheres_missed_early and lanes_missed_early in AVX where `avx` (the walk's
+// sphere_batch_avx(), read once) says so. Forced inline: the walks call them
+// for every batch.
+template <bool DecideEntryBeyond>
+[[gnu::always_inline]] inline unsigned spheres_missed(
+    bool avx, const WorldSphere* const (&spheres)[sphere_batch], const BatchRay& ray,
+    double t_max) {
+#if defined(JT_SPHERE_BATCH_AVX)
+    if (avx) return spheres_missed_early_avx<DecideEntryBeyond>(spheres, ray, t_max);
+#endif
+    static_cast<void>(avx);
+    return spheres_missed_early<DecideEntryBeyond>(spheres, ray, t_max);
+}
+
+template <bool DecideEntryBeyond>
+[[gnu::always_inline]] inline unsigned lanes_missed(bool avx, const SphereLanes& lanes,
+                                                    const BatchRay& ray, double t_max) {
+#if defined(JT_SPHERE_BATCH_AVX)
+    if (avx) return lanes_missed_early_avx<DecideEntryBeyond>(lanes, ray, t_max);
+#endif
+    static_cast<void>(avx);
+    return lanes_missed_early<DecideEntryBeyond>(lanes, ray, t_max);
+}
+
 }  // namespace jt
