@@ -4,6 +4,7 @@
 
 #include "test_util.hpp"
 
+#include "io/huge_pages.hpp"
 #include "io/page_warmer.hpp"
 
 // (Strings are built with append: GCC 12 warns falsely on "literal" + std::string&&.)
@@ -13,7 +14,9 @@
 namespace jt {
 namespace {
 
-constexpr int sphere_count = 6000;  // ~1.7 MB of property records, ~2 MB of primitives
+// ~22 MB of property records, past the size from which arrays take 2 MiB
+// pages (the primitives pass it in the last test).
+constexpr int sphere_count = 70000;
 
 // Sphere i: centre <i, 0, 0>, radius 1 + i/10000, then a material and a
 // transform block, then one more property after them.
@@ -29,6 +32,7 @@ std::string many_spheres() {
 }
 
 TEST(LargeScene, EveryRecordInPlace) {
+    ASSERT_GE(5 * sphere_count * sizeof(PropertySource), min_huge_page_array_bytes);
     const std::string text = many_spheres();
     ParseResult r = test::parse_clean(text);
     ASSERT_EQ(r.scene.primitives.size(), static_cast<std::size_t>(sphere_count));
@@ -85,9 +89,11 @@ TEST(LargeScene, SameSceneWithoutTheSourceMap) {
 TEST(LargeScene, DiagnosticsInABigScene) {
     std::string text = many_spheres();
     text.insert(text.rfind("point_light"), "sphere { radius: -1; material { x { } } }\n");
+    const std::string line = std::to_string(sphere_count + 2);
     EXPECT_EQ(test::brief(parse_scene(text).diagnostics),
-              "6002:18: error: 'radius' must be greater than 0 and at most 1e+09, got -1\n"
-              "6002:33: error: unexpected block 'x' in 'material', which holds only properties");
+              line + ":18: error: 'radius' must be greater than 0 and at most 1e+09, got -1\n" +
+                  line +
+                  ":33: error: unexpected block 'x' in 'material', which holds only properties");
 }
 
 // So many spheres that their primitives' pages are faulted in on another

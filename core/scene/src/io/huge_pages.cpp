@@ -10,6 +10,7 @@ namespace jt {
 
 void advise_huge_pages(const void* data, std::size_t bytes) {
 #if defined(__linux__) && defined(MADV_HUGEPAGE)
+    if (bytes < min_huge_page_array_bytes) return;
     constexpr std::uintptr_t huge_page = std::uintptr_t{2} << 20;
     const auto start = reinterpret_cast<std::uintptr_t>(data);
     const std::uintptr_t begin = (start + huge_page - 1) & ~(huge_page - 1);

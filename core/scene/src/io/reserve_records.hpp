@@ -3,19 +3,21 @@
 // without 4 KiB page faults.
 //
 // The parser fills a few arrays once, front to back, in memory fresh from the
-// kernel. On the team's VM a 4 KiB page fault costs ~18 us (16 MiB filled:
-// 75 ms in 4 KiB pages, 1 ms in 2 MiB pages), so a profile of a cold parse with
-// the source map was a quarter page faults. advise_huge_pages covers only the
-// whole 2 MiB pages inside an array, and an array starts anywhere: its first
-// (up to) 2 MiB still took 4 KiB faults, which for arrays of a few MiB was most
-// of them.
+// kernel; for a million spheres they are hundreds of MB, and their 4 KiB page
+// faults were a quarter of a cold parse with the source map. advise_huge_pages
+// covers only the whole 2 MiB pages inside an array, and an array starts
+// anywhere: its first (up to) 2 MiB still took 4 KiB faults.
 //
-// So a large array is reserved to a size that glibc maps afresh with mmap
-// (above its largest adaptive threshold, 32 MiB) in a mapping a whole number of
-// 2 MiB long, which Linux places on a 2 MiB boundary: the array then starts 16
-// bytes (malloc's header) past a boundary and every page of it can be huge.
-// Reserved but untouched memory costs address space only. Elsewhere (another
-// allocator, ASan) this is just a larger reservation and the same hint.
+// So a large array (min_huge_page_array_bytes or more: below that the hint
+// risks more than it saves, io/huge_pages.hpp) is reserved to a size that
+// glibc maps afresh with mmap (above its largest adaptive threshold, 32 MiB)
+// in a mapping a whole number of 2 MiB long, which Linux places on a 2 MiB
+// boundary: the array then starts 16 bytes (malloc's header) past a boundary
+// and every page of it can be huge. Reserved but untouched memory costs
+// address space only. Elsewhere (another allocator, ASan) this is just a
+// larger reservation and the same hint.
+
+#include "io/huge_pages.hpp"
 
 #include <algorithm>
 #include <cstddef>
@@ -28,8 +30,6 @@ namespace jt {
 namespace detail {
 
 constexpr std::size_t huge_page = std::size_t{2} << 20;
-// Below this an array is left to the allocator: a few 4 KiB faults at most.
-constexpr std::size_t large_array_bytes = std::size_t{256} << 10;
 // Above glibc's DEFAULT_MMAP_THRESHOLD_MAX on 64-bit, so always mmap'ed.
 constexpr std::size_t always_mapped_bytes = std::size_t{34} << 20;
 // glibc asks mmap for request + 8 bytes of header, rounded up to 16 then to a
@@ -49,7 +49,7 @@ void reserve_records(std::vector<T>& records, std::size_t count) {
     using namespace detail;
     try {
         const std::size_t bytes = count * sizeof(T);
-        if (bytes < large_array_bytes) {
+        if (bytes < min_huge_page_array_bytes) {
             records.reserve(count);
             return;
         }
@@ -65,9 +65,9 @@ void reserve_records(std::vector<T>& records, std::size_t count) {
     }
 }
 
-// A zero-filled array of `count` records, reserved as above: for buffers of
-// megabytes written once (an image, a BMP file's bytes), where 4 KiB faults
-// cost ~18 ms for a 1920x1080 image.
+// A zero-filled array of `count` records, reserved as above: for buffers
+// written once (an image, a BMP file's bytes), which for a large image are
+// tens of MB.
 template <class T>
 std::vector<T> zeroed_records(std::size_t count) {
     std::vector<T> records;

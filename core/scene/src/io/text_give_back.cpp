@@ -10,8 +10,8 @@ namespace jt {
 
 namespace {
 
-// A huge page: the text is advised to take them (huge_pages.hpp), and giving
-// back part of one would only split it.
+// A huge page: a large text is advised to take them (huge_pages.hpp), and
+// giving back part of one would only split it.
 constexpr std::uintptr_t give_back_unit = std::uintptr_t{2} << 20;
 
 char* unit_down(char* p) {
