@@ -16,7 +16,8 @@
 // quadratic through a known root), not by an offset. A ray leaving a triangle
 // of a mesh meets no triangle of that mesh whose plane holds its start (its
 // own, and at an edge or vertex the ones that share it): a plane through the
-// start is met only there.
+// start is met only there. It meets a triangle that shares a corner with the
+// one it leaves only farther than ε (§8.5) from its start, as §13.5 says.
 //
 // Besides its colour, each pixel says whether its bytes are numerically
 // ambiguous: whether errors of the size any double-precision renderer makes
@@ -418,6 +419,9 @@ class Tracer {
         // Started 1e-7 off the surface: meets every surface but the face it
         // leaves (no surface reflects itself, §13.5), its own primitive included.
         bool lifted = false;
+        // ε of §8.5 at the start: a face of its mesh that shares a corner with
+        // the one it leaves is met only farther than this (§13.5).
+        double epsilon = 0.0;
     };
 
     // One root: its part, the outward normal in object space (not unit
@@ -482,14 +486,17 @@ class Tracer {
             if (t > 0 && std::isfinite(t)) visit(Root{t, part, normal, u, v});
         };
         // Moller-Trumbore, inside or on the edges.
-        auto triangle = [&](const Vec3& a, const Vec3& b, const Vec3& c, int part) {
+        // Only roots beyond t_floor count.
+        auto triangle = [&](const Vec3& a, const Vec3& b, const Vec3& c, int part,
+                            double t_floor = 0.0) {
             const Vec3 e1 = b - a, e2 = c - a, p = glm::cross(d, e2);
             const double det = glm::dot(e1, p);
             if (det == 0) return;
             const Vec3 s = o - a, q = glm::cross(s, e1);
             const double u = glm::dot(s, p) / det, v = glm::dot(d, q) / det;
             if (u < 0 || v < 0 || u + v > 1) return;
-            offer(glm::dot(e2, q) / det, part, glm::cross(e1, e2), u, v);
+            const double t = glm::dot(e2, q) / det;
+            if (t > t_floor) offer(t, part, glm::cross(e1, e2), u, v);
         };
         if (const auto* sphere = shape_if<Sphere>(q.shape)) {
             const Vec3 f = o - sphere->center;
@@ -546,7 +553,13 @@ class Tracer {
                            &c = m.positions[m.faces[f][2]];
                 if (own_face && f == from.part) continue;
                 if (own && holds(a, b, c, from.object_point)) continue;
-                triangle(a, b, c, f);
+                // §13.5: a face that shares a corner with the one the ray
+                // leaves is met only farther than ε. A start near that
+                // corner, rounded into object space through a map that
+                // translates far and back, lies off the face's plane by more
+                // than holds() allows, and the ray crosses it a rounding away.
+                const bool neighbour = own && shares_corner(m, f, from.part);
+                triangle(a, b, c, f, neighbour ? from.epsilon : 0.0);
             }
         }
     }
@@ -612,6 +625,14 @@ class Tracer {
                 h.t - best.t <= kTriangleTie * best.t)
                 found.emplace_back(h.placed, h.root.part);
         return found;
+    }
+
+    // Whether faces f and g of the model have a corner at the same position.
+    static bool shares_corner(const Model& m, int f, int g) {
+        for (int i : m.faces[f])
+            for (int j : m.faces[g])
+                if (m.positions[i] == m.positions[j]) return true;
+        return false;
     }
 
     // Whether the plane of triangle abc passes through p, up to rounding.
@@ -730,7 +751,7 @@ class Tracer {
         const Vec3 v = -d;
         const double scale = std::max({max_abs(o), max_abs(p), hit.t});
         const Vec3 object_point = q.world_to_object.linear * p + q.world_to_object.translation;
-        const Origin here{hit.placed, root.part, object_point, lifted};
+        const Origin here{hit.placed, root.part, object_point, lifted, 1e-9 * scale};
         const Vec3 start = lifted ? p + 1e-7 * scale * ng : p;
 
         Colour c = scene_.settings.ambient_light * m.finish->ambient * pigment;
