@@ -39,11 +39,15 @@
 //   1e-6 of its nearest joins the variants;
 // - a point of a light's disk lies within rounding of the horizon of the
 //   surface it lights, or the hit point within rounding of the light's sphere;
-// - its ray passes within rounding of an edge or a corner of a triangle: then
+// - its ray passes within 1e-6 (barycentric) of an edge or a corner of a
+//   triangle, where a single-precision test may put it on either side: then
 //   the ray shaded as a hit on each triangle through that point, and a ray
 //   aimed just inside each, join the variants (a renderer may take any of
 //   them, and the four turned rays need not meet them all: at a corner, or at
-//   a silhouette, perhaps none).
+//   a silhouette, perhaps none);
+// - a shadow ray passes within 1e-6 (barycentric) of an edge of a triangle
+//   before the light: then the ray traced with each such shadow ray turned
+//   just across the first such edge joins the variants.
 // With several samples a pixel, each sample's variants give it a least and a
 // greatest clamped colour; the pixel's range is the byte of the mean of the
 // least and of the greatest, and it is ambiguous when those differ or when
@@ -61,6 +65,7 @@
 #include <cstdint>
 #include <map>
 #include <numbers>
+#include <optional>
 #include <string>
 #include <vector>
 
@@ -380,9 +385,17 @@ class Tracer {
             plane_root(q, face, ray.origin, ray.direction, root);
             const std::array<Vec3, 3> v = face_corners(q, face);
             const Vec3 at = (1 - root.u - root.v) * v[0] + root.u * v[1] + root.v * v[2];
-            const Vec3 inside = at + 1e-6 * ((v[0] + v[1] + v[2]) / 3.0 - at);
+            // Toward the centre by enough to cross the edge when the ray passes outside it.
+            const double least = std::min({root.u, root.v, 1 - root.u - root.v});
+            const double step = 1e-6 + 4 * std::max(0.0, -least);
+            const Vec3 inside = at + step * ((v[0] + v[1] + v[2]) / 3.0 - at);
             const Vec3 aim = q.object_to_world.linear * inside + q.object_to_world.translation;
             variant({ray.origin, glm::normalize(aim - ray.origin)}, false, plain);
+        }
+        if (flags.grazed) {
+            Flags turned = plain;
+            turned.turn_grazes = true;
+            variant(ray, false, turned);
         }
         for (const auto& [placed, face] : faces_tied(ray.origin, ray.direction)) {
             Flags forced = plain;
@@ -448,6 +461,10 @@ class Tracer {
         // How much farther (relative) than the nearest surface the forced face may lie.
         double force_slack = 1e-9;
         int i = 0, j = 0, k = 0;  // the pixel and sample the ray descends from (§14.0)
+        // A shadow ray passed within kEdgeGraze of a triangle's edge (graze()).
+        bool grazed = false;
+        // Each shadow ray turned just across the first such edge it passes.
+        bool turn_grazes = false;
     };
 
     static Rgb8 quantize(const Colour& c) {
@@ -600,7 +617,7 @@ class Tracer {
                 Root r;
                 if (!plane_root(q, f, o, d, r)) continue;
                 const double least = std::min({r.u, r.v, 1 - r.u - r.v});
-                if (least >= -1e-9 && least <= 1e-9) found.emplace_back(k, f);
+                if (std::abs(least) <= kEdgeGraze) found.emplace_back(k, f);
             }
         }
         return found;
@@ -681,12 +698,58 @@ class Tracer {
     // are within the rounding of a single-precision test, some ulps of 6e-8.
     static constexpr double kTriangleTie = 1e-6;
 
+    // A ray nearer than this (barycentric) to a triangle's edge may pass on
+    // either side of it in a single-precision test: Embree tests a mesh's
+    // triangles in floats in the mesh's space, where the ray's origin and
+    // every product round at some ulps of 6e-8 of coordinates a few times
+    // the triangle's size (§13.5 allows the core that).
+    static constexpr double kEdgeGraze = 1e-6;
+
+    // Flags a shadow ray that passes within kEdgeGraze of an edge of a
+    // triangle farther than 1e-6 (relative) from its start and nearer than
+    // the light; with flags.turn_grazes, the direction of the ray turned just
+    // across the first such edge (into the triangle when it passes outside,
+    // out of it when inside), which a single-precision test may have seen.
+    std::optional<Vec3> graze(const Vec3& o, const Vec3& d, double distance, const Origin& from,
+                              double magnitude, Flags& flags) const {
+        for (int k = 0; k < static_cast<int>(placed_.size()); ++k) {
+            if (!is_triangle(k)) continue;
+            const Placed& q = placed_[k];
+            const int faces = q.model ? static_cast<int>(q.model->faces.size()) : 1;
+            for (int f = 0; f < faces; ++f) {
+                if (from.placed == k && f == from.part) continue;
+                Root r;
+                if (!plane_root(q, f, o, d, r) || r.t <= 1e-6 * magnitude || !(r.t < distance))
+                    continue;
+                const double least = std::min({r.u, r.v, 1 - r.u - r.v});
+                if (std::abs(least) > kEdgeGraze) continue;
+                flags.ambiguous = true;
+                flags.grazed = true;
+                if (!flags.turn_grazes) continue;
+                const std::array<Vec3, 3> v = face_corners(q, f);
+                const Vec3 at = (1 - r.u - r.v) * v[0] + r.u * v[1] + r.v * v[2];
+                const double step = least < 0 ? 1e-6 - 4 * least : -(1e-6 + 4 * least);
+                const Vec3 aim = at + step * ((v[0] + v[1] + v[2]) / 3.0 - at);
+                const Vec3 world = q.object_to_world.linear * aim + q.object_to_world.translation;
+                return glm::normalize(world - o);
+            }
+        }
+        return std::nullopt;
+    }
+
     // The fraction of a light that reaches across `distance`: 0 when an opaque
     // surface is in the way; with transmissive surfaces in the scene, the
     // product of the transmission of every crossing (one a distance on a mesh,
     // where two faces share an edge) (§13.2).
     double light_through(const Vec3& o, const Vec3& d, double distance, const Origin& from,
                          double magnitude, Flags& flags) const {
+        if (const std::optional<Vec3> turned = graze(o, d, distance, from, magnitude, flags)) {
+            Flags once = flags;
+            once.turn_grazes = false;
+            const double through = light_through(o, *turned, distance, from, magnitude, once);
+            flags.ambiguous = flags.ambiguous || once.ambiguous;
+            return through;
+        }
         double through = 1.0;
         for (int k = 0; k < static_cast<int>(placed_.size()); ++k) {
             std::vector<double> crossings;
