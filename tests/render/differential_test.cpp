@@ -363,6 +363,24 @@ TEST(Differential, PinnedSeedsRenderAsTheReferenceSays) {
         // A ray reflected 2e-11 from a mesh's vertex crossed a neighbour 1e-10 on
         // in the reference's rounding (a map translating by 5e4), within ε of §13.5.
         {101671, kLanded, "1.2"},
+        // A mesh squashed 3.6e-6 thin (its map's least stretch over its
+        // greatest), face on: its two faces within 1e-6 along the rays made a
+        // tie, though §13.5 orders an ill-conditioned mesh's faces in its space.
+        {101238, {.sky = true}, "1.2-sky"},
+        // The same with a mesh 1.7e-5 thin, met by rays off a glass mesh and a mirror.
+        {101758, {.sky = true}, "1.2-sky"},
+        // A flat mesh 4.5e-6 thin: the far face, shaded as a tie, gave other colours.
+        {100301, {.generated_normals = true}, "1.2-normals"},
+        // A smooth mesh 3.4e-6 thin, seen in a reflection.
+        {101447, {.generated_normals = true}, "1.2-normals"},
+        // A flat mesh 4e-6 thin, and a smooth one 5e-6 thin, face on.
+        {101771, {.generated_normals = true}, "1.2-normals"},
+        {101952, {.generated_normals = true}, "1.2-normals"},
+        // Smooth meshes 3.3e-7 and 1.1e-6 thin, face on: the far face, shaded
+        // as a tie, gave other colours.
+        {101845, {.generated_normals = true}, "1.2-normals"},
+        {101845, {.file_materials = true}, "1.2-materials"},
+        {101475, {.file_materials = true}, "1.2-materials"},
     };
     for (const Pinned& p : pinned) {
         const SeedResult r = check_seed(p.seed, {p.generate, p.features, p.name});

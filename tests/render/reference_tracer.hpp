@@ -35,8 +35,10 @@
 //   its start: coincident or touching surfaces, where the nearest hit or the
 //   shadow is a matter of rounding; two triangles within 1e-6 of each other,
 //   which a renderer may order in single precision (§13.5 allows the core
-//   that), and then the primary ray shaded as a hit on each triangle within
-//   1e-6 of its nearest joins the variants;
+//   that; two faces of one ill-conditioned mesh, within 1e-6 of the model's
+//   size in its own space, where §13.5 orders them), and then the primary
+//   ray shaded as a hit on each triangle within 1e-6 of its nearest joins
+//   the variants;
 // - a point of a light's disk lies within rounding of the horizon of the
 //   surface it lights, or the hit point within rounding of the light's sphere;
 // - its ray passes within 1e-6 (barycentric) of an edge or a corner of a
@@ -273,6 +275,11 @@ class Tracer {
                                                     q.model->normals[face[2]]});
                 else if (mesh->shading == kSmoothShading && mesh->smooth_angle)
                     q.corner_normals = generated_normals(*q.model, *mesh->smooth_angle);
+                if (!(largest_row_sum(q.object_to_world.linear) *
+                          largest_row_sum(q.world_to_object.linear) <=
+                      kMaxPlainCondition))
+                    for (const Vec3& v : q.model->positions)
+                        q.own_extent = std::max(q.own_extent, max_abs(v));
             }
             if (!p.material.finish->image_map.empty())
                 q.picture = &files.pictures.at(p.material.finish->image_map);
@@ -421,7 +428,23 @@ class Tracer {
         std::vector<std::array<Vec3, 3>> corner_normals;
         bool file_materials = false;       // pigments from the model's parts (§14.5)
         const Picture* picture = nullptr;  // its image map
+        // An ill-conditioned mesh's rays are moved into its model's space in
+        // double precision, from where they enter its box (docs/language.md
+        // §13.5): which of its own faces comes first is rounded at the model's
+        // size, not at the ray's length. The model's extent then; else 0.
+        double own_extent = 0;
     };
+
+    // docs/language.md §13.5: past this product of the largest row sums of
+    // |M| and |M^-1|, a mesh's map is ill-conditioned.
+    static constexpr double kMaxPlainCondition = 64;
+
+    static double largest_row_sum(const glm::dmat3& m) {
+        double largest = 0;
+        for (int r = 0; r < 3; ++r)
+            largest = std::max(largest, std::abs(m[0][r]) + std::abs(m[1][r]) + std::abs(m[2][r]));
+        return largest;
+    }
 
     // Where a ray starts: on surface `part` of placed primitive `placed`, or
     // nowhere (placed < 0) for a primary or lifted ray.
@@ -639,7 +662,7 @@ class Tracer {
         if (best.placed < 0 || !is_triangle(best.placed)) return found;
         for (const Hit& h : triangles)
             if (!(h.placed == best.placed && h.root.part == best.root.part) &&
-                h.t - best.t <= kTriangleTie * best.t)
+                triangle_tied(best, h.placed, h.t, d, best.t))
                 found.emplace_back(h.placed, h.root.part);
         return found;
     }
@@ -683,8 +706,42 @@ class Tracer {
         // triangle, and only its hit is refined in double).
         const double tie =
             best.placed >= 0 && is_triangle(best.placed) && second_triangle ? kTriangleTie : 1e-8;
-        if (second - best.t <= tie * std::max(best.t, magnitude)) flags.ambiguous = true;
+        bool tied = second - best.t <= tie * std::max(best.t, magnitude);
+        if (tied && placed_[best.placed].own_extent > 0)
+            tied = tied_past_own_faces(o, d, from, magnitude, best);
+        if (tied) flags.ambiguous = true;
         return best;
+    }
+
+    // Whether a triangle's root at t on placed primitive k lies within a
+    // single-precision test's rounding of `best`, the nearest hit (a
+    // triangle), along unit direction d: relative to `length`, or, for two
+    // faces of an ill-conditioned mesh, to the model's size in its own space.
+    bool triangle_tied(const Hit& best, int k, double t, const Vec3& d, double length) const {
+        const Placed& q = placed_[best.placed];
+        if (k == best.placed && q.own_extent > 0)
+            return (t - best.t) * max_abs(q.world_to_object.linear * d) <=
+                   kTriangleTie * q.own_extent;
+        return t - best.t <= kTriangleTie * length;
+    }
+
+    // nearest()'s tie when `best` is a face of an ill-conditioned mesh: its
+    // own faces weighed in its model's space, the other surfaces as before.
+    bool tied_past_own_faces(const Vec3& o, const Vec3& d, const Origin& from, double magnitude,
+                             const Hit& best) const {
+        double second = INFINITY;
+        bool second_triangle = false, own = false;
+        for (int k = 0; k < static_cast<int>(placed_.size()); ++k) {
+            roots(k, o, d, from, [&](const Root& root) {
+                if (k != best.placed) {
+                    if (root.t < second) second = root.t, second_triangle = is_triangle(k);
+                } else if (root.part != best.root.part) {
+                    own = own || triangle_tied(best, k, root.t, d, 0);
+                }
+            });
+        }
+        const double tie = second_triangle ? kTriangleTie : 1e-8;
+        return own || second - best.t <= tie * std::max(best.t, magnitude);
     }
 
     bool q_is_mesh(int k) const { return placed_[k].model != nullptr; }
