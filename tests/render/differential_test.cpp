@@ -327,15 +327,17 @@ TEST(Differential, LandedLanguage12FeaturesTogetherRenderAsTheReferenceSays) {
     check_features(kLanded, "1.2");
 }
 
+// A seed outside the default ranges, checked on its own.
+struct Pinned {
+    std::uint64_t seed;
+    Features features;
+    const char* name;
+    RandomScene (*generate)(std::uint64_t seed, Features features) = random_scene_1_2;
+};
+
 // Seeds outside the default ranges that once failed, checked on every run:
 // each found a fault the default seeds do not reach.
 TEST(Differential, PinnedSeedsRenderAsTheReferenceSays) {
-    struct Pinned {
-        std::uint64_t seed;
-        Features features;
-        const char* name;
-        RandomScene (*generate)(std::uint64_t seed, Features features) = random_scene_1_2;
-    };
     const Pinned pinned[] = {
         // A ray reflected back and forth inside a smooth mirrored mesh's fold,
         // nearer its edge at each bounce, slipped out between the two faces.
@@ -354,8 +356,55 @@ TEST(Differential, PinnedSeedsRenderAsTheReferenceSays) {
         // mesh's rays, moved into its space, kept their float origin hundreds
         // of model sizes away.
         {826, {}, "1.1", language_1_1},
+        // A shadow ray 8e-8 outside a ridge of a tetrahedron 60000 times longer
+        // than thick, below a float's step in the model's space: either way.
+        {103334, {}, "1.1", language_1_1},
+        // A centre ray 1.7e-7 (barycentric) outside a mesh's silhouette edge,
+        // seen from a few model sizes: Embree's float test met the face.
+        {100642, kLanded, "1.2"},
+        // A ray reflected 2e-11 from a mesh's vertex crossed a neighbour 1e-10 on
+        // in the reference's rounding (a map translating by 5e4), within ε of §13.5.
+        {101671, kLanded, "1.2"},
+        // A mesh squashed 3.6e-6 thin (its map's least stretch over its
+        // greatest), face on: its two faces within 1e-6 along the rays made a
+        // tie, though §13.5 orders an ill-conditioned mesh's faces in its space.
+        {101238, {.sky = true}, "1.2-sky"},
+        // The same with a mesh 1.7e-5 thin, met by rays off a glass mesh and a mirror.
+        {101758, {.sky = true}, "1.2-sky"},
+        // A flat mesh 4.5e-6 thin: the far face, shaded as a tie, gave other colours.
+        {100301, {.generated_normals = true}, "1.2-normals"},
+        // A smooth mesh 3.4e-6 thin, seen in a reflection.
+        {101447, {.generated_normals = true}, "1.2-normals"},
+        // A flat mesh 4e-6 thin, and a smooth one 5e-6 thin, face on.
+        {101771, {.generated_normals = true}, "1.2-normals"},
+        {101952, {.generated_normals = true}, "1.2-normals"},
+        // Smooth meshes 3.3e-7 and 1.1e-6 thin, face on: the far face, shaded
+        // as a tie, gave other colours.
+        {101845, {.generated_normals = true}, "1.2-normals"},
+        {101845, {.file_materials = true}, "1.2-materials"},
+        {101475, {.file_materials = true}, "1.2-materials"},
     };
     for (const Pinned& p : pinned) {
+        const SeedResult r = check_seed(p.seed, {p.generate, p.features, p.name});
+        EXPECT_TRUE(r.failure.empty()) << r.failure;
+    }
+    remove_scene_files();
+}
+
+// Known fault, not yet mended: a centre ray exactly through a mesh vertex
+// that is not on the silhouette (all four faces around it face the ray) met
+// none of those faces, so the pixel shows what lies behind them, where §13.5
+// says a ray through a shared vertex meets one of its triangles. Embree's
+// single-precision edge tests round at the ray start's distance from the mesh
+// (several model sizes here), past the edge values' true zero, and all four
+// came out on one side; the same ray started half way to the hit finds the
+// faces. Enabled once the core settles such rays.
+TEST(Differential, DISABLED_RaysThroughAMeshVertexMeetOneOfItsFaces) {
+    const Pinned through_vertex[] = {
+        {101979, kLanded, "1.2"},              // pixel (25, 19): the mesh's exit face instead
+        {101577, {.lens = true}, "1.2-lens"},  // pixel (4, 11): the mesh behind instead
+    };
+    for (const Pinned& p : through_vertex) {
         const SeedResult r = check_seed(p.seed, {p.generate, p.features, p.name});
         EXPECT_TRUE(r.failure.empty()) << r.failure;
     }

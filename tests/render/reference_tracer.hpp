@@ -16,7 +16,8 @@
 // quadratic through a known root), not by an offset. A ray leaving a triangle
 // of a mesh meets no triangle of that mesh whose plane holds its start (its
 // own, and at an edge or vertex the ones that share it): a plane through the
-// start is met only there.
+// start is met only there. It meets a triangle that shares a corner with the
+// one it leaves only farther than ε (§8.5) from its start, as §13.5 says.
 //
 // Besides its colour, each pixel says whether its bytes are numerically
 // ambiguous: whether errors of the size any double-precision renderer makes
@@ -34,15 +35,21 @@
 //   its start: coincident or touching surfaces, where the nearest hit or the
 //   shadow is a matter of rounding; two triangles within 1e-6 of each other,
 //   which a renderer may order in single precision (§13.5 allows the core
-//   that), and then the primary ray shaded as a hit on each triangle within
-//   1e-6 of its nearest joins the variants;
+//   that; two faces of one ill-conditioned mesh, within 1e-6 of the model's
+//   size in its own space, where §13.5 orders them), and then the primary
+//   ray shaded as a hit on each triangle within 1e-6 of its nearest joins
+//   the variants;
 // - a point of a light's disk lies within rounding of the horizon of the
 //   surface it lights, or the hit point within rounding of the light's sphere;
-// - its ray passes within rounding of an edge or a corner of a triangle: then
+// - its ray passes within 1e-6 (barycentric) of an edge or a corner of a
+//   triangle, where a single-precision test may put it on either side: then
 //   the ray shaded as a hit on each triangle through that point, and a ray
 //   aimed just inside each, join the variants (a renderer may take any of
 //   them, and the four turned rays need not meet them all: at a corner, or at
-//   a silhouette, perhaps none).
+//   a silhouette, perhaps none);
+// - a shadow ray passes within 1e-6 (barycentric) of an edge of a triangle
+//   before the light: then the ray traced with each such shadow ray turned
+//   just across the first such edge joins the variants.
 // With several samples a pixel, each sample's variants give it a least and a
 // greatest clamped colour; the pixel's range is the byte of the mean of the
 // least and of the greatest, and it is ambiguous when those differ or when
@@ -60,6 +67,7 @@
 #include <cstdint>
 #include <map>
 #include <numbers>
+#include <optional>
 #include <string>
 #include <vector>
 
@@ -267,6 +275,11 @@ class Tracer {
                                                     q.model->normals[face[2]]});
                 else if (mesh->shading == kSmoothShading && mesh->smooth_angle)
                     q.corner_normals = generated_normals(*q.model, *mesh->smooth_angle);
+                if (!(largest_row_sum(q.object_to_world.linear) *
+                          largest_row_sum(q.world_to_object.linear) <=
+                      kMaxPlainCondition))
+                    for (const Vec3& v : q.model->positions)
+                        q.own_extent = std::max(q.own_extent, max_abs(v));
             }
             if (!p.material.finish->image_map.empty())
                 q.picture = &files.pictures.at(p.material.finish->image_map);
@@ -379,9 +392,17 @@ class Tracer {
             plane_root(q, face, ray.origin, ray.direction, root);
             const std::array<Vec3, 3> v = face_corners(q, face);
             const Vec3 at = (1 - root.u - root.v) * v[0] + root.u * v[1] + root.v * v[2];
-            const Vec3 inside = at + 1e-6 * ((v[0] + v[1] + v[2]) / 3.0 - at);
+            // Toward the centre by enough to cross the edge when the ray passes outside it.
+            const double least = std::min({root.u, root.v, 1 - root.u - root.v});
+            const double step = 1e-6 + 4 * std::max(0.0, -least);
+            const Vec3 inside = at + step * ((v[0] + v[1] + v[2]) / 3.0 - at);
             const Vec3 aim = q.object_to_world.linear * inside + q.object_to_world.translation;
             variant({ray.origin, glm::normalize(aim - ray.origin)}, false, plain);
+        }
+        if (flags.grazed) {
+            Flags turned = plain;
+            turned.turn_grazes = true;
+            variant(ray, false, turned);
         }
         for (const auto& [placed, face] : faces_tied(ray.origin, ray.direction)) {
             Flags forced = plain;
@@ -407,7 +428,23 @@ class Tracer {
         std::vector<std::array<Vec3, 3>> corner_normals;
         bool file_materials = false;       // pigments from the model's parts (§14.5)
         const Picture* picture = nullptr;  // its image map
+        // An ill-conditioned mesh's rays are moved into its model's space in
+        // double precision, from where they enter its box (docs/language.md
+        // §13.5): which of its own faces comes first is rounded at the model's
+        // size, not at the ray's length. The model's extent then; else 0.
+        double own_extent = 0;
     };
+
+    // docs/language.md §13.5: past this product of the largest row sums of
+    // |M| and |M^-1|, a mesh's map is ill-conditioned.
+    static constexpr double kMaxPlainCondition = 64;
+
+    static double largest_row_sum(const glm::dmat3& m) {
+        double largest = 0;
+        for (int r = 0; r < 3; ++r)
+            largest = std::max(largest, std::abs(m[0][r]) + std::abs(m[1][r]) + std::abs(m[2][r]));
+        return largest;
+    }
 
     // Where a ray starts: on surface `part` of placed primitive `placed`, or
     // nowhere (placed < 0) for a primary or lifted ray.
@@ -418,6 +455,9 @@ class Tracer {
         // Started 1e-7 off the surface: meets every surface but the face it
         // leaves (no surface reflects itself, §13.5), its own primitive included.
         bool lifted = false;
+        // ε of §8.5 at the start: a face of its mesh that shares a corner with
+        // the one it leaves is met only farther than this (§13.5).
+        double epsilon = 0.0;
     };
 
     // One root: its part, the outward normal in object space (not unit
@@ -444,6 +484,10 @@ class Tracer {
         // How much farther (relative) than the nearest surface the forced face may lie.
         double force_slack = 1e-9;
         int i = 0, j = 0, k = 0;  // the pixel and sample the ray descends from (§14.0)
+        // A shadow ray passed within kEdgeGraze of a triangle's edge (graze()).
+        bool grazed = false;
+        // Each shadow ray turned just across the first such edge it passes.
+        bool turn_grazes = false;
     };
 
     static Rgb8 quantize(const Colour& c) {
@@ -482,14 +526,17 @@ class Tracer {
             if (t > 0 && std::isfinite(t)) visit(Root{t, part, normal, u, v});
         };
         // Moller-Trumbore, inside or on the edges.
-        auto triangle = [&](const Vec3& a, const Vec3& b, const Vec3& c, int part) {
+        // Only roots beyond t_floor count.
+        auto triangle = [&](const Vec3& a, const Vec3& b, const Vec3& c, int part,
+                            double t_floor = 0.0) {
             const Vec3 e1 = b - a, e2 = c - a, p = glm::cross(d, e2);
             const double det = glm::dot(e1, p);
             if (det == 0) return;
             const Vec3 s = o - a, q = glm::cross(s, e1);
             const double u = glm::dot(s, p) / det, v = glm::dot(d, q) / det;
             if (u < 0 || v < 0 || u + v > 1) return;
-            offer(glm::dot(e2, q) / det, part, glm::cross(e1, e2), u, v);
+            const double t = glm::dot(e2, q) / det;
+            if (t > t_floor) offer(t, part, glm::cross(e1, e2), u, v);
         };
         if (const auto* sphere = shape_if<Sphere>(q.shape)) {
             const Vec3 f = o - sphere->center;
@@ -546,7 +593,13 @@ class Tracer {
                            &c = m.positions[m.faces[f][2]];
                 if (own_face && f == from.part) continue;
                 if (own && holds(a, b, c, from.object_point)) continue;
-                triangle(a, b, c, f);
+                // §13.5: a face that shares a corner with the one the ray
+                // leaves is met only farther than ε. A start near that
+                // corner, rounded into object space through a map that
+                // translates far and back, lies off the face's plane by more
+                // than holds() allows, and the ray crosses it a rounding away.
+                const bool neighbour = own && shares_corner(m, f, from.part);
+                triangle(a, b, c, f, neighbour ? from.epsilon : 0.0);
             }
         }
     }
@@ -587,7 +640,7 @@ class Tracer {
                 Root r;
                 if (!plane_root(q, f, o, d, r)) continue;
                 const double least = std::min({r.u, r.v, 1 - r.u - r.v});
-                if (least >= -1e-9 && least <= 1e-9) found.emplace_back(k, f);
+                if (std::abs(least) <= kEdgeGraze) found.emplace_back(k, f);
             }
         }
         return found;
@@ -609,9 +662,17 @@ class Tracer {
         if (best.placed < 0 || !is_triangle(best.placed)) return found;
         for (const Hit& h : triangles)
             if (!(h.placed == best.placed && h.root.part == best.root.part) &&
-                h.t - best.t <= kTriangleTie * best.t)
+                triangle_tied(best, h.placed, h.t, d, best.t))
                 found.emplace_back(h.placed, h.root.part);
         return found;
+    }
+
+    // Whether faces f and g of the model have a corner at the same position.
+    static bool shares_corner(const Model& m, int f, int g) {
+        for (int i : m.faces[f])
+            for (int j : m.faces[g])
+                if (m.positions[i] == m.positions[j]) return true;
+        return false;
     }
 
     // Whether the plane of triangle abc passes through p, up to rounding.
@@ -645,8 +706,42 @@ class Tracer {
         // triangle, and only its hit is refined in double).
         const double tie =
             best.placed >= 0 && is_triangle(best.placed) && second_triangle ? kTriangleTie : 1e-8;
-        if (second - best.t <= tie * std::max(best.t, magnitude)) flags.ambiguous = true;
+        bool tied = second - best.t <= tie * std::max(best.t, magnitude);
+        if (tied && placed_[best.placed].own_extent > 0)
+            tied = tied_past_own_faces(o, d, from, magnitude, best);
+        if (tied) flags.ambiguous = true;
         return best;
+    }
+
+    // Whether a triangle's root at t on placed primitive k lies within a
+    // single-precision test's rounding of `best`, the nearest hit (a
+    // triangle), along unit direction d: relative to `length`, or, for two
+    // faces of an ill-conditioned mesh, to the model's size in its own space.
+    bool triangle_tied(const Hit& best, int k, double t, const Vec3& d, double length) const {
+        const Placed& q = placed_[best.placed];
+        if (k == best.placed && q.own_extent > 0)
+            return (t - best.t) * max_abs(q.world_to_object.linear * d) <=
+                   kTriangleTie * q.own_extent;
+        return t - best.t <= kTriangleTie * length;
+    }
+
+    // nearest()'s tie when `best` is a face of an ill-conditioned mesh: its
+    // own faces weighed in its model's space, the other surfaces as before.
+    bool tied_past_own_faces(const Vec3& o, const Vec3& d, const Origin& from, double magnitude,
+                             const Hit& best) const {
+        double second = INFINITY;
+        bool second_triangle = false, own = false;
+        for (int k = 0; k < static_cast<int>(placed_.size()); ++k) {
+            roots(k, o, d, from, [&](const Root& root) {
+                if (k != best.placed) {
+                    if (root.t < second) second = root.t, second_triangle = is_triangle(k);
+                } else if (root.part != best.root.part) {
+                    own = own || triangle_tied(best, k, root.t, d, 0);
+                }
+            });
+        }
+        const double tie = second_triangle ? kTriangleTie : 1e-8;
+        return own || second - best.t <= tie * std::max(best.t, magnitude);
     }
 
     bool q_is_mesh(int k) const { return placed_[k].model != nullptr; }
@@ -660,12 +755,58 @@ class Tracer {
     // are within the rounding of a single-precision test, some ulps of 6e-8.
     static constexpr double kTriangleTie = 1e-6;
 
+    // A ray nearer than this (barycentric) to a triangle's edge may pass on
+    // either side of it in a single-precision test: Embree tests a mesh's
+    // triangles in floats in the mesh's space, where the ray's origin and
+    // every product round at some ulps of 6e-8 of coordinates a few times
+    // the triangle's size (§13.5 allows the core that).
+    static constexpr double kEdgeGraze = 1e-6;
+
+    // Flags a shadow ray that passes within kEdgeGraze of an edge of a
+    // triangle farther than 1e-6 (relative) from its start and nearer than
+    // the light; with flags.turn_grazes, the direction of the ray turned just
+    // across the first such edge (into the triangle when it passes outside,
+    // out of it when inside), which a single-precision test may have seen.
+    std::optional<Vec3> graze(const Vec3& o, const Vec3& d, double distance, const Origin& from,
+                              double magnitude, Flags& flags) const {
+        for (int k = 0; k < static_cast<int>(placed_.size()); ++k) {
+            if (!is_triangle(k)) continue;
+            const Placed& q = placed_[k];
+            const int faces = q.model ? static_cast<int>(q.model->faces.size()) : 1;
+            for (int f = 0; f < faces; ++f) {
+                if (from.placed == k && f == from.part) continue;
+                Root r;
+                if (!plane_root(q, f, o, d, r) || r.t <= 1e-6 * magnitude || !(r.t < distance))
+                    continue;
+                const double least = std::min({r.u, r.v, 1 - r.u - r.v});
+                if (std::abs(least) > kEdgeGraze) continue;
+                flags.ambiguous = true;
+                flags.grazed = true;
+                if (!flags.turn_grazes) continue;
+                const std::array<Vec3, 3> v = face_corners(q, f);
+                const Vec3 at = (1 - r.u - r.v) * v[0] + r.u * v[1] + r.v * v[2];
+                const double step = least < 0 ? 1e-6 - 4 * least : -(1e-6 + 4 * least);
+                const Vec3 aim = at + step * ((v[0] + v[1] + v[2]) / 3.0 - at);
+                const Vec3 world = q.object_to_world.linear * aim + q.object_to_world.translation;
+                return glm::normalize(world - o);
+            }
+        }
+        return std::nullopt;
+    }
+
     // The fraction of a light that reaches across `distance`: 0 when an opaque
     // surface is in the way; with transmissive surfaces in the scene, the
     // product of the transmission of every crossing (one a distance on a mesh,
     // where two faces share an edge) (§13.2).
     double light_through(const Vec3& o, const Vec3& d, double distance, const Origin& from,
                          double magnitude, Flags& flags) const {
+        if (const std::optional<Vec3> turned = graze(o, d, distance, from, magnitude, flags)) {
+            Flags once = flags;
+            once.turn_grazes = false;
+            const double through = light_through(o, *turned, distance, from, magnitude, once);
+            flags.ambiguous = flags.ambiguous || once.ambiguous;
+            return through;
+        }
         double through = 1.0;
         for (int k = 0; k < static_cast<int>(placed_.size()); ++k) {
             std::vector<double> crossings;
@@ -730,7 +871,7 @@ class Tracer {
         const Vec3 v = -d;
         const double scale = std::max({max_abs(o), max_abs(p), hit.t});
         const Vec3 object_point = q.world_to_object.linear * p + q.world_to_object.translation;
-        const Origin here{hit.placed, root.part, object_point, lifted};
+        const Origin here{hit.placed, root.part, object_point, lifted, 1e-9 * scale};
         const Vec3 start = lifted ? p + 1e-7 * scale * ng : p;
 
         Colour c = scene_.settings.ambient_light * m.finish->ambient * pigment;
