@@ -279,6 +279,40 @@ TEST(Triangles, RaysThroughSharedEdgesAndVerticesNeverMiss) {
     EXPECT_EQ(misses, 0) << "of " << rays;
 }
 
+// Rays from 500 and 5000 model sizes away, aimed exactly at a vertex of a
+// placed octahedron from within its cone of solid: each meets a face around
+// the vertex, at the vertex, never the face it leaves by (t about 1 + 2 / D).
+// A float ray started that far off rounds the edge values at the vertex at its
+// own distance, and all four could come out on one side.
+TEST(Triangles, ARayFromFarOffThroughAVertexMeetsAFaceAroundIt) {
+    ScratchDir dir;
+    Scene s = scene_with_camera(camera_at({0, 0, 0}, {0, 0, -1}));
+    Primitive placed = mesh(octahedron(dir.path()));
+    const Vec3 offset(-36.563575588759875, 34.74337369372327, 26.377461897661405);
+    placed.transforms = {translate(offset)};
+    s.primitives.push_back(placed);
+    auto prepared = prepare_scene(s).value();
+    const Vec3 corners[] = {{1, 0, 0}, {-1, 0, 0}, {0, 1, 0}, {0, -1, 0}, {0, 0, 1}, {0, 0, -1}};
+    std::mt19937 rng(11);
+    std::uniform_real_distribution<double> tilt(-0.3, 0.3);
+    int away = 0, rays = 0;
+    for (const double distance : {500.0, 5000.0}) {
+        for (int k = 0; k < 200; ++k) {
+            for (const Vec3& corner : corners) {
+                const Vec3 out = glm::normalize(corner + Vec3(tilt(rng), tilt(rng), tilt(rng)));
+                const Vec3 target = corner + offset;
+                const Vec3 from = target + distance * out;
+                Hit hit;
+                ++rays;
+                if (!closest_hit(*prepared->geometry, from, target - from, 0.0, hit) ||
+                    !(std::abs(hit.t - 1.0) < 1e-9))
+                    ++away;
+            }
+        }
+    }
+    EXPECT_EQ(away, 0) << "of " << rays << " rays met no face at the vertex";
+}
+
 // Rays from inside a tetrahedron's face F, lifted off it as a hit's are,
 // leaving 1e-7 to 3e-6 (barycentric) from its edge with face N and heading
 // out through N near that edge, where they pass in double precision: the

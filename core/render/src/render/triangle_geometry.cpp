@@ -331,6 +331,7 @@ Expected<std::unique_ptr<TriangleGeometry>> build_triangle_geometry(const Scene&
     if (!t) return std::unique_ptr<TriangleGeometry>();
     if (!t->loose.empty()) attach_loose(*t);
     rtcCommitScene(t->scene);
+    rtcGetSceneBounds(t->scene, &t->bounds);
     return t;
 }
 

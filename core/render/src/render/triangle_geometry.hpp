@@ -106,6 +106,7 @@ struct TriangleGeometry {
     unsigned loose_geometry_id = RTC_INVALID_GEOMETRY_ID;
     bool file_materials = false;  // some instance has materials: "file"
     RTCScene scene = nullptr;     // the instances and the loose triangles
+    RTCBounds bounds{};           // of `scene`, once committed
 
     TriangleGeometry() = default;
     TriangleGeometry(const TriangleGeometry&) = delete;

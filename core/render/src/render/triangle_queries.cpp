@@ -195,12 +195,33 @@ bool nearest_by_testing_all(const TriangleQuery& q, TriangleId& nearest, bool fi
 }
 
 // The float ray Embree walks for the query's ray; false when no triangle can
-// be met (out of reach: `walk` says to test them all).
+// be met (out of reach: `walk` says to test them all). A ray from outside
+// the triangles' box starts where it enters the box, moved along itself in
+// double precision: Embree's single-precision test rounds its edge values at
+// the size of the ray's start, and a ray from hundreds of model sizes away
+// through a mesh's vertex came out on one side of all four edges there and
+// met none of the faces around it (language.md §13.5 says it meets one).
 bool embree_ray(const TriangleQuery& q, RTCRay& ray, bool& walk) {
-    const FarRay far =
-        fit_embree_ray(q.geometry->scene, q.origin, q.direction, q.t_min, q.t_max, ray);
-    walk = far.fit == FarRay::Fit::out_of_reach;
-    return far.fit == FarRay::Fit::as_is || far.fit == FarRay::Fit::moved;
+    walk = false;
+    if (!embree_takes(q.origin, q.direction)) {
+        const FarRay far =
+            fit_embree_ray(q.geometry->scene, q.origin, q.direction, q.t_min, q.t_max, ray);
+        walk = far.fit == FarRay::Fit::out_of_reach;
+        return far.fit == FarRay::Fit::moved;
+    }
+    set_float_ray(ray, q.origin, q.direction, q.t_min, q.t_max);
+    // fit_far_ray looks ahead of the start only; inside the box the rounding
+    // is the box's own.
+    const RTCBounds& box = q.geometry->bounds;
+    const bool inside = q.origin.x >= box.lower_x && q.origin.x <= box.upper_x &&
+                        q.origin.y >= box.lower_y && q.origin.y <= box.upper_y &&
+                        q.origin.z >= box.lower_z && q.origin.z <= box.upper_z;
+    if (inside || !(q.t_min >= 0.0)) return true;
+    const FarRay near = fit_far_ray(q.origin, q.direction, q.t_min, q.t_max, q.geometry->bounds);
+    if (near.fit == FarRay::Fit::misses) return false;
+    if (near.fit == FarRay::Fit::moved && near.shift > q.t_min && near.exponent == 0)
+        set_far_ray(ray, near, q.t_min, q.t_max);
+    return true;
 }
 
 Vec3 times_power_of_two(const Vec3& v, int exponent) {
