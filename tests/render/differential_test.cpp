@@ -359,6 +359,10 @@ TEST(Differential, PinnedSeedsRenderAsTheReferenceSays) {
         // A shadow ray 8e-8 outside a ridge of a tetrahedron 60000 times longer
         // than thick, below a float's step in the model's space: either way.
         {103334, {}, "1.1", language_1_1},
+        // A light 1e-5 rad above a glass tetrahedron's face, which has no
+        // diffuse and faces it past the specular cut-off: shadow rays grazing
+        // the neighbour face's edge flagged 50 pixels the light cannot change.
+        {115670, {}, "1.1", language_1_1},
         // A centre ray 1.7e-7 (barycentric) outside a mesh's silhouette edge,
         // seen from a few model sizes: Embree's float test met the face.
         {100642, kLanded, "1.2"},

@@ -50,6 +50,8 @@
 // - a shadow ray passes within 1e-6 (barycentric) of an edge of a triangle
 //   before the light: then the ray traced with each such shadow ray turned
 //   just across the first such edge joins the variants.
+// A light whose diffuse and specular terms at a point are zero, whatever
+// reaches it, casts no shadow ray there, so flags nothing.
 // With several samples a pixel, each sample's variants give it a least and a
 // greatest clamped colour; the pixel's range is the byte of the mean of the
 // least and of the greatest, and it is ambiguous when those differ or when
@@ -751,6 +753,9 @@ class Tracer {
         return placed_[k].model != nullptr || shape_is<Triangle>(*placed_[k].shape);
     }
 
+    // R.V below minus this is negative under any renderer's rounding.
+    static constexpr double kSpecularCutOffMargin = 1e-9;
+
     // Two triangles' hits nearer each other than this (relative) along a ray
     // are within the rounding of a single-precision test, some ulps of 6e-8.
     static constexpr double kTriangleTie = 1e-6;
@@ -883,6 +888,17 @@ class Tracer {
             const Vec3 l = glm::normalize(light.position - p);
             const double n_dot_l = glm::dot(n, l);
             if (n_dot_l <= 0) continue;
+            const Vec3 reflected = 2 * n_dot_l * n - l;
+            const double r_dot_v = glm::dot(reflected, v);
+            // A light whose diffuse and specular terms are both zero here adds
+            // nothing whatever reaches it: its shadow ray cannot change the
+            // colour, so what that ray passes within rounding of (an edge, a
+            // surface at its start) leaves the pixel unambiguous. The
+            // specular term counts as zero only well past its cut-off, where
+            // no rounding of R.V turns it on.
+            if (m.finish->diffuse * pigment == Colour(0.0) &&
+                (m.finish->specular == Colour(0.0) || r_dot_v < -kSpecularCutOffMargin))
+                continue;
             const Vec3 to_light = light.position - start;
             const double distance = glm::length(to_light);
             const double through =
@@ -891,8 +907,6 @@ class Tracer {
             const Colour intensity = light.intensity * through;
             c += intensity * m.finish->diffuse * pigment *
                  std::pow(n_dot_l, 1 / m.finish->diffuse_k);
-            const Vec3 reflected = 2 * n_dot_l * n - l;
-            const double r_dot_v = glm::dot(reflected, v);
             if (r_dot_v > 0)
                 c += intensity * m.finish->specular * std::pow(r_dot_v, m.finish->specular_k);
         }
