@@ -219,7 +219,8 @@ bool embree_ray(const TriangleQuery& q, RTCRay& ray, bool& walk) {
     if (inside || !(q.t_min >= 0.0)) return true;
     const FarRay near = fit_far_ray(q.origin, q.direction, q.t_min, q.t_max, q.geometry->bounds);
     if (near.fit == FarRay::Fit::misses) return false;
-    if (near.fit == FarRay::Fit::moved && near.shift > q.t_min && near.exponent == 0)
+    // The direction is within Embree's reach, so it keeps its length (exponent 0).
+    if (near.fit == FarRay::Fit::moved && near.shift > q.t_min)
         set_far_ray(ray, near, q.t_min, q.t_max);
     return true;
 }
