@@ -313,6 +313,46 @@ TEST(Triangles, ARayFromFarOffThroughAVertexMeetsAFaceAroundIt) {
     EXPECT_EQ(away, 0) << "of " << rays << " rays met no face at the vertex";
 }
 
+// The same rays, from inside the box of all the triangles: a second, huge
+// octahedron around the first puts every start inside its box (and inside
+// it), so no move to where the ray enters the triangles' box comes near the
+// small mesh. Each ray meets the small mesh at its vertex, and a shadow ray
+// to just past the vertex is blocked.
+TEST(Triangles, ARayFromInsideTheTrianglesBoxThroughAVertexMeetsAFaceAroundIt) {
+    ScratchDir dir;
+    Scene s = scene_with_camera(camera_at({0, 0, 0}, {0, 0, -1}));
+    const Vec3 offset(-36.563575588759875, 34.74337369372327, 26.377461897661405);
+    Primitive small = mesh(octahedron(dir.path()));
+    small.transforms = {translate(offset)};
+    Primitive huge = mesh(octahedron(dir.path()));
+    huge.transforms = {scale({30000, 30000, 30000}), translate(offset)};
+    s.primitives.push_back(small);
+    s.primitives.push_back(huge);
+    auto prepared = prepare_scene(s).value();
+    const Vec3 corners[] = {{1, 0, 0}, {-1, 0, 0}, {0, 1, 0}, {0, -1, 0}, {0, 0, 1}, {0, 0, -1}};
+    std::mt19937 rng(11);
+    std::uniform_real_distribution<double> tilt(-0.3, 0.3);
+    int away = 0, unblocked = 0, rays = 0;
+    for (const double distance : {500.0, 5000.0}) {
+        for (int k = 0; k < 200; ++k) {
+            for (const Vec3& corner : corners) {
+                const Vec3 out = glm::normalize(corner + Vec3(tilt(rng), tilt(rng), tilt(rng)));
+                const Vec3 target = corner + offset;
+                const Vec3 from = target + distance * out;
+                Hit hit;
+                ++rays;
+                if (!closest_hit(*prepared->geometry, from, target - from, 0.0, hit) ||
+                    !(std::abs(hit.t - 1.0) < 1e-9))
+                    ++away;
+                if (!occluded(*prepared->geometry, from, target - from, 0.0, 1.0 + 1e-6))
+                    ++unblocked;
+            }
+        }
+    }
+    EXPECT_EQ(away, 0) << "of " << rays << " rays met no face at the vertex";
+    EXPECT_EQ(unblocked, 0) << "of " << rays << " shadow rays passed the vertex";
+}
+
 // Rays from inside a tetrahedron's face F, lifted off it as a hit's are,
 // leaving 1e-7 to 3e-6 (barycentric) from its edge with face N and heading
 // out through N near that edge, where they pass in double precision: the
