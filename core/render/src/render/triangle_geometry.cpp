@@ -221,6 +221,7 @@ FarInstance walked_instance(std::uint32_t instance, TriangleModel& model,
     walked.instance = instance;
     walked.exponent = reach_exponent(model);
     walked.corners = scaled_corners(model, walked.exponent);
+    rtcGetSceneBounds(walked.corners, &walked.corners_bounds);
     bound_far_instance(walked, model, transform);
     return walked;
 }

@@ -90,6 +90,7 @@ struct LooseTriangle {
 struct FarInstance {
     std::uint32_t instance = 0;  // index into TriangleGeometry::instances
     RTCScene corners = nullptr;  // owned by the model
+    RTCBounds corners_bounds{};  // of `corners`, once committed
     int exponent = 0;
     // A world-space box around the mesh, padded far beyond rounding: a ray
     // that misses it is not walked.

@@ -235,11 +235,12 @@ bool embree_ray(TriangleQuery& q, RTCRay& ray, bool& walk) {
 
 // The distance along the query's ray of distance `t` along Embree's.
 double query_t(const FarRay& embree, float t) {
-    return std::ldexp(static_cast<double>(t), -embree.exponent) + embree.shift;
+    return times_two_to(static_cast<double>(t), -embree.exponent) + embree.shift;
 }
 
 Vec3 times_power_of_two(const Vec3& v, int exponent) {
-    return Vec3(std::ldexp(v.x, exponent), std::ldexp(v.y, exponent), std::ldexp(v.z, exponent));
+    return Vec3(times_two_to(v.x, exponent), times_two_to(v.y, exponent),
+                times_two_to(v.z, exponent));
 }
 
 // Whether the ray's stretch from t_min to t_max misses the box.
@@ -260,8 +261,9 @@ bool misses_box(const Vec3& lower, const Vec3& upper, const Vec3& origin, const 
     return enter > leave;
 }
 
-// The walk of one mesh beyond Embree's reach: the ray moved into its model's
-// space in double precision, times 2^-exponent, against the model's own BVH.
+// The walk of one mesh on its own (FarInstance), for a ray that may cross its
+// world box: the ray moved into its model's space in double precision, times
+// 2^-exponent, against the model's own BVH.
 // Its direction is scaled to a length near 1 by another power of two (and its
 // distances the other way): Embree's float test multiplies coordinates by the
 // direction, and a shrunk mesh's map lengthens it past what a float holds.
@@ -272,9 +274,8 @@ bool misses_box(const Vec3& lower, const Vec3& upper, const Vec3& origin, const 
 // 1e-5 inside it outside both faces there.
 // The filter decides each hit on the ray as it is. The nearest kept triangle
 // nearer than q.t_max goes to `nearest`; `first` stops at any kept one.
-bool nearest_in_far_instance(TriangleQuery& q, const FarInstance& far, TriangleId& nearest,
-                             bool first) {
-    if (misses_box(far.lower, far.upper, q.origin, q.direction, q.t_min, q.t_max)) return false;
+bool nearest_in_walked_mesh(TriangleQuery& q, const FarInstance& far, TriangleId& nearest,
+                            bool first) {
     const MeshInstance& instance = q.geometry->instances[far.instance];
     const Vec3 origin =
         times_power_of_two(apply_point(instance.to_object, q.origin), -far.exponent);
@@ -285,11 +286,9 @@ bool nearest_in_far_instance(TriangleQuery& q, const FarInstance& far, TriangleI
     const int k = std::ilogb(longest);
     direction = times_power_of_two(direction, -k);
     RTCRayHit rayhit;
-    const double t_min = std::ldexp(q.t_min, k - far.exponent),
-                 t_max = std::ldexp(q.t_max, k - far.exponent);
-    RTCBounds bounds;
-    rtcGetSceneBounds(far.corners, &bounds);
-    const FarRay fit = fit_far_ray(origin, direction, t_min, t_max, bounds);
+    const double t_min = times_two_to(q.t_min, k - far.exponent),
+                 t_max = times_two_to(q.t_max, k - far.exponent);
+    const FarRay fit = fit_far_ray(origin, direction, t_min, t_max, far.corners_bounds);
     if (fit.fit == FarRay::Fit::moved) set_far_ray(rayhit.ray, fit, t_min, t_max);
     if (fit.fit == FarRay::Fit::misses) return false;
     if (fit.fit == FarRay::Fit::out_of_reach) {
@@ -334,8 +333,9 @@ bool nearest_beyond_bvh(TriangleQuery& q, TriangleId& nearest, bool found, bool 
     for (const FarInstance& far : g.far_instances) {
         if (found && first) return true;
         q.t_max = std::min(t_max, best);
+        if (misses_box(far.lower, far.upper, q.origin, q.direction, q.t_min, q.t_max)) continue;
         TriangleId id;
-        if (nearest_in_far_instance(q, far, id, first) &&
+        if (nearest_in_walked_mesh(q, far, id, first) &&
             (first || (exact_point(g, id, q.origin, q.direction, p) && p.t < best))) {
             best = first ? best : p.t;
             nearest = id;
@@ -372,7 +372,7 @@ void boxed_instance_intersect(const RTCIntersectFunctionNArguments* args) {
     q.t_max = std::min({t_max, q.nearest_boxed, query_t(q.embree, RTCRayN_tfar(ray, args->N, 0))});
     TriangleId id;
     const bool found =
-        nearest_in_far_instance(q, q.geometry->boxed_instances[args->primID], id, false);
+        nearest_in_walked_mesh(q, q.geometry->boxed_instances[args->primID], id, false);
     q.t_max = t_max;
     TrianglePoint p;
     if (!found || !exact_point(*q.geometry, id, q.origin, q.direction, p)) return;
@@ -388,7 +388,7 @@ void boxed_instance_occluded(const RTCOccludedFunctionNArguments* args) {
     if (!args->valid[0]) return;
     auto& q = *reinterpret_cast<TriangleQuery*>(args->context);
     TriangleId any;
-    if (nearest_in_far_instance(q, q.geometry->boxed_instances[args->primID], any, true))
+    if (nearest_in_walked_mesh(q, q.geometry->boxed_instances[args->primID], any, true))
         RTCRayN_tfar(args->ray, args->N, 0) = -float_infinity;
 }
 
