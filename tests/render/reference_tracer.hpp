@@ -32,13 +32,14 @@
 //   (unless it is the exact mean of 2^k samples that each clamp to 0 or 1);
 // - two surfaces lie within 1e-8 (relative) of each other along one of its
 //   rays, or a secondary ray meets another surface within 1e-6 (relative) of
-//   its start: coincident or touching surfaces, where the nearest hit or the
-//   shadow is a matter of rounding; two triangles within 1e-6 of each other,
-//   which a renderer may order in single precision (§13.5 allows the core
-//   that; two faces of one ill-conditioned mesh, within 1e-6 of the model's
-//   size in its own space, where §13.5 orders them), and then the primary
-//   ray shaded as a hit on each triangle within 1e-6 of its nearest joins
-//   the variants;
+//   its start (another face of the ill-conditioned mesh it leaves: within
+//   1e-6 of the model's size in its own space, or twice ε): coincident or
+//   touching surfaces, where the nearest hit or the shadow is a matter of
+//   rounding; two triangles within 1e-6 of each other, which a renderer
+//   may order in single precision (§13.5 allows the core that; two faces of
+//   one ill-conditioned mesh, within 1e-6 of the model's size in its own
+//   space, where §13.5 orders them), and then the primary ray shaded as a
+//   hit on each triangle within 1e-6 of its nearest joins the variants;
 // - a point of a light's disk lies within rounding of the horizon of the
 //   surface it lights, or the hit point within rounding of the light's sphere;
 // - its ray passes within 1e-6 (barycentric) of an edge or a corner of a
@@ -692,7 +693,7 @@ class Tracer {
         for (int k = 0; k < static_cast<int>(placed_.size()); ++k) {
             roots(k, o, d, from, [&](const Root& root) {
                 const double t = root.t;
-                if (from.placed >= 0 && t < 1e-6 * magnitude) flags.ambiguous = true;
+                if (near_start(k, t, d, from, magnitude)) flags.ambiguous = true;
                 if (t < best.t) {
                     second = best.t;
                     second_triangle = best.placed >= 0 && is_triangle(best.placed);
@@ -744,6 +745,23 @@ class Tracer {
         }
         const double tie = second_triangle ? kTriangleTie : 1e-8;
         return own || second - best.t <= tie * std::max(best.t, magnitude);
+    }
+
+    // Whether a root at t on placed primitive k, along unit direction d, lies
+    // within rounding of the start of a secondary ray that leaves `from`:
+    // within 1e-6 of the scene's magnitude, where a surface touches the one
+    // it leaves. Another face of the ill-conditioned mesh it leaves is weighed
+    // in the model's own space, where §13.5 walks the ray: within 1e-6 of the
+    // model's size there (across a sliver, a face 1e-7 of the magnitude on
+    // may lie 1e-2 of the model's size on), or within twice ε, near the
+    // cut-off a neighbour face is met beyond.
+    bool near_start(int k, double t, const Vec3& d, const Origin& from, double magnitude) const {
+        if (from.placed < 0) return false;
+        const Placed& q = placed_[k];
+        if (k == from.placed && q.own_extent > 0)
+            return t * max_abs(q.world_to_object.linear * d) <= kTriangleTie * q.own_extent ||
+                   t <= 2 * from.epsilon;
+        return t < 1e-6 * magnitude;
     }
 
     bool q_is_mesh(int k) const { return placed_[k].model != nullptr; }
@@ -817,7 +835,7 @@ class Tracer {
             std::vector<double> crossings;
             roots(k, o, d, from, [&](const Root& root) {
                 const double t = root.t;
-                if (from.placed >= 0 && t < 1e-6 * magnitude) flags.ambiguous = true;
+                if (near_start(k, t, d, from, magnitude)) flags.ambiguous = true;
                 if (std::abs(t - distance) <= 1e-8 * magnitude) flags.ambiguous = true;
                 if (t < distance) crossings.push_back(t);
             });
