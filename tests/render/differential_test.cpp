@@ -403,6 +403,14 @@ TEST(Differential, PinnedSeedsRenderAsTheReferenceSays) {
         // it: 23 (24) pixels flagged, the core's bytes on every one.
         {103914, {.file_materials = true}, "1.2-materials"},
         {104975, {.file_materials = true}, "1.2-materials"},
+        // A glass sphere whose object space puts it 1e7 radii from its origin
+        // (a translate by nearly minus its centre, then scales of ~1e7): a
+        // refracted ray leaving it met it again, its origin rounded in that
+        // space by about the lift.
+        {121667, {}, "1.1", language_1_1},
+        // A smooth mesh's corner normals all in the plane of a face: the side
+        // the blend turns to was the sign of a dot product rounding about 0.
+        {106812, {.sky = true}, "1.2-sky"},
     };
     for (const Pinned& p : pinned) {
         const SeedResult r = check_seed(p.seed, {p.generate, p.features, p.name});

@@ -51,6 +51,10 @@
 // - a shadow ray passes within 1e-6 (barycentric) of an edge of a triangle
 //   before the light: then the ray traced with each such shadow ray turned
 //   just across the first such edge joins the variants.
+// - a smooth normal lies within 1e-9 of its face's plane (a unit normal's dot
+//   product with the unit geometric one), where the side §13.5 turns it to
+//   is a matter of rounding: then the ray traced with each such normal
+//   turned to the other side joins the variants.
 // A light whose diffuse and specular terms at a point are zero, whatever
 // reaches it, casts no shadow ray there, so flags nothing.
 // With several samples a pixel, each sample's variants give it a least and a
@@ -407,6 +411,11 @@ class Tracer {
             turned.turn_grazes = true;
             variant(ray, false, turned);
         }
+        if (flags.in_plane) {
+            Flags turned = plain;
+            turned.turn_in_plane = true;
+            variant(ray, false, turned);
+        }
         for (const auto& [placed, face] : faces_tied(ray.origin, ray.direction)) {
             Flags forced = plain;
             forced.force_placed = placed;
@@ -491,6 +500,10 @@ class Tracer {
         bool grazed = false;
         // Each shadow ray turned just across the first such edge it passes.
         bool turn_grazes = false;
+        // A smooth normal lay within kInPlaneNormal of its face's plane.
+        bool in_plane = false;
+        // Each such normal turned to the other side of the face.
+        bool turn_in_plane = false;
     };
 
     static Rgb8 quantize(const Colour& c) {
@@ -771,6 +784,12 @@ class Tracer {
         return placed_[k].model != nullptr || shape_is<Triangle>(*placed_[k].shape);
     }
 
+    // A unit smooth normal whose dot product with the unit geometric one is
+    // within this of 0 may come out on either side of the face: both are
+    // products of the map's inverse transpose, rounded in double precision,
+    // and an ill-conditioned map scales their rounding by its condition.
+    static constexpr double kInPlaneNormal = 1e-9;
+
     // R.V below minus this is negative under any renderer's rounding.
     static constexpr double kSpecularCutOffMargin = 1e-9;
 
@@ -880,7 +899,16 @@ class Tracer {
             const Vec3 blend = w * corner[0] + root.u * corner[1] + root.v * corner[2];
             if (blend != Vec3(0.0)) {
                 n = glm::normalize(q.normal_matrix * blend);
-                if (glm::dot(n, ng) < 0) n = -n;
+                // A smooth normal in the face's plane (as when the file's
+                // normals at its three corners lie in it): the side it turns
+                // to is the sign of a dot product that rounds about 0.
+                const double side = glm::dot(n, ng);
+                if (std::abs(side) <= kInPlaneNormal) {
+                    flags.ambiguous = true;
+                    flags.in_plane = true;
+                }
+                if (side < 0) n = -n;
+                if (flags.turn_in_plane && std::abs(side) <= kInPlaneNormal) n = -n;
             }
         }
         Colour pigment = m.pigment;
