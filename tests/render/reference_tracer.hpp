@@ -54,7 +54,11 @@
 //   flags nothing when an opaque surface blocks it under any rounding (met
 //   farther than 1e-6 inside its edges, not near the ray's start or end), or
 //   when its light's whole term there, times its branch's weight in the
-//   pixel, summed over such rays, cannot move a byte of the pixel.
+//   pixel, summed over such rays, cannot move a byte of the pixel;
+// - a reflected or refracted ray passes within 1e-6 (barycentric) outside an
+//   edge of a triangle: then the ray traced with every such ray meeting the
+//   triangles it passes that close to joins the variants (a single-precision
+//   test may meet them, and then whatever the rays it starts there meet).
 // A light whose diffuse and specular terms at a point are zero, whatever
 // reaches it, casts no shadow ray there, so flags nothing.
 // With several samples a pixel, each sample's variants give it a least and a
@@ -411,6 +415,11 @@ class Tracer {
             const Vec3 aim = q.object_to_world.linear * inside + q.object_to_world.translation;
             variant({ray.origin, glm::normalize(aim - ray.origin)}, false, plain);
         }
+        {
+            Flags widened = plain;
+            widened.widen_secondary = true;
+            variant(ray, false, widened);
+        }
         if (flags.grazed) {
             Flags turned = plain;
             turned.turn_grazes = true;
@@ -470,6 +479,8 @@ class Tracer {
         // ε of §8.5 at the start: a face of its mesh that shares a corner with
         // the one it leaves is met only farther than this (§13.5).
         double epsilon = 0.0;
+        // How far (barycentric) outside a triangle's edges it still meets it.
+        double edge_slack = 0.0;
     };
 
     // One root: its part, the outward normal in object space (not unit
@@ -500,6 +511,8 @@ class Tracer {
         bool grazed = false;
         // Each shadow ray turned just across the first such edge it passes.
         bool turn_grazes = false;
+        // Reflected and refracted rays meet triangles up to kEdgeGraze outside their edges.
+        bool widen_secondary = false;
         // The last shadow ray passed within kEdgeGraze of an edge, and no
         // opaque surface surely blocks it: whether it reaches its light is a
         // matter of rounding. The light's caller weighs that in graze_bound.
@@ -563,7 +576,8 @@ class Tracer {
             if (det == 0) return;
             const Vec3 s = o - a, q = glm::cross(s, e1);
             const double u = glm::dot(s, p) / det, v = glm::dot(d, q) / det;
-            if (u < 0 || v < 0 || u + v > 1) return;
+            const double slack = from.edge_slack;
+            if (u < -slack || v < -slack || u + v > 1 + slack) return;
             const double t = glm::dot(e2, q) / det;
             if (t > t_floor) offer(t, part, glm::cross(e1, e2), u, v);
         };
@@ -711,8 +725,10 @@ class Tracer {
     }
 
     // The nearest hit; equal distances go to the lower primitive index.
-    Hit nearest(const Vec3& o, const Vec3& d, const Origin& from, double magnitude,
+    Hit nearest(const Vec3& o, const Vec3& d, const Origin& start, double magnitude,
                 Flags& flags) const {
+        Origin from = start;
+        if (flags.widen_secondary && from.placed >= 0) from.edge_slack = kEdgeGraze;
         Hit best;
         double second = INFINITY;
         bool second_triangle = false;  // the second root is a triangle's
