@@ -5,6 +5,7 @@
 #include "jtracer/affine.hpp"
 #include "render/prepared_scene.hpp"
 #include "render/ray_queries.hpp"
+#include "render/trace.hpp"
 #include "scene_builder.hpp"
 
 #include <gtest/gtest.h>
@@ -460,6 +461,49 @@ TEST(RayQueries, ShapesPastEmbreesReachAgreeWithBruteForce) {
     wall.transforms = {translate({0, -1, 0}), scale({1e9, 1e9, 1e9}), scale({1e9, 1e9, 1e9}),
                        scale({10, 1e-18, 10}), rotate(TransformKind::zrotate, 90)};
     expect_bvh_agrees_with_brute_force(600, 10.0, 4000, 1000, {slab, wall});
+}
+
+// A sphere stretched by a map whose object space puts it ~1e7 of its radius
+// from that space's origin (differential seed 121667 of language 1.1: a
+// translate by nearly minus its centre, then scales of ~1e7): a ray leaving
+// its surface from the point lifted by surface_offset (docs/language.md §8.5)
+// must not meet it again. Taken to that space whole, the ray's origin rounds
+// at the size of the centre there, about one lift.
+TEST(RayQueries, ARayLeavingAStretchedSphereFarFromItsOriginMissesIt) {
+    Primitive stretched = sphere({0.06476805540587785, 0.084473805468467181, -0.058113274558300836},
+                                 7.4043913325365748e-09);
+    stretched.transforms = {
+        translate({-0.06476805846916156, -0.084473802875869974, 0.058113274007193294}),
+        scale({407.02525222708795, -665.11645279335278, 436.85098383355569}),
+        scale({167.08437766954484, 167.08437766954484, 167.08437766954484}),
+        scale({127.22874896432829, 101.06857192702297, 135.99943968591234})};
+    Scene scene;
+    scene.primitives.push_back(stretched);
+    auto prepared = prepare_scene(scene).value();
+    const Geometry& g = *prepared->geometry;
+    std::mt19937 rng(5);
+    std::normal_distribution<double> normal;
+    auto random_unit = [&] { return glm::normalize(Vec3(normal(rng), normal(rng), normal(rng))); };
+    const Vec3 middle(-0.026, 0.029, -0.005);
+    int hits = 0, met_again = 0;
+    for (int i = 0; i < 2000; ++i) {
+        // From inside, as a refracted ray leaves it (the lift then crosses).
+        const Vec3 o = middle + 0.01 * random_unit();
+        const Vec3 d = random_unit();
+        Hit hit;
+        if (!closest_hit(g, o, d, 0.0, hit)) continue;
+        ++hits;
+        const Vec3 p = o + hit.t * d;
+        const Vec3 n = glm::normalize(hit.normal);  // outward
+        const Vec3 lifted = p + surface_offset(o, p, hit.t) * n;
+        // Away from the surface, outside: the sphere is convex.
+        Vec3 away = random_unit();
+        if (glm::dot(away, n) < 0.0) away = -away;
+        Hit again;
+        if (closest_hit(g, lifted, away, 0.0, again)) ++met_again;
+    }
+    EXPECT_GT(hits, 1000);
+    EXPECT_EQ(met_again, 0) << "of " << hits;
 }
 
 }  // namespace

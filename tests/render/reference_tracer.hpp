@@ -32,13 +32,14 @@
 //   (unless it is the exact mean of 2^k samples that each clamp to 0 or 1);
 // - two surfaces lie within 1e-8 (relative) of each other along one of its
 //   rays, or a secondary ray meets another surface within 1e-6 (relative) of
-//   its start: coincident or touching surfaces, where the nearest hit or the
-//   shadow is a matter of rounding; two triangles within 1e-6 of each other,
-//   which a renderer may order in single precision (§13.5 allows the core
-//   that; two faces of one ill-conditioned mesh, within 1e-6 of the model's
-//   size in its own space, where §13.5 orders them), and then the primary
-//   ray shaded as a hit on each triangle within 1e-6 of its nearest joins
-//   the variants;
+//   its start (another face of the ill-conditioned mesh it leaves: within
+//   1e-6 of the model's size in its own space, or twice ε): coincident or
+//   touching surfaces, where the nearest hit or the shadow is a matter of
+//   rounding; two triangles within 1e-6 of each other, which a renderer
+//   may order in single precision (§13.5 allows the core that; two faces of
+//   one ill-conditioned mesh, within 1e-6 of the model's size in its own
+//   space, where §13.5 orders them), and then the primary ray shaded as a
+//   hit on each triangle within 1e-6 of its nearest joins the variants;
 // - a point of a light's disk lies within rounding of the horizon of the
 //   surface it lights, or the hit point within rounding of the light's sphere;
 // - its ray passes within 1e-6 (barycentric) of an edge or a corner of a
@@ -49,7 +50,19 @@
 //   a silhouette, perhaps none);
 // - a shadow ray passes within 1e-6 (barycentric) of an edge of a triangle
 //   before the light: then the ray traced with each such shadow ray turned
-//   just across the first such edge joins the variants.
+//   just across the first such edge joins the variants. Such a shadow ray
+//   flags nothing when an opaque surface blocks it under any rounding (met
+//   farther than 1e-6 inside its edges, not near the ray's start or end), or
+//   when its light's whole term there, times its branch's weight in the
+//   pixel, summed over such rays, cannot move a byte of the pixel;
+// - a reflected or refracted ray passes within 1e-6 (barycentric) outside an
+//   edge of a triangle: then the ray traced with every such ray meeting the
+//   triangles it passes that close to joins the variants (a single-precision
+//   test may meet them, and then whatever the rays it starts there meet);
+// - a smooth normal lies within 1e-9 of its face's plane (a unit normal's dot
+//   product with the unit geometric one), where the side §13.5 turns it to
+//   is a matter of rounding: then the ray traced with each such normal
+//   turned to the other side joins the variants.
 // A light whose diffuse and specular terms at a point are zero, whatever
 // reaches it, casts no shadow ray there, so flags nothing.
 // With several samples a pixel, each sample's variants give it a least and a
@@ -302,7 +315,7 @@ class Tracer {
         out.range.resize(static_cast<std::size_t>(w) * h);
         for (int j = 0; j < h; ++j) {
             for (int i = 0; i < w; ++i) {
-                Colour sum(0.0), least(0.0), greatest(0.0), single(0.0);
+                Colour sum(0.0), least(0.0), greatest(0.0), single(0.0), grazes(0.0);
                 bool ambiguous = false;
                 // Per channel: every sample's clamped value is 0 or 1 whatever
                 // the rounding, so that the mean is exact (n a power of two).
@@ -317,13 +330,15 @@ class Tracer {
                     least += s.least;
                     greatest += s.greatest;
                     ambiguous = ambiguous || s.ambiguous;
+                    grazes += s.graze_bound;
                 }
                 const Colour mean = n == 1 ? single : sum / static_cast<double>(n);
                 const Rgb8 centre = quantize(mean);
                 const Rgb8 low = quantize(least / static_cast<double>(n));
                 const Rgb8 high = quantize(greatest / static_cast<double>(n));
                 if (n == 1 || (n & (n - 1)) != 0) exact = {false, false, false};
-                ambiguous = ambiguous || near_rounding_boundary(mean, exact) || !(low == high);
+                ambiguous = ambiguous || near_rounding_boundary(mean, exact) || !(low == high) ||
+                            moves_bytes(mean, grazes / static_cast<double>(n));
                 std::uint8_t* p = out.image.pixel(i, j);
                 p[0] = centre.r;
                 p[1] = centre.g;
@@ -345,6 +360,8 @@ class Tracer {
         Colour colour{0.0};
         Colour least{0.0}, greatest{0.0};
         bool ambiguous = false;
+        // The most its shadow rays that grazed an edge could change it by.
+        Colour graze_bound{0.0};
     };
 
     static Colour clamped(const Colour& c) { return glm::clamp(c, Colour(0.0), Colour(1.0)); }
@@ -365,6 +382,7 @@ class Tracer {
         Sample out;
         out.colour = trace(ray.origin, ray.direction, 0, {}, 0.0, false, flags);
         out.ambiguous = flags.ambiguous;
+        out.graze_bound = flags.graze_bound;
         out.least = out.greatest = clamped(out.colour);
         const Flags plain = [&] {
             Flags p;
@@ -401,9 +419,19 @@ class Tracer {
             const Vec3 aim = q.object_to_world.linear * inside + q.object_to_world.translation;
             variant({ray.origin, glm::normalize(aim - ray.origin)}, false, plain);
         }
+        {
+            Flags widened = plain;
+            widened.widen_secondary = true;
+            variant(ray, false, widened);
+        }
         if (flags.grazed) {
             Flags turned = plain;
             turned.turn_grazes = true;
+            variant(ray, false, turned);
+        }
+        if (flags.in_plane) {
+            Flags turned = plain;
+            turned.turn_in_plane = true;
             variant(ray, false, turned);
         }
         for (const auto& [placed, face] : faces_tied(ray.origin, ray.direction)) {
@@ -460,6 +488,8 @@ class Tracer {
         // ε of §8.5 at the start: a face of its mesh that shares a corner with
         // the one it leaves is met only farther than this (§13.5).
         double epsilon = 0.0;
+        // How far (barycentric) outside a triangle's edges it still meets it.
+        double edge_slack = 0.0;
     };
 
     // One root: its part, the outward normal in object space (not unit
@@ -490,6 +520,20 @@ class Tracer {
         bool grazed = false;
         // Each shadow ray turned just across the first such edge it passes.
         bool turn_grazes = false;
+        // A smooth normal lay within kInPlaneNormal of its face's plane.
+        bool in_plane = false;
+        // Each such normal turned to the other side of the face.
+        bool turn_in_plane = false;
+        // Reflected and refracted rays meet triangles up to kEdgeGraze outside their edges.
+        bool widen_secondary = false;
+        // The last shadow ray passed within kEdgeGraze of an edge, and no
+        // opaque surface surely blocks it: whether it reaches its light is a
+        // matter of rounding. The light's caller weighs that in graze_bound.
+        bool edge_grazed = false;
+        // Per channel, the sum over such shadow rays of their light's term
+        // (with all of it reaching) times their branch's weight in the
+        // sample: the most whatever they meet can change its colour by.
+        Colour graze_bound{0.0};
     };
 
     static Rgb8 quantize(const Colour& c) {
@@ -515,6 +559,15 @@ class Tracer {
         return false;
     }
 
+    // Whether a change of up to `bound` in any channel of colour c (each
+    // sample's share of the pixel's mean: clamping cannot widen it) can move
+    // a byte, or the change lies within rounding of a boundary.
+    static bool moves_bytes(const Colour& c, const Colour& bound) {
+        if (bound == Colour(0.0)) return false;
+        const Colour margin = bound * (1 + 1e-6) + Colour(1e-6 / 255);
+        return !(quantize(c - margin) == quantize(c + margin));
+    }
+
     // Every root t > 0 of the ray with primitive q, except the ray's own start.
     template <class Visit>
     void roots(int which, const Vec3& world_origin, const Vec3& world_direction, const Origin& from,
@@ -536,7 +589,8 @@ class Tracer {
             if (det == 0) return;
             const Vec3 s = o - a, q = glm::cross(s, e1);
             const double u = glm::dot(s, p) / det, v = glm::dot(d, q) / det;
-            if (u < 0 || v < 0 || u + v > 1) return;
+            const double slack = from.edge_slack;
+            if (u < -slack || v < -slack || u + v > 1 + slack) return;
             const double t = glm::dot(e2, q) / det;
             if (t > t_floor) offer(t, part, glm::cross(e1, e2), u, v);
         };
@@ -684,15 +738,17 @@ class Tracer {
     }
 
     // The nearest hit; equal distances go to the lower primitive index.
-    Hit nearest(const Vec3& o, const Vec3& d, const Origin& from, double magnitude,
+    Hit nearest(const Vec3& o, const Vec3& d, const Origin& start, double magnitude,
                 Flags& flags) const {
+        Origin from = start;
+        if (flags.widen_secondary && from.placed >= 0) from.edge_slack = kEdgeGraze;
         Hit best;
         double second = INFINITY;
         bool second_triangle = false;  // the second root is a triangle's
         for (int k = 0; k < static_cast<int>(placed_.size()); ++k) {
             roots(k, o, d, from, [&](const Root& root) {
                 const double t = root.t;
-                if (from.placed >= 0 && t < 1e-6 * magnitude) flags.ambiguous = true;
+                if (near_start(k, t, d, from, magnitude)) flags.ambiguous = true;
                 if (t < best.t) {
                     second = best.t;
                     second_triangle = best.placed >= 0 && is_triangle(best.placed);
@@ -746,12 +802,35 @@ class Tracer {
         return own || second - best.t <= tie * std::max(best.t, magnitude);
     }
 
+    // Whether a root at t on placed primitive k, along unit direction d, lies
+    // within rounding of the start of a secondary ray that leaves `from`:
+    // within 1e-6 of the scene's magnitude, where a surface touches the one
+    // it leaves. Another face of the ill-conditioned mesh it leaves is weighed
+    // in the model's own space, where §13.5 walks the ray: within 1e-6 of the
+    // model's size there (across a sliver, a face 1e-7 of the magnitude on
+    // may lie 1e-2 of the model's size on), or within twice ε, near the
+    // cut-off a neighbour face is met beyond.
+    bool near_start(int k, double t, const Vec3& d, const Origin& from, double magnitude) const {
+        if (from.placed < 0) return false;
+        const Placed& q = placed_[k];
+        if (k == from.placed && q.own_extent > 0)
+            return t * max_abs(q.world_to_object.linear * d) <= kTriangleTie * q.own_extent ||
+                   t <= 2 * from.epsilon;
+        return t < 1e-6 * magnitude;
+    }
+
     bool q_is_mesh(int k) const { return placed_[k].model != nullptr; }
 
     // A triangle or a mesh: its hits are found in single precision.
     bool is_triangle(int k) const {
         return placed_[k].model != nullptr || shape_is<Triangle>(*placed_[k].shape);
     }
+
+    // A unit smooth normal whose dot product with the unit geometric one is
+    // within this of 0 may come out on either side of the face: both are
+    // products of the map's inverse transpose, rounded in double precision,
+    // and an ill-conditioned map scales their rounding by its condition.
+    static constexpr double kInPlaneNormal = 1e-9;
 
     // R.V below minus this is negative under any renderer's rounding.
     static constexpr double kSpecularCutOffMargin = 1e-9;
@@ -785,7 +864,7 @@ class Tracer {
                     continue;
                 const double least = std::min({r.u, r.v, 1 - r.u - r.v});
                 if (std::abs(least) > kEdgeGraze) continue;
-                flags.ambiguous = true;
+                flags.edge_grazed = true;
                 flags.grazed = true;
                 if (!flags.turn_grazes) continue;
                 const std::array<Vec3, 3> v = face_corners(q, f);
@@ -802,9 +881,13 @@ class Tracer {
     // The fraction of a light that reaches across `distance`: 0 when an opaque
     // surface is in the way; with transmissive surfaces in the scene, the
     // product of the transmission of every crossing (one a distance on a mesh,
-    // where two faces share an edge) (§13.2).
+    // where two faces share an edge) (§13.2). Sets flags.edge_grazed when the
+    // ray passes within rounding of an edge and no opaque surface blocks it
+    // whatever rounding does: one met well inside its edges, not near the
+    // ray's start or end. Behind such a surface an edge grazed cannot matter.
     double light_through(const Vec3& o, const Vec3& d, double distance, const Origin& from,
                          double magnitude, Flags& flags) const {
+        flags.edge_grazed = false;
         if (const std::optional<Vec3> turned = graze(o, d, distance, from, magnitude, flags)) {
             Flags once = flags;
             once.turn_grazes = false;
@@ -813,13 +896,20 @@ class Tracer {
             return through;
         }
         double through = 1.0;
+        bool blocked = false;  // by an opaque surface, under any rounding
         for (int k = 0; k < static_cast<int>(placed_.size()); ++k) {
             std::vector<double> crossings;
+            const bool opaque = !transmissive_ || placed_[k].material->finish->transmission == 0;
             roots(k, o, d, from, [&](const Root& root) {
                 const double t = root.t;
-                if (from.placed >= 0 && t < 1e-6 * magnitude) flags.ambiguous = true;
-                if (std::abs(t - distance) <= 1e-8 * magnitude) flags.ambiguous = true;
+                const bool near = near_start(k, t, d, from, magnitude) ||
+                                  std::abs(t - distance) <= 1e-8 * magnitude;
+                if (near) flags.ambiguous = true;
                 if (t < distance) crossings.push_back(t);
+                if (opaque && t < distance && !near &&
+                    (!is_triangle(k) ||
+                     std::min({root.u, root.v, 1 - root.u - root.v}) > kEdgeGraze))
+                    blocked = true;
             });
             std::sort(crossings.begin(), crossings.end());
             for (std::size_t c = 0; c < crossings.size(); ++c) {
@@ -829,6 +919,7 @@ class Tracer {
                 through *= transmissive_ ? placed_[k].material->finish->transmission : 0.0;
             }
         }
+        if (blocked) flags.edge_grazed = false;
         return through;
     }
 
@@ -862,7 +953,16 @@ class Tracer {
             const Vec3 blend = w * corner[0] + root.u * corner[1] + root.v * corner[2];
             if (blend != Vec3(0.0)) {
                 n = glm::normalize(q.normal_matrix * blend);
-                if (glm::dot(n, ng) < 0) n = -n;
+                // A smooth normal in the face's plane (as when the file's
+                // normals at its three corners lie in it): the side it turns
+                // to is the sign of a dot product that rounds about 0.
+                const double side = glm::dot(n, ng);
+                if (std::abs(side) <= kInPlaneNormal) {
+                    flags.ambiguous = true;
+                    flags.in_plane = true;
+                }
+                if (side < 0) n = -n;
+                if (flags.turn_in_plane && std::abs(side) <= kInPlaneNormal) n = -n;
             }
         }
         Colour pigment = m.pigment;
@@ -882,7 +982,8 @@ class Tracer {
         Colour c = scene_.settings.ambient_light * m.finish->ambient * pigment;
         for (const PointLight& light : scene_.lights) {
             if (light.radius > 0) {
-                c += disk_light(light, p, n, ng, v, m, pigment, start, here, scale, lifted, flags);
+                c += disk_light(light, p, n, ng, v, m, pigment, start, here, scale, lifted, flags,
+                                weight);
                 continue;
             }
             const Vec3 l = glm::normalize(light.position - p);
@@ -903,6 +1004,9 @@ class Tracer {
             const double distance = glm::length(to_light);
             const double through =
                 light_through(start, to_light / distance, distance, here, scale, flags);
+            if (flags.edge_grazed)
+                flags.graze_bound +=
+                    weight * light_term(light.intensity, m, pigment, n_dot_l, r_dot_v);
             if (!(through > 0)) continue;
             const Colour intensity = light.intensity * through;
             c += intensity * m.finish->diffuse * pigment *
@@ -934,13 +1038,25 @@ class Tracer {
         return c;
     }
 
+    // The diffuse and specular terms of a light of `intensity` that all reaches
+    // a point, as trace() adds them.
+    static Colour light_term(const Colour& intensity, const Material& m, const Colour& pigment,
+                             double n_dot_l, double r_dot_v) {
+        Colour c =
+            intensity * m.finish->diffuse * pigment * std::pow(n_dot_l, 1 / m.finish->diffuse_k);
+        if (r_dot_v > 0)
+            c += intensity * m.finish->specular * std::pow(r_dot_v, m.finish->specular_k);
+        return c;
+    }
+
     // SEMANTICS.md §9.1: the diffuse and specular terms of a light of radius
     // r > 0 at hit point p, its intensity scaled by the share of the points of
     // its disk that p sees. `start`: where the point light's shadow ray would
     // start (p, or p lifted along ng).
     Colour disk_light(const PointLight& light, const Vec3& p, const Vec3& n, const Vec3& ng,
                       const Vec3& v, const Material& m, const Colour& pigment, const Vec3& start,
-                      const Origin& here, double scale, bool lifted, Flags& flags) const {
+                      const Origin& here, double scale, bool lifted, Flags& flags,
+                      double weight) const {
         const Vec3 to = light.position - p;
         const double dist = std::sqrt(to.x * to.x + to.y * to.y + to.z * to.z);
         if (std::abs(dist - light.radius) <= 1e-9 * std::max(dist, scale)) flags.ambiguous = true;
@@ -948,10 +1064,15 @@ class Tracer {
         const Vec3 l = dist <= light.radius ? glm::normalize(to) : to / dist;
         const double n_dot_l = glm::dot(n, l);
         if (n_dot_l <= 0) return Colour(0.0);
+        // All of the light's term: what one shadow ray grazing an edge (of
+        // `count`) may change by its share.
+        const Colour full =
+            light_term(light.intensity, m, pigment, n_dot_l, glm::dot(2 * n_dot_l * n - l, v));
         if (dist <= light.radius) {  // inside the light's sphere: a point light
             const Vec3 to_light = light.position - start;
             const double distance = glm::length(to_light);
             vis = light_through(start, to_light / distance, distance, here, scale, flags);
+            if (flags.edge_grazed) flags.graze_bound += weight * full;
         } else {
             Vec3 e1 = glm::cross(l, Vec3(0, 1, 0));
             if (e1.x == 0 && e1.y == 0 && e1.z == 0) e1 = glm::cross(l, Vec3(1, 0, 0));
@@ -974,6 +1095,8 @@ class Tracer {
                 const Vec3 to_point = q - from;
                 const double distance = glm::length(to_point);
                 sum += light_through(from, to_point / distance, distance, here, scale, flags);
+                if (flags.edge_grazed)
+                    flags.graze_bound += weight * full / static_cast<double>(count);
             }
             vis = sum / count;
         }

@@ -279,38 +279,71 @@ TEST(Triangles, RaysThroughSharedEdgesAndVerticesNeverMiss) {
     EXPECT_EQ(misses, 0) << "of " << rays;
 }
 
-// Rays from 500 and 5000 model sizes away, aimed exactly at a vertex of a
-// placed octahedron from within its cone of solid: each meets a face around
-// the vertex, at the vertex, never the face it leaves by (t about 1 + 2 / D).
+// The offset of the octahedron the vertex tests aim at: no round numbers.
+const Vec3 kVertexTestOffset(-36.563575588759875, 34.74337369372327, 26.377461897661405);
+
+struct VertexRays {
+    int rays = 0;
+    int away = 0;       // met nothing, or not at the vertex
+    int unblocked = 0;  // shadow rays to just past the vertex that nothing blocked
+};
+
+// Rays from 500 and 5000 model sizes away, aimed exactly at each vertex of
+// the octahedron placed at kVertexTestOffset, from within its cone of solid.
+VertexRays rays_at_vertices(const Geometry& geometry) {
+    const Vec3 corners[] = {{1, 0, 0}, {-1, 0, 0}, {0, 1, 0}, {0, -1, 0}, {0, 0, 1}, {0, 0, -1}};
+    std::mt19937 rng(11);
+    std::uniform_real_distribution<double> tilt(-0.3, 0.3);
+    VertexRays counts;
+    for (const double distance : {500.0, 5000.0}) {
+        for (int k = 0; k < 200; ++k) {
+            for (const Vec3& corner : corners) {
+                const Vec3 out = glm::normalize(corner + Vec3(tilt(rng), tilt(rng), tilt(rng)));
+                const Vec3 target = corner + kVertexTestOffset;
+                const Vec3 from = target + distance * out;
+                Hit hit;
+                ++counts.rays;
+                if (!closest_hit(geometry, from, target - from, 0.0, hit) ||
+                    !(std::abs(hit.t - 1.0) < 1e-9))
+                    ++counts.away;
+                if (!occluded(geometry, from, target - from, 0.0, 1.0 + 1e-6)) ++counts.unblocked;
+            }
+        }
+    }
+    return counts;
+}
+
+// Each ray meets a face around the vertex, at the vertex, never the face it
+// leaves by (t about 1 + 2 / D), and a shadow ray to just past it is blocked.
 // A float ray started that far off rounds the edge values at the vertex at its
 // own distance, and all four could come out on one side.
 TEST(Triangles, ARayFromFarOffThroughAVertexMeetsAFaceAroundIt) {
     ScratchDir dir;
     Scene s = scene_with_camera(camera_at({0, 0, 0}, {0, 0, -1}));
     Primitive placed = mesh(octahedron(dir.path()));
-    const Vec3 offset(-36.563575588759875, 34.74337369372327, 26.377461897661405);
-    placed.transforms = {translate(offset)};
+    placed.transforms = {translate(kVertexTestOffset)};
     s.primitives.push_back(placed);
-    auto prepared = prepare_scene(s).value();
-    const Vec3 corners[] = {{1, 0, 0}, {-1, 0, 0}, {0, 1, 0}, {0, -1, 0}, {0, 0, 1}, {0, 0, -1}};
-    std::mt19937 rng(11);
-    std::uniform_real_distribution<double> tilt(-0.3, 0.3);
-    int away = 0, rays = 0;
-    for (const double distance : {500.0, 5000.0}) {
-        for (int k = 0; k < 200; ++k) {
-            for (const Vec3& corner : corners) {
-                const Vec3 out = glm::normalize(corner + Vec3(tilt(rng), tilt(rng), tilt(rng)));
-                const Vec3 target = corner + offset;
-                const Vec3 from = target + distance * out;
-                Hit hit;
-                ++rays;
-                if (!closest_hit(*prepared->geometry, from, target - from, 0.0, hit) ||
-                    !(std::abs(hit.t - 1.0) < 1e-9))
-                    ++away;
-            }
-        }
-    }
-    EXPECT_EQ(away, 0) << "of " << rays << " rays met no face at the vertex";
+    const VertexRays counts = rays_at_vertices(*prepare_scene(s).value()->geometry);
+    EXPECT_EQ(counts.away, 0) << "of " << counts.rays << " rays met no face at the vertex";
+    EXPECT_EQ(counts.unblocked, 0) << "of " << counts.rays << " shadow rays passed the vertex";
+}
+
+// The same rays, from inside the box of all the triangles: a second, huge
+// octahedron around the first puts every start inside its box (and inside
+// it), so no move to where the ray enters the triangles' box comes near the
+// small mesh.
+TEST(Triangles, ARayFromInsideTheTrianglesBoxThroughAVertexMeetsAFaceAroundIt) {
+    ScratchDir dir;
+    Scene s = scene_with_camera(camera_at({0, 0, 0}, {0, 0, -1}));
+    Primitive small = mesh(octahedron(dir.path()));
+    small.transforms = {translate(kVertexTestOffset)};
+    Primitive huge = mesh(octahedron(dir.path()));
+    huge.transforms = {scale({30000, 30000, 30000}), translate(kVertexTestOffset)};
+    s.primitives.push_back(small);
+    s.primitives.push_back(huge);
+    const VertexRays counts = rays_at_vertices(*prepare_scene(s).value()->geometry);
+    EXPECT_EQ(counts.away, 0) << "of " << counts.rays << " rays met no face at the vertex";
+    EXPECT_EQ(counts.unblocked, 0) << "of " << counts.rays << " shadow rays passed the vertex";
 }
 
 // Rays from inside a tetrahedron's face F, lifted off it as a hit's are,

@@ -16,10 +16,22 @@
 #include <embree3/rtcore.h>
 
 #include <algorithm>
+#include <bit>
 #include <cmath>
+#include <cstdint>
 #include <limits>
 
 namespace jt {
+
+// x * 2^e, exactly as std::ldexp gives it, without a call into libm (hot in
+// the walks of meshes): a product with a power of two that is a normal double
+// is exact, or rounds once as ldexp's result does.
+inline double times_two_to(double x, int e) {
+    if (e == 0) return x;
+    if (e >= -1022 && e <= 1023)
+        return x * std::bit_cast<double>(static_cast<std::uint64_t>(1023 + e) << 52);
+    return std::ldexp(x, e);
+}
 
 // Below FLT_LARGE by more than float rounding of any coordinate.
 inline constexpr double embree_reach = 1e18;
@@ -60,7 +72,7 @@ inline float far_t_up(const FarRay& far, double t) {
     if (!(std::abs(t) < std::numeric_limits<double>::max())) return float_infinity;
     const double slack =
         4.0 * (std::nextafter(std::abs(t), std::numeric_limits<double>::infinity()) - std::abs(t));
-    return float_up(std::ldexp(t - far.shift + slack, far.exponent));
+    return float_up(times_two_to(t - far.shift + slack, far.exponent));
 }
 
 // The ray from `origin` along `direction` between t_min and t_max, fitted to
@@ -109,15 +121,15 @@ inline FarRay fit_far_ray(const Vec3& origin, const Vec3& direction, double t_mi
         std::max({std::abs(direction.x), std::abs(direction.y), std::abs(direction.z)});
     far.exponent = longest > embree_reach ? std::ilogb(longest) + 1 : 0;
     far.direction =
-        Vec3(std::ldexp(direction.x, -far.exponent), std::ldexp(direction.y, -far.exponent),
-             std::ldexp(direction.z, -far.exponent));
+        Vec3(times_two_to(direction.x, -far.exponent), times_two_to(direction.y, -far.exponent),
+             times_two_to(direction.z, -far.exponent));
     if (!within_reach(far.origin)) far.fit = FarRay::Fit::out_of_reach;
     return far;
 }
 
 inline void set_far_ray(RTCRay& ray, const FarRay& far, double t_min, double t_max) {
     set_float_ray(ray, far.origin, far.direction, 0.0, 0.0);
-    ray.tnear = float_down(std::ldexp(t_min - far.shift, far.exponent));
+    ray.tnear = float_down(times_two_to(t_min - far.shift, far.exponent));
     ray.tfar = far_t_up(far, t_max);
 }
 

@@ -114,10 +114,19 @@ void add_sphere(Geometry& g, const Sphere& sphere, const ObjectTransform* transf
             {apply_point(transform->to_world, sphere.center), sphere.radius * *scale, source});
         return;
     }
+    // Its rays are taken to its object space moved to its centre, with the
+    // centre folded into the map's translation once: the ray's origin there
+    // is then of the sphere's own size and rounds at it. Taken to the object
+    // space as written, it rounds at the size of the centre there, which a
+    // map may make 1e7 radii or more (a translate by nearly minus the centre,
+    // then a large scale): about the lift of §8.5, so that a ray leaving the
+    // sphere met it again. The fold's own rounding moves the sphere once, for
+    // every ray alike.
     TransformedShape s;
     s.to_object = transform->to_object;
+    s.to_object.translation -= sphere.center;
     s.normal_matrix = transform->normal_matrix;
-    s.center = sphere.center;
+    s.center = Vec3(0.0);
     s.radius = sphere.radius;
     s.kind = TransformedShape::Kind::sphere;
     s.source = source;

@@ -34,6 +34,8 @@ struct WorldSphere {
 // cylinder: radius and height) and seen through a non-trivial transform.
 struct TransformedShape {
     enum class Kind : std::uint8_t { sphere, cylinder };
+    // A sphere's maps to its object space moved to its centre (add_sphere
+    // says why), where its centre is the origin.
     Affine to_object;
     glm::dmat3 normal_matrix{1.0};  // inverse transpose of the object-to-world map
     Vec3 center{0.0};

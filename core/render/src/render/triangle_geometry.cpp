@@ -1,10 +1,12 @@
 #include "render/triangle_geometry.hpp"
 
+#include "geometry/bounds.hpp"
 #include "jtracer/model_cache.hpp"
 #include "jtracer/texture.hpp"
 #include "render/embree_device.hpp"
 #include "render/far_ray.hpp"
 #include "render/triangle_queries.hpp"
+#include "render/user_geometry.hpp"
 
 #include <glm/geometric.hpp>
 
@@ -12,6 +14,7 @@
 #include <cmath>
 #include <map>
 #include <string>
+#include <vector>
 
 namespace jt {
 
@@ -211,6 +214,47 @@ void attach_instance(RTCScene top, TriangleModel& model, const ObjectTransform& 
     rtcReleaseGeometry(g);
 }
 
+// A mesh walked on its own (FarInstance), with the model's corners it walks.
+FarInstance walked_instance(std::uint32_t instance, TriangleModel& model,
+                            const ObjectTransform& transform) {
+    FarInstance walked;
+    walked.instance = instance;
+    walked.exponent = reach_exponent(model);
+    walked.corners = scaled_corners(model, walked.exponent);
+    rtcGetSceneBounds(walked.corners, &walked.corners_bounds);
+    bound_far_instance(walked, model, transform);
+    return walked;
+}
+
+// Attaches every instance to t.scene, in order, so that its geometry id is
+// its index; the ones walked on their own (far or boxed) disabled.
+void attach_instances(TriangleGeometry& t, const std::vector<ObjectTransform>& transforms) {
+    std::vector<bool> far(t.instances.size());
+    std::size_t shared_bvh = 0;
+    for (std::size_t k = 0; k < t.instances.size(); ++k) {
+        const TriangleModel& model = *t.models[t.instances[k].model];
+        far[k] = beyond_reach(model, transforms[k], shrink_exponent(transforms[k])) ||
+                 ill_conditioned(transforms[k]);
+        shared_bvh += far[k] ? 0 : 1;
+    }
+    const bool boxed = shared_bvh > 1 || (shared_bvh == 1 && !t.loose.empty());
+    for (std::size_t k = 0; k < t.instances.size(); ++k) {
+        TriangleModel& model = *t.models[t.instances[k].model];
+        attach_instance(t.scene, model, transforms[k], !far[k] && !boxed);
+        if (!far[k] && !boxed) continue;
+        const FarInstance walked =
+            walked_instance(static_cast<std::uint32_t>(k), model, transforms[k]);
+        (far[k] ? t.far_instances : t.boxed_instances).push_back(walked);
+    }
+}
+
+// The world box of boxed instance `primID` (TriangleGeometry::boxed_instances).
+void boxed_instance_bounds(const RTCBoundsFunctionArguments* args) {
+    const auto& t = *static_cast<const TriangleGeometry*>(args->geometryUserPtr);
+    const FarInstance& mesh = t.boxed_instances[args->primID];
+    *args->bounds_o = padded_float_bounds(Box{mesh.lower, mesh.upper}, 0.0);
+}
+
 void attach_loose(TriangleGeometry& t) {
     RTCGeometry g = new_triangle_geometry(3 * t.loose.size(), t.loose.size());
     auto* v = static_cast<float*>(rtcGetGeometryBufferData(g, RTC_BUFFER_TYPE_VERTEX, 0));
@@ -256,6 +300,7 @@ Expected<std::unique_ptr<TriangleGeometry>> build_triangle_geometry(const Scene&
     std::unique_ptr<TriangleGeometry> t;
     // A file read with its materials is another model than the file without.
     std::map<std::pair<std::string, bool>, std::uint32_t> model_of_file;
+    std::vector<ObjectTransform> transforms;  // of each instance
     for (std::size_t i = 0; i < scene.primitives.size(); ++i) {
         const Primitive& p = scene.primitives[i];
         const auto* triangle = shape_if<Triangle>(&p.shape);
@@ -314,22 +359,16 @@ Expected<std::unique_ptr<TriangleGeometry>> build_triangle_geometry(const Scene&
         instance.file_materials = file_materials;
         t->file_materials = t->file_materials || file_materials;
         instance.source = source;
-        TriangleModel& model = *t->models[known->second];
-        const bool far = beyond_reach(model, transform, shrink_exponent(transform)) ||
-                         ill_conditioned(transform);
-        attach_instance(t->scene, model, transform, !far);
-        if (far) {
-            FarInstance walked;
-            walked.instance = static_cast<std::uint32_t>(t->instances.size());
-            walked.exponent = reach_exponent(model);
-            walked.corners = scaled_corners(model, walked.exponent);
-            bound_far_instance(walked, model, transform);
-            t->far_instances.push_back(walked);
-        }
         t->instances.push_back(instance);
+        transforms.push_back(transform);
     }
     if (!t) return std::unique_ptr<TriangleGeometry>();
+    attach_instances(*t, transforms);
     if (!t->loose.empty()) attach_loose(*t);
+    if (!t->boxed_instances.empty())
+        t->boxed_geometry_id = attach_user_geometry(
+            t->scene, t.get(), t->boxed_instances.size(), RTC_BUILD_QUALITY_MEDIUM,
+            boxed_instance_bounds, boxed_instance_intersect, boxed_instance_occluded);
     rtcCommitScene(t->scene);
     rtcGetSceneBounds(t->scene, &t->bounds);
     return t;

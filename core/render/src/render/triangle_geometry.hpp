@@ -78,16 +78,19 @@ struct LooseTriangle {
     bool mirrored = false;
 };
 
-// A mesh walked on its own: one whose triangles reach past what Embree's BVH
-// holds (1.8e18, see render/far_ray.hpp), in the world or in its file, which
-// Embree's top BVH leaves out without a word, or one whose map is so
+// A mesh walked on its own: each ray is moved into the model's space in
+// double precision, times 2^-exponent, to where it enters the model's box,
+// and walks `corners` (its model's corners times 2^-exponent) on its own.
+// Far instances are those whose triangles reach past what Embree's BVH holds
+// (1.8e18, see render/far_ray.hpp), in the world or in its file, which
+// Embree's top BVH leaves out without a word, or whose map is so
 // ill-conditioned that Embree's float move into its space misses faces
-// (triangle_geometry.cpp). Each ray is moved into the model's space in double
-// precision, times 2^-exponent, and walks `corners` (its model's corners
-// times 2^-exponent) on its own.
+// (triangle_geometry.cpp); boxed instances are all the others, in a scene
+// with more than one mesh, or a mesh and triangle blocks.
 struct FarInstance {
     std::uint32_t instance = 0;  // index into TriangleGeometry::instances
     RTCScene corners = nullptr;  // owned by the model
+    RTCBounds corners_bounds{};  // of `corners`, once committed
     int exponent = 0;
     // A world-space box around the mesh, padded far beyond rounding: a ray
     // that misses it is not walked.
@@ -99,6 +102,16 @@ struct TriangleGeometry {
     std::vector<std::unique_ptr<TriangleModel>> models;
     std::vector<MeshInstance> instances;  // index = instance geometry id in `scene`
     std::vector<FarInstance> far_instances;
+    // Embree's float test rounds its edge values at the size of the ray's
+    // start in the mesh's space: from hundreds of model sizes away, a ray
+    // exactly through a vertex came out on one side of every edge there and
+    // met none of the faces around it. A ray from outside the box of all the
+    // triangles starts where it enters that box, which is the mesh's own
+    // when it is the only one; with more, the meshes are found by their
+    // world boxes (one user geometry, `boxed_geometry_id`) and each ray
+    // walks each mesh it may meet from where it enters that mesh's box.
+    std::vector<FarInstance> boxed_instances;
+    unsigned boxed_geometry_id = RTC_INVALID_GEOMETRY_ID;
     std::vector<LooseTriangle> loose;
     // Loose triangles with a corner past Embree's reach (indices into
     // `loose`): its BVH leaves them out, so each query tests them exactly.

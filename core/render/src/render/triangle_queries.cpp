@@ -28,6 +28,11 @@ struct TriangleQuery {
     // The instance whose corners Embree walks on their own (a FarInstance):
     // its hits name no instance.
     std::uint32_t far_instance = TriangleId::no_instance;
+    // How the ray Embree walks in the scene of all the triangles maps to
+    // this one (embree_ray), and the exact distance of the nearest boxed
+    // instance's hit found so far.
+    FarRay embree;
+    double nearest_boxed = no_hit;
 };
 
 Vec3 corner(const Model& m, std::uint32_t triangle, int k) {
@@ -201,13 +206,14 @@ bool nearest_by_testing_all(const TriangleQuery& q, TriangleId& nearest, bool fi
 // the size of the ray's start, and a ray from hundreds of model sizes away
 // through a mesh's vertex came out on one side of all four edges there and
 // met none of the faces around it (language.md §13.5 says it meets one).
-bool embree_ray(const TriangleQuery& q, RTCRay& ray, bool& walk) {
+bool embree_ray(TriangleQuery& q, RTCRay& ray, bool& walk) {
     walk = false;
+    q.embree = FarRay{};
+    q.embree.fit = FarRay::Fit::as_is;
     if (!embree_takes(q.origin, q.direction)) {
-        const FarRay far =
-            fit_embree_ray(q.geometry->scene, q.origin, q.direction, q.t_min, q.t_max, ray);
-        walk = far.fit == FarRay::Fit::out_of_reach;
-        return far.fit == FarRay::Fit::moved;
+        q.embree = fit_embree_ray(q.geometry->scene, q.origin, q.direction, q.t_min, q.t_max, ray);
+        walk = q.embree.fit == FarRay::Fit::out_of_reach;
+        return q.embree.fit == FarRay::Fit::moved;
     }
     set_float_ray(ray, q.origin, q.direction, q.t_min, q.t_max);
     // fit_far_ray looks ahead of the start only; inside the box the rounding
@@ -220,13 +226,21 @@ bool embree_ray(const TriangleQuery& q, RTCRay& ray, bool& walk) {
     const FarRay near = fit_far_ray(q.origin, q.direction, q.t_min, q.t_max, q.geometry->bounds);
     if (near.fit == FarRay::Fit::misses) return false;
     // The direction is within Embree's reach, so it keeps its length (exponent 0).
-    if (near.fit == FarRay::Fit::moved && near.shift > q.t_min)
+    if (near.fit == FarRay::Fit::moved && near.shift > q.t_min) {
         set_far_ray(ray, near, q.t_min, q.t_max);
+        q.embree = near;
+    }
     return true;
 }
 
+// The distance along the query's ray of distance `t` along Embree's.
+double query_t(const FarRay& embree, float t) {
+    return times_two_to(static_cast<double>(t), -embree.exponent) + embree.shift;
+}
+
 Vec3 times_power_of_two(const Vec3& v, int exponent) {
-    return Vec3(std::ldexp(v.x, exponent), std::ldexp(v.y, exponent), std::ldexp(v.z, exponent));
+    return Vec3(times_two_to(v.x, exponent), times_two_to(v.y, exponent),
+                times_two_to(v.z, exponent));
 }
 
 // Whether the ray's stretch from t_min to t_max misses the box.
@@ -247,8 +261,9 @@ bool misses_box(const Vec3& lower, const Vec3& upper, const Vec3& origin, const 
     return enter > leave;
 }
 
-// The walk of one mesh beyond Embree's reach: the ray moved into its model's
-// space in double precision, times 2^-exponent, against the model's own BVH.
+// The walk of one mesh on its own (FarInstance), for a ray that may cross its
+// world box: the ray moved into its model's space in double precision, times
+// 2^-exponent, against the model's own BVH.
 // Its direction is scaled to a length near 1 by another power of two (and its
 // distances the other way): Embree's float test multiplies coordinates by the
 // direction, and a shrunk mesh's map lengthens it past what a float holds.
@@ -259,9 +274,8 @@ bool misses_box(const Vec3& lower, const Vec3& upper, const Vec3& origin, const 
 // 1e-5 inside it outside both faces there.
 // The filter decides each hit on the ray as it is. The nearest kept triangle
 // nearer than q.t_max goes to `nearest`; `first` stops at any kept one.
-bool nearest_in_far_instance(TriangleQuery& q, const FarInstance& far, TriangleId& nearest,
-                             bool first) {
-    if (misses_box(far.lower, far.upper, q.origin, q.direction, q.t_min, q.t_max)) return false;
+bool nearest_in_walked_mesh(TriangleQuery& q, const FarInstance& far, TriangleId& nearest,
+                            bool first) {
     const MeshInstance& instance = q.geometry->instances[far.instance];
     const Vec3 origin =
         times_power_of_two(apply_point(instance.to_object, q.origin), -far.exponent);
@@ -272,11 +286,9 @@ bool nearest_in_far_instance(TriangleQuery& q, const FarInstance& far, TriangleI
     const int k = std::ilogb(longest);
     direction = times_power_of_two(direction, -k);
     RTCRayHit rayhit;
-    const double t_min = std::ldexp(q.t_min, k - far.exponent),
-                 t_max = std::ldexp(q.t_max, k - far.exponent);
-    RTCBounds bounds;
-    rtcGetSceneBounds(far.corners, &bounds);
-    const FarRay fit = fit_far_ray(origin, direction, t_min, t_max, bounds);
+    const double t_min = times_two_to(q.t_min, k - far.exponent),
+                 t_max = times_two_to(q.t_max, k - far.exponent);
+    const FarRay fit = fit_far_ray(origin, direction, t_min, t_max, far.corners_bounds);
     if (fit.fit == FarRay::Fit::moved) set_far_ray(rayhit.ray, fit, t_min, t_max);
     if (fit.fit == FarRay::Fit::misses) return false;
     if (fit.fit == FarRay::Fit::out_of_reach) {
@@ -321,8 +333,9 @@ bool nearest_beyond_bvh(TriangleQuery& q, TriangleId& nearest, bool found, bool 
     for (const FarInstance& far : g.far_instances) {
         if (found && first) return true;
         q.t_max = std::min(t_max, best);
+        if (misses_box(far.lower, far.upper, q.origin, q.direction, q.t_min, q.t_max)) continue;
         TriangleId id;
-        if (nearest_in_far_instance(q, far, id, first) &&
+        if (nearest_in_walked_mesh(q, far, id, first) &&
             (first || (exact_point(g, id, q.origin, q.direction, p) && p.t < best))) {
             best = first ? best : p.t;
             nearest = id;
@@ -348,6 +361,36 @@ TriangleQuery query(const TriangleGeometry& g, const Vec3& origin, const Vec3& d
 }
 
 }  // namespace
+
+// Nothing farther than what Embree holds already (tfar, whose rounding is up)
+// nor, of equally near meshes, any but the first.
+void boxed_instance_intersect(const RTCIntersectFunctionNArguments* args) {
+    if (!args->valid[0]) return;
+    auto& q = *reinterpret_cast<TriangleQuery*>(args->context);
+    RTCRayN* ray = RTCRayHitN_RayN(args->rayhit, args->N);
+    const double t_max = q.t_max;
+    q.t_max = std::min({t_max, q.nearest_boxed, query_t(q.embree, RTCRayN_tfar(ray, args->N, 0))});
+    TriangleId id;
+    const bool found =
+        nearest_in_walked_mesh(q, q.geometry->boxed_instances[args->primID], id, false);
+    q.t_max = t_max;
+    TrianglePoint p;
+    if (!found || !exact_point(*q.geometry, id, q.origin, q.direction, p)) return;
+    q.nearest_boxed = p.t;
+    RTCHitN* hit = RTCRayHitN_HitN(args->rayhit, args->N);
+    RTCRayN_tfar(ray, args->N, 0) = far_t_up(q.embree, p.t);
+    RTCHitN_geomID(hit, args->N, 0) = args->geomID;
+    RTCHitN_primID(hit, args->N, 0) = id.triangle;
+    RTCHitN_instID(hit, args->N, 0, 0) = id.instance;
+}
+
+void boxed_instance_occluded(const RTCOccludedFunctionNArguments* args) {
+    if (!args->valid[0]) return;
+    auto& q = *reinterpret_cast<TriangleQuery*>(args->context);
+    TriangleId any;
+    if (nearest_in_walked_mesh(q, q.geometry->boxed_instances[args->primID], any, true))
+        RTCRayN_tfar(args->ray, args->N, 0) = -float_infinity;
+}
 
 void triangle_intersect_filter(const RTCFilterFunctionNArguments* args) {
     if (args->valid[0] && !keep(args)) args->valid[0] = 0;

@@ -52,4 +52,9 @@ TriangleSurface triangle_surface(const TriangleGeometry& g, const TriangleHit& h
 void triangle_intersect_filter(const RTCFilterFunctionNArguments* args);
 void triangle_occluded_filter(const RTCFilterFunctionNArguments* args);
 
+// The user geometry callbacks of TriangleGeometry::boxed_instances: each
+// walks the mesh whose box Embree found.
+void boxed_instance_intersect(const RTCIntersectFunctionNArguments* args);
+void boxed_instance_occluded(const RTCOccludedFunctionNArguments* args);
+
 }  // namespace jt
