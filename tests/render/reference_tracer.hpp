@@ -29,7 +29,9 @@
 //   scene's magnitude off the surface instead of on it (the offsets renderers
 //   use lie between);
 // - a channel lies within 1e-6 of a rounding boundary of the 0..255 scale
-//   (unless it is the exact mean of 2^k samples that each clamp to 0 or 1);
+//   (unless it is the exact mean of 2^k samples that each clamp to 0 or 1;
+//   within 1e-9 when no sample took a light's, an image map's or a sky map's
+//   term: sums of products of the scene's constants, exact to some ulps);
 // - two surfaces lie within 1e-8 (relative) of each other along one of its
 //   rays, or a secondary ray meets another surface within 1e-6 (relative) of
 //   its start (another face of the ill-conditioned mesh it leaves: within
@@ -317,6 +319,8 @@ class Tracer {
             for (int i = 0; i < w; ++i) {
                 Colour sum(0.0), least(0.0), greatest(0.0), single(0.0), grazes(0.0);
                 bool ambiguous = false;
+                // Whether any sample's colour depends on where its rays went.
+                bool varies = false;
                 // Per channel: every sample's clamped value is 0 or 1 whatever
                 // the rounding, so that the mean is exact (n a power of two).
                 std::array<bool, 3> exact{true, true, true};
@@ -330,6 +334,7 @@ class Tracer {
                     least += s.least;
                     greatest += s.greatest;
                     ambiguous = ambiguous || s.ambiguous;
+                    varies = varies || s.varies;
                     grazes += s.graze_bound;
                 }
                 const Colour mean = n == 1 ? single : sum / static_cast<double>(n);
@@ -337,8 +342,8 @@ class Tracer {
                 const Rgb8 low = quantize(least / static_cast<double>(n));
                 const Rgb8 high = quantize(greatest / static_cast<double>(n));
                 if (n == 1 || (n & (n - 1)) != 0) exact = {false, false, false};
-                ambiguous = ambiguous || near_rounding_boundary(mean, exact) || !(low == high) ||
-                            moves_bytes(mean, grazes / static_cast<double>(n));
+                ambiguous = ambiguous || near_rounding_boundary(mean, exact, varies) ||
+                            !(low == high) || moves_bytes(mean, grazes / static_cast<double>(n));
                 std::uint8_t* p = out.image.pixel(i, j);
                 p[0] = centre.r;
                 p[1] = centre.g;
@@ -362,6 +367,8 @@ class Tracer {
         bool ambiguous = false;
         // The most its shadow rays that grazed an edge could change it by.
         Colour graze_bound{0.0};
+        // Its colour depends on where its rays went (Flags::varies).
+        bool varies = false;
     };
 
     static Colour clamped(const Colour& c) { return glm::clamp(c, Colour(0.0), Colour(1.0)); }
@@ -383,6 +390,7 @@ class Tracer {
         out.colour = trace(ray.origin, ray.direction, 0, {}, 0.0, false, flags);
         out.ambiguous = flags.ambiguous;
         out.graze_bound = flags.graze_bound;
+        out.varies = flags.varies;
         out.least = out.greatest = clamped(out.colour);
         const Flags plain = [&] {
             Flags p;
@@ -534,6 +542,12 @@ class Tracer {
         // (with all of it reaching) times their branch's weight in the
         // sample: the most whatever they meet can change its colour by.
         Colour graze_bound{0.0};
+        // The colour took a term that depends on where the rays went: a
+        // light's, a texel blend of an image or sky map. Without one it is a
+        // sum of products of the scene's constants (ambient, pigments, the
+        // background, reflection weights), which any renderer computes within
+        // some ulps.
+        bool varies = false;
     };
 
     static Rgb8 quantize(const Colour& c) {
@@ -547,17 +561,24 @@ class Tracer {
     static constexpr double kClampMargin = 1e-6;
 
     // Whether a channel not known `exact` lies within 1e-6 of a rounding
-    // boundary. An exact mean of samples each 0 or 1 (two of four at 1: 127.5)
+    // boundary, or within kConstantColourMargin when no sample's colour
+    // `varies`. An exact mean of samples each 0 or 1 (two of four at 1: 127.5)
     // sits on a boundary that every renderer rounds alike.
-    static bool near_rounding_boundary(const Colour& c, const std::array<bool, 3>& exact) {
+    static bool near_rounding_boundary(const Colour& c, const std::array<bool, 3>& exact,
+                                       bool varies) {
+        const double margin = varies ? 1e-6 : kConstantColourMargin;
         for (int k = 0; k < 3; ++k) {
             if (exact[k]) continue;
             const double v = std::clamp(c[k], 0.0, 1.0) * 255 + 0.5;
             const double fraction = v - std::floor(v);
-            if (v > 0.5 && v < 255.5 && (fraction < 1e-6 || fraction > 1 - 1e-6)) return true;
+            if (v > 0.5 && v < 255.5 && (fraction < margin || fraction > 1 - margin)) return true;
         }
         return false;
     }
+
+    // A colour made of the scene's constants alone is a few sums and products
+    // in double precision: some ulps of 255 on the byte scale, far below this.
+    static constexpr double kConstantColourMargin = 1e-9;
 
     // Whether a change of up to `bound` in any channel of colour c (each
     // sample's share of the pixel's mean: clamping cannot widen it) can move
@@ -935,6 +956,7 @@ class Tracer {
             hit = {forced.t, flags.force_placed, forced};
         if (hit.placed < 0) {
             const Colour missed = sky_ ? sky(*sky_, d) : scene_.settings.background;
+            if (sky_) flags.varies = true;
             if (depth == 0) flags.colour = missed;
             return missed;
         }
@@ -972,6 +994,7 @@ class Tracer {
             const auto* t = shape_if<Triangle>(q.shape);
             const Vec3 uv = t ? w * t->uv_a + root.u * t->uv_b + root.v * t->uv_c : Vec3(0.0);
             pigment = bilinear(*q.picture, uv.x, uv.y);
+            flags.varies = true;
         }
         const Vec3 v = -d;
         const double scale = std::max({max_abs(o), max_abs(p), hit.t});
@@ -1008,6 +1031,7 @@ class Tracer {
                 flags.graze_bound +=
                     weight * light_term(light.intensity, m, pigment, n_dot_l, r_dot_v);
             if (!(through > 0)) continue;
+            flags.varies = true;
             const Colour intensity = light.intensity * through;
             c += intensity * m.finish->diffuse * pigment *
                  std::pow(n_dot_l, 1 / m.finish->diffuse_k);
@@ -1101,6 +1125,7 @@ class Tracer {
             vis = sum / count;
         }
         if (!(vis > 0)) return Colour(0.0);
+        flags.varies = true;
         const Colour intensity = light.intensity * vis;
         Colour c =
             intensity * m.finish->diffuse * pigment * std::pow(n_dot_l, 1 / m.finish->diffuse_k);
