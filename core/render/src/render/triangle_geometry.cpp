@@ -276,7 +276,7 @@ void attach_loose(TriangleGeometry& t) {
         }
     }
     rtcCommitGeometry(g);
-    t.loose_geometry_id = rtcAttachGeometry(t.scene, g);
+    rtcAttachGeometry(t.scene, g);
     rtcReleaseGeometry(g);
 }
 
@@ -366,9 +366,9 @@ Expected<std::unique_ptr<TriangleGeometry>> build_triangle_geometry(const Scene&
     attach_instances(*t, transforms);
     if (!t->loose.empty()) attach_loose(*t);
     if (!t->boxed_instances.empty())
-        t->boxed_geometry_id = attach_user_geometry(
-            t->scene, t.get(), t->boxed_instances.size(), RTC_BUILD_QUALITY_MEDIUM,
-            boxed_instance_bounds, boxed_instance_intersect, boxed_instance_occluded);
+        attach_user_geometry(t->scene, t.get(), t->boxed_instances.size(), RTC_BUILD_QUALITY_MEDIUM,
+                             boxed_instance_bounds, boxed_instance_intersect,
+                             boxed_instance_occluded);
     rtcCommitScene(t->scene);
     rtcGetSceneBounds(t->scene, &t->bounds);
     return t;

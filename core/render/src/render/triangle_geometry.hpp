@@ -108,15 +108,13 @@ struct TriangleGeometry {
     // met none of the faces around it. A ray from outside the box of all the
     // triangles starts where it enters that box, which is the mesh's own
     // when it is the only one; with more, the meshes are found by their
-    // world boxes (one user geometry, `boxed_geometry_id`) and each ray
+    // world boxes (one user geometry) and each ray
     // walks each mesh it may meet from where it enters that mesh's box.
     std::vector<FarInstance> boxed_instances;
-    unsigned boxed_geometry_id = RTC_INVALID_GEOMETRY_ID;
     std::vector<LooseTriangle> loose;
     // Loose triangles with a corner past Embree's reach (indices into
     // `loose`): its BVH leaves them out, so each query tests them exactly.
     std::vector<std::uint32_t> far_loose;
-    unsigned loose_geometry_id = RTC_INVALID_GEOMETRY_ID;
     bool file_materials = false;  // some instance has materials: "file"
     RTCScene scene = nullptr;     // the instances and the loose triangles
     RTCBounds bounds{};           // of `scene`, once committed
