@@ -31,6 +31,11 @@ inline ListedDistance listed_distance(double nearest) {
     return float_at_or_below(nearest);
 }
 
+// A shadow ray whose walk of its light's list would test more shapes than
+// this, or a closest-hit query that has tested as many of its list, is left
+// to the BVH: testing each costs more than Embree's walk past most of them.
+inline constexpr std::size_t max_cell_candidates = 16;
+
 // The sphere a previous walk met first: the primary rays of neighbouring
 // pixels mostly meet the same sphere, and offering it before a walk gives the
 // walk a near best hit from its start, so that most of the spheres it passes
@@ -53,7 +58,7 @@ struct ListedShapes {
     bool covered = false;
     // A closest-hit walk of a covered list long enough to go in batches
     // offers this hint's sphere first, and leaves it on the sphere met first
-    // (ray_queries.cpp); other walks leave it alone.
+    // (closest_hit.cpp); other walks leave it alone.
     HitHint* hint = nullptr;
     std::size_t size() const { return shapes.size(); }
 };

@@ -3,6 +3,7 @@
 // Embree only culls: it walks the BVH with a float copy of the ray, and our
 // callbacks decide every hit with the double ray, keeping the result in the
 // query (Embree's float tfar is only ever a conservative upper bound).
+// closest_hit.cpp holds the closest-hit query, occlusion.cpp the shadow ones.
 
 #include "render/prepared_scene.hpp"
 #include "render/triangle_queries.hpp"
@@ -100,11 +101,10 @@ bool occluded_among(const Geometry& geometry, const ListedShapes& candidates, co
                     const Vec3& direction, double t_min, double t_max, OccluderHint* hint,
                     const Departure& from);
 
-// Embree callbacks for the two user geometries; prepare_scene registers them.
-void sphere_bounds(const RTCBoundsFunctionArguments* args);
+// Embree callbacks for the two user geometries (their boxes:
+// render/user_geometry.hpp); prepare_scene registers them.
 void sphere_intersect(const RTCIntersectFunctionNArguments* args);
 void sphere_occluded(const RTCOccludedFunctionNArguments* args);
-void shape_bounds(const RTCBoundsFunctionArguments* args);
 void shape_intersect(const RTCIntersectFunctionNArguments* args);
 void shape_occluded(const RTCOccludedFunctionNArguments* args);
 
