@@ -1,4 +1,4 @@
-// The viewer watches every file its scene includes (docs/language.md §15.5):
+// The viewer watches every file its scene includes (docs/language.md §15.6):
 // a change reloads, and so does a missing included file appearing.
 
 #include "common/files.hpp"
