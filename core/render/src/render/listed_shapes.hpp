@@ -31,11 +31,6 @@ inline ListedDistance listed_distance(double nearest) {
     return float_at_or_below(nearest);
 }
 
-// A shadow ray whose walk of its light's list would test more shapes than
-// this, or a closest-hit query that has tested as many of its list, is left
-// to the BVH: testing each costs more than Embree's walk past most of them.
-inline constexpr std::size_t max_cell_candidates = 16;
-
 // The sphere a previous walk met first: the primary rays of neighbouring
 // pixels mostly meet the same sphere, and offering it before a walk gives the
 // walk a near best hit from its start, so that most of the spheres it passes

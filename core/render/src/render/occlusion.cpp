@@ -24,6 +24,14 @@ namespace jt {
 
 namespace {
 
+// A shadow ray whose walk of its light's list would test more shapes than
+// this is left to the BVH. A light's list is sorted nearest the light first,
+// and the walk ends at the ray's origin, so a long list often serves rays
+// that walk only its head; even past a few dozen shapes, a walk that ends on
+// the first blocker beats Embree's walk with a callback per box it enters
+// (docs/benchmarks.md §2.5: 128 against 16 took 2% off lattice, sphereflake
+// and tree, 0.5% off spheres_5761).
+constexpr std::size_t max_light_walk = 128;
 // Where the spheres overlap heavily (Geometry::crowded), testing a light's
 // cell list beats the BVH walk, even the shadow BVH's, up to about this many
 // (docs/benchmarks.md §2.7).
@@ -228,9 +236,9 @@ bool occluded_by_shadow_bvh(const Geometry& geometry, const ShadowRay& one, Occl
     return true;
 }
 
-// A shadow ray whose light's cell lists more shapes than max_cell_candidates,
-// or that has no cell: the list still, where the spheres are crowded and it is
-// not too long, else a BVH walk.
+// A shadow ray whose walk of its light's list would test more than
+// max_light_walk shapes, or that has no list: the list still, where the
+// spheres are crowded and it is not too long, else a BVH walk.
 bool occluded_beyond_cell(const Geometry& geometry, const ListedShapes* candidates,
                           const ShadowRay& one, OccluderHint& blocker) {
     if (geometry.crowded && candidates && candidates->size() <= max_crowded_light_candidates)
@@ -349,7 +357,7 @@ bool occluded(const Geometry& geometry, const Vec3& origin, const Vec3& directio
     OccluderHint blocker;
     bool blocked = unbounded_blocks(geometry, origin, direction, t_min, t_max, blocker);
     if (!blocked && candidates &&
-        (!geometry.bvh || light_walk_within(*candidates, direction, t_max, max_cell_candidates))) {
+        (!geometry.bvh || light_walk_within(*candidates, direction, t_max, max_light_walk))) {
         blocked =
             occluded_by_listed(geometry, *candidates, origin, direction, t_min, t_max, blocker);
     } else if (!blocked && !geometry.bvh) {
