@@ -24,14 +24,6 @@ namespace jt {
 
 namespace {
 
-// A shadow ray whose walk of its light's list would test more shapes than
-// this is left to the BVH. A light's list is sorted nearest the light first,
-// and the walk ends at the ray's origin, so a long list often serves rays
-// that walk only its head; even past a few dozen shapes, a walk that ends on
-// the first blocker beats Embree's walk with a callback per box it enters
-// (docs/benchmarks.md §2.5: 128 against 16 took 2% off lattice, sphereflake
-// and tree, 0.5% off spheres_5761).
-constexpr std::size_t max_light_walk = 128;
 // Where the spheres overlap heavily (Geometry::crowded), testing a light's
 // cell list beats the BVH walk, even the shadow BVH's, up to about this many
 // (docs/benchmarks.md §2.7).
