@@ -302,6 +302,12 @@ bool save_now(AppState& state) {
         state.message = "Not saved: " + checked.error().message;
         return false;
     }
+    // A read-only file typed in is found before the scene file is written.
+    for (const IncludedDraft& d : state.editor.drafts)
+        if (const Expected<void> ok = check_writable(d.path); !ok) {
+            state.message = "Not saved: " + ok.error().message;
+            return false;
+        }
     std::vector<std::string> written;
     // With only included files typed in, the scene file is left as it is.
     if (!drafts || has_unsaved_edits(doc)) {

@@ -189,6 +189,33 @@ TEST_F(ViewerFiles, SavingAnUntouchedFileNeedsNoConfirmation) {
     EXPECT_TRUE(save_scene(state)) << state.message;
 }
 
+// The save replaces the file by a rename, which the folder allows whatever
+// the file's own mode: the file keeps its mode, and one nobody may write is
+// not replaced (root may write anything, so its bits are what count).
+TEST_F(ViewerFiles, SaveKeepsTheFilesModeAndLeavesAReadOnlyFileAlone) {
+    const auto mode = [&] { return fs::status(file).permissions() & fs::perms::all; };
+    fs::permissions(file, fs::perms::owner_read | fs::perms::owner_write);
+    edit_pigment();
+    ASSERT_TRUE(save_scene(state)) << state.message;
+    EXPECT_EQ(read_file(file), kMine);
+    EXPECT_EQ(mode(), fs::perms::owner_read | fs::perms::owner_write) << "a private file stays so";
+    ASSERT_TRUE(model.run_until_loaded(state));
+
+    const fs::perms read_only = fs::perms::owner_read | fs::perms::group_read;
+    fs::permissions(file, read_only);
+    edit_scene(state, [](Scene& s) { s.settings.samples = 3; });
+    EXPECT_FALSE(save_scene(state));
+    EXPECT_NE(state.message.find("read-only"), std::string::npos) << state.message;
+    EXPECT_FALSE(save_scene_anyway(state)) << "no answer replaces a read-only file";
+    EXPECT_EQ(read_file(file), kMine);
+    EXPECT_EQ(mode(), read_only);
+    EXPECT_TRUE(has_unsaved_edits(state.doc)) << "the edit is still there to save elsewhere";
+    const fs::path copy = file.parent_path() / "copy.jts";
+    ASSERT_TRUE(save_scene_as(state, copy, false)) << state.message;
+    EXPECT_EQ(parse_scene(read_file(copy)).scene.settings.samples, 3);
+    fs::permissions(file, fs::perms::owner_all);
+}
+
 TEST_F(ViewerFiles, UndoingANewCameraAfterSavingSavesItsRemoval) {
     use_free_camera(state.view, state.doc.scene);
     orbit(state.view.free_camera, 40, 10, 240);
