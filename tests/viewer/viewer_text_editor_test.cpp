@@ -6,6 +6,7 @@
 #include "app/headless.hpp"
 #include "app/keys.hpp"
 #include "app/text_editor.hpp"
+#include "app/ui_items.hpp"
 #include "common/files.hpp"
 #include "jtracer/diagnostics.hpp"
 #include "model/app_actions.hpp"
@@ -179,6 +180,41 @@ TEST_F(ViewerTextEditor, FastTypingKeepsItsOrderWhateverTheFrameRate) {
         viewer.frame(state);
         ASSERT_EQ(text(), original);
     }
+}
+
+// Found in the real window under load: a path typed into the File panel's
+// field, then a click on Open. The keys wait in KeyTaps for frames (each
+// key changes once a frame), the click did not: it pressed Open with half
+// the path typed, and the characters after it became the image's
+// shortcuts (T closed the text editor, X deleted the selection, S saved an
+// image). The click keeps its place among the keys.
+TEST_F(ViewerTextEditor, AClickAfterTypingWaitsForTheTyping) {
+    const fs::path target = file.parent_path() / "sixteen_xts.jts";
+    fs::copy_file(file, target);
+    viewer.frame(state);
+    const UiItem* field = find_item(viewer.ui_items(), "open path");
+    const UiItem* open = find_item(viewer.ui_items(), "Open");
+    ASSERT_TRUE(field && open);
+    const auto centre = [](const UiItem& item, int button, int action) {
+        return mouse_button_event(button, action, (item.rect.x0 + item.rect.x1) * 0.5f,
+                                  (item.rect.y0 + item.rect.y1) * 0.5f);
+    };
+    state.view.selection = {Selection::Kind::primitive, 1};  // what a stray X would delete
+    std::vector<KeyEvent> events;
+    events.push_back(centre(*field, 0, kKeyPress));
+    events.push_back(centre(*field, 0, kKeyRelease));
+    shortcut(events, keys::letter('A'));  // the field's text selected, to be replaced
+    type(events, target.string());
+    events.push_back(centre(*open, 0, kKeyPress));
+    events.push_back(centre(*open, 0, kKeyRelease));
+    // Events 4 ms apart, a frame every 60 ms: a slow frame, as with a render running.
+    viewer.key_events(state, events, 4.0, 60.0);
+    ASSERT_TRUE(viewer.run_until_loaded(state));
+    EXPECT_EQ(state.fields.open_path_input, target.string());
+    EXPECT_EQ(state.doc.path, target) << state.message;
+    EXPECT_TRUE(viewer.text_editor().open) << "a T typed in the field toggled the text editor";
+    EXPECT_EQ(state.doc.scene.primitives.size(), 2u);
+    EXPECT_FALSE(state.history.undo.can_undo()) << "no edit was made";
 }
 
 // Issue 27 item 12: a file broken on disk showed the old good text and "No
