@@ -423,5 +423,65 @@ TEST(ViewerIncludedFileEditor, OpensTypesUndoesAndSavesAnIncludedFile) {
     fs::remove_all(dir);
 }
 
+// Found in the real window: text typed in an included file, then Esc to
+// leave the editor. ImGui's Esc puts back the text the widget was entered
+// with, so everything typed since the click was gone, the draft with it,
+// and the next Esc or Ctrl+Q quit without asking. Esc leaves the text as
+// it is, as it does in the scene file's text.
+TEST(ViewerIncludedFileEditor, EscKeepsWhatWasTypedInAnIncludedFile) {
+    HeadlessViewer viewer{1200, 700};
+    ASSERT_TRUE(viewer.ok()) << viewer.error();
+    const fs::path dir = make_scratch_dir("included-file-esc");
+    const std::string main_text =
+        "render_settings { width: 32; height: 24; }\n"
+        "cameras { perspective_camera { aspect: 1.3333333333333333; } }\n"
+        "scene { point_light { position: <3, 5, 4>; } include \"parts/ball.jts\"; }\n";
+    const std::string ball_text = "sphere { center: <0, 0, -5>; radius: 1; }\n";
+    fs::create_directories(dir / "parts");
+    write_file(dir / "main.jts", main_text);
+    write_file(dir / "parts" / "ball.jts", ball_text);
+    AppState state{test_config()};
+    open_scene(state, dir / "main.jts");
+    ASSERT_TRUE(state.doc.loaded) << format_diagnostics(state.doc);
+    viewer.press_key(state, keys::letter('T'));
+    TextEditorState& ed = viewer.text_editor();
+    ASSERT_TRUE(viewer.click(state, "parts/ball.jts"));
+    viewer.frame(state);
+    ed.jump = 0;
+    viewer.frame(state);
+    viewer.frame(state);
+    std::vector<KeyEvent> events;
+    type(events, "# mine\n");
+    viewer.key_events(state, events, 40.0, 16.0);
+    const std::string typed = "# mine\n" + ball_text;
+    ASSERT_EQ(ed.buffer, typed);
+
+    events.clear();
+    tap(events, keys::escape);
+    viewer.key_events(state, events, 40.0, 16.0);
+    EXPECT_EQ(ed.buffer, typed) << "Esc put back the text from before the typing";
+    ASSERT_NE(draft_of(state.editor, state.editor.shown), nullptr);
+    EXPECT_EQ(draft_of(state.editor, state.editor.shown)->text, typed);
+    // Nothing is active now: a second Esc asks before quitting.
+    events.clear();
+    tap(events, keys::escape);
+    viewer.key_events(state, events, 40.0, 16.0);
+    EXPECT_FALSE(state.quit) << "quit with the typing unsaved";
+    EXPECT_TRUE(state.files.unsaved_prompt.has_value());
+    resolve_unsaved(state, UnsavedChoice::cancel);
+
+    // Ctrl+Z still undoes the typing in this file once it is entered again.
+    ed.jump = static_cast<int>(std::string("# mine\n").size());
+    viewer.frame(state);
+    viewer.frame(state);
+    for (int i = 0; i < 10 && ed.buffer != ball_text; ++i) {
+        events.clear();
+        shortcut(events, keys::letter('Z'));
+        viewer.key_events(state, events, 40.0, 16.0);
+    }
+    EXPECT_EQ(ed.buffer, ball_text);
+    fs::remove_all(dir);
+}
+
 }  // namespace
 }  // namespace jt::view
