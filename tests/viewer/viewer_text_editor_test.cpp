@@ -217,6 +217,23 @@ TEST_F(ViewerTextEditor, AClickAfterTypingWaitsForTheTyping) {
     EXPECT_FALSE(state.history.undo.can_undo()) << "no edit was made";
 }
 
+// Found in the real window: Ctrl+Q while typing in the text editor did
+// nothing (a text field took every shortcut but its own).
+TEST_F(ViewerTextEditor, CtrlQInTheTextAsksBeforeQuitting) {
+    put_cursor(10, 1);
+    std::vector<KeyEvent> events;
+    type(events, "# q");
+    viewer.key_events(state, events, 40.0, 16.0);
+    const std::string typed = text();
+    ASSERT_NE(typed, original);
+    events.clear();
+    shortcut(events, keys::letter('Q'));
+    viewer.key_events(state, events, 40.0, 16.0);
+    EXPECT_TRUE(state.files.unsaved_prompt.has_value()) << "Ctrl+Q in the text did nothing";
+    EXPECT_FALSE(state.quit);
+    EXPECT_EQ(text(), typed) << "Ctrl+Q typed nothing";
+}
+
 // Issue 27 item 12: a file broken on disk showed the old good text and "No
 // errors" in the editor, and saving wrote the old text over the broken file.
 TEST_F(ViewerTextEditor, ABrokenFileOnDiskIsShownWithItsErrorsAndNeverSavedOver) {
