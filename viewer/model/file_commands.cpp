@@ -247,6 +247,14 @@ void resolve_reload(AppState& state, ReloadChoice choice) {
     const std::string name = state.doc.path.filename().string();
     if (choice == ReloadChoice::keep_edits) {
         state.files.pending_reload.reset();
+        // While the bar asked, the diagnostics were the newer file's; the
+        // edits kept are described by their own again: the edited scene's
+        // (check_edits), or the draft's, checked again now.
+        state.doc.load_failed = false;
+        state.check.checked_revision.reset();
+        if (state.doc.draft)
+            state.check.checker.check(++state.check.draft_id, *state.doc.draft, state.doc.path,
+                                      std::chrono::milliseconds(0), state.doc.options);
         state.message = "Kept your edits; " + name +
                         " on disk differs, so Save scene will ask before overwriting it";
         return;

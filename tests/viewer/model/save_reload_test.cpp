@@ -4,8 +4,10 @@
 // the last good image, the UI's frames or a crash.
 
 #include "common/files.hpp"
+#include "jtracer/diagnostics.hpp"
 #include "jtracer/parser.hpp"
 #include "model/app_actions.hpp"
+#include "model/document_edits.hpp"
 #include "model/picking.hpp"
 #include "viewer/model/model_loop.hpp"
 #include "viewer/viewer_test_files.hpp"
@@ -16,6 +18,8 @@
 #include <chrono>
 #include <cstdio>
 #include <fstream>
+#include <functional>
+#include <thread>
 
 namespace jt::view {
 namespace {
@@ -62,6 +66,18 @@ class ViewerFiles : public ::testing::Test {
     void they_save(const std::string& text) {
         save_as_editor(file, text);
         ASSERT_TRUE(model.run_until_loaded(state));
+    }
+
+    // Frames until `done` (or the timeout).
+    bool run_until(const std::function<bool()>& done) {
+        const auto until = std::chrono::steady_clock::now() + kTimeout;
+        while (!done()) {
+            if (std::chrono::steady_clock::now() > until) return false;
+            model.frame(state);
+            std::this_thread::sleep_for(std::chrono::milliseconds(2));
+        }
+        model.frame(state);
+        return true;
     }
 
     ModelLoop model;
@@ -142,6 +158,37 @@ TEST_F(ViewerFiles, ReloadCanReapplyTheEditsOntoTheNewerText) {
               replaced(kTheirs, "pigment: <0.9, 0.2, 0.1>;", "pigment: <0.25, 0.5, 0.75>;"));
     undo(state);  // back to the file as they wrote it
     EXPECT_EQ(state.doc.scene, parse_scene(kTheirs).scene);
+}
+
+// Found in the real window: `width: 800` typed without its `;`, then the
+// file changed on disk, then Keep mine. The text editor showed the broken
+// text under "No errors or warnings" and Diagnostics (0): the diagnostics
+// stayed the newer file's. Kept edits are described by their own again.
+TEST_F(ViewerFiles, KeptEditsShowTheirOwnDiagnosticsAgain) {
+    const std::string broken = replaced(kOriginal, "height: 48;", "height: 48");
+    type_text(state, broken);
+    ASSERT_TRUE(run_until([&] { return !state.check.checker.in_flight(); }));
+    ASSERT_TRUE(state.doc.draft.has_value());
+    ASSERT_TRUE(has_errors(state.doc.diagnostics));
+    they_save(kTheirs);
+    ASSERT_TRUE(state.files.pending_reload.has_value());
+    resolve_reload(state, ReloadChoice::keep_edits);
+    ASSERT_TRUE(run_until([&] { return !state.check.checker.in_flight(); }));
+    EXPECT_TRUE(has_errors(state.doc.diagnostics)) << "the kept text's error is listed again";
+    EXPECT_EQ(state.doc.diagnostics_source, broken);
+    EXPECT_EQ(document_text(state.doc), broken);
+
+    // A panel edit kept over a newer file with errors: that file's errors go.
+    undo(state);
+    ASSERT_FALSE(state.doc.draft.has_value());
+    edit_pigment();
+    they_save(broken);
+    ASSERT_TRUE(state.doc.load_failed);
+    resolve_reload(state, ReloadChoice::keep_edits);
+    model.frame(state);
+    EXPECT_FALSE(state.doc.load_failed);
+    EXPECT_FALSE(has_errors(state.doc.diagnostics)) << "the errors of the file not taken";
+    EXPECT_EQ(state.doc.diagnostics_source, state.doc.text);
 }
 
 TEST_F(ViewerFiles, SaveRefusesToOverwriteANewerFileUntilToldTo) {
