@@ -235,6 +235,16 @@ struct FileState {
     std::string save_conflict;
     std::optional<GuardedCommand> unsaved_prompt;
     std::string save_as_conflict;  // the file Save scene as would replace, until confirmed
+    // The unsaved work there was when the open under way was asked for: none,
+    // or what the user agreed to discard. Work done while the file loads is
+    // asked about when it arrives (take_finished_load).
+    struct UnsavedStamp {
+        std::uint64_t history = 0;  // EditHistory::undo's changes()
+        std::optional<std::string> draft;
+        std::vector<std::string> included;  // the included files' drafts
+        bool operator==(const UnsavedStamp&) const = default;
+    };
+    std::optional<UnsavedStamp> open_requested_over;
 };
 
 // The render: what it was started from, the job, and its pixels as shown.

@@ -150,7 +150,18 @@ void open_scene(AppState& state, const std::filesystem::path& path) {
     take_finished_load(state);
 }
 
+namespace {
+
+FileState::UnsavedStamp unsaved_stamp(const AppState& state) {
+    FileState::UnsavedStamp stamp{state.history.undo.changes(), state.doc.draft, {}};
+    for (const IncludedDraft& d : state.editor.drafts) stamp.included.push_back(d.text);
+    return stamp;
+}
+
+}  // namespace
+
 void request_open(AppState& state, const std::filesystem::path& path) {
+    state.files.open_requested_over = unsaved_stamp(state);
     state.files.loader.request(path, LoadPurpose::open, state.doc.options);
     state.message = "Opening " + path.string();
 }
@@ -232,6 +243,16 @@ bool take_finished_load(AppState& state) {
     state.files.last_load_times = done->attempt.times;
     // A reload of a file that is no longer the open one is stale.
     if (done->purpose == LoadPurpose::reload && done->path != state.doc.path) return true;
+    // Edited while the file loaded (the panels and the text stay editable):
+    // asked about now, as the open would have asked when it was requested.
+    // Save or Discard opens it again.
+    if (done->purpose == LoadPurpose::open && has_unsaved_work(state) &&
+        state.files.open_requested_over != unsaved_stamp(state)) {
+        state.files.unsaved_prompt = GuardedCommand{GuardedCommand::Kind::open, done->path};
+        state.message = "You edited while " + done->path.filename().string() +
+                        " was opening: save your edits, discard them or cancel the open";
+        return true;
+    }
     if (done->purpose == LoadPurpose::open)
         finish_open(state, done->path, std::move(done->attempt));
     else

@@ -191,6 +191,30 @@ TEST_F(ViewerFiles, KeptEditsShowTheirOwnDiagnosticsAgain) {
     EXPECT_EQ(state.doc.diagnostics_source, state.doc.text);
 }
 
+// Found in the real window: an open of a large file takes seconds, and the
+// panels and the text stay editable meanwhile. The prompt for unsaved edits
+// is asked when the open is requested; an edit made after that was replaced
+// by the opened file without a word. Such an edit is asked about when the
+// open arrives; the edits the user agreed to discard are not asked again.
+TEST_F(ViewerFiles, EditsMadeWhileAnotherFileOpensAreNotDroppedUnasked) {
+    const fs::path other = file.parent_path() / "other.jts";
+    write_file(other, kTheirs);
+    request_open_guarded(state, other);
+    ASSERT_FALSE(state.files.unsaved_prompt.has_value()) << "nothing unsaved yet: it opens";
+    edit_pigment();  // while it loads
+    ASSERT_TRUE(model.run_until_loaded(state));
+    EXPECT_EQ(state.doc.path, file) << "the open replaced an edit made while it loaded";
+    EXPECT_EQ(state.doc.scene.primitives[1].material.pigment, kMyPigment);
+    ASSERT_TRUE(state.files.unsaved_prompt.has_value());
+    EXPECT_EQ(state.files.unsaved_prompt->path, other);
+
+    resolve_unsaved(state, UnsavedChoice::discard);
+    ASSERT_TRUE(model.run_until_loaded(state));
+    EXPECT_EQ(state.doc.path, other) << "the edits the user discarded are not asked about again";
+    EXPECT_EQ(state.doc.scene, parse_scene(kTheirs).scene);
+    EXPECT_FALSE(state.files.unsaved_prompt.has_value());
+}
+
 TEST_F(ViewerFiles, SaveRefusesToOverwriteANewerFileUntilToldTo) {
     edit_pigment();
     they_save(kTheirs);
