@@ -216,6 +216,15 @@ bool assets_changed(AppState& state) {
 }  // namespace
 
 bool reload_if_changed(AppState& state) {
+    // A file the draft's check could not read, or read, changed (it was
+    // created, say, after `include "new.jts";` was typed): the draft is
+    // checked again; the file on disk is not read again for it.
+    if (state.doc.draft && !state.check.draft_reads.empty() && state.files.draft_watcher.due()) {
+        state.files.draft_watcher.watch(state.check.draft_reads);
+        if (!state.files.draft_watcher.poll().empty())
+            state.check.checker.check(++state.check.draft_id, *state.doc.draft, state.doc.path,
+                                      std::chrono::milliseconds(0), state.doc.options);
+    }
     const bool assets = state.doc.loaded && assets_changed(state);
     bool included = false;
     if (state.files.include_watcher.due()) {
