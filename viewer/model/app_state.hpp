@@ -248,7 +248,9 @@ struct FileState {
     // asked about when it arrives (take_finished_load).
     struct UnsavedStamp {
         std::uint64_t history = 0;  // EditHistory::undo's changes()
-        std::optional<std::string> draft;
+        // The draft, or the base text when there is none: a draft that
+        // parses becomes the base text unchanged, which is no edit.
+        std::string text;
         std::vector<std::string> included;  // the included files' drafts
         bool operator==(const UnsavedStamp&) const = default;
     };

@@ -153,7 +153,8 @@ void open_scene(AppState& state, const std::filesystem::path& path) {
 namespace {
 
 FileState::UnsavedStamp unsaved_stamp(const AppState& state) {
-    FileState::UnsavedStamp stamp{state.history.undo.changes(), state.doc.draft, {}};
+    FileState::UnsavedStamp stamp{
+        state.history.undo.changes(), state.doc.draft.value_or(state.doc.text), {}};
     for (const IncludedDraft& d : state.editor.drafts) stamp.included.push_back(d.text);
     return stamp;
 }

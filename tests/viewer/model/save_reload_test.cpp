@@ -213,6 +213,19 @@ TEST_F(ViewerFiles, EditsMadeWhileAnotherFileOpensAreNotDroppedUnasked) {
     EXPECT_EQ(state.doc.path, other) << "the edits the user discarded are not asked about again";
     EXPECT_EQ(state.doc.scene, parse_scene(kTheirs).scene);
     EXPECT_FALSE(state.files.unsaved_prompt.has_value());
+
+    // Typed text discarded while its check runs: the check taking the text in
+    // during the open is no edit of the user's.
+    type_text(state, replaced(kTheirs, "height: 48;", "height: 50;"));
+    request_open_guarded(state, file);
+    ASSERT_TRUE(state.files.unsaved_prompt.has_value());
+    resolve_unsaved(state, UnsavedChoice::discard);
+    state.check.checker.wait();
+    ASSERT_TRUE(take_checked_text(state));  // before the open arrives
+    ASSERT_FALSE(state.doc.draft.has_value()) << "the typed text parses";
+    ASSERT_TRUE(model.run_until_loaded(state));
+    EXPECT_EQ(state.doc.path, file) << state.message;
+    EXPECT_FALSE(state.files.unsaved_prompt.has_value());
 }
 
 TEST_F(ViewerFiles, SaveRefusesToOverwriteANewerFileUntilToldTo) {
