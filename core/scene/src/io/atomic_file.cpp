@@ -111,10 +111,11 @@ Expected<void> write_file_atomically(const std::filesystem::path& target,
         if (ec) return failure(target, ec.value());
     }
     // The file replaced keeps its permissions: a private scene stays
-    // private, an executable script executable. A new one is an ordinary
-    // readable file.
+    // private, an executable script executable (never set-id bits, which
+    // the new file, of another owner perhaps, must not take). A new one is
+    // an ordinary readable file.
     struct stat existing {};
-    const mode_t mode = ::stat(real.c_str(), &existing) == 0 ? existing.st_mode & 07777 : 0644;
+    const mode_t mode = ::stat(real.c_str(), &existing) == 0 ? existing.st_mode & 0777 : 0644;
     const Temporary temp = write_temporary(real, next_piece, mode);
     if (temp.error != 0) return failure(target, temp.error);
     if (std::rename(temp.name.data(), real.c_str()) != 0) {
