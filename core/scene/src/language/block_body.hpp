@@ -1,9 +1,10 @@
 #pragma once
 // How the body of every block is read: the loop over its entries
 // (parse_body), the records of its properties (read_properties) and the runs
-// of plain properties read without tokens (read_plain_run). Templates and
-// inline, defined where each kind of block's reader can see them: they are
-// the parse's inner loop, and a call per property cost more than its reading.
+// of plain properties read without tokens (read_plain_run). Templates,
+// defined where each kind of block's reader can see them, and declared
+// inline: they are the parse's inner loop, and GCC inlines read_plain_run
+// into parse_body only so (out of line it cost a call a block).
 
 #include "jtracer/schema.hpp"
 #include "language/scene_parser.hpp"
@@ -27,7 +28,7 @@ IndexRange append_records(std::vector<T>& all, std::span<const T> items) {
 }
 
 template <class Read>
-void SceneParser::read_properties(BlockSource& block, std::size_t level, Read read) {
+inline void SceneParser::read_properties(BlockSource& block, std::size_t level, Read read) {
     std::vector<PropertySource>& buffer = property_buffers_[level];
     buffer.clear();
     OpenBlock open{block, buffer};
@@ -39,8 +40,9 @@ void SceneParser::read_properties(BlockSource& block, std::size_t level, Read re
 }
 
 template <class OnProperty, class OnChild>
-void SceneParser::parse_body(BlockSource& block, std::span<const std::string_view> child_names,
-                             OnProperty on_property, OnChild on_child, bool included) {
+inline void SceneParser::parse_body(BlockSource& block,
+                                    std::span<const std::string_view> child_names,
+                                    OnProperty on_property, OnChild on_child, bool included) {
     if (tokens_behind_) {
         tokens_behind_ = false;
         read_plain_run(child_names, on_property, false);
@@ -103,8 +105,8 @@ void SceneParser::parse_body(BlockSource& block, std::span<const std::string_vie
 }
 
 template <class Target>
-bool SceneParser::parse_property_block(BlockSource& block, std::size_t level, Target& target,
-                                       std::string_view keyword) {
+inline bool SceneParser::parse_property_block(BlockSource& block, std::size_t level, Target& target,
+                                              std::string_view keyword) {
     if (!open_block(block, keyword.empty() ? static_keyword(cur_->text) : keyword,
                     /*behind=*/true))
         return false;
@@ -149,8 +151,8 @@ inline bool SceneParser::read_plain_value_in_place(Value& v) {
 }
 
 template <class OnProperty>
-bool SceneParser::read_plain_properties(std::span<const std::string_view> child_names,
-                                        OnProperty& on_property) {
+inline bool SceneParser::read_plain_properties(std::span<const std::string_view> child_names,
+                                               OnProperty& on_property) {
     if (next_->kind != TokenKind::colon) return false;
     if (!read_plain_value_in_place(property_.value)) return false;
     property_.name = cur_->text;
@@ -160,8 +162,8 @@ bool SceneParser::read_plain_properties(std::span<const std::string_view> child_
 }
 
 template <class OnProperty>
-void SceneParser::read_plain_run(std::span<const std::string_view> child_names,
-                                 OnProperty& on_property, bool pending) {
+inline void SceneParser::read_plain_run(std::span<const std::string_view> child_names,
+                                        OnProperty& on_property, bool pending) {
     Property& property = property_;
     Lexer::PlainProperty& plain = plain_property_;
     while (!sink_.stopped()) {
@@ -190,7 +192,7 @@ void SceneParser::read_plain_run(std::span<const std::string_view> child_names,
 }
 
 template <class Statements>
-void SceneParser::parse_include(Statements statements) {
+inline void SceneParser::parse_include(Statements statements) {
     IncludeResume resume;
     if (!enter_include(resume)) return;
     statements();

@@ -1,6 +1,6 @@
 // A primitive's body: its shape's properties, its material (a block of its
 // own, a named material it uses, or both: docs/language.md §15.2) and its
-// transforms, with the finish shared among primitives of equal finishes.
+// transforms.
 
 #include "jtracer/schema.hpp"
 #include "language/block_body.hpp"
@@ -175,20 +175,6 @@ const Symbol* SceneParser::read_material_reference() {
     }
     advance();
     return symbol->bad ? nullptr : symbol;
-}
-
-Shared<Finish> SceneParser::take_scratch_finish() {
-    if (scratch_finish_.unique())
-        scratch_finish_.edit() = Finish{};
-    else
-        scratch_finish_ = Shared<Finish>(Finish{});
-    return std::move(scratch_finish_);
-}
-
-void SceneParser::share_finish(Material& material) {
-    Shared<Finish> read = material.finish;
-    finishes_.share(material.finish);
-    if (!material.finish.shares_with(read)) scratch_finish_ = std::move(read);
 }
 
 }  // namespace jt::lang

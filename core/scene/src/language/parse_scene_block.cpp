@@ -1,7 +1,7 @@
 // The scene block: its primitives and lights, read into arrays sized once
 // from the counts made before the parse, with the pages of a large one
-// faulted in beside it, and taken from an earlier parse where they read no
-// `clock` (ParseOptions::earlier).
+// faulted in beside it; primitives of equal finishes share one, and those
+// that read no `clock` are taken from an earlier parse (ParseOptions::earlier).
 
 #include "io/page_warmer.hpp"
 #include "io/reserve_records.hpp"
@@ -26,7 +26,7 @@ constexpr std::size_t text_passed_step = std::size_t{4} << 20;
 
 // The default shape a primitive keyword opens, or nullopt for another word.
 template <std::size_t I = 0>
-std::optional<Shape> shape_of_keyword(std::string_view word) {
+inline std::optional<Shape> shape_of_keyword(std::string_view word) {
     if constexpr (I == std::variant_size_v<Shape>) {
         return std::nullopt;
     } else {
@@ -148,6 +148,20 @@ void SceneParser::report_text_passed() {
         return;
     next_text_passed_ = cur_->offset + text_passed_step;
     options_.text_passed(cur_->offset);
+}
+
+inline Shared<Finish> SceneParser::take_scratch_finish() {
+    if (scratch_finish_.unique())
+        scratch_finish_.edit() = Finish{};
+    else
+        scratch_finish_ = Shared<Finish>(Finish{});
+    return std::move(scratch_finish_);
+}
+
+inline void SceneParser::share_finish(Material& material) {
+    Shared<Finish> read = material.finish;
+    finishes_.share(material.finish);
+    if (!material.finish.shares_with(read)) scratch_finish_ = std::move(read);
 }
 
 }  // namespace jt::lang

@@ -87,7 +87,7 @@ class SceneParser final : private TokenCursor {
     ParseResult run();
 
   private:
-    // --- tokens -------------------------------------------------------------
+    // --- tokens --------------------------------------------------------------
 
     // The two tokens swap places: the lexer writes the new one in place (lexer.hpp).
     void advance() override {
@@ -98,7 +98,7 @@ class SceneParser final : private TokenCursor {
     const Token& peek() const override { return *next_; }
     bool at(TokenKind kind) const { return cur_->kind == kind; }
 
-    // --- skipping bad input (parse_blocks.cpp) --------------------------------
+    // --- skipping bad input (parse_blocks.cpp) -------------------------------
 
     // Skips a brace-balanced group starting at '{', with a counter, not recursion.
     void skip_braced();
@@ -152,7 +152,7 @@ class SceneParser final : private TokenCursor {
     // property of that name, with ':', is left to the block).
     bool top_level_only();
 
-    // --- values and properties (parse_values.cpp, block_body.hpp) -------------
+    // --- values and properties (parse_values.cpp, block_body.hpp) ------------
 
     // A value: a literal, a name or an expression, evaluated (§15.3). A lone
     // number before ';' takes a short path: most values of most scenes are one.
@@ -188,12 +188,13 @@ class SceneParser final : private TokenCursor {
     template <class OnProperty>
     void read_plain_run(std::span<const std::string_view> child_names, OnProperty& on_property,
                         bool pending);
-    // At a property's name: NAME ':' value ';' into `property`. False
-    // (reported and recovered) when it is not well-formed. `try_plain`: first
-    // as a plain value (read_plain_value), which the caller has not tried.
+    // At a property's name: NAME ':' value ';' into `property`; true when it
+    // applies. False (reported, skipped) with no ':' or no good value; a
+    // missing ';' is reported and the property applies. `try_plain`: first as
+    // a plain value (read_plain_value), which the caller has not tried.
     bool read_property(Property& property, bool try_plain);
 
-    // --- the scene block (parse_scene_block.cpp, parse_primitive.cpp) ---------
+    // --- the scene block (parse_scene_block.cpp) -----------------------------
 
     void parse_scene();
     // At the keyword of a block in `scene`: reads it into `into`.
@@ -207,20 +208,23 @@ class SceneParser final : private TokenCursor {
     // text: nothing before the token at hand is read again (the lookahead and
     // the lexer are past it).
     void report_text_passed();
+    // A finish of the parser's own, at its default value, for a primitive's
+    // material blocks to write into: reading a primitive allocates a finish
+    // only when it is one not met before (share_finish keeps that one).
+    // Both inline, defined beside parse_scene_child, their one caller.
+    inline Shared<Finish> take_scratch_finish();
+    // Makes the material share an equal finish met before; when it does, the
+    // finish it was read into is the scratch again.
+    inline void share_finish(Material& material);
+
+    // --- a primitive's body (parse_primitive.cpp) ----------------------------
+
     // Just past a primitive's '{': its properties and child blocks.
     void parse_primitive_body(Primitive& primitive, OpenBlock& open);
     // At `material` ':' in a primitive: reads `material: NAME;` whole and
     // returns the named material, or nullptr (reported).
     const Symbol* read_material_reference();
-    // A finish of the parser's own, at its default value, for a primitive's
-    // material blocks to write into: reading a primitive allocates a finish
-    // only when it is one not met before (share_finish keeps that one).
-    Shared<Finish> take_scratch_finish();
-    // Makes the material share an equal finish met before; when it does, the
-    // finish it was read into is the scratch again.
-    void share_finish(Material& material);
-
-    // --- a large scene block read in parts (scene_parts.cpp) ------------------
+    // --- a large scene block read in parts (scene_parts.cpp) -----------------
 
     // Just past a scene block's '{': starts threads reading the parts after
     // the first, when the rest of the text is large enough to share out.
@@ -237,7 +241,7 @@ class SceneParser final : private TokenCursor {
     // where it ended. False: read on here.
     bool take_scene_part(ScenePartThreads& parts, SceneChildren& into);
 
-    // --- names (parse_names.cpp, docs/language.md §15.2) ----------------------
+    // --- names (parse_names.cpp, docs/language.md §15.2) ---------------------
 
     // The --define values, evaluated before the file: a bad one (the front
     // ends check them first) is an error without a location.
@@ -251,7 +255,7 @@ class SceneParser final : private TokenCursor {
     void parse_named_material();
     std::size_t error_count() const { return static_cast<std::size_t>(sink_.error_count()); }
 
-    // --- include (parse_include.cpp, docs/language.md §15.6) ------------------
+    // --- include (parse_include.cpp, docs/language.md §15.6) -----------------
 
     // At `include`: include STRING ';'. The file's text is read right here,
     // by `statements`, with its own lexer; then reading resumes after the ';'.
