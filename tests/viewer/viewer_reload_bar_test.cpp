@@ -1,4 +1,4 @@
-// Issue 27 item 13: when the file changes under unsaved edits, the choice
+// When the file changes under unsaved edits, the choice
 // comes to the user, across the top of the image, with the differences
 // between the two texts; through the OSMesa frame code.
 

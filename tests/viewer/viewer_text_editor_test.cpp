@@ -87,7 +87,7 @@ class ViewerTextEditor : public ::testing::Test {
     std::string original;
 };
 
-// Issue 27 item 10: after Ctrl+Z undid the typing, one more Ctrl+Z, with
+// After Ctrl+Z undid the typing, one more Ctrl+Z, with
 // nothing left to undo, changed a byte of the next line (ImGui's own undo
 // acting at an offset into text the app had replaced), and redo was lost.
 TEST_F(ViewerTextEditor, CtrlZPastTheStartOfTheHistoryChangesNothingAndRedoComesBack) {
@@ -159,7 +159,7 @@ TEST_F(ViewerTextEditor, EscAfterAnUndoKeepsTheUndoneText) {
     EXPECT_EQ(text(), original);
 }
 
-// Issue 27 item 11: in `width: 64|;` three Backspaces and "123" typed 12 ms
+// In `width: 64|;` three Backspaces and "123" typed 12 ms
 // apart, at frame times from a fast frame to a slow one, give `width:123;`
 // (the characters came before the Backspaces of their frame).
 TEST_F(ViewerTextEditor, FastTypingKeepsItsOrderWhateverTheFrameRate) {
@@ -234,7 +234,7 @@ TEST_F(ViewerTextEditor, CtrlQInTheTextAsksBeforeQuitting) {
     EXPECT_EQ(text(), typed) << "Ctrl+Q typed nothing";
 }
 
-// Issue 27 item 12: a file broken on disk showed the old good text and "No
+// A file broken on disk showed the old good text and "No
 // errors" in the editor, and saving wrote the old text over the broken file.
 TEST_F(ViewerTextEditor, ABrokenFileOnDiskIsShownWithItsErrorsAndNeverSavedOver) {
     const std::string broken =
@@ -275,7 +275,7 @@ TEST_F(ViewerTextEditor, ABrokenFileOnDiskIsShownWithItsErrorsAndNeverSavedOver)
     EXPECT_EQ(read_file(file), original);
 }
 
-// Issue 27 item 15: typing at the end of a long line left the cursor out of
+// Typing at the end of a long line left the cursor out of
 // view (the editor did not scroll sideways), and a long error message was
 // cut off at the list's edge.
 TEST_F(ViewerTextEditor, TheViewFollowsTheCursorSidewaysAndLongErrorsWrap) {
@@ -317,7 +317,7 @@ TEST_F(ViewerTextEditor, TheViewFollowsTheCursorSidewaysAndLongErrorsWrap) {
     EXPECT_LE(item->rect.x1, window->rect.x1);
 }
 
-// Issue 27 item 18: while the text was being edited (after every keystroke,
+// While the text was being edited (after every keystroke,
 // until its check a quarter second later, and as long as it has errors) a
 // two-line note stood above the Camera panel: the sidebar under the mouse
 // moved 38 pixels down and back, and a click meant for a field hit another.
@@ -363,7 +363,7 @@ TEST_F(ViewerTextEditor, ADeletedFileSaysItWasDeletedAndKeepsTheText) {
     EXPECT_EQ(read_file(file), original);
 }
 
-// Issue 30 item 5: an included file is opened from the button above the
+// An included file is opened from the button above the
 // text, typed in (Ctrl+Z undoes that typing only), kept while another file
 // is shown, and Ctrl+S writes it into its file.
 TEST(ViewerIncludedFileEditor, OpensTypesUndoesAndSavesAnIncludedFile) {
