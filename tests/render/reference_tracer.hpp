@@ -51,12 +51,15 @@
 //   them, and the four turned rays need not meet them all: at a corner, or at
 //   a silhouette, perhaps none);
 // - a shadow ray passes within 1e-6 (barycentric) of an edge of a triangle
-//   before the light: then the ray traced with each such shadow ray turned
-//   just across the first such edge joins the variants. Such a shadow ray
-//   flags nothing when an opaque surface blocks it under any rounding (met
-//   farther than 1e-6 inside its edges, not near the ray's start or end), or
-//   when its light's whole term there, times its branch's weight in the
-//   pixel, summed over such rays, cannot move a byte of the pixel;
+//   before the light (passing outside a face that shares a corner with the
+//   one it leaves does not count: §13.5 meets that face only where the ray,
+//   in double precision, passes inside it): then the ray traced with each
+//   such shadow ray turned just across the first such edge joins the
+//   variants. Such a shadow ray flags nothing when an opaque surface blocks
+//   it under any rounding (met farther than 1e-6 inside its edges, not near
+//   the ray's start or end), or when its light's whole term there, times its
+//   branch's weight in the pixel, summed over such rays, cannot move a byte
+//   of the pixel;
 // - a reflected or refracted ray passes within 1e-6 (barycentric) outside an
 //   edge of a triangle: then the ray traced with every such ray meeting the
 //   triangles it passes that close to joins the variants (a single-precision
@@ -867,6 +870,11 @@ class Tracer {
     // the triangle's size (§13.5 allows the core that).
     static constexpr double kEdgeGraze = 1e-6;
 
+    // Farther than this (barycentric) outside a triangle, a double-precision
+    // test puts a ray outside it, in the reference's rounding and the core's
+    // alike (both move the ray into the model's space in double precision).
+    static constexpr double kNeighbourOutside = 1e-9;
+
     // Flags a shadow ray that passes within kEdgeGraze of an edge of a
     // triangle farther than 1e-6 (relative) from its start and nearer than
     // the light; with flags.turn_grazes, the direction of the ray turned just
@@ -885,6 +893,12 @@ class Tracer {
                     continue;
                 const double least = std::min({r.u, r.v, 1 - r.u - r.v});
                 if (std::abs(least) > kEdgeGraze) continue;
+                // §13.5: a face that shares a corner with the one the ray
+                // leaves is met only where the ray, in double precision,
+                // passes inside it: one passed outside is never met.
+                if (from.placed == k && q.model && least < -kNeighbourOutside &&
+                    shares_corner(*q.model, f, from.part))
+                    continue;
                 flags.edge_grazed = true;
                 flags.grazed = true;
                 if (!flags.turn_grazes) continue;
