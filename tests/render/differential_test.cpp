@@ -436,6 +436,10 @@ TEST(Differential, PinnedSeedsRenderAsTheReferenceSays) {
         // (barycentric) outside the shared edge, which §13.5 never meets
         // there; 8 pixels flagged for it, 9 in all (cap 7).
         {150443, {}, "1.1", language_1_1},
+        // A smooth mesh's face whose corner normals lie in its plane, lit
+        // only by a specular term under 1e-7 of a byte either side: 22
+        // pixels flagged for the side the normal turns to (cap 20).
+        {154472, {}, "1.1", language_1_1},
     };
     for (const Pinned& p : pinned) {
         const SeedResult r = check_seed(p.seed, {p.generate, p.features, p.name});

@@ -67,7 +67,8 @@
 // - a smooth normal lies within 1e-9 of its face's plane (a unit normal's dot
 //   product with the unit geometric one), where the side §13.5 turns it to
 //   is a matter of rounding: then the ray traced with each such normal
-//   turned to the other side joins the variants.
+//   turned to the other side joins the variants, and the pixel is flagged
+//   when that can move one of its bytes (or lies within rounding of one).
 // A light whose diffuse and specular terms at a point are zero, whatever
 // reaches it, casts no shadow ray there, so flags nothing.
 // With several samples a pixel, each sample's variants give it a least and a
@@ -338,7 +339,8 @@ class Tracer {
                     greatest += s.greatest;
                     ambiguous = ambiguous || s.ambiguous;
                     varies = varies || s.varies;
-                    grazes += s.graze_bound;
+                    // What grazed edges and in-plane normals can change it by.
+                    grazes += s.graze_bound + s.in_plane_bound;
                 }
                 const Colour mean = n == 1 ? single : sum / static_cast<double>(n);
                 const Rgb8 centre = quantize(mean);
@@ -372,6 +374,9 @@ class Tracer {
         Colour graze_bound{0.0};
         // Its colour depends on where its rays went (Flags::varies).
         bool varies = false;
+        // How far its colour moves with every smooth normal in its face's
+        // plane turned to the other side: all that side can change.
+        Colour in_plane_bound{0.0};
     };
 
     static Colour clamped(const Colour& c) { return glm::clamp(c, Colour(0.0), Colour(1.0)); }
@@ -443,7 +448,12 @@ class Tracer {
         if (flags.in_plane) {
             Flags turned = plain;
             turned.turn_in_plane = true;
-            variant(ray, false, turned);
+            const Colour other = trace(ray.origin, ray.direction, 0, {}, 0.0, false, turned);
+            out.least = glm::min(out.least, clamped(other));
+            out.greatest = glm::max(out.greatest, clamped(other));
+            // Unclamped: at least the change of the clamped colour it adds to
+            // the pixel's sum.
+            out.in_plane_bound = glm::abs(other - out.colour);
         }
         for (const auto& [placed, face] : faces_tied(ray.origin, ray.direction)) {
             Flags forced = plain;
@@ -993,10 +1003,7 @@ class Tracer {
                 // normals at its three corners lie in it): the side it turns
                 // to is the sign of a dot product that rounds about 0.
                 const double side = glm::dot(n, ng);
-                if (std::abs(side) <= kInPlaneNormal) {
-                    flags.ambiguous = true;
-                    flags.in_plane = true;
-                }
+                if (std::abs(side) <= kInPlaneNormal) flags.in_plane = true;
                 if (side < 0) n = -n;
                 if (flags.turn_in_plane && std::abs(side) <= kInPlaneNormal) n = -n;
             }
