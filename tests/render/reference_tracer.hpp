@@ -51,12 +51,15 @@
 //   them, and the four turned rays need not meet them all: at a corner, or at
 //   a silhouette, perhaps none);
 // - a shadow ray passes within 1e-6 (barycentric) of an edge of a triangle
-//   before the light: then the ray traced with each such shadow ray turned
-//   just across the first such edge joins the variants. Such a shadow ray
-//   flags nothing when an opaque surface blocks it under any rounding (met
-//   farther than 1e-6 inside its edges, not near the ray's start or end), or
-//   when its light's whole term there, times its branch's weight in the
-//   pixel, summed over such rays, cannot move a byte of the pixel;
+//   before the light (passing outside a face that shares a corner with the
+//   one it leaves does not count: §13.5 meets that face only where the ray,
+//   in double precision, passes inside it): then the ray traced with each
+//   such shadow ray turned just across the first such edge joins the
+//   variants. Such a shadow ray flags nothing when an opaque surface blocks
+//   it under any rounding (met farther than 1e-6 inside its edges, not near
+//   the ray's start or end), or when its light's whole term there, times its
+//   branch's weight in the pixel, summed over such rays, cannot move a byte
+//   of the pixel;
 // - a reflected or refracted ray passes within 1e-6 (barycentric) outside an
 //   edge of a triangle: then the ray traced with every such ray meeting the
 //   triangles it passes that close to joins the variants (a single-precision
@@ -64,7 +67,8 @@
 // - a smooth normal lies within 1e-9 of its face's plane (a unit normal's dot
 //   product with the unit geometric one), where the side §13.5 turns it to
 //   is a matter of rounding: then the ray traced with each such normal
-//   turned to the other side joins the variants.
+//   turned to the other side joins the variants, and the pixel is flagged
+//   when that can move one of its bytes (or lies within rounding of one).
 // A light whose diffuse and specular terms at a point are zero, whatever
 // reaches it, casts no shadow ray there, so flags nothing.
 // With several samples a pixel, each sample's variants give it a least and a
@@ -335,7 +339,8 @@ class Tracer {
                     greatest += s.greatest;
                     ambiguous = ambiguous || s.ambiguous;
                     varies = varies || s.varies;
-                    grazes += s.graze_bound;
+                    // What grazed edges and in-plane normals can change it by.
+                    grazes += s.graze_bound + s.in_plane_bound;
                 }
                 const Colour mean = n == 1 ? single : sum / static_cast<double>(n);
                 const Rgb8 centre = quantize(mean);
@@ -369,6 +374,9 @@ class Tracer {
         Colour graze_bound{0.0};
         // Its colour depends on where its rays went (Flags::varies).
         bool varies = false;
+        // How far its colour moves with every smooth normal in its face's
+        // plane turned to the other side: all that side can change.
+        Colour in_plane_bound{0.0};
     };
 
     static Colour clamped(const Colour& c) { return glm::clamp(c, Colour(0.0), Colour(1.0)); }
@@ -440,7 +448,12 @@ class Tracer {
         if (flags.in_plane) {
             Flags turned = plain;
             turned.turn_in_plane = true;
-            variant(ray, false, turned);
+            const Colour other = trace(ray.origin, ray.direction, 0, {}, 0.0, false, turned);
+            out.least = glm::min(out.least, clamped(other));
+            out.greatest = glm::max(out.greatest, clamped(other));
+            // Unclamped: at least the change of the clamped colour it adds to
+            // the pixel's sum.
+            out.in_plane_bound = glm::abs(other - out.colour);
         }
         for (const auto& [placed, face] : faces_tied(ray.origin, ray.direction)) {
             Flags forced = plain;
@@ -867,6 +880,11 @@ class Tracer {
     // the triangle's size (§13.5 allows the core that).
     static constexpr double kEdgeGraze = 1e-6;
 
+    // Farther than this (barycentric) outside a triangle, a double-precision
+    // test puts a ray outside it, in the reference's rounding and the core's
+    // alike (both move the ray into the model's space in double precision).
+    static constexpr double kNeighbourOutside = 1e-9;
+
     // Flags a shadow ray that passes within kEdgeGraze of an edge of a
     // triangle farther than 1e-6 (relative) from its start and nearer than
     // the light; with flags.turn_grazes, the direction of the ray turned just
@@ -885,6 +903,12 @@ class Tracer {
                     continue;
                 const double least = std::min({r.u, r.v, 1 - r.u - r.v});
                 if (std::abs(least) > kEdgeGraze) continue;
+                // §13.5: a face that shares a corner with the one the ray
+                // leaves is met only where the ray, in double precision,
+                // passes inside it: one passed outside is never met.
+                if (from.placed == k && q.model && least < -kNeighbourOutside &&
+                    shares_corner(*q.model, f, from.part))
+                    continue;
                 flags.edge_grazed = true;
                 flags.grazed = true;
                 if (!flags.turn_grazes) continue;
@@ -979,10 +1003,7 @@ class Tracer {
                 // normals at its three corners lie in it): the side it turns
                 // to is the sign of a dot product that rounds about 0.
                 const double side = glm::dot(n, ng);
-                if (std::abs(side) <= kInPlaneNormal) {
-                    flags.ambiguous = true;
-                    flags.in_plane = true;
-                }
+                if (std::abs(side) <= kInPlaneNormal) flags.in_plane = true;
                 if (side < 0) n = -n;
                 if (flags.turn_in_plane && std::abs(side) <= kInPlaneNormal) n = -n;
             }
