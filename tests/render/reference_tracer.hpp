@@ -4,12 +4,12 @@
 // and meshes, flat and smooth; refraction and transmitted shadows; image maps on
 // triangles; the pixel hash, lights with a radius, the lens, sky maps,
 // generated smooth normals and an OBJ's Kd per usemtl), for the differential
-// test, written from the text of SEMANTICS.md §5-§9.5: the R2 samples of each pixel (one at its
-// centre by default), every ray tested against every primitive in that primitive's own object
-// space, in double precision; no acceleration structure, no tables, no tiles,
-// no code shared with the core (only the Scene values and glm's vector
-// arithmetic). It reads no file: the generator hands it the triangles and
-// texels it wrote (Files).
+// test, written from the text of those sections alone: the R2 samples of each
+// pixel (one at its centre by default), every ray tested against every
+// primitive in that primitive's own object space, in double precision; no
+// acceleration structure, no tables, no tiles, no code shared with the core
+// (only the Scene values and glm's vector arithmetic). It reads no file: the
+// generator hands it the triangles and texels it wrote (Files).
 //
 // Secondary rays start exactly on the surface: the root of the ray's own
 // primitive at the start point is removed algebraically (the other root of a
@@ -215,7 +215,7 @@ inline double sample_offset(double step, int k) {
 }
 inline constexpr double kR2X = 0.7548776662466927, kR2Y = 0.5698402909980532;
 
-// The angle SEMANTICS.md §9.0 takes from pixel (i, j) and an integer s.
+// The angle docs/language.md §14.0 takes from pixel (i, j) and an integer s.
 inline double pixel_angle(int i, int j, int s) {
     std::uint32_t h = (static_cast<std::uint32_t>(i) * 73856093u) ^
                       (static_cast<std::uint32_t>(j) * 19349663u) ^
@@ -1094,7 +1094,7 @@ class Tracer {
         return c;
     }
 
-    // SEMANTICS.md §9.1: the diffuse and specular terms of a light of radius
+    // docs/language.md §14.1: the diffuse and specular terms of a light of radius
     // r > 0 at hit point p, its intensity scaled by the share of the points of
     // its disk that p sees. `start`: where the point light's shadow ray would
     // start (p, or p lifted along ng).
@@ -1157,7 +1157,7 @@ class Tracer {
         return c;
     }
 
-    // SEMANTICS.md §9.4: each corner's normal, the area-weighted sum of the
+    // docs/language.md §14.4: each corner's normal, the area-weighted sum of the
     // faces that share its position within `degrees` of the corner's face,
     // in file order (the face itself always counts).
     static std::vector<std::array<Vec3, 3>> generated_normals(const Model& model, double degrees) {
@@ -1185,7 +1185,7 @@ class Tracer {
         return out;
     }
 
-    // SEMANTICS.md §9.3: the sky map in unit direction d, u wrapped, v held
+    // docs/language.md §14.3: the sky map in unit direction d, u wrapped, v held
     // at the poles.
     static Colour sky(const Picture& picture, const Vec3& d) {
         const double u = 0.5 + std::atan2(d.x, -d.z) / (2 * std::numbers::pi);
