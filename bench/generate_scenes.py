@@ -8,6 +8,7 @@ Two scenes also write the model file they name beside them (knot_100k.ply,
 knot_1m.ply).
 
 usage: generate_scenes.py OUT_DIR [--showcase PATH] [--skip-million] [--only NAME ...]
+       generate_scenes.py --list-race   (the race scenes' names, for bench/run.sh)
 """
 
 import argparse
@@ -373,7 +374,8 @@ def separate_spheres(out, size):
 
 
 # name -> writer(out, size) of the race against Tachyon, written at both sizes:
-# NAME at 1920x1080, NAME_1024 at 1024x1024.
+# NAME at 1920x1080, NAME_1024 at 1024x1024. The one list of them: race.py,
+# targets.py and run.sh take it from here.
 TACHYON_SCENES = {
     "sphereflake": sphereflake,
     "nested_shells": nested_shells,
@@ -386,12 +388,19 @@ TACHYON_SCENES = {
 
 def main():
     parser = argparse.ArgumentParser(description=__doc__.splitlines()[0])
-    parser.add_argument("out_dir")
+    parser.add_argument("out_dir", nargs="?")
+    parser.add_argument("--list-race", action="store_true",
+                        help="print the names of the race scenes at 1920x1080 and write nothing")
     parser.add_argument("--showcase", default=os.path.join(os.path.dirname(__file__), "..", "scenes", "showcase.jts"))
     parser.add_argument("--skip-million", action="store_true",
                         help="leave out spheres_1m, spheres_1m_320 and mesh_1m")
     parser.add_argument("--only", nargs="*", help="write only the scenes with these names")
     args = parser.parse_args()
+    if args.list_race:
+        print("\n".join(TACHYON_SCENES))
+        return 0
+    if args.out_dir is None:
+        parser.error("the folder to write the scenes into is missing")
 
     scenes = {
         "showcase": lambda out: showcase(out, args.showcase),

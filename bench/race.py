@@ -29,6 +29,9 @@ import subprocess
 import sys
 import time
 
+sys.path.insert(0, os.path.dirname(os.path.abspath(__file__)))
+from generate_scenes import TACHYON_SCENES  # noqa: E402
+
 SUMMARY = re.compile(r"wrote .*?: (\d+)x(\d+), .*?, ([\d.]+) s, ([\d.]+) (M )?rays")
 
 
@@ -90,8 +93,7 @@ def jtracer_rays(output):
 # The scenes in the order of the table; the generator writes them all.
 ORDER = ["showcase", "hall_of_mirrors", "forest", "lights16", "spheres_1k", "spheres_10k",
          "spheres_100k", "spheres_1m_320", "spheres_1m", "mesh_100k", "mesh_1m"]
-TACHYON_SCENES = ["sphereflake", "nested_shells", "spheres_5761", "lattice", "tree", "few"]
-ORDER += TACHYON_SCENES + [n + "_1024" for n in TACHYON_SCENES]
+ORDER += list(TACHYON_SCENES) + [n + "_1024" for n in TACHYON_SCENES]
 
 
 def scene_names(scenes_dir, only):

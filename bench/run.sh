@@ -63,9 +63,12 @@ cmake -S "$repo" -B "$build" -G Ninja -DCMAKE_BUILD_TYPE=Release \
     -DJT_BUILD_TESTS=OFF -DJT_BUILD_VIEWER=OFF -DJT_BUILD_MPI=OFF -DJT_BUILD_BENCH=ON >/dev/null
 cmake --build "$build" --target jtracer-cli jts-to-pov jts-to-tachyon kernel-limit -- -j"$(nproc)"
 
-target_scenes=(sphereflake nested_shells spheres_5761 lattice tree few
-               sphereflake_1024 nested_shells_1024 spheres_5761_1024 lattice_1024 tree_1024 few_1024
-               spheres_1m_320 spheres_1m)
+# The race against Tachyon's scenes at 1920x1080, and the scenes of the targets:
+# generate_scenes.py and targets.py hold the lists.
+mapfile -t race_scenes < <(python3 "$repo/bench/generate_scenes.py" --list-race)
+mapfile -t target_scenes < <(python3 "$repo/bench/targets.py" --list-scenes)
+[[ ${#race_scenes[@]} -gt 0 && ${#target_scenes[@]} -gt 0 ]] || {
+    echo "run.sh: cannot list the scenes" >&2; exit 1; }
 if [[ $targets -eq 1 && ${#only[@]} -eq 0 ]]; then
     only=("${target_scenes[@]}" mesh_1m)
 fi
@@ -84,7 +87,7 @@ if [[ $kernel_limit -eq 1 ]]; then
     if [[ ${#only[@]} -gt 0 ]]; then
         limit+=(--only "${only[@]}")
     else
-        limit+=(--only sphereflake nested_shells spheres_5761 lattice tree few)
+        limit+=(--only "${race_scenes[@]}")
     fi
     echo "== JTracer against the kernel limit ($runs runs each, $threads threads)"
     "${limit[@]}"
@@ -125,7 +128,7 @@ race=(python3 "$repo/bench/race.py" --cli "$build/cli/jtracer-cli" --converter "
 if [[ ${#only[@]} -gt 0 ]]; then
     race+=(--only "${only[@]}")
 elif [[ $quick -eq 1 ]]; then
-    race+=(--only showcase lights16 spheres_10k sphereflake nested_shells spheres_5761 lattice tree few)
+    race+=(--only showcase lights16 spheres_10k "${race_scenes[@]}")
 fi
 echo "== racing ($runs runs each, $threads threads); images in $work/images"
 "${race[@]}"

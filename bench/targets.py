@@ -15,6 +15,7 @@ and, beside each scene, JTracer's rays per second as a share of Embree's native
 kernel (no target: how far from the kernel's limit the tracer is).
 
 usage: targets.py [--race FILE] [--kernel FILE] [--startup FILE]
+       targets.py --list-scenes   (for bench/run.sh)
 """
 
 import argparse
@@ -22,7 +23,10 @@ import json
 import os
 import sys
 
-RACE_SCENES = ["sphereflake", "nested_shells", "spheres_5761", "lattice", "tree", "few"]
+sys.path.insert(0, os.path.dirname(os.path.abspath(__file__)))
+from generate_scenes import TACHYON_SCENES  # noqa: E402
+
+RACE_SCENES = list(TACHYON_SCENES)
 SCENES = RACE_SCENES + [n + "_1024" for n in RACE_SCENES] + ["spheres_1m_320", "spheres_1m"]
 TACHYON_TARGET = 1.0 / 3.0
 POVRAY_TARGET = 1.0 / 6.0
@@ -58,7 +62,12 @@ def main():
     parser.add_argument("--race")
     parser.add_argument("--kernel")
     parser.add_argument("--startup")
+    parser.add_argument("--list-scenes", action="store_true",
+                        help="print the scenes the targets are measured on and stop")
     args = parser.parse_args()
+    if args.list_scenes:
+        print("\n".join(SCENES))
+        return 0
     race, kernel, startup = load(args.race), load(args.kernel), load(args.startup)
     by_name = {s["name"]: s for s in race["scenes"]} if race else {}
     shares = {s["name"]: s["share"] for s in kernel["scenes"]} if kernel else {}

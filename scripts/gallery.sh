@@ -20,16 +20,21 @@ gallery_width=320
     echo "Each comes with the command that renders it at the scene's own size. The manual's"
     echo "examples that give no material render black, as the language's defaults say: their"
     echo "scenes add a background so that the shape shows as a silhouette."
-    for scene in scenes/showcase.jts scenes/manual/*.jts; do
-        name=$(basename "$scene" .jts)
-        [ "$scene" = scenes/showcase.jts ] || name=manual_$name
+    # The showcase first, the other scenes, then the manual's examples; orbit.jts,
+    # an animation, gets a contact sheet below.
+    for scene in scenes/showcase.jts $(ls scenes/*.jts scenes/*/main.jts |
+        grep -v -e '^scenes/showcase.jts$' -e '^scenes/orbit.jts$') scenes/manual/*.jts; do
+        # Named as tests/references/ names it: the path's folders joined with _.
+        name=$(echo "${scene#scenes/}" | sed 's/\.jts$//; s#/#_#g')
         # The render_settings' width and height (the first two integer sizes).
         read -r width height <<<"$(sed -n 's/^ *\(width\|height\): *\([0-9]*\);.*/\2/p' "$scene" |
             head -2 | tr '\n' ' ')"
         small_height=$((height * gallery_width / width))
         "$cli" -q "$scene" -o "docs/images/$name.png" --width "$gallery_width" \
             --height "$small_height"
-        title=$(sed -n '1s/^# *//p' "$scene")
+        # The first sentence of the scene's opening comment.
+        title=$(awk '/^#/ { sub(/^# */, ""); printf "%s ", $0; next } { exit }' "$scene" |
+            sed 's/\([.]\)[[:space:]].*/\1/; s/[[:space:]]*$//')
         echo
         echo "## \`$scene\`"
         echo

@@ -21,7 +21,7 @@ fail() {
     echo "install-test: FAIL: $*" >&2
     exit 1
 }
-# The reference images tests/render/reference_test.cpp renders at 160x90;
+# The reference images tests/render/reference_images_test.cpp renders at 160x90;
 # mesh.jts reads a model file, through the model reader module.
 reference=$source/tests/references/showcase.png
 mesh_reference=$source/tests/references/mesh.png

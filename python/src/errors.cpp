@@ -35,7 +35,7 @@ std::string header_line(const PythonDiagnostic& d) {
     return text.substr(0, text.find('\n'));
 }
 
-// The exception class, made once by bind_diagnostics and kept for the life of
+// The exception class, made once by bind_errors and kept for the life of
 // the process (a module's types are never unloaded).
 PyObject* scene_error_type = nullptr;
 

@@ -21,7 +21,7 @@ std::size_t line_of(std::string_view text, std::string_view part) {
 }
 
 // A primitive goes with the primitives (after the last, before the lights
-// that follow it: issue 27 item 17), a light after the last item.
+// that follow it), a light after the last item.
 TEST(AddBlock, EveryKindGoesAfterTheLastOfItsKindInTheBlocksStyle) {
     const Parsed base(kEditScene);
     const std::size_t close = base.text.rfind("}\n");

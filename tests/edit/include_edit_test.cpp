@@ -1,4 +1,4 @@
-// Save-in-place of values read from included files (docs/language.md §15.5):
+// Save-in-place of values read from included files (docs/language.md §15.6):
 // an edit is written into the file that holds the value, every other byte of
 // every file unchanged.
 

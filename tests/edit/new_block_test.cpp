@@ -63,8 +63,8 @@ TEST(NewBlock, APlaneBelowTheViewAndACylinderStandingInIt) {
     EXPECT_EQ(cylinder.transforms[0].vector.z, 5.0);
 }
 
-// Issue 27 item 17: a plane in new_scene() lay at distance 0.67, through
-// the middle of the view; it goes at the view's floor, under the objects.
+// A plane added to new_scene() goes at the view's floor, under the objects,
+// not through the middle of the view.
 TEST(NewBlock, APlaneGoesAtTheViewsFloorUnderTheObjects) {
     Scene scene = new_scene();
     EXPECT_EQ(scene.cameras[0].name, "main");

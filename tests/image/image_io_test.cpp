@@ -189,6 +189,23 @@ TEST(AtomicFile, FailureNamesTheFileAndWritesNothing) {
     EXPECT_TRUE(fs::is_directory(dir / "taken.bmp"));
 }
 
+// A file replaced keeps its permissions (the temporary file would give it 0644).
+TEST(AtomicFile, AReplacedFileKeepsItsMode) {
+    const fs::path dir = make_scratch_dir("keeps_mode");
+    const fs::path target = dir / "private.bin";
+    const std::vector<std::uint8_t> first{1, 2, 3}, second{4, 5};
+    ASSERT_TRUE(write_file_atomically(target, first));
+    EXPECT_EQ(fs::status(target).permissions() & fs::perms::all,
+              fs::perms::owner_read | fs::perms::owner_write | fs::perms::group_read |
+                  fs::perms::others_read);
+    const fs::perms mode = fs::perms::owner_all | fs::perms::group_read;
+    fs::permissions(target, mode);
+    const Expected<void> written = write_file_atomically(target, second);
+    ASSERT_TRUE(written) << written.error().message;
+    EXPECT_EQ(test::read_file(target), std::string("\x04\x05"));
+    EXPECT_EQ(fs::status(target).permissions() & fs::perms::all, mode);
+}
+
 TEST(AtomicFile, NewFileNeverReplacesOneAndLeavesNoTemporary) {
     fs::path dir = make_scratch_dir("new_file");
     const fs::path target = dir / "new.bin";

@@ -1,4 +1,4 @@
-// Language 1.3 expressions (docs/language.md §15.3, SEMANTICS.md §10.3).
+// Language 1.3 expressions (docs/language.md §15.3).
 
 #include "jtracer/parser.hpp"
 #include "jtracer/schema.hpp"

@@ -1,4 +1,4 @@
-// Language 1.3 `include` (docs/language.md §15.5): files read in place, paths,
+// Language 1.3 `include` (docs/language.md §15.6): files read in place, paths,
 // depth, cycles, missing files, names across files and located messages.
 
 #include "common/files.hpp"

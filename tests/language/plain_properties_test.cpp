@@ -1,6 +1,6 @@
 // A run of properties written directly one after another on a line
 // (`center:<1,2,3>;radius:0.5;`, as generators write) is read without tokens
-// for the names and ':' (parser.cpp's read_plain_run). These tests hold that
+// for the names and ':' (block_body.hpp's read_plain_run). These tests hold that
 // reading to the tokens' (ParseOptions::plain_properties = false) on random
 // texts, dense and laid out, well formed and not: the same scene, the same
 // source map, the same diagnostics in the same order, the same readings.

@@ -243,23 +243,24 @@ TEST(DirectionTable, TheSameWhateverTheThreads) {
 }
 
 TEST(DirectionTable, ALongListIsWalkedOnlyUpToTheRaysOrigin) {
-    // Forty spheres in a row away from the light share its cells, a list
-    // longer than a walk takes. A shadow ray from between two of them meets
-    // only those nearer the light: from near the light the walk is short,
-    // from far along the row the BVH answers. Either way the answer is the
-    // one without the table, blocked from behind the first sphere on.
+    // A row of spheres away from the light shares its cells, a list longer
+    // than a walk takes (max_light_walk). A shadow ray from between two of
+    // them meets only those nearer the light: from near the light the walk
+    // is short, from far along the row the BVH answers. Either way the answer
+    // is the one without the table, blocked from behind the first sphere on.
+    constexpr int row = static_cast<int>(max_light_walk) + 40;
     Scene scene;
-    for (int i = 0; i < 40; ++i)
+    for (int i = 0; i < row; ++i)
         scene.primitives.push_back(sphere({0.01 * (i % 3), 0, -2.0 * i}, 0.5));
     auto prepared = prepare_scene(scene).value();
     const Geometry& g = *prepared->geometry;
     const Vec3 light{0, 0, 10};
-    DirectionTable table = build_direction_table(g, light, table_resolution(40));
+    DirectionTable table = build_direction_table(g, light, table_resolution(row));
     ASSERT_GT(table.resolution, 0);
     const auto listed = shapes_toward(table, {0, 0, -1});
     ASSERT_TRUE(listed);
-    ASSERT_GT(listed->size(), 20u) << "one cell lists the whole row";
-    for (int gap = 0; gap < 39; ++gap) {
+    ASSERT_GT(listed->size(), max_light_walk + 20) << "one cell lists the whole row";
+    for (int gap = 0; gap < row - 1; ++gap) {
         for (double side : {0.0, 0.3, 0.49, 0.51}) {
             const Vec3 origin{side, 0.2, -2.0 * gap - 1.0};
             const Vec3 to_light = light - origin;

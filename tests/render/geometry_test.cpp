@@ -93,8 +93,8 @@ TEST(Affine, MapsLeavingTheDoublesAreLeftOut) {
     EXPECT_EQ(verdict({translate({1e308, 0, 0}), translate({1e308, 0, 0})}), "out of range at 1");
     EXPECT_EQ(verdict({translate({std::nan(""), 0, 0})}), "out of range at 0");
     EXPECT_EQ(verdict({scale({1e-310, 1, 1})}), "out of range at 0") << "1/s overflows";
-    // det = 1e-300: the old determinant test was right here, but a product of
-    // two such lists would have rounded to 0.
+    // det = 1e-300, and placed: a determinant test would place this list too,
+    // but not the product of two such lists, whose determinant rounds to 0.
     const std::vector<TransformOp> flat = {scale({1e-100, 1e-100, 1e-100}),
                                            rotate(TransformKind::zrotate, 30)};
     auto placed = object_transform(flat);
@@ -114,7 +114,7 @@ TEST(Affine, UnitLengthOfTinyAndHugeVectors) {
     EXPECT_FALSE(unit_length({0, 0, 0}));
     EXPECT_FALSE(unit_length({1, std::nan(""), 0}));
     EXPECT_FALSE(unit_length({std::numeric_limits<double>::infinity(), 0, 0}));
-    // In the ordinary range it is exactly v / |v|, as before.
+    // In the ordinary range it is exactly v / |v|.
     const Vec3 v(0.3, -1.7, 2.9);
     EXPECT_EQ(unit_length(v), v / glm::length(v));
 }

@@ -4,12 +4,12 @@
 // and meshes, flat and smooth; refraction and transmitted shadows; image maps on
 // triangles; the pixel hash, lights with a radius, the lens, sky maps,
 // generated smooth normals and an OBJ's Kd per usemtl), for the differential
-// test, written from the text of SEMANTICS.md §5-§9.5: the R2 samples of each pixel (one at its
-// centre by default), every ray tested against every primitive in that primitive's own object
-// space, in double precision; no acceleration structure, no tables, no tiles,
-// no code shared with the core (only the Scene values and glm's vector
-// arithmetic). It reads no file: the generator hands it the triangles and
-// texels it wrote (Files).
+// test, written from the text of those sections alone: the R2 samples of each
+// pixel (one at its centre by default), every ray tested against every
+// primitive in that primitive's own object space, in double precision; no
+// acceleration structure, no tables, no tiles, no code shared with the core
+// (only the Scene values and glm's vector arithmetic). It reads no file: the
+// generator hands it the triangles and texels it wrote (Files).
 //
 // Secondary rays start exactly on the surface: the root of the ray's own
 // primitive at the start point is removed algebraically (the other root of a
@@ -51,12 +51,15 @@
 //   them, and the four turned rays need not meet them all: at a corner, or at
 //   a silhouette, perhaps none);
 // - a shadow ray passes within 1e-6 (barycentric) of an edge of a triangle
-//   before the light: then the ray traced with each such shadow ray turned
-//   just across the first such edge joins the variants. Such a shadow ray
-//   flags nothing when an opaque surface blocks it under any rounding (met
-//   farther than 1e-6 inside its edges, not near the ray's start or end), or
-//   when its light's whole term there, times its branch's weight in the
-//   pixel, summed over such rays, cannot move a byte of the pixel;
+//   before the light (passing outside a face that shares a corner with the
+//   one it leaves does not count: §13.5 meets that face only where the ray,
+//   in double precision, passes inside it): then the ray traced with each
+//   such shadow ray turned just across the first such edge joins the
+//   variants. Such a shadow ray flags nothing when an opaque surface blocks
+//   it under any rounding (met farther than 1e-6 inside its edges, not near
+//   the ray's start or end), or when its light's whole term there, times its
+//   branch's weight in the pixel, summed over such rays, cannot move a byte
+//   of the pixel;
 // - a reflected or refracted ray passes within 1e-6 (barycentric) outside an
 //   edge of a triangle: then the ray traced with every such ray meeting the
 //   triangles it passes that close to joins the variants (a single-precision
@@ -64,7 +67,8 @@
 // - a smooth normal lies within 1e-9 of its face's plane (a unit normal's dot
 //   product with the unit geometric one), where the side §13.5 turns it to
 //   is a matter of rounding: then the ray traced with each such normal
-//   turned to the other side joins the variants.
+//   turned to the other side joins the variants, and the pixel is flagged
+//   when that can move one of its bytes (or lies within rounding of one).
 // A light whose diffuse and specular terms at a point are zero, whatever
 // reaches it, casts no shadow ray there, so flags nothing.
 // With several samples a pixel, each sample's variants give it a least and a
@@ -211,7 +215,7 @@ inline double sample_offset(double step, int k) {
 }
 inline constexpr double kR2X = 0.7548776662466927, kR2Y = 0.5698402909980532;
 
-// The angle SEMANTICS.md §9.0 takes from pixel (i, j) and an integer s.
+// The angle docs/language.md §14.0 takes from pixel (i, j) and an integer s.
 inline double pixel_angle(int i, int j, int s) {
     std::uint32_t h = (static_cast<std::uint32_t>(i) * 73856093u) ^
                       (static_cast<std::uint32_t>(j) * 19349663u) ^
@@ -335,7 +339,8 @@ class Tracer {
                     greatest += s.greatest;
                     ambiguous = ambiguous || s.ambiguous;
                     varies = varies || s.varies;
-                    grazes += s.graze_bound;
+                    // What grazed edges and in-plane normals can change it by.
+                    grazes += s.graze_bound + s.in_plane_bound;
                 }
                 const Colour mean = n == 1 ? single : sum / static_cast<double>(n);
                 const Rgb8 centre = quantize(mean);
@@ -369,6 +374,9 @@ class Tracer {
         Colour graze_bound{0.0};
         // Its colour depends on where its rays went (Flags::varies).
         bool varies = false;
+        // How far its colour moves with every smooth normal in its face's
+        // plane turned to the other side: all that side can change.
+        Colour in_plane_bound{0.0};
     };
 
     static Colour clamped(const Colour& c) { return glm::clamp(c, Colour(0.0), Colour(1.0)); }
@@ -440,7 +448,12 @@ class Tracer {
         if (flags.in_plane) {
             Flags turned = plain;
             turned.turn_in_plane = true;
-            variant(ray, false, turned);
+            const Colour other = trace(ray.origin, ray.direction, 0, {}, 0.0, false, turned);
+            out.least = glm::min(out.least, clamped(other));
+            out.greatest = glm::max(out.greatest, clamped(other));
+            // Unclamped: at least the change of the clamped colour it adds to
+            // the pixel's sum.
+            out.in_plane_bound = glm::abs(other - out.colour);
         }
         for (const auto& [placed, face] : faces_tied(ray.origin, ray.direction)) {
             Flags forced = plain;
@@ -867,6 +880,11 @@ class Tracer {
     // the triangle's size (§13.5 allows the core that).
     static constexpr double kEdgeGraze = 1e-6;
 
+    // Farther than this (barycentric) outside a triangle, a double-precision
+    // test puts a ray outside it, in the reference's rounding and the core's
+    // alike (both move the ray into the model's space in double precision).
+    static constexpr double kNeighbourOutside = 1e-9;
+
     // Flags a shadow ray that passes within kEdgeGraze of an edge of a
     // triangle farther than 1e-6 (relative) from its start and nearer than
     // the light; with flags.turn_grazes, the direction of the ray turned just
@@ -885,6 +903,12 @@ class Tracer {
                     continue;
                 const double least = std::min({r.u, r.v, 1 - r.u - r.v});
                 if (std::abs(least) > kEdgeGraze) continue;
+                // §13.5: a face that shares a corner with the one the ray
+                // leaves is met only where the ray, in double precision,
+                // passes inside it: one passed outside is never met.
+                if (from.placed == k && q.model && least < -kNeighbourOutside &&
+                    shares_corner(*q.model, f, from.part))
+                    continue;
                 flags.edge_grazed = true;
                 flags.grazed = true;
                 if (!flags.turn_grazes) continue;
@@ -979,10 +1003,7 @@ class Tracer {
                 // normals at its three corners lie in it): the side it turns
                 // to is the sign of a dot product that rounds about 0.
                 const double side = glm::dot(n, ng);
-                if (std::abs(side) <= kInPlaneNormal) {
-                    flags.ambiguous = true;
-                    flags.in_plane = true;
-                }
+                if (std::abs(side) <= kInPlaneNormal) flags.in_plane = true;
                 if (side < 0) n = -n;
                 if (flags.turn_in_plane && std::abs(side) <= kInPlaneNormal) n = -n;
             }
@@ -1073,7 +1094,7 @@ class Tracer {
         return c;
     }
 
-    // SEMANTICS.md §9.1: the diffuse and specular terms of a light of radius
+    // docs/language.md §14.1: the diffuse and specular terms of a light of radius
     // r > 0 at hit point p, its intensity scaled by the share of the points of
     // its disk that p sees. `start`: where the point light's shadow ray would
     // start (p, or p lifted along ng).
@@ -1136,7 +1157,7 @@ class Tracer {
         return c;
     }
 
-    // SEMANTICS.md §9.4: each corner's normal, the area-weighted sum of the
+    // docs/language.md §14.4: each corner's normal, the area-weighted sum of the
     // faces that share its position within `degrees` of the corner's face,
     // in file order (the face itself always counts).
     static std::vector<std::array<Vec3, 3>> generated_normals(const Model& model, double degrees) {
@@ -1164,7 +1185,7 @@ class Tracer {
         return out;
     }
 
-    // SEMANTICS.md §9.3: the sky map in unit direction d, u wrapped, v held
+    // docs/language.md §14.3: the sky map in unit direction d, u wrapped, v held
     // at the poles.
     static Colour sky(const Picture& picture, const Vec3& d) {
         const double u = 0.5 + std::atan2(d.x, -d.z) / (2 * std::numbers::pi);

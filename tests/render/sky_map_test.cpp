@@ -213,7 +213,7 @@ TEST_F(SkyMap, ShadowsAndTheAmbientTermDoNotUseIt) {
     EXPECT_EQ(at(render(s), 12, 12), (Rgb{255, 255, 255}));
 }
 
-// Without a map a ray that meets nothing is `background`, as before.
+// Without a map a ray that meets nothing is `background` (docs/language.md §8.4).
 TEST_F(SkyMap, WithoutAMapMissesAreTheBackground) {
     Scene s = looking({0, 0, -1});
     s.settings.background_map.clear();

@@ -1,5 +1,5 @@
 // scenes/split/main.jts, a scene split into files with `include`, renders to
-// the same bytes as the same scene written as one file (docs/language.md §15.5).
+// the same bytes as the same scene written as one file (docs/language.md §15.6).
 
 #include "common/files.hpp"
 #include "jtracer/render_job.hpp"

@@ -536,10 +536,10 @@ Scene flat_octahedron(const std::filesystem::path& dir, const Material& m,
     return s;
 }
 
-// The scene of issue 27: the octahedron scaled 0.75, flat, seen along an axis
-// from 5 away with a light at 9 behind the camera. The centre pixel's ray
-// meets the vertex on that axis exactly, where four faces meet; each faces the
-// light at dot(N, L) = 1/sqrt(3), so the vertex is lit as every face near it.
+// The octahedron scaled 0.75, flat, seen along an axis from 5 away with a
+// light at 9 behind the camera. The centre pixel's ray meets the vertex on
+// that axis exactly, where four faces meet; each faces the light at
+// dot(N, L) = 1/sqrt(3), so the vertex is lit as every face near it.
 TEST(Triangles, AVertexSharedByFlatFacesIsLitAsTheFacesAroundIt) {
     ScratchDir dir;
     Material m;

@@ -154,5 +154,59 @@ TEST(KeyTaps, ACharacterAfterAnEditingKeyWaitsForTheNextFrame) {
     EXPECT_EQ(passed[2].codepoint, '3');
 }
 
+// A click made after typing waits for the typing held back before it: the
+// field typed in takes its characters in a frame before the click moves the
+// focus, and what is typed after the click waits for the frame after it.
+TEST(KeyTaps, AMouseButtonKeepsItsPlaceAmongTheKeys) {
+    constexpr int press = 1, release = 0, a = 'A', ctrl = 341, left = 0;
+    KeyTaps taps(press, release);
+    std::vector<KeyEvent> passed;
+    const KeyTaps::Sink sink = [&](const KeyEvent& e) { passed.push_back(e); };
+    // A typed twice in one frame: the second A waits a frame, and the click after it too.
+    for (int i = 0; i < 2; ++i) {
+        taps.event({a, 0, press, 0}, sink);
+        taps.event(typed_character('a'), sink);
+        taps.event({a, 0, release, 0}, sink);
+    }
+    taps.event(mouse_button_event(left, press, 10, 20), sink);
+    taps.event(mouse_button_event(left, release, 11, 21), sink);
+    taps.event({a, 0, press, 0}, sink);
+    taps.event(typed_character('a'), sink);
+    ASSERT_EQ(passed.size(), 2u) << "the first A's key and character";
+    taps.frame_done(sink);
+    ASSERT_EQ(passed.size(), 3u) << "its release: the second A waits for the next frame";
+    taps.frame_done(sink);
+    ASSERT_EQ(passed.size(), 5u) << "the second A's key and character";
+    EXPECT_EQ(passed[4].codepoint, unsigned('a'));
+    taps.frame_done(sink);
+    ASSERT_EQ(passed.size(), 7u) << "its release, then the press: a frame without typing";
+    EXPECT_EQ(passed[5].key, a);
+    EXPECT_EQ(passed[6].mouse_button, left);
+    EXPECT_EQ(passed[6].action, press);
+    EXPECT_EQ(passed[6].x, 10.0f) << "where the press was made";
+    EXPECT_EQ(passed[6].y, 20.0f);
+    taps.frame_done(sink);
+    ASSERT_EQ(passed.size(), 8u) << "the release alone: the A after it waits for the next frame";
+    EXPECT_EQ(passed[7].mouse_button, left);
+    EXPECT_EQ(passed[7].action, release);
+    EXPECT_EQ(passed[7].x, 11.0f);
+    taps.frame_done(sink);
+    ASSERT_EQ(passed.size(), 10u) << "the A typed after the click";
+    EXPECT_EQ(passed[9].codepoint, unsigned('a'));
+    EXPECT_FALSE(taps.holding());
+
+    // Ctrl pressed before a click goes with it (a Ctrl+click); pressed after
+    // it, it waits (the click is no Ctrl+click).
+    taps.frame_done(sink);
+    passed.clear();
+    taps.event({ctrl, 0, press, 0}, sink);
+    taps.event(mouse_button_event(left, press, 0, 0), sink);
+    EXPECT_EQ(passed.size(), 2u);
+    taps.event({ctrl, 0, release, 0}, sink);
+    EXPECT_EQ(passed.size(), 2u);
+    taps.frame_done(sink);
+    EXPECT_EQ(passed.size(), 3u);
+}
+
 }  // namespace
 }  // namespace jt::view

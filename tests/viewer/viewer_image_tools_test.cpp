@@ -98,7 +98,7 @@ TEST_F(ViewerImageTools, ACtrlClickSetsNoRegionAndADragPastTheImageStopsAtItsEdg
     EXPECT_EQ(*state.view.render_region, (FrameRegion{0, 0, 21, 28}));
 }
 
-// Issue 27 item 19: a region, then the camera moves: the rest of the image
+// A region, then the camera moves: the rest of the image
 // showed the old view beside the region's new one. The region is cleared and
 // the whole image is the new view's, as the CLI renders it.
 TEST_F(ViewerImageTools, MovingTheCameraClearsTheRegionAndRendersTheWholeNewView) {

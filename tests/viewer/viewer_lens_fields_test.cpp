@@ -1,4 +1,4 @@
-// Issue 29 items 6 and 7 (SEMANTICS.md §9.6): the panels edit language 1.2's
+// docs/language.md §14.6: the panels edit language 1.2's
 // properties (a light's radius and shadow samples, the camera's lens, the sky
 // map, a mesh's smooth_angle and materials), each written in place and undone
 // in one step; a Ctrl+click on the image focuses the camera on the surface

@@ -1,4 +1,4 @@
-// Issue 29 item 7 (SEMANTICS.md §9.6): with soft shadows, a lens and a sky map
+// docs/language.md §14.6: with soft shadows, a lens and a sky map
 // the viewer's progressive render may show hard shadows and a sharp image
 // first, but the image it finishes is jtracer-cli's, byte for byte; its status
 // line says what the passes refine.

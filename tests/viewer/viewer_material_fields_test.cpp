@@ -1,4 +1,4 @@
-// Issue 27 item 21: the material panel edits a checker's colour and an image
+// The material panel edits a checker's colour and an image
 // map's file, which the showcase's backdrop and the globe use; through the
 // OSMesa frame code, into the text as Save scene writes it. And every field
 // refuses a value past the language's limits, saying why.
@@ -76,7 +76,7 @@ TEST_F(ViewerMaterialFields, ACheckerCanBeSetEditedAndClearedAndAnImageMapNamed)
         << document_text(state.doc);
 }
 
-// Issue 27 item 14: a value past the language's limit typed into a field is
+// A value past the language's limit typed into a field is
 // refused, the field saying the limit, as --check and the parser would.
 TEST_F(ViewerMaterialFields, AValuePastTheLimitIsRefusedAndTheFieldSaysTheLimit) {
     open_rendered_copy("field-limit");

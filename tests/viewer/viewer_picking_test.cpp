@@ -78,7 +78,7 @@ TEST_F(ViewerPicking, HoveringThePictureInspectsThePixelUnderTheMouse) {
     EXPECT_TRUE(state.view.inspected.empty());
 }
 
-// Issue 27 item 22: the inspector's box sat at the mouse, on the object just
+// The inspector's box sat at the mouse, on the object just
 // picked, and hid its outline. It goes to the image's bottom corner away
 // from the mouse, clear of the picked sphere.
 TEST_F(ViewerPicking, TheInspectorBoxKeepsClearOfThePickedObject) {
@@ -226,7 +226,7 @@ TEST_F(ViewerPicking, TheObjectsListDrawsOnlyTheRowsInViewOfAHundredThousand) {
 }
 
 // A light added from its panel opens there (its fields shown), as a picked one does.
-// Issue 27 item 18: after Add object the panel scrolled the list to the top
+// After Add object the panel scrolled the list to the top
 // of the window, so the next click hit another field. The list was in view:
 // what the user clicks next stays where it was.
 TEST_F(ViewerPicking, AddObjectKeepsThePanelWhereItWas) {
@@ -261,7 +261,7 @@ TEST_F(ViewerPicking, AddPointLightOpensTheNewLightInItsPanel) {
     EXPECT_NE(find_item(viewer.ui_items(), "intensity"), nullptr) << "the new light's fields";
 }
 
-// Issue 32: a selected mesh shows what jtracer-cli info prints of it: its
+// A selected mesh shows what jtracer-cli info prints of it: its
 // triangles, its bounds and size in world units, its file.
 TEST(ViewerMeshFigures, TheObjectsPanelShowsTheSelectedMeshsTrianglesBoundsAndSize) {
     const std::filesystem::path dir = make_scratch_dir("mesh-figures");

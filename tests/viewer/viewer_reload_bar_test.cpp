@@ -1,7 +1,10 @@
-// Issue 27 item 13: when the file changes under unsaved edits, the choice
+// When the file changes under unsaved edits, the choice
 // comes to the user, across the top of the image, with the differences
 // between the two texts; through the OSMesa frame code.
 
+#include "app/keys.hpp"
+#include "app/text_editor.hpp"
+#include "app/ui_items.hpp"
 #include "common/files.hpp"
 #include "model/app_actions.hpp"
 #include "model/document_edits.hpp"
@@ -70,6 +73,42 @@ TEST_F(ViewerReloadBar, TheChoiceIsAboveTheImageAndShowsTheDifferences) {
     EXPECT_EQ(find_item(viewer.ui_items(), "reload bar"), nullptr);
     EXPECT_EQ(state.doc.scene.settings.width, 32);
     EXPECT_EQ(state.doc.scene.cameras[1].fov, 55.0);
+}
+
+// Found in the real window at 800x500 (the README's layout on a 2x screen):
+// the text editor, at least 30 font widths, took all the width right of the
+// panels. The image went, and with it the bar the status line sends the
+// user to when the file changes under unsaved edits. The image keeps a
+// part of the width beside the text.
+class ViewerNarrowWindow : public ViewerFixture {
+  protected:
+    ViewerNarrowWindow() : ViewerFixture(800, 500) {}
+};
+
+TEST_F(ViewerNarrowWindow, TheImageAndTheReloadBarStayBesideTheTextEditor) {
+    const fs::path file = open_rendered_copy("narrow-window");
+    ASSERT_FALSE(HasFatalFailure());
+    viewer.press_key(state, keys::letter('T'));
+    ASSERT_TRUE(viewer.text_editor().open);
+    viewer.frame(state);
+    const UiItem* text = find_item(viewer.ui_items(), "text");
+    ASSERT_NE(text, nullptr);
+    const ScreenRect area = viewer.image_area();
+    EXPECT_GE(area.x1 - area.x0, 100.0f) << "the image has no room beside the text";
+    EXPECT_GT(viewer.image_rect().x1, viewer.image_rect().x0);
+
+    edit_scene(state, [](Scene& s) { s.settings.width = 32; });
+    viewer.frame(state);
+    std::string theirs = read_file(file);
+    theirs.replace(theirs.find("fov: 50;"), 8, "fov: 55;");
+    write_file(file, theirs);
+    ASSERT_TRUE(viewer.run_until_loaded(state));
+    ASSERT_TRUE(state.files.pending_reload);
+    viewer.frame(state);
+    viewer.frame(state);
+    ASSERT_TRUE(viewer.click(state, "Keep mine")) << "the bar's choice is not drawn";
+    EXPECT_FALSE(state.files.pending_reload);
+    EXPECT_EQ(state.doc.scene.settings.width, 32);
 }
 
 }  // namespace

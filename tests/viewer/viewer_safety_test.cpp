@@ -1,4 +1,4 @@
-// Issue 15's defects, each through the OSMesa frame code as a user meets
+// Faults users met in the viewer, each through the OSMesa frame code as a user meets
 // them: the crash after Copy to scene + undo, a drag that jumps, diagnostics
 // that lag behind an edit, prompts that say the wrong thing, edits lost on
 // quit, files overwritten without asking, clipped or unexplained controls.
@@ -454,7 +454,7 @@ TEST(ViewerLayout, NothingIsClippedAtTwiceTheScale) {
     EXPECT_LT(panel->rect.x1, 2560 * 0.5f);
 }
 
-// Issue 27 item 20: at a small window on a 2x screen the image's toolbar
+// At a small window on a 2x screen the image's toolbar
 // covered a third of the image; it keeps to one short row there.
 TEST(ViewerLayout, TheToolbarLeavesASmallImageMostlyUncovered) {
     HeadlessViewer viewer(1400, 900);  // 700x450 window units at 2x, as found
@@ -486,7 +486,7 @@ ScreenRect intersection(const ScreenRect& r, const ScreenRect& clip) {
     return out;
 }
 
-// Issue 27 item 20 on X11 at Xft.dpi 192 (content scale 2, one framebuffer
+// On X11 at Xft.dpi 192 (content scale 2, one framebuffer
 // pixel a window unit), in the smallest window (800x520), the image zoomed to
 // fill its area and the mouse over it: the toolbar ran past the window's edge
 // (its zoom and More out of reach), and it and the pixel inspector (wider
@@ -522,7 +522,7 @@ TEST(ViewerLayout, OverlaysLeaveAZoomedImageMostlyUncoveredAtTwiceTheScale) {
     EXPECT_NE(state.view.inspected.find("x "), std::string::npos);
 }
 
-// Issue 27 item 20: a tiny window squeezed the panel and that squeezed
+// A tiny window squeezed the panel and that squeezed
 // width was remembered (panel_width = 14) for the next run.
 TEST(ViewerLayout, ATinyWindowDoesNotChangeTheRememberedPanelWidth) {
     const fs::path folder = scene_copy("panel-width-tiny").parent_path();

@@ -1,4 +1,4 @@
-// Issue 27 item 16: the keys a user of Blender or any editor expects, and the
+// The keys a user of Blender or any editor expects, and the
 // text editor following the selection; through the OSMesa frame code.
 
 #include "app/headless.hpp"

@@ -1,4 +1,4 @@
-// Issue 27 item 17: Start a scene in an empty file, through the OSMesa frame
+// Start a scene in an empty file, through the OSMesa frame
 // code: the Objects panel opens on its empty list, ready for Add object, the
 // image is named after the file and the camera has a name; new objects go
 // with the objects, and a plane lies at the view's floor.

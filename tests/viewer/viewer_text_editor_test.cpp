@@ -6,6 +6,7 @@
 #include "app/headless.hpp"
 #include "app/keys.hpp"
 #include "app/text_editor.hpp"
+#include "app/ui_items.hpp"
 #include "common/files.hpp"
 #include "jtracer/diagnostics.hpp"
 #include "model/app_actions.hpp"
@@ -86,7 +87,7 @@ class ViewerTextEditor : public ::testing::Test {
     std::string original;
 };
 
-// Issue 27 item 10: after Ctrl+Z undid the typing, one more Ctrl+Z, with
+// After Ctrl+Z undid the typing, one more Ctrl+Z, with
 // nothing left to undo, changed a byte of the next line (ImGui's own undo
 // acting at an offset into text the app had replaced), and redo was lost.
 TEST_F(ViewerTextEditor, CtrlZPastTheStartOfTheHistoryChangesNothingAndRedoComesBack) {
@@ -158,7 +159,7 @@ TEST_F(ViewerTextEditor, EscAfterAnUndoKeepsTheUndoneText) {
     EXPECT_EQ(text(), original);
 }
 
-// Issue 27 item 11: in `width: 64|;` three Backspaces and "123" typed 12 ms
+// In `width: 64|;` three Backspaces and "123" typed 12 ms
 // apart, at frame times from a fast frame to a slow one, give `width:123;`
 // (the characters came before the Backspaces of their frame).
 TEST_F(ViewerTextEditor, FastTypingKeepsItsOrderWhateverTheFrameRate) {
@@ -181,7 +182,59 @@ TEST_F(ViewerTextEditor, FastTypingKeepsItsOrderWhateverTheFrameRate) {
     }
 }
 
-// Issue 27 item 12: a file broken on disk showed the old good text and "No
+// Found in the real window under load: a path typed into the File panel's
+// field, then a click on Open. The keys wait in KeyTaps for frames (each
+// key changes once a frame), the click did not: it pressed Open with half
+// the path typed, and the characters after it became the image's
+// shortcuts (T closed the text editor, X deleted the selection, S saved an
+// image). The click keeps its place among the keys.
+TEST_F(ViewerTextEditor, AClickAfterTypingWaitsForTheTyping) {
+    const fs::path target = file.parent_path() / "sixteen_xts.jts";
+    fs::copy_file(file, target);
+    viewer.frame(state);
+    const UiItem* field = find_item(viewer.ui_items(), "open path");
+    const UiItem* open = find_item(viewer.ui_items(), "Open");
+    ASSERT_TRUE(field && open);
+    const auto centre = [](const UiItem& item, int button, int action) {
+        return mouse_button_event(button, action, (item.rect.x0 + item.rect.x1) * 0.5f,
+                                  (item.rect.y0 + item.rect.y1) * 0.5f);
+    };
+    state.view.selection = {Selection::Kind::primitive, 1};  // what a stray X would delete
+    std::vector<KeyEvent> events;
+    events.push_back(centre(*field, 0, kKeyPress));
+    events.push_back(centre(*field, 0, kKeyRelease));
+    shortcut(events, keys::letter('A'));  // the field's text selected, to be replaced
+    type(events, target.string());
+    events.push_back(centre(*open, 0, kKeyPress));
+    events.push_back(centre(*open, 0, kKeyRelease));
+    // Events 4 ms apart, a frame every 60 ms: a slow frame, as with a render running.
+    viewer.key_events(state, events, 4.0, 60.0);
+    ASSERT_TRUE(viewer.run_until_loaded(state));
+    EXPECT_EQ(state.fields.open_path_input, target.string());
+    EXPECT_EQ(state.doc.path, target) << state.message;
+    EXPECT_TRUE(viewer.text_editor().open) << "a T typed in the field toggled the text editor";
+    EXPECT_EQ(state.doc.scene.primitives.size(), 2u);
+    EXPECT_FALSE(state.history.undo.can_undo()) << "no edit was made";
+}
+
+// Found in the real window: Ctrl+Q while typing in the text editor did
+// nothing (a text field took every shortcut but its own).
+TEST_F(ViewerTextEditor, CtrlQInTheTextAsksBeforeQuitting) {
+    put_cursor(10, 1);
+    std::vector<KeyEvent> events;
+    type(events, "# q");
+    viewer.key_events(state, events, 40.0, 16.0);
+    const std::string typed = text();
+    ASSERT_NE(typed, original);
+    events.clear();
+    shortcut(events, keys::letter('Q'));
+    viewer.key_events(state, events, 40.0, 16.0);
+    EXPECT_TRUE(state.files.unsaved_prompt.has_value()) << "Ctrl+Q in the text did nothing";
+    EXPECT_FALSE(state.quit);
+    EXPECT_EQ(text(), typed) << "Ctrl+Q typed nothing";
+}
+
+// A file broken on disk showed the old good text and "No
 // errors" in the editor, and saving wrote the old text over the broken file.
 TEST_F(ViewerTextEditor, ABrokenFileOnDiskIsShownWithItsErrorsAndNeverSavedOver) {
     const std::string broken =
@@ -222,7 +275,7 @@ TEST_F(ViewerTextEditor, ABrokenFileOnDiskIsShownWithItsErrorsAndNeverSavedOver)
     EXPECT_EQ(read_file(file), original);
 }
 
-// Issue 27 item 15: typing at the end of a long line left the cursor out of
+// Typing at the end of a long line left the cursor out of
 // view (the editor did not scroll sideways), and a long error message was
 // cut off at the list's edge.
 TEST_F(ViewerTextEditor, TheViewFollowsTheCursorSidewaysAndLongErrorsWrap) {
@@ -264,7 +317,7 @@ TEST_F(ViewerTextEditor, TheViewFollowsTheCursorSidewaysAndLongErrorsWrap) {
     EXPECT_LE(item->rect.x1, window->rect.x1);
 }
 
-// Issue 27 item 18: while the text was being edited (after every keystroke,
+// While the text was being edited (after every keystroke,
 // until its check a quarter second later, and as long as it has errors) a
 // two-line note stood above the Camera panel: the sidebar under the mouse
 // moved 38 pixels down and back, and a click meant for a field hit another.
@@ -310,7 +363,7 @@ TEST_F(ViewerTextEditor, ADeletedFileSaysItWasDeletedAndKeepsTheText) {
     EXPECT_EQ(read_file(file), original);
 }
 
-// Issue 30 item 5: an included file is opened from the button above the
+// An included file is opened from the button above the
 // text, typed in (Ctrl+Z undoes that typing only), kept while another file
 // is shown, and Ctrl+S writes it into its file.
 TEST(ViewerIncludedFileEditor, OpensTypesUndoesAndSavesAnIncludedFile) {
@@ -384,6 +437,66 @@ TEST(ViewerIncludedFileEditor, OpensTypesUndoesAndSavesAnIncludedFile) {
     viewer.frame(state);
     EXPECT_EQ(ed.buffer, typed) << "the file as saved";
     EXPECT_EQ(state.message, "Saved parts/ball.jts") << "its own write reloads nothing";
+    fs::remove_all(dir);
+}
+
+// Found in the real window: text typed in an included file, then Esc to
+// leave the editor. ImGui's Esc puts back the text the widget was entered
+// with, so everything typed since the click was gone, the draft with it,
+// and the next Esc or Ctrl+Q quit without asking. Esc leaves the text as
+// it is, as it does in the scene file's text.
+TEST(ViewerIncludedFileEditor, EscKeepsWhatWasTypedInAnIncludedFile) {
+    HeadlessViewer viewer{1200, 700};
+    ASSERT_TRUE(viewer.ok()) << viewer.error();
+    const fs::path dir = make_scratch_dir("included-file-esc");
+    const std::string main_text =
+        "render_settings { width: 32; height: 24; }\n"
+        "cameras { perspective_camera { aspect: 1.3333333333333333; } }\n"
+        "scene { point_light { position: <3, 5, 4>; } include \"parts/ball.jts\"; }\n";
+    const std::string ball_text = "sphere { center: <0, 0, -5>; radius: 1; }\n";
+    fs::create_directories(dir / "parts");
+    write_file(dir / "main.jts", main_text);
+    write_file(dir / "parts" / "ball.jts", ball_text);
+    AppState state{test_config()};
+    open_scene(state, dir / "main.jts");
+    ASSERT_TRUE(state.doc.loaded) << format_diagnostics(state.doc);
+    viewer.press_key(state, keys::letter('T'));
+    TextEditorState& ed = viewer.text_editor();
+    ASSERT_TRUE(viewer.click(state, "parts/ball.jts"));
+    viewer.frame(state);
+    ed.jump = 0;
+    viewer.frame(state);
+    viewer.frame(state);
+    std::vector<KeyEvent> events;
+    type(events, "# mine\n");
+    viewer.key_events(state, events, 40.0, 16.0);
+    const std::string typed = "# mine\n" + ball_text;
+    ASSERT_EQ(ed.buffer, typed);
+
+    events.clear();
+    tap(events, keys::escape);
+    viewer.key_events(state, events, 40.0, 16.0);
+    EXPECT_EQ(ed.buffer, typed) << "Esc put back the text from before the typing";
+    ASSERT_NE(draft_of(state.editor, state.editor.shown), nullptr);
+    EXPECT_EQ(draft_of(state.editor, state.editor.shown)->text, typed);
+    // Nothing is active now: a second Esc asks before quitting.
+    events.clear();
+    tap(events, keys::escape);
+    viewer.key_events(state, events, 40.0, 16.0);
+    EXPECT_FALSE(state.quit) << "quit with the typing unsaved";
+    EXPECT_TRUE(state.files.unsaved_prompt.has_value());
+    resolve_unsaved(state, UnsavedChoice::cancel);
+
+    // Ctrl+Z still undoes the typing in this file once it is entered again.
+    ed.jump = static_cast<int>(std::string("# mine\n").size());
+    viewer.frame(state);
+    viewer.frame(state);
+    for (int i = 0; i < 10 && ed.buffer != ball_text; ++i) {
+        events.clear();
+        shortcut(events, keys::letter('Z'));
+        viewer.key_events(state, events, 40.0, 16.0);
+    }
+    EXPECT_EQ(ed.buffer, ball_text);
     fs::remove_all(dir);
 }
 

@@ -58,9 +58,16 @@ long long run_queue_wait_ns() {
     return n == 2 ? waiting : 0;
 }
 
-// What the GLFW backend does with a key event or a character.
+// What the GLFW backend does with a key event or a character, and the
+// window's loop with a mouse button (main.cpp: the mouse where it changed).
 void key_to_imgui(const KeyEvent& e) {
     ImGuiIO& io = ImGui::GetIO();
+    if (e.mouse_button >= 0) {
+        if (e.mouse_button >= ImGuiMouseButton_COUNT) return;
+        io.MouseDown[e.mouse_button] = e.action == kKeyPress;
+        io.MousePos = ImVec2(e.x, e.y);
+        return;
+    }
     if (e.codepoint != 0) {
         io.AddInputCharacter(e.codepoint);
         return;

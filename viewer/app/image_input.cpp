@@ -176,13 +176,17 @@ std::optional<FrameRegion> dragged_region(const ImageDrag& drag, const ImagePlac
 void handle_shortcuts(AppState& state, FrameState& frame, const ImagePlace& image) {
     const ImGuiIO& io = ImGui::GetIO();
     handle_escape(state);
-    if (io.WantTextInput || state.files.unsaved_prompt)
-        return;  // typing in a field: letters are text
+    if (state.files.unsaved_prompt) return;
+    // Ctrl+Q types nothing: it quits (asking first) from a text field too.
+    if (io.KeyCtrl && pressed(keys::letter('Q'))) {
+        request_quit(state);
+        return;
+    }
+    if (io.WantTextInput) return;  // typing in a field: letters are text
     selection_keys(state);
     if (io.KeyCtrl) {
         if (pressed(keys::letter('S'))) save_scene(state);
         if (pressed(keys::letter('Z'))) io.KeyShift ? redo(state) : undo(state);
-        if (pressed(keys::letter('Q'))) request_quit(state);
         return;
     }
     if (pressed(keys::letter('R'))) reload_scene(state);

@@ -21,22 +21,35 @@ bool holds(const std::vector<int>& keys, int key) {
     return std::find(keys.begin(), keys.end(), key) != keys.end();
 }
 
+// Mouse buttons among the keys changed: above every GLFW key code.
+constexpr int kFirstMouseButton = 1000;
+
 }  // namespace
 
 // A key repeat (GLFW_REPEAT) changes nothing ImGui reads: it always fits.
 bool KeyTaps::fits_this_frame(const KeyEvent& event) const {
-    if (event.codepoint != 0) return !editing_key_pressed_;
+    if (event.mouse_button >= 0)
+        return !typed_ && !holds(changed_, kFirstMouseButton + event.mouse_button);
+    if (event.codepoint != 0) return !editing_key_pressed_ && !mouse_changed_;
     const bool changes_key = event.action == press_ || event.action == release_;
     if (!changes_key) return true;
+    if (mouse_changed_) return false;
     if (is_modifier(event.key) && key_pressed_) return false;
     return !holds(changed_, event.key);
 }
 
 void KeyTaps::pass(const KeyEvent& event, const Sink& sink) {
+    if (event.mouse_button >= 0) {
+        changed_.push_back(kFirstMouseButton + event.mouse_button);
+        mouse_changed_ = true;
+        sink(event);
+        return;
+    }
+    if (event.codepoint != 0) typed_ = true;
     if (event.codepoint == 0 && (event.action == press_ || event.action == release_))
         changed_.push_back(event.key);
     if (event.codepoint == 0 && event.action == press_ && !is_modifier(event.key))
-        key_pressed_ = true;
+        key_pressed_ = typed_ = true;
     if (event.codepoint == 0 && event.action != release_) {
         const bool editing = event.key >= kFirstNonCharacterKey && event.key < kFirstModifierKey;
         if (editing || (event.mods & kShortcutMods) != 0) editing_key_pressed_ = true;
@@ -61,6 +74,8 @@ void KeyTaps::frame_done(const Sink& sink) {
     changed_.clear();
     editing_key_pressed_ = false;
     key_pressed_ = false;
+    typed_ = false;
+    mouse_changed_ = false;
     pass_what_fits(sink);
 }
 

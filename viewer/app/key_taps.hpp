@@ -15,6 +15,18 @@
 //   - a character comes in no frame in which an editing key (Backspace,
 //     Delete, Enter, an arrow...: a key that is no character or modifier) or
 //     a shortcut (a key with Ctrl, Alt or Super) was pressed before it.
+// Mouse buttons go through the same queue, or a click made after typing
+// overtakes the typing held back: on a slow frame, a path typed into a field
+// and then a click on Open lost the characters after the click to the
+// image's shortcuts (X deleted the selection, S saved an image, T closed
+// the text editor). So
+//   - a button changes at most once a frame, like a key,
+//   - a button changes in no frame in which a key was pressed or a
+//     character typed before it (the field typed in takes them first), and
+//   - a key changes, and a character comes, in no frame in which a button
+//     changed before it (the click moves the focus first).
+// The frame that takes a button's change sees the mouse where it was then
+// (KeyEvent::x, y), so that a click held back lands where it was made.
 
 #include <deque>
 #include <functional>
@@ -22,16 +34,28 @@
 
 namespace jt::view {
 
-// A key event (key, scancode, action, mods as GLFW passes them) or, when
-// `codepoint` is not 0, a typed character.
+// A key event (key, scancode, action, mods as GLFW passes them), when
+// `codepoint` is not 0 a typed character, and when `mouse_button` is not -1
+// a mouse button's press or release (`action`) with the mouse at (x, y).
 struct KeyEvent {
     int key = 0, scancode = 0, action = 0, mods = 0;
     unsigned codepoint = 0;
+    int mouse_button = -1;
+    float x = 0.0f, y = 0.0f;
 };
 
 inline KeyEvent typed_character(unsigned codepoint) {
     KeyEvent e;
     e.codepoint = codepoint;
+    return e;
+}
+
+inline KeyEvent mouse_button_event(int button, int action, float x, float y) {
+    KeyEvent e;
+    e.mouse_button = button;
+    e.action = action;
+    e.x = x;
+    e.y = y;
     return e;
 }
 
@@ -59,6 +83,8 @@ class KeyTaps {
     std::vector<int> changed_;          // keys pressed or released since the last frame
     bool editing_key_pressed_ = false;  // since the last frame
     bool key_pressed_ = false;          // a key other than a modifier, since the last frame
+    bool typed_ = false;                // a key other than a modifier, or a character, since then
+    bool mouse_changed_ = false;        // a mouse button, since the last frame
     std::deque<KeyEvent> held_;
 };
 

@@ -72,14 +72,46 @@ CLI::Validator timeout_check() {
         "SECONDS");
 }
 
-// The window's keys reach ImGui through this, so that a quick tap is seen.
+// The window's keys and mouse buttons reach ImGui through this, so that a
+// quick tap is seen and a click never overtakes the typing before it.
 KeyTaps key_taps{GLFW_PRESS, GLFW_RELEASE};
 
+// The mouse buttons as KeyTaps passes them on. The GLFW backend reads the
+// buttons' state when a frame starts; these replace it, with the mouse
+// where a button changed (held_mouse_to_imgui).
+struct HeldMouse {
+    bool down[ImGuiMouseButton_COUNT] = {};
+    bool pressed[ImGuiMouseButton_COUNT] = {};  // since the last frame: seen down once at least
+    bool moved = false;                         // a button changed since the last frame, at:
+    ImVec2 at;
+    ImVec2 cursor;  // the cursor as the window's events last placed it
+};
+HeldMouse held_mouse;
+
 void key_to_imgui(GLFWwindow* window, const KeyEvent& e) {
-    if (e.codepoint != 0)
+    if (e.mouse_button >= 0) {
+        if (e.mouse_button >= ImGuiMouseButton_COUNT) return;
+        held_mouse.down[e.mouse_button] = e.action == GLFW_PRESS;
+        if (e.action == GLFW_PRESS) held_mouse.pressed[e.mouse_button] = true;
+        held_mouse.moved = true;
+        held_mouse.at = ImVec2(e.x, e.y);
+    } else if (e.codepoint != 0) {
         ImGui_ImplGlfw_CharCallback(window, e.codepoint);
-    else
+    } else {
         ImGui_ImplGlfw_KeyCallback(window, e.key, e.scancode, e.action, e.mods);
+    }
+}
+
+// After ImGui_ImplGlfw_NewFrame: the buttons as passed on, and in the frame
+// that takes a button's change the mouse where that change was made.
+void held_mouse_to_imgui() {
+    ImGuiIO& io = ImGui::GetIO();
+    for (int b = 0; b < ImGuiMouseButton_COUNT; ++b) {
+        io.MouseDown[b] = held_mouse.pressed[b] || held_mouse.down[b];
+        held_mouse.pressed[b] = false;
+    }
+    if (held_mouse.moved) io.MousePos = held_mouse.at;
+    held_mouse.moved = false;
 }
 
 void on_key(GLFWwindow* window, int key, int scancode, int action, int mods) {
@@ -89,6 +121,17 @@ void on_key(GLFWwindow* window, int key, int scancode, int action, int mods) {
 
 void on_char(GLFWwindow* window, unsigned codepoint) {
     key_taps.event(typed_character(codepoint),
+                   [window](const KeyEvent& e) { key_to_imgui(window, e); });
+}
+
+// The cursor in event order (glfwGetCursorPos asks where it is now, which
+// for an event taken in late is not where the button changed).
+void on_cursor(GLFWwindow*, double x, double y) {
+    held_mouse.cursor = ImVec2(static_cast<float>(x), static_cast<float>(y));
+}
+
+void on_mouse_button(GLFWwindow* window, int button, int action, int) {
+    key_taps.event(mouse_button_event(button, action, held_mouse.cursor.x, held_mouse.cursor.y),
                    [window](const KeyEvent& e) { key_to_imgui(window, e); });
 }
 
@@ -158,6 +201,13 @@ int run_window(const Arguments& args) {
     // In place of the backend's, which they call.
     glfwSetKeyCallback(window.handle(), on_key);
     glfwSetCharCallback(window.handle(), on_char);
+    glfwSetMouseButtonCallback(window.handle(), on_mouse_button);
+    glfwSetCursorPosCallback(window.handle(), on_cursor);
+    {
+        double x = 0, y = 0;
+        glfwGetCursorPos(window.handle(), &x, &y);
+        on_cursor(window.handle(), x, y);
+    }
     ImGui::GetIO().BackendFlags |= ImGuiBackendFlags_HasMouseCursors;  // the panel edge resizes
     std::optional<std::string> dropped;
     window.on_drop([&](const std::string& path) { dropped = path; });
@@ -213,6 +263,7 @@ int run_window(const Arguments& args) {
             const float scale = ww > 0 ? static_cast<float>(fw) / static_cast<float>(ww) : 1.0f;
             layer.set_scale(window.content_scale(), scale);
             ImGui_ImplGlfw_NewFrame();
+            held_mouse_to_imgui();
             layer.begin_frame();
             viewer_frame(app, frame, FrameInfo{scale});
             layer.end_frame(fw, fh);

@@ -96,13 +96,19 @@ void follow_document(const AppState& state, TextEditorState& ed) {
 // activated with; both describe text the app may have replaced since (an undo
 // of the app's, a panel edit), and acting on them would change bytes at stale
 // offsets. Undo is the app's alone (Ctrl+Z walks the one history), so after
-// every frame the widget's history is empty and its Esc text is the text now.
-void forget_widget_history(ImGuiInputTextState& widget, std::string_view text) {
+// every frame the widget's history is empty.
+void forget_widget_history(ImGuiInputTextState& widget) {
     ImStb::StbUndoState& undo = widget.Stb.undostate;
     undo.undo_point = 0;
     undo.undo_char_point = 0;
     undo.redo_point = STB_TEXTEDIT_UNDOSTATECOUNT;
     undo.redo_char_point = STB_TEXTEDIT_UNDOCHARCOUNT;
+}
+
+// Esc leaves the editor and keeps the text: the widget's Esc would put back
+// the text it was activated with, throwing away what was typed since (in an
+// included file, the whole draft, unasked). So its Esc text is the text now.
+void keep_text_on_escape(ImGuiInputTextState& widget, std::string_view text) {
     ImVector<char>& initial = widget.InitialTextA;
     if (initial.Size == static_cast<int>(text.size()) + 1 &&
         std::memcmp(initial.Data, text.data(), text.size()) == 0)
@@ -136,10 +142,11 @@ int on_input(ImGuiInputTextCallbackData* data) {
     // history is the scene's), each file in a widget of its own: its history
     // goes only when the app replaces its text.
     const bool own_history = !ed.shown_file.empty() && !replaced;
-    if (ImGuiInputTextState* widget = ImGui::GetInputTextState(ImGui::GetActiveID());
-        widget && !own_history)
-        forget_widget_history(
+    if (ImGuiInputTextState* widget = ImGui::GetInputTextState(ImGui::GetActiveID())) {
+        if (!own_history) forget_widget_history(*widget);
+        keep_text_on_escape(
             *widget, std::string_view(data->Buf, static_cast<std::size_t>(data->BufTextLen)));
+    }
     return 0;
 }
 

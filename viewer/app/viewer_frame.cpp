@@ -141,8 +141,13 @@ void viewer_frame(AppState& state, FrameState& frame, const FrameInfo& info) {
         area.x0 = sidebar(state, frame, w, h - status_h);
         area.y1 = h - status_h;
         if (frame.text_editor.open) {
-            const float editor_w = std::max((w - area.x0) * 0.45f,
-                                            std::min(ImGui::GetFontSize() * 30.0f, w - area.x0));
+            // 45% of the width right of the panels, at least 30 font widths,
+            // but never all of it: in a narrow window (800x500, a 2x screen's
+            // 1600x1000) the image, its toolbar and the reload bar over it
+            // keep a third beside the text.
+            const float rest = w - area.x0;
+            const float editor_w =
+                std::min(std::max(rest * 0.45f, ImGui::GetFontSize() * 30.0f), rest * 0.65f);
             area.x1 = w - editor_w;
             text_editor(state, frame.text_editor, area.x1, 0.0f, w, area.y1);
         }

@@ -207,6 +207,10 @@ struct EditHistory {
 struct CheckState {
     TextChecker checker;         // checks the text editor's draft once typing pauses
     std::uint64_t draft_id = 0;  // of the newest draft sent to the checker
+    // The files the check of a draft with errors read or tried to read
+    // through `include`: when one changes or appears, the draft is checked
+    // again (reload_if_changed), as a loaded file's includes are reloaded.
+    std::vector<std::filesystem::path> draft_reads;
     // The revision of the scene the diagnostics were last checked for (check_edits).
     std::optional<std::uint64_t> checked_revision;
     // The revision of the scene that validation last found free of errors: while
@@ -219,11 +223,15 @@ struct CheckState {
 // the questions they leave for the user.
 struct FileState {
     explicit FileState(const ViewerConfig& config)
-        : asset_watcher(config.watch_interval), include_watcher(config.watch_interval) {}
+        : asset_watcher(config.watch_interval),
+          include_watcher(config.watch_interval),
+          draft_watcher(config.watch_interval) {}
     FileWatcher watcher;
     FileSetWatcher asset_watcher;    // the model and image files the scene names
     FileSetWatcher include_watcher;  // the files the scene includes (SceneDocument::included_files)
-    SceneLoader loader;              // opens and reloads off the UI thread
+    FileSetWatcher
+        draft_watcher;   // the files a draft with errors includes (CheckState::draft_reads)
+    SceneLoader loader;  // opens and reloads off the UI thread
     RecentFiles recent;
     LoadTimes last_load_times;  // of the last open or reload taken in
     // A newer text of the file, loaded while there were unsaved edits: held
@@ -235,6 +243,18 @@ struct FileState {
     std::string save_conflict;
     std::optional<GuardedCommand> unsaved_prompt;
     std::string save_as_conflict;  // the file Save scene as would replace, until confirmed
+    // The unsaved work there was when the open under way was asked for: none,
+    // or what the user agreed to discard. Work done while the file loads is
+    // asked about when it arrives (take_finished_load).
+    struct UnsavedStamp {
+        std::uint64_t history = 0;  // EditHistory::undo's changes()
+        // The draft, or the base text when there is none: a draft that
+        // parses becomes the base text unchanged, which is no edit.
+        std::string text;
+        std::vector<std::string> included;  // the included files' drafts
+        bool operator==(const UnsavedStamp&) const = default;
+    };
+    std::optional<UnsavedStamp> open_requested_over;
 };
 
 // The render: what it was started from, the job, and its pixels as shown.

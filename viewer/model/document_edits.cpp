@@ -13,6 +13,9 @@
 #include "jtracer/transform_edit.hpp"
 #include "jtracer/value_text.hpp"
 
+#include <chrono>
+#include <filesystem>
+
 namespace jt::view {
 
 namespace {
@@ -285,7 +288,21 @@ void take_in(AppState& state, CheckedText checked) {
     doc.diagnostics = checked.diagnostics;
     doc.diagnostics_source = checked.text;
     doc.diagnostics_path = doc.path;
+    state.check.draft_reads.clear();
     if (!checked.ok) {
+        for (const SourceFile& file : checked.parsed.source.files)
+            state.check.draft_reads.push_back(file.path);
+        bool appeared = false;  // since the check could not read it
+        for (const std::string& file : checked.parsed.source.unread_includes) {
+            state.check.draft_reads.push_back(file);
+            std::error_code ec;
+            appeared = appeared || std::filesystem::exists(file, ec);
+        }
+        // Watched from now on (reload_if_changed); one made meanwhile is checked for now.
+        state.files.draft_watcher.watch(state.check.draft_reads);
+        if (appeared)
+            state.check.checker.check(++state.check.draft_id, checked.text, doc.path,
+                                      std::chrono::milliseconds(0), doc.options);
         state.message = "The text has errors (see Diagnostics): the image is of the last good text";
         return;
     }

@@ -164,6 +164,8 @@ Expected<void> check_included_drafts(const SceneDocument& doc, EditorFiles& file
 }
 
 Expected<std::vector<std::string>> write_included_drafts(EditorFiles& files) {
+    for (const IncludedDraft& d : files.drafts)
+        if (Expected<void> ok = check_writable(d.path); !ok) return ok.error();
     std::vector<std::string> written;
     while (!files.drafts.empty()) {
         const IncludedDraft& d = files.drafts.front();

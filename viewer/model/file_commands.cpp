@@ -150,7 +150,19 @@ void open_scene(AppState& state, const std::filesystem::path& path) {
     take_finished_load(state);
 }
 
+namespace {
+
+FileState::UnsavedStamp unsaved_stamp(const AppState& state) {
+    FileState::UnsavedStamp stamp{
+        state.history.undo.changes(), state.doc.draft.value_or(state.doc.text), {}};
+    for (const IncludedDraft& d : state.editor.drafts) stamp.included.push_back(d.text);
+    return stamp;
+}
+
+}  // namespace
+
 void request_open(AppState& state, const std::filesystem::path& path) {
+    state.files.open_requested_over = unsaved_stamp(state);
     state.files.loader.request(path, LoadPurpose::open, state.doc.options);
     state.message = "Opening " + path.string();
 }
@@ -205,6 +217,15 @@ bool assets_changed(AppState& state) {
 }  // namespace
 
 bool reload_if_changed(AppState& state) {
+    // A file the draft's check could not read, or read, changed (it was
+    // created, say, after `include "new.jts";` was typed): the draft is
+    // checked again; the file on disk is not read again for it.
+    if (state.doc.draft && !state.check.draft_reads.empty() && state.files.draft_watcher.due()) {
+        state.files.draft_watcher.watch(state.check.draft_reads);
+        if (!state.files.draft_watcher.poll().empty())
+            state.check.checker.check(++state.check.draft_id, *state.doc.draft, state.doc.path,
+                                      std::chrono::milliseconds(0), state.doc.options);
+    }
     const bool assets = state.doc.loaded && assets_changed(state);
     bool included = false;
     if (state.files.include_watcher.due()) {
@@ -232,6 +253,16 @@ bool take_finished_load(AppState& state) {
     state.files.last_load_times = done->attempt.times;
     // A reload of a file that is no longer the open one is stale.
     if (done->purpose == LoadPurpose::reload && done->path != state.doc.path) return true;
+    // Edited while the file loaded (the panels and the text stay editable):
+    // asked about now, as the open would have asked when it was requested.
+    // Save or Discard opens it again.
+    if (done->purpose == LoadPurpose::open && has_unsaved_work(state) &&
+        state.files.open_requested_over != unsaved_stamp(state)) {
+        state.files.unsaved_prompt = GuardedCommand{GuardedCommand::Kind::open, done->path};
+        state.message = "You edited while " + done->path.filename().string() +
+                        " was opening: save your edits, discard them or cancel the open";
+        return true;
+    }
     if (done->purpose == LoadPurpose::open)
         finish_open(state, done->path, std::move(done->attempt));
     else
@@ -247,6 +278,14 @@ void resolve_reload(AppState& state, ReloadChoice choice) {
     const std::string name = state.doc.path.filename().string();
     if (choice == ReloadChoice::keep_edits) {
         state.files.pending_reload.reset();
+        // While the bar asked, the diagnostics were the newer file's; the
+        // edits kept are described by their own again: the edited scene's
+        // (check_edits), or the draft's, checked again now.
+        state.doc.load_failed = false;
+        state.check.checked_revision.reset();
+        if (state.doc.draft)
+            state.check.checker.check(++state.check.draft_id, *state.doc.draft, state.doc.path,
+                                      std::chrono::milliseconds(0), state.doc.options);
         state.message = "Kept your edits; " + name +
                         " on disk differs, so Save scene will ask before overwriting it";
         return;
@@ -302,6 +341,12 @@ bool save_now(AppState& state) {
         state.message = "Not saved: " + checked.error().message;
         return false;
     }
+    // A read-only file typed in is found before the scene file is written.
+    for (const IncludedDraft& d : state.editor.drafts)
+        if (const Expected<void> ok = check_writable(d.path); !ok) {
+            state.message = "Not saved: " + ok.error().message;
+            return false;
+        }
     std::vector<std::string> written;
     // With only included files typed in, the scene file is left as it is.
     if (!drafts || has_unsaved_edits(doc)) {

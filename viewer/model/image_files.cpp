@@ -7,6 +7,9 @@
 #include <span>
 #include <vector>
 
+#include <sys/stat.h>
+#include <unistd.h>
+
 namespace jt::view {
 
 namespace {
@@ -21,6 +24,16 @@ Expected<void> write_text_atomically(const std::filesystem::path& path, const st
     const std::span<const std::uint8_t> bytes(reinterpret_cast<const std::uint8_t*>(text.data()),
                                               text.size());
     return write_file_atomically(path, bytes);
+}
+
+Expected<void> check_writable(const std::filesystem::path& path) {
+    struct stat st {};
+    if (::stat(path.c_str(), &st) != 0 || !S_ISREG(st.st_mode)) return {};
+    // root may write anything: the mode bits alone say the file is read-only.
+    if ((st.st_mode & 0222) == 0 || ::access(path.c_str(), W_OK) != 0)
+        return Error{"cannot write " + path.string() +
+                     ": the file is read-only (Save scene as writes a copy)"};
+    return {};
 }
 
 Expected<void> save_image(const std::filesystem::path& path, const Image8& image) {

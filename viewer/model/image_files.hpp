@@ -28,4 +28,10 @@ Expected<std::filesystem::path> save_image_numbered(const std::filesystem::path&
 // Writes `text` to `path` through a temporary file beside it and a rename.
 Expected<void> write_text_atomically(const std::filesystem::path& path, const std::string& text);
 
+// An error when `path` is a file the user may not write (no write permission
+// for anyone, or none for this user): the rename of an atomic write would
+// replace it all the same, as the folder allows, so a save asks this first.
+// A file that is not there may be written.
+Expected<void> check_writable(const std::filesystem::path& path);
+
 }  // namespace jt::view

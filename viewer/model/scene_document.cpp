@@ -292,6 +292,11 @@ Expected<std::vector<std::string>> save_scene_copy(SceneDocument& doc,
                                               ? read_text_file(path)
                                               : Expected<std::string>(Error{"not read"});
     const bool write_main = !on_disk || *on_disk != edit.text;
+    // Every file is checked before any is written: a save is whole or nothing.
+    for (const EditedFile& edited : edit.files)
+        if (Expected<void> ok = check_writable(edited.path); !ok) return ok.error();
+    if (write_main)
+        if (Expected<void> ok = check_writable(path); !ok) return ok.error();
     std::vector<std::string> names;
     if (write_main) names.push_back(path.string());
     for (const EditedFile& edited : edit.files) {

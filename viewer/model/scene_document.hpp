@@ -44,7 +44,7 @@ struct SceneDocument {
     std::vector<SourceFile> diagnostics_files;  // the included files they may be in
     // Every file the latest load read or tried to read through `include`:
     // watched like the scene file, so that a change, or a missing file
-    // appearing, reloads (docs/language.md §15.5).
+    // appearing, reloads (docs/language.md §15.6).
     std::vector<std::filesystem::path> included_files;
     // Counts the loads taken in (good or not) and the saves: either may
     // change the texts read (the included files' too) without a new revision.

@@ -2,6 +2,8 @@
 
 #include <algorithm>
 #include <cstdint>
+#include <optional>
+#include <span>
 
 namespace jt::view {
 
@@ -18,9 +20,73 @@ std::vector<std::string_view> split_lines(std::string_view text) {
     return lines;
 }
 
+enum class Step : char { same, removed, added };
+
+// The shortest edit script from a to b (Myers, "An O(ND) difference
+// algorithm"): quick when the texts share most lines, however long they
+// are. Gives up (nothing) once the paths it keeps, or the lines it compares,
+// pass `budget`: the texts differ in too many places to list line by line.
+std::optional<std::vector<Step>> shortest_edit(std::span<const std::string_view> a,
+                                               std::span<const std::string_view> b,
+                                               std::size_t budget) {
+    const long n = static_cast<long>(a.size()), m = static_cast<long>(b.size());
+    const long most = n + m;
+    // v[most + k]: how far along a the furthest path on diagonal k (x - y) reaches.
+    std::vector<long> v(static_cast<std::size_t>(2 * most + 2), 0);
+    std::vector<std::vector<long>> trace;  // v[-d..d] after each round d, to walk back
+    std::size_t spent = 0;
+    long d = 0;
+    for (bool done = false; !done; ++d) {
+        for (long k = -d; k <= d; k += 2) {
+            const bool down = k == -d || (k != d && v[most + k - 1] < v[most + k + 1]);
+            long x = down ? v[most + k + 1] : v[most + k - 1] + 1;
+            long y = x - k;
+            while (x < n && y < m && a[x] == b[y]) ++x, ++y;
+            spent += static_cast<std::size_t>(x - (down ? v[most + k + 1] : v[most + k - 1] + 1));
+            v[most + k] = x;
+            if (x >= n && y >= m) done = true;
+        }
+        trace.emplace_back(v.begin() + (most - d), v.begin() + (most + d + 1));
+        spent += static_cast<std::size_t>(2 * d + 1);
+        if (!done && spent > budget) return std::nullopt;
+    }
+    // Back from the end, one round at a time.
+    std::vector<Step> steps;
+    long x = n, y = m;
+    for (long round = d - 1; round > 0; --round) {
+        const std::vector<long>& before = trace[static_cast<std::size_t>(round - 1)];
+        const auto at = [&](long k) { return before[static_cast<std::size_t>(k + round - 1)]; };
+        const long k = x - y;
+        const bool down = k == -round || (k != round && at(k - 1) < at(k + 1));
+        const long from_k = down ? k + 1 : k - 1;
+        const long from_x = at(from_k), from_y = from_x - from_k;
+        for (; x > (down ? from_x : from_x + 1); --x, --y) steps.push_back(Step::same);
+        steps.push_back(down ? Step::added : Step::removed);
+        x = from_x;
+        y = from_y;
+    }
+    for (; x > 0; --x) steps.push_back(Step::same);  // round 0: the common start
+    std::reverse(steps.begin(), steps.end());
+    // As diff -u shows a change: its old lines first, then its new ones.
+    for (std::size_t i = 0; i < steps.size();) {
+        if (steps[i] == Step::same) {
+            ++i;
+            continue;
+        }
+        std::size_t end = i;
+        while (end < steps.size() && steps[end] != Step::same) ++end;
+        std::stable_partition(steps.begin() + static_cast<long>(i),
+                              steps.begin() + static_cast<long>(end),
+                              [](Step s) { return s == Step::removed; });
+        i = end;
+    }
+    return steps;
+}
+
 // Every line of both, in order: the longest common subsequence of the
-// middles (a table of lengths, which kMaxDiffCells bounds), else all of
-// `a`'s middle removed and `b`'s added.
+// middles (a table of lengths, which kMaxDiffCells bounds), else the
+// shortest edit script while it stays short; else all of `a`'s middle
+// removed and `b`'s added.
 std::vector<DiffLine> all_lines(const std::vector<std::string_view>& a,
                                 const std::vector<std::string_view>& b, bool& coarse) {
     std::size_t prefix = 0;
@@ -42,8 +108,25 @@ std::vector<DiffLine> all_lines(const std::vector<std::string_view>& a,
         out.push_back({DiffLine::Kind::added, std::string(text), 0, ++new_line});
     };
     for (std::size_t i = 0; i < prefix; ++i) same(a[i]);
-    coarse = n > 0 && m > 0 && (n + 1) * (m + 1) > kMaxDiffCells;
-    if (coarse) {
+    const bool large = n > 0 && m > 0 && (n + 1) * (m + 1) > kMaxDiffCells;
+    const std::optional<std::vector<Step>> steps =
+        large ? shortest_edit(std::span(a).subspan(prefix, n), std::span(b).subspan(prefix, m),
+                              kMaxEditWork)
+              : std::nullopt;
+    coarse = large && !steps;
+    if (steps) {
+        std::size_t i = prefix, j = prefix;
+        for (const Step step : *steps) {
+            if (step == Step::same) {
+                same(a[i++]);
+                ++j;
+            } else if (step == Step::removed) {
+                removed(a[i++]);
+            } else {
+                added(b[j++]);
+            }
+        }
+    } else if (coarse) {
         for (std::size_t i = 0; i < n; ++i) removed(a[prefix + i]);
         for (std::size_t j = 0; j < m; ++j) added(b[prefix + j]);
     } else {

@@ -19,13 +19,17 @@ struct DiffLine {
 struct TextDiff {
     std::vector<DiffLine> lines;  // the changed lines with `context` lines around each run
     int removed = 0, added = 0;
-    // The middles (past the common first and last lines) were too long to
-    // compare line by line: the diff shows them removed and added whole.
+    // The middles (past the common first and last lines) differ in too many
+    // places to compare line by line: the diff shows them removed and added whole.
     bool coarse = false;
 };
 
-// Past this many lines times lines in the changed middles, the diff is coarse.
+// Past this many lines times lines in the changed middles, the diff is
+// found as the shortest edit script (quick when few lines changed, however
+// long the texts), and is coarse when that takes more than kMaxEditWork
+// (paths kept plus lines compared: about a thousand changed lines).
 inline constexpr std::size_t kMaxDiffCells = std::size_t{4} << 20;
+inline constexpr std::size_t kMaxEditWork = std::size_t{1} << 20;
 
 // `old_text` to `new_text`, with `context` unchanged lines around each change.
 TextDiff diff_lines(std::string_view old_text, std::string_view new_text, int context = 3);

@@ -3,6 +3,7 @@
 // scene, scene_document.hpp): simpler and safer than inverse operations.
 
 #include <cstddef>
+#include <cstdint>
 #include <optional>
 #include <utility>
 #include <vector>
@@ -17,6 +18,7 @@ class SnapshotStack {
     // Records the state as it was before an edit; clears the redo history.
     void record(Snapshot before) {
         if (!undo_.empty() && undo_.back() == before) return;  // a no-op edit
+        ++changes_;
         undo_.push_back(std::move(before));
         if (undo_.size() > capacity_) undo_.erase(undo_.begin());
         redo_.clear();
@@ -29,6 +31,7 @@ class SnapshotStack {
         return step(redo_, undo_, std::move(current));
     }
     void clear() {
+        ++changes_;
         undo_.clear();
         redo_.clear();
     }
@@ -36,11 +39,15 @@ class SnapshotStack {
     bool can_redo() const { return !redo_.empty(); }
     std::size_t size() const { return undo_.size(); }
     std::size_t capacity() const { return capacity_; }
+    // Counts the records, undos, redos and clears: what was edited since a
+    // moment is told by this number, whatever the capacity dropped.
+    std::uint64_t changes() const { return changes_; }
 
   private:
-    static std::optional<Snapshot> step(std::vector<Snapshot>& from, std::vector<Snapshot>& to,
-                                        Snapshot current) {
+    std::optional<Snapshot> step(std::vector<Snapshot>& from, std::vector<Snapshot>& to,
+                                 Snapshot current) {
         if (from.empty()) return std::nullopt;
+        ++changes_;
         Snapshot back = std::move(from.back());
         from.pop_back();
         to.push_back(std::move(current));
@@ -48,6 +55,7 @@ class SnapshotStack {
     }
 
     std::size_t capacity_;
+    std::uint64_t changes_ = 0;
     std::vector<Snapshot> undo_;
     std::vector<Snapshot> redo_;
 };

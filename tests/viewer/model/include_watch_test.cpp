@@ -1,16 +1,20 @@
-// The viewer watches every file its scene includes (docs/language.md §15.5):
+// The viewer watches every file its scene includes (docs/language.md §15.6):
 // a change reloads, and so does a missing included file appearing.
 
 #include "common/files.hpp"
 #include "common/scratch_dir.hpp"
+#include "jtracer/diagnostics.hpp"
 #include "model/app_actions.hpp"
+#include "model/document_edits.hpp"
 #include "viewer/model/model_loop.hpp"
 #include "viewer/viewer_test_files.hpp"
 
 #include <gtest/gtest.h>
 
+#include <chrono>
 #include <filesystem>
 #include <string>
+#include <thread>
 
 namespace jt::view {
 namespace {
@@ -98,6 +102,40 @@ TEST_F(ViewerIncludes, ADiagnosticInAnIncludedFileIsQuotedFromIt) {
     EXPECT_NE(shown.find("    sphere { radius: -1; }\n"), std::string::npos) << shown;
     EXPECT_NE(shown.find("note: included from " + main.string() + ":3:54"), std::string::npos)
         << shown;
+}
+
+// Found in the real window: `include "extra.jts";` typed in the text
+// editor before extra.jts existed: "cannot read '.../extra.jts': no such
+// file". The file then made in another editor changed nothing: the draft
+// kept its error until typed in again. The files a draft's check read or
+// tried to read are watched, and the draft is checked again when one
+// changes or appears.
+TEST_F(ViewerIncludes, AFileATypedIncludeNamesAppearingChecksTheTextAgain) {
+    save_as_editor(main,
+                   "render_settings { width: 32; height: 24; }\n"
+                   "cameras { perspective_camera { aspect: 1.3333333333333333; } }\n"
+                   "scene { point_light { position: <3, 5, 4>; } }\n");
+    open_scene(state, main);
+    ASSERT_TRUE(state.doc.loaded) << format_diagnostics(state.doc);
+    type_text(state, kMain);
+    const auto settle = [&] {
+        for (int i = 0; i < 2000 && (state.check.checker.in_flight() || i < 3); ++i) {
+            model.frame(state);
+            std::this_thread::sleep_for(std::chrono::milliseconds(2));
+        }
+        model.frame(state);
+    };
+    settle();
+    ASSERT_TRUE(state.doc.draft.has_value());
+    ASSERT_TRUE(has_errors(state.doc.diagnostics)) << "parts/ball.jts is not there yet";
+    EXPECT_TRUE(state.doc.scene.primitives.empty());
+
+    save_as_editor(ball, "sphere { center: <0, 0, -5>; radius: 2; }\n");
+    settle();
+    EXPECT_FALSE(state.doc.draft.has_value()) << "the typed text reads now: it is taken in";
+    EXPECT_FALSE(has_errors(state.doc.diagnostics)) << format_diagnostics(state.doc);
+    ASSERT_EQ(state.doc.scene.primitives.size(), 1u);
+    EXPECT_EQ(radius_of_first(state), 2.0);
 }
 
 }  // namespace

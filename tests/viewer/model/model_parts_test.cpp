@@ -295,7 +295,7 @@ TEST(PassLabel, NamesThePassAsAUserReadsIt) {
     EXPECT_EQ(label("4 samples", 16), "sample 4 of 16");
 }
 
-// Issue 29 item 7: the status line says what the passes refine.
+// The status line says what the passes refine.
 TEST(PassLabel, SaysWhatIsConverging) {
     const auto label = [](const char* name, int samples, const char* converging) {
         RenderProgress p;

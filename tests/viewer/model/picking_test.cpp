@@ -104,7 +104,7 @@ TEST_F(Picking, TheInspectorGivesThePixelsBytesAndWhatItShows) {
               "x 3, y 4   RGB 230 51 0 = 0.902 0.200 0.000\nbackground");
 }
 
-// Issue 27 item 19: until the current render's first pass shows, the display
+// Until the current render's first pass shows, the display
 // holds the render before (another view, perhaps): the inspector names no
 // hit of the current view over it.
 TEST_F(Picking, TheInspectorDescribesNoHitOverAPixelOfTheRenderBefore) {

@@ -4,8 +4,10 @@
 // the last good image, the UI's frames or a crash.
 
 #include "common/files.hpp"
+#include "jtracer/diagnostics.hpp"
 #include "jtracer/parser.hpp"
 #include "model/app_actions.hpp"
+#include "model/document_edits.hpp"
 #include "model/picking.hpp"
 #include "viewer/model/model_loop.hpp"
 #include "viewer/viewer_test_files.hpp"
@@ -16,6 +18,8 @@
 #include <chrono>
 #include <cstdio>
 #include <fstream>
+#include <functional>
+#include <thread>
 
 namespace jt::view {
 namespace {
@@ -62,6 +66,18 @@ class ViewerFiles : public ::testing::Test {
     void they_save(const std::string& text) {
         save_as_editor(file, text);
         ASSERT_TRUE(model.run_until_loaded(state));
+    }
+
+    // Frames until `done` (or the timeout).
+    bool run_until(const std::function<bool()>& done) {
+        const auto until = std::chrono::steady_clock::now() + kTimeout;
+        while (!done()) {
+            if (std::chrono::steady_clock::now() > until) return false;
+            model.frame(state);
+            std::this_thread::sleep_for(std::chrono::milliseconds(2));
+        }
+        model.frame(state);
+        return true;
     }
 
     ModelLoop model;
@@ -144,6 +160,74 @@ TEST_F(ViewerFiles, ReloadCanReapplyTheEditsOntoTheNewerText) {
     EXPECT_EQ(state.doc.scene, parse_scene(kTheirs).scene);
 }
 
+// Found in the real window: `width: 800` typed without its `;`, then the
+// file changed on disk, then Keep mine. The text editor showed the broken
+// text under "No errors or warnings" and Diagnostics (0): the diagnostics
+// stayed the newer file's. Kept edits are described by their own again.
+TEST_F(ViewerFiles, KeptEditsShowTheirOwnDiagnosticsAgain) {
+    const std::string broken = replaced(kOriginal, "height: 48;", "height: 48");
+    type_text(state, broken);
+    ASSERT_TRUE(run_until([&] { return !state.check.checker.in_flight(); }));
+    ASSERT_TRUE(state.doc.draft.has_value());
+    ASSERT_TRUE(has_errors(state.doc.diagnostics));
+    they_save(kTheirs);
+    ASSERT_TRUE(state.files.pending_reload.has_value());
+    resolve_reload(state, ReloadChoice::keep_edits);
+    ASSERT_TRUE(run_until([&] { return !state.check.checker.in_flight(); }));
+    EXPECT_TRUE(has_errors(state.doc.diagnostics)) << "the kept text's error is listed again";
+    EXPECT_EQ(state.doc.diagnostics_source, broken);
+    EXPECT_EQ(document_text(state.doc), broken);
+
+    // A panel edit kept over a newer file with errors: that file's errors go.
+    undo(state);
+    ASSERT_FALSE(state.doc.draft.has_value());
+    edit_pigment();
+    they_save(broken);
+    ASSERT_TRUE(state.doc.load_failed);
+    resolve_reload(state, ReloadChoice::keep_edits);
+    model.frame(state);
+    EXPECT_FALSE(state.doc.load_failed);
+    EXPECT_FALSE(has_errors(state.doc.diagnostics)) << "the errors of the file not taken";
+    EXPECT_EQ(state.doc.diagnostics_source, state.doc.text);
+}
+
+// Found in the real window: an open of a large file takes seconds, and the
+// panels and the text stay editable meanwhile. The prompt for unsaved edits
+// is asked when the open is requested; an edit made after that was replaced
+// by the opened file without a word. Such an edit is asked about when the
+// open arrives; the edits the user agreed to discard are not asked again.
+TEST_F(ViewerFiles, EditsMadeWhileAnotherFileOpensAreNotDroppedUnasked) {
+    const fs::path other = file.parent_path() / "other.jts";
+    write_file(other, kTheirs);
+    request_open_guarded(state, other);
+    ASSERT_FALSE(state.files.unsaved_prompt.has_value()) << "nothing unsaved yet: it opens";
+    edit_pigment();  // while it loads
+    ASSERT_TRUE(model.run_until_loaded(state));
+    EXPECT_EQ(state.doc.path, file) << "the open replaced an edit made while it loaded";
+    EXPECT_EQ(state.doc.scene.primitives[1].material.pigment, kMyPigment);
+    ASSERT_TRUE(state.files.unsaved_prompt.has_value());
+    EXPECT_EQ(state.files.unsaved_prompt->path, other);
+
+    resolve_unsaved(state, UnsavedChoice::discard);
+    ASSERT_TRUE(model.run_until_loaded(state));
+    EXPECT_EQ(state.doc.path, other) << "the edits the user discarded are not asked about again";
+    EXPECT_EQ(state.doc.scene, parse_scene(kTheirs).scene);
+    EXPECT_FALSE(state.files.unsaved_prompt.has_value());
+
+    // Typed text discarded while its check runs: the check taking the text in
+    // during the open is no edit of the user's.
+    type_text(state, replaced(kTheirs, "height: 48;", "height: 50;"));
+    request_open_guarded(state, file);
+    ASSERT_TRUE(state.files.unsaved_prompt.has_value());
+    resolve_unsaved(state, UnsavedChoice::discard);
+    state.check.checker.wait();
+    ASSERT_TRUE(take_checked_text(state));  // before the open arrives
+    ASSERT_FALSE(state.doc.draft.has_value()) << "the typed text parses";
+    ASSERT_TRUE(model.run_until_loaded(state));
+    EXPECT_EQ(state.doc.path, file) << state.message;
+    EXPECT_FALSE(state.files.unsaved_prompt.has_value());
+}
+
 TEST_F(ViewerFiles, SaveRefusesToOverwriteANewerFileUntilToldTo) {
     edit_pigment();
     they_save(kTheirs);
@@ -187,6 +271,33 @@ TEST_F(ViewerFiles, SavingAnUntouchedFileNeedsNoConfirmation) {
     ASSERT_TRUE(model.run_until_loaded(state));
     edit_scene(state, [](Scene& s) { s.settings.samples = 2; });
     EXPECT_TRUE(save_scene(state)) << state.message;
+}
+
+// The save replaces the file by a rename, which the folder allows whatever
+// the file's own mode: the file keeps its mode, and one nobody may write is
+// not replaced (root may write anything, so its bits are what count).
+TEST_F(ViewerFiles, SaveKeepsTheFilesModeAndLeavesAReadOnlyFileAlone) {
+    const auto mode = [&] { return fs::status(file).permissions() & fs::perms::all; };
+    fs::permissions(file, fs::perms::owner_read | fs::perms::owner_write);
+    edit_pigment();
+    ASSERT_TRUE(save_scene(state)) << state.message;
+    EXPECT_EQ(read_file(file), kMine);
+    EXPECT_EQ(mode(), fs::perms::owner_read | fs::perms::owner_write) << "a private file stays so";
+    ASSERT_TRUE(model.run_until_loaded(state));
+
+    const fs::perms read_only = fs::perms::owner_read | fs::perms::group_read;
+    fs::permissions(file, read_only);
+    edit_scene(state, [](Scene& s) { s.settings.samples = 3; });
+    EXPECT_FALSE(save_scene(state));
+    EXPECT_NE(state.message.find("read-only"), std::string::npos) << state.message;
+    EXPECT_FALSE(save_scene_anyway(state)) << "no answer replaces a read-only file";
+    EXPECT_EQ(read_file(file), kMine);
+    EXPECT_EQ(mode(), read_only);
+    EXPECT_TRUE(has_unsaved_edits(state.doc)) << "the edit is still there to save elsewhere";
+    const fs::path copy = file.parent_path() / "copy.jts";
+    ASSERT_TRUE(save_scene_as(state, copy, false)) << state.message;
+    EXPECT_EQ(parse_scene(read_file(copy)).scene.settings.samples, 3);
+    fs::permissions(file, fs::perms::owner_all);
 }
 
 TEST_F(ViewerFiles, UndoingANewCameraAfterSavingSavesItsRemoval) {

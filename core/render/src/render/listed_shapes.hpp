@@ -53,7 +53,7 @@ struct ListedShapes {
     bool covered = false;
     // A closest-hit walk of a covered list long enough to go in batches
     // offers this hint's sphere first, and leaves it on the sphere met first
-    // (ray_queries.cpp); other walks leave it alone.
+    // (closest_hit.cpp); other walks leave it alone.
     HitHint* hint = nullptr;
     std::size_t size() const { return shapes.size(); }
 };

@@ -51,7 +51,7 @@ inline constexpr double shadow_reach_factor = 2.0;
 inline constexpr double shadow_pad_factor = 0x1p-10;
 
 // The measure of crowding that the shadow BVH and the longer walks of the
-// lights' cells (ray_queries.cpp) pay on: the spheres' volumes summed over
+// lights' cells (occlusion.cpp) pay on: the spheres' volumes summed over
 // the volume of their bounding box, above min_overlap. It is 8 on
 // nested_shells and under 0.2 on the other race scenes; above 1 the spheres
 // must overlap. Where they hardly overlap, the main BVH's single tight boxes

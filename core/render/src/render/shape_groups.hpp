@@ -10,7 +10,7 @@
 //
 // Why a group's sphere never drops a hit. Lane k of a group is a sphere
 // itself, or a transformed shape's bounding sphere (which holds the shape with
-// a margin of 1e-6 of the scene's size, prepare_scene.cpp). The group's
+// a margin of 1e-6 of the scene's size, prepare_geometry.cpp). The group's
 // sphere holds every lane's with `pad` to spare: its radius is the largest
 // |centre_g - centre_k| + r_k, rounded up, plus pad = group_pad * m, m the
 // largest coordinate any lane reaches. The groups take rays whose origin lies

@@ -1,6 +1,7 @@
 #include "render/user_geometry.hpp"
 
 #include "render/embree_device.hpp"
+#include "render/prepared_scene.hpp"
 
 namespace jt {
 
@@ -18,6 +19,16 @@ unsigned attach_user_geometry(RTCScene scene, void* user_data, std::size_t count
     const unsigned id = rtcAttachGeometry(scene, geometry);
     rtcReleaseGeometry(geometry);
     return id;
+}
+
+void sphere_bounds(const RTCBoundsFunctionArguments* args) {
+    const auto* g = static_cast<const Geometry*>(args->geometryUserPtr);
+    *args->bounds_o = padded_sphere_bounds(*g, args->primID);
+}
+
+void shape_bounds(const RTCBoundsFunctionArguments* args) {
+    const auto* g = static_cast<const Geometry*>(args->geometryUserPtr);
+    *args->bounds_o = g->shapes[args->primID].bounds;
 }
 
 }  // namespace jt

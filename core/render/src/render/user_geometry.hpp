@@ -15,4 +15,10 @@ unsigned attach_user_geometry(RTCScene scene, void* user_data, std::size_t count
                               RTCBuildQuality quality, RTCBoundsFunction bounds,
                               RTCIntersectFunctionN intersect, RTCOccludedFunctionN occluded);
 
+// The bounds callbacks of the spheres' and the shapes' user geometries,
+// whose user data is the Geometry: each sphere's box padded as the BVH needs
+// it, each shape's padded box.
+void sphere_bounds(const RTCBoundsFunctionArguments* args);
+void shape_bounds(const RTCBoundsFunctionArguments* args);
+
 }  // namespace jt

@@ -15,7 +15,8 @@
 namespace jt {
 
 // On failure the error names the file and the reason ("cannot write
-// 'out/x.bmp': No such file or directory").
+// 'out/x.bmp': No such file or directory"). A file replaced keeps its
+// permissions; a new one is made 0644.
 Expected<void> write_file_atomically(const std::filesystem::path& target,
                                      std::span<const std::uint8_t> bytes);
 

@@ -44,7 +44,7 @@ inline constexpr double kMaxMagnitude = 1e9;
 // this bounds its stack whatever the input.
 inline constexpr int kMaxExpressionNesting = 256;
 
-// Includes inside one another (docs/language.md §15.5): the main file has
+// Includes inside one another (docs/language.md §15.6): the main file has
 // depth 0, and a file may be opened at depth 32 at most. The parser recurses
 // once per level, so this also bounds its stack.
 inline constexpr int kMaxIncludeDepth = 32;

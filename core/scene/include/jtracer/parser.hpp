@@ -70,7 +70,7 @@ struct ParseOptions {
     std::vector<Define> defines = {};
     // The value of `clock` (docs/language.md §15.4).
     double clock = 0.0;
-    // The main file's path as given (docs/language.md §15.5): `include`
+    // The main file's path as given (docs/language.md §15.6): `include`
     // paths are relative to its folder, and a diagnostic in an included file
     // is named from it ("scenes/a.jts" for `include "a.jts";` in
     // "scenes/main.jts"). Empty for a text of no file: includes are then

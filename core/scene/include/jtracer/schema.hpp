@@ -462,7 +462,7 @@ constexpr std::span<const std::string_view> block_keywords() {
 }
 
 // The string properties that name a file beside the scene: in an included
-// file they are relative to that file's folder (docs/language.md §15.5).
+// file they are relative to that file's folder (docs/language.md §15.6).
 inline constexpr std::array<std::string_view, 3> kFileProperties{"file", "image_map",
                                                                  "background_map"};
 constexpr bool names_a_file(std::string_view property) {

@@ -19,7 +19,7 @@
 
 namespace jt {
 
-// An included file an edit changes (docs/language.md §15.5): its new text,
+// An included file an edit changes (docs/language.md §15.6): its new text,
 // to be written in place like the main file's.
 struct EditedFile {
     std::uint32_t file = 0;  // its first reading (SourcePos::file)

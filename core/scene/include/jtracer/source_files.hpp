@@ -1,5 +1,5 @@
 #pragma once
-// The files a scene is read from (docs/language.md §15.5): the main text and
+// The files a scene is read from (docs/language.md §15.6): the main text and
 // every file `include` reads. A SourcePos's `file` indexes them: 0 is the main
 // text, which the caller holds; k > 0 is SceneSource::files[k - 1]. A file
 // included twice is read twice and listed twice: each reading has its own

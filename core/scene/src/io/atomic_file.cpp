@@ -66,7 +66,9 @@ struct Temporary {
     int error = 0;
 };
 
-Temporary write_temporary(const std::filesystem::path& real, const BytePieces& next_piece) {
+// `mode`: the permissions the file gets (a replaced file keeps its own).
+Temporary write_temporary(const std::filesystem::path& real, const BytePieces& next_piece,
+                          mode_t mode) {
     // Beside the target, so the rename or link stays within one file system.
     const std::string pattern = real.string() + ".tmp-XXXXXX";
     Temporary t{std::vector<char>(pattern.begin(), pattern.end())};
@@ -74,8 +76,8 @@ Temporary write_temporary(const std::filesystem::path& real, const BytePieces& n
     const int fd = ::mkstemp(t.name.data());
     if (fd < 0) return {{}, errno};
     int error = write_all(fd, next_piece);
-    // mkstemp creates the file 0600; an image is an ordinary readable file.
-    ::fchmod(fd, 0644);
+    // mkstemp creates the file 0600.
+    ::fchmod(fd, mode);
     // EINVAL: the file system cannot sync (a pipe-like or special one); the bytes are written.
     if (error == 0 && ::fsync(fd) != 0 && errno != EINVAL) error = errno;
     if (::close(fd) != 0 && error == 0) error = errno;
@@ -108,7 +110,13 @@ Expected<void> write_file_atomically(const std::filesystem::path& target,
         real = std::filesystem::weakly_canonical(target, ec);
         if (ec) return failure(target, ec.value());
     }
-    const Temporary temp = write_temporary(real, next_piece);
+    // The file replaced keeps its permissions: a private scene stays
+    // private, an executable script executable (never set-id bits, which
+    // the new file, of another owner perhaps, must not take). A new one is
+    // an ordinary readable file.
+    struct stat existing {};
+    const mode_t mode = ::stat(real.c_str(), &existing) == 0 ? existing.st_mode & 0777 : 0644;
+    const Temporary temp = write_temporary(real, next_piece, mode);
     if (temp.error != 0) return failure(target, temp.error);
     if (std::rename(temp.name.data(), real.c_str()) != 0) {
         const int error = errno;
@@ -121,7 +129,7 @@ Expected<void> write_file_atomically(const std::filesystem::path& target,
 Expected<bool> write_new_file(const std::filesystem::path& target,
                               std::span<const std::uint8_t> bytes) {
     if (target.empty()) return Error{"cannot write an image to an empty file name"};
-    const Temporary temp = write_temporary(target, one_piece(bytes));
+    const Temporary temp = write_temporary(target, one_piece(bytes), 0644);
     if (temp.error != 0) return failure(target, temp.error);
     // The whole file is there under its temporary name, then linked to its own:
     // readers never see it partial, and link fails if the name is taken.

@@ -1,5 +1,5 @@
 #pragma once
-// The files being read by `include` (docs/language.md §15.5): which file a
+// The files being read by `include` (docs/language.md §15.6): which file a
 // path names, how deep and whether in a cycle, the texts read, and how a
 // position in any of them is named in messages.
 

@@ -58,7 +58,7 @@ class NameTable {
     std::vector<std::string_view> names() const;
     bool empty() const { return symbols_.empty(); }
     // After an included file could not be read, its names are missing: a use
-    // of an unknown name is then no longer reported (docs/language.md §15.5).
+    // of an unknown name is then no longer reported (docs/language.md §15.6).
     bool reports_unknown() const { return reports_unknown_; }
     void stop_reporting_unknown() { reports_unknown_ = false; }
 

@@ -1,6 +1,7 @@
 // Every scene in scenes/ rendered at 160x90 and compared with its reference in
 // tests/references/ (PNG, looked at by eye before it was committed; the
-// analytic tests check the rules the references rely on).
+// analytic tests and the differential test against the reference tracer
+// check the rules the references rely on).
 //
 // A failing case keeps its render and a diff image under the build directory
 // and prints where. To accept new renders after a deliberate change, run with

@@ -1,0 +1,212 @@
+// The file's top level, the blocks that hold only properties or only blocks,
+// and how bad input is skipped: each error is reported where it happened and
+// reading resumes at the next ';' or '}' (a brace counter, never recursion).
+
+#include "jtracer/schema.hpp"
+#include "language/block_body.hpp"
+#include "language/quote.hpp"
+#include "language/scene_parser.hpp"
+#include "language/suggest.hpp"
+
+#include <cstdint>
+#include <span>
+#include <string>
+#include <utility>
+
+namespace jt::lang {
+namespace {
+
+// "a, b and c" (or "a, b or c" with `last` "or"). Built with append: GCC 12
+// warns falsely on "literal" + std::string&& (quote.hpp).
+std::string listed(std::span<const std::string_view> names, std::string_view last) {
+    std::string out;
+    for (std::size_t i = 0; i < names.size(); ++i) {
+        if (i > 0 && i + 1 == names.size())
+            out.append(1, ' ').append(last).append(1, ' ');
+        else if (i > 0)
+            out += ", ";
+        out += names[i];
+    }
+    return out;
+}
+
+}  // namespace
+
+std::string_view static_keyword(std::string_view word) {
+    for (std::string_view k : block_keywords())
+        if (same_name(k, word)) return k;
+    return {};  // never: blocks are opened only at a known keyword
+}
+
+void SceneParser::skip_braced() {
+    const SourcePos open = cur_->pos;
+    std::size_t depth = 0;
+    do {
+        if (at(TokenKind::lbrace)) ++depth;
+        if (at(TokenKind::rbrace)) --depth;
+        advance();
+    } while (depth > 0 && !at(TokenKind::end));
+    if (depth > 0) {
+        sink_.error(open, "this '{' is never closed: expected '}' before the end of the file");
+    }
+}
+
+void SceneParser::skip_statement() {
+    while (!at(TokenKind::end) && !at(TokenKind::rbrace)) {
+        if (at(TokenKind::semicolon)) {
+            advance();
+            return;
+        }
+        if (at(TokenKind::lbrace)) {
+            skip_braced();
+            return;
+        }
+        advance();
+    }
+}
+
+void SceneParser::skip_block() {
+    advance();
+    if (at(TokenKind::lbrace)) {
+        skip_braced();
+    } else {
+        skip_statement();
+    }
+}
+
+bool SceneParser::open_block(BlockSource& block) {
+    return open_block(block, static_keyword(cur_->text));
+}
+
+bool SceneParser::open_block(BlockSource& block, std::string_view keyword, bool behind) {
+    block.keyword = keyword;
+    block.keyword_span = span_of(*cur_);
+    if (behind && plain_properties_ && next_->kind == TokenKind::lbrace) {
+        block.open_brace = static_cast<std::uint32_t>(next_->offset);
+        tokens_behind_ = true;
+        return true;
+    }
+    advance();
+    if (at(TokenKind::lbrace)) {
+        block.open_brace = static_cast<std::uint32_t>(cur_->offset);
+        advance();
+        return true;
+    }
+    sink_.error(cur_->pos,
+                "expected '{' after '" + std::string(block.keyword) + "', got " + describe(*cur_));
+    skip_statement();
+    return false;
+}
+
+bool SceneParser::top_level_only() {
+    if (next_->kind == TokenKind::colon) return false;
+    const bool define = same_name(cur_->text, kDefineKeyword);
+    if (!define && !same_name(cur_->text, kIncludeKeyword)) return false;
+    if (define) {
+        sink_.error(cur_->pos, "'define' may stand only at the top level, outside every block");
+        skip_statement();
+    } else {
+        sink_.error(cur_->pos,
+                    "'include' may stand only at the top level, directly in 'cameras' or "
+                    "directly in 'scene'");
+        skip_statement();
+    }
+    return true;
+}
+
+void SceneParser::unknown_block(std::string_view where, std::span<const std::string_view> allowed) {
+    if (allowed.empty()) {
+        sink_.error(cur_->pos, "unexpected block " + quote(cur_->text.substr(0, 40)) + " " +
+                                   std::string(where) + ", which holds only properties");
+    } else {
+        sink_.error(cur_->pos, unknown_name_message("block", cur_->text, where, allowed));
+    }
+    skip_block();
+}
+
+void SceneParser::only_blocks(const BlockSource& block, std::span<const std::string_view> allowed,
+                              const Property& p) {
+    std::string list;
+    for (std::string_view name : allowed) list.append(list.empty() ? "" : ", ").append(name);
+    sink_.error(p.name_span.pos, quote(block.keyword) + " holds only blocks (" + list +
+                                     "), not properties like " + quote(p.name));
+}
+
+void SceneParser::block_in_property_block(const BlockSource& block) {
+    if (block.keyword == schema_of<PointLight>().keyword &&
+        contains(primitive_blocks(), cur_->text)) {
+        sink_.error(cur_->pos, "a " + std::string(block.keyword) + " takes no '" +
+                                   std::string(cur_->text) + "' block: only " +
+                                   listed(shape_keywords(), "and") + " do");
+        skip_block();
+        return;
+    }
+    unknown_block("in '" + std::string(block.keyword) + "'", kNoBlocks);
+}
+
+void SceneParser::parse_file() {
+    while (!at(TokenKind::end)) {
+        if (at(TokenKind::word) && cur_->text == schema_of<RenderSettings>().keyword) {
+            parse_render_settings();
+        } else if (at(TokenKind::word) && cur_->text == kCamerasKeyword) {
+            parse_cameras();
+        } else if (at(TokenKind::word) && cur_->text == kSceneKeyword) {
+            parse_scene();
+        } else if (at(TokenKind::word) && cur_->text == kDefineKeyword) {
+            parse_define();
+        } else if (at(TokenKind::word) && cur_->text == kIncludeKeyword) {
+            parse_include([&] { parse_file(); });
+        } else if (at(TokenKind::word) && same_name(cur_->text, schema_of<Material>().keyword) &&
+                   next_->kind != TokenKind::lbrace) {
+            parse_named_material();
+        } else if (at(TokenKind::word)) {
+            unknown_block("at the top level", top_blocks());
+        } else if (at(TokenKind::lbrace)) {
+            sink_.error(cur_->pos,
+                        "expected a block name (" + listed(top_blocks(), "or") + ") before '{'");
+            skip_braced();
+        } else {
+            if (!at(TokenKind::bad_value)) {  // a bad value was reported by the lexer
+                sink_.error(cur_->pos, "expected a block (" + listed(top_blocks(), "or") +
+                                           "), got " + describe(*cur_));
+            }
+            advance();
+        }
+    }
+}
+
+void SceneParser::parse_render_settings() {
+    BlockSource block;
+    RenderSettings settings;  // a later block replaces the earlier one whole
+    if (!parse_property_block(block, 0, settings)) return;
+    if (result_.source.render_settings) {
+        sink_.warning(block.keyword_span.pos,
+                      "another 'render_settings' block: only the last one is used, so the "
+                      "one at line " +
+                          std::to_string(result_.source.render_settings->keyword_span.pos.line) +
+                          " is ignored");
+    }
+    result_.scene.settings = std::move(settings);
+    result_.source.render_settings = std::move(block);
+}
+
+void SceneParser::parse_cameras() {
+    BlockSource cameras;
+    if (!open_block(cameras)) return;
+    parse_body(
+        cameras, cameras_blocks(),
+        [&](const Property& p) { only_blocks(cameras, cameras_blocks(), p); },
+        [&] {
+            if (cur_->text != schema_of<Camera>().keyword) {
+                unknown_block("in '" + std::string(kCamerasKeyword) + "'", cameras_blocks());
+                return;
+            }
+            BlockSource block;
+            Camera camera;
+            if (!parse_property_block(block, 0, camera)) return;
+            result_.scene.cameras.push_back(std::move(camera));
+            result_.source.cameras.push_back(std::move(block));
+        });
+}
+
+}  // namespace jt::lang

@@ -1,0 +1,72 @@
+// Include (docs/language.md §15.6): the included file's statements are read
+// where the `include` stands, with a lexer of their own, and reading resumes
+// after its ';' once they end.
+
+#include "language/scene_parser.hpp"
+
+#include <optional>
+#include <string>
+#include <utility>
+
+namespace jt::lang {
+
+bool SceneParser::enter_include(IncludeResume& resume) {
+    advance();
+    if (!at(TokenKind::string)) {
+        if (!at(TokenKind::bad_value))
+            sink_.error(cur_->pos,
+                        "expected the path of a file in double quotes after "
+                        "'include', got " +
+                            describe(*cur_));
+        skip_statement();
+        return false;
+    }
+    const Token path = *cur_;
+    advance();
+    if (at(TokenKind::semicolon)) {
+        advance();
+    } else {
+        sink_.error(
+            {path.pos.line, path.pos.column + static_cast<int>(path.length), path.pos.file},
+            "expected ';' after 'include \"" + std::string(path.text.substr(0, 40)) + "\"'");
+    }
+    bool unreadable = false;
+    const std::optional<IncludeStack::Opened> opened =
+        include_.open(path.text, path.pos, sink_, unreadable);
+    if (!opened) {
+        if (unreadable) names_.stop_reporting_unknown();
+        return false;
+    }
+    // An included file that changed since the earlier parse: its offsets
+    // say nothing of what it holds now.
+    if (earlier_ && (opened->file > earlier_->files.size() ||
+                     earlier_->files[opened->file - 1].text != opened->text))
+        earlier_ = nullptr;
+    resume.tokens = {*cur_, *next_};
+    resume.text = text_;
+    resume.lexer = reading_;
+    Lexer& lexer = resume.included.emplace(opened->text, sink_, opened->file);
+    reading_ = &lexer;
+    text_ = opened->text;
+    lexer.next(*cur_);
+    lexer.next(*next_);
+    return true;
+}
+
+void SceneParser::leave_include(IncludeResume& resume) {
+    include_.close();
+    *cur_ = resume.tokens[0];
+    *next_ = resume.tokens[1];
+    reading_ = resume.lexer;
+    text_ = resume.text;
+}
+
+void SceneParser::rebase_file_name(Property& property) {
+    if (property.value.form != Value::Form::string || property.name_span.pos.file == 0 ||
+        !names_a_file(property.name))
+        return;
+    std::string rebased = include_.rebased_asset(property.value.text, property.name_span.pos.file);
+    if (!rebased.empty()) property.value.text = rebased_names_.emplace_back(std::move(rebased));
+}
+
+}  // namespace jt::lang
