@@ -229,6 +229,19 @@ TEST_F(Include, TheSameFileTwiceIsFineUnlessItDefinesNames) {
                   (dir / "main.jts").string() + ":2:9");
 }
 
+TEST_F(Include, AFindingInAnIncludedFileNamesThatFileForItsEarlierPlace) {
+    // A primitive naming two materials points at the first: in an included
+    // file, with the file and the chain it came through, as for a name
+    // defined twice.
+    write("ball.jts", "sphere {\n  material: m;\n  material: m;\n}\n");
+    EXPECT_EQ(located(parse("material m { reflection: 0.5; }\n"
+                            "scene { include \"ball.jts\"; }\n")),
+              "ball.jts:3:3: error: a primitive names at most one material; this one "
+              "already names one at " +
+                  (dir / "ball.jts").string() + ":2:3, included from " +
+                  (dir / "main.jts").string() + ":2:17");
+}
+
 TEST_F(Include, NamesAreVisibleAcrossFilesInReadingOrder) {
     write("defs.jts", "define r = 2;\nmaterial red { pigment: <1, 0, 0>; }\n");
     write("use.jts", "scene { sphere { radius: r; material: red; } }\n");

@@ -318,7 +318,11 @@ TEST_F(ViewerSafety, StatusAndTitleNameThePassTheTimesAndPausing) {
     EXPECT_NE(done.find("done: 4 samples in"), std::string::npos) << done;
     EXPECT_NE(done.find("Mrays/s"), std::string::npos) << done;
     viewer.press_key(state, keys::space);
-    EXPECT_NE(render_status(state).find("paused"), std::string::npos) << render_status(state);
+    // Paused when done: nothing is left to resume, only edits to hold back.
+    EXPECT_NE(render_status(state).find("done: 4 samples, paused | an edit waits for Space"),
+              std::string::npos)
+        << render_status(state);
+    EXPECT_EQ(render_status(state).find("paused at"), std::string::npos) << render_status(state);
     EXPECT_NE(window_title(state).find("paused"), std::string::npos) << window_title(state);
     edit_scene(state, [](Scene& s) { s.settings.recurse_depth = 1; });
     viewer.frame(state);

@@ -41,6 +41,15 @@ void render_status(const AppState& state, std::string& text) {
     const double mrays = p.seconds > 0 ? static_cast<double>(p.rays) / p.seconds / 1e6 : 0.0;
     char speed[48];
     std::snprintf(speed, sizeof speed, "%.1f Mrays/s", mrays);
+    // Paused after its last sample, the render has nothing left to resume:
+    // the pause only holds edits back until Space.
+    if (state.render.paused && state.render.display_complete && !state.render.edit_waiting) {
+        char done[64];
+        std::snprintf(done, sizeof done, "done: %d %s, paused | an edit waits for Space",
+                      p.samples_done, p.samples_done == 1 ? "sample" : "samples");
+        text += done;
+        return;
+    }
     if (state.render.paused) {
         text += "paused at ";
         text += pass_label(p, samples, state.render.converging);

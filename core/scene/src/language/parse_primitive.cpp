@@ -53,11 +53,6 @@ std::uint32_t material_mask(std::span<const PropertySource> records) {
     return mask;
 }
 
-// "LINE:COLUMN".
-std::string where(SourcePos pos) {
-    return std::to_string(pos.line) + ":" + std::to_string(pos.column);
-}
-
 // How a message names the kind of a name's value.
 std::string kind_words(const Symbol& symbol) {
     switch (symbol.value.kind) {
@@ -95,7 +90,7 @@ void SceneParser::parse_primitive_body(Primitive& primitive, OpenBlock& open) {
                         sink_.error(at,
                                     "a primitive names at most one material; this one "
                                     "already names one at " +
-                                        where(named_at));
+                                        include_.where(named_at));
                         return;
                     }
                     named = found;
