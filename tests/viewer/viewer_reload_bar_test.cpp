@@ -21,6 +21,18 @@ namespace {
 using namespace jt::test;
 namespace fs = std::filesystem;
 
+// An unsaved edit here (width 32), then the file changed on disk (fov 55):
+// once the change is found, the reload bar's choice waits.
+void edit_here_and_on_disk(HeadlessViewer& viewer, AppState& state, const fs::path& file) {
+    edit_scene(state, [](Scene& s) { s.settings.width = 32; });
+    viewer.frame(state);
+    std::string theirs = read_file(file);
+    theirs.replace(theirs.find("fov: 50;"), 8, "fov: 55;");
+    write_file(file, theirs);
+    ASSERT_TRUE(viewer.run_until_loaded(state));
+    ASSERT_TRUE(state.files.pending_reload);
+}
+
 class ViewerReloadBar : public ViewerFixture {
   protected:
     ViewerReloadBar() : ViewerFixture(1100, 700) {}
@@ -32,13 +44,7 @@ TEST_F(ViewerReloadBar, TheChoiceIsAboveTheImageAndShowsTheDifferences) {
     const ScreenRect image_area = viewer.image_area();
     EXPECT_EQ(find_item(viewer.ui_items(), "reload bar"), nullptr) << "no choice to make";
 
-    edit_scene(state, [](Scene& s) { s.settings.width = 32; });
-    viewer.frame(state);
-    std::string theirs = read_file(file);
-    theirs.replace(theirs.find("fov: 50;"), 8, "fov: 55;");
-    write_file(file, theirs);
-    ASSERT_TRUE(viewer.run_until_loaded(state));
-    ASSERT_TRUE(state.files.pending_reload);
+    ASSERT_NO_FATAL_FAILURE(edit_here_and_on_disk(viewer, state, file));
     EXPECT_NE(state.message.find("bar above the image"), std::string::npos) << state.message;
     viewer.frame(state);
     const UiItem* bar = find_item(viewer.ui_items(), "reload bar");
@@ -97,13 +103,7 @@ TEST_F(ViewerNarrowWindow, TheImageAndTheReloadBarStayBesideTheTextEditor) {
     EXPECT_GE(area.x1 - area.x0, 100.0f) << "the image has no room beside the text";
     EXPECT_GT(viewer.image_rect().x1, viewer.image_rect().x0);
 
-    edit_scene(state, [](Scene& s) { s.settings.width = 32; });
-    viewer.frame(state);
-    std::string theirs = read_file(file);
-    theirs.replace(theirs.find("fov: 50;"), 8, "fov: 55;");
-    write_file(file, theirs);
-    ASSERT_TRUE(viewer.run_until_loaded(state));
-    ASSERT_TRUE(state.files.pending_reload);
+    ASSERT_NO_FATAL_FAILURE(edit_here_and_on_disk(viewer, state, file));
     viewer.frame(state);
     viewer.frame(state);
     ASSERT_TRUE(viewer.click(state, "Keep mine")) << "the bar's choice is not drawn";

@@ -363,21 +363,38 @@ TEST_F(ViewerTextEditor, ADeletedFileSaysItWasDeletedAndKeepsTheText) {
     EXPECT_EQ(read_file(file), original);
 }
 
+// A scene whose light is in main.jts and whose ball is in parts/ball.jts,
+// written into a scratch folder of its own; the folder.
+constexpr std::string_view kIncludingMain =
+    "render_settings { width: 32; height: 24; }\n"
+    "cameras { perspective_camera { aspect: 1.3333333333333333; } }\n"
+    "scene { point_light { position: <3, 5, 4>; } include \"parts/ball.jts\"; }\n";
+constexpr std::string_view kIncludedBall = "sphere { center: <0, 0, -5>; radius: 1; }\n";
+fs::path write_including_scene(const std::string& name) {
+    const fs::path dir = make_scratch_dir(name);
+    fs::create_directories(dir / "parts");
+    write_file(dir / "main.jts", kIncludingMain);
+    write_file(dir / "parts" / "ball.jts", kIncludedBall);
+    return dir;
+}
+
+// Ctrl+Z until the editor shows `text` again, ten times at most.
+void undo_until(HeadlessViewer& viewer, AppState& state, const std::string& text) {
+    for (int i = 0; i < 10 && viewer.text_editor().buffer != text; ++i) {
+        std::vector<KeyEvent> events;
+        shortcut(events, keys::letter('Z'));
+        viewer.key_events(state, events, 40.0, 16.0);
+    }
+}
+
 // An included file is opened from the button above the
 // text, typed in (Ctrl+Z undoes that typing only), kept while another file
 // is shown, and Ctrl+S writes it into its file.
 TEST(ViewerIncludedFileEditor, OpensTypesUndoesAndSavesAnIncludedFile) {
     HeadlessViewer viewer{1200, 700};
     ASSERT_TRUE(viewer.ok()) << viewer.error();
-    const fs::path dir = make_scratch_dir("included-file-editor");
-    const std::string main_text =
-        "render_settings { width: 32; height: 24; }\n"
-        "cameras { perspective_camera { aspect: 1.3333333333333333; } }\n"
-        "scene { point_light { position: <3, 5, 4>; } include \"parts/ball.jts\"; }\n";
-    const std::string ball_text = "sphere { center: <0, 0, -5>; radius: 1; }\n";
-    fs::create_directories(dir / "parts");
-    write_file(dir / "main.jts", main_text);
-    write_file(dir / "parts" / "ball.jts", ball_text);
+    const fs::path dir = write_including_scene("included-file-editor");
+    const std::string main_text(kIncludingMain), ball_text(kIncludedBall);
     AppState state{test_config()};
     open_scene(state, dir / "main.jts");
     ASSERT_TRUE(state.doc.loaded) << format_diagnostics(state.doc);
@@ -404,11 +421,7 @@ TEST(ViewerIncludedFileEditor, OpensTypesUndoesAndSavesAnIncludedFile) {
     EXPECT_EQ(document_text(state.doc), main_text) << "the scene file's text is not touched";
 
     // Ctrl+Z undoes the typing in this file, and is no undo of the scene's.
-    for (int i = 0; i < 10 && ed.buffer != ball_text; ++i) {
-        events.clear();
-        shortcut(events, keys::letter('Z'));
-        viewer.key_events(state, events, 40.0, 16.0);
-    }
+    undo_until(viewer, state, ball_text);
     EXPECT_EQ(ed.buffer, ball_text);
     EXPECT_FALSE(has_included_drafts(state.editor)) << "typed back: nothing to save";
 
@@ -448,15 +461,8 @@ TEST(ViewerIncludedFileEditor, OpensTypesUndoesAndSavesAnIncludedFile) {
 TEST(ViewerIncludedFileEditor, EscKeepsWhatWasTypedInAnIncludedFile) {
     HeadlessViewer viewer{1200, 700};
     ASSERT_TRUE(viewer.ok()) << viewer.error();
-    const fs::path dir = make_scratch_dir("included-file-esc");
-    const std::string main_text =
-        "render_settings { width: 32; height: 24; }\n"
-        "cameras { perspective_camera { aspect: 1.3333333333333333; } }\n"
-        "scene { point_light { position: <3, 5, 4>; } include \"parts/ball.jts\"; }\n";
-    const std::string ball_text = "sphere { center: <0, 0, -5>; radius: 1; }\n";
-    fs::create_directories(dir / "parts");
-    write_file(dir / "main.jts", main_text);
-    write_file(dir / "parts" / "ball.jts", ball_text);
+    const fs::path dir = write_including_scene("included-file-esc");
+    const std::string main_text(kIncludingMain), ball_text(kIncludedBall);
     AppState state{test_config()};
     open_scene(state, dir / "main.jts");
     ASSERT_TRUE(state.doc.loaded) << format_diagnostics(state.doc);
@@ -491,11 +497,7 @@ TEST(ViewerIncludedFileEditor, EscKeepsWhatWasTypedInAnIncludedFile) {
     ed.jump = static_cast<int>(std::string("# mine\n").size());
     viewer.frame(state);
     viewer.frame(state);
-    for (int i = 0; i < 10 && ed.buffer != ball_text; ++i) {
-        events.clear();
-        shortcut(events, keys::letter('Z'));
-        viewer.key_events(state, events, 40.0, 16.0);
-    }
+    undo_until(viewer, state, ball_text);
     EXPECT_EQ(ed.buffer, ball_text);
     fs::remove_all(dir);
 }

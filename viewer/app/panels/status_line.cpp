@@ -38,16 +38,14 @@ void render_status(const AppState& state, std::string& text) {
         text += state.render.paused ? "paused" : "preparing the scene";
         return;
     }
-    const double mrays = p.seconds > 0 ? static_cast<double>(p.rays) / p.seconds / 1e6 : 0.0;
-    char speed[48];
-    std::snprintf(speed, sizeof speed, "%.1f Mrays/s", mrays);
+    char done[48];
+    std::snprintf(done, sizeof done, "done: %d %s", p.samples_done,
+                  p.samples_done == 1 ? "sample" : "samples");
     // Paused after its last sample, the render has nothing left to resume:
     // the pause only holds edits back until Space.
     if (state.render.paused && state.render.display_complete && !state.render.edit_waiting) {
-        char done[64];
-        std::snprintf(done, sizeof done, "done: %d %s, paused | an edit waits for Space",
-                      p.samples_done, p.samples_done == 1 ? "sample" : "samples");
         text += done;
+        text += ", paused | an edit waits for Space";
         return;
     }
     if (state.render.paused) {
@@ -57,11 +55,12 @@ void render_status(const AppState& state, std::string& text) {
             state.render.edit_waiting ? " | edit waiting: Space renders it" : " | Space resumes";
         return;
     }
+    const double mrays = p.seconds > 0 ? static_cast<double>(p.rays) / p.seconds / 1e6 : 0.0;
+    char speed[48];
+    std::snprintf(speed, sizeof speed, "%.1f Mrays/s", mrays);
     if (render_complete(state.render)) {
-        char done[48];
-        std::snprintf(done, sizeof done, "done: %d %s in ", p.samples_done,
-                      p.samples_done == 1 ? "sample" : "samples");
         text += done;
+        text += " in ";
         text += seconds_text(p.seconds);
         text += " | ";
         text += speed;
