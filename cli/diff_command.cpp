@@ -129,7 +129,25 @@ int run_diff_command(int argc, char** argv) {
                    "outside the tolerance with the figures as its message")
         ->type_name("FILE");
     app.add_flag("-q,--quiet", quiet, "Print nothing but errors; the exit code tells the result");
-    if (std::optional<int> code = parse_command_line(app, argc, argv, "jtracer-cli diff"))
+    // Neither file written may be an image compared (a heat map over the
+    // reference would pass every later comparison), nor the other.
+    auto checks = [&] {
+        for (const auto& [flag, written] :
+             {std::pair<const char*, std::string>{"-o/--output", heat_map_path},
+              {"--junit", junit.value_or("")}}) {
+            if (written.empty()) continue;
+            for (const auto& [what, path] :
+                 {std::pair<const char*, std::string>{"EXPECTED", expected_path},
+                  {"ACTUAL", actual_path}})
+                if (same_file(written, path))
+                    throw CLI::ValidationError(
+                        flag, "'" + written + "' is the " + what + " image: it would be replaced");
+        }
+        if (junit && !heat_map_path.empty() && same_file(*junit, heat_map_path))
+            throw CLI::ValidationError(
+                "--junit", "'" + *junit + "' is also the heat map (-o): it would be replaced");
+    };
+    if (std::optional<int> code = parse_command_line(app, argc, argv, "jtracer-cli diff", checks))
         return *code;
 
     const std::string program = "jtracer-cli diff";

@@ -42,6 +42,11 @@ int run(const Options& o, bool& compared) {
     }
     const jt::RenderOptions& options = setup.render;
     const std::string& output = setup.output;
+    if (!o.output)
+        if (std::optional<std::string> clash = file_clash(o, output)) {
+            std::cerr << "jtracer-cli: " << *clash << "; nothing was written\n";
+            return exit_usage;
+        }
     if (jt::Expected<void> fits = check_render_memory(options, o.region_output); !fits) {
         std::cerr << "jtracer-cli: " << fits.error().message << "; nothing was written\n";
         return exit_io_error;

@@ -5,9 +5,39 @@
 #include <CLI/CLI.hpp>
 
 #include <cstdio>
+#include <filesystem>
 #include <iostream>
 
 namespace jt::cli {
+
+std::optional<std::string> file_clash(const Options& o, const std::string& output) {
+    using frontend::same_file;
+    const std::string named =
+        (o.output ? "-o/--output '" : "the scene's filename '") + output + "'";
+    // An empty output is not known yet: only the --junit file is checked.
+    if (!output.empty() && same_file(output, o.scene_path))
+        return named + " is the scene file itself: the image would replace it";
+    if (o.expect && !output.empty()) {
+        if (same_file(output, *o.expect))
+            return named +
+                   " is the reference given to --expect: the render would replace it "
+                   "before the comparison; write the render elsewhere";
+        const std::string heat_map =
+            std::filesystem::path(output).replace_extension(".diff.png").string();
+        if (same_file(heat_map, *o.expect))
+            return "--expect '" + *o.expect + "' is where the heat map of " + named + " goes (" +
+                   heat_map + "): a render outside the tolerance would replace it";
+    }
+    if (o.junit) {
+        for (const auto& [what, path] :
+             {std::pair<const char*, std::string>{"the scene file", o.scene_path},
+              {"the image", output},
+              {"the reference given to --expect", o.expect.value_or("")}})
+            if (!path.empty() && same_file(*o.junit, path))
+                return "--junit '" + *o.junit + "' is " + what + ": the report would replace it";
+    }
+    return std::nullopt;
+}
 
 ParsedOptions parse_options(int argc, char** argv) {
     ParsedOptions parsed;
@@ -86,6 +116,12 @@ ParsedOptions parse_options(int argc, char** argv) {
         if (o.expect && o.frames)
             throw CLI::ValidationError("--expect", "compares one image: not with --frames");
         frontend::check_sequence_flags(o);
+        // An -o with a frame field names other files; the scene's filename is
+        // known only once the scene is read (main.cpp checks it then).
+        const bool one_image = !o.frames && !o.check_only;
+        if (std::optional<std::string> clash =
+                file_clash(o, one_image ? o.output.value_or("") : std::string()))
+            throw CLI::ValidationError(*clash);
     };
     if (std::optional<int> code =
             frontend::parse_command_line(app, argc, argv, "jtracer-cli", checks))

@@ -36,4 +36,12 @@ struct ParsedOptions {
 
 ParsedOptions parse_options(int argc, char** argv);
 
+// Why the files of one run cannot be as named, or nothing: the image
+// (`output`, from -o or the scene's filename) would replace the scene file or
+// --expect's reference, its heat map (OUT.diff.png) the reference, or the
+// --junit file one of them. Each would destroy an input or make the
+// comparison meaningless (a render compared with itself always matches).
+// An empty `output` (not known yet) checks the --junit file alone.
+std::optional<std::string> file_clash(const Options& o, const std::string& output);
+
 }  // namespace jt::cli

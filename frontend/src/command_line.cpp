@@ -40,6 +40,15 @@ class GnuHelp : public CLI::Formatter {
 
 }  // namespace
 
+bool same_file(const std::filesystem::path& a, const std::filesystem::path& b) {
+    std::error_code error;
+    if (std::filesystem::equivalent(a, b, error)) return true;
+    const std::filesystem::path place_a = std::filesystem::weakly_canonical(a, error);
+    if (error) return false;
+    const std::filesystem::path place_b = std::filesystem::weakly_canonical(b, error);
+    return !error && place_a == place_b;
+}
+
 void add_version_flag(CLI::App& app, const std::string& program) {
     app.set_version_flag("--version", program + " " + jt::version_string());
 }

@@ -168,6 +168,22 @@ TEST_F(Diff, UsageErrors) {
     EXPECT_NE(out().find("Exit codes"), std::string::npos) << out();
 }
 
+// A file written over an image compared would lose it: a heat map over the
+// reference makes every later comparison against a heat map.
+TEST_F(Diff, RefusesToWriteOverTheImagesItCompares) {
+    write_png_file("b.png", gradient());
+    const std::string before = test::read_file(dir / "a.png");
+    for (const std::string& args :
+         {"a.png b.png -o a.png", "a.png b.png -o ./b.png", "a.png b.png --junit a.png",
+          "a.png b.png --junit b.png", "a.png b.png -o h.png --junit h.png"}) {
+        ProgramRun r = diff(args);
+        EXPECT_EQ(r.code, 2) << args << ": " << r.err;
+        EXPECT_NE(r.err.find("would be replaced"), std::string::npos) << args << ": " << r.err;
+    }
+    EXPECT_EQ(test::read_file(dir / "a.png"), before);
+    EXPECT_FALSE(exists("h.png"));
+}
+
 const std::string scene = R"(
 render_settings { width: 24; height: 16; filename: "render.bmp"; }
 cameras {
@@ -237,6 +253,53 @@ TEST_F(Expect, SizeMismatchMissingReferenceAndMisuse) {
     EXPECT_EQ(run(cli + " scene.jts --threshold 2").code, 2) << "needs --expect";
     EXPECT_EQ(run(cli + " scene.jts --check --expect ref.png").code, 2);
     EXPECT_EQ(run(cli + " scene.jts --region 0,0,4,4 --expect ref.png").code, 2);
+}
+
+// A render written over its own reference always "matches": a CI job so
+// misconfigured would pass whatever the renderer does. The scene file, the
+// reference and the report must each stay what they are.
+TEST_F(Expect, RefusesOutputsThatWouldReplaceTheSceneOrTheReference) {
+    const std::string scene_text = test::read_file(dir / "scene.jts");
+    const std::string reference_bytes = test::read_file(dir / "ref.png");
+    struct Case {
+        std::string args, message;
+    };
+    for (const Case& c : std::vector<Case>{
+             {"scene.jts -o scene.jts", "is the scene file itself"},
+             {"scene.jts -o ./scene.jts --width 8", "is the scene file itself"},
+             {"scene.jts -o ref.png --expect ref.png", "is the reference given to --expect"},
+             {"scene.jts -o ../" + dir.filename().string() + "/ref.png --expect ref.png --update",
+              "is the reference given to --expect"},
+             {"scene.jts -o new.png --expect new.png", "is the reference given to --expect"},
+             {"scene.jts -o out.png --expect out.diff.png", "is where the heat map"},
+             {"scene.jts -o out.png --expect ref.png --junit scene.jts", "is the scene file"},
+             {"scene.jts --expect ref.png --junit ref.png", "is the reference given"},
+             {"scene.jts -o out.png --expect ref.png --junit out.png", "is the image"},
+         }) {
+        ProgramRun r = run(cli + " " + c.args);
+        EXPECT_EQ(r.code, 2) << c.args << ": " << r.err;
+        EXPECT_NE(r.err.find(c.message), std::string::npos) << c.args << ": " << r.err;
+    }
+    EXPECT_EQ(test::read_file(dir / "scene.jts"), scene_text);
+    EXPECT_EQ(test::read_file(dir / "ref.png"), reference_bytes);
+    EXPECT_FALSE(exists("new.png"));
+    EXPECT_FALSE(exists("out.png"));
+
+    // The scene's own filename is checked once the scene is read.
+    std::string self = scene;
+    self.replace(self.find("render.bmp"), 10, "self.jts");
+    test::write_file(dir / "self.jts", self);
+    ProgramRun r = run(cli + " self.jts");
+    EXPECT_EQ(r.code, 2) << r.err;
+    EXPECT_NE(r.err.find("the scene's filename 'self.jts' is the scene file itself"),
+              std::string::npos)
+        << r.err;
+    EXPECT_EQ(test::read_file(dir / "self.jts"), self);
+    r = run(cli + " scene.jts --expect render.bmp");
+    EXPECT_EQ(r.code, 2) << r.err;
+    EXPECT_NE(r.err.find("the scene's filename 'render.bmp' is the reference"), std::string::npos)
+        << r.err;
+    EXPECT_FALSE(exists("render.bmp"));
 }
 
 TEST_F(Expect, ListCamerasPrintsTheNamesOneALine) {
