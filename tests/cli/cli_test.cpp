@@ -198,6 +198,25 @@ TEST_F(Cli, IoErrorsExitThreeAndWriteNothing) {
     EXPECT_TRUE(outputs().empty());
 }
 
+// A picture named by the scene that is a device is an error at its string,
+// not a read that never ends.
+TEST_F(Cli, DeviceAsImageMapOrSkyIsAnErrorAtItsString) {
+    write("device.jts", R"(render_settings { width: 8; height: 8; background_map: "/dev/zero"; }
+cameras { perspective_camera { position: <0, 0, 5>; } }
+scene { sphere { material { image_map: "/dev/urandom"; } } }
+)");
+    test::ProgramRun r = run_shell("ulimit -v 4000000; timeout 60 '" JT_CLI "' device.jts");
+    EXPECT_EQ(r.code, 1) << r.err;
+    EXPECT_NE(r.err.find("device.jts:1:56: error: background_map: cannot read '/dev/zero': it is "
+                         "a device, not a file"),
+              std::string::npos)
+        << r.err;
+    EXPECT_NE(r.err.find("device.jts:3:40: error: image_map: cannot read '/dev/urandom'"),
+              std::string::npos)
+        << r.err;
+    EXPECT_TRUE(outputs().empty());
+}
+
 TEST_F(Cli, ExistingOutputSurvivesAFailedRender) {
     write("keep.bmp", "precious");
     write("bad.jts", "scene { sphere { radius: -1; } }\n");

@@ -157,6 +157,21 @@ TEST_F(Diff, UnreadableImagesAreIoErrors) {
     EXPECT_NE(r.err.find("no/such/dir/heat.png"), std::string::npos) << r.err;
 }
 
+// A device never ends: read whole, /dev/zero took all the memory there was.
+// The limits keep the test from doing the same should that come back.
+TEST_F(Diff, DevicesAreRefusedAtOnce) {
+    const std::string limits = "ulimit -v 4000000; timeout 60 ";
+    for (const std::string& args : {"/dev/zero a.png", "a.png /dev/urandom"}) {
+        ProgramRun r = run(limits + cli + " diff " + args);
+        EXPECT_EQ(r.code, 3) << args << ": " << r.err;
+        EXPECT_NE(r.err.find("it is a device, not a file"), std::string::npos)
+            << args << ": " << r.err;
+    }
+    // A pipe is read to its end.
+    ProgramRun r = run("cat a.png | " + cli + " diff /dev/stdin a.bmp");
+    EXPECT_EQ(r.code, 0) << r.err;
+}
+
 TEST_F(Diff, UsageErrors) {
     EXPECT_EQ(diff("a.png").code, 2);
     EXPECT_EQ(diff("a.png a.bmp --threshold 256").code, 2);
