@@ -93,6 +93,7 @@ std::string reason(const frontend::FrameSetup& setup, std::string_view program) 
     std::string text = setup.message;
     if (text.starts_with(program)) text.erase(0, program.size() + 2);
     if (text.starts_with("--")) text.erase(0, 2);
+    if (text.starts_with("width/--height")) text.erase(6, 2);
     if (!text.empty() && text.back() == '\n') text.pop_back();
     return text;
 }

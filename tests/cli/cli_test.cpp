@@ -188,6 +188,37 @@ TEST_F(Cli, UsageErrorsExitTwo) {
     EXPECT_TRUE(outputs().empty());
 }
 
+// A size too large for a BMP asked for on the command line is the command
+// line's error: located in the file it pointed at the `height: 18` the flags
+// replaced, and spoke of a BMP when the output was a PNG.
+TEST_F(Cli, ASizeTooLargeFromTheFlagsIsAUsageError) {
+    test::ProgramRun r = run("scene.jts --width 40000 --height 40000 -o huge.png");
+    EXPECT_EQ(r.code, 2) << r.err;
+    EXPECT_NE(r.err.find("jtracer-cli: --width/--height: a 40000 x 40000 image does not fit in a "
+                         "BMP file (4 GiB at most), the largest image JTracer renders whatever "
+                         "the output format"),
+              std::string::npos)
+        << r.err;
+    EXPECT_EQ(r.err.find("scene.jts:"), std::string::npos) << r.err;
+    r = run("scene.jts --width 65535 --check");
+    EXPECT_EQ(r.code, 0) << "65535 x 18 fits: " << r.err;
+    write("tall.jts", small_scene.substr(0, small_scene.find("height: 18;")) + "height: 65535;" +
+                          small_scene.substr(small_scene.find("height: 18;") + 11));
+    r = run("tall.jts --width 65535 --check");
+    EXPECT_EQ(r.code, 2) << r.err;
+    EXPECT_NE(r.err.find("--width: a 65535 x 65535 image"), std::string::npos) << r.err;
+    write("huge.jts", small_scene.substr(0, small_scene.find("width: 32;")) + "width: 65535;" +
+                          small_scene.substr(small_scene.find("width: 32;") + 10));
+    r = run("huge.jts --height 65535 --width 65535");
+    EXPECT_EQ(r.code, 2) << r.err;
+    // The scene's own size stays the scene's error, at its line.
+    r = run("tall.jts --check");
+    EXPECT_EQ(r.code, 0) << "32 x 65535 fits: " << r.err;
+    r = run("huge.jts --height 65535");
+    EXPECT_EQ(r.code, 2) << r.err;
+    EXPECT_TRUE(outputs().empty());
+}
+
 TEST_F(Cli, IoErrorsExitThreeAndWriteNothing) {
     test::ProgramRun r = run("missing.jts");
     EXPECT_EQ(r.code, 3);

@@ -71,11 +71,22 @@ def test_bad_options_raise(showcase):
         scene.render(width=8, height=8, progress=3)
 
 
-def test_a_frame_the_cli_refuses_raises_scene_error(showcase):
-    # The checks run on the scene with the overrides, as the CLI's do.
+def test_a_size_too_large_is_the_arguments_error_or_the_scenes(showcase, tmp_path):
+    # Asked for by the arguments: their error, not one located at the
+    # scene's own width or height, which they replaced.
+    scene = jtracer.load(showcase)
+    with pytest.raises(ValueError, match=r"^width/height: a 65535 x 65535 image .*\(4 GiB"):
+        scene.render(width=65535, height=65535)
+    with pytest.raises(ValueError, match="^width: a 65535 x 65535 image"):
+        jtracer.parse(scene.text().replace("height: 450;", "height: 65535;")).render(width=65535)
+    # Written in the scene: the scene's error, at its height.
+    huge = tmp_path / "huge.jts"
+    huge.write_text(scene.text().replace("width: 800;", "width: 65535;").replace(
+        "height: 450;", "height: 65535;"))
     with pytest.raises(jtracer.SceneError, match="4 GiB") as raised:
-        jtracer.load(showcase).render(width=65535, height=65535)
+        jtracer.load(huge)
     assert raised.value.diagnostics[0].severity == "error"
+    assert raised.value.diagnostics[0].line > 0
 
 
 def test_progress_reports_rising_fractions_ending_at_one(showcase):
