@@ -47,6 +47,7 @@ int run(const Options& o, bool& compared) {
             std::cerr << "jtracer-cli: " << *clash << "; nothing was written\n";
             return exit_usage;
         }
+    if (!o.quiet) std::cerr << format_warning(o, output);
     if (jt::Expected<void> fits = check_render_memory(options, o.region_output); !fits) {
         std::cerr << "jtracer-cli: " << fits.error().message << "; nothing was written\n";
         return exit_io_error;

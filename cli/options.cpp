@@ -4,6 +4,8 @@
 
 #include <CLI/CLI.hpp>
 
+#include <algorithm>
+#include <cctype>
 #include <cstdio>
 #include <filesystem>
 #include <iostream>
@@ -37,6 +39,28 @@ std::optional<std::string> file_clash(const Options& o, const std::string& outpu
                 return "--junit '" + *o.junit + "' is " + what + ": the report would replace it";
     }
     return std::nullopt;
+}
+
+std::string format_warning(const Options& o, const std::string& output) {
+    std::string ext = std::filesystem::path(output).extension().string();
+    for (char& c : ext) c = static_cast<char>(std::tolower(static_cast<unsigned char>(c)));
+    static constexpr std::string_view other_images[] = {".jpg",  ".jpeg", ".tif",  ".tiff", ".gif",
+                                                        ".webp", ".exr",  ".tga",  ".ppm",  ".hdr",
+                                                        ".avif", ".jxl",  ".heic", ".ico"};
+    const bool other =
+        std::find(std::begin(other_images), std::end(other_images), ext) != std::end(other_images);
+    if (!o.output && (ext == ".png" || other))
+        return "jtracer-cli: warning: the scene's filename '" + output +
+               "' is written as a BMP, as the scene's filename always is" +
+               (ext != ".png" || o.region_output ? ""
+                : o.frames                       ? "; an -o name ending in .png writes PNGs"
+                                                 : "; -o " + output + " writes a PNG") +
+               "\n";
+    if (o.output && other)
+        return "jtracer-cli: warning: -o/--output '" + output +
+               "' is written as a BMP: JTracer writes a PNG for a name ending in .png and a BMP "
+               "for any other\n";
+    return {};
 }
 
 ParsedOptions parse_options(int argc, char** argv) {

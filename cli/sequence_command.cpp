@@ -41,6 +41,10 @@ int run_sequence(const Options& o) {
         }
         if (frame.exit_code != exit_ok) return frame.exit_code;
         if (o.check_only) continue;
+        if (index == range.first && !o.quiet) {
+            display.finish();
+            std::cerr << format_warning(o, frame.output);
+        }
         if (Expected<void> fits = check_render_memory(frame.render, o.region_output); !fits) {
             display.finish();
             std::cerr << "jtracer-cli: " << fits.error().message << "; " << kept(range, index)

@@ -85,6 +85,34 @@ TEST_F(Cli, SceneFilenameIsBmpWhateverItsExtension) {
     write("scene.jts", text);
     ASSERT_EQ(run("-q scene.jts").code, 0);
     EXPECT_TRUE(read_bmp(dir / "picture.png")) << "the manual: always a BMP";
+    // ... and says so, since a viewer trusting the name refuses the file.
+    test::ProgramRun r = run("scene.jts");
+    ASSERT_EQ(r.code, 0) << r.err;
+    EXPECT_NE(r.err.find("jtracer-cli: warning: the scene's filename 'picture.png' is written as "
+                         "a BMP, as the scene's filename always is; -o picture.png writes a PNG"),
+              std::string::npos)
+        << r.err;
+    r = run("scene.jts --frames 2");
+    ASSERT_EQ(r.code, 0) << r.err;
+    EXPECT_NE(r.err.find("'picture-0000.png' is written as a BMP"), std::string::npos) << r.err;
+    EXPECT_EQ(r.err.find("'picture-0001.png' is written"), std::string::npos) << "once: " << r.err;
+}
+
+// -o gives a PNG for .png and a BMP for any other name: one that names
+// another image format gets a warning, no other does.
+TEST_F(Cli, AnOutputNamingAnotherImageFormatWarns) {
+    test::ProgramRun r = run("scene.jts -o shot.jpg");
+    ASSERT_EQ(r.code, 0) << r.err;
+    EXPECT_TRUE(read_bmp(dir / "shot.jpg"));
+    EXPECT_NE(r.err.find("jtracer-cli: warning: -o/--output 'shot.jpg' is written as a BMP"),
+              std::string::npos)
+        << r.err;
+    EXPECT_EQ(run("scene.jts -o shot.jpg -q").err, "");
+    for (const char* name : {"shot.bmp", "shot.PNG", "shot", "shot.out"}) {
+        r = run(std::string("scene.jts -o ") + name);
+        ASSERT_EQ(r.code, 0) << r.err;
+        EXPECT_EQ(r.err.find("warning"), std::string::npos) << name << ": " << r.err;
+    }
 }
 
 TEST_F(Cli, OutputOptionWinsAndPngByExtension) {
