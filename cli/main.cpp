@@ -5,11 +5,11 @@
 #include "info_command.hpp"
 #include "interruptible_render.hpp"
 #include "list_names.hpp"
-#include "memory_budget.hpp"
 #include "options.hpp"
 #include "sequence_command.hpp"
 
 #include "jtracer/frontend/frame_setup.hpp"
+#include "jtracer/frontend/memory_budget.hpp"
 #include "jtracer/frontend/progress.hpp"
 #include "jtracer/image_file.hpp"
 #include "jtracer/region_file.hpp"

@@ -1,8 +1,8 @@
 #include "sequence_command.hpp"
 
 #include "interruptible_render.hpp"
-#include "memory_budget.hpp"
 
+#include "jtracer/frontend/memory_budget.hpp"
 #include "jtracer/frontend/scene_sequence.hpp"
 #include "jtracer/frontend/sequence_progress.hpp"
 #include "jtracer/region_file.hpp"

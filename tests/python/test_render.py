@@ -1,5 +1,6 @@
 # Scene.render: jtracer-cli's bytes, its options, progress, the GIL and Ctrl+C.
 import os
+import re
 import signal
 import subprocess
 import sys
@@ -171,3 +172,27 @@ except KeyboardInterrupt:
     assert words and words[0] == "KeyboardInterrupt", out
     assert float(words[1]) - sent < STOP_LIMIT_SECONDS
     assert child.returncode == 0
+
+
+def test_a_frame_larger_than_the_memory_left_raises_memory_error(showcase):
+    # In a child under a 3 GB address-space limit, as `ulimit -v` sets: the
+    # check comes before any allocation, with jtracer-cli's reason in the
+    # arguments' words, and the interpreter carries on.
+    code = f"""
+import resource, jtracer
+resource.setrlimit(resource.RLIMIT_AS, (3 << 30, 3 << 30))
+scene = jtracer.load({str(showcase)!r})
+try:
+    scene.render(width=30000, height=30000, samples=2)
+except MemoryError as error:
+    print(error)
+print(scene.render(width=16, height=9).shape)
+"""
+    done = subprocess.run([sys.executable, "-c", code], capture_output=True, text=True,
+                          timeout=300)
+    assert done.returncode == 0, done.stderr
+    lines = done.stdout.splitlines()
+    assert re.fullmatch(r"a 30000 x 30000 image with 2 samples needs about 27\.7 GiB of memory, "
+                        r"more than the [0-9.]+ GiB available; choose a smaller width/height "
+                        r"or fewer samples", lines[0]), lines
+    assert lines[1] == "(9, 16, 3)"
