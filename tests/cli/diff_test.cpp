@@ -257,6 +257,30 @@ TEST_F(Expect, DifferingRenderWritesTheRenderAndTheDifferences) {
               0);
 }
 
+// Only a render outside the tolerance has a heat map beside it: one left by
+// an earlier failing run goes once the render matches again, or CI keeping
+// out/ would show a failure that is no more.
+TEST_F(Expect, AHeatMapOfAnEarlierRunGoesOnceTheRenderMatches) {
+    Image8 changed = reference;
+    changed.pixel(0, 0)[0] = static_cast<std::uint8_t>(changed.pixel(0, 0)[0] ^ 0x80);
+    ASSERT_TRUE(write_png(dir / "changed.png", changed));
+    ASSERT_EQ(run(cli + " -q scene.jts -o out.png --expect changed.png").code, 1);
+    ASSERT_TRUE(exists("out.diff.png"));
+    ProgramRun r = run(cli + " scene.jts -o out.png --expect ref.png");
+    EXPECT_EQ(r.code, 0) << r.err;
+    EXPECT_FALSE(exists("out.diff.png"));
+    EXPECT_NE(r.err.find("removed out.diff.png, the heat map of an earlier run"), std::string::npos)
+        << r.err;
+    // --update, and a size that differs (which draws none), remove it too.
+    ASSERT_EQ(run(cli + " -q scene.jts -o out.png --expect changed.png").code, 1);
+    EXPECT_EQ(run(cli + " -q scene.jts -o out.png --expect changed.png --update").code, 0);
+    EXPECT_FALSE(exists("out.diff.png"));
+    ASSERT_TRUE(write_png(dir / "changed.png", changed));
+    ASSERT_EQ(run(cli + " -q scene.jts -o out.png --expect changed.png").code, 1);
+    EXPECT_EQ(run(cli + " -q scene.jts --width 12 -o out.png --expect changed.png").code, 1);
+    EXPECT_FALSE(exists("out.diff.png"));
+}
+
 TEST_F(Expect, SizeMismatchMissingReferenceAndMisuse) {
     ProgramRun r = run(cli + " scene.jts --width 48 -o big.png --expect ref.png");
     EXPECT_EQ(r.code, 1);
