@@ -115,8 +115,11 @@ py::array_t<std::uint8_t> render_scene(PythonScene& scene, const RenderArguments
         setup = frontend::set_up_frame(program, flags, scene.loaded,
                                        frontend::LoadedPrimitives::as_parsed, region);
     }
-    if (setup.exit_code == frontend::exit_scene_error)
-        raise_scene_error(setup.message, setup.diagnostics, scene.loaded);
+    if (setup.exit_code == frontend::exit_scene_error) {
+        name_render_arguments(setup.diagnostics);
+        raise_scene_error(format_diagnostics(setup.diagnostics, scene.loaded), setup.diagnostics,
+                          scene.loaded);
+    }
     if (setup.exit_code != frontend::exit_ok) throw py::value_error(reason(setup, program));
     // Before allocating: a frame larger than the memory left would otherwise
     // end in a bare "std::bad_alloc", or the kernel's out-of-memory killer

@@ -13,6 +13,7 @@
 #include <pybind11/stl.h>
 #include <pybind11/stl/filesystem.h>
 
+#include <algorithm>
 #include <cmath>
 #include <filesystem>
 #include <new>
@@ -81,14 +82,24 @@ void bind_view(py::module_& m, const char* name, const char* doc) {
 std::vector<Diagnostic> findings(const LoadedScene& loaded) {
     std::vector<Diagnostic> diagnostics = check_scene(
         loaded, {.validation = {.run_chunks = parallel_chunks(), .primitives_as_parsed = true}});
-    frontend::name_setting_flags(diagnostics);
+    name_render_arguments(diagnostics);
     return diagnostics;
+}
+
+// A width or height of 0 is an error of the frame, not of the scene:
+// render(width=, height=) may still set it, as --width/--height do for a file
+// without them, and render() reports it when it does not.
+bool size_left_to_render(const Diagnostic& d) {
+    return d.severity == Severity::error && (d.setting == "width" || d.setting == "height");
 }
 
 std::shared_ptr<PythonScene> checked_scene(LoadedScene loaded) {
     std::vector<Diagnostic> diagnostics = findings(loaded);
-    if (has_errors(diagnostics))
+    if (std::any_of(diagnostics.begin(), diagnostics.end(), [](const Diagnostic& d) {
+            return d.severity == Severity::error && !size_left_to_render(d);
+        }))
         raise_scene_error(format_diagnostics(diagnostics, loaded), diagnostics, loaded);
+    std::erase_if(diagnostics, size_left_to_render);
     auto scene = std::make_shared<PythonScene>();
     scene->loaded = std::move(loaded);
     scene->warnings = std::move(diagnostics);

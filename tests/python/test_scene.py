@@ -261,3 +261,34 @@ def test_clock_renders_the_frames_jtracer_cli_renders(tmp_path, cli):
         jtracer.load(path, clock=float("nan"))
     with pytest.raises(ValueError, match="clock: a finite number"):
         jtracer.parse(TIMED, clock=float("inf"))
+
+
+SIZELESS = """cameras { perspective_camera { position: <0, 1, 5>; look_at: <0, 0.5, 0>; aspect: 2; } }
+scene { sphere { material { pigment: <1, 0, 0>; ambient: <1, 1, 1>; } } }
+"""
+
+
+def test_a_scene_without_a_size_loads_and_renders_at_the_size_asked(tmp_path, cli):
+    # As `jtracer-cli scene.jts --width 32 --height 16` renders a file without
+    # width and height: load() used to refuse it, telling to "pass --width".
+    path = tmp_path / "sizeless.jts"
+    path.write_text(SIZELESS)
+    scene = jtracer.load(path)
+    assert (scene.settings.width, scene.settings.height) == (0, 0)
+    assert scene.warnings == []
+    run(cli, path, "--width", "32", "--height", "16", "-o", tmp_path / "cli.bmp", "-q")
+    assert (scene.render(width=32, height=16) == jtracer.read_image(tmp_path / "cli.bmp")).all()
+    # Without them, render() says what to pass, in Python's words.
+    with pytest.raises(jtracer.SceneError) as raised:
+        scene.render(width=32)
+    assert [d.message for d in raised.value.diagnostics] == [
+        "the image height is 0: set 'height' in render_settings or pass height= to "
+        "Scene.render()"]
+    assert "--height" not in str(raised.value)
+    # check() still lists them, as --check does; any other error still raises.
+    assert [d.message for d in jtracer.check(path)] == [
+        "the image width is 0: set 'width' in render_settings or pass width= to Scene.render()",
+        "the image height is 0: set 'height' in render_settings or pass height= to "
+        "Scene.render()"]
+    with pytest.raises(jtracer.SceneError, match="radius"):
+        jtracer.parse(SIZELESS.replace("sphere {", "sphere { radius: -1;"))
