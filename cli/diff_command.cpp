@@ -132,6 +132,10 @@ int run_diff_command(int argc, char** argv) {
     // Neither file written may be an image compared (a heat map over the
     // reference would pass every later comparison), nor the other.
     auto checks = [&] {
+        if (app.count("--output") && heat_map_path.empty())
+            throw CLI::ValidationError("-o/--output", "needs a file name, not an empty string");
+        if (junit && junit->empty())
+            throw CLI::ValidationError("--junit", "needs a file name, not an empty string");
         for (const auto& [flag, written] :
              {std::pair<const char*, std::string>{"-o/--output", heat_map_path},
               {"--junit", junit.value_or("")}}) {

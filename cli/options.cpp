@@ -120,6 +120,14 @@ ParsedOptions parse_options(int argc, char** argv) {
     app.add_flag("--list-defines", o.list_defines)->group("");
     // Rules between options, reported like CLI11's own errors.
     auto checks = [&] {
+        // An empty name would fail only after the render, as a write error
+        // ("cannot write an image to an empty file name", even for --junit).
+        for (const auto& [flag, name] :
+             {std::pair<const char*, const std::optional<std::string>*>{"-o/--output", &o.output},
+              {"--expect", &o.expect},
+              {"--junit", &o.junit}})
+            if (*name && (*name)->empty())
+                throw CLI::ValidationError(flag, "needs a file name, not an empty string");
         if (o.region_output && !o.region)
             throw CLI::ValidationError("--region-output", "needs --region X0,Y0,X1,Y1");
         if (o.region_output && o.output &&

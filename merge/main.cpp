@@ -79,6 +79,8 @@ int main(int argc, char** argv) {
     // The frame written over a part would lose that part for the next merge
     // (and a glob such as parts/*.bmp picks an earlier frame up as a part).
     auto checks = [&] {
+        if (output.empty())
+            throw CLI::ValidationError("-o/--output", "needs a file name, not an empty string");
         for (const std::string& part : part_paths)
             if (jt::frontend::same_file(output, part))
                 throw CLI::ValidationError("-o/--output", "'" + output + "' is also a part (" +

@@ -247,6 +247,23 @@ TEST_F(Cli, ASizeTooLargeFromTheFlagsIsAUsageError) {
     EXPECT_TRUE(outputs().empty());
 }
 
+// An empty file name (a script's unset variable: -o "$OUT") is the command
+// line's error, found before rendering; it was a write error after it, and
+// --junit '' said "cannot write an image".
+TEST_F(Cli, EmptyFileNamesAreUsageErrors) {
+    write("ref.bmp", "");
+    for (const std::string& args :
+         {"scene.jts -o ''", "scene.jts --expect ''",
+          "scene.jts -o a.png --expect ref.bmp --junit ''", "diff ref.bmp ref.bmp -o ''",
+          "diff ref.bmp ref.bmp --junit ''"}) {
+        test::ProgramRun r = run(args);
+        EXPECT_EQ(r.code, 2) << args << ": " << r.err;
+        EXPECT_NE(r.err.find(": needs a file name, not an empty string"), std::string::npos)
+            << args << ": " << r.err;
+    }
+    EXPECT_EQ(outputs(), std::vector<std::string>{"ref.bmp"});
+}
+
 TEST_F(Cli, IoErrorsExitThreeAndWriteNothing) {
     test::ProgramRun r = run("missing.jts");
     EXPECT_EQ(r.code, 3);

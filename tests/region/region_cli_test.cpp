@@ -141,6 +141,9 @@ TEST_F(RegionCli, MergeRefusesAnOutputThatIsAlsoAPart) {
     EXPECT_NE(r.err.find("is also a part (top.bmp)"), std::string::npos) << r.err;
     EXPECT_EQ(test::read_file(dir / "top.bmp"), top);
     EXPECT_EQ(run_shell(merge + "-o frame.bmp top.bmp bottom.bmp").code, 0);
+    r = run_shell(merge + "-o '' top.bmp bottom.bmp");
+    EXPECT_EQ(r.code, 2) << r.err;
+    EXPECT_NE(r.err.find("-o/--output: needs a file name"), std::string::npos) << r.err;
 }
 
 TEST_F(RegionCli, MergeRefusesPartsOfDifferentFrameSizes) {
