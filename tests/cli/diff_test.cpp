@@ -172,6 +172,31 @@ TEST_F(Diff, DevicesAreRefusedAtOnce) {
     EXPECT_EQ(r.code, 0) << r.err;
 }
 
+// A file cut short (an interrupted copy or download) or empty says so, in
+// words: stb's "outofdata", and "no 'BM' header" for a BMP whose header is
+// there but short, or for an empty file read as a PNG, said otherwise.
+TEST_F(Diff, DamagedImagesSayWhatIsWrong) {
+    const std::string png = test::read_file(dir / "a.png");
+    const std::string bmp = test::read_file(dir / "a.bmp");
+    test::write_file(dir / "cut.png", png.substr(0, png.size() / 2));
+    test::write_file(dir / "cut.bmp", bmp.substr(0, 2));
+    test::write_file(dir / "empty.bmp", "");
+    test::write_file(dir / "text.bmp", "scene { }\n");
+    const std::pair<const char*, const char*> cases[] = {
+        {"cut.png",
+         "'cut.png': not a readable PNG: its data ends early (the file is truncated "
+         "or damaged)"},
+        {"cut.bmp", "'cut.bmp': BMP file is truncated: 2 bytes, fewer than its headers take"},
+        {"empty.bmp", "'empty.bmp': the file is empty"},
+        {"text.bmp", "'text.bmp': not a BMP file (no 'BM' header)"},
+    };
+    for (const auto& [name, message] : cases) {
+        ProgramRun r = diff(std::string(name) + " a.png");
+        EXPECT_EQ(r.code, 3) << name << ": " << r.err;
+        EXPECT_NE(r.err.find(message), std::string::npos) << name << ": " << r.err;
+    }
+}
+
 TEST_F(Diff, UsageErrors) {
     EXPECT_EQ(diff("a.png").code, 2);
     EXPECT_EQ(diff("a.png a.bmp --threshold 256").code, 2);
