@@ -30,7 +30,8 @@ void add_version_flag(CLI::App& app, const std::string& program);
 // exist yet, the same place once `.`, `..` and the links of its folders are
 // resolved. An output that names an input would replace it before, or
 // instead of, what the user asked for (a scene overwritten by its own image,
-// a reference by the render it is meant to check).
+// a reference by the render it is meant to check). A device or a pipe is no
+// file's twin: it is written in place and replaces nothing.
 bool same_file(const std::filesystem::path& a, const std::filesystem::path& b);
 
 std::optional<int> parse_command_line(CLI::App& app, int argc, const char* const* argv,
