@@ -129,6 +129,18 @@ TEST_F(IdleFrame, AFrameWithComputedAndInheritedFieldsAndTheSliderAllocatesNothi
     }
 }
 
+// After a panel edit, the scene differs from its text's: the document's
+// text is then the base with the edit written in, a copy of the whole file,
+// made when something needs it (a save, the text editor), not every frame.
+TEST_F(IdleFrame, AFrameAfterAPanelEditAllocatesNothing) {
+    edit_scene(state, [](Scene& s) { s.settings.width = 32; });
+    ASSERT_TRUE(viewer.run_until_complete(state, test::kTimeout, 3)) << state.message;
+    for (int i = 0; i < 5; ++i) {
+        const Allocated a = allocated_by([&] { viewer.frame(state); });
+        EXPECT_EQ(a.count, 0) << a.bytes << " bytes in frame " << i;
+    }
+}
+
 TEST_F(IdleFrame, AnEditAfterIdleFramesStillRendersAndUndoes) {
     for (int i = 0; i < 3; ++i) viewer.frame(state);
     const std::uint64_t jobs = state.render.renderer.jobs_started();

@@ -331,6 +331,10 @@ bool document_is_blank(const SceneDocument& doc) {
     // Asked every frame: a held text is looked at where it is, not copied.
     if (const std::string* held = held_text(doc))
         return held->find_first_not_of(blank) == std::string::npos;
+    // Panel edits write values into the base text or add them, never leaving
+    // blank a text that was not: only an edited blank text is written out to
+    // look (every frame a copy of the whole file, after any panel edit).
+    if (doc.text.find_first_not_of(blank) != std::string::npos) return false;
     return document_text(doc).find_first_not_of(blank) == std::string::npos;
 }
 
