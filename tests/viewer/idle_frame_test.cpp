@@ -141,6 +141,28 @@ TEST_F(IdleFrame, AFrameAfterAPanelEditAllocatesNothing) {
     }
 }
 
+// The reload choice with its differences shown, over an unsaved panel edit:
+// the document's text is the base with the edit written in (a copy of the
+// whole file), made for the diff once, not every frame.
+TEST_F(IdleFrame, AFrameShowingTheReloadDifferencesAllocatesNothing) {
+    edit_scene(state, [](Scene& s) { s.settings.width = 32; });
+    viewer.frame(state);
+    const std::filesystem::path file = state.doc.path;
+    std::ofstream(file, std::ios::binary | std::ios::app) << "# changed on disk\n";
+    ASSERT_TRUE(viewer.run_until_loaded(state));
+    ASSERT_TRUE(state.files.pending_reload);
+    ASSERT_TRUE(viewer.run_until_complete(state, test::kTimeout, 3)) << state.message;
+    ASSERT_TRUE(viewer.click(state, "Show differences"));
+    for (int i = 0; i < 3; ++i) viewer.frame(state);
+    ASSERT_NE(find_item(viewer.ui_items(), "differences"), nullptr);
+    EXPECT_EQ(viewer.reload_bar().diff.removed, 1) << "width: 32, mine";
+    EXPECT_EQ(viewer.reload_bar().diff.added, 2) << "width: 64 and the comment, theirs";
+    for (int i = 0; i < 5; ++i) {
+        const Allocated a = allocated_by([&] { viewer.frame(state); });
+        EXPECT_EQ(a.count, 0) << a.bytes << " bytes in frame " << i;
+    }
+}
+
 TEST_F(IdleFrame, AnEditAfterIdleFramesStillRendersAndUndoes) {
     for (int i = 0; i < 3; ++i) viewer.frame(state);
     const std::uint64_t jobs = state.render.renderer.jobs_started();
