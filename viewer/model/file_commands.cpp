@@ -8,6 +8,7 @@
 #include "model/image_files.hpp"
 
 #include <algorithm>
+#include <chrono>
 
 namespace jt::view {
 
@@ -216,6 +217,23 @@ bool assets_changed(AppState& state) {
 
 }  // namespace
 
+namespace {
+
+// A file that the document's text includes changed, and that text is not the
+// file's (an `include` typed, not saved yet): reading the file again would not
+// read the changed one. The text, with the panels' edits written in, is
+// checked again as a draft is (take_checked_text), and taken in once it
+// parses; with errors it shows them and keeps the last good scene.
+void read_typed_includes_again(AppState& state) {
+    SceneDocument& doc = state.doc;
+    if (!doc.draft) doc.draft = document_text(doc);
+    state.check.checker.check(++state.check.draft_id, *doc.draft, doc.path,
+                              std::chrono::milliseconds(0), doc.options);
+    state.message = "A file the text includes changed on disk: reading the text again";
+}
+
+}  // namespace
+
 bool reload_if_changed(AppState& state) {
     // A file the draft's check could not read, or read, changed (it was
     // created, say, after `include "new.jts";` was typed): the draft is
@@ -232,7 +250,12 @@ bool reload_if_changed(AppState& state) {
         state.files.include_watcher.watch(state.doc.included_files);
         included = !state.files.include_watcher.poll().empty();
     }
-    if (!state.files.watcher.poll() && !included) return assets;
+    const bool file_changed = state.files.watcher.poll();
+    if (included && !file_changed && state.doc.loaded && state.doc.text != state.doc.disk_text) {
+        read_typed_includes_again(state);
+        return true;
+    }
+    if (!file_changed && !included) return assets;
     reload_scene(state);
     return true;
 }

@@ -74,15 +74,24 @@ ParseResult parse_document_text(const SceneDocument& doc, std::string_view text)
     return parse_scene(text, document_options(doc));
 }
 
+namespace {
+
+// The files `source`'s text read or tried to read through `include`: watched
+// from now on (reload_if_changed).
+void note_included_files(SceneDocument& doc, const SceneSource& source) {
+    doc.included_files.clear();
+    for (const SourceFile& file : source.files) doc.included_files.push_back(file.path);
+    for (const std::string& file : source.unread_includes) doc.included_files.push_back(file);
+}
+
+}  // namespace
+
 void accept_load(SceneDocument& doc, const std::filesystem::path& path, LoadAttempt attempt) {
     ++doc.file_generation;
     doc.diagnostics = std::move(attempt.diagnostics);
     doc.diagnostics_path = path;
     doc.diagnostics_files = attempt.source.files;
-    doc.included_files.clear();
-    for (const SourceFile& file : attempt.source.files) doc.included_files.push_back(file.path);
-    for (const std::string& file : attempt.source.unread_includes)
-        doc.included_files.push_back(file);
+    note_included_files(doc, attempt.source);
     doc.load_failed = !attempt.ok;
     doc.file_unread = !attempt.read;
     doc.file_deleted = attempt.missing;
@@ -177,6 +186,8 @@ void take_text(SceneDocument& doc, std::string text, ParseResult parsed) {
     doc.text = std::move(text);
     doc.original = std::make_shared<const Scene>(std::move(parsed.scene));
     doc.source = std::move(parsed.source);
+    // A text typed or undone to reads its own includes, saved or not.
+    note_included_files(doc, doc.source);
     doc.parse_diagnostics = std::move(parsed.diagnostics);
     doc.scene = *doc.original;
     doc.draft.reset();

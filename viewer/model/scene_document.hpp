@@ -42,9 +42,11 @@ struct SceneDocument {
     std::string diagnostics_source;             // the text they point into (to quote lines)
     std::filesystem::path diagnostics_path;     // the file they are about
     std::vector<SourceFile> diagnostics_files;  // the included files they may be in
-    // Every file the latest load read or tried to read through `include`:
-    // watched like the scene file, so that a change, or a missing file
-    // appearing, reloads (docs/language.md §15.6).
+    // Every file the latest load read or tried to read through `include`, or
+    // the text taken in since (typed, undone to) read: watched like the scene
+    // file, so that a change, or a missing file appearing, reloads
+    // (docs/language.md §15.6), or, for a text not saved yet, reads the text
+    // again (reload_if_changed).
     std::vector<std::filesystem::path> included_files;
     // Counts the loads taken in (good or not) and the saves: either may
     // change the texts read (the included files' too) without a new revision.
