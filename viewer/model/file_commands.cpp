@@ -67,6 +67,10 @@ void finish_open(AppState& state, const std::filesystem::path& path, LoadAttempt
         state.files.recent.add(path);
         state.fields.open_path_input = path.string();
         state.message = "Opened " + path.string();
+    } else if (!first && state.doc.path != path) {
+        state.message = "Could not open " + path.filename().string() +
+                        (has_located(state.doc.diagnostics) ? ": it has errors" : "") +
+                        " (see Diagnostics); still showing " + state.doc.path.filename().string();
     } else if (document_is_blank(state.doc)) {
         state.message = path.filename().string() +
                         " is empty: Start a scene in the File panel, or type one in the Text "
@@ -74,6 +78,7 @@ void finish_open(AppState& state, const std::filesystem::path& path, LoadAttempt
     } else if (state.doc.diagnostics_source.empty() && !has_located(state.doc.diagnostics)) {
         state.message = "Could not open " + path.string() + ": see Diagnostics";
     } else {
+        // The file shown, read again: its last good scene stays.
         state.message = path.filename().string() + " has errors: see Diagnostics" +
                         (state.doc.loaded && !first ? " (still showing the last good scene)" : "");
     }

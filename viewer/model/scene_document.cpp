@@ -87,6 +87,16 @@ void note_included_files(SceneDocument& doc, const SceneSource& source) {
 }  // namespace
 
 void accept_load(SceneDocument& doc, const std::filesystem::path& path, LoadAttempt attempt) {
+    if (!attempt.ok && doc.loaded && path != doc.path) {
+        // Another file did not open: the document, the files it reads and
+        // their watches stay as they are. The diagnostics are the other
+        // file's until the document's are checked again (an edit, a reload).
+        doc.diagnostics = std::move(attempt.diagnostics);
+        doc.diagnostics_path = path;
+        doc.diagnostics_files = std::move(attempt.source.files);
+        doc.diagnostics_source = std::move(attempt.text);
+        return;
+    }
     ++doc.file_generation;
     doc.diagnostics = std::move(attempt.diagnostics);
     doc.diagnostics_path = path;
@@ -230,6 +240,10 @@ bool scene_edited(const SceneDocument& doc) {
     if (!doc.edited_at || doc.edited_at->first != doc.revision)
         doc.edited_at = {doc.revision, doc.scene != *doc.original};
     return doc.edited_at->second;
+}
+
+bool diagnostics_of_another_file(const SceneDocument& doc) {
+    return doc.loaded && !doc.diagnostics_path.empty() && doc.diagnostics_path != doc.path;
 }
 
 bool has_unsaved_edits(const SceneDocument& doc) {

@@ -162,7 +162,9 @@ ParseOptions document_options(const SceneDocument& doc, const SourceEditResult& 
 ParseResult parse_document_text(const SceneDocument& doc, std::string_view text);
 
 // Takes `attempt` into `doc`: on success the scene is replaced, on failure
-// the last good scene stays and only the diagnostics change.
+// the last good scene stays and only the diagnostics change. A failed open
+// of a file other than the document's changes nothing else: the document is
+// not that file's last good scene (diagnostics_of_another_file).
 void accept_load(SceneDocument& doc, const std::filesystem::path& path, LoadAttempt attempt);
 
 // The open file was read again and has errors: the document shows its text
@@ -179,6 +181,10 @@ std::string_view short_file_name(const SceneDocument& doc, std::string_view name
 
 // "file:line:col: error: message" lines, as the CLI prints them.
 std::string format_diagnostics(const SceneDocument& doc);
+
+// The diagnostics are of another file than the document's, one that failed
+// to open while this one stayed.
+bool diagnostics_of_another_file(const SceneDocument& doc);
 
 bool has_unsaved_edits(const SceneDocument& doc);
 // The scene differs from the one its text holds (panel edits not yet saved).

@@ -132,6 +132,41 @@ TEST_F(ViewerFiles, OpeningAnotherFileClearsTheSelection) {
     fs::remove_all(other.parent_path());
 }
 
+// An open of another file that fails leaves the file shown as it was: its
+// scene, the files it reads and their watches, its own checks. The
+// diagnostics are the other file's, and the message says which file is
+// still shown, not that a last good scene waits for a fix.
+TEST_F(ViewerFiles, AFailedOpenOfAnotherFileLeavesTheShownFileAsItIs) {
+    const fs::path other = file.parent_path() / "other.jts";
+    write_file(other, "render_settings {\n    width: 64\n}\n");
+    const Scene shown = state.doc.scene;
+    open_scene(state, other);
+    model.frame(state);
+    EXPECT_EQ(state.doc.path, file);
+    EXPECT_TRUE(state.doc.scene == shown);
+    EXPECT_FALSE(state.doc.load_failed) << "the file shown is fine";
+    EXPECT_NE(state.message.find("Could not open other.jts"), std::string::npos) << state.message;
+    EXPECT_NE(state.message.find("still showing " + file.filename().string()), std::string::npos)
+        << state.message;
+    EXPECT_EQ(state.message.find("last good"), std::string::npos) << state.message;
+    EXPECT_NE(format_diagnostics(state.doc).find("other.jts:2:"), std::string::npos)
+        << format_diagnostics(state.doc);
+
+    // An edit of the file shown is checked as ever: the diagnostics are its own again.
+    edit_pigment();
+    model.frame(state);
+    EXPECT_EQ(format_diagnostics(state.doc), "");
+    undo(state);
+    model.frame(state);
+    // And a change of it on disk reloads it.
+    open_scene(state, other);
+    model.frame(state);
+    they_save(kTheirs);
+    EXPECT_EQ(state.doc.scene.lights.at(0).intensity, Colour(0.5)) << state.message;
+    EXPECT_FALSE(state.doc.load_failed);
+    EXPECT_EQ(format_diagnostics(state.doc), "");
+}
+
 TEST_F(ViewerFiles, ReloadCanDropTheEdits) {
     edit_pigment();
     they_save(kTheirs);

@@ -1,5 +1,6 @@
 #include "app/panels/panels.hpp"
 #include "app/panels/widgets.hpp"
+#include "app/ui_items.hpp"
 
 #include <imgui.h>
 
@@ -9,7 +10,10 @@ namespace jt::view {
 
 void diagnostics_panel(AppState& state) {
     const auto& diagnostics = state.doc.diagnostics;
-    const bool errors = state.doc.load_failed;
+    // A file failed to open while another stayed: not the shown file's last
+    // good scene (which has no fault), but the other file's errors.
+    const bool other = diagnostics_of_another_file(state.doc);
+    const bool errors = state.doc.load_failed || other;
     char title[48];
     std::snprintf(title, sizeof title, "Diagnostics (%zu)###diag", diagnostics.size());
     if (errors) ImGui::SetNextItemOpen(true);
@@ -18,9 +22,20 @@ void diagnostics_panel(AppState& state) {
         ImGui::TextDisabled("No errors or warnings.");
         return;
     }
-    if (errors && state.doc.loaded)
+    if (other) {
+        char said[512];
+        std::snprintf(said, sizeof said, "Could not open %s: still showing %s.",
+                      state.doc.diagnostics_path.filename().c_str(),
+                      state.doc.path.filename().c_str());
+        ImGui::PushStyleColor(ImGuiCol_Text, ImVec4(1.0f, 0.7f, 0.3f, 1.0f));
+        ImGui::TextWrapped("%s", said);
+        ImGui::PopStyleColor();
+        note_item(said, false);
+    } else if (errors && state.doc.loaded) {
         ImGui::TextColored(ImVec4(1.0f, 0.7f, 0.3f, 1.0f),
                            "Showing the last good scene until the file is fixed.");
+        note_item("Showing the last good scene until the file is fixed.", false);
+    }
     const std::string file = state.doc.diagnostics_path.filename().string();
     for (const Diagnostic& d : diagnostics) {
         const bool error = d.severity == Severity::error;
