@@ -181,6 +181,26 @@ TEST_F(ViewerZoomedPicking, TheInspectorReportsThePixelUnderTheMouse) {
     }
 }
 
+// The wheel through the window's event queue (key_taps.hpp), turned fast
+// within one slow frame after a click, with Ctrl pressed between: Ctrl
+// waits for the frame after the click, and the turns with it, so that they
+// zoom the image rather than dolly the camera.
+TEST_F(ViewerZoomedPicking, CtrlWheelTurnedWithinAFrameAfterAClickZooms) {
+    const WindowPoint p = zoomed_point(120, 100);
+    const float zoom = state.view.image_view.zoom;
+    const std::vector<KeyEvent> events = {
+        mouse_button_event(0, kKeyPress, p.x, p.y),
+        mouse_button_event(0, kKeyRelease, p.x, p.y),
+        KeyEvent{keys::left_ctrl, 0, kKeyPress, 0},
+        wheel_event(0.0f, 1.0f, p.x, p.y),
+        wheel_event(0.0f, 1.0f, p.x, p.y),
+        KeyEvent{keys::left_ctrl, 0, kKeyRelease, 0x0002},
+    };
+    viewer.key_events(state, events, 1.0, 50.0);
+    EXPECT_NEAR(state.view.image_view.zoom, zoom * 1.25f * 1.25f, 1e-4f);
+    EXPECT_FALSE(state.view.free_camera_active) << "Ctrl+wheel zooms the image, not the camera";
+}
+
 TEST_F(ViewerZoomedPicking, CtrlWheelZoomsAboutTheMouseAndFitShowsItAll) {
     const WindowPoint p = zoomed_point(120, 100);
     viewer.scroll(state, p.x, p.y, 2, /*ctrl=*/true);
