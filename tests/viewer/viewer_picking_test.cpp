@@ -7,6 +7,7 @@
 #include "common/files.hpp"
 #include "jtracer/render_job.hpp"
 #include "model/app_actions.hpp"
+#include "model/document_edits.hpp"
 #include "model/picking.hpp"
 #include "viewer/viewer_fixture.hpp"
 
@@ -100,6 +101,23 @@ TEST_F(ViewerPicking, TheInspectorBoxKeepsClearOfThePickedObject) {
 
 // Zoomed to 4 and panned with the mouse as a user would: the image is larger
 // than the window's image area, so the pan moves it.
+// While the scene as edited is not rendered (its image too large, say) and
+// its objects are no longer those of the image shown, the pixel inspector
+// has no frame to pick in: it says so, never "background" over an object.
+TEST_F(ViewerPicking, TheInspectorNeverCallsAPixelOfAnEarlierSceneBackground) {
+    const WindowPoint p = window_point({32.5, 20.5});  // the sphere
+    viewer.move_mouse(state, p.x, p.y);
+    EXPECT_NE(state.view.inspected.find("sphere 2"), std::string::npos) << state.view.inspected;
+    edit_scene(state, [](Scene& s) { s.settings.width = s.settings.height = 5000; });
+    ASSERT_TRUE(delete_block(state, BlockRef{BlockKind::primitive, 1})) << state.message;
+    for (int i = 0; i < 3; ++i) viewer.frame(state);
+    ASSERT_NE(state.render.render_note.find("too large"), std::string::npos)
+        << state.render.render_note;
+    viewer.move_mouse(state, p.x + 1, p.y);
+    EXPECT_EQ(state.view.inspected.find("background"), std::string::npos) << state.view.inspected;
+    EXPECT_NE(state.view.inspected.find("earlier"), std::string::npos) << state.view.inspected;
+}
+
 class ViewerZoomedPicking : public ViewerPicking {
   protected:
     void SetUp() override {
