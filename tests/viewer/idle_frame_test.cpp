@@ -163,6 +163,23 @@ TEST_F(IdleFrame, AFrameShowingTheReloadDifferencesAllocatesNothing) {
     }
 }
 
+// The file read again with an error on its last line: the Diagnostics panel
+// opens and quotes the line. Its text is made when the diagnostics change,
+// not every frame (finding the line is a walk through the whole file).
+TEST_F(IdleFrame, AFrameWithAnErrorListedAllocatesNothing) {
+    std::ofstream(state.doc.path, std::ios::binary | std::ios::app) << "sphere { radius: 1 x; }\n";
+    ASSERT_TRUE(viewer.run_until_loaded(state));
+    ASSERT_TRUE(state.doc.load_failed);
+    for (int i = 0; i < 3; ++i) viewer.frame(state);
+    ASSERT_NE(find_item(viewer.ui_items(), "Showing the last good scene until the file is fixed."),
+              nullptr)
+        << "the Diagnostics panel is open";
+    for (int i = 0; i < 5; ++i) {
+        const Allocated a = allocated_by([&] { viewer.frame(state); });
+        EXPECT_EQ(a.count, 0) << a.bytes << " bytes in frame " << i;
+    }
+}
+
 TEST_F(IdleFrame, AnEditAfterIdleFramesStillRendersAndUndoes) {
     for (int i = 0; i < 3; ++i) viewer.frame(state);
     const std::uint64_t jobs = state.render.renderer.jobs_started();

@@ -422,6 +422,17 @@ TEST_F(ViewerGl, AFailedOpenOfAnotherFileSaysWhichFileIsShown) {
     EXPECT_NE(find_item(viewer.ui_items(), said), nullptr) << said;
     for (const UiItem& item : viewer.ui_items())
         EXPECT_EQ(item.label.find("last good"), std::string::npos) << item.label;
+    const auto listed = [&](const std::string& start) {
+        for (const UiItem& item : viewer.ui_items())
+            if (item.label.rfind(start, 0) == 0) return true;
+        return false;
+    };
+    EXPECT_TRUE(listed("other.jts:2:14: error: ")) << "the other file's error, quoted";
+    // An edit of the file shown: its own diagnostics again (none), listed so.
+    edit_scene(state, [](Scene& s) { s.settings.width = 60; });
+    for (int i = 0; i < 3; ++i) viewer.frame(state);
+    EXPECT_FALSE(listed("other.jts:")) << "the panel follows the diagnostics";
+    EXPECT_EQ(find_item(viewer.ui_items(), said), nullptr);
     fs::remove_all(file.parent_path());
 }
 

@@ -137,6 +137,7 @@ void finish_reload(AppState& state, LoadAttempt attempt) {
         state.doc.load_failed = !attempt.ok;
         state.doc.diagnostics = attempt.diagnostics;
         state.doc.diagnostics_source = attempt.text;
+        note_diagnostics_changed(state.doc);
     }
     const bool broken = !attempt.ok;
     state.files.pending_reload = std::move(attempt);

@@ -1,5 +1,7 @@
 #include "model/scene_document.hpp"
 
+#include <atomic>
+
 #include "jtracer/parallel_chunks.hpp"
 #include "jtracer/parser.hpp"
 #include "jtracer/scene_file.hpp"
@@ -70,6 +72,11 @@ ParseOptions document_options(const SceneDocument& doc, const SourceEditResult& 
     return options;
 }
 
+void note_diagnostics_changed(SceneDocument& doc) {
+    static std::atomic<std::uint64_t> generations{0};
+    doc.diagnostics_generation = ++generations;
+}
+
 ParseResult parse_document_text(const SceneDocument& doc, std::string_view text) {
     return parse_scene(text, document_options(doc));
 }
@@ -95,9 +102,11 @@ void accept_load(SceneDocument& doc, const std::filesystem::path& path, LoadAtte
         doc.diagnostics_path = path;
         doc.diagnostics_files = std::move(attempt.source.files);
         doc.diagnostics_source = std::move(attempt.text);
+        note_diagnostics_changed(doc);
         return;
     }
     ++doc.file_generation;
+    note_diagnostics_changed(doc);
     doc.diagnostics = std::move(attempt.diagnostics);
     doc.diagnostics_path = path;
     doc.diagnostics_files = attempt.source.files;
@@ -345,6 +354,7 @@ Expected<std::vector<std::string>> save_scene_copy(SceneDocument& doc,
     doc.parse_diagnostics = std::move(check.diagnostics);
     doc.diagnostics_source = doc.text;
     doc.diagnostics_files = doc.source.files;
+    note_diagnostics_changed(doc);
     doc.load_failed = false;
     ++doc.file_generation;
     return names;

@@ -42,6 +42,10 @@ struct SceneDocument {
     std::string diagnostics_source;             // the text they point into (to quote lines)
     std::filesystem::path diagnostics_path;     // the file they are about
     std::vector<SourceFile> diagnostics_files;  // the included files they may be in
+    // Moved by every change of the four above (note_diagnostics_changed), so
+    // that what formats them (quoting a line walks the text) does so once a
+    // change, not every frame. No two documents share a value but 0 (none set).
+    std::uint64_t diagnostics_generation = 0;
     // Every file the latest load read or tried to read through `include`, or
     // the text taken in since (typed, undone to) read: watched like the scene
     // file, so that a change, or a missing file appearing, reloads
@@ -82,6 +86,9 @@ struct SceneDocument {
 inline void note_scene_changed(SceneDocument& doc) {
     ++doc.revision;
 }
+
+// Every change of doc.diagnostics or the texts they quote is announced with this.
+void note_diagnostics_changed(SceneDocument& doc);
 
 // What undo brings back: the document's base text, its scene as edited, its draft.
 struct DocumentVersion {
