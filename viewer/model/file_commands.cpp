@@ -121,8 +121,15 @@ void finish_reload(AppState& state, LoadAttempt attempt) {
     }
     if (!has_unsaved_edits(state.doc)) {
         const std::vector<Camera> before = state.doc.scene.cameras;
+        // The scene shown (no edit: its text's own), shared, not copied.
+        const std::shared_ptr<const Scene> shown = state.doc.original;
+        const std::uint64_t revision = state.doc.revision;
         accept_load(state.doc, state.doc.path, std::move(attempt));
         after_scene_replaced(state, before);
+        // An error made and mended in another editor, or a file saved
+        // unchanged: the image shown is of this very scene.
+        if (*state.doc.original == *shown)
+            keep_render_for(state.render, revision, state.doc.revision);
         state.message = "Reloaded " + name;
         return;
     }

@@ -167,6 +167,26 @@ TEST_F(ViewerFiles, AFailedOpenOfAnotherFileLeavesTheShownFileAsItIs) {
     EXPECT_EQ(format_diagnostics(state.doc), "");
 }
 
+// An error made in another editor and mended there, the file back as it
+// was: the reload reads the scene the image shows, and its render goes on
+// rather than starting again from the first preview. A change renders.
+TEST_F(ViewerFiles, AFileMendedBackToTheShownSceneKeepsTheRender) {
+    const std::uint64_t jobs = state.render.renderer.jobs_started();
+    const Image8 good = state.render.display;
+    they_save(replaced(kOriginal, "height: 48;", "height: 48"));
+    ASSERT_TRUE(state.doc.load_failed);
+    model.frame(state);
+    they_save(kOriginal + "# mended\n");
+    EXPECT_FALSE(state.doc.load_failed);
+    for (int i = 0; i < 3; ++i) model.frame(state);
+    EXPECT_EQ(state.render.renderer.jobs_started(), jobs) << "no render started again";
+    EXPECT_TRUE(render_complete(state.render));
+    EXPECT_EQ(state.render.display, good);
+    they_save(kTheirs);
+    ASSERT_TRUE(model.run_until_complete(state, kTimeout));
+    EXPECT_GT(state.render.renderer.jobs_started(), jobs) << "a changed scene renders";
+}
+
 TEST_F(ViewerFiles, ReloadCanDropTheEdits) {
     edit_pigment();
     they_save(kTheirs);
