@@ -7,6 +7,7 @@
 #include "common/counting_new.hpp"
 #include "common/scratch_dir.hpp"
 #include "model/app_actions.hpp"
+#include "model/document_edits.hpp"
 #include "model/model_frame.hpp"
 #include "model/picking.hpp"
 #include "viewer/viewer_test_files.hpp"
@@ -174,6 +175,23 @@ TEST_F(IdleFrame, AFrameWithAnErrorListedAllocatesNothing) {
     ASSERT_NE(find_item(viewer.ui_items(), "Showing the last good scene until the file is fixed."),
               nullptr)
         << "the Diagnostics panel is open";
+    for (int i = 0; i < 5; ++i) {
+        const Allocated a = allocated_by([&] { viewer.frame(state); });
+        EXPECT_EQ(a.count, 0) << a.bytes << " bytes in frame " << i;
+    }
+}
+
+// The text editor open on a text with an error: its lines, the error
+// marked on its line and listed under the text, drawn without allocating.
+TEST_F(IdleFrame, AFrameWithTheTextEditorShowingAnErrorAllocatesNothing) {
+    viewer.text_editor().open = true;
+    std::string text = state.doc.text;
+    text.replace(text.find("radius: 0.04;"), 13, "radius: 0.04 x;");
+    type_text(state, text);
+    state.check.checker.wait();
+    for (int i = 0; i < 5; ++i) viewer.frame(state);
+    ASSERT_TRUE(state.doc.draft);
+    ASSERT_TRUE(has_errors(state.doc.diagnostics));
     for (int i = 0; i < 5; ++i) {
         const Allocated a = allocated_by([&] { viewer.frame(state); });
         EXPECT_EQ(a.count, 0) << a.bytes << " bytes in frame " << i;
