@@ -6,6 +6,7 @@
 #include "jtracer/bmp.hpp"
 #include "jtracer/image_file.hpp"
 #include "jtracer/version.hpp"
+#include "memory_cap.hpp"
 
 #include <gtest/gtest.h>
 
@@ -252,7 +253,7 @@ TEST_F(Cli, ASizeTooLargeFromTheFlagsIsAUsageError) {
 // --junit '' said "cannot write an image".
 TEST_F(Cli, EmptyFileNamesAreUsageErrors) {
     write("ref.bmp", "");
-    for (const std::string& args :
+    for (const std::string args :
          {"scene.jts -o ''", "scene.jts --expect ''",
           "scene.jts -o a.png --expect ref.bmp --junit ''", "diff ref.bmp ref.bmp -o ''",
           "diff ref.bmp ref.bmp --junit ''"}) {
@@ -281,7 +282,8 @@ TEST_F(Cli, DeviceAsImageMapOrSkyIsAnErrorAtItsString) {
 cameras { perspective_camera { position: <0, 0, 5>; } }
 scene { sphere { material { image_map: "/dev/urandom"; } } }
 )");
-    test::ProgramRun r = run_shell("ulimit -v 4000000; timeout 60 '" JT_CLI "' device.jts");
+    test::ProgramRun r =
+        run_shell(std::string(test::memory_cap) + "timeout 60 '" JT_CLI "' device.jts");
     EXPECT_EQ(r.code, 1) << r.err;
     EXPECT_NE(r.err.find("device.jts:1:56: error: background_map: cannot read '/dev/zero': it is "
                          "a device, not a file"),

@@ -9,6 +9,7 @@
 #include "jtracer/bmp.hpp"
 #include "jtracer/image_file.hpp"
 #include "jtracer/png.hpp"
+#include "memory_cap.hpp"
 
 #include <gtest/gtest.h>
 
@@ -160,8 +161,8 @@ TEST_F(Diff, UnreadableImagesAreIoErrors) {
 // A device never ends: read whole, /dev/zero took all the memory there was.
 // The limits keep the test from doing the same should that come back.
 TEST_F(Diff, DevicesAreRefusedAtOnce) {
-    const std::string limits = "ulimit -v 4000000; timeout 60 ";
-    for (const std::string& args : {"/dev/zero a.png", "a.png /dev/urandom"}) {
+    const std::string limits = std::string(test::memory_cap) + "timeout 60 ";
+    for (const std::string args : {"/dev/zero a.png", "a.png /dev/urandom"}) {
         ProgramRun r = run(limits + cli + " diff " + args);
         EXPECT_EQ(r.code, 3) << args << ": " << r.err;
         EXPECT_NE(r.err.find("it is a device, not a file"), std::string::npos)
@@ -213,7 +214,7 @@ TEST_F(Diff, UsageErrors) {
 TEST_F(Diff, RefusesToWriteOverTheImagesItCompares) {
     write_png_file("b.png", gradient());
     const std::string before = test::read_file(dir / "a.png");
-    for (const std::string& args :
+    for (const std::string args :
          {"a.png b.png -o a.png", "a.png b.png -o ./b.png", "a.png b.png --junit a.png",
           "a.png b.png --junit b.png", "a.png b.png -o h.png --junit h.png"}) {
         ProgramRun r = diff(args);
