@@ -1,4 +1,4 @@
-// The million-triangle benchmark (docs/benchmarks.md §3): a model file is read,
+// The million-triangle benchmark (docs/benchmarks.md §5): a model file is read,
 // its BVH built and a 1920x1080 frame rendered, each timed on its own, with the
 // CPU seconds of the whole process (every thread) beside the wall time, as a
 // shared machine stretches wall times, and the process's resident memory after

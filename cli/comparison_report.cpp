@@ -130,7 +130,10 @@ Expected<void> write_junit(const std::filesystem::path& path, const ComparisonRe
     if (error)
         xml += "      <error type=\"error\" message=\"" + xml_text(r.error) + "\">" +
                xml_text(r.error) + "</error>\n";
-    std::string out = "expected " + r.expected_path + ", actual " + r.actual_path + "\n" + r.text;
+    // A render that failed wrote nothing to compare.
+    std::string out = "expected " + r.expected_path + ", actual " +
+                      (r.actual_path.empty() ? "none (no render was written)" : r.actual_path) +
+                      "\n" + r.text;
     if (!r.heat_map_path.empty()) out += "the differences are in " + r.heat_map_path + "\n";
     if (r.verdict == Verdict::updated) out += "updated " + r.expected_path + " with the render\n";
     xml += "      <system-out>" + xml_text(out) + "</system-out>\n";

@@ -129,7 +129,29 @@ int run_diff_command(int argc, char** argv) {
                    "outside the tolerance with the figures as its message")
         ->type_name("FILE");
     app.add_flag("-q,--quiet", quiet, "Print nothing but errors; the exit code tells the result");
-    if (std::optional<int> code = parse_command_line(app, argc, argv, "jtracer-cli diff"))
+    // Neither file written may be an image compared (a heat map over the
+    // reference would pass every later comparison), nor the other.
+    auto checks = [&] {
+        if (app.count("--output") && heat_map_path.empty())
+            throw CLI::ValidationError("-o/--output", "needs a file name, not an empty string");
+        if (junit && junit->empty())
+            throw CLI::ValidationError("--junit", "needs a file name, not an empty string");
+        for (const auto& [flag, written] :
+             {std::pair<const char*, std::string>{"-o/--output", heat_map_path},
+              {"--junit", junit.value_or("")}}) {
+            if (written.empty()) continue;
+            for (const auto& [what, path] :
+                 {std::pair<const char*, std::string>{"EXPECTED", expected_path},
+                  {"ACTUAL", actual_path}})
+                if (same_file(written, path))
+                    throw CLI::ValidationError(
+                        flag, "'" + written + "' is the " + what + " image: it would be replaced");
+        }
+        if (junit && !heat_map_path.empty() && same_file(*junit, heat_map_path))
+            throw CLI::ValidationError(
+                "--junit", "'" + *junit + "' is also the heat map (-o): it would be replaced");
+    };
+    if (std::optional<int> code = parse_command_line(app, argc, argv, "jtracer-cli diff", checks))
         return *code;
 
     const std::string program = "jtracer-cli diff";
@@ -188,6 +210,17 @@ int run_diff_command(int argc, char** argv) {
 int check_expected(const Image8& render, const std::string& render_path,
                    const ExpectOptions& expect, double seconds) {
     const std::string& reference = expect.reference;
+    const std::string heat_map_path =
+        std::filesystem::path(render_path).replace_extension(".diff.png").string();
+    // A heat map left beside the render by an earlier run that failed would
+    // say this one failed too (to a person, or to CI keeping out/ as an
+    // artifact): only a render outside the tolerance keeps one.
+    auto remove_stale_heat_map = [&] {
+        std::error_code error;
+        if (std::filesystem::is_regular_file(heat_map_path, error) &&
+            std::filesystem::remove(heat_map_path, error) && !expect.quiet)
+            std::cerr << "removed " << heat_map_path << ", the heat map of an earlier run\n";
+    };
     ComparisonReport r;
     r.name = expect.scene_path;
     r.expected_path = reference;
@@ -210,6 +243,7 @@ int check_expected(const Image8& render, const std::string& render_path,
             return finish(exit_io_error);
         }
         std::cerr << "updated " << reference << " with the render (" << why << ")\n";
+        remove_stale_heat_map();
         r.verdict = Verdict::updated;
         return finish(exit_ok);
     };
@@ -226,6 +260,7 @@ int check_expected(const Image8& render, const std::string& render_path,
     r = compared(std::move(r), *expected, render, d, expect.tolerance);
     if (r.verdict == Verdict::within) {
         if (!expect.quiet) std::cerr << "matches " << reference << "\n";
+        remove_stale_heat_map();
         return finish(exit_ok);
     }
     if (!d.same_size) {
@@ -234,6 +269,7 @@ int check_expected(const Image8& render, const std::string& render_path,
         if (expect.update) return update(sizes);
         std::cerr << "jtracer-cli: the render (" << size_text(render) << ", in " << render_path
                   << ") is not the size of " << reference << " (" << size_text(*expected) << ")\n";
+        remove_stale_heat_map();  // none is drawn for images of different sizes
         return finish(exit_outside_tolerance);
     }
     if (expect.update) {
@@ -242,8 +278,6 @@ int check_expected(const Image8& render, const std::string& render_path,
                       d.max_channel_difference, d.pixels_over);
         return update(why);
     }
-    const std::string heat_map_path =
-        std::filesystem::path(render_path).replace_extension(".diff.png").string();
     std::cerr << "jtracer-cli: the render differs from " << reference << ":\n" << r.text;
     if (const Expected<void> written = write_image(heat_map_path, d.image, ImageFormat::png);
         !written) {

@@ -5,11 +5,11 @@
 #include "info_command.hpp"
 #include "interruptible_render.hpp"
 #include "list_names.hpp"
-#include "memory_budget.hpp"
 #include "options.hpp"
 #include "sequence_command.hpp"
 
 #include "jtracer/frontend/frame_setup.hpp"
+#include "jtracer/frontend/memory_budget.hpp"
 #include "jtracer/frontend/progress.hpp"
 #include "jtracer/image_file.hpp"
 #include "jtracer/region_file.hpp"
@@ -42,6 +42,12 @@ int run(const Options& o, bool& compared) {
     }
     const jt::RenderOptions& options = setup.render;
     const std::string& output = setup.output;
+    if (!o.output)
+        if (std::optional<std::string> clash = file_clash(o, output)) {
+            std::cerr << "jtracer-cli: " << *clash << "; nothing was written\n";
+            return exit_usage;
+        }
+    if (!o.quiet) std::cerr << format_warning(o, output);
     if (jt::Expected<void> fits = check_render_memory(options, o.region_output); !fits) {
         std::cerr << "jtracer-cli: " << fits.error().message << "; nothing was written\n";
         return exit_io_error;

@@ -4,10 +4,64 @@
 
 #include <CLI/CLI.hpp>
 
+#include <algorithm>
+#include <cctype>
 #include <cstdio>
+#include <filesystem>
 #include <iostream>
 
 namespace jt::cli {
+
+std::optional<std::string> file_clash(const Options& o, const std::string& output) {
+    using frontend::same_file;
+    const std::string named =
+        (o.output ? "-o/--output '" : "the scene's filename '") + output + "'";
+    // An empty output is not known yet: only the --junit file is checked.
+    if (!output.empty() && same_file(output, o.scene_path))
+        return named + " is the scene file itself: the image would replace it";
+    if (o.expect && !output.empty()) {
+        if (same_file(output, *o.expect))
+            return named +
+                   " is the reference given to --expect: the render would replace it "
+                   "before the comparison; write the render elsewhere";
+        const std::string heat_map =
+            std::filesystem::path(output).replace_extension(".diff.png").string();
+        if (same_file(heat_map, *o.expect))
+            return "--expect '" + *o.expect + "' is where the heat map of " + named + " goes (" +
+                   heat_map + "): a render outside the tolerance would replace it";
+    }
+    if (o.junit) {
+        for (const auto& [what, path] :
+             {std::pair<const char*, std::string>{"the scene file", o.scene_path},
+              {"the image", output},
+              {"the reference given to --expect", o.expect.value_or("")}})
+            if (!path.empty() && same_file(*o.junit, path))
+                return "--junit '" + *o.junit + "' is " + what + ": the report would replace it";
+    }
+    return std::nullopt;
+}
+
+std::string format_warning(const Options& o, const std::string& output) {
+    std::string ext = std::filesystem::path(output).extension().string();
+    for (char& c : ext) c = static_cast<char>(std::tolower(static_cast<unsigned char>(c)));
+    static constexpr std::string_view other_images[] = {".jpg",  ".jpeg", ".tif",  ".tiff", ".gif",
+                                                        ".webp", ".exr",  ".tga",  ".ppm",  ".hdr",
+                                                        ".avif", ".jxl",  ".heic", ".ico"};
+    const bool other =
+        std::find(std::begin(other_images), std::end(other_images), ext) != std::end(other_images);
+    if (!o.output && (ext == ".png" || other))
+        return "jtracer-cli: warning: the scene's filename '" + output +
+               "' is written as a BMP, as the scene's filename always is" +
+               (ext != ".png" || o.region_output ? ""
+                : o.frames                       ? "; an -o name ending in .png writes PNGs"
+                                                 : "; -o " + output + " writes a PNG") +
+               "\n";
+    if (o.output && other)
+        return "jtracer-cli: warning: -o/--output '" + output +
+               "' is written as a BMP: JTracer writes a PNG for a name ending in .png and a BMP "
+               "for any other\n";
+    return {};
+}
 
 ParsedOptions parse_options(int argc, char** argv) {
     ParsedOptions parsed;
@@ -66,6 +120,14 @@ ParsedOptions parse_options(int argc, char** argv) {
     app.add_flag("--list-defines", o.list_defines)->group("");
     // Rules between options, reported like CLI11's own errors.
     auto checks = [&] {
+        // An empty name would fail only after the render, as a write error
+        // ("cannot write an image to an empty file name", even for --junit).
+        for (const auto& [flag, name] :
+             {std::pair<const char*, const std::optional<std::string>*>{"-o/--output", &o.output},
+              {"--expect", &o.expect},
+              {"--junit", &o.junit}})
+            if (*name && (*name)->empty())
+                throw CLI::ValidationError(flag, "needs a file name, not an empty string");
         if (o.region_output && !o.region)
             throw CLI::ValidationError("--region-output", "needs --region X0,Y0,X1,Y1");
         if (o.region_output && o.output &&
@@ -86,6 +148,12 @@ ParsedOptions parse_options(int argc, char** argv) {
         if (o.expect && o.frames)
             throw CLI::ValidationError("--expect", "compares one image: not with --frames");
         frontend::check_sequence_flags(o);
+        // An -o with a frame field names other files; the scene's filename is
+        // known only once the scene is read (main.cpp checks it then).
+        const bool one_image = !o.frames && !o.check_only;
+        if (std::optional<std::string> clash =
+                file_clash(o, one_image ? o.output.value_or("") : std::string()))
+            throw CLI::ValidationError(*clash);
     };
     if (std::optional<int> code =
             frontend::parse_command_line(app, argc, argv, "jtracer-cli", checks))

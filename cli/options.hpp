@@ -36,4 +36,18 @@ struct ParsedOptions {
 
 ParsedOptions parse_options(int argc, char** argv);
 
+// Why the files of one run cannot be as named, or nothing: the image
+// (`output`, from -o or the scene's filename) would replace the scene file or
+// --expect's reference, its heat map (OUT.diff.png) the reference, or the
+// --junit file one of them. Each would destroy an input or make the
+// comparison meaningless (a render compared with itself always matches).
+// An empty `output` (not known yet) checks the --junit file alone.
+std::optional<std::string> file_clash(const Options& o, const std::string& output);
+
+// A warning line (or nothing) when the image's name promises a format it will
+// not have: the scene's filename always gives a BMP, even `shot.png`, and -o
+// gives a BMP for any name but .png, even `shot.jpg`. Image viewers, browsers
+// and upload forms trust the name and refuse such a file.
+std::string format_warning(const Options& o, const std::string& output);
+
 }  // namespace jt::cli

@@ -1,8 +1,8 @@
 #include "sequence_command.hpp"
 
 #include "interruptible_render.hpp"
-#include "memory_budget.hpp"
 
+#include "jtracer/frontend/memory_budget.hpp"
 #include "jtracer/frontend/scene_sequence.hpp"
 #include "jtracer/frontend/sequence_progress.hpp"
 #include "jtracer/region_file.hpp"
@@ -41,6 +41,10 @@ int run_sequence(const Options& o) {
         }
         if (frame.exit_code != exit_ok) return frame.exit_code;
         if (o.check_only) continue;
+        if (index == range.first && !o.quiet) {
+            display.finish();
+            std::cerr << format_warning(o, frame.output);
+        }
         if (Expected<void> fits = check_render_memory(frame.render, o.region_output); !fits) {
             display.finish();
             std::cerr << "jtracer-cli: " << fits.error().message << "; " << kept(range, index)

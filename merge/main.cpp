@@ -76,8 +76,18 @@ int main(int argc, char** argv) {
         ->type_name("FILE");
     app.add_option("parts", part_paths, "The region files (BMP)")->required();
     app.add_flag("-q,--quiet", quiet, "No summary; errors still show");
+    // The frame written over a part would lose that part for the next merge
+    // (and a glob such as parts/*.bmp picks an earlier frame up as a part).
+    auto checks = [&] {
+        if (output.empty())
+            throw CLI::ValidationError("-o/--output", "needs a file name, not an empty string");
+        for (const std::string& part : part_paths)
+            if (jt::frontend::same_file(output, part))
+                throw CLI::ValidationError("-o/--output", "'" + output + "' is also a part (" +
+                                                              part + "): it would be replaced");
+    };
     if (std::optional<int> code =
-            jt::frontend::parse_command_line(app, argc, argv, "jtracer-merge"))
+            jt::frontend::parse_command_line(app, argc, argv, "jtracer-merge", checks))
         return *code;
     try {
         return merge(part_paths, output, quiet);

@@ -111,6 +111,14 @@ RankFrame set_up_rank(const Options& o, jt::frontend::SceneSequence* sequence, i
         mine.exit_code = setup.exit_code;
         mine.message = setup.message;
         if (setup.exit_code != exit_ok) return frame;
+        // As jtracer-cli refuses it: the image would replace the scene file.
+        if (jt::frontend::same_file(setup.output, o.scene_path)) {
+            mine.exit_code = jt::frontend::exit_usage;
+            mine.message = "jtracer-mpi: '" + setup.output +
+                           "' is the scene file itself: the image would replace it; nothing "
+                           "was written\n";
+            return frame;
+        }
         const jt::Expected<std::shared_ptr<const jt::PreparedScene>> prepared =
             jt::prepare_scene(std::move(setup.scene));
         if (!prepared) {

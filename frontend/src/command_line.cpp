@@ -40,6 +40,22 @@ class GnuHelp : public CLI::Formatter {
 
 }  // namespace
 
+bool same_file(const std::filesystem::path& a, const std::filesystem::path& b) {
+    std::error_code error;
+    // A device or pipe is written in place (atomic_file.cpp): /dev/null as
+    // both the image and the report replaces nothing.
+    for (const std::filesystem::path* path : {&a, &b})
+        if (const auto status = std::filesystem::status(*path, error);
+            std::filesystem::is_character_file(status) || std::filesystem::is_fifo(status) ||
+            std::filesystem::is_block_file(status) || std::filesystem::is_socket(status))
+            return false;
+    if (std::filesystem::equivalent(a, b, error)) return true;
+    const std::filesystem::path place_a = std::filesystem::weakly_canonical(a, error);
+    if (error) return false;
+    const std::filesystem::path place_b = std::filesystem::weakly_canonical(b, error);
+    return !error && place_a == place_b;
+}
+
 void add_version_flag(CLI::App& app, const std::string& program) {
     app.set_version_flag("--version", program + " " + jt::version_string());
 }

@@ -34,8 +34,15 @@ Expected<int> read_field(std::string_view rest, std::size_t& length) {
     }
     if (rest.size() >= 2 && rest[0] == '0' && rest[1] == 'd')
         return Error{"'%0d' asks for no digits; write %01d to %09d"};
+    // Quote what printf would take as the field: its flags, width and length
+    // (`%4d`, `%010d`, `%ld`), then the conversion letter, and no more.
+    std::size_t end = 0;
+    while (end < rest.size() && end < 8 &&
+           std::string_view("0123456789.+-# 'hljzt").find(rest[end]) != std::string_view::npos)
+        ++end;
+    if (end < rest.size()) ++end;
     std::string field(1, '%');
-    field.append(rest.substr(0, 3));
+    field.append(rest.substr(0, end));
     return Error{quoted(field) +
                  " is not a frame number field: write %d, %01d to %09d, or %% for a percent sign"};
 }

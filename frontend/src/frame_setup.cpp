@@ -2,6 +2,7 @@
 
 #include "jtracer/parallel_chunks.hpp"
 #include "jtracer/scene_file.hpp"
+#include "jtracer/validate.hpp"
 
 namespace jt::frontend {
 
@@ -67,6 +68,20 @@ FrameSetup set_up_loaded(std::string_view program, const RenderFlags& flags, Loa
     };
     if (Expected<void> applied = apply_overrides(flags, loaded.parsed.scene); !applied)
         return fail(exit_usage, applied.error().message);
+    // The BMP limit is the scene's rule (docs/language.md §4.9), but a size
+    // from the command line is the command line's error: located in the
+    // file, it would point at a width or height the flag replaced.
+    if (const RenderSettings& s = loaded.parsed.scene.settings;
+        (flags.width || flags.height) && s.width > 0 && s.height > 0 &&
+        bmp_file_size(s.width, s.height) > 0xFFFFFFFFull) {
+        const std::string flag = flags.width && flags.height ? "--width/--height"
+                                 : flags.width               ? "--width"
+                                                             : "--height";
+        return fail(exit_usage, flag + ": a " + std::to_string(s.width) + " x " +
+                                    std::to_string(s.height) +
+                                    " image does not fit in a BMP file (4 GiB at most), the "
+                                    "largest image JTracer renders whatever the output format");
+    }
     // Quiet drops warnings: locating them would only cost another parse.
     std::vector<Diagnostic> diagnostics =
         check_scene(loaded, {.locate_warnings = !flags.quiet,

@@ -33,6 +33,10 @@ py::list diagnostic_list(const std::vector<Diagnostic>& diagnostics, const Loade
 [[noreturn]] void raise_scene_error(const std::string& message,
                                     const std::vector<Diagnostic>& diagnostics,
                                     const LoadedScene& loaded);
+// The hint of a diagnostic that asks for a render setting, in Python's words:
+// "... or pass width= to Scene.render()" where jtracer-cli says "--width".
+// Diagnostics already named for the command line are renamed.
+void name_render_arguments(std::vector<Diagnostic>& diagnostics);
 // Raises OSError with the core's message ("cannot read 'a.png': no such file").
 [[noreturn]] void raise_os_error(const std::string& message);
 

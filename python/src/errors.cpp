@@ -64,6 +64,15 @@ void raise_scene_error(const std::string& message, const std::vector<Diagnostic>
     throw py::error_already_set();
 }
 
+void name_render_arguments(std::vector<Diagnostic>& diagnostics) {
+    for (Diagnostic& d : diagnostics) {
+        if (d.setting != "width" && d.setting != "height" && d.setting != "samples") continue;
+        const std::string flag = " or pass --" + std::string(d.setting);
+        if (d.message.ends_with(flag)) d.message.resize(d.message.size() - flag.size());
+        d.message.append(" or pass ").append(d.setting).append("= to Scene.render()");
+    }
+}
+
 void raise_os_error(const std::string& message) {
     PyErr_SetString(PyExc_OSError, message.c_str());
     throw py::error_already_set();

@@ -49,9 +49,16 @@ Image8 read_or_raise(const std::filesystem::path& path) {
     return std::move(*read);
 }
 
-Image8 image_or_path(const py::object& value) {
+// `name` is the argument's, for the TypeError of anything else: pybind11's
+// own cast failure is a RuntimeError that names no argument or type.
+Image8 image_or_path(const py::object& value, const char* name) {
     if (py::isinstance<py::array>(value)) return from_array(value.cast<py::array>());
-    return read_or_raise(value.cast<std::filesystem::path>());
+    if (py::isinstance<py::str>(value) || py::isinstance<py::bytes>(value) ||
+        py::hasattr(value, "__fspath__"))
+        return read_or_raise(value.cast<std::filesystem::path>());
+    throw py::type_error(std::string(name) +
+                         ": an image (a uint8 array) or the path of a BMP or PNG file, not " +
+                         py::str(py::type::of(value).attr("__name__")).cast<std::string>());
 }
 
 }  // namespace
@@ -120,7 +127,8 @@ void bind_images(py::module_& m) {
         [](const py::object& expected, const py::object& actual, int threshold) {
             if (threshold < 0 || threshold > 255)
                 throw py::value_error("threshold: 0..255, not " + std::to_string(threshold));
-            const Image8 a = image_or_path(expected), b = image_or_path(actual);
+            const Image8 a = image_or_path(expected, "expected");
+            const Image8 b = image_or_path(actual, "actual");
             py::gil_scoped_release unlocked;
             return diff_images(a, b, threshold);
         },

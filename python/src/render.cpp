@@ -8,6 +8,7 @@
 #include "bindings.hpp"
 
 #include "jtracer/frontend/frame_setup.hpp"
+#include "jtracer/frontend/memory_budget.hpp"
 #include "jtracer/limits.hpp"
 
 #include <chrono>
@@ -93,6 +94,7 @@ std::string reason(const frontend::FrameSetup& setup, std::string_view program) 
     std::string text = setup.message;
     if (text.starts_with(program)) text.erase(0, program.size() + 2);
     if (text.starts_with("--")) text.erase(0, 2);
+    if (text.starts_with("width/--height")) text.erase(6, 2);
     if (!text.empty() && text.back() == '\n') text.pop_back();
     return text;
 }
@@ -113,9 +115,25 @@ py::array_t<std::uint8_t> render_scene(PythonScene& scene, const RenderArguments
         setup = frontend::set_up_frame(program, flags, scene.loaded,
                                        frontend::LoadedPrimitives::as_parsed, region);
     }
-    if (setup.exit_code == frontend::exit_scene_error)
-        raise_scene_error(setup.message, setup.diagnostics, scene.loaded);
+    if (setup.exit_code == frontend::exit_scene_error) {
+        name_render_arguments(setup.diagnostics);
+        raise_scene_error(format_diagnostics(setup.diagnostics, scene.loaded), setup.diagnostics,
+                          scene.loaded);
+    }
     if (setup.exit_code != frontend::exit_ok) throw py::value_error(reason(setup, program));
+    // Before allocating: a frame larger than the memory left would otherwise
+    // end in a bare "std::bad_alloc", or the kernel's out-of-memory killer
+    // taking the interpreter with it.
+    if (Expected<void> fits = frontend::check_render_memory(setup.render, false); !fits) {
+        std::string message = fits.error().message;
+        for (const auto& [flag, argument] :
+             {std::pair<std::string_view, std::string_view>{"--width/--height", "width/height"},
+              {"--samples", "samples"}})
+            if (const std::size_t at = message.find(flag); at != std::string::npos)
+                message.replace(at, flag.size(), argument);
+        PyErr_SetString(PyExc_MemoryError, message.c_str());
+        throw py::error_already_set();
+    }
 
     std::shared_ptr<const PreparedScene> prepared;
     {

@@ -13,6 +13,8 @@
 #include <pybind11/stl.h>
 #include <pybind11/stl/filesystem.h>
 
+#include <algorithm>
+#include <cmath>
 #include <filesystem>
 #include <new>
 
@@ -80,14 +82,24 @@ void bind_view(py::module_& m, const char* name, const char* doc) {
 std::vector<Diagnostic> findings(const LoadedScene& loaded) {
     std::vector<Diagnostic> diagnostics = check_scene(
         loaded, {.validation = {.run_chunks = parallel_chunks(), .primitives_as_parsed = true}});
-    frontend::name_setting_flags(diagnostics);
+    name_render_arguments(diagnostics);
     return diagnostics;
+}
+
+// A width or height of 0 is an error of the frame, not of the scene:
+// render(width=, height=) may still set it, as --width/--height do for a file
+// without them, and render() reports it when it does not.
+bool size_left_to_render(const Diagnostic& d) {
+    return d.severity == Severity::error && (d.setting == "width" || d.setting == "height");
 }
 
 std::shared_ptr<PythonScene> checked_scene(LoadedScene loaded) {
     std::vector<Diagnostic> diagnostics = findings(loaded);
-    if (has_errors(diagnostics))
+    if (std::any_of(diagnostics.begin(), diagnostics.end(), [](const Diagnostic& d) {
+            return d.severity == Severity::error && !size_left_to_render(d);
+        }))
         raise_scene_error(format_diagnostics(diagnostics, loaded), diagnostics, loaded);
+    std::erase_if(diagnostics, size_left_to_render);
     auto scene = std::make_shared<PythonScene>();
     scene->loaded = std::move(loaded);
     scene->warnings = std::move(diagnostics);
@@ -98,9 +110,14 @@ std::shared_ptr<PythonScene> checked_scene(LoadedScene loaded) {
 // jtracer-cli's --define NAME=VALUE: a number (int or float), three numbers
 // (a vector), or a str holding the value as a file writes it ('"out.png"' for a
 // string, "2 * pi" for an expression). Raises TypeError or ValueError.
-ParseOptions options_with(const std::optional<py::dict>& defines) {
+// `clock` is --clock's value: any finite number (docs/language.md §15.4).
+ParseOptions options_with(const std::optional<py::dict>& defines, double clock) {
     ParseOptions options;
     options.source_map = false;
+    if (!std::isfinite(clock))
+        throw py::value_error("clock: a finite number, not " +
+                              py::repr(py::float_(clock)).cast<std::string>());
+    options.clock = clock;
     if (!defines) return options;
     for (const auto& [key, value] : *defines) {
         if (!py::isinstance<py::str>(key)) throw py::type_error("defines: the names must be str");
@@ -207,23 +224,25 @@ void bind_scene(py::module_& m) {
 
     m.def(
         "load",
-        [](const std::filesystem::path& path, std::optional<py::dict> defines) {
-            const ParseOptions options = options_with(defines);
+        [](const std::filesystem::path& path, std::optional<py::dict> defines, double clock) {
+            const ParseOptions options = options_with(defines, clock);
             return checked_scene(read_file(path, options));
         },
-        py::arg("path"), py::arg("defines") = py::none(),
+        py::arg("path"), py::arg("defines") = py::none(), py::arg("clock") = 0.0,
         "Reads and checks a .jts file. Raises SceneError (with .diagnostics) when it has "
         "errors, OSError when it cannot be read. defines, a dict, sets names as "
         "jtracer-cli's --define NAME=VALUE does: a number, three numbers (a vector), or a "
         "str holding the value as a file writes it ('\"out.png\"', \"2 * pi\"); the "
         "file's own definitions of those names are then ignored. A bad name or value "
-        "raises ValueError.");
+        "raises ValueError. clock is the value of `clock` in the scene, as jtracer-cli's "
+        "--clock V (a finite number; default 0).");
     m.def(
         "parse",
-        [](std::string text, const std::filesystem::path& path, std::optional<py::dict> defines) {
+        [](std::string text, const std::filesystem::path& path, std::optional<py::dict> defines,
+           double clock) {
             LoadedScene loaded;
             loaded.path = path.string();
-            loaded.options = options_with(defines);
+            loaded.options = options_with(defines, clock);
             // A text of no file reads its includes from the working directory.
             if (path != "<string>") loaded.options.main_file = loaded.path;
             loaded.text = std::move(text);
@@ -233,19 +252,22 @@ void bind_scene(py::module_& m) {
             return checked_scene(std::move(loaded));
         },
         py::arg("text"), py::arg("path") = "<string>", py::arg("defines") = py::none(),
+        py::arg("clock") = 0.0,
         "Parses and checks .jts text. `path` names it in diagnostics, and its folder is "
         "where the scene's relative file names (includes, meshes, image maps) are found; "
-        "the default, \"<string>\", looks in the current directory. defines as for load(). "
+        "the default, \"<string>\", looks in the current directory. defines and clock as for "
+        "load(). "
         "Raises SceneError.");
     m.def(
         "check",
-        [](const std::filesystem::path& path) {
-            const LoadedScene loaded = read_file(path, options_with(std::nullopt));
+        [](const std::filesystem::path& path, std::optional<py::dict> defines, double clock) {
+            const LoadedScene loaded = read_file(path, options_with(defines, clock));
             return diagnostic_list(findings(loaded), loaded);
         },
-        py::arg("path"),
+        py::arg("path"), py::arg("defines") = py::none(), py::arg("clock") = 0.0,
         "What `jtracer-cli --check` reports for a .jts file, errors and warnings, as a list "
-        "of Diagnostic objects (empty: none). Raises OSError when it cannot be read.");
+        "of Diagnostic objects (empty: none); defines and clock as for load(). Raises "
+        "OSError when it cannot be read.");
 }
 
 }  // namespace jt::python

@@ -6,6 +6,7 @@
 #include "jtracer/bmp.hpp"
 #include "jtracer/image_file.hpp"
 #include "jtracer/version.hpp"
+#include "memory_cap.hpp"
 
 #include <gtest/gtest.h>
 
@@ -85,6 +86,34 @@ TEST_F(Cli, SceneFilenameIsBmpWhateverItsExtension) {
     write("scene.jts", text);
     ASSERT_EQ(run("-q scene.jts").code, 0);
     EXPECT_TRUE(read_bmp(dir / "picture.png")) << "the manual: always a BMP";
+    // ... and says so, since a viewer trusting the name refuses the file.
+    test::ProgramRun r = run("scene.jts");
+    ASSERT_EQ(r.code, 0) << r.err;
+    EXPECT_NE(r.err.find("jtracer-cli: warning: the scene's filename 'picture.png' is written as "
+                         "a BMP, as the scene's filename always is; -o picture.png writes a PNG"),
+              std::string::npos)
+        << r.err;
+    r = run("scene.jts --frames 2");
+    ASSERT_EQ(r.code, 0) << r.err;
+    EXPECT_NE(r.err.find("'picture-0000.png' is written as a BMP"), std::string::npos) << r.err;
+    EXPECT_EQ(r.err.find("'picture-0001.png' is written"), std::string::npos) << "once: " << r.err;
+}
+
+// -o gives a PNG for .png and a BMP for any other name: one that names
+// another image format gets a warning, no other does.
+TEST_F(Cli, AnOutputNamingAnotherImageFormatWarns) {
+    test::ProgramRun r = run("scene.jts -o shot.jpg");
+    ASSERT_EQ(r.code, 0) << r.err;
+    EXPECT_TRUE(read_bmp(dir / "shot.jpg"));
+    EXPECT_NE(r.err.find("jtracer-cli: warning: -o/--output 'shot.jpg' is written as a BMP"),
+              std::string::npos)
+        << r.err;
+    EXPECT_EQ(run("scene.jts -o shot.jpg -q").err, "");
+    for (const char* name : {"shot.bmp", "shot.PNG", "shot", "shot.out"}) {
+        r = run(std::string("scene.jts -o ") + name);
+        ASSERT_EQ(r.code, 0) << r.err;
+        EXPECT_EQ(r.err.find("warning"), std::string::npos) << name << ": " << r.err;
+    }
 }
 
 TEST_F(Cli, OutputOptionWinsAndPngByExtension) {
@@ -188,6 +217,54 @@ TEST_F(Cli, UsageErrorsExitTwo) {
     EXPECT_TRUE(outputs().empty());
 }
 
+// A size too large for a BMP asked for on the command line is the command
+// line's error: located in the file it pointed at the `height: 18` the flags
+// replaced, and spoke of a BMP when the output was a PNG.
+TEST_F(Cli, ASizeTooLargeFromTheFlagsIsAUsageError) {
+    test::ProgramRun r = run("scene.jts --width 40000 --height 40000 -o huge.png");
+    EXPECT_EQ(r.code, 2) << r.err;
+    EXPECT_NE(r.err.find("jtracer-cli: --width/--height: a 40000 x 40000 image does not fit in a "
+                         "BMP file (4 GiB at most), the largest image JTracer renders whatever "
+                         "the output format"),
+              std::string::npos)
+        << r.err;
+    EXPECT_EQ(r.err.find("scene.jts:"), std::string::npos) << r.err;
+    r = run("scene.jts --width 65535 --check");
+    EXPECT_EQ(r.code, 0) << "65535 x 18 fits: " << r.err;
+    write("tall.jts", small_scene.substr(0, small_scene.find("height: 18;")) + "height: 65535;" +
+                          small_scene.substr(small_scene.find("height: 18;") + 11));
+    r = run("tall.jts --width 65535 --check");
+    EXPECT_EQ(r.code, 2) << r.err;
+    EXPECT_NE(r.err.find("--width: a 65535 x 65535 image"), std::string::npos) << r.err;
+    write("huge.jts", small_scene.substr(0, small_scene.find("width: 32;")) + "width: 65535;" +
+                          small_scene.substr(small_scene.find("width: 32;") + 10));
+    r = run("huge.jts --height 65535 --width 65535");
+    EXPECT_EQ(r.code, 2) << r.err;
+    // The scene's own size stays the scene's error, at its line.
+    r = run("tall.jts --check");
+    EXPECT_EQ(r.code, 0) << "32 x 65535 fits: " << r.err;
+    r = run("huge.jts --height 65535");
+    EXPECT_EQ(r.code, 2) << r.err;
+    EXPECT_TRUE(outputs().empty());
+}
+
+// An empty file name (a script's unset variable: -o "$OUT") is the command
+// line's error, found before rendering; it was a write error after it, and
+// --junit '' said "cannot write an image".
+TEST_F(Cli, EmptyFileNamesAreUsageErrors) {
+    write("ref.bmp", "");
+    for (const std::string args :
+         {"scene.jts -o ''", "scene.jts --expect ''",
+          "scene.jts -o a.png --expect ref.bmp --junit ''", "diff ref.bmp ref.bmp -o ''",
+          "diff ref.bmp ref.bmp --junit ''"}) {
+        test::ProgramRun r = run(args);
+        EXPECT_EQ(r.code, 2) << args << ": " << r.err;
+        EXPECT_NE(r.err.find(": needs a file name, not an empty string"), std::string::npos)
+            << args << ": " << r.err;
+    }
+    EXPECT_EQ(outputs(), std::vector<std::string>{"ref.bmp"});
+}
+
 TEST_F(Cli, IoErrorsExitThreeAndWriteNothing) {
     test::ProgramRun r = run("missing.jts");
     EXPECT_EQ(r.code, 3);
@@ -195,6 +272,26 @@ TEST_F(Cli, IoErrorsExitThreeAndWriteNothing) {
     r = run("scene.jts -o no/such/dir/out.bmp");
     EXPECT_EQ(r.code, 3);
     EXPECT_NE(r.err.find("no/such/dir/out.bmp"), std::string::npos) << r.err;
+    EXPECT_TRUE(outputs().empty());
+}
+
+// A picture named by the scene that is a device is an error at its string,
+// not a read that never ends.
+TEST_F(Cli, DeviceAsImageMapOrSkyIsAnErrorAtItsString) {
+    write("device.jts", R"(render_settings { width: 8; height: 8; background_map: "/dev/zero"; }
+cameras { perspective_camera { position: <0, 0, 5>; } }
+scene { sphere { material { image_map: "/dev/urandom"; } } }
+)");
+    test::ProgramRun r =
+        run_shell(std::string(test::memory_cap) + "timeout 60 '" JT_CLI "' device.jts");
+    EXPECT_EQ(r.code, 1) << r.err;
+    EXPECT_NE(r.err.find("device.jts:1:56: error: background_map: cannot read '/dev/zero': it is "
+                         "a device, not a file"),
+              std::string::npos)
+        << r.err;
+    EXPECT_NE(r.err.find("device.jts:3:40: error: image_map: cannot read '/dev/urandom'"),
+              std::string::npos)
+        << r.err;
     EXPECT_TRUE(outputs().empty());
 }
 

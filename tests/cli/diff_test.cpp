@@ -9,6 +9,7 @@
 #include "jtracer/bmp.hpp"
 #include "jtracer/image_file.hpp"
 #include "jtracer/png.hpp"
+#include "memory_cap.hpp"
 
 #include <gtest/gtest.h>
 
@@ -157,6 +158,46 @@ TEST_F(Diff, UnreadableImagesAreIoErrors) {
     EXPECT_NE(r.err.find("no/such/dir/heat.png"), std::string::npos) << r.err;
 }
 
+// A device never ends: read whole, /dev/zero took all the memory there was.
+// The limits keep the test from doing the same should that come back.
+TEST_F(Diff, DevicesAreRefusedAtOnce) {
+    const std::string limits = std::string(test::memory_cap) + "timeout 60 ";
+    for (const std::string args : {"/dev/zero a.png", "a.png /dev/urandom"}) {
+        ProgramRun r = run(limits + cli + " diff " + args);
+        EXPECT_EQ(r.code, 3) << args << ": " << r.err;
+        EXPECT_NE(r.err.find("it is a device, not a file"), std::string::npos)
+            << args << ": " << r.err;
+    }
+    // A pipe is read to its end.
+    ProgramRun r = run("cat a.png | " + cli + " diff /dev/stdin a.bmp");
+    EXPECT_EQ(r.code, 0) << r.err;
+}
+
+// A file cut short (an interrupted copy or download) or empty says so, in
+// words: stb's "outofdata", and "no 'BM' header" for a BMP whose header is
+// there but short, or for an empty file read as a PNG, said otherwise.
+TEST_F(Diff, DamagedImagesSayWhatIsWrong) {
+    const std::string png = test::read_file(dir / "a.png");
+    const std::string bmp = test::read_file(dir / "a.bmp");
+    test::write_file(dir / "cut.png", png.substr(0, png.size() / 2));
+    test::write_file(dir / "cut.bmp", bmp.substr(0, 2));
+    test::write_file(dir / "empty.bmp", "");
+    test::write_file(dir / "text.bmp", "scene { }\n");
+    const std::pair<const char*, const char*> cases[] = {
+        {"cut.png",
+         "'cut.png': not a readable PNG: its data ends early (the file is truncated "
+         "or damaged)"},
+        {"cut.bmp", "'cut.bmp': BMP file is truncated: 2 bytes, fewer than its headers take"},
+        {"empty.bmp", "'empty.bmp': the file is empty"},
+        {"text.bmp", "'text.bmp': not a BMP file (no 'BM' header)"},
+    };
+    for (const auto& [name, message] : cases) {
+        ProgramRun r = diff(std::string(name) + " a.png");
+        EXPECT_EQ(r.code, 3) << name << ": " << r.err;
+        EXPECT_NE(r.err.find(message), std::string::npos) << name << ": " << r.err;
+    }
+}
+
 TEST_F(Diff, UsageErrors) {
     EXPECT_EQ(diff("a.png").code, 2);
     EXPECT_EQ(diff("a.png a.bmp --threshold 256").code, 2);
@@ -166,6 +207,25 @@ TEST_F(Diff, UsageErrors) {
     EXPECT_NE(r.err.find("jtracer-cli diff --help"), std::string::npos) << r.err;
     EXPECT_EQ(diff("--help").code, 0);
     EXPECT_NE(out().find("Exit codes"), std::string::npos) << out();
+}
+
+// A file written over an image compared would lose it: a heat map over the
+// reference makes every later comparison against a heat map.
+TEST_F(Diff, RefusesToWriteOverTheImagesItCompares) {
+    write_png_file("b.png", gradient());
+    const std::string before = test::read_file(dir / "a.png");
+    for (const std::string args :
+         {"a.png b.png -o a.png", "a.png b.png -o ./b.png", "a.png b.png --junit a.png",
+          "a.png b.png --junit b.png", "a.png b.png -o h.png --junit h.png"}) {
+        ProgramRun r = diff(args);
+        EXPECT_EQ(r.code, 2) << args << ": " << r.err;
+        EXPECT_NE(r.err.find("would be replaced"), std::string::npos) << args << ": " << r.err;
+    }
+    EXPECT_EQ(test::read_file(dir / "a.png"), before);
+    EXPECT_FALSE(exists("h.png"));
+    // A device is written in place and replaces nothing: it may be both.
+    ProgramRun r = diff("a.png b.png -o /dev/null --junit /dev/null -q");
+    EXPECT_EQ(r.code, 0) << r.err;
 }
 
 const std::string scene = R"(
@@ -226,6 +286,30 @@ TEST_F(Expect, DifferingRenderWritesTheRenderAndTheDifferences) {
               0);
 }
 
+// Only a render outside the tolerance has a heat map beside it: one left by
+// an earlier failing run goes once the render matches again, or CI keeping
+// out/ would show a failure that is no more.
+TEST_F(Expect, AHeatMapOfAnEarlierRunGoesOnceTheRenderMatches) {
+    Image8 changed = reference;
+    changed.pixel(0, 0)[0] = static_cast<std::uint8_t>(changed.pixel(0, 0)[0] ^ 0x80);
+    ASSERT_TRUE(write_png(dir / "changed.png", changed));
+    ASSERT_EQ(run(cli + " -q scene.jts -o out.png --expect changed.png").code, 1);
+    ASSERT_TRUE(exists("out.diff.png"));
+    ProgramRun r = run(cli + " scene.jts -o out.png --expect ref.png");
+    EXPECT_EQ(r.code, 0) << r.err;
+    EXPECT_FALSE(exists("out.diff.png"));
+    EXPECT_NE(r.err.find("removed out.diff.png, the heat map of an earlier run"), std::string::npos)
+        << r.err;
+    // --update, and a size that differs (which draws none), remove it too.
+    ASSERT_EQ(run(cli + " -q scene.jts -o out.png --expect changed.png").code, 1);
+    EXPECT_EQ(run(cli + " -q scene.jts -o out.png --expect changed.png --update").code, 0);
+    EXPECT_FALSE(exists("out.diff.png"));
+    ASSERT_TRUE(write_png(dir / "changed.png", changed));
+    ASSERT_EQ(run(cli + " -q scene.jts -o out.png --expect changed.png").code, 1);
+    EXPECT_EQ(run(cli + " -q scene.jts --width 12 -o out.png --expect changed.png").code, 1);
+    EXPECT_FALSE(exists("out.diff.png"));
+}
+
 TEST_F(Expect, SizeMismatchMissingReferenceAndMisuse) {
     ProgramRun r = run(cli + " scene.jts --width 48 -o big.png --expect ref.png");
     EXPECT_EQ(r.code, 1);
@@ -237,6 +321,53 @@ TEST_F(Expect, SizeMismatchMissingReferenceAndMisuse) {
     EXPECT_EQ(run(cli + " scene.jts --threshold 2").code, 2) << "needs --expect";
     EXPECT_EQ(run(cli + " scene.jts --check --expect ref.png").code, 2);
     EXPECT_EQ(run(cli + " scene.jts --region 0,0,4,4 --expect ref.png").code, 2);
+}
+
+// A render written over its own reference always "matches": a CI job so
+// misconfigured would pass whatever the renderer does. The scene file, the
+// reference and the report must each stay what they are.
+TEST_F(Expect, RefusesOutputsThatWouldReplaceTheSceneOrTheReference) {
+    const std::string scene_text = test::read_file(dir / "scene.jts");
+    const std::string reference_bytes = test::read_file(dir / "ref.png");
+    struct Case {
+        std::string args, message;
+    };
+    for (const Case& c : std::vector<Case>{
+             {"scene.jts -o scene.jts", "is the scene file itself"},
+             {"scene.jts -o ./scene.jts --width 8", "is the scene file itself"},
+             {"scene.jts -o ref.png --expect ref.png", "is the reference given to --expect"},
+             {"scene.jts -o ../" + dir.filename().string() + "/ref.png --expect ref.png --update",
+              "is the reference given to --expect"},
+             {"scene.jts -o new.png --expect new.png", "is the reference given to --expect"},
+             {"scene.jts -o out.png --expect out.diff.png", "is where the heat map"},
+             {"scene.jts -o out.png --expect ref.png --junit scene.jts", "is the scene file"},
+             {"scene.jts --expect ref.png --junit ref.png", "is the reference given"},
+             {"scene.jts -o out.png --expect ref.png --junit out.png", "is the image"},
+         }) {
+        ProgramRun r = run(cli + " " + c.args);
+        EXPECT_EQ(r.code, 2) << c.args << ": " << r.err;
+        EXPECT_NE(r.err.find(c.message), std::string::npos) << c.args << ": " << r.err;
+    }
+    EXPECT_EQ(test::read_file(dir / "scene.jts"), scene_text);
+    EXPECT_EQ(test::read_file(dir / "ref.png"), reference_bytes);
+    EXPECT_FALSE(exists("new.png"));
+    EXPECT_FALSE(exists("out.png"));
+
+    // The scene's own filename is checked once the scene is read.
+    std::string self = scene;
+    self.replace(self.find("render.bmp"), 10, "self.jts");
+    test::write_file(dir / "self.jts", self);
+    ProgramRun r = run(cli + " self.jts");
+    EXPECT_EQ(r.code, 2) << r.err;
+    EXPECT_NE(r.err.find("the scene's filename 'self.jts' is the scene file itself"),
+              std::string::npos)
+        << r.err;
+    EXPECT_EQ(test::read_file(dir / "self.jts"), self);
+    r = run(cli + " scene.jts --expect render.bmp");
+    EXPECT_EQ(r.code, 2) << r.err;
+    EXPECT_NE(r.err.find("the scene's filename 'render.bmp' is the reference"), std::string::npos)
+        << r.err;
+    EXPECT_FALSE(exists("render.bmp"));
 }
 
 TEST_F(Expect, ListCamerasPrintsTheNamesOneALine) {

@@ -95,6 +95,24 @@ TEST_F(CliFrames, BadPatternsExitTwoNamingTheOption) {
     EXPECT_EQ(std::distance(fs::directory_iterator(dir), fs::directory_iterator()), 1);
 }
 
+// The message quotes the field as printf reads it, not four characters
+// whatever they are ('%4d.', '%s.p').
+TEST_F(CliFrames, ABadFieldIsQuotedAlone) {
+    const std::pair<const char*, const char*> cases[] = {
+        {"shot-%4d.png", "'%4d' is not"},
+        {"%s.png", "'%s' is not"},
+        {"shot-%010d.png", "'%010d' is not"},
+        {"shot-%ld.png", "'%ld' is not"},
+        {"shot-%", "'%' is not"},
+        {"100%.png", "'%.p' is not"},
+    };
+    for (const auto& [pattern, quoted] : cases) {
+        test::ProgramRun r = run(std::string("scene.jts --frames 3 -o '") + pattern + "'");
+        EXPECT_EQ(r.code, 2) << pattern << "\n" << r.err;
+        EXPECT_NE(r.err.find(quoted), std::string::npos) << pattern << "\n" << r.err;
+    }
+}
+
 TEST_F(CliFrames, OptionRulesExitTwoNamingTheOption) {
     const std::pair<const char*, const char*> cases[] = {
         {"--frames 3 --clock 0.5 -o 'a%d.bmp'", "--clock"},

@@ -125,7 +125,7 @@ TEST(Structure, ErrorsAreCappedAtTwentyWithAFinalNote) {
 
 TEST(Structure, PropertiesWhereOnlyBlocksGo) {
     EXPECT_EQ(brief("scene { radius: 1; }"),
-              "1:9: error: 'scene' holds only blocks (sphere, plane, cylinder, triangle, mesh, "
+              "1:9: error: 'scene' holds only blocks (sphere, plane, cylinder, triangle, mesh and "
               "point_light), not properties like 'radius'");
     EXPECT_EQ(brief("cameras { fov: 1; }"),
               "1:11: error: 'cameras' holds only blocks (perspective_camera), not properties "

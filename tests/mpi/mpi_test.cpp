@@ -93,6 +93,18 @@ TEST_F(Mpi, BadSceneIsReportedOnceAndEveryRankFails) {
     EXPECT_TRUE(outputs().empty());
 }
 
+// -o naming the scene file wrote the image over it, as jtracer-cli's did.
+TEST_F(Mpi, AnOutputThatIsTheSceneFileIsRefusedOnce) {
+    const std::string text =
+        "render_settings { width: 8; height: 8; }\n"
+        "cameras { perspective_camera { position: <0, 0, 5>; } }\n";
+    test::write_file(dir / "self.jts", text);
+    ProgramRun r = run_shell(mpirun(2) + "self.jts -o ./self.jts");
+    EXPECT_EQ(r.code, 2) << r.err;
+    EXPECT_EQ(count(r.err, "'./self.jts' is the scene file itself"), 1u) << r.err;
+    EXPECT_EQ(test::read_file(dir / "self.jts"), text);
+}
+
 // A sphere that grows with clock, over many small tiles, so that tiles handed
 // out twice at the end of one frame are still on their way when it stops.
 const std::string growing = R"(

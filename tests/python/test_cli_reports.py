@@ -147,6 +147,9 @@ def test_expect_junit_of_a_scene_that_fails_is_an_error(tmp_path, cli):
     _, suite, case = junit_case(junit)
     assert suite.get("errors") == "1" and case.find("error") is not None
     assert not (tmp_path / "out.png").exists()
+    # It says that nothing was written rather than ending in "actual ".
+    assert case.find("system-out").text.startswith(
+        f"expected {tmp_path / 'ref.png'}, actual none (no render was written)\n")
 
 
 def stamp(path):

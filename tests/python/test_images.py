@@ -94,3 +94,24 @@ def test_diff_of_equal_and_of_different_sizes():
     assert not other.same_size and other.heat_map is None
     with pytest.raises(ValueError, match="threshold"):
         jtracer.diff(a, a, threshold=256)
+
+
+def test_diff_of_neither_an_array_nor_a_path_is_a_type_error_naming_the_argument(tmp_path):
+    image = np.zeros((2, 2, 3), np.uint8)
+    jtracer.write_image(tmp_path / "z.png", image)
+    with pytest.raises(TypeError, match=r"^expected: an image \(a uint8 array\) or the path "
+                                        r"of a BMP or PNG file, not int$"):
+        jtracer.diff(3, image)
+    with pytest.raises(TypeError, match="^actual: .*, not list$"):
+        jtracer.diff(image, [[0, 0, 0]])
+    # Paths of every kind still are paths.
+    for path in (tmp_path / "z.png", str(tmp_path / "z.png"), bytes(tmp_path / "z.png")):
+        assert jtracer.diff(path, image).max_difference == 0
+
+
+def test_a_device_is_refused_at_once(tmp_path):
+    # Read whole, /dev/zero took all the memory there was.
+    with pytest.raises(OSError, match="it is a device, not a file"):
+        jtracer.read_image("/dev/zero")
+    with pytest.raises(OSError, match="it is a device, not a file"):
+        jtracer.diff("/dev/urandom", np.zeros((2, 2, 3), np.uint8))

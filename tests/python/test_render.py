@@ -1,5 +1,6 @@
 # Scene.render: jtracer-cli's bytes, its options, progress, the GIL and Ctrl+C.
 import os
+import re
 import signal
 import subprocess
 import sys
@@ -71,11 +72,22 @@ def test_bad_options_raise(showcase):
         scene.render(width=8, height=8, progress=3)
 
 
-def test_a_frame_the_cli_refuses_raises_scene_error(showcase):
-    # The checks run on the scene with the overrides, as the CLI's do.
+def test_a_size_too_large_is_the_arguments_error_or_the_scenes(showcase, tmp_path):
+    # Asked for by the arguments: their error, not one located at the
+    # scene's own width or height, which they replaced.
+    scene = jtracer.load(showcase)
+    with pytest.raises(ValueError, match=r"^width/height: a 65535 x 65535 image .*\(4 GiB"):
+        scene.render(width=65535, height=65535)
+    with pytest.raises(ValueError, match="^width: a 65535 x 65535 image"):
+        jtracer.parse(scene.text().replace("height: 450;", "height: 65535;")).render(width=65535)
+    # Written in the scene: the scene's error, at its height.
+    huge = tmp_path / "huge.jts"
+    huge.write_text(scene.text().replace("width: 800;", "width: 65535;").replace(
+        "height: 450;", "height: 65535;"))
     with pytest.raises(jtracer.SceneError, match="4 GiB") as raised:
-        jtracer.load(showcase).render(width=65535, height=65535)
+        jtracer.load(huge)
     assert raised.value.diagnostics[0].severity == "error"
+    assert raised.value.diagnostics[0].line > 0
 
 
 def test_progress_reports_rising_fractions_ending_at_one(showcase):
@@ -160,3 +172,30 @@ except KeyboardInterrupt:
     assert words and words[0] == "KeyboardInterrupt", out
     assert float(words[1]) - sent < STOP_LIMIT_SECONDS
     assert child.returncode == 0
+
+
+# The sanitizers reserve terabytes of address space up front, which no cap allows.
+@pytest.mark.skipif(os.environ.get("JT_SANITIZED") == "1",
+                    reason="an address-space cap cannot hold the sanitizers' reservations")
+def test_a_frame_larger_than_the_memory_left_raises_memory_error(showcase):
+    # In a child under a 3 GB address-space limit, as `ulimit -v` sets: the
+    # check comes before any allocation, with jtracer-cli's reason in the
+    # arguments' words, and the interpreter carries on.
+    code = f"""
+import resource, jtracer
+resource.setrlimit(resource.RLIMIT_AS, (3 << 30, 3 << 30))
+scene = jtracer.load({str(showcase)!r})
+try:
+    scene.render(width=30000, height=30000, samples=2)
+except MemoryError as error:
+    print(error)
+print(scene.render(width=16, height=9).shape)
+"""
+    done = subprocess.run([sys.executable, "-c", code], capture_output=True, text=True,
+                          timeout=300)
+    assert done.returncode == 0, done.stderr
+    lines = done.stdout.splitlines()
+    assert re.fullmatch(r"a 30000 x 30000 image with 2 samples needs about 27\.7 GiB of memory, "
+                        r"more than the [0-9.]+ GiB available; choose a smaller width/height "
+                        r"or fewer samples", lines[0]), lines
+    assert lines[1] == "(9, 16, 3)"

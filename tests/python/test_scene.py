@@ -228,3 +228,67 @@ def test_includes_are_read_from_the_paths_folder_and_diagnostics_name_their_file
     assert (first.file, first.line, first.column) == (str(tmp_path / "parts/ball.jts"), 1, 18)
     assert str(raised.value).startswith(f"{tmp_path}/parts/ball.jts:1:18: error: ")
     assert f"note: included from {main}:3:17" in str(raised.value)
+
+
+TIMED = """render_settings { width: 32; height: 16; }
+cameras { perspective_camera { position: <0, 1, 5>; look_at: <0, 0.5, 0>; aspect: 2; } }
+scene {
+    sphere { center: <2 * clock - 1, 0.5, 0>; radius: 0.5;
+             material { pigment: <1, 0.2, 0.1>; ambient: <1, 1, 1>; diffuse: <1, 1, 1>; } }
+    point_light { position: <3, 5, 4>; intensity: <1, 1, 1>; }
+}
+"""
+
+
+def test_clock_renders_the_frames_jtracer_cli_renders(tmp_path, cli):
+    path = tmp_path / "timed.jts"
+    path.write_text(TIMED)
+    # Frame 1 of 3 is at clock 0.5: the file --frames writes, --clock's bytes.
+    run(cli, path, "--frames", "3", "-o", tmp_path / "frame-%d.png", "-q")
+    frame = jtracer.read_image(tmp_path / "frame-1.png")
+    assert (jtracer.load(path, clock=0.5).render() == frame).all()
+    assert (jtracer.parse(TIMED, clock=0.5).render() == frame).all()
+    assert not (jtracer.load(path).render() == frame).all(), "the default clock is 0"
+    # The text keeps `clock` and reads back as the same scene at that clock.
+    scene = jtracer.load(path, clock=0.5)
+    assert "2 * clock - 1" in scene.text()
+    assert (jtracer.parse(scene.text(), clock=0.5).render() == frame).all()
+    # check() sees what the clock makes: a radius that only goes wrong at 1.
+    path.write_text(TIMED.replace("radius: 0.5;", "radius: 1 - clock;"))
+    assert jtracer.check(path, clock=0.5) == []
+    assert [d.severity for d in jtracer.check(path, clock=1)] == ["error"]
+    with pytest.raises(ValueError, match="clock: a finite number"):
+        jtracer.load(path, clock=float("nan"))
+    with pytest.raises(ValueError, match="clock: a finite number"):
+        jtracer.parse(TIMED, clock=float("inf"))
+
+
+SIZELESS = """cameras { perspective_camera { position: <0, 1, 5>; look_at: <0, 0.5, 0>; aspect: 2; } }
+scene { sphere { material { pigment: <1, 0, 0>; ambient: <1, 1, 1>; } } }
+"""
+
+
+def test_a_scene_without_a_size_loads_and_renders_at_the_size_asked(tmp_path, cli):
+    # As `jtracer-cli scene.jts --width 32 --height 16` renders a file without
+    # width and height: load() used to refuse it, telling to "pass --width".
+    path = tmp_path / "sizeless.jts"
+    path.write_text(SIZELESS)
+    scene = jtracer.load(path)
+    assert (scene.settings.width, scene.settings.height) == (0, 0)
+    assert scene.warnings == []
+    run(cli, path, "--width", "32", "--height", "16", "-o", tmp_path / "cli.bmp", "-q")
+    assert (scene.render(width=32, height=16) == jtracer.read_image(tmp_path / "cli.bmp")).all()
+    # Without them, render() says what to pass, in Python's words.
+    with pytest.raises(jtracer.SceneError) as raised:
+        scene.render(width=32)
+    assert [d.message for d in raised.value.diagnostics] == [
+        "the image height is 0: set 'height' in render_settings or pass height= to "
+        "Scene.render()"]
+    assert "--height" not in str(raised.value)
+    # check() still lists them, as --check does; any other error still raises.
+    assert [d.message for d in jtracer.check(path)] == [
+        "the image width is 0: set 'width' in render_settings or pass width= to Scene.render()",
+        "the image height is 0: set 'height' in render_settings or pass height= to "
+        "Scene.render()"]
+    with pytest.raises(jtracer.SceneError, match="radius"):
+        jtracer.parse(SIZELESS.replace("sphere {", "sphere { radius: -1;"))

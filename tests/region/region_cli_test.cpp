@@ -129,6 +129,23 @@ TEST_F(RegionCli, MergeRefusesGapsOverlapsAndForeignFilesWritingNothing) {
     EXPECT_EQ(usage.code, 2) << "no -o";
 }
 
+// `jtracer-merge -o parts/frame.bmp parts/*.bmp` run twice names its own
+// output as a part; -o over a part would lose it for the next merge.
+TEST_F(RegionCli, MergeRefusesAnOutputThatIsAlsoAPart) {
+    const std::string size = "--width 40 --height 30 -q --region-output ";
+    ASSERT_EQ(run_shell(cli + showcase + size + "--region 0,0,40,15 -o top.bmp").code, 0);
+    ASSERT_EQ(run_shell(cli + showcase + size + "--region 0,15,40,30 -o bottom.bmp").code, 0);
+    const std::string top = test::read_file(dir / "top.bmp");
+    ProgramRun r = run_shell(merge + "-o ./top.bmp top.bmp bottom.bmp");
+    EXPECT_EQ(r.code, 2) << r.err;
+    EXPECT_NE(r.err.find("is also a part (top.bmp)"), std::string::npos) << r.err;
+    EXPECT_EQ(test::read_file(dir / "top.bmp"), top);
+    EXPECT_EQ(run_shell(merge + "-o frame.bmp top.bmp bottom.bmp").code, 0);
+    r = run_shell(merge + "-o '' top.bmp bottom.bmp");
+    EXPECT_EQ(r.code, 2) << r.err;
+    EXPECT_NE(r.err.find("-o/--output: needs a file name"), std::string::npos) << r.err;
+}
+
 TEST_F(RegionCli, MergeRefusesPartsOfDifferentFrameSizes) {
     ASSERT_EQ(run_shell(cli + showcase +
                         "--width 40 --height 30 -q --region-output --region "

@@ -440,6 +440,15 @@ TEST(Differential, PinnedSeedsRenderAsTheReferenceSays) {
         // only by a specular term under 1e-7 of a byte either side: 22
         // pixels flagged for the side the normal turns to (cap 20).
         {154472, {}, "1.1", language_1_1},
+        // Rays refracted into a glass tetrahedron squashed to 9e-6 across (in
+        // the world; 1.9e-4 of its size in its space) met its far face 9.8e-6
+        // on, which §8.5's lift of 1.5e-7 meets without doubt; the lifted
+        // variant, 1.5e-5 off the face, started past it: 5 pixels flagged
+        // with nothing near a boundary, 6 in all (cap 4).
+        {131188, {.generated_normals = true}, "1.2-normals"},
+        // The same with a glass mesh 2.2e-6 across along the refracted rays,
+        // lifted 1.2e-6: 4 pixels flagged for it, 5 in all (cap 4).
+        {148538, {.sky = true}, "1.2-sky"},
     };
     for (const Pinned& p : pinned) {
         const SeedResult r = check_seed(p.seed, {p.generate, p.features, p.name});

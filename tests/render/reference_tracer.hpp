@@ -27,7 +27,8 @@
 //   ways: whatever edge passes within that of the ray, in any direction, lies
 //   between two of the four rays), or when secondary rays start 1e-7 of the
 //   scene's magnitude off the surface instead of on it (the offsets renderers
-//   use lie between);
+//   use lie between; off an ill-conditioned mesh, no farther than its faces
+//   count as near the start, below);
 // - a channel lies within 1e-6 of a rounding boundary of the 0..255 scale
 //   (unless it is the exact mean of 2^k samples that each clamp to 0 or 1;
 //   within 1e-9 when no sample took a light's, an image map's or a sky map's
@@ -968,6 +969,25 @@ class Tracer {
         return through;
     }
 
+    // How far the lifted variant's secondary rays leaving a hit on q (unit
+    // normal ng, at `scale`) start off it: 1e-7 of the magnitude, or, off an
+    // ill-conditioned mesh, no farther than what near_start() calls near its
+    // faces, twice ε in the world or 1e-6 of the model's size in its space,
+    // whichever is longer. There the whole 1e-7, 100 ε, may be 1e-3 of the
+    // model's size: across a sliver of the mesh (a glass tetrahedron 9e-6
+    // across where a refracted ray enters, lifted 1.5e-5) a ray would start
+    // past a far face that §8.5's lift and §13.5's walk in the model's space
+    // meet without doubt, a colour no renderer gives. Surfaces near the start
+    // that the shorter lift does not pass are flagged all the same: within
+    // 1e-6 of the magnitude (near_start()).
+    double lift_off(const Placed& q, const Vec3& ng, double scale) const {
+        const double lift = 1e-7 * scale;
+        if (!(q.own_extent > 0)) return lift;
+        const double near = std::max(
+            2e-9 * scale, kTriangleTie * q.own_extent / max_abs(q.world_to_object.linear * ng));
+        return std::min(lift, near);
+    }
+
     // docs/language.md §8.5. `lifted`: secondary rays start 1e-7 of the magnitude off
     // the surface and meet every surface, their own included.
     Colour trace(const Vec3& o, const Vec3& d, int depth, const Origin& from, double magnitude,
@@ -1021,12 +1041,13 @@ class Tracer {
         const double scale = std::max({max_abs(o), max_abs(p), hit.t});
         const Vec3 object_point = q.world_to_object.linear * p + q.world_to_object.translation;
         const Origin here{hit.placed, root.part, object_point, lifted, 1e-9 * scale};
-        const Vec3 start = lifted ? p + 1e-7 * scale * ng : p;
+        const double lift = lifted ? lift_off(q, ng, scale) : 0.0;
+        const Vec3 start = lifted ? p + lift * ng : p;
 
         Colour c = scene_.settings.ambient_light * m.finish->ambient * pigment;
         for (const PointLight& light : scene_.lights) {
             if (light.radius > 0) {
-                c += disk_light(light, p, n, ng, v, m, pigment, start, here, scale, lifted, flags,
+                c += disk_light(light, p, n, ng, v, m, pigment, start, here, scale, lift, flags,
                                 weight);
                 continue;
             }
@@ -1075,7 +1096,7 @@ class Tracer {
             const double k = 1 - eta * eta * (1 - cosi * cosi);
             const Vec3 t = glm::normalize(k < 0 ? d + 2 * cosi * n
                                                 : eta * d + (eta * cosi - std::sqrt(k)) * n);
-            const Vec3 from = lifted ? p + (glm::dot(t, ng) > 0 ? 1e-7 : -1e-7) * scale * ng : p;
+            const Vec3 from = lifted ? p + (glm::dot(t, ng) > 0 ? lift : -lift) * ng : p;
             c += m.finish->transmission * trace(from, t, depth + 1, here, scale, lifted, flags,
                                                 weight * m.finish->transmission);
         }
@@ -1097,10 +1118,11 @@ class Tracer {
     // docs/language.md §14.1: the diffuse and specular terms of a light of radius
     // r > 0 at hit point p, its intensity scaled by the share of the points of
     // its disk that p sees. `start`: where the point light's shadow ray would
-    // start (p, or p lifted along ng).
+    // start (p, or p lifted along ng); `lift`: how far the lifted variant's
+    // rays start off the surface (lift_off()), 0 for the others.
     Colour disk_light(const PointLight& light, const Vec3& p, const Vec3& n, const Vec3& ng,
                       const Vec3& v, const Material& m, const Colour& pigment, const Vec3& start,
-                      const Origin& here, double scale, bool lifted, Flags& flags,
+                      const Origin& here, double scale, double lift, Flags& flags,
                       double weight) const {
         const Vec3 to = light.position - p;
         const double dist = std::sqrt(to.x * to.x + to.y * to.y + to.z * to.z);
@@ -1136,7 +1158,7 @@ class Tracer {
                 if (horizon <= 0) continue;
                 // A smooth mesh's point below its own face leaves through it.
                 const double side = glm::dot(ng, lk) < 0 ? -1.0 : 1.0;
-                const Vec3 from = lifted ? p + side * 1e-7 * scale * ng : p;
+                const Vec3 from = lift > 0 ? p + side * lift * ng : p;
                 const Vec3 to_point = q - from;
                 const double distance = glm::length(to_point);
                 sum += light_through(from, to_point / distance, distance, here, scale, flags);

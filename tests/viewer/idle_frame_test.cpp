@@ -7,6 +7,7 @@
 #include "common/counting_new.hpp"
 #include "common/scratch_dir.hpp"
 #include "model/app_actions.hpp"
+#include "model/document_edits.hpp"
 #include "model/model_frame.hpp"
 #include "model/picking.hpp"
 #include "viewer/viewer_test_files.hpp"
@@ -123,6 +124,74 @@ TEST_F(IdleFrame, AFrameWithComputedAndInheritedFieldsAndTheSliderAllocatesNothi
     frame_until_the_outline_is_ready(viewer, state);
     ASSERT_NE(find_item(viewer.ui_items(), "= r"), nullptr) << state.message;
     ASSERT_NE(find_item(viewer.ui_items(), "clock"), nullptr) << "the slider";
+    for (int i = 0; i < 5; ++i) {
+        const Allocated a = allocated_by([&] { viewer.frame(state); });
+        EXPECT_EQ(a.count, 0) << a.bytes << " bytes in frame " << i;
+    }
+}
+
+// After a panel edit, the scene differs from its text's: the document's
+// text is then the base with the edit written in, a copy of the whole file,
+// made when something needs it (a save, the text editor), not every frame.
+TEST_F(IdleFrame, AFrameAfterAPanelEditAllocatesNothing) {
+    edit_scene(state, [](Scene& s) { s.settings.width = 32; });
+    ASSERT_TRUE(viewer.run_until_complete(state, test::kTimeout, 3)) << state.message;
+    for (int i = 0; i < 5; ++i) {
+        const Allocated a = allocated_by([&] { viewer.frame(state); });
+        EXPECT_EQ(a.count, 0) << a.bytes << " bytes in frame " << i;
+    }
+}
+
+// The reload choice with its differences shown, over an unsaved panel edit:
+// the document's text is the base with the edit written in (a copy of the
+// whole file), made for the diff once, not every frame.
+TEST_F(IdleFrame, AFrameShowingTheReloadDifferencesAllocatesNothing) {
+    edit_scene(state, [](Scene& s) { s.settings.width = 32; });
+    viewer.frame(state);
+    const std::filesystem::path file = state.doc.path;
+    std::ofstream(file, std::ios::binary | std::ios::app) << "# changed on disk\n";
+    ASSERT_TRUE(viewer.run_until_loaded(state));
+    ASSERT_TRUE(state.files.pending_reload);
+    ASSERT_TRUE(viewer.run_until_complete(state, test::kTimeout, 3)) << state.message;
+    ASSERT_TRUE(viewer.click(state, "Show differences"));
+    for (int i = 0; i < 3; ++i) viewer.frame(state);
+    ASSERT_NE(find_item(viewer.ui_items(), "differences"), nullptr);
+    EXPECT_EQ(viewer.reload_bar().diff.removed, 1) << "width: 32, mine";
+    EXPECT_EQ(viewer.reload_bar().diff.added, 2) << "width: 64 and the comment, theirs";
+    for (int i = 0; i < 5; ++i) {
+        const Allocated a = allocated_by([&] { viewer.frame(state); });
+        EXPECT_EQ(a.count, 0) << a.bytes << " bytes in frame " << i;
+    }
+}
+
+// The file read again with an error on its last line: the Diagnostics panel
+// opens and quotes the line. Its text is made when the diagnostics change,
+// not every frame (finding the line is a walk through the whole file).
+TEST_F(IdleFrame, AFrameWithAnErrorListedAllocatesNothing) {
+    std::ofstream(state.doc.path, std::ios::binary | std::ios::app) << "sphere { radius: 1 x; }\n";
+    ASSERT_TRUE(viewer.run_until_loaded(state));
+    ASSERT_TRUE(state.doc.load_failed);
+    for (int i = 0; i < 3; ++i) viewer.frame(state);
+    ASSERT_NE(find_item(viewer.ui_items(), "Showing the last good scene until the file is fixed."),
+              nullptr)
+        << "the Diagnostics panel is open";
+    for (int i = 0; i < 5; ++i) {
+        const Allocated a = allocated_by([&] { viewer.frame(state); });
+        EXPECT_EQ(a.count, 0) << a.bytes << " bytes in frame " << i;
+    }
+}
+
+// The text editor open on a text with an error: its lines, the error
+// marked on its line and listed under the text, drawn without allocating.
+TEST_F(IdleFrame, AFrameWithTheTextEditorShowingAnErrorAllocatesNothing) {
+    viewer.text_editor().open = true;
+    std::string text = state.doc.text;
+    text.replace(text.find("radius: 0.04;"), 13, "radius: 0.04 x;");
+    type_text(state, text);
+    state.check.checker.wait();
+    for (int i = 0; i < 5; ++i) viewer.frame(state);
+    ASSERT_TRUE(state.doc.draft);
+    ASSERT_TRUE(has_errors(state.doc.diagnostics));
     for (int i = 0; i < 5; ++i) {
         const Allocated a = allocated_by([&] { viewer.frame(state); });
         EXPECT_EQ(a.count, 0) << a.bytes << " bytes in frame " << i;

@@ -208,5 +208,54 @@ TEST(KeyTaps, AMouseButtonKeepsItsPlaceAmongTheKeys) {
     EXPECT_EQ(passed.size(), 3u);
 }
 
+// The wheel keeps its place among the keys and buttons: a turn made after
+// Ctrl (a zoom) is not seen before Ctrl is, nor Ctrl let go after a turn
+// seen with the turn; turns at one place add up in a frame, and one at
+// another place waits for the frame that sees the mouse there.
+TEST(KeyTaps, TheWheelKeepsItsPlaceAmongTheKeysAndButtons) {
+    constexpr int press = 1, release = 0, ctrl = 341, a = 'A', left = 0;
+    KeyTaps taps(press, release);
+    std::vector<KeyEvent> passed;
+    const KeyTaps::Sink sink = [&](const KeyEvent& e) { passed.push_back(e); };
+    // A click, then Ctrl and a turn, in one frame: Ctrl waits for the frame
+    // after the click, and the turn with it.
+    taps.event(mouse_button_event(left, press, 10, 20), sink);
+    taps.event({ctrl, 0, press, 0}, sink);
+    taps.event(wheel_event(0, 1, 10, 20), sink);
+    ASSERT_EQ(passed.size(), 1u) << "the turn waits behind Ctrl";
+    taps.frame_done(sink);
+    ASSERT_EQ(passed.size(), 3u);
+    EXPECT_EQ(passed[1].key, ctrl);
+    EXPECT_TRUE(passed[2].wheel);
+    EXPECT_EQ(passed[2].scroll_y, 1.0f);
+    EXPECT_EQ(passed[2].x, 10.0f);
+    // Ctrl let go and A pressed after a turn: the frame of the turn sees Ctrl down.
+    taps.event({ctrl, 0, release, 0}, sink);
+    taps.event({a, 0, press, 0}, sink);
+    EXPECT_EQ(passed.size(), 3u);
+    taps.frame_done(sink);
+    ASSERT_EQ(passed.size(), 5u);
+    EXPECT_EQ(passed[3].key, ctrl);
+    EXPECT_EQ(passed[4].key, a);
+    taps.event({a, 0, release, 0}, sink);
+    taps.frame_done(sink);
+    ASSERT_EQ(passed.size(), 6u);
+    taps.frame_done(sink);
+    passed.clear();
+
+    // Three turns at one place in a frame add up; one at another place waits.
+    taps.event(wheel_event(0, 1, 30, 40), sink);
+    taps.event(wheel_event(0, 1, 30, 40), sink);
+    taps.event(wheel_event(0, -1, 31, 40), sink);
+    taps.event(wheel_event(0, 1, 30, 40), sink);
+    ASSERT_EQ(passed.size(), 2u);
+    taps.frame_done(sink);
+    ASSERT_EQ(passed.size(), 3u);
+    EXPECT_EQ(passed[2].x, 31.0f);
+    taps.frame_done(sink);
+    ASSERT_EQ(passed.size(), 4u) << "the last turn, back at the first place";
+    EXPECT_FALSE(taps.holding());
+}
+
 }  // namespace
 }  // namespace jt::view

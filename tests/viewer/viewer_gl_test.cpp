@@ -407,6 +407,35 @@ TEST_F(ViewerGl, OpeningAMissingFileExplainsAndKeepsWhatIsOpen) {
     EXPECT_EQ(state.render.display, good);
 }
 
+// The Diagnostics panel after a failed open of another file: its errors,
+// under a line saying the open failed and which file is still shown, not
+// that the last good scene shows until the file is fixed.
+TEST_F(ViewerGl, AFailedOpenOfAnotherFileSaysWhichFileIsShown) {
+    const fs::path file = scene_copy("failed-open");
+    const fs::path other = file.parent_path() / "other.jts";
+    write_file(other, "render_settings {\n    width: 64\n}\n");
+    open_scene(state, file);
+    ASSERT_TRUE(viewer.run_until_complete(state, kTimeout));
+    open_scene(state, other);
+    for (int i = 0; i < 3; ++i) viewer.frame(state);
+    const std::string said = "Could not open other.jts: still showing scene.jts.";
+    EXPECT_NE(find_item(viewer.ui_items(), said), nullptr) << said;
+    for (const UiItem& item : viewer.ui_items())
+        EXPECT_EQ(item.label.find("last good"), std::string::npos) << item.label;
+    const auto listed = [&](const std::string& start) {
+        for (const UiItem& item : viewer.ui_items())
+            if (item.label.rfind(start, 0) == 0) return true;
+        return false;
+    };
+    EXPECT_TRUE(listed("other.jts:2:14: error: ")) << "the other file's error, quoted";
+    // An edit of the file shown: its own diagnostics again (none), listed so.
+    edit_scene(state, [](Scene& s) { s.settings.width = 60; });
+    for (int i = 0; i < 3; ++i) viewer.frame(state);
+    EXPECT_FALSE(listed("other.jts:")) << "the panel follows the diagnostics";
+    EXPECT_EQ(find_item(viewer.ui_items(), said), nullptr);
+    fs::remove_all(file.parent_path());
+}
+
 // A scale component dragged to 0 in the transform panel leaves the primitive
 // out by the core's one rule, even with a rotation after it (whose rounding
 // once kept it in as speckles): the viewer shows the scene without it.

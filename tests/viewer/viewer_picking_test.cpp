@@ -7,6 +7,7 @@
 #include "common/files.hpp"
 #include "jtracer/render_job.hpp"
 #include "model/app_actions.hpp"
+#include "model/document_edits.hpp"
 #include "model/picking.hpp"
 #include "viewer/viewer_fixture.hpp"
 
@@ -100,6 +101,23 @@ TEST_F(ViewerPicking, TheInspectorBoxKeepsClearOfThePickedObject) {
 
 // Zoomed to 4 and panned with the mouse as a user would: the image is larger
 // than the window's image area, so the pan moves it.
+// While the scene as edited is not rendered (its image too large, say) and
+// its objects are no longer those of the image shown, the pixel inspector
+// has no frame to pick in: it says so, never "background" over an object.
+TEST_F(ViewerPicking, TheInspectorNeverCallsAPixelOfAnEarlierSceneBackground) {
+    const WindowPoint p = window_point({32.5, 20.5});  // the sphere
+    viewer.move_mouse(state, p.x, p.y);
+    EXPECT_NE(state.view.inspected.find("sphere 2"), std::string::npos) << state.view.inspected;
+    edit_scene(state, [](Scene& s) { s.settings.width = s.settings.height = 5000; });
+    ASSERT_TRUE(delete_block(state, BlockRef{BlockKind::primitive, 1})) << state.message;
+    for (int i = 0; i < 3; ++i) viewer.frame(state);
+    ASSERT_NE(state.render.render_note.find("too large"), std::string::npos)
+        << state.render.render_note;
+    viewer.move_mouse(state, p.x + 1, p.y);
+    EXPECT_EQ(state.view.inspected.find("background"), std::string::npos) << state.view.inspected;
+    EXPECT_NE(state.view.inspected.find("earlier"), std::string::npos) << state.view.inspected;
+}
+
 class ViewerZoomedPicking : public ViewerPicking {
   protected:
     void SetUp() override {
@@ -179,6 +197,26 @@ TEST_F(ViewerZoomedPicking, TheInspectorReportsThePixelUnderTheMouse) {
         viewer.move_mouse(state, viewer.image_area().x0 - 5, (r.y0 + r.y1) * 0.5f);
         EXPECT_TRUE(state.view.inspected.empty()) << state.view.inspected;
     }
+}
+
+// The wheel through the window's event queue (key_taps.hpp), turned fast
+// within one slow frame after a click, with Ctrl pressed between: Ctrl
+// waits for the frame after the click, and the turns with it, so that they
+// zoom the image rather than dolly the camera.
+TEST_F(ViewerZoomedPicking, CtrlWheelTurnedWithinAFrameAfterAClickZooms) {
+    const WindowPoint p = zoomed_point(120, 100);
+    const float zoom = state.view.image_view.zoom;
+    const std::vector<KeyEvent> events = {
+        mouse_button_event(0, kKeyPress, p.x, p.y),
+        mouse_button_event(0, kKeyRelease, p.x, p.y),
+        KeyEvent{keys::left_ctrl, 0, kKeyPress, 0},
+        wheel_event(0.0f, 1.0f, p.x, p.y),
+        wheel_event(0.0f, 1.0f, p.x, p.y),
+        KeyEvent{keys::left_ctrl, 0, kKeyRelease, 0x0002},
+    };
+    viewer.key_events(state, events, 1.0, 50.0);
+    EXPECT_NEAR(state.view.image_view.zoom, zoom * 1.25f * 1.25f, 1e-4f);
+    EXPECT_FALSE(state.view.free_camera_active) << "Ctrl+wheel zooms the image, not the camera";
 }
 
 TEST_F(ViewerZoomedPicking, CtrlWheelZoomsAboutTheMouseAndFitShowsItAll) {

@@ -72,6 +72,22 @@ TEST_F(ViewerReloadBar, TheChoiceIsAboveTheImageAndShowsTheDifferences) {
         if (line.kind == DiffLine::Kind::added && line.text.find("fov: 55;") != std::string::npos)
             fov = true;
     EXPECT_TRUE(fov);
+    // The differences follow the document as it is edited meanwhile: an
+    // edit of the panels, its undo, and text typed.
+    edit_scene(state, [](Scene& s) { s.settings.height = 40; });
+    viewer.frame(state);
+    EXPECT_EQ(viewer.reload_bar().diff.removed, 3) << "height: 40 too";
+    undo(state);
+    viewer.frame(state);
+    EXPECT_EQ(viewer.reload_bar().diff.removed, 2) << "undone";
+    std::string typed = document_text(state.doc);
+    typed.replace(typed.find("recurse_depth: 2;"), 17, "recurse_depth: 3;");
+    type_text(state, typed);
+    viewer.frame(state);
+    EXPECT_EQ(viewer.reload_bar().diff.removed, 3) << "recurse_depth: 3 typed";
+    undo(state);
+    viewer.frame(state);
+    EXPECT_EQ(viewer.reload_bar().diff.removed, 2) << "the typing undone";
 
     ASSERT_TRUE(viewer.click(state, "Reload, re-apply my edits"));
     EXPECT_FALSE(state.files.pending_reload);

@@ -314,6 +314,8 @@ TEST_F(ViewerTextEditor, TheViewFollowsTheCursorSidewaysAndLongErrorsWrap) {
     const UiItem* item = find_item(viewer.ui_items(), label);
     ASSERT_NE(item, nullptr) << label;
     EXPECT_FALSE(item->clipped) << label;
+    window = find_item(viewer.ui_items(), "text editor");  // of this frame's items
+    ASSERT_NE(window, nullptr);
     EXPECT_LE(item->rect.x1, window->rect.x1);
 }
 

@@ -58,10 +58,17 @@ long long run_queue_wait_ns() {
     return n == 2 ? waiting : 0;
 }
 
-// What the GLFW backend does with a key event or a character, and the
-// window's loop with a mouse button (main.cpp: the mouse where it changed).
+// What the GLFW backend does with a key event, a character or a wheel turn,
+// and the window's loop with a mouse button (main.cpp: the mouse where it
+// changed or turned).
 void key_to_imgui(const KeyEvent& e) {
     ImGuiIO& io = ImGui::GetIO();
+    if (e.wheel) {
+        io.MouseWheelH += e.scroll_x;
+        io.MouseWheel += e.scroll_y;
+        io.MousePos = ImVec2(e.x, e.y);
+        return;
+    }
     if (e.mouse_button >= 0) {
         if (e.mouse_button >= ImGuiMouseButton_COUNT) return;
         io.MouseDown[e.mouse_button] = e.action == kKeyPress;

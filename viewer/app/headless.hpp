@@ -26,8 +26,8 @@ class HeadlessViewer {
     void frame(AppState& state);
     // Holds `key` down for one frame (with the modifiers), then releases it.
     void press_key(AppState& state, int key, bool ctrl = false, bool shift = false);
-    // Key events, typed characters and mouse buttons (mouse_button_event)
-    // as the window's callbacks get them,
+    // Key events, typed characters, mouse buttons (mouse_button_event) and
+    // wheel turns (wheel_event) as the window's callbacks get them,
     // one every `event_ms`, while frames are drawn one every `frame_ms`
     // (simulated time: events that come during a frame reach the next one),
     // through the window's KeyTaps; then frames until none waits.

@@ -28,20 +28,28 @@ constexpr int kFirstMouseButton = 1000;
 
 // A key repeat (GLFW_REPEAT) changes nothing ImGui reads: it always fits.
 bool KeyTaps::fits_this_frame(const KeyEvent& event) const {
+    if (event.wheel) return !mouse_placed_ || (event.x == mouse_x_ && event.y == mouse_y_);
     if (event.mouse_button >= 0)
-        return !typed_ && !holds(changed_, kFirstMouseButton + event.mouse_button);
-    if (event.codepoint != 0) return !editing_key_pressed_ && !mouse_changed_;
+        return !typed_ && !wheeled_ && !holds(changed_, kFirstMouseButton + event.mouse_button);
+    if (event.codepoint != 0) return !editing_key_pressed_ && !mouse_changed_ && !wheeled_;
     const bool changes_key = event.action == press_ || event.action == release_;
     if (!changes_key) return true;
-    if (mouse_changed_) return false;
+    if (mouse_changed_ || wheeled_) return false;
     if (is_modifier(event.key) && key_pressed_) return false;
     return !holds(changed_, event.key);
 }
 
 void KeyTaps::pass(const KeyEvent& event, const Sink& sink) {
-    if (event.mouse_button >= 0) {
-        changed_.push_back(kFirstMouseButton + event.mouse_button);
-        mouse_changed_ = true;
+    if (event.wheel || event.mouse_button >= 0) {
+        if (event.wheel) {
+            wheeled_ = true;
+        } else {
+            changed_.push_back(kFirstMouseButton + event.mouse_button);
+            mouse_changed_ = true;
+        }
+        mouse_placed_ = true;
+        mouse_x_ = event.x;
+        mouse_y_ = event.y;
         sink(event);
         return;
     }
@@ -76,6 +84,8 @@ void KeyTaps::frame_done(const Sink& sink) {
     key_pressed_ = false;
     typed_ = false;
     mouse_changed_ = false;
+    wheeled_ = false;
+    mouse_placed_ = false;
     pass_what_fits(sink);
 }
 

@@ -27,6 +27,15 @@
 //     changed before it (the click moves the focus first).
 // The frame that takes a button's change sees the mouse where it was then
 // (KeyEvent::x, y), so that a click held back lands where it was made.
+// The mouse wheel goes through the queue too: turned past Ctrl held back, it
+// dollied the camera instead of zooming the image, and turned before Ctrl was
+// let go, it zoomed after the release. ImGui reads one sum of the wheel a
+// frame, at one mouse position, with the keys as they are then, so
+//   - a wheel turn comes in no frame in which a button changed, or the
+//     wheel turned, at another place before it (the frame sees the mouse
+//     where it was turned), and
+//   - no key, character or button comes in a frame in which the wheel
+//     turned before it (the turn is seen with the keys of its time).
 
 #include <deque>
 #include <functional>
@@ -35,13 +44,17 @@
 namespace jt::view {
 
 // A key event (key, scancode, action, mods as GLFW passes them), when
-// `codepoint` is not 0 a typed character, and when `mouse_button` is not -1
-// a mouse button's press or release (`action`) with the mouse at (x, y).
+// `codepoint` is not 0 a typed character, when `mouse_button` is not -1
+// a mouse button's press or release (`action`) with the mouse at (x, y), and
+// when `wheel` a turn of the mouse wheel by (scroll_x, scroll_y) with the
+// mouse at (x, y).
 struct KeyEvent {
     int key = 0, scancode = 0, action = 0, mods = 0;
     unsigned codepoint = 0;
     int mouse_button = -1;
     float x = 0.0f, y = 0.0f;
+    bool wheel = false;
+    float scroll_x = 0.0f, scroll_y = 0.0f;
 };
 
 inline KeyEvent typed_character(unsigned codepoint) {
@@ -54,6 +67,16 @@ inline KeyEvent mouse_button_event(int button, int action, float x, float y) {
     KeyEvent e;
     e.mouse_button = button;
     e.action = action;
+    e.x = x;
+    e.y = y;
+    return e;
+}
+
+inline KeyEvent wheel_event(float scroll_x, float scroll_y, float x, float y) {
+    KeyEvent e;
+    e.wheel = true;
+    e.scroll_x = scroll_x;
+    e.scroll_y = scroll_y;
     e.x = x;
     e.y = y;
     return e;
@@ -85,6 +108,11 @@ class KeyTaps {
     bool key_pressed_ = false;          // a key other than a modifier, since the last frame
     bool typed_ = false;                // a key other than a modifier, or a character, since then
     bool mouse_changed_ = false;        // a mouse button, since the last frame
+    bool wheeled_ = false;              // the wheel turned, since the last frame
+    // Where the mouse is for the frame to come: a button changed or the wheel
+    // turned there since the last frame.
+    bool mouse_placed_ = false;
+    float mouse_x_ = 0.0f, mouse_y_ = 0.0f;
     std::deque<KeyEvent> held_;
 };
 

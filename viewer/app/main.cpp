@@ -78,7 +78,7 @@ KeyTaps key_taps{GLFW_PRESS, GLFW_RELEASE};
 
 // The mouse buttons as KeyTaps passes them on. The GLFW backend reads the
 // buttons' state when a frame starts; these replace it, with the mouse
-// where a button changed (held_mouse_to_imgui).
+// where a button changed or the wheel turned (held_mouse_to_imgui).
 struct HeldMouse {
     bool down[ImGuiMouseButton_COUNT] = {};
     bool pressed[ImGuiMouseButton_COUNT] = {};  // since the last frame: seen down once at least
@@ -89,7 +89,11 @@ struct HeldMouse {
 HeldMouse held_mouse;
 
 void key_to_imgui(GLFWwindow* window, const KeyEvent& e) {
-    if (e.mouse_button >= 0) {
+    if (e.wheel) {
+        ImGui_ImplGlfw_ScrollCallback(window, e.scroll_x, e.scroll_y);
+        held_mouse.moved = true;
+        held_mouse.at = ImVec2(e.x, e.y);
+    } else if (e.mouse_button >= 0) {
         if (e.mouse_button >= ImGuiMouseButton_COUNT) return;
         held_mouse.down[e.mouse_button] = e.action == GLFW_PRESS;
         if (e.action == GLFW_PRESS) held_mouse.pressed[e.mouse_button] = true;
@@ -103,7 +107,7 @@ void key_to_imgui(GLFWwindow* window, const KeyEvent& e) {
 }
 
 // After ImGui_ImplGlfw_NewFrame: the buttons as passed on, and in the frame
-// that takes a button's change the mouse where that change was made.
+// that takes a button's change or a wheel turn the mouse where it was made.
 void held_mouse_to_imgui() {
     ImGuiIO& io = ImGui::GetIO();
     for (int b = 0; b < ImGuiMouseButton_COUNT; ++b) {
@@ -132,6 +136,12 @@ void on_cursor(GLFWwindow*, double x, double y) {
 
 void on_mouse_button(GLFWwindow* window, int button, int action, int) {
     key_taps.event(mouse_button_event(button, action, held_mouse.cursor.x, held_mouse.cursor.y),
+                   [window](const KeyEvent& e) { key_to_imgui(window, e); });
+}
+
+void on_scroll(GLFWwindow* window, double x, double y) {
+    key_taps.event(wheel_event(static_cast<float>(x), static_cast<float>(y), held_mouse.cursor.x,
+                               held_mouse.cursor.y),
                    [window](const KeyEvent& e) { key_to_imgui(window, e); });
 }
 
@@ -203,6 +213,7 @@ int run_window(const Arguments& args) {
     glfwSetCharCallback(window.handle(), on_char);
     glfwSetMouseButtonCallback(window.handle(), on_mouse_button);
     glfwSetCursorPosCallback(window.handle(), on_cursor);
+    glfwSetScrollCallback(window.handle(), on_scroll);
     {
         double x = 0, y = 0;
         glfwGetCursorPos(window.handle(), &x, &y);

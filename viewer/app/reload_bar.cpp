@@ -9,7 +9,7 @@
 #include <imgui.h>
 
 #include <algorithm>
-#include <cstdio>
+#include <string_view>
 
 namespace jt::view {
 
@@ -39,11 +39,14 @@ void choices(AppState& state, ReloadBarState& bar, bool unchanged) {
 }
 
 void differences(const AppState& state, ReloadBarState& bar, float max_height) {
-    const std::string mine = document_text(state.doc);
+    const SceneDocument& doc = state.doc;
     const std::string& theirs = state.files.pending_reload->text;
-    if (mine != bar.mine || theirs != bar.theirs) {
-        bar.diff = diff_lines(mine, theirs);
-        bar.mine = mine;
+    if (bar.revision != doc.revision || bar.generation != doc.file_generation ||
+        bar.draft != doc.draft || bar.theirs != theirs) {
+        bar.diff = diff_lines(document_text(doc), theirs);
+        bar.revision = doc.revision;
+        bar.generation = doc.file_generation;
+        bar.draft = doc.draft;
         bar.theirs = theirs;
     }
     const TextDiff& diff = bar.diff;
@@ -63,14 +66,15 @@ void differences(const AppState& state, ReloadBarState& bar, float max_height) {
             const DiffLine& line = diff.lines[static_cast<std::size_t>(i)];
             const bool removed = line.kind == DiffLine::Kind::removed;
             const bool added = line.kind == DiffLine::Kind::added;
-            char number[16];
-            std::snprintf(number, sizeof number, "%5d %c ", removed ? line.old_line : line.new_line,
-                          removed ? '-'
-                          : added ? '+'
-                                  : ' ');
-            const std::string text = number + line.text;
             if (removed || added) ImGui::PushStyleColor(ImGuiCol_Text, removed ? kRemoved : kAdded);
-            ImGui::TextUnformatted(text.c_str());
+            // The number, then the line beside it: neither copied (a frame
+            // showing the differences allocates nothing).
+            ImGui::Text("%5d %c ", removed ? line.old_line : line.new_line,
+                        removed ? '-'
+                        : added ? '+'
+                                : ' ');
+            ImGui::SameLine(0.0f, 0.0f);
+            ImGui::TextUnformatted(line.text.data(), line.text.data() + line.text.size());
             if (removed || added) ImGui::PopStyleColor();
         }
     pop_monospace_font();
@@ -91,15 +95,18 @@ float reload_bar(AppState& state, ReloadBarState& bar, const ScreenRect& area) {
     ImGui::Begin("##reload_bar", nullptr,
                  ImGuiWindowFlags_NoDecoration | ImGuiWindowFlags_NoMove |
                      ImGuiWindowFlags_NoSavedSettings | ImGuiWindowFlags_AlwaysAutoResize);
-    const std::string name = state.doc.path.filename().string();
+    // The file's name as a view into its path: drawn every frame, it is not copied.
+    const std::string& path = state.doc.path.native();
+    const std::string_view name = std::string_view(path).substr(path.rfind('/') + 1);
+    const int name_size = static_cast<int>(name.size());
     const bool unchanged = state.files.pending_reload->text == state.doc.disk_text;
     ImGui::PushStyleColor(ImGuiCol_Text, kWarning);
     if (unchanged)
-        ImGui::TextWrapped("%s is unchanged on disk. Reloading it would drop your unsaved edits.",
-                           name.c_str());
+        ImGui::TextWrapped("%.*s is unchanged on disk. Reloading it would drop your unsaved edits.",
+                           name_size, name.data());
     else
-        ImGui::TextWrapped("%s changed on disk%s, and you have unsaved edits.", name.c_str(),
-                           state.files.pending_reload->ok ? "" : " (it has errors)");
+        ImGui::TextWrapped("%.*s changed on disk%s, and you have unsaved edits.", name_size,
+                           name.data(), state.files.pending_reload->ok ? "" : " (it has errors)");
     ImGui::PopStyleColor();
     choices(state, bar, unchanged);
     if (state.files.pending_reload && !unchanged && !state.files.reapply_problem.empty())

@@ -8,14 +8,22 @@
 #include "model/image_layout.hpp"
 #include "model/text_diff.hpp"
 
+#include <cstdint>
+#include <optional>
 #include <string>
 
 namespace jt::view {
 
 struct ReloadBarState {
     bool show_differences = false;
-    // The texts `diff` was made from (remade only when either changes).
-    std::string mine, theirs;
+    // What `diff` was made from, remade only when one changes: the document
+    // at a revision and file generation with its draft, and the file's
+    // newer text. Not the document's text itself: making it writes the panel
+    // edits into the base text, a copy of the whole file every frame.
+    std::optional<std::uint64_t> revision;
+    std::uint64_t generation = 0;
+    std::optional<std::string> draft;
+    std::string theirs;
     TextDiff diff;
 };
 

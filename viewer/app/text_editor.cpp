@@ -206,7 +206,10 @@ void error_list(AppState& state, TextEditorState& ed, float height) {
                               in ? ":" : "", d.pos.line, d.pos.column, error ? "error" : "warning");
             } else
                 std::snprintf(where, sizeof where, "%s: ", error ? "error" : "warning");
-            const std::string label = std::string(where) + d.message;
+            // Into a string kept from frame to frame: an idle frame allocates nothing.
+            std::string& label = ed.label;
+            label.assign(where);
+            label += d.message;
             // Wrapped, so that a long message is read whole; a click goes to its place.
             ImGui::PushStyleColor(ImGuiCol_Text, error ? kErrorText : IM_COL32(230, 190, 80, 255));
             ImGui::PushTextWrapPos(0.0f);
@@ -485,7 +488,9 @@ void text_editor(AppState& state, TextEditorState& ed, float x0, float y0, float
             const float end_x =
                 ImGui::CalcTextSize(content.data(), content.data() + content.size()).x;
             const float x = left + gutter + pad_x + end_x + 2.0f * line_h;
-            const std::string note = (error ? "<- " : "<- warning: ") + d.message;
+            std::string& note = ed.label;  // kept from frame to frame, as the list's
+            note.assign(error ? "<- " : "<- warning: ");
+            note += d.message;
             draw->AddText(ImVec2(x, y), error ? kErrorText : IM_COL32(230, 190, 80, 255),
                           note.c_str());
             // The column, under the line.

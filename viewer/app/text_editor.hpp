@@ -51,6 +51,9 @@ struct TextEditorState {
     // and the height of a line, in window units.
     float line1_x = 0.0f, line1_y = 0.0f, line_height = 0.0f;
     float cursor_x = 0.0f;  // the cursor's x, while the widget is active
+    // An error's line as drawn, its storage kept so that a frame like the
+    // last one allocates nothing.
+    std::string label;
 };
 
 // Texts larger than this are not put in the widget (it keeps a copy per character).

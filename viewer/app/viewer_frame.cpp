@@ -62,7 +62,7 @@ float sidebar(AppState& state, FrameState& frame, float window_width, float heig
     objects_panel(state);
     lights_panel(state);
     if (draft) ImGui::EndDisabled();
-    diagnostics_panel(state);
+    diagnostics_panel(state, frame.diagnostics);
     help_panel();
     ImGui::PopItemWidth();
     const float drawn = ImGui::GetWindowWidth();

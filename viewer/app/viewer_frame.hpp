@@ -3,6 +3,7 @@
 // whatever GL context is current, between ImGuiLayer::begin_frame and
 // end_frame, so a GLFW window and an OSMesa buffer show the same thing.
 
+#include "app/panels/panels.hpp"
 #include "app/presenter.hpp"
 #include "app/reload_bar.hpp"
 #include "app/selection_overlay.hpp"
@@ -33,6 +34,7 @@ struct FrameState {
     UiItems ui_items;
     TextEditorState text_editor;
     ReloadBarState reload_bar;
+    DiagnosticsText diagnostics;
     ScreenRect image_area;  // where the last frame could show the image
     ScreenRect image_rect;  // where it put it (place_image; may reach past image_area)
 };

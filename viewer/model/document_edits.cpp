@@ -288,6 +288,7 @@ void take_in(AppState& state, CheckedText checked) {
     doc.diagnostics = checked.diagnostics;
     doc.diagnostics_source = checked.text;
     doc.diagnostics_path = doc.path;
+    note_diagnostics_changed(doc);
     state.check.draft_reads.clear();
     if (!checked.ok) {
         for (const SourceFile& file : checked.parsed.source.files)
@@ -307,6 +308,7 @@ void take_in(AppState& state, CheckedText checked) {
         return;
     }
     const Scene before = doc.scene;
+    const std::uint64_t revision_before = doc.revision;
     if (checked.clock != doc.options.clock) {
         // The clock moved while the text was checked: its values are taken at this one.
         ParseResult now = parse_document_text(doc, checked.text);
@@ -318,6 +320,8 @@ void take_in(AppState& state, CheckedText checked) {
     keep_camera_selection(state.view, state.doc.scene, before);
     note_command_edit(state.history, state.doc);
     state.check.checked_revision = doc.revision;  // the diagnostics describe it already
+    // A typo fixed back: the image shown is of this very scene.
+    if (doc.scene == before) keep_render_for(state.render, revision_before, doc.revision);
     state.message = "The text parses: the image follows it";
 }
 

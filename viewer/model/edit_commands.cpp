@@ -28,6 +28,7 @@ void check_edits(CheckState& check, SceneDocument& doc, const FileState& files) 
     doc.diagnostics.insert(doc.diagnostics.end(), more.begin(), more.end());
     doc.diagnostics_source = doc.text;
     doc.diagnostics_path = doc.path;
+    note_diagnostics_changed(doc);
     check.checked_revision = doc.revision;
 }
 
@@ -68,15 +69,20 @@ void step_history(AppState& state, Step step, const char* done) {
         cancel_object_drag(state);
         return;
     }
+    std::optional<Scene> before;
+    const std::uint64_t revision_before = state.doc.revision;
     if (auto version = step(version_of(state.doc))) {
-        const Scene before = state.doc.scene;
+        before = state.doc.scene;
         restore_version(state.doc, *version);
-        keep_camera_selection(state.view, state.doc.scene, before);
+        keep_camera_selection(state.view, state.doc.scene, *before);
         state.message = done;
     }
     recheck_draft(state);
     state.history.edit_base.reset();
     note_command_edit(state.history, state.doc);
+    // Typing with errors undone (or redone): the image shown is of this very scene.
+    if (before && state.doc.scene == *before)
+        keep_render_for(state.render, revision_before, state.doc.revision);
 }
 
 }  // namespace

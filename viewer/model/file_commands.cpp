@@ -8,6 +8,7 @@
 #include "model/image_files.hpp"
 
 #include <algorithm>
+#include <chrono>
 
 namespace jt::view {
 
@@ -66,6 +67,10 @@ void finish_open(AppState& state, const std::filesystem::path& path, LoadAttempt
         state.files.recent.add(path);
         state.fields.open_path_input = path.string();
         state.message = "Opened " + path.string();
+    } else if (!first && state.doc.path != path) {
+        state.message = "Could not open " + path.filename().string() +
+                        (has_located(state.doc.diagnostics) ? ": it has errors" : "") +
+                        " (see Diagnostics); still showing " + state.doc.path.filename().string();
     } else if (document_is_blank(state.doc)) {
         state.message = path.filename().string() +
                         " is empty: Start a scene in the File panel, or type one in the Text "
@@ -73,6 +78,7 @@ void finish_open(AppState& state, const std::filesystem::path& path, LoadAttempt
     } else if (state.doc.diagnostics_source.empty() && !has_located(state.doc.diagnostics)) {
         state.message = "Could not open " + path.string() + ": see Diagnostics";
     } else {
+        // The file shown, read again: its last good scene stays.
         state.message = path.filename().string() + " has errors: see Diagnostics" +
                         (state.doc.loaded && !first ? " (still showing the last good scene)" : "");
     }
@@ -115,8 +121,15 @@ void finish_reload(AppState& state, LoadAttempt attempt) {
     }
     if (!has_unsaved_edits(state.doc)) {
         const std::vector<Camera> before = state.doc.scene.cameras;
+        // The scene shown (no edit: its text's own), shared, not copied.
+        const std::shared_ptr<const Scene> shown = state.doc.original;
+        const std::uint64_t revision = state.doc.revision;
         accept_load(state.doc, state.doc.path, std::move(attempt));
         after_scene_replaced(state, before);
+        // An error made and mended in another editor, or a file saved
+        // unchanged: the image shown is of this very scene.
+        if (*state.doc.original == *shown)
+            keep_render_for(state.render, revision, state.doc.revision);
         state.message = "Reloaded " + name;
         return;
     }
@@ -131,6 +144,7 @@ void finish_reload(AppState& state, LoadAttempt attempt) {
         state.doc.load_failed = !attempt.ok;
         state.doc.diagnostics = attempt.diagnostics;
         state.doc.diagnostics_source = attempt.text;
+        note_diagnostics_changed(state.doc);
     }
     const bool broken = !attempt.ok;
     state.files.pending_reload = std::move(attempt);
@@ -216,6 +230,23 @@ bool assets_changed(AppState& state) {
 
 }  // namespace
 
+namespace {
+
+// A file that the document's text includes changed, and that text is not the
+// file's (an `include` typed, not saved yet): reading the file again would not
+// read the changed one. The text, with the panels' edits written in, is
+// checked again as a draft is (take_checked_text), and taken in once it
+// parses; with errors it shows them and keeps the last good scene.
+void read_typed_includes_again(AppState& state) {
+    SceneDocument& doc = state.doc;
+    if (!doc.draft) doc.draft = document_text(doc);
+    state.check.checker.check(++state.check.draft_id, *doc.draft, doc.path,
+                              std::chrono::milliseconds(0), doc.options);
+    state.message = "A file the text includes changed on disk: reading the text again";
+}
+
+}  // namespace
+
 bool reload_if_changed(AppState& state) {
     // A file the draft's check could not read, or read, changed (it was
     // created, say, after `include "new.jts";` was typed): the draft is
@@ -232,7 +263,12 @@ bool reload_if_changed(AppState& state) {
         state.files.include_watcher.watch(state.doc.included_files);
         included = !state.files.include_watcher.poll().empty();
     }
-    if (!state.files.watcher.poll() && !included) return assets;
+    const bool file_changed = state.files.watcher.poll();
+    if (included && !file_changed && state.doc.loaded && state.doc.text != state.doc.disk_text) {
+        read_typed_includes_again(state);
+        return true;
+    }
+    if (!file_changed && !included) return assets;
     reload_scene(state);
     return true;
 }

@@ -16,7 +16,11 @@ std::optional<PixelReport> inspect_pixel(AppState& state, int x, int y) {
     const std::uint8_t* p = image.pixel(x, y);
     report.rgb = {p[0], p[1], p[2]};
     report.earlier_render = !state.render.display_complete && state.render.passes_shown == 0;
-    if (!report.earlier_render) report.hit = primitive_at(state, x, y);
+    if (report.earlier_render) return report;
+    if (const std::shared_ptr<const PreparedFrame> frame = shown_frame(state))
+        report.hit = pick_primitive(*frame, x, y);
+    else
+        report.earlier_scene = true;
     return report;
 }
 
@@ -27,6 +31,7 @@ std::string describe(const PixelReport& r, const Scene& scene) {
                   r.rgb[2] / 255.0);
     std::string line = text;
     if (r.earlier_render) return line + "(rendering: the pixel is of the render before)";
+    if (r.earlier_scene) return line + "(the image is of an earlier scene, not rendered since)";
     if (!r.hit || static_cast<std::size_t>(r.hit->primitive) >= scene.primitives.size())
         return line + "background";
     const Primitive& p = scene.primitives[static_cast<std::size_t>(r.hit->primitive)];

@@ -161,6 +161,13 @@ void update_render(AppState& state) {
     if (finished && state.render.started) state.render.display_complete = true;
 }
 
+void keep_render_for(RenderState& render, std::uint64_t from, std::uint64_t to) {
+    if (render.started && render.started->scene_revision == from)
+        render.started->scene_revision = to;
+    if (render.rejected && render.rejected->scene_revision == from)
+        render.rejected->scene_revision = to;
+}
+
 std::optional<PixelRect> take_display_changes(RenderState& render) {
     return std::exchange(render.display_changed, std::nullopt);
 }

@@ -20,6 +20,11 @@ void update_render(AppState& state);
 // The rectangle of state.render.display changed since the last call, or nothing:
 // what the frame code sends to the texture.
 std::optional<PixelRect> take_display_changes(RenderState& render);
+// The scene of revision `from` is, unchanged, the scene of revision `to` (a
+// text taken in, or an undo, that reads as the scene shown): a render
+// started for `from`, or refused for it, answers `to` as well, so that it
+// goes on rather than starting again from its first preview.
+void keep_render_for(RenderState& render, std::uint64_t from, std::uint64_t to);
 // The render that update_render would start now, or nothing (with the reason
 // in `note`) when there is nothing to render.
 std::optional<RenderRequest> render_request(const AppState& state, std::string& note);

@@ -1,5 +1,7 @@
 #include "model/scene_document.hpp"
 
+#include <atomic>
+
 #include "jtracer/parallel_chunks.hpp"
 #include "jtracer/parser.hpp"
 #include "jtracer/scene_file.hpp"
@@ -70,19 +72,45 @@ ParseOptions document_options(const SceneDocument& doc, const SourceEditResult& 
     return options;
 }
 
+void note_diagnostics_changed(SceneDocument& doc) {
+    static std::atomic<std::uint64_t> generations{0};
+    doc.diagnostics_generation = ++generations;
+}
+
 ParseResult parse_document_text(const SceneDocument& doc, std::string_view text) {
     return parse_scene(text, document_options(doc));
 }
 
+namespace {
+
+// The files `source`'s text read or tried to read through `include`: watched
+// from now on (reload_if_changed).
+void note_included_files(SceneDocument& doc, const SceneSource& source) {
+    doc.included_files.clear();
+    for (const SourceFile& file : source.files) doc.included_files.push_back(file.path);
+    for (const std::string& file : source.unread_includes) doc.included_files.push_back(file);
+}
+
+}  // namespace
+
 void accept_load(SceneDocument& doc, const std::filesystem::path& path, LoadAttempt attempt) {
+    if (!attempt.ok && doc.loaded && path != doc.path) {
+        // Another file did not open: the document, the files it reads and
+        // their watches stay as they are. The diagnostics are the other
+        // file's until the document's are checked again (an edit, a reload).
+        doc.diagnostics = std::move(attempt.diagnostics);
+        doc.diagnostics_path = path;
+        doc.diagnostics_files = std::move(attempt.source.files);
+        doc.diagnostics_source = std::move(attempt.text);
+        note_diagnostics_changed(doc);
+        return;
+    }
     ++doc.file_generation;
+    note_diagnostics_changed(doc);
     doc.diagnostics = std::move(attempt.diagnostics);
     doc.diagnostics_path = path;
     doc.diagnostics_files = attempt.source.files;
-    doc.included_files.clear();
-    for (const SourceFile& file : attempt.source.files) doc.included_files.push_back(file.path);
-    for (const std::string& file : attempt.source.unread_includes)
-        doc.included_files.push_back(file);
+    note_included_files(doc, attempt.source);
     doc.load_failed = !attempt.ok;
     doc.file_unread = !attempt.read;
     doc.file_deleted = attempt.missing;
@@ -177,6 +205,8 @@ void take_text(SceneDocument& doc, std::string text, ParseResult parsed) {
     doc.text = std::move(text);
     doc.original = std::make_shared<const Scene>(std::move(parsed.scene));
     doc.source = std::move(parsed.source);
+    // A text typed or undone to reads its own includes, saved or not.
+    note_included_files(doc, doc.source);
     doc.parse_diagnostics = std::move(parsed.diagnostics);
     doc.scene = *doc.original;
     doc.draft.reset();
@@ -219,6 +249,10 @@ bool scene_edited(const SceneDocument& doc) {
     if (!doc.edited_at || doc.edited_at->first != doc.revision)
         doc.edited_at = {doc.revision, doc.scene != *doc.original};
     return doc.edited_at->second;
+}
+
+bool diagnostics_of_another_file(const SceneDocument& doc) {
+    return doc.loaded && !doc.diagnostics_path.empty() && doc.diagnostics_path != doc.path;
 }
 
 bool has_unsaved_edits(const SceneDocument& doc) {
@@ -320,6 +354,7 @@ Expected<std::vector<std::string>> save_scene_copy(SceneDocument& doc,
     doc.parse_diagnostics = std::move(check.diagnostics);
     doc.diagnostics_source = doc.text;
     doc.diagnostics_files = doc.source.files;
+    note_diagnostics_changed(doc);
     doc.load_failed = false;
     ++doc.file_generation;
     return names;
@@ -331,6 +366,10 @@ bool document_is_blank(const SceneDocument& doc) {
     // Asked every frame: a held text is looked at where it is, not copied.
     if (const std::string* held = held_text(doc))
         return held->find_first_not_of(blank) == std::string::npos;
+    // Panel edits write values into the base text or add them, never leaving
+    // blank a text that was not: only an edited blank text is written out to
+    // look (every frame a copy of the whole file, after any panel edit).
+    if (doc.text.find_first_not_of(blank) != std::string::npos) return false;
     return document_text(doc).find_first_not_of(blank) == std::string::npos;
 }
 

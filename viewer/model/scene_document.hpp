@@ -42,9 +42,15 @@ struct SceneDocument {
     std::string diagnostics_source;             // the text they point into (to quote lines)
     std::filesystem::path diagnostics_path;     // the file they are about
     std::vector<SourceFile> diagnostics_files;  // the included files they may be in
-    // Every file the latest load read or tried to read through `include`:
-    // watched like the scene file, so that a change, or a missing file
-    // appearing, reloads (docs/language.md §15.6).
+    // Moved by every change of the four above (note_diagnostics_changed), so
+    // that what formats them (quoting a line walks the text) does so once a
+    // change, not every frame. No two documents share a value but 0 (none set).
+    std::uint64_t diagnostics_generation = 0;
+    // Every file the latest load read or tried to read through `include`, or
+    // the text taken in since (typed, undone to) read: watched like the scene
+    // file, so that a change, or a missing file appearing, reloads
+    // (docs/language.md §15.6), or, for a text not saved yet, reads the text
+    // again (reload_if_changed).
     std::vector<std::filesystem::path> included_files;
     // Counts the loads taken in (good or not) and the saves: either may
     // change the texts read (the included files' too) without a new revision.
@@ -80,6 +86,9 @@ struct SceneDocument {
 inline void note_scene_changed(SceneDocument& doc) {
     ++doc.revision;
 }
+
+// Every change of doc.diagnostics or the texts they quote is announced with this.
+void note_diagnostics_changed(SceneDocument& doc);
 
 // What undo brings back: the document's base text, its scene as edited, its draft.
 struct DocumentVersion {
@@ -160,7 +169,9 @@ ParseOptions document_options(const SceneDocument& doc, const SourceEditResult& 
 ParseResult parse_document_text(const SceneDocument& doc, std::string_view text);
 
 // Takes `attempt` into `doc`: on success the scene is replaced, on failure
-// the last good scene stays and only the diagnostics change.
+// the last good scene stays and only the diagnostics change. A failed open
+// of a file other than the document's changes nothing else: the document is
+// not that file's last good scene (diagnostics_of_another_file).
 void accept_load(SceneDocument& doc, const std::filesystem::path& path, LoadAttempt attempt);
 
 // The open file was read again and has errors: the document shows its text
@@ -177,6 +188,10 @@ std::string_view short_file_name(const SceneDocument& doc, std::string_view name
 
 // "file:line:col: error: message" lines, as the CLI prints them.
 std::string format_diagnostics(const SceneDocument& doc);
+
+// The diagnostics are of another file than the document's, one that failed
+// to open while this one stayed.
+bool diagnostics_of_another_file(const SceneDocument& doc);
 
 bool has_unsaved_edits(const SceneDocument& doc);
 // The scene differs from the one its text holds (panel edits not yet saved).

@@ -207,6 +207,63 @@ TEST(DocumentEdits, ATextErrorKeepsTheImageAndIsListedAtItsLineTheFixRendersAgai
     EXPECT_EQ(file_text(path), text);
 }
 
+// A typo fixed back: the text parses to the scene the image shows (the
+// previous text, or one that differs in a comment only), and the render
+// goes on rather than starting again from the first preview. With a panel
+// edit made before the typing too: the text holds it written in.
+TEST(DocumentEdits, ATypoFixedBackToTheShownSceneKeepsTheRender) {
+    const std::filesystem::path path = scene_copy("document_edits_typo_back");
+    AppState state(test_config());
+    open_scene(state, path);
+    ModelLoop loop;
+    edit_scene(state, [](Scene& s) { s.settings.width = 60; });
+    ASSERT_TRUE(loop.run_until_complete(state));
+    const Image8 good = state.render.display;
+    const Scene shown = state.doc.scene;
+    const std::uint64_t jobs = state.render.renderer.jobs_started();
+
+    const std::string before = document_text(state.doc);
+    for (const std::string& fixed : {before, before + "# a comment\n"}) {
+        std::string broken = fixed;
+        broken.replace(broken.find("radius: 1;"), 10, "radius: 1 x;");
+        type_text(state, broken);
+        settle_text(state);
+        ASSERT_TRUE(state.doc.draft) << "a text with errors stays a draft";
+        loop.frame(state);
+        type_text(state, fixed);
+        settle_text(state);
+        ASSERT_FALSE(state.doc.draft) << format_diagnostics(state.doc);
+        EXPECT_TRUE(state.doc.scene == shown);
+        for (int i = 0; i < 3; ++i) loop.frame(state);
+        EXPECT_EQ(state.render.renderer.jobs_started(), jobs) << "no render started again";
+        EXPECT_TRUE(render_complete(state.render));
+        EXPECT_EQ(state.render.display, good);
+        EXPECT_EQ(document_text(state.doc), fixed);
+        EXPECT_FALSE(scene_edited(state.doc)) << "the width is in the text now";
+        EXPECT_TRUE(has_unsaved_edits(state.doc));
+    }
+    // Typing with errors undone: the same.
+    std::string broken = document_text(state.doc);
+    broken.replace(broken.find("radius: 1;"), 10, "radius: 1 x;");
+    type_text(state, broken);
+    settle_text(state);
+    ASSERT_TRUE(state.doc.draft);
+    loop.frame(state);
+    undo(state);
+    EXPECT_FALSE(state.doc.draft);
+    for (int i = 0; i < 3; ++i) loop.frame(state);
+    EXPECT_EQ(state.render.renderer.jobs_started(), jobs) << "undone: no render started again";
+    EXPECT_TRUE(render_complete(state.render));
+    // A fix to another scene renders it.
+    std::string bigger = before;
+    bigger.replace(bigger.find("radius: 1;"), 10, "radius: 1.4;");
+    type_text(state, bigger);
+    settle_text(state);
+    ASSERT_TRUE(loop.run_until_complete(state));
+    EXPECT_GT(state.render.renderer.jobs_started(), jobs);
+    EXPECT_NE(state.render.display, good);
+}
+
 // The selection is an index: a Delete button in a panel must not leave it on
 // the object that moved into the deleted one's place, nor on the one after
 // the selected object when an object before it goes.

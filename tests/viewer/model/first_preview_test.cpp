@@ -166,7 +166,8 @@ TEST(FirstPreview, TheFrameThatTakesAnOpenInShowsItsFirstPass) {
     config.first_pass_wait = std::chrono::milliseconds(0);
     config.opened_first_pass_wait = std::chrono::minutes(1);  // long enough for any machine
     AppState state(config);
-    request_open(state, kScene);
+    const std::filesystem::path file = scene_copy("jt_first_preview_reload");
+    request_open(state, file);
     state.files.loader.wait();
     model_frame(state);  // takes the load in and starts the render
     ASSERT_TRUE(state.doc.loaded) << state.message;
@@ -176,7 +177,15 @@ TEST(FirstPreview, TheFrameThatTakesAnOpenInShowsItsFirstPass) {
     EXPECT_GE(state.render.passes_shown, 1) << "fetched in the frame that took the load in";
 
     // A reload is not prepared ahead, nor is an edit: they wait as before.
-    reload_scene(state);
+    // (The file changes: a reload of the scene shown would keep its render.)
+    std::string text;
+    {
+        std::ifstream in(file, std::ios::binary);
+        text.assign(std::istreambuf_iterator<char>(in), std::istreambuf_iterator<char>());
+    }
+    text.replace(text.find("recurse_depth: 2;"), 17, "recurse_depth: 3;");
+    std::ofstream(file, std::ios::binary) << text;
+    model_frame(state);  // the change is seen: a reload
     state.files.loader.wait();
     model_frame(state);
     ASSERT_EQ(state.render.renderer.jobs_started(), 2u) << state.render.render_note;
@@ -185,6 +194,7 @@ TEST(FirstPreview, TheFrameThatTakesAnOpenInShowsItsFirstPass) {
     model_frame(state);
     ASSERT_EQ(state.render.renderer.jobs_started(), 3u) << state.render.render_note;
     EXPECT_FALSE(state.render.renderer.renders_adopted());
+    std::filesystem::remove_all(file.parent_path());
 }
 
 TEST(FirstPreview, AnOpenedSceneIsNotValidatedAgainBeforeItsRender) {

@@ -138,5 +138,62 @@ TEST_F(ViewerIncludes, AFileATypedIncludeNamesAppearingChecksTheTextAgain) {
     EXPECT_EQ(radius_of_first(state), 2.0);
 }
 
+// An `include` typed in the text editor and taken in (it parses), not yet
+// saved: the file it names is watched like a saved one's. A change of it is
+// read into the typed text (the file on disk holds no include to reload),
+// panel edits kept; a change with errors shows them and keeps the image, and
+// once saved, a change reloads the file as it is.
+TEST_F(ViewerIncludes, AnUnsavedTypedIncludeIsWatched) {
+    const std::string before =
+        "render_settings { width: 32; height: 24; }\n"
+        "cameras { perspective_camera { aspect: 1.3333333333333333; } }\n"
+        "scene { point_light { position: <3, 5, 4>; } }\n";
+    save_as_editor(main, before);
+    save_as_editor(ball, "sphere { center: <0, 0, -5>; radius: 1; }\n");
+    open_scene(state, main);
+    ASSERT_TRUE(state.doc.loaded) << format_diagnostics(state.doc);
+    const auto settle = [&] {
+        for (int i = 0; i < 2000 && (state.check.checker.in_flight() || i < 3); ++i) {
+            model.frame(state);
+            std::this_thread::sleep_for(std::chrono::milliseconds(2));
+        }
+        model.frame(state);
+    };
+    type_text(state, kMain);
+    settle();
+    ASSERT_FALSE(state.doc.draft.has_value()) << format_diagnostics(state.doc);
+    ASSERT_EQ(state.doc.scene.primitives.size(), 1u);
+    EXPECT_EQ(radius_of_first(state), 1.0);
+    edit_scene(state, [](Scene& s) { s.lights[0].position.x = 7; });
+    settle();
+
+    save_as_editor(ball, "sphere { center: <0, 0, -5>; radius: 2; }\n");
+    settle();
+    EXPECT_EQ(radius_of_first(state), 2.0) << state.message;
+    EXPECT_EQ(state.doc.scene.lights[0].position.x, 7.0) << "the panel edit stays";
+    EXPECT_FALSE(state.files.pending_reload) << "the file on disk did not change";
+    EXPECT_TRUE(has_unsaved_edits(state.doc));
+    EXPECT_EQ(read_file(main), before);
+
+    save_as_editor(ball, "sphere { center: <0, 0, -5>; radius: -2; }\n");
+    settle();
+    EXPECT_TRUE(has_errors(state.doc.diagnostics)) << "the included file's error shows";
+    EXPECT_EQ(radius_of_first(state), 2.0) << "the last good scene stays";
+    save_as_editor(ball, "sphere { center: <0, 0, -5>; radius: 3; }\n");
+    settle();
+    EXPECT_FALSE(has_errors(state.doc.diagnostics)) << format_diagnostics(state.doc);
+    EXPECT_FALSE(state.doc.draft.has_value());
+    EXPECT_EQ(radius_of_first(state), 3.0);
+
+    ASSERT_TRUE(save_scene(state)) << state.message;
+    EXPECT_FALSE(has_unsaved_edits(state.doc));
+    save_as_editor(ball, "sphere { center: <0, 0, -5>; radius: 4; }\n");
+    for (int i = 0; i < 3; ++i) model.frame(state);
+    ASSERT_TRUE(model.run_until_loaded(state));
+    EXPECT_EQ(radius_of_first(state), 4.0) << state.message;
+    EXPECT_EQ(state.doc.scene.lights[0].position.x, 7.0);
+    EXPECT_FALSE(has_unsaved_edits(state.doc));
+}
+
 }  // namespace
 }  // namespace jt::view

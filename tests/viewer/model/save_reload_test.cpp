@@ -132,6 +132,61 @@ TEST_F(ViewerFiles, OpeningAnotherFileClearsTheSelection) {
     fs::remove_all(other.parent_path());
 }
 
+// An open of another file that fails leaves the file shown as it was: its
+// scene, the files it reads and their watches, its own checks. The
+// diagnostics are the other file's, and the message says which file is
+// still shown, not that a last good scene waits for a fix.
+TEST_F(ViewerFiles, AFailedOpenOfAnotherFileLeavesTheShownFileAsItIs) {
+    const fs::path other = file.parent_path() / "other.jts";
+    write_file(other, "render_settings {\n    width: 64\n}\n");
+    const Scene shown = state.doc.scene;
+    open_scene(state, other);
+    model.frame(state);
+    EXPECT_EQ(state.doc.path, file);
+    EXPECT_TRUE(state.doc.scene == shown);
+    EXPECT_FALSE(state.doc.load_failed) << "the file shown is fine";
+    EXPECT_NE(state.message.find("Could not open other.jts"), std::string::npos) << state.message;
+    EXPECT_NE(state.message.find("still showing " + file.filename().string()), std::string::npos)
+        << state.message;
+    EXPECT_EQ(state.message.find("last good"), std::string::npos) << state.message;
+    EXPECT_NE(format_diagnostics(state.doc).find("other.jts:2:"), std::string::npos)
+        << format_diagnostics(state.doc);
+
+    // An edit of the file shown is checked as ever: the diagnostics are its own again.
+    edit_pigment();
+    model.frame(state);
+    EXPECT_EQ(format_diagnostics(state.doc), "");
+    undo(state);
+    model.frame(state);
+    // And a change of it on disk reloads it.
+    open_scene(state, other);
+    model.frame(state);
+    they_save(kTheirs);
+    EXPECT_EQ(state.doc.scene.lights.at(0).intensity, Colour(0.5)) << state.message;
+    EXPECT_FALSE(state.doc.load_failed);
+    EXPECT_EQ(format_diagnostics(state.doc), "");
+}
+
+// An error made in another editor and mended there, the file back as it
+// was: the reload reads the scene the image shows, and its render goes on
+// rather than starting again from the first preview. A change renders.
+TEST_F(ViewerFiles, AFileMendedBackToTheShownSceneKeepsTheRender) {
+    const std::uint64_t jobs = state.render.renderer.jobs_started();
+    const Image8 good = state.render.display;
+    they_save(replaced(kOriginal, "height: 48;", "height: 48"));
+    ASSERT_TRUE(state.doc.load_failed);
+    model.frame(state);
+    they_save(kOriginal + "# mended\n");
+    EXPECT_FALSE(state.doc.load_failed);
+    for (int i = 0; i < 3; ++i) model.frame(state);
+    EXPECT_EQ(state.render.renderer.jobs_started(), jobs) << "no render started again";
+    EXPECT_TRUE(render_complete(state.render));
+    EXPECT_EQ(state.render.display, good);
+    they_save(kTheirs);
+    ASSERT_TRUE(model.run_until_complete(state, kTimeout));
+    EXPECT_GT(state.render.renderer.jobs_started(), jobs) << "a changed scene renders";
+}
+
 TEST_F(ViewerFiles, ReloadCanDropTheEdits) {
     edit_pigment();
     they_save(kTheirs);

@@ -4,8 +4,11 @@
 
 #include "model/app_state.hpp"
 
+#include <cstddef>
+#include <cstdint>
 #include <optional>
 #include <string>
+#include <vector>
 
 namespace jt::view {
 
@@ -14,7 +17,20 @@ void camera_panel(AppState& state);
 void settings_panel(AppState& state);
 void objects_panel(AppState& state);  // every primitive: shape, material, transform
 void lights_panel(AppState& state);
-void diagnostics_panel(AppState& state);
+// The Diagnostics panel's text: each diagnostic as the CLI prints it, its
+// first line and the source line quoted under it, made once per change of
+// the document's diagnostics (SceneDocument::diagnostics_generation).
+struct DiagnosticsText {
+    std::uint64_t generation = 0;
+    std::size_t count = 0;  // of the diagnostics it was made from
+    struct Entry {
+        bool error = false;
+        std::string message;  // "file:line:col: error: ..."
+        std::string quote;    // the source line and a caret under the column, or empty
+    };
+    std::vector<Entry> entries;
+};
+void diagnostics_panel(AppState& state, DiagnosticsText& text);
 void help_panel();
 // The time slider and play button, when the scene uses `clock` (drawn in
 // the image's toolbar, which stays in view while the panels scroll).

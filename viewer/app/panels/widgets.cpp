@@ -9,6 +9,9 @@
 #include <algorithm>
 #include <cmath>
 #include <cstdio>
+#include <cstdlib>
+#include <cstring>
+#include <iterator>
 
 namespace jt::view {
 
@@ -58,7 +61,25 @@ bool outside(double v, double min, double max) {
     return !std::isfinite(v) || (max > min && !(v >= min && v <= max));
 }
 
+// Of two formats number_format gives, the one with more digits.
+const char* more_digits(const char* a, const char* b) {
+    return std::strcmp(a, b) >= 0 ? a : b;  // "%.4g" < "%.9g"
+}
+
 }  // namespace
+
+const char* number_format(float value, double min, double max) {
+    static constexpr const char* formats[] = {"%.4g", "%.5g", "%.6g", "%.7g", "%.8g", "%.9g"};
+    if (!(max > min) || !std::isfinite(value)) return formats[0];
+    const bool inside = !outside(value, min, max);
+    for (const char* format : formats) {
+        char shown[64];
+        std::snprintf(shown, sizeof shown, format, static_cast<double>(value));
+        const float read = std::strtof(shown, nullptr);
+        if (inside ? !outside(read, min, max) : read == value) return format;
+    }
+    return formats[std::size(formats) - 1];  // nine digits read back as the float itself
+}
 
 // Drags stop at the bounds; typed values are not clamped by ImGui (no
 // AlwaysClamp), so one past them is refused with the reason, never moved.
@@ -67,7 +88,7 @@ bool edit_number(const char* label, double& value, float speed, double min, doub
     const ImGuiID id = ImGui::GetID(label);  // the id the widget takes
     float f = static_cast<float>(value);
     const bool changed = ImGui::DragFloat(label, &f, speed, static_cast<float>(min),
-                                          static_cast<float>(max), "%.4g");
+                                          static_cast<float>(max), number_format(f, min, max));
     note_item(label, false);
     const double next = changed ? from_widget(f) : value;
     const bool refused = changed && outside(next, min, max);
@@ -83,8 +104,11 @@ bool edit_vector(const char* label, Vec3& value, float speed, double min, double
     const ImGuiID id = ImGui::GetID(label);
     float f[3] = {static_cast<float>(value.x), static_cast<float>(value.y),
                   static_cast<float>(value.z)};
+    const char* format =
+        more_digits(number_format(f[0], min, max),
+                    more_digits(number_format(f[1], min, max), number_format(f[2], min, max)));
     const bool changed = ImGui::DragFloat3(label, f, speed, static_cast<float>(min),
-                                           static_cast<float>(max), "%.4g");
+                                           static_cast<float>(max), format);
     note_item(label, false);
     Vec3 next = value;
     bool refused = false;

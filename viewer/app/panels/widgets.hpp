@@ -24,6 +24,12 @@ bool edit_number(const char* label, double& value, float speed, double min = 0.0
 bool edit_vector(const char* label, Vec3& value, float speed = 0.05f, double min = 0.0,
                  double max = 0.0, const std::function<std::string()>& why = {});
 bool edit_colour(const char* label, Colour& value);
+// The printf format a number's field shows `value` with: "%.4g", or more
+// digits (up to "%.9g") where four would show a value inside [min, max] as
+// one outside it (179.98 in a fov field held below 180 shows "179.98", not
+// "180"); a value outside [min, max] (a bound moved inside an open one)
+// shows as itself. A literal: nothing is allocated.
+const char* number_format(float value, double min, double max);
 bool edit_int(const char* label, int& value, int min, int max,
               const std::function<std::string()>& why = {});
 // A colour that may be unset (a material's checker): a checkbox sets it (to

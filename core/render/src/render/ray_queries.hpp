@@ -64,8 +64,8 @@ bool occluded(const Geometry& geometry, const Vec3& origin, const Vec3& directio
 // and the walk ends at the ray's origin, so a long list often serves rays
 // that walk only its head; even past a few dozen shapes, a walk that ends on
 // the first blocker beats Embree's walk with a callback per box it enters
-// (docs/benchmarks.md §2.5: 128 against 16 took 2% off lattice, sphereflake
-// and tree, 0.5% off spheres_5761).
+// (docs/benchmarks.md §2.5: 128 against 16 took 2-3% off lattice and
+// sphereflake, 1% off tree and spheres_5761).
 inline constexpr std::size_t max_light_walk = 128;
 
 // A shadow ray: any surface at some t in (t_min, t_max) blocks it.

@@ -90,8 +90,11 @@ std::vector<std::uint8_t> encode_bmp(const Image8& image) {
 }
 
 Expected<Image8> decode_bmp(std::span<const std::uint8_t> bytes) {
-    if (bytes.size() < header_size || bytes[0] != 'B' || bytes[1] != 'M')
+    if (bytes.size() < 2 || bytes[0] != 'B' || bytes[1] != 'M')
         return Error{"not a BMP file (no 'BM' header)"};
+    if (bytes.size() < header_size)
+        return Error{"BMP file is truncated: " + std::to_string(bytes.size()) +
+                     " bytes, fewer than its headers take"};
     const std::uint8_t* h = bytes.data();
     std::uint32_t offset = get32(h + 10);
     std::uint32_t info_size = get32(h + 14);

@@ -1,11 +1,40 @@
 #include "io/file_bytes.hpp"
 
+#include <fcntl.h>
+#include <sys/stat.h>
+#include <unistd.h>
+
 #include <cerrno>
-#include <cstdio>
 #include <cstring>
-#include <memory>
 
 namespace jt {
+
+namespace {
+
+// A pipe has no size to check in advance: past this it is refused rather than
+// read on into all the memory there is. 1 GiB, as for scene files, holds any
+// image a pipe reasonably carries (a 65535 x 4096 BMP is 805 MB).
+constexpr std::size_t kMaxStreamBytes = std::size_t{1} << 30;
+
+class FileDescriptor {
+  public:
+    explicit FileDescriptor(int fd) : fd_(fd) {}
+    ~FileDescriptor() {
+        if (fd_ >= 0) ::close(fd_);
+    }
+    FileDescriptor(const FileDescriptor&) = delete;
+    FileDescriptor& operator=(const FileDescriptor&) = delete;
+    int get() const { return fd_; }
+
+  private:
+    int fd_;
+};
+
+Error read_error(const std::filesystem::path& path, const std::string& reason) {
+    return Error{"cannot read " + file_message(path, reason)};
+}
+
+}  // namespace
 
 std::string file_message(const std::filesystem::path& path, const std::string& message) {
     std::string s = "'";
@@ -16,19 +45,31 @@ std::string file_message(const std::filesystem::path& path, const std::string& m
 }
 
 Expected<std::vector<std::uint8_t>> read_file_bytes(const std::filesystem::path& path) {
+    FileDescriptor file(::open(path.c_str(), O_RDONLY | O_CLOEXEC));
+    if (file.get() < 0) return read_error(path, std::strerror(errno));
+    struct stat status {};
+    if (::fstat(file.get(), &status) != 0) return read_error(path, std::strerror(errno));
+    if (S_ISDIR(status.st_mode)) return read_error(path, std::strerror(EISDIR));
+    // A device never ends (/dev/zero, /dev/urandom) or waits for a person
+    // (a terminal): it would be read until memory runs out, or forever.
+    if (S_ISCHR(status.st_mode) || S_ISBLK(status.st_mode))
+        return read_error(path, "it is a device, not a file");
+    const bool regular = S_ISREG(status.st_mode);
     std::vector<std::uint8_t> bytes;
-    std::unique_ptr<std::FILE, int (*)(std::FILE*)> file(std::fopen(path.c_str(), "rb"),
-                                                         &std::fclose);
-    if (!file) return Error{"cannot read " + file_message(path, std::strerror(errno))};
+    if (regular) bytes.reserve(static_cast<std::size_t>(status.st_size));
     std::uint8_t buffer[65536];
-    std::size_t n;
-    errno = 0;
-    while ((n = std::fread(buffer, 1, sizeof buffer, file.get())) > 0)
+    for (;;) {
+        const ssize_t n = ::read(file.get(), buffer, sizeof buffer);
+        if (n < 0) {
+            if (errno == EINTR) continue;
+            return read_error(path, std::strerror(errno));
+        }
+        if (n == 0) break;
         bytes.insert(bytes.end(), buffer, buffer + n);
-    // A directory opens but does not read (EISDIR): say so, not "read error".
-    if (std::ferror(file.get()))
-        return Error{"cannot read " +
-                     file_message(path, errno != 0 ? std::strerror(errno) : "read error")};
+        if (!regular && bytes.size() > kMaxStreamBytes)
+            return read_error(
+                path, "a pipe that gives more than " + std::to_string(kMaxStreamBytes) + " bytes");
+    }
     return bytes;
 }
 

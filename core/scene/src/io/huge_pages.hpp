@@ -14,7 +14,7 @@
 // 6 MB buffer: 0.3-0.8 ms in 2 MiB pages, 4-9 ms in 4 KiB pages, but once in
 // a while 25 ms; 200 ms for 64 MB; bench/micro/bench_fresh_pages.cpp). For
 // the arrays of a scene of a few thousand shapes that costs more than the
-// faults it saves: whole renders of the race scenes ran up to 14% faster in
+// faults it saves: whole renders of the race scenes ran up to 15% faster in
 // the median with the hint only from 16 MiB, and their slowest tenth up to a
 // third faster (docs/benchmarks.md §2.5).
 

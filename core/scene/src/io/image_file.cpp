@@ -34,8 +34,12 @@ Expected<void> write_image(const std::filesystem::path& path, const Image8& imag
 Expected<Image8> read_image(const std::filesystem::path& path) {
     Expected<std::vector<std::uint8_t>> bytes = read_file_bytes(path);
     if (!bytes) return bytes.error();
+    if (bytes->empty()) return Error{file_message(path, "the file is empty")};
     const bool bmp = bytes->size() >= 2 && (*bytes)[0] == 'B' && (*bytes)[1] == 'M';
-    Expected<Image8> image = bmp ? decode_bmp(*bytes) : decode_png(*bytes);
+    // Neither signature: what the name says decides which reader explains why.
+    const bool named_bmp = format_named_by(path) == ImageFormat::bmp;
+    Expected<Image8> image =
+        bmp || (named_bmp && !has_png_signature(*bytes)) ? decode_bmp(*bytes) : decode_png(*bytes);
     if (!image) return Error{file_message(path, image.error().message)};
     return image;
 }

@@ -10,6 +10,8 @@
 
 #include <stb_image.h>
 
+#include <cstring>
+
 namespace jt {
 
 // Defined beside stb's implementation (stb_implementation.cpp), the one place
@@ -17,9 +19,15 @@ namespace jt {
 void forget_stb_failure();
 
 // The reason stb gave since forget_stb_failure, or a plain one where it gave none.
+// stb's reasons are short phrases ("bad huffman code"), mostly readable; the
+// two run together into one word are put in words.
 inline const char* stb_failure_reason() {
     const char* reason = stbi_failure_reason();
-    return reason ? reason : "its data is damaged";
+    if (!reason) return "its data is damaged";
+    if (std::strcmp(reason, "outofdata") == 0)
+        return "its data ends early (the file is truncated or damaged)";
+    if (std::strcmp(reason, "outofmem") == 0) return "out of memory";
+    return reason;
 }
 
 }  // namespace jt

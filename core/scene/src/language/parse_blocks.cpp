@@ -126,10 +126,9 @@ void SceneParser::unknown_block(std::string_view where, std::span<const std::str
 
 void SceneParser::only_blocks(const BlockSource& block, std::span<const std::string_view> allowed,
                               const Property& p) {
-    std::string list;
-    for (std::string_view name : allowed) list.append(list.empty() ? "" : ", ").append(name);
-    sink_.error(p.name_span.pos, quote(block.keyword) + " holds only blocks (" + list +
-                                     "), not properties like " + quote(p.name));
+    sink_.error(p.name_span.pos, quote(block.keyword) + " holds only blocks (" +
+                                     listed(allowed, "and") + "), not properties like " +
+                                     quote(p.name));
 }
 
 void SceneParser::block_in_property_block(const BlockSource& block) {

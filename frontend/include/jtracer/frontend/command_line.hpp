@@ -3,6 +3,7 @@
 // version flag and how a usage error is reported (the program's name, CLI11's
 // message, a pointer to --help, exit 2), so that all of them behave alike.
 
+#include <filesystem>
 #include <functional>
 #include <iostream>
 #include <optional>
@@ -24,6 +25,15 @@ void add_version_flag(CLI::App& app, const std::string& program);
 // CLI::ValidationError for rules between options). Returns the exit code when
 // the program should stop now: 0 after --help or --version, exit_usage after
 // an error, reported on `err` as "PROGRAM: message" and a pointer to --help.
+// Whether two paths name the same file: one existing file (also through a
+// hard link, a symbolic link or another spelling), or, when either does not
+// exist yet, the same place once `.`, `..` and the links of its folders are
+// resolved. An output that names an input would replace it before, or
+// instead of, what the user asked for (a scene overwritten by its own image,
+// a reference by the render it is meant to check). A device or a pipe is no
+// file's twin: it is written in place and replaces nothing.
+bool same_file(const std::filesystem::path& a, const std::filesystem::path& b);
+
 std::optional<int> parse_command_line(CLI::App& app, int argc, const char* const* argv,
                                       const std::string& program,
                                       const std::function<void()>& checks = {},

@@ -1,4 +1,4 @@
-#include "memory_budget.hpp"
+#include "jtracer/frontend/memory_budget.hpp"
 
 #include <sys/resource.h>
 
@@ -7,7 +7,7 @@
 #include <fstream>
 #include <sstream>
 
-namespace jt::cli {
+namespace jt::frontend {
 
 namespace {
 
@@ -66,4 +66,4 @@ Expected<void> check_render_memory(const RenderOptions& options, bool region_out
     return Error{message.str()};
 }
 
-}  // namespace jt::cli
+}  // namespace jt::frontend

@@ -9,7 +9,7 @@
 #include <cstdint>
 #include <string>
 
-namespace jt::cli {
+namespace jt::frontend {
 
 // Bytes a render needs at most: the job's pixels and running sums (the region
 // only, when there is one), then the image handed to the writer and the
@@ -20,7 +20,8 @@ std::uint64_t render_memory_bytes(const RenderOptions& options, bool region_outp
 // available memory and the address-space limit (ulimit -v); 0 when unknown.
 std::uint64_t available_memory_bytes();
 
-// Whether the render fits; the error explains why not.
+// Whether the render fits; the error explains why not, in the command line's
+// words (--width/--height, --samples).
 Expected<void> check_render_memory(const RenderOptions& options, bool region_output);
 
-}  // namespace jt::cli
+}  // namespace jt::frontend
