@@ -279,6 +279,11 @@ int check_expected(const Image8& render, const std::string& render_path,
         return update(why);
     }
     std::cerr << "jtracer-cli: the render differs from " << reference << ":\n" << r.text;
+    if (frontend::is_stream(render_path)) {
+        std::cerr << "the render went to " << render_path
+                  << ", which has no folder to keep a heat map beside it: none was written\n";
+        return finish(exit_outside_tolerance);
+    }
     if (const Expected<void> written = write_image(heat_map_path, d.image, ImageFormat::png);
         !written) {
         std::cerr << "jtracer-cli: " << written.error().message << "\n";

@@ -19,7 +19,7 @@ std::optional<std::string> file_clash(const Options& o, const std::string& outpu
     // An empty output is not known yet: only the --junit file is checked.
     if (!output.empty() && same_file(output, o.scene_path))
         return named + " is the scene file itself: the image would replace it";
-    if (o.expect && !output.empty()) {
+    if (o.expect && !output.empty() && !frontend::is_stream(output)) {
         if (same_file(output, *o.expect))
             return named +
                    " is the reference given to --expect: the render would replace it "

@@ -40,15 +40,18 @@ class GnuHelp : public CLI::Formatter {
 
 }  // namespace
 
-bool same_file(const std::filesystem::path& a, const std::filesystem::path& b) {
+bool is_stream(const std::filesystem::path& path) {
     std::error_code error;
+    const auto status = std::filesystem::status(path, error);
+    return std::filesystem::is_character_file(status) || std::filesystem::is_fifo(status) ||
+           std::filesystem::is_block_file(status) || std::filesystem::is_socket(status);
+}
+
+bool same_file(const std::filesystem::path& a, const std::filesystem::path& b) {
     // A device or pipe is written in place (atomic_file.cpp): /dev/null as
     // both the image and the report replaces nothing.
-    for (const std::filesystem::path* path : {&a, &b})
-        if (const auto status = std::filesystem::status(*path, error);
-            std::filesystem::is_character_file(status) || std::filesystem::is_fifo(status) ||
-            std::filesystem::is_block_file(status) || std::filesystem::is_socket(status))
-            return false;
+    if (is_stream(a) || is_stream(b)) return false;
+    std::error_code error;
     if (std::filesystem::equivalent(a, b, error)) return true;
     const std::filesystem::path place_a = std::filesystem::weakly_canonical(a, error);
     if (error) return false;

@@ -286,6 +286,23 @@ TEST_F(Expect, DifferingRenderWritesTheRenderAndTheDifferences) {
               0);
 }
 
+// A render sent to a device, to be compared and not kept, has no folder to
+// keep a heat map beside it: /dev/null.diff.png would be a file in /dev.
+TEST_F(Expect, ARenderToADeviceHasNoHeatMap) {
+    Image8 changed = reference;
+    changed.pixel(0, 0)[0] = static_cast<std::uint8_t>(changed.pixel(0, 0)[0] ^ 0x40);
+    ASSERT_TRUE(write_png(dir / "changed.png", changed));
+    ProgramRun r = run(cli + " scene.jts -o /dev/null --expect changed.png");
+    EXPECT_EQ(r.code, 1) << r.err;
+    EXPECT_NE(r.err.find("differs from changed.png"), std::string::npos) << r.err;
+    EXPECT_NE(r.err.find("the render went to /dev/null, which has no folder to keep a heat map "
+                         "beside it: none was written"),
+              std::string::npos)
+        << r.err;
+    EXPECT_FALSE(std::filesystem::exists("/dev/null.diff.png"));
+    EXPECT_EQ(run(cli + " -q scene.jts -o /dev/null --expect ref.png").code, 0);
+}
+
 // Only a render outside the tolerance has a heat map beside it: one left by
 // an earlier failing run goes once the render matches again, or CI keeping
 // out/ would show a failure that is no more.

@@ -46,6 +46,15 @@ TEST_F(SceneFile, Directory) {
     EXPECT_EQ(file.error().message, "'" + shown + "' is a directory, not a scene file");
 }
 
+// Read to the limit, /dev/zero took a gigabyte and seconds before it failed.
+TEST_F(SceneFile, DeviceIsRefusedAtOnce) {
+    for (const std::string device : {"/dev/zero", "/dev/null"}) {
+        const Expected<std::string> file = read_text_file(device);
+        ASSERT_FALSE(file) << device;
+        EXPECT_EQ(file.error().message, "'" + device + "' is a device, not a scene file");
+    }
+}
+
 TEST_F(SceneFile, TooLarge) {
     fs::path path = write("big.jts", std::string(100, ' '));
     const Expected<std::string> file = read_text_file(path, 99);

@@ -6,6 +6,9 @@
 #include "language/quote.hpp"
 #include "language/validation.hpp"
 
+#include <sys/stat.h>
+#include <unistd.h>
+
 #include <cerrno>
 #include <cstdio>
 #include <cstring>
@@ -79,6 +82,13 @@ Expected<std::string> read_text(const std::filesystem::path& path, std::uintmax_
     errno = 0;
     std::unique_ptr<std::FILE, int (*)(std::FILE*)> f(std::fopen(path.c_str(), "rb"), &std::fclose);
     if (!f) return Error{"cannot read " + name + ": " + describe_errno(errno)};
+    // A device other than a terminal never ends (/dev/zero, /dev/urandom) or is
+    // no text: it would be read up to the limit, a gigabyte, before failing. A
+    // terminal ends where its user types the end of input.
+    struct stat opened {};
+    if (::fstat(::fileno(f.get()), &opened) == 0 &&
+        (S_ISBLK(opened.st_mode) || (S_ISCHR(opened.st_mode) && !::isatty(::fileno(f.get())))))
+        return Error{name + " is a device, not a scene file"};
     if (stamp) *stamp = file_stamp(::fileno(f.get()));
     std::string text;
     // A regular file of known size is read in one go into a buffer of that

@@ -34,6 +34,10 @@ void add_version_flag(CLI::App& app, const std::string& program);
 // file's twin: it is written in place and replaces nothing.
 bool same_file(const std::filesystem::path& a, const std::filesystem::path& b);
 
+// Whether `path` is a device, a pipe or a socket: written in place, with no
+// folder of its own to hold a file beside it (a heat map beside /dev/null).
+bool is_stream(const std::filesystem::path& path);
+
 std::optional<int> parse_command_line(CLI::App& app, int argc, const char* const* argv,
                                       const std::string& program,
                                       const std::function<void()>& checks = {},
