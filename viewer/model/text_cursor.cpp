@@ -14,7 +14,10 @@ int cursor_after_replace(std::string_view before, std::string_view after, int cu
     while (suffix < shorter - prefix &&
            before[before.size() - 1 - suffix] == after[after.size() - 1 - suffix])
         ++suffix;
-    if (at <= prefix) return static_cast<int>(at);
+    // An insertion at the cursor (a redo of typing, an undo of a deletion)
+    // leaves it after the text, as typing that text would have.
+    const bool insertion_at_cursor = prefix + suffix == before.size() && at == prefix;
+    if (at <= prefix && !insertion_at_cursor) return static_cast<int>(at);
     if (at >= before.size() - suffix) return static_cast<int>(at - before.size() + after.size());
     return static_cast<int>(after.size() - suffix);
 }

@@ -9,7 +9,8 @@ namespace jt::view {
 
 // The cursor `cursor` (a byte offset into `before`) in `after`: kept when it
 // is before the changed span, moved with the text after it, and put at the
-// end of the new span when it was inside the old one.
+// end of the new span when it was inside the old one, or when the change
+// inserts text where it stands.
 int cursor_after_replace(std::string_view before, std::string_view after, int cursor);
 
 }  // namespace jt::view

@@ -13,8 +13,14 @@ TEST(TextCursor, AnUndoOfTypingPutsTheCursorWhereTheTypingStarted) {
     EXPECT_EQ(cursor_after_replace(typed, undone, 5), 2) << "inside it";
     EXPECT_EQ(cursor_after_replace(typed, undone, 1), 1) << "before it: kept";
     EXPECT_EQ(cursor_after_replace(typed, undone, 11), 4) << "after it: moved with the text";
-    EXPECT_EQ(cursor_after_replace(undone, typed, 2), 2) << "a redo: the start of the insert";
+    EXPECT_EQ(cursor_after_replace(undone, typed, 2), 9) << "a redo: after the text, as typed";
+    EXPECT_EQ(cursor_after_replace(undone, typed, 1), 1) << "a redo before the cursor: kept";
     EXPECT_EQ(cursor_after_replace(undone, typed, 3), 10) << "after it: moved";
+}
+
+TEST(TextCursor, AnUndoOfADeletionPutsTheCursorAfterTheTextItBringsBack) {
+    EXPECT_EQ(cursor_after_replace("radius: ;", "radius: 2.5;", 8), 11);
+    EXPECT_EQ(cursor_after_replace("radius: ;", "radius: 2.5;", 9), 12) << "after it: moved";
 }
 
 TEST(TextCursor, StaysInsideTheNewText) {
