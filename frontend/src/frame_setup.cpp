@@ -71,9 +71,9 @@ FrameSetup set_up_loaded(std::string_view program, const RenderFlags& flags, Loa
     // The BMP limit is the scene's rule (docs/language.md §4.9), but a size
     // from the command line is the command line's error: located in the
     // file, it would point at a width or height the flag replaced.
-    if (const RenderSettings& s = loaded.parsed.scene.settings;
-        (flags.width || flags.height) && s.width > 0 && s.height > 0 &&
-        bmp_file_size(s.width, s.height) > 0xFFFFFFFFull) {
+    if (const RenderSettings& s = loaded.parsed.scene.settings; (flags.width || flags.height) &&
+                                                                s.width > 0 && s.height > 0 &&
+                                                                !fits_in_bmp(s.width, s.height)) {
         const std::string flag = flags.width && flags.height ? "--width/--height"
                                  : flags.width               ? "--width"
                                                              : "--height";

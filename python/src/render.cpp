@@ -88,13 +88,24 @@ std::optional<FrameRegion> region_for(const RenderArguments& a) {
     return *region;
 }
 
+// A front-end message with render()'s arguments named as Python spells
+// them: "width/height", not "--width/--height".
+std::string with_argument_names(std::string text) {
+    for (const std::string_view name : {"width", "height", "samples"}) {
+        const std::string flag = "--" + std::string(name);
+        for (std::size_t at = text.find(flag); at != std::string::npos; at = text.find(flag, at))
+            text.erase(at, 2);
+    }
+    return text;
+}
+
 // The message of set_up_frame's failure without its "jtracer: " and newline,
 // naming the argument rather than the flag ("camera: ...", not "--camera: ...").
 std::string reason(const frontend::FrameSetup& setup, std::string_view program) {
     std::string text = setup.message;
     if (text.starts_with(program)) text.erase(0, program.size() + 2);
     if (text.starts_with("--")) text.erase(0, 2);
-    if (text.starts_with("width/--height")) text.erase(6, 2);
+    text = with_argument_names(std::move(text));
     if (!text.empty() && text.back() == '\n') text.pop_back();
     return text;
 }
@@ -125,12 +136,7 @@ py::array_t<std::uint8_t> render_scene(PythonScene& scene, const RenderArguments
     // end in a bare "std::bad_alloc", or the kernel's out-of-memory killer
     // taking the interpreter with it.
     if (Expected<void> fits = frontend::check_render_memory(setup.render, false); !fits) {
-        std::string message = fits.error().message;
-        for (const auto& [flag, argument] :
-             {std::pair<std::string_view, std::string_view>{"--width/--height", "width/height"},
-              {"--samples", "samples"}})
-            if (const std::size_t at = message.find(flag); at != std::string::npos)
-                message.replace(at, flag.size(), argument);
+        const std::string message = with_argument_names(fits.error().message);
         PyErr_SetString(PyExc_MemoryError, message.c_str());
         throw py::error_already_set();
     }

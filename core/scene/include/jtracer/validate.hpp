@@ -45,4 +45,8 @@ int active_camera_index(const Scene& scene);
 // Size in bytes of the 24-bit BMP of a width x height image (header included).
 unsigned long long bmp_file_size(int width, int height);
 
+// Whether a width x height image fits in a BMP file (4 GiB at most): the
+// largest image JTracer renders, whatever the output format.
+bool fits_in_bmp(int width, int height);
+
 }  // namespace jt

@@ -168,7 +168,7 @@ class Validator {
                 out_.back().setting = name;
             }
         }
-        if (s.width > 0 && s.height > 0 && bmp_file_size(s.width, s.height) > 0xFFFFFFFFull) {
+        if (s.width > 0 && s.height > 0 && !fits_in_bmp(s.width, s.height)) {
             error(locate("height"), "a " + std::to_string(s.width) + " x " +
                                         std::to_string(s.height) +
                                         " image does not fit in a BMP file (4 GiB at most)");
@@ -474,6 +474,10 @@ unsigned long long bmp_file_size(int width, int height) {
     if (width <= 0 || height <= 0) return 54;
     unsigned long long row = (3ull * static_cast<unsigned>(width) + 3) & ~3ull;
     return 54 + row * static_cast<unsigned>(height);
+}
+
+bool fits_in_bmp(int width, int height) {
+    return bmp_file_size(width, height) <= 0xFFFFFFFFull;
 }
 
 std::vector<Diagnostic> validate_scene(const Scene& scene, const SceneSource& source,
