@@ -28,6 +28,11 @@ std::string kept(const FrameRange& range, int index) {
 
 int run_sequence(const Options& o) {
     SceneSequence sequence("jtracer-cli", o, o.region);
+    if (!o.check_only)
+        if (std::optional<std::string> clash = sequence.output_clash()) {
+            std::cerr << *clash;
+            return exit_usage;
+        }
     const FrameRange range = sequence.range();
     const int total = range.last - range.first + 1;
     ProgressDisplay display(progress_style_for_stderr(o.progress, o.quiet));

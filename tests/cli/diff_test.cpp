@@ -387,6 +387,19 @@ TEST_F(Expect, RefusesOutputsThatWouldReplaceTheSceneOrTheReference) {
     EXPECT_FALSE(exists("render.bmp"));
 }
 
+// As `diff` refuses --junit naming its -o: the report would be written over
+// the heat map it points to.
+TEST_F(Expect, RefusesAJunitReportThatIsTheHeatMap) {
+    Image8 changed = reference;
+    changed.pixel(0, 0)[0] = static_cast<std::uint8_t>(changed.pixel(0, 0)[0] ^ 0x80);
+    ASSERT_TRUE(write_png(dir / "changed.png", changed));
+    ProgramRun r = run(cli + " scene.jts -o out.png --expect changed.png --junit out.diff.png");
+    EXPECT_EQ(r.code, 2) << r.err;
+    EXPECT_NE(r.err.find("where the heat map"), std::string::npos) << r.err;
+    EXPECT_FALSE(exists("out.png")) << "refused before anything is written";
+    EXPECT_FALSE(exists("out.diff.png"));
+}
+
 TEST_F(Expect, ListCamerasPrintsTheNamesOneALine) {
     ASSERT_EQ(run(cli + " --list-cameras scene.jts").code, 0);
     EXPECT_EQ(out(), "Main\nHigh Angle\n");
