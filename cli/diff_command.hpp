@@ -44,7 +44,7 @@ struct ExpectOptions {
 };
 
 // Where --expect puts the heat map of a render outside the tolerance:
-// out.png -> out.diff.png.
+// out.png -> out.diff.png, beside the file when out.png is a link to it.
 std::string heat_map_path_for(const std::string& render_path);
 
 // --expect: compares the render written to `render_path` with the reference

@@ -303,6 +303,21 @@ TEST_F(Expect, ARenderToADeviceHasNoHeatMap) {
     EXPECT_EQ(run(cli + " -q scene.jts -o /dev/null --expect ref.png").code, 0);
 }
 
+// `-o /dev/stdout > out.png` writes out.png through a link; its heat map goes
+// beside it, not into /dev.
+TEST_F(Expect, AHeatMapGoesBesideTheFileALinkNames) {
+    Image8 changed = reference;
+    changed.pixel(0, 0)[0] = static_cast<std::uint8_t>(changed.pixel(0, 0)[0] ^ 0x40);
+    ASSERT_TRUE(write_png(dir / "changed.png", changed));
+    std::filesystem::create_directory(dir / "renders");
+    std::filesystem::create_symlink("renders/out.png", dir / "link.png");
+    ProgramRun r = run(cli + " -q scene.jts -o link.png --expect changed.png");
+    EXPECT_EQ(r.code, 1) << r.err;
+    EXPECT_TRUE(read_image(dir / "renders/out.png").has_value());
+    EXPECT_TRUE(read_image(dir / "renders/out.diff.png").has_value()) << r.err;
+    EXPECT_FALSE(exists("link.diff.png"));
+}
+
 // Only a render outside the tolerance has a heat map beside it: one left by
 // an earlier failing run goes once the render matches again, or CI keeping
 // out/ would show a failure that is no more.
