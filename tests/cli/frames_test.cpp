@@ -105,7 +105,7 @@ TEST_F(CliFrames, BadPatternsExitTwoNamingTheOption) {
 }
 
 // The message quotes the field as printf reads it, not four characters
-// whatever they are ('%4d.', '%s.p').
+// whatever they are ('%4d.', '%s.p'), and never half a UTF-8 character.
 TEST_F(CliFrames, ABadFieldIsQuotedAlone) {
     const std::pair<const char*, const char*> cases[] = {
         {"shot-%4d.png", "'%4d' is not"},
@@ -114,6 +114,8 @@ TEST_F(CliFrames, ABadFieldIsQuotedAlone) {
         {"shot-%ld.png", "'%ld' is not"},
         {"shot-%", "'%' is not"},
         {"100%.png", "'%.p' is not"},
+        {"shot-%\u00e9.png", "'%\u00e9' is not"},
+        {"shot-%4\u20ac.png", "'%4\u20ac' is not"},
     };
     for (const auto& [pattern, quoted] : cases) {
         test::ProgramRun r = run(std::string("scene.jts --frames 3 -o '") + pattern + "'");
