@@ -28,6 +28,7 @@ void check_edits(CheckState& check, SceneDocument& doc, const FileState& files) 
     doc.diagnostics.insert(doc.diagnostics.end(), more.begin(), more.end());
     doc.diagnostics_source = doc.text;
     doc.diagnostics_path = doc.path;
+    doc.diagnostics_files = doc.source.files;
     note_diagnostics_changed(doc);
     check.checked_revision = doc.revision;
 }
