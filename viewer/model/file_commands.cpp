@@ -50,8 +50,9 @@ void finish_open(AppState& state, const std::filesystem::path& path, LoadAttempt
     const std::filesystem::path was = state.doc.path;
     accept_load(state.doc, path, std::move(attempt));
     // An open was asked before dropping text typed in included files (guard):
-    // none carries over, and another scene's file is not shown.
-    state.editor.drafts.clear();
+    // none carries over to another scene. A failed open keeps the scene shown
+    // with its edits (accept_load), and so with the text typed in its files.
+    if (ok || first) state.editor.drafts.clear();
     if (state.doc.path != was) state.editor.shown.clear();
     if (ok || first) {
         state.files.watcher = FileWatcher(state.config.watch_interval);
