@@ -142,7 +142,8 @@ ParseOptions options_with(const std::optional<py::dict>& defines, double clock) 
             text = number_text(value);
         }
         Expected<Define> define = parse_define(name + "=" + text);
-        if (!define) throw py::value_error("defines: " + define.error().message);
+        if (!define)
+            throw py::value_error("defines: " + with_argument_names(define.error().message));
         options.defines.push_back(std::move(*define));
     }
     return options;
