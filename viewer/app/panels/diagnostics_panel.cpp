@@ -42,6 +42,11 @@ void diagnostics_panel(AppState& state, DiagnosticsText& text) {
     const bool errors = state.doc.load_failed || other;
     char title[48];
     std::snprintf(title, sizeof title, "Diagnostics (%zu)###diag", diagnostics.size());
+    text.first_in_view = false;
+    if (text.scroll_to) {
+        ImGui::SetScrollHereY(0.0f);  // the header at the top of the sidebar
+        text.scroll_to = false;
+    }
     if (errors) ImGui::SetNextItemOpen(true);
     if (!panel_header(title, "Diagnostics", false)) return;
     if (diagnostics.empty()) {
@@ -73,6 +78,13 @@ void diagnostics_panel(AppState& state, DiagnosticsText& text) {
         ImGui::PopTextWrapPos();
         ImGui::PopStyleColor();
         note_item(entry.message.c_str(), false);
+        if (&entry == &text.entries.front()) {
+            // Whole within the sidebar's window, not scrolled past either edge.
+            const float top = ImGui::GetWindowPos().y;
+            const float bottom = top + ImGui::GetWindowHeight();
+            text.first_in_view =
+                ImGui::GetItemRectMin().y >= top && ImGui::GetItemRectMax().y <= bottom;
+        }
         if (!entry.quote.empty()) {
             push_monospace_font();
             ImGui::TextUnformatted(entry.quote.c_str());
