@@ -395,6 +395,62 @@ TEST(ViewerSaveAs, KeepsTheFilesNamesAndExpressions) {
     EXPECT_TRUE(parse_scene(saved).scene == state.doc.scene);
 }
 
+// Found in the window: the split scene (include "parts/materials.jts")
+// saved as a copy one folder up gave a file that no longer opened (its
+// includes read from the copy's folder), and a scene with image maps the
+// same (they are found from it too). A copy in another folder is refused
+// when the scene names files relative to its own; in the same folder, or
+// with nothing relative, it is written and opens as the same scene.
+TEST(ViewerSaveAs, ACopyInAnotherFolderMustReadTheSameFiles) {
+    const ScratchDir dir("save_as_folders");
+    fs::copy(fs::path(JT_SOURCE_DIR) / "scenes" / "split", dir.path() / "split",
+             fs::copy_options::recursive);
+    fs::create_directories(dir.path() / "elsewhere");
+    ModelLoop model;
+    AppState state{test_config()};
+    const fs::path main = dir.path() / "split" / "main.jts";
+    open_scene(state, main);
+    ASSERT_TRUE(model.run_until_loaded(state));
+    ASSERT_TRUE(state.doc.loaded) << format_diagnostics(state.doc);
+    edit_scene(state, [](Scene& s) { s.settings.width = 64; });
+    for (const fs::path& away : {dir.path() / "copy.jts", dir.path() / "elsewhere" / "copy.jts"}) {
+        EXPECT_FALSE(save_scene_as(state, away, false)) << away;
+        EXPECT_FALSE(fs::exists(away)) << away;
+        EXPECT_NE(state.message.find("save the copy in that folder"), std::string::npos)
+            << state.message;
+        EXPECT_EQ(state.doc.path, main);
+        EXPECT_TRUE(has_unsaved_edits(state.doc));
+    }
+    // Beside it the includes read the same files.
+    const fs::path beside = dir.path() / "split" / "copy.jts";
+    ASSERT_TRUE(save_scene_as(state, beside, false)) << state.message;
+    AppState again{test_config()};
+    open_scene(again, beside);
+    ASSERT_TRUE(model.run_until_loaded(again));
+    ASSERT_TRUE(again.doc.loaded) << format_diagnostics(again.doc);
+    EXPECT_TRUE(again.doc.scene == state.doc.scene);
+
+    // Image maps named relative to the scene's folder: the same.
+    const fs::path globe = dir.path() / "globe" / "globe.jts";
+    fs::create_directories(globe.parent_path());
+    fs::copy(fs::path(JT_SOURCE_DIR) / "scenes" / "globe.jts", globe);
+    fs::copy(fs::path(JT_SOURCE_DIR) / "scenes" / "maps", globe.parent_path() / "maps");
+    open_scene(state, globe);
+    ASSERT_TRUE(model.run_until_loaded(state));
+    ASSERT_TRUE(state.doc.loaded) << format_diagnostics(state.doc);
+    const fs::path away = dir.path() / "elsewhere" / "globe.jts";
+    EXPECT_FALSE(save_scene_as(state, away, false));
+    EXPECT_FALSE(fs::exists(away));
+    EXPECT_NE(state.message.find("maps/"), std::string::npos) << state.message;
+
+    // Nothing named relative: any folder will do.
+    open_scene(state, kScene);
+    ASSERT_TRUE(model.run_until_loaded(state));
+    const fs::path plain = dir.path() / "elsewhere" / "plain.jts";
+    ASSERT_TRUE(save_scene_as(state, plain, false)) << state.message;
+    EXPECT_TRUE(parse_scene(read_file(plain)).scene == state.doc.scene);
+}
+
 // A file the viewer had loaded, then broken in each way a file breaks.
 struct Fault {
     const char* name;
