@@ -455,6 +455,34 @@ TEST(ViewerIncludedFileEditor, OpensTypesUndoesAndSavesAnIncludedFile) {
     fs::remove_all(dir);
 }
 
+// Found in the real window (1500x950, the split scene): the hint beside an
+// included file's name ran past the editor's right edge ("Ctrl+Z undoe").
+// A hint that does not fit gives its brief form, the whole in its tooltip,
+// on the same one line, in the scene file's view too.
+TEST(ViewerIncludedFileEditor, TheHintsBesideTheFileNameFitTheEditor) {
+    HeadlessViewer viewer{1100, 700};
+    ASSERT_TRUE(viewer.ok()) << viewer.error();
+    const fs::path dir = write_including_scene("included-file-hint");
+    AppState state{test_config()};
+    open_scene(state, dir / "main.jts");
+    ASSERT_TRUE(state.doc.loaded) << format_diagnostics(state.doc);
+    viewer.press_key(state, keys::letter('T'));
+    ASSERT_TRUE(viewer.text_editor().open);
+    const auto hint_fits = [&](const char* file) {
+        viewer.frame(state);
+        const UiItem* hint = find_item(viewer.ui_items(), "text editor hint");
+        ASSERT_NE(hint, nullptr) << file;
+        EXPECT_FALSE(hint->clipped) << file;
+        const UiItem* text = find_item(viewer.ui_items(), "text");
+        ASSERT_NE(text, nullptr);
+        EXPECT_LE(hint->rect.x1, text->rect.x1) << file << ": past the text's right edge";
+    };
+    hint_fits("main.jts");
+    ASSERT_TRUE(viewer.click(state, "parts/ball.jts"));
+    hint_fits("parts/ball.jts");
+    fs::remove_all(dir);
+}
+
 // Found in the real window: text typed in an included file, then Esc to
 // leave the editor. ImGui's Esc puts back the text the widget was entered
 // with, so everything typed since the click was gone, the draft with it,

@@ -312,13 +312,20 @@ void included_header(AppState& state, const std::string& canonical) {
                                           : std::string_view();
     ImGui::Text("%.*s%s", static_cast<int>(name.size()), name.data(), draft ? " *" : "");
     ImGui::SameLine();
-    ImGui::TextDisabled("Ctrl+S saves it and reloads the scene; Ctrl+Z undoes typing here");
-    if (const int count = reading_count(latest_readings(state.doc), canonical); count > 1)
-        ImGui::TextColored(ImVec4(0.9f, 0.75f, 0.3f, 1.0f),
-                           "Included %d times: every object read from it changes", count);
-    if (!read)
-        ImGui::TextColored(ImVec4(1.0f, 0.7f, 0.3f, 1.0f),
-                           "The scene no longer reads this file: Save scene still writes it");
+    hint_text("Ctrl+S saves it and reloads the scene; Ctrl+Z undoes typing here",
+              "Ctrl+S saves, Ctrl+Z undoes here", "text editor hint");
+    // Lines of their own, wrapped: they come with a change of the file, not
+    // with each keystroke.
+    if (const int count = reading_count(latest_readings(state.doc), canonical); count > 1) {
+        ImGui::PushStyleColor(ImGuiCol_Text, ImVec4(0.9f, 0.75f, 0.3f, 1.0f));
+        ImGui::TextWrapped("Included %d times: every object read from it changes", count);
+        ImGui::PopStyleColor();
+    }
+    if (!read) {
+        ImGui::PushStyleColor(ImGuiCol_Text, ImVec4(1.0f, 0.7f, 0.3f, 1.0f));
+        ImGui::TextWrapped("The scene no longer reads this file: Save scene still writes it");
+        ImGui::PopStyleColor();
+    }
     if (draft && button("Revert", "Drop what was typed in this file: show its text again"))
         revert_included_draft(state.editor, canonical);
 }
@@ -386,12 +393,15 @@ void text_editor(AppState& state, TextEditorState& ed, float x0, float y0, float
             ImGui::TextColored(ImVec4(1.0f, 0.45f, 0.4f, 1.0f),
                                "errors: showing the last good image");
         else
-            ImGui::TextDisabled("Ctrl+Z undoes panel and text edits alike");
-        if (doc.file_deleted)
-            ImGui::TextColored(ImVec4(1.0f, 0.7f, 0.3f, 1.0f),
-                               "%s was deleted on disk: this is the viewer's copy; Save scene "
-                               "writes it again",
-                               name.c_str());
+            hint_text("Ctrl+Z undoes panel and text edits alike", "Ctrl+Z undoes all edits",
+                      "text editor hint");
+        if (doc.file_deleted) {
+            ImGui::PushStyleColor(ImGuiCol_Text, ImVec4(1.0f, 0.7f, 0.3f, 1.0f));
+            ImGui::TextWrapped(
+                "%s was deleted on disk: this is the viewer's copy; Save scene writes it again",
+                name.c_str());
+            ImGui::PopStyleColor();
+        }
     }
 
     const float list_height = ImGui::GetTextLineHeightWithSpacing() * 5.0f + 8.0f;

@@ -236,6 +236,13 @@ void scroll_here_if_hidden() {
     if (y < top || y > bottom) ImGui::SetScrollHereY(0.2f);
 }
 
+void hint_text(const char* full, const char* brief, const char* id) {
+    const bool fits = ImGui::CalcTextSize(full).x <= ImGui::GetContentRegionAvail().x;
+    ImGui::TextDisabled("%s", fits ? full : brief);
+    if (!fits) tooltip(full);
+    note_item(id, !fits);
+}
+
 void same_line_if_fits(const char* label) {
     const ImGuiStyle& style = ImGui::GetStyle();
     const float width = ImGui::CalcTextSize(label, nullptr, true).x + style.FramePadding.x * 2.0f;
