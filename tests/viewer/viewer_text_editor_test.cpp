@@ -483,6 +483,21 @@ TEST(ViewerIncludedFileEditor, TheHintsBesideTheFileNameFitTheEditor) {
     fs::remove_all(dir);
 }
 
+// Where not even the brief form fits (640x400) there is none.
+TEST(ViewerIncludedFileEditor, NoHintIsCutInATinyWindow) {
+    HeadlessViewer viewer{640, 400};
+    ASSERT_TRUE(viewer.ok()) << viewer.error();
+    AppState state{test_config()};
+    open_scene(state, kScene);
+    ASSERT_TRUE(state.doc.loaded) << format_diagnostics(state.doc);
+    viewer.text_editor().open = true;
+    viewer.frame(state);
+    viewer.frame(state);
+    ASSERT_NE(find_item(viewer.ui_items(), "text"), nullptr);
+    const UiItem* hint = find_item(viewer.ui_items(), "text editor hint");
+    EXPECT_TRUE(hint == nullptr || !hint->clipped) << "cut at the editor's edge";
+}
+
 // Found in the real window: text typed in an included file, then Esc to
 // leave the editor. ImGui's Esc puts back the text the widget was entered
 // with, so everything typed since the click was gone, the draft with it,

@@ -237,7 +237,14 @@ void scroll_here_if_hidden() {
 }
 
 void hint_text(const char* full, const char* brief, const char* id) {
-    const bool fits = ImGui::CalcTextSize(full).x <= ImGui::GetContentRegionAvail().x;
+    const float room = ImGui::GetContentRegionAvail().x;
+    const bool fits = ImGui::CalcTextSize(full).x <= room;
+    // Not even the brief form fits (a tiny window): no hint, but the line
+    // still ends here, as it would after the text.
+    if (!fits && ImGui::CalcTextSize(brief).x > room) {
+        ImGui::Dummy(ImVec2(0.0f, ImGui::GetTextLineHeight()));
+        return;
+    }
     ImGui::TextDisabled("%s", fits ? full : brief);
     if (!fits) tooltip(full);
     note_item(id, !fits);
