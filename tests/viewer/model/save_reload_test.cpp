@@ -246,6 +246,38 @@ TEST_F(ViewerFiles, KeptEditsShowTheirOwnDiagnosticsAgain) {
     EXPECT_EQ(state.doc.diagnostics_source, state.doc.text);
 }
 
+// Found in the real window: " oops" typed after `width: 800;`, then the
+// file changed on disk. While the reload bar waited for a choice the text
+// editor showed the broken text under "errors: showing the last good
+// image", yet listed "No errors or warnings" and Diagnostics (0): the
+// diagnostics were the newer file's, until the next keystroke brought the
+// text's own back. Typed text keeps its own diagnostics while the choice
+// waits (the bar says whether the file on disk has errors).
+TEST_F(ViewerFiles, TypedTextKeepsItsDiagnosticsWhileTheReloadChoiceWaits) {
+    const std::string broken = replaced(kOriginal, "height: 48;", "height: 48");
+    type_text(state, broken);
+    ASSERT_TRUE(run_until([&] { return !state.check.checker.in_flight(); }));
+    ASSERT_TRUE(state.doc.draft.has_value());
+    ASSERT_TRUE(has_errors(state.doc.diagnostics));
+    for (const std::string& theirs : {kTheirs, replaced(kTheirs, "radius: 1;", "radius: 1 x;")}) {
+        they_save(theirs);
+        ASSERT_TRUE(state.files.pending_reload.has_value());
+        for (int i = 0; i < 3; ++i) model.frame(state);
+        EXPECT_TRUE(has_errors(state.doc.diagnostics)) << "the typed text's error";
+        EXPECT_EQ(state.doc.diagnostics_source, broken);
+        EXPECT_EQ(document_text(state.doc), broken);
+        EXPECT_EQ(state.files.pending_reload->ok, theirs == kTheirs);
+        EXPECT_NE(state.message.find("changed on disk"), std::string::npos) << state.message;
+    }
+    // Dropped for the file with errors: its text is shown, with its errors.
+    const std::string theirs = read_file(file);
+    resolve_reload(state, ReloadChoice::drop_edits);
+    ASSERT_TRUE(run_until([&] { return !state.check.checker.in_flight(); }));
+    EXPECT_EQ(document_text(state.doc), theirs);
+    EXPECT_TRUE(has_errors(state.doc.diagnostics));
+    EXPECT_EQ(state.doc.diagnostics_source, theirs) << "the file's own";
+}
+
 // Found in the real window: an open of a large file takes seconds, and the
 // panels and the text stay editable meanwhile. The prompt for unsaved edits
 // is asked when the open is requested; an edit made after that was replaced
