@@ -17,6 +17,9 @@ namespace {
 void after_scene_replaced(AppState& state, const std::vector<Camera>& cameras_before) {
     keep_camera_selection(state.view, state.doc.scene, cameras_before);
     state.history.undo.clear();
+    // A burst of typing under way ends with the text it typed in: the next
+    // keystroke records the undo step the cleared history no longer holds.
+    state.history.typing = false;
     state.history.edit_base.reset();
     state.files.pending_reload.reset();
     state.files.save_conflict.clear();

@@ -278,6 +278,29 @@ TEST_F(ViewerFiles, TypedTextKeepsItsDiagnosticsWhileTheReloadChoiceWaits) {
     EXPECT_EQ(state.doc.diagnostics_source, theirs) << "the file's own";
 }
 
+// Found by the monkey (seed 4): text typed, then at once the file taken
+// from disk (drop my edits). The history was cleared but the burst of
+// typing was not ended (its check, overtaken, never ended it), so the next
+// keystrokes recorded no undo step: Ctrl+Z could not take them back. A
+// scene replaced ends the burst.
+TEST_F(ViewerFiles, TypingAfterTheFileIsTakenFromDiskCanBeUndone) {
+    // The file changes within the pause after the keystroke, before the
+    // text is checked.
+    type_text(state, replaced(kOriginal, "height: 48;", "height: 48"));
+    ASSERT_TRUE(state.doc.draft.has_value());
+    they_save(kTheirs);
+    ASSERT_TRUE(state.files.pending_reload.has_value());
+    resolve_reload(state, ReloadChoice::drop_edits);
+    model.frame(state);
+    ASSERT_EQ(document_text(state.doc), kTheirs);
+    ASSERT_FALSE(state.history.undo.can_undo());
+
+    type_text(state, kTheirs + "# typed\n");
+    EXPECT_TRUE(state.history.undo.can_undo()) << "the typing is no undo step";
+    undo(state);
+    EXPECT_EQ(document_text(state.doc), kTheirs);
+}
+
 // Found in the real window: an open of a large file takes seconds, and the
 // panels and the text stay editable meanwhile. The prompt for unsaved edits
 // is asked when the open is requested; an edit made after that was replaced
