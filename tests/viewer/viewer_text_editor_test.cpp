@@ -275,6 +275,45 @@ TEST_F(ViewerTextEditor, ABrokenFileOnDiskIsShownWithItsErrorsAndNeverSavedOver)
     EXPECT_EQ(read_file(file), original);
 }
 
+// Found in the real window: a scene with an error, opened as the viewer
+// starts (no good scene yet), showed an empty text in the editor, line 1
+// and "No errors or warnings", where typing would have replaced the file's
+// whole text. The editor shows the file's text with its errors.
+TEST(ViewerTextEditorOpen, AFileBrokenFromTheStartIsShownWithItsErrors) {
+    HeadlessViewer viewer{1200, 700};
+    ASSERT_TRUE(viewer.ok()) << viewer.error();
+    const fs::path file = scene_copy("text-editor-broken-at-start");
+    std::string broken = read_file(file);
+    broken.replace(broken.find("height: 48;"), 11, "height: 48");
+    write_file(file, broken);
+    AppState state{test_config()};
+    open_scene(state, file);
+    ASSERT_FALSE(state.doc.loaded);
+    viewer.press_key(state, keys::letter('T'));
+    ASSERT_TRUE(viewer.text_editor().open);
+    viewer.frame(state);
+    viewer.frame(state);
+    EXPECT_EQ(viewer.text_editor().buffer, broken);
+    ASSERT_FALSE(state.doc.diagnostics.empty());
+    const Diagnostic& error = state.doc.diagnostics[0];
+    const std::string label = std::to_string(error.pos.line) + ":" +
+                              std::to_string(error.pos.column) + ": error: " + error.message;
+    EXPECT_NE(find_item(viewer.ui_items(), label), nullptr) << "the error under the text";
+
+    // Mended in the editor, it opens.
+    viewer.text_editor().jump = offset_of(broken, 4, 15);  // after "height: 48"
+    viewer.frame(state);
+    viewer.frame(state);
+    std::vector<KeyEvent> events;
+    type(events, ";");
+    viewer.key_events(state, events, 40.0, 16.0);
+    state.check.checker.wait();
+    viewer.frame(state);
+    EXPECT_TRUE(state.doc.loaded) << format_diagnostics(state.doc);
+    EXPECT_EQ(document_text(state.doc), read_file(kScene));
+    fs::remove_all(file.parent_path());
+}
+
 // Typing at the end of a long line left the cursor out of
 // view (the editor did not scroll sideways), and a long error message was
 // cut off at the list's edge.

@@ -82,13 +82,18 @@ void follow_document(const AppState& state, TextEditorState& ed) {
         set_buffer(ed, draft ? draft->text : included_text(doc, file));
         return;
     }
-    if (ed.shown_file.empty() && doc.revision == ed.shown_revision && doc.text == ed.shown_base &&
+    // The file's generation too: a file that has never loaded (no revision,
+    // no base text yet) is shown from its text on disk, which each load
+    // replaces.
+    if (ed.shown_file.empty() && doc.revision == ed.shown_revision &&
+        doc.file_generation == ed.shown_generation && doc.text == ed.shown_base &&
         doc.draft == ed.shown_draft)
         return;
     ed.shown_file.clear();
     ed.shown_base = doc.text;
     ed.shown_draft = doc.draft;
     ed.shown_revision = doc.revision;
+    ed.shown_generation = doc.file_generation;
     set_buffer(ed, document_text(doc));
 }
 
