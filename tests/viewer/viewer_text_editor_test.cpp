@@ -314,6 +314,70 @@ TEST(ViewerTextEditorOpen, AFileBrokenFromTheStartIsShownWithItsErrors) {
     fs::remove_all(file.parent_path());
 }
 
+// Found in the real window: a scene with a Latin-1 comment ("café") is
+// refused (not UTF-8 text), and the text editor showed an empty text, line
+// 1 and "No errors or warnings", ready to be typed over. Like a text with
+// NUL bytes, it says what the file is and is not edited here.
+TEST(ViewerTextEditorBytes, AFileThatIsNotUtf8IsNotShownAsAnEmptyText) {
+    HeadlessViewer viewer{1200, 700};
+    ASSERT_TRUE(viewer.ok()) << viewer.error();
+    const fs::path file = scene_copy("text-editor-latin1");
+    std::string latin1 = read_file(file);
+    latin1.insert(0, "# caf\xe9\n");
+    write_file(file, latin1);
+    AppState state{test_config()};
+    open_scene(state, file);
+    ASSERT_FALSE(state.doc.loaded);
+    viewer.press_key(state, keys::letter('T'));
+    ASSERT_TRUE(viewer.text_editor().open);
+    viewer.frame(state);
+    viewer.frame(state);
+    EXPECT_EQ(find_item(viewer.ui_items(), "text"), nullptr) << "an editable text";
+    EXPECT_NE(find_item(viewer.ui_items(), "not UTF-8 text"), nullptr) << "nothing says why";
+    std::vector<KeyEvent> events;
+    type(events, "x");
+    viewer.key_events(state, events, 40.0, 16.0);
+    EXPECT_FALSE(state.doc.draft.has_value()) << "typed over";
+    EXPECT_EQ(read_file(file), latin1);
+    fs::remove_all(file.parent_path());
+}
+
+// Found in the real window: a valid scene with an emoji in a comment (a
+// character past U+FFFF, which ImGui's 16-bit characters cannot hold).
+// One space typed anywhere wrote the whole text back with NUL bytes in the
+// emoji's place: the editor then refused the text and Save with it. The
+// text is not put in the widget; the panels still edit the scene.
+TEST(ViewerTextEditorBytes, ATextTheWidgetWouldChangeIsNotEditedInIt) {
+    HeadlessViewer viewer{1200, 700};
+    ASSERT_TRUE(viewer.ok()) << viewer.error();
+    const fs::path file = scene_copy("text-editor-emoji");
+    std::string text = read_file(file);
+    text.insert(0, "# \xf0\x9f\x98\x80 caf\xc3\xa9\n");
+    write_file(file, text);
+    AppState state{test_config()};
+    open_scene(state, file);
+    ASSERT_TRUE(state.doc.loaded) << format_diagnostics(state.doc);
+    viewer.press_key(state, keys::letter('T'));
+    viewer.frame(state);
+    EXPECT_EQ(find_item(viewer.ui_items(), "text"), nullptr) << "an editable text";
+    EXPECT_NE(find_item(viewer.ui_items(), "not UTF-8 text"), nullptr) << "nothing says why";
+    std::vector<KeyEvent> events;
+    type(events, " ");
+    viewer.key_events(state, events, 40.0, 16.0);
+    EXPECT_FALSE(state.doc.draft.has_value()) << "typed over";
+    EXPECT_EQ(document_text(state.doc), text);
+
+    // Only UTF-8 up to U+FFFF (the é): the text is edited as before.
+    text.replace(2, 4, "x");
+    write_file(file, text);
+    ASSERT_TRUE(viewer.run_until_loaded(state));
+    viewer.frame(state);
+    viewer.frame(state);
+    EXPECT_NE(find_item(viewer.ui_items(), "text"), nullptr);
+    EXPECT_EQ(viewer.text_editor().buffer, text);
+    fs::remove_all(file.parent_path());
+}
+
 // Typing at the end of a long line left the cursor out of
 // view (the editor did not scroll sideways), and a long error message was
 // cut off at the list's edge.

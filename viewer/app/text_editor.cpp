@@ -18,6 +18,7 @@
 #include <algorithm>
 #include <cstdio>
 #include <cstring>
+#include <string_view>
 
 namespace jt::view {
 
@@ -58,8 +59,46 @@ std::string_view line_text(const std::string& text, int line) {
         (end == std::string::npos ? text.size() : end) - static_cast<std::size_t>(start));
 }
 
+// ImGui's text widget decodes its text into 16-bit characters and encodes
+// it back on every edit: a byte that is not UTF-8 is cut or replaced, and a
+// character past U+FFFF (an emoji in a comment) came back as NUL bytes.
+std::size_t first_unshowable_byte(std::string_view text) {
+    const auto continuation = [&](std::size_t at) {
+        return at < text.size() && (static_cast<unsigned char>(text[at]) & 0xC0) == 0x80;
+    };
+    std::size_t at = 0;
+    while (at < text.size()) {
+        const auto c = static_cast<unsigned char>(text[at]);
+        if (c < 0x80) {
+            ++at;
+            continue;
+        }
+        std::size_t length = 0;
+        unsigned code = 0;
+        if (c >= 0xC2 && c <= 0xDF) {
+            length = 2;
+            code = c & 0x1Fu;
+        } else if (c >= 0xE0 && c <= 0xEF) {
+            length = 3;
+            code = c & 0x0Fu;
+        } else {
+            return at;  // a stray continuation, an overlong start, or past U+FFFF
+        }
+        for (std::size_t i = 1; i < length; ++i) {
+            if (!continuation(at + i)) return at;
+            code = (code << 6) | (static_cast<unsigned char>(text[at + i]) & 0x3Fu);
+        }
+        const bool overlong = length == 3 && code < 0x800;
+        const bool surrogate = code >= 0xD800 && code <= 0xDFFF;
+        if (overlong || surrogate || code > IM_UNICODE_CODEPOINT_MAX) return at;
+        at += length;
+    }
+    return std::string_view::npos;
+}
+
 void set_buffer(TextEditorState& ed, std::string text) {
     if (text == ed.shown) return;
+    ed.unshowable = first_unshowable_byte(text);
     ed.shown = text;
     ed.buffer = std::move(text);
     ed.push = true;
@@ -375,6 +414,19 @@ void text_editor(AppState& state, TextEditorState& ed, float x0, float y0, float
             "%s holds NUL bytes: it is no text the editor can show. Diagnostics say what is "
             "wrong; the viewer reloads it when it changes.",
             name.c_str());
+        ImGui::End();
+        return;
+    }
+    if (ed.unshowable != std::string::npos) {
+        const std::string_view before(ed.shown.data(), ed.unshowable);
+        const long line = 1 + std::count(before.begin(), before.end(), '\n');
+        const std::size_t column = ed.unshowable - (before.rfind('\n') + 1) + 1;
+        ImGui::TextWrapped(
+            "This text has a character at line %ld, column %zu that the editor cannot keep as "
+            "it is: a byte that is not UTF-8 text, or one past U+FFFF (an emoji, say). Edit it "
+            "in another editor; the viewer reloads it when it changes.",
+            line, column);
+        note_item("not UTF-8 text", false);
         ImGui::End();
         return;
     }
