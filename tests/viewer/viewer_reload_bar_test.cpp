@@ -188,5 +188,27 @@ TEST_F(ViewerNarrowWindow, AFailedReloadOffersALinkToTheErrorsOutOfView) {
     EXPECT_EQ(find_item(viewer.ui_items(), "show errors"), nullptr);
 }
 
+// Text typed with an error leaves the Diagnostics panel as the user left
+// it, collapsed here: the link opens it as well as scrolling to it.
+TEST_F(ViewerNarrowWindow, TheLinkOpensACollapsedDiagnosticsPanel) {
+    open_rendered_copy("errors-link-collapsed");
+    ASSERT_FALSE(HasFatalFailure());
+    std::string broken = document_text(state.doc);
+    broken.replace(broken.find("fov: 50;"), 8, "fov: 50 x;");
+    type_text(state, broken);
+    state.check.checker.wait();
+    for (int i = 0; i < 3; ++i) viewer.frame(state);
+    ASSERT_TRUE(state.doc.draft.has_value());
+    ASSERT_EQ(first_diagnostic(viewer.ui_items()), nullptr) << "the panel is collapsed";
+    ASSERT_TRUE(viewer.click(state, "show errors"));
+    for (int i = 0; i < 3; ++i) viewer.frame(state);
+    const UiItem* panel = find_item(viewer.ui_items(), "panel");
+    const UiItem* error = first_diagnostic(viewer.ui_items());
+    ASSERT_NE(panel, nullptr);
+    ASSERT_NE(error, nullptr) << "still collapsed";
+    EXPECT_LE(error->rect.y1, panel->rect.y1) << "scrolled into view";
+    EXPECT_EQ(find_item(viewer.ui_items(), "show errors"), nullptr);
+}
+
 }  // namespace
 }  // namespace jt::view

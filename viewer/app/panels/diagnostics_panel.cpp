@@ -43,11 +43,14 @@ void diagnostics_panel(AppState& state, DiagnosticsText& text) {
     char title[48];
     std::snprintf(title, sizeof title, "Diagnostics (%zu)###diag", diagnostics.size());
     text.first_in_view = false;
-    if (text.scroll_to) {
-        ImGui::SetScrollHereY(0.0f);  // the header at the top of the sidebar
+    // The status line's link: the header at the top of the sidebar, and the
+    // panel open (typed text's errors leave it as the user left it).
+    const bool reveal = text.scroll_to;
+    if (reveal) {
+        ImGui::SetScrollHereY(0.0f);
         text.scroll_to = false;
     }
-    if (errors) ImGui::SetNextItemOpen(true);
+    if (errors || reveal) ImGui::SetNextItemOpen(true);
     if (!panel_header(title, "Diagnostics", false)) return;
     if (diagnostics.empty()) {
         ImGui::TextDisabled("No errors or warnings.");
