@@ -17,6 +17,9 @@ namespace {
 void after_scene_replaced(AppState& state, const std::vector<Camera>& cameras_before) {
     keep_camera_selection(state.view, state.doc.scene, cameras_before);
     state.history.undo.clear();
+    // A burst of typing under way ends with the text it typed in: the next
+    // keystroke records the undo step the cleared history no longer holds.
+    state.history.typing = false;
     state.history.edit_base.reset();
     state.files.pending_reload.reset();
     state.files.save_conflict.clear();
@@ -136,12 +139,17 @@ void finish_reload(AppState& state, LoadAttempt attempt) {
     }
     // Replacing the scene now would throw the edits away: ask first.
     // The same text again: the only choice is whether to drop the edits, and
-    // the diagnostics stay those of the edited scene.
+    // the diagnostics stay those of the edited scene. So do those of typed
+    // text (a draft): the text editor shows that text with them, and its
+    // next keystroke would check it again anyway; the bar and the message
+    // say whether the file on disk has errors.
     const bool unchanged = attempt.text == state.doc.disk_text;
     state.files.reapply_problem.clear();
     if (!unchanged) {
         if (const Expected<Scene> reapplied = reapply_edits(state.doc, attempt); !reapplied)
             state.files.reapply_problem = reapplied.error().message;
+    }
+    if (!unchanged && !state.doc.draft) {
         state.doc.load_failed = !attempt.ok;
         state.doc.diagnostics = attempt.diagnostics;
         state.doc.diagnostics_source = attempt.text;
