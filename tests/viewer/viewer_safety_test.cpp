@@ -343,7 +343,7 @@ TEST_F(ViewerSafety, StatusAndTitleNameThePassTheTimesAndPausing) {
     EXPECT_NE(done.find("Mrays/s"), std::string::npos) << done;
     viewer.press_key(state, keys::space);
     // Paused when done: nothing is left to resume, only edits to hold back.
-    EXPECT_NE(render_status(state).find("done: 4 samples, paused | an edit waits for Space"),
+    EXPECT_NE(render_status(state).find("done: 4 samples, paused | edits wait for Space"),
               std::string::npos)
         << render_status(state);
     EXPECT_EQ(render_status(state).find("paused at"), std::string::npos) << render_status(state);

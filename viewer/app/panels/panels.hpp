@@ -71,7 +71,7 @@ std::optional<TransformCommand> transform_editor(std::vector<TransformOp>& trans
 
 // "sample 4 of 16 | 1.2 s elapsed, about 3.0 s left | 3.4 Mrays/s",
 // "paused at preview 1/4 | edit waiting: Space renders it", "done: ...",
-// "done: 4 samples, paused | an edit waits for Space"
+// "done: 4 samples, paused | edits wait for Space"
 std::string render_status(const AppState& state);
 // The same, written into `text` (its storage kept: the status line's every frame).
 void render_status(const AppState& state, std::string& text);

@@ -47,7 +47,7 @@ void render_status(const AppState& state, std::string& text) {
     // the pause only holds edits back until Space.
     if (state.render.paused && state.render.display_complete && !state.render.edit_waiting) {
         text += done;
-        text += ", paused | an edit waits for Space";
+        text += ", paused | edits wait for Space";
         return;
     }
     if (state.render.paused) {
