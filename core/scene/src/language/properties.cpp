@@ -63,7 +63,11 @@ bool PropertyReader::read(const PropertySpec<Block>& spec, const Property& p, Bl
                 return false;
             }
             if (check_range(spec.range, v.text) == RangeVerdict::outside) {
-                sink_.error(v.span.pos, out_of_range_message(spec, written(v)));
+                // In quotes, so that a word that is nearly a choice ("Smooth",
+                // "file ", "") shows exactly what differs.
+                sink_.error(v.span.pos,
+                            out_of_range_message(
+                                spec, spec.range.choices.empty() ? written(v) : as_written(v)));
                 return false;
             }
             out = std::string(v.text);
