@@ -162,6 +162,24 @@ TEST(Expressions, KindMistakesAreErrorsAtTheOperatorOrCall) {
               "1:29: error: a string cannot be used in arithmetic, got the string \"a\"");
 }
 
+// A word followed by '(' is a call: an unknown one is suggested among the
+// functions, not among the names (POV-Ray's vlength is our length).
+TEST(Expressions, AnUnknownFunctionSuggestsAFunction) {
+    const std::string functions =
+        " (functions: sin, cos, tan, asin, acos, atan2, sqrt, abs, floor, min, max, pow, "
+        "length, normalize, dot, cross)";
+    EXPECT_EQ(plane_error("vlength(<3, 4, 0>)"),
+              "1:27: error: unknown function 'vlength'; did you mean 'length'?" + functions);
+    EXPECT_EQ(brief("define sqrt2 = 1.4;\nscene { plane { distance: sqrtt(2); } }"),
+              "2:27: error: unknown function 'sqrtt'; did you mean 'sqrt'?" + functions);
+    EXPECT_EQ(plane_error("Sin(30)"),
+              "1:27: error: unknown function 'Sin'; did you mean 'sin'?" + functions);
+    EXPECT_EQ(plane_error("radians(30)"), "1:27: error: unknown function 'radians'" + functions);
+    // A name alone is still a name.
+    EXPECT_EQ(plane_error("sqrtt"),
+              "1:27: error: unknown name 'sqrtt' (names must be defined before they are used)");
+}
+
 TEST(Expressions, SyntaxErrorsWinOverEvaluation) {
     EXPECT_EQ(plane_error("1 / 0 +"),
               "1:34: error: expected a value (a number, a name, '(' or '<'), got ';'");

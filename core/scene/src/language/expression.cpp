@@ -266,6 +266,21 @@ bool ExpressionReader::parse_primary(int depth) {
     }
     if (find_function(word)) return parse_call(depth);
     const Symbol* symbol = names_.find(word);
+    if (!symbol && tokens_.peek().kind == TokenKind::lparen) {
+        // A call of a function there is not (a slip, or another language's
+        // name: POV-Ray's vlength, vnormalize): no file can define a
+        // function, so this is said whatever includes went unread.
+        std::vector<std::string_view> functions;
+        for (const FunctionSpec& f : kFunctions) functions.push_back(f.name);
+        std::string message = "unknown function " + quote(word.substr(0, 40));
+        if (std::string_view near = nearest_name(word, functions); !near.empty())
+            message += "; did you mean " + quote(near) + "?";
+        message += " (functions:";
+        for (std::size_t i = 0; i < functions.size(); ++i)
+            message += (i == 0 ? " " : ", ") + std::string(functions[i]);
+        sink_.error(t.pos, message + ")");
+        return false;
+    }
     if (!symbol) {
         if (!names_.reports_unknown()) return false;
         const std::vector<std::string_view> known = names_.names();
