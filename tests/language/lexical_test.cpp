@@ -211,6 +211,24 @@ TEST(Text, UnexpectedCharacterIsReportedAndSkipped) {
     EXPECT_EQ(brief("scene { sphere { radius: 2; } @ }"), "1:31: error: unexpected character '@'");
 }
 
+// One mistake, one error: a value cut short by a byte or number the lexer
+// refused is not also "expected ';'" (reported before the lexer's own error,
+// at an earlier column) nor a finding about what was left of the value.
+TEST(Text, AMistakeTheLexerReportedIsNotRepeatedByTheParser) {
+    EXPECT_EQ(brief("define r = 2^3;\nscene { sphere { radius: r; } }"),
+              "1:13: error: unexpected character '^'");
+    EXPECT_EQ(brief("define r = 2 \xC3\x97 3;"), "1:14: error: unexpected byte 0xC3");
+    EXPECT_EQ(brief("define \xCE\xA3 = 1;"), "1:8: error: unexpected byte 0xCE");
+    EXPECT_EQ(brief("define v = <1, 2, 3>;\ncameras { perspective_camera { fov: 40 * v.x; } }"),
+              "2:43: error: unexpected '.': values have no components such as .x (the x of v is "
+              "dot(v, <1, 0, 0>))");
+    EXPECT_EQ(brief("scene { sphere { radius: 5 % 2; center: <0, 0, 1>; } }"),
+              "1:28: error: unexpected character '%'");
+    // Two values side by side are still the missing ';' they look like.
+    EXPECT_EQ(brief("scene { sphere { radius: 2 3; } }"),
+              "1:27: error: expected ';' after the value of 'radius'");
+}
+
 }  // namespace
 }  // namespace jt
 

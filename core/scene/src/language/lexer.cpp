@@ -207,6 +207,7 @@ void Lexer::next_rare(Token& out) {
 
 void Lexer::skip_unexpected() {
     const std::size_t start = at_;
+    skipped_at_ = start;
     const char c = text_[start];
     auto u = static_cast<unsigned char>(c);
     if (u >= 0x20 && u < 0x7f) {
@@ -558,7 +559,13 @@ void Lexer::lex_number(std::size_t start, Token& token) {
         case NumberScan::exact:
             return;
         case NumberScan::malformed:
-            sink_.error(token.pos, "malformed number '" + std::string(run.substr(0, 40)) + "'");
+            // POV-Ray's `v.x`: a lone '.' before a letter is no number at all.
+            if (run == "." && at_ < n && is_word_start(text_[at_]))
+                sink_.error(token.pos,
+                            "unexpected '.': values have no components such as .x (the x of v "
+                            "is dot(v, <1, 0, 0>))");
+            else
+                sink_.error(token.pos, "malformed number '" + std::string(run.substr(0, 40)) + "'");
             token.kind = TokenKind::bad_value;
             return;
         case NumberScan::needs_library:

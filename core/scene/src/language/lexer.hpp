@@ -107,6 +107,11 @@ class Lexer {
     }
     // Continues from `offset`, on the line of the last token read.
     void skip_to(std::size_t offset) { at_ = offset; }
+    // Whether a byte that starts no token (reported and skipped) stood in
+    // [from, to): then a parser's "expected ';'" there would only repeat it.
+    bool skipped_between(std::size_t from, std::size_t to) const {
+        return skipped_at_ != npos_skipped && skipped_at_ >= from && skipped_at_ < to;
+    }
     // Continues from `offset`, which is at `pos` (a token this text gave before).
     void resume_at(std::size_t offset, SourcePos pos) {
         at_ = offset;
@@ -139,6 +144,9 @@ class Lexer {
     // Whether the text's last byte ends a word: then every word ends inside
     // the text, and next() scans one with no test of the end.
     bool words_stop_inside_ = false;
+    static constexpr std::size_t npos_skipped = static_cast<std::size_t>(-1);
+    // The offset of the last byte skip_unexpected() reported.
+    std::size_t skipped_at_ = npos_skipped;
 };
 
 // A short description of a token for messages: "the number 2", "'}'", "the word 'foo'".

@@ -112,7 +112,7 @@ bool SceneParser::read_property(Property& property, bool try_plain) {
         skip_statement();
         return false;
     }
-    if (property.value.form == Value::Form::bad) {
+    if (property.value.form == Value::Form::bad || cut_short(property.value)) {
         skip_statement();
         return false;
     }

@@ -97,6 +97,14 @@ class SceneParser final : private TokenCursor {
     const Token& cur() const override { return *cur_; }
     const Token& peek() const override { return *next_; }
     bool at(TokenKind kind) const { return cur_->kind == kind; }
+    // Whether what follows `value` is a mistake the lexer has reported (a
+    // malformed number, a byte that starts no token): the value's statement
+    // is then skipped, with no "expected ';'" and no finding about the value
+    // cut short, which would only echo that one mistake.
+    bool cut_short(const Value& value) const {
+        return at(TokenKind::bad_value) ||
+               reading_->skipped_between(value.span.offset + value.span.length, cur_->offset);
+    }
 
     // --- skipping bad input (parse_blocks.cpp) -------------------------------
 
