@@ -240,6 +240,14 @@ TEST_F(Include, AFifoIsRefusedWithoutWaitingForAWriter) {
               "1:9: error: '/dev/null' is a device, not a scene file");
 }
 
+TEST_F(Include, ABackslashInAPathThatIsNotFoundSaysFoldersUseSlashes) {
+    write("parts/ball.jts", "define r = 1;\n");
+    EXPECT_EQ(brief(parse("include \"parts\\ball.jts\";").diagnostics),
+              "1:9: error: cannot read '" + (dir / "parts\\ball.jts").string() +
+                  "': no such file (folders are separated by '/' on every platform)");
+    EXPECT_EQ(brief(parse("include \"parts/ball.jts\";").diagnostics), "");
+}
+
 TEST_F(Include, TheSameFileTwiceIsFineUnlessItDefinesNames) {
     write("ball.jts", "sphere { radius: r; }\n");
     ParseResult r = parse(

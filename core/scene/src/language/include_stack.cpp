@@ -88,7 +88,11 @@ std::optional<IncludeStack::Opened> IncludeStack::open(std::string_view path, So
     if (!read) {
         unreadable = true;
         unread_.push_back(read_path.string());
-        sink.error(at, read.error().message);
+        std::string message = read.error().message;
+        // A Windows habit: '\\' is a character of a file name here.
+        if (path.find('\\') != std::string_view::npos)
+            message += " (folders are separated by '/' on every platform)";
+        sink.error(at, message);
         return std::nullopt;
     }
     const std::string shown = normal(beside(fs::path(name(from)), written));
