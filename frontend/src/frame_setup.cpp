@@ -30,7 +30,18 @@ FrameSetup set_up_loaded(std::string_view program, const RenderFlags& flags, Loa
 
 std::string camera_names(const Scene& scene) {
     std::string names;
-    for (const Camera& c : scene.cameras) names += (names.empty() ? "\"" : ", \"") + c.name + "\"";
+    std::size_t unnamed = 0;
+    for (const Camera& c : scene.cameras) {
+        // An unnamed camera cannot be chosen by name: listing it as "" would
+        // read as a camera whose name is empty quotes.
+        if (c.name.empty()) {
+            ++unnamed;
+            continue;
+        }
+        names += (names.empty() ? "\"" : ", \"") + c.name + "\"";
+    }
+    if (unnamed > 0)
+        names += (names.empty() ? "" : " and ") + std::to_string(unnamed) + " without a name";
     return names.empty() ? "none" : names;
 }
 

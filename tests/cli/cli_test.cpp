@@ -154,6 +154,19 @@ TEST_F(Cli, CameraOptionPicksTheCamera) {
     EXPECT_EQ(r.code, 2);
     EXPECT_NE(r.err.find("\"front\", \"top\""), std::string::npos) << r.err;
     EXPECT_EQ(outputs(), (std::vector<std::string>{"front.bmp", "top.bmp"}));
+    // Cameras without a name are counted, not listed as "" (no --camera picks one).
+    write("unnamed.jts",
+          "cameras { perspective_camera { } perspective_camera { name: \"top\"; } "
+          "perspective_camera { } }\n");
+    r = run("unnamed.jts --camera nowhere --width 4 --height 4");
+    EXPECT_EQ(r.code, 2);
+    EXPECT_NE(r.err.find("the scene has no camera named \"nowhere\" (its cameras: \"top\" and 2 "
+                         "without a name)"),
+              std::string::npos)
+        << r.err;
+    write("alone.jts", "cameras { perspective_camera { } }\n");
+    r = run("alone.jts --camera nowhere --width 4 --height 4");
+    EXPECT_NE(r.err.find("(its cameras: 1 without a name)"), std::string::npos) << r.err;
 }
 
 TEST_F(Cli, CheckValidatesAndWritesNothing) {

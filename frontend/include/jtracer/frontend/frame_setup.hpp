@@ -52,7 +52,8 @@ FrameSetup set_up_frame(std::string_view program, const RenderFlags& flags, Load
                         LoadedPrimitives primitives,
                         const std::optional<FrameRegion>& region = std::nullopt);
 
-// The scene's camera names, quoted, for messages: "\"front\", \"top\"", or
+// The scene's camera names, quoted, for messages: "\"front\", \"top\"", with
+// "and 2 without a name" for the unnamed ones, or
 // "none".
 std::string camera_names(const Scene& scene);
 
