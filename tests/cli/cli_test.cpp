@@ -169,6 +169,34 @@ TEST_F(Cli, CameraOptionPicksTheCamera) {
     EXPECT_NE(r.err.find("(its cameras: 1 without a name)"), std::string::npos) << r.err;
 }
 
+// A render of hours must not end in "cannot write": a missing folder or a
+// folder in the way is found before the render starts.
+TEST_F(Cli, AnOutputThatCannotBeWrittenStopsBeforeTheRender) {
+    test::ProgramRun r = run("scene.jts -o no/such/folder/out.bmp");
+    EXPECT_EQ(r.code, 3);
+    EXPECT_NE(r.err.find("jtracer-cli: cannot write 'no/such/folder/out.bmp': No such file or "
+                         "directory; nothing was rendered"),
+              std::string::npos)
+        << r.err;
+    fs::create_directory(dir / "taken.bmp");
+    r = run("scene.jts -o taken.bmp");
+    EXPECT_EQ(r.code, 3);
+    EXPECT_NE(r.err.find("cannot write 'taken.bmp': it is a directory; nothing was rendered"),
+              std::string::npos)
+        << r.err;
+    // Each frame's file, which may be in a folder of its own, before its render.
+    fs::create_directory(dir / "f0");
+    r = run("scene.jts --frames 2 -o 'f%d/shot.bmp'");
+    EXPECT_EQ(r.code, 3);
+    EXPECT_NE(r.err.find("cannot write 'f1/shot.bmp': No such file or directory; frames 0..0 "
+                         "were written"),
+              std::string::npos)
+        << r.err;
+    EXPECT_EQ(r.err.find("frame 1, clock"), std::string::npos) << r.err;
+    EXPECT_EQ(outputs(), (std::vector<std::string>{"f0", "taken.bmp"}));
+    EXPECT_TRUE(fs::exists(dir / "f0" / "shot.bmp"));
+}
+
 TEST_F(Cli, CheckValidatesAndWritesNothing) {
     test::ProgramRun r = run("--check scene.jts");
     EXPECT_EQ(r.code, 0) << r.err;
