@@ -137,6 +137,31 @@ TEST(Names, NamedMaterialMistakes) {
               "render_settings, cameras, scene)");
 }
 
+// A misspelt or misplaced property is the mistake reported, not what its
+// value's evaluation would say: that hid the name behind "unknown name" or
+// "a material, not a value: use it with 'material: shiny;'" (which it was).
+TEST(Names, AnUnknownPropertyIsReportedNotItsValue) {
+    const std::string shiny = "define r = 1;\nmaterial shiny { reflection: 0.5; }\n";
+    EXPECT_EQ(brief(shiny + "cameras { perspective_camera { fox: zz * 2; } }"),
+              "3:32: error: unknown property 'fox' in 'perspective_camera'; did you mean 'fov'? "
+              "(allowed: name, position, look_at, up, aspect, fov, aperture, focus_distance)");
+    EXPECT_EQ(brief(shiny + "scene { point_light { radus: 1 / 0; } }"),
+              "3:23: error: unknown property 'radus' in 'point_light'; did you mean 'radius'? "
+              "(allowed: position, intensity, radius, shadow_samples)");
+    EXPECT_EQ(brief(shiny + "scene { point_light { material: shiny; } }"),
+              "3:23: error: unknown property 'material' in 'point_light' (allowed: position, "
+              "intensity, radius, shadow_samples)");
+    EXPECT_EQ(brief(shiny + "material dull { material: shiny; }"),
+              "3:17: error: a material cannot use another material: 'material: NAME;' stands "
+              "directly in a sphere, plane, cylinder, triangle or mesh");
+    EXPECT_EQ(brief(shiny + "scene { sphere { transform { turn: r; } } }"),
+              "3:30: error: unknown property 'turn' in 'transform' (allowed: translate, scale, "
+              "xrotate, yrotate, zrotate)");
+    // A known name still has its value read, and its value's errors said.
+    EXPECT_EQ(brief(shiny + "scene { sphere { radius: zz; } }"),
+              "3:26: error: unknown name 'zz' (names must be defined before they are used)");
+}
+
 // A material block missing its '{' sets nothing, so it keeps nothing of the
 // named material from applying, whatever block the text read before it.
 TEST(Names, AMaterialBlockMissingItsBraceKeepsNothingFromTheNamedMaterial) {

@@ -200,7 +200,9 @@ class SceneParser final : private TokenCursor {
     // applies. False (reported, skipped) with no ':' or no good value; a
     // missing ';' is reported and the property applies. `try_plain`: first as
     // a plain value (read_plain_value), which the caller has not tried.
-    bool read_property(Property& property, bool try_plain);
+    // `keyword`: the block's, so that a name it does not know has its value
+    // skipped rather than evaluated (empty: every name is read).
+    bool read_property(Property& property, bool try_plain, std::string_view keyword = {});
 
     // --- the scene block (parse_scene_block.cpp) -----------------------------
 
