@@ -129,6 +129,7 @@ class Lexer {
     // strings made next() save six registers and a frame for every token.
     [[gnu::noinline]] void lex_number(std::size_t start, Token& out);
     [[gnu::noinline]] void lex_string(std::size_t start, Token& out);
+    [[gnu::noinline]] void lex_curly_string(std::size_t start, Token& out);
     // Reports the byte at at_, which starts no token, and skips it.
     [[gnu::noinline]] void skip_unexpected();
     SourcePos pos_of(std::size_t offset) const {
