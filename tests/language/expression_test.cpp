@@ -160,6 +160,14 @@ TEST(Expressions, KindMistakesAreErrorsAtTheOperatorOrCall) {
     // A string in arithmetic: at the string.
     EXPECT_EQ(brief("render_settings { filename: \"a\" + 1; }"),
               "1:29: error: a string cannot be used in arithmetic, got the string \"a\"");
+    // Nor in parentheses: a string value is one literal or one name.
+    EXPECT_EQ(brief("define s = \"a.bmp\";\nrender_settings { filename: (s); }"),
+              "2:29: error: parentheses hold numbers and vectors, not a string: write the "
+              "string, or the name of one, alone");
+    EXPECT_EQ(brief("define s = ((\"a.bmp\"));"),
+              "1:12: error: parentheses hold numbers and vectors, not a string: write the "
+              "string, or the name of one, alone");
+    EXPECT_EQ(brief("define s = \"a.bmp\";\ndefine t = s;\nrender_settings { filename: t; }"), "");
 }
 
 // A word followed by '(' is a call: an unknown one is suggested among the

@@ -163,6 +163,15 @@ ParsedValue ExpressionReader::read(bool evaluate_it) {
         sink_.error(failure_.pos, std::move(failure_.message));
         return out;
     }
+    // A string value is one string literal or one name, nothing else
+    // (docs/language.md §15.3); arithmetic on one fails above, and this is
+    // the rest: a string in parentheses.
+    if (evaluate_it && stack_.back().value.kind == Kind::string && operations_ != 1) {
+        sink_.error(out.span.pos,
+                    "parentheses hold numbers and vectors, not a string: write the string, or "
+                    "the name of one, alone");
+        return out;
+    }
     out.ok = true;
     if (evaluate_it) out.value = stack_.back().value;
     return out;
