@@ -211,21 +211,33 @@ int run_info_command(int argc, char** argv) {
         "Examples:\n"
         "  jtracer-cli info scenes/mesh.jts\n"
         "  jtracer-cli info scenes/mesh.jts --json\n"
+        "  jtracer-cli info scenes/orbit.jts --clock 0.5\n"
         "\n"
         "Exit codes: 0 ok, 1 errors in the scene, 2 bad command line, 3 a file that cannot\n"
         "be read.\n");
     app.add_option("scene", scene_path, "The scene file (.jts)")->required();
     app.add_flag("--json", json_output, "Print it all as one JSON object");
+    // The scene a render with these values would hold: a camera that moves
+    // with clock is shown where it stands at that clock.
+    std::vector<std::string> defines;
+    std::optional<double> clock;
+    add_scene_value_flags(app, defines, clock);
     if (std::optional<int> code = parse_command_line(app, argc, argv, "jtracer-cli info"))
         return *code;
-    Expected<LoadedScene> loaded = load_scene_file(scene_path, {.source_map = false});
+    ParseOptions options = scene_value_options(defines, clock);
+    options.source_map = false;
+    Expected<LoadedScene> loaded = load_scene_file(scene_path, options);
     if (!loaded) {
         std::cerr << "jtracer-cli info: " << loaded.error().message << "\n";
         return exit_io_error;
     }
     std::vector<Diagnostic> diagnostics = check_scene(
         *loaded, {.validation = {.run_chunks = parallel_chunks(), .primitives_as_parsed = true}});
-    name_setting_flags(diagnostics);
+    // The image's size is a render's to set (--width, --height), and info,
+    // which takes neither, describes the scene whatever size it renders at.
+    std::erase_if(diagnostics, [](const Diagnostic& d) {
+        return d.setting == "width" || d.setting == "height";
+    });
     if (has_errors(diagnostics)) {
         std::cerr << format_diagnostics(diagnostics, *loaded);
         return exit_scene_error;

@@ -113,6 +113,20 @@ def test_info_shows_soft_shadows_and_the_lens(cli, tmp_path):
     assert [(c["aperture"], c["focus_distance"]) for c in info["cameras"]] == [(0.25, 6), (0.5, 2)]
 
 
+def test_info_takes_define_and_clock_as_a_render_does(cli, tmp_path):
+    path = tmp_path / "moving.jts"
+    path.write_text("define r = 1;\n"
+                    "cameras { perspective_camera { position: <r, 10 * clock, 5>; } }\n")
+    info = json.loads(run(cli, "info", path, "--json", "--clock", "0.5", "--define", "r=3")[1])
+    assert info["cameras"][0]["position"] == [3, 5, 5]
+    # No width or height: a render's to set, which info does not ask for
+    # (it takes no --width).
+    _, out, err = run(cli, "info", path)
+    assert 'camera "" (active): at <1, 0, 5>' in out and "width" not in err
+    code, _, err = run(cli, "info", path, "--clock", "nan", check=False)
+    assert code == 2 and "--clock" in err
+
+
 def test_info_of_a_bad_scene_reports_like_check(cli, tmp_path):
     bad = tmp_path / "bad.jts"
     bad.write_text("scene { sphere { radius: -1; } }\n")
