@@ -197,6 +197,21 @@ TEST_F(Cli, AnOutputThatCannotBeWrittenStopsBeforeTheRender) {
     EXPECT_TRUE(fs::exists(dir / "f0" / "shot.bmp"));
 }
 
+// A sequence's -o without --frames writes one image under that very name:
+// said, since the field shows a sequence was meant.
+TEST_F(Cli, AFrameNumberFieldWithoutFramesWarns) {
+    test::ProgramRun r = run("scene.jts -o 'shot-%04d.png'");
+    EXPECT_EQ(r.code, 0) << r.err;
+    EXPECT_NE(r.err.find("jtracer-cli: warning: -o/--output 'shot-%04d.png' has a frame number "
+                         "field, but without --frames N one image is written under that very "
+                         "name"),
+              std::string::npos)
+        << r.err;
+    EXPECT_EQ(outputs(), std::vector<std::string>{"shot-%04d.png"});
+    r = run("scene.jts -o 'full-100%.png'");
+    EXPECT_EQ(r.err.find("frame number field"), std::string::npos) << r.err;
+}
+
 TEST_F(Cli, CheckValidatesAndWritesNothing) {
     test::ProgramRun r = run("--check scene.jts");
     EXPECT_EQ(r.code, 0) << r.err;
