@@ -56,6 +56,21 @@ TEST(Names, MustBeDefinedBeforeUseWithDidYouMean) {
               "used); did you mean 'radius1'?");
 }
 
+// A POV-Ray user's directives are comments here ('#' starts one), which is
+// why their names are unknown: the message says so, and where.
+TEST(Names, AnUnknownNameAfterAPovRayDirectiveSaysItIsAComment) {
+    const std::string hint =
+        "; POV-Ray's #include and #declare are comments here, as at 2:1: write include "
+        "\"FILE\"; and define NAME = VALUE;";
+    EXPECT_EQ(brief("# a scene\n#declare R = 1;\nscene { sphere { radius: R; } }"),
+              "3:26: error: unknown name 'R' (names must be defined before they are used)" + hint);
+    EXPECT_EQ(brief("# a scene\n#include \"colors.inc\"\nscene { sphere { radius: R; } }"),
+              "3:26: error: unknown name 'R' (names must be defined before they are used)" + hint);
+    // Other comments say nothing.
+    EXPECT_EQ(brief("# include guard\n#includes\nscene { sphere { radius: R; } }"),
+              "3:26: error: unknown name 'R' (names must be defined before they are used)");
+}
+
 TEST(Names, DefiningTwiceNamesTheFirst) {
     EXPECT_EQ(brief("define r = 1;\ndefine r = 2;\n"),
               "2:8: error: 'r' is defined twice: it was first defined at 1:8");

@@ -301,6 +301,12 @@ bool ExpressionReader::parse_primary(int depth) {
         for (char c : word) lower += static_cast<char>(c >= 'A' && c <= 'Z' ? c - 'A' + 'a' : c);
         if (lower == "nan" || lower == "inf" || lower == "infinity")
             message += "; numbers must be finite";
+        // POV-Ray's '#include "colors.inc"' or '#declare R = 1;' is a
+        // comment here, which is why its names are unknown.
+        if (const SourcePos directive = tokens_.directive_comment(); directive.line > 0)
+            message += "; POV-Ray's #include and #declare are comments here, as at " +
+                       std::to_string(directive.line) + ":" + std::to_string(directive.column) +
+                       ": write include \"FILE\"; and define NAME = VALUE;";
         sink_.error(t.pos, std::move(message));
         return false;
     }

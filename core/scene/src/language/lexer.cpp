@@ -130,12 +130,23 @@ void Lexer::skip_space_and_comments() {
             ++line_;
             line_start_ = at_;
         } else if (c == '#') {
+            if (directive_comment_.line == 0 && at_ + 1 < n &&
+                (text_[at_ + 1] == 'i' || text_[at_ + 1] == 'd' || text_[at_ + 1] == 'l'))
+                note_directive_comment();
             const void* nl = std::memchr(text_.data() + at_, '\n', n - at_);
             at_ = nl ? static_cast<std::size_t>(static_cast<const char*>(nl) - text_.data()) : n;
         } else {
             return;
         }
     }
+}
+
+void Lexer::note_directive_comment() {
+    const std::string_view rest = text_.substr(at_ + 1);
+    for (std::string_view directive : {"include", "declare", "local"})
+        if (rest.starts_with(directive) && rest.size() > directive.size() &&
+            (rest[directive.size()] == ' ' || rest[directive.size()] == '\t'))
+            directive_comment_ = pos_of(at_);
 }
 
 bool Lexer::take_word_or_mark(Token& out) {

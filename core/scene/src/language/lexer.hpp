@@ -107,6 +107,9 @@ class Lexer {
     }
     // Continues from `offset`, on the line of the last token read.
     void skip_to(std::size_t offset) { at_ = offset; }
+    // The first comment read that starts as a POV-Ray directive ("#include",
+    // "#declare", "#local"); line 0 when none has.
+    SourcePos directive_comment() const { return directive_comment_; }
     // Whether a byte that starts no token (reported and skipped) stood in
     // [from, to): then a parser's "expected ';'" there would only repeat it.
     bool skipped_between(std::size_t from, std::size_t to) const {
@@ -148,6 +151,8 @@ class Lexer {
     static constexpr std::size_t npos_skipped = static_cast<std::size_t>(-1);
     // The offset of the last byte skip_unexpected() reported.
     std::size_t skipped_at_ = npos_skipped;
+    SourcePos directive_comment_{0, 0, 0};
+    [[gnu::noinline]] void note_directive_comment();
 };
 
 // A short description of a token for messages: "the number 2", "'}'", "the word 'foo'".

@@ -96,6 +96,8 @@ class SceneParser final : private TokenCursor {
     }
     const Token& cur() const override { return *cur_; }
     const Token& peek() const override { return *next_; }
+    // The main file's only: a line and column of another file would need its name.
+    SourcePos directive_comment() const override { return lexer_.directive_comment(); }
     bool at(TokenKind kind) const { return cur_->kind == kind; }
     // Whether what follows `value` is a mistake the lexer has reported (a
     // malformed number, a byte that starts no token): the value's statement
