@@ -1,5 +1,6 @@
 #include "options.hpp"
 
+#include "jtracer/frontend/frame_file_name.hpp"
 #include "jtracer/image_file.hpp"
 
 #include <CLI/CLI.hpp>
@@ -63,6 +64,12 @@ std::string format_warning(const Options& o, const std::string& output) {
         return "jtracer-cli: warning: -o/--output '" + output +
                "' is written as a BMP: JTracer writes a PNG for a name ending in .png and a BMP "
                "for any other\n";
+    // 'shot-%04d.png' without --frames is one image under that very name: the
+    // field says a sequence was meant.
+    if (o.output && !o.frames && jt::frontend::parse_frame_name_pattern(output))
+        return "jtracer-cli: warning: -o/--output '" + output +
+               "' has a frame number field, but without --frames N one image is written under "
+               "that very name\n";
     return {};
 }
 

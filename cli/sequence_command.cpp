@@ -56,6 +56,13 @@ int run_sequence(const Options& o) {
                       << "\n";
             return exit_io_error;
         }
+        // Each frame's file may be in a folder of its own (-o 'f%d/shot.png').
+        if (Expected<void> writable = check_output_writable(frame.output); !writable) {
+            display.finish();
+            std::cerr << "jtracer-cli: " << writable.error().message << "; " << kept(range, index)
+                      << "\n";
+            return exit_io_error;
+        }
         RenderJob job(frame.prepared, frame.render);
         const int done = index - range.first;
         const bool rendered = render_interruptibly(job, display, [&](const RenderProgress& p) {

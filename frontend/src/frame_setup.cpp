@@ -4,6 +4,13 @@
 #include "jtracer/scene_file.hpp"
 #include "jtracer/validate.hpp"
 
+#include <unistd.h>
+
+#include <cerrno>
+#include <cstdlib>
+#include <cstring>
+#include <filesystem>
+
 namespace jt::frontend {
 
 namespace {
@@ -28,9 +35,44 @@ FrameSetup set_up_loaded(std::string_view program, const RenderFlags& flags, Loa
 
 }  // namespace
 
+Expected<void> check_output_writable(const std::string& output) {
+    namespace fs = std::filesystem;
+    auto cannot = [&](const std::string& why) {
+        return Error{"cannot write '" + output + "': " + why};
+    };
+    if (output.empty()) return Error{"cannot write an image to an empty file name"};
+    std::error_code ec;
+    const fs::file_status status = fs::status(output, ec);
+    if (fs::is_directory(status)) return cannot("it is a directory");
+    if (fs::exists(status) && !fs::is_regular_file(status)) return {};
+    // As the writer does: the temporary file goes beside the file a link names.
+    fs::path real(output);
+    if (fs::is_symlink(fs::symlink_status(real, ec))) {
+        real = fs::weakly_canonical(real, ec);
+        if (ec) return cannot(ec.message());
+    }
+    std::string probe = real.string() + ".tmp-XXXXXX";
+    const int fd = ::mkstemp(probe.data());
+    if (fd < 0) return cannot(std::strerror(errno));
+    ::close(fd);
+    ::unlink(probe.c_str());
+    return {};
+}
+
 std::string camera_names(const Scene& scene) {
     std::string names;
-    for (const Camera& c : scene.cameras) names += (names.empty() ? "\"" : ", \"") + c.name + "\"";
+    std::size_t unnamed = 0;
+    for (const Camera& c : scene.cameras) {
+        // An unnamed camera cannot be chosen by name: listing it as "" would
+        // read as a camera whose name is empty quotes.
+        if (c.name.empty()) {
+            ++unnamed;
+            continue;
+        }
+        names += (names.empty() ? "\"" : ", \"") + c.name + "\"";
+    }
+    if (unnamed > 0)
+        names += (names.empty() ? "" : " and ") + std::to_string(unnamed) + " without a name";
     return names.empty() ? "none" : names;
 }
 

@@ -35,7 +35,7 @@ py::list diagnostic_list(const std::vector<Diagnostic>& diagnostics, const Loade
                                     const LoadedScene& loaded);
 // A core or front-end message with the command line's flags named as this
 // module's arguments: "width", not "--width"; "set by defines", not "set by
-// --define"; "pass clock=", not "use --clock".
+// --define".
 std::string with_argument_names(std::string text);
 // The hint of a diagnostic that asks for a render setting, in Python's words:
 // "... or pass width= to Scene.render()" where jtracer-cli says "--width".

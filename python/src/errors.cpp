@@ -66,10 +66,8 @@ void raise_scene_error(const std::string& message, const std::vector<Diagnostic>
 
 std::string with_argument_names(std::string text) {
     static constexpr std::pair<std::string_view, std::string_view> renamed[] = {
-        {"set with --define; use --clock", "set in defines; pass clock="},
         {"set by --define", "set by defines"},
         {"--define ", "defines: "},
-        {"--clock", "clock="},
         {"--width", "width"},
         {"--height", "height"},
         {"--samples", "samples"},

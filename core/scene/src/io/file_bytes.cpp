@@ -45,7 +45,9 @@ std::string file_message(const std::filesystem::path& path, const std::string& m
 }
 
 Expected<std::vector<std::uint8_t>> read_file_bytes(const std::filesystem::path& path) {
-    FileDescriptor file(::open(path.c_str(), O_RDONLY | O_CLOEXEC));
+    // O_NONBLOCK so that opening a named pipe does not wait for a writer that
+    // may never come; reads block again below, once the file is open.
+    FileDescriptor file(::open(path.c_str(), O_RDONLY | O_CLOEXEC | O_NONBLOCK));
     if (file.get() < 0) return read_error(path, std::strerror(errno));
     struct stat status {};
     if (::fstat(file.get(), &status) != 0) return read_error(path, std::strerror(errno));
@@ -55,6 +57,11 @@ Expected<std::vector<std::uint8_t>> read_file_bytes(const std::filesystem::path&
     if (S_ISCHR(status.st_mode) || S_ISBLK(status.st_mode))
         return read_error(path, "it is a device, not a file");
     const bool regular = S_ISREG(status.st_mode);
+    if (!regular) {
+        const int flags = ::fcntl(file.get(), F_GETFL);
+        if (flags < 0 || ::fcntl(file.get(), F_SETFL, flags & ~O_NONBLOCK) < 0)
+            return read_error(path, std::strerror(errno));
+    }
     std::vector<std::uint8_t> bytes;
     if (regular) bytes.reserve(static_cast<std::size_t>(status.st_size));
     std::uint8_t buffer[65536];
@@ -70,6 +77,10 @@ Expected<std::vector<std::uint8_t>> read_file_bytes(const std::filesystem::path&
             return read_error(
                 path, "a pipe that gives more than " + std::to_string(kMaxStreamBytes) + " bytes");
     }
+    // A pipe with no writer reads as empty: say so rather than let the
+    // caller call nothing at all a broken image.
+    if (S_ISFIFO(status.st_mode) && bytes.empty())
+        return read_error(path, "a named pipe (FIFO) with nothing written to it");
     return bytes;
 }
 
