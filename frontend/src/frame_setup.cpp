@@ -1,5 +1,6 @@
 #include "jtracer/frontend/frame_setup.hpp"
 
+#include "jtracer/atomic_file.hpp"
 #include "jtracer/parallel_chunks.hpp"
 #include "jtracer/scene_file.hpp"
 #include "jtracer/validate.hpp"
@@ -46,12 +47,7 @@ Expected<void> check_output_writable(const std::string& output) {
     if (fs::is_directory(status)) return cannot("it is a directory");
     if (fs::exists(status) && !fs::is_regular_file(status)) return {};
     // As the writer does: the temporary file goes beside the file a link names.
-    fs::path real(output);
-    if (fs::is_symlink(fs::symlink_status(real, ec))) {
-        real = fs::weakly_canonical(real, ec);
-        if (ec) return cannot(ec.message());
-    }
-    std::string probe = real.string() + ".tmp-XXXXXX";
+    std::string probe = file_behind_links(output).string() + ".tmp-XXXXXX";
     const int fd = ::mkstemp(probe.data());
     if (fd < 0) return cannot(std::strerror(errno));
     ::close(fd);
