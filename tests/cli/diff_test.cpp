@@ -173,6 +173,18 @@ TEST_F(Diff, DevicesAreRefusedAtOnce) {
     EXPECT_EQ(r.code, 0) << r.err;
 }
 
+// A file larger than any image is refused by its size, at once: read whole,
+// a 6 GB sparse file took 6 GB of memory and seconds before "too large".
+TEST_F(Diff, AFileLargerThanAnyImageIsRefusedByItsSize) {
+    std::filesystem::resize_file(dir / "a.png", 0);
+    std::filesystem::resize_file(dir / "a.png", std::uintmax_t{6} << 30);
+    ProgramRun r = run(std::string(test::memory_cap) + "timeout 60 " + cli + " diff a.png a.bmp");
+    EXPECT_EQ(r.code, 3) << r.err;
+    EXPECT_NE(r.err.find("'a.png': it is 6442450944 bytes, larger than any image"),
+              std::string::npos)
+        << r.err;
+}
+
 // A file cut short (an interrupted copy or download) or empty says so, in
 // words: stb's "outofdata", and "no 'BM' header" for a BMP whose header is
 // there but short, or for an empty file read as a PNG, said otherwise.
