@@ -2,6 +2,7 @@
 
 #include "comparison_report.hpp"
 
+#include "jtracer/atomic_file.hpp"
 #include "jtracer/frontend/render_flags.hpp"
 #include "jtracer/image_diff.hpp"
 #include "jtracer/image_file.hpp"
@@ -207,11 +208,16 @@ int run_diff_command(int argc, char** argv) {
     }
 }
 
+std::string heat_map_path_for(const std::string& render_path) {
+    // Beside the file a link names: `-o /dev/stdout > out.png` writes out.png
+    // (through /proc/self/fd/1), whose heat map belongs beside it, not in /dev.
+    return file_behind_links(render_path).replace_extension(".diff.png").string();
+}
+
 int check_expected(const Image8& render, const std::string& render_path,
                    const ExpectOptions& expect, double seconds) {
     const std::string& reference = expect.reference;
-    const std::string heat_map_path =
-        std::filesystem::path(render_path).replace_extension(".diff.png").string();
+    const std::string heat_map_path = heat_map_path_for(render_path);
     // A heat map left beside the render by an earlier run that failed would
     // say this one failed too (to a person, or to CI keeping out/ as an
     // artifact): only a render outside the tolerance keeps one.

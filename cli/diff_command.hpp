@@ -43,6 +43,10 @@ struct ExpectOptions {
     bool quiet = false;
 };
 
+// Where --expect puts the heat map of a render outside the tolerance:
+// out.png -> out.diff.png, beside the file when out.png is a link to it.
+std::string heat_map_path_for(const std::string& render_path);
+
 // --expect: compares the render written to `render_path` with the reference
 // and reports on stderr. Outside the tolerance it writes the heat map beside
 // the render (out.png -> out.diff.png) and returns 1, or with `update` writes

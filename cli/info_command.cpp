@@ -77,19 +77,26 @@ Expected<json> describe(const Scene& scene) {
 
     json lights = json::array();
     for (const PointLight& l : scene.lights)
-        lights.push_back({{"position", vec(l.position)}, {"intensity", vec(l.intensity)}});
+        lights.push_back({{"position", vec(l.position)},
+                          {"intensity", vec(l.intensity)},
+                          {"radius", l.radius},
+                          {"shadow_samples", l.shadow_samples}});
     out["lights"] = lights;
 
     json cameras = json::array();
     const int active = active_camera_index(scene);
     for (std::size_t i = 0; i < scene.cameras.size(); ++i) {
         const Camera& c = scene.cameras[i];
-        cameras.push_back({{"name", c.name},
-                           {"position", vec(c.position)},
-                           {"look_at", vec(c.look_at)},
-                           {"direction", vec(glm::normalize(c.look_at - c.position))},
-                           {"fov", c.fov},
-                           {"active", static_cast<int>(i) == active}});
+        cameras.push_back(
+            {{"name", c.name},
+             {"position", vec(c.position)},
+             {"look_at", vec(c.look_at)},
+             {"direction", vec(glm::normalize(c.look_at - c.position))},
+             {"fov", c.fov},
+             {"aperture", c.aperture},
+             // The default: the distance to look_at (docs/language.md §14.2).
+             {"focus_distance", c.focus_distance.value_or(glm::length(c.look_at - c.position))},
+             {"active", static_cast<int>(i) == active}});
     }
     out["cameras"] = cameras;
     const SceneMemory& memory = info->memory;
@@ -156,14 +163,25 @@ void print_text(const json& d) {
     if (const json& sky = d["background_map"]; !sky.is_null())
         std::cout << "background map " << sky["path"].get<std::string>() << ": " << sky["width"]
                   << "x" << sky["height"] << ", " << mib(sky["bytes"].get<std::size_t>()) << "\n";
-    for (const json& l : d["lights"])
+    for (const json& l : d["lights"]) {
         std::cout << "point light at " << vec_text(l["position"]) << ", intensity "
-                  << vec_text(l["intensity"]) << "\n";
+                  << vec_text(l["intensity"]);
+        // Soft shadows only when they are: a radius of 0 is the point light.
+        if (l["radius"].get<double>() > 0.0)
+            std::cout << ", radius " << l["radius"] << " (" << l["shadow_samples"]
+                      << " shadow samples)";
+        std::cout << "\n";
+    }
     for (const json& c : d["cameras"])
         std::cout << "camera \"" << c["name"].get<std::string>() << "\""
                   << (c["active"].get<bool>() ? " (active)" : "") << ": at "
                   << vec_text(c["position"]) << " looking at " << vec_text(c["look_at"])
-                  << " (direction " << vec_text(c["direction"]) << "), fov " << c["fov"] << "\n";
+                  << " (direction " << vec_text(c["direction"]) << "), fov " << c["fov"]
+                  << (c["aperture"].get<double>() > 0.0
+                          ? ", aperture " + c["aperture"].dump() + ", in focus at " +
+                                c["focus_distance"].dump()
+                          : std::string())
+                  << "\n";
     const json& memory = d["memory"];
     std::cout << "memory of the prepared scene: " << mib(memory["total"].get<std::size_t>())
               << " (models " << mib(memory["models"].get<std::size_t>()) << ", image maps "
@@ -193,21 +211,33 @@ int run_info_command(int argc, char** argv) {
         "Examples:\n"
         "  jtracer-cli info scenes/mesh.jts\n"
         "  jtracer-cli info scenes/mesh.jts --json\n"
+        "  jtracer-cli info scenes/orbit.jts --clock 0.5\n"
         "\n"
         "Exit codes: 0 ok, 1 errors in the scene, 2 bad command line, 3 a file that cannot\n"
         "be read.\n");
     app.add_option("scene", scene_path, "The scene file (.jts)")->required();
     app.add_flag("--json", json_output, "Print it all as one JSON object");
+    // The scene a render with these values would hold: a camera that moves
+    // with clock is shown where it stands at that clock.
+    std::vector<std::string> defines;
+    std::optional<double> clock;
+    add_scene_value_flags(app, defines, clock);
     if (std::optional<int> code = parse_command_line(app, argc, argv, "jtracer-cli info"))
         return *code;
-    Expected<LoadedScene> loaded = load_scene_file(scene_path, {.source_map = false});
+    ParseOptions options = scene_value_options(defines, clock);
+    options.source_map = false;
+    Expected<LoadedScene> loaded = load_scene_file(scene_path, options);
     if (!loaded) {
         std::cerr << "jtracer-cli info: " << loaded.error().message << "\n";
         return exit_io_error;
     }
     std::vector<Diagnostic> diagnostics = check_scene(
         *loaded, {.validation = {.run_chunks = parallel_chunks(), .primitives_as_parsed = true}});
-    name_setting_flags(diagnostics);
+    // The image's size is a render's to set (--width, --height), and info,
+    // which takes neither, describes the scene whatever size it renders at.
+    std::erase_if(diagnostics, [](const Diagnostic& d) {
+        return d.setting == "width" || d.setting == "height";
+    });
     if (has_errors(diagnostics)) {
         std::cerr << format_diagnostics(diagnostics, *loaded);
         return exit_scene_error;

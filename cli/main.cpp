@@ -52,6 +52,10 @@ int run(const Options& o, bool& compared) {
         std::cerr << "jtracer-cli: " << fits.error().message << "; nothing was written\n";
         return exit_io_error;
     }
+    if (jt::Expected<void> writable = check_output_writable(output); !writable) {
+        std::cerr << "jtracer-cli: " << writable.error().message << "; nothing was rendered\n";
+        return exit_io_error;
+    }
     jt::Expected<std::shared_ptr<const jt::PreparedScene>> prepared =
         jt::prepare_scene(std::move(setup.scene));
     if (!prepared) {

@@ -1,5 +1,6 @@
 #include "options.hpp"
 
+#include "jtracer/frontend/frame_file_name.hpp"
 #include "jtracer/image_file.hpp"
 
 #include <CLI/CLI.hpp>
@@ -19,13 +20,15 @@ std::optional<std::string> file_clash(const Options& o, const std::string& outpu
     // An empty output is not known yet: only the --junit file is checked.
     if (!output.empty() && same_file(output, o.scene_path))
         return named + " is the scene file itself: the image would replace it";
-    if (o.expect && !output.empty() && !frontend::is_stream(output)) {
+    // A render sent to a device gets no heat map (check_expected).
+    const std::string heat_map = o.expect && !output.empty() && !frontend::is_stream(output)
+                                     ? heat_map_path_for(output)
+                                     : std::string();
+    if (!heat_map.empty()) {
         if (same_file(output, *o.expect))
             return named +
                    " is the reference given to --expect: the render would replace it "
                    "before the comparison; write the render elsewhere";
-        const std::string heat_map =
-            std::filesystem::path(output).replace_extension(".diff.png").string();
         if (same_file(heat_map, *o.expect))
             return "--expect '" + *o.expect + "' is where the heat map of " + named + " goes (" +
                    heat_map + "): a render outside the tolerance would replace it";
@@ -34,7 +37,8 @@ std::optional<std::string> file_clash(const Options& o, const std::string& outpu
         for (const auto& [what, path] :
              {std::pair<const char*, std::string>{"the scene file", o.scene_path},
               {"the image", output},
-              {"the reference given to --expect", o.expect.value_or("")}})
+              {"the reference given to --expect", o.expect.value_or("")},
+              {"where the heat map of a render outside the tolerance goes", heat_map}})
             if (!path.empty() && same_file(*o.junit, path))
                 return "--junit '" + *o.junit + "' is " + what + ": the report would replace it";
     }
@@ -60,6 +64,12 @@ std::string format_warning(const Options& o, const std::string& output) {
         return "jtracer-cli: warning: -o/--output '" + output +
                "' is written as a BMP: JTracer writes a PNG for a name ending in .png and a BMP "
                "for any other\n";
+    // 'shot-%04d.png' without --frames is one image under that very name: the
+    // field says a sequence was meant.
+    if (o.output && !o.frames && jt::frontend::parse_frame_name_pattern(output))
+        return "jtracer-cli: warning: -o/--output '" + output +
+               "' has a frame number field, but without --frames N one image is written under "
+               "that very name\n";
     return {};
 }
 
@@ -148,8 +158,9 @@ ParsedOptions parse_options(int argc, char** argv) {
         if (o.expect && o.frames)
             throw CLI::ValidationError("--expect", "compares one image: not with --frames");
         frontend::check_sequence_flags(o);
-        // An -o with a frame field names other files; the scene's filename is
-        // known only once the scene is read (main.cpp checks it then).
+        // An -o with a frame field names a file a frame (the sequence checks
+        // each frame's, sequence_command.cpp); the scene's filename is known
+        // only once the scene is read (main.cpp checks it then).
         const bool one_image = !o.frames && !o.check_only;
         if (std::optional<std::string> clash =
                 file_clash(o, one_image ? o.output.value_or("") : std::string()))

@@ -28,6 +28,11 @@ std::string kept(const FrameRange& range, int index) {
 
 int run_sequence(const Options& o) {
     SceneSequence sequence("jtracer-cli", o, o.region);
+    if (!o.check_only)
+        if (std::optional<std::string> clash = sequence.output_clash()) {
+            std::cerr << *clash;
+            return exit_usage;
+        }
     const FrameRange range = sequence.range();
     const int total = range.last - range.first + 1;
     ProgressDisplay display(progress_style_for_stderr(o.progress, o.quiet));
@@ -48,6 +53,13 @@ int run_sequence(const Options& o) {
         if (Expected<void> fits = check_render_memory(frame.render, o.region_output); !fits) {
             display.finish();
             std::cerr << "jtracer-cli: " << fits.error().message << "; " << kept(range, index)
+                      << "\n";
+            return exit_io_error;
+        }
+        // Each frame's file may be in a folder of its own (-o 'f%d/shot.png').
+        if (Expected<void> writable = check_output_writable(frame.output); !writable) {
+            display.finish();
+            std::cerr << "jtracer-cli: " << writable.error().message << "; " << kept(range, index)
                       << "\n";
             return exit_io_error;
         }

@@ -40,7 +40,9 @@ Expected<int> read_field(std::string_view rest, std::size_t& length) {
     while (end < rest.size() && end < 8 &&
            std::string_view("0123456789.+-# 'hljzt").find(rest[end]) != std::string_view::npos)
         ++end;
+    // The conversion character whole: a UTF-8 one is several bytes.
     if (end < rest.size()) ++end;
+    while (end < rest.size() && (static_cast<unsigned char>(rest[end]) & 0xC0) == 0x80) ++end;
     std::string field(1, '%');
     field.append(rest.substr(0, end));
     return Error{quoted(field) +

@@ -71,22 +71,24 @@ void ProgressDisplay::update(const RenderProgress& progress) {
         std::string eta = "--";
         if (progress.fraction > 0.01 && progress.seconds > 0.2)
             eta = format_duration(progress.seconds * (1.0 - progress.fraction) / progress.fraction);
-        std::fprintf(stderr, "\r[%s] %3d%%  %-12s  ETA %-12s", bar.c_str(), percent,
+        std::fprintf(out_, "\r[%s] %3d%%  %-12s  ETA %-12s", bar.c_str(), percent,
                      progress.pass_name.c_str(), eta.c_str());
-        std::fflush(stderr);
+        std::fflush(out_);
         drawn_ = true;
         return;
     }
     if (progress.seconds < log_after_seconds) return;
-    if (percent / 10 > last_logged_percent_ / 10 && percent < 100) {
-        std::fprintf(stderr, "rendering: %d%% (%s)\n", percent,
+    const int milestone = percent / 10 * 10;
+    if (milestone > last_logged_percent_ && milestone < 100) {
+        std::fprintf(out_, "rendering: %d%% (%s)\n", milestone,
                      format_duration(progress.seconds).c_str());
-        last_logged_percent_ = percent;
+        std::fflush(out_);
+        last_logged_percent_ = milestone;
     }
 }
 
 void ProgressDisplay::finish() {
-    if (drawn_) std::fprintf(stderr, "\r%*s\r", bar_width + 50, "");
+    if (drawn_) std::fprintf(out_, "\r%*s\r", bar_width + 50, "");
     drawn_ = false;
 }
 

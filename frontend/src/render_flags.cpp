@@ -46,7 +46,8 @@ void add_render_flags(CLI::App& app, RenderFlags& o) {
                                                     {"none", ProgressMode::none}};
     app.add_option("--progress", o.progress,
                    "How progress shows on stderr: auto|bar|log|none. auto (the default): a bar "
-                   "on a terminal, nothing otherwise; log: a plain line per 10%, for log files")
+                   "on a terminal, nothing otherwise; log: a plain line at each multiple of 10% "
+                   "passed (10%, 20%, ...), for log files")
         ->transform(CLI::CheckedTransformer(modes))
         ->type_name("MODE");
     add_scene_value_flags(app, o.defines, o.clock);

@@ -1,6 +1,9 @@
 #include "jtracer/frontend/scene_sequence.hpp"
 
+#include "jtracer/frontend/command_line.hpp"
 #include "jtracer/scene_file.hpp"
+
+#include <filesystem>
 
 namespace jt::frontend {
 
@@ -37,6 +40,29 @@ FrameSetup SceneSequence::set_up(double clock, bool& reads_clock) {
     return set_up_frame(program_, flags, std::move(*read), LoadedPrimitives::as_parsed, region_);
 }
 
+namespace {
+
+std::string replaces_scene(std::string_view program, int index, const std::string& output) {
+    return std::string(program) + ": frame " + std::to_string(index) + "'s file '" + output +
+           "' is the scene file itself: the image would replace it";
+}
+
+}  // namespace
+
+std::optional<std::string> SceneSequence::output_clash() const {
+    if (!pattern_) return std::nullopt;
+    // Only a name that ends as the scene's does can be it (as typed, or
+    // through a link, which frame() still catches), so a long sequence asks
+    // the file system about few names.
+    const std::string scene_name = std::filesystem::path(flags_.scene_path).filename().string();
+    for (int index = range_.first; index <= range_.last; ++index) {
+        const std::string output = frame_file_name(*pattern_, index);
+        if (output.ends_with(scene_name) && same_file(output, flags_.scene_path))
+            return replaces_scene(program_, index, output) + "; no frame was written\n";
+    }
+    return std::nullopt;
+}
+
 std::string SceneSequence::unprinted(const std::vector<Diagnostic>& diagnostics) {
     std::string message;
     for (const Diagnostic& d : diagnostics) {
@@ -70,6 +96,11 @@ SequenceFrame SceneSequence::frame(int index, bool prepare) {
         pattern_ ? frame_file_name(*pattern_, index) : numbered_file_name(setup.output, index);
     // The name typed on the command line decides, as for one image.
     frame.format = pattern_ ? format_from_extension(frame.output) : setup.format;
+    if (same_file(frame.output, flags_.scene_path)) {
+        frame.exit_code = exit_usage;
+        frame.message += replaces_scene(program_, index, frame.output) + "; stopped before it\n";
+        return frame;
+    }
     if (prepare) {
         if (fixed_ && previous_) {
             frame.prepared = previous_;

@@ -48,7 +48,7 @@ _jtracer() {
             positional='*.@(bmp|BMP|png|PNG)'
         elif [[ ${COMP_WORDS[1]} == info ]] && ((COMP_CWORD > 1)); then
             program=jtracer-cli-info
-            options='-h --help --json'
+            options='-h --help --json --define --clock'
         else
             options='-h --help --version -o --output --camera --width --height --samples
                 --threads -q --quiet --progress --region --region-output --check --expect --threshold

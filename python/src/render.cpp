@@ -88,17 +88,6 @@ std::optional<FrameRegion> region_for(const RenderArguments& a) {
     return *region;
 }
 
-// A front-end message with render()'s arguments named as Python spells
-// them: "width/height", not "--width/--height".
-std::string with_argument_names(std::string text) {
-    for (const std::string_view name : {"width", "height", "samples"}) {
-        const std::string flag = "--" + std::string(name);
-        for (std::size_t at = text.find(flag); at != std::string::npos; at = text.find(flag, at))
-            text.erase(at, 2);
-    }
-    return text;
-}
-
 // The message of set_up_frame's failure without its "jtracer: " and newline,
 // naming the argument rather than the flag ("camera: ...", not "--camera: ...").
 std::string reason(const frontend::FrameSetup& setup, std::string_view program) {

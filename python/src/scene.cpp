@@ -122,11 +122,25 @@ ParseOptions options_with(const std::optional<py::dict>& defines, double clock) 
     for (const auto& [key, value] : *defines) {
         if (!py::isinstance<py::str>(key)) throw py::type_error("defines: the names must be str");
         const std::string name = key.cast<std::string>();
+        // Said here in Python's words: parse_define would name --define and --clock.
+        if (name == "clock")
+            throw py::value_error("defines['clock']: clock is not a define; pass clock= instead");
         auto number_text = [&](py::handle v) -> std::string {
             if (py::isinstance<py::bool_>(v) ||
                 !(py::isinstance<py::int_>(v) || py::isinstance<py::float_>(v)))
                 throw py::type_error("defines['" + name +
                                      "']: expected a number, three numbers or a str");
+            // A nan, an inf or an int past the doubles would otherwise reach
+            // the scene language as its repr: "unknown name 'nan' at column 1".
+            const double number = PyFloat_AsDouble(v.ptr());
+            if (number == -1.0 && PyErr_Occurred()) {
+                PyErr_Clear();
+                throw py::value_error("defines['" + name +
+                                      "']: a finite number, not one too large for a double");
+            }
+            if (!std::isfinite(number))
+                throw py::value_error("defines['" + name + "']: a finite number, not " +
+                                      py::repr(v).cast<std::string>());
             return py::repr(v).cast<std::string>();
         };
         std::string text;
@@ -142,7 +156,8 @@ ParseOptions options_with(const std::optional<py::dict>& defines, double clock) 
             text = number_text(value);
         }
         Expected<Define> define = parse_define(name + "=" + text);
-        if (!define) throw py::value_error("defines: " + define.error().message);
+        if (!define)
+            throw py::value_error("defines: " + with_argument_names(define.error().message));
         options.defines.push_back(std::move(*define));
     }
     return options;

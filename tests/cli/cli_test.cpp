@@ -154,6 +154,62 @@ TEST_F(Cli, CameraOptionPicksTheCamera) {
     EXPECT_EQ(r.code, 2);
     EXPECT_NE(r.err.find("\"front\", \"top\""), std::string::npos) << r.err;
     EXPECT_EQ(outputs(), (std::vector<std::string>{"front.bmp", "top.bmp"}));
+    // Cameras without a name are counted, not listed as "" (no --camera picks one).
+    write("unnamed.jts",
+          "cameras { perspective_camera { } perspective_camera { name: \"top\"; } "
+          "perspective_camera { } }\n");
+    r = run("unnamed.jts --camera nowhere --width 4 --height 4");
+    EXPECT_EQ(r.code, 2);
+    EXPECT_NE(r.err.find("the scene has no camera named \"nowhere\" (its cameras: \"top\" and 2 "
+                         "without a name)"),
+              std::string::npos)
+        << r.err;
+    write("alone.jts", "cameras { perspective_camera { } }\n");
+    r = run("alone.jts --camera nowhere --width 4 --height 4");
+    EXPECT_NE(r.err.find("(its cameras: 1 without a name)"), std::string::npos) << r.err;
+}
+
+// A render of hours must not end in "cannot write": a missing folder or a
+// folder in the way is found before the render starts.
+TEST_F(Cli, AnOutputThatCannotBeWrittenStopsBeforeTheRender) {
+    test::ProgramRun r = run("scene.jts -o no/such/folder/out.bmp");
+    EXPECT_EQ(r.code, 3);
+    EXPECT_NE(r.err.find("jtracer-cli: cannot write 'no/such/folder/out.bmp': No such file or "
+                         "directory; nothing was rendered"),
+              std::string::npos)
+        << r.err;
+    fs::create_directory(dir / "taken.bmp");
+    r = run("scene.jts -o taken.bmp");
+    EXPECT_EQ(r.code, 3);
+    EXPECT_NE(r.err.find("cannot write 'taken.bmp': it is a directory; nothing was rendered"),
+              std::string::npos)
+        << r.err;
+    // Each frame's file, which may be in a folder of its own, before its render.
+    fs::create_directory(dir / "f0");
+    r = run("scene.jts --frames 2 -o 'f%d/shot.bmp'");
+    EXPECT_EQ(r.code, 3);
+    EXPECT_NE(r.err.find("cannot write 'f1/shot.bmp': No such file or directory; frames 0..0 "
+                         "were written"),
+              std::string::npos)
+        << r.err;
+    EXPECT_EQ(r.err.find("frame 1, clock"), std::string::npos) << r.err;
+    EXPECT_EQ(outputs(), (std::vector<std::string>{"f0", "taken.bmp"}));
+    EXPECT_TRUE(fs::exists(dir / "f0" / "shot.bmp"));
+}
+
+// A sequence's -o without --frames writes one image under that very name:
+// said, since the field shows a sequence was meant.
+TEST_F(Cli, AFrameNumberFieldWithoutFramesWarns) {
+    test::ProgramRun r = run("scene.jts -o 'shot-%04d.png'");
+    EXPECT_EQ(r.code, 0) << r.err;
+    EXPECT_NE(r.err.find("jtracer-cli: warning: -o/--output 'shot-%04d.png' has a frame number "
+                         "field, but without --frames N one image is written under that very "
+                         "name"),
+              std::string::npos)
+        << r.err;
+    EXPECT_EQ(outputs(), std::vector<std::string>{"shot-%04d.png"});
+    r = run("scene.jts -o 'full-100%.png'");
+    EXPECT_EQ(r.err.find("frame number field"), std::string::npos) << r.err;
 }
 
 TEST_F(Cli, CheckValidatesAndWritesNothing) {

@@ -173,6 +173,18 @@ TEST_F(Diff, DevicesAreRefusedAtOnce) {
     EXPECT_EQ(r.code, 0) << r.err;
 }
 
+// A file larger than any image is refused by its size, at once: read whole,
+// a 6 GB sparse file took 6 GB of memory and seconds before "too large".
+TEST_F(Diff, AFileLargerThanAnyImageIsRefusedByItsSize) {
+    std::filesystem::resize_file(dir / "a.png", 0);
+    std::filesystem::resize_file(dir / "a.png", std::uintmax_t{6} << 30);
+    ProgramRun r = run(std::string(test::memory_cap) + "timeout 60 " + cli + " diff a.png a.bmp");
+    EXPECT_EQ(r.code, 3) << r.err;
+    EXPECT_NE(r.err.find("'a.png': it is 6442450944 bytes, larger than any image"),
+              std::string::npos)
+        << r.err;
+}
+
 // A file cut short (an interrupted copy or download) or empty says so, in
 // words: stb's "outofdata", and "no 'BM' header" for a BMP whose header is
 // there but short, or for an empty file read as a PNG, said otherwise.
@@ -303,6 +315,21 @@ TEST_F(Expect, ARenderToADeviceHasNoHeatMap) {
     EXPECT_EQ(run(cli + " -q scene.jts -o /dev/null --expect ref.png").code, 0);
 }
 
+// `-o /dev/stdout > out.png` writes out.png through a link; its heat map goes
+// beside it, not into /dev.
+TEST_F(Expect, AHeatMapGoesBesideTheFileALinkNames) {
+    Image8 changed = reference;
+    changed.pixel(0, 0)[0] = static_cast<std::uint8_t>(changed.pixel(0, 0)[0] ^ 0x40);
+    ASSERT_TRUE(write_png(dir / "changed.png", changed));
+    std::filesystem::create_directory(dir / "renders");
+    std::filesystem::create_symlink("renders/out.png", dir / "link.png");
+    ProgramRun r = run(cli + " -q scene.jts -o link.png --expect changed.png");
+    EXPECT_EQ(r.code, 1) << r.err;
+    EXPECT_TRUE(read_image(dir / "renders/out.png").has_value());
+    EXPECT_TRUE(read_image(dir / "renders/out.diff.png").has_value()) << r.err;
+    EXPECT_FALSE(exists("link.diff.png"));
+}
+
 // Only a render outside the tolerance has a heat map beside it: one left by
 // an earlier failing run goes once the render matches again, or CI keeping
 // out/ would show a failure that is no more.
@@ -385,6 +412,19 @@ TEST_F(Expect, RefusesOutputsThatWouldReplaceTheSceneOrTheReference) {
     EXPECT_NE(r.err.find("the scene's filename 'render.bmp' is the reference"), std::string::npos)
         << r.err;
     EXPECT_FALSE(exists("render.bmp"));
+}
+
+// As `diff` refuses --junit naming its -o: the report would be written over
+// the heat map it points to.
+TEST_F(Expect, RefusesAJunitReportThatIsTheHeatMap) {
+    Image8 changed = reference;
+    changed.pixel(0, 0)[0] = static_cast<std::uint8_t>(changed.pixel(0, 0)[0] ^ 0x80);
+    ASSERT_TRUE(write_png(dir / "changed.png", changed));
+    ProgramRun r = run(cli + " scene.jts -o out.png --expect changed.png --junit out.diff.png");
+    EXPECT_EQ(r.code, 2) << r.err;
+    EXPECT_NE(r.err.find("where the heat map"), std::string::npos) << r.err;
+    EXPECT_FALSE(exists("out.png")) << "refused before anything is written";
+    EXPECT_FALSE(exists("out.diff.png"));
 }
 
 TEST_F(Expect, ListCamerasPrintsTheNamesOneALine) {

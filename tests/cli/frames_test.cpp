@@ -69,6 +69,15 @@ TEST_F(CliFrames, ADefineOfClockIsEvaluatedPerFrame) {
     EXPECT_FALSE(fs::exists(dir / "e0.bmp"));
 }
 
+// As for one image: frame 1 of `-o 'scene%d.jts'` would be written over
+// scene1.jts, the scene being rendered, before any frame is.
+TEST_F(CliFrames, AFrameThatIsTheSceneFileIsRefused) {
+    test::write_file(dir / "scene1.jts", growing_scene);
+    test::ProgramRun r = run("-q scene1.jts --frames 3 -o 'scene%d.jts'");
+    EXPECT_EQ(r.code, 2) << r.err;
+    EXPECT_EQ(bytes("scene1.jts"), growing_scene) << "the scene file was replaced by frame 1";
+}
+
 TEST_F(CliFrames, OneFrameHasClockZero) {
     ASSERT_EQ(run("-q scene.jts --frames 1 -o 'one-%d.bmp'").code, 0);
     ASSERT_EQ(run("-q scene.jts -o zero.bmp").code, 0);
@@ -96,7 +105,7 @@ TEST_F(CliFrames, BadPatternsExitTwoNamingTheOption) {
 }
 
 // The message quotes the field as printf reads it, not four characters
-// whatever they are ('%4d.', '%s.p').
+// whatever they are ('%4d.', '%s.p'), and never half a UTF-8 character.
 TEST_F(CliFrames, ABadFieldIsQuotedAlone) {
     const std::pair<const char*, const char*> cases[] = {
         {"shot-%4d.png", "'%4d' is not"},
@@ -105,6 +114,8 @@ TEST_F(CliFrames, ABadFieldIsQuotedAlone) {
         {"shot-%ld.png", "'%ld' is not"},
         {"shot-%", "'%' is not"},
         {"100%.png", "'%.p' is not"},
+        {"shot-%\u00e9.png", "'%\u00e9' is not"},
+        {"shot-%4\u20ac.png", "'%4\u20ac' is not"},
     };
     for (const auto& [pattern, quoted] : cases) {
         test::ProgramRun r = run(std::string("scene.jts --frames 3 -o '") + pattern + "'");

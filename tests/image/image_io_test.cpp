@@ -206,6 +206,29 @@ TEST(AtomicFile, AReplacedFileKeepsItsMode) {
     EXPECT_EQ(fs::status(target).permissions() & fs::perms::all, mode);
 }
 
+// A link stays a link, also when the file it names is not made yet (a link to
+// where renders are kept) and through a chain of relative links.
+TEST(AtomicFile, AWriteThroughALinkWritesTheFileItNames) {
+    const fs::path dir = make_scratch_dir("through_link");
+    fs::create_directory(dir / "renders");
+    fs::create_symlink("renders/out.bin", dir / "first.bin");
+    fs::create_symlink("first.bin", dir / "second.bin");
+    const std::vector<std::uint8_t> bytes{7, 8, 9};
+    const Expected<void> written = write_file_atomically(dir / "second.bin", bytes);
+    ASSERT_TRUE(written) << written.error().message;
+    EXPECT_TRUE(fs::is_symlink(dir / "second.bin"));
+    EXPECT_TRUE(fs::is_symlink(dir / "first.bin"));
+    EXPECT_EQ(test::read_file(dir / "renders/out.bin"), std::string("\x07\x08\x09"));
+    EXPECT_EQ(file_behind_links(dir / "second.bin"), (dir / "renders/out.bin").lexically_normal());
+    // A loop is left for the write to fail on, naming the file asked for.
+    fs::create_symlink("loop_b", dir / "loop_a");
+    fs::create_symlink("loop_a", dir / "loop_b");
+    EXPECT_EQ(file_behind_links(dir / "loop_a"), dir / "loop_a");
+    const Expected<void> looped = write_file_atomically(dir / "loop_a", bytes);
+    ASSERT_FALSE(looped);
+    EXPECT_NE(looped.error().message.find("loop_a"), std::string::npos) << looped.error().message;
+}
+
 TEST(AtomicFile, NewFileNeverReplacesOneAndLeavesNoTemporary) {
     fs::path dir = make_scratch_dir("new_file");
     const fs::path target = dir / "new.bin";

@@ -160,6 +160,32 @@ TEST(Expressions, KindMistakesAreErrorsAtTheOperatorOrCall) {
     // A string in arithmetic: at the string.
     EXPECT_EQ(brief("render_settings { filename: \"a\" + 1; }"),
               "1:29: error: a string cannot be used in arithmetic, got the string \"a\"");
+    // Nor in parentheses: a string value is one literal or one name.
+    EXPECT_EQ(brief("define s = \"a.bmp\";\nrender_settings { filename: (s); }"),
+              "2:29: error: parentheses hold numbers and vectors, not a string: write the "
+              "string, or the name of one, alone");
+    EXPECT_EQ(brief("define s = ((\"a.bmp\"));"),
+              "1:12: error: parentheses hold numbers and vectors, not a string: write the "
+              "string, or the name of one, alone");
+    EXPECT_EQ(brief("define s = \"a.bmp\";\ndefine t = s;\nrender_settings { filename: t; }"), "");
+}
+
+// A word followed by '(' is a call: an unknown one is suggested among the
+// functions, not among the names (POV-Ray's vlength is our length).
+TEST(Expressions, AnUnknownFunctionSuggestsAFunction) {
+    const std::string functions =
+        " (functions: sin, cos, tan, asin, acos, atan2, sqrt, abs, floor, min, max, pow, "
+        "length, normalize, dot, cross)";
+    EXPECT_EQ(plane_error("vlength(<3, 4, 0>)"),
+              "1:27: error: unknown function 'vlength'; did you mean 'length'?" + functions);
+    EXPECT_EQ(brief("define sqrt2 = 1.4;\nscene { plane { distance: sqrtt(2); } }"),
+              "2:27: error: unknown function 'sqrtt'; did you mean 'sqrt'?" + functions);
+    EXPECT_EQ(plane_error("Sin(30)"),
+              "1:27: error: unknown function 'Sin'; did you mean 'sin'?" + functions);
+    EXPECT_EQ(plane_error("radians(30)"), "1:27: error: unknown function 'radians'" + functions);
+    // A name alone is still a name.
+    EXPECT_EQ(plane_error("sqrtt"),
+              "1:27: error: unknown name 'sqrtt' (names must be defined before they are used)");
 }
 
 TEST(Expressions, SyntaxErrorsWinOverEvaluation) {

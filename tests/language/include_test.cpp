@@ -8,11 +8,17 @@
 #include "jtracer/scene_file.hpp"
 #include "test_util.hpp"
 
+#include <fcntl.h>
 #include <gtest/gtest.h>
+#include <sys/stat.h>
+#include <unistd.h>
 
+#include <atomic>
+#include <chrono>
 #include <filesystem>
 #include <map>
 #include <string>
+#include <thread>
 
 namespace jt {
 namespace {
@@ -209,6 +215,37 @@ TEST_F(Include, AMissingFileIsAnErrorAndHidesUnknownNames) {
     EXPECT_EQ(brief(parse("include \"binary.jts\";").diagnostics),
               "1:9: error: cannot read '" + (dir / "binary.jts").string() +
                   "': it is not a text file (it contains a NUL byte)");
+}
+
+// Opening a FIFO for reading waits for a writer: with none, the parse (and
+// the render, or the viewer's reload) would hang for good.
+TEST_F(Include, AFifoIsRefusedWithoutWaitingForAWriter) {
+    const std::filesystem::path fifo = dir / "pipe.jts";
+    ASSERT_EQ(::mkfifo(fifo.c_str(), 0600), 0);
+    // Should the parse wait on the FIFO after all, a writer comes after a
+    // while and ends it, so that the test fails instead of hanging.
+    std::atomic<bool> parsed{false};
+    std::thread writer([&] {
+        for (int i = 0; i < 100 && !parsed; ++i)
+            std::this_thread::sleep_for(std::chrono::milliseconds(50));
+        const int fd = ::open(fifo.c_str(), O_WRONLY | O_NONBLOCK);
+        if (fd >= 0) ::close(fd);
+    });
+    const std::string found = brief(parse("include \"pipe.jts\";").diagnostics);
+    parsed = true;
+    writer.join();
+    EXPECT_EQ(found,
+              "1:9: error: '" + fifo.string() + "' is a named pipe (FIFO), not a scene file");
+    EXPECT_EQ(brief(parse("include \"/dev/null\";").diagnostics),
+              "1:9: error: '/dev/null' is a device, not a scene file");
+}
+
+TEST_F(Include, ABackslashInAPathThatIsNotFoundSaysFoldersUseSlashes) {
+    write("parts/ball.jts", "define r = 1;\n");
+    EXPECT_EQ(brief(parse("include \"parts\\ball.jts\";").diagnostics),
+              "1:9: error: cannot read '" + (dir / "parts\\ball.jts").string() +
+                  "': no such file (folders are separated by '/' on every platform)");
+    EXPECT_EQ(brief(parse("include \"parts/ball.jts\";").diagnostics), "");
 }
 
 TEST_F(Include, TheSameFileTwiceIsFineUnlessItDefinesNames) {

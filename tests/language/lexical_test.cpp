@@ -200,7 +200,23 @@ TEST(Text, TheFirstRefusedByteIsFoundWhereverItIs) {
 
 TEST(Text, Utf8InCommentsIsFineAndOutsideIsAnUnexpectedCharacter) {
     parse_clean("# caf\xC3\xA9\n");
-    EXPECT_EQ(brief("scene { \xC3\xA9 }"), "1:9: error: unexpected byte 0xC3");
+    EXPECT_EQ(brief("scene { \xC3\xA9 }"),
+              "1:9: error: unexpected character U+00E9 (outside comments a scene is ASCII)");
+    // A stray byte that starts no character is named as a byte.
+    EXPECT_EQ(brief("scene { \x01 }"), "1:9: error: unexpected byte 0x01");
+}
+
+// What a word processor or a web page puts in a pasted scene, named.
+TEST(Text, PastedLookAlikesSayWhatToTypeInstead) {
+    EXPECT_EQ(brief("render_settings { filename: \xE2\x80\x9Cout.bmp\xE2\x80\x9D; }"),
+              "1:29: error: unexpected character U+201C (a curly quote: strings take plain "
+              "double quotes \")");
+    EXPECT_EQ(brief("scene { sphere { radius:\xC2\xA0"
+                    "2; } }"),
+              "1:25: error: unexpected character U+00A0 (a no-break space: use a plain space)");
+    EXPECT_EQ(brief("define r = \xE2\x88\x92"
+                    "2;"),
+              "1:12: error: unexpected character U+2212 (a dash: minus is the plain -)");
 }
 
 TEST(Text, ByteOrderMarkIsSkipped) {
@@ -209,6 +225,26 @@ TEST(Text, ByteOrderMarkIsSkipped) {
 
 TEST(Text, UnexpectedCharacterIsReportedAndSkipped) {
     EXPECT_EQ(brief("scene { sphere { radius: 2; } @ }"), "1:31: error: unexpected character '@'");
+}
+
+// One mistake, one error: a value cut short by a byte or number the lexer
+// refused is not also "expected ';'" (reported before the lexer's own error,
+// at an earlier column) nor a finding about what was left of the value.
+TEST(Text, AMistakeTheLexerReportedIsNotRepeatedByTheParser) {
+    EXPECT_EQ(brief("define r = 2^3;\nscene { sphere { radius: r; } }"),
+              "1:13: error: unexpected character '^'");
+    EXPECT_EQ(brief("define r = 2 \xC3\x97 3;"),
+              "1:14: error: unexpected character U+00D7 (a multiplication sign: multiply with *)");
+    EXPECT_EQ(brief("define \xCE\xA3 = 1;"),
+              "1:8: error: unexpected character U+03A3 (outside comments a scene is ASCII)");
+    EXPECT_EQ(brief("define v = <1, 2, 3>;\ncameras { perspective_camera { fov: 40 * v.x; } }"),
+              "2:43: error: unexpected '.': values have no components such as .x (the x of v is "
+              "dot(v, <1, 0, 0>))");
+    EXPECT_EQ(brief("scene { sphere { radius: 5 % 2; center: <0, 0, 1>; } }"),
+              "1:28: error: unexpected character '%'");
+    // Two values side by side are still the missing ';' they look like.
+    EXPECT_EQ(brief("scene { sphere { radius: 2 3; } }"),
+              "1:27: error: expected ';' after the value of 'radius'");
 }
 
 }  // namespace

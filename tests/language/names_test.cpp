@@ -56,6 +56,21 @@ TEST(Names, MustBeDefinedBeforeUseWithDidYouMean) {
               "used); did you mean 'radius1'?");
 }
 
+// A POV-Ray user's directives are comments here ('#' starts one), which is
+// why their names are unknown: the message says so, and where.
+TEST(Names, AnUnknownNameAfterAPovRayDirectiveSaysItIsAComment) {
+    const std::string hint =
+        "; POV-Ray's #include and #declare are comments here, as at 2:1: write include "
+        "\"FILE\"; and define NAME = VALUE;";
+    EXPECT_EQ(brief("# a scene\n#declare R = 1;\nscene { sphere { radius: R; } }"),
+              "3:26: error: unknown name 'R' (names must be defined before they are used)" + hint);
+    EXPECT_EQ(brief("# a scene\n#include \"colors.inc\"\nscene { sphere { radius: R; } }"),
+              "3:26: error: unknown name 'R' (names must be defined before they are used)" + hint);
+    // Other comments say nothing.
+    EXPECT_EQ(brief("# include guard\n#includes\nscene { sphere { radius: R; } }"),
+              "3:26: error: unknown name 'R' (names must be defined before they are used)");
+}
+
 TEST(Names, DefiningTwiceNamesTheFirst) {
     EXPECT_EQ(brief("define r = 1;\ndefine r = 2;\n"),
               "2:8: error: 'r' is defined twice: it was first defined at 1:8");
@@ -135,6 +150,31 @@ TEST(Names, NamedMaterialMistakes) {
     EXPECT_EQ(brief("material { pigment: <1, 0, 0>; }"),
               "1:1: error: unknown block 'material' at the top level (allowed: "
               "render_settings, cameras, scene)");
+}
+
+// A misspelt or misplaced property is the mistake reported, not what its
+// value's evaluation would say: that hid the name behind "unknown name" or
+// "a material, not a value: use it with 'material: shiny;'" (which it was).
+TEST(Names, AnUnknownPropertyIsReportedNotItsValue) {
+    const std::string shiny = "define r = 1;\nmaterial shiny { reflection: 0.5; }\n";
+    EXPECT_EQ(brief(shiny + "cameras { perspective_camera { fox: zz * 2; } }"),
+              "3:32: error: unknown property 'fox' in 'perspective_camera'; did you mean 'fov'? "
+              "(allowed: name, position, look_at, up, aspect, fov, aperture, focus_distance)");
+    EXPECT_EQ(brief(shiny + "scene { point_light { radus: 1 / 0; } }"),
+              "3:23: error: unknown property 'radus' in 'point_light'; did you mean 'radius'? "
+              "(allowed: position, intensity, radius, shadow_samples)");
+    EXPECT_EQ(brief(shiny + "scene { point_light { material: shiny; } }"),
+              "3:23: error: unknown property 'material' in 'point_light' (allowed: position, "
+              "intensity, radius, shadow_samples)");
+    EXPECT_EQ(brief(shiny + "material dull { material: shiny; }"),
+              "3:17: error: a material cannot use another material: 'material: NAME;' stands "
+              "directly in a sphere, plane, cylinder, triangle or mesh");
+    EXPECT_EQ(brief(shiny + "scene { sphere { transform { turn: r; } } }"),
+              "3:30: error: unknown property 'turn' in 'transform' (allowed: translate, scale, "
+              "xrotate, yrotate, zrotate)");
+    // A known name still has its value read, and its value's errors said.
+    EXPECT_EQ(brief(shiny + "scene { sphere { radius: zz; } }"),
+              "3:26: error: unknown name 'zz' (names must be defined before they are used)");
 }
 
 // A material block missing its '{' sets nothing, so it keeps nothing of the

@@ -49,7 +49,12 @@ TEST(TriangleMesh, MistakesAreLocatedWithSuggestions) {
               "3:16: error: unknown property 'fille' in 'mesh'; did you mean 'file'? "
               "(allowed: file, shading, smooth_angle, materials, material, transform)");
     EXPECT_EQ(brief(std::string(kHead) + "scene { mesh { file: \"a\"; shading: \"smoth\"; } }"),
-              "3:36: error: 'shading' must be \"smooth\" or \"flat\", got smoth");
+              "3:36: error: 'shading' must be \"smooth\" or \"flat\", got \"smoth\"");
+    // Quoted, so that a case slip, a stray space or nothing at all shows.
+    EXPECT_EQ(brief(std::string(kHead) + "scene { mesh { file: \"a\"; materials: \"file \"; } }"),
+              "3:38: error: 'materials' must be \"scene\" or \"file\", got \"file \"");
+    EXPECT_EQ(brief(std::string(kHead) + "scene { mesh { file: \"a\"; materials: \"\"; } }"),
+              "3:38: error: 'materials' must be \"scene\" or \"file\", got \"\"");
     EXPECT_EQ(brief(std::string(kHead) + "scene { triangle { a: 1; } }"),
               "3:23: error: 'a' takes a vector like <0, 1, 0>, got the number 1");
 }

@@ -2,10 +2,17 @@
 
 #include "jtracer/validate.hpp"
 
+#include "common/scratch_dir.hpp"
 #include "test_util.hpp"
+
+#include <fcntl.h>
+#include <sys/stat.h>
+#include <unistd.h>
 
 #include <algorithm>
 #include <atomic>
+#include <chrono>
+#include <filesystem>
 #include <thread>
 
 namespace jt {
@@ -169,6 +176,31 @@ TEST(Validate, BackgroundMapDiagnosticsAreLocated) {
         "3:18: error: background_map: cannot read 'nowhere.png': No such file or directory");
     // A background written alone, or the default map, says nothing.
     EXPECT_EQ(validate(head + " background: <0, 0, 1>; }\n" + tail), "");
+}
+
+// Opening a named pipe waits for a writer: a sky map (or any picture or
+// model) that names one with none must be an error, not a hang.
+TEST(Validate, ABackgroundMapThatIsAnIdlePipeIsAnError) {
+    test::ScratchDir scratch("idle_pipe");
+    const std::filesystem::path fifo = scratch.path() / "sky.png";
+    ASSERT_EQ(::mkfifo(fifo.c_str(), 0600), 0);
+    // Should the check wait on the pipe after all, a writer comes after a
+    // while and ends it, so that the test fails instead of hanging.
+    std::atomic<bool> checked{false};
+    std::thread writer([&] {
+        for (int i = 0; i < 100 && !checked; ++i)
+            std::this_thread::sleep_for(std::chrono::milliseconds(50));
+        const int fd = ::open(fifo.c_str(), O_WRONLY | O_NONBLOCK);
+        if (fd >= 0) ::close(fd);
+    });
+    const std::string found =
+        validate("render_settings { width: 40; height: 20;\n background_map: \"" + fifo.string() +
+                 "\"; }\ncameras { perspective_camera { aspect: 2; } }\n");
+    checked = true;
+    writer.join();
+    EXPECT_EQ(found, "2:18: error: background_map: cannot read '" + fifo.string() +
+                         "': a named pipe (FIFO) with nothing written to it\n"
+                         "0:0: warning: no scene block: the image will show only the background");
 }
 
 TEST(Validate, CatchesOutOfRangeValuesInScenesBuiltInCode) {

@@ -67,7 +67,8 @@ def test_info_json_counts_meshes_maps_lights_and_cameras(cli, scene):
     assert box["upper"][0] >= last["upper"][0] and info["unbounded"] == 1
     assert info["image_maps"] == [{"path": str(scene.parent / "tiles.png"), "width": 64,
                                    "height": 64, "bytes": 64 * 64 * 3}]
-    assert info["lights"] == [{"position": [5, 5, 5], "intensity": [1, 1, 1]}]
+    assert info["lights"] == [{"position": [5, 5, 5], "intensity": [1, 1, 1], "radius": 0,
+                               "shadow_samples": 16}]
     front, side = info["cameras"]
     assert (front["name"], front["active"], side["active"]) == ("front", True, False)
     assert side["direction"] == pytest.approx([-1, 0, 0])
@@ -90,6 +91,40 @@ def test_info_text_names_every_mesh_and_camera(cli, scene):
     assert 'camera "side": at <10, 0, 0> looking at <0, 0, 0> (direction <-1, 0, 0>)' in out
     assert "image map" in out and "64x64" in out
     assert "(and 1 unbounded planes)" in out
+
+
+def test_info_shows_soft_shadows_and_the_lens(cli, tmp_path):
+    path = tmp_path / "soft.jts"
+    path.write_text(
+        "render_settings { width: 8; height: 8; samples: 16; }\n"
+        "cameras { perspective_camera { name: \"lens\"; position: <0, 0, 5>; aperture: 0.25; }\n"
+        "          perspective_camera { name: \"near\"; aperture: 0.5; focus_distance: 2; } }\n"
+        "scene { point_light { position: <0, 5, 0>; intensity: <1, 1, 1>; radius: 1.5;\n"
+        "                      shadow_samples: 32; }\n"
+        "        point_light { position: <0, 5, 5>; } }\n")
+    _, out, _ = run(cli, "info", path)
+    assert "point light at <0, 5, 0>, intensity <1, 1, 1>, radius 1.5 (32 shadow samples)\n" in out
+    assert "point light at <0, 5, 5>, intensity <0, 0, 0>\n" in out
+    # The focus distance a camera uses: its own, or the distance to look_at.
+    assert "fov 45.0, aperture 0.25, in focus at 6.0\n" in out
+    assert "fov 45.0, aperture 0.5, in focus at 2.0\n" in out
+    info = json.loads(run(cli, "info", path, "--json")[1])
+    assert [(l["radius"], l["shadow_samples"]) for l in info["lights"]] == [(1.5, 32), (0, 16)]
+    assert [(c["aperture"], c["focus_distance"]) for c in info["cameras"]] == [(0.25, 6), (0.5, 2)]
+
+
+def test_info_takes_define_and_clock_as_a_render_does(cli, tmp_path):
+    path = tmp_path / "moving.jts"
+    path.write_text("define r = 1;\n"
+                    "cameras { perspective_camera { position: <r, 10 * clock, 5>; } }\n")
+    info = json.loads(run(cli, "info", path, "--json", "--clock", "0.5", "--define", "r=3")[1])
+    assert info["cameras"][0]["position"] == [3, 5, 5]
+    # No width or height: a render's to set, which info does not ask for
+    # (it takes no --width).
+    _, out, err = run(cli, "info", path)
+    assert 'camera "" (active): at <1, 0, 5>' in out and "width" not in err
+    code, _, err = run(cli, "info", path, "--clock", "nan", check=False)
+    assert code == 2 and "--clock" in err
 
 
 def test_info_of_a_bad_scene_reports_like_check(cli, tmp_path):

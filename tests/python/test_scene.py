@@ -127,8 +127,9 @@ def test_defines_set_names_as_the_command_line_does(tmp_path, cli):
     assert scene.settings.filename == "b.bmp"
     notes = [d for d in scene.warnings if d.severity == "note"]
     assert [(d.line, d.column) for d in notes] == [(1, 8), (2, 8)]
-    assert "'r' is set by --define" in notes[0].message
-    assert any("the scene defines no 'fov_unused'" in d.message for d in scene.warnings)
+    assert "'r' is set by defines;" in notes[0].message
+    assert any(d.message == "defines: fov_unused: the scene defines no 'fov_unused'"
+               for d in scene.warnings), [d.message for d in scene.warnings]
     # The same image as jtracer-cli --define gives.
     path = tmp_path / "defined.jts"
     path.write_text(DEFINED)
@@ -139,8 +140,16 @@ def test_defines_set_names_as_the_command_line_does(tmp_path, cli):
 
 
 def test_bad_defines_raise_value_or_type_errors():
-    with pytest.raises(ValueError, match="clock cannot be set with --define"):
+    # In Python's words: no --define or --clock to point at, no column of a
+    # text the caller never wrote.
+    with pytest.raises(ValueError, match=r"defines\['clock'\]: clock is not a define; pass clock="):
         jtracer.parse(DEFINED, defines={"clock": 1})
+    with pytest.raises(ValueError, match=r"^defines\['r'\]: a finite number, not nan$"):
+        jtracer.parse(DEFINED, defines={"r": float("nan")})
+    with pytest.raises(ValueError, match=r"^defines\['c'\]: a finite number, not -inf$"):
+        jtracer.parse(DEFINED, defines={"c": (0, float("-inf"), 0)})
+    with pytest.raises(ValueError, match=r"^defines\['r'\]: a finite number, not one too large"):
+        jtracer.parse(DEFINED, defines={"r": 10**400})
     with pytest.raises(ValueError, match="division by zero"):
         jtracer.parse(DEFINED, defines={"r": "1 / 0"})
     with pytest.raises(ValueError, match="three numbers"):

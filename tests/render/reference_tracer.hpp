@@ -70,6 +70,9 @@
 //   is a matter of rounding: then the ray traced with each such normal
 //   turned to the other side joins the variants, and the pixel is flagged
 //   when that can move one of its bytes (or lies within rounding of one).
+//   So does each variant above traced with its own such normals turned: a
+//   ray through a vertex whose normal runs along an edge of the faces
+//   around it, shaded as a hit on one of them, may light it either way.
 // A light whose diffuse and specular terms at a point are zero, whatever
 // reaches it, casts no shadow ray there, so flags nothing.
 // With several samples a pixel, each sample's variants give it a least and a
@@ -408,8 +411,18 @@ class Tracer {
             p.k = k;
             return p;
         }();
-        auto variant = [&](const Ray& v, bool lifted, Flags ignored) {
-            const Colour c = clamped(trace(v.origin, v.direction, 0, {}, 0.0, lifted, ignored));
+        auto variant = [&](const Ray& v, bool lifted, const Flags& given) {
+            Flags traced = given;
+            Colour c = clamped(trace(v.origin, v.direction, 0, {}, 0.0, lifted, traced));
+            out.least = glm::min(out.least, c);
+            out.greatest = glm::max(out.greatest, c);
+            // A smooth normal in its face's plane turns to either side on
+            // this variant's rays as on the sample's own: a face forced at
+            // a vertex whose normal runs along one of its edges is one.
+            if (!traced.in_plane || given.turn_in_plane) return;
+            Flags turned = given;
+            turned.turn_in_plane = true;
+            c = clamped(trace(v.origin, v.direction, 0, {}, 0.0, lifted, turned));
             out.least = glm::min(out.least, c);
             out.greatest = glm::max(out.greatest, c);
         };

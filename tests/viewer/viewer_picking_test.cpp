@@ -99,8 +99,25 @@ TEST_F(ViewerPicking, TheInspectorBoxKeepsClearOfThePickedObject) {
         << "the box overlaps the sphere around the mouse";
 }
 
-// Zoomed to 4 and panned with the mouse as a user would: the image is larger
-// than the window's image area, so the pan moves it.
+// An object deleted and another added while the scene is not rendered (too
+// large) leave as many objects: the red sphere's pixel is still of the scene
+// before, not of the cylinder added in its place.
+TEST_F(ViewerPicking, TheInspectorOfAnEarlierSceneWithAsManyObjects) {
+    const WindowPoint p = window_point({32.5, 20.5});  // the sphere
+    viewer.move_mouse(state, p.x, p.y);
+    ASSERT_NE(state.view.inspected.find("sphere 2"), std::string::npos) << state.view.inspected;
+    edit_scene(state, [](Scene& s) { s.settings.width = s.settings.height = 5000; });
+    ASSERT_TRUE(delete_block(state, BlockRef{BlockKind::primitive, 1})) << state.message;
+    ASSERT_TRUE(add_object(state, ShapeKind::cylinder)) << state.message;
+    ASSERT_EQ(state.doc.scene.primitives.size(), 2u);
+    for (int i = 0; i < 3; ++i) viewer.frame(state);
+    ASSERT_NE(state.render.render_note.find("too large"), std::string::npos)
+        << state.render.render_note;
+    viewer.move_mouse(state, p.x + 1, p.y);
+    EXPECT_EQ(state.view.inspected.find("cylinder"), std::string::npos) << state.view.inspected;
+    EXPECT_NE(state.view.inspected.find("earlier"), std::string::npos) << state.view.inspected;
+}
+
 // While the scene as edited is not rendered (its image too large, say) and
 // its objects are no longer those of the image shown, the pixel inspector
 // has no frame to pick in: it says so, never "background" over an object.
@@ -118,6 +135,8 @@ TEST_F(ViewerPicking, TheInspectorNeverCallsAPixelOfAnEarlierSceneBackground) {
     EXPECT_NE(state.view.inspected.find("earlier"), std::string::npos) << state.view.inspected;
 }
 
+// Zoomed to 4 and panned with the mouse as a user would: the image is larger
+// than the window's image area, so the pan moves it.
 class ViewerZoomedPicking : public ViewerPicking {
   protected:
     void SetUp() override {

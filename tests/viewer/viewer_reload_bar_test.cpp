@@ -127,5 +127,88 @@ TEST_F(ViewerNarrowWindow, TheImageAndTheReloadBarStayBesideTheTextEditor) {
     EXPECT_EQ(state.doc.scene.settings.width, 32);
 }
 
+// The first diagnostic the last frame drew (its label is its message).
+const UiItem* first_diagnostic(const UiItems& items) {
+    for (const UiItem& item : items)
+        if (item.label.rfind("scene.jts:", 0) == 0) return &item;
+    return nullptr;
+}
+
+// A reload that fails opens the Diagnostics panel, but in a small window
+// it is far below the sidebar's view. The sidebar never scrolls by itself
+// (it would move the controls under the mouse); the status line offers a
+// link that does, and the controls stay where they were until it is clicked.
+TEST_F(ViewerNarrowWindow, AFailedReloadOffersALinkToTheErrorsOutOfView) {
+    const fs::path file = open_rendered_copy("errors-link");
+    ASSERT_FALSE(HasFatalFailure());
+    viewer.frame(state);
+    EXPECT_EQ(find_item(viewer.ui_items(), "show errors"), nullptr) << "no errors";
+    const UiItem* reload = find_item(viewer.ui_items(), "Reload (R)");
+    ASSERT_NE(reload, nullptr);
+    const ScreenRect reload_before = reload->rect;
+
+    std::string broken = read_file(file);
+    broken.replace(broken.find("fov: 50;"), 8, "fov: 50 x;");
+    write_file(file, broken);
+    ASSERT_TRUE(viewer.run_until_loaded(state));
+    ASSERT_TRUE(state.doc.load_failed);
+    for (int i = 0; i < 3; ++i) viewer.frame(state);
+    const UiItem* panel = find_item(viewer.ui_items(), "panel");
+    const UiItem* status = find_item(viewer.ui_items(), "status");
+    const UiItem* error = first_diagnostic(viewer.ui_items());
+    ASSERT_NE(panel, nullptr);
+    ASSERT_NE(status, nullptr);
+    ASSERT_NE(error, nullptr) << "the Diagnostics panel opened";
+    EXPECT_GT(error->rect.y1, panel->rect.y1) << "listed below the sidebar's view";
+    reload = find_item(viewer.ui_items(), "Reload (R)");
+    ASSERT_NE(reload, nullptr);
+    EXPECT_EQ(reload->rect.y0, reload_before.y0) << "the sidebar scrolled by itself";
+    const UiItem* link = find_item(viewer.ui_items(), "show errors");
+    ASSERT_NE(link, nullptr) << "nothing leads to the errors out of view";
+    EXPECT_TRUE(link->enabled);
+    EXPECT_GE(link->rect.y0, status->rect.y0) << "in the status line";
+    EXPECT_LE(link->rect.y1, status->rect.y1) << "in the status line";
+
+    ASSERT_TRUE(viewer.click(state, "show errors"));
+    for (int i = 0; i < 3; ++i) viewer.frame(state);
+    panel = find_item(viewer.ui_items(), "panel");
+    error = first_diagnostic(viewer.ui_items());
+    ASSERT_NE(panel, nullptr);
+    ASSERT_NE(error, nullptr);
+    EXPECT_GE(error->rect.y0, panel->rect.y0) << "scrolled into view";
+    EXPECT_LE(error->rect.y1, panel->rect.y1) << "scrolled into view";
+    EXPECT_EQ(find_item(viewer.ui_items(), "show errors"), nullptr) << "the errors are in view";
+
+    // The text editor lists the errors under the text: no link then.
+    viewer.scroll(state, 10.0f, 10.0f, 40.0f);
+    for (int i = 0; i < 3; ++i) viewer.frame(state);
+    EXPECT_NE(find_item(viewer.ui_items(), "show errors"), nullptr) << "scrolled away again";
+    viewer.text_editor().open = true;
+    for (int i = 0; i < 2; ++i) viewer.frame(state);
+    EXPECT_EQ(find_item(viewer.ui_items(), "show errors"), nullptr);
+}
+
+// Text typed with an error leaves the Diagnostics panel as the user left
+// it, collapsed here: the link opens it as well as scrolling to it.
+TEST_F(ViewerNarrowWindow, TheLinkOpensACollapsedDiagnosticsPanel) {
+    open_rendered_copy("errors-link-collapsed");
+    ASSERT_FALSE(HasFatalFailure());
+    std::string broken = document_text(state.doc);
+    broken.replace(broken.find("fov: 50;"), 8, "fov: 50 x;");
+    type_text(state, broken);
+    state.check.checker.wait();
+    for (int i = 0; i < 3; ++i) viewer.frame(state);
+    ASSERT_TRUE(state.doc.draft.has_value());
+    ASSERT_EQ(first_diagnostic(viewer.ui_items()), nullptr) << "the panel is collapsed";
+    ASSERT_TRUE(viewer.click(state, "show errors"));
+    for (int i = 0; i < 3; ++i) viewer.frame(state);
+    const UiItem* panel = find_item(viewer.ui_items(), "panel");
+    const UiItem* error = first_diagnostic(viewer.ui_items());
+    ASSERT_NE(panel, nullptr);
+    ASSERT_NE(error, nullptr) << "still collapsed";
+    EXPECT_LE(error->rect.y1, panel->rect.y1) << "scrolled into view";
+    EXPECT_EQ(find_item(viewer.ui_items(), "show errors"), nullptr);
+}
+
 }  // namespace
 }  // namespace jt::view

@@ -302,6 +302,30 @@ TEST_F(ViewerSafety, SaveSceneAsAsksBeforeReplacingAndThenEditsTheNewFile) {
     EXPECT_EQ(read_file(file), read_file(kScene)) << "the first file is untouched";
 }
 
+// Found in the window: with the question "copy.jts exists." up, the user
+// typed another path into the field, and Replace it wrote over that file,
+// which nobody had asked about. Replace it writes the file it names.
+TEST_F(ViewerSafety, ReplaceItWritesOnlyTheFileItAskedAbout) {
+    open_and_render();
+    edit_scene(state, [](Scene& s) { s.settings.recurse_depth = 1; });
+    const fs::path asked = file.parent_path() / "copy.jts";
+    const fs::path other = file.parent_path() / "other.jts";
+    write_file(asked, "# asked about\n");
+    write_file(other, "# precious\n");
+    state.fields.save_scene_path = asked.string();
+    viewer.frame(state);
+    ASSERT_TRUE(viewer.click(state, "Save scene as"));
+    ASSERT_EQ(state.files.save_as_conflict, asked.string());
+    state.fields.save_scene_path = other.string();  // typed while the question is up
+    viewer.frame(state);
+    ASSERT_TRUE(viewer.click(state, "Replace it"));
+    EXPECT_EQ(read_file(other), "# precious\n") << "replaced without a question";
+    EXPECT_EQ(state.doc.path, asked);
+    ParseResult saved = parse_scene(read_file(asked));
+    ASSERT_TRUE(saved.ok());
+    EXPECT_EQ(saved.scene, state.doc.scene);
+}
+
 TEST_F(ViewerSafety, StatusAndTitleNameThePassTheTimesAndPausing) {
     open_scene(state, file);
     edit_scene(state, [](Scene& s) { s.settings.samples = 1; });
@@ -319,7 +343,7 @@ TEST_F(ViewerSafety, StatusAndTitleNameThePassTheTimesAndPausing) {
     EXPECT_NE(done.find("Mrays/s"), std::string::npos) << done;
     viewer.press_key(state, keys::space);
     // Paused when done: nothing is left to resume, only edits to hold back.
-    EXPECT_NE(render_status(state).find("done: 4 samples, paused | an edit waits for Space"),
+    EXPECT_NE(render_status(state).find("done: 4 samples, paused | edits wait for Space"),
               std::string::npos)
         << render_status(state);
     EXPECT_EQ(render_status(state).find("paused at"), std::string::npos) << render_status(state);

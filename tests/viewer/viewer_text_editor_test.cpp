@@ -275,6 +275,109 @@ TEST_F(ViewerTextEditor, ABrokenFileOnDiskIsShownWithItsErrorsAndNeverSavedOver)
     EXPECT_EQ(read_file(file), original);
 }
 
+// Found in the real window: a scene with an error, opened as the viewer
+// starts (no good scene yet), showed an empty text in the editor, line 1
+// and "No errors or warnings", where typing would have replaced the file's
+// whole text. The editor shows the file's text with its errors.
+TEST(ViewerTextEditorOpen, AFileBrokenFromTheStartIsShownWithItsErrors) {
+    HeadlessViewer viewer{1200, 700};
+    ASSERT_TRUE(viewer.ok()) << viewer.error();
+    const fs::path file = scene_copy("text-editor-broken-at-start");
+    std::string broken = read_file(file);
+    broken.replace(broken.find("height: 48;"), 11, "height: 48");
+    write_file(file, broken);
+    AppState state{test_config()};
+    open_scene(state, file);
+    ASSERT_FALSE(state.doc.loaded);
+    viewer.press_key(state, keys::letter('T'));
+    ASSERT_TRUE(viewer.text_editor().open);
+    viewer.frame(state);
+    viewer.frame(state);
+    EXPECT_EQ(viewer.text_editor().buffer, broken);
+    ASSERT_FALSE(state.doc.diagnostics.empty());
+    const Diagnostic& error = state.doc.diagnostics[0];
+    const std::string label = std::to_string(error.pos.line) + ":" +
+                              std::to_string(error.pos.column) + ": error: " + error.message;
+    EXPECT_NE(find_item(viewer.ui_items(), label), nullptr) << "the error under the text";
+
+    // Mended in the editor, it opens.
+    viewer.text_editor().jump = offset_of(broken, 4, 15);  // after "height: 48"
+    viewer.frame(state);
+    viewer.frame(state);
+    std::vector<KeyEvent> events;
+    type(events, ";");
+    viewer.key_events(state, events, 40.0, 16.0);
+    state.check.checker.wait();
+    viewer.frame(state);
+    EXPECT_TRUE(state.doc.loaded) << format_diagnostics(state.doc);
+    EXPECT_EQ(document_text(state.doc), read_file(kScene));
+    fs::remove_all(file.parent_path());
+}
+
+// Found in the real window: a scene with a Latin-1 comment ("café") is
+// refused (not UTF-8 text), and the text editor showed an empty text, line
+// 1 and "No errors or warnings", ready to be typed over. Like a text with
+// NUL bytes, it says what the file is and is not edited here.
+TEST(ViewerTextEditorBytes, AFileThatIsNotUtf8IsNotShownAsAnEmptyText) {
+    HeadlessViewer viewer{1200, 700};
+    ASSERT_TRUE(viewer.ok()) << viewer.error();
+    const fs::path file = scene_copy("text-editor-latin1");
+    std::string latin1 = read_file(file);
+    latin1.insert(0, "# caf\xe9\n");
+    write_file(file, latin1);
+    AppState state{test_config()};
+    open_scene(state, file);
+    ASSERT_FALSE(state.doc.loaded);
+    viewer.press_key(state, keys::letter('T'));
+    ASSERT_TRUE(viewer.text_editor().open);
+    viewer.frame(state);
+    viewer.frame(state);
+    EXPECT_EQ(find_item(viewer.ui_items(), "text"), nullptr) << "an editable text";
+    EXPECT_NE(find_item(viewer.ui_items(), "not UTF-8 text"), nullptr) << "nothing says why";
+    std::vector<KeyEvent> events;
+    type(events, "x");
+    viewer.key_events(state, events, 40.0, 16.0);
+    EXPECT_FALSE(state.doc.draft.has_value()) << "typed over";
+    EXPECT_EQ(read_file(file), latin1);
+    fs::remove_all(file.parent_path());
+}
+
+// Found in the real window: a valid scene with an emoji in a comment (a
+// character past U+FFFF, which ImGui's 16-bit characters cannot hold).
+// One space typed anywhere wrote the whole text back with NUL bytes in the
+// emoji's place: the editor then refused the text and Save with it. The
+// text is not put in the widget; the panels still edit the scene.
+TEST(ViewerTextEditorBytes, ATextTheWidgetWouldChangeIsNotEditedInIt) {
+    HeadlessViewer viewer{1200, 700};
+    ASSERT_TRUE(viewer.ok()) << viewer.error();
+    const fs::path file = scene_copy("text-editor-emoji");
+    std::string text = read_file(file);
+    text.insert(0, "# \xf0\x9f\x98\x80 caf\xc3\xa9\n");
+    write_file(file, text);
+    AppState state{test_config()};
+    open_scene(state, file);
+    ASSERT_TRUE(state.doc.loaded) << format_diagnostics(state.doc);
+    viewer.press_key(state, keys::letter('T'));
+    viewer.frame(state);
+    EXPECT_EQ(find_item(viewer.ui_items(), "text"), nullptr) << "an editable text";
+    EXPECT_NE(find_item(viewer.ui_items(), "not UTF-8 text"), nullptr) << "nothing says why";
+    std::vector<KeyEvent> events;
+    type(events, " ");
+    viewer.key_events(state, events, 40.0, 16.0);
+    EXPECT_FALSE(state.doc.draft.has_value()) << "typed over";
+    EXPECT_EQ(document_text(state.doc), text);
+
+    // Only UTF-8 up to U+FFFF (the é): the text is edited as before.
+    text.replace(2, 4, "x");
+    write_file(file, text);
+    ASSERT_TRUE(viewer.run_until_loaded(state));
+    viewer.frame(state);
+    viewer.frame(state);
+    EXPECT_NE(find_item(viewer.ui_items(), "text"), nullptr);
+    EXPECT_EQ(viewer.text_editor().buffer, text);
+    fs::remove_all(file.parent_path());
+}
+
 // Typing at the end of a long line left the cursor out of
 // view (the editor did not scroll sideways), and a long error message was
 // cut off at the list's edge.
@@ -453,6 +556,49 @@ TEST(ViewerIncludedFileEditor, OpensTypesUndoesAndSavesAnIncludedFile) {
     EXPECT_EQ(ed.buffer, typed) << "the file as saved";
     EXPECT_EQ(state.message, "Saved parts/ball.jts") << "its own write reloads nothing";
     fs::remove_all(dir);
+}
+
+// Found in the real window (1500x950, the split scene): the hint beside an
+// included file's name ran past the editor's right edge ("Ctrl+Z undoe").
+// A hint that does not fit gives its brief form, the whole in its tooltip,
+// on the same one line, in the scene file's view too.
+TEST(ViewerIncludedFileEditor, TheHintsBesideTheFileNameFitTheEditor) {
+    HeadlessViewer viewer{1100, 700};
+    ASSERT_TRUE(viewer.ok()) << viewer.error();
+    const fs::path dir = write_including_scene("included-file-hint");
+    AppState state{test_config()};
+    open_scene(state, dir / "main.jts");
+    ASSERT_TRUE(state.doc.loaded) << format_diagnostics(state.doc);
+    viewer.press_key(state, keys::letter('T'));
+    ASSERT_TRUE(viewer.text_editor().open);
+    const auto hint_fits = [&](const char* file) {
+        viewer.frame(state);
+        const UiItem* hint = find_item(viewer.ui_items(), "text editor hint");
+        ASSERT_NE(hint, nullptr) << file;
+        EXPECT_FALSE(hint->clipped) << file;
+        const UiItem* text = find_item(viewer.ui_items(), "text");
+        ASSERT_NE(text, nullptr);
+        EXPECT_LE(hint->rect.x1, text->rect.x1) << file << ": past the text's right edge";
+    };
+    hint_fits("main.jts");
+    ASSERT_TRUE(viewer.click(state, "parts/ball.jts"));
+    hint_fits("parts/ball.jts");
+    fs::remove_all(dir);
+}
+
+// Where not even the brief form fits (640x400) there is none.
+TEST(ViewerIncludedFileEditor, NoHintIsCutInATinyWindow) {
+    HeadlessViewer viewer{640, 400};
+    ASSERT_TRUE(viewer.ok()) << viewer.error();
+    AppState state{test_config()};
+    open_scene(state, kScene);
+    ASSERT_TRUE(state.doc.loaded) << format_diagnostics(state.doc);
+    viewer.text_editor().open = true;
+    viewer.frame(state);
+    viewer.frame(state);
+    ASSERT_NE(find_item(viewer.ui_items(), "text"), nullptr);
+    const UiItem* hint = find_item(viewer.ui_items(), "text editor hint");
+    EXPECT_TRUE(hint == nullptr || !hint->clipped) << "cut at the editor's edge";
 }
 
 // Found in the real window: text typed in an included file, then Esc to

@@ -18,6 +18,7 @@
 #include <algorithm>
 #include <cstdio>
 #include <cstring>
+#include <string_view>
 
 namespace jt::view {
 
@@ -58,8 +59,46 @@ std::string_view line_text(const std::string& text, int line) {
         (end == std::string::npos ? text.size() : end) - static_cast<std::size_t>(start));
 }
 
+// ImGui's text widget decodes its text into 16-bit characters and encodes
+// it back on every edit: a byte that is not UTF-8 is cut or replaced, and a
+// character past U+FFFF (an emoji in a comment) came back as NUL bytes.
+std::size_t first_unshowable_byte(std::string_view text) {
+    const auto continuation = [&](std::size_t at) {
+        return at < text.size() && (static_cast<unsigned char>(text[at]) & 0xC0) == 0x80;
+    };
+    std::size_t at = 0;
+    while (at < text.size()) {
+        const auto c = static_cast<unsigned char>(text[at]);
+        if (c < 0x80) {
+            ++at;
+            continue;
+        }
+        std::size_t length = 0;
+        unsigned code = 0;
+        if (c >= 0xC2 && c <= 0xDF) {
+            length = 2;
+            code = c & 0x1Fu;
+        } else if (c >= 0xE0 && c <= 0xEF) {
+            length = 3;
+            code = c & 0x0Fu;
+        } else {
+            return at;  // a stray continuation, an overlong start, or past U+FFFF
+        }
+        for (std::size_t i = 1; i < length; ++i) {
+            if (!continuation(at + i)) return at;
+            code = (code << 6) | (static_cast<unsigned char>(text[at + i]) & 0x3Fu);
+        }
+        const bool overlong = length == 3 && code < 0x800;
+        const bool surrogate = code >= 0xD800 && code <= 0xDFFF;
+        if (overlong || surrogate || code > IM_UNICODE_CODEPOINT_MAX) return at;
+        at += length;
+    }
+    return std::string_view::npos;
+}
+
 void set_buffer(TextEditorState& ed, std::string text) {
     if (text == ed.shown) return;
+    ed.unshowable = first_unshowable_byte(text);
     ed.shown = text;
     ed.buffer = std::move(text);
     ed.push = true;
@@ -82,13 +121,18 @@ void follow_document(const AppState& state, TextEditorState& ed) {
         set_buffer(ed, draft ? draft->text : included_text(doc, file));
         return;
     }
-    if (ed.shown_file.empty() && doc.revision == ed.shown_revision && doc.text == ed.shown_base &&
+    // The file's generation too: a file that has never loaded (no revision,
+    // no base text yet) is shown from its text on disk, which each load
+    // replaces.
+    if (ed.shown_file.empty() && doc.revision == ed.shown_revision &&
+        doc.file_generation == ed.shown_generation && doc.text == ed.shown_base &&
         doc.draft == ed.shown_draft)
         return;
     ed.shown_file.clear();
     ed.shown_base = doc.text;
     ed.shown_draft = doc.draft;
     ed.shown_revision = doc.revision;
+    ed.shown_generation = doc.file_generation;
     set_buffer(ed, document_text(doc));
 }
 
@@ -312,13 +356,20 @@ void included_header(AppState& state, const std::string& canonical) {
                                           : std::string_view();
     ImGui::Text("%.*s%s", static_cast<int>(name.size()), name.data(), draft ? " *" : "");
     ImGui::SameLine();
-    ImGui::TextDisabled("Ctrl+S saves it and reloads the scene; Ctrl+Z undoes typing here");
-    if (const int count = reading_count(latest_readings(state.doc), canonical); count > 1)
-        ImGui::TextColored(ImVec4(0.9f, 0.75f, 0.3f, 1.0f),
-                           "Included %d times: every object read from it changes", count);
-    if (!read)
-        ImGui::TextColored(ImVec4(1.0f, 0.7f, 0.3f, 1.0f),
-                           "The scene no longer reads this file: Save scene still writes it");
+    hint_text("Ctrl+S saves it and reloads the scene; Ctrl+Z undoes typing here",
+              "Ctrl+S saves, Ctrl+Z undoes here", "text editor hint");
+    // Lines of their own, wrapped: they come with a change of the file, not
+    // with each keystroke.
+    if (const int count = reading_count(latest_readings(state.doc), canonical); count > 1) {
+        ImGui::PushStyleColor(ImGuiCol_Text, ImVec4(0.9f, 0.75f, 0.3f, 1.0f));
+        ImGui::TextWrapped("Included %d times: every object read from it changes", count);
+        ImGui::PopStyleColor();
+    }
+    if (!read) {
+        ImGui::PushStyleColor(ImGuiCol_Text, ImVec4(1.0f, 0.7f, 0.3f, 1.0f));
+        ImGui::TextWrapped("The scene no longer reads this file: Save scene still writes it");
+        ImGui::PopStyleColor();
+    }
     if (draft && button("Revert", "Drop what was typed in this file: show its text again"))
         revert_included_draft(state.editor, canonical);
 }
@@ -366,6 +417,19 @@ void text_editor(AppState& state, TextEditorState& ed, float x0, float y0, float
         ImGui::End();
         return;
     }
+    if (ed.unshowable != std::string::npos) {
+        const std::string_view before(ed.shown.data(), ed.unshowable);
+        const long line = 1 + std::count(before.begin(), before.end(), '\n');
+        const std::size_t column = ed.unshowable - (before.rfind('\n') + 1) + 1;
+        ImGui::TextWrapped(
+            "This text has a character at line %ld, column %zu that the editor cannot keep as "
+            "it is: a byte that is not UTF-8 text, or one past U+FFFF (an emoji, say). Edit it "
+            "in another editor; the viewer reloads it when it changes.",
+            line, column);
+        note_item("not UTF-8 text", false);
+        ImGui::End();
+        return;
+    }
     if (ed.buffer.size() > kMaxEditableText) {
         ImGui::TextWrapped(
             "%s is %.1f MB: too large to edit here. Edit it in another editor; the "
@@ -386,12 +450,15 @@ void text_editor(AppState& state, TextEditorState& ed, float x0, float y0, float
             ImGui::TextColored(ImVec4(1.0f, 0.45f, 0.4f, 1.0f),
                                "errors: showing the last good image");
         else
-            ImGui::TextDisabled("Ctrl+Z undoes panel and text edits alike");
-        if (doc.file_deleted)
-            ImGui::TextColored(ImVec4(1.0f, 0.7f, 0.3f, 1.0f),
-                               "%s was deleted on disk: this is the viewer's copy; Save scene "
-                               "writes it again",
-                               name.c_str());
+            hint_text("Ctrl+Z undoes panel and text edits alike", "Ctrl+Z undoes all edits",
+                      "text editor hint");
+        if (doc.file_deleted) {
+            ImGui::PushStyleColor(ImGuiCol_Text, ImVec4(1.0f, 0.7f, 0.3f, 1.0f));
+            ImGui::TextWrapped(
+                "%s was deleted on disk: this is the viewer's copy; Save scene writes it again",
+                name.c_str());
+            ImGui::PopStyleColor();
+        }
     }
 
     const float list_height = ImGui::GetTextLineHeightWithSpacing() * 5.0f + 8.0f;

@@ -16,6 +16,7 @@
 #include "jtracer/scene.hpp"
 #include "model/app_state.hpp"
 
+#include <cstddef>
 #include <cstdint>
 #include <optional>
 #include <string>
@@ -27,6 +28,10 @@ struct TextEditorState {
     bool open = false;
     std::string buffer;  // what the widget edits
     std::string shown;   // the document text `buffer` was last set from
+    // The first byte of `shown` the widget cannot hold as it is (not UTF-8,
+    // or a character past ImGui's 16-bit ones, U+FFFF), or npos. The widget
+    // would write such a text back changed: it is not put in the widget.
+    std::size_t unshowable = std::string::npos;
     // The document the shown text was made from (document_text is not free).
     std::string shown_base;
     std::uint64_t shown_revision = 0;  // SceneDocument::revision

@@ -78,13 +78,14 @@ float status_height() {
 }
 
 // `inspected`: the pixel inspector's text when its box does not fit the image.
-void status_window(AppState& state, float y, float width, const std::string& inspected) {
+void status_window(AppState& state, FrameState& frame, float y, float width,
+                   const std::string& inspected) {
     ImGui::SetNextWindowPos(ImVec2(0, y));
     ImGui::SetNextWindowSize(ImVec2(width, status_height()));
     ImGui::Begin(
         "##status", nullptr,
         ImGuiWindowFlags_NoDecoration | ImGuiWindowFlags_NoMove | ImGuiWindowFlags_NoSavedSettings);
-    status_line(state, inspected);
+    status_line(state, inspected, &frame.diagnostics, frame.text_editor.open);
     note_window("status");
     ImGui::End();
 }
@@ -157,7 +158,7 @@ void viewer_frame(AppState& state, FrameState& frame, const FrameInfo& info) {
         const bool in_status =
             !inspected.empty() && !inspector_box_fits(inspected, frame.image_area);
         static const std::string none;
-        status_window(state, h - status_h, w, in_status ? inspected : none);
+        status_window(state, frame, h - status_h, w, in_status ? inspected : none);
         if (frame.presenter.has_image())
             image_toolbar(state, frame, place_in_area(state, frame, area, info.framebuffer_scale));
         // Once the panel edge is let go: a drag writes the file once, not every frame.

@@ -288,6 +288,7 @@ void take_in(AppState& state, CheckedText checked) {
     doc.diagnostics = checked.diagnostics;
     doc.diagnostics_source = checked.text;
     doc.diagnostics_path = doc.path;
+    doc.diagnostics_files = checked.parsed.source.files;
     note_diagnostics_changed(doc);
     state.check.draft_reads.clear();
     if (!checked.ok) {

@@ -28,6 +28,7 @@ void check_edits(CheckState& check, SceneDocument& doc, const FileState& files) 
     doc.diagnostics.insert(doc.diagnostics.end(), more.begin(), more.end());
     doc.diagnostics_source = doc.text;
     doc.diagnostics_path = doc.path;
+    doc.diagnostics_files = doc.source.files;
     note_diagnostics_changed(doc);
     check.checked_revision = doc.revision;
 }
@@ -64,24 +65,28 @@ namespace {
 // Undo or redo during a drag that moves an object gives back the document as
 // the drag found it, and nothing more: the drag is the step being undone.
 template <class Step>
-void step_history(AppState& state, Step step, const char* done) {
+void step_history(AppState& state, Step step, const char* done, const char* nothing) {
     if (state.drags.object) {
         cancel_object_drag(state);
         return;
     }
-    std::optional<Scene> before;
-    const std::uint64_t revision_before = state.doc.revision;
-    if (auto version = step(version_of(state.doc))) {
-        before = state.doc.scene;
-        restore_version(state.doc, *version);
-        keep_camera_selection(state.view, state.doc.scene, *before);
-        state.message = done;
+    std::optional<DocumentVersion> version = step(version_of(state.doc));
+    // Nothing to step to: the document stays as it is, and so does its
+    // render (a change noted here would start it again).
+    if (!version) {
+        state.message = nothing;
+        return;
     }
+    const std::uint64_t revision_before = state.doc.revision;
+    const Scene before = state.doc.scene;
+    restore_version(state.doc, *version);
+    keep_camera_selection(state.view, state.doc.scene, before);
+    state.message = done;
     recheck_draft(state);
     state.history.edit_base.reset();
     note_command_edit(state.history, state.doc);
     // Typing with errors undone (or redone): the image shown is of this very scene.
-    if (before && state.doc.scene == *before)
+    if (state.doc.scene == before)
         keep_render_for(state.render, revision_before, state.doc.revision);
 }
 
@@ -89,12 +94,14 @@ void step_history(AppState& state, Step step, const char* done) {
 
 void undo(AppState& state) {
     step_history(
-        state, [&](auto current) { return state.history.undo.undo(std::move(current)); }, "Undone");
+        state, [&](auto current) { return state.history.undo.undo(std::move(current)); }, "Undone",
+        "Nothing to undo");
 }
 
 void redo(AppState& state) {
     step_history(
-        state, [&](auto current) { return state.history.undo.redo(std::move(current)); }, "Redone");
+        state, [&](auto current) { return state.history.undo.redo(std::move(current)); }, "Redone",
+        "Nothing to redo");
 }
 
 void note_command_edit(EditHistory& history, SceneDocument& doc) {

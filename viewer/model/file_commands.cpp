@@ -17,6 +17,9 @@ namespace {
 void after_scene_replaced(AppState& state, const std::vector<Camera>& cameras_before) {
     keep_camera_selection(state.view, state.doc.scene, cameras_before);
     state.history.undo.clear();
+    // A burst of typing under way ends with the text it typed in: the next
+    // keystroke records the undo step the cleared history no longer holds.
+    state.history.typing = false;
     state.history.edit_base.reset();
     state.files.pending_reload.reset();
     state.files.save_conflict.clear();
@@ -50,8 +53,9 @@ void finish_open(AppState& state, const std::filesystem::path& path, LoadAttempt
     const std::filesystem::path was = state.doc.path;
     accept_load(state.doc, path, std::move(attempt));
     // An open was asked before dropping text typed in included files (guard):
-    // none carries over, and another scene's file is not shown.
-    state.editor.drafts.clear();
+    // none carries over to another scene. A failed open keeps the scene shown
+    // with its edits (accept_load), and so with the text typed in its files.
+    if (ok || first) state.editor.drafts.clear();
     if (state.doc.path != was) state.editor.shown.clear();
     if (ok || first) {
         state.files.watcher = FileWatcher(state.config.watch_interval);
@@ -135,12 +139,17 @@ void finish_reload(AppState& state, LoadAttempt attempt) {
     }
     // Replacing the scene now would throw the edits away: ask first.
     // The same text again: the only choice is whether to drop the edits, and
-    // the diagnostics stay those of the edited scene.
+    // the diagnostics stay those of the edited scene. So do those of typed
+    // text (a draft): the text editor shows that text with them, and its
+    // next keystroke would check it again anyway; the bar and the message
+    // say whether the file on disk has errors.
     const bool unchanged = attempt.text == state.doc.disk_text;
     state.files.reapply_problem.clear();
     if (!unchanged) {
         if (const Expected<Scene> reapplied = reapply_edits(state.doc, attempt); !reapplied)
             state.files.reapply_problem = reapplied.error().message;
+    }
+    if (!unchanged && !state.doc.draft) {
         state.doc.load_failed = !attempt.ok;
         state.doc.diagnostics = attempt.diagnostics;
         state.doc.diagnostics_source = attempt.text;

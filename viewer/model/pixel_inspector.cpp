@@ -17,7 +17,11 @@ std::optional<PixelReport> inspect_pixel(AppState& state, int x, int y) {
     report.rgb = {p[0], p[1], p[2]};
     report.earlier_render = !state.render.display_complete && state.render.passes_shown == 0;
     if (report.earlier_render) return report;
-    if (const std::shared_ptr<const PreparedFrame> frame = shown_frame(state))
+    // Objects deleted and added may leave as many as before: only the
+    // revision tells that the image is of the scene as it stands.
+    const bool current =
+        state.render.started && state.render.started->scene_revision == state.doc.revision;
+    if (const std::shared_ptr<const PreparedFrame> frame = current ? shown_frame(state) : nullptr)
         report.hit = pick_primitive(*frame, x, y);
     else
         report.earlier_scene = true;

@@ -302,9 +302,44 @@ Expected<std::vector<std::string>> save_scene_in_place(SceneDocument& doc) {
     return save_scene_copy(doc, doc.path);
 }
 
+namespace {
+
+// The first file the scene names relative to its folder (an image map, the
+// background map, a mesh's model), or null.
+const std::string* relative_file_name(const Scene& scene) {
+    const auto relative = [](const std::string& name) {
+        return !name.empty() && !std::filesystem::path(name).is_absolute();
+    };
+    if (relative(scene.settings.background_map)) return &scene.settings.background_map;
+    for (const Primitive& p : scene.primitives) {
+        if (const Mesh* mesh = shape_if<Mesh>(&p.shape); mesh && relative(mesh->file))
+            return &mesh->file;
+        if (relative(p.material.finish->image_map)) return &p.material.finish->image_map;
+    }
+    return nullptr;
+}
+
+std::filesystem::path folder_of(const std::filesystem::path& file) {
+    std::error_code ec;
+    const std::filesystem::path folder = std::filesystem::absolute(file, ec).parent_path();
+    const std::filesystem::path canonical = std::filesystem::weakly_canonical(folder, ec);
+    return ec ? folder : canonical;
+}
+
+}  // namespace
+
 Expected<std::vector<std::string>> save_scene_copy(SceneDocument& doc,
                                                    const std::filesystem::path& path) {
     if (!doc.loaded) return Error{"no scene is open"};
+    // A copy in another folder reads its includes, images and models from
+    // there: one whose paths are relative to this file's folder would be a
+    // broken file, found only when it is opened again.
+    const std::filesystem::path folder = folder_of(doc.path);
+    const bool moved = folder_of(path) != folder;
+    if (moved)
+        if (const std::string* name = relative_file_name(doc.scene))
+            return Error{"it names \"" + *name + "\" relative to " + folder.string() +
+                         ": save the copy in that folder"};
     if (doc.draft) return Error{"the text has errors (see Diagnostics): fix them before saving"};
     SourceEditResult edit = apply_scene_edits(doc.text, doc.source, *doc.original, doc.scene);
     if (!edit.ok()) return Error{edit.error};
@@ -314,7 +349,13 @@ Expected<std::vector<std::string>> save_scene_copy(SceneDocument& doc,
             "not into a copy"};
     // Check before writing: the new texts must mean exactly the edited
     // scene. The included files are read as they would be written.
-    ParseResult check = parse_scene(edit.text, document_options(doc, edit));
+    ParseOptions options = document_options(doc, edit);
+    if (moved) options.main_file = path.string();  // includes are read from the copy's folder
+    ParseResult check = parse_scene(edit.text, options);
+    if (moved && (!check.ok() || check.scene != doc.scene))
+        return Error{"its includes are relative to " + folder.string() +
+                     " and would not read the same scene from " + folder_of(path).string() +
+                     ": save the copy in that folder"};
     if (!check.ok() || check.scene != doc.scene)
         return Error{
             "internal error: the edited text would not read back as the edited scene; "
@@ -345,11 +386,14 @@ Expected<std::vector<std::string>> save_scene_copy(SceneDocument& doc,
     doc.diagnostics_path = path;
     doc.text = std::move(edit.text);
     doc.disk_text = doc.text;
+    // Files named from now on are found where the copy is.
+    if (moved) doc.scene.asset_folder = path.parent_path().string();
     doc.original = std::make_shared<const Scene>(doc.scene);
     // The scene itself did not change (no new revision: it is no edit), but
     // it now equals the original.
     doc.edited_at = {doc.revision, false};
     doc.source = std::move(check.source);
+    if (moved) note_included_files(doc, doc.source);
     doc.diagnostics = check.diagnostics;
     doc.parse_diagnostics = std::move(check.diagnostics);
     doc.diagnostics_source = doc.text;

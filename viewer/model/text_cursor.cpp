@@ -5,19 +5,43 @@
 
 namespace jt::view {
 
+namespace {
+
+std::size_t common_prefix(std::string_view a, std::string_view b) {
+    const std::size_t shorter = std::min(a.size(), b.size());
+    std::size_t n = 0;
+    while (n < shorter && a[n] == b[n]) ++n;
+    return n;
+}
+
+std::size_t common_suffix(std::string_view a, std::string_view b) {
+    const std::size_t shorter = std::min(a.size(), b.size());
+    std::size_t n = 0;
+    while (n < shorter && a[a.size() - 1 - n] == b[b.size() - 1 - n]) ++n;
+    return n;
+}
+
+}  // namespace
+
 int cursor_after_replace(std::string_view before, std::string_view after, int cursor) {
     const std::size_t at = static_cast<std::size_t>(std::clamp<long>(cursor, 0, before.size()));
+    const std::size_t prefix = common_prefix(before, after);
+    // An insertion at the cursor (a redo of typing, an undo of a deletion)
+    // leaves it after the text, as typing that text would have. Where the
+    // inserted text repeats its neighbours ("1|0" -> "10|0") it could stand
+    // anywhere in a run of places; the cursor's is taken when it is one.
+    if (after.size() > before.size()) {
+        const std::size_t unchanged_tail = common_suffix(before, after);
+        const std::size_t first_place = before.size() - std::min(unchanged_tail, before.size());
+        if (first_place <= prefix && at >= first_place && at <= prefix)
+            return static_cast<int>(at + after.size() - before.size());
+    }
     const std::size_t shorter = std::min(before.size(), after.size());
-    std::size_t prefix = 0;
-    while (prefix < shorter && before[prefix] == after[prefix]) ++prefix;
     std::size_t suffix = 0;
     while (suffix < shorter - prefix &&
            before[before.size() - 1 - suffix] == after[after.size() - 1 - suffix])
         ++suffix;
-    // An insertion at the cursor (a redo of typing, an undo of a deletion)
-    // leaves it after the text, as typing that text would have.
-    const bool insertion_at_cursor = prefix + suffix == before.size() && at == prefix;
-    if (at <= prefix && !insertion_at_cursor) return static_cast<int>(at);
+    if (at <= prefix) return static_cast<int>(at);
     if (at >= before.size() - suffix) return static_cast<int>(at - before.size() + after.size());
     return static_cast<int>(after.size() - suffix);
 }

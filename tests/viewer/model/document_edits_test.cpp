@@ -264,6 +264,28 @@ TEST(DocumentEdits, ATypoFixedBackToTheShownSceneKeepsTheRender) {
     EXPECT_NE(state.render.display, good);
 }
 
+// Found in the window: Ctrl+Z pressed once too often (the Undo button
+// greyed out) started the finished render again from its first preview. An
+// undo or redo with nothing to step to changes nothing, the render neither.
+TEST(DocumentEdits, UndoOrRedoWithNothingToStepToKeepsTheRender) {
+    AppState state(test_config());
+    open_scene(state, kScene);
+    ModelLoop loop;
+    ASSERT_TRUE(loop.run_until_complete(state));
+    const std::uint64_t jobs = state.render.renderer.jobs_started();
+    const std::uint64_t revision = state.doc.revision;
+    ASSERT_FALSE(state.history.undo.can_undo());
+    for (int i = 0; i < 2; ++i) {
+        undo(state);
+        redo(state);
+        for (int f = 0; f < 3; ++f) loop.frame(state);
+    }
+    EXPECT_EQ(state.doc.revision, revision);
+    EXPECT_EQ(state.render.renderer.jobs_started(), jobs) << "no render started again";
+    EXPECT_TRUE(render_complete(state.render));
+    EXPECT_FALSE(has_unsaved_edits(state.doc));
+}
+
 // The selection is an index: a Delete button in a panel must not leave it on
 // the object that moved into the deleted one's place, nor on the one after
 // the selected object when an object before it goes.

@@ -323,5 +323,30 @@ TEST_F(EditorFilesTest, AValueFromAnIncludedFileNamesItAndHowOftenItIsRead) {
     EXPECT_EQ(shared_text_note(shared_text(state.doc, block(0)), small), "in part");
 }
 
+// An open asked over unsaved work, answered Discard, that fails leaves the
+// file shown with its own edits, and with the text typed in its included
+// files too: not half of the edits.
+TEST_F(EditorFilesTest, AFailedOpenKeepsTheTextTypedInIncludedFiles) {
+    write(ball, kBall);
+    open();
+    ASSERT_TRUE(state.doc.loaded) << format_diagnostics(state.doc);
+    const std::string file = canonical_of(state.doc, "parts/ball.jts");
+    show_file(state.editor, state.doc, file);
+    type_included_text(state.editor, state.doc, "sphere { center: <0, 0, -5>; radius: 2; }\n");
+    edit_scene(state, [](Scene& s) { s.settings.width = 40; });
+    ASSERT_TRUE(has_included_drafts(state.editor));
+    const fs::path other = scratch.path() / "other.jts";
+    write(other, "render_settings {\n    width: 64\n}\n");
+    request_open_guarded(state, other);
+    ASSERT_TRUE(state.files.unsaved_prompt);
+    resolve_unsaved(state, UnsavedChoice::discard);
+    state.files.loader.wait();
+    take_finished_load(state);
+    ASSERT_EQ(state.doc.path, main) << state.message;
+    EXPECT_TRUE(scene_edited(state.doc)) << "the main file's edit stays";
+    EXPECT_TRUE(has_included_drafts(state.editor))
+        << "so does the included file's: " << state.message;
+}
+
 }  // namespace
 }  // namespace jt::view

@@ -195,5 +195,57 @@ TEST_F(ViewerIncludes, AnUnsavedTypedIncludeIsWatched) {
     EXPECT_FALSE(has_unsaved_edits(state.doc));
 }
 
+// A failed open of another file leaves its list of included files with its
+// diagnostics; the next check of the document's own scene (an edit) names
+// and quotes a diagnostic in one of the document's includes from the
+// document's list, not the other file's.
+TEST_F(ViewerIncludes, AnEditAfterAFailedOpenQuotesTheDocumentsOwnInclude) {
+    save_as_editor(scratch.path() / "parts" / "cam.jts",
+                   "cameras { perspective_camera { aspect: 1; } }\n");
+    save_as_editor(main,
+                   "render_settings { width: 32; height: 24; }\n"
+                   "include \"parts/cam.jts\";\n"
+                   "scene { point_light { position: <3, 5, 4>; } }\n");
+    open_scene(state, main);
+    ASSERT_TRUE(state.doc.loaded) << format_diagnostics(state.doc);
+    model.frame(state);
+    ASSERT_NE(format_diagnostics(state.doc).find("cam.jts:1:"), std::string::npos)
+        << "the aspect warning, in the include: " << format_diagnostics(state.doc);
+
+    const fs::path other = scratch.path() / "other.jts";
+    save_as_editor(scratch.path() / "parts" / "other_include.jts", "# a part of other.jts\n");
+    save_as_editor(other, "include \"parts/other_include.jts\";\nrender_settings { width: 64 }\n");
+    open_scene(state, other);
+    model.frame(state);
+    ASSERT_EQ(state.doc.path, main) << "the failed open keeps the document";
+
+    edit_scene(state, [](Scene& s) { s.settings.width = 40; });
+    model.frame(state);
+    const std::string listed = format_diagnostics(state.doc);
+    EXPECT_NE(listed.find("cam.jts:1:"), std::string::npos) << listed;
+    EXPECT_EQ(listed.find("other_include.jts"), std::string::npos) << listed;
+}
+
+// An error inside a file that only the typed text includes (the file on
+// disk does not) is named as that file's, through the list of files the
+// typed text's check read, not the loaded file's.
+TEST_F(ViewerIncludes, AnErrorInATypedIncludeNamesThatFile) {
+    save_as_editor(main,
+                   "render_settings { width: 32; height: 24; }\n"
+                   "cameras { perspective_camera { aspect: 1.3333333333333333; } }\n"
+                   "scene { point_light { position: <3, 5, 4>; } }\n");
+    save_as_editor(ball, "sphere { center: <0, 0, -5>; radius: -1; }\n");
+    open_scene(state, main);
+    ASSERT_TRUE(state.doc.loaded) << format_diagnostics(state.doc);
+    type_text(state, kMain);
+    state.check.checker.wait();
+    for (int i = 0; i < 3; ++i) model.frame(state);
+    ASSERT_TRUE(has_errors(state.doc.diagnostics))
+        << state.message << " draft " << state.doc.draft.has_value() << "\n"
+        << format_diagnostics(state.doc);
+    const std::string listed = format_diagnostics(state.doc);
+    EXPECT_NE(listed.find("ball.jts:1:"), std::string::npos) << listed;
+}
+
 }  // namespace
 }  // namespace jt::view

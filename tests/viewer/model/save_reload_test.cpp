@@ -246,6 +246,61 @@ TEST_F(ViewerFiles, KeptEditsShowTheirOwnDiagnosticsAgain) {
     EXPECT_EQ(state.doc.diagnostics_source, state.doc.text);
 }
 
+// Found in the real window: " oops" typed after `width: 800;`, then the
+// file changed on disk. While the reload bar waited for a choice the text
+// editor showed the broken text under "errors: showing the last good
+// image", yet listed "No errors or warnings" and Diagnostics (0): the
+// diagnostics were the newer file's, until the next keystroke brought the
+// text's own back. Typed text keeps its own diagnostics while the choice
+// waits (the bar says whether the file on disk has errors).
+TEST_F(ViewerFiles, TypedTextKeepsItsDiagnosticsWhileTheReloadChoiceWaits) {
+    const std::string broken = replaced(kOriginal, "height: 48;", "height: 48");
+    type_text(state, broken);
+    ASSERT_TRUE(run_until([&] { return !state.check.checker.in_flight(); }));
+    ASSERT_TRUE(state.doc.draft.has_value());
+    ASSERT_TRUE(has_errors(state.doc.diagnostics));
+    for (const std::string& theirs : {kTheirs, replaced(kTheirs, "radius: 1;", "radius: 1 x;")}) {
+        they_save(theirs);
+        ASSERT_TRUE(state.files.pending_reload.has_value());
+        for (int i = 0; i < 3; ++i) model.frame(state);
+        EXPECT_TRUE(has_errors(state.doc.diagnostics)) << "the typed text's error";
+        EXPECT_EQ(state.doc.diagnostics_source, broken);
+        EXPECT_EQ(document_text(state.doc), broken);
+        EXPECT_EQ(state.files.pending_reload->ok, theirs == kTheirs);
+        EXPECT_NE(state.message.find("changed on disk"), std::string::npos) << state.message;
+    }
+    // Dropped for the file with errors: its text is shown, with its errors.
+    const std::string theirs = read_file(file);
+    resolve_reload(state, ReloadChoice::drop_edits);
+    ASSERT_TRUE(run_until([&] { return !state.check.checker.in_flight(); }));
+    EXPECT_EQ(document_text(state.doc), theirs);
+    EXPECT_TRUE(has_errors(state.doc.diagnostics));
+    EXPECT_EQ(state.doc.diagnostics_source, theirs) << "the file's own";
+}
+
+// Found by the monkey (seed 4): text typed, then at once the file taken
+// from disk (drop my edits). The history was cleared but the burst of
+// typing was not ended (its check, overtaken, never ended it), so the next
+// keystrokes recorded no undo step: Ctrl+Z could not take them back. A
+// scene replaced ends the burst.
+TEST_F(ViewerFiles, TypingAfterTheFileIsTakenFromDiskCanBeUndone) {
+    // The file changes within the pause after the keystroke, before the
+    // text is checked.
+    type_text(state, replaced(kOriginal, "height: 48;", "height: 48"));
+    ASSERT_TRUE(state.doc.draft.has_value());
+    they_save(kTheirs);
+    ASSERT_TRUE(state.files.pending_reload.has_value());
+    resolve_reload(state, ReloadChoice::drop_edits);
+    model.frame(state);
+    ASSERT_EQ(document_text(state.doc), kTheirs);
+    ASSERT_FALSE(state.history.undo.can_undo());
+
+    type_text(state, kTheirs + "# typed\n");
+    EXPECT_TRUE(state.history.undo.can_undo()) << "the typing is no undo step";
+    undo(state);
+    EXPECT_EQ(document_text(state.doc), kTheirs);
+}
+
 // Found in the real window: an open of a large file takes seconds, and the
 // panels and the text stay editable meanwhile. The prompt for unsaved edits
 // is asked when the open is requested; an edit made after that was replaced
@@ -393,6 +448,62 @@ TEST(ViewerSaveAs, KeepsTheFilesNamesAndExpressions) {
     const std::string saved = read_file(copy);
     EXPECT_EQ(saved, replaced(named, "intensity: <1, 1, 1>", "intensity: <0.5, 0.5, 0.5>"));
     EXPECT_TRUE(parse_scene(saved).scene == state.doc.scene);
+}
+
+// Found in the window: the split scene (include "parts/materials.jts")
+// saved as a copy one folder up gave a file that no longer opened (its
+// includes read from the copy's folder), and a scene with image maps the
+// same (they are found from it too). A copy in another folder is refused
+// when the scene names files relative to its own; in the same folder, or
+// with nothing relative, it is written and opens as the same scene.
+TEST(ViewerSaveAs, ACopyInAnotherFolderMustReadTheSameFiles) {
+    const ScratchDir dir("save_as_folders");
+    fs::copy(fs::path(JT_SOURCE_DIR) / "scenes" / "split", dir.path() / "split",
+             fs::copy_options::recursive);
+    fs::create_directories(dir.path() / "elsewhere");
+    ModelLoop model;
+    AppState state{test_config()};
+    const fs::path main = dir.path() / "split" / "main.jts";
+    open_scene(state, main);
+    ASSERT_TRUE(model.run_until_loaded(state));
+    ASSERT_TRUE(state.doc.loaded) << format_diagnostics(state.doc);
+    edit_scene(state, [](Scene& s) { s.settings.width = 64; });
+    for (const fs::path& away : {dir.path() / "copy.jts", dir.path() / "elsewhere" / "copy.jts"}) {
+        EXPECT_FALSE(save_scene_as(state, away, false)) << away;
+        EXPECT_FALSE(fs::exists(away)) << away;
+        EXPECT_NE(state.message.find("save the copy in that folder"), std::string::npos)
+            << state.message;
+        EXPECT_EQ(state.doc.path, main);
+        EXPECT_TRUE(has_unsaved_edits(state.doc));
+    }
+    // Beside it the includes read the same files.
+    const fs::path beside = dir.path() / "split" / "copy.jts";
+    ASSERT_TRUE(save_scene_as(state, beside, false)) << state.message;
+    AppState again{test_config()};
+    open_scene(again, beside);
+    ASSERT_TRUE(model.run_until_loaded(again));
+    ASSERT_TRUE(again.doc.loaded) << format_diagnostics(again.doc);
+    EXPECT_TRUE(again.doc.scene == state.doc.scene);
+
+    // Image maps named relative to the scene's folder: the same.
+    const fs::path globe = dir.path() / "globe" / "globe.jts";
+    fs::create_directories(globe.parent_path());
+    fs::copy(fs::path(JT_SOURCE_DIR) / "scenes" / "globe.jts", globe);
+    fs::copy(fs::path(JT_SOURCE_DIR) / "scenes" / "maps", globe.parent_path() / "maps");
+    open_scene(state, globe);
+    ASSERT_TRUE(model.run_until_loaded(state));
+    ASSERT_TRUE(state.doc.loaded) << format_diagnostics(state.doc);
+    const fs::path away = dir.path() / "elsewhere" / "globe.jts";
+    EXPECT_FALSE(save_scene_as(state, away, false));
+    EXPECT_FALSE(fs::exists(away));
+    EXPECT_NE(state.message.find("maps/"), std::string::npos) << state.message;
+
+    // Nothing named relative: any folder will do.
+    open_scene(state, kScene);
+    ASSERT_TRUE(model.run_until_loaded(state));
+    const fs::path plain = dir.path() / "elsewhere" / "plain.jts";
+    ASSERT_TRUE(save_scene_as(state, plain, false)) << state.message;
+    EXPECT_TRUE(parse_scene(read_file(plain)).scene == state.doc.scene);
 }
 
 // A file the viewer had loaded, then broken in each way a file breaks.

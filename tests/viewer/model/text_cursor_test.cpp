@@ -23,6 +23,15 @@ TEST(TextCursor, AnUndoOfADeletionPutsTheCursorAfterTheTextItBringsBack) {
     EXPECT_EQ(cursor_after_replace("radius: ;", "radius: 2.5;", 9), 12) << "after it: moved";
 }
 
+// A character typed beside its own twin (a doubled digit, a space of
+// indentation) could have been typed at several places: the cursor's is one.
+TEST(TextCursor, ARedoOfARepeatedCharacterLeavesTheCursorAfterIt) {
+    // "  foo" with a space typed at 0, undone, redone.
+    EXPECT_EQ(cursor_after_replace("  foo", "   foo", 0), 1);
+    // "value 1|00;" backspaced to "value 1|0;", the deletion undone.
+    EXPECT_EQ(cursor_after_replace("value 10;", "value 100;", 7), 8);
+}
+
 TEST(TextCursor, StaysInsideTheNewText) {
     EXPECT_EQ(cursor_after_replace("abcdef", "", 4), 0);
     EXPECT_EQ(cursor_after_replace("abc", "abc", 99), 3);

@@ -42,7 +42,15 @@ void diagnostics_panel(AppState& state, DiagnosticsText& text) {
     const bool errors = state.doc.load_failed || other;
     char title[48];
     std::snprintf(title, sizeof title, "Diagnostics (%zu)###diag", diagnostics.size());
-    if (errors) ImGui::SetNextItemOpen(true);
+    text.first_in_view = false;
+    // The status line's link: the header at the top of the sidebar, and the
+    // panel open (typed text's errors leave it as the user left it).
+    const bool reveal = text.scroll_to;
+    if (reveal) {
+        ImGui::SetScrollHereY(0.0f);
+        text.scroll_to = false;
+    }
+    if (errors || reveal) ImGui::SetNextItemOpen(true);
     if (!panel_header(title, "Diagnostics", false)) return;
     if (diagnostics.empty()) {
         ImGui::TextDisabled("No errors or warnings.");
@@ -73,6 +81,13 @@ void diagnostics_panel(AppState& state, DiagnosticsText& text) {
         ImGui::PopTextWrapPos();
         ImGui::PopStyleColor();
         note_item(entry.message.c_str(), false);
+        if (&entry == &text.entries.front()) {
+            // Whole within the sidebar's window, not scrolled past either edge.
+            const float top = ImGui::GetWindowPos().y;
+            const float bottom = top + ImGui::GetWindowHeight();
+            text.first_in_view =
+                ImGui::GetItemRectMin().y >= top && ImGui::GetItemRectMax().y <= bottom;
+        }
         if (!entry.quote.empty()) {
             push_monospace_font();
             ImGui::TextUnformatted(entry.quote.c_str());

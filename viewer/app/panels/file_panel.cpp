@@ -7,6 +7,8 @@
 #include <imgui.h>
 #include <imgui_stdlib.h>
 
+#include <filesystem>
+
 namespace jt::view {
 
 namespace {
@@ -36,8 +38,12 @@ void save_as_choice(AppState& state) {
     ImGui::PushStyleColor(ImGuiCol_Text, warning_colour);
     ImGui::TextWrapped("%s exists.", state.files.save_as_conflict.c_str());
     ImGui::PopStyleColor();
-    if (button("Replace it", "Write the scene over that file"))
-        save_scene_as(state, state.fields.save_scene_path, /*replace=*/true);
+    // The file the question names, even when the field was changed since:
+    // a path typed after the question was never asked about.
+    if (button("Replace it", "Write the scene over that file")) {
+        const std::filesystem::path asked = state.files.save_as_conflict;
+        save_scene_as(state, asked, /*replace=*/true);
+    }
     same_line_if_fits("Cancel##save_as");
     if (button("Cancel##save_as", "Do not save now")) state.files.save_as_conflict.clear();
 }

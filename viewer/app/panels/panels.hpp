@@ -29,6 +29,14 @@ struct DiagnosticsText {
         std::string quote;    // the source line and a caret under the column, or empty
     };
     std::vector<Entry> entries;
+    // Whether the last frame showed the first diagnostic within the sidebar's
+    // view: a small window leaves the panel far below it, where an error
+    // found on reload goes unseen.
+    bool first_in_view = false;
+    // Asked for by the status line's link: the next frame scrolls the sidebar
+    // to the panel. Never on its own: a sidebar that scrolled by itself moved
+    // the controls under the mouse (and under clicks on their way).
+    bool scroll_to = false;
 };
 void diagnostics_panel(AppState& state, DiagnosticsText& text);
 void help_panel();
@@ -36,8 +44,12 @@ void help_panel();
 // the image's toolbar, which stays in view while the panels scroll).
 void time_panel(AppState& state);
 // The render's progress, then the last message, or `inspected` (the pixel
-// inspector's text, when not empty) in its place.
-void status_line(AppState& state, const std::string& inspected = {});
+// inspector's text, when not empty) in its place. With errors the
+// Diagnostics panel lists out of the sidebar's view (`diagnostics`, when
+// given) and the text editor closed, the message starts with a link that
+// scrolls the sidebar to them.
+void status_line(AppState& state, const std::string& inspected = {},
+                 DiagnosticsText* diagnostics = nullptr, bool text_editor_open = false);
 
 // Parts of objects_panel, one primitive at a time.
 // Each field that changes the scene makes the editor return true (or set
@@ -59,7 +71,7 @@ std::optional<TransformCommand> transform_editor(std::vector<TransformOp>& trans
 
 // "sample 4 of 16 | 1.2 s elapsed, about 3.0 s left | 3.4 Mrays/s",
 // "paused at preview 1/4 | edit waiting: Space renders it", "done: ...",
-// "done: 4 samples, paused | an edit waits for Space"
+// "done: 4 samples, paused | edits wait for Space"
 std::string render_status(const AppState& state);
 // The same, written into `text` (its storage kept: the status line's every frame).
 void render_status(const AppState& state, std::string& text);

@@ -1,4 +1,6 @@
 #include "app/panels/panels.hpp"
+#include "app/panels/widgets.hpp"
+#include "app/ui_items.hpp"
 #include "model/app_actions.hpp"
 
 #include <imgui.h>
@@ -45,7 +47,7 @@ void render_status(const AppState& state, std::string& text) {
     // the pause only holds edits back until Space.
     if (state.render.paused && state.render.display_complete && !state.render.edit_waiting) {
         text += done;
-        text += ", paused | an edit waits for Space";
+        text += ", paused | edits wait for Space";
         return;
     }
     if (state.render.paused) {
@@ -86,7 +88,31 @@ std::string render_status(const AppState& state) {
     return text;
 }
 
-void status_line(AppState& state, const std::string& inspected) {
+namespace {
+
+// "Show 2 errors": scrolls the sidebar to the Diagnostics panel. On the
+// message's line, where it moves no other control when it comes and goes.
+void show_errors_link(const AppState& state, DiagnosticsText& diagnostics) {
+    std::size_t errors = 0;
+    for (const Diagnostic& d : state.doc.diagnostics)
+        if (d.severity == Severity::error) ++errors;
+    if (errors == 0) return;
+    char label[64];
+    std::snprintf(label, sizeof label, "Show %zu error%s###show errors", errors,
+                  errors == 1 ? "" : "s");
+    ImGui::PushStyleColor(ImGuiCol_Text, ImVec4(1.0f, 0.45f, 0.4f, 1.0f));
+    const bool clicked = ImGui::SmallButton(label);
+    ImGui::PopStyleColor();
+    tooltip("Scroll the panels to Diagnostics, which lists them");
+    note_item("show errors", true);
+    if (clicked) diagnostics.scroll_to = true;
+    ImGui::SameLine();
+}
+
+}  // namespace
+
+void status_line(AppState& state, const std::string& inspected, DiagnosticsText* diagnostics,
+                 bool text_editor_open) {
     const RenderProgress p = state.render.renderer.progress();
     static std::string status;  // one status line; its storage kept from frame to frame
     render_status(state, status);
@@ -108,6 +134,8 @@ void status_line(AppState& state, const std::string& inspected) {
         ImGui::TextColored(ImVec4(1.0f, 0.7f, 0.3f, 1.0f), "| %s",
                            state.render.render_note.c_str());
     }
+    if (diagnostics && !diagnostics->first_in_view && !text_editor_open)
+        show_errors_link(state, *diagnostics);
     if (inspected.empty()) {
         ImGui::TextDisabled("%s", state.message.c_str());
         return;

@@ -236,6 +236,20 @@ void scroll_here_if_hidden() {
     if (y < top || y > bottom) ImGui::SetScrollHereY(0.2f);
 }
 
+void hint_text(const char* full, const char* brief, const char* id) {
+    const float room = ImGui::GetContentRegionAvail().x;
+    const bool fits = ImGui::CalcTextSize(full).x <= room;
+    // Not even the brief form fits (a tiny window): no hint, but the line
+    // still ends here, as it would after the text.
+    if (!fits && ImGui::CalcTextSize(brief).x > room) {
+        ImGui::Dummy(ImVec2(0.0f, ImGui::GetTextLineHeight()));
+        return;
+    }
+    ImGui::TextDisabled("%s", fits ? full : brief);
+    if (!fits) tooltip(full);
+    note_item(id, !fits);
+}
+
 void same_line_if_fits(const char* label) {
     const ImGuiStyle& style = ImGui::GetStyle();
     const float width = ImGui::CalcTextSize(label, nullptr, true).x + style.FramePadding.x * 2.0f;

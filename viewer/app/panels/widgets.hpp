@@ -62,6 +62,10 @@ void tooltip(const char* text);
 // a reveal of what the user just added there must not move what they are
 // about to click next.
 void scroll_here_if_hidden();
+// A greyed-out hint at the rest of the line: `full` when it fits, else
+// `brief` with `full` as its tooltip, else none. Never wrapped: a hint that
+// took a second line would move what is under it. Recorded under `id`.
+void hint_text(const char* full, const char* brief, const char* id);
 // Puts the next button on the line of the last item when `label` fits there,
 // so that a row of buttons wraps instead of running off the panel.
 void same_line_if_fits(const char* label);

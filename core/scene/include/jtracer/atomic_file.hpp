@@ -14,6 +14,13 @@
 
 namespace jt {
 
+// The file that writing to `path` replaces or creates: `path` itself, or,
+// when it is a symbolic link, the file the chain of links ends at, which
+// need not exist yet (a link to a render not made). A loop of links is left
+// as it is, for the write to fail on.
+std::filesystem::path file_behind_links(const std::filesystem::path& path);
+
+// A symbolic link stays a link: the file behind it is the one written.
 // On failure the error names the file and the reason ("cannot write
 // 'out/x.bmp': No such file or directory"). A file replaced keeps its
 // permissions; a new one is made 0644.

@@ -90,6 +90,20 @@ Temporary write_temporary(const std::filesystem::path& real, const BytePieces& n
 
 }  // namespace
 
+std::filesystem::path file_behind_links(const std::filesystem::path& path) {
+    // As the kernel's own limit on links followed in one lookup.
+    constexpr int max_links_followed = 40;
+    std::filesystem::path file = path;
+    for (int followed = 0; followed < max_links_followed; ++followed) {
+        std::error_code error;
+        if (!std::filesystem::is_symlink(std::filesystem::symlink_status(file, error))) return file;
+        const std::filesystem::path link = std::filesystem::read_symlink(file, error);
+        if (error) return file;
+        file = (link.is_absolute() ? link : file.parent_path() / link).lexically_normal();
+    }
+    return path;
+}
+
 Expected<void> write_file_atomically(const std::filesystem::path& target,
                                      std::span<const std::uint8_t> bytes) {
     return write_file_atomically(target, one_piece(bytes));
@@ -104,12 +118,9 @@ Expected<void> write_file_atomically(const std::filesystem::path& target,
         return Error{"cannot write " + file_message(target, "it is a directory")};
     if (std::filesystem::exists(status) && !std::filesystem::is_regular_file(status))
         return write_in_place(target, next_piece);
-    // A symbolic link stays a link: the file it names is the one replaced.
-    std::filesystem::path real = target;
-    if (std::filesystem::is_symlink(std::filesystem::symlink_status(target, ec))) {
-        real = std::filesystem::weakly_canonical(target, ec);
-        if (ec) return failure(target, ec.value());
-    }
+    const std::filesystem::path real = file_behind_links(target);
+    if (std::filesystem::is_symlink(std::filesystem::symlink_status(real, ec)))
+        return failure(target, ELOOP);
     // The file replaced keeps its permissions: a private scene stays
     // private, an executable script executable (never set-id bits, which
     // the new file, of another owner perhaps, must not take). A new one is

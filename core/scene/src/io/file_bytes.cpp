@@ -5,7 +5,9 @@
 #include <unistd.h>
 
 #include <cerrno>
+#include <cstdint>
 #include <cstring>
+#include <string>
 
 namespace jt {
 
@@ -15,6 +17,10 @@ namespace {
 // read on into all the memory there is. 1 GiB, as for scene files, holds any
 // image a pipe reasonably carries (a 65535 x 4096 BMP is 805 MB).
 constexpr std::size_t kMaxStreamBytes = std::size_t{1} << 30;
+// No file read whole is larger: a BMP's size field has 32 bits, PNGs and
+// JPEGs are read under 2 GiB, and models are refused past 512 MiB before they
+// are read. A larger file is refused by its size, not read into memory first.
+constexpr std::uint64_t kMaxFileBytes = 0xFFFFFFFF;
 
 class FileDescriptor {
   public:
@@ -45,7 +51,9 @@ std::string file_message(const std::filesystem::path& path, const std::string& m
 }
 
 Expected<std::vector<std::uint8_t>> read_file_bytes(const std::filesystem::path& path) {
-    FileDescriptor file(::open(path.c_str(), O_RDONLY | O_CLOEXEC));
+    // O_NONBLOCK so that opening a named pipe does not wait for a writer that
+    // may never come; reads block again below, once the file is open.
+    FileDescriptor file(::open(path.c_str(), O_RDONLY | O_CLOEXEC | O_NONBLOCK));
     if (file.get() < 0) return read_error(path, std::strerror(errno));
     struct stat status {};
     if (::fstat(file.get(), &status) != 0) return read_error(path, std::strerror(errno));
@@ -55,6 +63,15 @@ Expected<std::vector<std::uint8_t>> read_file_bytes(const std::filesystem::path&
     if (S_ISCHR(status.st_mode) || S_ISBLK(status.st_mode))
         return read_error(path, "it is a device, not a file");
     const bool regular = S_ISREG(status.st_mode);
+    if (regular && static_cast<std::uint64_t>(status.st_size) > kMaxFileBytes)
+        return read_error(path, "it is " + std::to_string(status.st_size) +
+                                    " bytes, larger than any image JTracer reads (" +
+                                    std::to_string(kMaxFileBytes) + " bytes, the largest BMP)");
+    if (!regular) {
+        const int flags = ::fcntl(file.get(), F_GETFL);
+        if (flags < 0 || ::fcntl(file.get(), F_SETFL, flags & ~O_NONBLOCK) < 0)
+            return read_error(path, std::strerror(errno));
+    }
     std::vector<std::uint8_t> bytes;
     if (regular) bytes.reserve(static_cast<std::size_t>(status.st_size));
     std::uint8_t buffer[65536];
@@ -70,6 +87,10 @@ Expected<std::vector<std::uint8_t>> read_file_bytes(const std::filesystem::path&
             return read_error(
                 path, "a pipe that gives more than " + std::to_string(kMaxStreamBytes) + " bytes");
     }
+    // A pipe with no writer reads as empty: say so rather than let the
+    // caller call nothing at all a broken image.
+    if (S_ISFIFO(status.st_mode) && bytes.empty())
+        return read_error(path, "a named pipe (FIFO) with nothing written to it");
     return bytes;
 }
 

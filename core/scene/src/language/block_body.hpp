@@ -79,9 +79,9 @@ inline void SceneParser::parse_body(BlockSource& block,
                     on_child();
                 } else if (plain_properties_) {
                     if (!read_plain_properties(child_names, on_property) &&
-                        read_property(property_, false))
+                        read_property(property_, false, block.keyword))
                         on_property(property_);
-                } else if (read_property(property_, true)) {
+                } else if (read_property(property_, true, block.keyword)) {
                     on_property(property_);
                 }
                 break;

@@ -163,6 +163,15 @@ ParsedValue ExpressionReader::read(bool evaluate_it) {
         sink_.error(failure_.pos, std::move(failure_.message));
         return out;
     }
+    // A string value is one string literal or one name, nothing else
+    // (docs/language.md §15.3); arithmetic on one fails above, and this is
+    // the rest: a string in parentheses.
+    if (evaluate_it && stack_.back().value.kind == Kind::string && operations_ != 1) {
+        sink_.error(out.span.pos,
+                    "parentheses hold numbers and vectors, not a string: write the string, or "
+                    "the name of one, alone");
+        return out;
+    }
     out.ok = true;
     if (evaluate_it) out.value = stack_.back().value;
     return out;
@@ -266,6 +275,21 @@ bool ExpressionReader::parse_primary(int depth) {
     }
     if (find_function(word)) return parse_call(depth);
     const Symbol* symbol = names_.find(word);
+    if (!symbol && tokens_.peek().kind == TokenKind::lparen) {
+        // A call of a function there is not (a slip, or another language's
+        // name: POV-Ray's vlength, vnormalize): no file can define a
+        // function, so this is said whatever includes went unread.
+        std::vector<std::string_view> functions;
+        for (const FunctionSpec& f : kFunctions) functions.push_back(f.name);
+        std::string message = "unknown function " + quote(word.substr(0, 40));
+        if (std::string_view near = nearest_name(word, functions); !near.empty())
+            message += "; did you mean " + quote(near) + "?";
+        message += " (functions:";
+        for (std::size_t i = 0; i < functions.size(); ++i)
+            message += (i == 0 ? " " : ", ") + std::string(functions[i]);
+        sink_.error(t.pos, message + ")");
+        return false;
+    }
     if (!symbol) {
         if (!names_.reports_unknown()) return false;
         const std::vector<std::string_view> known = names_.names();
@@ -277,6 +301,12 @@ bool ExpressionReader::parse_primary(int depth) {
         for (char c : word) lower += static_cast<char>(c >= 'A' && c <= 'Z' ? c - 'A' + 'a' : c);
         if (lower == "nan" || lower == "inf" || lower == "infinity")
             message += "; numbers must be finite";
+        // POV-Ray's '#include "colors.inc"' or '#declare R = 1;' is a
+        // comment here, which is why its names are unknown.
+        if (const SourcePos directive = tokens_.directive_comment(); directive.line > 0)
+            message += "; POV-Ray's #include and #declare are comments here, as at " +
+                       std::to_string(directive.line) + ":" + std::to_string(directive.column) +
+                       ": write include \"FILE\"; and define NAME = VALUE;";
         sink_.error(t.pos, std::move(message));
         return false;
     }

@@ -24,6 +24,10 @@ class TokenCursor {
     virtual const Token& cur() const = 0;
     virtual const Token& peek() const = 0;
     virtual void advance() = 0;
+    // Where the text read so far has a POV-Ray directive ("#include",
+    // "#declare", "#local") that this language reads as a comment, for the
+    // hint of an unknown name; line 0 when it has none.
+    virtual SourcePos directive_comment() const { return {}; }
 
   protected:
     ~TokenCursor() = default;

@@ -11,6 +11,18 @@
 namespace jt {
 
 Expected<IncludedText> read_include_file(const std::string& path, std::uintmax_t max_bytes) {
+    // Opening a FIFO waits for a writer, possibly forever, and a socket or a
+    // terminal is no file to include: only regular files (and folders, which
+    // the reader names as such) go on to be read.
+    std::error_code status_ec;
+    const std::filesystem::file_status status = std::filesystem::status(path, status_ec);
+    if (!status_ec && std::filesystem::exists(status) &&
+        !std::filesystem::is_regular_file(status) && !std::filesystem::is_directory(status))
+        return Error{lang::quote(path) + " is " +
+                     (std::filesystem::is_fifo(status)     ? "a named pipe (FIFO)"
+                      : std::filesystem::is_socket(status) ? "a socket"
+                                                           : "a device") +
+                     ", not a scene file"};
     Expected<std::string> text = read_text_file(path, max_bytes);
     if (!text) return text.error();
     std::error_code ec;
@@ -76,7 +88,11 @@ std::optional<IncludeStack::Opened> IncludeStack::open(std::string_view path, So
     if (!read) {
         unreadable = true;
         unread_.push_back(read_path.string());
-        sink.error(at, read.error().message);
+        std::string message = read.error().message;
+        // A Windows habit: '\\' is a character of a file name here.
+        if (path.find('\\') != std::string_view::npos)
+            message += " (folders are separated by '/' on every platform)";
+        sink.error(at, message);
         return std::nullopt;
     }
     const std::string shown = normal(beside(fs::path(name(from)), written));

@@ -130,12 +130,23 @@ void Lexer::skip_space_and_comments() {
             ++line_;
             line_start_ = at_;
         } else if (c == '#') {
+            if (directive_comment_.line == 0 && at_ + 1 < n &&
+                (text_[at_ + 1] == 'i' || text_[at_ + 1] == 'd' || text_[at_ + 1] == 'l'))
+                note_directive_comment();
             const void* nl = std::memchr(text_.data() + at_, '\n', n - at_);
             at_ = nl ? static_cast<std::size_t>(static_cast<const char*>(nl) - text_.data()) : n;
         } else {
             return;
         }
     }
+}
+
+void Lexer::note_directive_comment() {
+    const std::string_view rest = text_.substr(at_ + 1);
+    for (std::string_view directive : {"include", "declare", "local"})
+        if (rest.starts_with(directive) && rest.size() > directive.size() &&
+            (rest[directive.size()] == ' ' || rest[directive.size()] == '\t'))
+            directive_comment_ = pos_of(at_);
 }
 
 bool Lexer::take_word_or_mark(Token& out) {
@@ -187,6 +198,60 @@ void Lexer::next(Token& out) {
     next_rare(out);
 }
 
+namespace {
+
+// The code point of the UTF-8 character that starts at `i`, or -1 when the
+// bytes there are not one (a stray continuation byte, a control byte).
+long utf8_character(std::string_view text, std::size_t i) {
+    const auto lead = static_cast<unsigned char>(text[i]);
+    int extra = 0;
+    if (lead >= 0xC2 && lead <= 0xDF) extra = 1;
+    if (lead >= 0xE0 && lead <= 0xEF) extra = 2;
+    if (lead >= 0xF0 && lead <= 0xF4) extra = 3;
+    if (extra == 0 || i + extra >= text.size()) return -1;
+    long code = lead & (0x3F >> extra);
+    for (int k = 1; k <= extra; ++k) {
+        const auto next = static_cast<unsigned char>(text[i + k]);
+        if ((next & 0xC0) != 0x80) return -1;
+        code = (code << 6) | (next & 0x3F);
+    }
+    return code;
+}
+
+// Whether a curly double quote (U+201C, U+201D or U+201E) starts at `i`.
+bool curly_quote_at(std::string_view text, std::size_t i) {
+    return i + 2 < text.size() && text[i] == '\xE2' && text[i + 1] == '\x80' &&
+           (text[i + 2] == '\x9C' || text[i + 2] == '\x9D' || text[i + 2] == '\x9E');
+}
+
+// What a character pasted from a word processor or a web page stands for.
+std::string_view look_alike(long code) {
+    switch (code) {
+        case 0x201C:
+        case 0x201D:
+        case 0x201E:
+            return "a curly quote: strings take plain double quotes \"";
+        case 0x2018:
+        case 0x2019:
+            return "a curly apostrophe";
+        case 0x2212:
+        case 0x2013:
+        case 0x2014:
+            return "a dash: minus is the plain -";
+        case 0x00D7:
+            return "a multiplication sign: multiply with *";
+        case 0x00F7:
+            return "a division sign: divide with /";
+        case 0x00A0:
+        case 0x202F:
+            return "a no-break space: use a plain space";
+        default:
+            return "outside comments a scene is ASCII";
+    }
+}
+
+}  // namespace
+
 void Lexer::next_rare(Token& out) {
     while (!sink_.stopped() && at_ < text_.size()) {
         if (take_word_or_mark(out)) return;
@@ -200,17 +265,52 @@ void Lexer::next_rare(Token& out) {
             lex_number(start, out);
             return;
         }
+        if (curly_quote_at(text_, start)) {
+            lex_curly_string(start, out);
+            return;
+        }
         skip_unexpected();
     }
     set(out, TokenKind::end, {}, text_.size(), 0, pos_of(at_));
 }
 
+// A string in curly quotes, as a word processor writes one: one error, and
+// the whole of it a bad value, up to its closing quote (curly or plain) or
+// the end of the line, so that its words are not read as names.
+void Lexer::lex_curly_string(std::size_t start, Token& out) {
+    skipped_at_ = start;
+    sink_.error(pos_of(start), "unexpected character U+" +
+                                   std::string(text_[start + 2] == '\x9D' ? "201D" : "201C") +
+                                   " (" + std::string(look_alike(0x201C)) + ")");
+    std::size_t i = start + 3;
+    const std::size_t n = text_.size();
+    while (i < n && text_[i] != '\n' && text_[i] != '\r') {
+        if (text_[i] == '"') {
+            ++i;
+            break;
+        }
+        if (curly_quote_at(text_, i)) {
+            i += 3;
+            break;
+        }
+        ++i;
+    }
+    at_ = i;
+    set(out, TokenKind::bad_value, text_.substr(start, i - start), start, i - start, pos_of(start));
+}
+
 void Lexer::skip_unexpected() {
     const std::size_t start = at_;
+    skipped_at_ = start;
     const char c = text_[start];
     auto u = static_cast<unsigned char>(c);
     if (u >= 0x20 && u < 0x7f) {
         sink_.error(pos_of(start), std::string("unexpected character '") + c + "'");
+    } else if (const long code = u >= 0x80 ? utf8_character(text_, start) : -1; code >= 0) {
+        char name[16];
+        std::snprintf(name, sizeof name, "U+%04lX", static_cast<unsigned long>(code));
+        sink_.error(pos_of(start), "unexpected character " + std::string(name) + " (" +
+                                       std::string(look_alike(code)) + ")");
     } else {
         sink_.error(pos_of(start), "unexpected byte " + byte_name(u));
     }
@@ -558,7 +658,13 @@ void Lexer::lex_number(std::size_t start, Token& token) {
         case NumberScan::exact:
             return;
         case NumberScan::malformed:
-            sink_.error(token.pos, "malformed number '" + std::string(run.substr(0, 40)) + "'");
+            // POV-Ray's `v.x`: a lone '.' before a letter is no number at all.
+            if (run == "." && at_ < n && is_word_start(text_[at_]))
+                sink_.error(token.pos,
+                            "unexpected '.': values have no components such as .x (the x of v "
+                            "is dot(v, <1, 0, 0>))");
+            else
+                sink_.error(token.pos, "malformed number '" + std::string(run.substr(0, 40)) + "'");
             token.kind = TokenKind::bad_value;
             return;
         case NumberScan::needs_library:

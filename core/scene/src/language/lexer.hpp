@@ -107,6 +107,14 @@ class Lexer {
     }
     // Continues from `offset`, on the line of the last token read.
     void skip_to(std::size_t offset) { at_ = offset; }
+    // The first comment read that starts as a POV-Ray directive ("#include",
+    // "#declare", "#local"); line 0 when none has.
+    SourcePos directive_comment() const { return directive_comment_; }
+    // Whether a byte that starts no token (reported and skipped) stood in
+    // [from, to): then a parser's "expected ';'" there would only repeat it.
+    bool skipped_between(std::size_t from, std::size_t to) const {
+        return skipped_at_ != npos_skipped && skipped_at_ >= from && skipped_at_ < to;
+    }
     // Continues from `offset`, which is at `pos` (a token this text gave before).
     void resume_at(std::size_t offset, SourcePos pos) {
         at_ = offset;
@@ -124,6 +132,7 @@ class Lexer {
     // strings made next() save six registers and a frame for every token.
     [[gnu::noinline]] void lex_number(std::size_t start, Token& out);
     [[gnu::noinline]] void lex_string(std::size_t start, Token& out);
+    [[gnu::noinline]] void lex_curly_string(std::size_t start, Token& out);
     // Reports the byte at at_, which starts no token, and skips it.
     [[gnu::noinline]] void skip_unexpected();
     SourcePos pos_of(std::size_t offset) const {
@@ -139,6 +148,11 @@ class Lexer {
     // Whether the text's last byte ends a word: then every word ends inside
     // the text, and next() scans one with no test of the end.
     bool words_stop_inside_ = false;
+    static constexpr std::size_t npos_skipped = static_cast<std::size_t>(-1);
+    // The offset of the last byte skip_unexpected() reported.
+    std::size_t skipped_at_ = npos_skipped;
+    SourcePos directive_comment_{0, 0, 0};
+    [[gnu::noinline]] void note_directive_comment();
 };
 
 // A short description of a token for messages: "the number 2", "'}'", "the word 'foo'".

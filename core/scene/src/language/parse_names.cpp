@@ -67,9 +67,11 @@ bool SceneParser::claim_name(const Token& name, bool& overridden) {
 }
 
 void SceneParser::parse_define() {
+    const std::size_t keyword_end = cur_->offset + cur_->length;
     advance();
     if (!at(TokenKind::word)) {
-        if (!at(TokenKind::bad_value))
+        // A name the lexer refused ('define Σ = 1;') was reported there.
+        if (!at(TokenKind::bad_value) && !reading_->skipped_between(keyword_end, cur_->offset))
             sink_.error(cur_->pos, "expected a name after 'define', got " + describe(*cur_));
         skip_statement();
         return;
@@ -93,7 +95,7 @@ void SceneParser::parse_define() {
         skip_statement();
         return;
     }
-    const bool good = value.form != Value::Form::bad;
+    const bool good = value.form != Value::Form::bad && !cut_short(value);
     if (claimed && !overridden) {
         Symbol& symbol = names_.add(name.text);
         symbol.defined_at = name.pos;

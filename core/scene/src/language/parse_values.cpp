@@ -91,7 +91,7 @@ bool SceneParser::read_plain_value(Value& v) {
     return true;
 }
 
-bool SceneParser::read_property(Property& property, bool try_plain) {
+bool SceneParser::read_property(Property& property, bool try_plain, std::string_view keyword) {
     property.name = cur_->text;
     property.name_span = span_of(*cur_);
     if (try_plain && next_->kind == TokenKind::colon && read_plain_value(property.value))
@@ -104,6 +104,16 @@ bool SceneParser::read_property(Property& property, bool try_plain) {
         return false;
     }
     advance();
+    if (!keyword.empty() && !block_has_property(keyword, property.name)) {
+        // A misspelt or misplaced name ('fox: r * 2;', 'material: shiny;' in
+        // a light): the name is the mistake to report, where the block's
+        // reader does, not what evaluating its value would say (an unknown
+        // name, a material used as a value), which would hide it.
+        property.value = Value{};
+        property.value.form = Value::Form::bad;
+        skip_statement();
+        return true;
+    }
     property.value = read_value();
     rebase_file_name(property);
     if (property.value.form == Value::Form::none) {
@@ -112,7 +122,7 @@ bool SceneParser::read_property(Property& property, bool try_plain) {
         skip_statement();
         return false;
     }
-    if (property.value.form == Value::Form::bad) {
+    if (property.value.form == Value::Form::bad || cut_short(property.value)) {
         skip_statement();
         return false;
     }

@@ -5,8 +5,11 @@
 #include "language/suggest.hpp"
 
 #include <cmath>
+#include <optional>
 #include <string>
 #include <type_traits>
+#include <utility>
+#include <variant>
 #include <vector>
 
 namespace jt::lang {
@@ -63,7 +66,11 @@ bool PropertyReader::read(const PropertySpec<Block>& spec, const Property& p, Bl
                 return false;
             }
             if (check_range(spec.range, v.text) == RangeVerdict::outside) {
-                sink_.error(v.span.pos, out_of_range_message(spec, written(v)));
+                // In quotes, so that a word that is nearly a choice ("Smooth",
+                // "file ", "") shows exactly what differs.
+                sink_.error(v.span.pos,
+                            out_of_range_message(
+                                spec, spec.range.choices.empty() ? written(v) : as_written(v)));
                 return false;
             }
             out = std::string(v.text);
@@ -109,8 +116,47 @@ bool PropertyReader::read(const PropertySpec<Block>& spec, const Property& p, Bl
     });
 }
 
+namespace {
+
+template <class Block>
+std::optional<bool> has_property_in(std::string_view keyword, std::string_view name) {
+    if (schema_of<Block>().keyword != keyword) return std::nullopt;
+    return find_property<Block>(name) != nullptr;
+}
+
+template <std::size_t... I>
+std::optional<bool> has_shape_property(std::string_view keyword, std::string_view name,
+                                       std::index_sequence<I...>) {
+    std::optional<bool> found;
+    ((found = found ? found : has_property_in<ShapeAlternative<I>>(keyword, name)), ...);
+    return found;
+}
+
+}  // namespace
+
+bool block_has_property(std::string_view keyword, std::string_view name) {
+    for (std::optional<bool> found :
+         {has_property_in<RenderSettings>(keyword, name), has_property_in<Camera>(keyword, name),
+          has_property_in<PointLight>(keyword, name), has_property_in<Material>(keyword, name),
+          has_shape_property(keyword, name,
+                             std::make_index_sequence<std::variant_size_v<Shape>>{})})
+        if (found) return *found;
+    if (keyword == kTransformKeyword) {
+        for (const TransformOpSpec& op : transform_ops())
+            if (same_name(name, op.property.name)) return true;
+        return false;
+    }
+    return keyword != kCamerasKeyword && keyword != kSceneKeyword;
+}
+
 void PropertyReader::unknown_property(const Property& p, std::string_view keyword,
                                       std::span<const std::string_view> names) {
+    if (keyword == schema_of<Material>().keyword && p.name == keyword) {
+        sink_.error(p.name_span.pos,
+                    "a material cannot use another material: 'material: NAME;' stands directly "
+                    "in a sphere, plane, cylinder, triangle or mesh");
+        return;
+    }
     sink_.error(p.name_span.pos,
                 unknown_name_message("property", p.name, "in " + quote(keyword), names));
 }

@@ -84,6 +84,11 @@ struct OpenBlock {
 // Applies well-formed properties to the part of the scene they belong to,
 // reporting unknown names, wrong kinds and values out of range, and records
 // each applied property in the block's source.
+// Whether a block with this keyword has a property of this name (or alias).
+// `cameras` and `scene` have none; a keyword of no block with properties
+// answers true, leaving the name to that block's reader.
+bool block_has_property(std::string_view keyword, std::string_view name);
+
 class PropertyReader {
   public:
     explicit PropertyReader(DiagnosticSink& sink) : sink_(sink) {}

@@ -96,7 +96,17 @@ class SceneParser final : private TokenCursor {
     }
     const Token& cur() const override { return *cur_; }
     const Token& peek() const override { return *next_; }
+    // The main file's only: a line and column of another file would need its name.
+    SourcePos directive_comment() const override { return lexer_.directive_comment(); }
     bool at(TokenKind kind) const { return cur_->kind == kind; }
+    // Whether what follows `value` is a mistake the lexer has reported (a
+    // malformed number, a byte that starts no token): the value's statement
+    // is then skipped, with no "expected ';'" and no finding about the value
+    // cut short, which would only echo that one mistake.
+    bool cut_short(const Value& value) const {
+        return at(TokenKind::bad_value) ||
+               reading_->skipped_between(value.span.offset + value.span.length, cur_->offset);
+    }
 
     // --- skipping bad input (parse_blocks.cpp) -------------------------------
 
@@ -192,7 +202,9 @@ class SceneParser final : private TokenCursor {
     // applies. False (reported, skipped) with no ':' or no good value; a
     // missing ';' is reported and the property applies. `try_plain`: first as
     // a plain value (read_plain_value), which the caller has not tried.
-    bool read_property(Property& property, bool try_plain);
+    // `keyword`: the block's, so that a name it does not know has its value
+    // skipped rather than evaluated (empty: every name is read).
+    bool read_property(Property& property, bool try_plain, std::string_view keyword = {});
 
     // --- the scene block (parse_scene_block.cpp) -----------------------------
 

@@ -5,6 +5,7 @@
 
 #include "jtracer/render_job.hpp"
 
+#include <cstdio>
 #include <string>
 
 namespace jt::frontend {
@@ -20,15 +21,22 @@ ProgressStyle progress_style(ProgressMode mode, bool quiet, bool stderr_is_termi
 // progress_style() for this process's stderr.
 ProgressStyle progress_style_for_stderr(ProgressMode mode, bool quiet);
 
+// The log style writes "rendering: 30% (1.52 s)" when the render passes a
+// multiple of 10% (below 100%, after its first second): always a multiple of
+// 10, each at most once, rising. A jump past several (80% to 97%) writes one
+// line, for the highest passed (90%), so the lines name the milestones a log
+// reader greps for, never the odd percentage the jump happened to land on.
 class ProgressDisplay {
   public:
-    explicit ProgressDisplay(ProgressStyle style) : style_(style) {}
+    explicit ProgressDisplay(ProgressStyle style, std::FILE* out = stderr)
+        : style_(style), out_(out) {}
     void update(const RenderProgress& progress);
     // Clears the bar so that what follows starts on a clean line.
     void finish();
 
   private:
     ProgressStyle style_;
+    std::FILE* out_;
     bool drawn_ = false;
     int last_logged_percent_ = 0;
 };

@@ -49,8 +49,13 @@ class SceneSequence {
     FrameRange range() const { return range_; }
     int count() const { return count_; }
 
+    // Why -o's pattern cannot be used: a frame of the range would be written
+    // over the scene file. Nothing when no frame's file is the scene's.
+    std::optional<std::string> output_clash() const;
+
     // Sets up frame `index`, and prepares it when `prepare` (a failure to
-    // prepare is exit_io_error).
+    // prepare is exit_io_error; a frame whose file is the scene file itself
+    // is exit_usage).
     SequenceFrame frame(int index, bool prepare = true);
 
   private:
