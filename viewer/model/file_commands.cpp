@@ -66,7 +66,12 @@ void finish_open(AppState& state, const std::filesystem::path& path, LoadAttempt
         state.view.free_camera_active = false;
         // A selection is an index into the scene: in another file's it would
         // be an object the user never picked.
-        if (state.doc.path != was) state.view.selection = {};
+        // So is a Save as path typed for the file before: a Save as of
+        // this one would otherwise write under a name meant for that one.
+        if (state.doc.path != was) {
+            state.view.selection = {};
+            state.fields.save_scene_path.clear();
+        }
         after_scene_replaced(state, before);
         state.files.recent.add(path);
         state.fields.open_path_input = path.string();

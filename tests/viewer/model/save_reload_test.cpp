@@ -115,13 +115,15 @@ TEST_F(ViewerFiles, AReloadDoesNotOvertakeAnOpenUnderWay) {
 // A selection is an index into the scene: in another file it would name an
 // object the user never picked, tint and outline it and take Delete or
 // Alt+drag to it. A reload of the same file keeps it.
-TEST_F(ViewerFiles, OpeningAnotherFileClearsTheSelection) {
+TEST_F(ViewerFiles, OpeningAnotherFileClearsTheSelectionAndTheSaveAsPath) {
     const Selection picked{Selection::Kind::primitive, 1};
     state.view.selection = picked;
+    state.fields.save_scene_path = "scene-variant.jts";
     reload_scene(state);
     state.files.loader.wait();
     take_finished_load(state);
     EXPECT_EQ(current_selection(state.view, state.doc.scene), picked) << "kept on reload";
+    EXPECT_EQ(state.fields.save_scene_path, "scene-variant.jts") << "kept on reload";
 
     const fs::path other = scene_copy("open_clears_selection");
     request_open(state, other);
@@ -129,6 +131,7 @@ TEST_F(ViewerFiles, OpeningAnotherFileClearsTheSelection) {
     take_finished_load(state);
     ASSERT_EQ(state.doc.path, other) << state.message;
     EXPECT_EQ(current_selection(state.view, state.doc.scene), Selection{});
+    EXPECT_EQ(state.fields.save_scene_path, "") << "a name typed for the file before";
     fs::remove_all(other.parent_path());
 }
 
