@@ -196,11 +196,14 @@ TEST_F(ViewerNamesTime, TheSliderRendersAtItsClockAsJtracerCliDoesAndLeavesTheFi
     EXPECT_EQ(read_file(folder / "scene.jts"), kScene) << "the file is never edited";
     EXPECT_FALSE(has_unsaved_edits(state.doc)) << "nor is the document";
 
+    const float slider_left = find_item(viewer.ui_items(), "clock")->rect.x0;
     ASSERT_TRUE(viewer.click(state, "Play"));
     EXPECT_TRUE(state.time.playing);
     viewer.frame(state);
     ASSERT_NE(find_item(viewer.ui_items(), "Pause"), nullptr);
     EXPECT_NE(state.doc.options.clock, 0.75) << "playing moves the clock on";
+    EXPECT_EQ(find_item(viewer.ui_items(), "clock")->rect.x0, slider_left)
+        << "the slider stays where it was when Play turns to Pause";
 }
 
 TEST_F(ViewerNamesTime, ASceneWithoutClockHasNoSlider) {

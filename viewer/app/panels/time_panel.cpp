@@ -10,6 +10,7 @@
 
 #include <imgui.h>
 
+#include <algorithm>
 #include <chrono>
 
 namespace jt::view {
@@ -18,10 +19,14 @@ void time_panel(AppState& state) {
     if (!state.doc.uses_clock) return;
     const auto now = std::chrono::steady_clock::now();
     const bool playing = state.time.playing;
+    // As wide playing as paused, so that the slider stays under the mouse.
+    const float width = std::max(ImGui::CalcTextSize("Play").x, ImGui::CalcTextSize("Pause").x) +
+                        2.0f * ImGui::GetStyle().FramePadding.x;
     if (button(playing ? "Pause" : "Play",
                playing ? "Stop at this clock"
                        : "Play the scene's time: clock runs from 0 to 1 in 4 seconds, then "
-                         "again from 0 (each step renders anew; the file is not changed)"))
+                         "again from 0 (each step renders anew; the file is not changed)",
+               "", width))
         toggle_play(state, now);
     ImGui::SameLine();
     float shown = static_cast<float>(state.doc.options.clock);

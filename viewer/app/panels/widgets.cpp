@@ -215,10 +215,10 @@ void tooltip(const char* text) {
     }
 }
 
-bool button(const char* label, const char* tooltip_text, const char* why_disabled) {
+bool button(const char* label, const char* tooltip_text, const char* why_disabled, float width) {
     const bool disabled = why_disabled && *why_disabled;
     ImGui::BeginDisabled(disabled);
-    const bool clicked = ImGui::Button(label);
+    const bool clicked = ImGui::Button(label, ImVec2(width, 0.0f));
     ImGui::EndDisabled();
     tooltip(disabled ? why_disabled : tooltip_text);
     note_item(label, true);

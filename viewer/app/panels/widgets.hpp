@@ -54,7 +54,10 @@ bool panel_header(const char* label, const char* id, bool default_open);
 // A button that says what it does when hovered. With `why_disabled` set (not
 // empty) it is greyed out and its tooltip says why instead. A literal reason
 // takes the const char* form, which builds no string on every frame.
-bool button(const char* label, const char* tooltip, const char* why_disabled = "");
+// `width` 0: as wide as the label; more: that wide (a button whose label
+// changes keeps what follows it in place).
+bool button(const char* label, const char* tooltip, const char* why_disabled = "",
+            float width = 0.0f);
 bool button(const char* label, const char* tooltip, const std::string& why_disabled);
 // Shows `text` while the last item is hovered, also when it is disabled.
 void tooltip(const char* text);
