@@ -8,6 +8,7 @@
 #include "options.hpp"
 #include "sequence_command.hpp"
 
+#include "jtracer/atomic_file.hpp"
 #include "jtracer/frontend/frame_setup.hpp"
 #include "jtracer/frontend/memory_budget.hpp"
 #include "jtracer/frontend/progress.hpp"
@@ -52,7 +53,7 @@ int run(const Options& o, bool& compared) {
         std::cerr << "jtracer-cli: " << fits.error().message << "; nothing was written\n";
         return exit_io_error;
     }
-    if (jt::Expected<void> writable = check_output_writable(output); !writable) {
+    if (jt::Expected<void> writable = jt::check_atomic_write(output); !writable) {
         std::cerr << "jtracer-cli: " << writable.error().message << "; nothing was rendered\n";
         return exit_io_error;
     }

@@ -2,6 +2,7 @@
 
 #include "interruptible_render.hpp"
 
+#include "jtracer/atomic_file.hpp"
 #include "jtracer/frontend/memory_budget.hpp"
 #include "jtracer/frontend/scene_sequence.hpp"
 #include "jtracer/frontend/sequence_progress.hpp"
@@ -57,7 +58,7 @@ int run_sequence(const Options& o) {
             return exit_io_error;
         }
         // Each frame's file may be in a folder of its own (-o 'f%d/shot.png').
-        if (Expected<void> writable = check_output_writable(frame.output); !writable) {
+        if (Expected<void> writable = check_atomic_write(frame.output); !writable) {
             display.finish();
             std::cerr << "jtracer-cli: " << writable.error().message << "; " << kept(range, index)
                       << "\n";

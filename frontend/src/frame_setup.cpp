@@ -1,16 +1,8 @@
 #include "jtracer/frontend/frame_setup.hpp"
 
-#include "jtracer/atomic_file.hpp"
 #include "jtracer/parallel_chunks.hpp"
 #include "jtracer/scene_file.hpp"
 #include "jtracer/validate.hpp"
-
-#include <unistd.h>
-
-#include <cerrno>
-#include <cstdlib>
-#include <cstring>
-#include <filesystem>
 
 namespace jt::frontend {
 
@@ -35,25 +27,6 @@ FrameSetup set_up_loaded(std::string_view program, const RenderFlags& flags, Loa
                          const std::optional<FrameRegion>& region, bool as_parsed);
 
 }  // namespace
-
-Expected<void> check_output_writable(const std::string& output) {
-    namespace fs = std::filesystem;
-    auto cannot = [&](const std::string& why) {
-        return Error{"cannot write '" + output + "': " + why};
-    };
-    if (output.empty()) return Error{"cannot write an image to an empty file name"};
-    std::error_code ec;
-    const fs::file_status status = fs::status(output, ec);
-    if (fs::is_directory(status)) return cannot("it is a directory");
-    if (fs::exists(status) && !fs::is_regular_file(status)) return {};
-    // As the writer does: the temporary file goes beside the file a link names.
-    std::string probe = file_behind_links(output).string() + ".tmp-XXXXXX";
-    const int fd = ::mkstemp(probe.data());
-    if (fd < 0) return cannot(std::strerror(errno));
-    ::close(fd);
-    ::unlink(probe.c_str());
-    return {};
-}
 
 std::string camera_names(const Scene& scene) {
     std::string names;

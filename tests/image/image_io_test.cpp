@@ -224,6 +224,8 @@ TEST(AtomicFile, AWriteThroughALinkWritesTheFileItNames) {
     fs::create_symlink("loop_b", dir / "loop_a");
     fs::create_symlink("loop_a", dir / "loop_b");
     EXPECT_EQ(file_behind_links(dir / "loop_a"), dir / "loop_a");
+    EXPECT_TRUE(check_atomic_write(dir / "second.bin")) << "the write's own check agrees";
+    EXPECT_FALSE(check_atomic_write(dir / "loop_a"));
     const Expected<void> looped = write_file_atomically(dir / "loop_a", bytes);
     ASSERT_FALSE(looped);
     EXPECT_NE(looped.error().message.find("loop_a"), std::string::npos) << looped.error().message;

@@ -3,6 +3,7 @@
 #include "test_util.hpp"
 
 #include "jtracer/limits.hpp"
+#include "jtracer/utf8.hpp"
 #include "language/lexer.hpp"
 
 #include <charconv>
@@ -337,6 +338,23 @@ TEST(Numbers, OnlyAPlainVectorTakesTheFastPath) {
     EXPECT_FALSE(parse_scene("scene { sphere { center: <1, 2, 3, 4>; } }").ok());
     EXPECT_FALSE(parse_scene("scene { sphere { center: <1, 2.3.4, 3>; } }").ok());
     EXPECT_FALSE(parse_scene("scene { sphere { center: <1, 2, 1e999>; } }").ok());
+}
+
+// The one decoder the reader, its messages and the viewer share.
+TEST(Utf8, ACharacterIsItsCodeAndLengthOrNothing) {
+    const auto code = [](std::string_view text) {
+        const std::optional<Utf8Character> c = utf8_character_at(text, 0);
+        return c ? std::pair<long, std::size_t>{c->code, c->length}
+                 : std::pair<long, std::size_t>{-1, 0};
+    };
+    EXPECT_EQ(code("a"), (std::pair<long, std::size_t>{'a', 1}));
+    EXPECT_EQ(code("\xC3\xA9"), (std::pair<long, std::size_t>{0xE9, 2}));
+    EXPECT_EQ(code("\xE2\x80\x9C"), (std::pair<long, std::size_t>{0x201C, 3}));
+    EXPECT_EQ(code("\xF0\x9F\x98\x80"), (std::pair<long, std::size_t>{0x1F600, 4}));
+    for (const char* bad : {"\x80", "\xC3", "\xC0\x80", "\xE0\x80\x80", "\xED\xA0\x80",
+                            "\xF4\x90\x80\x80", "\xF8\x88\x80\x80\x80", "\xC3("})
+        EXPECT_EQ(code(bad).first, -1) << bad;
+    EXPECT_FALSE(utf8_character_at("a", 1)) << "past the end";
 }
 
 }  // namespace

@@ -4,6 +4,7 @@
 #include "app/panels/panels.hpp"
 #include "app/panels/widgets.hpp"
 #include "app/ui_items.hpp"
+#include "jtracer/utf8.hpp"
 #include "model/app_actions.hpp"
 #include "model/document_edits.hpp"
 #include "model/editor_files.hpp"
@@ -18,6 +19,7 @@
 #include <algorithm>
 #include <cstdio>
 #include <cstring>
+#include <optional>
 #include <string_view>
 
 namespace jt::view {
@@ -63,35 +65,11 @@ std::string_view line_text(const std::string& text, int line) {
 // it back on every edit: a byte that is not UTF-8 is cut or replaced, and a
 // character past U+FFFF (an emoji in a comment) came back as NUL bytes.
 std::size_t first_unshowable_byte(std::string_view text) {
-    const auto continuation = [&](std::size_t at) {
-        return at < text.size() && (static_cast<unsigned char>(text[at]) & 0xC0) == 0x80;
-    };
     std::size_t at = 0;
     while (at < text.size()) {
-        const auto c = static_cast<unsigned char>(text[at]);
-        if (c < 0x80) {
-            ++at;
-            continue;
-        }
-        std::size_t length = 0;
-        unsigned code = 0;
-        if (c >= 0xC2 && c <= 0xDF) {
-            length = 2;
-            code = c & 0x1Fu;
-        } else if (c >= 0xE0 && c <= 0xEF) {
-            length = 3;
-            code = c & 0x0Fu;
-        } else {
-            return at;  // a stray continuation, an overlong start, or past U+FFFF
-        }
-        for (std::size_t i = 1; i < length; ++i) {
-            if (!continuation(at + i)) return at;
-            code = (code << 6) | (static_cast<unsigned char>(text[at + i]) & 0x3Fu);
-        }
-        const bool overlong = length == 3 && code < 0x800;
-        const bool surrogate = code >= 0xD800 && code <= 0xDFFF;
-        if (overlong || surrogate || code > IM_UNICODE_CODEPOINT_MAX) return at;
-        at += length;
+        const std::optional<Utf8Character> character = utf8_character_at(text, at);
+        if (!character || character->code > IM_UNICODE_CODEPOINT_MAX) return at;
+        at += character->length;
     }
     return std::string_view::npos;
 }

@@ -37,6 +37,13 @@ using BytePieces = std::function<std::span<const std::uint8_t>()>;
 Expected<void> write_file_atomically(const std::filesystem::path& target,
                                      const BytePieces& next_piece);
 
+// Whether write_file_atomically(target, ...) could write now, asked before
+// long work so that a missing folder, a folder in the way or one without
+// write permission is found before it, not after: the temporary file the
+// write would make is made and removed. A device or pipe, written in place,
+// passes. The error is the one the write would give.
+Expected<void> check_atomic_write(const std::filesystem::path& target);
+
 // Writes a new file `target` and never replaces one: true when written, false
 // when something is already there. The check and the creation are one step
 // (link(2)), so a file that appears meanwhile is not overwritten either.

@@ -13,6 +13,10 @@
 
 namespace jt {
 
+// The largest BMP file: the format's size fields are 32 bits wide. No image
+// JTracer renders, writes or reads is larger.
+inline constexpr std::uint64_t kMaxBmpFileBytes = 0xFFFFFFFF;
+
 std::vector<std::uint8_t> encode_bmp(const Image8& image);
 
 // Reads 24-bit BI_RGB BMPs, bottom-up or top-down; on failure the error says

@@ -66,13 +66,19 @@ struct Temporary {
     int error = 0;
 };
 
+// The name mkstemp makes the temporary file from: beside the target, so that
+// the rename or link stays within one file system.
+std::vector<char> temporary_pattern(const std::filesystem::path& real) {
+    const std::string pattern = real.string() + ".tmp-XXXXXX";
+    std::vector<char> name(pattern.begin(), pattern.end());
+    name.push_back('\0');
+    return name;
+}
+
 // `mode`: the permissions the file gets (a replaced file keeps its own).
 Temporary write_temporary(const std::filesystem::path& real, const BytePieces& next_piece,
                           mode_t mode) {
-    // Beside the target, so the rename or link stays within one file system.
-    const std::string pattern = real.string() + ".tmp-XXXXXX";
-    Temporary t{std::vector<char>(pattern.begin(), pattern.end())};
-    t.name.push_back('\0');
+    Temporary t{temporary_pattern(real)};
     const int fd = ::mkstemp(t.name.data());
     if (fd < 0) return {{}, errno};
     int error = write_all(fd, next_piece);
@@ -104,6 +110,44 @@ std::filesystem::path file_behind_links(const std::filesystem::path& path) {
     return path;
 }
 
+namespace {
+
+// Where write_file_atomically puts the bytes: in place (a device or pipe),
+// or through a temporary file beside the regular file behind `target`'s
+// links; or why it cannot.
+struct WriteTarget {
+    bool in_place = false;
+    std::filesystem::path file;
+};
+
+Expected<WriteTarget> write_target(const std::filesystem::path& target) {
+    if (target.empty()) return Error{"cannot write an image to an empty file name"};
+    std::error_code ec;
+    const std::filesystem::file_status status = std::filesystem::status(target, ec);
+    if (std::filesystem::is_directory(status))
+        return Error{"cannot write " + file_message(target, "it is a directory")};
+    if (std::filesystem::exists(status) && !std::filesystem::is_regular_file(status))
+        return WriteTarget{true, target};
+    std::filesystem::path real = file_behind_links(target);
+    if (std::filesystem::is_symlink(std::filesystem::symlink_status(real, ec)))
+        return failure(target, ELOOP);
+    return WriteTarget{false, std::move(real)};
+}
+
+}  // namespace
+
+Expected<void> check_atomic_write(const std::filesystem::path& target) {
+    const Expected<WriteTarget> place = write_target(target);
+    if (!place) return place.error();
+    if (place->in_place) return {};
+    std::vector<char> probe = temporary_pattern(place->file);
+    const int fd = ::mkstemp(probe.data());
+    if (fd < 0) return failure(target, errno);
+    ::close(fd);
+    ::unlink(probe.data());
+    return {};
+}
+
 Expected<void> write_file_atomically(const std::filesystem::path& target,
                                      std::span<const std::uint8_t> bytes) {
     return write_file_atomically(target, one_piece(bytes));
@@ -111,16 +155,10 @@ Expected<void> write_file_atomically(const std::filesystem::path& target,
 
 Expected<void> write_file_atomically(const std::filesystem::path& target,
                                      const BytePieces& next_piece) {
-    if (target.empty()) return Error{"cannot write an image to an empty file name"};
-    std::error_code ec;
-    const std::filesystem::file_status status = std::filesystem::status(target, ec);
-    if (std::filesystem::is_directory(status))
-        return Error{"cannot write " + file_message(target, "it is a directory")};
-    if (std::filesystem::exists(status) && !std::filesystem::is_regular_file(status))
-        return write_in_place(target, next_piece);
-    const std::filesystem::path real = file_behind_links(target);
-    if (std::filesystem::is_symlink(std::filesystem::symlink_status(real, ec)))
-        return failure(target, ELOOP);
+    const Expected<WriteTarget> place = write_target(target);
+    if (!place) return place.error();
+    if (place->in_place) return write_in_place(target, next_piece);
+    const std::filesystem::path& real = place->file;
     // The file replaced keeps its permissions: a private scene stays
     // private, an executable script executable (never set-id bits, which
     // the new file, of another owner perhaps, must not take). A new one is

@@ -127,9 +127,8 @@ Expected<Image8> decode_bmp(std::span<const std::uint8_t> bytes) {
 }
 
 Expected<void> write_bmp(const std::filesystem::path& path, const Image8& image) {
-    // The format's size fields are 32 bits wide.
     if (header_size + row_stride(image.width) * static_cast<std::size_t>(image.height) >
-        0xFFFFFFFFu)
+        kMaxBmpFileBytes)
         return Error{"cannot write " +
                      file_message(path, "the image is too large for a BMP (4 GiB)")};
     // The header, then as many rows a piece as fit bmp_piece_bytes (one at least).

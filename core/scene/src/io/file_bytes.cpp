@@ -1,5 +1,7 @@
 #include "io/file_bytes.hpp"
 
+#include "jtracer/bmp.hpp"
+
 #include <fcntl.h>
 #include <sys/stat.h>
 #include <unistd.h>
@@ -17,10 +19,10 @@ namespace {
 // read on into all the memory there is. 1 GiB, as for scene files, holds any
 // image a pipe reasonably carries (a 65535 x 4096 BMP is 805 MB).
 constexpr std::size_t kMaxStreamBytes = std::size_t{1} << 30;
-// No file read whole is larger: a BMP's size field has 32 bits, PNGs and
-// JPEGs are read under 2 GiB, and models are refused past 512 MiB before they
-// are read. A larger file is refused by its size, not read into memory first.
-constexpr std::uint64_t kMaxFileBytes = 0xFFFFFFFF;
+// No file read whole is larger than the largest BMP: PNGs and JPEGs are read
+// under 2 GiB, and models are refused past 512 MiB before they are read. A
+// larger file is refused by its size, not read into memory first.
+constexpr std::uint64_t kMaxFileBytes = kMaxBmpFileBytes;
 
 class FileDescriptor {
   public:

@@ -43,7 +43,7 @@ Expected<void> write_region_bmp(const std::filesystem::path& path, const Image8&
                                     static_cast<std::uint32_t>(p.region.bottom)};
     for (std::size_t i = 0; i < std::size(fields); ++i) put32(&record[4 + 4 * i], fields[i]);
     bytes.insert(bytes.begin() + bmp_headers, record.begin(), record.end());
-    if (bytes.size() > 0xFFFFFFFFu)
+    if (bytes.size() > kMaxBmpFileBytes)
         return Error{"cannot write " +
                      file_message(path, "the region is too large for a BMP (4 GiB)")};
     put32(&bytes[2], static_cast<std::uint32_t>(bytes.size()));

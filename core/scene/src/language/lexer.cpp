@@ -1,5 +1,6 @@
 #include "language/lexer.hpp"
 
+#include "jtracer/utf8.hpp"
 #include "language/quote.hpp"
 
 #include <algorithm>
@@ -10,6 +11,7 @@
 #include <cstdint>
 #include <cstdio>
 #include <cstring>
+#include <optional>
 #include <string>
 
 #if defined(__SSE2__)
@@ -200,24 +202,6 @@ void Lexer::next(Token& out) {
 
 namespace {
 
-// The code point of the UTF-8 character that starts at `i`, or -1 when the
-// bytes there are not one (a stray continuation byte, a control byte).
-long utf8_character(std::string_view text, std::size_t i) {
-    const auto lead = static_cast<unsigned char>(text[i]);
-    int extra = 0;
-    if (lead >= 0xC2 && lead <= 0xDF) extra = 1;
-    if (lead >= 0xE0 && lead <= 0xEF) extra = 2;
-    if (lead >= 0xF0 && lead <= 0xF4) extra = 3;
-    if (extra == 0 || i + extra >= text.size()) return -1;
-    long code = lead & (0x3F >> extra);
-    for (int k = 1; k <= extra; ++k) {
-        const auto next = static_cast<unsigned char>(text[i + k]);
-        if ((next & 0xC0) != 0x80) return -1;
-        code = (code << 6) | (next & 0x3F);
-    }
-    return code;
-}
-
 // Whether a curly double quote (U+201C, U+201D or U+201E) starts at `i`.
 bool curly_quote_at(std::string_view text, std::size_t i) {
     return i + 2 < text.size() && text[i] == '\xE2' && text[i + 1] == '\x80' &&
@@ -225,7 +209,7 @@ bool curly_quote_at(std::string_view text, std::size_t i) {
 }
 
 // What a character pasted from a word processor or a web page stands for.
-std::string_view look_alike(long code) {
+std::string_view look_alike(char32_t code) {
     switch (code) {
         case 0x201C:
         case 0x201D:
@@ -306,11 +290,12 @@ void Lexer::skip_unexpected() {
     auto u = static_cast<unsigned char>(c);
     if (u >= 0x20 && u < 0x7f) {
         sink_.error(pos_of(start), std::string("unexpected character '") + c + "'");
-    } else if (const long code = u >= 0x80 ? utf8_character(text_, start) : -1; code >= 0) {
+    } else if (const std::optional<Utf8Character> character =
+                   u >= 0x80 ? utf8_character_at(text_, start) : std::nullopt) {
         char name[16];
-        std::snprintf(name, sizeof name, "U+%04lX", static_cast<unsigned long>(code));
+        std::snprintf(name, sizeof name, "U+%04lX", static_cast<unsigned long>(character->code));
         sink_.error(pos_of(start), "unexpected character " + std::string(name) + " (" +
-                                       std::string(look_alike(code)) + ")");
+                                       std::string(look_alike(character->code)) + ")");
     } else {
         sink_.error(pos_of(start), "unexpected byte " + byte_name(u));
     }
@@ -772,31 +757,10 @@ std::size_t find_invalid_text_byte(std::string_view text) {
                 continue;
             }
         }
-        unsigned char c = s[i];
-        if (c == 0) return i;
-        if (c < 0x80) {
-            ++i;
-            continue;
-        }
-        std::size_t len;
-        std::uint32_t min;
-        if ((c & 0xE0) == 0xC0) {
-            len = 2, min = 0x80;
-        } else if ((c & 0xF0) == 0xE0) {
-            len = 3, min = 0x800;
-        } else if ((c & 0xF8) == 0xF0) {
-            len = 4, min = 0x10000;
-        } else {
-            return i;
-        }
-        if (i + len > n) return i;
-        std::uint32_t cp = c & (0x7F >> len);
-        for (std::size_t k = 1; k < len; ++k) {
-            if ((s[i + k] & 0xC0) != 0x80) return i;
-            cp = (cp << 6) | (s[i + k] & 0x3F);
-        }
-        if (cp < min || cp > 0x10FFFF || (cp >= 0xD800 && cp <= 0xDFFF)) return i;
-        i += len;
+        if (s[i] == 0) return i;
+        const std::optional<Utf8Character> character = utf8_character_at(text, i);
+        if (!character) return i;
+        i += character->length;
     }
     return std::string_view::npos;
 }

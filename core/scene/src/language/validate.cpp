@@ -1,6 +1,7 @@
 #include "jtracer/validate.hpp"
 
 #include "jtracer/affine.hpp"
+#include "jtracer/bmp.hpp"
 #include "jtracer/model_cache.hpp"
 #include "jtracer/schema.hpp"
 #include "jtracer/smooth_normals.hpp"
@@ -477,7 +478,7 @@ unsigned long long bmp_file_size(int width, int height) {
 }
 
 bool fits_in_bmp(int width, int height) {
-    return bmp_file_size(width, height) <= 0xFFFFFFFFull;
+    return bmp_file_size(width, height) <= kMaxBmpFileBytes;
 }
 
 std::vector<Diagnostic> validate_scene(const Scene& scene, const SceneSource& source,

@@ -21,10 +21,6 @@ enum ExitCode : int { exit_ok = 0, exit_scene_error = 1, exit_usage = 2, exit_io
 // Adds --version, printing "PROGRAM VERSION (REVISION)".
 void add_version_flag(CLI::App& app, const std::string& program);
 
-// Parses the command line, then runs `checks` (which may throw
-// CLI::ValidationError for rules between options). Returns the exit code when
-// the program should stop now: 0 after --help or --version, exit_usage after
-// an error, reported on `err` as "PROGRAM: message" and a pointer to --help.
 // Whether two paths name the same file: one existing file (also through a
 // hard link, a symbolic link or another spelling), or, when either does not
 // exist yet, the same place once `.`, `..` and the links of its folders are
@@ -38,6 +34,10 @@ bool same_file(const std::filesystem::path& a, const std::filesystem::path& b);
 // folder of its own to hold a file beside it (a heat map beside /dev/null).
 bool is_stream(const std::filesystem::path& path);
 
+// Parses the command line, then runs `checks` (which may throw
+// CLI::ValidationError for rules between options). Returns the exit code when
+// the program should stop now: 0 after --help or --version, exit_usage after
+// an error, reported on `err` as "PROGRAM: message" and a pointer to --help.
 std::optional<int> parse_command_line(CLI::App& app, int argc, const char* const* argv,
                                       const std::string& program,
                                       const std::function<void()>& checks = {},

@@ -52,13 +52,6 @@ FrameSetup set_up_frame(std::string_view program, const RenderFlags& flags, Load
                         LoadedPrimitives primitives,
                         const std::optional<FrameRegion>& region = std::nullopt);
 
-// Whether an image can be written at `output`, asked before a render so that
-// a missing folder, a folder in the way or a folder without write permission
-// is found before the work, not after it: an empty temporary file is made
-// where the image's would be, and removed. A device or pipe is written in
-// place and passes. The error is the one writing would give.
-Expected<void> check_output_writable(const std::string& output);
-
 // The scene's camera names, quoted, for messages: "\"front\", \"top\"", with
 // "and 2 without a name" for the unnamed ones, or
 // "none".
