@@ -89,17 +89,13 @@ std::vector<Diagnostic> findings(const LoadedScene& loaded) {
 // A width or height of 0 is an error of the frame, not of the scene:
 // render(width=, height=) may still set it, as --width/--height do for a file
 // without them, and render() reports it when it does not.
-bool size_left_to_render(const Diagnostic& d) {
-    return d.severity == Severity::error && (d.setting == "width" || d.setting == "height");
-}
-
 std::shared_ptr<PythonScene> checked_scene(LoadedScene loaded) {
     std::vector<Diagnostic> diagnostics = findings(loaded);
     if (std::any_of(diagnostics.begin(), diagnostics.end(), [](const Diagnostic& d) {
-            return d.severity == Severity::error && !size_left_to_render(d);
+            return d.severity == Severity::error && !asks_for_frame_size(d);
         }))
         raise_scene_error(format_diagnostics(diagnostics, loaded), diagnostics, loaded);
-    std::erase_if(diagnostics, size_left_to_render);
+    std::erase_if(diagnostics, asks_for_frame_size);
     auto scene = std::make_shared<PythonScene>();
     scene->loaded = std::move(loaded);
     scene->warnings = std::move(diagnostics);
