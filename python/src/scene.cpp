@@ -82,7 +82,7 @@ void bind_view(py::module_& m, const char* name, const char* doc) {
 std::vector<Diagnostic> findings(const LoadedScene& loaded) {
     std::vector<Diagnostic> diagnostics = check_scene(
         loaded, {.validation = {.run_chunks = parallel_chunks(), .primitives_as_parsed = true}});
-    name_render_arguments(diagnostics);
+    frontend::name_setting_flags(diagnostics, python_names);
     return diagnostics;
 }
 
@@ -114,13 +114,11 @@ ParseOptions options_with(const std::optional<py::dict>& defines, double clock) 
         throw py::value_error("clock: a finite number, not " +
                               py::repr(py::float_(clock)).cast<std::string>());
     options.clock = clock;
+    options.value_names = python_names.values;
     if (!defines) return options;
     for (const auto& [key, value] : *defines) {
         if (!py::isinstance<py::str>(key)) throw py::type_error("defines: the names must be str");
         const std::string name = key.cast<std::string>();
-        // Said here in Python's words: parse_define would name --define and --clock.
-        if (name == "clock")
-            throw py::value_error("defines['clock']: clock is not a define; pass clock= instead");
         auto number_text = [&](py::handle v) -> std::string {
             if (py::isinstance<py::bool_>(v) ||
                 !(py::isinstance<py::int_>(v) || py::isinstance<py::float_>(v)))
@@ -151,9 +149,9 @@ ParseOptions options_with(const std::optional<py::dict>& defines, double clock) 
         } else {
             text = number_text(value);
         }
-        Expected<Define> define = parse_define(name + "=" + text);
+        Expected<Define> define = parse_define(name + "=" + text, python_names.values);
         if (!define)
-            throw py::value_error("defines: " + with_argument_names(define.error().message));
+            throw py::value_error(python_names.values.define(name) + ": " + define.error().message);
         options.defines.push_back(std::move(*define));
     }
     return options;
