@@ -235,9 +235,7 @@ int run_info_command(int argc, char** argv) {
         *loaded, {.validation = {.run_chunks = parallel_chunks(), .primitives_as_parsed = true}});
     // The image's size is a render's to set (--width, --height), and info,
     // which takes neither, describes the scene whatever size it renders at.
-    std::erase_if(diagnostics, [](const Diagnostic& d) {
-        return d.setting == "width" || d.setting == "height";
-    });
+    std::erase_if(diagnostics, asks_for_frame_size);
     if (has_errors(diagnostics)) {
         std::cerr << format_diagnostics(diagnostics, *loaded);
         return exit_scene_error;

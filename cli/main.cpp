@@ -37,6 +37,10 @@ int run(const Options& o, bool& compared) {
     FrameSetup setup = set_up_frame("jtracer-cli", o, o.region);
     std::cerr << setup.message;
     if (setup.exit_code != exit_ok) return setup.exit_code;
+    if (std::optional<std::string> refused = region_output_refusal(o, setup.output)) {
+        std::cerr << *refused;
+        return exit_usage;
+    }
     if (o.check_only) {
         if (!o.quiet) std::cerr << o.scene_path << ": no errors\n";
         return exit_ok;

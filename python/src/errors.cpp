@@ -64,32 +64,6 @@ void raise_scene_error(const std::string& message, const std::vector<Diagnostic>
     throw py::error_already_set();
 }
 
-std::string with_argument_names(std::string text) {
-    static constexpr std::pair<std::string_view, std::string_view> renamed[] = {
-        {"set by --define", "set by defines"},
-        {"--define ", "defines: "},
-        {"--width", "width"},
-        {"--height", "height"},
-        {"--samples", "samples"},
-    };
-    for (const auto& [flag, argument] : renamed)
-        for (std::size_t at = text.find(flag); at != std::string::npos;
-             at = text.find(flag, at + argument.size()))
-            text.replace(at, flag.size(), argument);
-    return text;
-}
-
-void name_render_arguments(std::vector<Diagnostic>& diagnostics) {
-    for (Diagnostic& d : diagnostics) {
-        if (d.setting == "width" || d.setting == "height" || d.setting == "samples") {
-            const std::string flag = " or pass --" + std::string(d.setting);
-            if (d.message.ends_with(flag)) d.message.resize(d.message.size() - flag.size());
-            d.message.append(" or pass ").append(d.setting).append("= to Scene.render()");
-        }
-        d.message = with_argument_names(std::move(d.message));
-    }
-}
-
 void raise_os_error(const std::string& message) {
     PyErr_SetString(PyExc_OSError, message.c_str());
     throw py::error_already_set();
