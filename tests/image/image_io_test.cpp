@@ -156,6 +156,69 @@ TEST(ImageFile, FormatFollowsTheExtension) {
     EXPECT_EQ(std::string(magic + 1, 3), "PNG");
 }
 
+// A BMP another program saved (GIMP, Paint: 32 bits with alpha, 8 with a
+// palette, rows top-down) is a reference `diff` and --expect compare, as an
+// image map reads it, rather than a file they refuse.
+TEST(ImageFile, ReadsTheBmpKindsAnImageMapReads) {
+    const Image8 image = sample_image();  // 3x2, row 0 at the bottom
+    auto put16 = [](std::vector<std::uint8_t>& b, std::size_t at, std::uint32_t v) {
+        b[at] = static_cast<std::uint8_t>(v);
+        b[at + 1] = static_cast<std::uint8_t>(v >> 8);
+    };
+    auto put32 = [&](std::vector<std::uint8_t>& b, std::size_t at, std::uint32_t v) {
+        put16(b, at, v & 0xFFFF);
+        put16(b, at + 2, v >> 16);
+    };
+    // A BITMAPINFOHEADER file: 32 bits (BGRA) or 8 (a palette of every pixel).
+    auto bmp = [&](int bits, bool top_down) {
+        const std::size_t palette = bits == 8 ? 4 * 6 : 0;
+        const std::size_t stride = bits == 32 ? 12 : 4;
+        std::vector<std::uint8_t> b(54 + palette + stride * 2, 0);
+        b[0] = 'B';
+        b[1] = 'M';
+        put32(b, 2, static_cast<std::uint32_t>(b.size()));
+        put32(b, 10, static_cast<std::uint32_t>(54 + palette));
+        put32(b, 14, 40);
+        put32(b, 18, 3);
+        put32(b, 22, top_down ? static_cast<std::uint32_t>(-2) : 2u);
+        put16(b, 26, 1);
+        put16(b, 28, static_cast<std::uint32_t>(bits));
+        if (bits == 8) put32(b, 46, 6);
+        for (int y = 0; y < 2; ++y)
+            for (int x = 0; x < 3; ++x) {
+                const std::uint8_t* p = image.pixel(x, y);
+                const int stored = top_down ? 1 - y : y;
+                std::uint8_t* row = b.data() + 54 + palette + stride * stored;
+                const int index = 3 * y + x;
+                if (bits == 8) {
+                    row[x] = static_cast<std::uint8_t>(index);
+                    std::uint8_t* entry = b.data() + 54 + 4 * index;
+                    entry[0] = p[2];
+                    entry[1] = p[1];
+                    entry[2] = p[0];
+                } else {
+                    row[4 * x] = p[2];
+                    row[4 * x + 1] = p[1];
+                    row[4 * x + 2] = p[0];
+                    row[4 * x + 3] = 255;
+                }
+            }
+        return b;
+    };
+    const fs::path dir = make_scratch_dir("bmp_kinds");
+    for (const auto& [bits, top_down] :
+         {std::pair{32, false}, std::pair{32, true}, std::pair{8, false}}) {
+        const std::vector<std::uint8_t> bytes = bmp(bits, top_down);
+        const fs::path file = dir / "ref.bmp";
+        std::ofstream(file, std::ios::binary)
+            .write(reinterpret_cast<const char*>(bytes.data()),
+                   static_cast<std::streamsize>(bytes.size()));
+        const Expected<Image8> back = read_image(file);
+        ASSERT_TRUE(back) << bits << " bits: " << back.error().message;
+        EXPECT_TRUE(*back == image) << bits << " bits, top-down " << top_down;
+    }
+}
+
 TEST(AtomicFile, ReplacesWholeAndLeavesNoTemporary) {
     fs::path dir = make_scratch_dir("atomic");
     fs::path target = dir / "out.bmp";
