@@ -137,6 +137,7 @@ Expected<void> write_junit(const std::filesystem::path& path, const ComparisonRe
     if (!r.heat_map_path.empty()) out += "the differences are in " + r.heat_map_path + "\n";
     if (r.verdict == Verdict::updated) out += "updated " + r.expected_path + " with the render\n";
     xml += "      <system-out>" + xml_text(out) + "</system-out>\n";
+    if (!r.log.empty()) xml += "      <system-err>" + xml_text(r.log) + "</system-err>\n";
     xml += "    </testcase>\n  </testsuite>\n</testsuites>\n";
     const auto* bytes = reinterpret_cast<const std::uint8_t*>(xml.data());
     return write_file_atomically(path, std::span(bytes, xml.size()));

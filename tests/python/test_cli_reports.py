@@ -150,6 +150,27 @@ def test_expect_junit_of_a_scene_that_fails_is_an_error(tmp_path, cli):
     # It says that nothing was written rather than ending in "actual ".
     assert case.find("system-out").text.startswith(
         f"expected {tmp_path / 'ref.png'}, actual none (no render was written)\n")
+    # The CI page shows why: the scene's error is in the message, and every
+    # message the run printed is in system-err.
+    message = case.find("error").get("message")
+    assert "bad.jts:1:" in message and "radius" in message, message
+    assert "exit code 1" in message, message
+    assert "bad.jts:1:" in case.find("system-err").text
+
+
+def test_expect_junit_of_a_missing_model_names_the_file(tmp_path, cli, source_dir):
+    scene = tmp_path / "scene.jts"
+    scene.write_text((source_dir / "scenes" / "glass.jts").read_text() +
+                     '\nscene { mesh { file: "models/gone.obj"; } }\n')
+    junit = tmp_path / "expect.xml"
+    jtracer.write_image(tmp_path / "ref.png", np.zeros((4, 4, 3), np.uint8))
+    code, _, err = run(cli, "-q", scene, "-o", tmp_path / "out.png", "--expect",
+                       tmp_path / "ref.png", "--junit", junit, check=False)
+    assert code == 1
+    _, _, case = junit_case(junit)
+    assert "gone.obj" in case.find("error").get("message")
+    # What stderr shows, the report keeps.
+    assert case.find("system-err").text == err
 
 
 def stamp(path):
