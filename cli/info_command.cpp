@@ -248,7 +248,9 @@ int run_info_command(int argc, char** argv) {
         return exit_io_error;
     }
     if (json_output)
-        std::cout << description->dump() << "\n";
+        // Paths are bytes, not always UTF-8 (a folder named in Latin-1): such a
+        // byte is replaced (U+FFFD) rather than thrown at.
+        std::cout << description->dump(-1, ' ', false, json::error_handler_t::replace) << "\n";
     else
         print_text(*description);
     return exit_ok;

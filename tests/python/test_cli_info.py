@@ -2,8 +2,10 @@
 # each model format the project reads and an image map; --json parsed.
 import json
 import math
+import os
 import pathlib
 import shutil
+import subprocess
 
 import pytest
 from conftest import run
@@ -168,3 +170,20 @@ scene {
     assert '  part "red": 2 triangles, base colour <1, 0, 0>\n' in out
     assert '  part "skin": 1 triangles, base colour <1, 1, 1>, texture SpiderTex.jpg\n' in out
     assert "  part (no material): 1 triangles\n" in out
+
+
+def test_info_json_of_a_scene_in_a_folder_named_in_latin1(tmp_path, cli):
+    # The folder's name is not UTF-8 (Latin-1 "modèles"): --json still prints
+    # one UTF-8 object, the byte replaced, rather than stopping on it.
+    folder = tmp_path / os.fsdecode(b"mod\xe8les")
+    folder.mkdir()
+    shutil.copy(MODELS / "OBJ" / "box.obj", folder)
+    (folder / "scene.jts").write_text(
+        'render_settings { width: 8; height: 8; }\n'
+        'cameras { perspective_camera { position: <0, 0, 10>; look_at: <0, 0, 0>; } }\n'
+        'scene { mesh { file: "box.obj"; } }\n')
+    done = subprocess.run([str(cli), "info", "--json", str(folder / "scene.jts")],
+                          capture_output=True, timeout=60)
+    assert done.returncode == 0, done.stderr
+    described = json.loads(done.stdout.decode("utf-8"))
+    assert described["meshes"][0]["path"].endswith("mod\ufffdles/box.obj")

@@ -2,6 +2,9 @@
 # --expect --update. The JSON is parsed with json, the JUnit XML with
 # xml.etree, as a CI system would read them.
 import json
+import os
+import shutil
+import subprocess
 import xml.etree.ElementTree as ElementTree
 
 import jtracer
@@ -234,3 +237,23 @@ def test_update_and_json_need_their_command(tmp_path, cli, source_dir):
     code, _, err = run(cli, scene, "-o", tmp_path / "out.png", "--junit", tmp_path / "j.xml",
                        check=False)
     assert code == 2 and "--junit" in err
+
+
+def test_reports_of_a_file_name_that_is_not_utf8_can_be_read(tmp_path, cli):
+    # A name from an archive made on another system: Latin-1 "café". The
+    # JSON and the JUnit XML must still be UTF-8 that their readers accept,
+    # with the byte that is not UTF-8 replaced.
+    a, _ = images(tmp_path)
+    latin1 = tmp_path / os.fsdecode(b"caf\xe9.png")
+    shutil.copy(a, latin1)
+    done = subprocess.run([str(cli), "diff", str(a), str(latin1), "--json"], capture_output=True,
+                          timeout=60)
+    assert done.returncode == 0, done.stderr
+    report = json.loads(done.stdout.decode("utf-8"))
+    assert report["verdict"] == "within" and report["actual"]["path"].endswith("caf\ufffd.png")
+    junit = tmp_path / "report.xml"
+    done = subprocess.run([str(cli), "diff", "-q", str(a), str(latin1), "--junit", str(junit)],
+                          capture_output=True, timeout=60)
+    assert done.returncode == 0, done.stderr
+    _, suite, case = junit_case(junit)
+    assert suite.get("failures") == "0" and case.get("name").endswith("caf\ufffd.png")
