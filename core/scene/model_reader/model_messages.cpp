@@ -75,6 +75,20 @@ std::string wide_text_problem(std::span<const std::uint8_t> bytes) {
            "save it as UTF-8";
 }
 
+std::string unread_format_problem(std::span<const std::uint8_t> head, bool reads_vrml,
+                                  bool reads_m3d) {
+    constexpr std::string_view kConvert =
+        ", which the model reader does not read: convert it to "
+        "glTF 2.0, OBJ or PLY";
+    if (!reads_vrml && starts_with(head, {'#', 'V', 'R', 'M', 'L'}))
+        return std::string("the file is VRML").append(kConvert);
+    // Binary Model 3D starts "3DMO", its text form "3dmodel".
+    if (!reads_m3d &&
+        (starts_with(head, {'3', 'D', 'M', 'O'}) || starts_with(head, {'3', 'd', 'm', 'o', 'd'})))
+        return std::string("the file is Model 3D (.m3d, .a3d)").append(kConvert);
+    return "";
+}
+
 std::string import_failure(const std::string& reason, std::span<const std::uint8_t> bytes) {
     if (std::string located = located_number(reason, bytes); !located.empty()) return located;
     if (starts_with(bytes, {0x1F, 0x8B}))
