@@ -7,6 +7,7 @@
 #include "jtracer/image_diff.hpp"
 #include "jtracer/image_file.hpp"
 #include "jtracer/png.hpp"
+#include "jtracer/texture.hpp"
 
 #include <gtest/gtest.h>
 #include <unistd.h>
@@ -217,6 +218,36 @@ TEST(ImageFile, ReadsTheBmpKindsAnImageMapReads) {
         ASSERT_TRUE(back) << bits << " bits: " << back.error().message;
         EXPECT_TRUE(*back == image) << bits << " bits, top-down " << top_down;
     }
+}
+
+// A picture in a format image maps do not read says which format it is (a
+// GIF from /usr/share/doc, a PPM from netpbm), not stb_image's "unknown image
+// type"; an empty file says it is empty.
+TEST(ImageMapFile, AFormatNotReadIsNamed) {
+    auto problem = [](const std::string& text) {
+        const std::vector<std::uint8_t> bytes(text.begin(), text.end());
+        const Expected<Texture> t = decode_texture(bytes);
+        return t ? std::string("(decoded)") : t.error().message;
+    };
+    const std::string pad(64, '\x01');
+    EXPECT_EQ(problem(""), "the file is empty");
+    const struct {
+        std::string bytes, format;
+    } cases[] = {
+        {"GIF89a" + pad, "a GIF image"},
+        {"GIF87a" + pad, "a GIF image"},
+        {"P6\n4 4\n255\n" + pad, "a Netpbm image (PBM, PGM or PPM)"},
+        {"P3 4 4 255 " + pad, "a Netpbm image (PBM, PGM or PPM)"},
+        {std::string("II*\0", 4) + pad, "a TIFF image"},
+        {std::string("MM\0*", 4) + pad, "a TIFF image"},
+        {std::string("RIFF\x10\0\0\0WEBPVP8 ", 16) + pad, "a WebP image"},
+        {pad + std::string("\0\0\0\0\0\0\0\0TRUEVISION-XFILE.\0", 26), "a TGA image"},
+    };
+    for (const auto& c : cases)
+        EXPECT_EQ(problem(c.bytes),
+                  "not a readable PNG, JPEG or BMP image: it is " + c.format + "; save it as PNG")
+            << c.format;
+    EXPECT_EQ(problem(pad), "not a readable PNG, JPEG or BMP image: unknown image type");
 }
 
 TEST(AtomicFile, ReplacesWholeAndLeavesNoTemporary) {

@@ -13,7 +13,9 @@
 #include <stb_image.h>
 
 #include <algorithm>
+#include <cctype>
 #include <limits>
+#include <string_view>
 #include <utility>
 #include <variant>
 
@@ -40,12 +42,31 @@ bool exceeds_cap(std::pair<std::int64_t, std::int64_t> size) {
            size.first * size.second > kMaxTextureTexels;
 }
 
+// The format a picture image maps do not read is in, told by its signature
+// (a TGA by the footer of version 2), or "": stb_image only says "unknown
+// image type" of them.
+std::string format_not_read(std::span<const std::uint8_t> bytes) {
+    const std::string_view text(reinterpret_cast<const char*>(bytes.data()), bytes.size());
+    if (text.starts_with("GIF87a") || text.starts_with("GIF89a")) return "a GIF image";
+    if (text.size() > 2 && text[0] == 'P' && text[1] >= '1' && text[1] <= '7' &&
+        std::isspace(static_cast<unsigned char>(text[2])))
+        return "a Netpbm image (PBM, PGM or PPM)";
+    if (text.starts_with(std::string_view("II*\0", 4)) ||
+        text.starts_with(std::string_view("MM\0*", 4)))
+        return "a TIFF image";
+    if (text.size() >= 12 && text.starts_with("RIFF") && text.substr(8, 4) == "WEBP")
+        return "a WebP image";
+    if (text.ends_with(std::string_view("TRUEVISION-XFILE.\0", 18))) return "a TGA image";
+    return "";
+}
+
 // The header's verdict: "" or why the picture cannot be decoded. JPEGs go to
 // libjpeg-turbo (io/jpeg.hpp), PNGs and BMPs to stb_image, a BMP after its
 // header is read here (io/bmp_header.hpp).
 std::string header_problem(std::span<const std::uint8_t> bytes, int& width, int& height) {
     if (bytes.size() > static_cast<std::size_t>(std::numeric_limits<int>::max()))
         return "the file is too large";
+    if (bytes.empty()) return "the file is empty";
     if (has_jpeg_signature(bytes)) {
         const Expected<JpegSize> size = read_jpeg_size(bytes);
         if (!size) return size.error().message;
@@ -76,8 +97,12 @@ std::string header_problem(std::span<const std::uint8_t> bytes, int& width, int&
         int channels = 0;
         forget_stb_failure();
         if (!stbi_info_from_memory(bytes.data(), static_cast<int>(bytes.size()), &width, &height,
-                                   &channels))
+                                   &channels)) {
+            if (std::string format = format_not_read(bytes); !format.empty())
+                return "not a readable PNG, JPEG or BMP image: it is " + format +
+                       "; save it as PNG";
             return std::string("not a readable PNG, JPEG or BMP image: ") + stb_failure_reason();
+        }
     }
     if (width <= 0 || height <= 0)
         return "the image has no pixels (" + std::to_string(width) + "x" + std::to_string(height) +
