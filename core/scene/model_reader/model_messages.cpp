@@ -57,7 +57,20 @@ std::string located_number(const std::string& reason, std::span<const std::uint8
     std::string where("line ");
     where.append(std::to_string(line)).append(", column ").append(std::to_string(column));
     where.append(" (byte ").append(std::to_string(at)).append("): a number was expected, not ");
-    if (word == 0) return where.append("nothing");
+    if (word == 0) {
+        // Spaces (or line ends and tabs, shown as '?') before a number: the
+        // importer did not skip them.
+        std::size_t at_word = 0;
+        while (at_word < shown.size() && (shown[at_word] == ' ' || shown[at_word] == '?'))
+            ++at_word;
+        if (at_word == 0 || at_word == shown.size()) return where.append("nothing");
+        std::size_t end = at_word;
+        while (end < shown.size() && end - at_word < 40 && shown[end] != ' ' && shown[end] != '?')
+            ++end;
+        return where.append("the white space before '")
+            .append(shown.substr(at_word, end - at_word))
+            .append("' (the model reader does not skip it there)");
+    }
     return where.append("'").append(shown.substr(0, word)).append("'");
 }
 
