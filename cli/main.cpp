@@ -153,6 +153,14 @@ int main(int argc, char** argv) {
         if (o.list_cameras) return list_cameras(o.scene_path);
         if (o.list_defines) return list_defines(o.scene_path);
         if (o.frames) return run_sequence(o);
+        // A report that cannot be written is found before the render, as an
+        // output is: a CI job without its report folder learns it at once.
+        if (o.expect && o.junit)
+            if (jt::Expected<void> writable = jt::check_atomic_write(*o.junit); !writable) {
+                std::cerr << "jtracer-cli: --junit: " << writable.error().message
+                          << "; nothing was rendered\n";
+                return exit_io_error;
+            }
         code = run(o, compared);
     } catch (const std::bad_alloc&) {
         std::cerr << "jtracer-cli: out of memory (the scene or the image is too large for the "

@@ -257,3 +257,18 @@ def test_reports_of_a_file_name_that_is_not_utf8_can_be_read(tmp_path, cli):
     assert done.returncode == 0, done.stderr
     _, suite, case = junit_case(junit)
     assert suite.get("failures") == "0" and case.get("name").endswith("caf\ufffd.png")
+
+
+def test_a_junit_report_that_cannot_be_written_stops_before_the_render(tmp_path, cli,
+                                                                       source_dir):
+    # A CI job that forgot `mkdir -p junit` learns it at once, not after each
+    # render, and exits 3 (not the comparison's 0 or 1).
+    scene, reference = tmp_path / "scene.jts", tmp_path / "ref.png"
+    scene.write_text((source_dir / "scenes" / "glass.jts").read_text())
+    jtracer.write_image(reference, np.zeros((4, 4, 3), np.uint8))
+    code, _, err = run(cli, "-q", scene, "--width", "16", "--height", "9", "-o",
+                       tmp_path / "out.png", "--expect", reference, "--junit",
+                       tmp_path / "missing" / "report.xml", check=False)
+    assert code == 3
+    assert "--junit" in err and "nothing was rendered" in err, err
+    assert not (tmp_path / "out.png").exists()
