@@ -250,6 +250,22 @@ TEST(ImageMapFile, AFormatNotReadIsNamed) {
     EXPECT_EQ(problem(pad), "not a readable PNG, JPEG or BMP image: unknown image type");
 }
 
+// A BMP cut short by less than its headers and palette take (a download
+// stopped near its end) decoded with its last rows black: stb_image reads
+// zeros past the end. An uncompressed BMP's size is exact, so it is refused.
+TEST(ImageMapFile, ABmpMissingItsLastRowsIsRefused) {
+    const std::vector<std::uint8_t> whole = encode_bmp(sample_image());  // 54 + 2 rows of 12
+    ASSERT_TRUE(decode_texture(whole));
+    for (std::size_t cut : {1u, 5u, 12u}) {
+        const std::vector<std::uint8_t> short_file(whole.begin(), whole.end() - cut);
+        const Expected<Texture> t = decode_texture(short_file);
+        ASSERT_FALSE(t) << cut << " bytes cut";
+        EXPECT_EQ(t.error().message,
+                  "the file is too short for the 3x2 pixels its header claims (" +
+                      std::to_string(short_file.size()) + " bytes)");
+    }
+}
+
 TEST(AtomicFile, ReplacesWholeAndLeavesNoTemporary) {
     fs::path dir = make_scratch_dir("atomic");
     fs::path target = dir / "out.bmp";

@@ -59,6 +59,14 @@ std::uint64_t fewest_bytes_for(std::span<const std::uint8_t> bytes, std::int64_t
         // A header cut short before its bit count counts one bit a pixel.
         const std::optional<BmpHeader> header = read_bmp_header(bytes);
         const std::uint64_t bits = header ? std::max<std::uint64_t>(1, header->bits_per_pixel) : 1;
+        // Uncompressed (or bit-field) rows fill the file exactly from the
+        // offset its header gives, each padded to 4 bytes: one cut short by
+        // less than its headers take would read its last rows as zeros.
+        if (header && (header->compression == 0 || header->compression == 3)) {
+            const std::uint64_t offset = bytes[10] | bytes[11] << 8 | bytes[12] << 16 |
+                                         static_cast<std::uint64_t>(bytes[13]) << 24;
+            return offset + h * ((w * bits + 31) / 32 * 4);
+        }
         return h * ((w * bits + 7) / 8);
     }
     if (bytes.size() >= 2 && bytes[0] == 0xFF && bytes[1] == 0xD8)

@@ -17,7 +17,9 @@ std::optional<std::pair<std::int64_t, std::int64_t>> png_claimed_size(
     std::span<const std::uint8_t> bytes);
 
 // The fewest bytes a PNG, BMP or JPEG of `width` x `height` pixels can take,
-// from the header's own pixel format: a BMP stores every pixel; deflate packs
+// from the header's own pixel format: a BMP stores every pixel (an
+// uncompressed one its padded rows from the header's pixel offset on, to the
+// byte); deflate packs
 // at most 1032 bytes into one; a JPEG spends at least 2 bits on each 8x8
 // block. 0 for anything else.
 std::uint64_t fewest_bytes_for(std::span<const std::uint8_t> bytes, std::int64_t width,
