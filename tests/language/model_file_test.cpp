@@ -191,8 +191,8 @@ TEST(ModelFile, TrianglesAReaderDropsAreCountedAndNamed) {
     EXPECT_EQ(m.triangles.size(), 11u);
     EXPECT_EQ(m.left_out.out_of_range, 1u);
     EXPECT_EQ(model_warnings(m),
-              std::vector<std::string>{"1 of its 12 triangles is left out: 1 names a corner the "
-                                       "file does not have (an index out of range)"});
+              std::vector<std::string>{"has 1 of its 12 triangles left out: 1 names a corner "
+                                       "the file does not have (an index out of range)"});
     EXPECT_EQ(read_error(kModels / "glTF2/IndexOutOfRange/AllIndicesOutOfRange.gltf", kModels),
               "'" + (kModels / "glTF2/IndexOutOfRange/AllIndicesOutOfRange.gltf").string() +
                   "': none of its 12 triangles can be read: they name corners the file does not "
@@ -207,7 +207,7 @@ TEST(ModelFile, TrianglesAReaderDropsAreCountedAndNamed) {
     EXPECT_EQ(ply.triangles.size(), 1u);
     EXPECT_EQ(model_warnings(ply),
               std::vector<std::string>{
-                  "2 of its 3 triangles are left out: 1 names a corner the file does not have (an "
+                  "has 2 of its 3 triangles left out: 1 names a corner the file does not have (an "
                   "index out of range), 1 has a corner at infinity or NaN"});
     EXPECT_EQ(warnings_of(kModels / "glTF2/BoxWithInfinites-glTF-Binary/BoxWithInfinites.glb"),
               std::vector<std::string>{"holds no usable triangle (12 have a corner at infinity "
