@@ -53,8 +53,9 @@ def test_info_json_counts_meshes_maps_lights_and_cameras(cli, scene):
     assert all(m["triangles"] > 0 and m["vertices"] >= 3 for m in meshes)
     assert meshes[0]["triangles"] == 12  # six quads
     assert meshes[1]["triangles"] == 20020 and meshes[1]["vertices"] == 10332
-    # STL has facet normals only; PLY and glTF carry vertex normals.
-    assert meshes[2]["normals"] == "generated"
+    # STL has facet normals only, and without smooth_angle its triangles are
+    # shaded flat (none generated); PLY and glTF carry vertex normals.
+    assert meshes[2]["normals"] == "none"
     assert [meshes[i]["normals"] for i in (1, 3, 4)] == ["file"] * 3
     assert [m["read_before"] for m in meshes] == [False] * 5 + [True]
     assert all(m["load_seconds"] >= 0 for m in meshes)
@@ -187,3 +188,19 @@ def test_info_json_of_a_scene_in_a_folder_named_in_latin1(tmp_path, cli):
     assert done.returncode == 0, done.stderr
     described = json.loads(done.stdout.decode("utf-8"))
     assert described["meshes"][0]["path"].endswith("mod\ufffdles/box.obj")
+
+
+def test_info_says_normals_are_generated_only_where_smooth_angle_makes_them(tmp_path, cli):
+    shutil.copy(MODELS / "STL" / "Spider_ascii.stl", tmp_path)
+    path = tmp_path / "normals.jts"
+    path.write_text(
+        'render_settings { width: 8; height: 8; }\n'
+        'cameras { perspective_camera { position: <0, 0, 10>; look_at: <0, 0, 0>; } }\n'
+        'scene {\n'
+        '    mesh { file: "Spider_ascii.stl"; smooth_angle: 60; }\n'
+        '    mesh { file: "Spider_ascii.stl"; }\n'
+        '}\n')
+    _, out, _ = run(cli, "info", path, "--json")
+    assert [m["normals"] for m in json.loads(out)["meshes"]] == ["generated", "none"]
+    _, text, _ = run(cli, "info", path)
+    assert "normals generated, smooth" in text and "normals none, smooth" in text
