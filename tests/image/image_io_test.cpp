@@ -266,6 +266,33 @@ TEST(ImageMapFile, ABmpMissingItsLastRowsIsRefused) {
     }
 }
 
+// A TGA before version 2 has no signature, so its name tells it: OBJ files
+// exported from games and older tools name .tga textures (assimp-testmodels'
+// SMD/holygrail.tga, Collada/duckCM.tga).
+TEST(ImageMapFile, ATgaIsNamedByItsName) {
+    const fs::path dir = make_scratch_dir("tga");
+    // An uncompressed 2x1 true-colour TGA: an 18-byte header, then BGR pixels.
+    std::string tga(18, '\0');
+    tga[2] = 2;
+    tga[12] = 2;
+    tga[14] = 1;
+    tga[16] = 24;
+    tga += std::string(6, '\x7f');
+    for (const char* name : {"wood.tga", "WOOD.TGA"}) {
+        test::write_file(dir / name, tga);
+        const auto texture = load_texture(dir / name);
+        ASSERT_FALSE(texture) << name;
+        EXPECT_EQ(
+            texture.error().message,
+            "'" + (dir / name).string() +
+                "': not a readable PNG, JPEG or BMP image: it is a TGA image; save it as PNG");
+    }
+    test::write_file(dir / "wood.png", tga);
+    const auto named_png = load_texture(dir / "wood.png");
+    ASSERT_FALSE(named_png);
+    EXPECT_EQ(named_png.error().message.find("TGA"), std::string::npos);
+}
+
 TEST(AtomicFile, ReplacesWholeAndLeavesNoTemporary) {
     fs::path dir = make_scratch_dir("atomic");
     fs::path target = dir / "out.bmp";

@@ -126,6 +126,18 @@ std::vector<Sample> bottom_up(const Sample* samples, int width, int height) {
     return out;
 }
 
+// A TGA before version 2 has no signature to tell it by: its name does.
+std::string named_by_extension(const std::filesystem::path& path, const Error& error) {
+    constexpr std::string_view kUnknown =
+        "not a readable PNG, JPEG or BMP image: unknown image type";
+    std::string extension = path.extension().string();
+    std::transform(extension.begin(), extension.end(), extension.begin(),
+                   [](unsigned char c) { return static_cast<char>(std::tolower(c)); });
+    if (error.message == kUnknown && extension == ".tga")
+        return "not a readable PNG, JPEG or BMP image: it is a TGA image; save it as PNG";
+    return error.message;
+}
+
 }  // namespace
 
 Expected<Texture> decode_texture(std::span<const std::uint8_t> bytes) {
@@ -170,7 +182,7 @@ Expected<std::shared_ptr<const Texture>> load_texture(const std::filesystem::pat
         Expected<std::vector<std::uint8_t>> bytes = read_file_bytes(path);
         if (!bytes) return bytes.error();
         Expected<Texture> texture = decode_texture(*bytes);
-        if (!texture) return Error{file_message(path, texture.error().message)};
+        if (!texture) return Error{file_message(path, named_by_extension(path, texture.error()))};
         return texture;
     };
     if (error || !stamp.exists) return decode().error();  // read_file_bytes's own words
