@@ -293,6 +293,28 @@ TEST(ImageMapFile, ATgaIsNamedByItsName) {
     EXPECT_EQ(named_png.error().message.find("TGA"), std::string::npos);
 }
 
+// diff and --expect compare BMP and PNG: a reference saved as JPEG (lossy,
+// so never an exact reference) or GIF says what it is, not that it does not
+// start with the PNG signature.
+TEST(ImageFile, AReferenceInAnotherFormatSaysWhichItIs) {
+    const fs::path dir = make_scratch_dir("other_formats");
+    const struct {
+        std::string name, bytes, format;
+    } cases[] = {
+        {"ref.jpg", std::string("\xFF\xD8\xFF\xE0\0\x10JFIF", 10), "a JPEG image"},
+        {"ref.gif", "GIF89a\x01\0\x01\0", "a GIF image"},
+        {"ref.ppm", "P6\n1 1\n255\nabc", "a Netpbm image (PBM, PGM or PPM)"},
+    };
+    for (const auto& c : cases) {
+        test::write_file(dir / c.name, c.bytes);
+        const Expected<Image8> read = read_image(dir / c.name);
+        ASSERT_FALSE(read) << c.name;
+        EXPECT_EQ(read.error().message, "'" + (dir / c.name).string() + "': it is " + c.format +
+                                            ", not a BMP or PNG image: save it as PNG")
+            << c.name;
+    }
+}
+
 TEST(AtomicFile, ReplacesWholeAndLeavesNoTemporary) {
     fs::path dir = make_scratch_dir("atomic");
     fs::path target = dir / "out.bmp";

@@ -4,7 +4,10 @@
 #include "jtracer/png.hpp"
 
 #include <algorithm>
+#include <cctype>
 #include <iterator>
+#include <string>
+#include <string_view>
 
 namespace jt {
 
@@ -72,6 +75,21 @@ std::uint64_t fewest_bytes_for(std::span<const std::uint8_t> bytes, std::int64_t
     if (bytes.size() >= 2 && bytes[0] == 0xFF && bytes[1] == 0xD8)
         return ((w + 7) / 8) * ((h + 7) / 8) / 4;
     return 0;
+}
+
+std::string format_not_read(std::span<const std::uint8_t> bytes) {
+    const std::string_view text(reinterpret_cast<const char*>(bytes.data()), bytes.size());
+    if (text.starts_with("GIF87a") || text.starts_with("GIF89a")) return "a GIF image";
+    if (text.size() > 2 && text[0] == 'P' && text[1] >= '1' && text[1] <= '7' &&
+        std::isspace(static_cast<unsigned char>(text[2])))
+        return "a Netpbm image (PBM, PGM or PPM)";
+    if (text.starts_with(std::string_view("II*\0", 4)) ||
+        text.starts_with(std::string_view("MM\0*", 4)))
+        return "a TIFF image";
+    if (text.size() >= 12 && text.starts_with("RIFF") && text.substr(8, 4) == "WEBP")
+        return "a WebP image";
+    if (text.ends_with(std::string_view("TRUEVISION-XFILE.\0", 18))) return "a TGA image";
+    return "";
 }
 
 }  // namespace jt

@@ -7,6 +7,7 @@
 #include <cstdint>
 #include <optional>
 #include <span>
+#include <string>
 #include <utility>
 
 namespace jt {
@@ -24,5 +25,10 @@ std::optional<std::pair<std::int64_t, std::int64_t>> png_claimed_size(
 // block. 0 for anything else.
 std::uint64_t fewest_bytes_for(std::span<const std::uint8_t> bytes, std::int64_t width,
                                std::int64_t height);
+
+// The format of a picture in a format JTracer does not read (GIF, Netpbm,
+// TIFF, WebP, a TGA of version 2), told by its signature, as "a GIF image";
+// or "" for any other bytes: stb_image only says "unknown image type".
+std::string format_not_read(std::span<const std::uint8_t> bytes);
 
 }  // namespace jt

@@ -2,6 +2,7 @@
 
 #include "io/bmp_header.hpp"
 #include "io/file_bytes.hpp"
+#include "io/image_claims.hpp"
 #include "jtracer/bmp.hpp"
 #include "jtracer/png.hpp"
 #include "jtracer/texture.hpp"
@@ -62,6 +63,15 @@ Expected<Image8> read_image(const std::filesystem::path& path) {
     const bool bmp = bytes->size() >= 2 && (*bytes)[0] == 'B' && (*bytes)[1] == 'M';
     // Neither signature: what the name says decides which reader explains why.
     const bool named_bmp = format_named_by(path) == ImageFormat::bmp;
+    // Neither a BMP nor a PNG, and a format that tells itself: named.
+    if (!bmp && !has_png_signature(*bytes)) {
+        const std::string format = bytes->size() >= 2 && (*bytes)[0] == 0xFF && (*bytes)[1] == 0xD8
+                                       ? "a JPEG image"
+                                       : format_not_read(*bytes);
+        if (!format.empty())
+            return Error{
+                file_message(path, "it is " + format + ", not a BMP or PNG image: save it as PNG")};
+    }
     Expected<Image8> image = bmp || (named_bmp && !has_png_signature(*bytes))
                                  ? decode_any_bmp(*bytes)
                                  : decode_png(*bytes);

@@ -42,24 +42,6 @@ bool exceeds_cap(std::pair<std::int64_t, std::int64_t> size) {
            size.first * size.second > kMaxTextureTexels;
 }
 
-// The format a picture image maps do not read is in, told by its signature
-// (a TGA by the footer of version 2), or "": stb_image only says "unknown
-// image type" of them.
-std::string format_not_read(std::span<const std::uint8_t> bytes) {
-    const std::string_view text(reinterpret_cast<const char*>(bytes.data()), bytes.size());
-    if (text.starts_with("GIF87a") || text.starts_with("GIF89a")) return "a GIF image";
-    if (text.size() > 2 && text[0] == 'P' && text[1] >= '1' && text[1] <= '7' &&
-        std::isspace(static_cast<unsigned char>(text[2])))
-        return "a Netpbm image (PBM, PGM or PPM)";
-    if (text.starts_with(std::string_view("II*\0", 4)) ||
-        text.starts_with(std::string_view("MM\0*", 4)))
-        return "a TIFF image";
-    if (text.size() >= 12 && text.starts_with("RIFF") && text.substr(8, 4) == "WEBP")
-        return "a WebP image";
-    if (text.ends_with(std::string_view("TRUEVISION-XFILE.\0", 18))) return "a TGA image";
-    return "";
-}
-
 // The header's verdict: "" or why the picture cannot be decoded. JPEGs go to
 // libjpeg-turbo (io/jpeg.hpp), PNGs and BMPs to stb_image, a BMP after its
 // header is read here (io/bmp_header.hpp).
