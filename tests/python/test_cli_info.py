@@ -204,3 +204,20 @@ def test_info_says_normals_are_generated_only_where_smooth_angle_makes_them(tmp_
     assert [m["normals"] for m in json.loads(out)["meshes"]] == ["generated", "none"]
     _, text, _ = run(cli, "info", path)
     assert "normals generated, smooth" in text and "normals none, smooth" in text
+
+
+def test_info_json_of_a_material_named_in_latin1(tmp_path, cli):
+    # An OBJ exported on a Latin-1 system names its material "Matériau" in
+    # bytes that are not UTF-8; --json printed nothing and aborted on it.
+    (tmp_path / "m.mtl").write_bytes(b"newmtl Mat\xe9riau\nKd 1 0 0\n")
+    (tmp_path / "t.obj").write_bytes(
+        b"mtllib m.mtl\nv 0 0 0\nv 1 0 0\nv 0 1 0\nusemtl Mat\xe9riau\nf 1 2 3\n")
+    (tmp_path / "s.jts").write_text(
+        'render_settings { width: 8; height: 8; }\n'
+        'cameras { perspective_camera { position: <0, 0, 5>; look_at: <0, 0, 0>; } }\n'
+        'scene { mesh { file: "t.obj"; materials: "file"; } }\n')
+    done = subprocess.run([str(cli), "info", "--json", str(tmp_path / "s.jts")],
+                          capture_output=True, timeout=60)
+    assert done.returncode == 0, done.stderr
+    parts = json.loads(done.stdout.decode("utf-8"))["meshes"][0]["parts"]
+    assert [p["name"] for p in parts] == ["Mat\ufffdriau"]
