@@ -47,7 +47,11 @@ Expected<json> describe(const Scene& scene) {
                           {"path", m.path.string()},
                           {"triangles", m.triangles},
                           {"vertices", m.vertices},
-                          {"normals", m.file_normals ? "file" : "generated"},
+                          // Without a file's normals or smooth_angle, the
+                          // triangles are shaded flat (docs/language.md 14.4).
+                          {"normals", m.file_normals        ? "file"
+                                      : m.generated_normals ? "generated"
+                                                            : "none"},
                           {"shading", m.shading},
                           {"bbox", box_json(m.world_box)},
                           {"load_seconds", m.load_seconds},
@@ -246,7 +250,9 @@ int run_info_command(int argc, char** argv) {
         return exit_io_error;
     }
     if (json_output)
-        std::cout << description->dump() << "\n";
+        // Paths are bytes, not always UTF-8 (a folder named in Latin-1): such a
+        // byte is replaced (U+FFFD) rather than thrown at.
+        std::cout << description->dump(-1, ' ', false, json::error_handler_t::replace) << "\n";
     else
         print_text(*description);
     return exit_ok;

@@ -1,4 +1,5 @@
 # jtracer.load / parse / check, SceneError and the scene's read-only views.
+import os
 import re
 
 import jtracer
@@ -302,3 +303,21 @@ def test_a_scene_without_a_size_loads_and_renders_at_the_size_asked(tmp_path, cl
         "Scene.render()"]
     with pytest.raises(jtracer.SceneError, match="radius"):
         jtracer.parse(SIZELESS.replace("sphere {", "sphere { radius: -1;"))
+
+
+def test_a_folder_named_in_latin1_gives_the_errors_not_a_decoding_failure(tmp_path):
+    # A path is bytes; a folder from another system (Latin-1 "modèles") is not
+    # UTF-8. Its scene's errors are a SceneError and check's list, the file
+    # named as os.fsdecode names it; an unreadable image there is an OSError.
+    folder = tmp_path / os.fsdecode(b"mod\xe8les")
+    folder.mkdir()
+    scene = folder / "bad.jts"
+    scene.write_text('scene { mesh { file: "gone.obj"; } }\n')
+    with pytest.raises(jtracer.SceneError) as raised:
+        jtracer.load(scene)
+    missing = [d for d in raised.value.diagnostics if "gone.obj" in d.message]
+    assert len(missing) == 1 and missing[0].file == str(scene)
+    assert "gone.obj" in str(raised.value) and "gone.obj" in repr(missing[0])
+    assert any("gone.obj" in d.message for d in jtracer.check(scene))
+    with pytest.raises(OSError, match="gone.png"):
+        jtracer.read_image(folder / "gone.png")

@@ -66,6 +66,7 @@ MeshInfo mesh_info(const Scene& scene, const Primitive& primitive, const Mesh& m
     info.triangles = model.triangles.size();
     info.vertices = model.positions.size();
     info.file_normals = has_normals(model);
+    info.generated_normals = mesh.shading == kSmoothShading && mesh.smooth_angle.has_value();
     info.shading = mesh.shading;
     info.materials = mesh.materials;
     info.parts = mesh_parts(model);
