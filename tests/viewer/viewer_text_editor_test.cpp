@@ -460,6 +460,44 @@ TEST_F(ViewerTextEditor, LineNumbersStayWhenTheTextScrollsSideways) {
     EXPECT_GT(number_pixels, 5) << "the number 10 is there";
 }
 
+// The view kept its scroll from file to file: another file opened after
+// typing at the end of a long line (or far down) showed cut off at the
+// left, its first lines out of view.
+TEST_F(ViewerTextEditor, AnotherFileOpensScrolledToItsStart) {
+    viewer.frame(state);
+    const TextEditorState& editor = viewer.text_editor();
+    const float x = editor.line1_x, y = editor.line1_y;
+    const std::string comment = "# " + std::string(300, 'w');
+    std::string text = original;
+    text.insert(offset_of(text, 10, 1), comment);
+    write_file(file, text);
+    ASSERT_TRUE(viewer.run_until_loaded(state));
+    viewer.frame(state);
+    put_cursor(10, static_cast<int>(comment.size()) + 1);
+    std::vector<KeyEvent> events;
+    type(events, "x");
+    viewer.key_events(state, events, 40.0, 16.0);
+    viewer.frame(state);
+    viewer.frame(state);
+    ASSERT_LT(editor.line1_x, x) << "scrolled sideways";
+
+    const fs::path other = file.parent_path() / "other.jts";
+    write_file(other, original);
+    events.clear();
+    tap(events, keys::escape);  // out of the text, as a click on the Open field is
+    viewer.key_events(state, events, 40.0, 16.0);
+    viewer.frame(state);
+    request_open_guarded(state, other);
+    ASSERT_TRUE(state.files.unsaved_prompt) << "the typed x";
+    resolve_unsaved(state, UnsavedChoice::discard);
+    ASSERT_TRUE(viewer.run_until_loaded(state));
+    ASSERT_EQ(state.doc.path, other) << state.message;
+    viewer.frame(state);
+    viewer.frame(state);
+    EXPECT_EQ(editor.line1_x, x) << "the other file from its first column";
+    EXPECT_EQ(editor.line1_y, y) << "and its first line";
+}
+
 // While the text was being edited (after every keystroke,
 // until its check a quarter second later, and as long as it has errors) a
 // two-line note stood above the Camera panel: the sidebar under the mouse

@@ -451,6 +451,13 @@ void text_editor(AppState& state, TextEditorState& ed, float x0, float y0, float
     const float gutter = ImGui::CalcTextSize(widest).x + ImGui::CalcTextSize("  ").x;
     ImGui::BeginChild("##scroll", ImVec2(0, editor_height), true,
                       ImGuiWindowFlags_HorizontalScrollbar);
+    // One view for every file: another file shown (opened, or an included
+    // one) would keep the scroll of the one before, cut off at the left.
+    if (std::string viewed = doc.path.string() + '\n' + ed.shown_file; viewed != ed.scrolled_for) {
+        ed.scrolled_for = std::move(viewed);
+        ImGui::SetScrollX(0.0f);
+        ImGui::SetScrollY(0.0f);
+    }
     // Each file in a widget of its own: ImGui keeps a widget's undo history
     // while it is active, and one file's must never apply to another's text.
     ImGui::PushID(ed.shown_file.c_str());
