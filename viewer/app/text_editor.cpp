@@ -453,8 +453,9 @@ void text_editor(AppState& state, TextEditorState& ed, float x0, float y0, float
                       ImGuiWindowFlags_HorizontalScrollbar);
     // One view for every file: another file shown (opened, or an included
     // one) would keep the scroll of the one before, cut off at the left.
-    if (std::string viewed = doc.path.string() + '\n' + ed.shown_file; viewed != ed.scrolled_for) {
-        ed.scrolled_for = std::move(viewed);
+    if (doc.path.native() != ed.scrolled_path || ed.shown_file != ed.scrolled_file) {
+        ed.scrolled_path = doc.path.native();
+        ed.scrolled_file = ed.shown_file;
         ImGui::SetScrollX(0.0f);
         ImGui::SetScrollY(0.0f);
     }
