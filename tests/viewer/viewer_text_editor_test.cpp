@@ -422,6 +422,82 @@ TEST_F(ViewerTextEditor, TheViewFollowsTheCursorSidewaysAndLongErrorsWrap) {
     EXPECT_LE(item->rect.x1, window->rect.x1);
 }
 
+// The line numbers were drawn in the text's place, so with the cursor at
+// the end of a long line (the view scrolled sideways) they scrolled out of
+// view and the line's text showed in their column instead.
+TEST_F(ViewerTextEditor, LineNumbersStayWhenTheTextScrollsSideways) {
+    const std::string comment = "# " + std::string(300, 'w');
+    std::string text = original;
+    text.insert(offset_of(text, 10, 1), comment);
+    write_file(file, text);
+    ASSERT_TRUE(viewer.run_until_loaded(state));
+    viewer.frame(state);
+    ASSERT_EQ(viewer.text_editor().buffer, text);
+    put_cursor(10, static_cast<int>(comment.size()) + 1);
+    std::vector<KeyEvent> events;
+    type(events, "x");
+    viewer.key_events(state, events, 40.0, 16.0);
+    viewer.frame(state);
+    viewer.frame(state);
+    const UiItem* window = find_item(viewer.ui_items(), "text editor");
+    ASSERT_NE(window, nullptr);
+    const TextEditorState& editor = viewer.text_editor();
+    ASSERT_LT(editor.line1_x, window->rect.x0) << "the view scrolled sideways";
+    // Line 10's row, from the editor's left edge across the numbers' column
+    // (two digits and two spaces of the monospace font).
+    const Image8 screen = viewer.screenshot();
+    const float char_w = editor.line_height * 0.5f;
+    const int y0 = static_cast<int>(editor.line1_y + 9.0f * editor.line_height) + 1;
+    const int x0 = static_cast<int>(window->rect.x0) + 2;
+    int number_pixels = 0, text_pixels = 0;
+    for (int y = y0; y < y0 + static_cast<int>(editor.line_height) - 1; ++y)
+        for (int x = x0; x < x0 + static_cast<int>(char_w * 5.0f); ++x) {
+            const std::uint8_t* p = screen.pixel(x, screen.height - 1 - y);
+            text_pixels += p[0] > 200;  // the text's white
+            number_pixels += p[0] > 90 && p[0] <= 200 && p[0] == p[1] && p[1] == p[2];
+        }
+    EXPECT_EQ(text_pixels, 0) << "no text under the numbers";
+    EXPECT_GT(number_pixels, 5) << "the number 10 is there";
+}
+
+// The view kept its scroll from file to file: another file opened after
+// typing at the end of a long line (or far down) showed cut off at the
+// left, its first lines out of view.
+TEST_F(ViewerTextEditor, AnotherFileOpensScrolledToItsStart) {
+    viewer.frame(state);
+    const TextEditorState& editor = viewer.text_editor();
+    const float x = editor.line1_x, y = editor.line1_y;
+    const std::string comment = "# " + std::string(300, 'w');
+    std::string text = original;
+    text.insert(offset_of(text, 10, 1), comment);
+    write_file(file, text);
+    ASSERT_TRUE(viewer.run_until_loaded(state));
+    viewer.frame(state);
+    put_cursor(10, static_cast<int>(comment.size()) + 1);
+    std::vector<KeyEvent> events;
+    type(events, "x");
+    viewer.key_events(state, events, 40.0, 16.0);
+    viewer.frame(state);
+    viewer.frame(state);
+    ASSERT_LT(editor.line1_x, x) << "scrolled sideways";
+
+    const fs::path other = file.parent_path() / "other.jts";
+    write_file(other, original);
+    events.clear();
+    tap(events, keys::escape);  // out of the text, as a click on the Open field is
+    viewer.key_events(state, events, 40.0, 16.0);
+    viewer.frame(state);
+    request_open_guarded(state, other);
+    ASSERT_TRUE(state.files.unsaved_prompt) << "the typed x";
+    resolve_unsaved(state, UnsavedChoice::discard);
+    ASSERT_TRUE(viewer.run_until_loaded(state));
+    ASSERT_EQ(state.doc.path, other) << state.message;
+    viewer.frame(state);
+    viewer.frame(state);
+    EXPECT_EQ(editor.line1_x, x) << "the other file from its first column";
+    EXPECT_EQ(editor.line1_y, y) << "and its first line";
+}
+
 // While the text was being edited (after every keystroke,
 // until its check a quarter second later, and as long as it has errors) a
 // two-line note stood above the Camera panel: the sidebar under the mouse
