@@ -47,11 +47,7 @@ Expected<json> describe(const Scene& scene) {
                           {"path", m.path.string()},
                           {"triangles", m.triangles},
                           {"vertices", m.vertices},
-                          // Without a file's normals or smooth_angle, the
-                          // triangles are shaded flat (docs/language.md 14.4).
-                          {"normals", m.file_normals        ? "file"
-                                      : m.generated_normals ? "generated"
-                                                            : "none"},
+                          {"normals", m.normals},
                           {"shading", m.shading},
                           {"bbox", box_json(m.world_box)},
                           {"load_seconds", m.load_seconds},
