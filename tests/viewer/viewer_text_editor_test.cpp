@@ -80,6 +80,24 @@ class ViewerTextEditor : public ::testing::Test {
                   offset_of(viewer.text_editor().buffer, line, column));
     }
     std::string text() const { return document_text(state.doc); }
+    // Writes a 302-character comment at the start of line 10 to the file,
+    // reloads it and types an x at the comment's end, where the view has
+    // scrolled sideways.
+    void type_at_the_end_of_a_long_line() {
+        const std::string comment = "# " + std::string(300, 'w');
+        std::string written = original;
+        written.insert(offset_of(written, 10, 1), comment);
+        write_file(file, written);
+        EXPECT_TRUE(viewer.run_until_loaded(state));
+        viewer.frame(state);
+        EXPECT_EQ(viewer.text_editor().buffer, written);
+        put_cursor(10, static_cast<int>(comment.size()) + 1);
+        std::vector<KeyEvent> events;
+        type(events, "x");
+        viewer.key_events(state, events, 40.0, 16.0);
+        viewer.frame(state);
+        viewer.frame(state);
+    }
 
     HeadlessViewer viewer{1200, 700};
     AppState state{test_config()};
@@ -426,19 +444,7 @@ TEST_F(ViewerTextEditor, TheViewFollowsTheCursorSidewaysAndLongErrorsWrap) {
 // the end of a long line (the view scrolled sideways) they scrolled out of
 // view and the line's text showed in their column instead.
 TEST_F(ViewerTextEditor, LineNumbersStayWhenTheTextScrollsSideways) {
-    const std::string comment = "# " + std::string(300, 'w');
-    std::string text = original;
-    text.insert(offset_of(text, 10, 1), comment);
-    write_file(file, text);
-    ASSERT_TRUE(viewer.run_until_loaded(state));
-    viewer.frame(state);
-    ASSERT_EQ(viewer.text_editor().buffer, text);
-    put_cursor(10, static_cast<int>(comment.size()) + 1);
-    std::vector<KeyEvent> events;
-    type(events, "x");
-    viewer.key_events(state, events, 40.0, 16.0);
-    viewer.frame(state);
-    viewer.frame(state);
+    type_at_the_end_of_a_long_line();
     const UiItem* window = find_item(viewer.ui_items(), "text editor");
     ASSERT_NE(window, nullptr);
     const TextEditorState& editor = viewer.text_editor();
@@ -467,23 +473,12 @@ TEST_F(ViewerTextEditor, AnotherFileOpensScrolledToItsStart) {
     viewer.frame(state);
     const TextEditorState& editor = viewer.text_editor();
     const float x = editor.line1_x, y = editor.line1_y;
-    const std::string comment = "# " + std::string(300, 'w');
-    std::string text = original;
-    text.insert(offset_of(text, 10, 1), comment);
-    write_file(file, text);
-    ASSERT_TRUE(viewer.run_until_loaded(state));
-    viewer.frame(state);
-    put_cursor(10, static_cast<int>(comment.size()) + 1);
-    std::vector<KeyEvent> events;
-    type(events, "x");
-    viewer.key_events(state, events, 40.0, 16.0);
-    viewer.frame(state);
-    viewer.frame(state);
+    type_at_the_end_of_a_long_line();
     ASSERT_LT(editor.line1_x, x) << "scrolled sideways";
 
     const fs::path other = file.parent_path() / "other.jts";
     write_file(other, original);
-    events.clear();
+    std::vector<KeyEvent> events;
     tap(events, keys::escape);  // out of the text, as a click on the Open field is
     viewer.key_events(state, events, 40.0, 16.0);
     viewer.frame(state);
