@@ -5,6 +5,7 @@
 #include <nlohmann/json.hpp>
 
 #include <cmath>
+#include <cstdint>
 #include <cstdio>
 #include <span>
 
@@ -21,12 +22,55 @@ nlohmann::json image_json(const std::string& path, const std::optional<ImageSize
     return image;
 }
 
+// The length of the UTF-8 sequence of a character XML 1.0 allows that starts
+// at text[at], or 0 when the bytes there are no such sequence (a Latin-1 file
+// name, a cut sequence, an overlong form, a surrogate, U+FFFE or U+FFFF).
+std::size_t xml_character_length(const std::string& text, std::size_t at) {
+    const auto byte = [&](std::size_t i) { return static_cast<unsigned char>(text[i]); };
+    const unsigned char lead = byte(at);
+    if (lead < 0x80) return 1;
+    std::size_t length = 0;
+    std::uint32_t code = 0;
+    if (lead >= 0xC2 && lead <= 0xDF) {
+        length = 2;
+        code = lead & 0x1Fu;
+    } else if (lead >= 0xE0 && lead <= 0xEF) {
+        length = 3;
+        code = lead & 0x0Fu;
+    } else if (lead >= 0xF0 && lead <= 0xF4) {
+        length = 4;
+        code = lead & 0x07u;
+    } else {
+        return 0;
+    }
+    if (text.size() - at < length) return 0;
+    for (std::size_t i = 1; i < length; ++i) {
+        if ((byte(at + i) & 0xC0u) != 0x80u) return 0;
+        code = (code << 6) | (byte(at + i) & 0x3Fu);
+    }
+    const std::uint32_t least[] = {0, 0, 0x80, 0x800, 0x10000};
+    if (code < least[length] || code > 0x10FFFF || (code >= 0xD800 && code <= 0xDFFF) ||
+        code == 0xFFFE || code == 0xFFFF)
+        return 0;
+    return length;
+}
+
 // Text for XML attributes and content: the five special characters escaped,
-// and control characters other than tab and newline (not allowed in XML 1.0)
-// replaced.
+// and what XML 1.0 does not allow in a UTF-8 file replaced: control
+// characters other than tab and newline by '?', each byte that is not UTF-8 by
+// U+FFFD (as the JSON has it), so that a CI system's parser reads the report
+// whatever bytes a file name holds.
 std::string xml_text(const std::string& text) {
     std::string out;
-    for (char c : text) {
+    for (std::size_t at = 0; at < text.size();) {
+        const char c = text[at];
+        if (static_cast<unsigned char>(c) >= 0x80) {
+            const std::size_t length = xml_character_length(text, at);
+            out += length ? text.substr(at, length) : std::string("\xEF\xBF\xBD");
+            at += length ? length : 1;
+            continue;
+        }
+        ++at;
         switch (c) {
             case '&':
                 out += "&amp;";
@@ -107,7 +151,8 @@ std::string comparison_json(const ComparisonReport& r) {
         }
     }
     if (r.verdict == Verdict::error) out["error"] = r.error;
-    return out.dump();
+    // Paths are bytes, not always UTF-8 (a Latin-1 name): replaced, not thrown.
+    return out.dump(-1, ' ', false, nlohmann::json::error_handler_t::replace);
 }
 
 Expected<void> write_junit(const std::filesystem::path& path, const ComparisonReport& r,
@@ -137,6 +182,7 @@ Expected<void> write_junit(const std::filesystem::path& path, const ComparisonRe
     if (!r.heat_map_path.empty()) out += "the differences are in " + r.heat_map_path + "\n";
     if (r.verdict == Verdict::updated) out += "updated " + r.expected_path + " with the render\n";
     xml += "      <system-out>" + xml_text(out) + "</system-out>\n";
+    if (!r.log.empty()) xml += "      <system-err>" + xml_text(r.log) + "</system-err>\n";
     xml += "    </testcase>\n  </testsuite>\n</testsuites>\n";
     const auto* bytes = reinterpret_cast<const std::uint8_t*>(xml.data());
     return write_file_atomically(path, std::span(bytes, xml.size()));

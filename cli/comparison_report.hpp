@@ -37,6 +37,7 @@ struct ComparisonReport {
     std::string heat_map_path;  // the heat map written, or empty
     std::string error;          // with Verdict::error: what went wrong
     std::string text;           // the figures as the text report prints them
+    std::string log;            // what the program printed on stderr, or empty
     double seconds = 0.0;       // what the comparison (or the render and it) took
 };
 

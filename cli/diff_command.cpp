@@ -301,7 +301,28 @@ int check_expected(const Image8& render, const std::string& render_path,
     return finish(exit_outside_tolerance);
 }
 
-int record_failed_render(const ExpectOptions& expect, int code) {
+namespace {
+
+// The line of `messages` a CI page should show for a failed render: the
+// first error, else the last line printed.
+std::string first_error(const std::string& messages) {
+    std::string last;
+    std::size_t start = 0;
+    while (start < messages.size()) {
+        std::size_t end = messages.find('\n', start);
+        if (end == std::string::npos) end = messages.size();
+        const std::string line = messages.substr(start, end - start);
+        if (line.find(": error: ") != std::string::npos || line.rfind("jtracer-cli: ", 0) == 0)
+            return line;
+        if (!line.empty()) last = line;
+        start = end + 1;
+    }
+    return last;
+}
+
+}  // namespace
+
+int record_failed_render(const ExpectOptions& expect, int code, const std::string& messages) {
     if (!expect.junit) return code;
     ComparisonReport r;
     r.name = expect.scene_path;
@@ -310,7 +331,9 @@ int record_failed_render(const ExpectOptions& expect, int code) {
     r.max_percent = expect.tolerance.max_percent;
     r.verdict = Verdict::error;
     r.error = "the render failed (jtracer-cli exit code " + std::to_string(code) +
-              "), so it was not compared; its messages are on stderr";
+              "), so it was not compared";
+    if (const std::string line = first_error(messages); !line.empty()) r.error += ": " + line;
+    r.log = messages;
     return junit_written(expect.junit, r, kExpectSuite, "jtracer-cli") ? code : exit_io_error;
 }
 

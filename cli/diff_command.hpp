@@ -57,8 +57,9 @@ int check_expected(const Image8& render, const std::string& render_path,
                    const ExpectOptions& expect, double seconds);
 
 // --expect --junit when the render failed before any comparison (exit code
-// `code`): the test case in error. Returns `code`, or 3 when the file could
-// not be written.
-int record_failed_render(const ExpectOptions& expect, int code);
+// `code`): the test case in error, its message naming the first error in
+// `messages` (what the run printed on stderr), which the report keeps whole.
+// Returns `code`, or 3 when the file could not be written.
+int record_failed_render(const ExpectOptions& expect, int code, const std::string& messages);
 
 }  // namespace jt::cli

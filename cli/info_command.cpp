@@ -47,7 +47,7 @@ Expected<json> describe(const Scene& scene) {
                           {"path", m.path.string()},
                           {"triangles", m.triangles},
                           {"vertices", m.vertices},
-                          {"normals", m.file_normals ? "file" : "generated"},
+                          {"normals", m.normals},
                           {"shading", m.shading},
                           {"bbox", box_json(m.world_box)},
                           {"load_seconds", m.load_seconds},
@@ -235,9 +235,7 @@ int run_info_command(int argc, char** argv) {
         *loaded, {.validation = {.run_chunks = parallel_chunks(), .primitives_as_parsed = true}});
     // The image's size is a render's to set (--width, --height), and info,
     // which takes neither, describes the scene whatever size it renders at.
-    std::erase_if(diagnostics, [](const Diagnostic& d) {
-        return d.setting == "width" || d.setting == "height";
-    });
+    std::erase_if(diagnostics, asks_for_frame_size);
     if (has_errors(diagnostics)) {
         std::cerr << format_diagnostics(diagnostics, *loaded);
         return exit_scene_error;
@@ -248,7 +246,9 @@ int run_info_command(int argc, char** argv) {
         return exit_io_error;
     }
     if (json_output)
-        std::cout << description->dump() << "\n";
+        // Paths are bytes, not always UTF-8 (a folder named in Latin-1): such a
+        // byte is replaced (U+FFFD) rather than thrown at.
+        std::cout << description->dump(-1, ' ', false, json::error_handler_t::replace) << "\n";
     else
         print_text(*description);
     return exit_ok;

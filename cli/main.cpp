@@ -20,12 +20,50 @@
 #include <exception>
 #include <iostream>
 #include <new>
+#include <optional>
+#include <streambuf>
+#include <string>
+#include <string_view>
 #include <utility>
 
 namespace {
 
 using namespace jt::cli;
 using namespace jt::frontend;
+
+// Keeps a copy of what is written to std::cerr while it lives, so that
+// --expect --junit can put a failed render's messages into the report that a
+// CI page shows, where stderr is a log few open. The copy stops growing at a
+// size no scene's messages reach.
+class StderrCopy : public std::streambuf {
+  public:
+    StderrCopy() : stderr_(std::cerr.rdbuf(this)) {}
+    ~StderrCopy() override { std::cerr.rdbuf(stderr_); }
+    StderrCopy(const StderrCopy&) = delete;
+    StderrCopy& operator=(const StderrCopy&) = delete;
+    const std::string& text() const { return copy_; }
+
+  protected:
+    int overflow(int c) override {
+        if (c == traits_type::eof()) return traits_type::not_eof(c);
+        const char ch = static_cast<char>(c);
+        keep(std::string_view(&ch, 1));
+        return stderr_->sputc(ch);
+    }
+    std::streamsize xsputn(const char* s, std::streamsize n) override {
+        keep(std::string_view(s, static_cast<std::size_t>(n)));
+        return stderr_->sputn(s, n);
+    }
+    int sync() override { return stderr_->pubsync(); }
+
+  private:
+    static constexpr std::size_t kKept = 1 << 20;
+    void keep(std::string_view text) {
+        copy_.append(text.substr(0, kKept - std::min(kKept, copy_.size())));
+    }
+    std::streambuf* stderr_;
+    std::string copy_;
+};
 
 ExpectOptions expect_options(const Options& o) {
     return {o.expect.value_or(""), o.tolerance, o.update, o.junit, o.scene_path, o.quiet};
@@ -37,6 +75,10 @@ int run(const Options& o, bool& compared) {
     FrameSetup setup = set_up_frame("jtracer-cli", o, o.region);
     std::cerr << setup.message;
     if (setup.exit_code != exit_ok) return setup.exit_code;
+    if (std::optional<std::string> refused = region_output_refusal(o, setup.output)) {
+        std::cerr << *refused;
+        return exit_usage;
+    }
     if (o.check_only) {
         if (!o.quiet) std::cerr << o.scene_path << ": no errors\n";
         return exit_ok;
@@ -109,10 +151,20 @@ int main(int argc, char** argv) {
     const Options& o = parsed.options;
     bool compared = false;
     int code = exit_io_error;
+    std::optional<StderrCopy> messages;
+    if (o.expect && o.junit) messages.emplace();
     try {
         if (o.list_cameras) return list_cameras(o.scene_path);
         if (o.list_defines) return list_defines(o.scene_path);
         if (o.frames) return run_sequence(o);
+        // A report that cannot be written is found before the render, as an
+        // output is: a CI job without its report folder learns it at once.
+        if (o.expect && o.junit)
+            if (jt::Expected<void> writable = jt::check_atomic_write(*o.junit); !writable) {
+                std::cerr << "jtracer-cli: --junit: " << writable.error().message
+                          << "; nothing was rendered\n";
+                return exit_io_error;
+            }
         code = run(o, compared);
     } catch (const std::bad_alloc&) {
         std::cerr << "jtracer-cli: out of memory (the scene or the image is too large for the "
@@ -122,6 +174,6 @@ int main(int argc, char** argv) {
     }
     // --expect --junit: a render that failed is a test case in error.
     if (o.expect && !compared && code != exit_ok)
-        return record_failed_render(expect_options(o), code);
+        return record_failed_render(expect_options(o), code, messages ? messages->text() : "");
     return code;
 }

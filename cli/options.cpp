@@ -2,6 +2,7 @@
 
 #include "jtracer/frontend/frame_file_name.hpp"
 #include "jtracer/image_file.hpp"
+#include "jtracer/scene_file.hpp"
 
 #include <CLI/CLI.hpp>
 
@@ -12,6 +13,15 @@
 #include <iostream>
 
 namespace jt::cli {
+
+namespace {
+
+// Why --region-output takes no other name than a BMP's, for both ways of
+// naming its file.
+constexpr std::string_view kRegionFileIsBmp =
+    "writes a BMP (its placement record lives in the BMP)";
+
+}  // namespace
 
 std::optional<std::string> file_clash(const Options& o, const std::string& output) {
     using frontend::same_file;
@@ -56,9 +66,9 @@ std::string format_warning(const Options& o, const std::string& output) {
     if (!o.output && (ext == ".png" || other))
         return "jtracer-cli: warning: the scene's filename '" + output +
                "' is written as a BMP, as the scene's filename always is" +
-               (ext != ".png" || o.region_output ? ""
-                : o.frames                       ? "; an -o name ending in .png writes PNGs"
-                                                 : "; -o " + output + " writes a PNG") +
+               (ext != ".png" ? ""
+                : o.frames    ? "; an -o name ending in .png writes PNGs"
+                              : "; -o " + output + " writes a PNG") +
                "\n";
     if (o.output && other)
         return "jtracer-cli: warning: -o/--output '" + output +
@@ -71,6 +81,23 @@ std::string format_warning(const Options& o, const std::string& output) {
                "' has a frame number field, but without --frames N one image is written under "
                "that very name\n";
     return {};
+}
+
+std::optional<std::string> region_output_refusal(const Options& o, const std::string& output) {
+    if (!o.region_output || o.output || format_from_extension(output) == ImageFormat::bmp)
+        return std::nullopt;
+    const std::string message = "--region-output " + std::string(kRegionFileIsBmp) +
+                                ": name the scene's filename .bmp, or the output with -o";
+    // The scene was read without its source map: read again to say where.
+    ParseOptions options = frontend::parse_options_for(o);
+    options.source_map = true;
+    const Expected<LoadedScene> loaded = load_scene_file(o.scene_path, options);
+    if (!loaded) return "jtracer-cli: " + message + "\n";
+    SourcePos at;
+    if (const std::optional<BlockSource>& block = loaded->parsed.source.render_settings)
+        for (const PropertySource& p : properties_of(loaded->parsed.source, *block))
+            if (p.name == "filename") at = p.value_span.pos;  // the last one is in effect
+    return format_diagnostics({Diagnostic{Severity::error, at, message}}, *loaded);
 }
 
 ParsedOptions parse_options(int argc, char** argv) {
@@ -143,8 +170,7 @@ ParsedOptions parse_options(int argc, char** argv) {
         if (o.region_output && o.output &&
             jt::format_from_extension(*o.output) != jt::ImageFormat::bmp)
             throw CLI::ValidationError("--region-output",
-                                       "writes a BMP (its placement record lives in the BMP); "
-                                       "name the output .bmp");
+                                       std::string(kRegionFileIsBmp) + "; name the output .bmp");
         if (o.expect && (o.region || o.check_only))
             throw CLI::ValidationError("--expect",
                                        "compares a whole render: not with --region "

@@ -50,4 +50,10 @@ std::optional<std::string> file_clash(const Options& o, const std::string& outpu
 // and upload forms trust the name and refuse such a file.
 std::string format_warning(const Options& o, const std::string& output);
 
+// The error (or nothing) for a region file (--region-output, always a BMP)
+// under the scene's filename `output` when that names another format: refused
+// as `-o part.png --region-output` is (parse_options), and located at the
+// scene's filename, which the user must change.
+std::optional<std::string> region_output_refusal(const Options& o, const std::string& output);
+
 }  // namespace jt::cli

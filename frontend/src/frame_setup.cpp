@@ -14,8 +14,8 @@ Expected<void> apply_overrides(const RenderFlags& flags, Scene& scene) {
     if (flags.samples) scene.settings.samples = *flags.samples;
     if (flags.camera) {
         if (find_camera(scene, *flags.camera) < 0)
-            return Error{"--camera: the scene has no camera named \"" + *flags.camera +
-                         "\" (its cameras: " + camera_names(scene) + ")"};
+            return Error{flags.names.name("camera") + ": the scene has no camera named \"" +
+                         *flags.camera + "\" (its cameras: " + camera_names(scene) + ")"};
         scene.settings.active_camera = *flags.camera;
     }
     return {};
@@ -85,9 +85,10 @@ FrameSetup set_up_loaded(std::string_view program, const RenderFlags& flags, Loa
     if (const RenderSettings& s = loaded.parsed.scene.settings; (flags.width || flags.height) &&
                                                                 s.width > 0 && s.height > 0 &&
                                                                 !fits_in_bmp(s.width, s.height)) {
-        const std::string flag = flags.width && flags.height ? "--width/--height"
-                                 : flags.width               ? "--width"
-                                                             : "--height";
+        // "--width", "--height" or "--width/--height": what was given.
+        std::string flag = flags.width ? flags.names.name("width") : "";
+        if (flags.width && flags.height) flag += '/';
+        if (flags.height) flag += flags.names.name("height");
         return fail(exit_usage, flag + ": a " + std::to_string(s.width) + " x " +
                                     std::to_string(s.height) +
                                     " image does not fit in a BMP file (4 GiB at most), the "
@@ -98,7 +99,7 @@ FrameSetup set_up_loaded(std::string_view program, const RenderFlags& flags, Loa
         check_scene(loaded, {.locate_warnings = !flags.quiet,
                              .validation = {.run_chunks = parallel_chunks(flags.threads),
                                             .primitives_as_parsed = as_parsed}});
-    name_setting_flags(diagnostics);
+    name_setting_flags(diagnostics, flags.names);
     const bool errors = has_errors(diagnostics);
     if (flags.quiet && !errors) diagnostics.clear();  // quiet drops warnings, never errors
     setup.message = format_diagnostics(diagnostics, loaded);
@@ -115,7 +116,7 @@ FrameSetup set_up_loaded(std::string_view program, const RenderFlags& flags, Loa
         if (Expected<void> inside =
                 check_region_in_frame(*region, setup.render.width, setup.render.height);
             !inside)
-            return fail(exit_usage, "--region: " + inside.error().message);
+            return fail(exit_usage, flags.names.name("region") + ": " + inside.error().message);
         setup.render.region = to_image_rect(*region, setup.render.height);
     }
     // The manual's rule: the scene's filename always yields a BMP; only a name

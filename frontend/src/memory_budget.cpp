@@ -54,15 +54,17 @@ std::uint64_t available_memory_bytes() {
     return available;
 }
 
-Expected<void> check_render_memory(const RenderOptions& options, bool region_output) {
+Expected<void> check_render_memory(const RenderOptions& options, bool region_output,
+                                   const ArgumentNames& names) {
     const std::uint64_t needed = render_memory_bytes(options, region_output);
     const std::uint64_t available = available_memory_bytes();
     if (available == 0 || needed <= available) return {};
     std::ostringstream message;
     message << "a " << options.width << " x " << options.height << " image with " << options.samples
             << (options.samples == 1 ? " sample" : " samples") << " needs about " << gib(needed)
-            << " of memory, more than the " << gib(available)
-            << " available; choose a smaller --width/--height or fewer --samples";
+            << " of memory, more than the " << gib(available) << " available; choose a smaller "
+            << names.name("width") << "/" << names.name("height") << " or fewer "
+            << names.name("samples");
     return Error{message.str()};
 }
 

@@ -92,7 +92,7 @@ void add_scene_value_flags(CLI::App& app, std::vector<std::string>& defines,
                    "then ignored)")
         ->check(CLI::Validator(
             [](std::string& argument) -> std::string {
-                Expected<Define> define = parse_define(argument);
+                Expected<Define> define = parse_define(argument, ArgumentNames{}.values);
                 return define ? std::string() : define.error().message;
             },
             "NAME=VALUE"))
@@ -114,6 +114,7 @@ void add_scene_value_flags(CLI::App& app, std::vector<std::string>& defines,
 
 ParseOptions parse_options_for(const RenderFlags& flags) {
     ParseOptions options = scene_value_options(flags.defines, flags.clock);
+    options.value_names = flags.names.values;
     options.source_map = false;
     options.threads = static_cast<unsigned>(flags.threads);
     return options;
@@ -125,15 +126,15 @@ ParseOptions scene_value_options(const std::vector<std::string>& defines,
     for (const std::string& argument : defines)
         if (Expected<Define> define = parse_define(argument)) options.defines.push_back(*define);
     options.clock = clock.value_or(0.0);
+    options.value_names = ArgumentNames{}.values;
     return options;
 }
 
-void name_setting_flags(std::vector<Diagnostic>& diagnostics) {
-    for (Diagnostic& d : diagnostics) {
-        if (d.setting == "width" || d.setting == "height" || d.setting == "samples") {
-            d.message.append(" or pass --").append(d.setting);
-        }
-    }
+void name_setting_flags(std::vector<Diagnostic>& diagnostics, const ArgumentNames& names) {
+    // The settings a renderer's user can set beside the file.
+    for (Diagnostic& d : diagnostics)
+        if (d.setting == "width" || d.setting == "height" || d.setting == "samples")
+            d.message.append(" or pass ").append(names.name(d.setting)).append(names.after_pass);
 }
 
 }  // namespace jt::frontend

@@ -5,6 +5,7 @@
 // between Python objects and the core's types.
 
 #include "jtracer/diagnostics.hpp"
+#include "jtracer/frontend/argument_names.hpp"
 #include "jtracer/image.hpp"
 #include "jtracer/render_job.hpp"
 #include "jtracer/scene_file.hpp"
@@ -33,15 +34,15 @@ py::list diagnostic_list(const std::vector<Diagnostic>& diagnostics, const Loade
 [[noreturn]] void raise_scene_error(const std::string& message,
                                     const std::vector<Diagnostic>& diagnostics,
                                     const LoadedScene& loaded);
-// A core or front-end message with the command line's flags named as this
-// module's arguments: "width", not "--width"; "set by defines", not "set by
-// --define".
-std::string with_argument_names(std::string text);
-// The hint of a diagnostic that asks for a render setting, in Python's words:
-// "... or pass width= to Scene.render()" where jtracer-cli says "--width".
-// Diagnostics already named for the command line are renamed, and every
-// message named as with_argument_names does.
-void name_render_arguments(std::vector<Diagnostic>& diagnostics);
+// How the core's and the front end's messages name this module's arguments:
+// "width", not "--width"; "set by defines", not "set by --define"; "... or
+// pass width= to Scene.render()".
+inline const frontend::ArgumentNames python_names = {.values = {.defines = "defines",
+                                                                .define_before = "defines['",
+                                                                .define_after = "']",
+                                                                .clock = "clock="},
+                                                     .prefix = "",
+                                                     .after_pass = "= to Scene.render()"};
 // Raises OSError with the core's message ("cannot read 'a.png': no such file").
 [[noreturn]] void raise_os_error(const std::string& message);
 

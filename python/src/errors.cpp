@@ -39,6 +39,23 @@ std::string header_line(const PythonDiagnostic& d) {
 // the process (a module's types are never unloaded).
 PyObject* scene_error_type = nullptr;
 
+// A path is bytes, not always UTF-8 (a folder named in Latin-1), and the
+// messages quote paths: pybind11's strict decoding would turn a scene's
+// errors into a UnicodeDecodeError. A file name decodes as os.fsdecode does
+// (surrogateescape), so that it names the file Python opened; a message with
+// U+FFFD for such a byte, so that it prints.
+py::str decoded(const std::string& text, const char* errors) {
+    PyObject* str = PyUnicode_DecodeUTF8(text.data(), static_cast<Py_ssize_t>(text.size()), errors);
+    if (!str) throw py::error_already_set();
+    return py::reinterpret_steal<py::str>(str);
+}
+py::str file_str(const std::string& file) {
+    return decoded(file, "surrogateescape");
+}
+py::str message_str(const std::string& message) {
+    return decoded(message, "replace");
+}
+
 }  // namespace
 
 py::list diagnostic_list(const std::vector<Diagnostic>& diagnostics, const LoadedScene& loaded) {
@@ -58,40 +75,14 @@ void raise_scene_error(const std::string& message, const std::vector<Diagnostic>
                        const LoadedScene& loaded) {
     std::string text = message;
     if (!text.empty() && text.back() == '\n') text.pop_back();
-    py::object error = py::reinterpret_borrow<py::object>(scene_error_type)(text);
+    py::object error = py::reinterpret_borrow<py::object>(scene_error_type)(message_str(text));
     error.attr("diagnostics") = diagnostic_list(diagnostics, loaded);
     PyErr_SetObject(scene_error_type, error.ptr());
     throw py::error_already_set();
 }
 
-std::string with_argument_names(std::string text) {
-    static constexpr std::pair<std::string_view, std::string_view> renamed[] = {
-        {"set by --define", "set by defines"},
-        {"--define ", "defines: "},
-        {"--width", "width"},
-        {"--height", "height"},
-        {"--samples", "samples"},
-    };
-    for (const auto& [flag, argument] : renamed)
-        for (std::size_t at = text.find(flag); at != std::string::npos;
-             at = text.find(flag, at + argument.size()))
-            text.replace(at, flag.size(), argument);
-    return text;
-}
-
-void name_render_arguments(std::vector<Diagnostic>& diagnostics) {
-    for (Diagnostic& d : diagnostics) {
-        if (d.setting == "width" || d.setting == "height" || d.setting == "samples") {
-            const std::string flag = " or pass --" + std::string(d.setting);
-            if (d.message.ends_with(flag)) d.message.resize(d.message.size() - flag.size());
-            d.message.append(" or pass ").append(d.setting).append("= to Scene.render()");
-        }
-        d.message = with_argument_names(std::move(d.message));
-    }
-}
-
 void raise_os_error(const std::string& message) {
-    PyErr_SetString(PyExc_OSError, message.c_str());
+    PyErr_SetObject(PyExc_OSError, message_str(message).ptr());
     throw py::error_already_set();
 }
 
@@ -108,25 +99,29 @@ void bind_errors(py::module_& m) {
              }),
              py::arg("file"), py::arg("line"), py::arg("column"), py::arg("severity"),
              py::arg("message"))
-        .def_readonly("file", &PythonDiagnostic::file, "The file as it was given")
+        .def_property_readonly(
+            "file", [](const PythonDiagnostic& d) { return file_str(d.file); },
+            "The file as it was given")
         .def_readonly("line", &PythonDiagnostic::line, "1-based; 0 when about the whole file")
         .def_readonly("column", &PythonDiagnostic::column, "1-based, in bytes; 0 with line 0")
         .def_readonly("severity", &PythonDiagnostic::severity,
                       "\"error\", \"warning\" or \"note\" (a --define that replaces a "
                       "definition)")
-        .def_readonly("message", &PythonDiagnostic::message)
-        .def("__str__", &header_line)
+        .def_property_readonly("message",
+                               [](const PythonDiagnostic& d) { return message_str(d.message); })
+        .def("__str__", [](const PythonDiagnostic& d) { return message_str(header_line(d)); })
         .def("__repr__",
              [](const PythonDiagnostic& d) {
-                 return "Diagnostic(file=" + py::repr(py::str(d.file)).cast<std::string>() +
+                 return "Diagnostic(file=" + py::repr(file_str(d.file)).cast<std::string>() +
                         ", line=" + std::to_string(d.line) +
                         ", column=" + std::to_string(d.column) +
                         ", severity=" + py::repr(py::str(d.severity)).cast<std::string>() +
-                        ", message=" + py::repr(py::str(d.message)).cast<std::string>() + ")";
+                        ", message=" + py::repr(message_str(d.message)).cast<std::string>() + ")";
              })
         .def(py::self == py::self)
         .def("__hash__", [](const PythonDiagnostic& d) {
-            return py::hash(py::make_tuple(d.file, d.line, d.column, d.severity, d.message));
+            return py::hash(py::make_tuple(file_str(d.file), d.line, d.column, d.severity,
+                                           message_str(d.message)));
         });
 
     scene_error_type = PyErr_NewExceptionWithDoc(

@@ -75,6 +75,7 @@ frontend::RenderFlags flags_for(const RenderArguments& a) {
     flags.samples = a.samples;
     flags.camera = a.camera;
     flags.threads = a.threads;
+    flags.names = python_names;
     return flags;
 }
 
@@ -88,13 +89,11 @@ std::optional<FrameRegion> region_for(const RenderArguments& a) {
     return *region;
 }
 
-// The message of set_up_frame's failure without its "jtracer: " and newline,
-// naming the argument rather than the flag ("camera: ...", not "--camera: ...").
+// The message of set_up_frame's failure without its "jtracer: " and newline:
+// "camera: ...", as flags.names named the argument.
 std::string reason(const frontend::FrameSetup& setup, std::string_view program) {
     std::string text = setup.message;
     if (text.starts_with(program)) text.erase(0, program.size() + 2);
-    if (text.starts_with("--")) text.erase(0, 2);
-    text = with_argument_names(std::move(text));
     if (!text.empty() && text.back() == '\n') text.pop_back();
     return text;
 }
@@ -116,7 +115,6 @@ py::array_t<std::uint8_t> render_scene(PythonScene& scene, const RenderArguments
                                        frontend::LoadedPrimitives::as_parsed, region);
     }
     if (setup.exit_code == frontend::exit_scene_error) {
-        name_render_arguments(setup.diagnostics);
         raise_scene_error(format_diagnostics(setup.diagnostics, scene.loaded), setup.diagnostics,
                           scene.loaded);
     }
@@ -124,9 +122,9 @@ py::array_t<std::uint8_t> render_scene(PythonScene& scene, const RenderArguments
     // Before allocating: a frame larger than the memory left would otherwise
     // end in a bare "std::bad_alloc", or the kernel's out-of-memory killer
     // taking the interpreter with it.
-    if (Expected<void> fits = frontend::check_render_memory(setup.render, false); !fits) {
-        const std::string message = with_argument_names(fits.error().message);
-        PyErr_SetString(PyExc_MemoryError, message.c_str());
+    if (Expected<void> fits = frontend::check_render_memory(setup.render, false, python_names);
+        !fits) {
+        PyErr_SetString(PyExc_MemoryError, fits.error().message.c_str());
         throw py::error_already_set();
     }
 

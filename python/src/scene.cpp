@@ -82,24 +82,20 @@ void bind_view(py::module_& m, const char* name, const char* doc) {
 std::vector<Diagnostic> findings(const LoadedScene& loaded) {
     std::vector<Diagnostic> diagnostics = check_scene(
         loaded, {.validation = {.run_chunks = parallel_chunks(), .primitives_as_parsed = true}});
-    name_render_arguments(diagnostics);
+    frontend::name_setting_flags(diagnostics, python_names);
     return diagnostics;
 }
 
 // A width or height of 0 is an error of the frame, not of the scene:
 // render(width=, height=) may still set it, as --width/--height do for a file
 // without them, and render() reports it when it does not.
-bool size_left_to_render(const Diagnostic& d) {
-    return d.severity == Severity::error && (d.setting == "width" || d.setting == "height");
-}
-
 std::shared_ptr<PythonScene> checked_scene(LoadedScene loaded) {
     std::vector<Diagnostic> diagnostics = findings(loaded);
     if (std::any_of(diagnostics.begin(), diagnostics.end(), [](const Diagnostic& d) {
-            return d.severity == Severity::error && !size_left_to_render(d);
+            return d.severity == Severity::error && !asks_for_frame_size(d);
         }))
         raise_scene_error(format_diagnostics(diagnostics, loaded), diagnostics, loaded);
-    std::erase_if(diagnostics, size_left_to_render);
+    std::erase_if(diagnostics, asks_for_frame_size);
     auto scene = std::make_shared<PythonScene>();
     scene->loaded = std::move(loaded);
     scene->warnings = std::move(diagnostics);
@@ -118,13 +114,11 @@ ParseOptions options_with(const std::optional<py::dict>& defines, double clock) 
         throw py::value_error("clock: a finite number, not " +
                               py::repr(py::float_(clock)).cast<std::string>());
     options.clock = clock;
+    options.value_names = python_names.values;
     if (!defines) return options;
     for (const auto& [key, value] : *defines) {
         if (!py::isinstance<py::str>(key)) throw py::type_error("defines: the names must be str");
         const std::string name = key.cast<std::string>();
-        // Said here in Python's words: parse_define would name --define and --clock.
-        if (name == "clock")
-            throw py::value_error("defines['clock']: clock is not a define; pass clock= instead");
         auto number_text = [&](py::handle v) -> std::string {
             if (py::isinstance<py::bool_>(v) ||
                 !(py::isinstance<py::int_>(v) || py::isinstance<py::float_>(v)))
@@ -155,9 +149,9 @@ ParseOptions options_with(const std::optional<py::dict>& defines, double clock) 
         } else {
             text = number_text(value);
         }
-        Expected<Define> define = parse_define(name + "=" + text);
+        Expected<Define> define = parse_define(name + "=" + text, python_names.values);
         if (!define)
-            throw py::value_error("defines: " + with_argument_names(define.error().message));
+            throw py::value_error(python_names.values.define(name) + ": " + define.error().message);
         options.defines.push_back(std::move(*define));
     }
     return options;

@@ -99,6 +99,39 @@ TEST_F(Cli, SceneFilenameIsBmpWhateverItsExtension) {
     EXPECT_EQ(r.err.find("'picture-0001.png' is written"), std::string::npos) << "once: " << r.err;
 }
 
+// A region file is a BMP: a scene's filename naming a PNG is refused as
+// `-o part.png --region-output` is, located at the filename, writing nothing.
+TEST_F(Cli, RegionOutputUnderASceneFilenameNamingAPngIsRefusedThere) {
+    std::string text = small_scene;
+    text.replace(text.find("from_scene.bmp"), 14, "part.png");
+    write("scene.jts", text);
+    const std::string region = " --region 0,0,8,8 --region-output";
+    test::ProgramRun r = run("scene.jts -q" + region);
+    EXPECT_EQ(r.code, 2) << r.err;
+    EXPECT_NE(r.err.find("scene.jts:2:52: error: --region-output writes a BMP (its placement "
+                         "record lives in the BMP): name the scene's filename .bmp, or the "
+                         "output with -o"),
+              std::string::npos)
+        << r.err;
+    EXPECT_EQ(run("scene.jts --check" + region).code, 2) << "refused by --check as -o is";
+    r = run("scene.jts -q --frames 2" + region);
+    EXPECT_EQ(r.code, 2) << r.err;
+    EXPECT_NE(r.err.find("scene.jts:2:52: error: --region-output writes a BMP"), std::string::npos)
+        << r.err;
+    r = run("scene.jts -q -o part.png" + region);
+    EXPECT_EQ(r.code, 2) << r.err;
+    EXPECT_NE(r.err.find("--region-output: writes a BMP (its placement record lives in the BMP)"),
+              std::string::npos)
+        << r.err;
+    EXPECT_EQ(outputs(), std::vector<std::string>{});
+    // Any name but a PNG's is written, as -o's is.
+    text.replace(text.find("part.png"), 8, "part.img");
+    write("scene.jts", text);
+    r = run("scene.jts -q" + region);
+    EXPECT_EQ(r.code, 0) << r.err;
+    EXPECT_EQ(outputs(), std::vector<std::string>{"part.img"});
+}
+
 // -o gives a PNG for .png and a BMP for any other name: one that names
 // another image format gets a warning, no other does.
 TEST_F(Cli, AnOutputNamingAnotherImageFormatWarns) {

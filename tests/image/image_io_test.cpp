@@ -7,6 +7,7 @@
 #include "jtracer/image_diff.hpp"
 #include "jtracer/image_file.hpp"
 #include "jtracer/png.hpp"
+#include "jtracer/texture.hpp"
 
 #include <gtest/gtest.h>
 #include <unistd.h>
@@ -154,6 +155,164 @@ TEST(ImageFile, FormatFollowsTheExtension) {
     char magic[4] = {};
     png.read(magic, 4);
     EXPECT_EQ(std::string(magic + 1, 3), "PNG");
+}
+
+// A BMP another program saved (GIMP, Paint: 32 bits with alpha, 8 with a
+// palette, rows top-down) is a reference `diff` and --expect compare, as an
+// image map reads it, rather than a file they refuse.
+TEST(ImageFile, ReadsTheBmpKindsAnImageMapReads) {
+    const Image8 image = sample_image();  // 3x2, row 0 at the bottom
+    auto put16 = [](std::vector<std::uint8_t>& b, std::size_t at, std::uint32_t v) {
+        b[at] = static_cast<std::uint8_t>(v);
+        b[at + 1] = static_cast<std::uint8_t>(v >> 8);
+    };
+    auto put32 = [&](std::vector<std::uint8_t>& b, std::size_t at, std::uint32_t v) {
+        put16(b, at, v & 0xFFFF);
+        put16(b, at + 2, v >> 16);
+    };
+    // A BITMAPINFOHEADER file: 32 bits (BGRA) or 8 (a palette of every pixel).
+    auto bmp = [&](int bits, bool top_down) {
+        const std::size_t palette = bits == 8 ? 4 * 6 : 0;
+        const std::size_t stride = bits == 32 ? 12 : 4;
+        std::vector<std::uint8_t> b(54 + palette + stride * 2, 0);
+        b[0] = 'B';
+        b[1] = 'M';
+        put32(b, 2, static_cast<std::uint32_t>(b.size()));
+        put32(b, 10, static_cast<std::uint32_t>(54 + palette));
+        put32(b, 14, 40);
+        put32(b, 18, 3);
+        put32(b, 22, top_down ? static_cast<std::uint32_t>(-2) : 2u);
+        put16(b, 26, 1);
+        put16(b, 28, static_cast<std::uint32_t>(bits));
+        if (bits == 8) put32(b, 46, 6);
+        for (int y = 0; y < 2; ++y)
+            for (int x = 0; x < 3; ++x) {
+                const std::uint8_t* p = image.pixel(x, y);
+                const int stored = top_down ? 1 - y : y;
+                std::uint8_t* row = b.data() + 54 + palette + stride * stored;
+                const int index = 3 * y + x;
+                if (bits == 8) {
+                    row[x] = static_cast<std::uint8_t>(index);
+                    std::uint8_t* entry = b.data() + 54 + 4 * index;
+                    entry[0] = p[2];
+                    entry[1] = p[1];
+                    entry[2] = p[0];
+                } else {
+                    row[4 * x] = p[2];
+                    row[4 * x + 1] = p[1];
+                    row[4 * x + 2] = p[0];
+                    row[4 * x + 3] = 255;
+                }
+            }
+        return b;
+    };
+    const fs::path dir = make_scratch_dir("bmp_kinds");
+    for (const auto& [bits, top_down] :
+         {std::pair{32, false}, std::pair{32, true}, std::pair{8, false}}) {
+        const std::vector<std::uint8_t> bytes = bmp(bits, top_down);
+        const fs::path file = dir / "ref.bmp";
+        std::ofstream(file, std::ios::binary)
+            .write(reinterpret_cast<const char*>(bytes.data()),
+                   static_cast<std::streamsize>(bytes.size()));
+        const Expected<Image8> back = read_image(file);
+        ASSERT_TRUE(back) << bits << " bits: " << back.error().message;
+        EXPECT_TRUE(*back == image) << bits << " bits, top-down " << top_down;
+    }
+}
+
+// A picture in a format image maps do not read says which format it is (a
+// GIF from /usr/share/doc, a PPM from netpbm), not stb_image's "unknown image
+// type"; an empty file says it is empty.
+TEST(ImageMapFile, AFormatNotReadIsNamed) {
+    auto problem = [](const std::string& text) {
+        const std::vector<std::uint8_t> bytes(text.begin(), text.end());
+        const Expected<Texture> t = decode_texture(bytes);
+        return t ? std::string("(decoded)") : t.error().message;
+    };
+    const std::string pad(64, '\x01');
+    EXPECT_EQ(problem(""), "the file is empty");
+    const struct {
+        std::string bytes, format;
+    } cases[] = {
+        {"GIF89a" + pad, "a GIF image"},
+        {"GIF87a" + pad, "a GIF image"},
+        {"P6\n4 4\n255\n" + pad, "a Netpbm image (PBM, PGM or PPM)"},
+        {"P3 4 4 255 " + pad, "a Netpbm image (PBM, PGM or PPM)"},
+        {std::string("II*\0", 4) + pad, "a TIFF image"},
+        {std::string("MM\0*", 4) + pad, "a TIFF image"},
+        {std::string("RIFF\x10\0\0\0WEBPVP8 ", 16) + pad, "a WebP image"},
+        {pad + std::string("\0\0\0\0\0\0\0\0TRUEVISION-XFILE.\0", 26), "a TGA image"},
+    };
+    for (const auto& c : cases)
+        EXPECT_EQ(problem(c.bytes),
+                  "not a readable PNG, JPEG or BMP image: it is " + c.format + "; save it as PNG")
+            << c.format;
+    EXPECT_EQ(problem(pad), "not a readable PNG, JPEG or BMP image: unknown image type");
+}
+
+// A BMP cut short by less than its headers and palette take (a download
+// stopped near its end) decoded with its last rows black: stb_image reads
+// zeros past the end. An uncompressed BMP's size is exact, so it is refused.
+TEST(ImageMapFile, ABmpMissingItsLastRowsIsRefused) {
+    const std::vector<std::uint8_t> whole = encode_bmp(sample_image());  // 54 + 2 rows of 12
+    ASSERT_TRUE(decode_texture(whole));
+    for (std::size_t cut : {1u, 5u, 12u}) {
+        const std::vector<std::uint8_t> short_file(whole.begin(), whole.end() - cut);
+        const Expected<Texture> t = decode_texture(short_file);
+        ASSERT_FALSE(t) << cut << " bytes cut";
+        EXPECT_EQ(t.error().message,
+                  "the file is too short for the 3x2 pixels its header claims (" +
+                      std::to_string(short_file.size()) + " bytes)");
+    }
+}
+
+// A TGA before version 2 has no signature, so its name tells it: OBJ files
+// exported from games and older tools name .tga textures (assimp-testmodels'
+// SMD/holygrail.tga, Collada/duckCM.tga).
+TEST(ImageMapFile, ATgaIsNamedByItsName) {
+    const fs::path dir = make_scratch_dir("tga");
+    // An uncompressed 2x1 true-colour TGA: an 18-byte header, then BGR pixels.
+    std::string tga(18, '\0');
+    tga[2] = 2;
+    tga[12] = 2;
+    tga[14] = 1;
+    tga[16] = 24;
+    tga += std::string(6, '\x7f');
+    for (const char* name : {"wood.tga", "WOOD.TGA"}) {
+        test::write_file(dir / name, tga);
+        const auto texture = load_texture(dir / name);
+        ASSERT_FALSE(texture) << name;
+        EXPECT_EQ(
+            texture.error().message,
+            "'" + (dir / name).string() +
+                "': not a readable PNG, JPEG or BMP image: it is a TGA image; save it as PNG");
+    }
+    test::write_file(dir / "wood.png", tga);
+    const auto named_png = load_texture(dir / "wood.png");
+    ASSERT_FALSE(named_png);
+    EXPECT_EQ(named_png.error().message.find("TGA"), std::string::npos);
+}
+
+// diff and --expect compare BMP and PNG: a reference saved as JPEG (lossy,
+// so never an exact reference) or GIF says what it is, not that it does not
+// start with the PNG signature.
+TEST(ImageFile, AReferenceInAnotherFormatSaysWhichItIs) {
+    const fs::path dir = make_scratch_dir("other_formats");
+    const struct {
+        std::string name, bytes, format;
+    } cases[] = {
+        {"ref.jpg", std::string("\xFF\xD8\xFF\xE0\0\x10JFIF", 10), "a JPEG image"},
+        {"ref.gif", "GIF89a\x01\0\x01\0", "a GIF image"},
+        {"ref.ppm", "P6\n1 1\n255\nabc", "a Netpbm image (PBM, PGM or PPM)"},
+    };
+    for (const auto& c : cases) {
+        test::write_file(dir / c.name, c.bytes);
+        const Expected<Image8> read = read_image(dir / c.name);
+        ASSERT_FALSE(read) << c.name;
+        EXPECT_EQ(read.error().message, "'" + (dir / c.name).string() + "': it is " + c.format +
+                                            ", not a BMP or PNG image: save it as PNG")
+            << c.name;
+    }
 }
 
 TEST(AtomicFile, ReplacesWholeAndLeavesNoTemporary) {

@@ -191,8 +191,8 @@ TEST(ModelFile, TrianglesAReaderDropsAreCountedAndNamed) {
     EXPECT_EQ(m.triangles.size(), 11u);
     EXPECT_EQ(m.left_out.out_of_range, 1u);
     EXPECT_EQ(model_warnings(m),
-              std::vector<std::string>{"1 of its 12 triangles is left out: 1 names a corner the "
-                                       "file does not have (an index out of range)"});
+              std::vector<std::string>{"has 1 of its 12 triangles left out: 1 names a corner "
+                                       "the file does not have (an index out of range)"});
     EXPECT_EQ(read_error(kModels / "glTF2/IndexOutOfRange/AllIndicesOutOfRange.gltf", kModels),
               "'" + (kModels / "glTF2/IndexOutOfRange/AllIndicesOutOfRange.gltf").string() +
                   "': none of its 12 triangles can be read: they name corners the file does not "
@@ -207,7 +207,7 @@ TEST(ModelFile, TrianglesAReaderDropsAreCountedAndNamed) {
     EXPECT_EQ(ply.triangles.size(), 1u);
     EXPECT_EQ(model_warnings(ply),
               std::vector<std::string>{
-                  "2 of its 3 triangles are left out: 1 names a corner the file does not have (an "
+                  "has 2 of its 3 triangles left out: 1 names a corner the file does not have (an "
                   "index out of range), 1 has a corner at infinity or NaN"});
     EXPECT_EQ(warnings_of(kModels / "glTF2/BoxWithInfinites-glTF-Binary/BoxWithInfinites.glb"),
               std::vector<std::string>{"holds no usable triangle (12 have a corner at infinity "
@@ -255,6 +255,14 @@ TEST(ModelFile, ReaderFailuresNameTheirCause) {
               "'" + (dir.path() / "bad.stl").string() +
                   "': line 6, column 11 (byte 83): a number was expected, not 'abc'");
 
+    // Assimp's Collada reader does not skip the spaces before a number
+    // ("<color>  0.0 0.0 0.0 1.0  </color>"): the message says so, rather than
+    // that a number was expected and "nothing" found.
+    EXPECT_EQ(read_error(kModels / "Collada/library_animation_clips.dae", kModels),
+              "'" + (kModels / "Collada/library_animation_clips.dae").string() +
+                  "': line 21, column 14 (byte 637): a number was expected, not the white space "
+                  "before '0.0' (the model reader does not skip it there)");
+
     const std::string box = read_file(kModels / "3MF/box.3mf");
     ASSERT_GT(box.size(), 1000u);
     write_file(dir.path() / "cut.3mf", box.substr(0, 600));
@@ -274,6 +282,27 @@ TEST(ModelFile, ReaderFailuresNameTheirCause) {
     EXPECT_NE(read_error(dir.path() / "gzipped.amf", dir.path()).find("gzip-compressed"),
               std::string::npos);
     EXPECT_EQ(read_ok(kModels / "3MF/box.3mf").triangles.size(), 12u);
+}
+
+// Formats Debian's Assimp is built without: it takes a VRML file for a
+// Blender one ("BLEND: BLENDER magic bytes are missing"), a Model 3D file for
+// OBJ ("OBJ: Invalid face index"), or reads one as a model of nothing, which
+// left the mesh out with a warning that it holds no triangle.
+TEST(ModelFile, AFormatTheReaderLacksIsNamedFromTheFilesFirstBytes) {
+    for (const char* file : {"WRL/Wuson.wrl", "WRL/MotionCaptureROM.WRL"}) {
+        const std::string error = read_error(kModels / file, kModels);
+        EXPECT_NE(error.find("': the file is VRML, which the model reader does not read"),
+                  std::string::npos)
+            << error;
+    }
+    for (const char* file : {"M3D/WusonBlitz1.m3d", "M3D/cube_normals.m3d", "M3D/suzanne.m3d",
+                             "M3D/cube_with_vertexcolors.a3d"}) {
+        const std::string error = read_error(kModels / file, kModels);
+        EXPECT_NE(error.find("': the file is Model 3D (.m3d, .a3d), which the model reader does "
+                             "not read"),
+                  std::string::npos)
+            << file << ": " << error;
+    }
 }
 
 TEST(ModelFile, TheBoxHoldsTheCornersTheTrianglesName) {

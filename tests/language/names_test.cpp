@@ -199,6 +199,9 @@ TEST(Names, AMaterialBlockMissingItsBraceKeepsNothingFromTheNamedMaterial) {
 TEST(Names, CommandLineDefinesWinWithANote) {
     ParseOptions options;
     options.defines = {{"r", "3"}, {"s", "\"out.bmp\""}};
+    // The messages name the defines as a front end gives them (here the
+    // command line's flags), never in words of their own.
+    options.value_names = {"--define", "--define ", "", "--clock"};
     const std::string text =
         "define r = 1 / 0;\n"  // parsed, not evaluated
         "define s = \"a.bmp\";\n"
@@ -229,9 +232,17 @@ TEST(Names, CommandLineDefineWarnings) {
     options.clock = 2;
     ParseResult r = parse_scene("define r = 0;\nscene { sphere { radius: r; } }", options);
     EXPECT_EQ(brief(r.diagnostics),
-              "0:0: warning: --define r is given more than once; the last value is used\n"
-              "1:8: note: 'r' is set by --define; this definition is ignored");
+              "0:0: warning: define r is given more than once; the last value is used\n"
+              "1:8: note: 'r' is set by ParseOptions::defines; this definition is ignored");
     EXPECT_EQ(sphere(r).radius, 4.0);
+    // Named as Python names them.
+    options.value_names = {"defines", "defines['", "']", "clock="};
+    options.defines = {{"r", "sqrt(-clock)"}, {"s", "1"}, {"t", "1"}};
+    EXPECT_EQ(brief(parse_scene("define r = 0;\ndefine s = 0;", options).diagnostics),
+              "0:0: error: defines['r']=sqrt(-clock): at column 1: sqrt(-2): the square root of "
+              "a negative number\n"
+              "2:8: note: 's' is set by defines; this definition is ignored\n"
+              "0:0: warning: defines['t']: the scene defines no 't'");
 }
 
 TEST(Names, DefineOptionIsChecked) {
@@ -243,7 +254,9 @@ TEST(Names, DefineOptionIsChecked) {
     EXPECT_EQ(parse_define("2r=1").error().message,
               "'2r' is not a name (letters, digits and '_', not starting with a digit)");
     EXPECT_EQ(parse_define("clock=1").error().message,
-              "clock cannot be set with --define; use --clock");
+              "clock cannot be defined; set it with ParseOptions::clock");
+    EXPECT_EQ(parse_define("clock=1", {.clock = "--clock"}).error().message,
+              "clock cannot be defined; set it with --clock");
     EXPECT_EQ(parse_define("sin=1").error().message,
               "'sin' is reserved (a keyword, a function or pi) and cannot be defined");
     EXPECT_EQ(parse_define("r=").error().message, "the value of r: the value is empty");

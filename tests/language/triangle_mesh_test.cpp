@@ -151,8 +151,8 @@ TEST(TriangleMesh, WhatAModelLeavesOutIsAWarningAtTheFileString) {
     ASSERT_TRUE(loaded.has_value());
     const std::string folder = std::filesystem::weakly_canonical(dir.path() / "scene").string();
     EXPECT_EQ(brief(check_scene(*loaded)),
-              "4:16: warning: mesh 1: 'IndexOutOfRange.gltf' 1 of its 12 triangles is left out: 1 "
-              "names a corner the file does not have (an index out of range)\n"
+              "4:16: warning: mesh 1: 'IndexOutOfRange.gltf' has 1 of its 12 triangles left out: "
+              "1 names a corner the file does not have (an index out of range)\n"
               "5:16: warning: mesh 2: 'm.obj' refers to the material library '" +
                   (dir.path() / "scene/../m.mtl").string() + "', outside the folder '" + folder +
                   "': that file is left out");

@@ -55,6 +55,8 @@ TEST(Validate, ZeroWidthOrHeightSaysHowToSetIt) {
     ASSERT_EQ(found.size(), 2u);
     EXPECT_EQ(found[0].setting, "width");
     EXPECT_EQ(found[1].setting, "height");
+    EXPECT_TRUE(asks_for_frame_size(found[0]));
+    EXPECT_TRUE(asks_for_frame_size(found[1]));
 }
 
 TEST(Validate, SeesOverridesAppliedToTheScene) {
@@ -141,7 +143,8 @@ TEST(Validate, ALensWithOneSampleWarnsAtTheActiveCamerasAperture) {
     r.scene.settings.samples = 1;
     const std::vector<Diagnostic> found = validate_scene(r.scene, r.source);
     ASSERT_EQ(found.size(), 1u);
-    EXPECT_EQ(found[0].setting, "samples");  // so the command line can name --samples
+    EXPECT_EQ(found[0].setting, "samples");       // so the command line can name --samples
+    EXPECT_FALSE(asks_for_frame_size(found[0]));  // a setting, but not the frame's size
 }
 
 TEST(Validate, ZeroScaleComponentWarnsAtTheScaleOperation) {

@@ -2,8 +2,10 @@
 # each model format the project reads and an image map; --json parsed.
 import json
 import math
+import os
 import pathlib
 import shutil
+import subprocess
 
 import pytest
 from conftest import run
@@ -51,8 +53,9 @@ def test_info_json_counts_meshes_maps_lights_and_cameras(cli, scene):
     assert all(m["triangles"] > 0 and m["vertices"] >= 3 for m in meshes)
     assert meshes[0]["triangles"] == 12  # six quads
     assert meshes[1]["triangles"] == 20020 and meshes[1]["vertices"] == 10332
-    # STL has facet normals only; PLY and glTF carry vertex normals.
-    assert meshes[2]["normals"] == "generated"
+    # STL has facet normals only, and without smooth_angle its triangles are
+    # shaded flat (none generated); PLY and glTF carry vertex normals.
+    assert meshes[2]["normals"] == "none"
     assert [meshes[i]["normals"] for i in (1, 3, 4)] == ["file"] * 3
     assert [m["read_before"] for m in meshes] == [False] * 5 + [True]
     assert all(m["load_seconds"] >= 0 for m in meshes)
@@ -168,3 +171,53 @@ scene {
     assert '  part "red": 2 triangles, base colour <1, 0, 0>\n' in out
     assert '  part "skin": 1 triangles, base colour <1, 1, 1>, texture SpiderTex.jpg\n' in out
     assert "  part (no material): 1 triangles\n" in out
+
+
+def test_info_json_of_a_scene_in_a_folder_named_in_latin1(tmp_path, cli):
+    # The folder's name is not UTF-8 (Latin-1 "modèles"): --json still prints
+    # one UTF-8 object, the byte replaced, rather than stopping on it.
+    folder = tmp_path / os.fsdecode(b"mod\xe8les")
+    folder.mkdir()
+    shutil.copy(MODELS / "OBJ" / "box.obj", folder)
+    (folder / "scene.jts").write_text(
+        'render_settings { width: 8; height: 8; }\n'
+        'cameras { perspective_camera { position: <0, 0, 10>; look_at: <0, 0, 0>; } }\n'
+        'scene { mesh { file: "box.obj"; } }\n')
+    done = subprocess.run([str(cli), "info", "--json", str(folder / "scene.jts")],
+                          capture_output=True, timeout=60)
+    assert done.returncode == 0, done.stderr
+    described = json.loads(done.stdout.decode("utf-8"))
+    assert described["meshes"][0]["path"].endswith("mod\ufffdles/box.obj")
+
+
+def test_info_says_normals_are_generated_only_where_smooth_angle_makes_them(tmp_path, cli):
+    shutil.copy(MODELS / "STL" / "Spider_ascii.stl", tmp_path)
+    path = tmp_path / "normals.jts"
+    path.write_text(
+        'render_settings { width: 8; height: 8; }\n'
+        'cameras { perspective_camera { position: <0, 0, 10>; look_at: <0, 0, 0>; } }\n'
+        'scene {\n'
+        '    mesh { file: "Spider_ascii.stl"; smooth_angle: 60; }\n'
+        '    mesh { file: "Spider_ascii.stl"; }\n'
+        '}\n')
+    _, out, _ = run(cli, "info", path, "--json")
+    assert [m["normals"] for m in json.loads(out)["meshes"]] == ["generated", "none"]
+    _, text, _ = run(cli, "info", path)
+    assert "normals generated, smooth" in text and "normals none, smooth" in text
+
+
+def test_info_json_of_a_material_named_in_latin1(tmp_path, cli):
+    # An OBJ exported on a Latin-1 system names its material "Matériau" in
+    # bytes that are not UTF-8; --json printed nothing and aborted on it.
+    (tmp_path / "m.mtl").write_bytes(b"newmtl Mat\xe9riau\nKd 1 0 0\n")
+    (tmp_path / "t.obj").write_bytes(
+        b"mtllib m.mtl\nv 0 0 0\nv 1 0 0\nv 0 1 0\nusemtl Mat\xe9riau\nf 1 2 3\n")
+    (tmp_path / "s.jts").write_text(
+        'render_settings { width: 8; height: 8; }\n'
+        'cameras { perspective_camera { position: <0, 0, 5>; look_at: <0, 0, 0>; } }\n'
+        'scene { mesh { file: "t.obj"; materials: "file"; } }\n')
+    done = subprocess.run([str(cli), "info", "--json", str(tmp_path / "s.jts")],
+                          capture_output=True, timeout=60)
+    assert done.returncode == 0, done.stderr
+    parts = json.loads(done.stdout.decode("utf-8"))["meshes"][0]["parts"]
+    assert [p["name"] for p in parts] == ["Mat\ufffdriau"]

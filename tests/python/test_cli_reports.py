@@ -2,6 +2,9 @@
 # --expect --update. The JSON is parsed with json, the JUnit XML with
 # xml.etree, as a CI system would read them.
 import json
+import os
+import shutil
+import subprocess
 import xml.etree.ElementTree as ElementTree
 
 import jtracer
@@ -150,6 +153,27 @@ def test_expect_junit_of_a_scene_that_fails_is_an_error(tmp_path, cli):
     # It says that nothing was written rather than ending in "actual ".
     assert case.find("system-out").text.startswith(
         f"expected {tmp_path / 'ref.png'}, actual none (no render was written)\n")
+    # The CI page shows why: the scene's error is in the message, and every
+    # message the run printed is in system-err.
+    message = case.find("error").get("message")
+    assert "bad.jts:1:" in message and "radius" in message, message
+    assert "exit code 1" in message, message
+    assert "bad.jts:1:" in case.find("system-err").text
+
+
+def test_expect_junit_of_a_missing_model_names_the_file(tmp_path, cli, source_dir):
+    scene = tmp_path / "scene.jts"
+    scene.write_text((source_dir / "scenes" / "glass.jts").read_text() +
+                     '\nscene { mesh { file: "models/gone.obj"; } }\n')
+    junit = tmp_path / "expect.xml"
+    jtracer.write_image(tmp_path / "ref.png", np.zeros((4, 4, 3), np.uint8))
+    code, _, err = run(cli, "-q", scene, "-o", tmp_path / "out.png", "--expect",
+                       tmp_path / "ref.png", "--junit", junit, check=False)
+    assert code == 1
+    _, _, case = junit_case(junit)
+    assert "gone.obj" in case.find("error").get("message")
+    # What stderr shows, the report keeps.
+    assert case.find("system-err").text == err
 
 
 def stamp(path):
@@ -213,3 +237,38 @@ def test_update_and_json_need_their_command(tmp_path, cli, source_dir):
     code, _, err = run(cli, scene, "-o", tmp_path / "out.png", "--junit", tmp_path / "j.xml",
                        check=False)
     assert code == 2 and "--junit" in err
+
+
+def test_reports_of_a_file_name_that_is_not_utf8_can_be_read(tmp_path, cli):
+    # A name from an archive made on another system: Latin-1 "café". The
+    # JSON and the JUnit XML must still be UTF-8 that their readers accept,
+    # with the byte that is not UTF-8 replaced.
+    a, _ = images(tmp_path)
+    latin1 = tmp_path / os.fsdecode(b"caf\xe9.png")
+    shutil.copy(a, latin1)
+    done = subprocess.run([str(cli), "diff", str(a), str(latin1), "--json"], capture_output=True,
+                          timeout=60)
+    assert done.returncode == 0, done.stderr
+    report = json.loads(done.stdout.decode("utf-8"))
+    assert report["verdict"] == "within" and report["actual"]["path"].endswith("caf\ufffd.png")
+    junit = tmp_path / "report.xml"
+    done = subprocess.run([str(cli), "diff", "-q", str(a), str(latin1), "--junit", str(junit)],
+                          capture_output=True, timeout=60)
+    assert done.returncode == 0, done.stderr
+    _, suite, case = junit_case(junit)
+    assert suite.get("failures") == "0" and case.get("name").endswith("caf\ufffd.png")
+
+
+def test_a_junit_report_that_cannot_be_written_stops_before_the_render(tmp_path, cli,
+                                                                       source_dir):
+    # A CI job that forgot `mkdir -p junit` learns it at once, not after each
+    # render, and exits 3 (not the comparison's 0 or 1).
+    scene, reference = tmp_path / "scene.jts", tmp_path / "ref.png"
+    scene.write_text((source_dir / "scenes" / "glass.jts").read_text())
+    jtracer.write_image(reference, np.zeros((4, 4, 3), np.uint8))
+    code, _, err = run(cli, "-q", scene, "--width", "16", "--height", "9", "-o",
+                       tmp_path / "out.png", "--expect", reference, "--junit",
+                       tmp_path / "missing" / "report.xml", check=False)
+    assert code == 3
+    assert "--junit" in err and "nothing was rendered" in err, err
+    assert not (tmp_path / "out.png").exists()

@@ -1,4 +1,5 @@
 # jtracer.load / parse / check, SceneError and the scene's read-only views.
+import os
 import re
 
 import jtracer
@@ -128,7 +129,7 @@ def test_defines_set_names_as_the_command_line_does(tmp_path, cli):
     notes = [d for d in scene.warnings if d.severity == "note"]
     assert [(d.line, d.column) for d in notes] == [(1, 8), (2, 8)]
     assert "'r' is set by defines;" in notes[0].message
-    assert any(d.message == "defines: fov_unused: the scene defines no 'fov_unused'"
+    assert any(d.message == "defines['fov_unused']: the scene defines no 'fov_unused'"
                for d in scene.warnings), [d.message for d in scene.warnings]
     # The same image as jtracer-cli --define gives.
     path = tmp_path / "defined.jts"
@@ -142,7 +143,8 @@ def test_defines_set_names_as_the_command_line_does(tmp_path, cli):
 def test_bad_defines_raise_value_or_type_errors():
     # In Python's words: no --define or --clock to point at, no column of a
     # text the caller never wrote.
-    with pytest.raises(ValueError, match=r"defines\['clock'\]: clock is not a define; pass clock="):
+    with pytest.raises(ValueError,
+                       match=r"^defines\['clock'\]: clock cannot be defined; set it with clock=$"):
         jtracer.parse(DEFINED, defines={"clock": 1})
     with pytest.raises(ValueError, match=r"^defines\['r'\]: a finite number, not nan$"):
         jtracer.parse(DEFINED, defines={"r": float("nan")})
@@ -301,3 +303,21 @@ def test_a_scene_without_a_size_loads_and_renders_at_the_size_asked(tmp_path, cl
         "Scene.render()"]
     with pytest.raises(jtracer.SceneError, match="radius"):
         jtracer.parse(SIZELESS.replace("sphere {", "sphere { radius: -1;"))
+
+
+def test_a_folder_named_in_latin1_gives_the_errors_not_a_decoding_failure(tmp_path):
+    # A path is bytes; a folder from another system (Latin-1 "modèles") is not
+    # UTF-8. Its scene's errors are a SceneError and check's list, the file
+    # named as os.fsdecode names it; an unreadable image there is an OSError.
+    folder = tmp_path / os.fsdecode(b"mod\xe8les")
+    folder.mkdir()
+    scene = folder / "bad.jts"
+    scene.write_text('scene { mesh { file: "gone.obj"; } }\n')
+    with pytest.raises(jtracer.SceneError) as raised:
+        jtracer.load(scene)
+    missing = [d for d in raised.value.diagnostics if "gone.obj" in d.message]
+    assert len(missing) == 1 and missing[0].file == str(scene)
+    assert "gone.obj" in str(raised.value) and "gone.obj" in repr(missing[0])
+    assert any("gone.obj" in d.message for d in jtracer.check(scene))
+    with pytest.raises(OSError, match="gone.png"):
+        jtracer.read_image(folder / "gone.png")

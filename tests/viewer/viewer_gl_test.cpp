@@ -457,8 +457,10 @@ TEST_F(ViewerGl, ScaleEditedToZeroLeavesThePrimitiveOut) {
     EXPECT_NE(state.render.display, shown);
 }
 
-TEST_F(ViewerGl, EscapeAsksToQuit) {
+TEST_F(ViewerGl, EscapeTwiceQuits) {
     open_scene(state, kScene);
+    viewer.press_key(state, keys::escape);
+    EXPECT_FALSE(state.quit);
     viewer.press_key(state, keys::escape);
     EXPECT_TRUE(state.quit);
 }

@@ -210,5 +210,33 @@ TEST_F(ViewerLensFields, ACtrlClickFocusesOnTheSurfaceUnderTheCursorInOneStep) {
     EXPECT_EQ(text(), kLensScene);
 }
 
+// Typed text with errors is the document: the panels are read-only, and a
+// Ctrl+click focused the last good scene's camera anyway. That edit was in
+// no text (not saved, not shown), was dropped when the text parsed, and with
+// the file's own broken text shown, a reload cleared its undo step while the
+// image kept it.
+TEST_F(ViewerLensFields, ACtrlClickWhileTheTextHasErrorsChangesNothing) {
+    const std::size_t steps = state.history.undo.size();
+    type_text(state, std::string(kLensScene) + "{");
+    state.check.checker.wait();
+    frames(2);
+    ASSERT_TRUE(state.doc.draft.has_value()) << state.message;
+    ctrl_click_pixel(32, 24);  // the sphere
+    EXPECT_FALSE(camera().focus_distance) << "the last good scene is not edited";
+    EXPECT_EQ(state.doc.scene, *state.doc.original);
+    EXPECT_EQ(state.history.undo.size(), steps + 1) << "the typing's step alone";
+    EXPECT_NE(state.message.find("the text has errors"), std::string::npos) << state.message;
+}
+
+TEST_F(ViewerLensFields, CopyToSceneWhileTheTextHasErrorsChangesNothing) {
+    type_text(state, std::string(kLensScene) + "{");
+    state.check.checker.wait();
+    frames(2);
+    ASSERT_TRUE(state.doc.draft.has_value()) << state.message;
+    EXPECT_FALSE(copy_free_camera_to_scene(state, "copy"));
+    EXPECT_EQ(state.doc.scene.cameras.size(), 1u);
+    EXPECT_NE(state.message.find("the text has errors"), std::string::npos) << state.message;
+}
+
 }  // namespace
 }  // namespace jt::view

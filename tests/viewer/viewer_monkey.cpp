@@ -534,6 +534,10 @@ class Monkey {
             for (int i = 0; i < 200 && state_.history.undo.can_undo(); ++i) undo(state_);
             frame();
         };
+        // A load asked before (R, a file changed) would replace the text
+        // mid-typing: that of a document without edits is taken in as it is.
+        state_.files.loader.wait();
+        frame();
         undo_all();
         const std::string before = editor.buffer;
         const int at = pick(static_cast<int>(before.size()) + 1);
@@ -558,10 +562,15 @@ class Monkey {
         const double event_ms = uniform(2, 40);
         viewer_.key_events(state_, events, event_ms, frame_ms);
         frames_ += 4;
+        // A Backspace deletes one character, all its UTF-8 bytes (a file
+        // of random bytes may hold some that are whole characters).
+        std::size_t from = static_cast<std::size_t>(at);
+        for (int i = 0; i < backspaces && from > 0; ++i) {
+            --from;
+            while (from > 0 && (static_cast<unsigned char>(before[from]) & 0xC0) == 0x80) --from;
+        }
         std::string expected = before;
-        const int deleted = std::min(backspaces, at);
-        expected.replace(static_cast<std::size_t>(at - deleted), static_cast<std::size_t>(deleted),
-                         typed);
+        expected.replace(from, static_cast<std::size_t>(at) - from, typed);
         if (document_text(state_.doc) != expected) {
             fail("typed " + std::to_string(backspaces) + " Backspaces and '" + typed + "' " +
                  std::to_string(event_ms) + " ms apart, a frame every " + std::to_string(frame_ms) +

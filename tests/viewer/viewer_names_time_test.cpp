@@ -18,6 +18,7 @@
 
 #include <gtest/gtest.h>
 #include <imgui.h>
+#include <imgui_internal.h>
 
 #include <filesystem>
 #include <string>
@@ -94,7 +95,7 @@ TEST_F(ViewerNamesCli, TheImageWithDefineAndClockIsJtracerClisByteForByte) {
 
 class ViewerNamesTime : public ViewerFixture {
   protected:
-    ViewerNamesTime() : ViewerFixture(1100, 900) {}
+    explicit ViewerNamesTime(int width = 1100, int height = 900) : ViewerFixture(width, height) {}
     void SetUp() override {
         folder = make_scratch_dir(::testing::UnitTest::GetInstance()->current_test_info()->name());
         write_file(folder / "scene.jts", kScene);
@@ -214,6 +215,103 @@ TEST_F(ViewerNamesTime, ASceneWithoutClockHasNoSlider) {
     for (int i = 0; i < 2; ++i) viewer.frame(state);
     EXPECT_EQ(find_item(viewer.ui_items(), "clock"), nullptr);
     EXPECT_EQ(find_item(viewer.ui_items(), "Play"), nullptr);
+}
+
+// A 900x600 window, as a user opens it.
+class ViewerTimeNarrow : public ViewerNamesTime {
+  protected:
+    ViewerTimeNarrow() : ViewerNamesTime(900, 600) {}
+};
+
+// The slider was 12 font sizes wide whatever the room: with the text editor
+// open (or a small window) the image area is narrower than the Play row,
+// and the slider ran under the text editor's window, its value and label
+// hidden there (or past the window's edge).
+TEST_F(ViewerTimeNarrow, TheClockRowStaysInTheImageAreaBesideTheTextEditor) {
+    ASSERT_FALSE(HasFatalFailure());
+    viewer.text_editor().open = true;
+    for (int i = 0; i < 3; ++i) viewer.frame(state);
+    const UiItem* editor = find_item(viewer.ui_items(), "text editor");
+    ASSERT_NE(editor, nullptr);
+    const ScreenRect area = viewer.image_area();
+    ASSERT_LE(area.x1, editor->rect.x0 + 1.0f) << "the image area ends where the editor starts";
+    const UiItem* slider = find_item(viewer.ui_items(), "clock");
+    ASSERT_NE(slider, nullptr);
+    EXPECT_LE(slider->rect.x1, area.x1) << "the slider and its label, in the image area";
+    EXPECT_GE(slider->rect.x1 - slider->rect.x0, ImGui::GetFontSize() * 6.0f)
+        << "still wide enough to drag";
+    const UiItem* play = find_item(viewer.ui_items(), "Play");
+    ASSERT_NE(play, nullptr);
+    EXPECT_TRUE(play->rect.x1 < slider->rect.x0 || play->rect.y1 <= slider->rect.y0)
+        << "beside Play or under it, never over it";
+
+    viewer.text_editor().open = false;
+    for (int i = 0; i < 3; ++i) viewer.frame(state);
+    slider = find_item(viewer.ui_items(), "clock");
+    ASSERT_NE(slider, nullptr);
+    EXPECT_LE(slider->rect.x1, viewer.image_area().x1);
+}
+
+// The tooltip shown now (ImGui's, at most one), or null.
+const ImGuiWindow* shown_tooltip() {
+    for (const ImGuiWindow* window : GImGui->Windows)
+        if (window->Active && (window->Flags & ImGuiWindowFlags_Tooltip)) return window;
+    return nullptr;
+}
+
+bool overlaps(const ImGuiWindow& window, const UiItem& item) {
+    return window.Pos.x < item.rect.x1 && item.rect.x0 < window.Pos.x + window.Size.x &&
+           window.Pos.y < item.rect.y1 && item.rect.y0 < window.Pos.y + window.Size.y;
+}
+
+// ImGui puts a tooltip under the mouse, or beside it when there is no room
+// under it: the Play button's covered the slider's value, which is what
+// moves while playing (under Play in a narrow image area, beside it in a
+// short window).
+// Hovers Play (and Pause) at its top and bottom, the text editor open and
+// closed: its tooltip never covers the slider.
+void hover_play_and_pause(HeadlessViewer& viewer, AppState& state) {
+    for (const bool editor : {true, false})
+        for (const bool playing : {false, true}) {
+            SCOPED_TRACE(std::string(editor ? "the text editor open" : "the text editor closed") +
+                         (playing ? ", playing" : ", paused"));
+            viewer.text_editor().open = editor;
+            for (int i = 0; i < 3; ++i) viewer.frame(state);
+            if (state.time.playing != playing)
+                ASSERT_TRUE(viewer.click(state, playing ? "Play" : "Pause"));
+            ASSERT_EQ(state.time.playing, playing);
+            viewer.frame(state);  // the click's frame drew the button before it
+            const UiItem* play = find_item(viewer.ui_items(), playing ? "Pause" : "Play");
+            ASSERT_NE(play, nullptr);
+            const float x = (play->rect.x0 + play->rect.x1) * 0.5f;
+            for (const float y : {play->rect.y0 + 2.0f, play->rect.y1 - 2.0f}) {
+                viewer.move_mouse(state, x, y);
+                viewer.frame(state);
+                const ImGuiWindow* tip = shown_tooltip();
+                ASSERT_NE(tip, nullptr) << "hovering the button shows its tooltip";
+                const UiItem* slider = find_item(viewer.ui_items(), "clock");
+                ASSERT_NE(slider, nullptr);
+                EXPECT_FALSE(overlaps(*tip, *slider));
+            }
+        }
+}
+
+TEST_F(ViewerTimeNarrow, PlaysTooltipLeavesTheSlidersValueInView) {
+    ASSERT_FALSE(HasFatalFailure());
+    hover_play_and_pause(viewer, state);
+}
+
+// A window shorter than the viewer asks for (kMinWindowHeight: a window
+// manager may ignore it; Xvfb without one does): no room for the tooltip
+// under the mouse, and ImGui put it beside it, over the slider beside Play.
+class ViewerTimeShort : public ViewerNamesTime {
+  protected:
+    ViewerTimeShort() : ViewerNamesTime(900, 140) {}
+};
+
+TEST_F(ViewerTimeShort, PlaysTooltipLeavesTheSlidersValueInView) {
+    ASSERT_FALSE(HasFatalFailure());
+    hover_play_and_pause(viewer, state);
 }
 
 }  // namespace

@@ -344,8 +344,9 @@ scene {
     AppState state{test_config()};
     open_scene(state, dir / "scene.jts");
     ASSERT_TRUE(viewer.run_until_complete(state, kTimeout));
-    const std::vector<std::string> figures = {"12 triangles, 24 vertices, normals generated",
-                                              "bounds <9, -2, -1> to <11, 2, 1>", "size <2, 4, 2>"};
+    const std::vector<std::string> figures = {
+        "12 triangles, 24 vertices, normals none (shaded flat)", "bounds <9, -2, -1> to <11, 2, 1>",
+        "size <2, 4, 2>"};
     select(state.view, {Kind::primitive, 0});  // the sphere: no figures
     for (int i = 0; i < 3; ++i) viewer.frame(state);
     for (const std::string& line : figures) EXPECT_EQ(find_item(viewer.ui_items(), line), nullptr);

@@ -102,6 +102,29 @@ TEST_F(ViewerReloadBar, TheChoiceIsAboveTheImageAndShowsTheDifferences) {
 // panels. The image went, and with it the bar the status line sends the
 // user to when the file changes under unsaved edits. The image keeps a
 // part of the width beside the text.
+// A line of its own in the File panel ("Choose in the bar above the image",
+// "Loading..." for every reload) moved every field below it by a row, under
+// a mouse that was about to click one: the note shares the file's line.
+TEST_F(ViewerReloadBar, TheFilePanelsNoteMovesNoFieldUnderTheMouse) {
+    const fs::path file = open_rendered_copy("reload-note");
+    ASSERT_FALSE(HasFatalFailure());
+    viewer.frame(state);
+    const UiItem* fov = find_item(viewer.ui_items(), "fov");
+    ASSERT_NE(fov, nullptr);
+    const float before = fov->rect.y0;
+    ASSERT_NO_FATAL_FAILURE(edit_here_and_on_disk(viewer, state, file));
+    viewer.frame(state);
+    fov = find_item(viewer.ui_items(), "fov");
+    ASSERT_NE(fov, nullptr);
+    EXPECT_EQ(fov->rect.y0, before) << "with the choice waiting";
+    reload_scene(state);  // a reload under way
+    viewer.frame(state);
+    fov = find_item(viewer.ui_items(), "fov");
+    ASSERT_NE(fov, nullptr);
+    EXPECT_EQ(fov->rect.y0, before) << "while loading";
+    ASSERT_TRUE(viewer.run_until_loaded(state));
+}
+
 class ViewerNarrowWindow : public ViewerFixture {
   protected:
     ViewerNarrowWindow() : ViewerFixture(800, 500) {}

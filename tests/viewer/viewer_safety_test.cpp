@@ -206,10 +206,23 @@ TEST_F(ViewerSafety, ABrokenFileAtStartUpIsQuotedWithItsLineAndCaret) {
 
 TEST_F(ViewerSafety, EscapeClosesWhatIsOpenAndNeverDropsEdits) {
     open_and_render();
-    // Without edits Esc quits.
+    // Without edits a stray Esc (one more after leaving a field or closing
+    // a popup) does not close the window and its render: it says how to
+    // quit, and a second Esc right after quits.
     AppState clean{test_config()};
     open_scene(clean, file);
     viewer.frame(clean);
+    viewer.press_key(clean, keys::escape);
+    EXPECT_FALSE(clean.quit);
+    EXPECT_EQ(clean.message, "Esc again quits (Ctrl+Q quits at once)");
+    viewer.press_key(clean, keys::escape);
+    EXPECT_TRUE(clean.quit);
+    // Not two Esc far apart.
+    clean.quit = false;
+    viewer.press_key(clean, keys::escape);
+    for (int i = 0; i < 90; ++i) viewer.frame(clean);  // three seconds
+    viewer.press_key(clean, keys::escape);
+    EXPECT_FALSE(clean.quit);
     viewer.press_key(clean, keys::escape);
     EXPECT_TRUE(clean.quit);
     viewer.frame(state);

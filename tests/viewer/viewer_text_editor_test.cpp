@@ -80,6 +80,24 @@ class ViewerTextEditor : public ::testing::Test {
                   offset_of(viewer.text_editor().buffer, line, column));
     }
     std::string text() const { return document_text(state.doc); }
+    // Writes a 302-character comment at the start of line 10 to the file,
+    // reloads it and types an x at the comment's end, where the view has
+    // scrolled sideways.
+    void type_at_the_end_of_a_long_line() {
+        const std::string comment = "# " + std::string(300, 'w');
+        std::string written = original;
+        written.insert(offset_of(written, 10, 1), comment);
+        write_file(file, written);
+        EXPECT_TRUE(viewer.run_until_loaded(state));
+        viewer.frame(state);
+        EXPECT_EQ(viewer.text_editor().buffer, written);
+        put_cursor(10, static_cast<int>(comment.size()) + 1);
+        std::vector<KeyEvent> events;
+        type(events, "x");
+        viewer.key_events(state, events, 40.0, 16.0);
+        viewer.frame(state);
+        viewer.frame(state);
+    }
 
     HeadlessViewer viewer{1200, 700};
     AppState state{test_config()};
@@ -420,6 +438,59 @@ TEST_F(ViewerTextEditor, TheViewFollowsTheCursorSidewaysAndLongErrorsWrap) {
     window = find_item(viewer.ui_items(), "text editor");  // of this frame's items
     ASSERT_NE(window, nullptr);
     EXPECT_LE(item->rect.x1, window->rect.x1);
+}
+
+// The line numbers were drawn in the text's place, so with the cursor at
+// the end of a long line (the view scrolled sideways) they scrolled out of
+// view and the line's text showed in their column instead.
+TEST_F(ViewerTextEditor, LineNumbersStayWhenTheTextScrollsSideways) {
+    type_at_the_end_of_a_long_line();
+    const UiItem* window = find_item(viewer.ui_items(), "text editor");
+    ASSERT_NE(window, nullptr);
+    const TextEditorState& editor = viewer.text_editor();
+    ASSERT_LT(editor.line1_x, window->rect.x0) << "the view scrolled sideways";
+    // Line 10's row, from the editor's left edge across the numbers' column
+    // (two digits and two spaces of the monospace font).
+    const Image8 screen = viewer.screenshot();
+    const float char_w = editor.line_height * 0.5f;
+    const int y0 = static_cast<int>(editor.line1_y + 9.0f * editor.line_height) + 1;
+    const int x0 = static_cast<int>(window->rect.x0) + 2;
+    int number_pixels = 0, text_pixels = 0;
+    for (int y = y0; y < y0 + static_cast<int>(editor.line_height) - 1; ++y)
+        for (int x = x0; x < x0 + static_cast<int>(char_w * 5.0f); ++x) {
+            const std::uint8_t* p = screen.pixel(x, screen.height - 1 - y);
+            text_pixels += p[0] > 200;  // the text's white
+            number_pixels += p[0] > 90 && p[0] <= 200 && p[0] == p[1] && p[1] == p[2];
+        }
+    EXPECT_EQ(text_pixels, 0) << "no text under the numbers";
+    EXPECT_GT(number_pixels, 5) << "the number 10 is there";
+}
+
+// The view kept its scroll from file to file: another file opened after
+// typing at the end of a long line (or far down) showed cut off at the
+// left, its first lines out of view.
+TEST_F(ViewerTextEditor, AnotherFileOpensScrolledToItsStart) {
+    viewer.frame(state);
+    const TextEditorState& editor = viewer.text_editor();
+    const float x = editor.line1_x, y = editor.line1_y;
+    type_at_the_end_of_a_long_line();
+    ASSERT_LT(editor.line1_x, x) << "scrolled sideways";
+
+    const fs::path other = file.parent_path() / "other.jts";
+    write_file(other, original);
+    std::vector<KeyEvent> events;
+    tap(events, keys::escape);  // out of the text, as a click on the Open field is
+    viewer.key_events(state, events, 40.0, 16.0);
+    viewer.frame(state);
+    request_open_guarded(state, other);
+    ASSERT_TRUE(state.files.unsaved_prompt) << "the typed x";
+    resolve_unsaved(state, UnsavedChoice::discard);
+    ASSERT_TRUE(viewer.run_until_loaded(state));
+    ASSERT_EQ(state.doc.path, other) << state.message;
+    viewer.frame(state);
+    viewer.frame(state);
+    EXPECT_EQ(editor.line1_x, x) << "the other file from its first column";
+    EXPECT_EQ(editor.line1_y, y) << "and its first line";
 }
 
 // While the text was being edited (after every keystroke,

@@ -194,9 +194,7 @@ void image_toolbar(AppState& state, const FrameState& frame, const ImagePlace& i
         ImGui::EndPopup();
     }
     // Over the image, where it stays in view while the panels scroll.
-    ImGui::PushItemWidth(ImGui::GetFontSize() * 12.0f);
-    time_panel(state);
-    ImGui::PopItemWidth();
+    time_panel(state, image.area.x1 - pad - ImGui::GetStyle().WindowPadding.x);
     note_window("image toolbar");
     ImGui::End();
 }

@@ -48,9 +48,15 @@ void selection_keys(AppState& state) {
     if (pressed(keys::period) || pressed(keys::keypad_decimal)) frame_selection(state);
 }
 
+// How soon after the first Esc (nothing open, nothing unsaved) a second quits.
+constexpr double kEscapeAgainSeconds = 2.0;
+
 // Esc cancels a drag that moves an object, else closes whatever is open first
 // (a popup, a colour picker, a combo; a text field or a widget being dragged
-// handles Esc itself) and asks to quit only when nothing is.
+// handles Esc itself) and asks to quit only when nothing is. Without unsaved
+// work it quits on a second Esc: one Esc more than what was open (pressed
+// twice to be sure) would close the window, and the render, view and A
+// snapshot with it.
 void handle_escape(AppState& state) {
     if (!pressed(keys::escape)) return;
     if (state.drags.object) {
@@ -63,7 +69,15 @@ void handle_escape(AppState& state) {
         return;
     }
     if (ImGui::IsAnyItemActive() || ImGui::GetIO().WantTextInput) return;
-    request_quit(state);
+    const double now = ImGui::GetTime();
+    std::optional<double>& asked = state.view.escape_to_quit_at;
+    if (!has_unsaved_work(state) && !(asked && now - *asked <= kEscapeAgainSeconds)) {
+        asked = now;
+        state.message = "Esc again quits (Ctrl+Q quits at once)";
+        return;
+    }
+    asked.reset();
+    request_quit(state);  // asks first about unsaved work
 }
 
 // Space toggles the pause when let go, unless it was held for a pan.

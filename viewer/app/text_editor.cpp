@@ -451,6 +451,14 @@ void text_editor(AppState& state, TextEditorState& ed, float x0, float y0, float
     const float gutter = ImGui::CalcTextSize(widest).x + ImGui::CalcTextSize("  ").x;
     ImGui::BeginChild("##scroll", ImVec2(0, editor_height), true,
                       ImGuiWindowFlags_HorizontalScrollbar);
+    // One view for every file: another file shown (opened, or an included
+    // one) would keep the scroll of the one before, cut off at the left.
+    if (doc.path.native() != ed.scrolled_path || ed.shown_file != ed.scrolled_file) {
+        ed.scrolled_path = doc.path.native();
+        ed.scrolled_file = ed.shown_file;
+        ImGui::SetScrollX(0.0f);
+        ImGui::SetScrollY(0.0f);
+    }
     // Each file in a widget of its own: ImGui keeps a widget's undo history
     // while it is active, and one file's must never apply to another's text.
     ImGui::PushID(ed.shown_file.c_str());
@@ -517,11 +525,35 @@ void text_editor(AppState& state, TextEditorState& ed, float x0, float y0, float
         draw->AddRectFilled(ImVec2(left, line_y(current)), ImVec2(right, line_y(current) + line_h),
                             kCurrentLine);
     }
+    // The numbers stay at the view's left edge when the text scrolls
+    // sideways (the cursor at the end of a long line): they are what the
+    // diagnostics point at. The text scrolled under them is covered, over
+    // the text: the multiline widget draws it in a child window of its own,
+    // which ImGui draws after this one.
+    const float scroll_x = ImGui::GetScrollX();
+    const float numbers_x = left + scroll_x;
+    ImDrawList* numbers = draw;
+    if (scroll_x > 0.0f) {
+        char name[256];
+        ImFormatString(name, sizeof name, "%s/%s_%08X", ImGui::GetCurrentWindow()->Name, "##source",
+                       widget);
+        if (const ImGuiWindow* text_window = ImGui::FindWindowByName(name)) {
+            numbers = text_window->DrawList;
+            const ImGuiWindow* view = ImGui::GetCurrentWindow();
+            numbers->PushClipRect(view->InnerClipRect.Min, view->InnerClipRect.Max);
+            ImVec4 background = ImGui::GetStyleColorVec4(ImGuiCol_WindowBg);
+            background.w = 1.0f;
+            numbers->AddRectFilled(ImVec2(view->InnerClipRect.Min.x, line_y(first)),
+                                   ImVec2(numbers_x + gutter, line_y(last) + line_h),
+                                   ImGui::ColorConvertFloat4ToU32(background));
+        }
+    }
     for (int line = first; line <= last; ++line) {
         char number[16];
         std::snprintf(number, sizeof number, "%*d", static_cast<int>(std::strlen(widest)), line);
-        draw->AddText(ImVec2(left, line_y(line)), kLineNumber, number);
+        numbers->AddText(ImVec2(numbers_x, line_y(line)), kLineNumber, number);
     }
+    if (numbers != draw) numbers->PopClipRect();
     {
         for (const Diagnostic& d : doc.diagnostics) {
             if (d.pos.line <= 0 || d.pos.line > lines || !marked(state, ed, d)) continue;

@@ -56,6 +56,9 @@ struct TextEditorState {
     // and the height of a line, in window units.
     float line1_x = 0.0f, line1_y = 0.0f, line_height = 0.0f;
     float cursor_x = 0.0f;  // the cursor's x, while the widget is active
+    // The scene file and shown file the view's scroll is of: another starts
+    // at its top left.
+    std::string scrolled_path, scrolled_file;
     // An error's line as drawn, its storage kept so that a frame like the
     // last one allocates nothing.
     std::string label;

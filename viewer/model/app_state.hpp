@@ -304,6 +304,9 @@ struct ViewState {
     std::optional<RegionView> region_view;
     CompareState compare;
     bool show_ui = true;
+    // When (ImGui's time, seconds) an Esc with nothing open and nothing
+    // unsaved asked for a second one to quit.
+    std::optional<double> escape_to_quit_at;
     float sidebar_width = kDefaultPanelWidth;  // in font heights, so that it scales with the font
     ViewerSettings saved_settings;             // as in config.settings_file
 };

@@ -83,6 +83,13 @@ void reset_free_camera(ViewState& view, const Scene& scene) {
 
 bool copy_free_camera_to_scene(AppState& state, const std::string& name) {
     if (!state.doc.loaded || state.doc.scene.cameras.empty()) return false;
+    // Typed text with errors is the document (the panels are read-only): a
+    // camera added to the last good scene would be in no text, lost when the
+    // text parses.
+    if (state.doc.draft) {
+        state.message = "Not added: the text has errors; fix them first";
+        return false;
+    }
     if (find_camera(state.doc.scene, name) >= 0) {
         state.message = "A camera is already called \"" + name + "\": choose another name";
         return false;
@@ -109,6 +116,10 @@ bool copy_free_camera_to_scene(AppState& state, const std::string& name) {
 }
 
 bool focus_camera_at(AppState& state, int x, int y) {
+    if (state.doc.draft) {  // as copy_free_camera_to_scene
+        state.message = "Not focused: the text has errors; fix them first";
+        return false;
+    }
     if (state.view.free_camera_active) {
         state.message =
             "The free camera has no lens: choose a scene camera (View) to focus it with Ctrl+click";

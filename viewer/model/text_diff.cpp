@@ -1,5 +1,7 @@
 #include "model/text_diff.hpp"
 
+#include "model/common_ends.hpp"
+
 #include <algorithm>
 #include <cstdint>
 #include <optional>
@@ -89,12 +91,7 @@ std::optional<std::vector<Step>> shortest_edit(std::span<const std::string_view>
 // removed and `b`'s added.
 std::vector<DiffLine> all_lines(const std::vector<std::string_view>& a,
                                 const std::vector<std::string_view>& b, bool& coarse) {
-    std::size_t prefix = 0;
-    while (prefix < a.size() && prefix < b.size() && a[prefix] == b[prefix]) ++prefix;
-    std::size_t suffix = 0;
-    while (suffix < a.size() - prefix && suffix < b.size() - prefix &&
-           a[a.size() - 1 - suffix] == b[b.size() - 1 - suffix])
-        ++suffix;
+    const auto [prefix, tail, suffix] = common_ends(a, b);
     const std::size_t n = a.size() - prefix - suffix, m = b.size() - prefix - suffix;
     std::vector<DiffLine> out;
     int old_line = 0, new_line = 0;

@@ -176,6 +176,16 @@ std::filesystem::path reference_folder(const std::filesystem::path& file,
 // The language reads glTF 2.0 (docs/language.md §13.5). Assimp's glTF 1.0
 // importer is left out: on malformed input it reads past its buffers
 // (found by fuzz/model_fuzzer), and no current tool writes glTF 1.0.
+// The file's first bytes, enough to tell a format by its signature; fewer
+// when it is shorter or cannot be read (Assimp then says why).
+std::vector<std::uint8_t> file_head(const std::filesystem::path& file) {
+    std::vector<std::uint8_t> head(16);
+    std::ifstream in(file, std::ios::binary);
+    in.read(reinterpret_cast<char*>(head.data()), static_cast<std::streamsize>(head.size()));
+    head.resize(static_cast<std::size_t>(std::max<std::streamsize>(0, in.gcount())));
+    return head;
+}
+
 void leave_out_gltf1(Assimp::Importer& importer) {
     for (std::size_t i = 0; i < importer.GetImporterCount(); ++i) {
         const aiImporterDesc* info = importer.GetImporterInfo(i);
@@ -413,6 +423,11 @@ Expected<Model> import_model(const std::filesystem::path& file, const std::files
     try {
         Assimp::Importer importer;
         leave_out_gltf1(importer);
+        if (std::string problem =
+                unread_format_problem(file_head(file), importer.IsExtensionSupported(".wrl"),
+                                      importer.IsExtensionSupported(".m3d"));
+            !problem.empty())
+            return Error{file_message(file, problem)};
         auto* io = new ConfinedIOSystem(reference_folder(file, folder));
         importer.SetIOHandler(io);  // the importer owns it
         const aiScene* scene = importer.ReadFile(file.string(), 0);

@@ -57,7 +57,20 @@ std::string located_number(const std::string& reason, std::span<const std::uint8
     std::string where("line ");
     where.append(std::to_string(line)).append(", column ").append(std::to_string(column));
     where.append(" (byte ").append(std::to_string(at)).append("): a number was expected, not ");
-    if (word == 0) return where.append("nothing");
+    if (word == 0) {
+        // Spaces (or line ends and tabs, shown as '?') before a number: the
+        // importer did not skip them.
+        std::size_t at_word = 0;
+        while (at_word < shown.size() && (shown[at_word] == ' ' || shown[at_word] == '?'))
+            ++at_word;
+        if (at_word == 0 || at_word == shown.size()) return where.append("nothing");
+        std::size_t end = at_word;
+        while (end < shown.size() && end - at_word < 40 && shown[end] != ' ' && shown[end] != '?')
+            ++end;
+        return where.append("the white space before '")
+            .append(shown.substr(at_word, end - at_word))
+            .append("' (the model reader does not skip it there)");
+    }
     return where.append("'").append(shown.substr(0, word)).append("'");
 }
 
@@ -73,6 +86,20 @@ std::string wide_text_problem(std::span<const std::uint8_t> bytes) {
     return std::string("the file is ") + encoding +
            " text (it starts with a byte order mark), which the model reader does not read: "
            "save it as UTF-8";
+}
+
+std::string unread_format_problem(std::span<const std::uint8_t> head, bool reads_vrml,
+                                  bool reads_m3d) {
+    constexpr std::string_view kConvert =
+        ", which the model reader does not read: convert it to "
+        "glTF 2.0, OBJ or PLY";
+    if (!reads_vrml && starts_with(head, {'#', 'V', 'R', 'M', 'L'}))
+        return std::string("the file is VRML").append(kConvert);
+    // Binary Model 3D starts "3DMO", its text form "3dmodel".
+    if (!reads_m3d &&
+        (starts_with(head, {'3', 'D', 'M', 'O'}) || starts_with(head, {'3', 'd', 'm', 'o', 'd'})))
+        return std::string("the file is Model 3D (.m3d, .a3d)").append(kConvert);
+    return "";
 }
 
 std::string import_failure(const std::string& reason, std::span<const std::uint8_t> bytes) {

@@ -14,6 +14,13 @@ namespace jt {
 // be read, or "" when it does not start with one.
 std::string wide_text_problem(std::span<const std::uint8_t> bytes);
 
+// Why a file whose first bytes name a format this Assimp was built without
+// (VRML, Model 3D: Debian's has neither) cannot be read, or "". Assimp would
+// take such a file for another format and fail in that format's words, or
+// read it as a model of nothing.
+std::string unread_format_problem(std::span<const std::uint8_t> head, bool reads_vrml,
+                                  bool reads_m3d);
+
 // Assimp's `reason` for refusing `bytes`, reworded when the bytes tell the
 // cause better: a compressed or zip file it does not open, and a number that
 // does not parse, located by line, column and byte. Otherwise `reason`.

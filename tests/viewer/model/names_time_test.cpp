@@ -74,7 +74,7 @@ TEST_F(ViewerNames, ADefineFromTheCommandLineIsAppliedOnOpenAndOnEveryReload) {
         << "lift = 2 * r sees the --define";
     bool noted = false;
     for (const Diagnostic& d : state.doc.parse_diagnostics)
-        noted = noted || d.message.find("set by --define") != std::string::npos;
+        noted = noted || d.message.find("' is set by ") != std::string::npos;
     EXPECT_TRUE(noted) << "the file's own definition is noted as ignored";
     // Another program changes the file: the reload still applies the define.
     std::string changed = kNamed;

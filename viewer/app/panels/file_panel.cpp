@@ -60,7 +60,23 @@ const char* why_not_save(const AppState& state) {
 void file_panel(AppState& state) {
     if (!panel_header("File", "File", true)) return;
     const float font = ImGui::GetFontSize();
-    ImGui::TextWrapped("%s", state.doc.path.empty() ? "(no scene)" : state.doc.path.c_str());
+    // What is under way with the file, on the file's line: a line of its own
+    // moved every field below it by a row (for every reload, a frame or
+    // more) under a mouse about to click one. Where it does not fit, the
+    // bar above the image and the status line say it.
+    const char* path = state.doc.path.empty() ? "(no scene)" : state.doc.path.c_str();
+    const char* note = state.files.pending_reload  ? "changed on disk: choose above the image"
+                       : state.files.loader.busy() ? "loading..."
+                                                   : nullptr;
+    if (note && ImGui::CalcTextSize(path).x + ImGui::GetStyle().ItemSpacing.x +
+                        ImGui::CalcTextSize(note).x <=
+                    ImGui::GetContentRegionAvail().x) {
+        ImGui::TextUnformatted(path);
+        ImGui::SameLine();
+        ImGui::TextColored(warning_colour, "%s", note);
+    } else {
+        ImGui::TextWrapped("%s", path);
+    }
     ImGui::SetNextItemWidth(-font * 4.0f);
     const bool enter = ImGui::InputTextWithHint(
         "##open", "scene.jts", &state.fields.open_path_input, ImGuiInputTextFlags_EnterReturnsTrue);
@@ -107,9 +123,6 @@ void file_panel(AppState& state) {
                "Fill this empty file with an image size, a camera and a light, then add objects "
                "in the Objects panel (Ctrl+Z takes it back)"))
         start_new_scene(state);
-    if (state.files.loader.busy()) ImGui::TextDisabled("Loading...");
-    if (state.files.pending_reload)
-        ImGui::TextColored(warning_colour, "Choose in the bar above the image: the file changed.");
     save_conflict_choice(state);
     ImGui::SetNextItemWidth(-font * 8.5f);
     ImGui::InputTextWithHint("##scene_as", "copy.jts", &state.fields.save_scene_path);

@@ -35,7 +35,7 @@ void help_panel() {
         {"A", "show snapshot A / the live image"},
         {"H", "hide / show the panels"},
         {"T", "show / hide the text editor"},
-        {"Esc", "cancel a move (Alt+drag); close a popup or picker; with none open, quit"},
+        {"Esc", "cancel a move (Alt+drag); close a popup or picker; with none open, twice quits"},
         {"Ctrl+Q", "quit (asks first about unsaved edits)"},
         {"Left drag", "orbit (free camera)"},
         {"Right drag", "pan (free camera)"},

@@ -181,7 +181,9 @@ void mesh_figure_rows(AppState& state, int primitive) {
     }
     figure_line(std::to_string(figures->triangles) + " triangles, " +
                 std::to_string(figures->vertices) + " vertices, normals " +
-                (figures->file_normals ? "from the file" : "generated"));
+                (figures->normals == "file"   ? "from the file"
+                 : figures->normals == "none" ? "none (shaded flat)"
+                                              : figures->normals));
     if (figures->world_box.empty()) {
         ImGui::TextDisabled("no triangle in the world (none, or flattened)");
     } else {

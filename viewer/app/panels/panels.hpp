@@ -41,8 +41,9 @@ struct DiagnosticsText {
 void diagnostics_panel(AppState& state, DiagnosticsText& text);
 void help_panel();
 // The time slider and play button, when the scene uses `clock` (drawn in
-// the image's toolbar, which stays in view while the panels scroll).
-void time_panel(AppState& state);
+// the image's toolbar, which stays in view while the panels scroll), ending
+// at screen x `right`.
+void time_panel(AppState& state, float right);
 // The render's progress, then the last message, or `inspected` (the pixel
 // inspector's text, when not empty) in its place. With errors the
 // Diagnostics panel lists out of the sidebar's view (`diagnostics`, when

@@ -44,7 +44,10 @@ struct MeshInfo {
     std::filesystem::path path;  // where it was read from (asset_path)
     std::size_t triangles = 0;
     std::size_t vertices = 0;
-    bool file_normals = false;        // the file gives vertex normals; else they are generated
+    // Where its shading normals come from: "file" (the file gives them),
+    // "generated" (smooth with smooth_angle: the missing ones are made) or
+    // "none" (its triangles are shaded flat, docs/language.md 14.4).
+    std::string normals;
     std::string shading;              // the mesh's `shading`
     std::string materials;            // the mesh's `materials`
     std::vector<MeshPartInfo> parts;  // with materials "file": mesh_parts

@@ -65,7 +65,9 @@ MeshInfo mesh_info(const Scene& scene, const Primitive& primitive, const Mesh& m
     info.path = asset_path(scene, mesh.file);
     info.triangles = model.triangles.size();
     info.vertices = model.positions.size();
-    info.file_normals = has_normals(model);
+    info.normals = has_normals(model)                                                ? "file"
+                   : mesh.shading == kSmoothShading && mesh.smooth_angle.has_value() ? "generated"
+                                                                                     : "none";
     info.shading = mesh.shading;
     info.materials = mesh.materials;
     info.parts = mesh_parts(model);

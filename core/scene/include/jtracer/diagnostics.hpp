@@ -36,6 +36,12 @@ struct Diagnostic {
 
 bool has_errors(const std::vector<Diagnostic>& diagnostics);
 
+// Whether `d` asks for the frame's size (a width or height of 0): a render may
+// still set it, so a front end that sets the size itself (Python's
+// render(width=)) or describes the scene whatever its size (`jtracer-cli info`)
+// leaves it aside.
+bool asks_for_frame_size(const Diagnostic& d);
+
 // "scene.jts:3:12: error: MESSAGE\n    radius 2;\n           ^\n"
 // `source` is the whole file text, used to quote the line; it may be empty.
 std::string format_diagnostic(const Diagnostic& diagnostic, std::string_view filename,

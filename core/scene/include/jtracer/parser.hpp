@@ -59,6 +59,23 @@ struct EarlierParse {
     std::vector<PrimitiveReading> readings;  // parallel to `primitives`
 };
 
+// How the messages about ParseOptions::defines and ::clock name them: in the
+// words the front end's user gives them with. The defaults are this API's
+// own names; jtracer-cli's are its flags (frontend/render_flags.hpp:
+// "--define", "--clock"), the Python module's its arguments ("defines",
+// "clock=").
+struct ValueNames {
+    // What sets the defines: "'r' is set by --define; this definition is ignored".
+    std::string_view defines = "ParseOptions::defines";
+    // One define, its name between these: "--define r", "defines['r']".
+    std::string_view define_before = "define ";
+    std::string_view define_after = "";
+    // What sets the clock: "clock cannot be defined; set it with --clock".
+    std::string_view clock = "ParseOptions::clock";
+
+    std::string define(std::string_view name) const;
+};
+
 struct ParseOptions {
     // False: leave ParseResult::source empty. A tool that only renders needs
     // the source map only to locate validation findings, and for a million
@@ -70,6 +87,8 @@ struct ParseOptions {
     std::vector<Define> defines = {};
     // The value of `clock` (docs/language.md §15.4).
     double clock = 0.0;
+    // How diagnostics name `defines` and `clock`.
+    ValueNames value_names = {};
     // The main file's path as given (docs/language.md §15.6): `include`
     // paths are relative to its folder, and a diagnostic in an included file
     // is named from it ("scenes/a.jts" for `include "a.jts";` in
@@ -103,8 +122,9 @@ struct ParseOptions {
 
 // Splits and checks one `--define` argument "NAME=VALUE": NAME a name that is
 // not reserved (nor `clock`), VALUE a string literal or an expression of
-// numbers, `pi` and `clock`. The error says what is wrong, without the option.
-Expected<Define> parse_define(std::string_view argument);
+// numbers, `pi` and `clock`. The error says what is wrong, without the
+// option; `names` says what sets the clock instead.
+Expected<Define> parse_define(std::string_view argument, const ValueNames& names = {});
 
 struct ParseResult {
     Scene scene;

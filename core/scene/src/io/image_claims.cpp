@@ -4,7 +4,10 @@
 #include "jtracer/png.hpp"
 
 #include <algorithm>
+#include <cctype>
 #include <iterator>
+#include <string>
+#include <string_view>
 
 namespace jt {
 
@@ -59,11 +62,34 @@ std::uint64_t fewest_bytes_for(std::span<const std::uint8_t> bytes, std::int64_t
         // A header cut short before its bit count counts one bit a pixel.
         const std::optional<BmpHeader> header = read_bmp_header(bytes);
         const std::uint64_t bits = header ? std::max<std::uint64_t>(1, header->bits_per_pixel) : 1;
+        // Uncompressed (or bit-field) rows fill the file exactly from the
+        // offset its header gives, each padded to 4 bytes: one cut short by
+        // less than its headers take would read its last rows as zeros.
+        if (header && (header->compression == 0 || header->compression == 3)) {
+            const std::uint64_t offset = bytes[10] | bytes[11] << 8 | bytes[12] << 16 |
+                                         static_cast<std::uint64_t>(bytes[13]) << 24;
+            return offset + h * ((w * bits + 31) / 32 * 4);
+        }
         return h * ((w * bits + 7) / 8);
     }
     if (bytes.size() >= 2 && bytes[0] == 0xFF && bytes[1] == 0xD8)
         return ((w + 7) / 8) * ((h + 7) / 8) / 4;
     return 0;
+}
+
+std::string format_not_read(std::span<const std::uint8_t> bytes) {
+    const std::string_view text(reinterpret_cast<const char*>(bytes.data()), bytes.size());
+    if (text.starts_with("GIF87a") || text.starts_with("GIF89a")) return "a GIF image";
+    if (text.size() > 2 && text[0] == 'P' && text[1] >= '1' && text[1] <= '7' &&
+        std::isspace(static_cast<unsigned char>(text[2])))
+        return "a Netpbm image (PBM, PGM or PPM)";
+    if (text.starts_with(std::string_view("II*\0", 4)) ||
+        text.starts_with(std::string_view("MM\0*", 4)))
+        return "a TIFF image";
+    if (text.size() >= 12 && text.starts_with("RIFF") && text.substr(8, 4) == "WEBP")
+        return "a WebP image";
+    if (text.ends_with(std::string_view("TRUEVISION-XFILE.\0", 18))) return "a TGA image";
+    return "";
 }
 
 }  // namespace jt

@@ -1,8 +1,11 @@
 #include "jtracer/image_file.hpp"
 
+#include "io/bmp_header.hpp"
 #include "io/file_bytes.hpp"
+#include "io/image_claims.hpp"
 #include "jtracer/bmp.hpp"
 #include "jtracer/png.hpp"
+#include "jtracer/texture.hpp"
 
 #include <algorithm>
 #include <cctype>
@@ -31,6 +34,28 @@ Expected<void> write_image(const std::filesystem::path& path, const Image8& imag
     return format == ImageFormat::png ? write_png(path, image) : write_bmp(path, image);
 }
 
+namespace {
+
+// decode_bmp reads what JTracer writes, 24 bits a pixel uncompressed. Any
+// other BMP an image map reads (1, 4, 8, 16 or 32 bits, bit-field masks) is
+// decoded as an image map is, so that a reference saved by another program
+// compares as the picture it is instead of being refused.
+Expected<Image8> decode_any_bmp(std::span<const std::uint8_t> bytes) {
+    const std::optional<BmpHeader> header = read_bmp_header(bytes);
+    if (!header || (header->bits_per_pixel == 24 && header->compression == 0))
+        return decode_bmp(bytes);
+    Expected<Texture> texture = decode_texture(bytes);
+    if (!texture) return texture.error();
+    // Both keep the bottom row first; a BMP has 8-bit samples.
+    Image8 image;
+    image.width = texture->width;
+    image.height = texture->height;
+    image.rgb = std::move(texture->rgb8);
+    return image;
+}
+
+}  // namespace
+
 Expected<Image8> read_image(const std::filesystem::path& path) {
     Expected<std::vector<std::uint8_t>> bytes = read_file_bytes(path);
     if (!bytes) return bytes.error();
@@ -38,8 +63,18 @@ Expected<Image8> read_image(const std::filesystem::path& path) {
     const bool bmp = bytes->size() >= 2 && (*bytes)[0] == 'B' && (*bytes)[1] == 'M';
     // Neither signature: what the name says decides which reader explains why.
     const bool named_bmp = format_named_by(path) == ImageFormat::bmp;
-    Expected<Image8> image =
-        bmp || (named_bmp && !has_png_signature(*bytes)) ? decode_bmp(*bytes) : decode_png(*bytes);
+    // Neither a BMP nor a PNG, and a format that tells itself: named.
+    if (!bmp && !has_png_signature(*bytes)) {
+        const std::string format = bytes->size() >= 2 && (*bytes)[0] == 0xFF && (*bytes)[1] == 0xD8
+                                       ? "a JPEG image"
+                                       : format_not_read(*bytes);
+        if (!format.empty())
+            return Error{
+                file_message(path, "it is " + format + ", not a BMP or PNG image: save it as PNG")};
+    }
+    Expected<Image8> image = bmp || (named_bmp && !has_png_signature(*bytes))
+                                 ? decode_any_bmp(*bytes)
+                                 : decode_png(*bytes);
     if (!image) return Error{file_message(path, image.error().message)};
     return image;
 }

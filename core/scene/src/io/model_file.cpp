@@ -43,9 +43,9 @@ std::vector<std::string> model_warnings(const Model& model) {
     const std::size_t broken = out.out_of_range + out.not_finite;
     if (!model.triangles.empty()) {
         if (broken > 0)
-            warnings.push_back(std::to_string(broken) + " of its " +
-                               std::to_string(broken + model.triangles.size()) + " triangles " +
-                               (broken == 1 ? "is" : "are") + " left out: " + why);
+            warnings.push_back("has " + std::to_string(broken) + " of its " +
+                               std::to_string(broken + model.triangles.size()) +
+                               " triangles left out: " + why);
         return warnings;
     }
     if (broken > 0) {

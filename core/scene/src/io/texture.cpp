@@ -13,7 +13,9 @@
 #include <stb_image.h>
 
 #include <algorithm>
+#include <cctype>
 #include <limits>
+#include <string_view>
 #include <utility>
 #include <variant>
 
@@ -46,6 +48,7 @@ bool exceeds_cap(std::pair<std::int64_t, std::int64_t> size) {
 std::string header_problem(std::span<const std::uint8_t> bytes, int& width, int& height) {
     if (bytes.size() > static_cast<std::size_t>(std::numeric_limits<int>::max()))
         return "the file is too large";
+    if (bytes.empty()) return "the file is empty";
     if (has_jpeg_signature(bytes)) {
         const Expected<JpegSize> size = read_jpeg_size(bytes);
         if (!size) return size.error().message;
@@ -76,8 +79,12 @@ std::string header_problem(std::span<const std::uint8_t> bytes, int& width, int&
         int channels = 0;
         forget_stb_failure();
         if (!stbi_info_from_memory(bytes.data(), static_cast<int>(bytes.size()), &width, &height,
-                                   &channels))
+                                   &channels)) {
+            if (std::string format = format_not_read(bytes); !format.empty())
+                return "not a readable PNG, JPEG or BMP image: it is " + format +
+                       "; save it as PNG";
             return std::string("not a readable PNG, JPEG or BMP image: ") + stb_failure_reason();
+        }
     }
     if (width <= 0 || height <= 0)
         return "the image has no pixels (" + std::to_string(width) + "x" + std::to_string(height) +
@@ -99,6 +106,18 @@ std::vector<Sample> bottom_up(const Sample* samples, int width, int height) {
         std::copy_n(samples + row * static_cast<std::size_t>(flipped_row(j, height)), row,
                     out.data() + row * static_cast<std::size_t>(j));
     return out;
+}
+
+// A TGA before version 2 has no signature to tell it by: its name does.
+std::string named_by_extension(const std::filesystem::path& path, const Error& error) {
+    constexpr std::string_view kUnknown =
+        "not a readable PNG, JPEG or BMP image: unknown image type";
+    std::string extension = path.extension().string();
+    std::transform(extension.begin(), extension.end(), extension.begin(),
+                   [](unsigned char c) { return static_cast<char>(std::tolower(c)); });
+    if (error.message == kUnknown && extension == ".tga")
+        return "not a readable PNG, JPEG or BMP image: it is a TGA image; save it as PNG";
+    return error.message;
 }
 
 }  // namespace
@@ -145,7 +164,7 @@ Expected<std::shared_ptr<const Texture>> load_texture(const std::filesystem::pat
         Expected<std::vector<std::uint8_t>> bytes = read_file_bytes(path);
         if (!bytes) return bytes.error();
         Expected<Texture> texture = decode_texture(*bytes);
-        if (!texture) return Error{file_message(path, texture.error().message)};
+        if (!texture) return Error{file_message(path, named_by_extension(path, texture.error()))};
         return texture;
     };
     if (error || !stamp.exists) return decode().error();  // read_file_bytes's own words

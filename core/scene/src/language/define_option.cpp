@@ -75,7 +75,13 @@ bool evaluate_define_value(std::string_view text, double clock, ExprValue& value
 
 }  // namespace lang
 
-Expected<Define> parse_define(std::string_view argument) {
+std::string ValueNames::define(std::string_view name) const {
+    std::string text(define_before);
+    text.append(name).append(define_after);
+    return text;
+}
+
+Expected<Define> parse_define(std::string_view argument, const ValueNames& names) {
     const std::size_t equals = argument.find('=');
     if (equals == std::string_view::npos)
         return Error{"expected NAME=VALUE, like r=2 or 'c=<1, 0, 0>', got '" +
@@ -92,7 +98,8 @@ Expected<Define> parse_define(std::string_view argument) {
     if (!good)
         return Error{"'" + define.name +
                      "' is not a name (letters, digits and '_', not starting with a digit)"};
-    if (name == "clock") return Error{"clock cannot be set with --define; use --clock"};
+    if (name == "clock")
+        return Error{"clock cannot be defined; set it with " + std::string(names.clock)};
     if (lang::is_reserved_name(name))
         return Error{"'" + define.name +
                      "' is reserved (a keyword, a function or pi) and cannot be defined"};

@@ -9,6 +9,10 @@ bool has_errors(const std::vector<Diagnostic>& diagnostics) {
                        [](const Diagnostic& d) { return d.severity == Severity::error; });
 }
 
+bool asks_for_frame_size(const Diagnostic& d) {
+    return d.setting == "width" || d.setting == "height";
+}
+
 namespace {
 
 // The text of 1-based line `line`, without its line break; empty when out of range.

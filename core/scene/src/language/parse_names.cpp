@@ -23,13 +23,14 @@ void SceneParser::set_command_line_names(const ParseOptions& options) {
         ExprValue value;
         std::string error;
         if (!evaluate_define_value(define.value, options.clock, value, error)) {
-            sink_.error({}, "--define " + define.name + "=" + define.value + ": " + error);
+            sink_.error(
+                {}, options.value_names.define(define.name) + "=" + define.value + ": " + error);
             continue;
         }
         Symbol* symbol = names_.find(define.name);
         if (symbol) {
             if (sink_.accepts_warnings())
-                sink_.warning({}, "--define " + define.name +
+                sink_.warning({}, options.value_names.define(define.name) +
                                       " is given more than once; the last value is used");
         } else {
             symbol = &names_.add(define.name);
@@ -113,7 +114,9 @@ void SceneParser::parse_define() {
         }
     }
     if (overridden) {
-        sink_.note(name.pos, quote(name.text) + " is set by --define; this definition is ignored");
+        sink_.note(name.pos, quote(name.text) + " is set by " +
+                                 std::string(options_.value_names.defines) +
+                                 "; this definition is ignored");
     }
     if (source_map_ && claimed) {
         result_.source.definitions.push_back(
@@ -147,8 +150,9 @@ void SceneParser::parse_named_material() {
     bool claimed = claim_name(name, overridden);
     if (overridden) {
         // A --define holds a value of that name: a material cannot replace it.
-        sink_.error(name.pos,
-                    quote(name.text) + " is set by --define; a material cannot have its name");
+        sink_.error(name.pos, quote(name.text) + " is set by " +
+                                  std::string(options_.value_names.defines) +
+                                  "; a material cannot have its name");
         claimed = false;
     }
     advance();

@@ -72,7 +72,8 @@ ParseResult SceneParser::run() {
     parse_file();
     for (const auto& [name, symbol] : command_line_)
         if (!symbol->defined_in_file && sink_.accepts_warnings())
-            sink_.warning({}, "--define " + name + ": the scene defines no " + quote(name));
+            sink_.warning(
+                {}, options_.value_names.define(name) + ": the scene defines no " + quote(name));
     result_.diagnostics = sink_.take();
     result_.reads_clock = result_.reads_clock || expressions_.read_clock();
     if (!source_map_) result_.source = {};

@@ -34,9 +34,9 @@ struct FrameSetup {
     ImageFormat format = ImageFormat::bmp;
 };
 
-// `program` ("jtracer-cli") starts the messages that are not diagnostics.
-// `region` (top-left origin, region.hpp) outside the frame is a usage error
-// (exit_usage, "--region: ...").
+// `program` ("jtracer-cli") starts the messages that are not diagnostics;
+// they name the flags as flags.names does. `region` (top-left origin,
+// region.hpp) outside the frame is a usage error (exit_usage, "--region: ...").
 FrameSetup set_up_frame(std::string_view program, const RenderFlags& flags,
                         const std::optional<FrameRegion>& region = std::nullopt);
 

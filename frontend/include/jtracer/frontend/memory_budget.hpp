@@ -4,6 +4,7 @@
 // kernel's out-of-memory killer half way through.
 
 #include "jtracer/error.hpp"
+#include "jtracer/frontend/argument_names.hpp"
 #include "jtracer/render_job.hpp"
 
 #include <cstdint>
@@ -20,8 +21,9 @@ std::uint64_t render_memory_bytes(const RenderOptions& options, bool region_outp
 // available memory and the address-space limit (ulimit -v); 0 when unknown.
 std::uint64_t available_memory_bytes();
 
-// Whether the render fits; the error explains why not, in the command line's
-// words (--width/--height, --samples).
-Expected<void> check_render_memory(const RenderOptions& options, bool region_output);
+// Whether the render fits; the error explains why not, naming the settings
+// as `names` does (--width/--height, --samples).
+Expected<void> check_render_memory(const RenderOptions& options, bool region_output,
+                                   const ArgumentNames& names = {});
 
 }  // namespace jt::frontend

@@ -4,6 +4,7 @@
 // both read a render the same way.
 
 #include "jtracer/diagnostics.hpp"
+#include "jtracer/frontend/argument_names.hpp"
 #include "jtracer/frontend/command_line.hpp"
 #include "jtracer/frontend/frame_numbering.hpp"
 #include "jtracer/frontend/progress.hpp"
@@ -36,12 +37,15 @@ struct RenderFlags {
     // --frames N and --frame-range A..B: a sequence at clocks 0..1 (§15.4).
     std::optional<int> frames;
     std::optional<FrameRange> frame_range;
+    // How the messages about these name them.
+    ArgumentNames names = {};
 };
 
-// The options the scene is parsed with: --define and --clock.
+// The options the scene is parsed with: --define and --clock, named as
+// flags.names says.
 ParseOptions parse_options_for(const RenderFlags& flags);
 // The same from add_scene_value_flags' two values (already checked by it),
-// with the source map on.
+// with the source map on, named as the command line names them.
 ParseOptions scene_value_options(const std::vector<std::string>& defines,
                                  std::optional<double> clock);
 
@@ -60,8 +64,8 @@ void check_sequence_flags(const RenderFlags& flags);
 void add_scene_value_flags(CLI::App& app, std::vector<std::string>& defines,
                            std::optional<double>& clock);
 
-// Adds to each diagnostic that asks for a render setting the flag that sets
-// it: "... set 'width' in render_settings or pass --width".
-void name_setting_flags(std::vector<Diagnostic>& diagnostics);
+// Adds to each diagnostic that asks for a render setting what sets it, as
+// `names` names it: "... set 'width' in render_settings or pass --width".
+void name_setting_flags(std::vector<Diagnostic>& diagnostics, const ArgumentNames& names = {});
 
 }  // namespace jt::frontend
