@@ -1,5 +1,7 @@
 #include "interruptible_render.hpp"
 
+#include "jtracer/atomic_file.hpp"
+
 #include <signal.h>
 #include <atomic>
 #include <chrono>
@@ -16,8 +18,14 @@ namespace {
 
 std::atomic<int> interrupted{0};
 
+// A second signal ends the process at once (an impatient Ctrl-C during a long
+// write), without leaving the write's temporary file behind.
 extern "C" void on_interrupt(int signal) {
-    interrupted.store(signal);
+    if (interrupted.exchange(signal) != 0) {
+        jt::remove_unfinished_file();
+        std::signal(signal, SIG_DFL);
+        std::raise(signal);
+    }
 }
 
 }  // namespace

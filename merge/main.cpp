@@ -3,12 +3,15 @@
 // carries where it belongs (region_file.hpp), so the order and names of the
 // parts do not matter.
 
+#include "jtracer/atomic_file.hpp"
 #include "jtracer/frontend/command_line.hpp"
 #include "jtracer/image_file.hpp"
 #include "jtracer/merge_regions.hpp"
 
+#include <signal.h>
 #include <CLI/CLI.hpp>
 
+#include <csignal>
 #include <exception>
 #include <iostream>
 #include <new>
@@ -19,6 +22,24 @@ using jt::frontend::exit_io_error;
 using jt::frontend::exit_ok;
 // 1 means parts that do not make one frame.
 constexpr int exit_bad_parts = jt::frontend::exit_scene_error;
+
+// A signal that ends the process during the write would leave the temporary
+// file beside the frame: remove it, then end as the signal asks.
+extern "C" void on_ending_signal(int signal) {
+    jt::remove_unfinished_file();
+    std::signal(signal, SIG_DFL);
+    std::raise(signal);
+}
+
+// SIGHUP too: a merge run over ssh whose connection drops. A signal ignored on
+// entry (nohup) stays ignored.
+void remove_the_temporary_file_on_signals() {
+    for (const int signal : {SIGINT, SIGTERM, SIGHUP}) {
+        struct sigaction current {};
+        if (::sigaction(signal, nullptr, &current) == 0 && current.sa_handler == SIG_IGN) continue;
+        std::signal(signal, on_ending_signal);
+    }
+}
 
 int merge(const std::vector<std::string>& part_paths, const std::string& output, bool quiet) {
     std::vector<jt::RegionPart> parts;
@@ -89,6 +110,7 @@ int main(int argc, char** argv) {
     if (std::optional<int> code =
             jt::frontend::parse_command_line(app, argc, argv, "jtracer-merge", checks))
         return *code;
+    remove_the_temporary_file_on_signals();
     try {
         return merge(part_paths, output, quiet);
     } catch (const std::bad_alloc&) {

@@ -332,6 +332,38 @@ TEST(AtomicFile, ReplacesWholeAndLeavesNoTemporary) {
     EXPECT_EQ(entries, 1) << "no temporary file left beside the target";
 }
 
+// What a handler of SIGINT or SIGTERM calls before the process ends: the
+// temporary file of the write under way goes, the old file stays whole.
+TEST(AtomicFile, AnUnfinishedFileIsRemovedForASignalHandler) {
+    fs::path dir = make_scratch_dir("atomic_unfinished");
+    const fs::path target = dir / "out.bin";
+    test::write_file(target, "old");
+    const std::vector<std::uint8_t> piece{'n', 'e', 'w'};
+    int calls = 0;
+    std::vector<std::string> during;
+    const Expected<void> written =
+        write_file_atomically(target, [&]() -> std::span<const std::uint8_t> {
+            if (++calls == 2) {
+                for (const auto& e : fs::directory_iterator(dir))
+                    during.push_back(e.path().filename().string());
+                remove_unfinished_file();
+            }
+            return calls <= 2 ? std::span<const std::uint8_t>(piece)
+                              : std::span<const std::uint8_t>();
+        });
+    EXPECT_EQ(during.size(), 2u) << "the temporary file was there while written";
+    EXPECT_FALSE(written) << "the rename of a removed file fails";
+    EXPECT_EQ(test::read_file(target), "old");
+    std::vector<std::string> left;
+    for (const auto& e : fs::directory_iterator(dir)) left.push_back(e.path().filename().string());
+    EXPECT_EQ(left, std::vector<std::string>{"out.bin"});
+
+    // Once a write is done there is nothing unfinished: the file stays.
+    ASSERT_TRUE(write_file_atomically(target, piece));
+    remove_unfinished_file();
+    EXPECT_EQ(test::read_file(target), "new");
+}
+
 TEST(AtomicFile, FailureNamesTheFileAndWritesNothing) {
     fs::path dir = make_scratch_dir("atomic_fail");
     const Expected<void> written = write_bmp(dir / "missing" / "out.bmp", sample_image());
