@@ -92,7 +92,9 @@ int main(int argc, char** argv) {
         "errors.\n");
     jt::frontend::add_version_flag(app, "jtracer-merge");
     app.add_option("-o,--output", output,
-                   "The whole frame; a name ending in .png gives a PNG, anything else a BMP")
+                   "The whole frame; a name ending in .png gives a PNG, anything else a BMP; - is "
+                   "standard output (a BMP)")
+        ->transform(jt::frontend::output_name, "", "")
         ->required()
         ->type_name("FILE");
     app.add_option("parts", part_paths, "The region files (BMP)")->required();

@@ -146,6 +146,19 @@ TEST_F(RegionCli, MergeRefusesAnOutputThatIsAlsoAPart) {
     EXPECT_NE(r.err.find("-o/--output: needs a file name"), std::string::npos) << r.err;
 }
 
+TEST_F(RegionCli, MergeWritesADashOutputToStandardOutput) {
+    const std::string size = "--width 40 --height 30 -q ";
+    ASSERT_EQ(run_shell(cli + showcase + size + "-o whole.bmp").code, 0);
+    ASSERT_EQ(run_shell(cli + showcase + size + "--region-output --region 0,0,40,15 -o a.bmp").code,
+              0);
+    ASSERT_EQ(
+        run_shell(cli + showcase + size + "--region-output --region 0,15,40,30 -o b.bmp").code, 0);
+    ProgramRun r = run_shell(merge + "-q -o - a.bmp b.bmp | cat > piped.bmp");
+    ASSERT_EQ(r.code, 0) << r.err;
+    EXPECT_FALSE(std::filesystem::exists(dir / "-"));
+    EXPECT_EQ(test::read_file(dir / "piped.bmp"), test::read_file(dir / "whole.bmp"));
+}
+
 TEST_F(RegionCli, MergeRefusesPartsOfDifferentFrameSizes) {
     ASSERT_EQ(run_shell(cli + showcase +
                         "--width 40 --height 30 -q --region-output --region "
