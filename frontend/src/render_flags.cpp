@@ -49,7 +49,7 @@ void add_render_flags(CLI::App& app, RenderFlags& o) {
     app.add_option("--progress", o.progress,
                    "How progress shows on stderr: auto|bar|log|none. auto (the default): a bar "
                    "on a terminal, nothing otherwise; log: a plain line at each multiple of 10% "
-                   "passed (10%, 20%, ...), for log files")
+                   "passed (10%, 20%, ...) and at least one a minute, for log files")
         ->transform(CLI::CheckedTransformer(modes))
         ->type_name("MODE");
     add_scene_value_flags(app, o.defines, o.clock);
