@@ -42,6 +42,12 @@ void remove_the_temporary_file_on_signals() {
 }
 
 int merge(const std::vector<std::string>& part_paths, const std::string& output, bool quiet) {
+    // Found before the parts are read, as jtracer-cli finds it before the
+    // render: the 64 bands of a 16k frame are gigabytes to read for nothing.
+    if (const jt::Expected<void> writable = jt::check_atomic_write(output); !writable) {
+        std::cerr << "jtracer-merge: " << writable.error().message << "; no part was read\n";
+        return exit_io_error;
+    }
     std::vector<jt::RegionPart> parts;
     for (const std::string& path : part_paths) {
         jt::Expected<jt::RegionPart> part = jt::read_region_bmp(path);
