@@ -10,6 +10,7 @@
 #include "jtracer/texture.hpp"
 
 #include <gtest/gtest.h>
+#include <sys/wait.h>
 #include <unistd.h>
 
 #include <algorithm>
@@ -362,6 +363,57 @@ TEST(AtomicFile, AnUnfinishedFileIsRemovedForASignalHandler) {
     ASSERT_TRUE(write_file_atomically(target, piece));
     remove_unfinished_file();
     EXPECT_EQ(test::read_file(target), "new");
+}
+
+// A writable file in a folder that is not: the message names the folder, not
+// just "Permission denied" about a file that may be written. As root (where
+// permissions do not bind) the check runs in a child as nobody.
+TEST(AtomicFile, AFolderWithoutWritePermissionIsNamed) {
+    const fs::path dir = make_scratch_dir("atomic_folder");
+    const fs::path folder = dir / "shared";
+    fs::create_directories(folder);
+    const fs::path target = folder / "out.bmp";
+    test::write_file(target, "old");
+    fs::permissions(dir, fs::perms::all & ~fs::perms::group_write & ~fs::perms::others_write);
+    fs::permissions(target, fs::perms::owner_read | fs::perms::owner_write | fs::perms::group_read |
+                                fs::perms::group_write | fs::perms::others_read |
+                                fs::perms::others_write);
+    fs::permissions(folder, fs::perms::owner_read | fs::perms::owner_exec | fs::perms::group_read |
+                                fs::perms::group_exec | fs::perms::others_read |
+                                fs::perms::others_exec);
+    std::string message;
+    if (::geteuid() == 0) {
+        int pipe_ends[2];
+        ASSERT_EQ(::pipe(pipe_ends), 0);
+        const pid_t child = ::fork();
+        ASSERT_GE(child, 0);
+        if (child == 0) {
+            ::close(pipe_ends[0]);
+            if (::setgid(65534) != 0 || ::setuid(65534) != 0) ::_exit(2);
+            const Expected<void> checked = check_atomic_write(target);
+            const std::string text = checked ? "written" : checked.error().message;
+            const bool sent = ::write(pipe_ends[1], text.data(), text.size()) ==
+                              static_cast<ssize_t>(text.size());
+            ::_exit(sent ? 0 : 3);
+        }
+        ::close(pipe_ends[1]);
+        char buffer[512];
+        for (ssize_t n; (n = ::read(pipe_ends[0], buffer, sizeof buffer)) > 0;)
+            message.append(buffer, static_cast<std::size_t>(n));
+        ::close(pipe_ends[0]);
+        int status = 0;
+        ::waitpid(child, &status, 0);
+        ASSERT_TRUE(WIFEXITED(status) && WEXITSTATUS(status) == 0) << status;
+    } else {
+        const Expected<void> checked = check_atomic_write(target);
+        message = checked ? "written" : checked.error().message;
+    }
+    fs::permissions(folder, fs::perms::owner_all, fs::perm_options::add);
+    EXPECT_NE(message.find("Permission denied"), std::string::npos) << message;
+    EXPECT_NE(message.find("temporary file in '" + folder.string() + "'"), std::string::npos)
+        << message;
+    EXPECT_NE(message.find("that folder must be writable"), std::string::npos) << message;
+    EXPECT_EQ(test::read_file(target), "old");
 }
 
 TEST(AtomicFile, FailureNamesTheFileAndWritesNothing) {

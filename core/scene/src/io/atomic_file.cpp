@@ -25,6 +25,20 @@ Error failure(const std::filesystem::path& target, int error) {
     return Error{"cannot write " + file_message(target, std::strerror(error))};
 }
 
+// A failure to make the temporary file beside `real`. A file that may be
+// written in a folder that may not (a shared render folder whose files are
+// group-writable) gives "Permission denied", which then seems to be about the
+// file: say that it is the folder.
+Error temporary_failure(const std::filesystem::path& target, const std::filesystem::path& real,
+                        int error) {
+    if (error != EACCES && error != EPERM && error != EROFS) return failure(target, error);
+    const std::filesystem::path folder =
+        real.parent_path().empty() ? std::filesystem::path(".") : real.parent_path();
+    return Error{"cannot write " + file_message(target, std::strerror(error)) +
+                 ": the image is written to a temporary file in '" + folder.string() +
+                 "', then renamed, so that folder must be writable"};
+}
+
 // 0 when every byte was written, else the errno of the failure.
 int write_all(int fd, std::span<const std::uint8_t> bytes) {
     std::size_t written = 0;
@@ -157,7 +171,7 @@ Expected<void> check_atomic_write(const std::filesystem::path& target) {
     if (place->in_place) return {};
     std::vector<char> probe = temporary_pattern(place->file);
     const int fd = ::mkstemp(probe.data());
-    if (fd < 0) return failure(target, errno);
+    if (fd < 0) return temporary_failure(target, place->file, errno);
     ::close(fd);
     ::unlink(probe.data());
     return {};
@@ -181,7 +195,7 @@ Expected<void> write_file_atomically(const std::filesystem::path& target,
     struct stat existing {};
     const mode_t mode = ::stat(real.c_str(), &existing) == 0 ? existing.st_mode & 0777 : 0644;
     const Temporary temp = write_temporary(real, next_piece, mode);
-    if (temp.error != 0) return failure(target, temp.error);
+    if (temp.error != 0) return temporary_failure(target, real, temp.error);
     const int error = std::rename(temp.name.data(), real.c_str()) != 0 ? errno : 0;
     if (error != 0) ::unlink(temp.name.data());
     unfinished.store(nullptr);
