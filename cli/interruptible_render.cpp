@@ -3,10 +3,10 @@
 #include "jtracer/atomic_file.hpp"
 
 #include <signal.h>
+
 #include <atomic>
 #include <chrono>
 #include <condition_variable>
-
 #include <csignal>
 #include <iostream>
 #include <mutex>

@@ -8,8 +8,9 @@
 #include "jtracer/image_file.hpp"
 #include "jtracer/merge_regions.hpp"
 
-#include <signal.h>
 #include <CLI/CLI.hpp>
+
+#include <signal.h>
 
 #include <csignal>
 #include <exception>
