@@ -8,30 +8,14 @@
 #include <memory>
 #include <string>
 #include <utility>
+#include <vector>
 
 namespace jt::frontend {
 namespace {
 
-// The log lines written for renders that reach these fractions, each at
-// `seconds` into the render.
-std::string logged(std::initializer_list<double> fractions, double seconds = 2.0) {
-    std::unique_ptr<std::FILE, int (*)(std::FILE*)> out(std::tmpfile(), &std::fclose);
-    ProgressDisplay display(ProgressStyle::log, out.get());
-    for (double fraction : fractions) {
-        RenderProgress progress;
-        progress.fraction = fraction;
-        progress.seconds = seconds;
-        display.update(progress);
-    }
-    std::fflush(out.get());
-    std::rewind(out.get());
-    std::string text;
-    for (int c; (c = std::fgetc(out.get())) != EOF;) text += static_cast<char>(c);
-    return text;
-}
-
-// As `logged`, each fraction reached at its own time: {fraction, seconds}.
-std::string logged_at(std::initializer_list<std::pair<double, double>> updates) {
+// The log lines written for a render that reaches each fraction at its own
+// time: {fraction, seconds}.
+std::string logged_at(const std::vector<std::pair<double, double>>& updates) {
     std::unique_ptr<std::FILE, int (*)(std::FILE*)> out(std::tmpfile(), &std::fclose);
     ProgressDisplay display(ProgressStyle::log, out.get());
     for (const auto& [fraction, seconds] : updates) {
@@ -45,6 +29,13 @@ std::string logged_at(std::initializer_list<std::pair<double, double>> updates) 
     std::string text;
     for (int c; (c = std::fgetc(out.get())) != EOF;) text += static_cast<char>(c);
     return text;
+}
+
+// As `logged_at`, every fraction reached `seconds` into the render.
+std::string logged(std::initializer_list<double> fractions, double seconds = 2.0) {
+    std::vector<std::pair<double, double>> updates;
+    for (double fraction : fractions) updates.emplace_back(fraction, seconds);
+    return logged_at(updates);
 }
 
 // A render whose 10% take longer than a minute still writes a line a minute,
