@@ -351,6 +351,12 @@ void resolve_reload(AppState& state, ReloadChoice choice) {
     }
     LoadAttempt newer = std::move(*state.files.pending_reload);
     if (!newer.ok) {
+        // The image stays of the last good scene: the file's, not the edits
+        // just dropped, which no text holds any more.
+        if (scene_edited(state.doc)) {
+            state.doc.scene = *state.doc.original;
+            note_scene_changed(state.doc);
+        }
         show_broken_file(state, std::move(newer));
         state.message = "Reloaded " + name + " (it has errors); your edits were dropped";
         return;

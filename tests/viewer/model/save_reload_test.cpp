@@ -199,6 +199,22 @@ TEST_F(ViewerFiles, ReloadCanDropTheEdits) {
     EXPECT_EQ(state.doc.scene, parse_scene(kTheirs).scene);
 }
 
+// Edits dropped for a newer file that has errors: the last good scene that
+// stays is the file's, not the edits no text holds any more.
+TEST_F(ViewerFiles, EditsDroppedForABrokenFileLeaveTheFilesScene) {
+    edit_pigment();
+    they_save("render_settings {");
+    ASSERT_TRUE(state.files.pending_reload.has_value()) << state.message;
+    resolve_reload(state, ReloadChoice::drop_edits);
+    ASSERT_TRUE(state.doc.draft.has_value()) << state.message;
+    EXPECT_NE(state.doc.scene.primitives[1].material.pigment, kMyPigment) << "dropped";
+    EXPECT_EQ(state.doc.scene, *state.doc.original);
+    model.frame(state);
+    model.frame(state);
+    EXPECT_FALSE(state.history.undo.can_undo()) << "the drop is no edit to undo";
+    EXPECT_FALSE(state.history.undo.can_redo());
+}
+
 TEST_F(ViewerFiles, ReloadCanReapplyTheEditsOntoTheNewerText) {
     edit_pigment();
     they_save(kTheirs);
