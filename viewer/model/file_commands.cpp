@@ -441,9 +441,12 @@ bool has_unsaved_work(const AppState& state) {
     return has_unsaved_edits(state.doc) || has_included_drafts(state.editor);
 }
 
-std::string shown_message(const AppState& state) {
-    if (state.message.claims_saved && has_unsaved_work(state))
-        return "Edited since the save: Ctrl+S saves the edits";
+const std::string& shown_message(const AppState& state) {
+    // Made once: the status line asks every frame, and an idle frame
+    // allocates nothing.
+    static const std::string edited_since_the_save =
+        "Edited since the save: Ctrl+S saves the edits";
+    if (state.message.claims_saved && has_unsaved_work(state)) return edited_since_the_save;
     return state.message;
 }
 
