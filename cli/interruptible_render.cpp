@@ -1,5 +1,9 @@
 #include "interruptible_render.hpp"
 
+#include "jtracer/atomic_file.hpp"
+
+#include <signal.h>
+
 #include <atomic>
 #include <chrono>
 #include <condition_variable>
@@ -14,15 +18,29 @@ namespace {
 
 std::atomic<int> interrupted{0};
 
+// A second signal ends the process at once (an impatient Ctrl-C during a long
+// write), without leaving the write's temporary file behind.
 extern "C" void on_interrupt(int signal) {
-    interrupted.store(signal);
+    if (interrupted.exchange(signal) != 0) {
+        jt::remove_unfinished_file();
+        std::signal(signal, SIG_DFL);
+        std::raise(signal);
+    }
 }
 
 }  // namespace
 
+// SIGHUP is how a closed terminal or a dropped ssh connection (a farm's
+// `ssh host jtracer-cli ...`) ends a process: left to its default it would end
+// this one in the middle of a write, leaving the temporary file behind. A
+// signal ignored on entry (nohup, a shell's background job) stays ignored:
+// whoever started the process asked for that.
 void catch_interrupts() {
-    std::signal(SIGINT, on_interrupt);
-    std::signal(SIGTERM, on_interrupt);
+    for (const int signal : {SIGINT, SIGTERM, SIGHUP}) {
+        struct sigaction current {};
+        if (::sigaction(signal, nullptr, &current) == 0 && current.sa_handler == SIG_IGN) continue;
+        std::signal(signal, on_interrupt);
+    }
 }
 
 int interrupting_signal() {
@@ -59,8 +77,8 @@ bool render_interruptibly(RenderJob& job, frontend::ProgressDisplay& display,
 
 int report_interrupt(const char* what) {
     const int signal = interrupted.load() != 0 ? interrupted.load() : SIGINT;
-    std::cerr << "jtracer-cli: interrupted by " << (signal == SIGTERM ? "SIGTERM" : "SIGINT")
-              << "; " << what << "\n";
+    const char* name = signal == SIGTERM ? "SIGTERM" : signal == SIGHUP ? "SIGHUP" : "SIGINT";
+    std::cerr << "jtracer-cli: interrupted by " << name << "; " << what << "\n";
     return 128 + signal;
 }
 

@@ -1,6 +1,6 @@
 #pragma once
-// Runs a render job while drawing its progress and watching for Ctrl-C and
-// SIGTERM, which cancel it (within a tile) instead of ending the process.
+// Runs a render job while drawing its progress and watching for Ctrl-C,
+// SIGTERM and SIGHUP, which cancel it (within a tile) instead of ending the process.
 
 #include "jtracer/frontend/progress.hpp"
 #include "jtracer/render_job.hpp"
@@ -9,10 +9,11 @@
 
 namespace jt::cli {
 
-// From now on SIGINT and SIGTERM cancel the running render.
+// From now on SIGINT, SIGTERM and SIGHUP cancel the running render (and a
+// write under way is finished first); one ignored on entry stays ignored.
 void catch_interrupts();
 
-// The signal that asked to stop (SIGINT, SIGTERM), 0 while none has.
+// The signal that asked to stop (SIGINT, SIGTERM, SIGHUP), 0 while none has.
 int interrupting_signal();
 
 // Maps a job's progress to what the display shows (a sequence shows its own).

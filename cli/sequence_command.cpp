@@ -40,6 +40,12 @@ int run_sequence(const Options& o) {
     const auto start = Clock::now();
     catch_interrupts();
     for (int index = range.first; index <= range.last; ++index) {
+        // A signal during the last frame's write let it finish: stop before
+        // preparing the next frame, which can take long (a large mesh).
+        if (interrupting_signal() != 0) {
+            display.finish();
+            return report_interrupt(kept(range, index).c_str());
+        }
         const SequenceFrame frame = sequence.frame(index, !o.check_only);
         if (!frame.message.empty()) {
             display.finish();

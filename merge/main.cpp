@@ -3,12 +3,16 @@
 // carries where it belongs (region_file.hpp), so the order and names of the
 // parts do not matter.
 
+#include "jtracer/atomic_file.hpp"
 #include "jtracer/frontend/command_line.hpp"
 #include "jtracer/image_file.hpp"
 #include "jtracer/merge_regions.hpp"
 
 #include <CLI/CLI.hpp>
 
+#include <signal.h>
+
+#include <csignal>
 #include <exception>
 #include <iostream>
 #include <new>
@@ -20,7 +24,31 @@ using jt::frontend::exit_ok;
 // 1 means parts that do not make one frame.
 constexpr int exit_bad_parts = jt::frontend::exit_scene_error;
 
+// A signal that ends the process during the write would leave the temporary
+// file beside the frame: remove it, then end as the signal asks.
+extern "C" void on_ending_signal(int signal) {
+    jt::remove_unfinished_file();
+    std::signal(signal, SIG_DFL);
+    std::raise(signal);
+}
+
+// SIGHUP too: a merge run over ssh whose connection drops. A signal ignored on
+// entry (nohup) stays ignored.
+void remove_the_temporary_file_on_signals() {
+    for (const int signal : {SIGINT, SIGTERM, SIGHUP}) {
+        struct sigaction current {};
+        if (::sigaction(signal, nullptr, &current) == 0 && current.sa_handler == SIG_IGN) continue;
+        std::signal(signal, on_ending_signal);
+    }
+}
+
 int merge(const std::vector<std::string>& part_paths, const std::string& output, bool quiet) {
+    // Found before the parts are read, as jtracer-cli finds it before the
+    // render: the 64 bands of a 16k frame are gigabytes to read for nothing.
+    if (const jt::Expected<void> writable = jt::check_atomic_write(output); !writable) {
+        std::cerr << "jtracer-merge: " << writable.error().message << "; no part was read\n";
+        return exit_io_error;
+    }
     std::vector<jt::RegionPart> parts;
     for (const std::string& path : part_paths) {
         jt::Expected<jt::RegionPart> part = jt::read_region_bmp(path);
@@ -71,7 +99,9 @@ int main(int argc, char** argv) {
         "errors.\n");
     jt::frontend::add_version_flag(app, "jtracer-merge");
     app.add_option("-o,--output", output,
-                   "The whole frame; a name ending in .png gives a PNG, anything else a BMP")
+                   "The whole frame; a name ending in .png gives a PNG, anything else a BMP; - is "
+                   "standard output (a BMP)")
+        ->transform(jt::frontend::output_name, "", "")
         ->required()
         ->type_name("FILE");
     app.add_option("parts", part_paths, "The region files (BMP)")->required();
@@ -89,6 +119,7 @@ int main(int argc, char** argv) {
     if (std::optional<int> code =
             jt::frontend::parse_command_line(app, argc, argv, "jtracer-merge", checks))
         return *code;
+    remove_the_temporary_file_on_signals();
     try {
         return merge(part_paths, output, quiet);
     } catch (const std::bad_alloc&) {

@@ -40,6 +40,10 @@ class GnuHelp : public CLI::Formatter {
 
 }  // namespace
 
+std::string output_name(std::string name) {
+    return name == "-" ? std::string("/dev/stdout") : name;
+}
+
 bool is_stream(const std::filesystem::path& path) {
     std::error_code error;
     const auto status = std::filesystem::status(path, error);

@@ -12,6 +12,10 @@ namespace {
 constexpr int bar_width = 30;
 // A plain log line per 10% only for renders long enough to need them.
 constexpr double log_after_seconds = 1.0;
+// Between milestones a long render still writes a line this often: a CI job
+// or a farm's watchdog that ends a job silent for some minutes (10 on
+// several CI services) would otherwise end a render whose 10% take longer.
+constexpr double log_at_least_every_seconds = 60.0;
 
 }  // namespace
 
@@ -19,6 +23,10 @@ std::string format_duration(double seconds) {
     char text[64];
     if (seconds < 60.0) {
         std::snprintf(text, sizeof text, "%.2f s", seconds);
+    } else if (seconds >= 3600.0) {
+        auto whole = static_cast<long>(seconds);
+        std::snprintf(text, sizeof text, "%ld h %02ld min %02ld s", whole / 3600, whole / 60 % 60,
+                      whole % 60);
     } else {
         auto whole = static_cast<long>(seconds);
         std::snprintf(text, sizeof text, "%ld min %02ld s", whole / 60, whole % 60);
@@ -79,12 +87,15 @@ void ProgressDisplay::update(const RenderProgress& progress) {
     }
     if (progress.seconds < log_after_seconds) return;
     const int milestone = percent / 10 * 10;
-    if (milestone > last_logged_percent_ && milestone < 100) {
-        std::fprintf(out_, "rendering: %d%% (%s)\n", milestone,
-                     format_duration(progress.seconds).c_str());
-        std::fflush(out_);
-        last_logged_percent_ = milestone;
-    }
+    const bool passed = milestone > last_logged_percent_ && milestone < 100;
+    const bool silent_too_long =
+        percent < 100 && progress.seconds - last_logged_seconds_ >= log_at_least_every_seconds;
+    if (!passed && !silent_too_long) return;
+    std::fprintf(out_, "rendering: %d%% (%s)\n", passed ? milestone : percent,
+                 format_duration(progress.seconds).c_str());
+    std::fflush(out_);
+    if (passed) last_logged_percent_ = milestone;
+    last_logged_seconds_ = progress.seconds;
 }
 
 void ProgressDisplay::finish() {

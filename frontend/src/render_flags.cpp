@@ -1,5 +1,6 @@
 #include "jtracer/frontend/render_flags.hpp"
 
+#include "jtracer/frontend/command_line.hpp"
 #include "jtracer/frontend/frame_file_name.hpp"
 
 #include "jtracer/limits.hpp"
@@ -17,7 +18,8 @@ void add_render_flags(CLI::App& app, RenderFlags& o) {
     app.add_option("scene", o.scene_path, "The scene file to render (.jts)")->required();
     app.add_option("-o,--output", o.output,
                    "Write the image here instead of the scene's filename; a name ending in .png "
-                   "gives a PNG, anything else a BMP")
+                   "gives a PNG, anything else a BMP; - is standard output (a BMP)")
+        ->transform(output_name, "", "")
         ->type_name("FILE");
     app.add_option("--camera", o.camera, "Render from the camera with this name")
         ->type_name("NAME");
@@ -47,7 +49,7 @@ void add_render_flags(CLI::App& app, RenderFlags& o) {
     app.add_option("--progress", o.progress,
                    "How progress shows on stderr: auto|bar|log|none. auto (the default): a bar "
                    "on a terminal, nothing otherwise; log: a plain line at each multiple of 10% "
-                   "passed (10%, 20%, ...), for log files")
+                   "passed (10%, 20%, ...) and at least one a minute, for log files")
         ->transform(CLI::CheckedTransformer(modes))
         ->type_name("MODE");
     add_scene_value_flags(app, o.defines, o.clock);

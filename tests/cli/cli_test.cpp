@@ -164,6 +164,22 @@ TEST_F(Cli, OutputOptionWinsAndPngByExtension) {
     EXPECT_EQ(std::string(magic + 1, 3), "PNG");
 }
 
+// A pipeline's `-o - | next-program`: the BMP goes to standard output, no
+// file called "-" is made.
+TEST_F(Cli, ADashOutputIsStandardOutput) {
+    test::ProgramRun r = run("scene.jts -o - -q > piped.bmp");
+    ASSERT_EQ(r.code, 0) << r.err;
+    EXPECT_EQ(outputs(), std::vector<std::string>{"piped.bmp"});
+    const Expected<Image8> image = read_bmp(dir / "piped.bmp");
+    ASSERT_TRUE(image) << image.error().message;
+    EXPECT_EQ(image->width, 32);
+    r = run("scene.jts -o - -q | wc -c > size.txt");
+    ASSERT_EQ(r.code, 0) << r.err;
+    EXPECT_EQ(std::stoi(test::read_file(dir / "size.txt")), 54 + 18 * (32 * 3));
+    EXPECT_EQ(run("scene.jts -o ./- -q").code, 0);
+    EXPECT_TRUE(fs::exists(dir / "-")) << "./- is still a file of that name";
+}
+
 TEST_F(Cli, ThreadCountGivesByteIdenticalFiles) {
     ASSERT_EQ(run("-q scene.jts --samples 4 --threads 1 -o one.bmp").code, 0);
     ASSERT_EQ(run("-q scene.jts --samples 4 --threads 2 -o two.bmp").code, 0);

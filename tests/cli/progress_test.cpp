@@ -7,16 +7,18 @@
 #include <cstdio>
 #include <memory>
 #include <string>
+#include <utility>
+#include <vector>
 
 namespace jt::frontend {
 namespace {
 
-// The log lines written for renders that reach these fractions, each at
-// `seconds` into the render.
-std::string logged(std::initializer_list<double> fractions, double seconds = 2.0) {
+// The log lines written for a render that reaches each fraction at its own
+// time: {fraction, seconds}.
+std::string logged_at(const std::vector<std::pair<double, double>>& updates) {
     std::unique_ptr<std::FILE, int (*)(std::FILE*)> out(std::tmpfile(), &std::fclose);
     ProgressDisplay display(ProgressStyle::log, out.get());
-    for (double fraction : fractions) {
+    for (const auto& [fraction, seconds] : updates) {
         RenderProgress progress;
         progress.fraction = fraction;
         progress.seconds = seconds;
@@ -27,6 +29,36 @@ std::string logged(std::initializer_list<double> fractions, double seconds = 2.0
     std::string text;
     for (int c; (c = std::fgetc(out.get())) != EOF;) text += static_cast<char>(c);
     return text;
+}
+
+// As `logged_at`, every fraction reached `seconds` into the render.
+std::string logged(std::initializer_list<double> fractions, double seconds = 2.0) {
+    std::vector<std::pair<double, double>> updates;
+    for (double fraction : fractions) updates.emplace_back(fraction, seconds);
+    return logged_at(updates);
+}
+
+// A render whose 10% take longer than a minute still writes a line a minute,
+// for a CI job or a watchdog that ends a job silent for some minutes.
+TEST(ProgressLog, ASlowRenderWritesALineAtLeastEveryMinute) {
+    EXPECT_EQ(logged_at({{0.11, 2.0},
+                         {0.12, 30.0},
+                         {0.13, 62.5},
+                         {0.14, 100.0},
+                         {0.15, 123.0},
+                         {0.20, 124.0},
+                         {0.21, 150.0},
+                         {1.0, 400.0}}),
+              "rendering: 10% (2.00 s)\n"
+              "rendering: 13% (1 min 02 s)\n"
+              "rendering: 15% (2 min 03 s)\n"
+              "rendering: 20% (2 min 04 s)\n");
+}
+
+TEST(ProgressLog, DurationsOfHoursSayHours) {
+    EXPECT_EQ(format_duration(59.5), "59.50 s");
+    EXPECT_EQ(format_duration(3599.0), "59 min 59 s");
+    EXPECT_EQ(format_duration(3600.0 * 10 + 65.0), "10 h 01 min 05 s");
 }
 
 TEST(ProgressLog, EachLineIsTheMultipleOfTenJustPassed) {

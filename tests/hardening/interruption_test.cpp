@@ -1,5 +1,6 @@
-// Ctrl+C (SIGINT) and SIGTERM during a long render: the CLI stops within a
-// second, exits 130 / 143, writes nothing and leaves the older output intact.
+// Ctrl+C (SIGINT), SIGTERM and SIGHUP (a dropped ssh connection) during a
+// long render: the CLI stops within a second, exits 130 / 143 / 129, writes nothing and leaves the
+// older output intact.
 
 #include "cli_sandbox.hpp"
 #include "common/scenes.hpp"
@@ -48,10 +49,11 @@ TEST_P(Interruption, StopsPromptlyWritesNothingKeepsTheOldOutput) {
     EXPECT_EQ(files(), (std::vector<std::string>{"out.bmp", "scene.jts"}));
 }
 
-INSTANTIATE_TEST_SUITE_P(Signals, Interruption, testing::Values(SIGINT, SIGTERM),
+INSTANTIATE_TEST_SUITE_P(Signals, Interruption, testing::Values(SIGINT, SIGTERM, SIGHUP),
                          [](const testing::TestParamInfo<int>& info) {
-                             return info.param == SIGINT ? std::string("SIGINT")
-                                                         : std::string("SIGTERM");
+                             return info.param == SIGINT    ? std::string("SIGINT")
+                                    : info.param == SIGTERM ? std::string("SIGTERM")
+                                                            : std::string("SIGHUP");
                          });
 
 }  // namespace

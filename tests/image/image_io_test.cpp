@@ -10,6 +10,7 @@
 #include "jtracer/texture.hpp"
 
 #include <gtest/gtest.h>
+#include <sys/wait.h>
 #include <unistd.h>
 
 #include <algorithm>
@@ -330,6 +331,89 @@ TEST(AtomicFile, ReplacesWholeAndLeavesNoTemporary) {
         ++entries;
     }
     EXPECT_EQ(entries, 1) << "no temporary file left beside the target";
+}
+
+// What a handler of SIGINT or SIGTERM calls before the process ends: the
+// temporary file of the write under way goes, the old file stays whole.
+TEST(AtomicFile, AnUnfinishedFileIsRemovedForASignalHandler) {
+    fs::path dir = make_scratch_dir("atomic_unfinished");
+    const fs::path target = dir / "out.bin";
+    test::write_file(target, "old");
+    const std::vector<std::uint8_t> piece{'n', 'e', 'w'};
+    int calls = 0;
+    std::vector<std::string> during;
+    const Expected<void> written =
+        write_file_atomically(target, [&]() -> std::span<const std::uint8_t> {
+            if (++calls == 2) {
+                for (const auto& e : fs::directory_iterator(dir))
+                    during.push_back(e.path().filename().string());
+                remove_unfinished_file();
+            }
+            return calls <= 2 ? std::span<const std::uint8_t>(piece)
+                              : std::span<const std::uint8_t>();
+        });
+    EXPECT_EQ(during.size(), 2u) << "the temporary file was there while written";
+    EXPECT_FALSE(written) << "the rename of a removed file fails";
+    EXPECT_EQ(test::read_file(target), "old");
+    std::vector<std::string> left;
+    for (const auto& e : fs::directory_iterator(dir)) left.push_back(e.path().filename().string());
+    EXPECT_EQ(left, std::vector<std::string>{"out.bin"});
+
+    // Once a write is done there is nothing unfinished: the file stays.
+    ASSERT_TRUE(write_file_atomically(target, piece));
+    remove_unfinished_file();
+    EXPECT_EQ(test::read_file(target), "new");
+}
+
+// A writable file in a folder that is not: the message names the folder, not
+// just "Permission denied" about a file that may be written. As root (where
+// permissions do not bind) the check runs in a child as nobody.
+TEST(AtomicFile, AFolderWithoutWritePermissionIsNamed) {
+    const fs::path dir = make_scratch_dir("atomic_folder");
+    const fs::path folder = dir / "shared";
+    fs::create_directories(folder);
+    const fs::path target = folder / "out.bmp";
+    test::write_file(target, "old");
+    fs::permissions(dir, fs::perms::all & ~fs::perms::group_write & ~fs::perms::others_write);
+    fs::permissions(target, fs::perms::owner_read | fs::perms::owner_write | fs::perms::group_read |
+                                fs::perms::group_write | fs::perms::others_read |
+                                fs::perms::others_write);
+    fs::permissions(folder, fs::perms::owner_read | fs::perms::owner_exec | fs::perms::group_read |
+                                fs::perms::group_exec | fs::perms::others_read |
+                                fs::perms::others_exec);
+    std::string message;
+    if (::geteuid() == 0) {
+        int pipe_ends[2];
+        ASSERT_EQ(::pipe(pipe_ends), 0);
+        const pid_t child = ::fork();
+        ASSERT_GE(child, 0);
+        if (child == 0) {
+            ::close(pipe_ends[0]);
+            if (::setgid(65534) != 0 || ::setuid(65534) != 0) ::_exit(2);
+            const Expected<void> checked = check_atomic_write(target);
+            const std::string text = checked ? "written" : checked.error().message;
+            const bool sent = ::write(pipe_ends[1], text.data(), text.size()) ==
+                              static_cast<ssize_t>(text.size());
+            ::_exit(sent ? 0 : 3);
+        }
+        ::close(pipe_ends[1]);
+        char buffer[512];
+        for (ssize_t n; (n = ::read(pipe_ends[0], buffer, sizeof buffer)) > 0;)
+            message.append(buffer, static_cast<std::size_t>(n));
+        ::close(pipe_ends[0]);
+        int status = 0;
+        ::waitpid(child, &status, 0);
+        ASSERT_TRUE(WIFEXITED(status) && WEXITSTATUS(status) == 0) << status;
+    } else {
+        const Expected<void> checked = check_atomic_write(target);
+        message = checked ? "written" : checked.error().message;
+    }
+    fs::permissions(folder, fs::perms::owner_all, fs::perm_options::add);
+    EXPECT_NE(message.find("Permission denied"), std::string::npos) << message;
+    EXPECT_NE(message.find("temporary file in '" + folder.string() + "'"), std::string::npos)
+        << message;
+    EXPECT_NE(message.find("that folder must be writable"), std::string::npos) << message;
+    EXPECT_EQ(test::read_file(target), "old");
 }
 
 TEST(AtomicFile, FailureNamesTheFileAndWritesNothing) {

@@ -146,6 +146,31 @@ TEST_F(RegionCli, MergeRefusesAnOutputThatIsAlsoAPart) {
     EXPECT_NE(r.err.find("-o/--output: needs a file name"), std::string::npos) << r.err;
 }
 
+TEST_F(RegionCli, MergeWritesADashOutputToStandardOutput) {
+    const std::string size = "--width 40 --height 30 -q ";
+    ASSERT_EQ(run_shell(cli + showcase + size + "-o whole.bmp").code, 0);
+    ASSERT_EQ(run_shell(cli + showcase + size + "--region-output --region 0,0,40,15 -o a.bmp").code,
+              0);
+    ASSERT_EQ(
+        run_shell(cli + showcase + size + "--region-output --region 0,15,40,30 -o b.bmp").code, 0);
+    ProgramRun r = run_shell(merge + "-q -o - a.bmp b.bmp | cat > piped.bmp");
+    ASSERT_EQ(r.code, 0) << r.err;
+    EXPECT_FALSE(std::filesystem::exists(dir / "-"));
+    EXPECT_EQ(test::read_file(dir / "piped.bmp"), test::read_file(dir / "whole.bmp"));
+}
+
+// As jtracer-cli before a render: a frame that cannot be written is found
+// before the parts (gigabytes, for a large frame) are read.
+TEST_F(RegionCli, MergeFindsAnUnwritableFrameBeforeReadingTheParts) {
+    ProgramRun r = run_shell(merge + "-o missing/frame.bmp no-such-part.bmp");
+    EXPECT_EQ(r.code, 3) << r.err;
+    EXPECT_NE(r.err.find("cannot write 'missing/frame.bmp': No such file or directory; no part "
+                         "was read"),
+              std::string::npos)
+        << r.err;
+    EXPECT_EQ(r.err.find("no-such-part.bmp"), std::string::npos) << r.err;
+}
+
 TEST_F(RegionCli, MergeRefusesPartsOfDifferentFrameSizes) {
     ASSERT_EQ(run_shell(cli + showcase +
                         "--width 40 --height 30 -q --region-output --region "

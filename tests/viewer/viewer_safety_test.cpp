@@ -280,6 +280,32 @@ TEST_F(ViewerSafety, OpeningAnotherFileWithEditsAsksAndDiscardOpensIt) {
     EXPECT_EQ(read_file(file), read_file(kScene)) << "discarded, not saved";
 }
 
+// The prompt wrapped its buttons to the width of the hidden frame that
+// measured it: its first drawn frame was a row taller and 25 pixels higher
+// than the next, and a click on Discard as first shown hit its text.
+TEST_F(ViewerSafety, TheUnsavedPromptIsFirstDrawnWhereItStays) {
+    open_and_render();
+    edit_scene(state, [](Scene& s) { s.settings.recurse_depth = 1; });
+    request_quit(state);
+    viewer.frame(state);
+    const UiItem* shown = find_item(viewer.ui_items(), "Discard");
+    if (shown && !shown->drawn) {
+        viewer.frame(state);
+        shown = find_item(viewer.ui_items(), "Discard");
+    }
+    ASSERT_TRUE(shown && shown->drawn);
+    const ScreenRect first = shown->rect;
+    viewer.frame(state);
+    const UiItem* now = find_item(viewer.ui_items(), "Discard");
+    ASSERT_TRUE(now);
+    EXPECT_EQ(now->rect.y0, first.y0) << "the prompt moved after it was first drawn";
+    EXPECT_EQ(now->rect.x0, first.x0);
+    // Where the user saw it.
+    viewer.press_mouse(state, 0, (first.x0 + first.x1) * 0.5f, (first.y0 + first.y1) * 0.5f);
+    viewer.release_mouse(state, 0);
+    EXPECT_TRUE(state.quit) << "Discard, as first drawn, answered the prompt";
+}
+
 TEST_F(ViewerSafety, ImageSavesNeverReplaceAFile) {
     open_and_render();
     const fs::path png = file.parent_path() / "view.png";

@@ -484,7 +484,9 @@ TEST_F(ViewerTextEditor, AnotherFileOpensScrolledToItsStart) {
     viewer.frame(state);
     request_open_guarded(state, other);
     ASSERT_TRUE(state.files.unsaved_prompt) << "the typed x";
-    resolve_unsaved(state, UnsavedChoice::discard);
+    viewer.frame(state);  // the prompt comes up
+    ASSERT_TRUE(viewer.click(state, "Discard"));
+    ASSERT_FALSE(state.files.unsaved_prompt) << "Discard answered the prompt";
     ASSERT_TRUE(viewer.run_until_loaded(state));
     ASSERT_EQ(state.doc.path, other) << state.message;
     viewer.frame(state);

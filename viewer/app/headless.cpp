@@ -175,7 +175,13 @@ void HeadlessViewer::release_mouse(AppState& state, int button) {
 
 bool HeadlessViewer::click(AppState& state, const std::string& label) {
     const UiItem* item = find_item(frame_state_.ui_items, label);
-    if (!item) return false;
+    // A user clicks what a frame showed: a window still measuring itself
+    // shows in the next frame.
+    if (item && !item->drawn) {
+        frame(state);
+        item = find_item(frame_state_.ui_items, label);
+    }
+    if (!item || !item->drawn) return false;
     const ScreenRect r = item->rect;
     ImGuiIO& io = ImGui::GetIO();
     io.MousePos = ImVec2((r.x0 + r.x1) * 0.5f, (r.y0 + r.y1) * 0.5f);

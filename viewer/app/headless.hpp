@@ -45,7 +45,9 @@ class HeadlessViewer {
     void press_mouse(AppState& state, int button, float x, float y, int modifiers = kNoModifier);
     void release_mouse(AppState& state, int button);
     // Clicks the control drawn under `label` in the last frame (see
-    // ui_items.hpp) with the left button; false when there is none.
+    // ui_items.hpp) with the left button; false when there is none. A
+    // control of a window not yet drawn (measuring itself) is clicked where
+    // the next frame draws it.
     bool click(AppState& state, const std::string& label);
     // Moves the mouse to (x, y) for one frame.
     void move_mouse(AppState& state, float x, float y);

@@ -42,6 +42,7 @@ void note_item(const char* label, bool has_tooltip) {
     item.has_tooltip = has_tooltip;
     // What ImGui clips the window's contents to.
     item.clipped = max.x > GImGui->CurrentWindow->InnerClipRect.Max.x + 0.5f;
+    item.drawn = !GImGui->CurrentWindow->Hidden;
 }
 
 const UiItem* find_item(const UiItems& items, std::string_view label) {

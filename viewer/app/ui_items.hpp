@@ -19,6 +19,9 @@ struct UiItem {
     bool enabled = true;
     bool has_tooltip = false;
     bool clipped = false;  // its right edge is past the visible part of its window
+    // Its window was drawn: a window that sizes itself to its contents is
+    // hidden in the frame that measures them, its items not yet in place.
+    bool drawn = true;
 };
 
 // A frame's items. Their storage stays from one frame to the next and a label

@@ -106,10 +106,15 @@ void unsaved_prompt(AppState& state) {
     ImGui::TextUnformatted(quitting ? "Save them before quitting?"
                                     : "Save them before opening another file?");
     std::optional<UnsavedChoice> choice;
+    // One row, always: the popup sizes itself to its contents, and a row
+    // wrapped to the width of the hidden frame that measures it
+    // (same_line_if_fits) would make its first drawn frame a row taller, and
+    // centred higher, than the next: a click on a button seen in that frame
+    // lands beside it.
     if (button("Save", "Write the edits into the file, then go on")) choice = UnsavedChoice::save;
-    same_line_if_fits("Discard");
+    ImGui::SameLine();
     if (button("Discard", "Throw the edits away and go on")) choice = UnsavedChoice::discard;
-    same_line_if_fits("Cancel");
+    ImGui::SameLine();
     if (button("Cancel", "Keep the edits and stay (Esc)")) choice = UnsavedChoice::cancel;
     if (choice) {
         resolve_unsaved(state, *choice);

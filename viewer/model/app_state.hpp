@@ -336,6 +336,25 @@ struct TextFields {
     std::string save_scene_path;  // the Save scene as field
 };
 
+// The result of the last command, for the status line. A message that says
+// the files hold the work shown ("Saved scene.jts") claims so (claim_saved),
+// and the status line shows it only while no edit since has outdated it
+// (shown_message): a user reading "Saved" takes the edit on screen for saved.
+// Any other message set later drops the claim with the text it replaces.
+struct StatusMessage : std::string {
+    StatusMessage& operator=(std::string text) {
+        std::string::operator=(std::move(text));
+        claims_saved = false;
+        return *this;
+    }
+    void clear() { *this = std::string(); }
+    void claim_saved(std::string text) {
+        *this = std::move(text);
+        claims_saved = true;
+    }
+    bool claims_saved = false;
+};
+
 // Everything the viewer knows between frames, in parts with one job each; a
 // command takes the parts it changes (app_actions.hpp), or the whole state
 // when it orchestrates several.
@@ -361,7 +380,7 @@ struct AppState {
     TimeState time;  // the time slider and play (scene_time.hpp)
     Drags drags;
     TextFields fields;
-    std::string message;  // the result of the last command, for the status line
+    StatusMessage message;
     bool quit = false;
 };
 

@@ -351,6 +351,12 @@ void resolve_reload(AppState& state, ReloadChoice choice) {
     }
     LoadAttempt newer = std::move(*state.files.pending_reload);
     if (!newer.ok) {
+        // The image stays of the last good scene: the file's, not the edits
+        // just dropped, which no text holds any more.
+        if (scene_edited(state.doc)) {
+            state.doc.scene = *state.doc.original;
+            note_scene_changed(state.doc);
+        }
         show_broken_file(state, std::move(newer));
         state.message = "Reloaded " + name + " (it has errors); your edits were dropped";
         return;
@@ -424,8 +430,8 @@ bool save_now(AppState& state) {
     state.files.save_conflict.clear();
     state.files.pending_reload.reset();
     if (drafts) reload_now(state);
-    state.message = written.empty() ? "Nothing to save: the files hold this scene"
-                                    : "Saved " + listed_names(written);
+    state.message.claim_saved(written.empty() ? "Nothing to save: the files hold this scene"
+                                              : "Saved " + listed_names(written));
     return true;
 }
 
@@ -433,6 +439,15 @@ bool save_now(AppState& state) {
 
 bool has_unsaved_work(const AppState& state) {
     return has_unsaved_edits(state.doc) || has_included_drafts(state.editor);
+}
+
+const std::string& shown_message(const AppState& state) {
+    // Made once: the status line asks every frame, and an idle frame
+    // allocates nothing.
+    static const std::string edited_since_the_save =
+        "Edited since the save: Ctrl+S saves the edits";
+    if (state.message.claims_saved && has_unsaved_work(state)) return edited_since_the_save;
+    return state.message;
 }
 
 std::vector<std::string> unsaved_file_names(const AppState& state) {
@@ -506,7 +521,7 @@ bool save_scene_as(AppState& state, const std::filesystem::path& path, bool repl
     state.files.pending_reload.reset();
     state.files.recent.add(path);
     state.fields.open_path_input = path.string();
-    state.message = "Saved " + (saved->empty() ? path.string() : listed_names(*saved));
+    state.message.claim_saved("Saved " + (saved->empty() ? path.string() : listed_names(*saved)));
     return true;
 }
 

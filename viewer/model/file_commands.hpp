@@ -46,6 +46,10 @@ bool has_unsaved_work(const AppState& state);
 // first when its edits are unsaved, then each included file typed in.
 std::vector<std::string> unsaved_file_names(const AppState& state);
 
+// The status line's message (state.message), unless it says the files hold
+// the work shown and there is unsaved work since: then that there is.
+const std::string& shown_message(const AppState& state);
+
 // Saves the edits into the file, and the text typed in included files into
 // theirs (then reloads the scene), unless a file changed on disk since it was
 // loaded: then nothing is written and `save_conflict` says so. The status

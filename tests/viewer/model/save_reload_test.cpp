@@ -199,6 +199,22 @@ TEST_F(ViewerFiles, ReloadCanDropTheEdits) {
     EXPECT_EQ(state.doc.scene, parse_scene(kTheirs).scene);
 }
 
+// Edits dropped for a newer file that has errors: the last good scene that
+// stays is the file's, not the edits no text holds any more.
+TEST_F(ViewerFiles, EditsDroppedForABrokenFileLeaveTheFilesScene) {
+    edit_pigment();
+    they_save("render_settings {");
+    ASSERT_TRUE(state.files.pending_reload.has_value()) << state.message;
+    resolve_reload(state, ReloadChoice::drop_edits);
+    ASSERT_TRUE(state.doc.draft.has_value()) << state.message;
+    EXPECT_NE(state.doc.scene.primitives[1].material.pigment, kMyPigment) << "dropped";
+    EXPECT_EQ(state.doc.scene, *state.doc.original);
+    model.frame(state);
+    model.frame(state);
+    EXPECT_FALSE(state.history.undo.can_undo()) << "the drop is no edit to undo";
+    EXPECT_FALSE(state.history.undo.can_redo());
+}
+
 TEST_F(ViewerFiles, ReloadCanReapplyTheEditsOntoTheNewerText) {
     edit_pigment();
     they_save(kTheirs);
@@ -384,6 +400,34 @@ TEST_F(ViewerFiles, SavingAnUntouchedFileNeedsNoConfirmation) {
     ASSERT_TRUE(model.run_until_loaded(state));
     edit_scene(state, [](Scene& s) { s.settings.samples = 2; });
     EXPECT_TRUE(save_scene(state)) << state.message;
+}
+
+// "Saved scene.jts" stays on the status line after the save; an edit made
+// since must not read as saved while the title's "*" says it is not.
+TEST_F(ViewerFiles, TheStatusLineDoesNotCallANewerEditSaved) {
+    edit_pigment();
+    ASSERT_TRUE(save_scene(state)) << state.message;
+    EXPECT_EQ(shown_message(state).rfind("Saved ", 0), 0u) << shown_message(state);
+    const int samples = state.doc.scene.settings.samples;
+    edit_scene(state, [](Scene& s) { s.settings.samples = 5; });
+    ASSERT_TRUE(has_unsaved_work(state));
+    EXPECT_EQ(shown_message(state).find("Saved"), std::string::npos) << shown_message(state);
+    EXPECT_NE(shown_message(state).find("Ctrl+S"), std::string::npos) << shown_message(state);
+    // Back to the scene on disk: the save describes it again.
+    edit_scene(state, [&](Scene& s) { s.settings.samples = samples; });
+    ASSERT_FALSE(has_unsaved_work(state));
+    EXPECT_EQ(shown_message(state).rfind("Saved ", 0), 0u) << shown_message(state);
+
+    ASSERT_TRUE(save_scene(state)) << state.message;
+    EXPECT_EQ(shown_message(state), "Nothing to save: the files hold this scene");
+    edit_scene(state, [](Scene& s) { s.settings.samples = 6; });
+    EXPECT_EQ(shown_message(state).find("Nothing to save"), std::string::npos);
+    // A later command's message is its own, edits or not.
+    state.message = "Renamed the camera";
+    EXPECT_EQ(shown_message(state), "Renamed the camera");
+    state.message.claim_saved("Saved scene.jts");
+    state.message.clear();
+    EXPECT_EQ(shown_message(state), "") << "a cleared message claims nothing";
 }
 
 // The save replaces the file by a rename, which the folder allows whatever

@@ -137,7 +137,7 @@ void status_line(AppState& state, const std::string& inspected, DiagnosticsText*
     if (diagnostics && !diagnostics->first_in_view && !text_editor_open)
         show_errors_link(state, *diagnostics);
     if (inspected.empty()) {
-        ImGui::TextDisabled("%s", state.message.c_str());
+        ImGui::TextDisabled("%s", shown_message(state).c_str());
         return;
     }
     std::string line = inspected;  // its lines side by side

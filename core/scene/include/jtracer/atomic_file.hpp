@@ -44,6 +44,12 @@ Expected<void> write_file_atomically(const std::filesystem::path& target,
 // passes. The error is the one the write would give.
 Expected<void> check_atomic_write(const std::filesystem::path& target);
 
+// Removes the temporary file of a write under way, if there is one, so that
+// a program ended by a signal leaves none behind: for a signal handler, which
+// then ends the process (the write, if it goes on, fails). Async-signal-safe.
+// Writes on several threads at once are not covered: only the latest's file.
+void remove_unfinished_file() noexcept;
+
 // Writes a new file `target` and never replaces one: true when written, false
 // when something is already there. The check and the creation are one step
 // (link(2)), so a file that appears meanwhile is not overwritten either.

@@ -6,6 +6,7 @@
 #include <sys/stat.h>
 #include <unistd.h>
 
+#include <atomic>
 #include <cerrno>
 #include <cstdio>
 #include <cstring>
@@ -15,8 +16,27 @@ namespace jt {
 
 namespace {
 
+// The temporary file a write has made and not yet renamed or removed, for
+// remove_unfinished_file; a lock-free atomic, so a signal handler may read it.
+std::atomic<const char*> unfinished{nullptr};
+static_assert(std::atomic<const char*>::is_always_lock_free);
+
 Error failure(const std::filesystem::path& target, int error) {
     return Error{"cannot write " + file_message(target, std::strerror(error))};
+}
+
+// A failure to make the temporary file beside `real`. A file that may be
+// written in a folder that may not (a shared render folder whose files are
+// group-writable) gives "Permission denied", which then seems to be about the
+// file: say that it is the folder.
+Error temporary_failure(const std::filesystem::path& target, const std::filesystem::path& real,
+                        int error) {
+    if (error != EACCES && error != EPERM && error != EROFS) return failure(target, error);
+    const std::filesystem::path folder =
+        real.parent_path().empty() ? std::filesystem::path(".") : real.parent_path();
+    return Error{"cannot write " + file_message(target, std::strerror(error)) +
+                 ": the image is written to a temporary file in '" + folder.string() +
+                 "', then renamed, so that folder must be writable"};
 }
 
 // 0 when every byte was written, else the errno of the failure.
@@ -81,6 +101,9 @@ Temporary write_temporary(const std::filesystem::path& real, const BytePieces& n
     Temporary t{temporary_pattern(real)};
     const int fd = ::mkstemp(t.name.data());
     if (fd < 0) return {{}, errno};
+    // The name's buffer moves with `t` to the caller, who clears this once
+    // the file is renamed or removed.
+    unfinished.store(t.name.data());
     int error = write_all(fd, next_piece);
     // mkstemp creates the file 0600.
     ::fchmod(fd, mode);
@@ -89,12 +112,18 @@ Temporary write_temporary(const std::filesystem::path& real, const BytePieces& n
     if (::close(fd) != 0 && error == 0) error = errno;
     if (error != 0) {
         ::unlink(t.name.data());
+        unfinished.store(nullptr);
         return {{}, error};
     }
     return t;
 }
 
 }  // namespace
+
+void remove_unfinished_file() noexcept {
+    // Removed after the rename, the name is gone: unlink then fails harmlessly.
+    if (const char* name = unfinished.load()) ::unlink(name);
+}
 
 std::filesystem::path file_behind_links(const std::filesystem::path& path) {
     // As the kernel's own limit on links followed in one lookup.
@@ -142,7 +171,7 @@ Expected<void> check_atomic_write(const std::filesystem::path& target) {
     if (place->in_place) return {};
     std::vector<char> probe = temporary_pattern(place->file);
     const int fd = ::mkstemp(probe.data());
-    if (fd < 0) return failure(target, errno);
+    if (fd < 0) return temporary_failure(target, place->file, errno);
     ::close(fd);
     ::unlink(probe.data());
     return {};
@@ -166,12 +195,11 @@ Expected<void> write_file_atomically(const std::filesystem::path& target,
     struct stat existing {};
     const mode_t mode = ::stat(real.c_str(), &existing) == 0 ? existing.st_mode & 0777 : 0644;
     const Temporary temp = write_temporary(real, next_piece, mode);
-    if (temp.error != 0) return failure(target, temp.error);
-    if (std::rename(temp.name.data(), real.c_str()) != 0) {
-        const int error = errno;
-        ::unlink(temp.name.data());
-        return failure(target, error);
-    }
+    if (temp.error != 0) return temporary_failure(target, real, temp.error);
+    const int error = std::rename(temp.name.data(), real.c_str()) != 0 ? errno : 0;
+    if (error != 0) ::unlink(temp.name.data());
+    unfinished.store(nullptr);
+    if (error != 0) return failure(target, error);
     return {};
 }
 
@@ -184,6 +212,7 @@ Expected<bool> write_new_file(const std::filesystem::path& target,
     // readers never see it partial, and link fails if the name is taken.
     const int error = ::link(temp.name.data(), target.c_str()) != 0 ? errno : 0;
     ::unlink(temp.name.data());
+    unfinished.store(nullptr);
     if (error == EEXIST) return false;
     if (error != 0) return failure(target, error);
     return true;

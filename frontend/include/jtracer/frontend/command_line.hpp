@@ -34,6 +34,12 @@ bool same_file(const std::filesystem::path& a, const std::filesystem::path& b);
 // folder of its own to hold a file beside it (a heat map beside /dev/null).
 bool is_stream(const std::filesystem::path& path);
 
+// An output named "-" is standard output, as with most tools (`-o - | convert
+// bmp:- ...`): /dev/stdout, which a pipe gets written in place and a
+// redirection (`> out.bmp`) atomically, as any file. A file called "-" is
+// still ./-. Any other name is returned as it is.
+std::string output_name(std::string name);
+
 // Parses the command line, then runs `checks` (which may throw
 // CLI::ValidationError for rules between options). Returns the exit code when
 // the program should stop now: 0 after --help or --version, exit_usage after

@@ -39,9 +39,10 @@ class ProgressDisplay {
     std::FILE* out_;
     bool drawn_ = false;
     int last_logged_percent_ = 0;
+    double last_logged_seconds_ = 0.0;
 };
 
-// "1.23 s", "4 min 05 s"
+// "1.23 s", "4 min 05 s", "2 h 04 min 05 s"
 std::string format_duration(double seconds);
 
 // "800x450, 1 sample, 0.84 s, 1.97 M rays, 2.35 Mrays/s"
