@@ -210,11 +210,10 @@ TEST_F(ViewerLensFields, ACtrlClickFocusesOnTheSurfaceUnderTheCursorInOneStep) {
     EXPECT_EQ(text(), kLensScene);
 }
 
-// Typed text with errors is the document: the panels are read-only, and a
-// Ctrl+click focused the last good scene's camera anyway. That edit was in
-// no text (not saved, not shown), was dropped when the text parsed, and with
-// the file's own broken text shown, a reload cleared its undo step while the
-// image kept it.
+// Typed text with errors is the document: the panels are read-only, and so
+// is a Ctrl+click's focus. An edit of the last good scene would be in no
+// text (neither saved nor shown), lost when the text parses, and a reload
+// of the broken file would clear its undo step while the image kept it.
 TEST_F(ViewerLensFields, ACtrlClickWhileTheTextHasErrorsChangesNothing) {
     const std::size_t steps = state.history.undo.size();
     type_text(state, std::string(kLensScene) + "{");
