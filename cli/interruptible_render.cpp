@@ -1,8 +1,6 @@
 #include "interruptible_render.hpp"
 
-#include "jtracer/atomic_file.hpp"
-
-#include <signal.h>
+#include "jtracer/frontend/command_line.hpp"
 
 #include <atomic>
 #include <chrono>
@@ -21,26 +19,15 @@ std::atomic<int> interrupted{0};
 // A second signal ends the process at once (an impatient Ctrl-C during a long
 // write), without leaving the write's temporary file behind.
 extern "C" void on_interrupt(int signal) {
-    if (interrupted.exchange(signal) != 0) {
-        jt::remove_unfinished_file();
-        std::signal(signal, SIG_DFL);
-        std::raise(signal);
-    }
+    if (interrupted.exchange(signal) != 0) frontend::end_by_signal(signal);
 }
 
 }  // namespace
 
-// SIGHUP is how a closed terminal or a dropped ssh connection (a farm's
-// `ssh host jtracer-cli ...`) ends a process: left to its default it would end
-// this one in the middle of a write, leaving the temporary file behind. A
-// signal ignored on entry (nohup, a shell's background job) stays ignored:
-// whoever started the process asked for that.
+// Left to its default, a signal would end the process in the middle of a
+// write, leaving the temporary file behind.
 void catch_interrupts() {
-    for (const int signal : {SIGINT, SIGTERM, SIGHUP}) {
-        struct sigaction current {};
-        if (::sigaction(signal, nullptr, &current) == 0 && current.sa_handler == SIG_IGN) continue;
-        std::signal(signal, on_interrupt);
-    }
+    frontend::handle_stop_signals(on_interrupt);
 }
 
 int interrupting_signal() {

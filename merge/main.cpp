@@ -10,8 +10,6 @@
 
 #include <CLI/CLI.hpp>
 
-#include <signal.h>
-
 #include <csignal>
 #include <exception>
 #include <iostream>
@@ -27,19 +25,11 @@ constexpr int exit_bad_parts = jt::frontend::exit_scene_error;
 // A signal that ends the process during the write would leave the temporary
 // file beside the frame: remove it, then end as the signal asks.
 extern "C" void on_ending_signal(int signal) {
-    jt::remove_unfinished_file();
-    std::signal(signal, SIG_DFL);
-    std::raise(signal);
+    jt::frontend::end_by_signal(signal);
 }
 
-// SIGHUP too: a merge run over ssh whose connection drops. A signal ignored on
-// entry (nohup) stays ignored.
 void remove_the_temporary_file_on_signals() {
-    for (const int signal : {SIGINT, SIGTERM, SIGHUP}) {
-        struct sigaction current {};
-        if (::sigaction(signal, nullptr, &current) == 0 && current.sa_handler == SIG_IGN) continue;
-        std::signal(signal, on_ending_signal);
-    }
+    jt::frontend::handle_stop_signals(on_ending_signal);
 }
 
 int merge(const std::vector<std::string>& part_paths, const std::string& output, bool quiet) {

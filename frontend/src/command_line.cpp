@@ -1,10 +1,14 @@
 #include "jtracer/frontend/command_line.hpp"
 
+#include "jtracer/atomic_file.hpp"
 #include "jtracer/version.hpp"
 
 #include <CLI/CLI.hpp>
 
+#include <signal.h>
+
 #include <cctype>
+#include <csignal>
 #include <memory>
 
 namespace jt::frontend {
@@ -61,6 +65,20 @@ bool same_file(const std::filesystem::path& a, const std::filesystem::path& b) {
     if (error) return false;
     const std::filesystem::path place_b = std::filesystem::weakly_canonical(b, error);
     return !error && place_a == place_b;
+}
+
+void handle_stop_signals(void (*handler)(int)) {
+    for (const int signal : {SIGINT, SIGTERM, SIGHUP}) {
+        struct sigaction current {};
+        if (::sigaction(signal, nullptr, &current) == 0 && current.sa_handler == SIG_IGN) continue;
+        std::signal(signal, handler);
+    }
+}
+
+void end_by_signal(int signal) {
+    remove_unfinished_file();
+    std::signal(signal, SIG_DFL);
+    std::raise(signal);
 }
 
 void add_version_flag(CLI::App& app, const std::string& program) {

@@ -277,8 +277,9 @@ void hover_play_and_pause(HeadlessViewer& viewer, AppState& state) {
                          (playing ? ", playing" : ", paused"));
             viewer.text_editor().open = editor;
             for (int i = 0; i < 3; ++i) viewer.frame(state);
-            if (state.time.playing != playing)
+            if (state.time.playing != playing) {
                 ASSERT_TRUE(viewer.click(state, playing ? "Play" : "Pause"));
+            }
             ASSERT_EQ(state.time.playing, playing);
             viewer.frame(state);  // the click's frame drew the button before it
             const UiItem* play = find_item(viewer.ui_items(), playing ? "Pause" : "Play");

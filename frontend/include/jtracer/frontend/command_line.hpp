@@ -18,6 +18,16 @@ namespace jt::frontend {
 // Exit codes, as the README and the man pages document them.
 enum ExitCode : int { exit_ok = 0, exit_scene_error = 1, exit_usage = 2, exit_io_error = 3 };
 
+// Gives `handler` the signals that ask a program to stop: SIGINT, SIGTERM and
+// SIGHUP (a closed terminal or a dropped ssh connection, as a farm's
+// `ssh host PROGRAM ...` meets). A signal ignored on entry (nohup, a shell's
+// background job) stays ignored: whoever started the process asked for that.
+void handle_stop_signals(void (*handler)(int));
+
+// From a signal handler: removes the unfinished write's temporary file
+// (remove_unfinished_file), then ends the process as `signal` would have.
+void end_by_signal(int signal);
+
 // Adds --version, printing "PROGRAM VERSION (REVISION)".
 void add_version_flag(CLI::App& app, const std::string& program);
 
