@@ -148,8 +148,8 @@ TEST(Names, NamedMaterialMistakes) {
     EXPECT_EQ(brief("material m { diffuse_k: 0; }"),
               "1:25: error: 'diffuse_k' must be greater than 0 and at most 1e+09, got 0");
     EXPECT_EQ(brief("material { pigment: <1, 0, 0>; }"),
-              "1:1: error: unknown block 'material' at the top level (allowed: "
-              "render_settings, cameras, scene)");
+              "1:1: error: a material at the top level needs a name: 'material NAME { ... }', "
+              "used in a primitive with 'material: NAME;'");
 }
 
 // A misspelt or misplaced property is the mistake reported, not what its

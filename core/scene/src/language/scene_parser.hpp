@@ -72,6 +72,13 @@ inline constexpr std::array<std::string_view, 0> kNoBlocks{};
 // schema's literals rather than at the text.
 std::string_view static_keyword(std::string_view word);
 
+// What may stand at the top level, in `cameras` and in `scene`: their blocks
+// and the statements of language 1.3 (include; at the top level also define
+// and named materials), for the list and the did-you-mean of an unknown word.
+std::span<const std::string_view> top_statements();
+std::span<const std::string_view> cameras_statements();
+std::span<const std::string_view> scene_statements();
+
 class SceneParser final : private TokenCursor {
   public:
     // `primitives` false: the primitives and their records are read (for the
