@@ -65,6 +65,23 @@ TEST(Structure, AMisspeltStatementIsSuggested) {
               "(allowed: sphere, plane, cylinder, triangle, mesh, point_light, include)");
 }
 
+// '2pi', '0x10' or '1_000': a name against the value is one mistake in its
+// statement, not the start of the next one, whose errors would echo it.
+TEST(Structure, ANameAgainstAValueIsOneError) {
+    EXPECT_EQ(brief("define r = 2pi;\nscene { sphere { radius: 0x10; center: <r, 0, 0>; } }"),
+              "1:13: error: expected ';' after the value of 'define r' (a name cannot follow a "
+              "value directly: '2pi' is written '2 * pi')\n"
+              "2:27: error: expected ';' after the value of 'radius' (a name cannot follow a "
+              "value directly: '2pi' is written '2 * pi')");
+    // A name after a space is the next line's, whose ';' is missing.
+    ParseResult r = parse_scene("define r = 2\nscene { sphere { radius: r } }");
+    EXPECT_EQ(brief(r.diagnostics),
+              "1:13: error: expected ';' after the value of 'define r'\n"
+              "2:27: error: expected ';' after the value of 'radius'");
+    ASSERT_EQ(r.scene.primitives.size(), 1u);
+    EXPECT_EQ(shape_as<Sphere>(r.scene.primitives[0].shape).radius, 2.0);
+}
+
 TEST(Structure, UnknownPropertySuggestsTheNearestName) {
     EXPECT_EQ(brief("scene { sphere { radus: 2; } }"),
               "1:18: error: unknown property 'radus' in 'sphere'; did you mean 'radius'? "
