@@ -7,6 +7,7 @@
 
 #include <signal.h>
 
+#include <atomic>
 #include <cctype>
 #include <csignal>
 #include <memory>
@@ -14,6 +15,12 @@
 namespace jt::frontend {
 
 namespace {
+
+std::atomic<int> caught_signal{0};
+
+extern "C" void on_stop_signal(int signal) {
+    if (caught_signal.exchange(signal) != 0) end_by_signal(signal);
+}
 
 // --help as GNU tools print it: "Usage: jtracer-cli [OPTIONS] SCENE" with the
 // program's name (not the path it was started from), operands in capitals,
@@ -79,6 +86,27 @@ void end_by_signal(int signal) {
     remove_unfinished_file();
     std::signal(signal, SIG_DFL);
     std::raise(signal);
+}
+
+void catch_stop_signals() {
+    handle_stop_signals(on_stop_signal);
+}
+
+int stop_signal() {
+    return caught_signal.load();
+}
+
+std::string signal_name(int signal) {
+    switch (signal) {
+        case SIGINT:
+            return "SIGINT";
+        case SIGTERM:
+            return "SIGTERM";
+        case SIGHUP:
+            return "SIGHUP";
+        default:
+            return "signal " + std::to_string(signal);
+    }
 }
 
 void add_version_flag(CLI::App& app, const std::string& program) {

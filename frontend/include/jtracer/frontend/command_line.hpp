@@ -28,6 +28,19 @@ void handle_stop_signals(void (*handler)(int));
 // (remove_unfinished_file), then ends the process as `signal` would have.
 void end_by_signal(int signal);
 
+// From now on the stop signals (handle_stop_signals) only ask the program to
+// stop, which it polls with stop_signal() at a point where stopping leaves
+// nothing half done (a render cancelled within a tile, a write finished
+// first); a second one ends the process at once through end_by_signal, for
+// an impatient Ctrl-C during a long write.
+void catch_stop_signals();
+
+// The signal that asked to stop (SIGINT, SIGTERM, SIGHUP), 0 while none has.
+int stop_signal();
+
+// "SIGINT", "SIGTERM", "SIGHUP" (another: "signal N").
+std::string signal_name(int signal);
+
 // Adds --version, printing "PROGRAM VERSION (REVISION)".
 void add_version_flag(CLI::App& app, const std::string& program);
 
