@@ -78,6 +78,22 @@ TEST_F(CliFrames, AFrameThatIsTheSceneFileIsRefused) {
     EXPECT_EQ(bytes("scene1.jts"), growing_scene) << "the scene file was replaced by frame 1";
 }
 
+// -o - is standard output, which cannot hold a file a frame: the refusal
+// speaks of it as the user wrote it, not of /dev/stdout, a name they never
+// gave.
+TEST_F(CliFrames, StandardOutputIsRefusedInTheUsersWords) {
+    test::ProgramRun r = run("scene.jts --frames 3 -o -");
+    EXPECT_EQ(r.code, 2) << r.err;
+    EXPECT_NE(r.err.find("-o/--output: - (standard output) takes one image"), std::string::npos)
+        << r.err;
+    EXPECT_EQ(r.err.find("/dev/stdout"), std::string::npos) << r.err;
+    EXPECT_TRUE(r.out.empty());
+    // A name the user wrote is still quoted as written.
+    r = run("scene.jts --frames 3 -o /dev/stdout");
+    EXPECT_EQ(r.code, 2) << r.err;
+    EXPECT_NE(r.err.find("'/dev/stdout' has no frame number field"), std::string::npos) << r.err;
+}
+
 TEST_F(CliFrames, OneFrameHasClockZero) {
     ASSERT_EQ(run("-q scene.jts --frames 1 -o 'one-%d.bmp'").code, 0);
     ASSERT_EQ(run("-q scene.jts -o zero.bmp").code, 0);
