@@ -322,10 +322,12 @@ std::string first_error(const std::string& messages) {
 
 }  // namespace
 
-int record_failed_render(const ExpectOptions& expect, int code, const std::string& messages) {
+int record_failed_render(const ExpectOptions& expect, int code, const std::string& messages,
+                         double seconds) {
     if (!expect.junit) return code;
     ComparisonReport r;
     r.name = expect.scene_path;
+    r.seconds = seconds;
     r.expected_path = expect.reference;
     r.threshold = expect.tolerance.threshold;
     r.max_percent = expect.tolerance.max_percent;

@@ -58,8 +58,11 @@ int check_expected(const Image8& render, const std::string& render_path,
 
 // --expect --junit when the render failed before any comparison (exit code
 // `code`): the test case in error, its message naming the first error in
-// `messages` (what the run printed on stderr), which the report keeps whole.
+// `messages` (what the run printed on stderr), which the report keeps whole;
+// `seconds`: the time the run spent until it failed, for the JUnit file (a CI
+// page sorts and charts by it: a render that failed after an hour is no 0 s).
 // Returns `code`, or 3 when the file could not be written.
-int record_failed_render(const ExpectOptions& expect, int code, const std::string& messages);
+int record_failed_render(const ExpectOptions& expect, int code, const std::string& messages,
+                         double seconds);
 
 }  // namespace jt::cli

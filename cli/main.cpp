@@ -69,9 +69,15 @@ ExpectOptions expect_options(const Options& o) {
     return {o.expect.value_or(""), o.tolerance, o.update, o.junit, o.scene_path, o.quiet};
 }
 
-// `compared` is set once the render is compared with --expect's reference.
-int run(const Options& o, bool& compared) {
-    const auto start = std::chrono::steady_clock::now();
+using Clock = std::chrono::steady_clock;
+
+double seconds_since(Clock::time_point start) {
+    return std::chrono::duration<double>(Clock::now() - start).count();
+}
+
+// `compared` is set once the render is compared with --expect's reference;
+// `start`: when the run began, for the time --junit reports.
+int run(const Options& o, Clock::time_point start, bool& compared) {
     FrameSetup setup = set_up_frame("jtracer-cli", o, o.region);
     std::cerr << setup.message;
     if (setup.exit_code != exit_ok) return setup.exit_code;
@@ -132,9 +138,8 @@ int run(const Options& o, bool& compared) {
     if (o.expect) {
         compared = true;
         const jt::Image8 whole_frame = o.region_output ? job.image() : jt::Image8();
-        return check_expected(
-            o.region_output ? whole_frame : image, output, expect_options(o),
-            std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count());
+        return check_expected(o.region_output ? whole_frame : image, output, expect_options(o),
+                              seconds_since(start));
     }
     return exit_ok;
 }
@@ -149,6 +154,7 @@ int main(int argc, char** argv) {
     ParsedOptions parsed = parse_options(argc, argv);
     if (parsed.exit_code) return *parsed.exit_code;
     const Options& o = parsed.options;
+    const Clock::time_point start = Clock::now();
     bool compared = false;
     int code = exit_io_error;
     std::optional<StderrCopy> messages;
@@ -165,7 +171,7 @@ int main(int argc, char** argv) {
                           << "; nothing was rendered\n";
                 return exit_io_error;
             }
-        code = run(o, compared);
+        code = run(o, start, compared);
     } catch (const std::bad_alloc&) {
         std::cerr << "jtracer-cli: out of memory (the scene or the image is too large for the "
                      "memory available); nothing was written\n";
@@ -174,6 +180,7 @@ int main(int argc, char** argv) {
     }
     // --expect --junit: a render that failed is a test case in error.
     if (o.expect && !compared && code != exit_ok)
-        return record_failed_render(expect_options(o), code, messages ? messages->text() : "");
+        return record_failed_render(expect_options(o), code, messages ? messages->text() : "",
+                                    seconds_since(start));
     return code;
 }
