@@ -12,6 +12,7 @@
 #include "jtracer/frontend/frame_setup.hpp"
 #include "jtracer/frontend/memory_budget.hpp"
 #include "jtracer/frontend/progress.hpp"
+#include "jtracer/frontend/render_fingerprint.hpp"
 #include "jtracer/image_file.hpp"
 #include "jtracer/region_file.hpp"
 #include "jtracer/render_job.hpp"
@@ -97,6 +98,11 @@ int run(const Options& o, Clock::time_point start, bool& compared) {
             return exit_usage;
         }
     if (!o.quiet) std::cerr << format_warning(o, output);
+    // A region file records what it was rendered from, for jtracer-merge.
+    const std::optional<jt::RenderFingerprint> fingerprint =
+        o.region_output
+            ? std::optional(render_fingerprint(setup.scene, options, o.clock.value_or(0.0)))
+            : std::nullopt;
     if (jt::Expected<void> fits = check_render_memory(options, o.region_output); !fits) {
         std::cerr << "jtracer-cli: " << fits.error().message << "; nothing was written\n";
         return exit_io_error;
@@ -124,9 +130,10 @@ int run(const Options& o, Clock::time_point start, bool& compared) {
     // of being copied.
     const jt::Image8 image = o.region_output ? jt::Image8() : job.take_image();
     const jt::Expected<void> written =
-        o.region_output ? jt::write_region_bmp(output, job.region_image(),
-                                               {options.width, options.height, *o.region})
-                        : jt::write_image(output, image, setup.format);
+        o.region_output
+            ? jt::write_region_bmp(output, job.region_image(),
+                                   {options.width, options.height, *o.region, fingerprint})
+            : jt::write_image(output, image, setup.format);
     if (!written) {
         std::cerr << "jtracer-cli: " << written.error().message << "\n";
         return exit_io_error;

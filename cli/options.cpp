@@ -137,7 +137,7 @@ ParsedOptions parse_options(int argc, char** argv) {
         ->type_name("X0,Y0,X1,Y1");
     app.add_flag("--region-output", o.region_output,
                  "With --region: write only the region, as a BMP that records where it belongs "
-                 "(jtracer-merge assembles such parts)");
+                 "and what it was rendered from (jtracer-merge assembles such parts)");
     app.add_flag("--check", o.check_only, "Only parse and validate the scene; write nothing");
     app.add_option("--expect", o.expect,
                    "After writing the render, compare it with this reference image (BMP or "

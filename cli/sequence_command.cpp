@@ -29,6 +29,7 @@ std::string kept(const FrameRange& range, int index) {
 
 int run_sequence(const Options& o) {
     SceneSequence sequence("jtracer-cli", o, o.region);
+    if (o.region_output) sequence.fingerprint_frames();
     if (!o.check_only)
         if (std::optional<std::string> clash = sequence.output_clash()) {
             std::cerr << *clash;
@@ -88,7 +89,8 @@ int run_sequence(const Options& o) {
         }
         const Expected<void> written =
             o.region_output ? write_region_bmp(frame.output, job.region_image(),
-                                               {frame.render.width, frame.render.height, *o.region})
+                                               {frame.render.width, frame.render.height, *o.region,
+                                                frame.fingerprint})
                             : write_image(frame.output, job.take_image(), frame.format);
         display.finish();
         if (!written) {

@@ -10,6 +10,7 @@
 
 #include <CLI/CLI.hpp>
 
+#include <algorithm>
 #include <csignal>
 #include <exception>
 #include <iostream>
@@ -49,6 +50,13 @@ int merge(const std::vector<std::string>& part_paths, const std::string& output,
         parts.push_back(std::move(*part));
     }
     const jt::Expected<jt::Image8> frame = jt::merge_regions(parts);
+    // Parts written before the fingerprint existed merge as they always did,
+    // unchecked: say so, as a mix of renders is then the user's to rule out.
+    if (frame && !quiet && std::none_of(parts.begin(), parts.end(), [](const jt::RegionPart& p) {
+            return p.placement.fingerprint.has_value();
+        }))
+        std::cerr << "jtracer-merge: note: the parts carry no render fingerprint (written by an "
+                     "older jtracer-cli): that they are parts of one render was not checked\n";
     if (!frame) {
         std::cerr << "jtracer-merge: " << frame.error().message << "; nothing was written\n";
         return exit_bad_parts;
@@ -82,8 +90,9 @@ int main(int argc, char** argv) {
         "  jtracer-cli scene.jts --region 0,540,1920,1080 --region-output -o parts/bottom.bmp\n"
         "  jtracer-merge -o frame.png parts/*.bmp\n"
         "\n"
-        "Parts that overlap, leave a gap, reach out of the frame or belong to frames of\n"
-        "different sizes are refused and nothing is written.\n"
+        "Parts that overlap, leave a gap, reach out of the frame, belong to frames of\n"
+        "different sizes or to different renders (each part records a fingerprint of its\n"
+        "scene, samples, camera and clock) are refused and nothing is written.\n"
         "\n"
         "Exit codes: 0 ok, 1 parts that do not make one frame, 2 bad command line, 3 file I/O "
         "errors.\n");

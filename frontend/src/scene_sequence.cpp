@@ -101,6 +101,16 @@ SequenceFrame SceneSequence::frame(int index, bool prepare) {
         frame.message += replaces_scene(program_, index, frame.output) + "; stopped before it\n";
         return frame;
     }
+    if (fingerprints_) {
+        // A scene the same at every clock is digested once.
+        if (fixed_ && fixed_fingerprint_) {
+            frame.fingerprint = fixed_fingerprint_;
+            frame.fingerprint->clock = frame.clock;
+        } else {
+            frame.fingerprint = render_fingerprint(setup.scene, setup.render, frame.clock);
+            if (!reads_clock) fixed_fingerprint_ = frame.fingerprint;
+        }
+    }
     if (prepare) {
         if (fixed_ && previous_) {
             frame.prepared = previous_;

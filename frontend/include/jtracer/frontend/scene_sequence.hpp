@@ -14,6 +14,7 @@
 
 #include "jtracer/frontend/frame_file_name.hpp"
 #include "jtracer/frontend/frame_setup.hpp"
+#include "jtracer/frontend/render_fingerprint.hpp"
 
 #include <memory>
 #include <optional>
@@ -36,6 +37,8 @@ struct SequenceFrame {
     ImageFormat format = ImageFormat::bmp;
     // The render-ready scene; null unless asked for, and on failure.
     std::shared_ptr<const PreparedScene> prepared;
+    // What the frame is rendered from, when fingerprint_frames() asked.
+    std::optional<RenderFingerprint> fingerprint;
 };
 
 class SceneSequence {
@@ -52,6 +55,9 @@ class SceneSequence {
     // Why -o's pattern cannot be used: a frame of the range would be written
     // over the scene file. Nothing when no frame's file is the scene's.
     std::optional<std::string> output_clash() const;
+
+    // From now on each frame carries its fingerprint (for region files).
+    void fingerprint_frames() { fingerprints_ = true; }
 
     // Sets up frame `index`, and prepares it when `prepare` (a failure to
     // prepare is exit_io_error; a frame whose file is the scene file itself
@@ -71,6 +77,8 @@ class SceneSequence {
     // Set once a frame showed that the scene is the same at every clock:
     // every later frame renders this set-up and this prepared scene.
     std::optional<FrameSetup> fixed_;
+    bool fingerprints_ = false;
+    std::optional<RenderFingerprint> fixed_fingerprint_;  // fixed_'s, at any clock
     std::shared_ptr<const PreparedScene> previous_;
     std::set<std::string> printed_;  // formatted diagnostics already shown
     // The frame being set up: its path and texts, to format its diagnostics;
