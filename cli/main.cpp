@@ -2,6 +2,7 @@
 // file only orders the steps and maps failures to exit codes.
 
 #include "diff_command.hpp"
+#include "existing_output.hpp"
 #include "info_command.hpp"
 #include "interruptible_render.hpp"
 #include "list_names.hpp"
@@ -103,6 +104,9 @@ int run(const Options& o, Clock::time_point start, bool& compared) {
         o.region_output
             ? std::optional(render_fingerprint(setup.scene, options, o.clock.value_or(0.0)))
             : std::nullopt;
+    if (o.skip_existing &&
+        keep_existing_output(o, output, wanted_output(o, options, setup.format, fingerprint)))
+        return exit_ok;
     if (jt::Expected<void> fits = check_render_memory(options, o.region_output); !fits) {
         std::cerr << "jtracer-cli: " << fits.error().message << "; nothing was written\n";
         return exit_io_error;

@@ -72,7 +72,8 @@ std::string SceneSequence::unprinted(const std::vector<Diagnostic>& diagnostics)
     return message;
 }
 
-SequenceFrame SceneSequence::frame(int index, bool prepare) {
+SequenceFrame SceneSequence::frame(int index, bool prepare,
+                                   const std::function<bool(const SequenceFrame&)>& skip) {
     SequenceFrame frame;
     frame.index = index;
     frame.clock = frame_clock(index, count_);
@@ -111,7 +112,8 @@ SequenceFrame SceneSequence::frame(int index, bool prepare) {
             if (!reads_clock) fixed_fingerprint_ = frame.fingerprint;
         }
     }
-    if (prepare) {
+    frame.skipped = skip && skip(frame);
+    if (prepare && !frame.skipped) {
         if (fixed_ && previous_) {
             frame.prepared = previous_;
         } else {

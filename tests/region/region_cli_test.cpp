@@ -288,5 +288,25 @@ TEST_F(RegionCli, PartsWithoutAFingerprintMergeAloneWithANote) {
     EXPECT_FALSE(exists("mixed.bmp"));
 }
 
+// A region job array rerun with --skip-existing keeps a part only when it is
+// this region of this render: a part of another render under the name (a
+// stale part from an earlier version of the scene) is rendered again.
+TEST_F(RegionCli, SkipExistingKeepsOnlyAPartOfThisRender) {
+    const std::string part =
+        cli + showcase + "--width 40 --height 30 --region-output --region 0,0,40,15 -o p.bmp ";
+    ASSERT_EQ(run_shell(part + "-q --samples 2").code, 0);
+    const std::string two_samples = test::read_file(dir / "p.bmp");
+    ProgramRun r = run_shell(part + "--skip-existing");
+    ASSERT_EQ(r.code, 0) << r.err;
+    EXPECT_NE(r.err.find("p.bmp is there, but it holds another region or render"),
+              std::string::npos)
+        << r.err;
+    EXPECT_NE(test::read_file(dir / "p.bmp"), two_samples);
+    r = run_shell(part + "--skip-existing");
+    ASSERT_EQ(r.code, 0) << r.err;
+    EXPECT_NE(r.err.find("kept p.bmp: already there and complete"), std::string::npos) << r.err;
+    EXPECT_EQ(r.err.find("wrote"), std::string::npos) << r.err;
+}
+
 }  // namespace
 }  // namespace jt

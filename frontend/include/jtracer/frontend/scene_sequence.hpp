@@ -16,6 +16,7 @@
 #include "jtracer/frontend/frame_setup.hpp"
 #include "jtracer/frontend/render_fingerprint.hpp"
 
+#include <functional>
 #include <memory>
 #include <optional>
 #include <set>
@@ -37,6 +38,9 @@ struct SequenceFrame {
     ImageFormat format = ImageFormat::bmp;
     // The render-ready scene; null unless asked for, and on failure.
     std::shared_ptr<const PreparedScene> prepared;
+    // The caller's `skip` said that the frame's file is already there: not
+    // prepared, to render no more.
+    bool skipped = false;
     // What the frame is rendered from, when fingerprint_frames() asked.
     std::optional<RenderFingerprint> fingerprint;
 };
@@ -61,8 +65,10 @@ class SceneSequence {
 
     // Sets up frame `index`, and prepares it when `prepare` (a failure to
     // prepare is exit_io_error; a frame whose file is the scene file itself
-    // is exit_usage).
-    SequenceFrame frame(int index, bool prepare = true);
+    // is exit_usage) and `skip`, asked once the frame is set up, does not say
+    // that its file is already there (--skip-existing).
+    SequenceFrame frame(int index, bool prepare = true,
+                        const std::function<bool(const SequenceFrame&)>& skip = {});
 
   private:
     FrameSetup set_up(double clock, bool& reads_clock);
