@@ -110,6 +110,8 @@ int main(int argc, char** argv) {
     auto checks = [&] {
         if (output.empty())
             throw CLI::ValidationError("-o/--output", "needs a file name, not an empty string");
+        if (std::optional<std::string> refused = jt::frontend::terminal_output_refusal(output))
+            throw CLI::ValidationError("-o/--output", *refused);
         for (const std::string& part : part_paths)
             if (jt::frontend::same_file(output, part))
                 throw CLI::ValidationError("-o/--output", "'" + output + "' is also a part (" +

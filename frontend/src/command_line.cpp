@@ -5,7 +5,9 @@
 
 #include <CLI/CLI.hpp>
 
+#include <fcntl.h>
 #include <signal.h>
+#include <unistd.h>
 
 #include <atomic>
 #include <cctype>
@@ -72,6 +74,29 @@ bool same_file(const std::filesystem::path& a, const std::filesystem::path& b) {
     if (error) return false;
     const std::filesystem::path place_b = std::filesystem::weakly_canonical(b, error);
     return !error && place_a == place_b;
+}
+
+std::optional<std::string> terminal_output_refusal(const std::string& output) {
+    bool terminal = false;
+    if (output == "/dev/stdout") {
+        terminal = ::isatty(STDOUT_FILENO) != 0;
+    } else {
+        std::error_code error;
+        if (std::filesystem::is_character_file(output, error)) {
+            // Opened without becoming the process's terminal, and without
+            // waiting on a device that is not ready.
+            const int descriptor = ::open(output.c_str(), O_WRONLY | O_NOCTTY | O_NONBLOCK);
+            if (descriptor >= 0) {
+                terminal = ::isatty(descriptor) != 0;
+                ::close(descriptor);
+            }
+        }
+    }
+    if (!terminal) return std::nullopt;
+    return (output == "/dev/stdout" ? std::string("standard output") : "'" + output + "'") +
+           " is a terminal, where an image's bytes would show as garbage and be lost: "
+           "redirect standard output to a file or a pipe (-o - > shot.bmp, -o - | ...), or "
+           "name a file";
 }
 
 void handle_stop_signals(void (*handler)(int)) {

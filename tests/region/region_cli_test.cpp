@@ -162,6 +162,18 @@ TEST_F(RegionCli, MergeWritesADashOutputToStandardOutput) {
 
 // As jtracer-cli before a render: a frame that cannot be written is found
 // before the parts (gigabytes, for a large frame) are read.
+// As jtracer-cli: a frame is not written to a terminal, where it would be lost.
+TEST_F(RegionCli, MergeRefusesATerminalAsItsOutput) {
+    if (run_shell("command -v script").code != 0) GTEST_SKIP() << "no script(1) here";
+    ASSERT_EQ(run_shell(cli + showcase +
+                        "--width 8 --height 4 -q --region-output --region 0,0,8,4 -o a.bmp")
+                  .code,
+              0);
+    ProgramRun r = run_shell("script -qec \"" + merge + "-o - a.bmp\" /dev/null");
+    EXPECT_EQ(r.code, 2) << r.out;
+    EXPECT_NE(r.out.find("standard output is a terminal"), std::string::npos) << r.out;
+}
+
 TEST_F(RegionCli, MergeFindsAnUnwritableFrameBeforeReadingTheParts) {
     ProgramRun r = run_shell(merge + "-o missing/frame.bmp no-such-part.bmp");
     EXPECT_EQ(r.code, 3) << r.err;

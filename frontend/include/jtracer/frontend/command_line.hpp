@@ -63,6 +63,12 @@ bool is_stream(const std::filesystem::path& path);
 // still ./-. Any other name is returned as it is.
 std::string output_name(std::string name);
 
+// Why an image cannot be written to `output` (as output_name gives it), or
+// nothing: a terminal (-o - with standard output not redirected, or a
+// terminal's device) would show the image's bytes as garbage, perhaps
+// changing the terminal's settings, and the image would be lost.
+std::optional<std::string> terminal_output_refusal(const std::string& output);
+
 // Parses the command line, then runs `checks` (which may throw
 // CLI::ValidationError for rules between options). Returns the exit code when
 // the program should stop now: 0 after --help or --version, exit_usage after
