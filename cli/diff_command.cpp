@@ -192,8 +192,8 @@ int run_diff_command(int argc, char** argv) {
         if (!heat_map_path.empty()) {
             if (!d.same_size) {
                 std::cerr << program << ": the sizes differ, so no heat map was written\n";
-            } else if (const Expected<void> written = write_image(
-                           heat_map_path, d.image, format_from_extension(heat_map_path));
+            } else if (const Expected<void> written =
+                           write_image(heat_map_path, d.image, heat_map_format(heat_map_path));
                        !written) {
                 std::cerr << program << ": " << written.error().message << "\n";
                 return finish(exit_io_error);
@@ -206,6 +206,10 @@ int run_diff_command(int argc, char** argv) {
         std::cerr << program << ": out of memory\n";
         return exit_io_error;
     }
+}
+
+ImageFormat heat_map_format(const std::string& path) {
+    return format_named_by(path).value_or(ImageFormat::png);
 }
 
 std::string heat_map_path_for(const std::string& render_path) {

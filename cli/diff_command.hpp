@@ -5,6 +5,7 @@
 // leave a JUnit XML file of the comparison (comparison_report.hpp).
 
 #include "jtracer/image.hpp"
+#include "jtracer/image_file.hpp"
 
 #include <optional>
 #include <string>
@@ -42,6 +43,10 @@ struct ExpectOptions {
     std::string scene_path;            // the JUnit test case's name
     bool quiet = false;
 };
+
+// The format of diff's heat map (-o): a PNG but for a name ending in .bmp,
+// as its help says (format_from_extension would make any other name a BMP).
+ImageFormat heat_map_format(const std::string& path);
 
 // Where --expect puts the heat map of a render outside the tolerance:
 // out.png -> out.diff.png, beside the file when out.png is a link to it.

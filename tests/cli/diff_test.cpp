@@ -128,6 +128,20 @@ TEST_F(Diff, HeatMapMarksTheDifferingPixels) {
     EXPECT_TRUE(exists("same.bmp"));
 }
 
+// The heat map is a PNG but for a .bmp name, as diff --help and the manual
+// say: a name without an extension (or another) gave a BMP.
+TEST_F(Diff, HeatMapIsAPngButForABmpName) {
+    for (const auto& [name, magic] :
+         std::vector<std::pair<std::string, std::string>>{{"heat", "\x89PNG"},
+                                                          {"heat.map", "\x89PNG"},
+                                                          {"heat.PNG", "\x89PNG"},
+                                                          {"heat.bmp", "BM"},
+                                                          {"heat.BMP", "BM"}}) {
+        EXPECT_EQ(diff("a.png a.bmp -q -o " + name).code, 0) << name;
+        EXPECT_EQ(test::read_file(dir / name).substr(0, magic.size()), magic) << name;
+    }
+}
+
 TEST_F(Diff, DifferentImagesAndDifferentSizes) {
     Image8 black(40, 20);
     write_png_file("black.png", black);
