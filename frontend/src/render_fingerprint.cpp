@@ -46,15 +46,6 @@ struct Digest {
     }
 };
 
-// The render_settings lines that the fingerprint holds apart or that differ
-// from part to part.
-bool left_out(std::string_view line) {
-    while (!line.empty() && line.front() == ' ') line.remove_prefix(1);
-    for (std::string_view name : {"filename:", "width:", "height:", "samples:", "active_camera:"})
-        if (line.starts_with(name)) return true;
-    return false;
-}
-
 void add_file(Digest& digest, const std::filesystem::path& path) {
     std::ifstream in(path, std::ios::binary);
     std::vector<char> chunk(1 << 20);
@@ -70,17 +61,24 @@ void add_file(Digest& digest, const std::filesystem::path& path) {
 RenderFingerprint render_fingerprint(const Scene& scene, const RenderOptions& render,
                                      double clock) {
     Digest digest;
-    const std::string text = serialize_scene(scene);
-    bool in_settings = false;
-    for (std::size_t start = 0; start < text.size();) {
-        std::size_t end = text.find('\n', start);
-        if (end == std::string::npos) end = text.size();
-        const std::string_view line(text.data() + start, end - start);
-        if (line.starts_with("render_settings")) in_settings = true;
-        if (line.starts_with("}")) in_settings = false;
-        if (!(in_settings && left_out(line))) digest.add(line);
-        start = end + 1;
-    }
+    // The scene without its primitives, then each primitive as the
+    // serializer writes it: never the whole text at once, which for a
+    // scene of millions of primitives is gigabytes. The settings the
+    // fingerprint or the placement hold apart, or that differ from part to
+    // part, are set to their defaults first.
+    Scene head;
+    head.settings = scene.settings;
+    head.cameras = scene.cameras;
+    head.lights = scene.lights;
+    const RenderSettings defaults;
+    head.settings.filename = defaults.filename;
+    head.settings.width = defaults.width;
+    head.settings.height = defaults.height;
+    head.settings.samples = defaults.samples;
+    head.settings.active_camera = defaults.active_camera;
+    digest.add(serialize_scene(head));
+    for (const Primitive& primitive : scene.primitives)
+        for (const std::string& line : block_lines(primitive)) digest.add(line);
     const NamedFiles files = named_files(scene);
     for (const auto* list : {&files.models, &files.images})
         for (const std::filesystem::path& path : *list) add_file(digest, path);
