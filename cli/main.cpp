@@ -143,7 +143,7 @@ int run(const Options& o, Clock::time_point start, bool& compared) {
         return exit_io_error;
     }
     if (!o.quiet)
-        std::cerr << "wrote " << output << ": "
+        std::cerr << "wrote " << shown_output(output) << ": "
                   << render_summary(options.width, options.height, options.samples, job.progress())
                   << "\n";
     if (o.expect) {

@@ -171,7 +171,7 @@ ParsedOptions parse_options(int argc, char** argv) {
             if (*name && (*name)->empty())
                 throw CLI::ValidationError(flag, "needs a file name, not an empty string");
         if (o.output)
-            if (std::optional<std::string> refused = frontend::terminal_output_refusal(*o.output))
+            if (std::optional<std::string> refused = frontend::output_refusal(*o.output))
                 throw CLI::ValidationError("-o/--output", *refused);
         if (o.region_output && !o.region)
             throw CLI::ValidationError("--region-output", "needs --region X0,Y0,X1,Y1");

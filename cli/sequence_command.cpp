@@ -64,16 +64,16 @@ int run_sequence(const Options& o) {
             std::cerr << frame.message;
         }
         if (frame.exit_code != exit_ok) return frame.exit_code;
-        if (frame.skipped) {
-            ++kept_frames;
-            continue;
-        }
         if (index == range.first)
             if (std::optional<std::string> refused = region_output_refusal(o, frame.output)) {
                 display.finish();
                 std::cerr << *refused;
                 return exit_usage;
             }
+        if (frame.skipped) {
+            ++kept_frames;
+            continue;
+        }
         if (o.check_only) continue;
         if (index == range.first && !o.quiet) {
             display.finish();

@@ -68,8 +68,8 @@ int merge(const std::vector<std::string>& part_paths, const std::string& output,
         return exit_io_error;
     }
     if (!quiet)
-        std::cerr << "wrote " << output << ": " << frame->width << "x" << frame->height << " from "
-                  << parts.size() << " parts\n";
+        std::cerr << "wrote " << jt::frontend::shown_output(output) << ": " << frame->width << "x"
+                  << frame->height << " from " << parts.size() << " parts\n";
     return exit_ok;
 }
 
@@ -110,7 +110,7 @@ int main(int argc, char** argv) {
     auto checks = [&] {
         if (output.empty())
             throw CLI::ValidationError("-o/--output", "needs a file name, not an empty string");
-        if (std::optional<std::string> refused = jt::frontend::terminal_output_refusal(output))
+        if (std::optional<std::string> refused = jt::frontend::output_refusal(output))
             throw CLI::ValidationError("-o/--output", *refused);
         for (const std::string& part : part_paths)
             if (jt::frontend::same_file(output, part))

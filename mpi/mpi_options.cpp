@@ -50,7 +50,7 @@ ParsedOptions parse_options(int argc, char** argv, bool speaks) {
             [&] {
                 frontend::check_sequence_flags(o);
                 if (o.output)
-                    if (auto refused = frontend::terminal_output_refusal(*o.output))
+                    if (auto refused = frontend::output_refusal(*o.output))
                         throw CLI::ValidationError("-o/--output", *refused);
             },
             out, err))

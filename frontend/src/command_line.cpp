@@ -76,8 +76,12 @@ bool same_file(const std::filesystem::path& a, const std::filesystem::path& b) {
     return !error && place_a == place_b;
 }
 
-std::optional<std::string> terminal_output_refusal(const std::string& output) {
+std::optional<std::string> output_refusal(const std::string& output) {
     bool terminal = false;
+    if (output == "/dev/stdout" && ::fcntl(STDOUT_FILENO, F_GETFD) < 0)
+        return std::string(
+            "standard output is closed: redirect it to a file or a pipe, or name "
+            "a file");
     if (output == "/dev/stdout") {
         terminal = ::isatty(STDOUT_FILENO) != 0;
     } else {
@@ -97,6 +101,10 @@ std::optional<std::string> terminal_output_refusal(const std::string& output) {
            " is a terminal, where an image's bytes would show as garbage and be lost: "
            "redirect standard output to a file or a pipe (-o - > shot.bmp, -o - | ...), or "
            "name a file";
+}
+
+std::string shown_output(const std::string& output) {
+    return output == "/dev/stdout" ? std::string("standard output") : output;
 }
 
 void handle_stop_signals(void (*handler)(int)) {

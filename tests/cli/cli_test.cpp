@@ -200,6 +200,20 @@ TEST_F(Cli, AnImageIsNotWrittenToATerminal) {
     EXPECT_TRUE(read_bmp(dir / "piped.bmp"));
 }
 
+// -o - is spoken of as standard output, a name the user gave, not as
+// /dev/stdout; closed (a job started with >&-), it is refused before the
+// render rather than failing after it with "cannot write '/dev/stdout'".
+TEST_F(Cli, ADashOutputIsNamedStandardOutput) {
+    test::ProgramRun r = run("scene.jts -o - > piped.bmp");
+    ASSERT_EQ(r.code, 0) << r.err;
+    EXPECT_NE(r.err.find("wrote standard output: 32x18"), std::string::npos) << r.err;
+    EXPECT_EQ(r.err.find("/dev/stdout"), std::string::npos) << r.err;
+    r = run("scene.jts -o - >&-");
+    EXPECT_EQ(r.code, 2) << r.err;
+    EXPECT_NE(r.err.find("-o/--output: standard output is closed"), std::string::npos) << r.err;
+    EXPECT_EQ(r.err.find("/dev/stdout"), std::string::npos) << r.err;
+}
+
 TEST_F(Cli, ThreadCountGivesByteIdenticalFiles) {
     ASSERT_EQ(run("-q scene.jts --samples 4 --threads 1 -o one.bmp").code, 0);
     ASSERT_EQ(run("-q scene.jts --samples 4 --threads 2 -o two.bmp").code, 0);

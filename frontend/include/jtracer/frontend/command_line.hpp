@@ -66,8 +66,14 @@ std::string output_name(std::string name);
 // Why an image cannot be written to `output` (as output_name gives it), or
 // nothing: a terminal (-o - with standard output not redirected, or a
 // terminal's device) would show the image's bytes as garbage, perhaps
-// changing the terminal's settings, and the image would be lost.
-std::optional<std::string> terminal_output_refusal(const std::string& output);
+// changing the terminal's settings, and the image would be lost; a closed
+// standard output (a job started with >&-) could only fail after the render,
+// naming /dev/stdout, a file the user never named.
+std::optional<std::string> output_refusal(const std::string& output);
+
+// How messages name the output: "standard output" for -o - (/dev/stdout),
+// else the name.
+std::string shown_output(const std::string& output);
 
 // Parses the command line, then runs `checks` (which may throw
 // CLI::ValidationError for rules between options). Returns the exit code when
