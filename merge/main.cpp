@@ -11,8 +11,10 @@
 #include <CLI/CLI.hpp>
 
 #include <algorithm>
+#include <cctype>
 #include <csignal>
 #include <exception>
+#include <filesystem>
 #include <iostream>
 #include <new>
 
@@ -31,6 +33,17 @@ extern "C" void on_ending_signal(int signal) {
 
 void remove_the_temporary_file_on_signals() {
     jt::frontend::handle_stop_signals(on_ending_signal);
+}
+
+// Whether `path` is named as write_file_atomically names its temporary file,
+// TARGET.tmp-XXXXXX: one left by a process killed during a write, which a
+// glob such as `band*` picks up beside the parts.
+bool is_unfinished_write(const std::string& path) {
+    const std::string name = std::filesystem::path(path).filename().string();
+    const std::size_t at = name.rfind(".tmp-");
+    if (at == std::string::npos || at == 0 || name.size() - at != 11) return false;
+    return std::all_of(name.begin() + static_cast<std::ptrdiff_t>(at) + 5, name.end(),
+                       [](char c) { return std::isalnum(static_cast<unsigned char>(c)) != 0; });
 }
 
 int merge(const std::vector<std::string>& part_paths, const std::string& output, bool quiet) {
@@ -116,6 +129,18 @@ int main(int argc, char** argv) {
             if (jt::frontend::same_file(output, part))
                 throw CLI::ValidationError("-o/--output", "'" + output + "' is also a part (" +
                                                               part + "): it would be replaced");
+        for (std::size_t i = 0; i < part_paths.size(); ++i) {
+            if (is_unfinished_write(part_paths[i]))
+                throw CLI::ValidationError(
+                    "'" + part_paths[i] +
+                    "' is the temporary file of a write that never finished (its process was "
+                    "killed before the rename): not a part; remove it, and render that part "
+                    "again if its own file is missing");
+            for (std::size_t j = i + 1; j < part_paths.size(); ++j)
+                if (jt::frontend::same_file(part_paths[i], part_paths[j]))
+                    throw CLI::ValidationError("'" + part_paths[i] + "' and '" + part_paths[j] +
+                                               "' are the same file, given twice");
+        }
     };
     if (std::optional<int> code =
             jt::frontend::parse_command_line(app, argc, argv, "jtracer-merge", checks))

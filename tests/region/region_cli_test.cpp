@@ -174,6 +174,30 @@ TEST_F(RegionCli, MergeRefusesATerminalAsItsOutput) {
     EXPECT_NE(r.out.find("standard output is a terminal"), std::string::npos) << r.out;
 }
 
+// A glob such as band* picked up the temporary file a killed write left
+// (band1.bmp.tmp-XXXXXX) and the merge failed on it as a truncated BMP; a
+// part named twice under two spellings was reported as overlapping itself.
+TEST_F(RegionCli, MergeNamesALeftoverTemporaryFileAndAPartGivenTwice) {
+    const std::string size = "--width 16 --height 8 -q --region-output ";
+    ASSERT_EQ(run_shell(cli + showcase + size + "--region 0,0,16,4 -o band0.bmp").code, 0);
+    ASSERT_EQ(run_shell(cli + showcase + size + "--region 0,4,16,8 -o band1.bmp").code, 0);
+    test::write_file(dir / "band1.bmp.tmp-a1B2c3", "BM");
+    ProgramRun r = run_shell(merge + "-o frame.bmp band*");
+    EXPECT_EQ(r.code, 2) << r.err;
+    EXPECT_NE(r.err.find("'band1.bmp.tmp-a1B2c3' is the temporary file of a write that never "
+                         "finished"),
+              std::string::npos)
+        << r.err;
+    r = run_shell(merge + "-o frame.bmp band0.bmp ./band0.bmp band1.bmp");
+    EXPECT_EQ(r.code, 2) << r.err;
+    EXPECT_NE(r.err.find("'band0.bmp' and './band0.bmp' are the same file, given twice"),
+              std::string::npos)
+        << r.err;
+    EXPECT_FALSE(exists("frame.bmp"));
+    r = run_shell(merge + "-o frame.bmp band*.bmp");
+    EXPECT_EQ(r.code, 0) << r.err;
+}
+
 TEST_F(RegionCli, MergeFindsAnUnwritableFrameBeforeReadingTheParts) {
     ProgramRun r = run_shell(merge + "-o missing/frame.bmp no-such-part.bmp");
     EXPECT_EQ(r.code, 3) << r.err;
