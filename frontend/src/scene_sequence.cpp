@@ -72,7 +72,8 @@ std::string SceneSequence::unprinted(const std::vector<Diagnostic>& diagnostics)
     return message;
 }
 
-SequenceFrame SceneSequence::frame(int index, bool prepare) {
+SequenceFrame SceneSequence::frame(int index, bool prepare,
+                                   const std::function<bool(const SequenceFrame&)>& skip) {
     SequenceFrame frame;
     frame.index = index;
     frame.clock = frame_clock(index, count_);
@@ -101,7 +102,18 @@ SequenceFrame SceneSequence::frame(int index, bool prepare) {
         frame.message += replaces_scene(program_, index, frame.output) + "; stopped before it\n";
         return frame;
     }
-    if (prepare) {
+    if (fingerprints_) {
+        // A scene the same at every clock is digested once.
+        if (fixed_ && fixed_fingerprint_) {
+            frame.fingerprint = fixed_fingerprint_;
+            frame.fingerprint->clock = frame.clock;
+        } else {
+            frame.fingerprint = render_fingerprint(setup.scene, setup.render, frame.clock);
+            if (!reads_clock) fixed_fingerprint_ = frame.fingerprint;
+        }
+    }
+    frame.skipped = skip && skip(frame);
+    if (prepare && !frame.skipped) {
         if (fixed_ && previous_) {
             frame.prepared = previous_;
         } else {

@@ -128,6 +128,20 @@ TEST_F(Diff, HeatMapMarksTheDifferingPixels) {
     EXPECT_TRUE(exists("same.bmp"));
 }
 
+// The heat map is a PNG but for a .bmp name, as diff --help and the manual
+// say: a name without an extension (or another) gave a BMP.
+TEST_F(Diff, HeatMapIsAPngButForABmpName) {
+    for (const auto& [name, magic] :
+         std::vector<std::pair<std::string, std::string>>{{"heat", "\x89PNG"},
+                                                          {"heat.map", "\x89PNG"},
+                                                          {"heat.PNG", "\x89PNG"},
+                                                          {"heat.bmp", "BM"},
+                                                          {"heat.BMP", "BM"}}) {
+        EXPECT_EQ(diff("a.png a.bmp -q -o " + name).code, 0) << name;
+        EXPECT_EQ(test::read_file(dir / name).substr(0, magic.size()), magic) << name;
+    }
+}
+
 TEST_F(Diff, DifferentImagesAndDifferentSizes) {
     Image8 black(40, 20);
     write_png_file("black.png", black);
@@ -425,6 +439,28 @@ TEST_F(Expect, RefusesAJunitReportThatIsTheHeatMap) {
     EXPECT_NE(r.err.find("where the heat map"), std::string::npos) << r.err;
     EXPECT_FALSE(exists("out.png")) << "refused before anything is written";
     EXPECT_FALSE(exists("out.diff.png"));
+}
+
+// A render that failed after a while is reported with the time it ran, as
+// a passed or failed one is: a CI page that charts the times showed an hour's
+// render stopped by the job's time limit as 0.000 s.
+TEST_F(Expect, AFailedRenderReportsTheTimeItRan) {
+    // One thread and many samples of the showcase: far longer than the 2 s
+    // after which `timeout` interrupts it.
+    ProgramRun r = run("timeout --preserve-status -s INT 2 " + cli +
+                       " '" JT_SOURCE_DIR
+                       "/scenes/showcase.jts' -q -o out.png --samples 64 --threads 1 "
+                       "--expect ref.png --junit report.xml");
+    ASSERT_EQ(r.code, 130) << r.err;
+    const std::string report = test::read_file(dir / "report.xml");
+    const std::size_t at = report.find("<testcase ");
+    ASSERT_NE(at, std::string::npos) << report;
+    const std::size_t time = report.find("time=\"", at);
+    ASSERT_NE(time, std::string::npos) << report;
+    const double seconds = std::stod(report.substr(time + 6));
+    EXPECT_GT(seconds, 1.0) << report;
+    EXPECT_LT(seconds, 60.0) << report;
+    EXPECT_NE(report.find("interrupted by SIGINT"), std::string::npos) << report;
 }
 
 TEST_F(Expect, ListCamerasPrintsTheNamesOneALine) {

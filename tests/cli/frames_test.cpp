@@ -78,6 +78,92 @@ TEST_F(CliFrames, AFrameThatIsTheSceneFileIsRefused) {
     EXPECT_EQ(bytes("scene1.jts"), growing_scene) << "the scene file was replaced by frame 1";
 }
 
+// -o - is standard output, which cannot hold a file a frame: the refusal
+// speaks of it as the user wrote it, not of /dev/stdout, a name they never
+// gave.
+TEST_F(CliFrames, StandardOutputIsRefusedInTheUsersWords) {
+    test::ProgramRun r = run("scene.jts --frames 3 -o -");
+    EXPECT_EQ(r.code, 2) << r.err;
+    EXPECT_NE(r.err.find("-o/--output: - (standard output) takes one image"), std::string::npos)
+        << r.err;
+    EXPECT_EQ(r.err.find("/dev/stdout"), std::string::npos) << r.err;
+    EXPECT_TRUE(r.out.empty());
+    // A name the user wrote is still quoted as written.
+    r = run("scene.jts --frames 3 -o /dev/stdout");
+    EXPECT_EQ(r.code, 2) << r.err;
+    EXPECT_NE(r.err.find("'/dev/stdout' has no frame number field"), std::string::npos) << r.err;
+}
+
+// A rerun after a lost node renders only the frames not already there and
+// whole: a frame cut short (a copy interrupted, a disk that filled) or of
+// another size is rendered again, and the output says which were kept.
+TEST_F(CliFrames, SkipExistingRendersOnlyWhatIsMissingOrIncomplete) {
+    ASSERT_EQ(run("-q scene.jts --frames 5 -o 'f%d.png'").code, 0);
+    std::vector<std::string> first;
+    for (int f = 0; f < 5; ++f) first.push_back(bytes("f" + std::to_string(f) + ".png"));
+    fs::remove(dir / "f1.png");
+    test::write_file(dir / "f2.png", first[2].substr(0, first[2].size() / 2));  // cut short
+    std::string damaged = first[3];
+    damaged[damaged.size() / 2] ^= 0x01;  // a flipped bit in the pixels
+    test::write_file(dir / "f3.png", damaged);
+    ASSERT_EQ(run("-q scene.jts --width 20 --clock 0 -o f4.png").code, 0);  // another size
+    test::ProgramRun r = run("scene.jts --frames 5 -o 'f%d.png' --skip-existing");
+    ASSERT_EQ(r.code, 0) << r.err;
+    for (int f = 0; f < 5; ++f)
+        EXPECT_EQ(bytes("f" + std::to_string(f) + ".png"), first[static_cast<std::size_t>(f)]) << f;
+    EXPECT_NE(r.err.find("kept f0.png (frame 0): already there and complete"), std::string::npos)
+        << r.err;
+    EXPECT_EQ(count(r.err, "kept f"), 1) << r.err;
+    EXPECT_NE(r.err.find("wrote f1.png (frame 1"), std::string::npos) << r.err;
+    EXPECT_NE(r.err.find("f2.png is there, but it is cut short"), std::string::npos) << r.err;
+    EXPECT_NE(r.err.find("f3.png is there, but it is damaged"), std::string::npos) << r.err;
+    EXPECT_NE(r.err.find("f4.png is there, but it is 20x24, not 24x24"), std::string::npos)
+        << r.err;
+    EXPECT_NE(r.err.find("wrote 4 frames and kept 1 already there in "), std::string::npos)
+        << r.err;
+
+    // Every frame there: nothing rendered, and said so; -q says nothing.
+    r = run("scene.jts --frames 5 -o 'f%d.png' --skip-existing");
+    ASSERT_EQ(r.code, 0) << r.err;
+    EXPECT_EQ(count(r.err, "kept f"), 5) << r.err;
+    EXPECT_NE(r.err.find("kept all 5 frames, already there"), std::string::npos) << r.err;
+    r = run("-q scene.jts --frames 5 -o 'f%d.png' --skip-existing");
+    ASSERT_EQ(r.code, 0) << r.err;
+    EXPECT_EQ(r.err, "");
+}
+
+// A kept frame is not even prepared: a rerun in a folder the frames are all
+// in finds nothing to write, so a read-only folder is no error.
+TEST_F(CliFrames, SkipExistingKeepsFramesInAReadOnlyFolder) {
+    fs::create_directory(dir / "out");
+    ASSERT_EQ(run("-q scene.jts --frames 2 -o 'out/f%d.bmp'").code, 0);
+    fs::permissions(dir / "out",
+                    fs::perms::owner_write | fs::perms::group_write | fs::perms::others_write,
+                    fs::perm_options::remove);
+    test::ProgramRun r = run("-q scene.jts --frames 2 -o 'out/f%d.bmp' --skip-existing");
+    fs::permissions(dir / "out", fs::perms::owner_write, fs::perm_options::add);
+    EXPECT_EQ(r.code, 0) << r.err;
+}
+
+// Where keeping an earlier file means nothing, --skip-existing is refused
+// before anything is read or rendered.
+TEST_F(CliFrames, SkipExistingIsRefusedWhereItMeansNothing) {
+    for (const auto& [args, why] : std::vector<std::pair<std::string, std::string>>{
+             {"scene.jts -o - --skip-existing", "standard output (-o -) holds no earlier image"},
+             {"scene.jts -o /dev/null --skip-existing", "'/dev/null' is a device or a pipe"},
+             {"scene.jts --check --skip-existing", "not with --check"},
+             {"scene.jts -o a.bmp --expect a.bmp --skip-existing", "not with --expect"},
+             {"scene.jts --frames 2 -o 'r%d.bmp' --region 0,0,4,4 --skip-existing",
+              "with --region, needs --region-output"},
+         }) {
+        test::ProgramRun r = run(args);
+        EXPECT_EQ(r.code, 2) << args << ": " << r.err;
+        EXPECT_NE(r.err.find("--skip-existing: " + why), std::string::npos)
+            << args << ": " << r.err;
+    }
+    EXPECT_FALSE(fs::exists(dir / "r0.bmp"));
+}
+
 TEST_F(CliFrames, OneFrameHasClockZero) {
     ASSERT_EQ(run("-q scene.jts --frames 1 -o 'one-%d.bmp'").code, 0);
     ASSERT_EQ(run("-q scene.jts -o zero.bmp").code, 0);
