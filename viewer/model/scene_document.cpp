@@ -292,10 +292,52 @@ Expected<Scene> reapply_edits(const SceneDocument& doc, const LoadAttempt& newer
             "changed values can be re-applied to a newer file"};
     SourceEditResult edit = apply_scene_edits(newer.text, newer.source, *doc.original, doc.scene);
     if (!edit.ok()) return Error{edit.error};
-    ParseResult parsed = parse_document_text(doc, edit.text);
+    // An edit of a value in an included file is read from that file's text
+    // with the edit written in, as Save would write it; its place in
+    // `edit.files` is one in the newer reading's files.
+    ParseOptions options = document_options(doc);
+    if (!edit.files.empty())
+        options.read_include = [&newer, &edit](const std::string& file,
+                                               std::uintmax_t max_bytes) -> Expected<IncludedText> {
+            Expected<IncludedText> read = read_include_file(file, max_bytes);
+            if (!read) return read;
+            for (const EditedFile& edited : edit.files)
+                if (newer.source.files[edited.file - 1].canonical == read->canonical)
+                    read->text = edited.text;
+            return read;
+        };
+    ParseResult parsed = parse_scene(edit.text, options);
     if (!parsed.ok()) return Error{"the edits do not fit the new text"};
     parsed.scene.asset_folder = newer.scene->asset_folder;
     return std::move(parsed.scene);
+}
+
+std::string changed_include(const SceneDocument& doc, const std::vector<SourceFile>& files) {
+    for (const SourceFile& file : files)
+        for (const SourceFile& old : doc.source.files)
+            if (old.canonical == file.canonical && old.text != file.text)
+                return std::string(short_file_name(doc, file.name));
+    return {};
+}
+
+std::string changed_on_disk(const SceneDocument& doc, const LoadAttempt& newer) {
+    if (newer.text != doc.disk_text) return doc.path.filename().string();
+    const std::vector<SourceFile>& before = doc.source.files;
+    const std::vector<SourceFile>& now = newer.source.files;
+    for (const SourceFile& file : now) {
+        const auto same = [&](const SourceFile& old) {
+            return old.canonical == file.canonical && old.text == file.text;
+        };
+        if (std::find_if(before.begin(), before.end(), same) == before.end())
+            return std::string(short_file_name(doc, file.name));
+    }
+    // A file read before and no longer (an error stopped the reading first).
+    for (const SourceFile& file : before) {
+        const auto read = [&](const SourceFile& next) { return next.canonical == file.canonical; };
+        if (std::find_if(now.begin(), now.end(), read) == now.end())
+            return std::string(short_file_name(doc, file.name));
+    }
+    return {};
 }
 
 Expected<std::vector<std::string>> save_scene_in_place(SceneDocument& doc) {
