@@ -6,6 +6,7 @@
 #include "jtracer/parser.hpp"
 #include "jtracer/scene_file.hpp"
 #include "jtracer/source_edit.hpp"
+#include "jtracer/texture.hpp"
 #include "model/image_files.hpp"
 #include "model/scene_time.hpp"
 
@@ -111,6 +112,15 @@ void accept_load(SceneDocument& doc, const std::filesystem::path& path, LoadAtte
     doc.diagnostics_path = path;
     doc.diagnostics_files = attempt.source.files;
     note_included_files(doc, attempt.source);
+    if (!attempt.ok && attempt.read && !has_errors(attempt.parse_diagnostics)) {
+        // The text parsed, so what failed is a file it names (a sky map not
+        // there yet, a broken model): the scene's files are watched only
+        // once it loads, so these are watched with the included ones, and
+        // the file appearing or mended reloads.
+        const NamedFiles named = named_files(*attempt.scene);
+        for (const std::filesystem::path& file : named.models) doc.included_files.push_back(file);
+        for (const std::filesystem::path& file : named.images) doc.included_files.push_back(file);
+    }
     doc.load_failed = !attempt.ok;
     doc.file_unread = !attempt.read;
     doc.file_deleted = attempt.missing;

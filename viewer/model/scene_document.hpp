@@ -50,7 +50,8 @@ struct SceneDocument {
     // the text taken in since (typed, undone to) read: watched like the scene
     // file, so that a change, or a missing file appearing, reloads
     // (docs/language.md §15.6), or, for a text not saved yet, reads the text
-    // again (reload_if_changed).
+    // again (reload_if_changed). After a load whose text parsed but failed
+    // on a file it names, the model and image files its scene names too.
     std::vector<std::filesystem::path> included_files;
     // Counts the loads taken in (good or not) and the saves: either may
     // change the texts read (the included files' too) without a new revision.
