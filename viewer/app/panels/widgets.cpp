@@ -151,6 +151,16 @@ bool edit_number(const char* label, double& value, float speed, double min, doub
     return true;
 }
 
+bool slider_float(const char* label, float& value, float min, float max, const char* format) {
+    const ImGuiID id = ImGui::GetID(label);
+    float f = value;
+    const bool held = held_typing(id, &f, 1);
+    const bool moved = ImGui::SliderFloat(label, &f, min, max, format);
+    if (!take_typed(id, held, &f, 1, moved) || f == value) return false;
+    value = f;
+    return true;
+}
+
 bool edit_vector(const char* label, Vec3& value, float speed, double min, double max,
                  const std::function<std::string()>& why) {
     const ImGuiID id = ImGui::GetID(label);

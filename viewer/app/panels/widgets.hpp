@@ -34,6 +34,9 @@ bool edit_colour(const char* label, Colour& value);
 // "180"); a value outside [min, max] (a bound moved inside an open one)
 // shows as itself. A literal: nothing is allocated.
 const char* number_format(float value, double min, double max);
+// A slider of a value that is no scene property (the clock): dragged, it
+// changes as it goes; typed (Ctrl+click), when the typing ends, as above.
+bool slider_float(const char* label, float& value, float min, float max, const char* format);
 bool edit_int(const char* label, int& value, int min, int max,
               const std::function<std::string()>& why = {});
 // A colour that may be unset (a material's checker): a checkbox sets it (to
