@@ -445,9 +445,11 @@ TEST_F(Expect, RefusesAJunitReportThatIsTheHeatMap) {
 // a passed or failed one is: a CI page that charts the times showed an hour's
 // render stopped by the job's time limit as 0.000 s.
 TEST_F(Expect, AFailedRenderReportsTheTimeItRan) {
-    // One thread and many samples of the showcase: far longer than the 2 s
-    // after which `timeout` interrupts it.
-    ProgramRun r = run("timeout --preserve-status -s INT 2 " + cli +
+    // One thread and many samples of the showcase: far longer than the 3 s
+    // after which `timeout` interrupts it. On a loaded machine the start
+    // takes part of those seconds, so the time asked for is only well above
+    // the 0.000 a report gave before.
+    ProgramRun r = run("timeout --preserve-status -s INT 3 " + cli +
                        " '" JT_SOURCE_DIR
                        "/scenes/showcase.jts' -q -o out.png --samples 64 --threads 1 "
                        "--expect ref.png --junit report.xml");
@@ -458,7 +460,7 @@ TEST_F(Expect, AFailedRenderReportsTheTimeItRan) {
     const std::size_t time = report.find("time=\"", at);
     ASSERT_NE(time, std::string::npos) << report;
     const double seconds = std::stod(report.substr(time + 6));
-    EXPECT_GT(seconds, 1.0) << report;
+    EXPECT_GT(seconds, 0.2) << report;
     EXPECT_LT(seconds, 60.0) << report;
     EXPECT_NE(report.find("interrupted by SIGINT"), std::string::npos) << report;
 }
