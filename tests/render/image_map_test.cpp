@@ -117,7 +117,7 @@ TEST(ImageMap, DecodesPngAndBmpToBytesOver255) {
 }
 
 // A 1x1 RGB PNG whose image data is a zlib stream of one block of the
-// reserved type 3: stb_image fails on it without giving a reason.
+// reserved type 3 (stb_image failed on it without giving a reason).
 std::vector<std::uint8_t> png_with_a_reserved_zlib_block() {
     std::vector<std::uint8_t> bytes{0x89, 'P', 'N', 'G', 0x0d, 0x0a, 0x1a, 0x0a};
     auto chunk = [&](const char* type, const std::vector<std::uint8_t>& data) {
@@ -134,16 +134,18 @@ std::vector<std::uint8_t> png_with_a_reserved_zlib_block() {
     return bytes;
 }
 
-TEST(ImageMap, APngStbRejectsWithoutAReasonIsAnErrorNotACrash) {
+TEST(ImageMap, APngOfAReservedDeflateBlockIsAnErrorNotACrash) {
     // A model file's embedded texture like this one crashed the model fuzzer:
     // the message was built from stb_image's null reason.
     const std::vector<std::uint8_t> bytes = png_with_a_reserved_zlib_block();
     const Expected<Texture> texture = decode_texture(bytes);
     ASSERT_FALSE(texture);
-    EXPECT_EQ(texture.error().message, "cannot decode the image: its data is damaged");
+    EXPECT_EQ(texture.error().message,
+              "cannot decode the image: its data is damaged (IDAT: invalid block type)");
     const Expected<Image8> image = decode_png(bytes);
     ASSERT_FALSE(image);
-    EXPECT_EQ(image.error().message, "not a readable PNG: its data is damaged");
+    EXPECT_EQ(image.error().message,
+              "not a readable PNG: its data is damaged (IDAT: invalid block type)");
 }
 
 // encode_bmp's bottom-up file of `image` stored top-down instead: the height

@@ -5,10 +5,12 @@
 #include "io/image_claims.hpp"
 #include "io/jpeg.hpp"
 #include "io/png_chunks.hpp"
+#include "io/png_reader.hpp"
 #include "io/stamped_cache.hpp"
 #include "io/stb_failure.hpp"
 #include "jtracer/file_stamp.hpp"
 #include "jtracer/image.hpp"
+#include "jtracer/png.hpp"
 
 #include <stb_image.h>
 
@@ -43,8 +45,9 @@ bool exceeds_cap(std::pair<std::int64_t, std::int64_t> size) {
 }
 
 // The header's verdict: "" or why the picture cannot be decoded. JPEGs go to
-// libjpeg-turbo (io/jpeg.hpp), PNGs and BMPs to stb_image, a BMP after its
-// header is read here (io/bmp_header.hpp).
+// libjpeg-turbo (io/jpeg.hpp), BMPs to stb_image once their header is read
+// here (io/bmp_header.hpp), PNGs to libpng (io/png_reader.hpp) once stb_image
+// has read their header.
 std::string header_problem(std::span<const std::uint8_t> bytes, int& width, int& height) {
     if (bytes.size() > static_cast<std::size_t>(std::numeric_limits<int>::max()))
         return "the file is too large";
@@ -97,7 +100,7 @@ std::string header_problem(std::span<const std::uint8_t> bytes, int& width, int&
     return "";
 }
 
-// stb_image's top-down rows, bottom-up.
+// stb_image's top-down rows (a BMP's), bottom-up.
 template <class Sample>
 std::vector<Sample> bottom_up(const Sample* samples, int width, int height) {
     std::vector<Sample> out(static_cast<std::size_t>(width) * height * 3);
@@ -134,22 +137,22 @@ Expected<Texture> decode_texture(std::span<const std::uint8_t> bytes) {
         if (!rgb) return rgb.error();
         return Texture{header_width, header_height, std::move(*rgb), {}};
     }
-    bool decoded = false;
-    const int size = static_cast<int>(bytes.size());
-    forget_stb_failure();
-    if (stbi_is_16_bit_from_memory(bytes.data(), size)) {
-        std::unique_ptr<stbi_us, StbFree> samples(
-            stbi_load_16_from_memory(bytes.data(), size, &width, &height, &channels, 3));
-        if (samples && as_checked())
-            return Texture{width, height, {}, bottom_up(samples.get(), width, height)};
-        decoded = samples != nullptr;
-    } else {
-        std::unique_ptr<stbi_uc, StbFree> samples(
-            stbi_load_from_memory(bytes.data(), size, &width, &height, &channels, 3));
-        if (samples && as_checked())
-            return Texture{width, height, bottom_up(samples.get(), width, height), {}};
-        decoded = samples != nullptr;
+    if (has_png_signature(bytes)) {
+        Expected<PngPixels> png = read_png_pixels(bytes, true);
+        if (!png) return Error{"cannot decode the image: " + png.error().message};
+        width = png->width;
+        height = png->height;
+        if (!as_checked())
+            return Error{"cannot decode the image: its pixels are not the size its header gives"};
+        return Texture{width, height, std::move(png->rgb8), std::move(png->rgb16)};
     }
+    // A BMP: 8-bit samples.
+    forget_stb_failure();
+    std::unique_ptr<stbi_uc, StbFree> samples(stbi_load_from_memory(
+        bytes.data(), static_cast<int>(bytes.size()), &width, &height, &channels, 3));
+    if (samples && as_checked())
+        return Texture{width, height, bottom_up(samples.get(), width, height), {}};
+    const bool decoded = samples != nullptr;
     if (decoded)
         return Error{"cannot decode the image: its pixels are not the size its header gives"};
     return Error{std::string("cannot decode the image: ") + stb_failure_reason()};
