@@ -1,6 +1,7 @@
 #include "jtracer/texture.hpp"
 
 #include "io/bmp_header.hpp"
+#include "io/exif_orientation.hpp"
 #include "io/file_bytes.hpp"
 #include "io/image_claims.hpp"
 #include "io/jpeg.hpp"
@@ -135,7 +136,12 @@ Expected<Texture> decode_texture(std::span<const std::uint8_t> bytes) {
     if (has_jpeg_signature(bytes)) {
         Expected<std::vector<std::uint8_t>> rgb = decode_jpeg(bytes, {header_width, header_height});
         if (!rgb) return rgb.error();
-        return Texture{header_width, header_height, std::move(*rgb), {}};
+        const int orientation = exif_orientation(bytes);
+        if (orientation == 1) return Texture{header_width, header_height, std::move(*rgb), {}};
+        std::vector<std::uint8_t> upright =
+            turn_upright(*rgb, header_width, header_height, orientation);
+        if (swaps_sides(orientation)) std::swap(header_width, header_height);
+        return Texture{header_width, header_height, std::move(upright), {}};
     }
     if (has_png_signature(bytes)) {
         Expected<PngPixels> png = read_png_pixels(bytes, true);
