@@ -1,9 +1,11 @@
 // What reading a large picture costs in memory: the peak resident size of
-// `jtracer-cli --check` on a scene whose sky map is a 16-bit PNG, above the
-// same check with a 1x1 map, counted in copies of the decoded texels.
+// `jtracer-cli --check` on a scene whose sky map is a 16-bit PNG or a BMP,
+// above the same check with a 1x1 map, counted in copies of the texels.
 
 #include "common/files.hpp"
 #include "common/scratch_dir.hpp"
+#include "jtracer/bmp.hpp"
+#include "jtracer/image.hpp"
 
 #include <gtest/gtest.h>
 
@@ -126,6 +128,35 @@ TEST_F(ImageMemory, A16BitPngSkyMapIsHeldOnceWhileItIsRead) {
     // them round).
     EXPECT_LT(big - small, texels * 5 / 2) << "peak " << big << " bytes, "
                                            << "baseline " << small << ", texels " << texels;
+}
+
+TEST_F(ImageMemory, A24BitBmpSkyMapIsHeldOnceWhileItIsRead) {
+#if JT_SANITIZED
+    GTEST_SKIP() << "the sanitizers' allocator and shadow memory change the resident size";
+#endif
+    constexpr int width = 4096, height = 2048;
+    const long texels = long{width} * height * 3;
+    std::uint32_t state = 12345;
+    for (const auto& [name, w, h] : {std::tuple{"big.bmp", width, height}, {"small.bmp", 1, 1}}) {
+        Image8 image(w, h);
+        for (std::uint8_t& byte : image.rgb) {
+            state = state * 1664525u + 1013904223u;
+            byte = static_cast<std::uint8_t>(state >> 24);
+        }
+        ASSERT_TRUE(write_bmp(dir / name, image));
+        test::write_file(dir / (std::string(name) + ".jts"),
+                         std::string("render_settings { width: 8; height: 8; background_map: \"") +
+                             name +
+                             "\"; }\ncameras { perspective_camera { aspect: 1; } }\n"
+                             "scene { sphere { } }\n");
+    }
+    const long small = peak_of_check(dir, "small.bmp.jts");
+    const long big = peak_of_check(dir, "big.bmp.jts");
+    ASSERT_GT(small, 0);
+    ASSERT_GT(big, 0);
+    // The file (the texels, padded) and the texels: two copies, not three.
+    EXPECT_LT(big - small, texels * 5 / 2)
+        << "peak " << big << " bytes, baseline " << small << ", texels " << texels;
 }
 
 }  // namespace

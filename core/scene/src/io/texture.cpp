@@ -9,6 +9,7 @@
 #include "io/png_reader.hpp"
 #include "io/stamped_cache.hpp"
 #include "io/stb_failure.hpp"
+#include "jtracer/bmp.hpp"
 #include "jtracer/file_stamp.hpp"
 #include "jtracer/image.hpp"
 #include "jtracer/png.hpp"
@@ -152,7 +153,27 @@ Expected<Texture> decode_texture(std::span<const std::uint8_t> bytes) {
             return Error{"cannot decode the image: its pixels are not the size its header gives"};
         return Texture{width, height, std::move(png->rgb8), std::move(png->rgb16)};
     }
-    // A BMP: 8-bit samples.
+    // A BMP of 24 bits a pixel uncompressed, the kind JTracer and most
+    // programs write, is read by decode_bmp straight into the rows kept:
+    // stb_image's texels, then turned round, held the picture twice. Any
+    // other kind (and one decode_bmp refuses) goes to stb_image.
+    // Its pixels must start where stb_image would take them, past the headers
+    // and at most 1024 bytes after them; stb_image refuses the rest.
+    auto pixels_where_stb_reads = [&](const BmpHeader& header) {
+        const std::uint64_t offset = std::uint64_t{bytes[10]} | std::uint64_t{bytes[11]} << 8 |
+                                     std::uint64_t{bytes[12]} << 16 |
+                                     std::uint64_t{bytes[13]} << 24;
+        const std::uint64_t headers = 14 + std::uint64_t{header.info_size};
+        return offset >= headers && offset - headers <= 1024;
+    };
+    if (const std::optional<BmpHeader> header = read_bmp_header(bytes);
+        header && header->bits_per_pixel == 24 && header->compression == 0 &&
+        header->info_size >= 40 && pixels_where_stb_reads(*header)) {
+        if (Expected<Image8> image = decode_bmp(bytes);
+            image && image->width == header_width && image->height == header_height)
+            return Texture{image->width, image->height, std::move(image->rgb), {}};
+    }
+    // Any other BMP: 8-bit samples.
     forget_stb_failure();
     std::unique_ptr<stbi_uc, StbFree> samples(stbi_load_from_memory(
         bytes.data(), static_cast<int>(bytes.size()), &width, &height, &channels, 3));
