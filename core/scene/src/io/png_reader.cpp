@@ -1,5 +1,7 @@
 #include "io/png_reader.hpp"
 
+#include "jtracer/texture.hpp"
+
 #include <png.h>
 
 #include <csetjmp>
@@ -44,13 +46,12 @@ struct ReadStruct {
     ~ReadStruct() { png_destroy_read_struct(&png, info ? &info : nullptr, nullptr); }
 };
 
-// The transformations that make every PNG 8- or 16-bit RGB, and the rows'
-// addresses in `pixels`, bottom row first. Everything that can fail (and
+// After png_read_info: the transformations that make every PNG 8- or 16-bit
+// RGB, and the rows' addresses in `pixels`, bottom row first. Everything that can fail (and
 // longjmp) happens in libpng's calls; what is set up here is complete
 // between them.
 void decode(png_structp png, png_infop info, bool keep_16_bits, PngPixels& pixels,
             std::vector<png_bytep>& rows) {
-    png_read_info(png, info);
     const png_uint_32 width = png_get_image_width(png, info);
     const png_uint_32 height = png_get_image_height(png, info);
     const int colour = png_get_color_type(png, info);
@@ -109,6 +110,13 @@ Expected<PngPixels> read_png_pixels(std::span<const std::uint8_t> bytes, bool ke
     png_set_read_fn(read.png, &source, read_bytes);
     // stb_image checked no CRC, and pictures it read must still read.
     png_set_crc_action(read.png, PNG_CRC_QUIET_USE, PNG_CRC_QUIET_USE);
+    png_read_info(read.png, read.info);
+    // A few bytes may claim billions of pixels: refused before any is kept.
+    const std::uint64_t width = png_get_image_width(read.png, read.info);
+    const std::uint64_t height = png_get_image_height(read.png, read.info);
+    if (width * height > static_cast<std::uint64_t>(kMaxTextureTexels))
+        return Error{"too large (" + std::to_string(width) + "x" + std::to_string(height) +
+                     " pixels; at most " + std::to_string(kMaxTextureTexels) + ")"};
     decode(read.png, read.info, keep_16_bits, pixels, rows);
     return pixels;
 }

@@ -29,8 +29,8 @@ struct PngPixels {
 };
 
 // The pixels of the PNG `bytes`, or why they cannot be read ("its data is
-// damaged (...)", "its data ends early ..."). The caller has checked the
-// header's size against its limits.
+// damaged (...)", "its data ends early ...", "too large (...)" past
+// kMaxTextureTexels pixels, the image maps' limit).
 Expected<PngPixels> read_png_pixels(std::span<const std::uint8_t> bytes, bool keep_16_bits);
 
 }  // namespace jt
