@@ -6,6 +6,7 @@
 
 #include <limits>
 #include <string>
+#include <utility>
 #include <vector>
 
 namespace jt {
@@ -31,6 +32,13 @@ std::vector<std::string> model_warnings(const Model& model) {
     std::vector<std::string> warnings;
     const ModelLeftOut& out = model.left_out;
     if (!out.refused_file.empty()) warnings.push_back(out.refused_file + ": that file is left out");
+    for (const auto& [line, times] : out.reader_said) {
+        // Appended, not chained from a literal: GCC 12 warns falsely (-Wrestrict).
+        std::string said("made the model reader (Assimp) print '");
+        said.append(line).append("'");
+        if (times > 1) said.append(" ").append(std::to_string(times)).append(" times");
+        warnings.push_back(std::move(said));
+    }
     // Why triangles were dropped: "2 name a corner ..., 1 has a corner ...".
     std::string why;
     if (out.out_of_range > 0)
