@@ -1,6 +1,7 @@
 // BMP and PNG files, atomic writes and the image diff.
 
 #include "common/files.hpp"
+#include "common/image_header.hpp"
 #include "common/scratch_dir.hpp"
 #include "jtracer/atomic_file.hpp"
 #include "jtracer/bmp.hpp"
@@ -562,14 +563,9 @@ namespace {
 TEST(Png, APngClaimingTenBillionPixelsIsTooLargeNotOutOfMemory) {
     // 100000 x 100000 in its IHDR, a few bytes of image data: refused from
     // the header, before the 30 GB it claims are reserved.
-    std::vector<std::uint8_t> bytes{0x89, 'P', 'N', 'G', 0x0d, 0x0a, 0x1a, 0x0a};
+    std::vector<std::uint8_t> bytes = test::png_signature();
     auto chunk = [&](const char* type, const std::vector<std::uint8_t>& data) {
-        const auto length = static_cast<std::uint32_t>(data.size());
-        for (int shift : {24, 16, 8, 0})
-            bytes.push_back(static_cast<std::uint8_t>(length >> shift));
-        bytes.insert(bytes.end(), type, type + 4);
-        bytes.insert(bytes.end(), data.begin(), data.end());
-        bytes.insert(bytes.end(), 4, 0);  // the CRC, which is not checked
+        test::append_png_chunk(bytes, type, data);
     };
     chunk("IHDR", {0, 1, 0x86, 0xa0, 0, 1, 0x86, 0xa0, 8, 2, 0, 0, 0});
     chunk("IDAT", {0x78, 0x01, 0x03, 0x00});

@@ -1,6 +1,7 @@
 // Image maps, worked out by hand from docs/language.md §13.4: texture
 // coordinates of each shape, the bilinear blend, and files found beside the scene.
 
+#include "common/image_header.hpp"
 #include "jtracer/bmp.hpp"
 #include "jtracer/png.hpp"
 #include "jtracer/scene_file.hpp"
@@ -120,14 +121,9 @@ TEST(ImageMap, DecodesPngAndBmpToBytesOver255) {
 // A 1x1 RGB PNG whose image data is a zlib stream of one block of the
 // reserved type 3 (stb_image failed on it without giving a reason).
 std::vector<std::uint8_t> png_with_a_reserved_zlib_block() {
-    std::vector<std::uint8_t> bytes{0x89, 'P', 'N', 'G', 0x0d, 0x0a, 0x1a, 0x0a};
+    std::vector<std::uint8_t> bytes = test::png_signature();
     auto chunk = [&](const char* type, const std::vector<std::uint8_t>& data) {
-        const auto length = static_cast<std::uint32_t>(data.size());
-        for (int shift : {24, 16, 8, 0})
-            bytes.push_back(static_cast<std::uint8_t>(length >> shift));
-        bytes.insert(bytes.end(), type, type + 4);
-        bytes.insert(bytes.end(), data.begin(), data.end());
-        bytes.insert(bytes.end(), 4, 0);  // the CRC, which no reader here checks
+        test::append_png_chunk(bytes, type, data);
     };
     chunk("IHDR", {0, 0, 0, 1, 0, 0, 0, 1, 8, 2, 0, 0, 0});
     chunk("IDAT", {0x78, 0x01, 0x07});  // a zlib header, then a final block of type 3
