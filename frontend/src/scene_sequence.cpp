@@ -87,7 +87,11 @@ SequenceFrame SceneSequence::frame(int index, bool prepare,
         const bool diagnostics_only =
             setup.exit_code == exit_ok || setup.exit_code == exit_scene_error;
         frame.message = diagnostics_only ? unprinted(setup.diagnostics) : setup.message;
-        if (setup.exit_code == exit_scene_error && reads_clock)
+        // The frame is named after an error, and after warnings no earlier
+        // frame gave: in a scene that reads `clock` a warning may be of some
+        // frames only, or name a value that changes from frame to frame.
+        const bool new_warnings = setup.exit_code == exit_ok && !frame.message.empty();
+        if ((setup.exit_code == exit_scene_error || new_warnings) && reads_clock)
             frame.message += "note: at frame " + std::to_string(index) +
                              " (clock = " + shortest_decimal(frame.clock) + ")\n";
     }

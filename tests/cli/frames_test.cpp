@@ -303,10 +303,45 @@ TEST_F(CliFrames, AWarningOfEveryFrameIsPrintedOnce) {
     test::ProgramRun r = run("clipped.jts --frames 3 -o 'w%d.bmp'");
     ASSERT_EQ(r.code, 0) << r.err;
     EXPECT_EQ(count(r.err, "warning:"), 1) << r.err;
+    // Named with the frame it was first seen at, and not again after.
+    EXPECT_EQ(count(r.err, "note: at frame"), 1) << r.err;
+    EXPECT_NE(r.err.find("note: at frame 0 (clock = 0)\n"), std::string::npos) << r.err;
     EXPECT_EQ(count(r.err, "wrote w"), 3) << r.err;
     test::ProgramRun quiet = run("-q clipped.jts --frames 3 -o 'w%d.bmp'");
     ASSERT_EQ(quiet.code, 0);
     EXPECT_EQ(quiet.err, "");
+}
+
+// A warning of some frames only says at which: the scale reaches 0 at frame 2
+// of 3 (clock 1), and a value that changes with the clock is warned of at each
+// frame it changes, each time with its frame.
+TEST_F(CliFrames, AWarningOfSomeFramesNamesThem) {
+    std::string text = growing_scene;
+    text.replace(text.find("ambient: <1, 1, 1>; }"), 21,
+                 "ambient: <1, 1, 1>; } transform { scale: <1, 1, 1 - clock>; }");
+    test::write_file(dir / "flattened.jts", text);
+    test::ProgramRun r = run("flattened.jts --frames 3 -o 'z%d.bmp'");
+    ASSERT_EQ(r.code, 0) << r.err;
+    EXPECT_EQ(count(r.err, "warning:"), 1) << r.err;
+    const std::size_t warning = r.err.find("warning: 'scale' <1, 1, 0> has a zero component");
+    ASSERT_NE(warning, std::string::npos) << r.err;
+    const std::size_t note = r.err.find("note: at frame 2 (clock = 1)\n");
+    EXPECT_NE(note, std::string::npos) << r.err;
+    EXPECT_GT(note, warning) << r.err;
+    EXPECT_LT(note, r.err.find("wrote z2.bmp")) << r.err;
+    EXPECT_EQ(count(r.err, "note:"), 1) << r.err;
+
+    text = growing_scene;
+    text.replace(text.find("pigment: <1, 1, 1>"), 18, "pigment: <1 + clock, 1, 1>");
+    test::write_file(dir / "brighter.jts", text);
+    r = run("brighter.jts --frames 3 -o 'p%d.bmp'");
+    ASSERT_EQ(r.code, 0) << r.err;
+    EXPECT_EQ(count(r.err, "warning: 'pigment'"), 2) << r.err;
+    EXPECT_NE(r.err.find("note: at frame 1 (clock = 0.5)\n"), std::string::npos) << r.err;
+    EXPECT_NE(r.err.find("note: at frame 2 (clock = 1)\n"), std::string::npos) << r.err;
+    EXPECT_EQ(count(r.err, "note:"), 2) << r.err;
+    // Quiet drops warnings, and their notes with them.
+    EXPECT_EQ(run("-q brighter.jts --frames 3 -o 'p%d.bmp'").err, "");
 }
 
 // A scene that never reads clock renders the same image at every frame.

@@ -279,6 +279,34 @@ render_settings { width: 8; height: 6; ambient_light: <1, 1, 1>; }
     EXPECT_EQ(r.code, 0) << r.err;
 }
 
+// Each value of a primitive counts, down to its finish and its transform, and
+// a value's spelling does not: 0.5 and 1/2 are one render.
+TEST_F(RegionCli, MergeComparesEveryValueOfAPrimitive) {
+    test::write_file(dir / "valued.jts", R"(
+define k = 0.5;
+define m = 0;
+define t = 0;
+cameras { perspective_camera { position: <0, 0, 5>; look_at: <0, 0, 0>; aspect: 1.3333; } }
+scene {
+    sphere { radius: 1; material { pigment: <1, 1, 1>; ambient: <1, 1, 1>; diffuse_k: k;
+                                   map_size: 1 + m; }
+             transform { xrotate: t; } }
+}
+render_settings { width: 8; height: 6; ambient_light: <1, 1, 1>; }
+)");
+    const std::string part = cli + "valued.jts -q --region-output ";
+    ASSERT_EQ(run_shell(part + "--region 0,0,8,3 -o a.bmp").code, 0);
+    for (const std::string define : {"k=0.25", "m=1", "t=1e-9"}) {
+        ASSERT_EQ(run_shell(part + "--define " + define + " --region 0,3,8,6 -o b.bmp").code, 0);
+        ProgramRun r = run_shell(merge + "-o ab.bmp a.bmp b.bmp");
+        EXPECT_EQ(r.code, 1) << define << ": " << r.err;
+        EXPECT_NE(r.err.find("the scene's content differs"), std::string::npos) << r.err;
+    }
+    ASSERT_EQ(run_shell(part + "--define k=1/2 --define t=0*5 --region 0,3,8,6 -o c.bmp").code, 0);
+    ProgramRun r = run_shell(merge + "-o ac.bmp a.bmp c.bmp");
+    EXPECT_EQ(r.code, 0) << r.err;
+}
+
 // A file the scene names is part of what was rendered: an image map changed
 // between two parts' renders is another render.
 TEST_F(RegionCli, MergeRefusesPartsRenderedWithAChangedImageMap) {

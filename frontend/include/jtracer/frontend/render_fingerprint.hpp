@@ -10,9 +10,11 @@
 namespace jt::frontend {
 
 // `scene` as set up to render (defines, clock and flags applied). Its digest
-// covers the scene's canonical text (serializer.hpp), so that comments,
-// layout and the way a value was written do not count but every value does,
-// and the bytes of every file it names (models, image maps). Left out: what
+// covers every value of the scene model (the canonical text of its settings,
+// cameras and lights, serializer.hpp, and each primitive's values as the
+// schema lists them), so that comments, layout and the way a value was
+// written do not count but every value does, and the bytes of every file it
+// names (models, image maps). Left out: what
 // the fingerprint holds apart (samples, camera, clock), what the placement
 // holds (the frame's size), and the output's name (each part has its own). The
 // same on every machine: no path beyond the names the scene gives is read

@@ -30,8 +30,8 @@ struct SequenceFrame {
     double clock = 0.0;
     int exit_code = exit_ok;  // non-zero: stop with it; `message` says why
     // For stderr: the diagnostics no earlier frame printed (a warning that
-    // every frame gives shows once), and for an error of a scene that reads
-    // `clock` the line "note: at frame F (clock = V)".
+    // every frame gives shows once), and after an error or such warnings of
+    // a scene that reads `clock` the line "note: at frame F (clock = V)".
     std::string message;
     RenderOptions render;
     std::string output;  // this frame's file
