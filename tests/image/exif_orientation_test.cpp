@@ -1,9 +1,11 @@
 // JPEG image maps turned by their EXIF orientation (docs/language.md §13.4):
 // for each of the 8 orientations, a picture stored as a camera would store
-// it, tagged, reads as the upright picture every image viewer shows.
+// it, tagged, reads as the upright picture every image viewer shows; a
+// model's texture is read as stored (§14.5).
 
 #include "common/files.hpp"
 #include "common/scratch_dir.hpp"
+#include "jtracer/model_file.hpp"
 #include "jtracer/texture.hpp"
 
 #include <gtest/gtest.h>
@@ -11,10 +13,14 @@
 
 #include <array>
 #include <cstdlib>
+#include <filesystem>
+#include <string>
 #include <vector>
 
 namespace jt {
 namespace {
+
+namespace fs = std::filesystem;
 
 // The upright picture: 3 x 2 blocks of 8 x 8 texels, each a colour of its
 // own, so that every turn and mirror shows. Block (bx, by), by = 0 at the top.
@@ -156,6 +162,90 @@ TEST(ExifOrientation, ADamagedOrMissingTagLeavesThePictureAsStored) {
     t = decode_texture(bytes);
     ASSERT_TRUE(t) << t.error().message;
     EXPECT_EQ(t->width, kHeight);  // as stored: 16 wide
+}
+
+// Whether `t` holds the upright picture as a camera with `orientation` stores
+// it: each block's centre, found where stored_at puts it.
+void expect_stored(const Texture& t, int orientation) {
+    const bool swap = orientation >= 5;
+    const int width = swap ? kHeight : kWidth, height = swap ? kWidth : kHeight;
+    ASSERT_EQ(t.width, width);
+    ASSERT_EQ(t.height, height);
+    for (int by = 0; by < 2; ++by)
+        for (int bx = 0; bx < 3; ++bx) {
+            const int x = 8 * bx + 4, y = 8 * by + 4;
+            const auto [sx, sy] = stored_at(orientation, x, y, width, height);
+            const Colour c = texel(t, sx, height - 1 - sy);  // row 0 at the bottom
+            const auto& want = upright(x, y);
+            EXPECT_NEAR(c.x * 255.0f, want[0], 4.0f) << "block " << bx << ", " << by;
+            EXPECT_NEAR(c.y * 255.0f, want[1], 4.0f) << "block " << bx << ", " << by;
+            EXPECT_NEAR(c.z * 255.0f, want[2], 4.0f) << "block " << bx << ", " << by;
+        }
+}
+
+// A model's UVs were made against its texture's stored texels, and 3D tools
+// ignore the tag: the model reads the texture as stored, while the same file
+// as an image map (load_texture's default) is turned, whichever is read
+// first into the one cache.
+TEST(ExifOrientation, AModelsTextureIsReadAsStoredAndAnImageMapTurned) {
+    const std::vector<std::uint8_t> bytes = tagged_jpeg(6, false);
+    ASSERT_FALSE(bytes.empty());
+    for (const bool map_first : {true, false}) {
+        SCOPED_TRACE(map_first ? "image map first" : "model first");
+        test::ScratchDir dir;
+        const fs::path photo = dir.path() / "photo.jpg";
+        test::write_file(photo, {reinterpret_cast<const char*>(bytes.data()), bytes.size()});
+        test::write_file(dir.path() / "m.obj",
+                         "mtllib m.mtl\nv 0 0 0\nv 1 0 0\nv 0 1 0\nvt 0 0\nvt 1 0\nvt 0 1\n"
+                         "usemtl photo\nf 1/1 2/2 3/3\n");
+        test::write_file(dir.path() / "m.mtl", "newmtl photo\nmap_Kd photo.jpg\n");
+
+        Expected<std::shared_ptr<const Texture>> map = Error{"not read"};
+        if (map_first) map = load_texture(photo);
+        const Expected<Model> model = read_model(dir.path() / "m.obj", dir.path(), true);
+        if (!map_first) map = load_texture(photo);
+        ASSERT_TRUE(map) << map.error().message;
+        ASSERT_TRUE(model) << model.error().message;
+        ASSERT_EQ(model->parts.size(), 1u);
+        ASSERT_NE(model->parts[0].texture, nullptr);
+        {
+            SCOPED_TRACE("image map");
+            expect_stored(**map, 1);  // upright: as a picture stored unturned
+        }
+        {
+            SCOPED_TRACE("model texture");
+            expect_stored(*model->parts[0].texture, 6);
+        }
+        // Each use finds its own copy held.
+        const Expected<std::shared_ptr<const Texture>> again = load_texture(photo);
+        ASSERT_TRUE(again) << again.error().message;
+        EXPECT_EQ(again->get(), map->get());
+        const Expected<std::shared_ptr<const Texture>> stored =
+            load_texture(photo, TextureLayout::as_stored);
+        ASSERT_TRUE(stored) << stored.error().message;
+        EXPECT_EQ(stored->get(), model->parts[0].texture.get());
+    }
+    // A texture inside a model file (a .glb's) is decoded as stored too.
+    const Expected<Texture> embedded = decode_texture(bytes, TextureLayout::as_stored);
+    ASSERT_TRUE(embedded) << embedded.error().message;
+    SCOPED_TRACE("embedded");
+    expect_stored(*embedded, 6);
+}
+
+// A picture no orientation turns is the same for both uses: held once.
+TEST(ExifOrientation, APictureNotTurnedIsHeldOnceForBothUses) {
+    test::ScratchDir dir;
+    const std::vector<std::uint8_t> bytes = tagged_jpeg(1, true);
+    ASSERT_FALSE(bytes.empty());
+    test::write_file(dir.path() / "flat.jpg",
+                     {reinterpret_cast<const char*>(bytes.data()), bytes.size()});
+    const Expected<std::shared_ptr<const Texture>> stored =
+        load_texture(dir.path() / "flat.jpg", TextureLayout::as_stored);
+    ASSERT_TRUE(stored) << stored.error().message;
+    const Expected<std::shared_ptr<const Texture>> shown = load_texture(dir.path() / "flat.jpg");
+    ASSERT_TRUE(shown) << shown.error().message;
+    EXPECT_EQ(shown->get(), stored->get());
+    expect_stored(**shown, 1);
 }
 
 }  // namespace

@@ -11,11 +11,25 @@
 
 namespace jt {
 
+namespace {
+
+// A model's textures as stored, whatever a JPEG's EXIF orientation says
+// (TextureLayout): the module never chooses.
+Expected<std::shared_ptr<const Texture>> model_texture_file(const std::filesystem::path& path) {
+    return load_texture(path, TextureLayout::as_stored);
+}
+
+Expected<Texture> model_texture_bytes(std::span<const std::uint8_t> bytes) {
+    return decode_texture(bytes, TextureLayout::as_stored);
+}
+
+}  // namespace
+
 Expected<Model> read_model(const std::filesystem::path& file, const std::filesystem::path& folder,
                            bool file_materials) {
     const Expected<const ModelReader*> reader = model_reader();
     if (!reader) return reader.error();
-    static constexpr ModelReaderHost host{load_texture, decode_texture};
+    static constexpr ModelReaderHost host{model_texture_file, model_texture_bytes};
     return (*reader)->read(file, folder, file_materials, host);
 }
 

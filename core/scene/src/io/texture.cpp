@@ -19,6 +19,7 @@
 #include <algorithm>
 #include <cctype>
 #include <limits>
+#include <optional>
 #include <string_view>
 #include <utility>
 #include <variant>
@@ -127,7 +128,7 @@ std::string named_by_extension(const std::filesystem::path& path, const Error& e
 
 }  // namespace
 
-Expected<Texture> decode_texture(std::span<const std::uint8_t> bytes) {
+Expected<Texture> decode_texture(std::span<const std::uint8_t> bytes, TextureLayout layout) {
     int header_width = 0, header_height = 0;
     if (std::string problem = header_problem(bytes, header_width, header_height); !problem.empty())
         return Error{problem};
@@ -137,7 +138,7 @@ Expected<Texture> decode_texture(std::span<const std::uint8_t> bytes) {
     if (has_jpeg_signature(bytes)) {
         Expected<std::vector<std::uint8_t>> rgb = decode_jpeg(bytes, {header_width, header_height});
         if (!rgb) return rgb.error();
-        const int orientation = exif_orientation(bytes);
+        const int orientation = layout == TextureLayout::as_shown ? exif_orientation(bytes) : 1;
         if (orientation == 1) return Texture{header_width, header_height, std::move(*rgb), {}};
         std::vector<std::uint8_t> upright =
             turn_upright(*rgb, header_width, header_height, orientation);
@@ -185,20 +186,36 @@ Expected<Texture> decode_texture(std::span<const std::uint8_t> bytes) {
     return Error{std::string("cannot decode the image: ") + stb_failure_reason()};
 }
 
-Expected<std::shared_ptr<const Texture>> load_texture(const std::filesystem::path& path) {
-    static StampedCache<std::string, Texture> cache(kept_textures);
+Expected<std::shared_ptr<const Texture>> load_texture(const std::filesystem::path& path,
+                                                      TextureLayout layout) {
+    // A picture the same in both layouts is held under its path and nullopt;
+    // a JPEG its EXIF orientation turns, once for each layout.
+    using Key = std::pair<std::string, std::optional<TextureLayout>>;
+    static StampedCache<Key, Texture> cache(kept_textures);
     std::error_code error;
     const std::filesystem::path absolute = std::filesystem::absolute(path, error);
     const FileStamp stamp = file_stamp(absolute);
-    auto decode = [&]() -> Expected<Texture> {
-        Expected<std::vector<std::uint8_t>> bytes = read_file_bytes(path);
-        if (!bytes) return bytes.error();
-        Expected<Texture> texture = decode_texture(*bytes);
+    auto decode = [&](std::span<const std::uint8_t> bytes) -> Expected<Texture> {
+        Expected<Texture> texture = decode_texture(bytes, layout);
         if (!texture) return Error{file_message(path, named_by_extension(path, texture.error()))};
         return texture;
     };
-    if (error || !stamp.exists) return decode().error();  // read_file_bytes's own words
-    return cache.get(absolute.lexically_normal().string(), stamp, decode);
+    const std::string name = absolute.lexically_normal().string();
+    if (!error && stamp.exists) {
+        if (std::shared_ptr<const Texture> held = cache.find({name, std::nullopt}, stamp))
+            return held;
+        if (std::shared_ptr<const Texture> held = cache.find({name, layout}, stamp)) return held;
+    }
+    Expected<std::vector<std::uint8_t>> bytes = read_file_bytes(path);
+    if (!bytes) return bytes.error();
+    if (error || !stamp.exists) {
+        Expected<Texture> texture = decode(*bytes);
+        if (!texture) return texture.error();
+        return std::make_shared<const Texture>(std::move(*texture));
+    }
+    const bool turned = has_jpeg_signature(*bytes) && exif_orientation(*bytes) != 1;
+    const Key key{name, turned ? std::optional(layout) : std::nullopt};
+    return cache.get(key, stamp, [&] { return decode(*bytes); });
 }
 
 std::filesystem::path asset_path(const Scene& scene, const std::string& name) {
