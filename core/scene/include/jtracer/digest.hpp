@@ -30,11 +30,17 @@ struct Digest128 {
         for (; i + 8 <= bytes.size(); i += 8) {
             std::uint64_t v = 0;
             std::memcpy(&v, bytes.data() + i, 8);
-            add(v);
+            add(little_endian(v));
         }
         std::uint64_t rest = 0;
         std::memcpy(&rest, bytes.data() + i, bytes.size() - i);
-        add(rest);
+        add(little_endian(rest));
+    }
+    // Bytes read as a little-endian number, so that every machine digests a
+    // file's or a string's bytes alike.
+    static std::uint64_t little_endian(std::uint64_t v) {
+        if constexpr (std::endian::native == std::endian::big) return __builtin_bswap64(v);
+        return v;
     }
     // Lane a's bytes, then lane b's, each least significant first.
     std::array<std::uint8_t, 16> bytes() const {
