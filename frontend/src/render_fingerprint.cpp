@@ -31,9 +31,6 @@ void add_file(Digest128& digest, const std::filesystem::path& path) {
 // One member's value: a number by its bits (the same on every machine that
 // uses IEEE doubles, which the language's shortest round-trip text assumes
 // too), an optional as whether it is set and then its value.
-void add_value(Digest128& digest, int value) {
-    digest.add(static_cast<std::uint64_t>(static_cast<std::int64_t>(value)));
-}
 void add_value(Digest128& digest, double value) {
     digest.add(value);
 }
