@@ -5,6 +5,7 @@
 #include <mutex>
 #include <sstream>
 #include <streambuf>
+#include <vector>
 
 namespace jt {
 
@@ -47,8 +48,12 @@ void install() {
     const std::lock_guard<std::mutex> hold(lock);
     if (dynamic_cast<PerThreadBuffer*>(std::cerr.rdbuf())) return;
     std::cerr.flush();
-    // Never deleted: std::cerr may write to it until the process ends.
-    std::cerr.rdbuf(new PerThreadBuffer(std::cerr.rdbuf()));
+    // Never deleted: std::cerr may write to it until the process ends. Also
+    // held here, where the leak checker finds it reachable (std::cerr's own
+    // pointer to it is not one it scans).
+    static auto* const installed = new std::vector<PerThreadBuffer*>();
+    installed->push_back(new PerThreadBuffer(std::cerr.rdbuf()));
+    std::cerr.rdbuf(installed->back());
 }
 
 }  // namespace
