@@ -194,7 +194,7 @@ TEST_F(Cli, AnImageIsNotWrittenToATerminal) {
     r = run_shell("script -qec \"'" JT_CLI "' scene.jts -o \\$(tty)\" /dev/null");
     EXPECT_EQ(r.code, 2) << r.out;
     EXPECT_NE(r.out.find("is a terminal"), std::string::npos) << r.out;
-    // Redirected, it is written as before.
+    // Redirected, standard output takes the image.
     r = run_shell("script -qec \"'" JT_CLI "' scene.jts -q -o - > piped.bmp\" /dev/null");
     EXPECT_EQ(r.code, 0) << r.out;
     EXPECT_TRUE(read_bmp(dir / "piped.bmp"));

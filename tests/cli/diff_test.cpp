@@ -448,7 +448,7 @@ TEST_F(Expect, AFailedRenderReportsTheTimeItRan) {
     // One thread and many samples of the showcase: far longer than the 3 s
     // after which `timeout` interrupts it. On a loaded machine the start
     // takes part of those seconds, so the time asked for is only well above
-    // the 0.000 a report gave before.
+    // zero, which a report that did not time the failed render would give.
     ProgramRun r = run("timeout --preserve-status -s INT 3 " + cli +
                        " '" JT_SOURCE_DIR
                        "/scenes/showcase.jts' -q -o out.png --samples 64 --threads 1 "

@@ -131,9 +131,9 @@ TEST_F(ImageMemory, A16BitPngSkyMapIsHeldOnceWhileItIsRead) {
     const long extra = extra_peak("big.png", "small.png");
     ASSERT_GT(extra, 0);
     // The file's bytes (as large as the texels here) and the texels, once:
-    // two copies. Three or more is a copy too many (stb_image held its
-    // inflated data and the image at once, and the rows were copied to turn
-    // them round).
+    // two copies. Three or more is a copy too many (a decoder that holds its
+    // inflated data and the image at once, or rows copied to turn them
+    // round).
     EXPECT_LT(extra, texels * 5 / 2) << extra << " bytes over the baseline, texels " << texels;
 }
 

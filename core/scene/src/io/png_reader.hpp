@@ -1,10 +1,10 @@
 #pragma once
 // PNG pixels read by libpng straight into the rows a Texture or an Image8
-// keeps, the bottom row first. stb_image held the inflated image data and the
-// unfiltered image at once, and its top-down rows were then copied to turn
-// them round: three copies of the texels at the peak, where this holds one
-// (`--check` of a 16-bit 8192 x 4096 sky map: 520 MB resident, now 324 MB,
-// its 122 MB file included).
+// keeps, the bottom row first, so that a picture is held once while it is
+// read: a large sky map (16-bit, 8192 x 4096: 200 MB of texels) would
+// otherwise be held two or three times at the peak, as stb_image keeps the
+// inflated data and the unfiltered image at once, and its top-down rows must
+// then be turned round.
 //
 // It reads as stb_image did, so that no picture changes: palette and grey
 // pictures are expanded to RGB, alpha and tRNS are dropped (not blended),
