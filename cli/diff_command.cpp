@@ -192,8 +192,8 @@ int run_diff_command(int argc, char** argv) {
         if (!heat_map_path.empty()) {
             if (!d.same_size) {
                 std::cerr << program << ": the sizes differ, so no heat map was written\n";
-            } else if (const Expected<void> written = write_image(
-                           heat_map_path, d.image, format_from_extension(heat_map_path));
+            } else if (const Expected<void> written =
+                           write_image(heat_map_path, d.image, heat_map_format(heat_map_path));
                        !written) {
                 std::cerr << program << ": " << written.error().message << "\n";
                 return finish(exit_io_error);
@@ -206,6 +206,10 @@ int run_diff_command(int argc, char** argv) {
         std::cerr << program << ": out of memory\n";
         return exit_io_error;
     }
+}
+
+ImageFormat heat_map_format(const std::string& path) {
+    return format_named_by(path).value_or(ImageFormat::png);
 }
 
 std::string heat_map_path_for(const std::string& render_path) {
@@ -322,10 +326,12 @@ std::string first_error(const std::string& messages) {
 
 }  // namespace
 
-int record_failed_render(const ExpectOptions& expect, int code, const std::string& messages) {
+int record_failed_render(const ExpectOptions& expect, int code, const std::string& messages,
+                         double seconds) {
     if (!expect.junit) return code;
     ComparisonReport r;
     r.name = expect.scene_path;
+    r.seconds = seconds;
     r.expected_path = expect.reference;
     r.threshold = expect.tolerance.threshold;
     r.max_percent = expect.tolerance.max_percent;

@@ -5,6 +5,7 @@
 // leave a JUnit XML file of the comparison (comparison_report.hpp).
 
 #include "jtracer/image.hpp"
+#include "jtracer/image_file.hpp"
 
 #include <optional>
 #include <string>
@@ -43,6 +44,10 @@ struct ExpectOptions {
     bool quiet = false;
 };
 
+// The format of diff's heat map (-o): a PNG but for a name ending in .bmp,
+// as its help says (format_from_extension would make any other name a BMP).
+ImageFormat heat_map_format(const std::string& path);
+
 // Where --expect puts the heat map of a render outside the tolerance:
 // out.png -> out.diff.png, beside the file when out.png is a link to it.
 std::string heat_map_path_for(const std::string& render_path);
@@ -58,8 +63,11 @@ int check_expected(const Image8& render, const std::string& render_path,
 
 // --expect --junit when the render failed before any comparison (exit code
 // `code`): the test case in error, its message naming the first error in
-// `messages` (what the run printed on stderr), which the report keeps whole.
+// `messages` (what the run printed on stderr), which the report keeps whole;
+// `seconds`: the time the run spent until it failed, for the JUnit file (a CI
+// page sorts and charts by it: a render that failed after an hour is no 0 s).
 // Returns `code`, or 3 when the file could not be written.
-int record_failed_render(const ExpectOptions& expect, int code, const std::string& messages);
+int record_failed_render(const ExpectOptions& expect, int code, const std::string& messages,
+                         double seconds);
 
 }  // namespace jt::cli

@@ -2,7 +2,6 @@
 
 #include "jtracer/frontend/command_line.hpp"
 
-#include <atomic>
 #include <chrono>
 #include <condition_variable>
 #include <csignal>
@@ -12,26 +11,14 @@
 
 namespace jt::cli {
 
-namespace {
-
-std::atomic<int> interrupted{0};
-
-// A second signal ends the process at once (an impatient Ctrl-C during a long
-// write), without leaving the write's temporary file behind.
-extern "C" void on_interrupt(int signal) {
-    if (interrupted.exchange(signal) != 0) frontend::end_by_signal(signal);
-}
-
-}  // namespace
-
 // Left to its default, a signal would end the process in the middle of a
 // write, leaving the temporary file behind.
 void catch_interrupts() {
-    frontend::handle_stop_signals(on_interrupt);
+    frontend::catch_stop_signals();
 }
 
 int interrupting_signal() {
-    return interrupted.load();
+    return frontend::stop_signal();
 }
 
 // The end of the render wakes this thread at once, so that a small render
@@ -52,20 +39,20 @@ bool render_interruptibly(RenderJob& job, frontend::ProgressDisplay& display,
     std::unique_lock<std::mutex> lock(mutex);
     while (!done) {
         lock.unlock();
-        if (interrupted.load() != 0) job.cancel();
+        if (interrupting_signal() != 0) job.cancel();
         display.update(view ? view(job.progress()) : job.progress());
         lock.lock();
         finished.wait_for(lock, std::chrono::milliseconds(100), [&] { return done; });
     }
     lock.unlock();
     worker.join();
-    return job.progress().finished && interrupted.load() == 0;
+    return job.progress().finished && interrupting_signal() == 0;
 }
 
 int report_interrupt(const char* what) {
-    const int signal = interrupted.load() != 0 ? interrupted.load() : SIGINT;
-    const char* name = signal == SIGTERM ? "SIGTERM" : signal == SIGHUP ? "SIGHUP" : "SIGINT";
-    std::cerr << "jtracer-cli: interrupted by " << name << "; " << what << "\n";
+    const int signal = interrupting_signal() != 0 ? interrupting_signal() : SIGINT;
+    std::cerr << "jtracer-cli: interrupted by " << frontend::signal_name(signal) << "; " << what
+              << "\n";
     return 128 + signal;
 }
 

@@ -2,6 +2,7 @@
 // file only orders the steps and maps failures to exit codes.
 
 #include "diff_command.hpp"
+#include "existing_output.hpp"
 #include "info_command.hpp"
 #include "interruptible_render.hpp"
 #include "list_names.hpp"
@@ -12,6 +13,7 @@
 #include "jtracer/frontend/frame_setup.hpp"
 #include "jtracer/frontend/memory_budget.hpp"
 #include "jtracer/frontend/progress.hpp"
+#include "jtracer/frontend/render_fingerprint.hpp"
 #include "jtracer/image_file.hpp"
 #include "jtracer/region_file.hpp"
 #include "jtracer/render_job.hpp"
@@ -69,9 +71,15 @@ ExpectOptions expect_options(const Options& o) {
     return {o.expect.value_or(""), o.tolerance, o.update, o.junit, o.scene_path, o.quiet};
 }
 
-// `compared` is set once the render is compared with --expect's reference.
-int run(const Options& o, bool& compared) {
-    const auto start = std::chrono::steady_clock::now();
+using Clock = std::chrono::steady_clock;
+
+double seconds_since(Clock::time_point start) {
+    return std::chrono::duration<double>(Clock::now() - start).count();
+}
+
+// `compared` is set once the render is compared with --expect's reference;
+// `start`: when the run began, for the time --junit reports.
+int run(const Options& o, Clock::time_point start, bool& compared) {
     FrameSetup setup = set_up_frame("jtracer-cli", o, o.region);
     std::cerr << setup.message;
     if (setup.exit_code != exit_ok) return setup.exit_code;
@@ -91,6 +99,14 @@ int run(const Options& o, bool& compared) {
             return exit_usage;
         }
     if (!o.quiet) std::cerr << format_warning(o, output);
+    // A region file records what it was rendered from, for jtracer-merge.
+    const std::optional<jt::RenderFingerprint> fingerprint =
+        o.region_output
+            ? std::optional(render_fingerprint(setup.scene, options, o.clock.value_or(0.0)))
+            : std::nullopt;
+    if (o.skip_existing &&
+        keep_existing_output(o, output, wanted_output(o, options, setup.format, fingerprint)))
+        return exit_ok;
     if (jt::Expected<void> fits = check_render_memory(options, o.region_output); !fits) {
         std::cerr << "jtracer-cli: " << fits.error().message << "; nothing was written\n";
         return exit_io_error;
@@ -118,23 +134,23 @@ int run(const Options& o, bool& compared) {
     // of being copied.
     const jt::Image8 image = o.region_output ? jt::Image8() : job.take_image();
     const jt::Expected<void> written =
-        o.region_output ? jt::write_region_bmp(output, job.region_image(),
-                                               {options.width, options.height, *o.region})
-                        : jt::write_image(output, image, setup.format);
+        o.region_output
+            ? jt::write_region_bmp(output, job.region_image(),
+                                   {options.width, options.height, *o.region, fingerprint})
+            : jt::write_image(output, image, setup.format);
     if (!written) {
         std::cerr << "jtracer-cli: " << written.error().message << "\n";
         return exit_io_error;
     }
     if (!o.quiet)
-        std::cerr << "wrote " << output << ": "
+        std::cerr << "wrote " << shown_output(output) << ": "
                   << render_summary(options.width, options.height, options.samples, job.progress())
                   << "\n";
     if (o.expect) {
         compared = true;
         const jt::Image8 whole_frame = o.region_output ? job.image() : jt::Image8();
-        return check_expected(
-            o.region_output ? whole_frame : image, output, expect_options(o),
-            std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count());
+        return check_expected(o.region_output ? whole_frame : image, output, expect_options(o),
+                              seconds_since(start));
     }
     return exit_ok;
 }
@@ -149,6 +165,7 @@ int main(int argc, char** argv) {
     ParsedOptions parsed = parse_options(argc, argv);
     if (parsed.exit_code) return *parsed.exit_code;
     const Options& o = parsed.options;
+    const Clock::time_point start = Clock::now();
     bool compared = false;
     int code = exit_io_error;
     std::optional<StderrCopy> messages;
@@ -165,7 +182,7 @@ int main(int argc, char** argv) {
                           << "; nothing was rendered\n";
                 return exit_io_error;
             }
-        code = run(o, compared);
+        code = run(o, start, compared);
     } catch (const std::bad_alloc&) {
         std::cerr << "jtracer-cli: out of memory (the scene or the image is too large for the "
                      "memory available); nothing was written\n";
@@ -174,6 +191,7 @@ int main(int argc, char** argv) {
     }
     // --expect --junit: a render that failed is a test case in error.
     if (o.expect && !compared && code != exit_ok)
-        return record_failed_render(expect_options(o), code, messages ? messages->text() : "");
+        return record_failed_render(expect_options(o), code, messages ? messages->text() : "",
+                                    seconds_since(start));
     return code;
 }

@@ -137,8 +137,13 @@ ParsedOptions parse_options(int argc, char** argv) {
         ->type_name("X0,Y0,X1,Y1");
     app.add_flag("--region-output", o.region_output,
                  "With --region: write only the region, as a BMP that records where it belongs "
-                 "(jtracer-merge assembles such parts)");
+                 "and what it was rendered from (jtracer-merge assembles such parts)");
     app.add_flag("--check", o.check_only, "Only parse and validate the scene; write nothing");
+    app.add_flag("--skip-existing", o.skip_existing,
+                 "Keep an image already there and complete instead of rendering it again (with "
+                 "--frames, frame by frame): for rerunning a frame range or a region after a "
+                 "failure. Complete: every byte there, the frame's size, and for a region file "
+                 "this region of this render; anything else is rendered again");
     app.add_option("--expect", o.expect,
                    "After writing the render, compare it with this reference image (BMP or "
                    "PNG); outside the tolerance, write the differences beside the render "
@@ -165,6 +170,9 @@ ParsedOptions parse_options(int argc, char** argv) {
               {"--junit", &o.junit}})
             if (*name && (*name)->empty())
                 throw CLI::ValidationError(flag, "needs a file name, not an empty string");
+        if (o.output)
+            if (std::optional<std::string> refused = frontend::output_refusal(*o.output))
+                throw CLI::ValidationError("-o/--output", *refused);
         if (o.region_output && !o.region)
             throw CLI::ValidationError("--region-output", "needs --region X0,Y0,X1,Y1");
         if (o.region_output && o.output &&
@@ -181,6 +189,20 @@ ParsedOptions parse_options(int argc, char** argv) {
         if ((o.update || o.junit) && !o.expect)
             throw CLI::ValidationError(o.update ? "--update" : "--junit",
                                        "needs --expect REFERENCE");
+        if (o.skip_existing) {
+            auto refuse = [](const std::string& why) {
+                throw CLI::ValidationError("--skip-existing", why);
+            };
+            if (o.check_only) refuse("not with --check, which writes nothing");
+            if (o.expect) refuse("not with --expect, which compares a render it has just made");
+            if (o.region && !o.region_output)
+                refuse(
+                    "with --region, needs --region-output: a whole-frame image does not "
+                    "record which region it holds, a region file does");
+            if (o.output_is_stdout) refuse("standard output (-o -) holds no earlier image to keep");
+            if (o.output && frontend::is_stream(*o.output))
+                refuse("'" + *o.output + "' is a device or a pipe, not a file to keep");
+        }
         if (o.expect && o.frames)
             throw CLI::ValidationError("--expect", "compares one image: not with --frames");
         frontend::check_sequence_flags(o);

@@ -18,6 +18,9 @@ struct Options : frontend::RenderFlags {
     std::optional<jt::FrameRegion> region;
     bool region_output = false;  // write the region alone, as a region file (region_file.hpp)
     bool check_only = false;
+    // Keep an output already there and complete instead of rendering it again
+    // (existing_output.hpp).
+    bool skip_existing = false;
     // Compare the written render with this reference image (diff_command.hpp).
     std::optional<std::string> expect;
     Tolerance tolerance;

@@ -1,5 +1,6 @@
 #include "sequence_command.hpp"
 
+#include "existing_output.hpp"
 #include "interruptible_render.hpp"
 
 #include "jtracer/atomic_file.hpp"
@@ -29,6 +30,7 @@ std::string kept(const FrameRange& range, int index) {
 
 int run_sequence(const Options& o) {
     SceneSequence sequence("jtracer-cli", o, o.region);
+    if (o.region_output) sequence.fingerprint_frames();
     if (!o.check_only)
         if (std::optional<std::string> clash = sequence.output_clash()) {
             std::cerr << *clash;
@@ -38,6 +40,7 @@ int run_sequence(const Options& o) {
     const int total = range.last - range.first + 1;
     ProgressDisplay display(progress_style_for_stderr(o.progress, o.quiet));
     const auto start = Clock::now();
+    int kept_frames = 0;  // already there (--skip-existing)
     catch_interrupts();
     for (int index = range.first; index <= range.last; ++index) {
         // A signal during the last frame's write let it finish: stop before
@@ -46,7 +49,16 @@ int run_sequence(const Options& o) {
             display.finish();
             return report_interrupt(kept(range, index).c_str());
         }
-        const SequenceFrame frame = sequence.frame(index, !o.check_only);
+        // A frame already there is known once its set-up names its file and
+        // size, before the scene is prepared for it.
+        auto skip = [&](const SequenceFrame& f) {
+            if (!o.skip_existing) return false;
+            display.finish();
+            return keep_existing_output(o, f.output,
+                                        wanted_output(o, f.render, f.format, f.fingerprint),
+                                        " (frame " + std::to_string(f.index) + ")");
+        };
+        const SequenceFrame frame = sequence.frame(index, !o.check_only, skip);
         if (!frame.message.empty()) {
             display.finish();
             std::cerr << frame.message;
@@ -58,6 +70,10 @@ int run_sequence(const Options& o) {
                 std::cerr << *refused;
                 return exit_usage;
             }
+        if (frame.skipped) {
+            ++kept_frames;
+            continue;
+        }
         if (o.check_only) continue;
         if (index == range.first && !o.quiet) {
             display.finish();
@@ -88,7 +104,8 @@ int run_sequence(const Options& o) {
         }
         const Expected<void> written =
             o.region_output ? write_region_bmp(frame.output, job.region_image(),
-                                               {frame.render.width, frame.render.height, *o.region})
+                                               {frame.render.width, frame.render.height, *o.region,
+                                                frame.fingerprint})
                             : write_image(frame.output, job.take_image(), frame.format);
         display.finish();
         if (!written) {
@@ -107,10 +124,19 @@ int run_sequence(const Options& o) {
     if (o.check_only && !o.quiet)
         std::cerr << o.scene_path << ": no errors in frames " << range.first << ".." << range.last
                   << "\n";
-    if (!o.quiet && !o.check_only && total > 1)
-        std::cerr << "wrote " << total << " frames in "
-                  << format_duration(std::chrono::duration<double>(Clock::now() - start).count())
-                  << "\n";
+    if (!o.quiet && !o.check_only && total > 1) {
+        const int written = total - kept_frames;
+        const std::string time =
+            format_duration(std::chrono::duration<double>(Clock::now() - start).count());
+        if (written == 0)
+            std::cerr << "kept all " << total << " frames, already there (" << time << ")\n";
+        else
+            std::cerr << "wrote " << written << (written == 1 ? " frame" : " frames")
+                      << (kept_frames > 0
+                              ? " and kept " + std::to_string(kept_frames) + " already there"
+                              : std::string())
+                      << " in " << time << "\n";
+    }
     return exit_ok;
 }
 

@@ -58,6 +58,10 @@ const std::map<std::string, std::string, std::less<>>& fuzz_files() {
         {"open.jts", "sphere {\n"},
         {"self.jts", "include \"self.jts\";\n"},
         {"sub/twice.jts", "include \"../ball.jts\"; include \"../ball.jts\";\n"},
+        // Not text: its error is located in it, past the first line.
+        {"latin.jts", "define q = 1;\n# caf\xe9\n"},
+        // Read again at every frame, the rest taken from the frame before.
+        {"moving.jts", "sphere { radius: 1 + clock; }\npoint_light { radius: clock; }\n"},
     };
     return files;
 }

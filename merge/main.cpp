@@ -10,8 +10,11 @@
 
 #include <CLI/CLI.hpp>
 
+#include <algorithm>
+#include <cctype>
 #include <csignal>
 #include <exception>
+#include <filesystem>
 #include <iostream>
 #include <new>
 
@@ -32,6 +35,17 @@ void remove_the_temporary_file_on_signals() {
     jt::frontend::handle_stop_signals(on_ending_signal);
 }
 
+// Whether `path` is named as write_file_atomically names its temporary file,
+// TARGET.tmp-XXXXXX: one left by a process killed during a write, which a
+// glob such as `band*` picks up beside the parts.
+bool is_unfinished_write(const std::string& path) {
+    const std::string name = std::filesystem::path(path).filename().string();
+    const std::size_t at = name.rfind(".tmp-");
+    if (at == std::string::npos || at == 0 || name.size() - at != 11) return false;
+    return std::all_of(name.begin() + static_cast<std::ptrdiff_t>(at) + 5, name.end(),
+                       [](char c) { return std::isalnum(static_cast<unsigned char>(c)) != 0; });
+}
+
 int merge(const std::vector<std::string>& part_paths, const std::string& output, bool quiet) {
     // Found before the parts are read, as jtracer-cli finds it before the
     // render: the 64 bands of a 16k frame are gigabytes to read for nothing.
@@ -49,6 +63,13 @@ int merge(const std::vector<std::string>& part_paths, const std::string& output,
         parts.push_back(std::move(*part));
     }
     const jt::Expected<jt::Image8> frame = jt::merge_regions(parts);
+    // Parts written before the fingerprint existed merge as they always did,
+    // unchecked: say so, as a mix of renders is then the user's to rule out.
+    if (frame && !quiet && std::none_of(parts.begin(), parts.end(), [](const jt::RegionPart& p) {
+            return p.placement.fingerprint.has_value();
+        }))
+        std::cerr << "jtracer-merge: note: the parts carry no render fingerprint (written by an "
+                     "older jtracer-cli): that they are parts of one render was not checked\n";
     if (!frame) {
         std::cerr << "jtracer-merge: " << frame.error().message << "; nothing was written\n";
         return exit_bad_parts;
@@ -60,8 +81,8 @@ int merge(const std::vector<std::string>& part_paths, const std::string& output,
         return exit_io_error;
     }
     if (!quiet)
-        std::cerr << "wrote " << output << ": " << frame->width << "x" << frame->height << " from "
-                  << parts.size() << " parts\n";
+        std::cerr << "wrote " << jt::frontend::shown_output(output) << ": " << frame->width << "x"
+                  << frame->height << " from " << parts.size() << " parts\n";
     return exit_ok;
 }
 
@@ -82,8 +103,9 @@ int main(int argc, char** argv) {
         "  jtracer-cli scene.jts --region 0,540,1920,1080 --region-output -o parts/bottom.bmp\n"
         "  jtracer-merge -o frame.png parts/*.bmp\n"
         "\n"
-        "Parts that overlap, leave a gap, reach out of the frame or belong to frames of\n"
-        "different sizes are refused and nothing is written.\n"
+        "Parts that overlap, leave a gap, reach out of the frame, belong to frames of\n"
+        "different sizes or to different renders (each part records a fingerprint of its\n"
+        "scene, samples, camera and clock) are refused and nothing is written.\n"
         "\n"
         "Exit codes: 0 ok, 1 parts that do not make one frame, 2 bad command line, 3 file I/O "
         "errors.\n");
@@ -101,10 +123,24 @@ int main(int argc, char** argv) {
     auto checks = [&] {
         if (output.empty())
             throw CLI::ValidationError("-o/--output", "needs a file name, not an empty string");
+        if (std::optional<std::string> refused = jt::frontend::output_refusal(output))
+            throw CLI::ValidationError("-o/--output", *refused);
         for (const std::string& part : part_paths)
             if (jt::frontend::same_file(output, part))
                 throw CLI::ValidationError("-o/--output", "'" + output + "' is also a part (" +
                                                               part + "): it would be replaced");
+        for (std::size_t i = 0; i < part_paths.size(); ++i) {
+            if (is_unfinished_write(part_paths[i]))
+                throw CLI::ValidationError(
+                    "'" + part_paths[i] +
+                    "' is the temporary file of a write that never finished (its process was "
+                    "killed before the rename): not a part; remove it, and render that part "
+                    "again if its own file is missing");
+            for (std::size_t j = i + 1; j < part_paths.size(); ++j)
+                if (jt::frontend::same_file(part_paths[i], part_paths[j]))
+                    throw CLI::ValidationError("'" + part_paths[i] + "' and '" + part_paths[j] +
+                                               "' are the same file, given twice");
+        }
     };
     if (std::optional<int> code =
             jt::frontend::parse_command_line(app, argc, argv, "jtracer-merge", checks))

@@ -64,14 +64,14 @@ class Coordinator {
         result_.rank_stats.resize(static_cast<std::size_t>(settings.ranks));
     }
 
-    CoordinatorResult run(const std::atomic<bool>& stop,
+    CoordinatorResult run(const std::function<bool()>& stop,
                           const std::function<bool(const Image8&)>& deliver) {
         start_ = Clock::now();
         for (int rank = 1; rank < settings_.ranks; ++rank)
             for (int i = 0; i < tiles_ahead; ++i) hand_out(rank);
         start_local_tile();
         auto last_shown = Clock::now();
-        while (pasted_ < tiles_.size() && !stop.load() && !lost()) {
+        while (pasted_ < tiles_.size() && !stop() && !lost()) {
             serve_once();
             if (settings_.on_progress && seconds_since(last_shown) > 0.1) {
                 settings_.on_progress(progress(seconds_since(start_)));
@@ -84,8 +84,8 @@ class Coordinator {
         if (pasted_ < tiles_.size()) return std::move(result_);
         result_.complete = true;
         const bool delivered = deliver(frame_image_);
-        for (int rank = 1; rank < settings_.ranks; ++rank)
-            send_stop(rank, settings_.another_frame && delivered);
+        result_.another_frame = settings_.another_frame && delivered && !stop();
+        for (int rank = 1; rank < settings_.ranks; ++rank) send_stop(rank, result_.another_frame);
         winding_down_ = true;
         while (!all_stopped() && !lost()) serve_once();
         return std::move(result_);
@@ -306,7 +306,7 @@ class Coordinator {
 CoordinatorResult run_coordinator(const std::shared_ptr<const PreparedFrame>& frame, int width,
                                   int height, const std::vector<PixelRect>& tiles,
                                   const CoordinatorSettings& settings,
-                                  const std::atomic<bool>& stop,
+                                  const std::function<bool()>& stop,
                                   const std::function<bool(const Image8&)>& deliver) {
     return Coordinator(frame, width, height, tiles, settings).run(stop, deliver);
 }

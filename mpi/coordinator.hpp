@@ -9,7 +9,6 @@
 #include "jtracer/render_job.hpp"
 #include "jtracer/render_tile.hpp"
 
-#include <atomic>
 #include <cstdint>
 #include <functional>
 #include <memory>
@@ -26,12 +25,15 @@ struct CoordinatorSettings {
     // owns the display, so that one bar or log covers a whole sequence.
     std::function<void(const RenderProgress&)> on_progress;
     // A sequence has a frame after this one: the workers are told so when
-    // they stop, unless delivering this frame failed.
+    // they stop, unless delivering this frame failed or a stop was asked
+    // for meanwhile (then they end as the frame does, rather than wait for a
+    // frame that never comes).
     bool another_frame = false;
 };
 
 struct CoordinatorResult {
     bool complete = false;              // every tile came back (and `deliver` was called)
+    bool another_frame = false;         // the workers were told that a frame follows
     std::optional<LostRank> lost;       // the worker that stopped answering, if one did
     std::uint64_t rays = 0;             // over all ranks
     std::uint64_t bytes_received = 0;   // tile messages from other ranks
@@ -48,11 +50,11 @@ struct CoordinatorResult {
 // as every tile is in, calls `deliver` with the frame (which says whether it
 // went well), then tells the workers to stop and waits for each to say it has. Returns early,
 // incomplete, when `stop` becomes true or a rank is lost; the workers are then still waiting and
-// the caller must abort the job.
+// the caller must abort the job. `stop` is polled between the messages.
 CoordinatorResult run_coordinator(const std::shared_ptr<const PreparedFrame>& frame, int width,
                                   int height, const std::vector<PixelRect>& tiles,
                                   const CoordinatorSettings& settings,
-                                  const std::atomic<bool>& stop,
+                                  const std::function<bool()>& stop,
                                   const std::function<bool(const Image8&)>& deliver);
 
 }  // namespace jt::mpi

@@ -12,6 +12,7 @@
 #include "work_tiles.hpp"
 #include "worker.hpp"
 
+#include "jtracer/frontend/command_line.hpp"
 #include "jtracer/frontend/frame_setup.hpp"
 #include "jtracer/frontend/progress.hpp"
 #include "jtracer/frontend/scene_sequence.hpp"
@@ -22,7 +23,6 @@
 #include <unistd.h>
 
 #include <array>
-#include <atomic>
 #include <chrono>
 #include <csignal>
 #include <cstdio>
@@ -41,12 +41,6 @@ namespace {
 using namespace jt::mpi;
 using jt::frontend::FrameSetup;
 using Clock = std::chrono::steady_clock;
-
-std::atomic<bool> interrupted{false};
-
-extern "C" void on_interrupt(int) {
-    interrupted.store(true);
-}
 
 std::string host_name() {
     std::array<char, MPI_MAX_PROCESSOR_NAME> name{};
@@ -135,6 +129,26 @@ RankFrame set_up_rank(const Options& o, jt::frontend::SceneSequence* sequence, i
     mine.frame = jt::prepare_frame(scene, frame.render);
     mine.tiles = cut_work_tiles(frame.render.width, frame.render.height, o.tile_size);
     return frame;
+}
+
+// What stays of a run stopped at frame `index` (the only one without --frames).
+std::string kept(const jt::frontend::FrameRange& range, int index) {
+    if (index == range.first) return "nothing was written";
+    return "frames " + std::to_string(range.first) + ".." + std::to_string(index - 1) +
+           " were written";
+}
+
+// Rank 0 stops for SIGINT, SIGTERM or SIGHUP as jtracer-cli does, with its
+// exit codes. Workers that still wait (for tiles, or for a frame they were
+// told follows) cannot be told: only an abort ends them.
+int stop_for_signal(int signal, const std::string& what, bool workers_wait) {
+    std::cerr << "jtracer-mpi: interrupted by " << jt::frontend::signal_name(signal) << "; " << what
+              << "\n";
+    if (workers_wait) {
+        std::cerr << std::flush;
+        MPI_Abort(MPI_COMM_WORLD, 128 + signal);
+    }
+    return 128 + signal;
 }
 
 // Rank 0 ends a job it has lost a worker of: the others cannot be told.
@@ -251,7 +265,12 @@ int run(int argc, char** argv, int rank, int ranks) {
         jt::frontend::progress_style_for_stderr(o.progress, o.quiet));
     const int total = range.last - range.first + 1;
     const auto sequence_start = Clock::now();
+    bool workers_wait = false;  // the workers were told that another frame follows
     for (int index = range.first; index <= range.last; ++index) {
+        // A signal during the last frame's write let it finish: stop before
+        // setting up the next frame, which can take long (a large mesh).
+        if (const int signal = jt::frontend::stop_signal(); signal != 0)
+            return stop_for_signal(signal, kept(range, index), workers_wait);
         const auto frame_start = Clock::now();
         const RankFrame frame = set_up_rank(o, frames, index);
         const RankSetUp& mine = frame.mine;
@@ -270,8 +289,10 @@ int run(int argc, char** argv, int rank, int ranks) {
             if (!o.quiet)
                 if (auto warning = narrow_affinity_warning(current_cpu_share(), 0, host_name()))
                     std::cerr << *warning << std::flush;
-            std::signal(SIGINT, on_interrupt);
-            std::signal(SIGTERM, on_interrupt);
+            // Left to their defaults, SIGINT, SIGTERM and SIGHUP (a dropped
+            // ssh connection) would end rank 0 in the middle of a write,
+            // leaving the temporary file beside the image.
+            jt::frontend::catch_stop_signals();
         }
 
         CoordinatorSettings settings;
@@ -285,27 +306,25 @@ int run(int argc, char** argv, int rank, int ranks) {
         };
         settings.another_frame = index < range.last;
         std::optional<jt::Expected<void>> written;
-        CoordinatorResult result =
-            run_coordinator(mine.frame, frame.render.width, frame.render.height, mine.tiles,
-                            settings, interrupted, [&](const jt::Image8& image) {
-                                written = jt::write_image(frame.output, image, frame.format);
-                                return static_cast<bool>(*written);
-                            });
+        CoordinatorResult result = run_coordinator(
+            mine.frame, frame.render.width, frame.render.height, mine.tiles, settings,
+            [] { return jt::frontend::stop_signal() != 0; },
+            [&](const jt::Image8& image) {
+                written = jt::write_image(frame.output, image, frame.format);
+                return static_cast<bool>(*written);
+            });
         display.finish();
         if (result.lost)
             end_for_lost_rank(
                 *result.lost, call.hosts, o.rank_timeout,
                 written && *written ? " after the image was written" : "; nothing was written");
-        if (!result.complete) {
-            // The workers still wait for tiles; only an abort ends them.
-            std::cerr << "jtracer-mpi: stopped before every tile came back (interrupted, or a "
-                         "rank died); "
-                      << (index == range.first ? "nothing was written"
-                                               : "the frames before it were written")
-                      << "\n";
-            MPI_Abort(MPI_COMM_WORLD, 130);
-            return 130;
-        }
+        // Short of every tile only when asked to stop (a lost rank ended the
+        // job above); the workers still wait for tiles.
+        if (!result.complete)
+            return stop_for_signal(
+                jt::frontend::stop_signal() != 0 ? jt::frontend::stop_signal() : SIGINT,
+                kept(range, index), ranks > 1);
+        workers_wait = result.another_frame;
         result.stats.setup_seconds = setup_seconds;
         std::vector<RankStats> stats = result.rank_stats;
         stats.front() = result.stats;

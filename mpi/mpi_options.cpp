@@ -46,7 +46,14 @@ ParsedOptions parse_options(int argc, char** argv, bool speaks) {
     std::ostream& out = speaks ? std::cout : muted;
     std::ostream& err = speaks ? std::cerr : muted;
     if (std::optional<int> code = frontend::parse_command_line(
-            app, argc, argv, "jtracer-mpi", [&] { frontend::check_sequence_flags(o); }, out, err))
+            app, argc, argv, "jtracer-mpi",
+            [&] {
+                frontend::check_sequence_flags(o);
+                if (o.output)
+                    if (auto refused = frontend::output_refusal(*o.output))
+                        throw CLI::ValidationError("-o/--output", *refused);
+            },
+            out, err))
         parsed.exit_code = *code;
     return parsed;
 }

@@ -5,8 +5,11 @@
 
 #include <CLI/CLI.hpp>
 
+#include <fcntl.h>
 #include <signal.h>
+#include <unistd.h>
 
+#include <atomic>
 #include <cctype>
 #include <csignal>
 #include <memory>
@@ -14,6 +17,12 @@
 namespace jt::frontend {
 
 namespace {
+
+std::atomic<int> caught_signal{0};
+
+extern "C" void on_stop_signal(int signal) {
+    if (caught_signal.exchange(signal) != 0) end_by_signal(signal);
+}
 
 // --help as GNU tools print it: "Usage: jtracer-cli [OPTIONS] SCENE" with the
 // program's name (not the path it was started from), operands in capitals,
@@ -67,6 +76,37 @@ bool same_file(const std::filesystem::path& a, const std::filesystem::path& b) {
     return !error && place_a == place_b;
 }
 
+std::optional<std::string> output_refusal(const std::string& output) {
+    bool terminal = false;
+    if (output == "/dev/stdout" && ::fcntl(STDOUT_FILENO, F_GETFD) < 0)
+        return std::string(
+            "standard output is closed: redirect it to a file or a pipe, or name "
+            "a file");
+    if (output == "/dev/stdout") {
+        terminal = ::isatty(STDOUT_FILENO) != 0;
+    } else {
+        std::error_code error;
+        if (std::filesystem::is_character_file(output, error)) {
+            // Opened without becoming the process's terminal, and without
+            // waiting on a device that is not ready.
+            const int descriptor = ::open(output.c_str(), O_WRONLY | O_NOCTTY | O_NONBLOCK);
+            if (descriptor >= 0) {
+                terminal = ::isatty(descriptor) != 0;
+                ::close(descriptor);
+            }
+        }
+    }
+    if (!terminal) return std::nullopt;
+    return (output == "/dev/stdout" ? std::string("standard output") : "'" + output + "'") +
+           " is a terminal, where an image's bytes would show as garbage and be lost: "
+           "redirect standard output to a file or a pipe (-o - > shot.bmp, -o - | ...), or "
+           "name a file";
+}
+
+std::string shown_output(const std::string& output) {
+    return output == "/dev/stdout" ? std::string("standard output") : output;
+}
+
 void handle_stop_signals(void (*handler)(int)) {
     for (const int signal : {SIGINT, SIGTERM, SIGHUP}) {
         struct sigaction current {};
@@ -79,6 +119,27 @@ void end_by_signal(int signal) {
     remove_unfinished_file();
     std::signal(signal, SIG_DFL);
     std::raise(signal);
+}
+
+void catch_stop_signals() {
+    handle_stop_signals(on_stop_signal);
+}
+
+int stop_signal() {
+    return caught_signal.load();
+}
+
+std::string signal_name(int signal) {
+    switch (signal) {
+        case SIGINT:
+            return "SIGINT";
+        case SIGTERM:
+            return "SIGTERM";
+        case SIGHUP:
+            return "SIGHUP";
+        default:
+            return "signal " + std::to_string(signal);
+    }
 }
 
 void add_version_flag(CLI::App& app, const std::string& program) {

@@ -16,10 +16,14 @@ namespace jt::frontend {
 
 void add_render_flags(CLI::App& app, RenderFlags& o) {
     app.add_option("scene", o.scene_path, "The scene file to render (.jts)")->required();
-    app.add_option("-o,--output", o.output,
-                   "Write the image here instead of the scene's filename; a name ending in .png "
-                   "gives a PNG, anything else a BMP; - is standard output (a BMP)")
-        ->transform(output_name, "", "")
+    app.add_option_function<std::string>(
+           "-o,--output",
+           [&o](const std::string& name) {
+               o.output = output_name(name);
+               o.output_is_stdout = name == "-";
+           },
+           "Write the image here instead of the scene's filename; a name ending in .png "
+           "gives a PNG, anything else a BMP; - is standard output (a BMP)")
         ->type_name("FILE");
     app.add_option("--camera", o.camera, "Render from the camera with this name")
         ->type_name("NAME");
@@ -81,6 +85,13 @@ void check_sequence_flags(const RenderFlags& o) {
     if (o.frame_range)
         if (Expected<void> inside = check_frame_range(*o.frame_range, *o.frames); !inside)
             throw CLI::ValidationError("--frame-range", inside.error().message);
+    // A sequence is a file a frame: standard output could only run them
+    // together into one stream that no tool reads back as frames.
+    if (o.output_is_stdout)
+        throw CLI::ValidationError("-o/--output",
+                                   "- (standard output) takes one image, but --frames writes a "
+                                   "file a frame: name them with a frame number field, such as "
+                                   "-o shot-%04d.png");
     if (o.output)
         if (Expected<FrameNamePattern> pattern = parse_frame_name_pattern(*o.output); !pattern)
             throw CLI::ValidationError("-o/--output", pattern.error().message);

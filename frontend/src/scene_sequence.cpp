@@ -72,7 +72,8 @@ std::string SceneSequence::unprinted(const std::vector<Diagnostic>& diagnostics)
     return message;
 }
 
-SequenceFrame SceneSequence::frame(int index, bool prepare) {
+SequenceFrame SceneSequence::frame(int index, bool prepare,
+                                   const std::function<bool(const SequenceFrame&)>& skip) {
     SequenceFrame frame;
     frame.index = index;
     frame.clock = frame_clock(index, count_);
@@ -86,7 +87,11 @@ SequenceFrame SceneSequence::frame(int index, bool prepare) {
         const bool diagnostics_only =
             setup.exit_code == exit_ok || setup.exit_code == exit_scene_error;
         frame.message = diagnostics_only ? unprinted(setup.diagnostics) : setup.message;
-        if (setup.exit_code == exit_scene_error && reads_clock)
+        // The frame is named after an error, and after warnings no earlier
+        // frame gave: in a scene that reads `clock` a warning may be of some
+        // frames only, or name a value that changes from frame to frame.
+        const bool new_warnings = setup.exit_code == exit_ok && !frame.message.empty();
+        if ((setup.exit_code == exit_scene_error || new_warnings) && reads_clock)
             frame.message += "note: at frame " + std::to_string(index) +
                              " (clock = " + shortest_decimal(frame.clock) + ")\n";
     }
@@ -101,7 +106,18 @@ SequenceFrame SceneSequence::frame(int index, bool prepare) {
         frame.message += replaces_scene(program_, index, frame.output) + "; stopped before it\n";
         return frame;
     }
-    if (prepare) {
+    if (fingerprints_) {
+        // A scene the same at every clock is digested once.
+        if (fixed_ && fixed_fingerprint_) {
+            frame.fingerprint = fixed_fingerprint_;
+            frame.fingerprint->clock = frame.clock;
+        } else {
+            frame.fingerprint = render_fingerprint(setup.scene, setup.render, frame.clock);
+            if (!reads_clock) fixed_fingerprint_ = frame.fingerprint;
+        }
+    }
+    frame.skipped = skip && skip(frame);
+    if (prepare && !frame.skipped) {
         if (fixed_ && previous_) {
             frame.prepared = previous_;
         } else {

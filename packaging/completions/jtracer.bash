@@ -52,7 +52,7 @@ _jtracer() {
         else
             options='-h --help --version -o --output --camera --width --height --samples
                 --threads -q --quiet --progress --region --region-output --check --expect --threshold
-                --max-pixels --update --junit --define --clock --frames --frame-range'
+                --max-pixels --update --junit --define --clock --frames --frame-range --skip-existing'
         fi
         ;;
     jtracer-mpi)

@@ -180,6 +180,40 @@ TEST_F(Cli, ADashOutputIsStandardOutput) {
     EXPECT_TRUE(fs::exists(dir / "-")) << "./- is still a file of that name";
 }
 
+// `-o -` typed with standard output left on the terminal (a forgotten
+// redirection) filled the terminal with the image's bytes, possibly leaving
+// it in a garbled state, and the render was lost: refused before reading the
+// scene, as with a terminal's own device.
+TEST_F(Cli, AnImageIsNotWrittenToATerminal) {
+    if (run_shell("command -v script").code != 0) GTEST_SKIP() << "no script(1) here";
+    // script(1) runs the program with a terminal as its standard output.
+    test::ProgramRun r = run_shell("script -qec \"'" JT_CLI "' scene.jts -o -\" /dev/null");
+    EXPECT_EQ(r.code, 2) << r.out;
+    EXPECT_NE(r.out.find("-o/--output: standard output is a terminal"), std::string::npos) << r.out;
+    EXPECT_EQ(r.out.find("BM"), std::string::npos) << "image bytes reached the terminal";
+    r = run_shell("script -qec \"'" JT_CLI "' scene.jts -o \\$(tty)\" /dev/null");
+    EXPECT_EQ(r.code, 2) << r.out;
+    EXPECT_NE(r.out.find("is a terminal"), std::string::npos) << r.out;
+    // Redirected, standard output takes the image.
+    r = run_shell("script -qec \"'" JT_CLI "' scene.jts -q -o - > piped.bmp\" /dev/null");
+    EXPECT_EQ(r.code, 0) << r.out;
+    EXPECT_TRUE(read_bmp(dir / "piped.bmp"));
+}
+
+// -o - is spoken of as standard output, a name the user gave, not as
+// /dev/stdout; closed (a job started with >&-), it is refused before the
+// render rather than failing after it with "cannot write '/dev/stdout'".
+TEST_F(Cli, ADashOutputIsNamedStandardOutput) {
+    test::ProgramRun r = run("scene.jts -o - > piped.bmp");
+    ASSERT_EQ(r.code, 0) << r.err;
+    EXPECT_NE(r.err.find("wrote standard output: 32x18"), std::string::npos) << r.err;
+    EXPECT_EQ(r.err.find("/dev/stdout"), std::string::npos) << r.err;
+    r = run("scene.jts -o - >&-");
+    EXPECT_EQ(r.code, 2) << r.err;
+    EXPECT_NE(r.err.find("-o/--output: standard output is closed"), std::string::npos) << r.err;
+    EXPECT_EQ(r.err.find("/dev/stdout"), std::string::npos) << r.err;
+}
+
 TEST_F(Cli, ThreadCountGivesByteIdenticalFiles) {
     ASSERT_EQ(run("-q scene.jts --samples 4 --threads 1 -o one.bmp").code, 0);
     ASSERT_EQ(run("-q scene.jts --samples 4 --threads 2 -o two.bmp").code, 0);

@@ -128,6 +128,20 @@ TEST_F(Diff, HeatMapMarksTheDifferingPixels) {
     EXPECT_TRUE(exists("same.bmp"));
 }
 
+// The heat map is a PNG but for a .bmp name, as diff --help and the manual
+// say: a name without an extension (or another) gave a BMP.
+TEST_F(Diff, HeatMapIsAPngButForABmpName) {
+    for (const auto& [name, magic] :
+         std::vector<std::pair<std::string, std::string>>{{"heat", "\x89PNG"},
+                                                          {"heat.map", "\x89PNG"},
+                                                          {"heat.PNG", "\x89PNG"},
+                                                          {"heat.bmp", "BM"},
+                                                          {"heat.BMP", "BM"}}) {
+        EXPECT_EQ(diff("a.png a.bmp -q -o " + name).code, 0) << name;
+        EXPECT_EQ(test::read_file(dir / name).substr(0, magic.size()), magic) << name;
+    }
+}
+
 TEST_F(Diff, DifferentImagesAndDifferentSizes) {
     Image8 black(40, 20);
     write_png_file("black.png", black);
@@ -425,6 +439,34 @@ TEST_F(Expect, RefusesAJunitReportThatIsTheHeatMap) {
     EXPECT_NE(r.err.find("where the heat map"), std::string::npos) << r.err;
     EXPECT_FALSE(exists("out.png")) << "refused before anything is written";
     EXPECT_FALSE(exists("out.diff.png"));
+}
+
+// A render that failed after a while is reported with the time it ran, as
+// a passed or failed one is: a CI page that charts the times showed an hour's
+// render stopped by the job's time limit as 0.000 s.
+TEST_F(Expect, AFailedRenderReportsTheTimeItRan) {
+    // One thread and many samples of the showcase: interrupted once its
+    // progress log says it has rendered a tenth (a signal at a fixed time
+    // could come before the render started, on a machine that is slow or
+    // busy), so that the render ran for a while when it failed. SIGTERM, as
+    // a job's time limit sends: a shell starts a background command with
+    // SIGINT ignored, and an ignored signal stays ignored.
+    ProgramRun r = run(cli + " '" JT_SOURCE_DIR
+                             "/scenes/showcase.jts' -o out.png --samples 64 --threads 1 "
+                             "--progress log --expect ref.png --junit report.xml 2> progress.txt & "
+                             "pid=$!; for i in $(seq 1200); do "
+                             "grep -q 'rendering:' progress.txt && break; sleep 0.1; done; "
+                             "kill -TERM $pid; wait $pid");
+    ASSERT_EQ(r.code, 143) << r.err;
+    const std::string report = test::read_file(dir / "report.xml");
+    const std::size_t at = report.find("<testcase ");
+    ASSERT_NE(at, std::string::npos) << report;
+    const std::size_t time = report.find("time=\"", at);
+    ASSERT_NE(time, std::string::npos) << report;
+    const double seconds = std::stod(report.substr(time + 6));
+    EXPECT_GT(seconds, 0.2) << report;
+    EXPECT_LT(seconds, 200.0) << report;
+    EXPECT_NE(report.find("interrupted by SIGTERM"), std::string::npos) << report;
 }
 
 TEST_F(Expect, ListCamerasPrintsTheNamesOneALine) {

@@ -78,6 +78,92 @@ TEST_F(CliFrames, AFrameThatIsTheSceneFileIsRefused) {
     EXPECT_EQ(bytes("scene1.jts"), growing_scene) << "the scene file was replaced by frame 1";
 }
 
+// -o - is standard output, which cannot hold a file a frame: the refusal
+// speaks of it as the user wrote it, not of /dev/stdout, a name they never
+// gave.
+TEST_F(CliFrames, StandardOutputIsRefusedInTheUsersWords) {
+    test::ProgramRun r = run("scene.jts --frames 3 -o -");
+    EXPECT_EQ(r.code, 2) << r.err;
+    EXPECT_NE(r.err.find("-o/--output: - (standard output) takes one image"), std::string::npos)
+        << r.err;
+    EXPECT_EQ(r.err.find("/dev/stdout"), std::string::npos) << r.err;
+    EXPECT_TRUE(r.out.empty());
+    // A name the user wrote is still quoted as written.
+    r = run("scene.jts --frames 3 -o /dev/stdout");
+    EXPECT_EQ(r.code, 2) << r.err;
+    EXPECT_NE(r.err.find("'/dev/stdout' has no frame number field"), std::string::npos) << r.err;
+}
+
+// A rerun after a lost node renders only the frames not already there and
+// whole: a frame cut short (a copy interrupted, a disk that filled) or of
+// another size is rendered again, and the output says which were kept.
+TEST_F(CliFrames, SkipExistingRendersOnlyWhatIsMissingOrIncomplete) {
+    ASSERT_EQ(run("-q scene.jts --frames 5 -o 'f%d.png'").code, 0);
+    std::vector<std::string> first;
+    for (int f = 0; f < 5; ++f) first.push_back(bytes("f" + std::to_string(f) + ".png"));
+    fs::remove(dir / "f1.png");
+    test::write_file(dir / "f2.png", first[2].substr(0, first[2].size() / 2));  // cut short
+    std::string damaged = first[3];
+    damaged[damaged.size() / 2] ^= 0x01;  // a flipped bit in the pixels
+    test::write_file(dir / "f3.png", damaged);
+    ASSERT_EQ(run("-q scene.jts --width 20 --clock 0 -o f4.png").code, 0);  // another size
+    test::ProgramRun r = run("scene.jts --frames 5 -o 'f%d.png' --skip-existing");
+    ASSERT_EQ(r.code, 0) << r.err;
+    for (int f = 0; f < 5; ++f)
+        EXPECT_EQ(bytes("f" + std::to_string(f) + ".png"), first[static_cast<std::size_t>(f)]) << f;
+    EXPECT_NE(r.err.find("kept f0.png (frame 0): already there and complete"), std::string::npos)
+        << r.err;
+    EXPECT_EQ(count(r.err, "kept f"), 1) << r.err;
+    EXPECT_NE(r.err.find("wrote f1.png (frame 1"), std::string::npos) << r.err;
+    EXPECT_NE(r.err.find("f2.png is there, but it is cut short"), std::string::npos) << r.err;
+    EXPECT_NE(r.err.find("f3.png is there, but it is damaged"), std::string::npos) << r.err;
+    EXPECT_NE(r.err.find("f4.png is there, but it is 20x24, not 24x24"), std::string::npos)
+        << r.err;
+    EXPECT_NE(r.err.find("wrote 4 frames and kept 1 already there in "), std::string::npos)
+        << r.err;
+
+    // Every frame there: nothing rendered, and said so; -q says nothing.
+    r = run("scene.jts --frames 5 -o 'f%d.png' --skip-existing");
+    ASSERT_EQ(r.code, 0) << r.err;
+    EXPECT_EQ(count(r.err, "kept f"), 5) << r.err;
+    EXPECT_NE(r.err.find("kept all 5 frames, already there"), std::string::npos) << r.err;
+    r = run("-q scene.jts --frames 5 -o 'f%d.png' --skip-existing");
+    ASSERT_EQ(r.code, 0) << r.err;
+    EXPECT_EQ(r.err, "");
+}
+
+// A kept frame is not even prepared: a rerun in a folder the frames are all
+// in finds nothing to write, so a read-only folder is no error.
+TEST_F(CliFrames, SkipExistingKeepsFramesInAReadOnlyFolder) {
+    fs::create_directory(dir / "out");
+    ASSERT_EQ(run("-q scene.jts --frames 2 -o 'out/f%d.bmp'").code, 0);
+    fs::permissions(dir / "out",
+                    fs::perms::owner_write | fs::perms::group_write | fs::perms::others_write,
+                    fs::perm_options::remove);
+    test::ProgramRun r = run("-q scene.jts --frames 2 -o 'out/f%d.bmp' --skip-existing");
+    fs::permissions(dir / "out", fs::perms::owner_write, fs::perm_options::add);
+    EXPECT_EQ(r.code, 0) << r.err;
+}
+
+// Where keeping an earlier file means nothing, --skip-existing is refused
+// before anything is read or rendered.
+TEST_F(CliFrames, SkipExistingIsRefusedWhereItMeansNothing) {
+    for (const auto& [args, why] : std::vector<std::pair<std::string, std::string>>{
+             {"scene.jts -o - --skip-existing", "standard output (-o -) holds no earlier image"},
+             {"scene.jts -o /dev/null --skip-existing", "'/dev/null' is a device or a pipe"},
+             {"scene.jts --check --skip-existing", "not with --check"},
+             {"scene.jts -o a.bmp --expect a.bmp --skip-existing", "not with --expect"},
+             {"scene.jts --frames 2 -o 'r%d.bmp' --region 0,0,4,4 --skip-existing",
+              "with --region, needs --region-output"},
+         }) {
+        test::ProgramRun r = run(args);
+        EXPECT_EQ(r.code, 2) << args << ": " << r.err;
+        EXPECT_NE(r.err.find("--skip-existing: " + why), std::string::npos)
+            << args << ": " << r.err;
+    }
+    EXPECT_FALSE(fs::exists(dir / "r0.bmp"));
+}
+
 TEST_F(CliFrames, OneFrameHasClockZero) {
     ASSERT_EQ(run("-q scene.jts --frames 1 -o 'one-%d.bmp'").code, 0);
     ASSERT_EQ(run("-q scene.jts -o zero.bmp").code, 0);
@@ -217,10 +303,45 @@ TEST_F(CliFrames, AWarningOfEveryFrameIsPrintedOnce) {
     test::ProgramRun r = run("clipped.jts --frames 3 -o 'w%d.bmp'");
     ASSERT_EQ(r.code, 0) << r.err;
     EXPECT_EQ(count(r.err, "warning:"), 1) << r.err;
+    // Named with the frame it was first seen at, and not again after.
+    EXPECT_EQ(count(r.err, "note: at frame"), 1) << r.err;
+    EXPECT_NE(r.err.find("note: at frame 0 (clock = 0)\n"), std::string::npos) << r.err;
     EXPECT_EQ(count(r.err, "wrote w"), 3) << r.err;
     test::ProgramRun quiet = run("-q clipped.jts --frames 3 -o 'w%d.bmp'");
     ASSERT_EQ(quiet.code, 0);
     EXPECT_EQ(quiet.err, "");
+}
+
+// A warning of some frames only says at which: the scale reaches 0 at frame 2
+// of 3 (clock 1), and a value that changes with the clock is warned of at each
+// frame it changes, each time with its frame.
+TEST_F(CliFrames, AWarningOfSomeFramesNamesThem) {
+    std::string text = growing_scene;
+    text.replace(text.find("ambient: <1, 1, 1>; }"), 21,
+                 "ambient: <1, 1, 1>; } transform { scale: <1, 1, 1 - clock>; }");
+    test::write_file(dir / "flattened.jts", text);
+    test::ProgramRun r = run("flattened.jts --frames 3 -o 'z%d.bmp'");
+    ASSERT_EQ(r.code, 0) << r.err;
+    EXPECT_EQ(count(r.err, "warning:"), 1) << r.err;
+    const std::size_t warning = r.err.find("warning: 'scale' <1, 1, 0> has a zero component");
+    ASSERT_NE(warning, std::string::npos) << r.err;
+    const std::size_t note = r.err.find("note: at frame 2 (clock = 1)\n");
+    EXPECT_NE(note, std::string::npos) << r.err;
+    EXPECT_GT(note, warning) << r.err;
+    EXPECT_LT(note, r.err.find("wrote z2.bmp")) << r.err;
+    EXPECT_EQ(count(r.err, "note:"), 1) << r.err;
+
+    text = growing_scene;
+    text.replace(text.find("pigment: <1, 1, 1>"), 18, "pigment: <1 + clock, 1, 1>");
+    test::write_file(dir / "brighter.jts", text);
+    r = run("brighter.jts --frames 3 -o 'p%d.bmp'");
+    ASSERT_EQ(r.code, 0) << r.err;
+    EXPECT_EQ(count(r.err, "warning: 'pigment'"), 2) << r.err;
+    EXPECT_NE(r.err.find("note: at frame 1 (clock = 0.5)\n"), std::string::npos) << r.err;
+    EXPECT_NE(r.err.find("note: at frame 2 (clock = 1)\n"), std::string::npos) << r.err;
+    EXPECT_EQ(count(r.err, "note:"), 2) << r.err;
+    // Quiet drops warnings, and their notes with them.
+    EXPECT_EQ(run("-q brighter.jts --frames 3 -o 'p%d.bmp'").err, "");
 }
 
 // A scene that never reads clock renders the same image at every frame.

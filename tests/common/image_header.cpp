@@ -21,4 +21,17 @@ PngSize png_size(std::string_view bytes) {
     return {be32(bytes, 16), be32(bytes, 20)};
 }
 
+void append_png_chunk(std::vector<std::uint8_t>& png, const char* type,
+                      const std::vector<std::uint8_t>& data) {
+    const auto length = static_cast<std::uint32_t>(data.size());
+    for (int shift : {24, 16, 8, 0}) png.push_back(static_cast<std::uint8_t>(length >> shift));
+    png.insert(png.end(), type, type + 4);
+    png.insert(png.end(), data.begin(), data.end());
+    png.insert(png.end(), 4, 0);
+}
+
+std::vector<std::uint8_t> png_signature() {
+    return {0x89, 'P', 'N', 'G', 0x0d, 0x0a, 0x1a, 0x0a};
+}
+
 }  // namespace jt::test

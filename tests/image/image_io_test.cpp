@@ -1,6 +1,7 @@
 // BMP and PNG files, atomic writes and the image diff.
 
 #include "common/files.hpp"
+#include "common/image_header.hpp"
 #include "common/scratch_dir.hpp"
 #include "jtracer/atomic_file.hpp"
 #include "jtracer/bmp.hpp"
@@ -551,6 +552,28 @@ TEST(ImageDiff, HeatColoursRunFromRedThroughYellowToWhite) {
     EXPECT_EQ(large[0], 255);
     EXPECT_EQ(large[1], 255);
     EXPECT_EQ(large[2], 255);
+}
+
+}  // namespace
+}  // namespace jt
+
+namespace jt {
+namespace {
+
+TEST(Png, APngClaimingTenBillionPixelsIsTooLargeNotOutOfMemory) {
+    // 100000 x 100000 in its IHDR, a few bytes of image data: refused from
+    // the header, before the 30 GB it claims are reserved.
+    std::vector<std::uint8_t> bytes = test::png_signature();
+    auto chunk = [&](const char* type, const std::vector<std::uint8_t>& data) {
+        test::append_png_chunk(bytes, type, data);
+    };
+    chunk("IHDR", {0, 1, 0x86, 0xa0, 0, 1, 0x86, 0xa0, 8, 2, 0, 0, 0});
+    chunk("IDAT", {0x78, 0x01, 0x03, 0x00});
+    chunk("IEND", {});
+    const Expected<Image8> image = decode_png(bytes);
+    ASSERT_FALSE(image);
+    EXPECT_EQ(image.error().message,
+              "not a readable PNG: too large (100000x100000 pixels; at most 268435456)");
 }
 
 }  // namespace

@@ -132,6 +132,10 @@ TEST(Expressions, EvaluationErrorsPointAtTheOperationWithTheValues) {
               "1:27: error: length(<1e+200, 0, 0>) is not finite: its squared length overflows");
     EXPECT_EQ(brief("scene { plane { normal: normalize(<0, 0, 0>); } }"),
               "1:25: error: normalize(<0, 0, 0>): the zero vector has no direction");
+    // Not the zero vector: its squared length underflows, and 1 / 0 is not finite.
+    EXPECT_EQ(brief("scene { plane { normal: normalize(<1e-200, 0, 0>); } }"),
+              "1:25: error: normalize(<1e-200, 0, 0>) is not finite: its squared length "
+              "underflows to 0");
     // The first failing operation, left to right.
     EXPECT_EQ(plane_error("1 / 0 + sqrt(-1)"), "1:29: error: division by zero: 1 / 0");
 }

@@ -211,10 +211,30 @@ TEST_F(Include, AMissingFileIsAnErrorAndHidesUnknownNames) {
     EXPECT_EQ(
         brief(parse("include \"folder.jts\";").diagnostics),
         "1:9: error: '" + (dir / "folder.jts").string() + "' is a directory, not a scene file");
-    write("binary.jts", std::string("scene {\0}", 9));
-    EXPECT_EQ(brief(parse("include \"binary.jts\";").diagnostics),
-              "1:9: error: cannot read '" + (dir / "binary.jts").string() +
-                  "': it is not a text file (it contains a NUL byte)");
+}
+
+// As in the main file, a byte that is no text is located where it is, in the
+// file that holds it, with the include chain: a large file need not be searched.
+TEST_F(Include, AFileThatIsNotTextIsAnErrorAtItsFirstBadByte) {
+    write("binary.jts", std::string("scene {\n  \0}", 12));
+    write("parts/latin.jts", "# caf\xe9\n");
+    write("parts/outer.jts", "\ninclude \"latin.jts\";\n");
+    ParseResult r = parse(
+        "include \"binary.jts\";\ninclude \"parts/outer.jts\";\n"
+        "scene { sphere { radius: r; } }\n");
+    EXPECT_EQ(located(r),
+              "binary.jts:2:3: error: the file is not a text file: it contains a NUL byte\n"
+              "parts/latin.jts:1:6: error: the file is not a text file: it contains a byte that "
+              "is not UTF-8 text");
+    ASSERT_EQ(r.source.files.size(), 3u);
+    EXPECT_EQ(r.source.files[2].included_at, (SourcePos{2, 9, 2}));
+    std::string formatted;
+    for (const Diagnostic& d : r.diagnostics)
+        formatted += format_diagnostic(d, "main.jts", "", r.source.files);
+    EXPECT_NE(formatted.find("note: included from " + (dir / "parts/outer.jts").string() +
+                             ":2:9\nnote: included from main.jts:2:9\n"),
+              std::string::npos)
+        << formatted;
 }
 
 // Opening a FIFO for reading waits for a writer: with none, the parse (and

@@ -127,7 +127,7 @@ TEST(Whitespace, TabsAndCarriageReturnsAreSpace) {
 TEST(Words, AreCaseSensitiveWithASuggestion) {
     EXPECT_EQ(brief("scene { Sphere { } }"),
               "1:9: error: unknown block 'Sphere' in 'scene'; did you mean 'sphere'? (allowed: "
-              "sphere, plane, cylinder, triangle, mesh, point_light)");
+              "sphere, plane, cylinder, triangle, mesh, point_light, include)");
 }
 
 TEST(Text, NulByteIsRejectedAtItsLineAndColumn) {

@@ -9,7 +9,10 @@
 #include <gtest/gtest.h>
 #include <glm/geometric.hpp>
 
+#include <algorithm>
 #include <filesystem>
+#include <iostream>
+#include <sstream>
 #include <string>
 #include <utility>
 #include <vector>
@@ -315,6 +318,43 @@ TEST(ModelFile, TheBoxHoldsTheCornersTheTrianglesName) {
     EXPECT_EQ(box.upper, glm::dvec3(2, 3, 0));
     model.triangles.clear();
     EXPECT_TRUE(model_box(model).empty());
+}
+
+}  // namespace
+}  // namespace jt::test
+
+namespace jt::test {
+namespace {
+
+TEST(ModelFile, WhatTheReaderPrintsIsAWarningOfTheFileNotATerminalLine) {
+    // Assimp's OpenGEX reader writes this line to std::cerr for a structure
+    // it cannot make (here an empty camera), once for each.
+    std::ostringstream terminal;
+    std::streambuf* const stderr_buffer = std::cerr.rdbuf(terminal.rdbuf());
+    const Expected<Model> model =
+        read_model(kModels / "OpenGEX/empty_camera.ogex", kModels / "OpenGEX");
+    std::cerr.rdbuf(stderr_buffer);
+    ASSERT_TRUE(model.has_value()) << model.error().message;
+    EXPECT_EQ(terminal.str(), "");
+    ASSERT_EQ(model->left_out.reader_said.size(), 1u);
+    EXPECT_EQ(model->left_out.reader_said[0].first, "nullptr returned by creating DDLNode.");
+    const std::vector<std::string> warnings = model_warnings(*model);
+    EXPECT_NE(std::find(warnings.begin(), warnings.end(),
+                        "made the model reader (Assimp) print 'nullptr returned by creating "
+                        "DDLNode.'"),
+              warnings.end());
+
+    // The same line five times is one warning that counts them.
+    ScratchDir dir;
+    write_file(dir.path() / "bad.ogex",
+               "Metric {(key = \"distance\") {float {1.0}}}\n{{{{ zz = , ]\n");
+    const Expected<Model> bad = read_model(dir.path() / "bad.ogex", dir.path());
+    ASSERT_TRUE(bad.has_value()) << bad.error().message;
+    ASSERT_EQ(bad->left_out.reader_said.size(), 1u);
+    EXPECT_EQ(bad->left_out.reader_said[0].second, 5u);
+    EXPECT_EQ(model_warnings(*bad).front(),
+              "made the model reader (Assimp) print 'nullptr returned by creating DDLNode.' 5 "
+              "times");
 }
 
 }  // namespace

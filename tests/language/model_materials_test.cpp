@@ -62,6 +62,48 @@ TEST(ModelMaterials, ObjPartsInTheOrderFirstUsed) {
     EXPECT_EQ(plain->triangles, model->triangles);
 }
 
+TEST(ModelMaterials, AMapKdFileNameMayHoldBlanks) {
+    test::ScratchDir dir;
+    const std::string obj = "mtllib m.mtl\nv 0 0 0\nv 1 0 0\nv 0 1 0\nusemtl x\nf 1 2 3\n";
+    write_file(dir.path() / "m.obj", obj);
+    ASSERT_TRUE(write_png(dir.path() / "my photo.png", one_texel()));
+    ASSERT_TRUE(write_png(dir.path() / "photo.png", Image8(2, 2)));
+    struct Case {
+        const char* line;
+        const char* read;
+    };
+    for (const Case& c : {Case{"map_Kd my photo.png", "my photo.png"},
+                          Case{"map_Kd -s 1 1 1 -clamp on  my photo.png  ", "my photo.png"},
+                          Case{"map_Kd -o 0.5 -bm 0.2 my photo.png", "my photo.png"},
+                          Case{"map_Kd -mm 0 1 my\\photo.png", "my/photo.png"},
+                          // An option this reader does not know: the last word, as before.
+                          Case{"map_Kd -halo 3 photo.png", "photo.png"}}) {
+        SCOPED_TRACE(c.line);
+        if (std::string(c.read) == "my/photo.png") {
+            fs::create_directories(dir.path() / "my");
+            ASSERT_TRUE(write_png(dir.path() / "my" / "photo.png", one_texel()));
+        }
+        write_file(dir.path() / "m.mtl", std::string("newmtl x\n") + c.line + "\n");
+        const Expected<Model> model = read_model(dir.path() / "m.obj", dir.path(), true);
+        ASSERT_TRUE(model.has_value()) << model.error().message;
+        ASSERT_EQ(model->parts.size(), 1u);
+        EXPECT_EQ(model->parts[0].texture_name, c.read);
+        ASSERT_NE(model->parts[0].texture, nullptr);
+    }
+    // A name that reads as no file: the error names the whole name and the
+    // line, and photo.png, its last word, is not read in its place.
+    write_file(dir.path() / "m.mtl", "newmtl x\nKd 1 1 1\nmap_Kd -bm 1 my lost photo.png\n");
+    const Expected<Model> model = read_model(dir.path() / "m.obj", dir.path(), true);
+    ASSERT_FALSE(model.has_value());
+    EXPECT_NE(model.error().message.find("its texture 'my lost photo.png': cannot read '"),
+              std::string::npos)
+        << model.error().message;
+    EXPECT_NE(model.error().message.find("(map_Kd on line 3 of '" +
+                                         (dir.path() / "m.mtl").string() + "')"),
+              std::string::npos)
+        << model.error().message;
+}
+
 TEST(ModelMaterials, GltfPartsNameTheirPicture) {
     test::ScratchDir dir;
     struct Case {

@@ -148,8 +148,8 @@ TEST(Names, NamedMaterialMistakes) {
     EXPECT_EQ(brief("material m { diffuse_k: 0; }"),
               "1:25: error: 'diffuse_k' must be greater than 0 and at most 1e+09, got 0");
     EXPECT_EQ(brief("material { pigment: <1, 0, 0>; }"),
-              "1:1: error: unknown block 'material' at the top level (allowed: "
-              "render_settings, cameras, scene)");
+              "1:1: error: a material at the top level needs a name: 'material NAME { ... }', "
+              "used in a primitive with 'material: NAME;'");
 }
 
 // A misspelt or misplaced property is the mistake reported, not what its
@@ -267,6 +267,30 @@ TEST(Names, DefineOptionIsChecked) {
               "they are used)");
     EXPECT_EQ(parse_define("r=1 2").error().message,
               "the value of r: at column 3: unexpected the number 2 after the value");
+}
+
+// The clock of a render is not known when its --define is checked: a value
+// that fails at clock 0 alone is good, and the parse at the render's clock
+// evaluates it (and reports it, when it fails there too).
+TEST(Names, DefineOptionOfTheClockIsCheckedAtTheRendersClock) {
+    EXPECT_EQ(parse_define("r=1/clock").value().value, "1/clock");
+    EXPECT_EQ(parse_define("r=sqrt(clock - 0.5)").value().value, "sqrt(clock - 0.5)");
+    EXPECT_EQ(parse_define("r=1/clock +").error().message,
+              "the value of r: at column 10: expected a value (a number, a name, '(' or '<'), "
+              "got the end of the value");
+    EXPECT_EQ(parse_define("r=1/clock + q").error().message,
+              "the value of r: at column 11: unknown name 'q' (names must be defined before "
+              "they are used)");
+    EXPECT_EQ(parse_define("r=1/0").error().message,
+              "the value of r: at column 2: division by zero: 1 / 0");
+    ParseOptions options;
+    options.defines = {{"r", "1/clock"}};
+    options.clock = 2;
+    const ParseResult r = parse_scene("define r = 1;\nscene { sphere { radius: r; } }", options);
+    EXPECT_EQ(sphere(r).radius, 0.5);
+    options.clock = 0;
+    EXPECT_EQ(brief_with("define r = 1;\nscene { sphere { radius: r; } }", options),
+              "0:0: error: define r=1/clock: at column 2: division by zero: 1 / 0");
 }
 
 // A scene that uses names and expressions serialises to literal text that

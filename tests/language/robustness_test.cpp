@@ -34,6 +34,28 @@ TEST_F(Timed, TwoHundredThousandNestedBraces) {
               "1:1: error: expected a block name (render_settings, cameras or scene) before '{'");
 }
 
+// Each unknown name looks for the nearest defined one: a name defined a
+// megabyte long is never near, and is not measured against every use.
+TEST_F(Timed, UnknownNamesBesideVeryLongDefinedNames) {
+    std::string text;
+    for (int i = 0; i < 40; ++i)
+        text += "define n" + std::to_string(i) + std::string(700000, 'a') + " = 1;\n";
+    text += "define near = 1;\nscene {\n";
+    for (int i = 0; i < 20; ++i)
+        text += "sphere { radius: " + std::string(62, 'b') + std::to_string(i + 10) + "; }\n";
+    text += "sphere { radius: naer; }\n}\n";
+    const ParseResult r = parse_scene(text);
+    ASSERT_EQ(r.diagnostics.size(), 21u);
+    EXPECT_EQ(r.diagnostics.back().message, "too many errors (20); stopping here");
+    EXPECT_EQ(r.diagnostics.front().message, "unknown name '" + std::string(40, 'b') +
+                                                 "' (names must be defined before they are used)");
+    EXPECT_EQ(brief("define n" + std::string(100, 'a') +
+                    " = 1;\ndefine near = 1;\n"
+                    "scene { sphere { radius: naer; } }"),
+              "3:26: error: unknown name 'naer' (names must be defined before they are used); "
+              "did you mean 'near'?");
+}
+
 TEST_F(Timed, NestedBracesInsideAPrimitive) {
     std::string text = "scene { sphere { " + std::string(200000, '{') + std::string(200000, '}') +
                        " radius: 2; } }";

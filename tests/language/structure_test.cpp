@@ -39,10 +39,47 @@ TEST(Structure, MissingOpeningBrace) {
 TEST(Structure, UnknownTopLevelBlockListsWhatIsAllowedAndSuggests) {
     EXPECT_EQ(brief("render_setings { width: 2; }"),
               "1:1: error: unknown block 'render_setings' at the top level; did you mean "
-              "'render_settings'? (allowed: render_settings, cameras, scene)");
+              "'render_settings'? (allowed: render_settings, cameras, scene, include, define, "
+              "material)");
     EXPECT_EQ(brief("lights { }"),
               "1:1: error: unknown block 'lights' at the top level (allowed: render_settings, "
-              "cameras, scene)");
+              "cameras, scene, include, define, material)");
+}
+
+// The statements of language 1.3 stand where blocks do: a misspelt one is
+// suggested like a block, and the rest of the text is read on.
+TEST(Structure, AMisspeltStatementIsSuggested) {
+    EXPECT_EQ(brief("defne r = 1;\nDefine s = 2;\nincud \"a.jts\";\nmaterail m { }\n"
+                    "cameras { includ \"c.jts\"; }\nscene { inclde \"b.jts\"; sphere { } }"),
+              "1:1: error: unknown block 'defne' at the top level; did you mean 'define'? "
+              "(allowed: render_settings, cameras, scene, include, define, material)\n"
+              "2:1: error: unknown block 'Define' at the top level; did you mean 'define'? "
+              "(allowed: render_settings, cameras, scene, include, define, material)\n"
+              "3:1: error: unknown block 'incud' at the top level; did you mean 'include'? "
+              "(allowed: render_settings, cameras, scene, include, define, material)\n"
+              "4:1: error: unknown block 'materail' at the top level; did you mean 'material'? "
+              "(allowed: render_settings, cameras, scene, include, define, material)\n"
+              "5:11: error: unknown block 'includ' in 'cameras'; did you mean 'include'? "
+              "(allowed: perspective_camera, include)\n"
+              "6:9: error: unknown block 'inclde' in 'scene'; did you mean 'include'? "
+              "(allowed: sphere, plane, cylinder, triangle, mesh, point_light, include)");
+}
+
+// '2pi', '0x10' or '1_000': a name against the value is one mistake in its
+// statement, not the start of the next one, whose errors would echo it.
+TEST(Structure, ANameAgainstAValueIsOneError) {
+    EXPECT_EQ(brief("define r = 2pi;\nscene { sphere { radius: 0x10; center: <r, 0, 0>; } }"),
+              "1:13: error: expected ';' after the value of 'define r' (a name cannot follow a "
+              "value directly: '2pi' is written '2 * pi')\n"
+              "2:27: error: expected ';' after the value of 'radius' (a name cannot follow a "
+              "value directly: '2pi' is written '2 * pi')");
+    // A name after a space is the next line's, whose ';' is missing.
+    ParseResult r = parse_scene("define r = 2\nscene { sphere { radius: r } }");
+    EXPECT_EQ(brief(r.diagnostics),
+              "1:13: error: expected ';' after the value of 'define r'\n"
+              "2:27: error: expected ';' after the value of 'radius'");
+    ASSERT_EQ(r.scene.primitives.size(), 1u);
+    EXPECT_EQ(shape_as<Sphere>(r.scene.primitives[0].shape).radius, 2.0);
 }
 
 TEST(Structure, UnknownPropertySuggestsTheNearestName) {
@@ -110,7 +147,7 @@ TEST(Structure, ErrorsAreAllReportedWithRecovery) {
               "2:32: error: 'center' takes a vector like <0, 1, 0>, got the number 3\n"
               "3:19: error: 'normal' must not be the zero vector, got <0, 0, 0>\n"
               "4:3: error: unknown block 'cube' in 'scene' (allowed: sphere, plane, cylinder, "
-              "triangle, mesh, point_light)");
+              "triangle, mesh, point_light, include)");
 }
 
 TEST(Structure, ErrorsAreCappedAtTwentyWithAFinalNote) {

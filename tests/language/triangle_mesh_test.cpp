@@ -44,7 +44,7 @@ TEST(TriangleMesh, ParseWithTheirDefaults) {
 TEST(TriangleMesh, MistakesAreLocatedWithSuggestions) {
     EXPECT_EQ(brief(std::string(kHead) + "scene { triangel { } }"),
               "3:9: error: unknown block 'triangel' in 'scene'; did you mean 'triangle'? "
-              "(allowed: sphere, plane, cylinder, triangle, mesh, point_light)");
+              "(allowed: sphere, plane, cylinder, triangle, mesh, point_light, include)");
     EXPECT_EQ(brief(std::string(kHead) + "scene { mesh { fille: \"a.obj\"; } }"),
               "3:16: error: unknown property 'fille' in 'mesh'; did you mean 'file'? "
               "(allowed: file, shading, smooth_angle, materials, material, transform)");

@@ -6,6 +6,8 @@
 
 #include <algorithm>
 #include <chrono>
+#include <csignal>
+#include <filesystem>
 #include <sstream>
 #include <string>
 #include <thread>
@@ -222,6 +224,56 @@ TEST_F(Mpi, DeadRankFailsTheRunWithoutAPartialFile) {
     if (!left.empty()) {
         EXPECT_EQ(left, std::vector<std::string>{"out.bmp"});
         EXPECT_EQ(test::read_file(dir / "out.bmp"), test::read_file(dir / "cli.bmp"));
+    }
+}
+
+// The jtracer-mpi rank 0 whose folder is `folder`: the process that writes
+// the image, which a farm's signal (a dropped ssh connection, a scheduler's
+// SIGTERM) reaches first when jtracer-mpi runs alone or mpirun passes it on.
+pid_t rank_zero_in(const std::filesystem::path& folder) {
+    const std::filesystem::path place = std::filesystem::canonical(folder);
+    const std::filesystem::path program = std::filesystem::canonical(JT_MPI);
+    for (const auto& entry : std::filesystem::directory_iterator("/proc")) {
+        const std::string name = entry.path().filename().string();
+        if (name.find_first_not_of("0123456789") != std::string::npos) continue;
+        std::error_code error;
+        if (std::filesystem::read_symlink(entry.path() / "cwd", error) != place || error) continue;
+        if (std::filesystem::read_symlink(entry.path() / "exe", error) != program || error)
+            continue;
+        const std::string environment = test::read_file(entry.path() / "environ");
+        if (environment.find(std::string("OMPI_COMM_WORLD_RANK=0") + '\0') != std::string::npos)
+            return static_cast<pid_t>(std::stol(name));
+    }
+    return -1;
+}
+
+// SIGHUP (a dropped ssh connection), SIGINT and SIGTERM stop jtracer-mpi as
+// they stop jtracer-cli: the shared handler, its exit codes, its message and
+// no temporary file. SIGHUP ended rank 0 on the spot, so that one arriving
+// during the write left the temporary file beside the image.
+TEST_F(Mpi, StopSignalsEndTheRunAsTheCliDoes) {
+    for (const int signal : {SIGHUP, SIGTERM}) {
+        test::RunningProgram render(
+            {{"env", "ASAN_OPTIONS=detect_leaks=0", JT_MPIEXEC, "--oversubscribe",
+              "--allow-run-as-root", "-np", "2", JT_MPI, JT_SOURCE_DIR "/scenes/showcase.jts", "-o",
+              "out.bmp", "--samples", "64", "--threads", "1", "--progress", "log"},
+             dir});
+        ASSERT_GT(render.pid(), 0);
+        const auto give_up = std::chrono::steady_clock::now() + std::chrono::seconds(120);
+        while (render.err_so_far().find("rendering:") == std::string::npos &&
+               std::chrono::steady_clock::now() < give_up)
+            std::this_thread::sleep_for(std::chrono::milliseconds(20));
+        ASSERT_NE(render.err_so_far().find("rendering:"), std::string::npos)
+            << "the render never reported progress: " << render.err_so_far();
+        const pid_t rank_zero = rank_zero_in(dir);
+        ASSERT_GT(rank_zero, 0) << "no rank 0 found";
+        ASSERT_EQ(::kill(rank_zero, signal), 0);
+        ProgramRun r = render.finish();
+        const std::string name = signal == SIGHUP ? "SIGHUP" : "SIGTERM";
+        EXPECT_EQ(r.code, 128 + signal) << r.err;
+        EXPECT_EQ(count(r.err, "jtracer-mpi: interrupted by " + name + "; nothing was written"), 1u)
+            << r.err;
+        EXPECT_TRUE(files().empty()) << files().front();
     }
 }
 

@@ -6,6 +6,7 @@
 
 #include "jtracer/bmp.hpp"
 #include "jtracer/region.hpp"
+#include "jtracer/region_file.hpp"
 
 namespace jt {
 namespace {
@@ -161,6 +162,42 @@ TEST_F(RegionCli, MergeWritesADashOutputToStandardOutput) {
 
 // As jtracer-cli before a render: a frame that cannot be written is found
 // before the parts (gigabytes, for a large frame) are read.
+// As jtracer-cli: a frame is not written to a terminal, where it would be lost.
+TEST_F(RegionCli, MergeRefusesATerminalAsItsOutput) {
+    if (run_shell("command -v script").code != 0) GTEST_SKIP() << "no script(1) here";
+    ASSERT_EQ(run_shell(cli + showcase +
+                        "--width 8 --height 4 -q --region-output --region 0,0,8,4 -o a.bmp")
+                  .code,
+              0);
+    ProgramRun r = run_shell("script -qec \"" + merge + "-o - a.bmp\" /dev/null");
+    EXPECT_EQ(r.code, 2) << r.out;
+    EXPECT_NE(r.out.find("standard output is a terminal"), std::string::npos) << r.out;
+}
+
+// A glob such as band* picked up the temporary file a killed write left
+// (band1.bmp.tmp-XXXXXX) and the merge failed on it as a truncated BMP; a
+// part named twice under two spellings was reported as overlapping itself.
+TEST_F(RegionCli, MergeNamesALeftoverTemporaryFileAndAPartGivenTwice) {
+    const std::string size = "--width 16 --height 8 -q --region-output ";
+    ASSERT_EQ(run_shell(cli + showcase + size + "--region 0,0,16,4 -o band0.bmp").code, 0);
+    ASSERT_EQ(run_shell(cli + showcase + size + "--region 0,4,16,8 -o band1.bmp").code, 0);
+    test::write_file(dir / "band1.bmp.tmp-a1B2c3", "BM");
+    ProgramRun r = run_shell(merge + "-o frame.bmp band*");
+    EXPECT_EQ(r.code, 2) << r.err;
+    EXPECT_NE(r.err.find("'band1.bmp.tmp-a1B2c3' is the temporary file of a write that never "
+                         "finished"),
+              std::string::npos)
+        << r.err;
+    r = run_shell(merge + "-o frame.bmp band0.bmp ./band0.bmp band1.bmp");
+    EXPECT_EQ(r.code, 2) << r.err;
+    EXPECT_NE(r.err.find("'band0.bmp' and './band0.bmp' are the same file, given twice"),
+              std::string::npos)
+        << r.err;
+    EXPECT_FALSE(exists("frame.bmp"));
+    r = run_shell(merge + "-o frame.bmp band*.bmp");
+    EXPECT_EQ(r.code, 0) << r.err;
+}
+
 TEST_F(RegionCli, MergeFindsAnUnwritableFrameBeforeReadingTheParts) {
     ProgramRun r = run_shell(merge + "-o missing/frame.bmp no-such-part.bmp");
     EXPECT_EQ(r.code, 3) << r.err;
@@ -188,6 +225,151 @@ TEST_F(RegionCli, MergeRefusesPartsOfDifferentFrameSizes) {
               std::string::npos)
         << r.err;
     EXPECT_FALSE(exists("out.bmp"));
+}
+
+// Parts of one frame size but of different renders merged into a frame
+// with seams no message warned of: each part now carries a fingerprint of
+// what it was rendered from, and the merge names both files and what differs.
+TEST_F(RegionCli, MergeRefusesPartsOfDifferentRenders) {
+    const std::string size = "--width 40 --height 30 -q --region-output ";
+    const std::string top = "--region 0,0,40,15 -o top.bmp";
+    ASSERT_EQ(run_shell(cli + showcase + size + top).code, 0);
+    struct Case {
+        std::string args, difference;
+    };
+    for (const Case& c : std::vector<Case>{
+             {showcase + size + "--samples 2", "samples 2 and 1"},
+             {showcase + size + "--clock 0.5", "clock 0.5 and 0"},
+             {manual + size, "the scene's content differs"},
+         }) {
+        ASSERT_EQ(run_shell(cli + c.args + " --region 0,15,40,30 -o bottom.bmp").code, 0) << c.args;
+        ProgramRun r = run_shell(merge + "-o out.bmp top.bmp bottom.bmp");
+        EXPECT_EQ(r.code, 1) << c.args << ": " << r.err;
+        EXPECT_NE(r.err.find("bottom.bmp and top.bmp are parts of different renders: "),
+                  std::string::npos)
+            << c.args << ": " << r.err;
+        EXPECT_NE(r.err.find(c.difference), std::string::npos) << c.args << ": " << r.err;
+        EXPECT_FALSE(exists("out.bmp")) << c.args;
+    }
+    // The same render, whatever else differs (threads, the part's name), merges.
+    ASSERT_EQ(run_shell(cli + showcase + size + "--threads 1 --region 0,15,40,30 -o b2.bmp").code,
+              0);
+    ProgramRun r = run_shell(merge + "-o out.bmp top.bmp b2.bmp");
+    EXPECT_EQ(r.code, 0) << r.err;
+    EXPECT_EQ(r.err.find("note:"), std::string::npos) << r.err;
+}
+
+// The scene's content is its values once the defines are applied: another
+// value is another render, the same value written otherwise is not.
+TEST_F(RegionCli, MergeComparesTheSceneAfterItsDefines) {
+    test::write_file(dir / "defined.jts", R"(
+define r = 1;
+cameras { perspective_camera { position: <0, 0, 5>; look_at: <0, 0, 0>; aspect: 1.3333; } }
+scene { sphere { radius: r; material { pigment: <1, 1, 1>; ambient: <1, 1, 1>; } } }
+render_settings { width: 8; height: 6; ambient_light: <1, 1, 1>; }
+)");
+    const std::string part = cli + "defined.jts -q --region-output ";
+    ASSERT_EQ(run_shell(part + "--region 0,0,8,3 -o a.bmp").code, 0);
+    ASSERT_EQ(run_shell(part + "--define r=1.5 --region 0,3,8,6 -o b.bmp").code, 0);
+    ASSERT_EQ(run_shell(part + "--define r=2/2 --region 0,3,8,6 -o c.bmp").code, 0);
+    ProgramRun r = run_shell(merge + "-o ab.bmp a.bmp b.bmp");
+    EXPECT_EQ(r.code, 1) << r.err;
+    EXPECT_NE(r.err.find("the scene's content differs"), std::string::npos) << r.err;
+    r = run_shell(merge + "-o ac.bmp a.bmp c.bmp");
+    EXPECT_EQ(r.code, 0) << r.err;
+}
+
+// Each value of a primitive counts, down to its finish and its transform, and
+// a value's spelling does not: 0.5 and 1/2 are one render.
+TEST_F(RegionCli, MergeComparesEveryValueOfAPrimitive) {
+    test::write_file(dir / "valued.jts", R"(
+define k = 0.5;
+define m = 0;
+define t = 0;
+cameras { perspective_camera { position: <0, 0, 5>; look_at: <0, 0, 0>; aspect: 1.3333; } }
+scene {
+    sphere { radius: 1; material { pigment: <1, 1, 1>; ambient: <1, 1, 1>; diffuse_k: k;
+                                   map_size: 1 + m; }
+             transform { xrotate: t; } }
+}
+render_settings { width: 8; height: 6; ambient_light: <1, 1, 1>; }
+)");
+    const std::string part = cli + "valued.jts -q --region-output ";
+    ASSERT_EQ(run_shell(part + "--region 0,0,8,3 -o a.bmp").code, 0);
+    for (const std::string define : {"k=0.25", "m=1", "t=1e-9"}) {
+        ASSERT_EQ(run_shell(part + "--define " + define + " --region 0,3,8,6 -o b.bmp").code, 0);
+        ProgramRun r = run_shell(merge + "-o ab.bmp a.bmp b.bmp");
+        EXPECT_EQ(r.code, 1) << define << ": " << r.err;
+        EXPECT_NE(r.err.find("the scene's content differs"), std::string::npos) << r.err;
+    }
+    ASSERT_EQ(run_shell(part + "--define k=1/2 --define t=0*5 --region 0,3,8,6 -o c.bmp").code, 0);
+    ProgramRun r = run_shell(merge + "-o ac.bmp a.bmp c.bmp");
+    EXPECT_EQ(r.code, 0) << r.err;
+}
+
+// A file the scene names is part of what was rendered: an image map changed
+// between two parts' renders is another render.
+TEST_F(RegionCli, MergeRefusesPartsRenderedWithAChangedImageMap) {
+    test::write_file(dir / "mapped.jts", R"(
+cameras { perspective_camera { position: <0, 0, 5>; look_at: <0, 0, 0>; aspect: 1.3333; } }
+scene {
+    plane { normal: <0, 0, 1>; material { pigment: <1, 1, 1>; ambient: <1, 1, 1>;
+                                          image_map: "map.bmp"; } }
+}
+render_settings { width: 8; height: 6; ambient_light: <1, 1, 1>; }
+)");
+    Image8 map(2, 2);
+    ASSERT_TRUE(write_bmp(dir / "map.bmp", map));
+    ASSERT_EQ(run_shell(cli + "mapped.jts -q --region-output --region 0,0,8,3 -o a.bmp").code, 0);
+    map.pixel(0, 0)[0] = 200;
+    ASSERT_TRUE(write_bmp(dir / "map.bmp", map));
+    ProgramRun r = run_shell(cli + "mapped.jts -q --region-output --region 0,3,8,6 -o b.bmp");
+    ASSERT_EQ(r.code, 0) << r.err;
+    r = run_shell(merge + "-o out.bmp a.bmp b.bmp");
+    EXPECT_EQ(r.code, 1) << r.err;
+    EXPECT_NE(r.err.find("the scene's content differs"), std::string::npos) << r.err;
+}
+
+// Parts written before the fingerprint (a version 1 record) still merge among
+// themselves, with a note; mixed with fingerprinted ones they are refused.
+TEST_F(RegionCli, PartsWithoutAFingerprintMergeAloneWithANote) {
+    Image8 pixels(4, 1);
+    ASSERT_TRUE(write_region_bmp(dir / "old0.bmp", pixels, {4, 2, {0, 0, 4, 1}}));
+    ASSERT_TRUE(write_region_bmp(dir / "old1.bmp", pixels, {4, 2, {0, 1, 4, 2}}));
+    ProgramRun r = run_shell(merge + "-o out.bmp old0.bmp old1.bmp");
+    EXPECT_EQ(r.code, 0) << r.err;
+    EXPECT_NE(r.err.find("note: the parts carry no render fingerprint"), std::string::npos)
+        << r.err;
+    ASSERT_EQ(run_shell(cli + showcase +
+                        "--width 4 --height 2 -q --region-output --region "
+                        "0,1,4,2 -o new1.bmp")
+                  .code,
+              0);
+    r = run_shell(merge + "-o mixed.bmp old0.bmp new1.bmp");
+    EXPECT_EQ(r.code, 1) << r.err;
+    EXPECT_NE(r.err.find("old0.bmp carries no render fingerprint"), std::string::npos) << r.err;
+    EXPECT_NE(r.err.find("render old0.bmp again"), std::string::npos) << r.err;
+    EXPECT_FALSE(exists("mixed.bmp"));
+}
+
+// A region job array rerun with --skip-existing keeps a part only when it is
+// this region of this render: a part of another render under the name (a
+// stale part from an earlier version of the scene) is rendered again.
+TEST_F(RegionCli, SkipExistingKeepsOnlyAPartOfThisRender) {
+    const std::string part =
+        cli + showcase + "--width 40 --height 30 --region-output --region 0,0,40,15 -o p.bmp ";
+    ASSERT_EQ(run_shell(part + "-q --samples 2").code, 0);
+    const std::string two_samples = test::read_file(dir / "p.bmp");
+    ProgramRun r = run_shell(part + "--skip-existing");
+    ASSERT_EQ(r.code, 0) << r.err;
+    EXPECT_NE(r.err.find("p.bmp is there, but it holds another region or render"),
+              std::string::npos)
+        << r.err;
+    EXPECT_NE(test::read_file(dir / "p.bmp"), two_samples);
+    r = run_shell(part + "--skip-existing");
+    ASSERT_EQ(r.code, 0) << r.err;
+    EXPECT_NE(r.err.find("kept p.bmp: already there and complete"), std::string::npos) << r.err;
+    EXPECT_EQ(r.err.find("wrote"), std::string::npos) << r.err;
 }
 
 }  // namespace

@@ -103,6 +103,26 @@ TEST_F(RegionFile, RoundTripsPixelsAndPlacement) {
     EXPECT_EQ(*plain, part);
 }
 
+TEST_F(RegionFile, RoundTripsTheFingerprint) {
+    Image8 part(2, 2);
+    RegionPlacement placement{64, 48, {0, 0, 2, 2}};
+    placement.fingerprint =
+        RenderFingerprint{{}, 16, 2, "a camera name longer than 32 bytes!", 0.25};
+    for (std::size_t i = 0; i < 16; ++i)
+        placement.fingerprint->scene[i] = static_cast<std::uint8_t>(17 * i);
+    ASSERT_TRUE(write_region_bmp(path, part, placement));
+    const Expected<RegionPart> read = read_region_bmp(path);
+    ASSERT_TRUE(read) << read.error().message;
+    ASSERT_TRUE(read->placement.fingerprint);
+    // The name is kept for messages only: its first 32 bytes.
+    placement.fingerprint->camera_name.resize(32);
+    EXPECT_EQ(read->placement.fingerprint->camera_name, "a camera name longer than 32 byt");
+    EXPECT_EQ(read->placement, placement);
+    const Expected<Image8> plain = read_bmp(path);
+    ASSERT_TRUE(plain) << plain.error().message;
+    EXPECT_EQ(*plain, part);
+}
+
 TEST_F(RegionFile, PlainBmpHasNoRecord) {
     ASSERT_TRUE(write_bmp(path, Image8(4, 4)));
     const Expected<RegionPart> part = read_region_bmp(path);

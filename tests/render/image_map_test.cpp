@@ -1,6 +1,7 @@
 // Image maps, worked out by hand from docs/language.md §13.4: texture
 // coordinates of each shape, the bilinear blend, and files found beside the scene.
 
+#include "common/image_header.hpp"
 #include "jtracer/bmp.hpp"
 #include "jtracer/png.hpp"
 #include "jtracer/scene_file.hpp"
@@ -12,6 +13,7 @@
 
 #include <unistd.h>
 
+#include <algorithm>
 #include <filesystem>
 #include <fstream>
 #include <iterator>
@@ -117,16 +119,11 @@ TEST(ImageMap, DecodesPngAndBmpToBytesOver255) {
 }
 
 // A 1x1 RGB PNG whose image data is a zlib stream of one block of the
-// reserved type 3: stb_image fails on it without giving a reason.
+// reserved type 3 (stb_image failed on it without giving a reason).
 std::vector<std::uint8_t> png_with_a_reserved_zlib_block() {
-    std::vector<std::uint8_t> bytes{0x89, 'P', 'N', 'G', 0x0d, 0x0a, 0x1a, 0x0a};
+    std::vector<std::uint8_t> bytes = test::png_signature();
     auto chunk = [&](const char* type, const std::vector<std::uint8_t>& data) {
-        const auto length = static_cast<std::uint32_t>(data.size());
-        for (int shift : {24, 16, 8, 0})
-            bytes.push_back(static_cast<std::uint8_t>(length >> shift));
-        bytes.insert(bytes.end(), type, type + 4);
-        bytes.insert(bytes.end(), data.begin(), data.end());
-        bytes.insert(bytes.end(), 4, 0);  // the CRC, which no reader here checks
+        test::append_png_chunk(bytes, type, data);
     };
     chunk("IHDR", {0, 0, 0, 1, 0, 0, 0, 1, 8, 2, 0, 0, 0});
     chunk("IDAT", {0x78, 0x01, 0x07});  // a zlib header, then a final block of type 3
@@ -134,16 +131,45 @@ std::vector<std::uint8_t> png_with_a_reserved_zlib_block() {
     return bytes;
 }
 
-TEST(ImageMap, APngStbRejectsWithoutAReasonIsAnErrorNotACrash) {
+TEST(ImageMap, APngOfAReservedDeflateBlockIsAnErrorNotACrash) {
     // A model file's embedded texture like this one crashed the model fuzzer:
     // the message was built from stb_image's null reason.
     const std::vector<std::uint8_t> bytes = png_with_a_reserved_zlib_block();
     const Expected<Texture> texture = decode_texture(bytes);
     ASSERT_FALSE(texture);
-    EXPECT_EQ(texture.error().message, "cannot decode the image: its data is damaged");
+    EXPECT_EQ(texture.error().message,
+              "cannot decode the image: its data is damaged (IDAT: invalid block type)");
     const Expected<Image8> image = decode_png(bytes);
     ASSERT_FALSE(image);
-    EXPECT_EQ(image.error().message, "not a readable PNG: its data is damaged");
+    EXPECT_EQ(image.error().message,
+              "not a readable PNG: its data is damaged (IDAT: invalid block type)");
+}
+
+TEST(ImageMap, APngCutAfterAWholeChunkSaysItsDataEndsEarly) {
+    // A 64 x 64 picture of noise, its image data split over two IDAT chunks
+    // and the file cut after the first: every chunk it has is whole.
+    Image8 image(64, 64);
+    std::uint32_t state = 7;
+    for (std::uint8_t& byte : image.rgb) {
+        state = state * 1664525u + 1013904223u;
+        byte = static_cast<std::uint8_t>(state >> 24);
+    }
+    const std::vector<std::uint8_t> whole = encode_png(image);
+    const auto idat =
+        std::search(whole.begin(), whole.end(), std::begin("IDAT"), std::begin("IDAT") + 4);
+    ASSERT_NE(idat, whole.end());
+    const std::size_t length = std::size_t{idat[-4]} << 24 | std::size_t{idat[-3]} << 16 |
+                               std::size_t{idat[-2]} << 8 | std::size_t{idat[-1]};
+    const std::size_t half = length / 2;
+    std::vector<std::uint8_t> cut(whole.begin(), idat - 4);  // the signature and IHDR
+    for (int shift : {24, 16, 8, 0}) cut.push_back(static_cast<std::uint8_t>(half >> shift));
+    cut.insert(cut.end(), idat, idat + 4 + static_cast<std::ptrdiff_t>(half));
+    cut.insert(cut.end(), 4, 0);  // the CRC, which is not checked
+    const Expected<Texture> texture = decode_texture(cut);
+    ASSERT_FALSE(texture);
+    // stb_image gave no reason here: the message ended in ": ".
+    EXPECT_EQ(texture.error().message,
+              "cannot decode the image: its data ends early (the file is truncated or damaged)");
 }
 
 // encode_bmp's bottom-up file of `image` stored top-down instead: the height

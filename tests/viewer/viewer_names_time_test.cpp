@@ -207,6 +207,29 @@ TEST_F(ViewerNamesTime, TheSliderRendersAtItsClockAsJtracerCliDoesAndLeavesTheFi
         << "the slider stays where it was when Play turns to Pause";
 }
 
+// A clock typed one key a frame, as a user types it, is taken when Enter is
+// pressed: typing 0.5 does not render the scene at clock 0 on the way.
+TEST_F(ViewerNamesTime, AClockTypedIsTakenWhenTheTypingEnds) {
+    ASSERT_FALSE(HasFatalFailure());
+    for (int i = 0; i < 2; ++i) viewer.frame(state);
+    ASSERT_TRUE(set_clock(state, 0.25));
+    viewer.frame(state);
+    const UiItem* slider = find_item(viewer.ui_items(), "clock");
+    ASSERT_NE(slider, nullptr);
+    viewer.press_mouse(state, 0, (slider->rect.x0 + slider->rect.x1) * 0.5f - 40.0f,
+                       (slider->rect.y0 + slider->rect.y1) * 0.5f, kCtrl);
+    viewer.release_mouse(state, 0);
+    viewer.frame(state);
+    for (char c : std::string("0.5")) {
+        ImGui::GetIO().AddInputCharacter(c);
+        viewer.frame(state);
+        EXPECT_EQ(state.doc.options.clock, 0.25) << "not taken while typing, after " << c;
+    }
+    viewer.press_key(state, keys::enter);
+    viewer.frame(state);
+    EXPECT_EQ(state.doc.options.clock, 0.5);
+}
+
 TEST_F(ViewerNamesTime, ASceneWithoutClockHasNoSlider) {
     ASSERT_FALSE(HasFatalFailure());
     std::string text = kScene;

@@ -99,14 +99,16 @@ float reload_bar(AppState& state, ReloadBarState& bar, const ScreenRect& area) {
     const std::string& path = state.doc.path.native();
     const std::string_view name = std::string_view(path).substr(path.rfind('/') + 1);
     const int name_size = static_cast<int>(name.size());
-    const bool unchanged = state.files.pending_reload->text == state.doc.disk_text;
+    // The file that changed: the scene's, or one it includes.
+    const std::string& changed = state.files.changed_on_disk;
+    const bool unchanged = changed.empty();
     ImGui::PushStyleColor(ImGuiCol_Text, kWarning);
     if (unchanged)
         ImGui::TextWrapped("%.*s is unchanged on disk. Reloading it would drop your unsaved edits.",
                            name_size, name.data());
     else
-        ImGui::TextWrapped("%.*s changed on disk%s, and you have unsaved edits.", name_size,
-                           name.data(), state.files.pending_reload->ok ? "" : " (it has errors)");
+        ImGui::TextWrapped("%s changed on disk%s, and you have unsaved edits.", changed.c_str(),
+                           state.files.pending_reload->ok ? "" : " (it has errors)");
     ImGui::PopStyleColor();
     choices(state, bar, unchanged);
     if (state.files.pending_reload && !unchanged && !state.files.reapply_problem.empty())

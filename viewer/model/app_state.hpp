@@ -238,6 +238,9 @@ struct FileState {
     // until the user chooses (resolve_reload) so that neither is lost unasked.
     std::optional<LoadAttempt> pending_reload;
     std::string reapply_problem;  // why the edits cannot be re-applied to it, or empty
+    // The file it reads differently (changed_on_disk): the scene file, or an
+    // included file; empty when it reads the same and only drops the edits.
+    std::string changed_on_disk;
     // Why the last Save scene was refused (the file changed on disk), or empty;
     // save_scene_anyway overwrites it.
     std::string save_conflict;

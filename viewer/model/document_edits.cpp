@@ -281,6 +281,21 @@ void type_text(AppState& state, std::string text) {
 
 namespace {
 
+// The history starts again from the files as they are on disk (one undo
+// step back to them, when they read without errors): its steps held
+// scenes read from older texts of the included files.
+void forget_history_before_files_changed(AppState& state) {
+    SceneDocument& doc = state.doc;
+    state.history.undo.clear();
+    state.history.edit_base.reset();
+    if (doc.draft || doc.text == doc.disk_text) return;
+    ParseResult on_disk = parse_document_text(doc, doc.disk_text);
+    if (!on_disk.ok()) return;
+    on_disk.scene.asset_folder = doc.original->asset_folder;
+    state.history.undo.record(
+        {doc.disk_text, std::move(on_disk.scene), std::nullopt, doc.options.clock});
+}
+
 // The draft's check, taken in: a text without errors becomes the document.
 void take_in(AppState& state, CheckedText checked) {
     SceneDocument& doc = state.doc;
@@ -316,14 +331,23 @@ void take_in(AppState& state, CheckedText checked) {
         now.scene.asset_folder = checked.parsed.scene.asset_folder;
         if (now.ok()) checked.parsed = std::move(now);
     }
+    // An included file that changed on disk since the document read it: the
+    // undo history's scenes hold its objects as they were, and stepping back
+    // would bring them back as edits that Save writes over the file's new
+    // text. As after a reload, the history starts again here.
+    const std::string changed = changed_include(doc, checked.parsed.source.files);
     take_text(doc, std::move(checked.text), std::move(checked.parsed));
+    if (!changed.empty()) forget_history_before_files_changed(state);
     doc.loaded = true;  // a file that never loaded (empty, broken) now has a scene
     keep_camera_selection(state.view, state.doc.scene, before);
     note_command_edit(state.history, state.doc);
     state.check.checked_revision = doc.revision;  // the diagnostics describe it already
     // A typo fixed back: the image shown is of this very scene.
     if (doc.scene == before) keep_render_for(state.render, revision_before, doc.revision);
-    state.message = "The text parses: the image follows it";
+    state.message = changed.empty() ? "The text parses: the image follows it"
+                                    : changed +
+                                          " changed on disk: read again with your unsaved edits; "
+                                          "Undo goes back to the files as they are on disk";
 }
 
 }  // namespace

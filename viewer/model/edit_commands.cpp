@@ -16,7 +16,7 @@ void check_edits(CheckState& check, SceneDocument& doc, const FileState& files) 
     // A failed load's diagnostics describe the file, and a pending reload's the
     // newer text: both stay until the file is fixed or the user chooses.
     if (!doc.loaded || doc.load_failed ||
-        (files.pending_reload && files.pending_reload->text != doc.disk_text) || doc.draft) {
+        (files.pending_reload && !files.changed_on_disk.empty()) || doc.draft) {
         check.checked_revision.reset();
         return;
     }

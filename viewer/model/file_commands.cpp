@@ -148,7 +148,10 @@ void finish_reload(AppState& state, LoadAttempt attempt) {
     // text (a draft): the text editor shows that text with them, and its
     // next keystroke would check it again anyway; the bar and the message
     // say whether the file on disk has errors.
-    const bool unchanged = attempt.text == state.doc.disk_text;
+    // An included file changed is a change too: its objects are new.
+    state.files.changed_on_disk = changed_on_disk(state.doc, attempt);
+    const std::string& changed = state.files.changed_on_disk;
+    const bool unchanged = changed.empty();
     state.files.reapply_problem.clear();
     if (!unchanged) {
         if (const Expected<Scene> reapplied = reapply_edits(state.doc, attempt); !reapplied)
@@ -166,7 +169,7 @@ void finish_reload(AppState& state, LoadAttempt attempt) {
                         ? name +
                               " is unchanged on disk; reloading it would drop your "
                               "unsaved edits: choose in the bar above the image"
-                        : name + " changed on disk" + (broken ? " (it has errors)" : "") +
+                        : changed + " changed on disk" + (broken ? " (it has errors)" : "") +
                               " while you have unsaved edits: choose in the bar above the image";
 }
 

@@ -8,6 +8,7 @@
 #include "jtracer/value_text.hpp"
 #include "model/app_actions.hpp"
 #include "model/document_edits.hpp"
+#include "model/field_sources.hpp"
 #include "model/picking.hpp"
 
 #include <glm/geometric.hpp>
@@ -172,8 +173,19 @@ bool start_object_drag(AppState& state, const ImagePoint& at, double marker_radi
     drag.press = at;
     drag.plane = *plane;
     drag.pixel_size = *pixel;
+    const auto index = static_cast<std::size_t>(target.index);
     if (target.kind == Selection::Kind::light) {
-        drag.start = state.doc.scene.lights[static_cast<std::size_t>(target.index)].position;
+        // A position written as a name or an expression is the text's to
+        // change (docs/language.md §15.2): a move would be refused by Save.
+        const FieldSource position = field_source(
+            state.doc, block_source(state.doc, {EditedBlock::Kind::light, index}), "position");
+        if (read_only(position)) {
+            state.message = "Not moved: " + name + "'s position is written as " +
+                            std::string(written_text(state.doc, position)) +
+                            "; edit it in the text editor (T)";
+            return false;
+        }
+        drag.start = state.doc.scene.lights[index].position;
     } else {
         const Primitive& p = state.doc.scene.primitives[static_cast<std::size_t>(target.index)];
         drag.only_along = world_normal(p);
@@ -181,8 +193,12 @@ bool start_object_drag(AppState& state, const ImagePoint& at, double marker_radi
             state.message = "Not moved: " + name + " is left out of the render";
             return false;
         }
+        // A last translate written as a name or an expression stays as
+        // written: the move is a translate of its own after it.
+        const BlockSource* source = block_source(state.doc, {EditedBlock::Kind::primitive, index});
         const bool translate_last =
-            !p.transforms.empty() && p.transforms.back().kind == TransformKind::translate;
+            !p.transforms.empty() && p.transforms.back().kind == TransformKind::translate &&
+            !read_only(transform_field_source(state.doc, source, p.transforms.size() - 1));
         drag.adds_translate = !translate_last;
         drag.start = translate_last ? p.transforms.back().vector : Vec3{0.0};
     }

@@ -6,6 +6,7 @@
 #include "jtracer/parser.hpp"
 #include "jtracer/scene_file.hpp"
 #include "jtracer/source_edit.hpp"
+#include "jtracer/texture.hpp"
 #include "model/image_files.hpp"
 #include "model/scene_time.hpp"
 
@@ -111,6 +112,15 @@ void accept_load(SceneDocument& doc, const std::filesystem::path& path, LoadAtte
     doc.diagnostics_path = path;
     doc.diagnostics_files = attempt.source.files;
     note_included_files(doc, attempt.source);
+    if (!attempt.ok && attempt.read && !has_errors(attempt.parse_diagnostics)) {
+        // The text parsed, so what failed is a file it names (a sky map not
+        // there yet, a broken model): the scene's files are watched only
+        // once it loads, so these are watched with the included ones, and
+        // the file appearing or mended reloads.
+        const NamedFiles named = named_files(*attempt.scene);
+        for (const std::filesystem::path& file : named.models) doc.included_files.push_back(file);
+        for (const std::filesystem::path& file : named.images) doc.included_files.push_back(file);
+    }
     doc.load_failed = !attempt.ok;
     doc.file_unread = !attempt.read;
     doc.file_deleted = attempt.missing;
@@ -292,10 +302,52 @@ Expected<Scene> reapply_edits(const SceneDocument& doc, const LoadAttempt& newer
             "changed values can be re-applied to a newer file"};
     SourceEditResult edit = apply_scene_edits(newer.text, newer.source, *doc.original, doc.scene);
     if (!edit.ok()) return Error{edit.error};
-    ParseResult parsed = parse_document_text(doc, edit.text);
+    // An edit of a value in an included file is read from that file's text
+    // with the edit written in, as Save would write it; its place in
+    // `edit.files` is one in the newer reading's files.
+    ParseOptions options = document_options(doc);
+    if (!edit.files.empty())
+        options.read_include = [&newer, &edit](const std::string& file,
+                                               std::uintmax_t max_bytes) -> Expected<IncludedText> {
+            Expected<IncludedText> read = read_include_file(file, max_bytes);
+            if (!read) return read;
+            for (const EditedFile& edited : edit.files)
+                if (newer.source.files[edited.file - 1].canonical == read->canonical)
+                    read->text = edited.text;
+            return read;
+        };
+    ParseResult parsed = parse_scene(edit.text, options);
     if (!parsed.ok()) return Error{"the edits do not fit the new text"};
     parsed.scene.asset_folder = newer.scene->asset_folder;
     return std::move(parsed.scene);
+}
+
+std::string changed_include(const SceneDocument& doc, const std::vector<SourceFile>& files) {
+    for (const SourceFile& file : files)
+        for (const SourceFile& old : doc.source.files)
+            if (old.canonical == file.canonical && old.text != file.text)
+                return std::string(short_file_name(doc, file.name));
+    return {};
+}
+
+std::string changed_on_disk(const SceneDocument& doc, const LoadAttempt& newer) {
+    if (newer.text != doc.disk_text) return doc.path.filename().string();
+    const std::vector<SourceFile>& before = doc.source.files;
+    const std::vector<SourceFile>& now = newer.source.files;
+    for (const SourceFile& file : now) {
+        const auto same = [&](const SourceFile& old) {
+            return old.canonical == file.canonical && old.text == file.text;
+        };
+        if (std::find_if(before.begin(), before.end(), same) == before.end())
+            return std::string(short_file_name(doc, file.name));
+    }
+    // A file read before and no longer (an error stopped the reading first).
+    for (const SourceFile& file : before) {
+        const auto read = [&](const SourceFile& next) { return next.canonical == file.canonical; };
+        if (std::find_if(now.begin(), now.end(), read) == now.end())
+            return std::string(short_file_name(doc, file.name));
+    }
+    return {};
 }
 
 Expected<std::vector<std::string>> save_scene_in_place(SceneDocument& doc) {

@@ -50,7 +50,8 @@ struct SceneDocument {
     // the text taken in since (typed, undone to) read: watched like the scene
     // file, so that a change, or a missing file appearing, reloads
     // (docs/language.md §15.6), or, for a text not saved yet, reads the text
-    // again (reload_if_changed).
+    // again (reload_if_changed). After a load whose text parsed but failed
+    // on a file it names, the model and image files its scene names too.
     std::vector<std::filesystem::path> included_files;
     // Counts the loads taken in (good or not) and the saves: either may
     // change the texts read (the included files' too) without a new revision.
@@ -222,5 +223,19 @@ bool file_changed_on_disk(const SceneDocument& doc, std::string& what);
 // text of the file, where the edited items still exist; the error says why
 // they cannot be (items added or removed in the file).
 Expected<Scene> reapply_edits(const SceneDocument& doc, const LoadAttempt& newer);
+
+// The file that `newer`, a reading of the document's file, reads differently
+// from the document: the scene file's name when its text differs from the
+// one on disk before, else the first included file whose text differs or
+// that one of them no longer reads (short_file_name); empty when every file
+// reads the same, and reloading would only drop the unsaved edits.
+std::string changed_on_disk(const SceneDocument& doc, const LoadAttempt& newer);
+
+// The first file that both the document and a newer reading of its text
+// (`files`, its SourceScene::files) include, but with another text: an
+// included file changed on disk since the document read it (short_file_name).
+// Empty when there is none; a file only one of them includes is no change of
+// a file (an include typed or taken out).
+std::string changed_include(const SceneDocument& doc, const std::vector<SourceFile>& files);
 
 }  // namespace jt::view

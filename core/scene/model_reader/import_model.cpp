@@ -3,6 +3,7 @@
 #include "io/file_bytes.hpp"
 #include "io/model_reader.hpp"
 #include "jtracer/version.hpp"
+#include "model_reader/cerr_capture.hpp"
 #include "model_reader/confined_io_system.hpp"
 #include "model_reader/gltf_rules.hpp"
 #include "model_reader/model_materials.hpp"
@@ -430,7 +431,13 @@ Expected<Model> import_model(const std::filesystem::path& file, const std::files
             return Error{file_message(file, problem)};
         auto* io = new ConfinedIOSystem(reference_folder(file, folder));
         importer.SetIOHandler(io);  // the importer owns it
-        const aiScene* scene = importer.ReadFile(file.string(), 0);
+        std::vector<std::pair<std::string, std::size_t>> said;
+        const aiScene* scene = nullptr;
+        {
+            const CerrCapture capture;
+            scene = importer.ReadFile(file.string(), 0);
+            said = capture.lines();
+        }
         if (!scene) {
             // Assimp turns every exception into its error string, running out
             // of memory too; that one is the programs' to report (error.hpp).
@@ -457,7 +464,10 @@ Expected<Model> import_model(const std::filesystem::path& file, const std::files
         // STL's normals are one a facet, not a vertex (docs/language.md §13.5).
         Expected<Model> model = gather(*scene, lower_extension(file) != ".stl", declared_triangles,
                                        plan ? &*plan : nullptr);
-        if (model) model->left_out.refused_file = io->refusal();
+        if (model) {
+            model->left_out.refused_file = io->refusal();
+            model->left_out.reader_said = std::move(said);
+        }
         if (model && model->triangles.empty()) {
             // Text Assimp could not read shows as a model of nothing.
             const Expected<std::vector<std::uint8_t>> bytes = read_file_bytes(file);

@@ -51,27 +51,31 @@ std::vector<std::string_view> words(std::string_view s) {
     return out;
 }
 
-// Calls `line(keyword, rest)` for every line of `text`, a backslash at the
-// end of a line joining it to the next as OBJ files allow.
+// Calls `line(keyword, rest, number)` for every line of `text`, a backslash
+// at the end of a line joining it to the next as OBJ files allow (`number`,
+// from 1, is then the first line's).
 template <typename Line>
 void for_each_line(std::string_view text, Line line) {
     std::string joined;
-    std::size_t at = 0;
+    std::size_t at = 0, number = 0, first = 1;
     while (at < text.size()) {
+        ++number;
         std::size_t end = text.find('\n', at);
         if (end == std::string_view::npos) end = text.size();
         std::string_view piece = text.substr(at, end - at);
         at = end + 1;
         if (!piece.empty() && piece.back() == '\r') piece.remove_suffix(1);
         if (!piece.empty() && piece.back() == '\\') {
+            if (joined.empty()) first = number;
             joined.append(piece.substr(0, piece.size() - 1)).push_back(' ');
             continue;
         }
+        if (joined.empty()) first = number;
         joined.append(piece);
         const std::string_view whole = trim(joined);
         std::size_t key_end = 0;
         while (key_end < whole.size() && !blank(whole[key_end])) ++key_end;
-        line(whole.substr(0, key_end), trim(whole.substr(key_end)));
+        line(whole.substr(0, key_end), trim(whole.substr(key_end)), first);
         joined.clear();
     }
 }
@@ -83,7 +87,11 @@ std::string_view as_text(const std::vector<std::uint8_t>& bytes) {
 // What an OBJ's material library says of one material.
 struct LibraryMaterial {
     std::optional<Colour> kd;
-    std::string map_kd;            // the last word of map_Kd, or ""
+    // The file map_Kd names: the words after its options, blanks and all;
+    // then, after an option not known, the line's last word. Empty without
+    // map_Kd.
+    std::vector<std::string> map_kd;
+    std::string map_kd_line;       // "line N of 'LIBRARY'", for messages
     std::filesystem::path folder;  // of the library, where map_Kd is found
 };
 
@@ -102,6 +110,52 @@ std::optional<Colour> read_kd(std::string_view rest) {
     return Colour(v[0], v[1], v[2]);
 }
 
+// How many numbers each option of a texture line takes (the MTL format's
+// list); -o, -s and -t take one to three.
+int option_arguments(std::string_view option) {
+    static const std::map<std::string, int, std::less<>> counts{
+        {"-blendu", 1},  {"-blendv", 1}, {"-boost", 1}, {"-cc", 1},   {"-clamp", 1},
+        {"-imfchan", 1}, {"-texres", 1}, {"-bm", 1},    {"-type", 1}, {"-mm", 2},
+        {"-o", 3},       {"-s", 3},      {"-t", 3}};
+    const auto known = counts.find(lower(option));
+    return known == counts.end() ? -1 : known->second;
+}
+
+bool is_number(std::string_view word) {
+    double value = 0.0;
+    const auto [end, error] = std::from_chars(word.data(), word.data() + word.size(), value);
+    return error == std::errc() && end == word.data() + word.size();
+}
+
+// The file a map_Kd line names (see LibraryMaterial::map_kd), folders
+// separated by '/' (files written on Windows use backslashes).
+std::vector<std::string> texture_names(std::string_view rest) {
+    const std::vector<std::string_view> w = words(rest);
+    if (w.empty()) return {};
+    std::size_t k = 0;
+    while (k < w.size()) {
+        const int count = option_arguments(w[k]);
+        if (count < 0) break;
+        ++k;
+        // -o, -s and -t take up to three numbers, the others all they name.
+        const bool up_to = count == 3;
+        for (int n = 0; n < count && k < w.size(); ++n, ++k)
+            if (up_to && n > 0 && !is_number(w[k])) break;
+    }
+    std::vector<std::string> names;
+    if (k < w.size()) {
+        // From the first word of the name to the line's end, inner blanks kept.
+        const std::size_t from = static_cast<std::size_t>(w[k].data() - rest.data());
+        names.emplace_back(trim(rest.substr(from)));
+    }
+    // An option this list does not know: its words cannot be told from the
+    // name's, so the last word may be the file too.
+    if (names.empty() || (names.front()[0] == '-' && names.front() != w.back()))
+        names.emplace_back(w.back());
+    for (std::string& name : names) std::replace(name.begin(), name.end(), '\\', '/');
+    return names;
+}
+
 // Every material of the libraries Assimp opened, in order; a later one of
 // the same name adds to (and overrides) the earlier, as Assimp does.
 Expected<std::map<std::string, LibraryMaterial>> read_libraries(
@@ -112,24 +166,24 @@ Expected<std::map<std::string, LibraryMaterial>> read_libraries(
         if (!bytes) return Error{"its material library cannot be read: " + bytes.error().message};
         LibraryMaterial* current = nullptr;
         std::string problem;
-        for_each_line(as_text(*bytes), [&](std::string_view key, std::string_view rest) {
-            const std::string k = lower(key);
-            if (k == "newmtl") {
-                current = &materials[std::string(rest)];
-                current->folder = library.parent_path();
-            } else if (current && k == "kd") {
-                current->kd = read_kd(rest);
-                if (!current->kd && problem.empty())
-                    problem = "its material library '" + library.string() +
-                              "' has a Kd that is not one or three finite numbers: 'Kd " +
-                              std::string(rest) + "'";
-            } else if (current && k == "map_kd") {
-                const std::vector<std::string_view> w = words(rest);
-                if (!w.empty()) current->map_kd = std::string(w.back());
-                // Files written on Windows separate folders with backslashes.
-                std::replace(current->map_kd.begin(), current->map_kd.end(), '\\', '/');
-            }
-        });
+        for_each_line(
+            as_text(*bytes), [&](std::string_view key, std::string_view rest, std::size_t number) {
+                const std::string k = lower(key);
+                if (k == "newmtl") {
+                    current = &materials[std::string(rest)];
+                    current->folder = library.parent_path();
+                } else if (current && k == "kd") {
+                    current->kd = read_kd(rest);
+                    if (!current->kd && problem.empty())
+                        problem = "its material library '" + library.string() +
+                                  "' has a Kd that is not one or three finite numbers: 'Kd " +
+                                  std::string(rest) + "'";
+                } else if (current && k == "map_kd") {
+                    current->map_kd = texture_names(rest);
+                    current->map_kd_line =
+                        "line " + std::to_string(number) + " of '" + library.string() + "'";
+                }
+            });
         if (!problem.empty()) return Error{problem};
     }
     return materials;
@@ -151,7 +205,7 @@ ObjFaces scan_obj(std::string_view text) {
     // Owned copies: the line for_each_line hands over lives in a buffer it
     // reuses for the next line.
     std::set<std::string, std::less<>> objects;
-    for_each_line(text, [&](std::string_view key, std::string_view rest) {
+    for_each_line(text, [&](std::string_view key, std::string_view rest, std::size_t) {
         if (key == "usemtl") {
             const auto known = std::find(scan.names.begin(), scan.names.end(), rest);
             current = static_cast<std::uint32_t>(known - scan.names.begin());
@@ -278,7 +332,13 @@ Expected<MaterialPlan> obj_plan(const aiScene& scene, const std::filesystem::pat
 
     MaterialPlan plan;
     PartList parts;
-    std::map<std::string, std::pair<std::string, std::filesystem::path>> textures;
+    // Each textured material's file: its name, path and map_Kd line.
+    struct TextureFile {
+        std::string name;
+        std::filesystem::path path;
+        std::string line;
+    };
+    std::map<std::string, TextureFile> textures;
     auto part_named = [&](const std::string* name) -> std::uint32_t {
         if (!name) return parts.none();
         const auto known = library->find(*name);
@@ -287,9 +347,22 @@ Expected<MaterialPlan> obj_plan(const aiScene& scene, const std::filesystem::pat
         part.name = *name;
         part.has_material = true;
         part.base = known->second.kd.value_or(Colour(1.0));
-        part.texture_name = known->second.map_kd;
-        if (!part.texture_name.empty())
-            textures[*name] = {part.texture_name, known->second.folder / part.texture_name};
+        const LibraryMaterial& material = known->second;
+        if (!material.map_kd.empty()) {
+            // The whole name when such a file exists, else the last word when
+            // that one does, else the whole name, which is then reported missing.
+            part.texture_name = material.map_kd.front();
+            for (const std::string& candidate : material.map_kd) {
+                std::error_code error;
+                const std::filesystem::path path = material.folder / candidate;
+                if (io.contains(path) && std::filesystem::is_regular_file(path, error)) {
+                    part.texture_name = candidate;
+                    break;
+                }
+            }
+            textures[*name] = {part.texture_name, material.folder / part.texture_name,
+                               material.map_kd_line};
+        }
         return parts.of(*name, std::move(part));
     };
     plan.face_parts.resize(scene.mNumMeshes);
@@ -326,9 +399,10 @@ Expected<MaterialPlan> obj_plan(const aiScene& scene, const std::filesystem::pat
     plan.parts = std::move(parts).take();
     for (ModelPart& part : plan.parts) {
         if (part.texture_name.empty()) continue;
-        const auto& [name, path] = textures.at(part.name);
-        Expected<std::shared_ptr<const Texture>> texture = texture_file(path, name, io, host);
-        if (!texture) return texture.error();
+        const TextureFile& named = textures.at(part.name);
+        Expected<std::shared_ptr<const Texture>> texture =
+            texture_file(named.path, named.name, io, host);
+        if (!texture) return Error{texture.error().message + " (map_Kd on " + named.line + ")"};
         part.texture = std::move(*texture);
     }
     return plan;

@@ -247,5 +247,96 @@ TEST_F(ViewerIncludes, AnErrorInATypedIncludeNamesThatFile) {
     EXPECT_NE(listed.find("ball.jts:1:"), std::string::npos) << listed;
 }
 
+// Found in the real window: an object edited in the panels, then an
+// included file changed in another editor. The bar said "main.jts is
+// unchanged on disk", offered no re-apply, and named no file: only the
+// scene file's text was compared. The bar names the included file, and
+// re-applying keeps both the file's change and the edits, those of values
+// in the included file too.
+const std::string kMainAndBall =
+    "render_settings { width: 32; height: 24; }\n"
+    "cameras { perspective_camera { aspect: 1.3333333333333333; } }\n"
+    "scene { sphere { radius: 0.5; } point_light { position: <3, 5, 4>; } "
+    "include \"parts/ball.jts\"; }\n";
+
+Vec3 center_of(const AppState& state, std::size_t i) {
+    return shape_as<Sphere>(state.doc.scene.primitives.at(i).shape).center;
+}
+double radius_of(const AppState& state, std::size_t i) {
+    return shape_as<Sphere>(state.doc.scene.primitives.at(i).shape).radius;
+}
+
+TEST_F(ViewerIncludes, AnIncludedFileChangedUnderUnsavedEditsIsNamedAndReapplied) {
+    save_as_editor(ball, "sphere { center: <0, 0, -5>; radius: 1; }\n");
+    save_as_editor(main, kMainAndBall);
+    open_scene(state, main);
+    ASSERT_TRUE(state.doc.loaded) << format_diagnostics(state.doc);
+    model.frame(state);
+    edit_scene(state, [](Scene& s) {
+        shape_as<Sphere>(s.primitives[0].shape).radius = 0.75;            // in main.jts
+        shape_as<Sphere>(s.primitives[1].shape).center = Vec3(1, 0, -5);  // in ball.jts
+    });
+    save_as_editor(ball, "sphere { center: <0, 0, -5>; radius: 2; }\n");
+    model.frame(state);
+    ASSERT_TRUE(model.run_until_loaded(state));
+    ASSERT_TRUE(state.files.pending_reload) << state.message;
+    EXPECT_EQ(state.files.changed_on_disk, "parts/ball.jts");
+    EXPECT_EQ(state.message,
+              "parts/ball.jts changed on disk while you have unsaved edits: choose in the bar "
+              "above the image");
+    EXPECT_TRUE(state.files.reapply_problem.empty()) << state.files.reapply_problem;
+
+    resolve_reload(state, ReloadChoice::reapply_edits);
+    EXPECT_EQ(radius_of(state, 0), 0.75) << "my edit in main.jts";
+    EXPECT_EQ(center_of(state, 1), Vec3(1, 0, -5)) << "my edit in ball.jts";
+    EXPECT_EQ(radius_of(state, 1), 2.0) << "the file's change";
+    const auto saved = save_scene_in_place(state.doc);
+    ASSERT_TRUE(saved) << saved.error().message;
+    EXPECT_EQ(read_file(ball), "sphere { center: <1, 0, -5>; radius: 2; }\n");
+}
+
+// Found in the real window: an object moved (the text itself edited), then
+// an included file changed in another editor, which the viewer read again
+// with the edits kept. Undo then brought the included file's old objects
+// back, as edits, and Save wrote them over the file's new text. The history
+// starts again from the files as they are on disk.
+TEST_F(ViewerIncludes, UndoAfterAnIncludedFileChangedNeverBringsItsOldTextBack) {
+    save_as_editor(ball, "sphere { center: <0, 0, -5>; radius: 1; }\n");
+    save_as_editor(main, kMainAndBall);
+    open_scene(state, main);
+    ASSERT_TRUE(state.doc.loaded) << format_diagnostics(state.doc);
+    model.frame(state);
+    edit_scene(state, [](Scene& s) { shape_as<Sphere>(s.primitives[0].shape).radius = 0.75; });
+    ASSERT_TRUE(add_light(state));  // edits the text itself
+    ASSERT_NE(state.doc.text, state.doc.disk_text);
+    save_as_editor(ball, "sphere { center: <0, 0, -5>; radius: 2; }\n");
+    const auto until = std::chrono::steady_clock::now() + kTimeout;
+    while (radius_of(state, 1) != 2.0 && std::chrono::steady_clock::now() < until) {
+        model.frame(state);
+        std::this_thread::sleep_for(std::chrono::milliseconds(5));
+    }
+    ASSERT_EQ(radius_of(state, 1), 2.0) << "read again: " << state.message;
+    EXPECT_EQ(radius_of(state, 0), 0.75) << "with the edits";
+    EXPECT_EQ(state.doc.scene.lights.size(), 2u);
+    EXPECT_NE(state.message.find("parts/ball.jts changed on disk"), std::string::npos)
+        << state.message;
+
+    undo(state);
+    EXPECT_EQ(radius_of(state, 1), 2.0) << "the file's new text stays";
+    EXPECT_EQ(radius_of(state, 0), 0.5) << "back to the files on disk";
+    EXPECT_EQ(state.doc.scene.lights.size(), 1u);
+    EXPECT_FALSE(has_unsaved_edits(state.doc));
+    undo(state);
+    EXPECT_EQ(state.message, "Nothing to undo");
+    EXPECT_EQ(radius_of(state, 1), 2.0);
+    redo(state);
+    EXPECT_EQ(radius_of(state, 0), 0.75) << "redo gives the edits back";
+    EXPECT_EQ(radius_of(state, 1), 2.0);
+    const auto saved = save_scene_in_place(state.doc);
+    ASSERT_TRUE(saved) << saved.error().message;
+    EXPECT_EQ(read_file(ball), "sphere { center: <0, 0, -5>; radius: 2; }\n")
+        << "never the old text";
+}
+
 }  // namespace
 }  // namespace jt::view

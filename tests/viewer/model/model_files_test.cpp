@@ -4,6 +4,7 @@
 // reads a file whose stamp did not move, and no unsaved scene edit is lost.
 
 #include "common/files.hpp"
+#include "common/scratch_dir.hpp"
 #include "jtracer/png.hpp"
 #include "model/app_actions.hpp"
 #include "viewer/model/model_loop.hpp"
@@ -11,9 +12,12 @@
 
 #include <gtest/gtest.h>
 
+#include <chrono>
 #include <filesystem>
 #include <fstream>
+#include <functional>
 #include <string>
+#include <thread>
 
 namespace jt::view {
 namespace {
@@ -195,6 +199,65 @@ TEST_F(ViewerModelFiles, AModelChangeKeepsTheUnsavedEdits) {
     EXPECT_NE(state.render.display, before);
     EXPECT_EQ(count_colour(state.render.display, 100, 20, 20),
               count_colour(fresh_render(), 200, 40, 40));
+}
+
+// Found in the real window: a scene whose sky map was not there yet opened
+// with "cannot read 'sky.png'"; the file then made changed nothing until
+// Reload. The scene's files were watched only once it had loaded. So with a
+// scene that loaded and then named a missing sky map in another editor.
+const std::string kSkyScene =
+    R"(render_settings { width: 16; height: 12; background_map: "sky.png"; }
+cameras { perspective_camera { aspect: 1.3333333333333333; } }
+scene { sphere { center: <0, 0, -5>; } }
+)";
+
+bool run_until(ModelLoop& model, AppState& state, const std::function<bool()>& done) {
+    const auto until = std::chrono::steady_clock::now() + std::chrono::seconds(20);
+    while (!done()) {
+        if (std::chrono::steady_clock::now() > until) return false;
+        model.frame(state);
+        std::this_thread::sleep_for(std::chrono::milliseconds(2));
+    }
+    return true;
+}
+
+TEST(ViewerSkyMapFile, AMissingSkyMapAppearingLoadsTheScene) {
+    ScratchDir dir{"sky_appears"};
+    ModelLoop model;
+    AppState state{test_config()};
+    write_file(dir.path() / "scene.jts", kSkyScene);
+    open_scene(state, dir.path() / "scene.jts");
+    ASSERT_FALSE(state.doc.loaded);
+    const std::string shown = format_diagnostics(state.doc);
+    EXPECT_NE(shown.find("sky.png': No such file"), std::string::npos) << shown;
+    model.frame(state);
+    ASSERT_TRUE(write_png(dir.path() / "sky.png", flat_image(30, 90, 220)));
+    EXPECT_TRUE(run_until(model, state, [&] { return state.doc.loaded; }))
+        << "the file appearing loads the scene: " << state.message;
+    ASSERT_TRUE(model.run_until_complete(state));
+    EXPECT_GT(count_colour(state.render.display, 30, 90, 220), 0) << "the sky is shown";
+}
+
+TEST(ViewerSkyMapFile, ASkyMapNamedBeforeItExistsIsReadWhenItAppears) {
+    ScratchDir dir{"sky_named"};
+    ModelLoop model;
+    AppState state{test_config()};
+    ASSERT_TRUE(write_png(dir.path() / "sky.png", flat_image(30, 90, 220)));
+    write_file(dir.path() / "scene.jts", kSkyScene);
+    open_scene(state, dir.path() / "scene.jts");
+    ASSERT_TRUE(state.doc.loaded) << format_diagnostics(state.doc);
+    ASSERT_TRUE(model.run_until_complete(state));
+    std::string named = kSkyScene;
+    named.replace(named.find("sky.png"), 7, "new.png");
+    save_as_editor(dir.path() / "scene.jts", named);
+    ASSERT_TRUE(run_until(model, state, [&] { return state.doc.load_failed; })) << state.message;
+    model.frame(state);  // the file is missing a frame or more, as the user makes it
+    ASSERT_TRUE(write_png(dir.path() / "new.png", flat_image(200, 40, 40)));
+    EXPECT_TRUE(run_until(model, state, [&] { return !state.doc.load_failed; }))
+        << "the file appearing reloads: " << state.message;
+    EXPECT_EQ(state.doc.scene.settings.background_map, "new.png");
+    ASSERT_TRUE(model.run_until_complete(state));
+    EXPECT_GT(count_colour(state.render.display, 200, 40, 40), 0) << "the new sky is shown";
 }
 
 }  // namespace

@@ -347,5 +347,50 @@ TEST_F(ObjectDragTest, WithNothingSelectedTheDragTakesWhatIsUnderTheCursor) {
     cancel_object_drag(state);
 }
 
+// Found in the real window: an object whose last translate is written as an
+// expression (`translate: <r * 1.5, 0, 0>;`) moved by a drag changed that
+// translate's value, said "Save scene to keep it", and Save then refused:
+// the value is written as an expression. The move is a translate of its own
+// after it, and the expression stays; a light whose position is a name is
+// not moved, and the status line says why.
+TEST_F(ObjectDragTest, AComputedTranslateOrPositionIsNeverChangedByADrag) {
+    std::string named = "define d = 0;\ndefine lp = <3, 5, 4>;\n" + original;
+    const auto replace = [&](const std::string& from, const std::string& to) {
+        const std::size_t at = named.find(from);
+        ASSERT_NE(at, std::string::npos) << from;
+        named.replace(at, from.size(), to);
+    };
+    replace("        radius: 1;\n",
+            "        radius: 1;\n        transform { translate: <d * 2, 0, 0>; }\n");
+    replace("point_light { position: <3, 5, 4>;", "point_light { position: lp;");
+    write_file(path, named);
+    open_scene(state, path);
+    ASSERT_TRUE(state.doc.loaded) << format_diagnostics(state.doc);
+    ASSERT_TRUE(model.run_until_complete(state));
+    frame = shown_frame(state);
+    ASSERT_TRUE(frame);
+
+    select(state.view, {Kind::primitive, 1});
+    drag_to({press.x + 10, press.y});
+    const auto& ops = state.doc.scene.primitives[1].transforms;
+    ASSERT_EQ(ops.size(), 2u) << "a translate of its own: " << state.message;
+    EXPECT_EQ(ops[0].vector, Vec3(0, 0, 0)) << "the expression's value stays";
+    EXPECT_GT(ops[1].vector.x, 0.0);
+    const auto saved = save_scene_in_place(state.doc);
+    ASSERT_TRUE(saved) << saved.error().message;
+    EXPECT_NE(read_file(path).find("translate: <d * 2, 0, 0>;"), std::string::npos)
+        << read_file(path);
+
+    const Vec3 light = state.doc.scene.lights[0].position;
+    const std::optional<ImagePoint> marker = project_to_image(*frame, light);
+    ASSERT_TRUE(marker);
+    select(state.view, {Kind::light, 0});
+    EXPECT_FALSE(start_object_drag(state, *marker, 0.0));
+    EXPECT_EQ(state.message,
+              "Not moved: point_light 1's position is written as lp; edit it in the text "
+              "editor (T)");
+    EXPECT_EQ(state.doc.scene.lights[0].position, light);
+}
+
 }  // namespace
 }  // namespace jt::view

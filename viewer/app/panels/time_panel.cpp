@@ -38,7 +38,8 @@ void time_panel(AppState& state, float right) {
     ImGui::SetNextItemWidth(
         std::clamp(right - ImGui::GetCursorScreenPos().x - label_width, least, most));
     float shown = static_cast<float>(state.doc.options.clock);
-    const bool moved = ImGui::SliderFloat("clock", &shown, 0.0f, 1.0f, "%.3f");
+    // A clock typed is taken when the typing ends: 0.5 does not render at 0 first.
+    const bool moved = slider_float("clock", shown, 0.0f, 1.0f, "%.3f");
     note_item("clock", true);
     tooltip(
         "The value of clock in the scene: moving it renders the scene at that time. The "

@@ -4,6 +4,7 @@
 #include "jtracer/value_text.hpp"
 
 #include <imgui.h>
+#include <imgui_internal.h>
 #include <imgui_stdlib.h>
 
 #include <algorithm>
@@ -57,6 +58,54 @@ void settle_refusal(ImGuiID id, const char* label, bool refused, bool accepted, 
     note_item(r.message.c_str(), false);
 }
 
+// A value typed into a field (Ctrl+click or double-click puts a drag field in
+// ImGui's typing mode) is held here until the typing ends, and only then
+// taken: ImGui hands back the value of every keystroke, and the scene would
+// render at 6 on the way to 60. One field is typed into at a time; the
+// values live here, not on the heap, since fields are drawn every frame.
+struct Typing {
+    ImGuiID field = 0;
+    int frame = -1;  // the last frame the field was typed into
+    double values[3] = {};
+};
+Typing& typing() {
+    static Typing t;
+    return t;
+}
+
+// Before a field's widget: whether the user was typing into it (`field`)
+// last frame. If so, `values` (n of them) become the ones typed so far, so
+// that the widget's text and ImGui's Escape, which restores the text from
+// before the typing, both work from them.
+template <class T>
+bool held_typing(ImGuiID field, T* values, int n) {
+    const Typing& t = typing();
+    const bool held = field != 0 && t.field == field && t.frame == ImGui::GetFrameCount() - 1;
+    if (held)
+        for (int i = 0; i < n; ++i) values[i] = static_cast<T>(t.values[i]);
+    return held;
+}
+
+// After the widget: whether its `values` are to be taken now. While it is
+// in typing mode they are held (false); when that ends (Enter, Tab, a click
+// elsewhere, Escape) the held ones are taken, which Escape has put back to
+// the value from before. A drag is taken as it goes (`changed`). A field
+// that stops being drawn while typed into drops what was typed, as ImGui's
+// own text fields do.
+template <class T>
+bool take_typed(ImGuiID field, bool held, const T* values, int n, bool changed) {
+    Typing& t = typing();
+    const ImGuiID item = ImGui::GetItemID();  // the group's active part, for a vector
+    if (item != 0 && ImGui::TempInputIsActive(item)) {
+        t.field = field;
+        t.frame = ImGui::GetFrameCount();
+        for (int i = 0; i < n; ++i) t.values[i] = static_cast<double>(values[i]);
+        return false;
+    }
+    if (held) t.field = 0;
+    return changed || held;
+}
+
 bool outside(double v, double min, double max) {
     return !std::isfinite(v) || (max > min && !(v >= min && v <= max));
 }
@@ -87,9 +136,12 @@ bool edit_number(const char* label, double& value, float speed, double min, doub
                  const std::function<std::string()>& why) {
     const ImGuiID id = ImGui::GetID(label);  // the id the widget takes
     float f = static_cast<float>(value);
-    const bool changed = ImGui::DragFloat(label, &f, speed, static_cast<float>(min),
+    const bool held = held_typing(id, &f, 1);
+    const bool dragged = ImGui::DragFloat(label, &f, speed, static_cast<float>(min),
                                           static_cast<float>(max), number_format(f, min, max));
     note_item(label, false);
+    // Typing the value it had (or Escape) changes nothing, not even its rounding.
+    const bool changed = take_typed(id, held, &f, 1, dragged) && f != static_cast<float>(value);
     const double next = changed ? from_widget(f) : value;
     const bool refused = changed && outside(next, min, max);
     const bool accepted = changed && !refused && next != value;
@@ -99,17 +151,29 @@ bool edit_number(const char* label, double& value, float speed, double min, doub
     return true;
 }
 
+bool slider_float(const char* label, float& value, float min, float max, const char* format) {
+    const ImGuiID id = ImGui::GetID(label);
+    float f = value;
+    const bool held = held_typing(id, &f, 1);
+    const bool moved = ImGui::SliderFloat(label, &f, min, max, format);
+    if (!take_typed(id, held, &f, 1, moved) || f == value) return false;
+    value = f;
+    return true;
+}
+
 bool edit_vector(const char* label, Vec3& value, float speed, double min, double max,
                  const std::function<std::string()>& why) {
     const ImGuiID id = ImGui::GetID(label);
     float f[3] = {static_cast<float>(value.x), static_cast<float>(value.y),
                   static_cast<float>(value.z)};
+    const bool held = held_typing(id, f, 3);
     const char* format =
         more_digits(number_format(f[0], min, max),
                     more_digits(number_format(f[1], min, max), number_format(f[2], min, max)));
-    const bool changed = ImGui::DragFloat3(label, f, speed, static_cast<float>(min),
+    const bool dragged = ImGui::DragFloat3(label, f, speed, static_cast<float>(min),
                                            static_cast<float>(max), format);
     note_item(label, false);
+    const bool changed = take_typed(id, held, f, 3, dragged);
     Vec3 next = value;
     bool refused = false;
     double typed = 0.0;
@@ -129,11 +193,13 @@ bool edit_vector(const char* label, Vec3& value, float speed, double min, double
 }
 
 bool edit_colour(const char* label, Colour& value) {
+    const ImGuiID id = ImGui::GetID(label);
     float f[3] = {static_cast<float>(value.x), static_cast<float>(value.y),
                   static_cast<float>(value.z)};
-    const bool changed = ImGui::ColorEdit3(label, f, ImGuiColorEditFlags_Float);
+    const bool held = held_typing(id, f, 3);
+    const bool edited = ImGui::ColorEdit3(label, f, ImGuiColorEditFlags_Float);
     note_item(label, false);
-    if (!changed) return false;
+    if (!take_typed(id, held, f, 3, edited)) return false;
     Colour next = value;
     for (int i = 0; i < 3; ++i)
         if (f[i] != static_cast<float>(value[i])) next[i] = std::clamp(from_widget(f[i]), 0.0, 1.0);
@@ -148,8 +214,10 @@ bool edit_int(const char* label, int& value, int min, int max,
               const std::function<std::string()>& why) {
     const ImGuiID id = ImGui::GetID(label);
     int v = value;
-    const bool changed = ImGui::DragInt(label, &v, 1.0f, min, max, "%d");
+    const bool held = held_typing(id, &v, 1);
+    const bool dragged = ImGui::DragInt(label, &v, 1.0f, min, max, "%d");
     note_item(label, false);
+    const bool changed = take_typed(id, held, &v, 1, dragged);
     const bool refused = changed && max > min && (v < min || v > max);
     const bool accepted = changed && !refused && v != value;
     settle_refusal(id, label, refused, accepted, v, why, /*whole=*/true);

@@ -18,7 +18,11 @@ namespace jt::view {
 // A number (or each of a vector's components, or a whole number) held to [min, max] when
 // max > min: dragging stops at the bounds, and a value typed past them is
 // refused, the field keeping its value and saying `why()` ("must be at most
-// 1e+09") under it until it is next changed.
+// 1e+09") under it until it is next changed. A value typed into a field
+// (Ctrl+click or double-click) is taken when the typing ends (Enter, Tab, a
+// click elsewhere; Escape drops it), never keystroke by keystroke: typing 60
+// does not render at 6 first. A drag applies as it goes. The same holds for
+// every widget below.
 bool edit_number(const char* label, double& value, float speed, double min = 0.0, double max = 0.0,
                  const std::function<std::string()>& why = {});
 bool edit_vector(const char* label, Vec3& value, float speed = 0.05f, double min = 0.0,
@@ -30,6 +34,9 @@ bool edit_colour(const char* label, Colour& value);
 // "180"); a value outside [min, max] (a bound moved inside an open one)
 // shows as itself. A literal: nothing is allocated.
 const char* number_format(float value, double min, double max);
+// A slider of a value that is no scene property (the clock): dragged, it
+// changes as it goes; typed (Ctrl+click), when the typing ends, as above.
+bool slider_float(const char* label, float& value, float min, float max, const char* format);
 bool edit_int(const char* label, int& value, int min, int max,
               const std::function<std::string()>& why = {});
 // A colour that may be unset (a material's checker): a checkbox sets it (to

@@ -1,32 +1,19 @@
 #include "render/prepared_scene.hpp"
 
+#include "jtracer/digest.hpp"
 #include "jtracer/file_stamp.hpp"
 #include "jtracer/texture.hpp"
 
-#include <bit>
 #include <type_traits>
 
 namespace jt {
 
 namespace {
 
-// Two independent multiply-xorshift lanes over every number that decides the
-// geometry: 128 bits, so that an accidental match is out of the question.
-struct Digester {
-    std::uint64_t a = 0x9E3779B97F4A7C15ull;
-    std::uint64_t b = 0xC2B2AE3D27D4EB4Full;
-
-    void add(std::uint64_t v) {
-        a = (a ^ v) * 0xFF51AFD7ED558CCDull;
-        a ^= a >> 33;
-        b = (b + v) * 0x94D049BB133111EBull;
-        b ^= b >> 31;
-    }
-    void add(double v) { add(std::bit_cast<std::uint64_t>(v)); }
-    void add(const std::string& s) {
-        add(static_cast<std::uint64_t>(s.size()));
-        for (char c : s) add(static_cast<std::uint64_t>(static_cast<unsigned char>(c)));
-    }
+// The digest with the vectors and strings the geometry is made of.
+struct Digester : Digest128 {
+    using Digest128::add;
+    void add(const std::string& s) { Digest128::add(std::string_view(s)); }
     void add(const Vec3& v) {
         add(v.x);
         add(v.y);

@@ -10,7 +10,8 @@
 namespace jt {
 
 // Pastes the parts into one frame. Refuses, with a message naming the parts
-// at fault, parts of frames of different sizes, a part whose pixels differ in
+// at fault, parts of frames of different sizes or of different renders
+// (their fingerprints differ, or only one of two has one), a part whose pixels differ in
 // size from the region it declares or that reaches out of the frame, two parts
 // that overlap, and parts that leave pixels of the frame uncovered.
 Expected<Image8> merge_regions(const std::vector<RegionPart>& parts);

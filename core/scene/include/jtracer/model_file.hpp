@@ -21,6 +21,7 @@
 #include <filesystem>
 #include <memory>
 #include <string>
+#include <utility>
 #include <vector>
 
 namespace jt {
@@ -33,6 +34,9 @@ struct ModelLeftOut {
     std::size_t out_of_range = 0;       // triangles naming a corner the file does not have
     std::size_t not_finite = 0;         // triangles with a corner at infinity or NaN
     std::string refused_file;           // why a file it refers to was not opened, or ""
+    // What the model reader printed while it read the file (Assimp's OpenGEX
+    // reader writes to stderr), each line once with how often it came.
+    std::vector<std::pair<std::string, std::size_t>> reader_said;
 };
 
 // One part of a model read with its materials (docs/language.md §14.5): the

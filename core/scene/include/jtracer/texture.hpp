@@ -42,14 +42,25 @@ inline Colour texel(const Texture& t, int i, int j) {
 // Pictures larger than this many texels are refused rather than decoded.
 inline constexpr std::int64_t kMaxTextureTexels = std::int64_t{1} << 28;
 
+// Whether a JPEG's EXIF orientation (tag 274) turns its texels. A scene's
+// image_map and background_map are a user's pictures, read as viewers show
+// them (as_shown). A model's textures are read as stored: its UVs were made
+// in a 3D tool against the stored texels, and such tools (Blender, Assimp,
+// glTF viewers) ignore the tag (docs/language.md §13.4, §14.5).
+enum class TextureLayout { as_shown, as_stored };
+
 // A PNG, JPEG or BMP; grey, palette and alpha images become RGB.
-Expected<Texture> decode_texture(std::span<const std::uint8_t> bytes);
+Expected<Texture> decode_texture(std::span<const std::uint8_t> bytes,
+                                 TextureLayout layout = TextureLayout::as_shown);
 
 // The file decoded, from memory when an unchanged copy is held: the validator
 // decodes every image map, so that --check refuses what the render would
 // (a JPEG whose data ends early), and the render that follows decodes it no
-// more (io/stamped_cache.hpp). Errors name the file.
-Expected<std::shared_ptr<const Texture>> load_texture(const std::filesystem::path& path);
+// more (io/stamped_cache.hpp). A picture the layout leaves as it is (any but
+// a JPEG turned by its EXIF orientation) is held once for both layouts.
+// Errors name the file.
+Expected<std::shared_ptr<const Texture>> load_texture(
+    const std::filesystem::path& path, TextureLayout layout = TextureLayout::as_shown);
 
 // Where a file name of the scene is found: relative names from its asset_folder.
 std::filesystem::path asset_path(const Scene& scene, const std::string& name);

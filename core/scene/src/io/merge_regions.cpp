@@ -1,5 +1,6 @@
 #include "jtracer/merge_regions.hpp"
 
+#include <charconv>
 #include <cstdint>
 #include <optional>
 #include <utility>
@@ -12,6 +13,62 @@ std::string size_text(int w, int h) {
     return std::to_string(w) + "x" + std::to_string(h);
 }
 
+std::string number_text(double value) {
+    char text[32];
+    const auto [end, ec] = std::to_chars(text, text + sizeof text, value);
+    return ec == std::errc() ? std::string(text, end) : std::string("?");
+}
+
+std::string camera_text(const RenderFingerprint& f) {
+    return f.camera_name.empty() ? "camera " + std::to_string(f.camera) + " (no name)"
+                                 : "camera '" + f.camera_name + "'";
+}
+
+std::string digest_text(const std::array<std::uint8_t, 16>& digest) {
+    static constexpr char hex[] = "0123456789abcdef";
+    std::string text;
+    for (std::size_t i = 0; i < 6; ++i) {
+        text += hex[digest[i] >> 4];
+        text += hex[digest[i] & 15];
+    }
+    return text;
+}
+
+// Whether `part` was rendered as `first` was (region_file.hpp's fingerprint);
+// the error names both files and every difference.
+Expected<void> check_fingerprint(const RegionPart& part, const RegionPart& first) {
+    const std::optional<RenderFingerprint>& p = part.placement.fingerprint;
+    const std::optional<RenderFingerprint>& f = first.placement.fingerprint;
+    if (!p && !f) return {};
+    if (!p || !f) {
+        const RegionPart& old = p ? first : part;
+        const RegionPart& other = p ? part : first;
+        return Error{
+            old.name + " carries no render fingerprint (written by an older jtracer-cli), " +
+            other.name + " does: whether they are parts of one render cannot be told; render " +
+            old.name + " again"};
+    }
+    if (*p == *f) return {};
+    std::string differences;
+    auto add = [&](const std::string& what) {
+        differences += differences.empty() ? "" : "; ";
+        differences += what;
+    };
+    if (p->scene != f->scene)
+        add("the scene's content differs (digest " + digest_text(p->scene) + "... and " +
+            digest_text(f->scene) +
+            "...: another scene, another version of it, other defines "
+            "or a file it names changed)");
+    if (p->clock != f->clock)
+        add("clock " + number_text(p->clock) + " and " + number_text(f->clock));
+    if (p->samples != f->samples)
+        add("samples " + std::to_string(p->samples) + " and " + std::to_string(f->samples));
+    if (p->camera != f->camera || p->camera_name != f->camera_name)
+        add(camera_text(*p) + " and " + camera_text(*f));
+    return Error{part.name + " and " + first.name +
+                 " are parts of different renders: " + differences};
+}
+
 // Whether `part` is whole and fits the first part's frame.
 Expected<void> check_part(const RegionPart& part, const RegionPart& first) {
     const RegionPlacement& p = part.placement;
@@ -20,6 +77,7 @@ Expected<void> check_part(const RegionPart& part, const RegionPart& first) {
         return Error{part.name + " is a part of a " + size_text(p.frame_width, p.frame_height) +
                      " frame, but " + first.name + " of a " +
                      size_text(f.frame_width, f.frame_height) + " one"};
+    if (Expected<void> same = check_fingerprint(part, first); !same) return same.error();
     if (Expected<void> inside = check_region_in_frame(p.region, p.frame_width, p.frame_height);
         !inside)
         return Error{part.name + ": " + inside.error().message};

@@ -6,15 +6,30 @@
 
 #include <limits>
 #include <string>
+#include <utility>
 #include <vector>
 
 namespace jt {
+
+namespace {
+
+// A model's textures as stored, whatever a JPEG's EXIF orientation says
+// (TextureLayout): the module never chooses.
+Expected<std::shared_ptr<const Texture>> model_texture_file(const std::filesystem::path& path) {
+    return load_texture(path, TextureLayout::as_stored);
+}
+
+Expected<Texture> model_texture_bytes(std::span<const std::uint8_t> bytes) {
+    return decode_texture(bytes, TextureLayout::as_stored);
+}
+
+}  // namespace
 
 Expected<Model> read_model(const std::filesystem::path& file, const std::filesystem::path& folder,
                            bool file_materials) {
     const Expected<const ModelReader*> reader = model_reader();
     if (!reader) return reader.error();
-    static constexpr ModelReaderHost host{load_texture, decode_texture};
+    static constexpr ModelReaderHost host{model_texture_file, model_texture_bytes};
     return (*reader)->read(file, folder, file_materials, host);
 }
 
@@ -31,6 +46,13 @@ std::vector<std::string> model_warnings(const Model& model) {
     std::vector<std::string> warnings;
     const ModelLeftOut& out = model.left_out;
     if (!out.refused_file.empty()) warnings.push_back(out.refused_file + ": that file is left out");
+    for (const auto& [line, times] : out.reader_said) {
+        // Appended, not chained from a literal: GCC 12 warns falsely (-Wrestrict).
+        std::string said("made the model reader (Assimp) print '");
+        said.append(line).append("'");
+        if (times > 1) said.append(" ").append(std::to_string(times)).append(" times");
+        warnings.push_back(std::move(said));
+    }
     // Why triangles were dropped: "2 name a corner ..., 1 has a corner ...".
     std::string why;
     if (out.out_of_range > 0)

@@ -28,6 +28,8 @@ namespace jt {
 // What the module uses of the program that opens it: its texture loader, so
 // that a picture that is both an image map and a model's texture is decoded
 // and held once (load_texture's cache), and no image codec is in the module.
+// Both read a model's texture as stored (TextureLayout::as_stored): a JPEG's
+// EXIF orientation, which turns an image map, does not turn it.
 struct ModelReaderHost {
     Expected<std::shared_ptr<const Texture>> (*load_texture)(const std::filesystem::path& path);
     Expected<Texture> (*decode_texture)(std::span<const std::uint8_t> bytes);

@@ -1,10 +1,9 @@
 #include "jtracer/png.hpp"
 
 #include "io/file_bytes.hpp"
-#include "io/stb_failure.hpp"
+#include "io/png_reader.hpp"
 #include "jtracer/atomic_file.hpp"
 
-#include <stb_image.h>
 #include <stb_image_write.h>
 
 #include <algorithm>
@@ -43,20 +42,14 @@ std::vector<std::uint8_t> encode_png(const Image8& image) {
 Expected<Image8> decode_png(std::span<const std::uint8_t> bytes) {
     if (bytes.size() > static_cast<std::size_t>(std::numeric_limits<int>::max()))
         return Error{"PNG file too large"};
-    // stb_image reads any format it was built with: only a PNG may go on.
     if (!has_png_signature(bytes))
         return Error{"not a readable PNG: it does not start with the PNG signature"};
-    int width = 0, height = 0, channels = 0;
-    forget_stb_failure();
-    stbi_uc* pixels = stbi_load_from_memory(bytes.data(), static_cast<int>(bytes.size()), &width,
-                                            &height, &channels, 3);
-    if (!pixels) return Error{std::string("not a readable PNG: ") + stb_failure_reason()};
-    Image8 image(width, height);
-    const std::size_t stride = static_cast<std::size_t>(width) * 3;
-    for (int y = 0; y < height; ++y)
-        std::memcpy(image.pixel(0, y),
-                    pixels + stride * static_cast<std::size_t>(flipped_row(y, height)), stride);
-    stbi_image_free(pixels);
+    Expected<PngPixels> pixels = read_png_pixels(bytes, false);
+    if (!pixels) return Error{"not a readable PNG: " + pixels.error().message};
+    Image8 image;
+    image.width = pixels->width;
+    image.height = pixels->height;
+    image.rgb = std::move(pixels->rgb8);
     return image;
 }
 

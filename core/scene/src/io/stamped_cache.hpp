@@ -45,6 +45,16 @@ class StampedCache {
         return value;
     }
 
+    // The value held for `key` when it was read from a file stamped `stamp`,
+    // else null: a look that reads nothing.
+    std::shared_ptr<const T> find(const Key& key, const FileStamp& stamp) {
+        std::lock_guard lock(mutex_);
+        auto found = entries_.find(key);
+        if (found != entries_.end() && found->second.stamp == stamp)
+            return found->second.value.lock();
+        return nullptr;
+    }
+
     // Drops every entry whose key `matches`: the next get reads its file again.
     // Values already shared stay as they are.
     template <class Matches>

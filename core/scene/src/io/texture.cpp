@@ -1,20 +1,25 @@
 #include "jtracer/texture.hpp"
 
 #include "io/bmp_header.hpp"
+#include "io/exif_orientation.hpp"
 #include "io/file_bytes.hpp"
 #include "io/image_claims.hpp"
 #include "io/jpeg.hpp"
 #include "io/png_chunks.hpp"
+#include "io/png_reader.hpp"
 #include "io/stamped_cache.hpp"
 #include "io/stb_failure.hpp"
+#include "jtracer/bmp.hpp"
 #include "jtracer/file_stamp.hpp"
 #include "jtracer/image.hpp"
+#include "jtracer/png.hpp"
 
 #include <stb_image.h>
 
 #include <algorithm>
 #include <cctype>
 #include <limits>
+#include <optional>
 #include <string_view>
 #include <utility>
 #include <variant>
@@ -43,8 +48,9 @@ bool exceeds_cap(std::pair<std::int64_t, std::int64_t> size) {
 }
 
 // The header's verdict: "" or why the picture cannot be decoded. JPEGs go to
-// libjpeg-turbo (io/jpeg.hpp), PNGs and BMPs to stb_image, a BMP after its
-// header is read here (io/bmp_header.hpp).
+// libjpeg-turbo (io/jpeg.hpp), BMPs to stb_image once their header is read
+// here (io/bmp_header.hpp), PNGs to libpng (io/png_reader.hpp) once stb_image
+// has read their header.
 std::string header_problem(std::span<const std::uint8_t> bytes, int& width, int& height) {
     if (bytes.size() > static_cast<std::size_t>(std::numeric_limits<int>::max()))
         return "the file is too large";
@@ -97,7 +103,7 @@ std::string header_problem(std::span<const std::uint8_t> bytes, int& width, int&
     return "";
 }
 
-// stb_image's top-down rows, bottom-up.
+// stb_image's top-down rows (a BMP's), bottom-up.
 template <class Sample>
 std::vector<Sample> bottom_up(const Sample* samples, int width, int height) {
     std::vector<Sample> out(static_cast<std::size_t>(width) * height * 3);
@@ -122,7 +128,7 @@ std::string named_by_extension(const std::filesystem::path& path, const Error& e
 
 }  // namespace
 
-Expected<Texture> decode_texture(std::span<const std::uint8_t> bytes) {
+Expected<Texture> decode_texture(std::span<const std::uint8_t> bytes, TextureLayout layout) {
     int header_width = 0, header_height = 0;
     if (std::string problem = header_problem(bytes, header_width, header_height); !problem.empty())
         return Error{problem};
@@ -132,43 +138,84 @@ Expected<Texture> decode_texture(std::span<const std::uint8_t> bytes) {
     if (has_jpeg_signature(bytes)) {
         Expected<std::vector<std::uint8_t>> rgb = decode_jpeg(bytes, {header_width, header_height});
         if (!rgb) return rgb.error();
-        return Texture{header_width, header_height, std::move(*rgb), {}};
+        const int orientation = layout == TextureLayout::as_shown ? exif_orientation(bytes) : 1;
+        if (orientation == 1) return Texture{header_width, header_height, std::move(*rgb), {}};
+        std::vector<std::uint8_t> upright =
+            turn_upright(*rgb, header_width, header_height, orientation);
+        if (swaps_sides(orientation)) std::swap(header_width, header_height);
+        return Texture{header_width, header_height, std::move(upright), {}};
     }
-    bool decoded = false;
-    const int size = static_cast<int>(bytes.size());
+    if (has_png_signature(bytes)) {
+        Expected<PngPixels> png = read_png_pixels(bytes, true);
+        if (!png) return Error{"cannot decode the image: " + png.error().message};
+        width = png->width;
+        height = png->height;
+        if (!as_checked())
+            return Error{"cannot decode the image: its pixels are not the size its header gives"};
+        return Texture{width, height, std::move(png->rgb8), std::move(png->rgb16)};
+    }
+    // A BMP of 24 bits a pixel uncompressed, the kind JTracer and most
+    // programs write, is read by decode_bmp straight into the rows kept:
+    // stb_image's texels, then turned round, held the picture twice. Any
+    // other kind (and one decode_bmp refuses) goes to stb_image.
+    // Its pixels must start where stb_image would take them, past the headers
+    // and at most 1024 bytes after them; stb_image refuses the rest.
+    auto pixels_where_stb_reads = [&](const BmpHeader& header) {
+        const std::uint64_t offset = std::uint64_t{bytes[10]} | std::uint64_t{bytes[11]} << 8 |
+                                     std::uint64_t{bytes[12]} << 16 |
+                                     std::uint64_t{bytes[13]} << 24;
+        const std::uint64_t headers = 14 + std::uint64_t{header.info_size};
+        return offset >= headers && offset - headers <= 1024;
+    };
+    if (const std::optional<BmpHeader> header = read_bmp_header(bytes);
+        header && header->bits_per_pixel == 24 && header->compression == 0 &&
+        header->info_size >= 40 && pixels_where_stb_reads(*header)) {
+        if (Expected<Image8> image = decode_bmp(bytes);
+            image && image->width == header_width && image->height == header_height)
+            return Texture{image->width, image->height, std::move(image->rgb), {}};
+    }
+    // Any other BMP: 8-bit samples.
     forget_stb_failure();
-    if (stbi_is_16_bit_from_memory(bytes.data(), size)) {
-        std::unique_ptr<stbi_us, StbFree> samples(
-            stbi_load_16_from_memory(bytes.data(), size, &width, &height, &channels, 3));
-        if (samples && as_checked())
-            return Texture{width, height, {}, bottom_up(samples.get(), width, height)};
-        decoded = samples != nullptr;
-    } else {
-        std::unique_ptr<stbi_uc, StbFree> samples(
-            stbi_load_from_memory(bytes.data(), size, &width, &height, &channels, 3));
-        if (samples && as_checked())
-            return Texture{width, height, bottom_up(samples.get(), width, height), {}};
-        decoded = samples != nullptr;
-    }
+    std::unique_ptr<stbi_uc, StbFree> samples(stbi_load_from_memory(
+        bytes.data(), static_cast<int>(bytes.size()), &width, &height, &channels, 3));
+    if (samples && as_checked())
+        return Texture{width, height, bottom_up(samples.get(), width, height), {}};
+    const bool decoded = samples != nullptr;
     if (decoded)
         return Error{"cannot decode the image: its pixels are not the size its header gives"};
     return Error{std::string("cannot decode the image: ") + stb_failure_reason()};
 }
 
-Expected<std::shared_ptr<const Texture>> load_texture(const std::filesystem::path& path) {
-    static StampedCache<std::string, Texture> cache(kept_textures);
+Expected<std::shared_ptr<const Texture>> load_texture(const std::filesystem::path& path,
+                                                      TextureLayout layout) {
+    // A picture the same in both layouts is held under its path and nullopt;
+    // a JPEG its EXIF orientation turns, once for each layout.
+    using Key = std::pair<std::string, std::optional<TextureLayout>>;
+    static StampedCache<Key, Texture> cache(kept_textures);
     std::error_code error;
     const std::filesystem::path absolute = std::filesystem::absolute(path, error);
     const FileStamp stamp = file_stamp(absolute);
-    auto decode = [&]() -> Expected<Texture> {
-        Expected<std::vector<std::uint8_t>> bytes = read_file_bytes(path);
-        if (!bytes) return bytes.error();
-        Expected<Texture> texture = decode_texture(*bytes);
+    auto decode = [&](std::span<const std::uint8_t> bytes) -> Expected<Texture> {
+        Expected<Texture> texture = decode_texture(bytes, layout);
         if (!texture) return Error{file_message(path, named_by_extension(path, texture.error()))};
         return texture;
     };
-    if (error || !stamp.exists) return decode().error();  // read_file_bytes's own words
-    return cache.get(absolute.lexically_normal().string(), stamp, decode);
+    const std::string name = absolute.lexically_normal().string();
+    if (!error && stamp.exists) {
+        if (std::shared_ptr<const Texture> held = cache.find({name, std::nullopt}, stamp))
+            return held;
+        if (std::shared_ptr<const Texture> held = cache.find({name, layout}, stamp)) return held;
+    }
+    Expected<std::vector<std::uint8_t>> bytes = read_file_bytes(path);
+    if (!bytes) return bytes.error();
+    if (error || !stamp.exists) {
+        Expected<Texture> texture = decode(*bytes);
+        if (!texture) return texture.error();
+        return std::make_shared<const Texture>(std::move(*texture));
+    }
+    const bool turned = has_jpeg_signature(*bytes) && exif_orientation(*bytes) != 1;
+    const Key key{name, turned ? std::optional(layout) : std::nullopt};
+    return cache.get(key, stamp, [&] { return decode(*bytes); });
 }
 
 std::filesystem::path asset_path(const Scene& scene, const std::string& name) {

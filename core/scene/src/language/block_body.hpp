@@ -75,7 +75,11 @@ inline void SceneParser::parse_body(BlockSource& block,
                     break;
                 }
                 if (top_level_only()) break;
-                if (next_->kind == TokenKind::lbrace || contains(child_names, cur_->text)) {
+                // In cameras or scene, a word before a string is no property:
+                // most likely a misspelt include, which the list suggests.
+                if (next_->kind == TokenKind::lbrace || contains(child_names, cur_->text) ||
+                    (next_->kind == TokenKind::string &&
+                     (block.keyword == kCamerasKeyword || block.keyword == kSceneKeyword))) {
                     on_child();
                 } else if (plain_properties_) {
                     if (!read_plain_properties(child_names, on_property) &&

@@ -9,6 +9,7 @@
 #include "language/quote.hpp"
 
 #include <array>
+#include <optional>
 
 namespace jt {
 namespace lang {
@@ -38,16 +39,22 @@ class LexerCursor final : public TokenCursor {
 std::string first_error(const std::vector<Diagnostic>& diagnostics) {
     for (const Diagnostic& d : diagnostics) {
         if (d.severity != Severity::error) continue;
-        return d.pos.line > 0 ? "at column " + std::to_string(d.pos.column) + ": " + d.message
-                              : d.message;
+        std::string message = d.message;
+        // The value is all the text there is: its end is no file's.
+        if (const std::size_t end = message.rfind("the end of the file");
+            end != std::string::npos && end + 19 == message.size())
+            message.replace(end, 19, "the end of the value");
+        return d.pos.line > 0 ? "at column " + std::to_string(d.pos.column) + ": " + message
+                              : message;
     }
     return "not a value";
 }
 
-}  // namespace
-
-bool evaluate_define_value(std::string_view text, double clock, ExprValue& value,
-                           std::string& error) {
+// Reads `text` as one whole value; evaluates it at `clock` unless that is
+// nullopt (then only its syntax and names are checked). `names_clock` tells
+// whether an evaluated value named `clock`.
+bool read_define_value(std::string_view text, std::optional<double> clock, ExprValue& value,
+                       std::string& error, bool& names_clock) {
     if (find_invalid_text_byte(text) != std::string_view::npos) {
         error = "the value is not text";
         return false;
@@ -55,12 +62,13 @@ bool evaluate_define_value(std::string_view text, double clock, ExprValue& value
     DiagnosticSink sink;
     LexerCursor tokens(text, sink);
     const NameTable none;
-    ExpressionReader reader(tokens, sink, none, clock);
+    ExpressionReader reader(tokens, sink, none, clock.value_or(0.0));
     if (tokens.cur().kind == TokenKind::end) {
         error = "the value is empty";
         return false;
     }
-    const ParsedValue parsed = reader.read();
+    const ParsedValue parsed = reader.read(clock.has_value());
+    names_clock = reader.read_clock();
     if (parsed.ok && tokens.cur().kind != TokenKind::end) {
         sink.error(tokens.cur().pos, "unexpected " + describe(tokens.cur()) + " after the value");
     }
@@ -71,6 +79,25 @@ bool evaluate_define_value(std::string_view text, double clock, ExprValue& value
     }
     value = parsed.value;
     return true;
+}
+
+}  // namespace
+
+bool evaluate_define_value(std::string_view text, double clock, ExprValue& value,
+                           std::string& error) {
+    bool names_clock = false;
+    return read_define_value(text, clock, value, error, names_clock);
+}
+
+bool check_define_value(std::string_view text, std::string& error) {
+    ExprValue value;
+    bool names_clock = false;
+    if (read_define_value(text, 0.0, value, error, names_clock)) return true;
+    // A value of the clock may fail at clock 0 alone (1 / clock): the clock of
+    // the render is not known here, and the parse at that clock reports it.
+    std::string syntax;
+    bool unused = false;
+    return names_clock && read_define_value(text, std::nullopt, value, syntax, unused);
 }
 
 }  // namespace lang
@@ -103,9 +130,8 @@ Expected<Define> parse_define(std::string_view argument, const ValueNames& names
     if (lang::is_reserved_name(name))
         return Error{"'" + define.name +
                      "' is reserved (a keyword, a function or pi) and cannot be defined"};
-    lang::ExprValue value;
     std::string error;
-    if (!lang::evaluate_define_value(define.value, 0.0, value, error))
+    if (!lang::check_define_value(define.value, error))
         return Error{"the value of " + define.name + ": " + error};
     return define;
 }

@@ -533,8 +533,13 @@ void ExpressionReader::apply(const Op& op, const ExprValue* value) {
                     }
                     case Function::normalize: {
                         const double d = dot3(a.vector, a.vector);
-                        if (d == 0.0)
+                        const Vec3& v = a.vector;
+                        if (v.x == 0.0 && v.y == 0.0 && v.z == 0.0)
                             return fail(op.pos, args() + ": the zero vector has no direction");
+                        if (d == 0.0)
+                            return fail(op.pos, args() +
+                                                    " is not finite: its squared length "
+                                                    "underflows to 0");
                         const double s = 1.0 / std::sqrt(d);
                         if (!std::isfinite(d) || !std::isfinite(s))
                             return fail(op.pos, args() +

@@ -106,13 +106,6 @@ std::optional<IncludeStack::Opened> IncludeStack::open(std::string_view path, So
                            " is already being read, so it would include itself");
         return std::nullopt;
     }
-    if (std::size_t bad = find_invalid_text_byte(read->text); bad != std::string_view::npos) {
-        unreadable = true;
-        sink.error(at, "cannot read " + quote(shown) + ": it is not a text file (it contains " +
-                           (read->text[bad] == '\0' ? "a NUL byte" : "a byte that is not UTF-8") +
-                           ")");
-        return std::nullopt;
-    }
     bytes_left_ -= std::min<std::uintmax_t>(bytes_left_, read->text.size());
     const std::string relative =
         from == 0 ? normal(written) : normal(beside(fs::path(relative_[from - 1]), written));
@@ -120,6 +113,19 @@ std::optional<IncludeStack::Opened> IncludeStack::open(std::string_view path, So
         {shown, read_path.string(), std::move(read->canonical), std::move(read->text), at});
     relative_.push_back(relative);
     const auto file = static_cast<std::uint32_t>(files_.size());
+    // As for the main file: the error is at the first bad byte, in the
+    // included file, so that a large file need not be searched for it. The
+    // file is kept (not read) for the message to quote its line and name
+    // its include chain, and for a viewer to watch it.
+    const std::string_view text = files_.back().text;
+    if (std::size_t bad = find_invalid_text_byte(text); bad != std::string_view::npos) {
+        unreadable = true;
+        SourcePos pos = position_of(text, bad);
+        pos.file = file;
+        sink.error(pos, std::string("the file is not a text file: it contains ") +
+                            (text[bad] == '\0' ? "a NUL byte" : "a byte that is not UTF-8 text"));
+        return std::nullopt;
+    }
     open_.push_back(file);
     return Opened{file, files_.back().text};
 }

@@ -27,8 +27,10 @@ class IncludeStack {
 
     // At an include's string `path`, whose opening quote is at `at` (in the
     // file including): reads the file and makes it the one being read, or
-    // reports why not at `at` and returns nullopt. `unreadable` is set when
-    // the file could not be read (missing, unreadable or not text).
+    // reports why not and returns nullopt: at `at`, or for a file that is
+    // not text at its first bad byte (the file is then kept, not read).
+    // `unreadable` is set when the file could not be read (missing,
+    // unreadable or not text).
     std::optional<Opened> open(std::string_view path, SourcePos at, DiagnosticSink& sink,
                                bool& unreadable);
     // The file opened last is read to its end.

@@ -8,6 +8,7 @@
 #include "language/scene_parser.hpp"
 #include "language/suggest.hpp"
 
+#include <array>
 #include <cstdint>
 #include <span>
 #include <string>
@@ -30,7 +31,25 @@ std::string listed(std::span<const std::string_view> names, std::string_view las
     return out;
 }
 
+constexpr std::array<std::string_view, 1> kIncludeOnly{kIncludeKeyword};
+constexpr auto kTopStatements = schema_detail::joined(
+    schema_detail::kTopBlocks, std::array<std::string_view, 3>{kIncludeKeyword, kDefineKeyword,
+                                                               schema_of<Material>().keyword});
+constexpr auto kCamerasStatements =
+    schema_detail::joined(schema_detail::kCamerasBlocks, kIncludeOnly);
+constexpr auto kSceneStatements = schema_detail::joined(schema_detail::kSceneBlocks, kIncludeOnly);
+
 }  // namespace
+
+std::span<const std::string_view> top_statements() {
+    return kTopStatements;
+}
+std::span<const std::string_view> cameras_statements() {
+    return kCamerasStatements;
+}
+std::span<const std::string_view> scene_statements() {
+    return kSceneStatements;
+}
 
 std::string_view static_keyword(std::string_view word) {
     for (std::string_view k : block_keywords())
@@ -158,8 +177,13 @@ void SceneParser::parse_file() {
         } else if (at(TokenKind::word) && same_name(cur_->text, schema_of<Material>().keyword) &&
                    next_->kind != TokenKind::lbrace) {
             parse_named_material();
+        } else if (at(TokenKind::word) && same_name(cur_->text, schema_of<Material>().keyword)) {
+            sink_.error(cur_->pos,
+                        "a material at the top level needs a name: 'material NAME { ... }', "
+                        "used in a primitive with 'material: NAME;'");
+            skip_block();
         } else if (at(TokenKind::word)) {
-            unknown_block("at the top level", top_blocks());
+            unknown_block("at the top level", top_statements());
         } else if (at(TokenKind::lbrace)) {
             sink_.error(cur_->pos,
                         "expected a block name (" + listed(top_blocks(), "or") + ") before '{'");
@@ -197,7 +221,7 @@ void SceneParser::parse_cameras() {
         [&](const Property& p) { only_blocks(cameras, cameras_blocks(), p); },
         [&] {
             if (cur_->text != schema_of<Camera>().keyword) {
-                unknown_block("in '" + std::string(kCamerasKeyword) + "'", cameras_blocks());
+                unknown_block("in '" + std::string(kCamerasKeyword) + "'", cameras_statements());
                 return;
             }
             BlockSource block;

@@ -96,7 +96,8 @@ void SceneParser::parse_define() {
         skip_statement();
         return;
     }
-    const bool good = value.form != Value::Form::bad && !cut_short(value);
+    const bool glued = value.form != Value::Form::bad && glued_to(value.end);
+    const bool good = value.form != Value::Form::bad && !cut_short(value) && !glued;
     if (claimed && !overridden) {
         Symbol& symbol = names_.add(name.text);
         symbol.defined_at = name.pos;
@@ -122,6 +123,9 @@ void SceneParser::parse_define() {
         result_.source.definitions.push_back(
             {std::string(name.text), span_of(name), value.span, value.origin, std::nullopt});
     }
+    if (glued)
+        sink_.error(value.end, "expected ';' after the value of 'define " + std::string(name.text) +
+                                   "'" + std::string(glued_hint));
     if (!good) {
         skip_statement();
         return;

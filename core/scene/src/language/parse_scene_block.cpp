@@ -123,7 +123,7 @@ void SceneParser::parse_scene_child(SceneChildren& into, PageWarmer& warmer) {
             into.readings.push_back({file, keyword, static_cast<std::uint32_t>(cur_->offset),
                                      cur_->pos, expressions_.clock_reads() > clock_reads});
     } else {
-        unknown_block("in '" + std::string(kSceneKeyword) + "'", scene_blocks());
+        unknown_block("in '" + std::string(kSceneKeyword) + "'", scene_statements());
     }
 }
 

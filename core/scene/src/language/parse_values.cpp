@@ -130,8 +130,14 @@ bool SceneParser::read_property(Property& property, bool try_plain, std::string_
         advance();
         return true;
     }
-    sink_.error(property.value.end,
-                "expected ';' after the value of '" + std::string(property.name) + "'");
+    const bool glued = glued_to(property.value.end);
+    std::string message = "expected ';' after the value of '" + std::string(property.name) + "'";
+    if (glued) message += glued_hint;
+    sink_.error(property.value.end, std::move(message));
+    if (glued) {
+        skip_statement();
+        return false;
+    }
     // A name or '}' next is most likely the next line: carry on from there.
     if (!at(TokenKind::word) && !at(TokenKind::rbrace)) skip_statement();
     return true;

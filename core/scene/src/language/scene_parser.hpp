@@ -68,9 +68,20 @@ inline TextSpan span_of(const Token& t) {
 // The blocks a block of properties holds: none.
 inline constexpr std::array<std::string_view, 0> kNoBlocks{};
 
+// Added to "expected ';' after the value" when a name touches the value.
+inline constexpr std::string_view glued_hint =
+    " (a name cannot follow a value directly: '2pi' is written '2 * pi')";
+
 // The schema's own copy of a block keyword, so that records point at the
 // schema's literals rather than at the text.
 std::string_view static_keyword(std::string_view word);
+
+// What may stand at the top level, in `cameras` and in `scene`: their blocks
+// and the statements of language 1.3 (include; at the top level also define
+// and named materials), for the list and the did-you-mean of an unknown word.
+std::span<const std::string_view> top_statements();
+std::span<const std::string_view> cameras_statements();
+std::span<const std::string_view> scene_statements();
 
 class SceneParser final : private TokenCursor {
   public:
@@ -107,6 +118,10 @@ class SceneParser final : private TokenCursor {
         return at(TokenKind::bad_value) ||
                reading_->skipped_between(value.span.offset + value.span.length, cur_->offset);
     }
+    // Whether a name touches the value that ends at `end` ('2pi', '0x10',
+    // '1_000'): no next statement, whose ';' is missing, but a mistake in
+    // this one, which is then skipped whole, its value with it.
+    bool glued_to(SourcePos end) const { return at(TokenKind::word) && cur_->pos == end; }
 
     // --- skipping bad input (parse_blocks.cpp) -------------------------------
 

@@ -44,6 +44,12 @@ std::string_view nearest_name(std::string_view word, std::span<const std::string
     std::string_view best;
     std::size_t best_distance = 0;
     for (std::string_view name : allowed) {
+        // A name this much longer is never suggested (its distance is at
+        // least the difference of lengths, over the limit below), nor kept
+        // out a shorter one that would be: skipping it changes nothing but
+        // the time, which for defined names of a megabyte would outweigh the
+        // parse.
+        if (name.size() > 2 * word.size() + 3) continue;
         std::size_t d = edit_distance(folded, name);
         if (best.empty() || d < best_distance) {
             best = name;

@@ -28,6 +28,19 @@ void handle_stop_signals(void (*handler)(int));
 // (remove_unfinished_file), then ends the process as `signal` would have.
 void end_by_signal(int signal);
 
+// From now on the stop signals (handle_stop_signals) only ask the program to
+// stop, which it polls with stop_signal() at a point where stopping leaves
+// nothing half done (a render cancelled within a tile, a write finished
+// first); a second one ends the process at once through end_by_signal, for
+// an impatient Ctrl-C during a long write.
+void catch_stop_signals();
+
+// The signal that asked to stop (SIGINT, SIGTERM, SIGHUP), 0 while none has.
+int stop_signal();
+
+// "SIGINT", "SIGTERM", "SIGHUP" (another: "signal N").
+std::string signal_name(int signal);
+
 // Adds --version, printing "PROGRAM VERSION (REVISION)".
 void add_version_flag(CLI::App& app, const std::string& program);
 
@@ -49,6 +62,18 @@ bool is_stream(const std::filesystem::path& path);
 // redirection (`> out.bmp`) atomically, as any file. A file called "-" is
 // still ./-. Any other name is returned as it is.
 std::string output_name(std::string name);
+
+// Why an image cannot be written to `output` (as output_name gives it), or
+// nothing: a terminal (-o - with standard output not redirected, or a
+// terminal's device) would show the image's bytes as garbage, perhaps
+// changing the terminal's settings, and the image would be lost; a closed
+// standard output (a job started with >&-) could only fail after the render,
+// naming /dev/stdout, a file the user never named.
+std::optional<std::string> output_refusal(const std::string& output);
+
+// How messages name the output: "standard output" for -o - (/dev/stdout),
+// else the name.
+std::string shown_output(const std::string& output);
 
 // Parses the command line, then runs `checks` (which may throw
 // CLI::ValidationError for rules between options). Returns the exit code when

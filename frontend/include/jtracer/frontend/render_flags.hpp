@@ -23,6 +23,9 @@ namespace jt::frontend {
 struct RenderFlags {
     std::string scene_path;
     std::optional<std::string> output;  // wins over the scene's filename
+    // -o - (standard output, output_name): `output` is /dev/stdout, which the
+    // messages about -o do not name, as the user never wrote it.
+    bool output_is_stdout = false;
     std::optional<std::string> camera;
     std::optional<int> width;
     std::optional<int> height;

@@ -14,7 +14,9 @@
 
 #include "jtracer/frontend/frame_file_name.hpp"
 #include "jtracer/frontend/frame_setup.hpp"
+#include "jtracer/frontend/render_fingerprint.hpp"
 
+#include <functional>
 #include <memory>
 #include <optional>
 #include <set>
@@ -28,14 +30,19 @@ struct SequenceFrame {
     double clock = 0.0;
     int exit_code = exit_ok;  // non-zero: stop with it; `message` says why
     // For stderr: the diagnostics no earlier frame printed (a warning that
-    // every frame gives shows once), and for an error of a scene that reads
-    // `clock` the line "note: at frame F (clock = V)".
+    // every frame gives shows once), and after an error or such warnings of
+    // a scene that reads `clock` the line "note: at frame F (clock = V)".
     std::string message;
     RenderOptions render;
     std::string output;  // this frame's file
     ImageFormat format = ImageFormat::bmp;
     // The render-ready scene; null unless asked for, and on failure.
     std::shared_ptr<const PreparedScene> prepared;
+    // The caller's `skip` said that the frame's file is already there: not
+    // prepared, to render no more.
+    bool skipped = false;
+    // What the frame is rendered from, when fingerprint_frames() asked.
+    std::optional<RenderFingerprint> fingerprint;
 };
 
 class SceneSequence {
@@ -53,10 +60,15 @@ class SceneSequence {
     // over the scene file. Nothing when no frame's file is the scene's.
     std::optional<std::string> output_clash() const;
 
+    // From now on each frame carries its fingerprint (for region files).
+    void fingerprint_frames() { fingerprints_ = true; }
+
     // Sets up frame `index`, and prepares it when `prepare` (a failure to
     // prepare is exit_io_error; a frame whose file is the scene file itself
-    // is exit_usage).
-    SequenceFrame frame(int index, bool prepare = true);
+    // is exit_usage) and `skip`, asked once the frame is set up, does not say
+    // that its file is already there (--skip-existing).
+    SequenceFrame frame(int index, bool prepare = true,
+                        const std::function<bool(const SequenceFrame&)>& skip = {});
 
   private:
     FrameSetup set_up(double clock, bool& reads_clock);
@@ -71,6 +83,8 @@ class SceneSequence {
     // Set once a frame showed that the scene is the same at every clock:
     // every later frame renders this set-up and this prepared scene.
     std::optional<FrameSetup> fixed_;
+    bool fingerprints_ = false;
+    std::optional<RenderFingerprint> fixed_fingerprint_;  // fixed_'s, at any clock
     std::shared_ptr<const PreparedScene> previous_;
     std::set<std::string> printed_;  // formatted diagnostics already shown
     // The frame being set up: its path and texts, to format its diagnostics;
