@@ -3,7 +3,6 @@
 #include "jtracer/bmp.hpp"
 #include "jtracer/png.hpp"
 
-#include <array>
 #include <cstdint>
 #include <filesystem>
 #include <fstream>
@@ -11,24 +10,11 @@
 #include <iterator>
 #include <vector>
 
+#include <zlib.h>
+
 namespace jt::cli {
 
 namespace {
-
-std::uint32_t crc32(const std::uint8_t* data, std::size_t size) {
-    static const std::array<std::uint32_t, 256> table = [] {
-        std::array<std::uint32_t, 256> t{};
-        for (std::uint32_t n = 0; n < 256; ++n) {
-            std::uint32_t c = n;
-            for (int k = 0; k < 8; ++k) c = (c & 1) ? 0xEDB88320u ^ (c >> 1) : c >> 1;
-            t[n] = c;
-        }
-        return t;
-    }();
-    std::uint32_t c = 0xFFFFFFFFu;
-    for (std::size_t i = 0; i < size; ++i) c = table[(c ^ data[i]) & 0xFF] ^ (c >> 8);
-    return c ^ 0xFFFFFFFFu;
-}
 
 std::uint32_t big_endian32(const std::uint8_t* p) {
     return (std::uint32_t{p[0]} << 24) | (std::uint32_t{p[1]} << 16) | (std::uint32_t{p[2]} << 8) |
@@ -52,7 +38,7 @@ std::optional<std::string> png_damage(const std::vector<std::uint8_t>& bytes) {
         const std::uint64_t length = big_endian32(&bytes[at]);
         if (length > bytes.size() - at - 12) return "it is cut short (a chunk runs past its end)";
         const std::uint8_t* type = &bytes[at + 4];
-        if (crc32(type, length + 4) != big_endian32(type + 4 + length))
+        if (crc32_z(0, type, length + 4) != big_endian32(type + 4 + length))
             return "it is damaged (a chunk's checksum does not match)";
         at += 12 + length;
         if (std::equal(type, type + 4, "IEND"))
