@@ -221,6 +221,34 @@ TEST(ModelFile, AHugeConcavePolygonReadsInTime) {
     }
 }
 
+// The warnings of `file` read with materials "file" (or "scene"), joined.
+std::string material_warnings(const fs::path& file, bool file_materials = true) {
+    const Expected<Model> m = read_model(file, file.parent_path(), file_materials);
+    EXPECT_TRUE(m.has_value()) << (m ? "" : m.error().message);
+    std::string joined;
+    if (m)
+        for (const std::string& w : model_warnings(*m)) joined += w + "\n";
+    return joined;
+}
+
+TEST(ModelFile, FileMaterialsOfAFormatWhoseColoursAreNotReadSaySo) {
+    // A Collada duck with its texture, and cubes with vertex colours: asked
+    // for the file's materials, they rendered in the block's pigment silently.
+    EXPECT_NE(material_warnings(kModels / "Collada/duck.dae")
+                  .find("holds textures that materials: \"file\" does not read"),
+              std::string::npos);
+    EXPECT_NE(
+        material_warnings(kModels / "Collada/kwxport_test_vcolors.dae").find("vertex colours"),
+        std::string::npos);
+    EXPECT_NE(material_warnings(kModels / "MD2/faerie.md2").find("textures"), std::string::npos);
+    // Not asked for, not said; formats that are read, or hold nothing to read, say nothing.
+    EXPECT_EQ(material_warnings(kModels / "Collada/duck.dae", false), "");
+    for (const char* file : {"OBJ/spider.obj", "glTF2/BoxTextured-glTF/BoxTextured.gltf",
+                             "PLY/float-color.ply", "STL/Spider_binary.stl", "OFF/Cube.off"})
+        EXPECT_EQ(material_warnings(kModels / file).find("does not read"), std::string::npos)
+            << file;
+}
+
 TEST(ModelFile, ZeroAreaTrianglesAreSkippedAndNoneLeftIsAnEmptyModel) {
     ScratchDir dir;
     write_file(dir.path() / "flat.obj", "v 0 0 0\nv 1 0 0\nv 2 0 0\nv 0 1 0\nf 1 2 3\nf 1 2 4\n");

@@ -500,6 +500,7 @@ Expected<Model> import_model(const std::filesystem::path& file, const std::files
         if (model) {
             model->left_out.refused_file = io->refusal();
             model->left_out.reader_said = std::move(said);
+            if (plan) model->left_out.colours_not_read = plan->unread;
         }
         if (model && model->triangles.empty()) {
             // Text Assimp could not read shows as a model of nothing.
