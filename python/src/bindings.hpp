@@ -48,8 +48,10 @@ inline const frontend::ArgumentNames python_names = {.values = {.defines = "defi
 
 // Arrays, read_image, write_image, diff (images.cpp).
 void bind_images(py::module_& m);
-// An image as a (height, width, 3) uint8 array, top row first.
+// An image as a (height, width, 3) uint8 array, top row first: a copy, or,
+// given the image to keep, its own pixels without one.
 py::array_t<std::uint8_t> to_array(const Image8& image);
+py::array_t<std::uint8_t> to_array(Image8&& image);
 
 // load, parse, check, Scene and its views (scene.cpp).
 void bind_scene(py::module_& m);
