@@ -12,6 +12,7 @@
 #include "work_tiles.hpp"
 #include "worker.hpp"
 
+#include "jtracer/atomic_file.hpp"
 #include "jtracer/frontend/command_line.hpp"
 #include "jtracer/frontend/frame_setup.hpp"
 #include "jtracer/frontend/progress.hpp"
@@ -272,7 +273,17 @@ int run(int argc, char** argv, int rank, int ranks) {
         if (const int signal = jt::frontend::stop_signal(); signal != 0)
             return stop_for_signal(signal, kept(range, index), workers_wait);
         const auto frame_start = Clock::now();
-        const RankFrame frame = set_up_rank(o, frames, index);
+        RankFrame frame = set_up_rank(o, frames, index);
+        // Rank 0 alone writes the image: a folder missing or not writable on
+        // its machine is found before every rank renders a frame for nothing.
+        if (frame.mine.exit_code == exit_ok)
+            if (const jt::Expected<void> writable = jt::check_atomic_write(frame.output);
+                !writable) {
+                frame.mine.exit_code = exit_io_error;
+                frame.mine.message += "jtracer-mpi: " + writable.error().message + "; " +
+                                      (o.frames ? kept(range, index) : "nothing was rendered") +
+                                      "\n";
+            }
         const RankSetUp& mine = frame.mine;
         const double setup_seconds =
             std::chrono::duration<double>(Clock::now() - frame_start).count();

@@ -200,6 +200,25 @@ TEST_F(Mpi, UnwritableOutputIsAnIoError) {
     EXPECT_TRUE(outputs().empty());
 }
 
+// Rank 0 found a folder it cannot write in only once every rank had rendered
+// the frame: a farm's hours lost to a typo in -o.
+TEST_F(Mpi, UnwritableOutputIsFoundBeforeTheRender) {
+    ProgramRun r = run_shell(mpirun(2) + showcase +
+                             "--width 40 --height 30 --progress log -o nowhere/out.bmp");
+    EXPECT_EQ(r.code, 3) << r.err;
+    EXPECT_EQ(count(r.err, "cannot write 'nowhere/out.bmp'"), 1u) << r.err;
+    EXPECT_NE(r.err.find("; nothing was rendered\n"), std::string::npos) << r.err;
+    EXPECT_EQ(r.err.find("rendering:"), std::string::npos) << r.err;
+    // In a sequence, each frame's own folder, before that frame.
+    test::write_file(dir / "seq.jts", growing);
+    std::filesystem::create_directory(dir / "f0");
+    r = run_shell(mpirun(2) + "seq.jts -q --frames 2 -o 'f%d/shot.bmp'");
+    EXPECT_EQ(r.code, 3) << r.err;
+    EXPECT_EQ(count(r.err, "cannot write 'f1/shot.bmp'"), 1u) << r.err;
+    EXPECT_NE(r.err.find("; frames 0..0 were written\n"), std::string::npos) << r.err;
+    EXPECT_TRUE(exists("f0/shot.bmp"));
+}
+
 TEST_F(Mpi, DeadRankFailsTheRunWithoutAPartialFile) {
     const std::string settings = "--width 160 --height 96 ";
     ProgramRun single = run_shell(cli + showcase + settings + "-q -o cli.bmp");
