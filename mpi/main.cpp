@@ -238,7 +238,7 @@ void report_frame(const Options& o, const RankFrame& frame, int index,
     jt::RenderProgress summary;
     summary.rays = result.rays;
     summary.seconds = result.seconds;
-    std::cerr << "wrote " << frame.output;
+    std::cerr << "wrote " << jt::frontend::shown_output(frame.output);
     if (o.frames)
         std::cerr << " (frame " << index << ", clock "
                   << jt::frontend::shortest_decimal(frame.clock) << ")";
@@ -340,7 +340,8 @@ int run(int argc, char** argv, int rank, int ranks) {
         std::vector<RankStats> stats = result.rank_stats;
         stats.front() = result.stats;
         if (!*written) {
-            std::cerr << "jtracer-mpi: " << written->error().message << "\n";
+            std::cerr << "jtracer-mpi: "
+                      << jt::frontend::shown_write_error(written->error().message) << "\n";
             return exit_io_error;
         }
         report_frame(o, frame, index, result, ranks);

@@ -212,6 +212,10 @@ TEST_F(Cli, ADashOutputIsNamedStandardOutput) {
     EXPECT_EQ(r.code, 2) << r.err;
     EXPECT_NE(r.err.find("-o/--output: standard output is closed"), std::string::npos) << r.err;
     EXPECT_EQ(r.err.find("/dev/stdout"), std::string::npos) << r.err;
+    // A write that fails (a full disk behind the redirection) too.
+    r = run("scene.jts -q -o - > /dev/full");
+    EXPECT_EQ(r.code, 3) << r.err;
+    EXPECT_EQ(r.err, "jtracer-cli: cannot write standard output: No space left on device\n");
 }
 
 TEST_F(Cli, ThreadCountGivesByteIdenticalFiles) {
