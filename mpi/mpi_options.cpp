@@ -2,10 +2,26 @@
 
 #include <CLI/CLI.hpp>
 
+#include <unistd.h>
+
+#include <cstdlib>
 #include <iostream>
 #include <sstream>
 
 namespace jt::mpi {
+
+namespace {
+
+// Whether a launcher (mpirun, mpiexec, srun) started this rank, rather than a
+// user running jtracer-mpi alone; each sets its ranks' numbers in the
+// environment.
+bool started_by_launcher() {
+    for (const char* name : {"OMPI_COMM_WORLD_SIZE", "PMIX_RANK", "PMI_RANK"})
+        if (std::getenv(name)) return true;
+    return false;
+}
+
+}  // namespace
 
 ParsedOptions parse_options(int argc, char** argv, bool speaks) {
     ParsedOptions parsed;
@@ -49,6 +65,16 @@ ParsedOptions parse_options(int argc, char** argv, bool speaks) {
             app, argc, argv, "jtracer-mpi",
             [&] {
                 frontend::check_sequence_flags(o);
+                // OpenMPI hands a rank a terminal of its own as standard
+                // output and relays it, whatever the user redirected
+                // mpirun's to: "is a terminal" would send them to redirect
+                // what they already had.
+                if (o.output_is_stdout && started_by_launcher() && ::isatty(STDOUT_FILENO))
+                    throw CLI::ValidationError(
+                        "-o/--output",
+                        "- (standard output) cannot carry the image under mpirun, which passes "
+                        "rank 0's standard output on through a terminal of its own, whatever "
+                        "its own is redirected to: name a file (-o shot.bmp)");
                 if (o.output)
                     if (auto refused = frontend::output_refusal(*o.output))
                         throw CLI::ValidationError("-o/--output", *refused);

@@ -219,6 +219,30 @@ TEST_F(Mpi, UnwritableOutputIsFoundBeforeTheRender) {
     EXPECT_TRUE(exists("f0/shot.bmp"));
 }
 
+// OpenMPI gives a rank a terminal of its own as standard output, whatever
+// mpirun's is redirected to: `-o - > out.bmp` was refused as "standard output
+// is a terminal ... redirect standard output to a file", which it was.
+TEST_F(Mpi, ADashOutputUnderMpirunIsRefusedForWhatItIs) {
+    const std::string settings = "--width 40 --height 30 ";
+    ASSERT_EQ(run_shell(cli + showcase + settings + "-q -o cli.bmp").code, 0);
+    // Run alone, without a launcher, standard output is the user's own; it is
+    // named so, not as /dev/stdout.
+    ProgramRun r = run_shell("env ASAN_OPTIONS=detect_leaks=0 '" JT_MPI "' " + showcase + settings +
+                             "-o - > alone.bmp");
+    EXPECT_EQ(r.code, 0) << r.err;
+    EXPECT_NE(r.err.find("wrote standard output: 40x30"), std::string::npos) << r.err;
+    EXPECT_EQ(test::read_file(dir / "alone.bmp"), test::read_file(dir / "cli.bmp"));
+    r = run_shell(mpirun(2) + showcase + settings + "-q -o - > out.bmp");
+    if (r.code == 0) {
+        // A launcher that hands the ranks a pipe: the image goes through.
+        EXPECT_EQ(test::read_file(dir / "out.bmp"), test::read_file(dir / "cli.bmp"));
+        return;
+    }
+    EXPECT_EQ(r.code, 2) << r.err;
+    EXPECT_EQ(count(r.err, "- (standard output) cannot carry the image under mpirun"), 1u) << r.err;
+    EXPECT_EQ(r.err.find("is a terminal"), std::string::npos) << r.err;
+}
+
 TEST_F(Mpi, DeadRankFailsTheRunWithoutAPartialFile) {
     const std::string settings = "--width 160 --height 96 ";
     ProgramRun single = run_shell(cli + showcase + settings + "-q -o cli.bmp");
