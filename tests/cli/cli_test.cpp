@@ -284,6 +284,22 @@ TEST_F(Cli, AnOutputThatCannotBeWrittenStopsBeforeTheRender) {
     EXPECT_TRUE(fs::exists(dir / "f0" / "shot.bmp"));
 }
 
+// A folder on a read-only file system (a render share mounted ro) was said to
+// need to be writable, sending the user to chmod a folder that is not at
+// fault: the file system is.
+TEST_F(Cli, AReadOnlyFileSystemIsNotBlamedOnTheFolder) {
+    fs::create_directory(dir / "ro");
+    // A mount namespace of its own: the read-only mount ends with the shell.
+    const std::string mount = "unshare -rm sh -c 'mount -t tmpfs -o ro none ro && ";
+    if (run_shell(mount + "true'").code != 0)
+        GTEST_SKIP() << "cannot mount a file system in a namespace of its own here";
+    test::ProgramRun r = run_shell(mount + "\"$0\" scene.jts -o ro/out.bmp' '" JT_CLI "'");
+    EXPECT_EQ(r.code, 3) << r.err;
+    EXPECT_EQ(r.err,
+              "jtracer-cli: cannot write 'ro/out.bmp': Read-only file system; nothing was "
+              "rendered\n");
+}
+
 // A sequence's -o without --frames writes one image under that very name:
 // said, since the field shows a sequence was meant.
 TEST_F(Cli, AFrameNumberFieldWithoutFramesWarns) {
