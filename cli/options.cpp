@@ -1,5 +1,6 @@
 #include "options.hpp"
 
+#include "jtracer/frontend/existing_output.hpp"
 #include "jtracer/frontend/frame_file_name.hpp"
 #include "jtracer/image_file.hpp"
 #include "jtracer/scene_file.hpp"
@@ -199,9 +200,7 @@ ParsedOptions parse_options(int argc, char** argv) {
                 refuse(
                     "with --region, needs --region-output: a whole-frame image does not "
                     "record which region it holds, a region file does");
-            if (o.output_is_stdout) refuse("standard output (-o -) holds no earlier image to keep");
-            if (o.output && frontend::is_stream(*o.output))
-                refuse("'" + *o.output + "' is a device or a pipe, not a file to keep");
+            if (std::optional<std::string> why = frontend::skip_existing_refusal(o)) refuse(*why);
         }
         if (o.expect && o.frames)
             throw CLI::ValidationError("--expect", "compares one image: not with --frames");

@@ -1,5 +1,7 @@
 #include "mpi_options.hpp"
 
+#include "jtracer/frontend/existing_output.hpp"
+
 #include <CLI/CLI.hpp>
 
 #include <unistd.h>
@@ -57,6 +59,11 @@ ParsedOptions parse_options(int argc, char** argv, bool speaks) {
                    "(default 10)")
         ->check(CLI::Range(2.0, 3600.0))
         ->type_name("SECONDS");
+    app.add_flag("--skip-existing", o.skip_existing,
+                 "Keep an image already there (on rank 0's machine) and complete instead of "
+                 "rendering it again (with --frames, frame by frame): for rerunning a job after "
+                 "a failure. Complete: every byte there and the frame's size; anything else is "
+                 "rendered again");
     // Ranks other than 0 keep their (identical) words to themselves.
     std::ostringstream muted;
     std::ostream& out = speaks ? std::cout : muted;
@@ -78,6 +85,9 @@ ParsedOptions parse_options(int argc, char** argv, bool speaks) {
                 if (o.output)
                     if (auto refused = frontend::output_refusal(*o.output))
                         throw CLI::ValidationError("-o/--output", *refused);
+                if (o.skip_existing)
+                    if (std::optional<std::string> why = frontend::skip_existing_refusal(o))
+                        throw CLI::ValidationError("--skip-existing", *why);
             },
             out, err))
         parsed.exit_code = *code;

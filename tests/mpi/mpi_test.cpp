@@ -30,7 +30,7 @@ const std::string mesh = "'" JT_SOURCE_DIR "/scenes/mesh.jts' ";
 std::string mpirun(int ranks, const std::string& env = "") {
     return "env ASAN_OPTIONS=detect_leaks=0 " + env +
            " '" JT_MPIEXEC "' --oversubscribe --allow-run-as-root -np " + std::to_string(ranks) +
-           (env.empty() ? "" : " -x JT_MPI_TEST_ABORT_RANK") + " '" JT_MPI "' ";
+           (env.empty() ? "" : " -x " + env.substr(0, env.find('='))) + " '" JT_MPI "' ";
 }
 
 // The same, with mpirun's own binding options (mpirun() leaves its default).
@@ -138,6 +138,49 @@ TEST_F(Mpi, EveryFrameOfASequenceMatchesTheCli) {
     ASSERT_EQ(run_shell(cli + "-q seq.jts --clock 0.75 -o alone.bmp").code, 0);
     EXPECT_EQ(test::read_file(dir / "seq-0003.bmp"), test::read_file(dir / "alone.bmp"));
     EXPECT_TRUE(std::filesystem::exists(dir / "seq-0004.bmp"));
+}
+
+// jtracer-cli's --skip-existing, for a farm's rerun of an MPI job: rank 0
+// keeps the frames already there and complete on its machine, and the
+// workers do not even prepare them.
+TEST_F(Mpi, SkipExistingRendersOnlyWhatIsMissingOrIncomplete) {
+    test::write_file(dir / "seq.jts", growing);
+    ASSERT_EQ(run_shell(cli + "-q seq.jts --frames 5 -o 'cli-%d.png'").code, 0);
+    ProgramRun r = run_shell(mpirun(2) + "seq.jts -q --frames 5 --tile-size 16 -o 'f%d.png'");
+    ASSERT_EQ(r.code, 0) << r.err;
+    std::filesystem::remove(dir / "f1.png");
+    const std::string whole = test::read_file(dir / "f3.png");
+    test::write_file(dir / "f3.png", whole.substr(0, whole.size() / 2));  // a copy cut short
+    r = run_shell(mpirun(3) + "seq.jts --frames 5 --tile-size 16 -o 'f%d.png' --skip-existing");
+    ASSERT_EQ(r.code, 0) << r.err;
+    for (int f = 0; f < 5; ++f) {
+        const std::string n = std::to_string(f);
+        EXPECT_EQ(test::read_file(dir / ("f" + n + ".png")),
+                  test::read_file(dir / ("cli-" + n + ".png")))
+            << "frame " << f;
+    }
+    EXPECT_EQ(count(r.err, "kept f"), 3u) << r.err;
+    EXPECT_EQ(count(r.err, "kept f2.png (frame 2): already there and complete"), 1u) << r.err;
+    EXPECT_EQ(count(r.err, "wrote f1.png (frame 1"), 1u) << r.err;
+    EXPECT_EQ(count(r.err, "jtracer-mpi: note: f3.png is there, but it is cut short"), 1u) << r.err;
+    EXPECT_EQ(count(r.err, "wrote 2 frames and kept 3 already there in "), 1u) << r.err;
+    // Every frame there: no rank prepares any (rank 1's set-up would take a
+    // minute), and the job ends at once.
+    const auto start = std::chrono::steady_clock::now();
+    r = run_shell("timeout 120 " + mpirun(2, "JT_MPI_TEST_SLOW_SETUP_RANK=1") +
+                  "seq.jts --frames 5 -o 'f%d.png' --skip-existing");
+    const double seconds =
+        std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
+    EXPECT_EQ(r.code, 0) << r.err;
+    EXPECT_LT(seconds, 40.0) << r.err;
+    EXPECT_EQ(count(r.err, "kept all 5 frames, already there"), 1u) << r.err;
+    // One image, kept; where nothing can be kept, refused as by jtracer-cli.
+    r = run_shell(mpirun(2) + "seq.jts -o f0.png --skip-existing");
+    EXPECT_EQ(r.code, 0) << r.err;
+    EXPECT_EQ(r.err, "kept f0.png: already there and complete\n");
+    r = run_shell(mpirun(2) + "seq.jts -o /dev/null --skip-existing");
+    EXPECT_EQ(r.code, 2) << r.err;
+    EXPECT_EQ(count(r.err, "--skip-existing: '/dev/null' is a device or a pipe"), 1u) << r.err;
 }
 
 TEST_F(Mpi, ProgressCoversTheWholeSequence) {
