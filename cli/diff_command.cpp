@@ -246,7 +246,7 @@ int check_expected(const Image8& render, const std::string& render_path,
     ComparisonReport r;
     r.name = expect.scene_path;
     r.expected_path = reference;
-    r.actual_path = render_path;
+    r.actual_path = shown_output(render_path);
     r.threshold = expect.tolerance.threshold;
     r.max_percent = expect.tolerance.max_percent;
     r.actual_size = ImageSize{render.width, render.height};
@@ -289,8 +289,9 @@ int check_expected(const Image8& render, const std::string& render_path,
         const std::string sizes =
             "the render is " + size_text(render) + ", the reference " + size_text(*expected);
         if (expect.update) return update(sizes);
-        std::cerr << "jtracer-cli: the render (" << size_text(render) << ", in " << render_path
-                  << ") is not the size of " << reference << " (" << size_text(*expected) << ")\n";
+        std::cerr << "jtracer-cli: the render (" << size_text(render) << ", in "
+                  << shown_output(render_path) << ") is not the size of " << reference << " ("
+                  << size_text(*expected) << ")\n";
         remove_stale_heat_map();  // none is drawn for images of different sizes
         return finish(exit_outside_tolerance);
     }
@@ -312,8 +313,8 @@ int check_expected(const Image8& render, const std::string& render_path,
         return finish(exit_io_error);
     }
     r.heat_map_path = heat_map_path;
-    std::cerr << "the render is in " << render_path << ", the differences in " << heat_map_path
-              << "\n";
+    std::cerr << "the render is in " << shown_output(render_path) << ", the differences in "
+              << heat_map_path << "\n";
     return finish(exit_outside_tolerance);
 }
 

@@ -383,6 +383,17 @@ TEST_F(Expect, AHeatMapGoesBesideTheFileALinkNames) {
     EXPECT_TRUE(read_image(dir / "renders/out.png").has_value());
     EXPECT_TRUE(read_image(dir / "renders/out.diff.png").has_value()) << r.err;
     EXPECT_FALSE(exists("link.diff.png"));
+    // `-o - > out.png`: the heat map beside out.png, and the render named as
+    // the user named it, in the messages and the JUnit report alike.
+    r = run(cli + " -q scene.jts -o - --expect changed.png --junit report.xml > piped.png");
+    EXPECT_EQ(r.code, 1) << r.err;
+    EXPECT_TRUE(read_image(dir / "piped.diff.png").has_value()) << r.err;
+    EXPECT_NE(r.err.find("the render is in standard output, the differences in "),
+              std::string::npos)
+        << r.err;
+    const std::string report = test::read_file(dir / "report.xml");
+    EXPECT_NE(report.find("actual standard output"), std::string::npos) << report;
+    EXPECT_EQ(report.find("/dev/stdout"), std::string::npos) << report;
 }
 
 // Only a render outside the tolerance has a heat map beside it: one left by
