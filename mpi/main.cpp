@@ -310,6 +310,13 @@ int run(int argc, char** argv, int rank, int ranks) {
     jt::frontend::SceneSequence* frames = sequence ? &*sequence : nullptr;
     const jt::frontend::FrameRange range =
         sequence ? sequence->range() : jt::frontend::FrameRange{};
+    // As jtracer-cli: a frame of the range that would be written over the
+    // scene file stops the job before any frame is, on every rank alike.
+    if (sequence)
+        if (std::optional<std::string> clash = sequence->output_clash()) {
+            if (rank == 0) std::cerr << *clash;
+            return exit_usage;
+        }
     if (rank != 0) return run_worker_frames(o, frames, rank);
 
     // One display for the whole sequence, as jtracer-cli's: the bar or log goes

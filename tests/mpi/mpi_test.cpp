@@ -107,6 +107,21 @@ TEST_F(Mpi, AnOutputThatIsTheSceneFileIsRefusedOnce) {
     EXPECT_EQ(test::read_file(dir / "self.jts"), text);
 }
 
+// A frame of the range whose file is the scene file: refused before any frame
+// is written, as by jtracer-cli, not once the frames before it were.
+TEST_F(Mpi, AFrameThatIsTheSceneFileIsRefusedBeforeAnyFrame) {
+    const std::string text =
+        "render_settings { width: 8; height: 8; }\n"
+        "cameras { perspective_camera { position: <0, 0, 5>; } }\n";
+    test::write_file(dir / "s-3.jts", text);
+    ProgramRun r = run_shell(mpirun(2) + "s-3.jts -q --frames 5 -o 's-%d.jts'");
+    EXPECT_EQ(r.code, 2) << r.err;
+    EXPECT_EQ(count(r.err, "frame 3's file 's-3.jts' is the scene file itself"), 1u) << r.err;
+    EXPECT_NE(r.err.find("; no frame was written"), std::string::npos) << r.err;
+    EXPECT_EQ(files(), std::vector<std::string>{"s-3.jts"});
+    EXPECT_EQ(test::read_file(dir / "s-3.jts"), text);
+}
+
 // A sphere that grows with clock, over many small tiles, so that tiles handed
 // out twice at the end of one frame are still on their way when it stops.
 const std::string growing = R"(
