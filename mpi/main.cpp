@@ -364,9 +364,12 @@ int run(int argc, char** argv, int rank, int ranks) {
             return code;
         }
         if (rendered == 0) {
-            if (!o.quiet)
+            if (!o.quiet) {
+                // As jtracer-cli warns: -o shot.jpg is a BMP all the same.
+                std::cerr << jt::frontend::format_warning("jtracer-mpi", o, frame.output);
                 if (auto warning = narrow_affinity_warning(current_cpu_share(), 0, host_name()))
                     std::cerr << *warning << std::flush;
+            }
             // Left to their defaults, SIGINT, SIGTERM and SIGHUP (a dropped
             // ssh connection) would end rank 0 in the middle of a write,
             // leaving the temporary file beside the image.

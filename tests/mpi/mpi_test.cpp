@@ -107,6 +107,19 @@ TEST_F(Mpi, AnOutputThatIsTheSceneFileIsRefusedOnce) {
     EXPECT_EQ(test::read_file(dir / "self.jts"), text);
 }
 
+// -o shot.jpg gives a BMP, as jtracer-cli's does, but jtracer-cli warns that
+// image viewers and upload forms will take it for a JPEG; jtracer-mpi did not.
+TEST_F(Mpi, AnOutputNamingAnotherImageFormatWarnsAsTheCliDoes) {
+    ProgramRun r = run_shell(mpirun_bound(2, "--bind-to none") + showcase +
+                             "--width 40 --height 30 -o shot.jpg");
+    ASSERT_EQ(r.code, 0) << r.err;
+    EXPECT_EQ(test::read_file(dir / "shot.jpg").substr(0, 2), "BM");
+    EXPECT_EQ(count(r.err, "jtracer-mpi: warning: -o/--output 'shot.jpg' is written as a BMP"), 1u)
+        << r.err;
+    r = run_shell(mpirun(2) + showcase + "--width 40 --height 30 -q -o shot.jpg");
+    EXPECT_EQ(r.err.find("warning"), std::string::npos) << r.err;
+}
+
 // A frame of the range whose file is the scene file: refused before any frame
 // is written, as by jtracer-cli, not once the frames before it were.
 TEST_F(Mpi, AFrameThatIsTheSceneFileIsRefusedBeforeAnyFrame) {
