@@ -188,4 +188,17 @@ int run_worker(const std::string& host, const std::function<RankSetUp()>& set_up
     return Worker().run(host, set_up, another_frame);
 }
 
+std::int32_t receive_frame_index() {
+    while (true) {
+        int arrived = 0;
+        MPI_Iprobe(0, tag_frame, MPI_COMM_WORLD, &arrived, MPI_STATUS_IGNORE);
+        if (arrived) {
+            std::int32_t index = -1;
+            MPI_Recv(&index, 1, MPI_INT32_T, 0, tag_frame, MPI_COMM_WORLD, MPI_STATUS_IGNORE);
+            return index;
+        }
+        std::this_thread::sleep_for(std::chrono::milliseconds(1));
+    }
+}
+
 }  // namespace jt::mpi

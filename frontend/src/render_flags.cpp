@@ -7,8 +7,11 @@
 
 #include <CLI/CLI.hpp>
 
+#include <algorithm>
+#include <cctype>
 #include <charconv>
 #include <cmath>
+#include <filesystem>
 #include <map>
 #include <string>
 
@@ -74,6 +77,35 @@ void add_render_flags(CLI::App& app, RenderFlags& o) {
            "With --frames: render only the frames A to B, counted from 0, both included (for "
            "job arrays and farms)")
         ->type_name("A..B");
+}
+
+std::string format_warning(std::string_view program, const RenderFlags& o,
+                           const std::string& output) {
+    std::string ext = std::filesystem::path(output).extension().string();
+    for (char& c : ext) c = static_cast<char>(std::tolower(static_cast<unsigned char>(c)));
+    static constexpr std::string_view other_images[] = {".jpg",  ".jpeg", ".tif",  ".tiff", ".gif",
+                                                        ".webp", ".exr",  ".tga",  ".ppm",  ".hdr",
+                                                        ".avif", ".jxl",  ".heic", ".ico"};
+    const bool other =
+        std::find(std::begin(other_images), std::end(other_images), ext) != std::end(other_images);
+    if (!o.output && (ext == ".png" || other))
+        return std::string(program) + ": warning: the scene's filename '" + output +
+               "' is written as a BMP, as the scene's filename always is" +
+               (ext != ".png" ? ""
+                : o.frames    ? "; an -o name ending in .png writes PNGs"
+                              : "; -o " + output + " writes a PNG") +
+               "\n";
+    if (o.output && other)
+        return std::string(program) + ": warning: -o/--output '" + output +
+               "' is written as a BMP: JTracer writes a PNG for a name ending in .png and a BMP "
+               "for any other\n";
+    // 'shot-%04d.png' without --frames is one image under that very name: the
+    // field says a sequence was meant.
+    if (o.output && !o.frames && parse_frame_name_pattern(output))
+        return std::string(program) + ": warning: -o/--output '" + output +
+               "' has a frame number field, but without --frames N one image is written under "
+               "that very name\n";
+    return {};
 }
 
 void check_sequence_flags(const RenderFlags& o) {

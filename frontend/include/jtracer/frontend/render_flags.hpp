@@ -12,6 +12,7 @@
 
 #include <optional>
 #include <string>
+#include <string_view>
 #include <vector>
 
 namespace CLI {
@@ -55,6 +56,15 @@ ParseOptions scene_value_options(const std::vector<std::string>& defines,
 // Declares the scene argument and -o, --camera, --width, --height, --samples,
 // --threads, --progress, -q, --define, --clock, --frames and --frame-range.
 void add_render_flags(CLI::App& app, RenderFlags& flags);
+
+// A warning line, "PROGRAM: warning: ...", or nothing, when the image's name
+// promises a format it will not have: the scene's filename always gives a
+// BMP, even `shot.png`, and -o gives a BMP for any name but .png, even
+// `shot.jpg`. Image viewers, browsers and upload forms trust the name and
+// refuse such a file. Also when -o holds a frame number field without
+// --frames: one image is written under that very name.
+std::string format_warning(std::string_view program, const RenderFlags& flags,
+                           const std::string& output);
 
 // The rules between the sequence flags, for the programs' checks: --clock
 // not with --frames, --frame-range only with --frames and within it, -o a
