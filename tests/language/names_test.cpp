@@ -144,6 +144,18 @@ TEST(Names, NamedMaterialMistakes) {
     EXPECT_EQ(brief(shiny + "scene { sphere { material other { } } }"),
               "3:18: error: a named material is defined at the top level; inside a primitive, "
               "write 'material: NAME;' to use one");
+    // Elsewhere than in a primitive, as 'define': one error at the keyword,
+    // and what follows is read.
+    const std::string top_only =
+        "error: a named material ('material NAME { ... }') may stand only at the top level, "
+        "outside every block";
+    EXPECT_EQ(brief("scene { material m { pigment: <1, 0, 0>; } sphere { } }"), "1:9: " + top_only);
+    EXPECT_EQ(brief("cameras { material m { } }"), "1:11: " + top_only);
+    EXPECT_EQ(brief("render_settings { material m { } width: 2; }"), "1:19: " + top_only);
+    EXPECT_EQ(brief("scene { sphere { transform { material m { } } } }"), "1:30: " + top_only);
+    EXPECT_EQ(brief("scene { sphere { material { material m { } } } }"), "1:29: " + top_only);
+    EXPECT_EQ(brief("material n { material m { } }"), "1:14: " + top_only);
+    EXPECT_EQ(parse_scene("scene { material m { } sphere { } }").scene.primitives.size(), 1u);
     // Range-checked where it is defined.
     EXPECT_EQ(brief("material m { diffuse_k: 0; }"),
               "1:25: error: 'diffuse_k' must be greater than 0 and at most 1e+09, got 0");

@@ -173,9 +173,10 @@ class SceneParser final : private TokenCursor {
     // A property in a block that holds only blocks (cameras, scene): reported.
     void only_blocks(const BlockSource& block, std::span<const std::string_view> allowed,
                      const Property& p);
-    // At `define` or `include` inside a block: an error at the keyword (a
-    // property of that name, with ':', is left to the block).
-    bool top_level_only();
+    // At `define`, `include` or a named material inside block `block`: an
+    // error at the keyword (a property of that name, with ':', is left to the
+    // block, and a primitive says how it names a material).
+    bool top_level_only(std::string_view block);
 
     // --- values and properties (parse_values.cpp, block_body.hpp) ------------
 
