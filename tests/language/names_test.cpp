@@ -94,6 +94,14 @@ TEST(Names, DefineMistakesAreLocated) {
     EXPECT_EQ(brief("define r = ;"), "1:12: error: expected a value after 'define r =', got ';'");
     EXPECT_EQ(brief("define r = 1\ndefine s = 2;"),
               "1:13: error: expected ';' after the value of 'define r'");
+    // A definition cut short still defines its name: the uses say nothing
+    // more than its one error, not that the name is unknown.
+    EXPECT_EQ(brief("define r = ;\nscene { sphere { radius: r; } }"),
+              "1:12: error: expected a value after 'define r =', got ';'");
+    EXPECT_EQ(brief("define r 1;\nscene { sphere { radius: r; } }"),
+              "1:10: error: expected '=' after 'define r', got the number 1");
+    EXPECT_EQ(brief("material m pigment: <1, 0, 0>;\nscene { sphere { material: m; } }"),
+              "1:12: error: expected '{' after 'material m', got the word 'pigment'");
     // Errors are reported where the value is written, used or not; uses stay quiet.
     EXPECT_EQ(brief("define r = 1 / 0;\nscene { sphere { radius: r; } }"),
               "1:14: error: division by zero: 1 / 0");

@@ -16,6 +16,20 @@
 
 namespace jt::lang {
 
+namespace {
+
+// A definition cut short before its value still defines its name, as a bad
+// one: its uses then say nothing more than the error already reported, where
+// "unknown name" would send the reader looking for a definition that is there.
+void add_bad_name(NameTable& names, const Token& name, Symbol::Kind kind) {
+    Symbol& symbol = names.add(name.text);
+    symbol.kind = kind;
+    symbol.defined_at = name.pos;
+    symbol.bad = true;
+}
+
+}  // namespace
+
 void SceneParser::set_command_line_names(const ParseOptions& options) {
     for (const Define& define : options.defines) {
         // Over-cautious for a string that holds the word; never wrong.
@@ -84,6 +98,7 @@ void SceneParser::parse_define() {
     if (!at(TokenKind::equals)) {
         sink_.error(cur_->pos, "expected '=' after 'define " + std::string(name.text) + "', got " +
                                    describe(*cur_));
+        if (claimed && !overridden) add_bad_name(names_, name, Symbol::Kind::value);
         skip_statement();
         return;
     }
@@ -93,6 +108,7 @@ void SceneParser::parse_define() {
     if (value.form == Value::Form::none) {
         sink_.error(cur_->pos, "expected a value after 'define " + std::string(name.text) +
                                    " =', got " + describe(*cur_));
+        if (claimed && !overridden) add_bad_name(names_, name, Symbol::Kind::value);
         skip_statement();
         return;
     }
@@ -163,6 +179,7 @@ void SceneParser::parse_named_material() {
     if (!at(TokenKind::lbrace)) {
         sink_.error(cur_->pos, "expected '{' after 'material " + std::string(name.text) +
                                    "', got " + describe(*cur_));
+        if (claimed) add_bad_name(names_, name, Symbol::Kind::material);
         skip_statement();
         return;
     }
