@@ -311,6 +311,9 @@ TEST(Names, DefineOptionOfTheClockIsCheckedAtTheRendersClock) {
     options.clock = 0;
     EXPECT_EQ(brief_with("define r = 1;\nscene { sphere { radius: r; } }", options),
               "0:0: error: define r=1/clock: at column 2: division by zero: 1 / 0");
+    // What a front end asks at each clock it renders.
+    EXPECT_EQ(define_error_at({"r", "1/clock"}, 0.0), "at column 2: division by zero: 1 / 0");
+    EXPECT_EQ(define_error_at({"r", "1/clock"}, 2.0), std::nullopt);
 }
 
 // A scene that uses names and expressions serialises to literal text that
