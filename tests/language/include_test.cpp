@@ -260,6 +260,25 @@ TEST_F(Include, AFifoIsRefusedWithoutWaitingForAWriter) {
               "1:9: error: '/dev/null' is a device, not a scene file");
 }
 
+// The included files share one limit: the message says so, and how much of
+// it the files before took, rather than a limit of odd size for this file.
+// Sparse files: their sizes are what count, nothing is read.
+TEST_F(Include, TheSizeLimitIsSharedByTheIncludedFilesAndSaysSo) {
+    write("small.jts", "define r = 1;\n");
+    write("big.jts", "");
+    std::filesystem::resize_file(dir / "big.jts", max_scene_file_bytes);
+    write("huge.jts", "");
+    std::filesystem::resize_file(dir / "huge.jts", max_scene_file_bytes + 1);
+    const std::string limit = "the files a scene includes may hold 1 GiB (1073741824 bytes) in all";
+    EXPECT_EQ(brief(parse("include \"small.jts\";\ninclude \"big.jts\";").diagnostics),
+              "2:9: error: '" + (dir / "big.jts").string() +
+                  "' is too large to include (1073741824 bytes): " + limit +
+                  ", and the files included before it hold 14");
+    EXPECT_EQ(brief(parse("include \"huge.jts\";").diagnostics),
+              "1:9: error: '" + (dir / "huge.jts").string() +
+                  "' is too large to include (1073741825 bytes): " + limit);
+}
+
 TEST_F(Include, ABackslashInAPathThatIsNotFoundSaysFoldersUseSlashes) {
     write("parts/ball.jts", "define r = 1;\n");
     EXPECT_EQ(brief(parse("include \"parts\\ball.jts\";").diagnostics),
