@@ -44,8 +44,11 @@ class Include : public testing::Test {
     std::string located(const ParseResult& r) {
         std::string out;
         for (const Diagnostic& d : r.diagnostics) {
-            std::string name = d.pos.file == 0 ? "main.jts" : r.source.files[d.pos.file - 1].name;
-            name = std::filesystem::path(name).lexically_relative(dir).generic_string();
+            const std::string name =
+                d.pos.file == 0 ? "main.jts"
+                                : std::filesystem::path(r.source.files[d.pos.file - 1].name)
+                                      .lexically_relative(dir)
+                                      .generic_string();
             out += (out.empty() ? "" : "\n") + name + ":" + brief({d});
         }
         return out;
@@ -277,6 +280,34 @@ TEST_F(Include, TheSizeLimitIsSharedByTheIncludedFilesAndSaysSo) {
     EXPECT_EQ(brief(parse("include \"huge.jts\";").diagnostics),
               "1:9: error: '" + (dir / "huge.jts").string() +
                   "' is too large to include (1073741825 bytes): " + limit);
+}
+
+// "the one at line 1" would send the reader to line 1 of the file the
+// warning is in, where the block replaced is not.
+TEST_F(Include, ABlockReplacedInAnotherFileIsNamedWithItsFile) {
+    write("parts/settings.jts", "render_settings { width: 8; }\nscene { }\n");
+    EXPECT_EQ(located(parse("include \"parts/settings.jts\";\n"
+                            "render_settings { width: 9; }\nscene { }\n")),
+              "main.jts:2:1: warning: another 'render_settings' block: only the last one is "
+              "used, so the one at " +
+                  (dir / "parts/settings.jts").string() +
+                  ":1:1 is ignored\n"
+                  "main.jts:3:1: warning: another 'scene' block: only the last one is used, so "
+                  "the one at " +
+                  (dir / "parts/settings.jts").string() + ":2:1 is ignored");
+    EXPECT_EQ(located(parse("render_settings { width: 9; }\nscene { }\n"
+                            "include \"parts/settings.jts\";\n")),
+              "parts/settings.jts:1:1: warning: another 'render_settings' block: only the last "
+              "one is used, so the one at " +
+                  (dir / "main.jts").string() +
+                  ":1:1 is ignored\n"
+                  "parts/settings.jts:2:1: warning: another 'scene' block: only the last one is "
+                  "used, so the one at " +
+                  (dir / "main.jts").string() + ":2:1 is ignored");
+    // In one file, its line is enough.
+    EXPECT_EQ(located(parse("scene { }\nscene { }\n")),
+              "main.jts:2:1: warning: another 'scene' block: only the last one is used, so the "
+              "one at line 1 is ignored");
 }
 
 TEST_F(Include, ABackslashInAPathThatIsNotFoundSaysFoldersUseSlashes) {

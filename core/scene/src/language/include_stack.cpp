@@ -170,6 +170,11 @@ std::string IncludeStack::location(SourcePos pos) const {
            std::to_string(pos.column);
 }
 
+std::string IncludeStack::place(SourcePos pos, SourcePos from) const {
+    if (pos.file == from.file) return "line " + std::to_string(pos.line);
+    return location(pos);
+}
+
 std::string IncludeStack::chain(std::uint32_t file) const {
     std::string out;
     // Each step goes to an earlier file, so this ends at the main file.

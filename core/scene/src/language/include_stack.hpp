@@ -45,6 +45,9 @@ class IncludeStack {
     // "FILE:LINE:COL, included from FILE:LINE:COL, ..." for a position in an
     // included file; "LINE:COL" for one in the main file.
     std::string where(SourcePos pos) const;
+    // Where `pos` is, for a message located at `from`: "line N" in the same
+    // file, else "FILE:LINE:COL" (a line alone would be read in the wrong file).
+    std::string place(SourcePos pos, SourcePos from) const;
     // ", included from FILE:LINE:COL, ..." for file `file` ("" for the main file).
     std::string chain(std::uint32_t file) const;
 

@@ -209,8 +209,9 @@ void SceneParser::parse_render_settings() {
     if (result_.source.render_settings) {
         sink_.warning(block.keyword_span.pos,
                       "another 'render_settings' block: only the last one is used, so the "
-                      "one at line " +
-                          std::to_string(result_.source.render_settings->keyword_span.pos.line) +
+                      "one at " +
+                          include_.place(result_.source.render_settings->keyword_span.pos,
+                                         block.keyword_span.pos) +
                           " is ignored");
     }
     result_.scene.settings = std::move(settings);
