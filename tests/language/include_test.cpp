@@ -310,6 +310,29 @@ TEST_F(Include, ABlockReplacedInAnotherFileIsNamedWithItsFile) {
               "one at line 1 is ignored");
 }
 
+// A POV-Ray user's colors.inc turned into an included file often keeps its
+// '#declare' lines, which are comments here: the unknown name's message says
+// so wherever that comment is, naming its file when it is in another.
+TEST_F(Include, APovRayDirectiveInAnyFileReadIsNamedWithItsFile) {
+    const std::string unknown =
+        "error: unknown name 'Red' (names must be defined before they are used); POV-Ray's "
+        "#include and #declare are comments here, as at ";
+    const std::string advice = ": write include \"FILE\"; and define NAME = VALUE;";
+    const std::string colors = (dir / "colors.jts").string();
+    write("colors.jts", "# colours\n#declare Red = <1, 0, 0>;\n");
+    EXPECT_EQ(located(parse("include \"colors.jts\";\n"
+                            "scene { sphere { material { pigment: Red; } } }\n")),
+              "main.jts:2:38: " + unknown + colors + ":2:1" + advice);
+    // In the file that uses the name, its line and column are enough.
+    write("ball.jts", "#declare Red = <1, 0, 0>;\nsphere { material { pigment: Red; } }\n");
+    EXPECT_EQ(located(parse("scene { include \"ball.jts\"; }\n")),
+              "ball.jts:2:30: " + unknown + "1:1" + advice);
+    // The main file's comment, seen from an included file.
+    write("uses.jts", "sphere { material { pigment: Red; } }\n");
+    EXPECT_EQ(located(parse("#include \"colors.inc\"\nscene { include \"uses.jts\"; }\n")),
+              "uses.jts:1:30: " + unknown + (dir / "main.jts").string() + ":1:1" + advice);
+}
+
 TEST_F(Include, ABackslashInAPathThatIsNotFoundSaysFoldersUseSlashes) {
     write("parts/ball.jts", "define r = 1;\n");
     EXPECT_EQ(brief(parse("include \"parts\\ball.jts\";").diagnostics),

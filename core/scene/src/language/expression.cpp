@@ -303,9 +303,8 @@ bool ExpressionReader::parse_primary(int depth) {
             message += "; numbers must be finite";
         // POV-Ray's '#include "colors.inc"' or '#declare R = 1;' is a
         // comment here, which is why its names are unknown.
-        if (const SourcePos directive = tokens_.directive_comment(); directive.line > 0)
-            message += "; POV-Ray's #include and #declare are comments here, as at " +
-                       std::to_string(directive.line) + ":" + std::to_string(directive.column) +
+        if (const std::string directive = tokens_.directive_comment(t.pos); !directive.empty())
+            message += "; POV-Ray's #include and #declare are comments here, as at " + directive +
                        ": write include \"FILE\"; and define NAME = VALUE;";
         sink_.error(t.pos, std::move(message));
         return false;

@@ -175,6 +175,11 @@ std::string IncludeStack::place(SourcePos pos, SourcePos from) const {
     return location(pos);
 }
 
+std::string IncludeStack::point(SourcePos pos, SourcePos from) const {
+    if (pos.file == from.file) return std::to_string(pos.line) + ":" + std::to_string(pos.column);
+    return location(pos);
+}
+
 std::string IncludeStack::chain(std::uint32_t file) const {
     std::string out;
     // Each step goes to an earlier file, so this ends at the main file.

@@ -107,8 +107,8 @@ class SceneParser final : private TokenCursor {
     }
     const Token& cur() const override { return *cur_; }
     const Token& peek() const override { return *next_; }
-    // The main file's only: a line and column of another file would need its name.
-    SourcePos directive_comment() const override { return lexer_.directive_comment(); }
+    // In the main file, the files read before, or the one being read.
+    std::string directive_comment(SourcePos from) const override;
     bool at(TokenKind kind) const { return cur_->kind == kind; }
     // Whether what follows `value` is a mistake the lexer has reported (a
     // malformed number, a byte that starts no token): the value's statement
@@ -310,6 +310,9 @@ class SceneParser final : private TokenCursor {
     DiagnosticSink sink_;
     Lexer lexer_;               // the main text's
     Lexer* reading_ = &lexer_;  // the text being read's
+    // The first POV-Ray directive comment of an included file read so far (or
+    // of one still open around the one being read); line 0: none.
+    SourcePos included_directive_{0, 0, 0};
     PropertyReader reader_;
     IncludeStack include_;
     std::deque<std::string> rebased_names_;  // values point at these: a deque keeps them put
