@@ -357,6 +357,12 @@ TEST_F(Include, TheSameFileTwiceIsFineUnlessItDefinesNames) {
                   (dir / "mats.jts").string() + ":1:9, included from " +
                   (dir / "main.jts").string() + ":1:9; read again here, included from " +
                   (dir / "main.jts").string() + ":2:9");
+    // A first definition in the main file, seen from an included file: its
+    // "1:8" alone would be read in the included file.
+    EXPECT_EQ(located(parse("define r = 1;\ninclude \"defs.jts\";\n")),
+              "defs.jts:1:8: error: 'r' is defined twice: it was first defined at " +
+                  (dir / "main.jts").string() + ":1:8; read again here, included from " +
+                  (dir / "main.jts").string() + ":2:9");
 }
 
 TEST_F(Include, AFindingInAnIncludedFileNamesThatFileForItsEarlierPlace) {

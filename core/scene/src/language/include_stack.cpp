@@ -191,8 +191,8 @@ std::string IncludeStack::chain(std::uint32_t file) const {
     return out;
 }
 
-std::string IncludeStack::where(SourcePos pos) const {
-    if (pos.file == 0) return std::to_string(pos.line) + ":" + std::to_string(pos.column);
+std::string IncludeStack::where(SourcePos pos, SourcePos from) const {
+    if (pos.file == 0) return point(pos, from);
     return location(pos) + chain(pos.file);
 }
 

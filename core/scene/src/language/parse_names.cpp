@@ -75,7 +75,7 @@ bool SceneParser::claim_name(const Token& name, bool& overridden) {
         return true;
     }
     std::string message = quote(name.text) + " is defined twice: it was first defined at " +
-                          include_.where(existing->defined_at);
+                          include_.where(existing->defined_at, name.pos);
     if (name.pos.file != 0) message += "; read again here" + include_.chain(name.pos.file);
     sink_.error(name.pos, std::move(message));
     return false;
