@@ -82,6 +82,30 @@ TEST(Structure, ANameAgainstAValueIsOneError) {
     EXPECT_EQ(shape_as<Sphere>(r.scene.primitives[0].shape).radius, 2.0);
 }
 
+// POV-Ray users write '2 pi' for 2 * pi (it is an error there too): a name
+// after a space on the value's line, not starting a property ('name:'), a
+// block ('name {') or a statement, continues the value. One error, with the
+// hint, not a second about 'pi' as a property or a block.
+TEST(Structure, ANameAfterAValueOnItsLineIsOneError) {
+    const std::string side_by_side =
+        " (two values side by side are not multiplied: write '*' between them)";
+    EXPECT_EQ(brief("define r = 2 pi;\nscene { sphere { radius: 2 r; center: <r, 0, 0>; } }"),
+              "1:13: error: expected ';' after the value of 'define r'" + side_by_side +
+                  "\n2:27: error: expected ';' after the value of 'radius'" + side_by_side);
+    EXPECT_EQ(brief("define r = 2 sin(30);"),
+              "1:13: error: expected ';' after the value of 'define r'" + side_by_side);
+    // A property, a block or a statement on the same line is the next one.
+    ParseResult r = parse_scene(
+        "define r = 2 define s = 3;\n"
+        "scene { sphere { radius: r center: <s, 0, 0>; } sphere { radius: 1 material { } } }");
+    EXPECT_EQ(brief(r.diagnostics),
+              "1:13: error: expected ';' after the value of 'define r'\n"
+              "2:27: error: expected ';' after the value of 'radius'\n"
+              "2:67: error: expected ';' after the value of 'radius'");
+    ASSERT_EQ(r.scene.primitives.size(), 2u);
+    EXPECT_EQ(shape_as<Sphere>(r.scene.primitives[0].shape).center, Vec3(3, 0, 0));
+}
+
 TEST(Structure, UnknownPropertySuggestsTheNearestName) {
     EXPECT_EQ(brief("scene { sphere { radus: 2; } }"),
               "1:18: error: unknown property 'radus' in 'sphere'; did you mean 'radius'? "

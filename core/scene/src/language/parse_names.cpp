@@ -113,7 +113,9 @@ void SceneParser::parse_define() {
         return;
     }
     const bool glued = value.form != Value::Form::bad && glued_to(value.end);
-    const bool good = value.form != Value::Form::bad && !cut_short(value) && !glued;
+    const bool next_to =
+        value.form != Value::Form::bad && !glued && !cut_short(value) && beside(value.end);
+    const bool good = value.form != Value::Form::bad && !cut_short(value) && !glued && !next_to;
     if (claimed && !overridden) {
         Symbol& symbol = names_.add(name.text);
         symbol.defined_at = name.pos;
@@ -139,9 +141,9 @@ void SceneParser::parse_define() {
         result_.source.definitions.push_back(
             {std::string(name.text), span_of(name), value.span, value.origin, std::nullopt});
     }
-    if (glued)
+    if (glued || next_to)
         sink_.error(value.end, "expected ';' after the value of 'define " + std::string(name.text) +
-                                   "'" + std::string(glued_hint));
+                                   "'" + std::string(glued ? glued_hint : beside_hint));
     if (!good) {
         skip_statement();
         return;

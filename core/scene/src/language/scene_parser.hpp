@@ -71,6 +71,9 @@ inline constexpr std::array<std::string_view, 0> kNoBlocks{};
 // Added to "expected ';' after the value" when a name touches the value.
 inline constexpr std::string_view glued_hint =
     " (a name cannot follow a value directly: '2pi' is written '2 * pi')";
+// ... and when one follows it after a space on its line (SceneParser::beside).
+inline constexpr std::string_view beside_hint =
+    " (two values side by side are not multiplied: write '*' between them)";
 
 // The schema's own copy of a block keyword, so that records point at the
 // schema's literals rather than at the text.
@@ -122,6 +125,14 @@ class SceneParser final : private TokenCursor {
     // '1_000'): no next statement, whose ';' is missing, but a mistake in
     // this one, which is then skipped whole, its value with it.
     bool glued_to(SourcePos end) const { return at(TokenKind::word) && cur_->pos == end; }
+    // Whether a name after a space on the line of the value that ends at
+    // `end` continues it ('2 pi', '2 r'), rather than starting the next
+    // property ('name:'), block ('name {') or statement, whose ';' is missing.
+    bool beside(SourcePos end) const {
+        return at(TokenKind::word) && cur_->pos.file == end.file && cur_->pos.line == end.line &&
+               next_->kind != TokenKind::colon && next_->kind != TokenKind::lbrace &&
+               !contains(top_statements(), cur_->text);
+    }
 
     // --- skipping bad input (parse_blocks.cpp) -------------------------------
 
