@@ -106,6 +106,35 @@ TEST(Structure, ANameAfterAValueOnItsLineIsOneError) {
     EXPECT_EQ(shape_as<Sphere>(r.scene.primitives[0].shape).center, Vec3(3, 0, 0));
 }
 
+// A POV-Ray user's words, too far from ours for a typo, are named with ours.
+TEST(Structure, APovRayWordIsAnsweredWithOurs) {
+    const std::string top =
+        " (allowed: render_settings, cameras, scene, include, define, material)";
+    EXPECT_EQ(brief("declare R = 1;"),
+              "1:1: error: unknown block 'declare' at the top level; POV-Ray's 'declare' is "
+              "'define' here" +
+                  top);
+    EXPECT_EQ(brief("local R = 1;"),
+              "1:1: error: unknown block 'local' at the top level; POV-Ray's 'local' is 'define' "
+              "here" +
+                  top);
+    EXPECT_EQ(brief("scene { light_source { } }"),
+              "1:9: error: unknown block 'light_source' in 'scene'; POV-Ray's 'light_source' is "
+              "'point_light' here (allowed: sphere, plane, cylinder, triangle, mesh, point_light, "
+              "include)");
+    EXPECT_EQ(brief("scene { sphere { finish { } } }"),
+              "1:18: error: unknown block 'finish' in 'sphere'; POV-Ray's 'finish' is 'material' "
+              "here (allowed: material, transform)");
+    // Where ours is not allowed either, nothing is said of it.
+    // A property is not a block: 'pigment:' belongs in a material.
+    EXPECT_EQ(brief("scene { sphere { pigment: <1, 0, 0>; } }"),
+              "1:18: error: unknown property 'pigment' in 'sphere' (allowed: center, radius, "
+              "material, transform)");
+    EXPECT_EQ(brief("scene { sphere { declare: 1; } }"),
+              "1:18: error: unknown property 'declare' in 'sphere' (allowed: center, radius, "
+              "material, transform)");
+}
+
 TEST(Structure, UnknownPropertySuggestsTheNearestName) {
     EXPECT_EQ(brief("scene { sphere { radus: 2; } }"),
               "1:18: error: unknown property 'radus' in 'sphere'; did you mean 'radius'? "

@@ -1,6 +1,7 @@
 #include "language/suggest.hpp"
 
 #include <algorithm>
+#include <utility>
 #include <vector>
 
 namespace jt::lang {
@@ -67,7 +68,20 @@ std::string unknown_name_message(std::string_view what, std::string_view word,
     std::string message = "unknown " + std::string(what) + " '" + std::string(word.substr(0, 40)) +
                           "' " + std::string(where);
     std::string_view nearest = nearest_name(word, allowed);
-    if (!nearest.empty()) message += "; did you mean '" + std::string(nearest) + "'?";
+    if (!nearest.empty()) {
+        message += "; did you mean '" + std::string(nearest) + "'?";
+    } else if (what == "block") {
+        // A POV-Ray user's blocks, too far from ours to be taken for a typo.
+        static constexpr std::pair<std::string_view, std::string_view> kPovRay[] = {
+            {"declare", "define"},           {"local", "define"},
+            {"light_source", "point_light"}, {"finish", "material"},
+            {"pigment", "material"},         {"texture", "material"},
+            {"camera", "perspective_camera"}};
+        for (const auto& [pov, ours] : kPovRay)
+            if (word == pov && std::find(allowed.begin(), allowed.end(), ours) != allowed.end())
+                message +=
+                    "; POV-Ray's '" + std::string(pov) + "' is '" + std::string(ours) + "' here";
+    }
     message += " (allowed: ";
     for (std::size_t i = 0; i < allowed.size(); ++i) {
         if (i) message += ", ";
