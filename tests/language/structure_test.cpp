@@ -94,6 +94,11 @@ TEST(Structure, ANameAfterAValueOnItsLineIsOneError) {
                   "\n2:27: error: expected ';' after the value of 'radius'" + side_by_side);
     EXPECT_EQ(brief("define r = 2 sin(30);"),
               "1:13: error: expected ';' after the value of 'define r'" + side_by_side);
+    // In a vector, where a ',' is due.
+    EXPECT_EQ(brief("scene { sphere { center: <2pi, 2 pi, 0>; } }"),
+              "1:28: error: a vector takes three numbers separated by commas, like <0, 1, 0>; "
+              "expected ',' but got the word 'pi' (a name after a value does not multiply it: "
+              "'2pi' and '2 pi' are written '2 * pi')");
     // A property, a block or a statement on the same line is the next one.
     ParseResult r = parse_scene(
         "define r = 2 define s = 3;\n"

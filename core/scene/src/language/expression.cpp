@@ -369,10 +369,16 @@ bool ExpressionReader::parse_vector(int depth) {
     for (int k = 0; k < 3; ++k) {
         if (k > 0) {
             if (tokens_.cur().kind != TokenKind::comma) {
-                sink_.error(tokens_.cur().pos,
-                            "a vector takes three numbers separated by commas, like <0, 1, 0>; "
-                            "expected ',' but got " +
-                                describe(tokens_.cur()));
+                std::string message =
+                    "a vector takes three numbers separated by commas, like <0, 1, 0>; "
+                    "expected ',' but got " +
+                    describe(tokens_.cur());
+                // POV-Ray users' habit of writing a product without '*'.
+                if (tokens_.cur().kind == TokenKind::word)
+                    message +=
+                        " (a name after a value does not multiply it: '2pi' and '2 pi' are "
+                        "written '2 * pi')";
+                sink_.error(tokens_.cur().pos, std::move(message));
                 return false;
             }
             take();
