@@ -131,6 +131,14 @@ TEST(Structure, APovRayWordIsAnsweredWithOurs) {
               "1:18: error: unknown block 'finish' in 'sphere'; POV-Ray's 'finish' is 'material' "
               "here (allowed: material, transform)");
     // Where ours is not allowed either, nothing is said of it.
+    // Properties too, where ours stands in the same block.
+    EXPECT_EQ(brief("cameras { perspective_camera { location: <0, 0, 5>; angle: 60; } }"),
+              "1:32: error: unknown property 'location' in 'perspective_camera'; POV-Ray's "
+              "'location' is 'position' here (allowed: name, position, look_at, up, aspect, fov, "
+              "aperture, focus_distance)\n"
+              "1:53: error: unknown property 'angle' in 'perspective_camera'; POV-Ray's 'angle' "
+              "is 'fov' here (allowed: name, position, look_at, up, aspect, fov, aperture, "
+              "focus_distance)");
     // A property is not a block: 'pigment:' belongs in a material.
     EXPECT_EQ(brief("scene { sphere { pigment: <1, 0, 0>; } }"),
               "1:18: error: unknown property 'pigment' in 'sphere' (allowed: center, radius, "

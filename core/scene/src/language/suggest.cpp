@@ -70,17 +70,28 @@ std::string unknown_name_message(std::string_view what, std::string_view word,
     std::string_view nearest = nearest_name(word, allowed);
     if (!nearest.empty()) {
         message += "; did you mean '" + std::string(nearest) + "'?";
-    } else if (what == "block") {
-        // A POV-Ray user's blocks, too far from ours to be taken for a typo.
-        static constexpr std::pair<std::string_view, std::string_view> kPovRay[] = {
-            {"declare", "define"},           {"local", "define"},
-            {"light_source", "point_light"}, {"finish", "material"},
-            {"pigment", "material"},         {"texture", "material"},
-            {"camera", "perspective_camera"}};
-        for (const auto& [pov, ours] : kPovRay)
-            if (word == pov && std::find(allowed.begin(), allowed.end(), ours) != allowed.end())
-                message +=
-                    "; POV-Ray's '" + std::string(pov) + "' is '" + std::string(ours) + "' here";
+    } else {
+        // A POV-Ray user's words, too far from ours to be taken for a typo.
+        // Blocks and properties apart: 'pigment:' in a sphere is no material.
+        struct PovWord {
+            std::string_view what, pov, ours;
+        };
+        static constexpr PovWord kPovRay[] = {
+            {"block", "declare", "define"},
+            {"block", "local", "define"},
+            {"block", "light_source", "point_light"},
+            {"block", "finish", "material"},
+            {"block", "pigment", "material"},
+            {"block", "texture", "material"},
+            {"block", "camera", "perspective_camera"},
+            {"property", "location", "position"},
+            {"property", "angle", "fov"},
+        };
+        for (const PovWord& w : kPovRay)
+            if (what == w.what && word == w.pov &&
+                std::find(allowed.begin(), allowed.end(), w.ours) != allowed.end())
+                message += "; POV-Ray's '" + std::string(w.pov) + "' is '" + std::string(w.ours) +
+                           "' here";
     }
     message += " (allowed: ";
     for (std::size_t i = 0; i < allowed.size(); ++i) {
