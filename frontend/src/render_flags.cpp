@@ -2,6 +2,7 @@
 
 #include "jtracer/frontend/command_line.hpp"
 #include "jtracer/frontend/frame_file_name.hpp"
+#include "jtracer/frontend/frame_numbering.hpp"
 
 #include "jtracer/limits.hpp"
 
@@ -13,6 +14,7 @@
 #include <cmath>
 #include <filesystem>
 #include <map>
+#include <optional>
 #include <string>
 
 namespace jt::frontend {
@@ -108,7 +110,37 @@ std::string format_warning(std::string_view program, const RenderFlags& o,
     return {};
 }
 
+void check_defines_at_their_clocks(const std::vector<std::string>& defines,
+                                   std::optional<double> clock, std::optional<int> frames) {
+    const int count = frames.value_or(1);
+    for (const std::string& argument : defines) {
+        Expected<Define> define = parse_define(argument);
+        // Others were evaluated by parse_define: at every clock the same.
+        if (!define || define->value.find("clock") == std::string::npos) continue;
+        std::optional<std::string> first;
+        for (int frame = 0; frame < count; ++frame) {
+            std::optional<std::string> error =
+                define_error_at(*define, frames ? frame_clock(frame, count) : clock.value_or(0.0));
+            if (!error) {
+                first.reset();
+                break;
+            }
+            if (!first) first = std::move(error);
+        }
+        if (!first) continue;
+        const std::string where =
+            !frames
+                ? "at clock " + shortest_decimal(clock.value_or(0.0)) + ", the clock of this render"
+            : count == 1 ? std::string("at clock 0, the clock of the one frame")
+                         : "at clock 0, and it fails at the clock of every one of the " +
+                               std::to_string(count) + " frames";
+        throw CLI::ValidationError(
+            "--define", "the value of " + define->name + ": " + *first + " (" + where + ")");
+    }
+}
+
 void check_sequence_flags(const RenderFlags& o) {
+    check_defines_at_their_clocks(o.defines, o.clock, o.frames);
     if (o.frame_range && !o.frames) throw CLI::ValidationError("--frame-range", "needs --frames N");
     if (!o.frames) return;
     if (o.clock)

@@ -66,11 +66,21 @@ void add_render_flags(CLI::App& app, RenderFlags& flags);
 std::string format_warning(std::string_view program, const RenderFlags& flags,
                            const std::string& output);
 
-// The rules between the sequence flags, for the programs' checks: --clock
+// The rules between the sequence flags, for the programs' checks: a --define
+// that fails at every clock rendered (check_defines_at_their_clocks), --clock
 // not with --frames, --frame-range only with --frames and within it, -o a
 // pattern with one frame number field. Throws CLI::ValidationError naming
 // the option.
 void check_sequence_flags(const RenderFlags& flags);
+
+// A --define of the clock that fails at every clock the command renders (at
+// `clock` for one image, at each frame's clock of a whole sequence of `frames`)
+// is a bad value, as one that fails at any clock: throws CLI::ValidationError
+// naming --define, before anything is read. One that fails at some frames only
+// is those frames' error, the one a frame range of them gets too
+// (docs/language.md §15.2). check_sequence_flags calls it.
+void check_defines_at_their_clocks(const std::vector<std::string>& defines,
+                                   std::optional<double> clock, std::optional<int> frames);
 
 // --define (repeatable) and --clock alone, for a front end with its own
 // other flags (jtracer-view).
