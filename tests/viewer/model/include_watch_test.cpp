@@ -6,6 +6,8 @@
 #include "jtracer/diagnostics.hpp"
 #include "model/app_actions.hpp"
 #include "model/document_edits.hpp"
+#include "model/picking.hpp"
+#include "model/selection_commands.hpp"
 #include "viewer/model/model_loop.hpp"
 #include "viewer/viewer_test_files.hpp"
 
@@ -336,6 +338,25 @@ TEST_F(ViewerIncludes, UndoAfterAnIncludedFileChangedNeverBringsItsOldTextBack) 
     ASSERT_TRUE(saved) << saved.error().message;
     EXPECT_EQ(read_file(ball), "sphere { center: <0, 0, -5>; radius: 2; }\n")
         << "never the old text";
+}
+
+// Found in the real window: a click in the scene file's camera block
+// selected a sphere of an included file, whose block sits at the same byte
+// offsets of its own file; and a sphere of that file picked in the image
+// scrolled the scene file's text to the line of the sphere in its own file.
+TEST_F(ViewerIncludes, TheSceneFilesTextNamesOnlyItsOwnBlocks) {
+    save_as_editor(ball, "sphere { center: <0, 0, -5>; radius: 1; }\n");
+    save_as_editor(main, kMain);
+    open_scene(state, main);
+    ASSERT_TRUE(state.doc.loaded) << format_diagnostics(state.doc);
+    EXPECT_EQ(selection_at_offset(state, 5).kind, Selection::Kind::none)
+        << "offset 5 of the scene file is in render_settings";
+    const std::size_t light = state.doc.text.find("point_light");
+    EXPECT_EQ(selection_at_offset(state, light + 3), (Selection{Selection::Kind::light, 0}));
+    select(state.view, {Selection::Kind::light, 0});
+    EXPECT_EQ(selection_line(state), std::optional<int>(3));
+    select(state.view, {Selection::Kind::primitive, 0});
+    EXPECT_EQ(selection_line(state), std::nullopt) << "line 1 is of parts/ball.jts";
 }
 
 }  // namespace
