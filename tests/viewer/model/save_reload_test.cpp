@@ -430,6 +430,25 @@ TEST_F(ViewerFiles, TheStatusLineDoesNotCallANewerEditSaved) {
     EXPECT_EQ(shown_message(state), "") << "a cleared message claims nothing";
 }
 
+// Found in the real window: "Opened main.jts" stayed on the status line
+// after a panel edit, beside the title's "*"; so did "Reloaded".
+TEST_F(ViewerFiles, TheStatusLineDoesNotCallANewerEditTheFilesScene) {
+    ASSERT_EQ(shown_message(state).rfind("Opened ", 0), 0u) << shown_message(state);
+    edit_pigment();
+    ASSERT_TRUE(has_unsaved_work(state));
+    EXPECT_EQ(shown_message(state).find("Opened"), std::string::npos) << shown_message(state);
+    EXPECT_NE(shown_message(state).find("Ctrl+S"), std::string::npos) << shown_message(state);
+    undo(state);
+    ASSERT_FALSE(has_unsaved_work(state));
+    EXPECT_EQ(shown_message(state), "Undone");
+
+    they_save(kMine);
+    ASSERT_EQ(shown_message(state).rfind("Reloaded ", 0), 0u) << shown_message(state);
+    edit_scene(state, [](Scene& s) { s.settings.samples = 3; });
+    EXPECT_EQ(shown_message(state).find("Reloaded"), std::string::npos) << shown_message(state);
+    EXPECT_NE(shown_message(state).find("Ctrl+S"), std::string::npos) << shown_message(state);
+}
+
 // The save replaces the file by a rename, which the folder allows whatever
 // the file's own mode: the file keeps its mode, and one nobody may write is
 // not replaced (root may write anything, so its bits are what count).
