@@ -47,6 +47,9 @@ namespace {
 void finish_open(AppState& state, const std::filesystem::path& path, LoadAttempt attempt) {
     const bool ok = attempt.ok;
     const bool first = !state.doc.loaded;
+    // A file read with errors as the first scene is the document all the
+    // same (the title's, the text editor's to mend): listed as opened.
+    const bool listed = ok || (first && attempt.read);
     // Only the cameras are compared: copying the whole scene would cost as
     // much as the load's own copies.
     const std::vector<Camera> before = state.doc.scene.cameras;
@@ -61,6 +64,10 @@ void finish_open(AppState& state, const std::filesystem::path& path, LoadAttempt
         state.files.watcher = FileWatcher(state.config.watch_interval);
         state.files.watcher.watch(path);
     }
+    if (listed) {
+        state.files.recent.add(path);
+        state.fields.open_path_input = path.string();
+    }
     if (ok) {
         state.view.camera_index = std::max(active_camera_index(state.doc.scene), 0);
         state.view.free_camera_active = false;
@@ -73,8 +80,6 @@ void finish_open(AppState& state, const std::filesystem::path& path, LoadAttempt
             state.fields.save_scene_path.clear();
         }
         after_scene_replaced(state, before);
-        state.files.recent.add(path);
-        state.fields.open_path_input = path.string();
         state.message.claim_read("Opened " + path.string(), "opening", path.filename().string());
     } else if (!first && state.doc.path != path) {
         state.message = "Could not open " + path.filename().string() +
