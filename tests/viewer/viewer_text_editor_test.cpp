@@ -631,6 +631,40 @@ TEST(ViewerIncludedFileEditor, OpensTypesUndoesAndSavesAnIncludedFile) {
     fs::remove_all(dir);
 }
 
+// Found in the real window: "} oops" typed in parts/objects.jts, the list
+// under the text said "No errors or warnings." (typed text in an included
+// file is read only when saved), and Ctrl+S then said it had an error. The
+// list says when the text is checked instead.
+TEST(ViewerIncludedFileEditor, TypedTextIsNotCalledFreeOfErrors) {
+    HeadlessViewer viewer{1200, 700};
+    ASSERT_TRUE(viewer.ok()) << viewer.error();
+    const fs::path dir = write_including_scene("included-file-unchecked");
+    AppState state{test_config()};
+    open_scene(state, dir / "main.jts");
+    ASSERT_TRUE(state.doc.loaded) << format_diagnostics(state.doc);
+    viewer.press_key(state, keys::letter('T'));
+    ASSERT_TRUE(viewer.click(state, "parts/ball.jts"));
+    viewer.frame(state);
+    EXPECT_NE(find_item(viewer.ui_items(), "No errors or warnings."), nullptr) << "as read";
+
+    viewer.text_editor().jump = static_cast<int>(kIncludedBall.size());
+    viewer.frame(state);
+    viewer.frame(state);
+    std::vector<KeyEvent> events;
+    type(events, "} oops");
+    viewer.key_events(state, events, 40.0, 16.0);
+    viewer.frame(state);
+    ASSERT_TRUE(has_included_drafts(state.editor));
+    EXPECT_EQ(find_item(viewer.ui_items(), "No errors or warnings."), nullptr);
+    EXPECT_NE(find_item(viewer.ui_items(), kCheckedWhenSaved), nullptr);
+
+    viewer.press_key(state, keys::letter('S'), true);
+    EXPECT_EQ(state.message.rfind("Not saved: ", 0), 0u) << state.message;
+    viewer.frame(state);
+    EXPECT_EQ(find_item(viewer.ui_items(), kCheckedWhenSaved), nullptr) << "the error instead";
+    fs::remove_all(dir);
+}
+
 // Found in the real window (1500x950, the split scene): the hint beside an
 // included file's name ran past the editor's right edge ("Ctrl+Z undoe").
 // A hint that does not fit gives its brief form, the whole in its tooltip,

@@ -255,7 +255,13 @@ void error_list(AppState& state, TextEditorState& ed, float height) {
             note_item(label.c_str(), false);
         }
     }
-    if (shown == 0) ImGui::TextDisabled("No errors or warnings.");
+    if (shown == 0) {
+        const char* none = draft ? kCheckedWhenSaved : "No errors or warnings.";
+        ImGui::PushTextWrapPos(0.0f);
+        ImGui::TextDisabled("%s", none);
+        ImGui::PopTextWrapPos();
+        note_item(none, false);
+    }
     ImGui::EndChild();
 }
 
