@@ -17,6 +17,7 @@
 #include <gtest/gtest.h>
 #include <imgui.h>
 
+#include <algorithm>
 #include <filesystem>
 #include <string>
 #include <vector>
@@ -464,6 +465,28 @@ TEST_F(ViewerTextEditor, LineNumbersStayWhenTheTextScrollsSideways) {
         }
     EXPECT_EQ(text_pixels, 0) << "no text under the numbers";
     EXPECT_GT(number_pixels, 5) << "the number 10 is there";
+}
+
+// Found in the real window: typing new lines at the bottom of the view, the
+// line being typed went under the horizontal scroll bar (a long line shows
+// one): the view followed the cursor as if the bar took no room.
+TEST_F(ViewerTextEditor, TheLineBeingTypedStaysAboveTheScrollBar) {
+    type_at_the_end_of_a_long_line();
+    const TextEditorState& editor = viewer.text_editor();
+    std::vector<KeyEvent> events;
+    for (int i = 0; i < 60; ++i) tap(events, keys::enter);
+    viewer.key_events(state, events, 40.0, 16.0);
+    viewer.frame(state);
+    viewer.frame(state);
+    const UiItem* view = find_item(viewer.ui_items(), "text view");
+    ASSERT_NE(view, nullptr);
+    const int line = 1 + static_cast<int>(std::count(editor.buffer.begin(),
+                                                     editor.buffer.begin() + editor.cursor, '\n'));
+    ASSERT_EQ(line, 70);
+    const float bottom = editor.line1_y + static_cast<float>(line) * editor.line_height;
+    EXPECT_LE(bottom, view->rect.y1 - ImGui::GetStyle().ScrollbarSize)
+        << "the cursor's line ends under the scroll bar";
+    EXPECT_GE(bottom - editor.line_height, view->rect.y0) << "and is in the view";
 }
 
 // The view kept its scroll from file to file: another file opened after
