@@ -688,6 +688,38 @@ TEST(ViewerIncludedFileEditor, TypedTextIsNotCalledFreeOfErrors) {
     fs::remove_all(dir);
 }
 
+// Found in the real window: bad.jts, broken from the start, typed in and
+// still with errors: the editor said "errors: showing the last good image"
+// and the status line "the image is of the last good text", over an empty
+// image area ("No scene loaded"): there was never a good one.
+TEST(ViewerTextEditorOpen, TypedErrorsBeforeAnyGoodSceneNameNoLastGoodImage) {
+    HeadlessViewer viewer{1200, 700};
+    ASSERT_TRUE(viewer.ok()) << viewer.error();
+    const fs::path file = scene_copy("text-editor-never-good");
+    std::string broken = read_file(file);
+    broken.replace(broken.find("height: 48;"), 11, "height: 48");
+    write_file(file, broken);
+    AppState state{test_config()};
+    open_scene(state, file);
+    ASSERT_FALSE(state.doc.loaded);
+    viewer.press_key(state, keys::letter('T'));
+    viewer.text_editor().jump = 0;
+    viewer.frame(state);
+    viewer.frame(state);
+    std::vector<KeyEvent> events;
+    type(events, "# still broken\n");
+    viewer.key_events(state, events, 40.0, 16.0);
+    state.check.checker.wait();
+    viewer.frame(state);
+    viewer.frame(state);
+    ASSERT_FALSE(state.doc.loaded);
+    ASSERT_TRUE(state.doc.draft.has_value()) << "the typed text, with its error";
+    EXPECT_EQ(state.message.find("last good"), std::string::npos) << state.message;
+    EXPECT_EQ(find_item(viewer.ui_items(), "errors: showing the last good image"), nullptr);
+    EXPECT_NE(find_item(viewer.ui_items(), "errors: no image until they are mended"), nullptr);
+    fs::remove_all(file.parent_path());
+}
+
 // Found in the real window (1500x950, the split scene): the hint beside an
 // included file's name ran past the editor's right edge ("Ctrl+Z undoe").
 // A hint that does not fit gives its brief form, the whole in its tooltip,

@@ -430,10 +430,13 @@ void text_editor(AppState& state, TextEditorState& ed, float x0, float y0, float
         ImGui::SameLine();
         if (state.check.checker.in_flight())
             ImGui::TextDisabled("checking...");
-        else if (draft)
-            ImGui::TextColored(ImVec4(1.0f, 0.45f, 0.4f, 1.0f),
-                               "errors: showing the last good image");
-        else
+        else if (draft) {
+            // Before any good load there is no image to keep.
+            const char* errors = doc.loaded ? "errors: showing the last good image"
+                                            : "errors: no image until they are mended";
+            ImGui::TextColored(ImVec4(1.0f, 0.45f, 0.4f, 1.0f), "%s", errors);
+            note_item(errors, false);
+        } else
             hint_text("Ctrl+Z undoes panel and text edits alike", "Ctrl+Z undoes all edits",
                       "text editor hint");
         if (doc.file_deleted) {
