@@ -387,5 +387,31 @@ TEST_F(ViewerIncludes, ABlockOfAnIncludedFileIsNotEditedInTheSceneFilesText) {
     EXPECT_EQ(state.doc.scene.lights.size(), 2u);
 }
 
+// Found in the real window: Add object > sphere in scenes/split, whose last
+// object is written in parts/objects.jts, put the sphere at that object's
+// offset in the scene file's text (inside a light block's line), first of
+// the objects, and selected the last one, the blue ball of objects.jts. A
+// new object or light goes at the end of the scene block, after the
+// include, and is the one selected.
+TEST_F(ViewerIncludes, AnObjectAddedAfterAnIncludedOneIsTheLastAndSelected) {
+    save_as_editor(ball, "sphere { center: <0, 0, -5>; radius: 1; }\n");
+    save_as_editor(main, kMain);
+    open_scene(state, main);
+    ASSERT_TRUE(state.doc.loaded) << format_diagnostics(state.doc);
+    ASSERT_TRUE(add_object(state, ShapeKind::cylinder)) << state.message;
+    ASSERT_EQ(state.doc.scene.primitives.size(), 2u);
+    EXPECT_TRUE(shape_if<Cylinder>(&state.doc.scene.primitives[1].shape)) << "the last";
+    EXPECT_EQ(state.view.selection, (Selection{Selection::Kind::primitive, 1}));
+    const std::string text = document_text(state.doc);
+    EXPECT_GT(text.find("cylinder"), text.find("include \"parts/ball.jts\";")) << text;
+    EXPECT_EQ(text.find("point_light { position: <3, 5, 4>; }"),
+              kMain.find("point_light { position: <3, 5, 4>; }"))
+        << "the light's text as it was: " << text;
+
+    ASSERT_TRUE(add_light(state)) << state.message;
+    ASSERT_EQ(state.doc.scene.lights.size(), 2u);
+    EXPECT_EQ(state.view.selection, (Selection{Selection::Kind::light, 1}));
+}
+
 }  // namespace
 }  // namespace jt::view
