@@ -47,6 +47,9 @@ namespace {
 void finish_open(AppState& state, const std::filesystem::path& path, LoadAttempt attempt) {
     const bool ok = attempt.ok;
     const bool first = !state.doc.loaded;
+    // A file read with errors as the first scene is the document all the
+    // same (the title's, the text editor's to mend): listed as opened.
+    const bool listed = ok || (first && attempt.read);
     // Only the cameras are compared: copying the whole scene would cost as
     // much as the load's own copies.
     const std::vector<Camera> before = state.doc.scene.cameras;
@@ -61,6 +64,10 @@ void finish_open(AppState& state, const std::filesystem::path& path, LoadAttempt
         state.files.watcher = FileWatcher(state.config.watch_interval);
         state.files.watcher.watch(path);
     }
+    if (listed) {
+        state.files.recent.add(path);
+        state.fields.open_path_input = path.string();
+    }
     if (ok) {
         state.view.camera_index = std::max(active_camera_index(state.doc.scene), 0);
         state.view.free_camera_active = false;
@@ -73,9 +80,7 @@ void finish_open(AppState& state, const std::filesystem::path& path, LoadAttempt
             state.fields.save_scene_path.clear();
         }
         after_scene_replaced(state, before);
-        state.files.recent.add(path);
-        state.fields.open_path_input = path.string();
-        state.message = "Opened " + path.string();
+        state.message.claim_read("Opened " + path.string(), "opening", path.filename().string());
     } else if (!first && state.doc.path != path) {
         state.message = "Could not open " + path.filename().string() +
                         (has_located(state.doc.diagnostics) ? ": it has errors" : "") +
@@ -139,7 +144,7 @@ void finish_reload(AppState& state, LoadAttempt attempt) {
         // unchanged: the image shown is of this very scene.
         if (*state.doc.original == *shown)
             keep_render_for(state.render, revision, state.doc.revision);
-        state.message = "Reloaded " + name;
+        state.message.claim_read("Reloaded " + name, "reloading", name);
         return;
     }
     // Replacing the scene now would throw the edits away: ask first.
@@ -375,7 +380,8 @@ void resolve_reload(AppState& state, ReloadChoice choice) {
         state.history.undo.record({state.doc.text, *state.doc.original, std::nullopt});
         state.message = "Reloaded " + name + " and re-applied your edits (not saved yet)";
     } else {
-        state.message = "Reloaded " + name + "; your edits were dropped";
+        state.message.claim_read("Reloaded " + name + "; your edits were dropped", "reloading",
+                                 name);
     }
 }
 
@@ -445,11 +451,7 @@ bool has_unsaved_work(const AppState& state) {
 }
 
 const std::string& shown_message(const AppState& state) {
-    // Made once: the status line asks every frame, and an idle frame
-    // allocates nothing.
-    static const std::string edited_since_the_save =
-        "Edited since the save: Ctrl+S saves the edits";
-    if (state.message.claims_saved && has_unsaved_work(state)) return edited_since_the_save;
+    if (state.message.claims() && has_unsaved_work(state)) return state.message.when_edited;
     return state.message;
 }
 
