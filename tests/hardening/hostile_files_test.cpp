@@ -284,6 +284,30 @@ TEST_F(HostileModels, PlyWhoseDataStartsOnTheEndHeaderLineIsRefused) {
                               "start on the next line)");
 }
 
+// Found by fuzz/model_fuzzer: Assimp takes the magic word in any case, so the
+// header's checks do too ("Ply" and "PLY" read for ever as "ply" did).
+TEST_F(HostileModels, PlyHeaderChecksTakeTheMagicWordInAnyCase) {
+    const FuzzedModel model = fuzzed_model("ply-capital-magic-data-on-end-header-line");
+    ASSERT_EQ(model.bytes.rfind("Ply\n", 0), 0u);
+    write_scene_naming("fuzzed.ply", model.bytes);
+    expect_refused_everywhere("fuzzed.ply",
+                              "its PLY header's end_header line has more on it (the data must "
+                              "start on the next line)");
+    write_scene_naming("endless.ply",
+                       "PLY\nformat ascii 1.0\nelement vertex 3\nproperty float x\n"
+                       "property float y\nproperty float z\n0 0 0\n1 0 0\n0 1 0\n");
+    expect_refused_everywhere(
+        "endless.ply", "its PLY header does not end (no end_header line within 10000 lines)");
+    // The same header with its end, in capitals, loads.
+    write_scene_naming("capital.ply",
+                       "PLY\nformat ascii 1.0\nelement vertex 3\nproperty float x\n"
+                       "property float y\nproperty float z\nelement face 1\n"
+                       "property list uchar int vertex_indices\nend_header\n"
+                       "0 0 0\n1 0 0\n0 1 0\n3 0 1 2\n");
+    const ProgramRun r = run({"scene/hostile.jts", "--check"});
+    EXPECT_EQ(r.code, 0) << r.err;
+}
+
 // Found by fuzz/model_fuzzer: Assimp corrupts its heap (the program aborts)
 // on a binary PLY whose header declares its vertices twice.
 TEST_F(HostileModels, PlyDeclaringAnElementTwiceIsRefused) {

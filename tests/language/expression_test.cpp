@@ -225,7 +225,9 @@ TEST(Expressions, HugeAndDeepInputsAreQuickAndLocated) {
     EXPECT_EQ(number_of(sum), static_cast<double>((sum.size() - 1) / 4));
     const double seconds =
         std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
-    EXPECT_LT(seconds, 10.0);
+    // Release takes about a second and ASan on a loaded machine ten; a
+    // quadratic reading of the 2.6 million operators would take hours.
+    EXPECT_LT(seconds, 60.0);
 }
 
 TEST(Expressions, AValueRemembersHowItWasWritten) {

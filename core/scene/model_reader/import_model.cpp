@@ -62,7 +62,7 @@ std::string lower_extension(const std::filesystem::path& file) {
 }
 
 // What a PLY header must be before Assimp reads the file, or "" when it is
-// one (or the file is no PLY):
+// one (or the file is no PLY, whose first line starts "ply" in any case):
 // - it ends with a line that is "end_header" alone: Assimp 5.2 reads for ever
 //   through a header without one, and through one whose data starts on the
 //   end_header line itself;
@@ -74,7 +74,10 @@ constexpr int kMaxPlyHeaderLines = 10000;
 std::string ply_header_problem(const std::filesystem::path& file, std::uintmax_t size) {
     std::ifstream in(file, std::ios::binary);
     std::string line;
-    if (!std::getline(in, line) || line.rfind("ply", 0) != 0) return "";
+    // Assimp takes "ply" in any case as the magic word.
+    if (!std::getline(in, line) || line.size() < 3) return "";
+    for (std::size_t i = 0; i < 3; ++i)
+        if (std::tolower(static_cast<unsigned char>(line[i])) != "ply"[i]) return "";
     std::vector<std::string> elements;
     for (int lines = 0; lines < kMaxPlyHeaderLines && std::getline(in, line); ++lines) {
         if (line.rfind("end_header", 0) == 0) {
