@@ -134,7 +134,7 @@ RankFrame set_up_rank(const Options& o, jt::frontend::SceneSequence* sequence, i
 }
 
 // What stays of a run stopped at frame `index` (the only one without --frames).
-std::string kept(const jt::frontend::FrameRange& range, int index) {
+std::string written_before(const jt::frontend::FrameRange& range, int index) {
     if (index == range.first) return "nothing was written";
     return "frames " + std::to_string(range.first) + ".." + std::to_string(index - 1) +
            " were written";
@@ -214,7 +214,8 @@ void print_stats(const CoordinatorResult& result, const std::vector<RankStats>& 
 int run_worker_frames(const Options& o, jt::frontend::SceneSequence* sequence, int rank) {
     int code = exit_ok;
     bool first = true;
-    for (std::int32_t index = receive_frame_index(); index >= 0; index = receive_frame_index()) {
+    for (std::int32_t index = receive_frame_index(); index != no_more_frames;
+         index = receive_frame_index()) {
         bool another_frame = false;
         code = run_worker(
             host_name(),
@@ -249,12 +250,12 @@ class KeptFrames {
         if (!o_.skip_existing) return from;
         for (int index = from; index <= last; ++index) {
             if (!keeps(index)) return index;
-            ++count;
+            ++frames_kept;
         }
         return last + 1;
     }
 
-    int count = 0;  // frames kept so far
+    int frames_kept = 0;  // so far
 
   private:
     const Options& o_;
@@ -336,8 +337,9 @@ int run(int argc, char** argv, int rank, int ranks) {
         const int signal = jt::frontend::stop_signal();
         const bool more = index <= range.last && signal == 0;
         if (workers_wait)
-            for (int worker = 1; worker < ranks; ++worker) send_frame(worker, more ? index : -1);
-        if (signal != 0) return stop_for_signal(signal, kept(range, index), false);
+            for (int worker = 1; worker < ranks; ++worker)
+                send_frame(worker, more ? index : no_more_frames);
+        if (signal != 0) return stop_for_signal(signal, written_before(range, index), false);
         if (!more) break;
         const auto frame_start = Clock::now();
         RankFrame frame = set_up_rank(o, frames, index);
@@ -347,9 +349,9 @@ int run(int argc, char** argv, int rank, int ranks) {
             if (const jt::Expected<void> writable = jt::check_atomic_write(frame.output);
                 !writable) {
                 frame.mine.exit_code = exit_io_error;
-                frame.mine.message += "jtracer-mpi: " + writable.error().message + "; " +
-                                      (o.frames ? kept(range, index) : "nothing was rendered") +
-                                      "\n";
+                frame.mine.message +=
+                    "jtracer-mpi: " + writable.error().message + "; " +
+                    (o.frames ? written_before(range, index) : "nothing was rendered") + "\n";
             }
         const RankSetUp& mine = frame.mine;
         const double setup_seconds =
@@ -404,7 +406,7 @@ int run(int argc, char** argv, int rank, int ranks) {
         if (!result.complete)
             return stop_for_signal(
                 jt::frontend::stop_signal() != 0 ? jt::frontend::stop_signal() : SIGINT,
-                kept(range, index), ranks > 1);
+                written_before(range, index), ranks > 1);
         workers_wait = result.another_frame;
         result.stats.setup_seconds = setup_seconds;
         std::vector<RankStats> stats = result.rank_stats;
@@ -427,8 +429,9 @@ int run(int argc, char** argv, int rank, int ranks) {
             std::cerr << "kept all " << total << " frames, already there (" << time << ")\n";
         else
             std::cerr << "wrote " << rendered << (rendered == 1 ? " frame" : " frames")
-                      << (kept_frames.count > 0
-                              ? " and kept " + std::to_string(kept_frames.count) + " already there"
+                      << (kept_frames.frames_kept > 0
+                              ? " and kept " + std::to_string(kept_frames.frames_kept) +
+                                    " already there"
                               : std::string())
                       << " in " << time << "\n";
     }
