@@ -249,7 +249,7 @@ class KeptFrames {
     int next_to_render(int from, int last) {
         if (!o_.skip_existing) return from;
         for (int index = from; index <= last; ++index) {
-            if (!keeps(index)) return index;
+            if (!frame_is_kept(index)) return index;
             ++frames_kept;
         }
         return last + 1;
@@ -261,8 +261,8 @@ class KeptFrames {
     const Options& o_;
     std::optional<jt::frontend::SceneSequence> checker_;
 
-    bool keep(const std::string& output, const jt::RenderOptions& render, jt::ImageFormat format,
-              const std::string& what) const {
+    bool keep_output(const std::string& output, const jt::RenderOptions& render,
+                     jt::ImageFormat format, const std::string& what) const {
         // An output that is the scene file is refused by the set-up.
         if (jt::frontend::same_file(output, o_.scene_path)) return false;
         return jt::frontend::keep_existing_output(
@@ -270,15 +270,16 @@ class KeptFrames {
             what);
     }
 
-    bool keeps(int index) {
+    bool frame_is_kept(int index) {
         if (!checker_) {
             const FrameSetup setup = jt::frontend::set_up_frame("jtracer-mpi", o_);
-            return setup.exit_code == exit_ok && keep(setup.output, setup.render, setup.format, "");
+            return setup.exit_code == exit_ok &&
+                   keep_output(setup.output, setup.render, setup.format, "");
         }
         const jt::frontend::SequenceFrame frame =
             checker_->frame(index, false, [&](const jt::frontend::SequenceFrame& f) {
-                return keep(f.output, f.render, f.format,
-                            " (frame " + std::to_string(f.index) + ")");
+                return keep_output(f.output, f.render, f.format,
+                                   " (frame " + std::to_string(f.index) + ")");
             });
         return frame.exit_code == exit_ok && frame.skipped;
     }
