@@ -125,17 +125,8 @@ int run_sequence(const Options& o) {
         std::cerr << o.scene_path << ": no errors in frames " << range.first << ".." << range.last
                   << "\n";
     if (!o.quiet && !o.check_only && total > 1) {
-        const int written = total - kept_frames;
-        const std::string time =
-            format_duration(std::chrono::duration<double>(Clock::now() - start).count());
-        if (written == 0)
-            std::cerr << "kept all " << total << " frames, already there (" << time << ")\n";
-        else
-            std::cerr << "wrote " << written << (written == 1 ? " frame" : " frames")
-                      << (kept_frames > 0
-                              ? " and kept " + std::to_string(kept_frames) + " already there"
-                              : std::string())
-                      << " in " << time << "\n";
+        std::cerr << sequence_summary(total, total - kept_frames, kept_frames,
+                                      std::chrono::duration<double>(Clock::now() - start).count());
     }
     return exit_ok;
 }

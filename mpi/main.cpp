@@ -424,17 +424,9 @@ int run(int argc, char** argv, int rank, int ranks) {
         index = kept_frames.next_to_render(index + 1, range.last);
     }
     if (!o.quiet && o.frames && total > 1) {
-        const std::string time = jt::frontend::format_duration(
+        std::cerr << jt::frontend::sequence_summary(
+            total, rendered, kept_frames.frames_kept,
             std::chrono::duration<double>(Clock::now() - sequence_start).count());
-        if (rendered == 0)
-            std::cerr << "kept all " << total << " frames, already there (" << time << ")\n";
-        else
-            std::cerr << "wrote " << rendered << (rendered == 1 ? " frame" : " frames")
-                      << (kept_frames.frames_kept > 0
-                              ? " and kept " + std::to_string(kept_frames.frames_kept) +
-                                    " already there"
-                              : std::string())
-                      << " in " << time << "\n";
     }
     return exit_ok;
 }
