@@ -134,7 +134,7 @@ RankFrame set_up_rank(const Options& o, jt::frontend::SceneSequence* sequence, i
 }
 
 // What stays of a run stopped at frame `index` (the only one without --frames).
-std::string kept(const jt::frontend::FrameRange& range, int index) {
+std::string written_before(const jt::frontend::FrameRange& range, int index) {
     if (index == range.first) return "nothing was written";
     return "frames " + std::to_string(range.first) + ".." + std::to_string(index - 1) +
            " were written";
@@ -214,7 +214,8 @@ void print_stats(const CoordinatorResult& result, const std::vector<RankStats>& 
 int run_worker_frames(const Options& o, jt::frontend::SceneSequence* sequence, int rank) {
     int code = exit_ok;
     bool first = true;
-    for (std::int32_t index = receive_frame_index(); index >= 0; index = receive_frame_index()) {
+    for (std::int32_t index = receive_frame_index(); index != no_more_frames;
+         index = receive_frame_index()) {
         bool another_frame = false;
         code = run_worker(
             host_name(),
@@ -248,20 +249,20 @@ class KeptFrames {
     int next_to_render(int from, int last) {
         if (!o_.skip_existing) return from;
         for (int index = from; index <= last; ++index) {
-            if (!keeps(index)) return index;
-            ++count;
+            if (!frame_is_kept(index)) return index;
+            ++frames_kept;
         }
         return last + 1;
     }
 
-    int count = 0;  // frames kept so far
+    int frames_kept = 0;  // so far
 
   private:
     const Options& o_;
     std::optional<jt::frontend::SceneSequence> checker_;
 
-    bool keep(const std::string& output, const jt::RenderOptions& render, jt::ImageFormat format,
-              const std::string& what) const {
+    bool keep_output(const std::string& output, const jt::RenderOptions& render,
+                     jt::ImageFormat format, const std::string& what) const {
         // An output that is the scene file is refused by the set-up.
         if (jt::frontend::same_file(output, o_.scene_path)) return false;
         return jt::frontend::keep_existing_output(
@@ -269,15 +270,16 @@ class KeptFrames {
             what);
     }
 
-    bool keeps(int index) {
+    bool frame_is_kept(int index) {
         if (!checker_) {
             const FrameSetup setup = jt::frontend::set_up_frame("jtracer-mpi", o_);
-            return setup.exit_code == exit_ok && keep(setup.output, setup.render, setup.format, "");
+            return setup.exit_code == exit_ok &&
+                   keep_output(setup.output, setup.render, setup.format, "");
         }
         const jt::frontend::SequenceFrame frame =
             checker_->frame(index, false, [&](const jt::frontend::SequenceFrame& f) {
-                return keep(f.output, f.render, f.format,
-                            " (frame " + std::to_string(f.index) + ")");
+                return keep_output(f.output, f.render, f.format,
+                                   " (frame " + std::to_string(f.index) + ")");
             });
         return frame.exit_code == exit_ok && frame.skipped;
     }
@@ -336,8 +338,9 @@ int run(int argc, char** argv, int rank, int ranks) {
         const int signal = jt::frontend::stop_signal();
         const bool more = index <= range.last && signal == 0;
         if (workers_wait)
-            for (int worker = 1; worker < ranks; ++worker) send_frame(worker, more ? index : -1);
-        if (signal != 0) return stop_for_signal(signal, kept(range, index), false);
+            for (int worker = 1; worker < ranks; ++worker)
+                send_frame(worker, more ? index : no_more_frames);
+        if (signal != 0) return stop_for_signal(signal, written_before(range, index), false);
         if (!more) break;
         const auto frame_start = Clock::now();
         RankFrame frame = set_up_rank(o, frames, index);
@@ -347,9 +350,9 @@ int run(int argc, char** argv, int rank, int ranks) {
             if (const jt::Expected<void> writable = jt::check_atomic_write(frame.output);
                 !writable) {
                 frame.mine.exit_code = exit_io_error;
-                frame.mine.message += "jtracer-mpi: " + writable.error().message + "; " +
-                                      (o.frames ? kept(range, index) : "nothing was rendered") +
-                                      "\n";
+                frame.mine.message +=
+                    "jtracer-mpi: " + writable.error().message + "; " +
+                    (o.frames ? written_before(range, index) : "nothing was rendered") + "\n";
             }
         const RankSetUp& mine = frame.mine;
         const double setup_seconds =
@@ -404,7 +407,7 @@ int run(int argc, char** argv, int rank, int ranks) {
         if (!result.complete)
             return stop_for_signal(
                 jt::frontend::stop_signal() != 0 ? jt::frontend::stop_signal() : SIGINT,
-                kept(range, index), ranks > 1);
+                written_before(range, index), ranks > 1);
         workers_wait = result.another_frame;
         result.stats.setup_seconds = setup_seconds;
         std::vector<RankStats> stats = result.rank_stats;
@@ -421,16 +424,9 @@ int run(int argc, char** argv, int rank, int ranks) {
         index = kept_frames.next_to_render(index + 1, range.last);
     }
     if (!o.quiet && o.frames && total > 1) {
-        const std::string time = jt::frontend::format_duration(
+        std::cerr << jt::frontend::sequence_summary(
+            total, rendered, kept_frames.frames_kept,
             std::chrono::duration<double>(Clock::now() - sequence_start).count());
-        if (rendered == 0)
-            std::cerr << "kept all " << total << " frames, already there (" << time << ")\n";
-        else
-            std::cerr << "wrote " << rendered << (rendered == 1 ? " frame" : " frames")
-                      << (kept_frames.count > 0
-                              ? " and kept " + std::to_string(kept_frames.count) + " already there"
-                              : std::string())
-                      << " in " << time << "\n";
     }
     return exit_ok;
 }

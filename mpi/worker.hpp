@@ -29,7 +29,7 @@ struct RankSetUp {
 int run_worker(const std::string& host, const std::function<RankSetUp()>& set_up,
                bool& another_frame);
 
-// The index of the frame rank 0 names next (tag_frame), -1 when none is left.
+// The index of the frame rank 0 names next (tag_frame), or no_more_frames.
 // Waits without spinning: the rank's cores may be rendering for other jobs.
 std::int32_t receive_frame_index();
 

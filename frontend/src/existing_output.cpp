@@ -28,21 +28,30 @@ std::uint32_t little_endian32(const std::uint8_t* p) {
            (std::uint32_t{p[3]} << 24);
 }
 
+// A PNG chunk's bytes besides its data: its length, type and checksum, four
+// bytes each.
+constexpr std::size_t png_chunk_overhead = 12;
+
+// The smallest BMP: its file header (14 bytes) and BITMAPINFOHEADER (40).
+constexpr std::size_t bmp_headers_bytes = 54;
+
 // Why a PNG's bytes are not whole: the PNG decoder fills in what a truncated
 // stream lacks rather than refuse it, so the chunks are walked here, each
 // with its checksum, up to an IEND that ends the file.
 std::optional<std::string> png_damage(const std::vector<std::uint8_t>& bytes) {
     static constexpr std::uint8_t signature[] = {0x89, 'P', 'N', 'G', '\r', '\n', 0x1A, '\n'};
-    if (bytes.size() < 8 || !std::equal(std::begin(signature), std::end(signature), bytes.begin()))
+    if (bytes.size() < std::size(signature) ||
+        !std::equal(std::begin(signature), std::end(signature), bytes.begin()))
         return "it is not a PNG";
-    std::size_t at = 8;
-    while (bytes.size() - at >= 12) {
+    std::size_t at = std::size(signature);
+    while (bytes.size() - at >= png_chunk_overhead) {
         const std::uint64_t length = big_endian32(&bytes[at]);
-        if (length > bytes.size() - at - 12) return "it is cut short (a chunk runs past its end)";
+        if (length > bytes.size() - at - png_chunk_overhead)
+            return "it is cut short (a chunk runs past its end)";
         const std::uint8_t* type = &bytes[at + 4];
         if (crc32_z(0, type, length + 4) != big_endian32(type + 4 + length))
             return "it is damaged (a chunk's checksum does not match)";
-        at += 12 + length;
+        at += png_chunk_overhead + length;
         if (std::equal(type, type + 4, "IEND"))
             return at == bytes.size() ? std::nullopt
                                       : std::optional<std::string>("bytes follow its end");
@@ -51,7 +60,8 @@ std::optional<std::string> png_damage(const std::vector<std::uint8_t>& bytes) {
 }
 
 std::optional<std::string> bmp_damage(const std::vector<std::uint8_t>& bytes) {
-    if (bytes.size() < 54 || bytes[0] != 'B' || bytes[1] != 'M') return "it is not a BMP";
+    if (bytes.size() < bmp_headers_bytes || bytes[0] != 'B' || bytes[1] != 'M')
+        return "it is not a BMP";
     if (little_endian32(&bytes[2]) != bytes.size())
         return "it is cut short (" + std::to_string(bytes.size()) + " bytes, its header says " +
                std::to_string(little_endian32(&bytes[2])) + ")";

@@ -18,6 +18,7 @@
 #include <mutex>
 #include <optional>
 #include <string>
+#include <utility>
 #include <vector>
 
 namespace jt::python {
@@ -43,6 +44,15 @@ inline const frontend::ArgumentNames python_names = {.values = {.defines = "defi
                                                                 .clock = "clock="},
                                                      .prefix = "",
                                                      .after_pass = "= to Scene.render()"};
+// `work()`, run without the GIL: a read, parse or encode of seconds in which
+// the program's other Python threads carry on. `work` touches no Python
+// object; its result is returned once the GIL is held again.
+template <class Work>
+auto without_gil(Work&& work) {
+    py::gil_scoped_release unlocked;
+    return std::forward<Work>(work)();
+}
+
 // Raises OSError with the core's message ("cannot read 'a.png': no such file").
 [[noreturn]] void raise_os_error(const std::string& message);
 

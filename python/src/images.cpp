@@ -17,7 +17,6 @@
 #include <cstring>
 #include <filesystem>
 #include <memory>
-#include <optional>
 #include <vector>
 
 namespace jt::python {
@@ -50,13 +49,9 @@ Image8 from_array(const py::array& array) {
 // The file is read and decoded without the GIL: a large picture takes a
 // second, in which the program's other Python threads carry on.
 Image8 read_or_raise(const std::filesystem::path& path) {
-    std::optional<Expected<Image8>> read;
-    {
-        py::gil_scoped_release unlocked;
-        read.emplace(read_image(path));
-    }
-    if (!*read) raise_os_error(read->error().message);
-    return std::move(**read);
+    Expected<Image8> read = without_gil([&] { return read_image(path); });
+    if (!read) raise_os_error(read.error().message);
+    return std::move(*read);
 }
 
 // `name` is the argument's, for the TypeError of anything else: pybind11's
@@ -95,7 +90,7 @@ py::array_t<std::uint8_t> to_array(Image8&& image) {
     std::uint8_t* data = pixels->data();
     py::capsule owner(pixels.get(),
                       [](void* held) { delete static_cast<std::vector<std::uint8_t>*>(held); });
-    pixels.release();  // the capsule owns it now
+    pixels.release();  // the capsule's deleter frees it
     return py::array_t<std::uint8_t>({height, width, py::ssize_t{3}}, data, owner);
 }
 
@@ -110,13 +105,10 @@ void bind_images(py::module_& m) {
         "write_image",
         [](const std::filesystem::path& path, const py::array& array) {
             const Image8 image = from_array(array);
-            std::optional<Expected<void>> written;
-            {
-                // Encoding a large PNG takes a while: other threads run meanwhile.
-                py::gil_scoped_release unlocked;
-                written.emplace(write_image(path, image, format_from_extension(path)));
-            }
-            if (!*written) raise_os_error(written->error().message);
+            // Encoding a large PNG takes a while.
+            const Expected<void> written =
+                without_gil([&] { return write_image(path, image, format_from_extension(path)); });
+            if (!written) raise_os_error(written.error().message);
         },
         py::arg("path"), py::arg("image"),
         "Writes a (height, width, 3) uint8 array as jtracer-cli writes images: PNG for a "

@@ -173,13 +173,9 @@ std::string scene_text(const PythonScene& s) {
 // As jtracer-cli reads a file: without the source map, which check_scene
 // builds only when there is something to locate.
 LoadedScene read_file(const std::filesystem::path& path, const ParseOptions& options) {
-    std::optional<Expected<LoadedScene>> loaded;
-    {
-        py::gil_scoped_release unlocked;
-        loaded.emplace(load_scene_file(path, options));
-    }
-    if (!*loaded) raise_os_error(loaded->error().message);
-    return std::move(**loaded);
+    Expected<LoadedScene> loaded = without_gil([&] { return load_scene_file(path, options); });
+    if (!loaded) raise_os_error(loaded.error().message);
+    return std::move(*loaded);
 }
 
 }  // namespace

@@ -87,6 +87,12 @@ TEST_F(Mpi, MeshSceneMatchesTheCliByteForByte) {
     expect_same_bytes_as_cli(mesh, "--width 96 --height 54", "32", {2});
 }
 
+// A scene that renders in no time, for tests of what happens around the
+// render (its file named as an output).
+constexpr const char* kEightPixelScene =
+    "render_settings { width: 8; height: 8; }\n"
+    "cameras { perspective_camera { position: <0, 0, 5>; } }\n";
+
 TEST_F(Mpi, BadSceneIsReportedOnceAndEveryRankFails) {
     test::write_file(dir / "bad.jts", "scene { sphere { radius: -1; } }\n");
     ProgramRun r = run_shell(mpirun(3) + "bad.jts -o out.bmp");
@@ -97,9 +103,7 @@ TEST_F(Mpi, BadSceneIsReportedOnceAndEveryRankFails) {
 
 // -o naming the scene file wrote the image over it, as jtracer-cli's did.
 TEST_F(Mpi, AnOutputThatIsTheSceneFileIsRefusedOnce) {
-    const std::string text =
-        "render_settings { width: 8; height: 8; }\n"
-        "cameras { perspective_camera { position: <0, 0, 5>; } }\n";
+    const std::string text = kEightPixelScene;
     test::write_file(dir / "self.jts", text);
     ProgramRun r = run_shell(mpirun(2) + "self.jts -o ./self.jts");
     EXPECT_EQ(r.code, 2) << r.err;
@@ -123,9 +127,7 @@ TEST_F(Mpi, AnOutputNamingAnotherImageFormatWarnsAsTheCliDoes) {
 // A frame of the range whose file is the scene file: refused before any frame
 // is written, as by jtracer-cli, not once the frames before it were.
 TEST_F(Mpi, AFrameThatIsTheSceneFileIsRefusedBeforeAnyFrame) {
-    const std::string text =
-        "render_settings { width: 8; height: 8; }\n"
-        "cameras { perspective_camera { position: <0, 0, 5>; } }\n";
+    const std::string text = kEightPixelScene;
     test::write_file(dir / "s-3.jts", text);
     ProgramRun r = run_shell(mpirun(2) + "s-3.jts -q --frames 5 -o 's-%d.jts'");
     EXPECT_EQ(r.code, 2) << r.err;

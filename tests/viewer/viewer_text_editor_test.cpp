@@ -48,6 +48,23 @@ void type(std::vector<KeyEvent>& events, const std::string& text) {
     }
 }
 
+// `text`, the test scene's, with the ';' after its height taken away: an
+// error at that line, which the viewer reports and the editor shows.
+std::string without_height_semicolon(std::string text) {
+    const std::string_view good = "height: 48;";
+    return text.replace(text.find(good), good.size(), "height: 48");
+}
+
+// A copy of the test scene under `name` whose file is broken from the start
+// (without_height_semicolon): opened, it loads no good scene. Its text goes
+// to `broken`.
+fs::path broken_scene_copy(const std::string& name, std::string& broken) {
+    const fs::path file = scene_copy(name);
+    broken = without_height_semicolon(read_file(file));
+    write_file(file, broken);
+    return file;
+}
+
 // Ctrl (with Shift) held around a tap of `code`.
 void shortcut(std::vector<KeyEvent>& events, int code, bool shift = false) {
     constexpr int ctrl_mod = 0x0002, shift_mod = 0x0001;
@@ -256,8 +273,7 @@ TEST_F(ViewerTextEditor, CtrlQInTheTextAsksBeforeQuitting) {
 // A file broken on disk showed the old good text and "No
 // errors" in the editor, and saving wrote the old text over the broken file.
 TEST_F(ViewerTextEditor, ABrokenFileOnDiskIsShownWithItsErrorsAndNeverSavedOver) {
-    const std::string broken =
-        std::string(original).replace(original.find("height: 48;"), 11, "height: 48");
+    const std::string broken = without_height_semicolon(std::string(original));
     write_file(file, broken);
     ASSERT_TRUE(viewer.run_until_loaded(state));
     viewer.frame(state);
@@ -301,10 +317,8 @@ TEST_F(ViewerTextEditor, ABrokenFileOnDiskIsShownWithItsErrorsAndNeverSavedOver)
 TEST(ViewerTextEditorOpen, AFileBrokenFromTheStartIsShownWithItsErrors) {
     HeadlessViewer viewer{1200, 700};
     ASSERT_TRUE(viewer.ok()) << viewer.error();
-    const fs::path file = scene_copy("text-editor-broken-at-start");
-    std::string broken = read_file(file);
-    broken.replace(broken.find("height: 48;"), 11, "height: 48");
-    write_file(file, broken);
+    std::string broken;
+    const fs::path file = broken_scene_copy("text-editor-broken-at-start", broken);
     AppState state{test_config()};
     open_scene(state, file);
     ASSERT_FALSE(state.doc.loaded);
@@ -695,10 +709,8 @@ TEST(ViewerIncludedFileEditor, TypedTextIsNotCalledFreeOfErrors) {
 TEST(ViewerTextEditorOpen, TypedErrorsBeforeAnyGoodSceneNameNoLastGoodImage) {
     HeadlessViewer viewer{1200, 700};
     ASSERT_TRUE(viewer.ok()) << viewer.error();
-    const fs::path file = scene_copy("text-editor-never-good");
-    std::string broken = read_file(file);
-    broken.replace(broken.find("height: 48;"), 11, "height: 48");
-    write_file(file, broken);
+    std::string broken;
+    const fs::path file = broken_scene_copy("text-editor-never-good", broken);
     AppState state{test_config()};
     open_scene(state, file);
     ASSERT_FALSE(state.doc.loaded);

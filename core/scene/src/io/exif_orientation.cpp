@@ -58,7 +58,7 @@ int orientation_in(std::span<const std::uint8_t> tiff) {
 
 int exif_orientation(std::span<const std::uint8_t> jpeg) {
     static constexpr char kExif[6] = {'E', 'x', 'i', 'f', 0, 0};
-    const auto tiff = jpeg_segment(jpeg, 0xE1, {kExif, sizeof kExif});
+    const auto tiff = jpeg_segment(jpeg, kJpegApp1, {kExif, sizeof kExif});
     return tiff ? orientation_in(*tiff) : 1;
 }
 

@@ -19,11 +19,28 @@ std::string unreadable(void* handle) {
     return std::string("cannot read the JPEG: ") + tjGetErrorStr2(handle);
 }
 
+// The frame header, as both the size check and the decoding read it (the
+// decoding for the colour space: CMYK samples come out four to a texel).
+struct JpegHeader {
+    int width = 0;
+    int height = 0;
+    int colour_space = 0;  // TJCS_...
+};
+
+Expected<JpegHeader> read_header(void* handle, std::span<const std::uint8_t> bytes) {
+    JpegHeader header;
+    int subsampling = 0;
+    if (tjDecompressHeader3(handle, bytes.data(), bytes.size(), &header.width, &header.height,
+                            &subsampling, &header.colour_space) != 0)
+        return Error{unreadable(handle)};
+    return header;
+}
+
 // Whether a CMYK JPEG's samples are the white its inks leave rather than the
 // inks: libjpeg (and so Pillow and the browsers) takes Adobe's APP14 segment
 // as the sign, since Adobe's programs, which write most CMYK JPEGs, invert them.
 bool inks_inverted(std::span<const std::uint8_t> bytes) {
-    return jpeg_segment(bytes, 0xEE, "Adobe").has_value();
+    return jpeg_segment(bytes, kJpegApp14, "Adobe").has_value();
 }
 
 // CMYK samples, 4 bytes a texel, turned into RGB in the same vector's first
@@ -48,7 +65,7 @@ void cmyk_to_rgb(std::vector<std::uint8_t>& samples, bool inverted) {
 std::optional<std::span<const std::uint8_t>> jpeg_segment(std::span<const std::uint8_t> jpeg,
                                                           std::uint8_t wanted,
                                                           std::string_view name) {
-    if (jpeg.size() < 4 || jpeg[0] != 0xFF || jpeg[1] != 0xD8) return std::nullopt;
+    if (jpeg.size() < 4 || !has_jpeg_signature(jpeg)) return std::nullopt;
     std::size_t at = 2;
     while (at + 4 <= jpeg.size()) {
         if (jpeg[at] != 0xFF) return std::nullopt;
@@ -82,24 +99,19 @@ bool has_jpeg_signature(std::span<const std::uint8_t> bytes) {
 Expected<JpegSize> read_jpeg_size(std::span<const std::uint8_t> bytes) {
     const Decompressor handle(tjInitDecompress());
     if (!handle) return Error{"cannot start the JPEG decoder"};
-    JpegSize size;
-    int subsampling = 0, colour_space = 0;
-    if (tjDecompressHeader3(handle.get(), bytes.data(), bytes.size(), &size.width, &size.height,
-                            &subsampling, &colour_space) != 0)
-        return Error{unreadable(handle.get())};
-    return size;
+    const Expected<JpegHeader> header = read_header(handle.get(), bytes);
+    if (!header) return header.error();
+    return JpegSize{header->width, header->height};
 }
 
 Expected<std::vector<std::uint8_t>> decode_jpeg(std::span<const std::uint8_t> bytes,
                                                 JpegSize size) {
     const Decompressor handle(tjInitDecompress());
     if (!handle) return Error{"cannot start the JPEG decoder"};
-    int width = 0, height = 0, subsampling = 0, colour_space = 0;
-    if (tjDecompressHeader3(handle.get(), bytes.data(), bytes.size(), &width, &height, &subsampling,
-                            &colour_space) != 0)
-        return Error{unreadable(handle.get())};
+    const Expected<JpegHeader> header = read_header(handle.get(), bytes);
+    if (!header) return header.error();
     // libjpeg-turbo gives a CMYK JPEG's samples only as CMYK.
-    const bool cmyk = colour_space == TJCS_CMYK || colour_space == TJCS_YCCK;
+    const bool cmyk = header->colour_space == TJCS_CMYK || header->colour_space == TJCS_YCCK;
     std::vector<std::uint8_t> samples(static_cast<std::size_t>(size.width) * size.height *
                                       (cmyk ? 4 : 3));
     // A warning stops the decoding too; the scan limit refuses a progressive

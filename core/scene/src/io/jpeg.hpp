@@ -24,7 +24,12 @@ struct JpegSize {
     int height = 0;
 };
 
-// The data of the first segment with this marker (0xE1 for APP1) whose data
+// The markers of the application segments read: APP1 holds EXIF, APP14
+// Adobe's record of how the colours are stored.
+inline constexpr std::uint8_t kJpegApp1 = 0xE1;
+inline constexpr std::uint8_t kJpegApp14 = 0xEE;
+
+// The data of the first segment with this marker (kJpegApp1, ...) whose data
 // starts with `name`, before the picture's data (SOS); its data past `name`.
 // Nothing for a JPEG without one, or whose segments are damaged before it.
 std::optional<std::span<const std::uint8_t>> jpeg_segment(std::span<const std::uint8_t> jpeg,

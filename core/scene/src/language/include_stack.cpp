@@ -170,12 +170,12 @@ std::string IncludeStack::location(SourcePos pos) const {
            std::to_string(pos.column);
 }
 
-std::string IncludeStack::place(SourcePos pos, SourcePos from) const {
+std::string IncludeStack::line_from(SourcePos pos, SourcePos from) const {
     if (pos.file == from.file) return "line " + std::to_string(pos.line);
     return location(pos);
 }
 
-std::string IncludeStack::point(SourcePos pos, SourcePos from) const {
+std::string IncludeStack::line_column_from(SourcePos pos, SourcePos from) const {
     if (pos.file == from.file) return std::to_string(pos.line) + ":" + std::to_string(pos.column);
     return location(pos);
 }
@@ -192,7 +192,7 @@ std::string IncludeStack::chain(std::uint32_t file) const {
 }
 
 std::string IncludeStack::where(SourcePos pos, SourcePos from) const {
-    if (pos.file == 0) return point(pos, from);
+    if (pos.file == 0) return line_column_from(pos, from);
     return location(pos) + chain(pos.file);
 }
 

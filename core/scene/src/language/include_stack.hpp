@@ -48,9 +48,10 @@ class IncludeStack {
     std::string where(SourcePos pos, SourcePos from) const;
     // Where `pos` is, for a message located at `from`: "line N" in the same
     // file, else "FILE:LINE:COL" (a line alone would be read in the wrong file).
-    std::string place(SourcePos pos, SourcePos from) const;
-    // The same as "LINE:COL", or "FILE:LINE:COL" in another file.
-    std::string point(SourcePos pos, SourcePos from) const;
+    std::string line_from(SourcePos pos, SourcePos from) const;
+    // As line_from, with the column: "LINE:COL" in the same file, else
+    // "FILE:LINE:COL".
+    std::string line_column_from(SourcePos pos, SourcePos from) const;
     // ", included from FILE:LINE:COL, ..." for file `file` ("" for the main file).
     std::string chain(std::uint32_t file) const;
 

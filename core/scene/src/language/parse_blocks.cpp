@@ -210,8 +210,8 @@ void SceneParser::parse_render_settings() {
         sink_.warning(block.keyword_span.pos,
                       "another 'render_settings' block: only the last one is used, so the "
                       "one at " +
-                          include_.place(result_.source.render_settings->keyword_span.pos,
-                                         block.keyword_span.pos) +
+                          include_.line_from(result_.source.render_settings->keyword_span.pos,
+                                             block.keyword_span.pos) +
                           " is ignored");
     }
     result_.scene.settings = std::move(settings);

@@ -68,7 +68,7 @@ std::string SceneParser::directive_comment(SourcePos from) const {
     SourcePos directive = lexer_.directive_comment();
     if (directive.line == 0) directive = included_directive_;
     if (directive.line == 0) directive = reading_->directive_comment();
-    return directive.line == 0 ? std::string() : include_.point(directive, from);
+    return directive.line == 0 ? std::string() : include_.line_column_from(directive, from);
 }
 
 void SceneParser::rebase_file_name(Property& property) {

@@ -113,9 +113,9 @@ void SceneParser::parse_define() {
         return;
     }
     const bool glued = value.form != Value::Form::bad && glued_to(value.end);
-    const bool next_to =
+    const bool name_beside =
         value.form != Value::Form::bad && !glued && !cut_short(value) && beside(value.end);
-    const bool good = value.form != Value::Form::bad && !cut_short(value) && !glued && !next_to;
+    const bool good = value.form != Value::Form::bad && !cut_short(value) && !glued && !name_beside;
     if (claimed && !overridden) {
         Symbol& symbol = names_.add(name.text);
         symbol.defined_at = name.pos;
@@ -141,7 +141,7 @@ void SceneParser::parse_define() {
         result_.source.definitions.push_back(
             {std::string(name.text), span_of(name), value.span, value.origin, std::nullopt});
     }
-    if (glued || next_to)
+    if (glued || name_beside)
         sink_.error(value.end, "expected ';' after the value of 'define " + std::string(name.text) +
                                    "'" + std::string(glued ? glued_hint : beside_hint));
     if (!good) {

@@ -73,7 +73,7 @@ void SceneParser::parse_scene() {
         sink_.warning(
             block.keyword_span.pos,
             "another 'scene' block: only the last one is used, so the one at " +
-                include_.place(result_.source.scene->keyword_span.pos, block.keyword_span.pos) +
+                include_.line_from(result_.source.scene->keyword_span.pos, block.keyword_span.pos) +
                 " is ignored");
     }
     std::vector<Primitive>& primitives = children.primitives;
