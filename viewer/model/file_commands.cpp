@@ -145,6 +145,15 @@ void finish_reload(AppState& state, LoadAttempt attempt) {
         if (*state.doc.original == *shown)
             keep_render_for(state.render, revision, state.doc.revision);
         state.message.claim_read("Reloaded " + name, "reloading", name);
+        // The scene now reads the file, the editor still shows the text typed
+        // in it before: said now, not first when Save refuses.
+        std::vector<std::string> under;
+        for (const std::string& canonical : conflicting_drafts(state.doc, state.editor))
+            under.push_back(draft_of(state.editor, canonical)->name);
+        if (!under.empty())
+            state.message = listed_names(under) +
+                            " changed on disk while you were typing in it: the image shows the "
+                            "file; Revert drops your text, Save scene asks before replacing it";
         return;
     }
     // Replacing the scene now would throw the edits away: ask first.

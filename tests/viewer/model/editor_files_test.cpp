@@ -188,6 +188,10 @@ TEST_F(EditorFilesTest, AConflictOverTypedIncludedTextCanBeEndedByDroppingIt) {
     const std::string theirs = "sphere { center: <0, 0, -5>; radius: 4.5; }\n";
     write(ball, theirs);
     ASSERT_TRUE(model.run_until_loaded(state));
+    // Said at once: the editor still shows the text typed before the change.
+    EXPECT_NE(shown_message(state).find("parts/ball.jts changed on disk while you were typing"),
+              std::string::npos)
+        << shown_message(state);
     EXPECT_FALSE(save_scene(state));
     ASSERT_EQ(state.files.save_conflict_drafts, std::vector<std::string>{file});
 
