@@ -245,6 +245,10 @@ struct FileState {
     // Why the last Save scene was refused (the file changed on disk), or empty;
     // save_scene_anyway overwrites it.
     std::string save_conflict;
+    // The included files typed in whose change refused it (canonical), or
+    // none when the scene file's did: reloading would keep their drafts, so
+    // the choice offered is to drop them (revert_conflicting_drafts).
+    std::vector<std::string> save_conflict_drafts;
     std::optional<GuardedCommand> unsaved_prompt;
     std::string save_as_conflict;  // the file Save scene as would replace, until confirmed
     // The unsaved work there was when the open under way was asked for: none,

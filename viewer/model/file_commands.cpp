@@ -145,6 +145,15 @@ void finish_reload(AppState& state, LoadAttempt attempt) {
         if (*state.doc.original == *shown)
             keep_render_for(state.render, revision, state.doc.revision);
         state.message.claim_read("Reloaded " + name, "reloading", name);
+        // The scene now reads the file, the editor still shows the text typed
+        // in it before: said now, not first when Save refuses.
+        std::vector<std::string> under;
+        for (const std::string& canonical : conflicting_drafts(state.doc, state.editor))
+            under.push_back(draft_of(state.editor, canonical)->name);
+        if (!under.empty())
+            state.message = listed_names(under) +
+                            " changed on disk while you were typing in it: the image shows the "
+                            "file; Revert drops your text, Save scene asks before replacing it";
         return;
     }
     // Replacing the scene now would throw the edits away: ask first.
@@ -469,12 +478,14 @@ bool save_scene(AppState& state) {
     if (state.doc.loaded && writes_scene && file_changed_on_disk(state.doc, what)) {
         state.files.save_conflict = state.doc.path.filename().string() + " " + what +
                                     " since it was loaded; saving would replace that";
+        state.files.save_conflict_drafts.clear();
         state.message = "Scene not saved: " + state.files.save_conflict;
         return false;
     }
     if (const std::string conflict = included_draft_conflict(state.doc, state.editor);
         !conflict.empty()) {
         state.files.save_conflict = conflict + "; saving would replace that";
+        state.files.save_conflict_drafts = conflicting_drafts(state.doc, state.editor);
         state.message = "Not saved: " + state.files.save_conflict;
         return false;
     }
@@ -483,6 +494,21 @@ bool save_scene(AppState& state) {
 
 bool save_scene_anyway(AppState& state) {
     return save_now(state);
+}
+
+void revert_conflicting_drafts(AppState& state) {
+    std::vector<std::string> names;
+    for (const std::string& canonical : state.files.save_conflict_drafts) {
+        if (const IncludedDraft* d = draft_of(state.editor, canonical)) names.push_back(d->name);
+        revert_included_draft(state.editor, canonical);
+    }
+    state.files.save_conflict.clear();
+    state.files.save_conflict_drafts.clear();
+    // The scene already reads those files as they are on disk (the watcher
+    // reloaded it): a draft is taken in only by a save.
+    if (!names.empty())
+        state.message = "Dropped what you typed in " + listed_names(names) +
+                        ": the scene reads it as it is on disk";
 }
 
 bool save_image(AppState& state, const std::filesystem::path& path) {
