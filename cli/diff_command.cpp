@@ -119,7 +119,8 @@ int run_diff_command(int argc, char** argv) {
     app.add_option("actual", actual_path, "The image to check against it (BMP or PNG)")->required();
     app.add_option("-o,--output", heat_map_path,
                    "Write a heat map of the differences here (PNG, or BMP for a .bmp name): "
-                   "pixels over the threshold from red to white, the rest dim grey")
+                   "pixels over the threshold from red to white, the rest dim grey; - is "
+                   "standard output (a PNG; the report then goes to stderr)")
         ->type_name("FILE");
     add_tolerance_flags(app, tolerance);
     app.add_flag("--json", json,
@@ -135,6 +136,14 @@ int run_diff_command(int argc, char** argv) {
     auto checks = [&] {
         if (app.count("--output") && heat_map_path.empty())
             throw CLI::ValidationError("-o/--output", "needs a file name, not an empty string");
+        heat_map_path = output_name(heat_map_path);
+        if (heat_map_path == "/dev/stdout" && json)
+            throw CLI::ValidationError("-o/--output",
+                                       "standard output cannot hold both the heat map and "
+                                       "--json's object: name a file for the heat map");
+        if (!heat_map_path.empty())
+            if (std::optional<std::string> refused = output_refusal(heat_map_path))
+                throw CLI::ValidationError("-o/--output", *refused);
         if (junit && junit->empty())
             throw CLI::ValidationError("--junit", "needs a file name, not an empty string");
         for (const auto& [flag, written] :
@@ -182,12 +191,15 @@ int run_diff_command(int argc, char** argv) {
             }
         ImageDiff d = diff_images(*expected, *actual, tolerance.threshold);
         r = compared(std::move(r), *expected, *actual, d, tolerance);
+        // With the heat map on standard output (-o -), the report goes to
+        // stderr, as jtracer-cli's messages do when -o - carries the image.
+        std::ostream& report_out = heat_map_path == "/dev/stdout" ? std::cerr : std::cout;
         if (!quiet && !json) {
-            std::cout << expected_path << ": " << size_text(*expected) << "\n"
-                      << actual_path << ": " << size_text(*actual) << "\n"
-                      << r.text
-                      << (r.verdict == Verdict::within ? "within the tolerance\n"
-                                                       : "OUTSIDE the tolerance\n");
+            report_out << expected_path << ": " << size_text(*expected) << "\n"
+                       << actual_path << ": " << size_text(*actual) << "\n"
+                       << r.text
+                       << (r.verdict == Verdict::within ? "within the tolerance\n"
+                                                        : "OUTSIDE the tolerance\n");
         }
         if (!heat_map_path.empty()) {
             if (!d.same_size) {
@@ -195,10 +207,10 @@ int run_diff_command(int argc, char** argv) {
             } else if (const Expected<void> written =
                            write_image(heat_map_path, d.image, heat_map_format(heat_map_path));
                        !written) {
-                std::cerr << program << ": " << written.error().message << "\n";
+                std::cerr << program << ": " << shown_write_error(written.error().message) << "\n";
                 return finish(exit_io_error);
             } else {
-                r.heat_map_path = heat_map_path;
+                r.heat_map_path = shown_output(heat_map_path);
             }
         }
         return finish(r.verdict == Verdict::within ? exit_ok : exit_outside_tolerance);
@@ -234,7 +246,7 @@ int check_expected(const Image8& render, const std::string& render_path,
     ComparisonReport r;
     r.name = expect.scene_path;
     r.expected_path = reference;
-    r.actual_path = render_path;
+    r.actual_path = shown_output(render_path);
     r.threshold = expect.tolerance.threshold;
     r.max_percent = expect.tolerance.max_percent;
     r.actual_size = ImageSize{render.width, render.height};
@@ -277,8 +289,9 @@ int check_expected(const Image8& render, const std::string& render_path,
         const std::string sizes =
             "the render is " + size_text(render) + ", the reference " + size_text(*expected);
         if (expect.update) return update(sizes);
-        std::cerr << "jtracer-cli: the render (" << size_text(render) << ", in " << render_path
-                  << ") is not the size of " << reference << " (" << size_text(*expected) << ")\n";
+        std::cerr << "jtracer-cli: the render (" << size_text(render) << ", in "
+                  << shown_output(render_path) << ") is not the size of " << reference << " ("
+                  << size_text(*expected) << ")\n";
         remove_stale_heat_map();  // none is drawn for images of different sizes
         return finish(exit_outside_tolerance);
     }
@@ -290,7 +303,7 @@ int check_expected(const Image8& render, const std::string& render_path,
     }
     std::cerr << "jtracer-cli: the render differs from " << reference << ":\n" << r.text;
     if (frontend::is_stream(render_path)) {
-        std::cerr << "the render went to " << render_path
+        std::cerr << "the render went to " << shown_output(render_path)
                   << ", which has no folder to keep a heat map beside it: none was written\n";
         return finish(exit_outside_tolerance);
     }
@@ -300,8 +313,8 @@ int check_expected(const Image8& render, const std::string& render_path,
         return finish(exit_io_error);
     }
     r.heat_map_path = heat_map_path;
-    std::cerr << "the render is in " << render_path << ", the differences in " << heat_map_path
-              << "\n";
+    std::cerr << "the render is in " << shown_output(render_path) << ", the differences in "
+              << heat_map_path << "\n";
     return finish(exit_outside_tolerance);
 }
 

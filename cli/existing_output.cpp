@@ -1,105 +1,6 @@
 #include "existing_output.hpp"
 
-#include "jtracer/bmp.hpp"
-#include "jtracer/png.hpp"
-
-#include <cstdint>
-#include <filesystem>
-#include <fstream>
-#include <iostream>
-#include <iterator>
-#include <vector>
-
-#include <zlib.h>
-
 namespace jt::cli {
-
-namespace {
-
-std::uint32_t big_endian32(const std::uint8_t* p) {
-    return (std::uint32_t{p[0]} << 24) | (std::uint32_t{p[1]} << 16) | (std::uint32_t{p[2]} << 8) |
-           p[3];
-}
-
-std::uint32_t little_endian32(const std::uint8_t* p) {
-    return p[0] | (std::uint32_t{p[1]} << 8) | (std::uint32_t{p[2]} << 16) |
-           (std::uint32_t{p[3]} << 24);
-}
-
-// Why a PNG's bytes are not whole: the PNG decoder fills in what a truncated
-// stream lacks rather than refuse it, so the chunks are walked here, each
-// with its checksum, up to an IEND that ends the file.
-std::optional<std::string> png_damage(const std::vector<std::uint8_t>& bytes) {
-    static constexpr std::uint8_t signature[] = {0x89, 'P', 'N', 'G', '\r', '\n', 0x1A, '\n'};
-    if (bytes.size() < 8 || !std::equal(std::begin(signature), std::end(signature), bytes.begin()))
-        return "it is not a PNG";
-    std::size_t at = 8;
-    while (bytes.size() - at >= 12) {
-        const std::uint64_t length = big_endian32(&bytes[at]);
-        if (length > bytes.size() - at - 12) return "it is cut short (a chunk runs past its end)";
-        const std::uint8_t* type = &bytes[at + 4];
-        if (crc32_z(0, type, length + 4) != big_endian32(type + 4 + length))
-            return "it is damaged (a chunk's checksum does not match)";
-        at += 12 + length;
-        if (std::equal(type, type + 4, "IEND"))
-            return at == bytes.size() ? std::nullopt
-                                      : std::optional<std::string>("bytes follow its end");
-    }
-    return "it is cut short (no IEND chunk)";
-}
-
-std::optional<std::string> bmp_damage(const std::vector<std::uint8_t>& bytes) {
-    if (bytes.size() < 54 || bytes[0] != 'B' || bytes[1] != 'M') return "it is not a BMP";
-    if (little_endian32(&bytes[2]) != bytes.size())
-        return "it is cut short (" + std::to_string(bytes.size()) + " bytes, its header says " +
-               std::to_string(little_endian32(&bytes[2])) + ")";
-    return std::nullopt;
-}
-
-std::string size_text(int width, int height) {
-    return std::to_string(width) + "x" + std::to_string(height);
-}
-
-}  // namespace
-
-ExistingOutput check_existing_output(const std::string& path, const WantedOutput& wanted) {
-    ExistingOutput existing;
-    std::error_code error;
-    const auto status = std::filesystem::status(path, error);
-    if (!std::filesystem::exists(status)) return existing;
-    existing.exists = true;
-    auto refuse = [&](std::string why) {
-        existing.why_not = std::move(why);
-        return existing;
-    };
-    if (!std::filesystem::is_regular_file(status)) return refuse("it is not a regular file");
-    std::ifstream in(path, std::ios::binary);
-    std::vector<std::uint8_t> bytes((std::istreambuf_iterator<char>(in)),
-                                    std::istreambuf_iterator<char>());
-    if (!in.good() && !in.eof()) return refuse("it cannot be read");
-    const std::optional<std::string> damage =
-        wanted.format == ImageFormat::png ? png_damage(bytes) : bmp_damage(bytes);
-    if (damage) return refuse(*damage);
-    if (wanted.placement) {
-        Expected<RegionPart> part = read_region_bmp(path);
-        if (!part) return refuse(part.error().message);
-        if (!(part->placement == *wanted.placement))
-            return refuse("it holds another region or render (" +
-                          format_frame_region(part->placement.region) + " of a " +
-                          size_text(part->placement.frame_width, part->placement.frame_height) +
-                          " frame)");
-        existing.keep = true;
-        return existing;
-    }
-    Expected<Image8> image =
-        wanted.format == ImageFormat::png ? decode_png(bytes) : decode_bmp(bytes);
-    if (!image) return refuse(image.error().message);
-    if (image->width != wanted.width || image->height != wanted.height)
-        return refuse("it is " + size_text(image->width, image->height) + ", not " +
-                      size_text(wanted.width, wanted.height));
-    existing.keep = true;
-    return existing;
-}
 
 WantedOutput wanted_output(const Options& o, const RenderOptions& render, ImageFormat format,
                            const std::optional<RenderFingerprint>& fingerprint) {
@@ -111,15 +12,7 @@ WantedOutput wanted_output(const Options& o, const RenderOptions& render, ImageF
 
 bool keep_existing_output(const Options& o, const std::string& path, const WantedOutput& wanted,
                           const std::string& what) {
-    const ExistingOutput existing = check_existing_output(path, wanted);
-    if (!o.quiet) {
-        if (existing.keep)
-            std::cerr << "kept " << path << what << ": already there and complete\n";
-        else if (existing.exists)
-            std::cerr << "jtracer-cli: note: " << path << " is there, but " << existing.why_not
-                      << ": rendering it again\n";
-    }
-    return existing.keep;
+    return frontend::keep_existing_output("jtracer-cli", o.quiet, path, wanted, what);
 }
 
 }  // namespace jt::cli

@@ -222,7 +222,9 @@ int run_info_command(int argc, char** argv) {
     std::vector<std::string> defines;
     std::optional<double> clock;
     add_scene_value_flags(app, defines, clock);
-    if (std::optional<int> code = parse_command_line(app, argc, argv, "jtracer-cli info"))
+    if (std::optional<int> code = parse_command_line(app, argc, argv, "jtracer-cli info", [&] {
+            check_defines_at_their_clocks(defines, clock, {});
+        }))
         return *code;
     ParseOptions options = scene_value_options(defines, clock);
     options.source_map = false;

@@ -139,7 +139,7 @@ int run(const Options& o, Clock::time_point start, bool& compared) {
                                    {options.width, options.height, *o.region, fingerprint})
             : jt::write_image(output, image, setup.format);
     if (!written) {
-        std::cerr << "jtracer-cli: " << written.error().message << "\n";
+        std::cerr << "jtracer-cli: " << shown_write_error(written.error().message) << "\n";
         return exit_io_error;
     }
     if (!o.quiet)

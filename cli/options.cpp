@@ -1,5 +1,6 @@
 #include "options.hpp"
 
+#include "jtracer/frontend/existing_output.hpp"
 #include "jtracer/frontend/frame_file_name.hpp"
 #include "jtracer/image_file.hpp"
 #include "jtracer/scene_file.hpp"
@@ -53,34 +54,6 @@ std::optional<std::string> file_clash(const Options& o, const std::string& outpu
                 return "--junit '" + *o.junit + "' is " + what + ": the report would replace it";
     }
     return std::nullopt;
-}
-
-std::string format_warning(const Options& o, const std::string& output) {
-    std::string ext = std::filesystem::path(output).extension().string();
-    for (char& c : ext) c = static_cast<char>(std::tolower(static_cast<unsigned char>(c)));
-    static constexpr std::string_view other_images[] = {".jpg",  ".jpeg", ".tif",  ".tiff", ".gif",
-                                                        ".webp", ".exr",  ".tga",  ".ppm",  ".hdr",
-                                                        ".avif", ".jxl",  ".heic", ".ico"};
-    const bool other =
-        std::find(std::begin(other_images), std::end(other_images), ext) != std::end(other_images);
-    if (!o.output && (ext == ".png" || other))
-        return "jtracer-cli: warning: the scene's filename '" + output +
-               "' is written as a BMP, as the scene's filename always is" +
-               (ext != ".png" ? ""
-                : o.frames    ? "; an -o name ending in .png writes PNGs"
-                              : "; -o " + output + " writes a PNG") +
-               "\n";
-    if (o.output && other)
-        return "jtracer-cli: warning: -o/--output '" + output +
-               "' is written as a BMP: JTracer writes a PNG for a name ending in .png and a BMP "
-               "for any other\n";
-    // 'shot-%04d.png' without --frames is one image under that very name: the
-    // field says a sequence was meant.
-    if (o.output && !o.frames && jt::frontend::parse_frame_name_pattern(output))
-        return "jtracer-cli: warning: -o/--output '" + output +
-               "' has a frame number field, but without --frames N one image is written under "
-               "that very name\n";
-    return {};
 }
 
 std::optional<std::string> region_output_refusal(const Options& o, const std::string& output) {
@@ -199,9 +172,7 @@ ParsedOptions parse_options(int argc, char** argv) {
                 refuse(
                     "with --region, needs --region-output: a whole-frame image does not "
                     "record which region it holds, a region file does");
-            if (o.output_is_stdout) refuse("standard output (-o -) holds no earlier image to keep");
-            if (o.output && frontend::is_stream(*o.output))
-                refuse("'" + *o.output + "' is a device or a pipe, not a file to keep");
+            if (std::optional<std::string> why = frontend::skip_existing_refusal(o)) refuse(*why);
         }
         if (o.expect && o.frames)
             throw CLI::ValidationError("--expect", "compares one image: not with --frames");

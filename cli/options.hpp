@@ -47,11 +47,10 @@ ParsedOptions parse_options(int argc, char** argv);
 // An empty `output` (not known yet) checks the --junit file alone.
 std::optional<std::string> file_clash(const Options& o, const std::string& output);
 
-// A warning line (or nothing) when the image's name promises a format it will
-// not have: the scene's filename always gives a BMP, even `shot.png`, and -o
-// gives a BMP for any name but .png, even `shot.jpg`. Image viewers, browsers
-// and upload forms trust the name and refuse such a file.
-std::string format_warning(const Options& o, const std::string& output);
+// frontend::format_warning, as jtracer-cli says it.
+inline std::string format_warning(const Options& o, const std::string& output) {
+    return frontend::format_warning("jtracer-cli", o, output);
+}
 
 // The error (or nothing) for a region file (--region-output, always a BMP)
 // under the scene's filename `output` when that names another format: refused

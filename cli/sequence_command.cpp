@@ -20,7 +20,7 @@ using namespace jt::frontend;
 using Clock = std::chrono::steady_clock;
 
 // What stays of a sequence stopped at frame `index`.
-std::string kept(const FrameRange& range, int index) {
+std::string written_before(const FrameRange& range, int index) {
     if (index == range.first) return "no frame was written";
     return "frames " + std::to_string(range.first) + ".." + std::to_string(index - 1) +
            " were written";
@@ -47,7 +47,7 @@ int run_sequence(const Options& o) {
         // preparing the next frame, which can take long (a large mesh).
         if (interrupting_signal() != 0) {
             display.finish();
-            return report_interrupt(kept(range, index).c_str());
+            return report_interrupt(written_before(range, index).c_str());
         }
         // A frame already there is known once its set-up names its file and
         // size, before the scene is prepared for it.
@@ -81,15 +81,15 @@ int run_sequence(const Options& o) {
         }
         if (Expected<void> fits = check_render_memory(frame.render, o.region_output); !fits) {
             display.finish();
-            std::cerr << "jtracer-cli: " << fits.error().message << "; " << kept(range, index)
-                      << "\n";
+            std::cerr << "jtracer-cli: " << fits.error().message << "; "
+                      << written_before(range, index) << "\n";
             return exit_io_error;
         }
         // Each frame's file may be in a folder of its own (-o 'f%d/shot.png').
         if (Expected<void> writable = check_atomic_write(frame.output); !writable) {
             display.finish();
-            std::cerr << "jtracer-cli: " << writable.error().message << "; " << kept(range, index)
-                      << "\n";
+            std::cerr << "jtracer-cli: " << writable.error().message << "; "
+                      << written_before(range, index) << "\n";
             return exit_io_error;
         }
         RenderJob job(frame.prepared, frame.render);
@@ -100,7 +100,7 @@ int run_sequence(const Options& o) {
         });
         if (!rendered) {
             display.finish();
-            return report_interrupt(kept(range, index).c_str());
+            return report_interrupt(written_before(range, index).c_str());
         }
         const Expected<void> written =
             o.region_output ? write_region_bmp(frame.output, job.region_image(),
@@ -109,8 +109,8 @@ int run_sequence(const Options& o) {
                             : write_image(frame.output, job.take_image(), frame.format);
         display.finish();
         if (!written) {
-            std::cerr << "jtracer-cli: " << written.error().message << "; " << kept(range, index)
-                      << "\n";
+            std::cerr << "jtracer-cli: " << written.error().message << "; "
+                      << written_before(range, index) << "\n";
             return exit_io_error;
         }
         if (!o.quiet)
@@ -125,17 +125,8 @@ int run_sequence(const Options& o) {
         std::cerr << o.scene_path << ": no errors in frames " << range.first << ".." << range.last
                   << "\n";
     if (!o.quiet && !o.check_only && total > 1) {
-        const int written = total - kept_frames;
-        const std::string time =
-            format_duration(std::chrono::duration<double>(Clock::now() - start).count());
-        if (written == 0)
-            std::cerr << "kept all " << total << " frames, already there (" << time << ")\n";
-        else
-            std::cerr << "wrote " << written << (written == 1 ? " frame" : " frames")
-                      << (kept_frames > 0
-                              ? " and kept " + std::to_string(kept_frames) + " already there"
-                              : std::string())
-                      << " in " << time << "\n";
+        std::cerr << sequence_summary(total, total - kept_frames, kept_frames,
+                                      std::chrono::duration<double>(Clock::now() - start).count());
     }
     return exit_ok;
 }

@@ -4,6 +4,7 @@
 #include "jtracer/bmp.hpp"
 
 #include <stb_image_write.h>
+#include <zlib.h>
 
 #include <array>
 #include <cstdint>
@@ -38,15 +39,6 @@ void append(void* context, void* data, int size) {
     out->insert(out->end(), bytes, bytes + size);
 }
 
-std::uint32_t crc32(const std::uint8_t* data, std::size_t size) {
-    std::uint32_t crc = 0xFFFFFFFFu;
-    for (std::size_t i = 0; i < size; ++i) {
-        crc ^= data[i];
-        for (int k = 0; k < 8; ++k) crc = (crc >> 1) ^ (0xEDB88320u & (0u - (crc & 1u)));
-    }
-    return ~crc;
-}
-
 void put32(Bytes& out, std::uint32_t value) {
     for (int shift = 24; shift >= 0; shift -= 8)
         out.push_back(static_cast<std::uint8_t>(value >> shift));
@@ -57,7 +49,7 @@ void chunk(Bytes& png, const char* type, const Bytes& data) {
     const std::size_t start = png.size();
     png.insert(png.end(), type, type + 4);
     png.insert(png.end(), data.begin(), data.end());
-    put32(png, crc32(png.data() + start, png.size() - start));
+    put32(png, static_cast<std::uint32_t>(crc32_z(0, png.data() + start, png.size() - start)));
 }
 
 // stb_image_write has no 16-bit PNG: one by hand, its rows in a stored
@@ -79,12 +71,7 @@ Bytes png16(int width, int height) {
         zlib.push_back(static_cast<std::uint8_t>(v >> 8));
     }
     zlib.insert(zlib.end(), raw.begin(), raw.end());
-    std::uint32_t a = 1, b = 0;
-    for (std::uint8_t byte : raw) {
-        a = (a + byte) % 65521;
-        b = (b + a) % 65521;
-    }
-    put32(zlib, (b << 16) | a);
+    put32(zlib, static_cast<std::uint32_t>(adler32_z(1, raw.data(), raw.size())));
     Bytes png{0x89, 'P', 'N', 'G', '\r', '\n', 0x1A, '\n'};
     Bytes header;
     put32(header, static_cast<std::uint32_t>(width));

@@ -77,7 +77,8 @@ int merge(const std::vector<std::string>& part_paths, const std::string& output,
     if (const jt::Expected<void> written =
             jt::write_image(output, *frame, jt::format_from_extension(output));
         !written) {
-        std::cerr << "jtracer-merge: " << written.error().message << "\n";
+        std::cerr << "jtracer-merge: " << jt::frontend::shown_write_error(written.error().message)
+                  << "\n";
         return exit_io_error;
     }
     if (!quiet)

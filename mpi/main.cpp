@@ -12,7 +12,9 @@
 #include "work_tiles.hpp"
 #include "worker.hpp"
 
+#include "jtracer/atomic_file.hpp"
 #include "jtracer/frontend/command_line.hpp"
+#include "jtracer/frontend/existing_output.hpp"
 #include "jtracer/frontend/frame_setup.hpp"
 #include "jtracer/frontend/progress.hpp"
 #include "jtracer/frontend/scene_sequence.hpp"
@@ -132,7 +134,7 @@ RankFrame set_up_rank(const Options& o, jt::frontend::SceneSequence* sequence, i
 }
 
 // What stays of a run stopped at frame `index` (the only one without --frames).
-std::string kept(const jt::frontend::FrameRange& range, int index) {
+std::string written_before(const jt::frontend::FrameRange& range, int index) {
     if (index == range.first) return "nothing was written";
     return "frames " + std::to_string(range.first) + ".." + std::to_string(index - 1) +
            " were written";
@@ -208,27 +210,80 @@ void print_stats(const CoordinatorResult& result, const std::vector<RankStats>& 
     }
 }
 
-// A worker: the frames rank 0 leads it through, until it says no more.
-int run_worker_frames(const Options& o, jt::frontend::SceneSequence* sequence, int first,
-                      int rank) {
+// A worker: the frames rank 0 names, until it says no more.
+int run_worker_frames(const Options& o, jt::frontend::SceneSequence* sequence, int rank) {
     int code = exit_ok;
-    bool another_frame = true;
-    for (int index = first; another_frame; ++index) {
-        another_frame = false;
+    bool first = true;
+    for (std::int32_t index = receive_frame_index(); index != no_more_frames;
+         index = receive_frame_index()) {
+        bool another_frame = false;
         code = run_worker(
             host_name(),
             [&] {
                 RankFrame frame = set_up_rank(o, sequence, index);
-                if (frame.mine.exit_code == exit_ok && index == first && !o.quiet)
+                if (frame.mine.exit_code == exit_ok && first && !o.quiet)
                     if (auto warning =
                             narrow_affinity_warning(current_cpu_share(), rank, host_name()))
                         std::cerr << *warning << std::flush;
                 return frame.mine;
             },
             another_frame);
+        first = false;
+        if (!another_frame) break;
     }
     return code;
 }
+
+// --skip-existing on rank 0, whose machine the images are written on: the
+// frames from `from` on whose files are already there and complete, each said
+// as jtracer-cli says it. The frames are set up (read at their clock) by a
+// sequence of their own, without being prepared; one whose set-up fails is
+// left to the render, which reports it.
+class KeptFrames {
+  public:
+    explicit KeptFrames(const Options& o) : o_(o) {
+        if (o.frames) checker_.emplace("jtracer-mpi", o);
+    }
+
+    // The first frame from `from` to `last` that is to be rendered, or last + 1.
+    int next_to_render(int from, int last) {
+        if (!o_.skip_existing) return from;
+        for (int index = from; index <= last; ++index) {
+            if (!frame_is_kept(index)) return index;
+            ++frames_kept;
+        }
+        return last + 1;
+    }
+
+    int frames_kept = 0;  // so far
+
+  private:
+    const Options& o_;
+    std::optional<jt::frontend::SceneSequence> checker_;
+
+    bool keep_output(const std::string& output, const jt::RenderOptions& render,
+                     jt::ImageFormat format, const std::string& what) const {
+        // An output that is the scene file is refused by the set-up.
+        if (jt::frontend::same_file(output, o_.scene_path)) return false;
+        return jt::frontend::keep_existing_output(
+            "jtracer-mpi", o_.quiet, output, {render.width, render.height, format, std::nullopt},
+            what);
+    }
+
+    bool frame_is_kept(int index) {
+        if (!checker_) {
+            const FrameSetup setup = jt::frontend::set_up_frame("jtracer-mpi", o_);
+            return setup.exit_code == exit_ok &&
+                   keep_output(setup.output, setup.render, setup.format, "");
+        }
+        const jt::frontend::SequenceFrame frame =
+            checker_->frame(index, false, [&](const jt::frontend::SequenceFrame& f) {
+                return keep_output(f.output, f.render, f.format,
+                                   " (frame " + std::to_string(f.index) + ")");
+            });
+        return frame.exit_code == exit_ok && frame.skipped;
+    }
+};
 
 // What rank 0 says of a frame it wrote.
 void report_frame(const Options& o, const RankFrame& frame, int index,
@@ -237,7 +292,7 @@ void report_frame(const Options& o, const RankFrame& frame, int index,
     jt::RenderProgress summary;
     summary.rays = result.rays;
     summary.seconds = result.seconds;
-    std::cerr << "wrote " << frame.output;
+    std::cerr << "wrote " << jt::frontend::shown_output(frame.output);
     if (o.frames)
         std::cerr << " (frame " << index << ", clock "
                   << jt::frontend::shortest_decimal(frame.clock) << ")";
@@ -257,7 +312,14 @@ int run(int argc, char** argv, int rank, int ranks) {
     jt::frontend::SceneSequence* frames = sequence ? &*sequence : nullptr;
     const jt::frontend::FrameRange range =
         sequence ? sequence->range() : jt::frontend::FrameRange{};
-    if (rank != 0) return run_worker_frames(o, frames, range.first, rank);
+    // As jtracer-cli: a frame of the range that would be written over the
+    // scene file stops the job before any frame is, on every rank alike.
+    if (sequence)
+        if (std::optional<std::string> clash = sequence->output_clash()) {
+            if (rank == 0) std::cerr << *clash;
+            return exit_usage;
+        }
+    if (rank != 0) return run_worker_frames(o, frames, rank);
 
     // One display for the whole sequence, as jtracer-cli's: the bar or log goes
     // on from frame to frame and its time left is the sequence's.
@@ -265,30 +327,52 @@ int run(int argc, char** argv, int rank, int ranks) {
         jt::frontend::progress_style_for_stderr(o.progress, o.quiet));
     const int total = range.last - range.first + 1;
     const auto sequence_start = Clock::now();
-    bool workers_wait = false;  // the workers were told that another frame follows
-    for (int index = range.first; index <= range.last; ++index) {
+    KeptFrames kept_frames(o);
+    int rendered = 0;
+    // The workers wait for the number of their next frame (tag_frame): at the
+    // start, and after a frame whose stop said that another may follow.
+    bool workers_wait = true;
+    for (int index = kept_frames.next_to_render(range.first, range.last);;) {
         // A signal during the last frame's write let it finish: stop before
         // setting up the next frame, which can take long (a large mesh).
-        if (const int signal = jt::frontend::stop_signal(); signal != 0)
-            return stop_for_signal(signal, kept(range, index), workers_wait);
+        const int signal = jt::frontend::stop_signal();
+        const bool more = index <= range.last && signal == 0;
+        if (workers_wait)
+            for (int worker = 1; worker < ranks; ++worker)
+                send_frame(worker, more ? index : no_more_frames);
+        if (signal != 0) return stop_for_signal(signal, written_before(range, index), false);
+        if (!more) break;
         const auto frame_start = Clock::now();
-        const RankFrame frame = set_up_rank(o, frames, index);
+        RankFrame frame = set_up_rank(o, frames, index);
+        // Rank 0 alone writes the image: a folder missing or not writable on
+        // its machine is found before every rank renders a frame for nothing.
+        if (frame.mine.exit_code == exit_ok)
+            if (const jt::Expected<void> writable = jt::check_atomic_write(frame.output);
+                !writable) {
+                frame.mine.exit_code = exit_io_error;
+                frame.mine.message +=
+                    "jtracer-mpi: " + writable.error().message + "; " +
+                    (o.frames ? written_before(range, index) : "nothing was rendered") + "\n";
+            }
         const RankSetUp& mine = frame.mine;
         const double setup_seconds =
             std::chrono::duration<double>(Clock::now() - frame_start).count();
         const RollCall call = call_the_roll(ranks, host_name(), mine.exit_code, o.rank_timeout);
         if (call.lost)
-            end_for_lost_rank(*call.lost, call.hosts, o.rank_timeout,
-                              index == range.first ? "; nothing was written"
-                                                   : "; the frames before it were written");
+            end_for_lost_rank(
+                *call.lost, call.hosts, o.rank_timeout,
+                rendered == 0 ? "; nothing was written" : "; the frames before it were written");
         if (const int code = agree_on_setup(mine, call); code != exit_ok) {
             for (int worker = 1; worker < ranks; ++worker) send_stop(worker, false);
             return code;
         }
-        if (index == range.first) {
-            if (!o.quiet)
+        if (rendered == 0) {
+            if (!o.quiet) {
+                // As jtracer-cli warns: -o shot.jpg is a BMP all the same.
+                std::cerr << jt::frontend::format_warning("jtracer-mpi", o, frame.output);
                 if (auto warning = narrow_affinity_warning(current_cpu_share(), 0, host_name()))
                     std::cerr << *warning << std::flush;
+            }
             // Left to their defaults, SIGINT, SIGTERM and SIGHUP (a dropped
             // ssh connection) would end rank 0 in the middle of a write,
             // leaving the temporary file beside the image.
@@ -323,24 +407,27 @@ int run(int argc, char** argv, int rank, int ranks) {
         if (!result.complete)
             return stop_for_signal(
                 jt::frontend::stop_signal() != 0 ? jt::frontend::stop_signal() : SIGINT,
-                kept(range, index), ranks > 1);
+                written_before(range, index), ranks > 1);
         workers_wait = result.another_frame;
         result.stats.setup_seconds = setup_seconds;
         std::vector<RankStats> stats = result.rank_stats;
         stats.front() = result.stats;
         if (!*written) {
-            std::cerr << "jtracer-mpi: " << written->error().message << "\n";
+            std::cerr << "jtracer-mpi: "
+                      << jt::frontend::shown_write_error(written->error().message) << "\n";
             return exit_io_error;
         }
         report_frame(o, frame, index, result, ranks);
         const double seconds = std::chrono::duration<double>(Clock::now() - start).count();
         if (o.stats) print_stats(result, stats, mine.tiles.size(), o.tile_size, seconds);
+        ++rendered;
+        index = kept_frames.next_to_render(index + 1, range.last);
     }
-    if (!o.quiet && o.frames && total > 1)
-        std::cerr << "wrote " << total << " frames in "
-                  << jt::frontend::format_duration(
-                         std::chrono::duration<double>(Clock::now() - sequence_start).count())
-                  << "\n";
+    if (!o.quiet && o.frames && total > 1) {
+        std::cerr << jt::frontend::sequence_summary(
+            total, rendered, kept_frames.frames_kept,
+            std::chrono::duration<double>(Clock::now() - sequence_start).count());
+    }
     return exit_ok;
 }
 

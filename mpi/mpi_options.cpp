@@ -1,11 +1,29 @@
 #include "mpi_options.hpp"
 
+#include "jtracer/frontend/existing_output.hpp"
+
 #include <CLI/CLI.hpp>
 
+#include <unistd.h>
+
+#include <cstdlib>
 #include <iostream>
 #include <sstream>
 
 namespace jt::mpi {
+
+namespace {
+
+// Whether a launcher (mpirun, mpiexec, srun) started this rank, rather than a
+// user running jtracer-mpi alone; each sets its ranks' numbers in the
+// environment.
+bool started_by_launcher() {
+    for (const char* name : {"OMPI_COMM_WORLD_SIZE", "PMIX_RANK", "PMI_RANK"})
+        if (std::getenv(name)) return true;
+    return false;
+}
+
+}  // namespace
 
 ParsedOptions parse_options(int argc, char** argv, bool speaks) {
     ParsedOptions parsed;
@@ -41,6 +59,11 @@ ParsedOptions parse_options(int argc, char** argv, bool speaks) {
                    "(default 10)")
         ->check(CLI::Range(2.0, 3600.0))
         ->type_name("SECONDS");
+    app.add_flag("--skip-existing", o.skip_existing,
+                 "Keep an image already there (on rank 0's machine) and complete instead of "
+                 "rendering it again (with --frames, frame by frame): for rerunning a job after "
+                 "a failure. Complete: every byte there and the frame's size; anything else is "
+                 "rendered again");
     // Ranks other than 0 keep their (identical) words to themselves.
     std::ostringstream muted;
     std::ostream& out = speaks ? std::cout : muted;
@@ -49,9 +72,22 @@ ParsedOptions parse_options(int argc, char** argv, bool speaks) {
             app, argc, argv, "jtracer-mpi",
             [&] {
                 frontend::check_sequence_flags(o);
+                // OpenMPI hands a rank a terminal of its own as standard
+                // output and relays it, whatever the user redirected
+                // mpirun's to: "is a terminal" would send them to redirect
+                // what they already had.
+                if (o.output_is_stdout && started_by_launcher() && ::isatty(STDOUT_FILENO))
+                    throw CLI::ValidationError(
+                        "-o/--output",
+                        "- (standard output) cannot carry the image under mpirun, which passes "
+                        "rank 0's standard output on through a terminal of its own, whatever "
+                        "its own is redirected to: name a file (-o shot.bmp)");
                 if (o.output)
                     if (auto refused = frontend::output_refusal(*o.output))
                         throw CLI::ValidationError("-o/--output", *refused);
+                if (o.skip_existing)
+                    if (std::optional<std::string> why = frontend::skip_existing_refusal(o))
+                        throw CLI::ValidationError("--skip-existing", *why);
             },
             out, err))
         parsed.exit_code = *code;

@@ -17,6 +17,9 @@ struct Options : frontend::RenderFlags {  // threads: per rank
     int tile_size = 128;                  // the unit of work handed out, in pixels a side
     bool stats = false;                   // timings of the coordinator and of every rank
     double rank_timeout = 10.0;           // seconds of silence after which a rank is lost
+    // Keep an image already there and complete instead of rendering it again
+    // (jtracer/frontend/existing_output.hpp); rank 0 decides, on its machine.
+    bool skip_existing = false;
 };
 
 struct ParsedOptions {

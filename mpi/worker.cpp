@@ -188,4 +188,22 @@ int run_worker(const std::string& host, const std::function<RankSetUp()>& set_up
     return Worker().run(host, set_up, another_frame);
 }
 
+// How often a worker between frames looks for the next one: rank 0 may take
+// long to set a frame up or to write one, and a millisecond's wait is nothing
+// beside a frame while it leaves the cores to others.
+constexpr auto frame_index_poll = std::chrono::milliseconds(1);
+
+std::int32_t receive_frame_index() {
+    while (true) {
+        int arrived = 0;
+        MPI_Iprobe(0, tag_frame, MPI_COMM_WORLD, &arrived, MPI_STATUS_IGNORE);
+        if (arrived) {
+            std::int32_t index = no_more_frames;
+            MPI_Recv(&index, 1, MPI_INT32_T, 0, tag_frame, MPI_COMM_WORLD, MPI_STATUS_IGNORE);
+            return index;
+        }
+        std::this_thread::sleep_for(frame_index_poll);
+    }
+}
+
 }  // namespace jt::mpi

@@ -25,8 +25,12 @@ struct RankSetUp {
 
 // Runs `set_up` on a thread of its own, then the tiles of one frame; returns
 // the rank's exit code. Its figures go to rank 0 with its last message.
-// `another_frame` is set when rank 0's stop said that a frame follows.
+// `another_frame` is set when rank 0's stop said that a frame may follow.
 int run_worker(const std::string& host, const std::function<RankSetUp()>& set_up,
                bool& another_frame);
+
+// The index of the frame rank 0 names next (tag_frame), or no_more_frames.
+// Waits without spinning: the rank's cores may be rendering for other jobs.
+std::int32_t receive_frame_index();
 
 }  // namespace jt::mpi

@@ -5,7 +5,7 @@ set -euo pipefail
 
 packages=(
     build-essential cmake ninja-build pkg-config clang-format ccache
-    libglm-dev libtbb-dev libembree-dev libcli11-dev libstb-dev libturbojpeg0-dev libpng-dev zlib1g-dev libassimp-dev nlohmann-json3-dev assimp-testmodels
+    libglm-dev libtbb-dev libembree-dev libcli11-dev libstb-dev libturbojpeg0-dev libjpeg62-turbo-dev libpng-dev zlib1g-dev libassimp-dev nlohmann-json3-dev assimp-testmodels
     libgtest-dev libgmock-dev libbenchmark-dev
     libglfw3-dev libimgui-dev libosmesa6-dev libgl-dev xvfb xauth fonts-dejavu-core
     libopenmpi-dev openmpi-bin iproute2

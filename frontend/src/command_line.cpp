@@ -107,6 +107,13 @@ std::string shown_output(const std::string& output) {
     return output == "/dev/stdout" ? std::string("standard output") : output;
 }
 
+std::string shown_write_error(std::string message) {
+    static constexpr std::string_view named = "'/dev/stdout'";
+    if (const std::size_t at = message.find(named); at != std::string::npos)
+        message.replace(at, named.size(), "standard output");
+    return message;
+}
+
 void handle_stop_signals(void (*handler)(int)) {
     for (const int signal : {SIGINT, SIGTERM, SIGHUP}) {
         struct sigaction current {};

@@ -2,14 +2,19 @@
 
 #include "jtracer/frontend/command_line.hpp"
 #include "jtracer/frontend/frame_file_name.hpp"
+#include "jtracer/frontend/frame_numbering.hpp"
 
 #include "jtracer/limits.hpp"
 
 #include <CLI/CLI.hpp>
 
+#include <algorithm>
+#include <cctype>
 #include <charconv>
 #include <cmath>
+#include <filesystem>
 #include <map>
+#include <optional>
 #include <string>
 
 namespace jt::frontend {
@@ -76,7 +81,66 @@ void add_render_flags(CLI::App& app, RenderFlags& o) {
         ->type_name("A..B");
 }
 
+std::string format_warning(std::string_view program, const RenderFlags& o,
+                           const std::string& output) {
+    std::string ext = std::filesystem::path(output).extension().string();
+    for (char& c : ext) c = static_cast<char>(std::tolower(static_cast<unsigned char>(c)));
+    static constexpr std::string_view other_images[] = {".jpg",  ".jpeg", ".tif",  ".tiff", ".gif",
+                                                        ".webp", ".exr",  ".tga",  ".ppm",  ".hdr",
+                                                        ".avif", ".jxl",  ".heic", ".ico"};
+    const bool other =
+        std::find(std::begin(other_images), std::end(other_images), ext) != std::end(other_images);
+    if (!o.output && (ext == ".png" || other))
+        return std::string(program) + ": warning: the scene's filename '" + output +
+               "' is written as a BMP, as the scene's filename always is" +
+               (ext != ".png" ? ""
+                : o.frames    ? "; an -o name ending in .png writes PNGs"
+                              : "; -o " + output + " writes a PNG") +
+               "\n";
+    if (o.output && other)
+        return std::string(program) + ": warning: -o/--output '" + output +
+               "' is written as a BMP: JTracer writes a PNG for a name ending in .png and a BMP "
+               "for any other\n";
+    // 'shot-%04d.png' without --frames is one image under that very name: the
+    // field says a sequence was meant.
+    if (o.output && !o.frames && parse_frame_name_pattern(output))
+        return std::string(program) + ": warning: -o/--output '" + output +
+               "' has a frame number field, but without --frames N one image is written under "
+               "that very name\n";
+    return {};
+}
+
+void check_defines_at_their_clocks(const std::vector<std::string>& defines,
+                                   std::optional<double> clock, std::optional<int> frames) {
+    const int count = frames.value_or(1);
+    for (const std::string& argument : defines) {
+        Expected<Define> define = parse_define(argument);
+        // Others were evaluated by parse_define: at every clock the same.
+        if (!define || define->value.find("clock") == std::string::npos) continue;
+        std::optional<std::string> first;
+        for (int frame = 0; frame < count; ++frame) {
+            std::optional<std::string> error =
+                define_error_at(*define, frames ? frame_clock(frame, count) : clock.value_or(0.0));
+            if (!error) {
+                first.reset();
+                break;
+            }
+            if (!first) first = std::move(error);
+        }
+        if (!first) continue;
+        const std::string where =
+            !frames
+                ? "at clock " + shortest_decimal(clock.value_or(0.0)) + ", the clock of this render"
+            : count == 1 ? std::string("at clock 0, the clock of the one frame")
+                         : "at clock 0, and it fails at the clock of every one of the " +
+                               std::to_string(count) + " frames";
+        throw CLI::ValidationError(
+            "--define", "the value of " + define->name + ": " + *first + " (" + where + ")");
+    }
+}
+
 void check_sequence_flags(const RenderFlags& o) {
+    check_defines_at_their_clocks(o.defines, o.clock, o.frames);
     if (o.frame_range && !o.frames) throw CLI::ValidationError("--frame-range", "needs --frames N");
     if (!o.frames) return;
     if (o.clock)

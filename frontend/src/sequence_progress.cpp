@@ -1,5 +1,7 @@
 #include "jtracer/frontend/sequence_progress.hpp"
 
+#include "jtracer/frontend/progress.hpp"
+
 #include <string>
 
 namespace jt::frontend {
@@ -12,6 +14,15 @@ RenderProgress sequence_progress(const RenderProgress& frame, int done, int tota
     whole.pass_name = "frame " + std::to_string(done + 1) + " of " + std::to_string(total);
     whole.finished = frame.finished && done + 1 == total;
     return whole;
+}
+
+std::string sequence_summary(int total, int written, int kept, double seconds) {
+    const std::string time = format_duration(seconds);
+    if (written == 0)
+        return "kept all " + std::to_string(total) + " frames, already there (" + time + ")\n";
+    return "wrote " + std::to_string(written) + (written == 1 ? " frame" : " frames") +
+           (kept > 0 ? " and kept " + std::to_string(kept) + " already there" : std::string()) +
+           " in " + time + "\n";
 }
 
 }  // namespace jt::frontend

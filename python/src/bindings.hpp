@@ -18,6 +18,7 @@
 #include <mutex>
 #include <optional>
 #include <string>
+#include <utility>
 #include <vector>
 
 namespace jt::python {
@@ -43,13 +44,24 @@ inline const frontend::ArgumentNames python_names = {.values = {.defines = "defi
                                                                 .clock = "clock="},
                                                      .prefix = "",
                                                      .after_pass = "= to Scene.render()"};
+// `work()`, run without the GIL: a read, parse or encode of seconds in which
+// the program's other Python threads carry on. `work` touches no Python
+// object; its result is returned once the GIL is held again.
+template <class Work>
+auto without_gil(Work&& work) {
+    py::gil_scoped_release unlocked;
+    return std::forward<Work>(work)();
+}
+
 // Raises OSError with the core's message ("cannot read 'a.png': no such file").
 [[noreturn]] void raise_os_error(const std::string& message);
 
 // Arrays, read_image, write_image, diff (images.cpp).
 void bind_images(py::module_& m);
-// An image as a (height, width, 3) uint8 array, top row first.
+// An image as a (height, width, 3) uint8 array, top row first: a copy, or,
+// given the image to keep, its own pixels without one.
 py::array_t<std::uint8_t> to_array(const Image8& image);
+py::array_t<std::uint8_t> to_array(Image8&& image);
 
 // load, parse, check, Scene and its views (scene.cpp).
 void bind_scene(py::module_& m);

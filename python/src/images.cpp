@@ -12,9 +12,12 @@
 
 #include <pybind11/stl/filesystem.h>
 
+#include <algorithm>
 #include <cmath>
 #include <cstring>
 #include <filesystem>
+#include <memory>
+#include <vector>
 
 namespace jt::python {
 
@@ -43,8 +46,10 @@ Image8 from_array(const py::array& array) {
     return image;
 }
 
+// The file is read and decoded without the GIL: a large picture takes a
+// second, in which the program's other Python threads carry on.
 Image8 read_or_raise(const std::filesystem::path& path) {
-    Expected<Image8> read = read_image(path);
+    Expected<Image8> read = without_gil([&] { return read_image(path); });
     if (!read) raise_os_error(read.error().message);
     return std::move(*read);
 }
@@ -73,6 +78,22 @@ py::array_t<std::uint8_t> to_array(const Image8& image) {
     return array;
 }
 
+py::array_t<std::uint8_t> to_array(Image8&& image) {
+    // The rows are turned round where they are, and the array keeps the
+    // image's own buffer: a picture read or rendered costs its pixels once.
+    const std::size_t row_bytes = static_cast<std::size_t>(image.width) * 3;
+    for (int row = 0; row < image.height / 2; ++row)
+        std::swap_ranges(image.pixel(0, row), image.pixel(0, row) + row_bytes,
+                         image.pixel(0, image.height - 1 - row));
+    const py::ssize_t height = image.height, width = image.width;
+    auto pixels = std::make_unique<std::vector<std::uint8_t>>(std::move(image.rgb));
+    std::uint8_t* data = pixels->data();
+    py::capsule owner(pixels.get(),
+                      [](void* held) { delete static_cast<std::vector<std::uint8_t>*>(held); });
+    pixels.release();  // the capsule's deleter frees it
+    return py::array_t<std::uint8_t>({height, width, py::ssize_t{3}}, data, owner);
+}
+
 void bind_images(py::module_& m) {
     m.def(
         "read_image",
@@ -84,9 +105,10 @@ void bind_images(py::module_& m) {
         "write_image",
         [](const std::filesystem::path& path, const py::array& array) {
             const Image8 image = from_array(array);
-            if (Expected<void> written = write_image(path, image, format_from_extension(path));
-                !written)
-                raise_os_error(written.error().message);
+            // Encoding a large PNG takes a while.
+            const Expected<void> written =
+                without_gil([&] { return write_image(path, image, format_from_extension(path)); });
+            if (!written) raise_os_error(written.error().message);
         },
         py::arg("path"), py::arg("image"),
         "Writes a (height, width, 3) uint8 array as jtracer-cli writes images: PNG for a "

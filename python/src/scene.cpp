@@ -17,6 +17,7 @@
 #include <cmath>
 #include <filesystem>
 #include <new>
+#include <optional>
 
 namespace jt::python {
 
@@ -79,7 +80,10 @@ void bind_view(py::module_& m, const char* name, const char* doc) {
 
 // What `jtracer-cli --check` reports for a loaded scene, one just read or
 // parsed (so the checks may take its primitives as parsed).
+// Without the GIL: checking reads every model and picture the scene names,
+// which for a large one takes seconds that other Python threads may use.
 std::vector<Diagnostic> findings(const LoadedScene& loaded) {
+    py::gil_scoped_release unlocked;
     std::vector<Diagnostic> diagnostics = check_scene(
         loaded, {.validation = {.run_chunks = parallel_chunks(), .primitives_as_parsed = true}});
     frontend::name_setting_flags(diagnostics, python_names);
@@ -169,7 +173,7 @@ std::string scene_text(const PythonScene& s) {
 // As jtracer-cli reads a file: without the source map, which check_scene
 // builds only when there is something to locate.
 LoadedScene read_file(const std::filesystem::path& path, const ParseOptions& options) {
-    Expected<LoadedScene> loaded = load_scene_file(path, options);
+    Expected<LoadedScene> loaded = without_gil([&] { return load_scene_file(path, options); });
     if (!loaded) raise_os_error(loaded.error().message);
     return std::move(*loaded);
 }
@@ -255,7 +259,10 @@ void bind_scene(py::module_& m) {
             // A text of no file reads its includes from the working directory.
             if (path != "<string>") loaded.options.main_file = loaded.path;
             loaded.text = std::move(text);
-            loaded.parsed = parse_scene(loaded.text, loaded.options);
+            {
+                py::gil_scoped_release unlocked;
+                loaded.parsed = parse_scene(loaded.text, loaded.options);
+            }
             if (loaded.parsed.out_of_memory) throw std::bad_alloc();
             loaded.parsed.scene.asset_folder = path.parent_path().string();
             return checked_scene(std::move(loaded));

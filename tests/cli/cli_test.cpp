@@ -212,6 +212,10 @@ TEST_F(Cli, ADashOutputIsNamedStandardOutput) {
     EXPECT_EQ(r.code, 2) << r.err;
     EXPECT_NE(r.err.find("-o/--output: standard output is closed"), std::string::npos) << r.err;
     EXPECT_EQ(r.err.find("/dev/stdout"), std::string::npos) << r.err;
+    // A write that fails (a full disk behind the redirection) too.
+    r = run("scene.jts -q -o - > /dev/full");
+    EXPECT_EQ(r.code, 3) << r.err;
+    EXPECT_EQ(r.err, "jtracer-cli: cannot write standard output: No space left on device\n");
 }
 
 TEST_F(Cli, ThreadCountGivesByteIdenticalFiles) {
@@ -278,6 +282,22 @@ TEST_F(Cli, AnOutputThatCannotBeWrittenStopsBeforeTheRender) {
     EXPECT_EQ(r.err.find("frame 1, clock"), std::string::npos) << r.err;
     EXPECT_EQ(outputs(), (std::vector<std::string>{"f0", "taken.bmp"}));
     EXPECT_TRUE(fs::exists(dir / "f0" / "shot.bmp"));
+}
+
+// A folder on a read-only file system (a render share mounted ro) was said to
+// need to be writable, sending the user to chmod a folder that is not at
+// fault: the file system is.
+TEST_F(Cli, AReadOnlyFileSystemIsNotBlamedOnTheFolder) {
+    fs::create_directory(dir / "ro");
+    // A mount namespace of its own: the read-only mount ends with the shell.
+    const std::string mount = "unshare -rm sh -c 'mount -t tmpfs -o ro none ro && ";
+    if (run_shell(mount + "true'").code != 0)
+        GTEST_SKIP() << "cannot mount a file system in a namespace of its own here";
+    test::ProgramRun r = run_shell(mount + "\"$0\" scene.jts -o ro/out.bmp' '" JT_CLI "'");
+    EXPECT_EQ(r.code, 3) << r.err;
+    EXPECT_EQ(r.err,
+              "jtracer-cli: cannot write 'ro/out.bmp': Read-only file system; nothing was "
+              "rendered\n");
 }
 
 // A sequence's -o without --frames writes one image under that very name:

@@ -92,6 +92,45 @@ TEST_F(CliDefine, BadDefinesAndClocksExitTwoNamingTheOption) {
     EXPECT_FALSE(fs::exists(dir / "from_scene.bmp"));
 }
 
+// A value of the clock that fails at every clock the command renders is a
+// bad value, as one that fails at any clock (exit 2, nothing written); one
+// that fails at some frames only is an error of those frames (exit 1, with
+// the frame's note, the frames before written).
+TEST_F(CliDefine, AClockValueFailingAtEveryClockRenderedExitsTwo) {
+    for (const char* args :
+         {"--define r=1/clock", "--clock 0.5 --define 'r=1/(clock - clock)'",
+          "--check --define r=1/clock", "--frames 1 -o 'a%d.bmp' --define r=1/clock",
+          "info --define r=1/clock", "--frames 3 -o 'a%d.bmp' --define 'r=sqrt(-1 - clock)'",
+          "--frames 3 --frame-range 1..2 -o 'a%d.bmp' --define 'r=asin(2 + clock)'"}) {
+        const bool info = std::string_view(args).starts_with("info ");
+        test::ProgramRun r = run(info ? std::string("info scene.jts ") + (args + 5)
+                                      : std::string("scene.jts ") + args);
+        EXPECT_EQ(r.code, 2) << args << "\n" << r.err;
+        EXPECT_NE(r.err.find("--define: the value of r: at column "), std::string::npos)
+            << args << "\n"
+            << r.err;
+        EXPECT_EQ(r.err.find("note: at frame"), std::string::npos) << args << "\n" << r.err;
+    }
+    EXPECT_FALSE(fs::exists(dir / "from_scene.bmp"));
+    EXPECT_FALSE(fs::exists(dir / "a0.bmp"));
+    EXPECT_FALSE(fs::exists(dir / "a1.bmp"));
+
+    test::ProgramRun some =
+        run("scene.jts --frames 3 -o 'b%d.bmp' --define 'r=abs(1/(clock - 0.5))'");
+    EXPECT_EQ(some.code, 1) << some.err;
+    EXPECT_NE(some.err.find("division by zero"), std::string::npos) << some.err;
+    EXPECT_NE(some.err.find("note: at frame 1 (clock = 0.5)"), std::string::npos) << some.err;
+    EXPECT_TRUE(fs::exists(dir / "b0.bmp"));
+    EXPECT_FALSE(fs::exists(dir / "b1.bmp"));
+    // A range that holds only the failing frame is a part of that sequence:
+    // its error is the frame's, as the whole sequence would report it.
+    test::ProgramRun part = run(
+        "scene.jts --frames 3 --frame-range 1..1 -o 'c%d.bmp' --define 'r=abs(1/(clock - 0.5))'");
+    EXPECT_EQ(part.code, 1) << part.err;
+    EXPECT_NE(part.err.find("note: at frame 1 (clock = 0.5)"), std::string::npos) << part.err;
+    EXPECT_EQ(run("-q scene.jts -o d.bmp --clock 2 --define r=1/clock").code, 0);
+}
+
 TEST_F(CliDefine, ANameTheSceneNeverDefinesIsAWarning) {
     test::ProgramRun r = run("scene.jts --define other=1");
     ASSERT_EQ(r.code, 0) << r.err;

@@ -142,6 +142,42 @@ TEST_F(Diff, HeatMapIsAPngButForABmpName) {
     }
 }
 
+// `-o -` wrote a file named "-" with the report on standard output beside
+// it, where every other program's `-o -` is standard output.
+TEST_F(Diff, ADashHeatMapIsStandardOutput) {
+    Image8 b = gradient();
+    b.pixel(3, 4)[0] = static_cast<std::uint8_t>(b.pixel(3, 4)[0] + 40);
+    write_png_file("b.png", b);
+    ProgramRun r = diff("a.png b.png -o - > heat.png");
+    EXPECT_EQ(r.code, 1) << r.err;
+    EXPECT_FALSE(exists("-"));
+    // The report goes to stderr, out of the image's way.
+    EXPECT_NE(r.err.find("OUTSIDE the tolerance"), std::string::npos) << r.err;
+    const Expected<Image8> heat = read_png(dir / "heat.png");
+    ASSERT_TRUE(heat) << heat.error().message;
+    EXPECT_EQ(heat->width, 40);
+    EXPECT_EQ(heat->pixel(3, 4)[0], 255);
+    // A JUnit report names where the heat map went as the user did.
+    r = diff("a.png b.png -o - --junit report.xml > heat2.png");
+    EXPECT_EQ(r.code, 1) << r.err;
+    EXPECT_NE(test::read_file(dir / "report.xml").find("the differences are in standard output"),
+              std::string::npos)
+        << test::read_file(dir / "report.xml");
+    // --json's object and the heat map cannot share standard output.
+    r = diff("a.png b.png -o - --json > both.out");
+    EXPECT_EQ(r.code, 2) << r.err;
+    EXPECT_NE(r.err.find("standard output cannot hold both the heat map and --json"),
+              std::string::npos)
+        << r.err;
+    EXPECT_EQ(test::read_file(dir / "both.out"), "");
+    // A full device is named as the user named it.
+    r = diff("a.png b.png -o - > /dev/full");
+    EXPECT_EQ(r.code, 3) << r.err;
+    EXPECT_NE(r.err.find("cannot write standard output: No space left on device"),
+              std::string::npos)
+        << r.err;
+}
+
 TEST_F(Diff, DifferentImagesAndDifferentSizes) {
     Image8 black(40, 20);
     write_png_file("black.png", black);
@@ -327,6 +363,11 @@ TEST_F(Expect, ARenderToADeviceHasNoHeatMap) {
         << r.err;
     EXPECT_FALSE(std::filesystem::exists("/dev/null.diff.png"));
     EXPECT_EQ(run(cli + " -q scene.jts -o /dev/null --expect ref.png").code, 0);
+    // Through a pipe, named as the user named it.
+    r = run(cli + " scene.jts -o - --expect changed.png | cat > /dev/null");
+    EXPECT_NE(r.err.find("the render went to standard output, which has no folder"),
+              std::string::npos)
+        << r.err;
 }
 
 // `-o /dev/stdout > out.png` writes out.png through a link; its heat map goes
@@ -342,6 +383,17 @@ TEST_F(Expect, AHeatMapGoesBesideTheFileALinkNames) {
     EXPECT_TRUE(read_image(dir / "renders/out.png").has_value());
     EXPECT_TRUE(read_image(dir / "renders/out.diff.png").has_value()) << r.err;
     EXPECT_FALSE(exists("link.diff.png"));
+    // `-o - > out.png`: the heat map beside out.png, and the render named as
+    // the user named it, in the messages and the JUnit report alike.
+    r = run(cli + " -q scene.jts -o - --expect changed.png --junit report.xml > piped.png");
+    EXPECT_EQ(r.code, 1) << r.err;
+    EXPECT_TRUE(read_image(dir / "piped.diff.png").has_value()) << r.err;
+    EXPECT_NE(r.err.find("the render is in standard output, the differences in "),
+              std::string::npos)
+        << r.err;
+    const std::string report = test::read_file(dir / "report.xml");
+    EXPECT_NE(report.find("actual standard output"), std::string::npos) << report;
+    EXPECT_EQ(report.find("/dev/stdout"), std::string::npos) << report;
 }
 
 // Only a render outside the tolerance has a heat map beside it: one left by

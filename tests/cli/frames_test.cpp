@@ -94,6 +94,27 @@ TEST_F(CliFrames, StandardOutputIsRefusedInTheUsersWords) {
     EXPECT_NE(r.err.find("'/dev/stdout' has no frame number field"), std::string::npos) << r.err;
 }
 
+// A scene made by a script and given through a pipe (a named pipe, or bash's
+// `<(m4 shot.jts.m4)`): its text can be read once only. The sequence read it again
+// for every frame of a scene that reads clock, and frame 1 found it empty:
+// "every render needs a camera", exit 1.
+TEST_F(CliFrames, ASceneFromAPipeIsReadOnce) {
+    ASSERT_EQ(run("-q scene.jts --frames 3 -o 'file-%d.png'").code, 0);
+    ASSERT_EQ(run_shell("mkfifo pipe.jts").code, 0);
+    test::ProgramRun r = run_shell("cat scene.jts > pipe.jts & timeout -k 5 60 '" JT_CLI
+                                   "' --frames 3 -o 'pipe-%d.png' pipe.jts");
+    ASSERT_EQ(r.code, 0) << r.err;
+    for (int f = 0; f < 3; ++f) {
+        const std::string n = std::to_string(f);
+        EXPECT_EQ(bytes("pipe-" + n + ".png"), bytes("file-" + n + ".png")) << "frame " << f;
+    }
+    // --check reads every frame too.
+    r = run_shell("cat scene.jts > pipe.jts & timeout -k 5 60 '" JT_CLI
+                  "' --check --frames 3 pipe.jts");
+    EXPECT_EQ(r.code, 0) << r.err;
+    EXPECT_NE(r.err.find("pipe.jts: no errors in frames 0..2"), std::string::npos) << r.err;
+}
+
 // A rerun after a lost node renders only the frames not already there and
 // whole: a frame cut short (a copy interrupted, a disk that filled) or of
 // another size is rendered again, and the output says which were kept.

@@ -44,8 +44,11 @@ class Include : public testing::Test {
     std::string located(const ParseResult& r) {
         std::string out;
         for (const Diagnostic& d : r.diagnostics) {
-            std::string name = d.pos.file == 0 ? "main.jts" : r.source.files[d.pos.file - 1].name;
-            name = std::filesystem::path(name).lexically_relative(dir).generic_string();
+            const std::string name =
+                d.pos.file == 0 ? "main.jts"
+                                : std::filesystem::path(r.source.files[d.pos.file - 1].name)
+                                      .lexically_relative(dir)
+                                      .generic_string();
             out += (out.empty() ? "" : "\n") + name + ":" + brief({d});
         }
         return out;
@@ -260,6 +263,76 @@ TEST_F(Include, AFifoIsRefusedWithoutWaitingForAWriter) {
               "1:9: error: '/dev/null' is a device, not a scene file");
 }
 
+// The included files share one limit: the message says so, and how much of
+// it the files before took, rather than a limit of odd size for this file.
+// Sparse files: their sizes are what count, nothing is read.
+TEST_F(Include, TheSizeLimitIsSharedByTheIncludedFilesAndSaysSo) {
+    write("small.jts", "define r = 1;\n");
+    write("big.jts", "");
+    std::filesystem::resize_file(dir / "big.jts", max_scene_file_bytes);
+    write("huge.jts", "");
+    std::filesystem::resize_file(dir / "huge.jts", max_scene_file_bytes + 1);
+    const std::string limit = "the files a scene includes may hold 1 GiB (1073741824 bytes) in all";
+    EXPECT_EQ(brief(parse("include \"small.jts\";\ninclude \"big.jts\";").diagnostics),
+              "2:9: error: '" + (dir / "big.jts").string() +
+                  "' is too large to include (1073741824 bytes): " + limit +
+                  ", and the files included before it hold 14");
+    EXPECT_EQ(brief(parse("include \"huge.jts\";").diagnostics),
+              "1:9: error: '" + (dir / "huge.jts").string() +
+                  "' is too large to include (1073741825 bytes): " + limit);
+}
+
+// "the one at line 1" would send the reader to line 1 of the file the
+// warning is in, where the block replaced is not.
+TEST_F(Include, ABlockReplacedInAnotherFileIsNamedWithItsFile) {
+    write("parts/settings.jts", "render_settings { width: 8; }\nscene { }\n");
+    EXPECT_EQ(located(parse("include \"parts/settings.jts\";\n"
+                            "render_settings { width: 9; }\nscene { }\n")),
+              "main.jts:2:1: warning: another 'render_settings' block: only the last one is "
+              "used, so the one at " +
+                  (dir / "parts/settings.jts").string() +
+                  ":1:1 is ignored\n"
+                  "main.jts:3:1: warning: another 'scene' block: only the last one is used, so "
+                  "the one at " +
+                  (dir / "parts/settings.jts").string() + ":2:1 is ignored");
+    EXPECT_EQ(located(parse("render_settings { width: 9; }\nscene { }\n"
+                            "include \"parts/settings.jts\";\n")),
+              "parts/settings.jts:1:1: warning: another 'render_settings' block: only the last "
+              "one is used, so the one at " +
+                  (dir / "main.jts").string() +
+                  ":1:1 is ignored\n"
+                  "parts/settings.jts:2:1: warning: another 'scene' block: only the last one is "
+                  "used, so the one at " +
+                  (dir / "main.jts").string() + ":2:1 is ignored");
+    // In one file, its line is enough.
+    EXPECT_EQ(located(parse("scene { }\nscene { }\n")),
+              "main.jts:2:1: warning: another 'scene' block: only the last one is used, so the "
+              "one at line 1 is ignored");
+}
+
+// A POV-Ray user's colors.inc turned into an included file often keeps its
+// '#declare' lines, which are comments here: the unknown name's message says
+// so wherever that comment is, naming its file when it is in another.
+TEST_F(Include, APovRayDirectiveInAnyFileReadIsNamedWithItsFile) {
+    const std::string unknown =
+        "error: unknown name 'Red' (names must be defined before they are used); POV-Ray's "
+        "#include and #declare are comments here, as at ";
+    const std::string advice = ": write include \"FILE\"; and define NAME = VALUE;";
+    const std::string colors = (dir / "colors.jts").string();
+    write("colors.jts", "# colours\n#declare Red = <1, 0, 0>;\n");
+    EXPECT_EQ(located(parse("include \"colors.jts\";\n"
+                            "scene { sphere { material { pigment: Red; } } }\n")),
+              "main.jts:2:38: " + unknown + colors + ":2:1" + advice);
+    // In the file that uses the name, its line and column are enough.
+    write("ball.jts", "#declare Red = <1, 0, 0>;\nsphere { material { pigment: Red; } }\n");
+    EXPECT_EQ(located(parse("scene { include \"ball.jts\"; }\n")),
+              "ball.jts:2:30: " + unknown + "1:1" + advice);
+    // The main file's comment, seen from an included file.
+    write("uses.jts", "sphere { material { pigment: Red; } }\n");
+    EXPECT_EQ(located(parse("#include \"colors.inc\"\nscene { include \"uses.jts\"; }\n")),
+              "uses.jts:1:30: " + unknown + (dir / "main.jts").string() + ":1:1" + advice);
+}
+
 TEST_F(Include, ABackslashInAPathThatIsNotFoundSaysFoldersUseSlashes) {
     write("parts/ball.jts", "define r = 1;\n");
     EXPECT_EQ(brief(parse("include \"parts\\ball.jts\";").diagnostics),
@@ -283,6 +356,12 @@ TEST_F(Include, TheSameFileTwiceIsFineUnlessItDefinesNames) {
                   (dir / "defs.jts").string() + ":1:8, included from " +
                   (dir / "mats.jts").string() + ":1:9, included from " +
                   (dir / "main.jts").string() + ":1:9; read again here, included from " +
+                  (dir / "main.jts").string() + ":2:9");
+    // A first definition in the main file, seen from an included file: its
+    // "1:8" alone would be read in the included file.
+    EXPECT_EQ(located(parse("define r = 1;\ninclude \"defs.jts\";\n")),
+              "defs.jts:1:8: error: 'r' is defined twice: it was first defined at " +
+                  (dir / "main.jts").string() + ":1:8; read again here, included from " +
                   (dir / "main.jts").string() + ":2:9");
 }
 

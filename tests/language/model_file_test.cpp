@@ -10,7 +10,10 @@
 #include <glm/geometric.hpp>
 
 #include <algorithm>
+#include <chrono>
+#include <cmath>
 #include <filesystem>
+#include <fstream>
 #include <iostream>
 #include <sstream>
 #include <string>
@@ -113,6 +116,137 @@ TEST(ModelFile, ObjVertexNormalsAndAFanOfAPentagon) {
     for (const auto& t : m.triangles) EXPECT_EQ(m.positions[t[0]], glm::vec3(0, 0, 0));
     ASSERT_EQ(m.normals.size(), m.positions.size());
     EXPECT_EQ(m.normals[m.triangles[0][1]], glm::vec3(0, 0.6f, 0.8f));
+}
+
+// The triangles' areas, each counted as a positive area, and their winding
+// against `normal`: a cut that covers the polygon covers it once, wound as
+// the polygon is.
+struct Coverage {
+    double area = 0.0;
+    std::size_t wound_against = 0;
+};
+Coverage coverage(const Model& m, const glm::dvec3& normal) {
+    Coverage c;
+    for (const auto& t : m.triangles) {
+        const glm::dvec3 a(m.positions[t[0]]), b(m.positions[t[1]]), d(m.positions[t[2]]);
+        const glm::dvec3 n = glm::cross(b - a, d - a);
+        c.area += glm::length(n) / 2.0;
+        if (glm::dot(n, normal) <= 0.0) ++c.wound_against;
+    }
+    return c;
+}
+
+TEST(ModelFile, AConcavePolygonIsCutInsideItsEdges) {
+    // An L of area 3, written from the corner beside the notch as a 3D tool
+    // may write it: a fan from there covers the notch too (area 3.5, one
+    // triangle wound backwards over the others).
+    ScratchDir dir;
+    write_file(dir.path() / "l.obj",
+               "v 2 1 0\nv 1 1 0\nv 1 2 0\nv 0 2 0\nv 0 0 0\nv 2 0 0\nf 1 2 3 4 5 6\n");
+    const Model m = read_ok(dir.path() / "l.obj");
+    EXPECT_EQ(m.triangles.size(), 4u);
+    const Coverage c = coverage(m, {0, 0, 1});
+    EXPECT_NEAR(c.area, 3.0, 1e-9);
+    EXPECT_EQ(c.wound_against, 0u);
+    for (const auto& t : m.triangles) {
+        const glm::vec3 centre = (m.positions[t[0]] + m.positions[t[1]] + m.positions[t[2]]) / 3.0f;
+        EXPECT_FALSE(centre.x > 1.0f && centre.y > 1.0f) << "a triangle in the notch";
+    }
+}
+
+TEST(ModelFile, AConvexPolygonIsStillAFan) {
+    // Collinear corners (an edge split in two) leave it convex.
+    ScratchDir dir;
+    write_file(dir.path() / "square.obj",
+               "v 0 0 0\nv 1 0 0\nv 2 0 0\nv 2 2 0\nv 0 2 0\nf 1 2 3 4 5\n");
+    const Model m = read_ok(dir.path() / "square.obj");
+    ASSERT_EQ(m.triangles.size(), 2u);  // the fan's first triangle has no area
+    for (const auto& t : m.triangles) EXPECT_EQ(m.positions[t[0]], glm::vec3(0, 0, 0));
+    EXPECT_NEAR(coverage(m, {0, 0, 1}).area, 4.0, 1e-9);
+}
+
+TEST(ModelFile, APolygonRoundItsHoleThroughASeamIsARing) {
+    // assimp-testmodels' concave_polygon.obj: one face of 66 corners that goes
+    // round a circle, along a seam to a smaller circle, round it the other way
+    // and back: a ring in the plane x = -1.146. A fan filled the hole.
+    const Model m = read_ok(kModels / "OBJ/concave_polygon.obj");
+    ASSERT_FALSE(m.triangles.empty());
+    // The ring's area by the shoelace formula over the face's corners, in y
+    // and z; its sign is the side the face's winding faces, along x.
+    std::ifstream in(kModels / "OBJ/concave_polygon.obj");
+    std::vector<glm::dvec2> v;
+    std::vector<std::size_t> face;
+    for (std::string line; std::getline(in, line);) {
+        std::istringstream words(line);
+        std::string kind;
+        words >> kind;
+        double x = 0, y = 0, z = 0;
+        if (kind == "v" && words >> x >> y >> z) v.emplace_back(y, z);
+        if (kind == "f")
+            for (std::string corner; words >> corner;) face.push_back(std::stoul(corner) - 1);
+    }
+    ASSERT_EQ(face.size(), 66u);
+    double twice = 0.0;
+    for (std::size_t i = 0; i < face.size(); ++i) {
+        const glm::dvec2 a = v[face[i]], b = v[face[(i + 1) % face.size()]];
+        twice += a.x * b.y - a.y * b.x;
+    }
+    const double ring = std::abs(twice) / 2.0;
+    const Coverage c = coverage(m, {twice > 0.0 ? 1.0 : -1.0, 0.0, 0.0});
+    EXPECT_NEAR(c.area, ring, 1e-4 * ring);
+    EXPECT_EQ(c.wound_against, 0u);
+}
+
+TEST(ModelFile, AHugeConcavePolygonReadsInTime) {
+    // A comb of 1500 teeth (6002 corners): past the corners that are cut ear
+    // by ear, it is fanned; one of 1000 teeth (4002) is cut, each tooth an ear.
+    for (const int teeth : {1000, 1500}) {
+        ScratchDir dir;
+        std::string obj;
+        for (int k = 0; k < teeth; ++k) {
+            const int x = 2 * k;
+            obj += "v " + std::to_string(x) + " 0 0\nv " + std::to_string(x + 1) + " 0 0\n";
+            obj += "v " + std::to_string(x + 1) + " 1 0\nv " + std::to_string(x + 2) + " 1 0\n";
+        }
+        obj += "v " + std::to_string(2 * teeth) + " 5 0\nv 0 5 0\nf";
+        for (int k = 1; k <= 4 * teeth + 2; ++k) obj += " " + std::to_string(k);
+        write_file(dir.path() / "comb.obj", obj + "\n");
+        const auto start = std::chrono::steady_clock::now();
+        const Model m = read_ok(dir.path() / "comb.obj");
+        EXPECT_LT(std::chrono::steady_clock::now() - start, std::chrono::seconds(20)) << teeth;
+        EXPECT_GE(m.triangles.size(), static_cast<std::size_t>(teeth)) << teeth;
+        if (teeth == 1000) {  // the comb's area: 2 x 5 a tooth less its 1 x 1 notch
+            EXPECT_NEAR(coverage(m, {0, 0, 1}).area, 9.0 * teeth, 1e-6 * teeth);
+        }
+    }
+}
+
+// The warnings of `file` read with materials "file" (or "scene"), joined.
+std::string material_warnings(const fs::path& file, bool file_materials = true) {
+    const Expected<Model> m = read_model(file, file.parent_path(), file_materials);
+    EXPECT_TRUE(m.has_value()) << (m ? "" : m.error().message);
+    std::string joined;
+    if (m)
+        for (const std::string& w : model_warnings(*m)) joined += w + "\n";
+    return joined;
+}
+
+TEST(ModelFile, FileMaterialsOfAFormatWhoseColoursAreNotReadSaySo) {
+    // A Collada duck with its texture, and cubes with vertex colours: asked
+    // for the file's materials, they rendered in the block's pigment silently.
+    EXPECT_NE(material_warnings(kModels / "Collada/duck.dae")
+                  .find("holds textures that materials: \"file\" does not read"),
+              std::string::npos);
+    EXPECT_NE(
+        material_warnings(kModels / "Collada/kwxport_test_vcolors.dae").find("vertex colours"),
+        std::string::npos);
+    EXPECT_NE(material_warnings(kModels / "MD2/faerie.md2").find("textures"), std::string::npos);
+    // Not asked for, not said; formats that are read, or hold nothing to read, say nothing.
+    EXPECT_EQ(material_warnings(kModels / "Collada/duck.dae", false), "");
+    for (const char* file : {"OBJ/spider.obj", "glTF2/BoxTextured-glTF/BoxTextured.gltf",
+                             "PLY/float-color.ply", "STL/Spider_binary.stl", "OFF/Cube.off"})
+        EXPECT_EQ(material_warnings(kModels / file).find("does not read"), std::string::npos)
+            << file;
 }
 
 TEST(ModelFile, ZeroAreaTrianglesAreSkippedAndNoneLeftIsAnEmptyModel) {

@@ -94,6 +94,14 @@ TEST(Names, DefineMistakesAreLocated) {
     EXPECT_EQ(brief("define r = ;"), "1:12: error: expected a value after 'define r =', got ';'");
     EXPECT_EQ(brief("define r = 1\ndefine s = 2;"),
               "1:13: error: expected ';' after the value of 'define r'");
+    // A definition cut short still defines its name: the uses say nothing
+    // more than its one error, not that the name is unknown.
+    EXPECT_EQ(brief("define r = ;\nscene { sphere { radius: r; } }"),
+              "1:12: error: expected a value after 'define r =', got ';'");
+    EXPECT_EQ(brief("define r 1;\nscene { sphere { radius: r; } }"),
+              "1:10: error: expected '=' after 'define r', got the number 1");
+    EXPECT_EQ(brief("material m pigment: <1, 0, 0>;\nscene { sphere { material: m; } }"),
+              "1:12: error: expected '{' after 'material m', got the word 'pigment'");
     // Errors are reported where the value is written, used or not; uses stay quiet.
     EXPECT_EQ(brief("define r = 1 / 0;\nscene { sphere { radius: r; } }"),
               "1:14: error: division by zero: 1 / 0");
@@ -144,6 +152,18 @@ TEST(Names, NamedMaterialMistakes) {
     EXPECT_EQ(brief(shiny + "scene { sphere { material other { } } }"),
               "3:18: error: a named material is defined at the top level; inside a primitive, "
               "write 'material: NAME;' to use one");
+    // Elsewhere than in a primitive, as 'define': one error at the keyword,
+    // and what follows is read.
+    const std::string top_only =
+        "error: a named material ('material NAME { ... }') may stand only at the top level, "
+        "outside every block";
+    EXPECT_EQ(brief("scene { material m { pigment: <1, 0, 0>; } sphere { } }"), "1:9: " + top_only);
+    EXPECT_EQ(brief("cameras { material m { } }"), "1:11: " + top_only);
+    EXPECT_EQ(brief("render_settings { material m { } width: 2; }"), "1:19: " + top_only);
+    EXPECT_EQ(brief("scene { sphere { transform { material m { } } } }"), "1:30: " + top_only);
+    EXPECT_EQ(brief("scene { sphere { material { material m { } } } }"), "1:29: " + top_only);
+    EXPECT_EQ(brief("material n { material m { } }"), "1:14: " + top_only);
+    EXPECT_EQ(parse_scene("scene { material m { } sphere { } }").scene.primitives.size(), 1u);
     // Range-checked where it is defined.
     EXPECT_EQ(brief("material m { diffuse_k: 0; }"),
               "1:25: error: 'diffuse_k' must be greater than 0 and at most 1e+09, got 0");
@@ -291,6 +311,9 @@ TEST(Names, DefineOptionOfTheClockIsCheckedAtTheRendersClock) {
     options.clock = 0;
     EXPECT_EQ(brief_with("define r = 1;\nscene { sphere { radius: r; } }", options),
               "0:0: error: define r=1/clock: at column 2: division by zero: 1 / 0");
+    // What a front end asks at each clock it renders.
+    EXPECT_EQ(define_error_at({"r", "1/clock"}, 0.0), "at column 2: division by zero: 1 / 0");
+    EXPECT_EQ(define_error_at({"r", "1/clock"}, 2.0), std::nullopt);
 }
 
 // A scene that uses names and expressions serialises to literal text that

@@ -82,6 +82,72 @@ TEST(Structure, ANameAgainstAValueIsOneError) {
     EXPECT_EQ(shape_as<Sphere>(r.scene.primitives[0].shape).radius, 2.0);
 }
 
+// POV-Ray users write '2 pi' for 2 * pi (it is an error there too): a name
+// after a space on the value's line, not starting a property ('name:'), a
+// block ('name {') or a statement, continues the value. One error, with the
+// hint, not a second about 'pi' as a property or a block.
+TEST(Structure, ANameAfterAValueOnItsLineIsOneError) {
+    const std::string side_by_side =
+        " (two values side by side are not multiplied: write '*' between them)";
+    EXPECT_EQ(brief("define r = 2 pi;\nscene { sphere { radius: 2 r; center: <r, 0, 0>; } }"),
+              "1:13: error: expected ';' after the value of 'define r'" + side_by_side +
+                  "\n2:27: error: expected ';' after the value of 'radius'" + side_by_side);
+    EXPECT_EQ(brief("define r = 2 sin(30);"),
+              "1:13: error: expected ';' after the value of 'define r'" + side_by_side);
+    // In a vector, where a ',' is due.
+    EXPECT_EQ(brief("scene { sphere { center: <2pi, 2 pi, 0>; } }"),
+              "1:28: error: a vector takes three numbers separated by commas, like <0, 1, 0>; "
+              "expected ',' but got the word 'pi' (a name after a value does not multiply it: "
+              "'2pi' and '2 pi' are written '2 * pi')");
+    // A property, a block or a statement on the same line is the next one.
+    ParseResult r = parse_scene(
+        "define r = 2 define s = 3;\n"
+        "scene { sphere { radius: r center: <s, 0, 0>; } sphere { radius: 1 material { } } }");
+    EXPECT_EQ(brief(r.diagnostics),
+              "1:13: error: expected ';' after the value of 'define r'\n"
+              "2:27: error: expected ';' after the value of 'radius'\n"
+              "2:67: error: expected ';' after the value of 'radius'");
+    ASSERT_EQ(r.scene.primitives.size(), 2u);
+    EXPECT_EQ(shape_as<Sphere>(r.scene.primitives[0].shape).center, Vec3(3, 0, 0));
+}
+
+// A POV-Ray user's words, too far from ours for a typo, are named with ours.
+TEST(Structure, APovRayWordIsAnsweredWithOurs) {
+    const std::string top =
+        " (allowed: render_settings, cameras, scene, include, define, material)";
+    EXPECT_EQ(brief("declare R = 1;"),
+              "1:1: error: unknown block 'declare' at the top level; POV-Ray's 'declare' is "
+              "'define' here" +
+                  top);
+    EXPECT_EQ(brief("local R = 1;"),
+              "1:1: error: unknown block 'local' at the top level; POV-Ray's 'local' is 'define' "
+              "here" +
+                  top);
+    EXPECT_EQ(brief("scene { light_source { } }"),
+              "1:9: error: unknown block 'light_source' in 'scene'; POV-Ray's 'light_source' is "
+              "'point_light' here (allowed: sphere, plane, cylinder, triangle, mesh, point_light, "
+              "include)");
+    EXPECT_EQ(brief("scene { sphere { finish { } } }"),
+              "1:18: error: unknown block 'finish' in 'sphere'; POV-Ray's 'finish' is 'material' "
+              "here (allowed: material, transform)");
+    // Where ours is not allowed either, nothing is said of it.
+    // Properties too, where ours stands in the same block.
+    EXPECT_EQ(brief("cameras { perspective_camera { location: <0, 0, 5>; angle: 60; } }"),
+              "1:32: error: unknown property 'location' in 'perspective_camera'; POV-Ray's "
+              "'location' is 'position' here (allowed: name, position, look_at, up, aspect, fov, "
+              "aperture, focus_distance)\n"
+              "1:53: error: unknown property 'angle' in 'perspective_camera'; POV-Ray's 'angle' "
+              "is 'fov' here (allowed: name, position, look_at, up, aspect, fov, aperture, "
+              "focus_distance)");
+    // A property is not a block: 'pigment:' belongs in a material.
+    EXPECT_EQ(brief("scene { sphere { pigment: <1, 0, 0>; } }"),
+              "1:18: error: unknown property 'pigment' in 'sphere' (allowed: center, radius, "
+              "material, transform)");
+    EXPECT_EQ(brief("scene { sphere { declare: 1; } }"),
+              "1:18: error: unknown property 'declare' in 'sphere' (allowed: center, radius, "
+              "material, transform)");
+}
+
 TEST(Structure, UnknownPropertySuggestsTheNearestName) {
     EXPECT_EQ(brief("scene { sphere { radus: 2; } }"),
               "1:18: error: unknown property 'radus' in 'sphere'; did you mean 'radius'? "

@@ -30,7 +30,7 @@ const std::string mesh = "'" JT_SOURCE_DIR "/scenes/mesh.jts' ";
 std::string mpirun(int ranks, const std::string& env = "") {
     return "env ASAN_OPTIONS=detect_leaks=0 " + env +
            " '" JT_MPIEXEC "' --oversubscribe --allow-run-as-root -np " + std::to_string(ranks) +
-           (env.empty() ? "" : " -x JT_MPI_TEST_ABORT_RANK") + " '" JT_MPI "' ";
+           (env.empty() ? "" : " -x " + env.substr(0, env.find('='))) + " '" JT_MPI "' ";
 }
 
 // The same, with mpirun's own binding options (mpirun() leaves its default).
@@ -87,6 +87,12 @@ TEST_F(Mpi, MeshSceneMatchesTheCliByteForByte) {
     expect_same_bytes_as_cli(mesh, "--width 96 --height 54", "32", {2});
 }
 
+// A scene that renders in no time, for tests of what happens around the
+// render (its file named as an output).
+constexpr const char* kEightPixelScene =
+    "render_settings { width: 8; height: 8; }\n"
+    "cameras { perspective_camera { position: <0, 0, 5>; } }\n";
+
 TEST_F(Mpi, BadSceneIsReportedOnceAndEveryRankFails) {
     test::write_file(dir / "bad.jts", "scene { sphere { radius: -1; } }\n");
     ProgramRun r = run_shell(mpirun(3) + "bad.jts -o out.bmp");
@@ -97,14 +103,38 @@ TEST_F(Mpi, BadSceneIsReportedOnceAndEveryRankFails) {
 
 // -o naming the scene file wrote the image over it, as jtracer-cli's did.
 TEST_F(Mpi, AnOutputThatIsTheSceneFileIsRefusedOnce) {
-    const std::string text =
-        "render_settings { width: 8; height: 8; }\n"
-        "cameras { perspective_camera { position: <0, 0, 5>; } }\n";
+    const std::string text = kEightPixelScene;
     test::write_file(dir / "self.jts", text);
     ProgramRun r = run_shell(mpirun(2) + "self.jts -o ./self.jts");
     EXPECT_EQ(r.code, 2) << r.err;
     EXPECT_EQ(count(r.err, "'./self.jts' is the scene file itself"), 1u) << r.err;
     EXPECT_EQ(test::read_file(dir / "self.jts"), text);
+}
+
+// -o shot.jpg gives a BMP, as jtracer-cli's does, but jtracer-cli warns that
+// image viewers and upload forms will take it for a JPEG; jtracer-mpi did not.
+TEST_F(Mpi, AnOutputNamingAnotherImageFormatWarnsAsTheCliDoes) {
+    ProgramRun r = run_shell(mpirun_bound(2, "--bind-to none") + showcase +
+                             "--width 40 --height 30 -o shot.jpg");
+    ASSERT_EQ(r.code, 0) << r.err;
+    EXPECT_EQ(test::read_file(dir / "shot.jpg").substr(0, 2), "BM");
+    EXPECT_EQ(count(r.err, "jtracer-mpi: warning: -o/--output 'shot.jpg' is written as a BMP"), 1u)
+        << r.err;
+    r = run_shell(mpirun(2) + showcase + "--width 40 --height 30 -q -o shot.jpg");
+    EXPECT_EQ(r.err.find("warning"), std::string::npos) << r.err;
+}
+
+// A frame of the range whose file is the scene file: refused before any frame
+// is written, as by jtracer-cli, not once the frames before it were.
+TEST_F(Mpi, AFrameThatIsTheSceneFileIsRefusedBeforeAnyFrame) {
+    const std::string text = kEightPixelScene;
+    test::write_file(dir / "s-3.jts", text);
+    ProgramRun r = run_shell(mpirun(2) + "s-3.jts -q --frames 5 -o 's-%d.jts'");
+    EXPECT_EQ(r.code, 2) << r.err;
+    EXPECT_EQ(count(r.err, "frame 3's file 's-3.jts' is the scene file itself"), 1u) << r.err;
+    EXPECT_NE(r.err.find("; no frame was written"), std::string::npos) << r.err;
+    EXPECT_EQ(files(), std::vector<std::string>{"s-3.jts"});
+    EXPECT_EQ(test::read_file(dir / "s-3.jts"), text);
 }
 
 // A sphere that grows with clock, over many small tiles, so that tiles handed
@@ -138,6 +168,49 @@ TEST_F(Mpi, EveryFrameOfASequenceMatchesTheCli) {
     ASSERT_EQ(run_shell(cli + "-q seq.jts --clock 0.75 -o alone.bmp").code, 0);
     EXPECT_EQ(test::read_file(dir / "seq-0003.bmp"), test::read_file(dir / "alone.bmp"));
     EXPECT_TRUE(std::filesystem::exists(dir / "seq-0004.bmp"));
+}
+
+// jtracer-cli's --skip-existing, for a farm's rerun of an MPI job: rank 0
+// keeps the frames already there and complete on its machine, and the
+// workers do not even prepare them.
+TEST_F(Mpi, SkipExistingRendersOnlyWhatIsMissingOrIncomplete) {
+    test::write_file(dir / "seq.jts", growing);
+    ASSERT_EQ(run_shell(cli + "-q seq.jts --frames 5 -o 'cli-%d.png'").code, 0);
+    ProgramRun r = run_shell(mpirun(2) + "seq.jts -q --frames 5 --tile-size 16 -o 'f%d.png'");
+    ASSERT_EQ(r.code, 0) << r.err;
+    std::filesystem::remove(dir / "f1.png");
+    const std::string whole = test::read_file(dir / "f3.png");
+    test::write_file(dir / "f3.png", whole.substr(0, whole.size() / 2));  // a copy cut short
+    r = run_shell(mpirun(3) + "seq.jts --frames 5 --tile-size 16 -o 'f%d.png' --skip-existing");
+    ASSERT_EQ(r.code, 0) << r.err;
+    for (int f = 0; f < 5; ++f) {
+        const std::string n = std::to_string(f);
+        EXPECT_EQ(test::read_file(dir / ("f" + n + ".png")),
+                  test::read_file(dir / ("cli-" + n + ".png")))
+            << "frame " << f;
+    }
+    EXPECT_EQ(count(r.err, "kept f"), 3u) << r.err;
+    EXPECT_EQ(count(r.err, "kept f2.png (frame 2): already there and complete"), 1u) << r.err;
+    EXPECT_EQ(count(r.err, "wrote f1.png (frame 1"), 1u) << r.err;
+    EXPECT_EQ(count(r.err, "jtracer-mpi: note: f3.png is there, but it is cut short"), 1u) << r.err;
+    EXPECT_EQ(count(r.err, "wrote 2 frames and kept 3 already there in "), 1u) << r.err;
+    // Every frame there: no rank prepares any (rank 1's set-up would take a
+    // minute), and the job ends at once.
+    const auto start = std::chrono::steady_clock::now();
+    r = run_shell("timeout 120 " + mpirun(2, "JT_MPI_TEST_SLOW_SETUP_RANK=1") +
+                  "seq.jts --frames 5 -o 'f%d.png' --skip-existing");
+    const double seconds =
+        std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
+    EXPECT_EQ(r.code, 0) << r.err;
+    EXPECT_LT(seconds, 40.0) << r.err;
+    EXPECT_EQ(count(r.err, "kept all 5 frames, already there"), 1u) << r.err;
+    // One image, kept; where nothing can be kept, refused as by jtracer-cli.
+    r = run_shell(mpirun(2) + "seq.jts -o f0.png --skip-existing");
+    EXPECT_EQ(r.code, 0) << r.err;
+    EXPECT_EQ(r.err, "kept f0.png: already there and complete\n");
+    r = run_shell(mpirun(2) + "seq.jts -o /dev/null --skip-existing");
+    EXPECT_EQ(r.code, 2) << r.err;
+    EXPECT_EQ(count(r.err, "--skip-existing: '/dev/null' is a device or a pipe"), 1u) << r.err;
 }
 
 TEST_F(Mpi, ProgressCoversTheWholeSequence) {
@@ -198,6 +271,49 @@ TEST_F(Mpi, UnwritableOutputIsAnIoError) {
     EXPECT_EQ(r.code, 3) << r.err;
     EXPECT_EQ(count(r.err, "cannot write"), 1u) << r.err;
     EXPECT_TRUE(outputs().empty());
+}
+
+// Rank 0 found a folder it cannot write in only once every rank had rendered
+// the frame: a farm's hours lost to a typo in -o.
+TEST_F(Mpi, UnwritableOutputIsFoundBeforeTheRender) {
+    ProgramRun r = run_shell(mpirun(2) + showcase +
+                             "--width 40 --height 30 --progress log -o nowhere/out.bmp");
+    EXPECT_EQ(r.code, 3) << r.err;
+    EXPECT_EQ(count(r.err, "cannot write 'nowhere/out.bmp'"), 1u) << r.err;
+    EXPECT_NE(r.err.find("; nothing was rendered\n"), std::string::npos) << r.err;
+    EXPECT_EQ(r.err.find("rendering:"), std::string::npos) << r.err;
+    // In a sequence, each frame's own folder, before that frame.
+    test::write_file(dir / "seq.jts", growing);
+    std::filesystem::create_directory(dir / "f0");
+    r = run_shell(mpirun(2) + "seq.jts -q --frames 2 -o 'f%d/shot.bmp'");
+    EXPECT_EQ(r.code, 3) << r.err;
+    EXPECT_EQ(count(r.err, "cannot write 'f1/shot.bmp'"), 1u) << r.err;
+    EXPECT_NE(r.err.find("; frames 0..0 were written\n"), std::string::npos) << r.err;
+    EXPECT_TRUE(exists("f0/shot.bmp"));
+}
+
+// OpenMPI gives a rank a terminal of its own as standard output, whatever
+// mpirun's is redirected to: `-o - > out.bmp` was refused as "standard output
+// is a terminal ... redirect standard output to a file", which it was.
+TEST_F(Mpi, ADashOutputUnderMpirunIsRefusedForWhatItIs) {
+    const std::string settings = "--width 40 --height 30 ";
+    ASSERT_EQ(run_shell(cli + showcase + settings + "-q -o cli.bmp").code, 0);
+    // Run alone, without a launcher, standard output is the user's own; it is
+    // named so, not as /dev/stdout.
+    ProgramRun r = run_shell("env ASAN_OPTIONS=detect_leaks=0 '" JT_MPI "' " + showcase + settings +
+                             "-o - > alone.bmp");
+    EXPECT_EQ(r.code, 0) << r.err;
+    EXPECT_NE(r.err.find("wrote standard output: 40x30"), std::string::npos) << r.err;
+    EXPECT_EQ(test::read_file(dir / "alone.bmp"), test::read_file(dir / "cli.bmp"));
+    r = run_shell(mpirun(2) + showcase + settings + "-q -o - > out.bmp");
+    if (r.code == 0) {
+        // A launcher that hands the ranks a pipe: the image goes through.
+        EXPECT_EQ(test::read_file(dir / "out.bmp"), test::read_file(dir / "cli.bmp"));
+        return;
+    }
+    EXPECT_EQ(r.code, 2) << r.err;
+    EXPECT_EQ(count(r.err, "- (standard output) cannot carry the image under mpirun"), 1u) << r.err;
+    EXPECT_EQ(r.err.find("is a terminal"), std::string::npos) << r.err;
 }
 
 TEST_F(Mpi, DeadRankFailsTheRunWithoutAPartialFile) {

@@ -158,6 +158,10 @@ TEST_F(RegionCli, MergeWritesADashOutputToStandardOutput) {
     ASSERT_EQ(r.code, 0) << r.err;
     EXPECT_FALSE(std::filesystem::exists(dir / "-"));
     EXPECT_EQ(test::read_file(dir / "piped.bmp"), test::read_file(dir / "whole.bmp"));
+    // A failed write names standard output as the user did, not /dev/stdout.
+    r = run_shell(merge + "-q -o - a.bmp b.bmp > /dev/full");
+    EXPECT_EQ(r.code, 3) << r.err;
+    EXPECT_EQ(r.err, "jtracer-merge: cannot write standard output: No space left on device\n");
 }
 
 // As jtracer-cli before a render: a frame that cannot be written is found

@@ -6,12 +6,14 @@
 #include "app/text_editor.hpp"
 #include "app/ui_items.hpp"
 #include "common/files.hpp"
+#include "common/scratch_dir.hpp"
 #include "model/app_actions.hpp"
 #include "model/document_edits.hpp"
 #include "viewer/viewer_fixture.hpp"
 
 #include <gtest/gtest.h>
 
+#include <algorithm>
 #include <filesystem>
 #include <string>
 
@@ -95,6 +97,43 @@ TEST_F(ViewerReloadBar, TheChoiceIsAboveTheImageAndShowsTheDifferences) {
     EXPECT_EQ(find_item(viewer.ui_items(), "reload bar"), nullptr);
     EXPECT_EQ(state.doc.scene.settings.width, 32);
     EXPECT_EQ(state.doc.scene.cameras[1].fov, 55.0);
+}
+
+// Found in the real window: with a panel edit unsaved, an included file
+// changed on disk; the bar named that file, but its differences were the
+// scene file's alone (the edit), never the included file's new lines.
+TEST_F(ViewerReloadBar, TheDifferencesShowAnIncludedFileThatChanged) {
+    ScratchDir scratch{"reload-bar-include"};
+    const fs::path main = scratch.path() / "main.jts";
+    const fs::path ball = scratch.path() / "parts" / "ball.jts";
+    fs::create_directories(ball.parent_path());
+    write_file(ball, "sphere { center: <0, 0, -5>; radius: 1; }\n");
+    write_file(main,
+               "render_settings { width: 64; height: 48; }\n"
+               "cameras { perspective_camera { aspect: 1.3333333333333333; } }\n"
+               "scene { point_light { position: <3, 5, 4>; } include \"parts/ball.jts\"; }\n");
+    open_rendered(main);
+    ASSERT_FALSE(HasFatalFailure());
+    edit_scene(state, [](Scene& s) { s.settings.width = 32; });
+    viewer.frame(state);
+    write_file(ball, "sphere { center: <0, 0, -5>; radius: 2; }\n");
+    ASSERT_TRUE(viewer.run_until_loaded(state));
+    ASSERT_TRUE(state.files.pending_reload) << state.message;
+    viewer.frame(state);
+    ASSERT_TRUE(viewer.click(state, "Show differences"));
+    viewer.frame(state);
+    const TextDiff& diff = viewer.reload_bar().diff;
+    const auto has = [&](DiffLine::Kind kind, std::string_view text) {
+        return std::any_of(diff.lines.begin(), diff.lines.end(), [&](const DiffLine& line) {
+            return line.kind == kind && line.text.find(text) != std::string::npos;
+        });
+    };
+    EXPECT_TRUE(has(DiffLine::Kind::removed, "width: 32;")) << "the edit, mine";
+    EXPECT_TRUE(has(DiffLine::Kind::removed, "radius: 1;")) << "the included file, mine";
+    EXPECT_TRUE(has(DiffLine::Kind::added, "radius: 2;")) << "the included file, theirs";
+    EXPECT_TRUE(has(DiffLine::Kind::file, "parts/ball.jts")) << "named above its lines";
+    EXPECT_EQ(diff.removed, 2);
+    EXPECT_EQ(diff.added, 2);
 }
 
 // Found in the real window at 800x500 (the README's layout on a 2x screen):

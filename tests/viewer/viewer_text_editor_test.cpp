@@ -17,6 +17,7 @@
 #include <gtest/gtest.h>
 #include <imgui.h>
 
+#include <algorithm>
 #include <filesystem>
 #include <string>
 #include <vector>
@@ -45,6 +46,23 @@ void type(std::vector<KeyEvent>& events, const std::string& text) {
         events.push_back(typed_character(static_cast<unsigned char>(c)));
         events.push_back(key(code, kKeyRelease));
     }
+}
+
+// `text`, the test scene's, with the ';' after its height taken away: an
+// error at that line, which the viewer reports and the editor shows.
+std::string without_height_semicolon(std::string text) {
+    const std::string_view good = "height: 48;";
+    return text.replace(text.find(good), good.size(), "height: 48");
+}
+
+// A copy of the test scene under `name` whose file is broken from the start
+// (without_height_semicolon): opened, it loads no good scene. Its text goes
+// to `broken`.
+fs::path broken_scene_copy(const std::string& name, std::string& broken) {
+    const fs::path file = scene_copy(name);
+    broken = without_height_semicolon(read_file(file));
+    write_file(file, broken);
+    return file;
 }
 
 // Ctrl (with Shift) held around a tap of `code`.
@@ -255,8 +273,7 @@ TEST_F(ViewerTextEditor, CtrlQInTheTextAsksBeforeQuitting) {
 // A file broken on disk showed the old good text and "No
 // errors" in the editor, and saving wrote the old text over the broken file.
 TEST_F(ViewerTextEditor, ABrokenFileOnDiskIsShownWithItsErrorsAndNeverSavedOver) {
-    const std::string broken =
-        std::string(original).replace(original.find("height: 48;"), 11, "height: 48");
+    const std::string broken = without_height_semicolon(std::string(original));
     write_file(file, broken);
     ASSERT_TRUE(viewer.run_until_loaded(state));
     viewer.frame(state);
@@ -300,10 +317,8 @@ TEST_F(ViewerTextEditor, ABrokenFileOnDiskIsShownWithItsErrorsAndNeverSavedOver)
 TEST(ViewerTextEditorOpen, AFileBrokenFromTheStartIsShownWithItsErrors) {
     HeadlessViewer viewer{1200, 700};
     ASSERT_TRUE(viewer.ok()) << viewer.error();
-    const fs::path file = scene_copy("text-editor-broken-at-start");
-    std::string broken = read_file(file);
-    broken.replace(broken.find("height: 48;"), 11, "height: 48");
-    write_file(file, broken);
+    std::string broken;
+    const fs::path file = broken_scene_copy("text-editor-broken-at-start", broken);
     AppState state{test_config()};
     open_scene(state, file);
     ASSERT_FALSE(state.doc.loaded);
@@ -464,6 +479,28 @@ TEST_F(ViewerTextEditor, LineNumbersStayWhenTheTextScrollsSideways) {
         }
     EXPECT_EQ(text_pixels, 0) << "no text under the numbers";
     EXPECT_GT(number_pixels, 5) << "the number 10 is there";
+}
+
+// Found in the real window: typing new lines at the bottom of the view, the
+// line being typed went under the horizontal scroll bar (a long line shows
+// one): the view followed the cursor as if the bar took no room.
+TEST_F(ViewerTextEditor, TheLineBeingTypedStaysAboveTheScrollBar) {
+    type_at_the_end_of_a_long_line();
+    const TextEditorState& editor = viewer.text_editor();
+    std::vector<KeyEvent> events;
+    for (int i = 0; i < 60; ++i) tap(events, keys::enter);
+    viewer.key_events(state, events, 40.0, 16.0);
+    viewer.frame(state);
+    viewer.frame(state);
+    const UiItem* view = find_item(viewer.ui_items(), "text view");
+    ASSERT_NE(view, nullptr);
+    const int line = 1 + static_cast<int>(std::count(editor.buffer.begin(),
+                                                     editor.buffer.begin() + editor.cursor, '\n'));
+    ASSERT_EQ(line, 70);
+    const float bottom = editor.line1_y + static_cast<float>(line) * editor.line_height;
+    EXPECT_LE(bottom, view->rect.y1 - ImGui::GetStyle().ScrollbarSize)
+        << "the cursor's line ends under the scroll bar";
+    EXPECT_GE(bottom - editor.line_height, view->rect.y0) << "and is in the view";
 }
 
 // The view kept its scroll from file to file: another file opened after
@@ -629,6 +666,70 @@ TEST(ViewerIncludedFileEditor, OpensTypesUndoesAndSavesAnIncludedFile) {
     EXPECT_EQ(ed.buffer, typed) << "the file as saved";
     EXPECT_EQ(state.message, "Saved parts/ball.jts") << "its own write reloads nothing";
     fs::remove_all(dir);
+}
+
+// Found in the real window: "} oops" typed in parts/objects.jts, the list
+// under the text said "No errors or warnings." (typed text in an included
+// file is read only when saved), and Ctrl+S then said it had an error. The
+// list says when the text is checked instead.
+TEST(ViewerIncludedFileEditor, TypedTextIsNotCalledFreeOfErrors) {
+    HeadlessViewer viewer{1200, 700};
+    ASSERT_TRUE(viewer.ok()) << viewer.error();
+    const fs::path dir = write_including_scene("included-file-unchecked");
+    AppState state{test_config()};
+    open_scene(state, dir / "main.jts");
+    ASSERT_TRUE(state.doc.loaded) << format_diagnostics(state.doc);
+    viewer.press_key(state, keys::letter('T'));
+    ASSERT_TRUE(viewer.click(state, "parts/ball.jts"));
+    viewer.frame(state);
+    EXPECT_NE(find_item(viewer.ui_items(), "No errors or warnings."), nullptr) << "as read";
+
+    viewer.text_editor().jump = static_cast<int>(kIncludedBall.size());
+    viewer.frame(state);
+    viewer.frame(state);
+    std::vector<KeyEvent> events;
+    type(events, "} oops");
+    viewer.key_events(state, events, 40.0, 16.0);
+    viewer.frame(state);
+    ASSERT_TRUE(has_included_drafts(state.editor));
+    EXPECT_EQ(find_item(viewer.ui_items(), "No errors or warnings."), nullptr);
+    EXPECT_NE(find_item(viewer.ui_items(), kCheckedWhenSaved), nullptr);
+
+    viewer.press_key(state, keys::letter('S'), true);
+    EXPECT_EQ(state.message.rfind("Not saved: ", 0), 0u) << state.message;
+    viewer.frame(state);
+    EXPECT_EQ(find_item(viewer.ui_items(), kCheckedWhenSaved), nullptr) << "the error instead";
+    fs::remove_all(dir);
+}
+
+// Found in the real window: bad.jts, broken from the start, typed in and
+// still with errors: the editor said "errors: showing the last good image"
+// and the status line "the image is of the last good text", over an empty
+// image area ("No scene loaded"): there was never a good one.
+TEST(ViewerTextEditorOpen, TypedErrorsBeforeAnyGoodSceneNameNoLastGoodImage) {
+    HeadlessViewer viewer{1200, 700};
+    ASSERT_TRUE(viewer.ok()) << viewer.error();
+    std::string broken;
+    const fs::path file = broken_scene_copy("text-editor-never-good", broken);
+    AppState state{test_config()};
+    open_scene(state, file);
+    ASSERT_FALSE(state.doc.loaded);
+    viewer.press_key(state, keys::letter('T'));
+    viewer.text_editor().jump = 0;
+    viewer.frame(state);
+    viewer.frame(state);
+    std::vector<KeyEvent> events;
+    type(events, "# still broken\n");
+    viewer.key_events(state, events, 40.0, 16.0);
+    state.check.checker.wait();
+    viewer.frame(state);
+    viewer.frame(state);
+    ASSERT_FALSE(state.doc.loaded);
+    ASSERT_TRUE(state.doc.draft.has_value()) << "the typed text, with its error";
+    EXPECT_EQ(state.message.find("last good"), std::string::npos) << state.message;
+    EXPECT_EQ(find_item(viewer.ui_items(), "errors: showing the last good image"), nullptr);
+    EXPECT_NE(find_item(viewer.ui_items(), "errors: no image until they are mended"), nullptr);
+    fs::remove_all(file.parent_path());
 }
 
 // Found in the real window (1500x950, the split scene): the hint beside an

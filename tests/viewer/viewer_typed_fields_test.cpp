@@ -6,6 +6,7 @@
 // types them.
 
 #include "app/keys.hpp"
+#include "common/files.hpp"
 #include "model/app_actions.hpp"
 #include "model/document_edits.hpp"
 #include "model/picking.hpp"
@@ -167,6 +168,37 @@ TEST_F(ViewerTypedFields, DraggingAFieldStillAppliesAsItGoes) {
     viewer.move_mouse(state, x + 40.0f, y);
     EXPECT_GT(camera().fov, 40.0) << "applied while the button is still down";
     viewer.release_mouse(state, 0);
+}
+
+// Found in the real window: "70" typed into the fov, then Ctrl+Q, and the
+// viewer quit at once, the 70 lost without a word; Ctrl+S did nothing at
+// all. Both end the typing first, as a click away does: the value is an
+// edit, which Ctrl+Q asks about and Ctrl+S writes.
+TEST_F(ViewerTypedFields, CtrlQAndCtrlSTakeTheValueBeingTyped) {
+    float x = 0, y = 0;
+    ASSERT_TRUE(field_point("fov", 30.0f, x, y));
+    ctrl_click(x, y);
+    type('7');
+    type('0');
+    ASSERT_EQ(camera().fov, 40.0);
+    viewer.press_key(state, keys::letter('Q'), true);
+    frames(2);
+    EXPECT_FALSE(state.quit) << "not with the typed value unsaved";
+    EXPECT_EQ(camera().fov, 70.0) << "the value typed is taken";
+    ASSERT_TRUE(state.files.unsaved_prompt) << "and Ctrl+Q asks about it";
+    ASSERT_TRUE(viewer.click(state, "Cancel"));
+    frames(2);
+    ASSERT_FALSE(state.quit);
+
+    ctrl_click(x, y);
+    type('5');
+    type('0');
+    ASSERT_EQ(camera().fov, 70.0);
+    viewer.press_key(state, keys::letter('S'), true);
+    frames(2);
+    EXPECT_EQ(camera().fov, 50.0);
+    EXPECT_FALSE(has_unsaved_work(state)) << state.message;
+    EXPECT_NE(read_file(state.doc.path).find("fov: 50;"), std::string::npos);
 }
 
 }  // namespace

@@ -1,6 +1,8 @@
 #include "app/image_input.hpp"
 
 #include "app/keys.hpp"
+#include "app/panels/widgets.hpp"
+#include "app/viewer_frame.hpp"
 #include "model/app_actions.hpp"
 #include "model/object_drag.hpp"
 #include "model/picking.hpp"
@@ -11,6 +13,7 @@
 #include <imgui_internal.h>
 
 #include <cmath>
+#include <utility>
 
 namespace jt::view {
 
@@ -190,7 +193,23 @@ std::optional<FrameRegion> dragged_region(const ImageDrag& drag, const ImagePlac
 void handle_shortcuts(AppState& state, FrameState& frame, const ImagePlace& image) {
     const ImGuiIO& io = ImGui::GetIO();
     handle_escape(state);
+    if (const int key = std::exchange(frame.key_after_typing, 0); key != 0) {
+        if (key == keys::letter('Q'))
+            request_quit(state);
+        else
+            save_scene(state);
+        return;
+    }
     if (state.files.unsaved_prompt) return;
+    // A value typed into a field and not taken yet would be lost by a quit
+    // and left out of a save: Ctrl+Q and Ctrl+S end the typing first.
+    if (io.KeyCtrl && typing_a_value())
+        for (const int key : {keys::letter('Q'), keys::letter('S')})
+            if (pressed(key)) {
+                ImGui::ClearActiveID();
+                frame.key_after_typing = key;
+                return;
+            }
     // Ctrl+Q types nothing: it quits (asking first) from a text field too.
     if (io.KeyCtrl && pressed(keys::letter('Q'))) {
         request_quit(state);

@@ -34,23 +34,32 @@ void choices(AppState& state, ReloadBarState& bar, bool unchanged) {
         resolve_reload(state, ReloadChoice::keep_edits);
     same_line_if_fits("Show differences");
     if (button(bar.show_differences ? "Hide differences" : "Show differences",
-               "The lines of your text (red, -) against the file's (green, +)"))
+               "The lines of your text (red, -) against the files' on disk (green, +)"))
         bar.show_differences = !bar.show_differences;
+}
+
+// Compared every frame the differences show: nothing is copied.
+bool same_texts(const std::vector<std::string>& kept, const std::vector<SourceFile>& files) {
+    return std::equal(kept.begin(), kept.end(), files.begin(), files.end(),
+                      [](const std::string& a, const SourceFile& b) { return a == b.text; });
 }
 
 void differences(const AppState& state, ReloadBarState& bar, float max_height) {
     const SceneDocument& doc = state.doc;
-    const std::string& theirs = state.files.pending_reload->text;
+    const LoadAttempt& newer = *state.files.pending_reload;
     if (bar.revision != doc.revision || bar.generation != doc.file_generation ||
-        bar.draft != doc.draft || bar.theirs != theirs) {
-        bar.diff = diff_lines(document_text(doc), theirs);
+        bar.draft != doc.draft || bar.theirs != newer.text ||
+        !same_texts(bar.theirs_included, newer.source.files)) {
+        bar.diff = reload_differences(doc, newer);
         bar.revision = doc.revision;
         bar.generation = doc.file_generation;
         bar.draft = doc.draft;
-        bar.theirs = theirs;
+        bar.theirs = newer.text;
+        bar.theirs_included.clear();
+        for (const SourceFile& file : newer.source.files) bar.theirs_included.push_back(file.text);
     }
     const TextDiff& diff = bar.diff;
-    ImGui::Text("Yours to the file's: %d line%s removed (-), %d added (+)%s", diff.removed,
+    ImGui::Text("Yours to the files': %d line%s removed (-), %d added (+)%s", diff.removed,
                 diff.removed == 1 ? "" : "s", diff.added,
                 diff.coarse ? "; too many to match up line by line" : "");
     const float line_h = ImGui::GetTextLineHeightWithSpacing();
@@ -64,6 +73,12 @@ void differences(const AppState& state, ReloadBarState& bar, float max_height) {
     while (clipper.Step())
         for (int i = clipper.DisplayStart; i < clipper.DisplayEnd; ++i) {
             const DiffLine& line = diff.lines[static_cast<std::size_t>(i)];
+            if (line.kind == DiffLine::Kind::file) {
+                ImGui::PushStyleColor(ImGuiCol_Text, kWarning);
+                ImGui::TextUnformatted(line.text.data(), line.text.data() + line.text.size());
+                ImGui::PopStyleColor();
+                continue;
+            }
             const bool removed = line.kind == DiffLine::Kind::removed;
             const bool added = line.kind == DiffLine::Kind::added;
             if (removed || added) ImGui::PushStyleColor(ImGuiCol_Text, removed ? kRemoved : kAdded);

@@ -11,20 +11,23 @@
 #include <cstdint>
 #include <optional>
 #include <string>
+#include <vector>
 
 namespace jt::view {
 
 struct ReloadBarState {
     bool show_differences = false;
     // What `diff` was made from, remade only when one changes: the document
-    // at a revision and file generation with its draft, and the file's
-    // newer text. Not the document's text itself: making it writes the panel
-    // edits into the base text, a copy of the whole file every frame.
+    // at a revision and file generation with its draft, and the files' newer
+    // texts (the scene file's, then each included file's). Not the document's
+    // text itself: making it writes the panel edits into the base text, a copy
+    // of the whole file every frame.
     std::optional<std::uint64_t> revision;
     std::uint64_t generation = 0;
     std::optional<std::string> draft;
     std::string theirs;
-    TextDiff diff;
+    std::vector<std::string> theirs_included;
+    TextDiff diff;  // reload_differences
 };
 
 // Draws the bar at the top of `area` while a reload waits for the choice;

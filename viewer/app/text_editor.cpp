@@ -255,7 +255,13 @@ void error_list(AppState& state, TextEditorState& ed, float height) {
             note_item(label.c_str(), false);
         }
     }
-    if (shown == 0) ImGui::TextDisabled("No errors or warnings.");
+    if (shown == 0) {
+        const char* none = draft ? kCheckedWhenSaved : "No errors or warnings.";
+        ImGui::PushTextWrapPos(0.0f);
+        ImGui::TextDisabled("%s", none);
+        ImGui::PopTextWrapPos();
+        note_item(none, false);
+    }
     ImGui::EndChild();
 }
 
@@ -424,10 +430,13 @@ void text_editor(AppState& state, TextEditorState& ed, float x0, float y0, float
         ImGui::SameLine();
         if (state.check.checker.in_flight())
             ImGui::TextDisabled("checking...");
-        else if (draft)
-            ImGui::TextColored(ImVec4(1.0f, 0.45f, 0.4f, 1.0f),
-                               "errors: showing the last good image");
-        else
+        else if (draft) {
+            // Before any good load there is no image to keep.
+            const char* errors = doc.loaded ? "errors: showing the last good image"
+                                            : "errors: no image until they are mended";
+            ImGui::TextColored(ImVec4(1.0f, 0.45f, 0.4f, 1.0f), "%s", errors);
+            note_item(errors, false);
+        } else
             hint_text("Ctrl+Z undoes panel and text edits alike", "Ctrl+Z undoes all edits",
                       "text editor hint");
         if (doc.file_deleted) {
@@ -586,10 +595,15 @@ void text_editor(AppState& state, TextEditorState& ed, float x0, float y0, float
             ImGui::SetScrollY(std::max(0.0f, y - view_h / 3.0f));
         ed.scroll_to.reset();
     } else if (ImGui::GetActiveID() == widget) {
-        // Typing past the bottom or top: the view follows the cursor.
-        const float y = static_cast<float>(line_of(ed.buffer, ed.cursor) - 1) * line_h;
-        if (y < scroll) ImGui::SetScrollY(y);
-        if (y + 2 * line_h > scroll + view_h) ImGui::SetScrollY(y + 2 * line_h - view_h);
+        // Typing past the bottom or top: the view follows the cursor, its
+        // line and the next one in the part not under a scroll bar (a long
+        // line brings one across the bottom).
+        const ImRect visible = ImGui::GetCurrentWindow()->InnerClipRect;
+        const float top = line_y(line_of(ed.buffer, ed.cursor));
+        if (top < visible.Min.y)
+            ImGui::SetScrollY(std::max(0.0f, scroll - (visible.Min.y - top)));
+        else if (top + 2 * line_h > visible.Max.y)
+            ImGui::SetScrollY(scroll + (top + 2 * line_h - visible.Max.y));
     }
     if (ImGui::GetActiveID() == widget) {
         // And sideways: the cursor's column stays in view.
@@ -607,6 +621,7 @@ void text_editor(AppState& state, TextEditorState& ed, float x0, float y0, float
         if (x > scroll_x + view_w - margin) ImGui::SetScrollX(x - view_w + margin);
         ed.cursor_x = origin.x + x;
     }
+    note_window("text view");
     ImGui::EndChild();
     pop_monospace_font();
     error_list(state, ed, list_height);

@@ -67,6 +67,11 @@ struct TextEditorState {
 // Texts larger than this are not put in the widget (it keeps a copy per character).
 inline constexpr std::size_t kMaxEditableText = 4u << 20;
 
+// Under an included file's typed text, which is read with the scene only when
+// saved: no list of errors can describe it before.
+inline constexpr const char* kCheckedWhenSaved =
+    "Not checked yet: Save (Ctrl+S) reads the scene with this text first";
+
 // Draws the editor as a window filling `x0..x1` x `y0..y1`.
 void text_editor(AppState& state, TextEditorState& editor, float x0, float y0, float x1, float y1);
 

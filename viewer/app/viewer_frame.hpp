@@ -37,6 +37,10 @@ struct FrameState {
     DiagnosticsText diagnostics;
     ScreenRect image_area;  // where the last frame could show the image
     ScreenRect image_rect;  // where it put it (place_image; may reach past image_area)
+    // Ctrl+Q or Ctrl+S pressed while a value was being typed into a field:
+    // that frame ends the typing and the panels take the value; the key acts
+    // on the next frame, on the value taken. The key's code, or 0.
+    int key_after_typing = 0;
 };
 
 void viewer_frame(AppState& state, FrameState& frame, const FrameInfo& info);

@@ -29,6 +29,7 @@
 #include <memory>
 #include <optional>
 #include <string>
+#include <string_view>
 #include <variant>
 #include <vector>
 
@@ -244,6 +245,10 @@ struct FileState {
     // Why the last Save scene was refused (the file changed on disk), or empty;
     // save_scene_anyway overwrites it.
     std::string save_conflict;
+    // The included files typed in whose change refused it (canonical), or
+    // none when the scene file's did: reloading would keep their drafts, so
+    // the choice offered is to drop them (revert_conflicting_drafts).
+    std::vector<std::string> save_conflict_drafts;
     std::optional<GuardedCommand> unsaved_prompt;
     std::string save_as_conflict;  // the file Save scene as would replace, until confirmed
     // The unsaved work there was when the open under way was asked for: none,
@@ -340,22 +345,32 @@ struct TextFields {
 };
 
 // The result of the last command, for the status line. A message that says
-// the files hold the work shown ("Saved scene.jts") claims so (claim_saved),
-// and the status line shows it only while no edit since has outdated it
-// (shown_message): a user reading "Saved" takes the edit on screen for saved.
+// the files hold the work shown ("Saved scene.jts", "Opened scene.jts")
+// claims so (claim_saved, claim_read), and the status line shows it only
+// while no edit since has outdated it (shown_message); after one it shows
+// `when_edited`: a user reading "Saved" takes the edit on screen for saved.
 // Any other message set later drops the claim with the text it replaces.
 struct StatusMessage : std::string {
     StatusMessage& operator=(std::string text) {
         std::string::operator=(std::move(text));
-        claims_saved = false;
+        when_edited.clear();
         return *this;
     }
     void clear() { *this = std::string(); }
     void claim_saved(std::string text) {
         *this = std::move(text);
-        claims_saved = true;
+        when_edited = "Edited since the save: Ctrl+S saves the edits";
     }
-    bool claims_saved = false;
+    // `text` says the file `name` was just read: the scene shown is its own.
+    void claim_read(std::string text, std::string_view verb, const std::string& name) {
+        *this = std::move(text);
+        when_edited = "Edited since ";
+        when_edited += verb;
+        when_edited += " " + name + ": Ctrl+S saves the edits";
+    }
+    bool claims() const { return !when_edited.empty(); }
+    // Made when the claim is, not each frame: an idle frame allocates nothing.
+    std::string when_edited;
 };
 
 // Everything the viewer knows between frames, in parts with one job each; a

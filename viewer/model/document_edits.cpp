@@ -320,7 +320,9 @@ void take_in(AppState& state, CheckedText checked) {
         if (appeared)
             state.check.checker.check(++state.check.draft_id, checked.text, doc.path,
                                       std::chrono::milliseconds(0), doc.options);
-        state.message = "The text has errors (see Diagnostics): the image is of the last good text";
+        state.message =
+            doc.loaded ? "The text has errors (see Diagnostics): the image is of the last good text"
+                       : "The text has errors (see Diagnostics): no image until they are mended";
         return;
     }
     const Scene before = doc.scene;

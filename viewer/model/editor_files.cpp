@@ -109,17 +109,33 @@ void revert_included_draft(EditorFiles& files, std::string_view canonical) {
     std::erase_if(files.drafts, [&](const IncludedDraft& d) { return d.canonical == canonical; });
 }
 
-std::string included_draft_conflict(const SceneDocument& doc, const EditorFiles& files) {
-    for (const IncludedDraft& d : files.drafts) {
-        const Expected<std::string> disk = read_text_file(d.path);
-        if (!disk || *disk != d.disk)
-            return d.name + " was changed by another program since you began typing in it";
-        if (reading_of(doc, d.canonical) && included_text(doc, d.canonical) != d.base)
-            return d.name +
-                   " changed (reloaded, or a panel edit of its values) since you began "
-                   "typing in it";
-    }
+namespace {
+
+// Why saving the draft would replace text not seen when typing began, or empty.
+std::string draft_conflict(const SceneDocument& doc, const IncludedDraft& d) {
+    const Expected<std::string> disk = read_text_file(d.path);
+    if (!disk || *disk != d.disk)
+        return d.name + " was changed by another program since you began typing in it";
+    if (reading_of(doc, d.canonical) && included_text(doc, d.canonical) != d.base)
+        return d.name +
+               " changed (reloaded, or a panel edit of its values) since you began "
+               "typing in it";
     return {};
+}
+
+}  // namespace
+
+std::string included_draft_conflict(const SceneDocument& doc, const EditorFiles& files) {
+    for (const IncludedDraft& d : files.drafts)
+        if (std::string conflict = draft_conflict(doc, d); !conflict.empty()) return conflict;
+    return {};
+}
+
+std::vector<std::string> conflicting_drafts(const SceneDocument& doc, const EditorFiles& files) {
+    std::vector<std::string> canonicals;
+    for (const IncludedDraft& d : files.drafts)
+        if (!draft_conflict(doc, d).empty()) canonicals.push_back(d.canonical);
+    return canonicals;
 }
 
 Expected<void> check_included_drafts(const SceneDocument& doc, EditorFiles& files) {

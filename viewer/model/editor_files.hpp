@@ -75,6 +75,9 @@ void revert_included_draft(EditorFiles& files, std::string_view canonical);
 // file changed on disk, or a panel edit changed its values since; empty
 // when nothing would be lost.
 std::string included_draft_conflict(const SceneDocument& doc, const EditorFiles& files);
+// The files (SourceFile::canonical) whose drafts included_draft_conflict
+// finds such a change under.
+std::vector<std::string> conflicting_drafts(const SceneDocument& doc, const EditorFiles& files);
 
 // Checks that the scene, with each draft read in place of its file, has no
 // error in a drafted text; the error quotes the first (and the draft keeps

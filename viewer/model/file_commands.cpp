@@ -47,6 +47,9 @@ namespace {
 void finish_open(AppState& state, const std::filesystem::path& path, LoadAttempt attempt) {
     const bool ok = attempt.ok;
     const bool first = !state.doc.loaded;
+    // A file read with errors as the first scene is the document all the
+    // same (the title's, the text editor's to mend): listed as opened.
+    const bool listed = ok || (first && attempt.read);
     // Only the cameras are compared: copying the whole scene would cost as
     // much as the load's own copies.
     const std::vector<Camera> before = state.doc.scene.cameras;
@@ -61,6 +64,10 @@ void finish_open(AppState& state, const std::filesystem::path& path, LoadAttempt
         state.files.watcher = FileWatcher(state.config.watch_interval);
         state.files.watcher.watch(path);
     }
+    if (listed) {
+        state.files.recent.add(path);
+        state.fields.open_path_input = path.string();
+    }
     if (ok) {
         state.view.camera_index = std::max(active_camera_index(state.doc.scene), 0);
         state.view.free_camera_active = false;
@@ -73,9 +80,7 @@ void finish_open(AppState& state, const std::filesystem::path& path, LoadAttempt
             state.fields.save_scene_path.clear();
         }
         after_scene_replaced(state, before);
-        state.files.recent.add(path);
-        state.fields.open_path_input = path.string();
-        state.message = "Opened " + path.string();
+        state.message.claim_read("Opened " + path.string(), "opening", path.filename().string());
     } else if (!first && state.doc.path != path) {
         state.message = "Could not open " + path.filename().string() +
                         (has_located(state.doc.diagnostics) ? ": it has errors" : "") +
@@ -139,7 +144,16 @@ void finish_reload(AppState& state, LoadAttempt attempt) {
         // unchanged: the image shown is of this very scene.
         if (*state.doc.original == *shown)
             keep_render_for(state.render, revision, state.doc.revision);
-        state.message = "Reloaded " + name;
+        state.message.claim_read("Reloaded " + name, "reloading", name);
+        // The scene now reads the file, the editor still shows the text typed
+        // in it before: said now, not first when Save refuses.
+        std::vector<std::string> under;
+        for (const std::string& canonical : conflicting_drafts(state.doc, state.editor))
+            under.push_back(draft_of(state.editor, canonical)->name);
+        if (!under.empty())
+            state.message = listed_names(under) +
+                            " changed on disk while you were typing in it: the image shows the "
+                            "file; Revert drops your text, Save scene asks before replacing it";
         return;
     }
     // Replacing the scene now would throw the edits away: ask first.
@@ -375,7 +389,8 @@ void resolve_reload(AppState& state, ReloadChoice choice) {
         state.history.undo.record({state.doc.text, *state.doc.original, std::nullopt});
         state.message = "Reloaded " + name + " and re-applied your edits (not saved yet)";
     } else {
-        state.message = "Reloaded " + name + "; your edits were dropped";
+        state.message.claim_read("Reloaded " + name + "; your edits were dropped", "reloading",
+                                 name);
     }
 }
 
@@ -445,11 +460,7 @@ bool has_unsaved_work(const AppState& state) {
 }
 
 const std::string& shown_message(const AppState& state) {
-    // Made once: the status line asks every frame, and an idle frame
-    // allocates nothing.
-    static const std::string edited_since_the_save =
-        "Edited since the save: Ctrl+S saves the edits";
-    if (state.message.claims_saved && has_unsaved_work(state)) return edited_since_the_save;
+    if (state.message.claims() && has_unsaved_work(state)) return state.message.when_edited;
     return state.message;
 }
 
@@ -467,12 +478,14 @@ bool save_scene(AppState& state) {
     if (state.doc.loaded && writes_scene && file_changed_on_disk(state.doc, what)) {
         state.files.save_conflict = state.doc.path.filename().string() + " " + what +
                                     " since it was loaded; saving would replace that";
+        state.files.save_conflict_drafts.clear();
         state.message = "Scene not saved: " + state.files.save_conflict;
         return false;
     }
     if (const std::string conflict = included_draft_conflict(state.doc, state.editor);
         !conflict.empty()) {
         state.files.save_conflict = conflict + "; saving would replace that";
+        state.files.save_conflict_drafts = conflicting_drafts(state.doc, state.editor);
         state.message = "Not saved: " + state.files.save_conflict;
         return false;
     }
@@ -481,6 +494,21 @@ bool save_scene(AppState& state) {
 
 bool save_scene_anyway(AppState& state) {
     return save_now(state);
+}
+
+void revert_conflicting_drafts(AppState& state) {
+    std::vector<std::string> names;
+    for (const std::string& canonical : state.files.save_conflict_drafts) {
+        if (const IncludedDraft* d = draft_of(state.editor, canonical)) names.push_back(d->name);
+        revert_included_draft(state.editor, canonical);
+    }
+    state.files.save_conflict.clear();
+    state.files.save_conflict_drafts.clear();
+    // The scene already reads those files as they are on disk (the watcher
+    // reloaded it): a draft is taken in only by a save.
+    if (!names.empty())
+        state.message = "Dropped what you typed in " + listed_names(names) +
+                        ": the scene reads it as it is on disk";
 }
 
 bool save_image(AppState& state, const std::filesystem::path& path) {

@@ -57,6 +57,9 @@ const std::string& shown_message(const AppState& state);
 bool save_scene(AppState& state);
 // Saves even though a file changed on disk, replacing what is there.
 bool save_scene_anyway(AppState& state);
+// After a save refused for included files changed under the text typed in
+// them (save_conflict_drafts): drops that text, keeping the files on disk.
+void revert_conflicting_drafts(AppState& state);
 // Writes the current image to `path`; never replaces a file (see
 // save_image_numbered in image_files.hpp): when `path` exists the first free
 // numbered name beside it is used, and the message says which.

@@ -12,6 +12,7 @@
 
 #include <algorithm>
 #include <fstream>
+#include <iterator>
 
 namespace jt::view {
 
@@ -348,6 +349,48 @@ std::string changed_on_disk(const SceneDocument& doc, const LoadAttempt& newer) 
             return std::string(short_file_name(doc, file.name));
     }
     return {};
+}
+
+TextDiff reload_differences(const SceneDocument& doc, const LoadAttempt& newer) {
+    TextDiff all;
+    const auto add = [&](std::string_view name, std::string_view mine, std::string_view theirs) {
+        if (mine == theirs) return;
+        TextDiff diff = diff_lines(mine, theirs);
+        all.lines.push_back({DiffLine::Kind::file, std::string(name), 0, 0});
+        std::move(diff.lines.begin(), diff.lines.end(), std::back_inserter(all.lines));
+        all.removed += diff.removed;
+        all.added += diff.added;
+        all.coarse = all.coarse || diff.coarse;
+    };
+    add(doc.path.filename().string(), document_text(doc), newer.text);
+
+    const std::vector<SourceFile>& before = doc.source.files;
+    const std::vector<SourceFile>& now = newer.source.files;
+    std::vector<EditedFile> edited;
+    if (doc.loaded && !doc.draft && scene_edited(doc)) {
+        SourceEditResult edit = apply_scene_edits(doc.text, doc.source, *doc.original, doc.scene);
+        if (edit.ok()) edited = std::move(edit.files);
+    }
+    const auto first_of = [](const std::vector<SourceFile>& files, const std::string& canonical) {
+        return std::find_if(files.begin(), files.end(),
+                            [&](const SourceFile& f) { return f.canonical == canonical; });
+    };
+    const auto mine = [&](const SourceFile& file) -> std::string_view {
+        for (const EditedFile& e : edited)
+            if (before[e.file - 1].canonical == file.canonical) return e.text;
+        return file.text;
+    };
+    for (auto f = now.begin(); f != now.end(); ++f) {
+        if (first_of(now, f->canonical) != f) continue;  // listed at its first reading
+        const auto old = first_of(before, f->canonical);
+        add(short_file_name(doc, f->name), old == before.end() ? std::string_view() : mine(*old),
+            f->text);
+    }
+    // A file read before and no longer (an error stopped the reading first).
+    for (auto f = before.begin(); f != before.end(); ++f)
+        if (first_of(before, f->canonical) == f && first_of(now, f->canonical) == now.end())
+            add(short_file_name(doc, f->name), mine(*f), {});
+    return all;
 }
 
 Expected<std::vector<std::string>> save_scene_in_place(SceneDocument& doc) {

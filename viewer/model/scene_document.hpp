@@ -12,6 +12,7 @@
 #include "jtracer/scene.hpp"
 #include "jtracer/source_edit.hpp"
 #include "jtracer/source_map.hpp"
+#include "model/text_diff.hpp"
 
 #include <chrono>
 #include <cstdint>
@@ -230,6 +231,13 @@ Expected<Scene> reapply_edits(const SceneDocument& doc, const LoadAttempt& newer
 // that one of them no longer reads (short_file_name); empty when every file
 // reads the same, and reloading would only drop the unsaved edits.
 std::string changed_on_disk(const SceneDocument& doc, const LoadAttempt& newer);
+
+// What reloading would change, file by file: the scene file's text as Save
+// would write it (document_text) and each included file's (as read, with the
+// panels' edits of its values written in) against `newer`'s. Each file that
+// differs is one line of kind `file` with its name (short_file_name) and then
+// its differences; the counts are the sums.
+TextDiff reload_differences(const SceneDocument& doc, const LoadAttempt& newer);
 
 // The first file that both the document and a newer reading of its text
 // (`files`, its SourceScene::files) include, but with another text: an

@@ -82,14 +82,18 @@ bool frame_selection(AppState& state) {
 
 std::optional<int> selection_line(const AppState& state) {
     const BlockSource* block = block_source(state, current_selection(state.view, state.doc.scene));
-    if (!block) return std::nullopt;
+    // A block of an included file has no line in the scene file's text.
+    if (!block || block->keyword_span.pos.file != 0) return std::nullopt;
     return block->keyword_span.pos.line;
 }
 
 Selection selection_at_offset(const AppState& state, std::size_t offset) {
     const SceneSource& source = state.doc.source;
+    // Offsets are into each block's own file: one of an included file may
+    // overlap any block of the scene file's text.
     const auto within = [&](const BlockSource& b) {
-        return offset >= b.keyword_span.offset && offset <= b.close_brace;
+        return b.keyword_span.pos.file == 0 && offset >= b.keyword_span.offset &&
+               offset <= b.close_brace;
     };
     for (std::size_t i = 0; i < source.primitives.size(); ++i)
         if (within(source.primitives[i])) return {Selection::Kind::primitive, static_cast<int>(i)};

@@ -19,9 +19,10 @@ bool duplicate_selection(AppState& state);
 bool frame_selection(AppState& state);
 
 // The line (from 1) of the selection's block keyword in the document's base
-// text (state.doc.text), or nothing.
+// text (state.doc.text), or nothing (also for a block of an included file).
 std::optional<int> selection_line(const AppState& state);
-// The object or light whose block holds byte `offset` of state.doc.text.
+// The object or light whose block holds byte `offset` of state.doc.text
+// (never one of an included file).
 Selection selection_at_offset(const AppState& state, std::size_t offset);
 
 }  // namespace jt::view

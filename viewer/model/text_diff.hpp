@@ -10,7 +10,7 @@
 namespace jt::view {
 
 struct DiffLine {
-    enum class Kind { same, removed, added } kind = Kind::same;
+    enum class Kind { same, removed, added, file } kind = Kind::same;
     std::string text;  // without its newline
     int old_line = 0;  // from 1, in the old text (0 for an added line)
     int new_line = 0;  // from 1, in the new text (0 for a removed line)

@@ -8,6 +8,7 @@
 #include "model_reader/gltf_rules.hpp"
 #include "model_reader/model_materials.hpp"
 #include "model_reader/model_messages.hpp"
+#include "model_reader/polygon.hpp"
 
 #include <assimp/BaseImporter.h>
 #include <assimp/importerdesc.h>
@@ -212,8 +213,8 @@ bool finite(const glm::vec3& v) {
     return std::isfinite(v.x) && std::isfinite(v.y) && std::isfinite(v.z);
 }
 
-// The triangles of one aiMesh placed by `to_model`, fanned from each
-// polygon's first vertex; zero-area and broken ones are skipped, and the
+// The triangles of one aiMesh placed by `to_model`, each polygon cut as
+// polygon.hpp says; zero-area and broken ones are skipped, and the
 // broken ones, points and lines counted (ModelLeftOut).
 class ModelBuilder {
   public:
@@ -264,8 +265,8 @@ class ModelBuilder {
             if (!face.mIndices) continue;
             if (face.mNumIndices == 1) ++model_.left_out.points;
             if (face.mNumIndices == 2) ++model_.left_out.lines;
-            for (unsigned k = 2; k < face.mNumIndices; ++k) {
-                const unsigned a = face.mIndices[0], b = face.mIndices[k - 1], c = face.mIndices[k];
+            for (const std::array<unsigned, 3>& t : polygon_triangles(face, mesh, first)) {
+                const unsigned a = t[0], b = t[1], c = t[2];
                 if (a >= mesh.mNumVertices || b >= mesh.mNumVertices || c >= mesh.mNumVertices) {
                     ++model_.left_out.out_of_range;
                     continue;
@@ -317,6 +318,35 @@ class ModelBuilder {
         }
     }
 
+    // A face's triangles as the mesh's vertex indices (polygon.hpp). A face
+    // naming a corner the mesh does not have, or one at infinity or NaN, is
+    // fanned: the triangles that can be used are kept, the others counted.
+    // Both vectors are the builder's, so that a face costs no allocation.
+    const std::vector<std::array<unsigned, 3>>& polygon_triangles(const aiFace& face,
+                                                                  const aiMesh& mesh,
+                                                                  std::uint32_t first) {
+        std::vector<std::array<unsigned, 3>>& out = face_triangles_;
+        std::vector<glm::dvec3>& corners = face_corners_;
+        out.clear();
+        corners.clear();
+        const unsigned* index = face.mIndices;
+        if (face.mNumIndices > 3) {
+            for (unsigned k = 0; k < face.mNumIndices && index[k] < mesh.mNumVertices; ++k) {
+                const glm::vec3& p = model_.positions[first + index[k]];
+                if (!finite(p)) break;
+                corners.emplace_back(p);
+            }
+        }
+        if (corners.size() == face.mNumIndices) {
+            for (const auto& t : triangulate_polygon(corners, ear_budget_))
+                out.push_back({index[t[0]], index[t[1]], index[t[2]]});
+            return out;
+        }
+        for (unsigned k = 2; k < face.mNumIndices; ++k)
+            out.push_back({index[0], index[k - 1], index[k]});
+        return out;
+    }
+
     void add_triangle(const std::array<std::uint32_t, 3>& corners) {
         const glm::vec3 &a = model_.positions[corners[0]], &b = model_.positions[corners[1]],
                         &c = model_.positions[corners[2]];
@@ -330,6 +360,9 @@ class ModelBuilder {
         model_.triangles.push_back(corners);
     }
 
+    std::vector<std::array<unsigned, 3>> face_triangles_;
+    std::vector<glm::dvec3> face_corners_;
+    std::uint64_t ear_budget_ = kEarClippingBudget;
     bool use_normals_;
     const MaterialPlan* plan_;
     bool has_normals_ = false, has_uvs_ = false, has_colours_ = false;
@@ -470,6 +503,7 @@ Expected<Model> import_model(const std::filesystem::path& file, const std::files
         if (model) {
             model->left_out.refused_file = io->refusal();
             model->left_out.reader_said = std::move(said);
+            if (plan) model->left_out.colours_not_read = plan->unread;
         }
         if (model && model->triangles.empty()) {
             // Text Assimp could not read shows as a model of nothing.

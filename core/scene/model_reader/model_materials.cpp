@@ -15,6 +15,7 @@
 #include <set>
 #include <string>
 #include <string_view>
+#include <tuple>
 #include <utility>
 
 namespace jt {
@@ -463,6 +464,34 @@ Expected<MaterialPlan> gltf_plan(const aiScene& scene, const std::filesystem::pa
     return plan;
 }
 
+// What a file of a format whose colours are not read holds that a 3D tool
+// would show: textures, vertex colours (but PLY's, which are read), or faces
+// of materials of different colours.
+std::string colours_not_read(const aiScene& scene, bool ply) {
+    std::vector<std::string> held;
+    std::set<std::tuple<float, float, float>> colours;
+    bool textures = false;
+    for (unsigned m = 0; m < scene.mNumMeshes; ++m) {
+        const aiMesh& mesh = *scene.mMeshes[m];
+        if (mesh.mMaterialIndex >= scene.mNumMaterials) continue;
+        const aiMaterial& material = *scene.mMaterials[mesh.mMaterialIndex];
+        textures = textures || material.GetTextureCount(aiTextureType_DIFFUSE) > 0 ||
+                   material.GetTextureCount(aiTextureType_BASE_COLOR) > 0;
+        if (aiColor3D c; material.Get(AI_MATKEY_COLOR_DIFFUSE, c) == aiReturn_SUCCESS)
+            colours.insert({c.r, c.g, c.b});
+    }
+    bool vertex_colours = false;
+    for (unsigned m = 0; m < scene.mNumMeshes && !ply; ++m)
+        vertex_colours = vertex_colours || scene.mMeshes[m]->mColors[0] != nullptr;
+    if (textures) held.push_back("textures");
+    if (colours.size() > 1) held.push_back("material colours");
+    if (vertex_colours) held.push_back("vertex colours");
+    std::string said;
+    for (std::size_t i = 0; i < held.size(); ++i)
+        said += (i == 0 ? "" : i + 1 == held.size() ? " and " : ", ") + held[i];
+    return said;
+}
+
 }  // namespace
 
 Expected<MaterialPlan> plan_materials(const aiScene& scene, const std::filesystem::path& file,
@@ -479,6 +508,8 @@ Expected<MaterialPlan> plan_materials(const aiScene& scene, const std::filesyste
         plan->face_parts.assign(scene.mNumMeshes, {0});
     }
     if (plan) plan->vertex_colours = ext == ".obj" || ext == ".ply";
+    if (plan && ext != ".obj" && ext != ".gltf" && ext != ".glb")
+        plan->unread = colours_not_read(scene, ext == ".ply");
     return plan;
 }
 

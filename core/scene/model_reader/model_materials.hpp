@@ -20,6 +20,7 @@
 
 #include <cstdint>
 #include <filesystem>
+#include <string>
 #include <vector>
 
 namespace jt {
@@ -32,6 +33,9 @@ struct MaterialPlan {
     // Whether the format's vertex colours count: PLY's and OBJ's only, as the
     // language lists them.
     bool vertex_colours = false;
+    // For a format whose colours are not read: what it holds that is left
+    // unread ("textures and vertex colours"), or "".
+    std::string unread;
 
     std::uint32_t part(unsigned mesh, unsigned face) const {
         const std::vector<std::uint32_t>& faces = face_parts[mesh];

@@ -430,6 +430,47 @@ TEST_F(ViewerFiles, TheStatusLineDoesNotCallANewerEditSaved) {
     EXPECT_EQ(shown_message(state), "") << "a cleared message claims nothing";
 }
 
+// Found in the real window: "Opened main.jts" stayed on the status line
+// after a panel edit, beside the title's "*"; so did "Reloaded".
+TEST_F(ViewerFiles, TheStatusLineDoesNotCallANewerEditTheFilesScene) {
+    ASSERT_EQ(shown_message(state).rfind("Opened ", 0), 0u) << shown_message(state);
+    edit_pigment();
+    ASSERT_TRUE(has_unsaved_work(state));
+    EXPECT_EQ(shown_message(state).find("Opened"), std::string::npos) << shown_message(state);
+    EXPECT_NE(shown_message(state).find("Ctrl+S"), std::string::npos) << shown_message(state);
+    undo(state);
+    ASSERT_FALSE(has_unsaved_work(state));
+    EXPECT_EQ(shown_message(state), "Undone");
+
+    they_save(kMine);
+    ASSERT_EQ(shown_message(state).rfind("Reloaded ", 0), 0u) << shown_message(state);
+    edit_scene(state, [](Scene& s) { s.settings.samples = 3; });
+    EXPECT_EQ(shown_message(state).find("Reloaded"), std::string::npos) << shown_message(state);
+    EXPECT_NE(shown_message(state).find("Ctrl+S"), std::string::npos) << shown_message(state);
+}
+
+// Found in the real window: a file with errors opened as the viewer starts
+// is the document (its title, the text editor's to mend), yet the Recent
+// list, whose first entry reads as the file shown, still began with the
+// scene of the last session. A file that could not be read is not listed.
+TEST(ViewerRecent, AFileOpenedWithErrorsAtTheStartIsTheNewestRecentFile) {
+    const fs::path file = scene_copy("recent-broken-at-start");
+    write_file(file, replaced(kOriginal, "height: 48;", "height: 48"));
+    AppState state{test_config()};
+    state.files.recent.add("/elsewhere/last-session.jts");
+    open_scene(state, file);
+    ASSERT_FALSE(state.doc.loaded);
+    ASSERT_EQ(state.doc.path, file);
+    EXPECT_EQ(state.files.recent.paths().front(), file.string());
+    EXPECT_EQ(state.fields.open_path_input, file.string());
+
+    AppState other{test_config()};
+    other.files.recent.add("/elsewhere/last-session.jts");
+    open_scene(other, file.parent_path() / "no-such-scene.jts");
+    EXPECT_EQ(other.files.recent.paths().front(), "/elsewhere/last-session.jts");
+    fs::remove_all(file.parent_path());
+}
+
 // The save replaces the file by a rename, which the folder allows whatever
 // the file's own mode: the file keeps its mode, and one nobody may write is
 // not replaced (root may write anything, so its bits are what count).

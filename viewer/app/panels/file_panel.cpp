@@ -21,10 +21,17 @@ void save_conflict_choice(AppState& state) {
     ImGui::PushStyleColor(ImGuiCol_Text, warning_colour);
     ImGui::TextWrapped("Not saved: %s.", state.files.save_conflict.c_str());
     ImGui::PopStyleColor();
-    if (button("Reload (choose what to keep)",
-               "Read the file again, then choose between its "
-               "text and your edits"))
+    if (!state.files.save_conflict_drafts.empty()) {
+        // A reload keeps text typed in included files: it would not choose.
+        if (button("Revert typed text",
+                   "Drop what you typed in the changed file and keep the file as it is "
+                   "on disk"))
+            revert_conflicting_drafts(state);
+    } else if (button("Reload (choose what to keep)",
+                      "Read the file again, then choose between its "
+                      "text and your edits")) {
         reload_scene(state);
+    }
     same_line_if_fits("Save anyway");
     if (button("Save anyway", "Replace what is on disk with your edited scene"))
         save_scene_anyway(state);

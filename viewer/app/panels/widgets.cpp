@@ -117,6 +117,11 @@ const char* more_digits(const char* a, const char* b) {
 
 }  // namespace
 
+bool typing_a_value() {
+    const Typing& t = typing();
+    return t.field != 0 && t.frame == ImGui::GetFrameCount() - 1;
+}
+
 const char* number_format(float value, double min, double max) {
     static constexpr const char* formats[] = {"%.4g", "%.5g", "%.6g", "%.7g", "%.8g", "%.9g"};
     if (!(max > min) || !std::isfinite(value)) return formats[0];

@@ -28,6 +28,10 @@ bool edit_number(const char* label, double& value, float speed, double min = 0.0
 bool edit_vector(const char* label, Vec3& value, float speed = 0.05f, double min = 0.0,
                  double max = 0.0, const std::function<std::string()>& why = {});
 bool edit_colour(const char* label, Colour& value);
+// A value is being typed into one of these fields (it was in typing mode last
+// frame): not taken yet. Ending the typing (ImGui::ClearActiveID) before the
+// panels are drawn has them take it this frame.
+bool typing_a_value();
 // The printf format a number's field shows `value` with: "%.4g", or more
 // digits (up to "%.9g") where four would show a value inside [min, max] as
 // one outside it (179.98 in a fov field held below 180 shows "179.98", not

@@ -37,6 +37,9 @@ struct ModelLeftOut {
     // What the model reader printed while it read the file (Assimp's OpenGEX
     // reader writes to stderr), each line once with how often it came.
     std::vector<std::pair<std::string, std::size_t>> reader_said;
+    // With materials "file", what a format whose colours are not read (not
+    // OBJ, glTF or PLY) holds all the same: "textures", ..., or "".
+    std::string colours_not_read;
 };
 
 // One part of a model read with its materials (docs/language.md §14.5): the

@@ -9,6 +9,7 @@
 
 #include <cstdint>
 #include <functional>
+#include <optional>
 #include <string>
 #include <string_view>
 #include <vector>
@@ -125,6 +126,12 @@ struct ParseOptions {
 // numbers, `pi` and `clock`. The error says what is wrong, without the
 // option; `names` says what sets the clock instead.
 Expected<Define> parse_define(std::string_view argument, const ValueNames& names = {});
+
+// The error of a checked `--define`'s value evaluated at `clock` ("at column
+// 2: division by zero: 1 / 0"), or nullopt when it evaluates there.
+// parse_define accepts a value of the clock that fails at clock 0 (1 / clock):
+// a front end asks this at each clock it renders.
+std::optional<std::string> define_error_at(const Define& define, double clock);
 
 struct ParseResult {
     Scene scene;

@@ -17,8 +17,16 @@ namespace {
 using edit::Range;
 using edit::TextEdit;
 
+// Whether `block` is written in the scene file's text, the one `s.text` is:
+// an included file's block has offsets into its own file's.
+bool in_text(const BlockSource& block) {
+    return block.keyword_span.pos.file == 0;
+}
+
 // Appends a block (as `lines`) to the scene block in use, after its last item.
-std::string add_item(const SceneText& s, const std::vector<std::string>& lines) {
+Expected<std::string> add_item(const SceneText& s, const std::vector<std::string>& lines) {
+    if (s.source.scene && !in_text(*s.source.scene))
+        return Error{"the scene block is written in a file the scene includes: add it there"};
     if (!s.source.scene) {
         std::string out(s.text);
         if (!out.empty() && out.back() != '\n') out += '\n';
@@ -27,13 +35,13 @@ std::string add_item(const SceneText& s, const std::vector<std::string>& lines) 
     }
     std::optional<std::size_t> first;
     const BlockSource* last = nullptr;
-    for (const std::vector<BlockSource>* items : {&s.source.primitives, &s.source.lights}) {
-        if (items->empty()) continue;
-        const std::size_t front = items->front().keyword_span.offset;
-        first = first ? std::min(*first, front) : front;
-        if (!last || items->back().keyword_span.offset > last->keyword_span.offset)
-            last = &items->back();
-    }
+    for (const std::vector<BlockSource>* items : {&s.source.primitives, &s.source.lights})
+        for (const BlockSource& item : *items) {
+            if (!in_text(item)) continue;
+            const std::size_t at = item.keyword_span.offset;
+            first = first ? std::min(*first, at) : at;
+            if (!last || at > last->keyword_span.offset) last = &item;
+        }
     const bool blank = last && edit::set_apart_by_blank_lines(s.text, edit::block_range(*last));
     return edit::edited_text(s, {edit::insertion_before_close(s.text, s.source.scene->close_brace,
                                                               first, lines, blank)});
@@ -68,15 +76,17 @@ Expected<std::string> add_primitive(const SceneText& scene, const Primitive& pri
         return Error{"the image_map \"" + primitive.material.finish->image_map +
                      "\" cannot be written in a .jts string"};
     const std::vector<std::string> lines = block_lines(primitive);
-    // With the objects: after the last one, else before the first light.
+    // With the objects: after the last one, else before the first light; at
+    // the scene block's end when that one is read from an included file.
     const SceneSource& source = scene.source;
-    if (source.scene && !source.primitives.empty()) {
+    if (source.scene && !source.primitives.empty() && in_text(source.primitives.back())) {
         const Range last = edit::block_range(source.primitives.back());
         return edit::edited_text(
             scene, {edit::insertion_after(scene.text, last, lines,
                                           edit::set_apart_by_blank_lines(scene.text, last))});
     }
-    if (source.scene && !source.lights.empty())
+    if (source.scene && source.primitives.empty() && !source.lights.empty() &&
+        in_text(source.lights.front()))
         return edit::edited_text(
             scene,
             {edit::insertion_before(scene.text, edit::block_range(source.lights.front()), lines)});

@@ -58,7 +58,16 @@ Expected<const BlockSource*> find_block(const SceneText& scene, BlockRef block) 
     if (block.index >= count)
         return Error{"there is no " + block_name(scene.scene, block) + ": the scene has " +
                      std::to_string(count) + " " + std::string(plural(block.kind))};
-    return &(*records)[block.index];
+    const BlockSource& found = (*records)[block.index];
+    // Its offsets are into the text of the file it is written in, not into
+    // scene.text: an edit there would cut or insert at a place of another block.
+    if (const std::uint32_t file = found.keyword_span.pos.file; file != 0) {
+        const std::vector<SourceFile>& files = scene.source.files;
+        return Error{block_name(scene.scene, block) + " is written in " +
+                     (file <= files.size() ? files[file - 1].name : "an included file") +
+                     ", which the scene includes: change it in that file"};
+    }
+    return &found;
 }
 
 std::vector<const BlockSource*> children_named(const SceneSource& source, const BlockSource& block,

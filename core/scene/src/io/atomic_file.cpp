@@ -28,10 +28,11 @@ Error failure(const std::filesystem::path& target, int error) {
 // A failure to make the temporary file beside `real`. A file that may be
 // written in a folder that may not (a shared render folder whose files are
 // group-writable) gives "Permission denied", which then seems to be about the
-// file: say that it is the folder.
+// file: say that it is the folder. A read-only file system is no folder's
+// fault, and "Read-only file system" says what to change: no such word there.
 Error temporary_failure(const std::filesystem::path& target, const std::filesystem::path& real,
                         int error) {
-    if (error != EACCES && error != EPERM && error != EROFS) return failure(target, error);
+    if (error != EACCES && error != EPERM) return failure(target, error);
     const std::filesystem::path folder =
         real.parent_path().empty() ? std::filesystem::path(".") : real.parent_path();
     return Error{"cannot write " + file_message(target, std::strerror(error)) +

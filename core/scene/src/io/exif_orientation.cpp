@@ -1,5 +1,7 @@
 #include "io/exif_orientation.hpp"
 
+#include "io/jpeg.hpp"
+
 #include <algorithm>
 #include <cstddef>
 
@@ -55,30 +57,9 @@ int orientation_in(std::span<const std::uint8_t> tiff) {
 }  // namespace
 
 int exif_orientation(std::span<const std::uint8_t> jpeg) {
-    if (jpeg.size() < 4 || jpeg[0] != 0xFF || jpeg[1] != 0xD8) return 1;
-    std::size_t at = 2;
-    while (at + 4 <= jpeg.size()) {
-        if (jpeg[at] != 0xFF) return 1;
-        const std::uint8_t marker = jpeg[at + 1];
-        if (marker == 0xFF) {  // fill byte
-            ++at;
-            continue;
-        }
-        // The picture's data starts (SOS) or ends (EOI): no EXIF comes after.
-        if (marker == 0xDA || marker == 0xD9) return 1;
-        if (marker == 0x01 || (marker >= 0xD0 && marker <= 0xD7)) {  // no length
-            at += 2;
-            continue;
-        }
-        const std::size_t length = static_cast<std::size_t>(jpeg[at + 2]) << 8 | jpeg[at + 3];
-        if (length < 2 || at + 2 + length > jpeg.size()) return 1;
-        const std::span<const std::uint8_t> data = jpeg.subspan(at + 4, length - 2);
-        static constexpr std::uint8_t kExif[6] = {'E', 'x', 'i', 'f', 0, 0};
-        if (marker == 0xE1 && data.size() >= 6 && std::equal(kExif, kExif + 6, data.begin()))
-            return orientation_in(data.subspan(6));
-        at += 2 + length;
-    }
-    return 1;
+    static constexpr char kExif[6] = {'E', 'x', 'i', 'f', 0, 0};
+    const auto tiff = jpeg_segment(jpeg, kJpegApp1, {kExif, sizeof kExif});
+    return tiff ? orientation_in(*tiff) : 1;
 }
 
 std::vector<std::uint8_t> turn_upright(const std::vector<std::uint8_t>& stored, int width,

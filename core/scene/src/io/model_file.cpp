@@ -46,6 +46,10 @@ std::vector<std::string> model_warnings(const Model& model) {
     std::vector<std::string> warnings;
     const ModelLeftOut& out = model.left_out;
     if (!out.refused_file.empty()) warnings.push_back(out.refused_file + ": that file is left out");
+    if (!out.colours_not_read.empty())
+        warnings.push_back("holds " + out.colours_not_read +
+                           " that materials: \"file\" does not read (it reads OBJ, glTF and "
+                           "PLY files): every triangle takes the mesh's material");
     for (const auto& [line, times] : out.reader_said) {
         // Appended, not chained from a literal: GCC 12 warns falsely (-Wrestrict).
         std::string said("made the model reader (Assimp) print '");

@@ -74,7 +74,7 @@ inline void SceneParser::parse_body(BlockSource& block,
                         [&] { parse_body(block, child_names, on_property, on_child, true); });
                     break;
                 }
-                if (top_level_only()) break;
+                if (top_level_only(block.keyword)) break;
                 // In cameras or scene, a word before a string is no property:
                 // most likely a misspelt include, which the list suggests.
                 if (next_->kind == TokenKind::lbrace || contains(child_names, cur_->text) ||

@@ -108,6 +108,13 @@ std::string ValueNames::define(std::string_view name) const {
     return text;
 }
 
+std::optional<std::string> define_error_at(const Define& define, double clock) {
+    lang::ExprValue value;
+    std::string error;
+    if (lang::evaluate_define_value(define.value, clock, value, error)) return std::nullopt;
+    return error;
+}
+
 Expected<Define> parse_define(std::string_view argument, const ValueNames& names) {
     const std::size_t equals = argument.find('=');
     if (equals == std::string_view::npos)

@@ -303,9 +303,8 @@ bool ExpressionReader::parse_primary(int depth) {
             message += "; numbers must be finite";
         // POV-Ray's '#include "colors.inc"' or '#declare R = 1;' is a
         // comment here, which is why its names are unknown.
-        if (const SourcePos directive = tokens_.directive_comment(); directive.line > 0)
-            message += "; POV-Ray's #include and #declare are comments here, as at " +
-                       std::to_string(directive.line) + ":" + std::to_string(directive.column) +
+        if (const std::string directive = tokens_.directive_comment(t.pos); !directive.empty())
+            message += "; POV-Ray's #include and #declare are comments here, as at " + directive +
                        ": write include \"FILE\"; and define NAME = VALUE;";
         sink_.error(t.pos, std::move(message));
         return false;
@@ -370,10 +369,16 @@ bool ExpressionReader::parse_vector(int depth) {
     for (int k = 0; k < 3; ++k) {
         if (k > 0) {
             if (tokens_.cur().kind != TokenKind::comma) {
-                sink_.error(tokens_.cur().pos,
-                            "a vector takes three numbers separated by commas, like <0, 1, 0>; "
-                            "expected ',' but got " +
-                                describe(tokens_.cur()));
+                std::string message =
+                    "a vector takes three numbers separated by commas, like <0, 1, 0>; "
+                    "expected ',' but got " +
+                    describe(tokens_.cur());
+                // POV-Ray users' habit of writing a product without '*'.
+                if (tokens_.cur().kind == TokenKind::word)
+                    message +=
+                        " (a name after a value does not multiply it: '2pi' and '2 pi' are "
+                        "written '2 * pi')";
+                sink_.error(tokens_.cur().pos, std::move(message));
                 return false;
             }
             take();

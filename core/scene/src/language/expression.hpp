@@ -13,6 +13,7 @@
 #include "language/names.hpp"
 
 #include <cstdint>
+#include <string>
 #include <string_view>
 #include <vector>
 
@@ -26,8 +27,12 @@ class TokenCursor {
     virtual void advance() = 0;
     // Where the text read so far has a POV-Ray directive ("#include",
     // "#declare", "#local") that this language reads as a comment, for the
-    // hint of an unknown name; line 0 when it has none.
-    virtual SourcePos directive_comment() const { return {}; }
+    // hint of an unknown name at `from`: "LINE:COL", or "FILE:LINE:COL" in
+    // another file; "" when it has none.
+    virtual std::string directive_comment(SourcePos from) const {
+        (void)from;
+        return {};
+    }
 
   protected:
     ~TokenCursor() = default;

@@ -84,6 +84,24 @@ std::optional<IncludeStack::Opened> IncludeStack::open(std::string_view path, So
     const std::uint32_t from = at.file;
     const fs::path read_path =
         beside(from == 0 ? fs::path(main_path_) : fs::path(files_[from - 1].path), written);
+    static_assert(max_scene_file_bytes == 1ull << 30, "the message below says 1 GiB");
+    // The limit is the included files' together: said as such, with what the
+    // files before took, not as a limit of this file's of an odd size.
+    std::error_code size_ec;
+    if (const std::uintmax_t size = fs::file_size(read_path, size_ec);
+        !size_ec && size > bytes_left_) {
+        unreadable = true;
+        unread_.push_back(read_path.string());
+        std::string message = quote(read_path.string()) + " is too large to include (" +
+                              std::to_string(size) +
+                              " bytes): the files a scene includes may hold 1 GiB (" +
+                              std::to_string(max_scene_file_bytes) + " bytes) in all";
+        if (bytes_left_ < max_scene_file_bytes)
+            message += ", and the files included before it hold " +
+                       std::to_string(max_scene_file_bytes - bytes_left_);
+        sink.error(at, std::move(message));
+        return std::nullopt;
+    }
     Expected<IncludedText> read = read_(read_path.string(), bytes_left_);
     if (!read) {
         unreadable = true;
@@ -152,6 +170,16 @@ std::string IncludeStack::location(SourcePos pos) const {
            std::to_string(pos.column);
 }
 
+std::string IncludeStack::line_from(SourcePos pos, SourcePos from) const {
+    if (pos.file == from.file) return "line " + std::to_string(pos.line);
+    return location(pos);
+}
+
+std::string IncludeStack::line_column_from(SourcePos pos, SourcePos from) const {
+    if (pos.file == from.file) return std::to_string(pos.line) + ":" + std::to_string(pos.column);
+    return location(pos);
+}
+
 std::string IncludeStack::chain(std::uint32_t file) const {
     std::string out;
     // Each step goes to an earlier file, so this ends at the main file.
@@ -163,8 +191,8 @@ std::string IncludeStack::chain(std::uint32_t file) const {
     return out;
 }
 
-std::string IncludeStack::where(SourcePos pos) const {
-    if (pos.file == 0) return std::to_string(pos.line) + ":" + std::to_string(pos.column);
+std::string IncludeStack::where(SourcePos pos, SourcePos from) const {
+    if (pos.file == 0) return line_column_from(pos, from);
     return location(pos) + chain(pos.file);
 }
 

@@ -43,8 +43,15 @@ class IncludeStack {
     std::string rebased_asset(std::string_view path, std::uint32_t file) const;
 
     // "FILE:LINE:COL, included from FILE:LINE:COL, ..." for a position in an
-    // included file; "LINE:COL" for one in the main file.
-    std::string where(SourcePos pos) const;
+    // included file; "LINE:COL" for one in the main file, for a message in the
+    // main file too (`from`), else "FILE:LINE:COL".
+    std::string where(SourcePos pos, SourcePos from) const;
+    // Where `pos` is, for a message located at `from`: "line N" in the same
+    // file, else "FILE:LINE:COL" (a line alone would be read in the wrong file).
+    std::string line_from(SourcePos pos, SourcePos from) const;
+    // As line_from, with the column: "LINE:COL" in the same file, else
+    // "FILE:LINE:COL".
+    std::string line_column_from(SourcePos pos, SourcePos from) const;
     // ", included from FILE:LINE:COL, ..." for file `file` ("" for the main file).
     std::string chain(std::uint32_t file) const;
 

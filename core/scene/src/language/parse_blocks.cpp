@@ -117,19 +117,23 @@ bool SceneParser::open_block(BlockSource& block, std::string_view keyword, bool 
     return false;
 }
 
-bool SceneParser::top_level_only() {
+bool SceneParser::top_level_only(std::string_view block) {
     if (next_->kind == TokenKind::colon) return false;
-    const bool define = same_name(cur_->text, kDefineKeyword);
-    if (!define && !same_name(cur_->text, kIncludeKeyword)) return false;
-    if (define) {
+    if (same_name(cur_->text, kDefineKeyword)) {
         sink_.error(cur_->pos, "'define' may stand only at the top level, outside every block");
-        skip_statement();
-    } else {
+    } else if (same_name(cur_->text, kIncludeKeyword)) {
         sink_.error(cur_->pos,
                     "'include' may stand only at the top level, directly in 'cameras' or "
                     "directly in 'scene'");
-        skip_statement();
+    } else if (same_name(cur_->text, schema_of<Material>().keyword) &&
+               next_->kind == TokenKind::word && !contains(shape_keywords(), block)) {
+        sink_.error(cur_->pos,
+                    "a named material ('material NAME { ... }') may stand only at the top "
+                    "level, outside every block");
+    } else {
+        return false;
     }
+    skip_statement();
     return true;
 }
 
@@ -205,8 +209,9 @@ void SceneParser::parse_render_settings() {
     if (result_.source.render_settings) {
         sink_.warning(block.keyword_span.pos,
                       "another 'render_settings' block: only the last one is used, so the "
-                      "one at line " +
-                          std::to_string(result_.source.render_settings->keyword_span.pos.line) +
+                      "one at " +
+                          include_.line_from(result_.source.render_settings->keyword_span.pos,
+                                             block.keyword_span.pos) +
                           " is ignored");
     }
     result_.scene.settings = std::move(settings);

@@ -42,6 +42,8 @@ bool SceneParser::enter_include(IncludeResume& resume) {
     if (earlier_ && (opened->file > earlier_->files.size() ||
                      earlier_->files[opened->file - 1].text != opened->text))
         earlier_ = nullptr;
+    if (included_directive_.line == 0 && reading_ != &lexer_)
+        included_directive_ = reading_->directive_comment();
     resume.tokens = {*cur_, *next_};
     resume.text = text_;
     resume.lexer = reading_;
@@ -54,11 +56,19 @@ bool SceneParser::enter_include(IncludeResume& resume) {
 }
 
 void SceneParser::leave_include(IncludeResume& resume) {
+    if (included_directive_.line == 0) included_directive_ = reading_->directive_comment();
     include_.close();
     *cur_ = resume.tokens[0];
     *next_ = resume.tokens[1];
     reading_ = resume.lexer;
     text_ = resume.text;
+}
+
+std::string SceneParser::directive_comment(SourcePos from) const {
+    SourcePos directive = lexer_.directive_comment();
+    if (directive.line == 0) directive = included_directive_;
+    if (directive.line == 0) directive = reading_->directive_comment();
+    return directive.line == 0 ? std::string() : include_.line_column_from(directive, from);
 }
 
 void SceneParser::rebase_file_name(Property& property) {

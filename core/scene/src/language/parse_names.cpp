@@ -16,6 +16,20 @@
 
 namespace jt::lang {
 
+namespace {
+
+// A definition cut short before its value still defines its name, as a bad
+// one: its uses then say nothing more than the error already reported, where
+// "unknown name" would send the reader looking for a definition that is there.
+void add_bad_name(NameTable& names, const Token& name, Symbol::Kind kind) {
+    Symbol& symbol = names.add(name.text);
+    symbol.kind = kind;
+    symbol.defined_at = name.pos;
+    symbol.bad = true;
+}
+
+}  // namespace
+
 void SceneParser::set_command_line_names(const ParseOptions& options) {
     for (const Define& define : options.defines) {
         // Over-cautious for a string that holds the word; never wrong.
@@ -61,7 +75,7 @@ bool SceneParser::claim_name(const Token& name, bool& overridden) {
         return true;
     }
     std::string message = quote(name.text) + " is defined twice: it was first defined at " +
-                          include_.where(existing->defined_at);
+                          include_.where(existing->defined_at, name.pos);
     if (name.pos.file != 0) message += "; read again here" + include_.chain(name.pos.file);
     sink_.error(name.pos, std::move(message));
     return false;
@@ -84,6 +98,7 @@ void SceneParser::parse_define() {
     if (!at(TokenKind::equals)) {
         sink_.error(cur_->pos, "expected '=' after 'define " + std::string(name.text) + "', got " +
                                    describe(*cur_));
+        if (claimed && !overridden) add_bad_name(names_, name, Symbol::Kind::value);
         skip_statement();
         return;
     }
@@ -93,11 +108,14 @@ void SceneParser::parse_define() {
     if (value.form == Value::Form::none) {
         sink_.error(cur_->pos, "expected a value after 'define " + std::string(name.text) +
                                    " =', got " + describe(*cur_));
+        if (claimed && !overridden) add_bad_name(names_, name, Symbol::Kind::value);
         skip_statement();
         return;
     }
     const bool glued = value.form != Value::Form::bad && glued_to(value.end);
-    const bool good = value.form != Value::Form::bad && !cut_short(value) && !glued;
+    const bool name_beside =
+        value.form != Value::Form::bad && !glued && !cut_short(value) && beside(value.end);
+    const bool good = value.form != Value::Form::bad && !cut_short(value) && !glued && !name_beside;
     if (claimed && !overridden) {
         Symbol& symbol = names_.add(name.text);
         symbol.defined_at = name.pos;
@@ -123,9 +141,9 @@ void SceneParser::parse_define() {
         result_.source.definitions.push_back(
             {std::string(name.text), span_of(name), value.span, value.origin, std::nullopt});
     }
-    if (glued)
+    if (glued || name_beside)
         sink_.error(value.end, "expected ';' after the value of 'define " + std::string(name.text) +
-                                   "'" + std::string(glued_hint));
+                                   "'" + std::string(glued ? glued_hint : beside_hint));
     if (!good) {
         skip_statement();
         return;
@@ -163,6 +181,7 @@ void SceneParser::parse_named_material() {
     if (!at(TokenKind::lbrace)) {
         sink_.error(cur_->pos, "expected '{' after 'material " + std::string(name.text) +
                                    "', got " + describe(*cur_));
+        if (claimed) add_bad_name(names_, name, Symbol::Kind::material);
         skip_statement();
         return;
     }

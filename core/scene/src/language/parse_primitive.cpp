@@ -90,7 +90,7 @@ void SceneParser::parse_primitive_body(Primitive& primitive, OpenBlock& open) {
                         sink_.error(at,
                                     "a primitive names at most one material; this one "
                                     "already names one at " +
-                                        include_.where(named_at));
+                                        include_.where(named_at, at));
                         return;
                     }
                     named = found;

@@ -70,10 +70,11 @@ void SceneParser::parse_scene() {
         });
     parts.stop();
     if (result_.source.scene) {
-        sink_.warning(block.keyword_span.pos,
-                      "another 'scene' block: only the last one is used, so the one at line " +
-                          std::to_string(result_.source.scene->keyword_span.pos.line) +
-                          " is ignored");
+        sink_.warning(
+            block.keyword_span.pos,
+            "another 'scene' block: only the last one is used, so the one at " +
+                include_.line_from(result_.source.scene->keyword_span.pos, block.keyword_span.pos) +
+                " is ignored");
     }
     std::vector<Primitive>& primitives = children.primitives;
     primitives.erase(primitives.begin() + static_cast<std::ptrdiff_t>(children.placed),

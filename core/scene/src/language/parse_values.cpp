@@ -131,10 +131,12 @@ bool SceneParser::read_property(Property& property, bool try_plain, std::string_
         return true;
     }
     const bool glued = glued_to(property.value.end);
+    const bool name_beside = !glued && beside(property.value.end);
     std::string message = "expected ';' after the value of '" + std::string(property.name) + "'";
     if (glued) message += glued_hint;
+    if (name_beside) message += beside_hint;
     sink_.error(property.value.end, std::move(message));
-    if (glued) {
+    if (glued || name_beside) {
         skip_statement();
         return false;
     }

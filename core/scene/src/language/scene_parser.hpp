@@ -71,6 +71,9 @@ inline constexpr std::array<std::string_view, 0> kNoBlocks{};
 // Added to "expected ';' after the value" when a name touches the value.
 inline constexpr std::string_view glued_hint =
     " (a name cannot follow a value directly: '2pi' is written '2 * pi')";
+// ... and when one follows it after a space on its line (SceneParser::beside).
+inline constexpr std::string_view beside_hint =
+    " (two values side by side are not multiplied: write '*' between them)";
 
 // The schema's own copy of a block keyword, so that records point at the
 // schema's literals rather than at the text.
@@ -107,8 +110,8 @@ class SceneParser final : private TokenCursor {
     }
     const Token& cur() const override { return *cur_; }
     const Token& peek() const override { return *next_; }
-    // The main file's only: a line and column of another file would need its name.
-    SourcePos directive_comment() const override { return lexer_.directive_comment(); }
+    // In the main file, the files read before, or the one being read.
+    std::string directive_comment(SourcePos from) const override;
     bool at(TokenKind kind) const { return cur_->kind == kind; }
     // Whether what follows `value` is a mistake the lexer has reported (a
     // malformed number, a byte that starts no token): the value's statement
@@ -122,6 +125,14 @@ class SceneParser final : private TokenCursor {
     // '1_000'): no next statement, whose ';' is missing, but a mistake in
     // this one, which is then skipped whole, its value with it.
     bool glued_to(SourcePos end) const { return at(TokenKind::word) && cur_->pos == end; }
+    // Whether a name after a space on the line of the value that ends at
+    // `end` continues it ('2 pi', '2 r'), rather than starting the next
+    // property ('name:'), block ('name {') or statement, whose ';' is missing.
+    bool beside(SourcePos end) const {
+        return at(TokenKind::word) && cur_->pos.file == end.file && cur_->pos.line == end.line &&
+               next_->kind != TokenKind::colon && next_->kind != TokenKind::lbrace &&
+               !contains(top_statements(), cur_->text);
+    }
 
     // --- skipping bad input (parse_blocks.cpp) -------------------------------
 
@@ -173,9 +184,10 @@ class SceneParser final : private TokenCursor {
     // A property in a block that holds only blocks (cameras, scene): reported.
     void only_blocks(const BlockSource& block, std::span<const std::string_view> allowed,
                      const Property& p);
-    // At `define` or `include` inside a block: an error at the keyword (a
-    // property of that name, with ':', is left to the block).
-    bool top_level_only();
+    // At `define`, `include` or a named material inside block `block`: an
+    // error at the keyword (a property of that name, with ':', is left to the
+    // block, and a primitive says how it names a material).
+    bool top_level_only(std::string_view block);
 
     // --- values and properties (parse_values.cpp, block_body.hpp) ------------
 
@@ -309,6 +321,9 @@ class SceneParser final : private TokenCursor {
     DiagnosticSink sink_;
     Lexer lexer_;               // the main text's
     Lexer* reading_ = &lexer_;  // the text being read's
+    // The first POV-Ray directive comment of an included file read so far (or
+    // of one still open around the one being read); line 0: none.
+    SourcePos included_directive_{0, 0, 0};
     PropertyReader reader_;
     IncludeStack include_;
     std::deque<std::string> rebased_names_;  // values point at these: a deque keeps them put

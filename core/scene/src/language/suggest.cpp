@@ -1,6 +1,7 @@
 #include "language/suggest.hpp"
 
 #include <algorithm>
+#include <utility>
 #include <vector>
 
 namespace jt::lang {
@@ -67,7 +68,31 @@ std::string unknown_name_message(std::string_view what, std::string_view word,
     std::string message = "unknown " + std::string(what) + " '" + std::string(word.substr(0, 40)) +
                           "' " + std::string(where);
     std::string_view nearest = nearest_name(word, allowed);
-    if (!nearest.empty()) message += "; did you mean '" + std::string(nearest) + "'?";
+    if (!nearest.empty()) {
+        message += "; did you mean '" + std::string(nearest) + "'?";
+    } else {
+        // A POV-Ray user's words, too far from ours to be taken for a typo.
+        // Blocks and properties apart: 'pigment:' in a sphere is no material.
+        struct PovWord {
+            std::string_view what, pov, ours;
+        };
+        static constexpr PovWord kPovRay[] = {
+            {"block", "declare", "define"},
+            {"block", "local", "define"},
+            {"block", "light_source", "point_light"},
+            {"block", "finish", "material"},
+            {"block", "pigment", "material"},
+            {"block", "texture", "material"},
+            {"block", "camera", "perspective_camera"},
+            {"property", "location", "position"},
+            {"property", "angle", "fov"},
+        };
+        for (const PovWord& w : kPovRay)
+            if (what == w.what && word == w.pov &&
+                std::find(allowed.begin(), allowed.end(), w.ours) != allowed.end())
+                message += "; POV-Ray's '" + std::string(w.pov) + "' is '" + std::string(w.ours) +
+                           "' here";
+    }
     message += " (allowed: ";
     for (std::size_t i = 0; i < allowed.size(); ++i) {
         if (i) message += ", ";

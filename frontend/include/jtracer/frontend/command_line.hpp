@@ -75,6 +75,11 @@ std::optional<std::string> output_refusal(const std::string& output);
 // else the name.
 std::string shown_output(const std::string& output);
 
+// A write's error message naming standard output as the user named it ("cannot
+// write standard output: No space left on device"), not as /dev/stdout, a
+// file the user never typed.
+std::string shown_write_error(std::string message);
+
 // Parses the command line, then runs `checks` (which may throw
 // CLI::ValidationError for rules between options). Returns the exit code when
 // the program should stop now: 0 after --help or --version, exit_usage after

@@ -12,6 +12,7 @@
 
 #include <optional>
 #include <string>
+#include <string_view>
 #include <vector>
 
 namespace CLI {
@@ -56,11 +57,30 @@ ParseOptions scene_value_options(const std::vector<std::string>& defines,
 // --threads, --progress, -q, --define, --clock, --frames and --frame-range.
 void add_render_flags(CLI::App& app, RenderFlags& flags);
 
-// The rules between the sequence flags, for the programs' checks: --clock
+// A warning line, "PROGRAM: warning: ...", or nothing, when the image's name
+// promises a format it will not have: the scene's filename always gives a
+// BMP, even `shot.png`, and -o gives a BMP for any name but .png, even
+// `shot.jpg`. Image viewers, browsers and upload forms trust the name and
+// refuse such a file. Also when -o holds a frame number field without
+// --frames: one image is written under that very name.
+std::string format_warning(std::string_view program, const RenderFlags& flags,
+                           const std::string& output);
+
+// The rules between the sequence flags, for the programs' checks: a --define
+// that fails at every clock rendered (check_defines_at_their_clocks), --clock
 // not with --frames, --frame-range only with --frames and within it, -o a
 // pattern with one frame number field. Throws CLI::ValidationError naming
 // the option.
 void check_sequence_flags(const RenderFlags& flags);
+
+// A --define of the clock that fails at every clock the command renders (at
+// `clock` for one image, at each frame's clock of a whole sequence of `frames`)
+// is a bad value, as one that fails at any clock: throws CLI::ValidationError
+// naming --define, before anything is read. One that fails at some frames only
+// is those frames' error, the one a frame range of them gets too
+// (docs/language.md §15.2). check_sequence_flags calls it.
+void check_defines_at_their_clocks(const std::vector<std::string>& defines,
+                                   std::optional<double> clock, std::optional<int> frames);
 
 // --define (repeatable) and --clock alone, for a front end with its own
 // other flags (jtracer-view).

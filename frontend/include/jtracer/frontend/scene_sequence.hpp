@@ -91,6 +91,8 @@ class SceneSequence {
     // once it has rendered, its primitives, for the next frame to take.
     std::string path_;
     EarlierParse earlier_;
+    // The text of a scene read from a pipe, which gives it only once.
+    std::optional<std::string> piped_text_;
 };
 
 }  // namespace jt::frontend

@@ -5,10 +5,19 @@
 
 #include "jtracer/render_job.hpp"
 
+#include <string>
+
 namespace jt::frontend {
 
 // `frame`: the running frame's own progress; `done` frames of `total` are
 // finished; `seconds` since the sequence started.
 RenderProgress sequence_progress(const RenderProgress& frame, int done, int total, double seconds);
+
+// The line that ends a sequence of `total` frames, `written` of them rendered
+// and `kept` already there (--skip-existing), in `seconds`: "wrote 8 frames
+// and kept 40 already there in 3 min 05 s\n", or "kept all 48 frames, already
+// there (2 s)\n" when none was rendered. jtracer-cli and jtracer-mpi say it
+// alike.
+std::string sequence_summary(int total, int written, int kept, double seconds);
 
 }  // namespace jt::frontend
