@@ -290,6 +290,9 @@ class SceneParser final : private TokenCursor {
     bool claim_name(const Token& name, bool& overridden);
     // At `define`: define NAME '=' (STRING | expr) ';'
     void parse_define();
+    // At NAME before '=', a definition without `define` (a POV-Ray habit):
+    // one error that shows the fix, at the top level or inside a block.
+    void bare_assignment(bool top_level);
     // At `material` NAME: a named material, `material NAME { property* }`.
     void parse_named_material();
     std::size_t error_count() const { return static_cast<std::size_t>(sink_.error_count()); }
