@@ -173,8 +173,8 @@ void SceneParser::parse_define() {
         advance();
         return;
     }
-    sink_.error(value.end,
-                "expected ';' after the value of 'define " + std::string(name.text) + "'");
+    sink_.error(value.end, "expected ';' after the value of 'define " + std::string(name.text) +
+                               "'" + std::string(comparison_after()));
     if (!at(TokenKind::word) && !at(TokenKind::rbrace)) skip_statement();
 }
 
