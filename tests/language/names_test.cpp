@@ -124,6 +124,14 @@ TEST(Names, AnAssignmentWithoutDefineSuggestsDefine) {
     // A property's own name before '=' is a property missing its ':'.
     EXPECT_EQ(brief("scene { sphere { radius = 1; } }"),
               "1:25: error: expected ':' after 'radius', got '='");
+    EXPECT_EQ(brief("scene { sphere { radius: 1; size = 1; radius: size; } }"), "1:29:" + in_block);
+    // The same when properties are read through tokens only.
+    ParseOptions tokens;
+    tokens.plain_properties = false;
+    EXPECT_EQ(brief_with("scene { sphere { radius: 1; size = 1; radius: size; } }", tokens),
+              "1:29:" + in_block);
+    EXPECT_EQ(brief_with("scene { sphere { radius = 1; } }", tokens),
+              "1:25: error: expected ':' after 'radius', got '='");
 }
 
 TEST(Names, NamedMaterialsApplyFirstThenThePrimitivesOwnBlocks) {
