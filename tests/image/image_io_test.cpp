@@ -325,7 +325,7 @@ TEST(ImageFile, AShownImageOfAnotherKindNamesTheFormatsRead) {
         std::string name, bytes, message;
     } cases[] = {
         {"model.obj", "v 0 0 0\nf 1 1 1\n", "it is not a BMP, PNG or JPEG image"},
-        {"ref.gif", "GIF89a\x01\0\x01\0",
+        {"gif.png", "GIF89a\x01\0\x01\0",
          "it is a GIF image, not a BMP, PNG or JPEG image: save it as PNG"},
     };
     for (const auto& c : cases) {

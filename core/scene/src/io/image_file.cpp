@@ -106,14 +106,15 @@ Expected<Image8> read_shown_image(const std::filesystem::path& path) {
         return image;
     }
     const bool bmp = bytes->size() >= 2 && (*bytes)[0] == 'B' && (*bytes)[1] == 'M';
-    // A name ending in .bmp or .png lets that reader say what is wrong with
-    // the file; any other file is named for what it is not.
-    if (!bmp && !has_png_signature(*bytes) && !format_named_by(path)) {
+    // A format that tells itself is named; for other bytes, a name ending in
+    // .bmp or .png lets that reader say what is wrong with the file.
+    if (!bmp && !has_png_signature(*bytes)) {
         const std::string format = format_not_read(*bytes);
-        return Error{file_message(
-            path, format.empty()
-                      ? "it is not a BMP, PNG or JPEG image"
-                      : "it is " + format + ", not a BMP, PNG or JPEG image: save it as PNG")};
+        if (!format.empty())
+            return Error{file_message(
+                path, "it is " + format + ", not a BMP, PNG or JPEG image: save it as PNG")};
+        if (!format_named_by(path))
+            return Error{file_message(path, "it is not a BMP, PNG or JPEG image")};
     }
     return decode_bmp_or_png(path, *bytes);
 }
