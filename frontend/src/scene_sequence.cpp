@@ -16,27 +16,6 @@ SceneSequence::SceneSequence(std::string_view program, const RenderFlags& flags,
             pattern_ = *pattern;
 }
 
-namespace {
-
-// The scene at `path` parsed again from `text`, as load_scene_file parses a
-// file it reads: for a scene from a pipe, whose text can be read only once.
-Expected<LoadedScene> parse_again(const std::string& path, const std::string& text,
-                                  ParseOptions options) {
-    LoadedScene loaded;
-    loaded.path = path;
-    if (options.main_file.empty()) options.main_file = path;
-    loaded.options = options;
-    loaded.text = text;
-    loaded.parsed = parse_scene(loaded.text, options);
-    if (loaded.parsed.out_of_memory)
-        return Error{"cannot read '" + path +
-                     "': out of memory (the scene is too large for the memory available)"};
-    loaded.parsed.scene.asset_folder = std::filesystem::path(path).parent_path().string();
-    return loaded;
-}
-
-}  // namespace
-
 FrameSetup SceneSequence::set_up(double clock, bool& reads_clock) {
     RenderFlags flags = flags_;
     flags.clock = clock;
@@ -45,8 +24,9 @@ FrameSetup SceneSequence::set_up(double clock, bool& reads_clock) {
     options.earlier = &earlier_;
     // A scene from a pipe (a named pipe, bash's <(...)) is read once: read
     // again, it would be empty, or wait for good for a writer that is gone.
-    Expected<LoadedScene> read = piped_text_ ? parse_again(flags.scene_path, *piped_text_, options)
-                                             : load_scene_file(flags.scene_path, options);
+    Expected<LoadedScene> read = piped_text_
+                                     ? load_scene_text(*piped_text_, flags.scene_path, options)
+                                     : load_scene_file(flags.scene_path, options);
     if (read && !piped_text_ && is_stream(flags.scene_path)) piped_text_ = read->text;
     earlier_.primitives = {};  // taken, or of other texts
     if (!read) {

@@ -1,7 +1,8 @@
 // Images as NumPy arrays: (height, width, 3) uint8, the top row first, as
 // NumPy, Pillow and matplotlib hold pictures. The core's Image8 counts rows
 // from the bottom (image.hpp), so each conversion flips the rows.
-// read_image, write_image and diff are the core's, as jtracer-cli uses them.
+// write_image and diff are the core's, as jtracer-cli uses them; read_image
+// reads a picture as an image map does, JPEG included.
 
 #include "bindings.hpp"
 
@@ -47,11 +48,14 @@ Image8 from_array(const py::array& array) {
 }
 
 // The file is read and decoded without the GIL: a large picture takes a
-// second, in which the program's other Python threads carry on.
-Image8 read_or_raise(const std::filesystem::path& path) {
-    Expected<Image8> read = without_gil([&] { return read_image(path); });
-    if (!read) raise_os_error(read.error().message);
-    return std::move(*read);
+// second, in which the program's other Python threads carry on. `read` is
+// read_image (diff's references, BMP or PNG as jtracer-cli diff reads them)
+// or read_shown_image.
+Image8 read_or_raise(const std::filesystem::path& path,
+                     Expected<Image8> (*read)(const std::filesystem::path&) = read_image) {
+    Expected<Image8> image = without_gil([&] { return read(path); });
+    if (!image) raise_os_error(image.error().message);
+    return std::move(*image);
 }
 
 // `name` is the argument's, for the TypeError of anything else: pybind11's
@@ -97,10 +101,13 @@ py::array_t<std::uint8_t> to_array(Image8&& image) {
 void bind_images(py::module_& m) {
     m.def(
         "read_image",
-        [](const std::filesystem::path& path) { return to_array(read_or_raise(path)); },
+        [](const std::filesystem::path& path) {
+            return to_array(read_or_raise(path, read_shown_image));
+        },
         py::arg("path"),
-        "Reads a BMP or PNG (told apart by their first bytes) as a (height, width, 3) uint8 "
-        "array, the top row first. Raises OSError when it cannot.");
+        "Reads a BMP, PNG or JPEG (told apart by their first bytes) as a (height, width, 3) "
+        "uint8 array, the top row first, as an image_map shows it: a JPEG turned upright by "
+        "its EXIF orientation. Raises OSError when it cannot.");
     m.def(
         "write_image",
         [](const std::filesystem::path& path, const py::array& array) {

@@ -253,19 +253,19 @@ void bind_scene(py::module_& m) {
         "parse",
         [](std::string text, const std::filesystem::path& path, std::optional<py::dict> defines,
            double clock) {
-            LoadedScene loaded;
-            loaded.path = path.string();
-            loaded.options = options_with(defines, clock);
-            // A text of no file reads its includes from the working directory.
-            if (path != "<string>") loaded.options.main_file = loaded.path;
-            loaded.text = std::move(text);
-            {
-                py::gil_scoped_release unlocked;
-                loaded.parsed = parse_scene(loaded.text, loaded.options);
-            }
-            if (loaded.parsed.out_of_memory) throw std::bad_alloc();
-            loaded.parsed.scene.asset_folder = path.parent_path().string();
-            return checked_scene(std::move(loaded));
+            const ParseOptions options = options_with(defines, clock);
+            // A text of no file has no main file: its includes are read from
+            // the working directory and its messages name the main text
+            // "<text>". An empty path gives load_scene_text no main file.
+            const bool of_no_file = path == "<string>";
+            Expected<LoadedScene> loaded = without_gil([&] {
+                return load_scene_text(std::move(text), of_no_file ? std::filesystem::path{} : path,
+                                       options);
+            });
+            // It fails only when out of memory: MemoryError, not OSError.
+            if (!loaded) throw std::bad_alloc();
+            loaded->path = path.string();
+            return checked_scene(std::move(*loaded));
         },
         py::arg("text"), py::arg("path") = "<string>", py::arg("defines") = py::none(),
         py::arg("clock") = 0.0,

@@ -317,6 +317,30 @@ TEST(ImageFile, AReferenceInAnotherFormatSaysWhichItIs) {
     }
 }
 
+// read_shown_image (jtracer.read_image's) reads what an image map reads; a
+// file that is no picture is named for the formats it is not.
+TEST(ImageFile, AShownImageOfAnotherKindNamesTheFormatsRead) {
+    const fs::path dir = make_scratch_dir("shown_formats");
+    const struct {
+        std::string name, bytes, message;
+    } cases[] = {
+        {"model.obj", "v 0 0 0\nf 1 1 1\n", "it is not a BMP, PNG or JPEG image"},
+        {"gif.png", "GIF89a\x01\0\x01\0",
+         "it is a GIF image, not a BMP, PNG or JPEG image: save it as PNG"},
+    };
+    for (const auto& c : cases) {
+        test::write_file(dir / c.name, c.bytes);
+        const Expected<Image8> read = read_shown_image(dir / c.name);
+        ASSERT_FALSE(read) << c.name;
+        EXPECT_EQ(read.error().message, "'" + (dir / c.name).string() + "': " + c.message);
+    }
+    // A BMP or PNG reads as read_image reads it.
+    ASSERT_TRUE(write_png(dir / "a.png", sample_image()));
+    const Expected<Image8> png = read_shown_image(dir / "a.png");
+    ASSERT_TRUE(png) << png.error().message;
+    EXPECT_TRUE(*png == sample_image());
+}
+
 TEST(AtomicFile, ReplacesWholeAndLeavesNoTemporary) {
     fs::path dir = make_scratch_dir("atomic");
     fs::path target = dir / "out.bmp";

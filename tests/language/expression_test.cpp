@@ -200,6 +200,17 @@ TEST(Expressions, SyntaxErrorsWinOverEvaluation) {
               "1:35: error: expected ',' or ')' in the arguments of 'max', got ';'");
 }
 
+// '<' and '>' only bracket vectors: a comparison gets the usual missing-';'
+// error, which says why, once.
+TEST(Expressions, AComparisonSaysThereAreNone) {
+    const std::string why =
+        " (there are no comparisons: '<' and '>' only bracket vectors like <0, 1, 0>)";
+    EXPECT_EQ(brief("define r = 1 < 2;"),
+              "1:13: error: expected ';' after the value of 'define r'" + why);
+    EXPECT_EQ(brief("scene { sphere { radius: 1 > 0; } }"),
+              "1:27: error: expected ';' after the value of 'radius'" + why);
+}
+
 TEST(Expressions, NestingIsCappedAt256Levels) {
     const std::string deep_ok = std::string(256, '(') + "1" + std::string(256, ')');
     EXPECT_EQ(number_of(deep_ok), 1.0);

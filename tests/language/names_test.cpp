@@ -111,6 +111,29 @@ TEST(Names, DefineMistakesAreLocated) {
               "1:18: error: 'define' may stand only at the top level, outside every block");
 }
 
+// 'NAME = value;' without 'define' (a POV-Ray or programmer's habit): one
+// error that shows the fix, and the name's uses say nothing more.
+TEST(Names, AnAssignmentWithoutDefineSuggestsDefine) {
+    EXPECT_EQ(brief("size = 1 - clock;\nscene { sphere { radius: size; } }"),
+              "1:1: error: 'size = ...' needs the keyword 'define': write 'define size = ...;'");
+    const std::string in_block =
+        " error: 'size = ...' defines nothing here: names are defined at the top level, "
+        "outside every block, with 'define size = ...;'";
+    EXPECT_EQ(brief("scene { size = 1; sphere { radius: size; } }"), "1:9:" + in_block);
+    EXPECT_EQ(brief("scene { sphere { size = 1; radius: size; } }"), "1:18:" + in_block);
+    // A property's own name before '=' is a property missing its ':'.
+    EXPECT_EQ(brief("scene { sphere { radius = 1; } }"),
+              "1:25: error: expected ':' after 'radius', got '='");
+    EXPECT_EQ(brief("scene { sphere { radius: 1; size = 1; radius: size; } }"), "1:29:" + in_block);
+    // The same when properties are read through tokens only.
+    ParseOptions tokens;
+    tokens.plain_properties = false;
+    EXPECT_EQ(brief_with("scene { sphere { radius: 1; size = 1; radius: size; } }", tokens),
+              "1:29:" + in_block);
+    EXPECT_EQ(brief_with("scene { sphere { radius = 1; } }", tokens),
+              "1:25: error: expected ':' after 'radius', got '='");
+}
+
 TEST(Names, NamedMaterialsApplyFirstThenThePrimitivesOwnBlocks) {
     const std::string shiny = "material shiny { pigment: <1, 0, 0>; reflection: 0.5; }\n";
     ParseResult r = parse_clean(shiny +

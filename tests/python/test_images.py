@@ -1,5 +1,6 @@
 # read_image, write_image and diff against jtracer-cli's files and figures.
 import re
+import struct
 
 import jtracer
 import numpy as np
@@ -115,3 +116,40 @@ def test_a_device_is_refused_at_once(tmp_path):
         jtracer.read_image("/dev/zero")
     with pytest.raises(OSError, match="it is a device, not a file"):
         jtracer.diff("/dev/urandom", np.zeros((2, 2, 3), np.uint8))
+
+
+def jpeg_frame_size(data):
+    """(height, width) from a JPEG's frame header, read here rather than by the module."""
+    at = 2
+    while True:
+        marker, length = data[at + 1], struct.unpack(">H", data[at + 2:at + 4])[0]
+        if marker in (0xC0, 0xC1, 0xC2):
+            return struct.unpack(">HH", data[at + 5:at + 9])
+        at += 2 + length
+
+
+def with_exif_orientation(data, orientation):
+    """The JPEG with an APP1 EXIF segment whose one tag is its orientation."""
+    tiff = b"II*\x00" + struct.pack("<I", 8) + struct.pack("<H", 1)
+    tiff += struct.pack("<HHII", 0x0112, 3, 1, orientation) + struct.pack("<I", 0)
+    body = b"Exif\x00\x00" + tiff
+    return data[:2] + b"\xff\xe1" + struct.pack(">H", len(body) + 2) + body + data[2:]
+
+
+def test_read_image_reads_a_jpeg_as_an_image_map_shows_it(tmp_path, source_dir):
+    data = (source_dir / "scenes" / "maps" / "label.jpg").read_bytes()
+    image = jtracer.read_image(source_dir / "scenes" / "maps" / "label.jpg")
+    assert image.shape == (*jpeg_frame_size(data), 3)
+    assert image.dtype == np.uint8 and image.std() > 0
+    # Orientation 6: stored a quarter turn anticlockwise, shown turned clockwise.
+    (tmp_path / "turned.jpeg").write_bytes(with_exif_orientation(data, 6))
+    assert np.array_equal(jtracer.read_image(tmp_path / "turned.jpeg"), np.rot90(image, -1))
+
+
+def test_read_image_of_a_file_that_is_no_image_names_the_formats(tmp_path):
+    (tmp_path / "model.obj").write_text("v 0 0 0\nv 1 0 0\nv 0 1 0\nf 1 2 3\n")
+    with pytest.raises(OSError) as raised:
+        jtracer.read_image(tmp_path / "model.obj")
+    message = str(raised.value)
+    assert "model.obj" in message and "not a BMP, PNG or JPEG image" in message
+    assert "signature" not in message

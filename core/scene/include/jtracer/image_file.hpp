@@ -32,4 +32,9 @@ Expected<void> write_image(const std::filesystem::path& path, const Image8& imag
 // Reads a BMP or PNG, told apart by their first bytes.
 Expected<Image8> read_image(const std::filesystem::path& path);
 
+// Reads a BMP, PNG or JPEG, told apart by their first bytes, as an image map
+// shows it: a JPEG turned upright by its EXIF orientation, a CMYK one made
+// RGB. For pictures looked at, not references: a JPEG is lossy.
+Expected<Image8> read_shown_image(const std::filesystem::path& path);
+
 }  // namespace jt

@@ -66,6 +66,14 @@ inline constexpr std::size_t smallest_text_given_back = std::size_t{64} << 20;
 Expected<LoadedScene> load_scene_file(const std::filesystem::path& path, ParseOptions options = {},
                                       TextKeeping keeping = TextKeeping::whole);
 
+// The same for a text already read (a pipe's, which cannot be read twice, or
+// one given in memory), parsed as the file at `path` would be: named `path`
+// in diagnostics, its includes and assets found in its folder. Fails only
+// when the machine runs out of memory parsing it. The stamp stays empty.
+Expected<LoadedScene> load_scene_text(std::string text, const std::filesystem::path& path,
+                                      ParseOptions options = {},
+                                      TextKeeping keeping = TextKeeping::whole);
+
 struct CheckOptions {
     // False: warnings about a scene loaded without its source map stay at line
     // 0 rather than cost another parse to locate, for a caller that drops

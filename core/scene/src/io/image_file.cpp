@@ -3,12 +3,16 @@
 #include "io/bmp_header.hpp"
 #include "io/file_bytes.hpp"
 #include "io/image_claims.hpp"
+#include "io/jpeg.hpp"
 #include "jtracer/bmp.hpp"
 #include "jtracer/png.hpp"
 #include "jtracer/texture.hpp"
 
 #include <algorithm>
 #include <cctype>
+#include <span>
+#include <string>
+#include <vector>
 
 namespace jt {
 
@@ -54,29 +58,65 @@ Expected<Image8> decode_any_bmp(std::span<const std::uint8_t> bytes) {
     return image;
 }
 
-}  // namespace
-
-Expected<Image8> read_image(const std::filesystem::path& path) {
-    Expected<std::vector<std::uint8_t>> bytes = read_file_bytes(path);
-    if (!bytes) return bytes.error();
-    if (bytes->empty()) return Error{file_message(path, "the file is empty")};
-    const bool bmp = bytes->size() >= 2 && (*bytes)[0] == 'B' && (*bytes)[1] == 'M';
+// A BMP or PNG whose bytes were read from `path`, which names it in errors.
+Expected<Image8> decode_bmp_or_png(const std::filesystem::path& path,
+                                   std::span<const std::uint8_t> bytes) {
+    const bool bmp = bytes.size() >= 2 && bytes[0] == 'B' && bytes[1] == 'M';
     // Neither signature: what the name says decides which reader explains why.
     const bool named_bmp = format_named_by(path) == ImageFormat::bmp;
     // Neither a BMP nor a PNG, and a format that tells itself: named.
-    if (!bmp && !has_png_signature(*bytes)) {
-        const std::string format = bytes->size() >= 2 && (*bytes)[0] == 0xFF && (*bytes)[1] == 0xD8
-                                       ? "a JPEG image"
-                                       : format_not_read(*bytes);
+    if (!bmp && !has_png_signature(bytes)) {
+        const std::string format =
+            has_jpeg_signature(bytes) ? "a JPEG image" : format_not_read(bytes);
         if (!format.empty())
             return Error{
                 file_message(path, "it is " + format + ", not a BMP or PNG image: save it as PNG")};
     }
-    Expected<Image8> image = bmp || (named_bmp && !has_png_signature(*bytes))
-                                 ? decode_any_bmp(*bytes)
-                                 : decode_png(*bytes);
+    Expected<Image8> image =
+        bmp || (named_bmp && !has_png_signature(bytes)) ? decode_any_bmp(bytes) : decode_png(bytes);
     if (!image) return Error{file_message(path, image.error().message)};
     return image;
+}
+
+Expected<std::vector<std::uint8_t>> read_nonempty_file(const std::filesystem::path& path) {
+    Expected<std::vector<std::uint8_t>> bytes = read_file_bytes(path);
+    if (bytes && bytes->empty()) return Error{file_message(path, "the file is empty")};
+    return bytes;
+}
+
+}  // namespace
+
+Expected<Image8> read_image(const std::filesystem::path& path) {
+    Expected<std::vector<std::uint8_t>> bytes = read_nonempty_file(path);
+    if (!bytes) return bytes.error();
+    return decode_bmp_or_png(path, *bytes);
+}
+
+Expected<Image8> read_shown_image(const std::filesystem::path& path) {
+    Expected<std::vector<std::uint8_t>> bytes = read_nonempty_file(path);
+    if (!bytes) return bytes.error();
+    if (has_jpeg_signature(*bytes)) {
+        // Decoded and turned upright as an image map's texels are.
+        Expected<Texture> texture = decode_texture(*bytes, TextureLayout::as_shown);
+        if (!texture) return Error{file_message(path, texture.error().message)};
+        Image8 image;
+        image.width = texture->width;
+        image.height = texture->height;
+        image.rgb = std::move(texture->rgb8);
+        return image;
+    }
+    const bool bmp = bytes->size() >= 2 && (*bytes)[0] == 'B' && (*bytes)[1] == 'M';
+    // A format that tells itself is named; for other bytes, a name ending in
+    // .bmp or .png lets that reader say what is wrong with the file.
+    if (!bmp && !has_png_signature(*bytes)) {
+        const std::string format = format_not_read(*bytes);
+        if (!format.empty())
+            return Error{file_message(
+                path, "it is " + format + ", not a BMP, PNG or JPEG image: save it as PNG")};
+        if (!format_named_by(path))
+            return Error{file_message(path, "it is not a BMP, PNG or JPEG image")};
+    }
+    return decode_bmp_or_png(path, *bytes);
 }
 
 }  // namespace jt

@@ -7,6 +7,7 @@
 // into parse_body only so (out of line it cost a call a block).
 
 #include "jtracer/schema.hpp"
+#include "language/properties.hpp"
 #include "language/scene_parser.hpp"
 
 #include <cstdint>
@@ -75,6 +76,11 @@ inline void SceneParser::parse_body(BlockSource& block,
                     break;
                 }
                 if (top_level_only(block.keyword)) break;
+                if (next_->kind == TokenKind::equals &&
+                    !block_has_property(block.keyword, cur_->text)) {
+                    bare_assignment(/*top_level=*/false);
+                    break;
+                }
                 // In cameras or scene, a word before a string is no property:
                 // most likely a misspelt include, which the list suggests.
                 if (next_->kind == TokenKind::lbrace || contains(child_names, cur_->text) ||

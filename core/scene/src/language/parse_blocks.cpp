@@ -186,6 +186,8 @@ void SceneParser::parse_file() {
                         "a material at the top level needs a name: 'material NAME { ... }', "
                         "used in a primitive with 'material: NAME;'");
             skip_block();
+        } else if (at(TokenKind::word) && next_->kind == TokenKind::equals) {
+            bare_assignment(/*top_level=*/true);
         } else if (at(TokenKind::word)) {
             unknown_block("at the top level", top_statements());
         } else if (at(TokenKind::lbrace)) {

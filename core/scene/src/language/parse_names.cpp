@@ -81,6 +81,27 @@ bool SceneParser::claim_name(const Token& name, bool& overridden) {
     return false;
 }
 
+void SceneParser::bare_assignment(bool top_level) {
+    const Token name = *cur_;
+    std::string message = "'";
+    message += name.text;
+    message += " = ...'";
+    if (top_level)
+        message += " needs the keyword 'define': write 'define ";
+    else
+        message +=
+            " defines nothing here: names are defined at the top level, outside every "
+            "block, with 'define ";
+    message += name.text;
+    message += " = ...;'";
+    sink_.error(name.pos, std::move(message));
+    // The name counts as defined, badly, so that its uses are not reported
+    // again as unknown names.
+    if (!is_reserved_name(name.text) && !names_.find(name.text))
+        add_bad_name(names_, name, Symbol::Kind::value);
+    skip_statement();
+}
+
 void SceneParser::parse_define() {
     const std::size_t keyword_end = cur_->offset + cur_->length;
     advance();
@@ -152,8 +173,8 @@ void SceneParser::parse_define() {
         advance();
         return;
     }
-    sink_.error(value.end,
-                "expected ';' after the value of 'define " + std::string(name.text) + "'");
+    sink_.error(value.end, "expected ';' after the value of 'define " + std::string(name.text) +
+                               "'" + std::string(comparison_after()));
     if (!at(TokenKind::word) && !at(TokenKind::rbrace)) skip_statement();
 }
 

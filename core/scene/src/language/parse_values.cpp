@@ -135,6 +135,7 @@ bool SceneParser::read_property(Property& property, bool try_plain, std::string_
     std::string message = "expected ';' after the value of '" + std::string(property.name) + "'";
     if (glued) message += glued_hint;
     if (name_beside) message += beside_hint;
+    message += comparison_after();
     sink_.error(property.value.end, std::move(message));
     if (glued || name_beside) {
         skip_statement();

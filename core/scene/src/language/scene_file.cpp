@@ -121,13 +121,21 @@ Expected<std::string> read_text(const std::filesystem::path& path, std::uintmax_
 
 Expected<LoadedScene> load_scene_file(const std::filesystem::path& path, ParseOptions options,
                                       TextKeeping keeping) {
-    LoadedScene loaded;
-    Expected<std::string> text = read_text(path, max_scene_file_bytes, &loaded.stamp);
+    FileStamp stamp;
+    Expected<std::string> text = read_text(path, max_scene_file_bytes, &stamp);
     if (!text) return text.error();
+    Expected<LoadedScene> loaded = load_scene_text(std::move(*text), path, options, keeping);
+    if (loaded) loaded->stamp = stamp;
+    return loaded;
+}
+
+Expected<LoadedScene> load_scene_text(std::string text, const std::filesystem::path& path,
+                                      ParseOptions options, TextKeeping keeping) {
+    LoadedScene loaded;
     loaded.path = path.string();
     if (options.main_file.empty()) options.main_file = loaded.path;
     loaded.options = options;
-    loaded.text = std::move(*text);
+    loaded.text = std::move(text);
     std::optional<TextGiveBack> give_back;
     if (keeping == TextKeeping::given_back_when_large && !options.source_map &&
         loaded.text.size() >= smallest_text_given_back) {
@@ -141,7 +149,7 @@ Expected<LoadedScene> load_scene_file(const std::filesystem::path& path, ParseOp
     }
     // A machine's limit, not a mistake in the file: an I/O failure like any other.
     if (loaded.parsed.out_of_memory)
-        return Error{"cannot read " + lang::quote(path.string()) +
+        return Error{"cannot read " + lang::quote(loaded.path) +
                      ": out of memory (the scene is too large for the memory available)"};
     loaded.parsed.scene.asset_folder = path.parent_path().string();
     return loaded;

@@ -74,6 +74,9 @@ inline constexpr std::string_view glued_hint =
 // ... and when one follows it after a space on its line (SceneParser::beside).
 inline constexpr std::string_view beside_hint =
     " (two values side by side are not multiplied: write '*' between them)";
+// ... and when '<' or '>' follows one (SceneParser::comparison_after).
+inline constexpr std::string_view comparison_hint =
+    " (there are no comparisons: '<' and '>' only bracket vectors like <0, 1, 0>)";
 
 // The schema's own copy of a block keyword, so that records point at the
 // schema's literals rather than at the text.
@@ -120,6 +123,11 @@ class SceneParser final : private TokenCursor {
     bool cut_short(const Value& value) const {
         return at(TokenKind::bad_value) ||
                reading_->skipped_between(value.span.offset + value.span.length, cur_->offset);
+    }
+    // The hint for the missing ';' after a value: a comparison ('1 < 2')
+    // where '<' or '>' follows it, else none.
+    std::string_view comparison_after() const {
+        return at(TokenKind::less) || at(TokenKind::greater) ? comparison_hint : std::string_view{};
     }
     // Whether a name touches the value that ends at `end` ('2pi', '0x10',
     // '1_000'): no next statement, whose ';' is missing, but a mistake in
@@ -290,6 +298,9 @@ class SceneParser final : private TokenCursor {
     bool claim_name(const Token& name, bool& overridden);
     // At `define`: define NAME '=' (STRING | expr) ';'
     void parse_define();
+    // At NAME before '=', a definition without `define` (a POV-Ray habit):
+    // one error that shows the fix, at the top level or inside a block.
+    void bare_assignment(bool top_level);
     // At `material` NAME: a named material, `material NAME { property* }`.
     void parse_named_material();
     std::size_t error_count() const { return static_cast<std::size_t>(sink_.error_count()); }
