@@ -40,6 +40,16 @@ Expected<void> write_image(const std::filesystem::path& path, const Image8& imag
 
 namespace {
 
+// A texture read from a BMP or JPEG, whose samples are 8-bit, as an image:
+// both keep the bottom row first.
+Image8 image_of(Texture&& texture) {
+    Image8 image;
+    image.width = texture.width;
+    image.height = texture.height;
+    image.rgb = std::move(texture.rgb8);
+    return image;
+}
+
 // decode_bmp reads what JTracer writes, 24 bits a pixel uncompressed. Any
 // other BMP an image map reads (1, 4, 8, 16 or 32 bits, bit-field masks) is
 // decoded as an image map is, so that a reference saved by another program
@@ -50,18 +60,13 @@ Expected<Image8> decode_any_bmp(std::span<const std::uint8_t> bytes) {
         return decode_bmp(bytes);
     Expected<Texture> texture = decode_texture(bytes);
     if (!texture) return texture.error();
-    // Both keep the bottom row first; a BMP has 8-bit samples.
-    Image8 image;
-    image.width = texture->width;
-    image.height = texture->height;
-    image.rgb = std::move(texture->rgb8);
-    return image;
+    return image_of(std::move(*texture));
 }
 
 // A BMP or PNG whose bytes were read from `path`, which names it in errors.
 Expected<Image8> decode_bmp_or_png(const std::filesystem::path& path,
                                    std::span<const std::uint8_t> bytes) {
-    const bool bmp = bytes.size() >= 2 && bytes[0] == 'B' && bytes[1] == 'M';
+    const bool bmp = has_bmp_signature(bytes);
     // Neither signature: what the name says decides which reader explains why.
     const bool named_bmp = format_named_by(path) == ImageFormat::bmp;
     // Neither a BMP nor a PNG, and a format that tells itself: named.
@@ -99,13 +104,9 @@ Expected<Image8> read_shown_image(const std::filesystem::path& path) {
         // Decoded and turned upright as an image map's texels are.
         Expected<Texture> texture = decode_texture(*bytes, TextureLayout::as_shown);
         if (!texture) return Error{file_message(path, texture.error().message)};
-        Image8 image;
-        image.width = texture->width;
-        image.height = texture->height;
-        image.rgb = std::move(texture->rgb8);
-        return image;
+        return image_of(std::move(*texture));
     }
-    const bool bmp = bytes->size() >= 2 && (*bytes)[0] == 'B' && (*bytes)[1] == 'M';
+    const bool bmp = has_bmp_signature(*bytes);
     // A format that tells itself is named; for other bytes, a name ending in
     // .bmp or .png lets that reader say what is wrong with the file.
     if (!bmp && !has_png_signature(*bytes)) {
