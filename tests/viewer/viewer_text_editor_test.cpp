@@ -593,13 +593,11 @@ fs::path write_including_scene(const std::string& name) {
     return dir;
 }
 
-// Ctrl+Z until the editor shows `text` again, ten times at most.
-void undo_until(HeadlessViewer& viewer, AppState& state, const std::string& text) {
-    for (int i = 0; i < 10 && viewer.text_editor().buffer != text; ++i) {
-        std::vector<KeyEvent> events;
-        shortcut(events, keys::letter('Z'));
-        viewer.key_events(state, events, 40.0, 16.0);
-    }
+// Ctrl+Z (with `shift`, Ctrl+Shift+Z) pressed once.
+void press_undo(HeadlessViewer& viewer, AppState& state, bool shift = false) {
+    std::vector<KeyEvent> events;
+    shortcut(events, keys::letter('Z'), shift);
+    viewer.key_events(state, events, 40.0, 16.0);
 }
 
 // An included file is opened from the button above the
@@ -635,15 +633,17 @@ TEST(ViewerIncludedFileEditor, OpensTypesUndoesAndSavesAnIncludedFile) {
     EXPECT_EQ(draft_of(state.editor, state.editor.shown)->text, typed);
     EXPECT_EQ(document_text(state.doc), main_text) << "the scene file's text is not touched";
 
-    // Ctrl+Z undoes the typing in this file, and is no undo of the scene's.
-    undo_until(viewer, state, ball_text);
+    // One Ctrl+Z undoes the typing in this file, typed without a pause, as
+    // in the scene file (it undid a character a press); it is no undo of
+    // the scene's, and Ctrl+Shift+Z brings it back.
+    press_undo(viewer, state);
     EXPECT_EQ(ed.buffer, ball_text);
     EXPECT_FALSE(has_included_drafts(state.editor)) << "typed back: nothing to save";
-
-    events.clear();
-    type(events, "# hi\n");
-    viewer.key_events(state, events, 40.0, 16.0);
+    EXPECT_EQ(document_text(state.doc), main_text);
+    press_undo(viewer, state, /*shift=*/true);
     ASSERT_EQ(ed.buffer, typed);
+    ASSERT_NE(draft_of(state.editor, state.editor.shown), nullptr);
+    EXPECT_EQ(draft_of(state.editor, state.editor.shown)->text, typed);
 
     // The scene file shown and back: the typing is still there.
     ASSERT_TRUE(viewer.click(state, "main.jts"));
@@ -819,7 +819,7 @@ TEST(ViewerIncludedFileEditor, EscKeepsWhatWasTypedInAnIncludedFile) {
     ed.jump = static_cast<int>(std::string("# mine\n").size());
     viewer.frame(state);
     viewer.frame(state);
-    undo_until(viewer, state, ball_text);
+    press_undo(viewer, state);
     EXPECT_EQ(ed.buffer, ball_text);
     fs::remove_all(dir);
 }

@@ -10,16 +10,13 @@
 #include "jtracer/new_block.hpp"
 #include "jtracer/scene_text.hpp"
 #include "model/app_state.hpp"
+#include "model/editor_files.hpp"
 
-#include <chrono>
 #include <cstddef>
 #include <functional>
 #include <string>
 
 namespace jt::view {
-
-// How long typing must pause before the text is parsed again.
-inline constexpr std::chrono::milliseconds kTypingPause{250};
 
 // Runs `edit` on the document's text (with the panels' edits written in) and
 // takes the result in as one undo step; on failure nothing changes and the

@@ -58,7 +58,7 @@ void finish_open(AppState& state, const std::filesystem::path& path, LoadAttempt
     // An open was asked before dropping text typed in included files (guard):
     // none carries over to another scene. A failed open keeps the scene shown
     // with its edits (accept_load), and so with the text typed in its files.
-    if (ok || first) state.editor.drafts.clear();
+    if (ok || first) forget_included_drafts(state.editor);
     if (state.doc.path != was) state.editor.shown.clear();
     if (ok || first) {
         state.files.watcher = FileWatcher(state.config.watch_interval);
