@@ -668,6 +668,55 @@ TEST(ViewerIncludedFileEditor, OpensTypesUndoesAndSavesAnIncludedFile) {
     fs::remove_all(dir);
 }
 
+// Found in the real window: Delete, Duplicate, Add material block and
+// Add operation were offered on a ball read from parts/ball.jts, and
+// clicking them only said, in the status line, that it could not be done.
+// They are greyed with the reason in their tooltip; the Delete key says it,
+// and the scene stays as it is. A block of the scene file keeps them.
+TEST(ViewerIncludedFileEditor, ABlockOfAnIncludedFileOffersNoBlockCommands) {
+    HeadlessViewer viewer{1200, 900};
+    ASSERT_TRUE(viewer.ok()) << viewer.error();
+    const fs::path dir = write_including_scene("included-block-commands");
+    AppState state{test_config()};
+    open_scene(state, dir / "main.jts");
+    ASSERT_TRUE(state.doc.loaded) << format_diagnostics(state.doc);
+    ASSERT_TRUE(viewer.run_until_loaded(state));
+    select(state.view, {Selection::Kind::primitive, 0});
+    for (int i = 0; i < 4; ++i) viewer.frame(state);
+    // The object's buttons; the camera panel has a Duplicate and a Delete
+    // too, its Delete disabled (the only camera).
+    const auto disabled_with_reason = [&](std::string_view label) {
+        int found = 0;
+        for (const UiItem& item : viewer.ui_items())
+            if (item.label == label && !item.enabled && item.has_tooltip) ++found;
+        return found;
+    };
+    EXPECT_EQ(disabled_with_reason("Duplicate"), 1);
+    EXPECT_EQ(disabled_with_reason("Delete"), 2);
+    for (const char* label : {"Add material block", "Add transform block", "Add operation"})
+        EXPECT_EQ(disabled_with_reason(label), 1) << label;
+    EXPECT_NE(why_not_rewrite_block(state.doc, {BlockKind::primitive, 0}).find("parts/ball.jts"),
+              std::string::npos);
+    const std::string text = document_text(state.doc);
+    viewer.press_key(state, keys::del);
+    EXPECT_EQ(document_text(state.doc), text);
+    EXPECT_EQ(state.doc.scene.primitives.size(), 1u);
+    EXPECT_NE(state.message.find("parts/ball.jts"), std::string::npos) << state.message;
+
+    // The light is written in main.jts: its commands are there.
+    EXPECT_EQ(why_not_rewrite_block(state.doc, {BlockKind::light, 0}), "");
+    select(state.view, {Selection::Kind::light, 0});
+    for (int i = 0; i < 4; ++i) viewer.frame(state);
+    int duplicates = 0;
+    for (const UiItem& item : viewer.ui_items())
+        if (item.label == "Duplicate") {
+            ++duplicates;
+            EXPECT_TRUE(item.enabled);
+        }
+    EXPECT_EQ(duplicates, 2) << "the camera's and the light's";
+    fs::remove_all(dir);
+}
+
 // Found in the real window: "} oops" typed in parts/objects.jts, the list
 // under the text said "No errors or warnings." (typed text in an included
 // file is read only when saved), and Ctrl+S then said it had an error. The
