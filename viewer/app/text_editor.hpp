@@ -41,6 +41,7 @@ struct TextEditorState {
     std::string shown_file;
     std::uint64_t shown_generation = 0;  // SceneDocument::file_generation
     bool shown_file_draft = false;       // the file had a draft
+    std::uint64_t shown_steps = 0;       // EditorFiles::steps_taken
     // The file buttons: the indexes of the first readings of each included
     // file (latest_readings), found again only when the document changed.
     std::vector<std::size_t> listed;

@@ -58,7 +58,7 @@ void finish_open(AppState& state, const std::filesystem::path& path, LoadAttempt
     // An open was asked before dropping text typed in included files (guard):
     // none carries over to another scene. A failed open keeps the scene shown
     // with its edits (accept_load), and so with the text typed in its files.
-    if (ok || first) state.editor.drafts.clear();
+    if (ok || first) forget_included_drafts(state.editor);
     if (state.doc.path != was) state.editor.shown.clear();
     if (ok || first) {
         state.files.watcher = FileWatcher(state.config.watch_interval);
@@ -527,13 +527,20 @@ bool save_image_numbered(AppState& state) {
     return save_image(state, state.fields.save_image_path);
 }
 
-bool save_scene_as(AppState& state, const std::filesystem::path& path, bool replace) {
+bool save_scene_as(AppState& state, const std::filesystem::path& asked, bool replace) {
     state.files.save_as_conflict.clear();
     if (!state.doc.loaded) {
         state.message = "Scene not saved: no scene is open";
         return false;
     }
+    // A name typed beside the scene's own path means a file beside the scene
+    // (where its includes and images are found), not one in whatever folder
+    // the viewer was started from. Made absolute, so that the name kept for
+    // "Replace it" is not read against the folder a second time.
     std::error_code ec;
+    const std::filesystem::path path =
+        asked.is_relative() ? std::filesystem::absolute(state.doc.path.parent_path() / asked, ec)
+                            : asked;
     if (!replace && std::filesystem::exists(path, ec)) {
         state.files.save_as_conflict = path.string();
         state.message = "Scene not saved: " + path.string() + " exists";

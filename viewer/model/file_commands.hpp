@@ -66,9 +66,10 @@ void revert_conflicting_drafts(AppState& state);
 bool save_image(AppState& state, const std::filesystem::path& path);
 // The same to state.save_image_path (the S key).
 bool save_image_numbered(AppState& state);
-// Writes the edited scene to `path` and makes that the open file. A file
-// already there is replaced only with `replace`; otherwise nothing is written
-// and state.files.save_as_conflict names it.
+// Writes the edited scene to `path` and makes that the open file. A relative
+// `path` is read against the scene file's folder. A file already there is
+// replaced only with `replace`; otherwise nothing is written and
+// state.files.save_as_conflict names it.
 bool save_scene_as(AppState& state, const std::filesystem::path& path, bool replace);
 
 // Quitting and opening another file go through these: with unsaved edits

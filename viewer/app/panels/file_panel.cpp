@@ -134,7 +134,7 @@ void file_panel(AppState& state) {
     ImGui::SetNextItemWidth(-font * 8.5f);
     ImGui::InputTextWithHint("##scene_as", "copy.jts", &state.fields.save_scene_path);
     note_item("save scene path", true);
-    tooltip("Where Save scene as writes the edited scene");
+    tooltip("Where Save scene as writes the edited scene (a relative path: beside the scene file)");
     ImGui::SameLine();
     if (button("Save scene as", "Write the edited scene to this file and keep editing that one",
                !state.doc.loaded                      ? "No scene is open"
