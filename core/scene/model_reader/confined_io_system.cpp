@@ -26,15 +26,21 @@ bool material_library(const char* file) {
 
 }  // namespace
 
-ConfinedIOSystem::ConfinedIOSystem(std::filesystem::path folder) {
+ConfinedIOSystem::ConfinedIOSystem(std::filesystem::path folder,
+                                   const std::filesystem::path& model) {
     std::error_code error;
     folder_ = std::filesystem::weakly_canonical(std::filesystem::absolute(folder, error), error);
+    base_ = std::filesystem::absolute(model, error).parent_path();
+}
+
+std::filesystem::path ConfinedIOSystem::resolved(const char* file) const {
+    const std::filesystem::path path(file);
+    return path.is_relative() ? base_ / path : path;
 }
 
 bool ConfinedIOSystem::allowed(const char* file) const {
     std::error_code error;
-    const std::filesystem::path path =
-        std::filesystem::weakly_canonical(std::filesystem::absolute(file, error), error);
+    const std::filesystem::path path = std::filesystem::weakly_canonical(resolved(file), error);
     std::string why;
     if (error || folder_.empty() || !inside(path, folder_)) {
         why.append(material_library(file) ? "refers to the material library '" : "refers to '");
@@ -57,7 +63,7 @@ bool ConfinedIOSystem::allowed(const char* file) const {
 }
 
 bool ConfinedIOSystem::Exists(const char* file) const {
-    return allowed(file) && DefaultIOSystem::Exists(file);
+    return allowed(file) && DefaultIOSystem::Exists(resolved(file).c_str());
 }
 
 bool ConfinedIOSystem::contains(const std::filesystem::path& file) const {
@@ -72,15 +78,16 @@ Assimp::IOStream* ConfinedIOSystem::Open(const char* file, const char* mode) {
     if (std::string(mode).find_first_of("wa+") != std::string::npos) return nullptr;
     const bool library = material_library(file);
     const std::string refused_before = refusal_;
-    Assimp::IOStream* stream = allowed(file) ? DefaultIOSystem::Open(file, mode) : nullptr;
-    if (library && stream) libraries_.emplace_back(file);
+    const std::filesystem::path path = resolved(file);
+    Assimp::IOStream* stream = allowed(file) ? DefaultIOSystem::Open(path.c_str(), mode) : nullptr;
+    if (library && stream) libraries_.push_back(path);
     if (library && !stream && library_failure_.empty()) {
         if (refusal_ != refused_before)
             library_failure_ = "it " + refusal_;
         else
-            library_failure_ = "its material library '" + std::string(file) + "' cannot be read (" +
-                               (DefaultIOSystem::Exists(file) ? "unreadable" : "no such file") +
-                               ")";
+            library_failure_ =
+                "its material library '" + std::string(file) + "' cannot be read (" +
+                (DefaultIOSystem::Exists(path.c_str()) ? "unreadable" : "no such file") + ")";
     }
     return stream;
 }
