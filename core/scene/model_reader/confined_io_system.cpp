@@ -38,22 +38,31 @@ std::filesystem::path ConfinedIOSystem::resolved(const char* file) const {
     return path.is_relative() ? base_ / path : path;
 }
 
+std::string ConfinedIOSystem::shown(const char* file) const {
+    // Assimp asks for most references as the model's folder joined to the
+    // name the model writes (a glTF buffer's URI): that name is what the
+    // user can find in the file.
+    const std::string path(file), folder = base_.string() + "/";
+    return path.starts_with(folder) ? path.substr(folder.size()) : path;
+}
+
 bool ConfinedIOSystem::allowed(const char* file) const {
     std::error_code error;
     const std::filesystem::path path = std::filesystem::weakly_canonical(resolved(file), error);
+    const std::string name = shown(file);
     std::string why;
     if (error || folder_.empty() || !inside(path, folder_)) {
         why.append(material_library(file) ? "refers to the material library '" : "refers to '");
-        why.append(file).append("', outside the folder '");
+        why.append(name).append("', outside the folder '");
         why.append(folder_.string()).append("'");
     } else if (std::filesystem::is_directory(path, error)) {
         // Opening a folder succeeds on Linux and only its reading fails, for
         // which Assimp has nothing better to say than "File read error".
         why.append(material_library(file) ? "refers to the material library '" : "refers to '");
-        why.append(file).append("', which is a folder");
+        why.append(name).append("', which is a folder");
     } else if (const std::uintmax_t size = std::filesystem::file_size(path, error);
                !error && size > kMaxModelFileBytes) {
-        why.append("refers to '").append(file).append("', which is too large (");
+        why.append("refers to '").append(name).append("', which is too large (");
         why.append(std::to_string(size));
         why.append(" bytes; at most ").append(std::to_string(kMaxModelFileBytes)).append(")");
     }
@@ -86,7 +95,7 @@ Assimp::IOStream* ConfinedIOSystem::Open(const char* file, const char* mode) {
             library_failure_ = "it " + refusal_;
         else
             library_failure_ =
-                "its material library '" + std::string(file) + "' cannot be read (" +
+                "its material library '" + shown(file) + "' cannot be read (" +
                 (DefaultIOSystem::Exists(path.c_str()) ? "unreadable" : "no such file") + ")";
     }
     return stream;

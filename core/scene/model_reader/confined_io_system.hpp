@@ -46,6 +46,9 @@ class ConfinedIOSystem : public Assimp::DefaultIOSystem {
     bool allowed(const char* file) const;
     // `file` as opened: a relative name taken from the model's folder.
     std::filesystem::path resolved(const char* file) const;
+    // `file` as messages name it: relative to the model's folder when it lies
+    // below it by name, else as asked.
+    std::string shown(const char* file) const;
 
     std::filesystem::path folder_;  // canonical
     std::filesystem::path base_;    // the model's folder, absolute
