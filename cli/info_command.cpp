@@ -207,6 +207,7 @@ int run_info_command(int argc, char** argv) {
         "the lights; the cameras and where they look; and the prepared scene's memory,\n"
         "Embree's counted as it builds (info prepares the scene as a render would);\n"
         "and the vector unit JTracer's own batched tests run on.\n"
+        "The scene's warnings go to stderr, as a render prints them.\n"
         "\n"
         "Examples:\n"
         "  jtracer-cli info scenes/mesh.jts\n"
