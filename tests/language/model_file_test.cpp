@@ -303,6 +303,32 @@ TEST(ModelFile, ReferencesOutsideTheSceneFolderAreRefused) {
     EXPECT_NE(buffer.find("outside the folder"), std::string::npos) << buffer;
 }
 
+// A LightWave scene names its object by a relative name ("LoadObjectLayer 1
+// 10000000 simple_cube.lwo"): taken from the scene's folder, not from the
+// working directory, it loads with no warning wherever the program runs,
+// and a model named by a relative path still loads.
+TEST(ModelFile, RelativeReferencesAreTakenFromTheModelsFolder) {
+    ScratchDir dir;
+    fs::create_directories(dir.path() / "scene");
+    for (const char* name : {"move_x.lws", "simple_cube.lwo"})
+        fs::copy_file(kModels / "LWS" / name, dir.path() / "scene" / name);
+    const fs::path cwd = fs::current_path();
+    for (const fs::path& from : {dir.path(), dir.path() / "scene", fs::path("/")}) {
+        SCOPED_TRACE(from.string());
+        fs::current_path(from);
+        const Expected<Model> absolute =
+            read_model(dir.path() / "scene/move_x.lws", dir.path() / "scene");
+        const Expected<Model> relative = read_model(fs::relative(dir.path() / "scene/move_x.lws"),
+                                                    fs::relative(dir.path() / "scene"));
+        fs::current_path(cwd);
+        for (const Expected<Model>* model : {&absolute, &relative}) {
+            ASSERT_TRUE(model->has_value()) << (*model).error().message;
+            EXPECT_EQ((*model)->triangles.size(), 12u);  // the cube
+            EXPECT_EQ(model_warnings(**model), std::vector<std::string>{});
+        }
+    }
+}
+
 TEST(ModelFile, AbsurdCountsAndHugeFilesAreRefusedBeforeReading) {
     ScratchDir dir;
     write_file(dir.path() / "claims.ply",

@@ -465,13 +465,15 @@ Expected<Model> import_model(const std::filesystem::path& file, const std::files
                                       importer.IsExtensionSupported(".m3d"));
             !problem.empty())
             return Error{file_message(file, problem)};
-        auto* io = new ConfinedIOSystem(reference_folder(file, folder));
+        auto* io = new ConfinedIOSystem(reference_folder(file, folder), file);
         importer.SetIOHandler(io);  // the importer owns it
         std::vector<std::pair<std::string, std::size_t>> said;
         const aiScene* scene = nullptr;
         {
             const CerrCapture capture;
-            scene = importer.ReadFile(file.string(), 0);
+            // Absolute, as the io system takes every relative name from the
+            // model's folder (model_reader/confined_io_system.hpp).
+            scene = importer.ReadFile(std::filesystem::absolute(file).string(), 0);
             said = capture.lines();
         }
         if (!scene) {
