@@ -19,9 +19,7 @@ constexpr std::array<std::string_view, 5> kReservedWords{"clock", "pi", kInclude
 bool is_reserved_name(std::string_view name) {
     if (std::find(kReservedWords.begin(), kReservedWords.end(), name) != kReservedWords.end())
         return true;
-    const auto keywords = block_keywords();
-    if (std::find(keywords.begin(), keywords.end(), name) != keywords.end()) return true;
-    return is_function_name(name);
+    return is_block_keyword(name) || is_function_name(name);
 }
 
 const Symbol* NameTable::find(std::string_view name) const {
