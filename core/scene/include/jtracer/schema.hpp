@@ -460,11 +460,6 @@ constexpr std::span<const std::string_view> primitive_blocks() {
 constexpr std::span<const std::string_view> block_keywords() {
     return schema_detail::kBlockKeywords;
 }
-constexpr bool is_block_keyword(std::string_view word) {
-    for (std::string_view keyword : block_keywords())
-        if (keyword == word) return true;
-    return false;
-}
 
 // The string properties that name a file beside the scene: in an included
 // file they are relative to that file's folder (docs/language.md §15.6).
