@@ -144,7 +144,8 @@ int run(const Options& o, Clock::time_point start, bool& compared) {
     }
     if (!o.quiet)
         std::cerr << "wrote " << shown_output(output) << ": "
-                  << render_summary(options.width, options.height, options.samples, job.progress())
+                  << render_summary(options.width, options.height, options.samples, job.progress(),
+                                    o.region)
                   << "\n";
     if (o.expect) {
         compared = true;

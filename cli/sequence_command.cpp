@@ -117,7 +117,7 @@ int run_sequence(const Options& o) {
             std::cerr << "wrote " << frame.output << " (frame " << index << ", clock "
                       << shortest_decimal(frame.clock) << "): "
                       << render_summary(frame.render.width, frame.render.height,
-                                        frame.render.samples, job.progress())
+                                        frame.render.samples, job.progress(), o.region)
                       << "\n";
     }
     display.finish();

@@ -418,6 +418,22 @@ TEST(ModelFile, ReaderFailuresNameTheirCause) {
               "'" + (dir.path() / "bad.stl").string() +
                   "': line 6, column 11 (byte 83): a number was expected, not 'abc'");
 
+    // A bad number in an OBJ's material library is located there, not at
+    // the first place its text occurs in the model ('x' inside "usemtl tex");
+    // a number missing at a line's end names the library too.
+    write_file(dir.path() / "lib.obj",
+               "mtllib lib.mtl\nv 0 0 0\nv 1 0 0\nv 0 1 0\nusemtl tex\nf 1 2 3\n");
+    write_file(dir.path() / "lib.mtl", "newmtl tex\nKd 1 0.2 x\n");
+    EXPECT_EQ(read_error(dir.path() / "lib.obj", dir.path()),
+              "'" + (dir.path() / "lib.obj").string() +
+                  "': its material library 'lib.mtl', line 2, column 10 (byte 20): a number was "
+                  "expected, not 'x'");
+    write_file(dir.path() / "lib.mtl", "newmtl tex\nKd 1 0.2\n");
+    EXPECT_EQ(read_error(dir.path() / "lib.obj", dir.path()),
+              "'" + (dir.path() / "lib.obj").string() +
+                  "': a line of the file or of its material library 'lib.mtl' ends where a "
+                  "number was expected");
+
     // Assimp's Collada reader does not skip the spaces before a number
     // ("<color>  0.0 0.0 0.0 1.0  </color>"): the message says so, rather than
     // that a number was expected and "nothing" found.

@@ -195,6 +195,26 @@ TEST(Names, NamedMaterialMistakes) {
               "used in a primitive with 'material: NAME;'");
 }
 
+// POV-Ray's '#declare M = material { ... }' written as a define, or a block
+// keyword where a value goes: the keyword is never a name, so "unknown
+// name 'material'" hid the fix.
+TEST(Names, ABlockKeywordAsAValueSaysWhatToWriteInstead) {
+    EXPECT_EQ(brief("define m = material { pigment: <1, 1, 1>; }\n"),
+              "1:12: error: 'material' is a block, not a value: a material is named with "
+              "'material NAME { ... }' at the top level and used in a primitive with "
+              "'material: NAME;'");
+    EXPECT_EQ(brief("define s = sphere { radius: 2; }\n"),
+              "1:12: error: 'sphere' is a block keyword, not a value (a number, a vector, a "
+              "string or a defined name)");
+    EXPECT_EQ(brief("scene { sphere { radius: transform; } }"),
+              "1:26: error: 'transform' is a block keyword, not a value (a number, a vector, "
+              "a string or a defined name)");
+    // Said even when an unread include might have defined other names.
+    EXPECT_NE(brief("include \"missing.jts\";\ndefine m = material { };\n")
+                  .find("2:12: error: 'material' is a block, not a value"),
+              std::string::npos);
+}
+
 // A misspelt or misplaced property is the mistake reported, not what its
 // value's evaluation would say: that hid the name behind "unknown name" or
 // "a material, not a value: use it with 'material: shiny;'" (which it was).

@@ -87,7 +87,12 @@ TEST(Validate, UpParallelToTheViewDirection) {
                        "cameras { perspective_camera { }\n perspective_camera { look_at: <0, -5, "
                        "0>;\n up: <0, 2, 0>; } }\nscene { }"),
               "4:6: error: camera 2: 'up' <0, 2, 0> is parallel to the view direction <0, -5, "
-              "0> (or zero)");
+              "0>");
+    // A zero 'up' is no direction at all, whatever the view.
+    EXPECT_EQ(validate("render_settings { width: 2; height: 2; }\n"
+                       "cameras { perspective_camera { up: <0, 0, 0>; } }\nscene { }"),
+              "2:36: error: camera 1: 'up' is <0, 0, 0>, which gives no direction for the top "
+              "of the image");
 }
 
 TEST(Validate, AspectDifferingFromTheImageByOverOnePercentWarns) {

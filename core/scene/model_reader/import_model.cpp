@@ -450,12 +450,23 @@ Expected<Model> import_model(const std::filesystem::path& file, const std::files
     }
     // The file's own bytes say more than Assimp's words for some failures
     // (model_reader/model_messages.hpp); read only when it failed.
-    auto failure = [&](const std::string& reason) -> Error {
+    // The material libraries it read are named from the model's folder.
+    auto failure = [&](const std::string& reason,
+                       const std::vector<std::filesystem::path>& opened) -> Error {
         const Expected<std::vector<std::uint8_t>> bytes = read_file_bytes(file);
         if (!bytes) return Error{file_message(file, reason)};
         if (std::string wide = wide_text_problem(*bytes); !wide.empty())
             return Error{file_message(file, wide)};
-        return Error{file_message(file, import_failure(reason, *bytes))};
+        std::vector<ReadAlongside> libraries;
+        for (const std::filesystem::path& library : opened) {
+            Expected<std::vector<std::uint8_t>> read = read_file_bytes(library);
+            if (!read) continue;
+            const std::filesystem::path name =
+                library.lexically_relative(file.parent_path()).lexically_normal();
+            libraries.push_back(
+                {name.empty() ? library.string() : name.generic_string(), std::move(*read)});
+        }
+        return Error{file_message(file, import_failure(reason, *bytes, libraries))};
     };
     try {
         Assimp::Importer importer;
@@ -490,7 +501,7 @@ Expected<Model> import_model(const std::filesystem::path& file, const std::files
                     file, "none of its " + std::to_string(declared_triangles) +
                               " triangles can be read: they name corners the file does not "
                               "have (indices out of range)")};
-            return failure(why);
+            return failure(why, io->libraries());
         }
         std::optional<MaterialPlan> plan;
         if (file_materials) {

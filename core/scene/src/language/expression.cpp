@@ -290,6 +290,20 @@ bool ExpressionReader::parse_primary(int depth) {
         sink_.error(t.pos, message + ")");
         return false;
     }
+    if (!symbol && is_block_keyword(word)) {
+        // A keyword is never a name, so this is said even when an unread
+        // include might have defined others. 'define m = material { ... }'
+        // is how POV-Ray's '#declare' names a material.
+        sink_.error(t.pos, word == schema_of<Material>().keyword
+                               ? quote(word) +
+                                     " is a block, not a value: a material is named with "
+                                     "'material NAME { ... }' at the top level and used in a "
+                                     "primitive with 'material: NAME;'"
+                               : quote(word) +
+                                     " is a block keyword, not a value (a number, a "
+                                     "vector, a string or a defined name)");
+        return false;
+    }
     if (!symbol) {
         if (!names_.reports_unknown()) return false;
         const std::vector<std::string_view> known = names_.names();
