@@ -357,5 +357,32 @@ TEST(Utf8, ACharacterIsItsCodeAndLengthOrNothing) {
     EXPECT_FALSE(utf8_character_at("a", 1)) << "past the end";
 }
 
+// POV-Ray's and C's comments are one error each, and skipped as a '#'
+// comment would be: nothing in them is read, and the scene around them is.
+TEST(Lexical, CAndPovRayCommentsAreOneErrorEachAndSkipped) {
+    ParseResult r = parse_scene(
+        "// a POV-Ray scene { sphere\n"
+        "scene { sphere { radius: 2; // big; { ball\n"
+        "  center: /* here */ <1, 0, 0>; } /* two\n"
+        "  lines: sphere { } */ plane { } }\n");
+    EXPECT_EQ(brief(r.diagnostics),
+              "1:1: error: '//' starts no comment here: a comment runs from '#' to the end of "
+              "the line\n"
+              "2:29: error: '//' starts no comment here: a comment runs from '#' to the end of "
+              "the line\n"
+              "3:11: error: '/*' starts no comment here: a comment runs from '#' to the end of "
+              "the line\n"
+              "3:35: error: '/*' starts no comment here: a comment runs from '#' to the end of "
+              "the line");
+    ASSERT_EQ(r.scene.primitives.size(), 2u);
+    const auto& ball = shape_as<Sphere>(r.scene.primitives[0].shape);
+    EXPECT_EQ(ball.radius, 2.0);
+    EXPECT_EQ(ball.center, Vec3(1, 0, 0));
+    // An unclosed '/*' runs to the end of the file; one '/' divides as before.
+    EXPECT_EQ(brief("scene { sphere { radius: 4 / 2; } } /* sphere {"),
+              "1:37: error: '/*' starts no comment here: a comment runs from '#' to the end of "
+              "the line");
+}
+
 }  // namespace
 }  // namespace jt

@@ -173,7 +173,7 @@ bool Lexer::take_word_or_mark(Token& out) {
         return true;
     }
     if (const TokenKind kind = single_byte_tokens[static_cast<unsigned char>(c)];
-        kind != TokenKind::end) {
+        kind != TokenKind::end && !(kind == TokenKind::slash && c_comment_at(start))) {
         ++at_;
         set(out, kind, text_.substr(start, 1), start, 1, pos_of(start));
         return true;
@@ -238,6 +238,10 @@ std::string_view look_alike(char32_t code) {
 
 void Lexer::next_rare(Token& out) {
     while (!sink_.stopped() && at_ < text_.size()) {
+        if (c_comment_at(at_)) {
+            skip_c_comment();
+            continue;
+        }
         if (take_word_or_mark(out)) return;
         const std::size_t start = at_;
         const char c = text_[start];
@@ -281,6 +285,33 @@ void Lexer::lex_curly_string(std::size_t start, Token& out) {
     }
     at_ = i;
     set(out, TokenKind::bad_value, text_.substr(start, i - start), start, i - start, pos_of(start));
+}
+
+// A POV-Ray or C comment ('//' or '/*'): no value has '/' before '/' or '*',
+// so it is one error, and the comment is skipped as '#' would have been, so
+// that its words are not read as the scene.
+void Lexer::skip_c_comment() {
+    const std::size_t start = at_;
+    const std::size_t n = text_.size();
+    const bool line = text_[start + 1] == '/';
+    sink_.error(pos_of(start), std::string(line ? "'//'" : "'/*'") +
+                                   " starts no comment here: a comment runs from '#' to the "
+                                   "end of the line");
+    std::size_t i = start + 2;
+    if (line) {
+        while (i < n && text_[i] != '\n') ++i;
+    } else {
+        while (i < n && !(text_[i] == '*' && i + 1 < n && text_[i + 1] == '/')) {
+            if (text_[i] == '\n') {
+                ++line_;
+                line_start_ = i + 1;
+            }
+            ++i;
+        }
+        i = i < n ? i + 2 : n;
+    }
+    at_ = i;
+    skip_space_and_comments();
 }
 
 void Lexer::skip_unexpected() {

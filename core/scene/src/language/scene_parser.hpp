@@ -189,6 +189,9 @@ class SceneParser final : private TokenCursor {
     void block_in_property_block(const BlockSource& block);
     // At a block's keyword `where` (e.g. "in 'scene'") only `allowed` may stand.
     void unknown_block(std::string_view where, std::span<const std::string_view> allowed);
+    // At a token that starts no statement: the error, "expected WHAT, got
+    // ..." (with a word on C's and POV-Ray's ';' after a block's '}').
+    void unexpected_token(std::string_view what);
     // A property in a block that holds only blocks (cameras, scene): reported.
     void only_blocks(const BlockSource& block, std::span<const std::string_view> allowed,
                      const Property& p);
