@@ -73,6 +73,23 @@ TEST(Numbers, SignsAreOperatorsExceptInAnExponent) {
 TEST(Numbers, OutOfRangeIsAnError) {
     EXPECT_EQ(brief("scene { plane { distance: 1e400; } }"),
               "1:27: error: the number 1e400 is out of range (numbers must be finite doubles)");
+    // Too small is not out of the finite doubles: the message says what it is.
+    const std::string tiny = brief(
+        "scene { plane { distance: 1e-400; }\n"
+        "        plane { distance: 0.0000000000000000000000000000000"
+        "0000000000000000000000000000000000000000000000000000000000"
+        "0000000000000000000000000000000000000000000000000000000000"
+        "0000000000000000000000000000000000000000000000000000000000"
+        "0000000000000000000000000000000000000000000000000000000000"
+        "0000000000000000000000000000000000000000000000000000000000"
+        "0000000000000000001; } }");
+    EXPECT_EQ(tiny,
+              "1:27: error: the number 1e-400 is too small: its nearest double is 0, and only a "
+              "zero may be written as 0 (write 0, or a number of at least 5e-324)\n"
+              "2:27: error: the number 0.00000000000000000000000000000000000000... is too small: "
+              "its nearest double is 0, and only a zero may be written as 0 (write 0, or a "
+              "number of at least 5e-324)");
+    EXPECT_TRUE(parse_clean("scene { plane { distance: 5e-324; } }").ok());
 }
 
 TEST(Numbers, NanAndInfinitySpelledOutAreUnknownNamesThatMustBeFinite) {

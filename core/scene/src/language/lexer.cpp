@@ -659,6 +659,35 @@ std::size_t Lexer::plain_vector(std::size_t offset, Vec3& out) const {
     return i;
 }
 
+namespace {
+
+// The power of ten of a well-formed number's first significant digit
+// (0 for 1.5, -400 for 1e-400), so that the error for a number beyond the
+// doubles can tell too large from too small without the C library's
+// locale-dependent strtod.
+long long decimal_order(std::string_view number) {
+    const std::size_t e = number.find_first_of("eE");
+    const std::string_view mantissa = number.substr(0, e);
+    long long exponent = 0;
+    if (e != std::string_view::npos) {
+        std::string_view digits = number.substr(e + 1);
+        const bool negative = !digits.empty() && digits[0] == '-';
+        if (!digits.empty() && (digits[0] == '-' || digits[0] == '+')) digits.remove_prefix(1);
+        if (std::from_chars(digits.data(), digits.data() + digits.size(), exponent).ec !=
+            std::errc())
+            exponent = 1'000'000'000;  // beyond every double either way
+        if (negative) exponent = -exponent;
+    }
+    const std::size_t point = std::min(mantissa.find('.'), mantissa.size());
+    const std::size_t first = mantissa.find_first_of("123456789");
+    if (first == std::string_view::npos) return 0;
+    const long long order = first < point ? static_cast<long long>(point - first) - 1
+                                          : -static_cast<long long>(first - point);
+    return order + exponent;
+}
+
+}  // namespace
+
 void Lexer::lex_number(std::size_t start, Token& token) {
     const std::size_t n = text_.size();
     while (at_ < n) {
@@ -688,8 +717,14 @@ void Lexer::lex_number(std::size_t start, Token& token) {
     }
     auto [end, ec] = std::from_chars(run.data(), run.data() + run.size(), token.number);
     if (ec != std::errc() || end != run.data() + run.size() || !std::isfinite(token.number)) {
+        // Too large, or too small: not zero, yet its nearest double is.
+        const bool tiny = decimal_order(run) < 0;
         sink_.error(token.pos, "the number " + std::string(run.substr(0, 40)) +
-                                   " is out of range (numbers must be finite doubles)");
+                                   (run.size() > 40 ? "..." : "") +
+                                   (tiny ? " is too small: its nearest double is 0, and only a "
+                                           "zero may be written as 0 (write 0, or a number of "
+                                           "at least 5e-324)"
+                                         : " is out of range (numbers must be finite doubles)"));
         token.kind = TokenKind::bad_value;
     }
 }
