@@ -104,6 +104,24 @@ TEST(Numbers, NanAndInfinitySpelledOutAreUnknownNamesThatMustBeFinite) {
               "used); numbers must be finite");
 }
 
+// POV-Ray's `color rgb <1, 0, 0>` says that a colour is the vector alone.
+TEST(Numbers, PovRayColourWordsSayAColourIsTheVectorAlone) {
+    EXPECT_EQ(brief("scene { sphere { material { pigment: color rgb <1, 0, 0>;\n"
+                    "  diffuse: rgb 1; ambient: Colour; } } }"),
+              "1:38: error: unknown name 'color' (names must be defined before they are used); "
+              "POV-Ray's 'color' is not written here: a colour is the vector <r, g, b> alone, "
+              "like <1, 0.5, 0>\n"
+              "2:12: error: unknown name 'rgb' (names must be defined before they are used); "
+              "POV-Ray's 'rgb' is not written here: a colour is the vector <r, g, b> alone, like "
+              "<1, 0.5, 0>\n"
+              "2:28: error: unknown name 'Colour' (names must be defined before they are used); "
+              "POV-Ray's 'Colour' is not written here: a colour is the vector <r, g, b> alone, "
+              "like <1, 0.5, 0>");
+    // A name the file defines is that name.
+    EXPECT_EQ(brief("define rgb = <1, 0, 0>;\nscene { sphere { material { pigment: rgb; } } }"),
+              "");
+}
+
 TEST(Strings, ReadPrintableAscii) {
     ParseResult r = parse_clean("render_settings { filename: \"Red Spheres #1.bmp\"; }");
     EXPECT_EQ(r.scene.settings.filename, "Red Spheres #1.bmp");
