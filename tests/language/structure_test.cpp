@@ -291,7 +291,7 @@ TEST(Structure, AKnownBlockInTheWrongPlaceSaysWhereItGoes) {
               "4:45: error: 'render_settings' cannot stand in 'scene': it stands at the top "
               "level\n"
               "5:12: error: 'point_light' cannot stand in 'sphere': it stands in "
-              "'scene { ... }'\n"
+              "'scene { ... }' (is the '}' of the 'sphere' at 5:3 missing?)\n"
               "6:11: error: 'sphere' cannot stand in 'cameras': it stands in 'scene { ... }'\n"
               "7:1: error: 'transform' cannot stand at the top level: it stands in a primitive "
               "(sphere, plane, cylinder, triangle or mesh)");
@@ -302,6 +302,29 @@ TEST(Structure, AKnownBlockInTheWrongPlaceSaysWhereItGoes) {
     EXPECT_EQ(brief("render_settings { perspective_camera { } }"),
               "1:19: error: 'perspective_camera' cannot stand in 'render_settings': it stands in "
               "'cameras { ... }'");
+}
+
+// A block that stands beside the one it is in, or further out, most often
+// follows a '}' left out: the message asks about that block's '}'.
+TEST(Structure, ABlockInsideItsNeighbourAsksForTheMissingBrace) {
+    EXPECT_EQ(brief("scene {\n"
+                    "  sphere { radius: 1;\n"
+                    "  sphere { radius: 2; }\n"
+                    "}\n"),
+              "3:3: error: 'sphere' cannot stand in 'sphere': it stands in 'scene { ... }' (is "
+              "the '}' of the 'sphere' at 2:3 missing?)\n"
+              "1:1: error: this 'scene' block is never closed: expected '}' before the end of "
+              "the file");
+    EXPECT_EQ(brief("scene { sphere { material { pigment: <1, 0, 0>;\n"
+                    "  transform { scale: 2; } } }"),
+              "2:3: error: 'transform' cannot stand in 'material': it stands in a primitive "
+              "(sphere, plane, cylinder, triangle or mesh) (is the '}' of the 'material' at 1:18 "
+              "missing?)\n"
+              "1:1: error: this 'scene' block is never closed: expected '}' before the end of "
+              "the file");
+    EXPECT_EQ(brief("scene { point_light { sphere { } } }"),
+              "1:23: error: 'sphere' cannot stand in 'point_light': it stands in 'scene { ... }' "
+              "(is the '}' of the 'point_light' at 1:9 missing?)");
 }
 
 TEST(Structure, SeveralRenderSettingsLastWinsWholeWithAWarning) {

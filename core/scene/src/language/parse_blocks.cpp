@@ -153,13 +153,29 @@ std::string block_home(std::string_view keyword) {
     return {};
 }
 
+// How deep a block stands: 0 at the top level, 1 in cameras or scene, 2 in a
+// primitive.
+int block_depth(std::string_view keyword) {
+    if (contains(top_blocks(), keyword)) return 0;
+    if (contains(cameras_blocks(), keyword) || contains(scene_blocks(), keyword)) return 1;
+    return 2;
+}
+
 }  // namespace
 
-void SceneParser::unknown_block(std::string_view where, std::span<const std::string_view> allowed) {
+void SceneParser::unknown_block(std::string_view where, std::span<const std::string_view> allowed,
+                                const BlockSource* inside) {
     if (const std::string home = block_home(cur_->text); !home.empty()) {
-        // A known block in the wrong place: say where it goes.
-        sink_.error(cur_->pos, quote(cur_->text) + " cannot stand " + std::string(where) +
-                                   ": it stands " + home);
+        // A known block in the wrong place: say where it goes. One that
+        // stands beside the block it is in, or further out (a sphere in a
+        // sphere), most often follows a '}' left out.
+        std::string message =
+            quote(cur_->text) + " cannot stand " + std::string(where) + ": it stands " + home;
+        if (inside && block_depth(cur_->text) <= block_depth(inside->keyword))
+            message += " (is the '}' of the '" + std::string(inside->keyword) + "' at " +
+                       include_.line_column_from(inside->keyword_span.pos, cur_->pos) +
+                       " missing?)";
+        sink_.error(cur_->pos, message);
     } else if (const std::string ours_home = block_home(pov_ray_word("block", cur_->text));
                !ours_home.empty() && !contains(allowed, pov_ray_word("block", cur_->text))) {
         // POV-Ray's word for a block that does not stand here either.
@@ -207,7 +223,7 @@ void SceneParser::block_in_property_block(const BlockSource& block) {
         skip_block();
         return;
     }
-    unknown_block("in '" + std::string(block.keyword) + "'", kNoBlocks);
+    unknown_block("in '" + std::string(block.keyword) + "'", kNoBlocks, &block);
 }
 
 void SceneParser::parse_file() {

@@ -187,8 +187,10 @@ class SceneParser final : private TokenCursor {
                               std::string_view keyword = {});
     // At a block's keyword inside a block of properties: reported and skipped.
     void block_in_property_block(const BlockSource& block);
-    // At a block's keyword `where` (e.g. "in 'scene'") only `allowed` may stand.
-    void unknown_block(std::string_view where, std::span<const std::string_view> allowed);
+    // At a block's keyword `where` (e.g. "in 'scene'") only `allowed` may stand;
+    // `inside`, when given, is the block it stands in.
+    void unknown_block(std::string_view where, std::span<const std::string_view> allowed,
+                       const BlockSource* inside = nullptr);
     // At a token that starts no statement: the error, "expected WHAT, got
     // ..." (with a word on C's and POV-Ray's ';' after a block's '}').
     void unexpected_token(std::string_view what);
