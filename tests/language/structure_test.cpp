@@ -304,6 +304,20 @@ TEST(Structure, AKnownBlockInTheWrongPlaceSaysWhereItGoes) {
               "'cameras { ... }'");
 }
 
+// POV-Ray's and C's habits of '(' after a value: 'pi()', a name called, a
+// product without '*'.
+TEST(Structure, AParenthesisAfterAValueSaysWhatTakesOne) {
+    const std::string hint =
+        " ('(' after a value neither calls it nor multiplies: only the functions take '(', pi, "
+        "clock and defined names are values, and a product is written with '*')";
+    EXPECT_EQ(brief("define r = 2;\n"
+                    "scene { sphere { radius: pi(); } sphere { radius: r(2); } }\n"
+                    "define s = 2(3);"),
+              "2:28: error: expected ';' after the value of 'radius'" + hint + "\n" +
+                  "2:52: error: expected ';' after the value of 'radius'" + hint + "\n" +
+                  "3:13: error: expected ';' after the value of 'define s'" + hint);
+}
+
 // A block that stands beside the one it is in, or further out, most often
 // follows a '}' left out: the message asks about that block's '}'.
 TEST(Structure, ABlockInsideItsNeighbourAsksForTheMissingBrace) {

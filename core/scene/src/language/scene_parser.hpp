@@ -77,6 +77,10 @@ inline constexpr std::string_view beside_hint =
 // ... and when '<' or '>' follows one (SceneParser::comparison_after).
 inline constexpr std::string_view comparison_hint =
     " (there are no comparisons: '<' and '>' only bracket vectors like <0, 1, 0>)";
+// ... and when '(' follows one ('pi()', 'r(2)', '2(3)').
+inline constexpr std::string_view call_hint =
+    " ('(' after a value neither calls it nor multiplies: only the functions take '(', pi, "
+    "clock and defined names are values, and a product is written with '*')";
 
 // The schema's own copy of a block keyword, so that records point at the
 // schema's literals rather than at the text.
@@ -125,8 +129,10 @@ class SceneParser final : private TokenCursor {
                reading_->skipped_between(value.span.offset + value.span.length, cur_->offset);
     }
     // The hint for the missing ';' after a value: a comparison ('1 < 2')
-    // where '<' or '>' follows it, else none.
+    // where '<' or '>' follows it, a call or product ('pi()', '2(3)') where
+    // '(' does, else none.
     std::string_view comparison_after() const {
+        if (at(TokenKind::lparen)) return call_hint;
         return at(TokenKind::less) || at(TokenKind::greater) ? comparison_hint : std::string_view{};
     }
     // Whether a name touches the value that ends at `end` ('2pi', '0x10',
