@@ -329,7 +329,11 @@ TEST(Names, DefineOptionIsChecked) {
               "the value of r: at column 1: unknown name 'q' (names must be defined before "
               "they are used)");
     EXPECT_EQ(parse_define("r=1 2").error().message,
-              "the value of r: at column 3: unexpected the number 2 after the value");
+              "the value of r: at column 3: expected the end of the value, got the number 2");
+    // A file's habit: the value is the whole option, with no ';' to end it.
+    EXPECT_EQ(parse_define("r=1;").error().message,
+              "the value of r: at column 2: expected the end of the value, got ';' (the value "
+              "takes no ';')");
 }
 
 // The clock of a render is not known when its --define is checked: a value

@@ -315,6 +315,12 @@ bool ExpressionReader::parse_primary(int depth) {
         for (char c : word) lower += static_cast<char>(c >= 'A' && c <= 'Z' ? c - 'A' + 'a' : c);
         if (lower == "nan" || lower == "inf" || lower == "infinity")
             message += "; numbers must be finite";
+        // POV-Ray's colour keywords: `color rgb <1, 0, 0>` is `<1, 0, 0>` here.
+        for (std::string_view pov : {"color", "colour", "rgb", "rgbf", "rgbt", "rgbft", "srgb"})
+            if (lower == pov)
+                message += "; POV-Ray's " + quote(word.substr(0, 40)) +
+                           " is not written here: a colour is the vector <r, g, b> alone, like "
+                           "<1, 0.5, 0>";
         // POV-Ray's '#include "colors.inc"' or '#declare R = 1;' is a
         // comment here, which is why its names are unknown.
         if (const std::string directive = tokens_.directive_comment(t.pos); !directive.empty())
