@@ -507,20 +507,24 @@ Expected<Model> import_model(const std::filesystem::path& file, const std::files
         auto* io = new ConfinedIOSystem(reference_folder(file, folder), file);
         importer.SetIOHandler(io);  // the importer owns it
         std::vector<std::pair<std::string, std::size_t>> said;
-        const aiScene* scene = nullptr;
-        std::string broken_library;  // why a material library was left out
-        {
+        // The scene read, or nullptr with Assimp's reason in `why`.
+        auto read = [&](std::string& why) -> const aiScene* {
             const CerrCapture capture;
             // Absolute, as the io system takes every relative name from the
             // model's folder (model_reader/confined_io_system.hpp).
-            scene = importer.ReadFile(std::filesystem::absolute(file).string(), 0);
+            const aiScene* got = importer.ReadFile(std::filesystem::absolute(file).string(), 0);
             said = capture.lines();
-        }
-        if (!scene) {
+            if (got) return got;
             // Assimp turns every exception into its error string, running out
             // of memory too; that one is the programs' to report (error.hpp).
-            const std::string why = importer.GetErrorString();
+            why = importer.GetErrorString();
             if (why == std::bad_alloc().what()) throw std::bad_alloc();
+            return nullptr;
+        };
+        std::string why;
+        const aiScene* scene = read(why);
+        std::string broken_library;  // why a material library was left out
+        if (!scene) {
             // A refused file the model needed is the reason it failed.
             if (!io->refusal().empty()) return Error{file_message(file, "it " + io->refusal())};
             // Assimp's glTF reader drops faces whose indices are out of range,
@@ -539,17 +543,9 @@ Expected<Model> import_model(const std::filesystem::path& file, const std::files
             io = new ConfinedIOSystem(reference_folder(file, folder), file);
             io->leave_out_libraries();
             importer.SetIOHandler(io);  // frees the first one
-            {
-                const CerrCapture capture;
-                scene = importer.ReadFile(std::filesystem::absolute(file).string(), 0);
-                said = capture.lines();
-            }
-            if (!scene) {
-                // Then the model's own fault, which the library's hid.
-                const std::string again = importer.GetErrorString();
-                if (again == std::bad_alloc().what()) throw std::bad_alloc();
-                return Error{file_message(file, failure_reason(again, {}))};
-            }
+            // If it fails still, the model's own fault, which the library's hid.
+            if (scene = read(why); !scene)
+                return Error{file_message(file, failure_reason(why, {}))};
             std::vector<std::string> names;
             for (const std::filesystem::path& library : opened)
                 names.push_back(library_name(library));
