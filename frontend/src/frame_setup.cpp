@@ -4,6 +4,9 @@
 #include "jtracer/scene_file.hpp"
 #include "jtracer/validate.hpp"
 
+#include <string_view>
+#include <vector>
+
 namespace jt::frontend {
 
 namespace {
@@ -99,7 +102,11 @@ FrameSetup set_up_loaded(std::string_view program, const RenderFlags& flags, Loa
         check_scene(loaded, {.locate_warnings = !flags.quiet,
                              .validation = {.run_chunks = parallel_chunks(flags.threads),
                                             .primitives_as_parsed = as_parsed}});
-    name_setting_flags(diagnostics, flags.names);
+    std::vector<std::string_view> passed;
+    if (flags.width) passed.push_back("width");
+    if (flags.height) passed.push_back("height");
+    if (flags.samples) passed.push_back("samples");
+    name_setting_flags(diagnostics, flags.names, passed);
     const bool errors = has_errors(diagnostics);
     if (flags.quiet && !errors) diagnostics.clear();  // quiet drops warnings, never errors
     setup.message = format_diagnostics(diagnostics, loaded);

@@ -360,6 +360,11 @@ TEST_F(Cli, ALensWithOneSampleWarnsUnlessSamplesArePassed) {
         << r.err;
     EXPECT_NE(r.err.find("set 'samples' to 16 or more or pass --samples"), std::string::npos)
         << r.err;
+    // --samples 1 is what the warning is about: it does not suggest the flag.
+    r = run("--progress none lens.jts -o out.bmp --samples 1");
+    EXPECT_EQ(r.code, 0) << r.err;
+    EXPECT_NE(r.err.find("set 'samples' to 16 or more"), std::string::npos) << r.err;
+    EXPECT_EQ(r.err.find("pass --samples"), std::string::npos) << r.err;
     r = run("--progress none lens.jts -o out.bmp --samples 4");
     EXPECT_EQ(r.code, 0) << r.err;
     EXPECT_EQ(r.err.find("aperture"), std::string::npos) << r.err;

@@ -33,8 +33,8 @@ Model read_ok(const fs::path& file) {
     return model ? *model : Model{};
 }
 
-std::string read_error(const fs::path& file, const fs::path& folder) {
-    Expected<Model> model = read_model(file, folder);
+std::string read_error(const fs::path& file, const fs::path& folder, bool file_materials = false) {
+    Expected<Model> model = read_model(file, folder, file_materials);
     return model ? "(it loaded)" : model.error().message;
 }
 
@@ -420,19 +420,41 @@ TEST(ModelFile, ReaderFailuresNameTheirCause) {
 
     // A bad number in an OBJ's material library is located there, not at
     // the first place its text occurs in the model ('x' inside "usemtl tex");
-    // a number missing at a line's end names the library too.
+    // a number missing at a line's end names the library too. Only the
+    // file's materials need the library: with the scene's the model loads
+    // without it, and the fault is a warning.
     write_file(dir.path() / "lib.obj",
                "mtllib lib.mtl\nv 0 0 0\nv 1 0 0\nv 0 1 0\nusemtl tex\nf 1 2 3\n");
     write_file(dir.path() / "lib.mtl", "newmtl tex\nKd 1 0.2 x\n");
-    EXPECT_EQ(read_error(dir.path() / "lib.obj", dir.path()),
+    EXPECT_EQ(read_error(dir.path() / "lib.obj", dir.path(), true),
               "'" + (dir.path() / "lib.obj").string() +
                   "': its material library 'lib.mtl', line 2, column 10 (byte 20): a number was "
                   "expected, not 'x'");
+    Expected<Model> scene_materials = read_model(dir.path() / "lib.obj", dir.path());
+    ASSERT_TRUE(scene_materials.has_value()) << scene_materials.error().message;
+    EXPECT_EQ(scene_materials->triangles.size(), 1u);
+    EXPECT_EQ(model_warnings(*scene_materials),
+              std::vector<std::string>{
+                  "refers to the material library 'lib.mtl', which cannot be read (line 2, "
+                  "column 10 (byte 20): a number was expected, not 'x'): that file is left out"});
     write_file(dir.path() / "lib.mtl", "newmtl tex\nKd 1 0.2\n");
-    EXPECT_EQ(read_error(dir.path() / "lib.obj", dir.path()),
+    EXPECT_EQ(read_error(dir.path() / "lib.obj", dir.path(), true),
               "'" + (dir.path() / "lib.obj").string() +
                   "': a line of the file or of its material library 'lib.mtl' ends where a "
                   "number was expected");
+    scene_materials = read_model(dir.path() / "lib.obj", dir.path());
+    ASSERT_TRUE(scene_materials.has_value()) << scene_materials.error().message;
+    EXPECT_EQ(scene_materials->triangles.size(), 1u);
+    EXPECT_EQ(model_warnings(*scene_materials),
+              std::vector<std::string>{
+                  "refers to the material library 'lib.mtl', which cannot be read (a line of it "
+                  "ends where a number was expected): that file is left out"});
+    // A fault of the model itself stays an error with the scene's materials,
+    // and is the one reported, not the library's before it.
+    write_file(dir.path() / "lib.obj",
+               "mtllib lib.mtl\nv 0 0 0\nv 1 0 0\nv 0 1 0\nusemtl tex\nf 1 2 4\n");
+    EXPECT_NE(read_error(dir.path() / "lib.obj", dir.path()).find("vertex index out of range"),
+              std::string::npos);
 
     // Assimp's Collada reader does not skip the spaces before a number
     // ("<color>  0.0 0.0 0.0 1.0  </color>"): the message says so, rather than

@@ -72,6 +72,7 @@ bool ConfinedIOSystem::allowed(const char* file) const {
 }
 
 bool ConfinedIOSystem::Exists(const char* file) const {
+    if (leave_out_libraries_ && material_library(file)) return false;
     return allowed(file) && DefaultIOSystem::Exists(resolved(file).c_str());
 }
 
@@ -86,6 +87,7 @@ Assimp::IOStream* ConfinedIOSystem::Open(const char* file, const char* mode) {
     // Reading only: a model never writes.
     if (std::string(mode).find_first_of("wa+") != std::string::npos) return nullptr;
     const bool library = material_library(file);
+    if (library && leave_out_libraries_) return nullptr;
     const std::string refused_before = refusal_;
     const std::filesystem::path path = resolved(file);
     Assimp::IOStream* stream = allowed(file) ? DefaultIOSystem::Open(path.c_str(), mode) : nullptr;

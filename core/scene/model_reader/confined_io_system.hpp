@@ -22,6 +22,11 @@ class ConfinedIOSystem : public Assimp::DefaultIOSystem {
     // model file, whose folder relative names are taken from.
     ConfinedIOSystem(std::filesystem::path folder, const std::filesystem::path& model);
 
+    // Material libraries (.mtl) are then never opened, nor a refusal kept:
+    // for reading again a model whose library broke the import while its
+    // materials are not wanted.
+    void leave_out_libraries() { leave_out_libraries_ = true; }
+
     bool Exists(const char* file) const override;
     Assimp::IOStream* Open(const char* file, const char* mode = "rb") override;
 
@@ -55,6 +60,7 @@ class ConfinedIOSystem : public Assimp::DefaultIOSystem {
     mutable std::string refusal_;   // Exists is const in Assimp's interface
     std::vector<std::filesystem::path> libraries_;
     std::string library_failure_;
+    bool leave_out_libraries_ = false;
 };
 
 }  // namespace jt
