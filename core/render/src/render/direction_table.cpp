@@ -221,16 +221,6 @@ FaceWindow window_over(double u_low, double u_high, double v_low, double v_high,
         u_low, u_high, v_low, v_high, resolution / (u_high - u_low), resolution / (v_high - v_low)};
 }
 
-// The copy a list keeps of what a shadow ray's test of `listed` reads first.
-ListedSphere listed_sphere(const Geometry& geometry, std::uint32_t listed) {
-    if (!(listed & shape_flag)) {
-        const WorldSphere& s = geometry.spheres[listed];
-        return {s.center, s.radius};
-    }
-    const TransformedShape& s = geometry.shapes[listed & ~shape_flag];
-    return {s.bounding_center, s.bounding_radius_sq};
-}
-
 }  // namespace
 
 DirectionTable build_direction_table(const Geometry& geometry, const Vec3& position,
@@ -358,12 +348,10 @@ DirectionTable build_direction_table(const Geometry& geometry, const Vec3& posit
     std::vector<std::uint32_t> fill(table.cell_start.begin(), table.cell_start.end() - 1);
     table.shapes.resize(listed.load());
     table.nearest.resize(listed.load());
-    table.spheres.resize(listed.load());
     for (const std::vector<Listing>& pairs : runs)
         for (const Listing& p : pairs) {
             const std::uint32_t at = fill[p.cell]++;
             table.shapes[at] = p.candidate;
-            table.spheres[at] = listed_sphere(geometry, p.candidate);
             table.nearest[at] =
                 listed_nearest_of[p.candidate & shape_flag ? spheres + (p.candidate & ~shape_flag)
                                                            : p.candidate];

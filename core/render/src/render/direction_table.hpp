@@ -42,7 +42,6 @@ struct DirectionTable {
     std::vector<std::uint32_t> cell_start;  // 6 * resolution^2 + 1 offsets into `shapes`
     std::vector<std::uint32_t> shapes;      // each cell's nearest first
     std::vector<ListedDistance> nearest;    // parallel to `shapes`: see ListedShapes
-    std::vector<ListedSphere> spheres;      // parallel to `shapes`: see ListedShapes
 };
 
 // Cells along a cube face's edge for a table of `shapes` shapes.
@@ -87,8 +86,7 @@ inline std::optional<ListedShapes> shapes_toward(const DirectionTable& table,
     const std::size_t first = table.cell_start[cell];
     const std::size_t count = table.cell_start[cell + 1] - first;
     return ListedShapes{std::span(table.shapes).subspan(first, count),
-                        std::span(table.nearest).subspan(first, count), false, nullptr,
-                        std::span(table.spheres).subspan(first, count)};
+                        std::span(table.nearest).subspan(first, count)};
 }
 
 // One table a light, parallel to `lights`; none when no table pays.

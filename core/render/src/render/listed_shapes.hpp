@@ -42,16 +42,6 @@ struct HitHint {
     std::uint32_t sphere = none;  // an index into Geometry::spheres
 };
 
-// A listed shape's copy of what a shadow ray's test reads first: a sphere's
-// centre and radius, or a shape's bounding sphere (its squared radius, as
-// misses_bounds takes it). Beside the list, a walk reads it in order instead
-// of the sphere or shape record it names, wherever in memory that lies; the
-// same doubles give the same answers.
-struct ListedSphere {
-    Vec3 center{0.0};
-    double extent = 0.0;  // a sphere's radius; a shape's bounding radius squared
-};
-
 // No point of shapes[i] is nearer the table's point than nearest[i], and
 // nearest never decreases along the list: a walk stops at the first shape that
 // lies beyond the hit it has (or beyond the light).
@@ -65,9 +55,6 @@ struct ListedShapes {
     // offers this hint's sphere first, and leaves it on the sphere met first
     // (closest_hit.cpp); other walks leave it alone.
     HitHint* hint = nullptr;
-    // Parallel to `shapes` where the list's table keeps the copies (light
-    // tables); empty where it does not.
-    std::span<const ListedSphere> spheres;
     std::size_t size() const { return shapes.size(); }
 };
 

@@ -94,23 +94,6 @@ void set_float_lane(Packet& packet, unsigned lane, const ShadowRay& r) {
            shape_distance(s, origin, direction, t_min, t_max, part) != no_hit;
 }
 
-// listed_blocks from the list's copy of the sphere, or of the shape's
-// bounding sphere: the same doubles and the same tests, without the sphere
-// record's load, or the shape record's for a shape whose bounds the ray
-// misses.
-[[gnu::always_inline]] inline bool copied_blocks(const Geometry& g, std::uint32_t listed,
-                                                 const ListedSphere& copy, const Vec3& origin,
-                                                 const Vec3& direction, double t_min,
-                                                 double t_max) {
-    if (!(listed & shape_flag))
-        return intersect_sphere<false>(origin, direction, copy.center, copy.extent, t_min, t_max) !=
-               no_hit;
-    CylinderPart part;
-    return !misses_bounds(copy.center, copy.extent, origin, direction) &&
-           shape_distance(g.shapes[listed & ~shape_flag], origin, direction, t_min, t_max, part) !=
-               no_hit;
-}
-
 OccluderHint hint_for(std::uint32_t listed) {
     return {listed & shape_flag ? OccluderHint::Set::shape : OccluderHint::Set::sphere,
             listed & ~shape_flag};
@@ -160,11 +143,8 @@ bool occluded_by_testing_all(const Geometry& g, const Vec3& origin, const Vec3& 
     // Most cells list nothing: no square root for those.
     if (listed.size() == 0) return false;
     const double reach = light_walk_reach(direction, t_max);
-    const bool copied = !listed.spheres.empty();
     for (std::size_t k = 0; k < listed.size() && listed.nearest[k] < reach; ++k) {
-        if (copied ? copied_blocks(g, listed.shapes[k], listed.spheres[k], origin, direction, t_min,
-                                   t_max)
-                   : listed_blocks(g, listed.shapes[k], origin, direction, t_min, t_max)) {
+        if (listed_blocks(g, listed.shapes[k], origin, direction, t_min, t_max)) {
             blocker = hint_for(listed.shapes[k]);
             return true;
         }

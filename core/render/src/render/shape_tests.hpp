@@ -23,15 +23,10 @@ inline double shape_distance(const TransformedShape& s, const Vec3& origin, cons
 
 // Whether the line through the ray misses the shape's bounding sphere (the
 // direction need not be unit length).
-inline bool misses_bounds(const Vec3& bounding_center, double bounding_radius_sq,
-                          const Vec3& origin, const Vec3& direction) {
-    Vec3 f = origin - bounding_center;
-    Vec3 perpendicular = f - (glm::dot(f, direction) / glm::dot(direction, direction)) * direction;
-    return glm::dot(perpendicular, perpendicular) > bounding_radius_sq;
-}
-
 inline bool misses_bounds(const TransformedShape& s, const Vec3& origin, const Vec3& direction) {
-    return misses_bounds(s.bounding_center, s.bounding_radius_sq, origin, direction);
+    Vec3 f = origin - s.bounding_center;
+    Vec3 perpendicular = f - (glm::dot(f, direction) / glm::dot(direction, direction)) * direction;
+    return glm::dot(perpendicular, perpendicular) > s.bounding_radius_sq;
 }
 
 }  // namespace jt
