@@ -11,8 +11,6 @@
 #include "jtracer/image_file.hpp"
 #include "jtracer/limits.hpp"
 
-#include <pybind11/stl/filesystem.h>
-
 #include <algorithm>
 #include <cmath>
 #include <cstring>
@@ -64,7 +62,7 @@ Image8 image_or_path(const py::object& value, const char* name) {
     if (py::isinstance<py::array>(value)) return from_array(value.cast<py::array>());
     if (py::isinstance<py::str>(value) || py::isinstance<py::bytes>(value) ||
         py::hasattr(value, "__fspath__"))
-        return read_or_raise(value.cast<std::filesystem::path>());
+        return read_or_raise(path_argument(value, name));
     throw py::type_error(std::string(name) +
                          ": an image (a uint8 array) or the path of a BMP or PNG file, not " +
                          py::str(py::type::of(value).attr("__name__")).cast<std::string>());
@@ -101,8 +99,8 @@ py::array_t<std::uint8_t> to_array(Image8&& image) {
 void bind_images(py::module_& m) {
     m.def(
         "read_image",
-        [](const std::filesystem::path& path) {
-            return to_array(read_or_raise(path, read_shown_image));
+        [](const py::object& path) {
+            return to_array(read_or_raise(path_argument(path, "path"), read_shown_image));
         },
         py::arg("path"),
         "Reads a BMP, PNG or JPEG (told apart by their first bytes) as a (height, width, 3) "
@@ -110,8 +108,13 @@ void bind_images(py::module_& m) {
         "its EXIF orientation. Raises OSError when it cannot.");
     m.def(
         "write_image",
-        [](const std::filesystem::path& path, const py::array& array) {
-            const Image8 image = from_array(array);
+        [](const py::object& path_object, const py::object& array) {
+            const std::filesystem::path path = path_argument(path_object, "path");
+            if (!py::isinstance<py::array>(array))
+                throw py::type_error(
+                    "image: a (height, width, 3) uint8 array, not " +
+                    py::str(py::type::of(array).attr("__name__")).cast<std::string>());
+            const Image8 image = from_array(array.cast<py::array>());
             // Encoding a large PNG takes a while.
             const Expected<void> written =
                 without_gil([&] { return write_image(path, image, format_from_extension(path)); });
@@ -153,9 +156,8 @@ void bind_images(py::module_& m) {
         });
     m.def(
         "diff",
-        [](const py::object& expected, const py::object& actual, int threshold) {
-            if (threshold < 0 || threshold > 255)
-                throw py::value_error("threshold: 0..255, not " + std::to_string(threshold));
+        [](const py::object& expected, const py::object& actual, const py::object& limit) {
+            const int threshold = int_argument(limit, "threshold", 0, 255);
             const Image8 a = image_or_path(expected, "expected");
             const Image8 b = image_or_path(actual, "actual");
             py::gil_scoped_release unlocked;

@@ -259,7 +259,7 @@ TEST(ModelFile, ZeroAreaTrianglesAreSkippedAndNoneLeftIsAnEmptyModel) {
 
 TEST(ModelFile, MissingAndMalformedFilesAreErrorsNamingTheFile) {
     ScratchDir dir;
-    EXPECT_NE(read_error(dir.path() / "none.obj", dir.path()).find("No such file"),
+    EXPECT_NE(read_error(dir.path() / "none.obj", dir.path()).find("none.obj': no such file"),
               std::string::npos);
     write_file(dir.path() / "broken.gltf", "{ \"asset\": { \"version\": ");
     const std::string broken = read_error(dir.path() / "broken.gltf", dir.path());

@@ -1,5 +1,6 @@
 #include "jtracer/scene_file.hpp"
 
+#include "io/file_bytes.hpp"
 #include "io/huge_pages.hpp"
 #include "io/text_give_back.hpp"
 #include "jtracer/validate.hpp"
@@ -19,19 +20,6 @@
 namespace jt {
 
 namespace {
-
-std::string describe_errno(int error) {
-    switch (error) {
-        case ENOENT:
-            return "no such file";
-        case EACCES:
-            return "permission denied";
-        case EISDIR:
-            return "it is a directory, not a file";
-        default:
-            return std::strerror(error);
-    }
-}
 
 // The whole file; `stamp`, when asked for, is the stamp of the file opened
 // (taken before reading it, so that a write during the read moves it).
@@ -68,7 +56,7 @@ Expected<std::string> read_text(const std::filesystem::path& path, std::uintmax_
     std::error_code ec;
     auto status = std::filesystem::status(path, ec);
     if (ec || !std::filesystem::exists(status))
-        return Error{"cannot read " + name + ": no such file"};
+        return Error{"cannot read " + name + ": " + read_failure_reason(ENOENT)};
     if (std::filesystem::is_directory(status))
         return Error{name + " is a directory, not a scene file"};
     std::uintmax_t known_size = 0;  // 0: unknown (or empty)
@@ -81,7 +69,7 @@ Expected<std::string> read_text(const std::filesystem::path& path, std::uintmax_
     }
     errno = 0;
     std::unique_ptr<std::FILE, int (*)(std::FILE*)> f(std::fopen(path.c_str(), "rb"), &std::fclose);
-    if (!f) return Error{"cannot read " + name + ": " + describe_errno(errno)};
+    if (!f) return Error{"cannot read " + name + ": " + read_failure_reason(errno)};
     // A device other than a terminal never ends (/dev/zero, /dev/urandom) or is
     // no text: it would be read up to the limit, a gigabyte, before failing. A
     // terminal ends where its user types the end of input.
@@ -112,7 +100,7 @@ Expected<std::string> read_text(const std::filesystem::path& path, std::uintmax_
     }
     if (std::ferror(f.get())) {
         int error = errno;
-        return Error{"cannot read " + name + ": " + describe_errno(error ? error : EIO)};
+        return Error{"cannot read " + name + ": " + read_failure_reason(error ? error : EIO)};
     }
     return text;
 }
