@@ -45,6 +45,11 @@ std::optional<std::string> file_clash(const Options& o, const std::string& outpu
                    heat_map + "): a render outside the tolerance would replace it";
     }
     if (o.junit) {
+        if (!output.empty() && (o.output_is_stdout || frontend::is_standard_output(output)) &&
+            frontend::is_standard_output(*o.junit))
+            return "--junit '" + *o.junit +
+                   "' is standard output, which already carries the image (-o -): name a file "
+                   "for the report";
         for (const auto& [what, path] :
              {std::pair<const char*, std::string>{"the scene file", o.scene_path},
               {"the image", output},
