@@ -434,6 +434,40 @@ TEST_F(Cli, IoErrorsExitThreeAndWriteNothing) {
     EXPECT_TRUE(outputs().empty());
 }
 
+// Symbolic links that loop are named, link by link, wherever the loop is: the
+// scene, a folder on its path, the output, an image map.
+TEST_F(Cli, ACycleOfSymbolicLinksIsNamedLinkByLink) {
+    fs::create_symlink("b.jts", dir / "a.jts");
+    fs::create_symlink("a.jts", dir / "b.jts");
+    test::ProgramRun r = run("a.jts -o out.bmp");
+    EXPECT_EQ(r.code, 3);
+    EXPECT_NE(r.err.find("cannot read 'a.jts': a cycle of symbolic links: 'a.jts' -> 'b.jts' -> "
+                         "'a.jts'"),
+              std::string::npos)
+        << r.err;
+    fs::create_symlink("up", dir / "down");
+    fs::create_symlink("down", dir / "up");
+    r = run("up/scene.jts -o out.bmp");
+    EXPECT_EQ(r.code, 3);
+    EXPECT_NE(r.err.find("a cycle of symbolic links: 'up' -> 'down' -> 'up'"), std::string::npos)
+        << r.err;
+    fs::create_symlink("twin.bmp", dir / "out.bmp");
+    fs::create_symlink("out.bmp", dir / "twin.bmp");
+    r = run("scene.jts -o out.bmp");
+    EXPECT_EQ(r.code, 3);
+    EXPECT_NE(r.err.find("cannot write 'out.bmp': a cycle of symbolic links: 'out.bmp' -> "
+                         "'twin.bmp' -> 'out.bmp'"),
+              std::string::npos)
+        << r.err;
+    write("mapped.jts", R"(
+render_settings { width: 8; height: 8; }
+scene { sphere { center: <0, 0, 0>; radius: 1; material { image_map: "twin.bmp"; } } }
+)");
+    r = run("mapped.jts -o mapped.bmp");
+    EXPECT_EQ(r.code, 1);
+    EXPECT_NE(r.err.find("'twin.bmp' -> 'out.bmp' -> 'twin.bmp'"), std::string::npos) << r.err;
+}
+
 // A picture named by the scene that is a device is an error at its string,
 // not a read that never ends.
 TEST_F(Cli, DeviceAsImageMapOrSkyIsAnErrorAtItsString) {

@@ -1,5 +1,6 @@
 #include "io/file_bytes.hpp"
 
+#include "io/link_cycle.hpp"
 #include "jtracer/bmp.hpp"
 
 #include <fcntl.h>
@@ -56,7 +57,7 @@ Expected<std::vector<std::uint8_t>> read_file_bytes(const std::filesystem::path&
     // O_NONBLOCK so that opening a named pipe does not wait for a writer that
     // may never come; reads block again below, once the file is open.
     FileDescriptor file(::open(path.c_str(), O_RDONLY | O_CLOEXEC | O_NONBLOCK));
-    if (file.get() < 0) return read_error(path, std::strerror(errno));
+    if (file.get() < 0) return read_error(path, open_failure_reason(path, errno));
     struct stat status {};
     if (::fstat(file.get(), &status) != 0) return read_error(path, std::strerror(errno));
     if (S_ISDIR(status.st_mode)) return read_error(path, std::strerror(EISDIR));

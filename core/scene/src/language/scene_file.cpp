@@ -1,6 +1,7 @@
 #include "jtracer/scene_file.hpp"
 
 #include "io/huge_pages.hpp"
+#include "io/link_cycle.hpp"
 #include "io/text_give_back.hpp"
 #include "jtracer/validate.hpp"
 #include "language/quote.hpp"
@@ -67,6 +68,8 @@ Expected<std::string> read_text(const std::filesystem::path& path, std::uintmax_
     const std::string name = lang::quote(path.string());
     std::error_code ec;
     auto status = std::filesystem::status(path, ec);
+    if (ec && ec == std::errc::too_many_symbolic_link_levels)
+        return Error{"cannot read " + name + ": " + open_failure_reason(path, ELOOP)};
     if (ec || !std::filesystem::exists(status))
         return Error{"cannot read " + name + ": no such file"};
     if (std::filesystem::is_directory(status))
@@ -81,7 +84,11 @@ Expected<std::string> read_text(const std::filesystem::path& path, std::uintmax_
     }
     errno = 0;
     std::unique_ptr<std::FILE, int (*)(std::FILE*)> f(std::fopen(path.c_str(), "rb"), &std::fclose);
-    if (!f) return Error{"cannot read " + name + ": " + describe_errno(errno)};
+    if (!f) {
+        const int error = errno;
+        return Error{"cannot read " + name + ": " +
+                     (error == ELOOP ? open_failure_reason(path, error) : describe_errno(error))};
+    }
     // A device other than a terminal never ends (/dev/zero, /dev/urandom) or is
     // no text: it would be read up to the limit, a gigabyte, before failing. A
     // terminal ends where its user types the end of input.
