@@ -302,11 +302,36 @@ void report_frame(const Options& o, const RankFrame& frame, int index,
               << ", " << ranks << (ranks == 1 ? " rank" : " ranks") << "\n";
 }
 
+// --check, on rank 0: each frame set up (read at its clock and validated) as
+// a render would set it up, and nothing more.
+int check_scene(const Options& o) {
+    if (!o.frames) {
+        const FrameSetup setup = jt::frontend::set_up_frame("jtracer-mpi", o);
+        std::cerr << setup.message;
+        if (setup.exit_code != exit_ok) return setup.exit_code;
+        if (!o.quiet) std::cerr << o.scene_path << ": no errors\n";
+        return exit_ok;
+    }
+    jt::frontend::SceneSequence sequence("jtracer-mpi", o);
+    const jt::frontend::FrameRange range = sequence.range();
+    for (int index = range.first; index <= range.last; ++index) {
+        const jt::frontend::SequenceFrame frame = sequence.frame(index, false);
+        std::cerr << frame.message;
+        if (frame.exit_code != exit_ok) return frame.exit_code;
+    }
+    if (!o.quiet)
+        std::cerr << o.scene_path << ": no errors in frames " << range.first << ".." << range.last
+                  << "\n";
+    return exit_ok;
+}
+
 int run(int argc, char** argv, int rank, int ranks) {
     const auto start = Clock::now();
     ParsedOptions parsed = parse_options(argc, argv, rank == 0);
     if (parsed.exit_code) return *parsed.exit_code;
     const Options& o = parsed.options;
+    // The other ranks have nothing to do: every rank would find the same.
+    if (o.check_only) return rank == 0 ? check_scene(o) : exit_ok;
     std::optional<jt::frontend::SceneSequence> sequence;
     if (o.frames) sequence.emplace("jtracer-mpi", o);
     jt::frontend::SceneSequence* frames = sequence ? &*sequence : nullptr;

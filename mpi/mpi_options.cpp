@@ -36,6 +36,7 @@ ParsedOptions parse_options(int argc, char** argv, bool speaks) {
         "  mpirun -np 4 jtracer-mpi scenes/showcase.jts -o shot.bmp --width 3840 --height 2160\n"
         "  mpirun --hostfile hosts -np 16 jtracer-mpi scene.jts --samples 16 --stats\n"
         "  mpirun -np 4 jtracer-mpi scenes/orbit.jts --frames 48 -o orbit-%04d.png\n"
+        "  mpirun -np 4 jtracer-mpi --check scene.jts      only checks the scene, on rank 0\n"
         "\n"
         "Every rank reads the scene file itself (it must be at the same path on every\n"
         "machine). Rank 0 hands out tiles on demand, renders tiles itself in between, and\n"
@@ -59,6 +60,9 @@ ParsedOptions parse_options(int argc, char** argv, bool speaks) {
                    "(default 10)")
         ->check(CLI::Range(2.0, 3600.0))
         ->type_name("SECONDS");
+    app.add_flag("--check", o.check_only,
+                 "Only parse and validate the scene (each frame's, with --frames), on rank 0; "
+                 "write nothing");
     app.add_flag("--skip-existing", o.skip_existing,
                  "Keep an image already there (on rank 0's machine) and complete instead of "
                  "rendering it again (with --frames, frame by frame): for rerunning a job after "
@@ -85,6 +89,9 @@ ParsedOptions parse_options(int argc, char** argv, bool speaks) {
                 if (o.output)
                     if (auto refused = frontend::output_refusal(*o.output))
                         throw CLI::ValidationError("-o/--output", *refused);
+                if (o.skip_existing && o.check_only)
+                    throw CLI::ValidationError("--skip-existing",
+                                               "not with --check, which writes nothing");
                 if (o.skip_existing)
                     if (std::optional<std::string> why = frontend::skip_existing_refusal(o))
                         throw CLI::ValidationError("--skip-existing", *why);

@@ -20,6 +20,9 @@ struct Options : frontend::RenderFlags {  // threads: per rank
     // Keep an image already there and complete instead of rendering it again
     // (jtracer/frontend/existing_output.hpp); rank 0 decides, on its machine.
     bool skip_existing = false;
+    // Only parse and validate the scene (every frame of --frames), on rank 0
+    // alone: nothing is rendered, so no rank need read the scene.
+    bool check_only = false;
 };
 
 struct ParsedOptions {

@@ -101,6 +101,28 @@ TEST_F(Mpi, BadSceneIsReportedOnceAndEveryRankFails) {
     EXPECT_TRUE(outputs().empty());
 }
 
+// --check, as jtracer-cli's: the scene validated (each frame's with --frames)
+// and reported once, nothing written; a bad scene exits 1.
+TEST_F(Mpi, CheckValidatesOnceAndWritesNothing) {
+    test::write_file(dir / "good.jts", kEightPixelScene);
+    ProgramRun r = run_shell(mpirun(3) + "--check good.jts -o out.bmp");
+    EXPECT_EQ(r.code, 0) << r.err;
+    EXPECT_EQ(count(r.err, "good.jts: no errors\n"), 1u) << r.err;
+    r = run_shell(mpirun(2) + "--check good.jts --frames 3");
+    EXPECT_EQ(r.code, 0) << r.err;
+    EXPECT_EQ(count(r.err, "good.jts: no errors in frames 0..2"), 1u) << r.err;
+    test::write_file(dir / "bad.jts", "scene { sphere { radius: -1; } }\n");
+    r = run_shell(mpirun(3) + "--check bad.jts -o out.bmp");
+    EXPECT_EQ(r.code, 1) << r.err;
+    EXPECT_EQ(count(r.err, "bad.jts:1:26: error: 'radius' must be greater than 0"), 1u) << r.err;
+    r = run_shell(mpirun(2) + "--check good.jts --skip-existing -o out.bmp");
+    EXPECT_EQ(r.code, 2) << r.err;
+    EXPECT_EQ(count(r.err, "--skip-existing: not with --check"), 1u) << r.err;
+    std::vector<std::string> left = outputs();
+    std::erase(left, "good.jts");
+    EXPECT_TRUE(left.empty()) << left.front();
+}
+
 // -o naming the scene file wrote the image over it, as jtracer-cli's did.
 TEST_F(Mpi, AnOutputThatIsTheSceneFileIsRefusedOnce) {
     const std::string text = kEightPixelScene;
