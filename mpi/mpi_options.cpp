@@ -37,6 +37,7 @@ ParsedOptions parse_options(int argc, char** argv, bool speaks) {
         "  mpirun --hostfile hosts -np 16 jtracer-mpi scene.jts --samples 16 --stats\n"
         "  mpirun -np 4 jtracer-mpi scenes/orbit.jts --frames 48 -o orbit-%04d.png\n"
         "  mpirun -np 4 jtracer-mpi --check scene.jts      only checks the scene, on rank 0\n"
+        "  mpirun -np 4 jtracer-mpi scene.jts --region 0,0,1920,540 --region-output -o top.bmp\n"
         "\n"
         "Every rank reads the scene file itself (it must be at the same path on every\n"
         "machine). Rank 0 hands out tiles on demand, renders tiles itself in between, and\n"
@@ -47,6 +48,7 @@ ParsedOptions parse_options(int argc, char** argv, bool speaks) {
         "a rank that dies or an interrupt aborts the whole job (non-zero, nothing written).\n");
     frontend::add_version_flag(app, "jtracer-mpi");
     frontend::add_render_flags(app, o);
+    frontend::add_region_flags(app, o);
     app.add_option("--tile-size", o.tile_size,
                    "Side of the square tiles handed out to the ranks, in pixels (default 128)")
         ->check(CLI::Range(16, 4096))
@@ -89,6 +91,12 @@ ParsedOptions parse_options(int argc, char** argv, bool speaks) {
                 if (o.output)
                     if (auto refused = frontend::output_refusal(*o.output))
                         throw CLI::ValidationError("-o/--output", *refused);
+                frontend::check_region_flags(o, o.output);
+                if (o.skip_existing && o.region && !o.region_output)
+                    throw CLI::ValidationError(
+                        "--skip-existing",
+                        "with --region, needs --region-output: a whole-frame image does not "
+                        "record which region it holds, a region file does");
                 if (o.skip_existing && o.check_only)
                     throw CLI::ValidationError("--skip-existing",
                                                "not with --check, which writes nothing");
