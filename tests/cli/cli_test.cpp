@@ -434,6 +434,25 @@ TEST_F(Cli, IoErrorsExitThreeAndWriteNothing) {
     EXPECT_TRUE(outputs().empty());
 }
 
+// A named pipe as the scene is read once something writes it; a read that
+// waits says what for, rather than looking hung. A writer that is there at
+// once goes unremarked.
+TEST_F(Cli, ASceneFromAPipeThatWaitsSaysWhatFor) {
+    ASSERT_EQ(run_shell("mkfifo pipe.jts").code, 0);
+    test::ProgramRun r =
+        run_shell("(sleep 2; cat scene.jts > pipe.jts) & '" JT_CLI "' -q pipe.jts -o out.bmp");
+    EXPECT_EQ(r.code, 0) << r.err;
+    EXPECT_NE(r.err.find("jtracer-cli: waiting for the scene from the pipe 'pipe.jts': it is "
+                         "read once something writes it and closes it"),
+              std::string::npos)
+        << r.err;
+    EXPECT_TRUE(exists("out.bmp"));
+    r = run_shell("cat scene.jts | '" JT_CLI "' -q /dev/stdin -o piped.bmp");
+    EXPECT_EQ(r.code, 0) << r.err;
+    EXPECT_EQ(r.err, "");
+    EXPECT_EQ(test::read_file(dir / "piped.bmp"), test::read_file(dir / "out.bmp"));
+}
+
 // Symbolic links that loop are named, link by link, wherever the loop is: the
 // scene, a folder on its path, the output, an image map.
 TEST_F(Cli, ACycleOfSymbolicLinksIsNamedLinkByLink) {
