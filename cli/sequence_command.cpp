@@ -104,8 +104,7 @@ int run_sequence(const Options& o) {
         }
         const Expected<void> written =
             o.region_output ? write_region_bmp(frame.output, job.region_image(),
-                                               {frame.render.width, frame.render.height, *o.region,
-                                                frame.fingerprint})
+                                               region_placement(o, frame.render, frame.fingerprint))
                             : write_image(frame.output, job.take_image(), frame.format);
         display.finish();
         if (!written) {

@@ -7,6 +7,7 @@
 
 #include <fcntl.h>
 #include <signal.h>
+#include <sys/stat.h>
 #include <unistd.h>
 
 #include <atomic>
@@ -74,6 +75,17 @@ bool same_file(const std::filesystem::path& a, const std::filesystem::path& b) {
     if (error) return false;
     const std::filesystem::path place_b = std::filesystem::weakly_canonical(b, error);
     return !error && place_a == place_b;
+}
+
+bool is_standard_output(const std::filesystem::path& path) {
+    struct stat named {};
+    struct stat out {};
+    if (::stat(path.c_str(), &named) != 0 || ::fstat(STDOUT_FILENO, &out) != 0) return false;
+    if (named.st_dev != out.st_dev || named.st_ino != out.st_ino) return false;
+    // Whatever reaches /dev/null is gone: nothing there to mix.
+    struct stat null {};
+    return !(S_ISCHR(named.st_mode) && ::stat("/dev/null", &null) == 0 &&
+             named.st_rdev == null.st_rdev);
 }
 
 std::optional<std::string> output_refusal(const std::string& output) {

@@ -1,5 +1,6 @@
 #include "jtracer/frontend/frame_setup.hpp"
 
+#include "jtracer/frontend/pipe_wait_notice.hpp"
 #include "jtracer/parallel_chunks.hpp"
 #include "jtracer/scene_file.hpp"
 #include "jtracer/validate.hpp"
@@ -52,8 +53,11 @@ FrameSetup set_up_frame(std::string_view program, const RenderFlags& flags,
                         const std::optional<FrameRegion>& region) {
     // Without the source map: check_scene builds it only if there is something to
     // locate. A render needs the scene, not the text: a large one is given back.
-    Expected<LoadedScene> read = load_scene_file(flags.scene_path, parse_options_for(flags),
-                                                 TextKeeping::given_back_when_large);
+    Expected<LoadedScene> read = [&] {
+        const PipeWaitNotice notice(program, flags.scene_path);
+        return load_scene_file(flags.scene_path, parse_options_for(flags),
+                               TextKeeping::given_back_when_large);
+    }();
     if (!read) {
         FrameSetup setup;
         setup.exit_code = exit_io_error;

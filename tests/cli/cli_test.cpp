@@ -439,6 +439,59 @@ TEST_F(Cli, IoErrorsExitThreeAndWriteNothing) {
     EXPECT_TRUE(outputs().empty());
 }
 
+// A named pipe as the scene is read once something writes it; a read that
+// waits says what for, rather than looking hung. A writer that is there at
+// once goes unremarked.
+TEST_F(Cli, ASceneFromAPipeThatWaitsSaysWhatFor) {
+    ASSERT_EQ(run_shell("mkfifo pipe.jts").code, 0);
+    test::ProgramRun r =
+        run_shell("(sleep 2; cat scene.jts > pipe.jts) & '" JT_CLI "' -q pipe.jts -o out.bmp");
+    EXPECT_EQ(r.code, 0) << r.err;
+    EXPECT_NE(r.err.find("jtracer-cli: waiting for the scene from the pipe 'pipe.jts': it is "
+                         "read once something writes it and closes it"),
+              std::string::npos)
+        << r.err;
+    EXPECT_TRUE(exists("out.bmp"));
+    r = run_shell("cat scene.jts | '" JT_CLI "' -q /dev/stdin -o piped.bmp");
+    EXPECT_EQ(r.code, 0) << r.err;
+    EXPECT_EQ(r.err, "");
+    EXPECT_EQ(test::read_file(dir / "piped.bmp"), test::read_file(dir / "out.bmp"));
+}
+
+// Symbolic links that loop are named, link by link, wherever the loop is: the
+// scene, a folder on its path, the output, an image map.
+TEST_F(Cli, ACycleOfSymbolicLinksIsNamedLinkByLink) {
+    fs::create_symlink("b.jts", dir / "a.jts");
+    fs::create_symlink("a.jts", dir / "b.jts");
+    test::ProgramRun r = run("a.jts -o out.bmp");
+    EXPECT_EQ(r.code, 3);
+    EXPECT_NE(r.err.find("cannot read 'a.jts': a cycle of symbolic links: 'a.jts' -> 'b.jts' -> "
+                         "'a.jts'"),
+              std::string::npos)
+        << r.err;
+    fs::create_symlink("up", dir / "down");
+    fs::create_symlink("down", dir / "up");
+    r = run("up/scene.jts -o out.bmp");
+    EXPECT_EQ(r.code, 3);
+    EXPECT_NE(r.err.find("a cycle of symbolic links: 'up' -> 'down' -> 'up'"), std::string::npos)
+        << r.err;
+    fs::create_symlink("twin.bmp", dir / "out.bmp");
+    fs::create_symlink("out.bmp", dir / "twin.bmp");
+    r = run("scene.jts -o out.bmp");
+    EXPECT_EQ(r.code, 3);
+    EXPECT_NE(r.err.find("cannot write 'out.bmp': a cycle of symbolic links: 'out.bmp' -> "
+                         "'twin.bmp' -> 'out.bmp'"),
+              std::string::npos)
+        << r.err;
+    write("mapped.jts", R"(
+render_settings { width: 8; height: 8; }
+scene { sphere { center: <0, 0, 0>; radius: 1; material { image_map: "twin.bmp"; } } }
+)");
+    r = run("mapped.jts -o mapped.bmp");
+    EXPECT_EQ(r.code, 1);
+    EXPECT_NE(r.err.find("'twin.bmp' -> 'out.bmp' -> 'twin.bmp'"), std::string::npos) << r.err;
+}
+
 // A picture named by the scene that is a device is an error at its string,
 // not a read that never ends.
 TEST_F(Cli, DeviceAsImageMapOrSkyIsAnErrorAtItsString) {

@@ -101,6 +101,68 @@ TEST_F(Mpi, BadSceneIsReportedOnceAndEveryRankFails) {
     EXPECT_TRUE(outputs().empty());
 }
 
+// --check, as jtracer-cli's: the scene validated (each frame's with --frames)
+// and reported once, nothing written; a bad scene exits 1.
+TEST_F(Mpi, CheckValidatesOnceAndWritesNothing) {
+    test::write_file(dir / "good.jts", kEightPixelScene);
+    ProgramRun r = run_shell(mpirun(3) + "--check good.jts -o out.bmp");
+    EXPECT_EQ(r.code, 0) << r.err;
+    EXPECT_EQ(count(r.err, "good.jts: no errors\n"), 1u) << r.err;
+    r = run_shell(mpirun(2) + "--check good.jts --frames 3");
+    EXPECT_EQ(r.code, 0) << r.err;
+    EXPECT_EQ(count(r.err, "good.jts: no errors in frames 0..2"), 1u) << r.err;
+    test::write_file(dir / "bad.jts", "scene { sphere { radius: -1; } }\n");
+    r = run_shell(mpirun(3) + "--check bad.jts -o out.bmp");
+    EXPECT_EQ(r.code, 1) << r.err;
+    EXPECT_EQ(count(r.err, "bad.jts:1:26: error: 'radius' must be greater than 0"), 1u) << r.err;
+    r = run_shell(mpirun(2) + "--check good.jts --skip-existing -o out.bmp");
+    EXPECT_EQ(r.code, 2) << r.err;
+    EXPECT_EQ(count(r.err, "--skip-existing: not with --check"), 1u) << r.err;
+    std::vector<std::string> left = outputs();
+    std::erase(left, "good.jts");
+    EXPECT_TRUE(left.empty()) << left.front();
+}
+
+// --region and --region-output, as jtracer-cli's: the same bytes for the
+// window (alone, or in a black frame), a part jtracer-merge joins to a part
+// jtracer-cli rendered, and --skip-existing keeping a part of the same render.
+TEST_F(Mpi, ARegionIsRenderedAsTheCliRendersIt) {
+    const std::string frame = "--width 96 --height 64 -q ";
+    ASSERT_EQ(run_shell(cli + showcase + frame + "-o full.bmp").code, 0);
+    ASSERT_EQ(run_shell(cli + showcase + frame + "--region 10,20,70,64 -o cli_window.bmp").code, 0);
+    ASSERT_EQ(
+        run_shell(cli + showcase + frame + "--region 0,20,96,64 --region-output -o bottom.bmp")
+            .code,
+        0);
+    ASSERT_EQ(
+        run_shell(cli + showcase + frame + "--region 0,0,96,20 --region-output -o cli_top.bmp")
+            .code,
+        0);
+    ProgramRun r = run_shell(mpirun(3) + showcase + frame +
+                             "--tile-size 16 --region 10,20,70,64 -o mpi_window.bmp");
+    ASSERT_EQ(r.code, 0) << r.err;
+    EXPECT_EQ(test::read_file(dir / "mpi_window.bmp"), test::read_file(dir / "cli_window.bmp"));
+    r = run_shell(mpirun(3) + showcase + frame +
+                  "--tile-size 16 --region 0,0,96,20 --region-output -o top.bmp");
+    ASSERT_EQ(r.code, 0) << r.err;
+    EXPECT_EQ(test::read_file(dir / "top.bmp"), test::read_file(dir / "cli_top.bmp"));
+    r = run_shell("'" JT_MERGE "' -q -o merged.bmp top.bmp bottom.bmp");
+    ASSERT_EQ(r.code, 0) << r.err;
+    EXPECT_EQ(test::read_file(dir / "merged.bmp"), test::read_file(dir / "full.bmp"));
+    r = run_shell(mpirun(2) + showcase + "--width 96 --height 64 --region 0,0,96,20 " +
+                  "--region-output --skip-existing -o top.bmp");
+    EXPECT_EQ(r.code, 0) << r.err;
+    EXPECT_EQ(count(r.err, "kept top.bmp: already there and complete"), 1u) << r.err;
+    // The rules of jtracer-cli, said once.
+    r = run_shell(mpirun(2) + showcase + frame + "--region-output -o part.bmp");
+    EXPECT_EQ(r.code, 2) << r.err;
+    EXPECT_EQ(count(r.err, "--region-output: needs --region"), 1u) << r.err;
+    r = run_shell(mpirun(2) + showcase + frame + "--region 0,0,96,90 -o part.bmp");
+    EXPECT_EQ(r.code, 2) << r.err;
+    EXPECT_EQ(count(r.err, "--region: region 0,0,96,90 reaches past the bottom edge"), 1u) << r.err;
+    EXPECT_FALSE(exists("part.bmp"));
+}
+
 // -o naming the scene file wrote the image over it, as jtracer-cli's did.
 TEST_F(Mpi, AnOutputThatIsTheSceneFileIsRefusedOnce) {
     const std::string text = kEightPixelScene;

@@ -450,7 +450,7 @@ Expected<Model> import_model(const std::filesystem::path& file, const std::files
     std::error_code error;
     const auto status = std::filesystem::status(file, error);
     if (error || !std::filesystem::exists(status))
-        return Error{"cannot read " + file_message(file, read_failure_reason(ENOENT))};
+        return Error{"cannot read " + file_message(file, read_failure_reason(file, ENOENT))};
     if (!std::filesystem::is_regular_file(status))
         return Error{"cannot read " + file_message(file, "not a regular file")};
     const std::uintmax_t size = std::filesystem::file_size(file, error);

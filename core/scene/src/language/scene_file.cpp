@@ -2,6 +2,7 @@
 
 #include "io/file_bytes.hpp"
 #include "io/huge_pages.hpp"
+#include "io/link_cycle.hpp"
 #include "io/text_give_back.hpp"
 #include "jtracer/validate.hpp"
 #include "language/quote.hpp"
@@ -55,8 +56,10 @@ Expected<std::string> read_text(const std::filesystem::path& path, std::uintmax_
     const std::string name = lang::quote(path.string());
     std::error_code ec;
     auto status = std::filesystem::status(path, ec);
+    if (ec && ec == std::errc::too_many_symbolic_link_levels)
+        return Error{"cannot read " + name + ": " + read_failure_reason(path, ELOOP)};
     if (ec || !std::filesystem::exists(status))
-        return Error{"cannot read " + name + ": " + read_failure_reason(ENOENT)};
+        return Error{"cannot read " + name + ": " + read_failure_reason(path, ENOENT)};
     if (std::filesystem::is_directory(status))
         return Error{name + " is a directory, not a scene file"};
     std::uintmax_t known_size = 0;  // 0: unknown (or empty)
@@ -69,7 +72,7 @@ Expected<std::string> read_text(const std::filesystem::path& path, std::uintmax_
     }
     errno = 0;
     std::unique_ptr<std::FILE, int (*)(std::FILE*)> f(std::fopen(path.c_str(), "rb"), &std::fclose);
-    if (!f) return Error{"cannot read " + name + ": " + read_failure_reason(errno)};
+    if (!f) return Error{"cannot read " + name + ": " + read_failure_reason(path, errno)};
     // A device other than a terminal never ends (/dev/zero, /dev/urandom) or is
     // no text: it would be read up to the limit, a gigabyte, before failing. A
     // terminal ends where its user types the end of input.
@@ -100,7 +103,7 @@ Expected<std::string> read_text(const std::filesystem::path& path, std::uintmax_
     }
     if (std::ferror(f.get())) {
         int error = errno;
-        return Error{"cannot read " + name + ": " + read_failure_reason(error ? error : EIO)};
+        return Error{"cannot read " + name + ": " + read_failure_reason(path, error ? error : EIO)};
     }
     return text;
 }
