@@ -122,7 +122,7 @@ void file_panel(AppState& state) {
                state.history.undo.can_undo() ? "" : "Nothing to undo"))
         undo(state);
     same_line_if_fits("Redo");
-    if (button("Redo", "Redo the edit undone last (Ctrl+Shift+Z)",
+    if (button("Redo", "Redo the edit undone last (Ctrl+Shift+Z or Ctrl+Y)",
                state.history.undo.can_redo() ? "" : "Nothing to redo"))
         redo(state);
     if (document_is_blank(state.doc) &&
