@@ -363,12 +363,15 @@ TEST_F(ObjectDragTest, AComputedTranslateOrPositionIsNeverChangedByADrag) {
     replace("        radius: 1;\n",
             "        radius: 1;\n        transform { translate: <d * 2, 0, 0>; }\n");
     replace("point_light { position: <3, 5, 4>;", "point_light { position: lp;");
-    write_file(path, named);
-    open_scene(state, path);
-    ASSERT_TRUE(state.doc.loaded) << format_diagnostics(state.doc);
-    ASSERT_TRUE(model.run_until_complete(state));
-    frame = shown_frame(state);
-    ASSERT_TRUE(frame);
+    const auto open_named = [&] {
+        write_file(path, named);
+        open_scene(state, path);
+        ASSERT_TRUE(state.doc.loaded) << format_diagnostics(state.doc);
+        ASSERT_TRUE(model.run_until_complete(state));
+        frame = shown_frame(state);
+        ASSERT_TRUE(frame);
+    };
+    ASSERT_NO_FATAL_FAILURE(open_named());
 
     select(state.view, {Kind::primitive, 1});
     drag_to({press.x + 10, press.y});
@@ -396,12 +399,7 @@ TEST_F(ObjectDragTest, AComputedTranslateOrPositionIsNeverChangedByADrag) {
 
     // A position computed from an expression says so; there is no name to change.
     replace("point_light { position: lp;", "point_light { position: lp * 1;");
-    write_file(path, named);
-    open_scene(state, path);
-    ASSERT_TRUE(state.doc.loaded) << format_diagnostics(state.doc);
-    ASSERT_TRUE(model.run_until_complete(state));
-    frame = shown_frame(state);
-    ASSERT_TRUE(frame);
+    ASSERT_NO_FATAL_FAILURE(open_named());
     select(state.view, {Kind::light, 0});
     EXPECT_FALSE(start_object_drag(state, *marker, 0.0));
     EXPECT_EQ(state.message,

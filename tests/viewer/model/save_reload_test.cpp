@@ -594,6 +594,17 @@ TEST(ViewerSaveAs, ACopyInAnotherFolderMustReadTheSameFiles) {
     EXPECT_TRUE(parse_scene(read_file(plain)).scene == state.doc.scene);
 }
 
+// The working folder is `folder` while this lives, then the one before.
+struct InFolder {
+    explicit InFolder(const fs::path& folder) : back(fs::current_path()) {
+        fs::current_path(folder);
+    }
+    ~InFolder() { fs::current_path(back); }
+    InFolder(const InFolder&) = delete;
+    InFolder& operator=(const InFolder&) = delete;
+    fs::path back;
+};
+
 // Found in the window: "copy.jts" typed into Save scene as, for the split
 // scene (which includes parts/), was refused with "save the copy in that
 // folder": the name was read against the folder the viewer was started
@@ -628,11 +639,7 @@ TEST(ViewerSaveAs, ARelativeNameIsAFileBesideTheScene) {
 
     // A scene opened by a relative path: the name is read against its folder
     // once, also when it is confirmed.
-    struct Back {
-        fs::path to;
-        ~Back() { fs::current_path(to); }
-    } back{started_in};
-    fs::current_path(dir.path());
+    const InFolder in_dir(dir.path());
     AppState relative{test_config()};
     open_scene(relative, "split/main.jts");
     ASSERT_TRUE(model.run_until_loaded(relative));
@@ -668,11 +675,7 @@ TEST(ViewerOpenField, ARelativeNameIsAFileBesideTheScene) {
     EXPECT_TRUE(state.doc.loaded) << state.message;
     EXPECT_EQ(fs::weakly_canonical(state.doc.path), fs::weakly_canonical(other)) << state.message;
 
-    struct Back {
-        fs::path to;
-        ~Back() { fs::current_path(to); }
-    } back{started_in};
-    fs::current_path(dir.path());
+    const InFolder in_dir(dir.path());
     AppState relative{test_config()};
     open_scene(relative, "split/main.jts");
     ASSERT_TRUE(model.run_until_loaded(relative));
