@@ -76,7 +76,9 @@ void scene_camera_editor(AppState& state, int selected) {
         command = [&state, index] { duplicate_block(state, {BlockKind::camera, index}); };
     same_line_if_fits("Delete");
     if (button("Delete", "Remove this camera's block from the text",
-               !included.empty()          ? included
+               // A const char* on each branch: a std::string one would build a
+               // string of the message every frame.
+               !included.empty()          ? included.c_str()
                : scene.cameras.size() < 2 ? "The only camera: every render needs one"
                                           : ""))
         command = [&state, index] { delete_block(state, {BlockKind::camera, index}); };
