@@ -141,3 +141,22 @@ def test_defines_and_clock_take_any_mapping_and_number():
         clock=numpy.float32(0.5),
     )
     assert scene.settings.width == 8
+
+
+@pytest.mark.parametrize(
+    "call, message",
+    [
+        (lambda p: jtracer.write_image(p, PIXELS.astype(np.int64)),
+         "^image: a uint8 array, not int64$"),
+        (lambda p: jtracer.write_image(p, PIXELS[:, :, 0]),
+         r"^image: an array of shape \(height, width, 3\), not \(2, 2\)$"),
+        (lambda p: jtracer.diff(PIXELS, np.zeros((0, 2, 3), np.uint8)),
+         "^actual: 1..65535 pixels on each side, not 2x0$"),
+        (lambda p: jtracer.diff(PIXELS.astype(np.float32), PIXELS),
+         "^expected: a uint8 array, not float32$"),
+    ],
+    ids=["write_image dtype", "write_image shape", "diff size", "diff dtype"],
+)
+def test_an_array_that_is_no_image_names_its_argument(tmp_path, call, message):
+    with pytest.raises((TypeError, ValueError), match=message):
+        call(tmp_path / "a.png")
