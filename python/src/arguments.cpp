@@ -85,6 +85,31 @@ std::optional<int> optional_int_argument(const py::handle& value, const std::str
     return int_argument(value, name, low, high);
 }
 
+double number_argument(const py::handle& value, const std::string& name) {
+    // A str or a bool converts to a float too ("2", True), but is no number
+    // the user meant.
+    if (py::isinstance<py::bool_>(value) || py::isinstance<py::str>(value) ||
+        py::isinstance<py::bytes>(value) ||
+        !(PyFloat_Check(value.ptr()) || PyIndex_Check(value.ptr()) ||
+          py::hasattr(value, "__float__")))
+        throw py::type_error(name + ": a number, not " + type_name(value));
+    const double number = PyFloat_AsDouble(value.ptr());
+    if (number == -1.0 && PyErr_Occurred()) {
+        if (!PyErr_ExceptionMatches(PyExc_OverflowError)) throw py::error_already_set();
+        PyErr_Clear();
+        throw py::value_error(name + ": a finite number, not one too large for a double");
+    }
+    return number;
+}
+
+std::optional<py::dict> optional_dict_argument(const py::handle& value, const std::string& name) {
+    if (value.is_none()) return std::nullopt;
+    if (py::isinstance<py::dict>(value)) return py::reinterpret_borrow<py::dict>(value);
+    const py::object mapping = py::module_::import("collections.abc").attr("Mapping");
+    if (py::isinstance(value, mapping)) return py::dict(py::reinterpret_borrow<py::object>(value));
+    throw py::type_error(name + ": a dict, not " + type_name(value));
+}
+
 std::optional<std::array<int, 4>> region_argument(const py::handle& value) {
     if (value.is_none()) return std::nullopt;
     if (py::isinstance<py::str>(value) || !py::isinstance<py::sequence>(value))

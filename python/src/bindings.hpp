@@ -67,6 +67,10 @@ std::optional<std::string> optional_text_argument(const py::handle& value, const
 int int_argument(const py::handle& value, const std::string& name, int low, int high);
 std::optional<int> optional_int_argument(const py::handle& value, const std::string& name, int low,
                                          int high);
+// A real number (an int or float, not a bool or str) as a double.
+double number_argument(const py::handle& value, const std::string& name);
+// None, or a dict (a copy of any other Mapping).
+std::optional<py::dict> optional_dict_argument(const py::handle& value, const std::string& name);
 // None, or four ints x0, y0, x1, y1, each 0..kMaxImageSide.
 std::optional<std::array<int, 4>> region_argument(const py::handle& value);
 

@@ -110,7 +110,9 @@ std::shared_ptr<PythonScene> checked_scene(LoadedScene loaded) {
 // (a vector), or a str holding the value as a file writes it ('"out.png"' for a
 // string, "2 * pi" for an expression). Raises TypeError or ValueError.
 // `clock` is --clock's value: any finite number (docs/language.md §15.4).
-ParseOptions options_with(const std::optional<py::dict>& defines, double clock) {
+ParseOptions options_with(const py::handle& defines_object, const py::handle& clock_object) {
+    const std::optional<py::dict> defines = optional_dict_argument(defines_object, "defines");
+    const double clock = number_argument(clock_object, "clock");
     ParseOptions options;
     options.source_map = false;
     if (!std::isfinite(clock))
@@ -236,11 +238,11 @@ void bind_scene(py::module_& m) {
 
     m.def(
         "load",
-        [](const py::object& path, std::optional<py::dict> defines, double clock) {
+        [](const py::object& path, const py::object& defines, const py::object& clock) {
             const ParseOptions options = options_with(defines, clock);
             return checked_scene(read_file(path_argument(path, "path"), options));
         },
-        py::arg("path"), py::arg("defines") = py::none(), py::arg("clock") = 0.0,
+        py::arg("path"), py::arg("defines") = py::none(), py::arg("clock") = py::float_(0.0),
         "Reads and checks a .jts file. Raises SceneError (with .diagnostics) when it has "
         "errors, OSError when it cannot be read. defines, a dict, sets names as "
         "jtracer-cli's --define NAME=VALUE does: a number, three numbers (a vector), or a "
@@ -250,8 +252,8 @@ void bind_scene(py::module_& m) {
         "--clock V (a finite number; default 0).");
     m.def(
         "parse",
-        [](const py::object& text_object, const py::object& path_object,
-           std::optional<py::dict> defines, double clock) {
+        [](const py::object& text_object, const py::object& path_object, const py::object& defines,
+           const py::object& clock) {
             std::string text = text_argument(text_object, "text");
             const std::filesystem::path path = path_argument(path_object, "path");
             const ParseOptions options = options_with(defines, clock);
@@ -269,7 +271,7 @@ void bind_scene(py::module_& m) {
             return checked_scene(std::move(*loaded));
         },
         py::arg("text"), py::arg("path") = "<string>", py::arg("defines") = py::none(),
-        py::arg("clock") = 0.0,
+        py::arg("clock") = py::float_(0.0),
         "Parses and checks .jts text. `path` names it in diagnostics, and its folder is "
         "where the scene's relative file names (includes, meshes, image maps) are found; "
         "the default, \"<string>\", looks in the current directory. defines and clock as for "
@@ -277,12 +279,12 @@ void bind_scene(py::module_& m) {
         "Raises SceneError.");
     m.def(
         "check",
-        [](const py::object& path, std::optional<py::dict> defines, double clock) {
+        [](const py::object& path, const py::object& defines, const py::object& clock) {
             const LoadedScene loaded =
                 read_file(path_argument(path, "path"), options_with(defines, clock));
             return diagnostic_list(findings(loaded), loaded);
         },
-        py::arg("path"), py::arg("defines") = py::none(), py::arg("clock") = 0.0,
+        py::arg("path"), py::arg("defines") = py::none(), py::arg("clock") = py::float_(0.0),
         "What `jtracer-cli --check` reports for a .jts file, errors and warnings, as a list "
         "of Diagnostic objects (empty: none); defines and clock as for load(). Raises "
         "OSError when it cannot be read.");

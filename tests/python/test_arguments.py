@@ -95,3 +95,68 @@ def test_a_bool_is_no_threshold():
 
 def test_sizes_of_other_int_types_are_taken(scene):
     assert scene.render(width=np.uint16(6), height=2).shape == (2, 6, 3)
+
+
+@pytest.mark.parametrize(
+    "call",
+    [
+        lambda: jtracer.load("a.jts", clock="a"),
+        lambda: jtracer.check("a.jts", clock=True),
+        lambda: jtracer.parse(SMALL, clock=None),
+    ],
+    ids=["load", "check", "parse"],
+)
+def test_a_clock_that_is_no_number_is_a_type_error(call):
+    with pytest.raises(TypeError, match="^clock: a number, not (str|bool|NoneType)$"):
+        call()
+
+
+def test_a_clock_too_large_for_a_double_is_a_value_error():
+    with pytest.raises(ValueError, match="^clock: a finite number"):
+        jtracer.parse(SMALL, clock=10**400)
+
+
+@pytest.mark.parametrize(
+    "call",
+    [
+        lambda: jtracer.load("a.jts", defines=[1]),
+        lambda: jtracer.check("a.jts", defines="a=1"),
+        lambda: jtracer.parse(SMALL, defines=[("a", 1)]),
+    ],
+    ids=["load", "check", "parse"],
+)
+def test_defines_that_are_no_dict_are_a_type_error(call):
+    with pytest.raises(TypeError, match="^defines: a dict, not (list|str)$"):
+        call()
+
+
+def test_defines_and_clock_take_any_mapping_and_number():
+    import types
+
+    import numpy
+
+    scene = jtracer.parse(
+        SMALL.replace("width: 8", "width: w"),
+        defines=types.MappingProxyType({"w": 8}),
+        clock=numpy.float32(0.5),
+    )
+    assert scene.settings.width == 8
+
+
+@pytest.mark.parametrize(
+    "call, message",
+    [
+        (lambda p: jtracer.write_image(p, PIXELS.astype(np.int64)),
+         "^image: a uint8 array, not int64$"),
+        (lambda p: jtracer.write_image(p, PIXELS[:, :, 0]),
+         r"^image: an array of shape \(height, width, 3\), not \(2, 2\)$"),
+        (lambda p: jtracer.diff(PIXELS, np.zeros((0, 2, 3), np.uint8)),
+         "^actual: 1..65535 pixels on each side, not 2x0$"),
+        (lambda p: jtracer.diff(PIXELS.astype(np.float32), PIXELS),
+         "^expected: a uint8 array, not float32$"),
+    ],
+    ids=["write_image dtype", "write_image shape", "diff size", "diff dtype"],
+)
+def test_an_array_that_is_no_image_names_its_argument(tmp_path, call, message):
+    with pytest.raises((TypeError, ValueError), match=message):
+        call(tmp_path / "a.png")
