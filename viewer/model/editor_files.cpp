@@ -136,8 +136,13 @@ void set_included_text(EditorFiles& files, const SceneDocument& doc, std::string
         draft = &files.drafts.back();
     }
     draft->problem.clear();
-    if (text == draft->base) {
-        // Typed back: nothing to save, but the steps that led here stay.
+    // Typed back to the text the file shows now: nothing to save, but the
+    // steps that led here stay. Back to the text typing began over, when the
+    // file changed since, is a draft still: dropped, the editor would show
+    // the file's new text instead, and the steps (typed over the old one)
+    // would go with the typed text.
+    const bool read = reading_of(doc, files.shown) != nullptr;
+    if (text == (read ? included_text(doc, files.shown) : draft->base)) {
         std::erase_if(files.drafts,
                       [&](const IncludedDraft& d) { return d.canonical == files.shown; });
         return;

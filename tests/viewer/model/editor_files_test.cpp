@@ -218,6 +218,34 @@ TEST_F(EditorFilesTest, IncludedTypingStepsEndWithTheTextTheyWereTypedOver) {
     EXPECT_EQ(read_file(ball), "# c\n" + theirs);
 }
 
+// Found in the window: text typed in parts/ball.jts, the file then changed
+// by another program, Ctrl+Z dropped the draft (back to the text typing
+// began over) and showed the file's new text; Ctrl+Y then found no step,
+// and the typed text was gone unasked. Undone, it is a draft still.
+TEST_F(EditorFilesTest, TypingUndoneAfterTheFileChangedOnDiskCanBeRedone) {
+    write(ball, kBall);
+    open();
+    const std::string file = canonical_of(state.doc, "parts/ball.jts");
+    show_file(state.editor, state.doc, file);
+    const std::string typed = "# a\n" + kBall;
+    type_included_text(state.editor, state.doc, typed);
+    const std::string theirs = "sphere { center: <0, 0, -5>; radius: 4.5; }\n";
+    write(ball, theirs);
+    ASSERT_TRUE(model.run_until_loaded(state));
+    ASSERT_EQ(radius_of(state, 0), 4.5);
+
+    ASSERT_TRUE(undo_included_typing(state.editor, state.doc));
+    ASSERT_NE(draft_of(state.editor, file), nullptr) << "the text before the typing, shown";
+    EXPECT_EQ(draft_of(state.editor, file)->text, kBall);
+    ASSERT_TRUE(redo_included_typing(state.editor, state.doc));
+    ASSERT_NE(draft_of(state.editor, file), nullptr);
+    EXPECT_EQ(draft_of(state.editor, file)->text, typed);
+
+    // Typed back to the file's text as it is now: nothing to save.
+    type_included_text(state.editor, state.doc, theirs);
+    EXPECT_FALSE(has_included_drafts(state.editor));
+}
+
 TEST_F(EditorFilesTest, AnIncludedTextWithAnErrorIsNotSaved) {
     write(ball, kBall);
     open();
