@@ -4,6 +4,7 @@
 #include "language/quote.hpp"
 #include "language/suggest.hpp"
 
+#include <algorithm>
 #include <cmath>
 #include <optional>
 #include <string>
@@ -155,6 +156,12 @@ void PropertyReader::unknown_property(const Property& p, std::string_view keywor
         sink_.error(p.name_span.pos,
                     "a material cannot use another material: 'material: NAME;' stands directly "
                     "in a sphere, plane, cylinder, triangle or mesh");
+        return;
+    }
+    if (keyword == schema_of<PointLight>().keyword &&
+        std::ranges::any_of(primitive_blocks(),
+                            [&](std::string_view b) { return same_name(b, p.name); })) {
+        sink_.error(p.name_span.pos, takes_no_message(keyword, p.name));
         return;
     }
     sink_.error(p.name_span.pos,
