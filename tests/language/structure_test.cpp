@@ -424,6 +424,14 @@ TEST(Structure, SeveralMaterialBlocksEachSetOnlyWhatTheyName) {
     EXPECT_EQ(m.finish->diffuse_k, 1.0);
 }
 
+// POV-Ray's bare translate: the error says where it stands here.
+TEST(Structure, ATransformPropertyOutsideATransformSaysWhereItGoes) {
+    EXPECT_EQ(brief("scene { sphere { translate: <1, 0, 0>; } }"),
+              "1:18: error: unknown property 'translate' in 'sphere' (allowed: center, radius, "
+              "material, transform); write it in a transform block: transform { translate: "
+              "...; }");
+}
+
 // One fact, one message: as a block or as 'material: NAME;'.
 TEST(Structure, LightsTakeNoMaterialOrTransform) {
     EXPECT_EQ(brief("scene { point_light { material { pigment: <1, 1, 1>; } } }"),

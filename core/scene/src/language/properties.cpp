@@ -164,8 +164,13 @@ void PropertyReader::unknown_property(const Property& p, std::string_view keywor
         sink_.error(p.name_span.pos, takes_no_message(keyword, p.name));
         return;
     }
-    sink_.error(p.name_span.pos,
-                unknown_name_message("property", p.name, "in " + quote(keyword), names));
+    std::string message = unknown_name_message("property", p.name, "in " + quote(keyword), names);
+    // POV-Ray moves an object with a bare `translate`; here it stands in a block.
+    for (const TransformOpSpec& op : transform_ops())
+        if (keyword != kTransformKeyword && same_name(p.name, op.property.name))
+            message +=
+                "; write it in a transform block: transform { " + std::string(p.name) + ": ...; }";
+    sink_.error(p.name_span.pos, message);
 }
 
 template <class Block>
