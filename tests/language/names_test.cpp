@@ -227,8 +227,8 @@ TEST(Names, AnUnknownPropertyIsReportedNotItsValue) {
               "3:23: error: unknown property 'radus' in 'point_light'; did you mean 'radius'? "
               "(allowed: position, intensity, radius, shadow_samples)");
     EXPECT_EQ(brief(shiny + "scene { point_light { material: shiny; } }"),
-              "3:23: error: unknown property 'material' in 'point_light' (allowed: position, "
-              "intensity, radius, shadow_samples)");
+              "3:23: error: a point_light takes no 'material': only sphere, plane, cylinder, "
+              "triangle and mesh do");
     EXPECT_EQ(brief(shiny + "material dull { material: shiny; }"),
               "3:17: error: a material cannot use another material: 'material: NAME;' stands "
               "directly in a sphere, plane, cylinder, triangle or mesh");

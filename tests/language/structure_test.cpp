@@ -424,12 +424,25 @@ TEST(Structure, SeveralMaterialBlocksEachSetOnlyWhatTheyName) {
     EXPECT_EQ(m.finish->diffuse_k, 1.0);
 }
 
+// POV-Ray's bare translate: the error says where it stands here.
+TEST(Structure, ATransformPropertyOutsideATransformSaysWhereItGoes) {
+    EXPECT_EQ(brief("scene { sphere { translate: <1, 0, 0>; } }"),
+              "1:18: error: unknown property 'translate' in 'sphere' (allowed: center, radius, "
+              "material, transform); write it in a transform block: transform { translate: "
+              "...; }");
+}
+
+// One fact, one message: as a block or as 'material: NAME;'.
 TEST(Structure, LightsTakeNoMaterialOrTransform) {
     EXPECT_EQ(brief("scene { point_light { material { pigment: <1, 1, 1>; } } }"),
-              "1:23: error: a point_light takes no 'material' block: only sphere, plane, "
+              "1:23: error: a point_light takes no 'material': only sphere, plane, "
               "cylinder, triangle and mesh do");
     EXPECT_EQ(brief("scene { point_light {\n transform { translate: <1, 1, 1>; }\n} }"),
-              "2:2: error: a point_light takes no 'transform' block: only sphere, plane, "
+              "2:2: error: a point_light takes no 'transform': only sphere, plane, "
+              "cylinder, triangle and mesh do");
+    EXPECT_EQ(brief("material m { pigment: <1, 0, 0>; }\n"
+                    "scene { point_light { material: m; } }"),
+              "2:23: error: a point_light takes no 'material': only sphere, plane, "
               "cylinder, triangle and mesh do");
 }
 

@@ -640,7 +640,11 @@ void ExpressionReader::apply(const Op& op, const ExprValue* value) {
                 break;
             default:  // div
                 if (vb) return fail(op.pos, "cannot divide by a vector: " + written());
-                if (b.number == 0.0) return fail(op.pos, "division by zero: " + written());
+                // number_text writes -0 as 0; the divisor keeps its sign, which
+                // tells which of two zeros the reader wrote or computed.
+                if (b.number == 0.0)
+                    return fail(op.pos, "division by zero: " + shown(a) + " / " +
+                                            (std::signbit(b.number) ? "-0" : "0"));
                 r = va ? vector(Vec3{a.vector.x / b.number, a.vector.y / b.number,
                                      a.vector.z / b.number})
                        : number(a.number / b.number);

@@ -17,20 +17,6 @@
 namespace jt::lang {
 namespace {
 
-// "a, b and c" (or "a, b or c" with `last` "or"). Built with append: GCC 12
-// warns falsely on "literal" + std::string&& (quote.hpp).
-std::string listed(std::span<const std::string_view> names, std::string_view last) {
-    std::string out;
-    for (std::size_t i = 0; i < names.size(); ++i) {
-        if (i > 0 && i + 1 == names.size())
-            out.append(1, ' ').append(last).append(1, ' ');
-        else if (i > 0)
-            out += ", ";
-        out += names[i];
-    }
-    return out;
-}
-
 constexpr std::array<std::string_view, 1> kIncludeOnly{kIncludeKeyword};
 constexpr auto kTopStatements = schema_detail::joined(
     schema_detail::kTopBlocks, std::array<std::string_view, 3>{kIncludeKeyword, kDefineKeyword,
@@ -217,9 +203,7 @@ void SceneParser::only_blocks(const BlockSource& block, std::span<const std::str
 void SceneParser::block_in_property_block(const BlockSource& block) {
     if (block.keyword == schema_of<PointLight>().keyword &&
         contains(primitive_blocks(), cur_->text)) {
-        sink_.error(cur_->pos, "a " + std::string(block.keyword) + " takes no '" +
-                                   std::string(cur_->text) + "' block: only " +
-                                   listed(shape_keywords(), "and") + " do");
+        sink_.error(cur_->pos, takes_no_message(block.keyword, cur_->text));
         skip_block();
         return;
     }

@@ -77,6 +77,10 @@ inline constexpr std::string_view beside_hint =
 // ... and when '<' or '>' follows one (SceneParser::comparison_after).
 inline constexpr std::string_view comparison_hint =
     " (there are no comparisons: '<' and '>' only bracket vectors like <0, 1, 0>)";
+// ... and when '=' follows one ('define r = 1 = 2;', 'x == 1').
+inline constexpr std::string_view equals_hint =
+    " ('=' is not an operator: it stands once, in 'define NAME = VALUE;', whose value is one "
+    "number, vector or string; there are no comparisons such as '==')";
 // ... and when '(' follows one ('pi()', 'r(2)', '2(3)').
 inline constexpr std::string_view call_hint =
     " ('(' after a value neither calls it nor multiplies: only the functions take '(', pi, "
@@ -130,9 +134,10 @@ class SceneParser final : private TokenCursor {
     }
     // The hint for the missing ';' after a value: a comparison ('1 < 2')
     // where '<' or '>' follows it, a call or product ('pi()', '2(3)') where
-    // '(' does, else none.
+    // '(' does, a second '=' where '=' does, else none.
     std::string_view comparison_after() const {
         if (at(TokenKind::lparen)) return call_hint;
+        if (at(TokenKind::equals)) return equals_hint;
         return at(TokenKind::less) || at(TokenKind::greater) ? comparison_hint : std::string_view{};
     }
     // Whether a name touches the value that ends at `end` ('2pi', '0x10',
@@ -332,6 +337,7 @@ class SceneParser final : private TokenCursor {
     // At `include`: reads the statement and, when the file can be read, makes
     // its text the one read, true. False (reported) for no file to read.
     bool enter_include(IncludeResume& resume);
+    std::string include_path_hint(const Token& token) const;
     // At the included file's end: reading resumes after the include.
     void leave_include(IncludeResume& resume);
     // A file name (`file`, `image_map`, `background_map`) written in an

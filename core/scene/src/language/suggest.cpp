@@ -1,5 +1,7 @@
 #include "language/suggest.hpp"
 
+#include "jtracer/schema.hpp"
+
 #include <algorithm>
 #include <utility>
 #include <vector>
@@ -83,6 +85,25 @@ std::string_view nearest_name(std::string_view word, std::span<const std::string
     // A typo changes a few letters; beyond a third of the word it is another word.
     std::size_t limit = std::max<std::size_t>(1, std::max(word.size(), best.size()) / 3);
     return best_distance <= limit ? best : std::string_view{};
+}
+
+std::string listed(std::span<const std::string_view> names, std::string_view last) {
+    // Built with append: GCC 12 warns falsely on "literal" + std::string&& (quote.hpp).
+    std::string out;
+    for (std::size_t i = 0; i < names.size(); ++i) {
+        if (i > 0 && i + 1 == names.size())
+            out.append(1, ' ').append(last).append(1, ' ');
+        else if (i > 0)
+            out += ", ";
+        out += names[i];
+    }
+    return out;
+}
+
+std::string takes_no_message(std::string_view light_keyword, std::string_view word) {
+    std::string out = "a ";
+    out.append(light_keyword).append(" takes no '").append(word).append("': only ");
+    return out.append(listed(shape_keywords(), "and")).append(" do");
 }
 
 std::string unknown_name_message(std::string_view what, std::string_view word,
