@@ -389,7 +389,8 @@ TEST_F(RegionCli, SkipExistingKeepsOnlyAPartOfThisRender) {
     const std::string two_samples = test::read_file(dir / "p.bmp");
     ProgramRun r = run_shell(part + "--skip-existing");
     ASSERT_EQ(r.code, 0) << r.err;
-    EXPECT_NE(r.err.find("p.bmp is there, but it holds another region or render"),
+    EXPECT_NE(r.err.find(
+                  "p.bmp is there, but it is this region of another render (differing in samples)"),
               std::string::npos)
         << r.err;
     EXPECT_NE(test::read_file(dir / "p.bmp"), two_samples);
@@ -397,6 +398,15 @@ TEST_F(RegionCli, SkipExistingKeepsOnlyAPartOfThisRender) {
     ASSERT_EQ(r.code, 0) << r.err;
     EXPECT_NE(r.err.find("kept p.bmp: already there and complete"), std::string::npos) << r.err;
     EXPECT_EQ(r.err.find("wrote"), std::string::npos) << r.err;
+    // Another region under the name says so, and which region it holds.
+    r = run_shell(cli + showcase +
+                  "--width 40 --height 30 --region-output --region 0,15,40,30 -o p.bmp "
+                  "--skip-existing");
+    ASSERT_EQ(r.code, 0) << r.err;
+    EXPECT_NE(r.err.find("p.bmp is there, but it holds another region (0,0,40,15 of a 40x30 "
+                         "frame)"),
+              std::string::npos)
+        << r.err;
 }
 
 }  // namespace
