@@ -152,11 +152,12 @@ RankFrame set_up_rank(const Options& o, jt::frontend::SceneSequence* sequence, i
     return frame;
 }
 
-// What stays of a run stopped at frame `index` (the only one without --frames).
-std::string written_before(const jt::frontend::FrameRange& range, int index) {
+// What stays of a run stopped at frame `index` (the only one without
+// --frames), `rendered` frames before it written by this run and the others
+// kept (--skip-existing).
+std::string written_before(const jt::frontend::FrameRange& range, int index, int rendered) {
     if (index == range.first) return "nothing was written";
-    return "frames " + std::to_string(range.first) + ".." + std::to_string(index - 1) +
-           " were written";
+    return jt::frontend::frames_there(range.first, index, index - range.first - rendered);
 }
 
 // Rank 0 stops for SIGINT, SIGTERM or SIGHUP as jtracer-cli does, with its
@@ -331,6 +332,15 @@ void report_frame(const Options& o, const RankFrame& frame, int index,
               << ", " << ranks << (ranks == 1 ? " rank" : " ranks") << "\n";
 }
 
+// As a render refuses it (and jtracer-cli --check): a region file under a
+// scene's filename.png. Reported here; true when refused.
+bool region_output_refused(const Options& o, const std::string& output) {
+    const std::optional<std::string> refused =
+        jt::frontend::region_output_refusal("jtracer-mpi", o, o, output);
+    if (refused) std::cerr << *refused;
+    return refused.has_value();
+}
+
 // --check, on rank 0: each frame set up (read at its clock and validated) as
 // a render would set it up, and nothing more.
 int check_scene(const Options& o) {
@@ -338,6 +348,7 @@ int check_scene(const Options& o) {
         const FrameSetup setup = jt::frontend::set_up_frame("jtracer-mpi", o, o.region);
         std::cerr << setup.message;
         if (setup.exit_code != exit_ok) return setup.exit_code;
+        if (region_output_refused(o, setup.output)) return exit_usage;
         if (!o.quiet) std::cerr << o.scene_path << ": no errors\n";
         return exit_ok;
     }
@@ -347,6 +358,7 @@ int check_scene(const Options& o) {
         const jt::frontend::SequenceFrame frame = sequence.frame(index, false);
         std::cerr << frame.message;
         if (frame.exit_code != exit_ok) return frame.exit_code;
+        if (index == range.first && region_output_refused(o, frame.output)) return exit_usage;
     }
     if (!o.quiet)
         std::cerr << o.scene_path << ": no errors in frames " << range.first << ".." << range.last
@@ -397,7 +409,8 @@ int run(int argc, char** argv, int rank, int ranks) {
         if (workers_wait)
             for (int worker = 1; worker < ranks; ++worker)
                 send_frame(worker, more ? index : no_more_frames);
-        if (signal != 0) return stop_for_signal(signal, written_before(range, index), false);
+        if (signal != 0)
+            return stop_for_signal(signal, written_before(range, index, rendered), false);
         if (!more) break;
         const auto frame_start = Clock::now();
         RankFrame frame = set_up_rank(o, frames, index);
@@ -409,7 +422,8 @@ int run(int argc, char** argv, int rank, int ranks) {
                 frame.mine.exit_code = exit_io_error;
                 frame.mine.message +=
                     "jtracer-mpi: " + writable.error().message + "; " +
-                    (o.frames ? written_before(range, index) : "nothing was rendered") + "\n";
+                    (o.frames ? written_before(range, index, rendered) : "nothing was rendered") +
+                    "\n";
             }
         const RankSetUp& mine = frame.mine;
         const double setup_seconds =
@@ -471,7 +485,7 @@ int run(int argc, char** argv, int rank, int ranks) {
         if (!result.complete)
             return stop_for_signal(
                 jt::frontend::stop_signal() != 0 ? jt::frontend::stop_signal() : SIGINT,
-                written_before(range, index), ranks > 1);
+                written_before(range, index, rendered), ranks > 1);
         workers_wait = result.another_frame;
         result.stats.setup_seconds = setup_seconds;
         std::vector<RankStats> stats = result.rank_stats;

@@ -282,6 +282,16 @@ TEST_F(Cli, AnOutputThatCannotBeWrittenStopsBeforeTheRender) {
     EXPECT_EQ(r.err.find("frame 1, clock"), std::string::npos) << r.err;
     EXPECT_EQ(outputs(), (std::vector<std::string>{"f0", "taken.bmp"}));
     EXPECT_TRUE(fs::exists(dir / "f0" / "shot.bmp"));
+    // A rerun with --skip-existing wrote none of the frames it kept.
+    fs::create_directory(dir / "f1");
+    r = run("scene.jts --frames 3 --skip-existing -o 'f%d/shot.bmp'");
+    EXPECT_EQ(r.code, 3);
+    EXPECT_NE(r.err.find("cannot write 'f2/shot.bmp': No such file or directory; frames 0..1 "
+                         "are there (1 written, 1 kept)\n"),
+              std::string::npos)
+        << r.err;
+    r = run("scene.jts --frames 3 --skip-existing -o 'f%d/shot.bmp'");
+    EXPECT_NE(r.err.find("; frames 0..1 were kept, already there\n"), std::string::npos) << r.err;
 }
 
 // A folder on a read-only file system (a render share mounted ro) was said to

@@ -118,8 +118,20 @@ TEST_F(Mpi, CheckValidatesOnceAndWritesNothing) {
     r = run_shell(mpirun(2) + "--check good.jts --skip-existing -o out.bmp");
     EXPECT_EQ(r.code, 2) << r.err;
     EXPECT_EQ(count(r.err, "--skip-existing: not with --check"), 1u) << r.err;
+    // A region file under a scene's filename.png: refused as the render
+    // (and jtracer-cli --check) refuses it, with and without --frames.
+    test::write_file(dir / "png.jts",
+                     "render_settings { width: 8; height: 8; filename: \"png.png\"; }\n"
+                     "cameras { perspective_camera { position: <0, 0, 5>; } }\n");
+    for (const char* frames : {"", "--frames 2 "}) {
+        r = run_shell(mpirun(2) + "--check png.jts --region 0,0,8,2 --region-output " + frames);
+        EXPECT_EQ(r.code, 2) << frames << r.err;
+        EXPECT_EQ(count(r.err, "png.jts:1:50: error: --region-output writes a BMP"), 1u) << r.err;
+        EXPECT_EQ(count(r.err, "no errors"), 0u) << r.err;
+    }
     std::vector<std::string> left = outputs();
     std::erase(left, "good.jts");
+    std::erase(left, "png.jts");
     EXPECT_TRUE(left.empty()) << left.front();
 }
 
@@ -352,6 +364,14 @@ TEST_F(Mpi, UnwritableOutputIsFoundBeforeTheRender) {
     EXPECT_EQ(count(r.err, "cannot write 'f1/shot.bmp'"), 1u) << r.err;
     EXPECT_NE(r.err.find("; frames 0..0 were written\n"), std::string::npos) << r.err;
     EXPECT_TRUE(exists("f0/shot.bmp"));
+    // A rerun with --skip-existing wrote none of the frames it kept.
+    std::filesystem::create_directory(dir / "f1");
+    r = run_shell(mpirun(2) + "seq.jts -q --frames 3 --skip-existing -o 'f%d/shot.bmp'");
+    EXPECT_EQ(r.code, 3) << r.err;
+    EXPECT_NE(r.err.find("; frames 0..1 are there (1 written, 1 kept)\n"), std::string::npos)
+        << r.err;
+    r = run_shell(mpirun(2) + "seq.jts -q --frames 3 --skip-existing -o 'f%d/shot.bmp'");
+    EXPECT_NE(r.err.find("; frames 0..1 were kept, already there\n"), std::string::npos) << r.err;
 }
 
 // OpenMPI gives a rank a terminal of its own as standard output, whatever
