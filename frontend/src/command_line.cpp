@@ -75,6 +75,7 @@ std::string value_word(const CLI::Option& opt) {
 // required options before unknown ones, so a mistyped option would otherwise
 // be reported as a missing one.
 std::optional<std::string> unknown_option(const CLI::App& app, int argc, const char* const* argv) {
+    if (app.get_allow_extras()) return std::nullopt;
     for (int i = 1; i < argc; ++i) {
         const std::string word = argv[i];
         if (word == "--") break;
