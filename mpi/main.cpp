@@ -373,6 +373,17 @@ int run(int argc, char** argv, int rank, int ranks) {
     const Options& o = parsed.options;
     // The other ranks have nothing to do: every rank would find the same.
     if (o.check_only) return rank == 0 ? check_scene(o) : exit_ok;
+    // Only the file name travels: a pipe (a FIFO, /dev/stdin) gives its text
+    // to the one rank that reads it first, and the others would wait for
+    // theirs forever. Every rank sees the same and stops alike.
+    if (ranks > 1 && jt::frontend::is_stream(o.scene_path)) {
+        if (rank == 0)
+            std::cerr << "jtracer-mpi: the scene '" << o.scene_path
+                      << "' is a pipe or a device, which only one of the " << ranks
+                      << " ranks could read: save it to a file at the same path on every "
+                         "machine\nRun 'jtracer-mpi --help' for the options.\n";
+        return exit_usage;
+    }
     std::optional<jt::frontend::SceneSequence> sequence;
     if (o.frames) {
         sequence.emplace("jtracer-mpi", o, o.region);

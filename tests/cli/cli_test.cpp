@@ -570,5 +570,38 @@ TEST_F(Cli, HelpAndVersion) {
     EXPECT_EQ(std::string(jt::version_string()).rfind(JT_VERSION_STRING, 0), 0u);
 }
 
+// CLI11's range check said "Value 2.5 not in range 1 to 1000000" of a number
+// that is in range but not whole, and an unknown option was reported as a
+// missing one.
+TEST_F(Cli, UsageErrorsNameTheOptionAndWhatItExpects) {
+    test::ProgramRun r = run("scene.jts --frames 2.5");
+    EXPECT_EQ(r.code, 2);
+    EXPECT_EQ(r.err,
+              "jtracer-cli: --frames: '2.5' is not a whole number (expected 1 to 1000000)\n"
+              "Run 'jtracer-cli --help' for the options.\n");
+    r = run("scene.jts --width abc");
+    EXPECT_NE(r.err.find("--width: 'abc' is not a whole number (expected 1 to 65535)"),
+              std::string::npos)
+        << r.err;
+    r = run("scene.jts --width 0");
+    EXPECT_NE(r.err.find("--width: 0 is out of range (expected 1 to 65535)"), std::string::npos)
+        << r.err;
+    r = run("--bogus");
+    EXPECT_EQ(r.code, 2);
+    EXPECT_NE(r.err.find("jtracer-cli: unknown option '--bogus'\n"), std::string::npos) << r.err;
+    EXPECT_TRUE(outputs().empty());
+}
+
+// `jtracer-cli /dev/stdin < fifo`: reopening /dev/stdin opened the named pipe
+// anew, which waits for a writer though the one that filled it had gone.
+TEST_F(Cli, ASceneOnStandardInputFromANamedPipeIsRead) {
+    ASSERT_EQ(run_shell("mkfifo p").code, 0);
+    test::ProgramRun r = run_shell("timeout 30 '" JT_CLI
+                                   "' /dev/stdin -q -o out.bmp < p & "
+                                   "cat scene.jts > p; wait $!; echo \"code $?\"");
+    EXPECT_NE(r.out.find("code 0"), std::string::npos) << r.out << r.err;
+    EXPECT_TRUE(fs::exists(dir / "out.bmp"));
+}
+
 }  // namespace
 }  // namespace jt

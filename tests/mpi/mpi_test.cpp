@@ -185,6 +185,37 @@ TEST_F(Mpi, AnOutputThatIsTheSceneFileIsRefusedOnce) {
     EXPECT_EQ(test::read_file(dir / "self.jts"), text);
 }
 
+// A named pipe as the scene: every rank opened it, one got the text and the
+// others waited for theirs forever.
+TEST_F(Mpi, APipedSceneWithManyRanksIsRefused) {
+    ASSERT_EQ(run_shell("mkfifo scene.fifo").code, 0);
+    ProgramRun r = run_shell("timeout 60 " + mpirun(2) + "scene.fifo -o out.bmp");
+    EXPECT_EQ(r.code, 2) << r.err;
+    EXPECT_EQ(count(r.err, "'scene.fifo' is a pipe or a device, which only one of the 2 ranks"), 1u)
+        << r.err;
+    EXPECT_FALSE(exists("out.bmp"));
+}
+
+// CLI11 checked required options before unknown ones, and worded its errors
+// its own way ("--output is required" for a mistyped option).
+TEST_F(Mpi, MergeUsageErrorsNameTheOptionAndWhatItExpects) {
+    const std::string merge = "'" JT_MERGE "' ";
+    ProgramRun r = run_shell(merge + "--bogus");
+    EXPECT_EQ(r.code, 2);
+    EXPECT_EQ(r.err,
+              "jtracer-merge: unknown option '--bogus'\n"
+              "Run 'jtracer-merge --help' for the options.\n");
+    r = run_shell(merge + "-o out.bmp");
+    EXPECT_EQ(r.code, 2);
+    EXPECT_EQ(count(r.err, "jtracer-merge: missing PARTS\n"), 1u) << r.err;
+    r = run_shell(merge + "a.bmp");
+    EXPECT_EQ(count(r.err, "jtracer-merge: missing -o/--output FILE\n"), 1u) << r.err;
+    r = run_shell(merge + "a.bmp -o");
+    EXPECT_EQ(count(r.err, "jtracer-merge: -o/--output: needs FILE after it\n"), 1u) << r.err;
+    r = run_shell(merge + "-o x.bmp -o y.bmp a.bmp");
+    EXPECT_EQ(count(r.err, "jtracer-merge: -o/--output: given more than once"), 1u) << r.err;
+}
+
 // -o shot.jpg gives a BMP, as jtracer-cli's does, but jtracer-cli warns that
 // image viewers and upload forms will take it for a JPEG; jtracer-mpi did not.
 TEST_F(Mpi, AnOutputNamingAnotherImageFormatWarnsAsTheCliDoes) {

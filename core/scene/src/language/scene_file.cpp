@@ -8,6 +8,7 @@
 #include "language/quote.hpp"
 #include "language/validation.hpp"
 
+#include <fcntl.h>
 #include <sys/stat.h>
 #include <unistd.h>
 
@@ -51,6 +52,22 @@ Expected<std::string> read_text_file(const std::filesystem::path& path, std::uin
 
 namespace {
 
+// Standard input named as a file. Opening /dev/stdin again opens the pipe
+// behind it anew, and a named pipe opened anew waits for a writer even when
+// the one that filled it has gone and its text waits unread
+// (`jtracer-cli /dev/stdin < fifo`): the descriptor already open is read.
+bool names_standard_input(const std::filesystem::path& path) {
+    return path == "/dev/stdin" || path == "/dev/fd/0" || path == "/proc/self/fd/0";
+}
+
+std::FILE* fdopen_standard_input() {
+    const int descriptor = ::fcntl(STDIN_FILENO, F_DUPFD_CLOEXEC, 0);
+    if (descriptor < 0) return nullptr;
+    std::FILE* file = ::fdopen(descriptor, "rb");
+    if (file == nullptr) ::close(descriptor);
+    return file;
+}
+
 Expected<std::string> read_text(const std::filesystem::path& path, std::uintmax_t max_bytes,
                                 FileStamp* stamp) {
     const std::string name = lang::quote(path.string());
@@ -71,7 +88,9 @@ Expected<std::string> read_text(const std::filesystem::path& path, std::uintmax_
                          " bytes; the limit is " + std::to_string(max_bytes) + ")"};
     }
     errno = 0;
-    std::unique_ptr<std::FILE, int (*)(std::FILE*)> f(std::fopen(path.c_str(), "rb"), &std::fclose);
+    std::unique_ptr<std::FILE, int (*)(std::FILE*)> f(
+        names_standard_input(path) ? fdopen_standard_input() : std::fopen(path.c_str(), "rb"),
+        &std::fclose);
     if (!f) return Error{"cannot read " + name + ": " + read_failure_reason(path, errno)};
     // A device other than a terminal never ends (/dev/zero, /dev/urandom) or is
     // no text: it would be read up to the limit, a gigabyte, before failing. A
