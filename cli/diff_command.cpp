@@ -157,6 +157,12 @@ int run_diff_command(int argc, char** argv) {
                     throw CLI::ValidationError(
                         flag, "'" + written + "' is the " + what + " image: it would be replaced");
         }
+        // Two documents on one stream cannot be parted again by what reads it.
+        if (junit && is_standard_output(*junit) && (heat_map_path == "/dev/stdout" || json))
+            throw CLI::ValidationError(
+                "--junit", "'" + *junit + "' is standard output, which already carries " +
+                               (json ? "--json's object" : "the heat map (-o -)") +
+                               ": name a file for the report");
         if (junit && !heat_map_path.empty() && same_file(*junit, heat_map_path))
             throw CLI::ValidationError(
                 "--junit", "'" + *junit + "' is also the heat map (-o): it would be replaced");
@@ -176,6 +182,8 @@ int run_diff_command(int argc, char** argv) {
     auto finish = [&](int code) -> int {
         r.seconds = seconds_since(start);
         if (json) std::cout << comparison_json(r) << "\n";
+        // The report printed comes before a --junit file on the same stream.
+        std::cout.flush();
         if (!junit_written(junit, r, kDiffSuite, program)) return exit_io_error;
         return code;
     };

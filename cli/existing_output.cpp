@@ -5,8 +5,7 @@ namespace jt::cli {
 WantedOutput wanted_output(const Options& o, const RenderOptions& render, ImageFormat format,
                            const std::optional<RenderFingerprint>& fingerprint) {
     WantedOutput wanted{render.width, render.height, format, std::nullopt};
-    if (o.region_output)
-        wanted.placement = RegionPlacement{render.width, render.height, *o.region, fingerprint};
+    if (o.region_output) wanted.placement = frontend::region_placement(o, render, fingerprint);
     return wanted;
 }
 

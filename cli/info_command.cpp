@@ -207,6 +207,7 @@ int run_info_command(int argc, char** argv) {
         "the lights; the cameras and where they look; and the prepared scene's memory,\n"
         "Embree's counted as it builds (info prepares the scene as a render would);\n"
         "and the vector unit JTracer's own batched tests run on.\n"
+        "The scene's warnings go to stderr, as a render prints them.\n"
         "\n"
         "Examples:\n"
         "  jtracer-cli info scenes/mesh.jts\n"
@@ -238,10 +239,11 @@ int run_info_command(int argc, char** argv) {
     // The image's size is a render's to set (--width, --height), and info,
     // which takes neither, describes the scene whatever size it renders at.
     std::erase_if(diagnostics, asks_for_frame_size);
-    if (has_errors(diagnostics)) {
-        std::cerr << format_diagnostics(diagnostics, *loaded);
-        return exit_scene_error;
-    }
+    // Warnings too, as a render prints them: a mesh left out (a model of
+    // lines only) or part of a model dropped shows here as 0 triangles or a
+    // smaller box, which only the warning explains.
+    if (!diagnostics.empty()) std::cerr << format_diagnostics(diagnostics, *loaded);
+    if (has_errors(diagnostics)) return exit_scene_error;
     const Expected<json> description = describe(loaded->parsed.scene);
     if (!description) {
         std::cerr << "jtracer-cli info: " << description.error().message << "\n";

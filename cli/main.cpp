@@ -134,17 +134,17 @@ int run(const Options& o, Clock::time_point start, bool& compared) {
     // of being copied.
     const jt::Image8 image = o.region_output ? jt::Image8() : job.take_image();
     const jt::Expected<void> written =
-        o.region_output
-            ? jt::write_region_bmp(output, job.region_image(),
-                                   {options.width, options.height, *o.region, fingerprint})
-            : jt::write_image(output, image, setup.format);
+        o.region_output ? jt::write_region_bmp(output, job.region_image(),
+                                               region_placement(o, options, fingerprint))
+                        : jt::write_image(output, image, setup.format);
     if (!written) {
         std::cerr << "jtracer-cli: " << shown_write_error(written.error().message) << "\n";
         return exit_io_error;
     }
     if (!o.quiet)
         std::cerr << "wrote " << shown_output(output) << ": "
-                  << render_summary(options.width, options.height, options.samples, job.progress())
+                  << render_summary(options.width, options.height, options.samples, job.progress(),
+                                    o.region)
                   << "\n";
     if (o.expect) {
         compared = true;

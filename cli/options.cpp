@@ -15,15 +15,6 @@
 
 namespace jt::cli {
 
-namespace {
-
-// Why --region-output takes no other name than a BMP's, for both ways of
-// naming its file.
-constexpr std::string_view kRegionFileIsBmp =
-    "writes a BMP (its placement record lives in the BMP)";
-
-}  // namespace
-
 std::optional<std::string> file_clash(const Options& o, const std::string& output) {
     using frontend::same_file;
     const std::string named =
@@ -45,6 +36,11 @@ std::optional<std::string> file_clash(const Options& o, const std::string& outpu
                    heat_map + "): a render outside the tolerance would replace it";
     }
     if (o.junit) {
+        if (!output.empty() && (o.output_is_stdout || frontend::is_standard_output(output)) &&
+            frontend::is_standard_output(*o.junit))
+            return "--junit '" + *o.junit +
+                   "' is standard output, which already carries the image (-o -): name a file "
+                   "for the report";
         for (const auto& [what, path] :
              {std::pair<const char*, std::string>{"the scene file", o.scene_path},
               {"the image", output},
@@ -54,23 +50,6 @@ std::optional<std::string> file_clash(const Options& o, const std::string& outpu
                 return "--junit '" + *o.junit + "' is " + what + ": the report would replace it";
     }
     return std::nullopt;
-}
-
-std::optional<std::string> region_output_refusal(const Options& o, const std::string& output) {
-    if (!o.region_output || o.output || format_from_extension(output) == ImageFormat::bmp)
-        return std::nullopt;
-    const std::string message = "--region-output " + std::string(kRegionFileIsBmp) +
-                                ": name the scene's filename .bmp, or the output with -o";
-    // The scene was read without its source map: read again to say where.
-    ParseOptions options = frontend::parse_options_for(o);
-    options.source_map = true;
-    const Expected<LoadedScene> loaded = load_scene_file(o.scene_path, options);
-    if (!loaded) return "jtracer-cli: " + message + "\n";
-    SourcePos at;
-    if (const std::optional<BlockSource>& block = loaded->parsed.source.render_settings)
-        for (const PropertySource& p : properties_of(loaded->parsed.source, *block))
-            if (p.name == "filename") at = p.value_span.pos;  // the last one is in effect
-    return format_diagnostics({Diagnostic{Severity::error, at, message}}, *loaded);
 }
 
 ParsedOptions parse_options(int argc, char** argv) {
@@ -98,19 +77,7 @@ ParsedOptions parse_options(int argc, char** argv) {
         "interrupted (Ctrl-C), 143 stopped (SIGTERM).\n");
     frontend::add_version_flag(app, "jtracer-cli");
     frontend::add_render_flags(app, o);
-    app.add_option_function<std::string>(
-           "--region",
-           [&o](const std::string& text) {
-               jt::Expected<jt::FrameRegion> region = jt::parse_frame_region(text);
-               if (!region) throw CLI::ValidationError("--region", region.error().message);
-               o.region = *region;
-           },
-           "Render only the pixels X0 <= x < X1, Y0 <= y < Y1, counted from the top-left "
-           "corner as image viewers show them; the rest of the image stays black")
-        ->type_name("X0,Y0,X1,Y1");
-    app.add_flag("--region-output", o.region_output,
-                 "With --region: write only the region, as a BMP that records where it belongs "
-                 "and what it was rendered from (jtracer-merge assembles such parts)");
+    frontend::add_region_flags(app, o);
     app.add_flag("--check", o.check_only, "Only parse and validate the scene; write nothing");
     app.add_flag("--skip-existing", o.skip_existing,
                  "Keep an image already there and complete instead of rendering it again (with "
@@ -146,12 +113,7 @@ ParsedOptions parse_options(int argc, char** argv) {
         if (o.output)
             if (std::optional<std::string> refused = frontend::output_refusal(*o.output))
                 throw CLI::ValidationError("-o/--output", *refused);
-        if (o.region_output && !o.region)
-            throw CLI::ValidationError("--region-output", "needs --region X0,Y0,X1,Y1");
-        if (o.region_output && o.output &&
-            jt::format_from_extension(*o.output) != jt::ImageFormat::bmp)
-            throw CLI::ValidationError("--region-output",
-                                       std::string(kRegionFileIsBmp) + "; name the output .bmp");
+        frontend::check_region_flags(o, o.output);
         if (o.expect && (o.region || o.check_only))
             throw CLI::ValidationError("--expect",
                                        "compares a whole render: not with --region "

@@ -5,7 +5,7 @@
 
 #include "jtracer/frontend/render_flags.hpp"
 
-#include "jtracer/region.hpp"
+#include "jtracer/frontend/region_flags.hpp"
 
 #include <optional>
 #include <string>
@@ -13,10 +13,7 @@
 
 namespace jt::cli {
 
-struct Options : frontend::RenderFlags {
-    // Render only this window (top-left origin, region.hpp); the rest stays black.
-    std::optional<jt::FrameRegion> region;
-    bool region_output = false;  // write the region alone, as a region file (region_file.hpp)
+struct Options : frontend::RenderFlags, frontend::RegionFlags {
     bool check_only = false;
     // Keep an output already there and complete instead of rendering it again
     // (existing_output.hpp).
@@ -52,10 +49,10 @@ inline std::string format_warning(const Options& o, const std::string& output) {
     return frontend::format_warning("jtracer-cli", o, output);
 }
 
-// The error (or nothing) for a region file (--region-output, always a BMP)
-// under the scene's filename `output` when that names another format: refused
-// as `-o part.png --region-output` is (parse_options), and located at the
-// scene's filename, which the user must change.
-std::optional<std::string> region_output_refusal(const Options& o, const std::string& output);
+// frontend::region_output_refusal, as jtracer-cli says it.
+inline std::optional<std::string> region_output_refusal(const Options& o,
+                                                        const std::string& output) {
+    return frontend::region_output_refusal("jtracer-cli", o, o, output);
+}
 
 }  // namespace jt::cli

@@ -19,11 +19,11 @@ namespace {
 using namespace jt::frontend;
 using Clock = std::chrono::steady_clock;
 
-// What stays of a sequence stopped at frame `index`.
-std::string written_before(const FrameRange& range, int index) {
+// What stays of a sequence stopped at frame `index`, `kept` frames before it
+// already there (--skip-existing).
+std::string written_before(const FrameRange& range, int index, int kept) {
     if (index == range.first) return "no frame was written";
-    return "frames " + std::to_string(range.first) + ".." + std::to_string(index - 1) +
-           " were written";
+    return frames_there(range.first, index, kept);
 }
 
 }  // namespace
@@ -47,7 +47,7 @@ int run_sequence(const Options& o) {
         // preparing the next frame, which can take long (a large mesh).
         if (interrupting_signal() != 0) {
             display.finish();
-            return report_interrupt(written_before(range, index).c_str());
+            return report_interrupt(written_before(range, index, kept_frames).c_str());
         }
         // A frame already there is known once its set-up names its file and
         // size, before the scene is prepared for it.
@@ -82,14 +82,14 @@ int run_sequence(const Options& o) {
         if (Expected<void> fits = check_render_memory(frame.render, o.region_output); !fits) {
             display.finish();
             std::cerr << "jtracer-cli: " << fits.error().message << "; "
-                      << written_before(range, index) << "\n";
+                      << written_before(range, index, kept_frames) << "\n";
             return exit_io_error;
         }
         // Each frame's file may be in a folder of its own (-o 'f%d/shot.png').
         if (Expected<void> writable = check_atomic_write(frame.output); !writable) {
             display.finish();
             std::cerr << "jtracer-cli: " << writable.error().message << "; "
-                      << written_before(range, index) << "\n";
+                      << written_before(range, index, kept_frames) << "\n";
             return exit_io_error;
         }
         RenderJob job(frame.prepared, frame.render);
@@ -100,24 +100,23 @@ int run_sequence(const Options& o) {
         });
         if (!rendered) {
             display.finish();
-            return report_interrupt(written_before(range, index).c_str());
+            return report_interrupt(written_before(range, index, kept_frames).c_str());
         }
         const Expected<void> written =
             o.region_output ? write_region_bmp(frame.output, job.region_image(),
-                                               {frame.render.width, frame.render.height, *o.region,
-                                                frame.fingerprint})
+                                               region_placement(o, frame.render, frame.fingerprint))
                             : write_image(frame.output, job.take_image(), frame.format);
         display.finish();
         if (!written) {
             std::cerr << "jtracer-cli: " << written.error().message << "; "
-                      << written_before(range, index) << "\n";
+                      << written_before(range, index, kept_frames) << "\n";
             return exit_io_error;
         }
         if (!o.quiet)
             std::cerr << "wrote " << frame.output << " (frame " << index << ", clock "
                       << shortest_decimal(frame.clock) << "): "
                       << render_summary(frame.render.width, frame.render.height,
-                                        frame.render.samples, job.progress())
+                                        frame.render.samples, job.progress(), o.region)
                       << "\n";
     }
     display.finish();

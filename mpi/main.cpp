@@ -17,9 +17,13 @@
 #include "jtracer/frontend/existing_output.hpp"
 #include "jtracer/frontend/frame_setup.hpp"
 #include "jtracer/frontend/progress.hpp"
+#include "jtracer/frontend/region_flags.hpp"
+#include "jtracer/frontend/render_fingerprint.hpp"
 #include "jtracer/frontend/scene_sequence.hpp"
 #include "jtracer/frontend/sequence_progress.hpp"
 #include "jtracer/image_file.hpp"
+#include "jtracer/region.hpp"
+#include "jtracer/region_file.hpp"
 
 #include <mpi.h>
 #include <unistd.h>
@@ -84,6 +88,8 @@ struct RankFrame {
     std::string output;
     jt::ImageFormat format = jt::ImageFormat::bmp;
     double clock = 0.0;
+    // What a region file (--region-output) records it was rendered from.
+    std::optional<jt::RenderFingerprint> fingerprint;
 };
 
 // Reads, checks and prepares the scene (at frame `index` of a sequence): the
@@ -101,9 +107,10 @@ RankFrame set_up_rank(const Options& o, jt::frontend::SceneSequence* sequence, i
         frame.output = set_up.output;
         frame.format = set_up.format;
         frame.clock = set_up.clock;
+        frame.fingerprint = set_up.fingerprint;
         scene = set_up.prepared;
     } else {
-        FrameSetup setup = jt::frontend::set_up_frame("jtracer-mpi", o);
+        FrameSetup setup = jt::frontend::set_up_frame("jtracer-mpi", o, o.region);
         mine.exit_code = setup.exit_code;
         mine.message = setup.message;
         if (setup.exit_code != exit_ok) return frame;
@@ -115,6 +122,9 @@ RankFrame set_up_rank(const Options& o, jt::frontend::SceneSequence* sequence, i
                            "was written\n";
             return frame;
         }
+        if (o.region_output)
+            frame.fingerprint =
+                jt::frontend::render_fingerprint(setup.scene, setup.render, o.clock.value_or(0.0));
         const jt::Expected<std::shared_ptr<const jt::PreparedScene>> prepared =
             jt::prepare_scene(std::move(setup.scene));
         if (!prepared) {
@@ -127,17 +137,27 @@ RankFrame set_up_rank(const Options& o, jt::frontend::SceneSequence* sequence, i
         frame.format = setup.format;
         scene = *prepared;
     }
+    // As jtracer-cli refuses it: a region file under a scene's filename.png.
+    if (std::optional<std::string> refused =
+            jt::frontend::region_output_refusal("jtracer-mpi", o, o, frame.output)) {
+        mine.exit_code = exit_usage;
+        mine.message = *refused;
+        return frame;
+    }
     // One frame a rank: the view table is built once, by the rank's first tile.
     mine.frame = jt::prepare_frame(scene, frame.render);
-    mine.tiles = cut_work_tiles(frame.render.width, frame.render.height, o.tile_size);
+    mine.tiles = cut_work_tiles(
+        frame.render.region.value_or(jt::PixelRect{0, 0, frame.render.width, frame.render.height}),
+        o.tile_size);
     return frame;
 }
 
-// What stays of a run stopped at frame `index` (the only one without --frames).
-std::string written_before(const jt::frontend::FrameRange& range, int index) {
+// What stays of a run stopped at frame `index` (the only one without
+// --frames), `rendered` frames before it written by this run and the others
+// kept (--skip-existing).
+std::string written_before(const jt::frontend::FrameRange& range, int index, int rendered) {
     if (index == range.first) return "nothing was written";
-    return "frames " + std::to_string(range.first) + ".." + std::to_string(index - 1) +
-           " were written";
+    return jt::frontend::frames_there(range.first, index, index - range.first - rendered);
 }
 
 // Rank 0 stops for SIGINT, SIGTERM or SIGHUP as jtracer-cli does, with its
@@ -242,7 +262,10 @@ int run_worker_frames(const Options& o, jt::frontend::SceneSequence* sequence, i
 class KeptFrames {
   public:
     explicit KeptFrames(const Options& o) : o_(o) {
-        if (o.frames) checker_.emplace("jtracer-mpi", o);
+        if (o.frames) {
+            checker_.emplace("jtracer-mpi", o, o.region);
+            if (o.region_output) checker_->fingerprint_frames();
+        }
     }
 
     // The first frame from `from` to `last` that is to be rendered, or last + 1.
@@ -262,23 +285,30 @@ class KeptFrames {
     std::optional<jt::frontend::SceneSequence> checker_;
 
     bool keep_output(const std::string& output, const jt::RenderOptions& render,
-                     jt::ImageFormat format, const std::string& what) const {
+                     jt::ImageFormat format,
+                     const std::optional<jt::RenderFingerprint>& fingerprint,
+                     const std::string& what) const {
         // An output that is the scene file is refused by the set-up.
         if (jt::frontend::same_file(output, o_.scene_path)) return false;
-        return jt::frontend::keep_existing_output(
-            "jtracer-mpi", o_.quiet, output, {render.width, render.height, format, std::nullopt},
-            what);
+        jt::frontend::WantedOutput wanted{render.width, render.height, format, std::nullopt};
+        if (o_.region_output)
+            wanted.placement = jt::frontend::region_placement(o_, render, fingerprint);
+        return jt::frontend::keep_existing_output("jtracer-mpi", o_.quiet, output, wanted, what);
     }
 
     bool frame_is_kept(int index) {
         if (!checker_) {
-            const FrameSetup setup = jt::frontend::set_up_frame("jtracer-mpi", o_);
-            return setup.exit_code == exit_ok &&
-                   keep_output(setup.output, setup.render, setup.format, "");
+            const FrameSetup setup = jt::frontend::set_up_frame("jtracer-mpi", o_, o_.region);
+            if (setup.exit_code != exit_ok) return false;
+            const std::optional<jt::RenderFingerprint> fingerprint =
+                o_.region_output ? std::optional(jt::frontend::render_fingerprint(
+                                       setup.scene, setup.render, o_.clock.value_or(0.0)))
+                                 : std::nullopt;
+            return keep_output(setup.output, setup.render, setup.format, fingerprint, "");
         }
         const jt::frontend::SequenceFrame frame =
             checker_->frame(index, false, [&](const jt::frontend::SequenceFrame& f) {
-                return keep_output(f.output, f.render, f.format,
+                return keep_output(f.output, f.render, f.format, f.fingerprint,
                                    " (frame " + std::to_string(f.index) + ")");
             });
         return frame.exit_code == exit_ok && frame.skipped;
@@ -302,13 +332,63 @@ void report_frame(const Options& o, const RankFrame& frame, int index,
               << ", " << ranks << (ranks == 1 ? " rank" : " ranks") << "\n";
 }
 
+// As a render refuses it (and jtracer-cli --check): a region file under a
+// scene's filename.png. Reported here; true when refused.
+bool region_output_refused(const Options& o, const std::string& output) {
+    const std::optional<std::string> refused =
+        jt::frontend::region_output_refusal("jtracer-mpi", o, o, output);
+    if (refused) std::cerr << *refused;
+    return refused.has_value();
+}
+
+// --check, on rank 0: each frame set up (read at its clock and validated) as
+// a render would set it up, and nothing more.
+int check_scene(const Options& o) {
+    if (!o.frames) {
+        const FrameSetup setup = jt::frontend::set_up_frame("jtracer-mpi", o, o.region);
+        std::cerr << setup.message;
+        if (setup.exit_code != exit_ok) return setup.exit_code;
+        if (region_output_refused(o, setup.output)) return exit_usage;
+        if (!o.quiet) std::cerr << o.scene_path << ": no errors\n";
+        return exit_ok;
+    }
+    jt::frontend::SceneSequence sequence("jtracer-mpi", o, o.region);
+    const jt::frontend::FrameRange range = sequence.range();
+    for (int index = range.first; index <= range.last; ++index) {
+        const jt::frontend::SequenceFrame frame = sequence.frame(index, false);
+        std::cerr << frame.message;
+        if (frame.exit_code != exit_ok) return frame.exit_code;
+        if (index == range.first && region_output_refused(o, frame.output)) return exit_usage;
+    }
+    if (!o.quiet)
+        std::cerr << o.scene_path << ": no errors in frames " << range.first << ".." << range.last
+                  << "\n";
+    return exit_ok;
+}
+
 int run(int argc, char** argv, int rank, int ranks) {
     const auto start = Clock::now();
     ParsedOptions parsed = parse_options(argc, argv, rank == 0);
     if (parsed.exit_code) return *parsed.exit_code;
     const Options& o = parsed.options;
+    // The other ranks have nothing to do: every rank would find the same.
+    if (o.check_only) return rank == 0 ? check_scene(o) : exit_ok;
+    // Only the file name travels: a pipe (a FIFO, /dev/stdin) gives its text
+    // to the one rank that reads it first, and the others would wait for
+    // theirs forever. Every rank sees the same and stops alike.
+    if (ranks > 1 && jt::frontend::is_stream(o.scene_path)) {
+        if (rank == 0)
+            std::cerr << "jtracer-mpi: the scene '" << o.scene_path
+                      << "' is a pipe or a device, which only one of the " << ranks
+                      << " ranks could read: save it to a file at the same path on every "
+                         "machine\nRun 'jtracer-mpi --help' for the options.\n";
+        return exit_usage;
+    }
     std::optional<jt::frontend::SceneSequence> sequence;
-    if (o.frames) sequence.emplace("jtracer-mpi", o);
+    if (o.frames) {
+        sequence.emplace("jtracer-mpi", o, o.region);
+        if (o.region_output) sequence->fingerprint_frames();
+    }
     jt::frontend::SceneSequence* frames = sequence ? &*sequence : nullptr;
     const jt::frontend::FrameRange range =
         sequence ? sequence->range() : jt::frontend::FrameRange{};
@@ -340,7 +420,8 @@ int run(int argc, char** argv, int rank, int ranks) {
         if (workers_wait)
             for (int worker = 1; worker < ranks; ++worker)
                 send_frame(worker, more ? index : no_more_frames);
-        if (signal != 0) return stop_for_signal(signal, written_before(range, index), false);
+        if (signal != 0)
+            return stop_for_signal(signal, written_before(range, index, rendered), false);
         if (!more) break;
         const auto frame_start = Clock::now();
         RankFrame frame = set_up_rank(o, frames, index);
@@ -352,7 +433,8 @@ int run(int argc, char** argv, int rank, int ranks) {
                 frame.mine.exit_code = exit_io_error;
                 frame.mine.message +=
                     "jtracer-mpi: " + writable.error().message + "; " +
-                    (o.frames ? written_before(range, index) : "nothing was rendered") + "\n";
+                    (o.frames ? written_before(range, index, rendered) : "nothing was rendered") +
+                    "\n";
             }
         const RankSetUp& mine = frame.mine;
         const double setup_seconds =
@@ -394,7 +476,14 @@ int run(int argc, char** argv, int rank, int ranks) {
             mine.frame, frame.render.width, frame.render.height, mine.tiles, settings,
             [] { return jt::frontend::stop_signal() != 0; },
             [&](const jt::Image8& image) {
-                written = jt::write_image(frame.output, image, frame.format);
+                // A region file keeps the window's pixels alone and records
+                // where they belong, for jtracer-merge.
+                written =
+                    o.region_output
+                        ? jt::write_region_bmp(
+                              frame.output, jt::crop_image(image, *frame.render.region),
+                              jt::frontend::region_placement(o, frame.render, frame.fingerprint))
+                        : jt::write_image(frame.output, image, frame.format);
                 return static_cast<bool>(*written);
             });
         display.finish();
@@ -407,7 +496,7 @@ int run(int argc, char** argv, int rank, int ranks) {
         if (!result.complete)
             return stop_for_signal(
                 jt::frontend::stop_signal() != 0 ? jt::frontend::stop_signal() : SIGINT,
-                written_before(range, index), ranks > 1);
+                written_before(range, index, rendered), ranks > 1);
         workers_wait = result.another_frame;
         result.stats.setup_seconds = setup_seconds;
         std::vector<RankStats> stats = result.rank_stats;

@@ -36,6 +36,8 @@ ParsedOptions parse_options(int argc, char** argv, bool speaks) {
         "  mpirun -np 4 jtracer-mpi scenes/showcase.jts -o shot.bmp --width 3840 --height 2160\n"
         "  mpirun --hostfile hosts -np 16 jtracer-mpi scene.jts --samples 16 --stats\n"
         "  mpirun -np 4 jtracer-mpi scenes/orbit.jts --frames 48 -o orbit-%04d.png\n"
+        "  mpirun -np 4 jtracer-mpi --check scene.jts      only checks the scene, on rank 0\n"
+        "  mpirun -np 4 jtracer-mpi scene.jts --region 0,0,1920,540 --region-output -o top.bmp\n"
         "\n"
         "Every rank reads the scene file itself (it must be at the same path on every\n"
         "machine). Rank 0 hands out tiles on demand, renders tiles itself in between, and\n"
@@ -46,6 +48,7 @@ ParsedOptions parse_options(int argc, char** argv, bool speaks) {
         "a rank that dies or an interrupt aborts the whole job (non-zero, nothing written).\n");
     frontend::add_version_flag(app, "jtracer-mpi");
     frontend::add_render_flags(app, o);
+    frontend::add_region_flags(app, o);
     app.add_option("--tile-size", o.tile_size,
                    "Side of the square tiles handed out to the ranks, in pixels (default 128)")
         ->check(CLI::Range(16, 4096))
@@ -59,6 +62,9 @@ ParsedOptions parse_options(int argc, char** argv, bool speaks) {
                    "(default 10)")
         ->check(CLI::Range(2.0, 3600.0))
         ->type_name("SECONDS");
+    app.add_flag("--check", o.check_only,
+                 "Only parse and validate the scene (each frame's, with --frames), on rank 0; "
+                 "write nothing");
     app.add_flag("--skip-existing", o.skip_existing,
                  "Keep an image already there (on rank 0's machine) and complete instead of "
                  "rendering it again (with --frames, frame by frame): for rerunning a job after "
@@ -85,6 +91,15 @@ ParsedOptions parse_options(int argc, char** argv, bool speaks) {
                 if (o.output)
                     if (auto refused = frontend::output_refusal(*o.output))
                         throw CLI::ValidationError("-o/--output", *refused);
+                frontend::check_region_flags(o, o.output);
+                if (o.skip_existing && o.region && !o.region_output)
+                    throw CLI::ValidationError(
+                        "--skip-existing",
+                        "with --region, needs --region-output: a whole-frame image does not "
+                        "record which region it holds, a region file does");
+                if (o.skip_existing && o.check_only)
+                    throw CLI::ValidationError("--skip-existing",
+                                               "not with --check, which writes nothing");
                 if (o.skip_existing)
                     if (std::optional<std::string> why = frontend::skip_existing_refusal(o))
                         throw CLI::ValidationError("--skip-existing", *why);

@@ -5,11 +5,11 @@
 
 namespace jt::mpi {
 
-std::vector<PixelRect> cut_work_tiles(int width, int height, int size) {
+std::vector<PixelRect> cut_work_tiles(const PixelRect& area, int size) {
     std::vector<PixelRect> tiles;
-    for (int top = height; top > 0; top -= size)
-        for (int x = 0; x < width; x += size)
-            tiles.push_back({x, std::max(0, top - size), std::min(width, x + size), top});
+    for (int top = area.y1; top > area.y0; top -= size)
+        for (int x = area.x0; x < area.x1; x += size)
+            tiles.push_back({x, std::max(area.y0, top - size), std::min(area.x1, x + size), top});
     return tiles;
 }
 

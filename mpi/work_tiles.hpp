@@ -10,9 +10,10 @@
 
 namespace jt::mpi {
 
-// Squares of `size` pixels (Image8 coordinates), clipped to the frame, from the
-// top row of tiles down, so that the image fills in reading order.
-std::vector<PixelRect> cut_work_tiles(int width, int height, int size);
+// Squares of `size` pixels (Image8 coordinates) covering `area` (the whole
+// frame, or --region's window), clipped to it, from the top row of tiles
+// down, so that the image fills in reading order.
+std::vector<PixelRect> cut_work_tiles(const PixelRect& area, int size);
 
 struct WorkTile {
     Image8 pixels;  // the tile's own size, row 0 at its bottom

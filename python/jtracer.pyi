@@ -9,7 +9,7 @@ __version__: str
 version_string: str
 
 Image = npt.NDArray[np.uint8]  # (height, width, 3), the top row first
-PathLike = Union[str, os.PathLike[str]]
+PathLike = Union[str, bytes, os.PathLike[str], os.PathLike[bytes]]
 Vector = Tuple[float, float, float]
 
 class Diagnostic:

@@ -72,6 +72,26 @@ std::string size_text(int width, int height) {
     return std::to_string(width) + "x" + std::to_string(height);
 }
 
+// Why a region part there is not the one wanted: another region, or this
+// region of another render (a stale part of an earlier version of the scene).
+std::string part_difference(const RegionPlacement& there, const RegionPlacement& wanted) {
+    if (there.frame_width != wanted.frame_width || there.frame_height != wanted.frame_height ||
+        !(there.region == wanted.region))
+        return "it holds another region (" + format_frame_region(there.region) + " of a " +
+               size_text(there.frame_width, there.frame_height) + " frame)";
+    if (!there.fingerprint || !wanted.fingerprint)
+        return "it is this region, but records no render fingerprint (an older jtracer-cli)";
+    const RenderFingerprint& a = *there.fingerprint;
+    const RenderFingerprint& b = *wanted.fingerprint;
+    std::string what;
+    auto add = [&](const char* name) { what += (what.empty() ? "" : ", ") + std::string(name); };
+    if (a.scene != b.scene) add("the scene's content");
+    if (a.samples != b.samples) add("samples");
+    if (a.camera != b.camera || a.camera_name != b.camera_name) add("camera");
+    if (a.clock != b.clock) add("clock");
+    return "it is this region of another render (differing in " + what + ")";
+}
+
 }  // namespace
 
 ExistingOutput check_existing_output(const std::string& path, const WantedOutput& wanted) {
@@ -96,10 +116,7 @@ ExistingOutput check_existing_output(const std::string& path, const WantedOutput
         Expected<RegionPart> part = read_region_bmp(path);
         if (!part) return refuse(part.error().message);
         if (!(part->placement == *wanted.placement))
-            return refuse("it holds another region or render (" +
-                          format_frame_region(part->placement.region) + " of a " +
-                          size_text(part->placement.frame_width, part->placement.frame_height) +
-                          " frame)");
+            return refuse(part_difference(part->placement, *wanted.placement));
         existing.keep = true;
         return existing;
     }

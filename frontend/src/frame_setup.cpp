@@ -1,8 +1,12 @@
 #include "jtracer/frontend/frame_setup.hpp"
 
+#include "jtracer/frontend/pipe_wait_notice.hpp"
 #include "jtracer/parallel_chunks.hpp"
 #include "jtracer/scene_file.hpp"
 #include "jtracer/validate.hpp"
+
+#include <string_view>
+#include <vector>
 
 namespace jt::frontend {
 
@@ -49,8 +53,11 @@ FrameSetup set_up_frame(std::string_view program, const RenderFlags& flags,
                         const std::optional<FrameRegion>& region) {
     // Without the source map: check_scene builds it only if there is something to
     // locate. A render needs the scene, not the text: a large one is given back.
-    Expected<LoadedScene> read = load_scene_file(flags.scene_path, parse_options_for(flags),
-                                                 TextKeeping::given_back_when_large);
+    Expected<LoadedScene> read = [&] {
+        const PipeWaitNotice notice(program, flags.scene_path);
+        return load_scene_file(flags.scene_path, parse_options_for(flags),
+                               TextKeeping::given_back_when_large);
+    }();
     if (!read) {
         FrameSetup setup;
         setup.exit_code = exit_io_error;
@@ -99,7 +106,11 @@ FrameSetup set_up_loaded(std::string_view program, const RenderFlags& flags, Loa
         check_scene(loaded, {.locate_warnings = !flags.quiet,
                              .validation = {.run_chunks = parallel_chunks(flags.threads),
                                             .primitives_as_parsed = as_parsed}});
-    name_setting_flags(diagnostics, flags.names);
+    std::vector<std::string_view> passed;
+    if (flags.width) passed.push_back("width");
+    if (flags.height) passed.push_back("height");
+    if (flags.samples) passed.push_back("samples");
+    name_setting_flags(diagnostics, flags.names, passed);
     const bool errors = has_errors(diagnostics);
     if (flags.quiet && !errors) diagnostics.clear();  // quiet drops warnings, never errors
     setup.message = format_diagnostics(diagnostics, loaded);

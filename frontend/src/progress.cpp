@@ -34,7 +34,8 @@ std::string format_duration(double seconds) {
     return text;
 }
 
-std::string render_summary(int width, int height, int samples, const RenderProgress& progress) {
+std::string render_summary(int width, int height, int samples, const RenderProgress& progress,
+                           const std::optional<FrameRegion>& region) {
     double mrays = static_cast<double>(progress.rays) / 1e6;
     double rate = progress.seconds > 0.0 ? mrays / progress.seconds : 0.0;
     char rays[48];
@@ -43,10 +44,15 @@ std::string render_summary(int width, int height, int samples, const RenderProgr
                       static_cast<unsigned long long>(progress.rays));
     else
         std::snprintf(rays, sizeof rays, "%.2f M rays", mrays);
-    char text[200];
-    std::snprintf(text, sizeof text, "%dx%d, %d sample%s, %s, %s, %.2f Mrays/s", width, height,
-                  samples, samples == 1 ? "" : "s", format_duration(progress.seconds).c_str(), rays,
-                  rate);
+    char size[120];
+    if (region)
+        std::snprintf(size, sizeof size, "%dx%d (region %s of %dx%d)", region->width(),
+                      region->height(), format_frame_region(*region).c_str(), width, height);
+    else
+        std::snprintf(size, sizeof size, "%dx%d", width, height);
+    char text[300];
+    std::snprintf(text, sizeof text, "%s, %d sample%s, %s, %s, %.2f Mrays/s", size, samples,
+                  samples == 1 ? "" : "s", format_duration(progress.seconds).c_str(), rays, rate);
     return text;
 }
 

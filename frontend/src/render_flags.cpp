@@ -207,10 +207,12 @@ ParseOptions scene_value_options(const std::vector<std::string>& defines,
     return options;
 }
 
-void name_setting_flags(std::vector<Diagnostic>& diagnostics, const ArgumentNames& names) {
+void name_setting_flags(std::vector<Diagnostic>& diagnostics, const ArgumentNames& names,
+                        std::span<const std::string_view> passed) {
     // The settings a renderer's user can set beside the file.
     for (Diagnostic& d : diagnostics)
-        if (d.setting == "width" || d.setting == "height" || d.setting == "samples")
+        if ((d.setting == "width" || d.setting == "height" || d.setting == "samples") &&
+            std::find(passed.begin(), passed.end(), d.setting) == passed.end())
             d.message.append(" or pass ").append(names.name(d.setting)).append(names.after_pass);
 }
 

@@ -1,6 +1,7 @@
 #include "jtracer/frontend/scene_sequence.hpp"
 
 #include "jtracer/frontend/command_line.hpp"
+#include "jtracer/frontend/pipe_wait_notice.hpp"
 #include "jtracer/scene_file.hpp"
 
 #include <filesystem>
@@ -24,9 +25,11 @@ FrameSetup SceneSequence::set_up(double clock, bool& reads_clock) {
     options.earlier = &earlier_;
     // A scene from a pipe (a named pipe, bash's <(...)) is read once: read
     // again, it would be empty, or wait for good for a writer that is gone.
-    Expected<LoadedScene> read = piped_text_
-                                     ? load_scene_text(*piped_text_, flags.scene_path, options)
-                                     : load_scene_file(flags.scene_path, options);
+    Expected<LoadedScene> read = [&] {
+        if (piped_text_) return load_scene_text(*piped_text_, flags.scene_path, options);
+        const PipeWaitNotice notice(program_, flags.scene_path);
+        return load_scene_file(flags.scene_path, options);
+    }();
     if (read && !piped_text_ && is_stream(flags.scene_path)) piped_text_ = read->text;
     earlier_.primitives = {};  // taken, or of other texts
     if (!read) {

@@ -25,4 +25,13 @@ std::string sequence_summary(int total, int written, int kept, double seconds) {
            " in " + time + "\n";
 }
 
+std::string frames_there(int first, int index, int kept) {
+    const std::string frames = "frames " + std::to_string(first) + ".." + std::to_string(index - 1);
+    const int written = index - first - kept;
+    if (kept == 0) return frames + " were written";
+    if (written == 0) return frames + " were kept, already there";
+    return frames + " are there (" + std::to_string(written) + " written, " + std::to_string(kept) +
+           " kept)";
+}
+
 }  // namespace jt::frontend

@@ -58,7 +58,7 @@ _jtracer() {
     jtracer-mpi)
         options='-h --help --version -o --output --camera --width --height --samples --threads
             -q --quiet --progress --tile-size --rank-timeout --stats --define --clock --frames
-            --frame-range --skip-existing'
+            --frame-range --skip-existing --region --region-output --check'
         ;;
     jtracer-merge)
         options='-h --help --version -o --output -q --quiet'

@@ -14,6 +14,7 @@
 #include <pybind11/pybind11.h>
 
 #include <array>
+#include <filesystem>
 #include <memory>
 #include <mutex>
 #include <optional>
@@ -56,6 +57,23 @@ auto without_gil(Work&& work) {
 // Raises OSError with the core's message ("cannot read 'a.png': no such file").
 [[noreturn]] void raise_os_error(const std::string& message);
 
+// Arguments converted with errors that name them (arguments.cpp): TypeError
+// for the wrong type, ValueError for a wrong value ("width: 1..65535, not 0",
+// "path: embedded null byte"). `name` is the argument's as the user wrote it.
+std::filesystem::path path_argument(const py::handle& value, const std::string& name);
+std::string text_argument(const py::handle& value, const std::string& name);
+std::optional<std::string> optional_text_argument(const py::handle& value, const std::string& name);
+// An int (not a bool) in low..high.
+int int_argument(const py::handle& value, const std::string& name, int low, int high);
+std::optional<int> optional_int_argument(const py::handle& value, const std::string& name, int low,
+                                         int high);
+// A real number (an int or float, not a bool or str) as a double.
+double number_argument(const py::handle& value, const std::string& name);
+// None, or a dict (a copy of any other Mapping).
+std::optional<py::dict> optional_dict_argument(const py::handle& value, const std::string& name);
+// None, or four ints x0, y0, x1, y1, each 0..kMaxImageSide.
+std::optional<std::array<int, 4>> region_argument(const py::handle& value);
+
 // Arrays, read_image, write_image, diff (images.cpp).
 void bind_images(py::module_& m);
 // An image as a (height, width, 3) uint8 array, top row first: a copy, or,
@@ -78,7 +96,8 @@ struct PythonScene {
     std::shared_ptr<const PreparedScene> prepared;
 };
 
-// Scene.render's arguments, as Python passes them (None: the scene's own).
+// Scene.render's arguments, converted and in the command line's ranges
+// (nullopt: the scene's own).
 struct RenderArguments {
     std::optional<int> width, height, samples;
     std::optional<std::string> camera;
@@ -87,7 +106,11 @@ struct RenderArguments {
     py::object progress;                       // None or a callable taking a fraction
 };
 
-// Scene.render (render.cpp).
+// Scene.render (render.cpp): its arguments as Python passes them, then the render.
+RenderArguments render_arguments(const py::handle& width, const py::handle& height,
+                                 const py::handle& samples, const py::handle& camera,
+                                 const py::handle& threads, const py::handle& region,
+                                 py::object progress);
 py::array_t<std::uint8_t> render_scene(PythonScene& scene, const RenderArguments& arguments);
 
 }  // namespace jt::python

@@ -11,8 +11,6 @@
 #include "jtracer/image_file.hpp"
 #include "jtracer/limits.hpp"
 
-#include <pybind11/stl/filesystem.h>
-
 #include <algorithm>
 #include <cmath>
 #include <cstring>
@@ -24,18 +22,19 @@ namespace jt::python {
 
 namespace {
 
-Image8 from_array(const py::array& array) {
+// `name` is the argument's, first in the message as for every argument.
+Image8 from_array(const py::array& array, const std::string& name) {
     if (!py::isinstance<py::array_t<std::uint8_t>>(array) ||
         !array.dtype().is(py::dtype::of<std::uint8_t>()))
-        throw py::type_error("an image is a uint8 array, not " +
+        throw py::type_error(name + ": a uint8 array, not " +
                              py::str(array.dtype()).cast<std::string>());
     if (array.ndim() != 3 || array.shape(2) != 3)
-        throw py::value_error("an image is an array of shape (height, width, 3), not " +
+        throw py::value_error(name + ": an array of shape (height, width, 3), not " +
                               py::str(py::tuple(array.attr("shape"))).cast<std::string>());
     const auto pixels = array.unchecked<std::uint8_t, 3>();
     const py::ssize_t height = pixels.shape(0), width = pixels.shape(1);
     if (width < 1 || height < 1 || width > kMaxImageSide || height > kMaxImageSide)
-        throw py::value_error("an image is 1.." + std::to_string(kMaxImageSide) +
+        throw py::value_error(name + ": 1.." + std::to_string(kMaxImageSide) +
                               " pixels on each side, not " + std::to_string(width) + "x" +
                               std::to_string(height));
     Image8 image(static_cast<int>(width), static_cast<int>(height));
@@ -61,10 +60,10 @@ Image8 read_or_raise(const std::filesystem::path& path,
 // `name` is the argument's, for the TypeError of anything else: pybind11's
 // own cast failure is a RuntimeError that names no argument or type.
 Image8 image_or_path(const py::object& value, const char* name) {
-    if (py::isinstance<py::array>(value)) return from_array(value.cast<py::array>());
+    if (py::isinstance<py::array>(value)) return from_array(value.cast<py::array>(), name);
     if (py::isinstance<py::str>(value) || py::isinstance<py::bytes>(value) ||
         py::hasattr(value, "__fspath__"))
-        return read_or_raise(value.cast<std::filesystem::path>());
+        return read_or_raise(path_argument(value, name));
     throw py::type_error(std::string(name) +
                          ": an image (a uint8 array) or the path of a BMP or PNG file, not " +
                          py::str(py::type::of(value).attr("__name__")).cast<std::string>());
@@ -101,8 +100,8 @@ py::array_t<std::uint8_t> to_array(Image8&& image) {
 void bind_images(py::module_& m) {
     m.def(
         "read_image",
-        [](const std::filesystem::path& path) {
-            return to_array(read_or_raise(path, read_shown_image));
+        [](const py::object& path) {
+            return to_array(read_or_raise(path_argument(path, "path"), read_shown_image));
         },
         py::arg("path"),
         "Reads a BMP, PNG or JPEG (told apart by their first bytes) as a (height, width, 3) "
@@ -110,8 +109,13 @@ void bind_images(py::module_& m) {
         "its EXIF orientation. Raises OSError when it cannot.");
     m.def(
         "write_image",
-        [](const std::filesystem::path& path, const py::array& array) {
-            const Image8 image = from_array(array);
+        [](const py::object& path_object, const py::object& array) {
+            const std::filesystem::path path = path_argument(path_object, "path");
+            if (!py::isinstance<py::array>(array))
+                throw py::type_error(
+                    "image: a (height, width, 3) uint8 array, not " +
+                    py::str(py::type::of(array).attr("__name__")).cast<std::string>());
+            const Image8 image = from_array(array.cast<py::array>(), "image");
             // Encoding a large PNG takes a while.
             const Expected<void> written =
                 without_gil([&] { return write_image(path, image, format_from_extension(path)); });
@@ -153,9 +157,8 @@ void bind_images(py::module_& m) {
         });
     m.def(
         "diff",
-        [](const py::object& expected, const py::object& actual, int threshold) {
-            if (threshold < 0 || threshold > 255)
-                throw py::value_error("threshold: 0..255, not " + std::to_string(threshold));
+        [](const py::object& expected, const py::object& actual, const py::object& limit) {
+            const int threshold = int_argument(limit, "threshold", 0, 255);
             const Image8 a = image_or_path(expected, "expected");
             const Image8 b = image_or_path(actual, "actual");
             py::gil_scoped_release unlocked;

@@ -58,17 +58,10 @@ class JobThread {
     std::thread thread_;  // last: it starts once the rest is built
 };
 
+// The command line's ranges for the same flags (render_flags.cpp).
+constexpr int kMaxThreads = 4096;
+
 frontend::RenderFlags flags_for(const RenderArguments& a) {
-    auto in_range = [](const char* name, const std::optional<int>& value, int low, int high) {
-        if (value && (*value < low || *value > high))
-            throw py::value_error(std::string(name) + ": " + std::to_string(low) + ".." +
-                                  std::to_string(high) + ", not " + std::to_string(*value));
-    };
-    // The command line's ranges for the same flags (render_flags.cpp).
-    in_range("width", a.width, 1, kMaxImageSide);
-    in_range("height", a.height, 1, kMaxImageSide);
-    in_range("samples", a.samples, kMinSamples, kMaxSamples);
-    in_range("threads", a.threads, 0, 4096);
     frontend::RenderFlags flags;
     flags.width = a.width;
     flags.height = a.height;
@@ -99,6 +92,19 @@ std::string reason(const frontend::FrameSetup& setup, std::string_view program) 
 }
 
 }  // namespace
+
+RenderArguments render_arguments(const py::handle& width, const py::handle& height,
+                                 const py::handle& samples, const py::handle& camera,
+                                 const py::handle& threads, const py::handle& region,
+                                 py::object progress) {
+    return {.width = optional_int_argument(width, "width", 1, kMaxImageSide),
+            .height = optional_int_argument(height, "height", 1, kMaxImageSide),
+            .samples = optional_int_argument(samples, "samples", kMinSamples, kMaxSamples),
+            .camera = optional_text_argument(camera, "camera"),
+            .threads = int_argument(threads, "threads", 0, kMaxThreads),
+            .region = region_argument(region),
+            .progress = std::move(progress)};
+}
 
 py::array_t<std::uint8_t> render_scene(PythonScene& scene, const RenderArguments& arguments) {
     constexpr std::string_view program = "jtracer";

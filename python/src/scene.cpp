@@ -11,7 +11,6 @@
 
 #include <pybind11/operators.h>
 #include <pybind11/stl.h>
-#include <pybind11/stl/filesystem.h>
 
 #include <algorithm>
 #include <cmath>
@@ -111,7 +110,9 @@ std::shared_ptr<PythonScene> checked_scene(LoadedScene loaded) {
 // (a vector), or a str holding the value as a file writes it ('"out.png"' for a
 // string, "2 * pi" for an expression). Raises TypeError or ValueError.
 // `clock` is --clock's value: any finite number (docs/language.md §15.4).
-ParseOptions options_with(const std::optional<py::dict>& defines, double clock) {
+ParseOptions options_with(const py::handle& defines_object, const py::handle& clock_object) {
+    const std::optional<py::dict> defines = optional_dict_argument(defines_object, "defines");
+    const double clock = number_argument(clock_object, "clock");
     ParseOptions options;
     options.source_map = false;
     if (!std::isfinite(clock))
@@ -122,7 +123,7 @@ ParseOptions options_with(const std::optional<py::dict>& defines, double clock) 
     if (!defines) return options;
     for (const auto& [key, value] : *defines) {
         if (!py::isinstance<py::str>(key)) throw py::type_error("defines: the names must be str");
-        const std::string name = key.cast<std::string>();
+        const std::string name = text_argument(key, "defines");
         auto number_text = [&](py::handle v) -> std::string {
             if (py::isinstance<py::bool_>(v) ||
                 !(py::isinstance<py::int_>(v) || py::isinstance<py::float_>(v)))
@@ -143,7 +144,7 @@ ParseOptions options_with(const std::optional<py::dict>& defines, double clock) 
         };
         std::string text;
         if (py::isinstance<py::str>(value)) {
-            text = value.cast<std::string>();
+            text = text_argument(value, "defines['" + name + "']");
         } else if (py::isinstance<py::sequence>(value)) {
             const py::sequence items = value.cast<py::sequence>();
             if (items.size() != 3)
@@ -210,11 +211,11 @@ void bind_scene(py::module_& m) {
              "same scene")
         .def(
             "render",
-            [](PythonScene& s, std::optional<int> width, std::optional<int> height,
-               std::optional<int> samples, std::optional<std::string> camera, int threads,
-               std::optional<std::array<int, 4>> region, py::object progress) {
-                return render_scene(s, {width, height, samples, std::move(camera), threads, region,
-                                        std::move(progress)});
+            [](PythonScene& s, const py::object& width, const py::object& height,
+               const py::object& samples, const py::object& camera, const py::object& threads,
+               const py::object& region, py::object progress) {
+                return render_scene(s, render_arguments(width, height, samples, camera, threads,
+                                                        region, std::move(progress)));
             },
             py::arg("width") = py::none(), py::arg("height") = py::none(),
             py::arg("samples") = py::none(), py::arg("camera") = py::none(), py::arg("threads") = 0,
@@ -237,11 +238,11 @@ void bind_scene(py::module_& m) {
 
     m.def(
         "load",
-        [](const std::filesystem::path& path, std::optional<py::dict> defines, double clock) {
+        [](const py::object& path, const py::object& defines, const py::object& clock) {
             const ParseOptions options = options_with(defines, clock);
-            return checked_scene(read_file(path, options));
+            return checked_scene(read_file(path_argument(path, "path"), options));
         },
-        py::arg("path"), py::arg("defines") = py::none(), py::arg("clock") = 0.0,
+        py::arg("path"), py::arg("defines") = py::none(), py::arg("clock") = py::float_(0.0),
         "Reads and checks a .jts file. Raises SceneError (with .diagnostics) when it has "
         "errors, OSError when it cannot be read. defines, a dict, sets names as "
         "jtracer-cli's --define NAME=VALUE does: a number, three numbers (a vector), or a "
@@ -251,8 +252,10 @@ void bind_scene(py::module_& m) {
         "--clock V (a finite number; default 0).");
     m.def(
         "parse",
-        [](std::string text, const std::filesystem::path& path, std::optional<py::dict> defines,
-           double clock) {
+        [](const py::object& text_object, const py::object& path_object, const py::object& defines,
+           const py::object& clock) {
+            std::string text = text_argument(text_object, "text");
+            const std::filesystem::path path = path_argument(path_object, "path");
             const ParseOptions options = options_with(defines, clock);
             // A text of no file has no main file: its includes are read from
             // the working directory and its messages name the main text
@@ -268,7 +271,7 @@ void bind_scene(py::module_& m) {
             return checked_scene(std::move(*loaded));
         },
         py::arg("text"), py::arg("path") = "<string>", py::arg("defines") = py::none(),
-        py::arg("clock") = 0.0,
+        py::arg("clock") = py::float_(0.0),
         "Parses and checks .jts text. `path` names it in diagnostics, and its folder is "
         "where the scene's relative file names (includes, meshes, image maps) are found; "
         "the default, \"<string>\", looks in the current directory. defines and clock as for "
@@ -276,11 +279,12 @@ void bind_scene(py::module_& m) {
         "Raises SceneError.");
     m.def(
         "check",
-        [](const std::filesystem::path& path, std::optional<py::dict> defines, double clock) {
-            const LoadedScene loaded = read_file(path, options_with(defines, clock));
+        [](const py::object& path, const py::object& defines, const py::object& clock) {
+            const LoadedScene loaded =
+                read_file(path_argument(path, "path"), options_with(defines, clock));
             return diagnostic_list(findings(loaded), loaded);
         },
-        py::arg("path"), py::arg("defines") = py::none(), py::arg("clock") = 0.0,
+        py::arg("path"), py::arg("defines") = py::none(), py::arg("clock") = py::float_(0.0),
         "What `jtracer-cli --check` reports for a .jts file, errors and warnings, as a list "
         "of Diagnostic objects (empty: none); defines and clock as for load(). Raises "
         "OSError when it cannot be read.");

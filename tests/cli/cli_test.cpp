@@ -282,6 +282,16 @@ TEST_F(Cli, AnOutputThatCannotBeWrittenStopsBeforeTheRender) {
     EXPECT_EQ(r.err.find("frame 1, clock"), std::string::npos) << r.err;
     EXPECT_EQ(outputs(), (std::vector<std::string>{"f0", "taken.bmp"}));
     EXPECT_TRUE(fs::exists(dir / "f0" / "shot.bmp"));
+    // A rerun with --skip-existing wrote none of the frames it kept.
+    fs::create_directory(dir / "f1");
+    r = run("scene.jts --frames 3 --skip-existing -o 'f%d/shot.bmp'");
+    EXPECT_EQ(r.code, 3);
+    EXPECT_NE(r.err.find("cannot write 'f2/shot.bmp': No such file or directory; frames 0..1 "
+                         "are there (1 written, 1 kept)\n"),
+              std::string::npos)
+        << r.err;
+    r = run("scene.jts --frames 3 --skip-existing -o 'f%d/shot.bmp'");
+    EXPECT_NE(r.err.find("; frames 0..1 were kept, already there\n"), std::string::npos) << r.err;
 }
 
 // A folder on a read-only file system (a render share mounted ro) was said to
@@ -360,6 +370,11 @@ TEST_F(Cli, ALensWithOneSampleWarnsUnlessSamplesArePassed) {
         << r.err;
     EXPECT_NE(r.err.find("set 'samples' to 16 or more or pass --samples"), std::string::npos)
         << r.err;
+    // --samples 1 is what the warning is about: it does not suggest the flag.
+    r = run("--progress none lens.jts -o out.bmp --samples 1");
+    EXPECT_EQ(r.code, 0) << r.err;
+    EXPECT_NE(r.err.find("set 'samples' to 16 or more"), std::string::npos) << r.err;
+    EXPECT_EQ(r.err.find("pass --samples"), std::string::npos) << r.err;
     r = run("--progress none lens.jts -o out.bmp --samples 4");
     EXPECT_EQ(r.code, 0) << r.err;
     EXPECT_EQ(r.err.find("aperture"), std::string::npos) << r.err;
@@ -434,6 +449,59 @@ TEST_F(Cli, IoErrorsExitThreeAndWriteNothing) {
     EXPECT_TRUE(outputs().empty());
 }
 
+// A named pipe as the scene is read once something writes it; a read that
+// waits says what for, rather than looking hung. A writer that is there at
+// once goes unremarked.
+TEST_F(Cli, ASceneFromAPipeThatWaitsSaysWhatFor) {
+    ASSERT_EQ(run_shell("mkfifo pipe.jts").code, 0);
+    test::ProgramRun r =
+        run_shell("(sleep 2; cat scene.jts > pipe.jts) & '" JT_CLI "' -q pipe.jts -o out.bmp");
+    EXPECT_EQ(r.code, 0) << r.err;
+    EXPECT_NE(r.err.find("jtracer-cli: waiting for the scene from the pipe 'pipe.jts': it is "
+                         "read once something writes it and closes it"),
+              std::string::npos)
+        << r.err;
+    EXPECT_TRUE(exists("out.bmp"));
+    r = run_shell("cat scene.jts | '" JT_CLI "' -q /dev/stdin -o piped.bmp");
+    EXPECT_EQ(r.code, 0) << r.err;
+    EXPECT_EQ(r.err, "");
+    EXPECT_EQ(test::read_file(dir / "piped.bmp"), test::read_file(dir / "out.bmp"));
+}
+
+// Symbolic links that loop are named, link by link, wherever the loop is: the
+// scene, a folder on its path, the output, an image map.
+TEST_F(Cli, ACycleOfSymbolicLinksIsNamedLinkByLink) {
+    fs::create_symlink("b.jts", dir / "a.jts");
+    fs::create_symlink("a.jts", dir / "b.jts");
+    test::ProgramRun r = run("a.jts -o out.bmp");
+    EXPECT_EQ(r.code, 3);
+    EXPECT_NE(r.err.find("cannot read 'a.jts': a cycle of symbolic links: 'a.jts' -> 'b.jts' -> "
+                         "'a.jts'"),
+              std::string::npos)
+        << r.err;
+    fs::create_symlink("up", dir / "down");
+    fs::create_symlink("down", dir / "up");
+    r = run("up/scene.jts -o out.bmp");
+    EXPECT_EQ(r.code, 3);
+    EXPECT_NE(r.err.find("a cycle of symbolic links: 'up' -> 'down' -> 'up'"), std::string::npos)
+        << r.err;
+    fs::create_symlink("twin.bmp", dir / "out.bmp");
+    fs::create_symlink("out.bmp", dir / "twin.bmp");
+    r = run("scene.jts -o out.bmp");
+    EXPECT_EQ(r.code, 3);
+    EXPECT_NE(r.err.find("cannot write 'out.bmp': a cycle of symbolic links: 'out.bmp' -> "
+                         "'twin.bmp' -> 'out.bmp'"),
+              std::string::npos)
+        << r.err;
+    write("mapped.jts", R"(
+render_settings { width: 8; height: 8; }
+scene { sphere { center: <0, 0, 0>; radius: 1; material { image_map: "twin.bmp"; } } }
+)");
+    r = run("mapped.jts -o mapped.bmp");
+    EXPECT_EQ(r.code, 1);
+    EXPECT_NE(r.err.find("'twin.bmp' -> 'out.bmp' -> 'twin.bmp'"), std::string::npos) << r.err;
+}
+
 // A picture named by the scene that is a device is an error at its string,
 // not a read that never ends.
 TEST_F(Cli, DeviceAsImageMapOrSkyIsAnErrorAtItsString) {
@@ -500,6 +568,39 @@ TEST_F(Cli, HelpAndVersion) {
     // The project version from CMake, then the git revision when built from git.
     EXPECT_EQ(r.out, "jtracer-cli " + std::string(jt::version_string()) + "\n");
     EXPECT_EQ(std::string(jt::version_string()).rfind(JT_VERSION_STRING, 0), 0u);
+}
+
+// CLI11's range check said "Value 2.5 not in range 1 to 1000000" of a number
+// that is in range but not whole, and an unknown option was reported as a
+// missing one.
+TEST_F(Cli, UsageErrorsNameTheOptionAndWhatItExpects) {
+    test::ProgramRun r = run("scene.jts --frames 2.5");
+    EXPECT_EQ(r.code, 2);
+    EXPECT_EQ(r.err,
+              "jtracer-cli: --frames: '2.5' is not a whole number (expected 1 to 1000000)\n"
+              "Run 'jtracer-cli --help' for the options.\n");
+    r = run("scene.jts --width abc");
+    EXPECT_NE(r.err.find("--width: 'abc' is not a whole number (expected 1 to 65535)"),
+              std::string::npos)
+        << r.err;
+    r = run("scene.jts --width 0");
+    EXPECT_NE(r.err.find("--width: 0 is out of range (expected 1 to 65535)"), std::string::npos)
+        << r.err;
+    r = run("--bogus");
+    EXPECT_EQ(r.code, 2);
+    EXPECT_NE(r.err.find("jtracer-cli: unknown option '--bogus'\n"), std::string::npos) << r.err;
+    EXPECT_TRUE(outputs().empty());
+}
+
+// `jtracer-cli /dev/stdin < fifo`: reopening /dev/stdin opened the named pipe
+// anew, which waits for a writer though the one that filled it had gone.
+TEST_F(Cli, ASceneOnStandardInputFromANamedPipeIsRead) {
+    ASSERT_EQ(run_shell("mkfifo p").code, 0);
+    test::ProgramRun r = run_shell("timeout 30 '" JT_CLI
+                                   "' /dev/stdin -q -o out.bmp < p & "
+                                   "cat scene.jts > p; wait $!; echo \"code $?\"");
+    EXPECT_NE(r.out.find("code 0"), std::string::npos) << r.out << r.err;
+    EXPECT_TRUE(fs::exists(dir / "out.bmp"));
 }
 
 }  // namespace

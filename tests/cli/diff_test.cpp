@@ -178,6 +178,37 @@ TEST_F(Diff, ADashHeatMapIsStandardOutput) {
         << r.err;
 }
 
+// A JUnit report sent to standard output, however it is spelled, while the
+// heat map or --json's object goes there too, would make one stream of two
+// documents: refused before anything is read. The plain report comes first.
+TEST_F(Diff, AJunitReportOnStandardOutputIsNotMixedWithAnotherDocument) {
+    Image8 b = gradient();
+    b.pixel(1, 1)[1] = static_cast<std::uint8_t>(b.pixel(1, 1)[1] + 30);
+    write_png_file("b.png", b);
+    for (const std::string junit : {"/dev/stdout", "/dev/fd/1"}) {
+        ProgramRun r = diff("a.png b.png -o - --junit " + junit + " | cat > mixed.out");
+        EXPECT_NE(r.err.find("--junit: '" + junit +
+                             "' is standard output, which already carries the heat map (-o -)"),
+                  std::string::npos)
+            << r.err;
+        EXPECT_EQ(test::read_file(dir / "mixed.out"), "");
+        r = diff("a.png b.png --json --junit " + junit + " | cat > mixed.out");
+        EXPECT_NE(r.err.find("which already carries --json's object"), std::string::npos) << r.err;
+        EXPECT_EQ(test::read_file(dir / "mixed.out"), "");
+    }
+    // The exit code of the program, not of the pipe's end.
+    ProgramRun r =
+        run("(" + cli + " diff a.png b.png -o - --junit /dev/stdout; echo $? > code) | cat");
+    EXPECT_EQ(test::read_file(dir / "code"), "2\n") << r.err;
+    r = diff("a.png b.png --junit /dev/stdout | cat > both.out");
+    const std::string both = test::read_file(dir / "both.out");
+    EXPECT_EQ(both.find("a.png: 40x20"), 0u) << both;
+    EXPECT_NE(both.find("<?xml"), std::string::npos) << both;
+    // Standard output sent to /dev/null mixes nothing.
+    r = run(cli + " diff a.png b.png --json --junit /dev/null > /dev/null");
+    EXPECT_EQ(r.code, 1) << r.err;
+}
+
 TEST_F(Diff, DifferentImagesAndDifferentSizes) {
     Image8 black(40, 20);
     write_png_file("black.png", black);
@@ -482,6 +513,17 @@ TEST_F(Expect, RefusesOutputsThatWouldReplaceTheSceneOrTheReference) {
 
 // As `diff` refuses --junit naming its -o: the report would be written over
 // the heat map it points to.
+TEST_F(Expect, RefusesAJunitReportOnTheStandardOutputThatCarriesTheImage) {
+    ProgramRun r = run("(" + cli +
+                       " -q scene.jts -o - --expect ref.png --junit /dev/stdout; echo $? > code)"
+                       " | cat > m.out");
+    EXPECT_EQ(test::read_file(dir / "code"), "2\n") << r.err;
+    EXPECT_NE(r.err.find("is standard output, which already carries the image (-o -)"),
+              std::string::npos)
+        << r.err;
+    EXPECT_EQ(test::read_file(dir / "m.out"), "");
+}
+
 TEST_F(Expect, RefusesAJunitReportThatIsTheHeatMap) {
     Image8 changed = reference;
     changed.pixel(0, 0)[0] = static_cast<std::uint8_t>(changed.pixel(0, 0)[0] ^ 0x80);

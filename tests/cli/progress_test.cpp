@@ -1,4 +1,4 @@
-// --progress log: what a log file gets while a render runs.
+// --progress log: what a log file gets while a render runs; the summary line.
 
 #include "jtracer/frontend/progress.hpp"
 
@@ -78,6 +78,19 @@ TEST(ProgressLog, AJumpPastSeveralWritesTheHighestPassed) {
 
 TEST(ProgressLog, NothingInTheFirstSecond) {
     EXPECT_EQ(logged({0.3, 0.6, 0.9}, 0.5), "");
+}
+
+// The summary names the pixels rendered: a region job's are the region's,
+// not the frame's (`--region 40,20,120,70` of 160x90 rendered 80x50).
+TEST(RenderSummary, SaysTheRegionAndTheFrameItLiesIn) {
+    RenderProgress progress;
+    progress.seconds = 2.0;
+    progress.rays = 4000000;
+    EXPECT_EQ(render_summary(800, 450, 1, progress),
+              "800x450, 1 sample, 2.00 s, 4.00 M rays, 2.00 Mrays/s");
+    EXPECT_EQ(render_summary(160, 90, 16, progress, FrameRegion{40, 20, 120, 70}),
+              "80x50 (region 40,20,120,70 of 160x90), 16 samples, 2.00 s, 4.00 M rays, "
+              "2.00 Mrays/s");
 }
 
 }  // namespace

@@ -297,7 +297,7 @@ TEST_F(HugeImages, SizesOutOfRangeOnTheCommandLineAreUsageErrors) {
         args.insert(args.begin(), "scene.jts");
         ProgramRun r = run(args);
         EXPECT_EQ(r.code, 2) << r.err;
-        EXPECT_NE(r.err.find("not in range"), std::string::npos) << r.err;
+        EXPECT_NE(r.err.find(" is out of range (expected 1 to "), std::string::npos) << r.err;
         EXPECT_EQ(files(), std::vector<std::string>{"scene.jts"});
     }
 }

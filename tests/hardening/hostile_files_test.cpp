@@ -153,10 +153,10 @@ TEST_F(HostileBackgroundMaps, PicturesRefusedAsImageMapsAreRefusedAtTheString) {
 
 TEST_F(HostileBackgroundMaps, MissingFilesDirectoriesAndEmptyNamesAreRefusedAtTheString) {
     write_scene_naming("nowhere.png");
-    expect_refused_everywhere("cannot read 'nowhere.png': No such file or directory");
+    expect_refused_everywhere("cannot read 'nowhere.png': no such file");
     fs::create_directory(dir / "maps");
     write_scene_naming("maps");
-    expect_refused_everywhere("cannot read 'maps': Is a directory");
+    expect_refused_everywhere("cannot read 'maps': it is a directory, not a file");
     write_scene_naming("");
     expect_refused_everywhere(
         "the file name is empty (leave 'background_map' out to show the background colour)");
@@ -464,7 +464,8 @@ TEST_F(HostileModels, GltfBuffersOutsideTheScenesFolderAreRefused) {
     const std::pair<std::string, std::string> cases[] = {
         {"/etc/passwd", "GLTF: could not open referenced file \"/etc/passwd\""},
         {outside, "GLTF: could not open referenced file \"" + outside + "\""},
-        {"../outside.bin", "it refers to 'scene/../outside.bin', outside the folder '" +
+        // Named as the file writes it, from the model's folder.
+        {"../outside.bin", "it refers to '../outside.bin', outside the folder '" +
                                fs::weakly_canonical(fs::absolute(dir / "scene")).string() + "'"},
     };
     for (const auto& [uri, problem] : cases) {

@@ -9,6 +9,7 @@
 #include <gtest/gtest.h>
 
 #include <string>
+#include <utility>
 #include <vector>
 
 namespace jt::test {
@@ -68,13 +69,20 @@ TEST(Limits, GiantLineIsQuotedAsAWindow) {
 }
 
 TEST(Limits, NumbersBeyondDoubleAreOutOfRange) {
-    const std::vector<std::string> numbers{"1e400", "-1e400", "1e-400", "1" + std::string(400, '0'),
-                                           "1e99999999999999999999"};
-    for (const std::string& number : numbers) {
+    // Too small (not zero, yet its nearest double is) is said so.
+    const std::vector<std::pair<std::string, std::string>> numbers{
+        {"1e400", "out of range"},
+        {"-1e400", "out of range"},
+        {"1e-400", "too small"},
+        {"1" + std::string(400, '0'), "out of range"},
+        {"1e99999999999999999999", "out of range"},
+        {"1e-99999999999999999999", "too small"},
+        {"0." + std::string(400, '0') + "1", "too small"}};
+    for (const auto& [number, what] : numbers) {
         SCOPED_TRACE(number);
         ParseResult r = parse_scene(camera + "scene { sphere { radius: " + number + "; } }\n");
         EXPECT_FALSE(r.ok());
-        EXPECT_NE(first_message(r, Severity::error).find("out of range"), std::string::npos)
+        EXPECT_NE(first_message(r, Severity::error).find(what), std::string::npos)
             << first_message(r, Severity::error);
         // A sign is an operator (docs/language.md §15.1): the number starts after it.
         EXPECT_EQ(r.diagnostics[0].pos, (SourcePos{2, number[0] == '-' ? 27 : 26}));

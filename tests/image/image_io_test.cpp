@@ -222,6 +222,39 @@ TEST(ImageFile, ReadsTheBmpKindsAnImageMapReads) {
     }
 }
 
+// An OS/2 1.x BMP (the 12-byte BITMAPCOREHEADER, as ImageMagick's bmp2:
+// writes it) of 24 bits is an image map; read_image and diff read it too,
+// rather than refusing it as the 24-bit reader of jtracer's own files does.
+TEST(ImageFile, ReadsAnOs2BmpAsAnImageMapDoes) {
+    const Image8 image = sample_image();  // 3x2, row 0 at the bottom
+    const std::size_t stride = 12;        // 9 bytes of BGR, padded to 4
+    std::vector<std::uint8_t> b(14 + 12 + stride * 2, 0);
+    b[0] = 'B';
+    b[1] = 'M';
+    b[2] = static_cast<std::uint8_t>(b.size());
+    b[10] = 14 + 12;  // the pixels' offset
+    b[14] = 12;       // the core header's size
+    b[18] = 3;        // width and height, 16 bits each
+    b[20] = 2;
+    b[22] = 1;   // planes
+    b[24] = 24;  // bits a pixel
+    for (int y = 0; y < 2; ++y)
+        for (int x = 0; x < 3; ++x)
+            for (int c = 0; c < 3; ++c)
+                b[26 + stride * static_cast<std::size_t>(y) + 3 * x + c] = image.pixel(x, y)[2 - c];
+    const Expected<Texture> map = decode_texture(b);
+    ASSERT_TRUE(map) << map.error().message;
+    EXPECT_EQ(map->width, 3);
+    const fs::path file = make_scratch_dir("bmp_os2") / "os2.bmp";
+    std::ofstream(file, std::ios::binary)
+        .write(reinterpret_cast<const char*>(b.data()), static_cast<std::streamsize>(b.size()));
+    for (const auto& read : {read_image, read_shown_image}) {
+        const Expected<Image8> back = read(file);
+        ASSERT_TRUE(back) << back.error().message;
+        EXPECT_TRUE(*back == image);
+    }
+}
+
 // A picture in a format image maps do not read says which format it is (a
 // GIF from /usr/share/doc, a PPM from netpbm), not stb_image's "unknown image
 // type"; an empty file says it is empty.

@@ -138,6 +138,9 @@ TEST(Expressions, EvaluationErrorsPointAtTheOperationWithTheValues) {
               "underflows to 0");
     // The first failing operation, left to right.
     EXPECT_EQ(plane_error("1 / 0 + sqrt(-1)"), "1:29: error: division by zero: 1 / 0");
+    // The zero keeps its sign, written or computed.
+    EXPECT_EQ(plane_error("1 / -0"), "1:29: error: division by zero: 1 / -0");
+    EXPECT_EQ(plane_error("1 / (0 * -1)"), "1:29: error: division by zero: 1 / -0");
 }
 
 TEST(Expressions, KindMistakesAreErrorsAtTheOperatorOrCall) {
@@ -208,6 +211,20 @@ TEST(Expressions, AComparisonSaysThereAreNone) {
     EXPECT_EQ(brief("define r = 1 < 2;"),
               "1:13: error: expected ';' after the value of 'define r'" + why);
     EXPECT_EQ(brief("scene { sphere { radius: 1 > 0; } }"),
+              "1:27: error: expected ';' after the value of 'radius'" + why);
+}
+
+// A second '=' is neither an operator nor a comparison: the missing-';'
+// error says so, for a define and for a property alike.
+TEST(Expressions, ASecondEqualsSaysADefineTakesOneValue) {
+    const std::string why =
+        " ('=' is not an operator: it stands once, in 'define NAME = VALUE;', whose value is one "
+        "number, vector or string; there are no comparisons such as '==')";
+    EXPECT_EQ(brief("define r = 1 = 2;"),
+              "1:13: error: expected ';' after the value of 'define r'" + why);
+    EXPECT_EQ(brief("define r = 1 == 2;"),
+              "1:13: error: expected ';' after the value of 'define r'" + why);
+    EXPECT_EQ(brief("scene { sphere { radius: 1 = 2; } }"),
               "1:27: error: expected ';' after the value of 'radius'" + why);
 }
 

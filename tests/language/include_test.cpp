@@ -129,7 +129,13 @@ TEST_F(Include, ElsewhereIsAnErrorAtTheKeyword) {
               "directly in 'scene'");
     EXPECT_EQ(brief(parse("include a;").diagnostics),
               "1:9: error: expected the path of a file in double quotes after 'include', got "
-              "the word 'a'");
+              "the word 'a' (an include takes a string literal, not a name: write 'include "
+              "\"FILE.jts\";')");
+    // A name holding the path: the hint writes its string out.
+    EXPECT_EQ(brief(parse("define s = \"base.inc\";\ninclude s;").diagnostics),
+              "2:9: error: expected the path of a file in double quotes after 'include', got "
+              "the word 's' (an include takes a string literal, not a name: write 'include "
+              "\"base.inc\";')");
     EXPECT_EQ(brief(parse("include \"a.jts\" scene { }").diagnostics),
               "1:16: error: expected ';' after 'include \"a.jts\"'");
     EXPECT_EQ(brief(parse("include \"\";").diagnostics),

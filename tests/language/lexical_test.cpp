@@ -73,6 +73,23 @@ TEST(Numbers, SignsAreOperatorsExceptInAnExponent) {
 TEST(Numbers, OutOfRangeIsAnError) {
     EXPECT_EQ(brief("scene { plane { distance: 1e400; } }"),
               "1:27: error: the number 1e400 is out of range (numbers must be finite doubles)");
+    // Too small is not out of the finite doubles: the message says what it is.
+    const std::string tiny = brief(
+        "scene { plane { distance: 1e-400; }\n"
+        "        plane { distance: 0.0000000000000000000000000000000"
+        "0000000000000000000000000000000000000000000000000000000000"
+        "0000000000000000000000000000000000000000000000000000000000"
+        "0000000000000000000000000000000000000000000000000000000000"
+        "0000000000000000000000000000000000000000000000000000000000"
+        "0000000000000000000000000000000000000000000000000000000000"
+        "0000000000000000001; } }");
+    EXPECT_EQ(tiny,
+              "1:27: error: the number 1e-400 is too small: its nearest double is 0, and only a "
+              "zero may be written as 0 (write 0, or a number of at least 5e-324)\n"
+              "2:27: error: the number 0.00000000000000000000000000000000000000... is too small: "
+              "its nearest double is 0, and only a zero may be written as 0 (write 0, or a "
+              "number of at least 5e-324)");
+    EXPECT_TRUE(parse_clean("scene { plane { distance: 5e-324; } }").ok());
 }
 
 TEST(Numbers, NanAndInfinitySpelledOutAreUnknownNamesThatMustBeFinite) {
@@ -85,6 +102,24 @@ TEST(Numbers, NanAndInfinitySpelledOutAreUnknownNamesThatMustBeFinite) {
     EXPECT_EQ(brief("scene { sphere { center: <0, Infinity, 0>; } }"),
               "1:30: error: unknown name 'Infinity' (names must be defined before they are "
               "used); numbers must be finite");
+}
+
+// POV-Ray's `color rgb <1, 0, 0>` says that a colour is the vector alone.
+TEST(Numbers, PovRayColourWordsSayAColourIsTheVectorAlone) {
+    EXPECT_EQ(brief("scene { sphere { material { pigment: color rgb <1, 0, 0>;\n"
+                    "  diffuse: rgb 1; ambient: Colour; } } }"),
+              "1:38: error: unknown name 'color' (names must be defined before they are used); "
+              "POV-Ray's 'color' is not written here: a colour is the vector <r, g, b> alone, "
+              "like <1, 0.5, 0>\n"
+              "2:12: error: unknown name 'rgb' (names must be defined before they are used); "
+              "POV-Ray's 'rgb' is not written here: a colour is the vector <r, g, b> alone, like "
+              "<1, 0.5, 0>\n"
+              "2:28: error: unknown name 'Colour' (names must be defined before they are used); "
+              "POV-Ray's 'Colour' is not written here: a colour is the vector <r, g, b> alone, "
+              "like <1, 0.5, 0>");
+    // A name the file defines is that name.
+    EXPECT_EQ(brief("define rgb = <1, 0, 0>;\nscene { sphere { material { pigment: rgb; } } }"),
+              "");
 }
 
 TEST(Strings, ReadPrintableAscii) {
@@ -355,6 +390,33 @@ TEST(Utf8, ACharacterIsItsCodeAndLengthOrNothing) {
                             "\xF4\x90\x80\x80", "\xF8\x88\x80\x80\x80", "\xC3("})
         EXPECT_EQ(code(bad).first, -1) << bad;
     EXPECT_FALSE(utf8_character_at("a", 1)) << "past the end";
+}
+
+// POV-Ray's and C's comments are one error each, and skipped as a '#'
+// comment would be: nothing in them is read, and the scene around them is.
+TEST(Lexical, CAndPovRayCommentsAreOneErrorEachAndSkipped) {
+    ParseResult r = parse_scene(
+        "// a POV-Ray scene { sphere\n"
+        "scene { sphere { radius: 2; // big; { ball\n"
+        "  center: /* here */ <1, 0, 0>; } /* two\n"
+        "  lines: sphere { } */ plane { } }\n");
+    EXPECT_EQ(brief(r.diagnostics),
+              "1:1: error: '//' starts no comment here: a comment runs from '#' to the end of "
+              "the line\n"
+              "2:29: error: '//' starts no comment here: a comment runs from '#' to the end of "
+              "the line\n"
+              "3:11: error: '/*' starts no comment here: a comment runs from '#' to the end of "
+              "the line\n"
+              "3:35: error: '/*' starts no comment here: a comment runs from '#' to the end of "
+              "the line");
+    ASSERT_EQ(r.scene.primitives.size(), 2u);
+    const auto& ball = shape_as<Sphere>(r.scene.primitives[0].shape);
+    EXPECT_EQ(ball.radius, 2.0);
+    EXPECT_EQ(ball.center, Vec3(1, 0, 0));
+    // An unclosed '/*' runs to the end of the file; one '/' divides as before.
+    EXPECT_EQ(brief("scene { sphere { radius: 4 / 2; } } /* sphere {"),
+              "1:37: error: '/*' starts no comment here: a comment runs from '#' to the end of "
+              "the line");
 }
 
 }  // namespace

@@ -33,8 +33,8 @@ Model read_ok(const fs::path& file) {
     return model ? *model : Model{};
 }
 
-std::string read_error(const fs::path& file, const fs::path& folder) {
-    Expected<Model> model = read_model(file, folder);
+std::string read_error(const fs::path& file, const fs::path& folder, bool file_materials = false) {
+    Expected<Model> model = read_model(file, folder, file_materials);
     return model ? "(it loaded)" : model.error().message;
 }
 
@@ -259,7 +259,7 @@ TEST(ModelFile, ZeroAreaTrianglesAreSkippedAndNoneLeftIsAnEmptyModel) {
 
 TEST(ModelFile, MissingAndMalformedFilesAreErrorsNamingTheFile) {
     ScratchDir dir;
-    EXPECT_NE(read_error(dir.path() / "none.obj", dir.path()).find("No such file"),
+    EXPECT_NE(read_error(dir.path() / "none.obj", dir.path()).find("none.obj': no such file"),
               std::string::npos);
     write_file(dir.path() / "broken.gltf", "{ \"asset\": { \"version\": ");
     const std::string broken = read_error(dir.path() / "broken.gltf", dir.path());
@@ -301,6 +301,32 @@ TEST(ModelFile, ReferencesOutsideTheSceneFolderAreRefused) {
     write_file(dir.path() / "scene/escape.gltf", gltf);
     const std::string buffer = read_error(dir.path() / "scene/escape.gltf", dir.path() / "scene");
     EXPECT_NE(buffer.find("outside the folder"), std::string::npos) << buffer;
+}
+
+// A LightWave scene names its object by a relative name ("LoadObjectLayer 1
+// 10000000 simple_cube.lwo"): taken from the scene's folder, not from the
+// working directory, it loads with no warning wherever the program runs,
+// and a model named by a relative path still loads.
+TEST(ModelFile, RelativeReferencesAreTakenFromTheModelsFolder) {
+    ScratchDir dir;
+    fs::create_directories(dir.path() / "scene");
+    for (const char* name : {"move_x.lws", "simple_cube.lwo"})
+        fs::copy_file(kModels / "LWS" / name, dir.path() / "scene" / name);
+    const fs::path cwd = fs::current_path();
+    for (const fs::path& from : {dir.path(), dir.path() / "scene", fs::path("/")}) {
+        SCOPED_TRACE(from.string());
+        fs::current_path(from);
+        const Expected<Model> absolute =
+            read_model(dir.path() / "scene/move_x.lws", dir.path() / "scene");
+        const Expected<Model> relative = read_model(fs::relative(dir.path() / "scene/move_x.lws"),
+                                                    fs::relative(dir.path() / "scene"));
+        fs::current_path(cwd);
+        for (const Expected<Model>* model : {&absolute, &relative}) {
+            ASSERT_TRUE(model->has_value()) << (*model).error().message;
+            EXPECT_EQ((*model)->triangles.size(), 12u);  // the cube
+            EXPECT_EQ(model_warnings(**model), std::vector<std::string>{});
+        }
+    }
 }
 
 TEST(ModelFile, AbsurdCountsAndHugeFilesAreRefusedBeforeReading) {
@@ -391,6 +417,44 @@ TEST(ModelFile, ReaderFailuresNameTheirCause) {
     EXPECT_EQ(read_error(dir.path() / "bad.stl", dir.path()),
               "'" + (dir.path() / "bad.stl").string() +
                   "': line 6, column 11 (byte 83): a number was expected, not 'abc'");
+
+    // A bad number in an OBJ's material library is located there, not at
+    // the first place its text occurs in the model ('x' inside "usemtl tex");
+    // a number missing at a line's end names the library too. Only the
+    // file's materials need the library: with the scene's the model loads
+    // without it, and the fault is a warning.
+    write_file(dir.path() / "lib.obj",
+               "mtllib lib.mtl\nv 0 0 0\nv 1 0 0\nv 0 1 0\nusemtl tex\nf 1 2 3\n");
+    write_file(dir.path() / "lib.mtl", "newmtl tex\nKd 1 0.2 x\n");
+    EXPECT_EQ(read_error(dir.path() / "lib.obj", dir.path(), true),
+              "'" + (dir.path() / "lib.obj").string() +
+                  "': its material library 'lib.mtl', line 2, column 10 (byte 20): a number was "
+                  "expected, not 'x'");
+    Expected<Model> scene_materials = read_model(dir.path() / "lib.obj", dir.path());
+    ASSERT_TRUE(scene_materials.has_value()) << scene_materials.error().message;
+    EXPECT_EQ(scene_materials->triangles.size(), 1u);
+    EXPECT_EQ(model_warnings(*scene_materials),
+              std::vector<std::string>{
+                  "refers to the material library 'lib.mtl', which cannot be read (line 2, "
+                  "column 10 (byte 20): a number was expected, not 'x'): that file is left out"});
+    write_file(dir.path() / "lib.mtl", "newmtl tex\nKd 1 0.2\n");
+    EXPECT_EQ(read_error(dir.path() / "lib.obj", dir.path(), true),
+              "'" + (dir.path() / "lib.obj").string() +
+                  "': a line of the file or of its material library 'lib.mtl' ends where a "
+                  "number was expected");
+    scene_materials = read_model(dir.path() / "lib.obj", dir.path());
+    ASSERT_TRUE(scene_materials.has_value()) << scene_materials.error().message;
+    EXPECT_EQ(scene_materials->triangles.size(), 1u);
+    EXPECT_EQ(model_warnings(*scene_materials),
+              std::vector<std::string>{
+                  "refers to the material library 'lib.mtl', which cannot be read (a line of it "
+                  "ends where a number was expected): that file is left out"});
+    // A fault of the model itself stays an error with the scene's materials,
+    // and is the one reported, not the library's before it.
+    write_file(dir.path() / "lib.obj",
+               "mtllib lib.mtl\nv 0 0 0\nv 1 0 0\nv 0 1 0\nusemtl tex\nf 1 2 4\n");
+    EXPECT_NE(read_error(dir.path() / "lib.obj", dir.path()).find("vertex index out of range"),
+              std::string::npos);
 
     // Assimp's Collada reader does not skip the spaces before a number
     // ("<color>  0.0 0.0 0.0 1.0  </color>"): the message says so, rather than

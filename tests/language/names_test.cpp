@@ -195,6 +195,26 @@ TEST(Names, NamedMaterialMistakes) {
               "used in a primitive with 'material: NAME;'");
 }
 
+// POV-Ray's '#declare M = material { ... }' written as a define, or a block
+// keyword where a value goes: the keyword is never a name, so "unknown
+// name 'material'" hid the fix.
+TEST(Names, ABlockKeywordAsAValueSaysWhatToWriteInstead) {
+    EXPECT_EQ(brief("define m = material { pigment: <1, 1, 1>; }\n"),
+              "1:12: error: 'material' is a block, not a value: a material is named with "
+              "'material NAME { ... }' at the top level and used in a primitive with "
+              "'material: NAME;'");
+    EXPECT_EQ(brief("define s = sphere { radius: 2; }\n"),
+              "1:12: error: 'sphere' is a block keyword, not a value (a number, a vector, a "
+              "string or a defined name)");
+    EXPECT_EQ(brief("scene { sphere { radius: transform; } }"),
+              "1:26: error: 'transform' is a block keyword, not a value (a number, a vector, "
+              "a string or a defined name)");
+    // Said even when an unread include might have defined other names.
+    EXPECT_NE(brief("include \"missing.jts\";\ndefine m = material { };\n")
+                  .find("2:12: error: 'material' is a block, not a value"),
+              std::string::npos);
+}
+
 // A misspelt or misplaced property is the mistake reported, not what its
 // value's evaluation would say: that hid the name behind "unknown name" or
 // "a material, not a value: use it with 'material: shiny;'" (which it was).
@@ -207,8 +227,8 @@ TEST(Names, AnUnknownPropertyIsReportedNotItsValue) {
               "3:23: error: unknown property 'radus' in 'point_light'; did you mean 'radius'? "
               "(allowed: position, intensity, radius, shadow_samples)");
     EXPECT_EQ(brief(shiny + "scene { point_light { material: shiny; } }"),
-              "3:23: error: unknown property 'material' in 'point_light' (allowed: position, "
-              "intensity, radius, shadow_samples)");
+              "3:23: error: a point_light takes no 'material': only sphere, plane, cylinder, "
+              "triangle and mesh do");
     EXPECT_EQ(brief(shiny + "material dull { material: shiny; }"),
               "3:17: error: a material cannot use another material: 'material: NAME;' stands "
               "directly in a sphere, plane, cylinder, triangle or mesh");
@@ -309,7 +329,11 @@ TEST(Names, DefineOptionIsChecked) {
               "the value of r: at column 1: unknown name 'q' (names must be defined before "
               "they are used)");
     EXPECT_EQ(parse_define("r=1 2").error().message,
-              "the value of r: at column 3: unexpected the number 2 after the value");
+              "the value of r: at column 3: expected the end of the value, got the number 2");
+    // A file's habit: the value is the whole option, with no ';' to end it.
+    EXPECT_EQ(parse_define("r=1;").error().message,
+              "the value of r: at column 2: expected the end of the value, got ';' (the value "
+              "takes no ';')");
 }
 
 // The clock of a render is not known when its --define is checked: a value

@@ -130,7 +130,17 @@ TEST(Structure, APovRayWordIsAnsweredWithOurs) {
     EXPECT_EQ(brief("scene { sphere { finish { } } }"),
               "1:18: error: unknown block 'finish' in 'sphere'; POV-Ray's 'finish' is 'material' "
               "here (allowed: material, transform)");
-    // Where ours is not allowed either, nothing is said of it.
+    // Where ours does not stand either, the message says where it does.
+    EXPECT_EQ(brief("light_source { }"),
+              "1:1: error: unknown block 'light_source' at the top level; POV-Ray's "
+              "'light_source' is 'point_light' here, which stands in 'scene { ... }'");
+    EXPECT_EQ(brief("camera { }"),
+              "1:1: error: unknown block 'camera' at the top level; POV-Ray's 'camera' is "
+              "'perspective_camera' here, which stands in 'cameras { ... }'");
+    EXPECT_EQ(brief("scene { pigment { } }"),
+              "1:9: error: unknown block 'pigment' in 'scene'; POV-Ray's 'pigment' is "
+              "'material' here, which stands in a primitive (sphere, plane, cylinder, triangle "
+              "or mesh), or named at the top level as 'material NAME { ... }'");
     // Properties too, where ours stands in the same block.
     EXPECT_EQ(brief("cameras { perspective_camera { location: <0, 0, 5>; angle: 60; } }"),
               "1:32: error: unknown property 'location' in 'perspective_camera'; POV-Ray's "
@@ -237,7 +247,98 @@ TEST(Structure, PropertiesWhereOnlyBlocksGo) {
 
 TEST(Structure, StrayClosingBraceAtTopLevel) {
     EXPECT_EQ(brief("scene { }\n}"),
-              "2:1: error: expected a block (render_settings, cameras or scene), got '}'");
+              "2:1: error: expected a block (render_settings, cameras or scene), got '}' (this "
+              "'}' closes no block: is there one '}' too many?)");
+}
+
+// C's and POV-Ray's habit of a ';' after a block's '}' says so, and 'scene'
+// is said to hold blocks, not properties.
+TEST(Structure, ASemicolonAfterABlockSaysItIsNotNeeded) {
+    EXPECT_EQ(brief("scene { sphere { radius: 1; };\n}"),
+              "1:30: error: expected a block or '}' in 'scene', got ';' (a block ends at its "
+              "'}', with no ';' after it)");
+    EXPECT_EQ(brief("scene { sphere { material { } ; } }"),
+              "1:31: error: expected a property name or '}' in 'sphere', got ';' (a block ends "
+              "at its '}', with no ';' after it)");
+    EXPECT_EQ(brief("scene { }\n  ;"),
+              "2:3: error: expected a block (render_settings, cameras or scene), got ';' (a "
+              "block ends at its '}', with no ';' after it)");
+    EXPECT_EQ(brief("scene { , }"), "1:9: error: expected a block or '}' in 'scene', got ','");
+}
+
+// A block of the language written where it cannot stand is no unknown
+// block: the message says where it goes (docs/language.md §3.3).
+TEST(Structure, AKnownBlockInTheWrongPlaceSaysWhereItGoes) {
+    ParseResult r = parse_scene(
+        "sphere { radius: 1; }\n"
+        "point_light { intensity: <1, 1, 1>; }\n"
+        "perspective_camera { fov: 30; }\n"
+        "scene { perspective_camera { } material { } render_settings { }\n"
+        "  sphere { point_light { } radius: 2; } }\n"
+        "cameras { sphere { } }\n"
+        "transform { }\n");
+    EXPECT_EQ(brief(r.diagnostics),
+              "1:1: error: 'sphere' cannot stand at the top level: it stands in 'scene { ... }'\n"
+              "2:1: error: 'point_light' cannot stand at the top level: it stands in "
+              "'scene { ... }'\n"
+              "3:1: error: 'perspective_camera' cannot stand at the top level: it stands in "
+              "'cameras { ... }'\n"
+              "4:9: error: 'perspective_camera' cannot stand in 'scene': it stands in "
+              "'cameras { ... }'\n"
+              "4:32: error: 'material' cannot stand in 'scene': it stands in a primitive "
+              "(sphere, plane, cylinder, triangle or mesh), or named at the top level as "
+              "'material NAME { ... }'\n"
+              "4:45: error: 'render_settings' cannot stand in 'scene': it stands at the top "
+              "level\n"
+              "5:12: error: 'point_light' cannot stand in 'sphere': it stands in "
+              "'scene { ... }' (is the '}' of the 'sphere' at 5:3 missing?)\n"
+              "6:11: error: 'sphere' cannot stand in 'cameras': it stands in 'scene { ... }'\n"
+              "7:1: error: 'transform' cannot stand at the top level: it stands in a primitive "
+              "(sphere, plane, cylinder, triangle or mesh)");
+    // Each is skipped whole: the sphere after it is read.
+    ASSERT_EQ(r.scene.primitives.size(), 1u);
+    EXPECT_EQ(shape_as<Sphere>(r.scene.primitives[0].shape).radius, 2.0);
+    // Inside a block of properties too.
+    EXPECT_EQ(brief("render_settings { perspective_camera { } }"),
+              "1:19: error: 'perspective_camera' cannot stand in 'render_settings': it stands in "
+              "'cameras { ... }'");
+}
+
+// POV-Ray's and C's habits of '(' after a value: 'pi()', a name called, a
+// product without '*'.
+TEST(Structure, AParenthesisAfterAValueSaysWhatTakesOne) {
+    const std::string hint =
+        " ('(' after a value neither calls it nor multiplies: only the functions take '(', pi, "
+        "clock and defined names are values, and a product is written with '*')";
+    EXPECT_EQ(brief("define r = 2;\n"
+                    "scene { sphere { radius: pi(); } sphere { radius: r(2); } }\n"
+                    "define s = 2(3);"),
+              "2:28: error: expected ';' after the value of 'radius'" + hint + "\n" +
+                  "2:52: error: expected ';' after the value of 'radius'" + hint + "\n" +
+                  "3:13: error: expected ';' after the value of 'define s'" + hint);
+}
+
+// A block that stands beside the one it is in, or further out, most often
+// follows a '}' left out: the message asks about that block's '}'.
+TEST(Structure, ABlockInsideItsNeighbourAsksForTheMissingBrace) {
+    EXPECT_EQ(brief("scene {\n"
+                    "  sphere { radius: 1;\n"
+                    "  sphere { radius: 2; }\n"
+                    "}\n"),
+              "3:3: error: 'sphere' cannot stand in 'sphere': it stands in 'scene { ... }' (is "
+              "the '}' of the 'sphere' at 2:3 missing?)\n"
+              "1:1: error: this 'scene' block is never closed: expected '}' before the end of "
+              "the file");
+    EXPECT_EQ(brief("scene { sphere { material { pigment: <1, 0, 0>;\n"
+                    "  transform { scale: 2; } } }"),
+              "2:3: error: 'transform' cannot stand in 'material': it stands in a primitive "
+              "(sphere, plane, cylinder, triangle or mesh) (is the '}' of the 'material' at 1:18 "
+              "missing?)\n"
+              "1:1: error: this 'scene' block is never closed: expected '}' before the end of "
+              "the file");
+    EXPECT_EQ(brief("scene { point_light { sphere { } } }"),
+              "1:23: error: 'sphere' cannot stand in 'point_light': it stands in 'scene { ... }' "
+              "(is the '}' of the 'point_light' at 1:9 missing?)");
 }
 
 TEST(Structure, SeveralRenderSettingsLastWinsWholeWithAWarning) {
@@ -323,12 +424,25 @@ TEST(Structure, SeveralMaterialBlocksEachSetOnlyWhatTheyName) {
     EXPECT_EQ(m.finish->diffuse_k, 1.0);
 }
 
+// POV-Ray's bare translate: the error says where it stands here.
+TEST(Structure, ATransformPropertyOutsideATransformSaysWhereItGoes) {
+    EXPECT_EQ(brief("scene { sphere { translate: <1, 0, 0>; } }"),
+              "1:18: error: unknown property 'translate' in 'sphere' (allowed: center, radius, "
+              "material, transform); write it in a transform block: transform { translate: "
+              "...; }");
+}
+
+// One fact, one message: as a block or as 'material: NAME;'.
 TEST(Structure, LightsTakeNoMaterialOrTransform) {
     EXPECT_EQ(brief("scene { point_light { material { pigment: <1, 1, 1>; } } }"),
-              "1:23: error: a point_light takes no 'material' block: only sphere, plane, "
+              "1:23: error: a point_light takes no 'material': only sphere, plane, "
               "cylinder, triangle and mesh do");
     EXPECT_EQ(brief("scene { point_light {\n transform { translate: <1, 1, 1>; }\n} }"),
-              "2:2: error: a point_light takes no 'transform' block: only sphere, plane, "
+              "2:2: error: a point_light takes no 'transform': only sphere, plane, "
+              "cylinder, triangle and mesh do");
+    EXPECT_EQ(brief("material m { pigment: <1, 0, 0>; }\n"
+                    "scene { point_light { material: m; } }"),
+              "2:23: error: a point_light takes no 'material': only sphere, plane, "
               "cylinder, triangle and mesh do");
 }
 

@@ -127,7 +127,7 @@ TEST(TriangleMesh, ModelProblemsAreLocatedAtTheFileString) {
               std::string::npos)
         << all;
     EXPECT_NE(all.find("6:16: error: mesh 3: cannot read '"), std::string::npos) << all;
-    EXPECT_NE(all.find("none.obj': No such file or directory"), std::string::npos) << all;
+    EXPECT_NE(all.find("none.obj': no such file"), std::string::npos) << all;
 }
 
 // A model that loads in part warns at its file string, once for each reason,
@@ -153,9 +153,9 @@ TEST(TriangleMesh, WhatAModelLeavesOutIsAWarningAtTheFileString) {
     EXPECT_EQ(brief(check_scene(*loaded)),
               "4:16: warning: mesh 1: 'IndexOutOfRange.gltf' has 1 of its 12 triangles left out: "
               "1 names a corner the file does not have (an index out of range)\n"
-              "5:16: warning: mesh 2: 'm.obj' refers to the material library '" +
-                  (dir.path() / "scene/../m.mtl").string() + "', outside the folder '" + folder +
-                  "': that file is left out");
+              "5:16: warning: mesh 2: 'm.obj' refers to the material library '../m.mtl', "
+              "outside the folder '" +
+                  folder + "': that file is left out");
 }
 
 }  // namespace

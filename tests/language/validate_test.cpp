@@ -87,7 +87,12 @@ TEST(Validate, UpParallelToTheViewDirection) {
                        "cameras { perspective_camera { }\n perspective_camera { look_at: <0, -5, "
                        "0>;\n up: <0, 2, 0>; } }\nscene { }"),
               "4:6: error: camera 2: 'up' <0, 2, 0> is parallel to the view direction <0, -5, "
-              "0> (or zero)");
+              "0>");
+    // A zero 'up' is no direction at all, whatever the view.
+    EXPECT_EQ(validate("render_settings { width: 2; height: 2; }\n"
+                       "cameras { perspective_camera { up: <0, 0, 0>; } }\nscene { }"),
+              "2:36: error: camera 1: 'up' is <0, 0, 0>, which gives no direction for the top "
+              "of the image");
 }
 
 TEST(Validate, AspectDifferingFromTheImageByOverOnePercentWarns) {
@@ -168,7 +173,7 @@ TEST(Validate, BackgroundMapDiagnosticsAreLocated) {
     const std::string head = "render_settings { width: 40; height: 20;\n";
     const std::string tail = "cameras { perspective_camera { aspect: 2; } }\nscene { }\n";
     EXPECT_EQ(validate(head + " background_map: \"nowhere.png\"; }\n" + tail),
-              "2:18: error: background_map: cannot read 'nowhere.png': No such file or directory");
+              "2:18: error: background_map: cannot read 'nowhere.png': no such file");
     EXPECT_EQ(validate(head + " background_map: \"\"; }\n" + tail),
               "2:18: error: background_map: the file name is empty (leave 'background_map' out "
               "to show the background colour)");
@@ -176,7 +181,7 @@ TEST(Validate, BackgroundMapDiagnosticsAreLocated) {
         validate(head + " background: <0, 0, 1>;\n background_map: \"nowhere.png\"; }\n" + tail),
         "2:14: warning: 'background' and 'background_map' are both set: the background map "
         "wins, so no ray shows this colour\n"
-        "3:18: error: background_map: cannot read 'nowhere.png': No such file or directory");
+        "3:18: error: background_map: cannot read 'nowhere.png': no such file");
     // A background written alone, or the default map, says nothing.
     EXPECT_EQ(validate(head + " background: <0, 0, 1>; }\n" + tail), "");
 }

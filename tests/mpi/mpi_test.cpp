@@ -101,6 +101,80 @@ TEST_F(Mpi, BadSceneIsReportedOnceAndEveryRankFails) {
     EXPECT_TRUE(outputs().empty());
 }
 
+// --check, as jtracer-cli's: the scene validated (each frame's with --frames)
+// and reported once, nothing written; a bad scene exits 1.
+TEST_F(Mpi, CheckValidatesOnceAndWritesNothing) {
+    test::write_file(dir / "good.jts", kEightPixelScene);
+    ProgramRun r = run_shell(mpirun(3) + "--check good.jts -o out.bmp");
+    EXPECT_EQ(r.code, 0) << r.err;
+    EXPECT_EQ(count(r.err, "good.jts: no errors\n"), 1u) << r.err;
+    r = run_shell(mpirun(2) + "--check good.jts --frames 3");
+    EXPECT_EQ(r.code, 0) << r.err;
+    EXPECT_EQ(count(r.err, "good.jts: no errors in frames 0..2"), 1u) << r.err;
+    test::write_file(dir / "bad.jts", "scene { sphere { radius: -1; } }\n");
+    r = run_shell(mpirun(3) + "--check bad.jts -o out.bmp");
+    EXPECT_EQ(r.code, 1) << r.err;
+    EXPECT_EQ(count(r.err, "bad.jts:1:26: error: 'radius' must be greater than 0"), 1u) << r.err;
+    r = run_shell(mpirun(2) + "--check good.jts --skip-existing -o out.bmp");
+    EXPECT_EQ(r.code, 2) << r.err;
+    EXPECT_EQ(count(r.err, "--skip-existing: not with --check"), 1u) << r.err;
+    // A region file under a scene's filename.png: refused as the render
+    // (and jtracer-cli --check) refuses it, with and without --frames.
+    test::write_file(dir / "png.jts",
+                     "render_settings { width: 8; height: 8; filename: \"png.png\"; }\n"
+                     "cameras { perspective_camera { position: <0, 0, 5>; } }\n");
+    for (const char* frames : {"", "--frames 2 "}) {
+        r = run_shell(mpirun(2) + "--check png.jts --region 0,0,8,2 --region-output " + frames);
+        EXPECT_EQ(r.code, 2) << frames << r.err;
+        EXPECT_EQ(count(r.err, "png.jts:1:50: error: --region-output writes a BMP"), 1u) << r.err;
+        EXPECT_EQ(count(r.err, "no errors"), 0u) << r.err;
+    }
+    std::vector<std::string> left = outputs();
+    std::erase(left, "good.jts");
+    std::erase(left, "png.jts");
+    EXPECT_TRUE(left.empty()) << left.front();
+}
+
+// --region and --region-output, as jtracer-cli's: the same bytes for the
+// window (alone, or in a black frame), a part jtracer-merge joins to a part
+// jtracer-cli rendered, and --skip-existing keeping a part of the same render.
+TEST_F(Mpi, ARegionIsRenderedAsTheCliRendersIt) {
+    const std::string frame = "--width 96 --height 64 -q ";
+    ASSERT_EQ(run_shell(cli + showcase + frame + "-o full.bmp").code, 0);
+    ASSERT_EQ(run_shell(cli + showcase + frame + "--region 10,20,70,64 -o cli_window.bmp").code, 0);
+    ASSERT_EQ(
+        run_shell(cli + showcase + frame + "--region 0,20,96,64 --region-output -o bottom.bmp")
+            .code,
+        0);
+    ASSERT_EQ(
+        run_shell(cli + showcase + frame + "--region 0,0,96,20 --region-output -o cli_top.bmp")
+            .code,
+        0);
+    ProgramRun r = run_shell(mpirun(3) + showcase + frame +
+                             "--tile-size 16 --region 10,20,70,64 -o mpi_window.bmp");
+    ASSERT_EQ(r.code, 0) << r.err;
+    EXPECT_EQ(test::read_file(dir / "mpi_window.bmp"), test::read_file(dir / "cli_window.bmp"));
+    r = run_shell(mpirun(3) + showcase + frame +
+                  "--tile-size 16 --region 0,0,96,20 --region-output -o top.bmp");
+    ASSERT_EQ(r.code, 0) << r.err;
+    EXPECT_EQ(test::read_file(dir / "top.bmp"), test::read_file(dir / "cli_top.bmp"));
+    r = run_shell("'" JT_MERGE "' -q -o merged.bmp top.bmp bottom.bmp");
+    ASSERT_EQ(r.code, 0) << r.err;
+    EXPECT_EQ(test::read_file(dir / "merged.bmp"), test::read_file(dir / "full.bmp"));
+    r = run_shell(mpirun(2) + showcase + "--width 96 --height 64 --region 0,0,96,20 " +
+                  "--region-output --skip-existing -o top.bmp");
+    EXPECT_EQ(r.code, 0) << r.err;
+    EXPECT_EQ(count(r.err, "kept top.bmp: already there and complete"), 1u) << r.err;
+    // The rules of jtracer-cli, said once.
+    r = run_shell(mpirun(2) + showcase + frame + "--region-output -o part.bmp");
+    EXPECT_EQ(r.code, 2) << r.err;
+    EXPECT_EQ(count(r.err, "--region-output: needs --region"), 1u) << r.err;
+    r = run_shell(mpirun(2) + showcase + frame + "--region 0,0,96,90 -o part.bmp");
+    EXPECT_EQ(r.code, 2) << r.err;
+    EXPECT_EQ(count(r.err, "--region: region 0,0,96,90 reaches past the bottom edge"), 1u) << r.err;
+    EXPECT_FALSE(exists("part.bmp"));
+}
+
 // -o naming the scene file wrote the image over it, as jtracer-cli's did.
 TEST_F(Mpi, AnOutputThatIsTheSceneFileIsRefusedOnce) {
     const std::string text = kEightPixelScene;
@@ -109,6 +183,37 @@ TEST_F(Mpi, AnOutputThatIsTheSceneFileIsRefusedOnce) {
     EXPECT_EQ(r.code, 2) << r.err;
     EXPECT_EQ(count(r.err, "'./self.jts' is the scene file itself"), 1u) << r.err;
     EXPECT_EQ(test::read_file(dir / "self.jts"), text);
+}
+
+// A named pipe as the scene: every rank opened it, one got the text and the
+// others waited for theirs forever.
+TEST_F(Mpi, APipedSceneWithManyRanksIsRefused) {
+    ASSERT_EQ(run_shell("mkfifo scene.fifo").code, 0);
+    ProgramRun r = run_shell("timeout 60 " + mpirun(2) + "scene.fifo -o out.bmp");
+    EXPECT_EQ(r.code, 2) << r.err;
+    EXPECT_EQ(count(r.err, "'scene.fifo' is a pipe or a device, which only one of the 2 ranks"), 1u)
+        << r.err;
+    EXPECT_FALSE(exists("out.bmp"));
+}
+
+// CLI11 checked required options before unknown ones, and worded its errors
+// its own way ("--output is required" for a mistyped option).
+TEST_F(Mpi, MergeUsageErrorsNameTheOptionAndWhatItExpects) {
+    const std::string merge = "'" JT_MERGE "' ";
+    ProgramRun r = run_shell(merge + "--bogus");
+    EXPECT_EQ(r.code, 2);
+    EXPECT_EQ(r.err,
+              "jtracer-merge: unknown option '--bogus'\n"
+              "Run 'jtracer-merge --help' for the options.\n");
+    r = run_shell(merge + "-o out.bmp");
+    EXPECT_EQ(r.code, 2);
+    EXPECT_EQ(count(r.err, "jtracer-merge: missing PARTS\n"), 1u) << r.err;
+    r = run_shell(merge + "a.bmp");
+    EXPECT_EQ(count(r.err, "jtracer-merge: missing -o/--output FILE\n"), 1u) << r.err;
+    r = run_shell(merge + "a.bmp -o");
+    EXPECT_EQ(count(r.err, "jtracer-merge: -o/--output: needs FILE after it\n"), 1u) << r.err;
+    r = run_shell(merge + "-o x.bmp -o y.bmp a.bmp");
+    EXPECT_EQ(count(r.err, "jtracer-merge: -o/--output: given more than once"), 1u) << r.err;
 }
 
 // -o shot.jpg gives a BMP, as jtracer-cli's does, but jtracer-cli warns that
@@ -290,6 +395,14 @@ TEST_F(Mpi, UnwritableOutputIsFoundBeforeTheRender) {
     EXPECT_EQ(count(r.err, "cannot write 'f1/shot.bmp'"), 1u) << r.err;
     EXPECT_NE(r.err.find("; frames 0..0 were written\n"), std::string::npos) << r.err;
     EXPECT_TRUE(exists("f0/shot.bmp"));
+    // A rerun with --skip-existing wrote none of the frames it kept.
+    std::filesystem::create_directory(dir / "f1");
+    r = run_shell(mpirun(2) + "seq.jts -q --frames 3 --skip-existing -o 'f%d/shot.bmp'");
+    EXPECT_EQ(r.code, 3) << r.err;
+    EXPECT_NE(r.err.find("; frames 0..1 are there (1 written, 1 kept)\n"), std::string::npos)
+        << r.err;
+    r = run_shell(mpirun(2) + "seq.jts -q --frames 3 --skip-existing -o 'f%d/shot.bmp'");
+    EXPECT_NE(r.err.find("; frames 0..1 were kept, already there\n"), std::string::npos) << r.err;
 }
 
 // OpenMPI gives a rank a terminal of its own as standard output, whatever

@@ -141,6 +141,23 @@ def test_info_of_a_bad_scene_reports_like_check(cli, tmp_path):
     assert code == 2
 
 
+def test_info_prints_the_warnings_a_render_prints(cli, tmp_path):
+    # A model of lines only is left out with a warning: info shows the mesh
+    # with 0 triangles and no box, and says why on stderr, as a render does.
+    shutil.copy(MODELS / "AC" / "closedLine.ac", tmp_path)
+    path = tmp_path / "lines.jts"
+    path.write_text('render_settings { width: 8; height: 8; }\n'
+                    'cameras { perspective_camera { position: <0, 0, 10>; } }\n'
+                    'scene { mesh { file: "closedLine.ac"; } }\n')
+    warning = "lines.jts:3:22: warning: mesh 1: 'closedLine.ac' holds only 4 lines, no triangle"
+    _, _, rendered = run(cli, path, "-o", tmp_path / "lines.bmp")
+    assert warning in rendered
+    _, out, err = run(cli, "info", path)
+    assert "mesh closedLine.ac: 0 triangles" in out and warning in err
+    _, out, err = run(cli, "info", path, "--json")
+    assert json.loads(out)["meshes"][0]["triangles"] == 0 and warning in err
+
+
 def test_info_lists_the_parts_of_a_mesh_with_materials_from_its_file(cli, tmp_path):
     # An OBJ with a face before any usemtl, a red part and a textured one
     # (docs/language.md 14.5); the same file with "scene" has no parts.

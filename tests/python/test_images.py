@@ -153,3 +153,17 @@ def test_read_image_of_a_file_that_is_no_image_names_the_formats(tmp_path):
     message = str(raised.value)
     assert "model.obj" in message and "not a BMP, PNG or JPEG image" in message
     assert "signature" not in message
+
+
+def test_a_missing_file_is_reported_in_the_same_words_everywhere(tmp_path):
+    # One fact, one wording: the core's "cannot read 'PATH': REASON", whether
+    # the file is a scene, a picture or a reference.
+    missing = tmp_path / "missing"
+    expected = f"^cannot read '{re.escape(str(missing))}': no such file$"
+    for call in (jtracer.load, jtracer.check, jtracer.read_image,
+                 lambda path: jtracer.diff(path, gradient())):
+        with pytest.raises(OSError, match=expected):
+            call(missing)
+    with pytest.raises(OSError, match=f"^cannot read '{re.escape(str(tmp_path))}': it is a "
+                                      "directory, not a file$"):
+        jtracer.read_image(tmp_path)

@@ -263,6 +263,29 @@ TEST_F(RegionCli, MergeRefusesPartsOfDifferentRenders) {
     EXPECT_EQ(r.err.find("note:"), std::string::npos) << r.err;
 }
 
+// Parts of two frames of an animation were said to differ first in the
+// scene's content, "another scene, another version of it", when the clock
+// that animates the scene was the difference.
+TEST_F(RegionCli, MergeNamesTheClockFirstForPartsOfTwoFrames) {
+    test::write_file(dir / "moving.jts", R"(
+cameras { perspective_camera { position: <0, 0, 5>; look_at: <0, 0, 0>; aspect: 1.3333; } }
+scene { sphere { radius: 1 + clock; material { pigment: <1, 1, 1>; ambient: <1, 1, 1>; } } }
+render_settings { width: 8; height: 6; ambient_light: <1, 1, 1>; }
+)");
+    const std::string part = cli + "moving.jts -q --region-output --frames 2 ";
+    ASSERT_EQ(run_shell(part + "--region 0,0,8,3 -o a%d.bmp").code, 0);
+    ASSERT_EQ(run_shell(part + "--region 0,3,8,6 -o b%d.bmp").code, 0);
+    ProgramRun r = run_shell(merge + "-o out.bmp a0.bmp b1.bmp");
+    EXPECT_EQ(r.code, 1) << r.err;
+    EXPECT_NE(r.err.find("b1.bmp and a0.bmp are parts of different renders: clock 1 and 0; the "
+                         "scene's content differs"),
+              std::string::npos)
+        << r.err;
+    EXPECT_NE(r.err.find("...: the clock animates it, or another scene"), std::string::npos)
+        << r.err;
+    EXPECT_FALSE(exists("out.bmp"));
+}
+
 // The scene's content is its values once the defines are applied: another
 // value is another render, the same value written otherwise is not.
 TEST_F(RegionCli, MergeComparesTheSceneAfterItsDefines) {
@@ -366,7 +389,8 @@ TEST_F(RegionCli, SkipExistingKeepsOnlyAPartOfThisRender) {
     const std::string two_samples = test::read_file(dir / "p.bmp");
     ProgramRun r = run_shell(part + "--skip-existing");
     ASSERT_EQ(r.code, 0) << r.err;
-    EXPECT_NE(r.err.find("p.bmp is there, but it holds another region or render"),
+    EXPECT_NE(r.err.find(
+                  "p.bmp is there, but it is this region of another render (differing in samples)"),
               std::string::npos)
         << r.err;
     EXPECT_NE(test::read_file(dir / "p.bmp"), two_samples);
@@ -374,6 +398,15 @@ TEST_F(RegionCli, SkipExistingKeepsOnlyAPartOfThisRender) {
     ASSERT_EQ(r.code, 0) << r.err;
     EXPECT_NE(r.err.find("kept p.bmp: already there and complete"), std::string::npos) << r.err;
     EXPECT_EQ(r.err.find("wrote"), std::string::npos) << r.err;
+    // Another region under the name says so, and which region it holds.
+    r = run_shell(cli + showcase +
+                  "--width 40 --height 30 --region-output --region 0,15,40,30 -o p.bmp "
+                  "--skip-existing");
+    ASSERT_EQ(r.code, 0) << r.err;
+    EXPECT_NE(r.err.find("p.bmp is there, but it holds another region (0,0,40,15 of a 40x30 "
+                         "frame)"),
+              std::string::npos)
+        << r.err;
 }
 
 }  // namespace

@@ -295,7 +295,7 @@ Diagnostic check_one(const fs::path& dir, const std::string& name) {
 TEST_F(SkyMap, AMissingMapIsALocatedErrorWithTheRendersWords) {
     const Diagnostic d = check_one(dir, "nowhere.png");
     EXPECT_EQ(d.message, "background_map: cannot read '" + (dir / "nowhere.png").string() +
-                             "': No such file or directory");
+                             "': no such file");
 }
 
 TEST_F(SkyMap, ACorruptMapIsALocatedErrorWithTheRendersWords) {
@@ -312,7 +312,7 @@ TEST_F(SkyMap, ADirectoryIsNotAMap) {
     fs::create_directory(dir / "folder.png");
     const Diagnostic d = check_one(dir, "folder.png");
     EXPECT_EQ(d.message, "background_map: cannot read '" + (dir / "folder.png").string() +
-                             "': Is a directory");
+                             "': it is a directory, not a file");
 }
 
 // "" is the model's "no map", so only the check, which sees it written, refuses it.

@@ -2,7 +2,8 @@
 // Alt+drag moves it by the camera's own geometry (the translate worked out
 // here from the camera), the core's pick under the cursor is still the sphere
 // and the outline follows it; undo gives the file's bytes back and redo the
-// moved ones; Esc during the drag cancels it; Shift keeps one axis.
+// moved ones (Ctrl+Shift+Z or Ctrl+Y); Esc during the drag cancels it; Shift
+// keeps one axis.
 
 #include "app/headless.hpp"
 #include "app/keys.hpp"
@@ -118,6 +119,22 @@ TEST_F(ViewerObjectDrag, AltDragMovesTheSelectedSphereUnderTheCursorAndUndoGives
     EXPECT_EQ(text(), moved);
     ASSERT_TRUE(save_scene(state)) << state.message;
     EXPECT_EQ(read_file(path), moved);
+}
+
+// Found in the real window: Ctrl+Y redid only inside the text editor; over
+// the image it did nothing, and a move undone with Ctrl+Z stayed undone.
+TEST_F(ViewerObjectDrag, CtrlYOverTheImageRedoesAMoveUndone) {
+    const WindowPoint at = window_point(sphere_pixel);
+    viewer.drag(state, 0, at.x, at.y, at.x, at.y);
+    ASSERT_EQ(state.view.selection, (Selection{Kind::primitive, 1})) << state.message;
+    viewer.drag(state, 0, at.x, at.y, at.x + 40, at.y, kAlt);
+    const std::string moved = text();
+    ASSERT_NE(moved, original) << state.message;
+    viewer.press_key(state, keys::letter('Z'), /*ctrl=*/true);
+    ASSERT_EQ(text(), original);
+    viewer.press_key(state, keys::letter('Y'), /*ctrl=*/true);
+    EXPECT_EQ(text(), moved) << "Ctrl+Y redoes the move: " << state.message;
+    EXPECT_TRUE(has_unsaved_edits(state.doc));
 }
 
 TEST_F(ViewerObjectDrag, EscDuringTheDragPutsTheObjectBackAndQuitsNothing) {

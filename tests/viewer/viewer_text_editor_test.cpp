@@ -593,13 +593,11 @@ fs::path write_including_scene(const std::string& name) {
     return dir;
 }
 
-// Ctrl+Z until the editor shows `text` again, ten times at most.
-void undo_until(HeadlessViewer& viewer, AppState& state, const std::string& text) {
-    for (int i = 0; i < 10 && viewer.text_editor().buffer != text; ++i) {
-        std::vector<KeyEvent> events;
-        shortcut(events, keys::letter('Z'));
-        viewer.key_events(state, events, 40.0, 16.0);
-    }
+// Ctrl+Z (with `shift`, Ctrl+Shift+Z) pressed once.
+void press_undo(HeadlessViewer& viewer, AppState& state, bool shift = false) {
+    std::vector<KeyEvent> events;
+    shortcut(events, keys::letter('Z'), shift);
+    viewer.key_events(state, events, 40.0, 16.0);
 }
 
 // An included file is opened from the button above the
@@ -635,15 +633,17 @@ TEST(ViewerIncludedFileEditor, OpensTypesUndoesAndSavesAnIncludedFile) {
     EXPECT_EQ(draft_of(state.editor, state.editor.shown)->text, typed);
     EXPECT_EQ(document_text(state.doc), main_text) << "the scene file's text is not touched";
 
-    // Ctrl+Z undoes the typing in this file, and is no undo of the scene's.
-    undo_until(viewer, state, ball_text);
+    // One Ctrl+Z undoes the typing in this file, typed without a pause, as
+    // in the scene file (it undid a character a press); it is no undo of
+    // the scene's, and Ctrl+Shift+Z brings it back.
+    press_undo(viewer, state);
     EXPECT_EQ(ed.buffer, ball_text);
     EXPECT_FALSE(has_included_drafts(state.editor)) << "typed back: nothing to save";
-
-    events.clear();
-    type(events, "# hi\n");
-    viewer.key_events(state, events, 40.0, 16.0);
+    EXPECT_EQ(document_text(state.doc), main_text);
+    press_undo(viewer, state, /*shift=*/true);
     ASSERT_EQ(ed.buffer, typed);
+    ASSERT_NE(draft_of(state.editor, state.editor.shown), nullptr);
+    EXPECT_EQ(draft_of(state.editor, state.editor.shown)->text, typed);
 
     // The scene file shown and back: the typing is still there.
     ASSERT_TRUE(viewer.click(state, "main.jts"));
@@ -665,6 +665,55 @@ TEST(ViewerIncludedFileEditor, OpensTypesUndoesAndSavesAnIncludedFile) {
     viewer.frame(state);
     EXPECT_EQ(ed.buffer, typed) << "the file as saved";
     EXPECT_EQ(state.message, "Saved parts/ball.jts") << "its own write reloads nothing";
+    fs::remove_all(dir);
+}
+
+// Found in the real window: Delete, Duplicate, Add material block and
+// Add operation were offered on a ball read from parts/ball.jts, and
+// clicking them only said, in the status line, that it could not be done.
+// They are greyed with the reason in their tooltip; the Delete key says it,
+// and the scene stays as it is. A block of the scene file keeps them.
+TEST(ViewerIncludedFileEditor, ABlockOfAnIncludedFileOffersNoBlockCommands) {
+    HeadlessViewer viewer{1200, 900};
+    ASSERT_TRUE(viewer.ok()) << viewer.error();
+    const fs::path dir = write_including_scene("included-block-commands");
+    AppState state{test_config()};
+    open_scene(state, dir / "main.jts");
+    ASSERT_TRUE(state.doc.loaded) << format_diagnostics(state.doc);
+    ASSERT_TRUE(viewer.run_until_loaded(state));
+    select(state.view, {Selection::Kind::primitive, 0});
+    for (int i = 0; i < 4; ++i) viewer.frame(state);
+    // The object's buttons; the camera panel has a Duplicate and a Delete
+    // too, its Delete disabled (the only camera).
+    const auto disabled_with_reason = [&](std::string_view label) {
+        int found = 0;
+        for (const UiItem& item : viewer.ui_items())
+            if (item.label == label && !item.enabled && item.has_tooltip) ++found;
+        return found;
+    };
+    EXPECT_EQ(disabled_with_reason("Duplicate"), 1);
+    EXPECT_EQ(disabled_with_reason("Delete"), 2);
+    for (const char* label : {"Add material block", "Add transform block", "Add operation"})
+        EXPECT_EQ(disabled_with_reason(label), 1) << label;
+    EXPECT_NE(why_not_rewrite_block(state.doc, {BlockKind::primitive, 0}).find("parts/ball.jts"),
+              std::string::npos);
+    const std::string text = document_text(state.doc);
+    viewer.press_key(state, keys::del);
+    EXPECT_EQ(document_text(state.doc), text);
+    EXPECT_EQ(state.doc.scene.primitives.size(), 1u);
+    EXPECT_NE(state.message.find("parts/ball.jts"), std::string::npos) << state.message;
+
+    // The light is written in main.jts: its commands are there.
+    EXPECT_EQ(why_not_rewrite_block(state.doc, {BlockKind::light, 0}), "");
+    select(state.view, {Selection::Kind::light, 0});
+    for (int i = 0; i < 4; ++i) viewer.frame(state);
+    int duplicates = 0;
+    for (const UiItem& item : viewer.ui_items())
+        if (item.label == "Duplicate") {
+            ++duplicates;
+            EXPECT_TRUE(item.enabled);
+        }
+    EXPECT_EQ(duplicates, 2) << "the camera's and the light's";
     fs::remove_all(dir);
 }
 
@@ -819,7 +868,7 @@ TEST(ViewerIncludedFileEditor, EscKeepsWhatWasTypedInAnIncludedFile) {
     ed.jump = static_cast<int>(std::string("# mine\n").size());
     viewer.frame(state);
     viewer.frame(state);
-    undo_until(viewer, state, ball_text);
+    press_undo(viewer, state);
     EXPECT_EQ(ed.buffer, ball_text);
     fs::remove_all(dir);
 }

@@ -220,6 +220,8 @@ void handle_shortcuts(AppState& state, FrameState& frame, const ImagePlace& imag
     if (io.KeyCtrl) {
         if (pressed(keys::letter('S'))) save_scene(state);
         if (pressed(keys::letter('Z'))) io.KeyShift ? redo(state) : undo(state);
+        // Ctrl+Y redoes as in the text editor, where many users' hands expect it.
+        if (pressed(keys::letter('Y'))) redo(state);
         return;
     }
     if (pressed(keys::letter('R'))) reload_scene(state);

@@ -17,6 +17,7 @@
 #include <imgui_stdlib.h>
 
 #include <algorithm>
+#include <chrono>
 #include <cstdio>
 #include <cstring>
 #include <optional>
@@ -90,12 +91,14 @@ void follow_document(const AppState& state, TextEditorState& ed) {
     if (!file.empty()) {
         const IncludedDraft* draft = draft_of(state.editor, file);
         if (ed.shown_file == file && doc.revision == ed.shown_revision &&
-            doc.file_generation == ed.shown_generation && (draft != nullptr) == ed.shown_file_draft)
+            doc.file_generation == ed.shown_generation &&
+            (draft != nullptr) == ed.shown_file_draft && state.editor.steps_taken == ed.shown_steps)
             return;
         ed.shown_file = file;
         ed.shown_revision = doc.revision;
         ed.shown_generation = doc.file_generation;
         ed.shown_file_draft = draft != nullptr;
+        ed.shown_steps = state.editor.steps_taken;
         set_buffer(ed, draft ? draft->text : included_text(doc, file));
         return;
     }
@@ -142,10 +145,8 @@ void keep_text_on_escape(ImGuiInputTextState& widget, std::string_view text) {
 
 int on_input(ImGuiInputTextCallbackData* data) {
     auto& ed = *static_cast<TextEditorState*>(data->UserData);
-    bool replaced = false;
     if (ed.push) {
         ed.push = false;
-        replaced = true;
         const std::string_view now(data->Buf, static_cast<std::size_t>(data->BufTextLen));
         if (now != ed.buffer) {
             const int cursor = cursor_after_replace(now, ed.buffer, data->CursorPos);
@@ -160,12 +161,8 @@ int on_input(ImGuiInputTextCallbackData* data) {
         ed.jump.reset();
     }
     ed.cursor = data->CursorPos;
-    // An included file's typing is undone in the widget itself (the app's
-    // history is the scene's), each file in a widget of its own: its history
-    // goes only when the app replaces its text.
-    const bool own_history = !ed.shown_file.empty() && !replaced;
     if (ImGuiInputTextState* widget = ImGui::GetInputTextState(ImGui::GetActiveID())) {
-        if (!own_history) forget_widget_history(*widget);
+        forget_widget_history(*widget);
         keep_text_on_escape(
             *widget, std::string_view(data->Buf, static_cast<std::size_t>(data->BufTextLen)));
     }
@@ -278,13 +275,21 @@ void follow_selection(AppState& state, TextEditorState& ed, bool clicked) {
     }
 }
 
-// In an included file the widget undoes its own typing (on_input).
+// In an included file Ctrl+Z walks that file's typing (editor_files.hpp),
+// in steps ended by a pause as in the scene file, not the scene's history.
 void undo_keys(AppState& state, bool included) {
     const ImGuiIO& io = ImGui::GetIO();
     if (!io.KeyCtrl) return;
-    if (!included && ImGui::IsKeyPressed(keys::letter('Z'), false))
-        io.KeyShift ? redo(state) : undo(state);
-    if (!included && ImGui::IsKeyPressed(keys::letter('Y'), false)) redo(state);
+    const bool undo_key = ImGui::IsKeyPressed(keys::letter('Z'), false) && !io.KeyShift;
+    const bool redo_key = (ImGui::IsKeyPressed(keys::letter('Z'), false) && io.KeyShift) ||
+                          ImGui::IsKeyPressed(keys::letter('Y'), false);
+    if (included) {
+        if (undo_key) undo_included_typing(state.editor, state.doc);
+        if (redo_key) redo_included_typing(state.editor, state.doc);
+    } else {
+        if (undo_key) undo(state);
+        if (redo_key) redo(state);
+    }
     if (ImGui::IsKeyPressed(keys::letter('S'), false)) save_scene(state);
 }
 
@@ -506,7 +511,12 @@ void text_editor(AppState& state, TextEditorState& ed, float x0, float y0, float
     if (changed && ed.buffer != ed.shown) {
         ed.shown = ed.buffer;
         if (included) {
-            type_included_text(state.editor, state.doc, ed.buffer);
+            // ImGui's clock, the frames' own: a pause between keys is one
+            // in the frames' time (simulated in the headless tests).
+            const auto now = std::chrono::steady_clock::time_point(
+                std::chrono::duration_cast<std::chrono::steady_clock::duration>(
+                    std::chrono::duration<double>(ImGui::GetTime())));
+            type_included_text(state.editor, state.doc, ed.buffer, now);
             // The draft now holds what the buffer holds.
             ed.shown_file_draft = draft_of(state.editor, ed.shown_file) != nullptr;
         } else {

@@ -4,7 +4,7 @@
 // marked on its line with its message and listed below, where a click puts
 // the cursor at its line:col. What is typed goes to the document
 // (document_edits.hpp: type_text); what the panels change shows in the text
-// at once. Ctrl+Z / Ctrl+Shift+Z in it walk the viewer's one undo history.
+// at once. Ctrl+Z / Ctrl+Shift+Z (or Ctrl+Y) in it walk the viewer's one undo history.
 // An object or light picked in the image scrolls the text to its block, and
 // a click in a block selects its object or light.
 // Above the text, when the scene includes files, one button a file (the
@@ -41,6 +41,7 @@ struct TextEditorState {
     std::string shown_file;
     std::uint64_t shown_generation = 0;  // SceneDocument::file_generation
     bool shown_file_draft = false;       // the file had a draft
+    std::uint64_t shown_steps = 0;       // EditorFiles::steps_taken
     // The file buttons: the indexes of the first readings of each included
     // file (latest_readings), found again only when the document changed.
     std::vector<std::size_t> listed;

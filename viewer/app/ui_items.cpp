@@ -38,7 +38,10 @@ void note_item(const char* label, bool has_tooltip) {
     const ImVec2 min = ImGui::GetItemRectMin(), max = ImGui::GetItemRectMax();
     UiItem& item = next_item(label);
     item.rect = {min.x, min.y, max.x, max.y};
-    item.enabled = (GImGui->CurrentItemFlags & ImGuiItemFlags_Disabled) == 0;
+    // The item's own flags too: a control disabled alone (button()) is noted
+    // after its EndDisabled, when the flags in force no longer say so.
+    item.enabled =
+        ((GImGui->CurrentItemFlags | GImGui->LastItemData.InFlags) & ImGuiItemFlags_Disabled) == 0;
     item.has_tooltip = has_tooltip;
     // What ImGui clips the window's contents to.
     item.clipped = max.x > GImGui->CurrentWindow->InnerClipRect.Max.x + 0.5f;

@@ -1,6 +1,7 @@
 #include "model/document_edits.hpp"
 
 #include "model/app_actions.hpp"
+#include "model/field_sources.hpp"
 
 #include "jtracer/block_edit.hpp"
 #include "jtracer/camera_edit.hpp"
@@ -162,6 +163,23 @@ bool duplicate_block(AppState& state, BlockRef block) {
         state.view.reveal_selection = true;
     }
     return true;
+}
+
+std::string why_not_rewrite_block(const SceneDocument& doc, BlockRef block) {
+    const EditedBlock::Kind kind = block.kind == BlockKind::camera ? EditedBlock::Kind::camera
+                                   : block.kind == BlockKind::primitive
+                                       ? EditedBlock::Kind::primitive
+                                       : EditedBlock::Kind::light;
+    const BlockSource* source = block_source(doc, {kind, block.index});
+    if (!source || source->keyword_span.pos.file == 0) return {};
+    const std::uint32_t file = source->keyword_span.pos.file;
+    const std::string name =
+        file <= doc.source.files.size()
+            ? std::string(short_file_name(doc, doc.source.files[file - 1].name))
+            : std::string("a file the scene includes");
+    return "Written in " + name +
+           ", which the scene includes: change its blocks in that file (the text editor, T, "
+           "opens it); its values are edited here too";
 }
 
 bool delete_block(AppState& state, BlockRef block) {

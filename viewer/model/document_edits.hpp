@@ -10,16 +10,13 @@
 #include "jtracer/new_block.hpp"
 #include "jtracer/scene_text.hpp"
 #include "model/app_state.hpp"
+#include "model/editor_files.hpp"
 
-#include <chrono>
 #include <cstddef>
 #include <functional>
 #include <string>
 
 namespace jt::view {
-
-// How long typing must pause before the text is parsed again.
-inline constexpr std::chrono::milliseconds kTypingPause{250};
 
 // Runs `edit` on the document's text (with the panels' edits written in) and
 // takes the result in as one undo step; on failure nothing changes and the
@@ -44,6 +41,12 @@ bool add_mesh(AppState& state, const std::string& file);
 bool add_light(AppState& state);
 bool duplicate_block(AppState& state, BlockRef block);
 bool delete_block(AppState& state, BlockRef block);
+// Why the commands that rewrite `block` as a whole (Duplicate, Delete, Add
+// material or transform block, the transform operations, a camera's rename)
+// are not offered: it is written in a file the scene includes, and they
+// edit the scene file's text; its values are still edited in place. Empty
+// when they are offered.
+std::string why_not_rewrite_block(const SceneDocument& doc, BlockRef block);
 bool add_material_block(AppState& state, std::size_t primitive);
 bool add_transform_block(AppState& state, std::size_t primitive);
 bool add_transform_op(AppState& state, std::size_t primitive, TransformKind kind);

@@ -6,6 +6,8 @@
 #include "model/text_checker.hpp"
 
 #include <algorithm>
+#include <optional>
+#include <utility>
 
 namespace jt::view {
 
@@ -80,8 +82,44 @@ void show_file(EditorFiles& files, const SceneDocument& doc, std::string_view ca
     files.shown = std::string(canonical);
 }
 
-void type_included_text(EditorFiles& files, const SceneDocument& doc, std::string text) {
-    if (files.shown.empty()) return;
+namespace {
+
+// What the editor shows for `canonical`: its draft, else its text.
+std::string shown_text(const EditorFiles& files, const SceneDocument& doc,
+                       std::string_view canonical) {
+    const IncludedDraft* draft = draft_of(files, canonical);
+    return draft ? draft->text : included_text(doc, canonical);
+}
+
+// Whether `base` is the text the shown file's typing starts from: its
+// draft's base, else the file's text as the editor shows it.
+bool typed_over(const EditorFiles& files, const SceneDocument& doc, const std::string& base) {
+    const IncludedDraft* draft = draft_of(files, files.shown);
+    return draft ? draft->base == base : included_text(doc, files.shown) == base;
+}
+
+void forget_history(EditorFiles& files, std::string_view canonical) {
+    std::erase_if(files.histories,
+                  [&](const IncludedHistory& h) { return h.canonical == canonical; });
+}
+
+// The shown file's undo steps; null when it has none. Steps typed over a
+// text the file no longer shows (it changed on disk, or a panel edit
+// changed its values, with nothing typed since) would put that text back
+// unasked: they go.
+IncludedHistory* shown_history(EditorFiles& files, const SceneDocument& doc) {
+    for (IncludedHistory& h : files.histories)
+        if (h.canonical == files.shown) {
+            if (typed_over(files, doc, h.base)) return &h;
+            forget_history(files, files.shown);
+            return nullptr;
+        }
+    return nullptr;
+}
+
+// The text typed or stepped to: the shown file's draft, or none when it is
+// the file's text again.
+void set_included_text(EditorFiles& files, const SceneDocument& doc, std::string text) {
     IncludedDraft* draft = find_draft(files, files.shown);
     if (!draft) {
         const SourceFile* read = reading_of(doc, files.shown);
@@ -98,15 +136,76 @@ void type_included_text(EditorFiles& files, const SceneDocument& doc, std::strin
         draft = &files.drafts.back();
     }
     draft->problem.clear();
-    if (text == draft->base) {
-        revert_included_draft(files, files.shown);
+    // Typed back to the text the file shows now: nothing to save, but the
+    // steps that led here stay. Back to the text typing began over, when the
+    // file changed since, is a draft still: dropped, the editor would show
+    // the file's new text instead, and the steps (typed over the old one)
+    // would go with the typed text.
+    const bool read = reading_of(doc, files.shown) != nullptr;
+    if (text == (read ? included_text(doc, files.shown) : draft->base)) {
+        std::erase_if(files.drafts,
+                      [&](const IncludedDraft& d) { return d.canonical == files.shown; });
         return;
     }
     draft->text = std::move(text);
 }
 
+// Moves the shown file's text one step along `step` (undo or redo).
+template <class Step>
+bool step_included_typing(EditorFiles& files, const SceneDocument& doc, Step step) {
+    if (files.shown.empty()) return false;
+    IncludedHistory* history = shown_history(files, doc);
+    if (!history) return false;
+    std::optional<std::string> text = step(history->steps, shown_text(files, doc, files.shown));
+    if (!text) return false;
+    history->last_typed.reset();  // the next keystroke begins a step of its own
+    set_included_text(files, doc, std::move(*text));
+    ++files.steps_taken;
+    return true;
+}
+
+}  // namespace
+
+void type_included_text(EditorFiles& files, const SceneDocument& doc, std::string text,
+                        std::chrono::steady_clock::time_point now) {
+    if (files.shown.empty() || (!reading_of(doc, files.shown) && !draft_of(files, files.shown)))
+        return;
+    std::string before = shown_text(files, doc, files.shown);
+    if (text == before) return;
+    IncludedHistory* history = shown_history(files, doc);
+    if (!history) {
+        const IncludedDraft* draft = draft_of(files, files.shown);
+        IncludedHistory& added = files.histories.emplace_back();
+        added.canonical = files.shown;
+        added.base = draft ? draft->base : included_text(doc, files.shown);
+        history = &added;
+    }
+    if (!history->last_typed || now - *history->last_typed >= kTypingPause)
+        history->steps.record(std::move(before));
+    history->last_typed = now;
+    set_included_text(files, doc, std::move(text));
+}
+
+bool undo_included_typing(EditorFiles& files, const SceneDocument& doc) {
+    return step_included_typing(files, doc, [](SnapshotStack<std::string>& steps, std::string now) {
+        return steps.undo(std::move(now));
+    });
+}
+
+bool redo_included_typing(EditorFiles& files, const SceneDocument& doc) {
+    return step_included_typing(files, doc, [](SnapshotStack<std::string>& steps, std::string now) {
+        return steps.redo(std::move(now));
+    });
+}
+
 void revert_included_draft(EditorFiles& files, std::string_view canonical) {
     std::erase_if(files.drafts, [&](const IncludedDraft& d) { return d.canonical == canonical; });
+    forget_history(files, canonical);
+}
+
+void forget_included_drafts(EditorFiles& files) {
+    files.drafts.clear();
+    files.histories.clear();
 }
 
 namespace {
@@ -188,6 +287,7 @@ Expected<std::vector<std::string>> write_included_drafts(EditorFiles& files) {
         if (Expected<void> done = write_text_atomically(d.path, d.text); !done)
             return Error{done.error().message};
         written.push_back(d.name);
+        forget_history(files, d.canonical);
         files.drafts.erase(files.drafts.begin());
     }
     return written;

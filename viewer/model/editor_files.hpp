@@ -10,8 +10,12 @@
 #include "jtracer/error.hpp"
 #include "jtracer/source_files.hpp"
 #include "model/scene_document.hpp"
+#include "model/undo_stack.hpp"
 
+#include <chrono>
 #include <cstddef>
+#include <cstdint>
+#include <optional>
 #include <span>
 #include <string>
 #include <string_view>
@@ -31,10 +35,30 @@ struct IncludedDraft {
     std::string problem;
 };
 
+// How long typing must pause before the text is parsed again; a keystroke
+// after such a pause begins a new undo step, in the scene file and in an
+// included one alike.
+inline constexpr std::chrono::milliseconds kTypingPause{250};
+
+// The typing in one included file as undo steps, kept apart from the
+// scene's history (whose steps are the scene file's texts): the texts the
+// file showed before each run of keystrokes.
+struct IncludedHistory {
+    std::string canonical;
+    std::string base;  // the text shown without a draft when the steps were typed
+    SnapshotStack<std::string> steps;
+    // The last keystroke's time; none when the next begins a step of its own.
+    std::optional<std::chrono::steady_clock::time_point> last_typed;
+};
+
 struct EditorFiles {
     // The included file the editor shows (SourceFile::canonical); empty: the scene file.
     std::string shown;
     std::vector<IncludedDraft> drafts;
+    std::vector<IncludedHistory> histories;
+    // Counts the undos and redos of that typing: the editor shows the text
+    // again when it changed.
+    std::uint64_t steps_taken = 0;
 };
 
 // The readings of included files the editor lists: those of the latest load
@@ -65,11 +89,24 @@ bool has_included_drafts(const EditorFiles& files);
 void show_file(EditorFiles& files, const SceneDocument& doc, std::string_view canonical);
 
 // The shown included file's text changed to `text` in the editor: it becomes
-// its draft (or the draft goes, when `text` is the file's text again).
-void type_included_text(EditorFiles& files, const SceneDocument& doc, std::string text);
+// its draft (or the draft goes, when `text` is the file's text again). The
+// first keystroke after a pause of kTypingPause records one undo step.
+void type_included_text(
+    EditorFiles& files, const SceneDocument& doc, std::string text,
+    std::chrono::steady_clock::time_point now = std::chrono::steady_clock::now());
 
-// Drops the draft of `canonical`: the editor shows the file's text again.
+// Ctrl+Z and Ctrl+Shift+Z in the shown included file: its text before the
+// last run of typing, or after the run undone last. False when there is none
+// (or the file's text changed under the steps, which then go).
+bool undo_included_typing(EditorFiles& files, const SceneDocument& doc);
+bool redo_included_typing(EditorFiles& files, const SceneDocument& doc);
+
+// Drops the draft of `canonical`, and its undo steps: the editor shows the
+// file's text again.
 void revert_included_draft(EditorFiles& files, std::string_view canonical);
+
+// Drops every draft and every included file's undo steps (another scene opened).
+void forget_included_drafts(EditorFiles& files);
 
 // Why saving the drafts would replace text not seen when typing began: the
 // file changed on disk, or a panel edit changed its values since; empty
@@ -84,8 +121,9 @@ std::vector<std::string> conflicting_drafts(const SceneDocument& doc, const Edit
 // it as its problem).
 Expected<void> check_included_drafts(const SceneDocument& doc, EditorFiles& files);
 
-// Writes every draft into its file, atomically, and drops it; the names
-// written, as diagnostics name them. On an error the drafts not written stay.
+// Writes every draft into its file, atomically, and drops it with its undo
+// steps; the names written, as diagnostics name them. On an error the drafts
+// not written stay.
 Expected<std::vector<std::string>> write_included_drafts(EditorFiles& files);
 
 // "a", "a and b", "a, b and c": the files a save wrote, for the status line.

@@ -157,6 +157,19 @@ std::string_view written_text(const SceneDocument& doc, const FieldSource& sourc
     return source.property ? span_text(doc, source.property->value_span) : std::string_view();
 }
 
+std::string computed_from(const SceneDocument& doc, const FieldSource& source) {
+    const std::string text = shortened(written_text(doc, source));
+    if (source.origin == FieldOrigin::expression)
+        return "computed from the expression `" + text + "`";
+    if (source.origin != FieldOrigin::name) return {};
+    if (const Define* define = define_of(doc, text))
+        return "the name " + text + ", set by --define " + define->name + "=" +
+               shortened(define->value);
+    if (const DefinitionSource* d = definition_of(doc, text))
+        return "the name " + text + ", defined at " + text_place(doc, d->name_span);
+    return "the name " + text;
+}
+
 std::string describe_source(const SceneDocument& doc, const FieldSource& source) {
     const std::string_view text = written_text(doc, source);
     switch (source.origin) {

@@ -77,5 +77,9 @@ std::string_view written_text(const SceneDocument& doc, const FieldSource& sourc
 // expression `r * 2` ...", "inherited from material shiny ..."; empty for a
 // literal or an unwritten value.
 std::string describe_source(const SceneDocument& doc, const FieldSource& source);
+// What a read-only value is, for a message: "the name r, defined at
+// scene.jts:3", "the name r, set by --define r=2", "computed from the
+// expression `r * 2`"; empty for a literal or an unwritten value.
+std::string computed_from(const SceneDocument& doc, const FieldSource& source);
 
 }  // namespace jt::view

@@ -58,7 +58,7 @@ void finish_open(AppState& state, const std::filesystem::path& path, LoadAttempt
     // An open was asked before dropping text typed in included files (guard):
     // none carries over to another scene. A failed open keeps the scene shown
     // with its edits (accept_load), and so with the text typed in its files.
-    if (ok || first) state.editor.drafts.clear();
+    if (ok || first) forget_included_drafts(state.editor);
     if (state.doc.path != was) state.editor.shown.clear();
     if (ok || first) {
         state.files.watcher = FileWatcher(state.config.watch_interval);
@@ -66,7 +66,11 @@ void finish_open(AppState& state, const std::filesystem::path& path, LoadAttempt
     }
     if (listed) {
         state.files.recent.add(path);
-        state.fields.open_path_input = path.string();
+        // Absolute: the Open field reads a relative path beside the scene
+        // (open_typed_path), and Open pressed again opens this same file.
+        std::error_code ec;
+        const std::filesystem::path absolute = std::filesystem::absolute(path, ec);
+        state.fields.open_path_input = (ec ? path : absolute).string();
     }
     if (ok) {
         state.view.camera_index = std::max(active_camera_index(state.doc.scene), 0);
@@ -527,12 +531,26 @@ bool save_image_numbered(AppState& state) {
     return save_image(state, state.fields.save_image_path);
 }
 
-bool save_scene_as(AppState& state, const std::filesystem::path& path, bool replace) {
+std::filesystem::path beside_scene(const SceneDocument& doc, const std::filesystem::path& typed) {
+    // A name typed beside the scene's own path means a file beside the scene
+    // (where its includes and images are found), not one in whatever folder
+    // the viewer was started from.
+    if (!typed.is_relative()) return typed;
+    std::error_code ec;
+    const std::filesystem::path path =
+        std::filesystem::absolute(doc.path.parent_path() / typed, ec);
+    return ec ? doc.path.parent_path() / typed : path;
+}
+
+bool save_scene_as(AppState& state, const std::filesystem::path& asked, bool replace) {
     state.files.save_as_conflict.clear();
     if (!state.doc.loaded) {
         state.message = "Scene not saved: no scene is open";
         return false;
     }
+    // Made absolute, so that the name kept for "Replace it" is not read
+    // against the folder a second time.
+    const std::filesystem::path path = beside_scene(state.doc, asked);
     std::error_code ec;
     if (!replace && std::filesystem::exists(path, ec)) {
         state.files.save_as_conflict = path.string();
@@ -582,6 +600,11 @@ void request_quit(AppState& state) {
 
 void request_open_guarded(AppState& state, const std::filesystem::path& path) {
     guard(state, {GuardedCommand::Kind::open, path});
+}
+
+void open_typed_path(AppState& state) {
+    if (state.fields.open_path_input.empty()) return;
+    request_open_guarded(state, beside_scene(state.doc, state.fields.open_path_input));
 }
 
 void resolve_unsaved(AppState& state, UnsavedChoice choice) {

@@ -66,15 +66,24 @@ void revert_conflicting_drafts(AppState& state);
 bool save_image(AppState& state, const std::filesystem::path& path);
 // The same to state.save_image_path (the S key).
 bool save_image_numbered(AppState& state);
-// Writes the edited scene to `path` and makes that the open file. A file
-// already there is replaced only with `replace`; otherwise nothing is written
-// and state.files.save_as_conflict names it.
+// A path the user typed (Open, Save scene as): a relative one is read against
+// the scene file's folder, as its includes and images are, and made absolute;
+// with no scene file, against the working folder.
+std::filesystem::path beside_scene(const SceneDocument& doc, const std::filesystem::path& typed);
+// Writes the edited scene to `path` and makes that the open file. A relative
+// `path` is read against the scene file's folder (beside_scene). A file already there is
+// replaced only with `replace`; otherwise nothing is written and
+// state.files.save_as_conflict names it.
 bool save_scene_as(AppState& state, const std::filesystem::path& path, bool replace);
 
 // Quitting and opening another file go through these: with unsaved edits
 // nothing happens until the user answers the prompt (state.files.unsaved_prompt).
 void request_quit(AppState& state);
 void request_open_guarded(AppState& state, const std::filesystem::path& path);
+// Opens the file named in the Open field (state.fields.open_path_input), a
+// relative path read against the scene file's folder (beside_scene); guarded
+// as request_open_guarded.
+void open_typed_path(AppState& state);
 enum class UnsavedChoice { save, discard, cancel };
 // Save runs the command only when the save succeeded (a refused save shows
 // why and keeps the edits).

@@ -180,9 +180,16 @@ bool start_object_drag(AppState& state, const ImagePoint& at, double marker_radi
         const FieldSource position = field_source(
             state.doc, block_source(state.doc, {EditedBlock::Kind::light, index}), "position");
         if (read_only(position)) {
-            state.message = "Not moved: " + name + "'s position is written as " +
-                            std::string(written_text(state.doc, position)) +
-                            "; edit it in the text editor (T)";
+            // Say what the value is and the two ways out: change the value
+            // where it is set, or write a position in its place.
+            std::string why = "Not moved: " + name + "'s position is " +
+                              computed_from(state.doc, position) +
+                              ". To drag the light, write a position <x, y, z> in its place in "
+                              "the text editor (T)";
+            if (position.origin == FieldOrigin::name)
+                why += ", or change " + std::string(written_text(state.doc, position)) +
+                       " where it is set";
+            state.message = why;
             return false;
         }
         drag.start = state.doc.scene.lights[index].position;

@@ -22,6 +22,7 @@
 
 #include <algorithm>
 #include <cctype>
+#include <cerrno>
 #include <cmath>
 #include <fstream>
 #include <limits>
@@ -419,6 +420,29 @@ Expected<Model> gather(const aiScene& scene, bool use_normals, std::uint64_t dec
     return std::move(builder).take();
 }
 
+// Why the material libraries named `opened` were left out, as a phrase after
+// the model's name, from `reason`, the import's failure in words: "refers to
+// the material library 'a.mtl', which cannot be read (line 2, column 10 ...)".
+// The model read without them, a line "of the file or of its material
+// library" that ends early is the library's.
+std::string library_fault(const std::string& reason, const std::vector<std::string>& opened) {
+    std::string fault = "refers to the material library";
+    for (std::size_t i = 0; i < opened.size(); ++i)
+        fault.append(i == 0 ? " '" : " or '").append(opened[i]).append("'");
+    fault.append(", which cannot be read (");
+    constexpr std::string_view kLocated = "its material library '";
+    if (reason.starts_with(kLocated)) {
+        // "its material library 'a.mtl', line 2, ...": the name is said.
+        const std::size_t after = reason.find("', ", kLocated.size());
+        fault.append(after == std::string::npos ? reason : reason.substr(after + 3));
+    } else if (reason.starts_with("a line of the file or of its material librar")) {
+        fault.append("a line of it ends where a number was expected");
+    } else {
+        fault.append(reason);
+    }
+    return fault.append(")");
+}
+
 // read_model's work (jtracer/model_file.hpp): the checks in front of Assimp,
 // Assimp's import, and the model gathered from what it read.
 Expected<Model> import_model(const std::filesystem::path& file, const std::filesystem::path& folder,
@@ -426,7 +450,7 @@ Expected<Model> import_model(const std::filesystem::path& file, const std::files
     std::error_code error;
     const auto status = std::filesystem::status(file, error);
     if (error || !std::filesystem::exists(status))
-        return Error{"cannot read " + file_message(file, "No such file or directory")};
+        return Error{"cannot read " + file_message(file, read_failure_reason(file, ENOENT))};
     if (!std::filesystem::is_regular_file(status))
         return Error{"cannot read " + file_message(file, "not a regular file")};
     const std::uintmax_t size = std::filesystem::file_size(file, error);
@@ -450,12 +474,28 @@ Expected<Model> import_model(const std::filesystem::path& file, const std::files
     }
     // The file's own bytes say more than Assimp's words for some failures
     // (model_reader/model_messages.hpp); read only when it failed.
-    auto failure = [&](const std::string& reason) -> Error {
+    // The material libraries it read are named from the model's folder.
+    auto library_name = [&](const std::filesystem::path& library) {
+        // Absolute, as the io system opens them (a scene run from its own
+        // folder names the model "ball.obj").
+        std::error_code ignored;
+        const std::filesystem::path name =
+            library.lexically_relative(std::filesystem::absolute(file, ignored).parent_path())
+                .lexically_normal();
+        return name.empty() ? library.string() : name.generic_string();
+    };
+    auto failure_reason = [&](const std::string& reason,
+                              const std::vector<std::filesystem::path>& opened) -> std::string {
         const Expected<std::vector<std::uint8_t>> bytes = read_file_bytes(file);
-        if (!bytes) return Error{file_message(file, reason)};
-        if (std::string wide = wide_text_problem(*bytes); !wide.empty())
-            return Error{file_message(file, wide)};
-        return Error{file_message(file, import_failure(reason, *bytes))};
+        if (!bytes) return reason;
+        if (std::string wide = wide_text_problem(*bytes); !wide.empty()) return wide;
+        std::vector<ReadAlongside> libraries;
+        for (const std::filesystem::path& library : opened) {
+            Expected<std::vector<std::uint8_t>> read = read_file_bytes(library);
+            if (!read) continue;
+            libraries.push_back({library_name(library), std::move(*read)});
+        }
+        return import_failure(reason, *bytes, libraries);
     };
     try {
         Assimp::Importer importer;
@@ -465,20 +505,27 @@ Expected<Model> import_model(const std::filesystem::path& file, const std::files
                                       importer.IsExtensionSupported(".m3d"));
             !problem.empty())
             return Error{file_message(file, problem)};
-        auto* io = new ConfinedIOSystem(reference_folder(file, folder));
+        auto* io = new ConfinedIOSystem(reference_folder(file, folder), file);
         importer.SetIOHandler(io);  // the importer owns it
         std::vector<std::pair<std::string, std::size_t>> said;
-        const aiScene* scene = nullptr;
-        {
+        // The scene read, or nullptr with Assimp's reason in `why`.
+        auto read = [&](std::string& why) -> const aiScene* {
             const CerrCapture capture;
-            scene = importer.ReadFile(file.string(), 0);
+            // Absolute, as the io system takes every relative name from the
+            // model's folder (model_reader/confined_io_system.hpp).
+            const aiScene* got = importer.ReadFile(std::filesystem::absolute(file).string(), 0);
             said = capture.lines();
-        }
-        if (!scene) {
+            if (got) return got;
             // Assimp turns every exception into its error string, running out
             // of memory too; that one is the programs' to report (error.hpp).
-            const std::string why = importer.GetErrorString();
+            why = importer.GetErrorString();
             if (why == std::bad_alloc().what()) throw std::bad_alloc();
+            return nullptr;
+        };
+        std::string why;
+        const aiScene* scene = read(why);
+        std::string broken_library;  // why a material library was left out
+        if (!scene) {
             // A refused file the model needed is the reason it failed.
             if (!io->refusal().empty()) return Error{file_message(file, "it " + io->refusal())};
             // Assimp's glTF reader drops faces whose indices are out of range,
@@ -488,7 +535,22 @@ Expected<Model> import_model(const std::filesystem::path& file, const std::files
                     file, "none of its " + std::to_string(declared_triangles) +
                               " triangles can be read: they name corners the file does not "
                               "have (indices out of range)")};
-            return failure(why);
+            const std::vector<std::filesystem::path> opened = io->libraries();
+            const std::string reason = failure_reason(why, opened);
+            if (file_materials || opened.empty()) return Error{file_message(file, reason)};
+            // The scene's materials need no material library: one that broke
+            // the import is left out, the model read again without it, and
+            // what was wrong with it becomes a warning (docs/language.md §13.5).
+            io = new ConfinedIOSystem(reference_folder(file, folder), file);
+            io->leave_out_libraries();
+            importer.SetIOHandler(io);  // frees the first one
+            // If it fails still, the model's own fault, which the library's hid.
+            if (scene = read(why); !scene)
+                return Error{file_message(file, failure_reason(why, {}))};
+            std::vector<std::string> names;
+            for (const std::filesystem::path& library : opened)
+                names.push_back(library_name(library));
+            broken_library = library_fault(reason, names);
         }
         std::optional<MaterialPlan> plan;
         if (file_materials) {
@@ -501,7 +563,7 @@ Expected<Model> import_model(const std::filesystem::path& file, const std::files
         Expected<Model> model = gather(*scene, lower_extension(file) != ".stl", declared_triangles,
                                        plan ? &*plan : nullptr);
         if (model) {
-            model->left_out.refused_file = io->refusal();
+            model->left_out.refused_file = broken_library.empty() ? io->refusal() : broken_library;
             model->left_out.reader_said = std::move(said);
             if (plan) model->left_out.colours_not_read = plan->unread;
         }

@@ -22,10 +22,19 @@ bool printed_as(std::uint8_t byte, char shown) {
     return byte == static_cast<std::uint8_t>(shown);
 }
 
-// Where the text Assimp quoted starts in the file: the first place it matches.
+// A byte of a word or a number: the quoted text never starts inside one,
+// since the readers copy a whole word before they parse it.
+bool inside_word(std::uint8_t byte) {
+    return (byte >= 'a' && byte <= 'z') || (byte >= 'A' && byte <= 'Z') ||
+           (byte >= '0' && byte <= '9') || byte == '_' || byte == '.' || byte == '-' || byte == '+';
+}
+
+// Where the text Assimp quoted starts in the file: the first place it matches
+// that does not start inside a word ('x' is not the x of "usemtl tex").
 std::size_t find_printed(std::span<const std::uint8_t> bytes, std::string_view shown) {
     if (shown.empty() || shown.size() > bytes.size()) return std::string_view::npos;
     for (std::size_t at = 0; at + shown.size() <= bytes.size(); ++at) {
+        if (at > 0 && inside_word(bytes[at - 1])) continue;
         std::size_t k = 0;
         while (k < shown.size() && printed_as(bytes[at + k], shown[k])) ++k;
         if (k == shown.size()) return at;
@@ -34,8 +43,11 @@ std::size_t find_printed(std::span<const std::uint8_t> bytes, std::string_view s
 }
 
 // "Cannot parse string "TEXT" as a real number: ...": where TEXT starts, as
-// line, column and byte, and its first word.
-std::string located_number(const std::string& reason, std::span<const std::uint8_t> bytes) {
+// line, column and byte, and its first word. TEXT is looked for in the model
+// first, then in the material libraries it read (the reader parses a library
+// where the model names it, so a failure may lie in either).
+std::string located_number(const std::string& reason, std::span<const std::uint8_t> bytes,
+                           std::span<const ReadAlongside> libraries) {
     constexpr std::string_view kHead = "Cannot parse string \"";
     constexpr std::string_view kTail = "\" as a real number";
     const std::size_t head = reason.find(kHead);
@@ -44,7 +56,24 @@ std::string located_number(const std::string& reason, std::span<const std::uint8
         return "";
     const std::string_view shown =
         std::string_view(reason).substr(head + kHead.size(), tail - head - kHead.size());
-    const std::size_t at = find_printed(bytes, shown);
+    if (shown.empty()) {
+        // The reader copied the word after the last number of a line: none.
+        std::string where = "a line of the file";
+        for (std::size_t i = 0; i < libraries.size(); ++i)
+            where.append(i == 0 ? " or of its material library '" : ", '")
+                .append(libraries[i].name)
+                .append("'");
+        return where.append(" ends where a number was expected");
+    }
+    std::string in;
+    std::size_t at = find_printed(bytes, shown);
+    for (std::size_t i = 0; at == std::string_view::npos && i < libraries.size(); ++i) {
+        at = find_printed(libraries[i].bytes, shown);
+        if (at != std::string_view::npos) {
+            bytes = libraries[i].bytes;
+            in = "its material library '" + libraries[i].name + "', ";
+        }
+    }
     if (at == std::string_view::npos) return "";
     const auto before = bytes.subspan(0, at);
     const std::size_t line =
@@ -54,7 +83,8 @@ std::string located_number(const std::string& reason, std::span<const std::uint8
     std::size_t word = 0;
     while (word < shown.size() && word < 40 && shown[word] != ' ' && shown[word] != '?') ++word;
     // Appended, not chained from a literal: GCC 12 warns falsely (-Wrestrict).
-    std::string where("line ");
+    std::string where(in);
+    where.append("line ");
     where.append(std::to_string(line)).append(", column ").append(std::to_string(column));
     where.append(" (byte ").append(std::to_string(at)).append("): a number was expected, not ");
     if (word == 0) {
@@ -102,8 +132,10 @@ std::string unread_format_problem(std::span<const std::uint8_t> head, bool reads
     return "";
 }
 
-std::string import_failure(const std::string& reason, std::span<const std::uint8_t> bytes) {
-    if (std::string located = located_number(reason, bytes); !located.empty()) return located;
+std::string import_failure(const std::string& reason, std::span<const std::uint8_t> bytes,
+                           std::span<const ReadAlongside> libraries) {
+    if (std::string located = located_number(reason, bytes, libraries); !located.empty())
+        return located;
     if (starts_with(bytes, {0x1F, 0x8B}))
         return "the file is gzip-compressed, which the model reader does not read: unpack it first";
     if (reason.rfind("Failed to open file", 0) == 0) {

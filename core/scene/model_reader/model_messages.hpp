@@ -7,6 +7,7 @@
 #include <cstdint>
 #include <span>
 #include <string>
+#include <vector>
 
 namespace jt {
 
@@ -21,9 +22,18 @@ std::string wide_text_problem(std::span<const std::uint8_t> bytes);
 std::string unread_format_problem(std::span<const std::uint8_t> head, bool reads_vrml,
                                   bool reads_m3d);
 
+// A file the reader read for the model: an OBJ's material library, named as
+// the model's `mtllib` line names it.
+struct ReadAlongside {
+    std::string name;
+    std::vector<std::uint8_t> bytes;
+};
+
 // Assimp's `reason` for refusing `bytes`, reworded when the bytes tell the
 // cause better: a compressed or zip file it does not open, and a number that
-// does not parse, located by line, column and byte. Otherwise `reason`.
-std::string import_failure(const std::string& reason, std::span<const std::uint8_t> bytes);
+// does not parse, located by line, column and byte in the model or in one of
+// the `libraries` it read. Otherwise `reason`.
+std::string import_failure(const std::string& reason, std::span<const std::uint8_t> bytes,
+                           std::span<const ReadAlongside> libraries = {});
 
 }  // namespace jt

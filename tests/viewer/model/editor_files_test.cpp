@@ -17,6 +17,7 @@
 #include <gtest/gtest.h>
 
 #include <array>
+#include <chrono>
 #include <filesystem>
 #include <string>
 #include <vector>
@@ -133,6 +134,115 @@ TEST_F(EditorFilesTest, TypingTheFileBackDropsItsDraft) {
     EXPECT_FALSE(has_included_drafts(state.editor));
     type_included_text(state.editor, state.doc, "sphere { radius: 3; }\n");
     revert_included_draft(state.editor, file);
+    EXPECT_FALSE(has_included_drafts(state.editor));
+}
+
+// Found in the window: "# hi" typed fast in parts/ball.jts took one Ctrl+Z
+// a character to undo, where the scene file's typing goes a step a pause.
+// Keys closer than kTypingPause are one step; undone back to the file's
+// text there is nothing to save, and redo brings each step back.
+TEST_F(EditorFilesTest, TypingInAnIncludedFileIsUndoneAStepAPause) {
+    write(ball, kBall);
+    open();
+    const std::string file = canonical_of(state.doc, "parts/ball.jts");
+    show_file(state.editor, state.doc, file);
+    using Clock = std::chrono::steady_clock;
+    Clock::time_point t{};
+    const auto type_keys = [&](const std::string& prefix, std::string_view keys) {
+        std::string text = prefix;
+        for (const char key : keys) {
+            text.insert(text.size() - kBall.size(), 1, key);
+            t += std::chrono::milliseconds(40);
+            type_included_text(state.editor, state.doc, text, t);
+        }
+        return text;
+    };
+    const std::string first = type_keys(kBall, "# a\n");
+    t += kTypingPause;
+    const std::string second = type_keys(first, "# b\n");
+    ASSERT_EQ(draft_of(state.editor, file)->text, "# a\n# b\n" + kBall);
+
+    ASSERT_TRUE(undo_included_typing(state.editor, state.doc));
+    EXPECT_EQ(draft_of(state.editor, file)->text, first) << "the second run, whole";
+    ASSERT_TRUE(undo_included_typing(state.editor, state.doc));
+    EXPECT_FALSE(has_included_drafts(state.editor)) << "the file's text again";
+    EXPECT_FALSE(undo_included_typing(state.editor, state.doc));
+    EXPECT_FALSE(state.history.undo.can_undo()) << "no step of the scene's history";
+
+    ASSERT_TRUE(redo_included_typing(state.editor, state.doc));
+    ASSERT_NE(draft_of(state.editor, file), nullptr);
+    EXPECT_EQ(draft_of(state.editor, file)->text, first);
+    ASSERT_TRUE(redo_included_typing(state.editor, state.doc));
+    EXPECT_EQ(draft_of(state.editor, file)->text, second);
+    EXPECT_FALSE(redo_included_typing(state.editor, state.doc));
+
+    // A key right after an undo begins a step of its own.
+    ASSERT_TRUE(undo_included_typing(state.editor, state.doc));
+    t += std::chrono::milliseconds(10);
+    type_included_text(state.editor, state.doc, "#" + first, t);
+    ASSERT_TRUE(undo_included_typing(state.editor, state.doc));
+    EXPECT_EQ(draft_of(state.editor, file)->text, first);
+
+    // The scene file shown: Ctrl+Z there is none of this file's.
+    show_file(state.editor, state.doc, "");
+    EXPECT_FALSE(undo_included_typing(state.editor, state.doc));
+    EXPECT_EQ(draft_of(state.editor, file)->text, first);
+}
+
+// Steps typed over a text the file no longer has would put it back unasked:
+// typed back to the file's text, then the file changed on disk, Ctrl+Z
+// finds nothing to undo; a save or Revert ends the file's steps too.
+TEST_F(EditorFilesTest, IncludedTypingStepsEndWithTheTextTheyWereTypedOver) {
+    write(ball, kBall);
+    open();
+    const std::string file = canonical_of(state.doc, "parts/ball.jts");
+    show_file(state.editor, state.doc, file);
+    type_included_text(state.editor, state.doc, "# a\n" + kBall);
+    ASSERT_TRUE(undo_included_typing(state.editor, state.doc));
+    EXPECT_FALSE(has_included_drafts(state.editor));
+    const std::string theirs = "sphere { center: <0, 0, -5>; radius: 4.5; }\n";
+    write(ball, theirs);
+    ASSERT_TRUE(model.run_until_loaded(state));
+    ASSERT_EQ(radius_of(state, 0), 4.5);
+    EXPECT_FALSE(redo_included_typing(state.editor, state.doc));
+    EXPECT_FALSE(has_included_drafts(state.editor));
+    EXPECT_EQ(included_text(state.doc, file), theirs);
+
+    type_included_text(state.editor, state.doc, "# b\n" + theirs);
+    revert_included_draft(state.editor, file);
+    EXPECT_FALSE(undo_included_typing(state.editor, state.doc)) << "Revert ended them";
+
+    type_included_text(state.editor, state.doc, "# c\n" + theirs);
+    ASSERT_TRUE(save_scene(state)) << state.message;
+    EXPECT_FALSE(undo_included_typing(state.editor, state.doc)) << "saved: the file holds it";
+    EXPECT_EQ(read_file(ball), "# c\n" + theirs);
+}
+
+// Found in the window: text typed in parts/ball.jts, the file then changed
+// by another program, Ctrl+Z dropped the draft (back to the text typing
+// began over) and showed the file's new text; Ctrl+Y then found no step,
+// and the typed text was gone unasked. Undone, it is a draft still.
+TEST_F(EditorFilesTest, TypingUndoneAfterTheFileChangedOnDiskCanBeRedone) {
+    write(ball, kBall);
+    open();
+    const std::string file = canonical_of(state.doc, "parts/ball.jts");
+    show_file(state.editor, state.doc, file);
+    const std::string typed = "# a\n" + kBall;
+    type_included_text(state.editor, state.doc, typed);
+    const std::string theirs = "sphere { center: <0, 0, -5>; radius: 4.5; }\n";
+    write(ball, theirs);
+    ASSERT_TRUE(model.run_until_loaded(state));
+    ASSERT_EQ(radius_of(state, 0), 4.5);
+
+    ASSERT_TRUE(undo_included_typing(state.editor, state.doc));
+    ASSERT_NE(draft_of(state.editor, file), nullptr) << "the text before the typing, shown";
+    EXPECT_EQ(draft_of(state.editor, file)->text, kBall);
+    ASSERT_TRUE(redo_included_typing(state.editor, state.doc));
+    ASSERT_NE(draft_of(state.editor, file), nullptr);
+    EXPECT_EQ(draft_of(state.editor, file)->text, typed);
+
+    // Typed back to the file's text as it is now: nothing to save.
+    type_included_text(state.editor, state.doc, theirs);
     EXPECT_FALSE(has_included_drafts(state.editor));
 }
 

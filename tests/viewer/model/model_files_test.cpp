@@ -229,7 +229,7 @@ TEST(ViewerSkyMapFile, AMissingSkyMapAppearingLoadsTheScene) {
     open_scene(state, dir.path() / "scene.jts");
     ASSERT_FALSE(state.doc.loaded);
     const std::string shown = format_diagnostics(state.doc);
-    EXPECT_NE(shown.find("sky.png': No such file"), std::string::npos) << shown;
+    EXPECT_NE(shown.find("sky.png': no such file"), std::string::npos) << shown;
     model.frame(state);
     ASSERT_TRUE(write_png(dir.path() / "sky.png", flat_image(30, 90, 220)));
     EXPECT_TRUE(run_until(model, state, [&] { return state.doc.loaded; }))

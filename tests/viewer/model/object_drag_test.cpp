@@ -363,12 +363,15 @@ TEST_F(ObjectDragTest, AComputedTranslateOrPositionIsNeverChangedByADrag) {
     replace("        radius: 1;\n",
             "        radius: 1;\n        transform { translate: <d * 2, 0, 0>; }\n");
     replace("point_light { position: <3, 5, 4>;", "point_light { position: lp;");
-    write_file(path, named);
-    open_scene(state, path);
-    ASSERT_TRUE(state.doc.loaded) << format_diagnostics(state.doc);
-    ASSERT_TRUE(model.run_until_complete(state));
-    frame = shown_frame(state);
-    ASSERT_TRUE(frame);
+    const auto open_named = [&] {
+        write_file(path, named);
+        open_scene(state, path);
+        ASSERT_TRUE(state.doc.loaded) << format_diagnostics(state.doc);
+        ASSERT_TRUE(model.run_until_complete(state));
+        frame = shown_frame(state);
+        ASSERT_TRUE(frame);
+    };
+    ASSERT_NO_FATAL_FAILURE(open_named());
 
     select(state.view, {Kind::primitive, 1});
     drag_to({press.x + 10, press.y});
@@ -386,10 +389,22 @@ TEST_F(ObjectDragTest, AComputedTranslateOrPositionIsNeverChangedByADrag) {
     ASSERT_TRUE(marker);
     select(state.view, {Kind::light, 0});
     EXPECT_FALSE(start_object_drag(state, *marker, 0.0));
+    // Found in the real window: the refusal said "is written as lp", not
+    // that lp is a name, where it is defined, nor how to make the light movable.
     EXPECT_EQ(state.message,
-              "Not moved: point_light 1's position is written as lp; edit it in the text "
-              "editor (T)");
+              "Not moved: point_light 1's position is the name lp, defined at scene.jts:2. To "
+              "drag the light, write a position <x, y, z> in its place in the text editor (T), "
+              "or change lp where it is set");
     EXPECT_EQ(state.doc.scene.lights[0].position, light);
+
+    // A position computed from an expression says so; there is no name to change.
+    replace("point_light { position: lp;", "point_light { position: lp * 1;");
+    ASSERT_NO_FATAL_FAILURE(open_named());
+    select(state.view, {Kind::light, 0});
+    EXPECT_FALSE(start_object_drag(state, *marker, 0.0));
+    EXPECT_EQ(state.message,
+              "Not moved: point_light 1's position is computed from the expression `lp * 1`. To "
+              "drag the light, write a position <x, y, z> in its place in the text editor (T)");
 }
 
 }  // namespace

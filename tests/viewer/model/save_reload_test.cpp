@@ -594,6 +594,102 @@ TEST(ViewerSaveAs, ACopyInAnotherFolderMustReadTheSameFiles) {
     EXPECT_TRUE(parse_scene(read_file(plain)).scene == state.doc.scene);
 }
 
+// The working folder is `folder` while this lives, then the one before.
+struct InFolder {
+    explicit InFolder(const fs::path& folder) : back(fs::current_path()) {
+        fs::current_path(folder);
+    }
+    ~InFolder() { fs::current_path(back); }
+    InFolder(const InFolder&) = delete;
+    InFolder& operator=(const InFolder&) = delete;
+    fs::path back;
+};
+
+// Found in the window: "copy.jts" typed into Save scene as, for the split
+// scene (which includes parts/), was refused with "save the copy in that
+// folder": the name was read against the folder the viewer was started
+// from. A relative name is a file beside the scene, "Replace it" writes the
+// same file, and a scene opened by a relative path resolves the same.
+TEST(ViewerSaveAs, ARelativeNameIsAFileBesideTheScene) {
+    const ScratchDir dir("save_as_relative");
+    fs::copy(fs::path(JT_SOURCE_DIR) / "scenes" / "split", dir.path() / "split",
+             fs::copy_options::recursive);
+    const fs::path started_in = fs::current_path();
+    ASSERT_NE(fs::weakly_canonical(started_in), fs::weakly_canonical(dir.path() / "split"));
+    ModelLoop model;
+    AppState state{test_config()};
+    open_scene(state, dir.path() / "split" / "main.jts");
+    ASSERT_TRUE(model.run_until_loaded(state));
+    ASSERT_TRUE(state.doc.loaded) << format_diagnostics(state.doc);
+    edit_scene(state, [](Scene& s) { s.settings.width = 64; });
+    const fs::path beside = dir.path() / "split" / "copy.jts";
+    ASSERT_TRUE(save_scene_as(state, "copy.jts", false)) << state.message;
+    EXPECT_TRUE(fs::exists(beside));
+    EXPECT_FALSE(fs::exists(started_in / "copy.jts"));
+    EXPECT_EQ(fs::weakly_canonical(state.doc.path), fs::weakly_canonical(beside));
+
+    // Asked again: the file beside it exists, and Replace writes that one.
+    edit_scene(state, [](Scene& s) { s.settings.width = 72; });
+    EXPECT_FALSE(save_scene_as(state, "copy.jts", false));
+    ASSERT_FALSE(state.files.save_as_conflict.empty());
+    EXPECT_EQ(fs::weakly_canonical(state.files.save_as_conflict), fs::weakly_canonical(beside));
+    ASSERT_TRUE(save_scene_as(state, state.files.save_as_conflict, true)) << state.message;
+    EXPECT_NE(read_file(beside).find("width: 72"), std::string::npos);
+    EXPECT_FALSE(has_unsaved_edits(state.doc));
+
+    // A scene opened by a relative path: the name is read against its folder
+    // once, also when it is confirmed.
+    const InFolder in_dir(dir.path());
+    AppState relative{test_config()};
+    open_scene(relative, "split/main.jts");
+    ASSERT_TRUE(model.run_until_loaded(relative));
+    ASSERT_TRUE(relative.doc.loaded) << format_diagnostics(relative.doc);
+    edit_scene(relative, [](Scene& s) { s.settings.width = 80; });
+    EXPECT_FALSE(save_scene_as(relative, "copy.jts", false));
+    ASSERT_TRUE(save_scene_as(relative, relative.files.save_as_conflict, true)) << relative.message;
+    EXPECT_NE(read_file(beside).find("width: 80"), std::string::npos);
+    EXPECT_FALSE(fs::exists(dir.path() / "split" / "split"));
+}
+
+// Found in the real window: a relative name typed in the Open field was
+// read against the folder the viewer was started from, while Save scene as
+// reads it beside the scene. Both read it beside the scene; the path the
+// field shows after an open is absolute, so that Open pressed again opens
+// the same file (not split/split/main.jts).
+TEST(ViewerOpenField, ARelativeNameIsAFileBesideTheScene) {
+    const ScratchDir dir("open_relative");
+    fs::copy(fs::path(JT_SOURCE_DIR) / "scenes" / "split", dir.path() / "split",
+             fs::copy_options::recursive);
+    const fs::path other = dir.path() / "split" / "other.jts";
+    fs::copy_file(dir.path() / "split" / "main.jts", other);
+    const fs::path started_in = fs::current_path();
+    ASSERT_FALSE(fs::exists(started_in / "other.jts"));
+    ModelLoop model;
+    AppState state{test_config()};
+    open_scene(state, dir.path() / "split" / "main.jts");
+    ASSERT_TRUE(model.run_until_loaded(state));
+    ASSERT_TRUE(state.doc.loaded) << format_diagnostics(state.doc);
+    state.fields.open_path_input = "other.jts";
+    open_typed_path(state);
+    ASSERT_TRUE(model.run_until_loaded(state));
+    EXPECT_TRUE(state.doc.loaded) << state.message;
+    EXPECT_EQ(fs::weakly_canonical(state.doc.path), fs::weakly_canonical(other)) << state.message;
+
+    const InFolder in_dir(dir.path());
+    AppState relative{test_config()};
+    open_scene(relative, "split/main.jts");
+    ASSERT_TRUE(model.run_until_loaded(relative));
+    ASSERT_TRUE(relative.doc.loaded) << format_diagnostics(relative.doc);
+    EXPECT_TRUE(fs::path(relative.fields.open_path_input).is_absolute())
+        << relative.fields.open_path_input;
+    open_typed_path(relative);
+    ASSERT_TRUE(model.run_until_loaded(relative));
+    EXPECT_EQ(fs::weakly_canonical(relative.doc.path),
+              fs::weakly_canonical(dir.path() / "split" / "main.jts"))
+        << relative.message;
+    EXPECT_EQ(relative.message.rfind("Opened ", 0), 0u) << relative.message;
+}
+
 // A file the viewer had loaded, then broken in each way a file breaks.
 struct Fault {
     const char* name;

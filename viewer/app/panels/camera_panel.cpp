@@ -71,11 +71,16 @@ void scene_camera_editor(AppState& state, int selected) {
     if (button("Add camera", "Add the view as a new camera (a copy of this one)"))
         command = [&state] { add_camera(state); };
     same_line_if_fits("Duplicate");
-    if (button("Duplicate", "Add a copy of this camera's block, named anew"))
+    const std::string included = why_not_rewrite_block(state.doc, {BlockKind::camera, index});
+    if (button("Duplicate", "Add a copy of this camera's block, named anew", included))
         command = [&state, index] { duplicate_block(state, {BlockKind::camera, index}); };
     same_line_if_fits("Delete");
     if (button("Delete", "Remove this camera's block from the text",
-               scene.cameras.size() < 2 ? "The only camera: every render needs one" : ""))
+               // A const char* on each branch: a std::string one would build a
+               // string of the message every frame.
+               !included.empty()          ? included.c_str()
+               : scene.cameras.size() < 2 ? "The only camera: every render needs one"
+                                          : ""))
         command = [&state, index] { delete_block(state, {BlockKind::camera, index}); };
     if (command) command();
 }

@@ -89,14 +89,14 @@ void file_panel(AppState& state) {
         "##open", "scene.jts", &state.fields.open_path_input, ImGuiInputTextFlags_EnterReturnsTrue);
     note_item("open path", true);
     tooltip(
-        "The path of a .jts file to open (Enter opens it). You can also drop a file on the "
-        "window.");
+        "The path of a .jts file to open (Enter opens it; a relative path: beside the scene "
+        "file). You can also drop a file on the window.");
     ImGui::SameLine();
     if ((button("Open", "Open the file named on the left (asks first if you have unsaved edits)",
                 state.fields.open_path_input.empty() ? "Type the path of a .jts file first" : "") ||
          enter) &&
         !state.fields.open_path_input.empty())
-        request_open_guarded(state, state.fields.open_path_input);
+        open_typed_path(state);
     if (!state.files.recent.paths().empty()) {
         ImGui::SetNextItemWidth(-font * 4.0f);
         if (ImGui::BeginCombo("Recent", state.files.recent.paths().front().c_str())) {
@@ -122,7 +122,7 @@ void file_panel(AppState& state) {
                state.history.undo.can_undo() ? "" : "Nothing to undo"))
         undo(state);
     same_line_if_fits("Redo");
-    if (button("Redo", "Redo the edit undone last (Ctrl+Shift+Z)",
+    if (button("Redo", "Redo the edit undone last (Ctrl+Shift+Z or Ctrl+Y)",
                state.history.undo.can_redo() ? "" : "Nothing to redo"))
         redo(state);
     if (document_is_blank(state.doc) &&
@@ -134,7 +134,7 @@ void file_panel(AppState& state) {
     ImGui::SetNextItemWidth(-font * 8.5f);
     ImGui::InputTextWithHint("##scene_as", "copy.jts", &state.fields.save_scene_path);
     note_item("save scene path", true);
-    tooltip("Where Save scene as writes the edited scene");
+    tooltip("Where Save scene as writes the edited scene (a relative path: beside the scene file)");
     ImGui::SameLine();
     if (button("Save scene as", "Write the edited scene to this file and keep editing that one",
                !state.doc.loaded                      ? "No scene is open"

@@ -13,7 +13,7 @@ void help_panel() {
         {"S", "save the image (PNG or BMP by name; never replaces a file)"},
         {"Ctrl+S", "save the scene (edits written in place)"},
         {"Ctrl+Z", "undo"},
-        {"Ctrl+Shift+Z", "redo"},
+        {"Ctrl+Shift+Z, Ctrl+Y", "redo"},
         {"Space", "pause / resume the render (when let go without a drag)"},
         {"F", "fit the whole image to the window"},
         {"1", "actual pixels (1:1)"},

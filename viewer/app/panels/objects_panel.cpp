@@ -263,10 +263,12 @@ void objects_panel(AppState& state) {
     ImGui::Separator();
     ImGui::TextUnformatted(object_name(p, i).text);
     const BlockRef ref{BlockKind::primitive, i};
-    if (button("Duplicate", "Add a copy of this object's block right after it"))
+    const std::string included = why_not_rewrite_block(state.doc, ref);
+    if (button("Duplicate", "Add a copy of this object's block right after it", included))
         command = [&state, ref] { duplicate_block(state, ref); };
     same_line_if_fits("Delete");
-    if (button("Delete", "Remove this object's block from the text (Ctrl+Z brings it back)"))
+    if (button("Delete", "Remove this object's block from the text (Ctrl+Z brings it back)",
+               included))
         command = [&state, ref] { delete_block(state, ref); };
     // The shape, material and transform fields all edit this one block.
     const EditedBlock block{EditedBlock::Kind::primitive, i};
@@ -292,7 +294,7 @@ void objects_panel(AppState& state) {
     if (!has_child(state.doc, i, "material")) {
         ImGui::SameLine();
         if (button("Add material block",
-                   "Write this object's material into its block, to edit it there"))
+                   "Write this object's material into its block, to edit it there", included))
             command = [&state, i] { add_material_block(state, i); };
     }
     if (material_editor(p.material, state.doc, source))
@@ -301,12 +303,12 @@ void objects_panel(AppState& state) {
     ImGui::TextDisabled("transform");
     if (!has_child(state.doc, i, "transform")) {
         ImGui::SameLine();
-        if (button("Add transform block", "Give this object an empty transform block"))
+        if (button("Add transform block", "Give this object an empty transform block", included))
             command = [&state, i] { add_transform_block(state, i); };
     }
     bool transform_changed = false;
     if (std::optional<TransformCommand> op =
-            transform_editor(p.transforms, transform_changed, state.doc, source))
+            transform_editor(p.transforms, transform_changed, state.doc, source, included))
         command = [&state, i, op = *op] {
             switch (op.kind) {
                 case TransformCommand::Kind::add:

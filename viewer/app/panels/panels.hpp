@@ -66,9 +66,12 @@ struct TransformCommand {
     std::size_t to = 0;                           // where it moves
     TransformKind op = TransformKind::translate;  // the kind added
 };
+// `why_not` (why_not_rewrite_block) disables the buttons that add, move
+// and remove operations.
 std::optional<TransformCommand> transform_editor(std::vector<TransformOp>& transforms,
                                                  bool& changed, const SceneDocument& doc,
-                                                 const BlockSource* primitive);
+                                                 const BlockSource* primitive,
+                                                 const std::string& why_not);
 
 // "sample 4 of 16 | 1.2 s elapsed, about 3.0 s left | 3.4 Mrays/s",
 // "paused at preview 1/4 | edit waiting: Space renders it", "done: ...",

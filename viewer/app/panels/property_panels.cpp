@@ -65,10 +65,12 @@ void lights_panel(AppState& state) {
         if (reveal && chosen) scroll_here_if_hidden();
         if (open) {
             const BlockRef ref{BlockKind::light, i};
-            if (button("Duplicate", "Add a copy of this light's block right after it"))
+            const std::string included = why_not_rewrite_block(state.doc, ref);
+            if (button("Duplicate", "Add a copy of this light's block right after it", included))
                 command = [&state, ref] { duplicate_block(state, ref); };
             same_line_if_fits("Delete");
-            if (button("Delete", "Remove this light's block from the text (Ctrl+Z brings it back)"))
+            if (button("Delete", "Remove this light's block from the text (Ctrl+Z brings it back)",
+                       included))
                 command = [&state, ref] { delete_block(state, ref); };
             const EditedBlock block{EditedBlock::Kind::light, i};
             settle_block(state.history, state.doc, block);
@@ -101,7 +103,8 @@ bool material_editor(Material& m, const SceneDocument& doc, const BlockSource* p
 
 std::optional<TransformCommand> transform_editor(std::vector<TransformOp>& transforms,
                                                  bool& changed, const SceneDocument& doc,
-                                                 const BlockSource* primitive) {
+                                                 const BlockSource* primitive,
+                                                 const std::string& why_not) {
     std::optional<TransformCommand> command;
     if (transforms.empty()) ImGui::TextDisabled("no transform operations");
     const std::size_t count = transforms.size();
@@ -111,18 +114,22 @@ std::optional<TransformCommand> transform_editor(std::vector<TransformOp>& trans
                                 transform_field_source(doc, primitive, i)) ||
                   changed;
         if (button("Up", "Move this operation one place earlier (applied before the one above)",
-                   i == 0 ? "It is already the first" : ""))
+                   !why_not.empty() ? why_not.c_str()
+                   : i == 0         ? "It is already the first"
+                                    : ""))
             command = TransformCommand{TransformCommand::Kind::move, i, i - 1, {}};
         ImGui::SameLine();
         if (button("Down", "Move this operation one place later",
-                   i + 1 == count ? "It is already the last" : ""))
+                   !why_not.empty() ? why_not.c_str()
+                   : i + 1 == count ? "It is already the last"
+                                    : ""))
             command = TransformCommand{TransformCommand::Kind::move, i, i + 1, {}};
         ImGui::SameLine();
-        if (button("Remove", "Remove this operation from the transform"))
+        if (button("Remove", "Remove this operation from the transform", why_not))
             command = TransformCommand{TransformCommand::Kind::remove, i, 0, {}};
         ImGui::PopID();
     }
-    if (button("Add operation", "Append an operation to the transform (applied last)"))
+    if (button("Add operation", "Append an operation to the transform (applied last)", why_not))
         ImGui::OpenPopup("add operation");
     if (ImGui::BeginPopup("add operation")) {
         for (const TransformOpSpec& spec : transform_ops()) {

@@ -1,6 +1,7 @@
 #include "jtracer/atomic_file.hpp"
 
 #include "io/file_bytes.hpp"
+#include "io/link_cycle.hpp"
 
 #include <fcntl.h>
 #include <sys/stat.h>
@@ -22,7 +23,7 @@ std::atomic<const char*> unfinished{nullptr};
 static_assert(std::atomic<const char*>::is_always_lock_free);
 
 Error failure(const std::filesystem::path& target, int error) {
-    return Error{"cannot write " + file_message(target, std::strerror(error))};
+    return Error{"cannot write " + file_message(target, open_failure_reason(target, error))};
 }
 
 // A failure to make the temporary file beside `real`. A file that may be

@@ -1,5 +1,6 @@
 #include "io/file_bytes.hpp"
 
+#include "io/link_cycle.hpp"
 #include "jtracer/bmp.hpp"
 
 #include <fcntl.h>
@@ -44,6 +45,21 @@ Error read_error(const std::filesystem::path& path, const std::string& reason) {
 
 }  // namespace
 
+std::string read_failure_reason(const std::filesystem::path& path, int error) {
+    switch (error) {
+        case ENOENT:
+            return "no such file";
+        case EACCES:
+            return "permission denied";
+        case EISDIR:
+            return "it is a directory, not a file";
+        case ELOOP:
+            return open_failure_reason(path, error);
+        default:
+            return std::strerror(error);
+    }
+}
+
 std::string file_message(const std::filesystem::path& path, const std::string& message) {
     std::string s = "'";
     s += path.string();
@@ -56,10 +72,11 @@ Expected<std::vector<std::uint8_t>> read_file_bytes(const std::filesystem::path&
     // O_NONBLOCK so that opening a named pipe does not wait for a writer that
     // may never come; reads block again below, once the file is open.
     FileDescriptor file(::open(path.c_str(), O_RDONLY | O_CLOEXEC | O_NONBLOCK));
-    if (file.get() < 0) return read_error(path, std::strerror(errno));
+    if (file.get() < 0) return read_error(path, read_failure_reason(path, errno));
     struct stat status {};
-    if (::fstat(file.get(), &status) != 0) return read_error(path, std::strerror(errno));
-    if (S_ISDIR(status.st_mode)) return read_error(path, std::strerror(EISDIR));
+    if (::fstat(file.get(), &status) != 0)
+        return read_error(path, read_failure_reason(path, errno));
+    if (S_ISDIR(status.st_mode)) return read_error(path, read_failure_reason(path, EISDIR));
     // A device never ends (/dev/zero, /dev/urandom) or waits for a person
     // (a terminal): it would be read until memory runs out, or forever.
     if (S_ISCHR(status.st_mode) || S_ISBLK(status.st_mode))
@@ -72,7 +89,7 @@ Expected<std::vector<std::uint8_t>> read_file_bytes(const std::filesystem::path&
     if (!regular) {
         const int flags = ::fcntl(file.get(), F_GETFL);
         if (flags < 0 || ::fcntl(file.get(), F_SETFL, flags & ~O_NONBLOCK) < 0)
-            return read_error(path, std::strerror(errno));
+            return read_error(path, read_failure_reason(path, errno));
     }
     std::vector<std::uint8_t> bytes;
     if (regular) bytes.reserve(static_cast<std::size_t>(status.st_size));
@@ -81,7 +98,7 @@ Expected<std::vector<std::uint8_t>> read_file_bytes(const std::filesystem::path&
         const ssize_t n = ::read(file.get(), buffer, sizeof buffer);
         if (n < 0) {
             if (errno == EINTR) continue;
-            return read_error(path, std::strerror(errno));
+            return read_error(path, read_failure_reason(path, errno));
         }
         if (n == 0) break;
         bytes.insert(bytes.end(), buffer, buffer + n);

@@ -50,13 +50,16 @@ Image8 image_of(Texture&& texture) {
     return image;
 }
 
-// decode_bmp reads what JTracer writes, 24 bits a pixel uncompressed. Any
-// other BMP an image map reads (1, 4, 8, 16 or 32 bits, bit-field masks) is
-// decoded as an image map is, so that a reference saved by another program
-// compares as the picture it is instead of being refused.
+// decode_bmp reads what JTracer writes, 24 bits a pixel uncompressed behind
+// a BITMAPINFOHEADER (or a later one). Any other BMP an image map reads (1,
+// 4, 8, 16 or 32 bits, bit-field masks, the OS/2 core header) is decoded as
+// an image map is, so that a reference saved by another program compares as
+// the picture it is instead of being refused.
 Expected<Image8> decode_any_bmp(std::span<const std::uint8_t> bytes) {
+    constexpr std::uint32_t info_header_size = 40;
     const std::optional<BmpHeader> header = read_bmp_header(bytes);
-    if (!header || (header->bits_per_pixel == 24 && header->compression == 0))
+    if (!header || (header->info_size >= info_header_size && header->bits_per_pixel == 24 &&
+                    header->compression == 0))
         return decode_bmp(bytes);
     Expected<Texture> texture = decode_texture(bytes);
     if (!texture) return texture.error();

@@ -54,13 +54,18 @@ Expected<void> check_fingerprint(const RegionPart& part, const RegionPart& first
         differences += differences.empty() ? "" : "; ";
         differences += what;
     };
+    // Parts of two frames of one sequence differ in their clock, and so in
+    // their content when the clock animates the scene: the clock comes first,
+    // as the likelier cause.
+    const bool clocks_differ = p->clock != f->clock;
+    if (clocks_differ) add("clock " + number_text(p->clock) + " and " + number_text(f->clock));
     if (p->scene != f->scene)
         add("the scene's content differs (digest " + digest_text(p->scene) + "... and " +
-            digest_text(f->scene) +
-            "...: another scene, another version of it, other defines "
-            "or a file it names changed)");
-    if (p->clock != f->clock)
-        add("clock " + number_text(p->clock) + " and " + number_text(f->clock));
+            digest_text(f->scene) + "...: " +
+            (clocks_differ ? "the clock animates it, or another scene, another version of it, "
+                             "other defines or a file it names changed)"
+                           : "another scene, another version of it, other defines "
+                             "or a file it names changed)"));
     if (p->samples != f->samples)
         add("samples " + std::to_string(p->samples) + " and " + std::to_string(f->samples));
     if (p->camera != f->camera || p->camera_name != f->camera_name)

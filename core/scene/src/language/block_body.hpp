@@ -100,9 +100,10 @@ inline void SceneParser::parse_body(BlockSource& block,
                 skip_statement();
                 break;
             default:
-                sink_.error(cur_->pos, "expected a property name or '}' in '" +
-                                           std::string(block.keyword) + "', got " +
-                                           describe(*cur_));
+                unexpected_token((block.keyword == kCamerasKeyword || block.keyword == kSceneKeyword
+                                      ? "a block or '}' in '"
+                                      : "a property name or '}' in '") +
+                                 std::string(block.keyword) + "'");
                 if (at(TokenKind::lbrace)) {
                     skip_braced();
                 } else {

@@ -70,7 +70,10 @@ bool read_define_value(std::string_view text, std::optional<double> clock, ExprV
     const ParsedValue parsed = reader.read(clock.has_value());
     names_clock = reader.read_clock();
     if (parsed.ok && tokens.cur().kind != TokenKind::end) {
-        sink.error(tokens.cur().pos, "unexpected " + describe(tokens.cur()) + " after the value");
+        sink.error(
+            tokens.cur().pos,
+            "expected the end of the value, got " + describe(tokens.cur()) +
+                (tokens.cur().kind == TokenKind::semicolon ? " (the value takes no ';')" : ""));
     }
     std::vector<Diagnostic> found = sink.take();
     if (!parsed.ok || has_errors(found)) {

@@ -290,6 +290,20 @@ bool ExpressionReader::parse_primary(int depth) {
         sink_.error(t.pos, message + ")");
         return false;
     }
+    if (!symbol && is_block_keyword(word)) {
+        // A keyword is never a name, so this is said even when an unread
+        // include might have defined others. 'define m = material { ... }'
+        // is how POV-Ray's '#declare' names a material.
+        sink_.error(t.pos, word == schema_of<Material>().keyword
+                               ? quote(word) +
+                                     " is a block, not a value: a material is named with "
+                                     "'material NAME { ... }' at the top level and used in a "
+                                     "primitive with 'material: NAME;'"
+                               : quote(word) +
+                                     " is a block keyword, not a value (a number, a "
+                                     "vector, a string or a defined name)");
+        return false;
+    }
     if (!symbol) {
         if (!names_.reports_unknown()) return false;
         const std::vector<std::string_view> known = names_.names();
@@ -301,6 +315,12 @@ bool ExpressionReader::parse_primary(int depth) {
         for (char c : word) lower += static_cast<char>(c >= 'A' && c <= 'Z' ? c - 'A' + 'a' : c);
         if (lower == "nan" || lower == "inf" || lower == "infinity")
             message += "; numbers must be finite";
+        // POV-Ray's colour keywords: `color rgb <1, 0, 0>` is `<1, 0, 0>` here.
+        for (std::string_view pov : {"color", "colour", "rgb", "rgbf", "rgbt", "rgbft", "srgb"})
+            if (lower == pov)
+                message += "; POV-Ray's " + quote(word.substr(0, 40)) +
+                           " is not written here: a colour is the vector <r, g, b> alone, like "
+                           "<1, 0.5, 0>";
         // POV-Ray's '#include "colors.inc"' or '#declare R = 1;' is a
         // comment here, which is why its names are unknown.
         if (const std::string directive = tokens_.directive_comment(t.pos); !directive.empty())
@@ -620,7 +640,11 @@ void ExpressionReader::apply(const Op& op, const ExprValue* value) {
                 break;
             default:  // div
                 if (vb) return fail(op.pos, "cannot divide by a vector: " + written());
-                if (b.number == 0.0) return fail(op.pos, "division by zero: " + written());
+                // number_text writes -0 as 0; the divisor keeps its sign, which
+                // tells which of two zeros the reader wrote or computed.
+                if (b.number == 0.0)
+                    return fail(op.pos, "division by zero: " + shown(a) + " / " +
+                                            (std::signbit(b.number) ? "-0" : "0"));
                 r = va ? vector(Vec3{a.vector.x / b.number, a.vector.y / b.number,
                                      a.vector.z / b.number})
                        : number(a.number / b.number);

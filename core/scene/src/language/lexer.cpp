@@ -173,7 +173,7 @@ bool Lexer::take_word_or_mark(Token& out) {
         return true;
     }
     if (const TokenKind kind = single_byte_tokens[static_cast<unsigned char>(c)];
-        kind != TokenKind::end) {
+        kind != TokenKind::end && !(kind == TokenKind::slash && c_comment_at(start))) {
         ++at_;
         set(out, kind, text_.substr(start, 1), start, 1, pos_of(start));
         return true;
@@ -238,6 +238,10 @@ std::string_view look_alike(char32_t code) {
 
 void Lexer::next_rare(Token& out) {
     while (!sink_.stopped() && at_ < text_.size()) {
+        if (c_comment_at(at_)) {
+            skip_c_comment();
+            continue;
+        }
         if (take_word_or_mark(out)) return;
         const std::size_t start = at_;
         const char c = text_[start];
@@ -281,6 +285,33 @@ void Lexer::lex_curly_string(std::size_t start, Token& out) {
     }
     at_ = i;
     set(out, TokenKind::bad_value, text_.substr(start, i - start), start, i - start, pos_of(start));
+}
+
+// A POV-Ray or C comment ('//' or '/*'): no value has '/' before '/' or '*',
+// so it is one error, and the comment is skipped as '#' would have been, so
+// that its words are not read as the scene.
+void Lexer::skip_c_comment() {
+    const std::size_t start = at_;
+    const std::size_t n = text_.size();
+    const bool line = text_[start + 1] == '/';
+    sink_.error(pos_of(start), std::string(line ? "'//'" : "'/*'") +
+                                   " starts no comment here: a comment runs from '#' to the "
+                                   "end of the line");
+    std::size_t i = start + 2;
+    if (line) {
+        while (i < n && text_[i] != '\n') ++i;
+    } else {
+        while (i < n && !(text_[i] == '*' && i + 1 < n && text_[i + 1] == '/')) {
+            if (text_[i] == '\n') {
+                ++line_;
+                line_start_ = i + 1;
+            }
+            ++i;
+        }
+        i = i < n ? i + 2 : n;
+    }
+    at_ = i;
+    skip_space_and_comments();
 }
 
 void Lexer::skip_unexpected() {
@@ -628,6 +659,35 @@ std::size_t Lexer::plain_vector(std::size_t offset, Vec3& out) const {
     return i;
 }
 
+namespace {
+
+// The power of ten of a well-formed number's first significant digit
+// (0 for 1.5, -400 for 1e-400), so that the error for a number beyond the
+// doubles can tell too large from too small without the C library's
+// locale-dependent strtod.
+long long decimal_order(std::string_view number) {
+    const std::size_t e = number.find_first_of("eE");
+    const std::string_view mantissa = number.substr(0, e);
+    long long exponent = 0;
+    if (e != std::string_view::npos) {
+        std::string_view digits = number.substr(e + 1);
+        const bool negative = !digits.empty() && digits[0] == '-';
+        if (!digits.empty() && (digits[0] == '-' || digits[0] == '+')) digits.remove_prefix(1);
+        if (std::from_chars(digits.data(), digits.data() + digits.size(), exponent).ec !=
+            std::errc())
+            exponent = 1'000'000'000;  // beyond every double either way
+        if (negative) exponent = -exponent;
+    }
+    const std::size_t point = std::min(mantissa.find('.'), mantissa.size());
+    const std::size_t first = mantissa.find_first_of("123456789");
+    if (first == std::string_view::npos) return 0;
+    const long long order = first < point ? static_cast<long long>(point - first) - 1
+                                          : -static_cast<long long>(first - point);
+    return order + exponent;
+}
+
+}  // namespace
+
 void Lexer::lex_number(std::size_t start, Token& token) {
     const std::size_t n = text_.size();
     while (at_ < n) {
@@ -657,8 +717,14 @@ void Lexer::lex_number(std::size_t start, Token& token) {
     }
     auto [end, ec] = std::from_chars(run.data(), run.data() + run.size(), token.number);
     if (ec != std::errc() || end != run.data() + run.size() || !std::isfinite(token.number)) {
+        // Too large, or too small: not zero, yet its nearest double is.
+        const bool tiny = decimal_order(run) < 0;
         sink_.error(token.pos, "the number " + std::string(run.substr(0, 40)) +
-                                   " is out of range (numbers must be finite doubles)");
+                                   (run.size() > 40 ? "..." : "") +
+                                   (tiny ? " is too small: its nearest double is 0, and only a "
+                                           "zero may be written as 0 (write 0, or a number of "
+                                           "at least 5e-324)"
+                                         : " is out of range (numbers must be finite doubles)"));
         token.kind = TokenKind::bad_value;
     }
 }

@@ -133,6 +133,13 @@ class Lexer {
     [[gnu::noinline]] void lex_number(std::size_t start, Token& out);
     [[gnu::noinline]] void lex_string(std::size_t start, Token& out);
     [[gnu::noinline]] void lex_curly_string(std::size_t start, Token& out);
+    // Whether '//' or '/*' starts at `offset`.
+    bool c_comment_at(std::size_t offset) const {
+        return text_[offset] == '/' && offset + 1 < text_.size() &&
+               (text_[offset + 1] == '/' || text_[offset + 1] == '*');
+    }
+    // Reports the '//' or '/*' comment at at_ and skips it.
+    [[gnu::noinline]] void skip_c_comment();
     // Reports the byte at at_, which starts no token, and skips it.
     [[gnu::noinline]] void skip_unexpected();
     SourcePos pos_of(std::size_t offset) const {

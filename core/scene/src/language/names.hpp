@@ -46,6 +46,9 @@ inline constexpr std::string_view kIncludeKeyword = "include";
 // the functions of docs/language.md §15.3.
 bool is_reserved_name(std::string_view name);
 
+// One of the schema's block keywords (sphere, material, ...).
+bool is_block_keyword(std::string_view word);
+
 class NameTable {
   public:
     const Symbol* find(std::string_view name) const;

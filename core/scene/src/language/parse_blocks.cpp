@@ -17,20 +17,6 @@
 namespace jt::lang {
 namespace {
 
-// "a, b and c" (or "a, b or c" with `last` "or"). Built with append: GCC 12
-// warns falsely on "literal" + std::string&& (quote.hpp).
-std::string listed(std::span<const std::string_view> names, std::string_view last) {
-    std::string out;
-    for (std::size_t i = 0; i < names.size(); ++i) {
-        if (i > 0 && i + 1 == names.size())
-            out.append(1, ' ').append(last).append(1, ' ');
-        else if (i > 0)
-            out += ", ";
-        out += names[i];
-    }
-    return out;
-}
-
 constexpr std::array<std::string_view, 1> kIncludeOnly{kIncludeKeyword};
 constexpr auto kTopStatements = schema_detail::joined(
     schema_detail::kTopBlocks, std::array<std::string_view, 3>{kIncludeKeyword, kDefineKeyword,
@@ -137,14 +123,74 @@ bool SceneParser::top_level_only(std::string_view block) {
     return true;
 }
 
-void SceneParser::unknown_block(std::string_view where, std::span<const std::string_view> allowed) {
-    if (allowed.empty()) {
+namespace {
+
+// Where a block of the language stands, for one written elsewhere
+// (docs/language.md §3.3); empty for a word that is no block keyword.
+std::string block_home(std::string_view keyword) {
+    if (contains(top_blocks(), keyword)) return "at the top level";
+    if (contains(cameras_blocks(), keyword)) return "in 'cameras { ... }'";
+    if (contains(scene_blocks(), keyword)) return "in 'scene { ... }'";
+    if (keyword == schema_of<Material>().keyword)
+        return "in a primitive (" + listed(shape_keywords(), "or") +
+               "), or named at the top level as 'material NAME { ... }'";
+    if (contains(primitive_blocks(), keyword))
+        return "in a primitive (" + listed(shape_keywords(), "or") + ")";
+    return {};
+}
+
+// How deep a block stands: 0 at the top level, 1 in cameras or scene, 2 in a
+// primitive.
+int block_depth(std::string_view keyword) {
+    if (contains(top_blocks(), keyword)) return 0;
+    if (contains(cameras_blocks(), keyword) || contains(scene_blocks(), keyword)) return 1;
+    return 2;
+}
+
+}  // namespace
+
+void SceneParser::unknown_block(std::string_view where, std::span<const std::string_view> allowed,
+                                const BlockSource* inside) {
+    if (const std::string home = block_home(cur_->text); !home.empty()) {
+        // A known block in the wrong place: say where it goes. One that
+        // stands beside the block it is in, or further out (a sphere in a
+        // sphere), most often follows a '}' left out.
+        std::string message =
+            quote(cur_->text) + " cannot stand " + std::string(where) + ": it stands " + home;
+        if (inside && block_depth(cur_->text) <= block_depth(inside->keyword))
+            message += " (is the '}' of the '" + std::string(inside->keyword) + "' at " +
+                       include_.line_column_from(inside->keyword_span.pos, cur_->pos) +
+                       " missing?)";
+        sink_.error(cur_->pos, message);
+    } else if (const std::string ours_home = block_home(pov_ray_word("block", cur_->text));
+               !ours_home.empty() && !contains(allowed, pov_ray_word("block", cur_->text))) {
+        // POV-Ray's word for a block that does not stand here either.
+        const std::string_view ours = pov_ray_word("block", cur_->text);
+        sink_.error(cur_->pos, "unknown block " + quote(cur_->text.substr(0, 40)) + " " +
+                                   std::string(where) + "; POV-Ray's " + quote(cur_->text) +
+                                   " is " + quote(ours) + " here, which stands " + ours_home);
+    } else if (allowed.empty()) {
         sink_.error(cur_->pos, "unexpected block " + quote(cur_->text.substr(0, 40)) + " " +
                                    std::string(where) + ", which holds only properties");
     } else {
         sink_.error(cur_->pos, unknown_name_message("block", cur_->text, where, allowed));
     }
     skip_block();
+}
+
+void SceneParser::unexpected_token(std::string_view what) {
+    std::string message = "expected " + std::string(what) + ", got " + describe(*cur_);
+    if (at(TokenKind::semicolon)) {
+        std::size_t i = cur_->offset;
+        while (i > 0 && (text_[i - 1] == ' ' || text_[i - 1] == '\t' || text_[i - 1] == '\r' ||
+                         text_[i - 1] == '\n'))
+            --i;
+        if (i > 0 && text_[i - 1] == '}')
+            message += " (a block ends at its '}', with no ';' after it)";
+    } else if (at(TokenKind::rbrace)) {
+        message += " (this '}' closes no block: is there one '}' too many?)";
+    }
+    sink_.error(cur_->pos, message);
 }
 
 void SceneParser::only_blocks(const BlockSource& block, std::span<const std::string_view> allowed,
@@ -157,13 +203,11 @@ void SceneParser::only_blocks(const BlockSource& block, std::span<const std::str
 void SceneParser::block_in_property_block(const BlockSource& block) {
     if (block.keyword == schema_of<PointLight>().keyword &&
         contains(primitive_blocks(), cur_->text)) {
-        sink_.error(cur_->pos, "a " + std::string(block.keyword) + " takes no '" +
-                                   std::string(cur_->text) + "' block: only " +
-                                   listed(shape_keywords(), "and") + " do");
+        sink_.error(cur_->pos, takes_no_message(block.keyword, cur_->text));
         skip_block();
         return;
     }
-    unknown_block("in '" + std::string(block.keyword) + "'", kNoBlocks);
+    unknown_block("in '" + std::string(block.keyword) + "'", kNoBlocks, &block);
 }
 
 void SceneParser::parse_file() {
@@ -196,8 +240,7 @@ void SceneParser::parse_file() {
             skip_braced();
         } else {
             if (!at(TokenKind::bad_value)) {  // a bad value was reported by the lexer
-                sink_.error(cur_->pos, "expected a block (" + listed(top_blocks(), "or") +
-                                           "), got " + describe(*cur_));
+                unexpected_token("a block (" + listed(top_blocks(), "or") + ")");
             }
             advance();
         }

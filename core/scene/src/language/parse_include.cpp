@@ -4,11 +4,26 @@
 
 #include "language/scene_parser.hpp"
 
+#include "jtracer/value_text.hpp"
+
 #include <optional>
 #include <string>
 #include <utility>
 
 namespace jt::lang {
+
+// A name where the path should stand: the path is a string literal, never a
+// name's value (§15.6), so the hint spells out the literal to write, the
+// name's own string when it has one.
+std::string SceneParser::include_path_hint(const Token& token) const {
+    if (token.kind != TokenKind::word) return "";
+    const Symbol* symbol = names_.find(token.text);
+    std::string example = "\"FILE.jts\"";
+    if (symbol != nullptr && symbol->kind == Symbol::Kind::value &&
+        symbol->value.kind == ExprValue::Kind::string && is_writable_string(symbol->text))
+        example = string_text(symbol->text);
+    return " (an include takes a string literal, not a name: write 'include " + example + ";')";
+}
 
 bool SceneParser::enter_include(IncludeResume& resume) {
     advance();
@@ -17,7 +32,7 @@ bool SceneParser::enter_include(IncludeResume& resume) {
             sink_.error(cur_->pos,
                         "expected the path of a file in double quotes after "
                         "'include', got " +
-                            describe(*cur_));
+                            describe(*cur_) + include_path_hint(*cur_));
         skip_statement();
         return false;
     }

@@ -117,7 +117,8 @@ void SceneParser::parse_primitive_body(Primitive& primitive, OpenBlock& open) {
             } else if (same_name(cur_->text, kTransformKeyword)) {
                 opened = parse_property_block(child, 1, primitive.transforms);
             } else {
-                unknown_block("in '" + std::string(block.keyword) + "'", primitive_blocks());
+                unknown_block("in '" + std::string(block.keyword) + "'", primitive_blocks(),
+                              &block);
                 return;
             }
             if (opened && source_map_ && keep_primitives_) children.push_back(child);

@@ -4,6 +4,7 @@
 #include "language/quote.hpp"
 #include "language/suggest.hpp"
 
+#include <algorithm>
 #include <cmath>
 #include <optional>
 #include <string>
@@ -157,8 +158,19 @@ void PropertyReader::unknown_property(const Property& p, std::string_view keywor
                     "in a sphere, plane, cylinder, triangle or mesh");
         return;
     }
-    sink_.error(p.name_span.pos,
-                unknown_name_message("property", p.name, "in " + quote(keyword), names));
+    if (keyword == schema_of<PointLight>().keyword &&
+        std::ranges::any_of(primitive_blocks(),
+                            [&](std::string_view b) { return same_name(b, p.name); })) {
+        sink_.error(p.name_span.pos, takes_no_message(keyword, p.name));
+        return;
+    }
+    std::string message = unknown_name_message("property", p.name, "in " + quote(keyword), names);
+    // POV-Ray moves an object with a bare `translate`; here it stands in a block.
+    for (const TransformOpSpec& op : transform_ops())
+        if (keyword != kTransformKeyword && same_name(p.name, op.property.name))
+            message +=
+                "; write it in a transform block: transform { " + std::string(p.name) + ": ...; }";
+    sink_.error(p.name_span.pos, message);
 }
 
 template <class Block>

@@ -1,11 +1,14 @@
 #include "jtracer/scene_file.hpp"
 
+#include "io/file_bytes.hpp"
 #include "io/huge_pages.hpp"
+#include "io/link_cycle.hpp"
 #include "io/text_give_back.hpp"
 #include "jtracer/validate.hpp"
 #include "language/quote.hpp"
 #include "language/validation.hpp"
 
+#include <fcntl.h>
 #include <sys/stat.h>
 #include <unistd.h>
 
@@ -19,19 +22,6 @@
 namespace jt {
 
 namespace {
-
-std::string describe_errno(int error) {
-    switch (error) {
-        case ENOENT:
-            return "no such file";
-        case EACCES:
-            return "permission denied";
-        case EISDIR:
-            return "it is a directory, not a file";
-        default:
-            return std::strerror(error);
-    }
-}
 
 // The whole file; `stamp`, when asked for, is the stamp of the file opened
 // (taken before reading it, so that a write during the read moves it).
@@ -62,13 +52,31 @@ Expected<std::string> read_text_file(const std::filesystem::path& path, std::uin
 
 namespace {
 
+// Standard input named as a file. Opening /dev/stdin again opens the pipe
+// behind it anew, and a named pipe opened anew waits for a writer even when
+// the one that filled it has gone and its text waits unread
+// (`jtracer-cli /dev/stdin < fifo`): the descriptor already open is read.
+bool names_standard_input(const std::filesystem::path& path) {
+    return path == "/dev/stdin" || path == "/dev/fd/0" || path == "/proc/self/fd/0";
+}
+
+std::FILE* fdopen_standard_input() {
+    const int descriptor = ::fcntl(STDIN_FILENO, F_DUPFD_CLOEXEC, 0);
+    if (descriptor < 0) return nullptr;
+    std::FILE* file = ::fdopen(descriptor, "rb");
+    if (file == nullptr) ::close(descriptor);
+    return file;
+}
+
 Expected<std::string> read_text(const std::filesystem::path& path, std::uintmax_t max_bytes,
                                 FileStamp* stamp) {
     const std::string name = lang::quote(path.string());
     std::error_code ec;
     auto status = std::filesystem::status(path, ec);
+    if (ec && ec == std::errc::too_many_symbolic_link_levels)
+        return Error{"cannot read " + name + ": " + read_failure_reason(path, ELOOP)};
     if (ec || !std::filesystem::exists(status))
-        return Error{"cannot read " + name + ": no such file"};
+        return Error{"cannot read " + name + ": " + read_failure_reason(path, ENOENT)};
     if (std::filesystem::is_directory(status))
         return Error{name + " is a directory, not a scene file"};
     std::uintmax_t known_size = 0;  // 0: unknown (or empty)
@@ -80,8 +88,10 @@ Expected<std::string> read_text(const std::filesystem::path& path, std::uintmax_
                          " bytes; the limit is " + std::to_string(max_bytes) + ")"};
     }
     errno = 0;
-    std::unique_ptr<std::FILE, int (*)(std::FILE*)> f(std::fopen(path.c_str(), "rb"), &std::fclose);
-    if (!f) return Error{"cannot read " + name + ": " + describe_errno(errno)};
+    std::unique_ptr<std::FILE, int (*)(std::FILE*)> f(
+        names_standard_input(path) ? fdopen_standard_input() : std::fopen(path.c_str(), "rb"),
+        &std::fclose);
+    if (!f) return Error{"cannot read " + name + ": " + read_failure_reason(path, errno)};
     // A device other than a terminal never ends (/dev/zero, /dev/urandom) or is
     // no text: it would be read up to the limit, a gigabyte, before failing. A
     // terminal ends where its user types the end of input.
@@ -112,7 +122,7 @@ Expected<std::string> read_text(const std::filesystem::path& path, std::uintmax_
     }
     if (std::ferror(f.get())) {
         int error = errno;
-        return Error{"cannot read " + name + ": " + describe_errno(error ? error : EIO)};
+        return Error{"cannot read " + name + ": " + read_failure_reason(path, error ? error : EIO)};
     }
     return text;
 }

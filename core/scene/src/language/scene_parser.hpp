@@ -77,6 +77,14 @@ inline constexpr std::string_view beside_hint =
 // ... and when '<' or '>' follows one (SceneParser::comparison_after).
 inline constexpr std::string_view comparison_hint =
     " (there are no comparisons: '<' and '>' only bracket vectors like <0, 1, 0>)";
+// ... and when '=' follows one ('define r = 1 = 2;', 'x == 1').
+inline constexpr std::string_view equals_hint =
+    " ('=' is not an operator: it stands once, in 'define NAME = VALUE;', whose value is one "
+    "number, vector or string; there are no comparisons such as '==')";
+// ... and when '(' follows one ('pi()', 'r(2)', '2(3)').
+inline constexpr std::string_view call_hint =
+    " ('(' after a value neither calls it nor multiplies: only the functions take '(', pi, "
+    "clock and defined names are values, and a product is written with '*')";
 
 // The schema's own copy of a block keyword, so that records point at the
 // schema's literals rather than at the text.
@@ -125,8 +133,11 @@ class SceneParser final : private TokenCursor {
                reading_->skipped_between(value.span.offset + value.span.length, cur_->offset);
     }
     // The hint for the missing ';' after a value: a comparison ('1 < 2')
-    // where '<' or '>' follows it, else none.
+    // where '<' or '>' follows it, a call or product ('pi()', '2(3)') where
+    // '(' does, a second '=' where '=' does, else none.
     std::string_view comparison_after() const {
+        if (at(TokenKind::lparen)) return call_hint;
+        if (at(TokenKind::equals)) return equals_hint;
         return at(TokenKind::less) || at(TokenKind::greater) ? comparison_hint : std::string_view{};
     }
     // Whether a name touches the value that ends at `end` ('2pi', '0x10',
@@ -187,8 +198,13 @@ class SceneParser final : private TokenCursor {
                               std::string_view keyword = {});
     // At a block's keyword inside a block of properties: reported and skipped.
     void block_in_property_block(const BlockSource& block);
-    // At a block's keyword `where` (e.g. "in 'scene'") only `allowed` may stand.
-    void unknown_block(std::string_view where, std::span<const std::string_view> allowed);
+    // At a block's keyword `where` (e.g. "in 'scene'") only `allowed` may stand;
+    // `inside`, when given, is the block it stands in.
+    void unknown_block(std::string_view where, std::span<const std::string_view> allowed,
+                       const BlockSource* inside = nullptr);
+    // At a token that starts no statement: the error, "expected WHAT, got
+    // ..." (with a word on C's and POV-Ray's ';' after a block's '}').
+    void unexpected_token(std::string_view what);
     // A property in a block that holds only blocks (cameras, scene): reported.
     void only_blocks(const BlockSource& block, std::span<const std::string_view> allowed,
                      const Property& p);
@@ -321,6 +337,7 @@ class SceneParser final : private TokenCursor {
     // At `include`: reads the statement and, when the file can be read, makes
     // its text the one read, true. False (reported) for no file to read.
     bool enter_include(IncludeResume& resume);
+    std::string include_path_hint(const Token& token) const;
     // At the included file's end: reading resumes after the include.
     void leave_include(IncludeResume& resume);
     // A file name (`file`, `image_map`, `background_map`) written in an

@@ -1,5 +1,7 @@
 #include "language/suggest.hpp"
 
+#include "jtracer/schema.hpp"
+
 #include <algorithm>
 #include <utility>
 #include <vector>
@@ -37,7 +39,30 @@ std::string lower(std::string_view s) {
     return out;
 }
 
+// A POV-Ray user's words, too far from ours to be taken for a typo.
+// Blocks and properties apart: 'pigment:' in a sphere is no material.
+struct PovWord {
+    std::string_view what, pov, ours;
+};
+constexpr PovWord kPovRay[] = {
+    {"block", "declare", "define"},
+    {"block", "local", "define"},
+    {"block", "light_source", "point_light"},
+    {"block", "finish", "material"},
+    {"block", "pigment", "material"},
+    {"block", "texture", "material"},
+    {"block", "camera", "perspective_camera"},
+    {"property", "location", "position"},
+    {"property", "angle", "fov"},
+};
+
 }  // namespace
+
+std::string_view pov_ray_word(std::string_view what, std::string_view word) {
+    for (const PovWord& w : kPovRay)
+        if (what == w.what && word == w.pov) return w.ours;
+    return {};
+}
 
 std::string_view nearest_name(std::string_view word, std::span<const std::string_view> allowed) {
     if (word.size() > 64) return {};
@@ -62,6 +87,25 @@ std::string_view nearest_name(std::string_view word, std::span<const std::string
     return best_distance <= limit ? best : std::string_view{};
 }
 
+std::string listed(std::span<const std::string_view> names, std::string_view last) {
+    // Built with append: GCC 12 warns falsely on "literal" + std::string&& (quote.hpp).
+    std::string out;
+    for (std::size_t i = 0; i < names.size(); ++i) {
+        if (i > 0 && i + 1 == names.size())
+            out.append(1, ' ').append(last).append(1, ' ');
+        else if (i > 0)
+            out += ", ";
+        out += names[i];
+    }
+    return out;
+}
+
+std::string takes_no_message(std::string_view light_keyword, std::string_view word) {
+    std::string out = "a ";
+    out.append(light_keyword).append(" takes no '").append(word).append("': only ");
+    return out.append(listed(shape_keywords(), "and")).append(" do");
+}
+
 std::string unknown_name_message(std::string_view what, std::string_view word,
                                  std::string_view where,
                                  std::span<const std::string_view> allowed) {
@@ -71,27 +115,10 @@ std::string unknown_name_message(std::string_view what, std::string_view word,
     if (!nearest.empty()) {
         message += "; did you mean '" + std::string(nearest) + "'?";
     } else {
-        // A POV-Ray user's words, too far from ours to be taken for a typo.
-        // Blocks and properties apart: 'pigment:' in a sphere is no material.
-        struct PovWord {
-            std::string_view what, pov, ours;
-        };
-        static constexpr PovWord kPovRay[] = {
-            {"block", "declare", "define"},
-            {"block", "local", "define"},
-            {"block", "light_source", "point_light"},
-            {"block", "finish", "material"},
-            {"block", "pigment", "material"},
-            {"block", "texture", "material"},
-            {"block", "camera", "perspective_camera"},
-            {"property", "location", "position"},
-            {"property", "angle", "fov"},
-        };
-        for (const PovWord& w : kPovRay)
-            if (what == w.what && word == w.pov &&
-                std::find(allowed.begin(), allowed.end(), w.ours) != allowed.end())
-                message += "; POV-Ray's '" + std::string(w.pov) + "' is '" + std::string(w.ours) +
-                           "' here";
+        const std::string_view ours = pov_ray_word(what, word);
+        if (!ours.empty() && std::find(allowed.begin(), allowed.end(), ours) != allowed.end())
+            message +=
+                "; POV-Ray's '" + std::string(word) + "' is '" + std::string(ours) + "' here";
     }
     message += " (allowed: ";
     for (std::size_t i = 0; i < allowed.size(); ++i) {

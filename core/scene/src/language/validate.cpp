@@ -233,11 +233,16 @@ class Validator {
             if (view == Vec3(0.0)) {
                 error(where(block, "look_at"),
                       which + ": 'look_at' equals 'position', so the camera looks nowhere");
+            } else if (c.up == Vec3(0.0)) {
+                error(where(block, "up"),
+                      which +
+                          ": 'up' is <0, 0, 0>, which gives no direction for the top of "
+                          "the image");
             } else if (glm::length(glm::cross(glm::normalize(view), c.up)) <=
                        1e-9 * glm::length(c.up)) {
                 error(where(block, "up"), which + ": 'up' " + vector_text(c.up) +
                                               " is parallel to the view direction " +
-                                              vector_text(view) + " (or zero)");
+                                              vector_text(view));
             }
             if (s.width > 0 && s.height > 0) {
                 double image = static_cast<double>(s.width) / s.height;

@@ -57,6 +57,12 @@ bool same_file(const std::filesystem::path& a, const std::filesystem::path& b);
 // folder of its own to hold a file beside it (a heat map beside /dev/null).
 bool is_stream(const std::filesystem::path& path);
 
+// Whether `path` is where standard output goes (/dev/stdout, /dev/fd/1, the
+// file or pipe it is redirected to), /dev/null aside: a second document
+// written there (a JUnit report after a heat map) would make one stream of
+// two that no reader can part again.
+bool is_standard_output(const std::filesystem::path& path);
+
 // An output named "-" is standard output, as with most tools (`-o - | convert
 // bmp:- ...`): /dev/stdout, which a pipe gets written in place and a
 // redirection (`> out.bmp`) atomically, as any file. A file called "-" is

@@ -3,9 +3,11 @@
 // on a terminal, nothing otherwise unless asked (--progress log: a plain line
 // per 10% for a farm's log), nothing when quiet.
 
+#include "jtracer/region.hpp"
 #include "jtracer/render_job.hpp"
 
 #include <cstdio>
+#include <optional>
 #include <string>
 
 namespace jt::frontend {
@@ -45,7 +47,9 @@ class ProgressDisplay {
 // "1.23 s", "4 min 05 s", "2 h 04 min 05 s"
 std::string format_duration(double seconds);
 
-// "800x450, 1 sample, 0.84 s, 1.97 M rays, 2.35 Mrays/s"
-std::string render_summary(int width, int height, int samples, const RenderProgress& progress);
+// "800x450, 1 sample, 0.84 s, 1.97 M rays, 2.35 Mrays/s"; for a region of the
+// frame "80x50 (region 40,20,120,70 of 160x90), ...": the pixels rendered.
+std::string render_summary(int width, int height, int samples, const RenderProgress& progress,
+                           const std::optional<FrameRegion>& region = std::nullopt);
 
 }  // namespace jt::frontend

@@ -11,6 +11,7 @@
 #include "jtracer/parser.hpp"
 
 #include <optional>
+#include <span>
 #include <string>
 #include <string_view>
 #include <vector>
@@ -89,6 +90,9 @@ void add_scene_value_flags(CLI::App& app, std::vector<std::string>& defines,
 
 // Adds to each diagnostic that asks for a render setting what sets it, as
 // `names` names it: "... set 'width' in render_settings or pass --width".
-void name_setting_flags(std::vector<Diagnostic>& diagnostics, const ArgumentNames& names = {});
+// A setting in `passed` (given already, as --samples 1 is) gets nothing: the
+// value the diagnostic is about is the one passed.
+void name_setting_flags(std::vector<Diagnostic>& diagnostics, const ArgumentNames& names = {},
+                        std::span<const std::string_view> passed = {});
 
 }  // namespace jt::frontend

@@ -20,4 +20,10 @@ RenderProgress sequence_progress(const RenderProgress& frame, int done, int tota
 // alike.
 std::string sequence_summary(int total, int written, int kept, double seconds);
 
+// What a sequence stopped before frame `index` leaves of frames `first` to
+// index - 1, `kept` of them already there (--skip-existing) and the others
+// written: "frames 0..3 were written", "frames 0..7 are there (4 written, 4
+// kept)" or "frames 0..3 were kept, already there". Needs index > first.
+std::string frames_there(int first, int index, int kept);
+
 }  // namespace jt::frontend
