@@ -130,10 +130,8 @@ ParsedOptions parse_options(int argc, char** argv) {
             };
             if (o.check_only) refuse("not with --check, which writes nothing");
             if (o.expect) refuse("not with --expect, which compares a render it has just made");
-            if (o.region && !o.region_output)
-                refuse(
-                    "with --region, needs --region-output: a whole-frame image does not "
-                    "record which region it holds, a region file does");
+            if (std::optional<std::string> why = frontend::region_skip_existing_refusal(o))
+                refuse(*why);
             if (std::optional<std::string> why = frontend::skip_existing_refusal(o)) refuse(*why);
         }
         if (o.expect && o.frames)

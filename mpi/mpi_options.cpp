@@ -92,11 +92,9 @@ ParsedOptions parse_options(int argc, char** argv, bool speaks) {
                     if (auto refused = frontend::output_refusal(*o.output))
                         throw CLI::ValidationError("-o/--output", *refused);
                 frontend::check_region_flags(o, o.output);
-                if (o.skip_existing && o.region && !o.region_output)
-                    throw CLI::ValidationError(
-                        "--skip-existing",
-                        "with --region, needs --region-output: a whole-frame image does not "
-                        "record which region it holds, a region file does");
+                if (o.skip_existing)
+                    if (std::optional<std::string> why = frontend::region_skip_existing_refusal(o))
+                        throw CLI::ValidationError("--skip-existing", *why);
                 if (o.skip_existing && o.check_only)
                     throw CLI::ValidationError("--skip-existing",
                                                "not with --check, which writes nothing");

@@ -40,6 +40,12 @@ void check_region_flags(const RegionFlags& flags, const std::optional<std::strin
                                    std::string(kRegionFileIsBmp) + "; name the output .bmp");
 }
 
+std::optional<std::string> region_skip_existing_refusal(const RegionFlags& flags) {
+    if (!flags.region || flags.region_output) return std::nullopt;
+    return "with --region, needs --region-output: a whole-frame image does not record which "
+           "region it holds, a region file does";
+}
+
 std::optional<std::string> region_output_refusal(std::string_view program,
                                                  const RenderFlags& render,
                                                  const RegionFlags& flags,

@@ -4,14 +4,16 @@
 // marked on its line with its message and listed below, where a click puts
 // the cursor at its line:col. What is typed goes to the document
 // (document_edits.hpp: type_text); what the panels change shows in the text
-// at once. Ctrl+Z / Ctrl+Shift+Z (or Ctrl+Y) in it walk the viewer's one undo history.
+// at once. Ctrl+Z / Ctrl+Shift+Z (or Ctrl+Y) in it walk the viewer's one
+// undo history.
 // An object or light picked in the image scrolls the text to its block, and
 // a click in a block selects its object or light.
 // Above the text, when the scene includes files, one button a file (the
 // scene file first, then each included file once): choosing one shows its
 // text (model/editor_files.hpp). What is typed in an included file is its
 // draft, kept when another file is shown, written by Save scene (Ctrl+S);
-// Ctrl+Z there undoes the typing in that file.
+// Ctrl+Z and Ctrl+Shift+Z (or Ctrl+Y) there undo and redo the typing in that
+// file alone (model/editor_files.hpp).
 
 #include "jtracer/scene.hpp"
 #include "model/app_state.hpp"

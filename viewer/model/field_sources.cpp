@@ -157,17 +157,26 @@ std::string_view written_text(const SceneDocument& doc, const FieldSource& sourc
     return source.property ? span_text(doc, source.property->value_span) : std::string_view();
 }
 
+namespace {
+
+// Where the name `name` gets its value, as a phrase after it: ", set by
+// --define r=2", ", defined at scene.jts:3"; empty when neither is known.
+std::string name_origin(const SceneDocument& doc, std::string_view name) {
+    if (const Define* define = define_of(doc, name))
+        return ", set by --define " + define->name + "=" + shortened(define->value);
+    if (const DefinitionSource* d = definition_of(doc, name))
+        return ", defined at " + text_place(doc, d->name_span);
+    return {};
+}
+
+}  // namespace
+
 std::string computed_from(const SceneDocument& doc, const FieldSource& source) {
-    const std::string text = shortened(written_text(doc, source));
+    const std::string_view text = written_text(doc, source);
     if (source.origin == FieldOrigin::expression)
-        return "computed from the expression `" + text + "`";
+        return "computed from the expression `" + shortened(text) + "`";
     if (source.origin != FieldOrigin::name) return {};
-    if (const Define* define = define_of(doc, text))
-        return "the name " + text + ", set by --define " + define->name + "=" +
-               shortened(define->value);
-    if (const DefinitionSource* d = definition_of(doc, text))
-        return "the name " + text + ", defined at " + text_place(doc, d->name_span);
-    return "the name " + text;
+    return "the name " + shortened(text) + name_origin(doc, text);
 }
 
 std::string describe_source(const SceneDocument& doc, const FieldSource& source) {
@@ -177,13 +186,11 @@ std::string describe_source(const SceneDocument& doc, const FieldSource& source)
         case FieldOrigin::literal:
             return {};
         case FieldOrigin::name: {
-            std::string out = "From " + std::string(text);
-            if (const Define* define = define_of(doc, text))
-                return out + ", set by --define " + define->name + "=" + shortened(define->value) +
+            const std::string out = "From " + std::string(text) + name_origin(doc, text);
+            if (define_of(doc, text))
+                return out +
                        " on the command line. The value is computed: it cannot be edited "
                        "here.";
-            if (const DefinitionSource* d = definition_of(doc, text))
-                out += ", defined at " + text_place(doc, d->name_span);
             return out +
                    ". The value is computed: edit it in the text editor (T), where the "
                    "name is defined.";

@@ -128,15 +128,13 @@ void remove_unfinished_file() noexcept {
 }
 
 std::filesystem::path file_behind_links(const std::filesystem::path& path) {
-    // As the kernel's own limit on links followed in one lookup.
-    constexpr int max_links_followed = 40;
     std::filesystem::path file = path;
-    for (int followed = 0; followed < max_links_followed; ++followed) {
+    for (int followed = 0; followed < kMostLinksFollowed; ++followed) {
         std::error_code error;
         if (!std::filesystem::is_symlink(std::filesystem::symlink_status(file, error))) return file;
         const std::filesystem::path link = std::filesystem::read_symlink(file, error);
         if (error) return file;
-        file = (link.is_absolute() ? link : file.parent_path() / link).lexically_normal();
+        file = link_destination(file, link);
     }
     return path;
 }

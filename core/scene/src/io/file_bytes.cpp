@@ -9,7 +9,6 @@
 
 #include <cerrno>
 #include <cstdint>
-#include <cstring>
 #include <string>
 
 namespace jt {
@@ -53,10 +52,8 @@ std::string read_failure_reason(const std::filesystem::path& path, int error) {
             return "permission denied";
         case EISDIR:
             return "it is a directory, not a file";
-        case ELOOP:
-            return open_failure_reason(path, error);
         default:
-            return std::strerror(error);
+            return open_failure_reason(path, error);
     }
 }
 

@@ -8,10 +8,6 @@ namespace jt {
 
 namespace {
 
-// The kernel gives up after 40 links (ELOOP): a chain longer than that loops
-// as far as any reader can tell.
-constexpr int kMostLinksFollowed = 40;
-
 // The cycle reached by following `link` (a path to a symbolic link) link by
 // link, or nothing when the chain ends.
 std::optional<std::string> cycle_from(const std::filesystem::path& link) {
@@ -35,13 +31,18 @@ std::optional<std::string> cycle_from(const std::filesystem::path& link) {
         const std::filesystem::path target = std::filesystem::read_symlink(at, error);
         if (error) return std::nullopt;
         shown.push_back(target.string());
-        at = (target.is_absolute() ? target : at.parent_path() / target).lexically_normal();
+        at = link_destination(at, target);
     }
     return "more than " + std::to_string(kMostLinksFollowed) + " symbolic links in a row from '" +
            link.string() + "'";
 }
 
 }  // namespace
+
+std::filesystem::path link_destination(const std::filesystem::path& link,
+                                       const std::filesystem::path& target) {
+    return (target.is_absolute() ? target : link.parent_path() / target).lexically_normal();
+}
 
 std::optional<std::string> symbolic_link_cycle(const std::filesystem::path& path) {
     // Each folder of the path in turn, then the file itself: a looping folder

@@ -9,6 +9,16 @@
 
 namespace jt {
 
+// The kernel gives up after 40 links in one lookup (ELOOP): a chain longer
+// than that loops as far as any reader can tell.
+inline constexpr int kMostLinksFollowed = 40;
+
+// Where the symbolic link `link`, holding `target` (read_symlink's), leads:
+// a relative target is taken from the link's own folder, as the kernel does,
+// not from the working folder.
+std::filesystem::path link_destination(const std::filesystem::path& link,
+                                       const std::filesystem::path& target);
+
 // "a cycle of symbolic links: 'a.jts' -> 'b.jts' -> 'a.jts'" for the first
 // link of `path` (its folders' or its own) that leads back to itself, each
 // named as it is written; nothing when no link of it loops.

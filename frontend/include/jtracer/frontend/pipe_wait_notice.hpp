@@ -1,8 +1,8 @@
 #pragma once
 // A scene named by a pipe (mkfifo, bash's <(...)) is read once its writer
 // sends it: opening a named pipe waits, for good, until something opens it
-// for writing. A farm job given a pipe nobody writes to looked hung, saying
-// nothing; while a PipeWaitNotice lives, a read that waits longer than
+// for writing, and a farm job given a pipe nobody writes to would look hung.
+// While a PipeWaitNotice lives, a read that waits longer than
 // kPipeWaitNoticeDelay says on stderr what it waits for.
 
 #include <chrono>

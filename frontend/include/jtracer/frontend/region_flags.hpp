@@ -30,6 +30,10 @@ void add_region_flags(CLI::App& app, RegionFlags& flags);
 // needs --region, and a BMP name for -o. Throws CLI::ValidationError.
 void check_region_flags(const RegionFlags& flags, const std::optional<std::string>& output);
 
+// Why --skip-existing cannot go with these flags (nothing when it can): a
+// --region render kept must be a region file, which records its region.
+std::optional<std::string> region_skip_existing_refusal(const RegionFlags& flags);
+
 // The error (or nothing) for a region file (--region-output, always a BMP)
 // under the scene's filename `output` when that names another format: refused
 // as `-o part.png --region-output` is (check_region_flags), and located at
